@@ -1,0 +1,146 @@
+# Holonomy - plain GNU make, C11.
+#
+#   make            build build/holonomy
+#   make test       build and run every test (unit, CLI, fuzz-corpus replay)
+#   make deps       install the Debian packages the project needs (apt-get)
+#   make fuzz       build the libFuzzer harnesses and run each FUZZ_TIME s
+#   make bench      build with optimisation and print the benchmark figures
+#   make san        run the unit tests under AddressSanitizer + UBSan
+#   make clean      remove build outputs
+#
+# Variables: CC (gcc or clang), BUILD (output folder), FUZZ_TIME (seconds).
+
+CC      ?= gcc
+BUILD   ?= build
+OPT     ?= -O2
+CSTD    := -std=c11
+WARN    := -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes -Wvla
+CFLAGS  ?=
+CFLAGS  += $(CSTD) $(WARN) $(OPT) -g -D_DEFAULT_SOURCE -MMD -MP
+LDLIBS  += -lm
+FUZZ_CC ?= clang
+FUZZ_TIME ?= 60
+
+CORE_SRC := $(wildcard core/*.c)
+RENDER_SRC := $(wildcard render/*.c)
+CLI_SRC  := $(wildcard platform/cli/*.c)
+# tests/test_*.c: cmocka suites on the core (also run under sanitizers);
+# tests/test_render*.c: suites that also link the renderer and GL.
+RENDER_TEST_SRC := $(wildcard tests/test_render*.c)
+UNIT_SRC := $(filter-out $(RENDER_TEST_SRC),$(wildcard tests/test_*.c))
+CLI_TESTS := $(wildcard tests/cli_*.sh)
+# Libraries the renderer needs (headless OSMesa; EGL for the desktop build).
+RENDER_LIBS ?= -lOSMesa
+BENCH_SRC := $(wildcard tests/bench_*.c)
+FUZZ_SRC := $(wildcard fuzz/fuzz_*.c)
+
+CORE_OBJ := $(CORE_SRC:%.c=$(BUILD)/%.o)
+CLI_OBJ  := $(CLI_SRC:%.c=$(BUILD)/%.o)
+CORE_LIB := $(BUILD)/libholcore.a
+RENDER_OBJ := $(RENDER_SRC:%.c=$(BUILD)/%.o)
+RENDER_LIB := $(if $(RENDER_SRC),$(BUILD)/libholrender.a)
+APP_LIBS := $(if $(RENDER_SRC),$(RENDER_LIBS))
+UNIT_BIN := $(UNIT_SRC:tests/%.c=$(BUILD)/tests/%)
+RENDER_TEST_BIN := $(RENDER_TEST_SRC:tests/%.c=$(BUILD)/tests/%)
+BENCH_BIN := $(BENCH_SRC:tests/%.c=$(BUILD)/bench/%)
+FUZZ_BIN := $(FUZZ_SRC:fuzz/%.c=$(BUILD)/fuzz/%)
+
+DEB_PACKAGES := make gcc clang libcmocka-dev libosmesa6-dev libegl-dev \
+  libgles-dev libhidapi-dev libusb-1.0-0-dev libopenxr-dev \
+  gcc-aarch64-linux-gnu qemu-user xvfb
+
+.PHONY: all test unit render-test cli-test fuzz-replay fuzz bench san clean deps \
+        check-clang cross-test
+
+all: $(BUILD)/holonomy
+
+$(BUILD)/%.o: %.c
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) -c $< -o $@
+
+$(CORE_LIB): $(CORE_OBJ)
+	@rm -f $@
+	$(AR) rcs $@ $^
+
+$(RENDER_LIB): $(RENDER_OBJ)
+	@rm -f $@
+	$(AR) rcs $@ $^
+
+$(BUILD)/holonomy: $(CLI_OBJ) $(RENDER_LIB) $(CORE_LIB)
+	$(CC) $(CFLAGS) -o $@ $(CLI_OBJ) $(RENDER_LIB) $(CORE_LIB) $(LDFLAGS) $(APP_LIBS) $(LDLIBS)
+
+$(RENDER_TEST_BIN): $(BUILD)/tests/%: tests/%.c $(wildcard tests/*.h) $(RENDER_LIB) $(CORE_LIB)
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) -o $@ $< $(RENDER_LIB) $(CORE_LIB) $(LDFLAGS) -lcmocka $(RENDER_LIBS) $(LDLIBS)
+
+$(BUILD)/tests/%: tests/%.c $(wildcard tests/*.h) $(CORE_LIB)
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) -o $@ $< $(CORE_LIB) $(LDFLAGS) -lcmocka $(LDLIBS)
+
+$(BUILD)/bench/%: tests/%.c $(CORE_SRC)
+	@mkdir -p $(dir $@)
+	$(CC) $(CSTD) $(WARN) -O2 -DNDEBUG -D_DEFAULT_SOURCE -o $@ $< $(CORE_SRC) $(LDLIBS)
+
+# libFuzzer harnesses (clang); the replay build runs the corpora as tests.
+$(BUILD)/fuzz/%: fuzz/%.c $(CORE_SRC)
+	@mkdir -p $(dir $@)
+	$(FUZZ_CC) $(CSTD) -g -O1 -D_DEFAULT_SOURCE -fsanitize=fuzzer,address,undefined \
+	  -fno-sanitize-recover=all -o $@ $< $(CORE_SRC) $(LDLIBS)
+
+$(BUILD)/fuzz-replay/%: fuzz/%.c fuzz/replay_main.c $(CORE_SRC)
+	@mkdir -p $(dir $@)
+	$(CC) $(CSTD) $(WARN) -O1 -g -D_DEFAULT_SOURCE -o $@ $< fuzz/replay_main.c $(CORE_SRC) $(LDLIBS)
+
+test: all unit render-test cli-test fuzz-replay
+	@echo "make test: all suites passed"
+
+unit: $(UNIT_BIN)
+	@set -e; for t in $(UNIT_BIN); do echo "== $$t"; $$t; done
+
+render-test: $(RENDER_TEST_BIN)
+	@set -e; for t in $(RENDER_TEST_BIN); do echo "== $$t"; $$t; done
+
+cli-test: $(BUILD)/holonomy
+	@set -e; for t in $(CLI_TESTS); do echo "== $$t"; \
+	  HOLONOMY=$(BUILD)/holonomy sh $$t; done
+
+fuzz-replay: $(FUZZ_SRC:fuzz/%.c=$(BUILD)/fuzz-replay/%)
+	@set -e; for f in $^; do n=$$(basename $$f); \
+	  $$f fuzz/corpus/$$n/*; done; echo "fuzz corpora replayed: $(notdir $^)"
+
+fuzz: $(FUZZ_BIN)
+	@set -e; for f in $(FUZZ_BIN); do n=$$(basename $$f); \
+	  mkdir -p $(BUILD)/fuzz/new-$$n; \
+	  echo "== $$n for $(FUZZ_TIME) s"; \
+	  $$f -max_total_time=$(FUZZ_TIME) -print_final_stats=1 \
+	    -artifact_prefix=$(BUILD)/fuzz/ $(BUILD)/fuzz/new-$$n fuzz/corpus/$$n; \
+	done
+
+bench: $(BENCH_BIN)
+	@set -e; for b in $(BENCH_BIN); do $$b; done
+
+san:
+	$(MAKE) BUILD=$(BUILD)/san OPT=-O1 \
+	  CFLAGS="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer" \
+	  LDFLAGS="-fsanitize=address,undefined" unit
+
+check-clang:
+	$(MAKE) CC=clang BUILD=$(BUILD)/clang all $(UNIT_BIN:$(BUILD)/%=$(BUILD)/clang/%)
+
+cross-test:
+	$(MAKE) CC=aarch64-linux-gnu-gcc BUILD=$(BUILD)/aarch64 $(BUILD)/aarch64/tests/cross_core
+	qemu-aarch64 -L /usr/aarch64-linux-gnu $(BUILD)/aarch64/tests/cross_core
+
+deps:
+	@missing=""; for p in $(DEB_PACKAGES); do \
+	  dpkg -s $$p >/dev/null 2>&1 || missing="$$missing $$p"; done; \
+	if [ -z "$$missing" ]; then echo "make deps: all packages present"; \
+	else SUDO=$$( [ "$$(id -u)" = 0 ] || echo sudo ); \
+	  echo "make deps: installing$$missing"; \
+	  $$SUDO apt-get update -qq && \
+	  DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq --no-install-recommends $$missing; fi
+
+clean:
+	rm -rf $(BUILD)
+
+-include $(shell find $(BUILD) -name '*.d' 2>/dev/null)

@@ -1,0 +1,35 @@
+/* hol_hyper.h - floating-point geometry relative to a tile (minimap, arrows).
+ *
+ * Contract
+ * - Points of the hyperbolic plane are on the hyperboloid x^2 + y^2 - w^2 = -1,
+ *   w > 0, stored as (x, y, w). A frame is a 3x3 Lorentz matrix, row-major.
+ * - Coordinates of tile b are computed from b's address relative to tile a
+ *   (hol_tile_relative), so their precision depends only on the distance
+ *   between a and b, never on how far both are from the origin.
+ * - In a's frame, +y is the direction a_north (a turn relative to a's
+ *   canonical heading; pass the room orientation to get room north) and +x is
+ *   90 degrees clockwise of it (room east).
+ * - Pure functions; no allocation, no globals.
+ */
+#ifndef HOL_HYPER_H
+#define HOL_HYPER_H
+
+#include "hol_tile.h"
+
+/* Centre-to-centre distance of neighbouring tiles,
+ * 2 acosh(cos(pi/5) / sin(pi/4)) ~= 1.0612750619. */
+double hol_hyper_edge(void);
+
+/* Frame of b (its centre, +y its canonical heading) in a's frame. */
+hol_err hol_hyper_frame(hol_tile a, int a_north, hol_tile b, double out_m[9]);
+
+/* Centre of b in a's frame, and its direction and distance as seen from a's
+ * centre: angle in radians counter-clockwise from +y (a_north), distance in
+ * units of the plane's curvature radius. Either output may be NULL. */
+hol_err hol_hyper_pos(hol_tile a, int a_north, hol_tile b, double out_p[3],
+                      double *out_angle, double *out_dist);
+
+/* Poincare-disk point (|z| < 1) of a hyperboloid point. */
+void hol_hyper_to_disk(const double p[3], double out_xy[2]);
+
+#endif

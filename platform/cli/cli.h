@@ -1,0 +1,58 @@
+/* cli.h - shared plumbing of the `holonomy` command-line tool.
+ *
+ * Contract: every subcommand is `int cli_cmd_NAME(int argc, char **argv)`
+ * returning the process exit status:
+ *   0  success
+ *   1  a failure that is not the input's fault (I/O error, failed --check)
+ *   2  bad input or bad usage: one line on stderr naming what is wrong (and
+ *      the input line number when reading lines); nothing is printed for the
+ *      offending line.
+ * Line-oriented commands read standard input, strip a trailing "\n" and
+ * "\r", and stop at the first bad line.
+ */
+#ifndef HOL_CLI_H
+#define HOL_CLI_H
+
+#include <stdio.h>
+#include <stddef.h>
+
+#define CLI_EXIT_OK 0
+#define CLI_EXIT_FAIL 1
+#define CLI_EXIT_USAGE 2
+
+typedef struct cli_lines {
+    FILE *in;
+    char *buf;
+    size_t cap;
+    long lineno;
+} cli_lines;
+
+void cli_lines_init(cli_lines *l, FILE *in);
+void cli_lines_fini(cli_lines *l);
+/* 1: a line in *out_s / *out_len (NUL-terminated; may contain NUL bytes,
+ * which callers reject), 0: end of input, -1: read error. */
+int cli_lines_next(cli_lines *l, char **out_s, size_t *out_len);
+
+/* Print "holonomy CMD: line N: MESSAGE" (or without the line when
+ * lineno <= 0) to stderr. */
+void cli_error(const char *cmd, long lineno, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+
+/* Split s (length len) at runs of spaces and tabs; up to max fields.
+ * Returns the number of fields found (max + 1 means "more than max"). */
+int cli_split(char *s, size_t len, char **fields, size_t *lens, int max);
+
+/* Flush stdout; on failure report it and return CLI_EXIT_FAIL. */
+int cli_finish_output(const char *cmd);
+
+/* True when argv has -h or --help anywhere. */
+int cli_wants_help(int argc, char **argv);
+
+/* Subcommands */
+int cli_cmd_tile(int argc, char **argv);
+int cli_cmd_world(int argc, char **argv);
+int cli_cmd_nav(int argc, char **argv);
+int cli_cmd_tour(int argc, char **argv);
+int cli_cmd_render(int argc, char **argv);
+
+#endif

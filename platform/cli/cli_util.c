@@ -1,0 +1,96 @@
+#define _POSIX_C_SOURCE 200809L
+#include "cli.h"
+
+#include <errno.h>
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+
+void cli_lines_init(cli_lines *l, FILE *in)
+{
+    l->in = in;
+    l->buf = NULL;
+    l->cap = 0;
+    l->lineno = 0;
+}
+
+void cli_lines_fini(cli_lines *l)
+{
+    free(l->buf);
+    l->buf = NULL;
+    l->cap = 0;
+}
+
+int cli_lines_next(cli_lines *l, char **out_s, size_t *out_len)
+{
+    errno = 0;
+    ssize_t n = getline(&l->buf, &l->cap, l->in);
+    if (n < 0)
+        return ferror(l->in) ? -1 : 0;
+    l->lineno++;
+    size_t len = (size_t)n;
+    if (len > 0 && l->buf[len - 1] == '\n')
+        len--;
+    if (len > 0 && l->buf[len - 1] == '\r')
+        len--;
+    l->buf[len] = '\0';
+    *out_s = l->buf;
+    *out_len = len;
+    return 1;
+}
+
+void cli_error(const char *cmd, long lineno, const char *fmt, ...)
+{
+    char msg[512];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(msg, sizeof msg, fmt, ap);
+    va_end(ap);
+    /* one line, whatever the message holds */
+    for (char *p = msg; *p; p++)
+        if (*p == '\n' || *p == '\r')
+            *p = ' ';
+    const char *sep = cmd[0] ? " " : "";
+    if (lineno > 0)
+        fprintf(stderr, "holonomy%s%s: line %ld: %s\n", sep, cmd, lineno, msg);
+    else
+        fprintf(stderr, "holonomy%s%s: %s\n", sep, cmd, msg);
+}
+
+int cli_split(char *s, size_t len, char **fields, size_t *lens, int max)
+{
+    int n = 0;
+    size_t i = 0;
+    while (i < len) {
+        while (i < len && (s[i] == ' ' || s[i] == '\t'))
+            i++;
+        if (i >= len)
+            break;
+        size_t start = i;
+        while (i < len && s[i] != ' ' && s[i] != '\t')
+            i++;
+        if (n == max)
+            return max + 1;
+        fields[n] = s + start;
+        lens[n] = i - start;
+        n++;
+    }
+    return n;
+}
+
+int cli_finish_output(const char *cmd)
+{
+    if (fflush(stdout) != 0 || ferror(stdout)) {
+        cli_error(cmd, 0, "cannot write output: %s", strerror(errno));
+        return CLI_EXIT_FAIL;
+    }
+    return CLI_EXIT_OK;
+}
+
+int cli_wants_help(int argc, char **argv)
+{
+    for (int i = 1; i < argc; i++)
+        if (!strcmp(argv[i], "-h") || !strcmp(argv[i], "--help"))
+            return 1;
+    return 0;
+}

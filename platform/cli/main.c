@@ -1,0 +1,52 @@
+/* main.c - the `holonomy` tool: one binary, subcommands (SPEC section 4). */
+#include <string.h>
+
+#include "../../core/hol_version.h"
+#include "cli.h"
+
+typedef struct cli_command {
+    const char *name;
+    int (*run)(int argc, char **argv);
+    const char *summary;
+} cli_command;
+
+static const cli_command commands[] = {
+    {"tile", cli_cmd_tile, "tile walk|dist: addresses and distances"},
+    {"world", cli_cmd_world, "the seeded forest around a walk; save, load"},
+    {"nav", cli_cmd_nav, "fewest room steps to a target tile"},
+    {"tour", cli_cmd_tour, "fewest room steps to collect keys, then the chest"},
+    {"render", cli_cmd_render, "render a view to PNG (headless OSMesa)"},
+};
+
+static void usage(FILE *f)
+{
+    fprintf(f, "usage: holonomy [--help] [--version] COMMAND [ARGS]\n\n"
+               "Walk an infinite hyperbolic forest {4,5} inside a 3 x 3 m room.\n\n"
+               "commands:\n");
+    for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++)
+        fprintf(f, "  %-8s %s\n", commands[i].name, commands[i].summary);
+    fprintf(f, "\n'holonomy COMMAND --help' describes each command.\n"
+               "Exit status: 0 ok, 1 failure, 2 bad input or usage.\n");
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 2) {
+        usage(stderr);
+        return CLI_EXIT_USAGE;
+    }
+    if (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h") ||
+        !strcmp(argv[1], "help")) {
+        usage(stdout);
+        return cli_finish_output("--help");
+    }
+    if (!strcmp(argv[1], "--version")) {
+        printf("holonomy %s\n", HOL_VERSION);
+        return cli_finish_output("--version");
+    }
+    for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++)
+        if (!strcmp(argv[1], commands[i].name))
+            return commands[i].run(argc - 1, argv + 1);
+    cli_error("", 0, "unknown command '%.40s'; see 'holonomy --help'", argv[1]);
+    return CLI_EXIT_USAGE;
+}
