@@ -1,0 +1,124 @@
+/* hol_nav.h - guidance: fewest room steps to a tile, keys-and-chest tours,
+ * the hot-cold field and direction arrows of the minimap.
+ *
+ * Contract
+ * - A walk is an array of room directions (HOL_DIR_N 0, W 1, S 2, E 3), the
+ *   same codes as hol_room_step. Every walk returned stays inside the room.
+ * - hol_nav_create makes the one allocation of the module (through the
+ *   desc's hooks, malloc/free when zero): the cost table and the search
+ *   arena. Queries never allocate; the arena is reset per query.
+ * - The cost table uses the homogeneity of the tiling: the fewest steps from
+ *   a room state (tile, orientation, cell) to a target depend only on the
+ *   user's tile and room north as seen from the target, plus the cell. It
+ *   holds, for every tile within desc.radius of a target, every orientation
+ *   and cell, the fewest steps of walks that stay within that radius; with a
+ *   bound on walks that leave it this gives an exact answer for near
+ *   targets without search and an admissible heuristic elsewhere.
+ * - hol_nav_find is exact (result.exact = 1) whenever it returns HOL_OK
+ *   without the budget running out; the arena capacity bounds the work, so
+ *   no query hangs. When the budget or arena runs out it still returns a
+ *   complete walk (waypoints along the geodesic, each leg from the table)
+ *   with result.exact = 0 and returns HOL_OK; HOL_EBUDGET is never returned
+ *   by hol_nav_find.
+ * - hol_nav_field and hol_nav_direction do not need a hol_nav: they are pure
+ *   functions of tiles (no allocation, caller buffers).
+ * - A hol_nav is not thread safe (one arena); use one per thread.
+ */
+#ifndef HOL_NAV_H
+#define HOL_NAV_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "hol_err.h"
+#include "hol_room.h"
+#include "hol_tile.h"
+
+/* Defaults of hol_nav_desc (zero fields take these). */
+#define HOL_NAV_DEFAULT_RADIUS 13
+#define HOL_NAV_MAX_RADIUS 15
+#define HOL_NAV_DEFAULT_NODES (1u << 20)
+/* Longest walk any query writes; out_walk buffers of this size always fit. */
+#define HOL_NAV_WALK_MAX 4096
+#define HOL_NAV_TOUR_MAX_KEYS 5
+
+typedef struct hol_nav_desc {
+    int radius;        /* cost table radius in tiles (1..15); 0: 13 */
+    size_t max_nodes;  /* search arena capacity in nodes; 0: 2^20 */
+    /* allocator hooks (both or neither); zero: malloc/free */
+    void *(*alloc_fn)(size_t size, void *user);
+    void (*free_fn)(void *ptr, void *user);
+    void *user;
+} hol_nav_desc;
+
+typedef struct hol_nav hol_nav; /* opaque */
+
+/* Build the cost table (about 0.1 s at the default radius). Errors:
+ * HOL_EARG (radius out of range), HOL_ENOMEM (the allocation failed). */
+hol_err hol_nav_create(const hol_nav_desc *desc, hol_nav **out_nav);
+void hol_nav_destroy(hol_nav *nav);
+
+/* Bytes held by the navigator (table + arena). */
+size_t hol_nav_memory(const hol_nav *nav);
+/* The largest tile distance d such that every room state whose target lies
+ * within d tiles is answered from the table alone (no search). */
+int hol_nav_table_exact_radius(const hol_nav *nav);
+
+typedef struct hol_nav_result {
+    int len;      /* steps written to out_walk */
+    int exact;    /* 1: len is proven the fewest; 0: best walk found */
+    size_t nodes; /* search nodes expanded (0 when the table alone answered) */
+} hol_nav_result;
+
+/* Fewest further steps from *start (staying in the room) after which the
+ * user stands on `target`, and such a walk in out_walk (cap entries).
+ * budget: node budget of the exact search (0: the arena capacity). When
+ * the search exceeds it, the anytime answer is returned (exact = 0).
+ * Errors: HOL_EARG (bad arguments), HOL_ENOMEM (cap too small for the
+ * walk), HOL_ERANGE (a tile beyond the reach of tile words on the way). */
+hol_err hol_nav_find(hol_nav *nav, const hol_room *start, hol_tile target,
+                     size_t budget, uint8_t *out_walk, size_t cap,
+                     hol_nav_result *out_result);
+
+/* Keys and chest: the fewest steps from *start to stand on every key (in any
+ * order; a key counts when the user stands on its tile) and after that on
+ * the chest, and the walk. Exact (a search over room state x collected-key
+ * set with an admissible heuristic) for up to HOL_NAV_TOUR_MAX_KEYS keys.
+ * budget as in hol_nav_find (0: arena capacity); when the search runs out,
+ * the legs are chained greedily in the nearest-key order (exact = 0).
+ * Errors: as hol_nav_find; HOL_EARG for nkeys outside 0..5. */
+hol_err hol_nav_tour(hol_nav *nav, const hol_room *start, const hol_tile *keys,
+                     int nkeys, hol_tile chest, size_t budget,
+                     uint8_t *out_walk, size_t cap, hol_nav_result *out_result);
+
+/* Hot-cold field (minimap). One entry per tile within `radius` tiles of the
+ * user's tile. */
+typedef struct hol_nav_cell {
+    hol_tile tile; /* absolute tile */
+    hol_tile rel;  /* its address seen from the user (room north as N) */
+    int16_t user_dist; /* tiles from the user's tile (rel's length) */
+    int16_t hot;       /* tile distance to the nearest objective; -1 if none */
+} hol_nav_cell;
+
+/* Entries hol_nav_field writes for a radius (0..8): 1, 5, 17, 45, 109, ... */
+size_t hol_nav_field_count(int radius);
+
+/* Fill out_cells (cap entries) with the field around user (tile and room
+ * orientation); objectives: n tiles (n may be 0: every hot is -1). Entries
+ * come ordered by user_dist, the user's tile first. *out_n receives the
+ * number written. Errors: HOL_EARG (radius outside 0..8), HOL_ENOMEM (cap
+ * below hol_nav_field_count(radius)), HOL_ERANGE (a tile beyond reach). */
+hol_err hol_nav_field(const hol_room *user, int radius, const hol_tile *objectives,
+                      size_t n, hol_nav_cell *out_cells, size_t cap,
+                      size_t *out_n);
+
+/* Direction arrow: angle in radians counter-clockwise from room north (the
+ * room's -z axis seen from above; west is +pi/2) from the centre of the
+ * user's tile to the objective's centre, and the hyperbolic distance between
+ * the centres (curvature radius units). Correct for every pair of tiles in
+ * reach (precision depends only on their distance). The angle is 0 when the
+ * objective is the user's tile. Either output may be NULL. */
+hol_err hol_nav_direction(const hol_room *user, hol_tile objective,
+                          double *out_angle, double *out_dist);
+
+#endif
