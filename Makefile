@@ -50,7 +50,7 @@ DEB_PACKAGES := make gcc clang libcmocka-dev libosmesa6-dev libegl-dev \
   gcc-aarch64-linux-gnu qemu-user xvfb
 
 .PHONY: all test unit render-test cli-test fuzz-replay fuzz bench san clean deps \
-        check-clang cross-test
+        deps-cross check-clang cross-test
 
 all: $(BUILD)/holonomy
 
@@ -127,9 +127,12 @@ san:
 check-clang:
 	$(MAKE) CC=clang BUILD=$(BUILD)/clang all $(UNIT_BIN:$(BUILD)/%=$(BUILD)/clang/%)
 
-cross-test:
-	$(MAKE) CC=aarch64-linux-gnu-gcc BUILD=$(BUILD)/aarch64 $(BUILD)/aarch64/tests/cross_core
-	qemu-aarch64 -L /usr/aarch64-linux-gnu $(BUILD)/aarch64/tests/cross_core
+# The core and its unit tests for the headset's arm64 CPU, run under qemu.
+cross-test: deps-cross
+	$(MAKE) CC=aarch64-linux-gnu-gcc AR=aarch64-linux-gnu-ar BUILD=$(BUILD)/aarch64 \
+	  $(UNIT_SRC:tests/%.c=$(BUILD)/aarch64/tests/%)
+	@set -e; for t in $(UNIT_SRC:tests/%.c=$(BUILD)/aarch64/tests/%); do \
+	  echo "== $$t (qemu-aarch64)"; qemu-aarch64 -L /usr/aarch64-linux-gnu $$t; done
 
 deps:
 	@missing=""; for p in $(DEB_PACKAGES); do \
@@ -139,6 +142,14 @@ deps:
 	  echo "make deps: installing$$missing"; \
 	  $$SUDO apt-get update -qq && \
 	  DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq --no-install-recommends $$missing; fi
+
+# cmocka for arm64 comes from Debian's multiarch archive.
+deps-cross: deps
+	@if dpkg -s libcmocka-dev:arm64 >/dev/null 2>&1; then :; else \
+	  SUDO=$$( [ "$$(id -u)" = 0 ] || echo sudo ); \
+	  $$SUDO dpkg --add-architecture arm64 && $$SUDO apt-get update -qq && \
+	  DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq \
+	    --no-install-recommends libcmocka-dev:arm64; fi
 
 clean:
 	rm -rf $(BUILD)

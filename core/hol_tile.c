@@ -64,10 +64,14 @@ typedef struct hol__word {
     int len;
 } hol__word;
 
-static int hol__get(const hol__word *w, int i)
+/* Letter i of a bit array (a hol__word's b or a hol_tile's bits: letters
+ * of a valid tile never reach the length field). */
+static int hol__at(const uint64_t *b, int i)
 {
-    return (int)((w->b[i >> 5] >> (2 * (i & 31))) & 3u);
+    return (int)((b[i >> 5] >> (2 * (i & 31))) & 3u);
 }
+
+static int hol__get(const hol__word *w, int i) { return hol__at(w->b, i); }
 
 static void hol__push(hol__word *w, int c)
 {
@@ -83,14 +87,33 @@ static void hol__pop(hol__word *w)
     w->b[w->len >> 5] &= ~(UINT64_C(3) << (2 * (w->len & 31)));
 }
 
-/* Automaton state after the whole word (length >= 1). */
-static int hol__state(const hol__word *w)
+/* Automaton state after the whole word (length >= 1). The automaton
+ * synchronises: after an "l" it is always in state 2 and after "fff" always
+ * in state 0, so only the letters after the last such mark are run. */
+static int hol__state_of(const uint64_t *b, int len)
 {
-    int s = 0;
-    for (int i = 1; i < w->len; i++)
-        s = hol__dfa[s][hol__get(w, i)];
+    int i = len - 1, run = 0, s = 0;
+    for (; i >= 1; i--) {
+        int c = hol__at(b, i);
+        if (c == HOL_TURN_L) {
+            s = 2;
+            break;
+        }
+        run = c == HOL_TURN_F ? run + 1 : 0;
+        if (run == 3) {
+            s = 0;
+            i += 2;
+            break;
+        }
+    }
+    if (i < 1)
+        i = 0;
+    for (i++; i < len; i++)
+        s = hol__dfa[s][hol__at(b, i)];
     return s;
 }
+
+static int hol__state(const hol__word *w) { return hol__state_of(w->b, w->len); }
 
 static hol__word hol__widen(hol_tile t)
 {
@@ -150,6 +173,10 @@ int hol_tile_letter(hol_tile t, int i)
 static const char hol__branch_ch[4] = {'N', 'W', 'S', 'E'};
 static const char hol__turn_ch[4] = {'f', 'l', '?', 'r'};
 
+/* Letter code + 1 of each character after the branch (0: not a letter). */
+static const uint8_t hol__turn_code[256] = {
+    ['f'] = HOL_TURN_F + 1, ['l'] = HOL_TURN_L + 1, ['r'] = HOL_TURN_R + 1};
+
 /* Letter code of character c at position i, or -1. */
 static int hol__code(char c, ptrdiff_t i)
 {
@@ -162,12 +189,7 @@ static int hol__code(char c, ptrdiff_t i)
         default: return -1;
         }
     }
-    switch (c) {
-    case 'f': return HOL_TURN_F;
-    case 'l': return HOL_TURN_L;
-    case 'r': return HOL_TURN_R;
-    default: return -1;
-    }
+    return hol__turn_code[(unsigned char)c] - 1;
 }
 
 hol_err hol_tile_parse(const char *s, ptrdiff_t len, hol_tile *out_tile)
@@ -285,9 +307,20 @@ static int hol__valid(hol_tile t)
 
 hol_err hol_tile_step(hol_tile t, int turn, hol_tile *out_tile, int *out_arrive)
 {
-    int arr;
-    if (!hol__valid(t))
+    int arr, n = hol__len(t);
+    turn &= 3;
+    if (n > HOL_TILE_MAX_DIST)
         return HOL_EARG;
+    /* fast path: a child of a tile short of the reach */
+    if (n > 0 && n < HOL_TILE_MAX_DIST && turn != HOL_TURN_B &&
+        hol__dfa[hol__state_of(t.bits, n)][turn] != HOL__SINK) {
+        t.bits[n >> 5] |= (uint64_t)turn << (2 * (n & 31));
+        t.bits[1] += UINT64_C(1) << 58;
+        *out_tile = t;
+        if (out_arrive)
+            *out_arrive = 0;
+        return HOL_OK;
+    }
     hol__word w = hol__widen(t);
     hol_err err = hol__step(&w, turn, &arr);
     if (!err && w.len > HOL_TILE_MAX_DIST)
