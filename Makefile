@@ -30,7 +30,7 @@ RENDER_TEST_SRC := $(wildcard tests/test_render*.c)
 UNIT_SRC := $(filter-out $(RENDER_TEST_SRC),$(wildcard tests/test_*.c))
 CLI_TESTS := $(wildcard tests/cli_*.sh)
 # Libraries the renderer needs (headless OSMesa; EGL for the desktop build).
-RENDER_LIBS ?= -lOSMesa
+RENDER_LIBS ?= -lOSMesa -lz
 BENCH_SRC := $(wildcard tests/bench_*.c)
 FUZZ_SRC := $(wildcard fuzz/fuzz_*.c)
 
@@ -47,9 +47,9 @@ FUZZ_BIN := $(FUZZ_SRC:fuzz/%.c=$(BUILD)/fuzz/%)
 
 DEB_PACKAGES := make gcc clang libcmocka-dev libosmesa6-dev libegl-dev \
   libgles-dev libhidapi-dev libusb-1.0-0-dev libopenxr-dev \
-  gcc-aarch64-linux-gnu qemu-user xvfb
+  gcc-aarch64-linux-gnu qemu-user xvfb zlib1g-dev
 
-.PHONY: all test unit render-test cli-test fuzz-replay fuzz bench san clean deps \
+.PHONY: all test purity unit render-test cli-test fuzz-replay fuzz bench san clean deps \
         deps-cross check-clang cross-test
 
 all: $(BUILD)/holonomy
@@ -91,8 +91,11 @@ $(BUILD)/fuzz-replay/%: fuzz/%.c fuzz/replay_main.c $(CORE_SRC)
 	@mkdir -p $(dir $@)
 	$(CC) $(CSTD) $(WARN) -O1 -g -D_DEFAULT_SOURCE -o $@ $< fuzz/replay_main.c $(CORE_SRC) $(LDLIBS)
 
-test: all unit render-test cli-test fuzz-replay
+test: all purity unit render-test cli-test fuzz-replay
 	@echo "make test: all suites passed"
+
+purity: $(CORE_OBJ)
+	@sh tests/check_core_purity.sh $(CORE_OBJ)
 
 unit: $(UNIT_BIN)
 	@set -e; for t in $(UNIT_BIN); do echo "== $$t"; $$t; done
