@@ -11,15 +11,13 @@
  *   a room state (tile, orientation, cell) to a target depend only on the
  *   user's tile and room north as seen from the target, plus the cell. It
  *   holds, for every tile within desc.radius of a target, every orientation
- *   and cell, the fewest steps of walks that stay within that radius; with a
- *   bound on walks that leave it this gives an exact answer for near
- *   targets without search and an admissible heuristic elsewhere.
- * - hol_nav_find is exact (result.exact = 1) whenever it returns HOL_OK
- *   without the budget running out; the arena capacity bounds the work, so
- *   no query hangs. When the budget or arena runs out it still returns a
- *   complete walk (waypoints along the geodesic, each leg from the table)
- *   with result.exact = 0 and returns HOL_OK; HOL_EBUDGET is never returned
- *   by hol_nav_find.
+ *   and cell, the fewest steps of walks that stay within that radius. For
+ *   targets within the trusted radius (radius - 2) the table gives the
+ *   answer without search (result.exact = 1).
+ * - Farther targets: anytime best-first search guided by the table, at most
+ *   `budget` nodes (the arena bounds it, so no query hangs); it returns the
+ *   best complete walk found (result.exact = 0), or failing that a chain of
+ *   exact legs to waypoints on the geodesic. HOL_EBUDGET is never returned.
  * - hol_nav_field and hol_nav_direction do not need a hol_nav: they are pure
  *   functions of tiles (no allocation, caller buffers).
  * - A hol_nav is not thread safe (one arena); use one per thread.
@@ -35,16 +33,16 @@
 #include "hol_tile.h"
 
 /* Defaults of hol_nav_desc (zero fields take these). */
-#define HOL_NAV_DEFAULT_RADIUS 13
+#define HOL_NAV_DEFAULT_RADIUS 14
 #define HOL_NAV_MAX_RADIUS 15
-#define HOL_NAV_DEFAULT_NODES (1u << 20)
+#define HOL_NAV_DEFAULT_NODES (1u << 18)
 /* Longest walk any query writes; out_walk buffers of this size always fit. */
 #define HOL_NAV_WALK_MAX 4096
 #define HOL_NAV_TOUR_MAX_KEYS 5
 
 typedef struct hol_nav_desc {
-    int radius;        /* cost table radius in tiles (1..15); 0: 13 */
-    size_t max_nodes;  /* search arena capacity in nodes; 0: 2^20 */
+    int radius;        /* cost table radius in tiles (3..15); 0: 14 */
+    size_t max_nodes;  /* search arena capacity in nodes; 0: 2^18 */
     /* allocator hooks (both or neither); zero: malloc/free */
     void *(*alloc_fn)(size_t size, void *user);
     void (*free_fn)(void *ptr, void *user);
@@ -53,27 +51,31 @@ typedef struct hol_nav_desc {
 
 typedef struct hol_nav hol_nav; /* opaque */
 
-/* Build the cost table (about 0.1 s at the default radius). Errors:
+/* Build the cost table (about 0.25 s and 28 MB in all at the default
+ * radius; 32 bytes a node plus 16 of hash and queue). Errors:
  * HOL_EARG (radius out of range), HOL_ENOMEM (the allocation failed). */
 hol_err hol_nav_create(const hol_nav_desc *desc, hol_nav **out_nav);
 void hol_nav_destroy(hol_nav *nav);
 
 /* Bytes held by the navigator (table + arena). */
 size_t hol_nav_memory(const hol_nav *nav);
-/* The largest tile distance d such that every room state whose target lies
- * within d tiles is answered from the table alone (no search). */
+/* The trusted radius, desc.radius - 2 (12 by default): targets within it
+ * are answered from the table alone (no search) and flagged exact. Costs
+ * there equal those of every larger table (the tests check radius r
+ * against r + 1 and against brute-force BFS); see hol_nav_table.c. */
 int hol_nav_table_exact_radius(const hol_nav *nav);
 
 typedef struct hol_nav_result {
     int len;      /* steps written to out_walk */
-    int exact;    /* 1: len is proven the fewest; 0: best walk found */
+    int exact;    /* 1: len is the fewest (trusted table); 0: best found */
     size_t nodes; /* search nodes expanded (0 when the table alone answered) */
 } hol_nav_result;
 
 /* Fewest further steps from *start (staying in the room) after which the
  * user stands on `target`, and such a walk in out_walk (cap entries).
- * budget: node budget of the exact search (0: the arena capacity). When
- * the search exceeds it, the anytime answer is returned (exact = 0).
+ * Within the trusted radius the answer is exact and budget is ignored.
+ * Beyond: budget is the node budget of the anytime search (0: the arena
+ * capacity); the best walk found is returned with exact = 0.
  * Errors: HOL_EARG (bad arguments), HOL_ENOMEM (cap too small for the
  * walk), HOL_ERANGE (a tile beyond the reach of tile words on the way). */
 hol_err hol_nav_find(hol_nav *nav, const hol_room *start, hol_tile target,

@@ -1,10 +1,113 @@
-/* cmd_nav.c - `holonomy nav` (placeholder until its issue lands). */
+/* cmd_nav.c - `holonomy nav`: fewest room steps to a target tile (SPEC 4). */
+#include <errno.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "../../core/hol_nav.h"
+#include "../../core/hol_nav_line.h"
 #include "cli.h"
+
+static const char *const nav_usage =
+    "usage: holonomy nav [--budget N]\n"
+    "\n"
+    "Reads lines 'PREFIX TARGET': PREFIX a walk of room steps (N, E, S, W)\n"
+    "from the start, cell (1,1) of tile O, that stays inside the 3 x 3 room\n"
+    "('-' for none); TARGET a tile address (O, or N/E/S/W then f/l/r).\n"
+    "Prints per line 'K WALK': K the fewest further steps, staying inside the\n"
+    "room, after which the user stands on TARGET, and WALK such a walk ('-'\n"
+    "when K is 0).\n"
+    "\n"
+    "Targets within 12 tiles of the user's tile (after PREFIX) are answered\n"
+    "exactly from a cost table (no search). Farther targets are answered by\n"
+    "an anytime search: K is then the length of the best walk found, an upper\n"
+    "bound on the fewest (usually equal or within a few steps).\n"
+    "\n"
+    "  --budget N   node budget of the anytime search for targets beyond 12\n"
+    "               tiles (default and maximum 262144; about 2 ms per 10000)\n"
+    "  -h, --help   this text\n"
+    "\n"
+    "Exit status: 0 ok, 1 output or memory failure, 2 bad input or usage\n"
+    "(one line on stderr naming the input line; nothing printed for it).\n";
+
+/* Parse a positive decimal count; 0 on failure. */
+static size_t parse_count(const char *s)
+{
+    if (!s || !*s || *s == '-' || *s == '+')
+        return 0;
+    char *end;
+    errno = 0;
+    unsigned long long v = strtoull(s, &end, 10);
+    if (errno || *end || v == 0 || v > (1ull << 40))
+        return 0;
+    return (size_t)v;
+}
 
 int cli_cmd_nav(int argc, char **argv)
 {
-    (void)argc;
-    (void)argv;
-    cli_error("nav", 0, "not implemented yet");
-    return CLI_EXIT_FAIL;
+    const char *cmd = "nav";
+    if (cli_wants_help(argc, argv)) {
+        fputs(nav_usage, stdout);
+        return cli_finish_output(cmd);
+    }
+    size_t budget = 0;
+    for (int i = 1; i < argc; i++) {
+        if (!strcmp(argv[i], "--budget")) {
+            if (i + 1 >= argc || !(budget = parse_count(argv[i + 1]))) {
+                cli_error(cmd, 0, "--budget needs a positive node count; see --help");
+                return CLI_EXIT_USAGE;
+            }
+            i++;
+        } else if (!strncmp(argv[i], "--budget=", 9)) {
+            if (!(budget = parse_count(argv[i] + 9))) {
+                cli_error(cmd, 0, "--budget needs a positive node count; see --help");
+                return CLI_EXIT_USAGE;
+            }
+        } else {
+            cli_error(cmd, 0, "unknown argument '%.40s'; see --help", argv[i]);
+            return CLI_EXIT_USAGE;
+        }
+    }
+    hol_nav *nav;
+    hol_err err = hol_nav_create(NULL, &nav);
+    if (err) {
+        cli_error(cmd, 0, "cannot build the cost table: %s", hol_err_str(err));
+        return CLI_EXIT_FAIL;
+    }
+    static uint8_t walk[HOL_NAV_WALK_MAX];
+    static char text[HOL_NAV_WALK_MAX + 1];
+    cli_lines in;
+    char *s;
+    size_t len;
+    int r, status = CLI_EXIT_OK;
+    cli_lines_init(&in, stdin);
+    while (status == CLI_EXIT_OK && (r = cli_lines_next(&in, &s, &len)) > 0) {
+        hol_room room;
+        hol_tile target;
+        char msg[256];
+        if (hol_nav_parse_line(s, len, &room, &target, msg, sizeof msg)) {
+            cli_error(cmd, in.lineno, "%s", msg);
+            status = CLI_EXIT_USAGE;
+            break;
+        }
+        hol_nav_result res;
+        err = hol_nav_find(nav, &room, target, budget, walk, sizeof walk, &res);
+        if (err) {
+            cli_error(cmd, in.lineno, "no walk: %s", hol_err_str(err));
+            status = err == HOL_ENOMEM ? CLI_EXIT_FAIL : CLI_EXIT_USAGE;
+            break;
+        }
+        for (int i = 0; i < res.len; i++)
+            text[i] = hol_dir_to_char(walk[i]);
+        text[res.len] = '\0';
+        printf("%d %s\n", res.len, res.len ? text : "-");
+    }
+    if (status == CLI_EXIT_OK && r < 0) {
+        cli_error(cmd, 0, "cannot read input");
+        status = CLI_EXIT_FAIL;
+    }
+    cli_lines_fini(&in);
+    hol_nav_destroy(nav);
+    int out = cli_finish_output(cmd);
+    return status ? status : out;
 }

@@ -1,0 +1,658 @@
+/* test_nav.c - guidance against brute force.
+ *
+ * The brute force is a breadth-first search over absolute room states
+ * (tile, orientation, cell) with hol_room_step, written here and sharing no
+ * code with core/hol_nav*.c: it knows nothing of relative positions, cost
+ * tables or symmetry. Checked: fewest steps and walk validity for random
+ * starts and targets to tile distance 8; the tile numbering against the
+ * SPEC counts; the table against a larger table (the trust argument); the
+ * anytime mode against exact answers (prefix rate measured); tours against
+ * every key order with BFS legs; the hot-cold field against
+ * hol_tile_dist; the direction against the room's axes; input parsing.
+ */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "../core/hol_nav.h"
+#include "../core/hol_nav_line.h"
+#include "../core/hol_nav_table.h"
+#include "../core/hol_room.h"
+#include "../core/hol_tile.h"
+
+static hol_nav *g_nav; /* default navigator (radius 14, trusted 12) */
+
+static int setup(void **state)
+{
+    (void)state;
+    return hol_nav_create(NULL, &g_nav) != HOL_OK;
+}
+
+static int teardown(void **state)
+{
+    (void)state;
+    hol_nav_destroy(g_nav);
+    return 0;
+}
+
+/* ---- deterministic random numbers ---- */
+
+static uint64_t rng_state = 0x1234567887654321ull;
+
+static uint32_t rnd(uint32_t n)
+{
+    rng_state ^= rng_state << 13;
+    rng_state ^= rng_state >> 7;
+    rng_state ^= rng_state << 17;
+    return (uint32_t)((rng_state >> 11) % n);
+}
+
+/* ---- brute force: BFS over absolute room states ---- */
+
+typedef struct bf_state {
+    hol_room room;
+    int32_t parent; /* index in the state array, -1 for the root */
+    uint8_t dir;
+    uint8_t stage; /* tour: index of the next key in the order */
+} bf_state;
+
+typedef struct bf {
+    bf_state *st;
+    size_t n, cap;
+    int32_t *hash;
+    size_t hmask;
+} bf;
+
+static void bf_init(bf *b, size_t cap)
+{
+    b->cap = cap;
+    b->st = malloc(cap * sizeof *b->st);
+    size_t h = 1;
+    while (h < 2 * cap)
+        h <<= 1;
+    b->hash = malloc(h * sizeof *b->hash);
+    b->hmask = h - 1;
+    assert_non_null(b->st);
+    assert_non_null(b->hash);
+}
+
+static void bf_free(bf *b)
+{
+    free(b->st);
+    free(b->hash);
+}
+
+static size_t bf_slot(const bf *b, const hol_room *r, int stage)
+{
+    uint64_t h = hol_tile_hash(r->tile) ^
+                 ((uint64_t)(r->orient + 4 * (r->col + 3 * r->row) + 64 * stage) *
+                  0x9E3779B97F4A7C15ull);
+    h ^= h >> 31;
+    return (size_t)h & b->hmask;
+}
+
+/* Index of the state or -1 after inserting it (new). */
+static int bf_add(bf *b, const hol_room *r, int stage, int32_t parent, int dir)
+{
+    size_t s = bf_slot(b, r, stage);
+    while (b->hash[s] >= 0) {
+        const bf_state *o = &b->st[b->hash[s]];
+        if (o->stage == stage && o->room.orient == r->orient &&
+            o->room.col == r->col && o->room.row == r->row &&
+            hol_tile_eq(o->room.tile, r->tile))
+            return b->hash[s];
+        s = (s + 1) & b->hmask;
+    }
+    assert_true(b->n < b->cap);
+    b->hash[s] = (int32_t)b->n;
+    bf_state *n = &b->st[b->n++];
+    n->room = *r;
+    n->parent = parent;
+    n->dir = (uint8_t)dir;
+    n->stage = (uint8_t)stage;
+    return -1;
+}
+
+/* Fewest steps from start to stand on the tiles goals[0], goals[1], ... in
+ * this order (a tile passed early counts when it is the next in order).
+ * Returns -1 if not found within max_depth. */
+static int bf_order(bf *b, const hol_room *start, const hol_tile *goals, int ngoals,
+                    int max_depth)
+{
+    b->n = 0;
+    memset(b->hash, 0xff, (b->hmask + 1) * sizeof *b->hash);
+    int stage = 0;
+    while (stage < ngoals && hol_tile_eq(start->tile, goals[stage]))
+        stage++;
+    if (stage == ngoals)
+        return 0;
+    bf_add(b, start, stage, -1, 0);
+    size_t head = 0;
+    for (int depth = 0; depth < max_depth; depth++) {
+        size_t end = b->n;
+        for (; head < end; head++) {
+            for (int d = 0; d < 4; d++) {
+                hol_room r = b->st[head].room;
+                if (hol_room_step(&r, d))
+                    continue;
+                int s = b->st[head].stage;
+                while (s < ngoals && hol_tile_eq(r.tile, goals[s]))
+                    s++;
+                if (s == ngoals)
+                    return depth + 1;
+                bf_add(b, &r, s, (int32_t)head, d);
+            }
+        }
+    }
+    return -1;
+}
+
+static int bf_cost(bf *b, const hol_room *start, hol_tile target, int max_depth)
+{
+    return bf_order(b, start, &target, 1, max_depth);
+}
+
+/* ---- helpers ---- */
+
+/* Random start: a random walk inside the room from the start state. */
+static hol_room random_start(int max_steps)
+{
+    hol_room r = hol_room_start();
+    int n = (int)rnd((uint32_t)max_steps + 1);
+    for (int i = 0; i < n; i++)
+        hol_room_step(&r, (int)rnd(4)); /* refused steps leave r unchanged */
+    return r;
+}
+
+/* A random tile at exactly distance d from the user's tile. */
+static hol_tile random_target(const hol_room *user, int d)
+{
+    if (d > HOL_NAVTAB_MAX_RADIUS) {
+        /* random canonical word, letter by letter */
+        hol_tile rel = hol_tile_origin(), c;
+        assert_int_equal(hol_tile_child(rel, (int)rnd(4), &rel), HOL_OK);
+        while (hol_tile_dist0(rel) < d) {
+            static const int letters[3] = {0, 1, 3};
+            if (!hol_tile_child(rel, letters[rnd(3)], &c))
+                rel = c;
+        }
+        hol_flag f = {user->tile, user->orient};
+        for (int i = 0; i < d; i++)
+            assert_int_equal(hol_flag_step(f, hol_tile_letter(rel, i), &f), HOL_OK);
+        assert_int_equal(hol_tile_dist(user->tile, f.tile), d);
+        return f.tile;
+    }
+    hol_navtab ix;
+    hol_navtab_init_index(&ix, d);
+    uint32_t lo = ix.off[d], hi = ix.off[d + 1];
+    hol_tile rel = hol_navtab_unrank(&ix, lo + rnd(hi - lo));
+    hol_flag f = {user->tile, user->orient};
+    for (int i = 0; i < d; i++)
+        assert_int_equal(hol_flag_step(f, hol_tile_letter(rel, i), &f), HOL_OK);
+    assert_int_equal(hol_tile_dist(user->tile, f.tile), d);
+    return f.tile;
+}
+
+/* The walk stays in the room and ends on target. */
+static void check_walk(const hol_room *start, const uint8_t *walk, int n,
+                       hol_tile target)
+{
+    hol_room r = *start;
+    for (int i = 0; i < n; i++)
+        assert_int_equal(hol_room_step(&r, walk[i]), HOL_OK);
+    assert_true(hol_tile_eq(r.tile, target));
+}
+
+/* ---- tile numbering ---- */
+
+static void test_index(void **state)
+{
+    (void)state;
+    static const uint32_t spec[13] = {1,    4,    12,   28,    64,    148,  340,
+                                      780,  1792, 4116, 9452, 21708, 49856};
+    hol_navtab ix;
+    assert_int_equal(hol_navtab_init_index(&ix, 12), HOL_OK);
+    for (int d = 0; d <= 12; d++)
+        assert_int_equal(ix.off[d + 1] - ix.off[d], spec[d]);
+    hol_tile prev = hol_tile_origin();
+    for (uint32_t i = 0; i < ix.off[10]; i++) {
+        hol_tile t = hol_navtab_unrank(&ix, i);
+        char buf[HOL_TILE_ADDR_MAX];
+        hol_tile back;
+        hol_tile_print(t, buf);
+        /* every word is a canonical address, ranks are dense and ordered */
+        assert_int_equal(hol_tile_parse(buf, -1, &back), HOL_OK);
+        assert_true(hol_tile_eq(back, t));
+        assert_int_equal(hol_navtab_rank(&ix, t), i);
+        assert_int_equal(hol_navtab_len(&ix, i), hol_tile_dist0(t));
+        if (i > 0)
+            assert_false(hol_tile_eq(prev, t));
+        prev = t;
+    }
+    hol_tile far;
+    assert_int_equal(hol_tile_parse("Nffffffffffff", -1, &far), HOL_OK);
+    assert_int_equal(hol_navtab_rank(&ix, far), HOL_NAVTAB_NONE);
+}
+
+/* ---- the table: radius r agrees with radius r + 1 within r - 2 ---- */
+
+static void check_converged(int r)
+{
+    hol_navtab a, b;
+    void *ma = malloc(hol_navtab_table_bytes(r)), *mb = malloc(hol_navtab_table_bytes(r + 1));
+    void *s = malloc(hol_navtab_scratch_bytes(r + 1));
+    assert_non_null(ma);
+    assert_non_null(mb);
+    assert_non_null(s);
+    assert_int_equal(hol_navtab_build(&a, r, ma, s), HOL_OK);
+    assert_int_equal(hol_navtab_build(&b, r + 1, mb, s), HOL_OK);
+    size_t n = 9 * (size_t)a.off[r - 1];
+    assert_memory_equal(a.cost, b.cost, n);
+    /* and it does differ at the edge, so the check has teeth */
+    assert_true(memcmp(a.cost, b.cost, 9 * (size_t)a.count) != 0);
+    free(ma);
+    free(mb);
+    free(s);
+}
+
+static void test_table_converges(void **state)
+{
+    (void)state;
+    for (int r = 4; r <= 12; r++)
+        check_converged(r);
+}
+
+/* The default radius (14 against 15): the claim behind "exact within 12".
+ * About 1 s and 80 MB. */
+static void test_table_converges_default(void **state)
+{
+    (void)state;
+    check_converged(HOL_NAV_DEFAULT_RADIUS);
+}
+
+static void test_table_small(void **state)
+{
+    (void)state;
+    /* hand-checked costs from the start state (cell (1,1), orientation 0) */
+    static const struct {
+        const char *target;
+        int cost;
+    } cases[] = {{"O", 0}, {"N", 1}, {"W", 1}, {"Nr", 2}, {"Nf", 5}, {"Nff", 7}};
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        hol_tile t;
+        assert_int_equal(hol_tile_parse(cases[i].target, -1, &t), HOL_OK);
+        hol_room s = hol_room_start();
+        uint8_t walk[64];
+        hol_nav_result res;
+        assert_int_equal(hol_nav_find(g_nav, &s, t, 0, walk, sizeof walk, &res), HOL_OK);
+        assert_int_equal(res.len, cases[i].cost);
+        assert_int_equal(res.exact, 1);
+        check_walk(&s, walk, res.len, t);
+    }
+}
+
+/* ---- optimality against brute force ---- */
+
+static void test_optimal_vs_bfs(void **state)
+{
+    (void)state;
+    bf b;
+    bf_init(&b, 1u << 21);
+    int checked = 0, hist[9] = {0};
+    for (int q = 0; q < 400; q++) {
+        hol_room s = random_start(40);
+        int d = 1 + (int)rnd(q < 200 ? 6 : 8);
+        hol_tile t = random_target(&s, d);
+        uint8_t walk[HOL_NAV_WALK_MAX];
+        hol_nav_result res;
+        assert_int_equal(hol_nav_find(g_nav, &s, t, 0, walk, sizeof walk, &res), HOL_OK);
+        assert_int_equal(res.exact, 1);
+        check_walk(&s, walk, res.len, t);
+        /* the brute force finds nothing shorter, and finds this length */
+        if (res.len > 33)
+            continue; /* beyond the brute force's reach in test time */
+        int c = bf_cost(&b, &s, t, res.len);
+        assert_int_equal(c, res.len);
+        checked++;
+        hist[d]++;
+    }
+    print_message("optimal vs BFS: %d queries (by distance 1..8: %d %d %d %d %d %d %d %d)\n",
+                  checked, hist[1], hist[2], hist[3], hist[4], hist[5], hist[6],
+                  hist[7], hist[8]);
+    assert_true(hist[8] >= 5);
+    bf_free(&b);
+}
+
+/* ---- anytime mode ---- */
+
+/* A small navigator (radius 8, trusted 6) answers targets at distance 7 to
+ * 10 in anytime mode; the default navigator gives the exact answers. */
+static void test_anytime(void **state)
+{
+    (void)state;
+    hol_nav_desc desc = {0};
+    desc.radius = 8;
+    desc.max_nodes = 1u << 16;
+    hol_nav *small;
+    assert_int_equal(hol_nav_create(&desc, &small), HOL_OK);
+    assert_int_equal(hol_nav_table_exact_radius(small), 6);
+    int n = 0, equal = 0, prefix = 0;
+    for (int q = 0; q < 120; q++) {
+        hol_room s = random_start(30);
+        int d = 7 + (int)rnd(4);
+        hol_tile t = random_target(&s, d);
+        uint8_t walk[HOL_NAV_WALK_MAX], best[HOL_NAV_WALK_MAX];
+        hol_nav_result res, opt;
+        size_t budget = q % 2 ? 200 : 5000;
+        assert_int_equal(hol_nav_find(small, &s, t, budget, walk, sizeof walk, &res), HOL_OK);
+        assert_int_equal(res.exact, 0);
+        assert_true(res.nodes <= budget);
+        check_walk(&s, walk, res.len, t);
+        assert_int_equal(hol_nav_find(g_nav, &s, t, 0, best, sizeof best, &opt), HOL_OK);
+        assert_int_equal(opt.exact, 1);
+        assert_true(res.len >= opt.len);
+        n++;
+        equal += res.len == opt.len;
+        /* first 3 steps a prefix of an optimal walk: the remaining exact
+         * cost after them is opt - 3 */
+        hol_room r = s;
+        int k = res.len < 3 ? res.len : 3;
+        for (int i = 0; i < k; i++)
+            hol_room_step(&r, walk[i]);
+        hol_nav_result rest;
+        assert_int_equal(hol_nav_find(g_nav, &r, t, 0, best, sizeof best, &rest), HOL_OK);
+        prefix += rest.len + k == opt.len;
+    }
+    print_message("anytime (radius 8, targets 7..10): %d/%d optimal length, "
+                  "%d/%d first 3 steps on an optimal walk\n", equal, n, prefix, n);
+    assert_true(prefix * 2 >= n);
+    hol_nav_destroy(small);
+}
+
+/* Far targets: complete, valid walks, never exact, bounded work. */
+static void test_far(void **state)
+{
+    (void)state;
+    for (int q = 0; q < 6; q++) {
+        hol_room s = random_start(20);
+        int d = 13 + 4 * q;
+        hol_tile t = random_target(&s, d);
+        uint8_t walk[HOL_NAV_WALK_MAX];
+        hol_nav_result res;
+        assert_int_equal(hol_nav_find(g_nav, &s, t, 2000, walk, sizeof walk, &res), HOL_OK);
+        assert_int_equal(res.exact, 0);
+        check_walk(&s, walk, res.len, t);
+        assert_true(res.len >= d);
+        assert_true(res.len <= 4 * d + 8);
+    }
+    /* a buffer too small is an error, not a truncated walk */
+    hol_room s = hol_room_start();
+    hol_tile t;
+    assert_int_equal(hol_tile_parse("Nffffff", -1, &t), HOL_OK);
+    uint8_t tiny[4];
+    hol_nav_result res;
+    assert_int_equal(hol_nav_find(g_nav, &s, t, 0, tiny, sizeof tiny, &res), HOL_ENOMEM);
+}
+
+/* ---- tours ---- */
+
+static int perm_next(int *a, int n)
+{
+    int i = n - 2;
+    while (i >= 0 && a[i] >= a[i + 1])
+        i--;
+    if (i < 0)
+        return 0;
+    int j = n - 1;
+    while (a[j] <= a[i])
+        j--;
+    int t = a[i];
+    a[i] = a[j];
+    a[j] = t;
+    for (int l = i + 1, r = n - 1; l < r; l++, r--) {
+        t = a[l];
+        a[l] = a[r];
+        a[r] = t;
+    }
+    return 1;
+}
+
+static void test_tour_vs_bruteforce(void **state)
+{
+    (void)state;
+    bf b;
+    bf_init(&b, 1u << 21);
+    for (int q = 0; q < 14; q++) {
+        hol_room s = random_start(20);
+        int nk = 1 + q % 3;
+        hol_tile keys[5], chest;
+        for (int i = 0; i < nk; i++)
+            keys[i] = random_target(&s, 1 + (int)rnd(2));
+        chest = random_target(&s, 1 + (int)rnd(2));
+        if (q == 5)
+            keys[1] = keys[0]; /* duplicate keys */
+        if (q == 7)
+            chest = s.tile; /* chest under the user */
+        uint8_t walk[HOL_NAV_WALK_MAX];
+        hol_nav_result res;
+        assert_int_equal(hol_nav_tour(g_nav, &s, keys, nk, chest, 0, walk, sizeof walk, &res),
+                         HOL_OK);
+        assert_int_equal(res.exact, 1);
+        /* the walk visits every key, then the chest */
+        hol_room r = s;
+        unsigned got = 0;
+        for (int k = 0; k < nk; k++)
+            if (hol_tile_eq(r.tile, keys[k]))
+                got |= 1u << k;
+        int chest_after = nk == 0 && hol_tile_eq(r.tile, chest);
+        for (int i = 0; i < res.len; i++) {
+            assert_int_equal(hol_room_step(&r, walk[i]), HOL_OK);
+            for (int k = 0; k < nk; k++)
+                if (hol_tile_eq(r.tile, keys[k]))
+                    got |= 1u << k;
+            if (got == (1u << nk) - 1 && hol_tile_eq(r.tile, chest))
+                chest_after = 1;
+        }
+        assert_int_equal(got, (1u << nk) - 1);
+        assert_true(chest_after);
+        assert_true(hol_tile_eq(r.tile, chest));
+        /* brute force: every order of the keys, BFS in (state, stage) */
+        int order[5] = {0, 1, 2, 3, 4}, best = -1;
+        do {
+            hol_tile goals[6];
+            for (int i = 0; i < nk; i++)
+                goals[i] = keys[order[i]];
+            goals[nk] = chest;
+            int c = bf_order(&b, &s, goals, nk + 1, res.len);
+            if (c >= 0 && (best < 0 || c < best))
+                best = c;
+        } while (perm_next(order, nk));
+        assert_int_equal(best, res.len);
+    }
+    /* no keys: a plain walk to the chest */
+    hol_room s = hol_room_start();
+    hol_tile chest;
+    assert_int_equal(hol_tile_parse("Nff", -1, &chest), HOL_OK);
+    uint8_t walk[64];
+    hol_nav_result res;
+    assert_int_equal(hol_nav_tour(g_nav, &s, NULL, 0, chest, 0, walk, sizeof walk, &res),
+                     HOL_OK);
+    assert_int_equal(res.len, 7);
+    assert_int_equal(hol_nav_tour(g_nav, &s, NULL, 6, chest, 0, walk, sizeof walk, &res),
+                     HOL_EARG);
+    bf_free(&b);
+}
+
+/* Budget exhausted: the greedy tour is still complete and valid. */
+static void test_tour_budget(void **state)
+{
+    (void)state;
+    hol_room s = hol_room_start();
+    hol_tile keys[5], chest;
+    for (int i = 0; i < 5; i++)
+        keys[i] = random_target(&s, 3 + i);
+    chest = random_target(&s, 4);
+    uint8_t walk[HOL_NAV_WALK_MAX];
+    hol_nav_result res;
+    assert_int_equal(hol_nav_tour(g_nav, &s, keys, 5, chest, 50, walk, sizeof walk, &res),
+                     HOL_OK);
+    assert_int_equal(res.exact, 0);
+    hol_room r = s;
+    unsigned got = 0;
+    for (int i = 0; i < res.len; i++) {
+        assert_int_equal(hol_room_step(&r, walk[i]), HOL_OK);
+        for (int k = 0; k < 5; k++)
+            if (hol_tile_eq(r.tile, keys[k]))
+                got |= 1u << k;
+    }
+    assert_int_equal(got, 31u);
+    assert_true(hol_tile_eq(r.tile, chest));
+}
+
+/* ---- hot-cold field and direction ---- */
+
+static void test_field(void **state)
+{
+    (void)state;
+    assert_int_equal(hol_nav_field_count(0), 1);
+    assert_int_equal(hol_nav_field_count(1), 5);
+    assert_int_equal(hol_nav_field_count(4), 109);
+    assert_int_equal(hol_nav_field_count(9), 0);
+    for (int q = 0; q < 10; q++) {
+        hol_room u = random_start(30);
+        hol_tile obj[3];
+        size_t nobj = (size_t)(q % 4);
+        for (size_t i = 0; i < nobj; i++)
+            obj[i] = random_target(&u, 1 + (int)rnd(9));
+        hol_nav_cell cells[109];
+        size_t n;
+        assert_int_equal(hol_nav_field(&u, 4, obj, nobj, cells, 108, &n), HOL_ENOMEM);
+        assert_int_equal(hol_nav_field(&u, 4, obj, nobj, cells, 109, &n), HOL_OK);
+        assert_int_equal(n, 109);
+        assert_true(hol_tile_eq(cells[0].tile, u.tile));
+        for (size_t i = 0; i < n; i++) {
+            assert_int_equal(cells[i].user_dist, hol_tile_dist(u.tile, cells[i].tile));
+            assert_int_equal(cells[i].user_dist, hol_tile_dist0(cells[i].rel));
+            if (i)
+                assert_true(cells[i].user_dist >= cells[i - 1].user_dist);
+            int hot = -1;
+            for (size_t j = 0; j < nobj; j++) {
+                int dd = hol_tile_dist(cells[i].tile, obj[j]);
+                if (hot < 0 || dd < hot)
+                    hot = dd;
+            }
+            assert_int_equal(cells[i].hot, hot);
+            /* the relative address is the tile seen from the user */
+            hol_tile rel;
+            assert_int_equal(hol_tile_relative(u.tile, u.orient, cells[i].tile, &rel, NULL),
+                             HOL_OK);
+            assert_true(hol_tile_eq(rel, cells[i].rel));
+            for (size_t j = 0; j < i; j++)
+                assert_false(hol_tile_eq(cells[j].tile, cells[i].tile));
+        }
+    }
+}
+
+static void test_direction(void **state)
+{
+    (void)state;
+    const double pi = 3.14159265358979323846;
+    hol_room s = hol_room_start();
+    /* the room's neighbours: N ahead (0), W left (+pi/2), E right (-pi/2) */
+    static const struct {
+        int dir;
+        double angle;
+    } cases[] = {{HOL_DIR_N, 0.0}, {HOL_DIR_W, pi / 2}, {HOL_DIR_E, -pi / 2}};
+    for (int k = 0; k < 3; k++) {
+        hol_room r = s;
+        assert_int_equal(hol_room_step(&r, cases[k].dir), HOL_OK);
+        double a, dist;
+        assert_int_equal(hol_nav_direction(&s, r.tile, &a, &dist), HOL_OK);
+        assert_true(fabs(a - cases[k].angle) < 1e-9);
+        assert_true(fabs(dist - 1.0612750619) < 1e-9);
+        /* and back: the room frame is carried, so from the neighbour the
+         * start lies in the opposite room direction */
+        double back;
+        assert_int_equal(hol_nav_direction(&r, s.tile, &back, NULL), HOL_OK);
+        assert_true(fabs(remainder(back - a - pi, 2 * pi)) < 1e-9);
+    }
+    /* a far tile straight ahead along room north stays at angle 0 from
+     * every state that walked north and back south (a room-frame check) */
+    hol_tile far;
+    assert_int_equal(hol_tile_parse("Nffffffffffffffffffff", -1, &far), HOL_OK);
+    double a, dist;
+    assert_int_equal(hol_nav_direction(&s, far, &a, &dist), HOL_OK);
+    assert_true(fabs(a) < 1e-9);
+    assert_true(dist > 20.0);
+    assert_int_equal(hol_nav_direction(&s, s.tile, &a, &dist), HOL_OK);
+    assert_true(a == 0.0 && dist == 0.0);
+    /* rotating the room turns the arrow: random states, the angle to a tile
+     * equals that of the tile seen in the rotated frame */
+    for (int q = 0; q < 20; q++) {
+        hol_room u = random_start(30);
+        hol_tile t = random_target(&u, 1 + (int)rnd(12));
+        double a0, a1;
+        assert_int_equal(hol_nav_direction(&u, t, &a0, NULL), HOL_OK);
+        hol_room v = u;
+        v.orient = (uint8_t)((u.orient + 1) & 3); /* room turned a quarter left */
+        assert_int_equal(hol_nav_direction(&v, t, &a1, NULL), HOL_OK);
+        double diff = remainder(a0 - a1 - pi / 2, 2 * pi);
+        assert_true(fabs(diff) < 1e-6);
+    }
+}
+
+/* ---- input lines ---- */
+
+static void test_parse(void **state)
+{
+    (void)state;
+    hol_room r;
+    hol_tile t;
+    char msg[128];
+    assert_int_equal(hol_nav_parse_line("- O", 3, &r, &t, msg, sizeof msg), HOL_OK);
+    assert_true(hol_tile_eq(t, hol_tile_origin()));
+    assert_int_equal(r.col, 1);
+    assert_int_equal(hol_nav_parse_line(" \tNE  Nr\t", 9, &r, &t, msg, sizeof msg), HOL_OK);
+    assert_int_equal(r.col, 2);
+    assert_int_equal(r.row, 0);
+    assert_int_equal(hol_nav_parse_line("NN O", 4, &r, &t, msg, sizeof msg), HOL_EROOM);
+    assert_non_null(strstr(msg, "step 2"));
+    assert_int_equal(hol_nav_parse_line("NX O", 4, &r, &t, msg, sizeof msg), HOL_EPARSE);
+    assert_non_null(strstr(msg, "character 2"));
+    assert_int_equal(hol_nav_parse_line("- Nrr", 5, &r, &t, msg, sizeof msg), HOL_ENOTCANON);
+    assert_non_null(strstr(msg, "El"));
+    assert_int_equal(hol_nav_parse_line("- Q", 3, &r, &t, msg, sizeof msg), HOL_EPARSE);
+    assert_int_equal(hol_nav_parse_line("-", 1, &r, &t, msg, sizeof msg), HOL_EPARSE);
+    assert_int_equal(hol_nav_parse_line("", 0, &r, &t, msg, sizeof msg), HOL_EPARSE);
+    assert_int_equal(hol_nav_parse_line("- O O", 5, &r, &t, msg, sizeof msg), HOL_EPARSE);
+    assert_int_equal(hol_nav_parse_line("- O\0", 4, &r, &t, msg, sizeof msg), HOL_EPARSE);
+    char tiny[8];
+    assert_int_equal(hol_nav_parse_line("- Nrr", 5, &r, &t, tiny, sizeof tiny), HOL_ENOTCANON);
+    assert_int_equal(strlen(tiny), 7);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_index),
+        cmocka_unit_test(test_table_converges),
+        cmocka_unit_test(test_table_converges_default),
+        cmocka_unit_test(test_table_small),
+        cmocka_unit_test(test_optimal_vs_bfs),
+        cmocka_unit_test(test_anytime),
+        cmocka_unit_test(test_far),
+        cmocka_unit_test(test_tour_vs_bruteforce),
+        cmocka_unit_test(test_tour_budget),
+        cmocka_unit_test(test_field),
+        cmocka_unit_test(test_direction),
+        cmocka_unit_test(test_parse),
+    };
+    return cmocka_run_group_tests(tests, setup, teardown);
+}
