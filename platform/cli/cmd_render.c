@@ -1,10 +1,349 @@
-/* cmd_render.c - `holonomy render` (placeholder until its issue lands). */
+/* cmd_render.c - `holonomy render`: one view to PNG through OSMesa (SPEC 4). */
+#include <errno.h>
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "../../core/hol_room.h"
+#include "../../core/hol_tile.h"
+#include "../../render/hol_png.h"
+#include "../../render/hol_render.h"
+#include "../osmesa/hol_osmesa.h"
 #include "cli.h"
+
+static const char *const render_usage =
+    "usage: holonomy render [--walk W] [--eye X,Y,Z] [--yaw DEG] [--pitch DEG]\n"
+    "                       [--size WxH] [--out FILE.png] [--tile-ids FILE]\n"
+    "                       [--stats] [--euclidean] [--bare] [--fov DEG]\n"
+    "                       [--frames N]\n"
+    "\n"
+    "Render what the user sees, headless (OSMesa), and write a PNG.\n"
+    "\n"
+    "  --walk W        walk inside the room from the start (N, E, S, W; '-'\n"
+    "                  for none, the default): sets the user's tile,\n"
+    "                  orientation and cell\n"
+    "  --eye X,Y,Z     eye in room coordinates (metres; x east, y up, z\n"
+    "                  south); x,z strictly inside the cell the walk ends in.\n"
+    "                  Default: that cell's centre at height 1.6\n"
+    "  --yaw DEG       0 looks north, positive turns west (default 0)\n"
+    "  --pitch DEG     positive looks up, -90..90 (default -30)\n"
+    "  --size WxH      image size in pixels, 1..8192 (default 640x480)\n"
+    "  --fov DEG       vertical field of view, 10..170 (default 90)\n"
+    "  --out FILE      write the view as PNG (atomically)\n"
+    "  --tile-ids FILE write 'PX PY ADDRESS' for every pixel showing floor\n"
+    "                  (PX from the left, PY from the top, pixel centres)\n"
+    "  --stats         print draw calls, triangles, stencil passes, CPU ms\n"
+    "  --euclidean     the same nine cells as a flat room, no portals\n"
+    "  --bare          floors only (no trees, hedges, props): for tests\n"
+    "  --frames N      render N times (stats: median CPU ms), default 1\n"
+    "\n"
+    "Floor outside the 3 x 3 room is never shown: 2 m hedges stand on the\n"
+    "room boundary. At least one of --out, --tile-ids, --stats is needed.\n"
+    "Exit status: 0 ok, 1 render or write failure, 2 bad input.\n";
+
+static int parse_double(const char *s, double *out)
+{
+    char *end;
+    errno = 0;
+    double v = strtod(s, &end);
+    if (end == s || *end || errno || !isfinite(v))
+        return 1;
+    *out = v;
+    return 0;
+}
+
+static int parse_int(const char *s, long lo, long hi, long *out)
+{
+    char *end;
+    errno = 0;
+    long v = strtol(s, &end, 10);
+    if (end == s || *end || errno || v < lo || v > hi)
+        return 1;
+    *out = v;
+    return 0;
+}
+
+typedef struct growbuf {
+    char *p;
+    size_t n, cap;
+    int bad;
+} growbuf;
+
+static void gb_printf(growbuf *g, const char *fmt, int x, int y, const char *s)
+{
+    if (g->bad)
+        return;
+    if (g->cap - g->n < 128) {
+        size_t nc = g->cap ? g->cap * 2 : (1u << 16);
+        char *np = realloc(g->p, nc);
+        if (!np) {
+            g->bad = 1;
+            return;
+        }
+        g->p = np;
+        g->cap = nc;
+    }
+    int k = snprintf(g->p + g->n, g->cap - g->n, fmt, x, y, s);
+    if (k < 0 || (size_t)k >= g->cap - g->n)
+        g->bad = 1;
+    else
+        g->n += (size_t)k;
+}
+
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return x < y ? -1 : x > y;
+}
 
 int cli_cmd_render(int argc, char **argv)
 {
-    (void)argc;
-    (void)argv;
-    cli_error("render", 0, "not implemented yet");
-    return CLI_EXIT_FAIL;
+    const char *cmd = "render";
+    if (cli_wants_help(argc, argv)) {
+        fputs(render_usage, stdout);
+        return cli_finish_output(cmd);
+    }
+    const char *walk = "-", *eye_s = NULL, *out = NULL, *ids_path = NULL;
+    double yaw = 0, pitch = -30, fov = 90;
+    long w = 640, h = 480, frames = 1;
+    int stats = 0, flags = HOL_RENDER_NO_HUD;
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i];
+        const char *val = i + 1 < argc ? argv[i + 1] : NULL;
+        int takes = !strcmp(a, "--walk") || !strcmp(a, "--eye") ||
+                    !strcmp(a, "--yaw") || !strcmp(a, "--pitch") ||
+                    !strcmp(a, "--size") || !strcmp(a, "--out") ||
+                    !strcmp(a, "--tile-ids") || !strcmp(a, "--fov") ||
+                    !strcmp(a, "--frames");
+        if (takes && !val) {
+            cli_error(cmd, 0, "%s needs a value; see 'holonomy render --help'", a);
+            return CLI_EXIT_USAGE;
+        }
+        if (!strcmp(a, "--walk"))
+            walk = val;
+        else if (!strcmp(a, "--eye"))
+            eye_s = val;
+        else if (!strcmp(a, "--out"))
+            out = val;
+        else if (!strcmp(a, "--tile-ids"))
+            ids_path = val;
+        else if (!strcmp(a, "--yaw")) {
+            if (parse_double(val, &yaw)) {
+                cli_error(cmd, 0, "--yaw '%.40s' is not a number of degrees", val);
+                return CLI_EXIT_USAGE;
+            }
+        } else if (!strcmp(a, "--pitch")) {
+            if (parse_double(val, &pitch) || pitch < -90 || pitch > 90) {
+                cli_error(cmd, 0, "--pitch '%.40s' is not a number of degrees in -90..90",
+                          val);
+                return CLI_EXIT_USAGE;
+            }
+        } else if (!strcmp(a, "--fov")) {
+            if (parse_double(val, &fov) || fov < 10 || fov > 170) {
+                cli_error(cmd, 0, "--fov '%.40s' is not a number of degrees in 10..170",
+                          val);
+                return CLI_EXIT_USAGE;
+            }
+        } else if (!strcmp(a, "--frames")) {
+            if (parse_int(val, 1, 1000, &frames)) {
+                cli_error(cmd, 0, "--frames '%.40s' is not a count in 1..1000", val);
+                return CLI_EXIT_USAGE;
+            }
+        } else if (!strcmp(a, "--size")) {
+            char buf[64];
+            const char *x = strchr(val, 'x');
+            size_t n = x ? (size_t)(x - val) : 0;
+            if (!x || n == 0 || n >= sizeof buf) {
+                cli_error(cmd, 0, "--size '%.40s' is not WxH (e.g. 640x480)", val);
+                return CLI_EXIT_USAGE;
+            }
+            memcpy(buf, val, n);
+            buf[n] = 0;
+            if (parse_int(buf, 1, 8192, &w) || parse_int(x + 1, 1, 8192, &h)) {
+                cli_error(cmd, 0, "--size '%.40s' is not WxH with sides 1..8192", val);
+                return CLI_EXIT_USAGE;
+            }
+        } else if (!strcmp(a, "--stats"))
+            stats = 1;
+        else if (!strcmp(a, "--euclidean"))
+            flags |= HOL_RENDER_EUCLIDEAN;
+        else if (!strcmp(a, "--bare"))
+            flags |= HOL_RENDER_BARE;
+        else {
+            cli_error(cmd, 0, "unknown option '%.40s'; see 'holonomy render --help'", a);
+            return CLI_EXIT_USAGE;
+        }
+        if (takes)
+            i++;
+    }
+    if (!out && !ids_path && !stats) {
+        cli_error(cmd, 0, "nothing to do: give --out FILE.png, --tile-ids FILE or --stats");
+        return CLI_EXIT_USAGE;
+    }
+    /* the user's state */
+    uint8_t dirs[256];
+    size_t nd = 0, bad = 0;
+    hol_err err = hol_walk_parse(walk, strlen(walk), dirs, sizeof dirs, &nd, &bad);
+    if (err == HOL_EPARSE) {
+        cli_error(cmd, 0, "--walk: character %zu is not a step (N, E, S or W)", bad + 1);
+        return CLI_EXIT_USAGE;
+    } else if (err) {
+        cli_error(cmd, 0, "--walk: longer than %zu steps", sizeof dirs);
+        return CLI_EXIT_USAGE;
+    }
+    hol_room user = hol_room_start();
+    size_t done = 0;
+    err = hol_room_walk(&user, dirs, nd, &done);
+    if (err == HOL_EROOM) {
+        cli_error(cmd, 0, "--walk: step %zu leaves the room", done + 1);
+        return CLI_EXIT_USAGE;
+    } else if (err) {
+        cli_error(cmd, 0, "--walk: step %zu: %s", done + 1, hol_err_str(err));
+        return CLI_EXIT_USAGE;
+    }
+    hol_frame_desc fd;
+    memset(&fd, 0, sizeof fd);
+    fd.user = user;
+    fd.flags = flags;
+    fd.cam.eye[0] = user.col + 0.5;
+    fd.cam.eye[1] = 1.6;
+    fd.cam.eye[2] = user.row + 0.5;
+    if (eye_s) {
+        char buf[256];
+        if (strlen(eye_s) >= sizeof buf) {
+            cli_error(cmd, 0, "--eye is not X,Y,Z");
+            return CLI_EXIT_USAGE;
+        }
+        strcpy(buf, eye_s);
+        char *p1 = strchr(buf, ','), *p2 = p1 ? strchr(p1 + 1, ',') : NULL;
+        if (!p1 || !p2) {
+            cli_error(cmd, 0, "--eye '%.40s' is not X,Y,Z", eye_s);
+            return CLI_EXIT_USAGE;
+        }
+        *p1 = *p2 = 0;
+        if (parse_double(buf, &fd.cam.eye[0]) || parse_double(p1 + 1, &fd.cam.eye[1]) ||
+            parse_double(p2 + 1, &fd.cam.eye[2])) {
+            cli_error(cmd, 0, "--eye '%.40s' is not three numbers X,Y,Z", eye_s);
+            return CLI_EXIT_USAGE;
+        }
+    }
+    const double *e = fd.cam.eye;
+    if (!(e[0] > user.col && e[0] < user.col + 1 && e[2] > user.row &&
+          e[2] < user.row + 1)) {
+        cli_error(cmd, 0,
+                  "--eye x,z = %g,%g is not strictly inside cell (%d,%d) where the "
+                  "walk ends (x in (%d,%d), z in (%d,%d))",
+                  e[0], e[2], user.col, user.row, user.col, user.col + 1, user.row,
+                  user.row + 1);
+        return CLI_EXIT_USAGE;
+    }
+    if (!(e[1] > 0.01 && e[1] <= 100)) {
+        cli_error(cmd, 0, "--eye height y = %g is not in (0.01, 100] metres", e[1]);
+        return CLI_EXIT_USAGE;
+    }
+    fd.cam.yaw_deg = yaw;
+    fd.cam.pitch_deg = pitch;
+    fd.cam.fovy_deg = fov;
+    fd.cam.width = (int)w;
+    fd.cam.height = (int)h;
+
+    /* GL */
+    char msg[256];
+    hol_osmesa gl;
+    if (hol_osmesa_create(&gl, (int)w, (int)h, msg, sizeof msg)) {
+        cli_error(cmd, 0, "%s", msg);
+        return CLI_EXIT_FAIL;
+    }
+    int status = CLI_EXIT_OK;
+    hol_render *r = NULL;
+    uint8_t *rgba = NULL;
+    growbuf gb = {0};
+    double *cpu = NULL;
+    hol_render_desc rd;
+    memset(&rd, 0, sizeof rd);
+    rd.max_width = rd.max_height = 8192;
+    err = hol_render_create(&rd, &r);
+    if (err) {
+        cli_error(cmd, 0, "cannot initialise the renderer: %s", hol_err_str(err));
+        status = CLI_EXIT_FAIL;
+        goto done;
+    }
+    rgba = malloc((size_t)w * (size_t)h * 4);
+    cpu = malloc((size_t)frames * sizeof *cpu);
+    if (!rgba || !cpu) {
+        cli_error(cmd, 0, "out of memory");
+        status = CLI_EXIT_FAIL;
+        goto done;
+    }
+    hol_render_stats st;
+    for (long k = 0; k < frames; k++) {
+        err = hol_render_frame(r, &fd, &st);
+        if (err) {
+            cli_error(cmd, 0, "rendering failed: %s", hol_err_str(err));
+            status = CLI_EXIT_FAIL;
+            goto done;
+        }
+        cpu[k] = st.cpu_ms;
+    }
+    if (out) {
+        hol_render_read_rgba((int)w, (int)h, rgba);
+        err = hol_png_write_file(out, rgba, (int)w, (int)h, 0);
+        if (err) {
+            cli_error(cmd, 0, "cannot write '%.200s': %s", out, strerror(errno));
+            status = CLI_EXIT_FAIL;
+            goto done;
+        }
+    }
+    if (stats) {
+        qsort(cpu, (size_t)frames, sizeof *cpu, cmp_double);
+        printf("mode %s\n", (flags & HOL_RENDER_EUCLIDEAN) ? "euclidean" : "hyperbolic");
+        printf("size %ldx%ld\n", w, h);
+        printf("draw_calls %d\n", st.draw_calls);
+        printf("triangles %ld\n", st.triangles);
+        printf("stencil_passes %d\n", st.stencil_passes);
+        printf("branches %d\n", st.branches);
+        printf("state_changes %d\n", st.state_changes);
+        printf("cpu_ms %.3f\n", cpu[frames / 2]);
+        printf("wall_ms %.3f\n", st.wall_ms);
+    }
+    if (ids_path) {
+        fd.flags |= HOL_RENDER_IDS;
+        err = hol_render_frame(r, &fd, NULL);
+        if (err) {
+            cli_error(cmd, 0, "rendering tile ids failed: %s", hol_err_str(err));
+            status = CLI_EXIT_FAIL;
+            goto done;
+        }
+        hol_render_read_rgba((int)w, (int)h, rgba);
+        const hol_view *v = hol_render_last_view(r);
+        static char addr[HOL_VIEW_MAX_BRANCHES][HOL_TILE_ADDR_MAX];
+        for (int b = 0; b < v->nbranches; b++)
+            hol_tile_print(v->branches[b].state.tile, addr[b]);
+        for (long y = 0; y < h; y++)
+            for (long x = 0; x < w; x++) {
+                int id = hol_render_decode_id(rgba + ((size_t)y * (size_t)w + (size_t)x) * 4);
+                if (id >= 0 && id < v->nbranches)
+                    gb_printf(&gb, "%d %d %s\n", (int)x, (int)y, addr[id]);
+            }
+        if (gb.bad) {
+            cli_error(cmd, 0, "out of memory for the tile ids");
+            status = CLI_EXIT_FAIL;
+            goto done;
+        }
+        if (hol_file_write_atomic(ids_path, gb.p ? gb.p : "", gb.n)) {
+            cli_error(cmd, 0, "cannot write '%.200s': %s", ids_path, strerror(errno));
+            status = CLI_EXIT_FAIL;
+            goto done;
+        }
+    }
+done:
+    free(gb.p);
+    free(cpu);
+    free(rgba);
+    hol_render_destroy(r);
+    hol_osmesa_destroy(&gl);
+    int o = cli_finish_output(cmd);
+    return status ? status : o;
 }

@@ -1,0 +1,347 @@
+/* hol_png.c - PNG encode/decode on top of zlib; atomic file writes. */
+#include "hol_png.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+#include <zlib.h>
+
+static void hol__be32(uint8_t *p, uint32_t v)
+{
+    p[0] = (uint8_t)(v >> 24);
+    p[1] = (uint8_t)(v >> 16);
+    p[2] = (uint8_t)(v >> 8);
+    p[3] = (uint8_t)v;
+}
+
+static uint32_t hol__rd32(const uint8_t *p)
+{
+    return (uint32_t)p[0] << 24 | (uint32_t)p[1] << 16 | (uint32_t)p[2] << 8 | p[3];
+}
+
+/* Append one chunk at out + *pos (capacity checked by the caller). */
+static void hol__chunk(uint8_t *out, size_t *pos, const char *type,
+                       const uint8_t *data, uint32_t n)
+{
+    uint8_t *p = out + *pos;
+    hol__be32(p, n);
+    memcpy(p + 4, type, 4);
+    if (n)
+        memcpy(p + 8, data, n);
+    uLong crc = crc32(0L, Z_NULL, 0);
+    crc = crc32(crc, p + 4, (uInt)(n + 4));
+    hol__be32(p + 8 + n, (uint32_t)crc);
+    *pos += 12 + (size_t)n;
+}
+
+static int hol__paeth(int a, int b, int c)
+{
+    int p = a + b - c, pa = abs(p - a), pb = abs(p - b), pc = abs(p - c);
+    if (pa <= pb && pa <= pc)
+        return a;
+    return pb <= pc ? b : c;
+}
+
+hol_err hol_png_encode(const uint8_t *rgba, int w, int h, int alpha,
+                       uint8_t **out_data, size_t *out_size)
+{
+    if (!rgba || w <= 0 || h <= 0 || w > HOL_PNG_MAX_DIM || h > HOL_PNG_MAX_DIM)
+        return HOL_EARG;
+    int bpp = alpha ? 4 : 3;
+    size_t stride = (size_t)w * (size_t)bpp + 1;
+    size_t rawn = stride * (size_t)h;
+    uint8_t *raw = malloc(rawn);
+    uint8_t *line = malloc(stride);
+    if (!raw || !line) {
+        free(raw);
+        free(line);
+        return HOL_ENOMEM;
+    }
+    /* Per row, pick the filter (none, sub, up, paeth) with the smallest sum
+     * of absolute residuals: the usual heuristic, cheap and effective. */
+    for (int y = 0; y < h; y++) {
+        uint8_t *dst = raw + (size_t)y * stride;
+        const uint8_t *src = rgba + (size_t)y * (size_t)w * 4;
+        const uint8_t *up = y ? rgba + (size_t)(y - 1) * (size_t)w * 4 : NULL;
+        unsigned long best = (unsigned long)-1;
+        static const int filters[4] = {0, 1, 2, 4};
+        for (int fi = 0; fi < 4; fi++) {
+            int f = filters[fi];
+            unsigned long sum = 0;
+            line[0] = (uint8_t)f;
+            for (int x = 0; x < w; x++)
+                for (int k = 0; k < bpp; k++) {
+                    int v = src[4 * x + k];
+                    int a = x ? src[4 * (x - 1) + k] : 0;
+                    int b = up ? up[4 * x + k] : 0;
+                    int c = (x && up) ? up[4 * (x - 1) + k] : 0;
+                    int pred = f == 0 ? 0 : f == 1 ? a : f == 2 ? b : hol__paeth(a, b, c);
+                    uint8_t r = (uint8_t)(v - pred);
+                    line[1 + (size_t)x * (size_t)bpp + (size_t)k] = r;
+                    sum += r < 128 ? r : 256u - r;
+                }
+            if (sum < best) {
+                best = sum;
+                memcpy(dst, line, stride);
+            }
+        }
+    }
+    free(line);
+    uLongf zn = compressBound((uLong)rawn);
+    uint8_t *out = malloc(8 + 25 + 12 + (size_t)zn + 12);
+    if (!out) {
+        free(raw);
+        return HOL_ENOMEM;
+    }
+    size_t pos = 8;
+    memcpy(out, "\x89PNG\r\n\x1a\n", 8);
+    uint8_t ihdr[13];
+    hol__be32(ihdr, (uint32_t)w);
+    hol__be32(ihdr + 4, (uint32_t)h);
+    ihdr[8] = 8;
+    ihdr[9] = alpha ? 6 : 2;
+    ihdr[10] = ihdr[11] = ihdr[12] = 0;
+    hol__chunk(out, &pos, "IHDR", ihdr, 13);
+    /* compress straight into the IDAT payload position */
+    uint8_t *payload = out + pos + 8;
+    if (compress2(payload, &zn, raw, (uLong)rawn, 9) != Z_OK) {
+        free(raw);
+        free(out);
+        return HOL_ENOMEM;
+    }
+    free(raw);
+    hol__be32(out + pos, (uint32_t)zn);
+    memcpy(out + pos + 4, "IDAT", 4);
+    uLong crc = crc32(0L, Z_NULL, 0);
+    crc = crc32(crc, out + pos + 4, (uInt)(zn + 4));
+    hol__be32(out + pos + 8 + zn, (uint32_t)crc);
+    pos += 12 + (size_t)zn;
+    hol__chunk(out, &pos, "IEND", NULL, 0);
+    *out_data = out;
+    *out_size = pos;
+    return HOL_OK;
+}
+
+hol_err hol_file_write_atomic(const char *path, const void *data, size_t size)
+{
+    size_t n = strlen(path);
+    char *tmp = malloc(n + 16);
+    if (!tmp)
+        return HOL_ENOMEM;
+    memcpy(tmp, path, n);
+    memcpy(tmp + n, ".tmpXXXXXX", 11);
+    int fd = mkstemp(tmp);
+    if (fd < 0) {
+        free(tmp);
+        return HOL_EIO;
+    }
+    FILE *f = fdopen(fd, "wb");
+    if (!f) {
+        close(fd);
+        unlink(tmp);
+        free(tmp);
+        return HOL_EIO;
+    }
+    int ok = fwrite(data, 1, size, f) == size;
+    ok = (fflush(f) == 0) && ok;
+    (void)fsync(fileno(f)); /* best effort on odd file systems */
+    ok = (fclose(f) == 0) && ok;
+    if (ok) {
+        /* mkstemp creates 0600; give the usual permissions (best effort) */
+        mode_t um = umask(0);
+        umask(um);
+        (void)chmod(tmp, 0666 & ~um);
+        ok = rename(tmp, path) == 0;
+    }
+    if (!ok)
+        unlink(tmp);
+    free(tmp);
+    return ok ? HOL_OK : HOL_EIO;
+}
+
+hol_err hol_png_write_file(const char *path, const uint8_t *rgba, int w, int h,
+                           int alpha)
+{
+    uint8_t *data;
+    size_t size;
+    hol_err err = hol_png_encode(rgba, w, h, alpha, &data, &size);
+    if (err)
+        return err;
+    err = hol_file_write_atomic(path, data, size);
+    free(data);
+    return err;
+}
+
+hol_err hol_png_decode(const uint8_t *data, size_t size, uint8_t **out_rgba,
+                       int *out_w, int *out_h)
+{
+    if (size < 8 || memcmp(data, "\x89PNG\r\n\x1a\n", 8))
+        return HOL_ECORRUPT;
+    size_t pos = 8;
+    uint32_t w = 0, h = 0;
+    int ctype = -1, have_ihdr = 0, have_end = 0;
+    uint8_t *z = NULL;
+    size_t zn = 0;
+    hol_err err = HOL_OK;
+    while (!have_end) {
+        if (size - pos < 12) {
+            err = HOL_ECORRUPT;
+            break;
+        }
+        uint32_t n = hol__rd32(data + pos);
+        const uint8_t *type = data + pos + 4;
+        if (n > size - pos - 12) {
+            err = HOL_ECORRUPT;
+            break;
+        }
+        const uint8_t *body = data + pos + 8;
+        uLong crc = crc32(0L, Z_NULL, 0);
+        crc = crc32(crc, type, (uInt)(n + 4));
+        if ((uint32_t)crc != hol__rd32(body + n)) {
+            err = HOL_ECORRUPT;
+            break;
+        }
+        if (!memcmp(type, "IHDR", 4)) {
+            if (n != 13 || have_ihdr) {
+                err = HOL_ECORRUPT;
+                break;
+            }
+            have_ihdr = 1;
+            w = hol__rd32(body);
+            h = hol__rd32(body + 4);
+            ctype = body[9];
+            if (w == 0 || h == 0 || w > HOL_PNG_MAX_DIM || h > HOL_PNG_MAX_DIM) {
+                err = HOL_ECORRUPT;
+                break;
+            }
+            if (body[8] != 8 || body[10] || body[11] || body[12] ||
+                (ctype != 0 && ctype != 2 && ctype != 4 && ctype != 6)) {
+                err = HOL_EUNSUPPORTED;
+                break;
+            }
+        } else if (!memcmp(type, "IDAT", 4)) {
+            if (!have_ihdr) {
+                err = HOL_ECORRUPT;
+                break;
+            }
+            uint8_t *nz = realloc(z, zn + n + 1);
+            if (!nz) {
+                err = HOL_ENOMEM;
+                break;
+            }
+            z = nz;
+            memcpy(z + zn, body, n);
+            zn += n;
+        } else if (!memcmp(type, "IEND", 4)) {
+            have_end = 1;
+        } else if (!(type[0] & 0x20)) {
+            err = HOL_EUNSUPPORTED; /* unknown critical chunk (e.g. PLTE) */
+            break;
+        }
+        pos += 12 + (size_t)n;
+    }
+    if (!err && (!have_ihdr || !z))
+        err = HOL_ECORRUPT;
+    if (err) {
+        free(z);
+        return err;
+    }
+    int bpp = ctype == 0 ? 1 : ctype == 4 ? 2 : ctype == 2 ? 3 : 4;
+    size_t stride = (size_t)w * (size_t)bpp + 1;
+    uLongf rawn = (uLongf)(stride * h);
+    uint8_t *raw = malloc(rawn ? rawn : 1);
+    uint8_t *rgba = malloc((size_t)w * h * 4);
+    if (!raw || !rgba) {
+        free(z);
+        free(raw);
+        free(rgba);
+        return HOL_ENOMEM;
+    }
+    uLongf got = rawn;
+    int zr = uncompress(raw, &got, z, (uLong)zn);
+    free(z);
+    if (zr != Z_OK || got != rawn) {
+        free(raw);
+        free(rgba);
+        return HOL_ECORRUPT;
+    }
+    for (uint32_t y = 0; y < h; y++) {
+        uint8_t *row = raw + (size_t)y * stride;
+        uint8_t *cur = row + 1;
+        const uint8_t *up = y ? raw + (size_t)(y - 1) * stride + 1 : NULL;
+        int f = row[0];
+        if (f > 4) {
+            free(raw);
+            free(rgba);
+            return HOL_ECORRUPT;
+        }
+        for (size_t i = 0; i < stride - 1; i++) {
+            int a = i >= (size_t)bpp ? cur[i - (size_t)bpp] : 0;
+            int b = up ? up[i] : 0;
+            int c = (up && i >= (size_t)bpp) ? up[i - (size_t)bpp] : 0;
+            int pred = f == 0 ? 0 : f == 1 ? a : f == 2 ? b : f == 3 ? (a + b) / 2
+                                                           : hol__paeth(a, b, c);
+            cur[i] = (uint8_t)(cur[i] + pred);
+        }
+        for (uint32_t x = 0; x < w; x++) {
+            uint8_t *o = rgba + ((size_t)y * w + x) * 4;
+            const uint8_t *s = cur + (size_t)x * (size_t)bpp;
+            if (bpp <= 2) {
+                o[0] = o[1] = o[2] = s[0];
+                o[3] = bpp == 2 ? s[1] : 255;
+            } else {
+                o[0] = s[0];
+                o[1] = s[1];
+                o[2] = s[2];
+                o[3] = bpp == 4 ? s[3] : 255;
+            }
+        }
+    }
+    free(raw);
+    *out_rgba = rgba;
+    *out_w = (int)w;
+    *out_h = (int)h;
+    return HOL_OK;
+}
+
+hol_err hol_png_read_file(const char *path, uint8_t **out_rgba, int *out_w,
+                          int *out_h)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return HOL_EIO;
+    uint8_t *buf = NULL;
+    size_t n = 0, cap = 0;
+    for (;;) {
+        if (n == cap) {
+            cap = cap ? cap * 2 : 65536;
+            if (cap > ((size_t)1 << 30)) {
+                free(buf);
+                fclose(f);
+                return HOL_ECORRUPT;
+            }
+            uint8_t *nb = realloc(buf, cap);
+            if (!nb) {
+                free(buf);
+                fclose(f);
+                return HOL_ENOMEM;
+            }
+            buf = nb;
+        }
+        size_t r = fread(buf + n, 1, cap - n, f);
+        n += r;
+        if (r == 0)
+            break;
+    }
+    int bad = ferror(f);
+    fclose(f);
+    if (bad) {
+        free(buf);
+        return HOL_EIO;
+    }
+    hol_err err = hol_png_decode(buf, n, out_rgba, out_w, out_h);
+    free(buf);
+    return err;
+}

@@ -1,0 +1,502 @@
+/* hol_render.c - render queue, stencil portals, GL execution. */
+#include "hol_render.h"
+
+#include <GLES3/gl3.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "hol_mesh.h"
+#include "hol_scene.h"
+
+#define HOL__MAX_V (1u << 18)
+#define HOL__MAX_I (1u << 19)
+#define HOL__MAX_ITEMS 1024
+#define HOL__MAX_TILE_CACHE HOL_VIEW_MAX_BRANCHES
+
+enum { HOL__PASS_STENCIL = 0, HOL__PASS_ROOM = 1, HOL__PASS_TILE = 2, HOL__PASS_HUD = 3 };
+enum { HOL__MODE_LIT = 0, HOL__MODE_ID = 1, HOL__MODE_FLAT = 2 };
+
+typedef struct hol__item {
+    uint32_t key;
+    uint8_t pass;
+    uint8_t ref, mask;
+    int16_t branch;
+    uint32_t first, count; /* index range */
+    float model[16];
+} hol__item;
+
+struct hol_render {
+    hol_render_desc desc;
+    hol_scene *scene;
+    GLuint prog, vao, vbo, ibo;
+    GLint u_vp, u_model, u_mode, u_id, u_eye, u_fog, u_fogd;
+    hol_mesh mesh;
+    hol_vertex *verts;
+    uint32_t *idx;
+    hol__item items[HOL__MAX_ITEMS];
+    int nitems;
+    hol__item *sorted[HOL__MAX_ITEMS];
+    hol_view view;
+    /* per-frame tile mesh cache */
+    hol_tile cache_tile[HOL__MAX_TILE_CACHE];
+    uint32_t cache_first[HOL__MAX_TILE_CACHE], cache_count[HOL__MAX_TILE_CACHE];
+    int ncache;
+};
+
+static const char *hol__vs =
+    "#version 300 es\n"
+    "layout(location = 0) in vec3 a_pos;\n"
+    "layout(location = 1) in vec3 a_nrm;\n"
+    "layout(location = 2) in vec4 a_col;\n"
+    "uniform mat4 u_vp;\n"
+    "uniform mat4 u_model;\n"
+    "out vec3 v_nrm;\n"
+    "out vec4 v_col;\n"
+    "out vec3 v_wpos;\n"
+    "void main() {\n"
+    "  vec4 w = u_model * vec4(a_pos, 1.0);\n"
+    "  v_wpos = w.xyz;\n"
+    "  v_nrm = mat3(u_model) * a_nrm;\n"
+    "  v_col = a_col;\n"
+    "  gl_Position = u_vp * w;\n"
+    "}\n";
+
+static const char *hol__fs =
+    "#version 300 es\n"
+    "precision highp float;\n"
+    "in vec3 v_nrm;\n"
+    "in vec4 v_col;\n"
+    "in vec3 v_wpos;\n"
+    "uniform int u_mode;\n"
+    "uniform vec4 u_id;\n"
+    "uniform vec3 u_eye;\n"
+    "uniform vec3 u_fog;\n"
+    "uniform float u_fogd;\n"
+    "out vec4 o_col;\n"
+    "void main() {\n"
+    "  if (u_mode == 1) {\n"
+    "    o_col = v_col.a > 0.5 ? u_id : vec4(0.0, 0.0, 0.0, 1.0);\n"
+    "    return;\n"
+    "  }\n"
+    "  if (u_mode == 2) {\n"
+    "    o_col = vec4(v_col.rgb, 1.0);\n"
+    "    return;\n"
+    "  }\n"
+    "  vec3 toeye = u_eye - v_wpos;\n"
+    "  vec3 n = v_nrm;\n"
+    "  if (dot(n, n) < 1e-6) n = vec3(0.0, 1.0, 0.0);\n"
+    "  n = normalize(n);\n"
+    "  if (dot(n, toeye) < 0.0) n = -n;\n"
+    "  float d = max(dot(n, normalize(vec3(0.35, 0.85, 0.40))), 0.0);\n"
+    "  vec3 c = v_col.rgb * (0.50 + 0.60 * d);\n"
+    "  float dist = length(toeye) * u_fogd;\n"
+    "  float f = exp(-dist * dist);\n"
+    "  o_col = vec4(mix(u_fog, c, f), 1.0);\n"
+    "}\n";
+
+static GLuint hol__shader(GLenum type, const char *src)
+{
+    GLuint s = glCreateShader(type);
+    glShaderSource(s, 1, &src, NULL);
+    glCompileShader(s);
+    GLint ok = 0;
+    glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
+    if (!ok) {
+        glDeleteShader(s);
+        return 0;
+    }
+    return s;
+}
+
+hol_err hol_render_create(const hol_render_desc *desc, hol_render **out)
+{
+    hol_render *r = calloc(1, sizeof *r);
+    if (!r)
+        return HOL_ENOMEM;
+    if (desc)
+        r->desc = *desc;
+    r->verts = malloc(HOL__MAX_V * sizeof *r->verts);
+    r->idx = malloc(HOL__MAX_I * sizeof *r->idx);
+    if (!r->verts || !r->idx || hol_scene_create(&r->scene)) {
+        hol_render_destroy(r);
+        return HOL_ENOMEM;
+    }
+    hol_mesh_init(&r->mesh, r->verts, HOL__MAX_V, r->idx, HOL__MAX_I);
+    GLuint vs = hol__shader(GL_VERTEX_SHADER, hol__vs);
+    GLuint fs = hol__shader(GL_FRAGMENT_SHADER, hol__fs);
+    if (!vs || !fs) {
+        if (vs)
+            glDeleteShader(vs);
+        if (fs)
+            glDeleteShader(fs);
+        hol_render_destroy(r);
+        return HOL_EUNSUPPORTED;
+    }
+    r->prog = glCreateProgram();
+    glAttachShader(r->prog, vs);
+    glAttachShader(r->prog, fs);
+    glLinkProgram(r->prog);
+    glDeleteShader(vs);
+    glDeleteShader(fs);
+    GLint ok = 0;
+    glGetProgramiv(r->prog, GL_LINK_STATUS, &ok);
+    if (!ok) {
+        hol_render_destroy(r);
+        return HOL_EUNSUPPORTED;
+    }
+    r->u_vp = glGetUniformLocation(r->prog, "u_vp");
+    r->u_model = glGetUniformLocation(r->prog, "u_model");
+    r->u_mode = glGetUniformLocation(r->prog, "u_mode");
+    r->u_id = glGetUniformLocation(r->prog, "u_id");
+    r->u_eye = glGetUniformLocation(r->prog, "u_eye");
+    r->u_fog = glGetUniformLocation(r->prog, "u_fog");
+    r->u_fogd = glGetUniformLocation(r->prog, "u_fogd");
+    glGenVertexArrays(1, &r->vao);
+    glGenBuffers(1, &r->vbo);
+    glGenBuffers(1, &r->ibo);
+    glBindVertexArray(r->vao);
+    glBindBuffer(GL_ARRAY_BUFFER, r->vbo);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, r->ibo);
+    glEnableVertexAttribArray(0);
+    glEnableVertexAttribArray(1);
+    glEnableVertexAttribArray(2);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(hol_vertex),
+                          (const void *)offsetof(hol_vertex, pos));
+    glVertexAttribPointer(1, 3, GL_BYTE, GL_TRUE, sizeof(hol_vertex),
+                          (const void *)offsetof(hol_vertex, nrm));
+    glVertexAttribPointer(2, 4, GL_UNSIGNED_BYTE, GL_TRUE, sizeof(hol_vertex),
+                          (const void *)offsetof(hol_vertex, rgba));
+    glBindVertexArray(0);
+    if (glGetError() != GL_NO_ERROR) {
+        hol_render_destroy(r);
+        return HOL_EUNSUPPORTED;
+    }
+    *out = r;
+    return HOL_OK;
+}
+
+void hol_render_destroy(hol_render *r)
+{
+    if (!r)
+        return;
+    if (r->prog)
+        glDeleteProgram(r->prog);
+    if (r->vao)
+        glDeleteVertexArrays(1, &r->vao);
+    if (r->vbo)
+        glDeleteBuffers(1, &r->vbo);
+    if (r->ibo)
+        glDeleteBuffers(1, &r->ibo);
+    hol_scene_destroy(r->scene);
+    free(r->verts);
+    free(r->idx);
+    free(r);
+}
+
+const hol_view *hol_render_last_view(const hol_render *r)
+{
+    return &r->view;
+}
+
+static void hol__identity(float m[16])
+{
+    memset(m, 0, 16 * sizeof(float));
+    m[0] = m[5] = m[10] = m[15] = 1;
+}
+
+static hol__item *hol__push(hol_render *r, int pass, uint32_t first, uint32_t count)
+{
+    if (r->nitems >= HOL__MAX_ITEMS || count == 0)
+        return NULL;
+    hol__item *it = &r->items[r->nitems++];
+    memset(it, 0, sizeof *it);
+    it->pass = (uint8_t)pass;
+    it->first = first;
+    it->count = count;
+    it->branch = -1;
+    hol__identity(it->model);
+    return it;
+}
+
+/* Tile mesh range for t, built once per frame. */
+static int hol__tile_range(hol_render *r, hol_tile t, int bare, uint32_t *first,
+                           uint32_t *count)
+{
+    for (int i = 0; i < r->ncache; i++)
+        if (hol_tile_eq(r->cache_tile[i], t)) {
+            *first = r->cache_first[i];
+            *count = r->cache_count[i];
+            return 1;
+        }
+    uint32_t i0 = r->mesh.ni;
+    hol_scene_tile(r->scene, &r->mesh, t, r->desc.world, bare);
+    if (r->mesh.overflow)
+        return 0;
+    *first = i0;
+    *count = r->mesh.ni - i0;
+    if (r->ncache < HOL__MAX_TILE_CACHE) {
+        r->cache_tile[r->ncache] = t;
+        r->cache_first[r->ncache] = *first;
+        r->cache_count[r->ncache] = *count;
+        r->ncache++;
+    }
+    return 1;
+}
+
+static int hol__cmp_item(const void *a, const void *b)
+{
+    const hol__item *x = *(const hol__item *const *)a, *y = *(const hol__item *const *)b;
+    return x->key < y->key ? -1 : x->key > y->key;
+}
+
+static double hol__now(clockid_t id)
+{
+    struct timespec ts;
+    clock_gettime(id, &ts);
+    return (double)ts.tv_sec * 1e3 + (double)ts.tv_nsec * 1e-6;
+}
+
+/* Build the queue of a frame. */
+static hol_err hol__build(hol_render *r, const hol_frame_desc *f)
+{
+    int eu = (f->flags & HOL_RENDER_EUCLIDEAN) != 0;
+    int bare = (f->flags & HOL_RENDER_BARE) != 0;
+    hol_err err = hol_view_build(&f->user, f->cam.eye[0], f->cam.eye[2], eu, &r->view);
+    if (err)
+        return err;
+    hol_mesh_clear(&r->mesh);
+    r->nitems = 0;
+    r->ncache = 0;
+    const hol_view *v = &r->view;
+    /* pass 0: one stencil polygon per leaf, in NDC */
+    for (int k = 0; k < v->nleaves; k++) {
+        float xy[8][2];
+        int n = hol_view_leaf_ndc(&f->cam, &v->leaves[k], xy);
+        if (n < 3)
+            continue;
+        int64_t b = hol_mesh_reserve(&r->mesh, (uint32_t)n, (uint32_t)(3 * (n - 2)));
+        if (b < 0)
+            return HOL_ENOMEM;
+        uint32_t i0 = r->mesh.ni;
+        for (int i = 0; i < n; i++) {
+            hol_vertex *vx = &r->mesh.v[r->mesh.nv++];
+            memset(vx, 0, sizeof *vx);
+            vx->pos[0] = xy[i][0];
+            vx->pos[1] = xy[i][1];
+        }
+        for (int i = 1; i + 1 < n; i++) {
+            r->mesh.idx[r->mesh.ni++] = (uint32_t)b;
+            r->mesh.idx[r->mesh.ni++] = (uint32_t)b + (uint32_t)i;
+            r->mesh.idx[r->mesh.ni++] = (uint32_t)b + (uint32_t)i + 1;
+        }
+        hol__item *it = hol__push(r, HOL__PASS_STENCIL, i0, r->mesh.ni - i0);
+        if (!it)
+            return HOL_ENOMEM;
+        it->ref = v->leaves[k].code;
+        it->mask = 0xff;
+        it->key = (uint32_t)k;
+    }
+    /* pass 1: the room's own meshes */
+    if (!bare) {
+        uint32_t i0 = r->mesh.ni;
+        hol_scene_room(r->scene, &r->mesh, v, r->desc.world);
+        if (r->mesh.overflow)
+            return HOL_ENOMEM;
+        hol__item *it = hol__push(r, HOL__PASS_ROOM, i0, r->mesh.ni - i0);
+        if (it)
+            it->key = 1u << 24;
+    }
+    /* pass 2: one draw per branch, nearest cells first */
+    for (int k = 0; k < v->nbranches; k++) {
+        const hol_view_branch *br = &v->branches[k];
+        if (br->err)
+            continue;
+        uint32_t first, count;
+        if (!hol__tile_range(r, br->state.tile, bare, &first, &count))
+            return HOL_ENOMEM;
+        hol__item *it = hol__push(r, HOL__PASS_TILE, first, count);
+        if (!it)
+            return HOL_ENOMEM;
+        it->ref = br->ref;
+        it->mask = br->mask;
+        it->branch = (int16_t)k;
+        it->key = 2u << 24 | (uint32_t)br->nsteps << 16 | (uint32_t)k;
+        /* tile frame -> room: the tile's heading is room north turned
+         * clockwise by orient quarter turns */
+        double a = -(double)br->state.orient * 1.5707963267948966;
+        float c = (float)cos(a), s = (float)sin(a);
+        c = fabsf(c) < 1e-6f ? 0.0f : c;
+        s = fabsf(s) < 1e-6f ? 0.0f : s;
+        /* x' = x c + z s, z' = -x s + z c (counter-clockwise by a) */
+        float *m = it->model;
+        m[0] = c;
+        m[2] = -s;
+        m[8] = s;
+        m[10] = c;
+        m[12] = (float)br->state.col + 0.5f;
+        m[14] = (float)br->state.row + 0.5f;
+    }
+    if (r->mesh.overflow)
+        return HOL_ENOMEM;
+    return HOL_OK;
+}
+
+hol_err hol_render_frame(hol_render *r, const hol_frame_desc *f,
+                         hol_render_stats *out_stats)
+{
+    double c0 = hol__now(CLOCK_PROCESS_CPUTIME_ID), w0 = hol__now(CLOCK_MONOTONIC);
+    int maxw = r->desc.max_width > 0 ? r->desc.max_width : 4096;
+    int maxh = r->desc.max_height > 0 ? r->desc.max_height : 4096;
+    if (f->cam.width <= 0 || f->cam.height <= 0 || f->cam.width > maxw ||
+        f->cam.height > maxh)
+        return HOL_EARG;
+    hol_err err = hol__build(r, f);
+    if (err)
+        return err;
+    hol_render_stats st;
+    memset(&st, 0, sizeof st);
+    for (int i = 0; i < r->nitems; i++)
+        r->sorted[i] = &r->items[i];
+    qsort(r->sorted, (size_t)r->nitems, sizeof r->sorted[0], hol__cmp_item);
+
+    int ids = (f->flags & HOL_RENDER_IDS) != 0;
+    float sky[3];
+    hol_scene_sky(sky);
+    glViewport(0, 0, f->cam.width, f->cam.height);
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_BLEND);
+    glDisable(GL_DITHER);
+    glDepthMask(GL_TRUE);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glStencilMask(0xff);
+    if (ids)
+        glClearColor(0, 0, 0, 1);
+    else
+        glClearColor(sky[0], sky[1], sky[2], 1);
+    glClearDepthf(1.0f);
+    glClearStencil(HOL_VIEW_STENCIL_CLEAR);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+
+    glUseProgram(r->prog);
+    glBindVertexArray(r->vao);
+    glBindBuffer(GL_ARRAY_BUFFER, r->vbo);
+    glBufferData(GL_ARRAY_BUFFER, (GLsizeiptr)(r->mesh.nv * sizeof(hol_vertex)),
+                 r->mesh.v, GL_STREAM_DRAW);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, (GLsizeiptr)(r->mesh.ni * sizeof(uint32_t)),
+                 r->mesh.idx, GL_STREAM_DRAW);
+    float view[16], proj[16], vp[16], ident[16];
+    hol_camera_matrices(&f->cam, view, proj);
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j < 4; j++) {
+            float s = 0;
+            for (int k = 0; k < 4; k++)
+                s += proj[4 * k + j] * view[4 * i + k];
+            vp[4 * i + j] = s;
+        }
+    hol__identity(ident);
+    glUniform3f(r->u_eye, (float)f->cam.eye[0], (float)f->cam.eye[1],
+                (float)f->cam.eye[2]);
+    glUniform3f(r->u_fog, sky[0], sky[1], sky[2]);
+    glUniform1f(r->u_fogd, 0.06f);
+    st.state_changes += 2;
+
+    int cur_pass = -1, cur_ref = -1, cur_mask = -1;
+    for (int i = 0; i < r->nitems; i++) {
+        const hol__item *it = r->sorted[i];
+        if (it->pass != cur_pass) {
+            cur_pass = it->pass;
+            cur_ref = cur_mask = -1;
+            st.state_changes++;
+            switch (cur_pass) {
+            case HOL__PASS_STENCIL:
+                glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+                glDisable(GL_DEPTH_TEST);
+                glDepthMask(GL_FALSE);
+                glEnable(GL_STENCIL_TEST);
+                glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+                glUniformMatrix4fv(r->u_vp, 1, GL_FALSE, ident);
+                glUniformMatrix4fv(r->u_model, 1, GL_FALSE, ident);
+                break;
+            case HOL__PASS_ROOM:
+            case HOL__PASS_TILE:
+                glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+                glEnable(GL_DEPTH_TEST);
+                glDepthFunc(GL_LESS);
+                glDepthMask(GL_TRUE);
+                glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+                if (cur_pass == HOL__PASS_ROOM)
+                    glDisable(GL_STENCIL_TEST);
+                else
+                    glEnable(GL_STENCIL_TEST);
+                glUniformMatrix4fv(r->u_vp, 1, GL_FALSE, vp);
+                glUniform1i(r->u_mode, ids ? HOL__MODE_ID : HOL__MODE_LIT);
+                glUniform4f(r->u_id, 0, 0, 0, 1);
+                if (cur_pass == HOL__PASS_ROOM)
+                    glUniformMatrix4fv(r->u_model, 1, GL_FALSE, ident);
+                break;
+            default:
+                glDisable(GL_DEPTH_TEST);
+                glDepthMask(GL_FALSE);
+                glDisable(GL_STENCIL_TEST);
+                glUniform1i(r->u_mode, HOL__MODE_FLAT);
+                break;
+            }
+        }
+        if (cur_pass == HOL__PASS_STENCIL) {
+            glStencilFunc(GL_ALWAYS, it->ref, 0xff);
+            st.state_changes++;
+            st.stencil_passes++;
+        } else if (cur_pass == HOL__PASS_TILE) {
+            if (it->ref != cur_ref || it->mask != cur_mask) {
+                glStencilFunc(GL_EQUAL, it->ref, it->mask);
+                cur_ref = it->ref;
+                cur_mask = it->mask;
+                st.state_changes++;
+            }
+            glUniformMatrix4fv(r->u_model, 1, GL_FALSE, it->model);
+            if (ids) {
+                int id = it->branch + 1;
+                glUniform4f(r->u_id, (float)(id & 255) / 255.0f,
+                            (float)(id >> 8) / 255.0f, 0, 1);
+            }
+            st.branches++;
+        }
+        glDrawElements(GL_TRIANGLES, (GLsizei)it->count, GL_UNSIGNED_INT,
+                       (const void *)(uintptr_t)(it->first * sizeof(uint32_t)));
+        st.draw_calls++;
+        st.triangles += it->count / 3;
+    }
+    glBindVertexArray(0);
+    glFinish();
+    st.cpu_ms = hol__now(CLOCK_PROCESS_CPUTIME_ID) - c0;
+    st.wall_ms = hol__now(CLOCK_MONOTONIC) - w0;
+    if (glGetError() != GL_NO_ERROR)
+        return HOL_EUNSUPPORTED;
+    if (out_stats)
+        *out_stats = st;
+    return HOL_OK;
+}
+
+void hol_render_read_rgba(int w, int h, uint8_t *out_rgba)
+{
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, out_rgba);
+    size_t row = (size_t)w * 4;
+    uint8_t tmp[4 * 1024];
+    for (int y = 0; y < h / 2; y++) {
+        uint8_t *a = out_rgba + (size_t)y * row, *b = out_rgba + (size_t)(h - 1 - y) * row;
+        for (size_t o = 0; o < row; o += sizeof tmp) {
+            size_t n = row - o < sizeof tmp ? row - o : sizeof tmp;
+            memcpy(tmp, a + o, n);
+            memcpy(a + o, b + o, n);
+            memcpy(b + o, tmp, n);
+        }
+    }
+}
+
+int hol_render_decode_id(const uint8_t rgba[4])
+{
+    return (int)rgba[0] + 256 * (int)rgba[1] - 1;
+}

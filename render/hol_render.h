@@ -1,0 +1,98 @@
+/* hol_render.h - the renderer: one render queue per eye, stencil portals.
+ *
+ * Contract
+ * - Platform independent GLES 3.0 (shaders are `#version 300 es`; under
+ *   OSMesa's desktop GL core profile the same code runs). The caller makes a
+ *   GL context current (with 8 stencil bits and a depth buffer) before
+ *   hol_render_create and keeps it current for every call.
+ * - hol_render_create makes the GL objects and the CPU stores once (sizes
+ *   fixed by the desc); frames allocate nothing.
+ * - A frame: hol_view_build gives the leaves and branches; the queue holds
+ *   one stencil polygon per leaf (pass 0), the room's own meshes (trees on
+ *   all 16 vertices, hedges on the boundary; pass 1), one draw per branch
+ *   of its tile's mesh placed in the branch's cell and tested against the
+ *   branch's stencil ref/mask (pass 2, nearest cells first), the HUD
+ *   (pass 3). The queue is sorted by (pass, program state, depth) and
+ *   executed with redundant state changes skipped. No pass per portal, no
+ *   render-to-texture.
+ * - Floor outside the room is not drawn: hedges 2 m high stand on the room
+ *   boundary (the move area ends there), and over them one sees sky/fog.
+ *   Floor pixels are those showing the ground of a tile inside the room.
+ * - ID mode renders the same queue but writes, for floor pixels, the index
+ *   + 1 of the branch drawn there and 0 elsewhere (props, trees, sky): the
+ *   tile under every pixel, as the portals decided it.
+ * - World content: with desc.world the tiles' content (biome, objects,
+ *   creeks, logs, trees) comes from hol_world_get; without it, a plain
+ *   biome-tinted floor from hol_tile_hash.
+ */
+#ifndef HOL_RENDER_H
+#define HOL_RENDER_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "../core/hol_room.h"
+#include "hol_view.h"
+
+struct hol_world;
+
+typedef struct hol_render_desc {
+    int max_width, max_height; /* 0: 4096 */
+    struct hol_world *world;   /* optional; not owned */
+} hol_render_desc;
+
+typedef struct hol_render hol_render;
+
+enum {
+    HOL_RENDER_EUCLIDEAN = 1, /* flat room baseline: no portals */
+    HOL_RENDER_BARE = 2,      /* floors only: no trees, hedges or props */
+    HOL_RENDER_IDS = 4,       /* ID mode (see above) */
+    HOL_RENDER_NO_HUD = 8,
+    HOL_RENDER_MINIMAP = 16   /* draw the minimap and HUD text */
+};
+
+#define HOL_RENDER_MAX_OBJECTIVES 8
+
+typedef struct hol_frame_desc {
+    hol_room user;
+    hol_camera cam;
+    int flags;
+    /* HUD / minimap (optional) */
+    int nobjectives;
+    hol_tile objectives[HOL_RENDER_MAX_OBJECTIVES];
+    const char *objective_text; /* e.g. "find the key"; NULL: none */
+    int steps_taken;
+    double time_s;
+    const uint8_t *path; /* shortest-path overlay: room steps from the user */
+    int npath;
+} hol_frame_desc;
+
+typedef struct hol_render_stats {
+    int draw_calls;
+    long triangles;
+    int stencil_passes;   /* stencil-writing draws (leaves) */
+    int branches;         /* branches drawn */
+    int state_changes;    /* program/stencil/depth/mask changes issued */
+    double cpu_ms;        /* process CPU time of the frame incl. glFinish */
+    double wall_ms;
+} hol_render_stats;
+
+hol_err hol_render_create(const hol_render_desc *desc, hol_render **out);
+void hol_render_destroy(hol_render *r);
+
+/* Render one eye into the current framebuffer (viewport = cam size).
+ * Errors: HOL_EARG (eye not inside the user's cell, bad size),
+ * HOL_ENOMEM (the fixed stores overflowed). */
+hol_err hol_render_frame(hol_render *r, const hol_frame_desc *f,
+                         hol_render_stats *out_stats);
+
+/* The view of the last frame (branches, for decoding ID images). */
+const hol_view *hol_render_last_view(const hol_render *r);
+
+/* Read the framebuffer (w x h RGBA, rows top to bottom). */
+void hol_render_read_rgba(int w, int h, uint8_t *out_rgba);
+
+/* Decode an ID-mode pixel: -1 for no floor, else the branch index. */
+int hol_render_decode_id(const uint8_t rgba[4]);
+
+#endif

@@ -1,0 +1,42 @@
+/* hol_scene.h - procedural content: prop templates built once, the room's
+ * own meshes (trees on the vertices, boundary hedges) and tile meshes.
+ *
+ * Contract
+ * - hol_scene_create builds every template mesh in code (no asset files)
+ *   into one allocation; nothing else allocates.
+ * - Tile meshes are in the tile's frame: the tile is the square
+ *   x, z in [-0.5, 0.5] centred at the origin, its canonical heading is -z
+ *   (edge d of hol_tile_step lies towards heading + d quarter turns
+ *   counter-clockwise). The ground is HOL_MESH_FLOOR, everything else
+ *   HOL_MESH_PROP.
+ * - Content comes from the world when one is given (hol_world_get), else a
+ *   deterministic placeholder from hol_tile_hash (a biome-tinted floor).
+ * - Room meshes are in room coordinates (x east, z south, 0..3).
+ */
+#ifndef HOL_SCENE_H
+#define HOL_SCENE_H
+
+#include "../core/hol_tile.h"
+#include "hol_mesh.h"
+#include "hol_view.h"
+
+struct hol_world;
+typedef struct hol_scene hol_scene;
+
+hol_err hol_scene_create(hol_scene **out);
+void hol_scene_destroy(hol_scene *s);
+
+/* Trees on the 16 room vertices and the boundary hedges. The tree kinds
+ * come from the world (the vertex as seen through the nearest branch) when
+ * given. */
+void hol_scene_room(const hol_scene *s, hol_mesh *out, const hol_view *view,
+                    struct hol_world *world);
+
+/* The mesh of tile t in its own frame; bare: the ground only. */
+void hol_scene_tile(const hol_scene *s, hol_mesh *out, hol_tile t,
+                    struct hol_world *world, int bare);
+
+/* Sky / fog colour (linear 0..1). */
+void hol_scene_sky(float out_rgb[3]);
+
+#endif

@@ -1,0 +1,264 @@
+/* hol_view.c - camera maths and portal branches (see hol_view.h). */
+#include "hol_view.h"
+
+#include <math.h>
+#include <string.h>
+
+#define HOL__PI 3.14159265358979323846
+
+static double hol__fovy(const hol_camera *cam)
+{
+    return (cam->fovy_deg > 0 ? cam->fovy_deg : 90.0) * HOL__PI / 180.0;
+}
+
+void hol_camera_basis(const hol_camera *cam, double out_r[3], double out_u[3],
+                      double out_b[3])
+{
+    double y = cam->yaw_deg * HOL__PI / 180.0, p = cam->pitch_deg * HOL__PI / 180.0;
+    double cy = cos(y), sy = sin(y), cp = cos(p), sp = sin(p);
+    /* R = Ry(yaw) * Rx(pitch); columns are right, up, back */
+    out_r[0] = cy;
+    out_r[1] = 0;
+    out_r[2] = -sy;
+    out_u[0] = sy * sp;
+    out_u[1] = cp;
+    out_u[2] = cy * sp;
+    out_b[0] = sy * cp;
+    out_b[1] = -sp;
+    out_b[2] = cy * cp;
+}
+
+void hol_camera_matrices(const hol_camera *cam, float out_view[16],
+                         float out_proj[16])
+{
+    double r[3], u[3], b[3];
+    hol_camera_basis(cam, r, u, b);
+    const double *e = cam->eye;
+    double v[16] = {0};
+    for (int i = 0; i < 3; i++) {
+        v[4 * i + 0] = r[i];
+        v[4 * i + 1] = u[i];
+        v[4 * i + 2] = b[i];
+    }
+    v[12] = -(r[0] * e[0] + r[1] * e[1] + r[2] * e[2]);
+    v[13] = -(u[0] * e[0] + u[1] * e[1] + u[2] * e[2]);
+    v[14] = -(b[0] * e[0] + b[1] * e[1] + b[2] * e[2]);
+    v[15] = 1;
+    for (int i = 0; i < 16; i++)
+        out_view[i] = (float)v[i];
+    double n = cam->znear > 0 ? cam->znear : 0.05;
+    double f = cam->zfar > 0 ? cam->zfar : 60.0;
+    double t = 1.0 / tan(hol__fovy(cam) / 2);
+    double aspect = (double)cam->width / cam->height;
+    memset(out_proj, 0, 16 * sizeof(float));
+    out_proj[0] = (float)(t / aspect);
+    out_proj[5] = (float)t;
+    out_proj[10] = (float)((f + n) / (n - f));
+    out_proj[11] = -1.0f;
+    out_proj[14] = (float)(2 * f * n / (n - f));
+}
+
+void hol_camera_ray(const hol_camera *cam, double ndc_x, double ndc_y,
+                    double out_dir[3])
+{
+    double r[3], u[3], b[3];
+    hol_camera_basis(cam, r, u, b);
+    double ay = tan(hol__fovy(cam) / 2), ax = ay * cam->width / cam->height;
+    for (int i = 0; i < 3; i++)
+        out_dir[i] = ndc_x * ax * r[i] + ndc_y * ay * u[i] - b[i];
+}
+
+uint8_t hol_view_code(const uint8_t *steps, int n)
+{
+    if (n <= 0)
+        return 0;
+    int d1 = steps[0] & 3;
+    unsigned code = (unsigned)d1;
+    for (int i = 1; i < n; i++) {
+        int d = steps[i] & 3;
+        if (d != d1) {
+            code |= 1u << (i + 2);
+            if (((d - d1) & 3) == 1)
+                code |= 4u;
+        }
+    }
+    return (uint8_t)code;
+}
+
+uint8_t hol_view_mask(const uint8_t *steps, int n)
+{
+    unsigned mask = 3;
+    for (int i = 1; i < n; i++) {
+        mask |= 1u << (i + 2);
+        if ((steps[i] & 3) != (steps[0] & 3))
+            mask |= 4u;
+    }
+    return (uint8_t)mask;
+}
+
+/* Trace the half-line from (ex,ez) in direction (dx,dz) through the cells:
+ * room steps up to and including the one that leaves the room. */
+static int hol__trace(double ex, double ez, double dx, double dz,
+                      uint8_t steps[HOL_VIEW_MAX_STEPS])
+{
+    int c = (int)floor(ex), r = (int)floor(ez), n = 0;
+    while (n < HOL_VIEW_MAX_STEPS) {
+        double tx = dx > 0 ? (c + 1 - ex) / dx : dx < 0 ? (c - ex) / dx : INFINITY;
+        double tz = dz > 0 ? (r + 1 - ez) / dz : dz < 0 ? (r - ez) / dz : INFINITY;
+        int d;
+        if (tx < tz) {
+            d = dx > 0 ? HOL_DIR_E : HOL_DIR_W;
+            c += dx > 0 ? 1 : -1;
+        } else {
+            d = dz > 0 ? HOL_DIR_S : HOL_DIR_N;
+            r += dz > 0 ? 1 : -1;
+        }
+        steps[n++] = (uint8_t)d;
+        if (c < 0 || c >= HOL_ROOM_SIZE || r < 0 || r >= HOL_ROOM_SIZE)
+            break;
+    }
+    return n;
+}
+
+static double hol__cross(const double a[2], const double b[2])
+{
+    return a[0] * b[1] - a[1] * b[0];
+}
+
+static void hol__add_branch(hol_view *v, const hol_room *user, const uint8_t *steps,
+                            int n, int stencil)
+{
+    for (int i = 0; i < v->nbranches; i++) {
+        const hol_view_branch *b = &v->branches[i];
+        if (b->nsteps == n && !memcmp(b->steps, steps, (size_t)n))
+            return;
+    }
+    if (v->nbranches >= HOL_VIEW_MAX_BRANCHES)
+        return; /* cannot happen in a 3 x 3 room (at most ~40) */
+    hol_view_branch *b = &v->branches[v->nbranches++];
+    memset(b, 0, sizeof *b);
+    b->state = *user;
+    b->nsteps = (uint8_t)n;
+    memcpy(b->steps, steps, (size_t)n);
+    b->err = hol_room_walk(&b->state, steps, (size_t)n, NULL);
+    if (stencil && n > 0) {
+        b->ref = hol_view_code(steps, n);
+        b->mask = hol_view_mask(steps, n);
+    }
+}
+
+hol_err hol_view_build(const hol_room *user, double ex, double ez, int euclidean,
+                       hol_view *out)
+{
+    if (!(ex > user->col && ex < user->col + 1 && ez > user->row &&
+          ez < user->row + 1))
+        return HOL_EARG;
+    memset(out, 0, sizeof *out);
+    out->euclidean = euclidean ? 1 : 0;
+    hol__add_branch(out, user, NULL, 0, 0);
+    if (euclidean) {
+        for (int r = 0; r < HOL_ROOM_SIZE; r++)
+            for (int c = 0; c < HOL_ROOM_SIZE; c++) {
+                uint8_t steps[4];
+                int n = 0;
+                for (int k = user->col; k < c; k++)
+                    steps[n++] = HOL_DIR_E;
+                for (int k = user->col; k > c; k--)
+                    steps[n++] = HOL_DIR_W;
+                for (int k = user->row; k < r; k++)
+                    steps[n++] = HOL_DIR_S;
+                for (int k = user->row; k > r; k--)
+                    steps[n++] = HOL_DIR_N;
+                hol__add_branch(out, user, steps, n, 0);
+            }
+        return HOL_OK;
+    }
+    /* directions to the vertices, sorted by angle, collinear ones merged */
+    double dirs[16][2], ang[16];
+    int nd = 0;
+    for (int j = 0; j <= HOL_ROOM_SIZE; j++)
+        for (int i = 0; i <= HOL_ROOM_SIZE; i++) {
+            double dx = i - ex, dz = j - ez, l = sqrt(dx * dx + dz * dz);
+            double u[2] = {dx / l, dz / l};
+            int dup = 0;
+            for (int k = 0; k < nd && !dup; k++)
+                dup = fabs(hol__cross(u, dirs[k])) < 1e-12 &&
+                      u[0] * dirs[k][0] + u[1] * dirs[k][1] > 0;
+            if (dup)
+                continue;
+            double a = atan2(u[1], u[0]);
+            int k = nd++;
+            while (k > 0 && ang[k - 1] > a) {
+                ang[k] = ang[k - 1];
+                dirs[k][0] = dirs[k - 1][0];
+                dirs[k][1] = dirs[k - 1][1];
+                k--;
+            }
+            ang[k] = a;
+            dirs[k][0] = u[0];
+            dirs[k][1] = u[1];
+        }
+    for (int k = 0; k < nd; k++) {
+        const double *u0 = dirs[k], *u1 = dirs[(k + 1) % nd];
+        double mx = u0[0] + u1[0], mz = u0[1] + u1[1];
+        hol_view_leaf *lf = &out->leaves[out->nleaves++];
+        lf->u0[0] = u0[0];
+        lf->u0[1] = u0[1];
+        lf->u1[0] = u1[0];
+        lf->u1[1] = u1[1];
+        lf->nsteps = (uint8_t)hol__trace(ex, ez, mx, mz, lf->steps);
+        lf->code = hol_view_code(lf->steps, lf->nsteps);
+        for (int n = 1; n < lf->nsteps; n++)
+            hol__add_branch(out, user, lf->steps, n, 1);
+    }
+    return HOL_OK;
+}
+
+/* Clip a convex polygon by a*x + b*y + c >= 0. */
+static int hol__clip(double in[][2], int n, double a, double b, double c,
+                     double out[][2])
+{
+    int m = 0;
+    for (int i = 0; i < n; i++) {
+        const double *p = in[i], *q = in[(i + 1) % n];
+        double dp = a * p[0] + b * p[1] + c, dq = a * q[0] + b * q[1] + c;
+        if (dp >= 0) {
+            out[m][0] = p[0];
+            out[m][1] = p[1];
+            m++;
+        }
+        if ((dp >= 0) != (dq >= 0)) {
+            double t = dp / (dp - dq);
+            out[m][0] = p[0] + t * (q[0] - p[0]);
+            out[m][1] = p[1] + t * (q[1] - p[1]);
+            m++;
+        }
+    }
+    return m;
+}
+
+int hol_view_leaf_ndc(const hol_camera *cam, const hol_view_leaf *leaf,
+                      float out_xy[8][2])
+{
+    double r[3], u[3], b[3];
+    hol_camera_basis(cam, r, u, b);
+    double ay = tan(hol__fovy(cam) / 2), ax = ay * cam->width / cam->height;
+    /* floor direction of the ray through (x,y): x*ax*r + y*ay*u - b */
+    double poly[8][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}}, tmp[8][2];
+    int n = 4;
+    /* cross(u0, v) >= 0 and cross(v, u1) >= 0 */
+    const double *u0 = leaf->u0, *u1 = leaf->u1;
+    double a0 = ax * (u0[0] * r[2] - u0[1] * r[0]);
+    double b0 = ay * (u0[0] * u[2] - u0[1] * u[0]);
+    double c0 = -(u0[0] * b[2] - u0[1] * b[0]);
+    double a1 = -ax * (u1[0] * r[2] - u1[1] * r[0]);
+    double b1 = -ay * (u1[0] * u[2] - u1[1] * u[0]);
+    double c1 = (u1[0] * b[2] - u1[1] * b[0]);
+    n = hol__clip(poly, n, a0, b0, c0, tmp);
+    n = hol__clip(tmp, n, a1, b1, c1, poly);
+    for (int i = 0; i < n; i++) {
+        out_xy[i][0] = (float)poly[i][0];
+        out_xy[i][1] = (float)poly[i][1];
+    }
+    return n;
+}

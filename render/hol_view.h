@@ -1,0 +1,103 @@
+/* hol_view.h - what the user sees: camera maths and the portal view
+ * branches of the 3 x 3 room (SPEC sections 1 and 2). Pure CPU code, no GL.
+ *
+ * Contract
+ * - Room coordinates in metres: x east, y up, z south; cell (c,r) spans
+ *   x in [c,c+1], z in [r,r+1]. yaw 0 looks north (-z), positive yaw turns
+ *   west (counter-clockwise from above), positive pitch looks up; vertical
+ *   field of view fovy, square pixels.
+ * - A floor point shows the tile reached by walking, from the eye's cell,
+ *   the cells that the eye-to-point segment crosses (projected on the
+ *   floor), with hol_room_step semantics on the user's state. All floor
+ *   points inside the room with the same crossing sequence form one *branch*.
+ * - The floor-projected direction of a pixel's ray fixes the whole sequence
+ *   of cells along it up to and including the step that leaves the room:
+ *   the *leaf*. Leaves are the angular wedges between the directions from
+ *   the eye to the 16 room vertices (segments through a vertex are hidden
+ *   by the trunk standing there). Each leaf gets a 7-bit stencil code; a
+ *   branch (any in-room prefix of a leaf) is drawn where
+ *   (stencil & mask) == ref, so each branch costs one stencil-tested draw
+ *   and the whole stencil is written by one polygon per leaf:
+ *     bits 0-1: the first step (room direction N 0, W 1, S 2, E 3);
+ *     bit 2:    the side the sequence turns to (1: first step + 1, i.e.
+ *               to the left), if it turns at all;
+ *     bit 1+i:  step i (i = 2..5) differs from the first step.
+ *   A straight half-line only ever steps in its first direction or in one
+ *   fixed side direction, so the code is a prefix code of the sequence.
+ * - Floor outside the room is not shown (the boundary hedges hide it; see
+ *   render/hol_render.h); the exit step only makes the codes prefix-free.
+ * - Euclidean mode (baseline): one branch per cell, the tile reached by the
+ *   room walk columns first then rows, no stencil.
+ */
+#ifndef HOL_VIEW_H
+#define HOL_VIEW_H
+
+#include <stdint.h>
+
+#include "../core/hol_room.h"
+
+#define HOL_VIEW_MAX_LEAVES 16
+#define HOL_VIEW_MAX_STEPS 6
+#define HOL_VIEW_MAX_BRANCHES 64
+#define HOL_VIEW_STENCIL_CLEAR 0x80 /* matches no branch */
+
+typedef struct hol_camera {
+    double eye[3];    /* room coordinates */
+    double yaw_deg;
+    double pitch_deg; /* -90..90 */
+    double fovy_deg;  /* 0 means 90 */
+    int width, height;
+    double znear, zfar; /* 0 means 0.05 and 60 */
+} hol_camera;
+
+typedef struct hol_view_leaf {
+    double u0[2], u1[2];  /* floor directions (x,z) bounding the wedge */
+    uint8_t code;         /* stencil value */
+    uint8_t nsteps;       /* steps including the one leaving the room */
+    uint8_t steps[HOL_VIEW_MAX_STEPS];
+} hol_view_leaf;
+
+typedef struct hol_view_branch {
+    hol_room state;       /* tile, orientation; col,row = the cell */
+    uint8_t nsteps;
+    uint8_t steps[HOL_VIEW_MAX_STEPS];
+    uint8_t ref, mask;    /* stencil test; mask 0: no test */
+    hol_err err;          /* HOL_ERANGE: beyond the reach, not drawn */
+} hol_view_branch;
+
+typedef struct hol_view {
+    int euclidean;
+    int nleaves;
+    hol_view_leaf leaves[HOL_VIEW_MAX_LEAVES];
+    int nbranches;        /* branches[0] is the eye's cell */
+    hol_view_branch branches[HOL_VIEW_MAX_BRANCHES];
+} hol_view;
+
+/* Basis of the camera: right, up, back (world vectors). */
+void hol_camera_basis(const hol_camera *cam, double out_r[3], double out_u[3],
+                      double out_b[3]);
+/* Column-major 4x4 view and projection matrices (float, for GL). */
+void hol_camera_matrices(const hol_camera *cam, float out_view[16],
+                         float out_proj[16]);
+/* The ray direction (world) through normalized device coordinates. */
+void hol_camera_ray(const hol_camera *cam, double ndc_x, double ndc_y,
+                    double out_dir[3]);
+
+/* Step code of a sequence of room directions (see above). */
+uint8_t hol_view_code(const uint8_t *steps, int n);
+/* Mask testing the first n steps of a sequence (n >= 1). */
+uint8_t hol_view_mask(const uint8_t *steps, int n);
+
+/* Build the leaves and branches for a user state and an eye position
+ * (x, z strictly inside the user's cell). Errors: HOL_EARG (eye not inside
+ * the cell). Branches beyond the reach of tile words get err = HOL_ERANGE. */
+hol_err hol_view_build(const hol_room *user, double ex, double ez, int euclidean,
+                       hol_view *out);
+
+/* The screen region of a leaf: a convex polygon in normalized device
+ * coordinates (the wedge clipped to [-1,1]^2). Returns the vertex count
+ * (0 when the wedge is off screen); out holds up to 8 points. */
+int hol_view_leaf_ndc(const hol_camera *cam, const hol_view_leaf *leaf,
+                      float out_xy[8][2]);
+
+#endif

@@ -1,0 +1,67 @@
+#!/bin/sh
+# cli_render.sh - `holonomy render`: usage errors, outputs, atomic writes.
+set -u
+H=${HOLONOMY:-build/holonomy}
+T=$(mktemp -d)
+trap 'rm -rf "$T"' EXIT
+fail() { echo "FAIL: $*"; exit 1; }
+
+# expect_usage ARGS...: exit 2, exactly one line on stderr, nothing on stdout
+expect_usage() {
+    "$H" render "$@" >"$T/out" 2>"$T/err"
+    st=$?
+    [ $st -eq 2 ] || fail "render $* exited $st, expected 2"
+    [ "$(wc -l <"$T/err")" -eq 1 ] || fail "render $*: stderr is not one line"
+    [ ! -s "$T/out" ] || fail "render $*: wrote to stdout"
+}
+
+"$H" render --help >"$T/help" || fail "--help"
+grep -q -- "--tile-ids" "$T/help" || fail "--help does not describe --tile-ids"
+
+expect_usage
+expect_usage --walk NX --out "$T/a.png"
+expect_usage --walk NN --out "$T/a.png"
+expect_usage --eye 0.5,1.6,0.5 --out "$T/a.png"
+expect_usage --eye 1.0,1.6,1.5 --out "$T/a.png"
+expect_usage --eye 1.5,1.6 --out "$T/a.png"
+expect_usage --eye 1.5,-1,1.5 --out "$T/a.png"
+expect_usage --walk N --eye 1.5,1.6,1.5 --out "$T/a.png"
+expect_usage --size 0x10 --out "$T/a.png"
+expect_usage --size 64 --out "$T/a.png"
+expect_usage --pitch 91 --out "$T/a.png"
+expect_usage --yaw abc --out "$T/a.png"
+expect_usage --bogus --out "$T/a.png"
+expect_usage --out
+[ ! -e "$T/a.png" ] || fail "a usage error left an output file"
+
+# a view, its tile ids, stats
+"$H" render --walk NE --eye 2.4,1.6,0.6 --yaw 135 --pitch -40 --size 64x48 \
+    --out "$T/v.png" --tile-ids "$T/ids" --stats >"$T/stats" || fail "render"
+head -c 8 "$T/v.png" | od -An -c | grep -q "P   N   G" || fail "not a PNG"
+grep -q '^draw_calls [0-9]' "$T/stats" || fail "no draw_calls in --stats"
+grep -q '^stencil_passes [0-9]' "$T/stats" || fail "no stencil_passes in --stats"
+grep -q '^cpu_ms [0-9]' "$T/stats" || fail "no cpu_ms in --stats"
+[ -s "$T/ids" ] || fail "no tile ids"
+# every line: PX PY ADDRESS with PX < 64, PY < 48; the user's tile (walk NE
+# ends on Nr) is among them
+awk 'NF != 3 || $1 !~ /^[0-9]+$/ || $2 !~ /^[0-9]+$/ || $1 >= 64 || $2 >= 48 ||
+     $3 !~ /^(O|[NESW][flr]*)$/ { bad = 1 } END { exit bad }' "$T/ids" ||
+    fail "malformed tile-id line"
+grep -q ' Nr$' "$T/ids" || fail "the user's tile Nr is not in view"
+ls "$T" | grep -q tmp && fail "a temporary file was left behind"
+
+# the euclidean baseline and a bare view render too
+"$H" render --euclidean --size 32x24 --out "$T/e.png" || fail "--euclidean"
+"$H" render --bare --size 32x24 --tile-ids "$T/b" || fail "--bare"
+
+# a failed write: exit 1, the old file untouched, no temp file
+echo old >"$T/keep.png"
+chmod 0555 "$T" 2>/dev/null
+if [ "$(id -u)" != 0 ]; then
+    "$H" render --size 16x16 --out "$T/keep.png" 2>/dev/null && fail "write into read-only dir"
+fi
+chmod 0755 "$T"
+"$H" render --size 16x16 --out "$T/nodir/x.png" 2>"$T/err"
+[ $? -eq 1 ] || fail "missing directory should exit 1"
+[ "$(cat "$T/keep.png")" = old ] || fail "old file changed"
+echo "cli_render: ok"
