@@ -31,7 +31,9 @@ UNIT_SRC := $(filter-out $(RENDER_TEST_SRC),$(wildcard tests/test_*.c))
 CLI_TESTS := $(wildcard tests/cli_*.sh)
 # Libraries the renderer needs (headless OSMesa; EGL for the desktop build).
 RENDER_LIBS ?= -lOSMesa -lz
-BENCH_SRC := $(wildcard tests/bench_*.c)
+# tests/bench_render*.c: benches that also link the renderer and GL.
+BENCH_RENDER_SRC := $(wildcard tests/bench_render*.c)
+BENCH_SRC := $(filter-out $(BENCH_RENDER_SRC),$(wildcard tests/bench_*.c))
 FUZZ_SRC := $(wildcard fuzz/fuzz_*.c)
 
 CORE_OBJ := $(CORE_SRC:%.c=$(BUILD)/%.o)
@@ -43,6 +45,7 @@ APP_LIBS := $(if $(RENDER_SRC),$(RENDER_LIBS))
 UNIT_BIN := $(UNIT_SRC:tests/%.c=$(BUILD)/tests/%)
 RENDER_TEST_BIN := $(RENDER_TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 BENCH_BIN := $(BENCH_SRC:tests/%.c=$(BUILD)/bench/%)
+BENCH_RENDER_BIN := $(BENCH_RENDER_SRC:tests/%.c=$(BUILD)/bench/%)
 FUZZ_BIN := $(FUZZ_SRC:fuzz/%.c=$(BUILD)/fuzz/%)
 
 DEB_PACKAGES := make gcc clang libcmocka-dev libosmesa6-dev libegl-dev \
@@ -76,6 +79,10 @@ $(RENDER_TEST_BIN): $(BUILD)/tests/%: tests/%.c $(wildcard tests/*.h) $(RENDER_L
 $(BUILD)/tests/%: tests/%.c $(wildcard tests/*.h) $(CORE_LIB)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) -o $@ $< $(CORE_LIB) $(LDFLAGS) -lcmocka $(LDLIBS)
+
+$(BENCH_RENDER_BIN): $(BUILD)/bench/%: tests/%.c $(RENDER_LIB) $(CORE_LIB)
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) -DNDEBUG -o $@ $< $(RENDER_LIB) $(CORE_LIB) $(LDFLAGS) $(RENDER_LIBS) $(LDLIBS)
 
 $(BUILD)/bench/%: tests/%.c $(CORE_SRC)
 	@mkdir -p $(dir $@)
@@ -119,8 +126,8 @@ fuzz: $(FUZZ_BIN)
 	    -artifact_prefix=$(BUILD)/fuzz/ $(BUILD)/fuzz/new-$$n fuzz/corpus/$$n; \
 	done
 
-bench: $(BENCH_BIN)
-	@set -e; for b in $(BENCH_BIN); do $$b; done
+bench: $(BENCH_BIN) $(BENCH_RENDER_BIN)
+	@set -e; for b in $(BENCH_BIN) $(BENCH_RENDER_BIN); do $$b; done
 
 san:
 	$(MAKE) BUILD=$(BUILD)/san OPT=-O1 \
