@@ -1,43 +1,199 @@
-/* hol_world.c - TEMPORARY stub: every tile is a meadow with grass. */
-#include "hol_world.h"
+/* hol_world.c - the world's lifecycle and its fixed-capacity tile store.
+ *
+ * The store is an open-addressing table (linear probing, power-of-two
+ * capacity, backward-shift deletion) of hol__entry keyed by the tile word.
+ * Full-store policy (see hol_world.h): at the start of an update, a store
+ * over 3/4 full evicts the entries least recently within radius + 1 of the
+ * user, down to about 1/2; entries touched by the last or the running update
+ * and entries holding a game object are never evicted.
+ */
+#include "hol_world_impl.h"
 
 #include <stdlib.h>
 #include <string.h>
 
-struct hol_world {
-    uint64_t seed;
-    int radius;
-    hol_room user;
-};
+/* Tiles within distance r of a tile: 1 + 4 + 12 + 28 + ... (SPEC 3). */
+uint32_t hol__ball_size(int radius)
+{
+    static const uint32_t ball[10] = {1,   5,    17,   45,   109,
+                                      257, 597, 1377, 3169, 7285};
+    if (radius < 0)
+        return 0;
+    return ball[radius > 9 ? 9 : radius];
+}
+
+uint64_t hol__mix(uint64_t a, uint64_t b)
+{
+    uint64_t x = a ^ (b + UINT64_C(0x9E3779B97F4A7C15) + (a << 6) + (a >> 2));
+    x ^= x >> 30;
+    x *= UINT64_C(0xBF58476D1CE4E5B9);
+    x ^= x >> 27;
+    x *= UINT64_C(0x94D049BB133111EB);
+    x ^= x >> 31;
+    return x;
+}
+
+uint64_t hol__tile_hash(uint64_t seed, hol_tile t)
+{
+    return hol__mix(hol__mix(seed, t.bits[0]), t.bits[1]);
+}
+
+int hol__tile_valid(hol_tile t)
+{
+    int len = hol_tile_dist0(t);
+    if (len > HOL_TILE_MAX_DIST)
+        return 0;
+    char buf[HOL_TILE_ADDR_MAX];
+    hol_tile back;
+    hol_tile_print(t, buf);
+    if (hol_tile_parse(buf, -1, &back))
+        return 0;
+    return hol_tile_eq(back, t); /* also rejects stray high bits */
+}
+
+/* ---- layout ------------------------------------------------------------ */
+
+typedef struct hol__layout {
+    uint32_t cap, max_slots, map_size, max_trail, max_reserve;
+    size_t off_entries, off_slots, off_map_key, off_map_val, off_trail, off_dec,
+        off_queue, off_reserve, total;
+} hol__layout;
+
+static size_t hol__align(size_t n) { return (n + 15) & ~(size_t)15; }
+
+static int hol__plan(const hol_world_desc *desc, hol__layout *l)
+{
+    int radius = desc->radius ? desc->radius : HOL_WORLD_DEFAULT_RADIUS;
+    if (radius < 1 || radius > HOL_WORLD_MAX_RADIUS)
+        return 0;
+    uint64_t want = desc->capacity ? desc->capacity : HOL_WORLD_DEFAULT_CAPACITY;
+    if (want > (UINT64_C(1) << 31))
+        return 0;
+    uint64_t minimum = (uint64_t)8 * hol__ball_size(radius + 1);
+    if (want < minimum)
+        want = minimum;
+    if (want < HOL_WORLD_MIN_CAPACITY)
+        want = HOL_WORLD_MIN_CAPACITY;
+    uint64_t cap = 1;
+    while (cap < want)
+        cap <<= 1;
+    l->cap = (uint32_t)cap;
+    l->max_slots = hol__ball_size(radius + 1);
+    l->map_size = 1;
+    while (l->map_size < 2 * l->max_slots)
+        l->map_size <<= 1;
+    l->max_trail = 32 * l->max_slots + 64;
+    l->max_reserve = hol__ball_size(radius);
+    size_t off = hol__align(sizeof(hol_world));
+    l->off_entries = off;
+    off += hol__align((size_t)l->cap * sizeof(hol__entry));
+    l->off_slots = off;
+    off += hol__align((size_t)l->max_slots * sizeof(hol__slot));
+    l->off_map_key = off;
+    off += hol__align((size_t)l->map_size * sizeof(uint32_t));
+    l->off_map_val = off;
+    off += hol__align((size_t)l->map_size * sizeof(uint32_t));
+    l->off_trail = off;
+    off += hol__align((size_t)l->max_trail * sizeof(hol__trail));
+    l->off_dec = off;
+    off += hol__align((size_t)(l->max_slots + 1) * sizeof(hol__decision));
+    l->off_queue = off;
+    off += hol__align((size_t)l->max_trail * sizeof(uint32_t));
+    l->off_reserve = off;
+    off += hol__align((size_t)l->max_reserve * sizeof(hol_tile));
+    l->total = off;
+    return 1;
+}
 
 size_t hol_world_mem_size(const hol_world_desc *desc)
 {
-    (void)desc;
-    return sizeof(hol_world);
+    hol__layout l;
+    if (!desc || !hol__plan(desc, &l))
+        return 0;
+    return l.total;
 }
 
 hol_err hol_world_init(void *mem, size_t size, const hol_world_desc *desc,
                        hol_world **out_world)
 {
-    if (!mem || size < sizeof(hol_world) || !desc)
+    hol__layout l;
+    if (!mem || !desc || !out_world || ((uintptr_t)mem & 15) ||
+        !hol__plan(desc, &l))
         return HOL_EARG;
+    if (size < l.total)
+        return HOL_ENOMEM;
+    char *base = mem;
+    memset(base, 0, l.off_slots); /* struct and store */
     hol_world *w = mem;
     w->seed = desc->seed;
     w->radius = desc->radius ? desc->radius : HOL_WORLD_DEFAULT_RADIUS;
+    w->cap = l.cap;
+    w->mask = l.cap - 1;
+    w->reject_per_mille = desc->test_reject_per_mille > 1000
+                              ? 1000
+                              : desc->test_reject_per_mille;
     w->user = hol_room_start();
+    w->entries = (hol__entry *)(void *)(base + l.off_entries);
+    w->slots = (hol__slot *)(void *)(base + l.off_slots);
+    w->max_slots = l.max_slots;
+    w->map_key = (uint32_t *)(void *)(base + l.off_map_key);
+    w->map_val = (uint32_t *)(void *)(base + l.off_map_val);
+    w->map_mask = l.map_size - 1;
+    w->trail = (hol__trail *)(void *)(base + l.off_trail);
+    w->max_trail = l.max_trail;
+    w->dec = (hol__decision *)(void *)(base + l.off_dec);
+    w->queue = (uint32_t *)(void *)(base + l.off_queue);
+    w->reserve_tiles = (hol_tile *)(void *)(base + l.off_reserve);
+    w->max_reserve = l.max_reserve;
+    w->bytes = l.total;
     *out_world = w;
     return HOL_OK;
 }
 
-hol_err hol_world_make(const hol_world_desc *desc, hol_world **out_world)
+static void *hol__default_alloc(size_t size, void *user)
 {
-    hol_world *w = malloc(sizeof *w);
-    if (!w)
-        return HOL_ENOMEM;
-    return hol_world_init(w, sizeof *w, desc, out_world);
+    (void)user;
+    return malloc(size);
 }
 
-void hol_world_destroy(hol_world *w) { free(w); }
+static void hol__default_free(void *ptr, void *user)
+{
+    (void)user;
+    free(ptr);
+}
+
+hol_err hol_world_make(const hol_world_desc *desc, hol_world **out_world)
+{
+    size_t size = hol_world_mem_size(desc);
+    if (!size || !out_world)
+        return HOL_EARG;
+    void *(*alloc)(size_t, void *) = desc->allocator.alloc;
+    void (*free_fn)(void *, void *) = desc->allocator.free;
+    if (!alloc || !free_fn) {
+        alloc = hol__default_alloc;
+        free_fn = hol__default_free;
+    }
+    void *mem = alloc(size, desc->allocator.user);
+    if (!mem)
+        return HOL_ENOMEM;
+    hol_world *w;
+    hol_err err = hol_world_init(mem, size, desc, &w);
+    if (err) {
+        free_fn(mem, desc->allocator.user);
+        return err;
+    }
+    w->free_fn = free_fn;
+    w->free_user = desc->allocator.user;
+    *out_world = w;
+    return HOL_OK;
+}
+
+void hol_world_destroy(hol_world *w)
+{
+    if (w && w->free_fn)
+        w->free_fn(w, w->free_user);
+}
+
 uint64_t hol_world_seed(const hol_world *w) { return w->seed; }
 int hol_world_radius(const hol_world *w) { return w->radius; }
 hol_room hol_world_user(const hol_world *w) { return w->user; }
@@ -45,99 +201,131 @@ hol_room hol_world_user(const hol_world *w) { return w->user; }
 void hol_world_get_stats(const hol_world *w, hol_world_stats *out)
 {
     memset(out, 0, sizeof *out);
-    out->bytes = sizeof *w;
+    out->tiles_collapsed = w->collapsed;
+    out->backtracks = w->backtracks;
+    out->updates = w->updates;
+    out->evicted = w->evicted;
+    out->count = w->count;
+    out->capacity = w->cap;
+    out->bytes = w->bytes;
 }
 
-hol_err hol_world_update(hol_world *w, const hol_room *room)
+/* ---- the table ---------------------------------------------------------- */
+
+static uint32_t hol__home(const hol_world *w, hol_tile t)
 {
-    w->user = *room;
-    return HOL_OK;
+    return (uint32_t)hol_tile_hash(t) & w->mask;
 }
 
-hol_err hol_world_peek(const hol_world *w, hol_tile t, hol_tile_content *out)
+int64_t hol__find(const hol_world *w, hol_tile t)
 {
-    memset(out, 0, sizeof *out);
-    out->object = HOL_OBJ_GRASS;
-    out->log_partner = -1;
-    for (int c = 0; c < 4; c++)
-        hol_world_tree(w->seed, t, c, &out->tree[c]);
-    return HOL_OK;
+    uint32_t i = hol__home(w, t);
+    for (uint32_t n = 0; n < w->cap; n++, i = (i + 1) & w->mask) {
+        const hol__entry *e = &w->entries[i];
+        if (!(e->flags & HOL__F_USED))
+            return -1;
+        if (hol_tile_eq(e->tile, t))
+            return i;
+    }
+    return -1;
 }
 
-hol_err hol_world_get(hol_world *w, hol_tile t, hol_tile_content *out)
+int64_t hol__insert(hol_world *w, hol_tile t)
 {
-    return hol_world_peek(w, t, out);
+    uint32_t i = hol__home(w, t);
+    for (uint32_t n = 0; n < w->cap; n++, i = (i + 1) & w->mask) {
+        hol__entry *e = &w->entries[i];
+        if (!(e->flags & HOL__F_USED)) {
+            if (w->count + 1 >= w->cap)
+                return -1; /* always keep one empty slot */
+            memset(e, 0, sizeof *e);
+            e->tile = t;
+            e->state = HOL__UNSET;
+            e->biome = HOL_BIOME_NONE;
+            e->flags = HOL__F_USED;
+            e->stamp = w->stamp;
+            w->count++;
+            return i;
+        }
+        if (hol_tile_eq(e->tile, t))
+            return i;
+    }
+    return -1;
 }
 
-hol_err hol_world_reserve(hol_world *w, hol_tile t, int max_dist,
-                          hol_object obj, hol_tile *out_tile)
+/* Backward-shift deletion of slot i. */
+static void hol__delete(hol_world *w, uint32_t i)
 {
-    (void)w;
-    (void)max_dist;
-    (void)obj;
-    *out_tile = t;
-    return HOL_OK;
+    uint32_t j = i;
+    for (;;) {
+        j = (j + 1) & w->mask;
+        hol__entry *e = &w->entries[j];
+        if (!(e->flags & HOL__F_USED))
+            break;
+        uint32_t k = hol__home(w, e->tile);
+        /* may e move into the hole at i? only if its home is not in (i, j] */
+        int between = i <= j ? (k > i && k <= j) : (k > i || k <= j);
+        if (!between) {
+            w->entries[i] = *e;
+            i = j;
+        }
+    }
+    memset(&w->entries[i], 0, sizeof w->entries[i]);
+    w->count--;
 }
 
-hol_err hol_world_release(hol_world *w, hol_tile t)
+static int hol__evictable(const hol_world *w, const hol__entry *e)
 {
-    (void)w;
-    (void)t;
-    return HOL_OK;
+    return (e->flags & HOL__F_USED) && e->game == HOL_OBJ_NONE &&
+           e->stamp + 1 < w->stamp;
 }
 
-hol_err hol_world_vertex_canon(hol_tile t, int corner, hol_tile *out_tile,
-                               int *out_corner)
+void hol__maybe_evict(hol_world *w)
 {
-    *out_tile = t;
-    *out_corner = corner & 3;
-    return HOL_OK;
+    if (w->count <= w->cap - w->cap / 4)
+        return;
+    uint32_t need = w->count - w->cap / 2;
+    uint32_t lo = UINT32_MAX, hi = 0, n = 0;
+    for (uint32_t i = 0; i < w->cap; i++) {
+        const hol__entry *e = &w->entries[i];
+        if (!hol__evictable(w, e))
+            continue;
+        n++;
+        if (e->stamp < lo)
+            lo = e->stamp;
+        if (e->stamp > hi)
+            hi = e->stamp;
+    }
+    if (n == 0)
+        return;
+    uint32_t limit; /* evict stamps below limit */
+    if (n <= need) {
+        limit = hi + 1;
+    } else {
+        uint32_t hist[256] = {0};
+        uint64_t width = ((uint64_t)hi - lo) / 256 + 1;
+        for (uint32_t i = 0; i < w->cap; i++) {
+            const hol__entry *e = &w->entries[i];
+            if (hol__evictable(w, e))
+                hist[(e->stamp - lo) / width]++;
+        }
+        uint32_t sum = 0, b = 0;
+        for (; b < 256; b++) {
+            sum += hist[b];
+            if (sum >= need)
+                break;
+        }
+        limit = (uint32_t)(lo + (uint64_t)(b + 1) * width);
+    }
+    for (uint32_t i = 0; i < w->cap; i++) {
+        while (hol__evictable(w, &w->entries[i]) && w->entries[i].stamp < limit) {
+            hol__delete(w, i);
+            w->evicted++;
+        }
+    }
 }
 
-hol_err hol_world_tree(uint64_t seed, hol_tile t, int corner, hol_tree *out)
-{
-    (void)seed;
-    (void)t;
-    (void)corner;
-    out->kind = HOL_TREE_PINE;
-    out->size = 2;
-    return HOL_OK;
-}
-
-hol_err hol_world_check(const hol_world *w, char *msg, size_t msg_cap)
-{
-    (void)w;
-    if (msg && msg_cap)
-        msg[0] = 0;
-    return HOL_OK;
-}
-
-size_t hol_world_save_size(const hol_world *w)
-{
-    (void)w;
-    return 0;
-}
-
-hol_err hol_world_save(const hol_world *w, void *buf, size_t cap,
-                       size_t *out_len)
-{
-    (void)w;
-    (void)buf;
-    (void)cap;
-    *out_len = 0;
-    return HOL_EUNSUPPORTED;
-}
-
-hol_err hol_world_load(hol_world *w, const void *buf, size_t len, char *msg,
-                       size_t msg_cap)
-{
-    (void)w;
-    (void)buf;
-    (void)len;
-    if (msg && msg_cap)
-        msg[0] = 0;
-    return HOL_EUNSUPPORTED;
-}
+/* ---- names -------------------------------------------------------------- */
 
 const char *hol_biome_name(int biome)
 {

@@ -223,11 +223,16 @@ hol_err hol_world_save(const hol_world *w, void *buf, size_t cap,
                        size_t *out_len);
 /* Load an image made by hol_world_save: HOL_ECORRUPT (truncated, checksum
  * or structure), HOL_EVERSION (another format version), HOL_ENOMEM (more
- * tiles than the capacity), with a one-line reason in msg (may be NULL).
- * On error the world is unchanged. The seed, radius and user state come
- * from the image; the capacity stays. */
+ * tiles than 3/4 of the capacity), HOL_EARG (the image was saved with
+ * another radius), with a one-line reason in msg (may be NULL). On error
+ * the world is unchanged. On success the seed, the user state and the
+ * store come from the image; capacity, allocator and statistics stay. */
 hol_err hol_world_load(hol_world *w, const void *buf, size_t len, char *msg,
                        size_t msg_cap);
+/* The desc (seed, radius, a capacity that holds the image) to make a world
+ * for an image, from its header alone; HOL_ECORRUPT/HOL_EVERSION as load. */
+hol_err hol_world_image_desc(const void *buf, size_t len,
+                             hol_world_desc *out_desc);
 
 /* Names for printing ("meadow", "grass", "creek", ...). */
 const char *hol_biome_name(int biome);
