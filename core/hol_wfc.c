@@ -413,7 +413,7 @@ static int hol__choose(hol__batch *b, uint32_t slot)
         if (kept == 0 && cls >= HOL__C_STRAIGHT)
             mult = 0; /* creeks begin at springs */
         else if (kept == 0 && cls == HOL__C_SPRING)
-            mult = 5;
+            mult = 12;
         else if (kept == 0 && cls == HOL__C_POOLEND)
             mult = 0;
         else

@@ -230,9 +230,11 @@ hol_err hol_world_save(const hol_world *w, void *buf, size_t cap,
 hol_err hol_world_load(hol_world *w, const void *buf, size_t len, char *msg,
                        size_t msg_cap);
 /* The desc (seed, radius, a capacity that holds the image) to make a world
- * for an image, from its header alone; HOL_ECORRUPT/HOL_EVERSION as load. */
+ * for an image, after checking its header, length and checksum; errors and
+ * msg as hol_world_load. */
 hol_err hol_world_image_desc(const void *buf, size_t len,
-                             hol_world_desc *out_desc);
+                             hol_world_desc *out_desc, char *msg,
+                             size_t msg_cap);
 
 /* Names for printing ("meadow", "grass", "creek", ...). */
 const char *hol_biome_name(int biome);

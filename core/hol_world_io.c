@@ -235,10 +235,15 @@ static int hol__image_lookup(const void *ctx, hol_tile t, hol__rec *out)
 }
 
 hol_err hol_world_image_desc(const void *buf, size_t len,
-                             hol_world_desc *out_desc)
+                             hol_world_desc *out_desc, char *msg,
+                             size_t msg_cap)
 {
     hol__image im;
-    hol_err err = hol__parse_header(buf, len, &im, 0, NULL, 0);
+    if (msg && msg_cap)
+        msg[0] = 0;
+    if (!out_desc)
+        return HOL_EARG;
+    hol_err err = hol__parse_header(buf, len, &im, 1, msg, msg_cap);
     if (err)
         return err;
     memset(out_desc, 0, sizeof *out_desc);

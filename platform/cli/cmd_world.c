@@ -1,10 +1,464 @@
-/* cmd_world.c - `holonomy world` (placeholder until its issue lands). */
+/* cmd_world.c - `holonomy world`: the seeded forest around a walk; save and
+ * load world images (written atomically: temporary file, fsync, rename). */
+#include <errno.h>
+#include <fcntl.h>
+#include <inttypes.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "../../core/hol_room.h"
+#include "../../core/hol_tile.h"
+#include "../../core/hol_world.h"
 #include "cli.h"
+
+static const char *const world_usage =
+    "usage: holonomy world [--seed S] [--walk W] [--radius R] [--check]\n"
+    "                      [--load FILE] [--save FILE] [--capacity N] [--quiet]\n"
+    "       holonomy world save FILE [OPTIONS]   (same as --save FILE)\n"
+    "       holonomy world load FILE [OPTIONS]   (same as --load FILE)\n"
+    "\n"
+    "Generates the forest for seed S (an unsigned 64-bit number, decimal or\n"
+    "0x hex; default 0) as the app does: the user starts on the origin tile in\n"
+    "cell (1,1), takes the room steps of W (N, E, S, W; '-' for none; a step\n"
+    "that leaves the 3 x 3 room is bad input) and after every step the world\n"
+    "collapses every tile within 4 steps of the user. Then it prints every\n"
+    "tile within R steps (0..8, default 4) of the tile the walk ends on, one\n"
+    "per line, sorted by distance from that tile, then by address:\n"
+    "\n"
+    "  ADDRESS BIOME OBJECT ROTATION CONNECTORS\n"
+    "\n"
+    "  BIOME       meadow, pine, wetland or autumn\n"
+    "  OBJECT      none, grass, flowers, log, creek, spring, pool, rock,\n"
+    "              mushroom (flag, key, chest once the game places them)\n"
+    "  ROTATION    0..3 quarter turns counter-clockwise from the tile's\n"
+    "              canonical heading (the direction of the last address step)\n"
+    "  CONNECTORS  four characters for the edges forward, left, back, right\n"
+    "              (relative to the canonical heading): '-' none, 'c' creek,\n"
+    "              'l' log (the other half of the log lies across that edge)\n"
+    "Example line: Nrf pine creek 1 -c-c\n"
+    "Tiles farther than 4 from the user are collapsed on demand. Tiles\n"
+    "beyond distance 60 from O do not exist (the reach of tile words).\n"
+    "\n"
+    "  --check         verify every constraint of every tile in the store\n"
+    "                  after the walk; a violation is reported on stderr and\n"
+    "                  exits 1\n"
+    "  --save FILE     write the world (seed, store, user state) to FILE\n"
+    "                  atomically (temporary file, fsync, rename): FILE is\n"
+    "                  either the old or the complete new world\n"
+    "  --load FILE     start from a saved world and its saved user state\n"
+    "                  instead of a new one (not with --seed); W continues\n"
+    "                  from there. A truncated, corrupt or wrong-version\n"
+    "                  FILE is bad input (exit 2) and FILE is left untouched\n"
+    "  --capacity N    tiles in the store (default 1048576, fixed)\n"
+    "  --quiet         print no tiles\n"
+    "\n"
+    "Exit status: 0 ok, 1 failed --check or an I/O error, 2 bad usage or\n"
+    "input (one line on stderr).\n";
+
+#define CMD "world"
+
+typedef struct world_opts {
+    uint64_t seed;
+    int have_seed;
+    const char *walk;
+    int radius;
+    int check;
+    int quiet;
+    const char *load;
+    const char *save;
+    uint32_t capacity;
+} world_opts;
+
+static int parse_u64(const char *s, uint64_t *out)
+{
+    if (!s[0] || s[0] == '-' || s[0] == '+' || s[0] == ' ')
+        return 0;
+    char *end;
+    errno = 0;
+    unsigned long long v = strtoull(s, &end, 0);
+    if (errno || *end)
+        return 0;
+    *out = v;
+    return 1;
+}
+
+static int parse_args(int argc, char **argv, world_opts *o)
+{
+    memset(o, 0, sizeof *o);
+    o->radius = 4;
+    o->walk = "-";
+    int i = 1;
+    if (i < argc && (!strcmp(argv[i], "save") || !strcmp(argv[i], "load"))) {
+        if (i + 1 >= argc) {
+            cli_error(CMD, 0, "'%s' needs a FILE; see --help", argv[i]);
+            return 0;
+        }
+        if (argv[i][0] == 's')
+            o->save = argv[i + 1];
+        else
+            o->load = argv[i + 1];
+        i += 2;
+    }
+    for (; i < argc; i++) {
+        const char *a = argv[i];
+        const char *v = i + 1 < argc ? argv[i + 1] : NULL;
+        int takes = !strcmp(a, "--seed") || !strcmp(a, "--walk") ||
+                    !strcmp(a, "--radius") || !strcmp(a, "--load") ||
+                    !strcmp(a, "--save") || !strcmp(a, "--capacity");
+        if (takes && !v) {
+            cli_error(CMD, 0, "%s needs a value; see --help", a);
+            return 0;
+        }
+        if (!strcmp(a, "--seed")) {
+            if (!parse_u64(v, &o->seed)) {
+                cli_error(CMD, 0, "--seed '%.40s' is not an unsigned 64-bit number", v);
+                return 0;
+            }
+            o->have_seed = 1;
+        } else if (!strcmp(a, "--walk")) {
+            o->walk = v;
+        } else if (!strcmp(a, "--radius")) {
+            uint64_t r;
+            if (!parse_u64(v, &r) || r > HOL_WORLD_MAX_RADIUS) {
+                cli_error(CMD, 0, "--radius '%.40s' is not a number 0..%d", v,
+                          HOL_WORLD_MAX_RADIUS);
+                return 0;
+            }
+            o->radius = (int)r;
+        } else if (!strcmp(a, "--capacity")) {
+            uint64_t c;
+            if (!parse_u64(v, &c) || c < 1 || c > (UINT64_C(1) << 30)) {
+                cli_error(CMD, 0, "--capacity '%.40s' is not a number 1..2^30", v);
+                return 0;
+            }
+            o->capacity = (uint32_t)c;
+        } else if (!strcmp(a, "--load")) {
+            o->load = v;
+        } else if (!strcmp(a, "--save")) {
+            o->save = v;
+        } else if (!strcmp(a, "--check")) {
+            o->check = 1;
+            continue;
+        } else if (!strcmp(a, "--quiet")) {
+            o->quiet = 1;
+            continue;
+        } else {
+            cli_error(CMD, 0, "unknown argument '%.40s'; see --help", a);
+            return 0;
+        }
+        i++;
+    }
+    if (o->load && o->have_seed) {
+        cli_error(CMD, 0, "--seed and --load exclude each other (the file holds "
+                          "its seed)");
+        return 0;
+    }
+    return 1;
+}
+
+/* Read a whole file: 0, or the exit status of a failure already reported
+ * (a file that cannot be opened is bad input). */
+static int read_file(const char *path, uint8_t **out_buf, size_t *out_len)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f) {
+        cli_error(CMD, 0, "cannot open '%s': %s", path, strerror(errno));
+        return CLI_EXIT_USAGE;
+    }
+    size_t cap = 1 << 16, len = 0;
+    uint8_t *buf = malloc(cap);
+    for (;;) {
+        if (!buf) {
+            fclose(f);
+            cli_error(CMD, 0, "'%s': out of memory", path);
+            return CLI_EXIT_FAIL;
+        }
+        len += fread(buf + len, 1, cap - len, f);
+        if (len < cap)
+            break;
+        if (cap > ((size_t)1 << 36)) {
+            free(buf);
+            fclose(f);
+            cli_error(CMD, 0, "'%s' is too large for a world file", path);
+            return CLI_EXIT_USAGE;
+        }
+        uint8_t *nb = realloc(buf, cap * 2);
+        if (!nb)
+            free(buf);
+        buf = nb;
+        cap *= 2;
+    }
+    int bad = ferror(f);
+    fclose(f);
+    if (bad) {
+        free(buf);
+        cli_error(CMD, 0, "cannot read '%s'", path);
+        return CLI_EXIT_FAIL;
+    }
+    *out_buf = buf;
+    *out_len = len;
+    return 0;
+}
+
+/* Write buf to path atomically. Returns 1 on success. */
+static int write_atomic(const char *path, const uint8_t *buf, size_t len)
+{
+    size_t pl = strlen(path);
+    char *tmp = malloc(pl + 16);
+    if (!tmp) {
+        cli_error(CMD, 0, "cannot write '%s': out of memory", path);
+        return 0;
+    }
+    memcpy(tmp, path, pl);
+    memcpy(tmp + pl, ".tmp-XXXXXX", 12);
+    int fd = mkstemp(tmp);
+    if (fd < 0) {
+        cli_error(CMD, 0, "cannot create a temporary file next to '%s': %s", path,
+                  strerror(errno));
+        free(tmp);
+        return 0;
+    }
+    size_t done = 0;
+    int err = 0;
+    while (done < len) {
+        ssize_t n = write(fd, buf + done, len - done);
+        if (n < 0) {
+            if (errno == EINTR)
+                continue;
+            err = errno;
+            break;
+        }
+        done += (size_t)n;
+    }
+    if (!err && fsync(fd) != 0)
+        err = errno;
+    if (close(fd) != 0 && !err)
+        err = errno;
+    if (!err && rename(tmp, path) != 0)
+        err = errno;
+    if (err) {
+        unlink(tmp);
+        cli_error(CMD, 0, "cannot write '%s': %s", path, strerror(err));
+        free(tmp);
+        return 0;
+    }
+    free(tmp);
+    /* make the rename durable */
+    char *dir = strdup(path);
+    if (dir) {
+        char *slash = strrchr(dir, '/');
+        const char *d = ".";
+        if (slash) {
+            *slash = '\0';
+            d = slash == dir ? "/" : dir;
+        }
+        int dfd = open(d, O_RDONLY | O_DIRECTORY);
+        if (dfd >= 0) {
+            fsync(dfd);
+            close(dfd);
+        }
+        free(dir);
+    }
+    return 1;
+}
+
+typedef struct world_line {
+    hol_tile tile;
+    int dist;
+    char addr[HOL_TILE_ADDR_MAX];
+} world_line;
+
+static int line_cmp(const void *a, const void *b)
+{
+    const world_line *x = a, *y = b;
+    if (x->dist != y->dist)
+        return x->dist - y->dist;
+    size_t lx = strlen(x->addr), ly = strlen(y->addr);
+    if (lx != ly)
+        return lx < ly ? -1 : 1;
+    return strcmp(x->addr, y->addr);
+}
+
+static const char *gen_error(hol_err err)
+{
+    switch (err) {
+    case HOL_ENOMEM: return "the world store is full (raise --capacity)";
+    case HOL_EBUDGET: return "generation gave up (backtracking budget)";
+    default: return hol_err_str(err);
+    }
+}
+
+static int print_tiles(hol_world *w, hol_tile centre, int radius)
+{
+    size_t cap = 4096, n = 0;
+    world_line *lines = malloc(cap * sizeof *lines);
+    if (!lines) {
+        cli_error(CMD, 0, "out of memory");
+        return CLI_EXIT_FAIL;
+    }
+    lines[n].tile = centre;
+    lines[n].dist = 0;
+    n++;
+    for (size_t q = 0; q < n; q++) {
+        if (lines[q].dist >= radius)
+            continue;
+        for (int d = 0; d < 4; d++) {
+            hol_tile t;
+            if (hol_tile_step(lines[q].tile, d, &t, NULL))
+                continue; /* beyond the reach of tile words */
+            int seen = 0;
+            for (size_t i = 0; i < n && !seen; i++)
+                seen = hol_tile_eq(lines[i].tile, t);
+            if (seen || n >= cap)
+                continue;
+            lines[n].tile = t;
+            lines[n].dist = lines[q].dist + 1;
+            n++;
+        }
+    }
+    for (size_t i = 0; i < n; i++)
+        hol_tile_print(lines[i].tile, lines[i].addr);
+    qsort(lines, n, sizeof *lines, line_cmp);
+    for (size_t i = 0; i < n; i++) {
+        hol_tile_content c;
+        hol_err err = hol_world_get(w, lines[i].tile, &c);
+        if (err) {
+            cli_error(CMD, 0, "tile %s: %s", lines[i].addr, gen_error(err));
+            free(lines);
+            return CLI_EXIT_FAIL;
+        }
+        printf("%s %s %s %d %c%c%c%c\n", lines[i].addr, hol_biome_name(c.biome),
+               hol_object_name(c.object), c.rotation, hol_conn_char(c.conn[0]),
+               hol_conn_char(c.conn[1]), hol_conn_char(c.conn[2]),
+               hol_conn_char(c.conn[3]));
+    }
+    free(lines);
+    return CLI_EXIT_OK;
+}
 
 int cli_cmd_world(int argc, char **argv)
 {
-    (void)argc;
-    (void)argv;
-    cli_error("world", 0, "not implemented yet");
-    return CLI_EXIT_FAIL;
+    if (cli_wants_help(argc, argv)) {
+        fputs(world_usage, stdout);
+        return cli_finish_output(CMD);
+    }
+    world_opts o;
+    if (!parse_args(argc, argv, &o))
+        return CLI_EXIT_USAGE;
+
+    size_t wlen = strlen(o.walk), nsteps = 0, bad = 0;
+    uint8_t *dirs = malloc(wlen + 1);
+    if (!dirs) {
+        cli_error(CMD, 0, "out of memory");
+        return CLI_EXIT_FAIL;
+    }
+    if (hol_walk_parse(o.walk, wlen, dirs, wlen + 1, &nsteps, &bad)) {
+        cli_error(CMD, 0, "--walk: character %zu is not a step (N, E, S or W)",
+                  bad + 1);
+        free(dirs);
+        return CLI_EXIT_USAGE;
+    }
+
+    hol_world_desc desc;
+    memset(&desc, 0, sizeof desc);
+    uint8_t *image = NULL;
+    size_t image_len = 0;
+    if (o.load) {
+        int rs = read_file(o.load, &image, &image_len);
+        if (rs) {
+            free(dirs);
+            return rs;
+        }
+        char msg[200];
+        hol_err err = hol_world_image_desc(image, image_len, &desc, msg, sizeof msg);
+        if (err) {
+            cli_error(CMD, 0, "'%s': %s", o.load, msg);
+            free(image);
+            free(dirs);
+            return CLI_EXIT_USAGE;
+        }
+    } else {
+        desc.seed = o.seed;
+    }
+    if (o.capacity)
+        desc.capacity = o.capacity > desc.capacity ? o.capacity : desc.capacity;
+
+    hol_world *w;
+    hol_err err = hol_world_make(&desc, &w);
+    if (err) {
+        cli_error(CMD, 0, "cannot make the world: %s", hol_err_str(err));
+        free(image);
+        free(dirs);
+        return CLI_EXIT_FAIL;
+    }
+    if (o.load) {
+        char msg[200];
+        err = hol_world_load(w, image, image_len, msg, sizeof msg);
+        free(image);
+        if (err) {
+            cli_error(CMD, 0, "'%s': %s", o.load, msg);
+            hol_world_destroy(w);
+            free(dirs);
+            return CLI_EXIT_USAGE;
+        }
+    }
+
+    int status = CLI_EXIT_OK;
+    hol_room room = hol_world_user(w);
+    err = hol_world_update(w, &room);
+    for (size_t i = 0; !err && i < nsteps; i++) {
+        hol_room next = room;
+        hol_err serr = hol_room_step(&next, dirs[i]);
+        if (serr == HOL_EROOM) {
+            cli_error(CMD, 0, "--walk: step %zu (%c) leaves the room from cell (%d,%d)",
+                      i + 1, hol_dir_to_char(dirs[i]), room.col, room.row);
+            status = CLI_EXIT_USAGE;
+            break;
+        }
+        if (serr) {
+            cli_error(CMD, 0, "--walk: step %zu goes beyond distance %d from O, the "
+                      "reach of tile words", i + 1, HOL_TILE_MAX_DIST);
+            status = CLI_EXIT_USAGE;
+            break;
+        }
+        room = next;
+        err = hol_world_update(w, &room);
+    }
+    free(dirs);
+    if (!status && err) {
+        cli_error(CMD, 0, "generation failed: %s", gen_error(err));
+        status = CLI_EXIT_FAIL;
+    }
+    if (!status && !o.quiet)
+        status = print_tiles(w, room.tile, o.radius);
+    if (!status && o.check) {
+        char msg[256];
+        if (hol_world_check(w, msg, sizeof msg)) {
+            cli_error(CMD, 0, "check failed: %s", msg);
+            status = CLI_EXIT_FAIL;
+        }
+    }
+    if (!status && o.save) {
+        size_t need = hol_world_save_size(w), len = 0;
+        uint8_t *buf = malloc(need);
+        if (!buf) {
+            cli_error(CMD, 0, "cannot save: out of memory");
+            status = CLI_EXIT_FAIL;
+        } else {
+            err = hol_world_save(w, buf, need, &len);
+            if (err) {
+                cli_error(CMD, 0, "cannot save: %s", hol_err_str(err));
+                status = CLI_EXIT_FAIL;
+            } else if (!write_atomic(o.save, buf, len)) {
+                status = CLI_EXIT_FAIL;
+            }
+            free(buf);
+        }
+    }
+    hol_world_destroy(w);
+    int out = cli_finish_output(CMD);
+    return status ? status : out;
 }
