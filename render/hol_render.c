@@ -7,6 +7,7 @@
 #include <string.h>
 #include <time.h>
 
+#include "hol_hud.h"
 #include "hol_mesh.h"
 #include "hol_scene.h"
 
@@ -221,8 +222,8 @@ static hol__item *hol__push(hol_render *r, int pass, uint32_t first, uint32_t co
 }
 
 /* Tile mesh range for t, built once per frame. */
-static int hol__tile_range(hol_render *r, hol_tile t, int bare, uint32_t *first,
-                           uint32_t *count)
+static int hol__tile_range(hol_render *r, hol_tile t, int bare, int pole,
+                           uint32_t *first, uint32_t *count)
 {
     for (int i = 0; i < r->ncache; i++)
         if (hol_tile_eq(r->cache_tile[i], t)) {
@@ -231,7 +232,7 @@ static int hol__tile_range(hol_render *r, hol_tile t, int bare, uint32_t *first,
             return 1;
         }
     uint32_t i0 = r->mesh.ni;
-    hol_scene_tile(r->scene, &r->mesh, t, r->desc.world, bare);
+    hol_scene_tile(r->scene, &r->mesh, t, r->desc.world, bare, pole);
     if (r->mesh.overflow)
         return 0;
     *first = i0;
@@ -314,7 +315,13 @@ static hol_err hol__build(hol_render *r, const hol_frame_desc *f)
         if (br->err)
             continue;
         uint32_t first, count;
-        if (!hol__tile_range(r, br->state.tile, bare, &first, &count))
+        int pole = -1;
+        for (int o = 0; o < f->nobjectives && o < HOL_RENDER_MAX_OBJECTIVES; o++)
+            if (hol_tile_eq(f->objectives[o], br->state.tile)) {
+                pole = o;
+                break;
+            }
+        if (!hol__tile_range(r, br->state.tile, bare, pole, &first, &count))
             return HOL_ENOMEM;
         hol__item *it = hol__push(r, HOL__PASS_TILE, first, count);
         if (!it)
@@ -337,6 +344,14 @@ static hol_err hol__build(hol_render *r, const hol_frame_desc *f)
         m[10] = c;
         m[12] = (float)br->state.col + 0.5f;
         m[14] = (float)br->state.row + 0.5f;
+    }
+    /* pass 3: HUD text and minimap, one draw */
+    if ((f->flags & HOL_RENDER_MINIMAP) && !(f->flags & HOL_RENDER_NO_HUD)) {
+        uint32_t i0 = r->mesh.ni;
+        hol_hud_build(&r->mesh, f, f->cam.width, f->cam.height);
+        hol__item *it = hol__push(r, HOL__PASS_HUD, i0, r->mesh.ni - i0);
+        if (it)
+            it->key = 3u << 24;
     }
     if (r->mesh.overflow)
         return HOL_ENOMEM;
@@ -440,7 +455,9 @@ hol_err hol_render_frame(hol_render *r, const hol_frame_desc *f,
                 glDisable(GL_DEPTH_TEST);
                 glDepthMask(GL_FALSE);
                 glDisable(GL_STENCIL_TEST);
-                glUniform1i(r->u_mode, HOL__MODE_FLAT);
+                glUniformMatrix4fv(r->u_vp, 1, GL_FALSE, ident);
+                glUniformMatrix4fv(r->u_model, 1, GL_FALSE, ident);
+                glUniform1i(r->u_mode, ids ? HOL__MODE_ID : HOL__MODE_FLAT);
                 break;
             }
         }

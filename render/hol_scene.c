@@ -1,14 +1,21 @@
-/* hol_scene.c - procedural meshes for the forest. */
+/* hol_scene.c - procedural low-poly meshes for the forest. */
 #include "hol_scene.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
-#define HOL__TPL_V 4096
-#define HOL__TPL_I 8192
+#include "../core/hol_world.h"
 
-enum { HOL__T_TREE, HOL__T_COUNT };
+#define HOL__TPL_V 2048
+#define HOL__TPL_I 4096
+#define HOL__PI_2 1.5707963267948966f
+
+enum {
+    HOL__T_PINE, HOL__T_BIRCH, HOL__T_OAK, HOL__T_MAPLE, /* = hol_tree_kind */
+    HOL__T_TUFT, HOL__T_FLOWER, HOL__T_ROCK, HOL__T_MUSHROOM, HOL__T_LOG,
+    HOL__T_FLAG, HOL__T_KEY, HOL__T_CHEST, HOL__T_POLE, HOL__T_COUNT
+};
 
 struct hol_scene {
     hol_mesh tpl[HOL__T_COUNT];
@@ -16,15 +23,93 @@ struct hol_scene {
     uint32_t i[HOL__T_COUNT][HOL__TPL_I];
 };
 
-static const uint8_t hol__trunk[3] = {110, 78, 52};
-static const uint8_t hol__leaf[3] = {46, 120, 58};
-static const uint8_t hol__hedge[3] = {38, 96, 44};
+static const uint8_t hol__trunk[3] = {104, 74, 50};
+static const uint8_t hol__hedge[3] = {40, 98, 46};
+static const uint8_t hol__white[3] = {255, 255, 255};
 
 void hol_scene_sky(float out_rgb[3])
 {
     out_rgb[0] = 0.70f;
     out_rgb[1] = 0.82f;
     out_rgb[2] = 0.93f;
+}
+
+static void hol__build_templates(hol_scene *s)
+{
+    hol_mesh *m;
+    /* trees: trunks 3.2 m, taller than any standing eye, so the seam behind
+     * each vertex stays hidden; crowns start above 2.2 m */
+    m = &s->tpl[HOL__T_PINE];
+    hol_mesh_frustum(m, 7, 0.10f, 0.0f, 0.07f, 3.2f, hol__trunk);
+    hol_mesh_frustum(m, 8, 0.80f, 2.2f, 0.0f, 3.9f, (const uint8_t[3]){34, 92, 52});
+    hol_mesh_frustum(m, 8, 0.60f, 3.2f, 0.0f, 4.6f, (const uint8_t[3]){40, 104, 58});
+    hol_mesh_frustum(m, 8, 0.40f, 4.1f, 0.0f, 5.2f, (const uint8_t[3]){46, 116, 64});
+    m = &s->tpl[HOL__T_BIRCH];
+    hol_mesh_frustum(m, 7, 0.09f, 0.0f, 0.06f, 3.6f, (const uint8_t[3]){225, 222, 210});
+    hol_mesh_blob(m, (const float[3]){0, 3.6f, 0}, 0.75f, 1.1f, 0.75f,
+                  (const uint8_t[3]){120, 170, 70});
+    m = &s->tpl[HOL__T_OAK];
+    hol_mesh_frustum(m, 7, 0.13f, 0.0f, 0.10f, 3.2f, hol__trunk);
+    hol_mesh_blob(m, (const float[3]){0, 3.5f, 0}, 1.1f, 0.9f, 1.1f,
+                  (const uint8_t[3]){60, 120, 50});
+    hol_mesh_blob(m, (const float[3]){0.3f, 4.1f, 0.2f}, 0.7f, 0.6f, 0.7f,
+                  (const uint8_t[3]){70, 135, 56});
+    m = &s->tpl[HOL__T_MAPLE];
+    hol_mesh_frustum(m, 7, 0.11f, 0.0f, 0.08f, 3.2f, hol__trunk);
+    hol_mesh_blob(m, (const float[3]){0, 3.6f, 0}, 0.95f, 1.0f, 0.95f,
+                  (const uint8_t[3]){200, 90, 40});
+    /* a grass tuft: three thin blades */
+    m = &s->tpl[HOL__T_TUFT];
+    for (int k = 0; k < 3; k++) {
+        hol_mesh tmp;
+        hol_vertex tv[64];
+        uint32_t ti[128];
+        hol_mesh_init(&tmp, tv, 64, ti, 128);
+        hol_mesh_frustum(&tmp, 3, 0.012f, 0.0f, 0.0f, 0.14f + 0.03f * k,
+                         (const uint8_t[3]){70, 150, 60});
+        hol_place p = {0.02f * (k - 1), 0, 0.015f * (k % 2), 1.1f * k, 1};
+        hol_mesh_append(m, &tmp, p);
+    }
+    m = &s->tpl[HOL__T_FLOWER]; /* white petals: tinted per flower */
+    hol_mesh_frustum(m, 3, 0.008f, 0.0f, 0.006f, 0.22f, (const uint8_t[3]){60, 130, 50});
+    hol_mesh_blob(m, (const float[3]){0, 0.23f, 0}, 0.045f, 0.03f, 0.045f, hol__white);
+    m = &s->tpl[HOL__T_ROCK];
+    hol_mesh_blob(m, (const float[3]){0, 0.06f, 0}, 0.20f, 0.16f, 0.15f,
+                  (const uint8_t[3]){130, 130, 125});
+    hol_mesh_blob(m, (const float[3]){0.14f, 0.03f, 0.08f}, 0.10f, 0.08f, 0.09f,
+                  (const uint8_t[3]){115, 115, 112});
+    m = &s->tpl[HOL__T_MUSHROOM];
+    hol_mesh_frustum(m, 6, 0.025f, 0.0f, 0.02f, 0.10f, (const uint8_t[3]){235, 230, 215});
+    hol_mesh_frustum(m, 8, 0.08f, 0.09f, 0.0f, 0.16f, (const uint8_t[3]){200, 40, 35});
+    /* half a log, lying from the tile centre to its partner edge (-z):
+     * the two halves meet on the shared edge */
+    m = &s->tpl[HOL__T_LOG];
+    hol_mesh_box(m, (const float[3]){-0.13f, 0.0f, -0.5f}, (const float[3]){0.13f, 0.24f, 0.05f},
+                 (const uint8_t[3]){120, 84, 52});
+    hol_mesh_box(m, (const float[3]){-0.10f, 0.02f, 0.05f}, (const float[3]){0.10f, 0.22f, 0.07f},
+                 (const uint8_t[3]){196, 160, 110});
+    m = &s->tpl[HOL__T_FLAG];
+    hol_mesh_frustum(m, 6, 0.02f, 0.0f, 0.02f, 1.4f, (const uint8_t[3]){220, 220, 220});
+    hol_mesh_box(m, (const float[3]){0.02f, 1.05f, -0.01f}, (const float[3]){0.40f, 1.35f, 0.01f},
+                 (const uint8_t[3]){220, 30, 30});
+    m = &s->tpl[HOL__T_KEY];
+    hol_mesh_blob(m, (const float[3]){0, 0.45f, 0}, 0.08f, 0.08f, 0.03f,
+                  (const uint8_t[3]){240, 200, 40});
+    hol_mesh_box(m, (const float[3]){-0.015f, 0.15f, -0.015f}, (const float[3]){0.015f, 0.40f, 0.015f},
+                 (const uint8_t[3]){240, 200, 40});
+    hol_mesh_box(m, (const float[3]){0.015f, 0.17f, -0.012f}, (const float[3]){0.07f, 0.21f, 0.012f},
+                 (const uint8_t[3]){240, 200, 40});
+    hol_mesh_frustum(m, 8, 0.12f, 0.0f, 0.10f, 0.15f, (const uint8_t[3]){150, 150, 150});
+    m = &s->tpl[HOL__T_CHEST];
+    hol_mesh_box(m, (const float[3]){-0.25f, 0, -0.17f}, (const float[3]){0.25f, 0.28f, 0.17f},
+                 (const uint8_t[3]){130, 80, 40});
+    hol_mesh_box(m, (const float[3]){-0.26f, 0.28f, -0.18f}, (const float[3]){0.26f, 0.38f, 0.18f},
+                 (const uint8_t[3]){150, 95, 45});
+    hol_mesh_box(m, (const float[3]){-0.04f, 0.22f, -0.19f}, (const float[3]){0.04f, 0.32f, -0.17f},
+                 (const uint8_t[3]){240, 200, 40});
+    m = &s->tpl[HOL__T_POLE]; /* white: tinted per objective */
+    hol_mesh_frustum(m, 6, 0.035f, 0.0f, 0.035f, 2.6f, hol__white);
+    hol_mesh_blob(m, (const float[3]){0, 2.65f, 0}, 0.09f, 0.09f, 0.09f, hol__white);
 }
 
 hol_err hol_scene_create(hol_scene **out)
@@ -34,12 +119,12 @@ hol_err hol_scene_create(hol_scene **out)
         return HOL_ENOMEM;
     for (int k = 0; k < HOL__T_COUNT; k++)
         hol_mesh_init(&s->tpl[k], s->v[k], HOL__TPL_V, s->i[k], HOL__TPL_I);
-    /* tree: trunk taller than any eye, so the seam behind a vertex stays
-     * hidden, and a two-tier crown */
-    hol_mesh *t = &s->tpl[HOL__T_TREE];
-    hol_mesh_frustum(t, 7, 0.10f, 0.0f, 0.08f, 3.2f, hol__trunk);
-    hol_mesh_frustum(t, 8, 0.75f, 2.2f, 0.0f, 4.0f, hol__leaf);
-    hol_mesh_frustum(t, 8, 0.55f, 3.3f, 0.0f, 4.8f, hol__leaf);
+    hol__build_templates(s);
+    for (int k = 0; k < HOL__T_COUNT; k++)
+        if (s->tpl[k].overflow) {
+            free(s);
+            return HOL_ENOMEM;
+        }
     *out = s;
     return HOL_OK;
 }
@@ -49,53 +134,218 @@ void hol_scene_destroy(hol_scene *s)
     free(s);
 }
 
+/* small deterministic generator for placements inside a tile */
+static uint64_t hol__mix(uint64_t *x)
+{
+    uint64_t z = (*x += 0x9e3779b97f4a7c15ull);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+    return z ^ (z >> 31);
+}
+
+static float hol__unit(uint64_t *x)
+{
+    return (float)(hol__mix(x) >> 40) / 16777216.0f;
+}
+
+/* The tree standing on room vertex (i,j): seen through the branch with the
+ * fewest steps among the cells around the vertex. */
+static int hol__vertex_tree(const hol_view *view, struct hol_world *world, int i,
+                            int j, hol_tree *out)
+{
+    const hol_view_branch *best = NULL;
+    int best_corner = 0;
+    for (int k = 0; k < view->nbranches; k++) {
+        const hol_view_branch *b = &view->branches[k];
+        if (b->err)
+            continue;
+        int c = b->state.col, r = b->state.row, a;
+        /* room corner of the cell: 0 NW (between N and W), 1 SW, 2 SE, 3 NE */
+        if (i == c && j == r)
+            a = 0;
+        else if (i == c && j == r + 1)
+            a = 1;
+        else if (i == c + 1 && j == r + 1)
+            a = 2;
+        else if (i == c + 1 && j == r)
+            a = 3;
+        else
+            continue;
+        if (!best || b->nsteps < best->nsteps) {
+            best = b;
+            best_corner = a;
+        }
+    }
+    if (!best || !world)
+        return 0;
+    return hol_world_tree(hol_world_seed(world), best->state.tile,
+                          (best->state.orient + best_corner) & 3, out) == HOL_OK;
+}
+
 void hol_scene_room(const hol_scene *s, hol_mesh *out, const hol_view *view,
                     struct hol_world *world)
 {
-    (void)view;
-    (void)world;
     for (int j = 0; j <= HOL_ROOM_SIZE; j++)
         for (int i = 0; i <= HOL_ROOM_SIZE; i++) {
-            hol_place p = {(float)i, 0, (float)j, 0.7f * (float)(i * 4 + j), 1};
-            hol_mesh_append(out, &s->tpl[HOL__T_TREE], p);
+            hol_tree tr = {(uint8_t)((i * 7 + j * 3) % 4), (uint8_t)((i + j) % 4)};
+            hol__vertex_tree(view, world, i, j, &tr);
+            float sc = 0.85f + 0.1f * (float)(tr.size & 3);
+            hol_place p = {(float)i, 0, (float)j, 0.7f * (float)(i * 4 + j), sc};
+            hol_mesh_append(out, &s->tpl[tr.kind & 3], p);
         }
-    /* hedges on the boundary, 2 m high, 0.3 m thick, outside the room */
+    /* hedges on the boundary, 2 m high, 0.3 m thick, outside the room,
+     * in slightly varied segments */
     const float h = 2.0f, th = 0.3f, n = (float)HOL_ROOM_SIZE;
-    float boxes[4][6] = {
-        {-th, 0, -th, n + th, h, 0},  /* north */
-        {-th, 0, n, n + th, h, n + th}, /* south */
-        {-th, 0, 0, 0, h, n},         /* west */
-        {n, 0, 0, n + th, h, n},      /* east */
-    };
-    for (int k = 0; k < 4; k++)
-        hol_mesh_box(out, boxes[k], boxes[k] + 3, hol__hedge);
+    for (int side = 0; side < 4; side++)
+        for (int k = 0; k < 6; k++) {
+            float a = k * 0.5f - (k == 0 ? th : 0), b = (k + 1) * 0.5f + (k == 5 ? th : 0);
+            float hh = h + 0.06f * (float)((k * 5 + side * 3) % 4);
+            float lo[3], hi[3];
+            if (side == 0) { /* north */
+                lo[0] = a; lo[2] = -th; hi[0] = b; hi[2] = 0;
+            } else if (side == 1) { /* south */
+                lo[0] = a; lo[2] = n; hi[0] = b; hi[2] = n + th;
+            } else if (side == 2) { /* west */
+                lo[0] = -th; lo[2] = a; hi[0] = 0; hi[2] = b;
+            } else { /* east */
+                lo[0] = n; lo[2] = a; hi[0] = n + th; hi[2] = b;
+            }
+            lo[1] = 0;
+            hi[1] = hh;
+            uint8_t c[3] = {hol__hedge[0], (uint8_t)(hol__hedge[1] + 6 * (k % 3)), hol__hedge[2]};
+            hol_mesh_box(out, lo, hi, c);
+        }
 }
 
-static void hol__hash_rgb(uint64_t h, uint8_t rgb[3])
+static void hol__biome_rgb(int biome, uint64_t h, uint8_t rgb[3])
 {
-    /* grass greens varied by the hash: a plain biome-like tint */
-    static const uint8_t base[4][3] = {
-        {96, 160, 70}, {60, 120, 70}, {80, 140, 110}, {170, 140, 60}};
-    const uint8_t *b = base[h & 3];
-    int dv = (int)((h >> 8) & 31) - 16;
+    static const uint8_t base[HOL_BIOME_COUNT][3] = {
+        {104, 168, 72},  /* meadow */
+        {70, 116, 62},   /* pine */
+        {78, 136, 112},  /* wetland */
+        {172, 142, 66},  /* autumn */
+    };
+    const uint8_t *b = base[biome < HOL_BIOME_COUNT ? biome : 0];
+    int dv = (int)((h >> 8) & 15) - 8;
     for (int k = 0; k < 3; k++) {
         int v = b[k] + dv;
         rgb[k] = (uint8_t)(v < 0 ? 0 : v > 255 ? 255 : v);
     }
 }
 
-void hol_scene_tile(const hol_scene *s, hol_mesh *out, hol_tile t,
-                    struct hol_world *world, int bare)
+/* A floor strip (water) from the tile centre to edge d. */
+static void hol__creek_arm(hol_mesh *out, int d, const uint8_t rgb[3])
 {
-    (void)s;
-    (void)world;
-    (void)bare;
+    static const float w = 0.13f;
+    float x0, z0, x1, z1;
+    switch (d & 3) {
+    case 0: x0 = -w; x1 = w; z0 = -0.5f; z1 = 0; break;
+    case 1: x0 = -0.5f; x1 = 0; z0 = -w; z1 = w; break;
+    case 2: x0 = -w; x1 = w; z0 = 0; z1 = 0.5f; break;
+    default: x0 = 0; x1 = 0.5f; z0 = -w; z1 = w; break;
+    }
+    hol_mesh_quad_y(out, x0, z0, x1, z1, 0.003f, rgb, HOL_MESH_FLOOR);
+}
+
+void hol_scene_tile(const hol_scene *s, hol_mesh *out, hol_tile t,
+                    struct hol_world *world, int bare, int pole)
+{
     uint64_t h = hol_tile_hash(t);
+    hol_tile_content c;
+    memset(&c, 0, sizeof c);
+    int have = world && hol_world_get(world, t, &c) == HOL_OK;
+    if (!have) {
+        c.biome = (uint8_t)(h % HOL_BIOME_COUNT);
+        c.object = HOL_OBJ_NONE;
+        c.log_partner = -1;
+    }
     uint8_t rgb[3];
-    hol__hash_rgb(h, rgb);
+    hol__biome_rgb(c.biome, h, rgb);
     hol_mesh_quad_y(out, -0.5f, -0.5f, 0.5f, 0.5f, 0.0f, rgb, HOL_MESH_FLOOR);
-    /* heading marker: a darker strip along the heading edge (-z) */
-    uint8_t dark[3] = {(uint8_t)(rgb[0] * 3 / 5), (uint8_t)(rgb[1] * 3 / 5),
-                       (uint8_t)(rgb[2] * 3 / 5)};
-    hol_mesh_quad_y(out, -0.2f, -0.45f, 0.2f, -0.35f, 0.002f, dark, HOL_MESH_FLOOR);
+    if (!have) {
+        /* placeholder: a darker strip on the heading edge shows the frame */
+        uint8_t dark[3] = {(uint8_t)(rgb[0] * 3 / 5), (uint8_t)(rgb[1] * 3 / 5),
+                           (uint8_t)(rgb[2] * 3 / 5)};
+        hol_mesh_quad_y(out, -0.2f, -0.45f, 0.2f, -0.35f, 0.002f, dark, HOL_MESH_FLOOR);
+    }
+    /* water is ground too: creeks run to the middle of their edges, so they
+     * continue across every edge whatever the neighbour's frame */
+    static const uint8_t water[3] = {60, 120, 190};
+    int ncreek = 0;
+    for (int d = 0; d < 4; d++)
+        if (c.conn[d] == HOL_CONN_CREEK) {
+            hol__creek_arm(out, d, water);
+            ncreek++;
+        }
+    if (ncreek || c.object == HOL_OBJ_POOL) {
+        float r = c.object == HOL_OBJ_POOL ? 0.28f : 0.13f;
+        hol_mesh_quad_y(out, -r, -r, r, r, 0.004f, water, HOL_MESH_FLOOR);
+    }
+    if (bare)
+        return;
+    uint64_t rs = h ^ 0x5eedull;
+    float rot = (float)(c.rotation & 3) * HOL__PI_2;
+    hol_place p = {0, 0, 0, rot, 1};
+    switch (c.object) {
+    case HOL_OBJ_GRASS:
+    case HOL_OBJ_NONE: {
+        int n = c.object == HOL_OBJ_GRASS ? 14 : 4;
+        for (int k = 0; k < n; k++) {
+            hol_place q = {hol__unit(&rs) * 0.8f - 0.4f, 0, hol__unit(&rs) * 0.8f - 0.4f,
+                           hol__unit(&rs) * 6.28f, 0.8f + 0.5f * hol__unit(&rs)};
+            hol_mesh_append(out, &s->tpl[HOL__T_TUFT], q);
+        }
+        break;
+    }
+    case HOL_OBJ_FLOWERS: {
+        static const uint8_t cols[4][3] = {
+            {240, 240, 250}, {250, 210, 60}, {220, 80, 150}, {140, 110, 230}};
+        for (int k = 0; k < 12; k++) {
+            hol_place q = {hol__unit(&rs) * 0.7f - 0.35f, 0, hol__unit(&rs) * 0.7f - 0.35f,
+                           0, 0.8f + 0.4f * hol__unit(&rs)};
+            hol_mesh_append_tinted(out, &s->tpl[HOL__T_FLOWER], q,
+                                   cols[hol__mix(&rs) & 3]);
+        }
+        break;
+    }
+    case HOL_OBJ_LOG:
+        p.yaw = (float)((c.log_partner >= 0 ? c.log_partner : c.rotation) & 3) * HOL__PI_2;
+        hol_mesh_append(out, &s->tpl[HOL__T_LOG], p);
+        break;
+    case HOL_OBJ_SPRING: {
+        for (int k = 0; k < 5; k++) {
+            float a = k * 1.2566f;
+            hol_place q = {0.2f * cosf(a), 0, 0.2f * sinf(a), a, 0.35f};
+            hol_mesh_append(out, &s->tpl[HOL__T_ROCK], q);
+        }
+        break;
+    }
+    case HOL_OBJ_ROCK:
+        hol_mesh_append(out, &s->tpl[HOL__T_ROCK], p);
+        break;
+    case HOL_OBJ_MUSHROOM:
+        for (int k = 0; k < 5; k++) {
+            hol_place q = {hol__unit(&rs) * 0.6f - 0.3f, 0, hol__unit(&rs) * 0.6f - 0.3f,
+                           0, 0.7f + 0.6f * hol__unit(&rs)};
+            hol_mesh_append(out, &s->tpl[HOL__T_MUSHROOM], q);
+        }
+        break;
+    case HOL_OBJ_FLAG:
+        hol_mesh_append(out, &s->tpl[HOL__T_FLAG], p);
+        break;
+    case HOL_OBJ_KEY:
+        hol_mesh_append(out, &s->tpl[HOL__T_KEY], p);
+        break;
+    case HOL_OBJ_CHEST:
+        hol_mesh_append(out, &s->tpl[HOL__T_CHEST], p);
+        break;
+    default:
+        break;
+    }
+    if (pole >= 0) {
+        static const uint8_t pc[4][3] = {
+            {255, 60, 40}, {40, 120, 255}, {250, 220, 40}, {200, 60, 220}};
+        hol_place q = {0.3f, 0, 0.3f, 0, 1};
+        hol_mesh_append_tinted(out, &s->tpl[HOL__T_POLE], q, pc[pole & 3]);
+    }
 }

@@ -32,9 +32,10 @@ void hol_scene_destroy(hol_scene *s);
 void hol_scene_room(const hol_scene *s, hol_mesh *out, const hol_view *view,
                     struct hol_world *world);
 
-/* The mesh of tile t in its own frame; bare: the ground only. */
+/* The mesh of tile t in its own frame; bare: the ground only. pole >= 0
+ * adds a tall guide pole of colour pole (objective index). */
 void hol_scene_tile(const hol_scene *s, hol_mesh *out, hol_tile t,
-                    struct hol_world *world, int bare);
+                    struct hol_world *world, int bare, int pole);
 
 /* Sky / fog colour (linear 0..1). */
 void hol_scene_sky(float out_rgb[3]);

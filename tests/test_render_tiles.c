@@ -30,6 +30,7 @@
 
 #include "../core/hol_room.h"
 #include "../core/hol_tile.h"
+#include "../core/hol_world.h"
 #include "../platform/osmesa/hol_osmesa.h"
 #include "../render/hol_render.h"
 
@@ -61,6 +62,7 @@ static const view_case cases[] = {
 
 static hol_osmesa gl;
 static hol_render *rnd;
+static hol_world *world;
 
 static int setup(void **state)
 {
@@ -70,13 +72,23 @@ static int setup(void **state)
         fprintf(stderr, "%s\n", msg);
         return -1;
     }
-    return hol_render_create(NULL, &rnd) ? -1 : 0;
+    hol_world_desc wd;
+    memset(&wd, 0, sizeof wd);
+    wd.seed = 7;
+    wd.capacity = 1u << 14;
+    if (hol_world_make(&wd, &world))
+        return -1;
+    hol_render_desc rd;
+    memset(&rd, 0, sizeof rd);
+    rd.world = world;
+    return hol_render_create(&rd, &rnd) ? -1 : 0;
 }
 
 static int teardown(void **state)
 {
     (void)state;
     hol_render_destroy(rnd);
+    hol_world_destroy(world);
     hol_osmesa_destroy(&gl);
     return 0;
 }

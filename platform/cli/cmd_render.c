@@ -6,8 +6,10 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "../../core/hol_nav.h"
 #include "../../core/hol_room.h"
 #include "../../core/hol_tile.h"
+#include "../../core/hol_world.h"
 #include "../../render/hol_png.h"
 #include "../../render/hol_render.h"
 #include "../osmesa/hol_osmesa.h"
@@ -17,7 +19,7 @@ static const char *const render_usage =
     "usage: holonomy render [--walk W] [--eye X,Y,Z] [--yaw DEG] [--pitch DEG]\n"
     "                       [--size WxH] [--out FILE.png] [--tile-ids FILE]\n"
     "                       [--stats] [--euclidean] [--bare] [--fov DEG]\n"
-    "                       [--frames N]\n"
+    "                       [--frames N] [--seed N] [--hud] [--target ADDR]\n"
     "\n"
     "Render what the user sees, headless (OSMesa), and write a PNG.\n"
     "\n"
@@ -38,6 +40,10 @@ static const char *const render_usage =
     "  --euclidean     the same nine cells as a flat room, no portals\n"
     "  --bare          floors only (no trees, hedges, props): for tests\n"
     "  --frames N      render N times (stats: median CPU ms), default 1\n"
+    "  --seed N        world seed (default 1): the forest's content\n"
+    "  --hud           draw the HUD text and the Poincare minimap\n"
+    "  --target ADDR   an objective tile (repeatable, up to 8): guide pole,\n"
+    "                  minimap marker, hot-cold colours\n"
     "\n"
     "Floor outside the 3 x 3 room is never shown: 2 m hedges stand on the\n"
     "room boundary. At least one of --out, --tile-ids, --stats is needed.\n"
@@ -108,7 +114,9 @@ int cli_cmd_render(int argc, char **argv)
     const char *walk = "-", *eye_s = NULL, *out = NULL, *ids_path = NULL;
     double yaw = 0, pitch = -30, fov = 90;
     long w = 640, h = 480, frames = 1;
-    int stats = 0, flags = HOL_RENDER_NO_HUD;
+    int stats = 0, flags = HOL_RENDER_NO_HUD, ntargets = 0;
+    unsigned long long seed = 1;
+    hol_tile targets[HOL_RENDER_MAX_OBJECTIVES];
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         const char *val = i + 1 < argc ? argv[i + 1] : NULL;
@@ -116,7 +124,8 @@ int cli_cmd_render(int argc, char **argv)
                     !strcmp(a, "--yaw") || !strcmp(a, "--pitch") ||
                     !strcmp(a, "--size") || !strcmp(a, "--out") ||
                     !strcmp(a, "--tile-ids") || !strcmp(a, "--fov") ||
-                    !strcmp(a, "--frames");
+                    !strcmp(a, "--frames") || !strcmp(a, "--seed") ||
+                    !strcmp(a, "--target");
         if (takes && !val) {
             cli_error(cmd, 0, "%s needs a value; see 'holonomy render --help'", a);
             return CLI_EXIT_USAGE;
@@ -165,6 +174,27 @@ int cli_cmd_render(int argc, char **argv)
                 cli_error(cmd, 0, "--size '%.40s' is not WxH with sides 1..8192", val);
                 return CLI_EXIT_USAGE;
             }
+        } else if (!strcmp(a, "--seed")) {
+            char *end;
+            errno = 0;
+            seed = strtoull(val, &end, 10);
+            if (end == val || *end || errno || val[0] == '-') {
+                cli_error(cmd, 0, "--seed '%.40s' is not an unsigned integer", val);
+                return CLI_EXIT_USAGE;
+            }
+        } else if (!strcmp(a, "--target")) {
+            if (ntargets >= HOL_RENDER_MAX_OBJECTIVES) {
+                cli_error(cmd, 0, "more than %d --target options", HOL_RENDER_MAX_OBJECTIVES);
+                return CLI_EXIT_USAGE;
+            }
+            if (hol_tile_resolve(val, -1, &targets[ntargets])) {
+                cli_error(cmd, 0, "--target '%.40s' is not a tile address", val);
+                return CLI_EXIT_USAGE;
+            }
+            ntargets++;
+        } else if (!strcmp(a, "--hud")) {
+            flags &= ~HOL_RENDER_NO_HUD;
+            flags |= HOL_RENDER_MINIMAP;
         } else if (!strcmp(a, "--stats"))
             stats = 1;
         else if (!strcmp(a, "--euclidean"))
@@ -248,6 +278,10 @@ int cli_cmd_render(int argc, char **argv)
     fd.cam.fovy_deg = fov;
     fd.cam.width = (int)w;
     fd.cam.height = (int)h;
+    fd.nobjectives = ntargets;
+    memcpy(fd.objectives, targets, sizeof targets);
+    fd.objective_text = ntargets ? "reach the guide pole" : NULL;
+    fd.steps_taken = (int)nd;
 
     /* GL */
     char msg[256];
@@ -261,9 +295,37 @@ int cli_cmd_render(int argc, char **argv)
     uint8_t *rgba = NULL;
     growbuf gb = {0};
     double *cpu = NULL;
+    hol_world *world = NULL;
+    hol_world_desc wd;
+    memset(&wd, 0, sizeof wd);
+    wd.seed = seed;
+    wd.capacity = 1u << 14;
+    err = hol_world_make(&wd, &world);
+    if (!err)
+        err = hol_world_update(world, &user);
+    if (err) {
+        cli_error(cmd, 0, "cannot generate the world: %s", hol_err_str(err));
+        status = CLI_EXIT_FAIL;
+        goto done;
+    }
+    /* shortest-path overlay for the minimap: to the first target */
+    static uint8_t path[HOL_NAV_WALK_MAX];
+    if (ntargets > 0 && (flags & HOL_RENDER_MINIMAP)) {
+        hol_nav *nav = NULL;
+        hol_nav_desc navd;
+        memset(&navd, 0, sizeof navd);
+        hol_nav_result nr;
+        if (!hol_nav_create(&navd, &nav) &&
+            !hol_nav_find(nav, &user, targets[0], 200000, path, sizeof path, &nr)) {
+            fd.path = path;
+            fd.npath = nr.len;
+        }
+        hol_nav_destroy(nav);
+    }
     hol_render_desc rd;
     memset(&rd, 0, sizeof rd);
     rd.max_width = rd.max_height = 8192;
+    rd.world = world;
     err = hol_render_create(&rd, &r);
     if (err) {
         cli_error(cmd, 0, "cannot initialise the renderer: %s", hol_err_str(err));
@@ -343,6 +405,7 @@ done:
     free(cpu);
     free(rgba);
     hol_render_destroy(r);
+    hol_world_destroy(world);
     hol_osmesa_destroy(&gl);
     int o = cli_finish_output(cmd);
     return status ? status : o;

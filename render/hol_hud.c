@@ -1,0 +1,311 @@
+/* hol_hud.c - HUD text and the Poincare minimap. */
+#include "hol_hud.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "../core/hol_hyper.h"
+#include "../core/hol_nav.h"
+
+#define HOL__PI 3.14159265358979323846
+
+/* 5x7 glyphs, 7 rows, bit 4 is the leftmost column. */
+static const char hol__chars[] = " 0123456789ABCDEFGHIJKLMNOPQRSTUVWXYZ:.-/flr";
+static const uint8_t hol__font[][7] = {
+    {0, 0, 0, 0, 0, 0, 0},
+    {0x0E, 0x11, 0x13, 0x15, 0x19, 0x11, 0x0E}, {0x04, 0x0C, 0x04, 0x04, 0x04, 0x04, 0x0E},
+    {0x0E, 0x11, 0x01, 0x02, 0x04, 0x08, 0x1F}, {0x1F, 0x02, 0x04, 0x02, 0x01, 0x11, 0x0E},
+    {0x02, 0x06, 0x0A, 0x12, 0x1F, 0x02, 0x02}, {0x1F, 0x10, 0x1E, 0x01, 0x01, 0x11, 0x0E},
+    {0x06, 0x08, 0x10, 0x1E, 0x11, 0x11, 0x0E}, {0x1F, 0x01, 0x02, 0x04, 0x08, 0x08, 0x08},
+    {0x0E, 0x11, 0x11, 0x0E, 0x11, 0x11, 0x0E}, {0x0E, 0x11, 0x11, 0x0F, 0x01, 0x02, 0x0C},
+    {0x0E, 0x11, 0x11, 0x1F, 0x11, 0x11, 0x11}, {0x1E, 0x11, 0x11, 0x1E, 0x11, 0x11, 0x1E},
+    {0x0E, 0x11, 0x10, 0x10, 0x10, 0x11, 0x0E}, {0x1C, 0x12, 0x11, 0x11, 0x11, 0x12, 0x1C},
+    {0x1F, 0x10, 0x10, 0x1E, 0x10, 0x10, 0x1F}, {0x1F, 0x10, 0x10, 0x1E, 0x10, 0x10, 0x10},
+    {0x0E, 0x11, 0x10, 0x17, 0x11, 0x11, 0x0F}, {0x11, 0x11, 0x11, 0x1F, 0x11, 0x11, 0x11},
+    {0x0E, 0x04, 0x04, 0x04, 0x04, 0x04, 0x0E}, {0x07, 0x02, 0x02, 0x02, 0x02, 0x12, 0x0C},
+    {0x11, 0x12, 0x14, 0x18, 0x14, 0x12, 0x11}, {0x10, 0x10, 0x10, 0x10, 0x10, 0x10, 0x1F},
+    {0x11, 0x1B, 0x15, 0x15, 0x11, 0x11, 0x11}, {0x11, 0x11, 0x19, 0x15, 0x13, 0x11, 0x11},
+    {0x0E, 0x11, 0x11, 0x11, 0x11, 0x11, 0x0E}, {0x1E, 0x11, 0x11, 0x1E, 0x10, 0x10, 0x10},
+    {0x0E, 0x11, 0x11, 0x11, 0x15, 0x12, 0x0D}, {0x1E, 0x11, 0x11, 0x1E, 0x14, 0x12, 0x11},
+    {0x0F, 0x10, 0x10, 0x0E, 0x01, 0x01, 0x1E}, {0x1F, 0x04, 0x04, 0x04, 0x04, 0x04, 0x04},
+    {0x11, 0x11, 0x11, 0x11, 0x11, 0x11, 0x0E}, {0x11, 0x11, 0x11, 0x11, 0x11, 0x0A, 0x04},
+    {0x11, 0x11, 0x11, 0x15, 0x15, 0x15, 0x0A}, {0x11, 0x11, 0x0A, 0x04, 0x0A, 0x11, 0x11},
+    {0x11, 0x11, 0x11, 0x0A, 0x04, 0x04, 0x04}, {0x1F, 0x01, 0x02, 0x04, 0x08, 0x10, 0x1F},
+    {0x00, 0x0C, 0x0C, 0x00, 0x0C, 0x0C, 0x00}, {0, 0, 0, 0, 0, 0x0C, 0x0C},
+    {0, 0, 0, 0x1F, 0, 0, 0}, {0, 0x01, 0x02, 0x04, 0x08, 0x10, 0},
+    {0x06, 0x09, 0x08, 0x1C, 0x08, 0x08, 0x08}, {0x0C, 0x04, 0x04, 0x04, 0x04, 0x04, 0x0E},
+    {0, 0, 0x16, 0x19, 0x10, 0x10, 0x10},
+};
+static const uint8_t hol__box[7] = {0x1F, 0x11, 0x11, 0x11, 0x11, 0x11, 0x1F};
+
+typedef struct hol__px {
+    hol_mesh *m;
+    int w, h;
+} hol__px;
+
+static void hol__v(hol__px *p, float x, float y, const uint8_t rgb[3])
+{
+    hol_vertex *v = &p->m->v[p->m->nv++];
+    memset(v, 0, sizeof *v);
+    v->pos[0] = 2.0f * x / (float)p->w - 1.0f;
+    v->pos[1] = 1.0f - 2.0f * y / (float)p->h;
+    v->rgba[0] = rgb[0];
+    v->rgba[1] = rgb[1];
+    v->rgba[2] = rgb[2];
+    v->rgba[3] = HOL_MESH_PROP;
+}
+
+static void hol__rect(hol__px *p, float x0, float y0, float x1, float y1,
+                      const uint8_t rgb[3])
+{
+    int64_t b = hol_mesh_reserve(p->m, 4, 6);
+    if (b < 0)
+        return;
+    hol__v(p, x0, y0, rgb);
+    hol__v(p, x1, y0, rgb);
+    hol__v(p, x1, y1, rgb);
+    hol__v(p, x0, y1, rgb);
+    uint32_t u = (uint32_t)b, t[6] = {u, u + 1, u + 2, u, u + 2, u + 3};
+    memcpy(p->m->idx + p->m->ni, t, sizeof t);
+    p->m->ni += 6;
+}
+
+/* A convex polygon (pixel coordinates) as a fan. */
+static void hol__poly(hol__px *p, const float (*xy)[2], int n, const uint8_t rgb[3])
+{
+    if (n < 3)
+        return;
+    int64_t b = hol_mesh_reserve(p->m, (uint32_t)n, (uint32_t)(3 * (n - 2)));
+    if (b < 0)
+        return;
+    for (int i = 0; i < n; i++)
+        hol__v(p, xy[i][0], xy[i][1], rgb);
+    for (int i = 1; i + 1 < n; i++) {
+        p->m->idx[p->m->ni++] = (uint32_t)b;
+        p->m->idx[p->m->ni++] = (uint32_t)b + (uint32_t)i;
+        p->m->idx[p->m->ni++] = (uint32_t)b + (uint32_t)i + 1;
+    }
+}
+
+static void hol__segment(hol__px *p, float x0, float y0, float x1, float y1, float th,
+                         const uint8_t rgb[3])
+{
+    float dx = x1 - x0, dy = y1 - y0, l = sqrtf(dx * dx + dy * dy);
+    if (l <= 0)
+        return;
+    float nx = -dy / l * th / 2, ny = dx / l * th / 2;
+    float q[4][2] = {{x0 + nx, y0 + ny}, {x1 + nx, y1 + ny}, {x1 - nx, y1 - ny},
+                     {x0 - nx, y0 - ny}};
+    hol__poly(p, (const float(*)[2])q, 4, rgb);
+}
+
+int hol_hud_text(hol_mesh *out, const char *s, float x, float y, float scale,
+                 const uint8_t rgb[3], int w, int h)
+{
+    hol__px p = {out, w, h};
+    float x0 = x;
+    for (; *s; s++) {
+        int c = (unsigned char)*s;
+        if (c >= 'a' && c <= 'z' && c != 'f' && c != 'l' && c != 'r')
+            c -= 32;
+        const char *at = c ? strchr(hol__chars, c) : NULL;
+        const uint8_t *g = at ? hol__font[at - hol__chars] : hol__box;
+        for (int r = 0; r < 7; r++)
+            for (int k = 0; k < 5; k++)
+                if (g[r] & (0x10 >> k))
+                    hol__rect(&p, x + k * scale, y + r * scale, x + (k + 1) * scale,
+                              y + (r + 1) * scale, rgb);
+        x += 6 * scale;
+    }
+    return (int)(x - x0);
+}
+
+/* Hot-cold colour: red at the objective, through yellow, to blue far. */
+static void hol__hot(int hot, uint8_t rgb[3])
+{
+    if (hot < 0) {
+        rgb[0] = 90;
+        rgb[1] = 130;
+        rgb[2] = 90;
+        return;
+    }
+    float t = hot >= 6 ? 1.0f : (float)hot / 6.0f;
+    float r = t < 0.5f ? 1.0f : 2.0f * (1.0f - t);
+    float gch = t < 0.5f ? 0.3f + 1.2f * t : 0.9f - 1.2f * (t - 0.5f);
+    float b = t < 0.5f ? 0.15f : 0.15f + 1.7f * (t - 0.5f);
+    rgb[0] = (uint8_t)(40 + 200 * r);
+    rgb[1] = (uint8_t)(40 + 180 * (gch < 0 ? 0 : gch));
+    rgb[2] = (uint8_t)(40 + 200 * (b > 1 ? 1 : b));
+}
+
+/* Point of tile-local hyperboloid coordinates (x, y, w) under frame m, to
+ * minimap pixels. */
+static void hol__map(const double m[9], const double q[3], float cx, float cy, float rad,
+                     float out[2])
+{
+    double p[3];
+    for (int i = 0; i < 3; i++)
+        p[i] = m[3 * i] * q[0] + m[3 * i + 1] * q[1] + m[3 * i + 2] * q[2];
+    double d[2];
+    hol_hyper_to_disk(p, d);
+    out[0] = cx + (float)(d[0] * rad);
+    out[1] = cy - (float)(d[1] * rad);
+}
+
+static void hol__minimap(hol__px *p, const hol_frame_desc *f)
+{
+    int w = p->w, h = p->h;
+    float rad = 0.3f * (float)(w < h ? w : h), cx = (float)w - rad - 0.04f * (float)w,
+          cy = (float)h - rad - 0.04f * (float)h;
+    static const uint8_t rim[3] = {20, 24, 30}, bg[3] = {200, 205, 210};
+    float disk[48][2];
+    for (int i = 0; i < 48; i++) {
+        double a = 2 * HOL__PI * i / 48;
+        disk[i][0] = cx + (rad + 2) * (float)cos(a);
+        disk[i][1] = cy + (rad + 2) * (float)sin(a);
+    }
+    hol__poly(p, (const float(*)[2])disk, 48, rim);
+    for (int i = 0; i < 48; i++) {
+        double a = 2 * HOL__PI * i / 48;
+        disk[i][0] = cx + rad * (float)cos(a);
+        disk[i][1] = cy + rad * (float)sin(a);
+    }
+    hol__poly(p, (const float(*)[2])disk, 48, bg);
+    /* tiles: geodesic squares (corners at circumradius acosh(cot(pi/5)),
+     * edges subdivided so they bend like the disk's geodesics) */
+    hol_nav_cell cells[512];
+    size_t n = 0;
+    int nobj = f->nobjectives < HOL_RENDER_MAX_OBJECTIVES ? f->nobjectives : HOL_RENDER_MAX_OBJECTIVES;
+    if (hol_nav_field(&f->user, HOL_HUD_MAP_RADIUS, f->objectives, (size_t)(nobj > 0 ? nobj : 0),
+                      cells, sizeof cells / sizeof cells[0], &n))
+        n = 0;
+    double rho = acosh(1.0 / tan(HOL__PI / 5)), shr = sinh(rho), chr = cosh(rho);
+    double corner[4][3];
+    for (int k = 0; k < 4; k++) {
+        double a = HOL__PI / 4 + k * HOL__PI / 2;
+        corner[k][0] = shr * cos(a);
+        corner[k][1] = shr * sin(a);
+        corner[k][2] = chr;
+    }
+    for (size_t i = 0; i < n; i++) {
+        double m[9];
+        if (hol_hyper_frame(f->user.tile, f->user.orient, cells[i].tile, m))
+            continue;
+        uint8_t col[3];
+        hol__hot(cells[i].hot, col);
+        float q[16][2];
+        int nq = 0;
+        for (int k = 0; k < 4; k++)
+            for (int s = 0; s < 4; s++) {
+                /* point s/4 along the geodesic corner k -> k+1 */
+                double t = s / 4.0, pt[3];
+                for (int j = 0; j < 3; j++)
+                    pt[j] = (1 - t) * corner[k][j] + t * corner[(k + 1) & 3][j];
+                double nn = sqrt(pt[2] * pt[2] - pt[0] * pt[0] - pt[1] * pt[1]);
+                for (int j = 0; j < 3; j++)
+                    pt[j] /= nn;
+                hol__map(m, pt, cx, cy, rad * 0.985f, q[nq++]);
+            }
+        /* shrink slightly towards the centre for visible seams */
+        float mx = 0, my = 0;
+        for (int k = 0; k < nq; k++) {
+            mx += q[k][0] / nq;
+            my += q[k][1] / nq;
+        }
+        for (int k = 0; k < nq; k++) {
+            q[k][0] = mx + 0.9f * (q[k][0] - mx);
+            q[k][1] = my + 0.9f * (q[k][1] - my);
+        }
+        hol__poly(p, (const float(*)[2])q, nq, col);
+    }
+    static const double origin[3] = {0, 0, 1};
+    /* shortest-path overlay: tile centres along the room walk */
+    hol_room st = f->user;
+    float prev[2] = {cx, cy};
+    static const uint8_t pathc[3] = {250, 250, 250};
+    for (int i = 0; i < f->npath && f->path; i++) {
+        if (hol_room_step(&st, f->path[i]))
+            break;
+        double m[9];
+        if (hol_hyper_frame(f->user.tile, f->user.orient, st.tile, m))
+            break;
+        float c[2];
+        hol__map(m, origin, cx, cy, rad * 0.985f, c);
+        hol__segment(p, prev[0], prev[1], c[0], c[1], rad * 0.035f + 1, pathc);
+        prev[0] = c[0];
+        prev[1] = c[1];
+    }
+    /* objectives: diamonds on the map, arrows on the rim when off it */
+    static const uint8_t objc[3] = {255, 220, 40};
+    for (int o = 0; o < nobj; o++) {
+        double m[9], ang = 0, dist = 0;
+        int on = 0;
+        float c[2] = {cx, cy};
+        if (!hol_hyper_frame(f->user.tile, f->user.orient, f->objectives[o], m)) {
+            double pc[3] = {m[2], m[5], m[8]}, d[2];
+            hol_hyper_to_disk(pc, d);
+            on = hol_tile_dist(f->user.tile, f->objectives[o]) <= HOL_HUD_MAP_RADIUS;
+            c[0] = cx + (float)(d[0] * rad * 0.985);
+            c[1] = cy - (float)(d[1] * rad * 0.985);
+        }
+        if (on) {
+            float s = rad * 0.07f + 1.5f;
+            float dq[4][2] = {{c[0], c[1] - s}, {c[0] + s, c[1]}, {c[0], c[1] + s}, {c[0] - s, c[1]}};
+            hol__poly(p, (const float(*)[2])dq, 4, rim);
+            float s2 = s * 0.65f;
+            float dq2[4][2] = {{c[0], c[1] - s2}, {c[0] + s2, c[1]}, {c[0], c[1] + s2}, {c[0] - s2, c[1]}};
+            hol__poly(p, (const float(*)[2])dq2, 4, objc);
+        } else if (!hol_nav_direction(&f->user, f->objectives[o], &ang, &dist)) {
+            /* angle counter-clockwise from room north: map direction (-sin, cos) */
+            float ux = -(float)sin(ang), uy = -(float)cos(ang); /* pixel y down */
+            float tipx = cx + ux * (rad + 0.10f * rad), tipy = cy + uy * (rad + 0.10f * rad);
+            float bx = cx + ux * (rad - 0.06f * rad), by = cy + uy * (rad - 0.06f * rad);
+            float s = 0.09f * rad + 1;
+            float tri[3][2] = {{tipx, tipy}, {bx - uy * s, by + ux * s}, {bx + uy * s, by - ux * s}};
+            hol__poly(p, (const float(*)[2])tri, 3, objc);
+        }
+    }
+    /* the user: an arrow at the centre pointing along the view yaw */
+    double yaw = f->cam.yaw_deg * HOL__PI / 180;
+    float ux = -(float)sin(yaw), uy = -(float)cos(yaw), s = 0.12f * rad + 2;
+    float arrow[4][2] = {{cx + ux * s, cy + uy * s},
+                         {cx - ux * s * 0.6f - uy * s * 0.6f, cy - uy * s * 0.6f + ux * s * 0.6f},
+                         {cx - ux * s * 0.25f, cy - uy * s * 0.25f},
+                         {cx - ux * s * 0.6f + uy * s * 0.6f, cy - uy * s * 0.6f - ux * s * 0.6f}};
+    static const uint8_t userc[3] = {20, 20, 20};
+    float t1[3][2] = {{arrow[0][0], arrow[0][1]}, {arrow[1][0], arrow[1][1]}, {arrow[2][0], arrow[2][1]}};
+    float t2[3][2] = {{arrow[0][0], arrow[0][1]}, {arrow[2][0], arrow[2][1]}, {arrow[3][0], arrow[3][1]}};
+    hol__poly(p, (const float(*)[2])t1, 3, userc);
+    hol__poly(p, (const float(*)[2])t2, 3, userc);
+}
+
+void hol_hud_build(hol_mesh *out, const hol_frame_desc *f, int w, int h)
+{
+    hol__px p = {out, w, h};
+    hol__minimap(&p, f);
+    float sc = (float)(h >= 160 ? h / 160 : 1);
+    char lines[4][96];
+    char addr[HOL_TILE_ADDR_MAX];
+    hol_tile_print(f->user.tile, addr);
+    int nl = 0;
+    if (f->objective_text) {
+        snprintf(lines[nl], sizeof lines[0], "%.40s", f->objective_text);
+        for (char *c = lines[nl]; *c; c++)
+            if (*c >= 'a' && *c <= 'z')
+                *c = (char)(*c - 32); /* prose in capitals: f, l, r are for addresses */
+        nl++;
+    }
+    snprintf(lines[nl++], sizeof lines[0], "STEPS %d", f->steps_taken);
+    snprintf(lines[nl++], sizeof lines[0], "TILE %.40s", addr);
+    long t = (long)(f->time_s > 0 ? f->time_s : 0);
+    snprintf(lines[nl++], sizeof lines[0], "TIME %ld:%02ld", t / 60, t % 60);
+    size_t longest = 0;
+    for (int i = 0; i < nl; i++)
+        longest = strlen(lines[i]) > longest ? strlen(lines[i]) : longest;
+    static const uint8_t panel[3] = {24, 28, 34}, text[3] = {240, 240, 230};
+    float m = 3 * sc;
+    hol__rect(&p, m, m, m + (6 * (float)longest + 3) * sc, m + (9 * nl + 2) * sc, panel);
+    for (int i = 0; i < nl; i++)
+        hol_hud_text(out, lines[i], m + 2 * sc, m + (2 + 9 * i) * sc, sc, text, w, h);
+}

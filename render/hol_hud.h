@@ -1,0 +1,33 @@
+/* hol_hud.h - HUD text (built-in 5x7 bitmap font) and the Poincare minimap.
+ *
+ * Contract
+ * - Builds flat 2D geometry straight in normalized device coordinates
+ *   (z = 0) into a hol_mesh, for one draw with the renderer's flat mode.
+ *   Vertices are HOL_MESH_PROP (never floor). Nothing allocates.
+ * - Minimap: a Poincare disk centred on the user's tile (room north up,
+ *   room east right) showing every tile within HOL_HUD_MAP_RADIUS steps as
+ *   its geodesic square, coloured hot-cold by the tile distance to the
+ *   nearest objective (red near, blue far; grey-green without objectives),
+ *   the shortest-path overlay (tile centres of the given room walk), the
+ *   objectives (yellow diamonds), the user's arrow (view yaw), and for each
+ *   objective off the map an arrow on the rim pointing towards it.
+ * - Text: objective, steps, current address, time, top left.
+ */
+#ifndef HOL_HUD_H
+#define HOL_HUD_H
+
+#include "hol_mesh.h"
+#include "hol_render.h"
+
+#define HOL_HUD_MAP_RADIUS 4
+
+/* Append the HUD of frame f (viewport w x h pixels) to out. */
+void hol_hud_build(hol_mesh *out, const hol_frame_desc *f, int w, int h);
+
+/* Text at pixel (x, y) (top-left of the first glyph), each font pixel a
+ * scale x scale square; returns the advance in pixels. Unknown characters
+ * draw as a box; lowercase other than f, l, r draws as uppercase. */
+int hol_hud_text(hol_mesh *out, const char *s, float x, float y, float scale,
+                 const uint8_t rgb[3], int w, int h);
+
+#endif

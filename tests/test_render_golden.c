@@ -1,0 +1,239 @@
+/* test_render_golden.c - rendered views against reviewed golden PNGs.
+ *
+ * Each view is rendered at 160 x 120 and compared with tests/golden/NAME.png
+ * pixel by pixel: a pixel differs when a channel is off by more than
+ * TOL (8 of 255); a view fails when more than 0.5 % of its pixels differ
+ * (llvmpipe versions may round a few edge pixels differently). On failure
+ * the actual image and a diff image (differing pixels red over a darkened
+ * copy of the golden) are written to GOLDEN_OUT (default: the folder of
+ * this binary, golden-out/) and named in the message.
+ *
+ * Updating (only on request): HOL_GOLDEN_UPDATE=1 writes every view as the
+ * new golden instead of comparing; then look at each changed PNG (git diff
+ * --stat tests/golden; open them) before committing. See README "Golden
+ * images".
+ */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include <cmocka.h>
+
+#include "../core/hol_room.h"
+#include "../core/hol_tile.h"
+#include "../core/hol_world.h"
+#include "../platform/osmesa/hol_osmesa.h"
+#include "../render/hol_png.h"
+#include "../render/hol_render.h"
+
+#define W 160
+#define H 120
+#define TOL 8
+
+typedef struct golden_view {
+    const char *name, *walk;
+    double eye[3], yaw, pitch, fov;
+    int flags;
+} golden_view;
+
+static const golden_view views[] = {
+    {"centre_north", "-", {1.5, 1.6, 1.5}, 0, -30, 90, 0},
+    {"centre_down", "-", {1.45, 1.6, 1.55}, 20, -89, 100, 0},
+    {"centre_bare", "-", {1.5, 1.6, 1.5}, 0, -35, 90, HOL_RENDER_BARE},
+    {"corner_across_vertices", "NW", {0.3, 1.6, 0.3}, -135, -30, 90, 0},
+    {"corner_se", "SE", {2.7, 1.6, 2.7}, 45, -25, 90, 0},
+    {"edge_north", "N", {1.5, 1.6, 0.4}, 180, -30, 90, 0},
+    {"along_edge", "E", {2.5, 1.6, 1.03}, 90, -15, 90, 0},
+    {"along_edge_bare", "E", {2.5, 1.6, 1.03}, 90, -15, 90, HOL_RENDER_BARE},
+    {"deep_tile", "NWSSEEN", {2.3, 1.7, 1.6}, 200, -25, 90, 0},
+    {"low_eye", "S", {1.6, 0.8, 2.4}, 10, -10, 90, 0},
+    {"wide_west", "W", {0.7, 1.6, 1.3}, -70, -35, 120, 0},
+    {"euclidean_centre", "-", {1.5, 1.6, 1.5}, 0, -30, 90, HOL_RENDER_EUCLIDEAN},
+    {"minimap", "NE", {2.4, 1.6, 0.6}, 135, -30, 90, HOL_RENDER_MINIMAP},
+};
+
+static hol_osmesa gl;
+static hol_render *rnd;
+static hol_world *world;
+static char out_dir[512] = "golden-out";
+
+static int setup(void **state)
+{
+    (void)state;
+    char msg[256];
+    if (hol_osmesa_create(&gl, W, H, msg, sizeof msg)) {
+        fprintf(stderr, "%s\n", msg);
+        return -1;
+    }
+    hol_world_desc wd;
+    memset(&wd, 0, sizeof wd);
+    wd.seed = 7;
+    wd.capacity = 1u << 14;
+    if (hol_world_make(&wd, &world))
+        return -1;
+    hol_render_desc rd;
+    memset(&rd, 0, sizeof rd);
+    rd.world = world;
+    return hol_render_create(&rd, &rnd) ? -1 : 0;
+}
+
+static int teardown(void **state)
+{
+    (void)state;
+    hol_render_destroy(rnd);
+    hol_world_destroy(world);
+    hol_osmesa_destroy(&gl);
+    return 0;
+}
+
+static void render_view(const golden_view *g, uint8_t *rgba)
+{
+    hol_frame_desc f;
+    memset(&f, 0, sizeof f);
+    f.user = hol_room_start();
+    for (const char *p = g->walk; *p && *p != '-'; p++)
+        assert_int_equal(hol_room_step(&f.user, hol_dir_from_char(*p)), HOL_OK);
+    memcpy(f.cam.eye, g->eye, sizeof f.cam.eye);
+    f.cam.yaw_deg = g->yaw;
+    f.cam.pitch_deg = g->pitch;
+    f.cam.fovy_deg = g->fov;
+    f.cam.width = W;
+    f.cam.height = H;
+    f.flags = g->flags;
+    if (!(g->flags & HOL_RENDER_MINIMAP))
+        f.flags |= HOL_RENDER_NO_HUD;
+    f.nobjectives = 2;
+    assert_int_equal(hol_tile_resolve("Nrfl", -1, &f.objectives[0]), HOL_OK);
+    assert_int_equal(hol_tile_resolve("Wlffr", -1, &f.objectives[1]), HOL_OK);
+    f.objective_text = "find the key";
+    static const uint8_t path[] = {HOL_DIR_W, HOL_DIR_W, HOL_DIR_S, HOL_DIR_S};
+    f.path = path;
+    f.npath = 4;
+    assert_int_equal(hol_world_update(world, &f.user), HOL_OK);
+    f.steps_taken = 2;
+    f.time_s = 83;
+    assert_int_equal(hol_render_frame(rnd, &f, NULL), HOL_OK);
+    hol_render_read_rgba(W, H, rgba);
+}
+
+static void test_goldens(void **state)
+{
+    (void)state;
+    static uint8_t img[W * H * 4], diff[W * H * 4];
+    int update = getenv("HOL_GOLDEN_UPDATE") && getenv("HOL_GOLDEN_UPDATE")[0] == '1';
+    int failed = 0;
+    for (size_t i = 0; i < sizeof views / sizeof views[0]; i++) {
+        const golden_view *g = &views[i];
+        char path[600], apath[600], dpath[600];
+        snprintf(path, sizeof path, "tests/golden/%s.png", g->name);
+        render_view(g, img);
+        if (update) {
+            assert_int_equal(hol_png_write_file(path, img, W, H, 0), HOL_OK);
+            printf("golden: wrote %s (review it before committing)\n", path);
+            continue;
+        }
+        uint8_t *ref = NULL;
+        int rw = 0, rh = 0;
+        hol_err err = hol_png_read_file(path, &ref, &rw, &rh);
+        if (err) {
+            printf("golden: %s: cannot read (%s); run with HOL_GOLDEN_UPDATE=1 "
+                   "and review\n", path, hol_err_str(err));
+            failed++;
+            continue;
+        }
+        if (rw != W || rh != H) {
+            printf("golden: %s is %dx%d, expected %dx%d\n", path, rw, rh, W, H);
+            free(ref);
+            failed++;
+            continue;
+        }
+        int bad = 0, worst = 0;
+        for (int p = 0; p < W * H; p++) {
+            int d = 0;
+            for (int k = 0; k < 3; k++) {
+                int e = abs((int)img[4 * p + k] - (int)ref[4 * p + k]);
+                d = e > d ? e : d;
+            }
+            worst = d > worst ? d : worst;
+            uint8_t *o = diff + 4 * p;
+            if (d > TOL) {
+                bad++;
+                o[0] = 255;
+                o[1] = o[2] = 0;
+            } else {
+                o[0] = ref[4 * p] / 3;
+                o[1] = ref[4 * p + 1] / 3;
+                o[2] = ref[4 * p + 2] / 3;
+            }
+            o[3] = 255;
+        }
+        free(ref);
+        if (bad * 200 > W * H) {
+            mkdir(out_dir, 0777);
+            snprintf(apath, sizeof apath, "%s/%s.actual.png", out_dir, g->name);
+            snprintf(dpath, sizeof dpath, "%s/%s.diff.png", out_dir, g->name);
+            hol_png_write_file(apath, img, W, H, 0);
+            hol_png_write_file(dpath, diff, W, H, 0);
+            printf("golden: %s: %d pixels differ (max channel diff %d); see %s and %s\n",
+                   g->name, bad, worst, apath, dpath);
+            failed++;
+        }
+    }
+    assert_int_equal(failed, 0);
+}
+
+/* The comparison has teeth: a one-degree turn changes a view beyond the
+ * tolerance, and the PNG round trip is exact. */
+static void test_comparison_detects_change(void **state)
+{
+    (void)state;
+    static uint8_t a[W * H * 4], b[W * H * 4];
+    golden_view g = views[0];
+    render_view(&g, a);
+    g.yaw += 1.0;
+    render_view(&g, b);
+    int bad = 0;
+    for (int p = 0; p < W * H; p++)
+        for (int k = 0; k < 3; k++)
+            if (abs((int)a[4 * p + k] - (int)b[4 * p + k]) > TOL) {
+                bad++;
+                break;
+            }
+    assert_true(bad * 200 > W * H);
+    uint8_t *data, *back;
+    size_t n;
+    int w, h;
+    assert_int_equal(hol_png_encode(a, W, H, 1, &data, &n), HOL_OK);
+    assert_int_equal(hol_png_decode(data, n, &back, &w, &h), HOL_OK);
+    assert_int_equal(w, W);
+    assert_int_equal(h, H);
+    assert_memory_equal(a, back, sizeof a);
+    /* damage: a flipped byte in the data is caught by the CRC */
+    data[n / 2] ^= 0x40;
+    uint8_t *bad_img = NULL;
+    assert_int_equal(hol_png_decode(data, n, &bad_img, &w, &h), HOL_ECORRUPT);
+    assert_int_equal(hol_png_decode(data, 7, &bad_img, &w, &h), HOL_ECORRUPT);
+    free(data);
+    free(back);
+}
+
+int main(int argc, char **argv)
+{
+    (void)argc;
+    const char *env = getenv("GOLDEN_OUT");
+    if (env && *env)
+        snprintf(out_dir, sizeof out_dir, "%s", env);
+    else if (argv[0] && strrchr(argv[0], '/'))
+        snprintf(out_dir, sizeof out_dir, "%.*s/golden-out",
+                 (int)(strrchr(argv[0], '/') - argv[0]), argv[0]);
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_comparison_detects_change),
+        cmocka_unit_test(test_goldens),
+    };
+    return cmocka_run_group_tests(tests, setup, teardown);
+}
