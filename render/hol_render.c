@@ -196,6 +196,11 @@ void hol_render_destroy(hol_render *r)
     free(r);
 }
 
+void hol_render_set_world(hol_render *r, struct hol_world *world)
+{
+    r->desc.world = world;
+}
+
 const hol_view *hol_render_last_view(const hol_render *r)
 {
     return &r->view;

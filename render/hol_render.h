@@ -79,6 +79,8 @@ typedef struct hol_render_stats {
 
 hol_err hol_render_create(const hol_render_desc *desc, hol_render **out);
 void hol_render_destroy(hol_render *r);
+/* Switch the world the content comes from (NULL: placeholder content). */
+void hol_render_set_world(hol_render *r, struct hol_world *world);
 
 /* Render one eye into the current framebuffer (viewport = cam size).
  * Errors: HOL_EARG (eye not inside the user's cell, bad size),

@@ -281,6 +281,151 @@ static void test_sweep_all_cells(void **state)
     assert_true(checked > 100000);
 }
 
+/* Trunks hide the seams: no floor pixel's sight line passes within 5 cm of
+ * a vertex (the trunks are at least 6 cm thick up to above the eye). */
+static void test_trunks_hide_seams(void **state)
+{
+    (void)state;
+    int checked = 0;
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        const view_case *c = &cases[i];
+        hol_frame_desc f;
+        memset(&f, 0, sizeof f);
+        f.user = state_of(c->walk);
+        memcpy(f.cam.eye, c->eye, sizeof f.cam.eye);
+        f.cam.yaw_deg = c->yaw;
+        f.cam.pitch_deg = c->pitch;
+        f.cam.fovy_deg = c->fov;
+        f.cam.width = W;
+        f.cam.height = H;
+        f.flags = c->flags | HOL_RENDER_IDS | HOL_RENDER_NO_HUD;
+        assert_int_equal(hol_render_frame(rnd, &f, NULL), HOL_OK);
+        static uint8_t px[W * H * 4];
+        hol_render_read_rgba(W, H, px);
+        for (int y = 0; y < H; y++)
+            for (int x = 0; x < W; x++) {
+                if (hol_render_decode_id(px + (y * W + x) * 4) < 0)
+                    continue;
+                double p[2];
+                if (!floor_point(c, x + 0.5, y + 0.5, p))
+                    fail_msg("pixel %d,%d shows floor above the horizon", x, y);
+                double ex = c->eye[0], ez = c->eye[2], dx = p[0] - ex, dz = p[1] - ez;
+                double l2 = dx * dx + dz * dz;
+                for (int vj = 0; vj <= 3; vj++)
+                    for (int vi = 0; vi <= 3; vi++) {
+                        double t = ((vi - ex) * dx + (vj - ez) * dz) / l2;
+                        t = t < 0 ? 0 : t > 1 ? 1 : t;
+                        double d = hypot(ex + t * dx - vi, ez + t * dz - vj);
+                        if (d < 0.05)
+                            fail_msg("case %s yaw %g: pixel %d,%d shows floor %.3f m "
+                                     "from the trunk axis at vertex (%d,%d)",
+                                     c->walk, c->yaw, x, y, d, vi, vj);
+                    }
+                checked++;
+            }
+    }
+    assert_true(checked > 20000);
+}
+
+/* Project a floor point to pixel coordinates with the test's own camera. */
+static int project(const view_case *c, double x, double z, double out[2])
+{
+    double yaw = c->yaw * PI / 180, pitch = c->pitch * PI / 180;
+    double ty = tan(c->fov * PI / 360), tx = ty * W / H;
+    double vx = x - c->eye[0], vy = -c->eye[1], vz = z - c->eye[2];
+    /* undo yaw (about y), then pitch (about x) */
+    double x1 = vx * cos(yaw) - vz * sin(yaw), z1 = vx * sin(yaw) + vz * cos(yaw);
+    double y2 = vy * cos(pitch) + z1 * sin(pitch), z2 = -vy * sin(pitch) + z1 * cos(pitch);
+    if (z2 >= -1e-6)
+        return 0;
+    out[0] = (x1 / -z2 / tx + 1) * W / 2;
+    out[1] = (1 - y2 / -z2 / ty) * H / 2;
+    return out[0] >= 0 && out[0] < W && out[1] >= 0 && out[1] < H;
+}
+
+static int is_water(const uint8_t *p)
+{
+    return p[2] > p[1] + 20 && p[2] > p[0] + 60;
+}
+
+/* Creeks continue across every cell edge: the tiles on both sides of an
+ * edge, each drawn in its own branch's frame, agree on whether a creek
+ * crosses the edge's midpoint. A wrong rotation of tile frames breaks it. */
+static void test_creeks_continue_across_edges(void **state)
+{
+    (void)state;
+    int checked = 0, water = 0;
+    uint64_t rng = 12345;
+    for (uint64_t seed = 1; seed <= 12; seed++) {
+        hol_world *w;
+        hol_world_desc wd;
+        memset(&wd, 0, sizeof wd);
+        wd.seed = seed;
+        wd.capacity = 1u << 14;
+        assert_int_equal(hol_world_make(&wd, &w), HOL_OK);
+        hol_render_set_world(rnd, w);
+        for (int k = 0; k < 24; k++) {
+            /* a random walk in the room back to the centre cell */
+            char walk[40];
+            int n = 0;
+            hol_room u = hol_room_start();
+            int len = 2 + (int)(rng % 10);
+            while (n < len) {
+                rng = rng * 6364136223846793005ull + 1442695040888963407ull;
+                int d = (int)(rng >> 62);
+                if (hol_room_step(&u, d) == HOL_OK)
+                    walk[n++] = hol_dir_to_char(d);
+            }
+            while (u.col != 1 || u.row != 1) {
+                int d = u.col < 1 ? HOL_DIR_E : u.col > 1 ? HOL_DIR_W
+                        : u.row < 1 ? HOL_DIR_S : HOL_DIR_N;
+                assert_int_equal(hol_room_step(&u, d), HOL_OK);
+                walk[n++] = hol_dir_to_char(d);
+            }
+            walk[n] = 0;
+            if (hol_world_update(w, &u))
+                continue;
+            view_case c = {walk, {1.5, 1.6, 1.5}, (double)(k * 90), -90, 110, HOL_RENDER_BARE};
+            hol_frame_desc f;
+            memset(&f, 0, sizeof f);
+            f.user = u;
+            memcpy(f.cam.eye, c.eye, sizeof f.cam.eye);
+            f.cam.yaw_deg = c.yaw;
+            f.cam.pitch_deg = c.pitch;
+            f.cam.fovy_deg = c.fov;
+            f.cam.width = W;
+            f.cam.height = H;
+            f.flags = HOL_RENDER_BARE | HOL_RENDER_NO_HUD;
+            assert_int_equal(hol_render_frame(rnd, &f, NULL), HOL_OK);
+            static uint8_t px[W * H * 4];
+            hol_render_read_rgba(W, H, px);
+            /* the 12 interior edges: vertical x = 1, 2 and horizontal z = 1, 2 */
+            for (int e = 0; e < 12; e++) {
+                int vert = e < 6, line = 1 + (e % 6) / 3, seg = e % 3;
+                double mx = vert ? line : seg + 0.5, mz = vert ? seg + 0.5 : line;
+                double ox = vert ? 0.05 : 0, oz = vert ? 0 : 0.05;
+                double a[2], b[2];
+                if (!project(&c, mx - ox, mz - oz, a) || !project(&c, mx + ox, mz + oz, b))
+                    continue;
+                const uint8_t *pa = px + ((int)a[1] * W + (int)a[0]) * 4;
+                const uint8_t *pb = px + ((int)b[1] * W + (int)b[0]) * 4;
+                if (is_water(pa) != is_water(pb))
+                    fail_msg("seed %d walk %s: a creek ends at the edge midpoint "
+                             "(%.1f,%.1f): pixel %d,%d vs %d,%d", (int)seed, walk, mx,
+                             mz, (int)a[0], (int)a[1], (int)b[0], (int)b[1]);
+                checked++;
+                water += is_water(pa);
+            }
+        }
+        hol_render_set_world(rnd, world);
+        hol_world_destroy(w);
+    }
+    printf("creeks: %d edges checked, %d with water\n", checked, water);
+    /* the check must have met creeks, or it proves nothing */
+    assert_true(checked > 500);
+    assert_true(water >= 12);
+}
+
 static void test_ids_decode(void **state)
 {
     (void)state;
@@ -297,6 +442,8 @@ int main(void)
         cmocka_unit_test(test_bare_views_match_ray_walk),
         cmocka_unit_test(test_full_views_match_ray_walk),
         cmocka_unit_test(test_sweep_all_cells),
+        cmocka_unit_test(test_trunks_hide_seams),
+        cmocka_unit_test(test_creeks_continue_across_edges),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }
