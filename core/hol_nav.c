@@ -9,10 +9,15 @@
  * arena: f = g + H, H the table cost where the state lies within the table
  * and an extrapolation (the mean table cost at the trusted radius plus the
  * mean cost per tile) beyond. Every node inside the table offers a complete
- * walk (its path plus the table descent); the best one is kept and the
- * search stops at the node budget or when no open node can beat it. With
- * nothing inside the table within the budget, waypoints on the geodesic to
- * the target chain exact legs. These answers are flagged exact = 0.
+ * walk (its path plus the table descent); the best one is kept. A node
+ * within the trusted radius is not expanded (no walk through it beats
+ * g + its exact cost), nor one whose admissible bound (it must cross the
+ * trusted sphere) cannot beat the best. The search stops at the node
+ * budget, or when the least f exceeds the best by the margin (H is only an
+ * estimate, so a margin of 16 steps finds the optimum in every case the
+ * bench can check). With nothing inside the table within the budget,
+ * waypoints on the geodesic to the target chain exact legs. These answers
+ * are flagged exact = 0.
  *
  * Tours search room state x collected-key set with the admissible
  * heuristic max(C(S, chest), max over keys k left of C(S, k) + C*(k, chest))
@@ -50,6 +55,7 @@ struct hol_nav {
     int trust;          /* table costs within it are exact */
     int far_base16;     /* extrapolation: 16 x mean cost at trust */
     int far_slope16;    /* 16 x mean cost per tile */
+    int margin;         /* anytime: explore f up to best + margin */
     hol__node *nodes;
     uint32_t cap, count;
     uint32_t *hash; /* node index + 1; 0 empty */
@@ -89,8 +95,11 @@ hol_err hol_nav_create(const hol_nav_desc *desc, hol_nav **out_nav)
         d.radius = HOL_NAV_DEFAULT_RADIUS;
     if (d.max_nodes == 0)
         d.max_nodes = HOL_NAV_DEFAULT_NODES;
+    if (d.anytime_margin == 0)
+        d.anytime_margin = HOL_NAV_DEFAULT_MARGIN;
     if (d.radius < 3 || d.radius > HOL_NAV_MAX_RADIUS || d.max_nodes < 16 ||
-        d.max_nodes > (1u << 26) || (!d.alloc_fn) != (!d.free_fn))
+        d.max_nodes > (1u << 26) || d.anytime_margin < 0 ||
+        d.anytime_margin > 255 || (!d.alloc_fn) != (!d.free_fn))
         return HOL_EARG;
     if (!d.alloc_fn) {
         d.alloc_fn = hol__malloc;
@@ -131,6 +140,7 @@ hol_err hol_nav_create(const hol_nav_desc *desc, hol_nav **out_nav)
     nav->cap = cap;
     nav->hash_mask = hsize - 1;
     nav->trust = d.radius - 2;
+    nav->margin = d.anytime_margin;
     nav->far_base16 = nav->tab.mean16_at[nav->trust];
     nav->far_slope16 = nav->tab.mean16_at[nav->trust] - nav->tab.mean16_at[nav->trust - 1];
     nav->bytes = total;
@@ -316,6 +326,15 @@ static int hol__descend(const hol_navtab *tab, uint32_t idx, int o, int cell,
     return steps;
 }
 
+/* Admissible lower bound for a node outside the trusted radius: it must
+ * first cross the trusted sphere. */
+static int hol__lb_far(const hol_nav *nav, const hol__node *n)
+{
+    int d = (n->flags & HOL__INSIDE) ? hol_navtab_len(&nav->tab, n->u.idx)
+                                     : hol_tile_dist0(n->u.t);
+    return d - nav->trust + nav->tab.min_at[nav->trust];
+}
+
 /* Heuristic of the anytime search: table cost, or the extrapolation. */
 static int hol__far(const hol_nav *nav, int d)
 {
@@ -460,7 +479,7 @@ static hol_err hol__anytime(hol_nav *nav, const hol_room *start, hol_tile u, int
     uint32_t rid = hol__intern(nav, &root, &isnew);
     hol__push(nav, rid);
     uint32_t best = HOL__NIL;
-    int best_cost = INT32_MAX;
+    int best_cost = 1 << 20;
     if (v < 255) {
         best = rid;
         best_cost = v;
@@ -469,8 +488,15 @@ static hol_err hol__anytime(hol_nav *nav, const hol_room *start, hol_tile u, int
     uint32_t id;
     while (expanded < budget && (id = hol__pop(nav)) != HOL__NIL) {
         hol__node cur = nav->nodes[id];
-        if ((int)cur.f >= best_cost)
+        if ((int)cur.f >= best_cost + nav->margin)
             break;
+        /* A node within the trusted radius is a finished candidate: every
+         * walk through it costs at least g + its exact table cost. */
+        if ((cur.flags & HOL__INSIDE) &&
+            hol_navtab_len(&nav->tab, cur.u.idx) <= nav->trust)
+            continue;
+        if (cur.g + hol__lb_far(nav, &cur) >= best_cost)
+            continue;
         expanded++;
         for (int d = 0; d < 4; d++) {
             hol__node nx;

@@ -36,6 +36,7 @@
 #define HOL_NAV_DEFAULT_RADIUS 14
 #define HOL_NAV_MAX_RADIUS 15
 #define HOL_NAV_DEFAULT_NODES (1u << 18)
+#define HOL_NAV_DEFAULT_MARGIN 16
 /* Longest walk any query writes; out_walk buffers of this size always fit. */
 #define HOL_NAV_WALK_MAX 4096
 #define HOL_NAV_TOUR_MAX_KEYS 5
@@ -43,6 +44,8 @@
 typedef struct hol_nav_desc {
     int radius;        /* cost table radius in tiles (3..15); 0: 14 */
     size_t max_nodes;  /* search arena capacity in nodes; 0: 2^18 */
+    int anytime_margin; /* anytime search explores f up to best + this
+                         * (steps, 1..255); 0: 16 */
     /* allocator hooks (both or neither); zero: malloc/free */
     void *(*alloc_fn)(size_t size, void *user);
     void (*free_fn)(void *ptr, void *user);

@@ -284,7 +284,10 @@ static void test_table_small(void **state)
     static const struct {
         const char *target;
         int cost;
-    } cases[] = {{"O", 0}, {"N", 1}, {"W", 1}, {"Nr", 2}, {"Nf", 5}, {"Nff", 7}};
+    } cases[] = {{"O", 0}, {"N", 1}, {"W", 1}, {"Nr", 2}, {"Nf", 5}, {"Nff", 7},
+                 {"Nffff", 11}, {"Nfffffff", 17}, {"Sfrlf", 12}};
+    bf b;
+    bf_init(&b, 1u << 21);
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         hol_tile t;
         assert_int_equal(hol_tile_parse(cases[i].target, -1, &t), HOL_OK);
@@ -295,7 +298,9 @@ static void test_table_small(void **state)
         assert_int_equal(res.len, cases[i].cost);
         assert_int_equal(res.exact, 1);
         check_walk(&s, walk, res.len, t);
+        assert_int_equal(bf_cost(&b, &s, t, res.len), res.len);
     }
+    bf_free(&b);
 }
 
 /* ---- optimality against brute force ---- */
@@ -372,7 +377,8 @@ static void test_anytime(void **state)
     }
     print_message("anytime (radius 8, targets 7..10): %d/%d optimal length, "
                   "%d/%d first 3 steps on an optimal walk\n", equal, n, prefix, n);
-    assert_true(prefix * 2 >= n);
+    assert_true(equal * 10 >= 9 * n); /* measured 100% with the default margin */
+    assert_true(prefix * 10 >= 9 * n);
     hol_nav_destroy(small);
 }
 

@@ -1,10 +1,112 @@
-/* cmd_tour.c - `holonomy tour` (placeholder until its issue lands). */
+/* cmd_tour.c - `holonomy tour PREFIX KEY... CHEST`: keys, then the chest. */
+#include <errno.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "../../core/hol_nav.h"
+#include "../../core/hol_nav_line.h"
 #include "cli.h"
+
+static const char *const tour_usage =
+    "usage: holonomy tour [--budget N] PREFIX KEY... CHEST\n"
+    "\n"
+    "PREFIX: a walk of room steps (N, E, S, W) from the start, cell (1,1) of\n"
+    "tile O, inside the room ('-' for none). KEY... (0 to 5) and CHEST: tile\n"
+    "addresses. Prints one line 'K WALK': K the fewest further steps, staying\n"
+    "in the room, that stand on every key (any order; a key counts when the\n"
+    "user stands on its tile, the start included) and after the last key on\n"
+    "the chest, and WALK such a walk ('-' when K is 0).\n"
+    "\n"
+    "Exact: a search over room state x collected keys with an admissible\n"
+    "heuristic from the cost table. If it exceeds the node budget, the keys\n"
+    "are visited nearest first instead and K is that walk's length.\n"
+    "\n"
+    "  --budget N   node budget (default and maximum 262144)\n"
+    "  -h, --help   this text\n"
+    "\n"
+    "Exit status: 0 ok, 1 output or memory failure, 2 bad arguments.\n";
+
+static size_t parse_count(const char *s)
+{
+    if (!s || !*s || *s == '-' || *s == '+')
+        return 0;
+    char *end;
+    errno = 0;
+    unsigned long long v = strtoull(s, &end, 10);
+    if (errno || *end || v == 0 || v > (1ull << 40))
+        return 0;
+    return (size_t)v;
+}
 
 int cli_cmd_tour(int argc, char **argv)
 {
-    (void)argc;
-    (void)argv;
-    cli_error("tour", 0, "not implemented yet");
-    return CLI_EXIT_FAIL;
+    const char *cmd = "tour";
+    if (cli_wants_help(argc, argv)) {
+        fputs(tour_usage, stdout);
+        return cli_finish_output(cmd);
+    }
+    size_t budget = 0;
+    const char *pos[HOL_NAV_TOUR_MAX_KEYS + 2];
+    int npos = 0;
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i];
+        if (!strcmp(a, "--budget") || !strncmp(a, "--budget=", 9)) {
+            const char *v = a[8] == '=' ? a + 9 : (i + 1 < argc ? argv[++i] : NULL);
+            if (!(budget = parse_count(v))) {
+                cli_error(cmd, 0, "--budget needs a positive node count; see --help");
+                return CLI_EXIT_USAGE;
+            }
+        } else if (a[0] == '-' && a[1] != '\0') {
+            cli_error(cmd, 0, "unknown option '%.40s'; see --help", a);
+            return CLI_EXIT_USAGE;
+        } else if (npos == HOL_NAV_TOUR_MAX_KEYS + 2) {
+            cli_error(cmd, 0, "at most %d keys", HOL_NAV_TOUR_MAX_KEYS);
+            return CLI_EXIT_USAGE;
+        } else {
+            pos[npos++] = a;
+        }
+    }
+    if (npos < 2) {
+        cli_error(cmd, 0, "expected PREFIX KEY... CHEST; see --help");
+        return CLI_EXIT_USAGE;
+    }
+    char msg[256];
+    hol_room room;
+    hol_tile tiles[HOL_NAV_TOUR_MAX_KEYS + 1];
+    if (hol_nav_parse_prefix(pos[0], strlen(pos[0]), &room, msg, sizeof msg)) {
+        cli_error(cmd, 0, "%s", msg);
+        return CLI_EXIT_USAGE;
+    }
+    for (int i = 1; i < npos; i++) {
+        if (hol_nav_parse_target(pos[i], strlen(pos[i]), &tiles[i - 1], msg,
+                                 sizeof msg)) {
+            /* the message says "target"; name the argument instead */
+            const char *what = i == npos - 1 ? "chest" : "key";
+            char *p = strstr(msg, "target");
+            cli_error(cmd, 0, "%s %s", what, p ? p + 7 : msg);
+            return CLI_EXIT_USAGE;
+        }
+    }
+    hol_nav *nav;
+    hol_err err = hol_nav_create(NULL, &nav);
+    if (err) {
+        cli_error(cmd, 0, "cannot build the cost table: %s", hol_err_str(err));
+        return CLI_EXIT_FAIL;
+    }
+    static uint8_t walk[HOL_NAV_WALK_MAX];
+    static char text[HOL_NAV_WALK_MAX + 1];
+    hol_nav_result res;
+    err = hol_nav_tour(nav, &room, tiles, npos - 2, tiles[npos - 2], budget, walk,
+                       sizeof walk, &res);
+    hol_nav_destroy(nav);
+    if (err) {
+        cli_error(cmd, 0, "no tour: %s", hol_err_str(err));
+        return err == HOL_ENOMEM ? CLI_EXIT_FAIL : CLI_EXIT_USAGE;
+    }
+    for (int i = 0; i < res.len; i++)
+        text[i] = hol_dir_to_char(walk[i]);
+    text[res.len] = '\0';
+    printf("%d %s\n", res.len, res.len ? text : "-");
+    return cli_finish_output(cmd);
 }

@@ -1,0 +1,213 @@
+/* bench_nav.c - `make bench` figures for guidance (hol_nav).
+ *
+ * Per tile distance 2..16 between the user's tile and the target (random
+ * starts: random walks in the room; random targets at exactly that distance):
+ * median and 99th-percentile time per query, mean nodes expanded, mean walk
+ * length, share of exact answers. Then the anytime mode's quality: how often
+ * its first steps are a prefix of an optimal walk, measured where the truth
+ * is known (a radius-10 navigator, trusted to 8, answering targets at 9..12
+ * in anytime mode, against the default navigator's exact answers; and the
+ * default navigator at distance 13 against a radius-15 one). Last, tours.
+ */
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "../core/hol_nav.h"
+#include "../core/hol_nav_table.h"
+
+static uint64_t rng = 0x9E3779B97F4A7C15ull;
+
+static uint32_t rnd(uint32_t n)
+{
+    rng ^= rng << 13;
+    rng ^= rng >> 7;
+    rng ^= rng << 17;
+    return (uint32_t)((rng >> 11) % n);
+}
+
+static double now_ms(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec * 1e3 + (double)ts.tv_nsec * 1e-6;
+}
+
+static hol_room random_start(void)
+{
+    hol_room r = hol_room_start();
+    int n = (int)rnd(60);
+    for (int i = 0; i < n; i++)
+        hol_room_step(&r, (int)rnd(4));
+    return r;
+}
+
+static hol_tile random_target(const hol_room *u, int d)
+{
+    hol_tile rel = hol_tile_origin(), c;
+    hol_tile_child(rel, (int)rnd(4), &rel);
+    while (hol_tile_dist0(rel) < d) {
+        static const int letters[3] = {0, 1, 3};
+        if (!hol_tile_child(rel, letters[rnd(3)], &c))
+            rel = c;
+    }
+    hol_flag f = {u->tile, u->orient};
+    for (int i = 0; i < d; i++)
+        hol_flag_step(f, hol_tile_letter(rel, i), &f);
+    return f.tile;
+}
+
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+#define QUERIES 400
+
+static void bench_distances(hol_nav *nav, size_t budget, const char *label)
+{
+    static double t[QUERIES];
+    static uint8_t walk[HOL_NAV_WALK_MAX];
+    printf("\n%s\n", label);
+    printf("  dist  median_ms  p99_ms   max_ms  nodes_mean  len_mean  exact\n");
+    for (int d = 2; d <= 16; d++) {
+        double nodes = 0, len = 0;
+        int exact = 0;
+        for (int q = 0; q < QUERIES; q++) {
+            hol_room s = random_start();
+            hol_tile target = random_target(&s, d);
+            hol_nav_result res;
+            double t0 = now_ms();
+            hol_err err = hol_nav_find(nav, &s, target, budget, walk, sizeof walk, &res);
+            t[q] = now_ms() - t0;
+            if (err) {
+                printf("  error %s at distance %d\n", hol_err_str(err), d);
+                exit(1);
+            }
+            nodes += (double)res.nodes;
+            len += res.len;
+            exact += res.exact;
+        }
+        qsort(t, QUERIES, sizeof t[0], cmp_double);
+        printf("  %4d  %9.4f  %6.3f  %7.3f  %10.0f  %8.2f  %4d%%\n", d, t[QUERIES / 2],
+               t[QUERIES * 99 / 100], t[QUERIES - 1], nodes / QUERIES, len / QUERIES,
+               100 * exact / QUERIES);
+    }
+}
+
+/* Anytime answers of `any` against the exact answers of `exact`. */
+static void bench_prefix(hol_nav *any, hol_nav *exact, int dlo, int dhi, size_t budget)
+{
+    static uint8_t walk[HOL_NAV_WALK_MAX], best[HOL_NAV_WALK_MAX];
+    for (int d = dlo; d <= dhi; d++) {
+        int n = 200, same = 0, p1 = 0, p3 = 0, p5 = 0, extra = 0;
+        double tsum = 0, tmax = 0;
+        for (int q = 0; q < n; q++) {
+            hol_room s = random_start();
+            hol_tile target = random_target(&s, d);
+            hol_nav_result res, opt, rest;
+            double t0 = now_ms();
+            hol_nav_find(any, &s, target, budget, walk, sizeof walk, &res);
+            double dt = now_ms() - t0;
+            tsum += dt;
+            if (dt > tmax)
+                tmax = dt;
+            hol_nav_find(exact, &s, target, 0, best, sizeof best, &opt);
+            same += res.len == opt.len;
+            extra += res.len - opt.len;
+            int ks[3] = {1, 3, 5}, *hits[3] = {&p1, &p3, &p5};
+            for (int j = 0; j < 3; j++) {
+                int k = ks[j] < res.len ? ks[j] : res.len;
+                hol_room r = s;
+                for (int i = 0; i < k; i++)
+                    hol_room_step(&r, walk[i]);
+                hol_nav_find(exact, &r, target, 0, best, sizeof best, &rest);
+                *hits[j] += rest.len + k == opt.len;
+            }
+        }
+        printf("  %4d  %6zu  %5.1f%%  %5.1f%%  %5.1f%%  %5.1f%%  %6.2f  %7.3f  %7.3f\n", d,
+               budget, 100.0 * p1 / n, 100.0 * p3 / n, 100.0 * p5 / n, 100.0 * same / n,
+               (double)extra / n, tsum / n, tmax);
+    }
+}
+
+static void bench_tours(hol_nav *nav)
+{
+    static uint8_t walk[HOL_NAV_WALK_MAX];
+    printf("\ntours (keys and chest at tile distance 1..4 from the start)\n");
+    printf("  keys  median_ms  max_ms  nodes_mean  len_mean  exact\n");
+    for (int nk = 1; nk <= 5; nk++) {
+        int n = nk >= 4 ? 20 : 40, exact = 0;
+        double t[40], nodes = 0, len = 0;
+        for (int q = 0; q < n; q++) {
+            hol_room s = random_start();
+            hol_tile keys[5], chest;
+            for (int i = 0; i < nk; i++)
+                keys[i] = random_target(&s, 1 + (int)rnd(4));
+            chest = random_target(&s, 1 + (int)rnd(4));
+            hol_nav_result res;
+            double t0 = now_ms();
+            hol_nav_tour(nav, &s, keys, nk, chest, 0, walk, sizeof walk, &res);
+            t[q] = now_ms() - t0;
+            nodes += (double)res.nodes;
+            len += res.len;
+            exact += res.exact;
+        }
+        qsort(t, (size_t)n, sizeof t[0], cmp_double);
+        printf("  %4d  %9.3f  %6.1f  %10.0f  %8.2f  %4d%%\n", nk, t[n / 2], t[n - 1],
+               nodes / n, len / n, 100 * exact / n);
+    }
+}
+
+int main(void)
+{
+    printf("== bench_nav: fewest room steps (hol_nav)\n");
+    double t0 = now_ms();
+    hol_nav *nav;
+    if (hol_nav_create(NULL, &nav)) {
+        printf("cannot create navigator\n");
+        return 1;
+    }
+    printf("table radius %d (trusted/exact within %d): built in %.0f ms, "
+           "%.1f MB in all (table %.1f MB, search arena %u nodes)\n",
+           HOL_NAV_DEFAULT_RADIUS, hol_nav_table_exact_radius(nav), now_ms() - t0,
+           (double)hol_nav_memory(nav) / 1048576.0,
+           (double)hol_navtab_table_bytes(HOL_NAV_DEFAULT_RADIUS) / 1048576.0,
+           HOL_NAV_DEFAULT_NODES);
+
+    bench_distances(nav, 0, "per tile distance, default budget (arena, 262144 nodes); "
+                            "<= 12 exact from the table, beyond anytime");
+    bench_distances(nav, 8000, "per tile distance, --budget 8000 (anytime beyond 12)");
+
+    printf("\nanytime quality: share of answers whose first 1/3/5 steps lie on an "
+           "optimal walk, share of optimal length, mean extra steps, time\n");
+    printf("  radius-10 navigator (trusted 8) vs the exact default navigator\n");
+    printf("  dist  budget  first1  first3  first5  optlen  extra  mean_ms   max_ms\n");
+    hol_nav_desc sd = {0};
+    sd.radius = 10;
+    hol_nav *small;
+    if (hol_nav_create(&sd, &small)) {
+        printf("cannot create navigator\n");
+        return 1;
+    }
+    bench_prefix(small, nav, 9, 12, 1000);
+    bench_prefix(small, nav, 9, 12, 8000);
+    hol_nav_destroy(small);
+    printf("  default navigator (trusted 12) vs a radius-15 navigator (trusted 13)\n");
+    hol_nav_desc bd = {0};
+    bd.radius = 15;
+    hol_nav *big;
+    if (hol_nav_create(&bd, &big)) {
+        printf("cannot create the radius-15 navigator\n");
+    } else {
+        bench_prefix(nav, big, 13, 13, 8000);
+        hol_nav_destroy(big);
+    }
+
+    bench_tours(nav);
+    hol_nav_destroy(nav);
+    return 0;
+}

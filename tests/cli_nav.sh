@@ -1,0 +1,157 @@
+#!/bin/sh
+# cli_nav.sh - `holonomy nav` and `holonomy tour`: output format, walks that
+# stay in the room and end on the target (checked with `holonomy tile walk`
+# and a room simulation in awk), the exit status contract of SPEC section 4.
+# $HOLONOMY is the binary under test.
+set -u
+H=${HOLONOMY:-build/holonomy}
+T=$(mktemp -d)
+trap 'rm -rf "$T"' EXIT
+fails=0 passes=0
+ok() { passes=$((passes + 1)); }
+bad() { fails=$((fails + 1)); echo "FAIL: $*"; }
+
+# expect NAME STATUS STDOUT (stdin from $T/in)
+expect() {
+  name=$1 want_status=$2 want_out=$3; shift 3
+  "$@" <"$T/in" >"$T/out" 2>"$T/err"; st=$?
+  printf '%s' "$want_out" >"$T/want"
+  if [ "$st" != "$want_status" ]; then bad "$name: status $st, want $want_status"; return; fi
+  if ! cmp -s "$T/out" "$T/want"; then bad "$name: stdout differs"; diff "$T/want" "$T/out" | head -5; return; fi
+  ok
+}
+# status only (stdin from $T/in)
+expect_status() {
+  name=$1 want_status=$2; shift 2
+  "$@" <"$T/in" >"$T/out" 2>"$T/err"; st=$?
+  if [ "$st" != "$want_status" ]; then bad "$name: status $st, want $want_status"; else ok; fi
+}
+err_line() {
+  if [ "$(wc -l <"$T/err")" -ne 1 ] || ! grep -q -- "$1" "$T/err"; then
+    bad "stderr should be one line with '$1', got: $(cat "$T/err")"; else ok; fi
+}
+# in_room WALK: the walk (letters N/E/S/W, '-' none) stays in the room from (1,1)
+in_room() {
+  printf '%s\n' "$1" | awk '{ c = 1; r = 1; s = $0; if (s == "-") s = "";
+    for (i = 1; i <= length(s); i++) { x = substr(s, i, 1);
+      if (x == "N") r--; else if (x == "S") r++; else if (x == "E") c++;
+      else if (x == "W") c--; else exit 1;
+      if (c < 0 || c > 2 || r < 0 || r > 2) exit 1 } }'
+}
+# check_lines: $T/in holds 'PREFIX TARGET' lines and $T/out 'K WALK' lines;
+# each walk has K steps, PREFIX+WALK stays in the room, and ends on TARGET.
+check_lines() {
+  paste -d ' ' "$T/in" "$T/out" >"$T/pairs"
+  while read -r prefix target k walk; do
+    p=$prefix; [ "$p" = "-" ] && p=""
+    w=$walk; [ "$w" = "-" ] && w=""
+    if [ "${#w}" != "$k" ]; then bad "K $k but walk '$walk' for $prefix $target"; continue; fi
+    if ! in_room "$p$w"; then bad "walk $prefix+$walk leaves the room"; continue; fi
+    got=$(printf '%s\n' "$p$w" | "$H" tile walk | cut -d ' ' -f 1)
+    if [ "$got" != "$target" ]; then bad "$prefix+$walk ends on $got, not $target"; continue; fi
+    ok
+  done <"$T/pairs"
+}
+
+# examples; K values checked against brute force in tests/test_nav.c
+printf -- '- O\n- N\n- Nr\n- Nff\n' >"$T/in"
+"$H" nav <"$T/in" >"$T/out" 2>"$T/err"
+[ $? = 0 ] && ok || bad "nav examples status"
+cut -d ' ' -f 1 "$T/out" | tr '\n' ' ' >"$T/ks"
+[ "$(cat "$T/ks")" = "0 1 2 7 " ] && ok || bad "nav example K: $(cat "$T/ks")"
+head -1 "$T/out" | grep -qx '0 -' && ok || bad "K 0 prints '0 -'"
+check_lines
+
+# straight ahead from the start: 3, 5 and 8 tiles (brute force: 7 11 17)
+printf -- '- Nff\n- Nffff\n- Nfffffff\n' >"$T/in"
+"$H" nav <"$T/in" >"$T/out" 2>"$T/err"
+k=$(cut -d ' ' -f 1 "$T/out" | tr '\n' ' ')
+[ "$k" = "7 11 17 " ] && ok || bad "straight targets: K $k, want 7 11 17"
+check_lines
+
+# prefixes, blanks, CRLF, targets near and far (anytime beyond 12 tiles)
+printf 'NE Nr\nWSEN Elf\nSN Sff\nEWEW Nlfrf\nNESW Wfffff\n- Nffffrffflffff\n- Sfffffffffffffffff\n' >"$T/in"
+"$H" nav --budget 5000 <"$T/in" >"$T/out" 2>"$T/err"
+[ $? = 0 ] && ok || bad "nav mixed status"
+[ ! -s "$T/err" ] && ok || bad "nav mixed: stderr $(cat "$T/err")"
+check_lines
+printf ' \tNE\t Nr \r\n' >"$T/in"
+expect "blanks and CRLF" 0 '0 -
+' "$H" nav
+
+# bad input: exit 2, one stderr line naming the line, earlier lines printed
+printf -- '- N\nNN O\n- O\n' >"$T/in"
+expect "prefix leaves the room" 2 '1 N
+' "$H" nav
+err_line "line 2: prefix step 2"
+printf -- '- Nrr\n' >"$T/in"
+expect "non-canonical target" 2 '' "$H" nav
+err_line "line 1: .*canonical.*El"
+printf -- 'NX O\n' >"$T/in"
+expect "bad step" 2 '' "$H" nav
+err_line "line 1: prefix character 2"
+printf -- '- Q\n' >"$T/in"
+expect "bad address" 2 '' "$H" nav
+err_line "line 1: target"
+printf -- '-\n' >"$T/in"
+expect "missing target" 2 '' "$H" nav
+err_line "line 1"
+printf -- '- O O\n' >"$T/in"
+expect "extra field" 2 '' "$H" nav
+err_line "line 1"
+printf -- '- O\n\n' >"$T/in"
+expect "empty line" 2 '0 -
+' "$H" nav
+err_line "line 2"
+printf -- '- Nfffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff\n' >"$T/in"
+expect "beyond reach" 2 '' "$H" nav
+err_line "line 1"
+
+# options
+: >"$T/in"
+expect_status "help" 0 "$H" nav --help
+grep -q "PREFIX TARGET" "$T/out" && ok || bad "nav --help text"
+expect_status "unknown option" 2 "$H" nav --fast
+err_line "unknown argument"
+expect_status "budget 0" 2 "$H" nav --budget 0
+err_line "budget"
+expect_status "budget missing" 2 "$H" nav --budget
+expect_status "budget junk" 2 "$H" nav --budget=12x
+expect "empty input" 0 '' "$H" nav --budget=100
+
+# tour: K WALK; the walk ends on the chest, stays in the room, visits keys
+: >"$T/in"
+"$H" tour - Nf Wr Sf Nff <"$T/in" >"$T/out" 2>"$T/err"
+[ $? = 0 ] && ok || bad "tour status"
+read -r k walk <"$T/out"
+[ "${#walk}" = "$k" ] && ok || bad "tour K $k vs walk $walk"
+in_room "$walk" && ok || bad "tour walk leaves the room"
+[ "$(printf '%s\n' "$walk" | "$H" tile walk | cut -d ' ' -f 1)" = Nff ] && ok || bad "tour ends off the chest"
+# each key is on the walk: some prefix of it ends on the key
+for key in Nf Wr Sf; do
+  i=0 hit=0
+  while [ $i -le ${#walk} ]; do
+    pre=-; [ $i -gt 0 ] && pre=$(printf '%s' "$walk" | cut -c 1-$i)
+    [ "$(printf '%s\n' "$pre" | "$H" tile walk | cut -d ' ' -f 1)" = "$key" ] && { hit=1; break; }
+    i=$((i + 1))
+  done
+  [ $hit = 1 ] && ok || bad "tour misses key $key"
+done
+expect "tour no keys, chest here" 0 '0 -
+' "$H" tour NE Nr
+expect "tour key here" 0 '1 N
+' "$H" tour - O N
+expect_status "tour too many keys" 2 "$H" tour - N N N N N N O
+err_line "at most 5 keys"
+expect_status "tour bad key" 2 "$H" tour - Nrr O
+err_line "key 'Nrr'"
+expect_status "tour bad chest" 2 "$H" tour - N Q
+err_line "chest 'Q'"
+expect_status "tour bad prefix" 2 "$H" tour NN O
+err_line "prefix step 2"
+expect_status "tour missing chest" 2 "$H" tour -
+expect_status "tour help" 0 "$H" tour --help
+grep -q "PREFIX KEY... CHEST" "$T/out" && ok || bad "tour --help text"
+
+echo "cli_nav: $passes passed, $fails failed"
+[ "$fails" = 0 ]
