@@ -522,15 +522,20 @@ hol_err hol__generate(hol_world *w, hol_tile centre, int radius, int mark_seen)
             dd->trail_pos = pos;
             dd->slot = slot;
             dd->state = (uint32_t)st;
+            dd->choices = (uint32_t)hol__popcount(w->slots[slot].dom);
             hol__trail_push(&b, slot);
             w->slots[slot].dom = UINT32_C(1) << st;
             w->entries[w->slots[slot].entry].state = (uint8_t)st;
             b.nqueue = 0;
             w->queue[b.nqueue++] = slot;
             ok = hol__propagate(&b);
-            /* testing: declare a contradiction at random (never at the
-             * first decision, which has nothing to go back to) */
-            if (ok && w->reject_per_mille && w->ndec > 1 &&
+            /* testing: declare a contradiction at random, but only where
+             * backtracking can absorb it (a ban leaves this domain, or the
+             * previous decision's, non-empty), so the batch stays
+             * satisfiable and the rejections exercise one or two levels */
+            if (ok && w->reject_per_mille &&
+                (dd->choices >= 2 ||
+                 (w->ndec >= 2 && w->dec[w->ndec - 2].choices >= 2)) &&
                 hol__mix(w->slots[slot].hash, ++w->choice_counter) % 1000 <
                     w->reject_per_mille)
                 ok = 0;

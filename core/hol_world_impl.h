@@ -62,6 +62,7 @@ typedef struct hol__decision {
     uint32_t trail_pos;
     uint32_t slot;
     uint32_t state;
+    uint32_t choices; /* states in the domain when decided */
 } hol__decision;
 
 struct hol_world {
@@ -120,6 +121,10 @@ hol_err hol__generate(hol_world *w, hol_tile centre, int radius, int mark_seen);
 void hol__fill_content(const hol_world *w, const hol__entry *e,
                        hol_tile_content *out);
 uint16_t hol__trees_packed(uint64_t seed, hol_tile t);
+
+/* hol_world_io.c: checksum of an image's first n bytes (tests use it to
+ * forge images that pass the checksum but break a rule) */
+uint64_t hol__image_checksum(const uint8_t *p, size_t n);
 
 /* hol_world_check.c: constraint check over any lookup */
 typedef struct hol__rec {

@@ -61,7 +61,7 @@ static uint64_t hol__get64(const uint8_t *p)
     return v;
 }
 
-static uint64_t hol__checksum(const uint8_t *p, size_t n)
+uint64_t hol__image_checksum(const uint8_t *p, size_t n)
 {
     uint64_t h = UINT64_C(0x484f4c574f524c44) ^ n;
     size_t i = 0;
@@ -126,7 +126,7 @@ hol_err hol_world_save(const hol_world *w, void *buf, size_t cap,
         r += HOL__REC;
     }
     qsort(p + HOL__HDR, w->count, HOL__REC, hol__rec_cmp);
-    hol__put64(p + need - 8, hol__checksum(p, need - 8));
+    hol__put64(p + need - 8, hol__image_checksum(p, need - 8));
     *out_len = need;
     return HOL_OK;
 }
@@ -188,7 +188,7 @@ static hol_err hol__parse_header(const void *buf, size_t len, hol__image *im,
         return hol__say(msg, cap, HOL_ECORRUPT,
                         "%llu bytes, but the header promises %llu",
                         (unsigned long long)len, (unsigned long long)expect);
-    if (sum && hol__get64(p + len - 8) != hol__checksum(p, len - 8))
+    if (sum && hol__get64(p + len - 8) != hol__image_checksum(p, len - 8))
         return hol__say(msg, cap, HOL_ECORRUPT,
                         "checksum mismatch (corrupted image)%.0llu%.0llu", 0, 0);
     if (im->radius < 1 || im->radius > HOL_WORLD_MAX_RADIUS)

@@ -221,9 +221,14 @@ static int write_atomic(const char *path, const uint8_t *buf, size_t len)
         free(tmp);
         return 0;
     }
+    /* mkstemp makes 0600; a world file gets the usual 0666 & ~umask */
+    mode_t mask = umask(0);
+    umask(mask);
     size_t done = 0;
     int err = 0;
-    while (done < len) {
+    if (fchmod(fd, 0666 & ~mask) != 0)
+        err = errno;
+    while (!err && done < len) {
         ssize_t n = write(fd, buf + done, len - done);
         if (n < 0) {
             if (errno == EINTR)

@@ -1,0 +1,131 @@
+#!/bin/sh
+# cli_world.sh - `holonomy world`: output format, determinism, --check,
+# atomic --save, --load (round trip, continuing walks), bad files and bad
+# usage (exit 2, one line on stderr, files untouched). $HOLONOMY is the
+# binary under test.
+set -u
+H=${HOLONOMY:-build/holonomy}
+T=$(mktemp -d)
+trap 'rm -rf "$T"' EXIT
+fails=0 passes=0
+ok() { passes=$((passes + 1)); }
+bad() { fails=$((fails + 1)); echo "FAIL: $*"; }
+
+# run NAME WANT-STATUS CMD...: stdout in $T/out, stderr in $T/err
+run() {
+  name=$1 want=$2; shift 2
+  "$@" >"$T/out" 2>"$T/err"; st=$?
+  if [ "$st" != "$want" ]; then bad "$name: status $st, want $want ($(head -c 200 "$T/err"))"; return 1; fi
+  ok
+}
+# stderr is exactly one line mentioning $2
+one_line() {
+  if [ "$(wc -l <"$T/err")" -ne 1 ] || ! grep -q -- "$2" "$T/err"; then
+    bad "$1: stderr should be one line with '$2', got: $(cat "$T/err")"; else ok; fi
+}
+same() { if cmp -s "$2" "$3"; then ok; else bad "$1: $2 and $3 differ"; fi; }
+lines() { n=$(wc -l <"$T/out"); if [ "$n" -eq "$2" ]; then ok; else bad "$1: $n lines, want $2"; fi; }
+
+run "help" 0 "$H" world --help
+grep -q "ADDRESS BIOME OBJECT ROTATION CONNECTORS" "$T/out" && ok || bad "help lacks the format"
+
+# format and ball sizes (1, 5, 17, 45, 109 tiles within 0..4)
+run "radius 0" 0 "$H" world --seed 3 --walk NE --radius 0
+lines "radius 0" 1
+grep -q '^Nr ' "$T/out" && ok || bad "radius 0: the end tile of NE is Nr, got $(cat "$T/out")"
+for r in 1:5 2:17 3:45 4:109 6:597; do
+  run "radius ${r%:*}" 0 "$H" world --seed 3 --walk NE --radius "${r%:*}"
+  lines "radius ${r%:*}" "${r#*:}"
+done
+run "default radius" 0 "$H" world --seed 3 --walk NE
+lines "default radius" 109
+if grep -Evq '^(O|[NESW][flr]*) (meadow|pine|wetland|autumn) (none|grass|flowers|log|creek|spring|pool|rock|mushroom) [0-3] [-cl]{4}$' "$T/out"; then
+  bad "format: $(grep -Ev '^(O|[NESW][flr]*) (meadow|pine|wetland|autumn) (none|grass|flowers|log|creek|spring|pool|rock|mushroom) [0-3] [-cl]{4}$' "$T/out" | head -2)"
+else ok; fi
+# object and connectors agree: logs have exactly one 'l', creeks 2..4 'c'
+awk '$3=="log" && gsub(/l/,"l",$5)!=1 {print; bad=1}
+     $3=="creek" && gsub(/c/,"c",$5)<2 {print; bad=1}
+     $3!="log" && $5 ~ /l/ {print; bad=1}
+     END {exit bad}' "$T/out" >"$T/shape" && ok || bad "shapes: $(head -2 "$T/shape")"
+# sorted by distance from the end tile: O is one step from Nr
+head -1 "$T/out" | grep -q '^Nr ' && ok || bad "first line is not the end tile"
+
+# determinism, and another seed gives another world
+"$H" world --seed 42 --walk NWSEENWW --radius 5 >"$T/a"
+"$H" world --seed 42 --walk NWSEENWW --radius 5 >"$T/b"
+"$H" world --seed 43 --walk NWSEENWW --radius 5 >"$T/c"
+same "determinism" "$T/a" "$T/b"
+if cmp -s "$T/a" "$T/c"; then bad "seeds 42 and 43 give the same world"; else ok; fi
+# a world wide enough to show creeks, logs and all biomes somewhere
+"$H" world --seed 1 --radius 8 >"$T/wide"
+for o in log creek spring pool rock mushroom flowers grass; do
+  grep -q " $o " "$T/wide" && ok || bad "radius 8 of seed 1 shows no $o"
+done
+for b in meadow pine wetland autumn; do
+  grep -q " $b " "$T/wide" && ok || bad "radius 8 of seed 1 shows no $b"
+done
+
+run "check" 0 "$H" world --seed 9 --walk NWSSEENWN --check --quiet
+[ -s "$T/out" ] && bad "--quiet printed tiles" || ok
+
+# save, load, continue
+run "save" 0 "$H" world --seed 5 --walk NWS --save "$T/w.hw" --quiet
+[ -s "$T/w.hw" ] && ok || bad "save wrote nothing"
+ls "$T" | grep -q 'tmp-' && bad "save left a temporary file" || ok
+"$H" world --seed 5 --walk NWS >"$T/direct"
+run "load" 0 "$H" world --load "$T/w.hw" --check
+cp "$T/out" "$T/loaded"
+same "load prints the saved world" "$T/direct" "$T/loaded"
+"$H" world --seed 5 --walk NWSENE >"$T/direct2"
+run "load and walk on" 0 "$H" world load "$T/w.hw" --walk ENE
+same "a loaded world walks on like the original" "$T/direct2" "$T/out"
+run "save subcommand" 0 "$H" world save "$T/w2.hw" --seed 5 --walk NWS --quiet
+same "save subcommand writes the same file" "$T/w.hw" "$T/w2.hw"
+
+# bad files: exit 2, one line, the file untouched, no partial output
+cp "$T/w.hw" "$T/orig.hw"
+head -c 100 "$T/w.hw" >"$T/trunc.hw"
+cp "$T/trunc.hw" "$T/trunc.copy"
+run "truncated" 2 "$H" world --load "$T/trunc.hw"
+one_line "truncated" "truncated"
+[ -s "$T/out" ] && bad "truncated: printed output" || ok
+same "truncated file untouched" "$T/trunc.hw" "$T/trunc.copy"
+run "truncated, save over it" 2 "$H" world --load "$T/trunc.hw" --save "$T/trunc.hw"
+same "failed load does not overwrite the file" "$T/trunc.hw" "$T/trunc.copy"
+# one changed byte in a record; the version field set to 2
+cp "$T/w.hw" "$T/flip.hw"
+printf 'X' | dd of="$T/flip.hw" bs=1 seek=200 conv=notrunc 2>/dev/null
+cp "$T/w.hw" "$T/v2.hw"
+printf '\002' | dd of="$T/v2.hw" bs=1 seek=8 conv=notrunc 2>/dev/null
+run "corrupt" 2 "$H" world --load "$T/flip.hw"
+one_line "corrupt" "checksum"
+run "wrong version" 2 "$H" world --load "$T/v2.hw"
+one_line "wrong version" "version 2"
+printf 'hello world, not a world\n' >"$T/text.hw"
+run "not an image" 2 "$H" world --load "$T/text.hw"
+one_line "not an image" "not a holonomy world"
+run "missing file" 2 "$H" world --load "$T/nope.hw"
+one_line "missing file" "cannot open"
+same "original untouched" "$T/w.hw" "$T/orig.hw"
+run "unwritable" 1 "$H" world --seed 1 --quiet --save "$T/no/such/dir/w.hw"
+one_line "unwritable" "cannot"
+
+# bad usage
+run "radius 9" 2 "$H" world --radius 9
+one_line "radius 9" "radius"
+run "negative seed" 2 "$H" world --seed -1
+one_line "negative seed" "seed"
+run "leaves the room" 2 "$H" world --walk NNN
+one_line "leaves the room" "step 2"
+[ -s "$T/out" ] && bad "leaves the room: printed output" || ok
+run "bad step" 2 "$H" world --walk NX
+one_line "bad step" "character 2"
+run "unknown option" 2 "$H" world --colour
+one_line "unknown option" "unknown argument"
+run "seed and load" 2 "$H" world --seed 1 --load "$T/w.hw"
+one_line "seed and load" "exclude"
+run "missing value" 2 "$H" world --walk
+one_line "missing value" "needs a value"
+
+echo "cli_world: $passes passed, $fails failed"
+[ "$fails" -eq 0 ]
