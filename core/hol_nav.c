@@ -620,6 +620,9 @@ typedef struct hol__tour {
     int nkeys;
     hol_tile chest;
     int key_chest[HOL_NAV_TOUR_MAX_KEYS];
+    /* mst[mask]: minimum spanning tree over the chest and the keys NOT in
+     * mask, edges the least cost between two tiles from any room state */
+    int mst[1 << HOL_NAV_TOUR_MAX_KEYS];
     unsigned full;
 } hol__tour;
 
@@ -632,18 +635,51 @@ static unsigned hol__keys_on(const hol__tour *t, hol_tile tile)
     return m;
 }
 
+/* Admissible: the walk still has to reach every key left and then the
+ * chest, so it costs at least (a) the cost to the chest, (b) for each key
+ * left, the cost to it plus the least cost from it to the chest, and (c)
+ * the cost to the nearest key left plus a spanning tree over the keys left
+ * and the chest (the rest of the walk joins them all). */
 static int hol__tour_h(const hol_nav *nav, const hol__tour *t, const hol__node *n)
 {
-    int h = hol__lb(nav, n->u.t, n->o, n->cell, t->chest);
+    int h = hol__lb(nav, n->u.t, n->o, n->cell, t->chest), nearest = INT32_MAX;
     unsigned mask = n->flags & HOL__MASK;
     for (int i = 0; i < t->nkeys; i++) {
         if (mask & (1u << i))
             continue;
-        int k = hol__lb(nav, n->u.t, n->o, n->cell, t->keys[i]) + t->key_chest[i];
-        if (k > h)
-            h = k;
+        int c = hol__lb(nav, n->u.t, n->o, n->cell, t->keys[i]);
+        if (c < nearest)
+            nearest = c;
+        if (c + t->key_chest[i] > h)
+            h = c + t->key_chest[i];
     }
+    if (nearest != INT32_MAX && nearest + t->mst[mask] > h)
+        h = nearest + t->mst[mask];
     return h;
+}
+
+/* Prim over the chest and the keys not in mask. */
+static int hol__tour_mst(const int w[HOL_NAV_TOUR_MAX_KEYS + 1][HOL_NAV_TOUR_MAX_KEYS + 1],
+                         int nkeys, unsigned mask)
+{
+    int in[HOL_NAV_TOUR_MAX_KEYS + 1] = {0}, best[HOL_NAV_TOUR_MAX_KEYS + 1];
+    int total = 0, chest = nkeys;
+    for (int i = 0; i <= nkeys; i++)
+        best[i] = w[chest][i];
+    in[chest] = 1;
+    for (;;) {
+        int pick = -1;
+        for (int i = 0; i < nkeys; i++)
+            if (!in[i] && !(mask & (1u << i)) && (pick < 0 || best[i] < best[pick]))
+                pick = i;
+        if (pick < 0)
+            return total;
+        in[pick] = 1;
+        total += best[pick];
+        for (int i = 0; i < nkeys; i++)
+            if (w[pick][i] < best[i])
+                best[i] = w[pick][i];
+    }
 }
 
 /* Greedy fallback: nearest key by tile distance, exact-or-anytime legs. */
@@ -701,8 +737,16 @@ hol_err hol_nav_tour(hol_nav *nav, const hol_room *start, const hol_tile *keys,
     t.nkeys = nkeys;
     t.chest = chest;
     t.full = (1u << nkeys) - 1;
+    int wt[HOL_NAV_TOUR_MAX_KEYS + 1][HOL_NAV_TOUR_MAX_KEYS + 1];
+    for (int i = 0; i <= nkeys; i++)
+        for (int j = 0; j <= nkeys; j++)
+            wt[i][j] = i == j ? 0
+                             : hol__lb_any(nav, i < nkeys ? keys[i] : chest,
+                                           j < nkeys ? keys[j] : chest);
     for (int i = 0; i < nkeys; i++)
-        t.key_chest[i] = hol__lb_any(nav, keys[i], chest);
+        t.key_chest[i] = wt[i][nkeys];
+    for (unsigned m = 0; m < (1u << nkeys); m++)
+        t.mst[m] = hol__tour_mst((const int(*)[HOL_NAV_TOUR_MAX_KEYS + 1])wt, nkeys, m);
     if (budget == 0 || budget > nav->cap)
         budget = nav->cap;
     hol__walk w = {out_walk, cap, 0, 0};

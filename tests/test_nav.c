@@ -398,6 +398,30 @@ static void test_far(void **state)
         assert_true(res.len >= d);
         assert_true(res.len <= 4 * d + 8);
     }
+    /* user and target on opposite sides of O, 90 tiles apart: farther than
+     * a relative address reaches, so the waypoint chain alone answers */
+    {
+        hol_room u = hol_room_start();
+        hol_tile t;
+        assert_int_equal(hol_tile_parse("Sffffffffffffffffffffffffffffffffffffffff", -1, &u.tile),
+                         HOL_OK);
+        assert_int_equal(
+            hol_tile_parse("Nfffffffffffffffffffffffffffffffffffffffffffffffff", -1, &t),
+            HOL_OK);
+        u.orient = 2;
+        u.col = 0;
+        u.row = 2;
+        assert_int_equal(hol_tile_dist(u.tile, t), 91);
+        uint8_t walk[HOL_NAV_WALK_MAX];
+        hol_nav_result res;
+        assert_int_equal(hol_nav_find(g_nav, &u, t, 100, walk, sizeof walk, &res), HOL_OK);
+        assert_int_equal(res.exact, 0);
+        check_walk(&u, walk, res.len, t);
+        assert_true(res.len >= 91 && res.len <= 4 * 91);
+        /* bad states are refused */
+        u.col = 3;
+        assert_int_equal(hol_nav_find(g_nav, &u, t, 100, walk, sizeof walk, &res), HOL_EARG);
+    }
     /* a buffer too small is an error, not a truncated walk */
     hol_room s = hol_room_start();
     hol_tile t;

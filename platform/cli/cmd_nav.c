@@ -25,6 +25,7 @@ static const char *const nav_usage =
     "\n"
     "  --budget N   node budget of the anytime search for targets beyond 12\n"
     "               tiles (default and maximum 262144; about 2 ms per 10000)\n"
+    "  --stats      also print per line 'LINE exact|anytime NODES' on stderr\n"
     "  -h, --help   this text\n"
     "\n"
     "Exit status: 0 ok, 1 output or memory failure, 2 bad input or usage\n"
@@ -51,8 +52,11 @@ int cli_cmd_nav(int argc, char **argv)
         return cli_finish_output(cmd);
     }
     size_t budget = 0;
+    int stats = 0;
     for (int i = 1; i < argc; i++) {
-        if (!strcmp(argv[i], "--budget")) {
+        if (!strcmp(argv[i], "--stats")) {
+            stats = 1;
+        } else if (!strcmp(argv[i], "--budget")) {
             if (i + 1 >= argc || !(budget = parse_count(argv[i + 1]))) {
                 cli_error(cmd, 0, "--budget needs a positive node count; see --help");
                 return CLI_EXIT_USAGE;
@@ -101,6 +105,9 @@ int cli_cmd_nav(int argc, char **argv)
             text[i] = hol_dir_to_char(walk[i]);
         text[res.len] = '\0';
         printf("%d %s\n", res.len, res.len ? text : "-");
+        if (stats)
+            fprintf(stderr, "%ld %s %zu\n", in.lineno, res.exact ? "exact" : "anytime",
+                    res.nodes);
     }
     if (status == CLI_EXIT_OK && r < 0) {
         cli_error(cmd, 0, "cannot read input");

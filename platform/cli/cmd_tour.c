@@ -23,6 +23,7 @@ static const char *const tour_usage =
     "are visited nearest first instead and K is that walk's length.\n"
     "\n"
     "  --budget N   node budget (default and maximum 262144)\n"
+    "  --stats      also print 'exact|greedy NODES' on stderr\n"
     "  -h, --help   this text\n"
     "\n"
     "Exit status: 0 ok, 1 output or memory failure, 2 bad arguments.\n";
@@ -47,6 +48,7 @@ int cli_cmd_tour(int argc, char **argv)
         return cli_finish_output(cmd);
     }
     size_t budget = 0;
+    int stats = 0;
     const char *pos[HOL_NAV_TOUR_MAX_KEYS + 2];
     int npos = 0;
     for (int i = 1; i < argc; i++) {
@@ -57,6 +59,8 @@ int cli_cmd_tour(int argc, char **argv)
                 cli_error(cmd, 0, "--budget needs a positive node count; see --help");
                 return CLI_EXIT_USAGE;
             }
+        } else if (!strcmp(a, "--stats")) {
+            stats = 1;
         } else if (a[0] == '-' && a[1] != '\0') {
             cli_error(cmd, 0, "unknown option '%.40s'; see --help", a);
             return CLI_EXIT_USAGE;
@@ -108,5 +112,7 @@ int cli_cmd_tour(int argc, char **argv)
         text[i] = hol_dir_to_char(walk[i]);
     text[res.len] = '\0';
     printf("%d %s\n", res.len, res.len ? text : "-");
+    if (stats)
+        fprintf(stderr, "%s %zu\n", res.exact ? "exact" : "greedy", res.nodes);
     return cli_finish_output(cmd);
 }
