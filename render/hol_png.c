@@ -251,6 +251,12 @@ hol_err hol_png_decode(const uint8_t *data, size_t size, uint8_t **out_rgba,
     int bpp = ctype == 0 ? 1 : ctype == 4 ? 2 : ctype == 2 ? 3 : 4;
     size_t stride = (size_t)w * (size_t)bpp + 1;
     uLongf rawn = (uLongf)(stride * h);
+    /* deflate expands at most ~1032:1: refuse sizes the data cannot hold
+     * before allocating for them */
+    if ((double)rawn > (double)zn * 1100.0 + 1024.0) {
+        free(z);
+        return HOL_ECORRUPT;
+    }
     uint8_t *raw = malloc(rawn ? rawn : 1);
     uint8_t *rgba = malloc((size_t)w * h * 4);
     if (!raw || !rgba) {

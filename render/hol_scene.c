@@ -24,7 +24,7 @@ struct hol_scene {
 };
 
 static const uint8_t hol__trunk[3] = {104, 74, 50};
-static const uint8_t hol__hedge[3] = {40, 98, 46};
+static const uint8_t hol__hedge[3] = {56, 118, 60};
 static const uint8_t hol__white[3] = {255, 255, 255};
 
 void hol_scene_sky(float out_rgb[3])
@@ -40,22 +40,22 @@ static void hol__build_templates(hol_scene *s)
     /* trees: trunks 3.2 m, taller than any standing eye, so the seam behind
      * each vertex stays hidden; crowns start above 2.2 m */
     m = &s->tpl[HOL__T_PINE];
-    hol_mesh_frustum(m, 7, 0.10f, 0.0f, 0.07f, 3.2f, hol__trunk);
+    hol_mesh_frustum(m, 8, 0.09f, 0.0f, 0.07f, 3.2f, hol__trunk);
     hol_mesh_frustum(m, 8, 0.80f, 2.2f, 0.0f, 3.9f, (const uint8_t[3]){34, 92, 52});
     hol_mesh_frustum(m, 8, 0.60f, 3.2f, 0.0f, 4.6f, (const uint8_t[3]){40, 104, 58});
     hol_mesh_frustum(m, 8, 0.40f, 4.1f, 0.0f, 5.2f, (const uint8_t[3]){46, 116, 64});
     m = &s->tpl[HOL__T_BIRCH];
-    hol_mesh_frustum(m, 7, 0.09f, 0.0f, 0.06f, 3.6f, (const uint8_t[3]){225, 222, 210});
+    hol_mesh_frustum(m, 8, 0.085f, 0.0f, 0.07f, 3.6f, (const uint8_t[3]){225, 222, 210});
     hol_mesh_blob(m, (const float[3]){0, 3.6f, 0}, 0.75f, 1.1f, 0.75f,
                   (const uint8_t[3]){120, 170, 70});
     m = &s->tpl[HOL__T_OAK];
-    hol_mesh_frustum(m, 7, 0.13f, 0.0f, 0.10f, 3.2f, hol__trunk);
+    hol_mesh_frustum(m, 8, 0.11f, 0.0f, 0.08f, 3.2f, hol__trunk);
     hol_mesh_blob(m, (const float[3]){0, 3.5f, 0}, 1.1f, 0.9f, 1.1f,
                   (const uint8_t[3]){60, 120, 50});
     hol_mesh_blob(m, (const float[3]){0.3f, 4.1f, 0.2f}, 0.7f, 0.6f, 0.7f,
                   (const uint8_t[3]){70, 135, 56});
     m = &s->tpl[HOL__T_MAPLE];
-    hol_mesh_frustum(m, 7, 0.11f, 0.0f, 0.08f, 3.2f, hol__trunk);
+    hol_mesh_frustum(m, 8, 0.10f, 0.0f, 0.075f, 3.2f, hol__trunk);
     hol_mesh_blob(m, (const float[3]){0, 3.6f, 0}, 0.95f, 1.0f, 0.95f,
                   (const uint8_t[3]){200, 90, 40});
     /* a grass tuft: three thin blades */
@@ -193,6 +193,26 @@ void hol_scene_room(const hol_scene *s, hol_mesh *out, const hol_view *view,
             hol_place p = {(float)i, 0, (float)j, 0.7f * (float)(i * 4 + j), sc};
             hol_mesh_append(out, &s->tpl[tr.kind & 3], p);
         }
+    /* a backdrop forest beyond the hedges (decoration in the room frame:
+     * no floor, no tiles; seen over the hedge tops) */
+    uint64_t rs = 0x666f72657374ull;
+    for (int k = 0; k < 40; k++) {
+        float t = (float)k / 40.0f * 12.0f, d = 0.9f + 2.2f * hol__unit(&rs);
+        float x, z;
+        if (t < 3) {
+            x = t; z = -d;
+        } else if (t < 6) {
+            x = 3 + d; z = t - 3;
+        } else if (t < 9) {
+            x = 9 - t; z = 3 + d;
+        } else {
+            x = -d; z = 12 - t;
+        }
+        hol_place p = {x + 0.3f * hol__unit(&rs), 0, z, hol__unit(&rs) * 6.28f,
+                       1.0f + 0.6f * hol__unit(&rs)};
+        int kind = (int)(hol__mix(&rs) % 4);
+        hol_mesh_append(out, &s->tpl[kind], p);
+    }
     /* hedges on the boundary, 2 m high, 0.3 m thick, outside the room,
      * in slightly varied segments */
     const float h = 2.0f, th = 0.3f, n = (float)HOL_ROOM_SIZE;
@@ -214,6 +234,9 @@ void hol_scene_room(const hol_scene *s, hol_mesh *out, const hol_view *view,
             hi[1] = hh;
             uint8_t c[3] = {hol__hedge[0], (uint8_t)(hol__hedge[1] + 6 * (k % 3)), hol__hedge[2]};
             hol_mesh_box(out, lo, hi, c);
+            float top[3] = {0.5f * (lo[0] + hi[0]), hh, 0.5f * (lo[2] + hi[2])};
+            uint8_t c2[3] = {(uint8_t)(c[0] + 8), (uint8_t)(c[1] + 10), (uint8_t)(c[2] + 6)};
+            hol_mesh_blob(out, top, 0.34f, 0.16f, 0.34f, c2);
         }
 }
 
@@ -231,6 +254,39 @@ static void hol__biome_rgb(int biome, uint64_t h, uint8_t rgb[3])
         int v = b[k] + dv;
         rgb[k] = (uint8_t)(v < 0 ? 0 : v > 255 ? 255 : v);
     }
+}
+
+/* The ground: a 4 x 4 grid with a little per-vertex shade variation. */
+static void hol__ground(hol_mesh *out, uint64_t h, const uint8_t rgb[3])
+{
+    enum { N = 4 };
+    int64_t b = hol_mesh_reserve(out, (N + 1) * (N + 1), N * N * 6);
+    if (b < 0)
+        return;
+    uint64_t rs = h ^ 0x67726f756e64ull;
+    for (int j = 0; j <= N; j++)
+        for (int i = 0; i <= N; i++) {
+            int dv = (int)(hol__mix(&rs) % 25) - 12;
+            uint8_t c[3];
+            for (int k = 0; k < 3; k++) {
+                int v = rgb[k] + dv;
+                c[k] = (uint8_t)(v < 0 ? 0 : v > 255 ? 255 : v);
+            }
+            hol_vertex *v = &out->v[out->nv++];
+            memset(v, 0, sizeof *v);
+            v->pos[0] = -0.5f + (float)i / N;
+            v->pos[2] = -0.5f + (float)j / N;
+            v->nrm[1] = 127;
+            memcpy(v->rgba, c, 3);
+            v->rgba[3] = HOL_MESH_FLOOR;
+        }
+    for (int j = 0; j < N; j++)
+        for (int i = 0; i < N; i++) {
+            uint32_t a = (uint32_t)b + (uint32_t)(j * (N + 1) + i);
+            uint32_t t[6] = {a, a + N + 1, a + N + 2, a, a + N + 2, a + 1};
+            memcpy(out->idx + out->ni, t, sizeof t);
+            out->ni += 6;
+        }
 }
 
 /* A floor strip (water) from the tile centre to edge d. */
@@ -261,7 +317,7 @@ void hol_scene_tile(const hol_scene *s, hol_mesh *out, hol_tile t,
     }
     uint8_t rgb[3];
     hol__biome_rgb(c.biome, h, rgb);
-    hol_mesh_quad_y(out, -0.5f, -0.5f, 0.5f, 0.5f, 0.0f, rgb, HOL_MESH_FLOOR);
+    hol__ground(out, h, rgb);
     if (!have) {
         /* placeholder: a darker strip on the heading edge shows the frame */
         uint8_t dark[3] = {(uint8_t)(rgb[0] * 3 / 5), (uint8_t)(rgb[1] * 3 / 5),
@@ -284,12 +340,21 @@ void hol_scene_tile(const hol_scene *s, hol_mesh *out, hol_tile t,
     if (bare)
         return;
     uint64_t rs = h ^ 0x5eedull;
+    /* a few tufts on every tile but the wettest */
+    if (c.object != HOL_OBJ_GRASS && c.object != HOL_OBJ_NONE && c.object != HOL_OBJ_POOL)
+        for (int k = 0; k < 10; k++) {
+            hol_place q = {hol__unit(&rs) * 0.9f - 0.45f, 0, hol__unit(&rs) * 0.9f - 0.45f,
+                           hol__unit(&rs) * 6.28f, 0.7f + 0.4f * hol__unit(&rs)};
+            if (ncreek && fabsf(q.x) < 0.18f && fabsf(q.z) < 0.18f)
+                continue;
+            hol_mesh_append(out, &s->tpl[HOL__T_TUFT], q);
+        }
     float rot = (float)(c.rotation & 3) * HOL__PI_2;
     hol_place p = {0, 0, 0, rot, 1};
     switch (c.object) {
     case HOL_OBJ_GRASS:
     case HOL_OBJ_NONE: {
-        int n = c.object == HOL_OBJ_GRASS ? 14 : 4;
+        int n = c.object == HOL_OBJ_GRASS ? 48 : 20;
         for (int k = 0; k < n; k++) {
             hol_place q = {hol__unit(&rs) * 0.8f - 0.4f, 0, hol__unit(&rs) * 0.8f - 0.4f,
                            hol__unit(&rs) * 6.28f, 0.8f + 0.5f * hol__unit(&rs)};

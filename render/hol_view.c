@@ -130,7 +130,7 @@ static void hol__add_branch(hol_view *v, const hol_room *user, const uint8_t *st
 {
     for (int i = 0; i < v->nbranches; i++) {
         const hol_view_branch *b = &v->branches[i];
-        if (b->nsteps == n && !memcmp(b->steps, steps, (size_t)n))
+        if (b->nsteps == n && (n == 0 || !memcmp(b->steps, steps, (size_t)n)))
             return;
     }
     if (v->nbranches >= HOL_VIEW_MAX_BRANCHES)
@@ -139,7 +139,8 @@ static void hol__add_branch(hol_view *v, const hol_room *user, const uint8_t *st
     memset(b, 0, sizeof *b);
     b->state = *user;
     b->nsteps = (uint8_t)n;
-    memcpy(b->steps, steps, (size_t)n);
+    if (n > 0)
+        memcpy(b->steps, steps, (size_t)n);
     b->err = hol_room_walk(&b->state, steps, (size_t)n, NULL);
     if (stencil && n > 0) {
         b->ref = hol_view_code(steps, n);

@@ -50,7 +50,7 @@ static const golden_view views[] = {
     {"edge_north", "N", {1.5, 1.6, 0.4}, 180, -30, 90, 0},
     {"along_edge", "E", {2.5, 1.6, 1.03}, 90, -15, 90, 0},
     {"along_edge_bare", "E", {2.5, 1.6, 1.03}, 90, -15, 90, HOL_RENDER_BARE},
-    {"deep_tile", "NWSSEEN", {2.3, 1.7, 1.6}, 200, -25, 90, 0},
+    {"deep_tile", "NWSSEEN", {2.3, 1.7, 1.6}, 120, -30, 90, 0},
     {"low_eye", "S", {1.6, 0.8, 2.4}, 10, -10, 90, 0},
     {"wide_west", "W", {0.7, 1.6, 1.3}, -70, -35, 120, 0},
     {"euclidean_centre", "-", {1.5, 1.6, 1.5}, 0, -30, 90, HOL_RENDER_EUCLIDEAN},
@@ -72,7 +72,7 @@ static int setup(void **state)
     }
     hol_world_desc wd;
     memset(&wd, 0, sizeof wd);
-    wd.seed = 7;
+    wd.seed = 2;
     wd.capacity = 1u << 14;
     if (hol_world_make(&wd, &world))
         return -1;
@@ -222,6 +222,84 @@ static void test_comparison_detects_change(void **state)
     free(back);
 }
 
+/* Rewrite every chunk CRC so mutations reach the inflate and unfilter code
+ * instead of stopping at the checksum. */
+static void fix_crcs(uint8_t *d, size_t n)
+{
+    size_t pos = 8;
+    while (pos + 12 <= n) {
+        uint32_t len = (uint32_t)d[pos] << 24 | (uint32_t)d[pos + 1] << 16 |
+                       (uint32_t)d[pos + 2] << 8 | d[pos + 3];
+        if (len > n - pos - 12)
+            return;
+        uint32_t c = 0xffffffffu;
+        for (size_t i = pos + 4; i < pos + 8 + len; i++) {
+            c ^= d[i];
+            for (int k = 0; k < 8; k++)
+                c = (c >> 1) ^ (0xedb88320u & (0u - (c & 1)));
+        }
+        c ^= 0xffffffffu;
+        uint8_t *q = d + pos + 8 + len;
+        q[0] = (uint8_t)(c >> 24);
+        q[1] = (uint8_t)(c >> 16);
+        q[2] = (uint8_t)(c >> 8);
+        q[3] = (uint8_t)c;
+        pos += 12 + len;
+    }
+}
+
+/* The reader never crashes or over-reads on damaged files: thousands of
+ * mutated and truncated images either decode to the stated size or fail
+ * with an error. (render/ is outside the libFuzzer harnesses, which link the
+ * core only; this is its fuzz-style test.) */
+static void test_png_reader_survives_damage(void **state)
+{
+    (void)state;
+    static uint8_t img[32 * 24 * 4];
+    for (size_t i = 0; i < sizeof img; i++)
+        img[i] = (uint8_t)(i * 7 + (i >> 5));
+    uint8_t *good;
+    size_t n;
+    assert_int_equal(hol_png_encode(img, 32, 24, 1, &good, &n), HOL_OK);
+    uint8_t *buf = malloc(n);
+    assert_non_null(buf);
+    uint64_t rng = 99;
+    int ok = 0, errors = 0;
+    for (int it = 0; it < 4000; it++) {
+        memcpy(buf, good, n);
+        size_t len = n;
+        int muts = 1 + it % 4;
+        for (int m = 0; m < muts; m++) {
+            rng = rng * 6364136223846793005ull + 1442695040888963407ull;
+            size_t at = (size_t)(rng >> 33) % n;
+            buf[at] ^= (uint8_t)(1u << ((rng >> 20) & 7));
+        }
+        if (it % 5 == 0) {
+            rng = rng * 6364136223846793005ull + 1442695040888963407ull;
+            len = (size_t)(rng >> 33) % n;
+        }
+        if (it % 2 == 0)
+            fix_crcs(buf, len);
+        uint8_t *out = NULL;
+        int w = 0, h = 0;
+        hol_err e = hol_png_decode(buf, len, &out, &w, &h);
+        if (e == HOL_OK) {
+            assert_true(w > 0 && h > 0 && w <= HOL_PNG_MAX_DIM && h <= HOL_PNG_MAX_DIM);
+            volatile uint8_t last = out[(size_t)w * (size_t)h * 4 - 1];
+            (void)last;
+            free(out);
+            ok++;
+        } else {
+            assert_true(e == HOL_ECORRUPT || e == HOL_EUNSUPPORTED || e == HOL_ENOMEM);
+            errors++;
+        }
+    }
+    assert_true(errors > 1000);
+    free(buf);
+    free(good);
+    (void)ok;
+}
+
 int main(int argc, char **argv)
 {
     (void)argc;
@@ -233,6 +311,7 @@ int main(int argc, char **argv)
                  (int)(strrchr(argv[0], '/') - argv[0]), argv[0]);
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_comparison_detects_change),
+        cmocka_unit_test(test_png_reader_survives_damage),
         cmocka_unit_test(test_goldens),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
