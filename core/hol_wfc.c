@@ -110,10 +110,30 @@ uint32_t hol__weight(int biome, int s)
 
 static int hol__popcount(uint32_t x)
 {
+#if defined(__GNUC__)
+    return __builtin_popcount(x);
+#else
     int n = 0;
     for (; x; x &= x - 1)
         n++;
     return n;
+#endif
+}
+
+/* The open list: ball slots not collapsed, for the lowest-entropy pick. */
+static void hol__open_add(hol_world *w, uint32_t slot)
+{
+    w->slots[slot].open_pos = w->nopen;
+    w->open[w->nopen++] = slot;
+}
+
+static void hol__open_remove(hol_world *w, uint32_t slot)
+{
+    uint32_t pos = w->slots[slot].open_pos;
+    uint32_t last = w->open[--w->nopen];
+    w->open[pos] = last;
+    w->slots[last].open_pos = pos;
+    w->slots[slot].open_pos = UINT32_MAX;
 }
 
 /* Connectors the states of dom allow on edge e, as a 3-bit set. */
@@ -158,6 +178,8 @@ static void hol__undo(hol__batch *b, uint32_t pos)
         hol__trail *t = &w->trail[--w->ntrail];
         hol__entry *e = &w->entries[w->slots[t->slot].entry];
         w->slots[t->slot].dom = t->dom;
+        if (t->state == HOL__UNSET && e->state != HOL__UNSET)
+            hol__open_add(w, t->slot);
         e->state = t->state;
         e->biome = t->biome;
         e->depth = t->depth;
@@ -338,6 +360,12 @@ static hol_err hol__init_domains(hol__batch *b)
         if (!s->dom)
             return HOL_ECORRUPT;
     }
+    w->nopen = 0;
+    for (uint32_t i = 0; i < w->nslots; i++) {
+        w->slots[i].open_pos = UINT32_MAX;
+        if (!w->slots[i].ring && w->entries[w->slots[i].entry].state == HOL__UNSET)
+            hol__open_add(w, i);
+    }
     /* arc consistency from every ball tile */
     b->nqueue = 0;
     for (uint32_t i = 0; i < w->nslots; i++)
@@ -452,10 +480,9 @@ static int64_t hol__pick(hol_world *w)
     int64_t best = -1;
     int best_n = 99;
     uint64_t best_h = 0;
-    for (uint32_t i = 0; i < w->nslots; i++) {
+    for (uint32_t k = 0; k < w->nopen; k++) {
+        uint32_t i = w->open[k];
         const hol__slot *s = &w->slots[i];
-        if (s->ring || w->entries[s->entry].state != HOL__UNSET)
-            continue;
         int n = hol__popcount(s->dom);
         if (n < best_n || (n == best_n && s->hash < best_h)) {
             best = i;
@@ -526,6 +553,7 @@ hol_err hol__generate(hol_world *w, hol_tile centre, int radius, int mark_seen)
             hol__trail_push(&b, slot);
             w->slots[slot].dom = UINT32_C(1) << st;
             w->entries[w->slots[slot].entry].state = (uint8_t)st;
+            hol__open_remove(w, slot);
             b.nqueue = 0;
             w->queue[b.nqueue++] = slot;
             ok = hol__propagate(&b);

@@ -56,7 +56,7 @@ int hol__tile_valid(hol_tile t)
 typedef struct hol__layout {
     uint32_t cap, max_slots, map_size, max_trail, max_reserve;
     size_t off_entries, off_slots, off_map_key, off_map_val, off_trail, off_dec,
-        off_queue, off_reserve, total;
+        off_queue, off_open, off_reserve, total;
 } hol__layout;
 
 static size_t hol__align(size_t n) { return (n + 15) & ~(size_t)15; }
@@ -99,6 +99,8 @@ static int hol__plan(const hol_world_desc *desc, hol__layout *l)
     off += hol__align((size_t)(l->max_slots + 1) * sizeof(hol__decision));
     l->off_queue = off;
     off += hol__align((size_t)l->max_trail * sizeof(uint32_t));
+    l->off_open = off;
+    off += hol__align((size_t)l->max_slots * sizeof(uint32_t));
     l->off_reserve = off;
     off += hol__align((size_t)l->max_reserve * sizeof(hol_tile));
     l->total = off;
@@ -143,6 +145,7 @@ hol_err hol_world_init(void *mem, size_t size, const hol_world_desc *desc,
     w->max_trail = l.max_trail;
     w->dec = (hol__decision *)(void *)(base + l.off_dec);
     w->queue = (uint32_t *)(void *)(base + l.off_queue);
+    w->open = (uint32_t *)(void *)(base + l.off_open);
     w->reserve_tiles = (hol_tile *)(void *)(base + l.off_reserve);
     w->max_reserve = l.max_reserve;
     w->bytes = l.total;

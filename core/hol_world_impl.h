@@ -49,7 +49,9 @@ typedef struct hol__slot {
     uint8_t nbe[4];   /* that edge as seen from the neighbour */
     uint8_t dist;     /* from the batch centre */
     uint8_t ring;     /* 1: outer ring (radius + 1), not collapsed */
-    uint8_t pad[2];
+    uint8_t pad[2];   /* [0] ring tile next to an open ball tile;
+                         [1] choices drawn so far (attempt counter) */
+    uint32_t open_pos; /* index in the open list, or UINT32_MAX */
 } hol__slot;
 
 typedef struct hol__trail {
@@ -86,6 +88,8 @@ struct hol_world {
     hol__decision *dec;
     uint32_t ndec;
     uint32_t *queue;
+    uint32_t *open;      /* open (uncollapsed) ball slots */
+    uint32_t nopen;
     hol_tile *reserve_tiles;
     uint32_t max_reserve;
     uint64_t choice_counter;

@@ -1,0 +1,217 @@
+/* bench_world.c - `make bench` figures for the world (hol_world).
+ *
+ * 1. Fill after each step: a random room walk (drifting home 30% of the
+ *    time so it stays inside the reach of tile words) calls
+ *    hol_world_update after every step, as the app does; per-step time to
+ *    have radius 4 collapsed: mean, median, 99th percentile, max.
+ * 2. Microseconds per generated tile over that walk, and a radius-8 ball
+ *    generated from scratch.
+ * 3. Backtracks per 1,000 tiles: the real tile set, and with the testing
+ *    hook rejecting 10% of the choices (to show the cost of backtracking).
+ * 4. Memory: the world's single block (store + batch scratch) at the default
+ *    capacity, and the cost of one full-store eviction sweep there.
+ */
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "../core/hol_room.h"
+#include "../core/hol_tile.h"
+#include "../core/hol_world.h"
+
+static double now(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec + (double)t.tv_nsec * 1e-9;
+}
+
+static uint64_t rng = 0x1234567;
+static uint32_t rnd(uint32_t n)
+{
+    rng ^= rng << 13;
+    rng ^= rng >> 7;
+    rng ^= rng << 17;
+    return (uint32_t)((rng >> 11) % n);
+}
+
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return x < y ? -1 : x > y;
+}
+
+static hol_world *make(uint64_t seed, uint32_t cap, uint32_t reject)
+{
+    hol_world_desc d;
+    memset(&d, 0, sizeof d);
+    d.seed = seed;
+    d.capacity = cap;
+    d.test_reject_per_mille = reject;
+    hol_world *w;
+    if (hol_world_make(&d, &w)) {
+        fprintf(stderr, "bench_world: cannot make a world\n");
+        exit(1);
+    }
+    return w;
+}
+
+/* One step in the room, towards O with probability home/1000. */
+static void step(hol_room *room, int home)
+{
+    for (;;) {
+        int dir = (int)rnd(4);
+        if ((int)rnd(1000) < home) {
+            for (int d = 0; d < 4; d++) {
+                hol_room n = *room;
+                if (!hol_room_step(&n, d) &&
+                    hol_tile_dist0(n.tile) < hol_tile_dist0(room->tile))
+                    dir = d;
+            }
+        }
+        hol_room n = *room;
+        if (!hol_room_step(&n, dir)) {
+            *room = n;
+            return;
+        }
+    }
+}
+
+int main(void)
+{
+    enum { STEPS = 50000 };
+    static double t[STEPS];
+    printf("== world (hol_world): WFC population, radius 4, default capacity\n");
+
+    /* 1 + 2: fill after each step, for a walk that stays near O (home 30%)
+     * and one that explores outwards (home 10%) */
+    int homes[2] = {300, 100};
+    for (int h = 0; h < 2; h++) {
+        hol_world *w = make(1, 0, 0);
+        hol_room room = hol_room_start();
+        hol_world_update(w, &room);
+        hol_world_stats s0, s1;
+        hol_world_get_stats(w, &s0);
+        double total = 0;
+        int maxd = 0;
+        long sum_d = 0;
+        for (int i = 0; i < STEPS; i++) {
+            step(&room, homes[h]);
+            double a = now();
+            hol_err err = hol_world_update(w, &room);
+            double b = now();
+            if (err) {
+                fprintf(stderr, "bench_world: update failed: %s\n", hol_err_str(err));
+                return 1;
+            }
+            t[i] = (b - a) * 1e6;
+            total += b - a;
+            int d = hol_tile_dist0(room.tile);
+            sum_d += d;
+            if (d > maxd)
+                maxd = d;
+        }
+        hol_world_get_stats(w, &s1);
+        uint64_t tiles = s1.tiles_collapsed - s0.tiles_collapsed;
+        qsort(t, STEPS, sizeof t[0], cmp_double);
+        printf("fill radius 4 after a step: %d steps, home %d%%, user at mean distance "
+               "%.1f (max %d) from O:\n",
+               STEPS, homes[h] / 10, (double)sum_d / STEPS, maxd);
+        printf("  mean %.1f us, median %.1f us, p99 %.1f us, max %.1f us (target < 500 us)\n",
+               total / STEPS * 1e6, t[STEPS / 2], t[STEPS * 99 / 100], t[STEPS - 1]);
+        printf("  %.2f new tiles per step; %.2f us per generated tile (all update time / tiles)\n",
+               (double)tiles / STEPS, total * 1e6 / (double)tiles);
+        printf("  backtracks per 1000 tiles: %.3f (%llu in %llu tiles); store %u tiles\n",
+               tiles ? 1000.0 * (double)(s1.backtracks - s0.backtracks) / (double)tiles : 0.0,
+               (unsigned long long)(s1.backtracks - s0.backtracks),
+               (unsigned long long)tiles, s1.count);
+        hol_world_destroy(w);
+    }
+    hol_world *w;
+    hol_room room;
+    hol_world_stats s1;
+
+    /* 2b: a radius-8 ball from scratch */
+    {
+        hol_world_desc d;
+        memset(&d, 0, sizeof d);
+        d.seed = 2;
+        d.radius = 8;
+        hol_world *w8;
+        if (hol_world_make(&d, &w8) == HOL_OK) {
+            room = hol_room_start();
+            double a = now();
+            hol_world_update(w8, &room);
+            double b = now();
+            hol_world_get_stats(w8, &s1);
+            printf("radius-8 ball from scratch: %llu tiles in %.2f ms, %.2f us per tile\n",
+                   (unsigned long long)s1.tiles_collapsed, (b - a) * 1e3,
+                   (b - a) * 1e6 / (double)s1.tiles_collapsed);
+            hol_world_destroy(w8);
+        }
+    }
+
+    /* 3: backtracking cost with the testing hook */
+    w = make(3, 0, 100);
+    room = hol_room_start();
+    hol_world_update(w, &room);
+    double a = now();
+    for (int i = 0; i < 10000; i++) {
+        step(&room, 300);
+        if (hol_world_update(w, &room)) {
+            fprintf(stderr, "bench_world: update with rejections failed\n");
+            break;
+        }
+    }
+    double b = now();
+    hol_world_get_stats(w, &s1);
+    printf("with 10%% of choices rejected (test hook): %.1f backtracks per 1000 tiles, "
+           "%.1f us per step\n",
+           1000.0 * (double)s1.backtracks / (double)s1.tiles_collapsed,
+           (b - a) * 1e6 / 10000);
+    hol_world_destroy(w);
+
+    /* 4: memory and one eviction sweep at the default capacity */
+    w = make(4, 0, 0);
+    hol_world_get_stats(w, &s1);
+    printf("memory: one block of %zu bytes (%.1f MiB) for %u tiles "
+           "(%zu bytes per tile incl. scratch); never grows\n",
+           s1.bytes, (double)s1.bytes / 1048576.0, s1.capacity,
+           s1.bytes / s1.capacity);
+    room = hol_room_start();
+    hol_world_update(w, &room);
+    /* fill to the eviction threshold with far tiles collapsed on demand */
+    hol_tile t0 = hol_tile_origin();
+    a = now();
+    while (1) {
+        hol_world_get_stats(w, &s1);
+        if (s1.count > s1.capacity / 4 * 3 + 8)
+            break;
+        hol_tile tt = t0;
+        for (int k = 0; k < 24; k++) {
+            hol_tile n;
+            if (hol_tile_step(tt, (int)rnd(4), &n, NULL) == HOL_OK)
+                tt = n;
+        }
+        hol_tile_content c;
+        hol_world_get(w, tt, &c);
+    }
+    b = now();
+    printf("filled the store to %u tiles with lone collapses in %.2f s\n", s1.count, b - a);
+    hol_world_stats before;
+    hol_world_get_stats(w, &before);
+    room = hol_room_start();
+    a = now();
+    hol_world_update(w, &room);
+    hol_world_update(w, &room);
+    hol_world_update(w, &room);
+    b = now();
+    hol_world_get_stats(w, &s1);
+    printf("eviction sweep: %llu tiles evicted, store %u -> %u, %.2f ms for the update that swept\n",
+           (unsigned long long)(s1.evicted - before.evicted), before.count, s1.count,
+           (b - a) * 1e3);
+    hol_world_destroy(w);
+    return 0;
+}
