@@ -380,6 +380,7 @@ hol_err hol_render_frame(hol_render *r, const hol_frame_desc *f,
     for (int i = 0; i < r->nitems; i++)
         r->sorted[i] = &r->items[i];
     qsort(r->sorted, (size_t)r->nitems, sizeof r->sorted[0], hol__cmp_item);
+    st.build_ms = hol__now(CLOCK_PROCESS_CPUTIME_ID) - c0;
 
     int ids = (f->flags & HOL_RENDER_IDS) != 0;
     float sky[3];

@@ -73,6 +73,7 @@ typedef struct hol_render_stats {
     int stencil_passes;   /* stencil-writing draws (leaves) */
     int branches;         /* branches drawn */
     int state_changes;    /* program/stencil/depth/mask changes issued */
+    double build_ms;      /* CPU time building and sorting the queue */
     double cpu_ms;        /* process CPU time of the frame incl. glFinish */
     double wall_ms;
 } hol_render_stats;

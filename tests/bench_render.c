@@ -68,8 +68,8 @@ int main(void)
     printf("bench_render: %dx%d, llvmpipe via OSMesa, world seed 2, HUD and minimap on,\n"
            "  median of %d interleaved frames (CPU ms: process time incl. llvmpipe threads)\n",
            BW, BH, FRAMES);
-    printf("  %-8s %10s %10s %6s %9s %8s %8s %6s\n", "view", "hyp ms", "eucl ms", "ratio",
-           "draws", "tris", "stencil", "branch");
+    printf("  %-8s %10s %10s %6s %9s %8s %8s %6s %9s\n", "view", "hyp ms", "eucl ms", "ratio",
+           "draws", "tris", "stencil", "branch", "queue ms");
     for (size_t i = 0; i < sizeof views / sizeof views[0]; i++) {
         const bview *bv = &views[i];
         hol_frame_desc f;
@@ -108,8 +108,9 @@ int main(void)
         double mh = th[FRAMES / 2], me = te[FRAMES / 2];
         sum_h += mh;
         sum_e += me;
-        printf("  %-8s %10.2f %10.2f %6.3f %9d %8ld %8d %6d\n", bv->name, mh, me, mh / me,
-               sh.draw_calls, sh.triangles, sh.stencil_passes, sh.branches);
+        printf("  %-8s %10.2f %10.2f %6.3f %9d %8ld %8d %6d %9.3f\n", bv->name, mh, me,
+               mh / me, sh.draw_calls, sh.triangles, sh.stencil_passes, sh.branches,
+               sh.build_ms);
         if (sh.draw_calls > max_dc)
             max_dc = sh.draw_calls;
         if (sh.triangles > max_tri)

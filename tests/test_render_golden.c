@@ -222,6 +222,62 @@ static void test_comparison_detects_change(void **state)
     free(back);
 }
 
+/* Per-eye budgets that do not depend on timing (those are in make bench):
+ * at most 150 draw calls and 300k triangles, one stencil polygon per
+ * visible leaf (at most 16), none in the euclidean baseline; checked over
+ * the golden views and a sweep of eye positions in all nine cells with the
+ * forest, HUD and minimap on. */
+static void test_stats_within_budget(void **state)
+{
+    (void)state;
+    static const char *walks[9] = {"NW", "N", "NE", "W", "-", "E", "SW", "S", "SE"};
+    int frames = 0, max_dc = 0;
+    long max_tri = 0;
+    for (int k = 0; k < 9 * 8 + (int)(sizeof views / sizeof views[0]); k++) {
+        golden_view g;
+        if (k < 72) {
+            hol_room u = hol_room_start();
+            for (const char *p = walks[k / 8]; *p && *p != '-'; p++)
+                hol_room_step(&u, hol_dir_from_char(*p));
+            g = (golden_view){"sweep", walks[k / 8],
+                              {u.col + 0.1 + 0.1 * (k % 8), 1.6, u.row + 0.85 - 0.1 * (k % 8)},
+                              45.0 * (k % 8), -30, 100, HOL_RENDER_MINIMAP};
+        } else {
+            g = views[k - 72];
+        }
+        for (int eu = 0; eu < 2; eu++) {
+            hol_frame_desc f;
+            memset(&f, 0, sizeof f);
+            f.user = hol_room_start();
+            for (const char *p = g.walk; *p && *p != '-'; p++)
+                hol_room_step(&f.user, hol_dir_from_char(*p));
+            assert_int_equal(hol_world_update(world, &f.user), HOL_OK);
+            memcpy(f.cam.eye, g.eye, sizeof f.cam.eye);
+            f.cam.yaw_deg = g.yaw;
+            f.cam.pitch_deg = g.pitch;
+            f.cam.fovy_deg = g.fov;
+            f.cam.width = W;
+            f.cam.height = H;
+            f.flags = (g.flags & ~HOL_RENDER_EUCLIDEAN) | HOL_RENDER_MINIMAP |
+                      (eu ? HOL_RENDER_EUCLIDEAN : 0);
+            hol_render_stats st;
+            assert_int_equal(hol_render_frame(rnd, &f, &st), HOL_OK);
+            assert_true(st.draw_calls <= 150);
+            assert_true(st.triangles <= 300000);
+            if (eu)
+                assert_int_equal(st.stencil_passes, 0);
+            else
+                assert_true(st.stencil_passes >= 1 && st.stencil_passes <= HOL_VIEW_MAX_LEAVES);
+            assert_true(st.branches >= 9);
+            max_dc = st.draw_calls > max_dc ? st.draw_calls : max_dc;
+            max_tri = st.triangles > max_tri ? st.triangles : max_tri;
+            frames++;
+        }
+    }
+    printf("budget: %d frames, max %d draw calls, max %ld triangles\n", frames, max_dc,
+           max_tri);
+}
+
 /* Rewrite every chunk CRC so mutations reach the inflate and unfilter code
  * instead of stopping at the checksum. */
 static void fix_crcs(uint8_t *d, size_t n)
@@ -312,6 +368,7 @@ int main(int argc, char **argv)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_comparison_detects_change),
         cmocka_unit_test(test_png_reader_survives_damage),
+        cmocka_unit_test(test_stats_within_budget),
         cmocka_unit_test(test_goldens),
     };
     return cmocka_run_group_tests(tests, setup, teardown);

@@ -426,6 +426,57 @@ static void test_creeks_continue_across_edges(void **state)
     assert_true(water >= 12);
 }
 
+/* The stencil code is a prefix code: over many eye positions, a branch's
+ * (ref, mask) accepts a leaf exactly when the branch's steps are a prefix
+ * of the leaf's, for any two branches reaching the same cell. */
+static void test_stencil_codes_are_prefix_codes(void **state)
+{
+    (void)state;
+    uint64_t rng = 7;
+    int pairs = 0;
+    static const char *walks[9] = {"NW", "N", "NE", "W", "-", "E", "SW", "S", "SE"};
+    for (int it = 0; it < 2000; it++) {
+        hol_room u = state_of(walks[it % 9]);
+        rng = rng * 6364136223846793005ull + 1442695040888963407ull;
+        double ex = u.col + 0.01 + 0.98 * (double)(rng >> 11) / 9007199254740992.0;
+        rng = rng * 6364136223846793005ull + 1442695040888963407ull;
+        double ez = u.row + 0.01 + 0.98 * (double)(rng >> 11) / 9007199254740992.0;
+        static hol_view v;
+        assert_int_equal(hol_view_build(&u, ex, ez, 0, &v), HOL_OK);
+        assert_true(v.nleaves >= 4 && v.nleaves <= HOL_VIEW_MAX_LEAVES);
+        for (int b = 1; b < v.nbranches; b++) {
+            const hol_view_branch *br = &v.branches[b];
+            for (int l = 0; l < v.nleaves; l++) {
+                const hol_view_leaf *lf = &v.leaves[l];
+                int prefix = lf->nsteps > br->nsteps &&
+                             !memcmp(lf->steps, br->steps, br->nsteps);
+                int accepts = (lf->code & br->mask) == br->ref;
+                if (prefix)
+                    assert_true(accepts);
+                /* a leaf through another branch to the same cell is refused */
+                for (int o = 1; o < v.nbranches && accepts && !prefix; o++) {
+                    const hol_view_branch *ot = &v.branches[o];
+                    if (o == b || ot->state.col != br->state.col ||
+                        ot->state.row != br->state.row)
+                        continue;
+                    if (lf->nsteps > ot->nsteps && !memcmp(lf->steps, ot->steps, ot->nsteps))
+                        fail_msg("eye %.3f,%.3f: two branches to cell %d,%d accept one leaf",
+                                 ex, ez, br->state.col, br->state.row);
+                    pairs++;
+                }
+            }
+        }
+        /* the wedges cover the full turn once */
+        double total = 0;
+        for (int l = 0; l < v.nleaves; l++) {
+            const double *a = v.leaves[l].u0, *c = v.leaves[l].u1;
+            total += atan2(a[0] * c[1] - a[1] * c[0], a[0] * c[0] + a[1] * c[1]);
+        }
+        assert_true(fabs(total - 2 * PI) < 1e-9);
+    }
+    (void)pairs;
+}
+
 static void test_ids_decode(void **state)
 {
     (void)state;
@@ -439,6 +490,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_ids_decode),
+        cmocka_unit_test(test_stencil_codes_are_prefix_codes),
         cmocka_unit_test(test_bare_views_match_ray_walk),
         cmocka_unit_test(test_full_views_match_ray_walk),
         cmocka_unit_test(test_sweep_all_cells),

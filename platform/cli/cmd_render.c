@@ -367,6 +367,7 @@ int cli_cmd_render(int argc, char **argv)
         printf("stencil_passes %d\n", st.stencil_passes);
         printf("branches %d\n", st.branches);
         printf("state_changes %d\n", st.state_changes);
+        printf("build_ms %.3f\n", st.build_ms);
         printf("cpu_ms %.3f\n", cpu[frames / 2]);
         printf("wall_ms %.3f\n", st.wall_ms);
     }
