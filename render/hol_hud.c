@@ -266,7 +266,17 @@ static void hol__minimap(hol__px *p, const hol_frame_desc *f)
             hol__poly(p, (const float(*)[2])tri, 3, objc);
         }
     }
-    /* the user: an arrow at the centre pointing along the view yaw */
+    /* the user: an arrow where the eye stands in the tile (the cell's
+     * offset scaled so that a cell edge maps to the tile edge), pointing
+     * along the view yaw */
+    double ox = f->cam.eye[0] - f->user.col - 0.5, on = -(f->cam.eye[2] - f->user.row - 0.5);
+    double ol = sqrt(ox * ox + on * on);
+    if (ol > 1e-9 && ol < 1) {
+        double rr = ol * hol_hyper_edge(), q[3] = {sinh(rr) * ox / ol, sinh(rr) * on / ol, cosh(rr)}, d[2];
+        hol_hyper_to_disk(q, d);
+        cx += (float)(d[0] * rad * 0.985);
+        cy -= (float)(d[1] * rad * 0.985);
+    }
     double yaw = f->cam.yaw_deg * HOL__PI / 180;
     float ux = -(float)sin(yaw), uy = -(float)cos(yaw), s = 0.12f * rad + 2;
     float arrow[4][2] = {{cx + ux * s, cy + uy * s},

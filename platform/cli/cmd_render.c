@@ -213,19 +213,22 @@ int cli_cmd_render(int argc, char **argv)
         return CLI_EXIT_USAGE;
     }
     /* the user's state */
-    uint8_t dirs[256];
-    size_t nd = 0, bad = 0;
-    hol_err err = hol_walk_parse(walk, strlen(walk), dirs, sizeof dirs, &nd, &bad);
-    if (err == HOL_EPARSE) {
+    size_t wlen = strlen(walk), nd = 0, bad = 0;
+    uint8_t *dirs = malloc(wlen + 1);
+    if (!dirs) {
+        cli_error(cmd, 0, "out of memory");
+        return CLI_EXIT_FAIL;
+    }
+    hol_err err = hol_walk_parse(walk, wlen, dirs, wlen + 1, &nd, &bad);
+    if (err) {
+        free(dirs);
         cli_error(cmd, 0, "--walk: character %zu is not a step (N, E, S or W)", bad + 1);
-        return CLI_EXIT_USAGE;
-    } else if (err) {
-        cli_error(cmd, 0, "--walk: longer than %zu steps", sizeof dirs);
         return CLI_EXIT_USAGE;
     }
     hol_room user = hol_room_start();
     size_t done = 0;
     err = hol_room_walk(&user, dirs, nd, &done);
+    free(dirs);
     if (err == HOL_EROOM) {
         cli_error(cmd, 0, "--walk: step %zu leaves the room", done + 1);
         return CLI_EXIT_USAGE;
