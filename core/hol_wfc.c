@@ -619,6 +619,7 @@ hol_err hol_world_get(hol_world *w, hol_tile t, hol_tile_content *out)
             return HOL_ENOMEM;
     }
     hol__entry *e = &w->entries[idx];
+    e->stamp = w->stamp;
     if (!(e->flags & HOL__F_TREES)) {
         e->trees = hol__trees_packed(w->seed, t);
         e->flags |= HOL__F_TREES;

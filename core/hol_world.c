@@ -2,10 +2,13 @@
  *
  * The store is an open-addressing table (linear probing, power-of-two
  * capacity, backward-shift deletion) of hol__entry keyed by the tile word.
- * Full-store policy (see hol_world.h): at the start of an update, a store
- * over 3/4 full evicts the entries least recently within radius + 1 of the
- * user, down to about 1/2; entries touched by the last or the running update
- * and entries holding a game object are never evicted.
+ * Full-store policy (see hol_world.h): at the start of an update (or of a
+ * get that must generate), a store over 3/4 full evicts the entries with
+ * the oldest stamps (the update counter when last used), whole stamp buckets
+ * at a time, until at most 1/2 remains; entries stamped by the last or the
+ * running update and entries holding a game object are never evicted. The
+ * sweep is three passes over the table (tens of milliseconds at 2^20
+ * tiles), once per about cap/4 new tiles.
  */
 #include "hol_world_impl.h"
 

@@ -40,10 +40,13 @@
  *   bit; another seed gives another world.
  * - Fixed memory: one allocation at hol_world_make (or caller memory with
  *   hol_world_init); the store is an open-addressing table keyed by the tile
- *   word. Full-store policy: when an update finds the store over 7/8 full it
- *   evicts the tiles that were least recently within radius + 1 of the user
- *   (in a hyperbolic walk those are the farthest), down to about 1/2 full;
- *   tiles holding a game object are never evicted. An evicted tile is
+ *   word. Full-store policy: when an update (or a get that must generate)
+ *   finds the store over 3/4 full, it evicts the tiles least recently used -
+ *   within radius + 1 of the user at an update, or read by hol_world_get -
+ *   oldest first, until at most 1/2 remains (tiles of one age go together,
+ *   so it may evict more). In a hyperbolic walk the least recently used
+ *   tiles are the farthest. Never evicted: tiles used by the last or the
+ *   running update, and tiles holding a game object. An evicted tile is
  *   regenerated, consistent with its neighbours in the store, if the user
  *   comes back (it may then differ from before). The store never grows, and
  *   no call crashes: HOL_ENOMEM if the capacity cannot hold the radius.
@@ -140,8 +143,10 @@ typedef struct hol_world_allocator {
 
 typedef struct hol_world_desc {
     uint64_t seed;      /* any value, 0 included */
-    uint32_t capacity;  /* tiles; 0 = HOL_WORLD_DEFAULT_CAPACITY; rounded up
-                           to a power of two, at least HOL_WORLD_MIN_CAPACITY */
+    uint32_t capacity;  /* tiles; 0 = HOL_WORLD_DEFAULT_CAPACITY; raised to
+                           at least HOL_WORLD_MIN_CAPACITY and 8 times the
+                           tiles within radius + 1 (4096 for radius 4), then
+                           rounded up to a power of two; at most 2^31 */
     int radius;         /* collapsed radius around the user; 0 = 4; at most
                            HOL_WORLD_MAX_RADIUS */
     hol_world_allocator allocator;
@@ -186,10 +191,12 @@ void hol_world_get_stats(const hol_world *w, hol_world_stats *out);
 hol_err hol_world_update(hol_world *w, const hol_room *room);
 
 /* Content of tile t; collapses t first if it is not yet (anywhere: a tile
- * far from the user is collapsed alone, consistent with its neighbours). */
+ * far from the user is collapsed alone, consistent with its neighbours).
+ * Marks t as used now, so a tile the renderer keeps reading is not evicted.
+ * Errors: HOL_EARG (t beyond the reach), HOL_ENOMEM, HOL_EBUDGET. */
 hol_err hol_world_get(hol_world *w, hol_tile t, hol_tile_content *out);
-/* Content of t without generating: HOL_EARG if t is not collapsed. Trees
- * are computed on the fly. */
+/* Content of t without generating or marking it used (const): HOL_EARG if
+ * t is not collapsed. */
 hol_err hol_world_peek(const hol_world *w, hol_tile t, hol_tile_content *out);
 
 /* Put game object obj (FLAG, KEY or CHEST) on a free tile (object NONE,
