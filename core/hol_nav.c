@@ -36,6 +36,7 @@
 #include "hol_nav_table.h"
 
 #define HOL__FMAX 8192
+#define HOL__LEG_RADIUS 10 /* tour legs exact between tiles within 7 */
 #define HOL__NIL UINT32_MAX
 #define HOL__INSIDE 0x80u
 #define HOL__MASK 0x3fu
@@ -64,6 +65,8 @@ struct hol_nav {
     uint32_t *ent;    /* open entries: node id, next entry (pairs) */
     uint32_t ent_cap, ent_n;
     uint32_t fmin;
+    uint8_t *leg;       /* tour leg table (state to state), built lazily */
+    int leg_radius, leg_trust, leg_ready;
     size_t bytes;
     void *block;
     void (*free_fn)(void *ptr, void *user);
@@ -97,7 +100,7 @@ hol_err hol_nav_create(const hol_nav_desc *desc, hol_nav **out_nav)
         d.max_nodes = HOL_NAV_DEFAULT_NODES;
     if (d.anytime_margin == 0)
         d.anytime_margin = HOL_NAV_DEFAULT_MARGIN;
-    if (d.radius < 3 || d.radius > HOL_NAV_MAX_RADIUS || d.max_nodes < 16 ||
+    if (d.radius < 3 || d.radius > HOL_NAV_MAX_RADIUS || d.max_nodes < 1024 ||
         d.max_nodes > (1u << 26) || d.anytime_margin < 0 ||
         d.anytime_margin > 255 || (!d.alloc_fn) != (!d.free_fn))
         return HOL_EARG;
@@ -114,18 +117,24 @@ hol_err hol_nav_create(const hol_nav_desc *desc, hol_nav **out_nav)
                    hol__align((size_t)hsize * sizeof(uint32_t)) +
                    hol__align(HOL__FMAX * sizeof(uint32_t)) +
                    hol__align((size_t)cap * 4 * sizeof(uint32_t));
+    /* the table's build scratch spans the leg table and the arena (both
+     * unused then); the leg table's build scratch is the arena */
+    int leg_radius = d.radius < HOL__LEG_RADIUS ? d.radius : HOL__LEG_RADIUS;
+    size_t legs = hol__align(hol_navtab_leg_bytes(leg_radius));
     size_t scratch = hol_navtab_scratch_bytes(d.radius);
-    if (arena < scratch)
-        arena = scratch;
-    size_t total = hol__align(sizeof(hol_nav)) + table + arena;
+    if (arena + legs < scratch)
+        arena = scratch - legs;
+    if (arena < hol_navtab_leg_scratch_bytes(leg_radius))
+        arena = hol_navtab_leg_scratch_bytes(leg_radius);
+    size_t total = hol__align(sizeof(hol_nav)) + table + legs + arena;
     char *block = (char *)d.alloc_fn(total, d.user);
     if (!block)
         return HOL_ENOMEM;
     hol_nav *nav = (hol_nav *)block;
     memset(nav, 0, sizeof *nav);
     char *p = block + hol__align(sizeof(hol_nav));
-    char *arena_p = p + table;
-    hol_err err = hol_navtab_build(&nav->tab, d.radius, p, arena_p);
+    char *arena_p = p + table + legs;
+    hol_err err = hol_navtab_build(&nav->tab, d.radius, p, p + table);
     if (err) {
         d.free_fn(block, d.user);
         return err;
@@ -140,6 +149,9 @@ hol_err hol_nav_create(const hol_nav_desc *desc, hol_nav **out_nav)
     nav->cap = cap;
     nav->hash_mask = hsize - 1;
     nav->trust = d.radius - 2;
+    nav->leg = (uint8_t *)(p + table);
+    nav->leg_radius = leg_radius;
+    nav->leg_trust = leg_radius - 3;
     nav->margin = d.anytime_margin;
     nav->far_base16 = nav->tab.mean16_at[nav->trust];
     nav->far_slope16 = nav->tab.mean16_at[nav->trust] - nav->tab.mean16_at[nav->trust - 1];
@@ -721,6 +733,178 @@ static hol_err hol__tour_greedy(hol_nav *nav, const hol_room *start,
     }
 }
 
+
+/* ---- exact tours by dynamic programming over room states at the keys ----
+ *
+ * F[mask][j][s]: fewest steps from the start to stand on key j in room
+ * state s (orientation, cell: 36 states) having first visited the keys in
+ * mask, j last. Legs between room states come from the leg table, exact
+ * when the tiles lie within its trusted radius; the last leg to the chest
+ * (any state) from the main table. The optimal walk visits the keys first
+ * in some order; each leg between consecutive first visits costs at least
+ * the state-to-state distance, so the minimum over the DP is the optimum,
+ * and it is achieved by the concatenated legs. */
+
+typedef struct hol__rel {
+    uint32_t idx; /* tile index of the source seen from the destination */
+    int facing;   /* source heading in that frame */
+} hol__rel;
+
+static int hol__rel_of(const hol_nav *nav, hol_tile from, hol_tile to, int trust,
+                       hol__rel *out)
+{
+    hol_tile u;
+    if (hol_tile_relative(to, 0, from, &u, &out->facing) || hol_tile_dist0(u) > trust)
+        return 0;
+    out->idx = hol_navtab_rank(&nav->tab, u);
+    return 1;
+}
+
+/* Descend the leg table from (idx, o, cell) to the goal state (ob, cb). */
+static void hol__leg_descend(const hol_nav *nav, uint32_t idx, int o, int cell, int ob,
+                             int cb, hol__walk *w)
+{
+    uint32_t n = nav->tab.off[nav->leg_radius + 1];
+    int v = hol_navtab_leg(nav->leg, idx, o, cell, ob, cb);
+    while (v > 0 && v < 255) {
+        int moved = 0;
+        for (int d = 0; d < 4 && !moved; d++) {
+            int c2 = hol__cell_step(cell, d);
+            if (c2 < 0)
+                continue;
+            uint32_t e = nav->tab.nb[4 * (size_t)idx + (size_t)((o + d) & 3)];
+            if (e == HOL_NAVTAB_NONE || (e >> 2) >= n)
+                continue;
+            int o2 = (int)((e & 3u) - (uint32_t)d) & 3;
+            if (hol_navtab_leg(nav->leg, e >> 2, o2, c2, ob, cb) == v - 1) {
+                hol__emit(w, d);
+                idx = e >> 2;
+                o = o2;
+                cell = c2;
+                v--;
+                moved = 1;
+            }
+        }
+        if (!moved)
+            break;
+    }
+}
+
+#define HOL__NK HOL_NAV_TOUR_MAX_KEYS
+typedef struct hol__dp {
+    uint16_t cost[1 << HOL__NK][HOL__NK][36];
+    int8_t pj[1 << HOL__NK][HOL__NK][36]; /* previous key, -1: the start */
+    uint8_t ps[1 << HOL__NK][HOL__NK][36]; /* previous state */
+} hol__dp;
+
+/* HOL_ERANGE when some tiles lie too far apart for the leg table. */
+static hol_err hol__tour_dp(hol_nav *nav, const hol_room *start, const hol__tour *t,
+                            hol__walk *w, hol_nav_result *res)
+{
+    int nk = t->nkeys, lt = nav->leg_trust;
+    hol__rel from_start[HOL__NK], pair[HOL__NK][HOL__NK], to_chest[HOL__NK];
+    for (int k = 0; k < nk; k++) {
+        if (!hol__rel_of(nav, start->tile, t->keys[k], lt, &from_start[k]) ||
+            !hol__rel_of(nav, t->keys[k], t->chest, lt, &to_chest[k]))
+            return HOL_ERANGE;
+        for (int j = 0; j < nk; j++)
+            if (j != k && !hol__rel_of(nav, t->keys[j], t->keys[k], lt, &pair[j][k]))
+                return HOL_ERANGE;
+    }
+    if (!nav->leg_ready) {
+        hol_navtab_build_legs(&nav->tab, nav->leg_radius, nav->leg, nav->nodes);
+        nav->leg_ready = 1;
+    }
+    /* the table lives in the arena (nodes are not used by this path) */
+    hol__dp *dp = (hol__dp *)nav->nodes;
+    memset(dp->cost, 0xff, sizeof dp->cost);
+    int sc = start->col + 3 * start->row;
+    for (int k = 0; k < nk; k++)
+        for (int s = 0; s < 36; s++) {
+            const hol__rel *r = &from_start[k];
+            int v = hol_navtab_leg(nav->leg, r->idx, (r->facing + start->orient) & 3, sc,
+                                   s / 9, s % 9);
+            if (v < 255) {
+                dp->cost[1u << k][k][s] = (uint16_t)v;
+                dp->pj[1u << k][k][s] = -1;
+            }
+        }
+    for (unsigned m = 1; m < (1u << nk); m++)
+        for (int j = 0; j < nk; j++) {
+            if (!(m & (1u << j)))
+                continue;
+            for (int s = 0; s < 36; s++) {
+                int base = dp->cost[m][j][s];
+                if (base == 0xffff)
+                    continue;
+                for (int k = 0; k < nk; k++) {
+                    if (m & (1u << k))
+                        continue;
+                    unsigned m2 = m | (1u << k);
+                    const hol__rel *r = &pair[j][k];
+                    int o = (r->facing + s / 9) & 3;
+                    for (int s2 = 0; s2 < 36; s2++) {
+                        int v = hol_navtab_leg(nav->leg, r->idx, o, s % 9, s2 / 9, s2 % 9);
+                        if (v < 255 && base + v < dp->cost[m2][k][s2]) {
+                            dp->cost[m2][k][s2] = (uint16_t)(base + v);
+                            dp->pj[m2][k][s2] = (int8_t)j;
+                            dp->ps[m2][k][s2] = (uint8_t)s;
+                        }
+                    }
+                }
+            }
+        }
+    unsigned full = t->full;
+    int best = INT32_MAX, bj = -1, bs = -1;
+    for (int j = 0; j < nk; j++)
+        for (int s = 0; s < 36; s++) {
+            if (dp->cost[full][j][s] == 0xffff)
+                continue;
+            const hol__rel *r = &to_chest[j];
+            int v = hol_navtab_cost(&nav->tab, r->idx, (r->facing + s / 9) & 3, s % 9);
+            if (v < 255 && dp->cost[full][j][s] + v < best) {
+                best = dp->cost[full][j][s] + v;
+                bj = j;
+                bs = s;
+            }
+        }
+    if (bj < 0)
+        return HOL_ERANGE;
+    /* the order of first visits, back to front */
+    int oj[HOL__NK], os[HOL__NK], n = 0;
+    unsigned m = full;
+    for (int j = bj, s = bs; j >= 0;) {
+        oj[n] = j;
+        os[n] = s;
+        n++;
+        int pj = dp->pj[m][j][s], ps = dp->ps[m][j][s];
+        m &= ~(1u << j);
+        j = pj;
+        s = ps;
+    }
+    /* legs, front to back */
+    for (int i = n - 1; i >= 0; i--) {
+        int k = oj[i], s2 = os[i];
+        if (i == n - 1) {
+            const hol__rel *r = &from_start[k];
+            hol__leg_descend(nav, r->idx, (r->facing + start->orient) & 3, sc, s2 / 9,
+                             s2 % 9, w);
+        } else {
+            int j = oj[i + 1], s = os[i + 1];
+            const hol__rel *r = &pair[j][k];
+            hol__leg_descend(nav, r->idx, (r->facing + s / 9) & 3, s % 9, s2 / 9, s2 % 9, w);
+        }
+    }
+    const hol__rel *r = &to_chest[bj];
+    hol__descend(&nav->tab, r->idx, (r->facing + bs / 9) & 3, bs % 9, w);
+    if (w->overflow)
+        return HOL_ENOMEM;
+    res->exact = 1;
+    res->nodes = 0;
+    (void)best;
+    return HOL_OK;
+}
+
 hol_err hol_nav_tour(hol_nav *nav, const hol_room *start, const hol_tile *keys,
                      int nkeys, hol_tile chest, size_t budget,
                      uint8_t *out_walk, size_t cap, hol_nav_result *out_result)
@@ -751,6 +935,19 @@ hol_err hol_nav_tour(hol_nav *nav, const hol_room *start, const hol_tile *keys,
         budget = nav->cap;
     hol__walk w = {out_walk, cap, 0, 0};
     hol_nav_result res = {0, 0, 0};
+    if (nkeys == 0) {
+        return hol_nav_find(nav, start, chest, budget, out_walk, cap, out_result);
+    }
+    hol_err dperr = hol__tour_dp(nav, start, &t, &w, &res);
+    if (dperr != HOL_ERANGE) {
+        if (dperr)
+            return dperr;
+        res.len = (int)w.n;
+        *out_result = res;
+        return HOL_OK;
+    }
+    w.n = 0;
+    w.overflow = 0;
 
     hol__reset(nav);
     hol__node root;

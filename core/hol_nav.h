@@ -40,10 +40,11 @@
 /* Longest walk any query writes; out_walk buffers of this size always fit. */
 #define HOL_NAV_WALK_MAX 4096
 #define HOL_NAV_TOUR_MAX_KEYS 5
+#define HOL_NAV_TOUR_EXACT_RADIUS 7
 
 typedef struct hol_nav_desc {
     int radius;        /* cost table radius in tiles (3..15); 0: 14 */
-    size_t max_nodes;  /* search arena capacity in nodes; 0: 2^18 */
+    size_t max_nodes;  /* search arena capacity in nodes (1024..2^26); 0: 2^18 */
     int anytime_margin; /* anytime search explores f up to best + this
                          * (steps, 1..255); 0: 16 */
     /* allocator hooks (both or neither); zero: malloc/free */
@@ -87,10 +88,16 @@ hol_err hol_nav_find(hol_nav *nav, const hol_room *start, hol_tile target,
 
 /* Keys and chest: the fewest steps from *start to stand on every key (in any
  * order; a key counts when the user stands on its tile) and after that on
- * the chest, and the walk. Exact (a search over room state x collected-key
- * set with an admissible heuristic) for up to HOL_NAV_TOUR_MAX_KEYS keys.
- * budget as in hol_nav_find (0: arena capacity); when the search runs out,
- * the legs are chained greedily in the nearest-key order (exact = 0).
+ * the chest, and the walk. Up to HOL_NAV_TOUR_MAX_KEYS keys.
+ * - Start, keys and chest pairwise within HOL_NAV_TOUR_EXACT_RADIUS tiles
+ *   (start to chest excepted): exact, a dynamic program over key subsets x
+ *   the 36 room states (orientation, cell) on each key, with exact
+ *   state-to-state leg costs from a second table (built on the first tour
+ *   call, about 0.15 s, memory reserved at create). budget is ignored.
+ * - Otherwise: A* over room state x collected-key set with an admissible
+ *   heuristic (exact if it finishes within budget, 0: arena capacity); if
+ *   it runs out, keys nearest first with hol_nav_find legs (exact = 0).
+ * A key under the start counts as collected. nkeys = 0 is hol_nav_find.
  * Errors: as hol_nav_find; HOL_EARG for nkeys outside 0..5. */
 hol_err hol_nav_tour(hol_nav *nav, const hol_room *start, const hol_tile *keys,
                      int nkeys, hol_tile chest, size_t budget,

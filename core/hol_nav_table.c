@@ -248,3 +248,60 @@ hol_err hol_navtab_build(hol_navtab *tab, int radius, void *mem, void *scratch)
     }
     return HOL_OK;
 }
+
+size_t hol_navtab_leg_bytes(int leg_radius)
+{
+    return (size_t)hol_navtab_count(leg_radius) * 9 * 36;
+}
+
+size_t hol_navtab_leg_scratch_bytes(int leg_radius)
+{
+    return (size_t)hol_navtab_count(leg_radius) * 36 * (sizeof(uint32_t) + 1);
+}
+
+/* One BFS per goal state (36): from (O, ob, cb) over full states
+ * (tile, o, cell) of the tiles within leg_radius; steps are reversible, so
+ * these are the distances to the goal. */
+hol_err hol_navtab_build_legs(const hol_navtab *tab, int leg_radius, uint8_t *out_leg,
+                              void *scratch)
+{
+    if (leg_radius < 1 || leg_radius > tab->radius)
+        return HOL_EARG;
+    uint32_t n = hol_navtab_count(leg_radius);
+    size_t nst = 36 * (size_t)n;
+    uint32_t *queue = (uint32_t *)scratch;
+    uint8_t *dist = (uint8_t *)(queue + nst);
+    static const int8_t dcol[4] = {0, -1, 0, 1}, drow[4] = {-1, 0, 1, 0};
+    for (int g = 0; g < 36; g++) {
+        int ob = g / 9, cb = g % 9;
+        memset(dist, 255, nst);
+        size_t head = 0, tail = 0;
+        uint32_t s0 = (uint32_t)(ob * 9 + cb); /* tile 0 */
+        dist[s0] = 0;
+        queue[tail++] = s0;
+        while (head < tail) {
+            uint32_t st = queue[head++];
+            uint32_t i = st / 36;
+            int o = (int)(st / 9 % 4), cell = (int)(st % 9);
+            int col = cell % 3, row = cell / 3, v = dist[st];
+            for (int d = 0; d < 4; d++) {
+                int c2 = col + dcol[d], r2 = row + drow[d];
+                if (c2 < 0 || c2 > 2 || r2 < 0 || r2 > 2)
+                    continue;
+                uint32_t e = tab->nb[4 * (size_t)i + (size_t)((o + d) & 3)];
+                if (e == HOL_NAVTAB_NONE || (e >> 2) >= n)
+                    continue;
+                int o2 = (int)((e & 3u) - (uint32_t)d) & 3;
+                uint32_t s2 = 36 * (e >> 2) + (uint32_t)(9 * o2 + c2 + 3 * r2);
+                if (dist[s2] == 255) {
+                    dist[s2] = (uint8_t)(v + 1);
+                    queue[tail++] = s2;
+                }
+            }
+        }
+        for (uint32_t i = 0; i < n; i++)
+            for (int c = 0; c < 9; c++)
+                out_leg[36 * (9 * (size_t)i + (size_t)c) + (size_t)g] = dist[36 * (size_t)i + (size_t)c];
+    }
+    return HOL_OK;
+}

@@ -61,6 +61,21 @@ uint32_t hol_navtab_rank(const hol_navtab *tab, hol_tile t);
 hol_tile hol_navtab_unrank(const hol_navtab *tab, uint32_t idx);
 int hol_navtab_len(const hol_navtab *tab, uint32_t idx);
 
+/* ---- leg table: state-to-state costs for tours ----
+ * leg[36 * (9 * i + cell) + 9 * ob + cb] is, for a user on tile i (seen
+ * from the target as above, room north = i's heading, so o = 0) on `cell`,
+ * the fewest steps to stand on the target with room north ob (relative to
+ * the target's heading) on cell cb, among walks within leg_radius. Only
+ * tiles i < hol_navtab_count(leg_radius) are covered; the neighbour table
+ * of `tab` (radius >= leg_radius) is reused. Costs within leg_radius - 3
+ * equal those of every larger leg table (the tests check r against r + 1;
+ * one tile less than the tile table, as a given final room state may need
+ * one more tile of room to turn into). */
+size_t hol_navtab_leg_bytes(int leg_radius);
+size_t hol_navtab_leg_scratch_bytes(int leg_radius);
+hol_err hol_navtab_build_legs(const hol_navtab *tab, int leg_radius, uint8_t *out_leg,
+                              void *scratch);
+
 /* Cell index (col + 3 * row) after rotating the room by o quarter turns
  * counter-clockwise. */
 int hol_navtab_rot_cell(int o, int cell);
@@ -70,6 +85,15 @@ static inline int hol_navtab_cost(const hol_navtab *tab, uint32_t idx, int o,
                                   int cell)
 {
     return tab->cost[9 * (size_t)idx + (size_t)hol_navtab_rot_cell(o, cell)];
+}
+
+/* Leg cost for a user (tile index i, room north o, cell) to stand on the
+ * target with room north ob on cell cb (see above). */
+static inline int hol_navtab_leg(const uint8_t *leg, uint32_t idx, int o, int cell,
+                                 int ob, int cb)
+{
+    return leg[36 * (9 * (size_t)idx + (size_t)hol_navtab_rot_cell(o, cell)) +
+               (size_t)(9 * ((ob - o) & 3) + hol_navtab_rot_cell(o, cb))];
 }
 
 /* A lower bound on the true fewest steps (walks may leave the radius) for a

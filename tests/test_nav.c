@@ -277,6 +277,51 @@ static void test_table_converges_default(void **state)
     check_converged(HOL_NAV_DEFAULT_RADIUS);
 }
 
+/* The tour leg table (state to state): radius r agrees with r + 1 within
+ * r - 3 (one tile less than the tile table: reaching a given room state
+ * may use one more tile of room), up to the default leg radius 10
+ * (trusted 7). */
+static void test_legs_converge(void **state)
+{
+    (void)state;
+    hol_navtab tab;
+    void *m = malloc(hol_navtab_table_bytes(11));
+    void *s = malloc(hol_navtab_scratch_bytes(11) > hol_navtab_leg_scratch_bytes(11)
+                         ? hol_navtab_scratch_bytes(11)
+                         : hol_navtab_leg_scratch_bytes(11));
+    uint8_t *a = malloc(hol_navtab_leg_bytes(11)), *b = malloc(hol_navtab_leg_bytes(11));
+    assert_non_null(m);
+    assert_non_null(s);
+    assert_non_null(a);
+    assert_non_null(b);
+    assert_int_equal(hol_navtab_build(&tab, 11, m, s), HOL_OK);
+    assert_int_equal(hol_navtab_build_legs(&tab, 5, a, s), HOL_OK);
+    for (int r = 5; r <= 10; r++) {
+        assert_int_equal(hol_navtab_build_legs(&tab, r + 1, b, s), HOL_OK);
+        assert_memory_equal(a, b, 36 * 9 * (size_t)tab.off[r - 2]);
+        assert_true(memcmp(a, b, hol_navtab_leg_bytes(r)) != 0);
+        uint8_t *t = a;
+        a = b;
+        b = t;
+    }
+    /* leg costs to any arrival state agree with the tile table */
+    for (uint32_t i = 0; i < tab.off[9]; i += 7)
+        for (int o = 0; o < 4; o++)
+            for (int c = 0; c < 9; c++) {
+                int mn = 255;
+                for (int g = 0; g < 36; g++) {
+                    int v = hol_navtab_leg(a, i, o, c, g / 9, g % 9);
+                    if (v < mn)
+                        mn = v;
+                }
+                assert_int_equal(mn, hol_navtab_cost(&tab, i, o, c));
+            }
+    free(m);
+    free(s);
+    free(a);
+    free(b);
+}
+
 static void test_table_small(void **state)
 {
     (void)state;
@@ -520,14 +565,56 @@ static void test_tour_vs_bruteforce(void **state)
     bf_free(&b);
 }
 
+/* The two exact tour methods agree: the default navigator's dynamic
+ * program (keys within 7 tiles of each other) against the A* of a
+ * radius-7 navigator, whose leg table only covers 4 tiles. */
+static void test_tour_dp_vs_astar(void **state)
+{
+    (void)state;
+    hol_nav_desc desc = {0};
+    desc.radius = 7;
+    hol_nav *small;
+    assert_int_equal(hol_nav_create(&desc, &small), HOL_OK);
+    int compared = 0, astar = 0;
+    for (int q = 0; q < 24; q++) {
+        hol_room s = random_start(20);
+        int nk = 2 + q % 3;
+        hol_tile keys[5], chest;
+        for (int i = 0; i < nk; i++)
+            keys[i] = random_target(&s, 2 + (int)rnd(2));
+        chest = random_target(&s, 1 + (int)rnd(3));
+        int far = 0;
+        for (int i = 0; i < nk; i++)
+            for (int j = 0; j < nk; j++)
+                far |= hol_tile_dist(keys[i], keys[j]) > 4;
+        uint8_t w1[HOL_NAV_WALK_MAX], w2[HOL_NAV_WALK_MAX];
+        hol_nav_result r1, r2;
+        assert_int_equal(hol_nav_tour(g_nav, &s, keys, nk, chest, 0, w1, sizeof w1, &r1),
+                         HOL_OK);
+        assert_int_equal(r1.exact, 1);
+        assert_int_equal(r1.nodes, 0); /* the dynamic program */
+        assert_int_equal(hol_nav_tour(small, &s, keys, nk, chest, 0, w2, sizeof w2, &r2),
+                         HOL_OK);
+        if (!r2.exact)
+            continue;
+        compared++;
+        astar += far && r2.nodes > 0;
+        assert_int_equal(r1.len, r2.len);
+    }
+    print_message("tours: dynamic program vs A*: %d compared, %d by A*\n", compared, astar);
+    assert_true(astar >= 4);
+    hol_nav_destroy(small);
+}
+
 /* Budget exhausted: the greedy tour is still complete and valid. */
 static void test_tour_budget(void **state)
 {
     (void)state;
     hol_room s = hol_room_start();
     hol_tile keys[5], chest;
+    static const char *const far[5] = {"Nfffff", "Sfffff", "Wffff", "Effff", "Nlfff"};
     for (int i = 0; i < 5; i++)
-        keys[i] = random_target(&s, 3 + i);
+        assert_int_equal(hol_tile_parse(far[i], -1, &keys[i]), HOL_OK);
     chest = random_target(&s, 4);
     uint8_t walk[HOL_NAV_WALK_MAX];
     hol_nav_result res;
@@ -674,11 +761,13 @@ int main(void)
         cmocka_unit_test(test_index),
         cmocka_unit_test(test_table_converges),
         cmocka_unit_test(test_table_converges_default),
+        cmocka_unit_test(test_legs_converge),
         cmocka_unit_test(test_table_small),
         cmocka_unit_test(test_optimal_vs_bfs),
         cmocka_unit_test(test_anytime),
         cmocka_unit_test(test_far),
         cmocka_unit_test(test_tour_vs_bruteforce),
+        cmocka_unit_test(test_tour_dp_vs_astar),
         cmocka_unit_test(test_tour_budget),
         cmocka_unit_test(test_field),
         cmocka_unit_test(test_direction),
