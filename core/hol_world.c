@@ -3,12 +3,13 @@
  * The store is an open-addressing table (linear probing, power-of-two
  * capacity, backward-shift deletion) of hol__entry keyed by the tile word.
  * Full-store policy (see hol_world.h): at the start of an update (or of a
- * get that must generate), a store over 3/4 full evicts the entries with
- * the oldest stamps (the update counter when last used), whole stamp buckets
- * at a time, until at most 1/2 remains; entries stamped by the last or the
- * running update and entries holding a game object are never evicted. The
- * sweep is three passes over the table (tens of milliseconds at 2^20
- * tiles), once per about cap/4 new tiles.
+ * get that must generate), a store over 3/4 full starts evicting the
+ * entries with the oldest stamps (the update counter when last used), whole
+ * stamp buckets at a time, until at most 1/2 remains; entries stamped by the
+ * last or the running update and entries holding a game object are never
+ * evicted. The sweep is incremental: three passes over the table, cap/256
+ * slots per call (at most about 0.1 ms per update at 2^20 tiles, not one
+ * pause of tens of milliseconds); over 7/8 full it finishes at once.
  */
 #include "hol_world_impl.h"
 
@@ -286,49 +287,87 @@ static int hol__evictable(const hol_world *w, const hol__entry *e)
            e->stamp + 1 < w->stamp;
 }
 
+/* One bounded step of the sweep: at most `budget` table slots. The sweep
+ * has three passes - stamp range, stamp histogram (256 buckets), eviction
+ * of the stamps below the bucket where at least count - cap/2 entries are
+ * reached - and may span many calls: between calls the table stays valid,
+ * and deleting only at the cursor keeps unvisited entries ahead of it. */
+static void hol__sweep_step(hol_world *w, uint32_t budget)
+{
+    uint32_t end = w->sweep_pos + budget;
+    if (end > w->cap || end < w->sweep_pos)
+        end = w->cap;
+    uint32_t i = w->sweep_pos;
+    if (w->sweep_phase == 1) {
+        for (; i < end; i++) {
+            const hol__entry *e = &w->entries[i];
+            if (!hol__evictable(w, e))
+                continue;
+            w->sweep_n++;
+            if (e->stamp < w->sweep_lo)
+                w->sweep_lo = e->stamp;
+            if (e->stamp > w->sweep_hi)
+                w->sweep_hi = e->stamp;
+        }
+        if (i == w->cap) {
+            w->sweep_phase = w->sweep_n ? 2 : 0;
+            i = 0;
+            memset(w->sweep_hist, 0, sizeof w->sweep_hist);
+        }
+    } else if (w->sweep_phase == 2) {
+        uint64_t width = ((uint64_t)w->sweep_hi - w->sweep_lo) / 256 + 1;
+        for (; i < end; i++) {
+            const hol__entry *e = &w->entries[i];
+            if (hol__evictable(w, e) && e->stamp >= w->sweep_lo &&
+                e->stamp <= w->sweep_hi)
+                w->sweep_hist[(e->stamp - w->sweep_lo) / width]++;
+        }
+        if (i == w->cap) {
+            uint32_t need = w->count > w->cap / 2 ? w->count - w->cap / 2 : 0;
+            uint32_t sum = 0, b = 0;
+            for (; b < 255; b++) {
+                sum += w->sweep_hist[b];
+                if (sum >= need)
+                    break;
+            }
+            uint64_t limit = w->sweep_lo + (uint64_t)(b + 1) * width;
+            w->sweep_limit = limit > UINT32_MAX ? UINT32_MAX : (uint32_t)limit;
+            w->sweep_phase = 3;
+            i = 0;
+        }
+    } else if (w->sweep_phase == 3) {
+        for (; i < end; i++) {
+            while (hol__evictable(w, &w->entries[i]) &&
+                   w->entries[i].stamp < w->sweep_limit) {
+                hol__delete(w, i);
+                w->evicted++;
+            }
+        }
+        if (i == w->cap)
+            w->sweep_phase = 0;
+    }
+    w->sweep_pos = i;
+}
+
 void hol__maybe_evict(hol_world *w)
 {
-    if (w->count <= w->cap - w->cap / 4)
+    if (w->sweep_phase == 0) {
+        if (w->count <= w->cap - w->cap / 4)
+            return;
+        w->sweep_phase = 1;
+        w->sweep_pos = 0;
+        w->sweep_lo = UINT32_MAX;
+        w->sweep_hi = 0;
+        w->sweep_n = 0;
+    }
+    if (w->count > w->cap - w->cap / 8) {
+        /* growing faster than the sweep: finish it now */
+        while (w->sweep_phase != 0)
+            hol__sweep_step(w, w->cap);
         return;
-    uint32_t need = w->count - w->cap / 2;
-    uint32_t lo = UINT32_MAX, hi = 0, n = 0;
-    for (uint32_t i = 0; i < w->cap; i++) {
-        const hol__entry *e = &w->entries[i];
-        if (!hol__evictable(w, e))
-            continue;
-        n++;
-        if (e->stamp < lo)
-            lo = e->stamp;
-        if (e->stamp > hi)
-            hi = e->stamp;
     }
-    if (n == 0)
-        return;
-    uint32_t limit; /* evict stamps below limit */
-    if (n <= need) {
-        limit = hi + 1;
-    } else {
-        uint32_t hist[256] = {0};
-        uint64_t width = ((uint64_t)hi - lo) / 256 + 1;
-        for (uint32_t i = 0; i < w->cap; i++) {
-            const hol__entry *e = &w->entries[i];
-            if (hol__evictable(w, e))
-                hist[(e->stamp - lo) / width]++;
-        }
-        uint32_t sum = 0, b = 0;
-        for (; b < 256; b++) {
-            sum += hist[b];
-            if (sum >= need)
-                break;
-        }
-        limit = (uint32_t)(lo + (uint64_t)(b + 1) * width);
-    }
-    for (uint32_t i = 0; i < w->cap; i++) {
-        while (hol__evictable(w, &w->entries[i]) && w->entries[i].stamp < limit) {
-            hol__delete(w, i);
-            w->evicted++;
-        }
-    }
+    uint32_t budget = w->cap / 256 > 4096 ? w->cap / 256 : 4096;
+    hol__sweep_step(w, budget);
 }
 
 /* ---- names -------------------------------------------------------------- */

@@ -93,6 +93,10 @@ struct hol_world {
     hol_tile *reserve_tiles;
     uint32_t max_reserve;
     uint64_t choice_counter;
+    /* incremental eviction sweep (hol_world.c) */
+    uint32_t sweep_phase; /* 0 idle, 1 stamp range, 2 histogram, 3 evict */
+    uint32_t sweep_pos, sweep_lo, sweep_hi, sweep_n, sweep_limit;
+    uint32_t sweep_hist[256];
     /* statistics */
     uint64_t collapsed, backtracks, updates, evicted;
     size_t bytes;
@@ -105,7 +109,8 @@ uint32_t hol__ball_size(int radius); /* tiles within radius, 0..9 */
 int64_t hol__find(const hol_world *w, hol_tile t);       /* index or -1 */
 /* Index of t, inserted uncollapsed if missing; -1 if the store is full. */
 int64_t hol__insert(hol_world *w, hol_tile t);
-/* Evict (full-store policy) if the store is over 3/4 full. */
+/* Full-store policy: over 3/4 full, run a bounded step of the eviction
+ * sweep (the whole sweep at once when over 7/8 full). */
 void hol__maybe_evict(hol_world *w);
 uint64_t hol__mix(uint64_t a, uint64_t b);
 uint64_t hol__tile_hash(uint64_t seed, hol_tile t);
