@@ -30,7 +30,7 @@ RENDER_TEST_SRC := $(wildcard tests/test_render*.c)
 UNIT_SRC := $(filter-out $(RENDER_TEST_SRC),$(wildcard tests/test_*.c))
 CLI_TESTS := $(wildcard tests/cli_*.sh)
 # Libraries the renderer needs (headless OSMesa; EGL for the desktop build).
-RENDER_LIBS ?= -lOSMesa -lz
+RENDER_LIBS ?= -lOSMesa -lEGL -lz
 # tests/bench_render*.c: benches that also link the renderer and GL.
 BENCH_RENDER_SRC := $(wildcard tests/bench_render*.c)
 BENCH_SRC := $(filter-out $(BENCH_RENDER_SRC),$(wildcard tests/bench_*.c))

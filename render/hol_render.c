@@ -1,12 +1,12 @@
 /* hol_render.c - render queue, stencil portals, GL execution. */
 #include "hol_render.h"
 
-#include <GLES3/gl3.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
 
+#include "hol_gl.h"
 #include "hol_hud.h"
 #include "hol_mesh.h"
 #include "hol_scene.h"
@@ -30,6 +30,7 @@ typedef struct hol__item {
 
 struct hol_render {
     hol_render_desc desc;
+    hol_gl gl;
     hol_scene *scene;
     GLuint prog, vao, vbo, ibo;
     GLint u_vp, u_model, u_mode, u_id, u_eye, u_fog, u_fogd;
@@ -97,15 +98,15 @@ static const char *hol__fs =
     "  o_col = vec4(mix(u_fog, c, f), 1.0);\n"
     "}\n";
 
-static GLuint hol__shader(GLenum type, const char *src)
+static GLuint hol__shader(const hol_gl *gl, GLenum type, const char *src)
 {
-    GLuint s = glCreateShader(type);
-    glShaderSource(s, 1, &src, NULL);
-    glCompileShader(s);
+    GLuint s = gl->CreateShader(type);
+    gl->ShaderSource(s, 1, &src, NULL);
+    gl->CompileShader(s);
     GLint ok = 0;
-    glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
+    gl->GetShaderiv(s, GL_COMPILE_STATUS, &ok);
     if (!ok) {
-        glDeleteShader(s);
+        gl->DeleteShader(s);
         return 0;
     }
     return s;
@@ -125,52 +126,60 @@ hol_err hol_render_create(const hol_render_desc *desc, hol_render **out)
         return HOL_ENOMEM;
     }
     hol_mesh_init(&r->mesh, r->verts, HOL__MAX_V, r->idx, HOL__MAX_I);
-    GLuint vs = hol__shader(GL_VERTEX_SHADER, hol__vs);
-    GLuint fs = hol__shader(GL_FRAGMENT_SHADER, hol__fs);
+    hol_err gerr = hol_gl_load(&r->gl, r->desc.getproc);
+    if (gerr) {
+        free(r->verts);
+        free(r->idx);
+        hol_scene_destroy(r->scene);
+        free(r);
+        return gerr;
+    }
+    GLuint vs = hol__shader(&r->gl, GL_VERTEX_SHADER, hol__vs);
+    GLuint fs = hol__shader(&r->gl, GL_FRAGMENT_SHADER, hol__fs);
     if (!vs || !fs) {
         if (vs)
-            glDeleteShader(vs);
+            r->gl.DeleteShader(vs);
         if (fs)
-            glDeleteShader(fs);
+            r->gl.DeleteShader(fs);
         hol_render_destroy(r);
         return HOL_EUNSUPPORTED;
     }
-    r->prog = glCreateProgram();
-    glAttachShader(r->prog, vs);
-    glAttachShader(r->prog, fs);
-    glLinkProgram(r->prog);
-    glDeleteShader(vs);
-    glDeleteShader(fs);
+    r->prog = r->gl.CreateProgram();
+    r->gl.AttachShader(r->prog, vs);
+    r->gl.AttachShader(r->prog, fs);
+    r->gl.LinkProgram(r->prog);
+    r->gl.DeleteShader(vs);
+    r->gl.DeleteShader(fs);
     GLint ok = 0;
-    glGetProgramiv(r->prog, GL_LINK_STATUS, &ok);
+    r->gl.GetProgramiv(r->prog, GL_LINK_STATUS, &ok);
     if (!ok) {
         hol_render_destroy(r);
         return HOL_EUNSUPPORTED;
     }
-    r->u_vp = glGetUniformLocation(r->prog, "u_vp");
-    r->u_model = glGetUniformLocation(r->prog, "u_model");
-    r->u_mode = glGetUniformLocation(r->prog, "u_mode");
-    r->u_id = glGetUniformLocation(r->prog, "u_id");
-    r->u_eye = glGetUniformLocation(r->prog, "u_eye");
-    r->u_fog = glGetUniformLocation(r->prog, "u_fog");
-    r->u_fogd = glGetUniformLocation(r->prog, "u_fogd");
-    glGenVertexArrays(1, &r->vao);
-    glGenBuffers(1, &r->vbo);
-    glGenBuffers(1, &r->ibo);
-    glBindVertexArray(r->vao);
-    glBindBuffer(GL_ARRAY_BUFFER, r->vbo);
-    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, r->ibo);
-    glEnableVertexAttribArray(0);
-    glEnableVertexAttribArray(1);
-    glEnableVertexAttribArray(2);
-    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(hol_vertex),
+    r->u_vp = r->gl.GetUniformLocation(r->prog, "u_vp");
+    r->u_model = r->gl.GetUniformLocation(r->prog, "u_model");
+    r->u_mode = r->gl.GetUniformLocation(r->prog, "u_mode");
+    r->u_id = r->gl.GetUniformLocation(r->prog, "u_id");
+    r->u_eye = r->gl.GetUniformLocation(r->prog, "u_eye");
+    r->u_fog = r->gl.GetUniformLocation(r->prog, "u_fog");
+    r->u_fogd = r->gl.GetUniformLocation(r->prog, "u_fogd");
+    r->gl.GenVertexArrays(1, &r->vao);
+    r->gl.GenBuffers(1, &r->vbo);
+    r->gl.GenBuffers(1, &r->ibo);
+    r->gl.BindVertexArray(r->vao);
+    r->gl.BindBuffer(GL_ARRAY_BUFFER, r->vbo);
+    r->gl.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, r->ibo);
+    r->gl.EnableVertexAttribArray(0);
+    r->gl.EnableVertexAttribArray(1);
+    r->gl.EnableVertexAttribArray(2);
+    r->gl.VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(hol_vertex),
                           (const void *)offsetof(hol_vertex, pos));
-    glVertexAttribPointer(1, 3, GL_BYTE, GL_TRUE, sizeof(hol_vertex),
+    r->gl.VertexAttribPointer(1, 3, GL_BYTE, GL_TRUE, sizeof(hol_vertex),
                           (const void *)offsetof(hol_vertex, nrm));
-    glVertexAttribPointer(2, 4, GL_UNSIGNED_BYTE, GL_TRUE, sizeof(hol_vertex),
+    r->gl.VertexAttribPointer(2, 4, GL_UNSIGNED_BYTE, GL_TRUE, sizeof(hol_vertex),
                           (const void *)offsetof(hol_vertex, rgba));
-    glBindVertexArray(0);
-    if (glGetError() != GL_NO_ERROR) {
+    r->gl.BindVertexArray(0);
+    if (r->gl.GetError() != GL_NO_ERROR) {
         hol_render_destroy(r);
         return HOL_EUNSUPPORTED;
     }
@@ -183,13 +192,13 @@ void hol_render_destroy(hol_render *r)
     if (!r)
         return;
     if (r->prog)
-        glDeleteProgram(r->prog);
+        r->gl.DeleteProgram(r->prog);
     if (r->vao)
-        glDeleteVertexArrays(1, &r->vao);
+        r->gl.DeleteVertexArrays(1, &r->vao);
     if (r->vbo)
-        glDeleteBuffers(1, &r->vbo);
+        r->gl.DeleteBuffers(1, &r->vbo);
     if (r->ibo)
-        glDeleteBuffers(1, &r->ibo);
+        r->gl.DeleteBuffers(1, &r->ibo);
     hol_scene_destroy(r->scene);
     free(r->verts);
     free(r->idx);
@@ -385,27 +394,27 @@ hol_err hol_render_frame(hol_render *r, const hol_frame_desc *f,
     int ids = (f->flags & HOL_RENDER_IDS) != 0;
     float sky[3];
     hol_scene_sky(sky);
-    glViewport(0, 0, f->cam.width, f->cam.height);
-    glDisable(GL_CULL_FACE);
-    glDisable(GL_BLEND);
-    glDisable(GL_DITHER);
-    glDepthMask(GL_TRUE);
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    glStencilMask(0xff);
+    r->gl.Viewport(0, 0, f->cam.width, f->cam.height);
+    r->gl.Disable(GL_CULL_FACE);
+    r->gl.Disable(GL_BLEND);
+    r->gl.Disable(GL_DITHER);
+    r->gl.DepthMask(GL_TRUE);
+    r->gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    r->gl.StencilMask(0xff);
     if (ids)
-        glClearColor(0, 0, 0, 1);
+        r->gl.ClearColor(0, 0, 0, 1);
     else
-        glClearColor(sky[0], sky[1], sky[2], 1);
-    glClearDepthf(1.0f);
-    glClearStencil(HOL_VIEW_STENCIL_CLEAR);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+        r->gl.ClearColor(sky[0], sky[1], sky[2], 1);
+    r->gl.ClearDepthf(1.0f);
+    r->gl.ClearStencil(HOL_VIEW_STENCIL_CLEAR);
+    r->gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
 
-    glUseProgram(r->prog);
-    glBindVertexArray(r->vao);
-    glBindBuffer(GL_ARRAY_BUFFER, r->vbo);
-    glBufferData(GL_ARRAY_BUFFER, (GLsizeiptr)(r->mesh.nv * sizeof(hol_vertex)),
+    r->gl.UseProgram(r->prog);
+    r->gl.BindVertexArray(r->vao);
+    r->gl.BindBuffer(GL_ARRAY_BUFFER, r->vbo);
+    r->gl.BufferData(GL_ARRAY_BUFFER, (GLsizeiptr)(r->mesh.nv * sizeof(hol_vertex)),
                  r->mesh.v, GL_STREAM_DRAW);
-    glBufferData(GL_ELEMENT_ARRAY_BUFFER, (GLsizeiptr)(r->mesh.ni * sizeof(uint32_t)),
+    r->gl.BufferData(GL_ELEMENT_ARRAY_BUFFER, (GLsizeiptr)(r->mesh.ni * sizeof(uint32_t)),
                  r->mesh.idx, GL_STREAM_DRAW);
     float view[16], proj[16], vp[16], ident[16];
     hol_camera_matrices(&f->cam, view, proj);
@@ -417,10 +426,10 @@ hol_err hol_render_frame(hol_render *r, const hol_frame_desc *f,
             vp[4 * i + j] = s;
         }
     hol__identity(ident);
-    glUniform3f(r->u_eye, (float)f->cam.eye[0], (float)f->cam.eye[1],
+    r->gl.Uniform3f(r->u_eye, (float)f->cam.eye[0], (float)f->cam.eye[1],
                 (float)f->cam.eye[2]);
-    glUniform3f(r->u_fog, sky[0], sky[1], sky[2]);
-    glUniform1f(r->u_fogd, 0.06f);
+    r->gl.Uniform3f(r->u_fog, sky[0], sky[1], sky[2]);
+    r->gl.Uniform1f(r->u_fogd, 0.06f);
     st.state_changes += 2;
 
     int cur_pass = -1, cur_ref = -1, cur_mask = -1;
@@ -432,80 +441,80 @@ hol_err hol_render_frame(hol_render *r, const hol_frame_desc *f,
             st.state_changes++;
             switch (cur_pass) {
             case HOL__PASS_STENCIL:
-                glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-                glDisable(GL_DEPTH_TEST);
-                glDepthMask(GL_FALSE);
-                glEnable(GL_STENCIL_TEST);
-                glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
-                glUniformMatrix4fv(r->u_vp, 1, GL_FALSE, ident);
-                glUniformMatrix4fv(r->u_model, 1, GL_FALSE, ident);
+                r->gl.ColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+                r->gl.Disable(GL_DEPTH_TEST);
+                r->gl.DepthMask(GL_FALSE);
+                r->gl.Enable(GL_STENCIL_TEST);
+                r->gl.StencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+                r->gl.UniformMatrix4fv(r->u_vp, 1, GL_FALSE, ident);
+                r->gl.UniformMatrix4fv(r->u_model, 1, GL_FALSE, ident);
                 break;
             case HOL__PASS_ROOM:
             case HOL__PASS_TILE:
-                glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-                glEnable(GL_DEPTH_TEST);
-                glDepthFunc(GL_LESS);
-                glDepthMask(GL_TRUE);
-                glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+                r->gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+                r->gl.Enable(GL_DEPTH_TEST);
+                r->gl.DepthFunc(GL_LESS);
+                r->gl.DepthMask(GL_TRUE);
+                r->gl.StencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
                 if (cur_pass == HOL__PASS_ROOM)
-                    glDisable(GL_STENCIL_TEST);
+                    r->gl.Disable(GL_STENCIL_TEST);
                 else
-                    glEnable(GL_STENCIL_TEST);
-                glUniformMatrix4fv(r->u_vp, 1, GL_FALSE, vp);
-                glUniform1i(r->u_mode, ids ? HOL__MODE_ID : HOL__MODE_LIT);
-                glUniform4f(r->u_id, 0, 0, 0, 1);
+                    r->gl.Enable(GL_STENCIL_TEST);
+                r->gl.UniformMatrix4fv(r->u_vp, 1, GL_FALSE, vp);
+                r->gl.Uniform1i(r->u_mode, ids ? HOL__MODE_ID : HOL__MODE_LIT);
+                r->gl.Uniform4f(r->u_id, 0, 0, 0, 1);
                 if (cur_pass == HOL__PASS_ROOM)
-                    glUniformMatrix4fv(r->u_model, 1, GL_FALSE, ident);
+                    r->gl.UniformMatrix4fv(r->u_model, 1, GL_FALSE, ident);
                 break;
             default:
-                glDisable(GL_DEPTH_TEST);
-                glDepthMask(GL_FALSE);
-                glDisable(GL_STENCIL_TEST);
-                glUniformMatrix4fv(r->u_vp, 1, GL_FALSE, ident);
-                glUniformMatrix4fv(r->u_model, 1, GL_FALSE, ident);
-                glUniform1i(r->u_mode, ids ? HOL__MODE_ID : HOL__MODE_FLAT);
+                r->gl.Disable(GL_DEPTH_TEST);
+                r->gl.DepthMask(GL_FALSE);
+                r->gl.Disable(GL_STENCIL_TEST);
+                r->gl.UniformMatrix4fv(r->u_vp, 1, GL_FALSE, ident);
+                r->gl.UniformMatrix4fv(r->u_model, 1, GL_FALSE, ident);
+                r->gl.Uniform1i(r->u_mode, ids ? HOL__MODE_ID : HOL__MODE_FLAT);
                 break;
             }
         }
         if (cur_pass == HOL__PASS_STENCIL) {
-            glStencilFunc(GL_ALWAYS, it->ref, 0xff);
+            r->gl.StencilFunc(GL_ALWAYS, it->ref, 0xff);
             st.state_changes++;
             st.stencil_passes++;
         } else if (cur_pass == HOL__PASS_TILE) {
             if (it->ref != cur_ref || it->mask != cur_mask) {
-                glStencilFunc(GL_EQUAL, it->ref, it->mask);
+                r->gl.StencilFunc(GL_EQUAL, it->ref, it->mask);
                 cur_ref = it->ref;
                 cur_mask = it->mask;
                 st.state_changes++;
             }
-            glUniformMatrix4fv(r->u_model, 1, GL_FALSE, it->model);
+            r->gl.UniformMatrix4fv(r->u_model, 1, GL_FALSE, it->model);
             if (ids) {
                 int id = it->branch + 1;
-                glUniform4f(r->u_id, (float)(id & 255) / 255.0f,
+                r->gl.Uniform4f(r->u_id, (float)(id & 255) / 255.0f,
                             (float)(id >> 8) / 255.0f, 0, 1);
             }
             st.branches++;
         }
-        glDrawElements(GL_TRIANGLES, (GLsizei)it->count, GL_UNSIGNED_INT,
+        r->gl.DrawElements(GL_TRIANGLES, (GLsizei)it->count, GL_UNSIGNED_INT,
                        (const void *)(uintptr_t)(it->first * sizeof(uint32_t)));
         st.draw_calls++;
         st.triangles += it->count / 3;
     }
-    glBindVertexArray(0);
-    glFinish();
+    r->gl.BindVertexArray(0);
+    r->gl.Finish();
     st.cpu_ms = hol__now(CLOCK_PROCESS_CPUTIME_ID) - c0;
     st.wall_ms = hol__now(CLOCK_MONOTONIC) - w0;
-    if (glGetError() != GL_NO_ERROR)
+    if (r->gl.GetError() != GL_NO_ERROR)
         return HOL_EUNSUPPORTED;
     if (out_stats)
         *out_stats = st;
     return HOL_OK;
 }
 
-void hol_render_read_rgba(int w, int h, uint8_t *out_rgba)
+void hol_render_read_rgba(hol_render *r, int w, int h, uint8_t *out_rgba)
 {
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, out_rgba);
+    r->gl.PixelStorei(GL_PACK_ALIGNMENT, 1);
+    r->gl.ReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, out_rgba);
     size_t row = (size_t)w * 4;
     uint8_t tmp[4 * 1024];
     for (int y = 0; y < h / 2; y++) {

@@ -2,7 +2,8 @@
  *
  * Contract
  * - Platform independent GLES 3.0 (shaders are `#version 300 es`; under
- *   OSMesa's desktop GL core profile the same code runs). The caller makes a
+ *   OSMesa's desktop GL core profile the same code runs). GL entry points
+ *   are loaded through desc.getproc (render/hol_gl.h); nothing links gl*. The caller makes a
  *   GL context current (with 8 stencil bits and a depth buffer) before
  *   hol_render_create and keeps it current for every call.
  * - hol_render_create makes the GL objects and the CPU stores once (sizes
@@ -36,8 +37,14 @@
 
 struct hol_world;
 
+/* The platform's get-proc-address (OSMesaGetProcAddress,
+ * eglGetProcAddress, ...), cast to this type. */
+typedef void (*hol_render_proc)(void);
+typedef hol_render_proc (*hol_render_getproc)(const char *name);
+
 typedef struct hol_render_desc {
-    int max_width, max_height; /* 0: 4096 */
+    hol_render_getproc getproc; /* required: GL is loaded through it */
+    int max_width, max_height;  /* 0: 4096 */
     struct hol_world *world;   /* optional; not owned */
 } hol_render_desc;
 
@@ -78,6 +85,8 @@ typedef struct hol_render_stats {
     double wall_ms;
 } hol_render_stats;
 
+/* Errors: HOL_EARG (no getproc), HOL_EUNSUPPORTED (a GL function or the
+ * shaders are missing), HOL_ENOMEM. */
 hol_err hol_render_create(const hol_render_desc *desc, hol_render **out);
 void hol_render_destroy(hol_render *r);
 /* Switch the world the content comes from (NULL: placeholder content). */
@@ -93,7 +102,7 @@ hol_err hol_render_frame(hol_render *r, const hol_frame_desc *f,
 const hol_view *hol_render_last_view(const hol_render *r);
 
 /* Read the framebuffer (w x h RGBA, rows top to bottom). */
-void hol_render_read_rgba(int w, int h, uint8_t *out_rgba);
+void hol_render_read_rgba(hol_render *r, int w, int h, uint8_t *out_rgba);
 
 /* Decode an ID-mode pixel: -1 for no floor, else the branch index. */
 int hol_render_decode_id(const uint8_t rgba[4]);

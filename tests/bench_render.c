@@ -57,6 +57,7 @@ int main(void)
     hol_render_desc rd;
     memset(&rd, 0, sizeof rd);
     rd.world = world;
+    rd.getproc = hol_osmesa_getproc;
     hol_render *r;
     if (hol_render_create(&rd, &r)) {
         fprintf(stderr, "bench_render: cannot create the renderer\n");

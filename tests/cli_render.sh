@@ -32,6 +32,7 @@ expect_usage --pitch 91 --out "$T/a.png"
 expect_usage --yaw abc --out "$T/a.png"
 expect_usage --bogus --out "$T/a.png"
 expect_usage --out
+expect_usage --gl vulkan --out "$T/a.png"
 [ ! -e "$T/a.png" ] || fail "a usage error left an output file"
 
 # a view, its tile ids, stats
@@ -53,6 +54,14 @@ ls "$T" | grep -q tmp && fail "a temporary file was left behind"
 # the euclidean baseline and a bare view render too
 "$H" render --euclidean --size 32x24 --out "$T/e.png" || fail "--euclidean"
 "$H" render --bare --size 32x24 --tile-ids "$T/b" || fail "--bare"
+
+# the same view through OpenGL ES 3 on EGL (surfaceless) is the same image
+if "$H" render --gl egl --walk NE --eye 2.4,1.6,0.6 --yaw 135 --pitch -40 \
+    --size 64x48 --out "$T/v_egl.png" 2>"$T/err"; then
+    cmp -s "$T/v.png" "$T/v_egl.png" || echo "note: EGL and OSMesa images differ (goldens decide)"
+else
+    echo "note: no EGL surfaceless platform here: $(cat "$T/err")"
+fi
 
 # a failed write: exit 1, the old file untouched, no temp file
 echo old >"$T/keep.png"

@@ -27,6 +27,7 @@
 #include "../core/hol_room.h"
 #include "../core/hol_tile.h"
 #include "../core/hol_world.h"
+#include "../platform/egl/hol_egl.h"
 #include "../platform/osmesa/hol_osmesa.h"
 #include "../render/hol_png.h"
 #include "../render/hol_render.h"
@@ -79,6 +80,7 @@ static int setup(void **state)
     hol_render_desc rd;
     memset(&rd, 0, sizeof rd);
     rd.world = world;
+    rd.getproc = hol_osmesa_getproc;
     return hol_render_create(&rd, &rnd) ? -1 : 0;
 }
 
@@ -91,7 +93,7 @@ static int teardown(void **state)
     return 0;
 }
 
-static void render_view(const golden_view *g, uint8_t *rgba)
+static void render_with(hol_render *rr, const golden_view *g, uint8_t *rgba)
 {
     hol_frame_desc f;
     memset(&f, 0, sizeof f);
@@ -117,19 +119,77 @@ static void render_view(const golden_view *g, uint8_t *rgba)
     assert_int_equal(hol_world_update(world, &f.user), HOL_OK);
     f.steps_taken = 2;
     f.time_s = 83;
-    assert_int_equal(hol_render_frame(rnd, &f, NULL), HOL_OK);
-    hol_render_read_rgba(W, H, rgba);
+    assert_int_equal(hol_render_frame(rr, &f, NULL), HOL_OK);
+    hol_render_read_rgba(rr, W, H, rgba);
+}
+
+static void render_view(const golden_view *g, uint8_t *rgba)
+{
+    render_with(rnd, g, rgba);
+}
+
+/* Compare img with the golden NAME; on failure write NAME+tag.actual.png
+ * and NAME+tag.diff.png and return 1. */
+static int compare(const char *name, const uint8_t *img, const char *tag)
+{
+    static uint8_t diff[W * H * 4];
+    char path[600], apath[600], dpath[600];
+    snprintf(path, sizeof path, "tests/golden/%s.png", name);
+    uint8_t *ref = NULL;
+    int rw = 0, rh = 0;
+    hol_err err = hol_png_read_file(path, &ref, &rw, &rh);
+    if (err) {
+        printf("golden: %s: cannot read (%s); run with HOL_GOLDEN_UPDATE=1 "
+               "and review\n", path, hol_err_str(err));
+        return 1;
+    }
+    if (rw != W || rh != H) {
+        printf("golden: %s is %dx%d, expected %dx%d\n", path, rw, rh, W, H);
+        free(ref);
+        return 1;
+    }
+    int bad = 0, worst = 0;
+    for (int p = 0; p < W * H; p++) {
+        int d = 0;
+        for (int k = 0; k < 3; k++) {
+            int e = abs((int)img[4 * p + k] - (int)ref[4 * p + k]);
+            d = e > d ? e : d;
+        }
+        worst = d > worst ? d : worst;
+        uint8_t *o = diff + 4 * p;
+        if (d > TOL) {
+            bad++;
+            o[0] = 255;
+            o[1] = o[2] = 0;
+        } else {
+            o[0] = ref[4 * p] / 3;
+            o[1] = ref[4 * p + 1] / 3;
+            o[2] = ref[4 * p + 2] / 3;
+        }
+        o[3] = 255;
+    }
+    free(ref);
+    if (bad * 200 <= W * H)
+        return 0;
+    mkdir(out_dir, 0777);
+    snprintf(apath, sizeof apath, "%s/%s%s.actual.png", out_dir, name, tag);
+    snprintf(dpath, sizeof dpath, "%s/%s%s.diff.png", out_dir, name, tag);
+    hol_png_write_file(apath, img, W, H, 0);
+    hol_png_write_file(dpath, diff, W, H, 0);
+    printf("golden: %s%s: %d pixels differ (max channel diff %d); see %s and %s\n", name,
+           tag, bad, worst, apath, dpath);
+    return 1;
 }
 
 static void test_goldens(void **state)
 {
     (void)state;
-    static uint8_t img[W * H * 4], diff[W * H * 4];
+    static uint8_t img[W * H * 4];
     int update = getenv("HOL_GOLDEN_UPDATE") && getenv("HOL_GOLDEN_UPDATE")[0] == '1';
     int failed = 0;
     for (size_t i = 0; i < sizeof views / sizeof views[0]; i++) {
         const golden_view *g = &views[i];
-        char path[600], apath[600], dpath[600];
+        char path[600];
         snprintf(path, sizeof path, "tests/golden/%s.png", g->name);
         render_view(g, img);
         if (update) {
@@ -137,52 +197,7 @@ static void test_goldens(void **state)
             printf("golden: wrote %s (review it before committing)\n", path);
             continue;
         }
-        uint8_t *ref = NULL;
-        int rw = 0, rh = 0;
-        hol_err err = hol_png_read_file(path, &ref, &rw, &rh);
-        if (err) {
-            printf("golden: %s: cannot read (%s); run with HOL_GOLDEN_UPDATE=1 "
-                   "and review\n", path, hol_err_str(err));
-            failed++;
-            continue;
-        }
-        if (rw != W || rh != H) {
-            printf("golden: %s is %dx%d, expected %dx%d\n", path, rw, rh, W, H);
-            free(ref);
-            failed++;
-            continue;
-        }
-        int bad = 0, worst = 0;
-        for (int p = 0; p < W * H; p++) {
-            int d = 0;
-            for (int k = 0; k < 3; k++) {
-                int e = abs((int)img[4 * p + k] - (int)ref[4 * p + k]);
-                d = e > d ? e : d;
-            }
-            worst = d > worst ? d : worst;
-            uint8_t *o = diff + 4 * p;
-            if (d > TOL) {
-                bad++;
-                o[0] = 255;
-                o[1] = o[2] = 0;
-            } else {
-                o[0] = ref[4 * p] / 3;
-                o[1] = ref[4 * p + 1] / 3;
-                o[2] = ref[4 * p + 2] / 3;
-            }
-            o[3] = 255;
-        }
-        free(ref);
-        if (bad * 200 > W * H) {
-            mkdir(out_dir, 0777);
-            snprintf(apath, sizeof apath, "%s/%s.actual.png", out_dir, g->name);
-            snprintf(dpath, sizeof dpath, "%s/%s.diff.png", out_dir, g->name);
-            hol_png_write_file(apath, img, W, H, 0);
-            hol_png_write_file(dpath, diff, W, H, 0);
-            printf("golden: %s: %d pixels differ (max channel diff %d); see %s and %s\n",
-                   g->name, bad, worst, apath, dpath);
-            failed++;
-        }
+        failed += compare(g->name, img, "");
     }
     assert_int_equal(failed, 0);
 }
@@ -220,6 +235,38 @@ static void test_comparison_detects_change(void **state)
     assert_int_equal(hol_png_decode(data, 7, &bad_img, &w, &h), HOL_ECORRUPT);
     free(data);
     free(back);
+}
+
+/* The same code on OpenGL ES 3 (EGL surfaceless, Mesa) draws the same
+ * pictures as on OSMesa's desktop core profile: every golden view is
+ * rendered through EGL and compared with the same goldens. Skipped (with a
+ * message) where the machine has no EGL surfaceless platform. */
+static void test_egl_gles_matches_goldens(void **state)
+{
+    (void)state;
+    hol_egl egl;
+    char msg[256];
+    if (hol_egl_create(&egl, W, H, msg, sizeof msg)) {
+        printf("egl: %s: skipped\n", msg);
+        OSMesaMakeCurrent(gl.ctx, gl.buf, GL_UNSIGNED_BYTE, W, H);
+        skip();
+    }
+    hol_render_desc rd;
+    memset(&rd, 0, sizeof rd);
+    rd.world = world;
+    rd.getproc = hol_egl_getproc;
+    hol_render *er = NULL;
+    assert_int_equal(hol_render_create(&rd, &er), HOL_OK);
+    static uint8_t img[W * H * 4];
+    int failed = 0;
+    for (size_t i = 0; i < sizeof views / sizeof views[0]; i++) {
+        render_with(er, &views[i], img);
+        failed += compare(views[i].name, img, ".egl");
+    }
+    hol_render_destroy(er);
+    hol_egl_destroy(&egl);
+    OSMesaMakeCurrent(gl.ctx, gl.buf, GL_UNSIGNED_BYTE, W, H);
+    assert_int_equal(failed, 0);
 }
 
 /* Per-eye budgets that do not depend on timing (those are in make bench):
@@ -369,6 +416,7 @@ int main(int argc, char **argv)
         cmocka_unit_test(test_comparison_detects_change),
         cmocka_unit_test(test_png_reader_survives_damage),
         cmocka_unit_test(test_stats_within_budget),
+        cmocka_unit_test(test_egl_gles_matches_goldens),
         cmocka_unit_test(test_goldens),
     };
     return cmocka_run_group_tests(tests, setup, teardown);

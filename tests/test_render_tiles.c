@@ -81,6 +81,7 @@ static int setup(void **state)
     hol_render_desc rd;
     memset(&rd, 0, sizeof rd);
     rd.world = world;
+    rd.getproc = hol_osmesa_getproc;
     return hol_render_create(&rd, &rnd) ? -1 : 0;
 }
 
@@ -187,7 +188,7 @@ static void check_case(const view_case *c, int flags, int *out_checked)
     f.flags = c->flags | flags | HOL_RENDER_IDS | HOL_RENDER_NO_HUD;
     assert_int_equal(hol_render_frame(rnd, &f, NULL), HOL_OK);
     static uint8_t px[W * H * 4];
-    hol_render_read_rgba(W, H, px);
+    hol_render_read_rgba(rnd, W, H, px);
     const hol_view *v = hol_render_last_view(rnd);
     int bare = (flags & HOL_RENDER_BARE) != 0;
     int checked = 0, skipped = 0, drawn = 0, exp_floor = 0;
@@ -301,7 +302,7 @@ static void test_trunks_hide_seams(void **state)
         f.flags = c->flags | HOL_RENDER_IDS | HOL_RENDER_NO_HUD;
         assert_int_equal(hol_render_frame(rnd, &f, NULL), HOL_OK);
         static uint8_t px[W * H * 4];
-        hol_render_read_rgba(W, H, px);
+        hol_render_read_rgba(rnd, W, H, px);
         for (int y = 0; y < H; y++)
             for (int x = 0; x < W; x++) {
                 if (hol_render_decode_id(px + (y * W + x) * 4) < 0)
@@ -398,7 +399,7 @@ static void test_creeks_continue_across_edges(void **state)
             f.flags = HOL_RENDER_BARE | HOL_RENDER_NO_HUD;
             assert_int_equal(hol_render_frame(rnd, &f, NULL), HOL_OK);
             static uint8_t px[W * H * 4];
-            hol_render_read_rgba(W, H, px);
+            hol_render_read_rgba(rnd, W, H, px);
             /* the 12 interior edges: vertical x = 1, 2 and horizontal z = 1, 2 */
             for (int e = 0; e < 12; e++) {
                 int vert = e < 6, line = 1 + (e % 6) / 3, seg = e % 3;

@@ -12,6 +12,7 @@
 #include "../../core/hol_world.h"
 #include "../../render/hol_png.h"
 #include "../../render/hol_render.h"
+#include "../egl/hol_egl.h"
 #include "../osmesa/hol_osmesa.h"
 #include "cli.h"
 
@@ -20,6 +21,7 @@ static const char *const render_usage =
     "                       [--size WxH] [--out FILE.png] [--tile-ids FILE]\n"
     "                       [--stats] [--euclidean] [--bare] [--fov DEG]\n"
     "                       [--frames N] [--seed N] [--hud] [--target ADDR]\n"
+    "                       [--gl osmesa|egl]\n"
     "\n"
     "Render what the user sees, headless (OSMesa), and write a PNG.\n"
     "\n"
@@ -42,6 +44,8 @@ static const char *const render_usage =
     "  --frames N      render N times (stats: median CPU ms), default 1\n"
     "  --seed N        world seed (default 1): the forest's content\n"
     "  --hud           draw the HUD text and the Poincare minimap\n"
+    "  --gl API        osmesa (default: desktop GL core, no display) or egl\n"
+    "                  (OpenGL ES 3 on EGL's surfaceless platform)\n"
     "  --target ADDR   an objective tile (repeatable, up to 8): guide pole,\n"
     "                  minimap marker, hot-cold colours\n"
     "\n"
@@ -114,7 +118,7 @@ int cli_cmd_render(int argc, char **argv)
     const char *walk = "-", *eye_s = NULL, *out = NULL, *ids_path = NULL;
     double yaw = 0, pitch = -30, fov = 90;
     long w = 640, h = 480, frames = 1;
-    int stats = 0, flags = HOL_RENDER_NO_HUD, ntargets = 0;
+    int stats = 0, flags = HOL_RENDER_NO_HUD, ntargets = 0, use_egl = 0;
     unsigned long long seed = 1;
     hol_tile targets[HOL_RENDER_MAX_OBJECTIVES];
     for (int i = 1; i < argc; i++) {
@@ -125,7 +129,7 @@ int cli_cmd_render(int argc, char **argv)
                     !strcmp(a, "--size") || !strcmp(a, "--out") ||
                     !strcmp(a, "--tile-ids") || !strcmp(a, "--fov") ||
                     !strcmp(a, "--frames") || !strcmp(a, "--seed") ||
-                    !strcmp(a, "--target");
+                    !strcmp(a, "--target") || !strcmp(a, "--gl");
         if (takes && !val) {
             cli_error(cmd, 0, "%s needs a value; see 'holonomy render --help'", a);
             return CLI_EXIT_USAGE;
@@ -192,6 +196,15 @@ int cli_cmd_render(int argc, char **argv)
                 return CLI_EXIT_USAGE;
             }
             ntargets++;
+        } else if (!strcmp(a, "--gl")) {
+            if (!strcmp(val, "egl"))
+                use_egl = 1;
+            else if (!strcmp(val, "osmesa"))
+                use_egl = 0;
+            else {
+                cli_error(cmd, 0, "--gl '%.40s' is not osmesa or egl", val);
+                return CLI_EXIT_USAGE;
+            }
         } else if (!strcmp(a, "--hud")) {
             flags &= ~HOL_RENDER_NO_HUD;
             flags |= HOL_RENDER_MINIMAP;
@@ -288,8 +301,10 @@ int cli_cmd_render(int argc, char **argv)
 
     /* GL */
     char msg[256];
-    hol_osmesa gl;
-    if (hol_osmesa_create(&gl, (int)w, (int)h, msg, sizeof msg)) {
+    hol_osmesa gl = {0};
+    hol_egl egl = {0};
+    if (use_egl ? hol_egl_create(&egl, (int)w, (int)h, msg, sizeof msg)
+                : hol_osmesa_create(&gl, (int)w, (int)h, msg, sizeof msg)) {
         cli_error(cmd, 0, "%s", msg);
         return CLI_EXIT_FAIL;
     }
@@ -329,6 +344,7 @@ int cli_cmd_render(int argc, char **argv)
     memset(&rd, 0, sizeof rd);
     rd.max_width = rd.max_height = 8192;
     rd.world = world;
+    rd.getproc = use_egl ? hol_egl_getproc : hol_osmesa_getproc;
     err = hol_render_create(&rd, &r);
     if (err) {
         cli_error(cmd, 0, "cannot initialise the renderer: %s", hol_err_str(err));
@@ -353,7 +369,7 @@ int cli_cmd_render(int argc, char **argv)
         cpu[k] = st.cpu_ms;
     }
     if (out) {
-        hol_render_read_rgba((int)w, (int)h, rgba);
+        hol_render_read_rgba(r, (int)w, (int)h, rgba);
         err = hol_png_write_file(out, rgba, (int)w, (int)h, 0);
         if (err) {
             cli_error(cmd, 0, "cannot write '%.200s': %s", out, strerror(errno));
@@ -382,7 +398,7 @@ int cli_cmd_render(int argc, char **argv)
             status = CLI_EXIT_FAIL;
             goto done;
         }
-        hol_render_read_rgba((int)w, (int)h, rgba);
+        hol_render_read_rgba(r, (int)w, (int)h, rgba);
         const hol_view *v = hol_render_last_view(r);
         static char addr[HOL_VIEW_MAX_BRANCHES][HOL_TILE_ADDR_MAX];
         for (int b = 0; b < v->nbranches; b++)
@@ -410,7 +426,10 @@ done:
     free(rgba);
     hol_render_destroy(r);
     hol_world_destroy(world);
-    hol_osmesa_destroy(&gl);
+    if (use_egl)
+        hol_egl_destroy(&egl);
+    else
+        hol_osmesa_destroy(&gl);
     int o = cli_finish_output(cmd);
     return status ? status : o;
 }

@@ -56,6 +56,13 @@ static inline int hol_osmesa_create(hol_osmesa *o, int w, int h, char *err,
     return 0;
 }
 
+/* GL entry points of the current OSMesa context, for hol_render_desc. */
+typedef void (*hol_osmesa_proc)(void);
+static inline hol_osmesa_proc hol_osmesa_getproc(const char *name)
+{
+    return (hol_osmesa_proc)OSMesaGetProcAddress(name);
+}
+
 static inline void hol_osmesa_destroy(hol_osmesa *o)
 {
     if (o->ctx)
