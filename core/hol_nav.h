@@ -12,8 +12,13 @@
  *   user's tile and room north as seen from the target, plus the cell. It
  *   holds, for every tile within desc.radius of a target, every orientation
  *   and cell, the fewest steps of walks that stay within that radius. For
- *   targets within the trusted radius (radius - 2) the table gives the
- *   answer without search (result.exact = 1).
+ *   targets within the trusted radius (radius - 2, 12 by default) the table
+ *   gives the answer without search (result.exact = 1). "Trusted": a table
+ *   one tile larger gives the same costs there (checked by the tests for
+ *   every radius 4..14), and so do brute-force BFS runs to distance 8; the
+ *   costs are not proved exact beyond what hol_nav_table.c proves.
+ * - hol_nav_create also reserves a state-to-state leg table for exact tours
+ *   (about 5 MB, built on the first hol_nav_tour call).
  * - Farther targets: anytime best-first search guided by the table, at most
  *   `budget` nodes (the arena bounds it, so no query hangs); it returns the
  *   best complete walk found (result.exact = 0), or failing that a chain of
@@ -55,18 +60,18 @@ typedef struct hol_nav_desc {
 
 typedef struct hol_nav hol_nav; /* opaque */
 
-/* Build the cost table (about 0.25 s and 28 MB in all at the default
- * radius; 32 bytes a node plus 16 of hash and queue). Errors:
+/* Build the cost table (about 0.2 s; 30 MB in all at the defaults: table
+ * 11 MB, leg table 5 MB, arena 32 bytes a node plus 16 of hash and queue,
+ * at least the table's build scratch). Errors:
  * HOL_EARG (radius out of range), HOL_ENOMEM (the allocation failed). */
 hol_err hol_nav_create(const hol_nav_desc *desc, hol_nav **out_nav);
 void hol_nav_destroy(hol_nav *nav);
 
-/* Bytes held by the navigator (table + arena). */
+/* Bytes held by the navigator (tables + arena). */
 size_t hol_nav_memory(const hol_nav *nav);
 /* The trusted radius, desc.radius - 2 (12 by default): targets within it
- * are answered from the table alone (no search) and flagged exact. Costs
- * there equal those of every larger table (the tests check radius r
- * against r + 1 and against brute-force BFS); see hol_nav_table.c. */
+ * are answered from the table alone (no search) and flagged exact (see the
+ * contract above for what backs that). */
 int hol_nav_table_exact_radius(const hol_nav *nav);
 
 typedef struct hol_nav_result {

@@ -7,7 +7,8 @@
  * its first steps are a prefix of an optimal walk, measured where the truth
  * is known (a radius-10 navigator, trusted to 8, answering targets at 9..12
  * in anytime mode, against the default navigator's exact answers; and the
- * default navigator at distance 13 against a radius-15 one). Last, tours.
+ * default navigator at distance 13 against a radius-15 one). Last, tours:
+ * time, share answered by the dynamic program, share exact.
  */
 #include <stdint.h>
 #include <stdio.h>
@@ -134,20 +135,20 @@ static void bench_prefix(hol_nav *any, hol_nav *exact, int dlo, int dhi, size_t 
     }
 }
 
-static void bench_tours(hol_nav *nav)
+static void bench_tours(hol_nav *nav, int dmax, const char *label)
 {
     static uint8_t walk[HOL_NAV_WALK_MAX];
-    printf("\ntours (keys and chest at tile distance 1..4 from the start)\n");
-    printf("  keys  median_ms  max_ms  nodes_mean  len_mean  exact\n");
+    printf("\ntours: %s\n", label);
+    printf("  keys  median_ms  max_ms  by_dp  exact  nodes_mean  len_mean\n");
     for (int nk = 1; nk <= 5; nk++) {
-        int n = nk >= 4 ? 20 : 40, exact = 0;
+        int n = 40, exact = 0, dp = 0;
         double t[40], nodes = 0, len = 0;
         for (int q = 0; q < n; q++) {
             hol_room s = random_start();
             hol_tile keys[5], chest;
             for (int i = 0; i < nk; i++)
-                keys[i] = random_target(&s, 1 + (int)rnd(4));
-            chest = random_target(&s, 1 + (int)rnd(4));
+                keys[i] = random_target(&s, 1 + (int)rnd((uint32_t)dmax));
+            chest = random_target(&s, 1 + (int)rnd((uint32_t)dmax));
             hol_nav_result res;
             double t0 = now_ms();
             hol_nav_tour(nav, &s, keys, nk, chest, 0, walk, sizeof walk, &res);
@@ -155,10 +156,11 @@ static void bench_tours(hol_nav *nav)
             nodes += (double)res.nodes;
             len += res.len;
             exact += res.exact;
+            dp += res.exact && res.nodes == 0;
         }
         qsort(t, (size_t)n, sizeof t[0], cmp_double);
-        printf("  %4d  %9.3f  %6.1f  %10.0f  %8.2f  %4d%%\n", nk, t[n / 2], t[n - 1],
-               nodes / n, len / n, 100 * exact / n);
+        printf("  %4d  %9.3f  %6.1f  %4d%%  %4d%%  %10.0f  %8.2f\n", nk, t[n / 2], t[n - 1],
+               100 * dp / n, 100 * exact / n, nodes / n, len / n);
     }
 }
 
@@ -207,7 +209,19 @@ int main(void)
         hol_nav_destroy(big);
     }
 
-    bench_tours(nav);
+    {
+        /* the first tour builds the leg table */
+        static uint8_t walk[HOL_NAV_WALK_MAX];
+        hol_room s = hol_room_start();
+        hol_tile key = random_target(&s, 2);
+        hol_nav_result res;
+        double tl = now_ms();
+        hol_nav_tour(nav, &s, &key, 1, key, 0, walk, sizeof walk, &res);
+        printf("\ntour leg table (state to state, radius 10, exact within %d): built "
+               "on the first tour in %.0f ms\n", HOL_NAV_TOUR_EXACT_RADIUS, now_ms() - tl);
+    }
+    bench_tours(nav, 3, "keys and chest at tile distance 1..3 from the start");
+    bench_tours(nav, 5, "keys and chest at tile distance 1..5 from the start");
     hol_nav_destroy(nav);
     return 0;
 }

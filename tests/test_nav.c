@@ -27,6 +27,13 @@
 #include "../core/hol_room.h"
 #include "../core/hol_tile.h"
 
+#ifndef FAR_BFS
+#define FAR_BFS 4
+#endif
+#ifndef FAR_BFS_DEPTH
+#define FAR_BFS_DEPTH 36
+#endif
+
 static hol_nav *g_nav; /* default navigator (radius 14, trusted 12) */
 
 static int setup(void **state)
@@ -243,16 +250,16 @@ static void test_index(void **state)
 
 /* ---- the table: radius r agrees with radius r + 1 within r - 2 ---- */
 
-static void check_converged(int r)
+static void check_converged(int r, int more)
 {
     hol_navtab a, b;
-    void *ma = malloc(hol_navtab_table_bytes(r)), *mb = malloc(hol_navtab_table_bytes(r + 1));
-    void *s = malloc(hol_navtab_scratch_bytes(r + 1));
+    void *ma = malloc(hol_navtab_table_bytes(r)), *mb = malloc(hol_navtab_table_bytes(r + more));
+    void *s = malloc(hol_navtab_scratch_bytes(r + more));
     assert_non_null(ma);
     assert_non_null(mb);
     assert_non_null(s);
     assert_int_equal(hol_navtab_build(&a, r, ma, s), HOL_OK);
-    assert_int_equal(hol_navtab_build(&b, r + 1, mb, s), HOL_OK);
+    assert_int_equal(hol_navtab_build(&b, r + more, mb, s), HOL_OK);
     size_t n = 9 * (size_t)a.off[r - 1];
     assert_memory_equal(a.cost, b.cost, n);
     /* and it does differ at the edge, so the check has teeth */
@@ -266,7 +273,9 @@ static void test_table_converges(void **state)
 {
     (void)state;
     for (int r = 4; r <= 12; r++)
-        check_converged(r);
+        check_converged(r, 1);
+    for (int r = 4; r <= 11; r++)
+        check_converged(r, 2);
 }
 
 /* The default radius (14 against 15): the claim behind "exact within 12".
@@ -274,7 +283,7 @@ static void test_table_converges(void **state)
 static void test_table_converges_default(void **state)
 {
     (void)state;
-    check_converged(HOL_NAV_DEFAULT_RADIUS);
+    check_converged(HOL_NAV_DEFAULT_RADIUS, 1);
 }
 
 /* The tour leg table (state to state): radius r agrees with r + 1 within
@@ -373,6 +382,22 @@ static void test_optimal_vs_bfs(void **state)
         checked++;
         hist[d]++;
     }
+    /* a few far ones, from the start state (a BFS to depth ~36 is ~1 s) */
+    int far_checked = 0;
+    for (int q = 0; q < 200 && far_checked < FAR_BFS; q++) {
+        hol_room s = hol_room_start();
+        hol_tile t = random_target(&s, 10 + q % 3);
+        uint8_t walk[HOL_NAV_WALK_MAX];
+        hol_nav_result res;
+        assert_int_equal(hol_nav_find(g_nav, &s, t, 0, walk, sizeof walk, &res), HOL_OK);
+        assert_int_equal(res.exact, 1);
+        check_walk(&s, walk, res.len, t);
+        if (res.len > FAR_BFS_DEPTH)
+            continue;
+        assert_int_equal(bf_cost(&b, &s, t, res.len), res.len);
+        far_checked++;
+    }
+    print_message("optimal vs BFS: %d far queries (distance 10..12)\n", far_checked);
     print_message("optimal vs BFS: %d queries (by distance 1..8: %d %d %d %d %d %d %d %d)\n",
                   checked, hist[1], hist[2], hist[3], hist[4], hist[5], hist[6],
                   hist[7], hist[8]);
