@@ -300,6 +300,7 @@ hol_err hol_world_load(hol_world *w, const void *buf, size_t len, char *msg,
     /* accepted: replace the store */
     memset(w->entries, 0, (size_t)w->cap * sizeof(hol__entry));
     w->count = 0;
+    w->sweep_phase = 0; /* a sweep in progress belonged to the old store */
     w->seed = im.seed;
     w->stamp = im.stamp;
     w->user = im.user;

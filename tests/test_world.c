@@ -708,6 +708,69 @@ static void test_reserve(void **state)
     hol_world_destroy(w);
 }
 
+/* hol_world_check can fail: break the store in several ways. */
+static void test_check_detects(void **state)
+{
+    (void)state;
+    hol_world *w = walk_world(31, 400, 1u << 14, 0);
+    assert_check(w);
+    char msg[256];
+    int broken = 0;
+    for (uint32_t i = 0; i < w->cap && broken < 20; i++) {
+        hol__entry *e = &w->entries[i];
+        if (!(e->flags & HOL__F_USED) || e->state == HOL__UNSET)
+            continue;
+        int linked = 0;
+        for (int d = 0; d < 4; d++) {
+            hol_tile nt;
+            hol_tile_content nc;
+            if (hol__state_conn(e->state, d) != HOL_CONN_NONE &&
+                !hol_tile_step(e->tile, d, &nt, NULL) && !hol_world_peek(w, nt, &nc))
+                linked = 1;
+        }
+        if (!linked)
+            continue;
+        uint8_t keep = e->state;
+        e->state = 1; /* grass: a creek or log now ends at this edge */
+        assert_int_equal(hol_world_check(w, msg, sizeof msg), HOL_ECORRUPT);
+        assert_non_null(strstr(msg, "connector"));
+        e->state = keep;
+        broken++;
+    }
+    assert_true(broken > 0);
+    assert_check(w);
+    /* an object the biome does not allow */
+    for (uint32_t i = 0; i < w->cap; i++) {
+        hol__entry *e = &w->entries[i];
+        if ((e->flags & HOL__F_USED) && e->state == 0 /* none */) {
+            uint8_t b = e->biome;
+            e->state = 2;               /* flowers ... */
+            e->biome = HOL_BIOME_PINE;  /* ... are not in pine forests */
+            assert_int_equal(hol_world_check(w, msg, sizeof msg), HOL_ECORRUPT);
+            e->state = 0;
+            e->biome = b;
+            break;
+        }
+    }
+    /* a collapsed tile without a biome */
+    for (uint32_t i = 0; i < w->cap; i++) {
+        hol__entry *e = &w->entries[i];
+        if ((e->flags & HOL__F_USED) && e->state != HOL__UNSET) {
+            uint8_t b = e->biome;
+            e->biome = HOL_BIOME_NONE;
+            assert_int_equal(hol_world_check(w, msg, sizeof msg), HOL_ECORRUPT);
+            e->biome = b;
+            break;
+        }
+    }
+    /* the table: a wrong count */
+    w->count++;
+    assert_int_equal(hol_world_check(w, msg, sizeof msg), HOL_ECORRUPT);
+    w->count--;
+    assert_check(w);
+    hol_world_destroy(w);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -722,6 +785,7 @@ int main(void)
         cmocka_unit_test(test_capacity_exhaustion),
         cmocka_unit_test(test_lifecycle),
         cmocka_unit_test(test_reserve),
+        cmocka_unit_test(test_check_detects),
         cmocka_unit_test(test_long_walk),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
