@@ -11,8 +11,15 @@
  * state matches exactly (plain, log, spring, creek with 2..4 edges), and a
  * collapse only chooses connectors that keep every neighbour's demands in
  * that set (forward check against the neighbour's domain). So no collapsed
- * neighbourhood is ever unresolvable; tests/test_world.c checks all 3^4 * 4
- * ... demand vectors exhaustively.
+ * neighbourhood is ever unresolvable; tests/test_world.c checks all 4^4
+ * demand vectors exhaustively, and hol_world_check verifies for every open
+ * tile in the store that its fixed neighbours leave it a completion.
+ *
+ * Weights: a free choice draws by biome weight (hol__base) times a factor
+ * for the creek edges it opens towards open neighbours: a tile no creek
+ * reaches may start one only as a spring (x12; creek shapes x0), a creek
+ * that arrives continues with one new edge (x100) far more often than it
+ * ends (spring/pool x100 but small bases) or forks (2 new edges x3).
  *
  * A batch (hol__generate) takes the tiles within `radius` of a centre (the
  * ball) plus the ring at radius + 1, derives each uncollapsed domain from the
