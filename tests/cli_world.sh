@@ -50,6 +50,16 @@ awk '$3=="log" && gsub(/l/,"l",$5)!=1 {print; bad=1}
 # sorted by distance from the end tile: O is one step from Nr
 head -1 "$T/out" | grep -q '^Nr ' && ok || bad "first line is not the end tile"
 
+# seeds: decimal (a leading 0 is not octal) or 0x hex
+"$H" world --seed 10 >"$T/s10"; "$H" world --seed 010 >"$T/s010"; "$H" world --seed 0xa >"$T/sxa"
+same "seed 010 is ten" "$T/s10" "$T/s010"
+same "seed 0xa is ten" "$T/s10" "$T/sxa"
+run "seed 18446744073709551615" 0 "$H" world --seed 18446744073709551615 --radius 0
+run "seed too big" 2 "$H" world --seed 18446744073709551616
+one_line "seed too big" "seed"
+run "seed 0x" 2 "$H" world --seed 0x
+one_line "seed 0x" "seed"
+
 # determinism, and another seed gives another world
 "$H" world --seed 42 --walk NWSEENWW --radius 5 >"$T/a"
 "$H" world --seed 42 --walk NWSEENWW --radius 5 >"$T/b"

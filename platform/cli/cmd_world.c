@@ -78,7 +78,13 @@ static int parse_u64(const char *s, uint64_t *out)
         return 0;
     char *end;
     errno = 0;
-    unsigned long long v = strtoull(s, &end, 0);
+    int hex = s[0] == '0' && (s[1] == 'x' || s[1] == 'X');
+    if (hex && !s[2])
+        return 0;
+    /* decimal, or 0x hex; a leading 0 is not octal */
+    unsigned long long v = strtoull(hex ? s + 2 : s, &end, hex ? 16 : 10);
+    if (hex && (s[2] == '-' || s[2] == '+' || s[2] == ' '))
+        return 0;
     if (errno || *end)
         return 0;
     *out = v;
