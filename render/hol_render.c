@@ -316,7 +316,7 @@ static hol_err hol__build(hol_render *r, const hol_frame_desc *f)
     /* pass 1: the room's own meshes */
     if (!bare) {
         uint32_t i0 = r->mesh.ni;
-        hol_scene_room(r->scene, &r->mesh, v, r->desc.world);
+        hol_scene_room(r->scene, &r->mesh, &f->user, r->desc.world);
         if (r->mesh.overflow)
             return HOL_ENOMEM;
         hol__item *it = hol__push(r, HOL__PASS_ROOM, i0, r->mesh.ni - i0);

@@ -148,47 +148,51 @@ static float hol__unit(uint64_t *x)
     return (float)(hol__mix(x) >> 40) / 16777216.0f;
 }
 
-/* The tree standing on room vertex (i,j): seen through the branch with the
- * fewest steps among the cells around the vertex. */
-static int hol__vertex_tree(const hol_view *view, struct hol_world *world, int i,
+/* The tree standing on room vertex (i,j): the vertex as a corner of the
+ * adjacent cell nearest the user's cell (ties: the first of NW, SW, SE, NE
+ * corners), reached by the room walk columns first, then rows. This does
+ * not depend on where the eye is inside the cell, so trees never change
+ * while the user stands still or looks around. */
+static int hol__vertex_tree(const hol_room *user, struct hol_world *world, int i,
                             int j, hol_tree *out)
 {
-    const hol_view_branch *best = NULL;
-    int best_corner = 0;
-    for (int k = 0; k < view->nbranches; k++) {
-        const hol_view_branch *b = &view->branches[k];
-        if (b->err)
+    if (!world)
+        return 0;
+    /* the four cells around the vertex and the vertex's corner in each */
+    static const int dc[4] = {0, 0, -1, -1}, dr[4] = {0, -1, -1, 0};
+    int best = -1, best_d = 1 << 30;
+    for (int a = 0; a < 4; a++) {
+        int c = i + dc[a], r = j + dr[a];
+        if (c < 0 || c >= HOL_ROOM_SIZE || r < 0 || r >= HOL_ROOM_SIZE)
             continue;
-        int c = b->state.col, r = b->state.row, a;
-        /* room corner of the cell: 0 NW (between N and W), 1 SW, 2 SE, 3 NE */
-        if (i == c && j == r)
-            a = 0;
-        else if (i == c && j == r + 1)
-            a = 1;
-        else if (i == c + 1 && j == r + 1)
-            a = 2;
-        else if (i == c + 1 && j == r)
-            a = 3;
-        else
-            continue;
-        if (!best || b->nsteps < best->nsteps) {
-            best = b;
-            best_corner = a;
+        int d = abs(c - user->col) + abs(r - user->row);
+        if (d < best_d) {
+            best_d = d;
+            best = a;
         }
     }
-    if (!best || !world)
+    if (best < 0)
         return 0;
-    return hol_world_tree(hol_world_seed(world), best->state.tile,
-                          (best->state.orient + best_corner) & 3, out) == HOL_OK;
+    /* corner a of cell (i+dc, j+dr) is the vertex: a = 0 NW, 1 SW, 2 SE, 3 NE */
+    int c = i + dc[best], r = j + dr[best];
+    hol_room st = *user;
+    while (st.col != c)
+        if (hol_room_step(&st, st.col < c ? HOL_DIR_E : HOL_DIR_W))
+            return 0;
+    while (st.row != r)
+        if (hol_room_step(&st, st.row < r ? HOL_DIR_S : HOL_DIR_N))
+            return 0;
+    return hol_world_tree(hol_world_seed(world), st.tile, (st.orient + best) & 3, out) ==
+           HOL_OK;
 }
 
-void hol_scene_room(const hol_scene *s, hol_mesh *out, const hol_view *view,
+void hol_scene_room(const hol_scene *s, hol_mesh *out, const hol_room *user,
                     struct hol_world *world)
 {
     for (int j = 0; j <= HOL_ROOM_SIZE; j++)
         for (int i = 0; i <= HOL_ROOM_SIZE; i++) {
             hol_tree tr = {(uint8_t)((i * 7 + j * 3) % 4), (uint8_t)((i + j) % 4)};
-            hol__vertex_tree(view, world, i, j, &tr);
+            hol__vertex_tree(user, world, i, j, &tr);
             float sc = 0.85f + 0.1f * (float)(tr.size & 3);
             hol_place p = {(float)i, 0, (float)j, 0.7f * (float)(i * 4 + j), sc};
             hol_mesh_append(out, &s->tpl[tr.kind & 3], p);

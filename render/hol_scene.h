@@ -26,10 +26,11 @@ typedef struct hol_scene hol_scene;
 hol_err hol_scene_create(hol_scene **out);
 void hol_scene_destroy(hol_scene *s);
 
-/* Trees on the 16 room vertices and the boundary hedges. The tree kinds
- * come from the world (the vertex as seen through the nearest branch) when
- * given. */
-void hol_scene_room(const hol_scene *s, hol_mesh *out, const hol_view *view,
+/* Trees on the 16 room vertices, the boundary hedges and the backdrop
+ * forest. The tree kinds come from the world when given: each room vertex
+ * as a corner of the adjacent cell nearest the user's cell, reached by the
+ * room walk columns first (a function of the user's state only). */
+void hol_scene_room(const hol_scene *s, hol_mesh *out, const hol_room *user,
                     struct hol_world *world);
 
 /* The mesh of tile t in its own frame; bare: the ground only. pole >= 0

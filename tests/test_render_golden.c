@@ -244,6 +244,8 @@ static void test_comparison_detects_change(void **state)
 static void test_egl_gles_matches_goldens(void **state)
 {
     (void)state;
+    if (getenv("HOL_GOLDEN_UPDATE") && getenv("HOL_GOLDEN_UPDATE")[0] == '1')
+        skip(); /* goldens are written from OSMesa; compare on the next run */
     hol_egl egl;
     char msg[256];
     if (hol_egl_create(&egl, W, H, msg, sizeof msg)) {
