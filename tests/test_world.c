@@ -278,11 +278,13 @@ static void test_long_walk(void **state)
     uint64_t rng = 99;
     static hol_tile prev[128], cur[128];
     static hol_tile_content prevc[128], curc[128];
-    size_t nprev = 0;
+    size_t nprev = 0, compared = 0;
     long steps = HOL_TEST_WORLD_STEPS;
     for (long i = 0; i < steps; i++) {
         random_step(w, &room, &rng, i < steps / 2 ? 450 : 0);
-        if (i % 16 == 0 || i == steps - 1) {
+        /* snapshots at steps 16k and 16k + 1: a tile seen in both balls
+         * must not have changed */
+        if (i % 16 <= 1 || i == steps - 1) {
             size_t n = ball(room.tile, 4, cur, 128);
             for (size_t k = 0; k < n; k++) {
                 assert_int_equal(hol_world_peek(w, cur[k], &curc[k]), HOL_OK);
@@ -293,6 +295,8 @@ static void test_long_walk(void **state)
             memcpy(prev, cur, n * sizeof cur[0]);
             memcpy(prevc, curc, n * sizeof curc[0]);
             nprev = n;
+            if (i % 16 == 1)
+                compared += n;
         } else {
             nprev = 0;
         }
@@ -300,6 +304,7 @@ static void test_long_walk(void **state)
             assert_check(w);
     }
     assert_check(w);
+    assert_true(compared > (size_t)steps / 16 * 50);
     hol_world_stats st;
     hol_world_get_stats(w, &st);
     assert_true(st.count < st.capacity);
