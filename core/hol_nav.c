@@ -498,7 +498,8 @@ static hol_err hol__anytime(hol_nav *nav, const hol_room *start, hol_tile u, int
     }
     size_t expanded = 0;
     uint32_t id;
-    while (expanded < budget && (id = hol__pop(nav)) != HOL__NIL) {
+    int full = 0;
+    while (!full && expanded < budget && (id = hol__pop(nav)) != HOL__NIL) {
         hol__node cur = nav->nodes[id];
         if ((int)cur.f >= best_cost + nav->margin)
             break;
@@ -519,7 +520,7 @@ static hol_err hol__anytime(hol_nav *nav, const hol_room *start, hol_tile u, int
                 continue;
             uint32_t nid = hol__intern(nav, &nx, &isnew);
             if (nid == HOL__NIL) {
-                expanded = budget; /* arena full: stop */
+                full = 1; /* arena full: stop */
                 break;
             }
             hol__node *q = &nav->nodes[nid];
@@ -537,7 +538,7 @@ static hol_err hol__anytime(hol_nav *nav, const hol_room *start, hol_tile u, int
                 best = nid;
             }
             if (!hol__push(nav, nid)) {
-                expanded = budget;
+                full = 1;
                 break;
             }
         }
