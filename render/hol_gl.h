@@ -28,6 +28,7 @@ typedef hol_gl_proc (*hol_gl_getproc)(const char *name);
     X(PFNGLBINDBUFFERPROC, BindBuffer, "glBindBuffer") \
     X(PFNGLBINDVERTEXARRAYPROC, BindVertexArray, "glBindVertexArray") \
     X(PFNGLBUFFERDATAPROC, BufferData, "glBufferData") \
+    X(PFNGLBUFFERSUBDATAPROC, BufferSubData, "glBufferSubData") \
     X(PFNGLCLEARPROC, Clear, "glClear") \
     X(PFNGLCLEARCOLORPROC, ClearColor, "glClearColor") \
     X(PFNGLCLEARDEPTHFPROC, ClearDepthf, "glClearDepthf") \

@@ -111,11 +111,17 @@ int hol_hud_text(hol_mesh *out, const char *s, float x, float y, float scale,
             c -= 32;
         const char *at = c ? strchr(hol__chars, c) : NULL;
         const uint8_t *g = at ? hol__font[at - hol__chars] : hol__box;
+        /* one quad per horizontal run of set pixels */
         for (int r = 0; r < 7; r++)
-            for (int k = 0; k < 5; k++)
-                if (g[r] & (0x10 >> k))
-                    hol__rect(&p, x + k * scale, y + r * scale, x + (k + 1) * scale,
-                              y + (r + 1) * scale, rgb);
+            for (int k = 0; k < 5; k++) {
+                if (!(g[r] & (0x10 >> k)) || (k > 0 && (g[r] & (0x10 >> (k - 1)))))
+                    continue;
+                int e = k;
+                while (e + 1 < 5 && (g[r] & (0x10 >> (e + 1))))
+                    e++;
+                hol__rect(&p, x + k * scale, y + r * scale, x + (e + 1) * scale,
+                          y + (r + 1) * scale, rgb);
+            }
         x += 6 * scale;
     }
     return (int)(x - x0);
@@ -153,11 +159,17 @@ static void hol__map(const double m[9], const double q[3], float cx, float cy, f
     out[1] = cy - (float)(d[1] * rad);
 }
 
+static void hol__layout(int w, int h, float *rad, float *cx, float *cy)
+{
+    *rad = 0.3f * (float)(w < h ? w : h);
+    *cx = (float)w - *rad - 0.04f * (float)w;
+    *cy = (float)h - *rad - 0.04f * (float)h;
+}
+
 static void hol__minimap(hol__px *p, const hol_frame_desc *f)
 {
-    int w = p->w, h = p->h;
-    float rad = 0.3f * (float)(w < h ? w : h), cx = (float)w - rad - 0.04f * (float)w,
-          cy = (float)h - rad - 0.04f * (float)h;
+    float rad, cx, cy;
+    hol__layout(p->w, p->h, &rad, &cx, &cy);
     static const uint8_t rim[3] = {20, 24, 30}, bg[3] = {200, 205, 210};
     float disk[48][2];
     for (int i = 0; i < 48; i++) {
@@ -266,6 +278,12 @@ static void hol__minimap(hol__px *p, const hol_frame_desc *f)
             hol__poly(p, (const float(*)[2])tri, 3, objc);
         }
     }
+}
+
+static void hol__user_arrow(hol__px *p, const hol_frame_desc *f)
+{
+    float rad, cx, cy;
+    hol__layout(p->w, p->h, &rad, &cx, &cy);
     /* the user: an arrow where the eye stands in the tile (the cell's
      * offset scaled so that a cell edge maps to the tile edge), pointing
      * along the view yaw */
@@ -290,10 +308,22 @@ static void hol__minimap(hol__px *p, const hol_frame_desc *f)
     hol__poly(p, (const float(*)[2])t2, 3, userc);
 }
 
-void hol_hud_build(hol_mesh *out, const hol_frame_desc *f, int w, int h)
+void hol_hud_build_map(hol_mesh *out, const hol_frame_desc *f, int w, int h)
 {
     hol__px p = {out, w, h};
     hol__minimap(&p, f);
+}
+
+void hol_hud_build(hol_mesh *out, const hol_frame_desc *f, int w, int h)
+{
+    hol_hud_build_map(out, f, w, h);
+    hol_hud_build_live(out, f, w, h);
+}
+
+void hol_hud_build_live(hol_mesh *out, const hol_frame_desc *f, int w, int h)
+{
+    hol__px p = {out, w, h};
+    hol__user_arrow(&p, f);
     float sc = (float)(h >= 160 ? h / 160 : 1);
     char lines[4][96];
     char addr[HOL_TILE_ADDR_MAX];

@@ -21,8 +21,13 @@
 
 #define HOL_HUD_MAP_RADIUS 4
 
-/* Append the HUD of frame f (viewport w x h pixels) to out. */
+/* Append the HUD of frame f (viewport w x h pixels) to out: the map part
+ * (disk, tiles, path, objectives, rim arrows: a function of the user's
+ * state, objectives, path and viewport only, so it can stay resident) and
+ * the live part (the user's arrow and the text). hol_hud_build does both. */
 void hol_hud_build(hol_mesh *out, const hol_frame_desc *f, int w, int h);
+void hol_hud_build_map(hol_mesh *out, const hol_frame_desc *f, int w, int h);
+void hol_hud_build_live(hol_mesh *out, const hol_frame_desc *f, int w, int h);
 
 /* Text at pixel (x, y) (top-left of the first glyph), each font pixel a
  * scale x scale square; returns the advance in pixels. Unknown characters

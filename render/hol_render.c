@@ -11,10 +11,32 @@
 #include "hol_mesh.h"
 #include "hol_scene.h"
 
-#define HOL__MAX_V (1u << 18)
-#define HOL__MAX_I (1u << 19)
+#include "../core/hol_world.h"
+
+/* GPU memory layout. The static buffers hold the room meshes and a pool of
+ * tile meshes that stay resident across frames; the dynamic buffers get the
+ * per-frame leaf polygons and HUD (a few KB). */
+#define HOL__ROOM_V (1u << 16)
+#define HOL__ROOM_I (1u << 17)
+#define HOL__SLOTS HOL_VIEW_MAX_BRANCHES /* a frame never needs more */
+#define HOL__SLOT_V 8192u
+#define HOL__SLOT_I 16384u
+#define HOL__HUD_V (1u << 14) /* the resident minimap, after the slots */
+#define HOL__HUD_I (1u << 15)
+#define HOL__HUD_VBASE (HOL__ROOM_V + HOL__SLOTS * HOL__SLOT_V)
+#define HOL__HUD_IBASE (HOL__ROOM_I + HOL__SLOTS * HOL__SLOT_I)
+#define HOL__DYN_V (1u << 16)
+#define HOL__DYN_I (1u << 17)
 #define HOL__MAX_ITEMS 1024
-#define HOL__MAX_TILE_CACHE HOL_VIEW_MAX_BRANCHES
+
+typedef struct hol__slot {
+    int used;
+    hol_tile tile;
+    int bare, pole, have; /* have: content came from the world */
+    hol_tile_content content;
+    uint64_t last_frame;
+    uint32_t nidx;
+} hol__slot;
 
 enum { HOL__PASS_STENCIL = 0, HOL__PASS_ROOM = 1, HOL__PASS_TILE = 2, HOL__PASS_HUD = 3 };
 enum { HOL__MODE_LIT = 0, HOL__MODE_ID = 1, HOL__MODE_FLAT = 2 };
@@ -22,6 +44,7 @@ enum { HOL__MODE_LIT = 0, HOL__MODE_ID = 1, HOL__MODE_FLAT = 2 };
 typedef struct hol__item {
     uint32_t key;
     uint8_t pass;
+    uint8_t dyn; /* 1: dynamic buffers */
     uint8_t ref, mask;
     int16_t branch;
     uint32_t first, count; /* index range */
@@ -32,19 +55,29 @@ struct hol_render {
     hol_render_desc desc;
     hol_gl gl;
     hol_scene *scene;
-    GLuint prog, vao, vbo, ibo;
+    GLuint prog, vao[2], vbo[2], ibo[2]; /* [0] static, [1] dynamic */
     GLint u_vp, u_model, u_mode, u_id, u_eye, u_fog, u_fogd;
-    hol_mesh mesh;
+    hol_mesh dyn;     /* per-frame geometry */
+    hol_mesh scratch; /* one room or tile mesh before upload */
     hol_vertex *verts;
     uint32_t *idx;
     hol__item items[HOL__MAX_ITEMS];
     int nitems;
     hol__item *sorted[HOL__MAX_ITEMS];
     hol_view view;
-    /* per-frame tile mesh cache */
-    hol_tile cache_tile[HOL__MAX_TILE_CACHE];
-    uint32_t cache_first[HOL__MAX_TILE_CACHE], cache_count[HOL__MAX_TILE_CACHE];
-    int ncache;
+    /* resident meshes */
+    hol__slot slots[HOL__SLOTS];
+    uint64_t frame;
+    int room_valid, room_bare;
+    hol_room room_user;
+    struct hol_world *room_world;
+    uint32_t room_nidx;
+    int hud_valid;
+    uint64_t hud_key;
+    uint32_t hud_nidx;
+    /* this frame's counters */
+    long uploaded;
+    int tiles_built;
 };
 
 static const char *hol__vs =
@@ -119,13 +152,18 @@ hol_err hol_render_create(const hol_render_desc *desc, hol_render **out)
         return HOL_ENOMEM;
     if (desc)
         r->desc = *desc;
-    r->verts = malloc(HOL__MAX_V * sizeof *r->verts);
-    r->idx = malloc(HOL__MAX_I * sizeof *r->idx);
+    /* one allocation for the CPU-side stores: dynamic + scratch */
+    r->verts = malloc((HOL__DYN_V + HOL__ROOM_V) * sizeof *r->verts);
+    r->idx = malloc((HOL__DYN_I + HOL__ROOM_I) * sizeof *r->idx);
     if (!r->verts || !r->idx || hol_scene_create(&r->scene)) {
-        hol_render_destroy(r);
+        free(r->verts);
+        free(r->idx);
+        free(r);
         return HOL_ENOMEM;
     }
-    hol_mesh_init(&r->mesh, r->verts, HOL__MAX_V, r->idx, HOL__MAX_I);
+    hol_mesh_init(&r->dyn, r->verts, HOL__DYN_V, r->idx, HOL__DYN_I);
+    hol_mesh_init(&r->scratch, r->verts + HOL__DYN_V, HOL__ROOM_V, r->idx + HOL__DYN_I,
+                  HOL__ROOM_I);
     hol_err gerr = hol_gl_load(&r->gl, r->desc.getproc);
     if (gerr) {
         free(r->verts);
@@ -163,21 +201,33 @@ hol_err hol_render_create(const hol_render_desc *desc, hol_render **out)
     r->u_eye = r->gl.GetUniformLocation(r->prog, "u_eye");
     r->u_fog = r->gl.GetUniformLocation(r->prog, "u_fog");
     r->u_fogd = r->gl.GetUniformLocation(r->prog, "u_fogd");
-    r->gl.GenVertexArrays(1, &r->vao);
-    r->gl.GenBuffers(1, &r->vbo);
-    r->gl.GenBuffers(1, &r->ibo);
-    r->gl.BindVertexArray(r->vao);
-    r->gl.BindBuffer(GL_ARRAY_BUFFER, r->vbo);
-    r->gl.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, r->ibo);
-    r->gl.EnableVertexAttribArray(0);
-    r->gl.EnableVertexAttribArray(1);
-    r->gl.EnableVertexAttribArray(2);
-    r->gl.VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(hol_vertex),
-                          (const void *)offsetof(hol_vertex, pos));
-    r->gl.VertexAttribPointer(1, 3, GL_BYTE, GL_TRUE, sizeof(hol_vertex),
-                          (const void *)offsetof(hol_vertex, nrm));
-    r->gl.VertexAttribPointer(2, 4, GL_UNSIGNED_BYTE, GL_TRUE, sizeof(hol_vertex),
-                          (const void *)offsetof(hol_vertex, rgba));
+    r->gl.GenVertexArrays(2, r->vao);
+    r->gl.GenBuffers(2, r->vbo);
+    r->gl.GenBuffers(2, r->ibo);
+    for (int k = 0; k < 2; k++) {
+        r->gl.BindVertexArray(r->vao[k]);
+        r->gl.BindBuffer(GL_ARRAY_BUFFER, r->vbo[k]);
+        r->gl.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, r->ibo[k]);
+        if (k == 0) {
+            r->gl.BufferData(GL_ARRAY_BUFFER,
+                             (GLsizeiptr)((HOL__HUD_VBASE + HOL__HUD_V) *
+                                          sizeof(hol_vertex)),
+                             NULL, GL_DYNAMIC_DRAW);
+            r->gl.BufferData(GL_ELEMENT_ARRAY_BUFFER,
+                             (GLsizeiptr)((HOL__HUD_IBASE + HOL__HUD_I) *
+                                          sizeof(uint32_t)),
+                             NULL, GL_DYNAMIC_DRAW);
+        }
+        r->gl.EnableVertexAttribArray(0);
+        r->gl.EnableVertexAttribArray(1);
+        r->gl.EnableVertexAttribArray(2);
+        r->gl.VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(hol_vertex),
+                                  (const void *)offsetof(hol_vertex, pos));
+        r->gl.VertexAttribPointer(1, 3, GL_BYTE, GL_TRUE, sizeof(hol_vertex),
+                                  (const void *)offsetof(hol_vertex, nrm));
+        r->gl.VertexAttribPointer(2, 4, GL_UNSIGNED_BYTE, GL_TRUE, sizeof(hol_vertex),
+                                  (const void *)offsetof(hol_vertex, rgba));
+    }
     r->gl.BindVertexArray(0);
     if (r->gl.GetError() != GL_NO_ERROR) {
         hol_render_destroy(r);
@@ -193,12 +243,12 @@ void hol_render_destroy(hol_render *r)
         return;
     if (r->prog)
         r->gl.DeleteProgram(r->prog);
-    if (r->vao)
-        r->gl.DeleteVertexArrays(1, &r->vao);
-    if (r->vbo)
-        r->gl.DeleteBuffers(1, &r->vbo);
-    if (r->ibo)
-        r->gl.DeleteBuffers(1, &r->ibo);
+    if (r->vao[0])
+        r->gl.DeleteVertexArrays(2, r->vao);
+    if (r->vbo[0])
+        r->gl.DeleteBuffers(2, r->vbo);
+    if (r->ibo[0])
+        r->gl.DeleteBuffers(2, r->ibo);
     hol_scene_destroy(r->scene);
     free(r->verts);
     free(r->idx);
@@ -208,6 +258,23 @@ void hol_render_destroy(hol_render *r)
 void hol_render_set_world(hol_render *r, struct hol_world *world)
 {
     r->desc.world = world;
+    hol_render_invalidate(r);
+}
+
+void hol_render_invalidate(hol_render *r)
+{
+    for (int i = 0; i < HOL__SLOTS; i++)
+        r->slots[i].used = 0;
+    r->room_valid = 0;
+    r->hud_valid = 0;
+}
+
+static uint64_t hol__fnv(uint64_t h, const void *p, size_t n)
+{
+    const uint8_t *b = p;
+    for (size_t i = 0; i < n; i++)
+        h = (h ^ b[i]) * 0x100000001b3ull;
+    return h;
 }
 
 const hol_view *hol_render_last_view(const hol_render *r)
@@ -235,28 +302,76 @@ static hol__item *hol__push(hol_render *r, int pass, uint32_t first, uint32_t co
     return it;
 }
 
-/* Tile mesh range for t, built once per frame. */
+/* Upload the scratch mesh to the static buffers at (vbase, ibase), its
+ * indices shifted by vbase. */
+static void hol__upload_scratch(hol_render *r, uint32_t vbase, uint32_t ibase)
+{
+    hol_mesh *m = &r->scratch;
+    for (uint32_t i = 0; i < m->ni; i++)
+        m->idx[i] += vbase;
+    r->gl.BindBuffer(GL_ARRAY_BUFFER, r->vbo[0]);
+    r->gl.BufferSubData(GL_ARRAY_BUFFER, (GLintptr)(vbase * sizeof(hol_vertex)),
+                        (GLsizeiptr)(m->nv * sizeof(hol_vertex)), m->v);
+    r->gl.BindVertexArray(r->vao[0]);
+    r->gl.BufferSubData(GL_ELEMENT_ARRAY_BUFFER, (GLintptr)(ibase * sizeof(uint32_t)),
+                        (GLsizeiptr)(m->ni * sizeof(uint32_t)), m->idx);
+    r->gl.BindVertexArray(0);
+    r->uploaded += (long)(m->nv * sizeof(hol_vertex) + m->ni * sizeof(uint32_t));
+}
+
+/* The resident mesh of tile t: reused while the tile's content is the
+ * same, else (re)built into the least recently used slot. */
 static int hol__tile_range(hol_render *r, hol_tile t, int bare, int pole,
                            uint32_t *first, uint32_t *count)
 {
-    for (int i = 0; i < r->ncache; i++)
-        if (hol_tile_eq(r->cache_tile[i], t)) {
-            *first = r->cache_first[i];
-            *count = r->cache_count[i];
+    hol_tile_content c;
+    memset(&c, 0, sizeof c);
+    int have = r->desc.world && hol_world_get(r->desc.world, t, &c) == HOL_OK;
+    int free_slot = -1, lru = -1;
+    for (int i = 0; i < HOL__SLOTS; i++) {
+        hol__slot *sl = &r->slots[i];
+        if (!sl->used) {
+            if (free_slot < 0)
+                free_slot = i;
+            continue;
+        }
+        if (hol_tile_eq(sl->tile, t) && sl->bare == bare && sl->pole == pole &&
+            sl->have == have && (!have || !memcmp(&sl->content, &c, sizeof c))) {
+            sl->last_frame = r->frame;
+            *first = HOL__ROOM_I + (uint32_t)i * HOL__SLOT_I;
+            *count = sl->nidx;
             return 1;
         }
-    uint32_t i0 = r->mesh.ni;
-    hol_scene_tile(r->scene, &r->mesh, t, r->desc.world, bare, pole);
-    if (r->mesh.overflow)
-        return 0;
-    *first = i0;
-    *count = r->mesh.ni - i0;
-    if (r->ncache < HOL__MAX_TILE_CACHE) {
-        r->cache_tile[r->ncache] = t;
-        r->cache_first[r->ncache] = *first;
-        r->cache_count[r->ncache] = *count;
-        r->ncache++;
+        if (sl->last_frame != r->frame &&
+            (lru < 0 || sl->last_frame < r->slots[lru].last_frame))
+            lru = i;
     }
+    int k = free_slot >= 0 ? free_slot : lru;
+    if (k < 0)
+        return 0;
+    hol_mesh_clear(&r->scratch);
+    r->scratch.cap_v = HOL__SLOT_V;
+    r->scratch.cap_i = HOL__SLOT_I;
+    hol_scene_tile(r->scene, &r->scratch, t, r->desc.world, bare, pole);
+    r->scratch.cap_v = HOL__ROOM_V;
+    r->scratch.cap_i = HOL__ROOM_I;
+    if (r->scratch.overflow)
+        return 0;
+    uint32_t vbase = HOL__ROOM_V + (uint32_t)k * HOL__SLOT_V;
+    uint32_t ibase = HOL__ROOM_I + (uint32_t)k * HOL__SLOT_I;
+    hol__upload_scratch(r, vbase, ibase);
+    hol__slot *sl = &r->slots[k];
+    sl->used = 1;
+    sl->tile = t;
+    sl->bare = bare;
+    sl->pole = pole;
+    sl->have = have;
+    sl->content = c;
+    sl->last_frame = r->frame;
+    sl->nidx = r->scratch.ni;
+    r->tiles_built++;
+    *first = ibase;
+    *count = sl->nidx;
     return 1;
 }
 
@@ -281,9 +396,11 @@ static hol_err hol__build(hol_render *r, const hol_frame_desc *f)
     hol_err err = hol_view_build(&f->user, f->cam.eye[0], f->cam.eye[2], eu, &r->view);
     if (err)
         return err;
-    hol_mesh_clear(&r->mesh);
+    hol_mesh_clear(&r->dyn);
     r->nitems = 0;
-    r->ncache = 0;
+    r->frame++;
+    r->uploaded = 0;
+    r->tiles_built = 0;
     const hol_view *v = &r->view;
     /* pass 0: one stencil polygon per leaf, in NDC */
     for (int k = 0; k < v->nleaves; k++) {
@@ -291,35 +408,45 @@ static hol_err hol__build(hol_render *r, const hol_frame_desc *f)
         int n = hol_view_leaf_ndc(&f->cam, &v->leaves[k], xy);
         if (n < 3)
             continue;
-        int64_t b = hol_mesh_reserve(&r->mesh, (uint32_t)n, (uint32_t)(3 * (n - 2)));
+        int64_t b = hol_mesh_reserve(&r->dyn, (uint32_t)n, (uint32_t)(3 * (n - 2)));
         if (b < 0)
             return HOL_ENOMEM;
-        uint32_t i0 = r->mesh.ni;
+        uint32_t i0 = r->dyn.ni;
         for (int i = 0; i < n; i++) {
-            hol_vertex *vx = &r->mesh.v[r->mesh.nv++];
+            hol_vertex *vx = &r->dyn.v[r->dyn.nv++];
             memset(vx, 0, sizeof *vx);
             vx->pos[0] = xy[i][0];
             vx->pos[1] = xy[i][1];
         }
         for (int i = 1; i + 1 < n; i++) {
-            r->mesh.idx[r->mesh.ni++] = (uint32_t)b;
-            r->mesh.idx[r->mesh.ni++] = (uint32_t)b + (uint32_t)i;
-            r->mesh.idx[r->mesh.ni++] = (uint32_t)b + (uint32_t)i + 1;
+            r->dyn.idx[r->dyn.ni++] = (uint32_t)b;
+            r->dyn.idx[r->dyn.ni++] = (uint32_t)b + (uint32_t)i;
+            r->dyn.idx[r->dyn.ni++] = (uint32_t)b + (uint32_t)i + 1;
         }
-        hol__item *it = hol__push(r, HOL__PASS_STENCIL, i0, r->mesh.ni - i0);
+        hol__item *it = hol__push(r, HOL__PASS_STENCIL, i0, r->dyn.ni - i0);
         if (!it)
             return HOL_ENOMEM;
+        it->dyn = 1;
         it->ref = v->leaves[k].code;
         it->mask = 0xff;
         it->key = (uint32_t)k;
     }
     /* pass 1: the room's own meshes */
     if (!bare) {
-        uint32_t i0 = r->mesh.ni;
-        hol_scene_room(r->scene, &r->mesh, &f->user, r->desc.world);
-        if (r->mesh.overflow)
-            return HOL_ENOMEM;
-        hol__item *it = hol__push(r, HOL__PASS_ROOM, i0, r->mesh.ni - i0);
+        /* resident while the user's state and the world stay the same */
+        if (!r->room_valid || r->room_world != r->desc.world ||
+            memcmp(&r->room_user, &f->user, sizeof f->user)) {
+            hol_mesh_clear(&r->scratch);
+            hol_scene_room(r->scene, &r->scratch, &f->user, r->desc.world);
+            if (r->scratch.overflow)
+                return HOL_ENOMEM;
+            hol__upload_scratch(r, 0, 0);
+            r->room_nidx = r->scratch.ni;
+            r->room_user = f->user;
+            r->room_world = r->desc.world;
+            r->room_valid = 1;
+        }
+        hol__item *it = hol__push(r, HOL__PASS_ROOM, 0, r->room_nidx);
         if (it)
             it->key = 1u << 24;
     }
@@ -361,13 +488,44 @@ static hol_err hol__build(hol_render *r, const hol_frame_desc *f)
     }
     /* pass 3: HUD text and minimap, one draw */
     if ((f->flags & HOL_RENDER_MINIMAP) && !(f->flags & HOL_RENDER_NO_HUD)) {
-        uint32_t i0 = r->mesh.ni;
-        hol_hud_build(&r->mesh, f, f->cam.width, f->cam.height);
-        hol__item *it = hol__push(r, HOL__PASS_HUD, i0, r->mesh.ni - i0);
-        if (it)
-            it->key = 3u << 24;
+        /* the map stays resident while its inputs stay the same */
+        uint64_t key = 0xcbf29ce484222325ull;
+        int nobj = f->nobjectives < 0 ? 0 : f->nobjectives > HOL_RENDER_MAX_OBJECTIVES
+                                                ? HOL_RENDER_MAX_OBJECTIVES : f->nobjectives;
+        key = hol__fnv(key, &f->user, sizeof f->user);
+        key = hol__fnv(key, &nobj, sizeof nobj);
+        key = hol__fnv(key, f->objectives, (size_t)nobj * sizeof f->objectives[0]);
+        key = hol__fnv(key, &f->npath, sizeof f->npath);
+        if (f->path && f->npath > 0)
+            key = hol__fnv(key, f->path, (size_t)f->npath);
+        key = hol__fnv(key, &f->cam.width, sizeof f->cam.width);
+        key = hol__fnv(key, &f->cam.height, sizeof f->cam.height);
+        if (!r->hud_valid || r->hud_key != key) {
+            hol_mesh_clear(&r->scratch);
+            r->scratch.cap_v = HOL__HUD_V;
+            r->scratch.cap_i = HOL__HUD_I;
+            hol_hud_build_map(&r->scratch, f, f->cam.width, f->cam.height);
+            r->scratch.cap_v = HOL__ROOM_V;
+            r->scratch.cap_i = HOL__ROOM_I;
+            if (r->scratch.overflow)
+                return HOL_ENOMEM;
+            hol__upload_scratch(r, HOL__HUD_VBASE, HOL__HUD_IBASE);
+            r->hud_nidx = r->scratch.ni;
+            r->hud_key = key;
+            r->hud_valid = 1;
+        }
+        hol__item *map = hol__push(r, HOL__PASS_HUD, HOL__HUD_IBASE, r->hud_nidx);
+        if (map)
+            map->key = 3u << 24;
+        uint32_t i0 = r->dyn.ni;
+        hol_hud_build_live(&r->dyn, f, f->cam.width, f->cam.height);
+        hol__item *it = hol__push(r, HOL__PASS_HUD, i0, r->dyn.ni - i0);
+        if (it) {
+            it->key = 3u << 24 | 1;
+            it->dyn = 1;
+        }
     }
-    if (r->mesh.overflow)
+    if (r->dyn.overflow)
         return HOL_ENOMEM;
     return HOL_OK;
 }
@@ -410,12 +568,14 @@ hol_err hol_render_frame(hol_render *r, const hol_frame_desc *f,
     r->gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
 
     r->gl.UseProgram(r->prog);
-    r->gl.BindVertexArray(r->vao);
-    r->gl.BindBuffer(GL_ARRAY_BUFFER, r->vbo);
-    r->gl.BufferData(GL_ARRAY_BUFFER, (GLsizeiptr)(r->mesh.nv * sizeof(hol_vertex)),
-                 r->mesh.v, GL_STREAM_DRAW);
-    r->gl.BufferData(GL_ELEMENT_ARRAY_BUFFER, (GLsizeiptr)(r->mesh.ni * sizeof(uint32_t)),
-                 r->mesh.idx, GL_STREAM_DRAW);
+    r->gl.BindVertexArray(r->vao[1]);
+    r->gl.BindBuffer(GL_ARRAY_BUFFER, r->vbo[1]);
+    r->gl.BufferData(GL_ARRAY_BUFFER, (GLsizeiptr)(r->dyn.nv * sizeof(hol_vertex)), r->dyn.v,
+                     GL_STREAM_DRAW);
+    r->gl.BufferData(GL_ELEMENT_ARRAY_BUFFER, (GLsizeiptr)(r->dyn.ni * sizeof(uint32_t)),
+                     r->dyn.idx, GL_STREAM_DRAW);
+    r->uploaded += (long)(r->dyn.nv * sizeof(hol_vertex) + r->dyn.ni * sizeof(uint32_t));
+    int cur_vao = 1;
     float view[16], proj[16], vp[16], ident[16];
     hol_camera_matrices(&f->cam, view, proj);
     for (int i = 0; i < 4; i++)
@@ -495,6 +655,11 @@ hol_err hol_render_frame(hol_render *r, const hol_frame_desc *f,
             }
             st.branches++;
         }
+        if (it->dyn != cur_vao) {
+            cur_vao = it->dyn;
+            r->gl.BindVertexArray(r->vao[cur_vao]);
+            st.state_changes++;
+        }
         r->gl.DrawElements(GL_TRIANGLES, (GLsizei)it->count, GL_UNSIGNED_INT,
                        (const void *)(uintptr_t)(it->first * sizeof(uint32_t)));
         st.draw_calls++;
@@ -503,6 +668,8 @@ hol_err hol_render_frame(hol_render *r, const hol_frame_desc *f,
     r->gl.BindVertexArray(0);
     r->gl.Finish();
     st.cpu_ms = hol__now(CLOCK_PROCESS_CPUTIME_ID) - c0;
+    st.uploaded_bytes = r->uploaded;
+    st.tiles_built = r->tiles_built;
     st.wall_ms = hol__now(CLOCK_MONOTONIC) - w0;
     if (r->gl.GetError() != GL_NO_ERROR)
         return HOL_EUNSUPPORTED;

@@ -6,8 +6,11 @@
  *   are loaded through desc.getproc (render/hol_gl.h); nothing links gl*. The caller makes a
  *   GL context current (with 8 stencil bits and a depth buffer) before
  *   hol_render_create and keeps it current for every call.
- * - hol_render_create makes the GL objects and the CPU stores once (sizes
- *   fixed by the desc); frames allocate nothing.
+ * - hol_render_create makes the GL objects and the CPU stores once (fixed
+ *   sizes); frames allocate nothing. Meshes stay resident on the GPU: the
+ *   room's (rebuilt when the user steps) and a pool of tile meshes (LRU,
+ *   rebuilt when a tile's content changes); per frame only the leaf
+ *   polygons and the HUD are uploaded (a few KB).
  * - A frame: hol_view_build gives the leaves and branches; the queue holds
  *   one stencil polygon per leaf (pass 0), the room's own meshes (trees on
  *   all 16 vertices, hedges on the boundary; pass 1), one draw per branch
@@ -80,6 +83,8 @@ typedef struct hol_render_stats {
     int stencil_passes;   /* stencil-writing draws (leaves) */
     int branches;         /* branches drawn */
     int state_changes;    /* program/stencil/depth/mask changes issued */
+    int tiles_built;      /* tile meshes (re)built this frame */
+    long uploaded_bytes;  /* vertex + index bytes sent to GL this frame */
     double build_ms;      /* CPU time building and sorting the queue */
     double cpu_ms;        /* process CPU time of the frame incl. glFinish */
     double wall_ms;
@@ -91,6 +96,10 @@ hol_err hol_render_create(const hol_render_desc *desc, hol_render **out);
 void hol_render_destroy(hol_render *r);
 /* Switch the world the content comes from (NULL: placeholder content). */
 void hol_render_set_world(hol_render *r, struct hol_world *world);
+/* Drop every resident mesh (they are rebuilt on use). Not needed when only
+ * tile content changes: a tile's mesh is rebuilt when hol_world_get reports
+ * other content than it was built from. */
+void hol_render_invalidate(hol_render *r);
 
 /* Render one eye into the current framebuffer (viewport = cam size).
  * Errors: HOL_EARG (eye not inside the user's cell, bad size),

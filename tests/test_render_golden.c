@@ -327,6 +327,52 @@ static void test_stats_within_budget(void **state)
            max_tri);
 }
 
+/* Meshes stay resident: an unchanged second frame builds no tile mesh,
+ * uploads only the leaf polygons and HUD, and draws the same image; a tile
+ * whose content changes (a key placed on it) is rebuilt on the next frame. */
+static void test_resident_meshes(void **state)
+{
+    (void)state;
+    static uint8_t a[W * H * 4], b[W * H * 4];
+    golden_view g = views[0]; /* centre_north */
+    hol_frame_desc f;
+    memset(&f, 0, sizeof f);
+    f.user = hol_room_start();
+    assert_int_equal(hol_world_update(world, &f.user), HOL_OK);
+    memcpy(f.cam.eye, g.eye, sizeof f.cam.eye);
+    f.cam.yaw_deg = g.yaw;
+    f.cam.pitch_deg = g.pitch;
+    f.cam.fovy_deg = g.fov;
+    f.cam.width = W;
+    f.cam.height = H;
+    f.flags = HOL_RENDER_MINIMAP;
+    hol_render_stats s1, s2, s3;
+    hol_render_invalidate(rnd);
+    assert_int_equal(hol_render_frame(rnd, &f, &s1), HOL_OK);
+    hol_render_read_rgba(rnd, W, H, a);
+    assert_true(s1.tiles_built >= 9);
+    assert_int_equal(hol_render_frame(rnd, &f, &s2), HOL_OK);
+    hol_render_read_rgba(rnd, W, H, b);
+    printf("resident: first frame %ld bytes, %d tiles; second %ld bytes\n",
+           s1.uploaded_bytes, s1.tiles_built, s2.uploaded_bytes);
+    assert_int_equal(s2.tiles_built, 0);
+    assert_true(s2.uploaded_bytes < 64 * 1024);
+    assert_true(s2.uploaded_bytes * 4 < s1.uploaded_bytes);
+    assert_memory_equal(a, b, sizeof a);
+    /* the tile north of the user gets a key: rebuilt, and it shows */
+    hol_tile n, got;
+    assert_int_equal(hol_tile_resolve("N", -1, &n), HOL_OK);
+    hol_tile_content c;
+    assert_int_equal(hol_world_get(world, n, &c), HOL_OK);
+    if (hol_world_reserve(world, n, 0, HOL_OBJ_KEY, &got) != HOL_OK)
+        skip(); /* the tile is not free in this world: nothing to show */
+    assert_int_equal(hol_render_frame(rnd, &f, &s3), HOL_OK);
+    hol_render_read_rgba(rnd, W, H, b);
+    assert_true(s3.tiles_built >= 1);
+    assert_memory_not_equal(a, b, sizeof a);
+    assert_int_equal(hol_world_release(world, got), HOL_OK);
+}
+
 /* Rewrite every chunk CRC so mutations reach the inflate and unfilter code
  * instead of stopping at the checksum. */
 static void fix_crcs(uint8_t *d, size_t n)
@@ -418,6 +464,7 @@ int main(int argc, char **argv)
         cmocka_unit_test(test_comparison_detects_change),
         cmocka_unit_test(test_png_reader_survives_damage),
         cmocka_unit_test(test_stats_within_budget),
+        cmocka_unit_test(test_resident_meshes),
         cmocka_unit_test(test_egl_gles_matches_goldens),
         cmocka_unit_test(test_goldens),
     };
