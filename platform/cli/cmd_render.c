@@ -5,6 +5,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include "../../core/hol_nav.h"
 #include "../../core/hol_room.h"
@@ -75,31 +77,52 @@ static int parse_int(const char *s, long lo, long hi, long *out)
     return 0;
 }
 
-typedef struct growbuf {
-    char *p;
-    size_t n, cap;
-    int bad;
-} growbuf;
-
-static void gb_printf(growbuf *g, const char *fmt, int x, int y, const char *s)
+/* Write the tile ids of an ID image to path atomically: streamed into a
+ * temporary file next to it, renamed over it only when complete. */
+static int write_tile_ids(const char *path, const uint8_t *rgba, long w, long h,
+                          const hol_view *v)
 {
-    if (g->bad)
-        return;
-    if (g->cap - g->n < 128) {
-        size_t nc = g->cap ? g->cap * 2 : (1u << 16);
-        char *np = realloc(g->p, nc);
-        if (!np) {
-            g->bad = 1;
-            return;
+    static char addr[HOL_VIEW_MAX_BRANCHES][HOL_TILE_ADDR_MAX];
+    for (int b = 0; b < v->nbranches; b++)
+        hol_tile_print(v->branches[b].state.tile, addr[b]);
+    size_t n = strlen(path);
+    char *tmp = malloc(n + 16);
+    if (!tmp)
+        return 1;
+    memcpy(tmp, path, n);
+    memcpy(tmp + n, ".tmpXXXXXX", 11);
+    int fd = mkstemp(tmp);
+    FILE *f = fd >= 0 ? fdopen(fd, "w") : NULL;
+    if (!f) {
+        if (fd >= 0) {
+            close(fd);
+            unlink(tmp);
         }
-        g->p = np;
-        g->cap = nc;
+        free(tmp);
+        return 1;
     }
-    int k = snprintf(g->p + g->n, g->cap - g->n, fmt, x, y, s);
-    if (k < 0 || (size_t)k >= g->cap - g->n)
-        g->bad = 1;
-    else
-        g->n += (size_t)k;
+    int ok = 1;
+    for (long y = 0; y < h && ok; y++)
+        for (long x = 0; x < w; x++) {
+            int id = hol_render_decode_id(rgba + ((size_t)y * (size_t)w + (size_t)x) * 4);
+            if (id >= 0 && id < v->nbranches &&
+                fprintf(f, "%ld %ld %s\n", x, y, addr[id]) < 0) {
+                ok = 0;
+                break;
+            }
+        }
+    ok = fflush(f) == 0 && ok;
+    ok = fclose(f) == 0 && ok;
+    if (ok) {
+        mode_t um = umask(0);
+        umask(um);
+        (void)chmod(tmp, 0666 & ~um);
+        ok = rename(tmp, path) == 0;
+    }
+    if (!ok)
+        unlink(tmp);
+    free(tmp);
+    return !ok;
 }
 
 static int cmp_double(const void *a, const void *b)
@@ -311,7 +334,6 @@ int cli_cmd_render(int argc, char **argv)
     int status = CLI_EXIT_OK;
     hol_render *r = NULL;
     uint8_t *rgba = NULL;
-    growbuf gb = {0};
     double *cpu = NULL;
     hol_world *world = NULL;
     hol_world_desc wd;
@@ -399,29 +421,13 @@ int cli_cmd_render(int argc, char **argv)
             goto done;
         }
         hol_render_read_rgba(r, (int)w, (int)h, rgba);
-        const hol_view *v = hol_render_last_view(r);
-        static char addr[HOL_VIEW_MAX_BRANCHES][HOL_TILE_ADDR_MAX];
-        for (int b = 0; b < v->nbranches; b++)
-            hol_tile_print(v->branches[b].state.tile, addr[b]);
-        for (long y = 0; y < h; y++)
-            for (long x = 0; x < w; x++) {
-                int id = hol_render_decode_id(rgba + ((size_t)y * (size_t)w + (size_t)x) * 4);
-                if (id >= 0 && id < v->nbranches)
-                    gb_printf(&gb, "%d %d %s\n", (int)x, (int)y, addr[id]);
-            }
-        if (gb.bad) {
-            cli_error(cmd, 0, "out of memory for the tile ids");
-            status = CLI_EXIT_FAIL;
-            goto done;
-        }
-        if (hol_file_write_atomic(ids_path, gb.p ? gb.p : "", gb.n)) {
+        if (write_tile_ids(ids_path, rgba, w, h, hol_render_last_view(r))) {
             cli_error(cmd, 0, "cannot write '%.200s': %s", ids_path, strerror(errno));
             status = CLI_EXIT_FAIL;
             goto done;
         }
     }
 done:
-    free(gb.p);
     free(cpu);
     free(rgba);
     hol_render_destroy(r);
