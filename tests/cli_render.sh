@@ -33,6 +33,8 @@ expect_usage --yaw abc --out "$T/a.png"
 expect_usage --bogus --out "$T/a.png"
 expect_usage --out
 expect_usage --gl vulkan --out "$T/a.png"
+expect_usage --stereo 0.5 --out "$T/a.png"
+expect_usage --stereo 0.064 --tile-ids "$T/a.ids"
 [ ! -e "$T/a.png" ] || fail "a usage error left an output file"
 
 # a view, its tile ids, stats
@@ -50,6 +52,12 @@ awk 'NF != 3 || $1 !~ /^[0-9]+$/ || $2 !~ /^[0-9]+$/ || $1 >= 64 || $2 >= 48 ||
     fail "malformed tile-id line"
 grep -q ' Nr$' "$T/ids" || fail "the user's tile Nr is not in view"
 ls "$T" | grep -q tmp && fail "a temporary file was left behind"
+
+# two eyes side by side, one render queue each
+"$H" render --stereo 0.064 --eye 1.98,1.6,1.5 --size 64x24 --out "$T/st.png" \
+    --stats >"$T/stats2" || fail "--stereo"
+grep -q '^eyes 2$' "$T/stats2" || fail "--stereo stats do not report two eyes"
+grep -q '^right_draw_calls [0-9]' "$T/stats2" || fail "no right eye stats"
 
 # the euclidean baseline and a bare view render too
 "$H" render --euclidean --size 32x24 --out "$T/e.png" || fail "--euclidean"

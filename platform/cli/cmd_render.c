@@ -23,7 +23,7 @@ static const char *const render_usage =
     "                       [--size WxH] [--out FILE.png] [--tile-ids FILE]\n"
     "                       [--stats] [--euclidean] [--bare] [--fov DEG]\n"
     "                       [--frames N] [--seed N] [--hud] [--target ADDR]\n"
-    "                       [--gl osmesa|egl]\n"
+    "                       [--gl osmesa|egl] [--stereo IPD]\n"
     "\n"
     "Render what the user sees, headless (OSMesa), and write a PNG.\n"
     "\n"
@@ -46,6 +46,9 @@ static const char *const render_usage =
     "  --frames N      render N times (stats: median CPU ms), default 1\n"
     "  --seed N        world seed (default 1): the forest's content\n"
     "  --hud           draw the HUD text and the Poincare minimap\n"
+    "  --stereo IPD    two eyes IPD metres apart (e.g. 0.064) side by side,\n"
+    "                  each with its own render queue; --eye is the head\n"
+    "                  (an eye leaning over a cell edge sees from that cell)\n"
     "  --gl API        osmesa (default: desktop GL core, no display) or egl\n"
     "                  (OpenGL ES 3 on EGL's surfaceless platform)\n"
     "  --target ADDR   an objective tile (repeatable, up to 8): guide pole,\n"
@@ -139,7 +142,7 @@ int cli_cmd_render(int argc, char **argv)
         return cli_finish_output(cmd);
     }
     const char *walk = "-", *eye_s = NULL, *out = NULL, *ids_path = NULL;
-    double yaw = 0, pitch = -30, fov = 90;
+    double yaw = 0, pitch = -30, fov = 90, ipd = 0;
     long w = 640, h = 480, frames = 1;
     int stats = 0, flags = HOL_RENDER_NO_HUD, ntargets = 0, use_egl = 0;
     unsigned long long seed = 1;
@@ -152,7 +155,8 @@ int cli_cmd_render(int argc, char **argv)
                     !strcmp(a, "--size") || !strcmp(a, "--out") ||
                     !strcmp(a, "--tile-ids") || !strcmp(a, "--fov") ||
                     !strcmp(a, "--frames") || !strcmp(a, "--seed") ||
-                    !strcmp(a, "--target") || !strcmp(a, "--gl");
+                    !strcmp(a, "--target") || !strcmp(a, "--gl") ||
+                    !strcmp(a, "--stereo");
         if (takes && !val) {
             cli_error(cmd, 0, "%s needs a value; see 'holonomy render --help'", a);
             return CLI_EXIT_USAGE;
@@ -219,6 +223,12 @@ int cli_cmd_render(int argc, char **argv)
                 return CLI_EXIT_USAGE;
             }
             ntargets++;
+        } else if (!strcmp(a, "--stereo")) {
+            if (parse_double(val, &ipd) || ipd <= 0 || ipd > 0.2) {
+                cli_error(cmd, 0, "--stereo '%.40s' is not an eye distance in (0, 0.2] m",
+                          val);
+                return CLI_EXIT_USAGE;
+            }
         } else if (!strcmp(a, "--gl")) {
             if (!strcmp(val, "egl"))
                 use_egl = 1;
@@ -243,6 +253,14 @@ int cli_cmd_render(int argc, char **argv)
         }
         if (takes)
             i++;
+    }
+    if (ipd > 0 && ids_path) {
+        cli_error(cmd, 0, "--tile-ids works on one eye; drop --stereo");
+        return CLI_EXIT_USAGE;
+    }
+    if (ipd > 0 && w < 2) {
+        cli_error(cmd, 0, "--stereo needs an image at least 2 pixels wide");
+        return CLI_EXIT_USAGE;
     }
     if (!out && !ids_path && !stats) {
         cli_error(cmd, 0, "nothing to do: give --out FILE.png, --tile-ids FILE or --stats");
@@ -298,18 +316,18 @@ int cli_cmd_render(int argc, char **argv)
             return CLI_EXIT_USAGE;
         }
     }
-    const double *e = fd.cam.eye;
-    if (!(e[0] > user.col && e[0] < user.col + 1 && e[2] > user.row &&
-          e[2] < user.row + 1)) {
+    const double *he = fd.cam.eye;
+    if (!(he[0] > user.col && he[0] < user.col + 1 && he[2] > user.row &&
+          he[2] < user.row + 1)) {
         cli_error(cmd, 0,
                   "--eye x,z = %g,%g is not strictly inside cell (%d,%d) where the "
                   "walk ends (x in (%d,%d), z in (%d,%d))",
-                  e[0], e[2], user.col, user.row, user.col, user.col + 1, user.row,
+                  he[0], he[2], user.col, user.row, user.col, user.col + 1, user.row,
                   user.row + 1);
         return CLI_EXIT_USAGE;
     }
-    if (!(e[1] > 0.01 && e[1] <= 100)) {
-        cli_error(cmd, 0, "--eye height y = %g is not in (0.01, 100] metres", e[1]);
+    if (!(he[1] > 0.01 && he[1] <= 100)) {
+        cli_error(cmd, 0, "--eye height y = %g is not in (0.01, 100] metres", he[1]);
         return CLI_EXIT_USAGE;
     }
     fd.cam.yaw_deg = yaw;
@@ -333,7 +351,7 @@ int cli_cmd_render(int argc, char **argv)
     }
     int status = CLI_EXIT_OK;
     hol_render *r = NULL;
-    uint8_t *rgba = NULL;
+    uint8_t *rgba = NULL, *eyebuf = NULL;
     double *cpu = NULL;
     hol_world *world = NULL;
     hol_world_desc wd;
@@ -374,24 +392,55 @@ int cli_cmd_render(int argc, char **argv)
         goto done;
     }
     rgba = malloc((size_t)w * (size_t)h * 4);
+    eyebuf = malloc((size_t)w * (size_t)h * 4);
     cpu = malloc((size_t)frames * sizeof *cpu);
-    if (!rgba || !cpu) {
+    if (!rgba || !cpu || !eyebuf) {
         cli_error(cmd, 0, "out of memory");
         status = CLI_EXIT_FAIL;
         goto done;
     }
-    hol_render_stats st;
-    for (long k = 0; k < frames; k++) {
-        err = hol_render_frame(r, &fd, &st);
-        if (err) {
-            cli_error(cmd, 0, "rendering failed: %s", hol_err_str(err));
-            status = CLI_EXIT_FAIL;
-            goto done;
+    /* one render queue per eye: mono, or two eyes side by side */
+    int neyes = ipd > 0 ? 2 : 1;
+    int ew = (int)w / neyes;
+    hol_frame_desc eye_fd[2];
+    for (int e = 0; e < neyes; e++) {
+        eye_fd[e] = fd;
+        if (neyes == 2) {
+            double side = e == 0 ? -0.5 * ipd : 0.5 * ipd;
+            double yr = yaw * 3.14159265358979323846 / 180;
+            eye_fd[e].cam.eye[0] = fd.cam.eye[0] + side * cos(yr);
+            eye_fd[e].cam.eye[2] = fd.cam.eye[2] - side * sin(yr);
+            eye_fd[e].cam.width = ew;
+            err = hol_render_eye_state(&user, fd.cam.eye, eye_fd[e].cam.eye,
+                                       &eye_fd[e].user);
+            if (err) {
+                cli_error(cmd, 0, "--stereo: the %s eye is %s", e ? "right" : "left",
+                          err == HOL_EROOM ? "outside the room" : "not in a cell");
+                status = CLI_EXIT_USAGE;
+                goto done;
+            }
         }
-        cpu[k] = st.cpu_ms;
+    }
+    hol_render_stats st[2];
+    for (long k = 0; k < frames; k++) {
+        cpu[k] = 0;
+        for (int e = 0; e < neyes; e++) {
+            err = hol_render_frame(r, &eye_fd[e], &st[e]);
+            if (err) {
+                cli_error(cmd, 0, "rendering failed: %s", hol_err_str(err));
+                status = err == HOL_EARG ? CLI_EXIT_USAGE : CLI_EXIT_FAIL;
+                goto done;
+            }
+            cpu[k] += st[e].cpu_ms;
+            if (k == frames - 1 && out) {
+                hol_render_read_rgba(r, ew, (int)h, eyebuf);
+                for (long y = 0; y < h; y++)
+                    memcpy(rgba + ((size_t)y * (size_t)w + (size_t)(e * ew)) * 4,
+                           eyebuf + (size_t)y * (size_t)ew * 4, (size_t)ew * 4);
+            }
+        }
     }
     if (out) {
-        hol_render_read_rgba(r, (int)w, (int)h, rgba);
         err = hol_png_write_file(out, rgba, (int)w, (int)h, 0);
         if (err) {
             cli_error(cmd, 0, "cannot write '%.200s': %s", out, strerror(errno));
@@ -403,14 +452,20 @@ int cli_cmd_render(int argc, char **argv)
         qsort(cpu, (size_t)frames, sizeof *cpu, cmp_double);
         printf("mode %s\n", (flags & HOL_RENDER_EUCLIDEAN) ? "euclidean" : "hyperbolic");
         printf("size %ldx%ld\n", w, h);
-        printf("draw_calls %d\n", st.draw_calls);
-        printf("triangles %ld\n", st.triangles);
-        printf("stencil_passes %d\n", st.stencil_passes);
-        printf("branches %d\n", st.branches);
-        printf("state_changes %d\n", st.state_changes);
-        printf("build_ms %.3f\n", st.build_ms);
+        printf("eyes %d\n", neyes);
+        for (int e = 0; e < neyes; e++) {
+            const char *pre = neyes == 1 ? "" : e ? "right_" : "left_";
+            printf("%sdraw_calls %d\n", pre, st[e].draw_calls);
+            printf("%striangles %ld\n", pre, st[e].triangles);
+            printf("%sstencil_passes %d\n", pre, st[e].stencil_passes);
+            printf("%sbranches %d\n", pre, st[e].branches);
+            printf("%sstate_changes %d\n", pre, st[e].state_changes);
+            printf("%stiles_built %d\n", pre, st[e].tiles_built);
+            printf("%suploaded_bytes %ld\n", pre, st[e].uploaded_bytes);
+            printf("%sbuild_ms %.3f\n", pre, st[e].build_ms);
+        }
         printf("cpu_ms %.3f\n", cpu[frames / 2]);
-        printf("wall_ms %.3f\n", st.wall_ms);
+        printf("wall_ms %.3f\n", st[neyes - 1].wall_ms);
     }
     if (ids_path) {
         fd.flags |= HOL_RENDER_IDS;
@@ -428,6 +483,7 @@ int cli_cmd_render(int argc, char **argv)
         }
     }
 done:
+    free(eyebuf);
     free(cpu);
     free(rgba);
     hol_render_destroy(r);
