@@ -2,22 +2,26 @@
  *
  * Contract
  * - Platform independent GLES 3.0 (shaders are `#version 300 es`; under
- *   OSMesa's desktop GL core profile the same code runs). GL entry points
- *   are loaded through desc.getproc (render/hol_gl.h); nothing links gl*. The caller makes a
- *   GL context current (with 8 stencil bits and a depth buffer) before
+ *   OSMesa's desktop GL core profile the same code runs, and EGL's GLES 3
+ *   draws the same pixels). GL entry points are loaded through
+ *   desc.getproc (render/hol_gl.h); nothing links gl* symbols. The caller
+ *   makes a GL context current (8 stencil bits, a depth buffer) before
  *   hol_render_create and keeps it current for every call.
  * - hol_render_create makes the GL objects and the CPU stores once (fixed
  *   sizes); frames allocate nothing. Meshes stay resident on the GPU: the
  *   room's (rebuilt when the user steps) and a pool of tile meshes (LRU,
  *   rebuilt when a tile's content changes); per frame only the leaf
  *   polygons and the HUD are uploaded (a few KB).
- * - A frame: hol_view_build gives the leaves and branches; the queue holds
- *   one stencil polygon per leaf (pass 0), the room's own meshes (trees on
- *   all 16 vertices, hedges on the boundary; pass 1), one draw per branch
- *   of its tile's mesh placed in the branch's cell and tested against the
- *   branch's stencil ref/mask (pass 2, nearest cells first), the HUD
- *   (pass 3). The queue is sorted by (pass, program state, depth) and
- *   executed with redundant state changes skipped. No pass per portal, no
+ * - A frame is one eye: hol_view_build gives the leaves and branches; the
+ *   queue holds one stencil polygon per visible leaf (pass 0, colour and
+ *   depth writes off), the room's own meshes (trees on all 16 vertices,
+ *   hedges on the boundary, a backdrop forest beyond them; pass 1, no
+ *   stencil test), one draw per branch of its tile's mesh placed in the
+ *   branch's cell and tested against the branch's stencil ref/mask (pass 2,
+ *   nearest cells first for early depth rejection), the HUD (pass 3: the
+ *   resident minimap and the live arrow and text). One program for all;
+ *   the queue is sorted by (pass, buffer, depth) and executed with
+ *   redundant state changes skipped. No scene pass per portal, no
  *   render-to-texture.
  * - Floor outside the room is not drawn: hedges 2 m high stand on the room
  *   boundary (the move area ends there), and over them one sees sky/fog.
