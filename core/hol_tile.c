@@ -365,20 +365,16 @@ hol_err hol_tile_from_walk(const uint8_t *dirs, size_t n, hol_tile *out_tile,
 
 hol_err hol_tile_resolve(const char *s, ptrdiff_t len, hol_tile *out_tile)
 {
+    /* parse checks the whole syntax before it reports a non-canonical or
+     * too long word; only those are walked */
+    hol_err err = hol_tile_parse(s, len, out_tile);
+    if (err != HOL_ENOTCANON && err != HOL_ERANGE)
+        return err;
     if (len < 0)
         len = (ptrdiff_t)strlen(s);
-    if (len == 0)
-        return HOL_EPARSE;
-    if (len == 1 && s[0] == 'O') {
-        *out_tile = hol_tile_origin();
-        return HOL_OK;
-    }
-    for (ptrdiff_t i = 0; i < len; i++)
-        if (hol__code(s[i], i) < 0)
-            return HOL_EPARSE;
     hol_flag f = {hol_tile_origin(), 0};
     for (ptrdiff_t i = 0; i < len; i++) {
-        hol_err err = hol_flag_step(f, hol__code(s[i], i), &f);
+        err = hol_flag_step(f, hol__code(s[i], i), &f);
         if (err)
             return err;
     }

@@ -33,6 +33,15 @@ void cli_lines_fini(cli_lines *l);
  * which callers reject), 0: end of input, -1: read error. */
 int cli_lines_next(cli_lines *l, char **out_s, size_t *out_len);
 
+/* Run fn on every line of standard input until it returns nonzero (its
+ * exit status, after it reported the problem) or the input ends. Handles
+ * read and write errors. Returns the exit status. */
+typedef int (*cli_line_fn)(void *ctx, long lineno, char *s, size_t len);
+int cli_for_each_line(const char *cmd, cli_line_fn fn, void *ctx);
+
+/* Strip spaces and tabs at both ends. */
+void cli_trim(char **s, size_t *len);
+
 /* Print "holonomy CMD: line N: MESSAGE" (or without the line when
  * lineno <= 0) to stderr. */
 void cli_error(const char *cmd, long lineno, const char *fmt, ...)

@@ -94,3 +94,31 @@ int cli_wants_help(int argc, char **argv)
             return 1;
     return 0;
 }
+
+int cli_for_each_line(const char *cmd, cli_line_fn fn, void *ctx)
+{
+    cli_lines in;
+    char *s;
+    size_t len;
+    int r, status = CLI_EXIT_OK;
+    cli_lines_init(&in, stdin);
+    while (status == CLI_EXIT_OK && (r = cli_lines_next(&in, &s, &len)) > 0)
+        status = fn(ctx, in.lineno, s, len);
+    if (status == CLI_EXIT_OK && r < 0) {
+        cli_error(cmd, 0, "cannot read input");
+        status = CLI_EXIT_FAIL;
+    }
+    cli_lines_fini(&in);
+    int out = cli_finish_output(cmd);
+    return status ? status : out;
+}
+
+void cli_trim(char **s, size_t *len)
+{
+    while (*len > 0 && (**s == ' ' || **s == '\t')) {
+        (*s)++;
+        (*len)--;
+    }
+    while (*len > 0 && ((*s)[*len - 1] == ' ' || (*s)[*len - 1] == '\t'))
+        (*len)--;
+}

@@ -19,62 +19,36 @@ static const char *const tile_usage =
     "Tiles reach distance 60 from O; a walk that goes farther is bad input.\n"
     "Exit status: 0 ok, 1 output error, 2 bad input (one line on stderr).\n";
 
-static void trim(char **s, size_t *len)
-{
-    while (*len > 0 && (**s == ' ' || **s == '\t')) {
-        (*s)++;
-        (*len)--;
-    }
-    while (*len > 0 && ((*s)[*len - 1] == ' ' || (*s)[*len - 1] == '\t'))
-        (*len)--;
-}
-
-static int tile_walk(void)
+/* One line of `tile walk`: a free walk from the start. */
+static int walk_line(void *ctx, long lineno, char *s, size_t len)
 {
     const char *cmd = "tile walk";
-    cli_lines in;
-    char *s;
-    size_t len;
-    int r, status = CLI_EXIT_OK;
-    cli_lines_init(&in, stdin);
-    while (status == CLI_EXIT_OK && (r = cli_lines_next(&in, &s, &len)) > 0) {
-        trim(&s, &len);
-        if (len == 1 && s[0] == '-')
-            len = 0;
-        hol_tile t = hol_tile_origin();
-        int orient = 0;
-        for (size_t i = 0; i < len; i++) {
-            int d = hol_dir_from_char((unsigned char)s[i]);
-            if (d < 0) {
-                cli_error(cmd, in.lineno,
-                          "character %zu is not a step (N, E, S or W)", i + 1);
-                status = CLI_EXIT_USAGE;
-                break;
-            }
-            int arr;
-            if (hol_tile_step(t, orient + d, &t, &arr)) {
-                cli_error(cmd, in.lineno,
-                          "step %zu goes beyond distance %d from O, the reach "
-                          "of tile words",
-                          i + 1, HOL_TILE_MAX_DIST);
-                status = CLI_EXIT_USAGE;
-                break;
-            }
-            orient = (arr - d) & 3;
+    (void)ctx;
+    cli_trim(&s, &len);
+    if (len == 1 && s[0] == '-')
+        len = 0;
+    hol_tile t = hol_tile_origin();
+    int orient = 0;
+    for (size_t i = 0; i < len; i++) {
+        int d = hol_dir_from_char((unsigned char)s[i]), arr;
+        if (d < 0) {
+            cli_error(cmd, lineno, "character %zu is not a step (N, E, S or W)",
+                      i + 1);
+            return CLI_EXIT_USAGE;
         }
-        if (status == CLI_EXIT_OK) {
-            char buf[HOL_TILE_ADDR_MAX];
-            hol_tile_print(t, buf);
-            printf("%s %d\n", buf, hol_tile_dist0(t));
+        if (hol_tile_step(t, orient + d, &t, &arr)) {
+            cli_error(cmd, lineno,
+                      "step %zu goes beyond distance %d from O, the reach of "
+                      "tile words",
+                      i + 1, HOL_TILE_MAX_DIST);
+            return CLI_EXIT_USAGE;
         }
+        orient = (arr - d) & 3;
     }
-    if (status == CLI_EXIT_OK && r < 0) {
-        cli_error(cmd, 0, "cannot read input");
-        status = CLI_EXIT_FAIL;
-    }
-    cli_lines_fini(&in);
-    int out = cli_finish_output(cmd);
-    return status ? status : out;
+    char buf[HOL_TILE_ADDR_MAX];
+    hol_tile_print(t, buf);
+    printf("%s %d\n", buf, hol_tile_dist0(t));
+    return CLI_EXIT_OK;
 }
 
 /* Parse one address field; on failure report it and return nonzero. */
@@ -112,38 +86,27 @@ static int parse_addr(const char *cmd, long lineno, const char *s, size_t len,
     return 1;
 }
 
-static int tile_dist(void)
+/* One line of `tile dist`: two addresses. */
+static int dist_line(void *ctx, long lineno, char *s, size_t len)
 {
     const char *cmd = "tile dist";
-    cli_lines in;
-    char *s;
-    size_t len;
-    int r, status = CLI_EXIT_OK;
-    cli_lines_init(&in, stdin);
-    while (status == CLI_EXIT_OK && (r = cli_lines_next(&in, &s, &len)) > 0) {
-        char *f[2];
-        size_t fl[2];
-        hol_tile a, b;
-        if (memchr(s, '\0', len)) {
-            cli_error(cmd, in.lineno, "line holds a NUL byte");
-            status = CLI_EXIT_USAGE;
-        } else if (cli_split(s, len, f, fl, 2) != 2) {
-            cli_error(cmd, in.lineno, "expected two addresses 'A B'");
-            status = CLI_EXIT_USAGE;
-        } else if (parse_addr(cmd, in.lineno, f[0], fl[0], &a) ||
-                   parse_addr(cmd, in.lineno, f[1], fl[1], &b)) {
-            status = CLI_EXIT_USAGE;
-        } else {
-            printf("%d\n", hol_tile_dist(a, b));
-        }
+    char *f[2];
+    size_t fl[2];
+    hol_tile a, b;
+    (void)ctx;
+    if (memchr(s, '\0', len)) {
+        cli_error(cmd, lineno, "line holds a NUL byte");
+        return CLI_EXIT_USAGE;
     }
-    if (status == CLI_EXIT_OK && r < 0) {
-        cli_error(cmd, 0, "cannot read input");
-        status = CLI_EXIT_FAIL;
+    if (cli_split(s, len, f, fl, 2) != 2) {
+        cli_error(cmd, lineno, "expected two addresses 'A B'");
+        return CLI_EXIT_USAGE;
     }
-    cli_lines_fini(&in);
-    int out = cli_finish_output(cmd);
-    return status ? status : out;
+    if (parse_addr(cmd, lineno, f[0], fl[0], &a) ||
+        parse_addr(cmd, lineno, f[1], fl[1], &b))
+        return CLI_EXIT_USAGE;
+    printf("%d\n", hol_tile_dist(a, b));
+    return CLI_EXIT_OK;
 }
 
 int cli_cmd_tile(int argc, char **argv)
@@ -153,9 +116,9 @@ int cli_cmd_tile(int argc, char **argv)
         return cli_finish_output("tile");
     }
     if (argc == 2 && !strcmp(argv[1], "walk"))
-        return tile_walk();
+        return cli_for_each_line("tile walk", walk_line, NULL);
     if (argc == 2 && !strcmp(argv[1], "dist"))
-        return tile_dist();
+        return cli_for_each_line("tile dist", dist_line, NULL);
     if (argc < 2)
         cli_error("tile", 0, "missing subcommand (walk or dist); see --help");
     else if (strcmp(argv[1], "walk") && strcmp(argv[1], "dist"))
