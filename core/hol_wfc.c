@@ -601,12 +601,17 @@ hol_err hol_world_update(hol_world *w, const hol_room *room)
     if (!w || !room || room->orient > 3 || room->col >= HOL_ROOM_SIZE ||
         room->row >= HOL_ROOM_SIZE || hol_tile_dist0(room->tile) > HOL_TILE_MAX_DIST)
         return HOL_EARG;
+    if (w->ready && hol_tile_eq(room->tile, w->user.tile)) {
+        w->user = *room; /* same tile: its ball is already collapsed */
+        return HOL_OK;
+    }
     w->stamp++;
     hol__maybe_evict(w);
     hol_err err = hol__generate(w, room->tile, w->radius, 1);
     if (err)
         return err;
     w->user = *room;
+    w->ready = 1;
     w->updates++;
     return HOL_OK;
 }

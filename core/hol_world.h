@@ -184,7 +184,9 @@ hol_room hol_world_user(const hol_world *w);
 void hol_world_get_stats(const hol_world *w, hol_world_stats *out);
 
 /* Collapse every tile within the radius of room->tile (call after every
- * room step, before drawing). Errors: HOL_ENOMEM (capacity too small for the
+ * room step, before drawing; a call on the tile of the last successful
+ * update only records the room state and costs nothing, so calling it
+ * every frame is fine). Errors: HOL_ENOMEM (capacity too small for the
  * radius), HOL_EBUDGET (backtracking gave up; only possible with
  * test_reject_per_mille), HOL_ERANGE (the ball leaves the reach of tile
  * words). On error the tiles already in the store are unchanged. */
@@ -201,8 +203,9 @@ hol_err hol_world_peek(const hol_world *w, hol_tile t, hol_tile_content *out);
 
 /* Put game object obj (FLAG, KEY or CHEST) on a free tile (object NONE,
  * GRASS, FLOWERS or MUSHROOM, no connectors, no game object yet): t itself if
- * free, else the nearest free tile within max_dist steps of t (ties broken by
- * the address order). The tile is collapsed first if needed and is never
+ * free, else the nearest free tile within max_dist steps of t (max_dist is
+ * capped at the world's radius; ties broken in breadth-first order over
+ * the edges 0..3). The tile is collapsed first if needed and is never
  * evicted. Errors: HOL_EARG (obj not a game object), HOL_ENOMEM (no free
  * tile in reach, or the store is full). */
 hol_err hol_world_reserve(hol_world *w, hol_tile t, int max_dist,

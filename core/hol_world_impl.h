@@ -76,6 +76,7 @@ struct hol_world {
     uint32_t stamp;      /* update counter */
     uint32_t reject_per_mille;
     hol_room user;
+    int ready;           /* the ball around user.tile is collapsed */
     hol__entry *entries;
     /* batch scratch */
     hol__slot *slots;

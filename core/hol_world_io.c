@@ -301,6 +301,7 @@ hol_err hol_world_load(hol_world *w, const void *buf, size_t len, char *msg,
     memset(w->entries, 0, (size_t)w->cap * sizeof(hol__entry));
     w->count = 0;
     w->sweep_phase = 0; /* a sweep in progress belonged to the old store */
+    w->ready = 0;       /* the next update generates around the user */
     w->seed = im.seed;
     w->stamp = im.stamp;
     w->user = im.user;

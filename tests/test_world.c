@@ -668,6 +668,12 @@ static void test_lifecycle(void **state)
     d.radius = -1;
     assert_int_equal(hol_world_make(&d, &w), HOL_EARG);
     w = make_world(1, 0, 0);
+    /* an update on the tile of the last one is free (every frame is fine) */
+    room = hol_room_start();
+    assert_int_equal(hol_world_update(w, &room), HOL_OK);
+    assert_int_equal(hol_world_update(w, &room), HOL_OK);
+    hol_world_get_stats(w, &st);
+    assert_int_equal(st.updates, 1);
     hol_room bad = hol_room_start();
     bad.col = 3;
     assert_int_equal(hol_world_update(w, &bad), HOL_EARG);
