@@ -166,8 +166,23 @@ int hol_tile_letter(hol_tile t, int i)
 {
     if (i < 0 || i >= hol__len(t))
         return -1;
-    hol__word w = hol__widen(t);
-    return hol__get(&w, i);
+    return hol__at(t.bits, i);
+}
+
+int hol_tile_automaton(int state, int letter)
+{
+    if (state < 0 || state >= HOL_TILE_STATES || letter < 0 || letter > 3)
+        return -1;
+    int next = hol__dfa[state][letter];
+    return next == HOL__SINK ? -1 : next;
+}
+
+int hol_tile_state(hol_tile t)
+{
+    int n = hol__len(t);
+    if (n == 0 || n > HOL_TILE_MAX_DIST)
+        return -1;
+    return hol__state_of(t.bits, n);
 }
 
 static const char hol__branch_ch[4] = {'N', 'W', 'S', 'E'};

@@ -58,6 +58,16 @@ uint64_t hol_tile_hash(hol_tile t);
 /* Letter i of the address as its code (see the bit layout); i < length. */
 int hol_tile_letter(hol_tile t, int i);
 
+/* The automaton of canonical addresses (hol_tile.c shows its table): states
+ * 0..HOL_TILE_STATES-1 over the letters after the branch, state 0 right
+ * after the branch. hol_tile_automaton gives the state after `letter` (0 f,
+ * 1 l, 3 r) or -1 when no canonical address continues with it;
+ * hol_tile_state the state after t's address (0 for a branch, -1 for O).
+ * With them, canonical words can be counted, ranked and enumerated. */
+#define HOL_TILE_STATES 6
+int hol_tile_automaton(int state, int letter);
+int hol_tile_state(hol_tile t);
+
 /* Parse an address ("O", "N", "Nrfl", ...). len < 0 means NUL-terminated.
  * Errors: HOL_EPARSE (a character that is no address letter, or empty),
  * HOL_ENOTCANON (a valid walk that is not the canonical address; the walk

@@ -222,6 +222,46 @@ static void test_published_rules_are_rejected(void **state)
     assert_false(accept_core(rfrfr, 6));
 }
 
+static void enum_words(hol_tile t, int maxlen, void (*fn)(hol_tile))
+{
+    fn(t);
+    if (hol_tile_dist0(t) == maxlen)
+        return;
+    for (int k = 0; k < 4; k++) {
+        hol_tile c;
+        if (hol_tile_child(t, k, &c) == HOL_OK)
+            enum_words(c, maxlen, fn);
+    }
+}
+
+/* The automaton API agrees with parsing: a child is canonical exactly when
+ * the automaton accepts its letter. */
+static void check_automaton(hol_tile t)
+{
+    int n = hol_tile_dist0(t), st = hol_tile_state(t);
+    if (n == 0) {
+        assert_int_equal(st, -1);
+        return;
+    }
+    assert_true(st >= 0 && st < HOL_TILE_STATES);
+    for (int c = 0; c < 4; c++) {
+        hol_tile ch;
+        int next = hol_tile_automaton(st, c);
+        assert_int_equal(next >= 0, hol_tile_child(t, c, &ch) == HOL_OK);
+        if (next >= 0 && hol_tile_dist0(ch) < HOL_TILE_MAX_DIST)
+            assert_int_equal(hol_tile_state(ch), next);
+    }
+}
+
+static void test_automaton_api(void **state)
+{
+    (void)state;
+    enum_words(hol_tile_origin(), 8, check_automaton);
+    assert_int_equal(hol_tile_automaton(-1, 0), -1);
+    assert_int_equal(hol_tile_automaton(HOL_TILE_STATES, 0), -1);
+    assert_int_equal(hol_tile_automaton(0, 2), -1);
+}
+
 /* ---- neighbours, frames, relative addresses, distances ---- */
 
 static void check_step(hol_tile t)
@@ -251,18 +291,6 @@ static void check_step(hol_tile t)
         assert_int_equal(hol_tile_step(nb, arr + 2, &back, &arr2), HOL_OK);
         assert_true(hol_tile_eq(back, t));
         assert_int_equal((arr2 + 2) & 3, k & 3);
-    }
-}
-
-static void enum_words(hol_tile t, int maxlen, void (*fn)(hol_tile))
-{
-    fn(t);
-    if (hol_tile_dist0(t) == maxlen)
-        return;
-    for (int k = 0; k < 4; k++) {
-        hol_tile c;
-        if (hol_tile_child(t, k, &c) == HOL_OK)
-            enum_words(c, maxlen, fn);
     }
 }
 
@@ -576,6 +604,7 @@ int main(void)
         cmocka_unit_test(test_model_counts),
         cmocka_unit_test(test_addresses_one_per_tile_shortest),
         cmocka_unit_test(test_published_rules_are_rejected),
+        cmocka_unit_test(test_automaton_api),
         cmocka_unit_test(test_neighbours_and_frames),
         cmocka_unit_test(test_relative_and_distance),
         cmocka_unit_test(test_room_walks_match_model),
