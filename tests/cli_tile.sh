@@ -1,28 +1,7 @@
 #!/bin/sh
 # cli_tile.sh - `holonomy tile walk|dist`, --help, --version and the exit
 # status contract of SPEC section 4. $HOLONOMY is the binary under test.
-set -u
-H=${HOLONOMY:-build/holonomy}
-T=$(mktemp -d)
-trap 'rm -rf "$T"' EXIT
-fails=0 passes=0
-ok() { passes=$((passes + 1)); }
-bad() { fails=$((fails + 1)); echo "FAIL: $*"; }
-
-# expect NAME STATUS STDOUT-FILE-CONTENT (stdin from $T/in)
-expect() {
-  name=$1 want_status=$2 want_out=$3; shift 3
-  "$@" <"$T/in" >"$T/out" 2>"$T/err"; st=$?
-  printf '%s' "$want_out" >"$T/want"
-  if [ "$st" != "$want_status" ]; then bad "$name: status $st, want $want_status"; return; fi
-  if ! cmp -s "$T/out" "$T/want"; then bad "$name: stdout differs"; diff "$T/want" "$T/out" | head -5; return; fi
-  ok
-}
-# the stderr of the last run is one line mentioning $1
-err_line() {
-  if [ "$(wc -l <"$T/err")" -ne 1 ] || ! grep -q -- "$1" "$T/err"; then
-    bad "stderr should be one line with '$1', got: $(cat "$T/err")"; else ok; fi
-}
+. "$(dirname "$0")/lib.sh"
 
 printf 'NESW\nNE\n\n-\nNWSEN\nNENWNWSWWS\nEEENNNWWWSSS\n' >"$T/in"
 expect "walk examples" 0 'E 1
@@ -85,5 +64,4 @@ err_line "unknown command"
 "$H" tile >/dev/null 2>&1; [ $? = 2 ] && ok || bad "tile without subcommand"
 "$H" tile walk extra >/dev/null 2>&1; [ $? = 2 ] && ok || bad "tile walk with arguments"
 
-echo "cli_tile: $passes passed, $fails failed"
-[ "$fails" = 0 ]
+finish cli_tile

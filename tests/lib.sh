@@ -1,0 +1,47 @@
+# lib.sh - shared helpers of the shell tests (tests/cli_*.sh source it).
+# Sets H (the binary, $HOLONOMY or build/holonomy) and T (a scratch folder
+# removed on exit); counts checks; `finish NAME` prints the closing line
+# "NAME: N passed, M failed" and sets the exit status.
+set -u
+H=${HOLONOMY:-build/holonomy}
+T=$(mktemp -d)
+trap 'rm -rf "$T"' EXIT
+fails=0 passes=0
+ok() { passes=$((passes + 1)); }
+bad() { fails=$((fails + 1)); echo "FAIL: $*"; }
+
+# expect NAME STATUS STDOUT CMD...: stdin from $T/in; checks status and stdout
+expect() {
+  name=$1 want_status=$2 want_out=$3; shift 3
+  "$@" <"$T/in" >"$T/out" 2>"$T/err"; st=$?
+  printf '%s' "$want_out" >"$T/want"
+  if [ "$st" != "$want_status" ]; then bad "$name: status $st, want $want_status"; return; fi
+  if ! cmp -s "$T/out" "$T/want"; then bad "$name: stdout differs"; diff "$T/want" "$T/out" | head -5; return; fi
+  ok
+}
+
+# expect_status NAME STATUS CMD...: stdin from $T/in; checks the status only
+expect_status() {
+  name=$1 want_status=$2; shift 2
+  "$@" <"$T/in" >"$T/out" 2>"$T/err"; st=$?
+  if [ "$st" != "$want_status" ]; then bad "$name: status $st, want $want_status"; else ok; fi
+}
+
+# run NAME STATUS CMD...: no stdin redirection; stdout in $T/out, stderr in $T/err
+run() {
+  name=$1 want=$2; shift 2
+  "$@" >"$T/out" 2>"$T/err"; st=$?
+  if [ "$st" != "$want" ]; then bad "$name: status $st, want $want ($(head -c 200 "$T/err"))"; return 1; fi
+  ok
+}
+
+# err_line TEXT: the last stderr is exactly one line mentioning TEXT
+err_line() {
+  if [ "$(wc -l <"$T/err")" -ne 1 ] || ! grep -q -- "$1" "$T/err"; then
+    bad "stderr should be one line with '$1', got: $(cat "$T/err")"; else ok; fi
+}
+
+finish() {
+  echo "$1: $passes passed, $fails failed"
+  [ "$fails" = 0 ]
+}
