@@ -197,6 +197,35 @@ void hol_scene_room(const hol_scene *s, hol_mesh *out, const hol_room *user,
             hol_place p = {(float)i, 0, (float)j, 0.7f * (float)(i * 4 + j), sc};
             hol_mesh_append(out, &s->tpl[tr.kind & 3], p);
         }
+    /* forest ground outside the room (not floor: no tile is there; seen
+     * only from above the hedges) */
+    {
+        static const uint8_t outer[3] = {52, 84, 44};
+        const float R = 40.0f, n = (float)HOL_ROOM_SIZE;
+        int64_t b = hol_mesh_reserve(out, 8, 24);
+        if (b >= 0) {
+            const float xy[8][2] = {{-R, -R}, {n + R, -R}, {n + R, n + R}, {-R, n + R},
+                                    {0, 0}, {n, 0}, {n, n}, {0, n}};
+            for (int k = 0; k < 8; k++) {
+                hol_vertex *v = &out->v[out->nv++];
+                memset(v, 0, sizeof *v);
+                v->pos[0] = xy[k][0];
+                v->pos[1] = -0.01f;
+                v->pos[2] = xy[k][1];
+                v->nrm[1] = 127;
+                memcpy(v->rgba, outer, 3);
+                v->rgba[3] = HOL_MESH_PROP;
+            }
+            /* the ring between the outer and the inner square */
+            for (int k = 0; k < 4; k++) {
+                uint32_t o0 = (uint32_t)b + (uint32_t)k, o1 = (uint32_t)b + (uint32_t)((k + 1) & 3);
+                uint32_t i0 = o0 + 4, i1 = o1 + 4;
+                uint32_t t[6] = {o0, o1, i1, o0, i1, i0};
+                memcpy(out->idx + out->ni, t, sizeof t);
+                out->ni += 6;
+            }
+        }
+    }
     /* a backdrop forest beyond the hedges (decoration in the room frame:
      * no floor, no tiles; seen over the hedge tops) */
     uint64_t rs = 0x666f72657374ull;
