@@ -19,12 +19,14 @@
  * waypoints on the geodesic to the target chain exact legs. These answers
  * are flagged exact = 0.
  *
- * Tours search room state x collected-key set with the admissible
- * heuristic max(C(S, chest), max over keys k left of C(S, k) + C*(k, chest))
- * where C is the table cost (a lower bound beyond the table: the walk must
- * cross the trusted sphere) and C*(k, chest) the least cost over every room
- * state on k. Nodes may be reopened, so the answer is exact once the search
- * completes within the budget.
+ * Tours: with start, keys and chest close together (the leg table's
+ * trusted radius), a dynamic program over key subsets x room states on the
+ * keys (see hol__tour_dp). Otherwise A* over room state x collected-key set
+ * with an admissible heuristic (hol__tour_h) built from C, the table cost
+ * (a lower bound beyond the table: the walk must cross the trusted
+ * sphere), and C*(a, b), the least cost from any room state on a to b.
+ * Nodes may be reopened, so the answer is exact once the search completes
+ * within the budget; if not, keys nearest first with hol_nav_find legs.
  */
 #include "hol_nav.h"
 

@@ -501,6 +501,42 @@ static void test_far(void **state)
     assert_int_equal(hol_nav_find(g_nav, &s, t, 0, tiny, sizeof tiny, &res), HOL_ENOMEM);
 }
 
+/* Small and odd configurations still give valid walks. */
+static void test_small_radius(void **state)
+{
+    (void)state;
+    for (int r = 3; r <= 5; r++) {
+        hol_nav_desc desc = {0};
+        desc.radius = r;
+        desc.max_nodes = 1024;
+        hol_nav *nav;
+        assert_int_equal(hol_nav_create(&desc, &nav), HOL_OK);
+        assert_int_equal(hol_nav_table_exact_radius(nav), r - 2);
+        for (int q = 0; q < 10; q++) {
+            hol_room s = random_start(20);
+            hol_tile t = random_target(&s, 1 + (int)rnd(9));
+            uint8_t walk[HOL_NAV_WALK_MAX];
+            hol_nav_result res;
+            assert_int_equal(hol_nav_find(nav, &s, t, 0, walk, sizeof walk, &res), HOL_OK);
+            check_walk(&s, walk, res.len, t);
+            hol_tile keys[2] = {random_target(&s, 2), random_target(&s, 3)};
+            assert_int_equal(hol_nav_tour(nav, &s, keys, 2, t, 0, walk, sizeof walk, &res),
+                             HOL_OK);
+            check_walk(&s, walk, res.len, t);
+        }
+        hol_nav_destroy(nav);
+    }
+    hol_nav_desc bad = {0};
+    hol_nav *nav;
+    bad.radius = 2;
+    assert_int_equal(hol_nav_create(&bad, &nav), HOL_EARG);
+    bad.radius = 16;
+    assert_int_equal(hol_nav_create(&bad, &nav), HOL_EARG);
+    bad.radius = 0;
+    bad.max_nodes = 100;
+    assert_int_equal(hol_nav_create(&bad, &nav), HOL_EARG);
+}
+
 /* ---- tours ---- */
 
 static int perm_next(int *a, int n)
@@ -791,6 +827,7 @@ int main(void)
         cmocka_unit_test(test_optimal_vs_bfs),
         cmocka_unit_test(test_anytime),
         cmocka_unit_test(test_far),
+        cmocka_unit_test(test_small_radius),
         cmocka_unit_test(test_tour_vs_bruteforce),
         cmocka_unit_test(test_tour_dp_vs_astar),
         cmocka_unit_test(test_tour_budget),
