@@ -30,7 +30,7 @@ RENDER_TEST_SRC := $(wildcard tests/test_render*.c)
 UNIT_SRC := $(filter-out $(RENDER_TEST_SRC),$(wildcard tests/test_*.c))
 CLI_TESTS := $(wildcard tests/cli_*.sh)
 # Libraries the renderer needs (headless OSMesa; EGL for the desktop build).
-RENDER_LIBS ?= -lOSMesa -lEGL -lz
+RENDER_LIBS ?= -lOSMesa -lEGL -lX11 -lz
 # tests/bench_render*.c: benches that also link the renderer and GL.
 BENCH_RENDER_SRC := $(wildcard tests/bench_render*.c)
 BENCH_SRC := $(filter-out $(BENCH_RENDER_SRC),$(wildcard tests/bench_*.c))
@@ -50,7 +50,7 @@ FUZZ_BIN := $(FUZZ_SRC:fuzz/%.c=$(BUILD)/fuzz/%)
 
 DEB_PACKAGES := make gcc clang libcmocka-dev libosmesa6-dev libegl-dev \
   libgles-dev libhidapi-dev libusb-1.0-0-dev libopenxr-dev \
-  gcc-aarch64-linux-gnu qemu-user xvfb zlib1g-dev
+  gcc-aarch64-linux-gnu qemu-user xvfb zlib1g-dev libx11-dev
 
 .PHONY: all test purity unit render-test cli-test fuzz-replay fuzz bench san clean deps \
         deps-cross check-clang cross-test

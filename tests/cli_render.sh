@@ -71,6 +71,35 @@ else
     echo "note: no EGL surfaceless platform here: $(cat "$T/err")"
 fi
 
+# the desktop build: a window through EGL on X11, here under Xvfb
+if command -v Xvfb >/dev/null 2>&1; then
+    D=":$((100 + $$ % 400))"
+    Xvfb "$D" -screen 0 320x240x24 -nolisten tcp >/dev/null 2>&1 &
+    XPID=$!
+    trap 'kill $XPID 2>/dev/null; rm -rf "$T"' EXIT
+    ok=0
+    for i in 1 2 3 4 5 6 7 8 9 10; do
+        if DISPLAY=$D "$H" render --window --frames 2 --size 64x48 --seed 2 \
+            --out "$T/w.png" >/dev/null 2>&1; then ok=1; break; fi
+        sleep 0.3
+    done
+    [ $ok = 1 ] || fail "--window under Xvfb"
+    # the window shows what the headless build shows (HUD on in both)
+    "$H" render --hud --size 64x48 --seed 2 --out "$T/w_osm.png" || fail "render --hud"
+    cmp -s "$T/w.png" "$T/w_osm.png" || echo "note: window and OSMesa images differ"
+    # walking 40 frames north crosses the edge z = 1: one room step to N
+    KEYS=wwwwwwwwwwwwwwwwwwwwwwwwwwwwwwwwwwwwwwww
+    DISPLAY=$D "$H" render --window --size 64x48 --keys "$KEYS" >"$T/walk" ||
+        fail "--keys"
+    grep -q '^tile N cell 1,0 steps 1 ' "$T/walk" || fail "walking north: $(cat "$T/walk")"
+    kill $XPID 2>/dev/null
+    wait $XPID 2>/dev/null
+else
+    echo "note: no Xvfb here: --window not tested"
+fi
+expect_usage --window --stereo 0.064
+expect_usage --keys www --out "$T/a.png"
+
 # a failed write: exit 1, the old file untouched, no temp file
 echo old >"$T/keep.png"
 chmod 0555 "$T" 2>/dev/null

@@ -15,6 +15,7 @@
 #include "../../render/hol_png.h"
 #include "../../render/hol_render.h"
 #include "../egl/hol_egl.h"
+#include "../egl/hol_egl_x11.h"
 #include "../osmesa/hol_osmesa.h"
 #include "cli.h"
 
@@ -23,7 +24,8 @@ static const char *const render_usage =
     "                       [--size WxH] [--out FILE.png] [--tile-ids FILE]\n"
     "                       [--stats] [--euclidean] [--bare] [--fov DEG]\n"
     "                       [--frames N] [--seed N] [--hud] [--target ADDR]\n"
-    "                       [--gl osmesa|egl] [--stereo IPD]\n"
+    "                       [--gl osmesa|egl] [--stereo IPD] [--window]\n"
+    "                       [--keys SCRIPT]\n"
     "\n"
     "Render what the user sees, headless (OSMesa), and write a PNG.\n"
     "\n"
@@ -49,6 +51,13 @@ static const char *const render_usage =
     "  --stereo IPD    two eyes IPD metres apart (e.g. 0.064) side by side,\n"
     "                  each with its own render queue; --eye is the head\n"
     "                  (an eye leaning over a cell edge sees from that cell)\n"
+    "  --window        the desktop build: a live window (EGL on X11, also\n"
+    "                  under Xvfb) with HUD and minimap; arrows/WASD walk and\n"
+    "                  turn, PgUp/PgDn look, Esc quits; with --frames N it\n"
+    "                  stops after N frames (and --out gets the last)\n"
+    "  --keys SCRIPT   drive --window by a script, one letter per frame:\n"
+    "                  w/s forward/back, a/d sideways, l/r turn, u/n look\n"
+    "                  up/down, . nothing; prints where the user ends\n"
     "  --gl API        osmesa (default: desktop GL core, no display) or egl\n"
     "                  (OpenGL ES 3 on EGL's surfaceless platform)\n"
     "  --target ADDR   an objective tile (repeatable, up to 8): guide pole,\n"
@@ -134,6 +143,90 @@ static int cmp_double(const void *a, const void *b)
     return x < y ? -1 : x > y;
 }
 
+/* The desktop build: a window (EGL on X11; works under Xvfb). Arrow keys
+ * or W/S walk and turn, A/D step sideways, Page Up/Down look up and down,
+ * Escape or q quits. Walking over a cell edge is a room step: the user's
+ * state follows the eye (hol_render_eye_state), the room bounds hold it
+ * in. frames > 0 stops after that many frames; out then gets the last. */
+static int run_window(const char *cmd, hol_x11 *xw, hol_render *r, hol_world *world,
+                      hol_frame_desc *fd, long frames, const char *out, uint8_t *rgba,
+                      const char *script)
+{
+    hol_x11_keys keys;
+    memset(&keys, 0, sizeof keys);
+    long k = 0;
+    double t = 0;
+    if (script && frames <= 0)
+        frames = (long)strlen(script);
+    while (hol_x11_poll(xw, &keys) && (frames <= 0 || k < frames)) {
+        if (script) {
+            /* a key script drives the frame instead of the keyboard */
+            char ch = k < (long)strlen(script) ? script[k] : '.';
+            memset(&keys, 0, sizeof keys);
+            keys.up = ch == 'w';
+            keys.down = ch == 's';
+            keys.strafe_l = ch == 'a';
+            keys.strafe_r = ch == 'd';
+            keys.left = ch == 'l';
+            keys.right = ch == 'r';
+            keys.look_up = ch == 'u';
+            keys.look_down = ch == 'n';
+        }
+        hol_camera *c = &fd->cam;
+        c->yaw_deg += 2.0 * (keys.left - keys.right);
+        c->pitch_deg += 1.5 * (keys.look_up - keys.look_down);
+        c->pitch_deg = c->pitch_deg < -89 ? -89 : c->pitch_deg > 89 ? 89 : c->pitch_deg;
+        double yr = c->yaw_deg * 3.14159265358979323846 / 180;
+        double fwd = 0.03 * (keys.up - keys.down), side = 0.03 * (keys.strafe_r - keys.strafe_l);
+        double eye[3] = {c->eye[0] - fwd * sin(yr) + side * cos(yr), c->eye[1],
+                         c->eye[2] - fwd * cos(yr) - side * sin(yr)};
+        /* the hedges hold the user in; never stand exactly on a grid line */
+        for (int a = 0; a < 3; a += 2) {
+            eye[a] = eye[a] < 0.05 ? 0.05 : eye[a] > HOL_ROOM_SIZE - 0.05 ? HOL_ROOM_SIZE - 0.05 : eye[a];
+            if (eye[a] == floor(eye[a]))
+                eye[a] += 1e-6;
+        }
+        hol_room next;
+        if ((eye[0] != c->eye[0] || eye[2] != c->eye[2]) &&
+            hol_render_eye_state(&fd->user, c->eye, eye, &next) == HOL_OK) {
+            if (memcmp(&next, &fd->user, sizeof next)) {
+                fd->steps_taken += abs(next.col - fd->user.col) + abs(next.row - fd->user.row);
+                fd->user = next;
+                if (hol_world_update(world, &fd->user)) {
+                    cli_error(cmd, 0, "cannot generate the world");
+                    return CLI_EXIT_FAIL;
+                }
+            }
+            c->eye[0] = eye[0];
+            c->eye[2] = eye[2];
+        }
+        c->width = xw->w;
+        c->height = xw->h;
+        fd->time_s = t;
+        hol_err err = hol_render_frame(r, fd, NULL);
+        if (err) {
+            cli_error(cmd, 0, "rendering failed: %s", hol_err_str(err));
+            return CLI_EXIT_FAIL;
+        }
+        k++;
+        if (frames > 0 && k == frames && out) {
+            hol_render_read_rgba(r, c->width, c->height, rgba);
+            if (hol_png_write_file(out, rgba, c->width, c->height, 0)) {
+                cli_error(cmd, 0, "cannot write '%.200s': %s", out, strerror(errno));
+                return CLI_EXIT_FAIL;
+            }
+        }
+        hol_x11_swap(xw);
+        t += 1.0 / 60.0;
+    }
+    char addr[HOL_TILE_ADDR_MAX];
+    hol_tile_print(fd->user.tile, addr);
+    printf("tile %s cell %d,%d steps %d eye %.3f,%.3f,%.3f yaw %.1f pitch %.1f\n", addr,
+           fd->user.col, fd->user.row, fd->steps_taken, fd->cam.eye[0], fd->cam.eye[1],
+           fd->cam.eye[2], fd->cam.yaw_deg, fd->cam.pitch_deg);
+    return CLI_EXIT_OK;
+}
+
 int cli_cmd_render(int argc, char **argv)
 {
     const char *cmd = "render";
@@ -141,10 +234,10 @@ int cli_cmd_render(int argc, char **argv)
         fputs(render_usage, stdout);
         return cli_finish_output(cmd);
     }
-    const char *walk = "-", *eye_s = NULL, *out = NULL, *ids_path = NULL;
+    const char *walk = "-", *eye_s = NULL, *out = NULL, *ids_path = NULL, *keyscript = NULL;
     double yaw = 0, pitch = -30, fov = 90, ipd = 0;
     long w = 640, h = 480, frames = 1;
-    int stats = 0, flags = HOL_RENDER_NO_HUD, ntargets = 0, use_egl = 0;
+    int stats = 0, flags = HOL_RENDER_NO_HUD, ntargets = 0, use_egl = 0, frames_set = 0;
     unsigned long long seed = 1;
     hol_tile targets[HOL_RENDER_MAX_OBJECTIVES];
     for (int i = 1; i < argc; i++) {
@@ -156,7 +249,7 @@ int cli_cmd_render(int argc, char **argv)
                     !strcmp(a, "--tile-ids") || !strcmp(a, "--fov") ||
                     !strcmp(a, "--frames") || !strcmp(a, "--seed") ||
                     !strcmp(a, "--target") || !strcmp(a, "--gl") ||
-                    !strcmp(a, "--stereo");
+                    !strcmp(a, "--stereo") || !strcmp(a, "--keys");
         if (takes && !val) {
             cli_error(cmd, 0, "%s needs a value; see 'holonomy render --help'", a);
             return CLI_EXIT_USAGE;
@@ -187,6 +280,7 @@ int cli_cmd_render(int argc, char **argv)
                 return CLI_EXIT_USAGE;
             }
         } else if (!strcmp(a, "--frames")) {
+            frames_set = 1;
             if (parse_int(val, 1, 1000, &frames)) {
                 cli_error(cmd, 0, "--frames '%.40s' is not a count in 1..1000", val);
                 return CLI_EXIT_USAGE;
@@ -241,6 +335,15 @@ int cli_cmd_render(int argc, char **argv)
         } else if (!strcmp(a, "--hud")) {
             flags &= ~HOL_RENDER_NO_HUD;
             flags |= HOL_RENDER_MINIMAP;
+        } else if (!strcmp(a, "--window")) {
+            use_egl = 2;
+        } else if (!strcmp(a, "--keys")) {
+            keyscript = val;
+            if (strspn(val, "wsadlrun.") != strlen(val)) {
+                cli_error(cmd, 0, "--keys '%.40s' has a letter other than w s a d l r u n .",
+                          val);
+                return CLI_EXIT_USAGE;
+            }
         } else if (!strcmp(a, "--stats"))
             stats = 1;
         else if (!strcmp(a, "--euclidean"))
@@ -254,6 +357,16 @@ int cli_cmd_render(int argc, char **argv)
         if (takes)
             i++;
     }
+    if (use_egl == 2 && (ipd > 0 || ids_path || stats)) {
+        cli_error(cmd, 0, "--window shows one eye live; drop --stereo, --tile-ids, --stats");
+        return CLI_EXIT_USAGE;
+    }
+    if (keyscript && use_egl != 2) {
+        cli_error(cmd, 0, "--keys drives --window");
+        return CLI_EXIT_USAGE;
+    }
+    if (use_egl == 2 && !frames_set)
+        frames = 0; /* until the window is closed (or the key script ends) */
     if (ipd > 0 && ids_path) {
         cli_error(cmd, 0, "--tile-ids works on one eye; drop --stereo");
         return CLI_EXIT_USAGE;
@@ -262,7 +375,7 @@ int cli_cmd_render(int argc, char **argv)
         cli_error(cmd, 0, "--stereo needs an image at least 2 pixels wide");
         return CLI_EXIT_USAGE;
     }
-    if (!out && !ids_path && !stats) {
+    if (!out && !ids_path && !stats && use_egl != 2) {
         cli_error(cmd, 0, "nothing to do: give --out FILE.png, --tile-ids FILE or --stats");
         return CLI_EXIT_USAGE;
     }
@@ -344,8 +457,11 @@ int cli_cmd_render(int argc, char **argv)
     char msg[256];
     hol_osmesa gl = {0};
     hol_egl egl = {0};
-    if (use_egl ? hol_egl_create(&egl, (int)w, (int)h, msg, sizeof msg)
-                : hol_osmesa_create(&gl, (int)w, (int)h, msg, sizeof msg)) {
+    hol_x11 xw;
+    memset(&xw, 0, sizeof xw);
+    if (use_egl == 2 ? hol_x11_create(&xw, (int)w, (int)h, "holonomy", msg, sizeof msg)
+        : use_egl    ? hol_egl_create(&egl, (int)w, (int)h, msg, sizeof msg)
+                     : hol_osmesa_create(&gl, (int)w, (int)h, msg, sizeof msg)) {
         cli_error(cmd, 0, "%s", msg);
         return CLI_EXIT_FAIL;
     }
@@ -384,7 +500,7 @@ int cli_cmd_render(int argc, char **argv)
     memset(&rd, 0, sizeof rd);
     rd.max_width = rd.max_height = 8192;
     rd.world = world;
-    rd.getproc = use_egl ? hol_egl_getproc : hol_osmesa_getproc;
+    rd.getproc = use_egl ? hol_egl_getproc : hol_osmesa_getproc; /* x11 too */
     err = hol_render_create(&rd, &r);
     if (err) {
         cli_error(cmd, 0, "cannot initialise the renderer: %s", hol_err_str(err));
@@ -393,10 +509,16 @@ int cli_cmd_render(int argc, char **argv)
     }
     rgba = malloc((size_t)w * (size_t)h * 4);
     eyebuf = malloc((size_t)w * (size_t)h * 4);
-    cpu = malloc((size_t)frames * sizeof *cpu);
+    cpu = malloc((size_t)(frames > 0 ? frames : 1) * sizeof *cpu);
     if (!rgba || !cpu || !eyebuf) {
         cli_error(cmd, 0, "out of memory");
         status = CLI_EXIT_FAIL;
+        goto done;
+    }
+    if (use_egl == 2) {
+        fd.flags &= ~HOL_RENDER_NO_HUD;
+        fd.flags |= HOL_RENDER_MINIMAP;
+        status = run_window(cmd, &xw, r, world, &fd, frames, out, rgba, keyscript);
         goto done;
     }
     /* one render queue per eye: mono, or two eyes side by side */
@@ -488,7 +610,9 @@ done:
     free(rgba);
     hol_render_destroy(r);
     hol_world_destroy(world);
-    if (use_egl)
+    if (use_egl == 2)
+        hol_x11_destroy(&xw);
+    else if (use_egl)
         hol_egl_destroy(&egl);
     else
         hol_osmesa_destroy(&gl);
