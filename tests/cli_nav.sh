@@ -107,6 +107,13 @@ printf -- '- Nfffffffffffffffffffffffffffffffffffffffffffffffffffffffffffff\n' >
 expect "beyond reach" 2 '' "$H" nav
 err_line "line 1"
 
+# --stats: one stderr line per input line, exact within 12 tiles
+printf -- '- Nff\n- Nffffffffffffff\n' >"$T/in"
+"$H" nav --stats --budget 3000 <"$T/in" >"$T/out" 2>"$T/err"
+[ $? = 0 ] && ok || bad "nav --stats status"
+if grep -q '^1 exact 0$' "$T/err" && grep -q '^2 anytime [0-9]*$' "$T/err"; then ok; else bad "nav --stats: $(cat "$T/err")"; fi
+check_lines
+
 # options
 : >"$T/in"
 expect_status "help" 0 "$H" nav --help

@@ -9,7 +9,7 @@
 #include "cli.h"
 
 static const char *const tour_usage =
-    "usage: holonomy tour [--budget N] PREFIX KEY... CHEST\n"
+    "usage: holonomy tour [--budget N] [--stats] PREFIX KEY... CHEST\n"
     "\n"
     "PREFIX: a walk of room steps (N, E, S, W) from the start, cell (1,1) of\n"
     "tile O, inside the room ('-' for none). KEY... (0 to 5) and CHEST: tile\n"
@@ -18,12 +18,15 @@ static const char *const tour_usage =
     "user stands on its tile, the start included) and after the last key on\n"
     "the chest, and WALK such a walk ('-' when K is 0).\n"
     "\n"
-    "Exact: a search over room state x collected keys with an admissible\n"
-    "heuristic from the cost table. If it exceeds the node budget, the keys\n"
-    "are visited nearest first instead and K is that walk's length.\n"
+    "Exact when start, keys and chest lie within 7 tiles of each other (a\n"
+    "dynamic program over key orders x room states on the keys); otherwise\n"
+    "an A* search over room state x collected keys, exact if it finishes\n"
+    "within the node budget, else the keys are visited nearest first and K\n"
+    "is that walk's length (--stats tells which).\n"
     "\n"
     "  --budget N   node budget (default and maximum 262144)\n"
-    "  --stats      also print 'exact|greedy NODES' on stderr\n"
+    "  --stats      also print 'exact|greedy NODES' on stderr (0 nodes: the\n"
+    "               dynamic program answered)\n"
     "  -h, --help   this text\n"
     "\n"
     "Exit status: 0 ok, 1 output or memory failure, 2 bad arguments.\n";
