@@ -78,6 +78,17 @@ done
 run "check" 0 "$H" world --seed 9 --walk NWSSEENWN --check --quiet
 [ -s "$T/out" ] && bad "--quiet printed tiles" || ok
 
+# a small store: eviction keeps it under its capacity, constraints hold
+W=$(awk 'BEGIN { srand(7); c = 1; r = 1; s = ""; n = 0
+  while (n < 1100) { d = int(rand() * 4); nc = c; nr = r
+    if (d == 0) nr--; if (d == 1) nc--; if (d == 2) nr++; if (d == 3) nc++
+    if (nc < 0 || nc > 2 || nr < 0 || nr > 2) continue
+    c = nc; r = nr; s = s substr("NWSE", d + 1, 1); n++ }
+  print s }')
+run "small store" 0 "$H" world --seed 2 --walk "$W" --capacity 1024 --check --quiet --stats
+if awk '$1 == "#" && $2 == "tiles" { ok = $3 < $5 && $5 == 4096 && $9 > 0 } END { exit !ok }' "$T/out"; then ok
+else bad "small store: want tiles < capacity 4096 and evictions, got $(cat "$T/out")"; fi
+
 # save, load, continue
 run "save" 0 "$H" world --seed 5 --walk NWS --save "$T/w.hw" --quiet
 [ -s "$T/w.hw" ] && ok || bad "save wrote nothing"

@@ -54,6 +54,8 @@ static const char *const world_usage =
     "                  FILE is bad input (exit 2) and FILE is left untouched\n"
     "  --capacity N    tiles in the store (default 1048576, fixed)\n"
     "  --quiet         print no tiles\n"
+    "  --stats         print a last line: '# tiles N capacity C collapsed X\n"
+    "                  evicted Y backtracks Z bytes B' (the store after the walk)\n"
     "\n"
     "Exit status: 0 ok, 1 failed --check or an I/O error, 2 bad usage or\n"
     "input (one line on stderr).\n";
@@ -67,6 +69,7 @@ typedef struct world_opts {
     int radius;
     int check;
     int quiet;
+    int stats;
     const char *load;
     const char *save;
     uint32_t capacity;
@@ -150,6 +153,9 @@ static int parse_args(int argc, char **argv, world_opts *o)
             continue;
         } else if (!strcmp(a, "--quiet")) {
             o->quiet = 1;
+            continue;
+        } else if (!strcmp(a, "--stats")) {
+            o->stats = 1;
             continue;
         } else {
             cli_error(CMD, 0, "unknown argument '%.40s'; see --help", a);
@@ -451,6 +457,14 @@ int cli_cmd_world(int argc, char **argv)
             cli_error(CMD, 0, "check failed: %s", msg);
             status = CLI_EXIT_FAIL;
         }
+    }
+    if (!status && o.stats) {
+        hol_world_stats st;
+        hol_world_get_stats(w, &st);
+        printf("# tiles %" PRIu32 " capacity %" PRIu32 " collapsed %" PRIu64
+               " evicted %" PRIu64 " backtracks %" PRIu64 " bytes %zu\n",
+               st.count, st.capacity, st.tiles_collapsed, st.evicted, st.backtracks,
+               st.bytes);
     }
     if (!status && o.save) {
         size_t need = hol_world_save_size(w), len = 0;
