@@ -186,10 +186,12 @@ void hol_world_get_stats(const hol_world *w, hol_world_stats *out);
 /* Collapse every tile within the radius of room->tile (call after every
  * room step, before drawing; a call on the tile of the last successful
  * update only records the room state and costs nothing, so calling it
- * every frame is fine). Errors: HOL_ENOMEM (capacity too small for the
- * radius), HOL_EBUDGET (backtracking gave up; only possible with
- * test_reject_per_mille), HOL_ERANGE (the ball leaves the reach of tile
- * words). On error the tiles already in the store are unchanged. */
+ * every frame is fine). Tiles beyond the reach of tile words (distance
+ * HOL_TILE_MAX_DIST from O) do not exist: the ball simply ends there and no
+ * connector leads out of it. Errors: HOL_EARG (an invalid room state),
+ * HOL_ENOMEM (the store is full of tiles it may not evict), HOL_EBUDGET
+ * (backtracking gave up; only possible with test_reject_per_mille). On
+ * error the tiles already in the store are unchanged. */
 hol_err hol_world_update(hol_world *w, const hol_room *room);
 
 /* Content of tile t; collapses t first if it is not yet (anywhere: a tile
