@@ -605,6 +605,66 @@ static void test_capacity_exhaustion(void **state)
     hol_world_destroy(w);
 }
 
+/* A store full of tiles it may not evict (game objects) refuses new tiles
+ * with HOL_ENOMEM, never crashes, and stays valid. */
+static void test_store_full_of_pins(void **state)
+{
+    (void)state;
+    hol_world *w = make_world(12, HOL_WORLD_MIN_CAPACITY, 0);
+    hol_room room = hol_room_start();
+    assert_int_equal(hol_world_update(w, &room), HOL_OK);
+    uint64_t rng = 77;
+    int pins = 0, refusals = 0;
+    hol_world_stats st;
+    for (int i = 0; i < 100000 && refusals < 50; i++) {
+        hol_tile t = hol_tile_origin();
+        for (int k = 0; k < 14; k++) {
+            hol_tile n;
+            if (!hol_tile_step(t, (int)(rng_next(&rng) & 3), &n, NULL))
+                t = n;
+        }
+        hol_tile got;
+        hol_err err = hol_world_reserve(w, t, 0, HOL_OBJ_KEY, &got);
+        assert_true(err == HOL_OK || err == HOL_ENOMEM);
+        /* the user steps to and fro, so unpinned tiles age and may go */
+        hol_room next = room;
+        assert_int_equal(hol_room_step(&next, i & 1 ? HOL_DIR_S : HOL_DIR_N), HOL_OK);
+        hol_err uerr = hol_world_update(w, &next);
+        assert_true(uerr == HOL_OK || uerr == HOL_ENOMEM);
+        if (!uerr)
+            room = next;
+        hol_world_get_stats(w, &st);
+        assert_true(st.count < st.capacity);
+        pins += err == HOL_OK;
+        hol_tile_content c;
+        if (err == HOL_ENOMEM && hol_world_peek(w, t, &c) != HOL_OK)
+            refusals++; /* the store could not even take t */
+    }
+    assert_true(refusals >= 50);
+    assert_true(pins > (int)st.capacity / 2);
+    /* walking on either works (evicting what it may) or is refused with
+     * HOL_ENOMEM; the store stays valid and within its capacity */
+    int refused = 0;
+    for (int i = 0; i < 2000; i++) {
+        hol_room next = room;
+        if (hol_room_step(&next, (int)(rng_next(&rng) & 3)))
+            continue;
+        hol_err err = hol_world_update(w, &next);
+        assert_true(err == HOL_OK || err == HOL_ENOMEM);
+        if (err == HOL_OK)
+            room = next;
+        else
+            refused++;
+        hol_world_get_stats(w, &st);
+        assert_true(st.count < st.capacity);
+    }
+    print_message("    store of %u: %d game objects, %u tiles, %d steps refused\n",
+                  st.capacity, pins, st.count, refused);
+    assert_true(refused > 0);
+    assert_check(w);
+    hol_world_destroy(w);
+}
+
 /* ---- lifecycle, game objects, errors ---------------------------------------------------------- */
 
 static int allocs, frees;
@@ -794,6 +854,7 @@ int main(void)
         cmocka_unit_test(test_save_load),
         cmocka_unit_test(test_corrupt_images),
         cmocka_unit_test(test_capacity_exhaustion),
+        cmocka_unit_test(test_store_full_of_pins),
         cmocka_unit_test(test_lifecycle),
         cmocka_unit_test(test_reserve),
         cmocka_unit_test(test_check_detects),
