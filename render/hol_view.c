@@ -11,9 +11,51 @@ static double hol__fovy(const hol_camera *cam)
     return (cam->fovy_deg > 0 ? cam->fovy_deg : 90.0) * HOL__PI / 180.0;
 }
 
+void hol_camera_tangents(const hol_camera *cam, double *out_l, double *out_r,
+                         double *out_d, double *out_u)
+{
+    if (cam->has_pose) {
+        *out_l = cam->tan_left;
+        *out_r = cam->tan_right;
+        *out_d = cam->tan_down;
+        *out_u = cam->tan_up;
+        return;
+    }
+    double ay = tan(hol__fovy(cam) / 2), ax = ay * cam->width / cam->height;
+    *out_l = -ax;
+    *out_r = ax;
+    *out_d = -ay;
+    *out_u = ay;
+}
+
+/* v rotated by the unit quaternion q = (x, y, z, w) */
+static void hol__qrot(const double q[4], const double v[3], double out[3])
+{
+    double x = q[0], y = q[1], z = q[2], w = q[3];
+    /* t = 2 q.xyz x v; out = v + w t + q.xyz x t */
+    double tx = 2 * (y * v[2] - z * v[1]), ty = 2 * (z * v[0] - x * v[2]),
+           tz = 2 * (x * v[1] - y * v[0]);
+    out[0] = v[0] + w * tx + (y * tz - z * ty);
+    out[1] = v[1] + w * ty + (z * tx - x * tz);
+    out[2] = v[2] + w * tz + (x * ty - y * tx);
+}
+
 void hol_camera_basis(const hol_camera *cam, double out_r[3], double out_u[3],
                       double out_b[3])
 {
+    if (cam->has_pose) {
+        const double *q = cam->orient;
+        double n = sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+        double qn[4] = {0, 0, 0, 1};
+        if (n > 0)
+            for (int i = 0; i < 4; i++)
+                qn[i] = q[i] / n;
+        static const double ex[3] = {1, 0, 0}, ey[3] = {0, 1, 0}, ez[3] = {0, 0, 1};
+        hol__qrot(qn, ex, out_r);
+        hol__qrot(qn, ey, out_u);
+        hol__qrot(qn, ez, out_b);
+        return;
+    }
     double y = cam->yaw_deg * HOL__PI / 180.0, p = cam->pitch_deg * HOL__PI / 180.0;
     double cy = cos(y), sy = sin(y), cp = cos(p), sp = sin(p);
     /* R = Ry(yaw) * Rx(pitch); columns are right, up, back */
@@ -48,11 +90,14 @@ void hol_camera_matrices(const hol_camera *cam, float out_view[16],
         out_view[i] = (float)v[i];
     double n = cam->znear > 0 ? cam->znear : 0.05;
     double f = cam->zfar > 0 ? cam->zfar : 60.0;
-    double t = 1.0 / tan(hol__fovy(cam) / 2);
-    double aspect = (double)cam->width / cam->height;
+    double l, rt, d, up;
+    hol_camera_tangents(cam, &l, &rt, &d, &up);
     memset(out_proj, 0, 16 * sizeof(float));
-    out_proj[0] = (float)(t / aspect);
-    out_proj[5] = (float)t;
+    /* off-centre frustum in tangent units */
+    out_proj[0] = (float)(2 / (rt - l));
+    out_proj[5] = (float)(2 / (up - d));
+    out_proj[8] = (float)((rt + l) / (rt - l));
+    out_proj[9] = (float)((up + d) / (up - d));
     out_proj[10] = (float)((f + n) / (n - f));
     out_proj[11] = -1.0f;
     out_proj[14] = (float)(2 * f * n / (n - f));
@@ -63,9 +108,11 @@ void hol_camera_ray(const hol_camera *cam, double ndc_x, double ndc_y,
 {
     double r[3], u[3], b[3];
     hol_camera_basis(cam, r, u, b);
-    double ay = tan(hol__fovy(cam) / 2), ax = ay * cam->width / cam->height;
+    double l, rt, d, up;
+    hol_camera_tangents(cam, &l, &rt, &d, &up);
+    double tx = l + (ndc_x + 1) / 2 * (rt - l), ty = d + (ndc_y + 1) / 2 * (up - d);
     for (int i = 0; i < 3; i++)
-        out_dir[i] = ndc_x * ax * r[i] + ndc_y * ay * u[i] - b[i];
+        out_dir[i] = tx * r[i] + ty * u[i] - b[i];
 }
 
 uint8_t hol_view_code(const uint8_t *steps, int n)
@@ -243,18 +290,24 @@ int hol_view_leaf_ndc(const hol_camera *cam, const hol_view_leaf *leaf,
 {
     double r[3], u[3], b[3];
     hol_camera_basis(cam, r, u, b);
-    double ay = tan(hol__fovy(cam) / 2), ax = ay * cam->width / cam->height;
-    /* floor direction of the ray through (x,y): x*ax*r + y*ay*u - b */
+    double l, rt, d, up;
+    hol_camera_tangents(cam, &l, &rt, &d, &up);
+    /* the ray through (x,y) is x*ax*r + y*ay*u + o with the half extents
+     * ax, ay and the offset o = cx*r + cy*u - b of an off-centre frustum */
+    double ax = (rt - l) / 2, ay = (up - d) / 2, cx = (rt + l) / 2, cy = (up + d) / 2;
+    double o[3];
+    for (int i = 0; i < 3; i++)
+        o[i] = cx * r[i] + cy * u[i] - b[i];
     double poly[8][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}}, tmp[8][2];
     int n = 4;
     /* cross(u0, v) >= 0 and cross(v, u1) >= 0 */
     const double *u0 = leaf->u0, *u1 = leaf->u1;
     double a0 = ax * (u0[0] * r[2] - u0[1] * r[0]);
     double b0 = ay * (u0[0] * u[2] - u0[1] * u[0]);
-    double c0 = -(u0[0] * b[2] - u0[1] * b[0]);
+    double c0 = u0[0] * o[2] - u0[1] * o[0];
     double a1 = -ax * (u1[0] * r[2] - u1[1] * r[0]);
     double b1 = -ay * (u1[0] * u[2] - u1[1] * u[0]);
-    double c1 = (u1[0] * b[2] - u1[1] * b[0]);
+    double c1 = -(u1[0] * o[2] - u1[1] * o[0]);
     n = hol__clip(poly, n, a0, b0, c0, tmp);
     n = hol__clip(tmp, n, a1, b1, c1, poly);
     for (int i = 0; i < n; i++) {

@@ -48,6 +48,15 @@ typedef struct hol_camera {
     double fovy_deg;  /* 0 means 90 */
     int width, height;
     double znear, zfar; /* 0 means 0.05 and 60 */
+    /* Headset form (what OpenXR gives per eye): when has_pose is set, the
+     * orientation is the unit quaternion (x, y, z, w) taking view space
+     * (x right, y up, looking down -z) to room space, roll included, and
+     * the four tangents of the half-angles give an asymmetric field of
+     * view (tan_left and tan_down negative); yaw, pitch and fovy are then
+     * ignored. */
+    int has_pose;
+    double orient[4];
+    double tan_left, tan_right, tan_down, tan_up;
 } hol_camera;
 
 typedef struct hol_view_leaf {
@@ -73,6 +82,9 @@ typedef struct hol_view {
     hol_view_branch branches[HOL_VIEW_MAX_BRANCHES];
 } hol_view;
 
+/* Tangents of the frustum's half-angles (left and down negative). */
+void hol_camera_tangents(const hol_camera *cam, double *out_l, double *out_r,
+                         double *out_d, double *out_u);
 /* Basis of the camera: right, up, back (world vectors). */
 void hol_camera_basis(const hol_camera *cam, double out_r[3], double out_u[3],
                       double out_b[3]);

@@ -42,23 +42,66 @@ typedef struct view_case {
     const char *walk;
     double eye[3], yaw, pitch, fov;
     int flags;
+    /* headset form: roll and an asymmetric frustum (tangents) */
+    int pose;
+    double roll, tl, tr, td, tu;
 } view_case;
 
 static const view_case cases[] = {
-    {"-", {1.5, 1.6, 1.5}, 0, -45, 90, 0},          /* centre cell */
-    {"-", {1.2, 1.6, 1.7}, 90, -30, 90, 0},         /* centre, looking west */
-    {"N", {1.5, 1.6, 0.3}, 180, -40, 90, 0},        /* edge cell, looking south */
-    {"NW", {0.2, 1.6, 0.2}, -135, -35, 90, 0},      /* corner, across the room */
-    {"SE", {2.8, 1.7, 2.9}, 45, -30, 100, 0},       /* other corner */
-    {"E", {2.5, 1.5, 1.02}, 90, -20, 90, 0},        /* along the edge z = 1 */
-    {"NW", {0.5, 1.6, 0.5}, -135, -40, 90, 0},      /* across the diagonal vertices */
-    {"-", {1.37, 1.6, 1.61}, 33, -90, 90, 0},       /* straight down */
-    {"NWSSEEN", {2.3, 1.8, 1.6}, 200, -25, 120, 0}, /* deeper tile, wide view */
-    {"S", {1.6, 0.5, 2.4}, 10, -10, 90, 0},         /* low eye, grazing */
-    {"W", {0.7, 1.6, 1.3}, -70, -35, 90, 0},
-    {"-", {1.5, 1.6, 1.5}, 0, -45, 90, HOL_RENDER_EUCLIDEAN},
-    {"NW", {0.2, 1.6, 0.2}, -135, -35, 90, HOL_RENDER_EUCLIDEAN},
+    {"-", {1.5, 1.6, 1.5}, 0, -45, 90, 0, 0, 0, 0, 0, 0, 0},          /* centre cell */
+    {"-", {1.2, 1.6, 1.7}, 90, -30, 90, 0, 0, 0, 0, 0, 0, 0},         /* centre, looking west */
+    {"N", {1.5, 1.6, 0.3}, 180, -40, 90, 0, 0, 0, 0, 0, 0, 0},        /* edge cell, looking south */
+    {"NW", {0.2, 1.6, 0.2}, -135, -35, 90, 0, 0, 0, 0, 0, 0, 0},      /* corner, across the room */
+    {"SE", {2.8, 1.7, 2.9}, 45, -30, 100, 0, 0, 0, 0, 0, 0, 0},       /* other corner */
+    {"E", {2.5, 1.5, 1.02}, 90, -20, 90, 0, 0, 0, 0, 0, 0, 0},        /* along the edge z = 1 */
+    {"NW", {0.5, 1.6, 0.5}, -135, -40, 90, 0, 0, 0, 0, 0, 0, 0},      /* across the diagonal vertices */
+    {"-", {1.37, 1.6, 1.61}, 33, -90, 90, 0, 0, 0, 0, 0, 0, 0},       /* straight down */
+    {"NWSSEEN", {2.3, 1.8, 1.6}, 200, -25, 120, 0, 0, 0, 0, 0, 0, 0}, /* deeper tile, wide view */
+    {"S", {1.6, 0.5, 2.4}, 10, -10, 90, 0, 0, 0, 0, 0, 0, 0},         /* low eye, grazing */
+    {"W", {0.7, 1.6, 1.3}, -70, -35, 90, 0, 0, 0, 0, 0, 0, 0},
+    {"-", {1.5, 1.6, 1.5}, 0, -45, 90, HOL_RENDER_EUCLIDEAN, 0, 0, 0, 0, 0, 0},
+    {"NW", {0.2, 1.6, 0.2}, -135, -35, 90, HOL_RENDER_EUCLIDEAN, 0, 0, 0, 0, 0, 0},
+    /* headset poses: roll and asymmetric per-eye frusta as OpenXR gives */
+    {"-", {1.47, 1.62, 1.55}, 20, -30, 0, 0, 1, 12, -1.05, 0.88, -1.12, 0.84},
+    {"SE", {2.6, 1.7, 2.7}, 50, -45, 0, 0, 1, -25, -0.9, 1.02, -1.2, 0.9},
+    {"N", {1.3, 1.5, 0.6}, 170, -60, 0, 0, 1, 40, -1.3, 0.7, -0.8, 1.1},
+    {"W", {0.5, 1.6, 1.5}, -80, -20, 0, HOL_RENDER_EUCLIDEAN, 1, 8, -1.0, 1.0, -1.1, 0.8},
 };
+
+/* The renderer's camera for a case: yaw/pitch/fov, or the headset form
+ * with the orientation as a quaternion qyaw * qpitch * qroll. */
+static void fill_cam(const view_case *c, hol_camera *cam)
+{
+    memset(cam, 0, sizeof *cam);
+    memcpy(cam->eye, c->eye, sizeof cam->eye);
+    cam->yaw_deg = c->yaw;
+    cam->pitch_deg = c->pitch;
+    cam->fovy_deg = c->fov;
+    cam->width = W;
+    cam->height = H;
+    if (!c->pose)
+        return;
+    double y = c->yaw * PI / 360, p = c->pitch * PI / 360, r = c->roll * PI / 360;
+    double qy[4] = {0, sin(y), 0, cos(y)}, qx[4] = {sin(p), 0, 0, cos(p)},
+           qz[4] = {0, 0, sin(r), cos(r)}, t[4], q[4];
+    /* Hamilton products (x, y, z, w) */
+#define QMUL(a, b, o)                                                          \
+    do {                                                                       \
+        o[0] = a[3] * b[0] + a[0] * b[3] + a[1] * b[2] - a[2] * b[1];          \
+        o[1] = a[3] * b[1] - a[0] * b[2] + a[1] * b[3] + a[2] * b[0];          \
+        o[2] = a[3] * b[2] + a[0] * b[1] - a[1] * b[0] + a[2] * b[3];          \
+        o[3] = a[3] * b[3] - a[0] * b[0] - a[1] * b[1] - a[2] * b[2];          \
+    } while (0)
+    QMUL(qy, qx, t);
+    QMUL(t, qz, q);
+#undef QMUL
+    cam->has_pose = 1;
+    memcpy(cam->orient, q, sizeof q);
+    cam->tan_left = c->tl;
+    cam->tan_right = c->tr;
+    cam->tan_down = c->td;
+    cam->tan_up = c->tu;
+}
 
 static hol_osmesa gl;
 static hol_render *rnd;
@@ -110,6 +153,15 @@ static int floor_point(const view_case *c, double px, double py, double out[2])
     double nx = 2 * px / W - 1, ny = 1 - 2 * py / H;
     /* view space ray (nx tx, ny ty, -1); pitch about x, then yaw about y */
     double vx = nx * tx, vy = ny * ty, vz = -1;
+    if (c->pose) {
+        /* asymmetric frustum, then roll about z (rotation matrices, not
+         * the renderer's quaternion code) */
+        double ax = c->tl + (px / W) * (c->tr - c->tl);
+        double ay = c->tu - (py / H) * (c->tu - c->td);
+        double ro = c->roll * PI / 180;
+        vx = ax * cos(ro) - ay * sin(ro);
+        vy = ax * sin(ro) + ay * cos(ro);
+    }
     double y1 = vy * cos(pitch) - vz * sin(pitch);
     double z1 = vy * sin(pitch) + vz * cos(pitch);
     double x2 = vx * cos(yaw) + z1 * sin(yaw);
@@ -177,14 +229,7 @@ static void check_case(const view_case *c, int flags, int *out_checked)
     hol_frame_desc f;
     memset(&f, 0, sizeof f);
     f.user = state_of(c->walk);
-    f.cam.eye[0] = c->eye[0];
-    f.cam.eye[1] = c->eye[1];
-    f.cam.eye[2] = c->eye[2];
-    f.cam.yaw_deg = c->yaw;
-    f.cam.pitch_deg = c->pitch;
-    f.cam.fovy_deg = c->fov;
-    f.cam.width = W;
-    f.cam.height = H;
+    fill_cam(c, &f.cam);
     f.flags = c->flags | flags | HOL_RENDER_IDS | HOL_RENDER_NO_HUD;
     assert_int_equal(hol_render_frame(rnd, &f, NULL), HOL_OK);
     static uint8_t px[W * H * 4];
@@ -293,12 +338,7 @@ static void test_trunks_hide_seams(void **state)
         hol_frame_desc f;
         memset(&f, 0, sizeof f);
         f.user = state_of(c->walk);
-        memcpy(f.cam.eye, c->eye, sizeof f.cam.eye);
-        f.cam.yaw_deg = c->yaw;
-        f.cam.pitch_deg = c->pitch;
-        f.cam.fovy_deg = c->fov;
-        f.cam.width = W;
-        f.cam.height = H;
+        fill_cam(c, &f.cam);
         f.flags = c->flags | HOL_RENDER_IDS | HOL_RENDER_NO_HUD;
         assert_int_equal(hol_render_frame(rnd, &f, NULL), HOL_OK);
         static uint8_t px[W * H * 4];
@@ -386,7 +426,8 @@ static void test_creeks_continue_across_edges(void **state)
             walk[n] = 0;
             if (hol_world_update(w, &u))
                 continue;
-            view_case c = {walk, {1.5, 1.6, 1.5}, (double)(k * 90), -90, 110, HOL_RENDER_BARE};
+            view_case c = {walk, {1.5, 1.6, 1.5}, (double)(k * 90), -90, 110,
+                           HOL_RENDER_BARE, 0, 0, 0, 0, 0, 0};
             hol_frame_desc f;
             memset(&f, 0, sizeof f);
             f.user = u;
