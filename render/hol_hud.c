@@ -295,7 +295,11 @@ static void hol__user_arrow(hol__px *p, const hol_frame_desc *f)
         cx += (float)(d[0] * rad * 0.985);
         cy -= (float)(d[1] * rad * 0.985);
     }
-    double yaw = f->cam.yaw_deg * HOL__PI / 180;
+    /* the view direction seen from above (works for headset poses too) */
+    double br[3], bu[3], bb[3];
+    hol_camera_basis(&f->cam, br, bu, bb);
+    double yaw = (bb[0] * bb[0] + bb[2] * bb[2] > 1e-12) ? atan2(bb[0], bb[2])
+                                                        : f->cam.yaw_deg * HOL__PI / 180;
     float ux = -(float)sin(yaw), uy = -(float)cos(yaw), s = 0.12f * rad + 2;
     float arrow[4][2] = {{cx + ux * s, cy + uy * s},
                          {cx - ux * s * 0.6f - uy * s * 0.6f, cy - uy * s * 0.6f + ux * s * 0.6f},
