@@ -37,11 +37,16 @@
  *   generator can produce (the tests check all of them exhaustively).
  * - Determinism: per-tile choices come from hash(seed, tile word), so the
  *   same seed and the same sequence of calls give the same world bit for
- *   bit; another seed gives another world.
+ *   bit; another seed gives another world. Tiles that hol_world_get
+ *   collapses beyond the radius depend on the order they are asked for:
+ *   to keep the world a function of seed and walk alone, read only within
+ *   the radius, or choose a radius (up to 8) that covers what is shown.
  * - Fixed memory: one allocation at hol_world_make (or caller memory with
  *   hol_world_init); the store is an open-addressing table keyed by the tile
  *   word. Full-store policy: when an update (or a get that must generate)
- *   finds the store over 3/4 full, it evicts the tiles least recently used -
+ *   finds the store over 3/4 full, it evicts, in an incremental sweep of
+ *   cap/256 table slots per call (all at once over 7/8), the tiles least
+ *   recently used -
  *   within radius + 1 of the user at an update, or read by hol_world_get -
  *   oldest first, until at most 1/2 remains (tiles of one age go together,
  *   so it may evict more). In a hyperbolic walk the least recently used
@@ -49,7 +54,7 @@
  *   running update, and tiles holding a game object. An evicted tile is
  *   regenerated, consistent with its neighbours in the store, if the user
  *   comes back (it may then differ from before). The store never grows, and
- *   no call crashes: HOL_ENOMEM if the capacity cannot hold the radius.
+ *   no call crashes: HOL_ENOMEM when it is full of tiles it may not evict.
  * - Save/load (hol_world_save / hol_world_load) work on caller buffers; the
  *   core does no file I/O. The format is versioned, little-endian, sorted by
  *   tile word, with a 64-bit checksum; hol_world_load validates everything
