@@ -28,7 +28,7 @@
 #include "hol_tile.h"
 
 #define HOL_NAVTAB_NONE UINT32_MAX
-#define HOL_NAVTAB_MAX_RADIUS 15
+#define HOL_NAVTAB_MAX_RADIUS 17
 
 typedef struct hol_navtab {
     int radius;

@@ -135,6 +135,63 @@ static void bench_prefix(hol_nav *any, hol_nav *exact, int dlo, int dhi, size_t 
     }
 }
 
+/* Optional (NAV_BENCH_VERIFY=1; about 4 s and 270 MB): the default
+ * navigator's anytime answers at 13..15 against a radius-17 table (trusted
+ * to 15), and the default table against it within 12. */
+static void bench_verify(hol_nav *nav)
+{
+    static uint8_t walk[HOL_NAV_WALK_MAX];
+    hol_navtab big, small;
+    void *mb = malloc(hol_navtab_table_bytes(17)), *ms = malloc(hol_navtab_table_bytes(14));
+    void *s = malloc(hol_navtab_scratch_bytes(17));
+    if (!mb || !ms || !s) {
+        printf("verify: out of memory\n");
+        return;
+    }
+    hol_navtab_build(&big, 17, mb, s);
+    hol_navtab_build(&small, 14, ms, s);
+    free(s);
+    int first = -1;
+    for (int k = 0; k <= 14 && first < 0; k++)
+        for (size_t q = 9 * (size_t)small.off[k]; q < 9 * (size_t)small.off[k + 1]; q++)
+            if (small.cost[q] != big.cost[q]) {
+                first = k;
+                break;
+            }
+    printf("\nverify: the radius-14 table equals a radius-17 table (%u tiles) up to "
+           "distance %d\n", big.count, first - 1);
+    printf("  dist  optimal  first5_on_optimal  extra\n");
+    for (int d = 13; d <= 15; d++) {
+        int n = 400, same = 0, p5 = 0;
+        long extra = 0;
+        for (int q = 0; q < n; q++) {
+            hol_room st = random_start();
+            hol_tile target = random_target(&st, d);
+            hol_nav_result r;
+            hol_nav_find(nav, &st, target, 0, walk, sizeof walk, &r);
+            hol_tile u;
+            int fac;
+            hol_tile_relative(target, 0, st.tile, &u, &fac);
+            int opt = hol_navtab_cost(&big, hol_navtab_rank(&big, u), (fac + st.orient) & 3,
+                                      st.col + 3 * st.row);
+            same += r.len == opt;
+            extra += r.len - opt;
+            hol_room r5 = st;
+            int k = r.len < 5 ? r.len : 5;
+            for (int i = 0; i < k; i++)
+                hol_room_step(&r5, walk[i]);
+            hol_tile_relative(target, 0, r5.tile, &u, &fac);
+            int rest = hol_navtab_cost(&big, hol_navtab_rank(&big, u), (fac + r5.orient) & 3,
+                                       r5.col + 3 * r5.row);
+            p5 += rest + k == opt;
+        }
+        printf("  %4d  %6.1f%%  %16.1f%%  %5.2f\n", d, 100.0 * same / n, 100.0 * p5 / n,
+               (double)extra / n);
+    }
+    free(mb);
+    free(ms);
+}
+
 static void bench_tours(hol_nav *nav, int dmax, const char *label)
 {
     static uint8_t walk[HOL_NAV_WALK_MAX];
@@ -222,6 +279,11 @@ int main(void)
     }
     bench_tours(nav, 3, "keys and chest at tile distance 1..3 from the start");
     bench_tours(nav, 5, "keys and chest at tile distance 1..5 from the start");
+    if (getenv("NAV_BENCH_VERIFY"))
+        bench_verify(nav);
+    else
+        printf("\n(NAV_BENCH_VERIFY=1 make bench adds a check of the anytime answers at "
+               "13..15 against a radius-17 table)\n");
     hol_nav_destroy(nav);
     return 0;
 }
