@@ -27,7 +27,8 @@ static const char *const render_usage =
     "                       [--gl osmesa|egl] [--stereo IPD] [--window]\n"
     "                       [--keys SCRIPT]\n"
     "\n"
-    "Render what the user sees, headless (OSMesa), and write a PNG.\n"
+    "Render what the user sees and write a PNG: headless (OSMesa, or EGL\n"
+    "surfaceless), or live in a window (--window).\n"
     "\n"
     "  --walk W        walk inside the room from the start (N, E, S, W; '-'\n"
     "                  for none, the default): sets the user's tile,\n"
@@ -64,7 +65,8 @@ static const char *const render_usage =
     "                  minimap marker, hot-cold colours\n"
     "\n"
     "Floor outside the 3 x 3 room is never shown: 2 m hedges stand on the\n"
-    "room boundary. At least one of --out, --tile-ids, --stats is needed.\n"
+    "room boundary. Without --window, at least one of --out, --tile-ids,\n"
+    "--stats is needed.\n"
     "Exit status: 0 ok, 1 render or write failure, 2 bad input.\n";
 
 static int parse_double(const char *s, double *out)
