@@ -26,6 +26,10 @@
 #include "../core/hol_nav_table.h"
 #include "../core/hol_room.h"
 #include "../core/hol_tile.h"
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wunused-function" /* model.h helpers not used here */
+#include "model.h"
+#pragma GCC diagnostic pop
 
 #ifndef FAR_BFS
 #define FAR_BFS 4
@@ -786,6 +790,43 @@ static void test_direction(void **state)
     }
 }
 
+/* Against the independent hyperboloid model (tests/model.h): the user's
+ * frame is the product of the carried room steps, the objective's frame the
+ * product along its address; the arrow is the angle of the objective's
+ * centre in the user's frame. Objectives up to 24 tiles away. */
+static void test_direction_model(void **state)
+{
+    (void)state;
+    double worst = 0;
+    for (int q = 0; q < 60; q++) {
+        hol_room u = hol_room_start();
+        model_mat mu = model_identity();
+        int n = (int)rnd(16);
+        for (int i = 0; i < n; i++) {
+            int d = (int)rnd(4);
+            if (hol_room_step(&u, d) == HOL_OK)
+                mu = model_step(mu, d);
+        }
+        int dist = 1 + (int)rnd(24);
+        hol_tile t = random_target(&u, dist);
+        int codes[HOL_TILE_MAX_DIST];
+        int len = hol_tile_dist0(t);
+        for (int i = 0; i < len; i++)
+            codes[i] = hol_tile_letter(t, i);
+        model_mat rel = model_mul(model_inv(mu), model_walk_letters(codes, len));
+        double x = rel.m[2], y = rel.m[5], w = rel.m[8];
+        double want = atan2(-x, y), want_dist = acosh(w);
+        double a, dd;
+        assert_int_equal(hol_nav_direction(&u, t, &a, &dd), HOL_OK);
+        double err = fabs(remainder(a - want, 2 * 3.14159265358979323846));
+        if (err > worst)
+            worst = err;
+        assert_true(err < 1e-6);
+        assert_true(fabs(dd - want_dist) < 1e-6 * (1 + want_dist));
+    }
+    print_message("direction vs hyperboloid model: worst angle error %.2e rad\n", worst);
+}
+
 /* ---- input lines ---- */
 
 static void test_parse(void **state)
@@ -833,6 +874,7 @@ int main(void)
         cmocka_unit_test(test_tour_budget),
         cmocka_unit_test(test_field),
         cmocka_unit_test(test_direction),
+        cmocka_unit_test(test_direction_model),
         cmocka_unit_test(test_parse),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
