@@ -346,6 +346,31 @@ static void test_biomes(void **state)
         kinds += used[b] > 0;
     assert_true(kinds >= 3);
     assert_true(same * 2 > pairs);
+    /* the rule: a fresh biome has depth 2..5; depth 0 or 1 can only come
+     * from a neighbour of the same biome with depth one more (nothing was
+     * evicted here, so that neighbour is in the store) */
+    int spread = 0;
+    for (uint32_t i = 0; i < w->cap; i++) {
+        const hol__entry *e = &w->entries[i];
+        if (!(e->flags & HOL__F_USED) || e->biome == HOL_BIOME_NONE)
+            continue;
+        assert_true(e->depth <= HOL__MAX_DEPTH);
+        if (e->depth >= 2)
+            continue;
+        int found = 0;
+        for (int d = 0; d < 4 && !found; d++) {
+            hol_tile nt;
+            if (hol_tile_step(e->tile, d, &nt, NULL))
+                continue;
+            int64_t j = hol__find(w, nt);
+            found = j >= 0 && w->entries[j].biome == e->biome &&
+                    w->entries[j].depth == e->depth + 1 &&
+                    w->entries[j].state != HOL__UNSET;
+        }
+        assert_true(found);
+        spread++;
+    }
+    assert_true(spread > 100);
     assert_check(w);
     hol_world_destroy(w);
 }
@@ -395,6 +420,36 @@ static void test_determinism(void **state)
 static void test_backtracking(void **state)
 {
     (void)state;
+    /* with rejections, tiles in the ball before a step are unchanged after */
+    hol_world *v = make_world(13, 1u << 14, 150);
+    hol_room room = hol_room_start();
+    assert_int_equal(hol_world_update(v, &room), HOL_OK);
+    uint64_t rng = 8;
+    static hol_tile before[128], after[128];
+    static hol_tile_content bc[128], ac[128];
+    size_t compared = 0;
+    for (int i = 0; i < 400; i++) {
+        size_t nb = ball(room.tile, 4, before, 128);
+        for (size_t k = 0; k < nb; k++)
+            assert_int_equal(hol_world_peek(v, before[k], &bc[k]), HOL_OK);
+        random_step(v, &room, &rng, 300);
+        size_t na = ball(room.tile, 4, after, 128);
+        for (size_t k = 0; k < na; k++) {
+            assert_int_equal(hol_world_peek(v, after[k], &ac[k]), HOL_OK);
+            for (size_t j = 0; j < nb; j++)
+                if (hol_tile_eq(before[j], after[k])) {
+                    assert_memory_equal(&bc[j], &ac[k], sizeof ac[k]);
+                    compared++;
+                }
+        }
+    }
+    hol_world_stats vs;
+    hol_world_get_stats(v, &vs);
+    assert_true(vs.backtracks > 50);
+    assert_true(compared > 400 * 40);
+    assert_check(v);
+    hol_world_destroy(v);
+
     hol_world *a = walk_world(11, 1500, 1u << 14, 100);
     hol_world *b = walk_world(11, 1500, 1u << 14, 100);
     hol_world_stats st;
