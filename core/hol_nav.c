@@ -808,7 +808,7 @@ static hol_err hol__tour_dp(hol_nav *nav, const hol_room *start, const hol__tour
     hol__rel from_start[HOL__NK], pair[HOL__NK][HOL__NK], to_chest[HOL__NK];
     for (int k = 0; k < nk; k++) {
         if (!hol__rel_of(nav, start->tile, t->keys[k], lt, &from_start[k]) ||
-            !hol__rel_of(nav, t->keys[k], t->chest, lt, &to_chest[k]))
+            !hol__rel_of(nav, t->keys[k], t->chest, nav->trust, &to_chest[k]))
             return HOL_ERANGE;
         for (int j = 0; j < nk; j++)
             if (j != k && !hol__rel_of(nav, t->keys[j], t->keys[k], lt, &pair[j][k]))

@@ -94,8 +94,9 @@ hol_err hol_nav_find(hol_nav *nav, const hol_room *start, hol_tile target,
 /* Keys and chest: the fewest steps from *start to stand on every key (in any
  * order; a key counts when the user stands on its tile) and after that on
  * the chest, and the walk. Up to HOL_NAV_TOUR_MAX_KEYS keys.
- * - Start, keys and chest pairwise within HOL_NAV_TOUR_EXACT_RADIUS tiles
- *   (start to chest excepted): exact, a dynamic program over key subsets x
+ * - Keys within HOL_NAV_TOUR_EXACT_RADIUS (7) tiles of each other and of
+ *   the start, the chest within the trusted radius (12) of every key:
+ *   exact, a dynamic program over key subsets x
  *   the 36 room states (orientation, cell) on each key, with exact
  *   state-to-state leg costs from a second table (built on the first tour
  *   call, about 0.15 s, memory reserved at create). budget is ignored.
