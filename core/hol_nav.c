@@ -26,7 +26,10 @@
  * (a lower bound beyond the table: the walk must cross the trusted
  * sphere), and C*(a, b), the least cost from any room state on a to b.
  * Nodes may be reopened, so the answer is exact once the search completes
- * within the budget; if not, keys nearest first with hol_nav_find legs.
+ * within the budget. The program run with legs up to the tables' radii
+ * (valid walks, not proved shortest) gives an upper bound that prunes the
+ * A* and is the answer if the budget runs out; without it, keys nearest
+ * first with hol_nav_find legs.
  */
 #include "hol_nav.h"
 
@@ -801,14 +804,18 @@ typedef struct hol__dp {
 } hol__dp;
 
 /* HOL_ERANGE when some tiles lie too far apart for the leg table. */
+/* lt: the farthest key-to-key (and start-to-key) distance allowed, ct: the
+ * farthest key-to-chest; within the trusted radii the result is exact,
+ * beyond (up to the tables' radii) the legs are walks that stay inside the
+ * tables, so the tour is valid but only an upper bound. */
 static hol_err hol__tour_dp(hol_nav *nav, const hol_room *start, const hol__tour *t,
-                            hol__walk *w, hol_nav_result *res)
+                            int lt, int ct, hol__walk *w, hol_nav_result *res)
 {
-    int nk = t->nkeys, lt = nav->leg_trust;
+    int nk = t->nkeys;
     hol__rel from_start[HOL__NK], pair[HOL__NK][HOL__NK], to_chest[HOL__NK];
     for (int k = 0; k < nk; k++) {
         if (!hol__rel_of(nav, start->tile, t->keys[k], lt, &from_start[k]) ||
-            !hol__rel_of(nav, t->keys[k], t->chest, nav->trust, &to_chest[k]))
+            !hol__rel_of(nav, t->keys[k], t->chest, ct, &to_chest[k]))
             return HOL_ERANGE;
         for (int j = 0; j < nk; j++)
             if (j != k && !hol__rel_of(nav, t->keys[j], t->keys[k], lt, &pair[j][k]))
@@ -941,7 +948,7 @@ hol_err hol_nav_tour(hol_nav *nav, const hol_room *start, const hol_tile *keys,
     if (nkeys == 0) {
         return hol_nav_find(nav, start, chest, budget, out_walk, cap, out_result);
     }
-    hol_err dperr = hol__tour_dp(nav, start, &t, &w, &res);
+    hol_err dperr = hol__tour_dp(nav, start, &t, nav->leg_trust, nav->trust, &w, &res);
     if (dperr != HOL_ERANGE) {
         if (dperr)
             return dperr;
@@ -949,8 +956,21 @@ hol_err hol_nav_tour(hol_nav *nav, const hol_room *start, const hol_tile *keys,
         *out_result = res;
         return HOL_OK;
     }
+    /* An upper bound: the same program with legs up to the tables' radii
+     * (walks inside the tables, not proved shortest). The A* below prunes
+     * with it; if the A* runs dry below it, this walk is the optimum. */
     w.n = 0;
     w.overflow = 0;
+    int ub = INT32_MAX;
+    dperr = hol__tour_dp(nav, start, &t, nav->leg_radius, nav->tab.radius, &w, &res);
+    if (dperr == HOL_OK)
+        ub = (int)w.n;
+    else if (dperr != HOL_ERANGE)
+        return dperr;
+    else
+        w.n = 0;
+    w.overflow = 0;
+    res.exact = 0;
 
     hol__reset(nav);
     hol__node root;
@@ -966,9 +986,19 @@ hol_err hol_nav_tour(hol_nav *nav, const hol_room *start, const hol_tile *keys,
     hol__push(nav, id);
     uint32_t goal = HOL__NIL;
     size_t expanded = 0;
-    int full_arena = 0;
-    while (expanded < budget && !full_arena && (id = hol__pop(nav)) != HOL__NIL) {
+    int full_arena = 0, dry = 0;
+    for (;;) {
+        if (expanded >= budget || full_arena)
+            break;
+        if ((id = hol__pop(nav)) == HOL__NIL) {
+            dry = 1;
+            break;
+        }
         hol__node cur = nav->nodes[id];
+        if ((int)cur.f >= ub) {
+            dry = 1; /* nothing left below the bound */
+            break;
+        }
         if ((cur.flags & HOL__MASK) == t.full && hol_tile_eq(cur.u.t, chest)) {
             goal = id;
             break;
@@ -1001,6 +1031,8 @@ hol_err hol_nav_tour(hol_nav *nav, const hol_room *start, const hol_tile *keys,
             q->dir = (uint8_t)d;
             int f = g + hol__tour_h(nav, &t, q);
             q->f = (uint16_t)(f < HOL__FMAX ? f : HOL__FMAX - 1);
+            if (f >= ub)
+                continue; /* cannot beat the upper bound */
             if (!hol__push(nav, nid)) {
                 full_arena = 1;
                 break;
@@ -1008,11 +1040,14 @@ hol_err hol_nav_tour(hol_nav *nav, const hol_room *start, const hol_tile *keys,
         }
     }
     res.nodes = expanded;
-    hol_err err;
+    hol_err err = HOL_OK;
     if (goal != HOL__NIL) {
+        w.n = 0;
         hol__emit_path(nav, goal, &w);
         res.exact = 1;
         err = w.overflow ? HOL_ENOMEM : HOL_OK;
+    } else if (ub != INT32_MAX) {
+        res.exact = dry; /* the bound's walk, proved optimal if A* ran dry */
     } else {
         err = hol__tour_greedy(nav, start, &t, budget, &w);
     }

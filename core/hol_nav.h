@@ -100,9 +100,13 @@ hol_err hol_nav_find(hol_nav *nav, const hol_room *start, hol_tile target,
  *   the 36 room states (orientation, cell) on each key, with exact
  *   state-to-state leg costs from a second table (built on the first tour
  *   call, about 0.15 s, memory reserved at create). budget is ignored.
- * - Otherwise: A* over room state x collected-key set with an admissible
- *   heuristic (exact if it finishes within budget, 0: arena capacity); if
- *   it runs out, keys nearest first with hol_nav_find legs (exact = 0).
+ * - Otherwise: the same program with legs up to the tables' radii (keys
+ *   within 10 tiles, the chest within 14) gives a valid tour, an upper
+ *   bound; then A* over room state x collected-key set with an admissible
+ *   heuristic, pruned by that bound, within budget (0: arena capacity). It
+ *   is exact when the A* reaches the chest or runs dry below the bound;
+ *   otherwise the bound's tour (exact = 0), or without one, keys nearest
+ *   first with hol_nav_find legs (exact = 0).
  * A key under the start counts as collected. nkeys = 0 is hol_nav_find.
  * Errors: as hol_nav_find; HOL_EARG for nkeys outside 0..5. */
 hol_err hol_nav_tour(hol_nav *nav, const hol_room *start, const hol_tile *keys,

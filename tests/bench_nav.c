@@ -192,7 +192,7 @@ static void bench_verify(hol_nav *nav)
     free(ms);
 }
 
-static void bench_tours(hol_nav *nav, int dmax, const char *label)
+static void bench_tours(hol_nav *nav, int dmax, size_t budget, const char *label)
 {
     static uint8_t walk[HOL_NAV_WALK_MAX];
     printf("\ntours: %s\n", label);
@@ -208,7 +208,7 @@ static void bench_tours(hol_nav *nav, int dmax, const char *label)
             chest = random_target(&s, 1 + (int)rnd((uint32_t)dmax));
             hol_nav_result res;
             double t0 = now_ms();
-            hol_nav_tour(nav, &s, keys, nk, chest, 0, walk, sizeof walk, &res);
+            hol_nav_tour(nav, &s, keys, nk, chest, budget, walk, sizeof walk, &res);
             t[q] = now_ms() - t0;
             nodes += (double)res.nodes;
             len += res.len;
@@ -277,8 +277,9 @@ int main(void)
         printf("\ntour leg table (state to state, radius 10, exact within %d): built "
                "on the first tour in %.0f ms\n", HOL_NAV_TOUR_EXACT_RADIUS, now_ms() - tl);
     }
-    bench_tours(nav, 3, "keys and chest at tile distance 1..3 from the start");
-    bench_tours(nav, 5, "keys and chest at tile distance 1..5 from the start");
+    bench_tours(nav, 3, 0, "keys and chest at tile distance 1..3 from the start");
+    bench_tours(nav, 5, 0, "keys and chest at tile distance 1..5 from the start");
+    bench_tours(nav, 7, 20000, "keys and chest at tile distance 1..7, --budget 20000");
     if (getenv("NAV_BENCH_VERIFY"))
         bench_verify(nav);
     else

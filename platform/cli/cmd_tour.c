@@ -21,12 +21,11 @@ static const char *const tour_usage =
     "Exact when the keys lie within 7 tiles of each other and of the start\n"
     "and the chest within 12 of every key (a dynamic program over key orders\n"
     "x room states on the keys); otherwise an A* search over room state x\n"
-    "collected keys, exact if it finishes within the node budget, else the\n"
-    "keys are visited nearest first and K is that walk's length (--stats\n"
-    "tells which).\n"
+    "collected keys, exact if it finishes within the node budget, else K is\n"
+    "the length of the best tour found (--stats tells which).\n"
     "\n"
     "  --budget N   node budget (default and maximum 262144)\n"
-    "  --stats      also print 'exact|greedy NODES' on stderr (0 nodes: the\n"
+    "  --stats      also print 'exact|best NODES' on stderr (0 nodes: the\n"
     "               dynamic program answered)\n"
     "  -h, --help   this text\n"
     "\n"
@@ -117,6 +116,6 @@ int cli_cmd_tour(int argc, char **argv)
     text[res.len] = '\0';
     printf("%d %s\n", res.len, res.len ? text : "-");
     if (stats)
-        fprintf(stderr, "%s %zu\n", res.exact ? "exact" : "greedy", res.nodes);
+        fprintf(stderr, "%s %zu\n", res.exact ? "exact" : "best", res.nodes);
     return cli_finish_output(cmd);
 }
