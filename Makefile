@@ -16,7 +16,7 @@ OPT     ?= -O2
 CSTD    := -std=c11
 WARN    := -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes -Wvla
 CFLAGS  ?=
-CFLAGS  += $(CSTD) $(WARN) $(OPT) -g -D_DEFAULT_SOURCE -MMD -MP
+override CFLAGS += $(CSTD) $(WARN) $(OPT) -g -D_DEFAULT_SOURCE -MMD -MP
 LDLIBS  += -lm
 FUZZ_CC ?= clang
 FUZZ_TIME ?= 60
