@@ -1,4 +1,6 @@
-/* hol_nav.c - fewest room steps, anytime search, tours, field, direction.
+/* hol_nav.c - the navigator (one block: tables and arena), the search
+ * arena, and the fewest room steps to a tile (hol_nav_find). Tours are in
+ * hol_nav_tour.c, the minimap's field and arrows in hol_nav_field.c.
  *
  * Near targets (tile distance <= the table's trusted radius, radius - 2)
  * are answered by descending the exact cost table: from the start, take a
@@ -18,65 +20,13 @@
  * bench can check). With nothing inside the table within the budget,
  * waypoints on the geodesic to the target chain exact legs. These answers
  * are flagged exact = 0.
- *
- * Tours: with start, keys and chest close together (the leg table's
- * trusted radius), a dynamic program over key subsets x room states on the
- * keys (see hol__tour_dp). Otherwise A* over room state x collected-key set
- * with an admissible heuristic (hol__tour_h) built from C, the table cost
- * (a lower bound beyond the table: the walk must cross the trusted
- * sphere), and C*(a, b), the least cost from any room state on a to b.
- * Nodes may be reopened, so the answer is exact once the search completes
- * within the budget. The program run with legs up to the tables' radii
- * (valid walks, not proved shortest) gives an upper bound that prunes the
- * A* and is the answer if the budget runs out; without it, keys nearest
- * first with hol_nav_find legs.
  */
 #include "hol_nav.h"
 
-#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "hol_hyper.h"
-#include "hol_nav_table.h"
-
-#define HOL__FMAX 8192
-#define HOL__LEG_RADIUS 10 /* tour legs exact between tiles within 7 */
-#define HOL__NIL UINT32_MAX
-#define HOL__INSIDE 0x80u
-#define HOL__MASK 0x3fu
-
-typedef struct hol__node {
-    union {
-        hol_tile t;   /* relative (nav, outside the table) or absolute (tour) */
-        uint32_t idx; /* table index (nav, inside the table) */
-    } u;
-    uint32_t parent, spare;
-    uint16_t g, f;
-    uint8_t o, cell, dir, flags; /* flags: HOL__INSIDE | key mask */
-} hol__node;
-
-struct hol_nav {
-    hol_navtab tab;
-    int trust;          /* table costs within it are exact */
-    int far_base16;     /* extrapolation: 16 x mean cost at trust */
-    int far_slope16;    /* 16 x mean cost per tile */
-    int margin;         /* anytime: explore f up to best + margin */
-    hol__node *nodes;
-    uint32_t cap, count;
-    uint32_t *hash; /* node index + 1; 0 empty */
-    uint32_t hash_mask;
-    uint32_t *bucket; /* HOL__FMAX heads of open-entry lists */
-    uint32_t *ent;    /* open entries: node id, next entry (pairs) */
-    uint32_t ent_cap, ent_n;
-    uint32_t fmin;
-    uint8_t *leg;       /* tour leg table (state to state), built lazily */
-    int leg_radius, leg_trust, leg_ready;
-    size_t bytes;
-    void *block;
-    void (*free_fn)(void *ptr, void *user);
-    void *user;
-};
+#include "hol_nav_impl.h"
 
 static void *hol__malloc(size_t size, void *user)
 {
@@ -180,7 +130,7 @@ int hol_nav_table_exact_radius(const hol_nav *nav) { return nav->trust; }
 
 /* ---- arena: nodes, hash of states, bucket queue on f ---- */
 
-static void hol__reset(hol_nav *nav)
+void hol__nav_reset(hol_nav *nav)
 {
     nav->count = 0;
     nav->ent_n = 0;
@@ -214,7 +164,7 @@ static int hol__node_same(const hol__node *a, const hol__node *b)
 
 /* Find the node equal to *n, or add it. *out_new tells which. HOL__NIL when
  * the arena is full. */
-static uint32_t hol__intern(hol_nav *nav, const hol__node *n, int *out_new)
+uint32_t hol__nav_intern(hol_nav *nav, const hol__node *n, int *out_new)
 {
     uint32_t h = (uint32_t)hol__node_hash(n) & nav->hash_mask;
     for (;;) {
@@ -237,7 +187,7 @@ static uint32_t hol__intern(hol_nav *nav, const hol__node *n, int *out_new)
 }
 
 /* Queue node id under its f; 0 when the entry pool is full. */
-static int hol__push(hol_nav *nav, uint32_t id)
+int hol__nav_push(hol_nav *nav, uint32_t id)
 {
     if (nav->ent_n >= nav->ent_cap)
         return 0;
@@ -252,7 +202,7 @@ static int hol__push(hol_nav *nav, uint32_t id)
 
 /* Pop the newest node of the lowest f; skips entries made stale by a
  * later improvement (the node's f no longer matches its bucket). */
-static uint32_t hol__pop(hol_nav *nav)
+uint32_t hol__nav_pop(hol_nav *nav)
 {
     while (nav->fmin < HOL__FMAX) {
         uint32_t e = nav->bucket[nav->fmin];
@@ -268,7 +218,7 @@ static uint32_t hol__pop(hol_nav *nav)
     return HOL__NIL;
 }
 
-static int hol__cell_step(int cell, int dir)
+int hol__nav_cell_step(int cell, int dir)
 {
     static const int8_t dc[4] = {0, -1, 0, 1}, dr[4] = {-1, 0, 1, 0};
     int c = cell % 3 + dc[dir], r = cell / 3 + dr[dir];
@@ -277,7 +227,7 @@ static int hol__cell_step(int cell, int dir)
     return c + 3 * r;
 }
 
-static int hol__room_ok(const hol_room *r)
+int hol__nav_room_ok(const hol_room *r)
 {
     return r && r->orient < 4 && r->col < 3 && r->row < 3 &&
            hol_tile_dist0(r->tile) <= HOL_TILE_MAX_DIST;
@@ -296,14 +246,8 @@ static hol_err hol__relate(const hol_room *user, hol_tile target, hol_tile *out_
     return HOL_OK;
 }
 
-/* Output buffer of a walk. */
-typedef struct hol__walk {
-    uint8_t *dirs;
-    size_t cap, n;
-    int overflow;
-} hol__walk;
 
-static void hol__emit(hol__walk *w, int dir)
+void hol__nav_emit(hol__walk *w, int dir)
 {
     if (w->n < w->cap)
         w->dirs[w->n++] = (uint8_t)dir;
@@ -313,14 +257,14 @@ static void hol__emit(hol__walk *w, int dir)
 
 /* Descend the table from (idx, o, cell) to cost 0; returns the steps taken
  * (the table cost) and updates the state. */
-static int hol__descend(const hol_navtab *tab, uint32_t idx, int o, int cell,
+int hol__nav_descend(const hol_navtab *tab, uint32_t idx, int o, int cell,
                         hol__walk *w)
 {
     int v = hol_navtab_cost(tab, idx, o, cell), steps = 0;
     while (v > 0 && v < 255) {
         int moved = 0;
         for (int d = 0; d < 4 && !moved; d++) {
-            int c2 = hol__cell_step(cell, d);
+            int c2 = hol__nav_cell_step(cell, d);
             if (c2 < 0)
                 continue;
             uint32_t e = tab->nb[4 * (size_t)idx + (size_t)((o + d) & 3)];
@@ -328,7 +272,7 @@ static int hol__descend(const hol_navtab *tab, uint32_t idx, int o, int cell,
                 continue;
             int o2 = (int)((e & 3u) - (uint32_t)d) & 3;
             if (hol_navtab_cost(tab, e >> 2, o2, c2) == v - 1) {
-                hol__emit(w, d);
+                hol__nav_emit(w, d);
                 idx = e >> 2;
                 o = o2;
                 cell = c2;
@@ -394,7 +338,7 @@ static hol_err hol__chain(hol_nav *nav, hol_room *room, hol_tile target,
         if (idx == HOL_NAVTAB_NONE)
             return HOL_EARG;
         size_t before = w->n;
-        hol__descend(&nav->tab, idx, o, room->col + 3 * room->row, w);
+        hol__nav_descend(&nav->tab, idx, o, room->col + 3 * room->row, w);
         if (w->overflow)
             return HOL_ENOMEM;
         for (size_t i = before; i < w->n; i++) {
@@ -407,11 +351,11 @@ static hol_err hol__chain(hol_nav *nav, hol_room *room, hol_tile target,
 }
 
 /* Path of room steps from the search root to node id, appended to w. */
-static void hol__emit_path(hol_nav *nav, uint32_t id, hol__walk *w)
+void hol__nav_emit_path(hol_nav *nav, uint32_t id, hol__walk *w)
 {
     size_t start = w->n;
     for (uint32_t x = id; nav->nodes[x].parent != HOL__NIL; x = nav->nodes[x].parent)
-        hol__emit(w, nav->nodes[x].dir);
+        hol__nav_emit(w, nav->nodes[x].dir);
     if (w->overflow)
         return;
     for (size_t i = start, j = w->n; i + 1 < j; i++, j--) {
@@ -425,7 +369,7 @@ static void hol__emit_path(hol_nav *nav, uint32_t id, hol__walk *w)
 static int hol__nav_succ(const hol_nav *nav, const hol__node *n, int d,
                          hol__node *out)
 {
-    int c2 = hol__cell_step(n->cell, d);
+    int c2 = hol__nav_cell_step(n->cell, d);
     if (c2 < 0)
         return 0;
     int turn = (n->o + d) & 3, arr;
@@ -477,7 +421,7 @@ static int hol__nav_h(const hol_nav *nav, const hol__node *n, int *out_cost)
 static hol_err hol__anytime(hol_nav *nav, const hol_room *start, hol_tile u, int o,
                             size_t budget, hol__walk *w, hol_nav_result *res)
 {
-    hol__reset(nav);
+    hol__nav_reset(nav);
     hol__node root;
     memset(&root, 0, sizeof root);
     uint32_t idx = hol_navtab_rank(&nav->tab, u);
@@ -493,8 +437,8 @@ static hol_err hol__anytime(hol_nav *nav, const hol_room *start, hol_tile u, int
     int v, isnew;
     int h = hol__nav_h(nav, &root, &v);
     root.f = (uint16_t)(h < HOL__FMAX ? h : HOL__FMAX - 1);
-    uint32_t rid = hol__intern(nav, &root, &isnew);
-    hol__push(nav, rid);
+    uint32_t rid = hol__nav_intern(nav, &root, &isnew);
+    hol__nav_push(nav, rid);
     uint32_t best = HOL__NIL;
     int best_cost = 1 << 20;
     if (v < 255) {
@@ -504,7 +448,7 @@ static hol_err hol__anytime(hol_nav *nav, const hol_room *start, hol_tile u, int
     size_t expanded = 0;
     uint32_t id;
     int full = 0;
-    while (!full && expanded < budget && (id = hol__pop(nav)) != HOL__NIL) {
+    while (!full && expanded < budget && (id = hol__nav_pop(nav)) != HOL__NIL) {
         hol__node cur = nav->nodes[id];
         if ((int)cur.f >= best_cost + nav->margin)
             break;
@@ -523,7 +467,7 @@ static hol_err hol__anytime(hol_nav *nav, const hol_room *start, hol_tile u, int
             int g = cur.g + 1;
             if (g >= HOL__FMAX / 2)
                 continue;
-            uint32_t nid = hol__intern(nav, &nx, &isnew);
+            uint32_t nid = hol__nav_intern(nav, &nx, &isnew);
             if (nid == HOL__NIL) {
                 full = 1; /* arena full: stop */
                 break;
@@ -542,7 +486,7 @@ static hol_err hol__anytime(hol_nav *nav, const hol_room *start, hol_tile u, int
                 best_cost = g + c;
                 best = nid;
             }
-            if (!hol__push(nav, nid)) {
+            if (!hol__nav_push(nav, nid)) {
                 full = 1;
                 break;
             }
@@ -550,9 +494,9 @@ static hol_err hol__anytime(hol_nav *nav, const hol_room *start, hol_tile u, int
     }
     res->nodes = expanded;
     if (best != HOL__NIL) {
-        hol__emit_path(nav, best, w);
+        hol__nav_emit_path(nav, best, w);
         const hol__node *b = &nav->nodes[best];
-        hol__descend(&nav->tab, b->u.idx, b->o, b->cell, w);
+        hol__nav_descend(&nav->tab, b->u.idx, b->o, b->cell, w);
         return w->overflow ? HOL_ENOMEM : HOL_OK;
     }
     return HOL_EBUDGET; /* nothing inside the table: caller chains */
@@ -562,7 +506,7 @@ hol_err hol_nav_find(hol_nav *nav, const hol_room *start, hol_tile target,
                      size_t budget, uint8_t *out_walk, size_t cap,
                      hol_nav_result *out_result)
 {
-    if (!nav || !hol__room_ok(start) || !out_walk || !out_result ||
+    if (!nav || !hol__nav_room_ok(start) || !out_walk || !out_result ||
         hol_tile_dist0(target) > HOL_TILE_MAX_DIST)
         return HOL_EARG;
     hol__walk w = {out_walk, cap, 0, 0};
@@ -576,7 +520,7 @@ hol_err hol_nav_find(hol_nav *nav, const hol_room *start, hol_tile target,
         err = hol__chain(nav, &room, target, &w);
     } else if (!err && hol_tile_dist0(u) <= nav->trust) {
         uint32_t idx = hol_navtab_rank(&nav->tab, u);
-        hol__descend(&nav->tab, idx, o, start->col + 3 * start->row, &w);
+        hol__nav_descend(&nav->tab, idx, o, start->col + 3 * start->row, &w);
         res.exact = 1;
         err = w.overflow ? HOL_ENOMEM : HOL_OK;
     } else if (!err) {
@@ -595,532 +539,5 @@ hol_err hol_nav_find(hol_nav *nav, const hol_room *start, hol_tile target,
         return err;
     res.len = (int)w.n;
     *out_result = res;
-    return HOL_OK;
-}
-
-/* ---- tours ---- */
-
-/* Lower bound (exact within the trusted radius) on the steps from room
- * state (tile, o, cell) to stand on target. */
-static int hol__lb(const hol_nav *nav, hol_tile tile, int o, int cell, hol_tile target)
-{
-    hol_tile u;
-    int facing;
-    if (hol_tile_relative(target, 0, tile, &u, &facing))
-        return nav->tab.min_at[nav->trust] + HOL_TILE_MAX_DIST - nav->trust;
-    int d = hol_tile_dist0(u);
-    if (d <= nav->trust)
-        return hol_navtab_cost(&nav->tab, hol_navtab_rank(&nav->tab, u),
-                               (facing + o) & 3, cell);
-    return nav->tab.min_at[nav->trust] + d - nav->trust;
-}
-
-/* Least cost from any room state on tile a to stand on b. */
-static int hol__lb_any(const hol_nav *nav, hol_tile a, hol_tile b)
-{
-    hol_tile u;
-    if (hol_tile_relative(b, 0, a, &u, NULL))
-        return nav->tab.min_at[nav->trust];
-    int d = hol_tile_dist0(u);
-    if (d <= nav->trust) {
-        uint32_t idx = hol_navtab_rank(&nav->tab, u);
-        int m = 255;
-        for (int c = 0; c < 9; c++)
-            if (nav->tab.cost[9 * (size_t)idx + (size_t)c] < m)
-                m = nav->tab.cost[9 * (size_t)idx + (size_t)c];
-        return m;
-    }
-    return nav->tab.min_at[nav->trust] + d - nav->trust;
-}
-
-typedef struct hol__tour {
-    const hol_tile *keys;
-    int nkeys;
-    hol_tile chest;
-    int key_chest[HOL_NAV_TOUR_MAX_KEYS];
-    /* mst[mask]: minimum spanning tree over the chest and the keys NOT in
-     * mask, edges the least cost between two tiles from any room state */
-    int mst[1 << HOL_NAV_TOUR_MAX_KEYS];
-    unsigned full;
-} hol__tour;
-
-static unsigned hol__keys_on(const hol__tour *t, hol_tile tile)
-{
-    unsigned m = 0;
-    for (int i = 0; i < t->nkeys; i++)
-        if (hol_tile_eq(t->keys[i], tile))
-            m |= 1u << i;
-    return m;
-}
-
-/* Admissible: the walk still has to reach every key left and then the
- * chest, so it costs at least (a) the cost to the chest, (b) for each key
- * left, the cost to it plus the least cost from it to the chest, and (c)
- * the cost to the nearest key left plus a spanning tree over the keys left
- * and the chest (the rest of the walk joins them all). */
-static int hol__tour_h(const hol_nav *nav, const hol__tour *t, const hol__node *n)
-{
-    int h = hol__lb(nav, n->u.t, n->o, n->cell, t->chest), nearest = INT32_MAX;
-    unsigned mask = n->flags & HOL__MASK;
-    for (int i = 0; i < t->nkeys; i++) {
-        if (mask & (1u << i))
-            continue;
-        int c = hol__lb(nav, n->u.t, n->o, n->cell, t->keys[i]);
-        if (c < nearest)
-            nearest = c;
-        if (c + t->key_chest[i] > h)
-            h = c + t->key_chest[i];
-    }
-    if (nearest != INT32_MAX && nearest + t->mst[mask] > h)
-        h = nearest + t->mst[mask];
-    return h;
-}
-
-/* Prim over the chest and the keys not in mask. */
-static int hol__tour_mst(const int w[HOL_NAV_TOUR_MAX_KEYS + 1][HOL_NAV_TOUR_MAX_KEYS + 1],
-                         int nkeys, unsigned mask)
-{
-    int in[HOL_NAV_TOUR_MAX_KEYS + 1] = {0}, best[HOL_NAV_TOUR_MAX_KEYS + 1];
-    int total = 0, chest = nkeys;
-    for (int i = 0; i <= nkeys; i++)
-        best[i] = w[chest][i];
-    in[chest] = 1;
-    for (;;) {
-        int pick = -1;
-        for (int i = 0; i < nkeys; i++)
-            if (!in[i] && !(mask & (1u << i)) && (pick < 0 || best[i] < best[pick]))
-                pick = i;
-        if (pick < 0)
-            return total;
-        in[pick] = 1;
-        total += best[pick];
-        for (int i = 0; i < nkeys; i++)
-            if (w[pick][i] < best[i])
-                best[i] = w[pick][i];
-    }
-}
-
-/* Greedy fallback: nearest key by tile distance, exact-or-anytime legs. */
-static hol_err hol__tour_greedy(hol_nav *nav, const hol_room *start,
-                                const hol__tour *t, size_t budget, hol__walk *w)
-{
-    hol_room room = *start;
-    unsigned mask = hol__keys_on(t, room.tile);
-    for (;;) {
-        hol_tile goal = t->chest;
-        if (mask != t->full) {
-            int bestd = INT32_MAX;
-            for (int i = 0; i < t->nkeys; i++) {
-                if (mask & (1u << i))
-                    continue;
-                int dd = hol_tile_dist(room.tile, t->keys[i]);
-                if (dd < bestd) {
-                    bestd = dd;
-                    goal = t->keys[i];
-                }
-            }
-        }
-        hol_nav_result r;
-        if (w->n >= w->cap)
-            return HOL_ENOMEM;
-        hol_err err = hol_nav_find(nav, &room, goal, budget, w->dirs + w->n,
-                                   w->cap - w->n, &r);
-        if (err)
-            return err;
-        for (int i = 0; i < r.len; i++) {
-            err = hol_room_step(&room, w->dirs[w->n + (size_t)i]);
-            if (err)
-                return err;
-            mask |= hol__keys_on(t, room.tile);
-        }
-        w->n += (size_t)r.len;
-        if (mask == t->full && hol_tile_eq(room.tile, t->chest))
-            return HOL_OK;
-    }
-}
-
-
-/* ---- exact tours by dynamic programming over room states at the keys ----
- *
- * F[mask][j][s]: fewest steps from the start to stand on key j in room
- * state s (orientation, cell: 36 states) having first visited the keys in
- * mask, j last. Legs between room states come from the leg table, exact
- * when the tiles lie within its trusted radius; the last leg to the chest
- * (any state) from the main table. The optimal walk visits the keys first
- * in some order; each leg between consecutive first visits costs at least
- * the state-to-state distance, so the minimum over the DP is the optimum,
- * and it is achieved by the concatenated legs. */
-
-typedef struct hol__rel {
-    uint32_t idx; /* tile index of the source seen from the destination */
-    int facing;   /* source heading in that frame */
-} hol__rel;
-
-static int hol__rel_of(const hol_nav *nav, hol_tile from, hol_tile to, int trust,
-                       hol__rel *out)
-{
-    hol_tile u;
-    if (hol_tile_relative(to, 0, from, &u, &out->facing) || hol_tile_dist0(u) > trust)
-        return 0;
-    out->idx = hol_navtab_rank(&nav->tab, u);
-    return 1;
-}
-
-/* Descend the leg table from (idx, o, cell) to the goal state (ob, cb). */
-static void hol__leg_descend(const hol_nav *nav, uint32_t idx, int o, int cell, int ob,
-                             int cb, hol__walk *w)
-{
-    uint32_t n = nav->tab.off[nav->leg_radius + 1];
-    int v = hol_navtab_leg(nav->leg, idx, o, cell, ob, cb);
-    while (v > 0 && v < 255) {
-        int moved = 0;
-        for (int d = 0; d < 4 && !moved; d++) {
-            int c2 = hol__cell_step(cell, d);
-            if (c2 < 0)
-                continue;
-            uint32_t e = nav->tab.nb[4 * (size_t)idx + (size_t)((o + d) & 3)];
-            if (e == HOL_NAVTAB_NONE || (e >> 2) >= n)
-                continue;
-            int o2 = (int)((e & 3u) - (uint32_t)d) & 3;
-            if (hol_navtab_leg(nav->leg, e >> 2, o2, c2, ob, cb) == v - 1) {
-                hol__emit(w, d);
-                idx = e >> 2;
-                o = o2;
-                cell = c2;
-                v--;
-                moved = 1;
-            }
-        }
-        if (!moved)
-            break;
-    }
-}
-
-#define HOL__NK HOL_NAV_TOUR_MAX_KEYS
-typedef struct hol__dp {
-    uint16_t cost[1 << HOL__NK][HOL__NK][36];
-    int8_t pj[1 << HOL__NK][HOL__NK][36]; /* previous key, -1: the start */
-    uint8_t ps[1 << HOL__NK][HOL__NK][36]; /* previous state */
-} hol__dp;
-
-/* HOL_ERANGE when some tiles lie too far apart for the leg table. */
-/* lt: the farthest key-to-key (and start-to-key) distance allowed, ct: the
- * farthest key-to-chest; within the trusted radii the result is exact,
- * beyond (up to the tables' radii) the legs are walks that stay inside the
- * tables, so the tour is valid but only an upper bound. */
-static hol_err hol__tour_dp(hol_nav *nav, const hol_room *start, const hol__tour *t,
-                            int lt, int ct, hol__walk *w, hol_nav_result *res)
-{
-    int nk = t->nkeys;
-    hol__rel from_start[HOL__NK], pair[HOL__NK][HOL__NK], to_chest[HOL__NK];
-    for (int k = 0; k < nk; k++) {
-        if (!hol__rel_of(nav, start->tile, t->keys[k], lt, &from_start[k]) ||
-            !hol__rel_of(nav, t->keys[k], t->chest, ct, &to_chest[k]))
-            return HOL_ERANGE;
-        for (int j = 0; j < nk; j++)
-            if (j != k && !hol__rel_of(nav, t->keys[j], t->keys[k], lt, &pair[j][k]))
-                return HOL_ERANGE;
-    }
-    if (!nav->leg_ready) {
-        hol_navtab_build_legs(&nav->tab, nav->leg_radius, nav->leg, nav->nodes);
-        nav->leg_ready = 1;
-    }
-    /* the table lives in the arena (nodes are not used by this path) */
-    hol__dp *dp = (hol__dp *)nav->nodes;
-    memset(dp->cost, 0xff, sizeof dp->cost);
-    int sc = start->col + 3 * start->row;
-    for (int k = 0; k < nk; k++)
-        for (int s = 0; s < 36; s++) {
-            const hol__rel *r = &from_start[k];
-            int v = hol_navtab_leg(nav->leg, r->idx, (r->facing + start->orient) & 3, sc,
-                                   s / 9, s % 9);
-            if (v < 255) {
-                dp->cost[1u << k][k][s] = (uint16_t)v;
-                dp->pj[1u << k][k][s] = -1;
-            }
-        }
-    for (unsigned m = 1; m < (1u << nk); m++)
-        for (int j = 0; j < nk; j++) {
-            if (!(m & (1u << j)))
-                continue;
-            for (int s = 0; s < 36; s++) {
-                int base = dp->cost[m][j][s];
-                if (base == 0xffff)
-                    continue;
-                for (int k = 0; k < nk; k++) {
-                    if (m & (1u << k))
-                        continue;
-                    unsigned m2 = m | (1u << k);
-                    const hol__rel *r = &pair[j][k];
-                    int o = (r->facing + s / 9) & 3;
-                    for (int s2 = 0; s2 < 36; s2++) {
-                        int v = hol_navtab_leg(nav->leg, r->idx, o, s % 9, s2 / 9, s2 % 9);
-                        if (v < 255 && base + v < dp->cost[m2][k][s2]) {
-                            dp->cost[m2][k][s2] = (uint16_t)(base + v);
-                            dp->pj[m2][k][s2] = (int8_t)j;
-                            dp->ps[m2][k][s2] = (uint8_t)s;
-                        }
-                    }
-                }
-            }
-        }
-    unsigned full = t->full;
-    int best = INT32_MAX, bj = -1, bs = -1;
-    for (int j = 0; j < nk; j++)
-        for (int s = 0; s < 36; s++) {
-            if (dp->cost[full][j][s] == 0xffff)
-                continue;
-            const hol__rel *r = &to_chest[j];
-            int v = hol_navtab_cost(&nav->tab, r->idx, (r->facing + s / 9) & 3, s % 9);
-            if (v < 255 && dp->cost[full][j][s] + v < best) {
-                best = dp->cost[full][j][s] + v;
-                bj = j;
-                bs = s;
-            }
-        }
-    if (bj < 0)
-        return HOL_ERANGE;
-    /* the order of first visits, back to front */
-    int oj[HOL__NK], os[HOL__NK], n = 0;
-    unsigned m = full;
-    for (int j = bj, s = bs; j >= 0;) {
-        oj[n] = j;
-        os[n] = s;
-        n++;
-        int pj = dp->pj[m][j][s], ps = dp->ps[m][j][s];
-        m &= ~(1u << j);
-        j = pj;
-        s = ps;
-    }
-    /* legs, front to back */
-    for (int i = n - 1; i >= 0; i--) {
-        int k = oj[i], s2 = os[i];
-        if (i == n - 1) {
-            const hol__rel *r = &from_start[k];
-            hol__leg_descend(nav, r->idx, (r->facing + start->orient) & 3, sc, s2 / 9,
-                             s2 % 9, w);
-        } else {
-            int j = oj[i + 1], s = os[i + 1];
-            const hol__rel *r = &pair[j][k];
-            hol__leg_descend(nav, r->idx, (r->facing + s / 9) & 3, s % 9, s2 / 9, s2 % 9, w);
-        }
-    }
-    const hol__rel *r = &to_chest[bj];
-    hol__descend(&nav->tab, r->idx, (r->facing + bs / 9) & 3, bs % 9, w);
-    if (w->overflow)
-        return HOL_ENOMEM;
-    res->exact = 1;
-    res->nodes = 0;
-    (void)best;
-    return HOL_OK;
-}
-
-hol_err hol_nav_tour(hol_nav *nav, const hol_room *start, const hol_tile *keys,
-                     int nkeys, hol_tile chest, size_t budget,
-                     uint8_t *out_walk, size_t cap, hol_nav_result *out_result)
-{
-    if (!nav || !hol__room_ok(start) || !out_walk || !out_result ||
-        nkeys < 0 || nkeys > HOL_NAV_TOUR_MAX_KEYS || (nkeys && !keys) ||
-        hol_tile_dist0(chest) > HOL_TILE_MAX_DIST)
-        return HOL_EARG;
-    for (int i = 0; i < nkeys; i++)
-        if (hol_tile_dist0(keys[i]) > HOL_TILE_MAX_DIST)
-            return HOL_EARG;
-    hol__tour t;
-    t.keys = keys;
-    t.nkeys = nkeys;
-    t.chest = chest;
-    t.full = (1u << nkeys) - 1;
-    int wt[HOL_NAV_TOUR_MAX_KEYS + 1][HOL_NAV_TOUR_MAX_KEYS + 1];
-    for (int i = 0; i <= nkeys; i++)
-        for (int j = 0; j <= nkeys; j++)
-            wt[i][j] = i == j ? 0
-                             : hol__lb_any(nav, i < nkeys ? keys[i] : chest,
-                                           j < nkeys ? keys[j] : chest);
-    for (int i = 0; i < nkeys; i++)
-        t.key_chest[i] = wt[i][nkeys];
-    for (unsigned m = 0; m < (1u << nkeys); m++)
-        t.mst[m] = hol__tour_mst((const int(*)[HOL_NAV_TOUR_MAX_KEYS + 1])wt, nkeys, m);
-    if (budget == 0 || budget > nav->cap)
-        budget = nav->cap;
-    hol__walk w = {out_walk, cap, 0, 0};
-    hol_nav_result res = {0, 0, 0};
-    if (nkeys == 0) {
-        return hol_nav_find(nav, start, chest, budget, out_walk, cap, out_result);
-    }
-    hol_err dperr = hol__tour_dp(nav, start, &t, nav->leg_trust, nav->trust, &w, &res);
-    if (dperr != HOL_ERANGE) {
-        if (dperr)
-            return dperr;
-        res.len = (int)w.n;
-        *out_result = res;
-        return HOL_OK;
-    }
-    /* An upper bound: the same program with legs up to the tables' radii
-     * (walks inside the tables, not proved shortest). The A* below prunes
-     * with it; if the A* runs dry below it, this walk is the optimum. */
-    w.n = 0;
-    w.overflow = 0;
-    int ub = INT32_MAX;
-    dperr = hol__tour_dp(nav, start, &t, nav->leg_radius, nav->tab.radius, &w, &res);
-    if (dperr == HOL_OK)
-        ub = (int)w.n;
-    else if (dperr != HOL_ERANGE)
-        return dperr;
-    else
-        w.n = 0;
-    w.overflow = 0;
-    res.exact = 0;
-
-    hol__reset(nav);
-    hol__node root;
-    memset(&root, 0, sizeof root);
-    root.u.t = start->tile;
-    root.o = start->orient;
-    root.cell = (uint8_t)(start->col + 3 * start->row);
-    root.flags = (uint8_t)hol__keys_on(&t, start->tile);
-    root.parent = HOL__NIL;
-    int h = hol__tour_h(nav, &t, &root), isnew;
-    root.f = (uint16_t)(h < HOL__FMAX ? h : HOL__FMAX - 1);
-    uint32_t id = hol__intern(nav, &root, &isnew);
-    hol__push(nav, id);
-    uint32_t goal = HOL__NIL;
-    size_t expanded = 0;
-    int full_arena = 0, dry = 0;
-    for (;;) {
-        if (expanded >= budget || full_arena)
-            break;
-        if ((id = hol__pop(nav)) == HOL__NIL) {
-            dry = 1;
-            break;
-        }
-        hol__node cur = nav->nodes[id];
-        if ((int)cur.f >= ub) {
-            dry = 1; /* nothing left below the bound */
-            break;
-        }
-        if ((cur.flags & HOL__MASK) == t.full && hol_tile_eq(cur.u.t, chest)) {
-            goal = id;
-            break;
-        }
-        expanded++;
-        for (int d = 0; d < 4; d++) {
-            int c2 = hol__cell_step(cur.cell, d), arr;
-            if (c2 < 0)
-                continue;
-            hol__node nx;
-            memset(&nx, 0, sizeof nx);
-            if (hol_tile_step(cur.u.t, cur.o + d, &nx.u.t, &arr))
-                continue;
-            nx.o = (uint8_t)((arr - d) & 3);
-            nx.cell = (uint8_t)c2;
-            nx.flags = (uint8_t)((cur.flags & HOL__MASK) | hol__keys_on(&t, nx.u.t));
-            int g = cur.g + 1;
-            if (g >= HOL__FMAX / 2)
-                continue;
-            uint32_t nid = hol__intern(nav, &nx, &isnew);
-            if (nid == HOL__NIL) {
-                full_arena = 1;
-                break;
-            }
-            hol__node *q = &nav->nodes[nid];
-            if (!isnew && q->g <= g)
-                continue;
-            q->g = (uint16_t)g;
-            q->parent = id;
-            q->dir = (uint8_t)d;
-            int f = g + hol__tour_h(nav, &t, q);
-            q->f = (uint16_t)(f < HOL__FMAX ? f : HOL__FMAX - 1);
-            if (f >= ub)
-                continue; /* cannot beat the upper bound */
-            if (!hol__push(nav, nid)) {
-                full_arena = 1;
-                break;
-            }
-        }
-    }
-    res.nodes = expanded;
-    hol_err err = HOL_OK;
-    if (goal != HOL__NIL) {
-        w.n = 0;
-        hol__emit_path(nav, goal, &w);
-        res.exact = 1;
-        err = w.overflow ? HOL_ENOMEM : HOL_OK;
-    } else if (ub != INT32_MAX) {
-        res.exact = dry; /* the bound's walk, proved optimal if A* ran dry */
-    } else {
-        err = hol__tour_greedy(nav, start, &t, budget, &w);
-    }
-    if (err)
-        return err;
-    res.len = (int)w.n;
-    *out_result = res;
-    return HOL_OK;
-}
-
-/* ---- hot-cold field and direction ---- */
-
-#define HOL__FIELD_MAX_RADIUS 8
-
-size_t hol_nav_field_count(int radius)
-{
-    if (radius < 0 || radius > HOL__FIELD_MAX_RADIUS)
-        return 0;
-    return hol_navtab_count(radius);
-}
-
-hol_err hol_nav_field(const hol_room *user, int radius, const hol_tile *objectives,
-                      size_t n, hol_nav_cell *out_cells, size_t cap,
-                      size_t *out_n)
-{
-    if (!hol__room_ok(user) || radius < 0 || radius > HOL__FIELD_MAX_RADIUS ||
-        (n && !objectives) || !out_cells || !out_n)
-        return HOL_EARG;
-    hol_navtab ix;
-    hol_navtab_init_index(&ix, radius);
-    if (cap < ix.count)
-        return HOL_ENOMEM;
-    for (uint32_t i = 0; i < ix.count; i++) {
-        hol_tile rel = hol_navtab_unrank(&ix, i);
-        int len = hol_tile_dist0(rel);
-        hol_flag f = {user->tile, user->orient};
-        for (int k = 0; k < len; k++) {
-            hol_err err = hol_flag_step(f, hol_tile_letter(rel, k), &f);
-            if (err)
-                return err;
-        }
-        hol_nav_cell *c = &out_cells[i];
-        c->tile = f.tile;
-        c->rel = rel;
-        c->user_dist = (int16_t)len;
-        c->hot = -1;
-        for (size_t j = 0; j < n; j++) {
-            int dd = hol_tile_dist(f.tile, objectives[j]);
-            if (dd >= 0 && (c->hot < 0 || dd < c->hot))
-                c->hot = (int16_t)(dd > INT16_MAX ? INT16_MAX : dd);
-        }
-    }
-    *out_n = ix.count;
-    return HOL_OK;
-}
-
-hol_err hol_nav_direction(const hol_room *user, hol_tile objective,
-                          double *out_angle, double *out_dist)
-{
-    if (!hol__room_ok(user) || hol_tile_dist0(objective) > HOL_TILE_MAX_DIST)
-        return HOL_EARG;
-    double angle, dist;
-    hol_err err = hol_hyper_pos(user->tile, user->orient, objective, NULL, &angle,
-                                &dist);
-    if (err)
-        return err;
-    if (hol_tile_eq(user->tile, objective)) {
-        angle = 0.0;
-        dist = 0.0;
-    }
-    if (out_angle)
-        *out_angle = angle;
-    if (out_dist)
-        *out_dist = dist;
     return HOL_OK;
 }

@@ -1,0 +1,474 @@
+/* hol_nav_tour.c - keys and chest: the fewest steps to stand on every key,
+ * then on the chest (hol_nav_tour; contract in hol_nav.h).
+ *
+ * With the keys close together, a dynamic program over key subsets x room
+ * states on the keys with exact state-to-state legs (hol__tour_dp).
+ * Otherwise the same program with untrusted legs gives an upper bound that
+ * prunes an A* over room state x collected keys (admissible heuristic
+ * hol__tour_h; nodes may be reopened), which is exact when it completes.
+ */
+#include "hol_nav.h"
+
+#include <string.h>
+
+#include "hol_nav_impl.h"
+
+/* ---- tours ---- */
+
+/* Lower bound (exact within the trusted radius) on the steps from room
+ * state (tile, o, cell) to stand on target. */
+static int hol__lb(const hol_nav *nav, hol_tile tile, int o, int cell, hol_tile target)
+{
+    hol_tile u;
+    int facing;
+    if (hol_tile_relative(target, 0, tile, &u, &facing))
+        return nav->tab.min_at[nav->trust] + HOL_TILE_MAX_DIST - nav->trust;
+    int d = hol_tile_dist0(u);
+    if (d <= nav->trust)
+        return hol_navtab_cost(&nav->tab, hol_navtab_rank(&nav->tab, u),
+                               (facing + o) & 3, cell);
+    return nav->tab.min_at[nav->trust] + d - nav->trust;
+}
+
+/* Least cost from any room state on tile a to stand on b. */
+static int hol__lb_any(const hol_nav *nav, hol_tile a, hol_tile b)
+{
+    hol_tile u;
+    if (hol_tile_relative(b, 0, a, &u, NULL))
+        return nav->tab.min_at[nav->trust];
+    int d = hol_tile_dist0(u);
+    if (d <= nav->trust) {
+        uint32_t idx = hol_navtab_rank(&nav->tab, u);
+        int m = 255;
+        for (int c = 0; c < 9; c++)
+            if (nav->tab.cost[9 * (size_t)idx + (size_t)c] < m)
+                m = nav->tab.cost[9 * (size_t)idx + (size_t)c];
+        return m;
+    }
+    return nav->tab.min_at[nav->trust] + d - nav->trust;
+}
+
+typedef struct hol__tour {
+    const hol_tile *keys;
+    int nkeys;
+    hol_tile chest;
+    int key_chest[HOL_NAV_TOUR_MAX_KEYS];
+    /* mst[mask]: minimum spanning tree over the chest and the keys NOT in
+     * mask, edges the least cost between two tiles from any room state */
+    int mst[1 << HOL_NAV_TOUR_MAX_KEYS];
+    unsigned full;
+} hol__tour;
+
+static unsigned hol__keys_on(const hol__tour *t, hol_tile tile)
+{
+    unsigned m = 0;
+    for (int i = 0; i < t->nkeys; i++)
+        if (hol_tile_eq(t->keys[i], tile))
+            m |= 1u << i;
+    return m;
+}
+
+/* Admissible: the walk still has to reach every key left and then the
+ * chest, so it costs at least (a) the cost to the chest, (b) for each key
+ * left, the cost to it plus the least cost from it to the chest, and (c)
+ * the cost to the nearest key left plus a spanning tree over the keys left
+ * and the chest (the rest of the walk joins them all). */
+static int hol__tour_h(const hol_nav *nav, const hol__tour *t, const hol__node *n)
+{
+    int h = hol__lb(nav, n->u.t, n->o, n->cell, t->chest), nearest = INT32_MAX;
+    unsigned mask = n->flags & HOL__MASK;
+    for (int i = 0; i < t->nkeys; i++) {
+        if (mask & (1u << i))
+            continue;
+        int c = hol__lb(nav, n->u.t, n->o, n->cell, t->keys[i]);
+        if (c < nearest)
+            nearest = c;
+        if (c + t->key_chest[i] > h)
+            h = c + t->key_chest[i];
+    }
+    if (nearest != INT32_MAX && nearest + t->mst[mask] > h)
+        h = nearest + t->mst[mask];
+    return h;
+}
+
+/* Prim over the chest and the keys not in mask. */
+static int hol__tour_mst(const int w[HOL_NAV_TOUR_MAX_KEYS + 1][HOL_NAV_TOUR_MAX_KEYS + 1],
+                         int nkeys, unsigned mask)
+{
+    int in[HOL_NAV_TOUR_MAX_KEYS + 1] = {0}, best[HOL_NAV_TOUR_MAX_KEYS + 1];
+    int total = 0, chest = nkeys;
+    for (int i = 0; i <= nkeys; i++)
+        best[i] = w[chest][i];
+    in[chest] = 1;
+    for (;;) {
+        int pick = -1;
+        for (int i = 0; i < nkeys; i++)
+            if (!in[i] && !(mask & (1u << i)) && (pick < 0 || best[i] < best[pick]))
+                pick = i;
+        if (pick < 0)
+            return total;
+        in[pick] = 1;
+        total += best[pick];
+        for (int i = 0; i < nkeys; i++)
+            if (w[pick][i] < best[i])
+                best[i] = w[pick][i];
+    }
+}
+
+/* Greedy fallback: nearest key by tile distance, exact-or-anytime legs. */
+static hol_err hol__tour_greedy(hol_nav *nav, const hol_room *start,
+                                const hol__tour *t, size_t budget, hol__walk *w)
+{
+    hol_room room = *start;
+    unsigned mask = hol__keys_on(t, room.tile);
+    for (;;) {
+        hol_tile goal = t->chest;
+        if (mask != t->full) {
+            int bestd = INT32_MAX;
+            for (int i = 0; i < t->nkeys; i++) {
+                if (mask & (1u << i))
+                    continue;
+                int dd = hol_tile_dist(room.tile, t->keys[i]);
+                if (dd < bestd) {
+                    bestd = dd;
+                    goal = t->keys[i];
+                }
+            }
+        }
+        hol_nav_result r;
+        if (w->n >= w->cap)
+            return HOL_ENOMEM;
+        hol_err err = hol_nav_find(nav, &room, goal, budget, w->dirs + w->n,
+                                   w->cap - w->n, &r);
+        if (err)
+            return err;
+        for (int i = 0; i < r.len; i++) {
+            err = hol_room_step(&room, w->dirs[w->n + (size_t)i]);
+            if (err)
+                return err;
+            mask |= hol__keys_on(t, room.tile);
+        }
+        w->n += (size_t)r.len;
+        if (mask == t->full && hol_tile_eq(room.tile, t->chest))
+            return HOL_OK;
+    }
+}
+
+
+/* ---- exact tours by dynamic programming over room states at the keys ----
+ *
+ * F[mask][j][s]: fewest steps from the start to stand on key j in room
+ * state s (orientation, cell: 36 states) having first visited the keys in
+ * mask, j last. Legs between room states come from the leg table, exact
+ * when the tiles lie within its trusted radius; the last leg to the chest
+ * (any state) from the main table. The optimal walk visits the keys first
+ * in some order; each leg between consecutive first visits costs at least
+ * the state-to-state distance, so the minimum over the DP is the optimum,
+ * and it is achieved by the concatenated legs. */
+
+typedef struct hol__rel {
+    uint32_t idx; /* tile index of the source seen from the destination */
+    int facing;   /* source heading in that frame */
+} hol__rel;
+
+static int hol__rel_of(const hol_nav *nav, hol_tile from, hol_tile to, int trust,
+                       hol__rel *out)
+{
+    hol_tile u;
+    if (hol_tile_relative(to, 0, from, &u, &out->facing) || hol_tile_dist0(u) > trust)
+        return 0;
+    out->idx = hol_navtab_rank(&nav->tab, u);
+    return 1;
+}
+
+/* Descend the leg table from (idx, o, cell) to the goal state (ob, cb). */
+static void hol__leg_descend(const hol_nav *nav, uint32_t idx, int o, int cell, int ob,
+                             int cb, hol__walk *w)
+{
+    uint32_t n = nav->tab.off[nav->leg_radius + 1];
+    int v = hol_navtab_leg(nav->leg, idx, o, cell, ob, cb);
+    while (v > 0 && v < 255) {
+        int moved = 0;
+        for (int d = 0; d < 4 && !moved; d++) {
+            int c2 = hol__nav_cell_step(cell, d);
+            if (c2 < 0)
+                continue;
+            uint32_t e = nav->tab.nb[4 * (size_t)idx + (size_t)((o + d) & 3)];
+            if (e == HOL_NAVTAB_NONE || (e >> 2) >= n)
+                continue;
+            int o2 = (int)((e & 3u) - (uint32_t)d) & 3;
+            if (hol_navtab_leg(nav->leg, e >> 2, o2, c2, ob, cb) == v - 1) {
+                hol__nav_emit(w, d);
+                idx = e >> 2;
+                o = o2;
+                cell = c2;
+                v--;
+                moved = 1;
+            }
+        }
+        if (!moved)
+            break;
+    }
+}
+
+#define HOL__NK HOL_NAV_TOUR_MAX_KEYS
+typedef struct hol__dp {
+    uint16_t cost[1 << HOL__NK][HOL__NK][36];
+    int8_t pj[1 << HOL__NK][HOL__NK][36]; /* previous key, -1: the start */
+    uint8_t ps[1 << HOL__NK][HOL__NK][36]; /* previous state */
+} hol__dp;
+
+/* HOL_ERANGE when some tiles lie too far apart for the leg table. */
+/* lt: the farthest key-to-key (and start-to-key) distance allowed, ct: the
+ * farthest key-to-chest; within the trusted radii the result is exact,
+ * beyond (up to the tables' radii) the legs are walks that stay inside the
+ * tables, so the tour is valid but only an upper bound. */
+static hol_err hol__tour_dp(hol_nav *nav, const hol_room *start, const hol__tour *t,
+                            int lt, int ct, hol__walk *w, hol_nav_result *res)
+{
+    int nk = t->nkeys;
+    hol__rel from_start[HOL__NK], pair[HOL__NK][HOL__NK], to_chest[HOL__NK];
+    for (int k = 0; k < nk; k++) {
+        if (!hol__rel_of(nav, start->tile, t->keys[k], lt, &from_start[k]) ||
+            !hol__rel_of(nav, t->keys[k], t->chest, ct, &to_chest[k]))
+            return HOL_ERANGE;
+        for (int j = 0; j < nk; j++)
+            if (j != k && !hol__rel_of(nav, t->keys[j], t->keys[k], lt, &pair[j][k]))
+                return HOL_ERANGE;
+    }
+    if (!nav->leg_ready) {
+        hol_navtab_build_legs(&nav->tab, nav->leg_radius, nav->leg, nav->nodes);
+        nav->leg_ready = 1;
+    }
+    /* the table lives in the arena (nodes are not used by this path) */
+    hol__dp *dp = (hol__dp *)nav->nodes;
+    memset(dp->cost, 0xff, sizeof dp->cost);
+    int sc = start->col + 3 * start->row;
+    for (int k = 0; k < nk; k++)
+        for (int s = 0; s < 36; s++) {
+            const hol__rel *r = &from_start[k];
+            int v = hol_navtab_leg(nav->leg, r->idx, (r->facing + start->orient) & 3, sc,
+                                   s / 9, s % 9);
+            if (v < 255) {
+                dp->cost[1u << k][k][s] = (uint16_t)v;
+                dp->pj[1u << k][k][s] = -1;
+            }
+        }
+    for (unsigned m = 1; m < (1u << nk); m++)
+        for (int j = 0; j < nk; j++) {
+            if (!(m & (1u << j)))
+                continue;
+            for (int s = 0; s < 36; s++) {
+                int base = dp->cost[m][j][s];
+                if (base == 0xffff)
+                    continue;
+                for (int k = 0; k < nk; k++) {
+                    if (m & (1u << k))
+                        continue;
+                    unsigned m2 = m | (1u << k);
+                    const hol__rel *r = &pair[j][k];
+                    int o = (r->facing + s / 9) & 3;
+                    for (int s2 = 0; s2 < 36; s2++) {
+                        int v = hol_navtab_leg(nav->leg, r->idx, o, s % 9, s2 / 9, s2 % 9);
+                        if (v < 255 && base + v < dp->cost[m2][k][s2]) {
+                            dp->cost[m2][k][s2] = (uint16_t)(base + v);
+                            dp->pj[m2][k][s2] = (int8_t)j;
+                            dp->ps[m2][k][s2] = (uint8_t)s;
+                        }
+                    }
+                }
+            }
+        }
+    unsigned full = t->full;
+    int best = INT32_MAX, bj = -1, bs = -1;
+    for (int j = 0; j < nk; j++)
+        for (int s = 0; s < 36; s++) {
+            if (dp->cost[full][j][s] == 0xffff)
+                continue;
+            const hol__rel *r = &to_chest[j];
+            int v = hol_navtab_cost(&nav->tab, r->idx, (r->facing + s / 9) & 3, s % 9);
+            if (v < 255 && dp->cost[full][j][s] + v < best) {
+                best = dp->cost[full][j][s] + v;
+                bj = j;
+                bs = s;
+            }
+        }
+    if (bj < 0)
+        return HOL_ERANGE;
+    /* the order of first visits, back to front */
+    int oj[HOL__NK], os[HOL__NK], n = 0;
+    unsigned m = full;
+    for (int j = bj, s = bs; j >= 0;) {
+        oj[n] = j;
+        os[n] = s;
+        n++;
+        int pj = dp->pj[m][j][s], ps = dp->ps[m][j][s];
+        m &= ~(1u << j);
+        j = pj;
+        s = ps;
+    }
+    /* legs, front to back */
+    for (int i = n - 1; i >= 0; i--) {
+        int k = oj[i], s2 = os[i];
+        if (i == n - 1) {
+            const hol__rel *r = &from_start[k];
+            hol__leg_descend(nav, r->idx, (r->facing + start->orient) & 3, sc, s2 / 9,
+                             s2 % 9, w);
+        } else {
+            int j = oj[i + 1], s = os[i + 1];
+            const hol__rel *r = &pair[j][k];
+            hol__leg_descend(nav, r->idx, (r->facing + s / 9) & 3, s % 9, s2 / 9, s2 % 9, w);
+        }
+    }
+    const hol__rel *r = &to_chest[bj];
+    hol__nav_descend(&nav->tab, r->idx, (r->facing + bs / 9) & 3, bs % 9, w);
+    if (w->overflow)
+        return HOL_ENOMEM;
+    res->exact = 1;
+    res->nodes = 0;
+    (void)best;
+    return HOL_OK;
+}
+
+hol_err hol_nav_tour(hol_nav *nav, const hol_room *start, const hol_tile *keys,
+                     int nkeys, hol_tile chest, size_t budget,
+                     uint8_t *out_walk, size_t cap, hol_nav_result *out_result)
+{
+    if (!nav || !hol__nav_room_ok(start) || !out_walk || !out_result ||
+        nkeys < 0 || nkeys > HOL_NAV_TOUR_MAX_KEYS || (nkeys && !keys) ||
+        hol_tile_dist0(chest) > HOL_TILE_MAX_DIST)
+        return HOL_EARG;
+    for (int i = 0; i < nkeys; i++)
+        if (hol_tile_dist0(keys[i]) > HOL_TILE_MAX_DIST)
+            return HOL_EARG;
+    hol__tour t;
+    t.keys = keys;
+    t.nkeys = nkeys;
+    t.chest = chest;
+    t.full = (1u << nkeys) - 1;
+    int wt[HOL_NAV_TOUR_MAX_KEYS + 1][HOL_NAV_TOUR_MAX_KEYS + 1];
+    for (int i = 0; i <= nkeys; i++)
+        for (int j = 0; j <= nkeys; j++)
+            wt[i][j] = i == j ? 0
+                             : hol__lb_any(nav, i < nkeys ? keys[i] : chest,
+                                           j < nkeys ? keys[j] : chest);
+    for (int i = 0; i < nkeys; i++)
+        t.key_chest[i] = wt[i][nkeys];
+    for (unsigned m = 0; m < (1u << nkeys); m++)
+        t.mst[m] = hol__tour_mst((const int(*)[HOL_NAV_TOUR_MAX_KEYS + 1])wt, nkeys, m);
+    if (budget == 0 || budget > nav->cap)
+        budget = nav->cap;
+    hol__walk w = {out_walk, cap, 0, 0};
+    hol_nav_result res = {0, 0, 0};
+    if (nkeys == 0) {
+        return hol_nav_find(nav, start, chest, budget, out_walk, cap, out_result);
+    }
+    hol_err dperr = hol__tour_dp(nav, start, &t, nav->leg_trust, nav->trust, &w, &res);
+    if (dperr != HOL_ERANGE) {
+        if (dperr)
+            return dperr;
+        res.len = (int)w.n;
+        *out_result = res;
+        return HOL_OK;
+    }
+    /* An upper bound: the same program with legs up to the tables' radii
+     * (walks inside the tables, not proved shortest). The A* below prunes
+     * with it; if the A* runs dry below it, this walk is the optimum. */
+    w.n = 0;
+    w.overflow = 0;
+    int ub = INT32_MAX;
+    dperr = hol__tour_dp(nav, start, &t, nav->leg_radius, nav->tab.radius, &w, &res);
+    if (dperr == HOL_OK)
+        ub = (int)w.n;
+    else if (dperr != HOL_ERANGE)
+        return dperr;
+    else
+        w.n = 0;
+    w.overflow = 0;
+    res.exact = 0;
+
+    hol__nav_reset(nav);
+    hol__node root;
+    memset(&root, 0, sizeof root);
+    root.u.t = start->tile;
+    root.o = start->orient;
+    root.cell = (uint8_t)(start->col + 3 * start->row);
+    root.flags = (uint8_t)hol__keys_on(&t, start->tile);
+    root.parent = HOL__NIL;
+    int h = hol__tour_h(nav, &t, &root), isnew;
+    root.f = (uint16_t)(h < HOL__FMAX ? h : HOL__FMAX - 1);
+    uint32_t id = hol__nav_intern(nav, &root, &isnew);
+    hol__nav_push(nav, id);
+    uint32_t goal = HOL__NIL;
+    size_t expanded = 0;
+    int full_arena = 0, dry = 0;
+    for (;;) {
+        if (expanded >= budget || full_arena)
+            break;
+        if ((id = hol__nav_pop(nav)) == HOL__NIL) {
+            dry = 1;
+            break;
+        }
+        hol__node cur = nav->nodes[id];
+        if ((int)cur.f >= ub) {
+            dry = 1; /* nothing left below the bound */
+            break;
+        }
+        if ((cur.flags & HOL__MASK) == t.full && hol_tile_eq(cur.u.t, chest)) {
+            goal = id;
+            break;
+        }
+        expanded++;
+        for (int d = 0; d < 4; d++) {
+            int c2 = hol__nav_cell_step(cur.cell, d), arr;
+            if (c2 < 0)
+                continue;
+            hol__node nx;
+            memset(&nx, 0, sizeof nx);
+            if (hol_tile_step(cur.u.t, cur.o + d, &nx.u.t, &arr))
+                continue;
+            nx.o = (uint8_t)((arr - d) & 3);
+            nx.cell = (uint8_t)c2;
+            nx.flags = (uint8_t)((cur.flags & HOL__MASK) | hol__keys_on(&t, nx.u.t));
+            int g = cur.g + 1;
+            if (g >= HOL__FMAX / 2)
+                continue;
+            uint32_t nid = hol__nav_intern(nav, &nx, &isnew);
+            if (nid == HOL__NIL) {
+                full_arena = 1;
+                break;
+            }
+            hol__node *q = &nav->nodes[nid];
+            if (!isnew && q->g <= g)
+                continue;
+            q->g = (uint16_t)g;
+            q->parent = id;
+            q->dir = (uint8_t)d;
+            int f = g + hol__tour_h(nav, &t, q);
+            q->f = (uint16_t)(f < HOL__FMAX ? f : HOL__FMAX - 1);
+            if (f >= ub)
+                continue; /* cannot beat the upper bound */
+            if (!hol__nav_push(nav, nid)) {
+                full_arena = 1;
+                break;
+            }
+        }
+    }
+    res.nodes = expanded;
+    hol_err err = HOL_OK;
+    if (goal != HOL__NIL) {
+        w.n = 0;
+        hol__nav_emit_path(nav, goal, &w);
+        res.exact = 1;
+        err = w.overflow ? HOL_ENOMEM : HOL_OK;
+    } else if (ub != INT32_MAX) {
+        res.exact = dry; /* the bound's walk, proved optimal if A* ran dry */
+    } else {
+        err = hol__tour_greedy(nav, start, &t, budget, &w);
+    }
+    if (err)
+        return err;
+    res.len = (int)w.n;
+    *out_result = res;
+    return HOL_OK;
+}
