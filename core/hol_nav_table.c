@@ -41,42 +41,23 @@
 
 #include <string.h>
 
-#define HOL__SINK 6
-/* The canonical-address automaton of hol_tile.c (letters f 0, l 1, r 3). */
-static const uint8_t hol__dfa[7][4] = {
-    {0, 2, HOL__SINK, 1},
-    {3, 2, HOL__SINK, HOL__SINK},
-    {4, HOL__SINK, HOL__SINK, 1},
-    {0, 2, HOL__SINK, 5},
-    {0, HOL__SINK, HOL__SINK, 1},
-    {1, 2, HOL__SINK, HOL__SINK},
-    {HOL__SINK, HOL__SINK, HOL__SINK, HOL__SINK},
-};
-
-static int hol__tlen(hol_tile t) { return (int)(t.bits[1] >> 58); }
-
-static int hol__tget(hol_tile t, int i)
+static void hol__counts(uint32_t cnt[HOL_TILE_STATES][HOL_NAVTAB_MAX_RADIUS + 1], int r)
 {
-    return (int)((t.bits[i >> 5] >> (2 * (i & 31))) & 3u);
-}
-
-static void hol__counts(uint32_t cnt[6][HOL_NAVTAB_MAX_RADIUS + 1], int r)
-{
-    for (int s = 0; s < 6; s++)
+    for (int s = 0; s < HOL_TILE_STATES; s++)
         cnt[s][0] = 1;
     for (int k = 1; k <= r; k++)
-        for (int s = 0; s < 6; s++) {
+        for (int s = 0; s < HOL_TILE_STATES; s++) {
             uint32_t n = 0;
             for (int c = 0; c < 4; c++)
-                if (hol__dfa[s][c] != HOL__SINK)
-                    n += cnt[hol__dfa[s][c]][k - 1];
+                if (hol_tile_automaton(s, c) >= 0)
+                    n += cnt[hol_tile_automaton(s, c)][k - 1];
             cnt[s][k] = n;
         }
 }
 
 uint32_t hol_navtab_count(int radius)
 {
-    uint32_t cnt[6][HOL_NAVTAB_MAX_RADIUS + 1];
+    uint32_t cnt[HOL_TILE_STATES][HOL_NAVTAB_MAX_RADIUS + 1];
     if (radius < 0 || radius > HOL_NAVTAB_MAX_RADIUS)
         return 0;
     hol__counts(cnt, radius);
@@ -111,19 +92,19 @@ int hol_navtab_rot_cell(int o, int cell)
 
 uint32_t hol_navtab_rank(const hol_navtab *tab, hol_tile t)
 {
-    int n = hol__tlen(t);
+    int n = hol_tile_dist0(t);
     if (n > tab->radius)
         return HOL_NAVTAB_NONE;
     if (n == 0)
         return 0;
-    uint32_t r = tab->off[n] + (uint32_t)hol__tget(t, 0) * tab->cnt[0][n - 1];
+    uint32_t r = tab->off[n] + (uint32_t)hol_tile_letter(t, 0) * tab->cnt[0][n - 1];
     int s = 0;
     for (int i = 1; i < n; i++) {
-        int c = hol__tget(t, i);
+        int c = hol_tile_letter(t, i);
         for (int c2 = 0; c2 < c; c2++)
-            if (hol__dfa[s][c2] != HOL__SINK)
-                r += tab->cnt[hol__dfa[s][c2]][n - 1 - i];
-        s = hol__dfa[s][c];
+            if (tab->next[s][c2] >= 0)
+                r += tab->cnt[tab->next[s][c2]][n - 1 - i];
+        s = tab->next[s][c];
     }
     return r;
 }
@@ -145,22 +126,21 @@ hol_tile hol_navtab_unrank(const hol_navtab *tab, uint32_t idx)
     uint32_t r = idx - tab->off[n];
     int b = (int)(r / tab->cnt[0][n - 1]);
     r -= (uint32_t)b * tab->cnt[0][n - 1];
-    t.bits[0] = (uint64_t)b;
+    hol_tile_child(t, b, &t);
     int s = 0;
     for (int i = 1; i < n; i++) {
         int c = 0;
         for (;; c++) {
-            if (hol__dfa[s][c] == HOL__SINK)
+            if (tab->next[s][c] < 0)
                 continue;
-            uint32_t k = tab->cnt[hol__dfa[s][c]][n - 1 - i];
+            uint32_t k = tab->cnt[tab->next[s][c]][n - 1 - i];
             if (r < k)
                 break;
             r -= k;
         }
-        t.bits[i >> 5] |= (uint64_t)c << (2 * (i & 31));
-        s = hol__dfa[s][c];
+        hol_tile_child(t, c, &t);
+        s = tab->next[s][c];
     }
-    t.bits[1] |= (uint64_t)n << 58;
     return t;
 }
 
@@ -170,6 +150,9 @@ hol_err hol_navtab_init_index(hol_navtab *tab, int radius)
         return HOL_EARG;
     memset(tab, 0, sizeof *tab);
     tab->radius = radius;
+    for (int st = 0; st < HOL_TILE_STATES; st++)
+        for (int c = 0; c < 4; c++)
+            tab->next[st][c] = (int8_t)hol_tile_automaton(st, c);
     hol__counts(tab->cnt, radius);
     tab->off[0] = 0;
     tab->off[1] = 1;

@@ -34,7 +34,8 @@ typedef struct hol_navtab {
     int radius;
     uint32_t count;                        /* tiles within the radius */
     uint32_t off[HOL_NAVTAB_MAX_RADIUS + 2];  /* first index of each length */
-    uint32_t cnt[6][HOL_NAVTAB_MAX_RADIUS + 1]; /* suffix counts per state */
+    uint32_t cnt[HOL_TILE_STATES][HOL_NAVTAB_MAX_RADIUS + 1]; /* suffix counts per state */
+    int8_t next[HOL_TILE_STATES][4]; /* hol_tile_automaton, cached */
     uint32_t *nb;   /* 4 * count */
     uint8_t *cost;  /* 9 * count */
     int min_at_radius; /* least cost over states at exactly `radius` */

@@ -264,17 +264,24 @@ hol_tile hol_tile_parent(hol_tile t)
     return hol__narrow(&w);
 }
 
+/* Append letter code c to a tile short of the reach. */
+static hol_tile hol__tile_push(hol_tile t, int n, int c)
+{
+    t.bits[n >> 5] |= (uint64_t)c << (2 * (n & 31));
+    t.bits[1] += UINT64_C(1) << 58;
+    return t;
+}
+
 hol_err hol_tile_child(hol_tile t, int letter, hol_tile *out_tile)
 {
-    hol__word w = hol__widen(t);
-    if (letter < 0 || letter > 3 || w.len > HOL_TILE_MAX_DIST)
+    int n = hol__len(t);
+    if (letter < 0 || letter > 3 || n > HOL_TILE_MAX_DIST)
         return HOL_EARG;
-    if (w.len > 0 && hol__dfa[hol__state(&w)][letter] == HOL__SINK)
+    if (n > 0 && hol__dfa[hol__state_of(t.bits, n)][letter] == HOL__SINK)
         return HOL_ENOTCANON;
-    if (w.len == HOL_TILE_MAX_DIST)
+    if (n == HOL_TILE_MAX_DIST)
         return HOL_ERANGE;
-    hol__push(&w, letter);
-    *out_tile = hol__narrow(&w);
+    *out_tile = hol__tile_push(t, n, letter);
     return HOL_OK;
 }
 
@@ -329,9 +336,7 @@ hol_err hol_tile_step(hol_tile t, int turn, hol_tile *out_tile, int *out_arrive)
     /* fast path: a child of a tile short of the reach */
     if (n > 0 && n < HOL_TILE_MAX_DIST && turn != HOL_TURN_B &&
         hol__dfa[hol__state_of(t.bits, n)][turn] != HOL__SINK) {
-        t.bits[n >> 5] |= (uint64_t)turn << (2 * (n & 31));
-        t.bits[1] += UINT64_C(1) << 58;
-        *out_tile = t;
+        *out_tile = hol__tile_push(t, n, turn);
         if (out_arrive)
             *out_arrive = 0;
         return HOL_OK;
