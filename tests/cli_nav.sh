@@ -3,33 +3,8 @@
 # stay in the room and end on the target (checked with `holonomy tile walk`
 # and a room simulation in awk), the exit status contract of SPEC section 4.
 # $HOLONOMY is the binary under test.
-set -u
-H=${HOLONOMY:-build/holonomy}
-T=$(mktemp -d)
-trap 'rm -rf "$T"' EXIT
-fails=0 passes=0
-ok() { passes=$((passes + 1)); }
-bad() { fails=$((fails + 1)); echo "FAIL: $*"; }
+. "$(dirname "$0")/lib.sh"
 
-# expect NAME STATUS STDOUT (stdin from $T/in)
-expect() {
-  name=$1 want_status=$2 want_out=$3; shift 3
-  "$@" <"$T/in" >"$T/out" 2>"$T/err"; st=$?
-  printf '%s' "$want_out" >"$T/want"
-  if [ "$st" != "$want_status" ]; then bad "$name: status $st, want $want_status"; return; fi
-  if ! cmp -s "$T/out" "$T/want"; then bad "$name: stdout differs"; diff "$T/want" "$T/out" | head -5; return; fi
-  ok
-}
-# status only (stdin from $T/in)
-expect_status() {
-  name=$1 want_status=$2; shift 2
-  "$@" <"$T/in" >"$T/out" 2>"$T/err"; st=$?
-  if [ "$st" != "$want_status" ]; then bad "$name: status $st, want $want_status"; else ok; fi
-}
-err_line() {
-  if [ "$(wc -l <"$T/err")" -ne 1 ] || ! grep -q -- "$1" "$T/err"; then
-    bad "stderr should be one line with '$1', got: $(cat "$T/err")"; else ok; fi
-}
 # in_room WALK: the walk (letters N/E/S/W, '-' none) stays in the room from (1,1)
 in_room() {
   printf '%s\n' "$1" | awk '{ c = 1; r = 1; s = $0; if (s == "-") s = "";
@@ -160,5 +135,4 @@ expect_status "tour missing chest" 2 "$H" tour -
 expect_status "tour help" 0 "$H" tour --help
 grep -q "PREFIX KEY... CHEST" "$T/out" && ok || bad "tour --help text"
 
-echo "cli_nav: $passes passed, $fails failed"
-[ "$fails" = 0 ]
+finish cli_nav

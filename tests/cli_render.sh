@@ -1,9 +1,6 @@
 #!/bin/sh
 # cli_render.sh - `holonomy render`: usage errors, outputs, atomic writes.
-set -u
-H=${HOLONOMY:-build/holonomy}
-T=$(mktemp -d)
-trap 'rm -rf "$T"' EXIT
+. "$(dirname "$0")/lib.sh"
 fail() { echo "FAIL: $*"; exit 1; }
 
 # expect_usage ARGS...: exit 2, exactly one line on stderr, nothing on stdout

@@ -3,26 +3,8 @@
 # atomic --save, --load (round trip, continuing walks), bad files and bad
 # usage (exit 2, one line on stderr, files untouched). $HOLONOMY is the
 # binary under test.
-set -u
-H=${HOLONOMY:-build/holonomy}
-T=$(mktemp -d)
-trap 'rm -rf "$T"' EXIT
-fails=0 passes=0
-ok() { passes=$((passes + 1)); }
-bad() { fails=$((fails + 1)); echo "FAIL: $*"; }
+. "$(dirname "$0")/lib.sh"
 
-# run NAME WANT-STATUS CMD...: stdout in $T/out, stderr in $T/err
-run() {
-  name=$1 want=$2; shift 2
-  "$@" >"$T/out" 2>"$T/err"; st=$?
-  if [ "$st" != "$want" ]; then bad "$name: status $st, want $want ($(head -c 200 "$T/err"))"; return 1; fi
-  ok
-}
-# stderr is exactly one line mentioning $2
-one_line() {
-  if [ "$(wc -l <"$T/err")" -ne 1 ] || ! grep -q -- "$2" "$T/err"; then
-    bad "$1: stderr should be one line with '$2', got: $(cat "$T/err")"; else ok; fi
-}
 same() { if cmp -s "$2" "$3"; then ok; else bad "$1: $2 and $3 differ"; fi; }
 lines() { n=$(wc -l <"$T/out"); if [ "$n" -eq "$2" ]; then ok; else bad "$1: $n lines, want $2"; fi; }
 
@@ -148,5 +130,4 @@ one_line "seed and load" "exclude"
 run "missing value" 2 "$H" world --walk
 one_line "missing value" "needs a value"
 
-echo "cli_world: $passes passed, $fails failed"
-[ "$fails" -eq 0 ]
+finish cli_world

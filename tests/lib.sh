@@ -41,6 +41,12 @@ err_line() {
     bad "stderr should be one line with '$1', got: $(cat "$T/err")"; else ok; fi
 }
 
+# one_line NAME TEXT: the last stderr is exactly one line mentioning TEXT
+one_line() {
+  if [ "$(wc -l <"$T/err")" -ne 1 ] || ! grep -q -- "$2" "$T/err"; then
+    bad "$1: stderr should be one line with '$2', got: $(cat "$T/err")"; else ok; fi
+}
+
 finish() {
   echo "$1: $passes passed, $fails failed"
   [ "$fails" = 0 ]
