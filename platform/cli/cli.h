@@ -39,6 +39,9 @@ int cli_lines_next(cli_lines *l, char **out_s, size_t *out_len);
 typedef int (*cli_line_fn)(void *ctx, long lineno, char *s, size_t len);
 int cli_for_each_line(const char *cmd, cli_line_fn fn, void *ctx);
 
+/* A positive decimal count (no sign, at most 2^40); 0 on failure. */
+size_t cli_parse_count(const char *s);
+
 /* Strip spaces and tabs at both ends. */
 void cli_trim(char **s, size_t *len);
 

@@ -122,3 +122,15 @@ void cli_trim(char **s, size_t *len)
     while (*len > 0 && ((*s)[*len - 1] == ' ' || (*s)[*len - 1] == '\t'))
         (*len)--;
 }
+
+size_t cli_parse_count(const char *s)
+{
+    if (!s || !*s || *s == '-' || *s == '+')
+        return 0;
+    char *end;
+    errno = 0;
+    unsigned long long v = strtoull(s, &end, 10);
+    if (errno || *end || v == 0 || v > (1ull << 40))
+        return 0;
+    return (size_t)v;
+}

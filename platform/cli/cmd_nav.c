@@ -32,19 +32,6 @@ static const char *const nav_usage =
     "Exit status: 0 ok, 1 output or memory failure, 2 bad input or usage\n"
     "(one line on stderr naming the input line; nothing printed for it).\n";
 
-/* Parse a positive decimal count; 0 on failure. */
-static size_t parse_count(const char *s)
-{
-    if (!s || !*s || *s == '-' || *s == '+')
-        return 0;
-    char *end;
-    errno = 0;
-    unsigned long long v = strtoull(s, &end, 10);
-    if (errno || *end || v == 0 || v > (1ull << 40))
-        return 0;
-    return (size_t)v;
-}
-
 typedef struct nav_ctx {
     hol_nav *nav;
     size_t budget;
@@ -91,13 +78,13 @@ int cli_cmd_nav(int argc, char **argv)
         if (!strcmp(argv[i], "--stats")) {
             stats = 1;
         } else if (!strcmp(argv[i], "--budget")) {
-            if (i + 1 >= argc || !(budget = parse_count(argv[i + 1]))) {
+            if (i + 1 >= argc || !(budget = cli_parse_count(argv[i + 1]))) {
                 cli_error(cmd, 0, "--budget needs a positive node count; see --help");
                 return CLI_EXIT_USAGE;
             }
             i++;
         } else if (!strncmp(argv[i], "--budget=", 9)) {
-            if (!(budget = parse_count(argv[i] + 9))) {
+            if (!(budget = cli_parse_count(argv[i] + 9))) {
                 cli_error(cmd, 0, "--budget needs a positive node count; see --help");
                 return CLI_EXIT_USAGE;
             }

@@ -31,18 +31,6 @@ static const char *const tour_usage =
     "\n"
     "Exit status: 0 ok, 1 output or memory failure, 2 bad arguments.\n";
 
-static size_t parse_count(const char *s)
-{
-    if (!s || !*s || *s == '-' || *s == '+')
-        return 0;
-    char *end;
-    errno = 0;
-    unsigned long long v = strtoull(s, &end, 10);
-    if (errno || *end || v == 0 || v > (1ull << 40))
-        return 0;
-    return (size_t)v;
-}
-
 int cli_cmd_tour(int argc, char **argv)
 {
     const char *cmd = "tour";
@@ -58,7 +46,7 @@ int cli_cmd_tour(int argc, char **argv)
         const char *a = argv[i];
         if (!strcmp(a, "--budget") || !strncmp(a, "--budget=", 9)) {
             const char *v = a[8] == '=' ? a + 9 : (i + 1 < argc ? argv[++i] : NULL);
-            if (!(budget = parse_count(v))) {
+            if (!(budget = cli_parse_count(v))) {
                 cli_error(cmd, 0, "--budget needs a positive node count; see --help");
                 return CLI_EXIT_USAGE;
             }
