@@ -24,6 +24,8 @@ FUZZ_TIME ?= 60
 CORE_SRC := $(wildcard core/*.c)
 RENDER_SRC := $(wildcard render/*.c)
 CLI_SRC  := $(wildcard platform/cli/*.c)
+# Desktop platform services (files) shared by the tool, render tests, benches.
+PLAT_SRC := $(wildcard platform/file/*.c)
 # tests/test_*.c: cmocka suites on the core (also run under sanitizers);
 # tests/test_render*.c: suites that also link the renderer and GL.
 RENDER_TEST_SRC := $(wildcard tests/test_render*.c)
@@ -37,7 +39,8 @@ BENCH_SRC := $(filter-out $(BENCH_RENDER_SRC),$(wildcard tests/bench_*.c))
 FUZZ_SRC := $(wildcard fuzz/fuzz_*.c)
 
 CORE_OBJ := $(CORE_SRC:%.c=$(BUILD)/%.o)
-CLI_OBJ  := $(CLI_SRC:%.c=$(BUILD)/%.o)
+CLI_OBJ  := $(CLI_SRC:%.c=$(BUILD)/%.o) $(PLAT_SRC:%.c=$(BUILD)/%.o)
+PLAT_OBJ := $(PLAT_SRC:%.c=$(BUILD)/%.o)
 CORE_LIB := $(BUILD)/libholcore.a
 RENDER_OBJ := $(RENDER_SRC:%.c=$(BUILD)/%.o)
 RENDER_LIB := $(if $(RENDER_SRC),$(BUILD)/libholrender.a)
@@ -72,17 +75,17 @@ $(RENDER_LIB): $(RENDER_OBJ)
 $(BUILD)/holonomy: $(CLI_OBJ) $(RENDER_LIB) $(CORE_LIB)
 	$(CC) $(CFLAGS) -o $@ $(CLI_OBJ) $(RENDER_LIB) $(CORE_LIB) $(LDFLAGS) $(APP_LIBS) $(LDLIBS)
 
-$(RENDER_TEST_BIN): $(BUILD)/tests/%: tests/%.c $(wildcard tests/*.h) $(RENDER_LIB) $(CORE_LIB)
+$(RENDER_TEST_BIN): $(BUILD)/tests/%: tests/%.c $(wildcard tests/*.h) $(PLAT_OBJ) $(RENDER_LIB) $(CORE_LIB)
 	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS) -o $@ $< $(RENDER_LIB) $(CORE_LIB) $(LDFLAGS) -lcmocka $(RENDER_LIBS) $(LDLIBS)
+	$(CC) $(CFLAGS) -o $@ $< $(PLAT_OBJ) $(RENDER_LIB) $(CORE_LIB) $(LDFLAGS) -lcmocka $(RENDER_LIBS) $(LDLIBS)
 
 $(BUILD)/tests/%: tests/%.c $(wildcard tests/*.h) $(CORE_LIB)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) -o $@ $< $(CORE_LIB) $(LDFLAGS) -lcmocka $(LDLIBS)
 
-$(BENCH_RENDER_BIN): $(BUILD)/bench/%: tests/%.c $(RENDER_LIB) $(CORE_LIB)
+$(BENCH_RENDER_BIN): $(BUILD)/bench/%: tests/%.c $(PLAT_OBJ) $(RENDER_LIB) $(CORE_LIB)
 	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS) -DNDEBUG -o $@ $< $(RENDER_LIB) $(CORE_LIB) $(LDFLAGS) $(RENDER_LIBS) $(LDLIBS)
+	$(CC) $(CFLAGS) -DNDEBUG -o $@ $< $(PLAT_OBJ) $(RENDER_LIB) $(CORE_LIB) $(LDFLAGS) $(RENDER_LIBS) $(LDLIBS)
 
 $(BUILD)/bench/%: tests/%.c $(CORE_SRC)
 	@mkdir -p $(dir $@)

@@ -1,11 +1,8 @@
 /* hol_png.c - PNG encode/decode on top of zlib; atomic file writes. */
 #include "hol_png.h"
 
-#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
-#include <unistd.h>
 #include <zlib.h>
 
 static void hol__be32(uint8_t *p, uint32_t v)
@@ -122,56 +119,6 @@ hol_err hol_png_encode(const uint8_t *rgba, int w, int h, int alpha,
     *out_data = out;
     *out_size = pos;
     return HOL_OK;
-}
-
-hol_err hol_file_write_atomic(const char *path, const void *data, size_t size)
-{
-    size_t n = strlen(path);
-    char *tmp = malloc(n + 16);
-    if (!tmp)
-        return HOL_ENOMEM;
-    memcpy(tmp, path, n);
-    memcpy(tmp + n, ".tmpXXXXXX", 11);
-    int fd = mkstemp(tmp);
-    if (fd < 0) {
-        free(tmp);
-        return HOL_EIO;
-    }
-    FILE *f = fdopen(fd, "wb");
-    if (!f) {
-        close(fd);
-        unlink(tmp);
-        free(tmp);
-        return HOL_EIO;
-    }
-    int ok = fwrite(data, 1, size, f) == size;
-    ok = (fflush(f) == 0) && ok;
-    (void)fsync(fileno(f)); /* best effort on odd file systems */
-    ok = (fclose(f) == 0) && ok;
-    if (ok) {
-        /* mkstemp creates 0600; give the usual permissions (best effort) */
-        mode_t um = umask(0);
-        umask(um);
-        (void)chmod(tmp, 0666 & ~um);
-        ok = rename(tmp, path) == 0;
-    }
-    if (!ok)
-        unlink(tmp);
-    free(tmp);
-    return ok ? HOL_OK : HOL_EIO;
-}
-
-hol_err hol_png_write_file(const char *path, const uint8_t *rgba, int w, int h,
-                           int alpha)
-{
-    uint8_t *data;
-    size_t size;
-    hol_err err = hol_png_encode(rgba, w, h, alpha, &data, &size);
-    if (err)
-        return err;
-    err = hol_file_write_atomic(path, data, size);
-    free(data);
-    return err;
 }
 
 hol_err hol_png_decode(const uint8_t *data, size_t size, uint8_t **out_rgba,
@@ -312,42 +259,3 @@ hol_err hol_png_decode(const uint8_t *data, size_t size, uint8_t **out_rgba,
     return HOL_OK;
 }
 
-hol_err hol_png_read_file(const char *path, uint8_t **out_rgba, int *out_w,
-                          int *out_h)
-{
-    FILE *f = fopen(path, "rb");
-    if (!f)
-        return HOL_EIO;
-    uint8_t *buf = NULL;
-    size_t n = 0, cap = 0;
-    for (;;) {
-        if (n == cap) {
-            cap = cap ? cap * 2 : 65536;
-            if (cap > ((size_t)1 << 30)) {
-                free(buf);
-                fclose(f);
-                return HOL_ECORRUPT;
-            }
-            uint8_t *nb = realloc(buf, cap);
-            if (!nb) {
-                free(buf);
-                fclose(f);
-                return HOL_ENOMEM;
-            }
-            buf = nb;
-        }
-        size_t r = fread(buf + n, 1, cap - n, f);
-        n += r;
-        if (r == 0)
-            break;
-    }
-    int bad = ferror(f);
-    fclose(f);
-    if (bad) {
-        free(buf);
-        return HOL_EIO;
-    }
-    hol_err err = hol_png_decode(buf, n, out_rgba, out_w, out_h);
-    free(buf);
-    return err;
-}

@@ -4,9 +4,8 @@
  * - Images are 8-bit RGBA, rows top to bottom, tightly packed (4 * w bytes
  *   per row). Writing produces a non-interlaced 8-bit RGB or RGBA PNG
  *   compressed with zlib.
- * - hol_png_write_file writes atomically: the image goes to "PATH.tmpXXXXXX"
- *   in the same folder, is flushed and closed, then renamed over PATH; on any
- *   failure the temporary file is removed and PATH is left untouched.
+ * - In memory only: files are the platform's (platform/file/hol_file.h has
+ *   hol_png_write_file, atomic, and hol_png_read_file).
  * - The reader accepts what the writer produces and the common subset of
  *   other encoders: 8-bit grey, grey+alpha, RGB, RGBA, non-interlaced, all
  *   five filter types. Anything else is HOL_EUNSUPPORTED; structural damage
@@ -27,16 +26,9 @@
 /* Encode to a malloc'ed buffer. alpha = 0 drops the alpha channel. */
 hol_err hol_png_encode(const uint8_t *rgba, int w, int h, int alpha,
                        uint8_t **out_data, size_t *out_size);
-hol_err hol_png_write_file(const char *path, const uint8_t *rgba, int w, int h,
-                           int alpha);
 
 /* Decode PNG bytes to malloc'ed RGBA (opaque alpha for formats without). */
 hol_err hol_png_decode(const uint8_t *data, size_t size, uint8_t **out_rgba,
                        int *out_w, int *out_h);
-hol_err hol_png_read_file(const char *path, uint8_t **out_rgba, int *out_w,
-                          int *out_h);
-
-/* Write a whole buffer to path atomically (temp file + rename). */
-hol_err hol_file_write_atomic(const char *path, const void *data, size_t size);
 
 #endif

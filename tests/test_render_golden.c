@@ -29,6 +29,7 @@
 #include "../core/hol_world.h"
 #include "../platform/egl/hol_egl.h"
 #include "../platform/osmesa/hol_osmesa.h"
+#include "../platform/file/hol_file.h"
 #include "../render/hol_png.h"
 #include "../render/hol_render.h"
 

@@ -13,6 +13,7 @@
 #include "../../core/hol_tile.h"
 #include "../../core/hol_world.h"
 #include "../../render/hol_png.h"
+#include "../file/hol_file.h"
 #include "../../render/hol_render.h"
 #include "../egl/hol_egl.h"
 #include "../egl/hol_egl_x11.h"
@@ -99,44 +100,19 @@ static int write_tile_ids(const char *path, const uint8_t *rgba, long w, long h,
     static char addr[HOL_VIEW_MAX_BRANCHES][HOL_TILE_ADDR_MAX];
     for (int b = 0; b < v->nbranches; b++)
         hol_tile_print(v->branches[b].state.tile, addr[b]);
-    size_t n = strlen(path);
-    char *tmp = malloc(n + 16);
-    if (!tmp)
+    hol_file_atomic a;
+    if (hol_file_atomic_open(&a, path))
         return 1;
-    memcpy(tmp, path, n);
-    memcpy(tmp + n, ".tmpXXXXXX", 11);
-    int fd = mkstemp(tmp);
-    FILE *f = fd >= 0 ? fdopen(fd, "w") : NULL;
-    if (!f) {
-        if (fd >= 0) {
-            close(fd);
-            unlink(tmp);
-        }
-        free(tmp);
-        return 1;
-    }
-    int ok = 1;
-    for (long y = 0; y < h && ok; y++)
+    for (long y = 0; y < h; y++)
         for (long x = 0; x < w; x++) {
             int id = hol_render_decode_id(rgba + ((size_t)y * (size_t)w + (size_t)x) * 4);
             if (id >= 0 && id < v->nbranches &&
-                fprintf(f, "%ld %ld %s\n", x, y, addr[id]) < 0) {
-                ok = 0;
-                break;
+                fprintf(a.f, "%ld %ld %s\n", x, y, addr[id]) < 0) {
+                hol_file_atomic_abort(&a);
+                return 1;
             }
         }
-    ok = fflush(f) == 0 && ok;
-    ok = fclose(f) == 0 && ok;
-    if (ok) {
-        mode_t um = umask(0);
-        umask(um);
-        (void)chmod(tmp, 0666 & ~um);
-        ok = rename(tmp, path) == 0;
-    }
-    if (!ok)
-        unlink(tmp);
-    free(tmp);
-    return !ok;
+    return hol_file_atomic_commit(&a) != HOL_OK;
 }
 
 static int cmp_double(const void *a, const void *b)

@@ -12,6 +12,7 @@
 #include "../../core/hol_room.h"
 #include "../../core/hol_tile.h"
 #include "../../core/hol_world.h"
+#include "../file/hol_file.h"
 #include "cli.h"
 
 static const char *const world_usage =
@@ -218,66 +219,9 @@ static int read_file(const char *path, uint8_t **out_buf, size_t *out_len)
 /* Write buf to path atomically. Returns 1 on success. */
 static int write_atomic(const char *path, const uint8_t *buf, size_t len)
 {
-    size_t pl = strlen(path);
-    char *tmp = malloc(pl + 16);
-    if (!tmp) {
-        cli_error(CMD, 0, "cannot write '%s': out of memory", path);
+    if (hol_file_write_atomic(path, buf, len)) {
+        cli_error(CMD, 0, "cannot write '%s': %s", path, strerror(errno));
         return 0;
-    }
-    memcpy(tmp, path, pl);
-    memcpy(tmp + pl, ".tmp-XXXXXX", 12);
-    int fd = mkstemp(tmp);
-    if (fd < 0) {
-        cli_error(CMD, 0, "cannot create a temporary file next to '%s': %s", path,
-                  strerror(errno));
-        free(tmp);
-        return 0;
-    }
-    /* mkstemp makes 0600; a world file gets the usual 0666 & ~umask */
-    mode_t mask = umask(0);
-    umask(mask);
-    size_t done = 0;
-    int err = 0;
-    if (fchmod(fd, 0666 & ~mask) != 0)
-        err = errno;
-    while (!err && done < len) {
-        ssize_t n = write(fd, buf + done, len - done);
-        if (n < 0) {
-            if (errno == EINTR)
-                continue;
-            err = errno;
-            break;
-        }
-        done += (size_t)n;
-    }
-    if (!err && fsync(fd) != 0)
-        err = errno;
-    if (close(fd) != 0 && !err)
-        err = errno;
-    if (!err && rename(tmp, path) != 0)
-        err = errno;
-    if (err) {
-        unlink(tmp);
-        cli_error(CMD, 0, "cannot write '%s': %s", path, strerror(err));
-        free(tmp);
-        return 0;
-    }
-    free(tmp);
-    /* make the rename durable */
-    char *dir = strdup(path);
-    if (dir) {
-        char *slash = strrchr(dir, '/');
-        const char *d = ".";
-        if (slash) {
-            *slash = '\0';
-            d = slash == dir ? "/" : dir;
-        }
-        int dfd = open(d, O_RDONLY | O_DIRECTORY);
-        if (dfd >= 0) {
-            fsync(dfd);
-            close(dfd);
-        }
-        free(dir);
     }
     return 1;
 }

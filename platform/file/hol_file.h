@@ -1,0 +1,45 @@
+/* hol_file.h - whole-file reads and atomic writes for the desktop tools.
+ *
+ * Contract
+ * - hol_file_write_atomic and hol_file_atomic_* never leave a half-written
+ *   file: the data goes to a temporary file next to PATH ("PATH.tmpXXXXXX"),
+ *   is flushed, fsync'ed and closed, gets the usual 0666 & ~umask mode, is
+ *   renamed over PATH, and the folder is fsync'ed (best effort). On any
+ *   failure the temporary file is removed and PATH is left as it was.
+ * - Errors are hol_err; errno still holds the cause for messages.
+ * - hol_file_read_all reads at most `max` bytes into a malloc'ed buffer
+ *   (free it with free()); a larger file is HOL_ECORRUPT.
+ * - Image files: PNG bytes through render/hol_png.h's encoder and decoder.
+ */
+#ifndef HOL_FILE_H
+#define HOL_FILE_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+
+#include "../../core/hol_err.h"
+
+hol_err hol_file_write_atomic(const char *path, const void *data, size_t size);
+
+/* Streaming form: open, write to a->f, then commit (or abort). */
+typedef struct hol_file_atomic {
+    FILE *f;
+    char *tmp;
+    const char *path;
+} hol_file_atomic;
+
+hol_err hol_file_atomic_open(hol_file_atomic *a, const char *path);
+hol_err hol_file_atomic_commit(hol_file_atomic *a);
+void hol_file_atomic_abort(hol_file_atomic *a);
+
+hol_err hol_file_read_all(const char *path, size_t max, uint8_t **out_data,
+                          size_t *out_size);
+
+/* PNG files (RGBA pixels as in render/hol_png.h). */
+hol_err hol_png_write_file(const char *path, const uint8_t *rgba, int w, int h,
+                           int alpha);
+hol_err hol_png_read_file(const char *path, uint8_t **out_rgba, int *out_w,
+                          int *out_h);
+
+#endif
