@@ -41,6 +41,8 @@
  */
 #include "hol_tile.h"
 
+#include "hol_hash.h"
+
 #include <string.h>
 
 #define HOL__CAP 127 /* letters a working word can hold */
@@ -152,14 +154,7 @@ int hol_tile_eq(hol_tile a, hol_tile b)
 
 uint64_t hol_tile_hash(hol_tile t)
 {
-    /* splitmix64 finaliser over both words */
-    uint64_t x = t.bits[0] ^ (t.bits[1] * UINT64_C(0x9E3779B97F4A7C15));
-    x ^= x >> 30;
-    x *= UINT64_C(0xBF58476D1CE4E5B9);
-    x ^= x >> 27;
-    x *= UINT64_C(0x94D049BB133111EB);
-    x ^= x >> 31;
-    return x;
+    return hol_mix64(t.bits[0] ^ (t.bits[1] * UINT64_C(0x9E3779B97F4A7C15)));
 }
 
 int hol_tile_letter(hol_tile t, int i)

@@ -12,6 +12,7 @@
  * pause of tens of milliseconds); over 7/8 full it finishes at once.
  */
 #include "hol_world_impl.h"
+#include "hol_hash.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -28,13 +29,7 @@ uint32_t hol__ball_size(int radius)
 
 uint64_t hol__mix(uint64_t a, uint64_t b)
 {
-    uint64_t x = a ^ (b + UINT64_C(0x9E3779B97F4A7C15) + (a << 6) + (a >> 2));
-    x ^= x >> 30;
-    x *= UINT64_C(0xBF58476D1CE4E5B9);
-    x ^= x >> 27;
-    x *= UINT64_C(0x94D049BB133111EB);
-    x ^= x >> 31;
-    return x;
+    return hol_mix64(a ^ (b + UINT64_C(0x9E3779B97F4A7C15) + (a << 6) + (a >> 2)));
 }
 
 uint64_t hol__tile_hash(uint64_t seed, hol_tile t)
