@@ -53,7 +53,8 @@ FUZZ_BIN := $(FUZZ_SRC:fuzz/%.c=$(BUILD)/fuzz/%)
 
 DEB_PACKAGES := make gcc clang libcmocka-dev libosmesa6-dev libegl-dev \
   libgles-dev libhidapi-dev libusb-1.0-0-dev libopenxr-dev \
-  gcc-aarch64-linux-gnu qemu-user xvfb zlib1g-dev libx11-dev
+  libegl-mesa0 libgl1-mesa-dri gcc-aarch64-linux-gnu qemu-user xvfb zlib1g-dev \
+  libx11-dev
 
 .PHONY: all test purity unit render-test cli-test fuzz-replay fuzz bench san clean deps \
         deps-cross check-clang cross-test
@@ -92,14 +93,17 @@ $(BUILD)/bench/%: tests/%.c $(CORE_SRC)
 	$(CC) $(CSTD) $(WARN) -O2 -DNDEBUG -D_DEFAULT_SOURCE -o $@ $< $(CORE_SRC) $(LDLIBS)
 
 # libFuzzer harnesses (clang); the replay build runs the corpora as tests.
-$(BUILD)/fuzz/%: fuzz/%.c $(CORE_SRC)
+# A harness links the core; FUZZ_EXTRA_<name> adds sources and libraries.
+FUZZ_EXTRA_fuzz_png := render/hol_png.c -lz
+$(BUILD)/fuzz/%: fuzz/%.c $(CORE_SRC) $(RENDER_SRC)
 	@mkdir -p $(dir $@)
 	$(FUZZ_CC) $(CSTD) -g -O1 -D_DEFAULT_SOURCE -fsanitize=fuzzer,address,undefined \
-	  -fno-sanitize-recover=all -o $@ $< $(CORE_SRC) $(LDLIBS)
+	  -fno-sanitize-recover=all -o $@ $< $(CORE_SRC) $(FUZZ_EXTRA_$*) $(LDLIBS)
 
-$(BUILD)/fuzz-replay/%: fuzz/%.c fuzz/replay_main.c $(CORE_SRC)
+$(BUILD)/fuzz-replay/%: fuzz/%.c fuzz/replay_main.c $(CORE_SRC) $(RENDER_SRC)
 	@mkdir -p $(dir $@)
-	$(CC) $(CSTD) $(WARN) -O1 -g -D_DEFAULT_SOURCE -o $@ $< fuzz/replay_main.c $(CORE_SRC) $(LDLIBS)
+	$(CC) $(CSTD) $(WARN) -O1 -g -D_DEFAULT_SOURCE -o $@ $< fuzz/replay_main.c $(CORE_SRC) \
+	  $(FUZZ_EXTRA_$*) $(LDLIBS)
 
 test: all purity unit render-test cli-test fuzz-replay
 	@echo "make test: all suites passed"
@@ -148,8 +152,9 @@ cross-test: deps-cross
 	  echo "== $$t (qemu-aarch64)"; qemu-aarch64 -L /usr/aarch64-linux-gnu $$t; done
 
 deps:
-	@missing=""; for p in $(DEB_PACKAGES); do \
-	  dpkg -s $$p >/dev/null 2>&1 || missing="$$missing $$p"; done; \
+	@missing=""; a=$$(dpkg --print-architecture); for p in $(DEB_PACKAGES); do \
+	  dpkg -s $$p:$$a >/dev/null 2>&1 || dpkg -s $$p >/dev/null 2>&1 || \
+	  missing="$$missing $$p"; done; \
 	if [ -z "$$missing" ]; then echo "make deps: all packages present"; \
 	else SUDO=$$( [ "$$(id -u)" = 0 ] || echo sudo ); \
 	  echo "make deps: installing$$missing"; \
