@@ -1,4 +1,4 @@
-/* hol_png.h - minimal PNG writer and reader for rendered images and goldens.
+/* hol_png.h - minimal PNG encoder and decoder, in memory, for rendered images and goldens.
  *
  * Contract
  * - Images are 8-bit RGBA, rows top to bottom, tightly packed (4 * w bytes
