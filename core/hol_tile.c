@@ -328,8 +328,18 @@ hol_err hol_tile_step(hol_tile t, int turn, hol_tile *out_tile, int *out_arrive)
     turn &= 3;
     if (n > HOL_TILE_MAX_DIST)
         return HOL_EARG;
-    /* fast path: a child of a tile short of the reach */
-    if (n > 0 && n < HOL_TILE_MAX_DIST && turn != HOL_TURN_B &&
+    /* fast path: the parent */
+    if (n > 0 && turn == HOL_TURN_B) {
+        int last = hol__at(t.bits, n - 1);
+        t.bits[(n - 1) >> 5] &= ~(UINT64_C(3) << (2 * ((n - 1) & 31)));
+        t.bits[1] -= UINT64_C(1) << 58;
+        *out_tile = t;
+        if (out_arrive)
+            *out_arrive = (last + 2) & 3;
+        return HOL_OK;
+    }
+    /* a child of a tile short of the reach */
+    if (n > 0 && n < HOL_TILE_MAX_DIST &&
         hol__dfa[hol__state_of(t.bits, n)][turn] != HOL__SINK) {
         *out_tile = hol__tile_push(t, n, turn);
         if (out_arrive)
