@@ -32,6 +32,7 @@
 #include "../platform/file/hol_file.h"
 #include "../render/hol_png.h"
 #include "../render/hol_render.h"
+#include "render_fixture.h"
 
 #define W 160
 #define H 120
@@ -59,38 +60,19 @@ static const golden_view views[] = {
     {"minimap", "NE", {2.4, 1.6, 0.6}, 135, -30, 90, HOL_RENDER_MINIMAP},
 };
 
-static hol_osmesa gl;
-static hol_render *rnd;
-static hol_world *world;
+static render_fixture fx;
 static char out_dir[512] = "golden-out";
 
 static int setup(void **state)
 {
     (void)state;
-    char msg[256];
-    if (hol_osmesa_create(&gl, W, H, msg, sizeof msg)) {
-        fprintf(stderr, "%s\n", msg);
-        return -1;
-    }
-    hol_world_desc wd;
-    memset(&wd, 0, sizeof wd);
-    wd.seed = 2;
-    wd.capacity = 1u << 14;
-    if (hol_world_make(&wd, &world))
-        return -1;
-    hol_render_desc rd;
-    memset(&rd, 0, sizeof rd);
-    rd.world = world;
-    rd.getproc = hol_osmesa_getproc;
-    return hol_render_create(&rd, &rnd) ? -1 : 0;
+    return render_fixture_make(&fx, W, H, 2);
 }
 
 static int teardown(void **state)
 {
     (void)state;
-    hol_render_destroy(rnd);
-    hol_world_destroy(world);
-    hol_osmesa_destroy(&gl);
+    render_fixture_destroy(&fx);
     return 0;
 }
 
@@ -117,7 +99,7 @@ static void render_with(hol_render *rr, const golden_view *g, uint8_t *rgba)
     static const uint8_t path[] = {HOL_DIR_W, HOL_DIR_W, HOL_DIR_S, HOL_DIR_S};
     f.path = path;
     f.npath = 4;
-    assert_int_equal(hol_world_update(world, &f.user), HOL_OK);
+    assert_int_equal(hol_world_update(fx.world, &f.user), HOL_OK);
     f.steps_taken = 2;
     f.time_s = 83;
     assert_int_equal(hol_render_frame(rr, &f, NULL), HOL_OK);
@@ -126,7 +108,7 @@ static void render_with(hol_render *rr, const golden_view *g, uint8_t *rgba)
 
 static void render_view(const golden_view *g, uint8_t *rgba)
 {
-    render_with(rnd, g, rgba);
+    render_with(fx.rnd, g, rgba);
 }
 
 /* Compare img with the golden NAME; on failure write NAME+tag.actual.png
@@ -251,12 +233,12 @@ static void test_egl_gles_matches_goldens(void **state)
     char msg[256];
     if (hol_egl_create(&egl, W, H, msg, sizeof msg)) {
         printf("egl: %s: skipped\n", msg);
-        OSMesaMakeCurrent(gl.ctx, gl.buf, GL_UNSIGNED_BYTE, W, H);
+        OSMesaMakeCurrent(fx.gl.ctx, fx.gl.buf, GL_UNSIGNED_BYTE, W, H);
         skip();
     }
     hol_render_desc rd;
     memset(&rd, 0, sizeof rd);
-    rd.world = world;
+    rd.world = fx.world;
     rd.getproc = hol_egl_getproc;
     hol_render *er = NULL;
     assert_int_equal(hol_render_create(&rd, &er), HOL_OK);
@@ -268,7 +250,7 @@ static void test_egl_gles_matches_goldens(void **state)
     }
     hol_render_destroy(er);
     hol_egl_destroy(&egl);
-    OSMesaMakeCurrent(gl.ctx, gl.buf, GL_UNSIGNED_BYTE, W, H);
+    OSMesaMakeCurrent(fx.gl.ctx, fx.gl.buf, GL_UNSIGNED_BYTE, W, H);
     assert_int_equal(failed, 0);
 }
 
@@ -301,7 +283,7 @@ static void test_stats_within_budget(void **state)
             f.user = hol_room_start();
             for (const char *p = g.walk; *p && *p != '-'; p++)
                 hol_room_step(&f.user, hol_dir_from_char(*p));
-            assert_int_equal(hol_world_update(world, &f.user), HOL_OK);
+            assert_int_equal(hol_world_update(fx.world, &f.user), HOL_OK);
             memcpy(f.cam.eye, g.eye, sizeof f.cam.eye);
             f.cam.yaw_deg = g.yaw;
             f.cam.pitch_deg = g.pitch;
@@ -311,7 +293,7 @@ static void test_stats_within_budget(void **state)
             f.flags = (g.flags & ~HOL_RENDER_EUCLIDEAN) | HOL_RENDER_MINIMAP |
                       (eu ? HOL_RENDER_EUCLIDEAN : 0);
             hol_render_stats st;
-            assert_int_equal(hol_render_frame(rnd, &f, &st), HOL_OK);
+            assert_int_equal(hol_render_frame(fx.rnd, &f, &st), HOL_OK);
             assert_true(st.draw_calls <= 150);
             assert_true(st.triangles <= 300000);
             if (eu)
@@ -339,7 +321,7 @@ static void test_resident_meshes(void **state)
     hol_frame_desc f;
     memset(&f, 0, sizeof f);
     f.user = hol_room_start();
-    assert_int_equal(hol_world_update(world, &f.user), HOL_OK);
+    assert_int_equal(hol_world_update(fx.world, &f.user), HOL_OK);
     memcpy(f.cam.eye, g.eye, sizeof f.cam.eye);
     f.cam.yaw_deg = g.yaw;
     f.cam.pitch_deg = g.pitch;
@@ -348,12 +330,12 @@ static void test_resident_meshes(void **state)
     f.cam.height = H;
     f.flags = HOL_RENDER_MINIMAP;
     hol_render_stats s1, s2, s3;
-    hol_render_invalidate(rnd);
-    assert_int_equal(hol_render_frame(rnd, &f, &s1), HOL_OK);
-    hol_render_read_rgba(rnd, W, H, a);
+    hol_render_invalidate(fx.rnd);
+    assert_int_equal(hol_render_frame(fx.rnd, &f, &s1), HOL_OK);
+    hol_render_read_rgba(fx.rnd, W, H, a);
     assert_true(s1.tiles_built >= 9);
-    assert_int_equal(hol_render_frame(rnd, &f, &s2), HOL_OK);
-    hol_render_read_rgba(rnd, W, H, b);
+    assert_int_equal(hol_render_frame(fx.rnd, &f, &s2), HOL_OK);
+    hol_render_read_rgba(fx.rnd, W, H, b);
     printf("resident: first frame %ld bytes, %d tiles; second %ld bytes\n",
            s1.uploaded_bytes, s1.tiles_built, s2.uploaded_bytes);
     assert_int_equal(s2.tiles_built, 0);
@@ -364,14 +346,14 @@ static void test_resident_meshes(void **state)
     hol_tile n, got;
     assert_int_equal(hol_tile_resolve("N", -1, &n), HOL_OK);
     hol_tile_content c;
-    assert_int_equal(hol_world_get(world, n, &c), HOL_OK);
-    if (hol_world_reserve(world, n, 0, HOL_OBJ_KEY, &got) != HOL_OK)
+    assert_int_equal(hol_world_get(fx.world, n, &c), HOL_OK);
+    if (hol_world_reserve(fx.world, n, 0, HOL_OBJ_KEY, &got) != HOL_OK)
         skip(); /* the tile is not free in this world: nothing to show */
-    assert_int_equal(hol_render_frame(rnd, &f, &s3), HOL_OK);
-    hol_render_read_rgba(rnd, W, H, b);
+    assert_int_equal(hol_render_frame(fx.rnd, &f, &s3), HOL_OK);
+    hol_render_read_rgba(fx.rnd, W, H, b);
     assert_true(s3.tiles_built >= 1);
     assert_memory_not_equal(a, b, sizeof a);
-    assert_int_equal(hol_world_release(world, got), HOL_OK);
+    assert_int_equal(hol_world_release(fx.world, got), HOL_OK);
 }
 
 /* Rewrite every chunk CRC so mutations reach the inflate and unfilter code

@@ -33,6 +33,7 @@
 #include "../core/hol_world.h"
 #include "../platform/osmesa/hol_osmesa.h"
 #include "../render/hol_render.h"
+#include "render_fixture.h"
 
 #define W 128
 #define H 96
@@ -103,37 +104,18 @@ static void fill_cam(const view_case *c, hol_camera *cam)
     cam->tan_up = c->tu;
 }
 
-static hol_osmesa gl;
-static hol_render *rnd;
-static hol_world *world;
+static render_fixture fx;
 
 static int setup(void **state)
 {
     (void)state;
-    char msg[256];
-    if (hol_osmesa_create(&gl, W, H, msg, sizeof msg)) {
-        fprintf(stderr, "%s\n", msg);
-        return -1;
-    }
-    hol_world_desc wd;
-    memset(&wd, 0, sizeof wd);
-    wd.seed = 7;
-    wd.capacity = 1u << 14;
-    if (hol_world_make(&wd, &world))
-        return -1;
-    hol_render_desc rd;
-    memset(&rd, 0, sizeof rd);
-    rd.world = world;
-    rd.getproc = hol_osmesa_getproc;
-    return hol_render_create(&rd, &rnd) ? -1 : 0;
+    return render_fixture_make(&fx, W, H, 7);
 }
 
 static int teardown(void **state)
 {
     (void)state;
-    hol_render_destroy(rnd);
-    hol_world_destroy(world);
-    hol_osmesa_destroy(&gl);
+    render_fixture_destroy(&fx);
     return 0;
 }
 
@@ -231,10 +213,10 @@ static void check_case(const view_case *c, int flags, int *out_checked)
     f.user = state_of(c->walk);
     fill_cam(c, &f.cam);
     f.flags = c->flags | flags | HOL_RENDER_IDS | HOL_RENDER_NO_HUD;
-    assert_int_equal(hol_render_frame(rnd, &f, NULL), HOL_OK);
+    assert_int_equal(hol_render_frame(fx.rnd, &f, NULL), HOL_OK);
     static uint8_t px[W * H * 4];
-    hol_render_read_rgba(rnd, W, H, px);
-    const hol_view *v = hol_render_last_view(rnd);
+    hol_render_read_rgba(fx.rnd, W, H, px);
+    const hol_view *v = hol_render_last_view(fx.rnd);
     int bare = (flags & HOL_RENDER_BARE) != 0;
     int checked = 0, skipped = 0, drawn = 0, exp_floor = 0;
     for (int y = 0; y < H; y++)
@@ -340,9 +322,9 @@ static void test_trunks_hide_seams(void **state)
         f.user = state_of(c->walk);
         fill_cam(c, &f.cam);
         f.flags = c->flags | HOL_RENDER_IDS | HOL_RENDER_NO_HUD;
-        assert_int_equal(hol_render_frame(rnd, &f, NULL), HOL_OK);
+        assert_int_equal(hol_render_frame(fx.rnd, &f, NULL), HOL_OK);
         static uint8_t px[W * H * 4];
-        hol_render_read_rgba(rnd, W, H, px);
+        hol_render_read_rgba(fx.rnd, W, H, px);
         for (int y = 0; y < H; y++)
             for (int x = 0; x < W; x++) {
                 if (hol_render_decode_id(px + (y * W + x) * 4) < 0)
@@ -404,7 +386,7 @@ static void test_creeks_continue_across_edges(void **state)
         wd.seed = seed;
         wd.capacity = 1u << 14;
         assert_int_equal(hol_world_make(&wd, &w), HOL_OK);
-        hol_render_set_world(rnd, w);
+        hol_render_set_world(fx.rnd, w);
         for (int k = 0; k < 24; k++) {
             /* a random walk in the room back to the centre cell */
             char walk[40];
@@ -438,9 +420,9 @@ static void test_creeks_continue_across_edges(void **state)
             f.cam.width = W;
             f.cam.height = H;
             f.flags = HOL_RENDER_BARE | HOL_RENDER_NO_HUD;
-            assert_int_equal(hol_render_frame(rnd, &f, NULL), HOL_OK);
+            assert_int_equal(hol_render_frame(fx.rnd, &f, NULL), HOL_OK);
             static uint8_t px[W * H * 4];
-            hol_render_read_rgba(rnd, W, H, px);
+            hol_render_read_rgba(fx.rnd, W, H, px);
             /* the 12 interior edges: vertical x = 1, 2 and horizontal z = 1, 2 */
             for (int e = 0; e < 12; e++) {
                 int vert = e < 6, line = 1 + (e % 6) / 3, seg = e % 3;
@@ -459,7 +441,7 @@ static void test_creeks_continue_across_edges(void **state)
                 water += is_water(pa);
             }
         }
-        hol_render_set_world(rnd, world);
+        hol_render_set_world(fx.rnd, fx.world);
         hol_world_destroy(w);
     }
     printf("creeks: %d edges checked, %d with water\n", checked, water);
