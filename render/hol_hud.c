@@ -42,6 +42,7 @@ static const uint8_t hol__box[7] = {0x1F, 0x11, 0x11, 0x11, 0x11, 0x11, 0x1F};
 typedef struct hol__px {
     hol_mesh *m;
     int w, h;
+    int hand; /* lay the minimap out to fill the square (in the hand) */
 } hol__px;
 
 static void hol__v(hol__px *p, float x, float y, const uint8_t rgb[3])
@@ -103,7 +104,7 @@ static void hol__segment(hol__px *p, float x0, float y0, float x1, float y1, flo
 int hol_hud_text(hol_mesh *out, const char *s, float x, float y, float scale,
                  const uint8_t rgb[3], int w, int h)
 {
-    hol__px p = {out, w, h};
+    hol__px p = {out, w, h, 0};
     float x0 = x;
     for (; *s; s++) {
         int c = (unsigned char)*s;
@@ -159,8 +160,15 @@ static void hol__map(const double m[9], const double q[3], float cx, float cy, f
     out[1] = cy - (float)(d[1] * rad);
 }
 
-static void hol__layout(int w, int h, float *rad, float *cx, float *cy)
+static void hol__layout(const hol__px *p, float *rad, float *cx, float *cy)
 {
+    int w = p->w, h = p->h;
+    if (p->hand) { /* centred, leaving room for the rim arrows */
+        *rad = 0.42f * (float)(w < h ? w : h);
+        *cx = 0.5f * (float)w;
+        *cy = 0.5f * (float)h;
+        return;
+    }
     *rad = 0.3f * (float)(w < h ? w : h);
     *cx = (float)w - *rad - 0.04f * (float)w;
     *cy = (float)h - *rad - 0.04f * (float)h;
@@ -169,7 +177,7 @@ static void hol__layout(int w, int h, float *rad, float *cx, float *cy)
 static void hol__minimap(hol__px *p, const hol_frame_desc *f)
 {
     float rad, cx, cy;
-    hol__layout(p->w, p->h, &rad, &cx, &cy);
+    hol__layout(p, &rad, &cx, &cy);
     static const uint8_t rim[3] = {20, 24, 30}, bg[3] = {200, 205, 210};
     float disk[48][2];
     for (int i = 0; i < 48; i++) {
@@ -283,7 +291,7 @@ static void hol__minimap(hol__px *p, const hol_frame_desc *f)
 static void hol__user_arrow(hol__px *p, const hol_frame_desc *f)
 {
     float rad, cx, cy;
-    hol__layout(p->w, p->h, &rad, &cx, &cy);
+    hol__layout(p, &rad, &cx, &cy);
     /* the user: an arrow where the eye stands in the tile (the cell's
      * offset scaled so that a cell edge maps to the tile edge), pointing
      * along the view yaw */
@@ -314,8 +322,24 @@ static void hol__user_arrow(hol__px *p, const hol_frame_desc *f)
 
 void hol_hud_build_map(hol_mesh *out, const hol_frame_desc *f, int w, int h)
 {
-    hol__px p = {out, w, h};
+    hol__px p = {out, w, h, 0};
     hol__minimap(&p, f);
+}
+
+/* The hand's map lives in a square; its units do not matter (the renderer
+ * scales the [-1, 1] square to the quad), only the proportions. */
+#define HOL__HAND_PX 512
+
+void hol_hud_build_hand_map(hol_mesh *out, const hol_frame_desc *f)
+{
+    hol__px p = {out, HOL__HAND_PX, HOL__HAND_PX, 1};
+    hol__minimap(&p, f);
+}
+
+void hol_hud_build_hand_arrow(hol_mesh *out, const hol_frame_desc *f)
+{
+    hol__px p = {out, HOL__HAND_PX, HOL__HAND_PX, 1};
+    hol__user_arrow(&p, f);
 }
 
 void hol_hud_build(hol_mesh *out, const hol_frame_desc *f, int w, int h)
@@ -326,8 +350,14 @@ void hol_hud_build(hol_mesh *out, const hol_frame_desc *f, int w, int h)
 
 void hol_hud_build_live(hol_mesh *out, const hol_frame_desc *f, int w, int h)
 {
-    hol__px p = {out, w, h};
+    hol__px p = {out, w, h, 0};
     hol__user_arrow(&p, f);
+    hol_hud_build_text(out, f, w, h);
+}
+
+void hol_hud_build_text(hol_mesh *out, const hol_frame_desc *f, int w, int h)
+{
+    hol__px p = {out, w, h, 0};
     float sc = (float)(h >= 160 ? h / 160 : 1);
     char lines[4][96];
     char addr[HOL_TILE_ADDR_MAX];

@@ -12,6 +12,9 @@
  *   objectives (yellow diamonds), the user's arrow (view yaw), and for each
  *   objective off the map an arrow on the rim pointing towards it.
  * - Text: objective, steps, current address, time, top left.
+ * - In the hand: the same minimap laid out to fill the square [-1, 1]^2
+ *   (x right, y up, z = 0), for the renderer to place on a quad at the
+ *   hand's pose; the text stays on the screen.
  */
 #ifndef HOL_HUD_H
 #define HOL_HUD_H
@@ -28,6 +31,12 @@
 void hol_hud_build(hol_mesh *out, const hol_frame_desc *f, int w, int h);
 void hol_hud_build_map(hol_mesh *out, const hol_frame_desc *f, int w, int h);
 void hol_hud_build_live(hol_mesh *out, const hol_frame_desc *f, int w, int h);
+void hol_hud_build_text(hol_mesh *out, const hol_frame_desc *f, int w, int h);
+
+/* The minimap in the hand: the map part (resident) and the user's arrow
+ * (live), in the square [-1, 1]^2. */
+void hol_hud_build_hand_map(hol_mesh *out, const hol_frame_desc *f);
+void hol_hud_build_hand_arrow(hol_mesh *out, const hol_frame_desc *f);
 
 /* Text at pixel (x, y) (top-left of the first glyph), each font pixel a
  * scale x scale square; returns the advance in pixels. Unknown characters

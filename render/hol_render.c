@@ -38,7 +38,13 @@ typedef struct hol__slot {
     uint32_t nidx;
 } hol__slot;
 
-enum { HOL__PASS_STENCIL = 0, HOL__PASS_ROOM = 1, HOL__PASS_TILE = 2, HOL__PASS_HUD = 3 };
+enum {
+    HOL__PASS_STENCIL = 0,
+    HOL__PASS_ROOM = 1,
+    HOL__PASS_TILE = 2,
+    HOL__PASS_HAND = 3, /* the minimap on a quad in the hand (world space) */
+    HOL__PASS_HUD = 4
+};
 enum { HOL__MODE_LIT = 0, HOL__MODE_ID = 1, HOL__MODE_FLAT = 2 };
 
 typedef struct hol__item {
@@ -288,6 +294,32 @@ static void hol__identity(float m[16])
     m[0] = m[5] = m[10] = m[15] = 1;
 }
 
+/* Column-major model matrix of the hand's minimap quad: the square
+ * [-1, 1]^2 (z = 0) scaled to hand_size, turned by hand_orient, moved to
+ * hand_pos. */
+static void hol__hand_matrix(const hol_frame_desc *f, float m[16])
+{
+    double x = f->hand_orient[0], y = f->hand_orient[1], z = f->hand_orient[2],
+           w = f->hand_orient[3];
+    double n = sqrt(x * x + y * y + z * z + w * w);
+    if (n < 1e-12) {
+        x = y = z = 0;
+        w = 1;
+    } else {
+        x /= n, y /= n, z /= n, w /= n;
+    }
+    double half = (f->hand_size > 0 ? f->hand_size : 0.25) / 2;
+    double rot[9] = {1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w),
+                     2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w),
+                     2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)};
+    hol__identity(m);
+    for (int c = 0; c < 3; c++)
+        for (int r = 0; r < 3; r++)
+            m[4 * c + r] = (float)(rot[3 * r + c] * half);
+    for (int r = 0; r < 3; r++)
+        m[12 + r] = (float)f->hand_pos[r];
+}
+
 static hol__item *hol__push(hol_render *r, int pass, uint32_t first, uint32_t count)
 {
     if (r->nitems >= HOL__MAX_ITEMS || count == 0)
@@ -486,8 +518,9 @@ static hol_err hol__build(hol_render *r, const hol_frame_desc *f)
         m[12] = (float)br->state.col + 0.5f;
         m[14] = (float)br->state.row + 0.5f;
     }
-    /* pass 3: HUD text and minimap, one draw */
+    /* passes 3 and 4: the minimap (on the HUD or in the hand) and the text */
     if ((f->flags & HOL_RENDER_MINIMAP) && !(f->flags & HOL_RENDER_NO_HUD)) {
+        int hand = (f->flags & HOL_RENDER_MINIMAP_HAND) != 0;
         /* the map stays resident while its inputs stay the same */
         uint64_t key = 0xcbf29ce484222325ull;
         int nobj = f->nobjectives < 0 ? 0 : f->nobjectives > HOL_RENDER_MAX_OBJECTIVES
@@ -498,13 +531,19 @@ static hol_err hol__build(hol_render *r, const hol_frame_desc *f)
         key = hol__fnv(key, &f->npath, sizeof f->npath);
         if (f->path && f->npath > 0)
             key = hol__fnv(key, f->path, (size_t)f->npath);
-        key = hol__fnv(key, &f->cam.width, sizeof f->cam.width);
-        key = hol__fnv(key, &f->cam.height, sizeof f->cam.height);
+        key = hol__fnv(key, &hand, sizeof hand);
+        if (!hand) {
+            key = hol__fnv(key, &f->cam.width, sizeof f->cam.width);
+            key = hol__fnv(key, &f->cam.height, sizeof f->cam.height);
+        }
         if (!r->hud_valid || r->hud_key != key) {
             hol_mesh_clear(&r->scratch);
             r->scratch.cap_v = HOL__HUD_V;
             r->scratch.cap_i = HOL__HUD_I;
-            hol_hud_build_map(&r->scratch, f, f->cam.width, f->cam.height);
+            if (hand)
+                hol_hud_build_hand_map(&r->scratch, f);
+            else
+                hol_hud_build_map(&r->scratch, f, f->cam.width, f->cam.height);
             r->scratch.cap_v = HOL__ROOM_V;
             r->scratch.cap_i = HOL__ROOM_I;
             if (r->scratch.overflow)
@@ -514,14 +553,33 @@ static hol_err hol__build(hol_render *r, const hol_frame_desc *f)
             r->hud_key = key;
             r->hud_valid = 1;
         }
-        hol__item *map = hol__push(r, HOL__PASS_HUD, HOL__HUD_IBASE, r->hud_nidx);
-        if (map)
-            map->key = 3u << 24;
+        int map_pass = hand ? HOL__PASS_HAND : HOL__PASS_HUD;
+        float hand_m[16];
+        if (hand)
+            hol__hand_matrix(f, hand_m);
+        hol__item *map = hol__push(r, map_pass, HOL__HUD_IBASE, r->hud_nidx);
+        if (map) {
+            map->key = (uint32_t)map_pass << 24;
+            if (hand)
+                memcpy(map->model, hand_m, sizeof hand_m);
+        }
         uint32_t i0 = r->dyn.ni;
-        hol_hud_build_live(&r->dyn, f, f->cam.width, f->cam.height);
+        if (hand) {
+            hol_hud_build_hand_arrow(&r->dyn, f);
+            hol__item *it = hol__push(r, HOL__PASS_HAND, i0, r->dyn.ni - i0);
+            if (it) {
+                it->key = (uint32_t)HOL__PASS_HAND << 24 | 1;
+                it->dyn = 1;
+                memcpy(it->model, hand_m, sizeof hand_m);
+            }
+            i0 = r->dyn.ni;
+            hol_hud_build_text(&r->dyn, f, f->cam.width, f->cam.height);
+        } else {
+            hol_hud_build_live(&r->dyn, f, f->cam.width, f->cam.height);
+        }
         hol__item *it = hol__push(r, HOL__PASS_HUD, i0, r->dyn.ni - i0);
         if (it) {
-            it->key = 3u << 24 | 1;
+            it->key = (uint32_t)HOL__PASS_HUD << 24 | 1;
             it->dyn = 1;
         }
     }
@@ -626,6 +684,16 @@ hol_err hol_render_frame(hol_render *r, const hol_frame_desc *f,
                 if (cur_pass == HOL__PASS_ROOM)
                     r->gl.UniformMatrix4fv(r->u_model, 1, GL_FALSE, ident);
                 break;
+            case HOL__PASS_HAND:
+                /* in the world: hidden where the scene is nearer; its
+                 * coplanar layers are painted in order (no depth writes) */
+                r->gl.Enable(GL_DEPTH_TEST);
+                r->gl.DepthFunc(GL_LEQUAL);
+                r->gl.DepthMask(GL_FALSE);
+                r->gl.Disable(GL_STENCIL_TEST);
+                r->gl.UniformMatrix4fv(r->u_vp, 1, GL_FALSE, vp);
+                r->gl.Uniform1i(r->u_mode, ids ? HOL__MODE_ID : HOL__MODE_FLAT);
+                break;
             default:
                 r->gl.Disable(GL_DEPTH_TEST);
                 r->gl.DepthMask(GL_FALSE);
@@ -654,6 +722,8 @@ hol_err hol_render_frame(hol_render *r, const hol_frame_desc *f,
                             (float)(id >> 8) / 255.0f, 0, 1);
             }
             st.branches++;
+        } else if (cur_pass == HOL__PASS_HAND) {
+            r->gl.UniformMatrix4fv(r->u_model, 1, GL_FALSE, it->model);
         }
         if (it->dyn != cur_vao) {
             cur_vao = it->dyn;

@@ -62,7 +62,9 @@ enum {
     HOL_RENDER_BARE = 2,      /* floors only: no trees, hedges or props */
     HOL_RENDER_IDS = 4,       /* ID mode (see above) */
     HOL_RENDER_NO_HUD = 8,
-    HOL_RENDER_MINIMAP = 16   /* draw the minimap and HUD text */
+    HOL_RENDER_MINIMAP = 16,  /* draw the minimap and HUD text */
+    HOL_RENDER_MINIMAP_HAND = 32 /* with MINIMAP: the map on a quad in the
+                                    hand (hand_* below), the text on screen */
 };
 
 #define HOL_RENDER_MAX_OBJECTIVES 8
@@ -79,6 +81,14 @@ typedef struct hol_frame_desc {
     double time_s;
     const uint8_t *path; /* shortest-path overlay: room steps from the user */
     int npath;
+    /* The minimap in the hand (HOL_RENDER_MINIMAP_HAND): a square of side
+     * hand_size metres (0: 0.25) centred at hand_pos (room coordinates),
+     * turned by the unit quaternion hand_orient (x, y, z, w; all zero:
+     * identity). Unturned, the map faces +z (south) with room north up
+     * (+y); the quad is drawn over the scene wherever the scene is farther. */
+    double hand_pos[3];
+    double hand_orient[4];
+    double hand_size;
 } hol_frame_desc;
 
 typedef struct hol_render_stats {

@@ -32,6 +32,9 @@ expect_usage --out
 expect_usage --gl vulkan --out "$T/a.png"
 expect_usage --stereo 0.5 --out "$T/a.png"
 expect_usage --stereo 0.064 --tile-ids "$T/a.ids"
+expect_usage --hand 1,2 --out "$T/a.png"
+expect_usage --hand 1.5,1.2,1.5 --out "$T/a.png"
+expect_usage --hand 4,1.2,4 --out "$T/a.png"
 [ ! -e "$T/a.png" ] || fail "a usage error left an output file"
 
 # a view, its tile ids, stats
@@ -107,4 +110,8 @@ chmod 0755 "$T"
 "$H" render --size 16x16 --out "$T/nodir/x.png" 2>"$T/err"
 [ $? -eq 1 ] || fail "missing directory should exit 1"
 [ "$(cat "$T/keep.png")" = old ] || fail "old file changed"
+# the minimap in the hand (its picture is the golden minimap_hand)
+"$H" render --walk NE --eye 2.4,1.6,0.6 --yaw 135 --size 64x48 --hand 2.2,1.3,0.8 \
+    --target Nrfl --out "$T/hand.png" || fail "--hand"
+[ -s "$T/hand.png" ] || fail "--hand wrote no picture"
 echo "cli_render: ok"

@@ -13,6 +13,7 @@
  * --stat tests/golden; open them) before committing. See README "Golden
  * images".
  */
+#include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -58,6 +59,8 @@ static const golden_view views[] = {
     {"wide_west", "W", {0.7, 1.6, 1.3}, -70, -35, 120, 0},
     {"euclidean_centre", "-", {1.5, 1.6, 1.5}, 0, -30, 90, HOL_RENDER_EUCLIDEAN},
     {"minimap", "NE", {2.4, 1.6, 0.6}, 135, -30, 90, HOL_RENDER_MINIMAP},
+    {"minimap_hand", "NE", {2.4, 1.6, 0.6}, 135, -30, 90,
+     HOL_RENDER_MINIMAP | HOL_RENDER_MINIMAP_HAND},
 };
 
 static render_fixture fx;
@@ -92,6 +95,16 @@ static void render_with(hol_render *rr, const golden_view *g, uint8_t *rgba)
     f.flags = g->flags;
     if (!(g->flags & HOL_RENDER_MINIMAP))
         f.flags |= HOL_RENDER_NO_HUD;
+    if (g->flags & HOL_RENDER_MINIMAP_HAND) {
+        /* held low in front of the eye, turned 135 degrees about the
+         * vertical so that it faces the eye (north-east of it) */
+        f.hand_pos[0] = 2.2;
+        f.hand_pos[1] = 1.3;
+        f.hand_pos[2] = 0.8;
+        f.hand_orient[1] = sin(135.0 / 2 * 3.14159265358979323846 / 180);
+        f.hand_orient[3] = cos(135.0 / 2 * 3.14159265358979323846 / 180);
+        f.hand_size = 0.3;
+    }
     f.nobjectives = 2;
     assert_int_equal(hol_tile_resolve("Nrfl", -1, &f.objectives[0]), HOL_OK);
     assert_int_equal(hol_tile_resolve("Wlffr", -1, &f.objectives[1]), HOL_OK);

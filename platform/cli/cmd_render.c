@@ -24,7 +24,8 @@ static const char *const render_usage =
     "usage: holonomy render [--walk W] [--eye X,Y,Z] [--yaw DEG] [--pitch DEG]\n"
     "                       [--size WxH] [--out FILE.png] [--tile-ids FILE]\n"
     "                       [--stats] [--euclidean] [--bare] [--fov DEG]\n"
-    "                       [--frames N] [--seed N] [--hud] [--target ADDR]\n"
+    "                       [--frames N] [--seed N] [--hud] [--hand X,Y,Z]\n"
+    "                       [--target ADDR]\n"
     "                       [--gl osmesa|egl] [--stereo IPD] [--window]\n"
     "                       [--keys SCRIPT]\n"
     "\n"
@@ -50,6 +51,9 @@ static const char *const render_usage =
     "  --frames N      render N times (stats: median CPU ms), default 1\n"
     "  --seed N        world seed (default 1): the forest's content\n"
     "  --hud           draw the HUD text and the Poincare minimap\n"
+    "  --hand X,Y,Z    the minimap in the hand instead: a 25 cm square at\n"
+    "                  X,Y,Z (room coordinates, 0.05..2 m from the eye across\n"
+    "                  the floor) facing the eye; implies --hud\n"
     "  --stereo IPD    two eyes IPD metres apart (e.g. 0.064) side by side,\n"
     "                  each with its own render queue; --eye is the head\n"
     "                  (an eye leaning over a cell edge sees from that cell)\n"
@@ -90,6 +94,64 @@ static int parse_int(const char *s, long lo, long hi, long *out)
         return 1;
     *out = v;
     return 0;
+}
+
+/* "X,Y,Z" to three numbers; nonzero on failure. */
+static int parse_vec3(const char *s, double out[3])
+{
+    char buf[256];
+    if (strlen(s) >= sizeof buf)
+        return 1;
+    strcpy(buf, s);
+    char *p1 = strchr(buf, ','), *p2 = p1 ? strchr(p1 + 1, ',') : NULL;
+    if (!p1 || !p2)
+        return 1;
+    *p1 = *p2 = 0;
+    return parse_double(buf, &out[0]) || parse_double(p1 + 1, &out[1]) ||
+           parse_double(p2 + 1, &out[2]);
+}
+
+/* Unit quaternion (x, y, z, w) turning +z towards dir (not vertical),
+ * keeping +y up: the hand's minimap faces the eye. */
+static void face_towards(const double dir[3], double q[4])
+{
+    double z[3] = {dir[0], dir[1], dir[2]};
+    double n = sqrt(z[0] * z[0] + z[1] * z[1] + z[2] * z[2]);
+    for (int i = 0; i < 3; i++)
+        z[i] /= n;
+    double x[3] = {z[2], 0, -z[0]}; /* up x z */
+    n = sqrt(x[0] * x[0] + x[2] * x[2]);
+    x[0] /= n;
+    x[2] /= n;
+    double y[3] = {z[1] * x[2] - z[2] * x[1], z[2] * x[0] - z[0] * x[2],
+                   z[0] * x[1] - z[1] * x[0]};
+    /* rotation matrix with columns x, y, z to a quaternion */
+    double m00 = x[0], m11 = y[1], m22 = z[2], tr = m00 + m11 + m22;
+    if (tr > 0) {
+        double s4 = sqrt(tr + 1.0) * 2;
+        q[3] = 0.25 * s4;
+        q[0] = (y[2] - z[1]) / s4;
+        q[1] = (z[0] - x[2]) / s4;
+        q[2] = (x[1] - y[0]) / s4;
+    } else if (m00 > m11 && m00 > m22) {
+        double s4 = sqrt(1.0 + m00 - m11 - m22) * 2;
+        q[3] = (y[2] - z[1]) / s4;
+        q[0] = 0.25 * s4;
+        q[1] = (y[0] + x[1]) / s4;
+        q[2] = (z[0] + x[2]) / s4;
+    } else if (m11 > m22) {
+        double s4 = sqrt(1.0 + m11 - m00 - m22) * 2;
+        q[3] = (z[0] - x[2]) / s4;
+        q[0] = (y[0] + x[1]) / s4;
+        q[1] = 0.25 * s4;
+        q[2] = (z[1] + y[2]) / s4;
+    } else {
+        double s4 = sqrt(1.0 + m22 - m00 - m11) * 2;
+        q[3] = (x[1] - y[0]) / s4;
+        q[0] = (z[0] + x[2]) / s4;
+        q[1] = (z[1] + y[2]) / s4;
+        q[2] = 0.25 * s4;
+    }
 }
 
 /* Write the tile ids of an ID image to path atomically: streamed into a
@@ -213,6 +275,7 @@ int cli_cmd_render(int argc, char **argv)
         return cli_finish_output(cmd);
     }
     const char *walk = "-", *eye_s = NULL, *out = NULL, *ids_path = NULL, *keyscript = NULL;
+    const char *hand_s = NULL;
     double yaw = 0, pitch = -30, fov = 90, ipd = 0;
     long w = 640, h = 480, frames = 1;
     int stats = 0, flags = HOL_RENDER_NO_HUD, ntargets = 0, use_egl = 0, frames_set = 0;
@@ -221,7 +284,7 @@ int cli_cmd_render(int argc, char **argv)
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         const char *val = i + 1 < argc ? argv[i + 1] : NULL;
-        int takes = !strcmp(a, "--walk") || !strcmp(a, "--eye") ||
+        int takes = !strcmp(a, "--walk") || !strcmp(a, "--eye") || !strcmp(a, "--hand") ||
                     !strcmp(a, "--yaw") || !strcmp(a, "--pitch") ||
                     !strcmp(a, "--size") || !strcmp(a, "--out") ||
                     !strcmp(a, "--tile-ids") || !strcmp(a, "--fov") ||
@@ -236,6 +299,8 @@ int cli_cmd_render(int argc, char **argv)
             walk = val;
         else if (!strcmp(a, "--eye"))
             eye_s = val;
+        else if (!strcmp(a, "--hand"))
+            hand_s = val;
         else if (!strcmp(a, "--out"))
             out = val;
         else if (!strcmp(a, "--tile-ids"))
@@ -388,24 +453,27 @@ int cli_cmd_render(int argc, char **argv)
     fd.cam.eye[0] = user.col + 0.5;
     fd.cam.eye[1] = 1.6;
     fd.cam.eye[2] = user.row + 0.5;
-    if (eye_s) {
-        char buf[256];
-        if (strlen(eye_s) >= sizeof buf) {
-            cli_error(cmd, 0, "--eye is not X,Y,Z");
+    if (eye_s && parse_vec3(eye_s, fd.cam.eye)) {
+        cli_error(cmd, 0, "--eye '%.40s' is not three numbers X,Y,Z", eye_s);
+        return CLI_EXIT_USAGE;
+    }
+    if (hand_s) {
+        double d[3];
+        if (parse_vec3(hand_s, fd.hand_pos)) {
+            cli_error(cmd, 0, "--hand '%.40s' is not three numbers X,Y,Z", hand_s);
             return CLI_EXIT_USAGE;
         }
-        strcpy(buf, eye_s);
-        char *p1 = strchr(buf, ','), *p2 = p1 ? strchr(p1 + 1, ',') : NULL;
-        if (!p1 || !p2) {
-            cli_error(cmd, 0, "--eye '%.40s' is not X,Y,Z", eye_s);
+        for (int k = 0; k < 3; k++)
+            d[k] = fd.cam.eye[k] - fd.hand_pos[k];
+        double hd = sqrt(d[0] * d[0] + d[2] * d[2]);
+        if (hd < 0.05 || hd > 2.0) {
+            cli_error(cmd, 0, "--hand must be 0.05 to 2 m from the eye across the floor");
             return CLI_EXIT_USAGE;
         }
-        *p1 = *p2 = 0;
-        if (parse_double(buf, &fd.cam.eye[0]) || parse_double(p1 + 1, &fd.cam.eye[1]) ||
-            parse_double(p2 + 1, &fd.cam.eye[2])) {
-            cli_error(cmd, 0, "--eye '%.40s' is not three numbers X,Y,Z", eye_s);
-            return CLI_EXIT_USAGE;
-        }
+        face_towards(d, fd.hand_orient);
+        fd.hand_size = 0.25;
+        fd.flags = (fd.flags & ~HOL_RENDER_NO_HUD) | HOL_RENDER_MINIMAP |
+                   HOL_RENDER_MINIMAP_HAND;
     }
     const double *he = fd.cam.eye;
     if (!(he[0] > user.col && he[0] < user.col + 1 && he[2] > user.row &&
