@@ -186,6 +186,26 @@ uint32_t hol__nav_intern(hol_nav *nav, const hol__node *n, int *out_new)
     return id;
 }
 
+uint32_t hol__nav_relax(hol_nav *nav, const hol__node *nx, uint32_t parent, int d,
+                        int g, int *out_full)
+{
+    int isnew;
+    if (g >= HOL__FMAX / 2)
+        return HOL__NIL;
+    uint32_t nid = hol__nav_intern(nav, nx, &isnew);
+    if (nid == HOL__NIL) {
+        *out_full = 1;
+        return HOL__NIL;
+    }
+    hol__node *q = &nav->nodes[nid];
+    if (!isnew && q->g <= g)
+        return HOL__NIL;
+    q->g = (uint16_t)g;
+    q->parent = parent;
+    q->dir = (uint8_t)d;
+    return nid;
+}
+
 /* Queue node id under its f; 0 when the entry pool is full. */
 int hol__nav_push(hol_nav *nav, uint32_t id)
 {
@@ -465,19 +485,12 @@ static hol_err hol__anytime(hol_nav *nav, const hol_room *start, hol_tile u, int
             if (!hol__nav_succ(nav, &cur, d, &nx))
                 continue;
             int g = cur.g + 1;
-            if (g >= HOL__FMAX / 2)
+            uint32_t nid = hol__nav_relax(nav, &nx, id, d, g, &full);
+            if (full)
+                break; /* arena full: stop */
+            if (nid == HOL__NIL)
                 continue;
-            uint32_t nid = hol__nav_intern(nav, &nx, &isnew);
-            if (nid == HOL__NIL) {
-                full = 1; /* arena full: stop */
-                break;
-            }
             hol__node *q = &nav->nodes[nid];
-            if (!isnew && q->g <= g)
-                continue;
-            q->g = (uint16_t)g;
-            q->parent = id;
-            q->dir = (uint8_t)d;
             int c;
             int hh = hol__nav_h(nav, q, &c);
             int f = g + hh;

@@ -64,6 +64,12 @@ typedef struct hol__walk {
 void hol__nav_reset(hol_nav *nav);
 /* Find the node equal to *n, or add it; HOL__NIL when the arena is full. */
 uint32_t hol__nav_intern(hol_nav *nav, const hol__node *n, int *out_new);
+/* Relax the step d from node `parent` to the state *nx at cost g: intern
+ * it and, when g improves on its cost, record g, parent and step and
+ * return its index. HOL__NIL: nothing improved (g too large, or known at
+ * least as cheap), or the arena is full (then *out_full = 1). */
+uint32_t hol__nav_relax(hol_nav *nav, const hol__node *nx, uint32_t parent, int d,
+                        int g, int *out_full);
 /* Queue node id under its f; 0 when the entry pool is full. */
 int hol__nav_push(hol_nav *nav, uint32_t id);
 /* The newest node of the lowest f (stale entries skipped), or HOL__NIL. */

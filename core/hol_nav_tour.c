@@ -431,19 +431,12 @@ hol_err hol_nav_tour(hol_nav *nav, const hol_room *start, const hol_tile *keys,
             nx.cell = (uint8_t)c2;
             nx.flags = (uint8_t)((cur.flags & HOL__MASK) | hol__keys_on(&t, nx.u.t));
             int g = cur.g + 1;
-            if (g >= HOL__FMAX / 2)
-                continue;
-            uint32_t nid = hol__nav_intern(nav, &nx, &isnew);
-            if (nid == HOL__NIL) {
-                full_arena = 1;
+            uint32_t nid = hol__nav_relax(nav, &nx, id, d, g, &full_arena);
+            if (full_arena)
                 break;
-            }
-            hol__node *q = &nav->nodes[nid];
-            if (!isnew && q->g <= g)
+            if (nid == HOL__NIL)
                 continue;
-            q->g = (uint16_t)g;
-            q->parent = id;
-            q->dir = (uint8_t)d;
+            hol__node *q = &nav->nodes[nid];
             int f = g + hol__tour_h(nav, &t, q);
             q->f = (uint16_t)(f < HOL__FMAX ? f : HOL__FMAX - 1);
             if (f >= ub)
