@@ -95,12 +95,12 @@ $(BUILD)/bench/%: tests/%.c $(CORE_SRC)
 # libFuzzer harnesses (clang); the replay build runs the corpora as tests.
 # A harness links the core; FUZZ_EXTRA_<name> adds sources and libraries.
 FUZZ_EXTRA_fuzz_png := render/hol_png.c -lz
-$(BUILD)/fuzz/%: fuzz/%.c $(CORE_SRC) $(RENDER_SRC)
+$(BUILD)/fuzz/%: fuzz/%.c $(wildcard fuzz/*.h) $(CORE_SRC) $(RENDER_SRC)
 	@mkdir -p $(dir $@)
 	$(FUZZ_CC) $(CSTD) -g -O1 -D_DEFAULT_SOURCE -fsanitize=fuzzer,address,undefined \
 	  -fno-sanitize-recover=all -o $@ $< $(CORE_SRC) $(FUZZ_EXTRA_$*) $(LDLIBS)
 
-$(BUILD)/fuzz-replay/%: fuzz/%.c fuzz/replay_main.c $(CORE_SRC) $(RENDER_SRC)
+$(BUILD)/fuzz-replay/%: fuzz/%.c fuzz/replay_main.c $(wildcard fuzz/*.h) $(CORE_SRC) $(RENDER_SRC)
 	@mkdir -p $(dir $@)
 	$(CC) $(CSTD) $(WARN) -O1 -g -D_DEFAULT_SOURCE -o $@ $< fuzz/replay_main.c $(CORE_SRC) \
 	  $(FUZZ_EXTRA_$*) $(LDLIBS)

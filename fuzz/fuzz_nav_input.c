@@ -17,11 +17,7 @@
 #include "../core/hol_room.h"
 #include "../core/hol_tile.h"
 
-#define CHECK(c)                                                                \
-    do {                                                                       \
-        if (!(c))                                                              \
-            abort();                                                           \
-    } while (0)
+#include "fuzz_check.h"
 
 static hol_nav *nav_small(void)
 {

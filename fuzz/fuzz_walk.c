@@ -14,11 +14,7 @@
 #include "../core/hol_room.h"
 #include "../core/hol_tile.h"
 
-#define CHECK(c)                                                                \
-    do {                                                                       \
-        if (!(c))                                                              \
-            abort();                                                           \
-    } while (0)
+#include "fuzz_check.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {

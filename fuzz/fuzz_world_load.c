@@ -15,11 +15,7 @@
 #include "../core/hol_world.h"
 #include "../core/hol_world_impl.h"
 
-#define CHECK(c)                                                                \
-    do {                                                                       \
-        if (!(c))                                                              \
-            abort();                                                           \
-    } while (0)
+#include "fuzz_check.h"
 
 static uint8_t *image_of(const hol_world *w, size_t *out_len)
 {
