@@ -42,6 +42,12 @@ int cli_for_each_line(const char *cmd, cli_line_fn fn, void *ctx);
 /* A positive decimal count (no sign, at most 2^40); 0 on failure. */
 size_t cli_parse_count(const char *s);
 
+/* If argv[*i] is "--budget N" or "--budget=N": parse N into *out_budget
+ * (advancing *i past N) and return 1, or report a bad count for cmd and
+ * return -1. Any other argument: 0. */
+int cli_budget_option(const char *cmd, int argc, char **argv, int *i,
+                      size_t *out_budget);
+
 /* Strip spaces and tabs at both ends. */
 void cli_trim(char **s, size_t *len);
 

@@ -134,3 +134,20 @@ size_t cli_parse_count(const char *s)
         return 0;
     return (size_t)v;
 }
+
+int cli_budget_option(const char *cmd, int argc, char **argv, int *i,
+                      size_t *out_budget)
+{
+    const char *a = argv[*i], *v;
+    if (!strcmp(a, "--budget"))
+        v = *i + 1 < argc ? argv[++*i] : NULL;
+    else if (!strncmp(a, "--budget=", 9))
+        v = a + 9;
+    else
+        return 0;
+    if (!(*out_budget = cli_parse_count(v))) {
+        cli_error(cmd, 0, "--budget needs a positive node count; see --help");
+        return -1;
+    }
+    return 1;
+}

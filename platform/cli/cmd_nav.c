@@ -75,19 +75,13 @@ int cli_cmd_nav(int argc, char **argv)
     size_t budget = 0;
     int stats = 0;
     for (int i = 1; i < argc; i++) {
+        int b = cli_budget_option(cmd, argc, argv, &i, &budget);
+        if (b < 0)
+            return CLI_EXIT_USAGE;
+        if (b > 0)
+            continue;
         if (!strcmp(argv[i], "--stats")) {
             stats = 1;
-        } else if (!strcmp(argv[i], "--budget")) {
-            if (i + 1 >= argc || !(budget = cli_parse_count(argv[i + 1]))) {
-                cli_error(cmd, 0, "--budget needs a positive node count; see --help");
-                return CLI_EXIT_USAGE;
-            }
-            i++;
-        } else if (!strncmp(argv[i], "--budget=", 9)) {
-            if (!(budget = cli_parse_count(argv[i] + 9))) {
-                cli_error(cmd, 0, "--budget needs a positive node count; see --help");
-                return CLI_EXIT_USAGE;
-            }
         } else {
             cli_error(cmd, 0, "unknown argument '%.40s'; see --help", argv[i]);
             return CLI_EXIT_USAGE;

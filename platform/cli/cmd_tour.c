@@ -43,14 +43,13 @@ int cli_cmd_tour(int argc, char **argv)
     const char *pos[HOL_NAV_TOUR_MAX_KEYS + 2];
     int npos = 0;
     for (int i = 1; i < argc; i++) {
+        int b = cli_budget_option(cmd, argc, argv, &i, &budget);
+        if (b < 0)
+            return CLI_EXIT_USAGE;
+        if (b > 0)
+            continue;
         const char *a = argv[i];
-        if (!strcmp(a, "--budget") || !strncmp(a, "--budget=", 9)) {
-            const char *v = a[8] == '=' ? a + 9 : (i + 1 < argc ? argv[++i] : NULL);
-            if (!(budget = cli_parse_count(v))) {
-                cli_error(cmd, 0, "--budget needs a positive node count; see --help");
-                return CLI_EXIT_USAGE;
-            }
-        } else if (!strcmp(a, "--stats")) {
+        if (!strcmp(a, "--stats")) {
             stats = 1;
         } else if (a[0] == '-' && a[1] != '\0') {
             cli_error(cmd, 0, "unknown option '%.40s'; see --help", a);
