@@ -15,6 +15,7 @@ const char *hol_err_str(hol_err e)
     case HOL_EVERSION: return "unsupported format version";
     case HOL_EBUDGET: return "search budget exhausted";
     case HOL_EUNSUPPORTED: return "not supported in this build";
+    case HOL_EOPEN: return "cannot open the file";
     case HOL_ERR_COUNT: break;
     }
     return "unknown error";

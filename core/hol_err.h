@@ -20,6 +20,7 @@ typedef enum hol_err {
     HOL_EVERSION,  /* a file of an unknown format version */
     HOL_EBUDGET,   /* a search stopped at its node or time budget */
     HOL_EUNSUPPORTED, /* a feature this build or platform does not have */
+    HOL_EOPEN,     /* a file that cannot be opened (errno says why) */
     HOL_ERR_COUNT
 } hol_err;
 

@@ -176,44 +176,22 @@ static int parse_args(int argc, char **argv, world_opts *o)
  * (a file that cannot be opened is bad input). */
 static int read_file(const char *path, uint8_t **out_buf, size_t *out_len)
 {
-    FILE *f = fopen(path, "rb");
-    if (!f) {
+    switch (hol_file_read_all(path, (size_t)1 << 36, out_buf, out_len)) {
+    case HOL_OK:
+        return 0;
+    case HOL_EOPEN:
         cli_error(CMD, 0, "cannot open '%s': %s", path, strerror(errno));
         return CLI_EXIT_USAGE;
-    }
-    size_t cap = 1 << 16, len = 0;
-    uint8_t *buf = malloc(cap);
-    for (;;) {
-        if (!buf) {
-            fclose(f);
-            cli_error(CMD, 0, "'%s': out of memory", path);
-            return CLI_EXIT_FAIL;
-        }
-        len += fread(buf + len, 1, cap - len, f);
-        if (len < cap)
-            break;
-        if (cap > ((size_t)1 << 36)) {
-            free(buf);
-            fclose(f);
-            cli_error(CMD, 0, "'%s' is too large for a world file", path);
-            return CLI_EXIT_USAGE;
-        }
-        uint8_t *nb = realloc(buf, cap * 2);
-        if (!nb)
-            free(buf);
-        buf = nb;
-        cap *= 2;
-    }
-    int bad = ferror(f);
-    fclose(f);
-    if (bad) {
-        free(buf);
+    case HOL_ECORRUPT:
+        cli_error(CMD, 0, "'%s' is too large for a world file", path);
+        return CLI_EXIT_USAGE;
+    case HOL_ENOMEM:
+        cli_error(CMD, 0, "'%s': out of memory", path);
+        return CLI_EXIT_FAIL;
+    default:
         cli_error(CMD, 0, "cannot read '%s'", path);
         return CLI_EXIT_FAIL;
     }
-    *out_buf = buf;
-    *out_len = len;
-    return 0;
 }
 
 /* Write buf to path atomically. Returns 1 on success. */

@@ -117,7 +117,7 @@ hol_err hol_file_read_all(const char *path, size_t max, uint8_t **out_data,
 {
     FILE *f = fopen(path, "rb");
     if (!f)
-        return HOL_EIO;
+        return HOL_EOPEN;
     uint8_t *buf = NULL;
     size_t n = 0, cap = 0;
     hol_err err = HOL_OK;

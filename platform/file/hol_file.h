@@ -8,7 +8,8 @@
  *   failure the temporary file is removed and PATH is left as it was.
  * - Errors are hol_err; errno still holds the cause for messages.
  * - hol_file_read_all reads at most `max` bytes into a malloc'ed buffer
- *   (free it with free()); a larger file is HOL_ECORRUPT.
+ *   (free it with free()); a larger file is HOL_ECORRUPT, a file that
+ *   cannot be opened HOL_EOPEN, a failed read HOL_EIO.
  * - Image files: PNG bytes through render/hol_png.h's encoder and decoder.
  */
 #ifndef HOL_FILE_H
