@@ -53,8 +53,13 @@ FUZZ_BIN := $(FUZZ_SRC:fuzz/%.c=$(BUILD)/fuzz/%)
 
 DEB_PACKAGES := make gcc clang libcmocka-dev libosmesa6-dev libegl-dev \
   libgles-dev libhidapi-dev libusb-1.0-0-dev libopenxr-dev \
-  libegl-mesa0 libgl1-mesa-dri gcc-aarch64-linux-gnu qemu-user xvfb zlib1g-dev \
-  libx11-dev
+  libegl-mesa0 libgl1-mesa-dri gcc-aarch64-linux-gnu libc6-dev-arm64-cross \
+  qemu-user xvfb zlib1g-dev libx11-dev
+# libc6-dev-arm64-cross is only a Recommends of gcc-aarch64-linux-gnu, and
+# deps installs without recommends: it must be named here.
+# apt waits up to APT_LOCK_WAIT seconds for another apt/dpkg to finish.
+APT_LOCK_WAIT ?= 120
+APT_GET = $$SUDO env DEBIAN_FRONTEND=noninteractive apt-get -o DPkg::Lock::Timeout=$(APT_LOCK_WAIT)
 
 .PHONY: all test purity unit render-test cli-test fuzz-replay fuzz bench san clean deps \
         deps-cross check-clang cross-test
@@ -158,16 +163,15 @@ deps:
 	if [ -z "$$missing" ]; then echo "make deps: all packages present"; \
 	else SUDO=$$( [ "$$(id -u)" = 0 ] || echo sudo ); \
 	  echo "make deps: installing$$missing"; \
-	  $$SUDO apt-get update -qq && \
-	  DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq --no-install-recommends $$missing; fi
+	  $(APT_GET) update -qq && \
+	  $(APT_GET) install -y -qq --no-install-recommends $$missing; fi
 
 # cmocka for arm64 comes from Debian's multiarch archive.
 deps-cross: deps
 	@if dpkg -s libcmocka-dev:arm64 >/dev/null 2>&1; then :; else \
 	  SUDO=$$( [ "$$(id -u)" = 0 ] || echo sudo ); \
-	  $$SUDO dpkg --add-architecture arm64 && $$SUDO apt-get update -qq && \
-	  DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq \
-	    --no-install-recommends libcmocka-dev:arm64; fi
+	  $$SUDO dpkg --add-architecture arm64 && $(APT_GET) update -qq && \
+	  $(APT_GET) install -y -qq --no-install-recommends libcmocka-dev:arm64; fi
 
 clean:
 	rm -rf $(BUILD)
