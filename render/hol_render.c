@@ -765,47 +765,6 @@ void hol_render_read_rgba(hol_render *r, int w, int h, uint8_t *out_rgba)
     }
 }
 
-hol_err hol_render_eye_state(const hol_room *user, const double head[3],
-                             const double eye[3], hol_room *out_state)
-{
-    double hx = head[0], hz = head[2], ex = eye[0], ez = eye[2];
-    if (!(hx > user->col && hx < user->col + 1 && hz > user->row && hz < user->row + 1))
-        return HOL_EARG;
-    if (!(ex > 0 && ex < HOL_ROOM_SIZE && ez > 0 && ez < HOL_ROOM_SIZE))
-        return HOL_EROOM;
-    /* crossings of the grid lines x = k and z = k, in order along the
-     * segment (at most 2 + 2 in a 3 x 3 room) */
-    double t[8];
-    int d[8], n = 0;
-    for (int k = 1; k < HOL_ROOM_SIZE; k++) {
-        if ((hx < k) != (ex < k)) {
-            t[n] = (k - hx) / (ex - hx);
-            d[n++] = ex > hx ? HOL_DIR_E : HOL_DIR_W;
-        }
-        if ((hz < k) != (ez < k)) {
-            t[n] = (k - hz) / (ez - hz);
-            d[n++] = ez > hz ? HOL_DIR_S : HOL_DIR_N;
-        }
-    }
-    for (int i = 1; i < n; i++) /* insertion sort by t */
-        for (int j = i; j > 0 && t[j] < t[j - 1]; j--) {
-            double tt = t[j];
-            t[j] = t[j - 1];
-            t[j - 1] = tt;
-            int dd = d[j];
-            d[j] = d[j - 1];
-            d[j - 1] = dd;
-        }
-    hol_room st = *user;
-    for (int i = 0; i < n; i++) {
-        hol_err err = hol_room_step(&st, d[i]);
-        if (err)
-            return err;
-    }
-    *out_state = st;
-    return HOL_OK;
-}
-
 int hol_render_decode_id(const uint8_t rgba[4])
 {
     return (int)rgba[0] + 256 * (int)rgba[1] - 1;

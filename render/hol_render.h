@@ -121,14 +121,8 @@ void hol_render_invalidate(hol_render *r);
 hol_err hol_render_frame(hol_render *r, const hol_frame_desc *f,
                          hol_render_stats *out_stats);
 
-/* The room state one eye sees from (stereo): the user's state walked
- * across the cells that the floor projection of the segment from the head
- * (inside the user's cell) to the eye crosses, so an eye that leans over a
- * cell edge sees exactly what a sight line from the head through it would.
- * Errors: HOL_EARG (head not inside the user's cell), HOL_EROOM (the eye is
- * outside the room), HOL_ERANGE. */
-hol_err hol_render_eye_state(const hol_room *user, const double head[3],
-                             const double eye[3], hol_room *out_state);
+/* The room state an eye sees from (stereo) is the core's business:
+ * hol_motion_eye_state (core/hol_motion.h). */
 
 /* The view of the last frame (branches, for decoding ID images). */
 const hol_view *hol_render_last_view(const hol_render *r);

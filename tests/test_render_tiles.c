@@ -501,42 +501,6 @@ static void test_stencil_codes_are_prefix_codes(void **state)
     (void)pairs;
 }
 
-/* Stereo: the state an eye sees from is the user's state walked along the
- * head-to-eye segment. */
-static void test_eye_state(void **state)
-{
-    (void)state;
-    hol_room u = state_of("NE"), got, want;
-    double head[3] = {2.95, 1.6, 0.5};
-    double same[3] = {2.9, 1.6, 0.45};
-    assert_int_equal(hol_render_eye_state(&u, head, same, &got), HOL_OK);
-    assert_memory_equal(&got, &u, sizeof u);
-    /* leaning south over the edge z = 1 */
-    head[0] = 2.5;
-    head[2] = 0.98;
-    double south[3] = {2.5, 1.6, 1.02};
-    assert_int_equal(hol_render_eye_state(&u, head, south, &got), HOL_OK);
-    want = u;
-    assert_int_equal(hol_room_step(&want, HOL_DIR_S), HOL_OK);
-    assert_memory_equal(&got, &want, sizeof want);
-    /* across a corner: the segment crosses x = 2 first, then z = 1 */
-    head[0] = 2.01;
-    head[2] = 0.97;
-    double diag[3] = {1.97, 1.6, 1.02};
-    assert_int_equal(hol_render_eye_state(&u, head, diag, &got), HOL_OK);
-    want = u;
-    assert_int_equal(hol_room_step(&want, HOL_DIR_W), HOL_OK);
-    assert_int_equal(hol_room_step(&want, HOL_DIR_S), HOL_OK);
-    assert_memory_equal(&got, &want, sizeof want);
-    /* errors */
-    double out_room[3] = {3.01, 1.6, 0.5};
-    head[0] = 2.99;
-    head[2] = 0.5;
-    assert_int_equal(hol_render_eye_state(&u, head, out_room, &got), HOL_EROOM);
-    double bad_head[3] = {1.5, 1.6, 1.5};
-    assert_int_equal(hol_render_eye_state(&u, bad_head, same, &got), HOL_EARG);
-}
-
 static void test_ids_decode(void **state)
 {
     (void)state;
@@ -550,7 +514,6 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_ids_decode),
-        cmocka_unit_test(test_eye_state),
         cmocka_unit_test(test_stencil_codes_are_prefix_codes),
         cmocka_unit_test(test_bare_views_match_ray_walk),
         cmocka_unit_test(test_full_views_match_ray_walk),

@@ -8,6 +8,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "../../core/hol_motion.h"
 #include "../../core/hol_nav.h"
 #include "../../core/hol_room.h"
 #include "../../core/hol_tile.h"
@@ -186,8 +187,8 @@ static int cmp_double(const void *a, const void *b)
 /* The desktop build: a window (EGL on X11; works under Xvfb). Arrow keys
  * or W/S walk and turn, A/D step sideways, Page Up/Down look up and down,
  * Escape or q quits. Walking over a cell edge is a room step: the user's
- * state follows the eye (hol_render_eye_state), the room bounds hold it
- * in. frames > 0 stops after that many frames; out then gets the last. */
+ * state follows the eye (hol_motion_pancake), the hedges hold it in.
+ * frames > 0 stops after that many frames; out then gets the last. */
 static int run_window(const char *cmd, hol_x11 *xw, hol_render *r, hol_world *world,
                       hol_frame_desc *fd, long frames, const char *out, uint8_t *rgba,
                       const char *script)
@@ -196,6 +197,16 @@ static int run_window(const char *cmd, hol_x11 *xw, hol_render *r, hol_world *wo
     memset(&keys, 0, sizeof keys);
     long k = 0;
     double t = 0;
+    hol_motion mo;
+    hol_motion_desc md;
+    memset(&md, 0, sizeof md);
+    md.speed = 1.8; /* 3 cm a frame at 60 Hz */
+    md.margin = 0.05;
+    md.eye_height = fd->cam.eye[1];
+    hol_motion_init(&mo, &fd->user, &md);
+    memcpy(mo.head, fd->cam.eye, sizeof mo.head);
+    mo.yaw_deg = fd->cam.yaw_deg;
+    mo.pitch_deg = fd->cam.pitch_deg;
     if (script && frames <= 0)
         frames = (long)strlen(script);
     while (hol_x11_poll(xw, &keys) && (frames <= 0 || k < frames)) {
@@ -212,34 +223,27 @@ static int run_window(const char *cmd, hol_x11 *xw, hol_render *r, hol_world *wo
             keys.look_up = ch == 'u';
             keys.look_down = ch == 'n';
         }
+        /* pancake motion: the core follows the head over cell edges */
         hol_camera *c = &fd->cam;
-        c->yaw_deg += 2.0 * (keys.left - keys.right);
-        c->pitch_deg += 1.5 * (keys.look_up - keys.look_down);
-        c->pitch_deg = c->pitch_deg < -89 ? -89 : c->pitch_deg > 89 ? 89 : c->pitch_deg;
-        double yr = c->yaw_deg * 3.14159265358979323846 / 180;
-        double fwd = 0.03 * (keys.up - keys.down), side = 0.03 * (keys.strafe_r - keys.strafe_l);
-        double eye[3] = {c->eye[0] - fwd * sin(yr) + side * cos(yr), c->eye[1],
-                         c->eye[2] - fwd * cos(yr) - side * sin(yr)};
-        /* the hedges hold the user in; never stand exactly on a grid line */
-        for (int a = 0; a < 3; a += 2) {
-            eye[a] = eye[a] < 0.05 ? 0.05 : eye[a] > HOL_ROOM_SIZE - 0.05 ? HOL_ROOM_SIZE - 0.05 : eye[a];
-            if (eye[a] == floor(eye[a]))
-                eye[a] += 1e-6;
+        float move[2] = {(float)(keys.strafe_r - keys.strafe_l), (float)(keys.up - keys.down)};
+        float turn[2] = {(float)(keys.left - keys.right), (float)(keys.look_up - keys.look_down)};
+        hol_motion_steps ms;
+        hol_err merr = hol_motion_pancake(&mo, move, turn, 1.0 / 60.0, &ms);
+        if (merr && merr != HOL_ERANGE) {
+            cli_error(cmd, 0, "motion failed: %s", hol_err_str(merr));
+            return CLI_EXIT_FAIL;
         }
-        hol_room next;
-        if ((eye[0] != c->eye[0] || eye[2] != c->eye[2]) &&
-            hol_render_eye_state(&fd->user, c->eye, eye, &next) == HOL_OK) {
-            if (memcmp(&next, &fd->user, sizeof next)) {
-                fd->steps_taken += abs(next.col - fd->user.col) + abs(next.row - fd->user.row);
-                fd->user = next;
-                if (hol_world_update(world, &fd->user)) {
-                    cli_error(cmd, 0, "cannot generate the world");
-                    return CLI_EXIT_FAIL;
-                }
+        if (ms.n) {
+            fd->steps_taken += ms.n;
+            fd->user = mo.user;
+            if (hol_world_update(world, &fd->user)) {
+                cli_error(cmd, 0, "cannot generate the world");
+                return CLI_EXIT_FAIL;
             }
-            c->eye[0] = eye[0];
-            c->eye[2] = eye[2];
         }
+        memcpy(c->eye, mo.head, sizeof c->eye);
+        c->yaw_deg = mo.yaw_deg;
+        c->pitch_deg = mo.pitch_deg;
         c->width = xw->w;
         c->height = xw->h;
         fd->time_s = t;
@@ -579,7 +583,7 @@ int cli_cmd_render(int argc, char **argv)
             eye_fd[e].cam.eye[0] = fd.cam.eye[0] + side * cos(yr);
             eye_fd[e].cam.eye[2] = fd.cam.eye[2] - side * sin(yr);
             eye_fd[e].cam.width = ew;
-            err = hol_render_eye_state(&user, fd.cam.eye, eye_fd[e].cam.eye,
+            err = hol_motion_eye_state(&user, fd.cam.eye, eye_fd[e].cam.eye,
                                        &eye_fd[e].user);
             if (err) {
                 cli_error(cmd, 0, "--stereo: the %s eye is %s", e ? "right" : "left",

@@ -1,0 +1,174 @@
+/* hol_motion.c - room following (see hol_motion.h). */
+#include "hol_motion.h"
+
+#include <math.h>
+#include <string.h>
+
+#define HOL__PI 3.14159265358979323846
+
+/* Crossings of the grid lines x = k and z = k by the floor segment from
+ * (hx, hz) to (ex, ez), in order along it (ties: x first): the room
+ * directions in out_dir and the segment parameters in out_t. */
+static int hol__crossings(double hx, double hz, double ex, double ez,
+                          uint8_t out_dir[HOL_MOTION_MAX_STEPS],
+                          double out_t[HOL_MOTION_MAX_STEPS])
+{
+    int n = 0;
+    for (int k = 1; k < HOL_ROOM_SIZE; k++) {
+        if ((hx < k) != (ex < k)) {
+            out_t[n] = (k - hx) / (ex - hx);
+            out_dir[n++] = ex > hx ? HOL_DIR_E : HOL_DIR_W;
+        }
+    }
+    for (int k = 1; k < HOL_ROOM_SIZE; k++) {
+        if ((hz < k) != (ez < k)) {
+            out_t[n] = (k - hz) / (ez - hz);
+            out_dir[n++] = ez > hz ? HOL_DIR_S : HOL_DIR_N;
+        }
+    }
+    for (int i = 1; i < n; i++) /* stable insertion sort by t */
+        for (int j = i; j > 0 && out_t[j] < out_t[j - 1]; j--) {
+            double tt = out_t[j];
+            out_t[j] = out_t[j - 1];
+            out_t[j - 1] = tt;
+            uint8_t dd = out_dir[j];
+            out_dir[j] = out_dir[j - 1];
+            out_dir[j - 1] = dd;
+        }
+    return n;
+}
+
+static int hol__inside_cell(const hol_room *u, double x, double z)
+{
+    return x > u->col && x < u->col + 1 && z > u->row && z < u->row + 1;
+}
+
+hol_err hol_motion_eye_state(const hol_room *user, const double head[3],
+                             const double eye[3], hol_room *out_state)
+{
+    double hx = head[0], hz = head[2], ex = eye[0], ez = eye[2];
+    if (!hol__inside_cell(user, hx, hz))
+        return HOL_EARG;
+    if (!(ex > 0 && ex < HOL_ROOM_SIZE && ez > 0 && ez < HOL_ROOM_SIZE))
+        return HOL_EROOM;
+    uint8_t dir[HOL_MOTION_MAX_STEPS];
+    double t[HOL_MOTION_MAX_STEPS];
+    int n = hol__crossings(hx, hz, ex, ez, dir, t);
+    hol_room st = *user;
+    for (int i = 0; i < n; i++) {
+        hol_err err = hol_room_step(&st, dir[i]);
+        if (err)
+            return err;
+    }
+    *out_state = st;
+    return HOL_OK;
+}
+
+void hol_motion_init(hol_motion *m, const hol_room *user, const hol_motion_desc *desc)
+{
+    memset(m, 0, sizeof *m);
+    if (desc)
+        m->d = *desc;
+    if (!(m->d.speed > 0))
+        m->d.speed = 1.4;
+    if (!(m->d.turn_rate > 0))
+        m->d.turn_rate = 120;
+    if (!(m->d.pitch_rate > 0))
+        m->d.pitch_rate = 90;
+    if (!(m->d.margin > 0))
+        m->d.margin = 0.15;
+    if (m->d.margin < 1e-3)
+        m->d.margin = 1e-3;
+    if (m->d.margin > 0.45)
+        m->d.margin = 0.45;
+    if (!(m->d.eye_height > 0))
+        m->d.eye_height = 1.6;
+    m->user = *user;
+    m->head[0] = user->col + 0.5;
+    m->head[1] = m->d.eye_height;
+    m->head[2] = user->row + 0.5;
+    m->pitch_deg = -30;
+}
+
+/* Clamp to the move area less the margin; off the grid lines. */
+static double hol__clamp_axis(double v, double margin)
+{
+    if (!(v == v))
+        v = 0.5 * HOL_ROOM_SIZE;
+    if (v < margin)
+        v = margin;
+    if (v > HOL_ROOM_SIZE - margin)
+        v = HOL_ROOM_SIZE - margin;
+    if (v == floor(v))
+        v += 1e-6;
+    return v;
+}
+
+hol_err hol_motion_move_to(hol_motion *m, const double pos[3],
+                           hol_motion_steps *out_steps)
+{
+    hol_motion_steps local;
+    hol_motion_steps *s = out_steps ? out_steps : &local;
+    s->n = 0;
+    double x = hol__clamp_axis(pos[0], m->d.margin);
+    double z = hol__clamp_axis(pos[2], m->d.margin);
+    uint8_t dir[HOL_MOTION_MAX_STEPS];
+    double t[HOL_MOTION_MAX_STEPS];
+    double hx = m->head[0], hz = m->head[2];
+    int n = hol__crossings(hx, hz, x, z, dir, t);
+    for (int i = 0; i < n; i++) {
+        hol_room next = m->user;
+        hol_err err = hol_room_step(&next, dir[i]);
+        if (err) {
+            /* stop just before this edge, inside the current cell */
+            double tt = t[i];
+            double cx = hx + (x - hx) * tt, cz = hz + (z - hz) * tt;
+            double lo_x = m->user.col + 1e-6, hi_x = m->user.col + 1 - 1e-6;
+            double lo_z = m->user.row + 1e-6, hi_z = m->user.row + 1 - 1e-6;
+            m->head[0] = cx < lo_x ? lo_x : cx > hi_x ? hi_x : cx;
+            m->head[2] = cz < lo_z ? lo_z : cz > hi_z ? hi_z : cz;
+            m->head[1] = pos[1];
+            return err;
+        }
+        m->user = next;
+        m->steps++;
+        s->dir[s->n] = dir[i];
+        s->after[s->n++] = next;
+    }
+    m->head[0] = x;
+    m->head[1] = pos[1];
+    m->head[2] = z;
+    return HOL_OK;
+}
+
+static double hol__clamp1(float v)
+{
+    return !(v == v) ? 0 : v < -1 ? -1 : v > 1 ? 1 : v;
+}
+
+hol_err hol_motion_pancake(hol_motion *m, const float move[2], const float turn[2],
+                           double dt, hol_motion_steps *out_steps)
+{
+    if (!(dt >= 0) || !isfinite(dt)) {
+        if (out_steps)
+            out_steps->n = 0;
+        return HOL_EARG;
+    }
+    m->yaw_deg += hol__clamp1(turn[0]) * m->d.turn_rate * dt;
+    m->yaw_deg = fmod(m->yaw_deg, 360.0);
+    if (m->yaw_deg < 0)
+        m->yaw_deg += 360.0;
+    m->pitch_deg += hol__clamp1(turn[1]) * m->d.pitch_rate * dt;
+    m->pitch_deg = m->pitch_deg < -89 ? -89 : m->pitch_deg > 89 ? 89 : m->pitch_deg;
+    double yr = m->yaw_deg * HOL__PI / 180;
+    double fwd = hol__clamp1(move[1]) * m->d.speed * dt;
+    double side = hol__clamp1(move[0]) * m->d.speed * dt;
+    double pos[3] = {m->head[0] - fwd * sin(yr) + side * cos(yr), m->head[1],
+                     m->head[2] - fwd * cos(yr) - side * sin(yr)};
+    if (fwd == 0 && side == 0) {
+        if (out_steps)
+            out_steps->n = 0;
+        return HOL_OK;
+    }
+    return hol_motion_move_to(m, pos, out_steps);
+}
