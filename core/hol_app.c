@@ -1,0 +1,497 @@
+/* hol_app.c - the app step (see hol_app.h). */
+#include "hol_app.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "hol_input_io.h"
+#include "hol_nav.h"
+#include "hol_world.h"
+
+#define HOL__PI 3.14159265358979323846
+#define HOL__MAX_DT 0.1 /* longest frame the clocks and motion take */
+
+struct hol_app {
+    hol_app_desc d;
+    hol_nav *nav;
+    int own_nav;
+    void *world_mem;
+    size_t world_size;
+    hol_world *world;
+    hol_app_level level;
+    int have_level;
+    hol_room start_room;
+    hol_motion mo;
+    hol_app_view view;
+    hol_app_events ev;
+    hol_input prev;
+    int have_prev;
+    int menu;
+    int pending_start;
+    /* the game */
+    int done;
+    unsigned keys_held; /* bit per key */
+    int steps, optimum, remaining;
+    double level_t;
+    long next_sample; /* index of the next 10 Hz head sample */
+    uint8_t walk[HOL_NAV_WALK_MAX]; /* replan scratch */
+    int nwalk;
+};
+
+static void *hol__alloc(const hol_app_desc *d, size_t n)
+{
+    return d->alloc.alloc ? d->alloc.alloc(n, d->alloc.user) : malloc(n);
+}
+
+static void hol__free(const hol_app_desc *d, void *p)
+{
+    if (d->alloc.free)
+        d->alloc.free(p, d->alloc.user);
+    else
+        free(p);
+}
+
+static hol_world_desc hol__world_desc(const hol_app *app, uint64_t seed)
+{
+    hol_world_desc wd;
+    memset(&wd, 0, sizeof wd);
+    wd.seed = seed;
+    wd.capacity = app->d.world_capacity;
+    return wd;
+}
+
+hol_err hol_app_create(const hol_app_desc *desc, hol_app **out_app)
+{
+    hol_app_desc d;
+    memset(&d, 0, sizeof d);
+    if (desc)
+        d = *desc;
+    if (!out_app || (!d.alloc.alloc != !d.alloc.free) || d.stray_steps < 0 ||
+        !(d.ipd >= 0 && d.ipd <= 0.5))
+        return HOL_EARG;
+    if (!d.world_capacity)
+        d.world_capacity = 1u << 16;
+    if (!d.stray_steps)
+        d.stray_steps = 3;
+    if (!(d.ipd > 0))
+        d.ipd = 0.064;
+    hol_world_desc wd;
+    memset(&wd, 0, sizeof wd);
+    wd.capacity = d.world_capacity;
+    size_t wsize = hol_world_mem_size(&wd);
+    if (!wsize)
+        return HOL_EARG;
+    size_t head = (sizeof(hol_app) + 63) & ~(size_t)63;
+    uint8_t *mem = hol__alloc(&d, head + wsize + 64);
+    if (!mem)
+        return HOL_ENOMEM;
+    hol_app *app = (hol_app *)(void *)mem;
+    memset(app, 0, sizeof *app);
+    app->d = d;
+    uintptr_t w = ((uintptr_t)(mem + head) + 63) & ~(uintptr_t)63;
+    app->world_mem = (void *)w;
+    app->world_size = wsize;
+    hol_err err = hol_world_init(app->world_mem, wsize, &wd, &app->world);
+    if (!err && !d.nav) {
+        hol_nav_desc nd;
+        memset(&nd, 0, sizeof nd);
+        nd.alloc_fn = d.alloc.alloc;
+        nd.free_fn = d.alloc.free;
+        nd.user = d.alloc.user;
+        err = hol_nav_create(&nd, &app->nav);
+        app->own_nav = !err;
+    } else {
+        app->nav = d.nav;
+    }
+    if (err) {
+        hol__free(&d, mem);
+        return err;
+    }
+    app->start_room = hol_room_start();
+    hol_motion_init(&app->mo, &app->start_room, &d.motion);
+    app->optimum = app->remaining = -1;
+    *out_app = app;
+    return HOL_OK;
+}
+
+void hol_app_destroy(hol_app *app)
+{
+    if (!app)
+        return;
+    if (app->own_nav)
+        hol_nav_destroy(app->nav);
+    hol_app_desc d = app->d;
+    hol__free(&d, app);
+}
+
+const hol_app_view *hol_app_get_view(const hol_app *app)
+{
+    return &app->view;
+}
+
+const hol_app_events *hol_app_get_events(const hol_app *app)
+{
+    return &app->ev;
+}
+
+hol_world *hol_app_world(hol_app *app)
+{
+    return app->world;
+}
+
+static void hol__fill_view(hol_app *app, const hol_input *in);
+
+/* ---- the game ------------------------------------------------------------ */
+
+/* Optimal steps left from room r (the walk in app->walk), or -1. *exact
+ * receives whether the navigator proved it. */
+static hol_err hol__plan(hol_app *app, const hol_room *r, int *out_len, int *exact)
+{
+    hol_nav_result res;
+    hol_err err = HOL_OK;
+    const hol_app_level *L = &app->level;
+    *exact = 1;
+    if (L->mode == HOL_APP_FLAG) {
+        err = hol_nav_find(app->nav, r, L->flag, 0, app->walk, sizeof app->walk, &res);
+    } else if (L->mode == HOL_APP_KEYS) {
+        hol_tile left[HOL_APP_MAX_KEYS];
+        int n = 0;
+        for (int k = 0; k < L->nkeys; k++)
+            if (!(app->keys_held >> k & 1))
+                left[n++] = L->keys[k];
+        err = hol_nav_tour(app->nav, r, left, n, L->chest, 0, app->walk, sizeof app->walk,
+                           &res);
+    } else {
+        *out_len = -1;
+        app->nwalk = 0;
+        return HOL_OK;
+    }
+    if (err)
+        return err;
+    *out_len = res.len;
+    *exact = res.exact;
+    app->nwalk = res.len;
+    return HOL_OK;
+}
+
+/* A room step entered r: collect what lies there. */
+static void hol__enter(hol_app *app, const hol_room *r)
+{
+    const hol_app_level *L = &app->level;
+    if (L->mode == HOL_APP_FLAG && hol_tile_eq(r->tile, L->flag))
+        app->done = 1;
+    if (L->mode == HOL_APP_KEYS) {
+        for (int k = 0; k < L->nkeys; k++)
+            if (hol_tile_eq(r->tile, L->keys[k]))
+                app->keys_held |= 1u << k;
+        if (app->keys_held == (1u << L->nkeys) - 1 && hol_tile_eq(r->tile, L->chest))
+            app->done = 1;
+    }
+}
+
+static void hol__summary(hol_app *app, hol_app_end end)
+{
+    hol_app_summary *s = &app->ev.summary;
+    s->mode = app->level.mode;
+    s->seed = app->level.seed;
+    s->steps = app->steps;
+    s->optimum = app->optimum;
+    s->time_s = app->level_t;
+    s->end = end;
+    app->ev.level_ended = end;
+}
+
+static hol_err hol__begin(hol_app *app)
+{
+    const hol_app_level *L = &app->level;
+    hol_world_desc wd = hol__world_desc(app, L->seed);
+    hol_err err = hol_world_init(app->world_mem, app->world_size, &wd, &app->world);
+    if (err)
+        return err;
+    hol_room r = hol_room_start();
+    if ((err = hol_world_update(app->world, &r)))
+        return err;
+    for (int i = 0; i < L->nstart; i++) {
+        err = hol_room_step(&r, L->start[i]);
+        if (err)
+            return err == HOL_EROOM ? HOL_EARG : err;
+        if ((err = hol_world_update(app->world, &r)))
+            return err;
+    }
+    app->start_room = r;
+    /* objectives: never on the start tile; placed in the world */
+    hol_tile obj[HOL_APP_MAX_OBJECTIVES];
+    hol_object kind[HOL_APP_MAX_OBJECTIVES];
+    int nobj = 0;
+    if (L->mode == HOL_APP_FLAG) {
+        obj[nobj] = L->flag;
+        kind[nobj++] = HOL_OBJ_FLAG;
+    } else if (L->mode == HOL_APP_KEYS) {
+        if (L->nkeys < 1 || L->nkeys > HOL_APP_MAX_KEYS)
+            return HOL_EARG;
+        for (int k = 0; k < L->nkeys; k++) {
+            obj[nobj] = L->keys[k];
+            kind[nobj++] = HOL_OBJ_KEY;
+        }
+        obj[nobj] = L->chest;
+        kind[nobj++] = HOL_OBJ_CHEST;
+    }
+    for (int i = 0; i < nobj; i++) {
+        if (hol_tile_eq(obj[i], r.tile))
+            return HOL_EARG;
+        hol_tile placed;
+        (void)hol_world_reserve(app->world, obj[i], 0, kind[i], &placed);
+    }
+    app->done = 0;
+    app->keys_held = 0;
+    app->steps = 0;
+    app->level_t = 0;
+    app->next_sample = 0;
+    app->menu = 0;
+    int exact = 1;
+    if ((err = hol__plan(app, &r, &app->optimum, &exact)))
+        return err;
+    if (!exact)
+        return HOL_EBUDGET;
+    app->remaining = app->optimum;
+    hol_motion_init(&app->mo, &r, &app->d.motion);
+    app->pending_start = 1;
+    app->view.state = HOL_APP_PLAYING;
+    app->view.paused = 0;
+    hol__fill_view(app, NULL);
+    return HOL_OK;
+}
+
+hol_err hol_app_start_level(hol_app *app, const hol_app_level *level)
+{
+    if (!level || level->mode < 0 || level->mode > HOL_APP_TUTORIAL || level->nstart < 0 ||
+        level->nstart > (int)sizeof level->start || level->minimap < 0 ||
+        level->minimap > HOL_MINIMAP_OFF)
+        return HOL_EARG;
+    app->level = *level;
+    app->have_level = 1;
+    app->view.map.place = level->minimap;
+    hol_err err = hol__begin(app);
+    if (err)
+        app->have_level = 0;
+    return err;
+}
+
+/* ---- the view ------------------------------------------------------------ */
+
+static void hol__quat_from_yaw_pitch(double yaw_deg, double pitch_deg, double q[4])
+{
+    double y = yaw_deg * HOL__PI / 360, p = pitch_deg * HOL__PI / 360;
+    double sy = sin(y), cy = cos(y), sp = sin(p), cp = cos(p);
+    q[0] = cy * sp;
+    q[1] = sy * cp;
+    q[2] = -sy * sp;
+    q[3] = cy * cp;
+}
+
+static void hol__yaw_pitch_from_quat(const float qf[4], double *yaw, double *pitch)
+{
+    double x = qf[0], y = qf[1], z = qf[2], w = qf[3];
+    double n = sqrt(x * x + y * y + z * z + w * w);
+    if (!(n > 0))
+        return;
+    x /= n, y /= n, z /= n, w /= n;
+    double fx = -2 * (x * z + w * y), fy = -2 * (y * z - w * x),
+           fz = -(1 - 2 * (x * x + y * y));
+    fy = fy < -1 ? -1 : fy > 1 ? 1 : fy;
+    *pitch = asin(fy) * 180 / HOL__PI;
+    *yaw = atan2(-fx, -fz) * 180 / HOL__PI;
+}
+
+static void hol__fill_view(hol_app *app, const hol_input *in)
+{
+    hol_app_view *v = &app->view;
+    const hol_app_level *L = &app->level;
+    v->user = app->mo.user;
+    memcpy(v->head, app->mo.head, sizeof v->head);
+    v->yaw_deg = app->mo.yaw_deg;
+    v->pitch_deg = app->mo.pitch_deg;
+    if (in && (in->flags & HOL_INPUT_HEAD_VALID)) {
+        for (int i = 0; i < 4; i++)
+            v->head_quat[i] = in->head.quat[i];
+    } else {
+        hol__quat_from_yaw_pitch(v->yaw_deg, v->pitch_deg, v->head_quat);
+    }
+    /* eyes: head +- ipd/2 along the head's right axis, in the floor plane */
+    double x = v->head_quat[0], y = v->head_quat[1], z = v->head_quat[2], w = v->head_quat[3];
+    double rx = 1 - 2 * (y * y + z * z), rz = 2 * (x * z - w * y);
+    double rn = sqrt(rx * rx + rz * rz);
+    if (!(rn > 1e-9))
+        rx = 1, rz = 0, rn = 1;
+    for (int e = 0; e < 2; e++) {
+        double s = (e ? 0.5 : -0.5) * app->d.ipd / rn;
+        v->eye[e][0] = v->head[0] + s * rx;
+        v->eye[e][1] = v->head[1];
+        v->eye[e][2] = v->head[2] + s * rz;
+        if (hol_motion_eye_state(&v->user, v->head, v->eye[e], &v->eye_user[e]))
+            v->eye_user[e] = v->user;
+    }
+    /* HUD */
+    hol_app_hud *h = &v->hud;
+    h->steps = app->steps;
+    h->optimum = app->optimum;
+    h->remaining = app->remaining;
+    h->elapsed_s = app->level_t;
+    h->keys_total = L->mode == HOL_APP_KEYS ? L->nkeys : 0;
+    h->keys_held = 0;
+    for (int k = 0; k < h->keys_total; k++)
+        h->keys_held += (int)(app->keys_held >> k & 1);
+    hol_tile_print(v->user.tile, h->address);
+    switch (L->mode) {
+    case HOL_APP_FLAG: snprintf(h->objective, sizeof h->objective, "Find the flag"); break;
+    case HOL_APP_KEYS:
+        if (h->keys_held < h->keys_total)
+            snprintf(h->objective, sizeof h->objective, "Keys %d/%d", h->keys_held,
+                     h->keys_total);
+        else
+            snprintf(h->objective, sizeof h->objective, "Bring the keys to the chest");
+        break;
+    case HOL_APP_TUTORIAL: snprintf(h->objective, sizeof h->objective, "Tutorial"); break;
+    default: snprintf(h->objective, sizeof h->objective, "Explore"); break;
+    }
+    if (v->state == HOL_APP_DONE)
+        snprintf(h->status, sizeof h->status, "Done: %d steps, best %d", app->steps,
+                 app->optimum);
+    else if (v->paused)
+        snprintf(h->status, sizeof h->status, "Paused");
+    else
+        h->status[0] = 0;
+    /* minimap */
+    hol_app_minimap *m = &v->map;
+    m->cues = L->cues;
+    m->nobjectives = 0;
+    if (L->mode == HOL_APP_FLAG && !app->done)
+        m->objectives[m->nobjectives++] = L->flag;
+    if (L->mode == HOL_APP_KEYS && !app->done) {
+        for (int k = 0; k < L->nkeys; k++)
+            if (!(app->keys_held >> k & 1))
+                m->objectives[m->nobjectives++] = L->keys[k];
+        if (h->keys_held == h->keys_total)
+            m->objectives[m->nobjectives++] = L->chest;
+    }
+    m->npath = 0;
+    if ((L->cues & HOL_CUE_PATH) && !app->done && app->optimum >= 0 &&
+        app->steps + app->remaining > app->optimum + app->d.stray_steps) {
+        m->npath = app->nwalk < HOL_APP_PATH_MAX ? app->nwalk : HOL_APP_PATH_MAX;
+        memcpy(m->path, app->walk, (size_t)m->npath);
+    }
+}
+
+/* ---- the step ------------------------------------------------------------ */
+
+static hol_err hol__room_steps(hol_app *app, const hol_motion_steps *st)
+{
+    for (int i = 0; i < st->n; i++) {
+        hol_err err = hol_world_update(app->world, &st->after[i]);
+        if (err)
+            return err;
+        if (app->done)
+            continue;
+        app->steps++;
+        hol__enter(app, &st->after[i]);
+        int exact;
+        if (app->done) {
+            app->remaining = 0;
+            app->nwalk = 0;
+        } else if (app->optimum >= 0 && !hol__plan(app, &st->after[i], &app->remaining, &exact)) {
+            /* remaining and the walk are set */
+        }
+        hol_app_step_event *e = &app->ev.steps[app->ev.nsteps++];
+        e->t = app->level_t;
+        e->index = app->steps;
+        e->dir = st->dir[i];
+        e->room = st->after[i];
+        e->yaw_deg = app->mo.yaw_deg;
+        e->remaining = app->remaining;
+        e->cues = app->level.cues;
+    }
+    return HOL_OK;
+}
+
+hol_err hol_app_step(hol_app *app, const hol_input *in)
+{
+    if (!in || !hol_input_valid(in) || (app->have_prev && in->time_s < app->prev.time_s))
+        return HOL_EARG;
+    memset(&app->ev, 0, sizeof app->ev);
+    double dt = app->have_prev ? in->time_s - app->prev.time_s : 0;
+    if (dt > HOL__MAX_DT)
+        dt = HOL__MAX_DT;
+    uint32_t pressed = in->buttons & ~(app->have_prev ? app->prev.buttons : 0u);
+    app->prev = *in;
+    app->have_prev = 1;
+    app->view.frame++;
+    hol_app_view *v = &app->view;
+    if (!app->have_level) {
+        v->state = (pressed & HOL_BTN_QUIT) ? HOL_APP_QUIT : HOL_APP_IDLE;
+        return HOL_OK;
+    }
+    if (v->state == HOL_APP_QUIT)
+        return HOL_OK;
+    if (app->pending_start) {
+        app->pending_start = 0;
+        app->ev.level_started = 1;
+        v->state = HOL_APP_PLAYING;
+    }
+    hol_err err = HOL_OK;
+    if (pressed & HOL_BTN_QUIT) {
+        if (v->state == HOL_APP_PLAYING)
+            hol__summary(app, HOL_APP_END_QUIT);
+        v->state = HOL_APP_QUIT;
+        hol__fill_view(app, in);
+        return HOL_OK;
+    }
+    if (pressed & HOL_BTN_MENU)
+        app->menu = !app->menu;
+    if (pressed & HOL_BTN_MINIMAP)
+        v->map.place = (v->map.place + 1) % 3;
+    int restarted = 0;
+    if (pressed & HOL_BTN_RESTART) {
+        restarted = 1;
+        if (v->state == HOL_APP_PLAYING)
+            hol__summary(app, HOL_APP_END_RESTART);
+        if ((err = hol__begin(app)))
+            return err;
+        app->pending_start = 0;
+        app->ev.level_started = 1;
+        v->state = HOL_APP_PLAYING;
+    }
+    v->paused = !(in->flags & HOL_INPUT_FOCUSED) || (in->flags & HOL_INPUT_DEVICE_LOST) ||
+                app->menu;
+    if (v->state == HOL_APP_DONE) {
+        if ((pressed & HOL_BTN_CONFIRM) && !v->paused)
+            app->ev.next_level = 1;
+    } else if (!v->paused && !restarted) {
+        app->level_t += dt;
+        hol_motion_steps st;
+        if (in->flags & HOL_INPUT_HEAD_VALID) {
+            double pos[3] = {in->head.pos[0], in->head.pos[1], in->head.pos[2]};
+            hol__yaw_pitch_from_quat(in->head.quat, &app->mo.yaw_deg, &app->mo.pitch_deg);
+            err = hol_motion_move_to(&app->mo, pos, &st);
+        } else {
+            err = hol_motion_pancake(&app->mo, in->move, in->turn, dt, &st);
+        }
+        if (err && err != HOL_ERANGE)
+            return err;
+        if ((err = hol__room_steps(app, &st)))
+            return err;
+        /* the 10 Hz head sample */
+        if (app->level_t >= app->next_sample / 10.0) {
+            app->ev.head_sample = 1;
+            app->ev.head_sample_t = app->next_sample / 10.0;
+            app->next_sample = (long)floor(app->level_t * 10) + 1;
+        }
+        if (app->done) {
+            hol__summary(app, HOL_APP_END_DONE);
+            v->state = HOL_APP_DONE;
+        }
+    }
+    hol__fill_view(app, in);
+    return HOL_OK;
+}

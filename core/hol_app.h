@@ -1,0 +1,202 @@
+/* hol_app.h - the app step: one input record in, the state every platform
+ * draws out. Desktop window, headset and headless replay all run it.
+ *
+ * Contract
+ * - hol_app_step(app, &input) is the whole app per frame: pause and menu
+ *   (paused while the input lacks HOL_INPUT_FOCUSED, has
+ *   HOL_INPUT_DEVICE_LOST, or the menu is open), the user's motion (a
+ *   tracked head moves the user, else the pancake axes do; hol_motion),
+ *   room steps, the world update after each (hol_world_update), the game
+ *   (objectives entered by a room step, level end), guidance replan after
+ *   each step (hol_nav: the optimal steps left; the path shown on the
+ *   minimap when the user strays more than desc.stray_steps beyond the
+ *   optimum), the HUD and minimap models, restart, quit. Button edges are
+ *   taken against the previous record.
+ * - Out: hol_app_view (user state per eye, HUD model filled at the step,
+ *   minimap model) and hol_app_events (what happened in this step: room
+ *   steps, a 10 Hz head sample, level start and end) for the research logs.
+ *   Platforms draw and log from these and decide nothing themselves.
+ * - Time comes only from input.time_s (never decreasing); the app has no
+ *   clock. The level clock runs while the level is playing and not paused.
+ * - Memory: hol_app_create makes every allocation through the desc's hooks
+ *   (the app with its world store, and the navigator unless desc.nav is
+ *   given); starting levels and stepping allocate nothing.
+ * - Deterministic: the same desc, levels and input records give the same
+ *   views and events, bit for bit (replay relies on it).
+ * - Not thread safe; core rules apply (no OS, no GL, no globals).
+ */
+#ifndef HOL_APP_H
+#define HOL_APP_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "hol_err.h"
+#include "hol_input.h"
+#include "hol_motion.h"
+#include "hol_room.h"
+#include "hol_tile.h"
+
+struct hol_nav;
+struct hol_world;
+
+enum hol_app_mode {
+    HOL_APP_EXPLORE = 0,
+    HOL_APP_FLAG = 1,
+    HOL_APP_KEYS = 2,
+    HOL_APP_TUTORIAL = 3
+};
+
+/* cues (bit set) */
+#define HOL_CUE_HOT_COLD (1u << 0) /* hot-cold minimap colours */
+#define HOL_CUE_PATH     (1u << 1) /* shortest path when strayed */
+#define HOL_CUE_POLES    (1u << 2) /* guide poles on objectives */
+#define HOL_CUE_ARROW    (1u << 3) /* direction arrow */
+#define HOL_CUE_ALL      0xfu
+
+enum hol_app_minimap_place { HOL_MINIMAP_HUD = 0, HOL_MINIMAP_HAND = 1, HOL_MINIMAP_OFF = 2 };
+
+#define HOL_APP_MAX_KEYS 5
+#define HOL_APP_MAX_OBJECTIVES 8
+#define HOL_APP_PATH_MAX 64
+#define HOL_APP_TEXT_MAX 48
+
+/* allocator hooks (both or neither; zero: malloc/free) */
+typedef struct hol_app_alloc {
+    void *(*alloc)(size_t size, void *user);
+    void (*free)(void *ptr, void *user);
+    void *user;
+} hol_app_alloc;
+
+/* One level as the app plays it. */
+typedef struct hol_app_level {
+    int mode;                 /* hol_app_mode */
+    uint64_t seed;            /* the world's seed */
+    uint8_t start[64];        /* room steps before the level begins */
+    int nstart;
+    hol_tile flag;            /* HOL_APP_FLAG */
+    hol_tile keys[HOL_APP_MAX_KEYS]; /* HOL_APP_KEYS: 1..5 keys, then chest */
+    int nkeys;
+    hol_tile chest;
+    unsigned cues;            /* HOL_CUE_* */
+    int minimap;              /* hol_app_minimap_place */
+} hol_app_level;
+
+typedef struct hol_app_desc {
+    hol_app_alloc alloc;
+    hol_motion_desc motion;   /* pancake speeds, hedge margin, eye height */
+    uint32_t world_capacity;  /* tiles; 0: 2^16 */
+    struct hol_nav *nav;      /* optional shared navigator (not owned);
+                                 NULL: the app creates one (0.5 s, 30 MB) */
+    int stray_steps;          /* N: path shown beyond optimum + N; 0: 3 */
+    double ipd;               /* eye distance for the per-eye states; 0: 0.064 */
+} hol_app_desc;
+
+typedef enum hol_app_state {
+    HOL_APP_IDLE = 0,         /* no level started yet */
+    HOL_APP_PLAYING = 1,
+    HOL_APP_DONE = 2,         /* the level is complete: the end screen */
+    HOL_APP_QUIT = 3          /* the user asked to quit: the platform exits */
+} hol_app_state;
+
+/* The HUD model: filled at the step, drawn as is. */
+typedef struct hol_app_hud {
+    char objective[HOL_APP_TEXT_MAX]; /* "Find the flag", "Keys 2/3", ... */
+    char status[HOL_APP_TEXT_MAX];    /* "Paused", "Done: 14 steps, best 12", "" */
+    char address[HOL_TILE_ADDR_MAX];  /* the current tile */
+    int steps;                        /* room steps this level */
+    int optimum;                      /* fewest steps from the level start; -1 none */
+    int remaining;                    /* optimal steps left from here; -1 none */
+    int keys_held, keys_total;
+    double elapsed_s;                 /* level clock */
+} hol_app_hud;
+
+/* The minimap model. */
+typedef struct hol_app_minimap {
+    int place;                        /* hol_app_minimap_place */
+    unsigned cues;                    /* HOL_CUE_* in force */
+    int nobjectives;                  /* objectives still to reach */
+    hol_tile objectives[HOL_APP_MAX_OBJECTIVES];
+    int npath;                        /* >0: the path to draw (strayed) */
+    uint8_t path[HOL_APP_PATH_MAX];   /* room steps from the user */
+} hol_app_minimap;
+
+/* What every platform draws. */
+typedef struct hol_app_view {
+    hol_app_state state;
+    int paused;
+    hol_room user;                    /* the head's state */
+    double head[3];                   /* room coordinates */
+    double yaw_deg, pitch_deg;        /* look direction */
+    double head_quat[4];              /* x, y, z, w (from a tracked head, or
+                                         from yaw and pitch) */
+    hol_room eye_user[2];             /* the state each eye sees from */
+    double eye[2][3];                 /* eye positions (head +- ipd / 2) */
+    hol_app_hud hud;
+    hol_app_minimap map;
+    uint64_t frame;                   /* steps of the app so far */
+} hol_app_view;
+
+/* One room step, for the per-step log. */
+typedef struct hol_app_step_event {
+    double t;          /* level clock */
+    int index;         /* 1-based step number in the level */
+    uint8_t dir;       /* room direction HOL_DIR_* */
+    hol_room room;     /* state after the step */
+    double yaw_deg;    /* look direction in the room */
+    int remaining;     /* optimal steps left to finish; -1 none */
+    unsigned cues;
+} hol_app_step_event;
+
+typedef enum hol_app_end {
+    HOL_APP_END_NONE = 0,
+    HOL_APP_END_DONE,     /* completed */
+    HOL_APP_END_RESTART,  /* restarted by the user */
+    HOL_APP_END_QUIT      /* left by the user */
+} hol_app_end;
+
+typedef struct hol_app_summary {
+    int mode;
+    uint64_t seed;
+    int steps, optimum;
+    double time_s;
+    hol_app_end end;
+} hol_app_summary;
+
+typedef struct hol_app_events {
+    int nsteps;
+    hol_app_step_event steps[HOL_MOTION_MAX_STEPS];
+    int head_sample;       /* 1: a 10 Hz head sample is due (view has it) */
+    double head_sample_t;  /* its level time (a multiple of 0.1 s) */
+    int level_started;     /* the level (re)started in this step */
+    hol_app_end level_ended; /* the level attempt ended in this step */
+    hol_app_summary summary; /* with level_ended */
+    int next_level;        /* confirm on the end screen: the platform
+                              starts the next level */
+} hol_app_events;
+
+typedef struct hol_app hol_app;
+
+/* Errors: HOL_EARG, HOL_ENOMEM (an allocation failed). */
+hol_err hol_app_create(const hol_app_desc *desc, hol_app **out_app);
+void hol_app_destroy(hol_app *app); /* NULL ok */
+
+/* Start (or restart) a level: the world is re-seeded in place, the start
+ * walk applied, objectives placed, the optimum computed. Errors: HOL_EARG
+ * (bad level: no keys, an objective on the start tile, a start walk leaving
+ * the room), HOL_EBUDGET (the optimum could not be proved exact: the level
+ * is refused), HOL_ENOMEM (the world store), HOL_ERANGE. On error no level
+ * is playing. */
+hol_err hol_app_start_level(hol_app *app, const hol_app_level *level);
+
+/* One frame. Errors: HOL_EARG (an invalid record or time going back; the
+ * app is unchanged), HOL_ENOMEM (the world store is full). Without a level
+ * the view is the idle state. */
+hol_err hol_app_step(hol_app *app, const hol_input *in);
+
+const hol_app_view *hol_app_get_view(const hol_app *app);
+const hol_app_events *hol_app_get_events(const hol_app *app);
+/* The world the view shows (for the renderer's content). */
+struct hol_world *hol_app_world(hol_app *app);
+
+#endif

@@ -1,0 +1,387 @@
+/* test_app.c - the app step (core/hol_app.h): scripted input reaches a room
+ * step; the navigator's walk played through tracked head positions scores
+ * exactly the optimum, a detour of k steps the optimum plus k; pause,
+ * restart, quit; determinism; no allocation over 10,000 frames after the
+ * level starts (counted through the allocator hooks).
+ */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "../core/hol_app.h"
+#include "../core/hol_nav.h"
+#include "../core/hol_room.h"
+#include "../core/hol_tile.h"
+#include "../core/hol_world.h"
+
+static hol_nav *g_nav;
+
+static int setup(void **state)
+{
+    (void)state;
+    hol_nav_desc nd;
+    memset(&nd, 0, sizeof nd);
+    return hol_nav_create(&nd, &g_nav) != HOL_OK;
+}
+
+static int teardown(void **state)
+{
+    (void)state;
+    hol_nav_destroy(g_nav);
+    return 0;
+}
+
+static hol_app *make_app(void)
+{
+    hol_app_desc d;
+    memset(&d, 0, sizeof d);
+    d.nav = g_nav;
+    hol_app *app = NULL;
+    assert_int_equal(hol_app_create(&d, &app), HOL_OK);
+    return app;
+}
+
+static hol_tile tile(const char *a)
+{
+    hol_tile t;
+    assert_int_equal(hol_tile_parse(a, -1, &t), HOL_OK);
+    return t;
+}
+
+static hol_app_level flag_level(const char *addr)
+{
+    hol_app_level L;
+    memset(&L, 0, sizeof L);
+    L.mode = HOL_APP_FLAG;
+    L.seed = 5;
+    L.flag = tile(addr);
+    L.cues = HOL_CUE_ALL;
+    return L;
+}
+
+static hol_input pancake(double t, float fwd, float turn)
+{
+    hol_input in;
+    memset(&in, 0, sizeof in);
+    in.time_s = t;
+    in.flags = HOL_INPUT_FOCUSED;
+    in.move[1] = fwd;
+    in.turn[0] = turn;
+    return in;
+}
+
+/* Walking forward from the start crosses z = 1 into cell (1,0): one room
+ * step north, reported once as an event, onto tile N. */
+static void test_scripted_room_step(void **state)
+{
+    (void)state;
+    hol_app *app = make_app();
+    hol_app_level L;
+    memset(&L, 0, sizeof L);
+    L.seed = 9;
+    assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    int events = 0;
+    for (int f = 0; f < 60; f++) {
+        hol_input in = pancake(f / 60.0, 1, 0);
+        assert_int_equal(hol_app_step(app, &in), HOL_OK);
+        const hol_app_events *ev = hol_app_get_events(app);
+        assert_int_equal(ev->level_started, f == 0);
+        for (int i = 0; i < ev->nsteps; i++) {
+            events++;
+            assert_int_equal(ev->steps[i].dir, HOL_DIR_N);
+            assert_int_equal(ev->steps[i].index, 1);
+            assert_true(hol_tile_eq(ev->steps[i].room.tile, tile("N")));
+            assert_true(ev->steps[i].remaining == -1);
+        }
+    }
+    assert_int_equal(events, 1);
+    const hol_app_view *v = hol_app_get_view(app);
+    assert_int_equal(v->user.row, 0);
+    assert_int_equal(v->hud.steps, 1);
+    assert_string_equal(v->hud.address, "N");
+    assert_string_equal(v->hud.objective, "Explore");
+    /* the eyes straddle the head across the room's x axis (yaw 0) */
+    assert_true(fabs(v->eye[1][0] - v->eye[0][0] - 0.064) < 1e-9);
+    assert_true(fabs(v->hud.elapsed_s - 59 / 60.0) < 1e-9);
+    hol_app_destroy(app);
+}
+
+/* The centre of the cell after a room step from cell (col, row). */
+static hol_input tracked_at(double t, int col, int row)
+{
+    hol_input in;
+    memset(&in, 0, sizeof in);
+    in.time_s = t;
+    in.flags = HOL_INPUT_FOCUSED | HOL_INPUT_HEAD_VALID;
+    in.head.pos[0] = (float)(col + 0.5);
+    in.head.pos[1] = 1.6f;
+    in.head.pos[2] = (float)(row + 0.5);
+    in.head.quat[3] = 1;
+    return in;
+}
+
+/* Play walk (room directions) through tracked head positions from the
+ * level's start; returns the steps counted when the level ended (or -1). */
+static int play_walk(hol_app *app, const uint8_t *walk, int n, double *t)
+{
+    hol_room r = hol_app_get_view(app)->user;
+    int col = r.col, row = r.row;
+    hol_input in = tracked_at(*t, col, row);
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    for (int i = 0; i < n; i++) {
+        int dc, dr;
+        hol_dir_delta(walk[i], &dc, &dr);
+        col += dc;
+        row += dr;
+        *t += 0.25;
+        in = tracked_at(*t, col, row);
+        assert_int_equal(hol_app_step(app, &in), HOL_OK);
+        const hol_app_events *ev = hol_app_get_events(app);
+        if (ev->level_ended == HOL_APP_END_DONE) {
+            assert_int_equal(i, n - 1);
+            return ev->summary.steps;
+        }
+    }
+    return -1;
+}
+
+static void test_flag_optimum_and_detour(void **state)
+{
+    (void)state;
+    static const char *targets[] = {"Nff", "Wrfl", "Sflf", "Ef"};
+    for (int k = 0; k < 4; k++) {
+        hol_app *app = make_app();
+        hol_app_level L = flag_level(targets[k]);
+        assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+        const hol_app_view *v = hol_app_get_view(app);
+        uint8_t walk[HOL_NAV_WALK_MAX];
+        hol_nav_result res;
+        hol_room start = hol_room_start();
+        assert_int_equal(hol_nav_find(g_nav, &start, L.flag, 0, walk, sizeof walk, &res),
+                         HOL_OK);
+        double t = 0;
+        int steps = play_walk(app, walk, res.len, &t);
+        assert_int_equal(steps, res.len);
+        assert_int_equal(v->hud.optimum, res.len);
+        assert_int_equal(v->state, HOL_APP_DONE);
+        assert_int_equal(v->hud.remaining, 0);
+        assert_string_equal(v->hud.status + 0, v->hud.status); /* filled */
+        assert_true(strncmp(v->hud.status, "Done:", 5) == 0);
+        /* restart, then a detour of 2 (out and back) first */
+        hol_input in = tracked_at(t += 0.1, v->user.col, v->user.row);
+        in.buttons = HOL_BTN_RESTART;
+        assert_int_equal(hol_app_step(app, &in), HOL_OK);
+        assert_int_equal(hol_app_get_events(app)->level_started, 1);
+        assert_int_equal(v->state, HOL_APP_PLAYING);
+        uint8_t detour[HOL_NAV_WALK_MAX + 2];
+        int d0 = walk[0] == HOL_DIR_N ? HOL_DIR_S : HOL_DIR_N;
+        /* from cell (1,1) any direction and back stays in the room */
+        detour[0] = (uint8_t)d0;
+        detour[1] = (uint8_t)((d0 + 2) & 3);
+        memcpy(detour + 2, walk, (size_t)res.len);
+        int got = play_walk(app, detour, res.len + 2, &t);
+        assert_int_equal(got, res.len + 2);
+        /* the path cue: strayed 2 <= 3, so no path was shown at the end */
+        hol_app_destroy(app);
+    }
+}
+
+/* Straying beyond optimum + N shows the path on the minimap. */
+static void test_path_when_strayed(void **state)
+{
+    (void)state;
+    hol_app *app = make_app();
+    hol_app_level L = flag_level("Nff");
+    assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    const hol_app_view *v = hol_app_get_view(app);
+    double t = 0;
+    /* walk away south and back and forth: S N S N ... */
+    uint8_t away[6] = {HOL_DIR_S, HOL_DIR_N, HOL_DIR_S, HOL_DIR_N, HOL_DIR_S, HOL_DIR_N};
+    assert_int_equal(play_walk(app, away, 2, &t), -1);
+    assert_int_equal(v->map.npath, 0); /* 2 beyond: within N = 3 */
+    assert_int_equal(play_walk(app, away + 2, 2, &t), -1);
+    assert_true(v->map.npath > 0);     /* 4 beyond */
+    assert_int_equal(v->map.npath, v->hud.remaining);
+    assert_int_equal(v->map.nobjectives, 1);
+    hol_app_destroy(app);
+}
+
+static void test_keys_level(void **state)
+{
+    (void)state;
+    hol_app *app = make_app();
+    hol_app_level L;
+    memset(&L, 0, sizeof L);
+    L.mode = HOL_APP_KEYS;
+    L.seed = 3;
+    L.keys[0] = tile("Nf");
+    L.keys[1] = tile("Wr");
+    L.nkeys = 2;
+    L.chest = tile("Sf");
+    assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    uint8_t walk[HOL_NAV_WALK_MAX];
+    hol_nav_result res;
+    hol_room start = hol_room_start();
+    assert_int_equal(hol_nav_tour(g_nav, &start, L.keys, 2, L.chest, 0, walk, sizeof walk, &res),
+                     HOL_OK);
+    const hol_app_view *v = hol_app_get_view(app);
+    assert_string_equal(v->hud.objective, "Keys 0/2");
+    double t = 0;
+    assert_int_equal(play_walk(app, walk, res.len, &t), res.len);
+    assert_int_equal(v->hud.keys_held, 2);
+    /* an objective on the start tile is refused */
+    L.chest = hol_tile_origin();
+    assert_int_equal(hol_app_start_level(app, &L), HOL_EARG);
+    hol_app_destroy(app);
+}
+
+/* Paused while unfocused or the device is lost or the menu is open: no
+ * motion, no clock. Quit ends the level with a summary. */
+static void test_pause_quit(void **state)
+{
+    (void)state;
+    hol_app *app = make_app();
+    hol_app_level L = flag_level("Nff");
+    assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    const hol_app_view *v = hol_app_get_view(app);
+    hol_input in = pancake(0, 0, 0);
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    double z0 = v->head[2];
+    in = pancake(0.05, 1, 0);
+    in.flags = 0;
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    assert_true(v->paused && v->head[2] == z0 && v->hud.elapsed_s == 0);
+    assert_string_equal(v->hud.status, "Paused");
+    in = pancake(0.1, 1, 0);
+    in.flags |= HOL_INPUT_DEVICE_LOST;
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    assert_true(v->paused && v->head[2] == z0);
+    in = pancake(0.15, 1, 0);
+    in.buttons = HOL_BTN_MENU;
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    assert_true(v->paused && v->head[2] == z0);
+    in = pancake(0.2, 1, 0); /* released: the menu stays open */
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    assert_true(v->paused);
+    in.time_s = 0.25;
+    in.buttons = HOL_BTN_MENU;
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    assert_true(!v->paused && v->head[2] < z0);
+    /* time going back is refused, the app unchanged */
+    in.time_s = 0.1;
+    assert_int_equal(hol_app_step(app, &in), HOL_EARG);
+    in.time_s = 0.3;
+    in.buttons = HOL_BTN_QUIT;
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    assert_int_equal(v->state, HOL_APP_QUIT);
+    const hol_app_events *ev = hol_app_get_events(app);
+    assert_int_equal(ev->level_ended, HOL_APP_END_QUIT);
+    assert_int_equal(ev->summary.optimum, v->hud.optimum);
+    hol_app_destroy(app);
+}
+
+/* The same input twice gives the same views and events, bit for bit. */
+static void test_deterministic(void **state)
+{
+    (void)state;
+    hol_app_events evs[2][200];
+    hol_app_view last[2];
+    for (int run = 0; run < 2; run++) {
+        hol_app *app = make_app();
+        hol_app_level L = flag_level("Wrfl");
+        assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+        uint64_t s = 11;
+        for (int f = 0; f < 200; f++) {
+            s = s * 6364136223846793005u + 1442695040888963407u;
+            hol_input in = pancake(f / 30.0, (float)((s >> 40) % 3) - 1, (float)((s >> 50) % 3) - 1);
+            assert_int_equal(hol_app_step(app, &in), HOL_OK);
+            memcpy(&evs[run][f], hol_app_get_events(app), sizeof evs[run][f]);
+        }
+        memcpy(&last[run], hol_app_get_view(app), sizeof last[run]);
+        hol_app_destroy(app);
+    }
+    assert_memory_equal(evs[0], evs[1], sizeof evs[0]);
+    assert_memory_equal(&last[0], &last[1], sizeof last[0]);
+}
+
+/* ---- no allocation after the level starts --------------------------------- */
+
+static long g_allocs, g_frees;
+
+static void *count_alloc(size_t n, void *user)
+{
+    (void)user;
+    g_allocs++;
+    return malloc(n);
+}
+
+static void count_free(void *p, void *user)
+{
+    (void)user;
+    if (p)
+        g_frees++;
+    free(p);
+}
+
+static void test_no_allocation(void **state)
+{
+    (void)state;
+    hol_app_desc d;
+    memset(&d, 0, sizeof d);
+    d.alloc.alloc = count_alloc;
+    d.alloc.free = count_free;
+    hol_app *app = NULL;
+    assert_int_equal(hol_app_create(&d, &app), HOL_OK);
+    assert_true(g_allocs >= 2); /* the app, its own navigator */
+    hol_app_level L;
+    memset(&L, 0, sizeof L);
+    L.mode = HOL_APP_KEYS;
+    L.seed = 77;
+    L.keys[0] = tile("Nff");
+    L.keys[1] = tile("Ef");
+    L.keys[2] = tile("Sl");
+    L.nkeys = 3;
+    L.chest = tile("Wf");
+    L.cues = HOL_CUE_ALL;
+    assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    long before = g_allocs;
+    int steps = 0;
+    uint64_t s = 5;
+    float fwd = 1, turn = 0;
+    for (int f = 0; f < 10000; f++) {
+        if (f % 40 == 0) {
+            s = s * 6364136223846793005u + 1442695040888963407u;
+            fwd = ((s >> 33) % 4 == 0) ? -0.5f : 1.0f;
+            turn = (float)((s >> 45) % 3) - 1;
+        }
+        hol_input in = pancake(f / 72.0, fwd, turn);
+        if (f % 2500 == 2499)
+            in.buttons = HOL_BTN_RESTART;
+        assert_int_equal(hol_app_step(app, &in), HOL_OK);
+        steps += hol_app_get_events(app)->nsteps;
+    }
+    assert_int_equal(g_allocs, before);
+    assert_true(steps > 50);
+    hol_app_destroy(app);
+    assert_int_equal(g_frees, g_allocs);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_scripted_room_step),
+        cmocka_unit_test(test_flag_optimum_and_detour),
+        cmocka_unit_test(test_path_when_strayed),
+        cmocka_unit_test(test_keys_level),
+        cmocka_unit_test(test_pause_quit),
+        cmocka_unit_test(test_deterministic),
+        cmocka_unit_test(test_no_allocation),
+    };
+    return cmocka_run_group_tests(tests, setup, teardown);
+}
