@@ -6,8 +6,9 @@
  *   window surface with 8-bit RGBA, 24-bit depth and 8-bit stencil, and
  *   makes it current. GL calls go through eglGetProcAddress (hol_egl_getproc
  *   in hol_egl.h).
- * - hol_x11_poll drains the event queue into a small key state and returns
- *   0 once the window is closed or Escape/q is pressed.
+ * - hol_x11_poll drains the event queue into a small key state (keys, a
+ *   mouse drag, focus) and returns 0 once the window is closed or Escape/q
+ *   is pressed.
  * - On failure hol_x11_create returns nonzero with a one-line reason in
  *   err and leaves nothing open.
  */
@@ -32,9 +33,14 @@ typedef struct hol_x11 {
     int w, h;
 } hol_x11;
 
-/* Keys held down (1) or not (0). */
+/* Keys held down (1) or not (0); the mouse moved by (mouse_dx, mouse_dy)
+ * pixels with the left button held since the caller last zeroed them;
+ * focused: the window has the keyboard focus (1 until told otherwise). */
 typedef struct hol_x11_keys {
     int left, right, up, down, strafe_l, strafe_r, look_up, look_down;
+    int confirm, menu, restart, minimap; /* Enter/Space, P, R, M */
+    int mouse_dx, mouse_dy, dragging, last_x, last_y;
+    int unfocused;
 } hol_x11_keys;
 
 static inline void hol_x11_destroy(hol_x11 *x)
@@ -101,7 +107,9 @@ static inline int hol_x11_create(hol_x11 *x, int w, int h, const char *title, ch
     Window root = DefaultRootWindow(x->dpy);
     XSetWindowAttributes swa;
     memset(&swa, 0, sizeof swa);
-    swa.event_mask = KeyPressMask | KeyReleaseMask | StructureNotifyMask | ExposureMask;
+    swa.event_mask = KeyPressMask | KeyReleaseMask | StructureNotifyMask | ExposureMask |
+                     ButtonPressMask | ButtonReleaseMask | PointerMotionMask |
+                     FocusChangeMask;
     unsigned long mask = CWEventMask;
     int depth = CopyFromParent;
     Visual *visual = CopyFromParent;
@@ -150,7 +158,22 @@ static inline int hol_x11_poll(hol_x11 *x, hol_x11_keys *keys)
         XNextEvent(x->dpy, &ev);
         if (ev.type == ClientMessage && (Atom)ev.xclient.data.l[0] == x->wm_delete)
             run = 0;
-        else if (ev.type == ConfigureNotify) {
+        else if (ev.type == FocusIn || ev.type == FocusOut)
+            keys->unfocused = ev.type == FocusOut;
+        else if (ev.type == ButtonPress || ev.type == ButtonRelease) {
+            if (ev.xbutton.button == Button1) {
+                keys->dragging = ev.type == ButtonPress;
+                keys->last_x = ev.xbutton.x;
+                keys->last_y = ev.xbutton.y;
+            }
+        } else if (ev.type == MotionNotify) {
+            if (keys->dragging) {
+                keys->mouse_dx += ev.xmotion.x - keys->last_x;
+                keys->mouse_dy += ev.xmotion.y - keys->last_y;
+            }
+            keys->last_x = ev.xmotion.x;
+            keys->last_y = ev.xmotion.y;
+        } else if (ev.type == ConfigureNotify) {
             x->w = ev.xconfigure.width;
             x->h = ev.xconfigure.height;
         } else if (ev.type == KeyPress || ev.type == KeyRelease) {
@@ -167,6 +190,10 @@ static inline int hol_x11_poll(hol_x11 *x, hol_x11_keys *keys)
             case XK_d: keys->strafe_r = down; break;
             case XK_Page_Up: keys->look_up = down; break;
             case XK_Page_Down: keys->look_down = down; break;
+            case XK_Return: case XK_space: keys->confirm = down; break;
+            case XK_p: keys->menu = down; break;
+            case XK_r: keys->restart = down; break;
+            case XK_m: keys->minimap = down; break;
             default: break;
             }
         }

@@ -1,0 +1,570 @@
+/* cmd_play.c - `holonomy play` (the desktop game in an EGL/X11 window) and
+ * `holonomy replay` (a recording through the same session, headless). */
+#include <errno.h>
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <time.h>
+
+#include "../../core/hol_input_io.h"
+#include "../../core/hol_tile.h"
+#include "../../core/hol_world.h"
+#include "../../render/hol_render.h"
+#include "../egl/hol_egl.h"
+#include "../egl/hol_egl_x11.h"
+#include "../file/hol_file.h"
+#include "../osmesa/hol_osmesa.h"
+#include "cli.h"
+#include "session.h"
+
+static const char *const play_usage =
+    "usage: holonomy play [LEVEL | --mode tutorial|flag|keys|explore] [--seed S]\n"
+    "                     [--log DIR] [--record FILE] [--frames N] [--input FILE]\n"
+    "                     [--size WxH]\n"
+    "\n"
+    "Play in a desktop window (EGL on X11; also under Xvfb). LEVEL is a level\n"
+    "file (SPEC section 5); --mode plays a level of that mode made from the seed.\n"
+    "\n"
+    "  W/S or Up/Down   walk forward/back      A/D          step sideways\n"
+    "  Left/Right       turn                   PgUp/PgDn    look up/down\n"
+    "  mouse drag       look (left button)     P            pause menu\n"
+    "  R                restart the level      M            minimap: HUD, hand, off\n"
+    "  Enter/Space      next level (end screen) Esc/Q        quit\n"
+    "\n"
+    "  --mode M        explore (default), flag, keys or tutorial\n"
+    "  --seed S        world seed for --mode (decimal or 0x hex; default 1)\n"
+    "  --log DIR       research logs: DIR/steps-NNN.csv, DIR/head-NNN.csv per level\n"
+    "                  attempt, DIR/summary.csv (README: Logs)\n"
+    "  --record FILE   record the session's input (replay with 'holonomy replay')\n"
+    "  --frames N      stop after N frames\n"
+    "  --input FILE    drive the game from recorded input lines (a recording or\n"
+    "                  bare lines) instead of the keyboard; frames are the lines\n"
+    "  --size WxH      window size (default 960x720)\n"
+    "\n"
+    "At the end it prints 'level NAME STATE steps S optimum O tile ADDR cell C,R'.\n"
+    "Exit status: 0 ok, 1 failure, 2 bad input.\n";
+
+static const char *const replay_usage =
+    "usage: holonomy replay REC [--log DIR] [--png-frames LIST --out-dir D]\n"
+    "                       [--size WxH]\n"
+    "\n"
+    "Run a recording (holonomy play --record) through the same app step: the\n"
+    "logs come out byte for byte as in the play. --png-frames renders the\n"
+    "listed frames (0-based, comma separated) headless with OSMesa to\n"
+    "D/frame-NNNNNN.png (--size, default 640x480).\n"
+    "\n"
+    "Exit status: 0 ok, 1 failure, 2 bad input (a bad recording line is named).\n";
+
+static int parse_size(const char *cmd, const char *val, int *w, int *h)
+{
+    char *e1, *e2;
+    errno = 0;
+    long a = strtol(val, &e1, 10);
+    long b = *e1 == 'x' ? strtol(e1 + 1, &e2, 10) : 0;
+    if (*e1 != 'x' || *e2 || errno || a < 16 || a > 4096 || b < 16 || b > 4096) {
+        cli_error(cmd, 0, "--size '%.40s' is not WxH with sides 16..4096", val);
+        return 1;
+    }
+    *w = (int)a;
+    *h = (int)b;
+    return 0;
+}
+
+/* Whole file as lines (NUL-terminated in place); 0 ok. */
+typedef struct file_lines {
+    uint8_t *data;
+    char **line;
+    size_t *len;
+    long n;
+} file_lines;
+
+static int read_lines(const char *cmd, const char *path, file_lines *fl)
+{
+    size_t size = 0;
+    memset(fl, 0, sizeof *fl);
+    hol_err err = hol_file_read_all(path, (size_t)1 << 30, &fl->data, &size);
+    if (err) {
+        cli_error(cmd, 0, "cannot read '%.200s': %s", path,
+                  err == HOL_EOPEN ? strerror(errno) : hol_err_str(err));
+        return err == HOL_EOPEN ? CLI_EXIT_USAGE : CLI_EXIT_FAIL;
+    }
+    long cap = 1;
+    for (size_t i = 0; i < size; i++)
+        cap += fl->data[i] == '\n';
+    fl->line = malloc((size_t)cap * sizeof *fl->line);
+    fl->len = malloc((size_t)cap * sizeof *fl->len);
+    uint8_t *buf = realloc(fl->data, size + 1);
+    if (!fl->line || !fl->len || !buf) {
+        cli_error(cmd, 0, "out of memory");
+        return CLI_EXIT_FAIL;
+    }
+    fl->data = buf;
+    fl->data[size] = 0;
+    size_t start = 0;
+    for (size_t i = 0; i <= size; i++) {
+        if (i == size || fl->data[i] == '\n') {
+            if (i == size && start == size)
+                break;
+            size_t e = i;
+            if (e > start && fl->data[e - 1] == '\r')
+                e--;
+            fl->data[e] = 0;
+            fl->line[fl->n] = (char *)fl->data + start;
+            fl->len[fl->n++] = e - start;
+            start = i + 1;
+        }
+    }
+    return 0;
+}
+
+static void free_lines(file_lines *fl)
+{
+    free(fl->data);
+    free(fl->line);
+    free(fl->len);
+}
+
+/* Input line k of a file (after an optional recording header) or 1 with
+ * the error reported. */
+static int parse_input_line(const char *cmd, const file_lines *fl, long k, hol_input *in)
+{
+    size_t bad = 0;
+    if (hol_input_parse(fl->line[k], fl->len[k], in, &bad)) {
+        cli_error(cmd, k + 1, "not an input record (byte %zu)", bad + 1);
+        return 1;
+    }
+    return 0;
+}
+
+static void print_end(const session *s)
+{
+    const hol_app_view *v = hol_app_get_view(s->app);
+    static const char *const st[] = {"idle", "playing", "done", "quit"};
+    printf("level %s %s steps %d optimum %d tile %s cell %d,%d\n", s->levels[s->cur].name,
+           st[v->state], v->hud.steps, v->hud.optimum, v->hud.address, v->user.col,
+           v->user.row);
+}
+
+/* A level of mode m made from the seed (until levels come from files):
+ * objectives on tiles picked by seeded walks. */
+static int mode_level(const char *mode, uint64_t seed, session_level *L)
+{
+    memset(L, 0, sizeof *L);
+    int n = 0;
+    if (!strcmp(mode, "explore"))
+        n = snprintf(L->text, sizeof L->text, "mode explore\nseed %llu\n",
+                     (unsigned long long)seed);
+    else
+        return 1;
+    L->len = (size_t)n;
+    snprintf(L->name, sizeof L->name, "%s-%llu", mode, (unsigned long long)seed);
+    char err[256];
+    return session_parse_level(L->text, L->len, &L->lvl, err, sizeof err);
+}
+
+static double now_s(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
+}
+
+static float clamp1(double v)
+{
+    return (float)(v < -1 ? -1 : v > 1 ? 1 : v);
+}
+
+int cli_cmd_play(int argc, char **argv)
+{
+    const char *cmd = "play";
+    if (cli_wants_help(argc, argv)) {
+        fputs(play_usage, stdout);
+        return cli_finish_output(cmd);
+    }
+    const char *level_path = NULL, *mode = NULL, *log_dir = NULL, *rec = NULL,
+               *input_path = NULL;
+    unsigned long long seed = 1;
+    long frames = 0;
+    int w = 960, h = 720;
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i], *val = i + 1 < argc ? argv[i + 1] : NULL;
+        int takes = !strcmp(a, "--mode") || !strcmp(a, "--seed") || !strcmp(a, "--log") ||
+                    !strcmp(a, "--record") || !strcmp(a, "--frames") ||
+                    !strcmp(a, "--input") || !strcmp(a, "--size");
+        if (takes && !val) {
+            cli_error(cmd, 0, "%s needs a value; see 'holonomy play --help'", a);
+            return CLI_EXIT_USAGE;
+        }
+        if (!strcmp(a, "--mode"))
+            mode = val;
+        else if (!strcmp(a, "--seed")) {
+            char *e;
+            errno = 0;
+            seed = strtoull(val, &e, 0);
+            if (e == val || *e || errno || val[0] == '-' || val[0] == '+') {
+                cli_error(cmd, 0, "--seed '%.40s' is not an unsigned 64-bit number", val);
+                return CLI_EXIT_USAGE;
+            }
+        } else if (!strcmp(a, "--log"))
+            log_dir = val;
+        else if (!strcmp(a, "--record"))
+            rec = val;
+        else if (!strcmp(a, "--input"))
+            input_path = val;
+        else if (!strcmp(a, "--frames")) {
+            size_t n = cli_parse_count(val);
+            if (!n || n > 100000000) {
+                cli_error(cmd, 0, "--frames '%.40s' is not a count in 1..100000000", val);
+                return CLI_EXIT_USAGE;
+            }
+            frames = (long)n;
+        } else if (!strcmp(a, "--size")) {
+            if (parse_size(cmd, val, &w, &h))
+                return CLI_EXIT_USAGE;
+        } else if (a[0] == '-' && a[1]) {
+            cli_error(cmd, 0, "unknown option '%.40s'; see 'holonomy play --help'", a);
+            return CLI_EXIT_USAGE;
+        } else if (!level_path) {
+            level_path = a;
+            continue;
+        } else {
+            cli_error(cmd, 0, "more than one LEVEL ('%.40s')", a);
+            return CLI_EXIT_USAGE;
+        }
+        if (takes)
+            i++;
+    }
+    if (level_path && mode) {
+        cli_error(cmd, 0, "give a LEVEL file or --mode, not both");
+        return CLI_EXIT_USAGE;
+    }
+    if (log_dir) {
+        struct stat st;
+        if (stat(log_dir, &st) || !S_ISDIR(st.st_mode)) {
+            cli_error(cmd, 0, "--log '%.200s' is not a folder", log_dir);
+            return CLI_EXIT_USAGE;
+        }
+    }
+    static session_level levels[SESSION_MAX_LEVELS];
+    int nlevels = 0;
+    if (level_path) {
+        uint8_t *data = NULL;
+        size_t size = 0;
+        hol_err err = hol_file_read_all(level_path, SESSION_LEVEL_TEXT - 1, &data, &size);
+        if (err) {
+            cli_error(cmd, 0, "cannot read level '%.200s': %s", level_path,
+                      err == HOL_EOPEN ? strerror(errno)
+                      : err == HOL_ECORRUPT ? "larger than 4 KB" : hol_err_str(err));
+            return err == HOL_EIO ? CLI_EXIT_FAIL : CLI_EXIT_USAGE;
+        }
+        session_level *L = &levels[nlevels++];
+        memcpy(L->text, data, size);
+        L->len = size;
+        free(data);
+        const char *base = strrchr(level_path, '/');
+        base = base ? base + 1 : level_path;
+        size_t bl = strcspn(base, ".");
+        snprintf(L->name, sizeof L->name, "%.*s", (int)(bl < 60 ? bl : 60), base);
+        char perr[256];
+        if (session_parse_level(L->text, L->len, &L->lvl, perr, sizeof perr)) {
+            cli_error(cmd, 0, "%.200s: %s", level_path, perr);
+            return CLI_EXIT_USAGE;
+        }
+    } else {
+        if (mode_level(mode ? mode : "explore", seed, &levels[nlevels++])) {
+            cli_error(cmd, 0, "--mode '%.40s' is not one of explore, flag, keys, tutorial",
+                      mode);
+            return CLI_EXIT_USAGE;
+        }
+    }
+    file_lines in_lines;
+    memset(&in_lines, 0, sizeof in_lines);
+    long in_first = 0;
+    if (input_path) {
+        int st = read_lines(cmd, input_path, &in_lines);
+        if (st) {
+            free_lines(&in_lines);
+            return st;
+        }
+        /* a recording: skip its header */
+        if (in_lines.n && !strncmp(in_lines.line[0], "holonomy-rec ", 13)) {
+            static session_level skip[SESSION_MAX_LEVELS];
+            int ns;
+            char err[256];
+            in_first = session_read_header(in_lines.line, in_lines.len, in_lines.n, skip, &ns,
+                                           err, sizeof err);
+            if (!in_first) {
+                cli_error(cmd, 0, "%.200s: %s", input_path, err);
+                free_lines(&in_lines);
+                return CLI_EXIT_USAGE;
+            }
+            in_first--;
+        }
+    }
+    char msg[256];
+    hol_x11 xw;
+    if (hol_x11_create(&xw, w, h, "holonomy", msg, sizeof msg)) {
+        cli_error(cmd, 0, "%s", msg);
+        free_lines(&in_lines);
+        return CLI_EXIT_FAIL;
+    }
+    session s;
+    int status = session_open(&s, cmd, levels, nlevels, log_dir, rec);
+    hol_render *r = NULL;
+    if (status)
+        goto out;
+    hol_render_desc rd;
+    memset(&rd, 0, sizeof rd);
+    rd.getproc = hol_egl_getproc;
+    rd.world = hol_app_world(s.app);
+    hol_err err = hol_render_create(&rd, &r);
+    if (err) {
+        cli_error(cmd, 0, "cannot initialise the renderer: %s", hol_err_str(err));
+        status = CLI_EXIT_FAIL;
+        goto out;
+    }
+    hol_x11_keys keys;
+    memset(&keys, 0, sizeof keys);
+    double t0 = now_s(), last_t = 0;
+    for (long k = 0; frames <= 0 || k < frames; k++) {
+        int open = hol_x11_poll(&xw, &keys);
+        hol_input in;
+        memset(&in, 0, sizeof in);
+        if (input_path) {
+            long li = in_first + k;
+            if (li >= in_lines.n)
+                break;
+            if (parse_input_line(cmd, &in_lines, li, &in)) {
+                status = CLI_EXIT_USAGE;
+                goto out;
+            }
+            if (!open)
+                in.buttons |= HOL_BTN_QUIT;
+        } else {
+            double t = now_s() - t0;
+            if (t < last_t)
+                t = last_t;
+            double dt = t - last_t > 1e-3 ? t - last_t : 1e-3;
+            last_t = t;
+            in.time_s = t;
+            in.flags = keys.unfocused ? 0 : HOL_INPUT_FOCUSED;
+            in.move[0] = (float)(keys.strafe_r - keys.strafe_l);
+            in.move[1] = (float)(keys.up - keys.down);
+            /* mouse: 0.2 degrees a pixel, as a turn rate over this frame */
+            in.turn[0] = clamp1(keys.left - keys.right - keys.mouse_dx * 0.2 / (120 * dt));
+            in.turn[1] = clamp1(keys.look_up - keys.look_down - keys.mouse_dy * 0.2 / (90 * dt));
+            keys.mouse_dx = keys.mouse_dy = 0;
+            in.buttons = (keys.confirm ? HOL_BTN_CONFIRM : 0) | (keys.menu ? HOL_BTN_MENU : 0) |
+                         (keys.restart ? HOL_BTN_RESTART : 0) |
+                         (keys.minimap ? HOL_BTN_MINIMAP : 0) | (open ? 0 : HOL_BTN_QUIT);
+        }
+        int rc = session_step(&s, &in);
+        if (rc < 0) {
+            status = CLI_EXIT_FAIL;
+            goto out;
+        }
+        if (hol_app_get_events(s.app)->level_started)
+            hol_render_invalidate(r);
+        if (rc > 0 || !open)
+            break;
+        hol_frame_desc fd;
+        session_frame_desc(hol_app_get_view(s.app), &fd, xw.w, xw.h);
+        err = hol_render_frame(r, &fd, NULL);
+        if (err) {
+            cli_error(cmd, 0, "rendering failed: %s", hol_err_str(err));
+            status = CLI_EXIT_FAIL;
+            goto out;
+        }
+        hol_x11_swap(&xw);
+    }
+    print_end(&s);
+out:
+    hol_render_destroy(r);
+    if (s.app || s.recording) {
+        int c = session_close(&s);
+        if (!status)
+            status = c;
+    }
+    hol_x11_destroy(&xw);
+    free_lines(&in_lines);
+    int o = cli_finish_output(cmd);
+    return status ? status : o;
+}
+
+/* "3,10,200" into a sorted list; 1 on a bad list. */
+static int parse_frame_list(const char *s, long *out, int cap, int *out_n)
+{
+    int n = 0;
+    const char *p = s;
+    while (*p) {
+        char *e;
+        errno = 0;
+        long v = strtol(p, &e, 10);
+        if (e == p || errno || v < 0 || n >= cap || (*e && *e != ','))
+            return 1;
+        out[n++] = v;
+        p = *e ? e + 1 : e;
+        if (*e && !*p)
+            return 1;
+    }
+    *out_n = n;
+    return n == 0;
+}
+
+int cli_cmd_replay(int argc, char **argv)
+{
+    const char *cmd = "replay";
+    if (cli_wants_help(argc, argv)) {
+        fputs(replay_usage, stdout);
+        return cli_finish_output(cmd);
+    }
+    const char *rec = NULL, *log_dir = NULL, *out_dir = NULL, *list = NULL;
+    int w = 640, h = 480;
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i], *val = i + 1 < argc ? argv[i + 1] : NULL;
+        int takes = !strcmp(a, "--log") || !strcmp(a, "--png-frames") ||
+                    !strcmp(a, "--out-dir") || !strcmp(a, "--size");
+        if (takes && !val) {
+            cli_error(cmd, 0, "%s needs a value; see 'holonomy replay --help'", a);
+            return CLI_EXIT_USAGE;
+        }
+        if (!strcmp(a, "--log"))
+            log_dir = val;
+        else if (!strcmp(a, "--png-frames"))
+            list = val;
+        else if (!strcmp(a, "--out-dir"))
+            out_dir = val;
+        else if (!strcmp(a, "--size")) {
+            if (parse_size(cmd, val, &w, &h))
+                return CLI_EXIT_USAGE;
+        } else if (a[0] == '-' && a[1]) {
+            cli_error(cmd, 0, "unknown option '%.40s'; see 'holonomy replay --help'", a);
+            return CLI_EXIT_USAGE;
+        } else if (!rec) {
+            rec = a;
+            continue;
+        } else {
+            cli_error(cmd, 0, "more than one recording ('%.40s')", a);
+            return CLI_EXIT_USAGE;
+        }
+        if (takes)
+            i++;
+    }
+    if (!rec) {
+        cli_error(cmd, 0, "no recording given; see 'holonomy replay --help'");
+        return CLI_EXIT_USAGE;
+    }
+    if (!list != !out_dir) {
+        cli_error(cmd, 0, "--png-frames and --out-dir go together");
+        return CLI_EXIT_USAGE;
+    }
+    static long pngs[4096];
+    int npng = 0;
+    if (list && parse_frame_list(list, pngs, 4096, &npng)) {
+        cli_error(cmd, 0, "--png-frames '%.40s' is not a comma-separated list of frames", list);
+        return CLI_EXIT_USAGE;
+    }
+    const char *dirs[2] = {log_dir, out_dir};
+    for (int i = 0; i < 2; i++) {
+        struct stat st;
+        if (dirs[i] && (stat(dirs[i], &st) || !S_ISDIR(st.st_mode))) {
+            cli_error(cmd, 0, "'%.200s' is not a folder", dirs[i]);
+            return CLI_EXIT_USAGE;
+        }
+    }
+    file_lines fl;
+    int status = read_lines(cmd, rec, &fl);
+    if (status) {
+        free_lines(&fl);
+        return status;
+    }
+    static session_level levels[SESSION_MAX_LEVELS];
+    int nlevels = 0;
+    char err[256];
+    long first = session_read_header(fl.line, fl.len, fl.n, levels, &nlevels, err, sizeof err);
+    if (!first) {
+        cli_error(cmd, 0, "%.200s: %s", rec, err);
+        free_lines(&fl);
+        return CLI_EXIT_USAGE;
+    }
+    hol_osmesa gl = {0};
+    int have_gl = 0;
+    hol_render *r = NULL;
+    uint8_t *rgba = NULL;
+    session s;
+    memset(&s, 0, sizeof s);
+    status = session_open(&s, cmd, levels, nlevels, log_dir, NULL);
+    if (status)
+        goto out;
+    if (npng) {
+        char msg[256];
+        if (hol_osmesa_create(&gl, w, h, msg, sizeof msg)) {
+            cli_error(cmd, 0, "%s", msg);
+            status = CLI_EXIT_FAIL;
+            goto out;
+        }
+        have_gl = 1;
+        hol_render_desc rd;
+        memset(&rd, 0, sizeof rd);
+        rd.getproc = hol_osmesa_getproc;
+        rd.world = hol_app_world(s.app);
+        rgba = malloc((size_t)w * (size_t)h * 4);
+        hol_err e = rgba ? hol_render_create(&rd, &r) : HOL_ENOMEM;
+        if (e) {
+            cli_error(cmd, 0, "cannot initialise the renderer: %s", hol_err_str(e));
+            status = CLI_EXIT_FAIL;
+            goto out;
+        }
+    }
+    for (long li = first - 1; li < fl.n; li++) {
+        hol_input in;
+        if (parse_input_line(cmd, &fl, li, &in)) {
+            status = CLI_EXIT_USAGE;
+            goto out;
+        }
+        long frame = s.frame;
+        int rc = session_step(&s, &in);
+        if (rc < 0) {
+            status = CLI_EXIT_FAIL;
+            goto out;
+        }
+        if (r && hol_app_get_events(s.app)->level_started)
+            hol_render_invalidate(r);
+        int want = 0;
+        for (int k = 0; k < npng; k++)
+            want |= pngs[k] == frame;
+        if (want) {
+            hol_frame_desc fd;
+            session_frame_desc(hol_app_get_view(s.app), &fd, w, h);
+            hol_err e = hol_render_frame(r, &fd, NULL);
+            char path[4096];
+            snprintf(path, sizeof path, "%s/frame-%06ld.png", out_dir, frame);
+            if (!e)
+                hol_render_read_rgba(r, w, h, rgba);
+            if (e || hol_png_write_file(path, rgba, w, h, 0)) {
+                cli_error(cmd, 0, "cannot render frame %ld to '%.200s'", frame, path);
+                status = CLI_EXIT_FAIL;
+                goto out;
+            }
+        }
+        if (rc > 0)
+            break;
+    }
+    print_end(&s);
+out:
+    hol_render_destroy(r);
+    free(rgba);
+    if (have_gl)
+        hol_osmesa_destroy(&gl);
+    if (s.app) {
+        int c = session_close(&s);
+        if (!status)
+            status = c;
+    }
+    free_lines(&fl);
+    int o = cli_finish_output(cmd);
+    return status ? status : o;
+}

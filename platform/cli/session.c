@@ -1,0 +1,462 @@
+/* session.c - a play session: app step, levels, logs, recording (see
+ * session.h). */
+#include "session.h"
+
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "../../core/hol_input_io.h"
+#include "../../core/hol_world.h"
+#include "cli.h"
+
+static const char *const mode_names[] = {"explore", "flag", "keys", "tutorial"};
+static const char *const end_names[] = {"open", "done", "restart", "quit"};
+
+/* ---- level files (SPEC section 5) ---------------------------------------- */
+
+int session_parse_level(const char *text, size_t len, hol_app_level *lvl, char *err,
+                        size_t err_cap)
+{
+    hol_app_level L;
+    memset(&L, 0, sizeof L);
+    L.cues = HOL_CUE_ALL;
+    int have_mode = 0;
+    long lineno = 0;
+    const char *p = text, *end = text + len;
+    while (p < end) {
+        const char *nl = memchr(p, '\n', (size_t)(end - p));
+        const char *le = nl ? nl : end;
+        lineno++;
+        char line[512];
+        size_t n = (size_t)(le - p);
+        if (n >= sizeof line) {
+            snprintf(err, err_cap, "line %ld: longer than %zu bytes", lineno, sizeof line - 1);
+            return 1;
+        }
+        memcpy(line, p, n);
+        line[n] = 0;
+        p = nl ? nl + 1 : end;
+        if (memchr(line, 0, n)) {
+            snprintf(err, err_cap, "line %ld: a NUL byte", lineno);
+            return 1;
+        }
+        char *hash = strchr(line, '#');
+        if (hash)
+            *hash = 0;
+        char *f[8];
+        size_t fl[8];
+        int nf = cli_split(line, strlen(line), f, fl, 7);
+        if (nf == 0)
+            continue;
+        for (int i = 0; i < nf && i < 7; i++)
+            f[i][fl[i]] = 0;
+        const char *key = f[0];
+        if (nf < 2) {
+            snprintf(err, err_cap, "line %ld: '%.20s' needs a value", lineno, key);
+            return 1;
+        }
+        if (!strcmp(key, "mode") && nf == 2) {
+            int m = -1;
+            for (int i = 0; i < 4; i++)
+                if (!strcmp(f[1], mode_names[i]))
+                    m = i;
+            if (m < 0) {
+                snprintf(err, err_cap, "line %ld: mode '%.20s' is not explore, tutorial, flag or keys",
+                         lineno, f[1]);
+                return 1;
+            }
+            L.mode = m;
+            have_mode = 1;
+        } else if (!strcmp(key, "seed") && nf == 2) {
+            char *e;
+            errno = 0;
+            unsigned long long v = strtoull(f[1], &e, 0);
+            if (*e || errno || f[1][0] == '-' || f[1][0] == '+') {
+                snprintf(err, err_cap, "line %ld: seed '%.30s' is not an unsigned 64-bit number",
+                         lineno, f[1]);
+                return 1;
+            }
+            L.seed = v;
+        } else if (!strcmp(key, "start") && nf == 2) {
+            size_t nd = 0;
+            if (hol_walk_parse(f[1], strlen(f[1]), L.start, sizeof L.start, &nd, NULL)) {
+                snprintf(err, err_cap, "line %ld: start '%.30s' is not a walk of N, E, S, W",
+                         lineno, f[1]);
+                return 1;
+            }
+            L.nstart = (int)nd;
+        } else if ((!strcmp(key, "flag") || !strcmp(key, "chest")) && nf == 2) {
+            hol_tile t;
+            if (hol_tile_parse(f[1], -1, &t)) {
+                snprintf(err, err_cap, "line %ld: '%.30s' is not a canonical address", lineno,
+                         f[1]);
+                return 1;
+            }
+            if (key[0] == 'f')
+                L.flag = t;
+            else
+                L.chest = t;
+        } else if (!strcmp(key, "keys") && nf <= 6) {
+            for (int i = 1; i < nf; i++)
+                if (hol_tile_parse(f[i], -1, &L.keys[i - 1])) {
+                    snprintf(err, err_cap, "line %ld: key '%.30s' is not a canonical address",
+                             lineno, f[i]);
+                    return 1;
+                }
+            L.nkeys = nf - 1;
+        } else {
+            snprintf(err, err_cap, "line %ld: unknown key or wrong value count: '%.20s'",
+                     lineno, key);
+            return 1;
+        }
+    }
+    if (!have_mode) {
+        snprintf(err, err_cap, "line %ld: no 'mode' line", lineno);
+        return 1;
+    }
+    *lvl = L;
+    return 0;
+}
+
+/* ---- logs ----------------------------------------------------------------- */
+
+static void ring_push_step(session *s, const hol_app_step_event *e)
+{
+    long i = (s->step_head + s->step_n) % SESSION_STEP_ROWS;
+    s->step_ring[i] = *e;
+    if (s->step_n < SESSION_STEP_ROWS)
+        s->step_n++;
+    else {
+        s->step_head = (s->step_head + 1) % SESSION_STEP_ROWS;
+        s->step_dropped++;
+    }
+}
+
+static void ring_push_head(session *s, const session_head_row *r)
+{
+    long i = (s->head_head + s->head_n) % SESSION_HEAD_ROWS;
+    s->head_ring[i] = *r;
+    if (s->head_n < SESSION_HEAD_ROWS)
+        s->head_n++;
+    else {
+        s->head_head = (s->head_head + 1) % SESSION_HEAD_ROWS;
+        s->head_dropped++;
+    }
+}
+
+static int log_path(const session *s, char *buf, size_t cap, const char *what)
+{
+    int n = s->attempt ? snprintf(buf, cap, "%s/%s-%03d.csv", s->log_dir, what, s->attempt)
+                       : 0;
+    return n < 0 || (size_t)n >= cap;
+}
+
+static int write_attempt_logs(session *s, const hol_app_summary *sum)
+{
+    if (!s->log_dir || !s->attempt_open)
+        return 0;
+    s->attempt_open = 0;
+    const char *lname = s->levels[s->cur].name;
+    char path[4096], addr[HOL_TILE_ADDR_MAX];
+    hol_file_atomic a;
+    /* steps */
+    if (log_path(s, path, sizeof path, "steps") || hol_file_atomic_open(&a, path))
+        goto fail;
+    fprintf(a.f, "attempt,level,t,step,col,row,dir,yaw,tile,orient,remaining,cues\n");
+    for (long k = 0; k < s->step_n; k++) {
+        const hol_app_step_event *e = &s->step_ring[(s->step_head + k) % SESSION_STEP_ROWS];
+        hol_tile_print(e->room.tile, addr);
+        fprintf(a.f, "%d,%s,%.4f,%d,%d,%d,%c,%.2f,%s,%d,%d,%u\n", s->attempt, lname, e->t,
+                e->index, e->room.col, e->room.row, hol_dir_to_char(e->dir), e->yaw_deg, addr,
+                e->room.orient, e->remaining, e->cues);
+    }
+    if (hol_file_atomic_commit(&a))
+        goto fail;
+    /* head */
+    if (log_path(s, path, sizeof path, "head") || hol_file_atomic_open(&a, path))
+        goto fail;
+    fprintf(a.f, "attempt,level,t,x,y,z,yaw,pitch,col,row,tile\n");
+    for (long k = 0; k < s->head_n; k++) {
+        const session_head_row *r = &s->head_ring[(s->head_head + k) % SESSION_HEAD_ROWS];
+        hol_tile_print(r->room.tile, addr);
+        fprintf(a.f, "%d,%s,%.1f,%.4f,%.4f,%.4f,%.2f,%.2f,%d,%d,%s\n", s->attempt, lname, r->t,
+                r->pos[0], r->pos[1], r->pos[2], r->yaw, r->pitch, r->room.col, r->room.row,
+                addr);
+    }
+    if (hol_file_atomic_commit(&a))
+        goto fail;
+    /* summary: every attempt so far */
+    if (s->nsummary < SESSION_MAX_ATTEMPTS) {
+        session_summary_row *r = &s->summary[s->nsummary++];
+        r->attempt = s->attempt;
+        r->level = s->cur;
+        r->s = *sum;
+        r->dropped = s->step_dropped + s->head_dropped;
+    }
+    snprintf(path, sizeof path, "%s/summary.csv", s->log_dir);
+    if (hol_file_atomic_open(&a, path))
+        goto fail;
+    fprintf(a.f, "attempt,level,mode,seed,steps,optimum,time,end,dropped\n");
+    for (int k = 0; k < s->nsummary; k++) {
+        const session_summary_row *r = &s->summary[k];
+        fprintf(a.f, "%d,%s,%s,%llu,%d,%d,%.4f,%s,%ld\n", r->attempt, s->levels[r->level].name,
+                mode_names[r->s.mode], (unsigned long long)r->s.seed, r->s.steps, r->s.optimum,
+                r->s.time_s, end_names[r->s.end], r->dropped);
+    }
+    if (hol_file_atomic_commit(&a))
+        goto fail;
+    return 0;
+fail:
+    cli_error(s->cmd, 0, "cannot write the logs in '%.200s': %s", s->log_dir, strerror(errno));
+    return -1;
+}
+
+static void begin_attempt(session *s)
+{
+    s->attempt++;
+    s->attempt_open = 1;
+    s->step_head = s->step_n = s->step_dropped = 0;
+    s->head_head = s->head_n = s->head_dropped = 0;
+}
+
+/* ---- the session ------------------------------------------------------------ */
+
+static int start_level(session *s)
+{
+    hol_err err = hol_app_start_level(s->app, &s->levels[s->cur].lvl);
+    if (err) {
+        cli_error(s->cmd, 0, "level '%.60s' cannot start: %s", s->levels[s->cur].name,
+                  err == HOL_EBUDGET ? "its optimum cannot be proved exact"
+                  : err == HOL_EARG  ? "an objective on the start tile, or a start walk "
+                                       "leaving the room"
+                                     : hol_err_str(err));
+        return CLI_EXIT_USAGE;
+    }
+    return 0;
+}
+
+int session_open(session *s, const char *cmd, session_level *levels, int nlevels,
+                 const char *log_dir, const char *record_path)
+{
+    memset(s, 0, sizeof *s);
+    s->cmd = cmd;
+    s->levels = levels;
+    s->nlevels = nlevels;
+    s->log_dir = log_dir;
+    if (log_dir) {
+        s->step_ring = calloc(SESSION_STEP_ROWS, sizeof *s->step_ring);
+        s->head_ring = calloc(SESSION_HEAD_ROWS, sizeof *s->head_ring);
+        s->summary = calloc(SESSION_MAX_ATTEMPTS, sizeof *s->summary);
+        if (!s->step_ring || !s->head_ring || !s->summary) {
+            cli_error(cmd, 0, "out of memory");
+            session_close(s);
+            return CLI_EXIT_FAIL;
+        }
+    }
+    hol_app_desc d;
+    memset(&d, 0, sizeof d);
+    hol_err err = hol_app_create(&d, &s->app);
+    if (err) {
+        cli_error(cmd, 0, "cannot create the app: %s", hol_err_str(err));
+        session_close(s);
+        return CLI_EXIT_FAIL;
+    }
+    int st = start_level(s);
+    if (st) {
+        session_close(s);
+        return st;
+    }
+    if (record_path) {
+        if (hol_file_atomic_open(&s->rec, record_path)) {
+            cli_error(cmd, 0, "cannot write '%.200s': %s", record_path, strerror(errno));
+            session_close(s);
+            return CLI_EXIT_FAIL;
+        }
+        s->recording = 1;
+        static char recbuf[1 << 20];
+        setvbuf(s->rec.f, recbuf, _IOFBF, sizeof recbuf);
+        fprintf(s->rec.f, "holonomy-rec %d\n", HOL_INPUT_TEXT_VERSION);
+        for (int i = 0; i < nlevels; i++) {
+            fprintf(s->rec.f, "level %s\n", levels[i].name);
+            const char *p = levels[i].text, *e = p + levels[i].len;
+            while (p < e) {
+                const char *nl = memchr(p, '\n', (size_t)(e - p));
+                size_t n = (size_t)((nl ? nl : e) - p);
+                fprintf(s->rec.f, "L %.*s\n", (int)n, p);
+                p = nl ? nl + 1 : e;
+            }
+            fprintf(s->rec.f, "end\n");
+        }
+    }
+    return 0;
+}
+
+int session_step(session *s, const hol_input *in)
+{
+    if (s->finished)
+        return 1;
+    hol_err err = hol_app_step(s->app, in);
+    if (err) {
+        cli_error(s->cmd, 0, "frame %ld: the app step failed: %s", s->frame, hol_err_str(err));
+        return -1;
+    }
+    s->frame++;
+    if (s->recording) {
+        char line[HOL_INPUT_LINE_MAX + 1];
+        size_t n = hol_input_format(in, line, sizeof line);
+        fwrite(line, 1, n, s->rec.f);
+        fputc('\n', s->rec.f);
+    }
+    const hol_app_events *ev = hol_app_get_events(s->app);
+    const hol_app_view *v = hol_app_get_view(s->app);
+    if (s->log_dir) {
+        /* a restart ends the old attempt before the new one's rows; a
+         * completion ends it after this step's rows */
+        if (ev->level_ended && ev->level_started && write_attempt_logs(s, &ev->summary))
+            return -1;
+        if (ev->level_started)
+            begin_attempt(s);
+        for (int i = 0; i < ev->nsteps; i++)
+            ring_push_step(s, &ev->steps[i]);
+        if (ev->head_sample) {
+            session_head_row r;
+            r.t = ev->head_sample_t;
+            memcpy(r.pos, v->head, sizeof r.pos);
+            r.yaw = v->yaw_deg;
+            r.pitch = v->pitch_deg;
+            r.room = v->user;
+            ring_push_head(s, &r);
+        }
+        if (ev->level_ended && !ev->level_started && write_attempt_logs(s, &ev->summary))
+            return -1;
+    }
+    if (v->state == HOL_APP_QUIT) {
+        s->finished = 1;
+        return 1;
+    }
+    if (ev->next_level) {
+        if (s->cur + 1 >= s->nlevels) {
+            s->finished = 1;
+            return 1;
+        }
+        s->cur++;
+        if (start_level(s))
+            return -1;
+    }
+    return 0;
+}
+
+int session_close(session *s)
+{
+    int status = 0;
+    if (s->app && s->attempt_open) {
+        const hol_app_view *v = hol_app_get_view(s->app);
+        hol_app_summary sum;
+        memset(&sum, 0, sizeof sum);
+        sum.mode = s->levels[s->cur].lvl.mode;
+        sum.seed = s->levels[s->cur].lvl.seed;
+        sum.steps = v->hud.steps;
+        sum.optimum = v->hud.optimum;
+        sum.time_s = v->hud.elapsed_s;
+        sum.end = HOL_APP_END_NONE;
+        if (write_attempt_logs(s, &sum))
+            status = CLI_EXIT_FAIL;
+    }
+    if (s->recording) {
+        if (hol_file_atomic_commit(&s->rec)) {
+            cli_error(s->cmd, 0, "cannot write the recording: %s", strerror(errno));
+            status = CLI_EXIT_FAIL;
+        }
+        s->recording = 0;
+    }
+    hol_app_destroy(s->app);
+    free(s->step_ring);
+    free(s->head_ring);
+    free(s->summary);
+    memset(s, 0, sizeof *s);
+    return status;
+}
+
+void session_frame_desc(const hol_app_view *v, hol_frame_desc *fd, int w, int h)
+{
+    memset(fd, 0, sizeof *fd);
+    fd->user = v->user;
+    memcpy(fd->cam.eye, v->head, sizeof fd->cam.eye);
+    fd->cam.yaw_deg = v->yaw_deg;
+    fd->cam.pitch_deg = v->pitch_deg;
+    fd->cam.fovy_deg = 90;
+    fd->cam.width = w;
+    fd->cam.height = h;
+    fd->flags = v->map.place == HOL_MINIMAP_OFF ? 0 : HOL_RENDER_MINIMAP;
+    int n = v->map.nobjectives < HOL_RENDER_MAX_OBJECTIVES ? v->map.nobjectives
+                                                           : HOL_RENDER_MAX_OBJECTIVES;
+    fd->nobjectives = n;
+    memcpy(fd->objectives, v->map.objectives, (size_t)n * sizeof fd->objectives[0]);
+    fd->objective_text = v->hud.status[0] ? v->hud.status : v->hud.objective;
+    fd->steps_taken = v->hud.steps;
+    fd->time_s = v->hud.elapsed_s;
+    fd->path = v->map.npath ? v->map.path : NULL;
+    fd->npath = v->map.npath;
+}
+
+long session_read_header(char *const *lines, const size_t *lens, long nlines,
+                         session_level *levels, int *nlevels, char *err, size_t err_cap)
+{
+    char want[32];
+    snprintf(want, sizeof want, "holonomy-rec %d", HOL_INPUT_TEXT_VERSION);
+    if (nlines < 1 || strncmp(lines[0], "holonomy-rec ", 13)) {
+        snprintf(err, err_cap, "line 1: not a recording (no 'holonomy-rec' header)");
+        return 0;
+    }
+    if (lens[0] != strlen(want) || memcmp(lines[0], want, lens[0])) {
+        snprintf(err, err_cap, "line 1: recording format '%.30s' is not version %d",
+                 lines[0] + 13, HOL_INPUT_TEXT_VERSION);
+        return 0;
+    }
+    int n = 0;
+    long i = 1;
+    while (i < nlines && !strncmp(lines[i], "level ", 6)) {
+        if (n >= SESSION_MAX_LEVELS) {
+            snprintf(err, err_cap, "line %ld: more than %d levels", i + 1, SESSION_MAX_LEVELS);
+            return 0;
+        }
+        session_level *L = &levels[n];
+        memset(L, 0, sizeof *L);
+        snprintf(L->name, sizeof L->name, "%.*s", (int)(lens[i] - 6), lines[i] + 6);
+        long first = i + 1;
+        for (i++; i < nlines && !strncmp(lines[i], "L ", 2); i++) {
+            size_t m = lens[i] - 2;
+            if (L->len + m + 1 > sizeof L->text) {
+                snprintf(err, err_cap, "line %ld: level '%.40s' longer than %zu bytes", i + 1,
+                         L->name, sizeof L->text);
+                return 0;
+            }
+            memcpy(L->text + L->len, lines[i] + 2, m);
+            L->len += m;
+            L->text[L->len++] = '\n';
+        }
+        if (i >= nlines || strcmp(lines[i], "end")) {
+            snprintf(err, err_cap, "line %ld: level '%.40s' not closed by 'end'", i + 1, L->name);
+            return 0;
+        }
+        char perr[256];
+        if (session_parse_level(L->text, L->len, &L->lvl, perr, sizeof perr)) {
+            /* name the recording's line: the level's line N is line first + N - 1 */
+            long ln = strtol(perr + 5, NULL, 10);
+            const char *msg = strchr(perr, ':');
+            snprintf(err, err_cap, "line %ld: level '%.40s'%s", first + ln, L->name,
+                     msg ? msg : perr);
+            return 0;
+        }
+        i++;
+        n++;
+    }
+    if (n == 0) {
+        snprintf(err, err_cap, "line %ld: the recording holds no level", i + 1);
+        return 0;
+    }
+    *nlevels = n;
+    return i + 1;
+}
