@@ -129,13 +129,19 @@ static void free_lines(file_lines *fl)
 
 /* Input line k of a file (after an optional recording header) or 1 with
  * the error reported. */
-static int parse_input_line(const char *cmd, const file_lines *fl, long k, hol_input *in)
+static int parse_input_line(const char *cmd, const file_lines *fl, long k, hol_input *in,
+                            double *prev_t)
 {
     size_t bad = 0;
     if (hol_input_parse(fl->line[k], fl->len[k], in, &bad)) {
         cli_error(cmd, k + 1, "not an input record (byte %zu)", bad + 1);
         return 1;
     }
+    if (in->time_s < *prev_t) {
+        cli_error(cmd, k + 1, "time %.17g goes back (before: %.17g)", in->time_s, *prev_t);
+        return 1;
+    }
+    *prev_t = in->time_s;
     return 0;
 }
 
@@ -328,7 +334,7 @@ int cli_cmd_play(int argc, char **argv)
     }
     hol_x11_keys keys;
     memset(&keys, 0, sizeof keys);
-    double t0 = now_s(), last_t = 0;
+    double t0 = now_s(), last_t = 0, prev_t = 0;
     for (long k = 0; frames <= 0 || k < frames; k++) {
         int open = hol_x11_poll(&xw, &keys);
         hol_input in;
@@ -337,7 +343,7 @@ int cli_cmd_play(int argc, char **argv)
             long li = in_first + k;
             if (li >= in_lines.n)
                 break;
-            if (parse_input_line(cmd, &in_lines, li, &in)) {
+            if (parse_input_line(cmd, &in_lines, li, &in, &prev_t)) {
                 status = CLI_EXIT_USAGE;
                 goto out;
             }
@@ -519,9 +525,10 @@ int cli_cmd_replay(int argc, char **argv)
             goto out;
         }
     }
+    double prev_t = 0;
     for (long li = first - 1; li < fl.n; li++) {
         hol_input in;
-        if (parse_input_line(cmd, &fl, li, &in)) {
+        if (parse_input_line(cmd, &fl, li, &in, &prev_t)) {
             status = CLI_EXIT_USAGE;
             goto out;
         }

@@ -1,0 +1,74 @@
+#!/bin/sh
+# cli_play.sh - `holonomy play`: usage errors; under Xvfb (when installed)
+# a scripted playthrough from a recorded input file scores the optimum, a
+# detour adds its steps, and the recording it writes replays to the same
+# logs byte for byte.
+. "$(dirname "$0")/lib.sh"
+
+run "--help" 0 "$H" play --help
+grep -q -- "--record" "$T/out" && ok || bad "--help does not describe --record"
+printf 'mode flag\nseed 5\nflag Wrf\n' >"$T/f.lvl"
+printf 'mode flag\nseed 5\nflag Wrr\n' >"$T/bad.lvl"
+run "unknown option" 2 "$H" play --bogus && one_line "unknown option" "bogus"
+run "bad mode" 2 "$H" play --mode chess && one_line "bad mode" "chess"
+run "level and mode" 2 "$H" play "$T/f.lvl" --mode flag && one_line "level and mode" "not both"
+run "missing level" 2 "$H" play "$T/nope.lvl" && one_line "missing level" "nope.lvl"
+run "bad level" 2 "$H" play "$T/bad.lvl" && one_line "bad level" "line 3"
+run "bad seed" 2 "$H" play --seed -1 && one_line "bad seed" "seed"
+run "log not a folder" 2 "$H" play --log "$T/f.lvl" && one_line "log" "not a folder"
+
+if ! command -v Xvfb >/dev/null 2>&1; then
+    echo "note: no Xvfb here: the window is not tested"
+    finish cli_play
+    exit $?
+fi
+D=":$((100 + $$ % 400))"
+Xvfb "$D" -screen 0 320x240x24 -nolisten tcp >/dev/null 2>&1 &
+XPID=$!
+trap 'kill $XPID 2>/dev/null; rm -rf "$T"' EXIT
+for i in 1 2 3 4 5 6 7 8 9 10; do
+    DISPLAY=$D "$H" play --frames 2 --size 64x48 >/dev/null 2>&1 && break
+    sleep 0.3
+done
+export DISPLAY=$D
+
+# input lines: tracked head at the cell centres of a walk from (1,1)
+walk_input() {
+    printf '%s\n' "$1" | awk '{
+        c = 1; r = 1; t = 0
+        printf "%s f=9 h=%.1f,1.6,%.1f,0,0,0,1\n", t, c + 0.5, r + 0.5
+        n = length($0); if ($0 == "-") n = 0
+        for (i = 1; i <= n; i++) {
+            d = substr($0, i, 1)
+            if (d == "N") r--; if (d == "S") r++; if (d == "E") c++; if (d == "W") c--
+            t += 0.25
+            printf "%s f=9 h=%.1f,1.6,%.1f,0,0,0,1\n", t, c + 0.5, r + 0.5
+        }
+    }'
+}
+printf -- '- Wrf\n' | "$H" nav >"$T/nav" || bad "nav"
+K=$(cut -d' ' -f1 "$T/nav") WALK=$(cut -d' ' -f2 "$T/nav")
+walk_input "$WALK" >"$T/opt.in"
+walk_input "NS$WALK" >"$T/detour.in"
+mkdir "$T/l1" "$T/l2"
+run "play optimal" 0 "$H" play "$T/f.lvl" --input "$T/opt.in" --size 64x48 --log "$T/l1" \
+    --record "$T/r.rec"
+grep -q "^level f done steps $K optimum $K " "$T/out" && ok || bad "optimal: $(cat "$T/out")"
+run "play detour" 0 "$H" play "$T/f.lvl" --input "$T/detour.in" --size 64x48
+grep -q "^level f done steps $((K + 2)) optimum $K " "$T/out" && ok || bad "detour: $(cat "$T/out")"
+# the recording replays to the same logs, byte for byte
+run "replay" 0 "$H" replay "$T/r.rec" --log "$T/l2"
+diff -r "$T/l1" "$T/l2" >/dev/null && ok || bad "replayed logs differ: $(diff -r "$T/l1" "$T/l2" | head -3)"
+# a recording is also a play's --input
+run "recording as input" 0 "$H" play "$T/f.lvl" --input "$T/r.rec" --size 64x48
+grep -q "^level f done steps $K " "$T/out" && ok || bad "recording as input: $(cat "$T/out")"
+# pancake: walking forward 1 s crosses one edge north
+awk 'BEGIN { for (k = 0; k < 60; k++) printf "%.17g f=8 m=0,1\n", k / 60 }' >"$T/fwd.in"
+run "pancake" 0 "$H" play --mode explore --input "$T/fwd.in" --size 64x48
+grep -q "^level explore-1 playing steps 1 optimum -1 tile N cell 1,0\$" "$T/out" && ok ||
+    bad "pancake: $(cat "$T/out")"
+# keyboard mode runs and stops after --frames
+run "frames" 0 "$H" play --frames 3 --size 64x48
+kill $XPID 2>/dev/null
+wait $XPID 2>/dev/null
+finish cli_play

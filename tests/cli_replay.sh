@@ -1,0 +1,84 @@
+#!/bin/sh
+# cli_replay.sh - `holonomy replay`: a recording through the same app step
+# as `play`: scores (optimal walk = optimum, detour of k = optimum + k),
+# logs byte for byte on every run, PNG frames, bad recordings.
+. "$(dirname "$0")/lib.sh"
+
+# rec LEVELTEXT WALK: a recording of one level whose input walks the room
+# steps WALK (tracked head at cell centres, 0.25 s a step) from cell (1,1)
+rec() {
+    printf 'holonomy-rec 1\nlevel lv\n'
+    printf '%s\n' "$1" | sed 's/^/L /'
+    printf 'end\n'
+    printf '%s\n' "$2" | awk '{
+        c = 1; r = 1; t = 0
+        printf "%s f=9 h=%.1f,1.6,%.1f,0,0,0,1\n", t, c + 0.5, r + 0.5
+        n = length($0); if ($0 == "-") n = 0
+        for (i = 1; i <= n; i++) {
+            d = substr($0, i, 1)
+            if (d == "N") r--; if (d == "S") r++; if (d == "E") c++; if (d == "W") c--
+            t += 0.25
+            printf "%s f=9 h=%.1f,1.6,%.1f,0,0,0,1\n", t, c + 0.5, r + 0.5
+        }
+    }'
+}
+
+run "--help" 0 "$H" replay --help
+grep -q -- "--png-frames" "$T/out" && ok || bad "--help does not describe --png-frames"
+
+# the navigator's walk scores exactly the optimum; a detour of 2 adds 2
+LEVEL='mode flag
+seed 5
+flag Wrf'
+printf -- '- Wrf\n' | "$H" nav >"$T/nav" || bad "nav"
+K=$(cut -d' ' -f1 "$T/nav") WALK=$(cut -d' ' -f2 "$T/nav")
+rec "$LEVEL" "$WALK" >"$T/opt.rec"
+mkdir "$T/l1" "$T/l2" "$T/l3" "$T/png"
+run "optimal walk" 0 "$H" replay "$T/opt.rec" --log "$T/l1"
+grep -q "^level lv done steps $K optimum $K " "$T/out" && ok ||
+    bad "optimal walk: $(cat "$T/out"), want done $K $K"
+grep -q "^1,lv,flag,5,$K,$K,[0-9.]*,done,0\$" "$T/l1/summary.csv" && ok ||
+    bad "summary: $(cat "$T/l1/summary.csv")"
+[ "$(($(wc -l <"$T/l1/steps-001.csv") - 1))" = "$K" ] && ok || bad "one steps row per room step"
+tail -1 "$T/l1/steps-001.csv" | grep -q ',Wrf,[0-3],0,15$' && ok ||
+    bad "last step row: $(tail -1 "$T/l1/steps-001.csv")"
+rec "$LEVEL" "SN$WALK" >"$T/detour.rec"
+run "detour" 0 "$H" replay "$T/detour.rec"
+grep -q "^level lv done steps $((K + 2)) optimum $K " "$T/out" && ok ||
+    bad "detour: $(cat "$T/out"), want done $((K + 2)) $K"
+
+# byte for byte: the same recording twice gives the same logs; frames render
+run "again" 0 "$H" replay "$T/opt.rec" --log "$T/l2" --png-frames 0,3 --out-dir "$T/png" --size 64x48
+diff -r "$T/l1" "$T/l2" >/dev/null && ok || bad "replay logs differ between runs"
+for f in 000000 000003; do
+    head -c 8 "$T/png/frame-$f.png" | od -An -c | grep -q 'P   N   G' && ok || bad "frame $f is not a PNG"
+done
+
+# keys and chest: both keys, then the chest
+LEVEL='mode keys
+seed 3
+keys Nf Wr
+chest Sf'
+"$H" tour - Nf Wr Sf >"$T/tour" || bad "tour"
+K=$(cut -d' ' -f1 "$T/tour") WALK=$(cut -d' ' -f2 "$T/tour")
+rec "$LEVEL" "$WALK" >"$T/keys.rec"
+run "keys" 0 "$H" replay "$T/keys.rec" --log "$T/l3"
+grep -q "^level lv done steps $K optimum $K " "$T/out" && ok || bad "keys: $(cat "$T/out")"
+
+# bad recordings: exit 2, one line naming the line
+printf 'hello\n' >"$T/bad1"
+run "no header" 2 "$H" replay "$T/bad1" && one_line "no header" "line 1"
+printf 'holonomy-rec 2\n' >"$T/bad2"
+run "version" 2 "$H" replay "$T/bad2" && one_line "version" "version 1"
+{ rec "$LEVEL" "N"; printf '9 m=4,0\n'; } >"$T/bad3"
+run "bad input line" 2 "$H" replay "$T/bad3" && one_line "bad input line" "line 10"
+printf 'holonomy-rec 1\nlevel x\nL mode flag\nL flug Nf\nend\n0\n' >"$T/bad4"
+run "bad level line" 2 "$H" replay "$T/bad4" && one_line "bad level line" "line 4"
+printf 'holonomy-rec 1\nlevel x\nL mode flag\nL flag O\nend\n0\n' >"$T/bad5"
+run "objective on the start" 2 "$H" replay "$T/bad5" && one_line "start" "start tile"
+{ rec "$LEVEL" "N"; printf '0 f=8\n'; } >"$T/bad6"
+run "time going back" 2 "$H" replay "$T/bad6" && one_line "time going back" "line 10"
+run "missing" 2 "$H" replay "$T/nonexistent"
+run "no args" 2 "$H" replay
+run "png without dir" 2 "$H" replay "$T/opt.rec" --png-frames 1
+finish cli_replay
