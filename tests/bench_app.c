@@ -1,0 +1,170 @@
+/* bench_app.c - `make bench` figures for the app step (core/hol_app.h),
+ * without GL: the CPU time of hol_app_step per frame while a pancake user
+ * walks (random walk and turn at 72 Hz), over all frames and over the
+ * frames with a room step (world update, objectives, guidance replan);
+ * and the level start (placement and exact optimum).
+ * Times are thread CPU time (CLOCK_THREAD_CPUTIME_ID).
+ */
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "../core/hol_app.h"
+#include "../core/hol_nav.h"
+#include "../core/hol_tile.h"
+
+static double now(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    return (double)t.tv_sec + (double)t.tv_nsec * 1e-9;
+}
+
+static uint64_t rng = 0x2545F4914F6CDD1D;
+static uint32_t rnd(uint32_t n)
+{
+    rng ^= rng << 13;
+    rng ^= rng >> 7;
+    rng ^= rng << 17;
+    return (uint32_t)((rng >> 11) % n);
+}
+
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return x < y ? -1 : x > y;
+}
+
+/* A random tile at distance d from O (a random canonical address). */
+static hol_tile tile_at(int d)
+{
+    for (;;) {
+        hol_tile t = hol_tile_origin();
+        int ok = 1;
+        for (int i = 0; i < d && ok; i++) {
+            static const int letters[3] = {0, 1, 3};
+            hol_tile c;
+            ok = !hol_tile_child(t, i == 0 ? (int)rnd(4) : letters[rnd(3)], &c);
+            t = c;
+        }
+        if (ok)
+            return t;
+    }
+}
+
+#define FRAMES 30000
+static double g_time; /* input time never goes back across levels */
+
+static void frames(hol_app *app, const char *what)
+{
+    static double all[FRAMES], stepped[FRAMES];
+    int nall = 0, nstep = 0;
+    float fwd = 1, turn = 0;
+    for (int f = 0; f < FRAMES; f++) {
+        if (f % 36 == 0) {
+            fwd = rnd(5) ? 1.0f : -1.0f;
+            turn = (float)rnd(3) - 1;
+        }
+        hol_input in;
+        memset(&in, 0, sizeof in);
+        g_time += 1 / 72.0;
+        in.time_s = g_time;
+        in.flags = HOL_INPUT_FOCUSED;
+        in.move[1] = fwd;
+        in.turn[0] = turn;
+        double t0 = now();
+        hol_err err = hol_app_step(app, &in);
+        double dt = (now() - t0) * 1e3;
+        if (err) {
+            fprintf(stderr, "bench_app: step failed: %s\n", hol_err_str(err));
+            exit(1);
+        }
+        all[nall++] = dt;
+        if (hol_app_get_events(app)->nsteps)
+            stepped[nstep++] = dt;
+    }
+    qsort(all, (size_t)nall, sizeof *all, cmp_double);
+    qsort(stepped, (size_t)nstep, sizeof *stepped, cmp_double);
+    printf("%s: %d frames, %d with a room step\n", what, nall, nstep);
+    printf("  every frame: median %.4f ms, p99 %.4f ms, max %.3f ms (targets < 0.2 / < 1 ms)\n",
+           all[nall / 2], all[nall * 99 / 100], all[nall - 1]);
+    if (nstep)
+        printf("  frames with a room step: median %.4f ms, p99 %.4f ms, max %.3f ms\n",
+               stepped[nstep / 2], stepped[nstep * 99 / 100], stepped[nstep - 1]);
+}
+
+int main(void)
+{
+    printf("== app step (hol_app): CPU per frame without GL\n");
+    hol_nav_desc nd;
+    memset(&nd, 0, sizeof nd);
+    hol_nav *nav;
+    if (hol_nav_create(&nd, &nav)) {
+        fprintf(stderr, "bench_app: cannot create the navigator\n");
+        return 1;
+    }
+    hol_app_desc d;
+    memset(&d, 0, sizeof d);
+    d.nav = nav;
+    hol_app *app;
+    if (hol_app_create(&d, &app)) {
+        fprintf(stderr, "bench_app: cannot create the app\n");
+        return 1;
+    }
+    /* level start: a flag at distance 10; 5 keys within 6 tiles */
+    static double starts[2][40];
+    int nok[2] = {0, 0};
+    hol_app_level L;
+    for (int k = 0; k < 40; k++) {
+        memset(&L, 0, sizeof L);
+        L.mode = HOL_APP_FLAG;
+        L.seed = (uint64_t)k;
+        L.flag = tile_at(10);
+        L.cues = HOL_CUE_ALL;
+        double t0 = now();
+        hol_err err = hol_app_start_level(app, &L);
+        if (!err)
+            starts[0][nok[0]++] = (now() - t0) * 1e3;
+        memset(&L, 0, sizeof L);
+        L.mode = HOL_APP_KEYS;
+        L.seed = (uint64_t)k;
+        L.nkeys = 5;
+        for (int i = 0; i < 5; i++)
+            L.keys[i] = tile_at(1 + (int)rnd(3)); /* within 6 tiles of each other */
+        L.chest = tile_at(1 + (int)rnd(3));
+        L.cues = HOL_CUE_ALL;
+        t0 = now();
+        err = hol_app_start_level(app, &L);
+        if (!err)
+            starts[1][nok[1]++] = (now() - t0) * 1e3;
+    }
+    for (int m = 0; m < 2; m++) {
+        qsort(starts[m], (size_t)nok[m], sizeof starts[m][0], cmp_double);
+        if (nok[m])
+            printf("level start, %s: %d levels, median %.2f ms, max %.2f ms (target < 50 ms)\n",
+                   m ? "5 keys and a chest within 3 tiles of the start" : "flag at distance 10",
+                   nok[m], starts[m][nok[m] / 2], starts[m][nok[m] - 1]);
+    }
+    memset(&L, 0, sizeof L);
+    L.mode = HOL_APP_FLAG;
+    L.seed = 2;
+    L.flag = tile_at(8);
+    L.cues = HOL_CUE_ALL;
+    if (!hol_app_start_level(app, &L))
+        frames(app, "flag level (distance 8), random pancake walk");
+    memset(&L, 0, sizeof L);
+    L.mode = HOL_APP_KEYS;
+    L.seed = 4;
+    L.nkeys = 3;
+    for (int i = 0; i < 3; i++)
+        L.keys[i] = tile_at(2);
+    L.chest = tile_at(3);
+    L.cues = HOL_CUE_ALL;
+    if (!hol_app_start_level(app, &L))
+        frames(app, "keys level (3 keys, replan a tour per step), random pancake walk");
+    hol_app_destroy(app);
+    hol_nav_destroy(nav);
+    return 0;
+}
