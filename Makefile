@@ -6,6 +6,7 @@
 #   make fuzz       build the libFuzzer harnesses and run each FUZZ_TIME s
 #   make bench      build with optimisation and print the benchmark figures
 #   make san        run the unit tests under AddressSanitizer + UBSan
+#   make run        build and play in a desktop window (RUN_ARGS: play's options)
 #   make clean      remove build outputs
 #
 # Variables: CC (gcc or clang), BUILD (output folder), FUZZ_TIME (seconds).
@@ -62,7 +63,7 @@ APT_LOCK_WAIT ?= 120
 APT_GET = $$SUDO env DEBIAN_FRONTEND=noninteractive apt-get -o DPkg::Lock::Timeout=$(APT_LOCK_WAIT)
 
 .PHONY: all test purity unit render-test cli-test fuzz-replay fuzz bench san clean deps \
-        deps-cross check-clang cross-test
+        deps-cross check-clang cross-test run
 
 all: $(BUILD)/holonomy
 
@@ -109,6 +110,10 @@ $(BUILD)/fuzz-replay/%: fuzz/%.c fuzz/replay_main.c $(wildcard fuzz/*.h) $(CORE_
 	@mkdir -p $(dir $@)
 	$(CC) $(CSTD) $(WARN) -O1 -g -D_DEFAULT_SOURCE -o $@ $< fuzz/replay_main.c $(CORE_SRC) \
 	  $(FUZZ_EXTRA_$*) $(LDLIBS)
+
+# The desktop game (EGL/X11 window): `make run RUN_ARGS="--mode flag"`.
+run: $(BUILD)/holonomy
+	$(BUILD)/holonomy play $(RUN_ARGS)
 
 test: all purity unit render-test cli-test fuzz-replay
 	@echo "make test: all suites passed"
