@@ -40,19 +40,6 @@ struct hol_app {
     int nwalk;
 };
 
-static void *hol__alloc(const hol_app_desc *d, size_t n)
-{
-    return d->alloc.alloc ? d->alloc.alloc(n, d->alloc.user) : malloc(n);
-}
-
-static void hol__free(const hol_app_desc *d, void *p)
-{
-    if (d->alloc.free)
-        d->alloc.free(p, d->alloc.user);
-    else
-        free(p);
-}
-
 static hol_world_desc hol__world_desc(const hol_app *app, uint64_t seed)
 {
     hol_world_desc wd;
@@ -84,7 +71,7 @@ hol_err hol_app_create(const hol_app_desc *desc, hol_app **out_app)
     if (!wsize)
         return HOL_EARG;
     size_t head = (sizeof(hol_app) + 63) & ~(size_t)63;
-    uint8_t *mem = hol__alloc(&d, head + wsize + 64);
+    uint8_t *mem = hol_alloc_mem(&d.alloc, head + wsize + 64);
     if (!mem)
         return HOL_ENOMEM;
     hol_app *app = (hol_app *)(void *)mem;
@@ -106,7 +93,7 @@ hol_err hol_app_create(const hol_app_desc *desc, hol_app **out_app)
         app->nav = d.nav;
     }
     if (err) {
-        hol__free(&d, mem);
+        hol_alloc_release(&d.alloc, mem);
         return err;
     }
     app->start_room = hol_room_start();
@@ -123,7 +110,7 @@ void hol_app_destroy(hol_app *app)
     if (app->own_nav)
         hol_nav_destroy(app->nav);
     hol_app_desc d = app->d;
-    hol__free(&d, app);
+    hol_alloc_release(&d.alloc, app);
 }
 
 const hol_app_view *hol_app_get_view(const hol_app *app)

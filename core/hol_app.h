@@ -31,6 +31,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "hol_alloc.h"
 #include "hol_err.h"
 #include "hol_input.h"
 #include "hol_motion.h"
@@ -61,13 +62,6 @@ enum hol_app_minimap_place { HOL_MINIMAP_HUD = 0, HOL_MINIMAP_HAND = 1, HOL_MINI
 #define HOL_APP_PATH_MAX 64
 #define HOL_APP_TEXT_MAX 48
 
-/* allocator hooks (both or neither; zero: malloc/free) */
-typedef struct hol_app_alloc {
-    void *(*alloc)(size_t size, void *user);
-    void (*free)(void *ptr, void *user);
-    void *user;
-} hol_app_alloc;
-
 /* One level as the app plays it. */
 typedef struct hol_app_level {
     int mode;                 /* hol_app_mode */
@@ -83,7 +77,7 @@ typedef struct hol_app_level {
 } hol_app_level;
 
 typedef struct hol_app_desc {
-    hol_app_alloc alloc;
+    hol_alloc alloc;          /* hooks (core/hol_alloc.h); zero: malloc */
     hol_motion_desc motion;   /* pancake speeds, hedge margin, eye height */
     uint32_t world_capacity;  /* tiles; 0: 2^16 */
     struct hol_nav *nav;      /* optional shared navigator (not owned);

@@ -69,6 +69,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "hol_alloc.h"
 #include "hol_err.h"
 #include "hol_room.h"
 #include "hol_tile.h"
@@ -140,11 +141,8 @@ typedef struct hol_tile_content {
  * SPRING/end POOL: rotation is the creek edge. LOG: rotation is the partner
  * edge. Other objects: a rotation from the seed, for variety. */
 
-typedef struct hol_world_allocator {
-    void *(*alloc)(size_t size, void *user); /* NULL: malloc */
-    void (*free)(void *ptr, void *user);     /* NULL: free */
-    void *user;
-} hol_world_allocator;
+/* the shared allocator hooks (core/hol_alloc.h) */
+typedef hol_alloc hol_world_allocator;
 
 typedef struct hol_world_desc {
     uint64_t seed;      /* any value, 0 included */

@@ -153,18 +153,22 @@ static GLuint hol__shader(const hol_gl *gl, GLenum type, const char *src)
 
 hol_err hol_render_create(const hol_render_desc *desc, hol_render **out)
 {
-    hol_render *r = calloc(1, sizeof *r);
+    hol_render_desc d;
+    memset(&d, 0, sizeof d);
+    if (desc)
+        d = *desc;
+    hol_render *r = hol_alloc_mem(&d.alloc, sizeof *r);
     if (!r)
         return HOL_ENOMEM;
-    if (desc)
-        r->desc = *desc;
-    /* one allocation for the CPU-side stores: dynamic + scratch */
-    r->verts = malloc((HOL__DYN_V + HOL__ROOM_V) * sizeof *r->verts);
-    r->idx = malloc((HOL__DYN_I + HOL__ROOM_I) * sizeof *r->idx);
-    if (!r->verts || !r->idx || hol_scene_create(&r->scene)) {
-        free(r->verts);
-        free(r->idx);
-        free(r);
+    memset(r, 0, sizeof *r);
+    r->desc = d;
+    /* the CPU-side stores: dynamic + scratch */
+    r->verts = hol_alloc_mem(&d.alloc, (HOL__DYN_V + HOL__ROOM_V) * sizeof *r->verts);
+    r->idx = hol_alloc_mem(&d.alloc, (HOL__DYN_I + HOL__ROOM_I) * sizeof *r->idx);
+    if (!r->verts || !r->idx || hol_scene_create(&d.alloc, &r->scene)) {
+        hol_alloc_release(&d.alloc, r->verts);
+        hol_alloc_release(&d.alloc, r->idx);
+        hol_alloc_release(&d.alloc, r);
         return HOL_ENOMEM;
     }
     hol_mesh_init(&r->dyn, r->verts, HOL__DYN_V, r->idx, HOL__DYN_I);
@@ -172,10 +176,10 @@ hol_err hol_render_create(const hol_render_desc *desc, hol_render **out)
                   HOL__ROOM_I);
     hol_err gerr = hol_gl_load(&r->gl, r->desc.getproc);
     if (gerr) {
-        free(r->verts);
-        free(r->idx);
-        hol_scene_destroy(r->scene);
-        free(r);
+        hol_alloc_release(&d.alloc, r->verts);
+        hol_alloc_release(&d.alloc, r->idx);
+        hol_scene_destroy(&d.alloc, r->scene);
+        hol_alloc_release(&d.alloc, r);
         return gerr;
     }
     GLuint vs = hol__shader(&r->gl, GL_VERTEX_SHADER, hol__vs);
@@ -255,10 +259,11 @@ void hol_render_destroy(hol_render *r)
         r->gl.DeleteBuffers(2, r->vbo);
     if (r->ibo[0])
         r->gl.DeleteBuffers(2, r->ibo);
-    hol_scene_destroy(r->scene);
-    free(r->verts);
-    free(r->idx);
-    free(r);
+    hol_alloc d = r->desc.alloc;
+    hol_scene_destroy(&d, r->scene);
+    hol_alloc_release(&d, r->verts);
+    hol_alloc_release(&d, r->idx);
+    hol_alloc_release(&d, r);
 }
 
 void hol_render_set_world(hol_render *r, struct hol_world *world)

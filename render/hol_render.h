@@ -39,6 +39,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "../core/hol_alloc.h"
 #include "../core/hol_room.h"
 #include "hol_view.h"
 
@@ -53,6 +54,8 @@ typedef struct hol_render_desc {
     hol_render_getproc getproc; /* required: GL is loaded through it */
     int max_width, max_height;  /* 0: 4096 */
     struct hol_world *world;   /* optional; not owned */
+    hol_alloc alloc;           /* hooks for the CPU stores (core/hol_alloc.h);
+                                  zero: malloc/free */
 } hol_render_desc;
 
 typedef struct hol_render hol_render;

@@ -112,26 +112,28 @@ static void hol__build_templates(hol_scene *s)
     hol_mesh_blob(m, (const float[3]){0, 2.65f, 0}, 0.09f, 0.09f, 0.09f, hol__white);
 }
 
-hol_err hol_scene_create(hol_scene **out)
+hol_err hol_scene_create(const hol_alloc *a, hol_scene **out)
 {
-    hol_scene *s = calloc(1, sizeof *s);
+    hol_scene *s = hol_alloc_mem(a, sizeof *s);
     if (!s)
         return HOL_ENOMEM;
+    memset(s, 0, sizeof *s);
     for (int k = 0; k < HOL__T_COUNT; k++)
         hol_mesh_init(&s->tpl[k], s->v[k], HOL__TPL_V, s->i[k], HOL__TPL_I);
     hol__build_templates(s);
     for (int k = 0; k < HOL__T_COUNT; k++)
         if (s->tpl[k].overflow) {
-            free(s);
+            hol_alloc_release(a, s);
             return HOL_ENOMEM;
         }
     *out = s;
     return HOL_OK;
 }
 
-void hol_scene_destroy(hol_scene *s)
+void hol_scene_destroy(const hol_alloc *a, hol_scene *s)
 {
-    free(s);
+    if (s)
+        hol_alloc_release(a, s);
 }
 
 /* small deterministic generator for placements inside a tile */

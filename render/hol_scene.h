@@ -16,6 +16,7 @@
 #ifndef HOL_SCENE_H
 #define HOL_SCENE_H
 
+#include "../core/hol_alloc.h"
 #include "../core/hol_tile.h"
 #include "hol_mesh.h"
 #include "hol_view.h"
@@ -23,8 +24,9 @@
 struct hol_world;
 typedef struct hol_scene hol_scene;
 
-hol_err hol_scene_create(hol_scene **out);
-void hol_scene_destroy(hol_scene *s);
+/* One allocation through a (NULL: malloc). */
+hol_err hol_scene_create(const hol_alloc *a, hol_scene **out);
+void hol_scene_destroy(const hol_alloc *a, hol_scene *s);
 
 /* Trees on the 16 room vertices, the boundary hedges and the backdrop
  * forest. The tree kinds come from the world when given: each room vertex

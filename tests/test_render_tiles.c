@@ -510,6 +510,51 @@ static void test_ids_decode(void **state)
     assert_int_equal(hol_render_decode_id(big), 300);
 }
 
+/* The renderer's CPU stores come through the allocator hooks
+ * (core/hol_alloc.h), all at create; a frame allocates nothing. */
+static long g_allocs, g_frees;
+static void *count_alloc(size_t n, void *user)
+{
+    (void)user;
+    g_allocs++;
+    return malloc(n);
+}
+static void count_free(void *p, void *user)
+{
+    (void)user;
+    g_frees += p != NULL;
+    free(p);
+}
+
+static void test_allocator_hooks(void **state)
+{
+    (void)state;
+    hol_render_desc rd;
+    memset(&rd, 0, sizeof rd);
+    rd.world = fx.world;
+    rd.getproc = hol_osmesa_getproc;
+    rd.alloc.alloc = count_alloc;
+    rd.alloc.free = count_free;
+    hol_render *r = NULL;
+    assert_int_equal(hol_render_create(&rd, &r), HOL_OK);
+    long made = g_allocs;
+    assert_true(made >= 2);
+    hol_frame_desc f;
+    memset(&f, 0, sizeof f);
+    f.user = hol_room_start();
+    f.cam.eye[0] = f.cam.eye[2] = 1.5;
+    f.cam.eye[1] = 1.6;
+    f.cam.pitch_deg = -30;
+    f.cam.width = W;
+    f.cam.height = H;
+    f.flags = HOL_RENDER_MINIMAP;
+    for (int k = 0; k < 3; k++)
+        assert_int_equal(hol_render_frame(r, &f, NULL), HOL_OK);
+    assert_int_equal(g_allocs, made);
+    hol_render_destroy(r);
+    assert_int_equal(g_frees, made);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -520,6 +565,7 @@ int main(void)
         cmocka_unit_test(test_sweep_all_cells),
         cmocka_unit_test(test_trunks_hide_seams),
         cmocka_unit_test(test_creeks_continue_across_edges),
+        cmocka_unit_test(test_allocator_hooks),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }
