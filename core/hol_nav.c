@@ -341,9 +341,9 @@ static hol_err hol__chain(hol_nav *nav, hol_room *room, hol_tile target,
             int k = n - nav->trust;
             if (k > nav->trust)
                 k = nav->trust;
-            hol_flag f = {room->tile, room->orient};
+            hol_heading_tile f = {room->tile, room->orient};
             for (int i = 0; i < k; i++) {
-                hol_err err = hol_flag_step(f, letters[i], &f);
+                hol_err err = hol_heading_tile_step(f, letters[i], &f);
                 if (err)
                     return err;
             }

@@ -32,9 +32,9 @@ hol_err hol_nav_field(const hol_room *user, int radius, const hol_tile *objectiv
     for (uint32_t i = 0; i < ix.count; i++) {
         hol_tile rel = hol_navtab_unrank(&ix, i);
         int len = hol_tile_dist0(rel);
-        hol_flag f = {user->tile, user->orient};
+        hol_heading_tile f = {user->tile, user->orient};
         for (int k = 0; k < len; k++) {
-            hol_err err = hol_flag_step(f, hol_tile_letter(rel, k), &f);
+            hol_err err = hol_heading_tile_step(f, hol_tile_letter(rel, k), &f);
             if (err)
                 return err;
         }

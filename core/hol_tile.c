@@ -358,13 +358,13 @@ hol_err hol_tile_step(hol_tile t, int turn, hol_tile *out_tile, int *out_arrive)
     return HOL_OK;
 }
 
-hol_err hol_flag_step(hol_flag f, int turn, hol_flag *out_flag)
+hol_err hol_heading_tile_step(hol_heading_tile f, int turn, hol_heading_tile *out_ht)
 {
-    hol_flag r;
+    hol_heading_tile r;
     hol_err err = hol_tile_step(f.tile, f.facing + turn, &r.tile, &r.facing);
     if (err)
         return err;
-    *out_flag = r;
+    *out_ht = r;
     return HOL_OK;
 }
 
@@ -397,9 +397,9 @@ hol_err hol_tile_resolve(const char *s, ptrdiff_t len, hol_tile *out_tile)
         return err;
     if (len < 0)
         len = (ptrdiff_t)strlen(s);
-    hol_flag f = {hol_tile_origin(), 0};
+    hol_heading_tile f = {hol_tile_origin(), 0};
     for (ptrdiff_t i = 0; i < len; i++) {
-        err = hol_flag_step(f, hol__code(s[i], i), &f);
+        err = hol_heading_tile_step(f, hol__code(s[i], i), &f);
         if (err)
             return err;
     }

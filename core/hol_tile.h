@@ -45,11 +45,12 @@ typedef struct hol_tile {
 } hol_tile;
 
 /* A tile together with a facing: the step (or room) direction, given as a
- * turn relative to the tile's canonical heading. */
-typedef struct hol_flag {
+ * turn relative to the tile's canonical heading. (Named so that it is not
+ * taken for the game's flag.) */
+typedef struct hol_heading_tile {
     hol_tile tile;
     int facing; /* 0..3 */
-} hol_flag;
+} hol_heading_tile;
 
 hol_tile hol_tile_origin(void);
 int hol_tile_dist0(hol_tile t); /* distance from O = address length */
@@ -83,9 +84,9 @@ int hol_tile_print(hol_tile t, char *buf);
  * heading, so a frame carried across the edge stays exact. */
 hol_err hol_tile_step(hol_tile t, int turn, hol_tile *out_tile, int *out_arrive);
 
-/* Flag form of the above: turn by `turn` relative to the facing, step, and
+/* Heading-tile form of the above: turn by `turn` relative to the facing, step, and
  * face the direction of travel. */
-hol_err hol_flag_step(hol_flag f, int turn, hol_flag *out_flag);
+hol_err hol_heading_tile_step(hol_heading_tile f, int turn, hol_heading_tile *out_ht);
 
 /* The tile reached from O by a walk of room directions (0..3 each, a free
  * walk with the room frame carried), and the room's north on arrival as a

@@ -54,9 +54,9 @@ static hol_tile random_target(const hol_room *u, int d)
         if (!hol_tile_child(rel, letters[rnd(3)], &c))
             rel = c;
     }
-    hol_flag f = {u->tile, u->orient};
+    hol_heading_tile f = {u->tile, u->orient};
     for (int i = 0; i < d; i++)
-        hol_flag_step(f, hol_tile_letter(rel, i), &f);
+        hol_heading_tile_step(f, hol_tile_letter(rel, i), &f);
     return f.tile;
 }
 

@@ -194,9 +194,9 @@ static hol_tile random_target(const hol_room *user, int d)
             if (!hol_tile_child(rel, letters[rnd(3)], &c))
                 rel = c;
         }
-        hol_flag f = {user->tile, user->orient};
+        hol_heading_tile f = {user->tile, user->orient};
         for (int i = 0; i < d; i++)
-            assert_int_equal(hol_flag_step(f, hol_tile_letter(rel, i), &f), HOL_OK);
+            assert_int_equal(hol_heading_tile_step(f, hol_tile_letter(rel, i), &f), HOL_OK);
         assert_int_equal(hol_tile_dist(user->tile, f.tile), d);
         return f.tile;
     }
@@ -204,9 +204,9 @@ static hol_tile random_target(const hol_room *user, int d)
     hol_navtab_init_index(&ix, d);
     uint32_t lo = ix.off[d], hi = ix.off[d + 1];
     hol_tile rel = hol_navtab_unrank(&ix, lo + rnd(hi - lo));
-    hol_flag f = {user->tile, user->orient};
+    hol_heading_tile f = {user->tile, user->orient};
     for (int i = 0; i < d; i++)
-        assert_int_equal(hol_flag_step(f, hol_tile_letter(rel, i), &f), HOL_OK);
+        assert_int_equal(hol_heading_tile_step(f, hol_tile_letter(rel, i), &f), HOL_OK);
     assert_int_equal(hol_tile_dist(user->tile, f.tile), d);
     return f.tile;
 }

@@ -535,10 +535,10 @@ static void test_far_consistency(void **state)
     for (int iter = 0; iter < 3000; iter++) {
         hol_tile t = random_tile(40 + (int)(rng() % 20));
         /* five times "step, turn left" returns the same flag */
-        hol_flag f = {t, (int)(rng() % 4)}, g = f;
+        hol_heading_tile f = {t, (int)(rng() % 4)}, g = f;
         int ok = 1;
         for (int i = 0; i < 5 && ok; i++) {
-            if (hol_flag_step(g, 0, &g)) {
+            if (hol_heading_tile_step(g, 0, &g)) {
                 ok = 0;
                 break;
             }
