@@ -25,8 +25,8 @@ FUZZ_TIME ?= 60
 CORE_SRC := $(wildcard core/*.c)
 RENDER_SRC := $(wildcard render/*.c)
 CLI_SRC  := $(wildcard platform/cli/*.c)
-# Desktop platform services (files) shared by the tool, render tests, benches.
-PLAT_SRC := $(wildcard platform/file/*.c)
+# Desktop platform services (files, PNG files) shared by the tool, render tests, benches.
+PLAT_SRC := $(wildcard platform/file/*.c platform/image/*.c)
 # tests/test_*.c: cmocka suites on the core (also run under sanitizers);
 # tests/test_render*.c: suites that also link the renderer and GL.
 RENDER_TEST_SRC := $(wildcard tests/test_render*.c)

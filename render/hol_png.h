@@ -4,7 +4,7 @@
  * - Images are 8-bit RGBA, rows top to bottom, tightly packed (4 * w bytes
  *   per row). Writing produces a non-interlaced 8-bit RGB or RGBA PNG
  *   compressed with zlib.
- * - In memory only: files are the platform's (platform/file/hol_file.h has
+ * - In memory only: files are the platform's (platform/image/hol_png_file.h has
  *   hol_png_write_file, atomic, and hol_png_read_file).
  * - The reader accepts what the writer produces and the common subset of
  *   other encoders: 8-bit grey, grey+alpha, RGB, RGBA, non-interlaced, all

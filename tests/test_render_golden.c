@@ -31,6 +31,7 @@
 #include "../platform/egl/hol_egl.h"
 #include "../platform/osmesa/hol_osmesa.h"
 #include "../platform/file/hol_file.h"
+#include "../platform/image/hol_png_file.h"
 #include "../render/hol_png.h"
 #include "../render/hol_render.h"
 #include "render_fixture.h"

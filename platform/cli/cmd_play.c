@@ -16,6 +16,7 @@
 #include "../egl/hol_egl.h"
 #include "../egl/hol_egl_x11.h"
 #include "../file/hol_file.h"
+#include "../image/hol_png_file.h"
 #include "../osmesa/hol_osmesa.h"
 #include "cli.h"
 #include "session.h"

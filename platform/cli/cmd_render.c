@@ -15,6 +15,7 @@
 #include "../../core/hol_world.h"
 #include "../../render/hol_png.h"
 #include "../file/hol_file.h"
+#include "../image/hol_png_file.h"
 #include "../../render/hol_render.h"
 #include "../egl/hol_egl.h"
 #include "../egl/hol_egl_x11.h"

@@ -10,7 +10,6 @@
  * - hol_file_read_all reads at most `max` bytes into a malloc'ed buffer
  *   (free it with free()); a larger file is HOL_ECORRUPT, a file that
  *   cannot be opened HOL_EOPEN, a failed read HOL_EIO.
- * - Image files: PNG bytes through render/hol_png.h's encoder and decoder.
  */
 #ifndef HOL_FILE_H
 #define HOL_FILE_H
@@ -36,11 +35,5 @@ void hol_file_atomic_abort(hol_file_atomic *a);
 
 hol_err hol_file_read_all(const char *path, size_t max, uint8_t **out_data,
                           size_t *out_size);
-
-/* PNG files (RGBA pixels as in render/hol_png.h). */
-hol_err hol_png_write_file(const char *path, const uint8_t *rgba, int w, int h,
-                           int alpha);
-hol_err hol_png_read_file(const char *path, uint8_t **out_rgba, int *out_w,
-                          int *out_h);
 
 #endif
