@@ -343,13 +343,19 @@ static void hol__fill_view(hol_app *app, const hol_input *in)
     case HOL_APP_TUTORIAL: snprintf(h->objective, sizeof h->objective, "Tutorial"); break;
     default: snprintf(h->objective, sizeof h->objective, "Explore"); break;
     }
-    if (v->state == HOL_APP_DONE)
-        snprintf(h->status, sizeof h->status, "Done: %d steps, best %d", app->steps,
-                 app->optimum);
-    else if (v->paused)
+    long secs = (long)app->level_t;
+    h->hint[0] = 0;
+    if (v->state == HOL_APP_DONE) {
+        snprintf(h->status, sizeof h->status, "Done: %d steps, best %d, %ld:%02ld", app->steps,
+                 app->optimum, secs / 60, secs % 60);
+        snprintf(h->hint, sizeof h->hint, "Confirm: next level, restart: again");
+    } else if (v->paused) {
         snprintf(h->status, sizeof h->status, "Paused");
-    else
+        if (app->menu)
+            snprintf(h->hint, sizeof h->hint, "Menu: resume, restart, quit");
+    } else {
         h->status[0] = 0;
+    }
     /* minimap */
     hol_app_minimap *m = &v->map;
     m->cues = L->cues;
