@@ -101,6 +101,7 @@ $(BUILD)/bench/%: tests/%.c $(CORE_SRC)
 # libFuzzer harnesses (clang); the replay build runs the corpora as tests.
 # A harness links the core; FUZZ_EXTRA_<name> adds sources and libraries.
 FUZZ_EXTRA_fuzz_png := render/hol_png.c -lz
+FUZZ_EXTRA_fuzz_recording := platform/cli/session.c platform/cli/cli_util.c platform/file/hol_file.c
 $(BUILD)/fuzz/%: fuzz/%.c $(wildcard fuzz/*.h) $(CORE_SRC) $(RENDER_SRC)
 	@mkdir -p $(dir $@)
 	$(FUZZ_CC) $(CSTD) -g -O1 -D_DEFAULT_SOURCE -fsanitize=fuzzer,address,undefined \
