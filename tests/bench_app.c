@@ -9,18 +9,11 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
 #include "../core/hol_app.h"
 #include "../core/hol_nav.h"
 #include "../core/hol_tile.h"
-
-static double now(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-    return (double)t.tv_sec + (double)t.tv_nsec * 1e-9;
-}
+#include "bench_util.h"
 
 static uint64_t rng = 0x2545F4914F6CDD1D;
 static uint32_t rnd(uint32_t n)
@@ -29,12 +22,6 @@ static uint32_t rnd(uint32_t n)
     rng ^= rng >> 7;
     rng ^= rng << 17;
     return (uint32_t)((rng >> 11) % n);
-}
-
-static int cmp_double(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return x < y ? -1 : x > y;
 }
 
 /* A random tile at distance d from O (a random canonical address). */
@@ -74,9 +61,9 @@ static void frames(hol_app *app, const char *what)
         in.flags = HOL_INPUT_FOCUSED;
         in.move[1] = fwd;
         in.turn[0] = turn;
-        double t0 = now();
+        double t0 = bench_cpu_now();
         hol_err err = hol_app_step(app, &in);
-        double dt = (now() - t0) * 1e3;
+        double dt = (bench_cpu_now() - t0) * 1e3;
         if (err) {
             fprintf(stderr, "bench_app: step failed: %s\n", hol_err_str(err));
             exit(1);
@@ -85,8 +72,8 @@ static void frames(hol_app *app, const char *what)
         if (hol_app_get_events(app)->nsteps)
             stepped[nstep++] = dt;
     }
-    qsort(all, (size_t)nall, sizeof *all, cmp_double);
-    qsort(stepped, (size_t)nstep, sizeof *stepped, cmp_double);
+    qsort(all, (size_t)nall, sizeof *all, bench_cmp_double);
+    qsort(stepped, (size_t)nstep, sizeof *stepped, bench_cmp_double);
     printf("%s: %d frames, %d with a room step\n", what, nall, nstep);
     printf("  every frame: median %.4f ms, p99 %.4f ms, max %.3f ms (targets < 0.2 / < 1 ms)\n",
            all[nall / 2], all[nall * 99 / 100], all[nall - 1]);
@@ -123,10 +110,10 @@ int main(void)
         L.seed = (uint64_t)k;
         L.flag = tile_at(10);
         L.cues = HOL_CUE_ALL;
-        double t0 = now();
+        double t0 = bench_cpu_now();
         hol_err err = hol_app_start_level(app, &L);
         if (!err)
-            starts[0][nok[0]++] = (now() - t0) * 1e3;
+            starts[0][nok[0]++] = (bench_cpu_now() - t0) * 1e3;
         memset(&L, 0, sizeof L);
         L.mode = HOL_APP_KEYS;
         L.seed = (uint64_t)k;
@@ -135,13 +122,13 @@ int main(void)
             L.keys[i] = tile_at(1 + (int)rnd(3)); /* within 6 tiles of each other */
         L.chest = tile_at(1 + (int)rnd(3));
         L.cues = HOL_CUE_ALL;
-        t0 = now();
+        t0 = bench_cpu_now();
         err = hol_app_start_level(app, &L);
         if (!err)
-            starts[1][nok[1]++] = (now() - t0) * 1e3;
+            starts[1][nok[1]++] = (bench_cpu_now() - t0) * 1e3;
     }
     for (int m = 0; m < 2; m++) {
-        qsort(starts[m], (size_t)nok[m], sizeof starts[m][0], cmp_double);
+        qsort(starts[m], (size_t)nok[m], sizeof starts[m][0], bench_cmp_double);
         if (nok[m])
             printf("level start, %s: %d levels, median %.2f ms, max %.2f ms (target < 50 ms)\n",
                    m ? "5 keys and a chest within 3 tiles of the start" : "flag at distance 10",

@@ -32,20 +32,6 @@ for i in 1 2 3 4 5 6 7 8 9 10; do
 done
 export DISPLAY=$D
 
-# input lines: tracked head at the cell centres of a walk from (1,1)
-walk_input() {
-    printf '%s\n' "$1" | awk '{
-        c = 1; r = 1; t = 0
-        printf "%s f=9 h=%.1f,1.6,%.1f,0,0,0,1\n", t, c + 0.5, r + 0.5
-        n = length($0); if ($0 == "-") n = 0
-        for (i = 1; i <= n; i++) {
-            d = substr($0, i, 1)
-            if (d == "N") r--; if (d == "S") r++; if (d == "E") c++; if (d == "W") c--
-            t += 0.25
-            printf "%s f=9 h=%.1f,1.6,%.1f,0,0,0,1\n", t, c + 0.5, r + 0.5
-        }
-    }'
-}
 printf -- '- Wrf\n' | "$H" nav >"$T/nav" || bad "nav"
 K=$(cut -d' ' -f1 "$T/nav") WALK=$(cut -d' ' -f2 "$T/nav")
 walk_input "$WALK" >"$T/opt.in"

@@ -5,22 +5,12 @@
 . "$(dirname "$0")/lib.sh"
 
 # rec LEVELTEXT WALK: a recording of one level whose input walks the room
-# steps WALK (tracked head at cell centres, 0.25 s a step) from cell (1,1)
+# steps WALK (lib.sh walk_input)
 rec() {
     printf 'holonomy-rec 1\nlevel lv\n'
     printf '%s\n' "$1" | sed 's/^/L /'
     printf 'end\n'
-    printf '%s\n' "$2" | awk '{
-        c = 1; r = 1; t = 0
-        printf "%s f=9 h=%.1f,1.6,%.1f,0,0,0,1\n", t, c + 0.5, r + 0.5
-        n = length($0); if ($0 == "-") n = 0
-        for (i = 1; i <= n; i++) {
-            d = substr($0, i, 1)
-            if (d == "N") r--; if (d == "S") r++; if (d == "E") c++; if (d == "W") c--
-            t += 0.25
-            printf "%s f=9 h=%.1f,1.6,%.1f,0,0,0,1\n", t, c + 0.5, r + 0.5
-        }
-    }'
+    walk_input "$2"
 }
 
 run "--help" 0 "$H" replay --help

@@ -19,6 +19,7 @@
 #include "../core/hol_room.h"
 #include "../core/hol_tile.h"
 #include "../core/hol_world.h"
+#include "count_alloc.h"
 
 static hol_nav *g_nav;
 
@@ -312,33 +313,15 @@ static void test_deterministic(void **state)
 
 /* ---- no allocation after the level starts --------------------------------- */
 
-static long g_allocs, g_frees;
-
-static void *count_alloc(size_t n, void *user)
-{
-    (void)user;
-    g_allocs++;
-    return malloc(n);
-}
-
-static void count_free(void *p, void *user)
-{
-    (void)user;
-    if (p)
-        g_frees++;
-    free(p);
-}
-
 static void test_no_allocation(void **state)
 {
     (void)state;
     hol_app_desc d;
     memset(&d, 0, sizeof d);
-    d.alloc.alloc = count_alloc;
-    d.alloc.free = count_free;
+    d.alloc = count_alloc_hooks();
     hol_app *app = NULL;
     assert_int_equal(hol_app_create(&d, &app), HOL_OK);
-    assert_true(g_allocs >= 2); /* the app, its own navigator */
+    assert_true(count_allocs >= 2); /* the app, its own navigator */
     hol_app_level L;
     memset(&L, 0, sizeof L);
     L.mode = HOL_APP_KEYS;
@@ -350,7 +333,7 @@ static void test_no_allocation(void **state)
     L.chest = tile("Wf");
     L.cues = HOL_CUE_ALL;
     assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
-    long before = g_allocs;
+    long before = count_allocs;
     int steps = 0;
     uint64_t s = 5;
     float fwd = 1, turn = 0;
@@ -366,10 +349,10 @@ static void test_no_allocation(void **state)
         assert_int_equal(hol_app_step(app, &in), HOL_OK);
         steps += hol_app_get_events(app)->nsteps;
     }
-    assert_int_equal(g_allocs, before);
+    assert_int_equal(count_allocs, before);
     assert_true(steps > 50);
     hol_app_destroy(app);
-    assert_int_equal(g_frees, g_allocs);
+    assert_int_equal(count_frees, count_allocs);
 }
 
 int main(void)

@@ -33,6 +33,7 @@
 #include "../core/hol_world.h"
 #include "../platform/osmesa/hol_osmesa.h"
 #include "../render/hol_render.h"
+#include "count_alloc.h"
 #include "render_fixture.h"
 
 #define W 128
@@ -512,20 +513,6 @@ static void test_ids_decode(void **state)
 
 /* The renderer's CPU stores come through the allocator hooks
  * (core/hol_alloc.h), all at create; a frame allocates nothing. */
-static long g_allocs, g_frees;
-static void *count_alloc(size_t n, void *user)
-{
-    (void)user;
-    g_allocs++;
-    return malloc(n);
-}
-static void count_free(void *p, void *user)
-{
-    (void)user;
-    g_frees += p != NULL;
-    free(p);
-}
-
 static void test_allocator_hooks(void **state)
 {
     (void)state;
@@ -533,11 +520,10 @@ static void test_allocator_hooks(void **state)
     memset(&rd, 0, sizeof rd);
     rd.world = fx.world;
     rd.getproc = hol_osmesa_getproc;
-    rd.alloc.alloc = count_alloc;
-    rd.alloc.free = count_free;
+    rd.alloc = count_alloc_hooks();
     hol_render *r = NULL;
     assert_int_equal(hol_render_create(&rd, &r), HOL_OK);
-    long made = g_allocs;
+    long made = count_allocs;
     assert_true(made >= 2);
     hol_frame_desc f;
     memset(&f, 0, sizeof f);
@@ -550,9 +536,9 @@ static void test_allocator_hooks(void **state)
     f.flags = HOL_RENDER_MINIMAP;
     for (int k = 0; k < 3; k++)
         assert_int_equal(hol_render_frame(r, &f, NULL), HOL_OK);
-    assert_int_equal(g_allocs, made);
+    assert_int_equal(count_allocs, made);
     hol_render_destroy(r);
-    assert_int_equal(g_frees, made);
+    assert_int_equal(count_frees, made);
 }
 
 int main(void)
