@@ -27,7 +27,10 @@ static const char *const play_usage =
     "                     [--size WxH]\n"
     "\n"
     "Play in a desktop window (EGL on X11; also under Xvfb). LEVEL is a level\n"
-    "file (SPEC section 5); --mode plays a level of that mode made from the seed.\n"
+    "file (SPEC section 5); --mode plays a level of that mode made from the seed\n"
+    "(flag 5 steps from the start; 3 keys 2..3 steps out and the chest at 5);\n"
+    "neither: the default campaign (three flags at distance 3, 5, 7, then two\n"
+    "keys-and-chest levels).\n"
     "\n"
     "  W/S or Up/Down   walk forward/back      A/D          step sideways\n"
     "  Left/Right       turn                   PgUp/PgDn    look up/down\n"
@@ -35,8 +38,9 @@ static const char *const play_usage =
     "  R                restart the level      M            minimap: HUD, hand, off\n"
     "  Enter/Space      next level (end screen) Esc/Q        quit\n"
     "\n"
-    "  --mode M        explore (default), flag, keys or tutorial\n"
-    "  --seed S        world seed for --mode (decimal or 0x hex; default 1)\n"
+    "  --mode M        explore, flag or keys\n"
+    "  --seed S        seed of --mode's level or the campaign's first (decimal or\n"
+    "                  0x hex; default 1)\n"
     "  --log DIR       research logs: DIR/steps-NNN.csv, DIR/head-NNN.csv per level\n"
     "                  attempt, DIR/summary.csv (README: Logs)\n"
     "  --record FILE   record the session's input (replay with 'holonomy replay')\n"
@@ -155,21 +159,96 @@ static void print_end(const session *s)
            v->user.row);
 }
 
-/* A level of mode m made from the seed (until levels come from files):
- * objectives on tiles picked by seeded walks. */
-static int mode_level(const char *mode, uint64_t seed, session_level *L)
+static uint64_t splitmix(uint64_t *x)
+{
+    uint64_t z = (*x += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+}
+
+/* A tile at distance d from O, from the generator: a random canonical
+ * address (the branch, then f, l or r wherever the address stays
+ * canonical). */
+static hol_tile seeded_tile(uint64_t *rng, int d)
+{
+    static const int letters[3] = {0, 1, 3};
+    hol_tile t = hol_tile_origin();
+    for (int i = 0; i < d; i++) {
+        hol_tile c;
+        int first = (int)(splitmix(rng) % (i ? 3 : 4));
+        for (int k = 0; k < 3; k++)
+            if (!hol_tile_child(t, i ? letters[(first + k) % 3] : first, &c))
+                break;
+        t = c;
+    }
+    return t;
+}
+
+/* A level of mode m made from the seed: the flag at distance dist; or
+ * nkeys keys at distance 2..3 and the chest at distance dist. The level's
+ * text is what a level file would hold, so recordings carry it. */
+static int mode_level(const char *mode, uint64_t seed, int dist, int nkeys, const char *name,
+                      session_level *L)
 {
     memset(L, 0, sizeof *L);
+    uint64_t rng = seed;
+    char a[HOL_TILE_ADDR_MAX];
     int n = 0;
-    if (!strcmp(mode, "explore"))
+    if (!strcmp(mode, "explore")) {
         n = snprintf(L->text, sizeof L->text, "mode explore\nseed %llu\n",
                      (unsigned long long)seed);
-    else
+    } else if (!strcmp(mode, "flag")) {
+        hol_tile_print(seeded_tile(&rng, dist), a);
+        n = snprintf(L->text, sizeof L->text, "mode flag\nseed %llu\nflag %s\n",
+                     (unsigned long long)seed, a);
+    } else if (!strcmp(mode, "keys")) {
+        hol_tile keys[HOL_APP_MAX_KEYS], chest = seeded_tile(&rng, dist);
+        n = snprintf(L->text, sizeof L->text, "mode keys\nseed %llu\nkeys",
+                     (unsigned long long)seed);
+        for (int k = 0; k < nkeys; k++) {
+            int fresh;
+            do {
+                keys[k] = seeded_tile(&rng, 2 + (int)(splitmix(&rng) % 2));
+                fresh = !hol_tile_eq(keys[k], chest);
+                for (int j = 0; j < k; j++)
+                    fresh &= !hol_tile_eq(keys[k], keys[j]);
+            } while (!fresh);
+            hol_tile_print(keys[k], a);
+            n += snprintf(L->text + n, sizeof L->text - (size_t)n, " %s", a);
+        }
+        hol_tile_print(chest, a);
+        n += snprintf(L->text + n, sizeof L->text - (size_t)n, "\nchest %s\n", a);
+    } else {
         return 1;
+    }
     L->len = (size_t)n;
-    snprintf(L->name, sizeof L->name, "%s-%llu", mode, (unsigned long long)seed);
+    if (name)
+        snprintf(L->name, sizeof L->name, "%s", name);
+    else
+        snprintf(L->name, sizeof L->name, "%s-%llu", mode, (unsigned long long)seed);
     char err[256];
     return session_parse_level(L->text, L->len, &L->lvl, err, sizeof err);
+}
+
+/* The default campaign (no LEVEL, no --mode): three flags at growing
+ * distance, then two keys-and-chest levels. */
+static int default_campaign(uint64_t seed, session_level *levels)
+{
+    int n = 0;
+    static const int flag_dist[3] = {3, 5, 7};
+    char name[32];
+    for (int i = 0; i < 3; i++) {
+        snprintf(name, sizeof name, "flag-%d", i + 1);
+        if (mode_level("flag", seed + (uint64_t)i, flag_dist[i], 0, name, &levels[n++]))
+            return -1;
+    }
+    for (int i = 0; i < 2; i++) {
+        snprintf(name, sizeof name, "keys-%d", i + 1);
+        if (mode_level("keys", seed + 3 + (uint64_t)i, 3 + i, 2 + i, name, &levels[n++]))
+            return -1;
+    }
+    return n;
 }
 
 static double now_s(void)
@@ -280,11 +359,16 @@ int cli_cmd_play(int argc, char **argv)
             cli_error(cmd, 0, "%.200s: %s", level_path, perr);
             return CLI_EXIT_USAGE;
         }
-    } else {
-        if (mode_level(mode ? mode : "explore", seed, &levels[nlevels++])) {
-            cli_error(cmd, 0, "--mode '%.40s' is not one of explore, flag, keys, tutorial",
-                      mode);
+    } else if (mode) {
+        if (mode_level(mode, seed, 5, 3, NULL, &levels[nlevels++])) {
+            cli_error(cmd, 0, "--mode '%.40s' is not one of explore, flag, keys", mode);
             return CLI_EXIT_USAGE;
+        }
+    } else {
+        nlevels = default_campaign(seed, levels);
+        if (nlevels < 0) {
+            cli_error(cmd, 0, "cannot make the default campaign");
+            return CLI_EXIT_FAIL;
         }
     }
     file_lines in_lines;
