@@ -11,7 +11,7 @@
 #include "hol_world.h"
 
 #define HOL__PI 3.14159265358979323846
-#define HOL__MAX_DT 0.1 /* longest frame the clocks and motion take */
+#define HOL__MAX_DT 0.1 /* longest frame pancake motion takes */
 
 struct hol_app {
     hol_app_desc d;
@@ -414,8 +414,6 @@ hol_err hol_app_step(hol_app *app, const hol_input *in)
         return HOL_EARG;
     memset(&app->ev, 0, sizeof app->ev);
     double dt = app->have_prev ? in->time_s - app->prev.time_s : 0;
-    if (dt > HOL__MAX_DT)
-        dt = HOL__MAX_DT;
     uint32_t pressed = in->buttons & ~(app->have_prev ? app->prev.buttons : 0u);
     app->prev = *in;
     app->have_prev = 1;
@@ -468,7 +466,9 @@ hol_err hol_app_step(hol_app *app, const hol_input *in)
             hol__yaw_pitch_from_quat(in->head.quat, &app->mo.yaw_deg, &app->mo.pitch_deg);
             err = hol_motion_move_to(&app->mo, pos, &st);
         } else {
-            err = hol_motion_pancake(&app->mo, in->move, in->turn, dt, &st);
+            /* a long frame (a hitch) does not jump the user */
+            err = hol_motion_pancake(&app->mo, in->move, in->turn,
+                                     dt < HOL__MAX_DT ? dt : HOL__MAX_DT, &st);
         }
         if (err && err != HOL_ERANGE)
             return err;

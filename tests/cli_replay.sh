@@ -55,6 +55,34 @@ rec "$LEVEL" "$WALK" >"$T/keys.rec"
 run "keys" 0 "$H" replay "$T/keys.rec" --log "$T/l3"
 grep -q "^level lv done steps $K optimum $K " "$T/out" && ok || bad "keys: $(cat "$T/out")"
 
+# two levels: the first done, confirm, the second done; then a restart
+# (the summary has a row per attempt)
+{
+    printf 'holonomy-rec 1\nlevel a\nL mode flag\nL seed 5\nL flag Wrf\nend\n'
+    printf 'level b\nL mode keys\nL seed 3\nL keys Nf Wr\nL chest Sf\nend\n'
+    walk_input "$(cut -d' ' -f2 "$T/nav")"
+    walk_input - 50 1
+    walk_input "$WALK" 60
+    walk_input - 80 1
+} >"$T/two.rec"
+mkdir "$T/l4"
+run "two levels" 0 "$H" replay "$T/two.rec" --log "$T/l4"
+grep -q "^level b done steps $K optimum $K " "$T/out" && ok || bad "two levels: $(cat "$T/out")"
+[ "$(grep -c ',done,' "$T/l4/summary.csv")" = 2 ] && ok || bad "two levels: $(cat "$T/l4/summary.csv")"
+grep -q '^2,b,keys,3,' "$T/l4/summary.csv" && ok || bad "attempt 2 is level b"
+{
+    printf 'holonomy-rec 1\nlevel a\nL mode flag\nL seed 5\nL flag Wrf\nend\n'
+    walk_input SN
+    walk_input "$(cut -d' ' -f2 "$T/nav")" 10 20
+} >"$T/restart.rec"
+mkdir "$T/l5"
+run "restart" 0 "$H" replay "$T/restart.rec" --log "$T/l5"
+sed -n 2p "$T/l5/summary.csv" | grep -q '^1,a,flag,5,2,[0-9]*,[0-9.]*,restart,0$' && ok ||
+    bad "restart row: $(cat "$T/l5/summary.csv")"
+sed -n 3p "$T/l5/summary.csv" | grep -q '^2,a,flag,5,\([0-9]*\),\1,[0-9.]*,done,0$' && ok ||
+    bad "done after restart: $(cat "$T/l5/summary.csv")"
+[ "$(($(wc -l <"$T/l5/steps-001.csv") - 1))" = 2 ] && ok || bad "2 steps before the restart"
+
 # bad recordings: exit 2, one line naming the line
 printf 'hello\n' >"$T/bad1"
 run "no header" 2 "$H" replay "$T/bad1" && one_line "no header" "line 1"

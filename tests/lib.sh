@@ -47,13 +47,14 @@ one_line() {
     bad "$1: stderr should be one line with '$2', got: $(cat "$T/err")"; else ok; fi
 }
 
-# walk_input WALK: input record lines (core/hol_input_io.h) of a tracked
-# head standing at the cell centres of the room steps WALK from cell (1,1),
-# 0.25 s a step ('-' for none)
+# walk_input WALK [T0] [BUTTONS]: input record lines (core/hol_input_io.h)
+# of a tracked head standing at the cell centres of the room steps WALK
+# from cell (1,1), from time T0 (default 0), 0.25 s a step ('-' for none);
+# the first line holds BUTTONS (hex) if given
 walk_input() {
-    printf '%s\n' "$1" | awk '{
-        c = 1; r = 1; t = 0
-        printf "%s f=9 h=%.1f,1.6,%.1f,0,0,0,1\n", t, c + 0.5, r + 0.5
+    printf '%s\n' "$1" | awk -v t0="${2:-0}" -v b="${3:-}" '{
+        c = 1; r = 1; t = t0 + 0
+        printf "%s f=9%s h=%.1f,1.6,%.1f,0,0,0,1\n", t, (b == "" ? "" : " b=" b), c + 0.5, r + 0.5
         n = length($0); if ($0 == "-") n = 0
         for (i = 1; i <= n; i++) {
             d = substr($0, i, 1)

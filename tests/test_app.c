@@ -171,6 +171,8 @@ static void test_flag_optimum_and_detour(void **state)
         assert_int_equal(steps, res.len);
         assert_int_equal(v->hud.optimum, res.len);
         assert_int_equal(v->state, HOL_APP_DONE);
+        /* the level clock is the input's time, even with frames 0.25 s apart */
+        assert_true(fabs(v->hud.elapsed_s - 0.25 * res.len) < 1e-9);
         assert_int_equal(v->hud.remaining, 0);
         assert_string_equal(v->hud.status + 0, v->hud.status); /* filled */
         assert_true(strncmp(v->hud.status, "Done:", 5) == 0);
