@@ -3,6 +3,7 @@
 #include "session.h"
 
 #include <errno.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -390,6 +391,21 @@ void session_frame_desc(const hol_app_view *v, hol_frame_desc *fd, int w, int h)
     fd->cam.width = w;
     fd->cam.height = h;
     fd->flags = v->map.place == HOL_MINIMAP_OFF ? 0 : HOL_RENDER_MINIMAP;
+    if (v->map.place == HOL_MINIMAP_HAND) {
+        /* no hands on the desktop: the map held 40 cm ahead, 35 cm below
+         * the eye, tilted back 40 degrees to face it */
+        double y = v->yaw_deg * 3.14159265358979323846 / 180, a = -40 * 3.14159265358979323846 / 180;
+        fd->hand_pos[0] = v->head[0] - 0.4 * sin(y);
+        fd->hand_pos[1] = v->head[1] - 0.35;
+        fd->hand_pos[2] = v->head[2] - 0.4 * cos(y);
+        double sy = sin(y / 2), cy = cos(y / 2), sa = sin(a / 2), ca = cos(a / 2);
+        fd->hand_orient[0] = cy * sa; /* q_yaw * q_tilt */
+        fd->hand_orient[1] = sy * ca;
+        fd->hand_orient[2] = -sy * sa;
+        fd->hand_orient[3] = cy * ca;
+        fd->hand_size = 0.25;
+        fd->flags |= HOL_RENDER_MINIMAP_HAND;
+    }
     int n = v->map.nobjectives < HOL_RENDER_MAX_OBJECTIVES ? v->map.nobjectives
                                                            : HOL_RENDER_MAX_OBJECTIVES;
     fd->nobjectives = n;
