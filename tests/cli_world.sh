@@ -130,4 +130,13 @@ one_line "seed and load" "exclude"
 run "missing value" 2 "$H" world --walk
 one_line "missing value" "needs a value"
 
+# one seed parser and one default (1) for every command
+run "default seed" 0 "$H" world --walk NE --radius 2
+cp "$T/out" "$T/seed_default"
+run "seed 1" 0 "$H" world --walk NE --radius 2 --seed 1
+same "the default seed is 1" "$T/seed_default" "$T/out"
+run "hex seed" 0 "$H" render --seed 0x10 --size 16x12 --out "$T/hex.png"
+run "decimal seed" 0 "$H" render --seed 16 --size 16x12 --out "$T/dec.png"
+same "render: 0x10 is 16" "$T/hex.png" "$T/dec.png"
+
 finish cli_world

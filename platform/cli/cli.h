@@ -15,6 +15,7 @@
 
 #include <stdio.h>
 #include <stddef.h>
+#include <stdint.h>
 
 #define CLI_EXIT_OK 0
 #define CLI_EXIT_FAIL 1
@@ -47,6 +48,12 @@ size_t cli_parse_count(const char *s);
  * return -1. Any other argument: 0. */
 int cli_budget_option(const char *cmd, int argc, char **argv, int *i,
                       size_t *out_budget);
+
+/* An unsigned 64-bit number, decimal or 0x hex (a leading 0 is not octal;
+ * no sign): seeds of every command, and other numbers. 1 ok, 0 bad. Every
+ * command's seed defaults to CLI_SEED_DEFAULT. */
+#define CLI_SEED_DEFAULT 1
+int cli_parse_u64(const char *s, uint64_t *out);
 
 /* Strip spaces and tabs at both ends. */
 void cli_trim(char **s, size_t *len);

@@ -151,3 +151,22 @@ int cli_budget_option(const char *cmd, int argc, char **argv, int *i,
     }
     return 1;
 }
+
+int cli_parse_u64(const char *s, uint64_t *out)
+{
+    if (!s[0] || s[0] == '-' || s[0] == '+' || s[0] == ' ')
+        return 0;
+    char *end;
+    errno = 0;
+    int hex = s[0] == '0' && (s[1] == 'x' || s[1] == 'X');
+    if (hex && !s[2])
+        return 0;
+    /* decimal, or 0x hex; a leading 0 is not octal */
+    unsigned long long v = strtoull(hex ? s + 2 : s, &end, hex ? 16 : 10);
+    if (hex && (s[2] == '-' || s[2] == '+' || s[2] == ' '))
+        return 0;
+    if (errno || *end)
+        return 0;
+    *out = v;
+    return 1;
+}

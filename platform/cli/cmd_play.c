@@ -272,7 +272,7 @@ int cli_cmd_play(int argc, char **argv)
     }
     const char *level_path = NULL, *mode = NULL, *log_dir = NULL, *rec = NULL,
                *input_path = NULL;
-    unsigned long long seed = 1;
+    unsigned long long seed = CLI_SEED_DEFAULT;
     long frames = 0;
     int w = 960, h = 720;
     for (int i = 1; i < argc; i++) {
@@ -287,13 +287,12 @@ int cli_cmd_play(int argc, char **argv)
         if (!strcmp(a, "--mode"))
             mode = val;
         else if (!strcmp(a, "--seed")) {
-            char *e;
-            errno = 0;
-            seed = strtoull(val, &e, 0);
-            if (e == val || *e || errno || val[0] == '-' || val[0] == '+') {
+            uint64_t sv;
+            if (!cli_parse_u64(val, &sv)) {
                 cli_error(cmd, 0, "--seed '%.40s' is not an unsigned 64-bit number", val);
                 return CLI_EXIT_USAGE;
             }
+            seed = sv;
         } else if (!strcmp(a, "--log"))
             log_dir = val;
         else if (!strcmp(a, "--record"))

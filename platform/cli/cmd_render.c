@@ -26,7 +26,7 @@ static const char *const render_usage =
     "usage: holonomy render [--walk W] [--eye X,Y,Z] [--yaw DEG] [--pitch DEG]\n"
     "                       [--size WxH] [--out FILE.png] [--tile-ids FILE]\n"
     "                       [--stats] [--euclidean] [--bare] [--fov DEG]\n"
-    "                       [--frames N] [--seed N] [--hud] [--hand X,Y,Z]\n"
+    "                       [--frames N] [--seed S] [--hud] [--hand X,Y,Z]\n"
     "                       [--target ADDR]\n"
     "                       [--gl osmesa|egl] [--stereo IPD] [--window]\n"
     "                       [--keys SCRIPT]\n"
@@ -51,7 +51,8 @@ static const char *const render_usage =
     "  --euclidean     the same nine cells as a flat room, no portals\n"
     "  --bare          floors only (no trees, hedges, props): for tests\n"
     "  --frames N      render N times (stats: median CPU ms), default 1\n"
-    "  --seed N        world seed (default 1): the forest's content\n"
+    "  --seed S        world seed (decimal or 0x hex; default 1): the forest\n"
+    "                  content\n"
     "  --hud           draw the HUD text and the Poincare minimap\n"
     "  --hand X,Y,Z    the minimap in the hand instead: a 25 cm square at\n"
     "                  X,Y,Z (room coordinates, 0.05..2 m from the eye across\n"
@@ -284,7 +285,7 @@ int cli_cmd_render(int argc, char **argv)
     double yaw = 0, pitch = -30, fov = 90, ipd = 0;
     long w = 640, h = 480, frames = 1;
     int stats = 0, flags = HOL_RENDER_NO_HUD, ntargets = 0, use_egl = 0, frames_set = 0;
-    unsigned long long seed = 1;
+    unsigned long long seed = CLI_SEED_DEFAULT;
     hol_tile targets[HOL_RENDER_MAX_OBJECTIVES];
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
@@ -348,13 +349,12 @@ int cli_cmd_render(int argc, char **argv)
                 return CLI_EXIT_USAGE;
             }
         } else if (!strcmp(a, "--seed")) {
-            char *end;
-            errno = 0;
-            seed = strtoull(val, &end, 10);
-            if (end == val || *end || errno || val[0] == '-') {
-                cli_error(cmd, 0, "--seed '%.40s' is not an unsigned integer", val);
+            uint64_t sv;
+            if (!cli_parse_u64(val, &sv)) {
+                cli_error(cmd, 0, "--seed '%.40s' is not an unsigned 64-bit number", val);
                 return CLI_EXIT_USAGE;
             }
+            seed = sv;
         } else if (!strcmp(a, "--target")) {
             if (ntargets >= HOL_RENDER_MAX_OBJECTIVES) {
                 cli_error(cmd, 0, "more than %d --target options", HOL_RENDER_MAX_OBJECTIVES);

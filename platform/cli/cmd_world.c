@@ -22,7 +22,7 @@ static const char *const world_usage =
     "       holonomy world load FILE [OPTIONS]   (same as --load FILE)\n"
     "\n"
     "Generates the forest for seed S (an unsigned 64-bit number, decimal or\n"
-    "0x hex; default 0) as the app does: the user starts on the origin tile in\n"
+    "0x hex; default 1) as the app does: the user starts on the origin tile in\n"
     "cell (1,1), takes the room steps of W (N, E, S, W; '-' for none; a step\n"
     "that leaves the 3 x 3 room is bad input) and after every step the world\n"
     "collapses every tile within 4 steps of the user. Then it prints every\n"
@@ -76,28 +76,10 @@ typedef struct world_opts {
     uint32_t capacity;
 } world_opts;
 
-static int parse_u64(const char *s, uint64_t *out)
-{
-    if (!s[0] || s[0] == '-' || s[0] == '+' || s[0] == ' ')
-        return 0;
-    char *end;
-    errno = 0;
-    int hex = s[0] == '0' && (s[1] == 'x' || s[1] == 'X');
-    if (hex && !s[2])
-        return 0;
-    /* decimal, or 0x hex; a leading 0 is not octal */
-    unsigned long long v = strtoull(hex ? s + 2 : s, &end, hex ? 16 : 10);
-    if (hex && (s[2] == '-' || s[2] == '+' || s[2] == ' '))
-        return 0;
-    if (errno || *end)
-        return 0;
-    *out = v;
-    return 1;
-}
-
 static int parse_args(int argc, char **argv, world_opts *o)
 {
     memset(o, 0, sizeof *o);
+    o->seed = CLI_SEED_DEFAULT;
     o->radius = 4;
     o->walk = "-";
     int i = 1;
@@ -123,7 +105,7 @@ static int parse_args(int argc, char **argv, world_opts *o)
             return 0;
         }
         if (!strcmp(a, "--seed")) {
-            if (!parse_u64(v, &o->seed)) {
+            if (!cli_parse_u64(v, &o->seed)) {
                 cli_error(CMD, 0, "--seed '%.40s' is not an unsigned 64-bit number", v);
                 return 0;
             }
@@ -132,7 +114,7 @@ static int parse_args(int argc, char **argv, world_opts *o)
             o->walk = v;
         } else if (!strcmp(a, "--radius")) {
             uint64_t r;
-            if (!parse_u64(v, &r) || r > HOL_WORLD_MAX_RADIUS) {
+            if (!cli_parse_u64(v, &r) || r > HOL_WORLD_MAX_RADIUS) {
                 cli_error(CMD, 0, "--radius '%.40s' is not a number 0..%d", v,
                           HOL_WORLD_MAX_RADIUS);
                 return 0;
@@ -140,7 +122,7 @@ static int parse_args(int argc, char **argv, world_opts *o)
             o->radius = (int)r;
         } else if (!strcmp(a, "--capacity")) {
             uint64_t c;
-            if (!parse_u64(v, &c) || c < 1 || c > (UINT64_C(1) << 30)) {
+            if (!cli_parse_u64(v, &c) || c < 1 || c > (UINT64_C(1) << 30)) {
                 cli_error(CMD, 0, "--capacity '%.40s' is not a number 1..2^30", v);
                 return 0;
             }

@@ -71,15 +71,11 @@ int session_parse_level(const char *text, size_t len, hol_app_level *lvl, char *
             L.mode = m;
             have_mode = 1;
         } else if (!strcmp(key, "seed") && nf == 2) {
-            char *e;
-            errno = 0;
-            unsigned long long v = strtoull(f[1], &e, 0);
-            if (*e || errno || f[1][0] == '-' || f[1][0] == '+') {
+            if (!cli_parse_u64(f[1], &L.seed)) {
                 snprintf(err, err_cap, "line %ld: seed '%.30s' is not an unsigned 64-bit number",
                          lineno, f[1]);
                 return 1;
             }
-            L.seed = v;
         } else if (!strcmp(key, "start") && nf == 2) {
             size_t nd = 0;
             if (hol_walk_parse(f[1], strlen(f[1]), L.start, sizeof L.start, &nd, NULL)) {
