@@ -150,10 +150,12 @@ san:
 check-clang:
 	$(MAKE) CC=clang BUILD=$(BUILD)/clang all $(UNIT_BIN:$(BUILD)/%=$(BUILD)/clang/%)
 
-# The core and its unit tests for the headset's arm64 CPU, run under qemu.
+# The core and its unit tests for the headset's arm64 CPU, run under qemu;
+# the renderer is cross-compiled too (its GL tests need a GL, so they run on
+# the host only).
 cross-test: deps-cross
 	$(MAKE) CC=aarch64-linux-gnu-gcc AR=aarch64-linux-gnu-ar BUILD=$(BUILD)/aarch64 \
-	  $(UNIT_SRC:tests/%.c=$(BUILD)/aarch64/tests/%)
+	  $(UNIT_SRC:tests/%.c=$(BUILD)/aarch64/tests/%) $(BUILD)/aarch64/libholrender.a
 	@set -e; for t in $(UNIT_SRC:tests/%.c=$(BUILD)/aarch64/tests/%); do \
 	  echo "== $$t (qemu-aarch64)"; qemu-aarch64 -L /usr/aarch64-linux-gnu $$t; done
 
