@@ -7,6 +7,7 @@
 #   make bench      build with optimisation and print the benchmark figures
 #   make san        run the unit tests under AddressSanitizer + UBSan
 #   make run        build and play in a desktop window (RUN_ARGS: play's options)
+#   make quest      the Quest APK (needs NDK= and OPENXR_LOADER=; see README)
 #   make clean      remove build outputs
 #
 # Variables: CC (gcc or clang), BUILD (output folder), FUZZ_TIME (seconds).
@@ -63,7 +64,7 @@ APT_LOCK_WAIT ?= 120
 APT_GET = $$SUDO env DEBIAN_FRONTEND=noninteractive apt-get -o DPkg::Lock::Timeout=$(APT_LOCK_WAIT)
 
 .PHONY: all test purity unit render-test cli-test fuzz-replay fuzz bench san clean deps \
-        deps-cross check-clang cross-test run
+        deps-cross check-clang cross-test run quest quest-help deps-quest quest-check
 
 all: $(BUILD)/holonomy
 
@@ -155,10 +156,12 @@ san:
 check-clang:
 	$(MAKE) CC=clang BUILD=$(BUILD)/clang all $(UNIT_BIN:$(BUILD)/%=$(BUILD)/clang/%)
 
-# The core and its unit tests for the headset's arm64 CPU, run under qemu.
+# The core and its unit tests for the headset's arm64 CPU, run under qemu;
+# the renderer is cross-compiled too (its GL tests need a GL, so they run on
+# the host only).
 cross-test: deps-cross
 	$(MAKE) CC=aarch64-linux-gnu-gcc AR=aarch64-linux-gnu-ar BUILD=$(BUILD)/aarch64 \
-	  $(UNIT_SRC:tests/%.c=$(BUILD)/aarch64/tests/%)
+	  $(UNIT_SRC:tests/%.c=$(BUILD)/aarch64/tests/%) $(BUILD)/aarch64/libholrender.a
 	@set -e; for t in $(UNIT_SRC:tests/%.c=$(BUILD)/aarch64/tests/%); do \
 	  echo "== $$t (qemu-aarch64)"; qemu-aarch64 -L /usr/aarch64-linux-gnu $$t; done
 
@@ -178,6 +181,27 @@ deps-cross: deps
 	  SUDO=$$( [ "$$(id -u)" = 0 ] || echo sudo ); \
 	  $$SUDO dpkg --add-architecture arm64 && $(APT_GET) update -qq && \
 	  $(APT_GET) install -y -qq --no-install-recommends libcmocka-dev:arm64; fi
+
+# The Quest APK (platform/android/build_apk.sh; needs NDK= and
+# OPENXR_LOADER=, which this machine cannot have: without them it names
+# them in one line and stops with exit status 2).
+QUEST_DEB_PACKAGES := aapt zipalign android-framework-res
+quest:
+	@NDK="$(NDK)" OPENXR_LOADER="$(OPENXR_LOADER)" BUILD="$(BUILD)" \
+	  sh platform/android/build_apk.sh
+
+quest-help:
+	@sh platform/android/build_apk.sh --help
+
+# The Debian tools of the Quest build that CI uses (apksigner, which pulls
+# in Java, is installed by hand where an NDK exists: apt-get install apksigner).
+deps-quest:
+	@$(MAKE) -s deps DEB_PACKAGES="$(QUEST_DEB_PACKAGES)"
+
+# What CI checks of the Quest build here: the manifest packaged by aapt,
+# and `make quest` without the NDK stopping with exit status 2.
+quest-check: deps-quest
+	@sh tests/check_quest.sh
 
 clean:
 	rm -rf $(BUILD)

@@ -1,0 +1,99 @@
+#!/bin/sh
+# build_apk.sh - `make quest`: the sideloadable Quest APK (arm64-v8a,
+# NativeActivity, no Java code).
+#
+# Needs (all named in one line, exit 2, when missing):
+#   NDK=DIR             the Android NDK (r23 or later): its clang for
+#                       aarch64-linux-android29, sysroot with bionic, EGL,
+#                       GLESv3, android and log libraries
+#   OPENXR_LOADER=FILE  libopenxr_loader.so for arm64-v8a, from the Khronos
+#                       OpenXR loader for Android (Maven
+#                       org.khronos.openxr:openxr_loader_for_android, the
+#                       .aar's prebuiltLibs/android.arm64-v8a/)
+#   Debian's aapt, zipalign, apksigner and android-framework-res
+#                       (`make deps-quest`)
+# Optional: OPENXR_INCLUDE (default /usr/include, Debian's libopenxr-dev
+# headers), KEYSTORE (default: a debug key made with keytool under
+# BUILD/quest), OUT (default BUILD/holonomy.apk), BUILD (default build).
+#
+# The APK is assembled under BUILD/quest and renamed into OUT only when it
+# is complete, aligned and signed: no half-written APK is ever left at OUT.
+set -eu
+
+here=$(cd "$(dirname "$0")" && pwd)
+root=$(cd "$here/../.." && pwd)
+
+case "${1:-}" in
+-h|--help)
+    sed -n '2,21p' "$0" | sed 's/^# \{0,1\}//'
+    exit 0 ;;
+"") ;;
+*)
+    echo "make quest: unknown argument '$1'; see 'make quest-help'" >&2
+    exit 2 ;;
+esac
+
+BUILD=${BUILD:-build}
+OUT=${OUT:-$BUILD/holonomy.apk}
+OPENXR_INCLUDE=${OPENXR_INCLUDE:-/usr/include}
+FRAMEWORK_RES=${FRAMEWORK_RES:-/usr/share/android-framework-res/framework-res.apk}
+API=29
+
+missing=""
+cc=""
+if [ -z "${NDK:-}" ]; then
+    missing="$missing NDK=<Android NDK r23+ directory>"
+else
+    cc=$(ls "$NDK"/toolchains/llvm/prebuilt/*/bin/aarch64-linux-android$API-clang 2>/dev/null | head -n 1 || true)
+    [ -n "$cc" ] || missing="$missing NDK=<Android NDK r23+ directory; '$NDK' has no aarch64-linux-android$API-clang>"
+fi
+if [ -z "${OPENXR_LOADER:-}" ]; then
+    missing="$missing OPENXR_LOADER=<libopenxr_loader.so for arm64-v8a>"
+elif [ ! -f "$OPENXR_LOADER" ]; then
+    missing="$missing OPENXR_LOADER=<libopenxr_loader.so for arm64-v8a; '$OPENXR_LOADER' does not exist>"
+fi
+[ -f "$OPENXR_INCLUDE/openxr/openxr.h" ] || missing="$missing OPENXR_INCLUDE=<directory with openxr/openxr.h>"
+for t in aapt zipalign apksigner keytool; do
+    command -v "$t" >/dev/null 2>&1 || missing="$missing $t"
+done
+[ -f "$FRAMEWORK_RES" ] || missing="$missing android-framework-res"
+if [ -n "$missing" ]; then
+    echo "make quest: needs$missing (Debian: apt-get install aapt zipalign apksigner android-framework-res; see README 'Quest build')" >&2
+    exit 2
+fi
+
+stage="$BUILD/quest"
+rm -rf "$stage"
+mkdir -p "$stage/apk/lib/arm64-v8a"
+
+# The native library: core, renderer, OpenXR layer (GLES binding) and the
+# NativeActivity shell, all compiled and tested on the desktop except the
+# shell.
+srcs=$(ls "$root"/core/*.c "$root"/render/*.c "$root"/platform/openxr/*.c \
+          "$root"/platform/android/*.c 2>/dev/null)
+# shellcheck disable=SC2086
+"$cc" -std=c11 -O2 -g -fPIC -shared -D_DEFAULT_SOURCE -DHOL_GLES=1 \
+    -DXR_USE_PLATFORM_ANDROID -DXR_USE_GRAPHICS_API_OPENGL_ES \
+    -I"$OPENXR_INCLUDE" -I"$root" \
+    -Wl,--no-undefined -Wl,-z,max-page-size=16384 \
+    -o "$stage/apk/lib/arm64-v8a/libholonomy.so" $srcs \
+    "$OPENXR_LOADER" -landroid -llog -lEGL -lGLESv3 -lm
+cp "$OPENXR_LOADER" "$stage/apk/lib/arm64-v8a/libopenxr_loader.so"
+
+aapt package -f -M "$here/AndroidManifest.xml" -I "$FRAMEWORK_RES" \
+    -F "$stage/unaligned.apk"
+(cd "$stage/apk" && aapt add -0 so ../unaligned.apk lib/arm64-v8a/libholonomy.so \
+    lib/arm64-v8a/libopenxr_loader.so >/dev/null)
+zipalign -f -p 4 "$stage/unaligned.apk" "$stage/aligned.apk"
+
+key=${KEYSTORE:-$stage/debug.keystore}
+if [ ! -f "$key" ]; then
+    keytool -genkeypair -keystore "$key" -storepass android -keypass android \
+        -alias holonomy -keyalg RSA -keysize 2048 -validity 10000 \
+        -dname "CN=Holonomy debug" >/dev/null 2>&1
+fi
+apksigner sign --ks "$key" --ks-pass pass:android --key-pass pass:android \
+    --out "$stage/signed.apk" "$stage/aligned.apk"
+apksigner verify "$stage/signed.apk"
+mv -f "$stage/signed.apk" "$OUT"
+echo "make quest: wrote $OUT"
