@@ -36,6 +36,12 @@ struct hol_app {
     int steps, optimum, remaining;
     double level_t;
     long next_sample; /* index of the next 10 Hz head sample */
+    /* the tutorial */
+    int stage;               /* 0..HOL_APP_TUTORIAL_STAGES-1 */
+    hol_room stage_start;
+    int stage_steps;
+    int has_target;          /* the stage has a target tile */
+    hol_tile target;
     uint8_t walk[HOL_NAV_WALK_MAX]; /* replan scratch */
     int nwalk;
 };
@@ -140,8 +146,9 @@ static hol_err hol__plan(hol_app *app, const hol_room *r, int *out_len, int *exa
     hol_err err = HOL_OK;
     const hol_app_level *L = &app->level;
     *exact = 1;
-    if (L->mode == HOL_APP_FLAG) {
-        err = hol_nav_find(app->nav, r, L->flag, 0, app->walk, sizeof app->walk, &res);
+    if (L->mode == HOL_APP_FLAG || (L->mode == HOL_APP_TUTORIAL && app->has_target)) {
+        hol_tile goal = L->mode == HOL_APP_FLAG ? L->flag : app->target;
+        err = hol_nav_find(app->nav, r, goal, 0, app->walk, sizeof app->walk, &res);
     } else if (L->mode == HOL_APP_KEYS) {
         hol_tile left[HOL_APP_MAX_KEYS];
         int n = 0;
@@ -163,10 +170,57 @@ static hol_err hol__plan(hol_app *app, const hol_room *r, int *out_len, int *exa
     return HOL_OK;
 }
 
+/* The tile reached from room state r by steps given as turns relative to
+ * the room's north (0 ahead, 1 left, ...), turning as one walks. */
+static hol_tile hol__tile_ahead(const hol_room *r, const int *turns, int n)
+{
+    hol_heading_tile ht = {r->tile, r->orient};
+    for (int i = 0; i < n; i++)
+        if (hol_heading_tile_step(ht, turns[i], &ht))
+            break;
+    return ht.tile;
+}
+
+/* Begin tutorial stage k at room state r: its target (if any) and the
+ * world marker on it. */
+static void hol__stage(hol_app *app, int k, const hol_room *r)
+{
+    static const int one[1] = {0}, two[2] = {0, 0}, three[3] = {0, 0, 1};
+    app->stage = k;
+    app->stage_start = *r;
+    app->stage_steps = 0;
+    app->has_target = k != 1;
+    if (k == 0)
+        app->target = hol__tile_ahead(r, one, 1);
+    else if (k == 2)
+        app->target = hol__tile_ahead(r, two, 2);
+    else if (k == 3)
+        app->target = hol__tile_ahead(r, three, 3);
+    if (app->has_target) {
+        hol_tile placed;
+        (void)hol_world_reserve(app->world, app->target, 0, HOL_OBJ_FLAG, &placed);
+    }
+}
+
 /* A room step entered r: collect what lies there. */
 static void hol__enter(hol_app *app, const hol_room *r)
 {
     const hol_app_level *L = &app->level;
+    if (L->mode == HOL_APP_TUTORIAL) {
+        app->stage_steps++;
+        int passed = app->has_target
+                         ? hol_tile_eq(r->tile, app->target)
+                         : app->stage_steps >= 4 && r->col == app->stage_start.col &&
+                               r->row == app->stage_start.row &&
+                               !hol_tile_eq(r->tile, app->stage_start.tile);
+        if (passed && app->stage + 1 >= HOL_APP_TUTORIAL_STAGES)
+            app->done = 1;
+        else if (passed) {
+            if (app->has_target)
+                (void)hol_world_release(app->world, app->target);
+            hol__stage(app, app->stage + 1, r);
+        }
+    }
     if (L->mode == HOL_APP_FLAG && hol_tile_eq(r->tile, L->flag))
         app->done = 1;
     if (L->mode == HOL_APP_KEYS) {
@@ -233,6 +287,9 @@ static hol_err hol__begin(hol_app *app)
     }
     app->done = 0;
     app->keys_held = 0;
+    app->has_target = 0;
+    if (L->mode == HOL_APP_TUTORIAL)
+        hol__stage(app, 0, &r);
     app->steps = 0;
     app->level_t = 0;
     app->next_sample = 0;
@@ -243,6 +300,8 @@ static hol_err hol__begin(hol_app *app)
     if (!exact)
         return HOL_EBUDGET;
     app->remaining = app->optimum;
+    if (L->mode == HOL_APP_TUTORIAL)
+        app->optimum = -1; /* lessons are not scored */
     hol_motion_init(&app->mo, &r, &app->d.motion);
     app->pending_start = 1;
     app->view.state = HOL_APP_PLAYING;
@@ -328,6 +387,7 @@ static void hol__fill_view(hol_app *app, const hol_input *in)
     h->elapsed_s = app->level_t;
     h->keys_total = L->mode == HOL_APP_KEYS ? L->nkeys : 0;
     h->keys_held = 0;
+    h->stage = L->mode == HOL_APP_TUTORIAL ? app->stage : -1;
     for (int k = 0; k < h->keys_total; k++)
         h->keys_held += (int)(app->keys_held >> k & 1);
     hol_tile_print(v->user.tile, h->address);
@@ -340,7 +400,15 @@ static void hol__fill_view(hol_app *app, const hol_input *in)
         else
             snprintf(h->objective, sizeof h->objective, "Bring the keys to the chest");
         break;
-    case HOL_APP_TUTORIAL: snprintf(h->objective, sizeof h->objective, "Tutorial"); break;
+    case HOL_APP_TUTORIAL: {
+        static const char *const lesson[HOL_APP_TUTORIAL_STAGES] = {
+            "1/4 Step onto the marked tile ahead",
+            "2/4 Walk round a tree back to this cell",
+            "3/4 Use the map: reach the marker",
+            "4/4 Find the flag, every cue on"};
+        snprintf(h->objective, sizeof h->objective, "%s", lesson[app->stage]);
+        break;
+    }
     default: snprintf(h->objective, sizeof h->objective, "Explore"); break;
     }
     long secs = (long)app->level_t;
@@ -362,6 +430,8 @@ static void hol__fill_view(hol_app *app, const hol_input *in)
     m->nobjectives = 0;
     if (L->mode == HOL_APP_FLAG && !app->done)
         m->objectives[m->nobjectives++] = L->flag;
+    if (L->mode == HOL_APP_TUTORIAL && !app->done && app->has_target)
+        m->objectives[m->nobjectives++] = app->target;
     if (L->mode == HOL_APP_KEYS && !app->done) {
         for (int k = 0; k < L->nkeys; k++)
             if (!(app->keys_held >> k & 1))
@@ -393,7 +463,8 @@ static hol_err hol__room_steps(hol_app *app, const hol_motion_steps *st)
         if (app->done) {
             app->remaining = 0;
             app->nwalk = 0;
-        } else if (app->optimum >= 0 && !hol__plan(app, &st->after[i], &app->remaining, &exact)) {
+        } else if ((app->optimum >= 0 || app->level.mode == HOL_APP_TUTORIAL) &&
+                   !hol__plan(app, &st->after[i], &app->remaining, &exact)) {
             /* remaining and the walk are set */
         }
         hol_app_step_event *e = &app->ev.steps[app->ev.nsteps++];

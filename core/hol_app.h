@@ -61,6 +61,15 @@ enum hol_app_minimap_place { HOL_MINIMAP_HUD = 0, HOL_MINIMAP_HAND = 1, HOL_MINI
 #define HOL_APP_MAX_OBJECTIVES 8
 #define HOL_APP_PATH_MAX 64
 #define HOL_APP_TEXT_MAX 48
+/* The tutorial's lessons, in order, each completed by a room step:
+ * 0 step onto the marked tile one step ahead (room north);
+ * 1 walk round a tree: back in the cell where the lesson began, after at
+ *   least 4 steps, on another tile (holonomy);
+ * 2 reach a marker two tiles ahead, reading the minimap;
+ * 3 find a flag three tiles away (ahead, ahead, left), every cue on.
+ * Targets are placed relative to where the lesson begins; the level is done
+ * after the last. Lessons are not scored (optimum -1). */
+#define HOL_APP_TUTORIAL_STAGES 4
 
 /* One level as the app plays it. */
 typedef struct hol_app_level {
@@ -103,6 +112,7 @@ typedef struct hol_app_hud {
     int optimum;                      /* fewest steps from the level start; -1 none */
     int remaining;                    /* optimal steps left from here; -1 none */
     int keys_held, keys_total;
+    int stage;                        /* tutorial lesson 0..3; -1 otherwise */
     double elapsed_s;                 /* level clock */
 } hol_app_hud;
 

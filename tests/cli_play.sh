@@ -54,11 +54,13 @@ run "pancake" 0 "$H" play --mode explore --input "$T/fwd.in" --size 64x48
 grep -q "^level explore-1 playing steps 1 optimum -1 tile N cell 1,0\$" "$T/out" && ok ||
     bad "pancake: $(cat "$T/out")"
 # keyboard mode runs and stops after --frames; no LEVEL: the default
-# campaign (three flags, two keys levels), carried by the recording
+# campaign (the tutorial, three flags, two keys levels), carried by the
+# recording
 run "campaign" 0 "$H" play --frames 3 --size 64x48 --record "$T/c.rec"
-grep -q "^level flag-1 playing steps 0 optimum [1-9][0-9]* tile O cell 1,1\$" "$T/out" && ok ||
+grep -q "^level tutorial playing steps 0 optimum -1 tile O cell 1,1\$" "$T/out" && ok ||
     bad "campaign: $(cat "$T/out")"
-[ "$(grep -c '^level ' "$T/c.rec")" = 5 ] && ok || bad "the campaign has not 5 levels"
+[ "$(grep -c '^level ' "$T/c.rec")" = 6 ] && ok || bad "the campaign has not 6 levels"
+[ "$(grep -c '^L mode flag' "$T/c.rec")" = 3 ] && ok || bad "the campaign has not 3 flag levels"
 [ "$(grep -c '^L mode keys' "$T/c.rec")" = 2 ] && ok || bad "the campaign has not 2 keys levels"
 run "mode keys" 0 "$H" play --mode keys --seed 0x10 --frames 2 --size 64x48
 grep -q "^level keys-16 playing steps 0 optimum [1-9]" "$T/out" && ok || bad "--mode keys: $(cat "$T/out")"

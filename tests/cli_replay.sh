@@ -83,6 +83,28 @@ sed -n 3p "$T/l5/summary.csv" | grep -q '^2,a,flag,5,\([0-9]*\),\1,[0-9.]*,done,
     bad "done after restart: $(cat "$T/l5/summary.csv")"
 [ "$(($(wc -l <"$T/l5/steps-001.csv") - 1))" = 2 ] && ok || bad "2 steps before the restart"
 
+# the tutorial's lessons in order: a step ahead (N); round a tree back to
+# the cell (ESWN); a marker 2 ahead; a flag ahead, ahead, left: targets from
+# `tile walk`, walks from `nav`
+P=NESWN
+A2=$(printf '%sNN\n' "$P" | "$H" tile walk | cut -d' ' -f1)
+W2=$(printf '%s %s\n' "$P" "$A2" | "$H" nav | cut -d' ' -f2)
+A3=$(printf '%s%sNNW\n' "$P" "$W2" | "$H" tile walk | cut -d' ' -f1)
+W3=$(printf '%s%s %s\n' "$P" "$W2" "$A3" | "$H" nav | cut -d' ' -f2)
+{
+    printf 'holonomy-rec 1\nlevel tut\nL mode tutorial\nend\n'
+    walk_input "$P$W2$W3"
+} >"$T/tut.rec"
+N=$(printf '%s%s%s' "$P" "$W2" "$W3" | wc -c)
+run "tutorial" 0 "$H" replay "$T/tut.rec"
+grep -q "^level tut done steps $N optimum -1 " "$T/out" && ok || bad "tutorial: $(cat "$T/out")"
+{
+    printf 'holonomy-rec 1\nlevel tut\nL mode tutorial\nend\n'
+    walk_input "N$W2$W3"
+} >"$T/tut2.rec"
+run "tutorial out of order" 0 "$H" replay "$T/tut2.rec"
+grep -q "^level tut playing " "$T/out" && ok || bad "lessons out of order: $(cat "$T/out")"
+
 # bad recordings: exit 2, one line naming the line
 printf 'hello\n' >"$T/bad1"
 run "no header" 2 "$H" replay "$T/bad1" && one_line "no header" "line 1"

@@ -244,6 +244,65 @@ static void test_keys_level(void **state)
     hol_app_destroy(app);
 }
 
+/* The tutorial's lessons complete in order: a step ahead; round a tree
+ * back to the cell on another tile; the navigator's walks to the marker
+ * and the flag. Nothing else completes a lesson early. */
+static void test_tutorial(void **state)
+{
+    (void)state;
+    hol_app *app = make_app();
+    hol_app_level L;
+    memset(&L, 0, sizeof L);
+    L.mode = HOL_APP_TUTORIAL;
+    L.seed = 8;
+    L.cues = HOL_CUE_ALL;
+    assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    const hol_app_view *v = hol_app_get_view(app);
+    assert_int_equal(v->hud.stage, 0);
+    assert_int_equal(v->hud.optimum, -1);
+    assert_true(strstr(v->hud.objective, "1/4") != NULL);
+    assert_int_equal(v->map.nobjectives, 1);
+    assert_true(hol_tile_eq(v->map.objectives[0], tile("N")));
+    double t = 0;
+    /* a step east is not the lesson */
+    uint8_t east[2] = {HOL_DIR_E, HOL_DIR_W};
+    assert_int_equal(play_walk(app, east, 2, &t), -1);
+    assert_int_equal(v->hud.stage, 0);
+    uint8_t north[1] = {HOL_DIR_N};
+    assert_int_equal(play_walk(app, north, 1, &t), -1);
+    assert_int_equal(v->hud.stage, 1);
+    assert_int_equal(v->map.nobjectives, 0);
+    /* round the tree at the corner (2,1) of cell (1,0): E S W N */
+    hol_room before = v->user;
+    uint8_t loop[4] = {HOL_DIR_E, HOL_DIR_S, HOL_DIR_W, HOL_DIR_N};
+    assert_int_equal(play_walk(app, loop, 3, &t), -1);
+    assert_int_equal(v->hud.stage, 1);
+    assert_int_equal(play_walk(app, loop + 3, 1, &t), -1);
+    assert_false(hol_tile_eq(v->user.tile, before.tile)); /* holonomy */
+    assert_int_equal(v->user.col, before.col);
+    assert_int_equal(v->hud.stage, 2);
+    /* lessons 3 and 4: the navigator's walks to the targets */
+    for (int k = 2; k < 4; k++) {
+        assert_int_equal(v->map.nobjectives, 1);
+        uint8_t walk[HOL_NAV_WALK_MAX];
+        hol_nav_result res;
+        hol_room here = v->user;
+        assert_int_equal(hol_tile_dist(here.tile, v->map.objectives[0]), k);
+        assert_int_equal(hol_nav_find(g_nav, &here, v->map.objectives[0], 0, walk, sizeof walk,
+                                      &res), HOL_OK);
+        assert_int_equal(v->hud.remaining, k == 2 ? res.len : v->hud.remaining);
+        int got = play_walk(app, walk, res.len, &t);
+        if (k == 2) {
+            assert_int_equal(got, -1);
+            assert_int_equal(v->hud.stage, 3);
+        } else {
+            assert_int_equal(got, v->hud.steps);
+            assert_int_equal(v->state, HOL_APP_DONE);
+        }
+    }
+    hol_app_destroy(app);
+}
+
 /* Paused while unfocused or the device is lost or the menu is open: no
  * motion, no clock. Quit ends the level with a summary. */
 static void test_pause_quit(void **state)
@@ -364,6 +423,7 @@ int main(void)
         cmocka_unit_test(test_flag_optimum_and_detour),
         cmocka_unit_test(test_path_when_strayed),
         cmocka_unit_test(test_keys_level),
+        cmocka_unit_test(test_tutorial),
         cmocka_unit_test(test_pause_quit),
         cmocka_unit_test(test_deterministic),
         cmocka_unit_test(test_no_allocation),

@@ -29,8 +29,8 @@ static const char *const play_usage =
     "Play in a desktop window (EGL on X11; also under Xvfb). LEVEL is a level\n"
     "file (SPEC section 5); --mode plays a level of that mode made from the seed\n"
     "(flag 5 steps from the start; 3 keys 2..3 steps out and the chest at 5);\n"
-    "neither: the default campaign (three flags at distance 3, 5, 7, then two\n"
-    "keys-and-chest levels).\n"
+    "neither: the default campaign (the tutorial, three flags at distance 3, 5,\n"
+    "7, then two keys-and-chest levels).\n"
     "\n"
     "  W/S or Up/Down   walk forward/back      A/D          step sideways\n"
     "  Left/Right       turn                   PgUp/PgDn    look up/down\n"
@@ -38,7 +38,7 @@ static const char *const play_usage =
     "  R                restart the level      M            minimap: HUD, hand, off\n"
     "  Enter/Space      next level (end screen) Esc/Q        quit\n"
     "\n"
-    "  --mode M        explore, flag or keys\n"
+    "  --mode M        tutorial (four lessons), flag, keys or explore\n"
     "  --seed S        seed of --mode's level or the campaign's first (decimal or\n"
     "                  0x hex; default 1)\n"
     "  --log DIR       research logs: DIR/steps-NNN.csv, DIR/head-NNN.csv per level\n"
@@ -195,8 +195,8 @@ static int mode_level(const char *mode, uint64_t seed, int dist, int nkeys, cons
     uint64_t rng = seed;
     char a[HOL_TILE_ADDR_MAX];
     int n = 0;
-    if (!strcmp(mode, "explore")) {
-        n = snprintf(L->text, sizeof L->text, "mode explore\nseed %llu\n",
+    if (!strcmp(mode, "explore") || !strcmp(mode, "tutorial")) {
+        n = snprintf(L->text, sizeof L->text, "mode %s\nseed %llu\n", mode,
                      (unsigned long long)seed);
     } else if (!strcmp(mode, "flag")) {
         hol_tile_print(seeded_tile(&rng, dist), a);
@@ -231,11 +231,13 @@ static int mode_level(const char *mode, uint64_t seed, int dist, int nkeys, cons
     return session_parse_level(L->text, L->len, &L->lvl, err, sizeof err);
 }
 
-/* The default campaign (no LEVEL, no --mode): three flags at growing
- * distance, then two keys-and-chest levels. */
+/* The default campaign (no LEVEL, no --mode): the tutorial, three flags
+ * at growing distance, then two keys-and-chest levels. */
 static int default_campaign(uint64_t seed, session_level *levels)
 {
     int n = 0;
+    if (mode_level("tutorial", seed, 0, 0, "tutorial", &levels[n++]))
+        return -1;
     static const int flag_dist[3] = {3, 5, 7};
     char name[32];
     for (int i = 0; i < 3; i++) {
@@ -360,7 +362,8 @@ int cli_cmd_play(int argc, char **argv)
         }
     } else if (mode) {
         if (mode_level(mode, seed, 5, 3, NULL, &levels[nlevels++])) {
-            cli_error(cmd, 0, "--mode '%.40s' is not one of explore, flag, keys", mode);
+            cli_error(cmd, 0, "--mode '%.40s' is not one of tutorial, flag, keys, explore",
+                      mode);
             return CLI_EXIT_USAGE;
         }
     } else {
