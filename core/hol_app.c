@@ -424,6 +424,13 @@ static void hol__fill_view(hol_app *app, const hol_input *in)
     } else {
         h->status[0] = 0;
     }
+    h->nlines = 0;
+    snprintf(h->lines[h->nlines++], HOL_APP_TEXT_MAX, "%s", h->status[0] ? h->status : h->objective);
+    snprintf(h->lines[h->nlines++], HOL_APP_TEXT_MAX, "STEPS %d", h->steps);
+    snprintf(h->lines[h->nlines++], HOL_APP_TEXT_MAX, "TILE %.40s", h->address);
+    snprintf(h->lines[h->nlines++], HOL_APP_TEXT_MAX, "TIME %ld:%02ld", secs / 60, secs % 60);
+    if (h->hint[0])
+        snprintf(h->lines[h->nlines++], HOL_APP_TEXT_MAX, "%s", h->hint);
     /* minimap */
     hol_app_minimap *m = &v->map;
     m->cues = L->cues;

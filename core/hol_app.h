@@ -61,6 +61,7 @@ enum hol_app_minimap_place { HOL_MINIMAP_HUD = 0, HOL_MINIMAP_HAND = 1, HOL_MINI
 #define HOL_APP_MAX_OBJECTIVES 8
 #define HOL_APP_PATH_MAX 64
 #define HOL_APP_TEXT_MAX 48
+#define HOL_APP_HUD_LINES 5
 /* The tutorial's lessons, in order, each completed by a room step:
  * 0 step onto the marked tile one step ahead (room north);
  * 1 walk round a tree: back in the cell where the lesson began, after at
@@ -114,6 +115,11 @@ typedef struct hol_app_hud {
     int keys_held, keys_total;
     int stage;                        /* tutorial lesson 0..3; -1 otherwise */
     double elapsed_s;                 /* level clock */
+    /* the text as drawn, one line each: objective (or status), steps
+     * (with the best when done), "TILE address", time, hint if any; "TILE"
+     * keeps the address's case, other lines are shown in capitals */
+    char lines[HOL_APP_HUD_LINES][HOL_APP_TEXT_MAX];
+    int nlines;
 } hol_app_hud;
 
 /* The minimap model. */

@@ -359,21 +359,26 @@ void hol_hud_build_text(hol_mesh *out, const hol_frame_desc *f, int w, int h)
 {
     hol__px p = {out, w, h, 0};
     float sc = (float)(h >= 160 ? h / 160 : 1);
-    char lines[4][96];
+    char lines[6][96];
     char addr[HOL_TILE_ADDR_MAX];
-    hol_tile_print(f->user.tile, addr);
     int nl = 0;
-    if (f->objective_text) {
-        snprintf(lines[nl], sizeof lines[0], "%.40s", f->objective_text);
-        for (char *c = lines[nl]; *c; c++)
-            if (*c >= 'a' && *c <= 'z')
-                *c = (char)(*c - 32); /* prose in capitals: f, l, r are for addresses */
-        nl++;
+    if (f->hud_lines) {
+        for (int i = 0; i < f->nhud_lines && i < 6; i++)
+            snprintf(lines[nl++], sizeof lines[0], "%.60s", f->hud_lines[i]);
+    } else {
+        if (f->objective_text)
+            snprintf(lines[nl++], sizeof lines[0], "%.40s", f->objective_text);
+        hol_tile_print(f->user.tile, addr);
+        snprintf(lines[nl++], sizeof lines[0], "STEPS %d", f->steps_taken);
+        snprintf(lines[nl++], sizeof lines[0], "TILE %.40s", addr);
+        long t = (long)(f->time_s > 0 ? f->time_s : 0);
+        snprintf(lines[nl++], sizeof lines[0], "TIME %ld:%02ld", t / 60, t % 60);
     }
-    snprintf(lines[nl++], sizeof lines[0], "STEPS %d", f->steps_taken);
-    snprintf(lines[nl++], sizeof lines[0], "TILE %.40s", addr);
-    long t = (long)(f->time_s > 0 ? f->time_s : 0);
-    snprintf(lines[nl++], sizeof lines[0], "TIME %ld:%02ld", t / 60, t % 60);
+    for (int i = 0; i < nl; i++) /* prose in capitals: f, l, r are for addresses */
+        if (strncmp(lines[i], "TILE ", 5) != 0)
+            for (char *c = lines[i]; *c; c++)
+                if (*c >= 'a' && *c <= 'z')
+                    *c = (char)(*c - 32);
     size_t longest = 0;
     for (int i = 0; i < nl; i++)
         longest = strlen(lines[i]) > longest ? strlen(lines[i]) : longest;

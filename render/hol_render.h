@@ -84,6 +84,11 @@ typedef struct hol_frame_desc {
     double time_s;
     const uint8_t *path; /* shortest-path overlay: room steps from the user */
     int npath;
+    /* The HUD text as the app filled it at its step (hol_app_hud.lines):
+     * when set, these lines (at most 6) are drawn as given instead of the
+     * objective/steps/tile/time lines composed from the fields above. */
+    const char *const *hud_lines;
+    int nhud_lines;
     /* The minimap in the hand (HOL_RENDER_MINIMAP_HAND): a square of side
      * hand_size metres (0: 0.25) centred at hand_pos (room coordinates),
      * turned by the unit quaternion hand_orient (x, y, z, w; all zero:

@@ -379,6 +379,12 @@ int session_close(session *s)
 void session_frame_desc(const hol_app_view *v, hol_frame_desc *fd, int w, int h)
 {
     memset(fd, 0, sizeof *fd);
+    /* the HUD text the app filled at its step */
+    static const char *lines[HOL_APP_HUD_LINES];
+    for (int i = 0; i < v->hud.nlines; i++)
+        lines[i] = v->hud.lines[i];
+    fd->hud_lines = lines;
+    fd->nhud_lines = v->hud.nlines;
     fd->user = v->user;
     memcpy(fd->cam.eye, v->head, sizeof fd->cam.eye);
     fd->cam.yaw_deg = v->yaw_deg;
