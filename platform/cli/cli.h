@@ -80,6 +80,7 @@ int cli_cmd_nav(int argc, char **argv);
 int cli_cmd_tour(int argc, char **argv);
 int cli_cmd_render(int argc, char **argv);
 int cli_cmd_play(int argc, char **argv);
+int cli_cmd_game(int argc, char **argv);
 int cli_cmd_replay(int argc, char **argv);
 
 #endif

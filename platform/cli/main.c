@@ -16,6 +16,7 @@ static const cli_command commands[] = {
     {"nav", cli_cmd_nav, "fewest room steps to a target tile"},
     {"tour", cli_cmd_tour, "fewest room steps to collect keys, then the chest"},
     {"render", cli_cmd_render, "render a view to PNG (headless OSMesa)"},
+    {"game", cli_cmd_game, "play a level headless from lines of room steps: done|open STEPS OPTIMUM"},
     {"play", cli_cmd_play, "play in a desktop window (EGL/X11); logs, recording"},
     {"replay", cli_cmd_replay, "run a recording again: the same logs, PNG frames"},
 };

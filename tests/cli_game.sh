@@ -1,0 +1,64 @@
+#!/bin/sh
+# cli_game.sh - `holonomy game LEVEL` (SPEC section 5): the navigator's
+# optimal walk scores exactly the optimum, a detour of k steps the optimum
+# plus k, for flag and keys levels and with a start walk; open plays; bad
+# plays and bad levels named by line.
+. "$(dirname "$0")/lib.sh"
+
+run "--help" 0 "$H" game --help
+grep -q "done STEPS OPTIMUM" "$T/out" && ok || bad "--help lacks the output format"
+
+# flag
+printf 'mode flag   # find the flag\nseed 5\n\nflag Wrf\n' >"$T/f.lvl"
+printf -- '- Wrf\n' | "$H" nav >"$T/nav"
+K=$(cut -d' ' -f1 "$T/nav") W=$(cut -d' ' -f2 "$T/nav")
+# (steps after completion are ignored: W ends in a north cell, so S N fits)
+printf '%s\nSN%s\nEWEW%s\n-\n\n%sSN\n' "$W" "$W" "$W" "$W" >"$T/in"
+expect "flag" 0 "done $K $K
+done $((K + 2)) $K
+done $((K + 4)) $K
+open 0 $K
+open 0 $K
+done $K $K
+" "$H" game "$T/f.lvl"
+
+# keys and chest, from a start walk
+printf 'mode keys\nseed 0x3\nstart NE\nkeys Nf Wr\nchest Sf\n' >"$T/k.lvl"
+"$H" tour NE Nf Wr Sf >"$T/tour"
+K=$(cut -d' ' -f1 "$T/tour") W=$(cut -d' ' -f2 "$T/tour")
+printf '%s\nWE%s\n' "$W" "$W" >"$T/in"
+expect "keys" 0 "done $K $K
+done $((K + 2)) $K
+" "$H" game "$T/k.lvl"
+# the chest before the keys does not count
+printf 'mode keys\nseed 1\nkeys Nf\nchest N\n' >"$T/k2.lvl"
+"$H" tour - Nf N >"$T/tour"
+K=$(cut -d' ' -f1 "$T/tour") W=$(cut -d' ' -f2 "$T/tour")
+printf 'N\n%s\n' "$W" >"$T/in"
+expect "chest last" 0 "open 1 $K
+done $K $K
+" "$H" game "$T/k2.lvl"
+
+# bad plays: exit 2, one line naming the line
+printf 'N\nNN\n' >"$T/in"
+expect_status "leaves the room" 2 "$H" game "$T/f.lvl"
+one_line "leaves the room" "line 2: step 2"
+printf 'N\nNX\n' >"$T/in"
+expect_status "bad step" 2 "$H" game "$T/f.lvl"
+one_line "bad step" "line 2: character 2"
+
+# bad levels: exit 2, one line naming the file's line
+: >"$T/in"
+printf 'mode flag\nseed 5\nflug Wrf\n' >"$T/b1.lvl"
+run "unknown key" 2 "$H" game "$T/b1.lvl" && one_line "unknown key" "line 3"
+printf 'mode flag\nseed -5\n' >"$T/b2.lvl"
+run "bad seed" 2 "$H" game "$T/b2.lvl" && one_line "bad seed" "line 2"
+printf 'mode chess\n' >"$T/b3.lvl"
+run "bad mode" 2 "$H" game "$T/b3.lvl" && one_line "bad mode" "line 1"
+printf 'mode flag\nflag O\n' >"$T/b4.lvl"
+run "flag on the start" 2 "$H" game "$T/b4.lvl" && one_line "flag on the start" "where the level begins"
+printf 'mode flag\nflag\n' >"$T/b5.lvl"
+run "missing value" 2 "$H" game "$T/b5.lvl" && one_line "missing value" "line 2"
+run "no level" 2 "$H" game
+run "missing file" 2 "$H" game "$T/nope.lvl"
+finish cli_game
