@@ -59,6 +59,15 @@ printf 'mode flag\nflag O\n' >"$T/b4.lvl"
 run "flag on the start" 2 "$H" game "$T/b4.lvl" && one_line "flag on the start" "where the level begins"
 printf 'mode flag\nflag\n' >"$T/b5.lvl"
 run "missing value" 2 "$H" game "$T/b5.lvl" && one_line "missing value" "line 2"
+printf 'mode flag\nflag N\ncues path arrow\nminimap hand\n' >"$T/c.lvl"
+printf 'N\n' >"$T/in"
+expect "cues and minimap keys" 0 "done 1 1
+" "$H" game "$T/c.lvl"
+: >"$T/in"
+printf 'mode flag\nflag N\ncues path smell\n' >"$T/b6.lvl"
+run "bad cue" 2 "$H" game "$T/b6.lvl" && one_line "bad cue" "line 3"
+printf 'mode flag\nflag N\nminimap wrist\n' >"$T/b7.lvl"
+run "bad minimap" 2 "$H" game "$T/b7.lvl" && one_line "bad minimap" "line 3"
 run "no level" 2 "$H" game
 run "missing file" 2 "$H" game "$T/nope.lvl"
 finish cli_game

@@ -103,6 +103,40 @@ int session_parse_level(const char *text, size_t len, hol_app_level *lvl, char *
                     return 1;
                 }
             L.nkeys = nf - 1;
+        } else if (!strcmp(key, "cues")) {
+            static const char *const cue_names[4] = {"hot-cold", "path", "poles", "arrow"};
+            unsigned cues = 0;
+            for (int i = 1; i < nf && i < 7; i++) {
+                int c = -1;
+                for (int k = 0; k < 4; k++)
+                    if (!strcmp(f[i], cue_names[k]))
+                        c = k;
+                if (c < 0 && !(nf == 2 && !strcmp(f[i], "none"))) {
+                    snprintf(err, err_cap,
+                             "line %ld: cue '%.20s' is not hot-cold, path, poles, arrow or none",
+                             lineno, f[i]);
+                    return 1;
+                }
+                if (c >= 0)
+                    cues |= 1u << c;
+            }
+            if (nf > 5) {
+                snprintf(err, err_cap, "line %ld: more than the four cues", lineno);
+                return 1;
+            }
+            L.cues = cues;
+        } else if (!strcmp(key, "minimap") && nf == 2) {
+            static const char *const places[3] = {"hud", "hand", "off"};
+            int m = -1;
+            for (int k = 0; k < 3; k++)
+                if (!strcmp(f[1], places[k]))
+                    m = k;
+            if (m < 0) {
+                snprintf(err, err_cap, "line %ld: minimap '%.20s' is not hud, hand or off",
+                         lineno, f[1]);
+                return 1;
+            }
+            L.minimap = m;
         } else {
             snprintf(err, err_cap, "line %ld: unknown key or wrong value count: '%.20s'",
                      lineno, key);
