@@ -72,5 +72,6 @@ int cli_cmd_world(int argc, char **argv);
 int cli_cmd_nav(int argc, char **argv);
 int cli_cmd_tour(int argc, char **argv);
 int cli_cmd_render(int argc, char **argv);
+int cli_cmd_hid(int argc, char **argv);
 
 #endif

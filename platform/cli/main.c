@@ -16,6 +16,7 @@ static const cli_command commands[] = {
     {"nav", cli_cmd_nav, "fewest room steps to a target tile"},
     {"tour", cli_cmd_tour, "fewest room steps to collect keys, then the chest"},
     {"render", cli_cmd_render, "render a view to PNG (headless OSMesa)"},
+    {"hid", cli_cmd_hid, "game controllers: descriptor field maps, list, watch"},
 };
 
 static void usage(FILE *f)
