@@ -234,13 +234,13 @@ int hol_hid_pad_decode(hol_hid_pad *pad, const uint8_t *report, size_t len,
             }
         if (pad->has_hat && pad->hat.report_id == id &&
             hol_hid_field_read(&pad->hat, report, len, &v)) {
+            /* as Linux: (v - min) * 8 / (max - min + 1) eighths from north */
             const hol_hid_field *h = &pad->hat;
-            int64_t span = h->logical_max - h->logical_min;
-            int64_t d = v - h->logical_min;
-            if (v < h->logical_min || v > h->logical_max || span < 3)
+            if (v < h->logical_min || v > h->logical_max)
                 pad->hat_dir = -1;
             else
-                pad->hat_dir = (int)(span == 3 ? d * 2 : d % 8);
+                pad->hat_dir = (int)((v - h->logical_min) * 8 /
+                                     (h->logical_max - h->logical_min + 1));
             used = 1;
         }
         for (int i = 0; i < pad->n_buttons; i++)

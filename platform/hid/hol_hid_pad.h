@@ -16,7 +16,9 @@
  *   generic pads follow the Linux gamepad order (1 south: CONFIRM, 2 east:
  *   BACK, 4 north: RECENTRE, 5 west: MINIMAP, 11 select: MINIMAP,
  *   12 start: MENU, 13 mode: MENU); hat up: RECENTRE, hat down: MINIMAP.
- *   A hat value outside its logical range (null state) is centred.
+ *   The hat's direction is (v - min) * 8 / (max - min + 1) eighths from
+ *   north, as Linux reads it; a value outside the logical range (null
+ *   state) is centred.
  * - A small table of known pads by VID:PID (hol_hid_known_find) gives the
  *   button roles where the descriptor's button numbers mislead (Sony), the
  *   report a pad needs before it sends input, and a fixed layout where the
