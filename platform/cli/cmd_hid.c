@@ -236,7 +236,8 @@ static int cmd_watch(int argc, char **argv)
     memset(&in, 0, sizeof in);
     memset(&last, 0xff, sizeof last);
     for (size_t f = 0; frames == 0 || f < frames; f++) {
-        hol_err err = hol_hid_dev_poll(&dev, now_s(), &in);
+        in.time_s = now_s();
+        hol_err err = hol_hid_dev_poll(&dev, &in);
         if (memcmp(&in.buttons, &last.buttons, sizeof in.buttons) ||
             memcmp(in.move, last.move, sizeof in.move) ||
             memcmp(in.turn, last.turn, sizeof in.turn)) {

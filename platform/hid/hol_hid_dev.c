@@ -128,18 +128,18 @@ hol_err hol_hid_dev_open_first(hol_hid_dev *dev)
     return err ? HOL_EOPEN : HOL_OK;
 }
 
-hol_err hol_hid_dev_poll(hol_hid_dev *dev, double now_s, hol_input *io)
+hol_err hol_hid_dev_poll(hol_hid_dev *dev, hol_input *io)
 {
+    double now_s = io->time_s;
     if (!dev->handle) {
         io->flags |= HOL_INPUT_DEVICE_LOST;
         io->buttons = 0;
         io->move[0] = io->move[1] = io->turn[0] = io->turn[1] = 0.0f;
-        if (now_s - dev->last_try_s < HOL_HID_REENUM_S)
+        if (dev->tried && now_s - dev->last_try_s < HOL_HID_REENUM_S)
             return HOL_EIO;
-        dev->last_try_s = now_s;
-        hol_hid_dev keep = *dev;
-        if (hol_hid_dev_open_first(dev)) {
-            *dev = keep;
+        if (hol_hid_dev_open_first(dev)) { /* leaves dev closed */
+            dev->tried = 1;
+            dev->last_try_s = now_s;
             return HOL_EIO;
         }
         io->flags &= ~HOL_INPUT_DEVICE_LOST;
@@ -153,6 +153,7 @@ hol_err hol_hid_dev_poll(hol_hid_dev *dev, double now_s, hol_input *io)
             hid_close((hid_device *)dev->handle);
             dev->handle = NULL;
             dev->lost = 1;
+            dev->tried = 1;
             dev->last_try_s = now_s;
             io->flags |= HOL_INPUT_DEVICE_LOST;
             io->buttons = 0;

@@ -6,15 +6,18 @@
  *   collection Generic Desktop Joystick 0x04, Gamepad 0x05 or Multi-axis
  *   Controller 0x08), reads its report descriptor, builds the field map
  *   and the decoder (hol_hid_pad.h), sends a known pad's start report, and
- *   sets the device non-blocking. All memory is in the hol_hid_dev struct
- *   (the caller's); nothing is allocated after open except inside hidapi's
- *   own open.
+ *   sets the device non-blocking. The field map, decoder and buffers live
+ *   in the hol_hid_dev struct (caller memory). While a controller is
+ *   connected, polling allocates nothing; re-enumeration (hidapi's
+ *   hid_enumerate and hid_open_path, which allocate) happens only while
+ *   no controller is open. With hidapi 0.13 (Debian 12) the descriptor is
+ *   read from sysfs (hidraw backend only); hidapi >= 0.14 reads it itself.
  * - hol_hid_dev_poll(dev, io) never blocks: it drains the reports waiting
  *   and writes buttons, move and turn of *io. When the device goes away
  *   (a read error) it sets HOL_INPUT_DEVICE_LOST in io->flags, zeroes the
  *   axes and buttons, closes the handle and returns HOL_EIO; later polls
  *   try to reopen a controller (hot-plug), at most once every
- *   HOL_HID_REENUM_S seconds of the caller's clock (`now_s`).
+ *   HOL_HID_REENUM_S seconds of io->time_s.
  * - No device: HOL_EOPEN (never a crash). hol_hid_dev_list prints nothing;
  *   it calls fn for every controller found.
  */
@@ -47,14 +50,17 @@ typedef struct hol_hid_dev {
     size_t n_fields;
     int has_ids;
     hol_hid_pad pad;
-    double last_try_s;
-    int lost;
+    double last_try_s; /* io->time_s of the last (re)open attempt */
+    int tried;
+    int lost;          /* the controller went away (HOL_INPUT_DEVICE_LOST) */
 } hol_hid_dev;
 
 /* Open the first game controller into *dev. HOL_EOPEN: none found. */
 hol_err hol_hid_dev_open_first(hol_hid_dev *dev);
-/* Non-blocking; see the contract. */
-hol_err hol_hid_dev_poll(hol_hid_dev *dev, double now_s, hol_input *io);
+/* Non-blocking; see the contract. io->time_s is the clock for the
+ * re-enumeration interval. A dev that failed hol_hid_dev_open_first may be
+ * polled too: it keeps looking for a controller (plug it in later). */
+hol_err hol_hid_dev_poll(hol_hid_dev *dev, hol_input *io);
 void hol_hid_dev_close(hol_hid_dev *dev);
 
 /* Call fn for every game controller; returns how many were found. The
