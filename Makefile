@@ -10,7 +10,8 @@
 #   make quest      the Quest APK (needs NDK= and OPENXR_LOADER=; see README)
 #   make clean      remove build outputs
 #
-# Variables: CC (gcc or clang), BUILD (output folder), FUZZ_TIME (seconds).
+# Variables: CC (gcc or clang), BUILD (output folder), FUZZ_TIME (seconds),
+# HID (hidapi backend: hidraw, the default, or libusb).
 
 CC      ?= gcc
 BUILD   ?= build
@@ -28,6 +29,15 @@ RENDER_SRC := $(wildcard render/*.c)
 CLI_SRC  := $(wildcard platform/cli/*.c)
 # Desktop platform services (files, PNG files) shared by the tool, render tests, benches.
 PLAT_SRC := $(wildcard platform/file/*.c platform/image/*.c)
+# Gamepads: the pure descriptor parser and report decoder (tests, fuzz,
+# benches link these) and the hidapi device layer (the tool only).
+HID_SRC  := platform/hid/hol_hid_desc.c platform/hid/hol_hid_pad.c
+HID_DEV_SRC := platform/hid/hol_hid_dev.c
+# hidapi backend: hidraw (default, Linux hidraw nodes) or `make HID=libusb`
+# (libusb, where hidraw is not available; detaches the kernel driver).
+HID     ?= hidraw
+HID_LIBS := -lhidapi-$(HID)
+$(BUILD)/platform/hid/hol_hid_dev.o: override CFLAGS += -DHOL_HID_BACKEND='"$(HID)"'
 # tests/test_*.c: cmocka suites on the core (also run under sanitizers);
 # tests/test_render*.c: suites that also link the renderer and GL.
 RENDER_TEST_SRC := $(wildcard tests/test_render*.c)
@@ -41,7 +51,8 @@ BENCH_SRC := $(filter-out $(BENCH_RENDER_SRC),$(wildcard tests/bench_*.c))
 FUZZ_SRC := $(wildcard fuzz/fuzz_*.c)
 
 CORE_OBJ := $(CORE_SRC:%.c=$(BUILD)/%.o)
-CLI_OBJ  := $(CLI_SRC:%.c=$(BUILD)/%.o) $(PLAT_SRC:%.c=$(BUILD)/%.o)
+CLI_OBJ  := $(CLI_SRC:%.c=$(BUILD)/%.o) $(PLAT_SRC:%.c=$(BUILD)/%.o) \
+  $(HID_SRC:%.c=$(BUILD)/%.o) $(HID_DEV_SRC:%.c=$(BUILD)/%.o)
 PLAT_OBJ := $(PLAT_SRC:%.c=$(BUILD)/%.o)
 CORE_LIB := $(BUILD)/libholcore.a
 RENDER_OBJ := $(RENDER_SRC:%.c=$(BUILD)/%.o)
@@ -81,11 +92,15 @@ $(RENDER_LIB): $(RENDER_OBJ)
 	$(AR) rcs $@ $^
 
 $(BUILD)/holonomy: $(CLI_OBJ) $(RENDER_LIB) $(CORE_LIB)
-	$(CC) $(CFLAGS) -o $@ $(CLI_OBJ) $(RENDER_LIB) $(CORE_LIB) $(LDFLAGS) $(APP_LIBS) $(LDLIBS)
+	$(CC) $(CFLAGS) -o $@ $(CLI_OBJ) $(RENDER_LIB) $(CORE_LIB) $(LDFLAGS) $(APP_LIBS) $(HID_LIBS) $(LDLIBS)
 
 $(RENDER_TEST_BIN): $(BUILD)/tests/%: tests/%.c $(wildcard tests/*.h) $(PLAT_OBJ) $(RENDER_LIB) $(CORE_LIB)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) -o $@ $< $(PLAT_OBJ) $(RENDER_LIB) $(CORE_LIB) $(LDFLAGS) -lcmocka $(RENDER_LIBS) $(LDLIBS)
+
+$(BUILD)/tests/test_hid: tests/test_hid.c tests/hid_samples.h $(HID_SRC) $(CORE_LIB)
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) -o $@ $< $(HID_SRC) $(CORE_LIB) $(LDFLAGS) -lcmocka $(LDLIBS)
 
 $(BUILD)/tests/%: tests/%.c $(wildcard tests/*.h) $(CORE_LIB)
 	@mkdir -p $(dir $@)
@@ -95,6 +110,10 @@ $(BENCH_RENDER_BIN): $(BUILD)/bench/%: tests/%.c $(PLAT_OBJ) $(RENDER_LIB) $(COR
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) -DNDEBUG -o $@ $< $(PLAT_OBJ) $(RENDER_LIB) $(CORE_LIB) $(LDFLAGS) $(RENDER_LIBS) $(LDLIBS)
 
+$(BUILD)/bench/bench_hid: tests/bench_hid.c tests/hid_samples.h $(HID_SRC)
+	@mkdir -p $(dir $@)
+	$(CC) $(CSTD) $(WARN) -O2 -DNDEBUG -D_DEFAULT_SOURCE -o $@ $< $(HID_SRC) $(LDLIBS)
+
 $(BUILD)/bench/%: tests/%.c $(CORE_SRC)
 	@mkdir -p $(dir $@)
 	$(CC) $(CSTD) $(WARN) -O2 -DNDEBUG -D_DEFAULT_SOURCE -o $@ $< $(CORE_SRC) $(LDLIBS)
@@ -103,12 +122,14 @@ $(BUILD)/bench/%: tests/%.c $(CORE_SRC)
 # A harness links the core; FUZZ_EXTRA_<name> adds sources and libraries.
 FUZZ_EXTRA_fuzz_png := render/hol_png.c -lz
 FUZZ_EXTRA_fuzz_recording := platform/cli/session.c platform/cli/cli_util.c platform/file/hol_file.c
-$(BUILD)/fuzz/%: fuzz/%.c $(wildcard fuzz/*.h) $(CORE_SRC) $(RENDER_SRC)
+FUZZ_EXTRA_fuzz_hid_desc := $(HID_SRC)
+FUZZ_EXTRA_fuzz_hid_report := $(HID_SRC)
+$(BUILD)/fuzz/%: fuzz/%.c $(wildcard fuzz/*.h) $(CORE_SRC) $(RENDER_SRC) $(HID_SRC) $(PLAT_SRC) $(CLI_SRC)
 	@mkdir -p $(dir $@)
 	$(FUZZ_CC) $(CSTD) -g -O1 -D_DEFAULT_SOURCE -fsanitize=fuzzer,address,undefined \
 	  -fno-sanitize-recover=all -o $@ $< $(CORE_SRC) $(FUZZ_EXTRA_$*) $(LDLIBS)
 
-$(BUILD)/fuzz-replay/%: fuzz/%.c fuzz/replay_main.c $(wildcard fuzz/*.h) $(CORE_SRC) $(RENDER_SRC)
+$(BUILD)/fuzz-replay/%: fuzz/%.c fuzz/replay_main.c $(wildcard fuzz/*.h) $(CORE_SRC) $(RENDER_SRC) $(HID_SRC) $(PLAT_SRC) $(CLI_SRC)
 	@mkdir -p $(dir $@)
 	$(CC) $(CSTD) $(WARN) -O1 -g -D_DEFAULT_SOURCE -o $@ $< fuzz/replay_main.c $(CORE_SRC) \
 	  $(FUZZ_EXTRA_$*) $(LDLIBS)
