@@ -225,8 +225,11 @@ static void hol__enter(hol_app *app, const hol_room *r)
         app->done = 1;
     if (L->mode == HOL_APP_KEYS) {
         for (int k = 0; k < L->nkeys; k++)
-            if (hol_tile_eq(r->tile, L->keys[k]))
+            if (hol_tile_eq(r->tile, L->keys[k]) && !(app->keys_held >> k & 1)) {
                 app->keys_held |= 1u << k;
+                /* a collected key leaves the world */
+                (void)hol_world_release(app->world, L->keys[k]);
+            }
         if (app->keys_held == (1u << L->nkeys) - 1 && hol_tile_eq(r->tile, L->chest))
             app->done = 1;
     }
@@ -445,6 +448,20 @@ static void hol__fill_view(hol_app *app, const hol_input *in)
                 m->objectives[m->nobjectives++] = L->keys[k];
         if (h->keys_held == h->keys_total)
             m->objectives[m->nobjectives++] = L->chest;
+    }
+    /* the game objects in the world: the flag (or a lesson's marker), the
+     * keys not yet collected, the chest (open once every key is held) */
+    v->nobjects = 0;
+    if (L->mode == HOL_APP_FLAG)
+        v->objects[v->nobjects++] = (hol_app_object){L->flag, HOL_APP_OBJ_FLAG};
+    if (L->mode == HOL_APP_TUTORIAL && app->has_target && !app->done)
+        v->objects[v->nobjects++] = (hol_app_object){app->target, HOL_APP_OBJ_FLAG};
+    if (L->mode == HOL_APP_KEYS) {
+        for (int k = 0; k < L->nkeys; k++)
+            if (!(app->keys_held >> k & 1))
+                v->objects[v->nobjects++] = (hol_app_object){L->keys[k], HOL_APP_OBJ_KEY};
+        v->objects[v->nobjects++] = (hol_app_object){
+            L->chest, h->keys_held == h->keys_total ? HOL_APP_OBJ_CHEST_OPEN : HOL_APP_OBJ_CHEST};
     }
     m->npath = 0;
     if ((L->cues & HOL_CUE_PATH) && !app->done && app->optimum >= 0 &&

@@ -132,6 +132,20 @@ typedef struct hol_app_minimap {
     uint8_t path[HOL_APP_PATH_MAX];   /* room steps from the user */
 } hol_app_minimap;
 
+/* A game object standing in the world. */
+typedef enum hol_app_object_kind {
+    HOL_APP_OBJ_NONE = 0,
+    HOL_APP_OBJ_FLAG,        /* the flag, or a tutorial lesson's marker */
+    HOL_APP_OBJ_KEY,         /* a key not yet collected */
+    HOL_APP_OBJ_CHEST,       /* the chest, closed */
+    HOL_APP_OBJ_CHEST_OPEN   /* the chest once every key is held */
+} hol_app_object_kind;
+
+typedef struct hol_app_object {
+    hol_tile tile;
+    int kind;                /* hol_app_object_kind */
+} hol_app_object;
+
 /* What every platform draws. */
 typedef struct hol_app_view {
     hol_app_state state;
@@ -145,6 +159,8 @@ typedef struct hol_app_view {
     double eye[2][3];                 /* eye positions (head +- ipd / 2) */
     hol_app_hud hud;
     hol_app_minimap map;
+    int nobjects;                     /* game objects to draw in the world */
+    hol_app_object objects[HOL_APP_MAX_OBJECTIVES];
     uint64_t frame;                   /* steps of the app so far */
 } hol_app_view;
 

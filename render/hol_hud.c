@@ -11,7 +11,7 @@
 #define HOL__PI 3.14159265358979323846
 
 /* 5x7 glyphs, 7 rows, bit 4 is the leftmost column. */
-static const char hol__chars[] = " 0123456789ABCDEFGHIJKLMNOPQRSTUVWXYZ:.-/flr";
+static const char hol__chars[] = " 0123456789ABCDEFGHIJKLMNOPQRSTUVWXYZ:.-/flr,!()";
 static const uint8_t hol__font[][7] = {
     {0, 0, 0, 0, 0, 0, 0},
     {0x0E, 0x11, 0x13, 0x15, 0x19, 0x11, 0x0E}, {0x04, 0x0C, 0x04, 0x04, 0x04, 0x04, 0x0E},
@@ -36,6 +36,8 @@ static const uint8_t hol__font[][7] = {
     {0, 0, 0, 0x1F, 0, 0, 0}, {0, 0x01, 0x02, 0x04, 0x08, 0x10, 0},
     {0x06, 0x09, 0x08, 0x1C, 0x08, 0x08, 0x08}, {0x0C, 0x04, 0x04, 0x04, 0x04, 0x04, 0x0E},
     {0, 0, 0x16, 0x19, 0x10, 0x10, 0x10},
+    {0, 0, 0, 0, 0x0C, 0x04, 0x08}, {0x04, 0x04, 0x04, 0x04, 0x04, 0, 0x04},
+    {0x02, 0x04, 0x08, 0x08, 0x08, 0x04, 0x02}, {0x08, 0x04, 0x02, 0x02, 0x02, 0x04, 0x08},
 };
 static const uint8_t hol__box[7] = {0x1F, 0x11, 0x11, 0x11, 0x11, 0x11, 0x1F};
 
@@ -213,7 +215,7 @@ static void hol__minimap(hol__px *p, const hol_frame_desc *f)
         if (hol_hyper_frame(f->user.tile, f->user.orient, cells[i].tile, m))
             continue;
         uint8_t col[3];
-        hol__hot(cells[i].hot, col);
+        hol__hot((f->flags & HOL_RENDER_NO_HOT_COLD) ? -1 : cells[i].hot, col);
         float q[16][2];
         int nq = 0;
         for (int k = 0; k < 4; k++)
@@ -276,7 +278,8 @@ static void hol__minimap(hol__px *p, const hol_frame_desc *f)
             float s2 = s * 0.65f;
             float dq2[4][2] = {{c[0], c[1] - s2}, {c[0] + s2, c[1]}, {c[0], c[1] + s2}, {c[0] - s2, c[1]}};
             hol__poly(p, (const float(*)[2])dq2, 4, objc);
-        } else if (!hol_nav_direction(&f->user, f->objectives[o], &ang, &dist)) {
+        } else if (!(f->flags & HOL_RENDER_NO_ARROW) &&
+                   !hol_nav_direction(&f->user, f->objectives[o], &ang, &dist)) {
             /* angle counter-clockwise from room north: map direction (-sin, cos) */
             float ux = -(float)sin(ang), uy = -(float)cos(ang); /* pixel y down */
             float tipx = cx + ux * (rad + 0.10f * rad), tipy = cy + uy * (rad + 0.10f * rad);
@@ -359,12 +362,12 @@ void hol_hud_build_text(hol_mesh *out, const hol_frame_desc *f, int w, int h)
 {
     hol__px p = {out, w, h, 0};
     float sc = (float)(h >= 160 ? h / 160 : 1);
-    char lines[6][96];
+    char lines[HOL_RENDER_HUD_LINES][96];
     char addr[HOL_TILE_ADDR_MAX];
     int nl = 0;
-    if (f->hud_lines) {
-        for (int i = 0; i < f->nhud_lines && i < 6; i++)
-            snprintf(lines[nl++], sizeof lines[0], "%.60s", f->hud_lines[i]);
+    if (f->nhud_lines > 0) {
+        for (int i = 0; i < f->nhud_lines && i < HOL_RENDER_HUD_LINES; i++)
+            snprintf(lines[nl++], sizeof lines[0], "%.60s", f->hud_lines[i] ? f->hud_lines[i] : "");
     } else {
         if (f->objective_text)
             snprintf(lines[nl++], sizeof lines[0], "%.40s", f->objective_text);

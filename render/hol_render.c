@@ -32,7 +32,7 @@
 typedef struct hol__slot {
     int used;
     hol_tile tile;
-    int bare, pole, have; /* have: content came from the world */
+    int bare, pole, kind, have; /* have: content came from the world */
     hol_tile_content content;
     uint64_t last_frame;
     uint32_t nidx;
@@ -358,7 +358,7 @@ static void hol__upload_scratch(hol_render *r, uint32_t vbase, uint32_t ibase)
 
 /* The resident mesh of tile t: reused while the tile's content is the
  * same, else (re)built into the least recently used slot. */
-static int hol__tile_range(hol_render *r, hol_tile t, int bare, int pole,
+static int hol__tile_range(hol_render *r, hol_tile t, int bare, int pole, int kind,
                            uint32_t *first, uint32_t *count)
 {
     hol_tile_content c;
@@ -372,7 +372,7 @@ static int hol__tile_range(hol_render *r, hol_tile t, int bare, int pole,
                 free_slot = i;
             continue;
         }
-        if (hol_tile_eq(sl->tile, t) && sl->bare == bare && sl->pole == pole &&
+        if (hol_tile_eq(sl->tile, t) && sl->bare == bare && sl->pole == pole && sl->kind == kind &&
             sl->have == have && (!have || !memcmp(&sl->content, &c, sizeof c))) {
             sl->last_frame = r->frame;
             *first = HOL__ROOM_I + (uint32_t)i * HOL__SLOT_I;
@@ -389,7 +389,7 @@ static int hol__tile_range(hol_render *r, hol_tile t, int bare, int pole,
     hol_mesh_clear(&r->scratch);
     r->scratch.cap_v = HOL__SLOT_V;
     r->scratch.cap_i = HOL__SLOT_I;
-    hol_scene_tile(r->scene, &r->scratch, t, r->desc.world, bare, pole);
+    hol_scene_tile(r->scene, &r->scratch, t, r->desc.world, bare, pole, kind);
     r->scratch.cap_v = HOL__ROOM_V;
     r->scratch.cap_i = HOL__ROOM_I;
     if (r->scratch.overflow)
@@ -402,6 +402,7 @@ static int hol__tile_range(hol_render *r, hol_tile t, int bare, int pole,
     sl->tile = t;
     sl->bare = bare;
     sl->pole = pole;
+    sl->kind = kind;
     sl->have = have;
     sl->content = c;
     sl->last_frame = r->frame;
@@ -494,12 +495,19 @@ static hol_err hol__build(hol_render *r, const hol_frame_desc *f)
             continue;
         uint32_t first, count;
         int pole = -1;
-        for (int o = 0; o < f->nobjectives && o < HOL_RENDER_MAX_OBJECTIVES; o++)
+        for (int o = 0; o < f->nobjectives && o < HOL_RENDER_MAX_OBJECTIVES &&
+                        !(f->flags & HOL_RENDER_NO_POLES); o++)
             if (hol_tile_eq(f->objectives[o], br->state.tile)) {
                 pole = o;
                 break;
             }
-        if (!hol__tile_range(r, br->state.tile, bare, pole, &first, &count))
+        int kind = 0;
+        for (int o = 0; o < f->nobjects && o < HOL_RENDER_MAX_OBJECTIVES; o++)
+            if (hol_tile_eq(f->object_tiles[o], br->state.tile)) {
+                kind = f->object_kinds[o];
+                break;
+            }
+        if (!hol__tile_range(r, br->state.tile, bare, pole, kind, &first, &count))
             return HOL_ENOMEM;
         hol__item *it = hol__push(r, HOL__PASS_TILE, first, count);
         if (!it)

@@ -66,28 +66,47 @@ enum {
     HOL_RENDER_IDS = 4,       /* ID mode (see above) */
     HOL_RENDER_NO_HUD = 8,
     HOL_RENDER_MINIMAP = 16,  /* draw the minimap and HUD text */
-    HOL_RENDER_MINIMAP_HAND = 32 /* with MINIMAP: the map on a quad in the
-                                    hand (hand_* below), the text on screen */
+    HOL_RENDER_MINIMAP_HAND = 32, /* with MINIMAP: the map on a quad in the
+                                     hand (hand_* below), the text on screen */
+    HOL_RENDER_NO_POLES = 64,     /* no guide poles over the objectives */
+    HOL_RENDER_NO_HOT_COLD = 128, /* minimap tiles grey, not hot-cold */
+    HOL_RENDER_NO_ARROW = 256     /* no rim arrows towards far objectives */
 };
 
 #define HOL_RENDER_MAX_OBJECTIVES 8
+#define HOL_RENDER_HUD_LINES 6
+
+/* Game object kinds (hol_frame_desc.object_kinds). */
+enum {
+    HOL_RENDER_OBJ_NONE = 0,
+    HOL_RENDER_OBJ_FLAG,
+    HOL_RENDER_OBJ_KEY,
+    HOL_RENDER_OBJ_CHEST,      /* closed */
+    HOL_RENDER_OBJ_CHEST_OPEN  /* every key held */
+};
 
 typedef struct hol_frame_desc {
     hol_room user;
     hol_camera cam;
     int flags;
     /* HUD / minimap (optional) */
-    int nobjectives;
+    int nobjectives;   /* minimap markers and guide poles */
     hol_tile objectives[HOL_RENDER_MAX_OBJECTIVES];
+    /* Game objects to draw (the app says which; the world's reserved game
+     * objects are not drawn from its content): a tile and a HOL_RENDER_OBJ_*
+     * kind each, at the tile's centre. */
+    int nobjects;
+    hol_tile object_tiles[HOL_RENDER_MAX_OBJECTIVES];
+    uint8_t object_kinds[HOL_RENDER_MAX_OBJECTIVES];
     const char *objective_text; /* e.g. "find the key"; NULL: none */
     int steps_taken;
     double time_s;
     const uint8_t *path; /* shortest-path overlay: room steps from the user */
     int npath;
     /* The HUD text as the app filled it at its step (hol_app_hud.lines):
-     * when set, these lines (at most 6) are drawn as given instead of the
+     * when nhud_lines > 0, these lines are drawn as given instead of the
      * objective/steps/tile/time lines composed from the fields above. */
-    const char *const *hud_lines;
+    const char *hud_lines[HOL_RENDER_HUD_LINES];
     int nhud_lines;
     /* The minimap in the hand (HOL_RENDER_MINIMAP_HAND): a square of side
      * hand_size metres (0: 0.25) centred at hand_pos (room coordinates),

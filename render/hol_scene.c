@@ -14,7 +14,7 @@
 enum {
     HOL__T_PINE, HOL__T_BIRCH, HOL__T_OAK, HOL__T_MAPLE, /* = hol_tree_kind */
     HOL__T_TUFT, HOL__T_FLOWER, HOL__T_ROCK, HOL__T_MUSHROOM, HOL__T_LOG,
-    HOL__T_FLAG, HOL__T_KEY, HOL__T_CHEST, HOL__T_POLE, HOL__T_COUNT
+    HOL__T_FLAG, HOL__T_KEY, HOL__T_CHEST, HOL__T_CHEST_OPEN, HOL__T_POLE, HOL__T_COUNT
 };
 
 struct hol_scene {
@@ -107,6 +107,14 @@ static void hol__build_templates(hol_scene *s)
                  (const uint8_t[3]){150, 95, 45});
     hol_mesh_box(m, (const float[3]){-0.04f, 0.22f, -0.19f}, (const float[3]){0.04f, 0.32f, -0.17f},
                  (const uint8_t[3]){240, 200, 40});
+    /* the open chest: the lid stands up at the back (-z), gold inside */
+    m = &s->tpl[HOL__T_CHEST_OPEN];
+    hol_mesh_box(m, (const float[3]){-0.25f, 0, -0.17f}, (const float[3]){0.25f, 0.28f, 0.17f},
+                 (const uint8_t[3]){130, 80, 40});
+    hol_mesh_box(m, (const float[3]){-0.26f, 0.28f, -0.28f}, (const float[3]){0.26f, 0.66f, -0.18f},
+                 (const uint8_t[3]){150, 95, 45});
+    hol_mesh_blob(m, (const float[3]){0, 0.29f, 0}, 0.21f, 0.08f, 0.14f,
+                  (const uint8_t[3]){250, 210, 50});
     m = &s->tpl[HOL__T_POLE]; /* white: tinted per objective */
     hol_mesh_frustum(m, 6, 0.035f, 0.0f, 0.035f, 2.6f, hol__white);
     hol_mesh_blob(m, (const float[3]){0, 2.65f, 0}, 0.09f, 0.09f, 0.09f, hol__white);
@@ -339,7 +347,7 @@ static void hol__creek_arm(hol_mesh *out, int d, const uint8_t rgb[3])
 }
 
 void hol_scene_tile(const hol_scene *s, hol_mesh *out, hol_tile t,
-                    struct hol_world *world, int bare, int pole)
+                    struct hol_world *world, int bare, int pole, int kind)
 {
     uint64_t h = hol_tile_hash(t);
     hol_tile_content c;
@@ -430,17 +438,14 @@ void hol_scene_tile(const hol_scene *s, hol_mesh *out, hol_tile t,
             hol_mesh_append(out, &s->tpl[HOL__T_MUSHROOM], q);
         }
         break;
-    case HOL_OBJ_FLAG:
-        hol_mesh_append(out, &s->tpl[HOL__T_FLAG], p);
+    default: /* game objects: drawn below, as the app says */
         break;
-    case HOL_OBJ_KEY:
-        hol_mesh_append(out, &s->tpl[HOL__T_KEY], p);
-        break;
-    case HOL_OBJ_CHEST:
-        hol_mesh_append(out, &s->tpl[HOL__T_CHEST], p);
-        break;
-    default:
-        break;
+    }
+    static const int game_tpl[] = {-1, HOL__T_FLAG, HOL__T_KEY, HOL__T_CHEST, HOL__T_CHEST_OPEN};
+    if (kind > 0 && kind < (int)(sizeof game_tpl / sizeof game_tpl[0])) {
+        /* the key is small: shown half as large again */
+        hol_place g = {0, 0, 0, 0, kind == HOL_RENDER_OBJ_KEY ? 1.5f : 1};
+        hol_mesh_append(out, &s->tpl[game_tpl[kind]], g);
     }
     if (pole >= 0) {
         static const uint8_t pc[4][3] = {

@@ -19,6 +19,7 @@
 #include "../core/hol_alloc.h"
 #include "../core/hol_tile.h"
 #include "hol_mesh.h"
+#include "hol_render.h"
 #include "hol_view.h"
 
 struct hol_world;
@@ -36,9 +37,11 @@ void hol_scene_room(const hol_scene *s, hol_mesh *out, const hol_room *user,
                     struct hol_world *world);
 
 /* The mesh of tile t in its own frame; bare: the ground only. pole >= 0
- * adds a tall guide pole of colour pole (objective index). */
+ * adds a tall guide pole of colour pole (objective index). Game objects
+ * are drawn as the app says, not from the world's content: kind is a
+ * HOL_RENDER_OBJ_* (0: none) drawn at the tile's centre. */
 void hol_scene_tile(const hol_scene *s, hol_mesh *out, hol_tile t,
-                    struct hol_world *world, int bare, int pole);
+                    struct hol_world *world, int bare, int pole, int kind);
 
 /* Sky / fog colour (linear 0..1). */
 void hol_scene_sky(float out_rgb[3]);

@@ -34,11 +34,12 @@
 #include "../platform/image/hol_png_file.h"
 #include "../render/hol_png.h"
 #include "../render/hol_render.h"
+#include "golden_compare.h"
 #include "render_fixture.h"
 
 #define W 160
 #define H 120
-#define TOL 8
+#define TOL GOLDEN_TOL
 
 typedef struct golden_view {
     const char *name, *walk;
@@ -125,64 +126,17 @@ static void render_view(const golden_view *g, uint8_t *rgba)
     render_with(fx.rnd, g, rgba);
 }
 
-/* Compare img with the golden NAME; on failure write NAME+tag.actual.png
- * and NAME+tag.diff.png and return 1. */
+/* Compare img with the golden NAME (tests/golden_compare.h). */
 static int compare(const char *name, const uint8_t *img, const char *tag)
 {
-    static uint8_t diff[W * H * 4];
-    char path[600], apath[600], dpath[600];
-    snprintf(path, sizeof path, "tests/golden/%s.png", name);
-    uint8_t *ref = NULL;
-    int rw = 0, rh = 0;
-    hol_err err = hol_png_read_file(path, &ref, &rw, &rh);
-    if (err) {
-        printf("golden: %s: cannot read (%s); run with HOL_GOLDEN_UPDATE=1 "
-               "and review\n", path, hol_err_str(err));
-        return 1;
-    }
-    if (rw != W || rh != H) {
-        printf("golden: %s is %dx%d, expected %dx%d\n", path, rw, rh, W, H);
-        free(ref);
-        return 1;
-    }
-    int bad = 0, worst = 0;
-    for (int p = 0; p < W * H; p++) {
-        int d = 0;
-        for (int k = 0; k < 3; k++) {
-            int e = abs((int)img[4 * p + k] - (int)ref[4 * p + k]);
-            d = e > d ? e : d;
-        }
-        worst = d > worst ? d : worst;
-        uint8_t *o = diff + 4 * p;
-        if (d > TOL) {
-            bad++;
-            o[0] = 255;
-            o[1] = o[2] = 0;
-        } else {
-            o[0] = ref[4 * p] / 3;
-            o[1] = ref[4 * p + 1] / 3;
-            o[2] = ref[4 * p + 2] / 3;
-        }
-        o[3] = 255;
-    }
-    free(ref);
-    if (bad * 200 <= W * H)
-        return 0;
-    mkdir(out_dir, 0777);
-    snprintf(apath, sizeof apath, "%s/%s%s.actual.png", out_dir, name, tag);
-    snprintf(dpath, sizeof dpath, "%s/%s%s.diff.png", out_dir, name, tag);
-    hol_png_write_file(apath, img, W, H, 0);
-    hol_png_write_file(dpath, diff, W, H, 0);
-    printf("golden: %s%s: %d pixels differ (max channel diff %d); see %s and %s\n", name,
-           tag, bad, worst, apath, dpath);
-    return 1;
+    return golden_compare(name, img, W, H, tag, out_dir);
 }
 
 static void test_goldens(void **state)
 {
     (void)state;
     static uint8_t img[W * H * 4];
-    int update = getenv("HOL_GOLDEN_UPDATE") && getenv("HOL_GOLDEN_UPDATE")[0] == '1';
+    int update = golden_update_requested();
     int failed = 0;
     for (size_t i = 0; i < sizeof views / sizeof views[0]; i++) {
         const golden_view *g = &views[i];
@@ -241,7 +195,7 @@ static void test_comparison_detects_change(void **state)
 static void test_egl_gles_matches_goldens(void **state)
 {
     (void)state;
-    if (getenv("HOL_GOLDEN_UPDATE") && getenv("HOL_GOLDEN_UPDATE")[0] == '1')
+    if (golden_update_requested())
         skip(); /* goldens are written from OSMesa; compare on the next run */
     hol_egl egl;
     char msg[256];

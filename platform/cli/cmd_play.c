@@ -12,6 +12,7 @@
 #include "../../core/hol_input_io.h"
 #include "../../core/hol_tile.h"
 #include "../../core/hol_world.h"
+#include "../../render/hol_app_frame.h"
 #include "../../render/hol_render.h"
 #include "../egl/hol_egl.h"
 #include "../egl/hol_egl_x11.h"
@@ -464,7 +465,7 @@ int cli_cmd_play(int argc, char **argv)
         if (rc > 0 || !open)
             break;
         hol_frame_desc fd;
-        session_frame_desc(hol_app_get_view(s.app), &fd, xw.w, xw.h);
+        hol_app_frame_desc(hol_app_get_view(s.app), -1, xw.w, xw.h, 0, &fd);
         err = hol_render_frame(r, &fd, NULL);
         if (err) {
             cli_error(cmd, 0, "rendering failed: %s", hol_err_str(err));
@@ -632,7 +633,7 @@ int cli_cmd_replay(int argc, char **argv)
             want |= pngs[k] == frame;
         if (want) {
             hol_frame_desc fd;
-            session_frame_desc(hol_app_get_view(s.app), &fd, w, h);
+            hol_app_frame_desc(hol_app_get_view(s.app), -1, w, h, 0, &fd);
             hol_err e = hol_render_frame(r, &fd, NULL);
             char path[4096];
             snprintf(path, sizeof path, "%s/frame-%06ld.png", out_dir, frame);

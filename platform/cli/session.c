@@ -410,49 +410,6 @@ int session_close(session *s)
     return status;
 }
 
-void session_frame_desc(const hol_app_view *v, hol_frame_desc *fd, int w, int h)
-{
-    memset(fd, 0, sizeof *fd);
-    /* the HUD text the app filled at its step */
-    static const char *lines[HOL_APP_HUD_LINES];
-    for (int i = 0; i < v->hud.nlines; i++)
-        lines[i] = v->hud.lines[i];
-    fd->hud_lines = lines;
-    fd->nhud_lines = v->hud.nlines;
-    fd->user = v->user;
-    memcpy(fd->cam.eye, v->head, sizeof fd->cam.eye);
-    fd->cam.yaw_deg = v->yaw_deg;
-    fd->cam.pitch_deg = v->pitch_deg;
-    fd->cam.fovy_deg = 90;
-    fd->cam.width = w;
-    fd->cam.height = h;
-    fd->flags = v->map.place == HOL_MINIMAP_OFF ? 0 : HOL_RENDER_MINIMAP;
-    if (v->map.place == HOL_MINIMAP_HAND) {
-        /* no hands on the desktop: the map held 40 cm ahead, 35 cm below
-         * the eye, tilted back 40 degrees to face it */
-        double y = v->yaw_deg * 3.14159265358979323846 / 180, a = -40 * 3.14159265358979323846 / 180;
-        fd->hand_pos[0] = v->head[0] - 0.4 * sin(y);
-        fd->hand_pos[1] = v->head[1] - 0.35;
-        fd->hand_pos[2] = v->head[2] - 0.4 * cos(y);
-        double sy = sin(y / 2), cy = cos(y / 2), sa = sin(a / 2), ca = cos(a / 2);
-        fd->hand_orient[0] = cy * sa; /* q_yaw * q_tilt */
-        fd->hand_orient[1] = sy * ca;
-        fd->hand_orient[2] = -sy * sa;
-        fd->hand_orient[3] = cy * ca;
-        fd->hand_size = 0.25;
-        fd->flags |= HOL_RENDER_MINIMAP_HAND;
-    }
-    int n = v->map.nobjectives < HOL_RENDER_MAX_OBJECTIVES ? v->map.nobjectives
-                                                           : HOL_RENDER_MAX_OBJECTIVES;
-    fd->nobjectives = n;
-    memcpy(fd->objectives, v->map.objectives, (size_t)n * sizeof fd->objectives[0]);
-    fd->objective_text = v->hud.status[0] ? v->hud.status : v->hud.objective;
-    fd->steps_taken = v->hud.steps;
-    fd->time_s = v->hud.elapsed_s;
-    fd->path = v->map.npath ? v->map.path : NULL;
-    fd->npath = v->map.npath;
-}
-
 long session_read_header(char *const *lines, const size_t *lens, long nlines,
                          session_level *levels, int *nlevels, char *err, size_t err_cap)
 {

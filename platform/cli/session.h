@@ -92,8 +92,6 @@ int session_step(session *s, const hol_input *in);
 /* Write the open level's logs (end "open"), commit the recording, free. */
 int session_close(session *s);
 
-/* The frame desc of the centre eye (the window's view) from the app's view. */
-void session_frame_desc(const hol_app_view *v, hol_frame_desc *fd, int w, int h);
 
 /* Read a recording's header (levels) from text lines; returns the line
  * number where the input lines begin (1-based), or 0 with err set. */

@@ -1,0 +1,70 @@
+/* hol_app_frame.c - an app view as one eye's frame description. */
+#include "hol_app_frame.h"
+
+#include <math.h>
+#include <string.h>
+
+#define HOL__PI 3.14159265358979323846
+
+void hol_app_frame_desc(const hol_app_view *v, int eye, int w, int h, double fovy_deg,
+                        hol_frame_desc *out)
+{
+    hol_frame_desc *fd = out;
+    memset(fd, 0, sizeof *fd);
+    /* the HUD text the app filled at its step */
+    int nl = v->hud.nlines < HOL_RENDER_HUD_LINES ? v->hud.nlines : HOL_RENDER_HUD_LINES;
+    for (int i = 0; i < nl; i++)
+        fd->hud_lines[i] = v->hud.lines[i];
+    fd->nhud_lines = nl;
+    if (eye == 0 || eye == 1) {
+        fd->user = v->eye_user[eye];
+        memcpy(fd->cam.eye, v->eye[eye], sizeof fd->cam.eye);
+    } else {
+        fd->user = v->user;
+        memcpy(fd->cam.eye, v->head, sizeof fd->cam.eye);
+    }
+    fd->cam.yaw_deg = v->yaw_deg;
+    fd->cam.pitch_deg = v->pitch_deg;
+    fd->cam.fovy_deg = fovy_deg > 0 ? fovy_deg : 90;
+    fd->cam.width = w;
+    fd->cam.height = h;
+    fd->flags = v->map.place == HOL_MINIMAP_OFF ? 0 : HOL_RENDER_MINIMAP;
+    if (!(v->map.cues & HOL_CUE_POLES))
+        fd->flags |= HOL_RENDER_NO_POLES;
+    if (!(v->map.cues & HOL_CUE_HOT_COLD))
+        fd->flags |= HOL_RENDER_NO_HOT_COLD;
+    if (!(v->map.cues & HOL_CUE_ARROW))
+        fd->flags |= HOL_RENDER_NO_ARROW;
+    if (v->map.place == HOL_MINIMAP_HAND) {
+        double y = v->yaw_deg * HOL__PI / 180, a = -40 * HOL__PI / 180;
+        fd->hand_pos[0] = fd->cam.eye[0] - 0.4 * sin(y);
+        fd->hand_pos[1] = fd->cam.eye[1] - 0.35;
+        fd->hand_pos[2] = fd->cam.eye[2] - 0.4 * cos(y);
+        double sy = sin(y / 2), cy = cos(y / 2), sa = sin(a / 2), ca = cos(a / 2);
+        fd->hand_orient[0] = cy * sa; /* q_yaw * q_tilt */
+        fd->hand_orient[1] = sy * ca;
+        fd->hand_orient[2] = -sy * sa;
+        fd->hand_orient[3] = cy * ca;
+        fd->hand_size = 0.25;
+        fd->flags |= HOL_RENDER_MINIMAP_HAND;
+    }
+    int n = v->map.nobjectives < HOL_RENDER_MAX_OBJECTIVES ? v->map.nobjectives
+                                                           : HOL_RENDER_MAX_OBJECTIVES;
+    fd->nobjectives = n;
+    memcpy(fd->objectives, v->map.objectives, (size_t)n * sizeof fd->objectives[0]);
+    int no = v->nobjects < HOL_RENDER_MAX_OBJECTIVES ? v->nobjects : HOL_RENDER_MAX_OBJECTIVES;
+    fd->nobjects = no;
+    for (int i = 0; i < no; i++) {
+        static const uint8_t kinds[] = {HOL_RENDER_OBJ_NONE, HOL_RENDER_OBJ_FLAG,
+                                        HOL_RENDER_OBJ_KEY, HOL_RENDER_OBJ_CHEST,
+                                        HOL_RENDER_OBJ_CHEST_OPEN};
+        int k = v->objects[i].kind;
+        fd->object_tiles[i] = v->objects[i].tile;
+        fd->object_kinds[i] = k >= 0 && k < (int)sizeof kinds ? kinds[k] : 0;
+    }
+    fd->objective_text = v->hud.status[0] ? v->hud.status : v->hud.objective;
+    fd->steps_taken = v->hud.steps;
+    fd->time_s = v->hud.elapsed_s;
+    fd->path = v->map.npath ? v->map.path : NULL;
+    fd->npath = v->map.npath;
+}

@@ -1,0 +1,30 @@
+/* hol_app_frame.h - what the app step's view (core/hol_app.h) asks the
+ * renderer to draw, as one eye's frame description.
+ *
+ * Contract
+ * - Pure translation, no GL and no state: every platform (desktop window,
+ *   replay, headset) calls it after hol_app_step, so they all draw the
+ *   same things from the same view. The renderer decides nothing: which
+ *   objectives have markers and poles, whether the chest is open, the HUD
+ *   lines and the minimap placement all come from the view.
+ * - eye -1: the head (a single view, as on the desktop); 0 or 1: the left
+ *   or right eye (hol_app_view.eye_user and .eye), looking along the head.
+ * - The returned description points into v (the HUD lines): keep v alive
+ *   and unchanged until the frame is drawn.
+ * - Minimap in the hand: on the desktop there are no hands, so the map is
+ *   held 40 cm ahead of and 35 cm below the eye, tilted back 40 degrees to
+ *   face it. A platform with tracked hands overwrites hand_pos and
+ *   hand_orient with the hand's pose.
+ */
+#ifndef HOL_APP_FRAME_H
+#define HOL_APP_FRAME_H
+
+#include "../core/hol_app.h"
+#include "hol_render.h"
+
+/* Fill *out for one eye of w x h pixels, vertical field of view fovy_deg
+ * (0: 90). */
+void hol_app_frame_desc(const hol_app_view *v, int eye, int w, int h, double fovy_deg,
+                        hol_frame_desc *out);
+
+#endif

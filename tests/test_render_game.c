@@ -1,0 +1,237 @@
+/* test_render_game.c - the game as players see it, against reviewed golden
+ * PNGs: the flag, a key, the chest closed and open, the level-end screen
+ * and a tutorial prompt.
+ *
+ * Each picture goes the whole way a platform goes: a level started in the
+ * app (core/hol_app.h), input records stepped, the view turned into a
+ * frame description (render/hol_app_frame.h) and drawn by the renderer
+ * (OSMesa, 320 x 240). So a golden also checks that the app puts the
+ * objects in the world, opens the chest, hides collected keys and writes
+ * the HUD lines. Compared as in test_render_golden.c
+ * (tests/golden_compare.h); HOL_GOLDEN_UPDATE=1 writes them for review.
+ */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "../core/hol_app.h"
+#include "../core/hol_tile.h"
+#include "../platform/osmesa/hol_osmesa.h"
+#include "../render/hol_app_frame.h"
+#include "../render/hol_render.h"
+#include "golden_compare.h"
+
+#define W 320
+#define H 240
+
+static hol_osmesa gl;
+static hol_app *app;
+static hol_render *rnd;
+static char out_dir[512] = "golden-out";
+static double now;
+
+static int setup(void **state)
+{
+    (void)state;
+    char msg[256];
+    if (hol_osmesa_create(&gl, W, H, msg, sizeof msg)) {
+        fprintf(stderr, "%s\n", msg);
+        return -1;
+    }
+    hol_app_desc ad;
+    memset(&ad, 0, sizeof ad);
+    if (hol_app_create(&ad, &app))
+        return -1;
+    hol_render_desc rd;
+    memset(&rd, 0, sizeof rd);
+    rd.getproc = hol_osmesa_getproc;
+    rd.world = hol_app_world(app);
+    return hol_render_create(&rd, &rnd) ? -1 : 0;
+}
+
+static int teardown(void **state)
+{
+    (void)state;
+    hol_render_destroy(rnd);
+    hol_app_destroy(app);
+    hol_osmesa_destroy(&gl);
+    return 0;
+}
+
+static hol_tile tile(const char *addr)
+{
+    hol_tile t;
+    assert_int_equal(hol_tile_resolve(addr, -1, &t), HOL_OK);
+    return t;
+}
+
+static void start(const hol_app_level *L)
+{
+    assert_int_equal(hol_app_start_level(app, L), HOL_OK);
+    hol_render_set_world(rnd, hol_app_world(app));
+
+}
+
+/* Step the app for `frames` frames of 1/60 s with pancake axes: move
+ * (right, forward) and turn (left, up). */
+static void step(int frames, float right, float fwd, float turn_left, float look_up)
+{
+    for (int i = 0; i < frames; i++) {
+        hol_input in;
+        memset(&in, 0, sizeof in);
+        in.time_s = now;
+        in.flags = HOL_INPUT_FOCUSED;
+        in.move[0] = right;
+        in.move[1] = fwd;
+        in.turn[0] = turn_left;
+        in.turn[1] = look_up;
+        assert_int_equal(hol_app_step(app, &in), HOL_OK);
+        now += 1.0 / 60;
+    }
+}
+
+/* Draw the app's view as the desktop does (the head's view), without the
+ * HUD when hud is 0, and compare it with golden NAME. */
+static int shot(const char *name, int hud, uint8_t *img)
+{
+    hol_frame_desc fd;
+    hol_app_frame_desc(hol_app_get_view(app), -1, W, H, 0, &fd);
+    if (!hud)
+        fd.flags |= HOL_RENDER_NO_HUD;
+    assert_int_equal(hol_render_frame(rnd, &fd, NULL), HOL_OK);
+    hol_render_read_rgba(rnd, W, H, img);
+    if (golden_update_requested()) {
+        char path[600];
+        snprintf(path, sizeof path, "tests/golden/%s.png", name);
+        assert_int_equal(hol_png_write_file(path, img, W, H, 0), HOL_OK);
+        printf("golden: wrote %s (review it before committing)\n", path);
+        return 0;
+    }
+    return golden_compare(name, img, W, H, "", out_dir);
+}
+
+static hol_app_level level(int mode)
+{
+    hol_app_level L;
+    memset(&L, 0, sizeof L);
+    L.mode = mode;
+    L.seed = 3;
+    L.cues = HOL_CUE_ALL;
+    L.minimap = HOL_MINIMAP_HUD;
+    return L;
+}
+
+/* The flag one tile north of the start, seen from the middle cell. */
+static void test_flag(void **state)
+{
+    (void)state;
+    static uint8_t img[W * H * 4];
+    hol_app_level L = level(HOL_APP_FLAG);
+    L.flag = tile("N");
+    start(&L);
+    step(1, 0, 0, 0, 0);
+    const hol_app_view *v = hol_app_get_view(app);
+    assert_int_equal(v->nobjects, 1);
+    assert_int_equal(v->objects[0].kind, HOL_APP_OBJ_FLAG);
+    assert_int_equal(shot("game_flag", 0, img), 0);
+}
+
+/* Two keys (north and east) and the chest (south): looking north shows a
+ * key; turned round, the closed chest. */
+static void test_key_and_chest(void **state)
+{
+    (void)state;
+    static uint8_t img[W * H * 4];
+    hol_app_level L = level(HOL_APP_KEYS);
+    L.nkeys = 2;
+    L.keys[0] = tile("N");
+    L.keys[1] = tile("E");
+    L.chest = tile("S");
+    start(&L);
+    step(1, 0, 0, 0, 0);
+    int failed = shot("game_key", 0, img);
+    step(90, 0, 0, 1, 0); /* 120 degrees/s for 1.5 s: facing south */
+    const hol_app_view *v = hol_app_get_view(app);
+    assert_true(v->yaw_deg > 179 && v->yaw_deg < 181);
+    assert_int_equal(v->objects[v->nobjects - 1].kind, HOL_APP_OBJ_CHEST);
+    failed += shot("game_chest", 0, img);
+    assert_int_equal(failed, 0);
+}
+
+/* One key east, the chest north: step east onto the key and back; the key
+ * is gone and the chest, looked at from the middle cell, stands open. */
+static void test_chest_open(void **state)
+{
+    (void)state;
+    static uint8_t img[W * H * 4];
+    hol_app_level L = level(HOL_APP_KEYS);
+    L.nkeys = 1;
+    L.keys[0] = tile("E");
+    L.chest = tile("N");
+    start(&L);
+    step(1, 0, 0, 0, 0);
+    const hol_app_view *v = hol_app_get_view(app);
+    assert_int_equal(v->nobjects, 2);
+    step(45, 1, 0, 0, 0);  /* 1.4 m/s: 1.05 m east, into the key's tile */
+    assert_int_equal(v->hud.keys_held, 1);
+    step(45, -1, 0, 0, 0); /* and back into the middle cell */
+    assert_int_equal(v->user.col, 1);
+    assert_int_equal(v->nobjects, 1);
+    assert_int_equal(v->objects[0].kind, HOL_APP_OBJ_CHEST_OPEN);
+    assert_int_equal(shot("game_chest_open", 0, img), 0);
+}
+
+/* The level-end screen: walk north onto the flag; the HUD says done, the
+ * steps against the best and the time, and what confirm does. */
+static void test_level_end(void **state)
+{
+    (void)state;
+    static uint8_t img[W * H * 4];
+    hol_app_level L = level(HOL_APP_FLAG);
+    L.flag = tile("N");
+    start(&L);
+    step(1, 0, 0, 0, 0);
+    step(40, 0, 1, 0, 0); /* 0.93 m north: across z = 1 */
+    const hol_app_view *v = hol_app_get_view(app);
+    assert_int_equal(v->state, HOL_APP_DONE);
+    assert_int_equal(v->hud.steps, 1);
+    assert_int_equal(shot("game_level_end", 1, img), 0);
+}
+
+/* The tutorial's first prompt with its marker one tile ahead. */
+static void test_tutorial_prompt(void **state)
+{
+    (void)state;
+    static uint8_t img[W * H * 4];
+    hol_app_level L = level(HOL_APP_TUTORIAL);
+    start(&L);
+    step(1, 0, 0, 0, 0);
+    const hol_app_view *v = hol_app_get_view(app);
+    assert_int_equal(v->hud.stage, 0);
+    assert_int_equal(shot("game_tutorial_prompt", 1, img), 0);
+}
+
+int main(int argc, char **argv)
+{
+    (void)argc;
+    const char *env = getenv("GOLDEN_OUT");
+    if (env && *env)
+        snprintf(out_dir, sizeof out_dir, "%s", env);
+    else if (argv[0] && strrchr(argv[0], '/'))
+        snprintf(out_dir, sizeof out_dir, "%.*s/golden-out",
+                 (int)(strrchr(argv[0], '/') - argv[0]), argv[0]);
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_flag),
+        cmocka_unit_test(test_key_and_chest),
+        cmocka_unit_test(test_chest_open),
+        cmocka_unit_test(test_level_end),
+        cmocka_unit_test(test_tutorial_prompt),
+    };
+    return cmocka_run_group_tests(tests, setup, teardown);
+}
