@@ -31,7 +31,7 @@ CLI_SRC  := $(wildcard platform/cli/*.c)
 PLAT_SRC := $(wildcard platform/file/*.c platform/image/*.c)
 # Gamepads: the pure descriptor parser and report decoder (tests, fuzz,
 # benches link these) and the hidapi device layer (the tool only).
-HID_SRC  := platform/hid/hol_hid_desc.c platform/hid/hol_hid_pad.c
+HID_SRC  := platform/hid/hol_hid_desc.c platform/hid/hol_hid_pad.c platform/hid/hol_hid_link.c
 HID_DEV_SRC := platform/hid/hol_hid_dev.c
 # hidapi backend: hidraw (default, Linux hidraw nodes) or `make HID=libusb`
 # (libusb, where hidraw is not available; detaches the kernel driver).
@@ -101,6 +101,11 @@ $(RENDER_TEST_BIN): $(BUILD)/tests/%: tests/%.c $(wildcard tests/*.h) $(PLAT_OBJ
 $(BUILD)/tests/test_hid: tests/test_hid.c tests/hid_samples.h $(HID_SRC) $(CORE_LIB)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) -o $@ $< $(HID_SRC) $(CORE_LIB) $(LDFLAGS) -lcmocka $(LDLIBS)
+
+# The device layer against a scripted hidapi (tests/fake_hidapi): no device here.
+$(BUILD)/tests/test_hid_dev: tests/test_hid_dev.c tests/hid_samples.h tests/fake_hidapi/hidapi/hidapi.h $(HID_SRC) $(HID_DEV_SRC) $(CORE_LIB)
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) -Itests/fake_hidapi -o $@ $< $(HID_SRC) $(HID_DEV_SRC) $(CORE_LIB) $(LDFLAGS) -lcmocka $(LDLIBS)
 
 $(BUILD)/tests/%: tests/%.c $(wildcard tests/*.h) $(CORE_LIB)
 	@mkdir -p $(dir $@)

@@ -17,6 +17,8 @@
 #include "../egl/hol_egl.h"
 #include "../egl/hol_egl_x11.h"
 #include "../file/hol_file.h"
+#include "../hid/hol_hid_dev.h"
+#include "../hid/hol_hid_link.h"
 #include "../image/hol_png_file.h"
 #include "../osmesa/hol_osmesa.h"
 #include "cli.h"
@@ -25,7 +27,7 @@
 static const char *const play_usage =
     "usage: holonomy play [LEVEL | --mode tutorial|flag|keys|explore] [--seed S]\n"
     "                     [--log DIR] [--record FILE] [--frames N] [--input FILE]\n"
-    "                     [--size WxH]\n"
+    "                     [--size WxH] [--no-gamepad]\n"
     "\n"
     "Play in a desktop window (EGL on X11; also under Xvfb). LEVEL is a level\n"
     "file (SPEC section 5); --mode plays a level of that mode made from the seed\n"
@@ -39,6 +41,11 @@ static const char *const play_usage =
     "  R                restart the level      M            minimap: HUD, hand, off\n"
     "  Enter/Space      next level (end screen) Esc/Q        quit\n"
     "\n"
+    "A game controller (the first found; plugged in later, it joins) plays too:\n"
+    "left stick walks, right stick turns and looks, south button confirms, east\n"
+    "backs, north recentres, west/select toggle the minimap, start/mode open the\n"
+    "menu. Unplugged mid-game, the game pauses until it is back or a key is used.\n"
+    "\n"
     "  --mode M        tutorial (four lessons), flag, keys or explore\n"
     "  --seed S        seed of --mode's level or the campaign's first (decimal or\n"
     "                  0x hex; default 1)\n"
@@ -49,6 +56,7 @@ static const char *const play_usage =
     "  --input FILE    drive the game from recorded input lines (a recording or\n"
     "                  bare lines) instead of the keyboard; frames are the lines\n"
     "  --size WxH      window size (default 960x720)\n"
+    "  --no-gamepad    do not use game controllers\n"
     "\n"
     "At the end it prints 'level NAME STATE steps S optimum O tile ADDR cell C,R'.\n"
     "Exit status: 0 ok, 1 failure, 2 bad input.\n";
@@ -277,7 +285,7 @@ int cli_cmd_play(int argc, char **argv)
                *input_path = NULL;
     unsigned long long seed = CLI_SEED_DEFAULT;
     long frames = 0;
-    int w = 960, h = 720;
+    int w = 960, h = 720, use_pad = 1;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i], *val = i + 1 < argc ? argv[i + 1] : NULL;
         int takes = !strcmp(a, "--mode") || !strcmp(a, "--seed") || !strcmp(a, "--log") ||
@@ -287,7 +295,9 @@ int cli_cmd_play(int argc, char **argv)
             cli_error(cmd, 0, "%s needs a value; see 'holonomy play --help'", a);
             return CLI_EXIT_USAGE;
         }
-        if (!strcmp(a, "--mode"))
+        if (!strcmp(a, "--no-gamepad"))
+            use_pad = 0;
+        else if (!strcmp(a, "--mode"))
             mode = val;
         else if (!strcmp(a, "--seed")) {
             uint64_t sv;
@@ -422,6 +432,15 @@ int cli_cmd_play(int argc, char **argv)
     }
     hol_x11_keys keys;
     memset(&keys, 0, sizeof keys);
+    /* the first game controller; polled (and looked for) only in live play */
+    static hol_hid_dev pad_dev;
+    hol_hid_link pad_link;
+    memset(&pad_link, 0, sizeof pad_link);
+    use_pad = use_pad && !input_path;
+    if (use_pad && hol_hid_dev_open_first(&pad_dev) == HOL_OK)
+        fprintf(stderr, "play: game controller: %s (%04x:%04x)\n",
+                pad_dev.info.name[0] ? pad_dev.info.name : "unnamed", pad_dev.info.vid,
+                pad_dev.info.pid);
     double t0 = now_s(), last_t = 0, prev_t = 0;
     for (long k = 0; frames <= 0 || k < frames; k++) {
         int open = hol_x11_poll(&xw, &keys);
@@ -450,10 +469,21 @@ int cli_cmd_play(int argc, char **argv)
             /* mouse: 0.2 degrees a pixel, as a turn rate over this frame */
             in.turn[0] = clamp1(keys.left - keys.right - keys.mouse_dx * 0.2 / (120 * dt));
             in.turn[1] = clamp1(keys.look_up - keys.look_down - keys.mouse_dy * 0.2 / (90 * dt));
+            int key_activity = keys.left | keys.right | keys.up | keys.down | keys.strafe_l |
+                               keys.strafe_r | keys.look_up | keys.look_down | keys.confirm |
+                               keys.menu | keys.restart | keys.minimap | keys.mouse_dx |
+                               keys.mouse_dy;
             keys.mouse_dx = keys.mouse_dy = 0;
             in.buttons = (keys.confirm ? HOL_BTN_CONFIRM : 0) | (keys.menu ? HOL_BTN_MENU : 0) |
                          (keys.restart ? HOL_BTN_RESTART : 0) |
                          (keys.minimap ? HOL_BTN_MINIMAP : 0) | (open ? 0 : HOL_BTN_QUIT);
+            if (use_pad) {
+                hol_input pad;
+                memset(&pad, 0, sizeof pad);
+                pad.time_s = t;
+                hol_err pe = hol_hid_dev_poll(&pad_dev, &pad);
+                hol_hid_link_merge(&pad_link, pe, pad_dev.lost, &pad, key_activity != 0, &in);
+            }
         }
         int rc = session_step(&s, &in);
         if (rc < 0) {
@@ -476,6 +506,8 @@ int cli_cmd_play(int argc, char **argv)
     }
     print_end(&s);
 out:
+    if (use_pad)
+        hol_hid_dev_close(&pad_dev);
     hol_render_destroy(r);
     if (s.app || s.recording) {
         int c = session_close(&s);

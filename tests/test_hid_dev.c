@@ -1,0 +1,383 @@
+/* test_hid_dev.c - the gamepad device layer up to the hardware boundary.
+ *
+ * This machine has no /dev/hidraw and no uhid, so platform/hid/hol_hid_dev.c
+ * is compiled unchanged against a scripted hidapi (the functions below,
+ * declared by tests/fake_hidapi/hidapi/hidapi.h as hidapi 0.14 declares
+ * them). The scripted device is the Asus gamepad recorded by hid-tools
+ * (tests/hid_samples.h: its real descriptor and reports). Checked: the
+ * first controller is found and its reports decoded (the same result as
+ * the decoder given the same bytes); reads drain and never block; an
+ * unplug mid-game sets HOL_INPUT_DEVICE_LOST and zeroes the input without
+ * a crash; re-enumeration waits HOL_HID_REENUM_S and picks the pad up when
+ * it is plugged back (hot-plug); a non-controller is ignored. Then the
+ * link (platform/hid/hol_hid_link.h) as `holonomy play` uses it: keyboard
+ * and pad merged, an unplug pauses the app, the keyboard resumes it, and
+ * the left stick walks a room step through the app step.
+ */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include <hidapi/hidapi.h>
+
+#include "../core/hol_app.h"
+#include "../platform/hid/hol_hid_dev.h"
+#include "../platform/hid/hol_hid_link.h"
+#include "hid_samples.h"
+
+/* ---- the scripted hidapi ------------------------------------------------ */
+
+static struct {
+    int present;        /* the pad is plugged in */
+    int other;          /* a keyboard-like HID device is plugged in too */
+    int open;           /* handles open */
+    int enumerations;
+    int fail_reads;     /* the next reads fail (unplugged while open) */
+    uint8_t queue[16][64];
+    size_t qlen[16];
+    int qn, qhead;
+} fake;
+
+struct hid_device_ {
+    int unused;
+};
+static struct hid_device_ the_handle;
+
+int hid_init(void) { return 0; }
+
+struct hid_device_info *hid_enumerate(unsigned short vendor_id, unsigned short product_id)
+{
+    (void)vendor_id;
+    (void)product_id;
+    static struct hid_device_info kbd, pad;
+    static wchar_t name[] = L"Asus gamepad";
+    fake.enumerations++;
+    struct hid_device_info *head = NULL;
+    if (fake.present) {
+        memset(&pad, 0, sizeof pad);
+        pad.path = "/dev/hidraw-fake1";
+        pad.vendor_id = asus_vid;
+        pad.product_id = asus_pid;
+        pad.usage_page = 0x01;
+        pad.usage = 0x05;
+        pad.product_string = name;
+        head = &pad;
+    }
+    if (fake.other) {
+        memset(&kbd, 0, sizeof kbd);
+        kbd.path = "/dev/hidraw-fake0";
+        kbd.usage_page = 0x01;
+        kbd.usage = 0x06; /* a keyboard: not a game controller */
+        kbd.next = head;
+        head = &kbd;
+    }
+    return head;
+}
+
+void hid_free_enumeration(struct hid_device_info *devs) { (void)devs; }
+
+hid_device *hid_open_path(const char *path)
+{
+    if (!fake.present || strcmp(path, "/dev/hidraw-fake1"))
+        return NULL;
+    fake.open++;
+    return &the_handle;
+}
+
+void hid_close(hid_device *dev)
+{
+    assert_ptr_equal(dev, &the_handle);
+    fake.open--;
+}
+
+int hid_set_nonblocking(hid_device *dev, int nonblock)
+{
+    (void)dev;
+    assert_int_equal(nonblock, 1); /* the frame loop must never block */
+    return 0;
+}
+
+int hid_read_timeout(hid_device *dev, unsigned char *data, size_t length, int milliseconds)
+{
+    (void)dev;
+    assert_int_equal(milliseconds, 0);
+    if (fake.fail_reads)
+        return -1;
+    if (fake.qhead == fake.qn)
+        return 0;
+    size_t n = fake.qlen[fake.qhead] < length ? fake.qlen[fake.qhead] : length;
+    memcpy(data, fake.queue[fake.qhead++], n);
+    return (int)n;
+}
+
+int hid_write(hid_device *dev, const unsigned char *data, size_t length)
+{
+    (void)dev;
+    (void)data;
+    return (int)length;
+}
+
+int hid_get_feature_report(hid_device *dev, unsigned char *data, size_t length)
+{
+    (void)dev;
+    (void)data;
+    return (int)length;
+}
+
+int hid_get_report_descriptor(hid_device *dev, unsigned char *buf, size_t buf_size)
+{
+    (void)dev;
+    if (buf_size < sizeof asus_desc)
+        return -1;
+    memcpy(buf, asus_desc, sizeof asus_desc);
+    return (int)sizeof asus_desc;
+}
+
+static void queue_report(int r)
+{
+    assert_true(fake.qn < 16);
+    memcpy(fake.queue[fake.qn], asus_reports[r], sizeof asus_reports[r]);
+    fake.qlen[fake.qn++] = sizeof asus_reports[r];
+}
+
+static int reset(void **state)
+{
+    (void)state;
+    memset(&fake, 0, sizeof fake);
+    return 0;
+}
+
+/* What the decoder alone makes of report r (the device layer must pass the
+ * bytes through unchanged). */
+static hol_input decoded(int r)
+{
+    static hol_hid_field fields[HOL_HID_DEV_MAX_FIELDS];
+    size_t n = 0;
+    int ids = 0;
+    assert_int_equal(hol_hid_desc_parse(asus_desc, sizeof asus_desc, fields,
+                                        HOL_HID_DEV_MAX_FIELDS, &n, &ids), HOL_OK);
+    static hol_hid_pad pad;
+    assert_int_equal(hol_hid_pad_init(&pad, fields, n, ids, asus_vid, asus_pid, NULL), HOL_OK);
+    hol_input in;
+    memset(&in, 0, sizeof in);
+    assert_int_equal(hol_hid_pad_decode(&pad, asus_reports[r], sizeof asus_reports[r], &in), 1);
+    return in;
+}
+
+static hol_hid_dev dev;
+
+/* ---- the device layer ---------------------------------------------------- */
+
+static void test_no_controller(void **state)
+{
+    (void)state;
+    fake.other = 1;
+    assert_int_equal(hol_hid_dev_open_first(&dev), HOL_EOPEN);
+    assert_int_equal(fake.open, 0);
+    hol_input in;
+    memset(&in, 0, sizeof in);
+    assert_int_equal(hol_hid_dev_poll(&dev, &in), HOL_EIO);
+    assert_int_equal(dev.lost, 0); /* never had one: nothing was lost */
+}
+
+static void test_reports_drained_and_decoded(void **state)
+{
+    (void)state;
+    fake.present = fake.other = 1;
+    assert_int_equal(hol_hid_dev_open_first(&dev), HOL_OK);
+    assert_int_equal(dev.info.vid, asus_vid);
+    assert_int_equal(fake.open, 1);
+    queue_report(1);
+    queue_report(2); /* two waiting: the last state wins */
+    hol_input in;
+    memset(&in, 0, sizeof in);
+    assert_int_equal(hol_hid_dev_poll(&dev, &in), HOL_OK);
+    assert_int_equal(fake.qhead, 2);
+    hol_input want = decoded(2);
+    assert_memory_equal(in.move, want.move, sizeof in.move);
+    assert_memory_equal(in.turn, want.turn, sizeof in.turn);
+    assert_int_equal(in.buttons, want.buttons);
+    assert_true(in.move[0] > 0.5f && in.move[1] > 0.5f); /* right and forward */
+    /* nothing waiting: the state stays, the poll does not block */
+    memset(&in, 0, sizeof in);
+    assert_int_equal(hol_hid_dev_poll(&dev, &in), HOL_OK);
+    assert_memory_equal(in.move, want.move, sizeof in.move);
+    hol_hid_dev_close(&dev);
+    assert_int_equal(fake.open, 0);
+}
+
+static void test_unplug_and_hot_plug(void **state)
+{
+    (void)state;
+    fake.present = 1;
+    assert_int_equal(hol_hid_dev_open_first(&dev), HOL_OK);
+    queue_report(2);
+    hol_input in;
+    memset(&in, 0, sizeof in);
+    in.time_s = 1.0;
+    assert_int_equal(hol_hid_dev_poll(&dev, &in), HOL_OK);
+    /* unplugged mid-game */
+    fake.fail_reads = 1;
+    fake.present = 0;
+    memset(&in, 0, sizeof in);
+    in.time_s = 2.0;
+    in.move[0] = 0.7f;
+    assert_int_equal(hol_hid_dev_poll(&dev, &in), HOL_EIO);
+    assert_true(in.flags & HOL_INPUT_DEVICE_LOST);
+    assert_true(in.move[0] == 0.0f && in.buttons == 0);
+    assert_int_equal(dev.lost, 1);
+    assert_int_equal(fake.open, 0); /* the handle was closed */
+    fake.fail_reads = 0;
+    int e0 = fake.enumerations;
+    /* within HOL_HID_REENUM_S: no re-enumeration */
+    memset(&in, 0, sizeof in);
+    in.time_s = 2.5;
+    assert_int_equal(hol_hid_dev_poll(&dev, &in), HOL_EIO);
+    assert_int_equal(fake.enumerations, e0);
+    /* later, still unplugged: one try, still lost */
+    in.time_s = 3.1;
+    assert_int_equal(hol_hid_dev_poll(&dev, &in), HOL_EIO);
+    assert_int_equal(fake.enumerations, e0 + 1);
+    /* plugged back: picked up at the next try */
+    fake.present = 1;
+    queue_report(3);
+    memset(&in, 0, sizeof in);
+    in.time_s = 3.5;
+    assert_int_equal(hol_hid_dev_poll(&dev, &in), HOL_EIO); /* too soon */
+    in.time_s = 4.2;
+    assert_int_equal(hol_hid_dev_poll(&dev, &in), HOL_OK);
+    assert_false(in.flags & HOL_INPUT_DEVICE_LOST);
+    assert_int_equal(dev.lost, 0);
+    hol_input want = decoded(3);
+    assert_memory_equal(in.move, want.move, sizeof in.move);
+    hol_hid_dev_close(&dev);
+}
+
+/* ---- the link, as holonomy play uses it --------------------------------- */
+
+static void test_link_merge(void **state)
+{
+    (void)state;
+    hol_hid_link l;
+    memset(&l, 0, sizeof l);
+    hol_input pad, io;
+    memset(&pad, 0, sizeof pad);
+    /* never a pad: the keyboard's input as it was */
+    memset(&io, 0, sizeof io);
+    io.move[1] = 1;
+    hol_hid_link_merge(&l, HOL_EIO, 0, &pad, 0, &io);
+    assert_true(io.move[1] == 1.0f && io.flags == 0);
+    /* a pad: axes add and clamp, buttons OR */
+    pad.move[1] = 0.5f;
+    pad.turn[0] = -0.25f;
+    pad.buttons = HOL_BTN_CONFIRM;
+    memset(&io, 0, sizeof io);
+    io.move[1] = 1;
+    io.turn[0] = 0.5f;
+    io.buttons = HOL_BTN_MENU;
+    hol_hid_link_merge(&l, HOL_OK, 0, &pad, 1, &io);
+    assert_true(io.move[1] == 1.0f && io.turn[0] == 0.25f);
+    assert_int_equal(io.buttons, HOL_BTN_CONFIRM | HOL_BTN_MENU);
+    /* unplugged: the app is told, frame after frame */
+    for (int k = 0; k < 3; k++) {
+        memset(&io, 0, sizeof io);
+        hol_hid_link_merge(&l, HOL_EIO, 1, &pad, 0, &io);
+        assert_true(io.flags & HOL_INPUT_DEVICE_LOST);
+    }
+    /* a key: the keyboard takes over */
+    memset(&io, 0, sizeof io);
+    hol_hid_link_merge(&l, HOL_EIO, 1, &pad, 1, &io);
+    assert_false(io.flags & HOL_INPUT_DEVICE_LOST);
+    memset(&io, 0, sizeof io);
+    hol_hid_link_merge(&l, HOL_EIO, 1, &pad, 0, &io);
+    assert_false(io.flags & HOL_INPUT_DEVICE_LOST);
+    /* plugged in again: joins */
+    memset(&io, 0, sizeof io);
+    hol_hid_link_merge(&l, HOL_OK, 0, &pad, 0, &io);
+    assert_true(io.move[1] == 0.5f);
+}
+
+/* The pad walks: the left stick held left, through the device layer, the
+ * link and the app step, crosses into the cell west (a room step); an
+ * unplug pauses the app (the level clock stops); the keyboard resumes. */
+static void test_stick_walks_and_unplug_pauses(void **state)
+{
+    (void)state;
+    hol_app *app;
+    hol_app_desc ad;
+    memset(&ad, 0, sizeof ad);
+    assert_int_equal(hol_app_create(&ad, &app), HOL_OK);
+    hol_app_level L;
+    memset(&L, 0, sizeof L);
+    L.seed = 4;
+    L.cues = HOL_CUE_ALL;
+    assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    fake.present = 1;
+    assert_int_equal(hol_hid_dev_open_first(&dev), HOL_OK);
+    hol_hid_link l;
+    memset(&l, 0, sizeof l);
+    queue_report(1); /* left stick full left (and button 1): strafe west */
+    double t = 0;
+    int steps = 0;
+    for (int f = 0; f < 120; f++, t += 1.0 / 60) {
+        hol_input in, pad;
+        memset(&in, 0, sizeof in);
+        memset(&pad, 0, sizeof pad);
+        in.time_s = pad.time_s = t;
+        in.flags = HOL_INPUT_FOCUSED;
+        hol_err e = hol_hid_dev_poll(&dev, &pad);
+        hol_hid_link_merge(&l, e, dev.lost, &pad, 0, &in);
+        assert_int_equal(hol_app_step(app, &in), HOL_OK);
+        steps += hol_app_get_events(app)->nsteps;
+    }
+    const hol_app_view *v = hol_app_get_view(app);
+    assert_true(steps >= 1);
+    assert_int_equal(v->user.col, 0); /* walked a cell west */
+    assert_int_equal(v->user.row, 1);
+    assert_int_equal(v->hud.steps, steps);
+    /* unplug: paused, the clock stops */
+    fake.fail_reads = 1;
+    double clock = v->hud.elapsed_s;
+    for (int f = 0; f < 30; f++, t += 1.0 / 60) {
+        hol_input in, pad;
+        memset(&in, 0, sizeof in);
+        memset(&pad, 0, sizeof pad);
+        in.time_s = pad.time_s = t;
+        in.flags = HOL_INPUT_FOCUSED;
+        hol_err e = hol_hid_dev_poll(&dev, &pad);
+        hol_hid_link_merge(&l, e, dev.lost, &pad, 0, &in);
+        assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    }
+    assert_true(v->paused);
+    assert_true(v->hud.elapsed_s == clock);
+    /* a key: playing again */
+    hol_input in, pad;
+    memset(&in, 0, sizeof in);
+    memset(&pad, 0, sizeof pad);
+    in.time_s = pad.time_s = t + 0.1;
+    in.flags = HOL_INPUT_FOCUSED;
+    in.move[1] = 1;
+    hol_err e = hol_hid_dev_poll(&dev, &pad);
+    hol_hid_link_merge(&l, e, dev.lost, &pad, 1, &in);
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    assert_false(v->paused);
+    hol_hid_dev_close(&dev);
+    hol_app_destroy(app);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test_setup(test_no_controller, reset),
+        cmocka_unit_test_setup(test_reports_drained_and_decoded, reset),
+        cmocka_unit_test_setup(test_unplug_and_hot_plug, reset),
+        cmocka_unit_test_setup(test_link_merge, reset),
+        cmocka_unit_test_setup(test_stick_walks_and_unplug_pauses, reset),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
