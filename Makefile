@@ -75,7 +75,7 @@ APT_LOCK_WAIT ?= 120
 APT_GET = $$SUDO env DEBIAN_FRONTEND=noninteractive apt-get -o DPkg::Lock::Timeout=$(APT_LOCK_WAIT)
 
 .PHONY: all test purity unit render-test cli-test fuzz-replay fuzz bench san clean deps \
-        deps-cross check-clang cross-test run quest quest-help deps-quest quest-check
+        deps-cross check-clang cross-test run quest quest-help deps-quest quest-check check-hid-libusb
 
 all: $(BUILD)/holonomy
 
@@ -215,6 +215,10 @@ QUEST_DEB_PACKAGES := aapt zipalign android-framework-res
 quest:
 	@NDK="$(NDK)" OPENXR_LOADER="$(OPENXR_LOADER)" BUILD="$(BUILD)" \
 	  sh platform/android/build_apk.sh
+
+# The libusb hidapi backend builds too (CI builds it beside the default).
+check-hid-libusb:
+	$(MAKE) BUILD=$(BUILD)/hid-libusb HID=libusb $(BUILD)/hid-libusb/holonomy
 
 quest-help:
 	@sh platform/android/build_apk.sh --help
