@@ -102,6 +102,12 @@ $(BUILD)/tests/test_hid: tests/test_hid.c tests/hid_samples.h $(HID_SRC) $(CORE_
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) -o $@ $< $(HID_SRC) $(CORE_LIB) $(LDFLAGS) -lcmocka $(LDLIBS)
 
+# Level files: the parser lives with the desktop session.
+LEVEL_SRC := platform/cli/session.c platform/cli/cli_util.c platform/file/hol_file.c
+$(BUILD)/tests/test_level: tests/test_level.c $(LEVEL_SRC) $(CORE_LIB)
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) -o $@ $< $(LEVEL_SRC) $(CORE_LIB) $(LDFLAGS) -lcmocka $(LDLIBS)
+
 # The device layer against a scripted hidapi (tests/fake_hidapi): no device here.
 $(BUILD)/tests/test_hid_dev: tests/test_hid_dev.c tests/hid_samples.h tests/fake_hidapi/hidapi/hidapi.h $(HID_SRC) $(HID_DEV_SRC) $(CORE_LIB)
 	@mkdir -p $(dir $@)
@@ -126,7 +132,7 @@ $(BUILD)/bench/%: tests/%.c $(CORE_SRC)
 # libFuzzer harnesses (clang); the replay build runs the corpora as tests.
 # A harness links the core; FUZZ_EXTRA_<name> adds sources and libraries.
 FUZZ_EXTRA_fuzz_png := render/hol_png.c -lz
-FUZZ_EXTRA_fuzz_recording := platform/cli/session.c platform/cli/cli_util.c platform/file/hol_file.c
+FUZZ_EXTRA_fuzz_recording := $(LEVEL_SRC)
 FUZZ_EXTRA_fuzz_hid_desc := $(HID_SRC)
 FUZZ_EXTRA_fuzz_hid_report := $(HID_SRC)
 $(BUILD)/fuzz/%: fuzz/%.c $(wildcard fuzz/*.h) $(CORE_SRC) $(RENDER_SRC) $(HID_SRC) $(PLAT_SRC) $(CLI_SRC)

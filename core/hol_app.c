@@ -33,6 +33,7 @@ struct hol_app {
     /* the game */
     int done;
     unsigned keys_held; /* bit per key */
+    int timed_out;      /* the end screen is the time limit's */
     int steps, optimum, remaining;
     double level_t;
     long next_sample; /* index of the next 10 Hz head sample */
@@ -181,6 +182,16 @@ static hol_tile hol__tile_ahead(const hol_room *r, const int *turns, int n)
     return ht.tile;
 }
 
+/* The first lesson at or after k that the level plays (HOL_APP_TUTORIAL_STAGES:
+ * none left). */
+static int hol__next_stage(const hol_app *app, int k)
+{
+    unsigned want = app->level.stages ? app->level.stages : (1u << HOL_APP_TUTORIAL_STAGES) - 1;
+    while (k < HOL_APP_TUTORIAL_STAGES && !(want >> k & 1))
+        k++;
+    return k;
+}
+
 /* Begin tutorial stage k at room state r: its target (if any) and the
  * world marker on it. */
 static void hol__stage(hol_app *app, int k, const hol_room *r)
@@ -213,12 +224,13 @@ static void hol__enter(hol_app *app, const hol_room *r)
                          : app->stage_steps >= 4 && r->col == app->stage_start.col &&
                                r->row == app->stage_start.row &&
                                !hol_tile_eq(r->tile, app->stage_start.tile);
-        if (passed && app->stage + 1 >= HOL_APP_TUTORIAL_STAGES)
+        int next = hol__next_stage(app, app->stage + 1);
+        if (passed && next >= HOL_APP_TUTORIAL_STAGES)
             app->done = 1;
         else if (passed) {
             if (app->has_target)
                 (void)hol_world_release(app->world, app->target);
-            hol__stage(app, app->stage + 1, r);
+            hol__stage(app, next, r);
         }
     }
     if (L->mode == HOL_APP_FLAG && hol_tile_eq(r->tile, L->flag))
@@ -251,6 +263,8 @@ static hol_err hol__begin(hol_app *app)
 {
     const hol_app_level *L = &app->level;
     hol_world_desc wd = hol__world_desc(app, L->seed);
+    wd.places = L->places;
+    wd.nplaces = L->nplaces < 0 ? 0 : (uint32_t)L->nplaces;
     hol_err err = hol_world_init(app->world_mem, app->world_size, &wd, &app->world);
     if (err)
         return err;
@@ -292,7 +306,8 @@ static hol_err hol__begin(hol_app *app)
     app->keys_held = 0;
     app->has_target = 0;
     if (L->mode == HOL_APP_TUTORIAL)
-        hol__stage(app, 0, &r);
+        hol__stage(app, hol__next_stage(app, 0), &r);
+    app->timed_out = 0;
     app->steps = 0;
     app->level_t = 0;
     app->next_sample = 0;
@@ -417,8 +432,12 @@ static void hol__fill_view(hol_app *app, const hol_input *in)
     long secs = (long)app->level_t;
     h->hint[0] = 0;
     if (v->state == HOL_APP_DONE) {
-        snprintf(h->status, sizeof h->status, "Done: %d steps, best %d, %ld:%02ld", app->steps,
-                 app->optimum, secs / 60, secs % 60);
+        if (app->timed_out)
+            snprintf(h->status, sizeof h->status, "Time up: %d steps, best %d, %ld:%02ld",
+                     app->steps, app->optimum, secs / 60 % 100000, secs % 60);
+        else
+            snprintf(h->status, sizeof h->status, "Done: %d steps, best %d, %ld:%02ld",
+                     app->steps, app->optimum, secs / 60 % 100000, secs % 60);
         snprintf(h->hint, sizeof h->hint, "Confirm: next level, restart: again");
     } else if (v->paused) {
         snprintf(h->status, sizeof h->status, "Paused");
@@ -577,6 +596,10 @@ hol_err hol_app_step(hol_app *app, const hol_input *in)
         }
         if (app->done) {
             hol__summary(app, HOL_APP_END_DONE);
+            v->state = HOL_APP_DONE;
+        } else if (app->level.time_limit_s > 0 && app->level_t >= app->level.time_limit_s) {
+            app->timed_out = 1;
+            hol__summary(app, HOL_APP_END_TIMEOUT);
             v->state = HOL_APP_DONE;
         }
     }

@@ -37,6 +37,7 @@
 #include "hol_motion.h"
 #include "hol_room.h"
 #include "hol_tile.h"
+#include "hol_world.h"
 
 struct hol_nav;
 struct hol_world;
@@ -84,6 +85,14 @@ typedef struct hol_app_level {
     hol_tile chest;
     unsigned cues;            /* HOL_CUE_* */
     int minimap;              /* hol_app_minimap_place */
+    double time_limit_s;      /* > 0: the level ends (HOL_APP_END_TIMEOUT)
+                                 when its clock reaches this; 0: no limit */
+    unsigned stages;          /* tutorial: the lessons to play, bit k for
+                                 lesson k, in order; 0: all four */
+    hol_world_place places[HOL_WORLD_MAX_PLACES]; /* designer placements
+                                 (hol_world_desc.places), never on an
+                                 objective's tile */
+    int nplaces;
 } hol_app_level;
 
 typedef struct hol_app_desc {
@@ -179,7 +188,8 @@ typedef enum hol_app_end {
     HOL_APP_END_NONE = 0,
     HOL_APP_END_DONE,     /* completed */
     HOL_APP_END_RESTART,  /* restarted by the user */
-    HOL_APP_END_QUIT      /* left by the user */
+    HOL_APP_END_QUIT,     /* left by the user */
+    HOL_APP_END_TIMEOUT   /* the level's time limit ran out (the end screen) */
 } hol_app_end;
 
 typedef struct hol_app_summary {

@@ -316,6 +316,21 @@ static hol_err hol__build_ball(hol_world *w, hol_tile centre, int radius)
 }
 
 /* Initial domains: exact demands of the collapsed neighbours. */
+/* The states a designer placement allows: its object, any rotation, no
+ * connector (a pond, not a creek's end). */
+static uint32_t hol__place_mask(int obj)
+{
+    uint32_t m = 0;
+    for (int st = 0; st < HOL__NSTATES; st++) {
+        int conn = 0;
+        for (int d = 0; d < 4; d++)
+            conn |= hol__state_conn(st, d);
+        if (hol__state_obj(st) == obj && !conn)
+            m |= UINT32_C(1) << st;
+    }
+    return m;
+}
+
 static hol_err hol__init_domains(hol__batch *b)
 {
     hol_world *w = b->w;
@@ -324,6 +339,10 @@ static hol_err hol__init_domains(hol__batch *b)
         const hol__entry *e = &w->entries[s->entry];
         s->dom = e->state == HOL__UNSET ? HOL__ALL_STATES : UINT32_C(1) << e->state;
         s->pad[0] = 0; /* relevant ring slot */
+        if (e->state == HOL__UNSET)
+            for (uint32_t k = 0; k < w->nplaces; k++)
+                if (hol_tile_eq(w->places[k].tile, e->tile))
+                    s->dom &= hol__place_mask(w->places[k].object);
     }
     for (uint32_t i = 0; i < w->nslots; i++) {
         hol__slot *s = &w->slots[i];
@@ -419,6 +438,9 @@ static int hol__choose(hol__batch *b, uint32_t slot)
     uint32_t weight[HOL__NSTATES];
     uint64_t total = 0;
     uint32_t zero_ok = 0;
+    int placed = 0; /* a designer's object: allowed whatever the biome */
+    for (uint32_t k = 0; k < w->nplaces; k++)
+        placed |= hol_tile_eq(w->places[k].tile, e->tile);
     for (int st = 0; st < HOL__NSTATES; st++) {
         weight[st] = 0;
         if (!(s->dom & (UINT32_C(1) << st)))
@@ -443,6 +465,8 @@ static int hol__choose(hol__batch *b, uint32_t slot)
         if (!ok)
             continue;
         uint32_t base = hol__weight(e->biome, st);
+        if (placed && base == 0)
+            base = 1;
         uint32_t mult;
         int cls = hol__states[st].cls;
         if (kept == 0 && cls >= HOL__C_STRAIGHT)
@@ -589,6 +613,12 @@ hol_err hol__generate(hol_world *w, hol_tile centre, int radius, int mark_seen)
     for (uint32_t i = 0; i < w->nslots; i++)
         if (!w->slots[i].ring && mark_seen)
             w->entries[w->slots[i].entry].flags |= HOL__F_SEEN;
+    for (uint32_t i = 0; i < w->nslots && w->nplaces; i++) {
+        hol__entry *e = &w->entries[w->slots[i].entry];
+        for (uint32_t k = 0; k < w->nplaces; k++)
+            if (e->state != HOL__UNSET && hol_tile_eq(w->places[k].tile, e->tile))
+                e->flags |= HOL__F_PLACED;
+    }
     w->ntrail = 0;
     w->ndec = 0;
     return HOL_OK;

@@ -126,7 +126,21 @@ hol_err hol_world_init(void *mem, size_t size, const hol_world_desc *desc,
     char *base = mem;
     memset(base, 0, l.off_slots); /* struct and store */
     hol_world *w = mem;
+    if (desc->nplaces > HOL_WORLD_MAX_PLACES || (desc->nplaces && !desc->places))
+        return HOL_EARG;
+    for (uint32_t i = 0; i < desc->nplaces; i++) {
+        int o = desc->places[i].object;
+        if (o != HOL_OBJ_NONE && o != HOL_OBJ_GRASS && o != HOL_OBJ_FLOWERS &&
+            o != HOL_OBJ_ROCK && o != HOL_OBJ_MUSHROOM && o != HOL_OBJ_POOL)
+            return HOL_EARG;
+        for (uint32_t j = 0; j < i; j++)
+            if (hol_tile_eq(desc->places[i].tile, desc->places[j].tile))
+                return HOL_EARG;
+    }
     w->seed = desc->seed;
+    w->nplaces = desc->nplaces;
+    if (desc->nplaces)
+        memcpy(w->places, desc->places, desc->nplaces * sizeof w->places[0]);
     w->radius = desc->radius ? desc->radius : HOL_WORLD_DEFAULT_RADIUS;
     w->cap = l.cap;
     w->mask = l.cap - 1;

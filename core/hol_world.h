@@ -144,6 +144,14 @@ typedef struct hol_tile_content {
 /* the shared allocator hooks (core/hol_alloc.h) */
 typedef hol_alloc hol_world_allocator;
 
+/* A designer placement: tile t is generated with this object. */
+#define HOL_WORLD_MAX_PLACES 32
+typedef struct hol_world_place {
+    hol_tile tile;
+    int object; /* HOL_OBJ_NONE (a clearing), GRASS, FLOWERS, ROCK, MUSHROOM,
+                   or POOL (a pond: no creek) */
+} hol_world_place;
+
 typedef struct hol_world_desc {
     uint64_t seed;      /* any value, 0 included */
     uint32_t capacity;  /* tiles; 0 = HOL_WORLD_DEFAULT_CAPACITY; raised to
@@ -157,6 +165,16 @@ typedef struct hol_world_desc {
      * random, as if they had led to a contradiction, so the backtracking is
      * exercised. 0 in real use. */
     uint32_t test_reject_per_mille;
+    /* Designer placements, as the original allows before generation fills
+     * in the rest: each tile is collapsed only to states with its object
+     * (any rotation; the biome still comes from the seed), and the rest of
+     * the world is generated around it under the usual constraints (the
+     * objects allowed have no connectors, so a completion always exists).
+     * At most HOL_WORLD_MAX_PLACES, copied at init; a tile placed twice or
+     * another object is HOL_EARG. They hold for every generation of the
+     * tile, evicted and regenerated included. */
+    const hol_world_place *places;
+    uint32_t nplaces;
 } hol_world_desc;
 
 typedef struct hol_world hol_world;

@@ -58,7 +58,8 @@ hol_err hol__check_rec(const hol__rec *r, hol__lookup_fn look, const void *ctx,
     }
     if (collapsed && r->biome == HOL_BIOME_NONE)
         return hol__fail(msg, cap, r->tile, "collapsed without a biome", -1, 0);
-    if (collapsed && hol__plain_class(s) && hol__weight(r->biome, s) == 0)
+    if (collapsed && hol__plain_class(s) && hol__weight(r->biome, s) == 0 &&
+        !(r->flags & HOL__F_PLACED))
         return hol__fail(msg, cap, r->tile, "object not allowed in its biome", -1, 0);
     uint32_t dom = HOL__ALL_STATES;
     for (int d = 0; d < 4; d++) {

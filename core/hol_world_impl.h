@@ -25,7 +25,8 @@
 #define HOL__F_USED 0x01u
 #define HOL__F_SEEN 0x02u  /* was within the radius of the user */
 #define HOL__F_TREES 0x04u /* trees cached */
-#define HOL__F_KNOWN 0x07u
+#define HOL__F_PLACED 0x08u /* a designer placement (any biome allowed) */
+#define HOL__F_KNOWN 0x0Fu
 
 typedef struct hol__entry {
     hol_tile tile;
@@ -94,6 +95,8 @@ struct hol_world {
     hol_tile *reserve_tiles;
     uint32_t max_reserve;
     uint64_t choice_counter;
+    hol_world_place places[HOL_WORLD_MAX_PLACES]; /* designer placements */
+    uint32_t nplaces;
     /* incremental eviction sweep (hol_world.c) */
     uint32_t sweep_phase; /* 0 idle, 1 stamp range, 2 histogram, 3 evict */
     uint32_t sweep_pos, sweep_lo, sweep_hi, sweep_n, sweep_limit;

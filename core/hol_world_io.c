@@ -122,7 +122,8 @@ hol_err hol_world_save(const hol_world *w, void *buf, size_t cap,
         r[20] = e->state;
         r[21] = e->biome;
         r[22] = e->depth;
-        r[23] = (uint8_t)(((e->flags & HOL__F_SEEN) ? 1 : 0) | (e->game << 4));
+        r[23] = (uint8_t)(((e->flags & HOL__F_SEEN) ? 1 : 0) |
+                          ((e->flags & HOL__F_PLACED) ? 2 : 0) | (e->game << 4));
         r += HOL__REC;
     }
     qsort(p + HOL__HDR, w->count, HOL__REC, hol__rec_cmp);
@@ -216,7 +217,7 @@ static void hol__decode(const uint8_t *r, hol__rec *out)
     out->state = r[20];
     out->biome = r[21];
     out->depth = r[22];
-    out->flags = (uint8_t)((r[23] & 1) ? HOL__F_SEEN : 0);
+    out->flags = (uint8_t)(((r[23] & 1) ? HOL__F_SEEN : 0) | ((r[23] & 2) ? HOL__F_PLACED : 0));
     out->game = (uint8_t)(r[23] >> 4);
 }
 
@@ -281,7 +282,7 @@ hol_err hol_world_load(hol_world *w, const void *buf, size_t len, char *msg,
         if (i > 0 && hol__rec_cmp(r - HOL__REC, r) >= 0)
             return hol__say(msg, msg_cap, HOL_ECORRUPT,
                             "record %llu out of order or repeated%.0llu", i, 0);
-        if (r[23] & 0x0e)
+        if (r[23] & 0x0c)
             return hol__say(msg, msg_cap, HOL_ECORRUPT,
                             "record %llu has unknown flags%.0llu", i, 0);
         hol__rec rec;

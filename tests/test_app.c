@@ -442,6 +442,61 @@ static void test_no_allocation(void **state)
     assert_int_equal(count_frees, count_allocs);
 }
 
+/* A time limit ends the level on its clock: the end screen says so, the
+ * summary's end is a timeout, and no step counts after it. */
+static void test_time_limit(void **state)
+{
+    (void)state;
+    hol_app *app = make_app();
+    hol_app_level L = flag_level("Wrf");
+    L.time_limit_s = 2;
+    assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    const hol_app_view *v = hol_app_get_view(app);
+    int ended = 0;
+    double end_t = -1;
+    for (int f = 0; f < 200; f++) {
+        hol_input in = pancake(f / 60.0, f < 100 ? 0.0f : 1.0f, 0);
+        assert_int_equal(hol_app_step(app, &in), HOL_OK);
+        const hol_app_events *ev = hol_app_get_events(app);
+        if (ev->level_ended) {
+            assert_int_equal(ev->level_ended, HOL_APP_END_TIMEOUT);
+            assert_int_equal(ev->summary.end, HOL_APP_END_TIMEOUT);
+            ended++;
+            end_t = v->hud.elapsed_s;
+        }
+    }
+    assert_int_equal(ended, 1);
+    assert_true(end_t >= 2.0 && end_t < 2.0 + 1.5 / 60);
+    assert_int_equal(v->state, HOL_APP_DONE);
+    assert_true(strstr(v->hud.status, "Time up") != NULL);
+    assert_int_equal(v->hud.steps, 0); /* walking after the end does not count */
+    hol_app_destroy(app);
+}
+
+/* A tutorial of lessons 2 and 4 only: it begins with lesson 2 (round a
+ * tree) and goes on to lesson 4. */
+static void test_tutorial_stages(void **state)
+{
+    (void)state;
+    hol_app *app = make_app();
+    hol_app_level L;
+    memset(&L, 0, sizeof L);
+    L.mode = HOL_APP_TUTORIAL;
+    L.seed = 8;
+    L.cues = HOL_CUE_ALL;
+    L.stages = 1u << 1 | 1u << 3;
+    assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    const hol_app_view *v = hol_app_get_view(app);
+    assert_int_equal(v->hud.stage, 1);
+    assert_true(strstr(v->hud.objective, "2/4") != NULL);
+    double t = 0;
+    uint8_t loop[5] = {HOL_DIR_N, HOL_DIR_E, HOL_DIR_S, HOL_DIR_W, HOL_DIR_N};
+    assert_int_equal(play_walk(app, loop, 5, &t), -1);
+    assert_int_equal(v->hud.stage, 3);
+    assert_int_equal(v->map.nobjectives, 1);
+    hol_app_destroy(app);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -450,6 +505,8 @@ int main(void)
         cmocka_unit_test(test_path_when_strayed),
         cmocka_unit_test(test_keys_level),
         cmocka_unit_test(test_tutorial),
+        cmocka_unit_test(test_time_limit),
+        cmocka_unit_test(test_tutorial_stages),
         cmocka_unit_test(test_pause_quit),
         cmocka_unit_test(test_deterministic),
         cmocka_unit_test(test_no_allocation),

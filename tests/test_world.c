@@ -897,6 +897,82 @@ static void test_check_detects(void **state)
     hol_world_destroy(w);
 }
 
+/* Designer placements: every placed tile is generated with its object (no
+ * connectors), whatever the biome, over many seeds and with forced
+ * backtracking; the world's constraints still hold everywhere; after the
+ * store evicts them, regenerated they carry the object again. Bad
+ * placements are refused. */
+static void test_designer_places(void **state)
+{
+    (void)state;
+    static const char *const addr[] = {"N", "Ef", "Srl", "Wlf", "Nff", "Elr", "Sff", "Wr"};
+    static const int objs[] = {HOL_OBJ_ROCK, HOL_OBJ_POOL, HOL_OBJ_FLOWERS, HOL_OBJ_MUSHROOM,
+                               HOL_OBJ_NONE, HOL_OBJ_GRASS, HOL_OBJ_ROCK, HOL_OBJ_POOL};
+    hol_world_place pl[8];
+    for (int i = 0; i < 8; i++) {
+        assert_int_equal(hol_tile_parse(addr[i], -1, &pl[i].tile), HOL_OK);
+        pl[i].object = objs[i];
+    }
+    for (uint64_t seed = 1; seed <= 40; seed++) {
+        hol_world_desc d;
+        memset(&d, 0, sizeof d);
+        d.seed = seed;
+        d.capacity = HOL_WORLD_MIN_CAPACITY;
+        d.test_reject_per_mille = seed % 2 ? 0 : 150;
+        d.places = pl;
+        d.nplaces = 8;
+        hol_world *w = NULL;
+        assert_int_equal(hol_world_make(&d, &w), HOL_OK);
+        hol_room r = hol_room_start();
+        /* walk out and back far enough that the small store evicts */
+        static const char walk[] = "NNSSEEWWSSNNWWEE";
+        for (int lap = 0; lap < (seed == 1 ? 30 : 1); lap++)
+            for (const char *c = walk; *c; c++) {
+                hol_room n = r;
+                if (hol_room_step(&n, hol_dir_from_char(*c)) == HOL_OK)
+                    r = n;
+                assert_int_equal(hol_world_update(w, &r), HOL_OK);
+                for (int i = 0; i < 8; i++) {
+                    hol_tile_content c2;
+                    if (hol_world_peek(w, pl[i].tile, &c2))
+                        continue; /* not generated (or evicted) now */
+                    assert_int_equal(c2.object, objs[i]);
+                    for (int e = 0; e < 4; e++)
+                        assert_int_equal(c2.conn[e], HOL_CONN_NONE);
+                }
+            }
+        for (int i = 0; i < 8; i++) {
+            hol_tile_content c2;
+            assert_int_equal(hol_world_get(w, pl[i].tile, &c2), HOL_OK);
+            assert_int_equal(c2.object, objs[i]);
+        }
+        assert_check(w);
+        if (seed == 1) {
+            hol_world_stats st;
+            hol_world_get_stats(w, &st);
+            assert_true(st.evicted > 0); /* the placements were regenerated */
+        }
+        hol_world_destroy(w);
+    }
+    /* refused: a tile placed twice, an object with connectors, too many */
+    hol_world_desc d;
+    memset(&d, 0, sizeof d);
+    hol_world *w = NULL;
+    hol_world_place two[2] = {pl[0], pl[0]};
+    two[1].object = HOL_OBJ_GRASS;
+    d.places = two;
+    d.nplaces = 2;
+    assert_int_equal(hol_world_make(&d, &w), HOL_EARG);
+    hol_world_place bad = {pl[0].tile, HOL_OBJ_CREEK};
+    d.places = &bad;
+    d.nplaces = 1;
+    assert_int_equal(hol_world_make(&d, &w), HOL_EARG);
+    bad.object = HOL_OBJ_FLAG;
+    assert_int_equal(hol_world_make(&d, &w), HOL_EARG);
+    d.nplaces = HOL_WORLD_MAX_PLACES + 1;
+    assert_int_equal(hol_world_make(&d, &w), HOL_EARG);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -910,6 +986,7 @@ int main(void)
         cmocka_unit_test(test_corrupt_images),
         cmocka_unit_test(test_capacity_exhaustion),
         cmocka_unit_test(test_store_full_of_pins),
+        cmocka_unit_test(test_designer_places),
         cmocka_unit_test(test_lifecycle),
         cmocka_unit_test(test_reserve),
         cmocka_unit_test(test_check_detects),

@@ -13,9 +13,89 @@
 #include "cli.h"
 
 static const char *const mode_names[] = {"explore", "flag", "keys", "tutorial"};
-static const char *const end_names[] = {"open", "done", "restart", "quit"};
+static const char *const end_names[] = {"open", "done", "restart", "quit", "timeout"};
 
 /* ---- level files (SPEC section 5) ---------------------------------------- */
+
+/* ---- levels: objectives by distance, placements ------------------------- */
+
+static uint64_t level_mix(uint64_t *x)
+{
+    uint64_t z = (*x += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+}
+
+/* A tile at distance d from `from`, drawn from rng: each step goes to a
+ * neighbour one further away (in the {4,5} tiling every tile has one). */
+static hol_tile level_tile_at(hol_tile from, int d, uint64_t *rng)
+{
+    hol_tile t = from;
+    for (int i = 1; i <= d; i++) {
+        hol_tile cand[4];
+        int n = 0;
+        for (int e = 0; e < 4; e++) {
+            hol_tile nb;
+            int arr;
+            if (!hol_tile_step(t, e, &nb, &arr) && hol_tile_dist(from, nb) == i)
+                cand[n++] = nb;
+        }
+        if (n == 0)
+            break;
+        t = cand[level_mix(rng) % (uint64_t)n];
+    }
+    return t;
+}
+
+/* Is t taken: the start tile, an objective or a placement? */
+static int level_taken(const hol_app_level *L, hol_tile start, hol_tile t)
+{
+    if (hol_tile_eq(t, start))
+        return 1;
+    if (L->mode == HOL_APP_FLAG && hol_tile_eq(t, L->flag))
+        return 1;
+    if (L->mode == HOL_APP_KEYS) {
+        for (int k = 0; k < L->nkeys; k++)
+            if (hol_tile_eq(t, L->keys[k]))
+                return 1;
+        if (hol_tile_eq(t, L->chest))
+            return 1;
+    }
+    for (int k = 0; k < L->nplaces; k++)
+        if (hol_tile_eq(t, L->places[k].tile))
+            return 1;
+    return 0;
+}
+
+/* A free tile at a distance in [lo, hi] from start, from rng; 1 if none
+ * was found in 256 draws. */
+static int level_draw(const hol_app_level *L, hol_tile start, int lo, int hi, uint64_t *rng,
+                      hol_tile *out)
+{
+    for (int tries = 0; tries < 256; tries++) {
+        int d = lo + (int)(level_mix(rng) % (uint64_t)(hi - lo + 1));
+        hol_tile t = level_tile_at(start, d, rng);
+        if (hol_tile_dist(start, t) == d && !level_taken(L, start, t)) {
+            *out = t;
+            return 0;
+        }
+    }
+    return 1;
+}
+
+/* "MIN [MAX]" of a distance key: 1..HOL_LEVEL_MAX_DIST, MIN <= MAX. */
+#define LEVEL_MAX_DIST 10
+static int level_range(char **f, int nf, int first, int *lo, int *hi)
+{
+    size_t a = cli_parse_count(f[first]);
+    size_t b = nf > first + 1 ? cli_parse_count(f[first + 1]) : a;
+    if (!a || !b || a > LEVEL_MAX_DIST || b > LEVEL_MAX_DIST || a > b)
+        return 1;
+    *lo = (int)a;
+    *hi = (int)b;
+    return 0;
+}
 
 int session_parse_level(const char *text, size_t len, hol_app_level *lvl, char *err,
                         size_t err_cap)
@@ -25,6 +105,11 @@ int session_parse_level(const char *text, size_t len, hol_app_level *lvl, char *
     L.cues = HOL_CUE_ALL;
     int have_mode = 0;
     long lineno = 0;
+    /* objectives by distance (resolved after the last line) and where each
+     * objective and placement was given */
+    int flag_lo = 0, flag_hi = 0, keys_n = 0, keys_lo = 0, keys_hi = 0, chest_lo = 0,
+        chest_hi = 0;
+    long flag_line = 0, keys_line = 0, chest_line = 0, place_line[HOL_WORLD_MAX_PLACES];
     const char *p = text, *end = text + len;
     while (p < end) {
         const char *nl = memchr(p, '\n', (size_t)(end - p));
@@ -91,10 +176,13 @@ int session_parse_level(const char *text, size_t len, hol_app_level *lvl, char *
                          f[1]);
                 return 1;
             }
-            if (key[0] == 'f')
+            if (key[0] == 'f') {
                 L.flag = t;
-            else
+                flag_line = lineno;
+            } else {
                 L.chest = t;
+                chest_line = lineno;
+            }
         } else if (!strcmp(key, "keys") && nf <= 6) {
             for (int i = 1; i < nf; i++)
                 if (hol_tile_parse(f[i], -1, &L.keys[i - 1])) {
@@ -103,6 +191,87 @@ int session_parse_level(const char *text, size_t len, hol_app_level *lvl, char *
                     return 1;
                 }
             L.nkeys = nf - 1;
+            keys_line = lineno;
+        } else if ((!strcmp(key, "flag-distance") || !strcmp(key, "chest-distance")) &&
+                   nf <= 3) {
+            int lo, hi;
+            if (level_range(f, nf, 1, &lo, &hi)) {
+                snprintf(err, err_cap, "line %ld: %s needs MIN [MAX] with 1 <= MIN <= MAX <= %d",
+                         lineno, key, LEVEL_MAX_DIST);
+                return 1;
+            }
+            if (key[0] == 'f') {
+                flag_lo = lo, flag_hi = hi;
+                flag_line = lineno;
+            } else {
+                chest_lo = lo, chest_hi = hi;
+                chest_line = lineno;
+            }
+        } else if (!strcmp(key, "keys-distance") && (nf == 3 || nf == 4)) {
+            size_t cnt = cli_parse_count(f[1]);
+            if (!cnt || cnt > HOL_APP_MAX_KEYS || level_range(f, nf, 2, &keys_lo, &keys_hi)) {
+                snprintf(err, err_cap,
+                         "line %ld: keys-distance needs COUNT (1..%d) MIN [MAX] (1 <= MIN <= "
+                         "MAX <= %d)", lineno, HOL_APP_MAX_KEYS, LEVEL_MAX_DIST);
+                return 1;
+            }
+            keys_n = (int)cnt;
+            keys_line = lineno;
+        } else if (!strcmp(key, "time-limit") && nf == 2) {
+            size_t secs = cli_parse_count(f[1]);
+            if (!secs || secs > 86400) {
+                snprintf(err, err_cap, "line %ld: time-limit '%.20s' is not seconds in 1..86400",
+                         lineno, f[1]);
+                return 1;
+            }
+            L.time_limit_s = (double)secs;
+        } else if (!strcmp(key, "stages")) {
+            unsigned st = 0;
+            for (int i = 1; i < nf; i++) {
+                size_t k = cli_parse_count(f[i]);
+                if (!k || k > HOL_APP_TUTORIAL_STAGES || nf > HOL_APP_TUTORIAL_STAGES + 1) {
+                    snprintf(err, err_cap, "line %ld: stages are lesson numbers 1..%d",
+                             lineno, HOL_APP_TUTORIAL_STAGES);
+                    return 1;
+                }
+                st |= 1u << (k - 1);
+            }
+            L.stages = st;
+        } else if (!strcmp(key, "place") && nf == 3) {
+            static const char *const objs[] = {"clearing", "grass", "flowers", "rock",
+                                               "mushroom", "pond"};
+            static const int ids[] = {HOL_OBJ_NONE, HOL_OBJ_GRASS, HOL_OBJ_FLOWERS,
+                                      HOL_OBJ_ROCK, HOL_OBJ_MUSHROOM, HOL_OBJ_POOL};
+            int o = -1;
+            for (int k = 0; k < 6; k++)
+                if (!strcmp(f[1], objs[k]))
+                    o = ids[k];
+            if (o < 0) {
+                snprintf(err, err_cap,
+                         "line %ld: place '%.20s' is not clearing, grass, flowers, rock, "
+                         "mushroom or pond", lineno, f[1]);
+                return 1;
+            }
+            hol_tile t;
+            if (hol_tile_parse(f[2], -1, &t)) {
+                snprintf(err, err_cap, "line %ld: '%.30s' is not a canonical address", lineno,
+                         f[2]);
+                return 1;
+            }
+            for (int k = 0; k < L.nplaces; k++)
+                if (hol_tile_eq(L.places[k].tile, t)) {
+                    snprintf(err, err_cap, "line %ld: %.30s is already placed on line %ld",
+                             lineno, f[2], place_line[k]);
+                    return 1;
+                }
+            if (L.nplaces >= HOL_WORLD_MAX_PLACES) {
+                snprintf(err, err_cap, "line %ld: more than %d placements", lineno,
+                         HOL_WORLD_MAX_PLACES);
+                return 1;
+            }
+            place_line[L.nplaces] = lineno;
+            L.places[L.nplaces].tile = t;
+            L.places[L.nplaces++].object = o;
         } else if (!strcmp(key, "cues")) {
             static const char *const cue_names[4] = {"hot-cold", "path", "poles", "arrow"};
             unsigned cues = 0;
@@ -146,6 +315,57 @@ int session_parse_level(const char *text, size_t len, hol_app_level *lvl, char *
     if (!have_mode) {
         snprintf(err, err_cap, "line %ld: no 'mode' line", lineno);
         return 1;
+    }
+    /* a placement may not stand where an objective is given */
+    hol_room r0 = hol_room_start();
+    for (int i = 0; i < L.nstart; i++)
+        if (hol_room_step(&r0, L.start[i])) {
+            snprintf(err, err_cap, "line %ld: the start walk leaves the room", lineno);
+            return 1;
+        }
+    for (int k = 0; k < L.nplaces; k++) {
+        hol_tile t = L.places[k].tile;
+        const char *what = NULL;
+        long at = 0;
+        if (L.mode == HOL_APP_FLAG && flag_line && !flag_lo && hol_tile_eq(t, L.flag))
+            what = "the flag", at = flag_line;
+        for (int j = 0; L.mode == HOL_APP_KEYS && !keys_n && j < L.nkeys; j++)
+            if (hol_tile_eq(t, L.keys[j]))
+                what = "a key", at = keys_line;
+        if (L.mode == HOL_APP_KEYS && chest_line && !chest_lo && hol_tile_eq(t, L.chest))
+            what = "the chest", at = chest_line;
+        if (what) {
+            char a[HOL_TILE_ADDR_MAX];
+            hol_tile_print(t, a);
+            snprintf(err, err_cap, "line %ld: the placement on %s conflicts with %s (line %ld)",
+                     place_line[k], a, what, at);
+            return 1;
+        }
+    }
+    /* objectives by distance from the start tile, drawn from the seed */
+    uint64_t rng = L.seed ^ 0x6c6576656cull;
+    if (L.mode == HOL_APP_FLAG && flag_lo &&
+        level_draw(&L, r0.tile, flag_lo, flag_hi, &rng, &L.flag)) {
+        snprintf(err, err_cap, "line %ld: no free tile for the flag at that distance", flag_line);
+        return 1;
+    }
+    if (L.mode == HOL_APP_KEYS && chest_lo &&
+        level_draw(&L, r0.tile, chest_lo, chest_hi, &rng, &L.chest)) {
+        snprintf(err, err_cap, "line %ld: no free tile for the chest at that distance",
+                 chest_line);
+        return 1;
+    }
+    if (L.mode == HOL_APP_KEYS && keys_n) {
+        L.nkeys = 0;
+        for (int k = 0; k < keys_n; k++) {
+            hol_tile t;
+            if (level_draw(&L, r0.tile, keys_lo, keys_hi, &rng, &t)) {
+                snprintf(err, err_cap, "line %ld: no free tile for key %d at that distance",
+                         keys_line, k + 1);
+                return 1;
+            }
+            L.keys[L.nkeys++] = t;
+        }
     }
     *lvl = L;
     return 0;
