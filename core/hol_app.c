@@ -99,6 +99,8 @@ hol_err hol_app_create(const hol_app_desc *desc, hol_app **out_app)
     } else {
         app->nav = d.nav;
     }
+    if (!err)
+        hol_nav_prepare_tours(app->nav); /* levels never pay for the leg table */
     if (err) {
         hol_alloc_release(&d.alloc, mem);
         return err;

@@ -109,6 +109,11 @@ hol_err hol_nav_find(hol_nav *nav, const hol_room *start, hol_tile target,
  *   first with hol_nav_find legs (exact = 0).
  * A key under the start counts as collected. nkeys = 0 is hol_nav_find.
  * Errors: as hol_nav_find; HOL_EARG for nkeys outside 0..5. */
+/* Build the state-to-state leg table of exact tours now (about 80 ms once)
+ * instead of in the first hol_nav_tour call, so no tour pays for it; the
+ * app calls it at create. Idempotent. */
+void hol_nav_prepare_tours(hol_nav *nav);
+
 hol_err hol_nav_tour(hol_nav *nav, const hol_room *start, const hol_tile *keys,
                      int nkeys, hol_tile chest, size_t budget,
                      uint8_t *out_walk, size_t cap, hol_nav_result *out_result);

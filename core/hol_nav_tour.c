@@ -15,6 +15,14 @@
 
 /* ---- tours ---- */
 
+void hol_nav_prepare_tours(hol_nav *nav)
+{
+    if (!nav->leg_ready) {
+        hol_navtab_build_legs(&nav->tab, nav->leg_radius, nav->leg, nav->nodes);
+        nav->leg_ready = 1;
+    }
+}
+
 /* Lower bound (exact within the trusted radius) on the steps from room
  * state (tile, o, cell) to stand on target. */
 static int hol__lb(const hol_nav *nav, hol_tile tile, int o, int cell, hol_tile target)
@@ -236,10 +244,7 @@ static hol_err hol__tour_dp(hol_nav *nav, const hol_room *start, const hol__tour
             if (j != k && !hol__rel_of(nav, t->keys[j], t->keys[k], lt, &pair[j][k]))
                 return HOL_ERANGE;
     }
-    if (!nav->leg_ready) {
-        hol_navtab_build_legs(&nav->tab, nav->leg_radius, nav->leg, nav->nodes);
-        nav->leg_ready = 1;
-    }
+    hol_nav_prepare_tours(nav);
     /* the table lives in the arena (nodes are not used by this path) */
     hol__dp *dp = (hol__dp *)nav->nodes;
     memset(dp->cost, 0xff, sizeof dp->cost);
