@@ -108,6 +108,11 @@ $(BUILD)/tests/test_level: tests/test_level.c $(LEVEL_SRC) $(CORE_LIB)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) -o $@ $< $(LEVEL_SRC) $(CORE_LIB) $(LDFLAGS) -lcmocka $(LDLIBS)
 
+# The headset layer's pure part (room in the stage, lifecycle).
+$(BUILD)/tests/test_xr_room: tests/test_xr_room.c platform/openxr/hol_xr_room.c platform/openxr/hol_xr_room.h $(CORE_LIB)
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) -o $@ $< platform/openxr/hol_xr_room.c $(CORE_LIB) $(LDFLAGS) -lcmocka $(LDLIBS)
+
 # The device layer against a scripted hidapi (tests/fake_hidapi): no device here.
 $(BUILD)/tests/test_hid_dev: tests/test_hid_dev.c tests/hid_samples.h tests/fake_hidapi/hidapi/hidapi.h $(HID_SRC) $(HID_DEV_SRC) $(CORE_LIB)
 	@mkdir -p $(dir $@)

@@ -1,0 +1,92 @@
+/* hol_xr_room.c - the room in the stage, the lifecycle (see hol_xr_room.h). */
+#include "hol_xr_room.h"
+
+#include <math.h>
+
+/* q = a * b (x, y, z, w) */
+static void hol__qmul(const double a[4], const double b[4], double q[4])
+{
+    q[0] = a[3] * b[0] + a[0] * b[3] + a[1] * b[2] - a[2] * b[1];
+    q[1] = a[3] * b[1] - a[0] * b[2] + a[1] * b[3] + a[2] * b[0];
+    q[2] = a[3] * b[2] + a[0] * b[1] - a[1] * b[0] + a[2] * b[3];
+    q[3] = a[3] * b[3] - a[0] * b[0] - a[1] * b[1] - a[2] * b[2];
+}
+
+/* rotation about +y by angle a, applied to (x, z) */
+static void hol__roty(double a, double x, double z, double *ox, double *oz)
+{
+    double c = cos(a), s = sin(a);
+    *ox = x * c + z * s;
+    *oz = -x * s + z * c;
+}
+
+void hol_xr_to_room(const hol_xr_calib *c, const float stage_pos[3], const float stage_quat[4],
+                    hol_pose *out)
+{
+    double x, z;
+    hol__roty(-c->yaw, stage_pos[0] - c->ox, stage_pos[2] - c->oz, &x, &z);
+    out->pos[0] = (float)(x + 1.5);
+    out->pos[1] = stage_pos[1];
+    out->pos[2] = (float)(z + 1.5);
+    double r[4] = {0, sin(-c->yaw / 2), 0, cos(-c->yaw / 2)};
+    double q[4] = {stage_quat[0], stage_quat[1], stage_quat[2], stage_quat[3]}, o[4];
+    hol__qmul(r, q, o);
+    for (int k = 0; k < 4; k++)
+        out->quat[k] = (float)o[k];
+}
+
+void hol_xr_to_stage(const hol_xr_calib *c, const hol_pose *room, float out_pos[3],
+                     float out_quat[4])
+{
+    double x, z;
+    hol__roty(c->yaw, room->pos[0] - 1.5, room->pos[2] - 1.5, &x, &z);
+    out_pos[0] = (float)(x + c->ox);
+    out_pos[1] = room->pos[1];
+    out_pos[2] = (float)(z + c->oz);
+    double r[4] = {0, sin(c->yaw / 2), 0, cos(c->yaw / 2)};
+    double q[4] = {room->quat[0], room->quat[1], room->quat[2], room->quat[3]}, o[4];
+    hol__qmul(r, q, o);
+    for (int k = 0; k < 4; k++)
+        out_quat[k] = (float)o[k];
+}
+
+void hol_xr_recentre(hol_xr_calib *c, const float head_pos[3], const float head_quat[4])
+{
+    /* forward = q (0, 0, -1) */
+    double x = head_quat[0], y = head_quat[1], z = head_quat[2], w = head_quat[3];
+    double fx = -(2 * (x * z + w * y)), fz = -(1 - 2 * (x * x + y * y));
+    if (fx * fx + fz * fz > 1e-6)
+        c->yaw = atan2(-fx, -fz);
+    c->ox = head_pos[0];
+    c->oz = head_pos[2];
+}
+
+int hol_xr_bounds_hold_room(float width, float depth)
+{
+    return width >= 3.0f && depth >= 3.0f;
+}
+
+hol_xr_do hol_xr_lifecycle(int state, int *out_running, int *out_focused)
+{
+    *out_focused = state == HOL_XR_STATE_FOCUSED;
+    switch (state) {
+    case HOL_XR_STATE_READY:
+        *out_running = 1;
+        return HOL_XR_DO_BEGIN;
+    case HOL_XR_STATE_SYNCHRONIZED:
+    case HOL_XR_STATE_VISIBLE:
+    case HOL_XR_STATE_FOCUSED:
+        *out_running = 1;
+        return HOL_XR_DO_NOTHING;
+    case HOL_XR_STATE_STOPPING:
+        *out_running = 0;
+        return HOL_XR_DO_END;
+    case HOL_XR_STATE_EXITING:
+    case HOL_XR_STATE_LOSS_PENDING:
+        *out_running = 0;
+        return HOL_XR_DO_TEAR_DOWN;
+    default:
+        *out_running = 0;
+        return HOL_XR_DO_NOTHING;
+    }
+}

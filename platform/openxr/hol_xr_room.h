@@ -1,0 +1,69 @@
+/* hol_xr_room.h - the 3 x 3 m room in an OpenXR stage, and the session
+ * lifecycle, as pure functions (no OpenXR headers, no GL): what the headset
+ * layer decides, testable without a runtime (tests/test_xr_room.c).
+ *
+ * Contract
+ * - Stage space (OpenXR): +x right, +y up, looking down -z. Room
+ *   coordinates (SPEC section 1): x east, y up, z south, move area x, z in
+ *   [0, 3]. By default the room is centred on the stage origin with north
+ *   along stage -z: room = stage + (1.5, 0, 1.5).
+ * - Recentre places the room from the head: the head's floor position
+ *   becomes the middle cell's centre (1.5, 1.5) and the direction it faces
+ *   (its forward vector projected on the floor) becomes room north; height
+ *   is kept. A head looking straight up or down keeps the previous heading.
+ * - Stage bounds (xrGetReferenceSpaceBoundsRect, full width and depth):
+ *   smaller than 3 x 3 m in either direction is a warning; none is not an
+ *   error.
+ * - Lifecycle: hol_xr_lifecycle maps each session state (the XrSessionState
+ *   values, mirrored below) to what the platform must do: READY begins the
+ *   session, STOPPING ends it, EXITING and LOSS_PENDING tear it down; the
+ *   game runs unpaused only while FOCUSED.
+ */
+#ifndef HOL_XR_ROOM_H
+#define HOL_XR_ROOM_H
+
+#include "../../core/hol_input.h"
+
+typedef struct hol_xr_calib {
+    double yaw;    /* radians: the room's north is stage -z turned by yaw
+                      about +y (positive towards -x, as the app's yaw) */
+    double ox, oz; /* stage floor point at the room's centre */
+} hol_xr_calib;   /* all zero: the default placement */
+
+/* Stage pose -> room pose. */
+void hol_xr_to_room(const hol_xr_calib *c, const float stage_pos[3], const float stage_quat[4],
+                    hol_pose *out);
+/* Room -> stage (for the projection layer and tests). */
+void hol_xr_to_stage(const hol_xr_calib *c, const hol_pose *room, float out_pos[3],
+                     float out_quat[4]);
+/* Place the room from the head's stage pose (see the contract). */
+void hol_xr_recentre(hol_xr_calib *c, const float head_pos[3], const float head_quat[4]);
+
+/* 1 when the stage bounds (metres) hold the room, 0 when smaller (warn). */
+int hol_xr_bounds_hold_room(float width, float depth);
+
+/* XrSessionState values (OpenXR 1.0, section 10.3). */
+enum {
+    HOL_XR_STATE_IDLE = 1,
+    HOL_XR_STATE_READY = 2,
+    HOL_XR_STATE_SYNCHRONIZED = 3,
+    HOL_XR_STATE_VISIBLE = 4,
+    HOL_XR_STATE_FOCUSED = 5,
+    HOL_XR_STATE_STOPPING = 6,
+    HOL_XR_STATE_LOSS_PENDING = 7,
+    HOL_XR_STATE_EXITING = 8
+};
+
+typedef enum hol_xr_do {
+    HOL_XR_DO_NOTHING = 0,
+    HOL_XR_DO_BEGIN,     /* xrBeginSession, then run frames */
+    HOL_XR_DO_END,       /* xrEndSession, stop frames */
+    HOL_XR_DO_TEAR_DOWN  /* destroy the session (and leave, or recreate) */
+} hol_xr_do;
+
+/* What to do on entering `state`; *out_running says whether frames run
+ * (xrWaitFrame/xrBeginFrame/xrEndFrame) and *out_focused whether the game
+ * has the input (not paused). */
+hol_xr_do hol_xr_lifecycle(int state, int *out_running, int *out_focused);
+
+#endif

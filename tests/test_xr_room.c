@@ -1,0 +1,145 @@
+/* test_xr_room.c - the room in an OpenXR stage and the session lifecycle
+ * (platform/openxr/hol_xr_room.h), without a runtime. Rotations are
+ * checked against an independent model: 3x3 matrices built from the
+ * quaternion and the yaw, not the module's quaternion product. */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdlib.h>
+
+#include <cmocka.h>
+
+#include "../platform/openxr/hol_xr_room.h"
+
+static double frand(uint64_t *s)
+{
+    *s = *s * 6364136223846793005ull + 1442695040888963407ull;
+    return (double)(*s >> 11) / 9007199254740992.0;
+}
+
+static void random_quat(uint64_t *s, float q[4])
+{
+    double a[4], n = 0;
+    for (int k = 0; k < 4; k++) {
+        a[k] = frand(s) * 2 - 1;
+        n += a[k] * a[k];
+    }
+    n = sqrt(n);
+    for (int k = 0; k < 4; k++)
+        q[k] = (float)(a[k] / n);
+}
+
+/* v rotated by unit quaternion q, as a matrix (the model) */
+static void rotate(const float q[4], const double v[3], double out[3])
+{
+    double x = q[0], y = q[1], z = q[2], w = q[3];
+    double m[3][3] = {{1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)},
+                      {2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)},
+                      {2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)}};
+    for (int i = 0; i < 3; i++)
+        out[i] = m[i][0] * v[0] + m[i][1] * v[1] + m[i][2] * v[2];
+}
+
+static void test_default_placement(void **state)
+{
+    (void)state;
+    hol_xr_calib c = {0, 0, 0};
+    float p[3] = {0, 1.7f, 0}, q[4] = {0, 0, 0, 1};
+    hol_pose r;
+    hol_xr_to_room(&c, p, q, &r);
+    assert_true(fabsf(r.pos[0] - 1.5f) < 1e-6f && fabsf(r.pos[2] - 1.5f) < 1e-6f);
+    assert_true(fabsf(r.pos[1] - 1.7f) < 1e-6f);
+    assert_true(fabsf(r.quat[3] - 1) < 1e-6f);
+    /* one metre ahead in the stage (-z) is one metre north in the room */
+    float p2[3] = {0.25f, 1.7f, -1};
+    hol_xr_to_room(&c, p2, q, &r);
+    assert_true(fabsf(r.pos[0] - 1.75f) < 1e-6f && fabsf(r.pos[2] - 0.5f) < 1e-6f);
+}
+
+/* Recentre from 2000 random head poses: the head lands on the middle
+ * cell's centre, its floor-projected forward becomes room north, and
+ * room <-> stage round-trips. */
+static void test_recentre(void **state)
+{
+    (void)state;
+    uint64_t s = 7;
+    for (int i = 0; i < 2000; i++) {
+        hol_xr_calib c = {frand(&s) * 6, frand(&s) * 4 - 2, frand(&s) * 4 - 2};
+        float p[3] = {(float)(frand(&s) * 6 - 3), (float)(1 + frand(&s)),
+                      (float)(frand(&s) * 6 - 3)}, q[4];
+        random_quat(&s, q);
+        double fwd[3], nz[3] = {0, 0, -1};
+        rotate(q, nz, fwd);
+        if (fwd[0] * fwd[0] + fwd[2] * fwd[2] < 1e-3)
+            continue; /* looking straight up or down */
+        hol_xr_recentre(&c, p, q);
+        hol_pose r;
+        hol_xr_to_room(&c, p, q, &r);
+        assert_true(fabsf(r.pos[0] - 1.5f) < 1e-4f && fabsf(r.pos[2] - 1.5f) < 1e-4f);
+        assert_true(fabsf(r.pos[1] - p[1]) < 1e-6f);
+        double rf[3];
+        rotate(r.quat, nz, rf);
+        double h = sqrt(rf[0] * rf[0] + rf[2] * rf[2]);
+        assert_true(fabs(rf[0] / h) < 1e-4 && rf[2] / h < -0.9999);
+        /* the vertical is kept: the pitch of the forward vector */
+        assert_true(fabs(rf[1] - fwd[1]) < 1e-4);
+        /* round trip */
+        float p3[3] = {(float)(frand(&s) * 4 - 2), 1.6f, (float)(frand(&s) * 4 - 2)}, q3[4];
+        random_quat(&s, q3);
+        hol_xr_to_room(&c, p3, q3, &r);
+        float bp[3], bq[4];
+        hol_xr_to_stage(&c, &r, bp, bq);
+        for (int k = 0; k < 3; k++)
+            assert_true(fabsf(bp[k] - p3[k]) < 1e-4f);
+        double dot = 0;
+        for (int k = 0; k < 4; k++)
+            dot += (double)bq[k] * q3[k];
+        assert_true(fabs(fabs(dot) - 1) < 1e-5);
+    }
+}
+
+static void test_bounds(void **state)
+{
+    (void)state;
+    assert_true(hol_xr_bounds_hold_room(3, 3));
+    assert_true(hol_xr_bounds_hold_room(4, 3.5f));
+    assert_false(hol_xr_bounds_hold_room(2.9f, 4));
+    assert_false(hol_xr_bounds_hold_room(4, 2.5f));
+}
+
+static void test_lifecycle(void **state)
+{
+    (void)state;
+    static const struct {
+        int st, act, running, focused;
+    } t[] = {
+        {HOL_XR_STATE_IDLE, HOL_XR_DO_NOTHING, 0, 0},
+        {HOL_XR_STATE_READY, HOL_XR_DO_BEGIN, 1, 0},
+        {HOL_XR_STATE_SYNCHRONIZED, HOL_XR_DO_NOTHING, 1, 0},
+        {HOL_XR_STATE_VISIBLE, HOL_XR_DO_NOTHING, 1, 0},
+        {HOL_XR_STATE_FOCUSED, HOL_XR_DO_NOTHING, 1, 1},
+        {HOL_XR_STATE_STOPPING, HOL_XR_DO_END, 0, 0},
+        {HOL_XR_STATE_LOSS_PENDING, HOL_XR_DO_TEAR_DOWN, 0, 0},
+        {HOL_XR_STATE_EXITING, HOL_XR_DO_TEAR_DOWN, 0, 0},
+        {0, HOL_XR_DO_NOTHING, 0, 0},
+    };
+    for (size_t i = 0; i < sizeof t / sizeof t[0]; i++) {
+        int running = -1, focused = -1;
+        assert_int_equal(hol_xr_lifecycle(t[i].st, &running, &focused), t[i].act);
+        assert_int_equal(running, t[i].running);
+        assert_int_equal(focused, t[i].focused);
+    }
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_default_placement),
+        cmocka_unit_test(test_recentre),
+        cmocka_unit_test(test_bounds),
+        cmocka_unit_test(test_lifecycle),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
