@@ -11,7 +11,8 @@
 #   make clean      remove build outputs
 #
 # Variables: CC (gcc or clang), BUILD (output folder), FUZZ_TIME (seconds),
-# HID (hidapi backend: hidraw, the default, or libusb).
+# HID (hidapi backend: hidraw, the default, or libusb), XR (1: build
+# `holonomy xr`, the OpenXR headset layer; needs libopenxr-dev and GLX).
 
 CC      ?= gcc
 BUILD   ?= build
@@ -31,6 +32,14 @@ CLI_SRC  := $(wildcard platform/cli/*.c)
 PLAT_SRC := $(wildcard platform/file/*.c platform/image/*.c)
 # Gamepads: the pure descriptor parser and report decoder (tests, fuzz,
 # benches link these) and the hidapi device layer (the tool only).
+# The headset (OpenXR): the pure room/lifecycle part always, the session
+# only with `make XR=1` (CI builds and runs it in the Monado chroot).
+XR      ?= 0
+XR_SRC  := platform/openxr/hol_xr_room.c $(if $(filter 1,$(XR)),platform/openxr/hol_xr.c)
+XR_LIBS := $(if $(filter 1,$(XR)),-lopenxr_loader -lGL -lX11)
+ifeq ($(XR),1)
+$(BUILD)/platform/cli/cmd_xr.o: override CFLAGS += -DHOL_XR
+endif
 HID_SRC  := platform/hid/hol_hid_desc.c platform/hid/hol_hid_pad.c platform/hid/hol_hid_link.c
 HID_DEV_SRC := platform/hid/hol_hid_dev.c
 # hidapi backend: hidraw (default, Linux hidraw nodes) or `make HID=libusb`
@@ -52,7 +61,7 @@ FUZZ_SRC := $(wildcard fuzz/fuzz_*.c)
 
 CORE_OBJ := $(CORE_SRC:%.c=$(BUILD)/%.o)
 CLI_OBJ  := $(CLI_SRC:%.c=$(BUILD)/%.o) $(PLAT_SRC:%.c=$(BUILD)/%.o) \
-  $(HID_SRC:%.c=$(BUILD)/%.o) $(HID_DEV_SRC:%.c=$(BUILD)/%.o)
+  $(HID_SRC:%.c=$(BUILD)/%.o) $(HID_DEV_SRC:%.c=$(BUILD)/%.o) $(XR_SRC:%.c=$(BUILD)/%.o)
 PLAT_OBJ := $(PLAT_SRC:%.c=$(BUILD)/%.o)
 CORE_LIB := $(BUILD)/libholcore.a
 RENDER_OBJ := $(RENDER_SRC:%.c=$(BUILD)/%.o)
@@ -75,7 +84,7 @@ APT_LOCK_WAIT ?= 120
 APT_GET = $$SUDO env DEBIAN_FRONTEND=noninteractive apt-get -o DPkg::Lock::Timeout=$(APT_LOCK_WAIT)
 
 .PHONY: all test purity unit render-test cli-test fuzz-replay fuzz bench san clean deps \
-        deps-cross check-clang cross-test run quest quest-help deps-quest quest-check check-hid-libusb
+        deps-cross check-clang cross-test run quest quest-help deps-quest quest-check check-hid-libusb deps-xr xr-test
 
 all: $(BUILD)/holonomy
 
@@ -92,7 +101,7 @@ $(RENDER_LIB): $(RENDER_OBJ)
 	$(AR) rcs $@ $^
 
 $(BUILD)/holonomy: $(CLI_OBJ) $(RENDER_LIB) $(CORE_LIB)
-	$(CC) $(CFLAGS) -o $@ $(CLI_OBJ) $(RENDER_LIB) $(CORE_LIB) $(LDFLAGS) $(APP_LIBS) $(HID_LIBS) $(LDLIBS)
+	$(CC) $(CFLAGS) -o $@ $(CLI_OBJ) $(RENDER_LIB) $(CORE_LIB) $(LDFLAGS) $(APP_LIBS) $(HID_LIBS) $(XR_LIBS) $(LDLIBS)
 
 $(RENDER_TEST_BIN): $(BUILD)/tests/%: tests/%.c $(wildcard tests/*.h) $(PLAT_OBJ) $(RENDER_LIB) $(CORE_LIB)
 	@mkdir -p $(dir $@)
@@ -226,6 +235,14 @@ QUEST_DEB_PACKAGES := aapt zipalign android-framework-res
 quest:
 	@NDK="$(NDK)" OPENXR_LOADER="$(OPENXR_LOADER)" BUILD="$(BUILD)" \
 	  sh platform/android/build_apk.sh
+
+# The headset against a real OpenXR runtime: Monado in a Debian trixie
+# chroot (tests/xr/, about 1.5 GB, cached at /var/cache/holonomy; needs root).
+deps-xr:
+	@$(MAKE) -s deps DEB_PACKAGES="debootstrap"
+
+xr-test: deps-xr
+	@sh tests/xr/run.sh
 
 # The libusb hidapi backend builds too (CI builds it beside the default).
 check-hid-libusb:

@@ -19,6 +19,7 @@ static const cli_command commands[] = {
     {"game", cli_cmd_game, "play a level headless from lines of room steps: done|open STEPS OPTIMUM"},
     {"play", cli_cmd_play, "play in a desktop window (EGL/X11); logs, recording"},
     {"replay", cli_cmd_replay, "run a recording again: the same logs, PNG frames"},
+    {"xr", cli_cmd_xr, "the headset app on this machine's OpenXR runtime (make XR=1)"},
     {"hid", cli_cmd_hid, "game controllers: descriptor field maps, list, watch"},
 };
 

@@ -1,0 +1,65 @@
+#!/bin/sh
+# tests/xr/inside.sh - run inside the Monado chroot by tests/xr/run.sh:
+# Xvfb, monado-service (null compositor, simulated headset and simple
+# controllers, lavapipe), then `holonomy xr` under the Khronos core
+# validation layer, and the checks of `make xr-test`. Prints one line per
+# check; exit 0 only when every check passes.
+set -u
+BIN=${1:-build/xr/holonomy}
+out=/tmp/xr-test
+rm -rf "$out" && mkdir -p "$out/run" "$out/check" "$out/logs"
+chmod 700 "$out/run"
+export XDG_RUNTIME_DIR="$out/run"
+Xvfb :77 -screen 0 640x480x24 -nolisten tcp >"$out/xvfb.log" 2>&1 &
+xvfb=$!
+env XRT_COMPOSITOR_NULL=1 SIMULATED_ENABLE=1 SIMULATED_LEFT=simple SIMULATED_RIGHT=simple \
+    XRT_NO_STDIN=1 VK_ICD_FILENAMES=/usr/share/vulkan/icd.d/lvp_icd.json \
+    monado-service >"$out/monado.log" 2>&1 &
+monado=$!
+cleanup() { kill "$monado" "$xvfb" 2>/dev/null; wait 2>/dev/null; }
+trap cleanup EXIT
+# wait for the service's socket and the display
+for i in $(seq 1 100); do
+    [ -S "$out/run/monado_comp_ipc" ] && [ -e /tmp/.X11-unix/X77 ] && break
+    sleep 0.1
+done
+fail=0
+check() { if eval "$2"; then echo "xr-test: ok: $1"; else echo "xr-test: FAIL: $1"; fail=1; fi; }
+printf 'mode flag\nseed 5\nflag Wrf\nminimap off\ncues none\n' >"$out/level.txt"
+# scripted head motion (the simulated headset does not move): from the
+# middle cell's centre 1 m north over 100 frames, across the cell edge
+awk 'BEGIN { for (k = 0; k < 150; k++) { z = 1.5 - (k < 100 ? k : 100) / 100.0;
+     printf "%.4f f=9 h=1.5,1.6,%.4f,0,0,0,1\n", k / 72.0, z } }' >"$out/head.txt"
+start=$(date +%s)
+env DISPLAY=:77 XR_ENABLE_API_LAYERS=XR_APILAYER_LUNARG_core_validation \
+    "$BIN" xr "$out/level.txt" --frames 150 --check-frame 60 --check-dir "$out/check" \
+    --log "$out/logs" --record "$out/session.rec" --input "$out/head.txt" >"$out/xr.out" 2>"$out/xr.err"
+rc=$?
+echo "xr-test: holonomy xr ran $(( $(date +%s) - start )) s, exit $rc"
+sed 's/^/  | /' "$out/xr.out"
+[ -s "$out/xr.err" ] && sed 's/^/  ! /' "$out/xr.err" | head -20
+all="$out/xr.out $out/xr.err"
+check "exit status 0" '[ "$rc" = 0 ]'
+check "the session reached FOCUSED" 'grep -q "^xr: state FOCUSED" $all'
+n=$(sed -n 's/^xr: frames submitted \([0-9]*\).*/\1/p' "$out/xr.out")
+check "at least 120 frames submitted (${n:-none})" '[ "${n:-0}" -ge 120 ]'
+for p in khr/simple_controller oculus/touch_controller htc/vive_controller \
+         valve/index_controller microsoft/motion_controller; do
+    check "bindings accepted: $p" "grep -q 'bindings accepted $p' $all"
+done
+check "left grip located" 'grep -q "^xr: grip left located" $all'
+check "right grip located" 'grep -q "^xr: grip right located" $all'
+check "quit went through STOPPING to EXITING" \
+    'grep -q "^xr: state STOPPING" $all && grep -q "session ended after STOPPING" $all && grep -q "^xr: state EXITING" $all'
+pct=$(sed -n 's/^xr: check frame .*(\([0-9.]*\) %).*/\1/p' "$out/xr.out")
+check "swapchain read back equals the OSMesa render (${pct:-none} % of pixels differ; at most 0.5)" \
+    '[ -n "$pct" ] && awk "BEGIN{exit !($pct <= 0.5)}"'
+check "the core validation layer ran" 'grep -q "Core Validation" $all'
+check "no VALID_ERROR or VALID_WARNING from the validation layer" \
+    '! grep -q "VALID_ERROR\|VALID_WARNING" $all'
+check "the scripted head walked a room step north (steps log)" \
+    'grep -q ",N," "$out/logs/steps-001.csv"'
+check "the session's logs were written" '[ -s "$out/logs/summary.csv" ]'
+check "the recording replays headless" \
+    'mkdir -p "$out/replay-logs" && "$BIN" replay "$out/session.rec" --log "$out/replay-logs" >/dev/null 2>&1 && cmp -s "$out/logs/summary.csv" "$out/replay-logs/summary.csv"'
+exit $fail

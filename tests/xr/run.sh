@@ -1,0 +1,30 @@
+#!/bin/sh
+# tests/xr/run.sh - `make xr-test`: the headset layer against a real OpenXR
+# runtime. Builds (or reuses) the Debian trixie chroot with Monado
+# (tests/xr/chroot.sh), copies the source tree into it, builds
+# `holonomy` with XR=1 there with the chroot's compiler, and runs
+# tests/xr/inside.sh (Xvfb, monado-service, holonomy xr under the core
+# validation layer, the checks). Binds /proc and /dev for the run and always
+# unbinds them. Needs root.
+set -eu
+root=$(cd "$(dirname "$0")/../.." && pwd)
+start=$(date +%s)
+CHROOT=$(sh "$root/tests/xr/chroot.sh")
+echo "xr-test: chroot ready at $CHROOT ($(( $(date +%s) - start )) s)"
+cleanup() {
+    umount "$CHROOT/dev" 2>/dev/null || true
+    umount "$CHROOT/proc" 2>/dev/null || true
+}
+trap cleanup EXIT
+mountpoint -q "$CHROOT/proc" || mount --bind /proc "$CHROOT/proc"
+mountpoint -q "$CHROOT/dev" || mount --bind /dev "$CHROOT/dev"
+rm -rf "$CHROOT/src"
+mkdir -p "$CHROOT/src"
+(cd "$root" && git ls-files -z | xargs -0 tar -cf - 2>/dev/null) | tar -C "$CHROOT/src" -xf -
+chroot "$CHROOT" sh -c 'cd /src && make -s -j2 BUILD=build/xr XR=1 build/xr/holonomy' || {
+    echo "xr-test: FAIL: building holonomy with XR=1 in the chroot" >&2; exit 1; }
+echo "xr-test: built in the chroot ($(( $(date +%s) - start )) s)"
+chroot "$CHROOT" sh -c 'cd /src && timeout 600 sh tests/xr/inside.sh build/xr/holonomy'
+rc=$?
+echo "xr-test: done in $(( $(date +%s) - start )) s"
+exit $rc
