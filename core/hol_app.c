@@ -448,6 +448,13 @@ static void hol__fill_view(hol_app *app, const hol_input *in)
     } else {
         h->status[0] = 0;
     }
+    /* safety: a tracked head beyond the hedges; a play area too small */
+    if (in && (in->flags & HOL_INPUT_HEAD_VALID) &&
+        (in->head.pos[0] < 0 || in->head.pos[0] > HOL_ROOM_SIZE || in->head.pos[2] < 0 ||
+         in->head.pos[2] > HOL_ROOM_SIZE))
+        snprintf(h->status, sizeof h->status, "Outside the room: step back in");
+    if (in && (in->flags & HOL_INPUT_BOUNDS_SMALL) && !h->hint[0])
+        snprintf(h->hint, sizeof h->hint, "Play area under 3 x 3 m: mind the edges");
     h->nlines = 0;
     snprintf(h->lines[h->nlines++], HOL_APP_TEXT_MAX, "%s", h->status[0] ? h->status : h->objective);
     snprintf(h->lines[h->nlines++], HOL_APP_TEXT_MAX, "STEPS %d", h->steps);

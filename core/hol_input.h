@@ -30,6 +30,8 @@
 #define HOL_INPUT_HAND_R_VALID (1u << 2)
 #define HOL_INPUT_FOCUSED      (1u << 3) /* the app has focus (unfocused: pause) */
 #define HOL_INPUT_DEVICE_LOST  (1u << 4) /* the active controller went away */
+#define HOL_INPUT_BOUNDS_SMALL (1u << 5) /* the play area is smaller than the
+                                            3 x 3 m room: the HUD warns */
 
 /* buttons (held) */
 #define HOL_BTN_CONFIRM  (1u << 0) /* confirm / next level */

@@ -26,7 +26,7 @@ int hol_input_valid(const hol_input *in)
 {
     const uint32_t known = HOL_INPUT_HEAD_VALID | HOL_INPUT_HAND_L_VALID |
                            HOL_INPUT_HAND_R_VALID | HOL_INPUT_FOCUSED |
-                           HOL_INPUT_DEVICE_LOST;
+                           HOL_INPUT_DEVICE_LOST | HOL_INPUT_BOUNDS_SMALL;
     if (!(isfinite(in->time_s) && in->time_s >= 0))
         return 0;
     if ((in->flags & ~known) || (in->buttons & ~(uint32_t)HOL_BTN_ALL))

@@ -497,6 +497,36 @@ static void test_tutorial_stages(void **state)
     hol_app_destroy(app);
 }
 
+/* Safety on the HUD: a tracked head beyond the hedges is told to step back
+ * in (the world does not move: the user stays in the cell); a play area
+ * smaller than the room is warned about. */
+static void test_safety_hud(void **state)
+{
+    (void)state;
+    hol_app *app = make_app();
+    hol_app_level L = flag_level("Wrf");
+    assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    const hol_app_view *v = hol_app_get_view(app);
+    hol_input in = tracked_at(0, 1, 1);
+    in.flags |= HOL_INPUT_BOUNDS_SMALL;
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    assert_true(strstr(v->hud.hint, "under 3 x 3 m") != NULL);
+    assert_int_equal(v->hud.status[0], 0);
+    in = tracked_at(0.05, 0, 1); /* into the west cell: a room step */
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    hol_room before = v->user;
+    in = tracked_at(0.1, 0, 1);
+    in.head.pos[0] = -0.4f; /* on through the west hedge */
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    assert_true(strstr(v->hud.status, "Outside the room") != NULL);
+    assert_true(hol_tile_eq(v->user.tile, before.tile));
+    assert_int_equal(v->user.col, before.col);
+    in = tracked_at(0.2, 0, 1);
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    assert_int_equal(v->hud.status[0], 0);
+    hol_app_destroy(app);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -506,6 +536,7 @@ int main(void)
         cmocka_unit_test(test_keys_level),
         cmocka_unit_test(test_tutorial),
         cmocka_unit_test(test_time_limit),
+        cmocka_unit_test(test_safety_hud),
         cmocka_unit_test(test_tutorial_stages),
         cmocka_unit_test(test_pause_quit),
         cmocka_unit_test(test_deterministic),

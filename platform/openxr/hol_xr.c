@@ -599,6 +599,8 @@ static int hol__frame(hol__xr *x)
     x->last_t = in.time_s;
     if (x->focused)
         in.flags |= HOL_INPUT_FOCUSED;
+    if (x->bounds_small)
+        in.flags |= HOL_INPUT_BOUNDS_SMALL;
     XrSpaceLocation loc = {XR_TYPE_SPACE_LOCATION};
     float hp[3] = {0, 1.6f, 0}, hq[4] = {0, 0, 0, 1};
     if (XR_SUCCEEDED(xrLocateSpace(x->view_space, x->stage, fs.predictedDisplayTime, &loc)) &&
