@@ -69,13 +69,13 @@ mkdir -p "$stage/apk/lib/arm64-v8a"
 # The native library: core, renderer, OpenXR layer (GLES binding) and the
 # NativeActivity shell, all compiled and tested on the desktop except the
 # shell.
+glue="$NDK/sources/android/native_app_glue"
 srcs=$(ls "$root"/core/*.c "$root"/render/*.c "$root"/platform/openxr/*.c \
-          "$root"/platform/android/*.c 2>/dev/null)
+          "$root"/platform/android/*.c "$glue"/android_native_app_glue.c 2>/dev/null)
 # shellcheck disable=SC2086
 "$cc" -std=c11 -O2 -g -fPIC -shared -D_DEFAULT_SOURCE -DHOL_GLES=1 \
-    -DXR_USE_PLATFORM_ANDROID -DXR_USE_GRAPHICS_API_OPENGL_ES \
-    -I"$OPENXR_INCLUDE" -I"$root" \
-    -Wl,--no-undefined -Wl,-z,max-page-size=16384 \
+    -I"$OPENXR_INCLUDE" -I"$root" -I"$glue" \
+    -Wl,--no-undefined -Wl,-z,max-page-size=16384 -u ANativeActivity_onCreate \
     -o "$stage/apk/lib/arm64-v8a/libholonomy.so" $srcs \
     "$OPENXR_LOADER" -landroid -llog -lEGL -lGLESv3 -lm
 cp "$OPENXR_LOADER" "$stage/apk/lib/arm64-v8a/libopenxr_loader.so"

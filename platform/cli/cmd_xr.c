@@ -180,7 +180,8 @@ int cli_cmd_xr(int argc, char **argv)
         d.check_dir = check_dir;
         d.script = script;
         d.nscript = nscript;
-        hol_xr_app_fns fns = {&s, xr_step, xr_world, xr_level_started};
+        hol_xr_app_fns fns = {.user = &s, .step = xr_step, .world = xr_world,
+                               .level_started = xr_level_started};
         status = hol_xr_run(&d, &fns) ? CLI_EXIT_FAIL : CLI_EXIT_OK;
     }
     if (s.app || s.recording) {

@@ -802,11 +802,25 @@ static int hol__run(hol__xr *x)
 {
     XrInstanceCreateInfo ic = {XR_TYPE_INSTANCE_CREATE_INFO};
 #ifdef __ANDROID__
-    const char *ext[] = {XR_KHR_OPENGL_ES_ENABLE_EXTENSION_NAME};
+    /* the Android loader needs the VM and the activity before anything */
+    PFN_xrInitializeLoaderKHR init_loader = NULL;
+    HOL__XR(x, xrGetInstanceProcAddr(XR_NULL_HANDLE, "xrInitializeLoaderKHR",
+                                     (PFN_xrVoidFunction *)&init_loader));
+    XrLoaderInitInfoAndroidKHR li = {XR_TYPE_LOADER_INIT_INFO_ANDROID_KHR};
+    li.applicationVM = x->d->android_vm;
+    li.applicationContext = x->d->android_activity;
+    HOL__XR(x, init_loader((const XrLoaderInitInfoBaseHeaderKHR *)&li));
+    XrInstanceCreateInfoAndroidKHR ai = {XR_TYPE_INSTANCE_CREATE_INFO_ANDROID_KHR};
+    ai.applicationVM = x->d->android_vm;
+    ai.applicationActivity = x->d->android_activity;
+    ic.next = &ai;
+    const char *ext[] = {XR_KHR_OPENGL_ES_ENABLE_EXTENSION_NAME,
+                         XR_KHR_ANDROID_CREATE_INSTANCE_EXTENSION_NAME};
+    ic.enabledExtensionCount = 2;
 #else
     const char *ext[] = {XR_KHR_OPENGL_ENABLE_EXTENSION_NAME};
-#endif
     ic.enabledExtensionCount = 1;
+#endif
     ic.enabledExtensionNames = ext;
     snprintf(ic.applicationInfo.applicationName, sizeof ic.applicationInfo.applicationName, "%s",
              x->d->app_name ? x->d->app_name : "Holonomy");
@@ -843,6 +857,14 @@ static int hol__run(hol__xr *x)
         return 1;
     }
     while (!x->done) {
+        if (x->fns->poll_platform && x->fns->poll_platform(x->fns->user) &&
+            !x->quit_requested && x->session != XR_NULL_HANDLE) {
+            if (x->running)
+                xrRequestExitSession(x->session);
+            else
+                x->done = 1;
+            x->quit_requested = 1;
+        }
         hol__events(x);
         if (x->done)
             break;

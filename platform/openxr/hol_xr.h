@@ -41,6 +41,10 @@ typedef struct hol_xr_app_fns {
     struct hol_world *(*world)(void *user);
     /* A level (re)started in the last step: resident meshes are stale. */
     int (*level_started)(void *user);
+    /* Optional: the platform's own events once per loop (Android: the
+     * activity's looper; pause, resume, window). Returns 1 when the
+     * platform wants to leave (the session then exits properly). */
+    int (*poll_platform)(void *user);
 } hol_xr_app_fns;
 
 typedef struct hol_xr_desc {
@@ -55,6 +59,9 @@ typedef struct hol_xr_desc {
                                 coordinates) instead of the runtime's (the
                                 simulated headset does not move) */
     long nscript;
+    /* Android only: the JavaVM and the activity object (jobject), for
+     * xrInitializeLoaderKHR and XR_KHR_android_create_instance. */
+    void *android_vm, *android_activity;
 } hol_xr_desc;
 
 /* 0 ok, 1 failure (one line on stderr). */
