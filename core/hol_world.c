@@ -106,6 +106,14 @@ static int hol__plan(const hol_world_desc *desc, hol__layout *l)
     return 1;
 }
 
+uint32_t hol_world_capacity_of(const hol_world_desc *desc)
+{
+    hol__layout l;
+    if (!desc || !hol__plan(desc, &l))
+        return 0;
+    return l.cap;
+}
+
 size_t hol_world_mem_size(const hol_world_desc *desc)
 {
     hol__layout l;

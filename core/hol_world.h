@@ -189,6 +189,9 @@ typedef struct hol_world_stats {
     size_t bytes;              /* memory of the whole world (fixed) */
 } hol_world_stats;
 
+/* The capacity a world made from desc has (after raising and rounding up,
+ * as hol_world_desc.capacity says); 0 for an invalid desc. */
+uint32_t hol_world_capacity_of(const hol_world_desc *desc);
 /* Bytes hol_world_init needs for this desc (0 for an invalid desc). */
 size_t hol_world_mem_size(const hol_world_desc *desc);
 /* A world over caller memory (aligned to 16, mem_size bytes). */
@@ -262,6 +265,13 @@ hol_err hol_world_save(const hol_world *w, void *buf, size_t cap,
  * store come from the image; capacity, allocator and statistics stay. */
 hol_err hol_world_load(hol_world *w, const void *buf, size_t len, char *msg,
                        size_t msg_cap);
+/* The length a world image promises, from its first HOL_WORLD_IMAGE_HEADER
+ * bytes alone (magic, version, record size, record count), so a reader can
+ * compare it with the file's size before reading the rest. Errors and msg
+ * as hol_world_load (a shorter buffer is HOL_ECORRUPT). */
+#define HOL_WORLD_IMAGE_HEADER 64
+hol_err hol_world_image_size(const void *header, size_t len, uint64_t *out_len, char *msg,
+                             size_t msg_cap);
 /* The desc (seed, radius, a capacity that holds the image) to make a world
  * for an image, after checking its header, length and checksum; errors and
  * msg as hol_world_load. */

@@ -150,6 +150,33 @@ static hol_err hol__say(char *msg, size_t cap, hol_err err, const char *fmt,
     return err;
 }
 
+hol_err hol_world_image_size(const void *header, size_t len, uint64_t *out_len, char *msg,
+                             size_t msg_cap)
+{
+    const uint8_t *p = header;
+    if (!header || len < 12)
+        return hol__say(msg, msg_cap, HOL_ECORRUPT,
+                        "truncated: %llu bytes, a world image has at least %llu",
+                        (unsigned long long)len, HOL__HDR + 8);
+    if (memcmp(p, HOL__MAGIC, 8))
+        return hol__say(msg, msg_cap, HOL_ECORRUPT, "not a holonomy world image%.0llu%.0llu",
+                        0, 0);
+    uint32_t version = hol__get32(p + 8);
+    if (version != HOL__VERSION)
+        return hol__say(msg, msg_cap, HOL_EVERSION,
+                        "format version %llu, this build reads version %llu", version,
+                        HOL__VERSION);
+    if (len < HOL__HDR)
+        return hol__say(msg, msg_cap, HOL_ECORRUPT,
+                        "truncated: %llu bytes, a world image has at least %llu",
+                        (unsigned long long)len, HOL__HDR + 8);
+    if (hol__get32(p + 12) != HOL__REC)
+        return hol__say(msg, msg_cap, HOL_ECORRUPT, "record size %llu, expected %llu",
+                        hol__get32(p + 12), HOL__REC);
+    *out_len = HOL__HDR + (uint64_t)hol__get32(p + 28) * HOL__REC + 8;
+    return HOL_OK;
+}
+
 /* Header, length, checksum (when `sum`), header fields. */
 static hol_err hol__parse_header(const void *buf, size_t len, hol__image *im,
                                  int sum, char *msg, size_t cap)

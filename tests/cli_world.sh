@@ -67,7 +67,7 @@ W=$(awk 'BEGIN { srand(7); c = 1; r = 1; s = ""; n = 0
     if (nc < 0 || nc > 2 || nr < 0 || nr > 2) continue
     c = nc; r = nr; s = s substr("NWSE", d + 1, 1); n++ }
   print s }')
-run "small store" 0 "$H" world --seed 2 --walk "$W" --capacity 1024 --check --quiet --stats
+run "small store" 0 "$H" world --seed 2 --walk "$W" --capacity 4096 --check --quiet --stats
 if awk '$1 == "#" && $2 == "tiles" { ok = $3 < $5 && $5 == 4096 && $9 > 0 } END { exit !ok }' "$T/out"; then ok
 else bad "small store: want tiles < capacity 4096 and evictions, got $(cat "$T/out")"; fi
 

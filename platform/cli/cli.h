@@ -67,6 +67,14 @@ void cli_error(const char *cmd, long lineno, const char *fmt, ...)
  * Returns the number of fields found (max + 1 means "more than max"). */
 int cli_split(char *s, size_t len, char **fields, size_t *lens, int max);
 
+/* Read a whole input file of at most max bytes (platform/file): 0, or the
+ * exit status of a failure reported as one line naming WHAT and PATH: a
+ * file that cannot be opened, is not a regular file (a FIFO, a directory:
+ * refused at once) or is larger than max is bad input (2); a failed read
+ * or no memory is 1. Free *out_data with free(). */
+int cli_read_file(const char *cmd, const char *what, const char *path, size_t max,
+                  uint8_t **out_data, size_t *out_size);
+
 /* Flush stdout; on failure report it and return CLI_EXIT_FAIL. */
 int cli_finish_output(const char *cmd);
 

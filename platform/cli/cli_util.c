@@ -1,6 +1,8 @@
 #define _POSIX_C_SOURCE 200809L
 #include "cli.h"
 
+#include "../file/hol_file.h"
+
 #include <errno.h>
 #include <stdarg.h>
 #include <stdlib.h>
@@ -46,15 +48,22 @@ void cli_error(const char *cmd, long lineno, const char *fmt, ...)
     va_start(ap, fmt);
     vsnprintf(msg, sizeof msg, fmt, ap);
     va_end(ap);
-    /* one line, whatever the message holds */
-    for (char *p = msg; *p; p++)
-        if (*p == '\n' || *p == '\r')
-            *p = ' ';
+    /* one line, whatever the message holds: control bytes (from option
+     * values, file names, input) are shown escaped, never sent raw */
+    char safe[4 * sizeof msg];
+    size_t o = 0;
+    for (const unsigned char *p = (const unsigned char *)msg; *p && o + 5 < sizeof safe; p++) {
+        if (*p < 0x20 || *p == 0x7f)
+            o += (size_t)snprintf(safe + o, sizeof safe - o, "\\x%02x", *p);
+        else
+            safe[o++] = (char)*p;
+    }
+    safe[o] = 0;
     const char *sep = cmd[0] ? " " : "";
     if (lineno > 0)
-        fprintf(stderr, "holonomy%s%s: line %ld: %s\n", sep, cmd, lineno, msg);
+        fprintf(stderr, "holonomy%s%s: line %ld: %s\n", sep, cmd, lineno, safe);
     else
-        fprintf(stderr, "holonomy%s%s: %s\n", sep, cmd, msg);
+        fprintf(stderr, "holonomy%s%s: %s\n", sep, cmd, safe);
 }
 
 int cli_split(char *s, size_t len, char **fields, size_t *lens, int max)
@@ -76,6 +85,32 @@ int cli_split(char *s, size_t len, char **fields, size_t *lens, int max)
         n++;
     }
     return n;
+}
+
+int cli_read_file(const char *cmd, const char *what, const char *path, size_t max,
+                  uint8_t **out_data, size_t *out_size)
+{
+    hol_err err = hol_file_read_all(path, max, out_data, out_size);
+    switch (err) {
+    case HOL_OK:
+        return 0;
+    case HOL_EOPEN:
+        cli_error(cmd, 0, "cannot open %s '%.200s': %s", what, path, strerror(errno));
+        return CLI_EXIT_USAGE;
+    case HOL_EARG:
+        cli_error(cmd, 0, "%s '%.200s' is %s, not a regular file", what, path,
+                  errno == EISDIR ? "a directory" : "a FIFO, socket or device");
+        return CLI_EXIT_USAGE;
+    case HOL_ECORRUPT:
+        cli_error(cmd, 0, "%s '%.200s' is larger than %zu bytes", what, path, max);
+        return CLI_EXIT_USAGE;
+    case HOL_ENOMEM:
+        cli_error(cmd, 0, "out of memory reading %s '%.200s'", what, path);
+        return CLI_EXIT_FAIL;
+    default:
+        cli_error(cmd, 0, "cannot read %s '%.200s': %s", what, path, strerror(errno));
+        return CLI_EXIT_FAIL;
+    }
 }
 
 int cli_finish_output(const char *cmd)

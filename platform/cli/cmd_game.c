@@ -124,12 +124,9 @@ int cli_cmd_game(int argc, char **argv)
     static session_level L;
     uint8_t *data = NULL;
     size_t size = 0;
-    hol_err err = hol_file_read_all(path, SESSION_LEVEL_TEXT - 1, &data, &size);
-    if (err) {
-        cli_error(cmd, 0, "cannot read level '%.200s': %s", path,
-                  err == HOL_ECORRUPT ? "larger than 4 KB" : hol_err_str(err));
-        return err == HOL_EIO ? CLI_EXIT_FAIL : CLI_EXIT_USAGE;
-    }
+    int rs = cli_read_file(cmd, "level", path, SESSION_LEVEL_TEXT - 1, &data, &size);
+    if (rs)
+        return rs;
     memcpy(L.text, data, size);
     L.len = size;
     free(data);
@@ -141,6 +138,7 @@ int cli_cmd_game(int argc, char **argv)
     hol_app_desc d;
     memset(&d, 0, sizeof d);
     game_ctx g = {NULL, &L.lvl, path, 0};
+    hol_err err;
     if ((err = hol_app_create(&d, &g.app))) {
         cli_error(cmd, 0, "cannot create the app: %s", hol_err_str(err));
         return CLI_EXIT_FAIL;

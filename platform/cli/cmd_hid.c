@@ -102,15 +102,9 @@ static int load_desc(const char *cmd, const char *path, uint8_t **out,
             return CLI_EXIT_USAGE;
         }
     } else {
-        hol_err err = hol_file_read_all(path, DESC_MAX, &data, &size);
-        if (err == HOL_ECORRUPT) {
-            cli_error(cmd, 0, "'%s': larger than %u bytes", path, DESC_MAX);
-            return CLI_EXIT_USAGE;
-        }
-        if (err) {
-            cli_error(cmd, 0, "'%s': %s", path, strerror(errno));
-            return err == HOL_EOPEN ? CLI_EXIT_USAGE : CLI_EXIT_FAIL;
-        }
+        int rs = cli_read_file(cmd, "descriptor", path, DESC_MAX, &data, &size);
+        if (rs)
+            return rs;
     }
     int text = size > 0;
     for (size_t i = 0; i < size && text; i++)

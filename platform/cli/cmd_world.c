@@ -18,6 +18,7 @@
 static const char *const world_usage =
     "usage: holonomy world [--seed S] [--walk W] [--radius R] [--check]\n"
     "                      [--load FILE] [--save FILE] [--capacity N] [--quiet]\n"
+    "                      [--stats]\n"
     "       holonomy world save FILE [OPTIONS]   (same as --save FILE)\n"
     "       holonomy world load FILE [OPTIONS]   (same as --load FILE)\n"
     "\n"
@@ -50,10 +51,15 @@ static const char *const world_usage =
     "                  atomically (temporary file, fsync, rename): FILE is\n"
     "                  either the old or the complete new world\n"
     "  --load FILE     start from a saved world and its saved user state\n"
+    "                  (a regular file; its header is checked against its\n"
+    "                  size before the rest is read)\n"
     "                  instead of a new one (not with --seed); W continues\n"
     "                  from there. A truncated, corrupt or wrong-version\n"
     "                  FILE is bad input (exit 2) and FILE is left untouched\n"
-    "  --capacity N    tiles in the store (default 1048576, fixed)\n"
+    "  --capacity N    tiles in the store (default 1048576, fixed; rounded up\n"
+    "                  to a power of two). Refused below what the radius needs\n"
+    "                  (4096 tiles for radius 4), above 2^28, or needing more\n"
+    "                  than half of this machine's memory\n"
     "  --quiet         print no tiles\n"
     "  --stats         print a last line: '# tiles N capacity C collapsed X\n"
     "                  evicted Y backtracks Z bytes B' (the store after the walk)\n"
@@ -62,6 +68,8 @@ static const char *const world_usage =
     "input (one line on stderr).\n";
 
 #define CMD "world"
+/* --capacity: at most 2^28 tiles (about 9 GiB of store) */
+#define WORLD_MAX_CAPACITY (UINT32_C(1) << 28)
 
 typedef struct world_opts {
     uint64_t seed;
@@ -122,8 +130,9 @@ static int parse_args(int argc, char **argv, world_opts *o)
             o->radius = (int)r;
         } else if (!strcmp(a, "--capacity")) {
             uint64_t c;
-            if (!cli_parse_u64(v, &c) || c < 1 || c > (UINT64_C(1) << 30)) {
-                cli_error(CMD, 0, "--capacity '%.40s' is not a number 1..2^30", v);
+            if (!cli_parse_u64(v, &c) || c < 1 || c > WORLD_MAX_CAPACITY) {
+                cli_error(CMD, 0, "--capacity '%.40s' is not a number of tiles 1..%u", v,
+                          (unsigned)WORLD_MAX_CAPACITY);
                 return 0;
             }
             o->capacity = (uint32_t)c;
@@ -158,22 +167,65 @@ static int parse_args(int argc, char **argv, world_opts *o)
  * (a file that cannot be opened is bad input). */
 static int read_file(const char *path, uint8_t **out_buf, size_t *out_len)
 {
-    switch (hol_file_read_all(path, (size_t)1 << 36, out_buf, out_len)) {
-    case HOL_OK:
-        return 0;
-    case HOL_EOPEN:
-        cli_error(CMD, 0, "cannot open '%s': %s", path, strerror(errno));
+    /* the header first: the length it promises must be the file's size
+     * before anything else is read (a huge or endless file is refused at
+     * once), and only regular files are opened (a FIFO never blocks) */
+    hol_file_in f;
+    hol_err err = hol_file_open_in(path, &f);
+    if (err == HOL_EOPEN) {
+        cli_error(CMD, 0, "cannot open '%.200s': %s", path, strerror(errno));
         return CLI_EXIT_USAGE;
-    case HOL_ECORRUPT:
-        cli_error(CMD, 0, "'%s' is too large for a world file", path);
+    }
+    if (err == HOL_EARG) {
+        cli_error(CMD, 0, "'%.200s' is %s, not a regular file", path,
+                  errno == EISDIR ? "a directory" : "a FIFO, socket or device");
         return CLI_EXIT_USAGE;
-    case HOL_ENOMEM:
-        cli_error(CMD, 0, "'%s': out of memory", path);
-        return CLI_EXIT_FAIL;
-    default:
-        cli_error(CMD, 0, "cannot read '%s'", path);
+    }
+    if (err) {
+        cli_error(CMD, 0, "cannot read '%.200s': %s", path, strerror(errno));
         return CLI_EXIT_FAIL;
     }
+    uint8_t hdr[HOL_WORLD_IMAGE_HEADER];
+    size_t got = 0;
+    uint64_t want = 0;
+    char msg[160];
+    if ((err = hol_file_read_in(&f, hdr, sizeof hdr, &got))) {
+        cli_error(CMD, 0, "cannot read '%.200s': %s", path, strerror(errno));
+        hol_file_close_in(&f);
+        return CLI_EXIT_FAIL;
+    }
+    if ((err = hol_world_image_size(hdr, got, &want, msg, sizeof msg))) {
+        cli_error(CMD, 0, "'%.200s': %s", path, msg);
+        hol_file_close_in(&f);
+        return CLI_EXIT_USAGE;
+    }
+    if (want != f.size) {
+        cli_error(CMD, 0, "'%.200s': %s%llu bytes, but the header promises %llu", path,
+                  f.size < want ? "truncated: " : "", (unsigned long long)f.size,
+                  (unsigned long long)want);
+        hol_file_close_in(&f);
+        return CLI_EXIT_USAGE;
+    }
+    uint8_t *buf = malloc((size_t)want);
+    if (!buf) {
+        cli_error(CMD, 0, "'%.200s': out of memory (%llu bytes)", path,
+                  (unsigned long long)want);
+        hol_file_close_in(&f);
+        return CLI_EXIT_FAIL;
+    }
+    memcpy(buf, hdr, got);
+    size_t rest = 0;
+    err = hol_file_read_in(&f, buf + got, (size_t)want - got, &rest);
+    hol_file_close_in(&f);
+    if (err || got + rest != want) {
+        cli_error(CMD, 0, "cannot read '%.200s': %s", path,
+                  err ? strerror(errno) : "it changed while being read");
+        free(buf);
+        return err ? CLI_EXIT_FAIL : CLI_EXIT_USAGE;
+    }
+    *out_buf = buf;
+    *out_len = (size_t)want;
+    return 0;
 }
 
 /* Write buf to path atomically. Returns 1 on success. */
@@ -304,13 +356,49 @@ int cli_cmd_world(int argc, char **argv)
     } else {
         desc.seed = o.seed;
     }
-    if (o.capacity)
-        desc.capacity = o.capacity > desc.capacity ? o.capacity : desc.capacity;
+    if (o.capacity) {
+        /* the bounds: at least what the radius needs, and memory the
+         * machine has (at most half of it); every refusal says which */
+        hol_world_desc lo = desc;
+        lo.capacity = 1;
+        uint32_t minimum = hol_world_capacity_of(&lo);
+        if (o.capacity < minimum) {
+            cli_error(CMD, 0, "--capacity %u is below the minimum of %u tiles for radius %d",
+                      (unsigned)o.capacity, (unsigned)minimum,
+                      desc.radius ? desc.radius : HOL_WORLD_DEFAULT_RADIUS);
+            free(image);
+            free(dirs);
+            return CLI_EXIT_USAGE;
+        }
+        if (o.load && o.capacity < desc.capacity) {
+            cli_error(CMD, 0, "--capacity %u cannot hold '%.200s' (it needs %u tiles)",
+                      (unsigned)o.capacity, o.load, (unsigned)desc.capacity);
+            free(image);
+            free(dirs);
+            return CLI_EXIT_USAGE;
+        }
+        desc.capacity = o.capacity;
+        size_t need = hol_world_mem_size(&desc);
+        long pages = sysconf(_SC_PHYS_PAGES), psize = sysconf(_SC_PAGESIZE);
+        double have = pages > 0 && psize > 0 ? (double)pages * (double)psize : 0;
+        if (have > 0 && (double)need > have / 2) {
+            cli_error(CMD, 0, "--capacity %u needs %.0f MiB, more than half of this "
+                      "machine's %.0f MiB", (unsigned)o.capacity, need / 1048576.0,
+                      have / 1048576.0);
+            free(image);
+            free(dirs);
+            return CLI_EXIT_USAGE;
+        }
+    }
 
     hol_world *w;
     hol_err err = hol_world_make(&desc, &w);
     if (err) {
-        cli_error(CMD, 0, "cannot make the world: %s", hol_err_str(err));
+        if (err == HOL_ENOMEM)
+            cli_error(CMD, 0, "cannot allocate %.0f MiB for the world store",
+                      hol_world_mem_size(&desc) / 1048576.0);
+        else
+            cli_error(CMD, 0, "cannot make the world: %s", hol_err_str(err));
         free(image);
         free(dirs);
         return CLI_EXIT_FAIL;

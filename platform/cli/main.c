@@ -15,7 +15,7 @@ static const cli_command commands[] = {
     {"world", cli_cmd_world, "the seeded forest around a walk; save, load"},
     {"nav", cli_cmd_nav, "fewest room steps to a target tile"},
     {"tour", cli_cmd_tour, "fewest room steps to collect keys, then the chest"},
-    {"render", cli_cmd_render, "render a view to PNG (headless OSMesa)"},
+    {"render", cli_cmd_render, "render a view to PNG (headless OSMesa or EGL) or in a window"},
     {"game", cli_cmd_game, "play a level headless from lines of room steps: done|open STEPS OPTIMUM"},
     {"play", cli_cmd_play, "play in a desktop window (EGL/X11); logs, recording"},
     {"replay", cli_cmd_replay, "run a recording again: the same logs, PNG frames"},
@@ -37,7 +37,7 @@ static void usage(FILE *f)
 int main(int argc, char **argv)
 {
     if (argc < 2) {
-        usage(stderr);
+        cli_error("", 0, "no command given; see 'holonomy --help'");
         return CLI_EXIT_USAGE;
     }
     if (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h") ||

@@ -16,12 +16,9 @@ int read_lines(const char *cmd, const char *path, file_lines *fl)
 {
     size_t size = 0;
     memset(fl, 0, sizeof *fl);
-    hol_err err = hol_file_read_all(path, (size_t)1 << 30, &fl->data, &size);
-    if (err) {
-        cli_error(cmd, 0, "cannot read '%.200s': %s", path,
-                  err == HOL_EOPEN ? strerror(errno) : hol_err_str(err));
-        return err == HOL_EOPEN ? CLI_EXIT_USAGE : CLI_EXIT_FAIL;
-    }
+    int rs = cli_read_file(cmd, "input", path, (size_t)1 << 30, &fl->data, &size);
+    if (rs)
+        return rs;
     long cap = 1;
     for (size_t i = 0; i < size; i++)
         cap += fl->data[i] == '\n';
@@ -177,13 +174,9 @@ int play_levels(const char *cmd, const char *level_path, const char *mode, uint6
     if (level_path) {
         uint8_t *data = NULL;
         size_t size = 0;
-        hol_err err = hol_file_read_all(level_path, SESSION_LEVEL_TEXT - 1, &data, &size);
-        if (err) {
-            cli_error(cmd, 0, "cannot read level '%.200s': %s", level_path,
-                      err == HOL_EOPEN ? strerror(errno)
-                      : err == HOL_ECORRUPT ? "larger than 4 KB" : hol_err_str(err));
-            return err == HOL_EIO ? CLI_EXIT_FAIL : CLI_EXIT_USAGE;
-        }
+        int rs = cli_read_file(cmd, "level", level_path, SESSION_LEVEL_TEXT - 1, &data, &size);
+        if (rs)
+            return rs;
         session_level *L = &levels[(*nlevels)++];
         memcpy(L->text, data, size);
         L->len = size;

@@ -1,24 +1,79 @@
-#define _POSIX_C_SOURCE 200809L
+#ifndef _DEFAULT_SOURCE
+#define _DEFAULT_SOURCE
+#endif
 #include "hol_file.h"
 
+#include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
+#include <signal.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 
+/* Temporary files are DIR/.BASE.holonomy-tmp.PID.XXXXXX: hidden, named
+ * after their target and their writer, so a later save of the same target
+ * can tell its own leftovers (the writer is gone) from anything else. */
+#define HOL__TMP_TAG ".holonomy-tmp."
+
+/* Remove leftovers of interrupted saves of path: temporary files of this
+ * target whose writing process no longer runs. Best effort. */
+static void hol__clean_leftovers(const char *path)
+{
+    const char *slash = strrchr(path, '/');
+    const char *base = slash ? slash + 1 : path;
+    char dir[4096];
+    size_t dl = slash ? (size_t)(slash - path) : 0;
+    if (dl >= sizeof dir)
+        return;
+    if (slash) {
+        memcpy(dir, path, dl);
+        dir[dl] = 0;
+        if (dl == 0)
+            strcpy(dir, "/");
+    } else {
+        strcpy(dir, ".");
+    }
+    char prefix[512];
+    int pn = snprintf(prefix, sizeof prefix, ".%s" HOL__TMP_TAG, base);
+    if (pn < 0 || (size_t)pn >= sizeof prefix)
+        return;
+    DIR *d = opendir(dir);
+    if (!d)
+        return;
+    struct dirent *e;
+    while ((e = readdir(d)) != NULL) {
+        if (strncmp(e->d_name, prefix, (size_t)pn))
+            continue;
+        char *end = NULL;
+        long pid = strtol(e->d_name + pn, &end, 10);
+        if (pid <= 0 || !end || *end != '.' || strlen(end) != 7)
+            continue;
+        if (kill((pid_t)pid, 0) == 0 || errno != ESRCH)
+            continue; /* its writer may still be at work */
+        char full[4608];
+        if (snprintf(full, sizeof full, "%s/%s", dir, e->d_name) < (int)sizeof full)
+            (void)unlink(full);
+    }
+    closedir(d);
+}
+
 hol_err hol_file_atomic_open(hol_file_atomic *a, const char *path)
 {
     size_t n = strlen(path);
     a->f = NULL;
     a->path = path;
-    a->tmp = malloc(n + 16);
+    hol__clean_leftovers(path);
+    a->tmp = malloc(n + 64);
     if (!a->tmp)
         return HOL_ENOMEM;
-    memcpy(a->tmp, path, n);
-    memcpy(a->tmp + n, ".tmpXXXXXX", 11);
+    const char *slash = strrchr(path, '/');
+    size_t dl = slash ? (size_t)(slash - path) + 1 : 0;
+    memcpy(a->tmp, path, dl);
+    snprintf(a->tmp + dl, n + 64 - dl, ".%s" HOL__TMP_TAG "%ld.XXXXXX", path + dl,
+             (long)getpid());
     int fd = mkstemp(a->tmp);
     if (fd >= 0) {
         /* mkstemp makes 0600; give the usual permissions */
@@ -111,41 +166,84 @@ hol_err hol_file_write_atomic(const char *path, const void *data, size_t size)
     return hol_file_atomic_commit(&a);
 }
 
+hol_err hol_file_open_in(const char *path, hol_file_in *out)
+{
+    out->fd = -1;
+    out->size = 0;
+    /* non-blocking, so that a FIFO cannot hang the open */
+    int fd = open(path, O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    if (fd < 0)
+        return HOL_EOPEN;
+    struct stat st;
+    if (fstat(fd, &st) != 0) {
+        int e = errno;
+        close(fd);
+        errno = e;
+        return HOL_EIO;
+    }
+    if (!S_ISREG(st.st_mode)) {
+        close(fd);
+        errno = S_ISDIR(st.st_mode) ? EISDIR : EINVAL;
+        return HOL_EARG;
+    }
+    int fl = fcntl(fd, F_GETFL);
+    if (fl >= 0)
+        (void)fcntl(fd, F_SETFL, fl & ~O_NONBLOCK);
+    out->fd = fd;
+    out->size = (uint64_t)st.st_size;
+    return HOL_OK;
+}
+
+hol_err hol_file_read_in(hol_file_in *f, void *buf, size_t n, size_t *out_got)
+{
+    size_t got = 0;
+    while (got < n) {
+        ssize_t r = read(f->fd, (uint8_t *)buf + got, n - got);
+        if (r < 0 && errno == EINTR)
+            continue;
+        if (r < 0)
+            return HOL_EIO;
+        if (r == 0)
+            break;
+        got += (size_t)r;
+    }
+    *out_got = got;
+    return HOL_OK;
+}
+
+void hol_file_close_in(hol_file_in *f)
+{
+    if (f->fd >= 0) {
+        int e = errno;
+        close(f->fd);
+        errno = e;
+    }
+    f->fd = -1;
+}
+
 hol_err hol_file_read_all(const char *path, size_t max, uint8_t **out_data,
                           size_t *out_size)
 {
-    FILE *f = fopen(path, "rb");
-    if (!f)
-        return HOL_EOPEN;
-    uint8_t *buf = NULL;
-    size_t n = 0, cap = 0;
-    hol_err err = HOL_OK;
-    for (;;) {
-        if (n == cap) {
-            if (cap > max) {
-                err = HOL_ECORRUPT;
-                break;
-            }
-            cap = cap ? cap * 2 : 65536;
-            uint8_t *nb = realloc(buf, cap + 1);
-            if (!nb) {
-                err = HOL_ENOMEM;
-                break;
-            }
-            buf = nb;
-        }
-        size_t r = fread(buf + n, 1, cap - n, f);
-        n += r;
-        if (r == 0)
-            break;
+    hol_file_in f;
+    hol_err err = hol_file_open_in(path, &f);
+    if (err)
+        return err;
+    /* the size first: a file larger than max is refused without reading it */
+    if (f.size > (uint64_t)max) {
+        hol_file_close_in(&f);
+        return HOL_ECORRUPT;
     }
-    if (!err && ferror(f))
-        err = HOL_EIO;
+    size_t cap = (size_t)f.size + 1; /* one more: a file that grew is caught */
+    uint8_t *buf = malloc(cap + 1);
+    if (!buf) {
+        hol_file_close_in(&f);
+        return HOL_ENOMEM;
+    }
+    size_t n = 0;
+    err = hol_file_read_in(&f, buf, cap, &n);
+    hol_file_close_in(&f);
     if (!err && n > max)
         err = HOL_ECORRUPT;
-    int e = errno;
-    fclose(f);
-    errno = e;
     if (err) {
         free(buf);
         return err;

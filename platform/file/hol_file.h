@@ -2,14 +2,22 @@
  *
  * Contract
  * - hol_file_write_atomic and hol_file_atomic_* never leave a half-written
- *   file: the data goes to a temporary file next to PATH ("PATH.tmpXXXXXX"),
- *   is flushed, fsync'ed and closed, gets the usual 0666 & ~umask mode, is
- *   renamed over PATH, and the folder is fsync'ed (best effort). On any
- *   failure the temporary file is removed and PATH is left as it was.
+ *   file: the data goes to a temporary file next to PATH, named
+ *   ".BASE.holonomy-tmp.PID.XXXXXX" (hidden; the target's name and the
+ *   writer's process id), is flushed, fsync'ed and closed, gets the usual
+ *   0666 & ~umask mode, is renamed over PATH, and the folder is fsync'ed
+ *   (best effort). On any failure the temporary file is removed and PATH is
+ *   left as it was. A save killed mid-write leaves its temporary file; the
+ *   next save of the same PATH removes every such file whose writer no
+ *   longer runs (and nothing else).
  * - Errors are hol_err; errno still holds the cause for messages.
- * - hol_file_read_all reads at most `max` bytes into a malloc'ed buffer
- *   (free it with free()); a larger file is HOL_ECORRUPT, a file that
- *   cannot be opened HOL_EOPEN, a failed read HOL_EIO.
+ * - Reading never hangs and never reads more than asked: hol_file_open_in
+ *   opens only regular files (a FIFO, a directory or a device is HOL_EARG,
+ *   at once: the open does not block), and reports the size first.
+ *   hol_file_read_all reads at most `max` bytes into a malloc'ed buffer
+ *   (free it with free()); a file larger than max is HOL_ECORRUPT before
+ *   anything is read, a file that cannot be opened HOL_EOPEN, a failed read
+ *   HOL_EIO.
  */
 #ifndef HOL_FILE_H
 #define HOL_FILE_H
@@ -35,5 +43,16 @@ void hol_file_atomic_abort(hol_file_atomic *a);
 
 hol_err hol_file_read_all(const char *path, size_t max, uint8_t **out_data,
                           size_t *out_size);
+
+/* Piecewise reading (a header first): open a regular file, read up to n
+ * bytes at a time (fewer only at the end), close. */
+typedef struct hol_file_in {
+    int fd;
+    uint64_t size; /* at open */
+} hol_file_in;
+
+hol_err hol_file_open_in(const char *path, hol_file_in *out);
+hol_err hol_file_read_in(hol_file_in *f, void *buf, size_t n, size_t *out_got);
+void hol_file_close_in(hol_file_in *f);
 
 #endif

@@ -1,0 +1,78 @@
+#!/bin/sh
+# cli_harden.sh - files and command lines that must not hang, bloat or
+# echo raw bytes (issue: hardening). Each check failed before its fix:
+# a FIFO given to --load blocked in open; a 1 GB sparse file was read
+# whole (7 s, 1.1 GB) before "not a world image"; a directory was exit 1;
+# a save killed mid-write left its temporary file for ever; --capacity 1
+# was raised silently; option values echoed escape bytes raw; a bare
+# `holonomy` printed 13 lines.
+. "$(dirname "$0")/lib.sh"
+
+cd "$T" || exit 1
+H=$(cd "$OLDPWD" && cd "$(dirname "$H")" && pwd)/$(basename "$H")
+
+# --- reads: only regular files, header before body ------------------------
+mkfifo fifo
+run "FIFO load" 2 timeout 10 "$H" world --load fifo
+one_line "FIFO load" "not a regular file"
+run "directory load" 2 "$H" world --load .
+one_line "directory load" "is a directory"
+run "/dev/zero load" 2 timeout 10 "$H" world --load /dev/zero
+one_line "/dev/zero load" "not a regular file"
+truncate -s 1G sparse
+start=$(date +%s)
+run "1 GB sparse file" 2 /usr/bin/time -f '%M' -o mem "$H" world --load sparse
+one_line "1 GB sparse file" "not a holonomy world image"
+kb=$(tail -n 1 mem)
+[ "${kb:-999999}" -lt 200000 ] && ok || bad "1 GB sparse file: $kb KB resident (the file was read)"
+[ $(( $(date +%s) - start )) -lt 5 ] && ok || bad "1 GB sparse file took $(( $(date +%s) - start )) s"
+# a real image made 1 GB long: refused from its header, before the rest
+run "save" 0 "$H" world --seed 3 --walk NE --quiet --save w.img
+cp w.img long.img && truncate -s 1G long.img
+run "1 GB world image" 2 "$H" world --load long.img --quiet
+one_line "1 GB world image" "but the header promises"
+run "the image itself" 0 "$H" world --load w.img --quiet
+# the other readers of files: levels, descriptors, recordings
+printf 'mode flag\n' >/dev/null
+run "game FIFO" 2 timeout 10 "$H" game fifo
+one_line "game FIFO" "not a regular file"
+run "hid parse directory" 2 "$H" hid parse .
+one_line "hid parse directory" "is a directory"
+run "replay FIFO" 2 timeout 10 "$H" replay fifo
+one_line "replay FIFO" "not a regular file"
+
+# --- temporary files: owned names, cleaned by the next save --------------
+# a leftover of a killed save of w.img (writer gone) and unrelated files
+sh -c 'exit 0' & dead=$!; wait $dead
+touch ".w.img.holonomy-tmp.$dead.AbC123" ".x.img.holonomy-tmp.$dead.AbC123" "w.img.tmpQwErTy"
+touch ".w.img.holonomy-tmp.$$.LiVe12"   # this shell still runs: not a leftover
+run "save again" 0 "$H" world --seed 3 --walk NE --quiet --save w.img
+[ ! -e ".w.img.holonomy-tmp.$dead.AbC123" ] && ok || bad "the dead writer's temporary file is still there"
+[ -e ".x.img.holonomy-tmp.$dead.AbC123" ] && ok || bad "another target's temporary file was removed"
+[ -e "w.img.tmpQwErTy" ] && ok || bad "an unrelated file was removed"
+[ -e ".w.img.holonomy-tmp.$$.LiVe12" ] && ok || bad "a running writer's temporary file was removed"
+
+# --- --capacity bounds ------------------------------------------------------
+run "capacity 1" 2 "$H" world --capacity 1 --quiet
+one_line "capacity 1" "below the minimum of 4096 tiles for radius 4"
+run "capacity 4095" 2 "$H" world --capacity 4095 --quiet
+one_line "capacity 4095" "below the minimum"
+run "capacity 4096" 0 "$H" world --capacity 4096 --quiet --walk NE
+run "capacity 2^30" 2 "$H" world --capacity 1073741824 --quiet
+one_line "capacity 2^30" "not a number of tiles 1..268435456"
+
+# --- option values and messages ---------------------------------------------
+esc=$(printf '\033[31mX')
+run "escape bytes in --seed" 2 "$H" world --seed "$esc"
+one_line "escape bytes" '\\x1b\[31mX'
+if LC_ALL=C grep -q "$(printf '\033')" "$T/err"; then bad "a raw escape byte on stderr"; else ok; fi
+run "escape bytes in a path" 2 "$H" world --load "$(printf 'a\033b\nc')"
+if [ "$(wc -l <"$T/err")" -eq 1 ] && ! LC_ALL=C grep -q "$(printf '\033')" "$T/err"; then ok; else bad "path: $(od -c "$T/err" | head -3)"; fi
+run "bare holonomy" 2 "$H"
+one_line "bare holonomy" "see 'holonomy --help'"
+for c in tile world nav tour render play replay game hid xr; do
+  run "$c: unknown option" 2 "$H" $c --no-such-option
+  one_line "$c: unknown option" "--help"
+done
+
+finish cli_harden
