@@ -147,6 +147,7 @@ $(BUILD)/bench/%: tests/%.c $(CORE_SRC)
 # A harness links the core; FUZZ_EXTRA_<name> adds sources and libraries.
 FUZZ_EXTRA_fuzz_png := render/hol_png.c -lz
 FUZZ_EXTRA_fuzz_recording := $(LEVEL_SRC)
+FUZZ_EXTRA_fuzz_cli := $(LEVEL_SRC)
 FUZZ_EXTRA_fuzz_hid_desc := $(HID_SRC)
 FUZZ_EXTRA_fuzz_hid_report := $(HID_SRC)
 $(BUILD)/fuzz/%: fuzz/%.c $(wildcard fuzz/*.h) $(CORE_SRC) $(RENDER_SRC) $(HID_SRC) $(PLAT_SRC) $(CLI_SRC)

@@ -68,6 +68,9 @@ one_line "escape bytes" '\\x1b\[31mX'
 if LC_ALL=C grep -q "$(printf '\033')" "$T/err"; then bad "a raw escape byte on stderr"; else ok; fi
 run "escape bytes in a path" 2 "$H" world --load "$(printf 'a\033b\nc')"
 if [ "$(wc -l <"$T/err")" -eq 1 ] && ! LC_ALL=C grep -q "$(printf '\033')" "$T/err"; then ok; else bad "path: $(od -c "$T/err" | head -3)"; fi
+run "seed with a leading blank" 2 "$H" world --seed " 5" --quiet
+run "seed with a second 0x" 2 "$H" world --seed 0x0x5 --quiet
+run "count with a newline" 2 "$H" world --capacity "$(printf '\n8192')" --quiet
 run "bare holonomy" 2 "$H"
 one_line "bare holonomy" "see 'holonomy --help'"
 for c in tile world nav tour render play replay game hid xr; do

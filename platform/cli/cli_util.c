@@ -3,6 +3,7 @@
 
 #include "../file/hol_file.h"
 
+#include <ctype.h>
 #include <errno.h>
 #include <stdarg.h>
 #include <stdlib.h>
@@ -160,8 +161,12 @@ void cli_trim(char **s, size_t *len)
 
 size_t cli_parse_count(const char *s)
 {
-    if (!s || !*s || *s == '-' || *s == '+')
+    /* digits only: strtoull would also take leading blanks and a sign */
+    if (!s || !*s)
         return 0;
+    for (const char *p = s; *p; p++)
+        if (*p < '0' || *p > '9')
+            return 0;
     char *end;
     errno = 0;
     unsigned long long v = strtoull(s, &end, 10);
@@ -189,13 +194,17 @@ int cli_budget_option(const char *cmd, int argc, char **argv, int *i,
 
 int cli_parse_u64(const char *s, uint64_t *out)
 {
-    if (!s[0] || s[0] == '-' || s[0] == '+' || s[0] == ' ')
+    /* digits only: strtoull would also take blanks, a sign, and a second
+     * 0x after the first */
+    int hex = s[0] == '0' && (s[1] == 'x' || s[1] == 'X');
+    const char *d = hex ? s + 2 : s;
+    if (!*d)
         return 0;
+    for (const char *p = d; *p; p++)
+        if (hex ? !isxdigit((unsigned char)*p) : (*p < '0' || *p > '9'))
+            return 0;
     char *end;
     errno = 0;
-    int hex = s[0] == '0' && (s[1] == 'x' || s[1] == 'X');
-    if (hex && !s[2])
-        return 0;
     /* decimal, or 0x hex; a leading 0 is not octal */
     unsigned long long v = strtoull(hex ? s + 2 : s, &end, hex ? 16 : 10);
     if (hex && (s[2] == '-' || s[2] == '+' || s[2] == ' '))

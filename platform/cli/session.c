@@ -313,7 +313,8 @@ int session_parse_level(const char *text, size_t len, hol_app_level *lvl, char *
         }
     }
     if (!have_mode) {
-        snprintf(err, err_cap, "line %ld: no 'mode' line", lineno);
+        snprintf(err, err_cap, "line %ld: no 'mode' line%s", lineno ? lineno : 1,
+                 lineno ? "" : " (the level is empty)");
         return 1;
     }
     /* a placement may not stand where an objective is given */

@@ -1,0 +1,101 @@
+/* fuzz_cli.c - libFuzzer harness for the command line's own parsers
+ * (platform/cli): option values and level files, as the commands take them.
+ *
+ * Input: the first byte picks the parser, the rest is its text.
+ * - 0: an option value (NUL-terminated at the first NUL): cli_parse_u64
+ *   (seeds; decimal or 0x hex) and cli_parse_count. Checks: accepted text
+ *   is all digits (or 0x and hex digits) and prints back to the same value;
+ *   refused text leaves nothing half-parsed.
+ * - 1: a level file (session_parse_level). Checks: accepted, the level's
+ *   fields are in range (mode, 1..5 keys, time limit, stages, at most 32
+ *   placements); refused, the message names a line of the file.
+ * - 2: a message with any bytes (cli_error into a memory stream). Checks:
+ *   one line, no control byte.
+ */
+#define _GNU_SOURCE
+#include <ctype.h>
+#include <inttypes.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "../platform/cli/cli.h"
+#include "../platform/cli/session.h"
+
+#include "fuzz_check.h"
+
+static void check_number(const char *s)
+{
+    uint64_t v = 0;
+    if (cli_parse_u64(s, &v)) {
+        char back[32];
+        int hex = s[0] == '0' && (s[1] == 'x' || s[1] == 'X');
+        snprintf(back, sizeof back, hex ? "%" PRIx64 : "%" PRIu64, v);
+        const char *digits = hex ? s + 2 : s;
+        while (digits[0] == '0' && digits[1])
+            digits++; /* leading zeros */
+        CHECK(strcasecmp(back, digits) == 0);
+    }
+    size_t c = cli_parse_count(s);
+    if (c) {
+        for (const char *p = s; *p; p++)
+            CHECK(isdigit((unsigned char)*p));
+    }
+}
+
+static void check_level(const char *text, size_t len)
+{
+    hol_app_level L;
+    char err[256] = "";
+    if (session_parse_level(text, len, &L, err, sizeof err) == 0) {
+        CHECK(L.mode >= 0 && L.mode <= 3);
+        CHECK(L.nkeys >= 0 && L.nkeys <= HOL_APP_MAX_KEYS);
+        CHECK(L.time_limit_s >= 0 && L.time_limit_s <= 86400);
+        CHECK(L.stages < (1u << HOL_APP_TUTORIAL_STAGES));
+        CHECK(L.nplaces >= 0 && L.nplaces <= HOL_WORLD_MAX_PLACES);
+        CHECK(L.nstart >= 0 && L.nstart <= (int)sizeof L.start);
+    } else {
+        long n = 0;
+        CHECK(sscanf(err, "line %ld:", &n) == 1);
+        long lines = 1;
+        for (size_t i = 0; i < len; i++)
+            lines += text[i] == '\n';
+        CHECK(n >= 1 && n <= lines);
+    }
+}
+
+static void check_message(const char *s)
+{
+    char *out = NULL;
+    size_t n = 0;
+    FILE *mem = open_memstream(&out, &n);
+    CHECK(mem != NULL);
+    FILE *saved = stderr;
+    stderr = mem;
+    cli_error("fuzz", 0, "value '%s'", s);
+    stderr = saved;
+    fclose(mem);
+    CHECK(n > 0 && out[n - 1] == '\n');
+    for (size_t i = 0; i + 1 < n; i++)
+        CHECK((unsigned char)out[i] >= 0x20 && out[i] != 0x7f);
+    free(out);
+}
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    if (size < 1 || size > 8192)
+        return 0;
+    char *buf = malloc(size);
+    if (!buf)
+        abort();
+    memcpy(buf, data + 1, size - 1);
+    buf[size - 1] = 0;
+    switch (data[0] % 3) {
+    case 0: check_number(buf); break;
+    case 1: check_level(buf, size - 1); break;
+    default: check_message(buf); break;
+    }
+    free(buf);
+    return 0;
+}
