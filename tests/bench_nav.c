@@ -18,6 +18,7 @@
 
 #include "../core/hol_nav.h"
 #include "../core/hol_nav_table.h"
+#include "plain_astar.h"
 
 static uint64_t rng = 0x9E3779B97F4A7C15ull;
 
@@ -221,6 +222,55 @@ static void bench_tours(hol_nav *nav, int dmax, size_t budget, const char *label
     }
 }
 
+/* The side-by-side figure: the original's guidance method (plain A* over
+ * room states with the tile-distance heuristic, tests/plain_astar.h) and
+ * ours on the same queries; both must give the same fewest steps. */
+static int cmp_d(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return x < y ? -1 : x > y;
+}
+
+static void bench_side_by_side(hol_nav *nav)
+{
+    plain_astar pa;
+    if (pa_init(&pa, 22)) {
+        printf("cannot allocate the plain A*\n");
+        return;
+    }
+    printf("\nside by side: plain A* over (tile, room orientation, cell) with the tile\n"
+           "distance heuristic (the original's method) vs hol_nav, the same queries\n");
+    printf("  dist  queries  A* nodes (mean)  A* ms (median / p99)  ours nodes  ours ms "
+           "(median / p99)  speed-up (median)  same length\n");
+    static const int dists[3] = {4, 8, 12};
+    for (int k = 0; k < 3; k++) {
+        int d = dists[k], nq = 40, same = 0;
+        double ta[40], tb[40], na = 0, nb = 0;
+        static uint8_t walk[HOL_NAV_WALK_MAX];
+        for (int q = 0; q < nq; q++) {
+            hol_room s = random_start();
+            hol_tile t = random_target(&s, d);
+            size_t ex = 0;
+            double t0 = now_ms();
+            int len = pa_find(&pa, &s, t, &ex);
+            ta[q] = now_ms() - t0;
+            na += (double)ex;
+            hol_nav_result res;
+            t0 = now_ms();
+            hol_err err = hol_nav_find(nav, &s, t, 0, walk, sizeof walk, &res);
+            tb[q] = now_ms() - t0;
+            nb += (double)res.nodes;
+            same += !err && len == res.len;
+        }
+        qsort(ta, (size_t)nq, sizeof ta[0], cmp_d);
+        qsort(tb, (size_t)nq, sizeof tb[0], cmp_d);
+        printf("  %4d  %7d  %15.0f  %9.3f / %8.3f  %10.0f  %7.4f / %7.4f  %17.0fx  %d/%d\n", d,
+               nq, na / nq, ta[nq / 2], ta[nq * 99 / 100], nb / nq, tb[nq / 2],
+               tb[nq * 99 / 100], tb[nq / 2] > 0 ? ta[nq / 2] / tb[nq / 2] : 0, same, nq);
+    }
+    pa_fini(&pa);
+}
+
 int main(void)
 {
     printf("== bench_nav: fewest room steps (hol_nav)\n");
@@ -237,6 +287,7 @@ int main(void)
            (double)hol_navtab_table_bytes(HOL_NAV_DEFAULT_RADIUS) / 1048576.0,
            HOL_NAV_DEFAULT_NODES);
 
+    bench_side_by_side(nav);
     bench_distances(nav, 0, "per tile distance, default budget (arena, 262144 nodes); "
                             "<= 12 exact from the table, beyond anytime");
     bench_distances(nav, 8000, "per tile distance, --budget 8000 (anytime beyond 12)");

@@ -21,6 +21,8 @@
 
 #include <cmocka.h>
 
+#include "plain_astar.h"
+
 #include "../core/hol_nav.h"
 #include "../core/hol_nav_line.h"
 #include "../core/hol_nav_table.h"
@@ -857,10 +859,34 @@ static void test_parse(void **state)
     assert_int_equal(strlen(tiny), 7);
 }
 
+/* The original's method (plain A*, tests/plain_astar.h) and hol_nav agree
+ * on the fewest steps: 120 random queries at tile distance 1..9. */
+static void test_plain_astar_agrees(void **state)
+{
+    (void)state;
+    plain_astar pa;
+    assert_int_equal(pa_init(&pa, 20), 0);
+    static uint8_t walk[HOL_NAV_WALK_MAX];
+    for (int q = 0; q < 120; q++) {
+        hol_room s = random_start(30);
+        int d = 1 + q % 9;
+        hol_tile t = random_target(&s, d);
+        size_t ex = 0;
+        int len = pa_find(&pa, &s, t, &ex);
+        assert_true(len >= 0);
+        hol_nav_result res;
+        assert_int_equal(hol_nav_find(g_nav, &s, t, 0, walk, sizeof walk, &res), HOL_OK);
+        assert_int_equal(res.len, len);
+        assert_true(ex > 0);
+    }
+    pa_fini(&pa);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_index),
+        cmocka_unit_test(test_plain_astar_agrees),
         cmocka_unit_test(test_table_converges),
         cmocka_unit_test(test_table_converges_default),
         cmocka_unit_test(test_legs_converge),
