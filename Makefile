@@ -35,7 +35,8 @@ PLAT_SRC := $(wildcard platform/file/*.c platform/image/*.c)
 # The headset (OpenXR): the pure room/lifecycle part always, the session
 # only with `make XR=1` (CI builds and runs it in the Monado chroot).
 XR      ?= 0
-XR_SRC  := platform/openxr/hol_xr_room.c $(if $(filter 1,$(XR)),platform/openxr/hol_xr.c)
+XR_PURE_SRC := platform/openxr/hol_xr_room.c platform/openxr/hol_xr_bind.c
+XR_SRC  := $(XR_PURE_SRC) $(if $(filter 1,$(XR)),platform/openxr/hol_xr.c)
 XR_LIBS := $(if $(filter 1,$(XR)),-lopenxr_loader -lGL -lX11)
 ifeq ($(XR),1)
 $(BUILD)/platform/cli/cmd_xr.o: override CFLAGS += -DHOL_XR
@@ -117,10 +118,10 @@ $(BUILD)/tests/test_level: tests/test_level.c $(LEVEL_SRC) $(CORE_LIB)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) -o $@ $< $(LEVEL_SRC) $(CORE_LIB) $(LDFLAGS) -lcmocka $(LDLIBS)
 
-# The headset layer's pure part (room in the stage, lifecycle).
-$(BUILD)/tests/test_xr_room: tests/test_xr_room.c platform/openxr/hol_xr_room.c platform/openxr/hol_xr_room.h $(CORE_LIB)
+# The headset layer's pure part (room in the stage, fade, lifecycle, bindings).
+$(BUILD)/tests/test_xr_%: tests/test_xr_%.c $(XR_PURE_SRC) $(wildcard platform/openxr/*.h) $(CORE_LIB)
 	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS) -o $@ $< platform/openxr/hol_xr_room.c $(CORE_LIB) $(LDFLAGS) -lcmocka $(LDLIBS)
+	$(CC) $(CFLAGS) -o $@ $< $(XR_PURE_SRC) $(CORE_LIB) $(LDFLAGS) -lcmocka $(LDLIBS)
 
 # The device layer against a scripted hidapi (tests/fake_hidapi): no device here.
 $(BUILD)/tests/test_hid_dev: tests/test_hid_dev.c tests/hid_samples.h tests/fake_hidapi/hidapi/hidapi.h $(HID_SRC) $(HID_DEV_SRC) $(CORE_LIB)

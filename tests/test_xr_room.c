@@ -109,6 +109,48 @@ static void test_bounds(void **state)
     assert_false(hol_xr_bounds_hold_room(4, 2.5f));
 }
 
+/* the fade's model: the floor distance beyond the inner square, by
+ * brute force over the square's edges, against hol_xr_fade */
+static double beyond(double x, double z, double m)
+{
+    double cx = x < m ? m : x > 3 - m ? 3 - m : x, cz = z < m ? m : z > 3 - m ? 3 - m : z;
+    double dx = x - cx, dz = z - cz;
+    return fabs(dx) > fabs(dz) ? fabs(dx) : fabs(dz); /* square distance */
+}
+
+static void test_fade(void **state)
+{
+    (void)state;
+    const double m = 0.15;
+    /* inside the inner square: no fade, anywhere, at any height */
+    for (double x = m; x <= 3 - m; x += 0.05)
+        for (double z = m; z <= 3 - m; z += 0.05) {
+            double e[2][3] = {{x, 1.7, z}, {x, 0.2, z}};
+            assert_true(hol_xr_fade(e, m) == 0);
+        }
+    /* beyond it: linear, complete HOL_XR_FADE_FULL inside the boundary */
+    uint64_t s = 3;
+    for (int i = 0; i < 2000; i++) {
+        double x = frand(&s) * 3.6 - 0.3, z = frand(&s) * 3.6 - 0.3;
+        double e[2][3] = {{x, 1.6, z}, {1.5, 1.6, 1.5}};
+        double want = beyond(x, z, m) / (m - HOL_XR_FADE_FULL);
+        want = want > 1 ? 1 : want;
+        assert_true(fabs(hol_xr_fade(e, m) - want) < 1e-9);
+        /* the larger of the two eyes, whichever eye it is */
+        double f[2][3] = {{1.5, 1.6, 1.5}, {x, 1.6, z}};
+        assert_true(fabs(hol_xr_fade(f, m) - want) < 1e-9);
+        /* an eye outside the room is fully faded */
+        if (x <= 0 || x >= 3 || z <= 0 || z >= 3)
+            assert_true(hol_xr_fade(e, m) == 1);
+    }
+    double edge[2][3] = {{HOL_XR_FADE_FULL, 1.6, 1.5}, {1.5, 1.6, 1.5}};
+    assert_true(hol_xr_fade(edge, m) == 1);
+    double half[2][3] = {{1.5, 1.6, 3 - (m + HOL_XR_FADE_FULL) / 2}, {1.5, 1.6, 1.5}};
+    assert_true(fabs(hol_xr_fade(half, m) - 0.5) < 1e-9);
+    double nan_eye[2][3] = {{NAN, 1.6, 1.5}, {1.5, 1.6, 1.5}};
+    assert_true(hol_xr_fade(nan_eye, m) == 1);
+}
+
 static void test_lifecycle(void **state)
 {
     (void)state;
@@ -139,6 +181,7 @@ int main(void)
         cmocka_unit_test(test_default_placement),
         cmocka_unit_test(test_recentre),
         cmocka_unit_test(test_bounds),
+        cmocka_unit_test(test_fade),
         cmocka_unit_test(test_lifecycle),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

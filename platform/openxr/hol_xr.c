@@ -33,6 +33,7 @@
 #include "../../core/hol_motion.h"
 #include "../../render/hol_app_frame.h"
 #include "../../render/hol_render.h"
+#include "hol_xr_bind.h"
 #include "hol_xr_room.h"
 
 /* GL entry points this layer calls itself (the renderer loads its own) */
@@ -71,6 +72,9 @@ typedef struct hol__gl {
 } hol__gl;
 
 #define HOL__MAX_IMAGES 8
+/* metres the app's head keeps from the hedges: the motion's default margin
+ * (hol_motion_desc), where the safety fade begins */
+#define HOL__MARGIN 0.15
 
 typedef struct hol__eye {
     XrSwapchain swapchain;
@@ -84,8 +88,6 @@ typedef struct hol__eye {
 #endif
 } hol__eye;
 
-enum { HOL__A_CONFIRM, HOL__A_MENU, HOL__A_RECENTRE, HOL__A_MINIMAP, HOL__A_COUNT };
-
 typedef struct hol__xr {
     const hol_xr_desc *d;
     const hol_xr_app_fns *fns;
@@ -94,7 +96,7 @@ typedef struct hol__xr {
     XrSession session;
     XrSpace stage, view_space, grip[2];
     XrActionSet set;
-    XrAction grip_action, act[HOL__A_COUNT];
+    XrAction grip_action, act[HOL_XR_ACT_COUNT];
     XrPath hand_path[2];
     hol__eye eye[2];
     int state, running, focused, quit_requested, done, reached_focused;
@@ -108,6 +110,7 @@ typedef struct hol__xr {
     double last_t;
     unsigned prev_buttons;
     int grips_located[2];
+    long faded; /* frames drawn with the safety fade */
     int bounds_small;
     double cpu_ms[4096], step_ms[4096];
     long ncpu;
@@ -316,11 +319,6 @@ static int hol__action(hol__xr *x, XrAction *out, const char *name, const char *
     return 0;
 }
 
-typedef struct hol__bind {
-    const char *profile;
-    const char *path[HOL__A_COUNT]; /* NULL: not bound on this controller */
-} hol__bind;
-
 static int hol__actions(hol__xr *x)
 {
     XrActionSetCreateInfo si = {XR_TYPE_ACTION_SET_CREATE_INFO};
@@ -329,41 +327,22 @@ static int hol__actions(hol__xr *x)
     HOL__XR(x, xrCreateActionSet(x->instance, &si, &x->set));
     x->hand_path[0] = hol__path(x, "/user/hand/left");
     x->hand_path[1] = hol__path(x, "/user/hand/right");
-    if (hol__action(x, &x->grip_action, "grip", "Hand pose", XR_ACTION_TYPE_POSE_INPUT, 1) ||
-        hol__action(x, &x->act[HOL__A_CONFIRM], "confirm", "Confirm",
-                    XR_ACTION_TYPE_BOOLEAN_INPUT, 0) ||
-        hol__action(x, &x->act[HOL__A_MENU], "menu", "Menu", XR_ACTION_TYPE_BOOLEAN_INPUT, 0) ||
-        hol__action(x, &x->act[HOL__A_RECENTRE], "recentre", "Recentre the room",
-                    XR_ACTION_TYPE_BOOLEAN_INPUT, 0) ||
-        hol__action(x, &x->act[HOL__A_MINIMAP], "minimap", "Minimap",
-                    XR_ACTION_TYPE_BOOLEAN_INPUT, 0))
+    if (hol__action(x, &x->grip_action, "grip", "Hand pose", XR_ACTION_TYPE_POSE_INPUT, 1))
         return 1;
-    /* confirm, menu, recentre, minimap per controller */
-    static const hol__bind binds[] = {
-        {"/interaction_profiles/khr/simple_controller",
-         {"/user/hand/right/input/select/click", "/user/hand/right/input/menu/click",
-          "/user/hand/left/input/menu/click", "/user/hand/left/input/select/click"}},
-        {"/interaction_profiles/oculus/touch_controller",
-         {"/user/hand/right/input/a/click", "/user/hand/left/input/menu/click",
-          "/user/hand/left/input/y/click", "/user/hand/left/input/x/click"}},
-        {"/interaction_profiles/htc/vive_controller",
-         {"/user/hand/right/input/trigger/click", "/user/hand/right/input/menu/click",
-          "/user/hand/left/input/menu/click", "/user/hand/left/input/trackpad/click"}},
-        {"/interaction_profiles/valve/index_controller",
-         {"/user/hand/right/input/a/click", "/user/hand/right/input/b/click",
-          "/user/hand/left/input/b/click", "/user/hand/left/input/a/click"}},
-        {"/interaction_profiles/microsoft/motion_controller",
-         {"/user/hand/right/input/trigger/value", "/user/hand/right/input/menu/click",
-          "/user/hand/left/input/menu/click", "/user/hand/left/input/trackpad/click"}},
-    };
-    for (size_t i = 0; i < sizeof binds / sizeof binds[0]; i++) {
-        XrActionSuggestedBinding sb[HOL__A_COUNT + 2];
+    for (int a = 0; a < HOL_XR_ACT_COUNT; a++)
+        if (hol__action(x, &x->act[a], hol_xr_action_name(a), hol_xr_action_label(a),
+                        XR_ACTION_TYPE_BOOLEAN_INPUT, 0))
+            return 1;
+    /* the suggested bindings (hol_xr_bind.h): every one must be accepted */
+    const hol_xr_profile *binds = hol_xr_profiles();
+    for (int i = 0; i < HOL_XR_NPROFILES; i++) {
+        XrActionSuggestedBinding sb[HOL_XR_ACT_COUNT + 2];
         uint32_t n = 0;
-        sb[n].action = x->grip_action;
-        sb[n++].binding = hol__path(x, "/user/hand/left/input/grip/pose");
-        sb[n].action = x->grip_action;
-        sb[n++].binding = hol__path(x, "/user/hand/right/input/grip/pose");
-        for (int a = 0; a < HOL__A_COUNT; a++) {
+        for (int h = 0; h < 2; h++) {
+            sb[n].action = x->grip_action;
+            sb[n++].binding = hol__path(x, hol_xr_grip_path(h));
+        }
+        for (int a = 0; a < HOL_XR_ACT_COUNT; a++) {
             sb[n].action = x->act[a];
             sb[n++].binding = hol__path(x, binds[i].path[a]);
         }
@@ -615,10 +594,10 @@ static int hol__frame(hol__xr *x)
         sy.countActiveActionSets = 1;
         sy.activeActionSets = &as;
         HOL__XR(x, xrSyncActions(x->session, &sy));
-        in.buttons |= hol__bool(x, HOL__A_CONFIRM) ? HOL_BTN_CONFIRM : 0;
-        in.buttons |= hol__bool(x, HOL__A_MENU) ? HOL_BTN_MENU : 0;
-        in.buttons |= hol__bool(x, HOL__A_RECENTRE) ? HOL_BTN_RECENTRE : 0;
-        in.buttons |= hol__bool(x, HOL__A_MINIMAP) ? HOL_BTN_MINIMAP : 0;
+        int held[HOL_XR_ACT_COUNT];
+        for (int a = 0; a < HOL_XR_ACT_COUNT; a++)
+            held[a] = hol__bool(x, a);
+        in.buttons |= hol_xr_buttons(held);
         for (int h = 0; h < 2; h++) {
             XrSpaceLocation gl = {XR_TYPE_SPACE_LOCATION};
             if (XR_SUCCEEDED(xrLocateSpace(x->grip[h], x->stage, fs.predictedDisplayTime, &gl)) &&
@@ -670,6 +649,18 @@ static int hol__frame(hol__xr *x)
     memset(pv, 0, sizeof pv);
     int rendered = 0;
     if (fs.shouldRender && views_ok && v) {
+        /* both eyes where they are (the world never moves), and the safety
+         * fade from how far they are beyond where the app's head may go */
+        hol_pose eroom[2];
+        double eyes[2][3];
+        for (int e = 0; e < 2; e++) {
+            float ep[3], eq[4];
+            hol__pose_in(&views[e].pose, ep, eq);
+            hol_xr_to_room(&x->calib, ep, eq, &eroom[e]);
+            for (int k = 0; k < 3; k++)
+                eyes[e][k] = eroom[e].pos[k] += room_from_stage_shift[k];
+        }
+        double fade = hol_xr_fade(eyes, HOL__MARGIN);
         for (int e = 0; e < 2; e++) {
             hol__eye *ey = &x->eye[e];
             uint32_t idx = 0;
@@ -680,19 +671,13 @@ static int hol__frame(hol__xr *x)
             HOL__XR(x, xrWaitSwapchainImage(ey->swapchain, &wi2));
             x->gl.BindFramebuffer(HOL__GL_FRAMEBUFFER, ey->fbo[idx]);
             x->gl.Viewport(0, 0, ey->w, ey->h);
-            float ep[3], eq[4];
-            hol__pose_in(&views[e].pose, ep, eq);
-            hol_pose eroom;
-            hol_xr_to_room(&x->calib, ep, eq, &eroom);
-            for (int k = 0; k < 3; k++)
-                eroom.pos[k] += room_from_stage_shift[k];
             hol_frame_desc fd;
             hol_app_frame_desc(v, e, ey->w, ey->h, 0, &fd);
             for (int k = 0; k < 3; k++)
-                fd.cam.eye[k] = eroom.pos[k];
+                fd.cam.eye[k] = eroom[e].pos[k];
             fd.cam.has_pose = 1;
             for (int k = 0; k < 4; k++)
-                fd.cam.orient[k] = eroom.quat[k];
+                fd.cam.orient[k] = eroom[e].quat[k];
             fd.cam.tan_left = tan(views[e].fov.angleLeft);
             fd.cam.tan_right = tan(views[e].fov.angleRight);
             fd.cam.tan_down = tan(views[e].fov.angleDown);
@@ -703,22 +688,25 @@ static int hol__frame(hol__xr *x)
                 for (int k = 0; k < 4; k++)
                     fd.hand_orient[k] = in.hand[0].quat[k];
             }
-            /* the eye's own room state: the cell its position lies in */
-            int inside = fd.cam.eye[0] > 0 && fd.cam.eye[0] < 3 && fd.cam.eye[2] > 0 &&
-                         fd.cam.eye[2] < 3 &&
+            /* the eye's own room state: the cell its position lies in;
+             * none (outside the room): the boundary colour alone */
+            int inside = fade < 1 &&
                          hol_motion_eye_state(&v->user, v->head, fd.cam.eye, &fd.user) == HOL_OK;
+            fd.fade = inside ? fade : 1;
             hol_render_stats rs;
             memset(&rs, 0, sizeof rs);
-            if (!inside || hol_render_frame(x->rnd, &fd, &rs)) {
-                /* outside the room: the boundary, the world not drawn */
-                x->gl.ClearColor(0.22f, 0.46f, 0.24f, 1);
-                x->gl.Clear(HOL__GL_COLOR_BUFFER_BIT | HOL__GL_DEPTH_BUFFER_BIT |
-                            HOL__GL_STENCIL_BUFFER_BIT);
+            if (hol_render_frame(x->rnd, &fd, &rs)) {
+                fd.fade = 1; /* never a stale image */
+                hol_render_frame(x->rnd, &fd, &rs);
             }
-            x->draws[e] = rs.draw_calls;
-            x->tris[e] = rs.triangles;
+            x->faded += fd.fade > 0 && e == 0;
+            if (fade == 0) { /* the figures of a full view */
+                x->draws[e] = rs.draw_calls;
+                x->tris[e] = rs.triangles;
+            }
 #ifndef __ANDROID__
-            if (e == 0 && x->d->check_dir && x->submitted == x->d->check_frame && inside)
+            if (e == 0 && x->d->check_dir && x->submitted == x->d->check_frame && inside &&
+                fd.fade == 0)
                 hol__check(x, &fd, ey->w, ey->h);
 #endif
             x->gl.BindFramebuffer(HOL__GL_FRAMEBUFFER, 0);
@@ -731,7 +719,7 @@ static int hol__frame(hol__xr *x)
             pv[e].subImage.imageRect.extent.width = ey->w;
             pv[e].subImage.imageRect.extent.height = ey->h;
         }
-        rendered = 1;
+        rendered = fade > 0 ? 2 : 1; /* 2: faded (cheaper; not in the CPU figures) */
     }
     XrCompositionLayerProjection layer = {XR_TYPE_COMPOSITION_LAYER_PROJECTION};
     layer.space = x->stage;
@@ -746,7 +734,7 @@ static int hol__frame(hol__xr *x)
     HOL__XR(x, xrEndFrame(x->session, &ei));
     x->submitted++;
     /* the check frame's OSMesa reference is not the app's time */
-    if (rendered && x->submitted - 1 != x->d->check_frame &&
+    if (rendered == 1 && x->submitted - 1 != x->d->check_frame &&
         x->ncpu < (long)(sizeof x->cpu_ms / sizeof x->cpu_ms[0])) {
         x->step_ms[x->ncpu] = x->step_now;
         x->cpu_ms[x->ncpu++] = hol__thread_cpu_ms() - c0;
@@ -876,13 +864,13 @@ static int hol__run(hol__xr *x)
             nanosleep(&ts, NULL);
         }
     }
-    printf("xr: frames submitted %ld, reached FOCUSED %s\n", x->submitted,
-           x->reached_focused ? "yes" : "no");
+    printf("xr: frames submitted %ld, reached FOCUSED %s, faded at the boundary %ld\n",
+           x->submitted, x->reached_focused ? "yes" : "no", x->faded);
     if (x->ncpu) {
         qsort(x->cpu_ms, (size_t)x->ncpu, sizeof x->cpu_ms[0], hol__cmp);
         qsort(x->step_ms, (size_t)x->ncpu, sizeof x->step_ms[0], hol__cmp);
         printf("xr: app thread CPU per stereo frame (step, both eyes, submit; without "
-               "xrWaitFrame): median %.2f ms, p99 %.2f ms over %ld frames; of it the app "
+               "xrWaitFrame; unfaded frames): median %.2f ms, p99 %.2f ms over %ld frames; of it the app "
                "step median %.3f ms, p99 %.3f ms\n",
                x->cpu_ms[x->ncpu / 2], x->cpu_ms[x->ncpu * 99 / 100], x->ncpu,
                x->step_ms[x->ncpu / 2], x->step_ms[x->ncpu * 99 / 100]);

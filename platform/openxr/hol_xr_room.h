@@ -14,6 +14,7 @@
  * - Stage bounds (xrGetReferenceSpaceBoundsRect, full width and depth):
  *   smaller than 3 x 3 m in either direction is a warning; none is not an
  *   error.
+ * - Safety: hol_xr_fade says how far the view fades to the boundary.
  * - Lifecycle: hol_xr_lifecycle maps each session state (the XrSessionState
  *   values, mirrored below) to what the platform must do: READY begins the
  *   session, STOPPING ends it, EXITING and LOSS_PENDING tear it down; the
@@ -41,6 +42,17 @@ void hol_xr_recentre(hol_xr_calib *c, const float head_pos[3], const float head_
 
 /* 1 when the stage bounds (metres) hold the room, 0 when smaller (warn). */
 int hol_xr_bounds_hold_room(float width, float depth);
+
+/* The safety fade of the view (hol_frame_desc.fade) for the tracked,
+ * unclamped eyes' room positions: 0 while every eye's floor point lies in
+ * the square `margin` metres inside the hedges (where the app's head moves
+ * freely; the motion's margin), rising linearly with the distance beyond it
+ * to 1 at HOL_XR_FADE_FULL metres inside the boundary, and 1 beyond: the
+ * view is gone before an eye leaves the room, and the world never moves
+ * (the eyes are drawn where they are; the app's head stays clamped). One
+ * value for both eyes, the larger. */
+#define HOL_XR_FADE_FULL 0.05
+double hol_xr_fade(const double eye[2][3], double margin);
 
 /* XrSessionState values (OpenXR 1.0, section 10.3). */
 enum {

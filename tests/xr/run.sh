@@ -20,7 +20,7 @@ mountpoint -q "$CHROOT/proc" || mount --bind /proc "$CHROOT/proc"
 mountpoint -q "$CHROOT/dev" || mount --bind /dev "$CHROOT/dev"
 rm -rf "$CHROOT/src"
 mkdir -p "$CHROOT/src"
-(cd "$root" && git ls-files -z | xargs -0 tar -cf - 2>/dev/null) | tar -C "$CHROOT/src" -xf -
+(cd "$root" && git ls-files -z --cached --others --exclude-standard | xargs -0 tar -cf - 2>/dev/null) | tar -C "$CHROOT/src" -xf -
 chroot "$CHROOT" sh -c 'cd /src && make -s -j2 BUILD=build/xr XR=1 build/xr/holonomy' || {
     echo "xr-test: FAIL: building holonomy with XR=1 in the chroot" >&2; exit 1; }
 echo "xr-test: built in the chroot ($(( $(date +%s) - start )) s)"
