@@ -243,8 +243,12 @@ quest:
 deps-xr:
 	@$(MAKE) -s deps DEB_PACKAGES="debootstrap"
 
-xr-test: deps-xr
-	@sh tests/xr/run.sh
+# The host's half: `holonomy render` of the read-back eye and the comparison.
+$(BUILD)/xr_png_diff: tests/xr/png_diff.c $(PLAT_OBJ) $(RENDER_LIB) $(CORE_LIB)
+	$(CC) $(CFLAGS) -o $@ $< $(PLAT_OBJ) $(RENDER_LIB) $(CORE_LIB) $(LDFLAGS) -lz $(LDLIBS)
+
+xr-test: deps-xr $(BUILD)/holonomy $(BUILD)/xr_png_diff
+	@HOLONOMY=$(BUILD)/holonomy PNG_DIFF=$(BUILD)/xr_png_diff sh tests/xr/run.sh
 
 # The libusb hidapi backend builds too (CI builds it beside the default).
 check-hid-libusb:

@@ -504,6 +504,12 @@ static void hol__check(hol__xr *x, const hol_frame_desc *fd, int w, int h)
     char path[600];
     snprintf(path, sizeof path, "%s/xr-eye0.png", x->d->check_dir);
     hol_png_write_file(path, got, w, h, 0);
+    /* the same eye for `holonomy render` (the host's check in make xr-test) */
+    const hol_camera *c = &fd->cam;
+    printf("xr: check eye 0 render --eye %.9g,%.9g,%.9g --orient %.9g,%.9g,%.9g,%.9g "
+           "--tan %.17g,%.17g,%.17g,%.17g --size %dx%d\n",
+           c->eye[0], c->eye[1], c->eye[2], c->orient[0], c->orient[1], c->orient[2],
+           c->orient[3], c->tan_left, c->tan_right, c->tan_down, c->tan_up, w, h);
     snprintf(path, sizeof path, "%s/osmesa-eye0.png", x->d->check_dir);
     fflush(stdout);
     pid_t pid = fork();
