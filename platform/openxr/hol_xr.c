@@ -482,7 +482,10 @@ static void hol__destroy(hol__xr *x)
 #endif
 }
 
-int hol_xr_run(const hol_xr_desc *desc, const hol_xr_app_fns *fns)
+/* Both entries: the one allocation, the run (own instance and context, or
+ * the caller's in ext), teardown of what was made. */
+static int hol__main(const hol_xr_desc *desc, const hol_xr_app_fns *fns,
+                     const hol_xr_external *ext)
 {
     hol__xr *x = calloc(1, sizeof *x); /* the platform's one allocation */
     if (!x) {
@@ -494,12 +497,26 @@ int hol_xr_run(const hol_xr_desc *desc, const hol_xr_app_fns *fns)
 #ifdef __ANDROID__
     x->edpy = EGL_NO_DISPLAY;
 #endif
-    hol__binding binding;
-    int rc = hol__instance(x) || hol__graphics(x, &binding) || hol__run(x, &binding);
+    int rc;
+    if (ext) {
+        x->external = 1;
+        x->instance = ext->instance;
+        x->system = ext->system;
+        x->getproc = ext->getproc;
+        rc = hol__run(x, ext->graphics_binding);
+    } else {
+        hol__binding binding;
+        rc = hol__instance(x) || hol__graphics(x, &binding) || hol__run(x, &binding);
+    }
     hol__destroy(x);
     free(x);
     fflush(stdout);
     return rc;
+}
+
+int hol_xr_run(const hol_xr_desc *desc, const hol_xr_app_fns *fns)
+{
+    return hol__main(desc, fns, NULL);
 }
 
 int hol_xr_run_session(const hol_xr_desc *desc, const hol_xr_app_fns *fns,
@@ -509,23 +526,5 @@ int hol_xr_run_session(const hol_xr_desc *desc, const hol_xr_app_fns *fns,
         fprintf(stderr, "holonomy xr: no instance, graphics binding or getproc given\n");
         return 1;
     }
-    hol__xr *x = calloc(1, sizeof *x); /* the platform's one allocation */
-    if (!x) {
-        fprintf(stderr, "holonomy xr: out of memory\n");
-        return 1;
-    }
-    x->d = desc;
-    x->fns = fns;
-    x->external = 1;
-    x->instance = ext->instance;
-    x->system = ext->system;
-    x->getproc = ext->getproc;
-#ifdef __ANDROID__
-    x->edpy = EGL_NO_DISPLAY;
-#endif
-    int rc = hol__run(x, ext->graphics_binding);
-    hol__destroy(x);
-    free(x);
-    fflush(stdout);
-    return rc;
+    return hol__main(desc, fns, ext);
 }
