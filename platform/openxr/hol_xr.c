@@ -19,7 +19,14 @@ int hol__fail(hol__xr *x, const char *what, XrResult r)
     char name[XR_MAX_RESULT_STRING_SIZE] = "";
     if (x->instance != XR_NULL_HANDLE)
         xrResultToString(x->instance, r, name);
-    fprintf(stderr, "holonomy xr: %s failed: %s (%d)\n", what, name[0] ? name : "?", (int)r);
+    if (r == XR_ERROR_RUNTIME_UNAVAILABLE) /* no instance yet to name it */
+        fprintf(stderr, "holonomy xr: no OpenXR runtime (XR_ERROR_RUNTIME_UNAVAILABLE from "
+                        "%s): start one, e.g. monado-service, or set XR_RUNTIME_JSON\n", what);
+    else if (r == XR_ERROR_FORM_FACTOR_UNAVAILABLE)
+        fprintf(stderr, "holonomy xr: the OpenXR runtime has no headset connected "
+                        "(XR_ERROR_FORM_FACTOR_UNAVAILABLE)\n");
+    else
+        fprintf(stderr, "holonomy xr: %s failed: %s (%d)\n", what, name[0] ? name : "?", (int)r);
     return 1;
 }
 
