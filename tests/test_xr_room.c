@@ -8,6 +8,7 @@
 #include <stddef.h>
 #include <stdint.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include <cmocka.h>
 
@@ -175,6 +176,89 @@ static void test_lifecycle(void **state)
     }
 }
 
+/* a session's events through the state machine: (state, action) pairs,
+ * then what quitting does */
+static void run_events(hol_xr_life *l, const int (*ev)[2], int n)
+{
+    for (int i = 0; i < n; i++) {
+        assert_false(l->done);
+        assert_int_equal(hol_xr_life_event(l, ev[i][0]), ev[i][1]);
+    }
+}
+
+static void test_life_quit_by_the_app(void **state)
+{
+    (void)state;
+    hol_xr_life l;
+    memset(&l, 0, sizeof l);
+    static const int up[][2] = {{HOL_XR_STATE_IDLE, HOL_XR_DO_NOTHING},
+                                {HOL_XR_STATE_READY, HOL_XR_DO_BEGIN},
+                                {HOL_XR_STATE_SYNCHRONIZED, HOL_XR_DO_NOTHING},
+                                {HOL_XR_STATE_VISIBLE, HOL_XR_DO_NOTHING},
+                                {HOL_XR_STATE_FOCUSED, HOL_XR_DO_NOTHING}};
+    run_events(&l, up, 5);
+    assert_true(l.running && l.focused);
+    /* quitting while running asks the runtime, once */
+    assert_int_equal(hol_xr_life_quit(&l), HOL_XR_QUIT_REQUEST_EXIT);
+    assert_int_equal(hol_xr_life_quit(&l), HOL_XR_QUIT_NONE);
+    assert_false(l.done);
+    static const int down[][2] = {{HOL_XR_STATE_VISIBLE, HOL_XR_DO_NOTHING},
+                                  {HOL_XR_STATE_SYNCHRONIZED, HOL_XR_DO_NOTHING},
+                                  {HOL_XR_STATE_STOPPING, HOL_XR_DO_END},
+                                  {HOL_XR_STATE_IDLE, HOL_XR_DO_NOTHING},
+                                  {HOL_XR_STATE_EXITING, HOL_XR_DO_TEAR_DOWN}};
+    run_events(&l, down, 5);
+    assert_true(l.done);
+    assert_false(l.running || l.focused);
+}
+
+static void test_life_stopped_by_the_runtime(void **state)
+{
+    (void)state;
+    hol_xr_life l;
+    memset(&l, 0, sizeof l);
+    /* the headset taken off: STOPPING unasked ends the session and waits;
+     * READY begins it again (the app must not leave) */
+    static const int ev[][2] = {{HOL_XR_STATE_IDLE, HOL_XR_DO_NOTHING},
+                                {HOL_XR_STATE_READY, HOL_XR_DO_BEGIN},
+                                {HOL_XR_STATE_FOCUSED, HOL_XR_DO_NOTHING},
+                                {HOL_XR_STATE_VISIBLE, HOL_XR_DO_NOTHING},
+                                {HOL_XR_STATE_STOPPING, HOL_XR_DO_END},
+                                {HOL_XR_STATE_IDLE, HOL_XR_DO_NOTHING},
+                                {HOL_XR_STATE_READY, HOL_XR_DO_BEGIN},
+                                {HOL_XR_STATE_FOCUSED, HOL_XR_DO_NOTHING}};
+    run_events(&l, ev, 8);
+    assert_false(l.done);
+    assert_true(l.running && l.focused);
+    /* stopped again, then the user quits while idle: leave at once (no
+     * xrRequestExitSession without a running session) */
+    static const int ev2[][2] = {{HOL_XR_STATE_STOPPING, HOL_XR_DO_END},
+                                 {HOL_XR_STATE_IDLE, HOL_XR_DO_NOTHING}};
+    run_events(&l, ev2, 2);
+    assert_int_equal(hol_xr_life_quit(&l), HOL_XR_QUIT_LEAVE);
+    assert_true(l.done);
+    assert_int_equal(hol_xr_life_quit(&l), HOL_XR_QUIT_NONE);
+}
+
+static void test_life_loss(void **state)
+{
+    (void)state;
+    hol_xr_life l;
+    memset(&l, 0, sizeof l);
+    static const int ev[][2] = {{HOL_XR_STATE_READY, HOL_XR_DO_BEGIN},
+                                {HOL_XR_STATE_FOCUSED, HOL_XR_DO_NOTHING},
+                                {HOL_XR_STATE_LOSS_PENDING, HOL_XR_DO_TEAR_DOWN}};
+    run_events(&l, ev, 3);
+    assert_true(l.done);
+    assert_false(l.running);
+    assert_int_equal(hol_xr_life_quit(&l), HOL_XR_QUIT_NONE);
+    /* quitting before the session ever ran leaves at once */
+    memset(&l, 0, sizeof l);
+    assert_int_equal(hol_xr_life_event(&l, HOL_XR_STATE_IDLE), HOL_XR_DO_NOTHING);
+    assert_int_equal(hol_xr_life_quit(&l), HOL_XR_QUIT_LEAVE);
+    assert_true(l.done);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -183,6 +267,9 @@ int main(void)
         cmocka_unit_test(test_bounds),
         cmocka_unit_test(test_fade),
         cmocka_unit_test(test_lifecycle),
+        cmocka_unit_test(test_life_quit_by_the_app),
+        cmocka_unit_test(test_life_stopped_by_the_runtime),
+        cmocka_unit_test(test_life_loss),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

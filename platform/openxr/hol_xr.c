@@ -137,7 +137,7 @@ static int hol__frame(hol__xr *x)
     double t = (double)(fs.predictedDisplayTime - x->t0) * 1e-9;
     in.time_s = t > x->last_t ? t : x->last_t;
     x->last_t = in.time_s;
-    if (x->focused)
+    if (x->life.focused)
         in.flags |= HOL_INPUT_FOCUSED;
     if (x->bounds_small)
         in.flags |= HOL_INPUT_BOUNDS_SMALL;
@@ -149,7 +149,7 @@ static int hol__frame(hol__xr *x)
         hol__pose_in(&loc.pose, hp, hq);
         in.flags |= HOL_INPUT_HEAD_VALID;
     }
-    if (x->focused) {
+    if (x->life.focused) {
         XrActiveActionSet as = {x->set, XR_NULL_PATH};
         XrActionsSyncInfo sy = {XR_TYPE_ACTIONS_SYNC_INFO};
         sy.countActiveActionSets = 1;
@@ -199,10 +199,9 @@ static int hol__frame(hol__xr *x)
     if (x->fns->level_started(x->fns->user))
         hol_render_invalidate(x->rnd);
     if (st > 0 || (x->d->frames > 0 && x->submitted + 1 >= x->d->frames)) {
-        if (!x->quit_requested) {
+        if (hol_xr_life_quit(&x->life) == HOL_XR_QUIT_REQUEST_EXIT) {
             HOL__XR(x, xrRequestExitSession(x->session));
             printf("xr: exit requested after %ld frames\n", x->submitted + 1);
-            x->quit_requested = 1;
         }
     }
     /* render each eye */
@@ -306,38 +305,42 @@ static int hol__frame(hol__xr *x)
 static void hol__events(hol__xr *x)
 {
     XrEventDataBuffer ev = {XR_TYPE_EVENT_DATA_BUFFER};
-    while (xrPollEvent(x->instance, &ev) == XR_SUCCESS) {
+    XrResult pr;
+    while ((pr = xrPollEvent(x->instance, &ev)) == XR_SUCCESS) {
         if (ev.type == XR_TYPE_EVENT_DATA_SESSION_STATE_CHANGED) {
             const XrEventDataSessionStateChanged *e = (const XrEventDataSessionStateChanged *)&ev;
-            x->state = (int)e->state;
-            printf("xr: state %s\n", hol__state_name(x->state));
-            x->reached_focused |= x->state == HOL_XR_STATE_FOCUSED;
-            hol_xr_do d = hol_xr_lifecycle(x->state, &x->running, &x->focused);
+            int state = (int)e->state;
+            printf("xr: state %s\n", hol__state_name(state));
+            x->reached_focused |= state == HOL_XR_STATE_FOCUSED;
+            hol_xr_do d = hol_xr_life_event(&x->life, state);
             if (d == HOL_XR_DO_BEGIN) {
                 XrSessionBeginInfo sb = {XR_TYPE_SESSION_BEGIN_INFO};
                 sb.primaryViewConfigurationType = XR_VIEW_CONFIGURATION_TYPE_PRIMARY_STEREO;
                 XrResult r = xrBeginSession(x->session, &sb);
                 if (XR_FAILED(r)) {
                     hol__fail(x, "xrBeginSession", r);
-                    x->done = 1;
+                    x->failed = x->life.done = 1;
                 }
             } else if (d == HOL_XR_DO_END) {
                 XrResult r = xrEndSession(x->session);
-                if (XR_FAILED(r))
+                if (XR_FAILED(r)) {
                     hol__fail(x, "xrEndSession", r);
-                else
-                    printf("xr: session ended after STOPPING\n");
-                if (!x->quit_requested) /* the runtime stopped us: leave */
-                    x->done = 1;
-            } else if (d == HOL_XR_DO_TEAR_DOWN) {
-                x->done = 1;
+                    x->failed = x->life.done = 1;
+                } else {
+                    printf("xr: session ended after STOPPING%s\n",
+                           x->life.quit_requested ? "" : " (by the runtime: waiting for READY)");
+                }
             }
         } else if (ev.type == XR_TYPE_EVENT_DATA_INSTANCE_LOSS_PENDING) {
             printf("xr: instance loss pending\n");
-            x->done = 1;
+            x->life.done = 1;
         }
         ev.type = XR_TYPE_EVENT_DATA_BUFFER;
         ev.next = NULL;
+    }
+    if (XR_FAILED(pr)) { /* the runtime went away */
+        hol__fail(x, "xrPollEvent", pr);
+        x->failed = x->life.done = 1;
     }
 }
 
@@ -408,19 +411,14 @@ static int hol__run(hol__xr *x, const void *binding)
         fprintf(stderr, "holonomy xr: cannot initialise the renderer on this GL context\n");
         return 1;
     }
-    while (!x->done) {
+    while (!x->life.done) {
         if (x->fns->poll_platform && x->fns->poll_platform(x->fns->user) &&
-            !x->quit_requested && x->session != XR_NULL_HANDLE) {
-            if (x->running)
-                xrRequestExitSession(x->session);
-            else
-                x->done = 1;
-            x->quit_requested = 1;
-        }
+            hol_xr_life_quit(&x->life) == HOL_XR_QUIT_REQUEST_EXIT)
+            HOL__XR(x, xrRequestExitSession(x->session));
         hol__events(x);
-        if (x->done)
+        if (x->life.done)
             break;
-        if (x->running) {
+        if (x->life.running) {
             if (hol__frame(x))
                 return 1;
         } else {
@@ -434,14 +432,14 @@ static int hol__run(hol__xr *x, const void *binding)
         qsort(x->cpu_ms, (size_t)x->ncpu, sizeof x->cpu_ms[0], hol__cmp);
         qsort(x->step_ms, (size_t)x->ncpu, sizeof x->step_ms[0], hol__cmp);
         printf("xr: app thread CPU per stereo frame (step, both eyes, submit; without "
-               "xrWaitFrame; unfaded frames): median %.2f ms, p99 %.2f ms over %ld frames; of it the app "
-               "step median %.3f ms, p99 %.3f ms\n",
+               "xrWaitFrame; unfaded frames): median %.2f ms, p99 %.2f ms over %ld frames; "
+               "of it the app step median %.3f ms, p99 %.3f ms\n",
                x->cpu_ms[x->ncpu / 2], x->cpu_ms[x->ncpu * 99 / 100], x->ncpu,
                x->step_ms[x->ncpu / 2], x->step_ms[x->ncpu * 99 / 100]);
         printf("xr: per eye: %ld / %ld draw calls, %ld / %ld triangles (left / right)\n",
                x->draws[0], x->draws[1], x->tris[0], x->tris[1]);
     }
-    return 0;
+    return x->failed;
 }
 
 static void hol__destroy(hol__xr *x)

@@ -16,9 +16,15 @@
  *   to the app (fns->step), each eye rendered into its swapchain image with
  *   the view's own pose and asymmetric field of view, xrEndFrame with one
  *   projection layer. The game is paused unless the session is FOCUSED.
- * - Lifecycle as hol_xr_lifecycle says; quitting (the app's quit, or
- *   desc.frames reached) calls xrRequestExitSession and goes on until
- *   STOPPING (xrEndSession) and EXITING, then destroys everything.
+ * - Lifecycle as hol_xr_life says (hol_xr_room.h): READY begins the
+ *   session, STOPPING ends it, EXITING and LOSS_PENDING tear it down and
+ *   return; a STOPPING the app did not ask for (headset off, app in the
+ *   background) waits for READY again. Quitting (the app's quit,
+ *   desc.frames reached, or fns->poll_platform) calls
+ *   xrRequestExitSession and goes on until STOPPING (xrEndSession) and
+ *   EXITING, then destroys everything; without a running session it
+ *   leaves at once. A runtime that goes away (xrPollEvent fails) is a
+ *   failure.
  * - Safety: an eye outside the room sees only the boundary colour (the
  *   world is not drawn and never moves); the HUD status warns.
  * - Everything is allocated before the first frame; frames allocate

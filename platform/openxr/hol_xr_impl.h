@@ -104,7 +104,8 @@ typedef struct hol__xr {
     XrAction grip_action, act[HOL_XR_ACT_COUNT];
     XrPath hand_path[2];
     hol__eye eye[2];
-    int state, running, focused, quit_requested, done, reached_focused;
+    hol_xr_life life; /* the lifecycle (hol_xr_room.h) */
+    int reached_focused, failed;
     int is_stage;
     int external; /* the instance and GL context are the caller's */
     hol_xr_calib calib;

@@ -108,3 +108,23 @@ hol_xr_do hol_xr_lifecycle(int state, int *out_running, int *out_focused)
         return HOL_XR_DO_NOTHING;
     }
 }
+
+hol_xr_do hol_xr_life_event(hol_xr_life *l, int state)
+{
+    l->state = state;
+    hol_xr_do d = hol_xr_lifecycle(state, &l->running, &l->focused);
+    if (d == HOL_XR_DO_TEAR_DOWN)
+        l->done = 1;
+    return d;
+}
+
+hol_xr_quit hol_xr_life_quit(hol_xr_life *l)
+{
+    if (l->quit_requested || l->done)
+        return HOL_XR_QUIT_NONE;
+    l->quit_requested = 1;
+    if (l->running)
+        return HOL_XR_QUIT_REQUEST_EXIT;
+    l->done = 1;
+    return HOL_XR_QUIT_LEAVE;
+}

@@ -78,4 +78,33 @@ typedef enum hol_xr_do {
  * has the input (not paused). */
 hol_xr_do hol_xr_lifecycle(int state, int *out_running, int *out_focused);
 
+/* The whole session lifecycle as a state machine fed by events (zero it
+ * to start):
+ * - hol_xr_life_event(l, state) on each session state change: the action
+ *   (hol_xr_lifecycle's), and l->done once the session must be destroyed
+ *   and the platform leave (EXITING, LOSS_PENDING). A STOPPING the app did
+ *   not ask for (the headset taken off, the app sent to the background)
+ *   ends the session and waits: READY begins it again.
+ * - hol_xr_life_quit(l) when the app or the platform wants to leave:
+ *   HOL_XR_QUIT_REQUEST_EXIT (call xrRequestExitSession; then STOPPING,
+ *   EXITING come as events) while the session runs, HOL_XR_QUIT_LEAVE
+ *   (l->done: destroy it now) while it does not, HOL_XR_QUIT_NONE when
+ *   already asked. */
+typedef struct hol_xr_life {
+    int state;          /* the last session state (0: none yet) */
+    int running;        /* frames run */
+    int focused;        /* the game has the input */
+    int quit_requested; /* xrRequestExitSession was called */
+    int done;           /* destroy the session and leave */
+} hol_xr_life;
+
+typedef enum hol_xr_quit {
+    HOL_XR_QUIT_NONE = 0,
+    HOL_XR_QUIT_REQUEST_EXIT,
+    HOL_XR_QUIT_LEAVE
+} hol_xr_quit;
+
+hol_xr_do hol_xr_life_event(hol_xr_life *l, int state);
+hol_xr_quit hol_xr_life_quit(hol_xr_life *l);
+
 #endif
