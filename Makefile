@@ -7,6 +7,8 @@
 #   make bench      build with optimisation and print the benchmark figures
 #   make san        run the unit tests under AddressSanitizer + UBSan
 #   make run        build and play in a desktop window (RUN_ARGS: play's options)
+#   make xr         build/xr/holonomy with `holonomy xr` (XR=1 in its own folder)
+#   make xr-test    the headset against Monado in a chroot (root; see README)
 #   make quest      the Quest APK (needs NDK= and OPENXR_LOADER=; see README)
 #   make clean      remove build outputs
 #
@@ -84,7 +86,7 @@ DEB_PACKAGES := make gcc clang libcmocka-dev libosmesa6-dev libegl-dev \
 APT_LOCK_WAIT ?= 120
 APT_GET = $$SUDO env DEBIAN_FRONTEND=noninteractive apt-get -o DPkg::Lock::Timeout=$(APT_LOCK_WAIT)
 
-.PHONY: all test purity unit render-test cli-test fuzz-replay fuzz bench san clean deps \
+.PHONY: all test purity unit render-test cli-test fuzz-replay fuzz bench san clean deps xr \
         deps-cross check-clang cross-test run quest quest-help deps-quest quest-check check-hid-libusb deps-xr xr-test
 
 all: $(BUILD)/holonomy
@@ -242,6 +244,11 @@ quest:
 # chroot (tests/xr/, about 1.5 GB, cached at /var/cache/holonomy; needs root).
 deps-xr:
 	@$(MAKE) -s deps DEB_PACKAGES="debootstrap"
+
+# The headset build in its own folder (XR=1 objects never mix with the
+# plain build's: cmd_xr.o differs by -DHOL_XR).
+xr:
+	$(MAKE) XR=1 BUILD=$(BUILD)/xr $(BUILD)/xr/holonomy
 
 # The host's half: `holonomy render` of the read-back eye and the comparison.
 $(BUILD)/xr_png_diff: tests/xr/png_diff.c $(PLAT_OBJ) $(RENDER_LIB) $(CORE_LIB)

@@ -26,7 +26,7 @@ one_line "bad level" "line 3"
 printf 'mode explore\nseed 1\n' >"$T/ok.lvl"
 XR_RUNTIME_JSON="$T/none.json" DISPLAY= run "no runtime" 1 "$H" xr "$T/ok.lvl" --frames 2
 if grep -q "this build has no OpenXR" "$T/err"; then
-    one_line "a build without OpenXR" "make XR=1"
+    one_line "a build without OpenXR" "make xr"
 else
     # the loader says its own lines first; ours is the last, one line
     tail -n 1 "$T/err" | grep -q "^holonomy xr: no OpenXR runtime" && ok ||
