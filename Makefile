@@ -87,7 +87,7 @@ APT_LOCK_WAIT ?= 120
 APT_GET = $$SUDO env DEBIAN_FRONTEND=noninteractive apt-get -o DPkg::Lock::Timeout=$(APT_LOCK_WAIT)
 
 .PHONY: all test purity unit render-test cli-test fuzz-replay fuzz bench san clean deps xr \
-        deps-cross check-clang cross-test run quest quest-help deps-quest quest-check check-hid-libusb deps-xr xr-test
+        deps-cross check-clang cross-test run quest quest-help deps-quest quest-check check-hid-libusb deps-xr xr-test soak
 
 all: $(BUILD)/holonomy
 
@@ -239,6 +239,13 @@ QUEST_DEB_PACKAGES := aapt zipalign android-framework-res
 quest:
 	@NDK="$(NDK)" OPENXR_LOADER="$(OPENXR_LOADER)" BUILD="$(BUILD)" \
 	  sh platform/android/build_apk.sh
+
+# A million steps: what the user has seen never changes, memory stays flat
+# (not in CI: about 3 minutes).
+soak: $(CORE_LIB)
+	@mkdir -p $(BUILD)/bench
+	$(CC) $(CSTD) $(WARN) -O2 -DNDEBUG -D_DEFAULT_SOURCE -o $(BUILD)/bench/soak_world tests/soak_world.c $(CORE_LIB) $(LDLIBS)
+	$(BUILD)/bench/soak_world $(SOAK_STEPS)
 
 # The headset against a real OpenXR runtime: Monado in a Debian trixie
 # chroot (tests/xr/, about 1.5 GB, cached at /var/cache/holonomy; needs root).

@@ -47,12 +47,16 @@ struct hol_app {
     int nwalk;
 };
 
+/* Seen tiles the app's world remembers after eviction: 6 MB, hours of play. */
+#define HOL__APP_KEEP (1u << 18)
+
 static hol_world_desc hol__world_desc(const hol_app *app, uint64_t seed)
 {
     hol_world_desc wd;
     memset(&wd, 0, sizeof wd);
     wd.seed = seed;
     wd.capacity = app->d.world_capacity;
+    wd.keep_capacity = HOL__APP_KEEP;
     return wd;
 }
 
@@ -74,6 +78,7 @@ hol_err hol_app_create(const hol_app_desc *desc, hol_app **out_app)
     hol_world_desc wd;
     memset(&wd, 0, sizeof wd);
     wd.capacity = d.world_capacity;
+    wd.keep_capacity = HOL__APP_KEEP;
     size_t wsize = hol_world_mem_size(&wd);
     if (!wsize)
         return HOL_EARG;

@@ -377,9 +377,16 @@ static hol_err hol__init_domains(hol__batch *b)
                 continue;
             }
             int64_t idx = hol__find(w, nt);
-            if (idx < 0)
-                continue;
-            int ns = w->entries[idx].state;
+            int ns;
+            if (idx >= 0) {
+                ns = w->entries[idx].state;
+            } else {
+                /* not in the store: a seen tile keeps constraining */
+                const hol__kept *k = hol__kept_find(w, nt);
+                if (!k)
+                    continue;
+                ns = k->state;
+            }
             if (ns != HOL__UNSET)
                 s->dom &= b->compat[d][hol__state_conn(ns, (arr + 2) & 3)];
         }

@@ -53,9 +53,9 @@ int hol__tile_valid(hol_tile t)
 /* ---- layout ------------------------------------------------------------ */
 
 typedef struct hol__layout {
-    uint32_t cap, max_slots, map_size, max_trail, max_reserve;
+    uint32_t cap, max_slots, map_size, max_trail, max_reserve, kept_size, kept_max;
     size_t off_entries, off_slots, off_map_key, off_map_val, off_trail, off_dec,
-        off_queue, off_open, off_reserve, total;
+        off_queue, off_open, off_reserve, off_kept, total;
 } hol__layout;
 
 static size_t hol__align(size_t n) { return (n + 15) & ~(size_t)15; }
@@ -102,6 +102,17 @@ static int hol__plan(const hol_world_desc *desc, hol__layout *l)
     off += hol__align((size_t)l->max_slots * sizeof(uint32_t));
     l->off_reserve = off;
     off += hol__align((size_t)l->max_reserve * sizeof(hol_tile));
+    /* the memory of seen tiles: a table at most 3/4 full */
+    uint64_t keep = desc->keep_capacity ? desc->keep_capacity : l->cap;
+    if (keep > (UINT64_C(1) << 30))
+        return 0;
+    uint64_t ks = 16;
+    while (ks * 3 / 4 < keep)
+        ks <<= 1;
+    l->kept_size = (uint32_t)ks;
+    l->kept_max = (uint32_t)keep;
+    l->off_kept = off;
+    off += hol__align((size_t)ks * sizeof(hol__kept));
     l->total = off;
     return 1;
 }
@@ -169,6 +180,10 @@ hol_err hol_world_init(void *mem, size_t size, const hol_world_desc *desc,
     w->open = (uint32_t *)(void *)(base + l.off_open);
     w->reserve_tiles = (hol_tile *)(void *)(base + l.off_reserve);
     w->max_reserve = l.max_reserve;
+    w->kept = (hol__kept *)(void *)(base + l.off_kept);
+    memset(w->kept, 0, (size_t)l.kept_size * sizeof(hol__kept));
+    w->kept_mask = l.kept_size - 1;
+    w->kept_max = l.kept_max;
     w->bytes = l.total;
     *out_world = w;
     return HOL_OK;
@@ -230,6 +245,9 @@ void hol_world_get_stats(const hol_world *w, hol_world_stats *out)
     out->updates = w->updates;
     out->evicted = w->evicted;
     out->count = w->count;
+    out->kept = w->kept_count;
+    out->keep_capacity = w->kept_max;
+    out->keep_lost = w->kept_lost;
     out->capacity = w->cap;
     out->bytes = w->bytes;
 }
@@ -254,6 +272,51 @@ int64_t hol__find(const hol_world *w, hol_tile t)
     return -1;
 }
 
+/* ---- the memory of seen tiles -------------------------------------------- */
+
+static uint32_t hol__kept_home(const hol_world *w, hol_tile t)
+{
+    uint64_t h = hol_tile_hash(t);
+    return (uint32_t)(h ^ (h >> 32)) & w->kept_mask;
+}
+
+const hol__kept *hol__kept_find(const hol_world *w, hol_tile t)
+{
+    if (!w->kept_count)
+        return NULL;
+    for (uint32_t i = hol__kept_home(w, t);; i = (i + 1) & w->kept_mask) {
+        const hol__kept *k = &w->kept[i];
+        if (!k->used)
+            return NULL;
+        if (hol_tile_eq(k->tile, t))
+            return k;
+    }
+}
+
+/* Remember a seen tile leaving the store (its state is final). */
+void hol__keep(hol_world *w, const hol__entry *e)
+{
+    uint32_t i = hol__kept_home(w, e->tile);
+    for (;; i = (i + 1) & w->kept_mask) {
+        hol__kept *k = &w->kept[i];
+        if (k->used && hol_tile_eq(k->tile, e->tile))
+            return; /* already remembered, and it never changes */
+        if (!k->used)
+            break;
+    }
+    if (w->kept_count >= w->kept_max) {
+        w->kept_lost++;
+        return;
+    }
+    hol__kept *k = &w->kept[i];
+    k->tile = e->tile;
+    k->state = e->state;
+    k->biome = e->biome;
+    k->depth = e->depth;
+    k->used = (uint8_t)(1 | ((e->flags & HOL__F_PLACED) ? 2 : 0));
+    w->kept_count++;
+}
+
 int64_t hol__insert(hol_world *w, hol_tile t)
 {
     uint32_t i = hol__home(w, t);
@@ -268,6 +331,14 @@ int64_t hol__insert(hol_world *w, hol_tile t)
             e->biome = HOL_BIOME_NONE;
             e->flags = HOL__F_USED;
             e->stamp = w->stamp;
+            /* a seen tile coming back: exactly as it was */
+            const hol__kept *k = hol__kept_find(w, t);
+            if (k) {
+                e->state = k->state;
+                e->biome = k->biome;
+                e->depth = k->depth;
+                e->flags |= (uint8_t)(HOL__F_SEEN | ((k->used & 2) ? HOL__F_PLACED : 0));
+            }
             w->count++;
             return i;
         }
@@ -356,6 +427,8 @@ static void hol__sweep_step(hol_world *w, uint32_t budget)
         for (; i < end; i++) {
             while (hol__evictable(w, &w->entries[i]) &&
                    w->entries[i].stamp < w->sweep_limit) {
+                if ((w->entries[i].flags & HOL__F_SEEN) && w->entries[i].state != HOL__UNSET)
+                    hol__keep(w, &w->entries[i]);
                 hol__delete(w, i);
                 w->evicted++;
             }

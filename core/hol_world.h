@@ -175,6 +175,12 @@ typedef struct hol_world_desc {
      * tile, evicted and regenerated included. */
     const hol_world_place *places;
     uint32_t nplaces;
+    /* Seen tiles kept after eviction: up to this many tiles the user has
+     * seen (within the radius after an update) are remembered exactly
+     * (state, biome) when the store evicts them, and come back the same;
+     * 0: as many as the store's capacity. Fixed memory, 24 bytes a tile,
+     * allocated at init. */
+    uint32_t keep_capacity;
 } hol_world_desc;
 
 typedef struct hol_world hol_world;
@@ -184,6 +190,10 @@ typedef struct hol_world_stats {
     uint64_t backtracks;       /* choices undone */
     uint64_t updates;
     uint64_t evicted;          /* tiles evicted by the full-store policy */
+    uint32_t kept;             /* seen tiles remembered outside the store */
+    uint32_t keep_capacity;
+    uint64_t keep_lost;        /* seen tiles evicted when the memory of
+                                  seen tiles was full (they may change) */
     uint32_t count;            /* tiles in the store now */
     uint32_t capacity;
     size_t bytes;              /* memory of the whole world (fixed) */

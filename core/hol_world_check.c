@@ -47,6 +47,9 @@ hol_err hol__check_rec(const hol__rec *r, hol__lookup_fn look, const void *ctx,
         return hol__fail(msg, cap, r->tile, "biome depth out of range", -1, 0);
     if (r->flags & ~HOL__F_KNOWN)
         return hol__fail(msg, cap, r->tile, "unknown flags", -1, 0);
+    if ((r->flags & HOL__F_KEPT) && (!collapsed || r->game != HOL_OBJ_NONE))
+        return hol__fail(msg, cap, r->tile, "a remembered seen tile that is not collapsed",
+                         -1, 0);
     if (r->game != HOL_OBJ_NONE) {
         if (r->game != HOL_OBJ_FLAG && r->game != HOL_OBJ_KEY &&
             r->game != HOL_OBJ_CHEST)
@@ -72,8 +75,11 @@ hol_err hol__check_rec(const hol__rec *r, hol__lookup_fn look, const void *ctx,
         } else if (look(ctx, nt, &nr) && nr.state != HOL__UNSET &&
                    nr.state < HOL__NSTATES) {
             want = hol__state_conn(nr.state, (arr + 2) & 3);
+            /* (a seen half may come back from memory beside a partner
+             * regenerated in another biome: the rule is for new pairs) */
             if (collapsed && want == HOL_CONN_LOG && nr.biome < HOL_BIOME_COUNT &&
-                r->biome < HOL_BIOME_COUNT &&
+                r->biome < HOL_BIOME_COUNT && !(r->flags & HOL__F_SEEN) &&
+                !(nr.flags & HOL__F_SEEN) &&
                 hol__weight(r->biome, s) == 0 && hol__weight(nr.biome, nr.state) == 0)
                 return hol__fail(msg, cap, r->tile,
                                  "log where neither biome allows logs", d, 0);

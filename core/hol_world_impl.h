@@ -26,7 +26,8 @@
 #define HOL__F_SEEN 0x02u  /* was within the radius of the user */
 #define HOL__F_TREES 0x04u /* trees cached */
 #define HOL__F_PLACED 0x08u /* a designer placement (any biome allowed) */
-#define HOL__F_KNOWN 0x0Fu
+#define HOL__F_KEPT 0x10u   /* image records only: a seen tile outside the store */
+#define HOL__F_KNOWN 0x1Fu
 
 typedef struct hol__entry {
     hol_tile tile;
@@ -39,6 +40,13 @@ typedef struct hol__entry {
     uint8_t pad;
     uint16_t trees;  /* 4 bits per corner: kind | size << 2 */
 } hol__entry;
+
+/* A seen tile remembered after eviction (open addressing on the tile). */
+typedef struct hol__kept {
+    hol_tile tile;
+    uint8_t state, biome, depth, used;
+    uint32_t pad;
+} hol__kept;
 
 /* One tile of a generation batch. */
 typedef struct hol__slot {
@@ -97,6 +105,10 @@ struct hol_world {
     uint64_t choice_counter;
     hol_world_place places[HOL_WORLD_MAX_PLACES]; /* designer placements */
     uint32_t nplaces;
+    /* seen tiles remembered after eviction (hol_world.c) */
+    hol__kept *kept;
+    uint32_t kept_mask, kept_count, kept_max;
+    uint64_t kept_lost;
     /* incremental eviction sweep (hol_world.c) */
     uint32_t sweep_phase; /* 0 idle, 1 stamp range, 2 histogram, 3 evict */
     uint32_t sweep_pos, sweep_lo, sweep_hi, sweep_n, sweep_limit;
@@ -111,6 +123,8 @@ struct hol_world {
 /* hol_world.c: the store */
 uint32_t hol__ball_size(int radius); /* tiles within radius, 0..9 */
 int64_t hol__find(const hol_world *w, hol_tile t);       /* index or -1 */
+const hol__kept *hol__kept_find(const hol_world *w, hol_tile t); /* or NULL */
+void hol__keep(hol_world *w, const hol__entry *e); /* remember a seen tile */
 /* Index of t, inserted uncollapsed if missing; -1 if the store is full. */
 int64_t hol__insert(hol_world *w, hol_tile t);
 /* Full-store policy: over 3/4 full, run a bounded step of the eviction

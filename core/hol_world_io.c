@@ -84,15 +84,25 @@ static int hol__rec_cmp(const void *a, const void *b)
     return 0;
 }
 
+/* Seen tiles remembered outside the store (they are saved too). */
+static uint32_t hol__kept_outside(const hol_world *w)
+{
+    uint32_t n = 0;
+    for (uint32_t i = 0; i <= w->kept_mask; i++)
+        n += w->kept[i].used && hol__find(w, w->kept[i].tile) < 0;
+    return n;
+}
+
 size_t hol_world_save_size(const hol_world *w)
 {
-    return HOL__HDR + (size_t)w->count * HOL__REC + 8;
+    return HOL__HDR + ((size_t)w->count + hol__kept_outside(w)) * HOL__REC + 8;
 }
 
 hol_err hol_world_save(const hol_world *w, void *buf, size_t cap,
                        size_t *out_len)
 {
-    size_t need = hol_world_save_size(w);
+    uint32_t nkept = hol__kept_outside(w), nrec = w->count + nkept;
+    size_t need = HOL__HDR + (size_t)nrec * HOL__REC + 8;
     if (!buf || !out_len)
         return HOL_EARG;
     if (cap < need)
@@ -104,7 +114,7 @@ hol_err hol_world_save(const hol_world *w, void *buf, size_t cap,
     hol__put32(p + 12, HOL__REC);
     hol__put64(p + 16, w->seed);
     hol__put32(p + 24, (uint32_t)w->radius);
-    hol__put32(p + 28, w->count);
+    hol__put32(p + 28, nrec);
     hol__put32(p + 32, w->stamp);
     hol__put64(p + 40, w->user.tile.bits[0]);
     hol__put64(p + 48, w->user.tile.bits[1]);
@@ -126,7 +136,20 @@ hol_err hol_world_save(const hol_world *w, void *buf, size_t cap,
                           ((e->flags & HOL__F_PLACED) ? 2 : 0) | (e->game << 4));
         r += HOL__REC;
     }
-    qsort(p + HOL__HDR, w->count, HOL__REC, hol__rec_cmp);
+    for (uint32_t i = 0; i <= w->kept_mask && nkept; i++) {
+        const hol__kept *k = &w->kept[i];
+        if (!k->used || hol__find(w, k->tile) >= 0)
+            continue;
+        hol__put64(r, k->tile.bits[0]);
+        hol__put64(r + 8, k->tile.bits[1]);
+        hol__put32(r + 16, 0);
+        r[20] = k->state;
+        r[21] = k->biome;
+        r[22] = k->depth;
+        r[23] = (uint8_t)(1 | ((k->used & 2) ? 2 : 0) | 4); /* seen, placed, kept */
+        r += HOL__REC;
+    }
+    qsort(p + HOL__HDR, nrec, HOL__REC, hol__rec_cmp);
     hol__put64(p + need - 8, hol__image_checksum(p, need - 8));
     *out_len = need;
     return HOL_OK;
@@ -244,7 +267,8 @@ static void hol__decode(const uint8_t *r, hol__rec *out)
     out->state = r[20];
     out->biome = r[21];
     out->depth = r[22];
-    out->flags = (uint8_t)(((r[23] & 1) ? HOL__F_SEEN : 0) | ((r[23] & 2) ? HOL__F_PLACED : 0));
+    out->flags = (uint8_t)(((r[23] & 1) ? HOL__F_SEEN : 0) | ((r[23] & 2) ? HOL__F_PLACED : 0) |
+                           ((r[23] & 4) ? HOL__F_KEPT : 0));
     out->game = (uint8_t)(r[23] >> 4);
 }
 
@@ -299,17 +323,29 @@ hol_err hol_world_load(hol_world *w, const void *buf, size_t len, char *msg,
         return hol__say(msg, msg_cap, HOL_EARG,
                         "image saved with radius %llu, this world has radius %llu",
                         im.radius, (unsigned long long)w->radius);
-    if (im.count > w->cap / 4 * 3)
+    const uint8_t *recs = im.p + HOL__HDR;
+    uint32_t nstore = 0, nkept = 0;
+    for (uint32_t i = 0; i < im.count; i++) {
+        const uint8_t *r = recs + (size_t)i * HOL__REC;
+        if (r[23] & 4)
+            nkept++;
+        else
+            nstore++;
+    }
+    if (nstore > w->cap / 4 * 3)
         return hol__say(msg, msg_cap, HOL_ENOMEM,
                         "image holds %llu tiles, more than 3/4 of the capacity %llu",
-                        im.count, w->cap);
-    const uint8_t *recs = im.p + HOL__HDR;
+                        nstore, w->cap);
+    if (nkept > w->kept_max)
+        return hol__say(msg, msg_cap, HOL_ENOMEM,
+                        "image remembers %llu seen tiles, more than this world keeps (%llu)",
+                        nkept, w->kept_max);
     for (uint32_t i = 0; i < im.count; i++) {
         const uint8_t *r = recs + (size_t)i * HOL__REC;
         if (i > 0 && hol__rec_cmp(r - HOL__REC, r) >= 0)
             return hol__say(msg, msg_cap, HOL_ECORRUPT,
                             "record %llu out of order or repeated%.0llu", i, 0);
-        if (r[23] & 0x0c)
+        if (r[23] & 0x08)
             return hol__say(msg, msg_cap, HOL_ECORRUPT,
                             "record %llu has unknown flags%.0llu", i, 0);
         hol__rec rec;
@@ -325,9 +361,26 @@ hol_err hol_world_load(hol_world *w, const void *buf, size_t len, char *msg,
             return err;
         }
     }
-    /* accepted: replace the store */
+    /* accepted: replace the store and the memory of seen tiles */
     memset(w->entries, 0, (size_t)w->cap * sizeof(hol__entry));
     w->count = 0;
+    memset(w->kept, 0, ((size_t)w->kept_mask + 1) * sizeof(hol__kept));
+    w->kept_count = 0;
+    w->kept_lost = 0;
+    for (uint32_t i = 0; i < im.count; i++) {
+        hol__rec rec;
+        hol__decode(recs + (size_t)i * HOL__REC, &rec);
+        if (!(rec.flags & HOL__F_KEPT))
+            continue;
+        hol__entry e;
+        memset(&e, 0, sizeof e);
+        e.tile = rec.tile;
+        e.state = rec.state;
+        e.biome = rec.biome;
+        e.depth = rec.depth;
+        e.flags = (uint8_t)(rec.flags & HOL__F_PLACED);
+        hol__keep(w, &e);
+    }
     w->sweep_phase = 0; /* a sweep in progress belonged to the old store */
     w->ready = 0;       /* the next update generates around the user */
     w->seed = im.seed;
@@ -336,6 +389,8 @@ hol_err hol_world_load(hol_world *w, const void *buf, size_t len, char *msg,
     for (uint32_t i = 0; i < im.count; i++) {
         hol__rec rec;
         hol__decode(recs + (size_t)i * HOL__REC, &rec);
+        if (rec.flags & HOL__F_KEPT)
+            continue;
         int64_t idx = hol__insert(w, rec.tile);
         if (idx < 0)
             return HOL_ENOMEM; /* cannot happen: count <= 3/4 capacity */

@@ -720,6 +720,96 @@ static void test_store_full_of_pins(void **state)
     hol_world_destroy(w);
 }
 
+/* ---- what the user has seen stays ------------------------------------------------------------ */
+
+/* The test's own record of every tile seen: an open-addressing table of
+ * (tile, content), independent of the world's store and archive. */
+typedef struct seen_rec {
+    hol_tile tile;
+    hol_tile_content c;
+    int used;
+} seen_rec;
+
+static seen_rec *seen_slot(seen_rec *tab, size_t mask, hol_tile t)
+{
+    size_t i = (size_t)hol_tile_hash(t) & mask;
+    while (tab[i].used && !hol_tile_eq(tab[i].tile, t))
+        i = (i + 1) & mask;
+    return &tab[i];
+}
+
+/* A small store (evicting all the time) and a walk that keeps coming back:
+ * every tile within the radius after every update is compared with what it
+ * was the first time the user saw it. Then the world is saved and loaded
+ * into a fresh one, and the walk goes on: still the same. */
+static void test_seen_tiles_stay(void **state)
+{
+    (void)state;
+    enum { STEPS = 30000 };
+    const size_t mask = (1u << 17) - 1;
+    seen_rec *tab = calloc(mask + 1, sizeof *tab);
+    assert_non_null(tab);
+    static hol_tile b[256];
+    hol_world_desc kd;
+    memset(&kd, 0, sizeof kd);
+    kd.seed = 21;
+    kd.capacity = HOL_WORLD_MIN_CAPACITY;
+    kd.keep_capacity = 1u << 16; /* a small store that remembers many seen tiles */
+    hol_world *w = NULL;
+    assert_int_equal(hol_world_make(&kd, &w), HOL_OK);
+    hol_room room = hol_room_start();
+    assert_int_equal(hol_world_update(w, &room), HOL_OK);
+    uint64_t rng = 99;
+    size_t nseen = 0, compared = 0, changed = 0;
+    for (int i = 0; i <= STEPS; i++) {
+        if (i == STEPS / 2) {
+            /* through a save image into another world */
+            size_t len;
+            uint8_t *img = save_image(w, &len);
+            hol_world *w2 = NULL;
+            assert_int_equal(hol_world_make(&kd, &w2), HOL_OK);
+            assert_int_equal(hol_world_load(w2, img, len, NULL, 0), HOL_OK);
+            free(img);
+            hol_world_destroy(w);
+            w = w2;
+            assert_int_equal(hol_world_update(w, &room), HOL_OK);
+        }
+        size_t n = ball(room.tile, hol_world_radius(w), b, 256);
+        for (size_t k = 0; k < n; k++) {
+            hol_tile_content c;
+            assert_int_equal(hol_world_peek(w, b[k], &c), HOL_OK);
+            seen_rec *r = seen_slot(tab, mask, b[k]);
+            if (!r->used) {
+                assert_true(nseen < mask / 2);
+                r->used = 1;
+                r->tile = b[k];
+                r->c = c;
+                nseen++;
+            } else {
+                compared++;
+                changed += memcmp(&r->c, &c, sizeof c) != 0;
+            }
+        }
+        if (i < STEPS)
+            random_step(w, &room, &rng, 300);
+    }
+    hol_world_stats st;
+    hol_world_get_stats(w, &st);
+    print_message("    %zu tiles seen, %zu revisits compared, %zu changed; store %u, "
+                  "evicted %llu\n",
+                  nseen, compared, changed, st.capacity,
+                  (unsigned long long)st.evicted);
+    /* the walk saw far more tiles than the store holds, so it evicted and
+     * came back to evicted tiles */
+    assert_true(nseen > 2 * (size_t)st.capacity);
+    assert_true(st.evicted > (uint64_t)st.capacity);
+    assert_int_equal(changed, 0);
+    assert_check(w);
+    hol_world_destroy(w);
+    free(tab);
+}
+
+
 /* ---- lifecycle, game objects, errors ---------------------------------------------------------- */
 
 static int allocs, frees;
@@ -985,6 +1075,7 @@ int main(void)
         cmocka_unit_test(test_save_load),
         cmocka_unit_test(test_corrupt_images),
         cmocka_unit_test(test_capacity_exhaustion),
+        cmocka_unit_test(test_seen_tiles_stay),
         cmocka_unit_test(test_store_full_of_pins),
         cmocka_unit_test(test_designer_places),
         cmocka_unit_test(test_lifecycle),
