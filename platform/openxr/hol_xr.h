@@ -70,7 +70,9 @@ typedef struct hol_xr_desc {
     void *android_vm, *android_activity;
 } hol_xr_desc;
 
-/* 0 ok, 1 failure (one line on stderr). */
+/* 0 ok, 1 failure (one line on stderr). A platform that makes its own
+ * instance and GL context runs the same loop with hol_xr_run_session
+ * (hol_xr_session.h). */
 int hol_xr_run(const hol_xr_desc *desc, const hol_xr_app_fns *fns);
 
 #endif
