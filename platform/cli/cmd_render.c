@@ -84,13 +84,7 @@ static const char *const render_usage =
 
 static int parse_double(const char *s, double *out)
 {
-    char *end;
-    errno = 0;
-    double v = strtod(s, &end);
-    if (end == s || *end || errno || !isfinite(v))
-        return 1;
-    *out = v;
-    return 0;
+    return !cli_parse_doubles(s, out, 1);
 }
 
 static int parse_int(const char *s, long lo, long hi, long *out)
@@ -104,31 +98,10 @@ static int parse_int(const char *s, long lo, long hi, long *out)
     return 0;
 }
 
-/* "A,B,..." to exactly n numbers; nonzero on failure. */
-static int parse_nums(const char *s, double *out, int n)
-{
-    char buf[256];
-    if (strlen(s) >= sizeof buf)
-        return 1;
-    strcpy(buf, s);
-    char *p = buf;
-    for (int i = 0; i < n; i++) {
-        char *c = strchr(p, ',');
-        if ((i + 1 < n) != (c != NULL))
-            return 1;
-        if (c)
-            *c = 0;
-        if (parse_double(p, &out[i]))
-            return 1;
-        p = c ? c + 1 : p;
-    }
-    return 0;
-}
-
 /* "X,Y,Z" to three numbers; nonzero on failure. */
 static int parse_vec3(const char *s, double out[3])
 {
-    return parse_nums(s, out, 3);
+    return !cli_parse_doubles(s, out, 3);
 }
 
 /* --orient and --tan: the headset form of the camera (hol_camera.has_pose),
@@ -144,13 +117,13 @@ static int parse_head_form(const char *cmd, const char *orient_s, const char *ta
         return CLI_EXIT_USAGE;
     }
     double n = 0;
-    if (!parse_nums(orient_s, q, 4))
+    if (cli_parse_doubles(orient_s, q, 4))
         n = sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
     if (!(fabs(n - 1) < 1e-3)) {
         cli_error(cmd, 0, "--orient '%.60s' is not a unit quaternion X,Y,Z,W", orient_s);
         return CLI_EXIT_USAGE;
     }
-    if (parse_nums(tan_s, t, 4) || !(t[0] < t[1] && t[2] < t[3]) || fabs(t[0]) > 10 ||
+    if (!cli_parse_doubles(tan_s, t, 4) || !(t[0] < t[1] && t[2] < t[3]) || fabs(t[0]) > 10 ||
         fabs(t[1]) > 10 || fabs(t[2]) > 10 || fabs(t[3]) > 10) {
         cli_error(cmd, 0,
                   "--tan '%.60s' is not L,R,D,U (tangents of the half-angles, L < R, "
