@@ -20,6 +20,7 @@ void hol_nav_prepare_tours(hol_nav *nav)
     if (!nav->leg_ready) {
         hol_navtab_build_legs(&nav->tab, nav->leg_radius, nav->leg, nav->nodes);
         nav->leg_ready = 1;
+        nav->hash_dirty = 1; /* the build's scratch was the arena */
     }
 }
 
@@ -247,6 +248,7 @@ static hol_err hol__tour_dp(hol_nav *nav, const hol_room *start, const hol__tour
     hol_nav_prepare_tours(nav);
     /* the table lives in the arena (nodes are not used by this path) */
     hol__dp *dp = (hol__dp *)nav->nodes;
+    nav->hash_dirty = 1; /* the nodes no longer match the hash */
     memset(dp->cost, 0xff, sizeof dp->cost);
     int sc = start->col + 3 * start->row;
     for (int k = 0; k < nk; k++)
