@@ -13,6 +13,8 @@
 
 #include "hol_nav_impl.h"
 
+#define HOL__NK HOL_NAV_TOUR_MAX_KEYS
+
 /* ---- tours ---- */
 
 void hol_nav_prepare_tours(hol_nav *nav)
@@ -66,6 +68,12 @@ typedef struct hol__tour {
      * mask, edges the least cost between two tiles from any room state */
     int mst[1 << HOL_NAV_TOUR_MAX_KEYS];
     unsigned full;
+    /* suf[m][k][s]: a lower bound on the steps from key k in room state s
+     * (orientation s / 9 relative to the tile's heading, cell s % 9) with
+     * the keys in m held (k in m) to collect the others and stand on the
+     * chest; sufmin[m][k] its least over s (hol__tour_suf) */
+    uint16_t suf[1 << HOL_NAV_TOUR_MAX_KEYS][HOL_NAV_TOUR_MAX_KEYS][36];
+    int sufmin[1 << HOL_NAV_TOUR_MAX_KEYS][HOL_NAV_TOUR_MAX_KEYS];
 } hol__tour;
 
 static unsigned hol__keys_on(const hol__tour *t, hol_tile tile)
@@ -77,27 +85,124 @@ static unsigned hol__keys_on(const hol__tour *t, hol_tile tile)
     return m;
 }
 
-/* Admissible: the walk still has to reach every key left and then the
- * chest, so it costs at least (a) the cost to the chest, (b) for each key
- * left, the cost to it plus the least cost from it to the chest, and (c)
- * the cost to the nearest key left plus a spanning tree over the keys left
- * and the chest (the rest of the walk joins them all). */
+typedef struct hol__rel {
+    uint32_t idx; /* tile index of the source seen from the destination */
+    int facing;   /* source heading in that frame */
+} hol__rel;
+
+static int hol__rel_of(const hol_nav *nav, hol_tile from, hol_tile to, int trust,
+                       hol__rel *out)
+{
+    hol_tile u;
+    if (hol_tile_relative(to, 0, from, &u, &out->facing) || hol_tile_dist0(u) > trust)
+        return 0;
+    out->idx = hol_navtab_rank(&nav->tab, u);
+    return 1;
+}
+
+/* Admissible: the walk still has to reach the keys left, first visits in
+ * some order, then the chest. From the node to the next key k: the exact
+ * state-to-state leg when k is within the leg table's trusted radius (then
+ * the rest is suf of the state it arrives in), else the cost to k's tile
+ * from the main table (then the least suf over k's states). With every key
+ * held: the cost to the chest. Also at least (a) the cost to the chest and
+ * (c) the cost to the nearest key left plus a spanning tree over the keys
+ * left and the chest. */
 static int hol__tour_h(const hol_nav *nav, const hol__tour *t, const hol__node *n)
 {
-    int h = hol__lb(nav, n->u.t, n->o, n->cell, t->chest), nearest = INT32_MAX;
+    int h = hol__lb(nav, n->u.t, n->o, n->cell, t->chest), nearest = INT32_MAX, best = INT32_MAX;
     unsigned mask = n->flags & HOL__MASK;
+    if (mask == t->full)
+        return h;
     for (int i = 0; i < t->nkeys; i++) {
         if (mask & (1u << i))
             continue;
-        int c = hol__lb(nav, n->u.t, n->o, n->cell, t->keys[i]);
+        unsigned m2 = mask | (1u << i);
+        hol__rel r;
+        int c = hol__lb(nav, n->u.t, n->o, n->cell, t->keys[i]), v;
         if (c < nearest)
             nearest = c;
-        if (c + t->key_chest[i] > h)
-            h = c + t->key_chest[i];
+        if (nav->leg_ready && hol__rel_of(nav, n->u.t, t->keys[i], nav->leg_trust, &r)) {
+            int o = (r.facing + n->o) & 3;
+            v = INT32_MAX;
+            for (int s2 = 0; s2 < 36; s2++) {
+                int l = hol_navtab_leg(nav->leg, r.idx, o, n->cell, s2 / 9, s2 % 9);
+                if (l < 255 && l + t->suf[m2][i][s2] < v)
+                    v = l + t->suf[m2][i][s2];
+            }
+        } else {
+            v = c + t->sufmin[m2][i];
+        }
+        if (v < best)
+            best = v;
     }
+    if (best > h)
+        h = best;
     if (nearest != INT32_MAX && nearest + t->mst[mask] > h)
         h = nearest + t->mst[mask];
     return h;
+}
+
+/* Fill t->suf (see hol__tour) backwards over key sets: the chest's cost
+ * from the main table with every key held; between keys the exact leg
+ * within the leg table's trusted radius, else the larger of the two tiles'
+ * costs to each other from the main table (steps are reversible, so a leg
+ * costs at least both). Needs the leg table (hol_nav_prepare_tours). */
+static void hol__tour_suf(const hol_nav *nav, hol__tour *t)
+{
+    int nk = t->nkeys;
+    hol__rel rel[HOL__NK][HOL__NK];
+    int near[HOL__NK][HOL__NK];
+    uint8_t lbk[HOL__NK][HOL__NK][36]; /* key j state s to key k's tile */
+    for (int j = 0; j < nk; j++)
+        for (int k = 0; k < nk; k++) {
+            if (j == k)
+                continue;
+            near[j][k] = hol__rel_of(nav, t->keys[j], t->keys[k], nav->leg_trust, &rel[j][k]);
+            for (int s = 0; s < 36; s++) {
+                int c = hol__lb(nav, t->keys[j], s / 9, s % 9, t->keys[k]);
+                lbk[j][k][s] = (uint8_t)(c < 255 ? c : 255);
+            }
+        }
+    for (unsigned m = t->full; m >= 1; m--)
+        for (int k = 0; k < nk; k++) {
+            if (!(m & (1u << k)))
+                continue;
+            int mn = INT32_MAX;
+            for (int s = 0; s < 36; s++) {
+                int v = INT32_MAX;
+                if (m == t->full) {
+                    v = hol__lb(nav, t->keys[k], s / 9, s % 9, t->chest);
+                } else {
+                    for (int k2 = 0; k2 < nk; k2++) {
+                        if (m & (1u << k2))
+                            continue;
+                        unsigned m2 = m | (1u << k2);
+                        const hol__rel *r = &rel[k][k2];
+                        int o = (r->facing + s / 9) & 3;
+                        for (int s2 = 0; s2 < 36; s2++) {
+                            int l;
+                            if (near[k][k2]) {
+                                l = hol_navtab_leg(nav->leg, r->idx, o, s % 9, s2 / 9, s2 % 9);
+                                if (l == 255)
+                                    continue;
+                            } else {
+                                l = lbk[k][k2][s] > lbk[k2][k][s2] ? lbk[k][k2][s]
+                                                                    : lbk[k2][k][s2];
+                            }
+                            if (l + t->suf[m2][k2][s2] < v)
+                                v = l + t->suf[m2][k2][s2];
+                        }
+                    }
+                }
+                if (v > 0xfff0)
+                    v = 0xfff0;
+                t->suf[m][k][s] = (uint16_t)v;
+                if (v < mn)
+                    mn = v;
+            }
+            t->sufmin[m][k] = mn;
+        }
 }
 
 /* Prim over the chest and the keys not in mask. */
@@ -175,20 +280,6 @@ static hol_err hol__tour_greedy(hol_nav *nav, const hol_room *start,
  * the state-to-state distance, so the minimum over the DP is the optimum,
  * and it is achieved by the concatenated legs. */
 
-typedef struct hol__rel {
-    uint32_t idx; /* tile index of the source seen from the destination */
-    int facing;   /* source heading in that frame */
-} hol__rel;
-
-static int hol__rel_of(const hol_nav *nav, hol_tile from, hol_tile to, int trust,
-                       hol__rel *out)
-{
-    hol_tile u;
-    if (hol_tile_relative(to, 0, from, &u, &out->facing) || hol_tile_dist0(u) > trust)
-        return 0;
-    out->idx = hol_navtab_rank(&nav->tab, u);
-    return 1;
-}
 
 /* Descend the leg table from (idx, o, cell) to the goal state (ob, cb). */
 static void hol__leg_descend(const hol_nav *nav, uint32_t idx, int o, int cell, int ob,
@@ -220,7 +311,6 @@ static void hol__leg_descend(const hol_nav *nav, uint32_t idx, int o, int cell, 
     }
 }
 
-#define HOL__NK HOL_NAV_TOUR_MAX_KEYS
 typedef struct hol__dp {
     uint16_t cost[1 << HOL__NK][HOL__NK][36];
     int8_t pj[1 << HOL__NK][HOL__NK][36]; /* previous key, -1: the start */
@@ -393,6 +483,7 @@ hol_err hol_nav_tour(hol_nav *nav, const hol_room *start, const hol_tile *keys,
         w.n = 0;
     w.overflow = 0;
     res.exact = 0;
+    hol__tour_suf(nav, &t);
 
     hol__nav_reset(nav);
     hol__node root;

@@ -18,6 +18,7 @@
 
 #include "../core/hol_nav.h"
 #include "../core/hol_nav_table.h"
+#include "bench_util.h"
 #include "plain_astar.h"
 
 static uint64_t rng = 0x9E3779B97F4A7C15ull;
@@ -74,17 +75,24 @@ static void bench_distances(hol_nav *nav, size_t budget, const char *label)
     static double t[QUERIES];
     static uint8_t walk[HOL_NAV_WALK_MAX];
     printf("\n%s\n", label);
-    printf("  dist  median_ms  p99_ms   max_ms  nodes_mean  len_mean  exact\n");
+    printf("  dist  median_ms  p99_ms   max_ms  max_cpu_ms  nodes_mean  nodes_max  len_mean  "
+           "exact\n");
     for (int d = 2; d <= 16; d++) {
-        double nodes = 0, len = 0;
+        double nodes = 0, len = 0, cpu_max = 0;
+        size_t nodes_max = 0;
         int exact = 0;
         for (int q = 0; q < QUERIES; q++) {
             hol_room s = random_start();
             hol_tile target = random_target(&s, d);
             hol_nav_result res;
-            double t0 = now_ms();
+            double c0 = (1e3 * bench_cpu_now()), t0 = now_ms();
             hol_err err = hol_nav_find(nav, &s, target, budget, walk, sizeof walk, &res);
             t[q] = now_ms() - t0;
+            double c = (1e3 * bench_cpu_now()) - c0;
+            if (c > cpu_max)
+                cpu_max = c;
+            if (res.nodes > nodes_max)
+                nodes_max = res.nodes;
             if (err) {
                 printf("  error %s at distance %d\n", hol_err_str(err), d);
                 exit(1);
@@ -94,9 +102,9 @@ static void bench_distances(hol_nav *nav, size_t budget, const char *label)
             exact += res.exact;
         }
         qsort(t, QUERIES, sizeof t[0], cmp_double);
-        printf("  %4d  %9.4f  %6.3f  %7.3f  %10.0f  %8.2f  %4d%%\n", d, t[QUERIES / 2],
-               t[QUERIES * 99 / 100], t[QUERIES - 1], nodes / QUERIES, len / QUERIES,
-               100 * exact / QUERIES);
+        printf("  %4d  %9.4f  %6.3f  %7.3f  %10.3f  %10.0f  %9zu  %8.2f  %4d%%\n", d,
+               t[QUERIES / 2], t[QUERIES * 99 / 100], t[QUERIES - 1], cpu_max, nodes / QUERIES,
+               nodes_max, len / QUERIES, 100 * exact / QUERIES);
     }
 }
 
