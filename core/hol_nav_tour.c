@@ -1,11 +1,13 @@
 /* hol_nav_tour.c - keys and chest: the fewest steps to stand on every key,
  * then on the chest (hol_nav_tour; contract in hol_nav.h).
  *
- * With the keys close together, a dynamic program over key subsets x room
- * states on the keys with exact state-to-state legs (hol__tour_dp).
- * Otherwise the same program with untrusted legs gives an upper bound that
+ * A dynamic program over key subsets x room states on the keys
+ * (hol__tour_dp): with the keys close together its legs are exact
+ * state-to-state costs and so is the tour. Otherwise (legs up to the
+ * tables' radii, or through a midway tile) its tour is an upper bound that
  * prunes an A* over room state x collected keys (admissible heuristic
- * hol__tour_h; nodes may be reopened), which is exact when it completes.
+ * hol__tour_h from a backward program over key sets, hol__tour_suf; nodes
+ * may be reopened), which is exact when it completes.
  */
 #include "hol_nav.h"
 
