@@ -100,11 +100,14 @@ hol_err hol_nav_find(hol_nav *nav, const hol_room *start, hol_tile target,
  *   the 36 room states (orientation, cell) on each key, with exact
  *   state-to-state leg costs from a second table (built on the first tour
  *   call, about 0.15 s, memory reserved at create). budget is ignored.
- * - Otherwise: the same program with legs up to the tables' radii (keys
- *   within 10 tiles, the chest within 14) gives a valid tour, an upper
- *   bound; then A* over room state x collected-key set with an admissible
- *   heuristic, pruned by that bound, within budget (0: arena capacity). It
- *   is exact when the A* reaches the chest or runs dry below the bound;
+ * - Otherwise: the same program with legs up to the tables' radii, and
+ *   for tiles farther apart legs through a room state on the tile midway
+ *   along a geodesic, gives a valid tour, an upper bound; then A* over
+ *   room state x collected-key set, pruned by that bound, with an
+ *   admissible heuristic (a backward program over key sets: exact legs
+ *   within the leg table's trusted radius, table bounds beyond), within
+ *   budget (0: arena capacity). It is exact when the A* reaches the chest
+ *   or runs dry below the bound (at once when the heuristic meets it);
  *   otherwise the bound's tour (exact = 0), or without one, keys nearest
  *   first with hol_nav_find legs (exact = 0).
  * A key under the start counts as collected. nkeys = 0 is hol_nav_find.

@@ -45,6 +45,8 @@ struct hol_nav {
     uint32_t *ent;    /* open entries: node id, next entry (pairs) */
     uint32_t ent_cap, ent_n;
     uint32_t fmin;
+    int hash_dirty;     /* 1: the hash may hold anything (the arena served as
+                         * scratch or as the tour's table): clear it whole */
     uint8_t *leg;       /* tour leg table (state to state), built lazily */
     int leg_radius, leg_trust, leg_ready;
     size_t bytes;

@@ -1,17 +1,21 @@
 /* hol_nav_tour.c - keys and chest: the fewest steps to stand on every key,
  * then on the chest (hol_nav_tour; contract in hol_nav.h).
  *
- * With the keys close together, a dynamic program over key subsets x room
- * states on the keys with exact state-to-state legs (hol__tour_dp).
- * Otherwise the same program with untrusted legs gives an upper bound that
+ * A dynamic program over key subsets x room states on the keys
+ * (hol__tour_dp): with the keys close together its legs are exact
+ * state-to-state costs and so is the tour. Otherwise (legs up to the
+ * tables' radii, or through a midway tile) its tour is an upper bound that
  * prunes an A* over room state x collected keys (admissible heuristic
- * hol__tour_h; nodes may be reopened), which is exact when it completes.
+ * hol__tour_h from a backward program over key sets, hol__tour_suf; nodes
+ * may be reopened), which is exact when it completes.
  */
 #include "hol_nav.h"
 
 #include <string.h>
 
 #include "hol_nav_impl.h"
+
+#define HOL__NK HOL_NAV_TOUR_MAX_KEYS
 
 /* ---- tours ---- */
 
@@ -20,6 +24,7 @@ void hol_nav_prepare_tours(hol_nav *nav)
     if (!nav->leg_ready) {
         hol_navtab_build_legs(&nav->tab, nav->leg_radius, nav->leg, nav->nodes);
         nav->leg_ready = 1;
+        nav->hash_dirty = 1; /* the build's scratch was the arena */
     }
 }
 
@@ -65,6 +70,12 @@ typedef struct hol__tour {
      * mask, edges the least cost between two tiles from any room state */
     int mst[1 << HOL_NAV_TOUR_MAX_KEYS];
     unsigned full;
+    /* suf[m][k][s]: a lower bound on the steps from key k in room state s
+     * (orientation s / 9 relative to the tile's heading, cell s % 9) with
+     * the keys in m held (k in m) to collect the others and stand on the
+     * chest; sufmin[m][k] its least over s (hol__tour_suf) */
+    uint16_t suf[1 << HOL_NAV_TOUR_MAX_KEYS][HOL_NAV_TOUR_MAX_KEYS][36];
+    int sufmin[1 << HOL_NAV_TOUR_MAX_KEYS][HOL_NAV_TOUR_MAX_KEYS];
 } hol__tour;
 
 static unsigned hol__keys_on(const hol__tour *t, hol_tile tile)
@@ -76,27 +87,124 @@ static unsigned hol__keys_on(const hol__tour *t, hol_tile tile)
     return m;
 }
 
-/* Admissible: the walk still has to reach every key left and then the
- * chest, so it costs at least (a) the cost to the chest, (b) for each key
- * left, the cost to it plus the least cost from it to the chest, and (c)
- * the cost to the nearest key left plus a spanning tree over the keys left
- * and the chest (the rest of the walk joins them all). */
+typedef struct hol__rel {
+    uint32_t idx; /* tile index of the source seen from the destination */
+    int facing;   /* source heading in that frame */
+} hol__rel;
+
+static int hol__rel_of(const hol_nav *nav, hol_tile from, hol_tile to, int trust,
+                       hol__rel *out)
+{
+    hol_tile u;
+    if (hol_tile_relative(to, 0, from, &u, &out->facing) || hol_tile_dist0(u) > trust)
+        return 0;
+    out->idx = hol_navtab_rank(&nav->tab, u);
+    return 1;
+}
+
+/* Admissible: the walk still has to reach the keys left, first visits in
+ * some order, then the chest. From the node to the next key k: the exact
+ * state-to-state leg when k is within the leg table's trusted radius (then
+ * the rest is suf of the state it arrives in), else the cost to k's tile
+ * from the main table (then the least suf over k's states). With every key
+ * held: the cost to the chest. Also at least (a) the cost to the chest and
+ * (c) the cost to the nearest key left plus a spanning tree over the keys
+ * left and the chest. */
 static int hol__tour_h(const hol_nav *nav, const hol__tour *t, const hol__node *n)
 {
-    int h = hol__lb(nav, n->u.t, n->o, n->cell, t->chest), nearest = INT32_MAX;
+    int h = hol__lb(nav, n->u.t, n->o, n->cell, t->chest), nearest = INT32_MAX, best = INT32_MAX;
     unsigned mask = n->flags & HOL__MASK;
+    if (mask == t->full)
+        return h;
     for (int i = 0; i < t->nkeys; i++) {
         if (mask & (1u << i))
             continue;
-        int c = hol__lb(nav, n->u.t, n->o, n->cell, t->keys[i]);
+        unsigned m2 = mask | (1u << i);
+        hol__rel r;
+        int c = hol__lb(nav, n->u.t, n->o, n->cell, t->keys[i]), v;
         if (c < nearest)
             nearest = c;
-        if (c + t->key_chest[i] > h)
-            h = c + t->key_chest[i];
+        if (nav->leg_ready && hol__rel_of(nav, n->u.t, t->keys[i], nav->leg_trust, &r)) {
+            int o = (r.facing + n->o) & 3;
+            v = INT32_MAX;
+            for (int s2 = 0; s2 < 36; s2++) {
+                int l = hol_navtab_leg(nav->leg, r.idx, o, n->cell, s2 / 9, s2 % 9);
+                if (l < 255 && l + t->suf[m2][i][s2] < v)
+                    v = l + t->suf[m2][i][s2];
+            }
+        } else {
+            v = c + t->sufmin[m2][i];
+        }
+        if (v < best)
+            best = v;
     }
+    if (best > h)
+        h = best;
     if (nearest != INT32_MAX && nearest + t->mst[mask] > h)
         h = nearest + t->mst[mask];
     return h;
+}
+
+/* Fill t->suf (see hol__tour) backwards over key sets: the chest's cost
+ * from the main table with every key held; between keys the exact leg
+ * within the leg table's trusted radius, else the larger of the two tiles'
+ * costs to each other from the main table (steps are reversible, so a leg
+ * costs at least both). Needs the leg table (hol_nav_prepare_tours). */
+static void hol__tour_suf(const hol_nav *nav, hol__tour *t)
+{
+    int nk = t->nkeys;
+    hol__rel rel[HOL__NK][HOL__NK];
+    int near[HOL__NK][HOL__NK];
+    uint8_t lbk[HOL__NK][HOL__NK][36]; /* key j state s to key k's tile */
+    for (int j = 0; j < nk; j++)
+        for (int k = 0; k < nk; k++) {
+            if (j == k)
+                continue;
+            near[j][k] = hol__rel_of(nav, t->keys[j], t->keys[k], nav->leg_trust, &rel[j][k]);
+            for (int s = 0; s < 36; s++) {
+                int c = hol__lb(nav, t->keys[j], s / 9, s % 9, t->keys[k]);
+                lbk[j][k][s] = (uint8_t)(c < 255 ? c : 255);
+            }
+        }
+    for (unsigned m = t->full; m >= 1; m--)
+        for (int k = 0; k < nk; k++) {
+            if (!(m & (1u << k)))
+                continue;
+            int mn = INT32_MAX;
+            for (int s = 0; s < 36; s++) {
+                int v = INT32_MAX;
+                if (m == t->full) {
+                    v = hol__lb(nav, t->keys[k], s / 9, s % 9, t->chest);
+                } else {
+                    for (int k2 = 0; k2 < nk; k2++) {
+                        if (m & (1u << k2))
+                            continue;
+                        unsigned m2 = m | (1u << k2);
+                        const hol__rel *r = &rel[k][k2];
+                        int o = (r->facing + s / 9) & 3;
+                        for (int s2 = 0; s2 < 36; s2++) {
+                            int l;
+                            if (near[k][k2]) {
+                                l = hol_navtab_leg(nav->leg, r->idx, o, s % 9, s2 / 9, s2 % 9);
+                                if (l == 255)
+                                    continue;
+                            } else {
+                                l = lbk[k][k2][s] > lbk[k2][k][s2] ? lbk[k][k2][s]
+                                                                    : lbk[k2][k][s2];
+                            }
+                            if (l + t->suf[m2][k2][s2] < v)
+                                v = l + t->suf[m2][k2][s2];
+                        }
+                    }
+                }
+                if (v > 0xfff0)
+                    v = 0xfff0;
+                t->suf[m][k][s] = (uint16_t)v;
+                if (v < mn)
+                    mn = v;
+            }
+            t->sufmin[m][k] = mn;
+        }
 }
 
 /* Prim over the chest and the keys not in mask. */
@@ -174,20 +282,6 @@ static hol_err hol__tour_greedy(hol_nav *nav, const hol_room *start,
  * the state-to-state distance, so the minimum over the DP is the optimum,
  * and it is achieved by the concatenated legs. */
 
-typedef struct hol__rel {
-    uint32_t idx; /* tile index of the source seen from the destination */
-    int facing;   /* source heading in that frame */
-} hol__rel;
-
-static int hol__rel_of(const hol_nav *nav, hol_tile from, hol_tile to, int trust,
-                       hol__rel *out)
-{
-    hol_tile u;
-    if (hol_tile_relative(to, 0, from, &u, &out->facing) || hol_tile_dist0(u) > trust)
-        return 0;
-    out->idx = hol_navtab_rank(&nav->tab, u);
-    return 1;
-}
 
 /* Descend the leg table from (idx, o, cell) to the goal state (ob, cb). */
 static void hol__leg_descend(const hol_nav *nav, uint32_t idx, int o, int cell, int ob,
@@ -219,41 +313,168 @@ static void hol__leg_descend(const hol_nav *nav, uint32_t idx, int o, int cell, 
     }
 }
 
-#define HOL__NK HOL_NAV_TOUR_MAX_KEYS
+/* Legs from every room state on a source tile to every room state on a
+ * key: state-to-state costs of walks, straight from the leg table when the
+ * tiles lie within its radius, else through a room state on the tile
+ * midway along a geodesic (both halves from the leg table; the walk is
+ * valid, its cost an upper bound). */
+typedef struct hol__legm {
+    uint8_t c[36][36];   /* c[s][s2]: source state s to key state s2 */
+    uint8_t via[36][36]; /* the midway state (through a midpoint) */
+    hol__rel r1, r2;     /* direct: r1; midway: r1 to the midpoint, r2 on */
+    int mid;
+} hol__legm;
+
+/* The chest from every room state on a key: the main table directly, or
+ * through the midway tile as above (leg, then the main table). */
+typedef struct hol__chestv {
+    uint8_t c[36];
+    uint8_t via[36];
+    hol__rel r1, r2;
+    int mid;
+} hol__chestv;
+
 typedef struct hol__dp {
     uint16_t cost[1 << HOL__NK][HOL__NK][36];
     int8_t pj[1 << HOL__NK][HOL__NK][36]; /* previous key, -1: the start */
     uint8_t ps[1 << HOL__NK][HOL__NK][36]; /* previous state */
+    hol__legm leg[HOL__NK + 1][HOL__NK];   /* from key j (or the start, nk) to key k */
+    hol__chestv chest[HOL__NK];
 } hol__dp;
 
-/* HOL_ERANGE when some tiles lie too far apart for the leg table. */
-/* lt: the farthest key-to-key (and start-to-key) distance allowed, ct: the
- * farthest key-to-chest; within the trusted radii the result is exact,
- * beyond (up to the tables' radii) the legs are walks that stay inside the
- * tables, so the tour is valid but only an upper bound. */
-static hol_err hol__tour_dp(hol_nav *nav, const hol_room *start, const hol__tour *t,
-                            int lt, int ct, hol__walk *w, hol_nav_result *res)
+/* The tile halfway along a geodesic from a to b. */
+static int hol__midway(hol_tile a, hol_tile b, hol_tile *out)
 {
-    int nk = t->nkeys;
-    hol__rel from_start[HOL__NK], pair[HOL__NK][HOL__NK], to_chest[HOL__NK];
-    for (int k = 0; k < nk; k++) {
-        if (!hol__rel_of(nav, start->tile, t->keys[k], lt, &from_start[k]) ||
-            !hol__rel_of(nav, t->keys[k], t->chest, ct, &to_chest[k]))
-            return HOL_ERANGE;
-        for (int j = 0; j < nk; j++)
-            if (j != k && !hol__rel_of(nav, t->keys[j], t->keys[k], lt, &pair[j][k]))
-                return HOL_ERANGE;
+    uint8_t let[HOL_TILE_REL_MAX];
+    int n = hol_tile_relative_letters(a, 0, b, let, NULL);
+    if (n < 0)
+        return 0;
+    hol_heading_tile f = {a, 0};
+    for (int i = 0; i < (n + 1) / 2; i++)
+        if (hol_heading_tile_step(f, let[i], &f))
+            return 0;
+    *out = f.tile;
+    return 1;
+}
+
+static int hol__leg_at(const hol_nav *nav, const hol__rel *r, int s, int s2)
+{
+    return hol_navtab_leg(nav->leg, r->idx, (r->facing + s / 9) & 3, s % 9, s2 / 9, s2 % 9);
+}
+
+static int hol__legm_fill(const hol_nav *nav, hol_tile a, hol_tile b, hol__legm *L)
+{
+    hol_tile x;
+    if (hol__rel_of(nav, a, b, nav->leg_radius, &L->r1)) {
+        L->mid = 0;
+        for (int s = 0; s < 36; s++)
+            for (int s2 = 0; s2 < 36; s2++)
+                L->c[s][s2] = (uint8_t)hol__leg_at(nav, &L->r1, s, s2);
+        return 1;
     }
+    if (!hol__midway(a, b, &x) || !hol__rel_of(nav, a, x, nav->leg_radius, &L->r1) ||
+        !hol__rel_of(nav, x, b, nav->leg_radius, &L->r2))
+        return 0;
+    L->mid = 1;
+    uint8_t h2[36][36];
+    for (int u = 0; u < 36; u++)
+        for (int s2 = 0; s2 < 36; s2++)
+            h2[u][s2] = (uint8_t)hol__leg_at(nav, &L->r2, u, s2);
+    for (int s = 0; s < 36; s++) {
+        int h1[36];
+        for (int u = 0; u < 36; u++)
+            h1[u] = hol__leg_at(nav, &L->r1, s, u);
+        for (int s2 = 0; s2 < 36; s2++) {
+            int best = 255, bu = 0;
+            for (int u = 0; u < 36; u++)
+                if (h1[u] + h2[u][s2] < best) {
+                    best = h1[u] + h2[u][s2];
+                    bu = u;
+                }
+            L->c[s][s2] = (uint8_t)best;
+            L->via[s][s2] = (uint8_t)bu;
+        }
+    }
+    return 1;
+}
+
+static int hol__chestv_fill(const hol_nav *nav, hol_tile key, hol_tile chest,
+                            hol__chestv *C)
+{
+    hol_tile x;
+    if (hol__rel_of(nav, key, chest, nav->tab.radius, &C->r1)) {
+        C->mid = 0;
+        for (int s = 0; s < 36; s++)
+            C->c[s] = (uint8_t)hol_navtab_cost(&nav->tab, C->r1.idx,
+                                               (C->r1.facing + s / 9) & 3, s % 9);
+        return 1;
+    }
+    if (!hol__midway(key, chest, &x) || !hol__rel_of(nav, key, x, nav->leg_radius, &C->r1) ||
+        !hol__rel_of(nav, x, chest, nav->tab.radius, &C->r2))
+        return 0;
+    C->mid = 1;
+    int h2[36];
+    for (int u = 0; u < 36; u++)
+        h2[u] = hol_navtab_cost(&nav->tab, C->r2.idx, (C->r2.facing + u / 9) & 3, u % 9);
+    for (int s = 0; s < 36; s++) {
+        int best = 255, bu = 0;
+        for (int u = 0; u < 36; u++) {
+            int v = hol__leg_at(nav, &C->r1, s, u) + h2[u];
+            if (v < best) {
+                best = v;
+                bu = u;
+            }
+        }
+        C->c[s] = (uint8_t)best;
+        C->via[s] = (uint8_t)bu;
+    }
+    return 1;
+}
+
+/* The walk of leg L from state s (orientation s / 9, cell s % 9) to s2. */
+static void hol__legm_walk(const hol_nav *nav, const hol__legm *L, int s, int s2, hol__walk *w)
+{
+    if (!L->mid) {
+        hol__leg_descend(nav, L->r1.idx, (L->r1.facing + s / 9) & 3, s % 9, s2 / 9, s2 % 9, w);
+        return;
+    }
+    int u = L->via[s][s2];
+    hol__leg_descend(nav, L->r1.idx, (L->r1.facing + s / 9) & 3, s % 9, u / 9, u % 9, w);
+    hol__leg_descend(nav, L->r2.idx, (L->r2.facing + u / 9) & 3, u % 9, s2 / 9, s2 % 9, w);
+}
+
+/* The dynamic program over key subsets x room states on the keys with the
+ * legs above. *out_proved: every leg within the trusted radii (keys within
+ * the leg table's trusted radius of each other and of the start, the chest
+ * within the main table's of every key), so the tour is the optimum;
+ * otherwise it is a valid tour, an upper bound. HOL_ERANGE when some tiles
+ * lie too far apart even for the midway legs. */
+static hol_err hol__tour_dp(hol_nav *nav, const hol_room *start, const hol__tour *t,
+                            hol__walk *w, hol_nav_result *res, int *out_proved)
+{
+    int nk = t->nkeys, proved = 1;
     hol_nav_prepare_tours(nav);
     /* the table lives in the arena (nodes are not used by this path) */
     hol__dp *dp = (hol__dp *)nav->nodes;
+    nav->hash_dirty = 1; /* the nodes no longer match the hash */
+    for (int k = 0; k < nk; k++) {
+        if (!hol__legm_fill(nav, start->tile, t->keys[k], &dp->leg[nk][k]) ||
+            !hol__chestv_fill(nav, t->keys[k], t->chest, &dp->chest[k]))
+            return HOL_ERANGE;
+        proved &= hol_tile_dist(start->tile, t->keys[k]) <= nav->leg_trust &&
+                  hol_tile_dist(t->keys[k], t->chest) <= nav->trust;
+        for (int j = 0; j < nk; j++)
+            if (j != k) {
+                if (!hol__legm_fill(nav, t->keys[j], t->keys[k], &dp->leg[j][k]))
+                    return HOL_ERANGE;
+                proved &= hol_tile_dist(t->keys[j], t->keys[k]) <= nav->leg_trust;
+            }
+    }
     memset(dp->cost, 0xff, sizeof dp->cost);
-    int sc = start->col + 3 * start->row;
+    int ss = 9 * start->orient + start->col + 3 * start->row;
     for (int k = 0; k < nk; k++)
         for (int s = 0; s < 36; s++) {
-            const hol__rel *r = &from_start[k];
-            int v = hol_navtab_leg(nav->leg, r->idx, (r->facing + start->orient) & 3, sc,
-                                   s / 9, s % 9);
+            int v = dp->leg[nk][k].c[ss][s];
             if (v < 255) {
                 dp->cost[1u << k][k][s] = (uint16_t)v;
                 dp->pj[1u << k][k][s] = -1;
@@ -271,10 +492,9 @@ static hol_err hol__tour_dp(hol_nav *nav, const hol_room *start, const hol__tour
                     if (m & (1u << k))
                         continue;
                     unsigned m2 = m | (1u << k);
-                    const hol__rel *r = &pair[j][k];
-                    int o = (r->facing + s / 9) & 3;
+                    const uint8_t *row = dp->leg[j][k].c[s];
                     for (int s2 = 0; s2 < 36; s2++) {
-                        int v = hol_navtab_leg(nav->leg, r->idx, o, s % 9, s2 / 9, s2 % 9);
+                        int v = row[s2];
                         if (v < 255 && base + v < dp->cost[m2][k][s2]) {
                             dp->cost[m2][k][s2] = (uint16_t)(base + v);
                             dp->pj[m2][k][s2] = (int8_t)j;
@@ -290,8 +510,7 @@ static hol_err hol__tour_dp(hol_nav *nav, const hol_room *start, const hol__tour
         for (int s = 0; s < 36; s++) {
             if (dp->cost[full][j][s] == 0xffff)
                 continue;
-            const hol__rel *r = &to_chest[j];
-            int v = hol_navtab_cost(&nav->tab, r->idx, (r->facing + s / 9) & 3, s % 9);
+            int v = dp->chest[j].c[s];
             if (v < 255 && dp->cost[full][j][s] + v < best) {
                 best = dp->cost[full][j][s] + v;
                 bj = j;
@@ -314,24 +533,26 @@ static hol_err hol__tour_dp(hol_nav *nav, const hol_room *start, const hol__tour
     }
     /* legs, front to back */
     for (int i = n - 1; i >= 0; i--) {
-        int k = oj[i], s2 = os[i];
-        if (i == n - 1) {
-            const hol__rel *r = &from_start[k];
-            hol__leg_descend(nav, r->idx, (r->facing + start->orient) & 3, sc, s2 / 9,
-                             s2 % 9, w);
-        } else {
-            int j = oj[i + 1], s = os[i + 1];
-            const hol__rel *r = &pair[j][k];
-            hol__leg_descend(nav, r->idx, (r->facing + s / 9) & 3, s % 9, s2 / 9, s2 % 9, w);
-        }
+        if (i == n - 1)
+            hol__legm_walk(nav, &dp->leg[nk][oj[i]], ss, os[i], w);
+        else
+            hol__legm_walk(nav, &dp->leg[oj[i + 1]][oj[i]], os[i + 1], os[i], w);
     }
-    const hol__rel *r = &to_chest[bj];
-    hol__nav_descend(&nav->tab, r->idx, (r->facing + bs / 9) & 3, bs % 9, w);
+    const hol__chestv *C = &dp->chest[bj];
+    if (!C->mid) {
+        hol__nav_descend(&nav->tab, C->r1.idx, (C->r1.facing + bs / 9) & 3, bs % 9, w);
+    } else {
+        int u = C->via[bs];
+        hol__leg_descend(nav, C->r1.idx, (C->r1.facing + bs / 9) & 3, bs % 9, u / 9, u % 9, w);
+        hol__nav_descend(&nav->tab, C->r2.idx, (C->r2.facing + u / 9) & 3, u % 9, w);
+    }
     if (w->overflow)
         return HOL_ENOMEM;
-    res->exact = 1;
+    if ((int)w->n != best)
+        return HOL_ERANGE; /* a leg could not be walked as costed (does not happen) */
+    res->exact = proved;
     res->nodes = 0;
-    (void)best;
+    *out_proved = proved;
     return HOL_OK;
 }
 
@@ -368,21 +589,16 @@ hol_err hol_nav_tour(hol_nav *nav, const hol_room *start, const hol_tile *keys,
     if (nkeys == 0) {
         return hol_nav_find(nav, start, chest, budget, out_walk, cap, out_result);
     }
-    hol_err dperr = hol__tour_dp(nav, start, &t, nav->leg_trust, nav->trust, &w, &res);
-    if (dperr != HOL_ERANGE) {
-        if (dperr)
-            return dperr;
+    /* The program's tour: the optimum when every leg lies within the
+     * trusted radii; otherwise a valid tour whose length bounds the A*
+     * below (if the A* runs dry below it, this walk is the optimum). */
+    int proved = 0, ub = INT32_MAX;
+    hol_err dperr = hol__tour_dp(nav, start, &t, &w, &res, &proved);
+    if (dperr == HOL_OK && proved) {
         res.len = (int)w.n;
         *out_result = res;
         return HOL_OK;
     }
-    /* An upper bound: the same program with legs up to the tables' radii
-     * (walks inside the tables, not proved shortest). The A* below prunes
-     * with it; if the A* runs dry below it, this walk is the optimum. */
-    w.n = 0;
-    w.overflow = 0;
-    int ub = INT32_MAX;
-    dperr = hol__tour_dp(nav, start, &t, nav->leg_radius, nav->tab.radius, &w, &res);
     if (dperr == HOL_OK)
         ub = (int)w.n;
     else if (dperr != HOL_ERANGE)
@@ -391,6 +607,7 @@ hol_err hol_nav_tour(hol_nav *nav, const hol_room *start, const hol_tile *keys,
         w.n = 0;
     w.overflow = 0;
     res.exact = 0;
+    hol__tour_suf(nav, &t);
 
     hol__nav_reset(nav);
     hol__node root;

@@ -632,6 +632,103 @@ static void test_tour_vs_bruteforce(void **state)
     bf_free(&b);
 }
 
+/* Fewest steps to hold every key and then stand on the chest: BFS over
+ * (absolute room state, keys held), an independent model of the game's
+ * rule (a key counts on entering its tile, the chest only once every key
+ * is held). -1 if not within max_depth. */
+static int bf_tour(bf *b, const hol_room *start, const hol_tile *keys, int nk, hol_tile chest,
+                   int max_depth)
+{
+    b->n = 0;
+    memset(b->hash, 0xff, (b->hmask + 1) * sizeof *b->hash);
+    unsigned full = (1u << nk) - 1, m0 = 0;
+    for (int k = 0; k < nk; k++)
+        if (hol_tile_eq(start->tile, keys[k]))
+            m0 |= 1u << k;
+    if (m0 == full && hol_tile_eq(start->tile, chest))
+        return 0;
+    bf_add(b, start, (int)m0, -1, 0);
+    size_t head = 0;
+    for (int depth = 0; depth < max_depth; depth++) {
+        size_t end = b->n;
+        for (; head < end; head++) {
+            for (int d = 0; d < 4; d++) {
+                hol_room r = b->st[head].room;
+                if (hol_room_step(&r, d))
+                    continue;
+                unsigned m = b->st[head].stage;
+                for (int k = 0; k < nk; k++)
+                    if (hol_tile_eq(r.tile, keys[k]))
+                        m |= 1u << k;
+                if (m == full && hol_tile_eq(r.tile, chest))
+                    return depth + 1;
+                bf_add(b, &r, (int)m, (int32_t)head, d);
+            }
+        }
+    }
+    return -1;
+}
+
+/* Tours of 4 and 5 keys against bf_tour: the default navigator (dynamic
+ * program) and small ones whose tables force the other paths (legs through
+ * a midway tile, the A* with its heuristic). Every answer flagged exact
+ * must equal the brute force; the others may not be shorter. */
+static void test_tour_product_bfs(void **state)
+{
+    (void)state;
+    bf b;
+    bf_init(&b, 1u << 21);
+    static const int radii[3] = {0, 5, 3};
+    for (int v = 0; v < 3; v++) {
+        hol_nav *nav = g_nav;
+        if (radii[v]) {
+            hol_nav_desc desc = {0};
+            desc.radius = radii[v];
+            assert_int_equal(hol_nav_create(&desc, &nav), HOL_OK);
+        }
+        int exact = 0, n = 10;
+        for (int q = 0; q < n; q++) {
+            hol_room s = random_start(20);
+            int nk = 4 + q % 2;
+            hol_tile keys[5], chest;
+            for (int i = 0; i < nk; i++)
+                keys[i] = random_target(&s, 1 + (int)rnd(2));
+            chest = random_target(&s, 1 + (int)rnd(2));
+            uint8_t walk[HOL_NAV_WALK_MAX];
+            hol_nav_result res;
+            assert_int_equal(hol_nav_tour(nav, &s, keys, nk, chest, 0, walk, sizeof walk, &res),
+                             HOL_OK);
+            /* the walk itself completes the level */
+            hol_room r = s;
+            unsigned got = 0;
+            int done = 0;
+            for (int i = 0; i <= res.len; i++) {
+                if (i > 0)
+                    assert_int_equal(hol_room_step(&r, walk[i - 1]), HOL_OK);
+                for (int k = 0; k < nk; k++)
+                    if (hol_tile_eq(r.tile, keys[k]))
+                        got |= 1u << k;
+                if (got == (1u << nk) - 1 && hol_tile_eq(r.tile, chest))
+                    done = 1;
+            }
+            assert_true(done);
+            int best = bf_tour(&b, &s, keys, nk, chest, res.len);
+            assert_true(best >= 0 && best <= res.len);
+            if (res.exact) {
+                assert_int_equal(best, res.len);
+                exact++;
+            }
+        }
+        print_message("tours vs product BFS, radius %d: %d of %d exact, all agree\n",
+                      radii[v] ? radii[v] : HOL_NAV_DEFAULT_RADIUS, exact, n);
+        if (!radii[v])
+            assert_int_equal(exact, n);
+        else
+            hol_nav_destroy(nav);
+    }
+    bf_free(&b);
+}
+
 /* The two exact tour methods agree: the default navigator's dynamic
  * program (keys within 7 tiles of each other) against the A* of a
  * radius-7 navigator, whose leg table only covers 4 tiles. */
@@ -679,7 +776,7 @@ static void test_tour_budget(void **state)
     (void)state;
     hol_room s = hol_room_start();
     hol_tile keys[5], chest;
-    static const char *const far[5] = {"Nfffff", "Sfffff", "Wffff", "Effff", "Nlfff"};
+    static const char *const far[5] = {"Nfffffff", "Sfffffff", "Wfffffff", "Efffffff", "Nlffffff"};
     for (int i = 0; i < 5; i++)
         assert_int_equal(hol_tile_parse(far[i], -1, &keys[i]), HOL_OK);
     chest = random_target(&s, 4);
@@ -896,6 +993,7 @@ int main(void)
         cmocka_unit_test(test_far),
         cmocka_unit_test(test_small_radius),
         cmocka_unit_test(test_tour_vs_bruteforce),
+        cmocka_unit_test(test_tour_product_bfs),
         cmocka_unit_test(test_tour_dp_vs_astar),
         cmocka_unit_test(test_tour_budget),
         cmocka_unit_test(test_field),
