@@ -144,9 +144,13 @@ uint32_t hol__weight(int biome, int s);
 /* Batch: collapse everything within radius of centre. */
 hol_err hol__generate(hol_world *w, hol_tile centre, int radius, int mark_seen);
 
-/* hol_world_tree.c */
+/* hol_wfc.c: the content of a collapsed entry */
 void hol__fill_content(const hol_world *w, const hol__entry *e,
                        hol_tile_content *out);
+
+/* hol_world_tree.c: vertices and trees, pure in (seed, vertex). It uses
+ * neither the tile set nor the generator: hol_wfc.c calls it, never the
+ * other way round. */
 uint16_t hol__trees_packed(uint64_t seed, hol_tile t);
 
 /* hol_world_io.c: checksum of an image's first n bytes (tests use it to

@@ -99,27 +99,3 @@ uint16_t hol__trees_packed(uint64_t seed, hol_tile t)
     }
     return p;
 }
-
-void hol__fill_content(const hol_world *w, const hol__entry *e,
-                       hol_tile_content *out)
-{
-    int s = e->state;
-    out->biome = e->biome < HOL_BIOME_COUNT ? e->biome : HOL_BIOME_MEADOW;
-    out->object = (uint8_t)(e->game ? e->game : hol__state_obj(s));
-    int rot = hol__state_rot(s);
-    if (rot < 0)
-        rot = (int)(hol__tile_hash(w->seed ^ 0x5070, e->tile) & 3);
-    out->rotation = (uint8_t)rot;
-    out->log_partner = -1;
-    for (int d = 0; d < 4; d++) {
-        out->conn[d] = (uint8_t)hol__state_conn(s, d);
-        if (out->conn[d] == HOL_CONN_LOG)
-            out->log_partner = (int8_t)d;
-    }
-    uint16_t p = (e->flags & HOL__F_TREES) ? e->trees
-                                           : hol__trees_packed(w->seed, e->tile);
-    for (int c = 0; c < 4; c++) {
-        out->tree[c].kind = (uint8_t)((p >> (4 * c)) & 3);
-        out->tree[c].size = (uint8_t)((p >> (4 * c + 2)) & 3);
-    }
-}
