@@ -109,7 +109,7 @@ int session_parse_level(const char *text, size_t len, hol_app_level *lvl, char *
      * objective and placement was given */
     int flag_lo = 0, flag_hi = 0, keys_n = 0, keys_lo = 0, keys_hi = 0, chest_lo = 0,
         chest_hi = 0;
-    long flag_line = 0, keys_line = 0, chest_line = 0, place_line[HOL_WORLD_MAX_PLACES];
+    long flag_line = 0, keys_line = 0, chest_line = 0, place_line[HOL_APP_MAX_PLACES];
     const char *p = text, *end = text + len;
     while (p < end) {
         const char *nl = memchr(p, '\n', (size_t)(end - p));
@@ -264,9 +264,9 @@ int session_parse_level(const char *text, size_t len, hol_app_level *lvl, char *
                              lineno, f[2], place_line[k]);
                     return 1;
                 }
-            if (L.nplaces >= HOL_WORLD_MAX_PLACES) {
+            if (L.nplaces >= HOL_APP_MAX_PLACES) {
                 snprintf(err, err_cap, "line %ld: more than %d placements", lineno,
-                         HOL_WORLD_MAX_PLACES);
+                         HOL_APP_MAX_PLACES);
                 return 1;
             }
             place_line[L.nplaces] = lineno;
