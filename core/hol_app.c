@@ -576,9 +576,13 @@ hol_err hol_app_step(hol_app *app, const hol_input *in)
     if (v->state == HOL_APP_QUIT)
         return HOL_OK;
     if (app->pending_start) {
+        /* a level started between frames begins at this frame: the time
+         * since the previous frame (another level, another play) is not
+         * its time */
         app->pending_start = 0;
         app->ev.level_started = 1;
         v->state = HOL_APP_PLAYING;
+        dt = 0;
     }
     hol_err err = HOL_OK;
     if (pressed & HOL_BTN_QUIT) {

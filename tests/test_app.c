@@ -532,6 +532,18 @@ static void test_time_limit(void **state)
     assert_int_equal(v->state, HOL_APP_DONE);
     assert_true(strstr(v->hud.status, "Time up") != NULL);
     assert_int_equal(v->hud.steps, 0); /* walking after the end does not count */
+    /* a level started later (the next level, another play of `game`): its
+     * clock begins at its first frame, not at the previous frame's time */
+    assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    hol_input in = pancake(100, 0, 0);
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    assert_true(hol_app_get_events(app)->level_started);
+    assert_true(v->hud.elapsed_s == 0);
+    assert_int_equal(v->state, HOL_APP_PLAYING);
+    in = pancake(101.5, 0, 0);
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    assert_true(v->hud.elapsed_s == 1.5);
+    assert_int_equal(v->state, HOL_APP_PLAYING);
     hol_app_destroy(app);
 }
 
