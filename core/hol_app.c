@@ -435,6 +435,7 @@ static void hol__fill_view(hol_app *app, const hol_input *in)
     h->keys_total = L->mode == HOL_APP_KEYS ? L->nkeys : 0;
     h->keys_held = 0;
     h->stage = L->mode == HOL_APP_TUTORIAL ? app->stage : -1;
+    h->timed_out = app->timed_out;
     for (int k = 0; k < h->keys_total; k++)
         h->keys_held += (int)(app->keys_held >> k & 1);
     hol_tile_print(v->user.tile, h->address);

@@ -126,6 +126,8 @@ typedef struct hol_app_hud {
     int remaining;                    /* optimal steps left from here; -1 none */
     int keys_held, keys_total;
     int stage;                        /* tutorial lesson 0..3; -1 otherwise */
+    int timed_out;                    /* 1: the level ended at its time limit
+                                         (state DONE, "Time up"), not complete */
     double elapsed_s;                 /* level clock */
     /* the text as drawn, one line each: objective (or status), steps
      * (with the best when done), "TILE address", time, hint if any; "TILE"
