@@ -1,7 +1,7 @@
 /* cmd_xr.c - `holonomy xr`: the headset app on the desktop's OpenXR runtime
  * (platform/openxr/hol_xr.h), with the desktop session's levels, logs and
  * recording (session.h), so a headset session replays headless. Built in
- * only with `make XR=1` (needs libopenxr-dev and GLX). */
+ * only with `make xr` (XR=1; needs libopenxr-dev and GLX). */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -135,24 +135,10 @@ int cli_cmd_xr(int argc, char **argv)
     hol_input *script = NULL;
     long nscript = 0;
     if (input_path) {
-        int rs = read_lines(cmd, input_path, &fl);
-        if (rs) {
-            free_lines(&fl);
-            return rs;
-        }
         long first = 0;
-        if (fl.n && !strncmp(fl.line[0], "holonomy-rec ", 13)) {
-            static session_level skip[SESSION_MAX_LEVELS];
-            int ns;
-            char err[256];
-            first = session_read_header(fl.line, fl.len, fl.n, skip, &ns, err, sizeof err);
-            if (!first) {
-                cli_error(cmd, 0, "%.200s: %s", input_path, err);
-                free_lines(&fl);
-                return CLI_EXIT_USAGE;
-            }
-            first--;
-        }
+        int rs = read_input_lines(cmd, input_path, &fl, &first);
+        if (rs)
+            return rs;
         script = calloc((size_t)(fl.n - first > 0 ? fl.n - first : 1), sizeof *script);
         if (!script) {
             free_lines(&fl);
@@ -195,7 +181,7 @@ int cli_cmd_xr(int argc, char **argv)
     (void)frames;
     (void)rec;
     free(script);
-    cli_error(cmd, 0, "this build has no OpenXR; build with 'make XR=1' (needs libopenxr-dev, "
+    cli_error(cmd, 0, "this build has no OpenXR; build with 'make xr' (needs libopenxr-dev, "
                       "GLX; see README 'Headset')");
     return CLI_EXIT_FAIL;
 #endif
