@@ -114,6 +114,14 @@ sed '/^L time-limit/d' "$T/t.rec" >"$T/n.rec"
 run "no time-limit replay" 0 "$H" replay "$T/n.rec"
 grep -q '^level lv done steps 8 optimum 8 ' "$T/out" && ok || bad "no limit: $(cat "$T/out")"
 
+# a recording's level names the recording's lines, both of them
+printf 'holonomy-rec 1\nlevel c\nL mode flag\nL flag Wrf\nL place rock Wrf\nend\n0 f=8\n' >"$T/c.rec"
+run "conflict in a recording" 2 "$H" replay "$T/c.rec"
+one_line "conflict in a recording" "line 5: level 'c': the placement on Wrf conflicts with the flag (line 4)$"
+printf 'holonomy-rec 1\nlevel c\nL mode explore\nL place rock Nf\nL place grass Nf\nend\n0 f=8\n' >"$T/c.rec"
+run "placed twice in a recording" 2 "$H" replay "$T/c.rec"
+one_line "placed twice in a recording" "line 5: level 'c': Nf is already placed on line 4$"
+
 # ---- stages (the tutorial's lessons) ---------------------------------------------
 lvl 'mode tutorial
 stages 1'

@@ -673,9 +673,19 @@ long session_read_header(char *const *lines, const size_t *lens, long nlines,
         }
         char perr[256];
         if (session_parse_level(L->text, L->len, &L->lvl, perr, sizeof perr)) {
-            /* name the recording's line: the level's line N is line first + N - 1 */
+            /* name the recording's lines: the level's line N is line
+             * first + N, also where the message names another line (a
+             * conflict: "... (line M)", "... placed on line M") */
             long ln = strtol(perr + 5, NULL, 10);
             const char *msg = strchr(perr, ':');
+            char *other = strstr(perr, " (line ");
+            if (other) {
+                long m = strtol(other + 7, NULL, 10);
+                snprintf(other, sizeof perr - (size_t)(other - perr), " (line %ld)", first + m);
+            } else if ((other = strstr(perr, " on line "))) {
+                long m = strtol(other + 9, NULL, 10);
+                snprintf(other, sizeof perr - (size_t)(other - perr), " on line %ld", first + m);
+            }
             snprintf(err, err_cap, "line %ld: level '%.40s'%s", first + ln, L->name,
                      msg ? msg : perr);
             return 0;
