@@ -269,24 +269,7 @@ static void hol__summary(hol_app *app, hol_app_end end)
 static hol_err hol__begin(hol_app *app)
 {
     const hol_app_level *L = &app->level;
-    hol_world_desc wd = hol__world_desc(app, L->seed);
-    wd.places = L->places;
-    wd.nplaces = L->nplaces < 0 ? 0 : (uint32_t)L->nplaces;
-    hol_err err = hol_world_init(app->world_mem, app->world_size, &wd, &app->world);
-    if (err)
-        return err;
-    hol_room r = hol_room_start();
-    if ((err = hol_world_update(app->world, &r)))
-        return err;
-    for (int i = 0; i < L->nstart; i++) {
-        err = hol_room_step(&r, L->start[i]);
-        if (err)
-            return err == HOL_EROOM ? HOL_EARG : err;
-        if ((err = hol_world_update(app->world, &r)))
-            return err;
-    }
-    app->start_room = r;
-    /* objectives: never on the start tile; placed in the world */
+    /* the objectives (several may share a tile) */
     hol_tile obj[HOL_APP_MAX_OBJECTIVES];
     hol_object kind[HOL_APP_MAX_OBJECTIVES];
     int nobj = 0;
@@ -303,11 +286,49 @@ static hol_err hol__begin(hol_app *app)
         obj[nobj] = L->chest;
         kind[nobj++] = HOL_OBJ_CHEST;
     }
+    /* the world: the designer's placements, and a clearing on each
+     * objective's tile before generation, so every objective stands on a
+     * free tile (no rock, log, creek or pond under it) wherever it is */
+    hol_world_place places[HOL_WORLD_MAX_PLACES];
+    int np = L->nplaces;
+    memcpy(places, L->places, (size_t)np * sizeof places[0]);
+    int first[HOL_APP_MAX_OBJECTIVES]; /* the objective's tile is new here */
+    for (int i = 0; i < nobj; i++) {
+        first[i] = 1;
+        for (int j = 0; j < i; j++)
+            if (hol_tile_eq(obj[j], obj[i]))
+                first[i] = 0;
+        for (int k = 0; k < L->nplaces; k++)
+            if (hol_tile_eq(L->places[k].tile, obj[i]))
+                return HOL_EARG; /* a placement on an objective */
+        if (first[i])
+            places[np++] = (hol_world_place){obj[i], HOL_OBJ_NONE};
+    }
+    hol_world_desc wd = hol__world_desc(app, L->seed);
+    wd.places = places;
+    wd.nplaces = (uint32_t)np;
+    hol_err err = hol_world_init(app->world_mem, app->world_size, &wd, &app->world);
+    if (err)
+        return err;
+    hol_room r = hol_room_start();
+    if ((err = hol_world_update(app->world, &r)))
+        return err;
+    for (int i = 0; i < L->nstart; i++) {
+        err = hol_room_step(&r, L->start[i]);
+        if (err)
+            return err == HOL_EROOM ? HOL_EARG : err;
+        if ((err = hol_world_update(app->world, &r)))
+            return err;
+    }
+    app->start_room = r;
+    /* objectives: never on the start tile; reserved in the world (their
+     * tiles are clearings, so this cannot find them taken) */
     for (int i = 0; i < nobj; i++) {
         if (hol_tile_eq(obj[i], r.tile))
             return HOL_EARG;
         hol_tile placed;
-        (void)hol_world_reserve(app->world, obj[i], 0, kind[i], &placed);
+        if (first[i] && (err = hol_world_reserve(app->world, obj[i], 0, kind[i], &placed)))
+            return err;
     }
     app->done = 0;
     app->keys_held = 0;
@@ -338,7 +359,8 @@ static hol_err hol__begin(hol_app *app)
 hol_err hol_app_start_level(hol_app *app, const hol_app_level *level)
 {
     if (!level || level->mode < 0 || level->mode > HOL_APP_TUTORIAL || level->nstart < 0 ||
-        level->nstart > (int)sizeof level->start || level->minimap < 0 ||
+        level->nstart > (int)sizeof level->start || level->nplaces < 0 ||
+        level->nplaces > HOL_APP_MAX_PLACES || level->minimap < 0 ||
         level->minimap > HOL_MINIMAP_OFF)
         return HOL_EARG;
     app->level = *level;
@@ -413,6 +435,7 @@ static void hol__fill_view(hol_app *app, const hol_input *in)
     h->keys_total = L->mode == HOL_APP_KEYS ? L->nkeys : 0;
     h->keys_held = 0;
     h->stage = L->mode == HOL_APP_TUTORIAL ? app->stage : -1;
+    h->timed_out = app->timed_out;
     for (int k = 0; k < h->keys_total; k++)
         h->keys_held += (int)(app->keys_held >> k & 1);
     hol_tile_print(v->user.tile, h->address);
@@ -554,9 +577,13 @@ hol_err hol_app_step(hol_app *app, const hol_input *in)
     if (v->state == HOL_APP_QUIT)
         return HOL_OK;
     if (app->pending_start) {
+        /* a level started between frames begins at this frame: the time
+         * since the previous frame (another level, another play) is not
+         * its time */
         app->pending_start = 0;
         app->ev.level_started = 1;
         v->state = HOL_APP_PLAYING;
+        dt = 0;
     }
     hol_err err = HOL_OK;
     if (pressed & HOL_BTN_QUIT) {

@@ -63,6 +63,9 @@ enum hol_app_minimap_place { HOL_MINIMAP_HUD = 0, HOL_MINIMAP_HAND = 1, HOL_MINI
 #define HOL_APP_PATH_MAX 64
 #define HOL_APP_TEXT_MAX 48
 #define HOL_APP_HUD_LINES 5
+/* A level's designer placements; the world takes these and a clearing on
+ * each objective's tile (HOL_WORLD_MAX_PLACES holds both). */
+#define HOL_APP_MAX_PLACES 32
 /* The tutorial's lessons, in order, each completed by a room step:
  * 0 step onto the marked tile one step ahead (room north);
  * 1 walk round a tree: back in the cell where the lesson began, after at
@@ -89,7 +92,7 @@ typedef struct hol_app_level {
                                  when its clock reaches this; 0: no limit */
     unsigned stages;          /* tutorial: the lessons to play, bit k for
                                  lesson k, in order; 0: all four */
-    hol_world_place places[HOL_WORLD_MAX_PLACES]; /* designer placements
+    hol_world_place places[HOL_APP_MAX_PLACES]; /* designer placements
                                  (hol_world_desc.places), never on an
                                  objective's tile */
     int nplaces;
@@ -123,6 +126,8 @@ typedef struct hol_app_hud {
     int remaining;                    /* optimal steps left from here; -1 none */
     int keys_held, keys_total;
     int stage;                        /* tutorial lesson 0..3; -1 otherwise */
+    int timed_out;                    /* 1: the level ended at its time limit
+                                         (state DONE, "Time up"), not complete */
     double elapsed_s;                 /* level clock */
     /* the text as drawn, one line each: objective (or status), steps
      * (with the best when done), "TILE address", time, hint if any; "TILE"
@@ -218,10 +223,13 @@ typedef struct hol_app hol_app;
 hol_err hol_app_create(const hol_app_desc *desc, hol_app **out_app);
 void hol_app_destroy(hol_app *app); /* NULL ok */
 
-/* Start (or restart) a level: the world is re-seeded in place, the start
- * walk applied, objectives placed, the optimum computed. Errors: HOL_EARG
- * (bad level: no keys, an objective on the start tile, a start walk leaving
- * the room), HOL_EBUDGET (the optimum could not be proved exact: the level
+/* Start (or restart) a level: the world is re-seeded in place with the
+ * level's placements and a clearing (HOL_OBJ_NONE) on every objective's
+ * tile, so each objective is reserved on a free tile (no rock, log, creek
+ * or pond under it) wherever it lies; the start walk applied, the optimum
+ * computed. Errors: HOL_EARG (bad level: no keys, an objective on the start
+ * tile, a placement on an objective's tile, a start walk leaving the room),
+ * HOL_EBUDGET (the optimum could not be proved exact: the level
  * is refused), HOL_ENOMEM (the world store), HOL_ERANGE. On error no level
  * is playing. */
 hol_err hol_app_start_level(hol_app *app, const hol_app_level *level);

@@ -144,8 +144,9 @@ typedef struct hol_tile_content {
 /* the shared allocator hooks (core/hol_alloc.h) */
 typedef hol_alloc hol_world_allocator;
 
-/* A designer placement: tile t is generated with this object. */
-#define HOL_WORLD_MAX_PLACES 32
+/* A designer placement: tile t is generated with this object. (40: a
+ * level's 32 designer placements and the game's objective tiles.) */
+#define HOL_WORLD_MAX_PLACES 40
 typedef struct hol_world_place {
     hol_tile tile;
     int object; /* HOL_OBJ_NONE (a clearing), GRASS, FLOWERS, ROCK, MUSHROOM,

@@ -245,6 +245,68 @@ static void test_keys_level(void **state)
     hol_app_destroy(app);
 }
 
+/* Every objective stands on a free tile holding its game object, whatever
+ * the seed would have put there (rock, log, creek, pond): the app makes the
+ * objective tiles clearings before generation. Over 40 seeds and tiles at
+ * distance 1..3, 33 of the 240 key tiles would not have been free (the same
+ * seed's world without the game holds a rock, log, creek or pond there;
+ * the test fails with the reservation alone). A designer placement
+ * on an objective's tile is refused. */
+static void test_objectives_on_free_tiles(void **state)
+{
+    (void)state;
+    hol_app *app = make_app();
+    static const char *const addrs[] = {"N", "Wr", "Sf", "Nff", "Efl", "Wlf"};
+    int blocked_without = 0;
+    hol_world_desc wd;
+    memset(&wd, 0, sizeof wd);
+    wd.capacity = 1u << 14;
+    hol_world *plain = NULL;
+    for (uint64_t seed = 0; seed < 40; seed++) {
+        wd.seed = seed;
+        assert_int_equal(hol_world_make(&wd, &plain), HOL_OK);
+        for (size_t a = 0; a < sizeof addrs / sizeof addrs[0]; a++) {
+            hol_app_level L;
+            memset(&L, 0, sizeof L);
+            L.mode = HOL_APP_KEYS;
+            L.seed = seed;
+            L.keys[0] = tile(addrs[a]);
+            L.nkeys = 1;
+            L.chest = tile(addrs[(a + 1) % 6]);
+            L.cues = HOL_CUE_ALL;
+            assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+            hol_tile_content c, p;
+            assert_int_equal(hol_world_get(hol_app_world(app), L.keys[0], &c), HOL_OK);
+            assert_int_equal(c.object, HOL_OBJ_KEY);
+            for (int d = 0; d < 4; d++)
+                assert_int_equal(c.conn[d], HOL_CONN_NONE);
+            assert_int_equal(hol_world_get(hol_app_world(app), L.chest, &c), HOL_OK);
+            assert_int_equal(c.object, HOL_OBJ_CHEST);
+            /* the same seed without the game: what the tile would hold */
+            hol_room r = hol_room_start();
+            assert_int_equal(hol_world_update(plain, &r), HOL_OK);
+            assert_int_equal(hol_world_get(plain, L.keys[0], &p), HOL_OK);
+            int free_obj = p.object == HOL_OBJ_NONE || p.object == HOL_OBJ_GRASS ||
+                           p.object == HOL_OBJ_FLOWERS || p.object == HOL_OBJ_MUSHROOM;
+            blocked_without += !free_obj || p.conn[0] || p.conn[1] || p.conn[2] || p.conn[3];
+        }
+        hol_world_destroy(plain);
+    }
+    fprintf(stderr, "    %d of 240 key tiles would not have been free\n", blocked_without);
+    assert_true(blocked_without > 10);
+    /* a placement on the flag's tile */
+    hol_app_level L = flag_level("Wrf");
+    L.places[0] = (hol_world_place){tile("Wrf"), HOL_OBJ_ROCK};
+    L.nplaces = 1;
+    assert_int_equal(hol_app_start_level(app, &L), HOL_EARG);
+    L.places[0].tile = tile("Nr");
+    assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    hol_tile_content c;
+    assert_int_equal(hol_world_get(hol_app_world(app), tile("Nr"), &c), HOL_OK);
+    assert_int_equal(c.object, HOL_OBJ_ROCK);
+    hol_app_destroy(app);
+}
+
 /* The tutorial's lessons complete in order: a step ahead; round a tree
  * back to the cell on another tile; the navigator's walks to the marker
  * and the flag. Nothing else completes a lesson early. */
@@ -470,6 +532,18 @@ static void test_time_limit(void **state)
     assert_int_equal(v->state, HOL_APP_DONE);
     assert_true(strstr(v->hud.status, "Time up") != NULL);
     assert_int_equal(v->hud.steps, 0); /* walking after the end does not count */
+    /* a level started later (the next level, another play of `game`): its
+     * clock begins at its first frame, not at the previous frame's time */
+    assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    hol_input in = pancake(100, 0, 0);
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    assert_true(hol_app_get_events(app)->level_started);
+    assert_true(v->hud.elapsed_s == 0);
+    assert_int_equal(v->state, HOL_APP_PLAYING);
+    in = pancake(101.5, 0, 0);
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    assert_true(v->hud.elapsed_s == 1.5);
+    assert_int_equal(v->state, HOL_APP_PLAYING);
     hol_app_destroy(app);
 }
 
@@ -534,6 +608,7 @@ int main(void)
         cmocka_unit_test(test_flag_optimum_and_detour),
         cmocka_unit_test(test_path_when_strayed),
         cmocka_unit_test(test_keys_level),
+        cmocka_unit_test(test_objectives_on_free_tiles),
         cmocka_unit_test(test_tutorial),
         cmocka_unit_test(test_time_limit),
         cmocka_unit_test(test_safety_hud),

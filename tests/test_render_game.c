@@ -140,6 +140,19 @@ static void test_flag(void **state)
     assert_int_equal(v->nobjects, 1);
     assert_int_equal(v->objects[0].kind, HOL_APP_OBJ_FLAG);
     assert_int_equal(shot("game_flag", 0, img), 0);
+    /* the same level with the poles cue off: the flag stands, the guide
+     * pole over it is gone (and only a pole's worth of pixels changes) */
+    static uint8_t img2[W * H * 4];
+    L.cues = HOL_CUE_ALL & ~HOL_CUE_POLES;
+    start(&L);
+    step(1, 0, 0, 0, 0);
+    assert_int_equal(v->nobjects, 1);
+    assert_int_equal(shot("game_flag_no_pole", 0, img2), 0);
+    int differ = 0;
+    for (int i = 0; i < W * H; i++)
+        differ += memcmp(img + 4 * i, img2 + 4 * i, 3) != 0;
+    printf("    poles cue off: %d of %d pixels change\n", differ, W * H);
+    assert_true(differ > 300 && differ < W * H / 10);
 }
 
 /* Two keys (north and east) and the chest (south): looking north shows a

@@ -59,7 +59,8 @@ static const char *const play_usage =
     "  --size WxH      window size (default 960x720)\n"
     "  --no-gamepad    do not use game controllers\n"
     "\n"
-    "At the end it prints 'level NAME STATE steps S optimum O tile ADDR cell C,R'.\n"
+    "At the end it prints 'level NAME STATE steps S optimum O tile ADDR cell C,R'\n"
+    "(STATE playing, done, timeout at the level's time limit, or quit).\n"
     "Exit status: 0 ok, 1 failure, 2 bad input.\n";
 
 static const char *const replay_usage =
@@ -93,7 +94,7 @@ static void print_end(const session *s)
     const hol_app_view *v = hol_app_get_view(s->app);
     static const char *const st[] = {"idle", "playing", "done", "quit"};
     printf("level %s %s steps %d optimum %d tile %s cell %d,%d\n", s->levels[s->cur].name,
-           st[v->state], v->hud.steps, v->hud.optimum, v->hud.address, v->user.col,
+           v->hud.timed_out ? "timeout" : st[v->state], v->hud.steps, v->hud.optimum, v->hud.address, v->user.col,
            v->user.row);
 }
 

@@ -109,7 +109,7 @@ int session_parse_level(const char *text, size_t len, hol_app_level *lvl, char *
      * objective and placement was given */
     int flag_lo = 0, flag_hi = 0, keys_n = 0, keys_lo = 0, keys_hi = 0, chest_lo = 0,
         chest_hi = 0;
-    long flag_line = 0, keys_line = 0, chest_line = 0, place_line[HOL_WORLD_MAX_PLACES];
+    long flag_line = 0, keys_line = 0, chest_line = 0, place_line[HOL_APP_MAX_PLACES];
     const char *p = text, *end = text + len;
     while (p < end) {
         const char *nl = memchr(p, '\n', (size_t)(end - p));
@@ -264,9 +264,9 @@ int session_parse_level(const char *text, size_t len, hol_app_level *lvl, char *
                              lineno, f[2], place_line[k]);
                     return 1;
                 }
-            if (L.nplaces >= HOL_WORLD_MAX_PLACES) {
+            if (L.nplaces >= HOL_APP_MAX_PLACES) {
                 snprintf(err, err_cap, "line %ld: more than %d placements", lineno,
-                         HOL_WORLD_MAX_PLACES);
+                         HOL_APP_MAX_PLACES);
                 return 1;
             }
             place_line[L.nplaces] = lineno;
@@ -673,9 +673,19 @@ long session_read_header(char *const *lines, const size_t *lens, long nlines,
         }
         char perr[256];
         if (session_parse_level(L->text, L->len, &L->lvl, perr, sizeof perr)) {
-            /* name the recording's line: the level's line N is line first + N - 1 */
+            /* name the recording's lines: the level's line N is line
+             * first + N, also where the message names another line (a
+             * conflict: "... (line M)", "... placed on line M") */
             long ln = strtol(perr + 5, NULL, 10);
             const char *msg = strchr(perr, ':');
+            char *other = strstr(perr, " (line ");
+            if (other) {
+                long m = strtol(other + 7, NULL, 10);
+                snprintf(other, sizeof perr - (size_t)(other - perr), " (line %ld)", first + m);
+            } else if ((other = strstr(perr, " on line "))) {
+                long m = strtol(other + 9, NULL, 10);
+                snprintf(other, sizeof perr - (size_t)(other - perr), " on line %ld", first + m);
+            }
             snprintf(err, err_cap, "line %ld: level '%.40s'%s", first + ln, L->name,
                      msg ? msg : perr);
             return 0;
