@@ -40,7 +40,8 @@ XR_LIBS := $(if $(filter 1,$(XR)),-lopenxr_loader -lGL -lX11)
 ifeq ($(XR),1)
 $(BUILD)/platform/cli/cmd_xr.o: override CFLAGS += -DHOL_XR
 endif
-HID_SRC  := platform/hid/hol_hid_desc.c platform/hid/hol_hid_pad.c platform/hid/hol_hid_link.c
+HID_SRC  := platform/hid/hol_hid_desc.c platform/hid/hol_hid_pad.c platform/hid/hol_hid_link.c \
+            platform/hid/hol_hid_script.c
 HID_DEV_SRC := platform/hid/hol_hid_dev.c
 # hidapi backend: hidraw (default, Linux hidraw nodes) or `make HID=libusb`
 # (libusb, where hidraw is not available; detaches the kernel driver).
