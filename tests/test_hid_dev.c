@@ -520,6 +520,7 @@ static void test_script_plays(void **state)
         play_frame(app, &l, f / 60.0, 0);
         assert_true(v->paused);
         assert_true(dev.handle == NULL && dev.lost);
+        assert_string_equal(v->hud.status, "Controller lost");
     }
     assert_true(v->hud.elapsed_s == clock);
     int back = -1;
