@@ -304,12 +304,9 @@ static void test_link_merge(void **state)
     assert_true(io.move[1] == 0.5f);
 }
 
-/* The pad walks: the left stick held left, through the device layer, the
- * link and the app step, crosses into the cell west (a room step); an
- * unplug pauses the app (the level clock stops); the keyboard resumes. */
-static void test_stick_walks_and_unplug_pauses(void **state)
+/* An app playing an explore level (seed 4, every cue). */
+static hol_app *explore_app(void)
 {
-    (void)state;
     hol_app *app;
     hol_app_desc ad;
     memset(&ad, 0, sizeof ad);
@@ -319,6 +316,31 @@ static void test_stick_walks_and_unplug_pauses(void **state)
     L.seed = 4;
     L.cues = HOL_CUE_ALL;
     assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    return app;
+}
+
+/* One frame of play's loop with no key: poll the pad, merge, step; the
+ * room steps taken. */
+static int play_frame(hol_app *app, hol_hid_link *l, double t)
+{
+    hol_input in, pad;
+    memset(&in, 0, sizeof in);
+    memset(&pad, 0, sizeof pad);
+    in.time_s = pad.time_s = t;
+    in.flags = HOL_INPUT_FOCUSED;
+    hol_err e = hol_hid_dev_poll(&dev, &pad);
+    hol_hid_link_merge(l, e, dev.lost, &pad, 0, &in);
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    return hol_app_get_events(app)->nsteps;
+}
+
+/* The pad walks: the left stick held left, through the device layer, the
+ * link and the app step, crosses into the cell west (a room step); an
+ * unplug pauses the app (the level clock stops); the keyboard resumes. */
+static void test_stick_walks_and_unplug_pauses(void **state)
+{
+    (void)state;
+    hol_app *app = explore_app();
     fake.present = 1;
     assert_int_equal(hol_hid_dev_open_first(&dev), HOL_OK);
     hol_hid_link l;
@@ -326,17 +348,8 @@ static void test_stick_walks_and_unplug_pauses(void **state)
     queue_report(1); /* left stick full left (and button 1): strafe west */
     double t = 0;
     int steps = 0;
-    for (int f = 0; f < 120; f++, t += 1.0 / 60) {
-        hol_input in, pad;
-        memset(&in, 0, sizeof in);
-        memset(&pad, 0, sizeof pad);
-        in.time_s = pad.time_s = t;
-        in.flags = HOL_INPUT_FOCUSED;
-        hol_err e = hol_hid_dev_poll(&dev, &pad);
-        hol_hid_link_merge(&l, e, dev.lost, &pad, 0, &in);
-        assert_int_equal(hol_app_step(app, &in), HOL_OK);
-        steps += hol_app_get_events(app)->nsteps;
-    }
+    for (int f = 0; f < 120; f++, t += 1.0 / 60)
+        steps += play_frame(app, &l, t);
     const hol_app_view *v = hol_app_get_view(app);
     assert_true(steps >= 1);
     assert_int_equal(v->user.col, 0); /* walked a cell west */
@@ -345,16 +358,8 @@ static void test_stick_walks_and_unplug_pauses(void **state)
     /* unplug: paused, the clock stops */
     fake.fail_reads = 1;
     double clock = v->hud.elapsed_s;
-    for (int f = 0; f < 30; f++, t += 1.0 / 60) {
-        hol_input in, pad;
-        memset(&in, 0, sizeof in);
-        memset(&pad, 0, sizeof pad);
-        in.time_s = pad.time_s = t;
-        in.flags = HOL_INPUT_FOCUSED;
-        hol_err e = hol_hid_dev_poll(&dev, &pad);
-        hol_hid_link_merge(&l, e, dev.lost, &pad, 0, &in);
-        assert_int_equal(hol_app_step(app, &in), HOL_OK);
-    }
+    for (int f = 0; f < 30; f++, t += 1.0 / 60)
+        play_frame(app, &l, t);
     assert_true(v->paused);
     assert_true(v->hud.elapsed_s == clock);
     /* a key: playing again */
@@ -470,19 +475,6 @@ static void test_script_parse(void **state)
     assert_int_equal(script.n, 0);
 }
 
-/* One frame of play's loop on the scripted pad: poll, merge, step. */
-static void play_frame(hol_app *app, hol_hid_link *l, double t, int key)
-{
-    hol_input in, pad;
-    memset(&in, 0, sizeof in);
-    memset(&pad, 0, sizeof pad);
-    in.time_s = pad.time_s = t;
-    in.flags = HOL_INPUT_FOCUSED;
-    hol_err e = hol_hid_dev_poll(&dev, &pad);
-    hol_hid_link_merge(l, e, dev.lost, &pad, key, &in);
-    assert_int_equal(hol_app_step(app, &in), HOL_OK);
-}
-
 /* The same device layer on the script: connect, the stick walks a room
  * step, the unplug pauses (the clock stops, no crash, polls keep
  * failing), the replug is found by re-enumeration within a second and
@@ -492,15 +484,7 @@ static void test_script_plays(void **state)
     (void)state;
     const char *t = asus_script();
     assert_int_equal(hol_hid_script_parse(&script, t, strlen(t), NULL), HOL_OK);
-    hol_app *app;
-    hol_app_desc ad;
-    memset(&ad, 0, sizeof ad);
-    assert_int_equal(hol_app_create(&ad, &app), HOL_OK);
-    hol_app_level L;
-    memset(&L, 0, sizeof L);
-    L.seed = 4;
-    L.cues = HOL_CUE_ALL;
-    assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    hol_app *app = explore_app();
     assert_int_equal(hol_hid_dev_open_backend(&dev, hol_hid_script_backend(&script), 0),
                      HOL_OK);
     assert_int_equal(dev.info.vid, asus_vid);
@@ -509,7 +493,7 @@ static void test_script_plays(void **state)
     const hol_app_view *v = hol_app_get_view(app);
     int f = 0;
     for (; f < 120; f++) /* 0 .. 2 s */
-        play_frame(app, &l, f / 60.0, 0);
+        play_frame(app, &l, f / 60.0);
     assert_true(v->hud.steps >= 1);
     assert_int_equal(v->user.col, 0); /* walked a cell west */
     assert_int_equal(v->user.row, 1);
@@ -517,7 +501,7 @@ static void test_script_plays(void **state)
     double clock = v->hud.elapsed_s;
     assert_true(clock > 1.9);
     for (; f < 210; f++) { /* 2 .. 3.5 s: unplugged */
-        play_frame(app, &l, f / 60.0, 0);
+        play_frame(app, &l, f / 60.0);
         assert_true(v->paused);
         assert_true(dev.handle == NULL && dev.lost);
         assert_string_equal(v->hud.status, "Controller lost");
@@ -525,7 +509,7 @@ static void test_script_plays(void **state)
     assert_true(v->hud.elapsed_s == clock);
     int back = -1;
     for (; f < 330; f++) { /* 3.5 .. 5.5 s: plugged back */
-        play_frame(app, &l, f / 60.0, 0);
+        play_frame(app, &l, f / 60.0);
         if (back < 0 && !v->paused)
             back = f;
     }
