@@ -205,32 +205,20 @@ static hol_err hol__parse_header(const void *buf, size_t len, hol__image *im,
                                  int sum, char *msg, size_t cap)
 {
     const uint8_t *p = buf;
-    if (!buf || len < 12)
-        return hol__say(msg, cap, HOL_ECORRUPT,
-                        "truncated: %llu bytes, a world image has at least %llu",
-                        (unsigned long long)len, HOL__HDR + 8);
-    if (memcmp(p, HOL__MAGIC, 8))
-        return hol__say(msg, cap, HOL_ECORRUPT, "not a holonomy world image%.0llu%.0llu",
-                        0, 0);
-    uint32_t version = hol__get32(p + 8);
-    if (version != HOL__VERSION)
-        return hol__say(msg, cap, HOL_EVERSION,
-                        "format version %llu, this build reads version %llu",
-                        version, HOL__VERSION);
+    uint64_t expect = 0;
+    hol_err err = hol_world_image_size(buf, len, &expect, msg, cap); /* magic, version */
+    if (err)
+        return err;
     if (len < HOL__HDR + 8)
         return hol__say(msg, cap, HOL_ECORRUPT,
                         "truncated: %llu bytes, a world image has at least %llu",
                         (unsigned long long)len, HOL__HDR + 8);
-    if (hol__get32(p + 12) != HOL__REC)
-        return hol__say(msg, cap, HOL_ECORRUPT, "record size %llu, expected %llu",
-                        hol__get32(p + 12), HOL__REC);
     im->p = p;
     im->len = len;
     im->seed = hol__get64(p + 16);
     im->radius = hol__get32(p + 24);
     im->count = hol__get32(p + 28);
     im->stamp = hol__get32(p + 32);
-    uint64_t expect = HOL__HDR + (uint64_t)im->count * HOL__REC + 8;
     if ((uint64_t)len < expect)
         return hol__say(msg, cap, HOL_ECORRUPT,
                         "truncated: %llu bytes, the header promises %llu",

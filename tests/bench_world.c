@@ -13,8 +13,10 @@
  *    capacity; then the store filled to the eviction threshold and the cost
  *    per update while the incremental eviction sweep runs.
  */
+#define _GNU_SOURCE
 #include <stdint.h>
 #include <stdio.h>
+#include <sys/resource.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
@@ -84,11 +86,34 @@ static void step(hol_room *room, int home)
     }
 }
 
+/* The timer's own noise on this machine: a fixed computation (about 20 us,
+ * no memory beyond the cache, no system call) timed the same way as the
+ * updates, as often. Its maximum is what the machine adds (a virtual CPU
+ * descheduled by the host counts as running time), not the code. */
+static void control_noise(int n)
+{
+    static double c[50000];
+    volatile uint64_t sink = 0;
+    for (int i = 0; i < n; i++) {
+        double a = now();
+        uint64_t x = (uint64_t)i + 1;
+        for (int k = 0; k < 6000; k++)
+            x = x * 6364136223846793005ull + 1442695040888963407ull;
+        sink += x;
+        c[i] = (now() - a) * 1e6;
+    }
+    (void)sink;
+    qsort(c, (size_t)n, sizeof c[0], cmp_double);
+    printf("timer noise (control): a fixed %.1f us computation timed %d times: p99 %.1f us, "
+           "max %.1f us\n", c[n / 2], n, c[n * 99 / 100], c[n - 1]);
+}
+
 int main(void)
 {
     enum { STEPS = 50000 };
     static double t[STEPS];
     printf("== world (hol_world): WFC population, radius 4, default capacity\n");
+    control_noise(STEPS);
 
     /* 1 + 2: fill after each step, for a walk that stays near O (home 30%)
      * and one that explores outwards (home 10%) */
@@ -99,14 +124,37 @@ int main(void)
         hol_world_update(w, &room);
         hol_world_stats s0, s1;
         hol_world_get_stats(w, &s0);
-        double total = 0;
-        int maxd = 0;
+        double total = 0, worst = 0, worst_per_tile = 0, worst_clean = 0;
+        long worst_faults = 0, worst_switches = 0;
+        int maxd = 0, worst_tiles = 0, max_tiles = 0;
         long sum_d = 0;
         for (int i = 0; i < STEPS; i++) {
             step(&room, homes[h]);
+            hol_world_stats sa, sb;
+            hol_world_get_stats(w, &sa);
+            struct rusage ra, rb;
+            getrusage(RUSAGE_THREAD, &ra);
             double a = now();
             hol_err err = hol_world_update(w, &room);
             double b = now();
+            getrusage(RUSAGE_THREAD, &rb);
+            hol_world_get_stats(w, &sb);
+            long faults = (rb.ru_minflt - ra.ru_minflt) + (rb.ru_majflt - ra.ru_majflt);
+            long switches = (rb.ru_nivcsw - ra.ru_nivcsw) + (rb.ru_nvcsw - ra.ru_nvcsw);
+            int nt = (int)(sb.tiles_collapsed - sa.tiles_collapsed);
+            double us = (b - a) * 1e6;
+            if (us > worst) {
+                worst = us;
+                worst_tiles = nt;
+                worst_faults = faults;
+                worst_switches = switches;
+            }
+            if (faults == 0 && switches == 0 && us > worst_clean)
+                worst_clean = us;
+            if (nt > max_tiles)
+                max_tiles = nt;
+            if (nt >= 8 && us / nt > worst_per_tile)
+                worst_per_tile = us / nt;
             if (err) {
                 fprintf(stderr, "bench_world: update failed: %s\n", hol_err_str(err));
                 return 1;
@@ -128,6 +176,12 @@ int main(void)
                total / STEPS * 1e6, t[STEPS / 2], t[STEPS * 99 / 100], t[STEPS - 1]);
         printf("  %.2f new tiles per step; %.2f us per generated tile (all update time / tiles)\n",
                (double)tiles / STEPS, total * 1e6 / (double)tiles);
+        printf("  the slowest update generated %d tiles (%.1f us, %ld page faults, %ld context "
+               "switches during it); the most tiles one step generated: %d; the dearest tile "
+               "of an update with 8 or more: %.1f us\n",
+               worst_tiles, worst, worst_faults, worst_switches, max_tiles, worst_per_tile);
+        printf("  the slowest update without a page fault or a context switch: %.1f us "
+               "(target < 500 us)\n", worst_clean);
         printf("  backtracks per 1000 tiles: %.3f (%llu in %llu tiles); store %u tiles\n",
                tiles ? 1000.0 * (double)(s1.backtracks - s0.backtracks) / (double)tiles : 0.0,
                (unsigned long long)(s1.backtracks - s0.backtracks),

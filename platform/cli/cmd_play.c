@@ -231,25 +231,9 @@ int cli_cmd_play(int argc, char **argv)
     memset(&in_lines, 0, sizeof in_lines);
     long in_first = 0;
     if (input_path) {
-        int st = read_lines(cmd, input_path, &in_lines);
-        if (st) {
-            free_lines(&in_lines);
+        int st = read_input_lines(cmd, input_path, &in_lines, &in_first);
+        if (st)
             return st;
-        }
-        /* a recording: skip its header */
-        if (in_lines.n && !strncmp(in_lines.line[0], "holonomy-rec ", 13)) {
-            static session_level skip[SESSION_MAX_LEVELS];
-            int ns;
-            char err[256];
-            in_first = session_read_header(in_lines.line, in_lines.len, in_lines.n, skip, &ns,
-                                           err, sizeof err);
-            if (!in_first) {
-                cli_error(cmd, 0, "%.200s: %s", input_path, err);
-                free_lines(&in_lines);
-                return CLI_EXIT_USAGE;
-            }
-            in_first--;
-        }
     }
     char msg[256];
     hol_x11 xw;

@@ -135,24 +135,10 @@ int cli_cmd_xr(int argc, char **argv)
     hol_input *script = NULL;
     long nscript = 0;
     if (input_path) {
-        int rs = read_lines(cmd, input_path, &fl);
-        if (rs) {
-            free_lines(&fl);
-            return rs;
-        }
         long first = 0;
-        if (fl.n && !strncmp(fl.line[0], "holonomy-rec ", 13)) {
-            static session_level skip[SESSION_MAX_LEVELS];
-            int ns;
-            char err[256];
-            first = session_read_header(fl.line, fl.len, fl.n, skip, &ns, err, sizeof err);
-            if (!first) {
-                cli_error(cmd, 0, "%.200s: %s", input_path, err);
-                free_lines(&fl);
-                return CLI_EXIT_USAGE;
-            }
-            first--;
-        }
+        int rs = read_input_lines(cmd, input_path, &fl, &first);
+        if (rs)
+            return rs;
         script = calloc((size_t)(fl.n - first > 0 ? fl.n - first : 1), sizeof *script);
         if (!script) {
             free_lines(&fl);

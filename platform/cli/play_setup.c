@@ -48,6 +48,30 @@ int read_lines(const char *cmd, const char *path, file_lines *fl)
     return 0;
 }
 
+int read_input_lines(const char *cmd, const char *path, file_lines *fl, long *out_first)
+{
+    *out_first = 0;
+    int st = read_lines(cmd, path, fl);
+    if (st) {
+        free_lines(fl);
+        return st;
+    }
+    /* a recording: skip its header */
+    if (fl->n && !strncmp(fl->line[0], "holonomy-rec ", 13)) {
+        static session_level skip[SESSION_MAX_LEVELS];
+        int ns;
+        char err[256];
+        long first = session_read_header(fl->line, fl->len, fl->n, skip, &ns, err, sizeof err);
+        if (!first) {
+            cli_error(cmd, 0, "%.200s: %s", path, err);
+            free_lines(fl);
+            return CLI_EXIT_USAGE;
+        }
+        *out_first = first - 1;
+    }
+    return 0;
+}
+
 void free_lines(file_lines *fl)
 {
     free(fl->data);

@@ -34,6 +34,10 @@ typedef struct file_lines {
 /* 0 ok, else the exit status (reported). */
 int read_lines(const char *cmd, const char *path, file_lines *fl);
 void free_lines(file_lines *fl);
+/* read_lines, then, when the file is a recording, its header skipped:
+ * *out_first is the first input line. 0 ok, else the exit status (reported;
+ * fl freed). */
+int read_input_lines(const char *cmd, const char *path, file_lines *fl, long *out_first);
 /* 0 ok, 1 reported (bad record, or time going back from *prev_t). */
 int parse_input_line(const char *cmd, const file_lines *fl, long k, hol_input *in,
                      double *prev_t);
