@@ -136,9 +136,10 @@ $(BENCH_RENDER_BIN): $(BUILD)/bench/%: tests/%.c $(PLAT_OBJ) $(RENDER_LIB) $(COR
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) -DNDEBUG -o $@ $< $(PLAT_OBJ) $(RENDER_LIB) $(CORE_LIB) $(LDFLAGS) $(RENDER_LIBS) $(LDLIBS)
 
-$(BUILD)/bench/bench_hid: tests/bench_hid.c tests/hid_samples.h $(HID_SRC)
+$(BUILD)/bench/bench_hid: tests/bench_hid.c tests/hid_samples.h $(HID_SRC) $(HID_DEV_SRC)
 	@mkdir -p $(dir $@)
-	$(CC) $(CSTD) $(WARN) -O2 -DNDEBUG -D_DEFAULT_SOURCE -o $@ $< $(HID_SRC) $(LDLIBS)
+	$(CC) $(CSTD) $(WARN) -O2 -DNDEBUG -D_DEFAULT_SOURCE -o $@ $< $(HID_SRC) $(HID_DEV_SRC) \
+	  $(HID_LIBS) $(LDLIBS)
 
 $(BUILD)/bench/%: tests/%.c $(CORE_SRC)
 	@mkdir -p $(dir $@)
