@@ -19,7 +19,6 @@
 #include "../file/hol_file.h"
 #include "../hid/hol_hid_dev.h"
 #include "../hid/hol_hid_link.h"
-#include "../hid/hol_hid_script.h"
 #include "../image/hol_png_file.h"
 #include "../osmesa/hol_osmesa.h"
 #include "cli.h"
@@ -116,26 +115,6 @@ static float clamp1(double v)
     return (float)(v < -1 ? -1 : v > 1 ? 1 : v);
 }
 
-/* The --gamepad-replay script into *sc. 0 ok, else the exit status. */
-static int load_pad_script(const char *cmd, const char *path, hol_hid_script *sc)
-{
-    uint8_t *data = NULL;
-    size_t size = 0;
-    int st = cli_read_file(cmd, "gamepad script", path, (size_t)64 << 20, &data, &size);
-    if (st)
-        return st;
-    long line = 0;
-    hol_err err = hol_hid_script_parse(sc, (const char *)data, size, &line);
-    free(data);
-    if (err) {
-        cli_error(cmd, line, "'%.200s': %s", path,
-                  err == HOL_ENOMEM ? "too many events or report bytes"
-                                    : "not a gamepad script event (README: Gamepads)");
-        return CLI_EXIT_USAGE;
-    }
-    return 0;
-}
-
 int cli_cmd_play(int argc, char **argv)
 {
     const char *cmd = "play";
@@ -211,7 +190,7 @@ int cli_cmd_play(int argc, char **argv)
     /* the scripted controller, loaded before anything opens */
     static hol_hid_script script;
     if (pad_script) {
-        int st = load_pad_script(cmd, pad_script, &script);
+        int st = play_load_pad_script(cmd, pad_script, &script);
         if (st)
             return st;
     }
