@@ -7,6 +7,8 @@
 #   make bench      build with optimisation and print the benchmark figures
 #   make san        run the unit tests under AddressSanitizer + UBSan
 #   make run        build and play in a desktop window (RUN_ARGS: play's options)
+#   make xr         build/xr/holonomy with `holonomy xr` (XR=1 in its own folder)
+#   make xr-test    the headset against Monado in a chroot (root; see README)
 #   make quest      the Quest APK (needs NDK= and OPENXR_LOADER=; see README)
 #   make clean      remove build outputs
 #
@@ -35,7 +37,8 @@ PLAT_SRC := $(wildcard platform/file/*.c platform/image/*.c)
 # The headset (OpenXR): the pure room/lifecycle part always, the session
 # only with `make XR=1` (CI builds and runs it in the Monado chroot).
 XR      ?= 0
-XR_SRC  := platform/openxr/hol_xr_room.c $(if $(filter 1,$(XR)),platform/openxr/hol_xr.c)
+XR_PURE_SRC := platform/openxr/hol_xr_room.c platform/openxr/hol_xr_bind.c
+XR_SRC  := $(XR_PURE_SRC) $(if $(filter 1,$(XR)),$(filter-out $(XR_PURE_SRC),$(wildcard platform/openxr/*.c)))
 XR_LIBS := $(if $(filter 1,$(XR)),-lopenxr_loader -lGL -lX11)
 ifeq ($(XR),1)
 $(BUILD)/platform/cli/cmd_xr.o: override CFLAGS += -DHOL_XR
@@ -84,7 +87,7 @@ DEB_PACKAGES := make gcc clang libcmocka-dev libosmesa6-dev libegl-dev \
 APT_LOCK_WAIT ?= 120
 APT_GET = $$SUDO env DEBIAN_FRONTEND=noninteractive apt-get -o DPkg::Lock::Timeout=$(APT_LOCK_WAIT)
 
-.PHONY: all test purity unit render-test cli-test fuzz-replay fuzz bench san clean deps \
+.PHONY: all test purity unit render-test cli-test fuzz-replay fuzz bench san clean deps xr \
         deps-cross check-clang cross-test run quest quest-help deps-quest quest-check check-hid-libusb deps-xr xr-test soak
 
 all: $(BUILD)/holonomy
@@ -118,10 +121,10 @@ $(BUILD)/tests/test_level: tests/test_level.c $(LEVEL_SRC) $(CORE_LIB)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) -o $@ $< $(LEVEL_SRC) $(CORE_LIB) $(LDFLAGS) -lcmocka $(LDLIBS)
 
-# The headset layer's pure part (room in the stage, lifecycle).
-$(BUILD)/tests/test_xr_room: tests/test_xr_room.c platform/openxr/hol_xr_room.c platform/openxr/hol_xr_room.h $(CORE_LIB)
+# The headset layer's pure part (room in the stage, fade, lifecycle, bindings).
+$(BUILD)/tests/test_xr_%: tests/test_xr_%.c $(XR_PURE_SRC) $(wildcard platform/openxr/*.h) $(CORE_LIB)
 	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS) -o $@ $< platform/openxr/hol_xr_room.c $(CORE_LIB) $(LDFLAGS) -lcmocka $(LDLIBS)
+	$(CC) $(CFLAGS) -o $@ $< $(XR_PURE_SRC) $(CORE_LIB) $(LDFLAGS) -lcmocka $(LDLIBS)
 
 # The device layer against a scripted hidapi (tests/fake_hidapi): no device here.
 $(BUILD)/tests/test_hid_dev: tests/test_hid_dev.c tests/hid_samples.h tests/fake_hidapi/hidapi/hidapi.h $(HID_SRC) $(HID_DEV_SRC) $(CORE_LIB)
@@ -252,8 +255,17 @@ soak: $(CORE_LIB)
 deps-xr:
 	@$(MAKE) -s deps DEB_PACKAGES="debootstrap"
 
-xr-test: deps-xr
-	@sh tests/xr/run.sh
+# The headset build in its own folder (XR=1 objects never mix with the
+# plain build's: cmd_xr.o differs by -DHOL_XR).
+xr:
+	$(MAKE) XR=1 BUILD=$(BUILD)/xr $(BUILD)/xr/holonomy
+
+# The host's half: `holonomy render` of the read-back eye and the comparison.
+$(BUILD)/xr_png_diff: tests/xr/png_diff.c $(PLAT_OBJ) $(RENDER_LIB) $(CORE_LIB)
+	$(CC) $(CFLAGS) -o $@ $< $(PLAT_OBJ) $(RENDER_LIB) $(CORE_LIB) $(LDFLAGS) -lz $(LDLIBS)
+
+xr-test: deps-xr $(BUILD)/holonomy $(BUILD)/xr_png_diff
+	@HOLONOMY=$(BUILD)/holonomy PNG_DIFF=$(BUILD)/xr_png_diff sh tests/xr/run.sh
 
 # The libusb hidapi backend builds too (CI builds it beside the default).
 check-hid-libusb:

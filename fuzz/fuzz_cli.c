@@ -3,9 +3,11 @@
  *
  * Input: the first byte picks the parser, the rest is its text.
  * - 0: an option value (NUL-terminated at the first NUL): cli_parse_u64
- *   (seeds; decimal or 0x hex) and cli_parse_count. Checks: accepted text
- *   is all digits (or 0x and hex digits) and prints back to the same value;
- *   refused text leaves nothing half-parsed.
+ *   (seeds; decimal or 0x hex), cli_parse_count and cli_parse_doubles (lists
+ *   of numbers). Checks: accepted text is all digits (or 0x and hex digits)
+ *   and prints back to the same value; a list is accepted only with as many
+ *   values as it has commas plus one, all finite; refused text leaves
+ *   nothing half-parsed.
  * - 1: a level file (session_parse_level). Checks: accepted, the level's
  *   fields are in range (mode, 1..5 keys, time limit, stages, at most 32
  *   placements); refused, the message names a line of the file.
@@ -15,6 +17,7 @@
 #define _GNU_SOURCE
 #include <ctype.h>
 #include <inttypes.h>
+#include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -41,6 +44,25 @@ static void check_number(const char *s)
     if (c) {
         for (const char *p = s; *p; p++)
             CHECK(isdigit((unsigned char)*p));
+    }
+    /* lists of numbers (--eye X,Y,Z, --orient, --tan): accepted for at
+     * most one n, the number of commas plus one, every value finite; a
+     * refusal leaves out untouched */
+    int commas = 0;
+    for (const char *p = s; *p; p++)
+        commas += *p == ',';
+    for (int n = 1; n <= 5; n++) {
+        double out[5];
+        for (int i = 0; i < 5; i++)
+            out[i] = -1234.5;
+        if (cli_parse_doubles(s, out, n)) {
+            CHECK(commas == n - 1);
+            for (int i = 0; i < n; i++)
+                CHECK(isfinite(out[i]));
+        } else {
+            for (int i = 0; i < 5; i++)
+                CHECK(out[i] == -1234.5);
+        }
     }
 }
 

@@ -27,6 +27,8 @@ typedef hol_gl_proc (*hol_gl_getproc)(const char *name);
     X(PFNGLATTACHSHADERPROC, AttachShader, "glAttachShader") \
     X(PFNGLBINDBUFFERPROC, BindBuffer, "glBindBuffer") \
     X(PFNGLBINDVERTEXARRAYPROC, BindVertexArray, "glBindVertexArray") \
+    X(PFNGLBLENDCOLORPROC, BlendColor, "glBlendColor") \
+    X(PFNGLBLENDFUNCPROC, BlendFunc, "glBlendFunc") \
     X(PFNGLBUFFERDATAPROC, BufferData, "glBufferData") \
     X(PFNGLBUFFERSUBDATAPROC, BufferSubData, "glBufferSubData") \
     X(PFNGLCLEARPROC, Clear, "glClear") \

@@ -43,7 +43,8 @@ enum {
     HOL__PASS_ROOM = 1,
     HOL__PASS_TILE = 2,
     HOL__PASS_HAND = 3, /* the minimap on a quad in the hand (world space) */
-    HOL__PASS_HUD = 4
+    HOL__PASS_FADE = 4, /* the safety fade over the scene (blended) */
+    HOL__PASS_HUD = 5
 };
 enum { HOL__MODE_LIT = 0, HOL__MODE_ID = 1, HOL__MODE_FLAT = 2 };
 
@@ -426,6 +427,13 @@ static double hol__now(clockid_t id)
     return (double)ts.tv_sec * 1e3 + (double)ts.tv_nsec * 1e-6;
 }
 
+static void hol__fade_rgb(const hol_frame_desc *f, uint8_t out[3])
+{
+    static const uint8_t def[3] = HOL_RENDER_FADE_RGB;
+    int set = f->fade_rgb[0] || f->fade_rgb[1] || f->fade_rgb[2];
+    memcpy(out, set ? f->fade_rgb : def, 3);
+}
+
 /* Build the queue of a frame. */
 static hol_err hol__build(hol_render *r, const hol_frame_desc *f)
 {
@@ -531,7 +539,33 @@ static hol_err hol__build(hol_render *r, const hol_frame_desc *f)
         m[12] = (float)br->state.col + 0.5f;
         m[14] = (float)br->state.row + 0.5f;
     }
-    /* passes 3 and 4: the minimap (on the HUD or in the hand) and the text */
+    /* the fade: one screen quad, blended by the constant alpha f->fade */
+    if (f->fade > 0 && !(f->flags & HOL_RENDER_IDS)) {
+        uint8_t rgb[3];
+        hol__fade_rgb(f, rgb);
+        int64_t b = hol_mesh_reserve(&r->dyn, 4, 6);
+        if (b < 0)
+            return HOL_ENOMEM;
+        uint32_t i0 = r->dyn.ni;
+        static const float q[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+        for (int i = 0; i < 4; i++) {
+            hol_vertex *vx = &r->dyn.v[r->dyn.nv++];
+            memset(vx, 0, sizeof *vx);
+            vx->pos[0] = q[i][0];
+            vx->pos[1] = q[i][1];
+            memcpy(vx->rgba, rgb, 3);
+            vx->rgba[3] = 255;
+        }
+        static const uint32_t tri[6] = {0, 1, 2, 0, 2, 3};
+        for (int i = 0; i < 6; i++)
+            r->dyn.idx[r->dyn.ni++] = (uint32_t)b + tri[i];
+        hol__item *it = hol__push(r, HOL__PASS_FADE, i0, 6);
+        if (!it)
+            return HOL_ENOMEM;
+        it->key = (uint32_t)HOL__PASS_FADE << 24;
+        it->dyn = 1;
+    }
+    /* the minimap (on the HUD or in the hand) and the text */
     if ((f->flags & HOL_RENDER_MINIMAP) && !(f->flags & HOL_RENDER_NO_HUD)) {
         int hand = (f->flags & HOL_RENDER_MINIMAP_HAND) != 0;
         /* the map stays resident while its inputs stay the same */
@@ -610,6 +644,26 @@ hol_err hol_render_frame(hol_render *r, const hol_frame_desc *f,
     if (f->cam.width <= 0 || f->cam.height <= 0 || f->cam.width > maxw ||
         f->cam.height > maxh)
         return HOL_EARG;
+    if (f->fade >= 1 && !(f->flags & HOL_RENDER_IDS)) {
+        /* fully faded: the boundary colour alone, no view */
+        uint8_t rgb[3];
+        hol__fade_rgb(f, rgb);
+        r->gl.Viewport(0, 0, f->cam.width, f->cam.height);
+        r->gl.DepthMask(GL_TRUE);
+        r->gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        r->gl.StencilMask(0xff);
+        r->gl.ClearColor(rgb[0] / 255.0f, rgb[1] / 255.0f, rgb[2] / 255.0f, 1);
+        r->gl.ClearDepthf(1.0f);
+        r->gl.ClearStencil(HOL_VIEW_STENCIL_CLEAR);
+        r->gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+        r->gl.Finish();
+        if (out_stats) {
+            memset(out_stats, 0, sizeof *out_stats);
+            out_stats->cpu_ms = hol__now(CLOCK_PROCESS_CPUTIME_ID) - c0;
+            out_stats->wall_ms = hol__now(CLOCK_MONOTONIC) - w0;
+        }
+        return r->gl.GetError() == GL_NO_ERROR ? HOL_OK : HOL_EUNSUPPORTED;
+    }
     hol_err err = hol__build(r, f);
     if (err)
         return err;
@@ -707,7 +761,19 @@ hol_err hol_render_frame(hol_render *r, const hol_frame_desc *f,
                 r->gl.UniformMatrix4fv(r->u_vp, 1, GL_FALSE, vp);
                 r->gl.Uniform1i(r->u_mode, ids ? HOL__MODE_ID : HOL__MODE_FLAT);
                 break;
+            case HOL__PASS_FADE:
+                r->gl.Disable(GL_DEPTH_TEST);
+                r->gl.DepthMask(GL_FALSE);
+                r->gl.Disable(GL_STENCIL_TEST);
+                r->gl.UniformMatrix4fv(r->u_vp, 1, GL_FALSE, ident);
+                r->gl.UniformMatrix4fv(r->u_model, 1, GL_FALSE, ident);
+                r->gl.Uniform1i(r->u_mode, HOL__MODE_FLAT);
+                r->gl.Enable(GL_BLEND);
+                r->gl.BlendColor(0, 0, 0, (float)f->fade);
+                r->gl.BlendFunc(GL_CONSTANT_ALPHA, GL_ONE_MINUS_CONSTANT_ALPHA);
+                break;
             default:
+                r->gl.Disable(GL_BLEND);
                 r->gl.Disable(GL_DEPTH_TEST);
                 r->gl.DepthMask(GL_FALSE);
                 r->gl.Disable(GL_STENCIL_TEST);
@@ -748,6 +814,7 @@ hol_err hol_render_frame(hol_render *r, const hol_frame_desc *f,
         st.draw_calls++;
         st.triangles += it->count / 3;
     }
+    r->gl.Disable(GL_BLEND);
     r->gl.BindVertexArray(0);
     r->gl.Finish();
     st.cpu_ms = hol__now(CLOCK_PROCESS_CPUTIME_ID) - c0;

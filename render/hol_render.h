@@ -116,7 +116,16 @@ typedef struct hol_frame_desc {
     double hand_pos[3];
     double hand_orient[4];
     double hand_size;
+    /* Fade (the headset's safety boundary): the view is blended towards
+     * fade_rgb by `fade` in [0, 1] (0: no fade), the HUD text stays on top.
+     * At fade >= 1 the frame is fade_rgb alone: no view is built, so the eye
+     * may lie anywhere, even outside the room. fade_rgb all zero: the hedge
+     * green HOL_RENDER_FADE_RGB. */
+    double fade;
+    uint8_t fade_rgb[3];
 } hol_frame_desc;
+
+#define HOL_RENDER_FADE_RGB {56, 117, 61}
 
 typedef struct hol_render_stats {
     int draw_calls;
@@ -143,7 +152,8 @@ void hol_render_set_world(hol_render *r, struct hol_world *world);
 void hol_render_invalidate(hol_render *r);
 
 /* Render one eye into the current framebuffer (viewport = cam size).
- * Errors: HOL_EARG (eye not inside the user's cell, bad size),
+ * Errors: HOL_EARG (eye not inside the user's cell unless fade >= 1, bad
+ * size),
  * HOL_ENOMEM (the fixed stores overflowed). */
 hol_err hol_render_frame(hol_render *r, const hol_frame_desc *f,
                          hol_render_stats *out_stats);

@@ -114,4 +114,21 @@ chmod 0755 "$T"
 "$H" render --walk NE --eye 2.4,1.6,0.6 --yaw 135 --size 64x48 --hand 2.2,1.3,0.8 \
     --target Nrfl --out "$T/hand.png" || fail "--hand"
 [ -s "$T/hand.png" ] || fail "--hand wrote no picture"
+# the headset's form of the eye (--orient, --tan, as holonomy xr prints
+# it): yaw 20 and pitch -30 as a quaternion with the 90 degree field of
+# view's tangents give the same picture, byte for byte
+"$H" render --eye 1.4,1.6,1.3 --yaw 20 --pitch -30 --size 64x48 --out "$T/yp.png" ||
+    fail "render yaw/pitch"
+Q=$(awk 'BEGIN { y = 10 * atan2(0, -1) / 180; p = -15 * atan2(0, -1) / 180;
+    printf "%.17g,%.17g,%.17g,%.17g", cos(y) * sin(p), sin(y) * cos(p), -sin(y) * sin(p),
+    cos(y) * cos(p) }')
+"$H" render --eye 1.4,1.6,1.3 --orient "$Q" --tan -1.3333333333333333,1.3333333333333333,-1,1 \
+    --size 64x48 --out "$T/q.png" || fail "render --orient --tan"
+cmp -s "$T/yp.png" "$T/q.png" || fail "--orient/--tan differs from the same yaw and pitch"
+expect_usage --out "$T/q.png" --orient 0,0,0,1
+expect_usage --out "$T/q.png" --tan -1,1,-1,1
+expect_usage --out "$T/q.png" --orient 0,0,0,2 --tan -1,1,-1,1
+expect_usage --out "$T/q.png" --orient 0,0,1 --tan -1,1,-1,1
+expect_usage --out "$T/q.png" --orient 0,0,0,1 --tan 1,-1,-1,1
+expect_usage --out "$T/q.png" --orient 0,0,0,1 --tan -1,1,-1,1,0
 echo "cli_render: ok"

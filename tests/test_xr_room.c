@@ -8,6 +8,7 @@
 #include <stddef.h>
 #include <stdint.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include <cmocka.h>
 
@@ -109,6 +110,48 @@ static void test_bounds(void **state)
     assert_false(hol_xr_bounds_hold_room(4, 2.5f));
 }
 
+/* the fade's model: the floor distance beyond the inner square, by
+ * brute force over the square's edges, against hol_xr_fade */
+static double beyond(double x, double z, double m)
+{
+    double cx = x < m ? m : x > 3 - m ? 3 - m : x, cz = z < m ? m : z > 3 - m ? 3 - m : z;
+    double dx = x - cx, dz = z - cz;
+    return fabs(dx) > fabs(dz) ? fabs(dx) : fabs(dz); /* square distance */
+}
+
+static void test_fade(void **state)
+{
+    (void)state;
+    const double m = 0.15;
+    /* inside the inner square: no fade, anywhere, at any height */
+    for (double x = m; x <= 3 - m; x += 0.05)
+        for (double z = m; z <= 3 - m; z += 0.05) {
+            double e[2][3] = {{x, 1.7, z}, {x, 0.2, z}};
+            assert_true(hol_xr_fade(e, m) == 0);
+        }
+    /* beyond it: linear, complete HOL_XR_FADE_FULL inside the boundary */
+    uint64_t s = 3;
+    for (int i = 0; i < 2000; i++) {
+        double x = frand(&s) * 3.6 - 0.3, z = frand(&s) * 3.6 - 0.3;
+        double e[2][3] = {{x, 1.6, z}, {1.5, 1.6, 1.5}};
+        double want = beyond(x, z, m) / (m - HOL_XR_FADE_FULL);
+        want = want > 1 ? 1 : want;
+        assert_true(fabs(hol_xr_fade(e, m) - want) < 1e-9);
+        /* the larger of the two eyes, whichever eye it is */
+        double f[2][3] = {{1.5, 1.6, 1.5}, {x, 1.6, z}};
+        assert_true(fabs(hol_xr_fade(f, m) - want) < 1e-9);
+        /* an eye outside the room is fully faded */
+        if (x <= 0 || x >= 3 || z <= 0 || z >= 3)
+            assert_true(hol_xr_fade(e, m) == 1);
+    }
+    double edge[2][3] = {{HOL_XR_FADE_FULL, 1.6, 1.5}, {1.5, 1.6, 1.5}};
+    assert_true(hol_xr_fade(edge, m) == 1);
+    double half[2][3] = {{1.5, 1.6, 3 - (m + HOL_XR_FADE_FULL) / 2}, {1.5, 1.6, 1.5}};
+    assert_true(fabs(hol_xr_fade(half, m) - 0.5) < 1e-9);
+    double nan_eye[2][3] = {{NAN, 1.6, 1.5}, {1.5, 1.6, 1.5}};
+    assert_true(hol_xr_fade(nan_eye, m) == 1);
+}
+
 static void test_lifecycle(void **state)
 {
     (void)state;
@@ -133,13 +176,100 @@ static void test_lifecycle(void **state)
     }
 }
 
+/* a session's events through the state machine: (state, action) pairs,
+ * then what quitting does */
+static void run_events(hol_xr_life *l, const int (*ev)[2], int n)
+{
+    for (int i = 0; i < n; i++) {
+        assert_false(l->done);
+        assert_int_equal(hol_xr_life_event(l, ev[i][0]), ev[i][1]);
+    }
+}
+
+static void test_life_quit_by_the_app(void **state)
+{
+    (void)state;
+    hol_xr_life l;
+    memset(&l, 0, sizeof l);
+    static const int up[][2] = {{HOL_XR_STATE_IDLE, HOL_XR_DO_NOTHING},
+                                {HOL_XR_STATE_READY, HOL_XR_DO_BEGIN},
+                                {HOL_XR_STATE_SYNCHRONIZED, HOL_XR_DO_NOTHING},
+                                {HOL_XR_STATE_VISIBLE, HOL_XR_DO_NOTHING},
+                                {HOL_XR_STATE_FOCUSED, HOL_XR_DO_NOTHING}};
+    run_events(&l, up, 5);
+    assert_true(l.running && l.focused);
+    /* quitting while running asks the runtime, once */
+    assert_int_equal(hol_xr_life_quit(&l), HOL_XR_QUIT_REQUEST_EXIT);
+    assert_int_equal(hol_xr_life_quit(&l), HOL_XR_QUIT_NONE);
+    assert_false(l.done);
+    static const int down[][2] = {{HOL_XR_STATE_VISIBLE, HOL_XR_DO_NOTHING},
+                                  {HOL_XR_STATE_SYNCHRONIZED, HOL_XR_DO_NOTHING},
+                                  {HOL_XR_STATE_STOPPING, HOL_XR_DO_END},
+                                  {HOL_XR_STATE_IDLE, HOL_XR_DO_NOTHING},
+                                  {HOL_XR_STATE_EXITING, HOL_XR_DO_TEAR_DOWN}};
+    run_events(&l, down, 5);
+    assert_true(l.done);
+    assert_false(l.running || l.focused);
+}
+
+static void test_life_stopped_by_the_runtime(void **state)
+{
+    (void)state;
+    hol_xr_life l;
+    memset(&l, 0, sizeof l);
+    /* the headset taken off: STOPPING unasked ends the session and waits;
+     * READY begins it again (the app must not leave) */
+    static const int ev[][2] = {{HOL_XR_STATE_IDLE, HOL_XR_DO_NOTHING},
+                                {HOL_XR_STATE_READY, HOL_XR_DO_BEGIN},
+                                {HOL_XR_STATE_FOCUSED, HOL_XR_DO_NOTHING},
+                                {HOL_XR_STATE_VISIBLE, HOL_XR_DO_NOTHING},
+                                {HOL_XR_STATE_STOPPING, HOL_XR_DO_END},
+                                {HOL_XR_STATE_IDLE, HOL_XR_DO_NOTHING},
+                                {HOL_XR_STATE_READY, HOL_XR_DO_BEGIN},
+                                {HOL_XR_STATE_FOCUSED, HOL_XR_DO_NOTHING}};
+    run_events(&l, ev, 8);
+    assert_false(l.done);
+    assert_true(l.running && l.focused);
+    /* stopped again, then the user quits while idle: leave at once (no
+     * xrRequestExitSession without a running session) */
+    static const int ev2[][2] = {{HOL_XR_STATE_STOPPING, HOL_XR_DO_END},
+                                 {HOL_XR_STATE_IDLE, HOL_XR_DO_NOTHING}};
+    run_events(&l, ev2, 2);
+    assert_int_equal(hol_xr_life_quit(&l), HOL_XR_QUIT_LEAVE);
+    assert_true(l.done);
+    assert_int_equal(hol_xr_life_quit(&l), HOL_XR_QUIT_NONE);
+}
+
+static void test_life_loss(void **state)
+{
+    (void)state;
+    hol_xr_life l;
+    memset(&l, 0, sizeof l);
+    static const int ev[][2] = {{HOL_XR_STATE_READY, HOL_XR_DO_BEGIN},
+                                {HOL_XR_STATE_FOCUSED, HOL_XR_DO_NOTHING},
+                                {HOL_XR_STATE_LOSS_PENDING, HOL_XR_DO_TEAR_DOWN}};
+    run_events(&l, ev, 3);
+    assert_true(l.done);
+    assert_false(l.running);
+    assert_int_equal(hol_xr_life_quit(&l), HOL_XR_QUIT_NONE);
+    /* quitting before the session ever ran leaves at once */
+    memset(&l, 0, sizeof l);
+    assert_int_equal(hol_xr_life_event(&l, HOL_XR_STATE_IDLE), HOL_XR_DO_NOTHING);
+    assert_int_equal(hol_xr_life_quit(&l), HOL_XR_QUIT_LEAVE);
+    assert_true(l.done);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_default_placement),
         cmocka_unit_test(test_recentre),
         cmocka_unit_test(test_bounds),
+        cmocka_unit_test(test_fade),
         cmocka_unit_test(test_lifecycle),
+        cmocka_unit_test(test_life_quit_by_the_app),
+        cmocka_unit_test(test_life_stopped_by_the_runtime),
+        cmocka_unit_test(test_life_loss),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -5,6 +5,7 @@
 
 #include <ctype.h>
 #include <errno.h>
+#include <math.h>
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
@@ -189,6 +190,27 @@ int cli_budget_option(const char *cmd, int argc, char **argv, int *i,
         cli_error(cmd, 0, "--budget needs a positive node count; see --help");
         return -1;
     }
+    return 1;
+}
+
+int cli_parse_doubles(const char *s, double *out, int n)
+{
+    if (n < 1 || n > 16)
+        return 0;
+    double v[16];
+    const char *p = s;
+    for (int i = 0; i < n; i++) {
+        char *end;
+        errno = 0;
+        v[i] = strtod(p, &end);
+        if (end == p || errno || !isfinite(v[i]))
+            return 0;
+        if (i + 1 < n ? *end != ',' : *end != 0)
+            return 0;
+        p = end + 1;
+    }
+    for (int i = 0; i < n; i++)
+        out[i] = v[i];
     return 1;
 }
 

@@ -27,7 +27,7 @@ static const char *const render_usage =
     "                       [--size WxH] [--out FILE.png] [--tile-ids FILE]\n"
     "                       [--stats] [--euclidean] [--bare] [--fov DEG]\n"
     "                       [--frames N] [--seed S] [--hud] [--hand X,Y,Z]\n"
-    "                       [--target ADDR]\n"
+    "                       [--target ADDR] [--orient X,Y,Z,W --tan L,R,D,U]\n"
     "                       [--gl osmesa|egl] [--stereo IPD] [--window]\n"
     "                       [--keys SCRIPT]\n"
     "\n"
@@ -71,6 +71,11 @@ static const char *const render_usage =
     "                  (OpenGL ES 3 on EGL's surfaceless platform)\n"
     "  --target ADDR   an objective tile (repeatable, up to 8): guide pole,\n"
     "                  minimap marker, hot-cold colours\n"
+    "  --orient X,Y,Z,W with --tan L,R,D,U: the headset's form of the eye (as\n"
+    "                  'holonomy xr' prints it): orientation quaternion (view\n"
+    "                  to room; roll too) and the tangents of the field of\n"
+    "                  view's half-angles (L, D negative); --yaw, --pitch and\n"
+    "                  --fov are then ignored\n"
     "\n"
     "Floor outside the 3 x 3 room is never shown: 2 m hedges stand on the\n"
     "room boundary. Without --window, at least one of --out, --tile-ids,\n"
@@ -79,13 +84,7 @@ static const char *const render_usage =
 
 static int parse_double(const char *s, double *out)
 {
-    char *end;
-    errno = 0;
-    double v = strtod(s, &end);
-    if (end == s || *end || errno || !isfinite(v))
-        return 1;
-    *out = v;
-    return 0;
+    return !cli_parse_doubles(s, out, 1);
 }
 
 static int parse_int(const char *s, long lo, long hi, long *out)
@@ -102,16 +101,43 @@ static int parse_int(const char *s, long lo, long hi, long *out)
 /* "X,Y,Z" to three numbers; nonzero on failure. */
 static int parse_vec3(const char *s, double out[3])
 {
-    char buf[256];
-    if (strlen(s) >= sizeof buf)
-        return 1;
-    strcpy(buf, s);
-    char *p1 = strchr(buf, ','), *p2 = p1 ? strchr(p1 + 1, ',') : NULL;
-    if (!p1 || !p2)
-        return 1;
-    *p1 = *p2 = 0;
-    return parse_double(buf, &out[0]) || parse_double(p1 + 1, &out[1]) ||
-           parse_double(p2 + 1, &out[2]);
+    return !cli_parse_doubles(s, out, 3);
+}
+
+/* --orient and --tan: the headset form of the camera (hol_camera.has_pose),
+ * as `holonomy xr` prints an eye's view; 0 ok, else exit status 2 reported */
+static int parse_head_form(const char *cmd, const char *orient_s, const char *tan_s,
+                           hol_camera *cam)
+{
+    if (!orient_s && !tan_s)
+        return 0;
+    double q[4], t[4];
+    if (!orient_s || !tan_s) {
+        cli_error(cmd, 0, "--orient and --tan go together");
+        return CLI_EXIT_USAGE;
+    }
+    double n = 0;
+    if (cli_parse_doubles(orient_s, q, 4))
+        n = sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+    if (!(fabs(n - 1) < 1e-3)) {
+        cli_error(cmd, 0, "--orient '%.60s' is not a unit quaternion X,Y,Z,W", orient_s);
+        return CLI_EXIT_USAGE;
+    }
+    if (!cli_parse_doubles(tan_s, t, 4) || !(t[0] < t[1] && t[2] < t[3]) || fabs(t[0]) > 10 ||
+        fabs(t[1]) > 10 || fabs(t[2]) > 10 || fabs(t[3]) > 10) {
+        cli_error(cmd, 0,
+                  "--tan '%.60s' is not L,R,D,U (tangents of the half-angles, L < R, "
+                  "D < U, each within 10)", tan_s);
+        return CLI_EXIT_USAGE;
+    }
+    cam->has_pose = 1;
+    for (int k = 0; k < 4; k++)
+        cam->orient[k] = q[k] / n;
+    cam->tan_left = t[0];
+    cam->tan_right = t[1];
+    cam->tan_down = t[2];
+    cam->tan_up = t[3];
+    return 0;
 }
 
 /* Unit quaternion (x, y, z, w) turning +z towards dir (not vertical),
@@ -281,7 +307,7 @@ int cli_cmd_render(int argc, char **argv)
         return cli_finish_output(cmd);
     }
     const char *walk = "-", *eye_s = NULL, *out = NULL, *ids_path = NULL, *keyscript = NULL;
-    const char *hand_s = NULL;
+    const char *hand_s = NULL, *orient_s = NULL, *tan_s = NULL;
     double yaw = 0, pitch = -30, fov = 90, ipd = 0;
     long w = 640, h = 480, frames = 1;
     int stats = 0, flags = HOL_RENDER_NO_HUD, ntargets = 0, use_egl = 0, frames_set = 0;
@@ -291,6 +317,7 @@ int cli_cmd_render(int argc, char **argv)
         const char *a = argv[i];
         const char *val = i + 1 < argc ? argv[i + 1] : NULL;
         int takes = !strcmp(a, "--walk") || !strcmp(a, "--eye") || !strcmp(a, "--hand") ||
+                    !strcmp(a, "--orient") || !strcmp(a, "--tan") ||
                     !strcmp(a, "--yaw") || !strcmp(a, "--pitch") ||
                     !strcmp(a, "--size") || !strcmp(a, "--out") ||
                     !strcmp(a, "--tile-ids") || !strcmp(a, "--fov") ||
@@ -307,6 +334,10 @@ int cli_cmd_render(int argc, char **argv)
             eye_s = val;
         else if (!strcmp(a, "--hand"))
             hand_s = val;
+        else if (!strcmp(a, "--orient"))
+            orient_s = val;
+        else if (!strcmp(a, "--tan"))
+            tan_s = val;
         else if (!strcmp(a, "--out"))
             out = val;
         else if (!strcmp(a, "--tile-ids"))
@@ -499,6 +530,9 @@ int cli_cmd_render(int argc, char **argv)
     fd.cam.fovy_deg = fov;
     fd.cam.width = (int)w;
     fd.cam.height = (int)h;
+    int hf = parse_head_form(cmd, orient_s, tan_s, &fd.cam);
+    if (hf)
+        return hf;
     fd.nobjectives = ntargets;
     memcpy(fd.objectives, targets, sizeof targets);
     fd.objective_text = ntargets ? "reach the guide pole" : NULL;

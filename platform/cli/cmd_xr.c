@@ -1,7 +1,7 @@
 /* cmd_xr.c - `holonomy xr`: the headset app on the desktop's OpenXR runtime
  * (platform/openxr/hol_xr.h), with the desktop session's levels, logs and
  * recording (session.h), so a headset session replays headless. Built in
- * only with `make XR=1` (needs libopenxr-dev and GLX). */
+ * only with `make xr` (XR=1; needs libopenxr-dev and GLX). */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -181,7 +181,7 @@ int cli_cmd_xr(int argc, char **argv)
     (void)frames;
     (void)rec;
     free(script);
-    cli_error(cmd, 0, "this build has no OpenXR; build with 'make XR=1' (needs libopenxr-dev, "
+    cli_error(cmd, 0, "this build has no OpenXR; build with 'make xr' (needs libopenxr-dev, "
                       "GLX; see README 'Headset')");
     return CLI_EXIT_FAIL;
 #endif

@@ -1,6 +1,6 @@
-/* hol_xr.c - the OpenXR session (see hol_xr.h). */
+/* hol_xr.c - the OpenXR session: instance, swapchains, the frame loop,
+ * lifecycle events, teardown (see hol_xr.h, hol_xr_session.h). */
 #define _GNU_SOURCE
-#include "hol_xr.h"
 
 /* OpenXR structs are initialised by their type alone ({XR_TYPE_...}), the
  * rest zero: the API's own idiom. */
@@ -12,135 +12,24 @@
 #include <string.h>
 #include <time.h>
 
-#ifdef __ANDROID__
-#include <EGL/egl.h>
-#include <jni.h>
-#define XR_USE_PLATFORM_ANDROID
-#define XR_USE_GRAPHICS_API_OPENGL_ES
-#else
-#include <X11/Xlib.h>
-#include <GL/glx.h>
-#include <sys/wait.h>
-#include <unistd.h>
-#define XR_USE_PLATFORM_XLIB
-#define XR_USE_GRAPHICS_API_OPENGL
-#include "../image/hol_png_file.h"
-#include "../osmesa/hol_osmesa.h"
-#endif
-#include <openxr/openxr.h>
-#include <openxr/openxr_platform.h>
+#include "hol_xr_impl.h"
 
-#include "../../core/hol_motion.h"
-#include "../../render/hol_app_frame.h"
-#include "../../render/hol_render.h"
-#include "hol_xr_room.h"
-
-/* GL entry points this layer calls itself (the renderer loads its own) */
-typedef unsigned int hol__GLenum;
-typedef unsigned int hol__GLuint;
-typedef int hol__GLint;
-typedef int hol__GLsizei;
-#define HOL__GL_FRAMEBUFFER 0x8D40
-#define HOL__GL_RENDERBUFFER 0x8D41
-#define HOL__GL_COLOR_ATTACHMENT0 0x8CE0
-#define HOL__GL_DEPTH_STENCIL_ATTACHMENT 0x821A
-#define HOL__GL_DEPTH24_STENCIL8 0x88F0
-#define HOL__GL_TEXTURE_2D 0x0DE1
-#define HOL__GL_FRAMEBUFFER_COMPLETE 0x8CD5
-#define HOL__GL_RGBA8 0x8058
-#define HOL__GL_SRGB8_ALPHA8 0x8C43
-#define HOL__GL_COLOR_BUFFER_BIT 0x4000
-#define HOL__GL_DEPTH_BUFFER_BIT 0x0100
-#define HOL__GL_STENCIL_BUFFER_BIT 0x0400
-
-typedef struct hol__gl {
-    void (*GenFramebuffers)(hol__GLsizei, hol__GLuint *);
-    void (*BindFramebuffer)(hol__GLenum, hol__GLuint);
-    void (*FramebufferTexture2D)(hol__GLenum, hol__GLenum, hol__GLenum, hol__GLuint, hol__GLint);
-    void (*GenRenderbuffers)(hol__GLsizei, hol__GLuint *);
-    void (*BindRenderbuffer)(hol__GLenum, hol__GLuint);
-    void (*RenderbufferStorage)(hol__GLenum, hol__GLenum, hol__GLsizei, hol__GLsizei);
-    void (*FramebufferRenderbuffer)(hol__GLenum, hol__GLenum, hol__GLenum, hol__GLuint);
-    hol__GLenum (*CheckFramebufferStatus)(hol__GLenum);
-    void (*DeleteFramebuffers)(hol__GLsizei, const hol__GLuint *);
-    void (*DeleteRenderbuffers)(hol__GLsizei, const hol__GLuint *);
-    void (*Viewport)(hol__GLint, hol__GLint, hol__GLsizei, hol__GLsizei);
-    void (*ClearColor)(float, float, float, float);
-    void (*Clear)(unsigned int);
-    void (*Finish)(void);
-} hol__gl;
-
-#define HOL__MAX_IMAGES 8
-
-typedef struct hol__eye {
-    XrSwapchain swapchain;
-    int32_t w, h;
-    uint32_t nimages;
-    hol__GLuint fbo[HOL__MAX_IMAGES], depth;
-#ifdef __ANDROID__
-    XrSwapchainImageOpenGLESKHR images[HOL__MAX_IMAGES];
-#else
-    XrSwapchainImageOpenGLKHR images[HOL__MAX_IMAGES];
-#endif
-} hol__eye;
-
-enum { HOL__A_CONFIRM, HOL__A_MENU, HOL__A_RECENTRE, HOL__A_MINIMAP, HOL__A_COUNT };
-
-typedef struct hol__xr {
-    const hol_xr_desc *d;
-    const hol_xr_app_fns *fns;
-    XrInstance instance;
-    XrSystemId system;
-    XrSession session;
-    XrSpace stage, view_space, grip[2];
-    XrActionSet set;
-    XrAction grip_action, act[HOL__A_COUNT];
-    XrPath hand_path[2];
-    hol__eye eye[2];
-    int state, running, focused, quit_requested, done, reached_focused;
-    int is_stage;
-    hol_xr_calib calib;
-    hol__gl gl;
-    hol_render *rnd;
-    hol_render_getproc getproc;
-    long submitted;
-    XrTime t0;
-    double last_t;
-    unsigned prev_buttons;
-    int grips_located[2];
-    int bounds_small;
-    double cpu_ms[4096], step_ms[4096];
-    long ncpu;
-    double step_now;
-    long draws[2], tris[2];
-#ifdef __ANDROID__
-    EGLDisplay edpy;
-    EGLContext ectx;
-    EGLSurface esurf;
-#else
-    Display *dpy;
-    Window win;
-    GLXContext ctx;
-    GLXFBConfig cfg;
-    Colormap cmap;
-#endif
-} hol__xr;
-
-static int hol__fail(hol__xr *x, const char *what, XrResult r)
+int hol__fail(hol__xr *x, const char *what, XrResult r)
 {
     char name[XR_MAX_RESULT_STRING_SIZE] = "";
     if (x->instance != XR_NULL_HANDLE)
         xrResultToString(x->instance, r, name);
-    fprintf(stderr, "holonomy xr: %s failed: %s (%d)\n", what, name[0] ? name : "?", (int)r);
+    if (r == XR_ERROR_RUNTIME_UNAVAILABLE) /* no instance yet to name it */
+        fprintf(stderr, "holonomy xr: no OpenXR runtime (XR_ERROR_RUNTIME_UNAVAILABLE from "
+                        "%s): start one, e.g. monado-service, or set XR_RUNTIME_JSON\n", what);
+    else if (r == XR_ERROR_FORM_FACTOR_UNAVAILABLE)
+        fprintf(stderr, "holonomy xr: the OpenXR runtime has no headset connected "
+                        "(XR_ERROR_FORM_FACTOR_UNAVAILABLE)\n");
+    else
+        fprintf(stderr, "holonomy xr: %s failed: %s (%d)\n", what, name[0] ? name : "?", (int)r);
     return 1;
 }
 
-#define HOL__XR(x, call)                                                                      \
-    do {                                                                                      \
-        XrResult hol__r = (call);                                                             \
-        if (XR_FAILED(hol__r))                                                                \
-            return hol__fail((x), #call, hol__r);                                             \
-    } while (0)
 
 static double hol__thread_cpu_ms(void)
 {
@@ -154,271 +43,6 @@ static const char *hol__state_name(int s)
     static const char *const n[] = {"UNKNOWN", "IDLE", "READY", "SYNCHRONIZED", "VISIBLE",
                                     "FOCUSED", "STOPPING", "LOSS_PENDING", "EXITING"};
     return s >= 0 && s <= 8 ? n[s] : "?";
-}
-
-/* ---- graphics: the GL context and its binding ---------------------------- */
-
-#ifdef __ANDROID__
-static int hol__graphics(hol__xr *x, XrGraphicsBindingOpenGLESAndroidKHR *b)
-{
-    PFN_xrGetOpenGLESGraphicsRequirementsKHR req_fn = NULL;
-    HOL__XR(x, xrGetInstanceProcAddr(x->instance, "xrGetOpenGLESGraphicsRequirementsKHR",
-                                     (PFN_xrVoidFunction *)&req_fn));
-    XrGraphicsRequirementsOpenGLESKHR req = {XR_TYPE_GRAPHICS_REQUIREMENTS_OPENGL_ES_KHR};
-    HOL__XR(x, req_fn(x->instance, x->system, &req));
-    x->edpy = eglGetDisplay(EGL_DEFAULT_DISPLAY);
-    if (!eglInitialize(x->edpy, NULL, NULL))
-        return hol__fail(x, "eglInitialize", XR_ERROR_RUNTIME_FAILURE);
-    const EGLint attr[] = {EGL_RENDERABLE_TYPE, 0x40 /* EGL_OPENGL_ES3_BIT */, EGL_SURFACE_TYPE,
-                           EGL_PBUFFER_BIT, EGL_RED_SIZE, 8, EGL_GREEN_SIZE, 8, EGL_BLUE_SIZE, 8,
-                           EGL_ALPHA_SIZE, 8, EGL_DEPTH_SIZE, 24, EGL_STENCIL_SIZE, 8, EGL_NONE};
-    EGLConfig cfg;
-    EGLint n = 0;
-    if (!eglChooseConfig(x->edpy, attr, &cfg, 1, &n) || n < 1)
-        return hol__fail(x, "eglChooseConfig", XR_ERROR_RUNTIME_FAILURE);
-    const EGLint cattr[] = {EGL_CONTEXT_CLIENT_VERSION, 3, EGL_NONE};
-    x->ectx = eglCreateContext(x->edpy, cfg, EGL_NO_CONTEXT, cattr);
-    const EGLint sattr[] = {EGL_WIDTH, 16, EGL_HEIGHT, 16, EGL_NONE};
-    x->esurf = eglCreatePbufferSurface(x->edpy, cfg, sattr);
-    if (x->ectx == EGL_NO_CONTEXT || !eglMakeCurrent(x->edpy, x->esurf, x->esurf, x->ectx))
-        return hol__fail(x, "eglMakeCurrent", XR_ERROR_RUNTIME_FAILURE);
-    x->getproc = (hol_render_getproc)eglGetProcAddress;
-    b->type = XR_TYPE_GRAPHICS_BINDING_OPENGL_ES_ANDROID_KHR;
-    b->next = NULL;
-    b->display = x->edpy;
-    b->config = cfg;
-    b->context = x->ectx;
-    return 0;
-}
-#else
-typedef GLXContext (*hol__create_ctx_fn)(Display *, GLXFBConfig, GLXContext, Bool, const int *);
-
-static int hol__graphics(hol__xr *x, XrGraphicsBindingOpenGLXlibKHR *b)
-{
-    PFN_xrGetOpenGLGraphicsRequirementsKHR req_fn = NULL;
-    HOL__XR(x, xrGetInstanceProcAddr(x->instance, "xrGetOpenGLGraphicsRequirementsKHR",
-                                     (PFN_xrVoidFunction *)&req_fn));
-    XrGraphicsRequirementsOpenGLKHR req = {XR_TYPE_GRAPHICS_REQUIREMENTS_OPENGL_KHR};
-    HOL__XR(x, req_fn(x->instance, x->system, &req));
-    x->dpy = XOpenDisplay(NULL);
-    if (!x->dpy) {
-        fprintf(stderr, "holonomy xr: cannot open the X display (DISPLAY=%s)\n",
-                getenv("DISPLAY") ? getenv("DISPLAY") : "");
-        return 1;
-    }
-    const int attr[] = {GLX_X_RENDERABLE, True, GLX_DRAWABLE_TYPE, GLX_WINDOW_BIT,
-                        GLX_RENDER_TYPE, GLX_RGBA_BIT, GLX_RED_SIZE, 8, GLX_GREEN_SIZE, 8,
-                        GLX_BLUE_SIZE, 8, GLX_ALPHA_SIZE, 8, GLX_DEPTH_SIZE, 24,
-                        GLX_STENCIL_SIZE, 8, GLX_DOUBLEBUFFER, True, None};
-    int n = 0;
-    GLXFBConfig *cfgs = glXChooseFBConfig(x->dpy, DefaultScreen(x->dpy), attr, &n);
-    if (!cfgs || n < 1) {
-        fprintf(stderr, "holonomy xr: no GLX frame buffer configuration with depth and stencil\n");
-        return 1;
-    }
-    x->cfg = cfgs[0];
-    XFree(cfgs);
-    XVisualInfo *vi = glXGetVisualFromFBConfig(x->dpy, x->cfg);
-    if (!vi) {
-        fprintf(stderr, "holonomy xr: no X visual for the GLX configuration\n");
-        return 1;
-    }
-    XSetWindowAttributes swa;
-    memset(&swa, 0, sizeof swa);
-    x->cmap = XCreateColormap(x->dpy, RootWindow(x->dpy, vi->screen), vi->visual, AllocNone);
-    swa.colormap = x->cmap;
-    x->win = XCreateWindow(x->dpy, RootWindow(x->dpy, vi->screen), 0, 0, 16, 16, 0, vi->depth,
-                           InputOutput, vi->visual, CWColormap, &swa);
-    VisualID visualid = vi->visualid;
-    XFree(vi);
-    hol__create_ctx_fn create = (hol__create_ctx_fn)glXGetProcAddressARB(
-        (const GLubyte *)"glXCreateContextAttribsARB");
-    if (!create) {
-        fprintf(stderr, "holonomy xr: GLX has no glXCreateContextAttribsARB\n");
-        return 1;
-    }
-    /* a core context at the runtime's minimum or 4.5, whichever is higher */
-    int major = (int)XR_VERSION_MAJOR(req.minApiVersionSupported);
-    int minor = (int)XR_VERSION_MINOR(req.minApiVersionSupported);
-    if (major < 4 || (major == 4 && minor < 5))
-        major = 4, minor = 5;
-    const int cattr[] = {GLX_CONTEXT_MAJOR_VERSION_ARB, major, GLX_CONTEXT_MINOR_VERSION_ARB,
-                         minor, GLX_CONTEXT_PROFILE_MASK_ARB, GLX_CONTEXT_CORE_PROFILE_BIT_ARB,
-                         None};
-    x->ctx = create(x->dpy, x->cfg, NULL, True, cattr);
-    if (!x->ctx || !glXMakeCurrent(x->dpy, x->win, x->ctx)) {
-        fprintf(stderr, "holonomy xr: cannot make a GL %d.%d core context current\n", major,
-                minor);
-        return 1;
-    }
-    x->getproc = (hol_render_getproc)glXGetProcAddressARB;
-    b->type = XR_TYPE_GRAPHICS_BINDING_OPENGL_XLIB_KHR;
-    b->next = NULL;
-    b->xDisplay = x->dpy;
-    b->visualid = (uint32_t)visualid;
-    b->glxFBConfig = x->cfg;
-    b->glxDrawable = x->win;
-    b->glxContext = x->ctx;
-    return 0;
-}
-#endif
-
-static int hol__load_gl(hol__xr *x)
-{
-#define HOL__LOAD(f)                                                                          \
-    do {                                                                                      \
-        hol_render_proc p = x->getproc("gl" #f);                                              \
-        if (!p) {                                                                             \
-            fprintf(stderr, "holonomy xr: GL has no gl%s\n", #f);                             \
-            return 1;                                                                         \
-        }                                                                                     \
-        memcpy(&x->gl.f, &p, sizeof p);                                                       \
-    } while (0)
-    HOL__LOAD(GenFramebuffers);
-    HOL__LOAD(BindFramebuffer);
-    HOL__LOAD(FramebufferTexture2D);
-    HOL__LOAD(GenRenderbuffers);
-    HOL__LOAD(BindRenderbuffer);
-    HOL__LOAD(RenderbufferStorage);
-    HOL__LOAD(FramebufferRenderbuffer);
-    HOL__LOAD(CheckFramebufferStatus);
-    HOL__LOAD(DeleteFramebuffers);
-    HOL__LOAD(DeleteRenderbuffers);
-    HOL__LOAD(Viewport);
-    HOL__LOAD(ClearColor);
-    HOL__LOAD(Clear);
-    HOL__LOAD(Finish);
-#undef HOL__LOAD
-    return 0;
-}
-
-/* ---- actions -------------------------------------------------------------- */
-
-static XrPath hol__path(hol__xr *x, const char *s)
-{
-    XrPath p = XR_NULL_PATH;
-    xrStringToPath(x->instance, s, &p);
-    return p;
-}
-
-static int hol__action(hol__xr *x, XrAction *out, const char *name, const char *local,
-                       XrActionType type, int hands)
-{
-    XrActionCreateInfo ai = {XR_TYPE_ACTION_CREATE_INFO};
-    snprintf(ai.actionName, sizeof ai.actionName, "%s", name);
-    snprintf(ai.localizedActionName, sizeof ai.localizedActionName, "%s", local);
-    ai.actionType = type;
-    if (hands) {
-        ai.countSubactionPaths = 2;
-        ai.subactionPaths = x->hand_path;
-    }
-    HOL__XR(x, xrCreateAction(x->set, &ai, out));
-    return 0;
-}
-
-typedef struct hol__bind {
-    const char *profile;
-    const char *path[HOL__A_COUNT]; /* NULL: not bound on this controller */
-} hol__bind;
-
-static int hol__actions(hol__xr *x)
-{
-    XrActionSetCreateInfo si = {XR_TYPE_ACTION_SET_CREATE_INFO};
-    snprintf(si.actionSetName, sizeof si.actionSetName, "game");
-    snprintf(si.localizedActionSetName, sizeof si.localizedActionSetName, "Game");
-    HOL__XR(x, xrCreateActionSet(x->instance, &si, &x->set));
-    x->hand_path[0] = hol__path(x, "/user/hand/left");
-    x->hand_path[1] = hol__path(x, "/user/hand/right");
-    if (hol__action(x, &x->grip_action, "grip", "Hand pose", XR_ACTION_TYPE_POSE_INPUT, 1) ||
-        hol__action(x, &x->act[HOL__A_CONFIRM], "confirm", "Confirm",
-                    XR_ACTION_TYPE_BOOLEAN_INPUT, 0) ||
-        hol__action(x, &x->act[HOL__A_MENU], "menu", "Menu", XR_ACTION_TYPE_BOOLEAN_INPUT, 0) ||
-        hol__action(x, &x->act[HOL__A_RECENTRE], "recentre", "Recentre the room",
-                    XR_ACTION_TYPE_BOOLEAN_INPUT, 0) ||
-        hol__action(x, &x->act[HOL__A_MINIMAP], "minimap", "Minimap",
-                    XR_ACTION_TYPE_BOOLEAN_INPUT, 0))
-        return 1;
-    /* confirm, menu, recentre, minimap per controller */
-    static const hol__bind binds[] = {
-        {"/interaction_profiles/khr/simple_controller",
-         {"/user/hand/right/input/select/click", "/user/hand/right/input/menu/click",
-          "/user/hand/left/input/menu/click", "/user/hand/left/input/select/click"}},
-        {"/interaction_profiles/oculus/touch_controller",
-         {"/user/hand/right/input/a/click", "/user/hand/left/input/menu/click",
-          "/user/hand/left/input/y/click", "/user/hand/left/input/x/click"}},
-        {"/interaction_profiles/htc/vive_controller",
-         {"/user/hand/right/input/trigger/click", "/user/hand/right/input/menu/click",
-          "/user/hand/left/input/menu/click", "/user/hand/left/input/trackpad/click"}},
-        {"/interaction_profiles/valve/index_controller",
-         {"/user/hand/right/input/a/click", "/user/hand/right/input/b/click",
-          "/user/hand/left/input/b/click", "/user/hand/left/input/a/click"}},
-        {"/interaction_profiles/microsoft/motion_controller",
-         {"/user/hand/right/input/trigger/value", "/user/hand/right/input/menu/click",
-          "/user/hand/left/input/menu/click", "/user/hand/left/input/trackpad/click"}},
-    };
-    for (size_t i = 0; i < sizeof binds / sizeof binds[0]; i++) {
-        XrActionSuggestedBinding sb[HOL__A_COUNT + 2];
-        uint32_t n = 0;
-        sb[n].action = x->grip_action;
-        sb[n++].binding = hol__path(x, "/user/hand/left/input/grip/pose");
-        sb[n].action = x->grip_action;
-        sb[n++].binding = hol__path(x, "/user/hand/right/input/grip/pose");
-        for (int a = 0; a < HOL__A_COUNT; a++) {
-            sb[n].action = x->act[a];
-            sb[n++].binding = hol__path(x, binds[i].path[a]);
-        }
-        XrInteractionProfileSuggestedBinding ps = {
-            XR_TYPE_INTERACTION_PROFILE_SUGGESTED_BINDING};
-        ps.interactionProfile = hol__path(x, binds[i].profile);
-        ps.countSuggestedBindings = n;
-        ps.suggestedBindings = sb;
-        XrResult r = xrSuggestInteractionProfileBindings(x->instance, &ps);
-        if (XR_FAILED(r))
-            return hol__fail(x, binds[i].profile, r);
-        printf("xr: bindings accepted %s\n", binds[i].profile + 22);
-    }
-    return 0;
-}
-
-static int hol__spaces(hol__xr *x)
-{
-    XrSessionActionSetsAttachInfo at = {XR_TYPE_SESSION_ACTION_SETS_ATTACH_INFO};
-    at.countActionSets = 1;
-    at.actionSets = &x->set;
-    HOL__XR(x, xrAttachSessionActionSets(x->session, &at));
-    for (int h = 0; h < 2; h++) {
-        XrActionSpaceCreateInfo ai = {XR_TYPE_ACTION_SPACE_CREATE_INFO};
-        ai.action = x->grip_action;
-        ai.subactionPath = x->hand_path[h];
-        ai.poseInActionSpace.orientation.w = 1;
-        HOL__XR(x, xrCreateActionSpace(x->session, &ai, &x->grip[h]));
-    }
-    uint32_t n = 0;
-    XrReferenceSpaceType types[16];
-    HOL__XR(x, xrEnumerateReferenceSpaces(x->session, 16, &n, types));
-    x->is_stage = 0;
-    for (uint32_t i = 0; i < n; i++)
-        x->is_stage |= types[i] == XR_REFERENCE_SPACE_TYPE_STAGE;
-    XrReferenceSpaceCreateInfo ri = {XR_TYPE_REFERENCE_SPACE_CREATE_INFO};
-    ri.referenceSpaceType = x->is_stage ? XR_REFERENCE_SPACE_TYPE_STAGE
-                                        : XR_REFERENCE_SPACE_TYPE_LOCAL;
-    ri.poseInReferenceSpace.orientation.w = 1;
-    HOL__XR(x, xrCreateReferenceSpace(x->session, &ri, &x->stage));
-    ri.referenceSpaceType = XR_REFERENCE_SPACE_TYPE_VIEW;
-    HOL__XR(x, xrCreateReferenceSpace(x->session, &ri, &x->view_space));
-    printf("xr: reference space %s\n", x->is_stage ? "STAGE" : "LOCAL");
-    if (x->is_stage) {
-        XrExtent2Df b = {0, 0};
-        XrResult r = xrGetReferenceSpaceBoundsRect(x->session, XR_REFERENCE_SPACE_TYPE_STAGE, &b);
-        if (r == XR_SUCCESS) {
-            x->bounds_small = !hol_xr_bounds_hold_room(b.width, b.height);
-            printf("xr: stage bounds %.2f x %.2f m%s\n", b.width, b.height,
-                   x->bounds_small ? " (smaller than the 3 x 3 m room)" : "");
-        } else {
-            printf("xr: stage bounds not given by the runtime\n");
-        }
-    }
-    return 0;
 }
 
 /* ---- swapchains ----------------------------------------------------------- */
@@ -487,90 +111,6 @@ static int hol__swapchains(hol__xr *x)
 }
 
 /* ---- the frame ------------------------------------------------------------ */
-
-static void hol__pose_in(const XrPosef *p, float pos[3], float quat[4])
-{
-    pos[0] = p->position.x;
-    pos[1] = p->position.y;
-    pos[2] = p->position.z;
-    quat[0] = p->orientation.x;
-    quat[1] = p->orientation.y;
-    quat[2] = p->orientation.z;
-    quat[3] = p->orientation.w;
-}
-
-static int hol__bool(hol__xr *x, int a)
-{
-    XrActionStateGetInfo gi = {XR_TYPE_ACTION_STATE_GET_INFO};
-    gi.action = x->act[a];
-    XrActionStateBoolean st = {XR_TYPE_ACTION_STATE_BOOLEAN};
-    if (XR_FAILED(xrGetActionStateBoolean(x->session, &gi, &st)))
-        return 0;
-    return st.isActive && st.currentState;
-}
-
-#ifndef __ANDROID__
-/* The OSMesa render of the same eye, in a child process (it must not share
- * this process's GLX state), against the swapchain's read back. */
-static void hol__check(hol__xr *x, const hol_frame_desc *fd, int w, int h)
-{
-    size_t bytes = (size_t)w * (size_t)h * 4;
-    uint8_t *got = malloc(bytes), *ref = malloc(bytes);
-    if (!got || !ref) {
-        free(got);
-        free(ref);
-        return;
-    }
-    hol_render_read_rgba(x->rnd, w, h, got);
-    char path[600];
-    snprintf(path, sizeof path, "%s/xr-eye0.png", x->d->check_dir);
-    hol_png_write_file(path, got, w, h, 0);
-    snprintf(path, sizeof path, "%s/osmesa-eye0.png", x->d->check_dir);
-    fflush(stdout);
-    pid_t pid = fork();
-    if (pid == 0) {
-        hol_osmesa o;
-        char msg[256];
-        hol_render *r = NULL;
-        hol_render_desc rd;
-        memset(&rd, 0, sizeof rd);
-        rd.getproc = (hol_render_getproc)hol_osmesa_getproc;
-        rd.world = x->fns->world(x->fns->user);
-        if (hol_osmesa_create(&o, w, h, msg, sizeof msg) || hol_render_create(&rd, &r) ||
-            hol_render_frame(r, fd, NULL))
-            _exit(1);
-        hol_render_read_rgba(r, w, h, ref);
-        _exit(hol_png_write_file(path, ref, w, h, 0) ? 1 : 0);
-    }
-    int st = 1;
-    if (pid > 0)
-        waitpid(pid, &st, 0);
-    uint8_t *ref2 = NULL;
-    int rw = 0, rh = 0;
-    if (pid < 0 || st != 0 || hol_png_read_file(path, &ref2, &rw, &rh) || rw != w || rh != h) {
-        printf("xr: check: the OSMesa reference render failed\n");
-    } else {
-        long bad = 0;
-        int worst = 0;
-        for (size_t p = 0; p < (size_t)w * (size_t)h; p++) {
-            int dmax = 0;
-            for (int k = 0; k < 3; k++) {
-                int dd = abs((int)got[4 * p + k] - (int)ref2[4 * p + k]);
-                dmax = dd > dmax ? dd : dmax;
-            }
-            worst = dmax > worst ? dmax : worst;
-            bad += dmax > 8;
-        }
-        printf("xr: check frame %ld eye 0 %dx%d: %ld pixels differ by more than 8/255 "
-               "(%.3f %%), largest difference %d\n",
-               x->d->check_frame, w, h, bad, 100.0 * (double)bad / ((double)w * h), worst);
-    }
-    free(ref2);
-    free(got);
-    free(ref);
-}
-#endif
-
 static int hol__frame(hol__xr *x)
 {
     XrFrameWaitInfo wi = {XR_TYPE_FRAME_WAIT_INFO};
@@ -597,7 +137,7 @@ static int hol__frame(hol__xr *x)
     double t = (double)(fs.predictedDisplayTime - x->t0) * 1e-9;
     in.time_s = t > x->last_t ? t : x->last_t;
     x->last_t = in.time_s;
-    if (x->focused)
+    if (x->life.focused)
         in.flags |= HOL_INPUT_FOCUSED;
     if (x->bounds_small)
         in.flags |= HOL_INPUT_BOUNDS_SMALL;
@@ -609,16 +149,16 @@ static int hol__frame(hol__xr *x)
         hol__pose_in(&loc.pose, hp, hq);
         in.flags |= HOL_INPUT_HEAD_VALID;
     }
-    if (x->focused) {
+    if (x->life.focused) {
         XrActiveActionSet as = {x->set, XR_NULL_PATH};
         XrActionsSyncInfo sy = {XR_TYPE_ACTIONS_SYNC_INFO};
         sy.countActiveActionSets = 1;
         sy.activeActionSets = &as;
         HOL__XR(x, xrSyncActions(x->session, &sy));
-        in.buttons |= hol__bool(x, HOL__A_CONFIRM) ? HOL_BTN_CONFIRM : 0;
-        in.buttons |= hol__bool(x, HOL__A_MENU) ? HOL_BTN_MENU : 0;
-        in.buttons |= hol__bool(x, HOL__A_RECENTRE) ? HOL_BTN_RECENTRE : 0;
-        in.buttons |= hol__bool(x, HOL__A_MINIMAP) ? HOL_BTN_MINIMAP : 0;
+        int held[HOL_XR_ACT_COUNT];
+        for (int a = 0; a < HOL_XR_ACT_COUNT; a++)
+            held[a] = hol__bool(x, a);
+        in.buttons |= hol_xr_buttons(held);
         for (int h = 0; h < 2; h++) {
             XrSpaceLocation gl = {XR_TYPE_SPACE_LOCATION};
             if (XR_SUCCEEDED(xrLocateSpace(x->grip[h], x->stage, fs.predictedDisplayTime, &gl)) &&
@@ -659,10 +199,9 @@ static int hol__frame(hol__xr *x)
     if (x->fns->level_started(x->fns->user))
         hol_render_invalidate(x->rnd);
     if (st > 0 || (x->d->frames > 0 && x->submitted + 1 >= x->d->frames)) {
-        if (!x->quit_requested) {
+        if (hol_xr_life_quit(&x->life) == HOL_XR_QUIT_REQUEST_EXIT) {
             HOL__XR(x, xrRequestExitSession(x->session));
             printf("xr: exit requested after %ld frames\n", x->submitted + 1);
-            x->quit_requested = 1;
         }
     }
     /* render each eye */
@@ -670,6 +209,18 @@ static int hol__frame(hol__xr *x)
     memset(pv, 0, sizeof pv);
     int rendered = 0;
     if (fs.shouldRender && views_ok && v) {
+        /* both eyes where they are (the world never moves), and the safety
+         * fade from how far they are beyond where the app's head may go */
+        hol_pose eroom[2];
+        double eyes[2][3];
+        for (int e = 0; e < 2; e++) {
+            float ep[3], eq[4];
+            hol__pose_in(&views[e].pose, ep, eq);
+            hol_xr_to_room(&x->calib, ep, eq, &eroom[e]);
+            for (int k = 0; k < 3; k++)
+                eyes[e][k] = eroom[e].pos[k] += room_from_stage_shift[k];
+        }
+        double fade = hol_xr_fade(eyes, HOL__MARGIN);
         for (int e = 0; e < 2; e++) {
             hol__eye *ey = &x->eye[e];
             uint32_t idx = 0;
@@ -680,19 +231,13 @@ static int hol__frame(hol__xr *x)
             HOL__XR(x, xrWaitSwapchainImage(ey->swapchain, &wi2));
             x->gl.BindFramebuffer(HOL__GL_FRAMEBUFFER, ey->fbo[idx]);
             x->gl.Viewport(0, 0, ey->w, ey->h);
-            float ep[3], eq[4];
-            hol__pose_in(&views[e].pose, ep, eq);
-            hol_pose eroom;
-            hol_xr_to_room(&x->calib, ep, eq, &eroom);
-            for (int k = 0; k < 3; k++)
-                eroom.pos[k] += room_from_stage_shift[k];
             hol_frame_desc fd;
             hol_app_frame_desc(v, e, ey->w, ey->h, 0, &fd);
             for (int k = 0; k < 3; k++)
-                fd.cam.eye[k] = eroom.pos[k];
+                fd.cam.eye[k] = eroom[e].pos[k];
             fd.cam.has_pose = 1;
             for (int k = 0; k < 4; k++)
-                fd.cam.orient[k] = eroom.quat[k];
+                fd.cam.orient[k] = eroom[e].quat[k];
             fd.cam.tan_left = tan(views[e].fov.angleLeft);
             fd.cam.tan_right = tan(views[e].fov.angleRight);
             fd.cam.tan_down = tan(views[e].fov.angleDown);
@@ -703,22 +248,25 @@ static int hol__frame(hol__xr *x)
                 for (int k = 0; k < 4; k++)
                     fd.hand_orient[k] = in.hand[0].quat[k];
             }
-            /* the eye's own room state: the cell its position lies in */
-            int inside = fd.cam.eye[0] > 0 && fd.cam.eye[0] < 3 && fd.cam.eye[2] > 0 &&
-                         fd.cam.eye[2] < 3 &&
+            /* the eye's own room state: the cell its position lies in;
+             * none (outside the room): the boundary colour alone */
+            int inside = fade < 1 &&
                          hol_motion_eye_state(&v->user, v->head, fd.cam.eye, &fd.user) == HOL_OK;
+            fd.fade = inside ? fade : 1;
             hol_render_stats rs;
             memset(&rs, 0, sizeof rs);
-            if (!inside || hol_render_frame(x->rnd, &fd, &rs)) {
-                /* outside the room: the boundary, the world not drawn */
-                x->gl.ClearColor(0.22f, 0.46f, 0.24f, 1);
-                x->gl.Clear(HOL__GL_COLOR_BUFFER_BIT | HOL__GL_DEPTH_BUFFER_BIT |
-                            HOL__GL_STENCIL_BUFFER_BIT);
+            if (hol_render_frame(x->rnd, &fd, &rs)) {
+                fd.fade = 1; /* never a stale image */
+                hol_render_frame(x->rnd, &fd, &rs);
             }
-            x->draws[e] = rs.draw_calls;
-            x->tris[e] = rs.triangles;
+            x->faded += fd.fade > 0 && e == 0;
+            if (fade == 0) { /* the figures of a full view */
+                x->draws[e] = rs.draw_calls;
+                x->tris[e] = rs.triangles;
+            }
 #ifndef __ANDROID__
-            if (e == 0 && x->d->check_dir && x->submitted == x->d->check_frame && inside)
+            if (e == 0 && x->d->check_dir && x->submitted == x->d->check_frame && inside &&
+                fd.fade == 0)
                 hol__check(x, &fd, ey->w, ey->h);
 #endif
             x->gl.BindFramebuffer(HOL__GL_FRAMEBUFFER, 0);
@@ -731,7 +279,7 @@ static int hol__frame(hol__xr *x)
             pv[e].subImage.imageRect.extent.width = ey->w;
             pv[e].subImage.imageRect.extent.height = ey->h;
         }
-        rendered = 1;
+        rendered = fade > 0 ? 2 : 1; /* 2: faded (cheaper; not in the CPU figures) */
     }
     XrCompositionLayerProjection layer = {XR_TYPE_COMPOSITION_LAYER_PROJECTION};
     layer.space = x->stage;
@@ -746,7 +294,7 @@ static int hol__frame(hol__xr *x)
     HOL__XR(x, xrEndFrame(x->session, &ei));
     x->submitted++;
     /* the check frame's OSMesa reference is not the app's time */
-    if (rendered && x->submitted - 1 != x->d->check_frame &&
+    if (rendered == 1 && x->submitted - 1 != x->d->check_frame &&
         x->ncpu < (long)(sizeof x->cpu_ms / sizeof x->cpu_ms[0])) {
         x->step_ms[x->ncpu] = x->step_now;
         x->cpu_ms[x->ncpu++] = hol__thread_cpu_ms() - c0;
@@ -757,38 +305,42 @@ static int hol__frame(hol__xr *x)
 static void hol__events(hol__xr *x)
 {
     XrEventDataBuffer ev = {XR_TYPE_EVENT_DATA_BUFFER};
-    while (xrPollEvent(x->instance, &ev) == XR_SUCCESS) {
+    XrResult pr;
+    while ((pr = xrPollEvent(x->instance, &ev)) == XR_SUCCESS) {
         if (ev.type == XR_TYPE_EVENT_DATA_SESSION_STATE_CHANGED) {
             const XrEventDataSessionStateChanged *e = (const XrEventDataSessionStateChanged *)&ev;
-            x->state = (int)e->state;
-            printf("xr: state %s\n", hol__state_name(x->state));
-            x->reached_focused |= x->state == HOL_XR_STATE_FOCUSED;
-            hol_xr_do d = hol_xr_lifecycle(x->state, &x->running, &x->focused);
+            int state = (int)e->state;
+            printf("xr: state %s\n", hol__state_name(state));
+            x->reached_focused |= state == HOL_XR_STATE_FOCUSED;
+            hol_xr_do d = hol_xr_life_event(&x->life, state);
             if (d == HOL_XR_DO_BEGIN) {
                 XrSessionBeginInfo sb = {XR_TYPE_SESSION_BEGIN_INFO};
                 sb.primaryViewConfigurationType = XR_VIEW_CONFIGURATION_TYPE_PRIMARY_STEREO;
                 XrResult r = xrBeginSession(x->session, &sb);
                 if (XR_FAILED(r)) {
                     hol__fail(x, "xrBeginSession", r);
-                    x->done = 1;
+                    x->failed = x->life.done = 1;
                 }
             } else if (d == HOL_XR_DO_END) {
                 XrResult r = xrEndSession(x->session);
-                if (XR_FAILED(r))
+                if (XR_FAILED(r)) {
                     hol__fail(x, "xrEndSession", r);
-                else
-                    printf("xr: session ended after STOPPING\n");
-                if (!x->quit_requested) /* the runtime stopped us: leave */
-                    x->done = 1;
-            } else if (d == HOL_XR_DO_TEAR_DOWN) {
-                x->done = 1;
+                    x->failed = x->life.done = 1;
+                } else {
+                    printf("xr: session ended after STOPPING%s\n",
+                           x->life.quit_requested ? "" : " (by the runtime: waiting for READY)");
+                }
             }
         } else if (ev.type == XR_TYPE_EVENT_DATA_INSTANCE_LOSS_PENDING) {
             printf("xr: instance loss pending\n");
-            x->done = 1;
+            x->life.done = 1;
         }
         ev.type = XR_TYPE_EVENT_DATA_BUFFER;
         ev.next = NULL;
+    }
+    if (XR_FAILED(pr)) { /* the runtime went away */
+        hol__fail(x, "xrPollEvent", pr);
+        x->failed = x->life.done = 1;
     }
 }
 
@@ -798,7 +350,8 @@ static int hol__cmp(const void *a, const void *b)
     return x < y ? -1 : x > y;
 }
 
-static int hol__run(hol__xr *x)
+/* The instance and system (hol_xr_run; hol_xr_run_session is given them). */
+static int hol__instance(hol__xr *x)
 {
     XrInstanceCreateInfo ic = {XR_TYPE_INSTANCE_CREATE_INFO};
 #ifdef __ANDROID__
@@ -835,15 +388,17 @@ static int hol__run(hol__xr *x)
     XrSystemGetInfo sg = {XR_TYPE_SYSTEM_GET_INFO};
     sg.formFactor = XR_FORM_FACTOR_HEAD_MOUNTED_DISPLAY;
     HOL__XR(x, xrGetSystem(x->instance, &sg, &x->system));
-#ifdef __ANDROID__
-    XrGraphicsBindingOpenGLESAndroidKHR binding;
-#else
-    XrGraphicsBindingOpenGLXlibKHR binding;
-#endif
-    if (hol__graphics(x, &binding) || hol__load_gl(x) || hol__actions(x))
+    return 0;
+}
+
+/* The session on x's instance, system and current GL context (binding: the
+ * graphics binding for xrCreateSession), its loop until it ends. */
+static int hol__run(hol__xr *x, const void *binding)
+{
+    if (hol__load_gl(x) || hol__actions(x))
         return 1;
     XrSessionCreateInfo sc = {XR_TYPE_SESSION_CREATE_INFO};
-    sc.next = &binding;
+    sc.next = binding;
     sc.systemId = x->system;
     HOL__XR(x, xrCreateSession(x->instance, &sc, &x->session));
     if (hol__spaces(x) || hol__swapchains(x))
@@ -856,19 +411,14 @@ static int hol__run(hol__xr *x)
         fprintf(stderr, "holonomy xr: cannot initialise the renderer on this GL context\n");
         return 1;
     }
-    while (!x->done) {
+    while (!x->life.done) {
         if (x->fns->poll_platform && x->fns->poll_platform(x->fns->user) &&
-            !x->quit_requested && x->session != XR_NULL_HANDLE) {
-            if (x->running)
-                xrRequestExitSession(x->session);
-            else
-                x->done = 1;
-            x->quit_requested = 1;
-        }
+            hol_xr_life_quit(&x->life) == HOL_XR_QUIT_REQUEST_EXIT)
+            HOL__XR(x, xrRequestExitSession(x->session));
         hol__events(x);
-        if (x->done)
+        if (x->life.done)
             break;
-        if (x->running) {
+        if (x->life.running) {
             if (hol__frame(x))
                 return 1;
         } else {
@@ -876,20 +426,20 @@ static int hol__run(hol__xr *x)
             nanosleep(&ts, NULL);
         }
     }
-    printf("xr: frames submitted %ld, reached FOCUSED %s\n", x->submitted,
-           x->reached_focused ? "yes" : "no");
+    printf("xr: frames submitted %ld, reached FOCUSED %s, faded at the boundary %ld\n",
+           x->submitted, x->reached_focused ? "yes" : "no", x->faded);
     if (x->ncpu) {
         qsort(x->cpu_ms, (size_t)x->ncpu, sizeof x->cpu_ms[0], hol__cmp);
         qsort(x->step_ms, (size_t)x->ncpu, sizeof x->step_ms[0], hol__cmp);
         printf("xr: app thread CPU per stereo frame (step, both eyes, submit; without "
-               "xrWaitFrame): median %.2f ms, p99 %.2f ms over %ld frames; of it the app "
-               "step median %.3f ms, p99 %.3f ms\n",
+               "xrWaitFrame; unfaded frames): median %.2f ms, p99 %.2f ms over %ld frames; "
+               "of it the app step median %.3f ms, p99 %.3f ms\n",
                x->cpu_ms[x->ncpu / 2], x->cpu_ms[x->ncpu * 99 / 100], x->ncpu,
                x->step_ms[x->ncpu / 2], x->step_ms[x->ncpu * 99 / 100]);
         printf("xr: per eye: %ld / %ld draw calls, %ld / %ld triangles (left / right)\n",
                x->draws[0], x->draws[1], x->tris[0], x->tris[1]);
     }
-    return 0;
+    return x->failed;
 }
 
 static void hol__destroy(hol__xr *x)
@@ -914,6 +464,8 @@ static void hol__destroy(hol__xr *x)
         xrDestroySession(x->session);
     if (x->set != XR_NULL_HANDLE)
         xrDestroyActionSet(x->set);
+    if (x->external) /* the instance and the GL context are the caller's */
+        return;
     if (x->instance != XR_NULL_HANDLE)
         xrDestroyInstance(x->instance);
 #ifdef __ANDROID__
@@ -935,7 +487,10 @@ static void hol__destroy(hol__xr *x)
 #endif
 }
 
-int hol_xr_run(const hol_xr_desc *desc, const hol_xr_app_fns *fns)
+/* Both entries: the one allocation, the run (own instance and context, or
+ * the caller's in ext), teardown of what was made. */
+static int hol__main(const hol_xr_desc *desc, const hol_xr_app_fns *fns,
+                     const hol_xr_external *ext)
 {
     hol__xr *x = calloc(1, sizeof *x); /* the platform's one allocation */
     if (!x) {
@@ -947,9 +502,34 @@ int hol_xr_run(const hol_xr_desc *desc, const hol_xr_app_fns *fns)
 #ifdef __ANDROID__
     x->edpy = EGL_NO_DISPLAY;
 #endif
-    int rc = hol__run(x);
+    int rc;
+    if (ext) {
+        x->external = 1;
+        x->instance = ext->instance;
+        x->system = ext->system;
+        x->getproc = ext->getproc;
+        rc = hol__run(x, ext->graphics_binding);
+    } else {
+        hol__binding binding;
+        rc = hol__instance(x) || hol__graphics(x, &binding) || hol__run(x, &binding);
+    }
     hol__destroy(x);
     free(x);
     fflush(stdout);
     return rc;
+}
+
+int hol_xr_run(const hol_xr_desc *desc, const hol_xr_app_fns *fns)
+{
+    return hol__main(desc, fns, NULL);
+}
+
+int hol_xr_run_session(const hol_xr_desc *desc, const hol_xr_app_fns *fns,
+                       const hol_xr_external *ext)
+{
+    if (!ext || ext->instance == XR_NULL_HANDLE || !ext->graphics_binding || !ext->getproc) {
+        fprintf(stderr, "holonomy xr: no instance, graphics binding or getproc given\n");
+        return 1;
+    }
+    return hol__main(desc, fns, ext);
 }

@@ -16,9 +16,15 @@
  *   to the app (fns->step), each eye rendered into its swapchain image with
  *   the view's own pose and asymmetric field of view, xrEndFrame with one
  *   projection layer. The game is paused unless the session is FOCUSED.
- * - Lifecycle as hol_xr_lifecycle says; quitting (the app's quit, or
- *   desc.frames reached) calls xrRequestExitSession and goes on until
- *   STOPPING (xrEndSession) and EXITING, then destroys everything.
+ * - Lifecycle as hol_xr_life says (hol_xr_room.h): READY begins the
+ *   session, STOPPING ends it, EXITING and LOSS_PENDING tear it down and
+ *   return; a STOPPING the app did not ask for (headset off, app in the
+ *   background) waits for READY again. Quitting (the app's quit,
+ *   desc.frames reached, or fns->poll_platform) calls
+ *   xrRequestExitSession and goes on until STOPPING (xrEndSession) and
+ *   EXITING, then destroys everything; without a running session it
+ *   leaves at once. A runtime that goes away (xrPollEvent fails) is a
+ *   failure.
  * - Safety: an eye outside the room sees only the boundary colour (the
  *   world is not drawn and never moves); the HUD status warns.
  * - Everything is allocated before the first frame; frames allocate
@@ -64,7 +70,9 @@ typedef struct hol_xr_desc {
     void *android_vm, *android_activity;
 } hol_xr_desc;
 
-/* 0 ok, 1 failure (one line on stderr). */
+/* 0 ok, 1 failure (one line on stderr). A platform that makes its own
+ * instance and GL context runs the same loop with hol_xr_run_session
+ * (hol_xr_session.h). */
 int hol_xr_run(const hol_xr_desc *desc, const hol_xr_app_fns *fns);
 
 #endif

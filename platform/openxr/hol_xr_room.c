@@ -66,6 +66,24 @@ int hol_xr_bounds_hold_room(float width, float depth)
     return width >= 3.0f && depth >= 3.0f;
 }
 
+double hol_xr_fade(const double eye[2][3], double margin)
+{
+    double ramp = margin - HOL_XR_FADE_FULL, f = 0;
+    for (int e = 0; e < 2; e++) {
+        if (!isfinite(eye[e][0]) || !isfinite(eye[e][2]))
+            return 1; /* not a position: nothing safe to show */
+        double d = 0;
+        for (int k = 0; k <= 2; k += 2) {
+            double lo = margin - eye[e][k], hi = eye[e][k] - (3 - margin);
+            d = lo > d ? lo : d;
+            d = hi > d ? hi : d;
+        }
+        double fe = ramp > 0 ? d / ramp : (d > 0 ? 1 : 0);
+        f = fe > f ? fe : f;
+    }
+    return f > 1 ? 1 : f;
+}
+
 hol_xr_do hol_xr_lifecycle(int state, int *out_running, int *out_focused)
 {
     *out_focused = state == HOL_XR_STATE_FOCUSED;
@@ -89,4 +107,24 @@ hol_xr_do hol_xr_lifecycle(int state, int *out_running, int *out_focused)
         *out_running = 0;
         return HOL_XR_DO_NOTHING;
     }
+}
+
+hol_xr_do hol_xr_life_event(hol_xr_life *l, int state)
+{
+    l->state = state;
+    hol_xr_do d = hol_xr_lifecycle(state, &l->running, &l->focused);
+    if (d == HOL_XR_DO_TEAR_DOWN)
+        l->done = 1;
+    return d;
+}
+
+hol_xr_quit hol_xr_life_quit(hol_xr_life *l)
+{
+    if (l->quit_requested || l->done)
+        return HOL_XR_QUIT_NONE;
+    l->quit_requested = 1;
+    if (l->running)
+        return HOL_XR_QUIT_REQUEST_EXIT;
+    l->done = 1;
+    return HOL_XR_QUIT_LEAVE;
 }

@@ -14,6 +14,7 @@
  * - Stage bounds (xrGetReferenceSpaceBoundsRect, full width and depth):
  *   smaller than 3 x 3 m in either direction is a warning; none is not an
  *   error.
+ * - Safety: hol_xr_fade says how far the view fades to the boundary.
  * - Lifecycle: hol_xr_lifecycle maps each session state (the XrSessionState
  *   values, mirrored below) to what the platform must do: READY begins the
  *   session, STOPPING ends it, EXITING and LOSS_PENDING tear it down; the
@@ -42,6 +43,17 @@ void hol_xr_recentre(hol_xr_calib *c, const float head_pos[3], const float head_
 /* 1 when the stage bounds (metres) hold the room, 0 when smaller (warn). */
 int hol_xr_bounds_hold_room(float width, float depth);
 
+/* The safety fade of the view (hol_frame_desc.fade) for the tracked,
+ * unclamped eyes' room positions: 0 while every eye's floor point lies in
+ * the square `margin` metres inside the hedges (where the app's head moves
+ * freely; the motion's margin), rising linearly with the distance beyond it
+ * to 1 at HOL_XR_FADE_FULL metres inside the boundary, and 1 beyond: the
+ * view is gone before an eye leaves the room, and the world never moves
+ * (the eyes are drawn where they are; the app's head stays clamped). One
+ * value for both eyes, the larger. */
+#define HOL_XR_FADE_FULL 0.05
+double hol_xr_fade(const double eye[2][3], double margin);
+
 /* XrSessionState values (OpenXR 1.0, section 10.3). */
 enum {
     HOL_XR_STATE_IDLE = 1,
@@ -65,5 +77,34 @@ typedef enum hol_xr_do {
  * (xrWaitFrame/xrBeginFrame/xrEndFrame) and *out_focused whether the game
  * has the input (not paused). */
 hol_xr_do hol_xr_lifecycle(int state, int *out_running, int *out_focused);
+
+/* The whole session lifecycle as a state machine fed by events (zero it
+ * to start):
+ * - hol_xr_life_event(l, state) on each session state change: the action
+ *   (hol_xr_lifecycle's), and l->done once the session must be destroyed
+ *   and the platform leave (EXITING, LOSS_PENDING). A STOPPING the app did
+ *   not ask for (the headset taken off, the app sent to the background)
+ *   ends the session and waits: READY begins it again.
+ * - hol_xr_life_quit(l) when the app or the platform wants to leave:
+ *   HOL_XR_QUIT_REQUEST_EXIT (call xrRequestExitSession; then STOPPING,
+ *   EXITING come as events) while the session runs, HOL_XR_QUIT_LEAVE
+ *   (l->done: destroy it now) while it does not, HOL_XR_QUIT_NONE when
+ *   already asked. */
+typedef struct hol_xr_life {
+    int state;          /* the last session state (0: none yet) */
+    int running;        /* frames run */
+    int focused;        /* the game has the input */
+    int quit_requested; /* xrRequestExitSession was called */
+    int done;           /* destroy the session and leave */
+} hol_xr_life;
+
+typedef enum hol_xr_quit {
+    HOL_XR_QUIT_NONE = 0,
+    HOL_XR_QUIT_REQUEST_EXIT,
+    HOL_XR_QUIT_LEAVE
+} hol_xr_quit;
+
+hol_xr_do hol_xr_life_event(hol_xr_life *l, int state);
+hol_xr_quit hol_xr_life_quit(hol_xr_life *l);
 
 #endif

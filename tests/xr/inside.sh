@@ -27,8 +27,10 @@ fail=0
 check() { if eval "$2"; then echo "xr-test: ok: $1"; else echo "xr-test: FAIL: $1"; fail=1; fi; }
 printf 'mode flag\nseed 5\nflag Wrf\nminimap off\ncues none\n' >"$out/level.txt"
 # scripted head motion (the simulated headset does not move): from the
-# middle cell's centre 1 m north over 100 frames, across the cell edge
+# middle cell's centre 1 m north over 100 frames, across the cell edge;
+# from frame 120 on, on through the north hedge to 0.25 m outside the room
 awk 'BEGIN { for (k = 0; k < 150; k++) { z = 1.5 - (k < 100 ? k : 100) / 100.0;
+     if (k >= 120) z = 0.5 - (k - 120) * 0.025;
      printf "%.4f f=9 h=1.5,1.6,%.4f,0,0,0,1\n", k / 72.0, z } }' >"$out/head.txt"
 start=$(date +%s)
 env DISPLAY=:77 XR_ENABLE_API_LAYERS=XR_APILAYER_LUNARG_core_validation \
@@ -59,6 +61,17 @@ check "no VALID_ERROR or VALID_WARNING from the validation layer" \
     '! grep -q "VALID_ERROR\|VALID_WARNING" $all'
 check "the scripted head walked a room step north (steps log)" \
     'grep -q ",N," "$out/logs/steps-001.csv"'
+nf=$(sed -n 's/^xr: frames submitted .* faded at the boundary \([0-9]*\).*/\1/p' "$out/xr.out")
+check "the head through the hedge faded the view (${nf:-no} frames)" '[ "${nf:-0}" -ge 10 ]'
+check "and the world did not move: one room step in all (steps log)" \
+    '[ "$(grep -c ",N," "$out/logs/steps-001.csv")" = 1 ] && [ "$(wc -l <"$out/logs/steps-001.csv")" = 2 ]'
+# the input flags follow the session state: frames before FOCUSED (the
+# session begins SYNCHRONIZED) lack HOL_INPUT_FOCUSED (8): the app pauses
+awk '!/^(L |level |end$|holonomy-rec)/ { f = substr($2, length($2), 1); v = index("0123456789abcdef", f) - 1;
+     if (v % 16 >= 8) foc++; else unf++ } END { print unf + 0, foc + 0 }' "$out/session.rec" >"$out/focus"
+read -r unf foc <"$out/focus"
+check "frames before FOCUSED recorded without focus ($unf unfocused, $foc focused)" \
+    '[ "$unf" -ge 1 ] && [ "$foc" -ge 120 ]'
 check "the session's logs were written" '[ -s "$out/logs/summary.csv" ]'
 check "the recording replays headless" \
     'mkdir -p "$out/replay-logs" && "$BIN" replay "$out/session.rec" --log "$out/replay-logs" >/dev/null 2>&1 && cmp -s "$out/logs/summary.csv" "$out/replay-logs/summary.csv"'

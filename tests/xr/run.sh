@@ -20,11 +20,28 @@ mountpoint -q "$CHROOT/proc" || mount --bind /proc "$CHROOT/proc"
 mountpoint -q "$CHROOT/dev" || mount --bind /dev "$CHROOT/dev"
 rm -rf "$CHROOT/src"
 mkdir -p "$CHROOT/src"
-(cd "$root" && git ls-files -z | xargs -0 tar -cf - 2>/dev/null) | tar -C "$CHROOT/src" -xf -
+(cd "$root" && git ls-files -z --cached --others --exclude-standard | xargs -0 tar -cf - 2>/dev/null) | tar -C "$CHROOT/src" -xf -
 chroot "$CHROOT" sh -c 'cd /src && make -s -j2 BUILD=build/xr XR=1 build/xr/holonomy' || {
     echo "xr-test: FAIL: building holonomy with XR=1 in the chroot" >&2; exit 1; }
 echo "xr-test: built in the chroot ($(( $(date +%s) - start )) s)"
-chroot "$CHROOT" sh -c 'cd /src && timeout 600 sh tests/xr/inside.sh build/xr/holonomy'
-rc=$?
+rc=0
+chroot "$CHROOT" sh -c 'cd /src && timeout 600 sh tests/xr/inside.sh build/xr/holonomy' || rc=1
+# The host's half: the eye read back from the swapchain in the chroot
+# against the host build's `holonomy render` of the same eye pose (another
+# process, another Mesa, the CLI's pose arguments), within png_diff's
+# tolerance (tests/xr/png_diff.c: the render goldens').
+out="$CHROOT/tmp/xr-test"
+args=$(sed -n 's/^xr: check eye 0 render //p' "$out/xr.out")
+walk=$(awk -F, 'NR > 1 { printf "%s", $7 }' "$out/logs/steps-001.csv" 2>/dev/null)
+seed=$(sed -n 's/^seed //p' "$out/level.txt")
+if [ -n "$args" ] && [ -n "${HOLONOMY:-}" ] && [ -n "${PNG_DIFF:-}" ] &&
+   # shellcheck disable=SC2086
+   "$HOLONOMY" render --walk "${walk:--}" --seed "$seed" $args --out "$out/check/host-eye0.png" &&
+   d=$("$PNG_DIFF" "$out/check/xr-eye0.png" "$out/check/host-eye0.png"); then
+    echo "xr-test: ok: swapchain read back equals the host's holonomy render --walk ${walk:--} (same eye): $d"
+else
+    echo "xr-test: FAIL: swapchain read back against the host's holonomy render: ${d:-no comparison}"
+    rc=1
+fi
 echo "xr-test: done in $(( $(date +%s) - start )) s"
 exit $rc

@@ -1,0 +1,149 @@
+/* hol_xr_gfx.c - the headset's GL context and its OpenXR graphics binding
+ * (GLX on Linux, EGL on Android; see hol_xr_impl.h). */
+#define _GNU_SOURCE
+#include "hol_xr_impl.h"
+
+/* OpenXR structs are initialised by their type alone ({XR_TYPE_...}), the
+ * rest zero: the API's own idiom. */
+#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* ---- graphics: the GL context and its binding ---------------------------- */
+
+#ifdef __ANDROID__
+int hol__graphics(hol__xr *x, hol__binding *b)
+{
+    PFN_xrGetOpenGLESGraphicsRequirementsKHR req_fn = NULL;
+    HOL__XR(x, xrGetInstanceProcAddr(x->instance, "xrGetOpenGLESGraphicsRequirementsKHR",
+                                     (PFN_xrVoidFunction *)&req_fn));
+    XrGraphicsRequirementsOpenGLESKHR req = {XR_TYPE_GRAPHICS_REQUIREMENTS_OPENGL_ES_KHR};
+    HOL__XR(x, req_fn(x->instance, x->system, &req));
+    x->edpy = eglGetDisplay(EGL_DEFAULT_DISPLAY);
+    if (!eglInitialize(x->edpy, NULL, NULL))
+        return hol__fail(x, "eglInitialize", XR_ERROR_RUNTIME_FAILURE);
+    const EGLint attr[] = {EGL_RENDERABLE_TYPE, 0x40 /* EGL_OPENGL_ES3_BIT */, EGL_SURFACE_TYPE,
+                           EGL_PBUFFER_BIT, EGL_RED_SIZE, 8, EGL_GREEN_SIZE, 8, EGL_BLUE_SIZE, 8,
+                           EGL_ALPHA_SIZE, 8, EGL_DEPTH_SIZE, 24, EGL_STENCIL_SIZE, 8, EGL_NONE};
+    EGLConfig cfg;
+    EGLint n = 0;
+    if (!eglChooseConfig(x->edpy, attr, &cfg, 1, &n) || n < 1)
+        return hol__fail(x, "eglChooseConfig", XR_ERROR_RUNTIME_FAILURE);
+    const EGLint cattr[] = {EGL_CONTEXT_CLIENT_VERSION, 3, EGL_NONE};
+    x->ectx = eglCreateContext(x->edpy, cfg, EGL_NO_CONTEXT, cattr);
+    const EGLint sattr[] = {EGL_WIDTH, 16, EGL_HEIGHT, 16, EGL_NONE};
+    x->esurf = eglCreatePbufferSurface(x->edpy, cfg, sattr);
+    if (x->ectx == EGL_NO_CONTEXT || !eglMakeCurrent(x->edpy, x->esurf, x->esurf, x->ectx))
+        return hol__fail(x, "eglMakeCurrent", XR_ERROR_RUNTIME_FAILURE);
+    x->getproc = (hol_render_getproc)eglGetProcAddress;
+    b->type = XR_TYPE_GRAPHICS_BINDING_OPENGL_ES_ANDROID_KHR;
+    b->next = NULL;
+    b->display = x->edpy;
+    b->config = cfg;
+    b->context = x->ectx;
+    return 0;
+}
+#else
+typedef GLXContext (*hol__create_ctx_fn)(Display *, GLXFBConfig, GLXContext, Bool, const int *);
+
+int hol__graphics(hol__xr *x, hol__binding *b)
+{
+    PFN_xrGetOpenGLGraphicsRequirementsKHR req_fn = NULL;
+    HOL__XR(x, xrGetInstanceProcAddr(x->instance, "xrGetOpenGLGraphicsRequirementsKHR",
+                                     (PFN_xrVoidFunction *)&req_fn));
+    XrGraphicsRequirementsOpenGLKHR req = {XR_TYPE_GRAPHICS_REQUIREMENTS_OPENGL_KHR};
+    HOL__XR(x, req_fn(x->instance, x->system, &req));
+    x->dpy = XOpenDisplay(NULL);
+    if (!x->dpy) {
+        fprintf(stderr, "holonomy xr: cannot open the X display (DISPLAY=%s)\n",
+                getenv("DISPLAY") ? getenv("DISPLAY") : "");
+        return 1;
+    }
+    const int attr[] = {GLX_X_RENDERABLE, True, GLX_DRAWABLE_TYPE, GLX_WINDOW_BIT,
+                        GLX_RENDER_TYPE, GLX_RGBA_BIT, GLX_RED_SIZE, 8, GLX_GREEN_SIZE, 8,
+                        GLX_BLUE_SIZE, 8, GLX_ALPHA_SIZE, 8, GLX_DEPTH_SIZE, 24,
+                        GLX_STENCIL_SIZE, 8, GLX_DOUBLEBUFFER, True, None};
+    int n = 0;
+    GLXFBConfig *cfgs = glXChooseFBConfig(x->dpy, DefaultScreen(x->dpy), attr, &n);
+    if (!cfgs || n < 1) {
+        fprintf(stderr, "holonomy xr: no GLX frame buffer configuration with depth and stencil\n");
+        return 1;
+    }
+    x->cfg = cfgs[0];
+    XFree(cfgs);
+    XVisualInfo *vi = glXGetVisualFromFBConfig(x->dpy, x->cfg);
+    if (!vi) {
+        fprintf(stderr, "holonomy xr: no X visual for the GLX configuration\n");
+        return 1;
+    }
+    XSetWindowAttributes swa;
+    memset(&swa, 0, sizeof swa);
+    x->cmap = XCreateColormap(x->dpy, RootWindow(x->dpy, vi->screen), vi->visual, AllocNone);
+    swa.colormap = x->cmap;
+    x->win = XCreateWindow(x->dpy, RootWindow(x->dpy, vi->screen), 0, 0, 16, 16, 0, vi->depth,
+                           InputOutput, vi->visual, CWColormap, &swa);
+    VisualID visualid = vi->visualid;
+    XFree(vi);
+    hol__create_ctx_fn create = (hol__create_ctx_fn)glXGetProcAddressARB(
+        (const GLubyte *)"glXCreateContextAttribsARB");
+    if (!create) {
+        fprintf(stderr, "holonomy xr: GLX has no glXCreateContextAttribsARB\n");
+        return 1;
+    }
+    /* a core context at the runtime's minimum or 4.5, whichever is higher */
+    int major = (int)XR_VERSION_MAJOR(req.minApiVersionSupported);
+    int minor = (int)XR_VERSION_MINOR(req.minApiVersionSupported);
+    if (major < 4 || (major == 4 && minor < 5))
+        major = 4, minor = 5;
+    const int cattr[] = {GLX_CONTEXT_MAJOR_VERSION_ARB, major, GLX_CONTEXT_MINOR_VERSION_ARB,
+                         minor, GLX_CONTEXT_PROFILE_MASK_ARB, GLX_CONTEXT_CORE_PROFILE_BIT_ARB,
+                         None};
+    x->ctx = create(x->dpy, x->cfg, NULL, True, cattr);
+    if (!x->ctx || !glXMakeCurrent(x->dpy, x->win, x->ctx)) {
+        fprintf(stderr, "holonomy xr: cannot make a GL %d.%d core context current\n", major,
+                minor);
+        return 1;
+    }
+    x->getproc = (hol_render_getproc)glXGetProcAddressARB;
+    b->type = XR_TYPE_GRAPHICS_BINDING_OPENGL_XLIB_KHR;
+    b->next = NULL;
+    b->xDisplay = x->dpy;
+    b->visualid = (uint32_t)visualid;
+    b->glxFBConfig = x->cfg;
+    b->glxDrawable = x->win;
+    b->glxContext = x->ctx;
+    return 0;
+}
+#endif
+
+int hol__load_gl(hol__xr *x)
+{
+#define HOL__LOAD(f)                                                                          \
+    do {                                                                                      \
+        hol_render_proc p = x->getproc("gl" #f);                                              \
+        if (!p) {                                                                             \
+            fprintf(stderr, "holonomy xr: GL has no gl%s\n", #f);                             \
+            return 1;                                                                         \
+        }                                                                                     \
+        memcpy(&x->gl.f, &p, sizeof p);                                                       \
+    } while (0)
+    HOL__LOAD(GenFramebuffers);
+    HOL__LOAD(BindFramebuffer);
+    HOL__LOAD(FramebufferTexture2D);
+    HOL__LOAD(GenRenderbuffers);
+    HOL__LOAD(BindRenderbuffer);
+    HOL__LOAD(RenderbufferStorage);
+    HOL__LOAD(FramebufferRenderbuffer);
+    HOL__LOAD(CheckFramebufferStatus);
+    HOL__LOAD(DeleteFramebuffers);
+    HOL__LOAD(DeleteRenderbuffers);
+    HOL__LOAD(Viewport);
+    HOL__LOAD(ClearColor);
+    HOL__LOAD(Clear);
+    HOL__LOAD(Finish);
+#undef HOL__LOAD
+    return 0;
+}
+

@@ -1,0 +1,137 @@
+/* test_render_fade.c - the safety fade of hol_frame_desc (the headset's
+ * boundary): each pixel of a faded frame is the unfaded pixel blended
+ * towards the fade colour by exactly `fade` (the model: a*(1-f) + c*f per
+ * channel, within 1/255 of rounding); a full fade is the colour alone and
+ * needs no view, so an eye outside the room renders; the HUD text stays on
+ * top of the fade. */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdlib.h>
+
+#include <cmocka.h>
+
+#include "render_fixture.h"
+
+#define W 96
+#define H 72
+
+static render_fixture fx;
+static uint8_t img_a[W * H * 4], img_b[W * H * 4];
+
+static int setup(void **state)
+{
+    (void)state;
+    return render_fixture_make(&fx, W, H, 7);
+}
+
+static int teardown(void **state)
+{
+    (void)state;
+    render_fixture_destroy(&fx);
+    return 0;
+}
+
+static hol_frame_desc frame(double fade, int flags)
+{
+    hol_frame_desc f;
+    memset(&f, 0, sizeof f);
+    f.user = hol_room_start();
+    f.cam.eye[0] = 1.5;
+    f.cam.eye[1] = 1.6;
+    f.cam.eye[2] = 1.5;
+    f.cam.pitch_deg = -20;
+    f.cam.width = W;
+    f.cam.height = H;
+    f.flags = flags;
+    f.fade = fade;
+    return f;
+}
+
+static void render(const hol_frame_desc *f, uint8_t *out)
+{
+    assert_int_equal(hol_render_frame(fx.rnd, f, NULL), HOL_OK);
+    hol_render_read_rgba(fx.rnd, W, H, out);
+}
+
+static void test_partial_fade_blends_every_pixel(void **state)
+{
+    (void)state;
+    static const uint8_t c[3] = HOL_RENDER_FADE_RGB;
+    hol_frame_desc f0 = frame(0, HOL_RENDER_NO_HUD);
+    render(&f0, img_a);
+    const double fades[3] = {0.25, 0.5, 0.8};
+    for (int k = 0; k < 3; k++) {
+        hol_frame_desc f = frame(fades[k], HOL_RENDER_NO_HUD);
+        render(&f, img_b);
+        int worst = 0;
+        long changed = 0;
+        for (int p = 0; p < W * H; p++)
+            for (int ch = 0; ch < 3; ch++) {
+                double want = img_a[4 * p + ch] * (1 - fades[k]) + c[ch] * fades[k];
+                int d = abs(img_b[4 * p + ch] - (int)(want + 0.5));
+                worst = d > worst ? d : worst;
+                changed += img_b[4 * p + ch] != img_a[4 * p + ch];
+            }
+        assert_true(worst <= 1);
+        assert_true(changed > W * H); /* the fade did something */
+    }
+}
+
+static void test_full_fade_is_the_colour_anywhere(void **state)
+{
+    (void)state;
+    static const uint8_t def[3] = HOL_RENDER_FADE_RGB;
+    hol_frame_desc f = frame(1, 0);
+    f.cam.eye[0] = -0.7; /* outside the room: no view could be built */
+    f.cam.eye[2] = 3.4;
+    /* without the fade the renderer refuses that eye */
+    hol_frame_desc g = f;
+    g.fade = 0;
+    assert_int_equal(hol_render_frame(fx.rnd, &g, NULL), HOL_EARG);
+    hol_render_stats st;
+    assert_int_equal(hol_render_frame(fx.rnd, &f, &st), HOL_OK);
+    assert_int_equal(st.draw_calls, 0);
+    hol_render_read_rgba(fx.rnd, W, H, img_a);
+    for (int p = 0; p < W * H; p++)
+        for (int ch = 0; ch < 3; ch++)
+            assert_int_equal(img_a[4 * p + ch], def[ch]);
+    f.fade_rgb[0] = 200;
+    f.fade_rgb[1] = 10;
+    f.fade_rgb[2] = 30;
+    render(&f, img_a);
+    for (int p = 0; p < W * H; p++)
+        for (int ch = 0; ch < 3; ch++)
+            assert_int_equal(img_a[4 * p + ch], f.fade_rgb[ch]);
+}
+
+static void test_hud_text_stays_over_the_fade(void **state)
+{
+    (void)state;
+    hol_frame_desc f = frame(0.9, HOL_RENDER_MINIMAP);
+    render(&f, img_a);
+    f.hud_lines[0] = "STEP BACK INTO THE ROOM";
+    f.nhud_lines = 1;
+    render(&f, img_b);
+    /* the text's pixels are not faded: some differ from the faded frame
+     * by far more than the 10 % of the scene left under the fade */
+    long text = 0;
+    for (int p = 0; p < W * H; p++) {
+        int d = 0;
+        for (int ch = 0; ch < 3; ch++)
+            d += abs(img_b[4 * p + ch] - img_a[4 * p + ch]);
+        text += d > 150;
+    }
+    assert_true(text > 20);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_partial_fade_blends_every_pixel),
+        cmocka_unit_test(test_full_fade_is_the_colour_anywhere),
+        cmocka_unit_test(test_hud_text_stays_over_the_fade),
+    };
+    return cmocka_run_group_tests(tests, setup, teardown);
+}

@@ -1,0 +1,150 @@
+/* test_xr_bind.c - the headset's suggested bindings and button mapping
+ * (platform/openxr/hol_xr_bind.h), without a runtime. The model: the input
+ * paths each interaction profile defines, copied from the OpenXR 1.0
+ * specification (section 6.4, "Interaction Profile Paths"); a binding
+ * outside its profile's list is what a runtime refuses with
+ * XR_ERROR_PATH_UNSUPPORTED. */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "../core/hol_input.h"
+#include "../platform/openxr/hol_xr_bind.h"
+
+typedef struct spec_profile {
+    const char *name;
+    const char *left[16], *right[16]; /* input/... components per hand */
+} spec_profile;
+
+static const spec_profile spec[] = {
+    {"/interaction_profiles/khr/simple_controller",
+     {"select/click", "menu/click", "grip/pose", "aim/pose"},
+     {"select/click", "menu/click", "grip/pose", "aim/pose"}},
+    {"/interaction_profiles/oculus/touch_controller",
+     {"x/click", "x/touch", "y/click", "y/touch", "menu/click", "squeeze/value",
+      "trigger/value", "trigger/touch", "thumbstick/x", "thumbstick/y", "thumbstick/click",
+      "thumbstick/touch", "thumbrest/touch", "grip/pose", "aim/pose"},
+     {"a/click", "a/touch", "b/click", "b/touch", "system/click", "squeeze/value",
+      "trigger/value", "trigger/touch", "thumbstick/x", "thumbstick/y", "thumbstick/click",
+      "thumbstick/touch", "thumbrest/touch", "grip/pose", "aim/pose"}},
+    {"/interaction_profiles/htc/vive_controller",
+     {"system/click", "squeeze/click", "menu/click", "trigger/click", "trigger/value",
+      "trackpad/x", "trackpad/y", "trackpad/click", "trackpad/touch", "grip/pose", "aim/pose"},
+     {"system/click", "squeeze/click", "menu/click", "trigger/click", "trigger/value",
+      "trackpad/x", "trackpad/y", "trackpad/click", "trackpad/touch", "grip/pose", "aim/pose"}},
+    {"/interaction_profiles/valve/index_controller",
+     {"system/click", "system/touch", "a/click", "a/touch", "b/click", "b/touch",
+      "squeeze/value", "squeeze/force", "trigger/click", "trigger/value", "trigger/touch",
+      "thumbstick/click", "trackpad/force", "grip/pose", "aim/pose"},
+     {"system/click", "system/touch", "a/click", "a/touch", "b/click", "b/touch",
+      "squeeze/value", "squeeze/force", "trigger/click", "trigger/value", "trigger/touch",
+      "thumbstick/click", "trackpad/force", "grip/pose", "aim/pose"}},
+    {"/interaction_profiles/microsoft/motion_controller",
+     {"menu/click", "squeeze/click", "trigger/value", "thumbstick/x", "thumbstick/y",
+      "thumbstick/click", "trackpad/x", "trackpad/y", "trackpad/click", "trackpad/touch",
+      "grip/pose", "aim/pose"},
+     {"menu/click", "squeeze/click", "trigger/value", "thumbstick/x", "thumbstick/y",
+      "thumbstick/click", "trackpad/x", "trackpad/y", "trackpad/click", "trackpad/touch",
+      "grip/pose", "aim/pose"}},
+};
+#define NSPEC (sizeof spec / sizeof spec[0])
+
+/* 1 when path is "/user/hand/{left,right}/input/" + a component the
+ * profile defines for that hand */
+static int spec_has(const spec_profile *p, const char *path)
+{
+    static const char *const pre[2] = {"/user/hand/left/input/", "/user/hand/right/input/"};
+    for (int h = 0; h < 2; h++) {
+        size_t n = strlen(pre[h]);
+        if (strncmp(path, pre[h], n))
+            continue;
+        const char *const *c = h ? p->right : p->left;
+        for (int i = 0; i < 16 && c[i]; i++)
+            if (!strcmp(path + n, c[i]))
+                return 1;
+    }
+    return 0;
+}
+
+static const spec_profile *spec_of(const char *name)
+{
+    for (size_t i = 0; i < NSPEC; i++)
+        if (!strcmp(spec[i].name, name))
+            return &spec[i];
+    return NULL;
+}
+
+static void test_the_five_profiles(void **state)
+{
+    (void)state;
+    const hol_xr_profile *p = hol_xr_profiles();
+    assert_int_equal(HOL_XR_NPROFILES, NSPEC);
+    for (size_t i = 0; i < NSPEC; i++) {
+        int seen = 0;
+        for (int k = 0; k < HOL_XR_NPROFILES; k++)
+            seen += !strcmp(p[k].profile, spec[i].name);
+        assert_int_equal(seen, 1);
+    }
+}
+
+static void test_every_binding_is_in_its_profile(void **state)
+{
+    (void)state;
+    const hol_xr_profile *p = hol_xr_profiles();
+    for (int k = 0; k < HOL_XR_NPROFILES; k++) {
+        const spec_profile *s = spec_of(p[k].profile);
+        assert_non_null(s);
+        for (int h = 0; h < 2; h++)
+            assert_true(spec_has(s, hol_xr_grip_path(h)));
+        for (int a = 0; a < HOL_XR_ACT_COUNT; a++) {
+            assert_non_null(p[k].path[a]);
+            if (!spec_has(s, p[k].path[a]))
+                fail_msg("%s: %s not in the profile", p[k].profile, p[k].path[a]);
+            /* one physical input, one action */
+            for (int b = 0; b < a; b++)
+                assert_string_not_equal(p[k].path[a], p[k].path[b]);
+        }
+        /* confirm is on the right hand (the minimap hand is the left) */
+        assert_true(!strncmp(p[k].path[HOL_XR_ACT_CONFIRM], "/user/hand/right/", 17));
+    }
+    /* the model catches a wrong path */
+    assert_false(spec_has(spec_of("/interaction_profiles/khr/simple_controller"),
+                          "/user/hand/right/input/a/click"));
+    assert_false(spec_has(spec_of("/interaction_profiles/oculus/touch_controller"),
+                          "/user/hand/right/input/x/click"));
+}
+
+static void test_buttons(void **state)
+{
+    (void)state;
+    static const uint32_t want[HOL_XR_ACT_COUNT] = {HOL_BTN_CONFIRM, HOL_BTN_MENU,
+                                                     HOL_BTN_RECENTRE, HOL_BTN_MINIMAP};
+    for (unsigned m = 0; m < 1u << HOL_XR_ACT_COUNT; m++) {
+        int held[HOL_XR_ACT_COUNT];
+        uint32_t expect = 0;
+        for (int a = 0; a < HOL_XR_ACT_COUNT; a++) {
+            held[a] = (int)(m >> a & 1) * (a + 1); /* any nonzero is held */
+            expect |= held[a] ? want[a] : 0;
+        }
+        assert_int_equal(hol_xr_buttons(held), expect);
+    }
+    for (int a = 0; a < HOL_XR_ACT_COUNT; a++) {
+        assert_true(strlen(hol_xr_action_name(a)) > 0);
+        assert_true(strlen(hol_xr_action_label(a)) > 0);
+    }
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_the_five_profiles),
+        cmocka_unit_test(test_every_binding_is_in_its_profile),
+        cmocka_unit_test(test_buttons),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
