@@ -43,7 +43,8 @@ XR_LIBS := $(if $(filter 1,$(XR)),-lopenxr_loader -lGL -lX11)
 ifeq ($(XR),1)
 $(BUILD)/platform/cli/cmd_xr.o: override CFLAGS += -DHOL_XR
 endif
-HID_SRC  := platform/hid/hol_hid_desc.c platform/hid/hol_hid_pad.c platform/hid/hol_hid_link.c
+HID_SRC  := platform/hid/hol_hid_desc.c platform/hid/hol_hid_pad.c platform/hid/hol_hid_link.c \
+            platform/hid/hol_hid_script.c
 HID_DEV_SRC := platform/hid/hol_hid_dev.c
 # hidapi backend: hidraw (default, Linux hidraw nodes) or `make HID=libusb`
 # (libusb, where hidraw is not available; detaches the kernel driver).
@@ -138,9 +139,10 @@ $(BENCH_RENDER_BIN): $(BUILD)/bench/%: tests/%.c $(PLAT_OBJ) $(RENDER_LIB) $(COR
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) -DNDEBUG -o $@ $< $(PLAT_OBJ) $(RENDER_LIB) $(CORE_LIB) $(LDFLAGS) $(RENDER_LIBS) $(LDLIBS)
 
-$(BUILD)/bench/bench_hid: tests/bench_hid.c tests/hid_samples.h $(HID_SRC)
+$(BUILD)/bench/bench_hid: tests/bench_hid.c tests/hid_samples.h $(HID_SRC) $(HID_DEV_SRC)
 	@mkdir -p $(dir $@)
-	$(CC) $(CSTD) $(WARN) -O2 -DNDEBUG -D_DEFAULT_SOURCE -o $@ $< $(HID_SRC) $(LDLIBS)
+	$(CC) $(CSTD) $(WARN) -O2 -DNDEBUG -D_DEFAULT_SOURCE -o $@ $< $(HID_SRC) $(HID_DEV_SRC) \
+	  $(HID_LIBS) $(LDLIBS)
 
 $(BUILD)/bench/%: tests/%.c $(CORE_SRC)
 	@mkdir -p $(dir $@)
@@ -153,6 +155,7 @@ FUZZ_EXTRA_fuzz_recording := $(LEVEL_SRC)
 FUZZ_EXTRA_fuzz_cli := $(LEVEL_SRC)
 FUZZ_EXTRA_fuzz_hid_desc := $(HID_SRC)
 FUZZ_EXTRA_fuzz_hid_report := $(HID_SRC)
+FUZZ_EXTRA_fuzz_hid_script := $(HID_SRC) $(HID_DEV_SRC) $(HID_LIBS)
 $(BUILD)/fuzz/%: fuzz/%.c $(wildcard fuzz/*.h) $(CORE_SRC) $(RENDER_SRC) $(HID_SRC) $(PLAT_SRC) $(CLI_SRC)
 	@mkdir -p $(dir $@)
 	$(FUZZ_CC) $(CSTD) -g -O1 -D_DEFAULT_SOURCE -fsanitize=fuzzer,address,undefined \

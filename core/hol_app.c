@@ -469,6 +469,9 @@ static void hol__fill_view(hol_app *app, const hol_input *in)
             snprintf(h->status, sizeof h->status, "Done: %d steps, best %d, %ld:%02ld",
                      app->steps, app->optimum, secs / 60 % 100000, secs % 60);
         snprintf(h->hint, sizeof h->hint, "Confirm: next level, restart: again");
+    } else if (v->paused && in && (in->flags & HOL_INPUT_DEVICE_LOST) && !app->menu) {
+        snprintf(h->status, sizeof h->status, "Controller lost");
+        snprintf(h->hint, sizeof h->hint, "Plug it back in, or press a key");
     } else if (v->paused) {
         snprintf(h->status, sizeof h->status, "Paused");
         if (app->menu)

@@ -118,7 +118,8 @@ typedef enum hol_app_state {
 /* The HUD model: filled at the step, drawn as is. */
 typedef struct hol_app_hud {
     char objective[HOL_APP_TEXT_MAX]; /* "Find the flag", "Keys 2/3", ... */
-    char status[HOL_APP_TEXT_MAX];    /* "Paused", "Done: 14 steps, best 12, 0:42", "" */
+    char status[HOL_APP_TEXT_MAX];    /* "Paused", "Controller lost" (device
+                                         lost), "Done: 14 steps, ...", "" */
     char hint[HOL_APP_TEXT_MAX];      /* what the buttons do now, or "" */
     char address[HOL_TILE_ADDR_MAX];  /* the current tile */
     int steps;                        /* room steps this level */

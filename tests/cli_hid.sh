@@ -62,5 +62,22 @@ else
   run "watch no device" 1 "$H" hid watch --frames 2 && one_line "watch" "no game controller found"
 fi
 run "watch bad frames" 2 "$H" hid watch --frames 0 && one_line "frames" "--frames"
+# watch on a scripted controller (the recorded Asus pad, tests/hid_samples.h
+# states: report 1 = left stick full left and button 1 (south: confirm,
+# 0x01), report 0 = centred), 10 ms a read: a line a change, then the
+# unplug at 2 s ends it
+run "watch replay" 0 "$H" hid watch --replay "$D/asus_play.pad"
+printf '%s\n' "# 18d1:2c40 scripted controller" \
+    "buttons 0x01 move -1.000 0.004 turn 0.000 0.000" \
+    "buttons 0x00 move 0.000 0.000 turn 0.000 0.000" "# controller lost" >"$T/want"
+cmp -s "$T/out" "$T/want" && ok || bad "watch replay: $(cat "$T/out")"
+run "watch replay frames" 0 "$H" hid watch --replay "$D/asus_play.pad" --frames 100
+[ "$(wc -l <"$T/out")" = 2 ] && ok || bad "watch --frames 100 (1 s): $(cat "$T/out")"
+printf '1 plug 0001:0002 05 01\n' >"$T/late.pad"
+run "watch replay late" 1 "$H" hid watch --replay "$T/late.pad" && one_line "late" "no game controller"
+printf '0 plug 0001:0002 05 01\n0 jump\n' >"$T/bad.pad"
+run "watch replay bad" 2 "$H" hid watch --replay "$T/bad.pad" && one_line "bad script" "line 2"
+run "watch help" 0 "$H" hid watch --help && grep -q -- "--replay FILE" "$T/out" && ok ||
+    bad "hid watch --help lacks --replay"
 
 finish cli_hid

@@ -16,6 +16,16 @@ run "missing level" 2 "$H" play "$T/nope.lvl" && one_line "missing level" "nope.
 run "bad level" 2 "$H" play "$T/bad.lvl" && one_line "bad level" "line 3"
 run "bad seed" 2 "$H" play --seed -1 && one_line "bad seed" "seed"
 run "log not a folder" 2 "$H" play --log "$T/f.lvl" && one_line "log" "not a folder"
+PAD=$(dirname "$0")/hid/asus_play.pad
+printf '0 plug 0001:0002 05 01\n1 report 01\n0.5 report 02\n' >"$T/back.pad"
+run "pad script time back" 2 "$H" play --gamepad-replay "$T/back.pad" && one_line "time back" "line 3"
+printf '# no pad yet\n\n1 unplug\n' >"$T/unplugged.pad"
+run "pad script unplug first" 2 "$H" play --gamepad-replay "$T/unplugged.pad" &&
+    one_line "unplug first" "line 3"
+run "pad script missing" 2 "$H" play --gamepad-replay "$T/nope.pad" && one_line "missing" "nope.pad"
+run "pad script and no pad" 2 "$H" play --gamepad-replay "$PAD" --no-gamepad &&
+    one_line "both" "not both"
+run "pad script no value" 2 "$H" play --gamepad-replay && one_line "no value" "needs a value"
 
 if ! command -v Xvfb >/dev/null 2>&1; then
     echo "note: no Xvfb here: the window is not tested"
@@ -64,6 +74,39 @@ grep -q "^level tutorial playing steps 0 optimum -1 tile O cell 1,1\$" "$T/out" 
 [ "$(grep -c '^L mode keys' "$T/c.rec")" = 2 ] && ok || bad "the campaign has not 2 keys levels"
 run "mode keys" 0 "$H" play --mode keys --seed 0x10 --frames 2 --size 64x48
 grep -q "^level keys-16 playing steps 0 optimum [1-9]" "$T/out" && ok || bad "--mode keys: $(cat "$T/out")"
+
+# a scripted game controller: the stick held left 1 s walks a cell west as
+# the keyboard's strafe would; unplugged at 2 s the game pauses (the input
+# carries HOL_INPUT_DEVICE_LOST: f=18 with focus) until the pad is found
+# again at 3 s; the recording replays to the same end
+awk 'BEGIN { for (k = 0; k < 240; k++) printf "%.17g f=8\n", k / 60 }' >"$T/idle.in"
+run "gamepad walks" 0 "$H" play --mode explore --input "$T/idle.in" --gamepad-replay "$PAD" \
+    --size 64x48 --record "$T/pad.rec"
+grep -q "^level explore-1 playing steps 1 optimum -1 tile W cell 0,1\$" "$T/out" && ok ||
+    bad "gamepad walk: $(cat "$T/out")"
+awk 'BEGIN { for (k = 0; k < 240; k++) printf "%.17g f=8%s\n", k / 60, (k < 60 ? " m=-1,0" : "") }' \
+    >"$T/strafe.in"
+run "keyboard strafe" 0 "$H" play --mode explore --input "$T/strafe.in" --size 64x48 --no-gamepad
+grep -q "^level explore-1 playing steps 1 optimum -1 tile W cell 0,1\$" "$T/out" && ok ||
+    bad "keyboard strafe: $(cat "$T/out")"
+# held left (merged: the pad's axes in the recorded lines) for the first
+# second, then centred; paused exactly from 2 s to the re-enumeration at 3 s
+[ "$(grep -c ' m=-0.99' "$T/pad.rec")" = 60 ] && ok || bad "the stick is not in 60 recorded lines"
+[ "$(grep -c ' f=18' "$T/pad.rec")" = 60 ] && ok || bad "not 60 paused lines"
+grep ' f=18' "$T/pad.rec" | sed -n '1p;$p' | cut -d' ' -f1 | tr '\n' ' ' | grep -q '^2 2.98' && ok ||
+    bad "the pause is not 2 .. 3 s: $(grep ' f=18' "$T/pad.rec" | sed -n '1p;$p')"
+run "gamepad replay" 0 "$H" replay "$T/pad.rec"
+grep -q "^level explore-1 playing steps 1 optimum -1 tile W cell 0,1\$" "$T/out" && ok ||
+    bad "the pad's recording replays: $(cat "$T/out")"
+# unplugged for good: a key resumes (and walks north from 3 s)
+head -n 9 "$PAD" >"$T/gone.pad"
+awk 'BEGIN { for (k = 0; k < 300; k++) printf "%.17g f=8%s\n", k / 60, (k >= 180 ? " m=0,1" : "") }' \
+    >"$T/key.in"
+run "key resumes" 0 "$H" play --mode explore --input "$T/key.in" --gamepad-replay "$T/gone.pad" \
+    --size 64x48 --record "$T/gone.rec"
+[ "$(grep -c ' f=18' "$T/gone.rec")" = 60 ] && ok || bad "key: not 60 paused lines"
+grep -q "^level explore-1 playing steps 2 optimum -1 tile Wr cell 0,0\$" "$T/out" && ok ||
+    bad "key resumes: $(cat "$T/out")"
 kill $XPID 2>/dev/null
 wait $XPID 2>/dev/null
 finish cli_play

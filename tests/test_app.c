@@ -387,6 +387,10 @@ static void test_pause_quit(void **state)
     in.flags |= HOL_INPUT_DEVICE_LOST;
     assert_int_equal(hol_app_step(app, &in), HOL_OK);
     assert_true(v->paused && v->head[2] == z0);
+    /* the HUD says why (the pad went away) and how to go on */
+    assert_string_equal(v->hud.status, "Controller lost");
+    assert_string_equal(v->hud.lines[0], "Controller lost");
+    assert_string_equal(v->hud.hint, "Plug it back in, or press a key");
     in = pancake(0.15, 1, 0);
     in.buttons = HOL_BTN_MENU;
     assert_int_equal(hol_app_step(app, &in), HOL_OK);

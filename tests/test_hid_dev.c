@@ -18,6 +18,7 @@
 #include <stdarg.h>
 #include <stddef.h>
 #include <stdint.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -28,6 +29,7 @@
 #include "../core/hol_app.h"
 #include "../platform/hid/hol_hid_dev.h"
 #include "../platform/hid/hol_hid_link.h"
+#include "../platform/hid/hol_hid_script.h"
 #include "hid_samples.h"
 
 /* ---- the scripted hidapi ------------------------------------------------ */
@@ -302,12 +304,9 @@ static void test_link_merge(void **state)
     assert_true(io.move[1] == 0.5f);
 }
 
-/* The pad walks: the left stick held left, through the device layer, the
- * link and the app step, crosses into the cell west (a room step); an
- * unplug pauses the app (the level clock stops); the keyboard resumes. */
-static void test_stick_walks_and_unplug_pauses(void **state)
+/* An app playing an explore level (seed 4, every cue). */
+static hol_app *explore_app(void)
 {
-    (void)state;
     hol_app *app;
     hol_app_desc ad;
     memset(&ad, 0, sizeof ad);
@@ -317,6 +316,31 @@ static void test_stick_walks_and_unplug_pauses(void **state)
     L.seed = 4;
     L.cues = HOL_CUE_ALL;
     assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    return app;
+}
+
+/* One frame of play's loop with no key: poll the pad, merge, step; the
+ * room steps taken. */
+static int play_frame(hol_app *app, hol_hid_link *l, double t)
+{
+    hol_input in, pad;
+    memset(&in, 0, sizeof in);
+    memset(&pad, 0, sizeof pad);
+    in.time_s = pad.time_s = t;
+    in.flags = HOL_INPUT_FOCUSED;
+    hol_err e = hol_hid_dev_poll(&dev, &pad);
+    hol_hid_link_merge(l, e, dev.lost, &pad, 0, &in);
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    return hol_app_get_events(app)->nsteps;
+}
+
+/* The pad walks: the left stick held left, through the device layer, the
+ * link and the app step, crosses into the cell west (a room step); an
+ * unplug pauses the app (the level clock stops); the keyboard resumes. */
+static void test_stick_walks_and_unplug_pauses(void **state)
+{
+    (void)state;
+    hol_app *app = explore_app();
     fake.present = 1;
     assert_int_equal(hol_hid_dev_open_first(&dev), HOL_OK);
     hol_hid_link l;
@@ -324,17 +348,8 @@ static void test_stick_walks_and_unplug_pauses(void **state)
     queue_report(1); /* left stick full left (and button 1): strafe west */
     double t = 0;
     int steps = 0;
-    for (int f = 0; f < 120; f++, t += 1.0 / 60) {
-        hol_input in, pad;
-        memset(&in, 0, sizeof in);
-        memset(&pad, 0, sizeof pad);
-        in.time_s = pad.time_s = t;
-        in.flags = HOL_INPUT_FOCUSED;
-        hol_err e = hol_hid_dev_poll(&dev, &pad);
-        hol_hid_link_merge(&l, e, dev.lost, &pad, 0, &in);
-        assert_int_equal(hol_app_step(app, &in), HOL_OK);
-        steps += hol_app_get_events(app)->nsteps;
-    }
+    for (int f = 0; f < 120; f++, t += 1.0 / 60)
+        steps += play_frame(app, &l, t);
     const hol_app_view *v = hol_app_get_view(app);
     assert_true(steps >= 1);
     assert_int_equal(v->user.col, 0); /* walked a cell west */
@@ -343,16 +358,8 @@ static void test_stick_walks_and_unplug_pauses(void **state)
     /* unplug: paused, the clock stops */
     fake.fail_reads = 1;
     double clock = v->hud.elapsed_s;
-    for (int f = 0; f < 30; f++, t += 1.0 / 60) {
-        hol_input in, pad;
-        memset(&in, 0, sizeof in);
-        memset(&pad, 0, sizeof pad);
-        in.time_s = pad.time_s = t;
-        in.flags = HOL_INPUT_FOCUSED;
-        hol_err e = hol_hid_dev_poll(&dev, &pad);
-        hol_hid_link_merge(&l, e, dev.lost, &pad, 0, &in);
-        assert_int_equal(hol_app_step(app, &in), HOL_OK);
-    }
+    for (int f = 0; f < 30; f++, t += 1.0 / 60)
+        play_frame(app, &l, t);
     assert_true(v->paused);
     assert_true(v->hud.elapsed_s == clock);
     /* a key: playing again */
@@ -370,6 +377,153 @@ static void test_stick_walks_and_unplug_pauses(void **state)
     hol_app_destroy(app);
 }
 
+
+/* ---- the scripted backend (hol_hid_script.h, play --gamepad-replay) ------ */
+
+static hol_hid_script script;
+
+/* "T report HEX" of Asus report r, appended to text. */
+static void add_hex(char *text, size_t cap, const uint8_t *b, size_t n)
+{
+    for (size_t i = 0; i < n; i++)
+        snprintf(text + strlen(text), cap - strlen(text), "%02x", b[i]);
+    snprintf(text + strlen(text), cap - strlen(text), "\n");
+}
+
+static void add_report(char *text, size_t cap, double t, int r)
+{
+    snprintf(text + strlen(text), cap - strlen(text), "%.2f report ", t);
+    add_hex(text, cap, asus_reports[r], sizeof asus_reports[r]);
+}
+
+/* The recorded Asus pad: plugged at 0 with the left stick held left,
+ * centred at 1.9, unplugged at 2, plugged back at 3.5 (stick centred). */
+static const char *asus_script(void)
+{
+    static char text[8192];
+    snprintf(text, sizeof text, "# the Asus gamepad (hid-tools)\r\n\n0 plug %04x:%04x ", asus_vid,
+             asus_pid);
+    add_hex(text, sizeof text, asus_desc, sizeof asus_desc);
+    add_report(text, sizeof text, 0, 1);
+    add_report(text, sizeof text, 1.9, 0);
+    snprintf(text + strlen(text), sizeof text - strlen(text), "2 unplug\n3.5 plug\n");
+    add_report(text, sizeof text, 3.6, 0);
+    return text;
+}
+
+static void test_script_parse(void **state)
+{
+    (void)state;
+    const char *t = asus_script();
+    long line = -1;
+    assert_int_equal(hol_hid_script_parse(&script, t, strlen(t), &line), HOL_OK);
+    assert_int_equal(script.n, 6);
+    assert_int_equal(script.ev[0].kind, HOL_HID_SCRIPT_PLUG);
+    assert_int_equal(script.ev[0].vid, asus_vid);
+    assert_int_equal(script.ev[0].len, sizeof asus_desc);
+    assert_memory_equal(script.bytes + script.ev[0].off, asus_desc, sizeof asus_desc);
+    assert_int_equal(script.ev[1].len, sizeof asus_reports[1]);
+    assert_memory_equal(script.bytes + script.ev[1].off, asus_reports[1], 9);
+    assert_true(script.ev[2].t == 1.9);
+    assert_int_equal(script.ev[4].kind, HOL_HID_SCRIPT_PLUG); /* the same pad again */
+    assert_int_equal(script.ev[4].off, script.ev[0].off);
+    assert_true(script.ev[4].t == 3.5);
+    /* refused, with the line */
+    static const struct {
+        const char *text;
+        long line;
+    } bad[] = {
+        {"0 report 01\n", 1},                          /* not plugged */
+        {"0 plug\n", 1},                               /* no pad yet */
+        {"# c\n0 plug 0001:0002 0501\n0 plug\n", 3},   /* plugged twice */
+        {"0 plug 0001:0002 0501\n0 unplug\n1 unplug\n", 3},
+        {"0 plug 0001:0002 0501\n2 report 01\n1 report 02\n", 3}, /* time back */
+        {"0 plug 0001:0002\n", 1},                     /* no descriptor */
+        {"0 plug 001:0002 05\n", 1},
+        {"0 plug 0001:0002 0\n", 1},                   /* odd digits */
+        {"0 plug 0001:0002 05  01\n", 1},              /* two spaces */
+        {"0 plug 0001:0002 05 \n", 1},
+        {"0 plug 0001:0002 0g\n", 1},
+        {"0 plug 0001:0002 05\n1 report\n", 2},
+        {"0 plug 0001:0002 05\n1 report \n", 2},
+        {"0 plug 0001:0002 05\n1 unplug now\n", 2},
+        {"0 plug 0001:0002 05\n1 jump\n", 2},
+        {"-1 plug 0001:0002 05\n", 1},
+        {"1e3 plug 0001:0002 05\n", 1},
+        {"0x1 plug 0001:0002 05\n", 1},
+        {"1. plug 0001:0002 05\n", 1},
+        {" 0 plug 0001:0002 05\n", 1},
+        {"0  plug 0001:0002 05\n", 1},
+        {"0 plugs 0001:0002 05\n", 1},
+        {"0\n", 1},
+    };
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        line = -1;
+        assert_int_equal(hol_hid_script_parse(&script, bad[i].text, strlen(bad[i].text), &line),
+                         HOL_EPARSE);
+        if (line != bad[i].line)
+            fail_msg("'%s': line %ld, want %ld", bad[i].text, line, bad[i].line);
+    }
+    /* a report longer than the largest report */
+    static char big[2 * HOL_HID_REPORT_MAX_BYTES + 64];
+    snprintf(big, sizeof big, "0 plug 0001:0002 05\n1 report ");
+    for (int i = 0; i <= HOL_HID_REPORT_MAX_BYTES; i++)
+        strcat(big, "01");
+    assert_int_equal(hol_hid_script_parse(&script, big, strlen(big), &line), HOL_EPARSE);
+    assert_int_equal(line, 2);
+    assert_int_equal(hol_hid_script_parse(&script, "", 0, &line), HOL_OK);
+    assert_int_equal(script.n, 0);
+}
+
+/* The same device layer on the script: connect, the stick walks a room
+ * step, the unplug pauses (the clock stops, no crash, polls keep
+ * failing), the replug is found by re-enumeration within a second and
+ * resumes the game with no key pressed. */
+static void test_script_plays(void **state)
+{
+    (void)state;
+    const char *t = asus_script();
+    assert_int_equal(hol_hid_script_parse(&script, t, strlen(t), NULL), HOL_OK);
+    hol_app *app = explore_app();
+    assert_int_equal(hol_hid_dev_open_backend(&dev, hol_hid_script_backend(&script), 0),
+                     HOL_OK);
+    assert_int_equal(dev.info.vid, asus_vid);
+    hol_hid_link l;
+    memset(&l, 0, sizeof l);
+    const hol_app_view *v = hol_app_get_view(app);
+    int f = 0;
+    for (; f < 120; f++) /* 0 .. 2 s */
+        play_frame(app, &l, f / 60.0);
+    assert_true(v->hud.steps >= 1);
+    assert_int_equal(v->user.col, 0); /* walked a cell west */
+    assert_int_equal(v->user.row, 1);
+    assert_false(v->paused);
+    double clock = v->hud.elapsed_s;
+    assert_true(clock > 1.9);
+    for (; f < 210; f++) { /* 2 .. 3.5 s: unplugged */
+        play_frame(app, &l, f / 60.0);
+        assert_true(v->paused);
+        assert_true(dev.handle == NULL && dev.lost);
+        assert_string_equal(v->hud.status, "Controller lost");
+    }
+    assert_true(v->hud.elapsed_s == clock);
+    int back = -1;
+    for (; f < 330; f++) { /* 3.5 .. 5.5 s: plugged back */
+        play_frame(app, &l, f / 60.0);
+        if (back < 0 && !v->paused)
+            back = f;
+    }
+    /* found by the first re-enumeration at or after 3.5 s (one a second
+     * from the unplug at 2 s: 3, 4, ...) */
+    assert_int_equal(back, 240);
+    assert_true(dev.handle != NULL);
+    assert_true(v->hud.elapsed_s > clock + 1.4);
+    assert_int_equal(v->user.col, 0); /* the stick is centred: no more walking */
+    hol_hid_dev_close(&dev);
+    assert_int_equal(script.open, 0);
+    hol_app_destroy(app);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -378,6 +532,8 @@ int main(void)
         cmocka_unit_test_setup(test_unplug_and_hot_plug, reset),
         cmocka_unit_test_setup(test_link_merge, reset),
         cmocka_unit_test_setup(test_stick_walks_and_unplug_pauses, reset),
+        cmocka_unit_test_setup(test_script_parse, reset),
+        cmocka_unit_test_setup(test_script_plays, reset),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

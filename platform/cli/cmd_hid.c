@@ -12,11 +12,12 @@
 #include "../hid/hol_hid_dev.h"
 #include "../hid/hol_hid_pad.h"
 #include "cli.h"
+#include "play_setup.h"
 
 static const char *const hid_usage =
     "usage: holonomy hid parse FILE\n"
     "       holonomy hid list\n"
-    "       holonomy hid watch [--frames N]\n"
+    "       holonomy hid watch [--frames N] [--replay FILE]\n"
     "\n"
     "  hid parse FILE  print the input field map of a HID report descriptor,\n"
     "                  one line per element of every non-constant Input item:\n"
@@ -31,7 +32,9 @@ static const char *const hid_usage =
     "  hid watch       print the decoded input of the first controller, one\n"
     "                  line a change: buttons, move x y, turn x y; stops\n"
     "                  after --frames N reads of 10 ms (default: until the\n"
-    "                  controller goes away).\n"
+    "                  controller goes away). --replay FILE watches a scripted\n"
+    "                  controller (README: Gamepads) instead, on a clock of\n"
+    "                  10 ms a read, without waiting.\n"
     "\n"
     "Exit status: 0 ok, 1 no controller (watch) or an I/O error, 2 bad input\n"
     "or usage (one line on stderr).\n";
@@ -208,8 +211,11 @@ static int cmd_watch(int argc, char **argv)
 {
     const char *cmd = "hid watch";
     size_t frames = 0;
+    const char *script_path = NULL;
     for (int i = 2; i < argc; i++) {
-        if (!strcmp(argv[i], "--frames") && i + 1 < argc) {
+        if (!strcmp(argv[i], "--replay") && i + 1 < argc) {
+            script_path = argv[++i];
+        } else if (!strcmp(argv[i], "--frames") && i + 1 < argc) {
             if (!(frames = cli_parse_count(argv[++i]))) {
                 cli_error(cmd, 0, "--frames needs a positive count; see --help");
                 return CLI_EXIT_USAGE;
@@ -220,7 +226,16 @@ static int cmd_watch(int argc, char **argv)
         }
     }
     static hol_hid_dev dev;
-    if (hol_hid_dev_open_first(&dev)) {
+    static hol_hid_script script;
+    if (script_path) {
+        int st = play_load_pad_script(cmd, script_path, &script);
+        if (st)
+            return st;
+        if (hol_hid_dev_open_backend(&dev, hol_hid_script_backend(&script), 0.0)) {
+            cli_error(cmd, 0, "no game controller plugged in at 0 s in '%.200s'", script_path);
+            return CLI_EXIT_FAIL;
+        }
+    } else if (hol_hid_dev_open_first(&dev)) {
         cli_error(cmd, 0, "no game controller found (hidapi %s backend)",
                   hol_hid_dev_backend());
         return CLI_EXIT_FAIL;
@@ -230,13 +245,14 @@ static int cmd_watch(int argc, char **argv)
     memset(&in, 0, sizeof in);
     memset(&last, 0xff, sizeof last);
     for (size_t f = 0; frames == 0 || f < frames; f++) {
-        in.time_s = now_s();
+        in.time_s = script_path ? (double)f * 0.01 : now_s();
         hol_err err = hol_hid_dev_poll(&dev, &in);
-        if (memcmp(&in.buttons, &last.buttons, sizeof in.buttons) ||
-            memcmp(in.move, last.move, sizeof in.move) ||
-            memcmp(in.turn, last.turn, sizeof in.turn)) {
-            printf("buttons 0x%02x move %.3f %.3f turn %.3f %.3f\n",
-                   in.buttons, in.move[0], in.move[1], in.turn[0], in.turn[1]);
+        /* a change (-0 is 0; the first poll always prints: last is NaN) */
+        if (in.buttons != last.buttons || in.move[0] != last.move[0] ||
+            in.move[1] != last.move[1] || in.turn[0] != last.turn[0] ||
+            in.turn[1] != last.turn[1]) {
+            printf("buttons 0x%02x move %.3f %.3f turn %.3f %.3f\n", in.buttons,
+                   in.move[0] + 0.0f, in.move[1] + 0.0f, in.turn[0] + 0.0f, in.turn[1] + 0.0f);
             fflush(stdout);
             last = in;
         }
@@ -244,7 +260,8 @@ static int cmd_watch(int argc, char **argv)
             printf("# controller lost\n");
             break;
         }
-        nanosleep(&(struct timespec){0, 10 * 1000 * 1000}, NULL);
+        if (!script_path)
+            nanosleep(&(struct timespec){0, 10 * 1000 * 1000}, NULL);
     }
     hol_hid_dev_close(&dev);
     return cli_finish_output(cmd);

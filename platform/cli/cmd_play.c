@@ -28,7 +28,7 @@
 static const char *const play_usage =
     "usage: holonomy play [LEVEL | --mode tutorial|flag|keys|explore] [--seed S]\n"
     "                     [--log DIR] [--record FILE] [--frames N] [--input FILE]\n"
-    "                     [--size WxH] [--no-gamepad]\n"
+    "                     [--size WxH] [--no-gamepad | --gamepad-replay FILE]\n"
     "\n"
     "Play in a desktop window (EGL on X11; also under Xvfb). LEVEL is a level\n"
     "file (SPEC section 5); --mode plays a level of that mode made from the seed\n"
@@ -43,9 +43,11 @@ static const char *const play_usage =
     "  Enter/Space      next level (end screen) Esc/Q        quit\n"
     "\n"
     "A game controller (the first found; plugged in later, it joins) plays too:\n"
-    "left stick walks, right stick turns and looks, south button confirms, east\n"
-    "backs, north recentres, west/select toggle the minimap, start/mode open the\n"
-    "menu. Unplugged mid-game, the game pauses until it is back or a key is used.\n"
+    "left stick walks, right stick turns and looks, south button confirms,\n"
+    "west/select/hat down cycle the minimap, start/mode open the menu (restart\n"
+    "and quit are keys only); its axes add to the keys' (clamped), its buttons\n"
+    "OR with them. Unplugged mid-game, the game pauses until it is back or a\n"
+    "key is used.\n"
     "\n"
     "  --mode M        tutorial (four lessons), flag, keys or explore\n"
     "  --seed S        seed of --mode's level or the campaign's first (decimal or\n"
@@ -58,6 +60,10 @@ static const char *const play_usage =
     "                  bare lines) instead of the keyboard; frames are the lines\n"
     "  --size WxH      window size (default 960x720)\n"
     "  --no-gamepad    do not use game controllers\n"
+    "  --gamepad-replay FILE\n"
+    "                  the controller is a script of plugs, reports and unplugs\n"
+    "                  (README: Gamepads) on the game's clock, not a device; with\n"
+    "                  --input the two are merged as keyboard and pad are\n"
     "\n"
     "At the end it prints 'level NAME STATE steps S optimum O tile ADDR cell C,R'\n"
     "(STATE playing, done, timeout at the level's time limit, or quit).\n"
@@ -118,7 +124,7 @@ int cli_cmd_play(int argc, char **argv)
         return cli_finish_output(cmd);
     }
     const char *level_path = NULL, *mode = NULL, *log_dir = NULL, *rec = NULL,
-               *input_path = NULL;
+               *input_path = NULL, *pad_script = NULL;
     unsigned long long seed = CLI_SEED_DEFAULT;
     long frames = 0;
     int w = 960, h = 720, use_pad = 1;
@@ -126,7 +132,8 @@ int cli_cmd_play(int argc, char **argv)
         const char *a = argv[i], *val = i + 1 < argc ? argv[i + 1] : NULL;
         int takes = !strcmp(a, "--mode") || !strcmp(a, "--seed") || !strcmp(a, "--log") ||
                     !strcmp(a, "--record") || !strcmp(a, "--frames") ||
-                    !strcmp(a, "--input") || !strcmp(a, "--size");
+                    !strcmp(a, "--input") || !strcmp(a, "--size") ||
+                    !strcmp(a, "--gamepad-replay");
         if (takes && !val) {
             cli_error(cmd, 0, "%s needs a value; see 'holonomy play --help'", a);
             return CLI_EXIT_USAGE;
@@ -148,6 +155,8 @@ int cli_cmd_play(int argc, char **argv)
             rec = val;
         else if (!strcmp(a, "--input"))
             input_path = val;
+        else if (!strcmp(a, "--gamepad-replay"))
+            pad_script = val;
         else if (!strcmp(a, "--frames")) {
             size_t n = cli_parse_count(val);
             if (!n || n > 100000000) {
@@ -174,6 +183,17 @@ int cli_cmd_play(int argc, char **argv)
     if (level_path && mode) {
         cli_error(cmd, 0, "give a LEVEL file or --mode, not both");
         return CLI_EXIT_USAGE;
+    }
+    if (pad_script && !use_pad) {
+        cli_error(cmd, 0, "give --no-gamepad or --gamepad-replay, not both");
+        return CLI_EXIT_USAGE;
+    }
+    /* the scripted controller, loaded before anything opens */
+    static hol_hid_script script;
+    if (pad_script) {
+        int st = play_load_pad_script(cmd, pad_script, &script);
+        if (st)
+            return st;
     }
     if (log_dir) {
         struct stat st;
@@ -219,12 +239,18 @@ int cli_cmd_play(int argc, char **argv)
     }
     hol_x11_keys keys;
     memset(&keys, 0, sizeof keys);
-    /* the first game controller; polled (and looked for) only in live play */
+    /* the first game controller; polled (and looked for) in live play, or
+     * the scripted one (also beside --input) */
     static hol_hid_dev pad_dev;
     hol_hid_link pad_link;
     memset(&pad_link, 0, sizeof pad_link);
-    use_pad = use_pad && !input_path;
-    if (use_pad && hol_hid_dev_open_first(&pad_dev) == HOL_OK)
+    use_pad = pad_script || (use_pad && !input_path);
+    hol_err pad_open = HOL_EOPEN;
+    if (pad_script)
+        pad_open = hol_hid_dev_open_backend(&pad_dev, hol_hid_script_backend(&script), 0.0);
+    else if (use_pad)
+        pad_open = hol_hid_dev_open_first(&pad_dev);
+    if (pad_open == HOL_OK)
         fprintf(stderr, "play: game controller: %s (%04x:%04x)\n",
                 pad_dev.info.name[0] ? pad_dev.info.name : "unnamed", pad_dev.info.vid,
                 pad_dev.info.pid);
@@ -233,6 +259,7 @@ int cli_cmd_play(int argc, char **argv)
         int open = hol_x11_poll(&xw, &keys);
         hol_input in;
         memset(&in, 0, sizeof in);
+        int key_activity = 0;
         if (input_path) {
             long li = in_first + k;
             if (li >= in_lines.n)
@@ -243,6 +270,7 @@ int cli_cmd_play(int argc, char **argv)
             }
             if (!open)
                 in.buttons |= HOL_BTN_QUIT;
+            key_activity = in.buttons || in.move[0] || in.move[1] || in.turn[0] || in.turn[1];
         } else {
             double t = now_s() - t0;
             if (t < last_t)
@@ -256,7 +284,7 @@ int cli_cmd_play(int argc, char **argv)
             /* mouse: 0.2 degrees a pixel, as a turn rate over this frame */
             in.turn[0] = clamp1(keys.left - keys.right - keys.mouse_dx * 0.2 / (120 * dt));
             in.turn[1] = clamp1(keys.look_up - keys.look_down - keys.mouse_dy * 0.2 / (90 * dt));
-            int key_activity = keys.left | keys.right | keys.up | keys.down | keys.strafe_l |
+            key_activity = keys.left | keys.right | keys.up | keys.down | keys.strafe_l |
                                keys.strafe_r | keys.look_up | keys.look_down | keys.confirm |
                                keys.menu | keys.restart | keys.minimap | keys.mouse_dx |
                                keys.mouse_dy;
@@ -264,13 +292,13 @@ int cli_cmd_play(int argc, char **argv)
             in.buttons = (keys.confirm ? HOL_BTN_CONFIRM : 0) | (keys.menu ? HOL_BTN_MENU : 0) |
                          (keys.restart ? HOL_BTN_RESTART : 0) |
                          (keys.minimap ? HOL_BTN_MINIMAP : 0) | (open ? 0 : HOL_BTN_QUIT);
-            if (use_pad) {
-                hol_input pad;
-                memset(&pad, 0, sizeof pad);
-                pad.time_s = t;
-                hol_err pe = hol_hid_dev_poll(&pad_dev, &pad);
-                hol_hid_link_merge(&pad_link, pe, pad_dev.lost, &pad, key_activity != 0, &in);
-            }
+        }
+        if (use_pad) {
+            hol_input pad;
+            memset(&pad, 0, sizeof pad);
+            pad.time_s = in.time_s;
+            hol_err pe = hol_hid_dev_poll(&pad_dev, &pad);
+            hol_hid_link_merge(&pad_link, pe, pad_dev.lost, &pad, key_activity != 0, &in);
         }
         int rc = session_step(&s, &in);
         if (rc < 0) {

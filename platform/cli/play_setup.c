@@ -229,3 +229,22 @@ int play_levels(const char *cmd, const char *level_path, const char *mode, uint6
     }
     return 0;
 }
+
+int play_load_pad_script(const char *cmd, const char *path, hol_hid_script *sc)
+{
+    uint8_t *data = NULL;
+    size_t size = 0;
+    int st = cli_read_file(cmd, "gamepad script", path, (size_t)64 << 20, &data, &size);
+    if (st)
+        return st;
+    long line = 0;
+    hol_err err = hol_hid_script_parse(sc, (const char *)data, size, &line);
+    free(data);
+    if (err) {
+        cli_error(cmd, line, "'%.200s': %s", path,
+                  err == HOL_ENOMEM ? "too many events or report bytes"
+                                    : "not a gamepad script event (README: Gamepads)");
+        return CLI_EXIT_USAGE;
+    }
+    return 0;
+}

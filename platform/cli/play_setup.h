@@ -11,6 +11,9 @@
  *   accepted); parse_input_line parses line k as an input record
  *   (core/hol_input_io.h) whose time may not go back; both report errors
  *   as one line naming the line.
+ * - play_load_pad_script reads a scripted game controller
+ *   (--gamepad-replay, hol_hid_script.h) into *sc, reporting a bad line
+ *   as one line naming it.
  */
 #ifndef HOL_PLAY_SETUP_H
 #define HOL_PLAY_SETUP_H
@@ -19,6 +22,7 @@
 #include <stdint.h>
 
 #include "../../core/hol_input.h"
+#include "../hid/hol_hid_script.h"
 #include "session.h"
 
 int play_levels(const char *cmd, const char *level_path, const char *mode, uint64_t seed,
@@ -41,5 +45,8 @@ int read_input_lines(const char *cmd, const char *path, file_lines *fl, long *ou
 /* 0 ok, 1 reported (bad record, or time going back from *prev_t). */
 int parse_input_line(const char *cmd, const file_lines *fl, long k, hol_input *in,
                      double *prev_t);
+
+/* 0 ok, else the exit status (reported). */
+int play_load_pad_script(const char *cmd, const char *path, hol_hid_script *sc);
 
 #endif

@@ -78,6 +78,28 @@ static hol_err start_pad(hid_device *h, const hol_hid_known *k)
     return HOL_OK;
 }
 
+/* The field map and decoder of a controller whose descriptor was read
+ * (desc_err: why it was not). */
+static hol_err setup_pad(hol_hid_dev *dev, hol_err desc_err, const uint8_t *desc, size_t len)
+{
+    hol_err err = desc_err;
+    if (!err) {
+        err = hol_hid_desc_parse(desc, len, dev->fields, HOL_HID_DEV_MAX_FIELDS,
+                                 &dev->n_fields, &dev->has_ids);
+        if (err == HOL_ENOMEM) { /* keep the first fields */
+            dev->n_fields = HOL_HID_DEV_MAX_FIELDS;
+            err = HOL_OK;
+        }
+    }
+    const hol_hid_known *k = hol_hid_known_find(dev->info.vid, dev->info.pid);
+    if (err && k && k->layout != HOL_HID_LAYOUT_DESCRIPTOR)
+        err = HOL_OK, dev->n_fields = 0; /* its layout is fixed */
+    if (!err)
+        err = hol_hid_pad_init(&dev->pad, dev->fields, dev->n_fields,
+                               dev->has_ids, dev->info.vid, dev->info.pid, NULL);
+    return err;
+}
+
 static hol_err open_info(hol_hid_dev *dev, const struct hid_device_info *d)
 {
     uint8_t desc[HOL_HID_DESC_MAX];
@@ -87,22 +109,9 @@ static hol_err open_info(hol_hid_dev *dev, const struct hid_device_info *d)
         return HOL_EOPEN;
     fill_info(&dev->info, d);
     hol_err err = read_desc(h, d->path, desc, sizeof desc, &len);
-    if (!err) {
-        err = hol_hid_desc_parse(desc, len, dev->fields, HOL_HID_DEV_MAX_FIELDS,
-                                 &dev->n_fields, &dev->has_ids);
-        if (err == HOL_ENOMEM) { /* keep the first fields */
-            dev->n_fields = HOL_HID_DEV_MAX_FIELDS;
-            err = HOL_OK;
-        }
-    }
-    const hol_hid_known *k = hol_hid_known_find(d->vendor_id, d->product_id);
-    if (err && k && k->layout != HOL_HID_LAYOUT_DESCRIPTOR)
-        err = HOL_OK, dev->n_fields = 0; /* its layout is fixed */
+    err = setup_pad(dev, err, desc, len);
     if (!err)
-        err = hol_hid_pad_init(&dev->pad, dev->fields, dev->n_fields,
-                               dev->has_ids, d->vendor_id, d->product_id, NULL);
-    if (!err)
-        err = start_pad(h, k);
+        err = start_pad(h, hol_hid_known_find(d->vendor_id, d->product_id));
     if (!err && hid_set_nonblocking(h, 1) < 0)
         err = HOL_EIO;
     if (err) {
@@ -128,6 +137,45 @@ hol_err hol_hid_dev_open_first(hol_hid_dev *dev)
     return err ? HOL_EOPEN : HOL_OK;
 }
 
+hol_err hol_hid_dev_open_backend(hol_hid_dev *dev, const hol_hid_backend *be, double now_s)
+{
+    memset(dev, 0, sizeof *dev);
+    dev->be = be;
+    uint8_t desc[HOL_HID_DESC_MAX];
+    size_t len = 0;
+    hol_err err = be->open_first(be->ctx, now_s, &dev->info, desc, sizeof desc, &len);
+    if (err)
+        return HOL_EOPEN;
+    if (setup_pad(dev, HOL_OK, desc, len)) {
+        be->close(be->ctx);
+        return HOL_EOPEN;
+    }
+    dev->handle = (void *)be;
+    return HOL_OK;
+}
+
+static hol_err reopen(hol_hid_dev *dev, double now_s)
+{
+    return dev->be ? hol_hid_dev_open_backend(dev, dev->be, now_s)
+                   : hol_hid_dev_open_first(dev);
+}
+
+static int read_report(hol_hid_dev *dev, double now_s, uint8_t *buf, size_t cap)
+{
+    if (dev->be)
+        return dev->be->read(dev->be->ctx, now_s, buf, cap);
+    return hid_read_timeout((hid_device *)dev->handle, buf, cap, 0);
+}
+
+static void close_handle(hol_hid_dev *dev)
+{
+    if (dev->be)
+        dev->be->close(dev->be->ctx);
+    else
+        hid_close((hid_device *)dev->handle);
+    dev->handle = NULL;
+}
+
 hol_err hol_hid_dev_poll(hol_hid_dev *dev, hol_input *io)
 {
     double now_s = io->time_s;
@@ -137,7 +185,9 @@ hol_err hol_hid_dev_poll(hol_hid_dev *dev, hol_input *io)
         io->move[0] = io->move[1] = io->turn[0] = io->turn[1] = 0.0f;
         if (dev->tried && now_s - dev->last_try_s < HOL_HID_REENUM_S)
             return HOL_EIO;
-        if (hol_hid_dev_open_first(dev)) { /* leaves dev closed */
+        int was_lost = dev->lost;
+        if (reopen(dev, now_s)) { /* leaves dev closed */
+            dev->lost = was_lost; /* still away */
             dev->tried = 1;
             dev->last_try_s = now_s;
             return HOL_EIO;
@@ -146,12 +196,11 @@ hol_err hol_hid_dev_poll(hol_hid_dev *dev, hol_input *io)
     }
     uint8_t buf[HOL_HID_REPORT_MAX_BYTES + 1];
     for (int i = 0; i < 64; i++) { /* drain, bounded */
-        int n = hid_read_timeout((hid_device *)dev->handle, buf, sizeof buf, 0);
+        int n = read_report(dev, now_s, buf, sizeof buf);
         if (n == 0)
             break;
         if (n < 0) {
-            hid_close((hid_device *)dev->handle);
-            dev->handle = NULL;
+            close_handle(dev);
             dev->lost = 1;
             dev->tried = 1;
             dev->last_try_s = now_s;
@@ -169,8 +218,7 @@ hol_err hol_hid_dev_poll(hol_hid_dev *dev, hol_input *io)
 void hol_hid_dev_close(hol_hid_dev *dev)
 {
     if (dev->handle)
-        hid_close((hid_device *)dev->handle);
-    dev->handle = NULL;
+        close_handle(dev);
 }
 
 int hol_hid_dev_list(hol_hid_dev_list_fn fn, void *ctx)

@@ -20,6 +20,11 @@
  *   HOL_HID_REENUM_S seconds of io->time_s.
  * - No device: HOL_EOPEN (never a crash). hol_hid_dev_list prints nothing;
  *   it calls fn for every controller found.
+ * - Backends: hidapi by default. hol_hid_dev_open_backend makes the same
+ *   device layer (enumeration, descriptor, decoder, drain, unplug,
+ *   re-enumeration) read from another source instead: a recorded script
+ *   (hol_hid_script.h) for tests and `play --gamepad-replay`. A backend
+ *   pad gets no start report (known pads' output reports are hidapi only).
  */
 #ifndef HOL_HID_DEV_H
 #define HOL_HID_DEV_H
@@ -43,8 +48,22 @@ typedef struct hol_hid_dev_info {
     char name[128];
 } hol_hid_dev_info;
 
+/* A device source other than hidapi. now_s is the poll's io->time_s. */
+typedef struct hol_hid_backend {
+    /* The first game controller present: its info and report descriptor
+     * (at most cap bytes, length in *out_len). HOL_EOPEN when none. */
+    hol_err (*open_first)(void *ctx, double now_s, hol_hid_dev_info *out_info, uint8_t *desc,
+                          size_t cap, size_t *out_len);
+    /* Never blocks: the next waiting report's length (at most cap bytes),
+     * 0 when none is waiting, < 0 when the device went away. */
+    int (*read)(void *ctx, double now_s, uint8_t *buf, size_t cap);
+    void (*close)(void *ctx);
+    void *ctx;
+} hol_hid_backend;
+
 typedef struct hol_hid_dev {
-    void *handle; /* hid_device *, NULL when closed */
+    void *handle; /* hid_device * (or the backend), NULL when closed */
+    const hol_hid_backend *be; /* NULL: hidapi */
     hol_hid_dev_info info;
     hol_hid_field fields[HOL_HID_DEV_MAX_FIELDS];
     size_t n_fields;
@@ -61,6 +80,9 @@ hol_err hol_hid_dev_open_first(hol_hid_dev *dev);
  * re-enumeration interval. A dev that failed hol_hid_dev_open_first may be
  * polled too: it keeps looking for a controller (plug it in later). */
 hol_err hol_hid_dev_poll(hol_hid_dev *dev, hol_input *io);
+/* As hol_hid_dev_open_first, on backend be (kept for the re-opens of
+ * later polls) at time now_s. */
+hol_err hol_hid_dev_open_backend(hol_hid_dev *dev, const hol_hid_backend *be, double now_s);
 void hol_hid_dev_close(hol_hid_dev *dev);
 
 /* Call fn for every game controller; returns how many were found. The
