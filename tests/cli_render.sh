@@ -51,7 +51,7 @@ awk 'NF != 3 || $1 !~ /^[0-9]+$/ || $2 !~ /^[0-9]+$/ || $1 >= 64 || $2 >= 48 ||
      $3 !~ /^(O|[NESW][flr]*)$/ { bad = 1 } END { exit bad }' "$T/ids" ||
     fail "malformed tile-id line"
 grep -q ' Nr$' "$T/ids" || fail "the user's tile Nr is not in view"
-ls "$T" | grep -q tmp && fail "a temporary file was left behind"
+ls -A "$T" | grep -q holonomy-tmp && fail "a temporary file was left behind"
 
 # two eyes side by side, one render queue each
 "$H" render --stereo 0.064 --eye 1.98,1.6,1.5 --size 64x24 --out "$T/st.png" \

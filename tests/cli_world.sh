@@ -74,7 +74,7 @@ else bad "small store: want tiles < capacity 4096 and evictions, got $(cat "$T/o
 # save, load, continue
 run "save" 0 "$H" world --seed 5 --walk NWS --save "$T/w.hw" --quiet
 [ -s "$T/w.hw" ] && ok || bad "save wrote nothing"
-ls "$T" | grep -q 'tmp-' && bad "save left a temporary file" || ok
+ls -A "$T" | grep -q 'holonomy-tmp' && bad "save left a temporary file" || ok
 "$H" world --seed 5 --walk NWS >"$T/direct"
 run "load" 0 "$H" world --load "$T/w.hw" --check
 cp "$T/out" "$T/loaded"
