@@ -81,6 +81,8 @@ hol_err hol_nav_create(const hol_nav_desc *desc, hol_nav **out_nav)
         arena = scratch - legs;
     if (arena < hol_navtab_leg_scratch_bytes(leg_radius))
         arena = hol_navtab_leg_scratch_bytes(leg_radius);
+    if (arena < hol__nav_tour_scratch())
+        arena = hol__align(hol__nav_tour_scratch());
     size_t total = hol__align(sizeof(hol_nav)) + table + legs + arena;
     char *block = (char *)d.alloc_fn(total, d.user);
     if (!block)

@@ -82,6 +82,9 @@ int hol__nav_room_ok(const hol_room *r);
 void hol__nav_emit(hol__walk *w, int dir);
 /* Descend the tile table from (idx, o, cell) to cost 0; returns the steps. */
 int hol__nav_descend(const hol_navtab *tab, uint32_t idx, int o, int cell, hol__walk *w);
+/* Bytes of arena the tours use as scratch (hol_nav_tour.c): the dynamic
+ * program's table, then the far keys' bounds. */
+size_t hol__nav_tour_scratch(void);
 /* Room steps from the search root to node id, appended to w. */
 void hol__nav_emit_path(hol_nav *nav, uint32_t id, hol__walk *w);
 
