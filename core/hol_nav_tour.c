@@ -16,9 +16,28 @@
 #include "hol_nav_impl.h"
 
 #define HOL__NK HOL_NAV_TOUR_MAX_KEYS
-#define HOL__SPHERE_MAX 1024 /* tiles at the leg table's trusted radius (780 at 7) */
 
 /* ---- tours ---- */
+
+/* Least leg from any room state on each tile of the sphere at the leg
+ * table's trusted radius (relative index off[rho] + x) to each goal state
+ * s2: the same for every destination, as the leg table is relative. */
+static void hol__far_e(const hol_nav *nav, uint8_t (*e)[36])
+{
+    int rho = nav->leg_trust;
+    uint32_t lo = nav->tab.off[rho], n = nav->tab.off[rho + 1] - lo;
+    for (uint32_t x = 0; x < n; x++)
+        for (int s2 = 0; s2 < 36; s2++) {
+            int m = 255;
+            for (int o = 0; o < 4; o++)
+                for (int cell = 0; cell < 9; cell++) {
+                    int v = hol_navtab_leg(nav->leg, lo + x, o, cell, s2 / 9, s2 % 9);
+                    if (v < m)
+                        m = v;
+                }
+            e[x][s2] = (uint8_t)m;
+        }
+}
 
 void hol_nav_prepare_tours(hol_nav *nav)
 {
@@ -26,6 +45,8 @@ void hol_nav_prepare_tours(hol_nav *nav)
         hol_navtab_build_legs(&nav->tab, nav->leg_radius, nav->leg, nav->nodes);
         nav->leg_ready = 1;
         nav->hash_dirty = 1; /* the build's scratch was the arena */
+        if (nav->tab.off[nav->leg_trust + 1] - nav->tab.off[nav->leg_trust] <= HOL__SPHERE_MAX)
+            hol__far_e(nav, (uint8_t (*)[36])(void *)nav->far_e);
     }
 }
 
@@ -156,23 +177,6 @@ static int hol__tour_h(const hol_nav *nav, const hol__tour *t, const hol__node *
  * dst on some tile x, and from there stays within rho, so it costs at
  * least (src state to x's tile, main table) + (least over x's room states
  * of the leg to s2). out[s][s2] = the least of that over the sphere. */
-static void hol__far_e(const hol_nav *nav, uint8_t (*e)[36])
-{
-    int rho = nav->leg_trust;
-    uint32_t lo = nav->tab.off[rho], n = nav->tab.off[rho + 1] - lo;
-    for (uint32_t x = 0; x < n; x++)
-        for (int s2 = 0; s2 < 36; s2++) {
-            int m = 255;
-            for (int o = 0; o < 4; o++)
-                for (int cell = 0; cell < 9; cell++) {
-                    int v = hol_navtab_leg(nav->leg, lo + x, o, cell, s2 / 9, s2 % 9);
-                    if (v < m)
-                        m = v;
-                }
-            e[x][s2] = (uint8_t)m;
-        }
-}
-
 /* e: hol__far_e (the same for every pair: the leg table is relative to the
  * destination); c, order: scratch of the sphere's size. */
 static void hol__far_lb(const hol_nav *nav, hol_tile src, hol_tile dst, uint8_t out[36][36],
@@ -250,12 +254,11 @@ static void hol__tour_suf(hol_nav *nav, hol__tour *t)
     uint8_t lbk[HOL__NK][HOL__NK][36]; /* key j state s to key k's tile */
     /* scratch in the arena (the A* has not started) */
     uint8_t (*far)[HOL__NK][36][36] = (uint8_t (*)[HOL__NK][36][36])(void *)nav->nodes;
-    uint8_t (*e)[36] = (uint8_t (*)[36])(void *)((char *)nav->nodes +
-                                                  sizeof(uint8_t[HOL__NK][HOL__NK][36][36]));
+    const uint8_t (*e)[36] = (const uint8_t (*)[36])(const void *)nav->far_e;
     uint32_t nsph = nav->tab.off[nav->leg_trust + 1] - nav->tab.off[nav->leg_trust];
-    uint8_t (*c)[36] = e + nsph;
+    uint8_t (*c)[36] = (uint8_t (*)[36])(void *)((char *)nav->nodes +
+                                                  sizeof(uint8_t[HOL__NK][HOL__NK][36][36]));
     uint16_t *order = (uint16_t *)(void *)(c + nsph);
-    int have_e = 0;
     nav->hash_dirty = 1;
     for (int j = 0; j < nk; j++)
         for (int k = 0; k < nk; k++) {
@@ -267,11 +270,7 @@ static void hol__tour_suf(hol_nav *nav, hol__tour *t)
                 lbk[j][k][s] = (uint8_t)(cst < 255 ? cst : 255);
             }
             if (!near[j][k] && nsph <= HOL__SPHERE_MAX) {
-                if (!have_e)
-                    hol__far_e(nav, e);
-                have_e = 1;
-                hol__far_lb(nav, t->keys[j], t->keys[k], far[j][k], (const uint8_t (*)[36])e,
-                            c, order);
+                hol__far_lb(nav, t->keys[j], t->keys[k], far[j][k], e, c, order);
             } else if (!near[j][k]) {
                 memset(far[j][k], 0, sizeof far[j][k]);
             }
