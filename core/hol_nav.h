@@ -105,7 +105,8 @@ hol_err hol_nav_find(hol_nav *nav, const hol_room *start, hol_tile target,
  *   along a geodesic, gives a valid tour, an upper bound; then A* over
  *   room state x collected-key set, pruned by that bound, with an
  *   admissible heuristic (a backward program over key sets: exact legs
- *   within the leg table's trusted radius, table bounds beyond), within
+ *   within the leg table's trusted radius, beyond it bounds through the
+ *   sphere of that radius around the destination key), within
  *   budget (0: arena capacity). It is exact when the A* reaches the chest
  *   or runs dry below the bound (at once when the heuristic meets it);
  *   otherwise the bound's tour (exact = 0), or without one, keys nearest

@@ -18,6 +18,7 @@
 #define HOL__FMAX 8192
 #define HOL__LEG_RADIUS 10 /* tour legs exact between tiles within 7 */
 #define HOL__NIL UINT32_MAX
+#define HOL__SPHERE_MAX 1024 /* tiles at the leg table's trusted radius (780 at 7) */
 #define HOL__INSIDE 0x80u
 #define HOL__MASK 0x3fu
 
@@ -49,6 +50,9 @@ struct hol_nav {
                          * scratch or as the tour's table): clear it whole */
     uint8_t *leg;       /* tour leg table (state to state), built lazily */
     int leg_radius, leg_trust, leg_ready;
+    uint8_t *far_e;     /* HOL__SPHERE_MAX x 36: least leg from a tile on the
+                         * leg table's trusted sphere to each goal state,
+                         * filled with the leg table (hol_nav_tour.c) */
     size_t bytes;
     void *block;
     void (*free_fn)(void *ptr, void *user);
@@ -82,6 +86,9 @@ int hol__nav_room_ok(const hol_room *r);
 void hol__nav_emit(hol__walk *w, int dir);
 /* Descend the tile table from (idx, o, cell) to cost 0; returns the steps. */
 int hol__nav_descend(const hol_navtab *tab, uint32_t idx, int o, int cell, hol__walk *w);
+/* Bytes of arena the tours use as scratch (hol_nav_tour.c): the dynamic
+ * program's table, then the far keys' bounds. */
+size_t hol__nav_tour_scratch(void);
 /* Room steps from the search root to node id, appended to w. */
 void hol__nav_emit_path(hol_nav *nav, uint32_t id, hol__walk *w);
 

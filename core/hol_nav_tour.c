@@ -19,12 +19,34 @@
 
 /* ---- tours ---- */
 
+/* Least leg from any room state on each tile of the sphere at the leg
+ * table's trusted radius (relative index off[rho] + x) to each goal state
+ * s2: the same for every destination, as the leg table is relative. */
+static void hol__far_e(const hol_nav *nav, uint8_t (*e)[36])
+{
+    int rho = nav->leg_trust;
+    uint32_t lo = nav->tab.off[rho], n = nav->tab.off[rho + 1] - lo;
+    for (uint32_t x = 0; x < n; x++)
+        for (int s2 = 0; s2 < 36; s2++) {
+            int m = 255;
+            for (int o = 0; o < 4; o++)
+                for (int cell = 0; cell < 9; cell++) {
+                    int v = hol_navtab_leg(nav->leg, lo + x, o, cell, s2 / 9, s2 % 9);
+                    if (v < m)
+                        m = v;
+                }
+            e[x][s2] = (uint8_t)m;
+        }
+}
+
 void hol_nav_prepare_tours(hol_nav *nav)
 {
     if (!nav->leg_ready) {
         hol_navtab_build_legs(&nav->tab, nav->leg_radius, nav->leg, nav->nodes);
         nav->leg_ready = 1;
         nav->hash_dirty = 1; /* the build's scratch was the arena */
+        if (nav->tab.off[nav->leg_trust + 1] - nav->tab.off[nav->leg_trust] <= HOL__SPHERE_MAX)
+            hol__far_e(nav, (uint8_t (*)[36])(void *)nav->far_e);
     }
 }
 
@@ -150,20 +172,107 @@ static int hol__tour_h(const hol_nav *nav, const hol__tour *t, const hol__node *
  * within the leg table's trusted radius, else the larger of the two tiles'
  * costs to each other from the main table (steps are reversible, so a leg
  * costs at least both). Needs the leg table (hol_nav_prepare_tours). */
-static void hol__tour_suf(const hol_nav *nav, hol__tour *t)
+/* For keys farther apart than the leg table's trusted radius rho: every
+ * walk from a state on src to state s2 on dst is last at distance rho from
+ * dst on some tile x, and from there stays within rho, so it costs at
+ * least (src state to x's tile, main table) + (least over x's room states
+ * of the leg to s2). out[s][s2] = the least of that over the sphere. */
+/* e: hol__far_e (the same for every pair: the leg table is relative to the
+ * destination); c, order: scratch of the sphere's size. */
+static void hol__far_lb(const hol_nav *nav, hol_tile src, hol_tile dst, uint8_t out[36][36],
+                        const uint8_t (*e)[36], uint8_t (*c)[36], uint16_t *order)
+{
+    int rho = nav->leg_trust;
+    uint32_t lo = nav->tab.off[rho], n = nav->tab.off[rho + 1] - lo;
+    uint16_t cnt[512];
+    int key[HOL__SPHERE_MAX];
+    memset(cnt, 0, sizeof cnt);
+    for (uint32_t x = 0; x < n; x++) {
+        /* x's tile: its address seen from dst, walked from dst */
+        hol_tile u = hol_navtab_unrank(&nav->tab, lo + x);
+        hol_heading_tile f = {dst, 0};
+        int ok = 1;
+        for (int i = 0; i < rho && ok; i++)
+            ok = !hol_heading_tile_step(f, hol_tile_letter(u, i), &f);
+        /* as hol__lb(src state, x), the relative address found once */
+        hol_tile rx;
+        int facing, d = -1;
+        if (ok && !hol_tile_relative(f.tile, 0, src, &rx, &facing))
+            d = hol_tile_dist0(rx);
+        uint32_t ri = d >= 0 && d <= nav->trust ? hol_navtab_rank(&nav->tab, rx) : 0;
+        int cmin = 255, emin = 255;
+        for (int s = 0; s < 36; s++) {
+            int v;
+            if (d < 0)
+                v = 0;
+            else if (d <= nav->trust)
+                v = hol_navtab_cost(&nav->tab, ri, (facing + s / 9) & 3, s % 9);
+            else
+                v = nav->tab.min_at[nav->trust] + d - nav->trust;
+            c[x][s] = (uint8_t)(v < 255 ? v : 255);
+            if (c[x][s] < cmin)
+                cmin = c[x][s];
+            if (e[x][s] < emin)
+                emin = e[x][s];
+        }
+        key[x] = cmin + emin;
+        cnt[key[x]]++;
+    }
+    /* tiles by cmin + emin ascending (counting sort): once that exceeds
+     * every entry found, no later tile can lower one */
+    uint32_t start[512], acc = 0;
+    for (int k = 0; k < 512; k++) {
+        start[k] = acc;
+        acc += cnt[k];
+    }
+    for (uint32_t x = 0; x < n; x++)
+        order[start[key[x]]++] = (uint16_t)x;
+    memset(out, 255, 36 * 36);
+    int worst = 255;
+    for (uint32_t i = 0; i < n; i++) {
+        uint32_t x = order[i];
+        if (key[x] >= worst)
+            break;
+        int w = 0;
+        for (int s = 0; s < 36; s++)
+            for (int s2 = 0; s2 < 36; s2++) {
+                int v = c[x][s] + e[x][s2];
+                if (v < out[s][s2])
+                    out[s][s2] = (uint8_t)v;
+                if (out[s][s2] > w)
+                    w = out[s][s2];
+            }
+        worst = w;
+    }
+}
+
+static void hol__tour_suf(hol_nav *nav, hol__tour *t)
 {
     int nk = t->nkeys;
     hol__rel rel[HOL__NK][HOL__NK];
     int near[HOL__NK][HOL__NK];
     uint8_t lbk[HOL__NK][HOL__NK][36]; /* key j state s to key k's tile */
+    /* scratch in the arena (the A* has not started) */
+    uint8_t (*far)[HOL__NK][36][36] = (uint8_t (*)[HOL__NK][36][36])(void *)nav->nodes;
+    const uint8_t (*e)[36] = (const uint8_t (*)[36])(const void *)nav->far_e;
+    uint32_t nsph = nav->tab.off[nav->leg_trust + 1] - nav->tab.off[nav->leg_trust];
+    uint8_t (*c)[36] = (uint8_t (*)[36])(void *)((char *)nav->nodes +
+                                                  sizeof(uint8_t[HOL__NK][HOL__NK][36][36]));
+    uint16_t *order = (uint16_t *)(void *)(c + nsph);
+    nav->hash_dirty = 1;
     for (int j = 0; j < nk; j++)
         for (int k = 0; k < nk; k++) {
             if (j == k)
                 continue;
             near[j][k] = hol__rel_of(nav, t->keys[j], t->keys[k], nav->leg_trust, &rel[j][k]);
             for (int s = 0; s < 36; s++) {
-                int c = hol__lb(nav, t->keys[j], s / 9, s % 9, t->keys[k]);
-                lbk[j][k][s] = (uint8_t)(c < 255 ? c : 255);
+                int cst = hol__lb(nav, t->keys[j], s / 9, s % 9, t->keys[k]);
+                lbk[j][k][s] = (uint8_t)(cst < 255 ? cst : 255);
+            }
+            if (!near[j][k] && nsph <= HOL__SPHERE_MAX) {
+                hol__far_lb(nav, t->keys[j], t->keys[k], far[j][k], e, c, order);
+            } else if (!near[j][k]) {
+                memset(far[j][k], 0, sizeof far[j][k]);
             }
         }
     for (unsigned m = t->full; m >= 1; m--)
@@ -191,6 +300,8 @@ static void hol__tour_suf(const hol_nav *nav, hol__tour *t)
                             } else {
                                 l = lbk[k][k2][s] > lbk[k2][k][s2] ? lbk[k][k2][s]
                                                                     : lbk[k2][k][s2];
+                                if (far[k][k2][s][s2] > l)
+                                    l = far[k][k2][s][s2];
                             }
                             if (l + t->suf[m2][k2][s2] < v)
                                 v = l + t->suf[m2][k2][s2];
@@ -554,6 +665,12 @@ static hol_err hol__tour_dp(hol_nav *nav, const hol_room *start, const hol__tour
     res->nodes = 0;
     *out_proved = proved;
     return HOL_OK;
+}
+
+size_t hol__nav_tour_scratch(void)
+{
+    size_t far = sizeof(uint8_t[HOL__NK][HOL__NK][36][36]) + HOL__SPHERE_MAX * (2 * 36 + 2);
+    return sizeof(hol__dp) > far ? sizeof(hol__dp) : far;
 }
 
 hol_err hol_nav_tour(hol_nav *nav, const hol_room *start, const hol_tile *keys,

@@ -133,18 +133,18 @@ static int bf_add(bf *b, const hol_room *r, int stage, int32_t parent, int dir)
     return -1;
 }
 
-/* Fewest steps from start to stand on the tiles goals[0], goals[1], ... in
- * this order (a tile passed early counts when it is the next in order).
- * Returns -1 if not found within max_depth. */
-static int bf_order(bf *b, const hol_room *start, const hol_tile *goals, int ngoals,
-                    int max_depth)
+/* BFS over (absolute room state, stage): next(ctx, stage, tile) is the
+ * stage after entering tile; the search ends when it reaches `goal`.
+ * Returns the fewest steps, or -1 if not within max_depth. */
+typedef int (*bf_next_fn)(const void *ctx, int stage, hol_tile tile);
+
+static int bf_search(bf *b, const hol_room *start, bf_next_fn next, const void *ctx,
+                     int goal, int max_depth)
 {
     b->n = 0;
     memset(b->hash, 0xff, (b->hmask + 1) * sizeof *b->hash);
-    int stage = 0;
-    while (stage < ngoals && hol_tile_eq(start->tile, goals[stage]))
-        stage++;
-    if (stage == ngoals)
+    int stage = next(ctx, 0, start->tile);
+    if (stage == goal)
         return 0;
     bf_add(b, start, stage, -1, 0);
     size_t head = 0;
@@ -155,16 +155,37 @@ static int bf_order(bf *b, const hol_room *start, const hol_tile *goals, int ngo
                 hol_room r = b->st[head].room;
                 if (hol_room_step(&r, d))
                     continue;
-                int s = b->st[head].stage;
-                while (s < ngoals && hol_tile_eq(r.tile, goals[s]))
-                    s++;
-                if (s == ngoals)
+                int s = next(ctx, b->st[head].stage, r.tile);
+                if (s == goal)
                     return depth + 1;
                 bf_add(b, &r, s, (int32_t)head, d);
             }
         }
     }
     return -1;
+}
+
+typedef struct bf_goals {
+    const hol_tile *goals;
+    int n;
+} bf_goals;
+
+static int bf_next_in_order(const void *ctx, int stage, hol_tile tile)
+{
+    const bf_goals *g = ctx;
+    while (stage < g->n && hol_tile_eq(tile, g->goals[stage]))
+        stage++;
+    return stage;
+}
+
+/* Fewest steps from start to stand on the tiles goals[0], goals[1], ... in
+ * this order (a tile passed early counts when it is the next in order).
+ * Returns -1 if not found within max_depth. */
+static int bf_order(bf *b, const hol_room *start, const hol_tile *goals, int ngoals,
+                    int max_depth)
+{
+    bf_goals g = {goals, ngoals};
+    return bf_search(b, start, bf_next_in_order, &g, ngoals, max_depth);
 }
 
 static int bf_cost(bf *b, const hol_room *start, hol_tile target, int max_depth)
@@ -636,37 +657,28 @@ static void test_tour_vs_bruteforce(void **state)
  * (absolute room state, keys held), an independent model of the game's
  * rule (a key counts on entering its tile, the chest only once every key
  * is held). -1 if not within max_depth. */
+typedef struct bf_level {
+    const hol_tile *keys;
+    int nk;
+    hol_tile chest;
+} bf_level;
+
+#define BF_DONE 64 /* stage: the level is complete */
+
+static int bf_next_held(const void *ctx, int stage, hol_tile tile)
+{
+    const bf_level *L = ctx;
+    for (int k = 0; k < L->nk; k++)
+        if (hol_tile_eq(tile, L->keys[k]))
+            stage |= 1 << k;
+    return stage == (1 << L->nk) - 1 && hol_tile_eq(tile, L->chest) ? BF_DONE : stage;
+}
+
 static int bf_tour(bf *b, const hol_room *start, const hol_tile *keys, int nk, hol_tile chest,
                    int max_depth)
 {
-    b->n = 0;
-    memset(b->hash, 0xff, (b->hmask + 1) * sizeof *b->hash);
-    unsigned full = (1u << nk) - 1, m0 = 0;
-    for (int k = 0; k < nk; k++)
-        if (hol_tile_eq(start->tile, keys[k]))
-            m0 |= 1u << k;
-    if (m0 == full && hol_tile_eq(start->tile, chest))
-        return 0;
-    bf_add(b, start, (int)m0, -1, 0);
-    size_t head = 0;
-    for (int depth = 0; depth < max_depth; depth++) {
-        size_t end = b->n;
-        for (; head < end; head++) {
-            for (int d = 0; d < 4; d++) {
-                hol_room r = b->st[head].room;
-                if (hol_room_step(&r, d))
-                    continue;
-                unsigned m = b->st[head].stage;
-                for (int k = 0; k < nk; k++)
-                    if (hol_tile_eq(r.tile, keys[k]))
-                        m |= 1u << k;
-                if (m == full && hol_tile_eq(r.tile, chest))
-                    return depth + 1;
-                bf_add(b, &r, (int)m, (int32_t)head, d);
-            }
-        }
-    }
-    return -1;
+    bf_level L = {keys, nk, chest};
+    return bf_search(b, start, bf_next_held, &L, BF_DONE, max_depth);
 }
 
 /* Tours of 4 and 5 keys against bf_tour: the default navigator (dynamic
@@ -691,9 +703,10 @@ static void test_tour_product_bfs(void **state)
             hol_room s = random_start(20);
             int nk = 4 + q % 2;
             hol_tile keys[5], chest;
+            int spread = v == 2 ? 3 : 2; /* radius 3: keys up to 6 apart, beyond its legs */
             for (int i = 0; i < nk; i++)
-                keys[i] = random_target(&s, 1 + (int)rnd(2));
-            chest = random_target(&s, 1 + (int)rnd(2));
+                keys[i] = random_target(&s, 1 + (int)rnd((uint32_t)spread));
+            chest = random_target(&s, 1 + (int)rnd((uint32_t)spread));
             uint8_t walk[HOL_NAV_WALK_MAX];
             hol_nav_result res;
             assert_int_equal(hol_nav_tour(nav, &s, keys, nk, chest, 0, walk, sizeof walk, &res),
