@@ -84,14 +84,15 @@ hol_err hol_nav_create(const hol_nav_desc *desc, hol_nav **out_nav)
     if (arena < hol__nav_tour_scratch())
         arena = hol__align(hol__nav_tour_scratch());
     size_t far_e = hol__align(HOL__SPHERE_MAX * 36);
-    size_t total = hol__align(sizeof(hol_nav)) + table + legs + far_e + arena;
+    size_t sph = hol__align(HOL__SPH_CACHE * sizeof(hol__sph));
+    size_t total = hol__align(sizeof(hol_nav)) + table + legs + far_e + sph + arena;
     char *block = (char *)d.alloc_fn(total, d.user);
     if (!block)
         return HOL_ENOMEM;
     hol_nav *nav = (hol_nav *)block;
     memset(nav, 0, sizeof *nav);
     char *p = block + hol__align(sizeof(hol_nav));
-    char *arena_p = p + table + legs + far_e;
+    char *arena_p = p + table + legs + far_e + sph;
     hol_err err = hol_navtab_build(&nav->tab, d.radius, p, p + table);
     if (err) {
         d.free_fn(block, d.user);
@@ -112,6 +113,7 @@ hol_err hol_nav_create(const hol_nav_desc *desc, hol_nav **out_nav)
     nav->trust = d.radius - 2;
     nav->leg = (uint8_t *)(p + table);
     nav->far_e = (uint8_t *)(p + table + legs);
+    nav->sph = (hol__sph *)(void *)(p + table + legs + far_e);
     nav->leg_radius = leg_radius;
     nav->leg_trust = leg_radius - 3;
     nav->margin = d.anytime_margin;

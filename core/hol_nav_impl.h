@@ -19,6 +19,7 @@
 #define HOL__LEG_RADIUS 10 /* tour legs exact between tiles within 7 */
 #define HOL__NIL UINT32_MAX
 #define HOL__SPHERE_MAX 1024 /* tiles at the leg table's trusted radius (780 at 7) */
+#define HOL__SPH_CACHE 8 /* spheres kept (hol_nav_legs.c), > HOL_NAV_TOUR_MAX_KEYS */
 #define HOL__INSIDE 0x80u
 #define HOL__MASK 0x3fu
 
@@ -53,11 +54,97 @@ struct hol_nav {
     uint8_t *far_e;     /* HOL__SPHERE_MAX x 36: least leg from a tile on the
                          * leg table's trusted sphere to each goal state,
                          * filled with the leg table (hol_nav_tour.c) */
+    struct hol__sph *sph; /* HOL__SPH_CACHE spheres around recent keys */
+    hol_tile sph_tile[HOL__SPH_CACHE];
+    uint32_t sph_stamp[HOL__SPH_CACHE]; /* last use, 0: empty */
+    uint32_t sph_clock;
     size_t bytes;
     void *block;
     void (*free_fn)(void *ptr, void *user);
     void *user;
 };
+
+/* ---- tour legs (hol_nav_legs.c) ---- */
+
+#define HOL__VIA_DIRECT 0xffffu /* the leg table (or main table) directly */
+#define HOL__VIA_MID 0xfffeu    /* through the tile midway along a geodesic */
+#define HOL__KEY_MAX 511        /* cheap bounds are clamped to this */
+
+/* A source tile seen from a destination: its table index and heading. */
+typedef struct hol__rel {
+    uint32_t idx;
+    int facing;
+} hol__rel;
+
+/* 1 and *out when `from` lies within `trust` of `to`. */
+int hol__rel_of(const hol_nav *nav, hol_tile from, hol_tile to, int trust, hol__rel *out);
+
+/* Lower bound (the main table, exact within its trusted radius) on the
+ * steps from room state (tile, o, cell) to stand on target. */
+int hol__lb_state(const hol_nav *nav, hol_tile tile, int o, int cell, hol_tile target);
+/* The same in two parts: `from` seen from `to` (ranked within the main
+ * table's radius), returning their distance (HOL_TILE_MAX_DIST + 1 beyond
+ * reach); then the bound from room state s = 9 * o + cell on `from`. */
+int hol__rel_ranked(const hol_nav *nav, hol_tile from, hol_tile to, hol__rel *out);
+int hol__lb_rel(const hol_nav *nav, const hol__rel *r, int d, int s);
+
+/* The sphere of radius leg_trust around a key: tile x (absolute) is
+ * nav->tab.off[leg_trust] + x seen from the key. n = 0: none (the leg
+ * table is not built, too small, or the sphere leaves the reach). */
+typedef struct hol__sph {
+    uint32_t n;
+    hol_tile tile[HOL__SPHERE_MAX];
+    hol__rel from_key[HOL__SPHERE_MAX]; /* hol__rel_of(tile[x], key) */
+} hol__sph;
+
+/* Room states: 9 * orientation (relative to the tile's heading) + cell.
+ * A leg from every source state in src to every state on a key: lb a lower
+ * bound on the fewest steps, ub the steps of a walk (255: none found),
+ * that walk through (vt[vx], vm) or HOL__VIA_*. ub == lb: exact. */
+typedef struct hol__legb {
+    uint8_t ub[36][36], lb[36][36];
+    uint16_t vx[36][36];
+    uint8_t vm[36][36];
+    const hol_tile *vt;
+    hol_tile mid;
+} hol__legb;
+
+/* The same from every room state on a key to stand on the chest's tile. */
+typedef struct hol__chestb {
+    uint8_t ub[36], lb[36];
+    uint16_t vx[36];
+    uint8_t vm[36];
+    const hol_tile *vt;
+    hol_tile mid;
+} hol__chestb;
+
+/* Scratch of the sphere passes. */
+typedef struct hol__legx {
+    hol__rel r;
+    uint8_t d, c1[36], u2[36];
+} hol__legx;
+typedef struct hol__legscr {
+    hol__legx x[HOL__SPHERE_MAX];
+    uint16_t key[HOL__SPHERE_MAX], order[HOL__SPHERE_MAX];
+} hol__legscr;
+
+/* Needs the leg table (hol_nav_prepare_tours). */
+void hol__sph_fill(const hol_nav *nav, hol_tile key, hol__sph *out_sph);
+/* The sphere around key from the navigator's cache (filled on a miss,
+ * replacing the least recently used): the keys of a level stay the same
+ * while the tour is planned again at every room step. Valid until
+ * HOL__SPH_CACHE - 1 further calls. */
+const hol__sph *hol__sph_get(hol_nav *nav, hol_tile key);
+/* Leg bounds from states src[0..nsrc) on tile a to key b (sphere sb). */
+void hol__legb_fill(const hol_nav *nav, hol_tile a, hol_tile b, const hol__sph *sb,
+                    const int *src, int nsrc, hol__legb *out_leg, hol__legscr *scr);
+/* The leg from b to a, from L's from a to b (with every source state):
+ * steps reverse, so the bounds are the same and the walk goes through the
+ * same room state on the same tile. */
+void hol__legb_reverse(const hol__legb *L, hol__legb *out_rev);
+/* From key a (sphere sa) to the chest's tile. */
+void hol__chestb_fill(const hol_nav *nav, hol_tile a, hol_tile chest, const hol__sph *sa,
+                      hol__chestb *out_leg, hol__legscr *scr);
 
 /* Output buffer of a walk. */
 typedef struct hol__walk {
@@ -91,5 +178,11 @@ int hol__nav_descend(const hol_navtab *tab, uint32_t idx, int o, int cell, hol__
 size_t hol__nav_tour_scratch(void);
 /* Room steps from the search root to node id, appended to w. */
 void hol__nav_emit_path(hol_nav *nav, uint32_t id, hol__walk *w);
+/* The walk of leg L from state s on tile a to s2 on b (ub[s][s2] steps),
+ * appended to w; and of C from s on key a to the chest. */
+void hol__legb_walk(const hol_nav *nav, const hol__legb *L, hol_tile a, int s, hol_tile b,
+                    int s2, hol__walk *w);
+void hol__chestb_walk(const hol_nav *nav, const hol__chestb *C, hol_tile a, int s,
+                      hol_tile chest, hol__walk *w);
 
 #endif
