@@ -24,6 +24,7 @@
 #include "plain_astar.h"
 
 #include "../core/hol_nav.h"
+#include "../core/hol_nav_impl.h" /* tour legs, white box */
 #include "../core/hol_nav_line.h"
 #include "../core/hol_nav_table.h"
 #include "../core/hol_room.h"
@@ -340,6 +341,23 @@ static void test_legs_converge(void **state)
         a = b;
         b = t;
     }
+    /* the parity classes (hol_nav_legs.c): with p one bit per tile,
+     * (col + row + o + p) mod 2 never changes, so every finite leg from a
+     * tile joins states whose parities differ by one bit per tile */
+    for (uint32_t i = 0; i < tab.off[9]; i++) {
+        int cls = -1;
+        for (int c = 0; c < 9; c++)
+            for (int g = 0; g < 36; g++) {
+                int v = hol_navtab_leg(a, i, 0, c, g / 9, g % 9);
+                int par = (c % 3 + c / 3 + g / 9 + g % 9 % 3 + g % 9 / 3) & 1;
+                if (v == 255)
+                    continue;
+                if (cls < 0)
+                    cls = par;
+                assert_int_equal(par, cls);
+            }
+        assert_true(cls >= 0);
+    }
     /* leg costs to any arrival state agree with the tile table */
     for (uint32_t i = 0; i < tab.off[9]; i += 7)
         for (int o = 0; o < 4; o++)
@@ -653,6 +671,129 @@ static void test_tour_vs_bruteforce(void **state)
     bf_free(&b);
 }
 
+/* Tour legs beyond the leg table's trusted radius (hol_nav_legs.c,
+ * through the sphere around the key): for a random room state and a key 8
+ * tiles away, a BFS over absolute room states gives the fewest steps to
+ * every room state on the key. The leg's lower bound may not exceed it,
+ * its walk may not be shorter and must arrive in that state, where the two
+ * meet (an exact leg) they equal it, and every state the bound calls
+ * unreachable (the parity classes) is never reached. */
+static void test_leg_bounds_vs_bfs(void **state)
+{
+    (void)state;
+    bf b;
+    bf_init(&b, 1u << 22);
+    hol_nav_prepare_tours(g_nav);
+    static hol__sph sph;
+    static hol__legb L;
+    static hol__legscr scr;
+    int exact = 0, reach = 0, never = 0;
+    for (int q = 0; q < 3; q++) {
+        hol_room s = random_start(20);
+        hol_tile key = random_target(&s, 8);
+        hol__sph_fill(g_nav, key, &sph);
+        assert_true(sph.n > 0);
+        int ss = 9 * s.orient + s.col + 3 * s.row, maxub = 0;
+        hol__legb_fill(g_nav, s.tile, key, &sph, &ss, 1, &L, &scr);
+        for (int s2 = 0; s2 < 36; s2++)
+            if (L.ub[ss][s2] != 255 && L.ub[ss][s2] > maxub)
+                maxub = L.ub[ss][s2];
+        /* BFS to depth maxub: first arrival in each state on the key */
+        int got[36];
+        for (int s2 = 0; s2 < 36; s2++)
+            got[s2] = -1;
+        b.n = 0;
+        memset(b.hash, 0xff, (b.hmask + 1) * sizeof *b.hash);
+        bf_add(&b, &s, 0, -1, 0);
+        if (hol_tile_eq(s.tile, key))
+            got[ss] = 0;
+        size_t head = 0;
+        for (int depth = 1; depth <= maxub; depth++) {
+            size_t end = b.n;
+            for (; head < end; head++)
+                for (int d = 0; d < 4; d++) {
+                    hol_room r = b.st[head].room;
+                    if (hol_room_step(&r, d) || bf_add(&b, &r, 0, (int32_t)head, d) >= 0)
+                        continue;
+                    int s2 = 9 * r.orient + r.col + 3 * r.row;
+                    if (hol_tile_eq(r.tile, key) && got[s2] < 0)
+                        got[s2] = depth;
+                }
+        }
+        for (int s2 = 0; s2 < 36; s2++) {
+            int lb = L.lb[ss][s2], ub = L.ub[ss][s2];
+            if (got[s2] < 0) {
+                assert_int_equal(ub, 255); /* a walk of ub steps would be found */
+                never += lb == 255;
+                continue;
+            }
+            reach++;
+            assert_true(lb <= got[s2]);
+            assert_true(ub >= got[s2]);
+            if (lb == ub) {
+                assert_int_equal(ub, got[s2]);
+                exact++;
+            }
+            if (ub == 255)
+                continue;
+            uint8_t buf[256];
+            hol__walk w = {buf, sizeof buf, 0, 0};
+            hol__legb_walk(g_nav, &L, s.tile, ss, key, s2, &w);
+            assert_int_equal((int)w.n, ub);
+            hol_room r = s;
+            for (size_t i = 0; i < w.n; i++)
+                assert_int_equal(hol_room_step(&r, buf[i]), HOL_OK);
+            assert_true(hol_tile_eq(r.tile, key));
+            assert_int_equal(9 * r.orient + r.col + 3 * r.row, s2);
+        }
+    }
+    print_message("legs 8 tiles beyond the start: %d states reached, %d exact legs agree, "
+                  "%d proved unreachable (never reached)\n", reach, exact, never);
+    assert_true(exact > reach / 2);
+    assert_int_equal(never, 3 * 36 - reach); /* half the states, by parity */
+
+    /* legs to the chest's tile beyond the main table's trusted radius
+     * (first exit from the key's sphere): a radius-7 navigator (trusted 5,
+     * legs trusted 4) and chests 6..8 tiles away, against bf_cost */
+    hol_nav_desc desc = {0};
+    desc.radius = 7;
+    hol_nav *small;
+    assert_int_equal(hol_nav_create(&desc, &small), HOL_OK);
+    hol_nav_prepare_tours(small);
+    static hol__chestb C;
+    int cexact = 0, cn = 0;
+    for (int q = 0; q < 24; q++) {
+        hol_room s = random_start(20);
+        hol_tile chest = random_target(&s, 6 + q % 3);
+        hol__sph_fill(small, s.tile, &sph);
+        assert_true(sph.n > 0);
+        hol__chestb_fill(small, s.tile, chest, &sph, &C, &scr);
+        int ss = 9 * s.orient + s.col + 3 * s.row;
+        int best = bf_cost(&b, &s, chest, 40);
+        assert_true(best >= 0);
+        assert_true(C.lb[ss] <= best);
+        assert_true(C.ub[ss] >= best);
+        cn++;
+        if (C.lb[ss] == C.ub[ss]) {
+            assert_int_equal(C.ub[ss], best);
+            cexact++;
+        }
+        uint8_t buf[256];
+        hol__walk w = {buf, sizeof buf, 0, 0};
+        hol__chestb_walk(small, &C, s.tile, ss, chest, &w);
+        assert_int_equal((int)w.n, C.ub[ss]);
+        hol_room r = s;
+        for (size_t i = 0; i < w.n; i++)
+            assert_int_equal(hol_room_step(&r, buf[i]), HOL_OK);
+        assert_true(hol_tile_eq(r.tile, chest));
+    }
+    print_message("chest legs 6..8 tiles (radius-7 navigator): %d of %d exact, all agree\n",
+                  cexact, cn);
+    assert_true(cexact >= cn / 4); /* a small table proves less */
+    hol_nav_destroy(small);
+    bf_free(&b);
+}
+
 /* Fewest steps to hold every key and then stand on the chest: BFS over
  * (absolute room state, keys held), an independent model of the game's
  * rule (a key counts on entering its tile, the chest only once every key
@@ -743,8 +884,11 @@ static void test_tour_product_bfs(void **state)
 }
 
 /* The two exact tour methods agree: the default navigator's dynamic
- * program (keys within 7 tiles of each other) against the A* of a
- * radius-7 navigator, whose leg table only covers 4 tiles. */
+ * program (keys within 7 tiles of each other, exact legs) against a
+ * radius-7 navigator, whose leg table only covers 4 tiles: its legs go
+ * through spheres (hol_nav_legs.c) and, where their bounds do not meet,
+ * its A*. (The radius-3 navigator of test_tour_product_bfs has no sphere:
+ * A* only.) */
 static void test_tour_dp_vs_astar(void **state)
 {
     (void)state;
@@ -752,7 +896,7 @@ static void test_tour_dp_vs_astar(void **state)
     desc.radius = 7;
     hol_nav *small;
     assert_int_equal(hol_nav_create(&desc, &small), HOL_OK);
-    int compared = 0, astar = 0;
+    int compared = 0, astar = 0, farc = 0;
     for (int q = 0; q < 24; q++) {
         hol_room s = random_start(20);
         int nk = 2 + q % 3;
@@ -775,12 +919,48 @@ static void test_tour_dp_vs_astar(void **state)
         if (!r2.exact)
             continue;
         compared++;
+        farc += far;
         astar += far && r2.nodes > 0;
         assert_int_equal(r1.len, r2.len);
     }
-    print_message("tours: dynamic program vs A*: %d compared, %d by A*\n", compared, astar);
-    assert_true(astar >= 4);
+    print_message("tours: dynamic program vs small navigator: %d compared, %d with keys "
+                  "beyond its leg table (%d by A*)\n", compared, farc, astar);
+    assert_true(farc >= 8);
     hol_nav_destroy(small);
+}
+
+/* Five keys and a chest 1..8 tiles from the start (issue 11's levels):
+ * every tour is exact at the default budget and its walk completes the
+ * level. */
+static void test_tour_spread8(void **state)
+{
+    (void)state;
+    int nosearch = 0;
+    for (int q = 0; q < 8; q++) {
+        hol_room s = random_start(20);
+        hol_tile keys[5], chest;
+        for (int i = 0; i < 5; i++)
+            keys[i] = random_target(&s, 1 + (int)rnd(8));
+        chest = random_target(&s, 1 + (int)rnd(8));
+        uint8_t walk[HOL_NAV_WALK_MAX];
+        hol_nav_result res;
+        assert_int_equal(hol_nav_tour(g_nav, &s, keys, 5, chest, 0, walk, sizeof walk, &res),
+                         HOL_OK);
+        assert_int_equal(res.exact, 1);
+        nosearch += res.nodes == 0;
+        hol_room r = s;
+        unsigned got = 0;
+        for (int i = 0; i <= res.len; i++) {
+            if (i > 0)
+                assert_int_equal(hol_room_step(&r, walk[i - 1]), HOL_OK);
+            for (int k = 0; k < 5; k++)
+                if (hol_tile_eq(r.tile, keys[k]))
+                    got |= 1u << k;
+        }
+        assert_int_equal(got, 31u);
+        assert_true(hol_tile_eq(r.tile, chest));
+    }
+    print_message("5 keys within 8 tiles: 8 of 8 exact, %d with no search\n", nosearch);
 }
 
 /* Budget exhausted: the greedy tour is still complete and valid. */
@@ -1000,6 +1180,8 @@ int main(void)
         cmocka_unit_test(test_table_converges),
         cmocka_unit_test(test_table_converges_default),
         cmocka_unit_test(test_legs_converge),
+        cmocka_unit_test(test_leg_bounds_vs_bfs),
+        cmocka_unit_test(test_tour_spread8),
         cmocka_unit_test(test_table_small),
         cmocka_unit_test(test_optimal_vs_bfs),
         cmocka_unit_test(test_anytime),
