@@ -104,7 +104,7 @@ hol_err hol_nav_find(hol_nav *nav, const hol_room *start, hol_tile target,
  *   programs meet, the tour is exact with no search (result.nodes = 0):
  *   always when the keys lie within 7 tiles of each other and of the start
  *   and the chest within 12 of every key, and mostly for 5 keys within 8
- *   tiles of the start (76 % in bench_nav's sample).
+ *   tiles of the start (about 70-75 % of them in the benches).
  * - Otherwise A* over room state x collected-key set, pruned by the upper
  *   bound, with an admissible heuristic (a backward program over key sets
  *   on the legs' lower bounds), within budget (0: arena capacity). It is

@@ -156,8 +156,8 @@ int main(void)
      * the frames so their random walks stay those of earlier figures */
     for (int m = 0; m < 2; m++) {
         static const int spread[2] = {6, 8};
-        static double wide[100];
-        int n = 100, refused = 0;
+        static double wide[300];
+        int n = 300, refused = 0;
         for (int k = 0; k < n; k++) {
             memset(&L, 0, sizeof L);
             L.mode = HOL_APP_KEYS;

@@ -342,6 +342,7 @@ int main(void)
     bench_tours(nav, 5, 0, "keys and chest at tile distance 1..5 from the start");
     bench_tours(nav, 7, 20000, "keys and chest at tile distance 1..7, --budget 20000");
     bench_tours(nav, 7, 0, "keys and chest at tile distance 1..7, default budget (as the app)");
+    bench_tours(nav, 8, 0, "keys and chest at tile distance 1..8, default budget (as the app)");
     if (getenv("NAV_BENCH_VERIFY"))
         bench_verify(nav);
     else
