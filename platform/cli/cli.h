@@ -79,6 +79,10 @@ int cli_split(char *s, size_t len, char **fields, size_t *lens, int max);
 int cli_read_file(const char *cmd, const char *what, const char *path, size_t max,
                   uint8_t **out_data, size_t *out_size);
 
+/* 0 when path is NULL or names a folder; else report "OPT 'PATH' is not a
+ * folder" (without OPT when it is NULL) and return CLI_EXIT_USAGE. */
+int cli_require_folder(const char *cmd, const char *opt, const char *path);
+
 /* Flush stdout; on failure report it and return CLI_EXIT_FAIL. */
 int cli_finish_output(const char *cmd);
 

@@ -9,6 +9,7 @@
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 void cli_lines_init(cli_lines *l, FILE *in)
 {
@@ -113,6 +114,18 @@ int cli_read_file(const char *cmd, const char *what, const char *path, size_t ma
         cli_error(cmd, 0, "cannot read %s '%.200s': %s", what, path, strerror(errno));
         return CLI_EXIT_FAIL;
     }
+}
+
+int cli_require_folder(const char *cmd, const char *opt, const char *path)
+{
+    struct stat st;
+    if (!path || (!stat(path, &st) && S_ISDIR(st.st_mode)))
+        return 0;
+    if (opt)
+        cli_error(cmd, 0, "%s '%.200s' is not a folder", opt, path);
+    else
+        cli_error(cmd, 0, "'%.200s' is not a folder", path);
+    return CLI_EXIT_USAGE;
 }
 
 int cli_finish_output(const char *cmd)

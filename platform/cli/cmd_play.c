@@ -6,7 +6,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 #include <time.h>
 
 #include "../../core/hol_input_io.h"
@@ -195,13 +194,8 @@ int cli_cmd_play(int argc, char **argv)
         if (st)
             return st;
     }
-    if (log_dir) {
-        struct stat st;
-        if (stat(log_dir, &st) || !S_ISDIR(st.st_mode)) {
-            cli_error(cmd, 0, "--log '%.200s' is not a folder", log_dir);
-            return CLI_EXIT_USAGE;
-        }
-    }
+    if (cli_require_folder(cmd, "--log", log_dir))
+        return CLI_EXIT_USAGE;
     static session_level levels[SESSION_MAX_LEVELS];
     int nlevels = 0;
     int lst = play_levels(cmd, level_path, mode, seed, levels, &nlevels);
@@ -408,14 +402,8 @@ int cli_cmd_replay(int argc, char **argv)
         cli_error(cmd, 0, "--png-frames '%.40s' is not a comma-separated list of frames", list);
         return CLI_EXIT_USAGE;
     }
-    const char *dirs[2] = {log_dir, out_dir};
-    for (int i = 0; i < 2; i++) {
-        struct stat st;
-        if (dirs[i] && (stat(dirs[i], &st) || !S_ISDIR(st.st_mode))) {
-            cli_error(cmd, 0, "'%.200s' is not a folder", dirs[i]);
-            return CLI_EXIT_USAGE;
-        }
-    }
+    if (cli_require_folder(cmd, NULL, log_dir) || cli_require_folder(cmd, NULL, out_dir))
+        return CLI_EXIT_USAGE;
     file_lines fl;
     int status = read_lines(cmd, rec, &fl);
     if (status) {

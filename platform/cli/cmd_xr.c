@@ -5,7 +5,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 
 #include "cli.h"
 #include "play_setup.h"
@@ -115,15 +114,9 @@ int cli_cmd_xr(int argc, char **argv)
         cli_error(cmd, 0, "--check-frame and --check-dir go together");
         return CLI_EXIT_USAGE;
     }
-    struct stat st;
-    if (log_dir && (stat(log_dir, &st) || !S_ISDIR(st.st_mode))) {
-        cli_error(cmd, 0, "--log '%.200s' is not a folder", log_dir);
+    if (cli_require_folder(cmd, "--log", log_dir) ||
+        cli_require_folder(cmd, "--check-dir", check_dir))
         return CLI_EXIT_USAGE;
-    }
-    if (check_dir && (stat(check_dir, &st) || !S_ISDIR(st.st_mode))) {
-        cli_error(cmd, 0, "--check-dir '%.200s' is not a folder", check_dir);
-        return CLI_EXIT_USAGE;
-    }
     static session_level levels[SESSION_MAX_LEVELS];
     int nlevels = 0;
     int lst = play_levels(cmd, level_path, NULL, CLI_SEED_DEFAULT, levels, &nlevels);
