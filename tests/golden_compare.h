@@ -12,6 +12,7 @@
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include <sys/stat.h>
 
 #include "../platform/image/hol_png_file.h"
@@ -23,6 +24,20 @@ static int golden_update_requested(void)
 {
     const char *e = getenv("HOL_GOLDEN_UPDATE");
     return e && e[0] == '1';
+}
+
+/* Where failures are written: GOLDEN_OUT, else golden-out beside the test
+ * program (argv0's folder), else ./golden-out. */
+static void golden_out_dir(char *out, size_t cap, const char *argv0)
+{
+    const char *env = getenv("GOLDEN_OUT");
+    const char *slash = argv0 ? strrchr(argv0, '/') : NULL;
+    if (env && *env)
+        snprintf(out, cap, "%s", env);
+    else if (slash)
+        snprintf(out, cap, "%.*s/golden-out", (int)(slash - argv0), argv0);
+    else
+        snprintf(out, cap, "golden-out");
 }
 
 /* Compare img (w x h RGBA) with tests/golden/NAME.png; on failure write

@@ -33,7 +33,7 @@
 static hol_osmesa gl;
 static hol_app *app;
 static hol_render *rnd;
-static char out_dir[512] = "golden-out";
+static char out_dir[512];
 static double now;
 
 static int setup(void **state)
@@ -233,12 +233,7 @@ static void test_tutorial_prompt(void **state)
 int main(int argc, char **argv)
 {
     (void)argc;
-    const char *env = getenv("GOLDEN_OUT");
-    if (env && *env)
-        snprintf(out_dir, sizeof out_dir, "%s", env);
-    else if (argv[0] && strrchr(argv[0], '/'))
-        snprintf(out_dir, sizeof out_dir, "%.*s/golden-out",
-                 (int)(strrchr(argv[0], '/') - argv[0]), argv[0]);
+    golden_out_dir(out_dir, sizeof out_dir, argv[0]);
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_flag),
         cmocka_unit_test(test_key_and_chest),

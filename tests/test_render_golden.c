@@ -66,7 +66,7 @@ static const golden_view views[] = {
 };
 
 static render_fixture fx;
-static char out_dir[512] = "golden-out";
+static char out_dir[512];
 
 static int setup(void **state)
 {
@@ -405,12 +405,7 @@ static void test_png_reader_survives_damage(void **state)
 int main(int argc, char **argv)
 {
     (void)argc;
-    const char *env = getenv("GOLDEN_OUT");
-    if (env && *env)
-        snprintf(out_dir, sizeof out_dir, "%s", env);
-    else if (argv[0] && strrchr(argv[0], '/'))
-        snprintf(out_dir, sizeof out_dir, "%.*s/golden-out",
-                 (int)(strrchr(argv[0], '/') - argv[0]), argv[0]);
+    golden_out_dir(out_dir, sizeof out_dir, argv[0]);
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_comparison_detects_change),
         cmocka_unit_test(test_png_reader_survives_damage),
