@@ -53,7 +53,7 @@ struct hol_nav {
     int leg_radius, leg_trust, leg_ready;
     uint8_t *far_e;     /* HOL__SPHERE_MAX x 36: least leg from a tile on the
                          * leg table's trusted sphere to each goal state,
-                         * filled with the leg table (hol_nav_tour.c) */
+                         * filled with the leg table (hol__far_e_fill) */
     struct hol__sph *sph; /* HOL__SPH_CACHE spheres around recent keys */
     hol_tile sph_tile[HOL__SPH_CACHE];
     uint32_t sph_stamp[HOL__SPH_CACHE]; /* last use, 0: empty */
@@ -128,6 +128,8 @@ typedef struct hol__legscr {
     uint16_t key[HOL__SPHERE_MAX], order[HOL__SPHERE_MAX];
 } hol__legscr;
 
+/* nav->far_e, once the leg table is built (hol_nav_prepare_tours). */
+void hol__far_e_fill(hol_nav *nav);
 /* Needs the leg table (hol_nav_prepare_tours). */
 void hol__sph_fill(const hol_nav *nav, hol_tile key, hol__sph *out_sph);
 /* The sphere around key from the navigator's cache (filled on a miss,

@@ -25,11 +25,7 @@
 
 int hol__rel_of(const hol_nav *nav, hol_tile from, hol_tile to, int trust, hol__rel *out)
 {
-    hol_tile u;
-    if (hol_tile_relative(to, 0, from, &u, &out->facing) || hol_tile_dist0(u) > trust)
-        return 0;
-    out->idx = hol_navtab_rank(&nav->tab, u);
-    return 1;
+    return hol__rel_ranked(nav, from, to, out) <= trust; /* trust <= the radius */
 }
 
 static int hol__leg_at(const hol_nav *nav, const hol__rel *r, int s, int s2)
@@ -125,6 +121,29 @@ const hol__sph *hol__sph_get(hol_nav *nav, hol_tile key)
     nav->sph_tile[slot] = key;
     nav->sph_stamp[slot] = ++nav->sph_clock;
     return &nav->sph[slot];
+}
+
+/* Least leg from any room state on each tile of the sphere at the leg
+ * table's trusted radius (relative index off[rho] + x) to each goal state
+ * s2: the same for every destination, as the leg table is relative. */
+void hol__far_e_fill(hol_nav *nav)
+{
+    int rho = nav->leg_trust;
+    uint32_t lo = nav->tab.off[rho], n = nav->tab.off[rho + 1] - lo;
+    uint8_t (*e)[36] = (uint8_t (*)[36])(void *)nav->far_e;
+    if (n > HOL__SPHERE_MAX)
+        return; /* no spheres either (hol__sph_fill) */
+    for (uint32_t x = 0; x < n; x++)
+        for (int s2 = 0; s2 < 36; s2++) {
+            int m = 255;
+            for (int o = 0; o < 4; o++)
+                for (int cell = 0; cell < 9; cell++) {
+                    int v = hol_navtab_leg(nav->leg, lo + x, o, cell, s2 / 9, s2 % 9);
+                    if (v < m)
+                        m = v;
+                }
+            e[x][s2] = (uint8_t)m;
+        }
 }
 
 /* Tiles of the sphere by cheap bound, ascending (counting sort). */
@@ -279,19 +298,11 @@ void hol__legb_fill(const hol_nav *nav, hol_tile a, hol_tile b, const hol__sph *
     const uint8_t (*e)[36] = (const uint8_t (*)[36])(const void *)nav->far_e;
     for (uint32_t x = 0; x < sb->n; x++) {
         hol__legx *X = &scr->x[x];
-        hol_tile u;
-        int facing;
-        X->d = 255;
-        if (!hol_tile_relative(sb->tile[x], 0, a, &u, &facing)) {
-            int du = hol_tile_dist0(u);
-            X->d = (uint8_t)(du < 255 ? du : 255);
-            X->r.facing = facing;
-            X->r.idx = du <= nav->tab.radius ? hol_navtab_rank(&nav->tab, u) : 0;
-        }
+        X->d = (uint8_t)hol__rel_ranked(nav, a, sb->tile[x], &X->r);
         int c1 = 255, e2 = 255;
         for (int i = 0; i < nsrc; i++) {
             int s = src[i];
-            int v = X->d == 255 ? 0 : hol__lb_rel(nav, &X->r, X->d, s);
+            int v = hol__lb_rel(nav, &X->r, X->d, s);
             X->c1[s] = (uint8_t)(v < 255 ? v : 255);
             if (X->c1[s] < c1)
                 c1 = X->c1[s];
@@ -459,17 +470,10 @@ void hol__chestb_fill(const hol_nav *nav, hol_tile a, hol_tile chest, const hol_
     const uint8_t (*e)[36] = (const uint8_t (*)[36])(const void *)nav->far_e;
     for (uint32_t x = 0; x < sa->n; x++) {
         hol__legx *X = &scr->x[x];
-        hol_tile u;
-        int facing, l2 = 255, e1 = 255;
-        X->d = 255;
-        if (!hol_tile_relative(chest, 0, sa->tile[x], &u, &facing)) {
-            int dx = hol_tile_dist0(u);
-            X->d = (uint8_t)(dx < 255 ? dx : 255);
-            X->r.facing = facing;
-            X->r.idx = dx <= nav->tab.radius ? hol_navtab_rank(&nav->tab, u) : 0;
-        }
+        int l2 = 255, e1 = 255;
+        X->d = (uint8_t)hol__rel_ranked(nav, sa->tile[x], chest, &X->r);
         for (int m = 0; m < 36; m++) {
-            int lv = X->d == 255 ? 0 : hol__lb_rel(nav, &X->r, X->d, m), uv = 255;
+            int lv = hol__lb_rel(nav, &X->r, X->d, m), uv = 255;
             if (X->d <= nav->tab.radius)
                 uv = hol__cost_at(nav, &X->r, m);
             X->c1[m] = (uint8_t)(lv < 255 ? lv : 255);

@@ -19,60 +19,33 @@
 
 /* ---- tours ---- */
 
-/* Least leg from any room state on each tile of the sphere at the leg
- * table's trusted radius (relative index off[rho] + x) to each goal state
- * s2: the same for every destination, as the leg table is relative. */
-static void hol__far_e(const hol_nav *nav, uint8_t (*e)[36])
-{
-    int rho = nav->leg_trust;
-    uint32_t lo = nav->tab.off[rho], n = nav->tab.off[rho + 1] - lo;
-    for (uint32_t x = 0; x < n; x++)
-        for (int s2 = 0; s2 < 36; s2++) {
-            int m = 255;
-            for (int o = 0; o < 4; o++)
-                for (int cell = 0; cell < 9; cell++) {
-                    int v = hol_navtab_leg(nav->leg, lo + x, o, cell, s2 / 9, s2 % 9);
-                    if (v < m)
-                        m = v;
-                }
-            e[x][s2] = (uint8_t)m;
-        }
-}
-
 void hol_nav_prepare_tours(hol_nav *nav)
 {
     if (!nav->leg_ready) {
         hol_navtab_build_legs(&nav->tab, nav->leg_radius, nav->leg, nav->nodes);
         nav->leg_ready = 1;
         nav->hash_dirty = 1; /* the build's scratch was the arena */
-        if (nav->tab.off[nav->leg_trust + 1] - nav->tab.off[nav->leg_trust] <= HOL__SPHERE_MAX)
-            hol__far_e(nav, (uint8_t (*)[36])(void *)nav->far_e);
+        hol__far_e_fill(nav);
     }
 }
 
 /* Least cost from any room state on tile a to stand on b. */
 static int hol__lb_any(const hol_nav *nav, hol_tile a, hol_tile b)
 {
-    hol_tile u;
-    if (hol_tile_relative(b, 0, a, &u, NULL))
-        return nav->tab.min_at[nav->trust];
-    int d = hol_tile_dist0(u);
-    if (d <= nav->trust) {
-        uint32_t idx = hol_navtab_rank(&nav->tab, u);
-        int m = 255;
-        for (int c = 0; c < 9; c++)
-            if (nav->tab.cost[9 * (size_t)idx + (size_t)c] < m)
-                m = nav->tab.cost[9 * (size_t)idx + (size_t)c];
-        return m;
+    hol__rel r;
+    int d = hol__rel_ranked(nav, a, b, &r), m = 255;
+    for (int s = 0; s < 36; s++) {
+        int v = hol__lb_rel(nav, &r, d, s);
+        if (v < m)
+            m = v;
     }
-    return nav->tab.min_at[nav->trust] + d - nav->trust;
+    return m;
 }
 
 typedef struct hol__tour {
     const hol_tile *keys;
     int nkeys;
     hol_tile chest;
-    int key_chest[HOL_NAV_TOUR_MAX_KEYS];
     /* mst[mask]: minimum spanning tree over the chest and the keys NOT in
      * mask, edges the least cost between two tiles from any room state */
     int mst[1 << HOL_NAV_TOUR_MAX_KEYS];
@@ -418,8 +391,6 @@ hol_err hol_nav_tour(hol_nav *nav, const hol_room *start, const hol_tile *keys,
             wt[i][j] = i == j ? 0
                              : hol__lb_any(nav, i < nkeys ? keys[i] : chest,
                                            j < nkeys ? keys[j] : chest);
-    for (int i = 0; i < nkeys; i++)
-        t.key_chest[i] = wt[i][nkeys];
     for (unsigned m = 0; m < (1u << nkeys); m++)
         t.mst[m] = hol__tour_mst((const int(*)[HOL_NAV_TOUR_MAX_KEYS + 1])wt, nkeys, m);
     if (budget == 0 || budget > nav->cap)
