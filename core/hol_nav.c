@@ -299,36 +299,17 @@ void hol__nav_emit(hol__walk *w, int dir)
         w->overflow = 1;
 }
 
+static int hol__tab_cost(const void *tab, uint32_t idx, int o, int cell)
+{
+    return hol_navtab_cost((const hol_navtab *)tab, idx, o, cell);
+}
+
 /* Descend the table from (idx, o, cell) to cost 0; returns the steps taken
- * (the table cost) and updates the state. */
+ * (the table cost). */
 int hol__nav_descend(const hol_navtab *tab, uint32_t idx, int o, int cell,
                         hol__walk *w)
 {
-    int v = hol_navtab_cost(tab, idx, o, cell), steps = 0;
-    while (v > 0 && v < 255) {
-        int moved = 0;
-        for (int d = 0; d < 4 && !moved; d++) {
-            int c2 = hol__nav_cell_step(cell, d);
-            if (c2 < 0)
-                continue;
-            uint32_t e = tab->nb[4 * (size_t)idx + (size_t)((o + d) & 3)];
-            if (e == HOL_NAVTAB_NONE)
-                continue;
-            int o2 = (int)((e & 3u) - (uint32_t)d) & 3;
-            if (hol_navtab_cost(tab, e >> 2, o2, c2) == v - 1) {
-                hol__nav_emit(w, d);
-                idx = e >> 2;
-                o = o2;
-                cell = c2;
-                v--;
-                steps++;
-                moved = 1;
-            }
-        }
-        if (!moved)
-            break; /* cannot happen for a BFS table */
-    }
-    return steps;
+    return hol__descend(tab, UINT32_MAX, hol__tab_cost, tab, idx, o, cell, w);
 }
 
 /* Admissible lower bound for a node outside the trusted radius: it must

@@ -175,6 +175,40 @@ int hol__nav_room_ok(const hol_room *r);
 void hol__nav_emit(hol__walk *w, int dir);
 /* Descend the tile table from (idx, o, cell) to cost 0; returns the steps. */
 int hol__nav_descend(const hol_navtab *tab, uint32_t idx, int o, int cell, hol__walk *w);
+
+/* The descent both tables share: from (idx, o, cell), step to a neighbour
+ * (tile index below n) whose cost(ctx, idx, o, cell) is one less, until 0;
+ * returns the steps. Inline so that each caller's cost is inlined too. */
+typedef int (*hol__cost_fn)(const void *ctx, uint32_t idx, int o, int cell);
+static inline int hol__descend(const hol_navtab *tab, uint32_t n, hol__cost_fn cost,
+                               const void *ctx, uint32_t idx, int o, int cell, hol__walk *w)
+{
+    int v = cost(ctx, idx, o, cell), steps = 0;
+    while (v > 0 && v < 255) {
+        int moved = 0;
+        for (int d = 0; d < 4 && !moved; d++) {
+            int c2 = hol__nav_cell_step(cell, d);
+            if (c2 < 0)
+                continue;
+            uint32_t e = tab->nb[4 * (size_t)idx + (size_t)((o + d) & 3)];
+            if (e == HOL_NAVTAB_NONE || (e >> 2) >= n)
+                continue;
+            int o2 = (int)((e & 3u) - (uint32_t)d) & 3;
+            if (cost(ctx, e >> 2, o2, c2) == v - 1) {
+                hol__nav_emit(w, d);
+                idx = e >> 2;
+                o = o2;
+                cell = c2;
+                v--;
+                steps++;
+                moved = 1;
+            }
+        }
+        if (!moved)
+            break; /* cannot happen for a BFS table */
+    }
+    return steps;
+}
 /* Bytes of arena the tours use as scratch (hol_nav_tour.c): the dynamic
  * program's table, then the far keys' bounds. */
 size_t hol__nav_tour_scratch(void);

@@ -531,33 +531,23 @@ void hol__legb_reverse(const hol__legb *L, hol__legb *out_rev)
 }
 
 /* Descend the leg table from (idx, o, cell) to the goal state (ob, cb). */
+typedef struct hol__leg_goal {
+    const uint8_t *leg;
+    int ob, cb;
+} hol__leg_goal;
+
+static int hol__leg_cost(const void *ctx, uint32_t idx, int o, int cell)
+{
+    const hol__leg_goal *g = ctx;
+    return hol_navtab_leg(g->leg, idx, o, cell, g->ob, g->cb);
+}
+
 static void hol__leg_descend(const hol_nav *nav, uint32_t idx, int o, int cell, int ob,
                              int cb, hol__walk *w)
 {
-    uint32_t n = nav->tab.off[nav->leg_radius + 1];
-    int v = hol_navtab_leg(nav->leg, idx, o, cell, ob, cb);
-    while (v > 0 && v < 255) {
-        int moved = 0;
-        for (int d = 0; d < 4 && !moved; d++) {
-            int c2 = hol__nav_cell_step(cell, d);
-            if (c2 < 0)
-                continue;
-            uint32_t e = nav->tab.nb[4 * (size_t)idx + (size_t)((o + d) & 3)];
-            if (e == HOL_NAVTAB_NONE || (e >> 2) >= n)
-                continue;
-            int o2 = (int)((e & 3u) - (uint32_t)d) & 3;
-            if (hol_navtab_leg(nav->leg, e >> 2, o2, c2, ob, cb) == v - 1) {
-                hol__nav_emit(w, d);
-                idx = e >> 2;
-                o = o2;
-                cell = c2;
-                v--;
-                moved = 1;
-            }
-        }
-        if (!moved)
-            break;
-    }
+    hol__leg_goal g = {nav->leg, ob, cb};
+    hol__descend(&nav->tab, nav->tab.off[nav->leg_radius + 1], hol__leg_cost, &g, idx, o,
+                 cell, w);
 }
 
 /* The leg table's walk from room state s on tile a to s2 on tile b. */
