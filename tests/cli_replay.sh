@@ -23,7 +23,7 @@ flag Wrf'
 printf -- '- Wrf\n' | "$H" nav >"$T/nav" || bad "nav"
 K=$(cut -d' ' -f1 "$T/nav") WALK=$(cut -d' ' -f2 "$T/nav")
 rec "$LEVEL" "$WALK" >"$T/opt.rec"
-mkdir "$T/l1" "$T/l2" "$T/l3" "$T/png"
+mkdir "$T/l1" "$T/l2" "$T/l3" "$T/png" "$T/png2"
 run "optimal walk" 0 "$H" replay "$T/opt.rec" --log "$T/l1"
 grep -q "^level lv done steps $K optimum $K " "$T/out" && ok ||
     bad "optimal walk: $(cat "$T/out"), want done $K $K"
@@ -43,6 +43,11 @@ diff -r "$T/l1" "$T/l2" >/dev/null && ok || bad "replay logs differ between runs
 for f in 000000 000003; do
     head -c 8 "$T/png/frame-$f.png" | od -An -c | grep -q 'P   N   G' && ok || bad "frame $f is not a PNG"
 done
+# a frame the recording never reaches: one line, exit 2, the others written
+run "frame beyond" 2 "$H" replay "$T/opt.rec" --png-frames 2,99999 --out-dir "$T/png2" \
+    --size 64x48
+one_line "frame beyond" "frame 99999 is beyond the recording"
+[ -f "$T/png2/frame-000002.png" ] && ok || bad "frame beyond: frame 2 was not written"
 
 # keys and chest: both keys, then the chest
 LEVEL='mode keys

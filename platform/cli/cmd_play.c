@@ -75,7 +75,8 @@ static const char *const replay_usage =
     "Run a recording (holonomy play --record) through the same app step: the\n"
     "logs come out byte for byte as in the play. --png-frames renders the\n"
     "listed frames (0-based, comma separated) headless with OSMesa to\n"
-    "D/frame-NNNNNN.png (--size, default 640x480).\n"
+    "D/frame-NNNNNN.png (--size, default 640x480); a frame beyond the\n"
+    "recording is bad input (the others are still written).\n"
     "\n"
     "Exit status: 0 ok, 1 failure, 2 bad input (a bad recording line is named).\n";
 
@@ -484,6 +485,15 @@ int cli_cmd_replay(int argc, char **argv)
             break;
     }
     print_end(&s);
+    /* a frame the recording never reached is bad input, said once (the
+     * frames it reached are written) */
+    for (int k = 0; k < npng; k++)
+        if (pngs[k] >= s.frame) {
+            cli_error(cmd, 0, "--png-frames: frame %ld is beyond the recording (frames 0..%ld)",
+                      pngs[k], s.frame - 1);
+            status = CLI_EXIT_USAGE;
+            break;
+        }
 out:
     hol_render_destroy(r);
     free(rgba);
