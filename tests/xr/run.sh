@@ -8,6 +8,12 @@
 # unbinds them. Needs root.
 set -eu
 root=$(cd "$(dirname "$0")/../.." && pwd)
+# One run at a time on a machine: the chroot's /src and /tmp/xr-test are
+# shared by every checkout (flock waits for another run to finish).
+if [ -z "${HOL_XR_LOCKED:-}" ] && command -v flock >/dev/null 2>&1; then
+    mkdir -p /var/cache/holonomy
+    HOL_XR_LOCKED=1 exec flock /var/cache/holonomy/xr-test.lock sh "$0" "$@"
+fi
 start=$(date +%s)
 CHROOT=$(sh "$root/tests/xr/chroot.sh")
 echo "xr-test: chroot ready at $CHROOT ($(( $(date +%s) - start )) s)"
