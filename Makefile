@@ -121,6 +121,11 @@ $(BUILD)/tests/test_level: tests/test_level.c $(LEVEL_SRC) $(CORE_LIB)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) -o $@ $< $(LEVEL_SRC) $(CORE_LIB) $(LDFLAGS) -lcmocka $(LDLIBS)
 
+# Output targets and the atomic writer (platform/file).
+$(BUILD)/tests/test_file: tests/test_file.c platform/file/hol_file.c platform/file/hol_file.h $(CORE_LIB)
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) -o $@ $< platform/file/hol_file.c $(CORE_LIB) $(LDFLAGS) -lcmocka $(LDLIBS)
+
 # The headset layer's pure part (room in the stage, fade, lifecycle, bindings).
 $(BUILD)/tests/test_xr_%: tests/test_xr_%.c $(XR_PURE_SRC) $(wildcard platform/openxr/*.h) $(CORE_LIB)
 	@mkdir -p $(dir $@)

@@ -52,6 +52,54 @@ run "save again" 0 "$H" world --seed 3 --walk NE --quiet --save w.img
 [ -e "w.img.tmpQwErTy" ] && ok || bad "an unrelated file was removed"
 [ -e ".w.img.holonomy-tmp.$$.LiVe12" ] && ok || bad "a running writer's temporary file was removed"
 
+# --- outputs: a regular file or a new name in an existing folder, else
+# exit 2 with one line before any work (a save replaced a device node and a
+# FIFO with exit 0; run as root against /dev/null it replaced /dev/null) ----
+mkdir outs && cd outs || exit 1
+mkfifo fifo; mkdir dir; ln -s fifo lfifo; ln -s nowhere dangling; touch plain
+mknod null c 1 3 2>/dev/null || [ "$(id -u)" != 0 ] || bad "mknod failed as root"
+# target WHAT: a special file, and the words that name it
+for target in "fifo:is a FIFO" "dir:is a directory" "lfifo:is a symbolic link to a FIFO" \
+              "dangling:is a symbolic link to nothing" "null:is a character device" \
+              "no/such:is in a folder that does not exist" "plain/x:is under a file" \
+              "dir/:names a folder"; do
+  f=${target%%:*} why=${target#*:}
+  [ "$f" = null ] && [ ! -e null ] && continue # not root: no device node
+  run "world --save $f" 2 "$H" world --seed 3 --walk NE --save "$f"
+  one_line "world --save $f" "--save '$f' $why.*; an output is a regular file or a new name"
+  [ -s "$T/out" ] && bad "world --save $f: worked before refusing (tiles printed)" || ok
+  run "world save $f" 2 "$H" world save "$f" --quiet
+  run "render --out $f" 2 "$H" render --bare --size 8x8 --out "$f"
+  one_line "render --out $f" "--out '$f' $why"
+  run "render --tile-ids $f" 2 "$H" render --bare --size 8x8 --stats --tile-ids "$f"
+  one_line "render --tile-ids $f" "--tile-ids '$f' $why"
+  [ -s "$T/out" ] && bad "render --tile-ids $f: rendered before refusing" || ok
+done
+[ -p fifo ] && [ -d dir ] && [ -L lfifo ] && [ -L dangling ] && ok || bad "a special file was replaced"
+[ ! -e null ] || [ -c null ] && ok || bad "the device node was replaced"
+[ -z "$(ls -A dir)" ] && ok || bad "something was written into dir"
+# the good targets still work: a new name, a regular file, a link to one
+ln -s plain lplain
+run "world --save new" 0 "$H" world --seed 3 --quiet --save new.img
+run "world --save plain" 0 "$H" world --seed 3 --quiet --save plain
+run "world --save lplain" 0 "$H" world --seed 3 --quiet --save lplain
+run "render --out new" 0 "$H" render --bare --size 8x8 --out new.png --tile-ids ids.txt
+[ -s new.png ] && [ -s ids.txt ] && ok || bad "render wrote nothing"
+# a folder this user cannot write in is refused at the start too (as root:
+# run as nobody; the copy of the binary is theirs to run)
+mkdir ro && chmod 555 ro && chmod 755 "$T" . && cp "$H" hcopy && chmod 755 hcopy
+if [ "$(id -u)" = 0 ]; then as_user="setpriv --reuid=65534 --regid=65534 --clear-groups"; else as_user=""; fi
+run "world --save in a read-only folder" 2 $as_user ./hcopy world --seed 3 --save ro/w.img
+one_line "read-only folder" "is in a folder this user cannot write"
+[ -s "$T/out" ] && bad "read-only folder: worked before refusing" || ok
+# replay's frames: every frame's file is checked before the replay runs
+{ printf 'holonomy-rec 1\nlevel lv\nL mode explore\nend\n'; walk_input NESW; } >rec.txt
+mkdir frames && mkfifo frames/frame-000002.png
+run "replay --out-dir with a FIFO frame" 2 timeout 20 "$H" replay rec.txt --png-frames 0,2 --out-dir frames
+one_line "replay --out-dir" "frame-000002.png' is a FIFO"
+[ -p frames/frame-000002.png ] && [ ! -e frames/frame-000000.png ] && ok || bad "replay wrote frames or replaced the FIFO"
+cd "$T" || exit 1
+
 # --- --capacity bounds ------------------------------------------------------
 run "capacity 1" 2 "$H" world --capacity 1 --quiet
 one_line "capacity 1" "below the minimum of 4096 tiles for radius 4"

@@ -108,7 +108,7 @@ if [ "$(id -u)" != 0 ]; then
 fi
 chmod 0755 "$T"
 "$H" render --size 16x16 --out "$T/nodir/x.png" 2>"$T/err"
-[ $? -eq 1 ] || fail "missing directory should exit 1"
+[ $? -eq 2 ] || fail "a missing folder is bad usage, refused before rendering (exit 2)"
 [ "$(cat "$T/keep.png")" = old ] || fail "old file changed"
 # the minimap in the hand (its picture is the golden minimap_hand)
 "$H" render --walk NE --eye 2.4,1.6,0.6 --yaw 135 --size 64x48 --hand 2.2,1.3,0.8 \

@@ -110,8 +110,8 @@ one_line "not an image" "not a holonomy world"
 run "missing file" 2 "$H" world --load "$T/nope.hw"
 one_line "missing file" "cannot open"
 same "original untouched" "$T/w.hw" "$T/orig.hw"
-run "unwritable" 1 "$H" world --seed 1 --quiet --save "$T/no/such/dir/w.hw"
-one_line "unwritable" "cannot"
+run "missing folder" 2 "$H" world --seed 1 --quiet --save "$T/no/such/dir/w.hw"
+one_line "missing folder" "is in a folder that does not exist"
 
 # bad usage
 run "radius 9" 2 "$H" world --radius 9

@@ -83,6 +83,14 @@ int cli_read_file(const char *cmd, const char *what, const char *path, size_t ma
  * folder" (without OPT when it is NULL) and return CLI_EXIT_USAGE. */
 int cli_require_folder(const char *cmd, const char *opt, const char *path);
 
+/* 0 when path is NULL (no output) or may be written as an output: a
+ * regular file or a new name in an existing folder (hol_file_check_out);
+ * else report "OPT 'PATH' is a FIFO; an output is a regular file or a new
+ * name in an existing folder" (without OPT when it is NULL) and return
+ * CLI_EXIT_USAGE. Every command checks each output this way before any
+ * work. */
+int cli_check_output(const char *cmd, const char *opt, const char *path);
+
 /* Flush stdout; on failure report it and return CLI_EXIT_FAIL. */
 int cli_finish_output(const char *cmd);
 

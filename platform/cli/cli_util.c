@@ -128,6 +128,16 @@ int cli_require_folder(const char *cmd, const char *opt, const char *path)
     return CLI_EXIT_USAGE;
 }
 
+int cli_check_output(const char *cmd, const char *opt, const char *path)
+{
+    char why[160];
+    if (!path || !hol_file_check_out(path, why, sizeof why))
+        return 0;
+    cli_error(cmd, 0, "%s%s'%.200s' %s; an output is a regular file or a new name in an "
+              "existing folder", opt ? opt : "", opt ? " " : "", path, why);
+    return CLI_EXIT_USAGE;
+}
+
 int cli_finish_output(const char *cmd)
 {
     if (fflush(stdout) != 0 || ferror(stdout)) {

@@ -405,6 +405,12 @@ int cli_cmd_replay(int argc, char **argv)
     }
     if (cli_require_folder(cmd, NULL, log_dir) || cli_require_folder(cmd, NULL, out_dir))
         return CLI_EXIT_USAGE;
+    for (int k = 0; k < npng; k++) { /* every frame's file, before any work */
+        char path[4096];
+        snprintf(path, sizeof path, "%s/frame-%06ld.png", out_dir, pngs[k]);
+        if (cli_check_output(cmd, "--out-dir", path))
+            return CLI_EXIT_USAGE;
+    }
     file_lines fl;
     int status = read_lines(cmd, rec, &fl);
     if (status) {

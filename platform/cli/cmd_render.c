@@ -458,6 +458,8 @@ int cli_cmd_render(int argc, char **argv)
         cli_error(cmd, 0, "nothing to do: give --out FILE.png, --tile-ids FILE or --stats");
         return CLI_EXIT_USAGE;
     }
+    if (cli_check_output(cmd, "--out", out) || cli_check_output(cmd, "--tile-ids", ids_path))
+        return CLI_EXIT_USAGE;
     /* the user's state */
     size_t wlen = strlen(walk), nd = 0, bad = 0;
     uint8_t *dirs = malloc(wlen + 1);

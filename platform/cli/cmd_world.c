@@ -321,6 +321,8 @@ int cli_cmd_world(int argc, char **argv)
     world_opts o;
     if (!parse_args(argc, argv, &o))
         return CLI_EXIT_USAGE;
+    if (cli_check_output(CMD, "--save", o.save))
+        return CLI_EXIT_USAGE;
 
     size_t wlen = strlen(o.walk), nsteps = 0, bad = 0;
     uint8_t *dirs = malloc(wlen + 1);

@@ -60,11 +60,110 @@ static void hol__clean_leftovers(const char *path)
     closedir(d);
 }
 
+static const char *hol__kind(mode_t m)
+{
+    if (S_ISDIR(m))
+        return "a directory";
+    if (S_ISFIFO(m))
+        return "a FIFO";
+    if (S_ISSOCK(m))
+        return "a socket";
+    if (S_ISCHR(m))
+        return "a character device";
+    if (S_ISBLK(m))
+        return "a block device";
+    return "not a regular file";
+}
+
+/* The reason in msg (fmt holds one %s, for what), errno set for callers
+ * that print strerror. */
+static hol_err hol__refuse(char *msg, size_t cap, int e, const char *fmt, const char *what)
+{
+    if (msg && cap)
+        snprintf(msg, cap, fmt, what);
+    errno = e;
+    return HOL_EARG;
+}
+
+/* The folder path is in (".", "/", or up to its last '/'): it must exist
+ * and be writable (the temporary file and the rename need both). */
+static hol_err hol__check_folder(const char *path, char *msg, size_t cap)
+{
+    const char *slash = strrchr(path, '/');
+    char *dir = strdup(slash ? path : ".");
+    if (!dir)
+        return hol__refuse(msg, cap, ENOMEM, "%s", "cannot be checked (out of memory)");
+    if (slash)
+        dir[slash == path ? 1 : slash - path] = 0;
+    struct stat st;
+    hol_err err = HOL_OK;
+    if (stat(dir, &st) != 0)
+        err = hol__refuse(msg, cap, ENOENT, "%s", "is in a folder that does not exist");
+    else if (!S_ISDIR(st.st_mode))
+        err = hol__refuse(msg, cap, ENOTDIR, "%s", "is under a file, not a folder");
+    else if (access(dir, W_OK | X_OK) != 0)
+        err = hol__refuse(msg, cap, EACCES, "%s", "is in a folder this user cannot write");
+    free(dir);
+    return err;
+}
+
+hol_err hol_file_check_out(const char *path, char *msg, size_t cap)
+{
+    size_t n = strlen(path);
+    if (n == 0)
+        return hol__refuse(msg, cap, ENOENT, "%s", "is an empty name");
+    if (path[n - 1] == '/')
+        return hol__refuse(msg, cap, EISDIR, "%s", "names a folder (it ends in '/')");
+    struct stat lst, st;
+    if (lstat(path, &lst) == 0) {
+        if (S_ISLNK(lst.st_mode)) {
+            if (stat(path, &st) != 0)
+                return hol__refuse(msg, cap, EEXIST, "%s", errno == ELOOP
+                                   ? "is a symbolic link loop"
+                                   : "is a symbolic link to nothing");
+            if (!S_ISREG(st.st_mode))
+                return hol__refuse(msg, cap, S_ISDIR(st.st_mode) ? EISDIR : EEXIST,
+                                   "is a symbolic link to %s", hol__kind(st.st_mode));
+        } else if (!S_ISREG(lst.st_mode)) {
+            return hol__refuse(msg, cap, S_ISDIR(lst.st_mode) ? EISDIR : EEXIST,
+                               "is %s", hol__kind(lst.st_mode));
+        }
+    } else if (errno == ENOTDIR) {
+        return hol__refuse(msg, cap, ENOTDIR, "%s", "is under a file, not a folder");
+    } else if (errno == ENAMETOOLONG) {
+        return hol__refuse(msg, cap, ENAMETOOLONG, "%s", "is too long a name");
+    } else if (errno != ENOENT) {
+        int e = errno;
+        return hol__refuse(msg, cap, e, "cannot be checked: %s", strerror(e));
+    }
+    return hol__check_folder(path, msg, cap);
+}
+
+/* At the rename: path is still a new name, a regular file or a symbolic
+ * link to one (else errno EEXIST, or lstat's). */
+static int hol__replaceable(const char *path)
+{
+    struct stat st;
+    if (lstat(path, &st) != 0)
+        return errno == ENOENT;
+    if (S_ISLNK(st.st_mode) && stat(path, &st) != 0) {
+        errno = EEXIST;
+        return 0;
+    }
+    if (!S_ISREG(st.st_mode))
+        errno = EEXIST;
+    return S_ISREG(st.st_mode);
+}
+
 hol_err hol_file_atomic_open(hol_file_atomic *a, const char *path)
 {
     size_t n = strlen(path);
     a->f = NULL;
+    a->tmp = NULL;
     a->path = path;
+    hol_err cerr = hol_file_check_out(path, NULL, 0);
+    if (cerr)
+        return cerr;
     hol__clean_leftovers(path);
     a->tmp = malloc(n + 64);
     if (!a->tmp)
@@ -137,6 +236,12 @@ hol_err hol_file_atomic_commit(hol_file_atomic *a)
         e = errno;
     }
     a->f = NULL;
+    hol_err err = HOL_EIO;
+    if (ok && !hol__replaceable(a->path)) {
+        ok = 0;
+        e = errno;
+        err = HOL_EARG; /* never rename over a device node or a FIFO */
+    }
     if (ok && rename(a->tmp, a->path) != 0) {
         ok = 0;
         e = errno;
@@ -147,7 +252,7 @@ hol_err hol_file_atomic_commit(hol_file_atomic *a)
     a->tmp = NULL;
     if (!ok) {
         errno = e;
-        return HOL_EIO;
+        return err;
     }
     hol__fsync_dir(a->path);
     return HOL_OK;

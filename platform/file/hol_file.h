@@ -10,6 +10,19 @@
  *   left as it was. A save killed mid-write leaves its temporary file; the
  *   next save of the same PATH removes every such file whose writer no
  *   longer runs (and nothing else).
+ * - Output targets (every save, recording, log file, PNG, id list):
+ *   hol_file_check_out accepts an existing regular file (also through a
+ *   symbolic link) or a name that does not exist yet in an existing folder
+ *   this process may write in, and refuses anything else - a device node,
+ *   a FIFO, a socket, a directory, a symbolic link to one of those or to
+ *   nothing, a name ending in '/', a missing or unwritable folder - with
+ *   HOL_EARG and the reason in words in msg ("is a FIFO", ...; it follows
+ *   the quoted path in a message). Commands call it for every output
+ *   before any work. hol_file_atomic_open checks the same (HOL_EARG), and
+ *   hol_file_atomic_commit never renames over anything but a regular file
+ *   or a symbolic link to one (if the target changed kind meanwhile: HOL_EARG,
+ *   errno EEXIST, the temporary file removed): a save never replaces a
+ *   device node or a FIFO, even when raced.
  * - Errors are hol_err; errno still holds the cause for messages.
  * - Reading never hangs and never reads more than asked: hol_file_open_in
  *   opens only regular files (a FIFO, a directory or a device is HOL_EARG,
@@ -27,6 +40,11 @@
 #include <stdio.h>
 
 #include "../../core/hol_err.h"
+
+/* HOL_OK when path may be written as an output (see the contract), else
+ * HOL_EARG with the reason in msg (cap bytes, NUL-terminated; msg may be
+ * NULL). */
+hol_err hol_file_check_out(const char *path, char *msg, size_t cap);
 
 hol_err hol_file_write_atomic(const char *path, const void *data, size_t size);
 
