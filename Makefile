@@ -80,7 +80,7 @@ FUZZ_BIN := $(FUZZ_SRC:fuzz/%.c=$(BUILD)/fuzz/%)
 DEB_PACKAGES := make gcc clang libcmocka-dev libosmesa6-dev libegl-dev \
   libgles-dev libhidapi-dev libusb-1.0-0-dev libopenxr-dev \
   libegl-mesa0 libgl1-mesa-dri gcc-aarch64-linux-gnu libc6-dev-arm64-cross \
-  qemu-user xvfb zlib1g-dev libx11-dev
+  qemu-user xvfb xdotool zlib1g-dev libx11-dev
 # libc6-dev-arm64-cross is only a Recommends of gcc-aarch64-linux-gnu, and
 # deps installs without recommends: it must be named here.
 # apt waits up to APT_LOCK_WAIT seconds for another apt/dpkg to finish.

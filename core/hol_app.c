@@ -11,7 +11,8 @@
 #include "hol_world.h"
 
 #define HOL__PI 3.14159265358979323846
-#define HOL__MAX_DT 0.1 /* longest frame pancake motion takes */
+#define HOL__SUBSTEP (1.0 / 60) /* longest pancake motion sub-step, seconds */
+#define HOL__STALL_S 0.5        /* a longer frame is a stall: no motion */
 
 struct hol_app {
     hol_app_desc d;
@@ -532,7 +533,8 @@ static void hol__fill_view(hol_app *app, const hol_input *in)
 
 /* ---- the step ------------------------------------------------------------ */
 
-static hol_err hol__room_steps(hol_app *app, const hol_motion_steps *st)
+/* The room steps of one motion, st->n of them, taken at level time t. */
+static hol_err hol__room_steps(hol_app *app, const hol_motion_steps *st, double t)
 {
     for (int i = 0; i < st->n; i++) {
         hol_err err = hol_world_update(app->world, &st->after[i]);
@@ -551,7 +553,7 @@ static hol_err hol__room_steps(hol_app *app, const hol_motion_steps *st)
             /* remaining and the walk are set */
         }
         hol_app_step_event *e = &app->ev.steps[app->ev.nsteps++];
-        e->t = app->level_t;
+        e->t = t;
         e->index = app->steps;
         e->dir = st->dir[i];
         e->room = st->after[i];
@@ -562,13 +564,49 @@ static hol_err hol__room_steps(hol_app *app, const hol_motion_steps *st)
     return HOL_OK;
 }
 
+/* The user's motion over a frame of dt seconds that began at level time
+ * t0: a tracked head moves to its pose; the pancake axes are integrated in
+ * sub-steps of at most HOL__SUBSTEP, so the distance walked and the angle
+ * turned are the same at any frame rate; a frame longer than HOL__STALL_S
+ * (a stall) does not move the user. Room steps are taken as they come. */
+static hol_err hol__move(hol_app *app, const hol_input *in, double t0, double dt)
+{
+    hol_motion_steps st;
+    hol_err err;
+    if (in->flags & HOL_INPUT_HEAD_VALID) {
+        double pos[3] = {in->head.pos[0], in->head.pos[1], in->head.pos[2]};
+        hol__yaw_pitch_from_quat(in->head.quat, &app->mo.yaw_deg, &app->mo.pitch_deg);
+        err = hol_motion_move_to(&app->mo, pos, &st);
+        if (err && err != HOL_ERANGE)
+            return err;
+        return hol__room_steps(app, &st, t0 + dt);
+    }
+    if (in->flags & HOL_INPUT_SNAP_YAW)
+        app->mo.yaw_deg = in->snap_yaw_deg;
+    if (dt > HOL__STALL_S)
+        return HOL_OK;
+    int n = (int)ceil(dt / HOL__SUBSTEP - 1e-9);
+    for (int i = 0; i < n; i++) {
+        if (app->ev.nsteps + HOL_MOTION_MAX_STEPS > HOL_APP_MAX_STEP_EVENTS)
+            break; /* cannot happen below the stall limit; the events are full */
+        err = hol_motion_pancake(&app->mo, in->move, in->turn, dt / n, &st);
+        if (err && err != HOL_ERANGE)
+            return err;
+        if ((err = hol__room_steps(app, &st, t0 + dt * (i + 1) / n)))
+            return err;
+    }
+    return HOL_OK;
+}
+
 hol_err hol_app_step(hol_app *app, const hol_input *in)
 {
     if (!in || !hol_input_valid(in) || (app->have_prev && in->time_s < app->prev.time_s))
         return HOL_EARG;
     memset(&app->ev, 0, sizeof app->ev);
     double dt = app->have_prev ? in->time_s - app->prev.time_s : 0;
-    uint32_t pressed = in->buttons & ~(app->have_prev ? app->prev.buttons : 0u);
+    /* edges: pressed since the previous record (taps between frames), or
+     * held now and not then (records that predate `pressed`) */
+    uint32_t pressed = in->pressed | (in->buttons & ~(app->have_prev ? app->prev.buttons : 0u));
     app->prev = *in;
     app->have_prev = 1;
     app->view.frame++;
@@ -617,20 +655,9 @@ hol_err hol_app_step(hol_app *app, const hol_input *in)
         if ((pressed & HOL_BTN_CONFIRM) && !v->paused)
             app->ev.next_level = 1;
     } else if (!v->paused && !restarted) {
+        double t0 = app->level_t;
         app->level_t += dt;
-        hol_motion_steps st;
-        if (in->flags & HOL_INPUT_HEAD_VALID) {
-            double pos[3] = {in->head.pos[0], in->head.pos[1], in->head.pos[2]};
-            hol__yaw_pitch_from_quat(in->head.quat, &app->mo.yaw_deg, &app->mo.pitch_deg);
-            err = hol_motion_move_to(&app->mo, pos, &st);
-        } else {
-            /* a long frame (a hitch) does not jump the user */
-            err = hol_motion_pancake(&app->mo, in->move, in->turn,
-                                     dt < HOL__MAX_DT ? dt : HOL__MAX_DT, &st);
-        }
-        if (err && err != HOL_ERANGE)
-            return err;
-        if ((err = hol__room_steps(app, &st)))
+        if ((err = hol__move(app, in, t0, dt)))
             return err;
         /* the 10 Hz head sample */
         if (app->level_t >= app->next_sample / 10.0) {

@@ -11,7 +11,8 @@
  *   each step (hol_nav: the optimal steps left; the path shown on the
  *   minimap when the user strays more than desc.stray_steps beyond the
  *   optimum), the HUD and minimap models, restart, quit. Button edges are
- *   taken against the previous record.
+ *   the record's `pressed` bits and the buttons held that the previous
+ *   record did not hold, so a tap between two frames acts once.
  * - Out: hol_app_view (user state per eye, HUD model filled at the step,
  *   minimap model) and hol_app_events (what happened in this step: room
  *   steps, a 10 Hz head sample, level start and end) for the research logs.
@@ -63,6 +64,8 @@ enum hol_app_minimap_place { HOL_MINIMAP_HUD = 0, HOL_MINIMAP_HAND = 1, HOL_MINI
 #define HOL_APP_PATH_MAX 64
 #define HOL_APP_TEXT_MAX 48
 #define HOL_APP_HUD_LINES 5
+/* Most room steps one app step reports (a frame's motion in sub-steps). */
+#define HOL_APP_MAX_STEP_EVENTS 16
 /* A level's designer placements; the world takes these and a clearing on
  * each objective's tile (HOL_WORLD_MAX_PLACES holds both). */
 #define HOL_APP_MAX_PLACES 32
@@ -208,7 +211,7 @@ typedef struct hol_app_summary {
 
 typedef struct hol_app_events {
     int nsteps;
-    hol_app_step_event steps[HOL_MOTION_MAX_STEPS];
+    hol_app_step_event steps[HOL_APP_MAX_STEP_EVENTS];
     int head_sample;       /* 1: a 10 Hz head sample is due (view has it) */
     double head_sample_t;  /* its level time (a multiple of 0.1 s) */
     int level_started;     /* the level (re)started in this step */

@@ -12,8 +12,19 @@
  *   (x, y, z, w) in the same frame; the identity looks north (-z), up +y.
  * - A pose whose HOL_INPUT_*_VALID flag is clear is not tracked this frame
  *   and its values mean nothing.
- * - Buttons are bits of HOL_BTN_*, set while held; edges (pressed this
- *   frame) are the app step's business, from the previous record.
+ * - Buttons are bits of HOL_BTN_*: `buttons` those held at the record's
+ *   time, `pressed` those pressed at least once since the previous record
+ *   (a tap between two frames is in `pressed` though no longer held). The
+ *   app step acts on edges: `pressed`, and any held button the previous
+ *   record did not hold (so records without `pressed`, as in recordings
+ *   older than the field, still give their edges).
+ * - `device` names the device in use (HOL_DEVICE_*): the app words its
+ *   prompts with that device's bindings ("ENTER: NEXT LEVEL", "A: NEXT
+ *   LEVEL", "TRIGGER: NEXT LEVEL"); HOL_DEVICE_NONE words them by action.
+ * - Snap turn (pancake): with HOL_INPUT_SNAP_YAW the look turns to
+ *   snap_yaw_deg (degrees, yaw as in SPEC section 1) at this step, before
+ *   the axes apply; the platform chooses the angle (a multiple of its snap
+ *   so the room's axes stay aligned), the record carries it for replays.
  * - Axes are in [-1, 1] after the platform's dead zone; zero is at rest.
  *   The app step turns them into motion (pancake mode); a headset sends
  *   zero axes and a tracked head.
@@ -32,6 +43,8 @@
 #define HOL_INPUT_DEVICE_LOST  (1u << 4) /* the active controller went away */
 #define HOL_INPUT_BOUNDS_SMALL (1u << 5) /* the play area is smaller than the
                                             3 x 3 m room: the HUD warns */
+#define HOL_INPUT_SNAP_YAW     (1u << 6) /* turn the look to snap_yaw_deg */
+#define HOL_INPUT_FLAGS_ALL    0x7fu
 
 /* buttons (held) */
 #define HOL_BTN_CONFIRM  (1u << 0) /* confirm / next level */
@@ -41,7 +54,25 @@
 #define HOL_BTN_MINIMAP  (1u << 4) /* cycle minimap: HUD, hand, off */
 #define HOL_BTN_RESTART  (1u << 5) /* restart the level */
 #define HOL_BTN_QUIT     (1u << 6) /* leave the app */
-#define HOL_BTN_ALL      0x7fu
+#define HOL_BTN_DEBUG    (1u << 7) /* show or hide the debug text (tile, cell) */
+#define HOL_BTN_ALL      0xffu
+
+/* The device in use (hol_input.device). The XR values are the OpenXR
+ * interaction profiles the headset binds (platform/openxr/hol_xr_bind.h);
+ * HOL_DEVICE_XR is any other XR controller. Names in the input line format
+ * (core/hol_input_io.h): hol_input_device_name. */
+enum hol_input_device {
+    HOL_DEVICE_NONE = 0,      /* unknown: prompts name actions */
+    HOL_DEVICE_KEYBOARD = 1,  /* keyboard and mouse */
+    HOL_DEVICE_GAMEPAD = 2,   /* a game controller (Linux gamepad order) */
+    HOL_DEVICE_XR_SIMPLE = 3, /* khr/simple_controller */
+    HOL_DEVICE_XR_TOUCH = 4,  /* oculus/touch_controller */
+    HOL_DEVICE_XR_VIVE = 5,   /* htc/vive_controller */
+    HOL_DEVICE_XR_INDEX = 6,  /* valve/index_controller */
+    HOL_DEVICE_XR_WMR = 7,    /* microsoft/motion_controller */
+    HOL_DEVICE_XR = 8,        /* another XR controller */
+    HOL_DEVICE_COUNT = 9
+};
 
 enum { HOL_HAND_LEFT = 0, HOL_HAND_RIGHT = 1 };
 
@@ -58,6 +89,9 @@ typedef struct hol_input {
     hol_pose hand[2];  /* grip poses, HOL_HAND_LEFT / HOL_HAND_RIGHT */
     float move[2];     /* pancake walk: [0] right +, [1] forward + */
     float turn[2];     /* pancake look: [0] turn left + (yaw), [1] look up + */
+    uint32_t pressed;  /* HOL_BTN_* pressed since the previous record */
+    uint32_t device;   /* HOL_DEVICE_* in use */
+    float snap_yaw_deg; /* with HOL_INPUT_SNAP_YAW: the look's new yaw */
 } hol_input;
 
 #endif

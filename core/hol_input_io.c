@@ -22,14 +22,22 @@ static int hol__axis_ok(float v)
     return v >= -1.0f && v <= 1.0f;
 }
 
+static const char *const hol__device_names[HOL_DEVICE_COUNT] = {
+    "", "keyboard", "gamepad", "xr-simple", "xr-touch", "xr-vive", "xr-index", "xr-wmr", "xr"};
+
+const char *hol_input_device_name(uint32_t device)
+{
+    return device < HOL_DEVICE_COUNT ? hol__device_names[device] : NULL;
+}
+
 int hol_input_valid(const hol_input *in)
 {
-    const uint32_t known = HOL_INPUT_HEAD_VALID | HOL_INPUT_HAND_L_VALID |
-                           HOL_INPUT_HAND_R_VALID | HOL_INPUT_FOCUSED |
-                           HOL_INPUT_DEVICE_LOST | HOL_INPUT_BOUNDS_SMALL;
     if (!(isfinite(in->time_s) && in->time_s >= 0))
         return 0;
-    if ((in->flags & ~known) || (in->buttons & ~(uint32_t)HOL_BTN_ALL))
+    if ((in->flags & ~(uint32_t)HOL_INPUT_FLAGS_ALL) || (in->buttons & ~(uint32_t)HOL_BTN_ALL) ||
+        (in->pressed & ~(uint32_t)HOL_BTN_ALL) || in->device >= HOL_DEVICE_COUNT)
+        return 0;
+    if (!(in->snap_yaw_deg >= 0 && in->snap_yaw_deg < 360))
         return 0;
     for (int i = 0; i < 2; i++)
         if (!hol__axis_ok(in->move[i]) || !hol__axis_ok(in->turn[i]))
@@ -92,11 +100,16 @@ size_t hol_input_format(const hol_input *in, char *out, size_t cap)
         return 0;
     if (in->buttons && hol__put_hex(out, cap, &len, " b=%x", in->buttons))
         return 0;
+    if (in->pressed && hol__put_hex(out, cap, &len, " p=%x", in->pressed))
+        return 0;
     if (!hol__all_zero(in->move, sizeof in->move) &&
         hol__put_floats(out, cap, &len, " m=", in->move, 2))
         return 0;
     if (!hol__all_zero(in->turn, sizeof in->turn) &&
         hol__put_floats(out, cap, &len, " t=", in->turn, 2))
+        return 0;
+    if (!hol__all_zero(&in->snap_yaw_deg, sizeof in->snap_yaw_deg) &&
+        hol__put_floats(out, cap, &len, " y=", &in->snap_yaw_deg, 1))
         return 0;
     static const char *const pkey[3] = {" h=", " l=", " r="};
     const hol_pose *poses[3] = {&in->head, &in->hand[0], &in->hand[1]};
@@ -108,6 +121,15 @@ size_t hol_input_format(const hol_input *in, char *out, size_t cap)
         memcpy(v + 3, poses[p]->quat, sizeof poses[p]->quat);
         if (hol__put_floats(out, cap, &len, pkey[p], v, 7))
             return 0;
+    }
+    if (in->device) {
+        const char *dn = hol__device_names[in->device];
+        size_t dl = strlen(dn);
+        if (cap - len <= dl + 3)
+            return 0;
+        memcpy(out + len, " d=", 3);
+        memcpy(out + len + 3, dn, dl + 1);
+        len += dl + 3;
     }
     return len;
 }
@@ -161,6 +183,18 @@ static int hol__parse_hex(const char *s, const char *e, uint32_t *out)
     return 0;
 }
 
+static int hol__parse_device(const char *s, const char *e, uint32_t *out)
+{
+    for (uint32_t d = 1; d < HOL_DEVICE_COUNT; d++) {
+        size_t n = strlen(hol__device_names[d]);
+        if ((size_t)(e - s) == n && !memcmp(s, hol__device_names[d], n)) {
+            *out = d;
+            return 0;
+        }
+    }
+    return 1;
+}
+
 hol_err hol_input_parse(const char *s, size_t len, hol_input *out, size_t *out_bad)
 {
     hol_input in;
@@ -193,7 +227,7 @@ hol_err hol_input_parse(const char *s, size_t len, hol_input *out, size_t *out_b
             fe = end;
         if (fe - p < 3 || p[1] != '=')
             goto fail;
-        const char *keys = "fbmthlr", *k = memchr(keys, p[0], 7);
+        const char *keys = "fbmthlrpyd", *k = memchr(keys, p[0], 10);
         if (!k)
             goto fail;
         unsigned bit = 1u << (k - keys);
@@ -207,6 +241,9 @@ hol_err hol_input_parse(const char *s, size_t len, hol_input *out, size_t *out_b
         case 'b': err = hol__parse_hex(v, fe, &in.buttons); break;
         case 'm': err = hol__parse_floats(v, fe, in.move, 2); break;
         case 't': err = hol__parse_floats(v, fe, in.turn, 2); break;
+        case 'p': err = hol__parse_hex(v, fe, &in.pressed); break;
+        case 'y': err = hol__parse_floats(v, fe, &in.snap_yaw_deg, 1); break;
+        case 'd': err = hol__parse_device(v, fe, &in.device); break;
         default: {
             hol_pose *pose = p[0] == 'h' ? &in.head : p[0] == 'l' ? &in.hand[0] : &in.hand[1];
             float f7[7];

@@ -172,3 +172,18 @@ hol_err hol_motion_pancake(hol_motion *m, const float move[2], const float turn[
     }
     return hol_motion_move_to(m, pos, out_steps);
 }
+
+double hol_motion_snap_yaw(double yaw_deg, double step_deg, int turns)
+{
+    if (!(step_deg > 0) || !isfinite(yaw_deg))
+        return 0;
+    /* the multiple k * step at or just beyond the yaw, within 1e-6 of a step */
+    double k = yaw_deg / step_deg;
+    double m = turns > 0 ? floor(k + 1e-6) + turns : ceil(k - 1e-6) + turns;
+    if (turns == 0)
+        m = k;
+    double y = fmod(m * step_deg, 360.0);
+    if (y < 0)
+        y += 360.0;
+    return y >= 360.0 ? 0 : y;
+}

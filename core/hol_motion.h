@@ -76,6 +76,12 @@ hol_err hol_motion_move_to(hol_motion *m, const double pos[3],
 hol_err hol_motion_pancake(hol_motion *m, const float move[2], const float turn[2],
                            double dt, hol_motion_steps *out_steps);
 
+/* Snap turn: the yaw (degrees, [0, 360)) after `turns` snaps of step_deg
+ * from yaw_deg (positive turns: left, as yaw grows). Each snap goes to the
+ * next multiple of step_deg in its direction, so the first aligns the look
+ * with the multiples (with 90: the room's axes) and the rest keep it. */
+double hol_motion_snap_yaw(double yaw_deg, double step_deg, int turns);
+
 /* The room state an eye sees from (stereo): `user` walked across the cells
  * that the floor projection of the segment from `head` (inside the user's
  * cell) to `eye` crosses, so an eye that leans over a cell edge sees

@@ -415,6 +415,203 @@ static void test_pause_quit(void **state)
     hol_app_destroy(app);
 }
 
+/* A tap between two frames (pressed, no longer held) acts once; a button
+ * held over frames acts once, at its press; a record without `pressed`
+ * (as recordings before the field) still acts on its held edge. */
+static void test_tap_between_frames(void **state)
+{
+    (void)state;
+    hol_app *app = make_app();
+    hol_app_level L = flag_level("Nff");
+    assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    const hol_app_view *v = hol_app_get_view(app);
+    hol_input in = pancake(0, 0, 0);
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    assert_int_equal(v->map.place, HOL_MINIMAP_HUD);
+    in = pancake(0.25, 0, 0);
+    in.pressed = HOL_BTN_MINIMAP; /* down and up between the frames */
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    assert_int_equal(v->map.place, HOL_MINIMAP_HAND);
+    in = pancake(0.5, 0, 0);
+    in.buttons = in.pressed = HOL_BTN_MINIMAP; /* pressed and held */
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    assert_int_equal(v->map.place, HOL_MINIMAP_OFF);
+    in = pancake(0.75, 0, 0);
+    in.buttons = HOL_BTN_MINIMAP; /* still held: no new edge */
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    assert_int_equal(v->map.place, HOL_MINIMAP_OFF);
+    in = pancake(1.0, 0, 0);
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    in = pancake(1.25, 0, 0);
+    in.buttons = HOL_BTN_MINIMAP; /* a version 1 record: the held edge */
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    assert_int_equal(v->map.place, HOL_MINIMAP_HUD);
+    /* the pause menu on a tap, and off on the next */
+    in = pancake(1.5, 0, 0);
+    in.pressed = HOL_BTN_MENU;
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    assert_true(v->paused);
+    in = pancake(1.75, 0, 0);
+    in.pressed = HOL_BTN_MENU;
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    assert_false(v->paused);
+    /* a quit tap ends the level */
+    in = pancake(2.0, 0, 0);
+    in.pressed = HOL_BTN_QUIT;
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    assert_int_equal(v->state, HOL_APP_QUIT);
+    hol_app_destroy(app);
+}
+
+/* Pancake play at fps frames a second, frame times jittered by jitter (a
+ * fraction of the frame) but hitting every quarter second exactly: the
+ * same script of held axes (forward, turns, strafes; each held a multiple
+ * of 0.25 s). Returns the room steps as letters; the end pose in *out. */
+static void play_script_at(double fps, double jitter, char *dirs, double out[4])
+{
+    static const struct {
+        double secs;
+        float right, fwd, turn;
+    } script[] = {
+        {0.5, 0, 1, 0},  {0.75, 0, 0, 1}, {1.0, 0, 1, 0},   {0.5, 1, 0, 0},
+        {0.75, 0, 0, -1}, {1.25, 0, -1, 0}, {0.5, 0, 0, 0}, {0.75, -1, 0.5f, 0},
+    };
+    hol_app *app = make_app();
+    hol_app_level L;
+    memset(&L, 0, sizeof L);
+    L.seed = 21;
+    assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    hol_input in = pancake(0, 0, 0);
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    double t = 0;
+    int nd = 0;
+    uint64_t s = 99;
+    for (size_t k = 0; k < sizeof script / sizeof script[0]; k++) {
+        double end = t + script[k].secs;
+        while (t < end - 1e-9) {
+            s = s * 6364136223846793005u + 1442695040888963407u;
+            double r = (double)(s >> 11) / 9007199254740992.0;
+            double dt = (1 + jitter * (2 * r - 1)) / fps;
+            t = t + dt > end - 1e-9 ? end : t + dt;
+            in = pancake(t, script[k].fwd, script[k].turn);
+            in.move[0] = script[k].right;
+            assert_int_equal(hol_app_step(app, &in), HOL_OK);
+            const hol_app_events *ev = hol_app_get_events(app);
+            for (int i = 0; i < ev->nsteps; i++)
+                dirs[nd++] = "NESW"[ev->steps[i].dir];
+        }
+    }
+    dirs[nd] = 0;
+    const hol_app_view *v = hol_app_get_view(app);
+    out[0] = v->head[0];
+    out[1] = v->head[2];
+    out[2] = v->yaw_deg;
+    out[3] = v->hud.elapsed_s;
+    hol_app_destroy(app);
+}
+
+/* Motion does not depend on the frame rate: the same held-key times give
+ * the same room steps and the same place and look at 4, 20 and 60 frames
+ * a second, with regular or jittered frames. */
+static void test_motion_frame_rate(void **state)
+{
+    (void)state;
+    static const double fps[3] = {60, 20, 4};
+    char want[64], got[64];
+    double p0[4], p[4];
+    play_script_at(60, 0, want, p0);
+    printf("    60 fps: steps %s, head %.3f,%.3f yaw %.3f\n", want, p0[0], p0[1], p0[2]);
+    assert_true(strlen(want) >= 3);
+    for (int j = 0; j < 2; j++)
+        for (int f = 0; f < 3; f++) {
+            play_script_at(fps[f], j ? 0.6 : 0, got, p);
+            assert_string_equal(got, want);
+            p[2] = fmod(p[2] - p0[2] + 540, 360) - 180 + p0[2]; /* yaw near 0 */
+            for (int i = 0; i < 4; i++)
+                if (!(fabs(p[i] - p0[i]) < 1e-6))
+                    fail_msg("%g fps jitter %d: value %d is %.9f, at 60 fps %.9f", fps[f], j, i,
+                             p[i], p0[i]);
+        }
+}
+
+/* Left then right for the same time, over uneven frames (some long, some
+ * short, none a stall), returns the look to where it was. */
+static void test_turn_back(void **state)
+{
+    (void)state;
+    hol_app *app = make_app();
+    hol_app_level L = flag_level("Nff");
+    assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    const hol_app_view *v = hol_app_get_view(app);
+    hol_input in = pancake(0, 0, 0);
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    double yaw0 = v->yaw_deg;
+    static const double left[] = {0.3, 0.45, 0.5, 0.55, 1.0, 1.2};    /* 1.2 s */
+    static const double right[] = {1.25, 1.3, 1.7, 1.9, 2.35, 2.4}; /* 1.2 s */
+    for (int i = 0; i < 6; i++) {
+        in = pancake(left[i], 0, 1);
+        assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    }
+    assert_true(fabs(v->yaw_deg - fmod(yaw0 + 144, 360)) < 1e-9); /* 120 deg/s */
+    for (int i = 0; i < 6; i++) {
+        in = pancake(right[i], 0, -1);
+        assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    }
+    double d = fmod(v->yaw_deg - yaw0 + 540, 360) - 180;
+    assert_true(fabs(d) < 1e-9);
+    hol_app_destroy(app);
+}
+
+/* A stall (a frame longer than half a second) does not move the user; a
+ * slow frame (4 fps) moves the whole way. */
+static void test_stall(void **state)
+{
+    (void)state;
+    hol_app *app = make_app();
+    hol_app_level L = flag_level("Nff");
+    assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    const hol_app_view *v = hol_app_get_view(app);
+    hol_input in = pancake(0, 0, 0);
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    double z0 = v->head[2];
+    in = pancake(0.25, 0.5f, 0);
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    assert_true(fabs(z0 - v->head[2] - 0.25 * 0.7) < 1e-9);
+    z0 = v->head[2];
+    in = pancake(2.25, 0.5f, 0); /* two seconds without a frame */
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    assert_true(v->head[2] == z0);
+    assert_true(fabs(v->hud.elapsed_s - 2.25) < 1e-9); /* the clock ran on */
+    hol_app_destroy(app);
+}
+
+/* Snap turn: the record's snap yaw sets the look exactly (then the turn
+ * axis goes on from there). */
+static void test_snap_turn(void **state)
+{
+    (void)state;
+    hol_app *app = make_app();
+    hol_app_level L = flag_level("Nff");
+    assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    const hol_app_view *v = hol_app_get_view(app);
+    hol_input in = pancake(0, 0, 0.5f);
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    in = pancake(0.1, 0, 0.5f);
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    assert_true(v->yaw_deg > 5.9 && v->yaw_deg < 6.1);
+    in = pancake(0.2, 0, 0);
+    in.flags |= HOL_INPUT_SNAP_YAW;
+    in.snap_yaw_deg = (float)hol_motion_snap_yaw(v->yaw_deg, 90, 1);
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    assert_true(v->yaw_deg == 90.0);
+    in = pancake(0.3, 1, 0); /* walking west along the room's axis */
+    in.flags |= HOL_INPUT_SNAP_YAW;
+    in.snap_yaw_deg = 90;
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    assert_true(fabs(v->head[2] - 1.5) < 1e-12 && v->head[0] < 1.5);
+    hol_app_destroy(app);
+}
+
 /* Everything a frame reports, as text (doubles to the bit, %a): events and
  * the view's state, head, look and HUD. Padding bytes are left out. */
 static size_t frame_text(const hol_app *app, char *out, size_t cap)
@@ -618,6 +815,11 @@ int main(void)
         cmocka_unit_test(test_safety_hud),
         cmocka_unit_test(test_tutorial_stages),
         cmocka_unit_test(test_pause_quit),
+        cmocka_unit_test(test_tap_between_frames),
+        cmocka_unit_test(test_motion_frame_rate),
+        cmocka_unit_test(test_turn_back),
+        cmocka_unit_test(test_stall),
+        cmocka_unit_test(test_snap_turn),
         cmocka_unit_test(test_deterministic),
         cmocka_unit_test(test_no_allocation),
     };

@@ -260,6 +260,37 @@ static void test_unplug_and_hot_plug(void **state)
     hol_hid_dev_close(&dev);
 }
 
+/* A button pressed and let go between two polls (two reports waiting) is
+ * not held, but pressed: the app acts on the tap. A held button is pressed
+ * once, at the poll where it went down. */
+static void test_tap_between_polls(void **state)
+{
+    (void)state;
+    fake.present = 1;
+    assert_int_equal(hol_hid_dev_open_first(&dev), HOL_OK);
+    queue_report(0);
+    hol_input in;
+    memset(&in, 0, sizeof in);
+    assert_int_equal(hol_hid_dev_poll(&dev, &in), HOL_OK);
+    assert_int_equal(in.buttons | in.pressed, 0);
+    queue_report(1); /* south (confirm) down ... */
+    queue_report(0); /* ... and up again before the frame */
+    memset(&in, 0, sizeof in);
+    assert_int_equal(hol_hid_dev_poll(&dev, &in), HOL_OK);
+    assert_int_equal(in.buttons, 0);
+    assert_int_equal(in.pressed, HOL_BTN_CONFIRM);
+    queue_report(1); /* held over two polls: pressed at the first only */
+    memset(&in, 0, sizeof in);
+    assert_int_equal(hol_hid_dev_poll(&dev, &in), HOL_OK);
+    assert_int_equal(in.buttons, HOL_BTN_CONFIRM);
+    assert_int_equal(in.pressed, HOL_BTN_CONFIRM);
+    memset(&in, 0, sizeof in);
+    assert_int_equal(hol_hid_dev_poll(&dev, &in), HOL_OK);
+    assert_int_equal(in.buttons, HOL_BTN_CONFIRM);
+    assert_int_equal(in.pressed, 0);
+    hol_hid_dev_close(&dev);
+}
+
 /* ---- the link, as holonomy play uses it --------------------------------- */
 
 static void test_link_merge(void **state)
@@ -302,6 +333,45 @@ static void test_link_merge(void **state)
     memset(&io, 0, sizeof io);
     hol_hid_link_merge(&l, HOL_OK, 0, &pad, 0, &io);
     assert_true(io.move[1] == 0.5f);
+}
+
+/* The device in use: the keyboard's until the pad is used, the pad's until
+ * a key is; pressed buttons (taps) merge like held ones. */
+static void test_link_device(void **state)
+{
+    (void)state;
+    hol_hid_link l;
+    memset(&l, 0, sizeof l);
+    hol_input pad, io;
+    memset(&pad, 0, sizeof pad);
+    memset(&io, 0, sizeof io);
+    io.device = HOL_DEVICE_KEYBOARD;
+    hol_hid_link_merge(&l, HOL_OK, 0, &pad, 0, &io); /* a pad at rest */
+    assert_int_equal(io.device, HOL_DEVICE_KEYBOARD);
+    pad.pressed = HOL_BTN_CONFIRM; /* a tap on the pad */
+    hol_hid_link_merge(&l, HOL_OK, 0, &pad, 0, &io);
+    assert_int_equal(io.device, HOL_DEVICE_GAMEPAD);
+    assert_int_equal(io.pressed, HOL_BTN_CONFIRM);
+    memset(&pad, 0, sizeof pad);
+    memset(&io, 0, sizeof io);
+    io.device = HOL_DEVICE_KEYBOARD;
+    hol_hid_link_merge(&l, HOL_OK, 0, &pad, 0, &io); /* idle: still the pad */
+    assert_int_equal(io.device, HOL_DEVICE_GAMEPAD);
+    pad.move[0] = 0.5f;
+    memset(&io, 0, sizeof io);
+    io.device = HOL_DEVICE_KEYBOARD;
+    hol_hid_link_merge(&l, HOL_OK, 0, &pad, 1, &io); /* a key: the keyboard */
+    assert_int_equal(io.device, HOL_DEVICE_KEYBOARD);
+    memset(&pad, 0, sizeof pad);
+    hol_hid_link_merge(&l, HOL_OK, 0, &pad, 0, &io);
+    assert_int_equal(io.device, HOL_DEVICE_KEYBOARD);
+    pad.turn[1] = -1;
+    hol_hid_link_merge(&l, HOL_OK, 0, &pad, 0, &io); /* the stick: the pad */
+    assert_int_equal(io.device, HOL_DEVICE_GAMEPAD);
+    memset(&io, 0, sizeof io);
+    io.device = HOL_DEVICE_KEYBOARD;
+    hol_hid_link_merge(&l, HOL_EIO, 1, &pad, 0, &io); /* unplugged: not the pad */
+    assert_int_equal(io.device, HOL_DEVICE_KEYBOARD);
 }
 
 /* An app playing an explore level (seed 4, every cue). */
@@ -530,7 +600,9 @@ int main(void)
         cmocka_unit_test_setup(test_no_controller, reset),
         cmocka_unit_test_setup(test_reports_drained_and_decoded, reset),
         cmocka_unit_test_setup(test_unplug_and_hot_plug, reset),
+        cmocka_unit_test_setup(test_tap_between_polls, reset),
         cmocka_unit_test_setup(test_link_merge, reset),
+        cmocka_unit_test_setup(test_link_device, reset),
         cmocka_unit_test_setup(test_stick_walks_and_unplug_pauses, reset),
         cmocka_unit_test_setup(test_script_parse, reset),
         cmocka_unit_test_setup(test_script_plays, reset),

@@ -227,9 +227,34 @@ static void test_eye_state(void **state)
     assert_int_equal(hol_motion_eye_state(&u, bad_head, same, &got), HOL_EARG);
 }
 
+/* Snap turn: each snap goes to the next multiple of the step in its
+ * direction (the first aligns the look), and wraps into [0, 360). */
+static void test_snap_yaw(void **state)
+{
+    (void)state;
+    static const struct {
+        double yaw, step;
+        int turns;
+        double want;
+    } c[] = {
+        {0, 90, 1, 90},        {0, 90, -1, 270},      {37.3, 90, 1, 90},   {37.3, 90, -1, 0},
+        {90, 90, 1, 180},      {90, 90, -1, 0},       {270, 90, 1, 0},     {10, 90, 2, 180},
+        {10, 90, -2, 270},     {89.9999999, 90, 1, 180}, {90.0000001, 90, -1, 0},
+        {359.5, 45, 1, 0},     {359.5, 45, -1, 315},  {100, 30, 1, 120},   {100, 30, -1, 90},
+        {180, 180, 1, 0},      {200, 180, -3, 180},
+    };
+    for (size_t i = 0; i < sizeof c / sizeof c[0]; i++) {
+        double got = hol_motion_snap_yaw(c[i].yaw, c[i].step, c[i].turns);
+        if (got != c[i].want)
+            fail_msg("snap %g by %g x %d: %.9f, want %g", c[i].yaw, c[i].step, c[i].turns, got,
+                     c[i].want);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_snap_yaw),
         cmocka_unit_test(test_move_against_reference),
         cmocka_unit_test(test_hedges),
         cmocka_unit_test(test_pancake),

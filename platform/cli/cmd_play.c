@@ -28,6 +28,7 @@ static const char *const play_usage =
     "usage: holonomy play [LEVEL | --mode tutorial|flag|keys|explore] [--seed S]\n"
     "                     [--log DIR] [--record FILE] [--frames N] [--input FILE]\n"
     "                     [--size WxH] [--no-gamepad | --gamepad-replay FILE]\n"
+    "                     [--snap-turn DEG]\n"
     "\n"
     "Play in a desktop window (EGL on X11; also under Xvfb). LEVEL is a level\n"
     "file (SPEC section 5); --mode plays a level of that mode made from the seed\n"
@@ -36,10 +37,11 @@ static const char *const play_usage =
     "7, then two keys-and-chest levels).\n"
     "\n"
     "  W/S or Up/Down   walk forward/back      A/D          step sideways\n"
-    "  Left/Right       turn                   PgUp/PgDn    look up/down\n"
+    "  Left/Right       turn (--snap-turn: snap) PgUp/PgDn  look up/down\n"
     "  mouse drag       look (left button)     P            pause menu\n"
     "  R                restart the level      M            minimap: HUD, hand, off\n"
-    "  Enter/Space      next level (end screen) Esc/Q        quit\n"
+    "  Enter/Space      next level (end screen)\n"
+    "  Esc/Q            quit\n"
     "\n"
     "A game controller (the first found; plugged in later, it joins) plays too:\n"
     "left stick walks, right stick turns and looks, south button confirms,\n"
@@ -58,6 +60,9 @@ static const char *const play_usage =
     "  --input FILE    drive the game from recorded input lines (a recording or\n"
     "                  bare lines) instead of the keyboard; frames are the lines\n"
     "  --size WxH      window size (default 960x720)\n"
+    "  --snap-turn DEG  Left/Right turn by DEG degrees a press (a divisor of 360\n"
+    "                  from 1 to 180; 90 keeps the room's axes on the screen's),\n"
+    "                  to the next multiple of DEG, so the look stays aligned\n"
     "  --no-gamepad    do not use game controllers\n"
     "  --gamepad-replay FILE\n"
     "                  the controller is a script of plugs, reports and unplugs\n"
@@ -116,6 +121,61 @@ static float clamp1(double v)
     return (float)(v < -1 ? -1 : v > 1 ? 1 : v);
 }
 
+/* A key counts for this frame while held or when it went down since the
+ * last poll (a tap between two frames). */
+static int key_on(const hol_x11_keys *k, int held, int id)
+{
+    return held || (k->taps & HOL_X11_TAP(id)) != 0;
+}
+
+/* The keyboard and mouse as this frame's input record (time t, dt since
+ * the last frame; snap: Left and Right snap, they do not turn); returns
+ * whether a key or the mouse was used. */
+static int keys_input(hol_x11_keys *k, double t, double dt, int open, int snap, hol_input *in)
+{
+    static const struct {
+        int id;
+        uint32_t btn;
+    } btns[] = {{HOL_X11_K_CONFIRM, HOL_BTN_CONFIRM}, {HOL_X11_K_MENU, HOL_BTN_MENU},
+                {HOL_X11_K_RESTART, HOL_BTN_RESTART}, {HOL_X11_K_MINIMAP, HOL_BTN_MINIMAP},
+                {HOL_X11_K_DEBUG, HOL_BTN_DEBUG}};
+    const int held[] = {k->confirm, k->menu, k->restart, k->minimap, k->debug};
+    in->time_s = t;
+    in->flags = k->unfocused ? 0 : HOL_INPUT_FOCUSED;
+    in->device = HOL_DEVICE_KEYBOARD;
+    in->move[0] = (float)(key_on(k, k->strafe_r, HOL_X11_K_STRAFE_R) -
+                          key_on(k, k->strafe_l, HOL_X11_K_STRAFE_L));
+    in->move[1] = (float)(key_on(k, k->up, HOL_X11_K_UP) - key_on(k, k->down, HOL_X11_K_DOWN));
+    /* mouse: 0.2 degrees a pixel, as a turn rate over this frame */
+    int turn_keys = snap ? 0 : key_on(k, k->left, HOL_X11_K_LEFT) - key_on(k, k->right, HOL_X11_K_RIGHT);
+    in->turn[0] = clamp1(turn_keys - k->mouse_dx * 0.2 / (120 * dt));
+    in->turn[1] = clamp1(key_on(k, k->look_up, HOL_X11_K_LOOK_UP) -
+                         key_on(k, k->look_down, HOL_X11_K_LOOK_DOWN) -
+                         k->mouse_dy * 0.2 / (90 * dt));
+    for (size_t i = 0; i < sizeof btns / sizeof btns[0]; i++) {
+        in->buttons |= held[i] ? btns[i].btn : 0;
+        in->pressed |= (k->taps & HOL_X11_TAP(btns[i].id)) ? btns[i].btn : 0;
+    }
+    if (!open)
+        in->buttons |= HOL_BTN_QUIT;
+    int used = k->taps || k->left | k->right | k->up | k->down | k->strafe_l | k->strafe_r |
+               k->look_up | k->look_down | k->confirm | k->menu | k->restart | k->minimap |
+               k->debug | k->mouse_dx | k->mouse_dy;
+    k->mouse_dx = k->mouse_dy = 0;
+    return used;
+}
+
+/* Snap turn (snap_deg > 0): Left and Right turn by snaps, one a press, to
+ * the multiples of snap_deg from the look's yaw. */
+static void keys_snap(const hol_x11_keys *k, int snap_deg, double yaw, hol_input *in)
+{
+    int turns = !!(k->taps & HOL_X11_TAP(HOL_X11_K_LEFT)) - !!(k->taps & HOL_X11_TAP(HOL_X11_K_RIGHT));
+    if (snap_deg <= 0 || !turns)
+        return;
+    in->flags |= HOL_INPUT_SNAP_YAW;
+    in->snap_yaw_deg = (float)hol_motion_snap_yaw(yaw, snap_deg, turns);
+}
+
 int cli_cmd_play(int argc, char **argv)
 {
     const char *cmd = "play";
@@ -127,13 +187,13 @@ int cli_cmd_play(int argc, char **argv)
                *input_path = NULL, *pad_script = NULL;
     unsigned long long seed = CLI_SEED_DEFAULT;
     long frames = 0;
-    int w = 960, h = 720, use_pad = 1;
+    int w = 960, h = 720, use_pad = 1, snap_deg = 0;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i], *val = i + 1 < argc ? argv[i + 1] : NULL;
         int takes = !strcmp(a, "--mode") || !strcmp(a, "--seed") || !strcmp(a, "--log") ||
                     !strcmp(a, "--record") || !strcmp(a, "--frames") ||
                     !strcmp(a, "--input") || !strcmp(a, "--size") ||
-                    !strcmp(a, "--gamepad-replay");
+                    !strcmp(a, "--gamepad-replay") || !strcmp(a, "--snap-turn");
         if (takes && !val) {
             cli_error(cmd, 0, "%s needs a value; see 'holonomy play --help'", a);
             return CLI_EXIT_USAGE;
@@ -167,6 +227,13 @@ int cli_cmd_play(int argc, char **argv)
         } else if (!strcmp(a, "--size")) {
             if (parse_size(cmd, val, &w, &h))
                 return CLI_EXIT_USAGE;
+        } else if (!strcmp(a, "--snap-turn")) {
+            size_t n = cli_parse_count(val);
+            if (!n || n > 180 || 360 % n) {
+                cli_error(cmd, 0, "--snap-turn '%.40s' is not a divisor of 360 in 1..180", val);
+                return CLI_EXIT_USAGE;
+            }
+            snap_deg = (int)n;
         } else if (a[0] == '-' && a[1]) {
             cli_error(cmd, 0, "unknown option '%.40s'; see 'holonomy play --help'", a);
             return CLI_EXIT_USAGE;
@@ -272,21 +339,9 @@ int cli_cmd_play(int argc, char **argv)
                 t = last_t;
             double dt = t - last_t > 1e-3 ? t - last_t : 1e-3;
             last_t = t;
-            in.time_s = t;
-            in.flags = keys.unfocused ? 0 : HOL_INPUT_FOCUSED;
-            in.move[0] = (float)(keys.strafe_r - keys.strafe_l);
-            in.move[1] = (float)(keys.up - keys.down);
-            /* mouse: 0.2 degrees a pixel, as a turn rate over this frame */
-            in.turn[0] = clamp1(keys.left - keys.right - keys.mouse_dx * 0.2 / (120 * dt));
-            in.turn[1] = clamp1(keys.look_up - keys.look_down - keys.mouse_dy * 0.2 / (90 * dt));
-            key_activity = keys.left | keys.right | keys.up | keys.down | keys.strafe_l |
-                               keys.strafe_r | keys.look_up | keys.look_down | keys.confirm |
-                               keys.menu | keys.restart | keys.minimap | keys.mouse_dx |
-                               keys.mouse_dy;
-            keys.mouse_dx = keys.mouse_dy = 0;
-            in.buttons = (keys.confirm ? HOL_BTN_CONFIRM : 0) | (keys.menu ? HOL_BTN_MENU : 0) |
-                         (keys.restart ? HOL_BTN_RESTART : 0) |
-                         (keys.minimap ? HOL_BTN_MINIMAP : 0) | (open ? 0 : HOL_BTN_QUIT);
+            key_activity = keys_input(&keys, t, dt, open, snap_deg > 0, &in);
+            keys_snap(&keys, snap_deg, hol_app_get_view(s.app)->yaw_deg, &in);
+            keys.taps = 0;
         }
         if (use_pad) {
             hol_input pad;

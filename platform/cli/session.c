@@ -529,7 +529,7 @@ int session_open(session *s, const char *cmd, session_level *levels, int nlevels
         s->recording = 1;
         static char recbuf[1 << 20];
         setvbuf(s->rec.f, recbuf, _IOFBF, sizeof recbuf);
-        fprintf(s->rec.f, "holonomy-rec %d\n", HOL_INPUT_TEXT_VERSION);
+        fprintf(s->rec.f, "holonomy-rec %d\n", SESSION_REC_VERSION);
         for (int i = 0; i < nlevels; i++) {
             fprintf(s->rec.f, "level %s\n", levels[i].name);
             const char *p = levels[i].text, *e = p + levels[i].len;
@@ -635,14 +635,14 @@ long session_read_header(char *const *lines, const size_t *lens, long nlines,
                          session_level *levels, int *nlevels, char *err, size_t err_cap)
 {
     char want[32];
-    snprintf(want, sizeof want, "holonomy-rec %d", HOL_INPUT_TEXT_VERSION);
+    snprintf(want, sizeof want, "holonomy-rec %d", SESSION_REC_VERSION);
     if (nlines < 1 || strncmp(lines[0], "holonomy-rec ", 13)) {
         snprintf(err, err_cap, "line 1: not a recording (no 'holonomy-rec' header)");
         return 0;
     }
     if (lens[0] != strlen(want) || memcmp(lines[0], want, lens[0])) {
         snprintf(err, err_cap, "line 1: recording format '%.30s' is not version %d",
-                 lines[0] + 13, HOL_INPUT_TEXT_VERSION);
+                 lines[0] + 13, SESSION_REC_VERSION);
         return 0;
     }
     int n = 0;

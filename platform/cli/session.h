@@ -31,6 +31,10 @@
 #include "../../render/hol_render.h"
 #include "../file/hol_file.h"
 
+/* The recording's header version (the session's); its input lines are
+ * read in any version of the line format up to HOL_INPUT_TEXT_VERSION
+ * (core/hol_input_io.h: version 2 only added fields). */
+#define SESSION_REC_VERSION 1
 #define SESSION_MAX_LEVELS 16
 #define SESSION_LEVEL_TEXT 4096
 #define SESSION_NAME_MAX 64

@@ -8,7 +8,11 @@
  *   in hol_egl.h).
  * - hol_x11_poll drains the event queue into a small key state (keys, a
  *   mouse drag, focus) and returns 0 once the window is closed or Escape/q
- *   is pressed.
+ *   is pressed. Every key that goes down sets its bit in keys->taps
+ *   (HOL_X11_TAP(HOL_X11_K_*)) until the caller clears it, so a press and
+ *   release between two polls is not lost; the keyboard's auto-repeat is
+ *   not a press (detectable auto-repeat, else a release and press with the
+ *   same timestamp are dropped).
  * - On failure hol_x11_create returns nonzero with a one-line reason in
  *   err and leaves nothing open.
  */
@@ -17,6 +21,7 @@
 
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
+#include <X11/XKBlib.h>
 #include <X11/Xlib.h>
 #include <X11/Xutil.h>
 #include <X11/keysym.h>
@@ -33,12 +38,23 @@ typedef struct hol_x11 {
     int w, h;
 } hol_x11;
 
-/* Keys held down (1) or not (0); the mouse moved by (mouse_dx, mouse_dy)
- * pixels with the left button held since the caller last zeroed them;
- * focused: the window has the keyboard focus (1 until told otherwise). */
+/* Keys held down (1) or not (0); taps: the keys that went down since the
+ * caller last cleared it (bit HOL_X11_TAP(HOL_X11_K_*)); the mouse moved by
+ * (mouse_dx, mouse_dy) pixels with the left button held since the caller
+ * last zeroed them; focused: the window has the keyboard focus (1 until
+ * told otherwise). */
+enum {
+    HOL_X11_K_LEFT, HOL_X11_K_RIGHT, HOL_X11_K_UP, HOL_X11_K_DOWN, HOL_X11_K_STRAFE_L,
+    HOL_X11_K_STRAFE_R, HOL_X11_K_LOOK_UP, HOL_X11_K_LOOK_DOWN, HOL_X11_K_CONFIRM,
+    HOL_X11_K_MENU, HOL_X11_K_RESTART, HOL_X11_K_MINIMAP, HOL_X11_K_DEBUG, HOL_X11_K_STATS,
+    HOL_X11_K_COUNT
+};
+#define HOL_X11_TAP(k) (1u << (k))
 typedef struct hol_x11_keys {
     int left, right, up, down, strafe_l, strafe_r, look_up, look_down;
     int confirm, menu, restart, minimap; /* Enter/Space, P, R, M */
+    int debug, stats;                    /* F3, F2 */
+    unsigned taps;
     int mouse_dx, mouse_dy, dragging, last_x, last_y;
     int unfocused;
 } hol_x11_keys;
@@ -141,12 +157,37 @@ static inline int hol_x11_create(hol_x11 *x, int w, int h, const char *title, ch
         return 1;
     }
     eglSwapInterval(x->edpy, 1);
+    Bool detectable = False;
+    XkbSetDetectableAutoRepeat(x->dpy, True, &detectable);
     return 0;
 }
 
 static inline void hol_x11_swap(hol_x11 *x)
 {
     eglSwapBuffers(x->edpy, x->surf);
+}
+
+/* Key k's state: a press while up is a tap. */
+static inline void hol__x11_key(hol_x11_keys *keys, int *state, int k, int down)
+{
+    if (down && !*state)
+        keys->taps |= HOL_X11_TAP(k);
+    *state = down;
+}
+
+/* The release of an auto-repeat without detectable auto-repeat: the next
+ * event is the same key's press at the same time (both are dropped). */
+static inline int hol__x11_repeat(Display *dpy, const XEvent *ev)
+{
+    if (ev->type != KeyRelease || !XEventsQueued(dpy, QueuedAfterReading))
+        return 0;
+    XEvent nx;
+    XPeekEvent(dpy, &nx);
+    if (nx.type != KeyPress || nx.xkey.keycode != ev->xkey.keycode ||
+        nx.xkey.time != ev->xkey.time)
+        return 0;
+    XNextEvent(dpy, &nx);
+    return 1;
 }
 
 /* Drain pending events into keys; 0 when the user asked to quit. */
@@ -176,24 +217,31 @@ static inline int hol_x11_poll(hol_x11 *x, hol_x11_keys *keys)
         } else if (ev.type == ConfigureNotify) {
             x->w = ev.xconfigure.width;
             x->h = ev.xconfigure.height;
-        } else if (ev.type == KeyPress || ev.type == KeyRelease) {
+        } else if ((ev.type == KeyPress || ev.type == KeyRelease) &&
+                   !hol__x11_repeat(x->dpy, &ev)) {
             int down = ev.type == KeyPress;
             KeySym k = XLookupKeysym(&ev.xkey, 0);
             switch (k) {
             case XK_Escape:
             case XK_q: if (down) run = 0; break;
-            case XK_Left: keys->left = down; break;
-            case XK_Right: keys->right = down; break;
-            case XK_Up: case XK_w: keys->up = down; break;
-            case XK_Down: case XK_s: keys->down = down; break;
-            case XK_a: keys->strafe_l = down; break;
-            case XK_d: keys->strafe_r = down; break;
-            case XK_Page_Up: keys->look_up = down; break;
-            case XK_Page_Down: keys->look_down = down; break;
-            case XK_Return: case XK_space: keys->confirm = down; break;
-            case XK_p: keys->menu = down; break;
-            case XK_r: keys->restart = down; break;
-            case XK_m: keys->minimap = down; break;
+            case XK_Left: hol__x11_key(keys, &keys->left, HOL_X11_K_LEFT, down); break;
+            case XK_Right: hol__x11_key(keys, &keys->right, HOL_X11_K_RIGHT, down); break;
+            case XK_Up: case XK_w: hol__x11_key(keys, &keys->up, HOL_X11_K_UP, down); break;
+            case XK_Down: case XK_s: hol__x11_key(keys, &keys->down, HOL_X11_K_DOWN, down); break;
+            case XK_a: hol__x11_key(keys, &keys->strafe_l, HOL_X11_K_STRAFE_L, down); break;
+            case XK_d: hol__x11_key(keys, &keys->strafe_r, HOL_X11_K_STRAFE_R, down); break;
+            case XK_Page_Up: hol__x11_key(keys, &keys->look_up, HOL_X11_K_LOOK_UP, down); break;
+            case XK_Page_Down:
+                hol__x11_key(keys, &keys->look_down, HOL_X11_K_LOOK_DOWN, down);
+                break;
+            case XK_Return:
+            case XK_KP_Enter:
+            case XK_space: hol__x11_key(keys, &keys->confirm, HOL_X11_K_CONFIRM, down); break;
+            case XK_p: hol__x11_key(keys, &keys->menu, HOL_X11_K_MENU, down); break;
+            case XK_r: hol__x11_key(keys, &keys->restart, HOL_X11_K_RESTART, down); break;
+            case XK_m: hol__x11_key(keys, &keys->minimap, HOL_X11_K_MINIMAP, down); break;
+            case XK_F3: hol__x11_key(keys, &keys->debug, HOL_X11_K_DEBUG, down); break;
+            case XK_F2: hol__x11_key(keys, &keys->stats, HOL_X11_K_STATS, down); break;
             default: break;
             }
         }

@@ -195,6 +195,11 @@ hol_err hol_hid_dev_poll(hol_hid_dev *dev, hol_input *io)
         io->flags &= ~HOL_INPUT_DEVICE_LOST;
     }
     uint8_t buf[HOL_HID_REPORT_MAX_BYTES + 1];
+    /* a button down in any report since the last poll is pressed, even if
+     * a later report lets it go (a tap between two frames) */
+    hol_input before = *io;
+    hol_hid_pad_state(&dev->pad, &before);
+    uint32_t held = before.buttons;
     for (int i = 0; i < 64; i++) { /* drain, bounded */
         int n = read_report(dev, now_s, buf, sizeof buf);
         if (n == 0)
@@ -210,6 +215,9 @@ hol_err hol_hid_dev_poll(hol_hid_dev *dev, hol_input *io)
             return HOL_EIO;
         }
         hol_hid_pad_decode(&dev->pad, buf, (size_t)n, io);
+        hol_hid_pad_state(&dev->pad, io);
+        io->pressed |= io->buttons & ~held;
+        held = io->buttons;
     }
     hol_hid_pad_state(&dev->pad, io);
     return HOL_OK;

@@ -13,7 +13,9 @@
  *   no controller is open. With hidapi 0.13 (Debian 12) the descriptor is
  *   read from sysfs (hidraw backend only); hidapi >= 0.14 reads it itself.
  * - hol_hid_dev_poll(dev, io) never blocks: it drains the reports waiting
- *   and writes buttons, move and turn of *io. When the device goes away
+ *   and writes buttons, move and turn of *io, and ORs into io->pressed
+ *   every button that went down in any of those reports (a press and
+ *   release between two polls is not lost). When the device goes away
  *   (a read error) it sets HOL_INPUT_DEVICE_LOST in io->flags, zeroes the
  *   axes and buttons, closes the handle and returns HOL_EIO; later polls
  *   try to reopen a controller (hot-plug), at most once every

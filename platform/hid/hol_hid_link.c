@@ -13,13 +13,23 @@ void hol_hid_link_merge(hol_hid_link *l, hol_err poll_err, int dev_lost, const h
     if (poll_err == HOL_OK) {
         l->connected = 1;
         l->lost = 0;
+        int used = pad->buttons || pad->pressed;
         for (int k = 0; k < 2; k++) {
+            used |= pad->move[k] != 0 || pad->turn[k] != 0;
             io->move[k] = hol__clamp1(io->move[k] + pad->move[k]);
             io->turn[k] = hol__clamp1(io->turn[k] + pad->turn[k]);
         }
         io->buttons |= pad->buttons;
+        io->pressed |= pad->pressed;
+        if (key_activity)
+            l->pad_in_use = 0;
+        else if (used)
+            l->pad_in_use = 1;
+        if (l->pad_in_use)
+            io->device = HOL_DEVICE_GAMEPAD;
         return;
     }
+    l->pad_in_use = 0;
     if (l->connected && dev_lost)
         l->lost = 1; /* it was there and went away */
     l->connected = 0;

@@ -7,8 +7,12 @@
  *   whether the device was lost, the pad's input and whether the keyboard
  *   or mouse did anything this frame. The merge writes into the frame's
  *   input (already filled from the keyboard and mouse):
- *   - a connected pad: axes are added and clamped to [-1, 1], buttons are
- *     OR-ed; so keyboard and pad both work at once;
+ *   - a connected pad: axes are added and clamped to [-1, 1], buttons and
+ *     pressed buttons are OR-ed; so keyboard and pad both work at once;
+ *   - the device in use (io->device, HOL_DEVICE_*): the pad from a frame
+ *     where it was used (a button, or an axis off centre) until the
+ *     keyboard or mouse is used (then io->device as the keyboard filled
+ *     it); so the prompts name the buttons of what the player holds;
  *   - a pad that went away (unplugged): HOL_INPUT_DEVICE_LOST, so the app
  *     pauses, until the pad comes back (hot-plug) or the player uses the
  *     keyboard or mouse, which resumes the game without the pad (a pad
@@ -25,6 +29,7 @@
 typedef struct hol_hid_link {
     int connected; /* the pad answered the last poll */
     int lost;      /* a pad went away and the game waits for it */
+    int pad_in_use; /* the pad was used more recently than the keyboard */
 } hol_hid_link;
 
 /* poll_err: hol_hid_dev_poll's result; dev_lost: the device's lost flag
