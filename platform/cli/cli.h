@@ -62,6 +62,13 @@ int cli_parse_doubles(const char *s, double *out, int n);
 /* Strip spaces and tabs at both ends. */
 void cli_trim(char **s, size_t *len);
 
+/* s (a name from a file or a device) escaped for a terminal into buf (cap
+ * bytes; core/hol_text.h: control bytes, C1 and bidi controls, bad UTF-8
+ * as \xHH, cut between characters when long); returns buf. Everything
+ * from outside that reaches stdout goes through it (cli_error escapes its
+ * whole message the same way). */
+const char *cli_escape(const char *s, char *buf, size_t cap);
+
 /* Print "holonomy CMD: line N: MESSAGE" (or without the line when
  * lineno <= 0) to stderr. */
 void cli_error(const char *cmd, long lineno, const char *fmt, ...)

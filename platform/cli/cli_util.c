@@ -1,6 +1,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include "cli.h"
 
+#include "../../core/hol_text.h"
 #include "../file/hol_file.h"
 
 #include <ctype.h>
@@ -44,6 +45,12 @@ int cli_lines_next(cli_lines *l, char **out_s, size_t *out_len)
     return 1;
 }
 
+const char *cli_escape(const char *s, char *buf, size_t cap)
+{
+    hol_text_escape(s, strlen(s), buf, cap);
+    return buf;
+}
+
 void cli_error(const char *cmd, long lineno, const char *fmt, ...)
 {
     char msg[512];
@@ -54,14 +61,7 @@ void cli_error(const char *cmd, long lineno, const char *fmt, ...)
     /* one line, whatever the message holds: control bytes (from option
      * values, file names, input) are shown escaped, never sent raw */
     char safe[4 * sizeof msg];
-    size_t o = 0;
-    for (const unsigned char *p = (const unsigned char *)msg; *p && o + 5 < sizeof safe; p++) {
-        if (*p < 0x20 || *p == 0x7f)
-            o += (size_t)snprintf(safe + o, sizeof safe - o, "\\x%02x", *p);
-        else
-            safe[o++] = (char)*p;
-    }
-    safe[o] = 0;
+    hol_text_escape(msg, strlen(msg), safe, sizeof safe);
     const char *sep = cmd[0] ? " " : "";
     if (lineno > 0)
         fprintf(stderr, "holonomy%s%s: line %ld: %s\n", sep, cmd, lineno, safe);

@@ -175,10 +175,11 @@ static void list_one(void *ctx, const hol_hid_dev_info *info,
 {
     (void)ctx;
     const hol_hid_known *k = hol_hid_known_find(info->vid, info->pid);
+    char path[4 * sizeof info->path], name[4 * sizeof info->name];
     printf("%04x:%04x %s usage %04x:%04x %s%s%s\n", info->vid, info->pid,
-           info->path, info->usage_page, info->usage,
-           info->name[0] ? info->name : "(no name)", k ? " known: " : "",
-           k ? k->name : "");
+           cli_escape(info->path, path, sizeof path), info->usage_page, info->usage,
+           info->name[0] ? cli_escape(info->name, name, sizeof name) : "(no name)",
+           k ? " known: " : "", k ? k->name : "");
     if (err)
         printf("  (descriptor not read: %s)\n", hol_err_str(err));
     for (size_t i = 0; i < n; i++) {
@@ -240,7 +241,9 @@ static int cmd_watch(int argc, char **argv)
                   hol_hid_dev_backend());
         return CLI_EXIT_FAIL;
     }
-    printf("# %04x:%04x %s\n", dev.info.vid, dev.info.pid, dev.info.name);
+    char name[4 * sizeof dev.info.name];
+    printf("# %04x:%04x %s\n", dev.info.vid, dev.info.pid,
+           cli_escape(dev.info.name, name, sizeof name));
     hol_input in, last;
     memset(&in, 0, sizeof in);
     memset(&last, 0xff, sizeof last);

@@ -61,10 +61,7 @@ static int parse_addr(const char *cmd, long lineno, const char *s, size_t len,
     char shown[48];
     size_t n = len < 40 ? len : 40;
     memcpy(shown, s, n);
-    strcpy(shown + n, len > 40 ? "..." : "");
-    for (size_t i = 0; i < n; i++)
-        if ((unsigned char)shown[i] < 0x20 || (unsigned char)shown[i] > 0x7e)
-            shown[i] = '?';
+    strcpy(shown + n, len > 40 ? "..." : ""); /* cli_error escapes it */
     if (err == HOL_ENOTCANON) {
         hol_tile t;
         char canon[HOL_TILE_ADDR_MAX];
