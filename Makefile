@@ -22,7 +22,7 @@ OPT     ?= -O2
 CSTD    := -std=c11
 WARN    := -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes -Wvla
 CFLAGS  ?=
-override CFLAGS += $(CSTD) $(WARN) $(OPT) -g -D_DEFAULT_SOURCE -MMD -MP
+override CFLAGS += $(CSTD) $(WARN) $(OPT) -g -ffp-contract=off -D_DEFAULT_SOURCE -MMD -MP
 LDLIBS  += -lm
 FUZZ_CC ?= clang
 FUZZ_TIME ?= 60

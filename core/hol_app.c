@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "hol_input_io.h"
+#include "hol_math.h"
 #include "hol_nav.h"
 #include "hol_world.h"
 
@@ -378,7 +379,7 @@ hol_err hol_app_start_level(hol_app *app, const hol_app_level *level)
 static void hol__quat_from_yaw_pitch(double yaw_deg, double pitch_deg, double q[4])
 {
     double y = yaw_deg * HOL__PI / 360, p = pitch_deg * HOL__PI / 360;
-    double sy = sin(y), cy = cos(y), sp = sin(p), cp = cos(p);
+    double sy = hol_sin(y), cy = hol_cos(y), sp = hol_sin(p), cp = hol_cos(p);
     q[0] = cy * sp;
     q[1] = sy * cp;
     q[2] = -sy * sp;
@@ -395,8 +396,8 @@ static void hol__yaw_pitch_from_quat(const float qf[4], double *yaw, double *pit
     double fx = -2 * (x * z + w * y), fy = -2 * (y * z - w * x),
            fz = -(1 - 2 * (x * x + y * y));
     fy = fy < -1 ? -1 : fy > 1 ? 1 : fy;
-    *pitch = asin(fy) * 180 / HOL__PI;
-    *yaw = atan2(-fx, -fz) * 180 / HOL__PI;
+    *pitch = hol_asin(fy) * 180 / HOL__PI;
+    *yaw = hol_atan2(-fx, -fz) * 180 / HOL__PI;
 }
 
 static void hol__fill_view(hol_app *app, const hol_input *in)

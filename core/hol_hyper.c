@@ -2,11 +2,19 @@
 
 #include <math.h>
 
+#include "hol_math.h"
+
 #define HOL__PI 3.14159265358979323846
+
+/* cos(pi/5) / sin(pi/4): the edge is 2 acosh(c) */
+static double hol__edge_c(void)
+{
+    return hol_cos(HOL__PI / 5.0) / hol_sin(HOL__PI / 4.0);
+}
 
 double hol_hyper_edge(void)
 {
-    return 2.0 * acosh(cos(HOL__PI / 5.0) / sin(HOL__PI / 4.0));
+    return 2.0 * hol_acosh(hol__edge_c());
 }
 
 /* m = m * R(turn quarter turns counter-clockwise) * T(+y by d) */
@@ -32,7 +40,8 @@ hol_err hol_hyper_frame(hol_tile a, int a_north, hol_tile b, double out_m[9])
     int n = hol_tile_relative_letters(a, a_north, b, rel, &facing);
     if (n < 0)
         return HOL_EARG;
-    double d = hol_hyper_edge(), ch = cosh(d), sh = sinh(d);
+    /* cosh and sinh of the edge 2 acosh(c): 2c^2 - 1 and 2c sqrt(c^2 - 1) */
+    double c = hol__edge_c(), ch = 2.0 * c * c - 1.0, sh = 2.0 * c * sqrt(c * c - 1.0);
     double m[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
     for (int i = 0; i < n; i++)
         hol__apply(m, rel[i], ch, sh);
@@ -56,9 +65,9 @@ hol_err hol_hyper_pos(hol_tile a, int a_north, hol_tile b, double out_p[3],
         out_p[2] = w;
     }
     if (out_angle)
-        *out_angle = atan2(-x, y);
+        *out_angle = hol_atan2(-x, y);
     if (out_dist)
-        *out_dist = acosh(w < 1.0 ? 1.0 : w);
+        *out_dist = hol_acosh(w < 1.0 ? 1.0 : w);
     return HOL_OK;
 }
 

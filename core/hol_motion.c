@@ -4,6 +4,8 @@
 #include <math.h>
 #include <string.h>
 
+#include "hol_math.h"
+
 #define HOL__PI 3.14159265358979323846
 
 /* Crossings of the grid lines x = k and z = k by the floor segment from
@@ -163,8 +165,9 @@ hol_err hol_motion_pancake(hol_motion *m, const float move[2], const float turn[
     double yr = m->yaw_deg * HOL__PI / 180;
     double fwd = hol__clamp1(move[1]) * m->d.speed * dt;
     double side = hol__clamp1(move[0]) * m->d.speed * dt;
-    double pos[3] = {m->head[0] - fwd * sin(yr) + side * cos(yr), m->head[1],
-                     m->head[2] - fwd * cos(yr) - side * sin(yr)};
+    double sy = hol_sin(yr), cy = hol_cos(yr);
+    double pos[3] = {m->head[0] - fwd * sy + side * cy, m->head[1],
+                     m->head[2] - fwd * cy - side * sy};
     if (fwd == 0 && side == 0) {
         if (out_steps)
             out_steps->n = 0;
