@@ -109,6 +109,43 @@ run "capacity 4096" 0 "$H" world --capacity 4096 --quiet --walk NE
 run "capacity 2^30" 2 "$H" world --capacity 1073741824 --quiet
 one_line "capacity 2^30" "not a number of tiles 1..268435456"
 
+# --- a repeated option is a usage error (the last one won), in every
+# command; the options documented as repeatable still repeat -------------
+mkfifo rep.fifo # a command that got past its options would block on it
+for c in "world --seed 1 --seed 2" "world --save=a.img --save b.img" "nav --stats --stats" \
+         "nav --budget 9 --budget=10" "tour --stats --stats - O" "render --size 8x8 --size 9x9 --stats" \
+         "play --seed 1 --seed 2 --input rep.fifo" "replay rep.fifo --log . --log ." \
+         "hid watch --frames 1 --frames 2" "xr --frames 1 --frames 2 --input rep.fifo" \
+         "game rep.fifo --x --x"; do
+  opt=$(echo "$c" | awk '{for (i = 2; i <= NF; i++) if ($i ~ /^--/) { sub(/=.*/, "", $i); print $i; exit }}')
+  run "repeated: $c" 2 timeout 10 "$H" $c </dev/null
+  one_line "repeated: $c" "$opt is given twice; give each option once"
+done
+run "render --target twice" 0 "$H" render --bare --size 4x4 --stats --target Nr --target El
+
+# --- every documented bound is enforced (--budget 2147483648 was taken
+# although the help says 262144 at most) ---------------------------------
+for c in "nav --budget 262145" "nav --budget 2147483648" "tour --budget 262145 - O"; do
+  run "bound: $c" 2 "$H" $c </dev/null
+  one_line "bound: $c" "--budget needs a node count 1..262144"
+done
+echo '- Nr' | "$H" nav --budget 262144 >/dev/null && ok || bad "nav --budget 262144 refused"
+run "tour --budget 262144" 0 "$H" tour --budget 262144 - Nr
+for c in "--size 8193x1" "--size 0x4" "--fov 9.9" "--fov 170.1" "--pitch 90.5" "--frames 1001" \
+         "--frames 0" "--stereo 0.21" "--stereo 0" "--eye 1.5,0.005,1.5" "--eye 1.5,100.5,1.5" \
+         "--hand 1.5,1,1.52" "--hand 3.6,1,1.5"; do
+  run "render bound: $c" 2 "$H" render --bare --stats $c
+done
+run "render at its bounds" 0 "$H" render --bare --stats --size 1x1 --fov 10 --pitch -90 --frames 2 \
+  --eye 1.5,0.02,1.5 --hand 1.5,1,1.56
+run "render at its other bounds" 0 "$H" render --bare --stats --size 2x1 --fov 170 --pitch 90 \
+  --stereo 0.2 --eye 1.5,100,1.5 --hand 3.49,1,1.5
+for c in "--radius 9" "--capacity 268435457"; do
+  run "world bound: $c" 2 "$H" world --quiet $c
+done
+run "tour: 5 keys" 0 "$H" tour - Nr El Sr Wl Nl Er
+run "tour: 6 keys" 2 "$H" tour - Nr El Sr Wl Nl Er Sl
+
 # --- option values and messages ---------------------------------------------
 esc=$(printf '\033[31mX')
 run "escape bytes in --seed" 2 "$H" world --seed "$esc"

@@ -44,8 +44,10 @@ int cli_for_each_line(const char *cmd, cli_line_fn fn, void *ctx);
 size_t cli_parse_count(const char *s);
 
 /* If argv[*i] is "--budget N" or "--budget=N": parse N into *out_budget
- * (advancing *i past N) and return 1, or report a bad count for cmd and
- * return -1. Any other argument: 0. */
+ * (advancing *i past N) and return 1, or report a count outside
+ * 1..CLI_BUDGET_MAX (the navigator's arena, HOL_NAV_DEFAULT_NODES) for cmd
+ * and return -1. Any other argument: 0. */
+#define CLI_BUDGET_MAX 262144
 int cli_budget_option(const char *cmd, int argc, char **argv, int *i,
                       size_t *out_budget);
 
@@ -100,6 +102,14 @@ int cli_check_output(const char *cmd, const char *opt, const char *path);
 
 /* Flush stdout; on failure report it and return CLI_EXIT_FAIL. */
 int cli_finish_output(const char *cmd);
+
+/* A repeated option is a usage error, in every command (main runs this
+ * before the command): 0, or report "--save is given twice; give each
+ * option once" and return CLI_EXIT_USAGE. Every argument of argv[1..]
+ * that starts with "--" counts, by its name before any '=' ("--save a"
+ * and "--save=b" are the same option), except the options a command
+ * documents as repeatable (render --target). */
+int cli_no_repeats(const char *cmd, int argc, char **argv);
 
 /* True when argv has -h or --help anywhere. */
 int cli_wants_help(int argc, char **argv);
