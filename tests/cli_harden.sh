@@ -146,6 +146,13 @@ done
 run "tour: 5 keys" 0 "$H" tour - Nr El Sr Wl Nl Er
 run "tour: 6 keys" 2 "$H" tour - Nr El Sr Wl Nl Er Sl
 
+# --- hid watch --replay ends at the end of its script (it never ended when
+# the script did not unplug its pad) ---------------------------------------
+printf '0 plug 0001:0002 05 01 09 05 a1 01 15 00 25 01 75 01 95 08 05 09 19 01 29 08 81 02 c0\n0.05 report 01\n' >held.pad
+run "watch a script that keeps its pad" 0 timeout 10 "$H" hid watch --replay held.pad
+[ "$(tail -n 1 "$T/out")" = "# end of script" ] && [ "$(sed -n 3p "$T/out")" = "buttons 0x01 move 0.000 0.000 turn 0.000 0.000" ] &&
+  ok || bad "watch held.pad: $(cat "$T/out")"
+
 # --- option values and messages ---------------------------------------------
 esc=$(printf '\033[31mX')
 run "escape bytes in --seed" 2 "$H" world --seed "$esc"

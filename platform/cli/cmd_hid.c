@@ -34,7 +34,8 @@ static const char *const hid_usage =
     "                  after --frames N reads of 10 ms (default: until the\n"
     "                  controller goes away). --replay FILE watches a scripted\n"
     "                  controller (README: Gamepads) instead, on a clock of\n"
-    "                  10 ms a read, without waiting.\n"
+    "                  10 ms a read, without waiting, until the script ends\n"
+    "                  ('# end of script') or unplugs its controller.\n"
     "\n"
     "Exit status: 0 ok, 1 no controller (watch) or an I/O error, 2 bad input\n"
     "or usage (one line on stderr).\n";
@@ -261,6 +262,10 @@ static int cmd_watch(int argc, char **argv)
         }
         if (err) {
             printf("# controller lost\n");
+            break;
+        }
+        if (script_path && hol_hid_script_done(&script)) {
+            printf("# end of script\n");
             break;
         }
         if (!script_path)

@@ -173,6 +173,11 @@ const hol_hid_backend *hol_hid_script_backend(hol_hid_script *s)
     return &s->be;
 }
 
+int hol_hid_script_done(const hol_hid_script *s)
+{
+    return s->next >= s->n;
+}
+
 /* Let the plugs and unplugs due by now_s happen, up to the first report
  * (reports are the reads'). */
 static void settle(hol_hid_script *s, double now_s)

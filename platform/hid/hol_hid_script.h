@@ -29,6 +29,8 @@
  *   due, in order, then 0; a read that reaches an unplug fails (< 0), as a
  *   real read does. A report is read by the first read at or past
  *   its TIME (while the layer waits to re-enumerate, they wait too).
+ * - hol_hid_script_done tells when the playback has nothing left: `hid
+ *   watch --replay` ends there (a script need not unplug its pad).
  * - No I/O, no allocation, no globals.
  */
 #ifndef HOL_HID_SCRIPT_H
@@ -69,5 +71,10 @@ hol_err hol_hid_script_parse(hol_hid_script *s, const char *text, size_t len, lo
 
 /* The backend playing *s (valid while *s is). */
 const hol_hid_backend *hol_hid_script_backend(hol_hid_script *s);
+
+/* 1 once every event of *s has happened in playback (the last report read,
+ * the last plug or unplug seen): nothing more can change, so a watcher of
+ * the script may stop. */
+int hol_hid_script_done(const hol_hid_script *s);
 
 #endif
