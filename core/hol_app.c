@@ -6,48 +6,12 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "hol_app_impl.h"
 #include "hol_input_io.h"
-#include "hol_math.h"
-#include "hol_nav.h"
 #include "hol_world.h"
 
-#define HOL__PI 3.14159265358979323846
 #define HOL__SUBSTEP (1.0 / 60) /* longest pancake motion sub-step, seconds */
 #define HOL__STALL_S 0.5        /* a longer frame is a stall: no motion */
-
-struct hol_app {
-    hol_app_desc d;
-    hol_nav *nav;
-    int own_nav;
-    void *world_mem;
-    size_t world_size;
-    hol_world *world;
-    hol_app_level level;
-    int have_level;
-    hol_room start_room;
-    hol_motion mo;
-    hol_app_view view;
-    hol_app_events ev;
-    hol_input prev;
-    int have_prev;
-    int menu;
-    int pending_start;
-    /* the game */
-    int done;
-    unsigned keys_held; /* bit per key */
-    int timed_out;      /* the end screen is the time limit's */
-    int steps, optimum, remaining;
-    double level_t;
-    long next_sample; /* index of the next 10 Hz head sample */
-    /* the tutorial */
-    int stage;               /* 0..HOL_APP_TUTORIAL_STAGES-1 */
-    hol_room stage_start;
-    int stage_steps;
-    int has_target;          /* the stage has a target tile */
-    hol_tile target;
-    uint8_t walk[HOL_NAV_WALK_MAX]; /* replan scratch */
-    int nwalk;
-};
 
 /* Seen tiles the app's world remembers after eviction: 6 MB, hours of play. */
 #define HOL__APP_KEEP (1u << 18)
@@ -144,8 +108,6 @@ hol_world *hol_app_world(hol_app *app)
     return app->world;
 }
 
-static void hol__fill_view(hol_app *app, const hol_input *in);
-
 /* ---- the game ------------------------------------------------------------ */
 
 /* Optimal steps left from room r (the walk in app->walk), or -1. *exact
@@ -159,6 +121,11 @@ static hol_err hol__plan(hol_app *app, const hol_room *r, int *out_len, int *exa
     if (L->mode == HOL_APP_FLAG || (L->mode == HOL_APP_TUTORIAL && app->has_target)) {
         hol_tile goal = L->mode == HOL_APP_FLAG ? L->flag : app->target;
         err = hol_nav_find(app->nav, r, goal, 0, app->walk, sizeof app->walk, &res);
+    } else if (L->mode == HOL_APP_TUTORIAL) {
+        *out_len = app->nwalk = hol__loop_left(app, r, app->walk, (int)sizeof app->walk);
+        if (app->nwalk < 0)
+            app->nwalk = 0;
+        return HOL_OK;
     } else if (L->mode == HOL_APP_KEYS) {
         hol_tile left[HOL_APP_MAX_KEYS];
         int n = 0;
@@ -180,68 +147,12 @@ static hol_err hol__plan(hol_app *app, const hol_room *r, int *out_len, int *exa
     return HOL_OK;
 }
 
-/* The tile reached from room state r by steps given as turns relative to
- * the room's north (0 ahead, 1 left, ...), turning as one walks. */
-static hol_tile hol__tile_ahead(const hol_room *r, const int *turns, int n)
-{
-    hol_heading_tile ht = {r->tile, r->orient};
-    for (int i = 0; i < n; i++)
-        if (hol_heading_tile_step(ht, turns[i], &ht))
-            break;
-    return ht.tile;
-}
-
-/* The first lesson at or after k that the level plays (HOL_APP_TUTORIAL_STAGES:
- * none left). */
-static int hol__next_stage(const hol_app *app, int k)
-{
-    unsigned want = app->level.stages ? app->level.stages : (1u << HOL_APP_TUTORIAL_STAGES) - 1;
-    while (k < HOL_APP_TUTORIAL_STAGES && !(want >> k & 1))
-        k++;
-    return k;
-}
-
-/* Begin tutorial stage k at room state r: its target (if any) and the
- * world marker on it. */
-static void hol__stage(hol_app *app, int k, const hol_room *r)
-{
-    static const int one[1] = {0}, two[2] = {0, 0}, three[3] = {0, 0, 1};
-    app->stage = k;
-    app->stage_start = *r;
-    app->stage_steps = 0;
-    app->has_target = k != 1;
-    if (k == 0)
-        app->target = hol__tile_ahead(r, one, 1);
-    else if (k == 2)
-        app->target = hol__tile_ahead(r, two, 2);
-    else if (k == 3)
-        app->target = hol__tile_ahead(r, three, 3);
-    if (app->has_target) {
-        hol_tile placed;
-        (void)hol_world_reserve(app->world, app->target, 0, HOL_OBJ_FLAG, &placed);
-    }
-}
-
 /* A room step entered r: collect what lies there. */
 static void hol__enter(hol_app *app, const hol_room *r)
 {
     const hol_app_level *L = &app->level;
-    if (L->mode == HOL_APP_TUTORIAL) {
-        app->stage_steps++;
-        int passed = app->has_target
-                         ? hol_tile_eq(r->tile, app->target)
-                         : app->stage_steps >= 4 && r->col == app->stage_start.col &&
-                               r->row == app->stage_start.row &&
-                               !hol_tile_eq(r->tile, app->stage_start.tile);
-        int next = hol__next_stage(app, app->stage + 1);
-        if (passed && next >= HOL_APP_TUTORIAL_STAGES)
-            app->done = 1;
-        else if (passed) {
-            if (app->has_target)
-                (void)hol_world_release(app->world, app->target);
-            hol__stage(app, next, r);
-        }
-    }
+    if (L->mode == HOL_APP_TUTORIAL)
+        hol__tutorial_enter(app, r);
     if (L->mode == HOL_APP_FLAG && hol_tile_eq(r->tile, L->flag))
         app->done = 1;
     if (L->mode == HOL_APP_KEYS) {
@@ -335,6 +246,9 @@ static hol_err hol__begin(hol_app *app)
     app->done = 0;
     app->keys_held = 0;
     app->has_target = 0;
+    app->feedback[0] = 0;
+    app->feedback_until = 0;
+    app->nmarks = 0;
     if (L->mode == HOL_APP_TUTORIAL)
         hol__stage(app, hol__next_stage(app, 0), &r);
     app->timed_out = 0;
@@ -348,8 +262,10 @@ static hol_err hol__begin(hol_app *app)
     if (!exact)
         return HOL_EBUDGET;
     app->remaining = app->optimum;
-    if (L->mode == HOL_APP_TUTORIAL)
-        app->optimum = -1; /* lessons are not scored */
+    if (L->mode == HOL_APP_TUTORIAL) {
+        app->stage_optimum = app->optimum; /* the first lesson's */
+        app->optimum = -1; /* the level is not scored */
+    }
     hol_motion_init(&app->mo, &r, &app->d.motion);
     app->pending_start = 1;
     app->view.state = HOL_APP_PLAYING;
@@ -374,164 +290,6 @@ hol_err hol_app_start_level(hol_app *app, const hol_app_level *level)
     return err;
 }
 
-/* ---- the view ------------------------------------------------------------ */
-
-static void hol__quat_from_yaw_pitch(double yaw_deg, double pitch_deg, double q[4])
-{
-    double y = yaw_deg * HOL__PI / 360, p = pitch_deg * HOL__PI / 360;
-    double sy = hol_sin(y), cy = hol_cos(y), sp = hol_sin(p), cp = hol_cos(p);
-    q[0] = cy * sp;
-    q[1] = sy * cp;
-    q[2] = -sy * sp;
-    q[3] = cy * cp;
-}
-
-static void hol__yaw_pitch_from_quat(const float qf[4], double *yaw, double *pitch)
-{
-    double x = qf[0], y = qf[1], z = qf[2], w = qf[3];
-    double n = sqrt(x * x + y * y + z * z + w * w);
-    if (!(n > 0))
-        return;
-    x /= n, y /= n, z /= n, w /= n;
-    double fx = -2 * (x * z + w * y), fy = -2 * (y * z - w * x),
-           fz = -(1 - 2 * (x * x + y * y));
-    fy = fy < -1 ? -1 : fy > 1 ? 1 : fy;
-    *pitch = hol_asin(fy) * 180 / HOL__PI;
-    *yaw = hol_atan2(-fx, -fz) * 180 / HOL__PI;
-}
-
-static void hol__fill_view(hol_app *app, const hol_input *in)
-{
-    hol_app_view *v = &app->view;
-    const hol_app_level *L = &app->level;
-    v->user = app->mo.user;
-    memcpy(v->head, app->mo.head, sizeof v->head);
-    v->yaw_deg = app->mo.yaw_deg;
-    v->pitch_deg = app->mo.pitch_deg;
-    if (in && (in->flags & HOL_INPUT_HEAD_VALID)) {
-        for (int i = 0; i < 4; i++)
-            v->head_quat[i] = in->head.quat[i];
-    } else {
-        hol__quat_from_yaw_pitch(v->yaw_deg, v->pitch_deg, v->head_quat);
-    }
-    /* eyes: head +- ipd/2 along the head's right axis, in the floor plane */
-    double x = v->head_quat[0], y = v->head_quat[1], z = v->head_quat[2], w = v->head_quat[3];
-    double rx = 1 - 2 * (y * y + z * z), rz = 2 * (x * z - w * y);
-    double rn = sqrt(rx * rx + rz * rz);
-    if (!(rn > 1e-9))
-        rx = 1, rz = 0, rn = 1;
-    for (int e = 0; e < 2; e++) {
-        double s = (e ? 0.5 : -0.5) * app->d.ipd / rn;
-        v->eye[e][0] = v->head[0] + s * rx;
-        v->eye[e][1] = v->head[1];
-        v->eye[e][2] = v->head[2] + s * rz;
-        if (hol_motion_eye_state(&v->user, v->head, v->eye[e], &v->eye_user[e]))
-            v->eye_user[e] = v->user;
-    }
-    /* HUD */
-    hol_app_hud *h = &v->hud;
-    h->steps = app->steps;
-    h->optimum = app->optimum;
-    h->remaining = app->remaining;
-    h->elapsed_s = app->level_t;
-    h->keys_total = L->mode == HOL_APP_KEYS ? L->nkeys : 0;
-    h->keys_held = 0;
-    h->stage = L->mode == HOL_APP_TUTORIAL ? app->stage : -1;
-    h->timed_out = app->timed_out;
-    for (int k = 0; k < h->keys_total; k++)
-        h->keys_held += (int)(app->keys_held >> k & 1);
-    hol_tile_print(v->user.tile, h->address);
-    switch (L->mode) {
-    case HOL_APP_FLAG: snprintf(h->objective, sizeof h->objective, "Find the flag"); break;
-    case HOL_APP_KEYS:
-        if (h->keys_held < h->keys_total)
-            snprintf(h->objective, sizeof h->objective, "Keys %d/%d", h->keys_held,
-                     h->keys_total);
-        else
-            snprintf(h->objective, sizeof h->objective, "Bring the keys to the chest");
-        break;
-    case HOL_APP_TUTORIAL: {
-        static const char *const lesson[HOL_APP_TUTORIAL_STAGES] = {
-            "1/4 Step onto the marked tile ahead",
-            "2/4 Walk round a tree back to this cell",
-            "3/4 Use the map: reach the marker",
-            "4/4 Find the flag, every cue on"};
-        snprintf(h->objective, sizeof h->objective, "%s", lesson[app->stage]);
-        break;
-    }
-    default: snprintf(h->objective, sizeof h->objective, "Explore"); break;
-    }
-    long secs = (long)app->level_t;
-    h->hint[0] = 0;
-    if (v->state == HOL_APP_DONE) {
-        if (app->timed_out)
-            snprintf(h->status, sizeof h->status, "Time up: %d steps, best %d, %ld:%02ld",
-                     app->steps, app->optimum, secs / 60 % 100000, secs % 60);
-        else
-            snprintf(h->status, sizeof h->status, "Done: %d steps, best %d, %ld:%02ld",
-                     app->steps, app->optimum, secs / 60 % 100000, secs % 60);
-        snprintf(h->hint, sizeof h->hint, "Confirm: next level, restart: again");
-    } else if (v->paused && in && (in->flags & HOL_INPUT_DEVICE_LOST) && !app->menu) {
-        snprintf(h->status, sizeof h->status, "Controller lost");
-        snprintf(h->hint, sizeof h->hint, "Plug it back in, or press a key");
-    } else if (v->paused) {
-        snprintf(h->status, sizeof h->status, "Paused");
-        if (app->menu)
-            snprintf(h->hint, sizeof h->hint, "Menu: resume, restart, quit");
-    } else {
-        h->status[0] = 0;
-    }
-    /* safety: a tracked head beyond the hedges; a play area too small */
-    if (in && (in->flags & HOL_INPUT_HEAD_VALID) &&
-        (in->head.pos[0] < 0 || in->head.pos[0] > HOL_ROOM_SIZE || in->head.pos[2] < 0 ||
-         in->head.pos[2] > HOL_ROOM_SIZE))
-        snprintf(h->status, sizeof h->status, "Outside the room: step back in");
-    if (in && (in->flags & HOL_INPUT_BOUNDS_SMALL) && !h->hint[0])
-        snprintf(h->hint, sizeof h->hint, "Play area under 3 x 3 m: mind the edges");
-    h->nlines = 0;
-    snprintf(h->lines[h->nlines++], HOL_APP_TEXT_MAX, "%s", h->status[0] ? h->status : h->objective);
-    snprintf(h->lines[h->nlines++], HOL_APP_TEXT_MAX, "STEPS %d", h->steps);
-    snprintf(h->lines[h->nlines++], HOL_APP_TEXT_MAX, "TILE %.40s", h->address);
-    snprintf(h->lines[h->nlines++], HOL_APP_TEXT_MAX, "TIME %ld:%02ld", secs / 60, secs % 60);
-    if (h->hint[0])
-        snprintf(h->lines[h->nlines++], HOL_APP_TEXT_MAX, "%s", h->hint);
-    /* minimap */
-    hol_app_minimap *m = &v->map;
-    m->cues = L->cues;
-    m->nobjectives = 0;
-    if (L->mode == HOL_APP_FLAG && !app->done)
-        m->objectives[m->nobjectives++] = L->flag;
-    if (L->mode == HOL_APP_TUTORIAL && !app->done && app->has_target)
-        m->objectives[m->nobjectives++] = app->target;
-    if (L->mode == HOL_APP_KEYS && !app->done) {
-        for (int k = 0; k < L->nkeys; k++)
-            if (!(app->keys_held >> k & 1))
-                m->objectives[m->nobjectives++] = L->keys[k];
-        if (h->keys_held == h->keys_total)
-            m->objectives[m->nobjectives++] = L->chest;
-    }
-    /* the game objects in the world: the flag (or a lesson's marker), the
-     * keys not yet collected, the chest (open once every key is held) */
-    v->nobjects = 0;
-    if (L->mode == HOL_APP_FLAG)
-        v->objects[v->nobjects++] = (hol_app_object){L->flag, HOL_APP_OBJ_FLAG};
-    if (L->mode == HOL_APP_TUTORIAL && app->has_target && !app->done)
-        v->objects[v->nobjects++] = (hol_app_object){app->target, HOL_APP_OBJ_FLAG};
-    if (L->mode == HOL_APP_KEYS) {
-        for (int k = 0; k < L->nkeys; k++)
-            if (!(app->keys_held >> k & 1))
-                v->objects[v->nobjects++] = (hol_app_object){L->keys[k], HOL_APP_OBJ_KEY};
-        v->objects[v->nobjects++] = (hol_app_object){
-            L->chest, h->keys_held == h->keys_total ? HOL_APP_OBJ_CHEST_OPEN : HOL_APP_OBJ_CHEST};
-    }
-    m->npath = 0;
-    if ((L->cues & HOL_CUE_PATH) && !app->done && app->optimum >= 0 &&
-        app->steps + app->remaining > app->optimum + app->d.stray_steps) {
-        m->npath = app->nwalk < HOL_APP_PATH_MAX ? app->nwalk : HOL_APP_PATH_MAX;
-        memcpy(m->path, app->walk, (size_t)m->npath);
-    }
-}
-
 /* ---- the step ------------------------------------------------------------ */
 
 /* The room steps of one motion, st->n of them, taken at level time t. */
@@ -544,6 +302,7 @@ static hol_err hol__room_steps(hol_app *app, const hol_motion_steps *st, double 
         if (app->done)
             continue;
         app->steps++;
+        int stage = app->stage;
         hol__enter(app, &st->after[i]);
         int exact;
         if (app->done) {
@@ -553,6 +312,8 @@ static hol_err hol__room_steps(hol_app *app, const hol_motion_steps *st, double 
                    !hol__plan(app, &st->after[i], &app->remaining, &exact)) {
             /* remaining and the walk are set */
         }
+        if (app->level.mode == HOL_APP_TUTORIAL && app->stage != stage)
+            app->stage_optimum = app->remaining; /* a lesson begins here */
         hol_app_step_event *e = &app->ev.steps[app->ev.nsteps++];
         e->t = t;
         e->index = app->steps;
@@ -628,6 +389,16 @@ hol_err hol_app_step(hol_app *app, const hol_input *in)
         dt = 0;
     }
     hol_err err = HOL_OK;
+    app->device = in->device;
+    if (app->menu && !(pressed & HOL_BTN_MENU)) {
+        /* the menu: confirm restarts, back quits (menu resumes) */
+        if (pressed & HOL_BTN_CONFIRM)
+            pressed = (pressed & ~(uint32_t)HOL_BTN_CONFIRM) | HOL_BTN_RESTART;
+        if (pressed & HOL_BTN_BACK)
+            pressed |= HOL_BTN_QUIT;
+    }
+    if (pressed & HOL_BTN_DEBUG)
+        app->debug = !app->debug;
     if (pressed & HOL_BTN_QUIT) {
         if (v->state == HOL_APP_PLAYING)
             hol__summary(app, HOL_APP_END_QUIT);

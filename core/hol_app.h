@@ -4,7 +4,9 @@
  * Contract
  * - hol_app_step(app, &input) is the whole app per frame: pause and menu
  *   (paused while the input lacks HOL_INPUT_FOCUSED, has
- *   HOL_INPUT_DEVICE_LOST, or the menu is open), the user's motion (a
+ *   HOL_INPUT_DEVICE_LOST, or the menu is open; in the menu confirm
+ *   restarts the level and back quits), the debug text toggle
+ *   (HOL_BTN_DEBUG), the user's motion (a
  *   tracked head moves the user, else the pancake axes do; hol_motion),
  *   room steps, the world update after each (hol_world_update), the game
  *   (objectives entered by a room step, level end), guidance replan after
@@ -63,7 +65,8 @@ enum hol_app_minimap_place { HOL_MINIMAP_HUD = 0, HOL_MINIMAP_HAND = 1, HOL_MINI
 #define HOL_APP_MAX_OBJECTIVES 8
 #define HOL_APP_PATH_MAX 64
 #define HOL_APP_TEXT_MAX 48
-#define HOL_APP_HUD_LINES 5
+#define HOL_APP_HUD_LINES 6
+#define HOL_APP_MAX_MARKS 2
 /* Most room steps one app step reports (a frame's motion in sub-steps). */
 #define HOL_APP_MAX_STEP_EVENTS 16
 /* A level's designer placements; the world takes these and a clearing on
@@ -76,7 +79,14 @@ enum hol_app_minimap_place { HOL_MINIMAP_HUD = 0, HOL_MINIMAP_HAND = 1, HOL_MINI
  * 2 reach a marker two tiles ahead, reading the minimap;
  * 3 find a flag three tiles away (ahead, ahead, left), every cue on.
  * Targets are placed relative to where the lesson begins; the level is done
- * after the last. Lessons are not scored (optimum -1). */
+ * after the last. Each lesson done says so on the HUD for 6 s of level time
+ * (hud.feedback; lesson 2: "Same cell, another tile: that is holonomy",
+ * with the cell's two tiles marked on the minimap: map.marks). Each lesson
+ * has an exact optimum from where it begins (hud.stage_optimum: the
+ * navigator's for a target, an exhaustive search for lesson 2), so the
+ * path cue shows when the lesson's steps plus the steps left exceed it by
+ * more than desc.stray_steps. The level as a whole is not scored (optimum
+ * -1: its lessons begin where the player ends the one before). */
 #define HOL_APP_TUTORIAL_STAGES 4
 
 /* One level as the app plays it. */
@@ -123,19 +133,30 @@ typedef struct hol_app_hud {
     char objective[HOL_APP_TEXT_MAX]; /* "Find the flag", "Keys 2/3", ... */
     char status[HOL_APP_TEXT_MAX];    /* "Paused", "Controller lost" (device
                                          lost), "Done: 14 steps, ...", "" */
-    char hint[HOL_APP_TEXT_MAX];      /* what the buttons do now, or "" */
+    char hint[HOL_APP_TEXT_MAX];      /* the prompt: what the buttons do now,
+                                         named for the device in use
+                                         (core/hol_prompt.h): "ENTER: NEXT
+                                         LEVEL, R: AGAIN", "A: NEXT LEVEL",
+                                         "TRIGGER: NEXT LEVEL"; or "" */
     char address[HOL_TILE_ADDR_MAX];  /* the current tile */
+    char feedback[HOL_APP_TEXT_MAX];  /* tutorial: the lesson just done, or "" */
     int steps;                        /* room steps this level */
     int optimum;                      /* fewest steps from the level start; -1 none */
     int remaining;                    /* optimal steps left from here; -1 none */
     int keys_held, keys_total;
     int stage;                        /* tutorial lesson 0..3; -1 otherwise */
+    int stage_steps, stage_optimum;   /* tutorial: the lesson's steps so far and
+                                         its fewest from its start (-1 none) */
+    int debug;                        /* the debug text is on (HOL_BTN_DEBUG) */
+    uint32_t device;                  /* HOL_DEVICE_* the prompts are worded for */
     int timed_out;                    /* 1: the level ended at its time limit
                                          (state DONE, "Time up"), not complete */
     double elapsed_s;                 /* level clock */
-    /* the text as drawn, one line each: objective (or status), steps
-     * (with the best when done), "TILE address", time, hint if any; "TILE"
-     * keeps the address's case, other lines are shown in capitals */
+    /* the text as drawn, one line each: the feedback if any, the
+     * objective (or status), "STEPS n", "TIME m:ss OF m:ss" when the level
+     * has a time limit; with debug on also "TILE address", "CELL c,r NORTH
+     * o" and the time; "TILE" keeps the address's case, other lines are
+     * shown in capitals. The hint (the prompt) is drawn on its own. */
     char lines[HOL_APP_HUD_LINES][HOL_APP_TEXT_MAX];
     int nlines;
 } hol_app_hud;
@@ -148,6 +169,8 @@ typedef struct hol_app_minimap {
     hol_tile objectives[HOL_APP_MAX_OBJECTIVES];
     int npath;                        /* >0: the path to draw (strayed) */
     uint8_t path[HOL_APP_PATH_MAX];   /* room steps from the user */
+    int nmarks;                       /* tiles to mark (tutorial feedback) */
+    hol_tile marks[HOL_APP_MAX_MARKS];
 } hol_app_minimap;
 
 /* A game object standing in the world. */

@@ -5,6 +5,10 @@
 #include <string.h>
 
 #define HOL__PI 3.14159265358979323846
+#define HOL__HAND_AHEAD 0.28
+#define HOL__HAND_BELOW 0.52
+#define HOL__HAND_LEFT 0.12
+#define HOL__HAND_SIZE 0.2
 
 void hol_app_frame_desc(const hol_app_view *v, int eye, int w, int h, double fovy_deg,
                         hol_frame_desc *out)
@@ -16,6 +20,10 @@ void hol_app_frame_desc(const hol_app_view *v, int eye, int w, int h, double fov
     for (int i = 0; i < nl; i++)
         fd->hud_lines[i] = v->hud.lines[i];
     fd->nhud_lines = nl;
+    fd->prompt = v->hud.hint;
+    int nm = v->map.nmarks < HOL_RENDER_MAX_MARKS ? v->map.nmarks : HOL_RENDER_MAX_MARKS;
+    fd->nmarks = nm > 0 ? nm : 0;
+    memcpy(fd->marks, v->map.marks, (size_t)fd->nmarks * sizeof fd->marks[0]);
     if (eye == 0 || eye == 1) {
         fd->user = v->eye_user[eye];
         memcpy(fd->cam.eye, v->eye[eye], sizeof fd->cam.eye);
@@ -36,16 +44,19 @@ void hol_app_frame_desc(const hol_app_view *v, int eye, int w, int h, double fov
     if (!(v->map.cues & HOL_CUE_ARROW))
         fd->flags |= HOL_RENDER_NO_ARROW;
     if (v->map.place == HOL_MINIMAP_HAND) {
-        double y = v->yaw_deg * HOL__PI / 180, a = -40 * HOL__PI / 180;
-        fd->hand_pos[0] = fd->cam.eye[0] - 0.4 * sin(y);
-        fd->hand_pos[1] = fd->cam.eye[1] - 0.35;
-        fd->hand_pos[2] = fd->cam.eye[2] - 0.4 * cos(y);
+        /* a left hand held low: HOL__HAND_AHEAD ahead of the eye,
+         * HOL__HAND_BELOW below it and HOL__HAND_LEFT to its left, the
+         * map tilted back to face the eye */
+        double y = v->yaw_deg * HOL__PI / 180, a = -atan2(HOL__HAND_BELOW, HOL__HAND_AHEAD);
+        fd->hand_pos[0] = fd->cam.eye[0] - HOL__HAND_AHEAD * sin(y) - HOL__HAND_LEFT * cos(y);
+        fd->hand_pos[1] = fd->cam.eye[1] - HOL__HAND_BELOW;
+        fd->hand_pos[2] = fd->cam.eye[2] - HOL__HAND_AHEAD * cos(y) + HOL__HAND_LEFT * sin(y);
         double sy = sin(y / 2), cy = cos(y / 2), sa = sin(a / 2), ca = cos(a / 2);
         fd->hand_orient[0] = cy * sa; /* q_yaw * q_tilt */
         fd->hand_orient[1] = sy * ca;
         fd->hand_orient[2] = -sy * sa;
         fd->hand_orient[3] = cy * ca;
-        fd->hand_size = 0.25;
+        fd->hand_size = HOL__HAND_SIZE;
         fd->flags |= HOL_RENDER_MINIMAP_HAND;
     }
     int n = v->map.nobjectives < HOL_RENDER_MAX_OBJECTIVES ? v->map.nobjectives

@@ -11,10 +11,12 @@
  *   or right eye (hol_app_view.eye_user and .eye), looking along the head.
  * - The returned description points into v (the HUD lines): keep v alive
  *   and unchanged until the frame is drawn.
- * - Minimap in the hand: on the desktop there are no hands, so the map is
- *   held 40 cm ahead of and 35 cm below the eye, tilted back 40 degrees to
- *   face it. A platform with tracked hands overwrites hand_pos and
- *   hand_orient with the hand's pose.
+ * - Minimap in the hand: on the desktop there are no hands, so the map (20
+ *   cm) is held low in a left hand: 28 cm ahead of the eye, 52 cm below it
+ *   and 12 cm to its left, tilted back to face it; at the usual pitch (30
+ *   degrees down) it sits in the lower part of the view, out of its middle,
+ *   where a glance down finds it. A platform with tracked hands overwrites
+ *   hand_pos and hand_orient with the hand's pose.
  */
 #ifndef HOL_APP_FRAME_H
 #define HOL_APP_FRAME_H

@@ -162,6 +162,29 @@ static void hol__map(const double m[9], const double q[3], float cx, float cy, f
     out[1] = cy - (float)(d[1] * rad);
 }
 
+/* The HUD minimap: in the bottom right corner, a margin of 3 % of the
+ * short side from the edges; its radius 16 % of the short side, less where
+ * the map with its rim arrows (1.1 radii) would reach into the middle 40 %
+ * of the view both ways (so that it never hides what lies ahead). */
+static void hol__hud_layout(int w, int h, float *rad, float *cx, float *cy)
+{
+    float sh = (float)(w < h ? w : h), lg = (float)(w < h ? h : w), m = 0.03f * sh;
+    float r = 0.16f * sh, cap = (0.3f * lg - m) / 2.2f - 1.0f;
+    *rad = r < cap ? r : cap;
+    *cx = (float)w - m - 1.1f * *rad;
+    *cy = (float)h - m - 1.1f * *rad;
+}
+
+void hol_hud_map_rect(int w, int h, float out[4])
+{
+    float rad, cx, cy;
+    hol__hud_layout(w, h, &rad, &cx, &cy);
+    out[0] = cx - 1.1f * rad;
+    out[1] = cy - 1.1f * rad;
+    out[2] = cx + 1.1f * rad;
+    out[3] = cy + 1.1f * rad;
+}
+
 static void hol__layout(const hol__px *p, float *rad, float *cx, float *cy)
 {
     int w = p->w, h = p->h;
@@ -171,9 +194,7 @@ static void hol__layout(const hol__px *p, float *rad, float *cx, float *cy)
         *cy = 0.5f * (float)h;
         return;
     }
-    *rad = 0.3f * (float)(w < h ? w : h);
-    *cx = (float)w - *rad - 0.04f * (float)w;
-    *cy = (float)h - *rad - 0.04f * (float)h;
+    hol__hud_layout(w, h, rad, cx, cy);
 }
 
 static void hol__minimap(hol__px *p, const hol_frame_desc *f)
@@ -257,6 +278,23 @@ static void hol__minimap(hol__px *p, const hol_frame_desc *f)
         hol__segment(p, prev[0], prev[1], c[0], c[1], rad * 0.035f + 1, pathc);
         prev[0] = c[0];
         prev[1] = c[1];
+    }
+    /* marks: cyan rings round the tile centres (on the map only) */
+    static const uint8_t markc[3] = {60, 230, 255};
+    for (int k = 0; k < f->nmarks && k < HOL_RENDER_MAX_MARKS; k++) {
+        double m[9], d[2];
+        if (hol_tile_dist(f->user.tile, f->marks[k]) > HOL_HUD_MAP_RADIUS ||
+            hol_hyper_frame(f->user.tile, f->user.orient, f->marks[k], m))
+            continue;
+        double pc[3] = {m[2], m[5], m[8]};
+        hol_hyper_to_disk(pc, d);
+        float c[2] = {cx + (float)(d[0] * rad * 0.985), cy - (float)(d[1] * rad * 0.985)};
+        float rr = rad * 0.11f + 2, th = rad * 0.03f + 1;
+        for (int i = 0; i < 16; i++) {
+            double a0 = 2 * HOL__PI * i / 16, a1 = 2 * HOL__PI * (i + 1) / 16;
+            hol__segment(p, c[0] + rr * (float)cos(a0), c[1] + rr * (float)sin(a0),
+                         c[0] + rr * (float)cos(a1), c[1] + rr * (float)sin(a1), th, markc);
+        }
     }
     /* objectives: diamonds on the map, arrows on the rim when off it */
     static const uint8_t objc[3] = {255, 220, 40};
@@ -358,36 +396,60 @@ void hol_hud_build_live(hol_mesh *out, const hol_frame_desc *f, int w, int h)
     hol_hud_build_text(out, f, w, h);
 }
 
-void hol_hud_build_text(hol_mesh *out, const hol_frame_desc *f, int w, int h)
+/* The lines to draw: the app's, or composed from the frame's fields. */
+static int hol__text_lines(const hol_frame_desc *f, char lines[][96])
 {
-    hol__px p = {out, w, h, 0};
-    float sc = (float)(h >= 160 ? h / 160 : 1);
-    char lines[HOL_RENDER_HUD_LINES][96];
-    char addr[HOL_TILE_ADDR_MAX];
     int nl = 0;
     if (f->nhud_lines > 0) {
         for (int i = 0; i < f->nhud_lines && i < HOL_RENDER_HUD_LINES; i++)
-            snprintf(lines[nl++], sizeof lines[0], "%.60s", f->hud_lines[i] ? f->hud_lines[i] : "");
+            snprintf(lines[nl++], 96, "%.60s", f->hud_lines[i] ? f->hud_lines[i] : "");
     } else {
+        char addr[HOL_TILE_ADDR_MAX];
         if (f->objective_text)
-            snprintf(lines[nl++], sizeof lines[0], "%.40s", f->objective_text);
+            snprintf(lines[nl++], 96, "%.40s", f->objective_text);
         hol_tile_print(f->user.tile, addr);
-        snprintf(lines[nl++], sizeof lines[0], "STEPS %d", f->steps_taken);
-        snprintf(lines[nl++], sizeof lines[0], "TILE %.40s", addr);
+        snprintf(lines[nl++], 96, "STEPS %d", f->steps_taken);
+        snprintf(lines[nl++], 96, "TILE %.40s", addr);
         long t = (long)(f->time_s > 0 ? f->time_s : 0);
-        snprintf(lines[nl++], sizeof lines[0], "TIME %ld:%02ld", t / 60, t % 60);
+        snprintf(lines[nl++], 96, "TIME %ld:%02ld", t / 60 % 100000, t % 60);
     }
+    if (f->prompt && f->prompt[0])
+        snprintf(lines[nl++], 96, "%.60s", f->prompt);
     for (int i = 0; i < nl; i++) /* prose in capitals: f, l, r are for addresses */
         if (strncmp(lines[i], "TILE ", 5) != 0)
             for (char *c = lines[i]; *c; c++)
                 if (*c >= 'a' && *c <= 'z')
                     *c = (char)(*c - 32);
+    return nl;
+}
+
+/* The text: a panel at the top left (over the sky: the view's top is sky
+ * at the usual pitch), the lines in white and the prompt last in yellow;
+ * a glyph is 6 x 9 font pixels of h / 240 screen pixels (at least 1). The
+ * overlay is at the top right, a size smaller. */
+void hol_hud_build_text(hol_mesh *out, const hol_frame_desc *f, int w, int h)
+{
+    hol__px p = {out, w, h, 0};
+    float sc = (float)(h >= 480 ? h / 240 : 1);
+    char lines[HOL_RENDER_HUD_LINES + 1][96];
+    int nl = hol__text_lines(f, lines);
+    int prompt = f->prompt && f->prompt[0];
     size_t longest = 0;
     for (int i = 0; i < nl; i++)
         longest = strlen(lines[i]) > longest ? strlen(lines[i]) : longest;
-    static const uint8_t panel[3] = {24, 28, 34}, text[3] = {240, 240, 230};
+    static const uint8_t panel[3] = {24, 28, 34}, text[3] = {240, 240, 230},
+                         yellow[3] = {255, 215, 60};
     float m = 3 * sc;
-    hol__rect(&p, m, m, m + (6 * (float)longest + 3) * sc, m + (9 * nl + 2) * sc, panel);
+    if (nl > 0)
+        hol__rect(&p, m, m, m + (6 * (float)longest + 3) * sc, m + (9 * nl + 2) * sc, panel);
     for (int i = 0; i < nl; i++)
-        hol_hud_text(out, lines[i], m + 2 * sc, m + (2 + 9 * i) * sc, sc, text, w, h);
+        hol_hud_text(out, lines[i], m + 2 * sc, m + (2 + 9 * i) * sc, sc,
+                     prompt && i == nl - 1 ? yellow : text, w, h);
+    if (f->overlay && f->overlay[0]) {
+        char o[64];
+        snprintf(o, sizeof o, "%.60s", f->overlay);
+        float so = sc > 1 ? sc - 1 : 1, ow = (6 * (float)strlen(o) + 3) * so;
+        hol__rect(&p, (float)w - m - ow, m, (float)w - m, m + 11 * so, panel);
+        hol_hud_text(out, o, (float)w - m - ow + 2 * so, m + 2 * so, so, text, w, h);
+    }
 }

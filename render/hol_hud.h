@@ -11,7 +11,11 @@
  *   the shortest-path overlay (tile centres of the given room walk), the
  *   objectives (yellow diamonds), the user's arrow (view yaw), and for each
  *   objective off the map an arrow on the rim pointing towards it.
- * - Text: objective, steps, current address, time, top left.
+ * - Placement on the screen: the minimap in the bottom right corner,
+ *   scaled to the window and kept out of the middle 40 % of the view both
+ *   ways (hol_hud_map_rect); the text top left (the app's lines, the
+ *   prompt last in yellow), an overlay (frame time) top right. Tiles in
+ *   f->marks get cyan rings on the map.
  * - In the hand: the same minimap laid out to fill the square [-1, 1]^2
  *   (x right, y up, z = 0), for the renderer to place on a quad at the
  *   hand's pose; the text stays on the screen.
@@ -37,6 +41,10 @@ void hol_hud_build_text(hol_mesh *out, const hol_frame_desc *f, int w, int h);
  * (live), in the square [-1, 1]^2. */
 void hol_hud_build_hand_map(hol_mesh *out, const hol_frame_desc *f);
 void hol_hud_build_hand_arrow(hol_mesh *out, const hol_frame_desc *f);
+
+/* The HUD minimap's square, rim arrows included, on a w x h screen:
+ * out = x0, y0, x1, y1 in pixels (y down). */
+void hol_hud_map_rect(int w, int h, float out[4]);
 
 /* Text at pixel (x, y) (top-left of the first glyph), each font pixel a
  * scale x scale square; returns the advance in pixels. Unknown characters

@@ -579,6 +579,10 @@ static hol_err hol__build(hol_render *r, const hol_frame_desc *f)
         if (f->path && f->npath > 0)
             key = hol__fnv(key, f->path, (size_t)f->npath);
         key = hol__fnv(key, &hand, sizeof hand);
+        int nm = f->nmarks < 0 ? 0 : f->nmarks > HOL_RENDER_MAX_MARKS ? HOL_RENDER_MAX_MARKS
+                                                                      : f->nmarks;
+        key = hol__fnv(key, &nm, sizeof nm);
+        key = hol__fnv(key, f->marks, (size_t)nm * sizeof f->marks[0]);
         if (!hand) {
             key = hol__fnv(key, &f->cam.width, sizeof f->cam.width);
             key = hol__fnv(key, &f->cam.height, sizeof f->cam.height);

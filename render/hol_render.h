@@ -75,6 +75,7 @@ enum {
 
 #define HOL_RENDER_MAX_OBJECTIVES 8
 #define HOL_RENDER_HUD_LINES 6
+#define HOL_RENDER_MAX_MARKS 2
 
 /* Game object kinds (hol_frame_desc.object_kinds). */
 enum {
@@ -108,6 +109,16 @@ typedef struct hol_frame_desc {
      * objective/steps/tile/time lines composed from the fields above. */
     const char *hud_lines[HOL_RENDER_HUD_LINES];
     int nhud_lines;
+    /* The prompt (what the buttons do now, hol_app_hud.hint): drawn under
+     * the text in yellow; NULL or "": none. */
+    const char *prompt;
+    /* A platform's overlay (e.g. "FPS 20.1 CPU 31.5 MS"): small, at the top
+     * right; NULL or "": none. */
+    const char *overlay;
+    /* Tiles marked on the minimap (cyan rings), e.g. a tutorial lesson's
+     * two tiles of one cell. */
+    int nmarks;
+    hol_tile marks[HOL_RENDER_MAX_MARKS];
     /* The minimap in the hand (HOL_RENDER_MINIMAP_HAND): a square of side
      * hand_size metres (0: 0.25) centred at hand_pos (room coordinates),
      * turned by the unit quaternion hand_orient (x, y, z, w; all zero:

@@ -17,6 +17,7 @@
 
 #include "../core/hol_app.h"
 #include "../core/hol_nav.h"
+#include "../core/hol_prompt.h"
 #include "../core/hol_room.h"
 #include "../core/hol_tile.h"
 #include "../core/hol_world.h"
@@ -612,6 +613,330 @@ static void test_snap_turn(void **state)
     hol_app_destroy(app);
 }
 
+/* ---- the tutorial teaches ------------------------------------------------ */
+
+static hol_app_level tutorial_level(unsigned stages)
+{
+    hol_app_level L;
+    memset(&L, 0, sizeof L);
+    L.mode = HOL_APP_TUTORIAL;
+    L.seed = 8;
+    L.cues = HOL_CUE_ALL;
+    L.stages = stages;
+    return L;
+}
+
+/* Every lesson done says so at once (the feedback line first on the HUD),
+ * for 6 s of level time; lesson 2 names holonomy as it happens and marks
+ * the cell's two tiles on the minimap. */
+static void test_tutorial_feedback(void **state)
+{
+    (void)state;
+    hol_app *app = make_app();
+    hol_app_level L = tutorial_level(0);
+    assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    const hol_app_view *v = hol_app_get_view(app);
+    double t = 0;
+    assert_string_equal(v->hud.feedback, "");
+    uint8_t north[1] = {HOL_DIR_N};
+    assert_int_equal(play_walk(app, north, 1, &t), -1);
+    assert_int_equal(v->hud.stage, 1);
+    assert_string_equal(v->hud.feedback, "Well done: one step, one new tile");
+    assert_string_equal(v->hud.lines[0], v->hud.feedback);
+    assert_true(strstr(v->hud.lines[1], "2/4") != NULL);
+    assert_int_equal(v->map.nmarks, 0);
+    /* round the tree: the fourth step names holonomy and marks both tiles */
+    hol_room before = v->user;
+    uint8_t loop[4] = {HOL_DIR_E, HOL_DIR_S, HOL_DIR_W, HOL_DIR_N};
+    assert_int_equal(play_walk(app, loop, 3, &t), -1);
+    assert_int_equal(play_walk(app, loop + 3, 1, &t), -1);
+    assert_int_equal(v->hud.stage, 2);
+    assert_string_equal(v->hud.feedback, "Same cell, another tile: that is holonomy");
+    assert_string_equal(v->hud.lines[0], "Same cell, another tile: that is holonomy");
+    assert_int_equal(v->map.nmarks, 2);
+    assert_true(hol_tile_eq(v->map.marks[0], before.tile));
+    assert_true(hol_tile_eq(v->map.marks[1], v->user.tile));
+    assert_false(hol_tile_eq(v->map.marks[0], v->map.marks[1]));
+    assert_int_equal(v->user.col, before.col);
+    assert_int_equal(v->user.row, before.row);
+    /* it stays 6 s of level time (paused time does not count) */
+    hol_input in = tracked_at(t + 5.9, v->user.col, v->user.row);
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    assert_int_equal(v->map.nmarks, 2);
+    in = tracked_at(t + 6.1, v->user.col, v->user.row);
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    assert_string_equal(v->hud.feedback, "");
+    assert_int_equal(v->map.nmarks, 0);
+    t += 6.1;
+    /* lessons 3 and 4: the navigator's walks; each says it is done */
+    for (int k = 2; k < 4; k++) {
+        uint8_t walk[HOL_NAV_WALK_MAX];
+        hol_nav_result res;
+        hol_room here = v->user;
+        assert_int_equal(hol_nav_find(g_nav, &here, v->map.objectives[0], 0, walk, sizeof walk,
+                                      &res), HOL_OK);
+        play_walk(app, walk, res.len, &t);
+        if (k == 2)
+            assert_string_equal(v->hud.feedback, "Found it: the map knows the way");
+    }
+    assert_int_equal(v->state, HOL_APP_DONE);
+    assert_true(strstr(v->hud.status, "Tutorial done") != NULL);
+    hol_app_destroy(app);
+}
+
+/* The fewest steps that finish lesson 2 from r (taken steps so far), by
+ * brute force over every walk of up to 10 steps: back in (col, row) on a
+ * tile other than t0, at least 4 steps in all. */
+static int loop_brute(const hol_room *r, int taken, int col, int row, hol_tile t0)
+{
+    for (int n = 0; n <= 10; n++) {
+        if (taken + n < 4)
+            continue;
+        long total = 1L << (2 * n);
+        for (long w = 0; w < total; w++) {
+            hol_room s = *r;
+            int ok = 1;
+            for (int i = 0; i < n && ok; i++)
+                ok = hol_room_step(&s, (uint8_t)(w >> (2 * i) & 3)) == HOL_OK;
+            if (ok && s.col == col && s.row == row && !hol_tile_eq(s.tile, t0))
+                return n;
+        }
+    }
+    return -1;
+}
+
+/* Lesson 2's optimum and steps left are exact (against brute force) at its
+ * start from every cell and along random walks; straying shows the path
+ * (the walk shown finishes the lesson in the steps left). */
+static void test_tutorial_loop_optimum(void **state)
+{
+    (void)state;
+    uint64_t s = 17;
+    int strayed = 0;
+    for (int start = 0; start < 9; start++) {
+        hol_app *app = make_app();
+        hol_app_level L = tutorial_level(1u << 1);
+        /* begin the lesson in cell (start % 3, start / 3) */
+        int c = 1, r = 1, n = 0;
+        while (c < start % 3)
+            L.start[n++] = HOL_DIR_E, c++;
+        while (c > start % 3)
+            L.start[n++] = HOL_DIR_W, c--;
+        while (r < start / 3)
+            L.start[n++] = HOL_DIR_S, r++;
+        while (r > start / 3)
+            L.start[n++] = HOL_DIR_N, r--;
+        L.nstart = n;
+        assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+        const hol_app_view *v = hol_app_get_view(app);
+        hol_room r0 = v->user;
+        assert_int_equal(v->hud.stage, 1);
+        assert_int_equal(v->hud.stage_optimum, loop_brute(&r0, 0, r0.col, r0.row, r0.tile));
+        assert_int_equal(v->hud.stage_optimum, 4);
+        double t = 0;
+        for (int k = 0; k < 6 && v->hud.stage == 1; k++) {
+            uint8_t d;
+            hol_room probe;
+            do {
+                s = s * 6364136223846793005u + 1442695040888963407u;
+                d = (uint8_t)(s >> 40 & 3);
+                probe = v->user;
+            } while (hol_room_step(&probe, d));
+            play_walk(app, &d, 1, &t);
+            if (v->hud.stage != 1)
+                break;
+            int want = loop_brute(&v->user, v->hud.stage_steps, r0.col, r0.row, r0.tile);
+            assert_int_equal(v->hud.remaining, want);
+            if (v->map.npath) {
+                strayed++;
+                assert_true(v->hud.stage_steps + v->hud.remaining > 4 + 3);
+                /* the path shown does finish the lesson */
+                hol_room p = v->user;
+                for (int i = 0; i < v->map.npath; i++)
+                    assert_int_equal(hol_room_step(&p, v->map.path[i]), HOL_OK);
+                assert_int_equal(v->map.npath, v->hud.remaining);
+                assert_true(p.col == r0.col && p.row == r0.row && !hol_tile_eq(p.tile, r0.tile));
+            } else {
+                assert_true(v->hud.stage_steps + v->hud.remaining <= 4 + 3);
+            }
+        }
+        hol_app_destroy(app);
+    }
+    assert_true(strayed > 0);
+}
+
+/* The path cue in a lesson with a target: walking away from the marker
+ * shows the path once the lesson's steps and the steps left exceed its
+ * optimum by more than 3. */
+static void test_tutorial_strayed(void **state)
+{
+    (void)state;
+    hol_app *app = make_app();
+    hol_app_level L = tutorial_level(1u << 2); /* the marker two tiles ahead */
+    assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    const hol_app_view *v = hol_app_get_view(app);
+    uint8_t walk[HOL_NAV_WALK_MAX];
+    hol_nav_result res;
+    assert_int_equal(hol_nav_find(g_nav, &v->user, v->map.objectives[0], 0, walk, sizeof walk,
+                                  &res), HOL_OK);
+    assert_true(res.exact);
+    assert_int_equal(v->hud.stage_optimum, res.len); /* 5: the hedge is 1 cell ahead */
+    assert_int_equal(v->hud.remaining, res.len);
+    assert_int_equal(v->hud.optimum, -1); /* the level is not scored */
+    int opt = res.len;
+    double t = 0;
+    uint8_t away[8] = {HOL_DIR_S, HOL_DIR_E, HOL_DIR_S, HOL_DIR_W, HOL_DIR_W, HOL_DIR_S,
+                       HOL_DIR_E, HOL_DIR_N};
+    int shown = -1;
+    for (int i = 0; i < 8 && shown < 0; i++) {
+        play_walk(app, away + i, 1, &t);
+        assert_int_equal(v->hud.stage, 2);
+        if (v->map.npath)
+            shown = i + 1;
+        assert_int_equal(v->map.npath != 0, v->hud.stage_steps + v->hud.remaining > opt + 3);
+    }
+    assert_true(shown > 0);
+    hol_app_destroy(app);
+}
+
+/* ---- prompts name the device's buttons; menu actions; debug text ------- */
+
+/* The end screen's and the menu's prompts, for a device. */
+static void prompts_for(uint32_t device, char *end, char *menu)
+{
+    hol_app *app = make_app();
+    hol_app_level L = flag_level("N");
+    assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    const hol_app_view *v = hol_app_get_view(app);
+    hol_input in = tracked_at(0, 1, 1);
+    in.device = device;
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    in = tracked_at(0.25, 1, 0);
+    in.device = device;
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    assert_int_equal(v->state, HOL_APP_DONE);
+    assert_int_equal(v->hud.device, device);
+    strcpy(end, v->hud.hint);
+    in = tracked_at(0.5, 1, 0);
+    in.device = device;
+    in.pressed = HOL_BTN_MENU;
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    strcpy(menu, v->hud.hint);
+    hol_app_destroy(app);
+}
+
+static void test_prompts_name_buttons(void **state)
+{
+    (void)state;
+    static const struct {
+        uint32_t device;
+        const char *end, *menu;
+    } want[] = {
+        {HOL_DEVICE_KEYBOARD, "ENTER: next level, R: again", "P: resume, ENTER: restart, ESC: quit"},
+        {HOL_DEVICE_GAMEPAD, "A: next level", "START: resume, A: restart, B: quit"},
+        {HOL_DEVICE_XR_TOUCH, "A: next level", "MENU: resume, A: restart"},
+        {HOL_DEVICE_XR_VIVE, "TRIGGER: next level", "MENU: resume, TRIGGER: restart"},
+        {HOL_DEVICE_XR_INDEX, "A: next level", "B: resume, A: restart"},
+        {HOL_DEVICE_NONE, "CONFIRM: next level, RESTART: again",
+         "MENU: resume, CONFIRM: restart, QUIT: quit"},
+    };
+    for (size_t i = 0; i < sizeof want / sizeof want[0]; i++) {
+        char end[HOL_APP_TEXT_MAX], menu[HOL_APP_TEXT_MAX];
+        prompts_for(want[i].device, end, menu);
+        assert_string_equal(end, want[i].end);
+        assert_string_equal(menu, want[i].menu);
+    }
+    /* every device names confirm and the menu; the keyboard every button the
+     * desktop sends */
+    for (uint32_t d = 0; d < HOL_DEVICE_COUNT; d++) {
+        assert_non_null(hol_prompt_button(d, HOL_BTN_CONFIRM));
+        assert_non_null(hol_prompt_button(d, HOL_BTN_MENU));
+    }
+    static const uint32_t kb[] = {HOL_BTN_CONFIRM, HOL_BTN_MENU, HOL_BTN_MINIMAP,
+                                  HOL_BTN_RESTART, HOL_BTN_QUIT, HOL_BTN_DEBUG};
+    for (size_t i = 0; i < sizeof kb / sizeof kb[0]; i++)
+        assert_non_null(hol_prompt_button(HOL_DEVICE_KEYBOARD, kb[i]));
+    assert_null(hol_prompt_button(HOL_DEVICE_KEYBOARD, HOL_BTN_CONFIRM | HOL_BTN_MENU));
+    assert_null(hol_prompt_button(HOL_DEVICE_COUNT, HOL_BTN_CONFIRM));
+}
+
+/* In the menu, confirm restarts the level (a pad or a headset has no
+ * restart button of its own) and back quits. */
+static void test_menu_actions(void **state)
+{
+    (void)state;
+    hol_app *app = make_app();
+    hol_app_level L = flag_level("Nff");
+    assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    const hol_app_view *v = hol_app_get_view(app);
+    hol_input in = pancake(0, 1, 0);
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    in = pancake(0.5, 1, 0);
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    assert_true(v->head[2] < 1.0);
+    in = pancake(0.6, 0, 0);
+    in.pressed = HOL_BTN_CONFIRM; /* not in the menu: nothing */
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    assert_int_equal(hol_app_get_events(app)->level_ended, HOL_APP_END_NONE);
+    in = pancake(0.7, 0, 0);
+    in.pressed = HOL_BTN_MENU;
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    assert_true(v->paused);
+    in = pancake(0.8, 0, 0);
+    in.pressed = HOL_BTN_CONFIRM;
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    assert_int_equal(hol_app_get_events(app)->level_ended, HOL_APP_END_RESTART);
+    assert_false(v->paused);
+    assert_true(v->head[2] == 1.5);
+    in = pancake(0.9, 0, 0);
+    in.pressed = HOL_BTN_MENU;
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    in = pancake(1.0, 0, 0);
+    in.pressed = HOL_BTN_BACK;
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    assert_int_equal(v->state, HOL_APP_QUIT);
+    assert_int_equal(hol_app_get_events(app)->level_ended, HOL_APP_END_QUIT);
+    hol_app_destroy(app);
+}
+
+/* The HUD shows the objective and the steps; the tile address and the cell
+ * only with the debug text on (HOL_BTN_DEBUG toggles it). */
+static void test_debug_text(void **state)
+{
+    (void)state;
+    hol_app *app = make_app();
+    hol_app_level L = flag_level("Nff");
+    assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    const hol_app_view *v = hol_app_get_view(app);
+    hol_input in = pancake(0, 0, 0);
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    assert_int_equal(v->hud.nlines, 2);
+    assert_string_equal(v->hud.lines[0], "Find the flag");
+    assert_string_equal(v->hud.lines[1], "STEPS 0");
+    in = pancake(0.1, 0, 0);
+    in.pressed = HOL_BTN_DEBUG;
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    assert_true(v->hud.debug);
+    assert_int_equal(v->hud.nlines, 5);
+    assert_string_equal(v->hud.lines[2], "TILE O");
+    assert_string_equal(v->hud.lines[3], "CELL 1,1 NORTH 0");
+    assert_string_equal(v->hud.lines[4], "TIME 0:00");
+    in = pancake(0.2, 0, 0);
+    in.pressed = HOL_BTN_DEBUG;
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    assert_int_equal(v->hud.nlines, 2);
+    /* a time limit shows the time against it */
+    L.time_limit_s = 90;
+    assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    in = pancake(0.3, 0, 0);
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    in = pancake(65.5, 0, 0);
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    assert_int_equal(v->hud.nlines, 3);
+    assert_string_equal(v->hud.lines[2], "TIME 1:05 OF 1:30");
+    hol_app_destroy(app);
+}
+
 /* Everything a frame reports, as text (doubles to the bit, %a): events and
  * the view's state, head, look and HUD. Padding bytes are left out. */
 static size_t frame_text(const hol_app *app, char *out, size_t cap)
@@ -814,6 +1139,12 @@ int main(void)
         cmocka_unit_test(test_time_limit),
         cmocka_unit_test(test_safety_hud),
         cmocka_unit_test(test_tutorial_stages),
+        cmocka_unit_test(test_tutorial_feedback),
+        cmocka_unit_test(test_tutorial_loop_optimum),
+        cmocka_unit_test(test_tutorial_strayed),
+        cmocka_unit_test(test_prompts_name_buttons),
+        cmocka_unit_test(test_menu_actions),
+        cmocka_unit_test(test_debug_text),
         cmocka_unit_test(test_pause_quit),
         cmocka_unit_test(test_tap_between_frames),
         cmocka_unit_test(test_motion_frame_rate),

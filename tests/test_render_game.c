@@ -10,6 +10,7 @@
  * the HUD lines. Compared as in test_render_golden.c
  * (tests/golden_compare.h); HOL_GOLDEN_UPDATE=1 writes them for review.
  */
+#include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -24,6 +25,7 @@
 #include "../core/hol_tile.h"
 #include "../platform/osmesa/hol_osmesa.h"
 #include "../render/hol_app_frame.h"
+#include "../render/hol_hud.h"
 #include "../render/hol_render.h"
 #include "golden_compare.h"
 
@@ -87,6 +89,7 @@ static void step(int frames, float right, float fwd, float turn_left, float look
         memset(&in, 0, sizeof in);
         in.time_s = now;
         in.flags = HOL_INPUT_FOCUSED;
+        in.device = HOL_DEVICE_KEYBOARD; /* the prompts name keys */
         in.move[0] = right;
         in.move[1] = fwd;
         in.turn[0] = turn_left;
@@ -230,6 +233,112 @@ static void test_tutorial_prompt(void **state)
     assert_int_equal(shot("game_tutorial_prompt", 1, img), 0);
 }
 
+/* The HUD minimap sits in the bottom right corner, scaled to the window,
+ * and never reaches into the middle 40 % of the view both ways, at any
+ * window shape; at 320 x 240 no pixel the HUD changes lies in that middle
+ * box (the map, its rim arrows, the text). */
+static void test_map_corner(void **state)
+{
+    (void)state;
+    static const int size[][2] = {{320, 240}, {640, 480}, {960, 720}, {1920, 1080}, {720, 720},
+                                  {1280, 400}, {400, 900}, {64, 48}, {16, 16}, {4096, 300}};
+    for (size_t i = 0; i < sizeof size / sizeof size[0]; i++) {
+        int w = size[i][0], h = size[i][1];
+        float r[4];
+        hol_hud_map_rect(w, h, r);
+        float shortest = (float)(w < h ? w : h);
+        if (!(r[0] >= 0 && r[1] >= 0 && r[2] <= w && r[3] <= h))
+            fail_msg("%dx%d: the map %.0f,%.0f..%.0f,%.0f leaves the window", w, h, r[0], r[1],
+                     r[2], r[3]);
+        int clear_x = r[0] >= 0.7f * w, clear_y = r[1] >= 0.7f * h;
+        if (!clear_x && !clear_y)
+            fail_msg("%dx%d: the map %.0f,%.0f..%.0f,%.0f reaches the middle of the view", w, h,
+                     r[0], r[1], r[2], r[3]);
+        /* in the corner, and not too small to read: a side of 18 % of the
+         * short side at least */
+        assert_true(w - r[2] < 0.05f * shortest + 1 && h - r[3] < 0.05f * shortest + 1);
+        assert_true(r[2] - r[0] >= 0.18f * shortest || shortest < 48);
+    }
+    /* the pixels: every pixel the HUD changes lies outside the middle */
+    static uint8_t with[W * H * 4], without[W * H * 4];
+    hol_app_level L = level(HOL_APP_FLAG);
+    L.flag = tile("Wrf");
+    start(&L);
+    step(1, 0, 0, 0, 0);
+    step(60, 0, 0, 0.5f, 0);
+    hol_frame_desc fd;
+    hol_app_frame_desc(hol_app_get_view(app), -1, W, H, 0, &fd);
+    assert_int_equal(hol_render_frame(rnd, &fd, NULL), HOL_OK);
+    hol_render_read_rgba(rnd, W, H, with);
+    fd.flags |= HOL_RENDER_NO_HUD;
+    assert_int_equal(hol_render_frame(rnd, &fd, NULL), HOL_OK);
+    hol_render_read_rgba(rnd, W, H, without);
+    int changed = 0, middle = 0;
+    for (int y = 0; y < H; y++)
+        for (int x = 0; x < W; x++) {
+            int d = memcmp(with + 4 * (y * W + x), without + 4 * (y * W + x), 3) != 0;
+            changed += d;
+            middle += d && x >= 0.3 * W && x < 0.7 * W && y >= 0.3 * H && y < 0.7 * H;
+        }
+    printf("    the HUD changes %d pixels, %d in the middle\n", changed, middle);
+    assert_true(changed > 2000);
+    assert_int_equal(middle, 0);
+}
+
+/* The desktop's hand minimap sits low: at the usual pitch (30 degrees
+ * down) its quad projects into the lower part of the view, out of the
+ * middle box, and mostly on screen. */
+static void test_hand_map_low(void **state)
+{
+    (void)state;
+    hol_app_level L = level(HOL_APP_FLAG);
+    L.flag = tile("Wrf");
+    L.minimap = HOL_MINIMAP_HAND;
+    start(&L);
+    step(1, 0, 0, 0, 0);
+    step(30, 0, 0, 1, 0); /* any yaw: the hand turns with the look */
+    static const int size[][2] = {{320, 240}, {960, 720}, {1920, 1080}, {720, 720}};
+    for (size_t i = 0; i < sizeof size / sizeof size[0]; i++) {
+        int w = size[i][0], h = size[i][1];
+        hol_frame_desc fd;
+        hol_app_frame_desc(hol_app_get_view(app), -1, w, h, 0, &fd);
+        assert_true(fd.flags & HOL_RENDER_MINIMAP_HAND);
+        assert_true(fabs(fd.cam.pitch_deg + 30) < 1e-9);
+        float view[16], proj[16];
+        hol_camera_matrices(&fd.cam, view, proj);
+        /* the quad's corners: hand_pos + R (±s/2, ±s/2, 0) */
+        double x = fd.hand_orient[0], y = fd.hand_orient[1], z = fd.hand_orient[2],
+               q = fd.hand_orient[3], hs = fd.hand_size / 2;
+        double rx[3] = {1 - 2 * (y * y + z * z), 2 * (x * y + z * q), 2 * (x * z - y * q)};
+        double ry[3] = {2 * (x * y - z * q), 1 - 2 * (x * x + z * z), 2 * (y * z + x * q)};
+        double top = 1e9, bottom = -1e9, cy = 0;
+        for (int c = 0; c < 4; c++) {
+            double u = (c & 1) ? hs : -hs, v = (c & 2) ? hs : -hs, pw[4] = {0, 0, 0, 1}, pe[4],
+                   pc[4];
+            for (int k = 0; k < 3; k++)
+                pw[k] = fd.hand_pos[k] + u * rx[k] + v * ry[k];
+            for (int r = 0; r < 4; r++) {
+                pe[r] = 0;
+                for (int k = 0; k < 4; k++)
+                    pe[r] += view[4 * k + r] * pw[k];
+            }
+            for (int r = 0; r < 4; r++) {
+                pc[r] = 0;
+                for (int k = 0; k < 4; k++)
+                    pc[r] += proj[4 * k + r] * pe[k];
+            }
+            assert_true(pc[3] > 0); /* in front of the eye */
+            double py = (1 - pc[1] / pc[3]) / 2 * h;
+            top = py < top ? py : top;
+            bottom = py > bottom ? py : bottom;
+            cy += py / 4;
+        }
+        printf("    %dx%d: the hand map spans y %.0f..%.0f\n", w, h, top, bottom);
+        assert_true(top > 0.7 * h);       /* below the middle */
+        assert_true(cy < 0.95 * h);       /* and its middle on screen */
+    }
+}
+
 int main(int argc, char **argv)
 {
     (void)argc;
@@ -240,6 +349,8 @@ int main(int argc, char **argv)
         cmocka_unit_test(test_chest_open),
         cmocka_unit_test(test_level_end),
         cmocka_unit_test(test_tutorial_prompt),
+        cmocka_unit_test(test_map_corner),
+        cmocka_unit_test(test_hand_map_low),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }

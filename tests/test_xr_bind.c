@@ -8,12 +8,14 @@
 #include <stdarg.h>
 #include <stddef.h>
 #include <stdint.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include <cmocka.h>
 
 #include "../core/hol_input.h"
+#include "../core/hol_prompt.h"
 #include "../platform/openxr/hol_xr_bind.h"
 
 typedef struct spec_profile {
@@ -139,9 +141,72 @@ static void test_buttons(void **state)
     }
 }
 
+/* The prompts' words (core/hol_prompt.h) follow each profile's bindings:
+ * the bound component in capitals ("a/click": "A", "trackpad/click":
+ * "TRACKPAD"), "LEFT " before it on the left hand when the right hand has
+ * a component of that name too; an action the profile does not bind has
+ * no word. */
+static void test_prompt_words(void **state)
+{
+    (void)state;
+    static const struct {
+        const char *profile;
+        uint32_t device;
+    } dev[] = {
+        {"/interaction_profiles/khr/simple_controller", HOL_DEVICE_XR_SIMPLE},
+        {"/interaction_profiles/oculus/touch_controller", HOL_DEVICE_XR_TOUCH},
+        {"/interaction_profiles/htc/vive_controller", HOL_DEVICE_XR_VIVE},
+        {"/interaction_profiles/valve/index_controller", HOL_DEVICE_XR_INDEX},
+        {"/interaction_profiles/microsoft/motion_controller", HOL_DEVICE_XR_WMR},
+    };
+    const hol_xr_profile *p = hol_xr_profiles();
+    for (int k = 0; k < HOL_XR_NPROFILES; k++) {
+        uint32_t device = HOL_DEVICE_NONE;
+        const spec_profile *sp = NULL;
+        for (size_t j = 0; j < sizeof dev / sizeof dev[0]; j++)
+            if (!strcmp(dev[j].profile, p[k].profile))
+                device = dev[j].device;
+        for (size_t j = 0; j < NSPEC; j++)
+            if (!strcmp(spec[j].name, p[k].profile))
+                sp = &spec[j];
+        if (device == HOL_DEVICE_NONE || !sp)
+            fail_msg("profile %s has no HOL_DEVICE_* value", p[k].profile);
+        uint32_t bound = 0;
+        for (int a = 0; a < HOL_XR_ACT_COUNT; a++) {
+            int held[HOL_XR_ACT_COUNT] = {0};
+            held[a] = 1;
+            uint32_t btn = hol_xr_buttons(held);
+            bound |= btn;
+            const char *path = p[k].path[a];
+            int left = !strncmp(path, "/user/hand/left/input/", 22);
+            const char *comp = path + (left ? 22 : 23);
+            size_t n = strcspn(comp, "/");
+            int both = 0;
+            const char *const *other = left ? sp->right : sp->left;
+            for (int i = 0; i < 16 && other[i]; i++)
+                both |= !strncmp(other[i], comp, n) && other[i][n] == '/';
+            char want[64];
+            size_t w = 0;
+            if (left && both)
+                w = (size_t)snprintf(want, sizeof want, "LEFT ");
+            for (size_t i = 0; i < n && w + 1 < sizeof want; i++)
+                want[w++] = (char)(comp[i] >= 'a' && comp[i] <= 'z' ? comp[i] - 32 : comp[i]);
+            want[w] = 0;
+            const char *got = hol_prompt_button(device, btn);
+            if (!got || strcmp(got, want))
+                fail_msg("%s: the prompt for %s says '%s', the binding %s", p[k].profile,
+                         hol_xr_action_name(a), got ? got : "(none)", path);
+        }
+        for (uint32_t b = 1; b <= HOL_BTN_ALL; b <<= 1)
+            if (!(bound & b) && hol_prompt_button(device, b))
+                fail_msg("%s: a word for button %x that no action binds", p[k].profile, b);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_prompt_words),
         cmocka_unit_test(test_the_five_profiles),
         cmocka_unit_test(test_every_binding_is_in_its_profile),
         cmocka_unit_test(test_buttons),

@@ -28,7 +28,7 @@ static const char *const play_usage =
     "usage: holonomy play [LEVEL | --mode tutorial|flag|keys|explore] [--seed S]\n"
     "                     [--log DIR] [--record FILE] [--frames N] [--input FILE]\n"
     "                     [--size WxH] [--no-gamepad | --gamepad-replay FILE]\n"
-    "                     [--snap-turn DEG]\n"
+    "                     [--snap-turn DEG] [--stats]\n"
     "\n"
     "Play in a desktop window (EGL on X11; also under Xvfb). LEVEL is a level\n"
     "file (SPEC section 5); --mode plays a level of that mode made from the seed\n"
@@ -40,15 +40,16 @@ static const char *const play_usage =
     "  Left/Right       turn (--snap-turn: snap) PgUp/PgDn  look up/down\n"
     "  mouse drag       look (left button)     P            pause menu\n"
     "  R                restart the level      M            minimap: HUD, hand, off\n"
-    "  Enter/Space      next level (end screen)\n"
+    "  Enter/Space      next level (end screen); in the menu: restart\n"
+    "  F3               debug text (tile, cell)  F2        frame time (fps, CPU)\n"
     "  Esc/Q            quit\n"
     "\n"
     "A game controller (the first found; plugged in later, it joins) plays too:\n"
     "left stick walks, right stick turns and looks, south button confirms,\n"
-    "west/select/hat down cycle the minimap, start/mode open the menu (restart\n"
-    "and quit are keys only); its axes add to the keys' (clamped), its buttons\n"
-    "OR with them. Unplugged mid-game, the game pauses until it is back or a\n"
-    "key is used.\n"
+    "west/select/hat down cycle the minimap, start/mode open the menu (in it,\n"
+    "south restarts and east quits); its axes add to the keys' (clamped), its\n"
+    "buttons OR with them. Unplugged mid-game, the game pauses until it is back\n"
+    "or a key is used. Prompts name the buttons of what was used last.\n"
     "\n"
     "  --mode M        tutorial (four lessons), flag, keys or explore\n"
     "  --seed S        seed of --mode's level or the campaign's first (decimal or\n"
@@ -63,6 +64,9 @@ static const char *const play_usage =
     "  --snap-turn DEG  Left/Right turn by DEG degrees a press (a divisor of 360\n"
     "                  from 1 to 180; 90 keeps the room's axes on the screen's),\n"
     "                  to the next multiple of DEG, so the look stays aligned\n"
+    "  --stats         print the frame rate and the CPU ms a frame on stderr,\n"
+    "                  every second and at the end (CPU: the whole process,\n"
+    "                  the software rasterizer's threads included)\n"
     "  --no-gamepad    do not use game controllers\n"
     "  --gamepad-replay FILE\n"
     "                  the controller is a script of plugs, reports and unplugs\n"
@@ -176,6 +180,54 @@ static void keys_snap(const hol_x11_keys *k, int snap_deg, double yaw, hol_input
     in->snap_yaw_deg = (float)hol_motion_snap_yaw(yaw, snap_deg, turns);
 }
 
+/* Frame time: fps and process CPU ms a frame (the renderer's threads
+ * included) over the last second, for the F2 overlay and --stats. */
+typedef struct frame_stats {
+    double wall0, cpu0;      /* this second's start */
+    double last_cpu;         /* CPU at the frame's start */
+    long frames;             /* in this second */
+    double fps, cpu_ms;      /* of the last full second */
+    long total;              /* every frame */
+    double total_cpu_ms, max_cpu_ms, first_wall;
+    char text[48];           /* "FPS 19.8 CPU 41.2 MS" */
+} frame_stats;
+
+static double cpu_s(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
+}
+
+/* One frame done; every second the figures are renewed (and with print
+ * written to stderr). */
+static void frame_stats_add(frame_stats *fs, int print)
+{
+    double w = now_s(), c = cpu_s();
+    if (!fs->total) {
+        fs->wall0 = fs->first_wall = w;
+        fs->cpu0 = fs->last_cpu = c;
+        snprintf(fs->text, sizeof fs->text, "FPS - CPU - MS");
+    }
+    double ms = (c - fs->last_cpu) * 1e3;
+    fs->last_cpu = c;
+    fs->total++;
+    fs->frames++;
+    fs->total_cpu_ms += ms;
+    fs->max_cpu_ms = ms > fs->max_cpu_ms ? ms : fs->max_cpu_ms;
+    if (w - fs->wall0 < 1.0)
+        return;
+    fs->fps = fs->frames / (w - fs->wall0);
+    fs->cpu_ms = (c - fs->cpu0) * 1e3 / fs->frames;
+    snprintf(fs->text, sizeof fs->text, "FPS %.1f CPU %.1f MS", fs->fps, fs->cpu_ms);
+    if (print)
+        fprintf(stderr, "stats: %.0f s: %.1f fps, CPU %.1f ms a frame\n", w - fs->first_wall,
+                fs->fps, fs->cpu_ms);
+    fs->wall0 = w;
+    fs->cpu0 = c;
+    fs->frames = 0;
+}
+
 int cli_cmd_play(int argc, char **argv)
 {
     const char *cmd = "play";
@@ -187,7 +239,7 @@ int cli_cmd_play(int argc, char **argv)
                *input_path = NULL, *pad_script = NULL;
     unsigned long long seed = CLI_SEED_DEFAULT;
     long frames = 0;
-    int w = 960, h = 720, use_pad = 1, snap_deg = 0;
+    int w = 960, h = 720, use_pad = 1, snap_deg = 0, stats = 0, overlay = 0;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i], *val = i + 1 < argc ? argv[i + 1] : NULL;
         int takes = !strcmp(a, "--mode") || !strcmp(a, "--seed") || !strcmp(a, "--log") ||
@@ -200,6 +252,8 @@ int cli_cmd_play(int argc, char **argv)
         }
         if (!strcmp(a, "--no-gamepad"))
             use_pad = 0;
+        else if (!strcmp(a, "--stats"))
+            stats = 1;
         else if (!strcmp(a, "--mode"))
             mode = val;
         else if (!strcmp(a, "--seed")) {
@@ -316,6 +370,8 @@ int cli_cmd_play(int argc, char **argv)
         fprintf(stderr, "play: game controller: %s (%04x:%04x)\n",
                 pad_dev.info.name[0] ? pad_dev.info.name : "unnamed", pad_dev.info.vid,
                 pad_dev.info.pid);
+    frame_stats fs;
+    memset(&fs, 0, sizeof fs);
     double t0 = now_s(), last_t = 0, prev_t = 0;
     for (long k = 0; frames <= 0 || k < frames; k++) {
         int open = hol_x11_poll(&xw, &keys);
@@ -341,8 +397,10 @@ int cli_cmd_play(int argc, char **argv)
             last_t = t;
             key_activity = keys_input(&keys, t, dt, open, snap_deg > 0, &in);
             keys_snap(&keys, snap_deg, hol_app_get_view(s.app)->yaw_deg, &in);
-            keys.taps = 0;
         }
+        if (keys.taps & HOL_X11_TAP(HOL_X11_K_STATS))
+            overlay = !overlay;
+        keys.taps = 0;
         if (use_pad) {
             hol_input pad;
             memset(&pad, 0, sizeof pad);
@@ -361,6 +419,7 @@ int cli_cmd_play(int argc, char **argv)
             break;
         hol_frame_desc fd;
         hol_app_frame_desc(hol_app_get_view(s.app), -1, xw.w, xw.h, 0, &fd);
+        fd.overlay = overlay ? fs.text : NULL;
         err = hol_render_frame(r, &fd, NULL);
         if (err) {
             cli_error(cmd, 0, "rendering failed: %s", hol_err_str(err));
@@ -368,8 +427,15 @@ int cli_cmd_play(int argc, char **argv)
             goto out;
         }
         hol_x11_swap(&xw);
+        frame_stats_add(&fs, stats);
     }
     print_end(&s);
+    if (stats && fs.total) {
+        double secs = now_s() - fs.first_wall;
+        fprintf(stderr, "stats: %ld frames in %.1f s: %.1f fps, CPU %.1f ms a frame (max %.1f)\n",
+                fs.total, secs, secs > 0 ? fs.total / secs : 0.0, fs.total_cpu_ms / fs.total,
+                fs.max_cpu_ms);
+    }
 out:
     if (use_pad)
         hol_hid_dev_close(&pad_dev);

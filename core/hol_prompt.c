@@ -1,0 +1,46 @@
+/* hol_prompt.c - button words per device (see hol_prompt.h). */
+#include "hol_prompt.h"
+
+#include <stddef.h>
+
+#include "hol_input.h"
+
+#define HOL__NBTN 8 /* HOL_BTN_* bits 0..7 */
+
+/* Per device, per button bit: confirm, back, menu, recentre, minimap,
+ * restart, quit, debug. */
+static const char *const hol__words[HOL_DEVICE_COUNT][HOL__NBTN] = {
+    [HOL_DEVICE_NONE] = {"CONFIRM", "BACK", "MENU", "RECENTRE", "MINIMAP", "RESTART", "QUIT",
+                         "DEBUG"},
+    [HOL_DEVICE_KEYBOARD] = {"ENTER", NULL, "P", NULL, "M", "R", "ESC", "F3"},
+    [HOL_DEVICE_GAMEPAD] = {"A", "B", "START", "Y", "X", NULL, NULL, NULL},
+    [HOL_DEVICE_XR_SIMPLE] = {"SELECT", NULL, "MENU", "LEFT MENU", "LEFT SELECT", NULL, NULL,
+                              NULL},
+    [HOL_DEVICE_XR_TOUCH] = {"A", NULL, "MENU", "Y", "X", NULL, NULL, NULL},
+    [HOL_DEVICE_XR_VIVE] = {"TRIGGER", NULL, "MENU", "LEFT MENU", "LEFT TRACKPAD", NULL, NULL,
+                            NULL},
+    [HOL_DEVICE_XR_INDEX] = {"A", NULL, "B", "LEFT B", "LEFT A", NULL, NULL, NULL},
+    [HOL_DEVICE_XR_WMR] = {"TRIGGER", NULL, "MENU", "LEFT MENU", "LEFT TRACKPAD", NULL, NULL,
+                           NULL},
+    [HOL_DEVICE_XR] = {"TRIGGER", NULL, "MENU", NULL, NULL, NULL, NULL, NULL},
+};
+
+const char *hol_prompt_button(uint32_t device, uint32_t btn)
+{
+    if (device >= HOL_DEVICE_COUNT || !btn || (btn & (btn - 1)))
+        return NULL;
+    for (int k = 0; k < HOL__NBTN; k++)
+        if (btn == 1u << k)
+            return hol__words[device][k];
+    return NULL;
+}
+
+const char *hol_prompt_move(uint32_t device)
+{
+    switch (device) {
+    case HOL_DEVICE_NONE: return NULL;
+    case HOL_DEVICE_KEYBOARD: return "W/S/A/D: WALK, ARROWS: TURN";
+    case HOL_DEVICE_GAMEPAD: return "LEFT STICK: WALK, RIGHT STICK: TURN";
+    default: return "WALK IN YOUR ROOM";
+    }
+}

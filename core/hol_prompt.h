@@ -1,0 +1,29 @@
+/* hol_prompt.h - the words a prompt uses for a button: the name of the
+ * button bound to an action on the device in use.
+ *
+ * Contract
+ * - hol_prompt_button(device, btn) names the control that gives HOL_BTN_*
+ *   bit btn on device (HOL_DEVICE_*, core/hol_input.h), in capitals as the
+ *   HUD draws them: the keyboard's keys ("ENTER", "P", "R", "ESC", "M",
+ *   "F3"), a game controller's buttons in the Xbox layout the Linux gamepad
+ *   order follows ("A" south, "B" east, "X" west, "Y" north, "START"), and
+ *   for each OpenXR interaction profile the control its suggested binding
+ *   uses (platform/openxr/hol_xr_bind.c: "TRIGGER", "A", "MENU", "LEFT
+ *   TRACKPAD", ...; a left-hand control is "LEFT ..." where the right hand
+ *   has one of that name too). NULL: no control gives it on that device.
+ *   HOL_DEVICE_NONE names the action itself ("CONFIRM", "MENU", ...).
+ * - hol_prompt_move(device) says how one walks with it ("W/S/A/D: WALK");
+ *   NULL for HOL_DEVICE_NONE.
+ * - The tables must follow the bindings: tests/test_xr_bind.c derives each
+ *   XR word from the profile's binding path and compares.
+ * - Pure data: static strings, no state.
+ */
+#ifndef HOL_PROMPT_H
+#define HOL_PROMPT_H
+
+#include <stdint.h>
+
+const char *hol_prompt_button(uint32_t device, uint32_t btn);
+const char *hol_prompt_move(uint32_t device);
+
+#endif
