@@ -38,8 +38,8 @@ static const char *const render_usage =
     "                  for none, the default): sets the user's tile,\n"
     "                  orientation and cell\n"
     "  --eye X,Y,Z     eye in room coordinates (metres; x east, y up, z\n"
-    "                  south); x,z strictly inside the cell the walk ends in.\n"
-    "                  Default: that cell's centre at height 1.6\n"
+    "                  south); x,z strictly inside the cell the walk ends in,\n"
+    "                  y in (0.01, 100]. Default: that cell's centre at 1.6\n"
     "  --yaw DEG       0 looks north, positive turns west (default 0)\n"
     "  --pitch DEG     positive looks up, -90..90 (default -30)\n"
     "  --size WxH      image size in pixels, 1..8192 (default 640x480)\n"
@@ -50,15 +50,15 @@ static const char *const render_usage =
     "  --stats         print draw calls, triangles, stencil passes, CPU ms\n"
     "  --euclidean     the same nine cells as a flat room, no portals\n"
     "  --bare          floors only (no trees, hedges, props): for tests\n"
-    "  --frames N      render N times (stats: median CPU ms), default 1\n"
+    "  --frames N      render N times, 1..1000 (stats: median CPU ms), default 1\n"
     "  --seed S        world seed (decimal or 0x hex; default 1): the forest\n"
     "                  content\n"
     "  --hud           draw the HUD text and the Poincare minimap\n"
     "  --hand X,Y,Z    the minimap in the hand instead: a 25 cm square at\n"
     "                  X,Y,Z (room coordinates, 0.05..2 m from the eye across\n"
     "                  the floor) facing the eye; implies --hud\n"
-    "  --stereo IPD    two eyes IPD metres apart (e.g. 0.064) side by side,\n"
-    "                  each with its own render queue; --eye is the head\n"
+    "  --stereo IPD    two eyes IPD metres apart, (0, 0.2] (e.g. 0.064), side\n"
+    "                  by side, each with its own render queue; --eye is the head\n"
     "                  (an eye leaning over a cell edge sees from that cell)\n"
     "  --window        the desktop build: a live window (EGL on X11, also\n"
     "                  under Xvfb) with HUD and minimap; arrows/WASD walk and\n"
@@ -299,6 +299,488 @@ static int run_window(const char *cmd, hol_x11 *xw, hol_render *r, hol_world *wo
     return CLI_EXIT_OK;
 }
 
+/* ---- options ------------------------------------------------------------- */
+
+enum { RENDER_OSMESA, RENDER_EGL, RENDER_WINDOW };
+
+typedef struct render_opts {
+    const char *walk, *eye, *out, *ids, *keys, *hand, *orient, *tan;
+    double yaw, pitch, fov, ipd;
+    long w, h, frames;
+    int frames_set, stats, flags, ntargets, gl;
+    uint64_t seed;
+    hol_tile targets[HOL_RENDER_MAX_OBJECTIVES];
+} render_opts;
+
+static const char *const render_value_opts[] = {
+    "--walk", "--eye", "--hand", "--orient", "--tan", "--yaw", "--pitch", "--size", "--out",
+    "--tile-ids", "--fov", "--frames", "--seed", "--target", "--gl", "--stereo", "--keys"};
+
+static int takes_value(const char *a)
+{
+    for (size_t k = 0; k < sizeof render_value_opts / sizeof *render_value_opts; k++)
+        if (!strcmp(a, render_value_opts[k]))
+            return 1;
+    return 0;
+}
+
+/* --size WxH: 0 ok, 1 bad. */
+static int parse_size(const char *val, long *w, long *h)
+{
+    char buf[64];
+    const char *x = strchr(val, 'x');
+    size_t n = x ? (size_t)(x - val) : 0;
+    if (!x || n == 0 || n >= sizeof buf)
+        return 1;
+    memcpy(buf, val, n);
+    buf[n] = 0;
+    return parse_int(buf, 1, 8192, w) || parse_int(x + 1, 1, 8192, h);
+}
+
+/* The numeric options: 1 taken, 0 not one of them, -1 bad (reported). */
+static int parse_number_opt(const char *cmd, render_opts *o, const char *a, const char *val)
+{
+    const char *bad = NULL;
+    if (!strcmp(a, "--yaw")) {
+        bad = parse_double(val, &o->yaw) ? "is not a number of degrees" : NULL;
+    } else if (!strcmp(a, "--pitch")) {
+        if (parse_double(val, &o->pitch) || o->pitch < -90 || o->pitch > 90)
+            bad = "is not a number of degrees in -90..90";
+    } else if (!strcmp(a, "--fov")) {
+        if (parse_double(val, &o->fov) || o->fov < 10 || o->fov > 170)
+            bad = "is not a number of degrees in 10..170";
+    } else if (!strcmp(a, "--frames")) {
+        o->frames_set = 1;
+        bad = parse_int(val, 1, 1000, &o->frames) ? "is not a count in 1..1000" : NULL;
+    } else if (!strcmp(a, "--size")) {
+        bad = parse_size(val, &o->w, &o->h) ? "is not WxH with sides 1..8192 (e.g. 640x480)"
+                                            : NULL;
+    } else if (!strcmp(a, "--seed")) {
+        bad = !cli_parse_u64(val, &o->seed) ? "is not an unsigned 64-bit number" : NULL;
+    } else if (!strcmp(a, "--stereo")) {
+        if (parse_double(val, &o->ipd) || o->ipd <= 0 || o->ipd > 0.2)
+            bad = "is not an eye distance in (0, 0.2] m";
+    } else {
+        return 0;
+    }
+    if (bad) {
+        cli_error(cmd, 0, "%s '%.40s' %s", a, val, bad);
+        return -1;
+    }
+    return 1;
+}
+
+/* An option with a value: 0 ok, else the exit status (reported). */
+static int parse_value_opt(const char *cmd, render_opts *o, const char *a, const char *val)
+{
+    const char **str[] = {&o->walk, &o->eye, &o->hand, &o->orient, &o->tan, &o->out, &o->ids};
+    static const char *const names[] = {"--walk", "--eye",  "--hand",    "--orient",
+                                        "--tan",  "--out", "--tile-ids"};
+    for (size_t k = 0; k < sizeof names / sizeof *names; k++)
+        if (!strcmp(a, names[k])) {
+            *str[k] = val;
+            return 0;
+        }
+    int n = parse_number_opt(cmd, o, a, val);
+    if (n)
+        return n < 0 ? CLI_EXIT_USAGE : 0;
+    if (!strcmp(a, "--target")) {
+        if (o->ntargets >= HOL_RENDER_MAX_OBJECTIVES) {
+            cli_error(cmd, 0, "more than %d --target options", HOL_RENDER_MAX_OBJECTIVES);
+            return CLI_EXIT_USAGE;
+        }
+        if (hol_tile_resolve(val, -1, &o->targets[o->ntargets++])) {
+            cli_error(cmd, 0, "--target '%.40s' is not a tile address", val);
+            return CLI_EXIT_USAGE;
+        }
+    } else if (!strcmp(a, "--gl")) {
+        if (strcmp(val, "egl") && strcmp(val, "osmesa")) {
+            cli_error(cmd, 0, "--gl '%.40s' is not osmesa or egl", val);
+            return CLI_EXIT_USAGE;
+        }
+        if (o->gl != RENDER_WINDOW)
+            o->gl = val[0] == 'e' ? RENDER_EGL : RENDER_OSMESA;
+    } else if (!strcmp(a, "--keys")) {
+        o->keys = val;
+        if (strspn(val, "wsadlrun.") != strlen(val)) {
+            cli_error(cmd, 0, "--keys '%.40s' has a letter other than w s a d l r u n .", val);
+            return CLI_EXIT_USAGE;
+        }
+    }
+    return 0;
+}
+
+/* A flag: 1 taken, 0 not a flag. */
+static int parse_flag(render_opts *o, const char *a)
+{
+    if (!strcmp(a, "--hud"))
+        o->flags = (o->flags & ~HOL_RENDER_NO_HUD) | HOL_RENDER_MINIMAP;
+    else if (!strcmp(a, "--window"))
+        o->gl = RENDER_WINDOW;
+    else if (!strcmp(a, "--stats"))
+        o->stats = 1;
+    else if (!strcmp(a, "--euclidean"))
+        o->flags |= HOL_RENDER_EUCLIDEAN;
+    else if (!strcmp(a, "--bare"))
+        o->flags |= HOL_RENDER_BARE;
+    else
+        return 0;
+    return 1;
+}
+
+/* What the options say together; the outputs checked before any work. */
+static int check_opts(const char *cmd, render_opts *o)
+{
+    const char *why = NULL;
+    if (o->gl == RENDER_WINDOW && (o->ipd > 0 || o->ids || o->stats))
+        why = "--window shows one eye live; drop --stereo, --tile-ids, --stats";
+    else if (o->keys && o->gl != RENDER_WINDOW)
+        why = "--keys drives --window";
+    else if (o->ipd > 0 && o->ids)
+        why = "--tile-ids works on one eye; drop --stereo";
+    else if (o->ipd > 0 && o->w < 2)
+        why = "--stereo needs an image at least 2 pixels wide";
+    else if (!o->out && !o->ids && !o->stats && o->gl != RENDER_WINDOW)
+        why = "nothing to do: give --out FILE.png, --tile-ids FILE or --stats";
+    if (why) {
+        cli_error(cmd, 0, "%s", why);
+        return CLI_EXIT_USAGE;
+    }
+    if (o->gl == RENDER_WINDOW && !o->frames_set)
+        o->frames = 0; /* until the window is closed (or the key script ends) */
+    if (cli_check_output(cmd, "--out", o->out) || cli_check_output(cmd, "--tile-ids", o->ids))
+        return CLI_EXIT_USAGE;
+    return 0;
+}
+
+static int parse_opts(const char *cmd, int argc, char **argv, render_opts *o)
+{
+    memset(o, 0, sizeof *o);
+    o->walk = "-";
+    o->pitch = -30;
+    o->fov = 90;
+    o->w = 640;
+    o->h = 480;
+    o->frames = 1;
+    o->flags = HOL_RENDER_NO_HUD;
+    o->seed = CLI_SEED_DEFAULT;
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i];
+        if (takes_value(a)) {
+            if (i + 1 >= argc) {
+                cli_error(cmd, 0, "%s needs a value; see 'holonomy render --help'", a);
+                return CLI_EXIT_USAGE;
+            }
+            int st = parse_value_opt(cmd, o, a, argv[++i]);
+            if (st)
+                return st;
+        } else if (!parse_flag(o, a)) {
+            cli_error(cmd, 0, "unknown option '%.40s'; see 'holonomy render --help'", a);
+            return CLI_EXIT_USAGE;
+        }
+    }
+    return check_opts(cmd, o);
+}
+
+/* ---- setup: the user, the camera, the GL, the scene ------------------------ */
+
+/* --hand: the minimap in the hand, facing the eye. 0 ok, else reported. */
+static int setup_hand(const char *cmd, const char *hand, hol_frame_desc *fd)
+{
+    double d[3];
+    if (parse_vec3(hand, fd->hand_pos)) {
+        cli_error(cmd, 0, "--hand '%.40s' is not three numbers X,Y,Z", hand);
+        return CLI_EXIT_USAGE;
+    }
+    for (int k = 0; k < 3; k++)
+        d[k] = fd->cam.eye[k] - fd->hand_pos[k];
+    double hd = sqrt(d[0] * d[0] + d[2] * d[2]);
+    if (hd < 0.05 || hd > 2.0) {
+        cli_error(cmd, 0, "--hand must be 0.05 to 2 m from the eye across the floor");
+        return CLI_EXIT_USAGE;
+    }
+    face_towards(d, fd->hand_orient);
+    fd->hand_size = 0.25;
+    fd->flags = (fd->flags & ~HOL_RENDER_NO_HUD) | HOL_RENDER_MINIMAP | HOL_RENDER_MINIMAP_HAND;
+    return 0;
+}
+
+/* The eye in the cell the walk ends in. 0 ok, else reported. */
+static int setup_eye(const char *cmd, const render_opts *o, hol_frame_desc *fd)
+{
+    const hol_room *u = &fd->user;
+    fd->cam.eye[0] = u->col + 0.5;
+    fd->cam.eye[1] = 1.6;
+    fd->cam.eye[2] = u->row + 0.5;
+    if (o->eye && parse_vec3(o->eye, fd->cam.eye)) {
+        cli_error(cmd, 0, "--eye '%.40s' is not three numbers X,Y,Z", o->eye);
+        return CLI_EXIT_USAGE;
+    }
+    if (o->hand && setup_hand(cmd, o->hand, fd))
+        return CLI_EXIT_USAGE;
+    const double *he = fd->cam.eye;
+    if (!(he[0] > u->col && he[0] < u->col + 1 && he[2] > u->row && he[2] < u->row + 1)) {
+        cli_error(cmd, 0,
+                  "--eye x,z = %g,%g is not strictly inside cell (%d,%d) where the "
+                  "walk ends (x in (%d,%d), z in (%d,%d))",
+                  he[0], he[2], u->col, u->row, u->col, u->col + 1, u->row, u->row + 1);
+        return CLI_EXIT_USAGE;
+    }
+    if (!(he[1] > 0.01 && he[1] <= 100)) {
+        cli_error(cmd, 0, "--eye height y = %g is not in (0.01, 100] metres", he[1]);
+        return CLI_EXIT_USAGE;
+    }
+    return 0;
+}
+
+/* The frame the options describe. 0 ok, else reported. */
+static int setup_frame(const char *cmd, const render_opts *o, hol_frame_desc *fd)
+{
+    size_t wlen = strlen(o->walk), nd = 0, bad = 0, done = 0;
+    uint8_t *dirs = malloc(wlen + 1);
+    if (!dirs) {
+        cli_error(cmd, 0, "out of memory");
+        return CLI_EXIT_FAIL;
+    }
+    memset(fd, 0, sizeof *fd);
+    fd->user = hol_room_start();
+    hol_err err = hol_walk_parse(o->walk, wlen, dirs, wlen + 1, &nd, &bad);
+    if (!err)
+        err = hol_room_walk(&fd->user, dirs, nd, &done);
+    free(dirs);
+    if (err == HOL_EPARSE)
+        cli_error(cmd, 0, "--walk: character %zu is not a step (N, E, S or W)", bad + 1);
+    else if (err == HOL_EROOM)
+        cli_error(cmd, 0, "--walk: step %zu leaves the room", done + 1);
+    else if (err)
+        cli_error(cmd, 0, "--walk: step %zu: %s", done + 1, hol_err_str(err));
+    if (err)
+        return CLI_EXIT_USAGE;
+    fd->flags = o->flags;
+    if (setup_eye(cmd, o, fd))
+        return CLI_EXIT_USAGE;
+    fd->cam.yaw_deg = o->yaw;
+    fd->cam.pitch_deg = o->pitch;
+    fd->cam.fovy_deg = o->fov;
+    fd->cam.width = (int)o->w;
+    fd->cam.height = (int)o->h;
+    int hf = parse_head_form(cmd, o->orient, o->tan, &fd->cam);
+    if (hf)
+        return hf;
+    fd->nobjectives = o->ntargets;
+    memcpy(fd->objectives, o->targets, sizeof o->targets);
+    fd->objective_text = o->ntargets ? "reach the guide pole" : NULL;
+    fd->steps_taken = (int)nd;
+    return 0;
+}
+
+/* The GL context of --gl or --window. */
+typedef struct render_gl {
+    int kind; /* RENDER_* */
+    hol_osmesa os;
+    hol_egl egl;
+    hol_x11 xw;
+} render_gl;
+
+static int gl_create(const char *cmd, render_gl *g, int kind, int w, int h)
+{
+    char msg[256];
+    memset(g, 0, sizeof *g);
+    g->kind = kind;
+    int bad = kind == RENDER_WINDOW ? hol_x11_create(&g->xw, w, h, "holonomy", msg, sizeof msg)
+              : kind == RENDER_EGL  ? hol_egl_create(&g->egl, w, h, msg, sizeof msg)
+                                    : hol_osmesa_create(&g->os, w, h, msg, sizeof msg);
+    if (bad) {
+        cli_error(cmd, 0, "%s", msg);
+        return CLI_EXIT_FAIL;
+    }
+    return 0;
+}
+
+static void gl_destroy(render_gl *g)
+{
+    if (g->kind == RENDER_WINDOW)
+        hol_x11_destroy(&g->xw);
+    else if (g->kind == RENDER_EGL)
+        hol_egl_destroy(&g->egl);
+    else
+        hol_osmesa_destroy(&g->os);
+}
+
+/* What a render holds: the world, the renderer, the pixels. */
+typedef struct render_scene {
+    hol_world *world;
+    hol_render *r;
+    uint8_t *rgba, *eyebuf;
+    double *cpu;
+} render_scene;
+
+static void scene_destroy(render_scene *sc)
+{
+    free(sc->eyebuf);
+    free(sc->cpu);
+    free(sc->rgba);
+    hol_render_destroy(sc->r);
+    hol_world_destroy(sc->world);
+}
+
+/* The minimap's shortest-path overlay: to the first target. */
+static void setup_path(const render_opts *o, hol_frame_desc *fd)
+{
+    static uint8_t path[HOL_NAV_WALK_MAX];
+    if (o->ntargets == 0 || !(o->flags & HOL_RENDER_MINIMAP))
+        return;
+    hol_nav *nav = NULL;
+    hol_nav_desc navd;
+    memset(&navd, 0, sizeof navd);
+    hol_nav_result nr;
+    if (!hol_nav_create(&navd, &nav) &&
+        !hol_nav_find(nav, &fd->user, o->targets[0], 200000, path, sizeof path, &nr)) {
+        fd->path = path;
+        fd->npath = nr.len;
+    }
+    hol_nav_destroy(nav);
+}
+
+static int setup_scene(const char *cmd, const render_opts *o, int gl, hol_frame_desc *fd,
+                       render_scene *sc)
+{
+    hol_world_desc wd;
+    memset(&wd, 0, sizeof wd);
+    wd.seed = o->seed;
+    wd.capacity = 1u << 14;
+    hol_err err = hol_world_make(&wd, &sc->world);
+    if (!err)
+        err = hol_world_update(sc->world, &fd->user);
+    if (err) {
+        cli_error(cmd, 0, "cannot generate the world: %s", hol_err_str(err));
+        return CLI_EXIT_FAIL;
+    }
+    setup_path(o, fd);
+    hol_render_desc rd;
+    memset(&rd, 0, sizeof rd);
+    rd.max_width = rd.max_height = 8192;
+    rd.world = sc->world;
+    rd.getproc = gl != RENDER_OSMESA ? hol_egl_getproc : hol_osmesa_getproc; /* x11 too */
+    if ((err = hol_render_create(&rd, &sc->r))) {
+        cli_error(cmd, 0, "cannot initialise the renderer: %s", hol_err_str(err));
+        return CLI_EXIT_FAIL;
+    }
+    size_t px = (size_t)o->w * (size_t)o->h * 4;
+    sc->rgba = malloc(px);
+    sc->eyebuf = malloc(px);
+    sc->cpu = malloc((size_t)(o->frames > 0 ? o->frames : 1) * sizeof *sc->cpu);
+    if (!sc->rgba || !sc->cpu || !sc->eyebuf) {
+        cli_error(cmd, 0, "out of memory");
+        return CLI_EXIT_FAIL;
+    }
+    return 0;
+}
+
+/* ---- the work: headless frames, the PNG, the stats, the tile ids ----------- */
+
+/* One frame desc per eye: mono, or two eyes side by side. Returns the
+ * number of eyes, or 0 after reporting an eye outside the room. */
+static int setup_eyes(const char *cmd, const render_opts *o, const hol_frame_desc *fd,
+                      hol_frame_desc eye_fd[2])
+{
+    int neyes = o->ipd > 0 ? 2 : 1;
+    for (int e = 0; e < neyes; e++) {
+        eye_fd[e] = *fd;
+        if (neyes == 1)
+            break;
+        double side = e == 0 ? -0.5 * o->ipd : 0.5 * o->ipd;
+        double yr = o->yaw * 3.14159265358979323846 / 180;
+        eye_fd[e].cam.eye[0] = fd->cam.eye[0] + side * cos(yr);
+        eye_fd[e].cam.eye[2] = fd->cam.eye[2] - side * sin(yr);
+        eye_fd[e].cam.width = (int)o->w / 2;
+        hol_err err = hol_motion_eye_state(&fd->user, fd->cam.eye, eye_fd[e].cam.eye,
+                                           &eye_fd[e].user);
+        if (err) {
+            cli_error(cmd, 0, "--stereo: the %s eye is %s", e ? "right" : "left",
+                      err == HOL_EROOM ? "outside the room" : "not in a cell");
+            return 0;
+        }
+    }
+    return neyes;
+}
+
+static void print_stats(const render_opts *o, const hol_render_stats *st, int neyes,
+                        double *cpu)
+{
+    qsort(cpu, (size_t)o->frames, sizeof *cpu, cmp_double);
+    printf("mode %s\n", (o->flags & HOL_RENDER_EUCLIDEAN) ? "euclidean" : "hyperbolic");
+    printf("size %ldx%ld\n", o->w, o->h);
+    printf("eyes %d\n", neyes);
+    for (int e = 0; e < neyes; e++) {
+        const char *pre = neyes == 1 ? "" : e ? "right_" : "left_";
+        printf("%sdraw_calls %d\n", pre, st[e].draw_calls);
+        printf("%striangles %ld\n", pre, st[e].triangles);
+        printf("%sstencil_passes %d\n", pre, st[e].stencil_passes);
+        printf("%sbranches %d\n", pre, st[e].branches);
+        printf("%sstate_changes %d\n", pre, st[e].state_changes);
+        printf("%stiles_built %d\n", pre, st[e].tiles_built);
+        printf("%suploaded_bytes %ld\n", pre, st[e].uploaded_bytes);
+        printf("%sbuild_ms %.3f\n", pre, st[e].build_ms);
+    }
+    printf("cpu_ms %.3f\n", cpu[o->frames / 2]);
+    printf("wall_ms %.3f\n", st[neyes - 1].wall_ms);
+}
+
+/* The frames (the last read back into sc->rgba, eyes side by side), then
+ * the PNG and the stats. 0 ok, else reported. */
+static int render_frames(const char *cmd, const render_opts *o, const hol_frame_desc *fd,
+                         render_scene *sc)
+{
+    hol_frame_desc eye_fd[2];
+    hol_render_stats st[2];
+    int neyes = setup_eyes(cmd, o, fd, eye_fd), ew = (int)o->w / (neyes ? neyes : 1);
+    if (!neyes)
+        return CLI_EXIT_USAGE;
+    for (long k = 0; k < o->frames; k++) {
+        sc->cpu[k] = 0;
+        for (int e = 0; e < neyes; e++) {
+            hol_err err = hol_render_frame(sc->r, &eye_fd[e], &st[e]);
+            if (err) {
+                cli_error(cmd, 0, "rendering failed: %s", hol_err_str(err));
+                return err == HOL_EARG ? CLI_EXIT_USAGE : CLI_EXIT_FAIL;
+            }
+            sc->cpu[k] += st[e].cpu_ms;
+            if (k < o->frames - 1 || !o->out)
+                continue;
+            hol_render_read_rgba(sc->r, ew, (int)o->h, sc->eyebuf);
+            for (long y = 0; y < o->h; y++)
+                memcpy(sc->rgba + ((size_t)y * (size_t)o->w + (size_t)(e * ew)) * 4,
+                       sc->eyebuf + (size_t)y * (size_t)ew * 4, (size_t)ew * 4);
+        }
+    }
+    if (o->out && hol_png_write_file(o->out, sc->rgba, (int)o->w, (int)o->h, 0)) {
+        cli_error(cmd, 0, "cannot write '%.200s': %s", o->out, strerror(errno));
+        return CLI_EXIT_FAIL;
+    }
+    if (o->stats)
+        print_stats(o, st, neyes, sc->cpu);
+    return 0;
+}
+
+/* --tile-ids: one ID frame, written atomically. 0 ok, else reported. */
+static int render_tile_ids(const char *cmd, const render_opts *o, hol_frame_desc *fd,
+                           render_scene *sc)
+{
+    fd->flags |= HOL_RENDER_IDS;
+    hol_err err = hol_render_frame(sc->r, fd, NULL);
+    if (err) {
+        cli_error(cmd, 0, "rendering tile ids failed: %s", hol_err_str(err));
+        return CLI_EXIT_FAIL;
+    }
+    hol_render_read_rgba(sc->r, (int)o->w, (int)o->h, sc->rgba);
+    if (write_tile_ids(o->ids, sc->rgba, o->w, o->h, hol_render_last_view(sc->r))) {
+        cli_error(cmd, 0, "cannot write '%.200s': %s", o->ids, strerror(errno));
+        return CLI_EXIT_FAIL;
+    }
+    return 0;
+}
+
 int cli_cmd_render(int argc, char **argv)
 {
     const char *cmd = "render";
@@ -306,403 +788,29 @@ int cli_cmd_render(int argc, char **argv)
         fputs(render_usage, stdout);
         return cli_finish_output(cmd);
     }
-    const char *walk = "-", *eye_s = NULL, *out = NULL, *ids_path = NULL, *keyscript = NULL;
-    const char *hand_s = NULL, *orient_s = NULL, *tan_s = NULL;
-    double yaw = 0, pitch = -30, fov = 90, ipd = 0;
-    long w = 640, h = 480, frames = 1;
-    int stats = 0, flags = HOL_RENDER_NO_HUD, ntargets = 0, use_egl = 0, frames_set = 0;
-    unsigned long long seed = CLI_SEED_DEFAULT;
-    hol_tile targets[HOL_RENDER_MAX_OBJECTIVES];
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        const char *val = i + 1 < argc ? argv[i + 1] : NULL;
-        int takes = !strcmp(a, "--walk") || !strcmp(a, "--eye") || !strcmp(a, "--hand") ||
-                    !strcmp(a, "--orient") || !strcmp(a, "--tan") ||
-                    !strcmp(a, "--yaw") || !strcmp(a, "--pitch") ||
-                    !strcmp(a, "--size") || !strcmp(a, "--out") ||
-                    !strcmp(a, "--tile-ids") || !strcmp(a, "--fov") ||
-                    !strcmp(a, "--frames") || !strcmp(a, "--seed") ||
-                    !strcmp(a, "--target") || !strcmp(a, "--gl") ||
-                    !strcmp(a, "--stereo") || !strcmp(a, "--keys");
-        if (takes && !val) {
-            cli_error(cmd, 0, "%s needs a value; see 'holonomy render --help'", a);
-            return CLI_EXIT_USAGE;
-        }
-        if (!strcmp(a, "--walk"))
-            walk = val;
-        else if (!strcmp(a, "--eye"))
-            eye_s = val;
-        else if (!strcmp(a, "--hand"))
-            hand_s = val;
-        else if (!strcmp(a, "--orient"))
-            orient_s = val;
-        else if (!strcmp(a, "--tan"))
-            tan_s = val;
-        else if (!strcmp(a, "--out"))
-            out = val;
-        else if (!strcmp(a, "--tile-ids"))
-            ids_path = val;
-        else if (!strcmp(a, "--yaw")) {
-            if (parse_double(val, &yaw)) {
-                cli_error(cmd, 0, "--yaw '%.40s' is not a number of degrees", val);
-                return CLI_EXIT_USAGE;
-            }
-        } else if (!strcmp(a, "--pitch")) {
-            if (parse_double(val, &pitch) || pitch < -90 || pitch > 90) {
-                cli_error(cmd, 0, "--pitch '%.40s' is not a number of degrees in -90..90",
-                          val);
-                return CLI_EXIT_USAGE;
-            }
-        } else if (!strcmp(a, "--fov")) {
-            if (parse_double(val, &fov) || fov < 10 || fov > 170) {
-                cli_error(cmd, 0, "--fov '%.40s' is not a number of degrees in 10..170",
-                          val);
-                return CLI_EXIT_USAGE;
-            }
-        } else if (!strcmp(a, "--frames")) {
-            frames_set = 1;
-            if (parse_int(val, 1, 1000, &frames)) {
-                cli_error(cmd, 0, "--frames '%.40s' is not a count in 1..1000", val);
-                return CLI_EXIT_USAGE;
-            }
-        } else if (!strcmp(a, "--size")) {
-            char buf[64];
-            const char *x = strchr(val, 'x');
-            size_t n = x ? (size_t)(x - val) : 0;
-            if (!x || n == 0 || n >= sizeof buf) {
-                cli_error(cmd, 0, "--size '%.40s' is not WxH (e.g. 640x480)", val);
-                return CLI_EXIT_USAGE;
-            }
-            memcpy(buf, val, n);
-            buf[n] = 0;
-            if (parse_int(buf, 1, 8192, &w) || parse_int(x + 1, 1, 8192, &h)) {
-                cli_error(cmd, 0, "--size '%.40s' is not WxH with sides 1..8192", val);
-                return CLI_EXIT_USAGE;
-            }
-        } else if (!strcmp(a, "--seed")) {
-            uint64_t sv;
-            if (!cli_parse_u64(val, &sv)) {
-                cli_error(cmd, 0, "--seed '%.40s' is not an unsigned 64-bit number", val);
-                return CLI_EXIT_USAGE;
-            }
-            seed = sv;
-        } else if (!strcmp(a, "--target")) {
-            if (ntargets >= HOL_RENDER_MAX_OBJECTIVES) {
-                cli_error(cmd, 0, "more than %d --target options", HOL_RENDER_MAX_OBJECTIVES);
-                return CLI_EXIT_USAGE;
-            }
-            if (hol_tile_resolve(val, -1, &targets[ntargets])) {
-                cli_error(cmd, 0, "--target '%.40s' is not a tile address", val);
-                return CLI_EXIT_USAGE;
-            }
-            ntargets++;
-        } else if (!strcmp(a, "--stereo")) {
-            if (parse_double(val, &ipd) || ipd <= 0 || ipd > 0.2) {
-                cli_error(cmd, 0, "--stereo '%.40s' is not an eye distance in (0, 0.2] m",
-                          val);
-                return CLI_EXIT_USAGE;
-            }
-        } else if (!strcmp(a, "--gl")) {
-            if (!strcmp(val, "egl"))
-                use_egl = 1;
-            else if (!strcmp(val, "osmesa"))
-                use_egl = 0;
-            else {
-                cli_error(cmd, 0, "--gl '%.40s' is not osmesa or egl", val);
-                return CLI_EXIT_USAGE;
-            }
-        } else if (!strcmp(a, "--hud")) {
-            flags &= ~HOL_RENDER_NO_HUD;
-            flags |= HOL_RENDER_MINIMAP;
-        } else if (!strcmp(a, "--window")) {
-            use_egl = 2;
-        } else if (!strcmp(a, "--keys")) {
-            keyscript = val;
-            if (strspn(val, "wsadlrun.") != strlen(val)) {
-                cli_error(cmd, 0, "--keys '%.40s' has a letter other than w s a d l r u n .",
-                          val);
-                return CLI_EXIT_USAGE;
-            }
-        } else if (!strcmp(a, "--stats"))
-            stats = 1;
-        else if (!strcmp(a, "--euclidean"))
-            flags |= HOL_RENDER_EUCLIDEAN;
-        else if (!strcmp(a, "--bare"))
-            flags |= HOL_RENDER_BARE;
-        else {
-            cli_error(cmd, 0, "unknown option '%.40s'; see 'holonomy render --help'", a);
-            return CLI_EXIT_USAGE;
-        }
-        if (takes)
-            i++;
-    }
-    if (use_egl == 2 && (ipd > 0 || ids_path || stats)) {
-        cli_error(cmd, 0, "--window shows one eye live; drop --stereo, --tile-ids, --stats");
-        return CLI_EXIT_USAGE;
-    }
-    if (keyscript && use_egl != 2) {
-        cli_error(cmd, 0, "--keys drives --window");
-        return CLI_EXIT_USAGE;
-    }
-    if (use_egl == 2 && !frames_set)
-        frames = 0; /* until the window is closed (or the key script ends) */
-    if (ipd > 0 && ids_path) {
-        cli_error(cmd, 0, "--tile-ids works on one eye; drop --stereo");
-        return CLI_EXIT_USAGE;
-    }
-    if (ipd > 0 && w < 2) {
-        cli_error(cmd, 0, "--stereo needs an image at least 2 pixels wide");
-        return CLI_EXIT_USAGE;
-    }
-    if (!out && !ids_path && !stats && use_egl != 2) {
-        cli_error(cmd, 0, "nothing to do: give --out FILE.png, --tile-ids FILE or --stats");
-        return CLI_EXIT_USAGE;
-    }
-    if (cli_check_output(cmd, "--out", out) || cli_check_output(cmd, "--tile-ids", ids_path))
-        return CLI_EXIT_USAGE;
-    /* the user's state */
-    size_t wlen = strlen(walk), nd = 0, bad = 0;
-    uint8_t *dirs = malloc(wlen + 1);
-    if (!dirs) {
-        cli_error(cmd, 0, "out of memory");
-        return CLI_EXIT_FAIL;
-    }
-    hol_err err = hol_walk_parse(walk, wlen, dirs, wlen + 1, &nd, &bad);
-    if (err) {
-        free(dirs);
-        cli_error(cmd, 0, "--walk: character %zu is not a step (N, E, S or W)", bad + 1);
-        return CLI_EXIT_USAGE;
-    }
-    hol_room user = hol_room_start();
-    size_t done = 0;
-    err = hol_room_walk(&user, dirs, nd, &done);
-    free(dirs);
-    if (err == HOL_EROOM) {
-        cli_error(cmd, 0, "--walk: step %zu leaves the room", done + 1);
-        return CLI_EXIT_USAGE;
-    } else if (err) {
-        cli_error(cmd, 0, "--walk: step %zu: %s", done + 1, hol_err_str(err));
-        return CLI_EXIT_USAGE;
-    }
+    render_opts o;
     hol_frame_desc fd;
-    memset(&fd, 0, sizeof fd);
-    fd.user = user;
-    fd.flags = flags;
-    fd.cam.eye[0] = user.col + 0.5;
-    fd.cam.eye[1] = 1.6;
-    fd.cam.eye[2] = user.row + 0.5;
-    if (eye_s && parse_vec3(eye_s, fd.cam.eye)) {
-        cli_error(cmd, 0, "--eye '%.40s' is not three numbers X,Y,Z", eye_s);
-        return CLI_EXIT_USAGE;
+    int status = parse_opts(cmd, argc, argv, &o);
+    if (!status)
+        status = setup_frame(cmd, &o, &fd);
+    if (status)
+        return status;
+    render_gl gl;
+    if ((status = gl_create(cmd, &gl, o.gl, (int)o.w, (int)o.h)))
+        return status;
+    render_scene sc;
+    memset(&sc, 0, sizeof sc);
+    status = setup_scene(cmd, &o, o.gl, &fd, &sc);
+    if (!status && o.gl == RENDER_WINDOW) {
+        fd.flags = (fd.flags & ~HOL_RENDER_NO_HUD) | HOL_RENDER_MINIMAP;
+        status = run_window(cmd, &gl.xw, sc.r, sc.world, &fd, o.frames, o.out, sc.rgba, o.keys);
+    } else if (!status) {
+        status = render_frames(cmd, &o, &fd, &sc);
+        if (!status && o.ids)
+            status = render_tile_ids(cmd, &o, &fd, &sc);
     }
-    if (hand_s) {
-        double d[3];
-        if (parse_vec3(hand_s, fd.hand_pos)) {
-            cli_error(cmd, 0, "--hand '%.40s' is not three numbers X,Y,Z", hand_s);
-            return CLI_EXIT_USAGE;
-        }
-        for (int k = 0; k < 3; k++)
-            d[k] = fd.cam.eye[k] - fd.hand_pos[k];
-        double hd = sqrt(d[0] * d[0] + d[2] * d[2]);
-        if (hd < 0.05 || hd > 2.0) {
-            cli_error(cmd, 0, "--hand must be 0.05 to 2 m from the eye across the floor");
-            return CLI_EXIT_USAGE;
-        }
-        face_towards(d, fd.hand_orient);
-        fd.hand_size = 0.25;
-        fd.flags = (fd.flags & ~HOL_RENDER_NO_HUD) | HOL_RENDER_MINIMAP |
-                   HOL_RENDER_MINIMAP_HAND;
-    }
-    const double *he = fd.cam.eye;
-    if (!(he[0] > user.col && he[0] < user.col + 1 && he[2] > user.row &&
-          he[2] < user.row + 1)) {
-        cli_error(cmd, 0,
-                  "--eye x,z = %g,%g is not strictly inside cell (%d,%d) where the "
-                  "walk ends (x in (%d,%d), z in (%d,%d))",
-                  he[0], he[2], user.col, user.row, user.col, user.col + 1, user.row,
-                  user.row + 1);
-        return CLI_EXIT_USAGE;
-    }
-    if (!(he[1] > 0.01 && he[1] <= 100)) {
-        cli_error(cmd, 0, "--eye height y = %g is not in (0.01, 100] metres", he[1]);
-        return CLI_EXIT_USAGE;
-    }
-    fd.cam.yaw_deg = yaw;
-    fd.cam.pitch_deg = pitch;
-    fd.cam.fovy_deg = fov;
-    fd.cam.width = (int)w;
-    fd.cam.height = (int)h;
-    int hf = parse_head_form(cmd, orient_s, tan_s, &fd.cam);
-    if (hf)
-        return hf;
-    fd.nobjectives = ntargets;
-    memcpy(fd.objectives, targets, sizeof targets);
-    fd.objective_text = ntargets ? "reach the guide pole" : NULL;
-    fd.steps_taken = (int)nd;
-
-    /* GL */
-    char msg[256];
-    hol_osmesa gl = {0};
-    hol_egl egl = {0};
-    hol_x11 xw;
-    memset(&xw, 0, sizeof xw);
-    if (use_egl == 2 ? hol_x11_create(&xw, (int)w, (int)h, "holonomy", msg, sizeof msg)
-        : use_egl    ? hol_egl_create(&egl, (int)w, (int)h, msg, sizeof msg)
-                     : hol_osmesa_create(&gl, (int)w, (int)h, msg, sizeof msg)) {
-        cli_error(cmd, 0, "%s", msg);
-        return CLI_EXIT_FAIL;
-    }
-    int status = CLI_EXIT_OK;
-    hol_render *r = NULL;
-    uint8_t *rgba = NULL, *eyebuf = NULL;
-    double *cpu = NULL;
-    hol_world *world = NULL;
-    hol_world_desc wd;
-    memset(&wd, 0, sizeof wd);
-    wd.seed = seed;
-    wd.capacity = 1u << 14;
-    err = hol_world_make(&wd, &world);
-    if (!err)
-        err = hol_world_update(world, &user);
-    if (err) {
-        cli_error(cmd, 0, "cannot generate the world: %s", hol_err_str(err));
-        status = CLI_EXIT_FAIL;
-        goto done;
-    }
-    /* shortest-path overlay for the minimap: to the first target */
-    static uint8_t path[HOL_NAV_WALK_MAX];
-    if (ntargets > 0 && (flags & HOL_RENDER_MINIMAP)) {
-        hol_nav *nav = NULL;
-        hol_nav_desc navd;
-        memset(&navd, 0, sizeof navd);
-        hol_nav_result nr;
-        if (!hol_nav_create(&navd, &nav) &&
-            !hol_nav_find(nav, &user, targets[0], 200000, path, sizeof path, &nr)) {
-            fd.path = path;
-            fd.npath = nr.len;
-        }
-        hol_nav_destroy(nav);
-    }
-    hol_render_desc rd;
-    memset(&rd, 0, sizeof rd);
-    rd.max_width = rd.max_height = 8192;
-    rd.world = world;
-    rd.getproc = use_egl ? hol_egl_getproc : hol_osmesa_getproc; /* x11 too */
-    err = hol_render_create(&rd, &r);
-    if (err) {
-        cli_error(cmd, 0, "cannot initialise the renderer: %s", hol_err_str(err));
-        status = CLI_EXIT_FAIL;
-        goto done;
-    }
-    rgba = malloc((size_t)w * (size_t)h * 4);
-    eyebuf = malloc((size_t)w * (size_t)h * 4);
-    cpu = malloc((size_t)(frames > 0 ? frames : 1) * sizeof *cpu);
-    if (!rgba || !cpu || !eyebuf) {
-        cli_error(cmd, 0, "out of memory");
-        status = CLI_EXIT_FAIL;
-        goto done;
-    }
-    if (use_egl == 2) {
-        fd.flags &= ~HOL_RENDER_NO_HUD;
-        fd.flags |= HOL_RENDER_MINIMAP;
-        status = run_window(cmd, &xw, r, world, &fd, frames, out, rgba, keyscript);
-        goto done;
-    }
-    /* one render queue per eye: mono, or two eyes side by side */
-    int neyes = ipd > 0 ? 2 : 1;
-    int ew = (int)w / neyes;
-    hol_frame_desc eye_fd[2];
-    for (int e = 0; e < neyes; e++) {
-        eye_fd[e] = fd;
-        if (neyes == 2) {
-            double side = e == 0 ? -0.5 * ipd : 0.5 * ipd;
-            double yr = yaw * 3.14159265358979323846 / 180;
-            eye_fd[e].cam.eye[0] = fd.cam.eye[0] + side * cos(yr);
-            eye_fd[e].cam.eye[2] = fd.cam.eye[2] - side * sin(yr);
-            eye_fd[e].cam.width = ew;
-            err = hol_motion_eye_state(&user, fd.cam.eye, eye_fd[e].cam.eye,
-                                       &eye_fd[e].user);
-            if (err) {
-                cli_error(cmd, 0, "--stereo: the %s eye is %s", e ? "right" : "left",
-                          err == HOL_EROOM ? "outside the room" : "not in a cell");
-                status = CLI_EXIT_USAGE;
-                goto done;
-            }
-        }
-    }
-    hol_render_stats st[2];
-    for (long k = 0; k < frames; k++) {
-        cpu[k] = 0;
-        for (int e = 0; e < neyes; e++) {
-            err = hol_render_frame(r, &eye_fd[e], &st[e]);
-            if (err) {
-                cli_error(cmd, 0, "rendering failed: %s", hol_err_str(err));
-                status = err == HOL_EARG ? CLI_EXIT_USAGE : CLI_EXIT_FAIL;
-                goto done;
-            }
-            cpu[k] += st[e].cpu_ms;
-            if (k == frames - 1 && out) {
-                hol_render_read_rgba(r, ew, (int)h, eyebuf);
-                for (long y = 0; y < h; y++)
-                    memcpy(rgba + ((size_t)y * (size_t)w + (size_t)(e * ew)) * 4,
-                           eyebuf + (size_t)y * (size_t)ew * 4, (size_t)ew * 4);
-            }
-        }
-    }
-    if (out) {
-        err = hol_png_write_file(out, rgba, (int)w, (int)h, 0);
-        if (err) {
-            cli_error(cmd, 0, "cannot write '%.200s': %s", out, strerror(errno));
-            status = CLI_EXIT_FAIL;
-            goto done;
-        }
-    }
-    if (stats) {
-        qsort(cpu, (size_t)frames, sizeof *cpu, cmp_double);
-        printf("mode %s\n", (flags & HOL_RENDER_EUCLIDEAN) ? "euclidean" : "hyperbolic");
-        printf("size %ldx%ld\n", w, h);
-        printf("eyes %d\n", neyes);
-        for (int e = 0; e < neyes; e++) {
-            const char *pre = neyes == 1 ? "" : e ? "right_" : "left_";
-            printf("%sdraw_calls %d\n", pre, st[e].draw_calls);
-            printf("%striangles %ld\n", pre, st[e].triangles);
-            printf("%sstencil_passes %d\n", pre, st[e].stencil_passes);
-            printf("%sbranches %d\n", pre, st[e].branches);
-            printf("%sstate_changes %d\n", pre, st[e].state_changes);
-            printf("%stiles_built %d\n", pre, st[e].tiles_built);
-            printf("%suploaded_bytes %ld\n", pre, st[e].uploaded_bytes);
-            printf("%sbuild_ms %.3f\n", pre, st[e].build_ms);
-        }
-        printf("cpu_ms %.3f\n", cpu[frames / 2]);
-        printf("wall_ms %.3f\n", st[neyes - 1].wall_ms);
-    }
-    if (ids_path) {
-        fd.flags |= HOL_RENDER_IDS;
-        err = hol_render_frame(r, &fd, NULL);
-        if (err) {
-            cli_error(cmd, 0, "rendering tile ids failed: %s", hol_err_str(err));
-            status = CLI_EXIT_FAIL;
-            goto done;
-        }
-        hol_render_read_rgba(r, (int)w, (int)h, rgba);
-        if (write_tile_ids(ids_path, rgba, w, h, hol_render_last_view(r))) {
-            cli_error(cmd, 0, "cannot write '%.200s': %s", ids_path, strerror(errno));
-            status = CLI_EXIT_FAIL;
-            goto done;
-        }
-    }
-done:
-    free(eyebuf);
-    free(cpu);
-    free(rgba);
-    hol_render_destroy(r);
-    hol_world_destroy(world);
-    if (use_egl == 2)
-        hol_x11_destroy(&xw);
-    else if (use_egl)
-        hol_egl_destroy(&egl);
-    else
-        hol_osmesa_destroy(&gl);
-    int o = cli_finish_output(cmd);
-    return status ? status : o;
+    scene_destroy(&sc);
+    gl_destroy(&gl);
+    int out = cli_finish_output(cmd);
+    return status ? status : out;
 }
