@@ -112,7 +112,8 @@ one_line "capacity 2^30" "not a number of tiles 1..268435456"
 # --- a repeated option is a usage error (the last one won), in every
 # command; the options documented as repeatable still repeat -------------
 mkfifo rep.fifo # a command that got past its options would block on it
-for c in "world --seed 1 --seed 2" "world --save=a.img --save b.img" "nav --stats --stats" \
+for c in "world --seed 1 --seed 2" "world --save=a.img --save b.img" "world save a.img --save b.img" \
+         "world load a.img --load b.img" "nav --stats --stats" \
          "nav --budget 9 --budget=10" "tour --stats --stats - O" "render --size 8x8 --size 9x9 --stats" \
          "play --seed 1 --seed 2 --input rep.fifo" "replay rep.fifo --log . --log ." \
          "hid watch --frames 1 --frames 2" "xr --frames 1 --frames 2 --input rep.fifo" \

@@ -136,10 +136,14 @@ static int parse_args(int argc, char **argv, world_opts *o)
                 return 0;
             }
             o->capacity = (uint32_t)c;
-        } else if (!strcmp(a, "--load")) {
-            o->load = v;
-        } else if (!strcmp(a, "--save")) {
-            o->save = v;
+        } else if (!strcmp(a, "--load") || !strcmp(a, "--save")) {
+            const char **slot = a[2] == 'l' ? &o->load : &o->save;
+            if (*slot) { /* 'world save FILE --save FILE2' */
+                cli_error(CMD, 0, "%s is given twice; give each option once ('world %s FILE' "
+                                  "is %s FILE)", a, a + 2, a);
+                return 0;
+            }
+            *slot = v;
         } else if (!strcmp(a, "--check")) {
             o->check = 1;
             continue;
@@ -312,6 +316,142 @@ static int print_tiles(hol_world *w, hol_tile centre, int radius)
     return CLI_EXIT_OK;
 }
 
+/* The world the options ask for: a new one from the seed, or FILE loaded,
+ * in a store of --capacity tiles. 0 ok, else the exit status (reported). */
+static int check_capacity(const world_opts *o, hol_world_desc *desc)
+{
+    /* the bounds: at least what the radius needs, and memory the machine
+     * has (at most half of it); every refusal says which */
+    hol_world_desc lo = *desc;
+    lo.capacity = 1;
+    uint32_t minimum = hol_world_capacity_of(&lo);
+    if (o->capacity < minimum) {
+        cli_error(CMD, 0, "--capacity %u is below the minimum of %u tiles for radius %d",
+                  (unsigned)o->capacity, (unsigned)minimum,
+                  desc->radius ? desc->radius : HOL_WORLD_DEFAULT_RADIUS);
+        return CLI_EXIT_USAGE;
+    }
+    if (o->load && o->capacity < desc->capacity) {
+        cli_error(CMD, 0, "--capacity %u cannot hold '%.200s' (it needs %u tiles)",
+                  (unsigned)o->capacity, o->load, (unsigned)desc->capacity);
+        return CLI_EXIT_USAGE;
+    }
+    desc->capacity = o->capacity;
+    size_t need = hol_world_mem_size(desc);
+    long pages = sysconf(_SC_PHYS_PAGES), psize = sysconf(_SC_PAGESIZE);
+    double have = pages > 0 && psize > 0 ? (double)pages * (double)psize : 0;
+    if (have > 0 && (double)need > have / 2) {
+        cli_error(CMD, 0, "--capacity %u needs %.0f MiB, more than half of this "
+                  "machine's %.0f MiB", (unsigned)o->capacity, need / 1048576.0,
+                  have / 1048576.0);
+        return CLI_EXIT_USAGE;
+    }
+    return 0;
+}
+
+static int make_world(const world_opts *o, hol_world **out)
+{
+    hol_world_desc desc;
+    memset(&desc, 0, sizeof desc);
+    desc.seed = o->seed;
+    uint8_t *image = NULL;
+    size_t image_len = 0;
+    char msg[200];
+    int st = o->load ? read_file(o->load, &image, &image_len) : 0;
+    if (!st && o->load && hol_world_image_desc(image, image_len, &desc, msg, sizeof msg)) {
+        cli_error(CMD, 0, "'%s': %s", o->load, msg);
+        st = CLI_EXIT_USAGE;
+    }
+    if (!st && o->capacity)
+        st = check_capacity(o, &desc);
+    hol_err err = st ? HOL_OK : hol_world_make(&desc, out);
+    if (err == HOL_ENOMEM)
+        cli_error(CMD, 0, "cannot allocate %.0f MiB for the world store",
+                  hol_world_mem_size(&desc) / 1048576.0);
+    else if (err)
+        cli_error(CMD, 0, "cannot make the world: %s", hol_err_str(err));
+    if (err)
+        st = CLI_EXIT_FAIL;
+    if (!st && o->load && hol_world_load(*out, image, image_len, msg, sizeof msg)) {
+        cli_error(CMD, 0, "'%s': %s", o->load, msg);
+        hol_world_destroy(*out);
+        st = CLI_EXIT_USAGE;
+    }
+    free(image);
+    return st;
+}
+
+/* --walk parsed into *out (malloc'ed, *n steps): a syntax error comes
+ * before any world is made. 0 ok, else the exit status (reported). */
+static int parse_walk(const char *walk, uint8_t **out, size_t *n)
+{
+    size_t wlen = strlen(walk), bad = 0;
+    if (!(*out = malloc(wlen + 1))) {
+        cli_error(CMD, 0, "out of memory");
+        return CLI_EXIT_FAIL;
+    }
+    if (hol_walk_parse(walk, wlen, *out, wlen + 1, n, &bad)) {
+        cli_error(CMD, 0, "--walk: character %zu is not a step (N, E, S or W)", bad + 1);
+        free(*out);
+        return CLI_EXIT_USAGE;
+    }
+    return 0;
+}
+
+/* The steps in the room, the world collapsing around the user after each.
+ * 0 ok, else the exit status (reported); *room where the walk ends. */
+static int walk_world(hol_world *w, const uint8_t *dirs, size_t n, hol_room *room)
+{
+    *room = hol_world_user(w);
+    hol_err err = hol_world_update(w, room);
+    for (size_t i = 0; !err && i < n; i++) {
+        hol_room next = *room;
+        hol_err serr = hol_room_step(&next, dirs[i]);
+        if (serr == HOL_EROOM) {
+            cli_error(CMD, 0, "--walk: step %zu (%c) leaves the room from cell (%d,%d)",
+                      i + 1, hol_dir_to_char(dirs[i]), room->col, room->row);
+            return CLI_EXIT_USAGE;
+        }
+        if (serr) {
+            cli_error(CMD, 0, "--walk: step %zu goes beyond distance %d from O, the "
+                      "reach of tile words", i + 1, HOL_TILE_MAX_DIST);
+            return CLI_EXIT_USAGE;
+        }
+        *room = next;
+        err = hol_world_update(w, room);
+    }
+    if (err) {
+        cli_error(CMD, 0, "generation failed: %s", gen_error(err));
+        return CLI_EXIT_FAIL;
+    }
+    return 0;
+}
+
+static void print_stats(hol_world *w)
+{
+    hol_world_stats st;
+    hol_world_get_stats(w, &st);
+    printf("# tiles %" PRIu32 " capacity %" PRIu32 " collapsed %" PRIu64 " evicted %" PRIu64
+           " backtracks %" PRIu64 " bytes %zu\n",
+           st.count, st.capacity, st.tiles_collapsed, st.evicted, st.backtracks, st.bytes);
+}
+
+static int save_world(hol_world *w, const char *path)
+{
+    size_t need = hol_world_save_size(w), len = 0;
+    uint8_t *buf = malloc(need);
+    if (!buf) {
+        cli_error(CMD, 0, "cannot save: out of memory");
+        return CLI_EXIT_FAIL;
+    }
+    hol_err err = hol_world_save(w, buf, need, &len);
+    if (err)
+        cli_error(CMD, 0, "cannot save: %s", hol_err_str(err));
+    int st = err || !write_atomic(path, buf, len) ? CLI_EXIT_FAIL : 0;
+    free(buf);
+    return st;
+}
+
 int cli_cmd_world(int argc, char **argv)
 {
     if (cli_wants_help(argc, argv)) {
@@ -319,164 +459,32 @@ int cli_cmd_world(int argc, char **argv)
         return cli_finish_output(CMD);
     }
     world_opts o;
-    if (!parse_args(argc, argv, &o))
+    if (!parse_args(argc, argv, &o) || cli_check_output(CMD, "--save", o.save))
         return CLI_EXIT_USAGE;
-    if (cli_check_output(CMD, "--save", o.save))
-        return CLI_EXIT_USAGE;
-
-    size_t wlen = strlen(o.walk), nsteps = 0, bad = 0;
-    uint8_t *dirs = malloc(wlen + 1);
-    if (!dirs) {
-        cli_error(CMD, 0, "out of memory");
-        return CLI_EXIT_FAIL;
-    }
-    if (hol_walk_parse(o.walk, wlen, dirs, wlen + 1, &nsteps, &bad)) {
-        cli_error(CMD, 0, "--walk: character %zu is not a step (N, E, S or W)",
-                  bad + 1);
-        free(dirs);
-        return CLI_EXIT_USAGE;
-    }
-
-    hol_world_desc desc;
-    memset(&desc, 0, sizeof desc);
-    uint8_t *image = NULL;
-    size_t image_len = 0;
-    if (o.load) {
-        int rs = read_file(o.load, &image, &image_len);
-        if (rs) {
-            free(dirs);
-            return rs;
-        }
-        char msg[200];
-        hol_err err = hol_world_image_desc(image, image_len, &desc, msg, sizeof msg);
-        if (err) {
-            cli_error(CMD, 0, "'%s': %s", o.load, msg);
-            free(image);
-            free(dirs);
-            return CLI_EXIT_USAGE;
-        }
-    } else {
-        desc.seed = o.seed;
-    }
-    if (o.capacity) {
-        /* the bounds: at least what the radius needs, and memory the
-         * machine has (at most half of it); every refusal says which */
-        hol_world_desc lo = desc;
-        lo.capacity = 1;
-        uint32_t minimum = hol_world_capacity_of(&lo);
-        if (o.capacity < minimum) {
-            cli_error(CMD, 0, "--capacity %u is below the minimum of %u tiles for radius %d",
-                      (unsigned)o.capacity, (unsigned)minimum,
-                      desc.radius ? desc.radius : HOL_WORLD_DEFAULT_RADIUS);
-            free(image);
-            free(dirs);
-            return CLI_EXIT_USAGE;
-        }
-        if (o.load && o.capacity < desc.capacity) {
-            cli_error(CMD, 0, "--capacity %u cannot hold '%.200s' (it needs %u tiles)",
-                      (unsigned)o.capacity, o.load, (unsigned)desc.capacity);
-            free(image);
-            free(dirs);
-            return CLI_EXIT_USAGE;
-        }
-        desc.capacity = o.capacity;
-        size_t need = hol_world_mem_size(&desc);
-        long pages = sysconf(_SC_PHYS_PAGES), psize = sysconf(_SC_PAGESIZE);
-        double have = pages > 0 && psize > 0 ? (double)pages * (double)psize : 0;
-        if (have > 0 && (double)need > have / 2) {
-            cli_error(CMD, 0, "--capacity %u needs %.0f MiB, more than half of this "
-                      "machine's %.0f MiB", (unsigned)o.capacity, need / 1048576.0,
-                      have / 1048576.0);
-            free(image);
-            free(dirs);
-            return CLI_EXIT_USAGE;
-        }
-    }
-
+    uint8_t *dirs;
+    size_t nsteps = 0;
+    int status = parse_walk(o.walk, &dirs, &nsteps);
+    if (status)
+        return status;
     hol_world *w;
-    hol_err err = hol_world_make(&desc, &w);
-    if (err) {
-        if (err == HOL_ENOMEM)
-            cli_error(CMD, 0, "cannot allocate %.0f MiB for the world store",
-                      hol_world_mem_size(&desc) / 1048576.0);
-        else
-            cli_error(CMD, 0, "cannot make the world: %s", hol_err_str(err));
-        free(image);
+    if ((status = make_world(&o, &w))) {
         free(dirs);
-        return CLI_EXIT_FAIL;
+        return status;
     }
-    if (o.load) {
-        char msg[200];
-        err = hol_world_load(w, image, image_len, msg, sizeof msg);
-        free(image);
-        if (err) {
-            cli_error(CMD, 0, "'%s': %s", o.load, msg);
-            hol_world_destroy(w);
-            free(dirs);
-            return CLI_EXIT_USAGE;
-        }
-    }
-
-    int status = CLI_EXIT_OK;
-    hol_room room = hol_world_user(w);
-    err = hol_world_update(w, &room);
-    for (size_t i = 0; !err && i < nsteps; i++) {
-        hol_room next = room;
-        hol_err serr = hol_room_step(&next, dirs[i]);
-        if (serr == HOL_EROOM) {
-            cli_error(CMD, 0, "--walk: step %zu (%c) leaves the room from cell (%d,%d)",
-                      i + 1, hol_dir_to_char(dirs[i]), room.col, room.row);
-            status = CLI_EXIT_USAGE;
-            break;
-        }
-        if (serr) {
-            cli_error(CMD, 0, "--walk: step %zu goes beyond distance %d from O, the "
-                      "reach of tile words", i + 1, HOL_TILE_MAX_DIST);
-            status = CLI_EXIT_USAGE;
-            break;
-        }
-        room = next;
-        err = hol_world_update(w, &room);
-    }
+    hol_room room;
+    status = walk_world(w, dirs, nsteps, &room);
     free(dirs);
-    if (!status && err) {
-        cli_error(CMD, 0, "generation failed: %s", gen_error(err));
-        status = CLI_EXIT_FAIL;
-    }
     if (!status && !o.quiet)
         status = print_tiles(w, room.tile, o.radius);
-    if (!status && o.check) {
-        char msg[256];
-        if (hol_world_check(w, msg, sizeof msg)) {
-            cli_error(CMD, 0, "check failed: %s", msg);
-            status = CLI_EXIT_FAIL;
-        }
+    char msg[256];
+    if (!status && o.check && hol_world_check(w, msg, sizeof msg)) {
+        cli_error(CMD, 0, "check failed: %s", msg);
+        status = CLI_EXIT_FAIL;
     }
-    if (!status && o.stats) {
-        hol_world_stats st;
-        hol_world_get_stats(w, &st);
-        printf("# tiles %" PRIu32 " capacity %" PRIu32 " collapsed %" PRIu64
-               " evicted %" PRIu64 " backtracks %" PRIu64 " bytes %zu\n",
-               st.count, st.capacity, st.tiles_collapsed, st.evicted, st.backtracks,
-               st.bytes);
-    }
-    if (!status && o.save) {
-        size_t need = hol_world_save_size(w), len = 0;
-        uint8_t *buf = malloc(need);
-        if (!buf) {
-            cli_error(CMD, 0, "cannot save: out of memory");
-            status = CLI_EXIT_FAIL;
-        } else {
-            err = hol_world_save(w, buf, need, &len);
-            if (err) {
-                cli_error(CMD, 0, "cannot save: %s", hol_err_str(err));
-                status = CLI_EXIT_FAIL;
-            } else if (!write_atomic(o.save, buf, len)) {
-                status = CLI_EXIT_FAIL;
-            }
-            free(buf);
-        }
-    }
+    if (!status && o.stats)
+        print_stats(w);
+    if (!status && o.save)
+        status = save_world(w, o.save);
     hol_world_destroy(w);
     int out = cli_finish_output(CMD);
     return status ? status : out;
