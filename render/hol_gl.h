@@ -59,6 +59,7 @@ typedef hol_gl_proc (*hol_gl_getproc)(const char *name);
     X(PFNGLLINKPROGRAMPROC, LinkProgram, "glLinkProgram") \
     X(PFNGLPIXELSTOREIPROC, PixelStorei, "glPixelStorei") \
     X(PFNGLREADPIXELSPROC, ReadPixels, "glReadPixels") \
+    X(PFNGLSCISSORPROC, Scissor, "glScissor") \
     X(PFNGLSHADERSOURCEPROC, ShaderSource, "glShaderSource") \
     X(PFNGLSTENCILFUNCPROC, StencilFunc, "glStencilFunc") \
     X(PFNGLSTENCILMASKPROC, StencilMask, "glStencilMask") \

@@ -422,7 +422,7 @@ static int hol__cmp_item(const void *a, const void *b)
 
 static double hol__now(clockid_t id)
 {
-    struct timespec ts;
+    struct timespec ts = {0, 0}; /* stays zero where the clock is missing (wasm) */
     clock_gettime(id, &ts);
     return (double)ts.tv_sec * 1e3 + (double)ts.tv_nsec * 1e-6;
 }
@@ -639,6 +639,14 @@ static hol_err hol__build(hol_render *r, const hol_frame_desc *f)
     return HOL_OK;
 }
 
+/* The frame's rectangle: viewport, and the scissor its clear keeps to. */
+static void hol__viewport(hol_render *r, const hol_frame_desc *f)
+{
+    r->gl.Viewport(f->vp_x, f->vp_y, f->cam.width, f->cam.height);
+    r->gl.Enable(GL_SCISSOR_TEST);
+    r->gl.Scissor(f->vp_x, f->vp_y, f->cam.width, f->cam.height);
+}
+
 hol_err hol_render_frame(hol_render *r, const hol_frame_desc *f,
                          hol_render_stats *out_stats)
 {
@@ -652,7 +660,7 @@ hol_err hol_render_frame(hol_render *r, const hol_frame_desc *f,
         /* fully faded: the boundary colour alone, no view */
         uint8_t rgb[3];
         hol__fade_rgb(f, rgb);
-        r->gl.Viewport(0, 0, f->cam.width, f->cam.height);
+        hol__viewport(r, f);
         r->gl.DepthMask(GL_TRUE);
         r->gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
         r->gl.StencilMask(0xff);
@@ -660,8 +668,9 @@ hol_err hol_render_frame(hol_render *r, const hol_frame_desc *f,
         r->gl.ClearDepthf(1.0f);
         r->gl.ClearStencil(HOL_VIEW_STENCIL_CLEAR);
         r->gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
-        r->gl.Finish();
+        r->gl.Disable(GL_SCISSOR_TEST);
         if (out_stats) {
+            r->gl.Finish();
             memset(out_stats, 0, sizeof *out_stats);
             out_stats->cpu_ms = hol__now(CLOCK_PROCESS_CPUTIME_ID) - c0;
             out_stats->wall_ms = hol__now(CLOCK_MONOTONIC) - w0;
@@ -681,7 +690,7 @@ hol_err hol_render_frame(hol_render *r, const hol_frame_desc *f,
     int ids = (f->flags & HOL_RENDER_IDS) != 0;
     float sky[3];
     hol_scene_sky(sky);
-    r->gl.Viewport(0, 0, f->cam.width, f->cam.height);
+    hol__viewport(r, f);
     r->gl.Disable(GL_CULL_FACE);
     r->gl.Disable(GL_BLEND);
     r->gl.Disable(GL_DITHER);
@@ -820,7 +829,9 @@ hol_err hol_render_frame(hol_render *r, const hol_frame_desc *f,
     }
     r->gl.Disable(GL_BLEND);
     r->gl.BindVertexArray(0);
-    r->gl.Finish();
+    r->gl.Disable(GL_SCISSOR_TEST);
+    if (out_stats)
+        r->gl.Finish();
     st.cpu_ms = hol__now(CLOCK_PROCESS_CPUTIME_ID) - c0;
     st.uploaded_bytes = r->uploaded;
     st.tiles_built = r->tiles_built;

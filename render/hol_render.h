@@ -134,6 +134,12 @@ typedef struct hol_frame_desc {
      * green HOL_RENDER_FADE_RGB. */
     double fade;
     uint8_t fade_rgb[3];
+    /* Where the frame goes in the framebuffer: its lower-left corner, in
+     * pixels from the left and bottom (zero: the origin). A headset layer
+     * that holds both eyes side by side (WebXR's XRWebGLLayer) gives each
+     * eye's viewport here; the frame clears and draws only its own
+     * cam.width x cam.height rectangle (scissor). */
+    int vp_x, vp_y;
 } hol_frame_desc;
 
 #define HOL_RENDER_FADE_RGB {56, 117, 61}
@@ -162,7 +168,9 @@ void hol_render_set_world(hol_render *r, struct hol_world *world);
  * other content than it was built from. */
 void hol_render_invalidate(hol_render *r);
 
-/* Render one eye into the current framebuffer (viewport = cam size).
+/* Render one eye into the current framebuffer (viewport: cam size at
+ * vp_x, vp_y). Only with out_stats does it wait for the GL to finish (the
+ * figures include the GPU's time); without, the frame is queued.
  * Errors: HOL_EARG (eye not inside the user's cell unless fade >= 1, bad
  * size),
  * HOL_ENOMEM (the fixed stores overflowed). */
