@@ -59,7 +59,11 @@
 
 /* The device in use (hol_input.device). The XR values are the OpenXR
  * interaction profiles the headset binds (platform/openxr/hol_xr_bind.h);
- * HOL_DEVICE_XR is any other XR controller. Names in the input line format
+ * HOL_DEVICE_XR is any other XR controller; HOL_DEVICE_WEBXR_TOUCH the
+ * web build's WebXR controllers with A/B and X/Y buttons (Meta Quest Touch,
+ * the WebXR Gamepads Module's xr-standard layout: platform/web/hol_web_xr.h;
+ * the Quest's menu button is not given to web pages, so its bindings differ
+ * from OpenXR's touch_controller). Names in the input line format
  * (core/hol_input_io.h): hol_input_device_name. */
 enum hol_input_device {
     HOL_DEVICE_NONE = 0,      /* unknown: prompts name actions */
@@ -71,7 +75,8 @@ enum hol_input_device {
     HOL_DEVICE_XR_INDEX = 6,  /* valve/index_controller */
     HOL_DEVICE_XR_WMR = 7,    /* microsoft/motion_controller */
     HOL_DEVICE_XR = 8,        /* another XR controller */
-    HOL_DEVICE_COUNT = 9
+    HOL_DEVICE_WEBXR_TOUCH = 9, /* WebXR, xr-standard with A/B, X/Y (Quest) */
+    HOL_DEVICE_COUNT = 10
 };
 
 enum { HOL_HAND_LEFT = 0, HOL_HAND_RIGHT = 1 };

@@ -23,6 +23,9 @@ static const char *const hol__words[HOL_DEVICE_COUNT][HOL__NBTN] = {
     [HOL_DEVICE_XR_WMR] = {"TRIGGER", NULL, "MENU", "LEFT MENU", "LEFT TRACKPAD", NULL, NULL,
                            NULL},
     [HOL_DEVICE_XR] = {"TRIGGER", NULL, "MENU", NULL, NULL, NULL, NULL, NULL},
+    /* the web build's (platform/web/hol_web_xr.h): right trigger or A
+     * confirm, B back, Y menu, left stick press recentre, X minimap */
+    [HOL_DEVICE_WEBXR_TOUCH] = {"A", "B", "Y", "LEFT STICK", "X", NULL, NULL, NULL},
 };
 
 const char *hol_prompt_button(uint32_t device, uint32_t btn)

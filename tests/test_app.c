@@ -837,6 +837,7 @@ static void test_prompts_name_buttons(void **state)
         {HOL_DEVICE_XR_TOUCH, "A: next level", "MENU: resume, A: restart"},
         {HOL_DEVICE_XR_VIVE, "TRIGGER: next level", "MENU: resume, TRIGGER: restart"},
         {HOL_DEVICE_XR_INDEX, "A: next level", "B: resume, A: restart"},
+        {HOL_DEVICE_WEBXR_TOUCH, "A: next level", "Y: resume, A: restart, B: quit"},
         {HOL_DEVICE_NONE, "CONFIRM: next level, RESTART: again",
          "MENU: resume, CONFIRM: restart, QUIT: quit"},
     };
