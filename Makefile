@@ -10,6 +10,10 @@
 #   make xr         build/xr/holonomy with `holonomy xr` (XR=1 in its own folder)
 #   make xr-test    the headset against Monado in a chroot (root; see README)
 #   make quest      the Quest APK (needs NDK= and OPENXR_LOADER=; see README)
+#   make web        build/web/: the game for browsers (WebGL 2, WebXR), emscripten
+#   make web-serve  serve build/web on http://127.0.0.1:8080/ (WEB_PORT)
+#   make web-test   the web build in headless chromium, on an emulated Quest 3
+#   make deps-web   Debian's emscripten and chromium, npm's puppeteer-core and iwer
 #   make clean      remove build outputs
 #
 # Variables: CC (gcc or clang), BUILD (output folder), FUZZ_TIME (seconds),
@@ -87,6 +91,7 @@ DEB_PACKAGES := make gcc clang libcmocka-dev libosmesa6-dev libegl-dev \
 APT_LOCK_WAIT ?= 120
 APT_GET = $$SUDO env DEBIAN_FRONTEND=noninteractive apt-get -o DPkg::Lock::Timeout=$(APT_LOCK_WAIT)
 
+.PHONY: web web-serve web-test deps-web
 .PHONY: all test purity unit render-test cli-test fuzz-replay fuzz bench san clean deps xr \
         deps-cross check-clang cross-test run quest quest-help deps-quest quest-check check-hid-libusb deps-xr xr-test soak
 
@@ -130,6 +135,12 @@ $(BUILD)/tests/test_file: tests/test_file.c platform/file/hol_file.c platform/fi
 $(BUILD)/tests/test_xr_%: tests/test_xr_%.c $(XR_PURE_SRC) $(wildcard platform/openxr/*.h) $(CORE_LIB)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) -o $@ $< $(XR_PURE_SRC) $(CORE_LIB) $(LDFLAGS) -lcmocka $(LDLIBS)
+
+# The web platform's pure part (pancake devices, WebXR frames as records).
+WEB_PURE_SRC := platform/web/hol_web_input.c platform/web/hol_web_xr.c platform/openxr/hol_xr_room.c
+$(BUILD)/tests/test_web_%: tests/test_web_%.c $(WEB_PURE_SRC) $(wildcard platform/web/*.h) $(CORE_LIB)
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) -o $@ $< $(WEB_PURE_SRC) $(CORE_LIB) $(LDFLAGS) -lcmocka $(LDLIBS)
 
 # The device layer against a scripted hidapi (tests/fake_hidapi): no device here.
 $(BUILD)/tests/test_hid_dev: tests/test_hid_dev.c tests/hid_samples.h tests/fake_hidapi/hidapi/hidapi.h $(HID_SRC) $(HID_DEV_SRC) $(CORE_LIB)
@@ -288,6 +299,51 @@ deps-quest:
 # and `make quest` without the NDK stopping with exit status 2.
 quest-check: deps-quest
 	@sh tests/check_quest.sh
+
+# ---- the web build (emscripten: Debian's 3.1.6; README: Web) ---------------
+# The same core and renderer on WebGL 2, a thin loop in platform/web/, the
+# WebXR glue as a --js-library, and our own page (emcc's -o x.html minifier
+# crashes at -O1 and above in Debian's build). emcc finds acorn through
+# NODE_PATH; the cache is frozen, so no ports (html5.h, not SDL).
+EMCC     ?= emcc
+EMCC_ENV := NODE_PATH=/usr/share/nodejs EM_CACHE=/usr/share/emscripten/cache
+WEB      := $(BUILD)/web
+WEB_SRC  := $(CORE_SRC) $(filter-out render/hol_png.c,$(RENDER_SRC)) \
+            $(wildcard platform/web/*.c) platform/openxr/hol_xr_room.c
+WEB_OBJ  := $(WEB_SRC:%.c=$(BUILD)/web-obj/%.o)
+WEB_CFLAGS := $(CSTD) $(WARN) -O2 -ffp-contract=off -D_DEFAULT_SOURCE -MMD -MP
+WEB_LDFLAGS := -O2 -sENVIRONMENT=web -sMIN_WEBGL_VERSION=2 -sMAX_WEBGL_VERSION=2 \
+  -sALLOW_MEMORY_GROWTH=1 -sINITIAL_MEMORY=67108864 -sTOTAL_STACK=1048576 \
+  --js-library platform/web/hol_web_lib.js
+WEB_PAGE := $(addprefix $(WEB)/,index.html page.js store.js)
+WEB_PORT ?= 8080
+
+$(BUILD)/web-obj/%.o: %.c
+	@mkdir -p $(dir $@)
+	$(EMCC_ENV) $(EMCC) $(WEB_CFLAGS) -c $< -o $@
+
+$(WEB)/holonomy.js: $(WEB_OBJ) platform/web/hol_web_lib.js
+	$(EMCC_ENV) $(EMCC) $(WEB_LDFLAGS) $(WEB_OBJ) -o $@
+
+$(WEB)/%: platform/web/%
+	@mkdir -p $(dir $@)
+	cp $< $@
+
+web: $(WEB)/holonomy.js $(WEB_PAGE)
+	@echo "make web: $(WEB)/ ($$(du -sk $(WEB)/holonomy.wasm | cut -f1) KB wasm); serve it with make web-serve"
+
+web-serve: web
+	@echo "http://127.0.0.1:$(WEB_PORT)/ (Ctrl-C stops)"
+	cd $(WEB) && python3 -m http.server $(WEB_PORT) --bind 127.0.0.1
+
+WEB_DEB_PACKAGES := emscripten chromium
+deps-web:
+	@$(MAKE) -s deps DEB_PACKAGES="$(WEB_DEB_PACKAGES)"
+	@cd tests/web && if npm ls --depth=0 >/dev/null 2>&1; then echo "make deps-web: npm packages present"; \
+	  else npm ci --no-audit --no-fund; fi
+
+web-test: web deps-web $(BUILD)/holonomy
+	@HOLONOMY=$(BUILD)/holonomy WEB=$(WEB) node tests/web/run.mjs
 
 clean:
 	rm -rf $(BUILD)

@@ -1,0 +1,55 @@
+/* hol_web.h - the browser platform's loop state (internal to
+ * platform/web/): the WebGL 2 context, the renderer, the game session,
+ * the pancake devices and the WebXR session's state. One instance (the
+ * page runs one game); hol_web_main.c owns setup and the pancake loop,
+ * hol_web_xr_loop.c the XR frames, hol_web_game.c the session.
+ */
+#ifndef HOL_WEB_H
+#define HOL_WEB_H
+
+#include <stdint.h>
+
+#include "../../core/hol_app.h"
+#include "../../render/hol_render.h"
+#include "hol_web_input.h"
+#include "hol_web_xr.h"
+
+typedef struct hol_web {
+    int gl;                  /* EMSCRIPTEN_WEBGL_CONTEXT_HANDLE */
+    hol_render *rnd;
+    hol_web_pancake pan;
+    double t0_ms;            /* performance.now() at the start: time 0 */
+    double last_t, last_frame_t;
+    long frames;             /* app steps, pancake and XR */
+    int over;                /* the session is over (quit, campaign done) */
+    int failed;
+    /* WebXR */
+    int xr_active;
+    hol_web_xr_state xr;
+    hol_web_xr_frame xf;     /* written by the glue each XR frame */
+    long xr_frames, xr_two_views;
+    double xr_cpu_ms[4096];  /* per XR frame: step and both eyes (ms) */
+    int xr_ncpu;
+    /* read-back check of both eyes at one XR frame (make web-test) */
+    long check_frame;        /* -1: none */
+    uint8_t *check_px[2];
+    int check_w[2], check_h[2];
+    hol_camera check_cam[2];
+    hol_room check_user[2];
+} hol_web;
+
+extern hol_web hol_web_g;
+
+/* hol_web_game.c: the session (levels, logs, recording) */
+int hol_web_game_open(char *msg, size_t cap);
+/* 0 go on, 1 over, -1 failure (reported). */
+int hol_web_game_step(const hol_input *in);
+hol_app *hol_web_game_app(void);
+void hol_web_game_finish(void);
+/* the end line, as `holonomy play` prints it */
+void hol_web_game_print_end(void);
+
+/* hol_web_xr_loop.c: render both eyes of an XR frame into framebuffer fb */
+void hol_web_xr_render(const hol_app_view *v, const hol_input *in, int fb);
+
+#endif

@@ -1,0 +1,217 @@
+// hol_web_lib.js - the page's side of the web platform (emcc --js-library):
+// the WebXR session and its frames, the page's focus and config, events to
+// the page. The C side is platform/web/hol_web_*.c.
+//
+// WebXR: an immersive-vr session with the local-floor reference space
+// (bounded-floor where the device offers it), an XRWebGLLayer with depth and
+// stencil on the page's WebGL 2 context, and per XRFrame: the viewer pose,
+// each view's viewport, projection matrix and transform, both controllers'
+// grips and xr-standard gamepads (arrays that may hold nulls) copied into
+// the C frame record (hol_web_xr.h: offsets asked from hol_web_xr_offset),
+// then hol_web_xr_step draws both eyes into the layer's framebuffer
+// (registered with emscripten's GL as a framebuffer name; IWER's layer has
+// none: the canvas's default framebuffer).
+
+var HolWebLib = {
+  $HolXR: {
+    session: null,
+    space: null,
+    spaceType: '',
+    fb: null,
+    fbName: 0,
+    off: null,
+    frames: 0,
+
+    supported: async function () {
+      if (!navigator.xr || !navigator.xr.isSessionSupported) return false;
+      try {
+        return await navigator.xr.isSessionSupported('immersive-vr');
+      } catch (e) {
+        return false;
+      }
+    },
+
+    offsets: function () {
+      if (HolXR.off) return HolXR.off;
+      var names = ['frame', 'nviews', 'visibility', 'head_valid', 'head_pos', 'head_quat',
+        'bounds', 'view', 'view_size', 'vp', 'proj', 'pos', 'quat', 'pad', 'pad_size',
+        'present', 'touch_layout', 'grip_valid', 'grip_pos', 'grip_quat', 'button', 'axes'];
+      var o = {};
+      for (var i = 0; i < names.length; i++) o[names[i]] = Module['_hol_web_xr_offset'](i);
+      HolXR.off = o;
+      return o;
+    },
+
+    enter: async function () {
+      if (HolXR.session) return;
+      var s = await navigator.xr.requestSession('immersive-vr', {
+        requiredFeatures: ['local-floor'],
+        optionalFeatures: ['bounded-floor']
+      });
+      try {
+        var gl = GLctx;
+        if (gl.makeXRCompatible) await gl.makeXRCompatible();
+        s.updateRenderState({
+          baseLayer: new XRWebGLLayer(s, gl, {
+            antialias: false, depth: true, stencil: true, alpha: false
+          })
+        });
+        try {
+          HolXR.space = await s.requestReferenceSpace('bounded-floor');
+          HolXR.spaceType = 'bounded-floor';
+        } catch (e) {
+          HolXR.space = await s.requestReferenceSpace('local-floor');
+          HolXR.spaceType = 'local-floor';
+        }
+      } catch (e) {
+        s.end();
+        throw e;
+      }
+      HolXR.session = s;
+      HolXR.frames = 0;
+      s.addEventListener('end', HolXR.ended);
+      s.addEventListener('visibilitychange', function () {
+        console.log('web: xr visibility ' + s.visibilityState);
+      });
+      console.log('web: xr reference space ' + HolXR.spaceType);
+      Module['_hol_web_xr_active'](1);
+      if (Module['holEvent']) Module['holEvent']('xr', 'started');
+      s.requestAnimationFrame(HolXR.frame);
+    },
+
+    leave: function () {
+      if (HolXR.session) HolXR.session.end();
+    },
+
+    ended: function () {
+      HolXR.session = null;
+      HolXR.space = null;
+      HolXR.fb = null;
+      Module['_hol_web_xr_active'](0);
+      if (Module['holEvent']) Module['holEvent']('xr', 'ended');
+    },
+
+    // The layer's framebuffer as a GL name emscripten's glBindFramebuffer
+    // knows (0: the default framebuffer).
+    fbId: function (fb) {
+      if (!fb) return 0;
+      if (fb !== HolXR.fb) {
+        var id = GL.getNewId(GL.framebuffers);
+        fb.name = id;
+        GL.framebuffers[id] = fb;
+        HolXR.fb = fb;
+        HolXR.fbName = id;
+      }
+      return HolXR.fbName;
+    },
+
+    put: function (f, at, arr, n) {
+      for (var i = 0; i < n; i++) f[at + i] = arr && arr[i] !== undefined ? arr[i] : 0;
+    },
+
+    pads: function (xrf, f, o, base) {
+      for (var h = 0; h < 2; h++) HolXR.put(f, base + o.pad + h * o.pad_size, null, o.pad_size);
+      var srcs = xrf.session.inputSources;
+      for (var i = 0; i < srcs.length; i++) {
+        var src = srcs[i];
+        var h = src.handedness === 'left' ? 0 : src.handedness === 'right' ? 1 : -1;
+        if (h < 0) continue;
+        var p = base + o.pad + h * o.pad_size;
+        var gp = src.gamepad;
+        if (src.gripSpace) {
+          var gpose = xrf.getPose(src.gripSpace, HolXR.space);
+          if (gpose) {
+            var t = gpose.transform;
+            f[p + o.grip_valid] = 1;
+            HolXR.put(f, p + o.grip_pos, [t.position.x, t.position.y, t.position.z], 3);
+            HolXR.put(f, p + o.grip_quat,
+              [t.orientation.x, t.orientation.y, t.orientation.z, t.orientation.w], 4);
+          }
+        }
+        if (!gp) continue;
+        f[p + o.present] = 1;
+        var b = gp.buttons || [];
+        f[p + o.touch_layout] = b.length >= 6 && b[4] && b[5] ? 1 : 0;
+        for (var k = 0; k < 8; k++) f[p + o.button + k] = b[k] && b[k].pressed ? 1 : 0;
+        var ax = gp.axes || [];
+        for (var k = 0; k < 4; k++) f[p + o.axes + k] = typeof ax[k] === 'number' ? ax[k] : 0;
+      }
+    },
+
+    // Bounded-floor: the width and depth of the bounds polygon's box.
+    bounds: function () {
+      var g = HolXR.space && HolXR.space.boundsGeometry;
+      if (!g || g.length < 3) return [0, 0];
+      var x0 = 1e9, x1 = -1e9, z0 = 1e9, z1 = -1e9;
+      for (var i = 0; i < g.length; i++) {
+        x0 = Math.min(x0, g[i].x); x1 = Math.max(x1, g[i].x);
+        z0 = Math.min(z0, g[i].z); z1 = Math.max(z1, g[i].z);
+      }
+      return [x1 - x0, z1 - z0];
+    },
+
+    frame: function (t, xrf) {
+      var s = HolXR.session;
+      if (!s) return;
+      s.requestAnimationFrame(HolXR.frame);
+      var o = HolXR.offsets();
+      var base = Module['_hol_web_xr_frame_buffer']() >> 2;
+      var f = HEAPF32;
+      HolXR.put(f, base, null, o.frame);
+      var vis = s.visibilityState;
+      f[base + o.visibility] = vis === 'visible' ? 2 : vis === 'visible-blurred' ? 1 : 0;
+      HolXR.put(f, base + o.bounds, HolXR.bounds(), 2);
+      var pose = xrf.getViewerPose(HolXR.space);
+      var layer = s.renderState.baseLayer;
+      if (pose) {
+        var tr = pose.transform;
+        f[base + o.head_valid] = pose.emulatedPosition ? 0 : 1;
+        HolXR.put(f, base + o.head_pos, [tr.position.x, tr.position.y, tr.position.z], 3);
+        HolXR.put(f, base + o.head_quat,
+          [tr.orientation.x, tr.orientation.y, tr.orientation.z, tr.orientation.w], 4);
+        var n = Math.min(pose.views.length, 2);
+        f[base + o.nviews] = n;
+        for (var i = 0; i < n; i++) {
+          var v = pose.views[i], vp = layer.getViewport(v), at = base + o.view + i * o.view_size;
+          HolXR.put(f, at + o.vp, [vp.x, vp.y, vp.width, vp.height], 4);
+          HolXR.put(f, at + o.proj, v.projectionMatrix, 16);
+          var vt = v.transform;
+          HolXR.put(f, at + o.pos, [vt.position.x, vt.position.y, vt.position.z], 3);
+          HolXR.put(f, at + o.quat,
+            [vt.orientation.x, vt.orientation.y, vt.orientation.z, vt.orientation.w], 4);
+        }
+      }
+      HolXR.pads(xrf, f, o, base);
+      HolXR.frames++;
+      if (!pose) return; // no views to draw this frame (tracking lost)
+      var rc = Module['_hol_web_xr_step'](t, HolXR.fbId(layer.framebuffer));
+      if (rc !== 0) s.end();
+    }
+  },
+  $HolXR__postset: 'Module["holXR"] = HolXR;',
+
+  hol_web_js_focused__deps: ['$HolXR'],
+  hol_web_js_focused: function () {
+    return document.hasFocus() && !document.hidden ? 1 : 0;
+  },
+
+  hol_web_js_event: function (kind, text) {
+    var k = UTF8ToString(kind), t = UTF8ToString(text);
+    if (Module['holEvent']) Module['holEvent'](k, t);
+  },
+
+  hol_web_js_config: function (key, buf, cap) {
+    var c = Module['holConfig'] || {};
+    var v = c[UTF8ToString(key)];
+    stringToUTF8(v === undefined || v === null ? '' : String(v), buf, cap);
+  },
+
+  hol_web_js_store_put: function (name, data, n) {
+    var nm = UTF8ToString(name);
+    var bytes = HEAPU8.slice(data, data + n);
+    if (Module['holStorePut']) Module['holStorePut'](nm, bytes);
+  }
+};
+
+autoAddDeps(HolWebLib, '$HolXR');
+mergeInto(LibraryManager.library, HolWebLib);

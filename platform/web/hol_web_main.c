@@ -1,0 +1,289 @@
+/* hol_web_main.c - the browser platform (emscripten): a WebGL 2 context with
+ * a stencil buffer on the page's canvas, the renderer, the session, and
+ * the pancake loop (keyboard, pointer-lock mouse, the Gamepad API, touch)
+ * on the window's animation frames. While a WebXR session runs, its frames
+ * drive the app instead (hol_web_lib.js calls hol_web_xr_step).
+ *
+ * Like every platform's loop: poll, fill the input record, step the
+ * session, render. The page (index.html, page.js) and the WebXR glue
+ * (hol_web_lib.js) call the functions marked EMSCRIPTEN_KEEPALIVE.
+ */
+#include <emscripten.h>
+#include <emscripten/html5.h>
+#include <GLES3/gl3.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "../../render/hol_app_frame.h"
+#include "hol_web.h"
+
+hol_web hol_web_g;
+
+/* the page's state and config (hol_web_lib.js) */
+extern int hol_web_js_focused(void);
+extern void hol_web_js_event(const char *kind, const char *text);
+
+/* ---- devices ---------------------------------------------------------------- */
+
+static EM_BOOL on_key(int type, const EmscriptenKeyboardEvent *e, void *user)
+{
+    (void)user;
+    int k = hol_web_key_from_code(e->code);
+    if (k < 0 || e->ctrlKey || e->altKey || e->metaKey)
+        return EM_FALSE; /* the browser's own keys stay the browser's */
+    hol_web_key(&hol_web_g.pan, k, type == EMSCRIPTEN_EVENT_KEYDOWN, e->repeat);
+    return EM_TRUE;
+}
+
+static EM_BOOL on_mouse(int type, const EmscriptenMouseEvent *e, void *user)
+{
+    (void)user;
+    hol_web_pancake *p = &hol_web_g.pan;
+    if (type == EMSCRIPTEN_EVENT_MOUSEDOWN && e->button == 0 && !p->pointer_locked &&
+        !hol_web_g.xr_active)
+        emscripten_request_pointerlock("#canvas", 1);
+    if (type == EMSCRIPTEN_EVENT_MOUSEMOVE && (p->pointer_locked || (e->buttons & 1))) {
+        p->mouse_dx += e->movementX;
+        p->mouse_dy += e->movementY;
+    }
+    return EM_FALSE;
+}
+
+static EM_BOOL on_pointerlock(int type, const EmscriptenPointerlockChangeEvent *e, void *user)
+{
+    (void)type, (void)user;
+    hol_web_g.pan.pointer_locked = e->isActive;
+    return EM_FALSE;
+}
+
+static EM_BOOL on_blur(int type, const EmscriptenFocusEvent *e, void *user)
+{
+    (void)type, (void)e, (void)user;
+    /* keys released while the page had no focus never come up */
+    memset(hol_web_g.pan.held, 0, sizeof hol_web_g.pan.held);
+    hol_web_g.pan.touch_buttons = 0;
+    return EM_FALSE;
+}
+
+/* Touch: a finger landing on the left half is the walking stick, one on
+ * the right half drags the look. */
+static struct {
+    long stick_id, look_id;
+    double sx, sy, lx, ly;
+} touch = {-1, -1, 0, 0, 0, 0};
+
+static EM_BOOL on_touch(int type, const EmscriptenTouchEvent *e, void *user)
+{
+    (void)user;
+    hol_web_pancake *p = &hol_web_g.pan;
+    double cw = 0, ch = 0;
+    emscripten_get_element_css_size("#canvas", &cw, &ch);
+    double radius = (cw < ch ? cw : ch) * 0.12 + 1;
+    for (int i = 0; i < e->numTouches; i++) {
+        const EmscriptenTouchPoint *t = &e->touches[i];
+        if (!t->isChanged)
+            continue;
+        p->touch_used = 1;
+        if (type == EMSCRIPTEN_EVENT_TOUCHSTART) {
+            if (t->targetX < cw / 2 && touch.stick_id < 0)
+                touch.stick_id = t->identifier, touch.sx = t->targetX, touch.sy = t->targetY;
+            else if (touch.look_id < 0)
+                touch.look_id = t->identifier, touch.lx = t->targetX, touch.ly = t->targetY;
+        } else if (type == EMSCRIPTEN_EVENT_TOUCHMOVE) {
+            if (t->identifier == touch.stick_id) {
+                double x = (t->targetX - touch.sx) / radius, y = -(t->targetY - touch.sy) / radius;
+                double m = x * x + y * y > 1 ? 1 / __builtin_sqrt(x * x + y * y) : 1;
+                p->touch_move[0] = (float)(x * m);
+                p->touch_move[1] = (float)(y * m);
+            } else if (t->identifier == touch.look_id) {
+                p->touch_dx += t->targetX - touch.lx;
+                p->touch_dy += t->targetY - touch.ly;
+                touch.lx = t->targetX, touch.ly = t->targetY;
+            }
+        } else { /* end, cancel */
+            if (t->identifier == touch.stick_id) {
+                touch.stick_id = -1;
+                p->touch_move[0] = p->touch_move[1] = 0;
+            } else if (t->identifier == touch.look_id) {
+                touch.look_id = -1;
+            }
+        }
+    }
+    return EM_TRUE;
+}
+
+/* The on-screen buttons (page.js): HOL_BTN_* bit held or released. */
+EMSCRIPTEN_KEEPALIVE void hol_web_touch_button(int bit, int down)
+{
+    hol_web_pancake *p = &hol_web_g.pan;
+    uint32_t b = (uint32_t)bit & HOL_BTN_ALL;
+    if (down) {
+        p->touch_taps |= b & ~p->touch_buttons;
+        p->touch_buttons |= b;
+    } else {
+        p->touch_buttons &= ~b;
+    }
+    p->touch_used = 1;
+}
+
+/* The first connected gamepad with the standard mapping, sampled. */
+static void poll_gamepad(hol_web_pancake *p)
+{
+    p->pad_connected = 0;
+    if (emscripten_sample_gamepad_data() != EMSCRIPTEN_RESULT_SUCCESS)
+        return;
+    int n = emscripten_get_num_gamepads();
+    for (int i = 0; i < n; i++) {
+        EmscriptenGamepadEvent g;
+        if (emscripten_get_gamepad_status(i, &g) != EMSCRIPTEN_RESULT_SUCCESS || !g.connected ||
+            strcmp(g.mapping, "standard"))
+            continue;
+        p->pad_connected = 1;
+        p->pad_standard = 1;
+        for (int a = 0; a < 4; a++)
+            p->pad_axes[a] = a < g.numAxes ? (float)g.axis[a] : 0.0f;
+        for (int b = 0; b < HOL_WEB_PAD_BUTTONS; b++)
+            p->pad_button[b] = b < g.numButtons && g.digitalButton[b];
+        return;
+    }
+}
+
+/* ---- the loop ------------------------------------------------------------- */
+
+/* Time since the start, never going back. */
+static double now_s(double t_ms)
+{
+    double t = (t_ms - hol_web_g.t0_ms) / 1000.0;
+    if (t < hol_web_g.last_t)
+        t = hol_web_g.last_t;
+    hol_web_g.last_t = t;
+    return t;
+}
+
+/* One step of the session with in; 0 go on. */
+int hol_web_step(const hol_input *in)
+{
+    hol_web *w = &hol_web_g;
+    int rc = hol_web_game_step(in);
+    w->frames++;
+    if (rc < 0) {
+        w->failed = w->over = 1;
+        hol_web_js_event("failed", "the session failed (see the console)");
+        return 1;
+    }
+    if (hol_app_get_events(hol_web_game_app())->level_started)
+        hol_render_invalidate(w->rnd);
+    if (rc > 0) {
+        w->over = 1;
+        hol_web_game_print_end();
+        hol_web_game_finish();
+        hol_web_js_event("over", "");
+        return 1;
+    }
+    return 0;
+}
+
+static EM_BOOL pancake_frame(double t_ms, void *user)
+{
+    (void)user;
+    hol_web *w = &hol_web_g;
+    if (w->xr_active || w->over)
+        return EM_TRUE; /* the XR session draws, or nothing is left to do */
+    double t = now_s(t_ms), dt = t - w->last_frame_t;
+    w->last_frame_t = t;
+    hol_web_pancake *p = &w->pan;
+    p->focused = hol_web_js_focused();
+    poll_gamepad(p);
+    hol_input in;
+    hol_web_pancake_input(p, t, dt, hol_app_get_view(hol_web_game_app())->yaw_deg, &in);
+    if (hol_web_step(&in))
+        return EM_TRUE;
+    int cw = 0, ch = 0;
+    emscripten_get_canvas_element_size("#canvas", &cw, &ch);
+    if (cw < 16 || ch < 16)
+        return EM_TRUE;
+    hol_frame_desc fd;
+    hol_app_frame_desc(hol_app_get_view(hol_web_game_app()), -1, cw, ch, 0, &fd);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    if (hol_render_frame(w->rnd, &fd, NULL)) {
+        printf("web: rendering failed\n");
+        w->failed = w->over = 1;
+        hol_web_js_event("failed", "rendering failed");
+    }
+    return EM_TRUE;
+}
+
+static hol_render_proc gl_getproc(const char *name)
+{
+    return (hol_render_proc)emscripten_webgl_get_proc_address(name);
+}
+
+/* The WebGL 2 context: depth, 8 stencil bits, no antialiasing (the
+ * stencil portals' edges are the renderer's business). */
+static int make_gl(void)
+{
+    EmscriptenWebGLContextAttributes a;
+    emscripten_webgl_init_context_attributes(&a);
+    a.majorVersion = 2;
+    a.minorVersion = 0;
+    a.depth = EM_TRUE;
+    a.stencil = EM_TRUE;
+    a.antialias = EM_FALSE;
+    a.alpha = EM_FALSE;
+    a.premultipliedAlpha = EM_FALSE;
+    a.powerPreference = EM_WEBGL_POWER_PREFERENCE_HIGH_PERFORMANCE;
+    EMSCRIPTEN_WEBGL_CONTEXT_HANDLE ctx = emscripten_webgl_create_context("#canvas", &a);
+    if (ctx <= 0 || emscripten_webgl_make_context_current(ctx) != EMSCRIPTEN_RESULT_SUCCESS)
+        return 1;
+    hol_web_g.gl = (int)ctx;
+    GLint stencil = 0;
+    glGetIntegerv(GL_STENCIL_BITS, &stencil);
+    printf("web: WebGL 2 context: %s, %d stencil bits\n",
+           (const char *)glGetString(GL_RENDERER), (int)stencil);
+    return stencil < 8;
+}
+
+static void listen(void)
+{
+    const char *win = EMSCRIPTEN_EVENT_TARGET_WINDOW;
+    emscripten_set_keydown_callback(win, NULL, 1, on_key);
+    emscripten_set_keyup_callback(win, NULL, 1, on_key);
+    emscripten_set_mousedown_callback("#canvas", NULL, 1, on_mouse);
+    emscripten_set_mousemove_callback(win, NULL, 1, on_mouse);
+    emscripten_set_pointerlockchange_callback(EMSCRIPTEN_EVENT_TARGET_DOCUMENT, NULL, 1,
+                                              on_pointerlock);
+    emscripten_set_blur_callback(win, NULL, 1, on_blur);
+    emscripten_set_touchstart_callback("#canvas", NULL, 1, on_touch);
+    emscripten_set_touchmove_callback("#canvas", NULL, 1, on_touch);
+    emscripten_set_touchend_callback("#canvas", NULL, 1, on_touch);
+    emscripten_set_touchcancel_callback("#canvas", NULL, 1, on_touch);
+}
+
+int main(void)
+{
+    hol_web *w = &hol_web_g;
+    w->check_frame = -1;
+    char msg[256] = "";
+    if (make_gl()) {
+        hol_web_js_event("failed", "this browser has no WebGL 2 with a stencil buffer");
+        return 1;
+    }
+    if (hol_web_game_open(msg, sizeof msg)) {
+        printf("web: %s\n", msg);
+        hol_web_js_event("failed", msg);
+        return 1;
+    }
+    hol_render_desc rd;
+    memset(&rd, 0, sizeof rd);
+    rd.getproc = gl_getproc;
+    rd.world = hol_app_world(hol_web_game_app());
+    if (hol_render_create(&rd, &w->rnd)) {
+        hol_web_js_event("failed", "cannot initialise the renderer on this WebGL context");
+        return 1;
+    }
+    w->t0_ms = emscripten_performance_now();
+    listen();
+    emscripten_request_animation_frame_loop(pancake_frame, NULL);
+    hol_web_js_event("ready", "");
+    return 0;
+}

@@ -1,0 +1,101 @@
+/* hol_web_xr.h - one WebXR frame as the app's input record and each eye's
+ * camera. Pure (no browser, no GL): the glue (hol_web_lib.js) copies the
+ * XRFrame's numbers into a hol_web_xr_frame, the loop (hol_web_main.c)
+ * calls these; tests/test_web_xr.c runs them natively.
+ *
+ * Contract
+ * - Reference space: `local-floor` (origin on the floor where the session
+ *   began, the user looking down -z) or `bounded-floor` (origin near the
+ *   middle of the play area): both are OpenXR's STAGE convention, so the
+ *   room sits in them exactly as in the headset build
+ *   (platform/openxr/hol_xr_room.h: centred on the origin, north along -z;
+ *   recentre places it from the head).
+ * - Views: each view's viewport in the layer's framebuffer, its projection
+ *   matrix (column-major, as XRView.projectionMatrix) and its transform
+ *   (XRView.transform: position and orientation in the reference space).
+ *   hol_web_xr_camera gives the renderer's headset camera: the eye in room
+ *   coordinates, the orientation taking view space to room space, the four
+ *   tangents of the field of view read from the matrix (an asymmetric
+ *   frustum: tan_right = (1 + m8) / m0, tan_left = (m8 - 1) / m0,
+ *   tan_up = (1 + m9) / m5, tan_down = (m9 - 1) / m5), the viewport's size.
+ * - Controllers: the WebXR Gamepads Module's "xr-standard" layout (buttons
+ *   0 trigger, 1 squeeze, 2 touchpad, 3 thumbstick press, 4 A or X, 5 B or
+ *   Y; axes 2, 3 the thumbstick; missing entries are zero - the arrays the
+ *   browser gives may hold nulls). With A/B and X/Y (Meta Quest Touch,
+ *   HOL_DEVICE_WEBXR_TOUCH): right trigger or A confirm, B back, Y menu,
+ *   X minimap, left thumbstick press recentre; in the app's pause menu
+ *   confirm restarts and back quits (core/hol_app.h). Another xr-standard
+ *   controller (HOL_DEVICE_NONE: the prompts name actions, not inputs):
+ *   right trigger confirm, right squeeze back,
+ *   left trigger menu, left squeeze minimap, left thumbstick press
+ *   recentre. The thumbsticks' axes move nothing: the player walks.
+ * - hol_web_xr_input fills the frame's record: time, HOL_INPUT_FOCUSED
+ *   while the session is `visible` (not `visible-blurred` or `hidden`), the
+ *   head (the viewer pose) and both grips in room coordinates, buttons,
+ *   pressed (held now, not at the previous frame; nothing is held or
+ *   pressed while the session is not focused, and an input held through
+ *   that is not pressed when focus comes back), device, and
+ *   HOL_INPUT_BOUNDS_SMALL when the bounded-floor area cannot hold the
+ *   room. A recentre press places the room from the head before the head
+ *   is converted (as the headset does).
+ */
+#ifndef HOL_WEB_XR_H
+#define HOL_WEB_XR_H
+
+#include <stdint.h>
+
+#include "../../core/hol_input.h"
+#include "../../render/hol_view.h"
+#include "../openxr/hol_xr_room.h"
+
+#define HOL_WEB_XR_BUTTONS 8
+#define HOL_WEB_XR_AXES 4
+
+enum { HOL_WEB_XR_HIDDEN = 0, HOL_WEB_XR_BLURRED = 1, HOL_WEB_XR_VISIBLE = 2 };
+
+typedef struct hol_web_xr_view {
+    float vp[4];      /* viewport x, y, width, height (pixels, from the bottom left) */
+    float proj[16];   /* projection matrix, column-major */
+    float pos[3];     /* eye position in the reference space, metres */
+    float quat[4];    /* eye orientation x, y, z, w */
+} hol_web_xr_view;
+
+typedef struct hol_web_xr_pad {
+    float present;                      /* 1: a controller with a gamepad */
+    float touch_layout;                 /* 1: A/B or X/Y buttons (4, 5) */
+    float grip_valid;                   /* 1: grip pose below */
+    float grip_pos[3], grip_quat[4];
+    float button[HOL_WEB_XR_BUTTONS];   /* 1 pressed, 0 not (or missing) */
+    float axes[HOL_WEB_XR_AXES];
+} hol_web_xr_pad;
+
+/* Everything the glue copies per XRFrame: floats only, so the page writes
+ * it with one Float32Array view (hol_web_lib.js names the offsets). */
+typedef struct hol_web_xr_frame {
+    float nviews;
+    float visibility;                   /* HOL_WEB_XR_* */
+    float head_valid;
+    float head_pos[3], head_quat[4];
+    float bounds[2];                    /* bounded-floor width, depth (0: none) */
+    hol_web_xr_view view[2];
+    hol_web_xr_pad pad[2];              /* HOL_HAND_LEFT, HOL_HAND_RIGHT */
+} hol_web_xr_frame;
+
+/* What the loop keeps between frames. Zero it when a session begins. */
+typedef struct hol_web_xr_state {
+    hol_xr_calib calib;
+    uint32_t prev_buttons;
+    double last_t;
+} hol_web_xr_state;
+
+/* The room camera of one view (viewport size as the camera's size). */
+void hol_web_xr_camera(const hol_xr_calib *c, const hol_web_xr_view *v, hol_camera *out);
+
+/* The buttons held (HOL_BTN_*) and the device of the controllers. */
+uint32_t hol_web_xr_buttons(const hol_web_xr_pad pad[2], uint32_t *out_device);
+
+/* The frame's input record at time t (seconds; never before the last). */
+void hol_web_xr_input(hol_web_xr_state *st, const hol_web_xr_frame *f, double t,
+                      hol_input *out);
+
+#endif

@@ -1,0 +1,202 @@
+/* hol_web_xr_loop.c - the WebXR frames: the glue (hol_web_lib.js) copies
+ * each XRFrame into hol_web_g.xf and calls hol_web_xr_step, which steps the
+ * session with the frame's record and draws both eyes into the layer's
+ * framebuffer, each in its viewport, as the headset build draws its
+ * swapchains (platform/openxr: the eyes where they are, the safety fade,
+ * each eye's own cell, the hand map on the left grip).
+ */
+#include <emscripten.h>
+#include <GLES3/gl3.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "../../core/hol_motion.h"
+#include "../../render/hol_app_frame.h"
+#include "hol_web.h"
+
+int hol_web_step(const hol_input *in);
+
+#define HOL__MARGIN 0.15 /* the motion's default hedge margin */
+
+/* Offsets (in floats) of hol_web_xr_frame's fields, for the glue. */
+enum {
+    HOL__OFF_FRAME_FLOATS = 0, HOL__OFF_NVIEWS, HOL__OFF_VISIBILITY, HOL__OFF_HEAD_VALID,
+    HOL__OFF_HEAD_POS, HOL__OFF_HEAD_QUAT, HOL__OFF_BOUNDS, HOL__OFF_VIEW, HOL__OFF_VIEW_FLOATS,
+    HOL__OFF_VIEW_VP, HOL__OFF_VIEW_PROJ, HOL__OFF_VIEW_POS, HOL__OFF_VIEW_QUAT, HOL__OFF_PAD,
+    HOL__OFF_PAD_FLOATS, HOL__OFF_PAD_PRESENT, HOL__OFF_PAD_TOUCH, HOL__OFF_PAD_GRIP_VALID,
+    HOL__OFF_PAD_GRIP_POS, HOL__OFF_PAD_GRIP_QUAT, HOL__OFF_PAD_BUTTON, HOL__OFF_PAD_AXES
+};
+
+EMSCRIPTEN_KEEPALIVE int hol_web_xr_offset(int what)
+{
+#define F(x) (int)((x) / sizeof(float))
+    static const int off[] = {
+        F(sizeof(hol_web_xr_frame)),
+        F(offsetof(hol_web_xr_frame, nviews)),
+        F(offsetof(hol_web_xr_frame, visibility)),
+        F(offsetof(hol_web_xr_frame, head_valid)),
+        F(offsetof(hol_web_xr_frame, head_pos)),
+        F(offsetof(hol_web_xr_frame, head_quat)),
+        F(offsetof(hol_web_xr_frame, bounds)),
+        F(offsetof(hol_web_xr_frame, view)),
+        F(sizeof(hol_web_xr_view)),
+        F(offsetof(hol_web_xr_view, vp)),
+        F(offsetof(hol_web_xr_view, proj)),
+        F(offsetof(hol_web_xr_view, pos)),
+        F(offsetof(hol_web_xr_view, quat)),
+        F(offsetof(hol_web_xr_frame, pad)),
+        F(sizeof(hol_web_xr_pad)),
+        F(offsetof(hol_web_xr_pad, present)),
+        F(offsetof(hol_web_xr_pad, touch_layout)),
+        F(offsetof(hol_web_xr_pad, grip_valid)),
+        F(offsetof(hol_web_xr_pad, grip_pos)),
+        F(offsetof(hol_web_xr_pad, grip_quat)),
+        F(offsetof(hol_web_xr_pad, button)),
+        F(offsetof(hol_web_xr_pad, axes)),
+    };
+#undef F
+    return what >= 0 && what < (int)(sizeof off / sizeof off[0]) ? off[what] : -1;
+}
+
+EMSCRIPTEN_KEEPALIVE float *hol_web_xr_frame_buffer(void)
+{
+    return (float *)&hol_web_g.xf;
+}
+
+/* The session began (1) or ended (0). */
+EMSCRIPTEN_KEEPALIVE void hol_web_xr_active(int on)
+{
+    hol_web *w = &hol_web_g;
+    w->xr_active = on;
+    if (on) {
+        memset(&w->xr, 0, sizeof w->xr);
+        w->xr.last_t = w->last_t;
+        hol_render_invalidate(w->rnd);
+    }
+    printf("web: xr session %s after %ld XR frames\n", on ? "started" : "ended", w->xr_frames);
+}
+
+/* Read both eyes back at XR frame `frame` (make web-test). */
+EMSCRIPTEN_KEEPALIVE void hol_web_check_request(int frame)
+{
+    hol_web_g.check_frame = frame;
+}
+
+EMSCRIPTEN_KEEPALIVE uint8_t *hol_web_check_pixels(int eye)
+{
+    return eye == 0 || eye == 1 ? hol_web_g.check_px[eye] : NULL;
+}
+
+/* The eye's read back (rows bottom to top, as GL gives them), and the
+ * camera that drew it, for the test to render the same eye with OSMesa. */
+static void check_eye(int e, const hol_frame_desc *fd)
+{
+    hol_web *w = &hol_web_g;
+    int ew = fd->cam.width, eh = fd->cam.height;
+    free(w->check_px[e]);
+    w->check_px[e] = malloc((size_t)ew * (size_t)eh * 4);
+    if (!w->check_px[e])
+        return;
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(fd->vp_x, fd->vp_y, ew, eh, GL_RGBA, GL_UNSIGNED_BYTE, w->check_px[e]);
+    w->check_w[e] = ew;
+    w->check_h[e] = eh;
+    const hol_camera *c = &fd->cam;
+    printf("web: check eye %d frame %ld render --eye %.9g,%.9g,%.9g --orient %.9g,%.9g,%.9g,%.9g "
+           "--tan %.17g,%.17g,%.17g,%.17g --size %dx%d cell %d,%d\n",
+           e, w->xr_frames, c->eye[0], c->eye[1], c->eye[2], c->orient[0], c->orient[1],
+           c->orient[2], c->orient[3], c->tan_left, c->tan_right, c->tan_down, c->tan_up, ew, eh,
+           fd->user.col, fd->user.row);
+}
+
+void hol_web_xr_render(const hol_app_view *v, const hol_input *in, int fb)
+{
+    hol_web *w = &hol_web_g;
+    int n = w->xf.nviews > 1.5f ? 2 : 1;
+    hol_camera cam[2];
+    double eyes[2][3];
+    for (int e = 0; e < 2; e++) {
+        hol_web_xr_camera(&w->xr.calib, &w->xf.view[e < n ? e : 0], &cam[e]);
+        memcpy(eyes[e], cam[e].eye, sizeof eyes[e]);
+    }
+    double fade = hol_xr_fade(eyes, HOL__MARGIN);
+    glBindFramebuffer(GL_FRAMEBUFFER, (GLuint)fb);
+    int checking = w->check_frame == w->xr_frames;
+    for (int e = 0; e < n; e++) {
+        const hol_web_xr_view *vw = &w->xf.view[e];
+        if (cam[e].width < 1 || cam[e].height < 1)
+            continue;
+        hol_frame_desc fd;
+        hol_app_frame_desc(v, n == 2 ? e : -1, cam[e].width, cam[e].height, 0, &fd);
+        fd.cam = cam[e];
+        fd.vp_x = (int)vw->vp[0];
+        fd.vp_y = (int)vw->vp[1];
+        if ((in->flags & HOL_INPUT_HAND_L_VALID) && (fd.flags & HOL_RENDER_MINIMAP_HAND)) {
+            for (int k = 0; k < 3; k++)
+                fd.hand_pos[k] = in->hand[0].pos[k];
+            for (int k = 0; k < 4; k++)
+                fd.hand_orient[k] = in->hand[0].quat[k];
+        }
+        /* the eye's own cell; none (outside the room): the boundary colour */
+        int inside = fade < 1 && hol_motion_eye_state(&v->user, v->head, fd.cam.eye, &fd.user) == HOL_OK;
+        fd.fade = inside ? fade : 1;
+        if (hol_render_frame(w->rnd, &fd, NULL)) {
+            fd.fade = 1; /* never a stale image */
+            hol_render_frame(w->rnd, &fd, NULL);
+        }
+        if (checking) {
+            w->check_user[e] = fd.user;
+            w->check_cam[e] = fd.cam;
+            check_eye(e, &fd);
+        }
+    }
+    w->xr_two_views += n == 2;
+}
+
+/* One XRFrame (t_ms: its time, performance.now()'s origin; fb: the layer's
+ * framebuffer, 0 for the default one). Returns 0 to go on, 1 when the
+ * session is over (the glue ends the XR session). */
+EMSCRIPTEN_KEEPALIVE int hol_web_xr_step(double t_ms, int fb)
+{
+    hol_web *w = &hol_web_g;
+    if (w->over)
+        return 1;
+    double c0 = emscripten_get_now();
+    double t = (t_ms - w->t0_ms) / 1000.0;
+    hol_input in;
+    hol_web_xr_input(&w->xr, &w->xf, t > w->last_t ? t : w->last_t, &in);
+    w->last_t = in.time_s;
+    if (hol_web_step(&in))
+        return 1;
+    hol_web_xr_render(hol_app_get_view(hol_web_game_app()), &in, fb);
+    if (w->xr_ncpu < (int)(sizeof w->xr_cpu_ms / sizeof w->xr_cpu_ms[0]))
+        w->xr_cpu_ms[w->xr_ncpu++] = emscripten_get_now() - c0;
+    w->xr_frames++;
+    return 0;
+}
+
+/* Median and 99th percentile of the XR frames' CPU ms (step and both
+ * eyes' draw calls issued), for make bench; out[0] frames. */
+static int cmp_d(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return x < y ? -1 : x > y;
+}
+
+EMSCRIPTEN_KEEPALIVE double hol_web_xr_cpu_ms(int which)
+{
+    hol_web *w = &hol_web_g;
+    if (!w->xr_ncpu)
+        return -1;
+    static double s[sizeof w->xr_cpu_ms / sizeof w->xr_cpu_ms[0]];
+    memcpy(s, w->xr_cpu_ms, (size_t)w->xr_ncpu * sizeof s[0]);
+    qsort(s, (size_t)w->xr_ncpu, sizeof s[0], cmp_d);
+    return which == 0 ? w->xr_ncpu : which == 1 ? s[w->xr_ncpu / 2] : s[w->xr_ncpu * 99 / 100];
+}
+
+EMSCRIPTEN_KEEPALIVE long hol_web_xr_frames(int two_views)
+{
+    return two_views ? hol_web_g.xr_two_views : hol_web_g.xr_frames;
+}

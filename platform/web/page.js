@@ -1,0 +1,175 @@
+// page.js - the Holonomy page around the wasm game (platform/web/): what to
+// play (URL parameters, a level file), the Enter VR button, the canvas size,
+// the on-screen touch buttons, and the logs kept in browser storage with
+// their download links.
+//
+// URL parameters: mode=tutorial|flag|keys|explore and seed=S (a level made
+// from the seed, as `holonomy play --mode`), level=URL (a level file served
+// beside the page), participant=ID (the logs' participant), snap=DEG (snap
+// turn on the Left/Right keys). None: the default campaign. A level file
+// chosen with "Level file..." plays on the next load (kept in
+// sessionStorage for this tab).
+'use strict';
+
+(function () {
+  var params = new URLSearchParams(location.search);
+  var config = {};
+  ['mode', 'seed', 'participant', 'snap'].forEach(function (k) {
+    if (params.has(k)) config[k] = params.get(k);
+  });
+  var $ = function (id) { return document.getElementById(id); };
+  var status = function (s) { $('status').textContent = s; };
+
+  // ---- canvas size: CSS pixels times the device's ratio (at most 2) ----
+  var canvas = $('canvas');
+  function resize() {
+    var r = Math.min(window.devicePixelRatio || 1, 2);
+    var w = Math.max(16, Math.round(canvas.clientWidth * r));
+    var h = Math.max(16, Math.round(canvas.clientHeight * r));
+    if (canvas.width !== w || canvas.height !== h) { canvas.width = w; canvas.height = h; }
+  }
+  window.addEventListener('resize', resize);
+  resize();
+
+  // ---- touch buttons ----
+  window.addEventListener('touchstart', function () {
+    document.body.classList.add('touch');
+  }, { once: true, passive: true });
+  document.querySelectorAll('#touch button').forEach(function (b) {
+    var bit = +b.dataset.btn;
+    var set = function (down) {
+      return function (e) {
+        e.preventDefault();
+        if (Module._hol_web_touch_button) Module._hol_web_touch_button(bit, down);
+      };
+    };
+    b.addEventListener('pointerdown', set(1));
+    b.addEventListener('pointerup', set(0));
+    b.addEventListener('pointercancel', set(0));
+    b.addEventListener('pointerleave', set(0));
+  });
+
+  // ---- a level file for the next load ----
+  $('file').addEventListener('change', function () {
+    var f = this.files && this.files[0];
+    if (!f) return;
+    f.text().then(function (t) {
+      sessionStorage.setItem('holonomy-level', JSON.stringify({ name: f.name, text: t }));
+      var u = new URL(location.href);
+      ['mode', 'seed', 'level'].forEach(function (k) { u.searchParams.delete(k); });
+      u.searchParams.set('levelfile', '1');
+      location.href = u.href;
+    });
+  });
+
+  // ---- logs: listed from the store, offered for download ----
+  function refreshLogs() {
+    var store = window.holonomyStore;
+    if (!store) return;
+    var names = store.names().sort();
+    var list = $('loglist');
+    list.textContent = '';
+    if (!names.length) { list.textContent = 'No logs yet.'; return; }
+    var ul = document.createElement('ul');
+    names.forEach(function (n) {
+      var li = document.createElement('li');
+      var a = document.createElement('a');
+      a.textContent = n + ' (' + store.size(n) + ' bytes)';
+      a.href = '#';
+      a.addEventListener('click', function (e) {
+        e.preventDefault();
+        var url = URL.createObjectURL(new Blob([store.bytes(n)], { type: 'text/plain' }));
+        var d = document.createElement('a');
+        d.href = url;
+        d.download = n;
+        document.body.appendChild(d);
+        d.click();
+        d.remove();
+        setTimeout(function () { URL.revokeObjectURL(url); }, 1000);
+      });
+      li.appendChild(a);
+      ul.appendChild(li);
+    });
+    list.appendChild(ul);
+    $('logsbtn').textContent = 'Logs (' + names.length + ')';
+  }
+  window.holonomyRefreshLogs = refreshLogs;
+  $('logsbtn').addEventListener('click', function () {
+    refreshLogs();
+    $('logs').hidden = !$('logs').hidden;
+  });
+  $('clear').addEventListener('click', function () {
+    if (window.holonomyStore && confirm('Delete every log and recording kept in this browser?')) {
+      window.holonomyStore.clear();
+      refreshLogs();
+    }
+  });
+
+  // ---- the module ----
+  window.Module = {
+    canvas: canvas,
+    holConfig: config,
+    print: function (s) { console.log(s); },
+    printErr: function (s) { console.warn(s); },
+    holEvent: function (kind, text) {
+      if (kind === 'ready') {
+        status(config.levelName ? 'Playing ' + config.levelName : 'Playing');
+        canvas.focus();
+        Module.holXR.supported().then(function (ok) { $('vr').hidden = !ok; });
+      } else if (kind === 'xr') {
+        status(text === 'started' ? 'In VR' : 'Playing');
+      } else if (kind === 'over') {
+        status('Session over: the logs are kept in this browser (Logs).');
+        refreshLogs();
+        $('logs').hidden = false;
+      } else if (kind === 'failed') {
+        status('Failed: ' + text);
+        console.error('holonomy: ' + text);
+      } else if (kind === 'saved') {
+        refreshLogs();
+      }
+    },
+    holStorePut: function (name, bytes) {
+      if (window.holonomyStore) window.holonomyStore.put(name, bytes);
+      refreshLogs();
+    }
+  };
+  $('vr').addEventListener('click', function () {
+    Module.holXR.enter().catch(function (e) { status('VR failed: ' + e.message); });
+  });
+
+  // the game starts once the store holds what earlier pages kept
+  function start() {
+    window.holonomyStore.ready.then(function (persistent) {
+      if (!persistent)
+        console.warn('holonomy: no IndexedDB here: logs are kept in memory only (' +
+          window.holonomyStore.why() + ')');
+      refreshLogs();
+      var s = document.createElement('script');
+      s.src = 'holonomy.js';
+      document.body.appendChild(s);
+    });
+  }
+  var saved = params.has('levelfile') && sessionStorage.getItem('holonomy-level');
+  if (saved) {
+    var lv = JSON.parse(saved);
+    config.level = lv.text;
+    config.levelName = lv.name;
+    start();
+  } else if (params.has('level')) {
+    var url = params.get('level');
+    fetch(url).then(function (r) {
+      if (!r.ok) throw new Error(url + ': ' + r.status);
+      return r.text();
+    }).then(function (t) {
+      config.level = t;
+      config.levelName = url.split('/').pop();
+      start();
+    }).catch(function (e) {
+      status('Cannot load the level: ' + e.message);
+      console.error('holonomy: cannot load the level ' + e.message);
+    });
+  } else {
+    start();
+  }
+})();

@@ -1,0 +1,214 @@
+/* test_web_xr.c - WebXR frames as input records and eye cameras
+ * (platform/web/hol_web_xr.h): the field of view read back from projection
+ * matrices built as browsers build them, eyes and head placed in the room as
+ * the headset build places them, the xr-standard bindings, focus from the
+ * visibility state, press edges, recentre, the play-area warning.
+ */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "../platform/web/hol_web_xr.h"
+
+/* A perspective matrix from the four half-angle tangents (left and down
+ * negative), near n and far f, column-major: what XRView.projectionMatrix
+ * holds. */
+static void frustum(double l, double r, double d, double u, double n, double f, float m[16])
+{
+    memset(m, 0, 16 * sizeof m[0]);
+    m[0] = (float)(2 / (r - l));
+    m[5] = (float)(2 / (u - d));
+    m[8] = (float)((r + l) / (r - l));
+    m[9] = (float)((u + d) / (u - d));
+    m[10] = (float)(-(f + n) / (f - n));
+    m[11] = -1;
+    m[14] = (float)(-2 * f * n / (f - n));
+}
+
+static void test_camera(void **state)
+{
+    (void)state;
+    /* Quest-like asymmetric eyes */
+    static const double fov[2][4] = {{-1.0, 0.85, -1.05, 0.95}, {-0.85, 1.0, -1.05, 0.95}};
+    for (int e = 0; e < 2; e++) {
+        hol_web_xr_view v;
+        memset(&v, 0, sizeof v);
+        frustum(fov[e][0], fov[e][1], fov[e][2], fov[e][3], 0.1, 1000, v.proj);
+        v.vp[0] = (float)(e * 400);
+        v.vp[2] = 400;
+        v.vp[3] = 600;
+        v.pos[0] = e ? 0.032f : -0.032f;
+        v.pos[1] = 1.6f;
+        v.quat[3] = 1;
+        hol_xr_calib c;
+        memset(&c, 0, sizeof c);
+        hol_camera cam;
+        hol_web_xr_camera(&c, &v, &cam);
+        assert_true(cam.has_pose);
+        assert_true(fabs(cam.tan_left - fov[e][0]) < 1e-6 && fabs(cam.tan_right - fov[e][1]) < 1e-6);
+        assert_true(fabs(cam.tan_down - fov[e][2]) < 1e-6 && fabs(cam.tan_up - fov[e][3]) < 1e-6);
+        assert_int_equal(cam.width, 400);
+        assert_int_equal(cam.height, 600);
+        /* the room is centred on the reference space's origin, north along -z */
+        assert_true(fabs(cam.eye[0] - (1.5 + v.pos[0])) < 1e-6);
+        assert_true(fabs(cam.eye[1] - 1.6) < 1e-6 && fabs(cam.eye[2] - 1.5) < 1e-6);
+        assert_true(fabs(cam.orient[3] - 1) < 1e-6);
+    }
+    /* turned 90 degrees to the left (west) about +y: the same turn in the room */
+    hol_web_xr_view v;
+    memset(&v, 0, sizeof v);
+    frustum(-1, 1, -1, 1, 0.1, 100, v.proj);
+    v.quat[1] = (float)sin(M_PI / 4);
+    v.quat[3] = (float)cos(M_PI / 4);
+    v.pos[2] = -1.0f; /* a metre north of the origin */
+    hol_xr_calib c;
+    memset(&c, 0, sizeof c);
+    hol_camera cam;
+    hol_web_xr_camera(&c, &v, &cam);
+    assert_true(fabs(cam.eye[2] - 0.5) < 1e-6);
+    assert_true(fabs(cam.orient[1] - sin(M_PI / 4)) < 1e-6 && fabs(cam.orient[3] - cos(M_PI / 4)) < 1e-6);
+}
+
+static hol_web_xr_frame touch_frame(void)
+{
+    hol_web_xr_frame f;
+    memset(&f, 0, sizeof f);
+    f.visibility = HOL_WEB_XR_VISIBLE;
+    f.head_valid = 1;
+    f.head_pos[1] = 1.6f;
+    f.head_quat[3] = 1;
+    for (int h = 0; h < 2; h++) {
+        f.pad[h].present = 1;
+        f.pad[h].touch_layout = 1;
+    }
+    return f;
+}
+
+static void test_buttons(void **state)
+{
+    (void)state;
+    hol_web_xr_frame f = touch_frame();
+    uint32_t dev = 99;
+    assert_int_equal(hol_web_xr_buttons(f.pad, &dev), 0);
+    assert_int_equal(dev, HOL_DEVICE_WEBXR_TOUCH);
+    /* right: trigger 0, A 4 confirm, B 5 back; left: Y 5 menu, X 4 minimap,
+     * thumbstick 3 recentre */
+    static const struct {
+        int hand, b;
+        uint32_t btn;
+    } touch[] = {{1, 0, HOL_BTN_CONFIRM}, {1, 4, HOL_BTN_CONFIRM}, {1, 5, HOL_BTN_BACK},
+                 {0, 5, HOL_BTN_MENU},    {0, 4, HOL_BTN_MINIMAP}, {0, 3, HOL_BTN_RECENTRE},
+                 {0, 0, 0},               {0, 1, 0},               {1, 1, 0}, {1, 3, 0}};
+    for (size_t i = 0; i < sizeof touch / sizeof touch[0]; i++) {
+        hol_web_xr_frame g = touch_frame();
+        g.pad[touch[i].hand].button[touch[i].b] = 1;
+        assert_int_equal(hol_web_xr_buttons(g.pad, NULL), touch[i].btn);
+    }
+    /* another xr-standard controller: no A/B, X/Y */
+    static const struct {
+        int hand, b;
+        uint32_t btn;
+    } generic[] = {{1, 0, HOL_BTN_CONFIRM}, {1, 1, HOL_BTN_BACK}, {0, 0, HOL_BTN_MENU},
+                   {0, 1, HOL_BTN_MINIMAP}, {0, 3, HOL_BTN_RECENTRE}, {1, 4, 0}};
+    for (size_t i = 0; i < sizeof generic / sizeof generic[0]; i++) {
+        hol_web_xr_frame g = touch_frame();
+        g.pad[0].touch_layout = g.pad[1].touch_layout = 0;
+        g.pad[generic[i].hand].button[generic[i].b] = 1;
+        assert_int_equal(hol_web_xr_buttons(g.pad, &dev), generic[i].btn);
+        assert_int_equal(dev, HOL_DEVICE_NONE);
+    }
+    /* a controller without a gamepad presses nothing */
+    hol_web_xr_frame g = touch_frame();
+    g.pad[1].present = 0;
+    g.pad[1].button[0] = 1;
+    assert_int_equal(hol_web_xr_buttons(g.pad, &dev), 0);
+    g.pad[0].present = 0;
+    hol_web_xr_buttons(g.pad, &dev);
+    assert_int_equal(dev, HOL_DEVICE_NONE);
+}
+
+static void test_input(void **state)
+{
+    (void)state;
+    hol_web_xr_state st;
+    memset(&st, 0, sizeof st);
+    hol_web_xr_frame f = touch_frame();
+    f.head_pos[0] = 0.25f;
+    f.head_pos[2] = -0.5f;
+    f.pad[0].grip_valid = 1;
+    f.pad[0].grip_pos[1] = 1.0f;
+    f.pad[0].grip_quat[3] = 1;
+    f.pad[1].button[0] = 1; /* trigger held */
+    hol_input in;
+    hol_web_xr_input(&st, &f, 2.0, &in);
+    assert_true(in.time_s == 2.0);
+    assert_int_equal(in.flags, HOL_INPUT_FOCUSED | HOL_INPUT_HEAD_VALID | HOL_INPUT_HAND_L_VALID);
+    assert_true(fabsf(in.head.pos[0] - 1.75f) < 1e-6f && fabsf(in.head.pos[2] - 1.0f) < 1e-6f);
+    assert_true(fabsf(in.hand[0].pos[0] - 1.5f) < 1e-6f && fabsf(in.hand[0].pos[1] - 1.0f) < 1e-6f);
+    assert_int_equal(in.buttons, HOL_BTN_CONFIRM);
+    assert_int_equal(in.pressed, HOL_BTN_CONFIRM);
+    assert_int_equal(in.device, HOL_DEVICE_WEBXR_TOUCH);
+    /* held on: no new press; time never goes back */
+    hol_web_xr_input(&st, &f, 1.5, &in);
+    assert_int_equal(in.buttons, HOL_BTN_CONFIRM);
+    assert_int_equal(in.pressed, 0);
+    assert_true(in.time_s == 2.0);
+    /* blurred (a system menu over the session): not focused, no buttons */
+    f.visibility = HOL_WEB_XR_BLURRED;
+    hol_web_xr_input(&st, &f, 2.1, &in);
+    assert_int_equal(in.flags & HOL_INPUT_FOCUSED, 0);
+    assert_int_equal(in.buttons, 0);
+    f.visibility = HOL_WEB_XR_VISIBLE;
+    hol_web_xr_input(&st, &f, 2.2, &in); /* back: held, but no new press */
+    assert_int_equal(in.buttons, HOL_BTN_CONFIRM);
+    assert_int_equal(in.pressed, 0);
+    /* recentre (left thumbstick press): the head becomes the middle cell's
+     * centre, facing north */
+    f.pad[1].button[0] = 0;
+    f.pad[0].button[3] = 1;
+    f.head_quat[1] = (float)sin(0.3);
+    f.head_quat[3] = (float)cos(0.3);
+    hol_web_xr_input(&st, &f, 2.3, &in);
+    assert_int_equal(in.pressed, HOL_BTN_RECENTRE);
+    assert_true(fabsf(in.head.pos[0] - 1.5f) < 1e-5f && fabsf(in.head.pos[2] - 1.5f) < 1e-5f);
+    assert_true(fabsf(in.head.quat[1]) < 1e-5f && fabsf(in.head.quat[3] - 1) < 1e-5f);
+    /* no viewer pose: no head */
+    f.head_valid = 0;
+    hol_web_xr_input(&st, &f, 2.4, &in);
+    assert_int_equal(in.flags & HOL_INPUT_HEAD_VALID, 0);
+}
+
+static void test_bounds(void **state)
+{
+    (void)state;
+    static const struct {
+        float w, d;
+        int small;
+    } cases[] = {{0, 0, 0}, {3.5f, 3.2f, 0}, {3.0f, 3.0f, 0}, {2.5f, 4.0f, 1}, {4.0f, 2.9f, 1}};
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        hol_web_xr_state st;
+        memset(&st, 0, sizeof st);
+        hol_web_xr_frame f = touch_frame();
+        f.bounds[0] = cases[i].w;
+        f.bounds[1] = cases[i].d;
+        hol_input in;
+        hol_web_xr_input(&st, &f, 0, &in);
+        assert_int_equal((in.flags & HOL_INPUT_BOUNDS_SMALL) != 0, cases[i].small);
+    }
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_camera),
+        cmocka_unit_test(test_buttons),
+        cmocka_unit_test(test_input),
+        cmocka_unit_test(test_bounds),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
