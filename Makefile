@@ -192,19 +192,24 @@ test: all purity unit render-test cli-test fuzz-replay
 purity: $(CORE_OBJ)
 	@sh tests/check_core_purity.sh $(CORE_OBJ)
 
+# Each suite prints its time after it ("-- NAME: S.S s", tests/timed.sh).
+TIMED := sh tests/timed.sh
 unit: $(UNIT_BIN)
-	@set -e; for t in $(UNIT_BIN); do echo "== $$t"; $$t; done
+	@set -e; for t in $(UNIT_BIN); do echo "== $$t"; $(TIMED) $$t $$t; done
 
 render-test: $(RENDER_TEST_BIN)
-	@set -e; for t in $(RENDER_TEST_BIN); do echo "== $$t"; $$t; done
+	@set -e; for t in $(RENDER_TEST_BIN); do echo "== $$t"; $(TIMED) $$t $$t; done
 
 cli-test: $(BUILD)/holonomy
 	@set -e; for t in $(CLI_TESTS); do echo "== $$t"; \
-	  HOLONOMY=$(BUILD)/holonomy sh $$t; done
+	  HOLONOMY=$(BUILD)/holonomy $(TIMED) $$t sh $$t; done
 
+# Every harness has a corpus of its own (a missing one fails here).
 fuzz-replay: $(FUZZ_SRC:fuzz/%.c=$(BUILD)/fuzz-replay/%)
 	@set -e; for f in $^; do n=$$(basename $$f); \
-	  $$f fuzz/corpus/$$n/*; done; echo "fuzz corpora replayed: $(notdir $^)"
+	  ls fuzz/corpus/$$n/* >/dev/null || { echo "$$n: no corpus in fuzz/corpus/$$n"; exit 1; }; \
+	  $(TIMED) "fuzz corpus $$n" $$f fuzz/corpus/$$n/*; done; \
+	  echo "fuzz corpora replayed: $(notdir $^)"
 
 fuzz: $(FUZZ_BIN)
 	@set -e; for f in $(FUZZ_BIN); do n=$$(basename $$f); \
