@@ -161,6 +161,14 @@ one_line "escape bytes" '\\x1b\[31mX'
 if LC_ALL=C grep -q "$(printf '\033')" "$T/err"; then bad "a raw escape byte on stderr"; else ok; fi
 run "escape bytes in a path" 2 "$H" world --load "$(printf 'a\033b\nc')"
 if [ "$(wc -l <"$T/err")" -eq 1 ] && ! LC_ALL=C grep -q "$(printf '\033')" "$T/err"; then ok; else bad "path: $(od -c "$T/err" | head -3)"; fi
+# numbers are plain decimals: no blanks, signs on counts, hex or inf (strtol
+# and strtod took ' 2', '+8', '0x1p3')
+for v in "--size|+8x8" "--size| 8x8" "--frames| 2" "--frames|+2" "--yaw|0x1p3" "--yaw| 5" \
+         "--pitch|nan" "--yaw|inf" "--eye|1.5, 1.6,1.5" "--fov|1e" "--fov|90x"; do
+  run "render ${v%%|*} '${v#*|}'" 2 "$H" render --bare --stats "${v%%|*}" "${v#*|}"
+  one_line "render ${v%%|*} '${v#*|}'" "${v%%|*} '"
+done
+run "render --yaw -.5e-1 --eye 1.5,1e0,1.5" 0 "$H" render --bare --stats --yaw -.5e-1 --eye 1.5,1e0,1.5
 run "seed with a leading blank" 2 "$H" world --seed " 5" --quiet
 run "seed with a second 0x" 2 "$H" world --seed 0x0x5 --quiet
 run "count with a newline" 2 "$H" world --capacity "$(printf '\n8192')" --quiet

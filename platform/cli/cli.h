@@ -57,8 +57,9 @@ int cli_budget_option(const char *cmd, int argc, char **argv, int *i,
 #define CLI_SEED_DEFAULT 1
 int cli_parse_u64(const char *s, uint64_t *out);
 
-/* "A,B,..." of exactly n finite numbers (strtod's forms) into out[0..n-1]
- * (n 1..16): option values such as --eye X,Y,Z. 1 ok, 0 bad. */
+/* "A,B,..." of exactly n finite plain decimal numbers ([-+]D[.D][e[-+]D];
+ * no blanks, hex, inf or nan) into out[0..n-1] (n 1..16): option values
+ * such as --eye X,Y,Z and --yaw. 1 ok, 0 bad. */
 int cli_parse_doubles(const char *s, double *out, int n);
 
 /* Strip spaces and tabs at both ends. */

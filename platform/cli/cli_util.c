@@ -245,6 +245,29 @@ int cli_budget_option(const char *cmd, int argc, char **argv, int *i,
     return 1;
 }
 
+/* The length of the plain decimal number at p ([-+]digits[.digits][e[-+]digits],
+ * digits on at least one side of the point), 0 if there is none: strtod
+ * would also take blanks, hex, inf and nan. */
+static size_t cli__decimal_len(const char *p)
+{
+    size_t i = (p[0] == '-' || p[0] == '+'), d = 0;
+    while (isdigit((unsigned char)p[i]))
+        i++, d++;
+    if (p[i] == '.')
+        for (i++; isdigit((unsigned char)p[i]); i++)
+            d++;
+    if (d == 0)
+        return 0;
+    if (p[i] == 'e' || p[i] == 'E') {
+        size_t j = i + 1 + (p[i + 1] == '-' || p[i + 1] == '+'), e = j;
+        while (isdigit((unsigned char)p[j]))
+            j++;
+        if (j > e)
+            i = j;
+    }
+    return i;
+}
+
 int cli_parse_doubles(const char *s, double *out, int n)
 {
     if (n < 1 || n > 16)
@@ -253,9 +276,10 @@ int cli_parse_doubles(const char *s, double *out, int n)
     const char *p = s;
     for (int i = 0; i < n; i++) {
         char *end;
+        size_t len = cli__decimal_len(p);
         errno = 0;
         v[i] = strtod(p, &end);
-        if (end == p || errno || !isfinite(v[i]))
+        if (!len || end != p + len || errno || !isfinite(v[i]))
             return 0;
         if (i + 1 < n ? *end != ',' : *end != 0)
             return 0;

@@ -87,14 +87,13 @@ static int parse_double(const char *s, double *out)
     return !cli_parse_doubles(s, out, 1);
 }
 
+/* Digits only (no blank, no sign) in lo..hi (lo >= 1); nonzero on failure. */
 static int parse_int(const char *s, long lo, long hi, long *out)
 {
-    char *end;
-    errno = 0;
-    long v = strtol(s, &end, 10);
-    if (end == s || *end || errno || v < lo || v > hi)
+    size_t v = cli_parse_count(s);
+    if (v < (size_t)lo || v > (size_t)hi)
         return 1;
-    *out = v;
+    *out = (long)v;
     return 0;
 }
 
