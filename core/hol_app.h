@@ -69,6 +69,9 @@ enum hol_app_minimap_place { HOL_MINIMAP_HUD = 0, HOL_MINIMAP_HAND = 1, HOL_MINI
 #define HOL_APP_MAX_MARKS 2
 /* Most room steps one app step reports (a frame's motion in sub-steps). */
 #define HOL_APP_MAX_STEP_EVENTS 16
+/* The minimap shows the tiles within this many steps of the user's tile;
+ * an objective farther away gets a rim arrow (render/hol_hud.h draws it). */
+#define HOL_APP_MINIMAP_RADIUS 4
 /* A level's designer placements; the world takes these and a clearing on
  * each objective's tile (HOL_WORLD_MAX_PLACES holds both). */
 #define HOL_APP_MAX_PLACES 32

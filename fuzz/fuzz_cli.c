@@ -8,9 +8,11 @@
  *   and prints back to the same value; a list is accepted only with as many
  *   values as it has commas plus one, all finite; refused text leaves
  *   nothing half-parsed.
- * - 1: a level file (session_parse_level). Checks: accepted, the level's
- *   fields are in range (mode, 1..5 keys, time limit, stages, at most 32
- *   placements); refused, the message names a line of the file.
+ * - 1: a level file (core/hol_level.h, hol_level_parse and hol_level_make).
+ *   Checks: accepted, the level's fields are in range (mode, 1..5 keys,
+ *   time limit, stages, at most 32 placements), the kept text (LF line
+ *   ends) parses to the same level and its hash is its text's; refused,
+ *   the typed error names a line of the file (and a conflict another).
  * - 2: a message with any bytes (cli_error into a memory stream). Checks:
  *   one line, no control byte.
  */
@@ -24,7 +26,8 @@
 #include <string.h>
 
 #include "../platform/cli/cli.h"
-#include "../platform/cli/session.h"
+#include "../core/hol_level.h"
+#include "../core/hol_sha256.h"
 
 #include "fuzz_check.h"
 
@@ -69,21 +72,35 @@ static void check_number(const char *s)
 static void check_level(const char *text, size_t len)
 {
     hol_app_level L;
-    char err[256] = "";
-    if (session_parse_level(text, len, &L, err, sizeof err) == 0) {
+    hol_level_err err;
+    memset(&err, 0, sizeof err);
+    if (hol_level_parse(text, len, &L, &err) == HOL_OK) {
         CHECK(L.mode >= 0 && L.mode <= 3);
         CHECK(L.nkeys >= 0 && L.nkeys <= HOL_APP_MAX_KEYS);
         CHECK(L.time_limit_s >= 0 && L.time_limit_s <= 86400);
         CHECK(L.stages < (1u << HOL_APP_TUTORIAL_STAGES));
         CHECK(L.nplaces >= 0 && L.nplaces <= HOL_WORLD_MAX_PLACES);
         CHECK(L.nstart >= 0 && L.nstart <= (int)sizeof L.start);
+        static hol_level lv;
+        hol_app_level again;
+        CHECK(hol_level_make("x", 1, text, len, &lv, NULL) == HOL_OK);
+        CHECK(hol_level_parse(lv.text, lv.len, &again, NULL) == HOL_OK);
+        CHECK(!memcmp(&again, &L, sizeof L));
+        CHECK(lv.len == 0 || lv.text[lv.len - 1] == '\n');
+        uint8_t h[32];
+        hol_sha256(lv.text, lv.len, h);
+        CHECK(!memcmp(h, lv.sha256, 32));
     } else {
-        long n = 0;
-        CHECK(sscanf(err, "line %ld:", &n) == 1);
+        CHECK(err.code != HOL_OK && strlen(err.msg) < sizeof err.msg);
         long lines = 1;
         for (size_t i = 0; i < len; i++)
             lines += text[i] == '\n';
-        CHECK(n >= 1 && n <= lines);
+        CHECK(err.line >= 0 && err.line <= lines);
+        CHECK(err.line > 0 || len > HOL_LEVEL_TEXT_MAX);
+        CHECK(err.other >= 0 && err.other <= lines);
+        char line[300];
+        hol_level_err_format(&err, 1, line, sizeof line);
+        CHECK(err.line == 0 || !strncmp(line, "line ", 5));
     }
 }
 

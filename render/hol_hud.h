@@ -23,10 +23,11 @@
 #ifndef HOL_HUD_H
 #define HOL_HUD_H
 
+#include "../core/hol_app.h"
 #include "hol_mesh.h"
 #include "hol_render.h"
 
-#define HOL_HUD_MAP_RADIUS 4
+#define HOL_HUD_MAP_RADIUS HOL_APP_MINIMAP_RADIUS
 
 /* Append the HUD of frame f (viewport w x h pixels) to out: the map part
  * (disk, tiles, path, objectives, rim arrows: a function of the user's

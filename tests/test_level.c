@@ -1,5 +1,7 @@
-/* test_level.c - level files (platform/cli/session.c, session_parse_level):
- * the keys beyond SPEC section 5 that studies need.
+/* test_level.c - level files (core/hol_level.h): the keys beyond SPEC
+ * section 5 that studies need, typed errors with their lines, the bounds,
+ * named levels (names a recording can carry, LF text, SHA-256), and the
+ * levels made from a seed (core/hol_campaign.h).
  *
  * Objectives by distance are checked against the tile distance (itself
  * verified against the independent model in test_tile.c): over many seeds
@@ -18,11 +20,17 @@
 
 #include "../core/hol_app.h"
 #include "../core/hol_tile.h"
-#include "../platform/cli/session.h"
+#include "../core/hol_campaign.h"
+#include "../core/hol_level.h"
+#include "../core/hol_sha256.h"
 
 static int parse(const char *text, hol_app_level *L, char *err)
 {
-    return session_parse_level(text, strlen(text), L, err, 256);
+    hol_level_err e;
+    if (hol_level_parse(text, strlen(text), L, &e) == HOL_OK)
+        return 0;
+    hol_level_err_format(&e, 1, err, 256);
+    return 1;
 }
 
 static hol_tile start_tile(const hol_app_level *L)

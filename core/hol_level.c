@@ -1,0 +1,574 @@
+/* hol_level.c - level files: lines, keys, the checks after the last line,
+ * objectives drawn by distance, and named levels (see hol_level.h). */
+#include "hol_level.h"
+
+#include <stdarg.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "hol_room.h"
+#include "hol_sha256.h"
+#include "hol_tile.h"
+
+/* ---- the parser's state and its one way to fail --------------------------- */
+
+#define HOL__FIELDS 8 /* fields kept of a line; more are counted as one more */
+
+typedef struct hol__lp {
+    hol_app_level L;
+    int have_mode;
+    long line;
+    /* objectives by distance (drawn after the last line) and where each
+     * objective and placement was given */
+    int flag_lo, flag_hi, keys_n, keys_lo, keys_hi, chest_lo, chest_hi;
+    long flag_line, keys_line, chest_line, place_line[HOL_APP_MAX_PLACES];
+    hol_level_err *err;
+} hol__lp;
+
+static hol_err hol__fail(hol__lp *p, hol_err code, long line, const char *fmt, ...)
+    __attribute__((format(printf, 4, 5)));
+
+static hol_err hol__fail(hol__lp *p, hol_err code, long line, const char *fmt, ...)
+{
+    hol_level_err *e = p->err;
+    if (e) {
+        memset(e, 0, sizeof *e);
+        e->code = code;
+        e->line = line;
+        va_list ap;
+        va_start(ap, fmt);
+        vsnprintf(e->msg, sizeof e->msg, fmt, ap);
+        va_end(ap);
+    }
+    return code;
+}
+
+/* A conflict with another line: "... (line M)", or "... on line M". */
+static hol_err hol__conflict(hol__lp *p, long line, long other, int on, const char *what,
+                             const char *addr)
+{
+    if (on)
+        hol__fail(p, HOL_EARG, line, "%.30s is already placed", addr);
+    else
+        hol__fail(p, HOL_EARG, line, "the placement on %.30s conflicts with %s", addr, what);
+    if (p->err) {
+        p->err->other = other;
+        p->err->other_on = on;
+    }
+    return HOL_EARG;
+}
+
+/* ---- numbers and words ------------------------------------------------------ */
+
+/* A positive decimal count (digits only, at most 2^40); 0 when it is not. */
+static uint64_t hol__count(const char *s)
+{
+    uint64_t v = 0;
+    if (!*s)
+        return 0;
+    for (; *s; s++) {
+        if (*s < '0' || *s > '9' || v > (UINT64_C(1) << 40))
+            return 0;
+        v = v * 10 + (uint64_t)(*s - '0');
+    }
+    return v <= (UINT64_C(1) << 40) ? v : 0;
+}
+
+/* An unsigned 64-bit number, decimal or 0x hex (a leading 0 is not octal;
+ * no sign, no blanks): 1 ok. */
+static int hol__u64(const char *s, uint64_t *out)
+{
+    int hex = s[0] == '0' && (s[1] == 'x' || s[1] == 'X');
+    const char *d = hex ? s + 2 : s;
+    uint64_t v = 0, base = hex ? 16 : 10;
+    if (!*d)
+        return 0;
+    for (; *d; d++) {
+        int c = *d;
+        int k = c >= '0' && c <= '9' ? c - '0'
+                : hex && c >= 'a' && c <= 'f' ? c - 'a' + 10
+                : hex && c >= 'A' && c <= 'F' ? c - 'A' + 10
+                                              : -1;
+        if (k < 0 || v > (UINT64_MAX - (uint64_t)k) / base)
+            return 0;
+        v = v * base + (uint64_t)k;
+    }
+    *out = v;
+    return 1;
+}
+
+/* Index of word in names[n], or -1. */
+static int hol__word(const char *word, const char *const *names, int n)
+{
+    for (int i = 0; i < n; i++)
+        if (!strcmp(word, names[i]))
+            return i;
+    return -1;
+}
+
+/* "MIN [MAX]" of a distance key from field first: 1 <= MIN <= MAX <= 10. */
+static int hol__range(char **f, int nf, int first, int *lo, int *hi)
+{
+    uint64_t a = hol__count(f[first]);
+    uint64_t b = nf > first + 1 ? hol__count(f[first + 1]) : a;
+    if (!a || !b || a > HOL_LEVEL_MAX_DIST || b > HOL_LEVEL_MAX_DIST || a > b)
+        return 1;
+    *lo = (int)a;
+    *hi = (int)b;
+    return 0;
+}
+
+/* ---- the keys ---------------------------------------------------------------- */
+
+static hol_err hol__key_mode(hol__lp *p, char **f, int nf)
+{
+    static const char *const modes[] = {"explore", "flag", "keys", "tutorial"};
+    (void)nf;
+    int m = hol__word(f[1], modes, 4);
+    if (m < 0)
+        return hol__fail(p, HOL_EPARSE, p->line,
+                         "mode '%.20s' is not explore, tutorial, flag or keys", f[1]);
+    p->L.mode = m;
+    p->have_mode = 1;
+    return HOL_OK;
+}
+
+static hol_err hol__key_seed(hol__lp *p, char **f, int nf)
+{
+    (void)nf;
+    if (!hol__u64(f[1], &p->L.seed))
+        return hol__fail(p, HOL_EPARSE, p->line,
+                         "seed '%.30s' is not an unsigned 64-bit number", f[1]);
+    return HOL_OK;
+}
+
+static hol_err hol__key_start(hol__lp *p, char **f, int nf)
+{
+    size_t nd = 0;
+    (void)nf;
+    if (hol_walk_parse(f[1], strlen(f[1]), p->L.start, sizeof p->L.start, &nd, NULL))
+        return hol__fail(p, HOL_EPARSE, p->line, "start '%.30s' is not a walk of N, E, S, W",
+                         f[1]);
+    p->L.nstart = (int)nd;
+    return HOL_OK;
+}
+
+/* flag ADDRESS, chest ADDRESS */
+static hol_err hol__key_tile(hol__lp *p, char **f, int nf)
+{
+    hol_tile t;
+    (void)nf;
+    if (hol_tile_parse(f[1], -1, &t))
+        return hol__fail(p, HOL_EPARSE, p->line, "'%.30s' is not a canonical address", f[1]);
+    if (f[0][0] == 'f') {
+        p->L.flag = t;
+        p->flag_line = p->line;
+    } else {
+        p->L.chest = t;
+        p->chest_line = p->line;
+    }
+    return HOL_OK;
+}
+
+static hol_err hol__key_keys(hol__lp *p, char **f, int nf)
+{
+    for (int i = 1; i < nf; i++)
+        if (hol_tile_parse(f[i], -1, &p->L.keys[i - 1]))
+            return hol__fail(p, HOL_EPARSE, p->line, "key '%.30s' is not a canonical address",
+                             f[i]);
+    p->L.nkeys = nf - 1;
+    p->keys_line = p->line;
+    return HOL_OK;
+}
+
+/* flag-distance MIN [MAX], chest-distance MIN [MAX] */
+static hol_err hol__key_dist(hol__lp *p, char **f, int nf)
+{
+    int lo, hi;
+    if (hol__range(f, nf, 1, &lo, &hi))
+        return hol__fail(p, HOL_ERANGE, p->line, "%s needs MIN [MAX] with 1 <= MIN <= MAX <= %d",
+                         f[0], HOL_LEVEL_MAX_DIST);
+    if (f[0][0] == 'f') {
+        p->flag_lo = lo, p->flag_hi = hi;
+        p->flag_line = p->line;
+    } else {
+        p->chest_lo = lo, p->chest_hi = hi;
+        p->chest_line = p->line;
+    }
+    return HOL_OK;
+}
+
+static hol_err hol__key_keys_dist(hol__lp *p, char **f, int nf)
+{
+    uint64_t cnt = hol__count(f[1]);
+    if (!cnt || cnt > HOL_APP_MAX_KEYS || hol__range(f, nf, 2, &p->keys_lo, &p->keys_hi))
+        return hol__fail(p, HOL_ERANGE, p->line,
+                         "keys-distance needs COUNT (1..%d) MIN [MAX] (1 <= MIN <= MAX <= %d)",
+                         HOL_APP_MAX_KEYS, HOL_LEVEL_MAX_DIST);
+    p->keys_n = (int)cnt;
+    p->keys_line = p->line;
+    return HOL_OK;
+}
+
+static hol_err hol__key_time_limit(hol__lp *p, char **f, int nf)
+{
+    (void)nf;
+    uint64_t secs = hol__count(f[1]);
+    if (!secs || secs > 86400)
+        return hol__fail(p, HOL_ERANGE, p->line, "time-limit '%.20s' is not seconds in 1..86400",
+                         f[1]);
+    p->L.time_limit_s = (double)secs;
+    return HOL_OK;
+}
+
+static hol_err hol__key_stages(hol__lp *p, char **f, int nf)
+{
+    unsigned st = 0;
+    for (int i = 1; i < nf; i++) {
+        uint64_t k = i < HOL__FIELDS ? hol__count(f[i]) : 0;
+        if (!k || k > HOL_APP_TUTORIAL_STAGES || nf > HOL_APP_TUTORIAL_STAGES + 1)
+            return hol__fail(p, HOL_ERANGE, p->line, "stages are lesson numbers 1..%d",
+                             HOL_APP_TUTORIAL_STAGES);
+        st |= 1u << (k - 1);
+    }
+    p->L.stages = st;
+    return HOL_OK;
+}
+
+static hol_err hol__key_place(hol__lp *p, char **f, int nf)
+{
+    static const char *const objs[] = {"clearing", "grass", "flowers", "rock", "mushroom", "pond"};
+    static const int ids[] = {HOL_OBJ_NONE, HOL_OBJ_GRASS, HOL_OBJ_FLOWERS,
+                              HOL_OBJ_ROCK, HOL_OBJ_MUSHROOM, HOL_OBJ_POOL};
+    (void)nf;
+    int o = hol__word(f[1], objs, 6);
+    if (o < 0)
+        return hol__fail(p, HOL_EPARSE, p->line,
+                         "place '%.20s' is not clearing, grass, flowers, rock, mushroom or pond",
+                         f[1]);
+    hol_tile t;
+    if (hol_tile_parse(f[2], -1, &t))
+        return hol__fail(p, HOL_EPARSE, p->line, "'%.30s' is not a canonical address", f[2]);
+    hol_app_level *L = &p->L;
+    for (int k = 0; k < L->nplaces; k++)
+        if (hol_tile_eq(L->places[k].tile, t))
+            return hol__conflict(p, p->line, p->place_line[k], 1, NULL, f[2]);
+    if (L->nplaces >= HOL_APP_MAX_PLACES)
+        return hol__fail(p, HOL_ENOMEM, p->line, "more than %d placements", HOL_APP_MAX_PLACES);
+    p->place_line[L->nplaces] = p->line;
+    L->places[L->nplaces].tile = t;
+    L->places[L->nplaces++].object = ids[o];
+    return HOL_OK;
+}
+
+static hol_err hol__key_cues(hol__lp *p, char **f, int nf)
+{
+    static const char *const names[4] = {"hot-cold", "path", "poles", "arrow"};
+    unsigned cues = 0;
+    for (int i = 1; i < nf && i < HOL__FIELDS; i++) {
+        int c = hol__word(f[i], names, 4);
+        if (c < 0 && !(nf == 2 && !strcmp(f[i], "none")))
+            return hol__fail(p, HOL_EPARSE, p->line,
+                             "cue '%.20s' is not hot-cold, path, poles, arrow or none", f[i]);
+        if (c >= 0)
+            cues |= 1u << c;
+    }
+    if (nf > 5)
+        return hol__fail(p, HOL_EPARSE, p->line, "more than the four cues");
+    p->L.cues = cues;
+    return HOL_OK;
+}
+
+static hol_err hol__key_minimap(hol__lp *p, char **f, int nf)
+{
+    static const char *const places[3] = {"hud", "hand", "off"};
+    (void)nf;
+    int m = hol__word(f[1], places, 3);
+    if (m < 0)
+        return hol__fail(p, HOL_EPARSE, p->line, "minimap '%.20s' is not hud, hand or off", f[1]);
+    p->L.minimap = m;
+    return HOL_OK;
+}
+
+/* Every key, with its least and most fields (the key included). */
+static const struct {
+    const char *key;
+    int min, max;
+    hol_err (*fn)(hol__lp *p, char **f, int nf);
+} hol__keys[] = {
+    {"mode", 2, 2, hol__key_mode},
+    {"seed", 2, 2, hol__key_seed},
+    {"start", 2, 2, hol__key_start},
+    {"flag", 2, 2, hol__key_tile},
+    {"chest", 2, 2, hol__key_tile},
+    {"keys", 2, 1 + HOL_APP_MAX_KEYS, hol__key_keys},
+    {"flag-distance", 2, 3, hol__key_dist},
+    {"chest-distance", 2, 3, hol__key_dist},
+    {"keys-distance", 3, 4, hol__key_keys_dist},
+    {"time-limit", 2, 2, hol__key_time_limit},
+    {"stages", 2, HOL__FIELDS + 1, hol__key_stages},
+    {"place", 3, 3, hol__key_place},
+    {"cues", 2, HOL__FIELDS + 1, hol__key_cues},
+    {"minimap", 2, 2, hol__key_minimap},
+};
+
+/* ---- lines -------------------------------------------------------------------- */
+
+/* Split line (NUL-terminated, comment removed) at spaces and tabs into at
+ * most HOL__FIELDS NUL-terminated fields; returns the count, or
+ * HOL__FIELDS + 1 when there are more. */
+static int hol__split(char *line, char **f)
+{
+    int n = 0;
+    char *s = line;
+    for (;;) {
+        while (*s == ' ' || *s == '\t')
+            s++;
+        if (!*s)
+            return n;
+        if (n == HOL__FIELDS)
+            return n + 1;
+        f[n++] = s;
+        while (*s && *s != ' ' && *s != '\t')
+            s++;
+        if (*s)
+            *s++ = 0;
+    }
+}
+
+/* One line (n bytes at s, without its LF): comment, fields, its key. */
+static hol_err hol__line(hol__lp *p, const char *s, size_t n)
+{
+    char line[HOL_LEVEL_LINE_MAX + 1];
+    while (n && s[n - 1] == '\r')
+        n--;
+    if (n > HOL_LEVEL_LINE_MAX)
+        return hol__fail(p, HOL_ENOMEM, p->line, "longer than %d bytes", HOL_LEVEL_LINE_MAX);
+    if (memchr(s, 0, n))
+        return hol__fail(p, HOL_EPARSE, p->line, "a NUL byte");
+    memcpy(line, s, n);
+    line[n] = 0;
+    char *hash = strchr(line, '#');
+    if (hash)
+        *hash = 0;
+    char *f[HOL__FIELDS];
+    int nf = hol__split(line, f);
+    if (nf == 0)
+        return HOL_OK;
+    if (nf < 2)
+        return hol__fail(p, HOL_EPARSE, p->line, "'%.20s' needs a value", f[0]);
+    for (size_t k = 0; k < sizeof hol__keys / sizeof hol__keys[0]; k++)
+        if (!strcmp(f[0], hol__keys[k].key) && nf >= hol__keys[k].min &&
+            nf <= hol__keys[k].max)
+            return hol__keys[k].fn(p, f, nf);
+    return hol__fail(p, HOL_EPARSE, p->line, "unknown key or wrong value count: '%.20s'", f[0]);
+}
+
+/* ---- after the last line -------------------------------------------------------- */
+
+/* A placement may not stand where an objective is given. */
+static hol_err hol__check_places(hol__lp *p)
+{
+    const hol_app_level *L = &p->L;
+    for (int k = 0; k < L->nplaces; k++) {
+        hol_tile t = L->places[k].tile;
+        const char *what = NULL;
+        long at = 0;
+        if (L->mode == HOL_APP_FLAG && p->flag_line && !p->flag_lo && hol_tile_eq(t, L->flag))
+            what = "the flag", at = p->flag_line;
+        for (int j = 0; L->mode == HOL_APP_KEYS && !p->keys_n && j < L->nkeys; j++)
+            if (hol_tile_eq(t, L->keys[j]))
+                what = "a key", at = p->keys_line;
+        if (L->mode == HOL_APP_KEYS && p->chest_line && !p->chest_lo && hol_tile_eq(t, L->chest))
+            what = "the chest", at = p->chest_line;
+        if (what) {
+            char a[HOL_TILE_ADDR_MAX];
+            hol_tile_print(t, a);
+            return hol__conflict(p, p->place_line[k], at, 0, what, a);
+        }
+    }
+    return HOL_OK;
+}
+
+static uint64_t hol__mix(uint64_t *x)
+{
+    uint64_t z = (*x += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+}
+
+/* A tile at distance d from `from`, drawn from rng: each step goes to a
+ * neighbour one further away (in the {4,5} tiling every tile has one). */
+static hol_tile hol__tile_at(hol_tile from, int d, uint64_t *rng)
+{
+    hol_tile t = from;
+    for (int i = 1; i <= d; i++) {
+        hol_tile cand[4];
+        int n = 0;
+        for (int e = 0; e < 4; e++) {
+            hol_tile nb;
+            int arr;
+            if (!hol_tile_step(t, e, &nb, &arr) && hol_tile_dist(from, nb) == i)
+                cand[n++] = nb;
+        }
+        if (n == 0)
+            break;
+        t = cand[hol__mix(rng) % (uint64_t)n];
+    }
+    return t;
+}
+
+/* Is t taken: the start tile, an objective or a placement? */
+static int hol__taken(const hol_app_level *L, hol_tile start, hol_tile t)
+{
+    if (hol_tile_eq(t, start))
+        return 1;
+    if (L->mode == HOL_APP_FLAG && hol_tile_eq(t, L->flag))
+        return 1;
+    if (L->mode == HOL_APP_KEYS) {
+        for (int k = 0; k < L->nkeys; k++)
+            if (hol_tile_eq(t, L->keys[k]))
+                return 1;
+        if (hol_tile_eq(t, L->chest))
+            return 1;
+    }
+    for (int k = 0; k < L->nplaces; k++)
+        if (hol_tile_eq(t, L->places[k].tile))
+            return 1;
+    return 0;
+}
+
+/* A free tile at a distance in [lo, hi] from start; 1 if none was found in
+ * 256 draws. */
+static int hol__draw(const hol_app_level *L, hol_tile start, int lo, int hi, uint64_t *rng,
+                     hol_tile *out)
+{
+    for (int tries = 0; tries < 256; tries++) {
+        int d = lo + (int)(hol__mix(rng) % (uint64_t)(hi - lo + 1));
+        hol_tile t = hol__tile_at(start, d, rng);
+        if (hol_tile_dist(start, t) == d && !hol__taken(L, start, t)) {
+            *out = t;
+            return 0;
+        }
+    }
+    return 1;
+}
+
+/* Objectives by distance from the start tile, drawn from the seed. */
+static hol_err hol__draw_objectives(hol__lp *p, hol_tile start)
+{
+    hol_app_level *L = &p->L;
+    uint64_t rng = L->seed ^ 0x6c6576656cull;
+    if (L->mode == HOL_APP_FLAG && p->flag_lo &&
+        hol__draw(L, start, p->flag_lo, p->flag_hi, &rng, &L->flag))
+        return hol__fail(p, HOL_EARG, p->flag_line, "no free tile for the flag at that distance");
+    if (L->mode == HOL_APP_KEYS && p->chest_lo &&
+        hol__draw(L, start, p->chest_lo, p->chest_hi, &rng, &L->chest))
+        return hol__fail(p, HOL_EARG, p->chest_line,
+                         "no free tile for the chest at that distance");
+    if (L->mode == HOL_APP_KEYS && p->keys_n) {
+        L->nkeys = 0;
+        for (int k = 0; k < p->keys_n; k++) {
+            hol_tile t;
+            if (hol__draw(L, start, p->keys_lo, p->keys_hi, &rng, &t))
+                return hol__fail(p, HOL_EARG, p->keys_line,
+                                 "no free tile for key %d at that distance", k + 1);
+            L->keys[L->nkeys++] = t;
+        }
+    }
+    return HOL_OK;
+}
+
+static hol_err hol__finish(hol__lp *p)
+{
+    if (!p->have_mode)
+        return hol__fail(p, HOL_EARG, p->line ? p->line : 1, "no 'mode' line%s",
+                         p->line ? "" : " (the level is empty)");
+    hol_room r0 = hol_room_start();
+    for (int i = 0; i < p->L.nstart; i++)
+        if (hol_room_step(&r0, p->L.start[i]))
+            return hol__fail(p, HOL_EARG, p->line, "the start walk leaves the room");
+    hol_err e = hol__check_places(p);
+    return e ? e : hol__draw_objectives(p, r0.tile);
+}
+
+/* ---- the API ------------------------------------------------------------------ */
+
+hol_err hol_level_parse(const char *text, size_t len, hol_app_level *out, hol_level_err *err)
+{
+    static const hol__lp zero;
+    hol__lp p = zero;
+    p.L.cues = HOL_CUE_ALL;
+    p.err = err;
+    if (len > HOL_LEVEL_TEXT_MAX)
+        return hol__fail(&p, HOL_ENOMEM, 0, "longer than %d bytes", HOL_LEVEL_TEXT_MAX);
+    const char *s = text, *end = text + len;
+    while (s < end) {
+        const char *nl = memchr(s, '\n', (size_t)(end - s));
+        const char *le = nl ? nl : end;
+        p.line++;
+        hol_err e = hol__line(&p, s, (size_t)(le - s));
+        if (e)
+            return e;
+        s = nl ? nl + 1 : end;
+    }
+    hol_err e = hol__finish(&p);
+    if (e)
+        return e;
+    *out = p.L;
+    return HOL_OK;
+}
+
+char *hol_level_err_format(const hol_level_err *err, long first, char *out, size_t cap)
+{
+    int n = err->line > 0 ? snprintf(out, cap, "line %ld: %s", first + err->line - 1, err->msg)
+                          : snprintf(out, cap, "%s", err->msg);
+    if (err->other > 0 && n >= 0 && (size_t)n < cap)
+        snprintf(out + n, cap - (size_t)n, err->other_on ? " on line %ld" : " (line %ld)",
+                 first + err->other - 1);
+    return out;
+}
+
+int hol_level_name_ok(const char *name, size_t len)
+{
+    return len > 0 && len < HOL_LEVEL_NAME_MAX && !memchr(name, 0, len) &&
+           !memchr(name, '\n', len) && !memchr(name, '\r', len);
+}
+
+hol_err hol_level_make(const char *name, size_t name_len, const char *text, size_t len,
+                       hol_level *out, hol_level_err *err)
+{
+    hol__lp p;
+    memset(&p, 0, sizeof p);
+    p.err = err;
+    if (!hol_level_name_ok(name, name_len))
+        return hol__fail(&p, HOL_EARG, 0,
+                         name_len == 0 ? "an empty level name"
+                         : name_len >= HOL_LEVEL_NAME_MAX
+                             ? "a level name longer than 63 bytes"
+                             : "a level name with a NUL, CR or LF byte, which a recording "
+                               "cannot carry");
+    hol_err e = hol_level_parse(text, len, &out->lvl, err);
+    if (e)
+        return e;
+    /* the text as a recording carries it: LF line ends (CRs before them
+     * dropped), the last line's too */
+    size_t o = 0;
+    for (const char *s = text, *end = text + len; s < end;) {
+        const char *nl = memchr(s, '\n', (size_t)(end - s));
+        size_t n = (size_t)((nl ? nl : end) - s);
+        while (n && s[n - 1] == '\r')
+            n--;
+        memcpy(out->text + o, s, n);
+        o += n;
+        out->text[o++] = '\n';
+        s = nl ? nl + 1 : end;
+    }
+    out->text[o] = 0;
+    out->len = o;
+    memcpy(out->name, name, name_len);
+    out->name[name_len] = 0;
+    hol_sha256(out->text, out->len, out->sha256);
+    return HOL_OK;
+}

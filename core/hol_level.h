@@ -1,0 +1,76 @@
+/* hol_level.h - level files (SPEC section 5): the one parser every platform
+ * uses (game, play, replay, xr, Android, the web), and a level as a session
+ * carries it: its name, its text and the parsed level.
+ *
+ * Contract
+ * - hol_level_parse reads a level file's text into a hol_app_level: one
+ *   `KEY VALUE...` per line, `#` starts a comment, blank lines are ignored,
+ *   a line may end in CR LF. Keys: SPEC section 5 and the added ones (README
+ *   "Level files"). Bounds: at most HOL_LEVEL_TEXT_MAX bytes, lines of at
+ *   most HOL_LEVEL_LINE_MAX bytes, no NUL byte.
+ * - On bad input it returns a typed error and fills *err: the 1-based line
+ *   of the text, the other line a conflict names (0: none) and a message
+ *   without line numbers; hol_level_err_format makes the one line
+ *   "line N: MESSAGE" (a conflict: "... (line M)" or "... on line M"),
+ *   numbering lines from `first` (a recording's level starts later in its
+ *   file). Errors: HOL_EPARSE (not the grammar: an unknown key, a wrong
+ *   value count, a bad word or address), HOL_ERANGE (a number out of its
+ *   range), HOL_EARG (the level does not hold together: no mode, a start
+ *   walk leaving the room, a placement on an objective, no free tile for a
+ *   drawn objective), HOL_ENOMEM (too long: the text, a line, the
+ *   placements). *out is untouched on error.
+ * - Objectives by distance are drawn from the seed after the last line:
+ *   the same text always gives the same level.
+ * - hol_level_make makes a session's level from a name and a file's text:
+ *   the name must survive a recording's "level NAME" line (1 to
+ *   HOL_LEVEL_NAME_MAX - 1 bytes, no NUL, CR or LF: else HOL_EARG with
+ *   line 0); the text is kept with LF line ends (CR LF read as LF, a last
+ *   line without its newline given one), which is exactly what a recording
+ *   carries and replays, and its SHA-256 (hol_sha256.h) is kept: the
+ *   `sha256sum` of a file with LF line ends.
+ * - Pure: no allocation, no I/O, no globals.
+ */
+#ifndef HOL_LEVEL_H
+#define HOL_LEVEL_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "hol_app.h"
+#include "hol_err.h"
+
+#define HOL_LEVEL_TEXT_MAX 4095 /* bytes of a level file */
+#define HOL_LEVEL_LINE_MAX 511  /* bytes of one line, without its newline */
+#define HOL_LEVEL_NAME_MAX 64   /* with the NUL */
+#define HOL_LEVEL_MAX_DIST 10   /* objectives by distance: 1..10 tiles */
+
+typedef struct hol_level_err {
+    hol_err code;
+    long line;    /* 1-based line of the text; 0: the name or the whole text */
+    long other;   /* the line a conflict names, or 0 */
+    int other_on; /* 1: "... on line M", 0: "... (line M)" */
+    char msg[192];
+} hol_level_err;
+
+typedef struct hol_level {
+    char name[HOL_LEVEL_NAME_MAX];
+    char text[HOL_LEVEL_TEXT_MAX + 2]; /* LF line ends, NUL-terminated */
+    size_t len;
+    uint8_t sha256[32];
+    hol_app_level lvl;
+} hol_level;
+
+hol_err hol_level_parse(const char *text, size_t len, hol_app_level *out,
+                        hol_level_err *err);
+
+/* Writes "line N: MESSAGE..." (N counted from first for line 1; just the
+ * message when err->line is 0) into out; returns out. */
+char *hol_level_err_format(const hol_level_err *err, long first, char *out, size_t cap);
+
+/* 1 when name (len bytes) can be a level's name: see the contract. */
+int hol_level_name_ok(const char *name, size_t len);
+
+hol_err hol_level_make(const char *name, size_t name_len, const char *text, size_t len,
+                       hol_level *out, hol_level_err *err);
+
+#endif

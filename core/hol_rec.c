@@ -1,0 +1,239 @@
+/* hol_rec.c - the recording's header: written piecewise, read a line at a
+ * time (see hol_rec.h). */
+#include "hol_rec.h"
+
+#include <stdarg.h>
+#include <stdio.h>
+#include <string.h>
+
+enum { HOL__START, HOL__META, HOL__LEVEL, HOL__LEVELS };
+enum { HOL__SEEN_SESSION = 1, HOL__SEEN_PART = 2, HOL__SEEN_START = 4, HOL__SEEN_VERSION = 8 };
+
+static int hol__idc(int c, int plus)
+{
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+           c == '.' || c == '_' || c == '-' || (plus && c == '+');
+}
+
+static int hol__id(const char *s, size_t max, int plus)
+{
+    size_t n = strlen(s);
+    if (n == 0 || n >= max)
+        return 0;
+    for (size_t i = 0; i < n; i++)
+        if (!hol__idc((unsigned char)s[i], plus))
+            return 0;
+    return 1;
+}
+
+int hol_rec_id_ok(const char *s)
+{
+    return hol__id(s, HOL_REC_ID_MAX, 0);
+}
+
+int hol_rec_time_ok(const char *s)
+{
+    static const char pat[] = "dddd-dd-ddTdd:dd:ddZ";
+    if (strlen(s) != sizeof pat - 1)
+        return 0;
+    for (size_t i = 0; pat[i]; i++)
+        if (pat[i] == 'd' ? !(s[i] >= '0' && s[i] <= '9') : s[i] != pat[i])
+            return 0;
+    return 1;
+}
+
+/* ---- writing --------------------------------------------------------------- */
+
+static void hol__emitf(hol_rec_emit fn, void *ctx, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+
+static void hol__emitf(hol_rec_emit fn, void *ctx, const char *fmt, ...)
+{
+    char line[HOL_REC_LINE_MAX + 2];
+    va_list ap;
+    va_start(ap, fmt);
+    int n = vsnprintf(line, sizeof line, fmt, ap);
+    va_end(ap);
+    if (n > 0)
+        fn(ctx, line, (size_t)n < sizeof line ? (size_t)n : sizeof line - 1);
+}
+
+void hol_rec_write_header(const hol_rec_meta *m, const hol_level *levels, int nlevels,
+                          hol_rec_emit fn, void *ctx)
+{
+    hol__emitf(fn, ctx, "holonomy-rec %d\n", HOL_REC_VERSION);
+    hol__emitf(fn, ctx, "session %s\n", m->session);
+    if (m->participant[0])
+        hol__emitf(fn, ctx, "participant %s\n", m->participant);
+    hol__emitf(fn, ctx, "start %s\n", m->start);
+    hol__emitf(fn, ctx, "version %s\n", m->version);
+    for (int i = 0; i < nlevels; i++) {
+        hol__emitf(fn, ctx, "level %s\n", levels[i].name);
+        const char *p = levels[i].text, *e = p + levels[i].len;
+        while (p < e) {
+            const char *nl = memchr(p, '\n', (size_t)(e - p));
+            size_t n = (size_t)((nl ? nl : e) - p);
+            fn(ctx, "L ", 2);
+            fn(ctx, p, n);
+            fn(ctx, "\n", 1);
+            p = nl ? nl + 1 : e;
+        }
+        fn(ctx, "end\n", 4);
+    }
+}
+
+/* ---- reading --------------------------------------------------------------- */
+
+static hol_err hol__bad(hol_rec_reader *r, hol_err code, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+
+static hol_err hol__bad(hol_rec_reader *r, hol_err code, const char *fmt, ...)
+{
+    int n = snprintf(r->msg, sizeof r->msg, "line %ld: ", r->line);
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(r->msg + n, sizeof r->msg - (size_t)n, fmt, ap);
+    va_end(ap);
+    return code;
+}
+
+void hol_rec_reader_init(hol_rec_reader *r, hol_level *levels)
+{
+    memset(r, 0, sizeof *r);
+    r->levels = levels;
+}
+
+static hol_err hol__first_line(hol_rec_reader *r, const char *s, size_t len)
+{
+    if (len < 13 || memcmp(s, "holonomy-rec ", 13))
+        return hol__bad(r, HOL_EPARSE, "not a recording (no 'holonomy-rec' header)");
+    if (len == 14 && (s[13] == '1' || s[13] == '2')) {
+        r->version = s[13] - '0';
+        r->state = r->version == 1 ? HOL__LEVELS : HOL__META;
+        return HOL_OK;
+    }
+    return hol__bad(r, HOL_EVERSION, "recording format '%.30s' is not version 1 or %d",
+                    len > 13 ? s + 13 : "", HOL_REC_VERSION);
+}
+
+/* "session ID", "participant ID", "start ISO", "version V" (version 2, before
+ * the first level). 1 when the line was one of them (or an error). */
+static int hol__meta_line(hol_rec_reader *r, const char *s, size_t len, hol_err *err)
+{
+    static const char *const keys[4] = {"session ", "participant ", "start ", "version "};
+    hol_rec_meta *m = &r->meta;
+    char *dst[4] = {m->session, m->participant, m->start, m->version};
+    size_t cap[4] = {sizeof m->session, sizeof m->participant, sizeof m->start,
+                     sizeof m->version};
+    for (int k = 0; k < 4; k++) {
+        size_t kl = strlen(keys[k]);
+        if (len < kl || memcmp(s, keys[k], kl))
+            continue;
+        *err = HOL_OK;
+        char v[HOL_REC_ID_MAX];
+        size_t n = len - kl;
+        int ok = r->state == HOL__META && !(r->seen & (1 << k)) && n < cap[k] && n < sizeof v;
+        if (ok) {
+            memcpy(v, s + kl, n);
+            v[n] = 0;
+            ok = k == 2 ? hol_rec_time_ok(v) : k == 3 ? hol__id(v, cap[k], 1) : hol_rec_id_ok(v);
+        }
+        if (!ok)
+            *err = hol__bad(r, HOL_EPARSE, "'%.*s' is not a %s line (once, before the levels)",
+                            (int)(kl - 1), keys[k],
+                            k == 2 ? "'start YYYY-MM-DDTHH:MM:SSZ'" : "valid metadata");
+        else {
+            memcpy(dst[k], v, n + 1);
+            r->seen |= 1 << k;
+        }
+        return 1;
+    }
+    return 0;
+}
+
+static hol_err hol__level_begin(hol_rec_reader *r, const char *s, size_t len)
+{
+    if (r->state == HOL__META && (r->seen & 0xd) != 0xd)
+        return hol__bad(r, HOL_EPARSE, "a version 2 recording names its session, start and "
+                                       "version before its levels");
+    if (r->nlevels >= HOL_REC_MAX_LEVELS)
+        return hol__bad(r, HOL_ENOMEM, "more than %d levels", HOL_REC_MAX_LEVELS);
+    r->name_len = len - 6;
+    if (!hol_level_name_ok(s + 6, r->name_len))
+        return hol__bad(r, HOL_EARG, "a level name is 1..%d bytes without a CR",
+                        HOL_LEVEL_NAME_MAX - 1);
+    memcpy(r->name, s + 6, r->name_len);
+    r->name[r->name_len] = 0;
+    r->len = 0;
+    r->level_first = r->line + 1;
+    r->state = HOL__LEVEL;
+    return HOL_OK;
+}
+
+static hol_err hol__level_end(hol_rec_reader *r)
+{
+    hol_level_err le;
+    hol_err e = hol_level_make(r->name, r->name_len, r->text, r->len, &r->levels[r->nlevels], &le);
+    if (e) {
+        char what[224];
+        hol_level_err_format(&le, r->level_first, what, sizeof what);
+        /* "line N: MSG" of the recording's lines, said of the level */
+        const char *colon = le.line > 0 ? strchr(what, ':') : NULL;
+        snprintf(r->msg, sizeof r->msg, "line %ld: level '%.40s'%s%.190s",
+                 le.line > 0 ? r->level_first + le.line - 1 : r->line, r->name,
+                 colon ? "" : ": ", colon ? colon : what);
+        return e;
+    }
+    r->nlevels++;
+    r->state = HOL__LEVELS;
+    return HOL_OK;
+}
+
+hol_err hol_rec_read_line(hol_rec_reader *r, const char *s, size_t len, int *out_done)
+{
+    *out_done = 0;
+    r->line++;
+    if (len && s[len - 1] == '\r')
+        len--;
+    if (memchr(s, 0, len))
+        return hol__bad(r, HOL_EPARSE, "a NUL byte");
+    if (r->state == HOL__START)
+        return hol__first_line(r, s, len);
+    if (r->state == HOL__LEVEL) {
+        if (len >= 2 && s[0] == 'L' && s[1] == ' ') {
+            if (r->len + len - 2 + 1 > HOL_LEVEL_TEXT_MAX)
+                return hol__bad(r, HOL_ENOMEM, "level '%.40s' longer than %d bytes", r->name,
+                                HOL_LEVEL_TEXT_MAX);
+            memcpy(r->text + r->len, s + 2, len - 2);
+            r->len += len - 2;
+            r->text[r->len++] = '\n';
+            return HOL_OK;
+        }
+        if (len == 3 && !memcmp(s, "end", 3))
+            return hol__level_end(r);
+        return hol__bad(r, HOL_EPARSE, "level '%.40s' not closed by 'end'", r->name);
+    }
+    hol_err err;
+    if (hol__meta_line(r, s, len, &err))
+        return err;
+    if (len >= 6 && !memcmp(s, "level ", 6))
+        return hol__level_begin(r, s, len);
+    if (r->nlevels == 0)
+        return hol__bad(r, HOL_EPARSE, "the recording holds no level");
+    r->line--; /* not a header line: the first input line */
+    *out_done = 1;
+    return HOL_OK;
+}
+
+hol_err hol_rec_read_end(hol_rec_reader *r)
+{
+    r->line++;
+    if (r->state == HOL__LEVEL)
+        return hol__bad(r, HOL_EPARSE, "level '%.40s' not closed by 'end'", r->name);
+    if (r->state == HOL__START)
+        return hol__bad(r, HOL_EPARSE, "not a recording (no 'holonomy-rec' header)");
+    if (r->nlevels == 0)
+        return hol__bad(r, HOL_EPARSE, "the recording holds no level");
+    r->line--;
+    return HOL_OK;
+}

@@ -1,0 +1,86 @@
+/* hol_rec.h - the recording format: a session's metadata and levels, then
+ * one input record per frame. Written by the session (hol_session.h), read
+ * by `holonomy replay` and `play --input` line by line.
+ *
+ * Contract
+ * - Text, one item per line (LF; a CR before the LF is ignored on reading):
+ *
+ *     holonomy-rec 2
+ *     session ID            the session's id          (version 2)
+ *     participant ID        optional                  (version 2)
+ *     start ISO             start, UTC: 2025-01-31T12:00:00Z (version 2)
+ *     version V             the app version that played (version 2)
+ *     level NAME            each level of the session, in order:
+ *     L LINE                its text's lines (hol_level.h), then
+ *     end
+ *     TIME f=... ...        one input line per frame (core/hol_input_io.h)
+ *
+ *   Version 1 (no metadata lines) is read too. The metadata lines come
+ *   before the first level, each at most once; session, start and version
+ *   are required in version 2. IDs are 1..63 bytes of letters, digits and
+ *   '.', '_', '-' (hol_rec_id_ok); a version 1..31 bytes of those and '+'.
+ * - hol_rec_write_header emits the header through fn in pieces whose
+ *   concatenation is the text above (levels given with LF-ended text, as
+ *   hol_level_make keeps it), so the header of a recording that play wrote
+ *   reads back to the same metadata and levels, and the same hashes.
+ * - hol_rec_reader takes the file a line at a time (without its LF):
+ *   hol_rec_read_line returns HOL_OK with *out_done 0 while the header goes
+ *   on, and *out_done 1 when this line is the first input line (it is not
+ *   consumed: the caller parses it and the rest as input records). At the
+ *   end of the file call hol_rec_read_end (a recording may hold no input
+ *   lines). Errors: HOL_EPARSE / HOL_EVERSION / HOL_ENOMEM / HOL_EARG (a bad
+ *   level) with r->msg "line N: ..." naming the file's line. At most
+ *   HOL_REC_MAX_LEVELS levels.
+ * - Lines are at most HOL_REC_LINE_MAX bytes: readers refuse a longer one at
+ *   once (no recording line is longer).
+ * - Pure: no allocation, no I/O; the caller gives the levels array.
+ */
+#ifndef HOL_REC_H
+#define HOL_REC_H
+
+#include <stddef.h>
+
+#include "hol_err.h"
+#include "hol_level.h"
+
+#define HOL_REC_VERSION 2
+#define HOL_REC_MAX_LEVELS 16
+#define HOL_REC_LINE_MAX 1024
+#define HOL_REC_ID_MAX 64 /* with the NUL */
+
+typedef struct hol_rec_meta {
+    char session[HOL_REC_ID_MAX];     /* "" in version 1 */
+    char participant[HOL_REC_ID_MAX]; /* "": none */
+    char start[HOL_REC_ID_MAX];       /* ISO 8601 UTC, "" in version 1 */
+    char version[32];                 /* "" in version 1 */
+} hol_rec_meta;
+
+/* 1 when s is an id: 1..63 bytes of [A-Za-z0-9._-]. */
+int hol_rec_id_ok(const char *s);
+/* 1 when s is YYYY-MM-DDTHH:MM:SSZ. */
+int hol_rec_time_ok(const char *s);
+
+typedef void (*hol_rec_emit)(void *ctx, const char *data, size_t n);
+void hol_rec_write_header(const hol_rec_meta *meta, const hol_level *levels, int nlevels,
+                          hol_rec_emit fn, void *ctx);
+
+typedef struct hol_rec_reader {
+    hol_level *levels; /* cap HOL_REC_MAX_LEVELS, given */
+    int nlevels;
+    int version;       /* 1 or 2 once line 1 is read */
+    hol_rec_meta meta;
+    long line;         /* lines read */
+    char msg[256];
+    /* private: where the reader is, metadata seen, the level being read */
+    int state, seen;
+    long level_first;
+    char name[HOL_LEVEL_NAME_MAX];
+    size_t name_len, len;
+    char text[HOL_LEVEL_TEXT_MAX + 1];
+} hol_rec_reader;
+
+void hol_rec_reader_init(hol_rec_reader *r, hol_level *levels);
+hol_err hol_rec_read_line(hol_rec_reader *r, const char *s, size_t len, int *out_done);
+hol_err hol_rec_read_end(hol_rec_reader *r);
+
+#endif

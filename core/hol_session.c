@@ -1,0 +1,310 @@
+/* hol_session.c - the session: create, a frame, the level sequence, the
+ * end (see hol_session.h). */
+#include "hol_session_impl.h"
+
+#include <stdio.h>
+#include <string.h>
+
+#include "hol_input_io.h"
+#include "hol_version.h"
+
+#define HOL__REC_BUF (64u << 10)
+#define HOL__ROWS_BUF (32u << 10)
+
+unsigned hol_session_cues_visible(const hol_app_view *v)
+{
+    unsigned c = v->map.cues, vis = 0;
+    int map = v->map.place != HOL_MINIMAP_OFF, objs = v->map.nobjectives > 0;
+    if (map && objs && (c & HOL_CUE_HOT_COLD))
+        vis |= HOL_CUE_HOT_COLD;
+    if (map && v->map.npath > 0 && (c & HOL_CUE_PATH))
+        vis |= HOL_CUE_PATH;
+    if (objs && (c & HOL_CUE_POLES))
+        vis |= HOL_CUE_POLES;
+    for (int i = 0; map && (c & HOL_CUE_ARROW) && i < v->map.nobjectives; i++)
+        if (hol_tile_dist(v->user.tile, v->map.objectives[i]) > HOL_APP_MINIMAP_RADIUS)
+            vis |= HOL_CUE_ARROW;
+    return vis;
+}
+
+/* ---- create ---------------------------------------------------------------- */
+
+static hol_err hol__check_desc(const hol_session_desc *d, char *msg, size_t cap)
+{
+    if (!d->levels || d->nlevels < 1 || d->nlevels > HOL_SESSION_MAX_LEVELS) {
+        snprintf(msg, cap, "a session plays 1 to %d levels", HOL_SESSION_MAX_LEVELS);
+        return HOL_EARG;
+    }
+    /* ids may be empty only without a recording (a version 1 recording's
+     * replay does not know them) */
+    const hol_rec_meta *m = &d->meta;
+    if ((d->rec || m->session[0]) && !hol_rec_id_ok(m->session)) {
+        snprintf(msg, cap, "the session id is not 1..63 letters, digits, '.', '_', '-'");
+        return HOL_EARG;
+    }
+    if ((d->rec || m->start[0]) && !hol_rec_time_ok(m->start)) {
+        snprintf(msg, cap, "the start time is not YYYY-MM-DDTHH:MM:SSZ");
+        return HOL_EARG;
+    }
+    if (m->participant[0] && !hol_rec_id_ok(m->participant)) {
+        snprintf(msg, cap, "the participant is not 1..63 letters, digits, '.', '_', '-'");
+        return HOL_EARG;
+    }
+    if (d->rec && (!d->rec_name || !d->rec_name[0] ||
+                   strlen(d->rec_name) + 6 > HOL_SINK_NAME_MAX || strchr(d->rec_name, '/'))) {
+        snprintf(msg, cap, "the recording's name is not valid");
+        return HOL_EARG;
+    }
+    return HOL_OK;
+}
+
+static hol_err hol__start_level(hol_session *s)
+{
+    hol_err e = hol_app_start_level(s->app, &s->levels[s->cur].lvl);
+    if (e)
+        snprintf(s->msg, sizeof s->msg, "level '%.60s' cannot start: %s",
+                 s->levels[s->cur].name,
+                 e == HOL_EBUDGET ? "its optimum cannot be proved exact"
+                 : e == HOL_EARG  ? "an objective on the start tile, or a start walk leaving "
+                                    "the room"
+                                  : hol_err_str(e));
+    return e;
+}
+
+static void hol__rec_emit(void *ctx, const char *data, size_t n)
+{
+    hol_session *s = ctx;
+    hol__out_put(s, &s->rec_out, data, n);
+}
+
+/* The recording: REC.live (refused when a killed session left one), the
+ * header, flushed. */
+static hol_err hol__rec_open(hol_session *s)
+{
+    char live[HOL_SINK_NAME_MAX + 8], probe[1];
+    size_t got = 0;
+    snprintf(live, sizeof live, "%s.live", s->rec_name);
+    if (s->rec->read(s->rec->user, live, 0, probe, 1, &got) != HOL_EOPEN) {
+        snprintf(s->msg, sizeof s->msg, "'%.100s' is there: the recording of a session that "
+                 "did not end (replay it, then move it away)", live);
+        return HOL_EARG;
+    }
+    hol_err e = hol__out_open(s, &s->rec_out, live, 0);
+    if (e)
+        return e;
+    hol_rec_write_header(&s->meta, s->levels, s->nlevels, hol__rec_emit, s);
+    hol__out_flush(s, &s->rec_out, 0);
+    return s->failed;
+}
+
+static hol_err hol__alloc(hol_session *s, const hol_session_desc *d)
+{
+    size_t lv = (size_t)d->nlevels * sizeof *s->levels;
+    size_t bufs = (d->rec ? HOL__REC_BUF : 0) + (d->log ? 2 * HOL__ROWS_BUF : 0);
+    char *mem = hol_alloc_mem(&s->alloc, lv + bufs);
+    if (!mem)
+        return HOL_ENOMEM;
+    s->levels = (hol_level *)(void *)mem;
+    memcpy(s->levels, d->levels, lv);
+    char *b = mem + lv;
+    hol__out_init(&s->rec_out, d->rec, d->rec ? b : NULL, d->rec ? HOL__REC_BUF : 0);
+    b += d->rec ? HOL__REC_BUF : 0;
+    hol__out_init(&s->steps, d->log, d->log ? b : NULL, d->log ? HOL__ROWS_BUF : 0);
+    hol__out_init(&s->head, d->log, d->log ? b + HOL__ROWS_BUF : NULL,
+                  d->log ? HOL__ROWS_BUF : 0);
+    return HOL_OK;
+}
+
+static hol_err hol__create(hol_session *s, const hol_session_desc *d)
+{
+    hol_err e = hol__alloc(s, d);
+    if (e) {
+        snprintf(s->msg, sizeof s->msg, "out of memory");
+        return e;
+    }
+    if ((e = hol_app_create(&d->app, &s->app))) {
+        snprintf(s->msg, sizeof s->msg, "cannot create the app: %s", hol_err_str(e));
+        return e;
+    }
+    if ((e = hol__start_level(s)))
+        return e;
+    if (s->log && (e = hol__log_open(s, d->append)))
+        return e;
+    if (s->rec && (e = hol__rec_open(s)))
+        return e;
+    return HOL_OK;
+}
+
+hol_err hol_session_create(const hol_session_desc *d, hol_session **out, char *msg, size_t cap)
+{
+    hol_err e = hol__check_desc(d, msg, cap);
+    if (e)
+        return e;
+    hol_session *s = hol_alloc_mem(&d->alloc, sizeof *s);
+    if (!s) {
+        snprintf(msg, cap, "out of memory");
+        return HOL_ENOMEM;
+    }
+    memset(s, 0, sizeof *s);
+    s->alloc = d->alloc;
+    s->nlevels = d->nlevels;
+    s->meta = d->meta;
+    if (!s->meta.version[0])
+        snprintf(s->meta.version, sizeof s->meta.version, "%s", HOL_VERSION);
+    s->log = d->log;
+    s->rec = d->rec;
+    if (d->rec)
+        snprintf(s->rec_name, sizeof s->rec_name, "%s", d->rec_name);
+    s->flush_s = d->flush_s > 0 ? d->flush_s : 1.0;
+    if ((e = hol__create(s, d))) {
+        snprintf(msg, cap, "%s", s->msg);
+        hol_session_destroy(s);
+        return e;
+    }
+    *out = s;
+    return HOL_OK;
+}
+
+/* ---- a frame ------------------------------------------------------------------ */
+
+static void hol__flush_all(hol_session *s, int durable)
+{
+    hol__out_flush(s, &s->rec_out, durable);
+    hol__out_flush(s, &s->steps, durable);
+    hol__out_flush(s, &s->head, durable);
+}
+
+hol_err hol_session_step(hol_session *s, const hol_input *in, int *out_over)
+{
+    *out_over = s->over;
+    if (s->over)
+        return HOL_OK;
+    hol_err e = hol_app_step(s->app, in);
+    if (e) {
+        snprintf(s->msg, sizeof s->msg, "frame %ld: the app step failed: %s", s->frames,
+                 hol_err_str(e));
+        return e;
+    }
+    s->frames++;
+    s->now = in->time_s;
+    if (s->rec) {
+        char line[HOL_INPUT_LINE_MAX + 2];
+        size_t n = hol_input_format(in, line, sizeof line);
+        line[n++] = '\n';
+        hol__out_put(s, &s->rec_out, line, n);
+    }
+    const hol_app_events *ev = hol_app_get_events(s->app);
+    const hol_app_view *v = hol_app_get_view(s->app);
+    if (s->log)
+        hol__log_frame(s, ev, v);
+    if (v->state == HOL_APP_QUIT) {
+        s->over = 1;
+    } else if (ev->next_level) {
+        if (s->cur + 1 >= s->nlevels) {
+            s->over = 1;
+        } else {
+            s->cur++;
+            if ((e = hol__start_level(s)))
+                return e;
+        }
+    }
+    if (s->now >= s->next_flush) {
+        hol__flush_all(s, 0);
+        s->next_flush = s->now + s->flush_s;
+    }
+    *out_over = s->over;
+    if (s->failed && !s->failed_told) {
+        s->failed_told = 1;
+        return s->failed;
+    }
+    return HOL_OK;
+}
+
+/* ---- the end -------------------------------------------------------------------- */
+
+/* The attempt in play ends with end: its summary from the view. */
+static void hol__end_attempt_now(hol_session *s, int end)
+{
+    if (!s->log || !s->attempt_open)
+        return;
+    const hol_app_view *v = hol_app_get_view(s->app);
+    hol_app_summary sum;
+    memset(&sum, 0, sizeof sum);
+    sum.mode = s->levels[s->cur].lvl.mode;
+    sum.seed = s->levels[s->cur].lvl.seed;
+    sum.steps = v->hud.steps;
+    sum.optimum = v->hud.optimum;
+    sum.time_s = v->hud.elapsed_s;
+    hol__attempt_end(s, &sum, end);
+}
+
+static hol_err hol__end(hol_session *s, int end)
+{
+    if (s->finished)
+        return s->failed;
+    s->finished = s->over = 1;
+    hol__end_attempt_now(s, end);
+    if (s->rec && s->rec_out.h >= 0) {
+        char live[HOL_SINK_NAME_MAX + 8];
+        snprintf(live, sizeof live, "%s.live", s->rec_name);
+        hol__out_flush(s, &s->rec_out, 1);
+        hol__out_close(s, &s->rec_out);
+        if (!s->failed && s->rec->rename(s->rec->user, live, s->rec_name))
+            hol__fail_sink(s, s->rec, HOL_EIO, "rename", live);
+    }
+    return s->failed;
+}
+
+hol_err hol_session_abort(hol_session *s)
+{
+    return hol__end(s, HOL__END_ABORTED);
+}
+
+hol_err hol_session_finish(hol_session *s)
+{
+    return hol__end(s, HOL_APP_END_NONE);
+}
+
+void hol_session_destroy(hol_session *s)
+{
+    if (!s)
+        return;
+    hol__out *outs[3] = {&s->rec_out, &s->steps, &s->head};
+    for (int i = 0; i < 3; i++)
+        if (outs[i]->h >= 0)
+            outs[i]->sink->close(outs[i]->sink->user, outs[i]->h);
+    hol_app_destroy(s->app);
+    hol_alloc a = s->alloc;
+    hol_alloc_release(&a, s->levels);
+    hol_alloc_release(&a, s);
+}
+
+hol_app *hol_session_app(hol_session *s)
+{
+    return s->app;
+}
+
+int hol_session_level_index(const hol_session *s)
+{
+    return s->cur;
+}
+
+const hol_level *hol_session_level(const hol_session *s)
+{
+    return &s->levels[s->cur];
+}
+
+long hol_session_frames(const hol_session *s)
+{
+    return s->frames;
+}
+
+int hol_session_recovered(const hol_session *s)
+{
+    return s->recovered;
+}
+
+const char *hol_session_message(const hol_session *s)
+{
+    return s->msg;
+}

@@ -1,0 +1,133 @@
+/* hol_session.h - a play session, the same on every platform: the level
+ * sequence, the app step, attempts, the research logs and the recording.
+ * `holonomy play`, `replay`, `xr`, the Quest app and the web page all run
+ * it, so a replay runs exactly the code the play ran.
+ *
+ * Contract
+ * - Pure: no I/O, no clock, no globals. Files go through sinks
+ *   (hol_sink.h) the platform gives; wall-clock values (the start time,
+ *   the session id) come in the desc. Memory: hol_session_create makes
+ *   every allocation through desc.alloc (the app's own through desc.app);
+ *   stepping allocates nothing.
+ * - hol_session_create copies the levels, creates the app, starts the first
+ *   level and opens the outputs: the recording (desc.rec, desc.rec_name)
+ *   with its header (hol_rec.h), and the log folder (desc.log).
+ * - hol_session_step: one frame. The app steps with the input, the input
+ *   line goes to the recording, the attempt's rows to its files, and the
+ *   next level starts when the app asks. Rows and recording lines are kept
+ *   in fixed buffers and handed to the sinks (write, then flush) whenever
+ *   desc.flush_s (default 1 s) of input time has passed since the last
+ *   flush, or a buffer is full: a process killed at any moment loses at most
+ *   that much. *out_over is 1 when the session is over (the app quit, or
+ *   the last level done and confirmed).
+ * - Attempts: a level start or restart begins attempt NNN (001, 002, ...;
+ *   numbered on from the folder's earlier attempts with desc.append). An
+ *   attempt ends done, timeout, restart, quit (the app), open (the session
+ *   finished in its middle: hol_session_finish), aborted (a signal, a
+ *   closed window: hol_session_abort) or killed (found unfinished by a later
+ *   session: see recovery).
+ * - Log folder, while attempt NNN runs: attempt-NNN.live (its summary row
+ *   as known at its start), steps-NNN.csv.live and head-NNN.csv.live (its
+ *   rows, streamed). When it ends: the live files are flushed durably, its
+ *   row is appended to summary.csv (durably), then the live files are
+ *   renamed to steps-NNN.csv and head-NNN.csv and attempt-NNN.live is
+ *   removed. So an attempt's files appear together (with its summary row)
+ *   or not at all, and rows of a finished attempt are never lost.
+ * - Recovery (desc.append): live files of attempts a killed session left
+ *   are finished first: each gets its summary row (end killed; steps: its
+ *   step rows; time: its last row's level time) unless summary.csv has it
+ *   already, then the renames. Without desc.append a folder that holds any
+ *   log file (summary.csv, steps-*, head-*, attempt-*.live) is refused
+ *   (HOL_EARG): a session never mixes its files into another's unasked.
+ *   With desc.append, summary.csv must have this version's columns.
+ * - Recording: written as REC.live (REC = desc.rec_name) and renamed to REC
+ *   by hol_session_finish (or abort); a REC.live already there (a killed
+ *   session's recording) is refused at create (HOL_EARG).
+ * - Columns (CSV per RFC 4180; names via hol_text_csv):
+ *   summary.csv HOL_SESSION_SUMMARY_COLUMNS, steps HOL_SESSION_STEP_COLUMNS,
+ *   head HOL_SESSION_HEAD_COLUMNS; the README ("Research logs") documents
+ *   each. Head rows fall on exact 10 Hz level times, interpolated between
+ *   the frames around them (position linear, yaw the short way round;
+ *   cell and tile from the nearer frame), frame_t the later frame's time.
+ *   A step row's visible says which cues were drawn after the step
+ *   (hol_session_cues_visible), cues which were in force.
+ * - Errors: hol_err, with a one-line reason in hol_session_message (naming
+ *   the stream and the sink's why). After a sink failure the session keeps
+ *   stepping but writes nothing more; finish reports the failure.
+ */
+#ifndef HOL_SESSION_H
+#define HOL_SESSION_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "hol_alloc.h"
+#include "hol_app.h"
+#include "hol_err.h"
+#include "hol_level.h"
+#include "hol_rec.h"
+#include "hol_sink.h"
+
+#define HOL_SESSION_MAX_LEVELS HOL_REC_MAX_LEVELS
+
+#define HOL_SESSION_SUMMARY_COLUMNS                                                       \
+    "session,participant,session_start,version,attempt,level,level_sha256,mode,seed,cues," \
+    "started,steps,optimum,time,end"
+#define HOL_SESSION_STEP_COLUMNS \
+    "session,attempt,level,t,step,col,row,dir,yaw,tile,orient,remaining,cues,visible"
+#define HOL_SESSION_HEAD_COLUMNS \
+    "session,attempt,level,t,frame_t,x,y,z,yaw,pitch,col,row,tile"
+
+typedef struct hol_session_desc {
+    const hol_level *levels; /* 1..HOL_SESSION_MAX_LEVELS, copied */
+    int nlevels;
+    hol_app_desc app;        /* the app's desc */
+    hol_alloc alloc;         /* the session's buffers; zero: malloc */
+    const hol_sink *log;     /* the log folder; NULL: no logs */
+    int append;              /* 1: add to a folder's earlier logs */
+    const hol_sink *rec;     /* the recording's folder; NULL: none */
+    const char *rec_name;    /* its name there */
+    hol_rec_meta meta;       /* session id, participant, start, version:
+                                "" version: HOL_VERSION; required ids
+                                checked (hol_rec_id_ok, hol_rec_time_ok)
+                                when there are logs or a recording */
+    double flush_s;          /* 0: 1 s */
+} hol_session_desc;
+
+typedef struct hol_session hol_session;
+
+/* Errors: HOL_EARG (a bad desc, a folder with logs and no append, a killed
+ * recording in the way, a level that cannot start), HOL_EVERSION
+ * (summary.csv of other columns), HOL_EBUDGET (a level's optimum cannot be
+ * proved), HOL_ENOMEM, HOL_EIO / HOL_EOPEN (a sink). msg (cap bytes) gets
+ * the one-line reason. */
+hol_err hol_session_create(const hol_session_desc *desc, hol_session **out, char *msg,
+                           size_t cap);
+/* Errors: HOL_EARG (a bad record: nothing happened), HOL_ENOMEM (the world
+ * store), HOL_EIO (a sink, once; the frame happened). */
+hol_err hol_session_step(hol_session *s, const hol_input *in, int *out_over);
+/* End now: the attempt in play ends `aborted`; then as finish. */
+hol_err hol_session_abort(hol_session *s);
+/* End: the attempt in play ends `open`, every file is committed. Later
+ * calls do nothing. */
+hol_err hol_session_finish(hol_session *s);
+/* Frees everything; writes nothing (call finish first to keep the files:
+ * unfinished live files stay, for the next session's recovery). NULL ok. */
+void hol_session_destroy(hol_session *s);
+
+hol_app *hol_session_app(hol_session *s);
+/* The level in play (index into the desc's levels) and its level. */
+int hol_session_level_index(const hol_session *s);
+const hol_level *hol_session_level(const hol_session *s);
+long hol_session_frames(const hol_session *s);
+/* Attempts of a killed session finished by recovery at create. */
+int hol_session_recovered(const hol_session *s);
+const char *hol_session_message(const hol_session *s);
+
+/* The cues drawn in a view: hot-cold (the minimap shows, an objective is
+ * left), path (the minimap shows its strayed path), poles (an objective
+ * stands), arrow (the minimap shows and an objective lies beyond its
+ * HOL_APP_MINIMAP_RADIUS tiles) - each only where the level has it. */
+unsigned hol_session_cues_visible(const hol_app_view *v);
+
+#endif

@@ -1,0 +1,73 @@
+/* hol_session_impl.h - the session's insides, shared by its three files:
+ * hol_session.c (create, the frame, the level sequence, the end),
+ * hol_session_log.c (buffered outputs, rows, attempts begun and ended) and
+ * hol_session_recover.c (a log folder's earlier files: refusal, recovery).
+ * Calls go one way: hol_session.c -> hol_session_recover.c ->
+ * hol_session_log.c, and hol_session.c -> hol_session_log.c. */
+#ifndef HOL_SESSION_IMPL_H
+#define HOL_SESSION_IMPL_H
+
+#include "hol_session.h"
+
+/* A buffered output stream of a sink. */
+typedef struct hol__out {
+    const hol_sink *sink;
+    int h; /* -1: closed */
+    char *buf;
+    size_t n, cap;
+    char name[HOL_SINK_NAME_MAX];
+} hol__out;
+
+/* The previous frame of the attempt, for head rows between frames. */
+typedef struct hol__frame {
+    int valid;
+    double t; /* level time */
+    double pos[3], yaw, pitch;
+    hol_room room;
+} hol__frame;
+
+/* Row ends: the app's (hol_app_end) and the session's own. */
+enum { HOL__END_ABORTED = 5, HOL__END_KILLED = 6 };
+
+struct hol_session {
+    hol_alloc alloc;
+    hol_app *app;
+    hol_level *levels;
+    int nlevels, cur;
+    hol_rec_meta meta;
+    const hol_sink *log, *rec;
+    char rec_name[HOL_SINK_NAME_MAX];
+    hol__out rec_out, steps, head;
+    int attempt, attempt_open;
+    double attempt_started;  /* session time at the attempt's start */
+    long next_sample;        /* the next head row's time, in 0.1 s */
+    hol__frame prev;
+    double flush_s, next_flush, now;
+    long frames;
+    int over, finished, recovered;
+    hol_err failed;          /* the first sink failure (sticky) */
+    int failed_told;
+    char msg[256];
+};
+
+/* hol_session_log.c */
+extern const char *const hol__end_names[7];
+void hol__out_init(hol__out *o, const hol_sink *sink, char *buf, size_t cap);
+hol_err hol__out_open(hol_session *s, hol__out *o, const char *name, int append);
+void hol__out_put(hol_session *s, hol__out *o, const char *data, size_t n);
+void hol__out_printf(hol_session *s, hol__out *o, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+void hol__out_flush(hol_session *s, hol__out *o, int durable);
+void hol__out_close(hol_session *s, hol__out *o);
+hol_err hol__fail_sink(hol_session *s, const hol_sink *k, hol_err e, const char *what,
+                       const char *name);
+void hol__attempt_name(char *out, size_t cap, const char *what, int attempt);
+size_t hol__summary_row(const hol_session *s, const hol_app_summary *sum, int end, char *out,
+                        size_t cap);
+void hol__log_frame(hol_session *s, const hol_app_events *ev, const hol_app_view *v);
+void hol__attempt_end(hol_session *s, const hol_app_summary *sum, int end);
+
+/* hol_session_recover.c */
+hol_err hol__log_open(hol_session *s, int append);
+
+#endif

@@ -1,0 +1,268 @@
+/* hol_session_log.c - the session's outputs: buffered streams of a sink,
+ * the rows of summary, steps and head, and attempts begun and ended
+ * (see hol_session.h for the files and their order). */
+#include "hol_session_impl.h"
+
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "hol_sha256.h"
+#include "hol_text.h"
+
+const char *const hol__end_names[7] = {"open",    "done",    "restart", "quit",
+                                       "timeout", "aborted", "killed"};
+static const char *const hol__mode_names[4] = {"explore", "flag", "keys", "tutorial"};
+
+/* ---- buffered streams ------------------------------------------------------ */
+
+hol_err hol__fail_sink(hol_session *s, const hol_sink *k, hol_err e, const char *what,
+                       const char *name)
+{
+    if (!s->failed) {
+        const char *why = k && k->why ? k->why(k->user) : NULL;
+        s->failed = e;
+        snprintf(s->msg, sizeof s->msg, "cannot %s '%.120s'%s%s", what, name, why ? ": " : "",
+                 why ? why : "");
+    }
+    return e;
+}
+
+void hol__out_init(hol__out *o, const hol_sink *sink, char *buf, size_t cap)
+{
+    memset(o, 0, sizeof *o);
+    o->sink = sink;
+    o->h = -1;
+    o->buf = buf;
+    o->cap = cap;
+}
+
+hol_err hol__out_open(hol_session *s, hol__out *o, const char *name, int append)
+{
+    if (s->failed)
+        return s->failed;
+    snprintf(o->name, sizeof o->name, "%s", name);
+    o->n = 0;
+    hol_err e = o->sink->open(o->sink->user, name, append, &o->h);
+    if (e) {
+        o->h = -1;
+        return hol__fail_sink(s, o->sink, e, "open", name);
+    }
+    return HOL_OK;
+}
+
+static void hol__out_drain(hol_session *s, hol__out *o)
+{
+    if (o->h < 0 || s->failed || !o->n)
+        return;
+    hol_err e = o->sink->write(o->sink->user, o->h, o->buf, o->n);
+    o->n = 0;
+    if (e)
+        hol__fail_sink(s, o->sink, e, "write", o->name);
+}
+
+void hol__out_put(hol_session *s, hol__out *o, const char *data, size_t n)
+{
+    if (o->h < 0 || s->failed)
+        return;
+    if (n > o->cap - o->n)
+        hol__out_drain(s, o);
+    if (n > o->cap) {
+        hol_err e = o->sink->write(o->sink->user, o->h, data, n);
+        if (e)
+            hol__fail_sink(s, o->sink, e, "write", o->name);
+        return;
+    }
+    memcpy(o->buf + o->n, data, n);
+    o->n += n;
+}
+
+void hol__out_printf(hol_session *s, hol__out *o, const char *fmt, ...)
+{
+    char row[1024];
+    va_list ap;
+    va_start(ap, fmt);
+    int n = vsnprintf(row, sizeof row, fmt, ap);
+    va_end(ap);
+    if (n > 0)
+        hol__out_put(s, o, row, (size_t)n < sizeof row ? (size_t)n : sizeof row - 1);
+}
+
+void hol__out_flush(hol_session *s, hol__out *o, int durable)
+{
+    hol__out_drain(s, o);
+    if (o->h < 0 || s->failed)
+        return;
+    hol_err e = o->sink->flush(o->sink->user, o->h, durable);
+    if (e)
+        hol__fail_sink(s, o->sink, e, "flush", o->name);
+}
+
+void hol__out_close(hol_session *s, hol__out *o)
+{
+    if (o->h < 0)
+        return;
+    hol_err e = o->sink->close(o->sink->user, o->h);
+    o->h = -1;
+    o->n = 0;
+    if (e)
+        hol__fail_sink(s, o->sink, e, "close", o->name);
+}
+
+/* A whole small stream, durably: open, write, flush, close. */
+static void hol__put_file(hol_session *s, const char *name, int append, const char *data,
+                          size_t n)
+{
+    hol__out o;
+    hol__out_init(&o, s->log, NULL, 0);
+    if (hol__out_open(s, &o, name, append))
+        return;
+    hol__out_put(s, &o, data, n);
+    hol__out_flush(s, &o, 1);
+    hol__out_close(s, &o);
+}
+
+static void hol__rename(hol_session *s, const char *from, const char *to)
+{
+    if (s->failed)
+        return;
+    hol_err e = s->log->rename(s->log->user, from, to);
+    if (e)
+        hol__fail_sink(s, s->log, e, "rename", from);
+}
+
+/* ---- rows ------------------------------------------------------------------- */
+
+void hol__attempt_name(char *out, size_t cap, const char *what, int attempt)
+{
+    if (!strcmp(what, "attempt"))
+        snprintf(out, cap, "attempt-%03d.live", attempt);
+    else
+        snprintf(out, cap, "%s-%03d.csv", what, attempt);
+}
+
+size_t hol__summary_row(const hol_session *s, const hol_app_summary *sum, int end, char *out,
+                        size_t cap)
+{
+    const hol_level *L = &s->levels[s->cur];
+    char name[4 * HOL_LEVEL_NAME_MAX], hash[HOL_SHA256_HEX];
+    hol_text_csv(L->name, name, sizeof name);
+    hol_sha256_hex(L->sha256, hash);
+    int mode = sum->mode >= 0 && sum->mode < 4 ? sum->mode : 0;
+    int n = snprintf(out, cap, "%s,%s,%s,%s,%d,%s,%s,%s,%llu,%u,%.4f,%d,%d,%.4f,%s\n",
+                     s->meta.session, s->meta.participant, s->meta.start, s->meta.version,
+                     s->attempt, name, hash, hol__mode_names[mode],
+                     (unsigned long long)sum->seed, L->lvl.cues, s->attempt_started, sum->steps,
+                     sum->optimum, sum->time_s, hol__end_names[end]);
+    return n > 0 && (size_t)n < cap ? (size_t)n : 0;
+}
+
+static void hol__step_rows(hol_session *s, const hol_app_events *ev, const hol_app_view *v)
+{
+    char name[4 * HOL_LEVEL_NAME_MAX], addr[HOL_TILE_ADDR_MAX];
+    hol_text_csv(s->levels[s->cur].name, name, sizeof name);
+    unsigned vis = hol_session_cues_visible(v);
+    for (int i = 0; i < ev->nsteps; i++) {
+        const hol_app_step_event *e = &ev->steps[i];
+        hol_tile_print(e->room.tile, addr);
+        hol__out_printf(s, &s->steps, "%s,%d,%s,%.4f,%d,%d,%d,%c,%.2f,%s,%d,%d,%u,%u\n",
+                        s->meta.session, s->attempt, name, e->t, e->index, e->room.col,
+                        e->room.row, hol_dir_to_char(e->dir), e->yaw_deg, addr,
+                        e->room.orient, e->remaining, e->cues, vis);
+    }
+}
+
+/* Head rows at every 0.1 s of level time up to this frame's, between the
+ * previous frame of the attempt and this one. */
+static void hol__head_rows(hol_session *s, const hol_app_view *v)
+{
+    hol__frame cur = {1, v->hud.elapsed_s, {v->head[0], v->head[1], v->head[2]},
+                      v->yaw_deg, v->pitch_deg, v->user};
+    const hol__frame *p = s->prev.valid ? &s->prev : &cur;
+    char name[4 * HOL_LEVEL_NAME_MAX], addr[HOL_TILE_ADDR_MAX];
+    hol_text_csv(s->levels[s->cur].name, name, sizeof name);
+    for (; s->next_sample / 10.0 <= cur.t; s->next_sample++) {
+        double t = s->next_sample / 10.0, span = cur.t - p->t;
+        double a = span > 0 ? (t - p->t) / span : 1;
+        a = a < 0 ? 0 : a > 1 ? 1 : a;
+        double pos[3], dyaw = fmod(cur.yaw - p->yaw + 540.0, 360.0) - 180.0;
+        for (int k = 0; k < 3; k++)
+            pos[k] = a == 1 ? cur.pos[k] : p->pos[k] + a * (cur.pos[k] - p->pos[k]);
+        double yaw = a == 1 ? cur.yaw : fmod(p->yaw + a * dyaw + 360.0, 360.0);
+        double pitch = a == 1 ? cur.pitch : p->pitch + a * (cur.pitch - p->pitch);
+        const hol_room *room = a >= 0.5 ? &cur.room : &p->room;
+        hol_tile_print(room->tile, addr);
+        hol__out_printf(s, &s->head, "%s,%d,%s,%.1f,%.4f,%.4f,%.4f,%.4f,%.2f,%.2f,%d,%d,%s\n",
+                        s->meta.session, s->attempt, name, t, cur.t, pos[0], pos[1], pos[2],
+                        yaw, pitch, room->col, room->row, addr);
+    }
+    s->prev = cur;
+}
+
+/* ---- attempts ---------------------------------------------------------------- */
+
+static void hol__attempt_begin(hol_session *s, const hol_app_view *v)
+{
+    s->attempt++;
+    s->attempt_open = 1;
+    s->attempt_started = s->now;
+    s->next_sample = 0;
+    s->prev.valid = 0;
+    const hol_app_level *L = &s->levels[s->cur].lvl;
+    hol_app_summary sum = {L->mode, L->seed, 0, v->hud.optimum, 0, HOL_APP_END_NONE};
+    char row[1024], name[64], live[80];
+    size_t n = hol__summary_row(s, &sum, HOL__END_KILLED, row, sizeof row);
+    hol__attempt_name(name, sizeof name, "attempt", s->attempt);
+    hol__put_file(s, name, 0, row, n);
+    hol__attempt_name(name, sizeof name, "steps", s->attempt);
+    snprintf(live, sizeof live, "%s.live", name);
+    if (!hol__out_open(s, &s->steps, live, 0))
+        hol__out_put(s, &s->steps, HOL_SESSION_STEP_COLUMNS "\n",
+                     sizeof HOL_SESSION_STEP_COLUMNS);
+    hol__attempt_name(name, sizeof name, "head", s->attempt);
+    snprintf(live, sizeof live, "%s.live", name);
+    if (!hol__out_open(s, &s->head, live, 0))
+        hol__out_put(s, &s->head, HOL_SESSION_HEAD_COLUMNS "\n",
+                     sizeof HOL_SESSION_HEAD_COLUMNS);
+}
+
+void hol__attempt_end(hol_session *s, const hol_app_summary *sum, int end)
+{
+    if (!s->attempt_open)
+        return;
+    s->attempt_open = 0;
+    /* the rows, durably; the summary row (the commit); the names */
+    hol__out_flush(s, &s->steps, 1);
+    hol__out_close(s, &s->steps);
+    hol__out_flush(s, &s->head, 1);
+    hol__out_close(s, &s->head);
+    char row[1024], name[64], live[80];
+    size_t n = hol__summary_row(s, sum, end, row, sizeof row);
+    hol__put_file(s, "summary.csv", 1, row, n);
+    static const char *const what[2] = {"steps", "head"};
+    for (int k = 0; k < 2; k++) {
+        hol__attempt_name(name, sizeof name, what[k], s->attempt);
+        snprintf(live, sizeof live, "%s.live", name);
+        hol__rename(s, live, name);
+    }
+    hol__attempt_name(name, sizeof name, "attempt", s->attempt);
+    if (!s->failed && s->log->remove(s->log->user, name))
+        hol__fail_sink(s, s->log, HOL_EIO, "remove", name);
+}
+
+void hol__log_frame(hol_session *s, const hol_app_events *ev, const hol_app_view *v)
+{
+    /* a restart ends the old attempt before the new one's rows; a
+     * completion ends it after this frame's rows */
+    if (ev->level_ended && ev->level_started)
+        hol__attempt_end(s, &ev->summary, ev->level_ended);
+    if (ev->level_started)
+        hol__attempt_begin(s, v);
+    if (!s->attempt_open)
+        return;
+    hol__step_rows(s, ev, v);
+    hol__head_rows(s, v);
+    if (ev->level_ended && !ev->level_started)
+        hol__attempt_end(s, &ev->summary, ev->level_ended);
+}

@@ -1,0 +1,329 @@
+/* hol_session_recover.c - a log folder's earlier files: a folder with logs
+ * is refused without append; with append, attempts a killed session left
+ * unfinished get their summary row (end killed) and their files, and the
+ * new attempts are numbered on (see hol_session.h). */
+#include "hol_session_impl.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define HOL__MAX_LIVE 64
+
+typedef struct hol__scan {
+    int logs;        /* a log file is there */
+    int max_attempt; /* the highest attempt number named */
+    int live[HOL__MAX_LIVE], nlive, too_many;
+} hol__scan;
+
+/* "PREFIX<digits>SUFFIX" -> the number, or -1. */
+static long hol__numbered(const char *name, const char *prefix, const char *suffix)
+{
+    size_t pl = strlen(prefix), sl = strlen(suffix), n = strlen(name);
+    if (n <= pl + sl || memcmp(name, prefix, pl) || strcmp(name + n - sl, suffix))
+        return -1;
+    long v = 0;
+    for (size_t i = pl; i < n - sl; i++) {
+        if (name[i] < '0' || name[i] > '9' || v > 99999999)
+            return -1;
+        v = v * 10 + (name[i] - '0');
+    }
+    return v;
+}
+
+static void hol__scan_name(void *ctx, const char *name)
+{
+    static const char *const pat[5][2] = {{"steps-", ".csv"},      {"head-", ".csv"},
+                                          {"steps-", ".csv.live"}, {"head-", ".csv.live"},
+                                          {"attempt-", ".live"}};
+    hol__scan *sc = ctx;
+    if (!strcmp(name, "summary.csv"))
+        sc->logs = 1;
+    for (int k = 0; k < 5; k++) {
+        long a = hol__numbered(name, pat[k][0], pat[k][1]);
+        if (a < 0)
+            continue;
+        sc->logs = 1;
+        if (a > sc->max_attempt)
+            sc->max_attempt = (int)a;
+        if (k < 2)
+            return;
+        for (int i = 0; i < sc->nlive; i++)
+            if (sc->live[i] == a)
+                return;
+        if (sc->nlive < HOL__MAX_LIVE)
+            sc->live[sc->nlive++] = (int)a;
+        else
+            sc->too_many = 1;
+        return;
+    }
+}
+
+/* ---- reading a stream by lines ------------------------------------------------- */
+
+typedef struct hol__lines {
+    long complete;      /* complete lines (ending in LF) */
+    uint64_t good;      /* bytes up to the end of the last complete line */
+    char last[1024];    /* the last complete line (cut at 1023 bytes) */
+    size_t last_len;
+    int first_is;       /* the first line equals `want` */
+    const char *want;
+    long has_field;     /* a line whose 5th field is `field` (0: none asked) */
+    const char *field;
+} hol__lines;
+
+static void hol__line_done(hol__lines *l, const char *line, size_t n)
+{
+    if (l->complete == 0 && l->want)
+        l->first_is = n == strlen(l->want) && !memcmp(line, l->want, n);
+    if (l->field && !l->has_field) {
+        /* the fifth field: the first four (ids, a time) hold no comma */
+        const char *p = line, *end = line + n;
+        for (int c = 0; c < 4 && p; c++) {
+            p = memchr(p, ',', (size_t)(end - p));
+            p = p ? p + 1 : NULL;
+        }
+        size_t fl = strlen(l->field);
+        if (p && (size_t)(end - p) > fl && !memcmp(p, l->field, fl) && p[fl] == ',')
+            l->has_field = l->complete + 1;
+    }
+    l->complete++;
+    l->last_len = n < sizeof l->last ? n : sizeof l->last - 1;
+    memcpy(l->last, line, l->last_len);
+    l->last[l->last_len] = 0;
+}
+
+/* Read stream name by lines into *l: HOL_OK, HOL_EOPEN (absent) or a
+ * failure. Lines longer than 1023 bytes are cut in l->last (no row is). */
+static hol_err hol__read_lines(const hol_sink *k, const char *name, hol__lines *l)
+{
+    char chunk[4096], line[1024];
+    size_t ln = 0;
+    uint64_t off = 0;
+    for (;;) {
+        size_t got = 0;
+        hol_err e = k->read(k->user, name, off, chunk, sizeof chunk, &got);
+        if (e)
+            return e;
+        for (size_t i = 0; i < got; i++) {
+            if (chunk[i] == '\n') {
+                hol__line_done(l, line, ln);
+                l->good = off + i + 1;
+                ln = 0;
+            } else if (ln < sizeof line) {
+                line[ln++] = chunk[i];
+            }
+        }
+        off += got;
+        if (got < sizeof chunk)
+            return HOL_OK;
+    }
+}
+
+/* The k-th comma-separated field counted from the line's end (0: the
+ * last), as a number; the fields after a level name hold no comma. */
+static double hol__field_right(const char *line, size_t n, int k)
+{
+    const char *end = line + n;
+    for (int c = 0; c < k && end > line; c++) {
+        while (end > line && end[-1] != ',')
+            end--;
+        if (end > line)
+            end--;
+    }
+    const char *b = end;
+    while (b > line && b[-1] != ',')
+        b--;
+    char num[64];
+    size_t fl = (size_t)(end - b) < sizeof num ? (size_t)(end - b) : sizeof num - 1;
+    memcpy(num, b, fl);
+    num[fl] = 0;
+    return strtod(num, NULL);
+}
+
+/* ---- recovery of one attempt ------------------------------------------------------ */
+
+/* A stream cut to its complete lines (a row cut by the kill dropped). */
+static void hol__cut(hol_session *s, const char *name, uint64_t good)
+{
+    char tmp[96], chunk[4096];
+    snprintf(tmp, sizeof tmp, "%s.cut", name);
+    hol__out o;
+    hol__out_init(&o, s->log, NULL, 0);
+    if (hol__out_open(s, &o, tmp, 0))
+        return;
+    for (uint64_t off = 0; off < good && !s->failed;) {
+        size_t want = good - off < sizeof chunk ? (size_t)(good - off) : sizeof chunk, got = 0;
+        hol_err e = s->log->read(s->log->user, name, off, chunk, want, &got);
+        if (e || got == 0) {
+            hol__fail_sink(s, s->log, e ? e : HOL_EIO, "read", name);
+            break;
+        }
+        hol__out_put(s, &o, chunk, got);
+        off += got;
+    }
+    hol__out_flush(s, &o, 1);
+    hol__out_close(s, &o);
+    if (!s->failed && s->log->rename(s->log->user, tmp, name))
+        hol__fail_sink(s, s->log, HOL_EIO, "rename", tmp);
+}
+
+/* The live rows of attempt a: steps and the last level time; each stream
+ * cut to its complete lines. */
+static void hol__live_rows(hol_session *s, int a, int *steps, double *time)
+{
+    static const char *const what[2] = {"steps", "head"};
+    static const int tcol[2] = {10, 9}; /* t, counted from the right */
+    *steps = 0;
+    *time = 0;
+    for (int k = 0; k < 2; k++) {
+        char name[64], live[80];
+        hol__attempt_name(name, sizeof name, what[k], a);
+        snprintf(live, sizeof live, "%s.live", name);
+        hol__lines l;
+        memset(&l, 0, sizeof l);
+        hol_err e = hol__read_lines(s->log, live, &l);
+        if (e == HOL_EOPEN)
+            continue;
+        if (e) {
+            hol__fail_sink(s, s->log, e, "read", live);
+            return;
+        }
+        char probe[1];
+        size_t got = 0;
+        if (!s->log->read(s->log->user, live, l.good, probe, 1, &got) && got)
+            hol__cut(s, live, l.good); /* bytes after the last LF */
+        if (k == 0)
+            *steps = l.complete > 1 ? (int)(l.complete - 1) : 0;
+        if (l.complete > 1) {
+            double t = hol__field_right(l.last, l.last_len, tcol[k]);
+            *time = t > *time ? t : *time;
+        }
+    }
+}
+
+/* The pending row of attempt a with its steps, time and end killed. */
+static size_t hol__killed_row(hol_session *s, int a, char *row, size_t cap)
+{
+    char name[64];
+    hol__attempt_name(name, sizeof name, "attempt", a);
+    hol__lines l;
+    memset(&l, 0, sizeof l);
+    if (hol__read_lines(s->log, name, &l) || l.complete < 1)
+        return 0;
+    int steps;
+    double time;
+    hol__live_rows(s, a, &steps, &time);
+    /* "...,started,STEPS,OPTIMUM,TIME,END": keep all but the four last */
+    char *end = l.last + l.last_len;
+    for (int c = 0; c < 4 && end > l.last; c++) {
+        while (end > l.last && end[-1] != ',')
+            end--;
+        if (end > l.last)
+            end--;
+    }
+    int optimum = (int)hol__field_right(l.last, l.last_len, 2);
+    int n = snprintf(row, cap, "%.*s,%d,%d,%.4f,%s\n", (int)(end - l.last), l.last, steps,
+                     optimum, time, hol__end_names[HOL__END_KILLED]);
+    return n > 0 && (size_t)n < cap ? (size_t)n : 0;
+}
+
+static void hol__recover(hol_session *s, int a)
+{
+    char field[16], name[64], live[80], row[1200];
+    snprintf(field, sizeof field, "%d", a);
+    hol__lines l;
+    memset(&l, 0, sizeof l);
+    l.field = field;
+    hol_err e = hol__read_lines(s->log, "summary.csv", &l);
+    if (e && e != HOL_EOPEN) {
+        hol__fail_sink(s, s->log, e, "read", "summary.csv");
+        return;
+    }
+    if (!l.has_field) {
+        size_t n = hol__killed_row(s, a, row, sizeof row);
+        if (n) {
+            hol__out o;
+            hol__out_init(&o, s->log, NULL, 0);
+            if (!hol__out_open(s, &o, "summary.csv", 1)) {
+                hol__out_put(s, &o, row, n);
+                hol__out_flush(s, &o, 1);
+                hol__out_close(s, &o);
+            }
+        }
+    } else {
+        int steps;
+        double time;
+        hol__live_rows(s, a, &steps, &time); /* cut what the kill cut */
+    }
+    static const char *const what[2] = {"steps", "head"};
+    for (int k = 0; k < 2 && !s->failed; k++) {
+        hol__attempt_name(name, sizeof name, what[k], a);
+        snprintf(live, sizeof live, "%s.live", name);
+        char probe[1];
+        size_t got;
+        if (s->log->read(s->log->user, live, 0, probe, 1, &got) == HOL_EOPEN)
+            continue;
+        if (s->log->rename(s->log->user, live, name))
+            hol__fail_sink(s, s->log, HOL_EIO, "rename", live);
+    }
+    hol__attempt_name(name, sizeof name, "attempt", a);
+    if (!s->failed && s->log->remove(s->log->user, name))
+        hol__fail_sink(s, s->log, HOL_EIO, "remove", name);
+    if (!s->failed)
+        s->recovered++;
+}
+
+/* ---- opening the folder ------------------------------------------------------------- */
+
+static int hol__cmp_int(const void *a, const void *b)
+{
+    return *(const int *)a - *(const int *)b;
+}
+
+hol_err hol__log_open(hol_session *s, int append)
+{
+    hol__scan sc;
+    memset(&sc, 0, sizeof sc);
+    hol_err e = s->log->list(s->log->user, hol__scan_name, &sc);
+    if (e)
+        return hol__fail_sink(s, s->log, e, "list", "the log folder");
+    if (sc.logs && !append) {
+        snprintf(s->msg, sizeof s->msg, "the log folder holds earlier logs%s: add to them "
+                 "(--append) or choose another folder",
+                 sc.nlive ? " (and an unfinished attempt)" : "");
+        return HOL_EARG;
+    }
+    if (sc.too_many) {
+        snprintf(s->msg, sizeof s->msg, "the log folder holds more than %d unfinished attempts",
+                 HOL__MAX_LIVE);
+        return HOL_EARG;
+    }
+    hol__lines l;
+    memset(&l, 0, sizeof l);
+    l.want = HOL_SESSION_SUMMARY_COLUMNS;
+    e = hol__read_lines(s->log, "summary.csv", &l);
+    if (e && e != HOL_EOPEN)
+        return hol__fail_sink(s, s->log, e, "read", "summary.csv");
+    if (e == HOL_OK && !l.first_is) {
+        snprintf(s->msg, sizeof s->msg, "the log folder's summary.csv has other columns "
+                 "(another version's logs): choose another folder");
+        return HOL_EVERSION;
+    }
+    if (e == HOL_EOPEN) {
+        /* a new summary.csv: its header first */
+        hol__out o;
+        hol__out_init(&o, s->log, NULL, 0);
+        if (!hol__out_open(s, &o, "summary.csv", 0)) {
+            hol__out_put(s, &o, HOL_SESSION_SUMMARY_COLUMNS "\n",
+                         sizeof HOL_SESSION_SUMMARY_COLUMNS);
+            hol__out_flush(s, &o, 1);
+            hol__out_close(s, &o);
+        }
+    }
+    qsort(sc.live, (size_t)sc.nlive, sizeof sc.live[0], hol__cmp_int);
+    for (int i = 0; i < sc.nlive && !s->failed; i++)
+        hol__recover(s, sc.live[i]);
+    s->attempt = sc.max_attempt;
+    return s->failed;
+}
