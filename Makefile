@@ -120,11 +120,11 @@ $(BUILD)/tests/test_hid: tests/test_hid.c tests/hid_samples.h $(HID_SRC) $(CORE_
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) -o $@ $< $(HID_SRC) $(CORE_LIB) $(LDFLAGS) -lcmocka $(LDLIBS)
 
-# Level files: the parser lives with the desktop session.
-LEVEL_SRC := platform/cli/session.c platform/cli/cli_util.c platform/file/hol_file.c
-$(BUILD)/tests/test_level: tests/test_level.c $(LEVEL_SRC) $(CORE_LIB)
+# The session's POSIX sink (platform/file) beside the core session.
+SINK_SRC := platform/file/hol_sink_posix.c
+$(BUILD)/tests/test_session: tests/test_session.c $(wildcard tests/*.h) $(SINK_SRC) $(CORE_LIB)
 	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS) -o $@ $< $(LEVEL_SRC) $(CORE_LIB) $(LDFLAGS) -lcmocka $(LDLIBS)
+	$(CC) $(CFLAGS) -o $@ $< $(SINK_SRC) $(CORE_LIB) $(LDFLAGS) -lcmocka $(LDLIBS)
 
 # Output targets and the atomic writer (platform/file).
 $(BUILD)/tests/test_file: tests/test_file.c platform/file/hol_file.c platform/file/hol_file.h $(CORE_LIB)
@@ -167,8 +167,7 @@ $(BUILD)/bench/%: tests/%.c $(CORE_SRC)
 # libFuzzer harnesses (clang); the replay build runs the corpora as tests.
 # A harness links the core; FUZZ_EXTRA_<name> adds sources and libraries.
 FUZZ_EXTRA_fuzz_png := render/hol_png.c -lz
-FUZZ_EXTRA_fuzz_recording := $(LEVEL_SRC)
-FUZZ_EXTRA_fuzz_cli := $(LEVEL_SRC)
+FUZZ_EXTRA_fuzz_cli := platform/cli/cli_util.c platform/file/hol_file.c
 FUZZ_EXTRA_fuzz_hid_desc := $(HID_SRC)
 FUZZ_EXTRA_fuzz_hid_report := $(HID_SRC)
 FUZZ_EXTRA_fuzz_hid_script := $(HID_SRC) $(HID_DEV_SRC) $(HID_LIBS)

@@ -101,6 +101,33 @@ int cli_require_folder(const char *cmd, const char *opt, const char *path);
  * work. */
 int cli_check_output(const char *cmd, const char *opt, const char *path);
 
+/* Options of a command: valued (each takes the next argument) and flags,
+ * both NULL-terminated lists, at most 64 in all. cli_opts_next gives 1
+ * with *opt one of them (and *val its value, NULL for a flag) or *opt NULL
+ * and *val an operand; 0 at the end; -1 after reporting a usage error: an
+ * unknown option, a missing value, or an option given twice. */
+typedef struct cli_opts {
+    const char *cmd;
+    int argc, i;
+    char **argv;
+    const char *const *valued, *const *flags;
+    uint64_t seen;
+} cli_opts;
+
+void cli_opts_init(cli_opts *p, const char *cmd, int argc, char **argv,
+                   const char *const *valued, const char *const *flags);
+int cli_opts_next(cli_opts *p, const char **opt, const char **val);
+
+/* "WxH" with sides 16..4096 (--size): 0 ok, else reported and 1. */
+int cli_parse_size(const char *cmd, const char *val, int *w, int *h);
+
+/* SIGINT, SIGTERM and SIGHUP are caught (not fatal) from the first call of
+ * cli_catch_signals on; cli_caught_signal gives the first one caught (0:
+ * none) for a loop to end its session cleanly, and the command then exits
+ * with 128 + that number, as the shell would report the signal. */
+void cli_catch_signals(void);
+int cli_caught_signal(void);
+
 /* Flush stdout; on failure report it and return CLI_EXIT_FAIL. */
 int cli_finish_output(const char *cmd);
 

@@ -7,6 +7,7 @@
 #include <ctype.h>
 #include <errno.h>
 #include <math.h>
+#include <signal.h>
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
@@ -311,4 +312,103 @@ int cli_parse_u64(const char *s, uint64_t *out)
         return 0;
     *out = v;
     return 1;
+}
+
+static volatile sig_atomic_t cli__signal;
+
+static void cli__on_signal(int sig)
+{
+    if (!cli__signal)
+        cli__signal = sig;
+}
+
+void cli_catch_signals(void)
+{
+    static const int sigs[3] = {SIGINT, SIGTERM, SIGHUP};
+    struct sigaction sa;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = cli__on_signal;
+    sigemptyset(&sa.sa_mask);
+    for (int i = 0; i < 3; i++)
+        sigaction(sigs[i], &sa, NULL);
+}
+
+int cli_caught_signal(void)
+{
+    return (int)cli__signal;
+}
+
+void cli_opts_init(cli_opts *p, const char *cmd, int argc, char **argv,
+                   const char *const *valued, const char *const *flags)
+{
+    memset(p, 0, sizeof *p);
+    p->cmd = cmd;
+    p->argc = argc;
+    p->argv = argv;
+    p->i = 1;
+    p->valued = valued;
+    p->flags = flags;
+}
+
+/* The option's index in valued then flags, or -1; *takes a value. */
+static int cli__opt_index(const cli_opts *p, const char *a, int *takes)
+{
+    int k = 0;
+    for (const char *const *v = p->valued; v && *v; v++, k++)
+        if (!strcmp(a, *v)) {
+            *takes = 1;
+            return k;
+        }
+    for (const char *const *f = p->flags; f && *f; f++, k++)
+        if (!strcmp(a, *f)) {
+            *takes = 0;
+            return k;
+        }
+    return -1;
+}
+
+int cli_opts_next(cli_opts *p, const char **opt, const char **val)
+{
+    if (p->i >= p->argc)
+        return 0;
+    const char *a = p->argv[p->i++];
+    *opt = NULL;
+    *val = a;
+    if (a[0] != '-' || !a[1])
+        return 1;
+    int takes = 0, k = cli__opt_index(p, a, &takes);
+    if (k < 0 || k >= 64) {
+        cli_error(p->cmd, 0, "unknown option '%.40s'; see 'holonomy %s --help'", a, p->cmd);
+        return -1;
+    }
+    if (p->seen >> k & 1) {
+        cli_error(p->cmd, 0, "%s is given twice; see 'holonomy %s --help'", a, p->cmd);
+        return -1;
+    }
+    p->seen |= (uint64_t)1 << k;
+    *opt = a;
+    *val = NULL;
+    if (takes) {
+        if (p->i >= p->argc) {
+            cli_error(p->cmd, 0, "%s needs a value; see 'holonomy %s --help'", a, p->cmd);
+            return -1;
+        }
+        *val = p->argv[p->i++];
+    }
+    return 1;
+}
+
+int cli_parse_size(const char *cmd, const char *val, int *w, int *h)
+{
+    char *e1, *e2 = NULL;
+    errno = 0;
+    long a = strtol(val, &e1, 10);
+    long b = *e1 == 'x' ? strtol(e1 + 1, &e2, 10) : 0;
+    if (*e1 != 'x' || !e2 || *e2 || errno || a < 16 || a > 4096 || b < 16 || b > 4096) {
+        cli_error(cmd, 0, "--size '%.40s' is not WxH with sides 16..4096", val);
+        return 1;
+    }
+    *w = (int)a;
+    *h = (int)b;
+    return 0;
 }

@@ -8,7 +8,7 @@
 #include "../../core/hol_room.h"
 #include "../file/hol_file.h"
 #include "cli.h"
-#include "session.h"
+#include "play_setup.h"
 
 static const char *const game_usage =
     "usage: holonomy game LEVEL < PLAYS\n"
@@ -121,20 +121,10 @@ int cli_cmd_game(int argc, char **argv)
         return CLI_EXIT_USAGE;
     }
     const char *path = argv[1];
-    static session_level L;
-    uint8_t *data = NULL;
-    size_t size = 0;
-    int rs = cli_read_file(cmd, "level", path, SESSION_LEVEL_TEXT - 1, &data, &size);
+    static hol_level L;
+    int rs = play_read_level(cmd, path, &L);
     if (rs)
         return rs;
-    memcpy(L.text, data, size);
-    L.len = size;
-    free(data);
-    char perr[256];
-    if (session_parse_level(L.text, L.len, &L.lvl, perr, sizeof perr)) {
-        cli_error(cmd, 0, "%.200s: %s", path, perr);
-        return CLI_EXIT_USAGE;
-    }
     hol_app_desc d;
     memset(&d, 0, sizeof d);
     game_ctx g = {NULL, &L.lvl, path, 0};

@@ -1,60 +1,190 @@
 /* cmd_xr.c - `holonomy xr`: the headset app on the desktop's OpenXR runtime
- * (platform/openxr/hol_xr.h), with the desktop session's levels, logs and
- * recording (session.h), so a headset session replays headless. Built in
- * only with `make xr` (XR=1; needs libopenxr-dev and GLX). */
+ * (platform/openxr/hol_xr.h), through the session every platform runs
+ * (core/hol_session.h): the same campaign, logs and recording as `play`,
+ * so a headset session replays headless. Built in only with `make xr`
+ * (XR=1; needs libopenxr-dev and GLX). */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "../../core/hol_session.h"
 #include "cli.h"
 #include "play_setup.h"
-#include "session.h"
 #ifdef HOL_XR
 #include "../openxr/hol_xr.h"
 #endif
 
 static const char *const xr_usage =
-    "usage: holonomy xr [LEVEL] [--frames N] [--log DIR] [--record FILE]\n"
-    "                   [--input FILE] [--check-frame K --check-dir DIR]\n"
+    "usage: holonomy xr [LEVEL] [--frames N] [--log DIR [--append]] [--participant ID]\n"
+    "                   [--record FILE] [--input FILE] [--check-frame K --check-dir DIR]\n"
     "\n"
     "The headset app on this machine's OpenXR runtime (for example Monado):\n"
     "the room centred on the stage origin, north along stage -Z; the\n"
     "recentre action places it from the head. LEVEL is a level file (SPEC\n"
     "section 5); without one, the default campaign. Logs and the recording\n"
-    "are those of 'holonomy play', so 'holonomy replay' runs a headset\n"
-    "session again headless.\n"
+    "are those of 'holonomy play' (its --log, --append, --participant and\n"
+    "--record), so 'holonomy replay' runs a headset session again headless.\n"
     "\n"
     "  --frames N      request exit after N submitted frames\n"
-    "  --log DIR       research logs (README: Logs)\n"
+    "  --log DIR       research logs (README: Research logs)\n"
     "  --record FILE   record the session's input\n"
     "  --input FILE    scripted head motion: frame k takes the head pose of\n"
     "                  input line k (room coordinates; the simulated headset\n"
-    "                  does not move), repeating\n"
+    "                  does not move), repeating; at most 100000 lines\n"
     "  --check-frame K with --check-dir DIR: read eye 0 of frame K back from\n"
     "                  the swapchain, render the same eye with OSMesa, write\n"
     "                  both PNGs to DIR and print how many pixels differ\n"
     "\n"
+    "SIGINT, SIGTERM or SIGHUP end the OpenXR session (STOPPING), then the\n"
+    "session is saved with the attempt in play 'aborted'.\n"
     "Prints 'xr: ...' progress lines (state changes, bindings, frames, the\n"
     "CPU time per stereo frame). Exit status: 0 ok, 1 failure (no runtime,\n"
-    "no display, a runtime error), 2 bad input.\n";
+    "no display, a runtime error), 2 bad input, 128+N after signal N.\n";
+
+#define XR_SCRIPT_MAX 100000
+
+typedef struct xr_opts {
+    const char *level_path, *log_dir, *rec, *input_path, *check_dir, *participant;
+    long frames, check_frame;
+    int append;
+} xr_opts;
+
+static int xr_count(const char *cmd, const char *a, const char *val, xr_opts *o)
+{
+    size_t n = cli_parse_count(val);
+    int zero_ok = !strcmp(a, "--check-frame") && !strcmp(val, "0");
+    if ((!n && !zero_ok) || n > 100000000) {
+        cli_error(cmd, 0, "%s '%.40s' is not a count in %d..100000000", a, val, zero_ok ? 0 : 1);
+        return 1;
+    }
+    if (!strcmp(a, "--frames"))
+        o->frames = (long)n;
+    else
+        o->check_frame = (long)n;
+    return 0;
+}
+
+static int xr_options(const char *cmd, int argc, char **argv, xr_opts *o)
+{
+    static const char *const valued[] = {"--frames",      "--log",       "--record",
+                                         "--input",       "--check-frame", "--check-dir",
+                                         "--participant", NULL};
+    static const char *const flags[] = {"--append", NULL};
+    memset(o, 0, sizeof *o);
+    o->check_frame = -1;
+    cli_opts p;
+    cli_opts_init(&p, cmd, argc, argv, valued, flags);
+    const char *a, *val;
+    int r, bad = 0;
+    while (!bad && (r = cli_opts_next(&p, &a, &val)) > 0) {
+        if (!a && o->level_path) {
+            cli_error(cmd, 0, "more than one LEVEL ('%.40s')", val);
+            bad = 1;
+        } else if (!a)
+            o->level_path = val;
+        else if (!strcmp(a, "--frames") || !strcmp(a, "--check-frame"))
+            bad = xr_count(cmd, a, val, o);
+        else if (!strcmp(a, "--log"))
+            o->log_dir = val;
+        else if (!strcmp(a, "--record"))
+            o->rec = val;
+        else if (!strcmp(a, "--input"))
+            o->input_path = val;
+        else if (!strcmp(a, "--check-dir"))
+            o->check_dir = val;
+        else if (!strcmp(a, "--append"))
+            o->append = 1;
+        else if (!hol_rec_id_ok(val)) {
+            cli_error(cmd, 0, "--participant '%.40s' is not 1..63 letters, digits, '.', '_', '-'",
+                      val);
+            bad = 1;
+        } else
+            o->participant = val;
+    }
+    if (bad || r < 0)
+        return CLI_EXIT_USAGE;
+    const char *clash = (o->check_frame >= 0) != (o->check_dir != NULL)
+                            ? "--check-frame and --check-dir go together"
+                        : o->append && !o->log_dir ? "--append goes with --log"
+                                                   : NULL;
+    if (clash) {
+        cli_error(cmd, 0, "%s", clash);
+        return CLI_EXIT_USAGE;
+    }
+    return cli_require_folder(cmd, "--check-dir", o->check_dir);
+}
+
+/* The scripted head motion: every record of the file (at most
+ * XR_SCRIPT_MAX). 0 ok, else the exit status (reported). */
+static int xr_script(const char *cmd, const char *path, hol_input **out, long *n)
+{
+    static play_input pi;
+    *out = NULL;
+    *n = 0;
+    if (!path)
+        return 0;
+    int st = play_input_open(cmd, path, 0, &pi);
+    if (st)
+        return st;
+    hol_input *script = malloc(XR_SCRIPT_MAX * sizeof *script);
+    int r = script ? 1 : -CLI_EXIT_FAIL;
+    if (!script)
+        cli_error(cmd, 0, "out of memory");
+    while (r > 0 && (r = play_input_next(&pi, &script[*n])) > 0)
+        if (++*n >= XR_SCRIPT_MAX) {
+            cli_error(cmd, 0, "--input '%.200s' has more than %d lines", path, XR_SCRIPT_MAX);
+            r = -CLI_EXIT_USAGE;
+        }
+    play_input_close(&pi);
+    if (r < 0) {
+        free(script);
+        return -r;
+    }
+    *out = script;
+    return 0;
+}
 
 #ifdef HOL_XR
 static int xr_step(void *user, const hol_input *in, const hol_app_view **out_view)
 {
-    session *s = user;
-    int rc = session_step(s, in);
-    *out_view = hol_app_get_view(s->app);
-    return rc < 0 ? -1 : rc > 0 ? 1 : 0;
+    hol_session *s = user;
+    int over = 0;
+    hol_err err = hol_session_step(s, in, &over);
+    *out_view = hol_app_get_view(hol_session_app(s));
+    if (err)
+        cli_error("xr", 0, "%s", hol_session_message(s));
+    return err ? -1 : over ? 1 : 0;
 }
 
 static struct hol_world *xr_world(void *user)
 {
-    return hol_app_world(((session *)user)->app);
+    return hol_app_world(hol_session_app(user));
 }
 
 static int xr_level_started(void *user)
 {
-    return hol_app_get_events(((session *)user)->app)->level_started;
+    return hol_app_get_events(hol_session_app(user))->level_started;
+}
+
+/* A signal asks the OpenXR session to end (STOPPING, then the save). */
+static int xr_poll(void *user)
+{
+    (void)user;
+    return cli_caught_signal() != 0;
+}
+
+static int xr_run(const xr_opts *o, hol_session *s, const hol_input *script, long nscript)
+{
+    hol_xr_desc d;
+    memset(&d, 0, sizeof d);
+    d.frames = o->frames;
+    d.check_frame = o->check_frame;
+    d.check_dir = o->check_dir;
+    d.script = script;
+    d.nscript = nscript;
+    hol_xr_app_fns fns = {.user = s, .step = xr_step, .world = xr_world,
+                          .level_started = xr_level_started, .poll_platform = xr_poll};
+    return hol_xr_run(&d, &fns) ? CLI_EXIT_FAIL : CLI_EXIT_OK;
 }
 #endif
 
@@ -65,117 +195,43 @@ int cli_cmd_xr(int argc, char **argv)
         fputs(xr_usage, stdout);
         return cli_finish_output(cmd);
     }
-    const char *level_path = NULL, *log_dir = NULL, *rec = NULL, *input_path = NULL,
-               *check_dir = NULL;
-    long frames = 0, check_frame = -1;
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i], *val = i + 1 < argc ? argv[i + 1] : NULL;
-        int takes = !strcmp(a, "--frames") || !strcmp(a, "--log") || !strcmp(a, "--record") ||
-                    !strcmp(a, "--input") || !strcmp(a, "--check-frame") ||
-                    !strcmp(a, "--check-dir");
-        if (takes && !val) {
-            cli_error(cmd, 0, "%s needs a value; see 'holonomy xr --help'", a);
-            return CLI_EXIT_USAGE;
-        }
-        if (!strcmp(a, "--frames") || !strcmp(a, "--check-frame")) {
-            size_t n = cli_parse_count(val);
-            int zero_ok = a[2] == 'c' && !strcmp(val, "0");
-            if ((!n && !zero_ok) || n > 100000000) {
-                cli_error(cmd, 0, "%s '%.40s' is not a count in %d..100000000", a, val,
-                          zero_ok ? 0 : 1);
-                return CLI_EXIT_USAGE;
-            }
-            if (a[2] == 'f')
-                frames = (long)n;
-            else
-                check_frame = (long)n;
-        } else if (!strcmp(a, "--log"))
-            log_dir = val;
-        else if (!strcmp(a, "--record"))
-            rec = val;
-        else if (!strcmp(a, "--input"))
-            input_path = val;
-        else if (!strcmp(a, "--check-dir"))
-            check_dir = val;
-        else if (a[0] == '-' && a[1]) {
-            cli_error(cmd, 0, "unknown option '%.40s'; see 'holonomy xr --help'", a);
-            return CLI_EXIT_USAGE;
-        } else if (!level_path) {
-            level_path = a;
-            continue;
-        } else {
-            cli_error(cmd, 0, "more than one LEVEL ('%.40s')", a);
-            return CLI_EXIT_USAGE;
-        }
-        if (takes)
-            i++;
-    }
-    if ((check_frame >= 0) != (check_dir != NULL)) {
-        cli_error(cmd, 0, "--check-frame and --check-dir go together");
-        return CLI_EXIT_USAGE;
-    }
-    if (cli_require_folder(cmd, "--log", log_dir) ||
-        cli_require_folder(cmd, "--check-dir", check_dir))
-        return CLI_EXIT_USAGE;
-    static session_level levels[SESSION_MAX_LEVELS];
+    xr_opts o;
+    int st = xr_options(cmd, argc, argv, &o);
+    if (st)
+        return st;
+    static hol_level levels[HOL_SESSION_MAX_LEVELS];
     int nlevels = 0;
-    int lst = play_levels(cmd, level_path, NULL, CLI_SEED_DEFAULT, levels, &nlevels);
-    if (lst)
-        return lst;
-    /* scripted head motion */
-    file_lines fl;
-    memset(&fl, 0, sizeof fl);
+    play_out out;
+    memset(&out, 0, sizeof out);
     hol_input *script = NULL;
     long nscript = 0;
-    if (input_path) {
-        long first = 0;
-        int rs = read_input_lines(cmd, input_path, &fl, &first);
-        if (rs)
-            return rs;
-        script = calloc((size_t)(fl.n - first > 0 ? fl.n - first : 1), sizeof *script);
-        if (!script) {
-            free_lines(&fl);
-            cli_error(cmd, 0, "out of memory");
-            return CLI_EXIT_FAIL;
-        }
-        double prev = 0;
-        for (long k = first; k < fl.n; k++)
-            if (parse_input_line(cmd, &fl, k, &script[nscript++], &prev)) {
-                free(script);
-                free_lines(&fl);
-                return CLI_EXIT_USAGE;
-            }
-        free_lines(&fl);
-    }
+    st = play_levels(cmd, o.level_path, NULL, CLI_SEED_DEFAULT, levels, &nlevels);
+    if (!st)
+        st = xr_script(cmd, o.input_path, &script, &nscript);
 #ifdef HOL_XR
-    session s;
-    memset(&s, 0, sizeof s);
-    int status = session_open(&s, cmd, levels, nlevels, log_dir, rec);
-    if (!status) {
-        hol_xr_desc d;
-        memset(&d, 0, sizeof d);
-        d.frames = frames;
-        d.check_frame = check_frame;
-        d.check_dir = check_dir;
-        d.script = script;
-        d.nscript = nscript;
-        hol_xr_app_fns fns = {.user = &s, .step = xr_step, .world = xr_world,
-                               .level_started = xr_level_started};
-        status = hol_xr_run(&d, &fns) ? CLI_EXIT_FAIL : CLI_EXIT_OK;
+    hol_session *s = NULL;
+    cli_catch_signals();
+    if (!st)
+        st = play_out_open(cmd, o.log_dir, o.rec, &out);
+    if (!st) {
+        hol_rec_meta meta;
+        play_meta_now(&meta, o.participant);
+        st = play_session_open(cmd, &out, levels, nlevels, &meta, o.append, &s);
     }
-    if (s.app || s.recording) {
-        int cs = session_close(&s);
-        if (!status)
-            status = cs;
-    }
-    free(script);
-    return status;
+    if (!st)
+        st = xr_run(&o, s, script, nscript);
+    int end = play_session_end(cmd, s, cli_caught_signal() != 0);
+    st = st ? st : end;
+    if (!st && cli_caught_signal())
+        st = 128 + cli_caught_signal();
 #else
-    (void)frames;
-    (void)rec;
-    free(script);
-    cli_error(cmd, 0, "this build has no OpenXR; build with 'make xr' (needs libopenxr-dev, "
-                      "GLX; see README 'Headset')");
-    return CLI_EXIT_FAIL;
+    if (!st) {
+        cli_error(cmd, 0, "this build has no OpenXR; build with 'make xr' (needs "
+                          "libopenxr-dev, GLX; see README 'Headset')");
+        st = CLI_EXIT_FAIL;
+    }
 #endif
+    play_out_close(&out);
+    free(script);
+    return st;
 }

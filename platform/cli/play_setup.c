@@ -1,233 +1,312 @@
-/* play_setup.c - what `holonomy play` and `holonomy xr` share: the level
- * list (a LEVEL file, a --mode level from the seed, or the default
- * campaign) and recorded input lines (see play_setup.h). */
+/* play_setup.c - levels, recorded input, the session's outputs, its start
+ * and end, for play, replay, xr and game (see play_setup.h). */
+#ifndef _DEFAULT_SOURCE
+#define _DEFAULT_SOURCE
+#endif
 #include "play_setup.h"
 
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/random.h>
+#include <sys/stat.h>
+#include <time.h>
+#include <unistd.h>
 
+#include "../../core/hol_campaign.h"
 #include "../../core/hol_input_io.h"
-#include "../../core/hol_tile.h"
+#include "../../core/hol_text.h"
 #include "cli.h"
 
-int read_lines(const char *cmd, const char *path, file_lines *fl)
+/* ---- levels ---------------------------------------------------------------- */
+
+int play_read_level(const char *cmd, const char *path, hol_level *out)
 {
+    uint8_t *data = NULL;
     size_t size = 0;
-    memset(fl, 0, sizeof *fl);
-    int rs = cli_read_file(cmd, "input", path, (size_t)1 << 30, &fl->data, &size);
+    int rs = cli_read_file(cmd, "level", path, HOL_LEVEL_TEXT_MAX, &data, &size);
     if (rs)
         return rs;
-    long cap = 1;
-    for (size_t i = 0; i < size; i++)
-        cap += fl->data[i] == '\n';
-    fl->line = malloc((size_t)cap * sizeof *fl->line);
-    fl->len = malloc((size_t)cap * sizeof *fl->len);
-    uint8_t *buf = realloc(fl->data, size + 1);
-    if (!fl->line || !fl->len || !buf) {
-        cli_error(cmd, 0, "out of memory");
-        return CLI_EXIT_FAIL;
-    }
-    fl->data = buf;
-    fl->data[size] = 0;
-    size_t start = 0;
-    for (size_t i = 0; i <= size; i++) {
-        if (i == size || fl->data[i] == '\n') {
-            if (i == size && start == size)
-                break;
-            size_t e = i;
-            if (e > start && fl->data[e - 1] == '\r')
-                e--;
-            fl->data[e] = 0;
-            fl->line[fl->n] = (char *)fl->data + start;
-            fl->len[fl->n++] = e - start;
-            start = i + 1;
-        }
+    const char *base = strrchr(path, '/');
+    base = base ? base + 1 : path;
+    size_t bl = strcspn(base, ".");
+    if (bl == 0)
+        bl = strlen(base);
+    hol_level_err le;
+    hol_err e = hol_level_make(base, bl < 60 ? bl : 60, (const char *)data, size, out, &le);
+    free(data);
+    if (e) {
+        char msg[256];
+        cli_error(cmd, 0, "%.200s: %s", path, hol_level_err_format(&le, 1, msg, sizeof msg));
+        return CLI_EXIT_USAGE;
     }
     return 0;
-}
-
-int read_input_lines(const char *cmd, const char *path, file_lines *fl, long *out_first)
-{
-    *out_first = 0;
-    int st = read_lines(cmd, path, fl);
-    if (st) {
-        free_lines(fl);
-        return st;
-    }
-    /* a recording: skip its header */
-    if (fl->n && !strncmp(fl->line[0], "holonomy-rec ", 13)) {
-        static session_level skip[SESSION_MAX_LEVELS];
-        int ns;
-        char err[256];
-        long first = session_read_header(fl->line, fl->len, fl->n, skip, &ns, err, sizeof err);
-        if (!first) {
-            cli_error(cmd, 0, "%.200s: %s", path, err);
-            free_lines(fl);
-            return CLI_EXIT_USAGE;
-        }
-        *out_first = first - 1;
-    }
-    return 0;
-}
-
-void free_lines(file_lines *fl)
-{
-    free(fl->data);
-    free(fl->line);
-    free(fl->len);
-}
-
-/* Input line k of a file (after an optional recording header) or 1 with
- * the error reported. */
-int parse_input_line(const char *cmd, const file_lines *fl, long k, hol_input *in,
-                            double *prev_t)
-{
-    size_t bad = 0;
-    if (hol_input_parse(fl->line[k], fl->len[k], in, &bad)) {
-        cli_error(cmd, k + 1, "not an input record (byte %zu)", bad + 1);
-        return 1;
-    }
-    if (in->time_s < *prev_t) {
-        cli_error(cmd, k + 1, "time %.17g goes back (before: %.17g)", in->time_s, *prev_t);
-        return 1;
-    }
-    *prev_t = in->time_s;
-    return 0;
-}
-
-static uint64_t splitmix(uint64_t *x)
-{
-    uint64_t z = (*x += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-}
-
-/* A tile at distance d from O, from the generator: a random canonical
- * address (the branch, then f, l or r wherever the address stays
- * canonical). */
-static hol_tile seeded_tile(uint64_t *rng, int d)
-{
-    static const int letters[3] = {0, 1, 3};
-    hol_tile t = hol_tile_origin();
-    for (int i = 0; i < d; i++) {
-        hol_tile c;
-        int first = (int)(splitmix(rng) % (i ? 3 : 4));
-        for (int k = 0; k < 3; k++)
-            if (!hol_tile_child(t, i ? letters[(first + k) % 3] : first, &c))
-                break;
-        t = c;
-    }
-    return t;
-}
-
-/* A level of mode m made from the seed: the flag at distance dist; or
- * nkeys keys at distance 2..3 and the chest at distance dist. The level's
- * text is what a level file would hold, so recordings carry it. */
-static int mode_level(const char *mode, uint64_t seed, int dist, int nkeys, const char *name,
-                      session_level *L)
-{
-    memset(L, 0, sizeof *L);
-    uint64_t rng = seed;
-    char a[HOL_TILE_ADDR_MAX];
-    int n = 0;
-    if (!strcmp(mode, "explore") || !strcmp(mode, "tutorial")) {
-        n = snprintf(L->text, sizeof L->text, "mode %s\nseed %llu\n", mode,
-                     (unsigned long long)seed);
-    } else if (!strcmp(mode, "flag")) {
-        hol_tile_print(seeded_tile(&rng, dist), a);
-        n = snprintf(L->text, sizeof L->text, "mode flag\nseed %llu\nflag %s\n",
-                     (unsigned long long)seed, a);
-    } else if (!strcmp(mode, "keys")) {
-        hol_tile keys[HOL_APP_MAX_KEYS], chest = seeded_tile(&rng, dist);
-        n = snprintf(L->text, sizeof L->text, "mode keys\nseed %llu\nkeys",
-                     (unsigned long long)seed);
-        for (int k = 0; k < nkeys; k++) {
-            int fresh;
-            do {
-                keys[k] = seeded_tile(&rng, 2 + (int)(splitmix(&rng) % 2));
-                fresh = !hol_tile_eq(keys[k], chest);
-                for (int j = 0; j < k; j++)
-                    fresh &= !hol_tile_eq(keys[k], keys[j]);
-            } while (!fresh);
-            hol_tile_print(keys[k], a);
-            n += snprintf(L->text + n, sizeof L->text - (size_t)n, " %s", a);
-        }
-        hol_tile_print(chest, a);
-        n += snprintf(L->text + n, sizeof L->text - (size_t)n, "\nchest %s\n", a);
-    } else {
-        return 1;
-    }
-    L->len = (size_t)n;
-    if (name)
-        snprintf(L->name, sizeof L->name, "%s", name);
-    else
-        snprintf(L->name, sizeof L->name, "%s-%llu", mode, (unsigned long long)seed);
-    char err[256];
-    return session_parse_level(L->text, L->len, &L->lvl, err, sizeof err);
-}
-
-/* The default campaign (no LEVEL, no --mode): the tutorial, three flags
- * at growing distance, then two keys-and-chest levels. */
-static int default_campaign(uint64_t seed, session_level *levels)
-{
-    int n = 0;
-    if (mode_level("tutorial", seed, 0, 0, "tutorial", &levels[n++]))
-        return -1;
-    static const int flag_dist[3] = {3, 5, 7};
-    char name[32];
-    for (int i = 0; i < 3; i++) {
-        snprintf(name, sizeof name, "flag-%d", i + 1);
-        if (mode_level("flag", seed + (uint64_t)i, flag_dist[i], 0, name, &levels[n++]))
-            return -1;
-    }
-    for (int i = 0; i < 2; i++) {
-        snprintf(name, sizeof name, "keys-%d", i + 1);
-        if (mode_level("keys", seed + 3 + (uint64_t)i, 3 + i, 2 + i, name, &levels[n++]))
-            return -1;
-    }
-    return n;
 }
 
 int play_levels(const char *cmd, const char *level_path, const char *mode, uint64_t seed,
-                session_level *levels, int *nlevels)
+                hol_level *levels, int *nlevels)
 {
     *nlevels = 0;
     if (level_path) {
-        uint8_t *data = NULL;
-        size_t size = 0;
-        int rs = cli_read_file(cmd, "level", level_path, SESSION_LEVEL_TEXT - 1, &data, &size);
-        if (rs)
-            return rs;
-        session_level *L = &levels[(*nlevels)++];
-        memcpy(L->text, data, size);
-        L->len = size;
-        free(data);
-        const char *base = strrchr(level_path, '/');
-        base = base ? base + 1 : level_path;
-        size_t bl = strcspn(base, ".");
-        snprintf(L->name, sizeof L->name, "%.*s", (int)(bl < 60 ? bl : 60), base);
-        char perr[256];
-        if (session_parse_level(L->text, L->len, &L->lvl, perr, sizeof perr)) {
-            cli_error(cmd, 0, "%.200s: %s", level_path, perr);
-            return CLI_EXIT_USAGE;
-        }
-    } else if (mode) {
-        if (mode_level(mode, seed, 5, 3, NULL, &levels[(*nlevels)++])) {
+        int st = play_read_level(cmd, level_path, &levels[0]);
+        *nlevels = st ? 0 : 1;
+        return st;
+    }
+    if (mode) {
+        if (hol_campaign_mode_level(mode, seed, &levels[0])) {
             cli_error(cmd, 0, "--mode '%.40s' is not one of tutorial, flag, keys, explore",
                       mode);
             return CLI_EXIT_USAGE;
         }
-    } else {
-        *nlevels = default_campaign(seed, levels);
-        if (*nlevels < 0) {
-            cli_error(cmd, 0, "cannot make the default campaign");
-            return CLI_EXIT_FAIL;
+        *nlevels = 1;
+        return 0;
+    }
+    if (hol_campaign_default(seed, levels)) {
+        cli_error(cmd, 0, "cannot make the default campaign");
+        return CLI_EXIT_FAIL;
+    }
+    *nlevels = HOL_CAMPAIGN_LEVELS;
+    return 0;
+}
+
+/* ---- recorded input ---------------------------------------------------------- */
+
+static int play_input_failed(play_input *pi)
+{
+    if (pi->lines.err == HOL_ENOMEM)
+        cli_error(pi->cmd, pi->lines.lineno, "'%.200s': longer than %d bytes", pi->path,
+                  HOL_REC_LINE_MAX);
+    else
+        cli_error(pi->cmd, 0, "cannot read '%.200s': %s", pi->path, strerror(errno));
+    return pi->lines.err == HOL_ENOMEM ? CLI_EXIT_USAGE : CLI_EXIT_FAIL;
+}
+
+/* The recording's header, when the file has one (line 1 given). */
+static int play_input_header(play_input *pi, char *s, size_t len, int want_header)
+{
+    pi->recording = len >= 13 && !memcmp(s, "holonomy-rec ", 13);
+    if (!pi->recording && !want_header) {
+        memcpy(pi->first, s, len + 1);
+        pi->first_len = len;
+        pi->have_first = 1;
+        return 0;
+    }
+    hol_rec_reader_init(&pi->rec, pi->levels);
+    for (;;) {
+        int done = 0;
+        hol_err e = hol_rec_read_line(&pi->rec, s, len, &done);
+        if (!e && done) {
+            memcpy(pi->first, s, len + 1);
+            pi->first_len = len;
+            pi->have_first = 1;
+            return 0;
         }
+        if (e) {
+            cli_error(pi->cmd, 0, "%.200s: %s", pi->path, pi->rec.msg);
+            return CLI_EXIT_USAGE;
+        }
+        int r = hol_lines_next(&pi->lines, &s, &len);
+        if (r < 0)
+            return play_input_failed(pi);
+        if (r == 0)
+            break;
+    }
+    if (hol_rec_read_end(&pi->rec)) {
+        cli_error(pi->cmd, 0, "%.200s: %s", pi->path, pi->rec.msg);
+        return CLI_EXIT_USAGE;
     }
     return 0;
+}
+
+int play_input_open(const char *cmd, const char *path, int want_header, play_input *pi)
+{
+    memset(pi, 0, sizeof *pi);
+    pi->cmd = cmd;
+    pi->path = path;
+    hol_err e = hol_lines_open(&pi->lines, path, HOL_REC_LINE_MAX);
+    if (e) {
+        if (e == HOL_EARG)
+            cli_error(cmd, 0, "'%.200s' is %s, not a regular file", path,
+                      errno == EISDIR ? "a directory" : "a FIFO, socket or device");
+        else
+            cli_error(cmd, 0, "cannot open '%.200s': %s", path, strerror(errno));
+        return e == HOL_ENOMEM ? CLI_EXIT_FAIL : CLI_EXIT_USAGE;
+    }
+    char *s;
+    size_t len;
+    int r = hol_lines_next(&pi->lines, &s, &len);
+    int st = r < 0 ? play_input_failed(pi) : 0;
+    if (!st && r == 0 && want_header) {
+        cli_error(cmd, 0, "%.200s: line 1: not a recording (no 'holonomy-rec' header)", path);
+        st = CLI_EXIT_USAGE;
+    }
+    if (!st && r > 0)
+        st = play_input_header(pi, s, len, want_header);
+    if (st)
+        play_input_close(pi);
+    return st;
+}
+
+int play_input_next(play_input *pi, hol_input *in)
+{
+    char *s = pi->first;
+    size_t len = pi->first_len;
+    long lineno = pi->lines.lineno;
+    if (pi->have_first) {
+        pi->have_first = 0;
+        lineno = pi->recording ? pi->rec.line + 1 : 1;
+    } else {
+        int r = hol_lines_next(&pi->lines, &s, &len);
+        if (r <= 0)
+            return r < 0 ? -play_input_failed(pi) : 0;
+        lineno = pi->lines.lineno;
+    }
+    size_t bad = 0;
+    if (hol_input_parse(s, len, in, &bad)) {
+        cli_error(pi->cmd, lineno, "not an input record (byte %zu)", bad + 1);
+        return -CLI_EXIT_USAGE;
+    }
+    if (in->time_s < pi->prev_t) {
+        cli_error(pi->cmd, lineno, "time %.17g goes back (before: %.17g)", in->time_s,
+                  pi->prev_t);
+        return -CLI_EXIT_USAGE;
+    }
+    pi->prev_t = in->time_s;
+    return 1;
+}
+
+void play_input_close(play_input *pi)
+{
+    hol_lines_close(&pi->lines);
+}
+
+/* ---- outputs -------------------------------------------------------------------- */
+
+/* FILE may be written: a regular file, or a new name in an existing folder. */
+static int play_check_output(const char *cmd, const char *opt, const char *path)
+{
+    struct stat st;
+    const char *slash = strrchr(path, '/');
+    char dir[4096];
+    snprintf(dir, sizeof dir, "%.*s", slash ? (int)(slash - path) : 1, slash ? path : ".");
+    if (slash == path)
+        snprintf(dir, sizeof dir, "/");
+    if (!path[0] || (slash && !slash[1]) || stat(dir, &st) || !S_ISDIR(st.st_mode)) {
+        cli_error(cmd, 0, "%s '%.200s' is not a file in an existing folder", opt, path);
+        return CLI_EXIT_USAGE;
+    }
+    if (!stat(path, &st) && !S_ISREG(st.st_mode)) {
+        cli_error(cmd, 0, "%s '%.200s' is %s, not a regular file", opt, path,
+                  S_ISDIR(st.st_mode) ? "a directory" : "a FIFO, socket or device");
+        return CLI_EXIT_USAGE;
+    }
+    return 0;
+}
+
+int play_out_open(const char *cmd, const char *log_dir, const char *rec_path, play_out *po)
+{
+    memset(po, 0, sizeof *po);
+    if (log_dir) {
+        if (hol_sink_posix_make_dir(log_dir) || hol_sink_posix_init(&po->log, log_dir)) {
+            cli_error(cmd, 0, "--log '%.200s' is not a folder and cannot be made: %s", log_dir,
+                      strerror(errno));
+            return CLI_EXIT_USAGE;
+        }
+        po->has_log = 1;
+    }
+    if (rec_path) {
+        if (play_check_output(cmd, "--record", rec_path))
+            return CLI_EXIT_USAGE;
+        const char *slash = strrchr(rec_path, '/');
+        char dir[4096];
+        snprintf(dir, sizeof dir, "%.*s", slash ? (int)(slash - rec_path) : 1,
+                 slash ? rec_path : ".");
+        if (slash == rec_path)
+            snprintf(dir, sizeof dir, "/");
+        const char *base = slash ? slash + 1 : rec_path;
+        if (strlen(base) + 6 > sizeof po->rec_name || hol_sink_posix_init(&po->rec, dir)) {
+            cli_error(cmd, 0, "--record '%.200s': the name is too long", rec_path);
+            return CLI_EXIT_USAGE;
+        }
+        snprintf(po->rec_name, sizeof po->rec_name, "%s", base);
+        po->has_rec = 1;
+    }
+    return 0;
+}
+
+void play_out_close(play_out *po)
+{
+    if (po->has_log)
+        hol_sink_posix_fini(&po->log);
+    if (po->has_rec)
+        hol_sink_posix_fini(&po->rec);
+    po->has_log = po->has_rec = 0;
+}
+
+void play_meta_now(hol_rec_meta *m, const char *participant)
+{
+    memset(m, 0, sizeof *m);
+    time_t now = time(NULL);
+    struct tm tm;
+    gmtime_r(&now, &tm);
+    strftime(m->start, sizeof m->start, "%Y-%m-%dT%H:%M:%SZ", &tm);
+    uint32_t r = 0;
+    if (getrandom(&r, sizeof r, GRND_NONBLOCK) != (ssize_t)sizeof r)
+        r = (uint32_t)getpid() * 2654435761u ^ (uint32_t)now;
+    char stamp[32];
+    strftime(stamp, sizeof stamp, "%Y%m%dT%H%M%SZ", &tm);
+    snprintf(m->session, sizeof m->session, "%s-%08x", stamp, (unsigned)r);
+    if (participant)
+        snprintf(m->participant, sizeof m->participant, "%s", participant);
+}
+
+int play_session_open(const char *cmd, play_out *po, const hol_level *levels, int nlevels,
+                      const hol_rec_meta *meta, int append, hol_session **out)
+{
+    hol_session_desc d;
+    memset(&d, 0, sizeof d);
+    d.levels = levels;
+    d.nlevels = nlevels;
+    d.log = po->has_log ? &po->log.sink : NULL;
+    d.append = append;
+    d.rec = po->has_rec ? &po->rec.sink : NULL;
+    d.rec_name = po->rec_name;
+    d.meta = *meta;
+    char msg[256];
+    hol_err e = hol_session_create(&d, out, msg, sizeof msg);
+    if (e) {
+        cli_error(cmd, 0, "%s", msg);
+        return e == HOL_EARG || e == HOL_EVERSION || e == HOL_EBUDGET ? CLI_EXIT_USAGE
+                                                                      : CLI_EXIT_FAIL;
+    }
+    if (hol_session_recovered(*out))
+        fprintf(stderr, "holonomy %s: %d unfinished attempt(s) of a killed session finished "
+                        "in the log folder (end 'killed')\n",
+                cmd, hol_session_recovered(*out));
+    return 0;
+}
+
+int play_session_end(const char *cmd, hol_session *s, int abort)
+{
+    if (!s)
+        return 0;
+    hol_err e = abort ? hol_session_abort(s) : hol_session_finish(s);
+    if (e)
+        cli_error(cmd, 0, "%s", hol_session_message(s));
+    hol_session_destroy(s);
+    return e ? CLI_EXIT_FAIL : 0;
+}
+
+void play_print_end(hol_session *s)
+{
+    const hol_app_view *v = hol_app_get_view(hol_session_app(s));
+    static const char *const st[] = {"idle", "playing", "done", "quit"};
+    char name[4 * HOL_LEVEL_NAME_MAX];
+    hol_text_escape(hol_session_level(s)->name, name, sizeof name);
+    printf("level %s %s steps %d optimum %d tile %s cell %d,%d\n", name,
+           v->hud.timed_out ? "timeout" : st[v->state], v->hud.steps, v->hud.optimum,
+           v->hud.address, v->user.col, v->user.row);
 }
 
 int play_load_pad_script(const char *cmd, const char *path, hol_hid_script *sc)

@@ -1,19 +1,34 @@
-/* play_setup.h - what `holonomy play` and `holonomy xr` share before their
- * loops: the level list and recorded input lines.
+/* play_setup.h - what `holonomy play`, `replay`, `xr` and `game` share
+ * around the session (core/hol_session.h): levels from files, recorded
+ * input read a line at a time, the session's outputs on this machine, and
+ * its start and end.
  *
- * Contract
- * - play_levels fills levels (SESSION_MAX_LEVELS) from a LEVEL file, or a
- *   --mode level made from the seed (flag 5 steps out; 3 keys 2..3 out and
- *   the chest at 5), or with neither the default campaign (the tutorial,
- *   flags at distance 3, 5 and 7, keys and chest with 2 and 3 keys). It
- *   reports a problem as one line and returns the exit status (0 ok).
- * - read_lines reads a whole file as lines (NUL-terminated in place, CR LF
- *   accepted); parse_input_line parses line k as an input record
- *   (core/hol_input_io.h) whose time may not go back; both report errors
- *   as one line naming the line.
- * - play_load_pad_script reads a scripted game controller
- *   (--gamepad-replay, hol_hid_script.h) into *sc, reporting a bad line
- *   as one line naming it.
+ * Contract (every function reports a problem as one line on stderr, as
+ * cli_error does, and returns the exit status: 0 ok, 1 failure, 2 bad
+ * input)
+ * - play_read_level reads a level file (core/hol_level.h) named after the
+ *   file (its base name up to the first '.'; the whole base name when that
+ *   is empty; at most 60 bytes); a name a recording cannot carry (a newline
+ *   in the file's name) is refused. play_levels: a LEVEL file, a --mode
+ *   level, or the default campaign (core/hol_campaign.h).
+ * - play_input reads input records (core/hol_input_io.h) from a file a line
+ *   at a time (platform/file/hol_lines.h, lines of at most HOL_REC_LINE_MAX
+ *   bytes): a recording's header (core/hol_rec.h) is read first when the
+ *   file starts with one (required with want_header; its levels and
+ *   metadata are kept in the play_input); each record's time may not go
+ *   back. play_input_next: 1 a record, 0 the end, else -status.
+ * - play_out_open checks the outputs before any play: --log DIR (made when
+ *   missing and its parent exists; else bad input) and --record FILE (a
+ *   regular file or a new name in an existing folder). play_session_open
+ *   then creates the session on them; play_session_end finishes it (or
+ *   aborts it: the attempt in play ends `aborted`) and frees it.
+ * - play_meta_now fills a session's metadata from the clock: the start in
+ *   UTC and the id START-XXXXXXXX (8 random hex digits), with the
+ *   participant.
+ * - play_print_end prints "level NAME STATE steps S optimum O tile A cell
+ *   C,R" with NAME escaped for the terminal (core/hol_text.h).
+ * - play_load_pad_script reads a scripted game controller (--gamepad-replay,
+ *   hol_hid_script.h).
  */
 #ifndef HOL_PLAY_SETUP_H
 #define HOL_PLAY_SETUP_H
@@ -22,31 +37,48 @@
 #include <stdint.h>
 
 #include "../../core/hol_input.h"
+#include "../../core/hol_level.h"
+#include "../../core/hol_rec.h"
+#include "../../core/hol_session.h"
+#include "../file/hol_lines.h"
+#include "../file/hol_sink_posix.h"
 #include "../hid/hol_hid_script.h"
-#include "session.h"
 
+int play_read_level(const char *cmd, const char *path, hol_level *out);
 int play_levels(const char *cmd, const char *level_path, const char *mode, uint64_t seed,
-                session_level *levels, int *nlevels);
+                hol_level *levels, int *nlevels);
 
-typedef struct file_lines {
-    uint8_t *data;
-    char **line;
-    size_t *len;
-    long n;
-} file_lines;
+typedef struct play_input {
+    const char *cmd, *path;
+    hol_lines lines;
+    double prev_t;
+    int have_first;                   /* first: read with the header */
+    char first[HOL_REC_LINE_MAX + 1];
+    size_t first_len;
+    int recording;                    /* the file has a recording's header */
+    hol_rec_reader rec;               /* its levels and metadata */
+    hol_level levels[HOL_REC_MAX_LEVELS];
+} play_input;
 
-/* 0 ok, else the exit status (reported). */
-int read_lines(const char *cmd, const char *path, file_lines *fl);
-void free_lines(file_lines *fl);
-/* read_lines, then, when the file is a recording, its header skipped:
- * *out_first is the first input line. 0 ok, else the exit status (reported;
- * fl freed). */
-int read_input_lines(const char *cmd, const char *path, file_lines *fl, long *out_first);
-/* 0 ok, 1 reported (bad record, or time going back from *prev_t). */
-int parse_input_line(const char *cmd, const file_lines *fl, long k, hol_input *in,
-                     double *prev_t);
+int play_input_open(const char *cmd, const char *path, int want_header, play_input *pi);
+int play_input_next(play_input *pi, hol_input *in);
+void play_input_close(play_input *pi);
 
-/* 0 ok, else the exit status (reported). */
+typedef struct play_out {
+    hol_sink_posix log, rec;
+    int has_log, has_rec;
+    char rec_name[HOL_SINK_NAME_MAX];
+} play_out;
+
+int play_out_open(const char *cmd, const char *log_dir, const char *rec_path, play_out *po);
+void play_out_close(play_out *po);
+void play_meta_now(hol_rec_meta *m, const char *participant);
+int play_session_open(const char *cmd, play_out *po, const hol_level *levels, int nlevels,
+                      const hol_rec_meta *meta, int append, hol_session **out);
+int play_session_end(const char *cmd, hol_session *s, int abort);
+
+void play_print_end(hol_session *s);
+
 int play_load_pad_script(const char *cmd, const char *path, hol_hid_script *sc);
 
 #endif

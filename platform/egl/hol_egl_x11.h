@@ -12,7 +12,13 @@
  *   (HOL_X11_TAP(HOL_X11_K_*)) until the caller clears it, so a press and
  *   release between two polls is not lost; the keyboard's auto-repeat is
  *   not a press (detectable auto-repeat, else a release and press with the
- *   same timestamp are dropped).
+ *   same timestamp are dropped). x->closed tells the window's end apart
+ *   from Escape/q: 1 when the window manager's close button asked
+ *   (WM_DELETE_WINDOW), the window was destroyed from outside
+ *   (DestroyNotify, or an X error on it), or the display's connection was
+ *   lost. X errors and a lost connection no longer end the process (Xlib's
+ *   default), so the caller can save and leave; the handlers are per
+ *   process (Xlib's are global).
  * - On failure hol_x11_create returns nonzero with a one-line reason in
  *   err and leaves nothing open.
  */
@@ -36,7 +42,34 @@ typedef struct hol_x11 {
     EGLContext ctx;
     EGLSurface surf;
     int w, h;
+    int closed; /* the window was closed, destroyed or its display lost */
 } hol_x11;
+
+/* Set by the X error handlers: an X error (a window destroyed under us), a
+ * lost display connection. */
+static volatile int hol__x11_error, hol__x11_lost;
+
+static inline int hol__x11_on_error(Display *d, XErrorEvent *e)
+{
+    (void)d;
+    (void)e;
+    hol__x11_error = 1;
+    return 0;
+}
+
+static inline int hol__x11_on_io_error(Display *d)
+{
+    (void)d;
+    hol__x11_lost = 1;
+    return 0;
+}
+
+static inline void hol__x11_on_io_exit(Display *d, void *user)
+{
+    (void)d;
+    (void)user;
+    hol__x11_lost = 1; /* returning leaves Xlib calls on d failing, not the process */
+}
 
 /* Keys held down (1) or not (0); taps: the keys that went down since the
  * caller last cleared it (bit HOL_X11_TAP(HOL_X11_K_*)); the mouse moved by
@@ -69,7 +102,7 @@ static inline void hol_x11_destroy(hol_x11 *x)
             eglDestroyContext(x->edpy, x->ctx);
         eglTerminate(x->edpy);
     }
-    if (x->dpy) {
+    if (x->dpy && !hol__x11_lost) {
         if (x->win)
             XDestroyWindow(x->dpy, x->win);
         XCloseDisplay(x->dpy);
@@ -94,6 +127,9 @@ static inline int hol_x11_create(hol_x11 *x, int w, int h, const char *title, ch
         snprintf(err, err_cap, "cannot open the X display (is DISPLAY set?)");
         return 1;
     }
+    XSetErrorHandler(hol__x11_on_error);
+    XSetIOErrorHandler(hol__x11_on_io_error);
+    XSetIOErrorExitHandler(x->dpy, hol__x11_on_io_exit, NULL);
     x->edpy = eglGetDisplay((EGLNativeDisplayType)x->dpy);
     EGLint maj, min;
     if (x->edpy == EGL_NO_DISPLAY || !eglInitialize(x->edpy, &maj, &min)) {
@@ -164,7 +200,8 @@ static inline int hol_x11_create(hol_x11 *x, int w, int h, const char *title, ch
 
 static inline void hol_x11_swap(hol_x11 *x)
 {
-    eglSwapBuffers(x->edpy, x->surf);
+    if (!x->closed && !hol__x11_lost)
+        eglSwapBuffers(x->edpy, x->surf);
 }
 
 /* Key k's state: a press while up is a tap. */
@@ -194,11 +231,15 @@ static inline int hol__x11_repeat(Display *dpy, const XEvent *ev)
 static inline int hol_x11_poll(hol_x11 *x, hol_x11_keys *keys)
 {
     int run = 1;
-    while (XPending(x->dpy)) {
+    while (!hol__x11_lost && XPending(x->dpy)) {
         XEvent ev;
         XNextEvent(x->dpy, &ev);
         if (ev.type == ClientMessage && (Atom)ev.xclient.data.l[0] == x->wm_delete)
-            run = 0;
+            x->closed = 1;
+        else if (ev.type == DestroyNotify && ev.xdestroywindow.window == x->win) {
+            x->closed = 1;
+            x->win = 0; /* gone: not destroyed again */
+        }
         else if (ev.type == FocusIn || ev.type == FocusOut)
             keys->unfocused = ev.type == FocusOut;
         else if (ev.type == ButtonPress || ev.type == ButtonRelease) {
@@ -246,7 +287,9 @@ static inline int hol_x11_poll(hol_x11 *x, hol_x11_keys *keys)
             }
         }
     }
-    return run;
+    if (hol__x11_error || hol__x11_lost)
+        x->closed = 1;
+    return run && !x->closed;
 }
 
 #endif

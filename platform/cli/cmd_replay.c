@@ -1,0 +1,245 @@
+/* cmd_replay.c - `holonomy replay`: a recording through the same session
+ * as the play (core/hol_session.h), headless: its options, its setup
+ * (the recording read a line at a time, the outputs, an OSMesa renderer
+ * for --png-frames) and its loop. */
+#include <errno.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "../../core/hol_session.h"
+#include "../../render/hol_app_frame.h"
+#include "../../render/hol_render.h"
+#include "../image/hol_png_file.h"
+#include "../osmesa/hol_osmesa.h"
+#include "cli.h"
+#include "play_setup.h"
+
+static const char *const replay_usage =
+    "usage: holonomy replay REC [--log DIR [--append]] [--png-frames LIST --out-dir D]\n"
+    "                       [--size WxH]\n"
+    "\n"
+    "Run a recording (holonomy play --record) through the same session: the\n"
+    "logs come out byte for byte as in the play (the recording names the\n"
+    "session, participant, start and version). --log DIR as for play (made\n"
+    "when its parent exists; refused when it holds logs, unless --append).\n"
+    "--png-frames renders the listed frames (0-based, comma separated)\n"
+    "headless with OSMesa to D/frame-NNNNNN.png (--size, default 640x480); a\n"
+    "frame beyond the recording is bad input (the others are still written).\n"
+    "The recording is read a line at a time (lines of at most 1024 bytes).\n"
+    "\n"
+    "SIGINT, SIGTERM or SIGHUP end it cleanly (the attempt in play is logged\n"
+    "with end 'aborted'). Exit status: 0 ok, 1 failure, 2 bad input (a bad\n"
+    "recording line is named), 128+N after signal N.\n";
+
+typedef struct replay_ctx {
+    const char *cmd, *rec, *log_dir, *out_dir, *list;
+    int w, h, append;
+    long pngs[4096];
+    int npng;
+    play_input input;
+    int has_input;
+    play_out out;
+    hol_session *s;
+    hol_osmesa gl;
+    int have_gl;
+    hol_render *r;
+    uint8_t *rgba;
+} replay_ctx;
+
+/* ---- options ------------------------------------------------------------------ */
+
+/* "3,10,200" into a list; 1 on a bad list. */
+static int parse_frame_list(const char *s, long *out, int cap, int *out_n)
+{
+    int n = 0;
+    const char *p = s;
+    while (*p) {
+        char *e;
+        errno = 0;
+        long v = strtol(p, &e, 10);
+        if (e == p || errno || v < 0 || n >= cap || (*e && *e != ','))
+            return 1;
+        out[n++] = v;
+        p = *e ? e + 1 : e;
+        if (*e && !*p)
+            return 1;
+    }
+    *out_n = n;
+    return n == 0;
+}
+
+static int replay_options(replay_ctx *c, int argc, char **argv)
+{
+    static const char *const valued[] = {"--log", "--png-frames", "--out-dir", "--size", NULL};
+    static const char *const flags[] = {"--append", NULL};
+    cli_opts p;
+    cli_opts_init(&p, c->cmd, argc, argv, valued, flags);
+    const char *a, *val;
+    int r;
+    while ((r = cli_opts_next(&p, &a, &val)) > 0) {
+        if (!a && c->rec) {
+            cli_error(c->cmd, 0, "more than one recording ('%.40s')", val);
+            return CLI_EXIT_USAGE;
+        }
+        if (!a)
+            c->rec = val;
+        else if (!strcmp(a, "--log"))
+            c->log_dir = val;
+        else if (!strcmp(a, "--png-frames"))
+            c->list = val;
+        else if (!strcmp(a, "--out-dir"))
+            c->out_dir = val;
+        else if (!strcmp(a, "--append"))
+            c->append = 1;
+        else if (cli_parse_size(c->cmd, val, &c->w, &c->h))
+            return CLI_EXIT_USAGE;
+    }
+    const char *bad = r < 0                      ? ""
+                      : !c->rec                  ? "no recording given; see 'holonomy replay --help'"
+                      : !c->list != !c->out_dir  ? "--png-frames and --out-dir go together"
+                      : c->append && !c->log_dir ? "--append goes with --log"
+                                                 : NULL;
+    if (!bad && c->list && parse_frame_list(c->list, c->pngs, 4096, &c->npng))
+        bad = "--png-frames is not a comma-separated list of frames";
+    if (bad && bad[0])
+        cli_error(c->cmd, 0, "%s", bad);
+    return bad ? CLI_EXIT_USAGE : 0;
+}
+
+/* ---- setup ------------------------------------------------------------------------ */
+
+static int replay_renderer(replay_ctx *c)
+{
+    char msg[256];
+    if (hol_osmesa_create(&c->gl, c->w, c->h, msg, sizeof msg)) {
+        cli_error(c->cmd, 0, "%s", msg);
+        return CLI_EXIT_FAIL;
+    }
+    c->have_gl = 1;
+    hol_render_desc rd;
+    memset(&rd, 0, sizeof rd);
+    rd.getproc = hol_osmesa_getproc;
+    rd.world = hol_app_world(hol_session_app(c->s));
+    c->rgba = malloc((size_t)c->w * (size_t)c->h * 4);
+    hol_err e = c->rgba ? hol_render_create(&rd, &c->r) : HOL_ENOMEM;
+    if (e) {
+        cli_error(c->cmd, 0, "cannot initialise the renderer: %s", hol_err_str(e));
+        return CLI_EXIT_FAIL;
+    }
+    return 0;
+}
+
+static int replay_prepare(replay_ctx *c)
+{
+    if (cli_require_folder(c->cmd, "--out-dir", c->out_dir))
+        return CLI_EXIT_USAGE;
+    int st = play_out_open(c->cmd, c->log_dir, NULL, &c->out);
+    if (!st) {
+        st = play_input_open(c->cmd, c->rec, 1, &c->input);
+        c->has_input = !st;
+    }
+    if (!st)
+        st = play_session_open(c->cmd, &c->out, c->input.levels, c->input.rec.nlevels,
+                               &c->input.rec.meta, c->append, &c->s);
+    if (!st && c->npng)
+        st = replay_renderer(c);
+    return st;
+}
+
+/* ---- the loop ------------------------------------------------------------------------ */
+
+static int replay_png(replay_ctx *c, long frame)
+{
+    hol_frame_desc fd;
+    hol_app_frame_desc(hol_app_get_view(hol_session_app(c->s)), -1, c->w, c->h, 0, &fd);
+    hol_err e = hol_render_frame(c->r, &fd, NULL);
+    char path[4096];
+    snprintf(path, sizeof path, "%s/frame-%06ld.png", c->out_dir, frame);
+    if (!e)
+        hol_render_read_rgba(c->r, c->w, c->h, c->rgba);
+    if (e || hol_png_write_file(path, c->rgba, c->w, c->h, 0)) {
+        cli_error(c->cmd, 0, "cannot render frame %ld to '%.200s'", frame, path);
+        return CLI_EXIT_FAIL;
+    }
+    return 0;
+}
+
+static int replay_loop(replay_ctx *c, int *abort)
+{
+    for (;;) {
+        if (cli_caught_signal()) {
+            *abort = 1;
+            return 0;
+        }
+        hol_input in;
+        int r = play_input_next(&c->input, &in);
+        if (r <= 0)
+            return -r;
+        long frame = hol_session_frames(c->s);
+        int over = 0;
+        hol_err err = hol_session_step(c->s, &in, &over);
+        if (err) {
+            cli_error(c->cmd, 0, "%s", hol_session_message(c->s));
+            return err == HOL_EARG ? CLI_EXIT_USAGE : CLI_EXIT_FAIL;
+        }
+        if (c->r && hol_app_get_events(hol_session_app(c->s))->level_started)
+            hol_render_invalidate(c->r);
+        for (int k = 0; k < c->npng; k++)
+            if (c->pngs[k] == frame && (r = replay_png(c, frame)))
+                return r;
+        if (over)
+            return 0;
+    }
+}
+
+/* A listed frame the recording never reached is bad input, said once (the
+ * frames it reached are written). */
+static int replay_missed_frames(replay_ctx *c)
+{
+    long frames = hol_session_frames(c->s);
+    for (int k = 0; k < c->npng; k++)
+        if (c->pngs[k] >= frames) {
+            cli_error(c->cmd, 0, "--png-frames: frame %ld is beyond the recording (frames 0..%ld)",
+                      c->pngs[k], frames - 1);
+            return CLI_EXIT_USAGE;
+        }
+    return 0;
+}
+
+int cli_cmd_replay(int argc, char **argv)
+{
+    static replay_ctx c;
+    memset(&c, 0, sizeof c);
+    c.cmd = "replay";
+    c.w = 640, c.h = 480;
+    if (cli_wants_help(argc, argv)) {
+        fputs(replay_usage, stdout);
+        return cli_finish_output(c.cmd);
+    }
+    int status = replay_options(&c, argc, argv);
+    if (status)
+        return status;
+    cli_catch_signals();
+    int abort = 0;
+    status = replay_prepare(&c);
+    if (!status)
+        status = replay_loop(&c, &abort);
+    if (!status)
+        play_print_end(c.s);
+    if (!status && !abort)
+        status = replay_missed_frames(&c);
+    hol_render_destroy(c.r);
+    free(c.rgba);
+    if (c.have_gl)
+        hol_osmesa_destroy(&c.gl);
+    int end = play_session_end(c.cmd, c.s, abort);
+    play_out_close(&c.out);
+    if (c.has_input)
+        play_input_close(&c.input);
+    int out = cli_finish_output(c.cmd);
+    status = status ? status : end ? end : out;
+    int sig = cli_caught_signal();
+    return status ? status : sig ? 128 + sig : 0;
+}

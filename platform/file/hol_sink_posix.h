@@ -1,0 +1,41 @@
+/* hol_sink_posix.h - the session's sink (core/hol_sink.h) over a folder of
+ * files: the desktop (`play`, `replay`, `xr`), the headset, and the
+ * Android app's files directory.
+ *
+ * Contract
+ * - hol_sink_posix_init binds p to an existing folder DIR (HOL_EOPEN when
+ *   it is not one); &p->sink is the hol_sink to give the session. Streams
+ *   are the folder's files (DIR/NAME).
+ * - open refuses (HOL_EOPEN) a name that is there but not a regular file (a
+ *   FIFO, a device, a folder), without blocking; files get 0666 & ~umask.
+ *   write is write(2) straight away (no buffer of its own), so flush with
+ *   durable 0 has nothing to do and everything written survives a kill -9;
+ *   durable 1 is fsync. rename is rename(2) then an fsync of the folder.
+ *   read opens, preads and closes. list reads the folder (not "." nor
+ *   "..").
+ * - why gives strerror of the last failure.
+ * - hol_sink_posix_fini closes what is still open (nothing is flushed or
+ *   renamed). Plain POSIX: no allocation, no globals; one sink per
+ *   thread.
+ * - hol_sink_posix_make_dir makes the folder DIR when it is missing and its
+ *   parent exists (`--log DIR`): HOL_OK when DIR is a folder afterwards,
+ *   HOL_EOPEN (errno says why) when it is something else or cannot be
+ *   made.
+ */
+#ifndef HOL_SINK_POSIX_H
+#define HOL_SINK_POSIX_H
+
+#include "../../core/hol_sink.h"
+
+typedef struct hol_sink_posix {
+    hol_sink sink;
+    char dir[4096];
+    int fd[HOL_SINK_MAX_OPEN];
+    char why[128];
+} hol_sink_posix;
+
+hol_err hol_sink_posix_init(hol_sink_posix *p, const char *dir);
+void hol_sink_posix_fini(hol_sink_posix *p);
+hol_err hol_sink_posix_make_dir(const char *dir);
+
+#endif
