@@ -25,10 +25,10 @@ typedef struct hol__lp {
     hol_level_err *err;
 } hol__lp;
 
-static hol_err hol__fail(hol__lp *p, hol_err code, long line, const char *fmt, ...)
+static hol_err hol__lfail(hol__lp *p, hol_err code, long line, const char *fmt, ...)
     __attribute__((format(printf, 4, 5)));
 
-static hol_err hol__fail(hol__lp *p, hol_err code, long line, const char *fmt, ...)
+static hol_err hol__lfail(hol__lp *p, hol_err code, long line, const char *fmt, ...)
 {
     hol_level_err *e = p->err;
     if (e) {
@@ -48,9 +48,9 @@ static hol_err hol__conflict(hol__lp *p, long line, long other, int on, const ch
                              const char *addr)
 {
     if (on)
-        hol__fail(p, HOL_EARG, line, "%.30s is already placed", addr);
+        hol__lfail(p, HOL_EARG, line, "%.30s is already placed", addr);
     else
-        hol__fail(p, HOL_EARG, line, "the placement on %.30s conflicts with %s", addr, what);
+        hol__lfail(p, HOL_EARG, line, "the placement on %.30s conflicts with %s", addr, what);
     if (p->err) {
         p->err->other = other;
         p->err->other_on = on;
@@ -126,7 +126,7 @@ static hol_err hol__key_mode(hol__lp *p, char **f, int nf)
     (void)nf;
     int m = hol__word(f[1], modes, 4);
     if (m < 0)
-        return hol__fail(p, HOL_EPARSE, p->line,
+        return hol__lfail(p, HOL_EPARSE, p->line,
                          "mode '%.20s' is not explore, tutorial, flag or keys", f[1]);
     p->L.mode = m;
     p->have_mode = 1;
@@ -137,7 +137,7 @@ static hol_err hol__key_seed(hol__lp *p, char **f, int nf)
 {
     (void)nf;
     if (!hol__u64(f[1], &p->L.seed))
-        return hol__fail(p, HOL_EPARSE, p->line,
+        return hol__lfail(p, HOL_EPARSE, p->line,
                          "seed '%.30s' is not an unsigned 64-bit number", f[1]);
     return HOL_OK;
 }
@@ -147,7 +147,7 @@ static hol_err hol__key_start(hol__lp *p, char **f, int nf)
     size_t nd = 0;
     (void)nf;
     if (hol_walk_parse(f[1], strlen(f[1]), p->L.start, sizeof p->L.start, &nd, NULL))
-        return hol__fail(p, HOL_EPARSE, p->line, "start '%.30s' is not a walk of N, E, S, W",
+        return hol__lfail(p, HOL_EPARSE, p->line, "start '%.30s' is not a walk of N, E, S, W",
                          f[1]);
     p->L.nstart = (int)nd;
     return HOL_OK;
@@ -159,7 +159,7 @@ static hol_err hol__key_tile(hol__lp *p, char **f, int nf)
     hol_tile t;
     (void)nf;
     if (hol_tile_parse(f[1], -1, &t))
-        return hol__fail(p, HOL_EPARSE, p->line, "'%.30s' is not a canonical address", f[1]);
+        return hol__lfail(p, HOL_EPARSE, p->line, "'%.30s' is not a canonical address", f[1]);
     if (f[0][0] == 'f') {
         p->L.flag = t;
         p->flag_line = p->line;
@@ -174,7 +174,7 @@ static hol_err hol__key_keys(hol__lp *p, char **f, int nf)
 {
     for (int i = 1; i < nf; i++)
         if (hol_tile_parse(f[i], -1, &p->L.keys[i - 1]))
-            return hol__fail(p, HOL_EPARSE, p->line, "key '%.30s' is not a canonical address",
+            return hol__lfail(p, HOL_EPARSE, p->line, "key '%.30s' is not a canonical address",
                              f[i]);
     p->L.nkeys = nf - 1;
     p->keys_line = p->line;
@@ -186,7 +186,7 @@ static hol_err hol__key_dist(hol__lp *p, char **f, int nf)
 {
     int lo, hi;
     if (hol__range(f, nf, 1, &lo, &hi))
-        return hol__fail(p, HOL_ERANGE, p->line, "%s needs MIN [MAX] with 1 <= MIN <= MAX <= %d",
+        return hol__lfail(p, HOL_ERANGE, p->line, "%s needs MIN [MAX] with 1 <= MIN <= MAX <= %d",
                          f[0], HOL_LEVEL_MAX_DIST);
     if (f[0][0] == 'f') {
         p->flag_lo = lo, p->flag_hi = hi;
@@ -202,7 +202,7 @@ static hol_err hol__key_keys_dist(hol__lp *p, char **f, int nf)
 {
     uint64_t cnt = hol__count(f[1]);
     if (!cnt || cnt > HOL_APP_MAX_KEYS || hol__range(f, nf, 2, &p->keys_lo, &p->keys_hi))
-        return hol__fail(p, HOL_ERANGE, p->line,
+        return hol__lfail(p, HOL_ERANGE, p->line,
                          "keys-distance needs COUNT (1..%d) MIN [MAX] (1 <= MIN <= MAX <= %d)",
                          HOL_APP_MAX_KEYS, HOL_LEVEL_MAX_DIST);
     p->keys_n = (int)cnt;
@@ -215,7 +215,7 @@ static hol_err hol__key_time_limit(hol__lp *p, char **f, int nf)
     (void)nf;
     uint64_t secs = hol__count(f[1]);
     if (!secs || secs > 86400)
-        return hol__fail(p, HOL_ERANGE, p->line, "time-limit '%.20s' is not seconds in 1..86400",
+        return hol__lfail(p, HOL_ERANGE, p->line, "time-limit '%.20s' is not seconds in 1..86400",
                          f[1]);
     p->L.time_limit_s = (double)secs;
     return HOL_OK;
@@ -227,7 +227,7 @@ static hol_err hol__key_stages(hol__lp *p, char **f, int nf)
     for (int i = 1; i < nf; i++) {
         uint64_t k = i < HOL__FIELDS ? hol__count(f[i]) : 0;
         if (!k || k > HOL_APP_TUTORIAL_STAGES || nf > HOL_APP_TUTORIAL_STAGES + 1)
-            return hol__fail(p, HOL_ERANGE, p->line, "stages are lesson numbers 1..%d",
+            return hol__lfail(p, HOL_ERANGE, p->line, "stages are lesson numbers 1..%d",
                              HOL_APP_TUTORIAL_STAGES);
         st |= 1u << (k - 1);
     }
@@ -243,18 +243,18 @@ static hol_err hol__key_place(hol__lp *p, char **f, int nf)
     (void)nf;
     int o = hol__word(f[1], objs, 6);
     if (o < 0)
-        return hol__fail(p, HOL_EPARSE, p->line,
+        return hol__lfail(p, HOL_EPARSE, p->line,
                          "place '%.20s' is not clearing, grass, flowers, rock, mushroom or pond",
                          f[1]);
     hol_tile t;
     if (hol_tile_parse(f[2], -1, &t))
-        return hol__fail(p, HOL_EPARSE, p->line, "'%.30s' is not a canonical address", f[2]);
+        return hol__lfail(p, HOL_EPARSE, p->line, "'%.30s' is not a canonical address", f[2]);
     hol_app_level *L = &p->L;
     for (int k = 0; k < L->nplaces; k++)
         if (hol_tile_eq(L->places[k].tile, t))
             return hol__conflict(p, p->line, p->place_line[k], 1, NULL, f[2]);
     if (L->nplaces >= HOL_APP_MAX_PLACES)
-        return hol__fail(p, HOL_ENOMEM, p->line, "more than %d placements", HOL_APP_MAX_PLACES);
+        return hol__lfail(p, HOL_ENOMEM, p->line, "more than %d placements", HOL_APP_MAX_PLACES);
     p->place_line[L->nplaces] = p->line;
     L->places[L->nplaces].tile = t;
     L->places[L->nplaces++].object = ids[o];
@@ -268,13 +268,13 @@ static hol_err hol__key_cues(hol__lp *p, char **f, int nf)
     for (int i = 1; i < nf && i < HOL__FIELDS; i++) {
         int c = hol__word(f[i], names, 4);
         if (c < 0 && !(nf == 2 && !strcmp(f[i], "none")))
-            return hol__fail(p, HOL_EPARSE, p->line,
+            return hol__lfail(p, HOL_EPARSE, p->line,
                              "cue '%.20s' is not hot-cold, path, poles, arrow or none", f[i]);
         if (c >= 0)
             cues |= 1u << c;
     }
     if (nf > 5)
-        return hol__fail(p, HOL_EPARSE, p->line, "more than the four cues");
+        return hol__lfail(p, HOL_EPARSE, p->line, "more than the four cues");
     p->L.cues = cues;
     return HOL_OK;
 }
@@ -285,7 +285,7 @@ static hol_err hol__key_minimap(hol__lp *p, char **f, int nf)
     (void)nf;
     int m = hol__word(f[1], places, 3);
     if (m < 0)
-        return hol__fail(p, HOL_EPARSE, p->line, "minimap '%.20s' is not hud, hand or off", f[1]);
+        return hol__lfail(p, HOL_EPARSE, p->line, "minimap '%.20s' is not hud, hand or off", f[1]);
     p->L.minimap = m;
     return HOL_OK;
 }
@@ -343,9 +343,9 @@ static hol_err hol__line(hol__lp *p, const char *s, size_t n)
     while (n && s[n - 1] == '\r')
         n--;
     if (n > HOL_LEVEL_LINE_MAX)
-        return hol__fail(p, HOL_ENOMEM, p->line, "longer than %d bytes", HOL_LEVEL_LINE_MAX);
+        return hol__lfail(p, HOL_ENOMEM, p->line, "longer than %d bytes", HOL_LEVEL_LINE_MAX);
     if (memchr(s, 0, n))
-        return hol__fail(p, HOL_EPARSE, p->line, "a NUL byte");
+        return hol__lfail(p, HOL_EPARSE, p->line, "a NUL byte");
     memcpy(line, s, n);
     line[n] = 0;
     char *hash = strchr(line, '#');
@@ -356,12 +356,12 @@ static hol_err hol__line(hol__lp *p, const char *s, size_t n)
     if (nf == 0)
         return HOL_OK;
     if (nf < 2)
-        return hol__fail(p, HOL_EPARSE, p->line, "'%.20s' needs a value", f[0]);
+        return hol__lfail(p, HOL_EPARSE, p->line, "'%.20s' needs a value", f[0]);
     for (size_t k = 0; k < sizeof hol__keys / sizeof hol__keys[0]; k++)
         if (!strcmp(f[0], hol__keys[k].key) && nf >= hol__keys[k].min &&
             nf <= hol__keys[k].max)
             return hol__keys[k].fn(p, f, nf);
-    return hol__fail(p, HOL_EPARSE, p->line, "unknown key or wrong value count: '%.20s'", f[0]);
+    return hol__lfail(p, HOL_EPARSE, p->line, "unknown key or wrong value count: '%.20s'", f[0]);
 }
 
 /* ---- after the last line -------------------------------------------------------- */
@@ -462,17 +462,17 @@ static hol_err hol__draw_objectives(hol__lp *p, hol_tile start)
     uint64_t rng = L->seed ^ 0x6c6576656cull;
     if (L->mode == HOL_APP_FLAG && p->flag_lo &&
         hol__draw(L, start, p->flag_lo, p->flag_hi, &rng, &L->flag))
-        return hol__fail(p, HOL_EARG, p->flag_line, "no free tile for the flag at that distance");
+        return hol__lfail(p, HOL_EARG, p->flag_line, "no free tile for the flag at that distance");
     if (L->mode == HOL_APP_KEYS && p->chest_lo &&
         hol__draw(L, start, p->chest_lo, p->chest_hi, &rng, &L->chest))
-        return hol__fail(p, HOL_EARG, p->chest_line,
+        return hol__lfail(p, HOL_EARG, p->chest_line,
                          "no free tile for the chest at that distance");
     if (L->mode == HOL_APP_KEYS && p->keys_n) {
         L->nkeys = 0;
         for (int k = 0; k < p->keys_n; k++) {
             hol_tile t;
             if (hol__draw(L, start, p->keys_lo, p->keys_hi, &rng, &t))
-                return hol__fail(p, HOL_EARG, p->keys_line,
+                return hol__lfail(p, HOL_EARG, p->keys_line,
                                  "no free tile for key %d at that distance", k + 1);
             L->keys[L->nkeys++] = t;
         }
@@ -483,12 +483,12 @@ static hol_err hol__draw_objectives(hol__lp *p, hol_tile start)
 static hol_err hol__finish(hol__lp *p)
 {
     if (!p->have_mode)
-        return hol__fail(p, HOL_EARG, p->line ? p->line : 1, "no 'mode' line%s",
+        return hol__lfail(p, HOL_EARG, p->line ? p->line : 1, "no 'mode' line%s",
                          p->line ? "" : " (the level is empty)");
     hol_room r0 = hol_room_start();
     for (int i = 0; i < p->L.nstart; i++)
         if (hol_room_step(&r0, p->L.start[i]))
-            return hol__fail(p, HOL_EARG, p->line, "the start walk leaves the room");
+            return hol__lfail(p, HOL_EARG, p->line, "the start walk leaves the room");
     hol_err e = hol__check_places(p);
     return e ? e : hol__draw_objectives(p, r0.tile);
 }
@@ -502,7 +502,7 @@ hol_err hol_level_parse(const char *text, size_t len, hol_app_level *out, hol_le
     p.L.cues = HOL_CUE_ALL;
     p.err = err;
     if (len > HOL_LEVEL_TEXT_MAX)
-        return hol__fail(&p, HOL_ENOMEM, 0, "longer than %d bytes", HOL_LEVEL_TEXT_MAX);
+        return hol__lfail(&p, HOL_ENOMEM, 0, "longer than %d bytes", HOL_LEVEL_TEXT_MAX);
     const char *s = text, *end = text + len;
     while (s < end) {
         const char *nl = memchr(s, '\n', (size_t)(end - s));
@@ -543,7 +543,7 @@ hol_err hol_level_make(const char *name, size_t name_len, const char *text, size
     memset(&p, 0, sizeof p);
     p.err = err;
     if (!hol_level_name_ok(name, name_len))
-        return hol__fail(&p, HOL_EARG, 0,
+        return hol__lfail(&p, HOL_EARG, 0,
                          name_len == 0 ? "an empty level name"
                          : name_len >= HOL_LEVEL_NAME_MAX
                              ? "a level name longer than 63 bytes"

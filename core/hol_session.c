@@ -11,22 +11,6 @@
 #define HOL__REC_BUF (64u << 10)
 #define HOL__ROWS_BUF (32u << 10)
 
-unsigned hol_session_cues_visible(const hol_app_view *v)
-{
-    unsigned c = v->map.cues, vis = 0;
-    int map = v->map.place != HOL_MINIMAP_OFF, objs = v->map.nobjectives > 0;
-    if (map && objs && (c & HOL_CUE_HOT_COLD))
-        vis |= HOL_CUE_HOT_COLD;
-    if (map && v->map.npath > 0 && (c & HOL_CUE_PATH))
-        vis |= HOL_CUE_PATH;
-    if (objs && (c & HOL_CUE_POLES))
-        vis |= HOL_CUE_POLES;
-    for (int i = 0; map && (c & HOL_CUE_ARROW) && i < v->map.nobjectives; i++)
-        if (hol_tile_dist(v->user.tile, v->map.objectives[i]) > HOL_APP_MINIMAP_RADIUS)
-            vis |= HOL_CUE_ARROW;
-    return vis;
-}
-
 /* ---- create ---------------------------------------------------------------- */
 
 static hol_err hol__check_desc(const hol_session_desc *d, char *msg, size_t cap)

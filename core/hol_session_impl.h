@@ -3,7 +3,8 @@
  * hol_session_log.c (buffered outputs, rows, attempts begun and ended) and
  * hol_session_recover.c (a log folder's earlier files: refusal, recovery).
  * Calls go one way: hol_session.c -> hol_session_recover.c ->
- * hol_session_log.c, and hol_session.c -> hol_session_log.c. */
+ * hol_session_log.c, and hol_session.c -> hol_session_log.c (which also
+ * holds hol_session_cues_visible). */
 #ifndef HOL_SESSION_IMPL_H
 #define HOL_SESSION_IMPL_H
 
@@ -19,12 +20,12 @@ typedef struct hol__out {
 } hol__out;
 
 /* The previous frame of the attempt, for head rows between frames. */
-typedef struct hol__frame {
+typedef struct hol__head_frame {
     int valid;
     double t; /* level time */
     double pos[3], yaw, pitch;
     hol_room room;
-} hol__frame;
+} hol__head_frame;
 
 /* Row ends: the app's (hol_app_end) and the session's own. */
 enum { HOL__END_ABORTED = 5, HOL__END_KILLED = 6 };
@@ -41,7 +42,7 @@ struct hol_session {
     int attempt, attempt_open;
     double attempt_started;  /* session time at the attempt's start */
     long next_sample;        /* the next head row's time, in 0.1 s */
-    hol__frame prev;
+    hol__head_frame prev;
     double flush_s, next_flush, now;
     long frames;
     int over, finished, recovered;

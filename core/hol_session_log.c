@@ -15,6 +15,32 @@ const char *const hol__end_names[7] = {"open",    "done",    "restart", "quit",
                                        "timeout", "aborted", "killed"};
 static const char *const hol__mode_names[4] = {"explore", "flag", "keys", "tutorial"};
 
+/* A level's name as a CSV field: escaped (no control byte reaches a
+ * terminal that shows the file), then quoted per RFC 4180. */
+#define HOL__CSV_NAME (8 * HOL_LEVEL_NAME_MAX + 3)
+static void hol__csv_name(const char *name, char out[HOL__CSV_NAME])
+{
+    char esc[4 * HOL_LEVEL_NAME_MAX + 1];
+    hol_text_escape(name, strlen(name), esc, sizeof esc);
+    hol_text_csv(esc, strlen(esc), out, HOL__CSV_NAME);
+}
+
+unsigned hol_session_cues_visible(const hol_app_view *v)
+{
+    unsigned c = v->map.cues, vis = 0;
+    int map = v->map.place != HOL_MINIMAP_OFF, objs = v->map.nobjectives > 0;
+    if (map && objs && (c & HOL_CUE_HOT_COLD))
+        vis |= HOL_CUE_HOT_COLD;
+    if (map && v->map.npath > 0 && (c & HOL_CUE_PATH))
+        vis |= HOL_CUE_PATH;
+    if (objs && (c & HOL_CUE_POLES))
+        vis |= HOL_CUE_POLES;
+    for (int i = 0; map && (c & HOL_CUE_ARROW) && i < v->map.nobjectives; i++)
+        if (hol_tile_dist(v->user.tile, v->map.objectives[i]) > HOL_APP_MINIMAP_RADIUS)
+            vis |= HOL_CUE_ARROW;
+    return vis;
+}
+
 /* ---- buffered streams ------------------------------------------------------ */
 
 hol_err hol__fail_sink(hol_session *s, const hol_sink *k, hol_err e, const char *what,
@@ -146,8 +172,8 @@ size_t hol__summary_row(const hol_session *s, const hol_app_summary *sum, int en
                         size_t cap)
 {
     const hol_level *L = &s->levels[s->cur];
-    char name[4 * HOL_LEVEL_NAME_MAX], hash[HOL_SHA256_HEX];
-    hol_text_csv(L->name, name, sizeof name);
+    char name[HOL__CSV_NAME], hash[HOL_SHA256_HEX];
+    hol__csv_name(L->name, name);
     hol_sha256_hex(L->sha256, hash);
     int mode = sum->mode >= 0 && sum->mode < 4 ? sum->mode : 0;
     int n = snprintf(out, cap, "%s,%s,%s,%s,%d,%s,%s,%s,%llu,%u,%.4f,%d,%d,%.4f,%s\n",
@@ -160,8 +186,8 @@ size_t hol__summary_row(const hol_session *s, const hol_app_summary *sum, int en
 
 static void hol__step_rows(hol_session *s, const hol_app_events *ev, const hol_app_view *v)
 {
-    char name[4 * HOL_LEVEL_NAME_MAX], addr[HOL_TILE_ADDR_MAX];
-    hol_text_csv(s->levels[s->cur].name, name, sizeof name);
+    char name[HOL__CSV_NAME], addr[HOL_TILE_ADDR_MAX];
+    hol__csv_name(s->levels[s->cur].name, name);
     unsigned vis = hol_session_cues_visible(v);
     for (int i = 0; i < ev->nsteps; i++) {
         const hol_app_step_event *e = &ev->steps[i];
@@ -177,11 +203,11 @@ static void hol__step_rows(hol_session *s, const hol_app_events *ev, const hol_a
  * previous frame of the attempt and this one. */
 static void hol__head_rows(hol_session *s, const hol_app_view *v)
 {
-    hol__frame cur = {1, v->hud.elapsed_s, {v->head[0], v->head[1], v->head[2]},
+    hol__head_frame cur = {1, v->hud.elapsed_s, {v->head[0], v->head[1], v->head[2]},
                       v->yaw_deg, v->pitch_deg, v->user};
-    const hol__frame *p = s->prev.valid ? &s->prev : &cur;
-    char name[4 * HOL_LEVEL_NAME_MAX], addr[HOL_TILE_ADDR_MAX];
-    hol_text_csv(s->levels[s->cur].name, name, sizeof name);
+    const hol__head_frame *p = s->prev.valid ? &s->prev : &cur;
+    char name[HOL__CSV_NAME], addr[HOL_TILE_ADDR_MAX];
+    hol__csv_name(s->levels[s->cur].name, name);
     for (; s->next_sample / 10.0 <= cur.t; s->next_sample++) {
         double t = s->next_sample / 10.0, span = cur.t - p->t;
         double a = span > 0 ? (t - p->t) / span : 1;

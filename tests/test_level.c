@@ -120,12 +120,136 @@ static void test_bad_lines(void **state)
     }
 }
 
+/* Typed errors: the code says what kind of problem, the line where, and a
+ * conflict names the other line; the bounds hold. */
+static void test_typed_errors(void **state)
+{
+    (void)state;
+    static const struct {
+        const char *text;
+        hol_err code;
+        long line, other;
+    } cases[] = {
+        {"mode chess\n", HOL_EPARSE, 1, 0},
+        {"mode flag\nflag-distance 0\n", HOL_ERANGE, 2, 0},
+        {"mode flag\nflag Wrf\n# c\nplace rock Wrf\n", HOL_EARG, 4, 2},
+        {"mode explore\nplace rock N\nplace grass N\n", HOL_EARG, 3, 2},
+        {"seed 1\n", HOL_EARG, 1, 0},
+        {"mode explore\nstart NN\n", HOL_EARG, 2, 0},
+        {"mode flag\r\nflag Wrf\r\nbogus 1\r\n", HOL_EPARSE, 3, 0},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        hol_app_level L;
+        hol_level_err e;
+        assert_int_equal(hol_level_parse(cases[i].text, strlen(cases[i].text), &L, &e),
+                         cases[i].code);
+        assert_int_equal(e.code, cases[i].code);
+        assert_int_equal(e.line, cases[i].line);
+        assert_int_equal(e.other, cases[i].other);
+        assert_null(strstr(e.msg, "line ")); /* the lines are fields, not text */
+    }
+    /* a recording's level: its lines counted from where it starts */
+    hol_app_level L;
+    hol_level_err e;
+    const char *t = "mode flag\nflag Wrf\nplace rock Wrf\n";
+    assert_int_equal(hol_level_parse(t, strlen(t), &L, &e), HOL_EARG);
+    char msg[256];
+    hol_level_err_format(&e, 10, msg, sizeof msg);
+    assert_string_equal(msg, "line 12: the placement on Wrf conflicts with the flag (line 11)");
+    /* CR LF is read as LF */
+    assert_int_equal(parse("mode flag\r\nseed 5\r\nflag Wrf\r\n", &L, msg), 0);
+    assert_int_equal(L.seed, 5);
+    /* bounds: the text, a line */
+    static char big[HOL_LEVEL_TEXT_MAX + 2];
+    memset(big, '#', sizeof big - 1);
+    big[0] = 'm';
+    assert_int_equal(hol_level_parse(big, HOL_LEVEL_TEXT_MAX + 1, &L, &e), HOL_ENOMEM);
+    char line[HOL_LEVEL_LINE_MAX + 40];
+    int n = snprintf(line, sizeof line, "mode flag\n#");
+    memset(line + n, 'x', HOL_LEVEL_LINE_MAX);
+    line[n + HOL_LEVEL_LINE_MAX] = 0;
+    assert_int_equal(hol_level_parse(line, strlen(line), &L, &e), HOL_ENOMEM);
+    assert_int_equal(e.line, 2);
+}
+
+/* A session's level: a name a recording can carry, the text as recorded,
+ * its SHA-256 (FIPS 180-4 test vectors first). */
+static void test_named_level(void **state)
+{
+    (void)state;
+    uint8_t h[32];
+    char hex[HOL_SHA256_HEX];
+    hol_sha256("abc", 3, h);
+    hol_sha256_hex(h, hex);
+    assert_string_equal(hex, "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
+    hol_sha256("", 0, h);
+    hol_sha256_hex(h, hex);
+    assert_string_equal(hex, "e3b0c44298fc1c149afbf4c8996fb92427ae41e4649b934ca495991b7852b855");
+    const char *two = "abcdbcdecdefdefgefghfghighijhijkijkljklmklmnlmnomnopnopq";
+    hol_sha256(two, strlen(two), h);
+    hol_sha256_hex(h, hex);
+    assert_string_equal(hex, "248d6a61d20638b8e5c026930c3e6039a33ce45964ff2167f6ecedd419db06c1");
+    static hol_level lv;
+    hol_level_err e;
+    const char *crlf = "mode flag\r\nseed 5\r\nflag Wrf";
+    assert_int_equal(hol_level_make("f", 1, crlf, strlen(crlf), &lv, &e), HOL_OK);
+    assert_string_equal(lv.text, "mode flag\nseed 5\nflag Wrf\n");
+    assert_string_equal(lv.name, "f");
+    hol_sha256(lv.text, lv.len, h);
+    assert_memory_equal(h, lv.sha256, 32);
+    /* names that cannot be a recording's "level NAME" line are refused */
+    static const char *const bad[] = {"a\nb", "a\rb", ""};
+    for (int i = 0; i < 3; i++) {
+        assert_int_equal(hol_level_make(bad[i], strlen(bad[i]), crlf, strlen(crlf), &lv, &e),
+                         HOL_EARG);
+        assert_int_equal(e.line, 0);
+    }
+    char longname[HOL_LEVEL_NAME_MAX + 1];
+    memset(longname, 'n', sizeof longname);
+    assert_int_equal(hol_level_make(longname, HOL_LEVEL_NAME_MAX, crlf, strlen(crlf), &lv, &e),
+                     HOL_EARG);
+    /* an escape sequence survives a recording: it is kept (and escaped where shown) */
+    assert_int_equal(hol_level_make("\033]0;x\007", 6, crlf, strlen(crlf), &lv, &e), HOL_OK);
+}
+
+/* The campaign and --mode levels: pure, from the seed, parseable texts. */
+static void test_campaign(void **state)
+{
+    (void)state;
+    static hol_level a[HOL_CAMPAIGN_LEVELS], b[HOL_CAMPAIGN_LEVELS];
+    assert_int_equal(hol_campaign_default(1, a), HOL_OK);
+    assert_int_equal(hol_campaign_default(1, b), HOL_OK);
+    static const char *const names[] = {"tutorial", "flag-1", "flag-2", "flag-3", "keys-1", "keys-2"};
+    static const int modes[] = {HOL_APP_TUTORIAL, HOL_APP_FLAG, HOL_APP_FLAG, HOL_APP_FLAG,
+                                HOL_APP_KEYS, HOL_APP_KEYS};
+    for (int i = 0; i < HOL_CAMPAIGN_LEVELS; i++) {
+        assert_string_equal(a[i].name, names[i]);
+        assert_int_equal(a[i].lvl.mode, modes[i]);
+        assert_string_equal(a[i].text, b[i].text);
+        hol_app_level again;
+        assert_int_equal(hol_level_parse(a[i].text, a[i].len, &again, NULL), HOL_OK);
+    }
+    assert_int_equal(hol_tile_dist0(a[1].lvl.flag), 3);
+    assert_int_equal(hol_tile_dist0(a[3].lvl.flag), 7);
+    assert_int_equal(a[4].lvl.nkeys, 2);
+    assert_int_equal(a[5].lvl.nkeys, 3);
+    hol_level m;
+    assert_int_equal(hol_campaign_mode_level("keys", 16, &m), HOL_OK);
+    assert_string_equal(m.name, "keys-16");
+    assert_int_equal(m.lvl.nkeys, 3);
+    assert_int_equal(hol_tile_dist0(m.lvl.chest), 5);
+    assert_int_equal(hol_campaign_mode_level("chess", 1, &m), HOL_EARG);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_distances),
         cmocka_unit_test(test_other_keys),
         cmocka_unit_test(test_bad_lines),
+        cmocka_unit_test(test_typed_errors),
+        cmocka_unit_test(test_named_level),
+        cmocka_unit_test(test_campaign),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -66,11 +66,13 @@ stage="$BUILD/quest"
 rm -rf "$stage"
 mkdir -p "$stage/apk/lib/arm64-v8a"
 
-# The native library: core, renderer, OpenXR layer (GLES binding) and the
-# NativeActivity shell, all compiled and tested on the desktop except the
-# shell.
+# The native library: core (with the session), renderer, the session's
+# POSIX sink (logs and recordings in the app's files directory), OpenXR
+# layer (GLES binding) and the NativeActivity shell, all compiled and tested
+# on the desktop except the shell.
 glue="$NDK/sources/android/native_app_glue"
 srcs=$(ls "$root"/core/*.c "$root"/render/*.c "$root"/platform/openxr/*.c \
+          "$root"/platform/file/hol_sink_posix.c \
           "$root"/platform/android/*.c "$glue"/android_native_app_glue.c 2>/dev/null)
 # shellcheck disable=SC2086
 "$cc" -std=c11 -O2 -g -fPIC -shared -D_DEFAULT_SOURCE -DHOL_GLES=1 \

@@ -249,7 +249,7 @@ static int play_prepare(play_ctx *c)
     }
     c->has_window = 1;
     hol_rec_meta meta;
-    play_meta_now(&meta, c->o.participant);
+    hol_sink_posix_meta(&meta, c->o.participant);
     st = play_session_open(c->cmd, &c->out, c->levels, c->nlevels, &meta, c->o.append, &c->s);
     if (st)
         return st;

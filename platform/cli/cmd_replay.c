@@ -135,6 +135,12 @@ static int replay_prepare(replay_ctx *c)
 {
     if (cli_require_folder(c->cmd, "--out-dir", c->out_dir))
         return CLI_EXIT_USAGE;
+    for (int k = 0; k < c->npng; k++) { /* every frame's file, before any work */
+        char path[4096];
+        snprintf(path, sizeof path, "%s/frame-%06ld.png", c->out_dir, c->pngs[k]);
+        if (cli_check_output(c->cmd, "--out-dir", path))
+            return CLI_EXIT_USAGE;
+    }
     int st = play_out_open(c->cmd, c->log_dir, NULL, &c->out);
     if (!st) {
         st = play_input_open(c->cmd, c->rec, 1, &c->input);

@@ -215,7 +215,7 @@ int cli_cmd_xr(int argc, char **argv)
         st = play_out_open(cmd, o.log_dir, o.rec, &out);
     if (!st) {
         hol_rec_meta meta;
-        play_meta_now(&meta, o.participant);
+        hol_sink_posix_meta(&meta, o.participant);
         st = play_session_open(cmd, &out, levels, nlevels, &meta, o.append, &s);
     }
     if (!st)

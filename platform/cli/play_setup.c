@@ -9,7 +9,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/random.h>
 #include <sys/stat.h>
 #include <time.h>
 #include <unistd.h>
@@ -183,27 +182,6 @@ void play_input_close(play_input *pi)
 
 /* ---- outputs -------------------------------------------------------------------- */
 
-/* FILE may be written: a regular file, or a new name in an existing folder. */
-static int play_check_output(const char *cmd, const char *opt, const char *path)
-{
-    struct stat st;
-    const char *slash = strrchr(path, '/');
-    char dir[4096];
-    snprintf(dir, sizeof dir, "%.*s", slash ? (int)(slash - path) : 1, slash ? path : ".");
-    if (slash == path)
-        snprintf(dir, sizeof dir, "/");
-    if (!path[0] || (slash && !slash[1]) || stat(dir, &st) || !S_ISDIR(st.st_mode)) {
-        cli_error(cmd, 0, "%s '%.200s' is not a file in an existing folder", opt, path);
-        return CLI_EXIT_USAGE;
-    }
-    if (!stat(path, &st) && !S_ISREG(st.st_mode)) {
-        cli_error(cmd, 0, "%s '%.200s' is %s, not a regular file", opt, path,
-                  S_ISDIR(st.st_mode) ? "a directory" : "a FIFO, socket or device");
-        return CLI_EXIT_USAGE;
-    }
-    return 0;
-}
-
 int play_out_open(const char *cmd, const char *log_dir, const char *rec_path, play_out *po)
 {
     memset(po, 0, sizeof *po);
@@ -216,7 +194,9 @@ int play_out_open(const char *cmd, const char *log_dir, const char *rec_path, pl
         po->has_log = 1;
     }
     if (rec_path) {
-        if (play_check_output(cmd, "--record", rec_path))
+        char live[4096];
+        snprintf(live, sizeof live, "%s.live", rec_path);
+        if (cli_check_output(cmd, "--record", rec_path) || cli_check_output(cmd, "--record", live))
             return CLI_EXIT_USAGE;
         const char *slash = strrchr(rec_path, '/');
         char dir[4096];
@@ -242,23 +222,6 @@ void play_out_close(play_out *po)
     if (po->has_rec)
         hol_sink_posix_fini(&po->rec);
     po->has_log = po->has_rec = 0;
-}
-
-void play_meta_now(hol_rec_meta *m, const char *participant)
-{
-    memset(m, 0, sizeof *m);
-    time_t now = time(NULL);
-    struct tm tm;
-    gmtime_r(&now, &tm);
-    strftime(m->start, sizeof m->start, "%Y-%m-%dT%H:%M:%SZ", &tm);
-    uint32_t r = 0;
-    if (getrandom(&r, sizeof r, GRND_NONBLOCK) != (ssize_t)sizeof r)
-        r = (uint32_t)getpid() * 2654435761u ^ (uint32_t)now;
-    char stamp[32];
-    strftime(stamp, sizeof stamp, "%Y%m%dT%H%M%SZ", &tm);
-    snprintf(m->session, sizeof m->session, "%s-%08x", stamp, (unsigned)r);
-    if (participant)
-        snprintf(m->participant, sizeof m->participant, "%s", participant);
 }
 
 int play_session_open(const char *cmd, play_out *po, const hol_level *levels, int nlevels,
@@ -303,7 +266,7 @@ void play_print_end(hol_session *s)
     const hol_app_view *v = hol_app_get_view(hol_session_app(s));
     static const char *const st[] = {"idle", "playing", "done", "quit"};
     char name[4 * HOL_LEVEL_NAME_MAX];
-    hol_text_escape(hol_session_level(s)->name, name, sizeof name);
+    cli_escape(hol_session_level(s)->name, name, sizeof name);
     printf("level %s %s steps %d optimum %d tile %s cell %d,%d\n", name,
            v->hud.timed_out ? "timeout" : st[v->state], v->hud.steps, v->hud.optimum,
            v->hud.address, v->user.col, v->user.row);

@@ -22,9 +22,6 @@
  *   regular file or a new name in an existing folder). play_session_open
  *   then creates the session on them; play_session_end finishes it (or
  *   aborts it: the attempt in play ends `aborted`) and frees it.
- * - play_meta_now fills a session's metadata from the clock: the start in
- *   UTC and the id START-XXXXXXXX (8 random hex digits), with the
- *   participant.
  * - play_print_end prints "level NAME STATE steps S optimum O tile A cell
  *   C,R" with NAME escaped for the terminal (core/hol_text.h).
  * - play_load_pad_script reads a scripted game controller (--gamepad-replay,
@@ -72,7 +69,6 @@ typedef struct play_out {
 
 int play_out_open(const char *cmd, const char *log_dir, const char *rec_path, play_out *po);
 void play_out_close(play_out *po);
-void play_meta_now(hol_rec_meta *m, const char *participant);
 int play_session_open(const char *cmd, play_out *po, const hol_level *levels, int nlevels,
                       const hol_rec_meta *meta, int append, hol_session **out);
 int play_session_end(const char *cmd, hol_session *s, int abort);

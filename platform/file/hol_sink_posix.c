@@ -10,7 +10,9 @@
 #include <fcntl.h>
 #include <stdio.h>
 #include <string.h>
+#include <sys/random.h>
 #include <sys/stat.h>
+#include <time.h>
 #include <unistd.h>
 
 static hol_err hol__why(hol_sink_posix *p, hol_err e)
@@ -221,4 +223,21 @@ hol_err hol_sink_posix_make_dir(const char *dir)
     if (errno != ENOENT || mkdir(dir, 0777))
         return HOL_EOPEN;
     return HOL_OK;
+}
+
+void hol_sink_posix_meta(hol_rec_meta *m, const char *participant)
+{
+    memset(m, 0, sizeof *m);
+    time_t now = time(NULL);
+    struct tm tm;
+    gmtime_r(&now, &tm);
+    strftime(m->start, sizeof m->start, "%Y-%m-%dT%H:%M:%SZ", &tm);
+    uint32_t r = 0;
+    if (getrandom(&r, sizeof r, GRND_NONBLOCK) != (ssize_t)sizeof r)
+        r = (uint32_t)getpid() * 2654435761u ^ (uint32_t)now;
+    char stamp[32];
+    strftime(stamp, sizeof stamp, "%Y%m%dT%H%M%SZ", &tm);
+    snprintf(m->session, sizeof m->session, "%s-%08x", stamp, (unsigned)r);
+    if (participant)
+        snprintf(m->participant, sizeof m->participant, "%s", participant);
 }

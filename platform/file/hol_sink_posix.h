@@ -17,6 +17,10 @@
  * - hol_sink_posix_fini closes what is still open (nothing is flushed or
  *   renamed). Plain POSIX: no allocation, no globals; one sink per
  *   thread.
+ * - hol_sink_posix_meta fills a session's metadata (core/hol_rec.h) from
+ *   this machine: the start from the clock, in UTC, the id
+ *   YYYYMMDDTHHMMSSZ-XXXXXXXX (8 random hex digits: sessions started in
+ *   the same second differ), the participant given (NULL: none).
  * - hol_sink_posix_make_dir makes the folder DIR when it is missing and its
  *   parent exists (`--log DIR`): HOL_OK when DIR is a folder afterwards,
  *   HOL_EOPEN (errno says why) when it is something else or cannot be
@@ -25,6 +29,7 @@
 #ifndef HOL_SINK_POSIX_H
 #define HOL_SINK_POSIX_H
 
+#include "../../core/hol_rec.h"
 #include "../../core/hol_sink.h"
 
 typedef struct hol_sink_posix {
@@ -37,5 +42,6 @@ typedef struct hol_sink_posix {
 hol_err hol_sink_posix_init(hol_sink_posix *p, const char *dir);
 void hol_sink_posix_fini(hol_sink_posix *p);
 hol_err hol_sink_posix_make_dir(const char *dir);
+void hol_sink_posix_meta(hol_rec_meta *m, const char *participant);
 
 #endif

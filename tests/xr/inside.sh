@@ -67,7 +67,7 @@ check "and the world did not move: one room step in all (steps log)" \
     '[ "$(grep -c ",N," "$out/logs/steps-001.csv")" = 1 ] && [ "$(wc -l <"$out/logs/steps-001.csv")" = 2 ]'
 # the input flags follow the session state: frames before FOCUSED (the
 # session begins SYNCHRONIZED) lack HOL_INPUT_FOCUSED (8): the app pauses
-awk '!/^(L |level |end$|holonomy-rec)/ { f = substr($2, length($2), 1); v = index("0123456789abcdef", f) - 1;
+awk '!/^(L |level |end$|holonomy-rec|session |participant |start |version )/ { f = substr($2, length($2), 1); v = index("0123456789abcdef", f) - 1;
      if (v % 16 >= 8) foc++; else unf++ } END { print unf + 0, foc + 0 }' "$out/session.rec" >"$out/focus"
 read -r unf foc <"$out/focus"
 check "frames before FOCUSED recorded without focus ($unf unfocused, $foc focused)" \

@@ -38,7 +38,7 @@ chroot "$CHROOT" sh -c 'cd /src && timeout 600 sh tests/xr/inside.sh build/xr/ho
 # tolerance (tests/xr/png_diff.c: the render goldens').
 out="$CHROOT/tmp/xr-test"
 args=$(sed -n 's/^xr: check eye 0 render //p' "$out/xr.out")
-walk=$(awk -F, 'NR > 1 { printf "%s", $7 }' "$out/logs/steps-001.csv" 2>/dev/null)
+walk=$(awk -F, 'NR > 1 { printf "%s", $8 }' "$out/logs/steps-001.csv" 2>/dev/null)
 seed=$(sed -n 's/^seed //p' "$out/level.txt")
 if [ -n "$args" ] && [ -n "${HOLONOMY:-}" ] && [ -n "${PNG_DIFF:-}" ] &&
    # shellcheck disable=SC2086
