@@ -1,0 +1,791 @@
+/* test_session.c - the session every platform runs (core/hol_session.h)
+ * against a model of a sink: a folder in memory whose streams keep only
+ * what was flushed when the "process" is killed, so a kill is
+ * hol_session_destroy without finish, then every stream cut to its
+ * flushed bytes. And the POSIX sink (platform/file/hol_sink_posix.h) on a
+ * temporary folder.
+ *
+ * Checked: a folder holding logs is refused without append, numbered on
+ * with it; rows reach a flush within a second of input time; a killed
+ * attempt is finished by the next session as `killed` (rows cut to whole
+ * lines, no duplicate row when the kill came after its summary row); an
+ * attempt's files appear with its row; head rows fall on exact 10 Hz
+ * times, interpolated between frames against a linear walk; visible cues;
+ * aborted; the recording reads back to the same levels and replays to the
+ * same logs byte for byte; no allocation after create.
+ */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cmocka.h>
+
+#include "../core/hol_input_io.h"
+#include "../core/hol_level.h"
+#include "../core/hol_nav.h"
+#include "../core/hol_rec.h"
+#include "../core/hol_session.h"
+#include "../platform/file/hol_sink_posix.h"
+#include "count_alloc.h"
+
+/* ---- a folder in memory ------------------------------------------------------ */
+
+#define MEM_MAX 64
+
+typedef struct mem_stream {
+    char name[HOL_SINK_NAME_MAX];
+    char *data;
+    size_t len, cap, kept; /* kept: bytes as of the last flush (or close) */
+    int used;
+} mem_stream;
+
+typedef struct mem_sink {
+    hol_sink sink;
+    mem_stream s[MEM_MAX];
+    int open[HOL_SINK_MAX_OPEN]; /* stream index + 1, 0: free */
+    int fail_rename;             /* > 0: the n-th rename from now fails */
+    long flushes;
+} mem_sink;
+
+static mem_stream *mem_find(mem_sink *m, const char *name)
+{
+    for (int i = 0; i < MEM_MAX; i++)
+        if (m->s[i].used && !strcmp(m->s[i].name, name))
+            return &m->s[i];
+    return NULL;
+}
+
+static mem_stream *mem_make(mem_sink *m, const char *name)
+{
+    mem_stream *s = mem_find(m, name);
+    for (int i = 0; !s && i < MEM_MAX; i++)
+        if (!m->s[i].used) {
+            s = &m->s[i];
+            memset(s, 0, sizeof *s);
+            s->used = 1;
+            snprintf(s->name, sizeof s->name, "%s", name);
+        }
+    assert_non_null(s);
+    return s;
+}
+
+static hol_err mem_open(void *user, const char *name, int append, int *out_h)
+{
+    mem_sink *m = user;
+    mem_stream *s = mem_make(m, name);
+    if (!append)
+        s->len = s->kept = 0;
+    for (int h = 0; h < HOL_SINK_MAX_OPEN; h++)
+        if (!m->open[h]) {
+            m->open[h] = (int)(s - m->s) + 1;
+            *out_h = h;
+            return HOL_OK;
+        }
+    fail_msg("more than %d streams open", HOL_SINK_MAX_OPEN);
+    return HOL_EIO;
+}
+
+static hol_err mem_write(void *user, int h, const void *data, size_t n)
+{
+    mem_sink *m = user;
+    assert_true(h >= 0 && h < HOL_SINK_MAX_OPEN && m->open[h]);
+    mem_stream *s = &m->s[m->open[h] - 1];
+    if (s->len + n > s->cap) {
+        s->cap = (s->len + n) * 2 + 64;
+        s->data = realloc(s->data, s->cap);
+        assert_non_null(s->data);
+    }
+    memcpy(s->data + s->len, data, n);
+    s->len += n;
+    return HOL_OK;
+}
+
+static hol_err mem_flush(void *user, int h, int durable)
+{
+    mem_sink *m = user;
+    (void)durable;
+    assert_true(m->open[h]);
+    m->s[m->open[h] - 1].kept = m->s[m->open[h] - 1].len;
+    m->flushes++;
+    return HOL_OK;
+}
+
+static hol_err mem_close(void *user, int h)
+{
+    mem_sink *m = user;
+    assert_true(m->open[h]);
+    m->open[h] = 0;
+    return HOL_OK;
+}
+
+static int mem_is_open(mem_sink *m, const mem_stream *s)
+{
+    for (int h = 0; h < HOL_SINK_MAX_OPEN; h++)
+        if (m->open[h] == (int)(s - m->s) + 1)
+            return 1;
+    return 0;
+}
+
+static hol_err mem_rename(void *user, const char *from, const char *to)
+{
+    mem_sink *m = user;
+    if (m->fail_rename > 0 && --m->fail_rename == 0)
+        return HOL_EIO;
+    mem_stream *s = mem_find(m, from), *t = mem_find(m, to);
+    assert_non_null(s);
+    assert_false(mem_is_open(m, s));
+    if (t) {
+        free(t->data);
+        t->used = 0;
+    }
+    snprintf(s->name, sizeof s->name, "%s", to);
+    return HOL_OK;
+}
+
+static hol_err mem_remove(void *user, const char *name)
+{
+    mem_stream *s = mem_find(user, name);
+    if (s) {
+        free(s->data);
+        memset(s, 0, sizeof *s);
+    }
+    return HOL_OK;
+}
+
+static hol_err mem_read(void *user, const char *name, uint64_t off, void *buf, size_t n,
+                        size_t *out_got)
+{
+    mem_stream *s = mem_find(user, name);
+    *out_got = 0;
+    if (!s)
+        return HOL_EOPEN;
+    if (off < s->len) {
+        size_t k = s->len - (size_t)off < n ? s->len - (size_t)off : n;
+        memcpy(buf, s->data + off, k);
+        *out_got = k;
+    }
+    return HOL_OK;
+}
+
+static hol_err mem_list(void *user, void (*fn)(void *ctx, const char *name), void *ctx)
+{
+    mem_sink *m = user;
+    for (int i = 0; i < MEM_MAX; i++)
+        if (m->s[i].used)
+            fn(ctx, m->s[i].name);
+    return HOL_OK;
+}
+
+static void mem_init(mem_sink *m)
+{
+    memset(m, 0, sizeof *m);
+    m->sink = (hol_sink){m, mem_open, mem_write, mem_flush, mem_close, mem_rename, mem_remove,
+                         mem_read, mem_list, NULL};
+}
+
+/* A kill -9: what was not flushed is gone, open handles with it. */
+static void mem_kill(mem_sink *m)
+{
+    for (int i = 0; i < MEM_MAX; i++)
+        m->s[i].len = m->s[i].kept;
+    memset(m->open, 0, sizeof m->open);
+}
+
+static void mem_free(mem_sink *m)
+{
+    for (int i = 0; i < MEM_MAX; i++)
+        free(m->s[i].data);
+    memset(m, 0, sizeof *m);
+}
+
+/* The stream's text (NUL-terminated copy in a static buffer), or NULL. */
+static const char *mem_text(mem_sink *m, const char *name)
+{
+    static char buf[1 << 20];
+    mem_stream *s = mem_find(m, name);
+    if (!s)
+        return NULL;
+    assert_true(s->len < sizeof buf);
+    memcpy(buf, s->data, s->len);
+    buf[s->len] = 0;
+    return buf;
+}
+
+static int count_lines(const char *t)
+{
+    int n = 0;
+    for (; t && *t; t++)
+        n += *t == '\n';
+    return n;
+}
+
+/* ---- sessions --------------------------------------------------------------------- */
+
+static hol_nav *g_nav;
+static hol_level g_flag; /* mode flag, seed 5, flag Wrf: 8 steps by WNESWNEE */
+static const char *const g_walk = "WNESWNEE";
+
+static int setup(void **state)
+{
+    (void)state;
+    hol_nav_desc nd;
+    memset(&nd, 0, sizeof nd);
+    const char *t = "mode flag\nseed 5\nflag Wrf\n";
+    return hol_nav_create(&nd, &g_nav) != HOL_OK ||
+           hol_level_make("lv", 2, t, strlen(t), &g_flag, NULL) != HOL_OK;
+}
+
+static int teardown(void **state)
+{
+    (void)state;
+    hol_nav_destroy(g_nav);
+    return 0;
+}
+
+static hol_session *make(const hol_level *levels, int n, mem_sink *log, mem_sink *rec, int append)
+{
+    hol_session_desc d;
+    memset(&d, 0, sizeof d);
+    d.levels = levels;
+    d.nlevels = n;
+    d.app.nav = g_nav;
+    d.log = log ? &log->sink : NULL;
+    d.append = append;
+    d.rec = rec ? &rec->sink : NULL;
+    d.rec_name = "s.rec";
+    snprintf(d.meta.session, sizeof d.meta.session, "20260101T000000Z-00000001");
+    snprintf(d.meta.start, sizeof d.meta.start, "2026-01-01T00:00:00Z");
+    snprintf(d.meta.participant, sizeof d.meta.participant, "P1");
+    hol_session *s = NULL;
+    char msg[256];
+    hol_err e = hol_session_create(&d, &s, msg, sizeof msg);
+    if (e)
+        fail_msg("create: %s", msg);
+    return s;
+}
+
+/* A tracked head standing at cell (c, r)'s centre at time t. */
+static hol_input head_at(double t, double x, double z)
+{
+    hol_input in;
+    memset(&in, 0, sizeof in);
+    in.time_s = t;
+    in.flags = HOL_INPUT_FOCUSED | HOL_INPUT_HEAD_VALID;
+    in.head.pos[0] = (float)x;
+    in.head.pos[1] = 1.6f;
+    in.head.pos[2] = (float)z;
+    in.head.quat[3] = 1;
+    return in;
+}
+
+/* Step the walk from cell (1,1), a step every 0.25 s from t0; the record
+ * of every frame is kept in ins (when not NULL). Returns the last time. */
+static double walk(hol_session *s, const char *w, double t0, hol_input *ins, int *nin)
+{
+    int c = 1, r = 1, over = 0;
+    double t = t0;
+    hol_input in = head_at(t, c + 0.5, r + 0.5);
+    assert_int_equal(hol_session_step(s, &in, &over), HOL_OK);
+    if (ins)
+        ins[(*nin)++] = in;
+    for (const char *p = w; *p; p++) {
+        c += *p == 'E' ? 1 : *p == 'W' ? -1 : 0;
+        r += *p == 'S' ? 1 : *p == 'N' ? -1 : 0;
+        t += 0.25;
+        in = head_at(t, c + 0.5, r + 0.5);
+        assert_int_equal(hol_session_step(s, &in, &over), HOL_OK);
+        if (ins)
+            ins[(*nin)++] = in;
+    }
+    return t;
+}
+
+/* ---- the tests ---------------------------------------------------------------------- */
+
+static void test_folder_refused_or_appended(void **state)
+{
+    (void)state;
+    static mem_sink m;
+    mem_init(&m);
+    mem_make(&m, "steps-007.csv");
+    mem_make(&m, "notes.txt");
+    hol_session_desc d;
+    memset(&d, 0, sizeof d);
+    d.levels = &g_flag;
+    d.nlevels = 1;
+    d.app.nav = g_nav;
+    d.log = &m.sink;
+    hol_session *s = NULL;
+    char msg[256];
+    assert_int_equal(hol_session_create(&d, &s, msg, sizeof msg), HOL_EARG);
+    assert_non_null(strstr(msg, "holds earlier logs"));
+    assert_null(mem_find(&m, "summary.csv")); /* nothing written */
+    /* append: numbered on from the folder's highest attempt */
+    s = make(&g_flag, 1, &m, NULL, 1);
+    walk(s, g_walk, 0, NULL, NULL);
+    assert_int_equal(hol_session_finish(s), HOL_OK);
+    hol_session_destroy(s);
+    assert_non_null(mem_find(&m, "steps-008.csv"));
+    assert_non_null(mem_find(&m, "head-008.csv"));
+    const char *sum = mem_text(&m, "summary.csv");
+    assert_non_null(strstr(sum, HOL_SESSION_SUMMARY_COLUMNS "\n"));
+    assert_non_null(strstr(sum, ",8,lv,"));
+    assert_non_null(strstr(sum, ",done\n"));
+    /* other columns in summary.csv: refused even with append */
+    mem_stream *x = mem_find(&m, "summary.csv");
+    x->data[0] = 'X';
+    d.append = 1;
+    assert_int_equal(hol_session_create(&d, &s, msg, sizeof msg), HOL_EVERSION);
+    mem_free(&m);
+}
+
+/* Every row made at input time T has been flushed by input time T + 1 s. */
+static void test_rows_flushed_each_second(void **state)
+{
+    (void)state;
+    static mem_sink m;
+    mem_init(&m);
+    hol_session *s = make(&g_flag, 1, &m, NULL, 0);
+    int over = 0;
+    for (int k = 0; k <= 600; k++) { /* 10 s at 60 Hz, walking east and back */
+        double t = k / 60.0, x = 1.5 + 0.9 * sin(t);
+        hol_input in = head_at(t, x, 1.5);
+        assert_int_equal(hol_session_step(s, &in, &over), HOL_OK);
+        mem_stream *h = mem_find(&m, "head-001.csv.live");
+        assert_non_null(h);
+        int kept = 0;
+        for (size_t i = 0; i < h->kept; i++)
+            kept += h->data[i] == '\n';
+        /* the header and a row per 0.1 s up to t - 1 at least */
+        if (t >= 1.0)
+            assert_true(kept - 1 >= (int)((t - 1.0) * 10) + 1);
+    }
+    hol_session_destroy(s);
+    mem_free(&m);
+}
+
+static void kill_midway(mem_sink *m)
+{
+    hol_session *s = make(&g_flag, 1, m, NULL, 0);
+    int over = 0;
+    double t = walk(s, g_walk, 0, NULL, NULL); /* attempt 1: done */
+    hol_input in = head_at(t + 0.5, 2.5, 1.5);
+    in.pressed = HOL_BTN_CONFIRM; /* the end screen: the same level again? no: over */
+    assert_int_equal(hol_session_step(s, &in, &over), HOL_OK);
+    assert_int_equal(over, 1);
+    assert_int_equal(hol_session_finish(s), HOL_OK);
+    hol_session_destroy(s);
+    /* a second session: attempt 2 walks 3 steps in 3 s, then is killed */
+    s = make(&g_flag, 1, m, NULL, 1);
+    t = 10;
+    const char *w = "WNE";
+    int c = 1, r = 1;
+    for (int k = 0; k <= 300; k++) {
+        double tt = t + k / 100.0;
+        int i = k / 100;
+        if (k % 100 == 0 && k && w[i - 1]) {
+            c += w[i - 1] == 'E' ? 1 : w[i - 1] == 'W' ? -1 : 0;
+            r += w[i - 1] == 'N' ? -1 : 0;
+        }
+        hol_input hi = head_at(tt, c + 0.5, r + 0.5);
+        assert_int_equal(hol_session_step(s, &hi, &over), HOL_OK);
+    }
+    hol_session_destroy(s); /* closes; writes nothing */
+    mem_kill(m);
+}
+
+static void test_killed_attempt_recovered(void **state)
+{
+    (void)state;
+    static mem_sink m;
+    mem_init(&m);
+    kill_midway(&m);
+    /* after the kill: attempt 1 whole, attempt 2 only as live files */
+    assert_non_null(mem_find(&m, "steps-001.csv"));
+    assert_non_null(mem_find(&m, "head-001.csv"));
+    assert_null(mem_find(&m, "steps-002.csv"));
+    assert_non_null(mem_find(&m, "attempt-002.live"));
+    const char *live = mem_text(&m, "steps-002.csv.live");
+    assert_non_null(live);
+    int kept_steps = count_lines(live) - 1;
+    assert_true(kept_steps >= 2); /* steps at 11 s and 12 s: flushed by 13 s */
+    live = mem_text(&m, "head-002.csv.live");
+    int kept_head = count_lines(live) - 1;
+    assert_true(kept_head >= 20); /* at least 2 s of the 3 s */
+    /* a row cut by the kill: its bytes dropped by the recovery */
+    mem_stream *h = mem_find(&m, "head-002.csv.live");
+    mem_open(&m, "head-002.csv.live", 1, &(int){0});
+    mem_write(&m, 0, "20260101T000000Z-00000001,2,lv,9.9,9.", 36);
+    m.open[0] = 0;
+    h->kept = h->len;
+    /* the next session (append) finishes it as killed */
+    hol_session *s = make(&g_flag, 1, &m, NULL, 1);
+    assert_int_equal(hol_session_recovered(s), 1);
+    assert_null(mem_find(&m, "steps-002.csv.live"));
+    assert_null(mem_find(&m, "attempt-002.live"));
+    assert_int_equal(count_lines(mem_text(&m, "steps-002.csv")) - 1, kept_steps);
+    const char *hd = mem_text(&m, "head-002.csv");
+    assert_int_equal(count_lines(hd) - 1, kept_head);
+    assert_int_equal(hd[strlen(hd) - 1], '\n');
+    const char *sum = mem_text(&m, "summary.csv");
+    char want[64];
+    snprintf(want, sizeof want, ",2,lv,");
+    const char *row = strstr(sum, want);
+    assert_non_null(row);
+    assert_non_null(strstr(row, ",killed\n"));
+    char steps[32];
+    snprintf(steps, sizeof steps, ",%d,8,", kept_steps);
+    assert_non_null(strstr(row, steps));
+    /* and it goes on at attempt 3 */
+    walk(s, "W", 0, NULL, NULL);
+    assert_int_equal(hol_session_finish(s), HOL_OK);
+    hol_session_destroy(s);
+    assert_non_null(mem_find(&m, "steps-003.csv"));
+    assert_int_equal(count_lines(mem_text(&m, "summary.csv")), 4);
+    mem_free(&m);
+}
+
+/* A kill between the summary row and the renames: the next session renames
+ * and adds no second row. */
+static void test_no_double_row(void **state)
+{
+    (void)state;
+    static mem_sink m;
+    mem_init(&m);
+    hol_session *s = make(&g_flag, 1, &m, NULL, 0);
+    m.fail_rename = 1; /* the first rename (steps live -> steps) fails */
+    int over = 0;
+    int c = 1, r = 1;
+    double t = 0;
+    hol_input in = head_at(t, c + 0.5, r + 0.5);
+    assert_int_equal(hol_session_step(s, &in, &over), HOL_OK);
+    for (const char *p = g_walk; *p; p++) {
+        c += *p == 'E' ? 1 : *p == 'W' ? -1 : 0;
+        r += *p == 'S' ? 1 : *p == 'N' ? -1 : 0;
+        in = head_at(t += 0.25, c + 0.5, r + 0.5);
+        hol_err e = hol_session_step(s, &in, &over);
+        assert_true(e == HOL_OK || e == HOL_EIO);
+    }
+    assert_int_equal(hol_session_finish(s), HOL_EIO);
+    assert_non_null(strstr(hol_session_message(s), "rename"));
+    hol_session_destroy(s);
+    mem_kill(&m);
+    assert_int_equal(count_lines(mem_text(&m, "summary.csv")), 2);
+    assert_null(mem_find(&m, "steps-001.csv"));
+    s = make(&g_flag, 1, &m, NULL, 1);
+    assert_int_equal(hol_session_recovered(s), 1);
+    hol_session_destroy(s);
+    assert_int_equal(count_lines(mem_text(&m, "summary.csv")), 2);
+    assert_non_null(mem_find(&m, "steps-001.csv"));
+    assert_non_null(mem_find(&m, "head-001.csv"));
+    assert_null(mem_find(&m, "attempt-001.live"));
+    mem_free(&m);
+}
+
+/* Head rows at k/10 s exactly, interpolated between irregular frames of a
+ * head moving east at 0.5 m/s (x = 1.5 + 0.5 t): x, frame_t. */
+static void test_head_rows_interpolated(void **state)
+{
+    (void)state;
+    static mem_sink m;
+    mem_init(&m);
+    hol_session *s = make(&g_flag, 1, &m, NULL, 0);
+    static const double ts[] = {0, 0.07, 0.31, 0.33, 0.52, 0.9, 1.0, 1.27};
+    int over = 0;
+    for (size_t i = 0; i < sizeof ts / sizeof ts[0]; i++) {
+        hol_input in = head_at(ts[i], 1.5 + 0.5 * ts[i], 1.5);
+        assert_int_equal(hol_session_step(s, &in, &over), HOL_OK);
+    }
+    assert_int_equal(hol_session_finish(s), HOL_OK);
+    hol_session_destroy(s);
+    const char *hd = mem_text(&m, "head-001.csv");
+    assert_non_null(hd);
+    assert_int_equal(count_lines(hd) - 1, 13); /* 0.0 .. 1.2 */
+    const char *p = strchr(hd, '\n') + 1;
+    for (int k = 0; k <= 12; k++) {
+        double t, ft, x;
+        char tail[256];
+        assert_int_equal(sscanf(p, "20260101T000000Z-00000001,1,lv,%lf,%lf,%lf,%255s", &t, &ft,
+                                &x, tail),
+                         4);
+        assert_true(t == k / 10.0 || fabs(t - k / 10.0) < 1e-9);
+        double later = 0;
+        for (size_t i = 0; i < sizeof ts / sizeof ts[0]; i++)
+            if (ts[i] >= k / 10.0 - 1e-12) {
+                later = ts[i];
+                break;
+            }
+        assert_true(fabs(ft - later) < 1e-4);
+        assert_true(fabs(x - (1.5 + 0.05 * k)) < 2e-4);
+        p = strchr(p, '\n') + 1;
+    }
+    mem_free(&m);
+}
+
+/* Cues drawn, not only in force. */
+static void test_visible_cues(void **state)
+{
+    (void)state;
+    hol_app_view v;
+    memset(&v, 0, sizeof v);
+    v.user = hol_room_start();
+    v.map.cues = HOL_CUE_ALL;
+    v.map.place = HOL_MINIMAP_HUD;
+    assert_int_equal(hol_session_cues_visible(&v), 0); /* no objective left */
+    hol_tile near, far;
+    assert_int_equal(hol_tile_parse("Nf", -1, &near), HOL_OK);
+    assert_int_equal(hol_tile_parse("Nfffff", -1, &far), HOL_OK);
+    v.map.nobjectives = 1;
+    v.map.objectives[0] = near;
+    assert_int_equal(hol_session_cues_visible(&v), HOL_CUE_HOT_COLD | HOL_CUE_POLES);
+    v.map.objectives[0] = far; /* beyond the minimap's 4 tiles: its arrow */
+    assert_int_equal(hol_session_cues_visible(&v),
+                     HOL_CUE_HOT_COLD | HOL_CUE_POLES | HOL_CUE_ARROW);
+    v.map.npath = 3;
+    assert_int_equal(hol_session_cues_visible(&v), HOL_CUE_ALL);
+    v.map.place = HOL_MINIMAP_OFF; /* in force, not shown */
+    assert_int_equal(hol_session_cues_visible(&v), HOL_CUE_POLES);
+    v.map.cues = HOL_CUE_PATH;
+    v.map.place = HOL_MINIMAP_HAND;
+    assert_int_equal(hol_session_cues_visible(&v), HOL_CUE_PATH);
+    /* in the rows: a level with `cues none` shows none */
+    static hol_level none;
+    const char *t = "mode flag\nseed 5\nflag Wrf\ncues none\n";
+    assert_int_equal(hol_level_make("n", 1, t, strlen(t), &none, NULL), HOL_OK);
+    static mem_sink m;
+    mem_init(&m);
+    hol_session *s = make(&g_flag, 1, &m, NULL, 0);
+    walk(s, "W", 0, NULL, NULL);
+    assert_int_equal(hol_session_finish(s), HOL_OK);
+    hol_session_destroy(s);
+    const char *rows = mem_text(&m, "steps-001.csv");
+    if (!strstr(rows, ",15,5\n"))
+        fail_msg("%s", rows); /* in force all; drawn hot-cold, poles */
+    mem_free(&m);
+    mem_init(&m);
+    s = make(&none, 1, &m, NULL, 0);
+    walk(s, "W", 0, NULL, NULL);
+    assert_int_equal(hol_session_finish(s), HOL_OK);
+    hol_session_destroy(s);
+    rows = mem_text(&m, "steps-001.csv");
+    assert_non_null(strstr(rows, ",0,0\n"));
+    mem_free(&m);
+}
+
+/* Aborted: the attempt in play ends `aborted`, the files are renamed. */
+static void test_abort(void **state)
+{
+    (void)state;
+    static mem_sink m, r;
+    mem_init(&m);
+    mem_init(&r);
+    hol_session *s = make(&g_flag, 1, &m, &r, 0);
+    walk(s, "WN", 0, NULL, NULL);
+    assert_non_null(mem_find(&r, "s.rec.live"));
+    assert_int_equal(hol_session_abort(s), HOL_OK);
+    assert_int_equal(hol_session_abort(s), HOL_OK); /* once */
+    hol_session_destroy(s);
+    assert_non_null(strstr(mem_text(&m, "summary.csv"), ",2,8,0.5000,aborted\n"));
+    assert_non_null(mem_find(&m, "steps-001.csv"));
+    assert_null(mem_find(&r, "s.rec.live"));
+    assert_non_null(mem_find(&r, "s.rec"));
+    /* a killed session's recording in the way: refused at create */
+    mem_make(&r, "s.rec.live");
+    hol_session_desc d;
+    memset(&d, 0, sizeof d);
+    d.levels = &g_flag;
+    d.nlevels = 1;
+    d.app.nav = g_nav;
+    d.rec = &r.sink;
+    d.rec_name = "s.rec";
+    snprintf(d.meta.session, sizeof d.meta.session, "x");
+    snprintf(d.meta.start, sizeof d.meta.start, "2026-01-01T00:00:00Z");
+    char msg[256];
+    assert_int_equal(hol_session_create(&d, &s, msg, sizeof msg), HOL_EARG);
+    assert_non_null(strstr(msg, "did not end"));
+    mem_free(&m);
+    mem_free(&r);
+}
+
+/* The recording reads back to the same levels and metadata, and its input
+ * lines replayed through a new session give the same logs, byte for byte. */
+static void test_recording_replays(void **state)
+{
+    (void)state;
+    static mem_sink m1, m2, r;
+    static hol_input ins[64];
+    int nin = 0;
+    mem_init(&m1);
+    mem_init(&m2);
+    mem_init(&r);
+    hol_session *s = make(&g_flag, 1, &m1, &r, 0);
+    walk(s, "SN", 0, ins, &nin);
+    hol_input rs = head_at(1, 1.5, 1.5);
+    rs.pressed = HOL_BTN_RESTART;
+    int over;
+    assert_int_equal(hol_session_step(s, &rs, &over), HOL_OK);
+    walk(s, g_walk, 2, NULL, NULL);
+    assert_int_equal(hol_session_finish(s), HOL_OK);
+    hol_session_destroy(s);
+    /* read it back a line at a time */
+    const char *rec = mem_text(&r, "s.rec");
+    assert_non_null(rec);
+    static char copy[1 << 16];
+    snprintf(copy, sizeof copy, "%s", rec);
+    static hol_level levels[HOL_REC_MAX_LEVELS];
+    static hol_rec_reader rd;
+    hol_rec_reader_init(&rd, levels);
+    char *line = copy, *nl;
+    int done = 0;
+    while (!done && (nl = strchr(line, '\n'))) {
+        *nl = 0;
+        assert_int_equal(hol_rec_read_line(&rd, line, strlen(line), &done), HOL_OK);
+        if (!done)
+            line = nl + 1;
+    }
+    assert_int_equal(rd.nlevels, 1);
+    assert_int_equal(rd.version, 2);
+    assert_string_equal(rd.meta.participant, "P1");
+    assert_string_equal(levels[0].text, g_flag.text);
+    assert_memory_equal(levels[0].sha256, g_flag.sha256, 32);
+    /* replay: the same session id and start from the recording */
+    hol_session_desc d;
+    memset(&d, 0, sizeof d);
+    d.levels = levels;
+    d.nlevels = rd.nlevels;
+    d.app.nav = g_nav;
+    d.log = &m2.sink;
+    d.meta = rd.meta;
+    char msg[256];
+    assert_int_equal(hol_session_create(&d, &s, msg, sizeof msg), HOL_OK);
+    for (;;) {
+        hol_input in;
+        assert_int_equal(hol_input_parse(line, strlen(line), &in, NULL), HOL_OK);
+        assert_int_equal(hol_session_step(s, &in, &over), HOL_OK);
+        line += strlen(line) + 1;
+        if (!*line)
+            break;
+        nl = strchr(line, '\n');
+        *nl = 0;
+    }
+    assert_int_equal(hol_session_finish(s), HOL_OK);
+    hol_session_destroy(s);
+    static const char *const files[] = {"summary.csv", "steps-001.csv", "head-001.csv",
+                                        "steps-002.csv", "head-002.csv"};
+    for (int i = 0; i < 5; i++) {
+        mem_stream *a = mem_find(&m1, files[i]), *b = mem_find(&m2, files[i]);
+        assert_non_null(a);
+        assert_non_null(b);
+        assert_int_equal(a->len, b->len);
+        assert_memory_equal(a->data, b->data, a->len);
+    }
+    assert_non_null(strstr(mem_text(&m1, "summary.csv"), ",restart\n"));
+    mem_free(&m1);
+    mem_free(&m2);
+    mem_free(&r);
+}
+
+/* Every allocation at create (the session's and the app's hooks); none in
+ * a thousand frames with logs and a recording. */
+static void test_no_allocation_after_create(void **state)
+{
+    (void)state;
+    static mem_sink m, r;
+    mem_init(&m);
+    mem_init(&r);
+    hol_session_desc d;
+    memset(&d, 0, sizeof d);
+    d.levels = &g_flag;
+    d.nlevels = 1;
+    d.app.nav = g_nav;
+    d.app.alloc = count_alloc_hooks();
+    d.alloc = count_alloc_hooks();
+    d.log = &m.sink;
+    d.rec = &r.sink;
+    d.rec_name = "a.rec";
+    snprintf(d.meta.session, sizeof d.meta.session, "x");
+    snprintf(d.meta.start, sizeof d.meta.start, "2026-01-01T00:00:00Z");
+    hol_session *s = NULL;
+    char msg[256];
+    assert_int_equal(hol_session_create(&d, &s, msg, sizeof msg), HOL_OK);
+    long before = count_allocs;
+    int over;
+    for (int k = 0; k < 1000; k++) {
+        hol_input in = head_at(k / 60.0, 1.5 + 0.9 * sin(k / 60.0), 1.5);
+        assert_int_equal(hol_session_step(s, &in, &over), HOL_OK);
+    }
+    assert_int_equal(count_allocs, before);
+    assert_int_equal(hol_session_finish(s), HOL_OK);
+    hol_session_destroy(s);
+    assert_int_equal(count_allocs, count_frees);
+    mem_free(&m);
+    mem_free(&r);
+}
+
+/* The POSIX sink on a temporary folder: the sink contract's calls, a FIFO
+ * refused without blocking, the folder made when its parent exists. */
+static void test_posix_sink(void **state)
+{
+    (void)state;
+    char dir[] = "/tmp/holonomy-sink-XXXXXX", path[256];
+    assert_non_null(mkdtemp(dir));
+    snprintf(path, sizeof path, "%s/logs", dir);
+    assert_int_equal(hol_sink_posix_make_dir(path), HOL_OK);
+    assert_int_equal(hol_sink_posix_make_dir(path), HOL_OK);
+    hol_sink_posix p;
+    assert_int_equal(hol_sink_posix_init(&p, path), HOL_OK);
+    hol_sink *k = &p.sink;
+    int h;
+    assert_int_equal(k->open(k->user, "a.txt", 0, &h), HOL_OK);
+    assert_int_equal(k->write(k->user, h, "hello\n", 6), HOL_OK);
+    assert_int_equal(k->flush(k->user, h, 1), HOL_OK);
+    assert_int_equal(k->close(k->user, h), HOL_OK);
+    assert_int_equal(k->open(k->user, "a.txt", 1, &h), HOL_OK);
+    assert_int_equal(k->write(k->user, h, "more\n", 5), HOL_OK);
+    assert_int_equal(k->close(k->user, h), HOL_OK);
+    char buf[32];
+    size_t got;
+    assert_int_equal(k->read(k->user, "a.txt", 6, buf, sizeof buf, &got), HOL_OK);
+    assert_int_equal(got, 5);
+    assert_memory_equal(buf, "more\n", 5);
+    assert_int_equal(k->rename(k->user, "a.txt", "b.txt"), HOL_OK);
+    assert_int_equal(k->read(k->user, "a.txt", 0, buf, sizeof buf, &got), HOL_EOPEN);
+    assert_int_equal(k->remove(k->user, "b.txt"), HOL_OK);
+    assert_int_equal(k->remove(k->user, "b.txt"), HOL_OK);
+    char fifo[300];
+    snprintf(fifo, sizeof fifo, "%s/f", path);
+    assert_int_equal(mkfifo(fifo, 0600), 0);
+    assert_int_equal(k->open(k->user, "f", 0, &h), HOL_EOPEN);
+    assert_int_equal(k->read(k->user, "f", 0, buf, 1, &got), HOL_EIO);
+    assert_non_null(k->why(k->user));
+    hol_sink_posix_fini(&p);
+    unlink(fifo);
+    rmdir(path);
+    snprintf(path, sizeof path, "%s/no/such", dir);
+    assert_int_equal(hol_sink_posix_make_dir(path), HOL_EOPEN);
+    rmdir(dir);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_folder_refused_or_appended),
+        cmocka_unit_test(test_rows_flushed_each_second),
+        cmocka_unit_test(test_killed_attempt_recovered),
+        cmocka_unit_test(test_no_double_row),
+        cmocka_unit_test(test_head_rows_interpolated),
+        cmocka_unit_test(test_visible_cues),
+        cmocka_unit_test(test_abort),
+        cmocka_unit_test(test_recording_replays),
+        cmocka_unit_test(test_no_allocation_after_create),
+        cmocka_unit_test(test_posix_sink),
+    };
+    return cmocka_run_group_tests(tests, setup, teardown);
+}
