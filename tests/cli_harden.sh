@@ -85,6 +85,12 @@ run "world --save plain" 0 "$H" world --seed 3 --quiet --save plain
 run "world --save lplain" 0 "$H" world --seed 3 --quiet --save lplain
 run "render --out new" 0 "$H" render --bare --size 8x8 --out new.png --tile-ids ids.txt
 [ -s new.png ] && [ -s ids.txt ] && ok || bad "render wrote nothing"
+# one file for two outputs: the second would replace the first
+run "render --out F --tile-ids F" 2 "$H" render --bare --size 8x8 --out same --tile-ids same
+one_line "render --out F --tile-ids F" "name the same file"
+ln -s new.png lnew
+run "render --out F --tile-ids link to F" 2 "$H" render --bare --size 8x8 --out new.png --tile-ids lnew
+[ ! -e same ] && ok || bad "render --out F --tile-ids F wrote F"
 # a folder this user cannot write in is refused at the start too (as root:
 # run as nobody; the copy of the binary is theirs to run)
 mkdir ro && chmod 555 ro && chmod 755 "$T" . && cp "$H" hcopy && chmod 755 hcopy

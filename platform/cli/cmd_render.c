@@ -449,6 +449,13 @@ static int check_opts(const char *cmd, render_opts *o)
         o->frames = 0; /* until the window is closed (or the key script ends) */
     if (cli_check_output(cmd, "--out", o->out) || cli_check_output(cmd, "--tile-ids", o->ids))
         return CLI_EXIT_USAGE;
+    struct stat a, b;
+    if (o->out && o->ids && (!strcmp(o->out, o->ids) ||
+                             (!stat(o->out, &a) && !stat(o->ids, &b) && a.st_dev == b.st_dev &&
+                              a.st_ino == b.st_ino))) {
+        cli_error(cmd, 0, "--out and --tile-ids name the same file '%.200s'", o->out);
+        return CLI_EXIT_USAGE;
+    }
     return 0;
 }
 
