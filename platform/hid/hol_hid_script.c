@@ -123,7 +123,7 @@ static hol_err script_open_first(void *ctx, double now_s, hol_hid_dev_info *out_
 static int script_read(void *ctx, double now_s, uint8_t *buf, size_t cap);
 static void script_close(void *ctx);
 
-hol_err hol_hid_script_parse(hol_hid_script *s, const char *text, size_t len, long *out_line)
+void hol_hid_script_begin(hol_hid_script *s)
 {
     s->n = s->used = s->next = 0;
     s->plugged = -1;
@@ -132,36 +132,53 @@ hol_err hol_hid_script_parse(hol_hid_script *s, const char *text, size_t len, lo
     s->be.read = script_read;
     s->be.close = script_close;
     s->be.ctx = s;
+    s->line = 0;
+    s->last_plug = -1;
+    s->in_plug = 0;
+    s->prev_t = 0;
+}
+
+hol_err hol_hid_script_line(hol_hid_script *s, const char *p, size_t len)
+{
+    const char *le = p + len;
+    s->line++;
+    if (le > p && le[-1] == '\r')
+        le--;
+    if (le == p || *p == '#')
+        return len > HOL_HID_SCRIPT_LINE_MAX ? HOL_ENOMEM : HOL_OK;
+    hol_hid_script_event e;
+    hol_err err = s->n >= HOL_HID_SCRIPT_MAX_EVENTS || len > HOL_HID_SCRIPT_LINE_MAX ? HOL_ENOMEM
+                                                                                    : HOL_OK;
+    double t = 0;
+    if (!err && parse_time(p, le, &t) && t < s->prev_t)
+        err = HOL_EPARSE; /* time going back */
+    if (!err)
+        err = parse_event(s, p, le, s->in_plug, s->last_plug, &e);
+    if (err) {
+        s->n = s->used = 0;
+        return err;
+    }
+    e.t = s->prev_t = t;
+    if (e.kind == HOL_HID_SCRIPT_PLUG)
+        s->last_plug = (long)s->n, s->in_plug = 1;
+    else if (e.kind == HOL_HID_SCRIPT_UNPLUG)
+        s->in_plug = 0;
+    s->ev[s->n++] = e;
+    return HOL_OK;
+}
+
+hol_err hol_hid_script_parse(hol_hid_script *s, const char *text, size_t len, long *out_line)
+{
+    hol_hid_script_begin(s);
     const char *p = text, *end = text + len;
-    long line = 0, last_plug = -1;
-    int plugged = 0;
-    double prev_t = 0;
     while (p < end) {
         const char *nl = memchr(p, '\n', (size_t)(end - p));
         const char *le = nl ? nl : end;
-        line++;
-        if (le > p && le[-1] == '\r')
-            le--;
-        if (le > p && *p != '#') {
-            hol_hid_script_event e;
-            hol_err err = s->n >= HOL_HID_SCRIPT_MAX_EVENTS ? HOL_ENOMEM : HOL_OK;
-            double t = 0;
-            if (!err && parse_time(p, le, &t) && t < prev_t)
-                err = HOL_EPARSE; /* time going back */
-            if (!err)
-                err = parse_event(s, p, le, plugged, last_plug, &e);
-            if (err) {
-                if (out_line)
-                    *out_line = line;
-                s->n = s->used = 0;
-                return err;
-            }
-            e.t = prev_t = t;
-            if (e.kind == HOL_HID_SCRIPT_PLUG)
-                last_plug = (long)s->n, plugged = 1;
-            else if (e.kind == HOL_HID_SCRIPT_UNPLUG)
-                plugged = 0;
-            s->ev[s->n++] = e;
+        hol_err err = hol_hid_script_line(s, p, (size_t)(le - p));
+        if (err) {
+            if (out_line)
+                *out_line = s->line;
+            return err;
         }
         p = nl ? nl + 1 : end;
     }

@@ -21,8 +21,12 @@
  * - hol_hid_script_parse checks the whole script into caller memory
  *   (struct hol_hid_script, no allocation); an error is HOL_EPARSE (or
  *   HOL_ENOMEM: more than HOL_HID_SCRIPT_MAX_EVENTS events or
- *   HOL_HID_SCRIPT_MAX_BYTES bytes of hex) with the 1-based line in
- *   *out_line.
+ *   HOL_HID_SCRIPT_MAX_BYTES bytes of hex, or a line, comments included,
+ *   longer than HOL_HID_SCRIPT_LINE_MAX bytes) with the 1-based line in
+ *   *out_line. The same a line at a time, for a script streamed from a
+ *   file: hol_hid_script_begin, then hol_hid_script_line for each line
+ *   (without its LF; s->line is the line's number), stopping at the first
+ *   error (the script is then empty).
  * - Played back (hol_hid_script_backend), an event happens at the first
  *   poll whose time is at or past its TIME: the device layer's enumeration
  *   finds the controller while it is plugged in; reads return the reports
@@ -44,6 +48,9 @@
 
 #define HOL_HID_SCRIPT_MAX_EVENTS 16384
 #define HOL_HID_SCRIPT_MAX_BYTES (1u << 18)
+/* The longest line: a plug with the largest descriptor (3 characters a
+ * byte) and room for the time and the VID:PID. */
+#define HOL_HID_SCRIPT_LINE_MAX (64 + 3 * HOL_HID_DESC_MAX)
 
 enum { HOL_HID_SCRIPT_PLUG = 1, HOL_HID_SCRIPT_REPORT, HOL_HID_SCRIPT_UNPLUG };
 
@@ -59,6 +66,11 @@ typedef struct hol_hid_script {
     size_t n;
     uint8_t bytes[HOL_HID_SCRIPT_MAX_BYTES];
     size_t used;
+    /* parsing */
+    long line;      /* lines given so far */
+    long last_plug; /* the last plug event, or -1 */
+    int in_plug;    /* plugged at the end of the lines so far */
+    double prev_t;
     /* playback */
     size_t next;    /* the first event not yet happened */
     long plugged;   /* the plug event of the controller present, or -1 */
@@ -68,6 +80,10 @@ typedef struct hol_hid_script {
 
 /* Parse len bytes of script text into *s (ready to play from time 0). */
 hol_err hol_hid_script_parse(hol_hid_script *s, const char *text, size_t len, long *out_line);
+
+/* The same a line at a time: begin, then each line (without its LF). */
+void hol_hid_script_begin(hol_hid_script *s);
+hol_err hol_hid_script_line(hol_hid_script *s, const char *line, size_t len);
 
 /* The backend playing *s (valid while *s is). */
 const hol_hid_backend *hol_hid_script_backend(hol_hid_script *s);
