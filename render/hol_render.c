@@ -63,7 +63,7 @@ struct hol_render {
     hol_gl gl;
     hol_scene *scene;
     GLuint prog, vao[2], vbo[2], ibo[2]; /* [0] static, [1] dynamic */
-    GLint u_vp, u_model, u_mode, u_id, u_eye, u_fog, u_fogd;
+    GLint u_vp, u_model, u_mode, u_id, u_eye, u_fog, u_fogd, u_lin;
     hol_mesh dyn;     /* per-frame geometry */
     hol_mesh scratch; /* one room or tile mesh before upload */
     hol_vertex *verts;
@@ -116,14 +116,21 @@ static const char *hol__fs =
     "uniform vec3 u_eye;\n"
     "uniform vec3 u_fog;\n"
     "uniform float u_fogd;\n"
+    "uniform int u_lin;\n"
     "out vec4 o_col;\n"
+    "vec4 hol_out(vec3 c) {\n"
+    "  if (u_lin == 0) return vec4(c, 1.0);\n"
+    "  c = clamp(c, 0.0, 1.0);\n"
+    "  return vec4(mix(c / 12.92, pow((c + 0.055) / 1.055, vec3(2.4)),\n"
+    "                  step(vec3(0.04045), c)), 1.0);\n"
+    "}\n"
     "void main() {\n"
     "  if (u_mode == 1) {\n"
     "    o_col = v_col.a > 0.5 ? u_id : vec4(0.0, 0.0, 0.0, 1.0);\n"
     "    return;\n"
     "  }\n"
     "  if (u_mode == 2) {\n"
-    "    o_col = vec4(v_col.rgb, 1.0);\n"
+    "    o_col = hol_out(v_col.rgb);\n"
     "    return;\n"
     "  }\n"
     "  vec3 toeye = u_eye - v_wpos;\n"
@@ -135,7 +142,7 @@ static const char *hol__fs =
     "  vec3 c = v_col.rgb * (0.50 + 0.60 * d);\n"
     "  float dist = length(toeye) * u_fogd;\n"
     "  float f = exp(-dist * dist);\n"
-    "  o_col = vec4(mix(u_fog, c, f), 1.0);\n"
+    "  o_col = hol_out(mix(u_fog, c, f));\n"
     "}\n";
 
 static GLuint hol__shader(const hol_gl *gl, GLenum type, const char *src)
@@ -212,6 +219,7 @@ hol_err hol_render_create(const hol_render_desc *desc, hol_render **out)
     r->u_eye = r->gl.GetUniformLocation(r->prog, "u_eye");
     r->u_fog = r->gl.GetUniformLocation(r->prog, "u_fog");
     r->u_fogd = r->gl.GetUniformLocation(r->prog, "u_fogd");
+    r->u_lin = r->gl.GetUniformLocation(r->prog, "u_lin");
     r->gl.GenVertexArrays(2, r->vao);
     r->gl.GenBuffers(2, r->vbo);
     r->gl.GenBuffers(2, r->ibo);
@@ -425,6 +433,16 @@ static double hol__now(clockid_t id)
     struct timespec ts = {0, 0}; /* stays zero where the clock is missing (wasm) */
     clock_gettime(id, &ts);
     return (double)ts.tv_sec * 1e3 + (double)ts.tv_nsec * 1e-6;
+}
+
+/* glClearColor of an sRGB-authored colour: with desc.srgb the GL encodes
+ * what is written, so the colour is given linear (as the shader does). */
+static void hol__clear_colour(hol_render *r, float red, float green, float blue)
+{
+    float c[3] = {red, green, blue};
+    for (int k = 0; k < 3 && r->desc.srgb; k++)
+        c[k] = c[k] <= 0.04045f ? c[k] / 12.92f : powf((c[k] + 0.055f) / 1.055f, 2.4f);
+    r->gl.ClearColor(c[0], c[1], c[2], 1);
 }
 
 static void hol__fade_rgb(const hol_frame_desc *f, uint8_t out[3])
@@ -664,7 +682,7 @@ hol_err hol_render_frame(hol_render *r, const hol_frame_desc *f,
         r->gl.DepthMask(GL_TRUE);
         r->gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
         r->gl.StencilMask(0xff);
-        r->gl.ClearColor(rgb[0] / 255.0f, rgb[1] / 255.0f, rgb[2] / 255.0f, 1);
+        hol__clear_colour(r, rgb[0] / 255.0f, rgb[1] / 255.0f, rgb[2] / 255.0f);
         r->gl.ClearDepthf(1.0f);
         r->gl.ClearStencil(HOL_VIEW_STENCIL_CLEAR);
         r->gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
@@ -700,7 +718,7 @@ hol_err hol_render_frame(hol_render *r, const hol_frame_desc *f,
     if (ids)
         r->gl.ClearColor(0, 0, 0, 1);
     else
-        r->gl.ClearColor(sky[0], sky[1], sky[2], 1);
+        hol__clear_colour(r, sky[0], sky[1], sky[2]);
     r->gl.ClearDepthf(1.0f);
     r->gl.ClearStencil(HOL_VIEW_STENCIL_CLEAR);
     r->gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
@@ -728,6 +746,7 @@ hol_err hol_render_frame(hol_render *r, const hol_frame_desc *f,
                 (float)f->cam.eye[2]);
     r->gl.Uniform3f(r->u_fog, sky[0], sky[1], sky[2]);
     r->gl.Uniform1f(r->u_fogd, 0.06f);
+    r->gl.Uniform1i(r->u_lin, r->desc.srgb != 0);
     st.state_changes += 2;
 
     int cur_pass = -1, cur_ref = -1, cur_mask = -1;

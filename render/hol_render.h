@@ -56,6 +56,13 @@ typedef struct hol_render_desc {
     struct hol_world *world;   /* optional; not owned */
     hol_alloc alloc;           /* hooks for the CPU stores (core/hol_alloc.h);
                                   zero: malloc/free */
+    int srgb;                  /* the colour buffer is sRGB and the GL encodes
+                                  what is written (GLES always; desktop GL with
+                                  GL_FRAMEBUFFER_SRGB enabled by the caller):
+                                  colours (authored in sRGB) are written as
+                                  linear values, so the stored bytes are those
+                                  of a plain RGBA8 buffer. 0: written as they
+                                  are (OSMesa, EGL, a linear swapchain) */
 } hol_render_desc;
 
 typedef struct hol_render hol_render;
