@@ -29,7 +29,7 @@ if grep -q "this build has no OpenXR" "$T/err"; then
     one_line "a build without OpenXR" "make xr"
 else
     # the loader says its own lines first; ours is the last, one line
-    tail -n 1 "$T/err" | grep -q "^holonomy xr: no OpenXR runtime" && ok ||
+    tail -n 1 "$T/err" | grep -q "^holonomy xr: cannot start the OpenXR instance: no OpenXR runtime is installed or active;.*monado-service.*(XR_ERROR_RUNTIME_UNAVAILABLE)$" && ok ||
         bad "no runtime: $(cat "$T/err")"
 fi
 finish cli_xr

@@ -101,15 +101,19 @@ static void test_every_binding_is_in_its_profile(void **state)
     for (int k = 0; k < HOL_XR_NPROFILES; k++) {
         const spec_profile *s = spec_of(p[k].profile);
         assert_non_null(s);
+        assert_int_equal(hol_xr_profile_find(p[k].profile), k);
+        assert_string_equal(p[k].profile + strlen("/interaction_profiles/"), p[k].name);
         for (int h = 0; h < 2; h++)
             assert_true(spec_has(s, hol_xr_grip_path(h)));
         for (int a = 0; a < HOL_XR_ACT_COUNT; a++) {
             assert_non_null(p[k].path[a]);
             if (!spec_has(s, p[k].path[a]))
                 fail_msg("%s: %s not in the profile", p[k].profile, p[k].path[a]);
-            /* one physical input, one action */
+            /* a label names the input: one label per path */
+            assert_true(strlen(hol_xr_input_label(k, a)) > 0);
             for (int b = 0; b < a; b++)
-                assert_string_not_equal(p[k].path[a], p[k].path[b]);
+                assert_int_equal(!strcmp(p[k].path[a], p[k].path[b]),
+                                 !strcmp(hol_xr_input_label(k, a), hol_xr_input_label(k, b)));
         }
         /* confirm is on the right hand (the minimap hand is the left) */
         assert_true(!strncmp(p[k].path[HOL_XR_ACT_CONFIRM], "/user/hand/right/", 17));
@@ -119,26 +123,88 @@ static void test_every_binding_is_in_its_profile(void **state)
                           "/user/hand/right/input/a/click"));
     assert_false(spec_has(spec_of("/interaction_profiles/oculus/touch_controller"),
                           "/user/hand/right/input/x/click"));
+    assert_int_equal(hol_xr_profile_find("/interaction_profiles/khr/simple"), -1);
+    assert_int_equal(hol_xr_profile_find(NULL), -1);
+    assert_string_equal(hol_xr_input_label(HOL_XR_NPROFILES, 0), "");
+}
+
+/* Issue 18: quit, menu, restart and recentre in every profile; within a
+ * layer, one input per action. */
+static void test_every_profile_reaches_every_action(void **state)
+{
+    (void)state;
+    const hol_xr_profile *p = hol_xr_profiles();
+    static const int play[] = {HOL_XR_ACT_CONFIRM, HOL_XR_ACT_MENU, HOL_XR_ACT_RECENTRE,
+                               HOL_XR_ACT_MINIMAP};
+    static const int menu[] = {HOL_XR_ACT_MENU, HOL_XR_ACT_RECENTRE, HOL_XR_ACT_RESTART,
+                               HOL_XR_ACT_QUIT};
+    for (int i = 0; i < 4; i++) {
+        assert_true(hol_xr_action_in_layer(play[i], 0));
+        assert_true(hol_xr_action_in_layer(menu[i], 1));
+    }
+    /* restart and quit never while playing: not one accidental press away */
+    assert_false(hol_xr_action_in_layer(HOL_XR_ACT_RESTART, 0));
+    assert_false(hol_xr_action_in_layer(HOL_XR_ACT_QUIT, 0));
+    for (int k = 0; k < HOL_XR_NPROFILES; k++)
+        for (int layer = 0; layer < 2; layer++)
+            for (int a = 0; a < HOL_XR_ACT_COUNT; a++)
+                for (int b = 0; b < a; b++)
+                    if (hol_xr_action_in_layer(a, layer) && hol_xr_action_in_layer(b, layer) &&
+                        !strcmp(p[k].path[a], p[k].path[b]))
+                        fail_msg("%s: %s and %s share %s in one layer", p[k].name,
+                                 hol_xr_action_name(a), hol_xr_action_name(b), p[k].path[a]);
+}
+
+static uint32_t press(hol_xr_keys *k, unsigned held_mask, int in_menu)
+{
+    int held[HOL_XR_ACT_COUNT];
+    for (int a = 0; a < HOL_XR_ACT_COUNT; a++)
+        held[a] = (int)(held_mask >> a & 1) * (a + 1); /* any nonzero is held */
+    return hol_xr_buttons(k, held, in_menu);
 }
 
 static void test_buttons(void **state)
 {
     (void)state;
-    static const uint32_t want[HOL_XR_ACT_COUNT] = {HOL_BTN_CONFIRM, HOL_BTN_MENU,
-                                                     HOL_BTN_RECENTRE, HOL_BTN_MINIMAP};
-    for (unsigned m = 0; m < 1u << HOL_XR_ACT_COUNT; m++) {
-        int held[HOL_XR_ACT_COUNT];
-        uint32_t expect = 0;
-        for (int a = 0; a < HOL_XR_ACT_COUNT; a++) {
-            held[a] = (int)(m >> a & 1) * (a + 1); /* any nonzero is held */
-            expect |= held[a] ? want[a] : 0;
+    static const uint32_t want[HOL_XR_ACT_COUNT] = {HOL_BTN_CONFIRM,  HOL_BTN_MENU,
+                                                     HOL_BTN_RECENTRE, HOL_BTN_MINIMAP,
+                                                     HOL_BTN_RESTART,  HOL_BTN_QUIT};
+    /* a layer held steadily: every combination of the actions it has */
+    for (int layer = 0; layer < 2; layer++)
+        for (unsigned m = 0; m < 1u << HOL_XR_ACT_COUNT; m++) {
+            hol_xr_keys k = {layer, 0};
+            uint32_t expect = 0;
+            for (int a = 0; a < HOL_XR_ACT_COUNT; a++)
+                expect |= (m >> a & 1) && hol_xr_action_in_layer(a, layer) ? want[a] : 0;
+            assert_int_equal(press(&k, m, layer), expect);
         }
-        assert_int_equal(hol_xr_buttons(held), expect);
-    }
     for (int a = 0; a < HOL_XR_ACT_COUNT; a++) {
         assert_true(strlen(hol_xr_action_name(a)) > 0);
         assert_true(strlen(hol_xr_action_label(a)) > 0);
     }
+}
+
+/* One press never acts in both layers: the input held while the layer
+ * changes counts again only after a release. */
+static void test_layer_change_waits_for_a_release(void **state)
+{
+    (void)state;
+    hol_xr_keys k;
+    memset(&k, 0, sizeof k);
+    const unsigned menu = 1u << HOL_XR_ACT_MENU, a_btn = 1u << HOL_XR_ACT_CONFIRM;
+    assert_int_equal(press(&k, menu, 0), HOL_BTN_MENU); /* opens the menu */
+    assert_int_equal(press(&k, menu, 1), 0);            /* still held: not again */
+    assert_int_equal(press(&k, 0, 1), 0);
+    /* in the menu, the confirm input restarts (it is bound to both) */
+    assert_int_equal(press(&k, a_btn | 1u << HOL_XR_ACT_RESTART, 1), HOL_BTN_RESTART);
+    /* the menu closes while it is held: no confirm from that press */
+    assert_int_equal(press(&k, a_btn | 1u << HOL_XR_ACT_RESTART, 0), 0);
+    assert_int_equal(press(&k, a_btn | 1u << HOL_XR_ACT_RESTART, 0), 0);
+    assert_int_equal(press(&k, 0, 0), 0);
+    assert_int_equal(press(&k, a_btn | 1u << HOL_XR_ACT_RESTART, 0), HOL_BTN_CONFIRM);
+    /* an input pressed after the change counts at once */
+    assert_int_equal(press(&k, a_btn, 1), 0);
+    assert_int_equal(press(&k, a_btn | 1u << HOL_XR_ACT_QUIT, 1), HOL_BTN_QUIT);
 }
 
 /* The prompts' words (core/hol_prompt.h) follow each profile's bindings:
@@ -175,7 +241,10 @@ static void test_prompt_words(void **state)
         for (int a = 0; a < HOL_XR_ACT_COUNT; a++) {
             int held[HOL_XR_ACT_COUNT] = {0};
             held[a] = 1;
-            uint32_t btn = hol_xr_buttons(held);
+            /* the action in the layer it counts in (restart, quit: the menu) */
+            int in_menu = !hol_xr_action_in_layer(a, 0);
+            hol_xr_keys keys = {in_menu, 0};
+            uint32_t btn = hol_xr_buttons(&keys, held, in_menu);
             bound |= btn;
             const char *path = p[k].path[a];
             int left = !strncmp(path, "/user/hand/left/input/", 22);
@@ -209,7 +278,9 @@ int main(void)
         cmocka_unit_test(test_prompt_words),
         cmocka_unit_test(test_the_five_profiles),
         cmocka_unit_test(test_every_binding_is_in_its_profile),
+        cmocka_unit_test(test_every_profile_reaches_every_action),
         cmocka_unit_test(test_buttons),
+        cmocka_unit_test(test_layer_change_waits_for_a_release),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -1,7 +1,8 @@
-/* hol_xr_actions.c - the headset's actions, suggested bindings and spaces
- * (see hol_xr_impl.h; the bindings themselves are hol_xr_bind.h). */
+/* hol_xr_actions.c - the headset's actions, suggested bindings, reference
+ * spaces and stage bounds (see hol_xr_state.h; the bindings themselves are
+ * hol_xr_bind.h, the choice of space hol_xr_pick.h). */
 #define _GNU_SOURCE
-#include "hol_xr_impl.h"
+#include "hol_xr_state.h"
 
 /* OpenXR structs are initialised by their type alone ({XR_TYPE_...}), the
  * rest zero: the API's own idiom. */
@@ -13,11 +14,12 @@
 
 /* ---- actions -------------------------------------------------------------- */
 
-static XrPath hol__path(hol__xr *x, const char *s)
+static int hol__path(hol__xr *x, const char *s, XrPath *out)
 {
-    XrPath p = XR_NULL_PATH;
-    xrStringToPath(x->instance, s, &p);
-    return p;
+    char doing[160];
+    snprintf(doing, sizeof doing, "name the path %.120s", s);
+    HOL__XR(x, doing, xrStringToPath(x->instance, s, out));
+    return 0;
 }
 
 static int hol__action(hol__xr *x, XrAction *out, const char *name, const char *local,
@@ -31,7 +33,34 @@ static int hol__action(hol__xr *x, XrAction *out, const char *name, const char *
         ai.countSubactionPaths = 2;
         ai.subactionPaths = x->hand_path;
     }
-    HOL__XR(x, xrCreateAction(x->set, &ai, out));
+    HOL__XR(x, "create the controller actions", xrCreateAction(x->set, &ai, out));
+    return 0;
+}
+
+/* The suggested bindings of profile i (hol_xr_bind.h): all must be accepted. */
+static int hol__suggest(hol__xr *x, const hol_xr_profile *p)
+{
+    XrActionSuggestedBinding sb[HOL_XR_ACT_COUNT + 2];
+    uint32_t n = 0;
+    for (int h = 0; h < 2; h++) {
+        sb[n].action = x->grip_action;
+        if (hol__path(x, hol_xr_grip_path(h), &sb[n++].binding))
+            return 1;
+    }
+    for (int a = 0; a < HOL_XR_ACT_COUNT; a++) {
+        sb[n].action = x->act[a];
+        if (hol__path(x, p->path[a], &sb[n++].binding))
+            return 1;
+    }
+    XrInteractionProfileSuggestedBinding ps = {XR_TYPE_INTERACTION_PROFILE_SUGGESTED_BINDING};
+    if (hol__path(x, p->profile, &ps.interactionProfile))
+        return 1;
+    ps.countSuggestedBindings = n;
+    ps.suggestedBindings = sb;
+    char doing[160];
+    snprintf(doing, sizeof doing, "bind the %s controllers", p->name);
+    HOL__XR(x, doing, xrSuggestInteractionProfileBindings(x->instance, &ps));
+    hol__say(x, "xr: bindings accepted %s", p->name);
     return 0;
 }
 
@@ -40,38 +69,57 @@ int hol__actions(hol__xr *x)
     XrActionSetCreateInfo si = {XR_TYPE_ACTION_SET_CREATE_INFO};
     snprintf(si.actionSetName, sizeof si.actionSetName, "game");
     snprintf(si.localizedActionSetName, sizeof si.localizedActionSetName, "Game");
-    HOL__XR(x, xrCreateActionSet(x->instance, &si, &x->set));
-    x->hand_path[0] = hol__path(x, "/user/hand/left");
-    x->hand_path[1] = hol__path(x, "/user/hand/right");
-    if (hol__action(x, &x->grip_action, "grip", "Hand pose", XR_ACTION_TYPE_POSE_INPUT, 1))
+    HOL__XR(x, "create the controller actions", xrCreateActionSet(x->instance, &si, &x->set));
+    if (hol__path(x, "/user/hand/left", &x->hand_path[0]) ||
+        hol__path(x, "/user/hand/right", &x->hand_path[1]) ||
+        hol__action(x, &x->grip_action, "grip", "Hand pose", XR_ACTION_TYPE_POSE_INPUT, 1))
         return 1;
     for (int a = 0; a < HOL_XR_ACT_COUNT; a++)
         if (hol__action(x, &x->act[a], hol_xr_action_name(a), hol_xr_action_label(a),
                         XR_ACTION_TYPE_BOOLEAN_INPUT, 0))
             return 1;
-    /* the suggested bindings (hol_xr_bind.h): every one must be accepted */
     const hol_xr_profile *binds = hol_xr_profiles();
-    for (int i = 0; i < HOL_XR_NPROFILES; i++) {
-        XrActionSuggestedBinding sb[HOL_XR_ACT_COUNT + 2];
-        uint32_t n = 0;
-        for (int h = 0; h < 2; h++) {
-            sb[n].action = x->grip_action;
-            sb[n++].binding = hol__path(x, hol_xr_grip_path(h));
-        }
-        for (int a = 0; a < HOL_XR_ACT_COUNT; a++) {
-            sb[n].action = x->act[a];
-            sb[n++].binding = hol__path(x, binds[i].path[a]);
-        }
-        XrInteractionProfileSuggestedBinding ps = {
-            XR_TYPE_INTERACTION_PROFILE_SUGGESTED_BINDING};
-        ps.interactionProfile = hol__path(x, binds[i].profile);
-        ps.countSuggestedBindings = n;
-        ps.suggestedBindings = sb;
-        XrResult r = xrSuggestInteractionProfileBindings(x->instance, &ps);
-        if (XR_FAILED(r))
-            return hol__fail(x, binds[i].profile, r);
-        printf("xr: bindings accepted %s\n", binds[i].profile + 22);
-    }
+    for (int i = 0; i < HOL_XR_NPROFILES; i++)
+        if (hol__suggest(x, &binds[i]))
+            return 1;
+    x->profile[0] = x->profile[1] = -1;
+    return 0;
+}
+
+/* ---- spaces --------------------------------------------------------------- */
+
+/* The runtime's reference spaces (two-call idiom) and the room's space
+ * (hol_xr_pick_space: STAGE, else LOCAL with its floor 1.6 m down). */
+static int hol__room_space(hol__xr *x)
+{
+    uint32_t n = 0;
+    HOL__XR(x, "list the reference spaces", xrEnumerateReferenceSpaces(x->session, 0, &n, NULL));
+    XrReferenceSpaceType *types = calloc(n ? n : 1, sizeof *types);
+    int *ints = calloc(n ? n : 1, sizeof *ints);
+    XrResult r = types && ints ? xrEnumerateReferenceSpaces(x->session, n, &n, types)
+                               : XR_ERROR_OUT_OF_MEMORY;
+    for (uint32_t i = 0; XR_SUCCEEDED(r) && i < n; i++)
+        ints[i] = (int)types[i];
+    x->space_type = XR_SUCCEEDED(r) ? hol_xr_pick_space(ints, n, &x->origin_y) : 0;
+    free(types);
+    free(ints);
+    if (XR_FAILED(r))
+        return hol__fail(x, "list the reference spaces", r);
+    if (!x->space_type)
+        return hol__error(x, "the OpenXR runtime offers neither a STAGE nor a LOCAL "
+                             "reference space (OpenXR requires LOCAL): the runtime is broken");
+    XrReferenceSpaceCreateInfo ri = {XR_TYPE_REFERENCE_SPACE_CREATE_INFO};
+    ri.referenceSpaceType = (XrReferenceSpaceType)x->space_type;
+    ri.poseInReferenceSpace.orientation.w = 1;
+    ri.poseInReferenceSpace.position.y = (float)x->origin_y;
+    HOL__XR(x, "create the room's reference space",
+            xrCreateReferenceSpace(x->session, &ri, &x->stage));
+    if (x->space_type == HOL_XR_SPACE_STAGE)
+        hol__say(x, "xr: reference space STAGE");
+    else
+        hol__say(x, "xr: reference space LOCAL (no STAGE): the floor taken %.2f m below "
+                    "the head's start",
+                 -x->origin_y);
     return 0;
 }
 
@@ -80,48 +128,79 @@ int hol__spaces(hol__xr *x)
     XrSessionActionSetsAttachInfo at = {XR_TYPE_SESSION_ACTION_SETS_ATTACH_INFO};
     at.countActionSets = 1;
     at.actionSets = &x->set;
-    HOL__XR(x, xrAttachSessionActionSets(x->session, &at));
+    HOL__XR(x, "attach the controller actions", xrAttachSessionActionSets(x->session, &at));
     for (int h = 0; h < 2; h++) {
         XrActionSpaceCreateInfo ai = {XR_TYPE_ACTION_SPACE_CREATE_INFO};
         ai.action = x->grip_action;
         ai.subactionPath = x->hand_path[h];
         ai.poseInActionSpace.orientation.w = 1;
-        HOL__XR(x, xrCreateActionSpace(x->session, &ai, &x->grip[h]));
+        HOL__XR(x, "create the hands' spaces", xrCreateActionSpace(x->session, &ai, &x->grip[h]));
     }
-    uint32_t n = 0;
-    XrReferenceSpaceType types[16];
-    HOL__XR(x, xrEnumerateReferenceSpaces(x->session, 16, &n, types));
-    x->is_stage = 0;
-    for (uint32_t i = 0; i < n; i++)
-        x->is_stage |= types[i] == XR_REFERENCE_SPACE_TYPE_STAGE;
+    if (hol__room_space(x))
+        return 1;
     XrReferenceSpaceCreateInfo ri = {XR_TYPE_REFERENCE_SPACE_CREATE_INFO};
-    ri.referenceSpaceType = x->is_stage ? XR_REFERENCE_SPACE_TYPE_STAGE
-                                        : XR_REFERENCE_SPACE_TYPE_LOCAL;
-    ri.poseInReferenceSpace.orientation.w = 1;
-    HOL__XR(x, xrCreateReferenceSpace(x->session, &ri, &x->stage));
     ri.referenceSpaceType = XR_REFERENCE_SPACE_TYPE_VIEW;
-    HOL__XR(x, xrCreateReferenceSpace(x->session, &ri, &x->view_space));
-    printf("xr: reference space %s\n", x->is_stage ? "STAGE" : "LOCAL");
-    if (x->is_stage) {
-        XrExtent2Df b = {0, 0};
-        XrResult r = xrGetReferenceSpaceBoundsRect(x->session, XR_REFERENCE_SPACE_TYPE_STAGE, &b);
-        if (r == XR_SUCCESS) {
-            x->bounds_small = !hol_xr_bounds_hold_room(b.width, b.height);
-            printf("xr: stage bounds %.2f x %.2f m%s\n", b.width, b.height,
-                   x->bounds_small ? " (smaller than the 3 x 3 m room)" : "");
-        } else {
-            printf("xr: stage bounds not given by the runtime\n");
-        }
+    ri.poseInReferenceSpace.orientation.w = 1;
+    HOL__XR(x, "create the head's space", xrCreateReferenceSpace(x->session, &ri, &x->view_space));
+    return hol__bounds(x);
+}
+
+/* The stage bounds (the play area), kept for fitting the room to them; a
+ * runtime without them (Monado's null compositor) is not an error. */
+int hol__bounds(hol__xr *x)
+{
+    x->have_bounds = x->bounds_small = 0;
+    if (x->space_type != HOL_XR_SPACE_STAGE)
+        return 0;
+    XrExtent2Df b = {0, 0};
+    XrResult r = xrGetReferenceSpaceBoundsRect(x->session, XR_REFERENCE_SPACE_TYPE_STAGE, &b);
+    if (XR_FAILED(r))
+        return hol__fail(x, "read the play area's bounds", r);
+    if (r == XR_SPACE_BOUNDS_UNAVAILABLE || b.width <= 0 || b.height <= 0) {
+        hol__say(x, "xr: stage bounds not given by the runtime");
+        return 0;
     }
+    x->have_bounds = 1;
+    x->bounds_w = b.width;
+    x->bounds_d = b.height;
+    x->bounds_small = !hol_xr_bounds_hold_room(b.width, b.height);
+    hol__say(x, "xr: stage bounds %.2f x %.2f m%s", b.width, b.height,
+             x->bounds_small ? " (smaller than the 3 x 3 m room)" : "");
     return 0;
 }
 
-int hol__bool(hol__xr *x, int a)
+/* ---- state ---------------------------------------------------------------- */
+
+int hol__bool(hol__xr *x, int a, int *out_held)
 {
     XrActionStateGetInfo gi = {XR_TYPE_ACTION_STATE_GET_INFO};
     gi.action = x->act[a];
     XrActionStateBoolean st = {XR_TYPE_ACTION_STATE_BOOLEAN};
-    if (XR_FAILED(xrGetActionStateBoolean(x->session, &gi, &st)))
-        return 0;
-    return st.isActive && st.currentState;
+    HOL__XR(x, "read the controller buttons", xrGetActionStateBoolean(x->session, &gi, &st));
+    *out_held = st.isActive && st.currentState;
+    return 0;
+}
+
+/* The hands' interaction profiles now (after an interaction profile
+ * changed event): x->profile[h], one line each that changed. */
+int hol__profiles_now(hol__xr *x)
+{
+    for (int h = 0; h < 2; h++) {
+        XrInteractionProfileState st = {XR_TYPE_INTERACTION_PROFILE_STATE};
+        HOL__XR(x, "read the controllers' profile",
+                xrGetCurrentInteractionProfile(x->session, x->hand_path[h], &st));
+        char path[XR_MAX_PATH_LENGTH] = "";
+        uint32_t len = 0;
+        if (st.interactionProfile != XR_NULL_PATH)
+            HOL__XR(x, "read the controllers' profile",
+                    xrPathToString(x->instance, st.interactionProfile, sizeof path, &len, path));
+        int p = st.interactionProfile == XR_NULL_PATH ? -1 : hol_xr_profile_find(path);
+        if (p != x->profile[h])
+            hol__say(x, "xr: %s hand: %s", h ? "right" : "left",
+                     st.interactionProfile == XR_NULL_PATH ? "no controller"
+                     : p >= 0                              ? hol_xr_profiles()[p].name
+                                                           : path);
+        x->profile[h] = p;
+    }
+    return 0;
 }

@@ -1,25 +1,37 @@
 /* hol_xr_bind.c - actions and suggested bindings (see hol_xr_bind.h). */
 #include "hol_xr_bind.h"
 
+#include <string.h>
+
 #include "../../core/hol_input.h"
 
+#define HOL__L "/user/hand/left/input/"
+#define HOL__R "/user/hand/right/input/"
+
 static const hol_xr_profile hol__profiles[HOL_XR_NPROFILES] = {
-    /* confirm, menu, recentre, minimap */
-    {"/interaction_profiles/khr/simple_controller",
-     {"/user/hand/right/input/select/click", "/user/hand/right/input/menu/click",
-      "/user/hand/left/input/menu/click", "/user/hand/left/input/select/click"}},
-    {"/interaction_profiles/oculus/touch_controller",
-     {"/user/hand/right/input/a/click", "/user/hand/left/input/menu/click",
-      "/user/hand/left/input/y/click", "/user/hand/left/input/x/click"}},
-    {"/interaction_profiles/htc/vive_controller",
-     {"/user/hand/right/input/trigger/click", "/user/hand/right/input/menu/click",
-      "/user/hand/left/input/menu/click", "/user/hand/left/input/trackpad/click"}},
-    {"/interaction_profiles/valve/index_controller",
-     {"/user/hand/right/input/a/click", "/user/hand/right/input/b/click",
-      "/user/hand/left/input/b/click", "/user/hand/left/input/a/click"}},
-    {"/interaction_profiles/microsoft/motion_controller",
-     {"/user/hand/right/input/trigger/value", "/user/hand/right/input/menu/click",
-      "/user/hand/left/input/menu/click", "/user/hand/left/input/trackpad/click"}},
+    /* confirm, menu, recentre, minimap | restart, quit (the menu's layer) */
+    {"/interaction_profiles/khr/simple_controller", "khr/simple_controller",
+     {HOL__R "select/click", HOL__R "menu/click", HOL__L "menu/click", HOL__L "select/click",
+      HOL__R "select/click", HOL__L "select/click"},
+     {"right select", "right menu", "left menu", "left select", "right select", "left select"}},
+    {"/interaction_profiles/oculus/touch_controller", "oculus/touch_controller",
+     {HOL__R "a/click", HOL__L "menu/click", HOL__L "y/click", HOL__L "x/click", HOL__R "a/click",
+      HOL__R "b/click"},
+     {"A", "menu", "Y", "X", "A", "B"}},
+    {"/interaction_profiles/htc/vive_controller", "htc/vive_controller",
+     {HOL__R "trigger/click", HOL__R "menu/click", HOL__L "menu/click",
+      HOL__L "trackpad/click", HOL__R "trigger/click", HOL__L "trigger/click"},
+     {"right trigger", "right menu", "left menu", "left trackpad", "right trigger",
+      "left trigger"}},
+    {"/interaction_profiles/valve/index_controller", "valve/index_controller",
+     {HOL__R "a/click", HOL__R "b/click", HOL__L "b/click", HOL__L "a/click", HOL__R "a/click",
+      HOL__L "trigger/click"},
+     {"right A", "right B", "left B", "left A", "right A", "left trigger"}},
+    {"/interaction_profiles/microsoft/motion_controller", "microsoft/motion_controller",
+     {HOL__R "trigger/value", HOL__R "menu/click", HOL__L "menu/click",
+      HOL__L "trackpad/click", HOL__R "trigger/value", HOL__L "trigger/value"},
+     {"right trigger", "right menu", "left menu", "left trackpad", "right trigger",
+      "left trigger"}},
 };
 
 const hol_xr_profile *hol_xr_profiles(void)
@@ -27,17 +39,51 @@ const hol_xr_profile *hol_xr_profiles(void)
     return hol__profiles;
 }
 
+int hol_xr_profile_find(const char *path)
+{
+    for (int i = 0; path && i < HOL_XR_NPROFILES; i++)
+        if (!strcmp(hol__profiles[i].profile, path))
+            return i;
+    return -1;
+}
+
+const char *hol_xr_input_label(int profile, int act)
+{
+    if (profile < 0 || profile >= HOL_XR_NPROFILES || act < 0 || act >= HOL_XR_ACT_COUNT)
+        return "";
+    return hol__profiles[profile].label[act];
+}
+
 const char *hol_xr_action_name(int act)
 {
-    static const char *const n[HOL_XR_ACT_COUNT] = {"confirm", "menu", "recentre", "minimap"};
+    static const char *const n[HOL_XR_ACT_COUNT] = {"confirm", "menu",    "recentre",
+                                                     "minimap", "restart", "quit"};
     return act >= 0 && act < HOL_XR_ACT_COUNT ? n[act] : "";
 }
 
 const char *hol_xr_action_label(int act)
 {
-    static const char *const n[HOL_XR_ACT_COUNT] = {"Confirm", "Menu", "Recentre the room",
-                                                     "Minimap"};
+    static const char *const n[HOL_XR_ACT_COUNT] = {
+        "Confirm", "Menu", "Recentre the room", "Minimap", "Restart the level (menu)",
+        "Quit (menu)"};
     return act >= 0 && act < HOL_XR_ACT_COUNT ? n[act] : "";
+}
+
+int hol_xr_action_in_layer(int act, int in_menu)
+{
+    switch (act) {
+    case HOL_XR_ACT_MENU:
+    case HOL_XR_ACT_RECENTRE:
+        return 1;
+    case HOL_XR_ACT_CONFIRM:
+    case HOL_XR_ACT_MINIMAP:
+        return !in_menu;
+    case HOL_XR_ACT_RESTART:
+    case HOL_XR_ACT_QUIT:
+        return in_menu;
+    default:
+        return 0;
+    }
 }
 
 const char *hol_xr_grip_path(int hand)
@@ -45,12 +91,23 @@ const char *hol_xr_grip_path(int hand)
     return hand ? "/user/hand/right/input/grip/pose" : "/user/hand/left/input/grip/pose";
 }
 
-uint32_t hol_xr_buttons(const int held[HOL_XR_ACT_COUNT])
+uint32_t hol_xr_buttons(hol_xr_keys *k, const int held[HOL_XR_ACT_COUNT], int in_menu)
 {
-    static const uint32_t bit[HOL_XR_ACT_COUNT] = {HOL_BTN_CONFIRM, HOL_BTN_MENU,
-                                                    HOL_BTN_RECENTRE, HOL_BTN_MINIMAP};
+    static const uint32_t bit[HOL_XR_ACT_COUNT] = {HOL_BTN_CONFIRM,  HOL_BTN_MENU,
+                                                    HOL_BTN_RECENTRE, HOL_BTN_MINIMAP,
+                                                    HOL_BTN_RESTART,  HOL_BTN_QUIT};
+    unsigned now = 0;
+    for (int a = 0; a < HOL_XR_ACT_COUNT; a++)
+        now |= held[a] ? 1u << a : 0;
+    in_menu = in_menu != 0;
+    if (in_menu != k->in_menu) {
+        k->suppressed |= now; /* held across the change: wait for a release */
+        k->in_menu = in_menu;
+    }
+    k->suppressed &= now;
     uint32_t b = 0;
     for (int a = 0; a < HOL_XR_ACT_COUNT; a++)
-        b |= held[a] ? bit[a] : 0;
+        if ((now & ~k->suppressed) >> a & 1 && hol_xr_action_in_layer(a, in_menu))
+            b |= bit[a];
     return b;
 }

@@ -7,17 +7,29 @@
  *
  * Contract
  * - Actions: a grip pose per hand (/user/hand/{left,right}/input/grip/pose,
- *   the hand-held minimap follows the left one) and four boolean actions,
+ *   the hand-held minimap follows the left one) and six boolean actions,
  *   HOL_XR_ACT_*: confirm (next level; the right hand's main button or
- *   trigger), menu (the pause menu: resume, restart, recentre by its
- *   hint), recentre (place the room from the head), minimap (HUD, hand,
- *   off).
+ *   trigger), menu (the pause menu), recentre (place the room from the
+ *   head), minimap (HUD, hand, off), restart (the level again) and quit
+ *   (leave the app).
+ * - Two layers: while the game runs, confirm, minimap, menu and recentre
+ *   count; while the pause menu is open, restart, quit, menu (resume) and
+ *   recentre. So restart and quit are never one accidental press away, and
+ *   a controller with four inputs (khr/simple_controller) binds all six:
+ *   restart shares confirm's input and quit minimap's. Within a layer every
+ *   action has an input of its own.
  * - Profiles: khr/simple_controller, oculus/touch_controller,
  *   htc/vive_controller, valve/index_controller,
- *   microsoft/motion_controller; each binds every action to a distinct
- *   input path of that profile. A runtime that refuses one is an error of
- *   the session (the suggested bindings must all be accepted).
- * - hol_xr_buttons maps the held actions to HOL_BTN_* bits.
+ *   microsoft/motion_controller; each binds every action to an input path
+ *   of that profile. A runtime that refuses one is an error of the session
+ *   (the suggested bindings must all be accepted).
+ * - hol_xr_buttons maps the held actions of the current layer to HOL_BTN_*
+ *   bits. An input held while the layer changes (the press that opened the
+ *   menu, a restart held while the menu closes) counts in the new layer
+ *   only once it has been released: one press never acts in both.
+ * - hol_xr_profile_find names the profile of an interaction profile path
+ *   (xrGetCurrentInteractionProfile), and hol_xr_input_label the input an
+ *   action is bound to in it, in words a prompt can show ("A", "left menu").
  */
 #ifndef HOL_XR_BIND_H
 #define HOL_XR_BIND_H
@@ -29,24 +41,43 @@ enum {
     HOL_XR_ACT_MENU,
     HOL_XR_ACT_RECENTRE,
     HOL_XR_ACT_MINIMAP,
+    HOL_XR_ACT_RESTART,
+    HOL_XR_ACT_QUIT,
     HOL_XR_ACT_COUNT
 };
 
 typedef struct hol_xr_profile {
     const char *profile;                 /* /interaction_profiles/... */
+    const char *name;                    /* short: "oculus/touch_controller" */
     const char *path[HOL_XR_ACT_COUNT];  /* per HOL_XR_ACT_* */
+    const char *label[HOL_XR_ACT_COUNT]; /* the input in words: "A" */
 } hol_xr_profile;
 
 #define HOL_XR_NPROFILES 5
 
 /* The profiles (HOL_XR_NPROFILES of them), static data. */
 const hol_xr_profile *hol_xr_profiles(void);
+/* The index of the profile whose path is `path`, or -1. */
+int hol_xr_profile_find(const char *path);
+/* The input action `act` is bound to in profile `profile` (an index), in
+ * words; "" for a bad index. */
+const char *hol_xr_input_label(int profile, int act);
 /* The action's name and localized name for xrCreateAction. */
 const char *hol_xr_action_name(int act);
 const char *hol_xr_action_label(int act);
+/* 1 when action act counts in the layer (in_menu: the pause menu's). */
+int hol_xr_action_in_layer(int act, int in_menu);
 /* The grip pose path of hand 0 (left) or 1 (right). */
 const char *hol_xr_grip_path(int hand);
-/* held[a] nonzero: action a is held. Returns the HOL_BTN_* bits. */
-uint32_t hol_xr_buttons(const int held[HOL_XR_ACT_COUNT]);
+
+/* The layer state of hol_xr_buttons; zero it at the session's start. */
+typedef struct hol_xr_keys {
+    int in_menu;         /* the layer of the last call */
+    unsigned suppressed; /* actions held across a layer change (bits 1 << act) */
+} hol_xr_keys;
+
+/* held[a] nonzero: action a is held; in_menu: the pause menu is open.
+ * Returns the HOL_BTN_* bits (see the contract). */
+uint32_t hol_xr_buttons(hol_xr_keys *k, const int held[HOL_XR_ACT_COUNT], int in_menu);
 
 #endif

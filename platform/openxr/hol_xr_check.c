@@ -1,9 +1,9 @@
 /* hol_xr_check.c - the desktop's read-back check of `holonomy xr
- * --check-frame` (see hol_xr_impl.h): eye 0 read back from the swapchain
+ * --check-frame` (see hol_xr_state.h): eye 0 read back from the swapchain
  * image against an OSMesa render of the same frame desc. Not on Android. */
 #ifndef __ANDROID__
 #define _GNU_SOURCE
-#include "hol_xr_impl.h"
+#include "hol_xr_state.h"
 
 /* OpenXR structs are initialised by their type alone ({XR_TYPE_...}), the
  * rest zero: the API's own idiom. */
@@ -35,10 +35,10 @@ void hol__check(hol__xr *x, const hol_frame_desc *fd, int w, int h)
     hol_png_write_file(path, got, w, h, 0);
     /* the same eye for `holonomy render` (the host's check in make xr-test) */
     const hol_camera *c = &fd->cam;
-    printf("xr: check eye 0 render --eye %.9g,%.9g,%.9g --orient %.9g,%.9g,%.9g,%.9g "
-           "--tan %.17g,%.17g,%.17g,%.17g --size %dx%d\n",
-           c->eye[0], c->eye[1], c->eye[2], c->orient[0], c->orient[1], c->orient[2],
-           c->orient[3], c->tan_left, c->tan_right, c->tan_down, c->tan_up, w, h);
+    hol__say(x, "xr: check eye 0 render --eye %.9g,%.9g,%.9g --orient %.9g,%.9g,%.9g,%.9g "
+                "--tan %.17g,%.17g,%.17g,%.17g --size %dx%d",
+             c->eye[0], c->eye[1], c->eye[2], c->orient[0], c->orient[1], c->orient[2],
+             c->orient[3], c->tan_left, c->tan_right, c->tan_down, c->tan_up, w, h);
     snprintf(path, sizeof path, "%s/osmesa-eye0.png", x->d->check_dir);
     fflush(stdout);
     pid_t pid = fork();
@@ -62,7 +62,7 @@ void hol__check(hol__xr *x, const hol_frame_desc *fd, int w, int h)
     uint8_t *ref2 = NULL;
     int rw = 0, rh = 0;
     if (pid < 0 || st != 0 || hol_png_read_file(path, &ref2, &rw, &rh) || rw != w || rh != h) {
-        printf("xr: check: the OSMesa reference render failed\n");
+        hol__say(x, "xr: check: the OSMesa reference render failed");
     } else {
         long bad = 0;
         int worst = 0;
@@ -75,9 +75,10 @@ void hol__check(hol__xr *x, const hol_frame_desc *fd, int w, int h)
             worst = dmax > worst ? dmax : worst;
             bad += dmax > 8;
         }
-        printf("xr: check frame %ld eye 0 %dx%d: %ld pixels differ by more than 8/255 "
-               "(%.3f %%), largest difference %d\n",
-               x->d->check_frame, w, h, bad, 100.0 * (double)bad / ((double)w * h), worst);
+        hol__say(x, "xr: check frame %ld eye 0 %dx%d (%s swapchain): %ld pixels differ by more "
+                    "than 8/255 (%.3f %%), largest difference %d",
+                 x->d->check_frame, w, h, x->srgb ? "sRGB" : "linear", bad,
+                 100.0 * (double)bad / ((double)w * h), worst);
     }
     free(ref2);
     free(got);

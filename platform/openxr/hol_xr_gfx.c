@@ -1,7 +1,7 @@
 /* hol_xr_gfx.c - the headset's GL context and its OpenXR graphics binding
- * (GLX on Linux, EGL on Android; see hol_xr_impl.h). */
+ * (GLX on Linux, EGL on Android; see hol_xr_state.h). */
 #define _GNU_SOURCE
-#include "hol_xr_impl.h"
+#include "hol_xr_state.h"
 
 /* OpenXR structs are initialised by their type alone ({XR_TYPE_...}), the
  * rest zero: the API's own idiom. */
@@ -17,26 +17,28 @@
 int hol__graphics(hol__xr *x, hol__binding *b)
 {
     PFN_xrGetOpenGLESGraphicsRequirementsKHR req_fn = NULL;
-    HOL__XR(x, xrGetInstanceProcAddr(x->instance, "xrGetOpenGLESGraphicsRequirementsKHR",
-                                     (PFN_xrVoidFunction *)&req_fn));
+    HOL__XR(x, "find the runtime's OpenGL ES support",
+            xrGetInstanceProcAddr(x->instance, "xrGetOpenGLESGraphicsRequirementsKHR",
+                                  (PFN_xrVoidFunction *)&req_fn));
     XrGraphicsRequirementsOpenGLESKHR req = {XR_TYPE_GRAPHICS_REQUIREMENTS_OPENGL_ES_KHR};
-    HOL__XR(x, req_fn(x->instance, x->system, &req));
+    HOL__XR(x, "read the runtime's OpenGL ES requirements", req_fn(x->instance, x->system, &req));
     x->edpy = eglGetDisplay(EGL_DEFAULT_DISPLAY);
     if (!eglInitialize(x->edpy, NULL, NULL))
-        return hol__fail(x, "eglInitialize", XR_ERROR_RUNTIME_FAILURE);
+        return hol__error(x, "cannot initialise EGL (error 0x%x)", (unsigned)eglGetError());
     const EGLint attr[] = {EGL_RENDERABLE_TYPE, 0x40 /* EGL_OPENGL_ES3_BIT */, EGL_SURFACE_TYPE,
                            EGL_PBUFFER_BIT, EGL_RED_SIZE, 8, EGL_GREEN_SIZE, 8, EGL_BLUE_SIZE, 8,
                            EGL_ALPHA_SIZE, 8, EGL_DEPTH_SIZE, 24, EGL_STENCIL_SIZE, 8, EGL_NONE};
     EGLConfig cfg;
     EGLint n = 0;
     if (!eglChooseConfig(x->edpy, attr, &cfg, 1, &n) || n < 1)
-        return hol__fail(x, "eglChooseConfig", XR_ERROR_RUNTIME_FAILURE);
+        return hol__error(x, "EGL has no OpenGL ES 3 configuration with depth and stencil");
     const EGLint cattr[] = {EGL_CONTEXT_CLIENT_VERSION, 3, EGL_NONE};
     x->ectx = eglCreateContext(x->edpy, cfg, EGL_NO_CONTEXT, cattr);
     const EGLint sattr[] = {EGL_WIDTH, 16, EGL_HEIGHT, 16, EGL_NONE};
     x->esurf = eglCreatePbufferSurface(x->edpy, cfg, sattr);
     if (x->ectx == EGL_NO_CONTEXT || !eglMakeCurrent(x->edpy, x->esurf, x->esurf, x->ectx))
-        return hol__fail(x, "eglMakeCurrent", XR_ERROR_RUNTIME_FAILURE);
+        return hol__error(x, "cannot make an OpenGL ES 3 context current (EGL error 0x%x)",
+                          (unsigned)eglGetError());
     x->getproc = (hol_render_getproc)eglGetProcAddress;
     b->type = XR_TYPE_GRAPHICS_BINDING_OPENGL_ES_ANDROID_KHR;
     b->next = NULL;
@@ -51,15 +53,15 @@ typedef GLXContext (*hol__create_ctx_fn)(Display *, GLXFBConfig, GLXContext, Boo
 int hol__graphics(hol__xr *x, hol__binding *b)
 {
     PFN_xrGetOpenGLGraphicsRequirementsKHR req_fn = NULL;
-    HOL__XR(x, xrGetInstanceProcAddr(x->instance, "xrGetOpenGLGraphicsRequirementsKHR",
-                                     (PFN_xrVoidFunction *)&req_fn));
+    HOL__XR(x, "find the runtime's OpenGL support",
+            xrGetInstanceProcAddr(x->instance, "xrGetOpenGLGraphicsRequirementsKHR",
+                                  (PFN_xrVoidFunction *)&req_fn));
     XrGraphicsRequirementsOpenGLKHR req = {XR_TYPE_GRAPHICS_REQUIREMENTS_OPENGL_KHR};
-    HOL__XR(x, req_fn(x->instance, x->system, &req));
+    HOL__XR(x, "read the runtime's OpenGL requirements", req_fn(x->instance, x->system, &req));
     x->dpy = XOpenDisplay(NULL);
     if (!x->dpy) {
-        fprintf(stderr, "holonomy xr: cannot open the X display (DISPLAY=%s)\n",
-                getenv("DISPLAY") ? getenv("DISPLAY") : "");
-        return 1;
+        return hol__error(x, "cannot open the X display (DISPLAY=%s)",
+                          getenv("DISPLAY") ? getenv("DISPLAY") : "");
     }
     const int attr[] = {GLX_X_RENDERABLE, True, GLX_DRAWABLE_TYPE, GLX_WINDOW_BIT,
                         GLX_RENDER_TYPE, GLX_RGBA_BIT, GLX_RED_SIZE, 8, GLX_GREEN_SIZE, 8,
@@ -68,15 +70,13 @@ int hol__graphics(hol__xr *x, hol__binding *b)
     int n = 0;
     GLXFBConfig *cfgs = glXChooseFBConfig(x->dpy, DefaultScreen(x->dpy), attr, &n);
     if (!cfgs || n < 1) {
-        fprintf(stderr, "holonomy xr: no GLX frame buffer configuration with depth and stencil\n");
-        return 1;
+        return hol__error(x, "no GLX frame buffer configuration with depth and stencil");
     }
     x->cfg = cfgs[0];
     XFree(cfgs);
     XVisualInfo *vi = glXGetVisualFromFBConfig(x->dpy, x->cfg);
     if (!vi) {
-        fprintf(stderr, "holonomy xr: no X visual for the GLX configuration\n");
-        return 1;
+        return hol__error(x, "no X visual for the GLX configuration");
     }
     XSetWindowAttributes swa;
     memset(&swa, 0, sizeof swa);
@@ -89,8 +89,7 @@ int hol__graphics(hol__xr *x, hol__binding *b)
     hol__create_ctx_fn create = (hol__create_ctx_fn)glXGetProcAddressARB(
         (const GLubyte *)"glXCreateContextAttribsARB");
     if (!create) {
-        fprintf(stderr, "holonomy xr: GLX has no glXCreateContextAttribsARB\n");
-        return 1;
+        return hol__error(x, "GLX has no glXCreateContextAttribsARB");
     }
     /* a core context at the runtime's minimum or 4.5, whichever is higher */
     int major = (int)XR_VERSION_MAJOR(req.minApiVersionSupported);
@@ -102,9 +101,7 @@ int hol__graphics(hol__xr *x, hol__binding *b)
                          None};
     x->ctx = create(x->dpy, x->cfg, NULL, True, cattr);
     if (!x->ctx || !glXMakeCurrent(x->dpy, x->win, x->ctx)) {
-        fprintf(stderr, "holonomy xr: cannot make a GL %d.%d core context current\n", major,
-                minor);
-        return 1;
+        return hol__error(x, "cannot make a GL %d.%d core context current", major, minor);
     }
     x->getproc = (hol_render_getproc)glXGetProcAddressARB;
     b->type = XR_TYPE_GRAPHICS_BINDING_OPENGL_XLIB_KHR;
@@ -124,8 +121,7 @@ int hol__load_gl(hol__xr *x)
     do {                                                                                      \
         hol_render_proc p = x->getproc("gl" #f);                                              \
         if (!p) {                                                                             \
-            fprintf(stderr, "holonomy xr: GL has no gl%s\n", #f);                             \
-            return 1;                                                                         \
+            return hol__error(x, "GL has no gl%s", #f);                                       \
         }                                                                                     \
         memcpy(&x->gl.f, &p, sizeof p);                                                       \
     } while (0)
@@ -140,9 +136,8 @@ int hol__load_gl(hol__xr *x)
     HOL__LOAD(DeleteFramebuffers);
     HOL__LOAD(DeleteRenderbuffers);
     HOL__LOAD(Viewport);
-    HOL__LOAD(ClearColor);
-    HOL__LOAD(Clear);
-    HOL__LOAD(Finish);
+    HOL__LOAD(Enable);
+    HOL__LOAD(Disable);
 #undef HOL__LOAD
     return 0;
 }

@@ -26,7 +26,7 @@
 #include <openxr/openxr.h>
 
 #include "../../render/hol_render.h"
-#include "hol_xr.h"
+#include "hol_xr_app.h"
 
 typedef struct hol_xr_external {
     XrInstance instance;

@@ -1,0 +1,47 @@
+/* hol_xr_app.h - what the headset layer is given: the app it runs
+ * (hol_xr_app_fns) and the run's options (hol_xr_desc). Types only; the
+ * entries are hol_xr_run (hol_xr.h) and hol_xr_run_session
+ * (hol_xr_session.h), whose contracts say how they are used.
+ */
+#ifndef HOL_XR_APP_H
+#define HOL_XR_APP_H
+
+#include "../../core/hol_app.h"
+#include "../../core/hol_input.h"
+
+struct hol_world;
+
+typedef struct hol_xr_app_fns {
+    void *user;
+    /* One app step with the input; *out_view is what to draw. Returns 0 to
+     * go on, 1 when the app asks to quit, -1 on failure. */
+    int (*step)(void *user, const hol_input *in, const hol_app_view **out_view);
+    struct hol_world *(*world)(void *user);
+    /* A level (re)started in the last step: resident meshes are stale. */
+    int (*level_started)(void *user);
+    /* Optional: the platform's own events once per loop (Android: the
+     * activity's looper; a signal on the desktop). Returns 0 to go on, 1
+     * when the platform wants to leave (the session then ends properly,
+     * through STOPPING; 1 may come again while it does), 2 to leave at
+     * once without waiting for the runtime (a second Ctrl-C). */
+    int (*poll_platform)(void *user);
+} hol_xr_app_fns;
+
+typedef struct hol_xr_desc {
+    const char *app_name;    /* NULL: "Holonomy" */
+    long frames;             /* > 0: quit after this many submitted frames */
+    long check_frame;        /* >= 0 with check_dir: read eye 0 of this frame
+                                back and compare it with an OSMesa render of
+                                the same eye (desktop only) */
+    const char *check_dir;
+    const hol_input *script; /* optional recorded head motion: frame k uses
+                                script[k % nscript]'s head pose (in room
+                                coordinates) instead of the runtime's (the
+                                simulated headset does not move) */
+    long nscript;
+    /* Android only: the JavaVM and the activity object (jobject), for
+     * xrInitializeLoaderKHR and XR_KHR_android_create_instance. */
+    void *android_vm, *android_activity;
+} hol_xr_desc;
+
+#endif

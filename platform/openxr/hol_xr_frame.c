@@ -1,0 +1,272 @@
+/* hol_xr_frame.c - one headset frame (see hol_xr_state.h): xrWaitFrame,
+ * xrBeginFrame, the views, the input record (head, hands, buttons), the
+ * app step, both eyes drawn into their swapchains, xrEndFrame. Every xr*
+ * result is checked: a failure ends the run with its one line. */
+#define _GNU_SOURCE
+#include "hol_xr_state.h"
+
+/* OpenXR structs are initialised by their type alone ({XR_TYPE_...}), the
+ * rest zero: the API's own idiom. */
+#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
+
+static double hol__thread_cpu_ms(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return ts.tv_sec * 1e3 + ts.tv_nsec / 1e6;
+}
+
+/* A space's pose in the room's space at time t: 1 located (position and
+ * orientation valid), 0 not tracked now, -1 a failure (reported). */
+static int hol__locate(hol__xr *x, XrSpace space, XrTime t, float pos[3], float quat[4])
+{
+    XrSpaceLocation loc = {XR_TYPE_SPACE_LOCATION};
+    XrResult r = xrLocateSpace(space, x->stage, t, &loc);
+    if (XR_FAILED(r))
+        return -hol__fail(x, "locate the head and hands", r);
+    if (!(loc.locationFlags & XR_SPACE_LOCATION_POSITION_VALID_BIT) ||
+        !(loc.locationFlags & XR_SPACE_LOCATION_ORIENTATION_VALID_BIT))
+        return 0;
+    hol__pose_in(&loc.pose, pos, quat);
+    return 1;
+}
+
+/* The buttons (hol_xr_buttons: the layer of the app's menu) and both grips. */
+static int hol__hands(hol__xr *x, XrTime t, hol_input *in)
+{
+    XrActiveActionSet as = {x->set, XR_NULL_PATH};
+    XrActionsSyncInfo sy = {XR_TYPE_ACTIONS_SYNC_INFO};
+    sy.countActiveActionSets = 1;
+    sy.activeActionSets = &as;
+    HOL__XR(x, "read the controllers", xrSyncActions(x->session, &sy));
+    int held[HOL_XR_ACT_COUNT];
+    for (int a = 0; a < HOL_XR_ACT_COUNT; a++)
+        if (hol__bool(x, a, &held[a]))
+            return 1;
+    in->buttons |= hol_xr_buttons(&x->keys, held, x->in_menu);
+    for (int h = 0; h < 2; h++) {
+        float gp[3], gq[4];
+        int got = hol__locate(x, x->grip[h], t, gp, gq);
+        if (got < 0)
+            return 1;
+        if (!got)
+            continue;
+        hol_xr_to_room(&x->calib, gp, gq, &in->hand[h]);
+        in->flags |= h ? HOL_INPUT_HAND_R_VALID : HOL_INPUT_HAND_L_VALID;
+        if (!x->grips_located[h]++)
+            hol__say(x, "xr: grip %s located", h ? "right" : "left");
+    }
+    return 0;
+}
+
+/* The input record of this frame; shift: what the scripted head motion
+ * moved the head by (room coordinates), for the eyes. */
+static int hol__input(hol__xr *x, const XrFrameState *fs, hol_input *in, float shift[3])
+{
+    memset(in, 0, sizeof *in);
+    double t = (double)(fs->predictedDisplayTime - x->t0) * 1e-9;
+    in->time_s = t > x->last_t ? t : x->last_t;
+    x->last_t = in->time_s;
+    if (x->life.focused)
+        in->flags |= HOL_INPUT_FOCUSED;
+    if (x->bounds_small)
+        in->flags |= HOL_INPUT_BOUNDS_SMALL;
+    /* the head where the runtime has none: standing in the room's middle */
+    float hp[3] = {0, (float)HOL_XR_EYE_HEIGHT, 0}, hq[4] = {0, 0, 0, 1};
+    int head = hol__locate(x, x->view_space, fs->predictedDisplayTime, hp, hq);
+    if (head < 0)
+        return 1;
+    if (head)
+        in->flags |= HOL_INPUT_HEAD_VALID;
+    if (x->life.focused && hol__hands(x, fs->predictedDisplayTime, in))
+        return 1;
+    if ((in->buttons & HOL_BTN_RECENTRE) && !(x->prev_buttons & HOL_BTN_RECENTRE) && head)
+        hol_xr_recentre(&x->calib, hp, hq);
+    x->prev_buttons = in->buttons;
+    hol_xr_to_room(&x->calib, hp, hq, &in->head);
+    /* scripted head motion (the simulated headset does not move): the
+     * recorded record's head pose, in room coordinates */
+    shift[0] = shift[1] = shift[2] = 0;
+    if (x->d->nscript > 0) {
+        const hol_input *s = &x->d->script[x->submitted % x->d->nscript];
+        if (s->flags & HOL_INPUT_HEAD_VALID) {
+            for (int k = 0; k < 3; k++)
+                shift[k] = s->head.pos[k] - in->head.pos[k];
+            in->head = s->head;
+            in->flags |= HOL_INPUT_HEAD_VALID;
+        }
+        in->buttons |= s->buttons;
+    }
+    return 0;
+}
+
+/* The app step; a quit (the app's, or desc.frames reached) asks the runtime
+ * to end the session. */
+static int hol__step(hol__xr *x, const hol_input *in, const hol_app_view **out_v)
+{
+    double s0 = hol__thread_cpu_ms();
+    int st = x->fns->step(x->fns->user, in, out_v);
+    x->step_now = hol__thread_cpu_ms() - s0;
+    if (st < 0)
+        return hol__error(x, "the app step failed");
+    x->in_menu = *out_v && (*out_v)->paused && x->life.focused;
+    if (x->fns->level_started(x->fns->user))
+        hol_render_invalidate(x->rnd);
+    if ((st > 0 || (x->d->frames > 0 && x->submitted + 1 >= x->d->frames)) &&
+        hol_xr_life_quit(&x->life) == HOL_XR_QUIT_REQUEST_EXIT) {
+        HOL__XR(x, "end the session", xrRequestExitSession(x->session));
+        hol__say(x, "xr: exit requested after %ld frames", x->submitted + 1);
+    }
+    return 0;
+}
+
+/* One eye: drawn where it is (eroom, its room pose), with the view's own
+ * asymmetric field of view, into the swapchain's next image. */
+static int hol__draw_eye(hol__xr *x, int e, const hol_app_view *v, const hol_input *in,
+                    const hol_pose *eroom, double fade, XrCompositionLayerProjectionView *pv)
+{
+    hol__eye *ey = &x->eye[e];
+    const XrView *view = &x->views[e];
+    uint32_t idx = 0;
+    XrSwapchainImageAcquireInfo ai = {XR_TYPE_SWAPCHAIN_IMAGE_ACQUIRE_INFO};
+    HOL__XR(x, "draw the next frame", xrAcquireSwapchainImage(ey->swapchain, &ai, &idx));
+    XrSwapchainImageWaitInfo wi = {XR_TYPE_SWAPCHAIN_IMAGE_WAIT_INFO};
+    wi.timeout = XR_INFINITE_DURATION;
+    HOL__XR(x, "draw the next frame", xrWaitSwapchainImage(ey->swapchain, &wi));
+    if (idx >= ey->nimages)
+        return hol__error(x, "the runtime gave swapchain image %u of %u", idx, ey->nimages);
+    x->gl.BindFramebuffer(HOL__GL_FRAMEBUFFER, ey->fbo[idx]);
+    x->gl.Viewport(0, 0, ey->w, ey->h);
+    hol_frame_desc fd;
+    hol_app_frame_desc(v, e, ey->w, ey->h, 0, &fd);
+    for (int k = 0; k < 3; k++)
+        fd.cam.eye[k] = eroom->pos[k];
+    fd.cam.has_pose = 1;
+    for (int k = 0; k < 4; k++)
+        fd.cam.orient[k] = eroom->quat[k];
+    fd.cam.tan_left = tan(view->fov.angleLeft);
+    fd.cam.tan_right = tan(view->fov.angleRight);
+    fd.cam.tan_down = tan(view->fov.angleDown);
+    fd.cam.tan_up = tan(view->fov.angleUp);
+    if (in->flags & HOL_INPUT_HAND_L_VALID && (fd.flags & HOL_RENDER_MINIMAP_HAND)) {
+        memcpy(fd.hand_pos, in->hand[0].pos, sizeof fd.hand_pos);
+        memcpy(fd.hand_orient, in->hand[0].quat, sizeof fd.hand_orient);
+    }
+    /* the eye's own room state: the cell its position lies in; none
+     * (outside the room): the boundary colour alone */
+    int inside =
+        fade < 1 && hol_motion_eye_state(&v->user, v->head, fd.cam.eye, &fd.user) == HOL_OK;
+    fd.fade = inside ? fade : 1;
+    hol_render_stats rs;
+    memset(&rs, 0, sizeof rs);
+    if (hol_render_frame(x->rnd, &fd, &rs)) {
+        fd.fade = 1; /* never a stale image */
+        hol_render_frame(x->rnd, &fd, &rs);
+    }
+    x->faded += fd.fade > 0 && e == 0;
+    if (fade == 0) { /* the figures of a full view */
+        x->draws[e] = rs.draw_calls;
+        x->tris[e] = rs.triangles;
+    }
+#ifndef __ANDROID__
+    if (e == 0 && x->d->check_dir && x->submitted == x->d->check_frame && inside && fd.fade == 0)
+        hol__check(x, &fd, ey->w, ey->h);
+#endif
+    x->gl.BindFramebuffer(HOL__GL_FRAMEBUFFER, 0);
+    XrSwapchainImageReleaseInfo ri = {XR_TYPE_SWAPCHAIN_IMAGE_RELEASE_INFO};
+    HOL__XR(x, "draw the next frame", xrReleaseSwapchainImage(ey->swapchain, &ri));
+    pv->type = XR_TYPE_COMPOSITION_LAYER_PROJECTION_VIEW;
+    pv->pose = view->pose;
+    pv->fov = view->fov;
+    pv->subImage.swapchain = ey->swapchain;
+    pv->subImage.imageRect.extent.width = ey->w;
+    pv->subImage.imageRect.extent.height = ey->h;
+    return 0;
+}
+
+/* Both eyes where they are (the world never moves), and the safety fade
+ * from how far they are beyond where the app's head may go. *out_rendered:
+ * 1 drawn, 2 drawn faded (cheaper; not in the CPU figures). */
+static int hol__eyes(hol__xr *x, const hol_app_view *v, const hol_input *in,
+                     const float shift[3], XrCompositionLayerProjectionView pv[2],
+                     int *out_rendered)
+{
+    hol_pose eroom[2];
+    double eyes[2][3];
+    for (int e = 0; e < 2; e++) {
+        float ep[3], eq[4];
+        hol__pose_in(&x->views[e].pose, ep, eq);
+        hol_xr_to_room(&x->calib, ep, eq, &eroom[e]);
+        for (int k = 0; k < 3; k++)
+            eyes[e][k] = eroom[e].pos[k] += shift[k];
+    }
+    double fade = hol_xr_fade(eyes, HOL__MARGIN);
+    for (int e = 0; e < 2; e++)
+        if (hol__draw_eye(x, e, v, in, &eroom[e], fade, &pv[e]))
+            return 1;
+    *out_rendered = fade > 0 ? 2 : 1;
+    return 0;
+}
+
+/* The views at the predicted display time: 1 both located, 0 not (no
+ * layer this frame), -1 a failure. */
+static int hol__locate_views(hol__xr *x, XrTime t)
+{
+    XrViewLocateInfo li = {XR_TYPE_VIEW_LOCATE_INFO};
+    li.viewConfigurationType = XR_VIEW_CONFIGURATION_TYPE_PRIMARY_STEREO;
+    li.displayTime = t;
+    li.space = x->stage;
+    XrViewState vs = {XR_TYPE_VIEW_STATE};
+    uint32_t n = 0;
+    for (uint32_t e = 0; e < x->nviews; e++) {
+        x->views[e].type = XR_TYPE_VIEW;
+        x->views[e].next = NULL;
+    }
+    XrResult r = xrLocateViews(x->session, &li, &vs, x->nviews, &n, x->views);
+    if (XR_FAILED(r))
+        return -hol__fail(x, "locate the eyes", r);
+    return n == 2 && (vs.viewStateFlags & XR_VIEW_STATE_POSITION_VALID_BIT) &&
+           (vs.viewStateFlags & XR_VIEW_STATE_ORIENTATION_VALID_BIT);
+}
+
+int hol__frame(hol__xr *x)
+{
+    XrFrameWaitInfo wi = {XR_TYPE_FRAME_WAIT_INFO};
+    XrFrameState fs = {XR_TYPE_FRAME_STATE};
+    HOL__XR(x, "wait for the next frame", xrWaitFrame(x->session, &wi, &fs));
+    double c0 = hol__thread_cpu_ms();
+    XrFrameBeginInfo bi = {XR_TYPE_FRAME_BEGIN_INFO};
+    HOL__XR(x, "begin the next frame", xrBeginFrame(x->session, &bi));
+    if (!x->t0)
+        x->t0 = fs.predictedDisplayTime;
+    int views_ok = hol__locate_views(x, fs.predictedDisplayTime);
+    hol_input in;
+    float shift[3];
+    const hol_app_view *v = NULL;
+    if (views_ok < 0 || hol__input(x, &fs, &in, shift) || hol__step(x, &in, &v))
+        return 1;
+    XrCompositionLayerProjectionView pv[2];
+    memset(pv, 0, sizeof pv);
+    int rendered = 0;
+    if (fs.shouldRender && views_ok && v && hol__eyes(x, v, &in, shift, pv, &rendered))
+        return 1;
+    XrCompositionLayerProjection layer = {XR_TYPE_COMPOSITION_LAYER_PROJECTION};
+    layer.space = x->stage;
+    layer.viewCount = 2;
+    layer.views = pv;
+    const XrCompositionLayerBaseHeader *layers[1] = {(const XrCompositionLayerBaseHeader *)&layer};
+    XrFrameEndInfo ei = {XR_TYPE_FRAME_END_INFO};
+    ei.displayTime = fs.predictedDisplayTime;
+    ei.environmentBlendMode = XR_ENVIRONMENT_BLEND_MODE_OPAQUE;
+    ei.layerCount = rendered ? 1 : 0;
+    ei.layers = layers;
+    HOL__XR(x, "show the frame", xrEndFrame(x->session, &ei));
+    x->submitted++;
+    /* the check frame's OSMesa reference is not the app's time */
+    if (rendered == 1 && x->submitted - 1 != x->d->check_frame &&
+        x->ncpu < (long)(sizeof x->cpu_ms / sizeof x->cpu_ms[0])) {
+        x->step_ms[x->ncpu] = x->step_now;
+        x->cpu_ms[x->ncpu++] = hol__thread_cpu_ms() - c0;
+    }
+    return 0;
+}

@@ -1,0 +1,230 @@
+/* hol_xr_state.h - internal to platform/openxr: the session's state shared
+ * by its files, and how they report. Not a public interface.
+ *
+ * The files, from the top down (a file calls only files below it):
+ *   hol_xr.c          the entries, the instance, the run loop, teardown
+ *   hol_xr_events.c   the runtime's events: lifecycle, loss, a reference
+ *                     space changed, an interaction profile changed
+ *   hol_xr_frame.c    one frame: the input record, the app step, both eyes
+ *   hol_xr_check.c    the desktop read-back check of one eye
+ *   hol_xr_views.c    view configuration and swapchains
+ *   hol_xr_actions.c  actions, bindings, reference spaces, stage bounds
+ *   hol_xr_gfx.c      the GL context and its graphics binding
+ *   hol_xr_state.c    reporting: progress lines and the one failure line
+ * and the pure parts every one of them may use: hol_xr_room.h,
+ * hol_xr_bind.h, hol_xr_pick.h, hol_xr_text.h.
+ *
+ * Contract
+ * - One hol__xr per run, zeroed at start; every XR handle not yet made is
+ *   XR_NULL_HANDLE and every array NULL, so teardown destroys exactly what
+ *   exists. Arrays sized by the runtime (views, swapchain images) are
+ *   allocated once before the first frame.
+ * - Reporting: hol__say prints a progress line ("xr: ...": stdout on the
+ *   desktop, logcat on Android). hol__fail reports a failed call as one
+ *   line in words (hol_xr_text.h; stderr, or logcat's error level on
+ *   Android), marks the run failed, and returns 1; only the first failure
+ *   of a run is printed, so a run ends with one clear line. A result that
+ *   means the session or the instance is gone also sets `lost`.
+ * - HOL__XR(x, doing, call): the call, and on failure return
+ *   hol__fail(x, doing, result) from the calling function; `doing` says
+ *   in words what the call was for ("begin the session").
+ * - `external` set: the instance, system and GL context are the caller's
+ *   (hol_xr_run_session): nothing here creates or destroys them.
+ */
+#ifndef HOL_XR_STATE_H
+#define HOL_XR_STATE_H
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#ifdef __ANDROID__
+#include <EGL/egl.h>
+#include <jni.h>
+#define XR_USE_PLATFORM_ANDROID
+#define XR_USE_GRAPHICS_API_OPENGL_ES
+#else
+#include <X11/Xlib.h>
+#include <GL/glx.h>
+#define XR_USE_PLATFORM_XLIB
+#define XR_USE_GRAPHICS_API_OPENGL
+#endif
+#include <openxr/openxr.h>
+#include <openxr/openxr_platform.h>
+
+#include "../../core/hol_motion.h"
+#include "../../render/hol_app_frame.h"
+#include "../../render/hol_render.h"
+#include "hol_xr_app.h"
+#include "hol_xr_bind.h"
+#include "hol_xr_pick.h"
+#include "hol_xr_room.h"
+#include "hol_xr_text.h"
+
+/* GL entry points this layer calls itself (the renderer loads its own) */
+typedef unsigned int hol__GLenum;
+typedef unsigned int hol__GLuint;
+typedef int hol__GLint;
+typedef int hol__GLsizei;
+#define HOL__GL_FRAMEBUFFER 0x8D40
+#define HOL__GL_RENDERBUFFER 0x8D41
+#define HOL__GL_COLOR_ATTACHMENT0 0x8CE0
+#define HOL__GL_DEPTH_STENCIL_ATTACHMENT 0x821A
+#define HOL__GL_DEPTH24_STENCIL8 0x88F0
+#define HOL__GL_TEXTURE_2D 0x0DE1
+#define HOL__GL_FRAMEBUFFER_COMPLETE 0x8CD5
+#define HOL__GL_FRAMEBUFFER_SRGB 0x8DB9
+
+typedef struct hol__gl {
+    void (*GenFramebuffers)(hol__GLsizei, hol__GLuint *);
+    void (*BindFramebuffer)(hol__GLenum, hol__GLuint);
+    void (*FramebufferTexture2D)(hol__GLenum, hol__GLenum, hol__GLenum, hol__GLuint, hol__GLint);
+    void (*GenRenderbuffers)(hol__GLsizei, hol__GLuint *);
+    void (*BindRenderbuffer)(hol__GLenum, hol__GLuint);
+    void (*RenderbufferStorage)(hol__GLenum, hol__GLenum, hol__GLsizei, hol__GLsizei);
+    void (*FramebufferRenderbuffer)(hol__GLenum, hol__GLenum, hol__GLenum, hol__GLuint);
+    hol__GLenum (*CheckFramebufferStatus)(hol__GLenum);
+    void (*DeleteFramebuffers)(hol__GLsizei, const hol__GLuint *);
+    void (*DeleteRenderbuffers)(hol__GLsizei, const hol__GLuint *);
+    void (*Viewport)(hol__GLint, hol__GLint, hol__GLsizei, hol__GLsizei);
+    void (*Enable)(hol__GLenum);
+    void (*Disable)(hol__GLenum);
+} hol__gl;
+
+/* metres the app's head keeps from the hedges: the motion's default margin
+ * (hol_motion_desc), where the safety fade begins */
+#define HOL__MARGIN 0.15
+
+#ifdef __ANDROID__
+typedef XrSwapchainImageOpenGLESKHR hol__image;
+#define HOL__XR_TYPE_IMAGE XR_TYPE_SWAPCHAIN_IMAGE_OPENGL_ES_KHR
+typedef XrGraphicsBindingOpenGLESAndroidKHR hol__binding;
+#else
+typedef XrSwapchainImageOpenGLKHR hol__image;
+#define HOL__XR_TYPE_IMAGE XR_TYPE_SWAPCHAIN_IMAGE_OPENGL_KHR
+typedef XrGraphicsBindingOpenGLXlibKHR hol__binding;
+#endif
+
+typedef struct hol__eye {
+    XrSwapchain swapchain;
+    int32_t w, h;
+    uint32_t nimages;
+    hol__image *images; /* nimages, from the runtime */
+    hol__GLuint *fbo;   /* one per image */
+    hol__GLuint depth;
+} hol__eye;
+
+typedef struct hol__xr {
+    const hol_xr_desc *d;
+    const hol_xr_app_fns *fns;
+    XrInstance instance;
+    XrSystemId system;
+    XrSession session;
+    XrSpace stage, view_space, grip[2];
+    int space_type;  /* HOL_XR_SPACE_STAGE or _LOCAL (hol_xr_pick.h) */
+    double origin_y; /* the room space's origin in that space (LOCAL: -1.6) */
+    XrActionSet set;
+    XrAction grip_action, act[HOL_XR_ACT_COUNT];
+    XrPath hand_path[2];
+    uint32_t nviews;  /* of the stereo configuration: 2 */
+    XrView *views;    /* nviews, located each frame */
+    hol__eye eye[2];
+    int srgb;         /* the swapchains store sRGB */
+    hol_xr_life life; /* the lifecycle (hol_xr_room.h) */
+    hol_xr_keys keys; /* the action layer (hol_xr_bind.h) */
+    int in_menu;      /* the app's pause menu was open after the last step */
+    int profile[2];   /* the hands' interaction profiles (hol_xr_bind.h), -1 none */
+    int reached_focused;
+    int failed;       /* a failure was reported: the run ends with status 1 */
+    int lost;         /* the session or the instance is gone */
+    int external;     /* the instance and GL context are the caller's */
+    hol_xr_calib calib;
+    int have_bounds;  /* the runtime gave the stage bounds: */
+    float bounds_w, bounds_d; /* full width (x) and depth (z), metres */
+    int bounds_small;
+    hol__gl gl;
+    hol_render *rnd;
+    hol_render_getproc getproc;
+    long submitted;
+    XrTime t0;
+    double last_t;
+    unsigned prev_buttons;
+    int grips_located[2];
+    long faded; /* frames drawn with the safety fade */
+    double cpu_ms[4096], step_ms[4096];
+    long ncpu;
+    double step_now;
+    long draws[2], tris[2];
+#ifdef __ANDROID__
+    EGLDisplay edpy;
+    EGLContext ectx;
+    EGLSurface esurf;
+#else
+    Display *dpy;
+    Window win;
+    GLXContext ctx;
+    GLXFBConfig cfg;
+    Colormap cmap;
+#endif
+} hol__xr;
+
+/* hol_xr_state.c: reporting (see the contract) */
+#if defined(__GNUC__)
+__attribute__((format(printf, 2, 3)))
+#endif
+void hol__say(hol__xr *x, const char *fmt, ...);
+#if defined(__GNUC__)
+__attribute__((format(printf, 2, 3)))
+#endif
+int hol__error(hol__xr *x, const char *fmt, ...); /* one failure line; returns 1;
+                                                   x may be NULL */
+int hol__fail(hol__xr *x, const char *doing, XrResult r);
+
+#define HOL__XR(x, doing, call)                                                               \
+    do {                                                                                      \
+        XrResult hol__r = (call);                                                             \
+        if (XR_FAILED(hol__r))                                                                \
+            return hol__fail((x), (doing), hol__r);                                           \
+    } while (0)
+
+/* hol_xr_gfx.c: make the GL context current and fill the binding; load
+ * the GL entry points this layer calls itself */
+int hol__graphics(hol__xr *x, hol__binding *b);
+int hol__load_gl(hol__xr *x);
+/* hol_xr_actions.c: the action set and suggested bindings (on the
+ * instance); attach, grip and reference spaces (on the session); the
+ * stage bounds (read again after a change); a boolean action's state
+ * (*out_held); the hands' current interaction profiles */
+int hol__actions(hol__xr *x);
+int hol__spaces(hol__xr *x);
+int hol__bounds(hol__xr *x);
+int hol__bool(hol__xr *x, int act, int *out_held);
+int hol__profiles_now(hol__xr *x);
+/* hol_xr_views.c: the stereo view configuration (x->nviews, x->views) and
+ * one swapchain per eye with a framebuffer per image */
+int hol__views(hol__xr *x);
+int hol__swapchains(hol__xr *x);
+void hol__views_free(hol__xr *x);
+#ifndef __ANDROID__
+/* hol_xr_check.c: eye 0 read back against an OSMesa render of fd */
+void hol__check(hol__xr *x, const hol_frame_desc *fd, int w, int h);
+#endif
+/* hol_xr_frame.c: one frame (xrWaitFrame to xrEndFrame); 0 ok, 1 failure */
+int hol__frame(hol__xr *x);
+/* hol_xr_events.c: every waiting event; sets x->life.done to leave */
+void hol__events(hol__xr *x);
+
+static inline void hol__pose_in(const XrPosef *p, float pos[3], float quat[4])
+{
+    pos[0] = p->position.x;
+    pos[1] = p->position.y;
+    pos[2] = p->position.z;
+    quat[0] = p->orientation.x;
+    quat[1] = p->orientation.y;
+    quat[2] = p->orientation.z;
+    quat[3] = p->orientation.w;
+}
+
+#endif
