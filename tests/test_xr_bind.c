@@ -124,6 +124,18 @@ static void test_every_binding_is_in_its_profile(void **state)
     assert_false(spec_has(spec_of("/interaction_profiles/oculus/touch_controller"),
                           "/user/hand/right/input/x/click"));
     assert_int_equal(hol_xr_profile_find("/interaction_profiles/khr/simple"), -1);
+    /* the input record's device: the prompts name this profile's buttons */
+    static const struct {
+        const char *path;
+        uint32_t device;
+    } dev[] = {{"/interaction_profiles/khr/simple_controller", HOL_DEVICE_XR_SIMPLE},
+               {"/interaction_profiles/oculus/touch_controller", HOL_DEVICE_XR_TOUCH},
+               {"/interaction_profiles/htc/vive_controller", HOL_DEVICE_XR_VIVE},
+               {"/interaction_profiles/valve/index_controller", HOL_DEVICE_XR_INDEX},
+               {"/interaction_profiles/microsoft/motion_controller", HOL_DEVICE_XR_WMR}};
+    for (size_t i = 0; i < sizeof dev / sizeof dev[0]; i++)
+        assert_int_equal(hol_xr_profile_device(hol_xr_profile_find(dev[i].path)), dev[i].device);
+    assert_int_equal(hol_xr_profile_device(-1), HOL_DEVICE_XR);
     assert_int_equal(hol_xr_profile_find(NULL), -1);
     assert_string_equal(hol_xr_input_label(HOL_XR_NPROFILES, 0), "");
 }

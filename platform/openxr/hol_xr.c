@@ -239,7 +239,9 @@ static int hol__main(const hol_xr_desc *desc, const hol_xr_app_fns *fns,
 #endif
     int rc = x->failed;
     free(x);
+#ifndef __ANDROID__
     fflush(stdout);
+#endif
     return rc;
 }
 

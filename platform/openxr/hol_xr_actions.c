@@ -185,6 +185,7 @@ int hol__bool(hol__xr *x, int a, int *out_held)
  * changed event): x->profile[h], one line each that changed. */
 int hol__profiles_now(hol__xr *x)
 {
+    int any = 0;
     for (int h = 0; h < 2; h++) {
         XrInteractionProfileState st = {XR_TYPE_INTERACTION_PROFILE_STATE};
         HOL__XR(x, "read the controllers' profile",
@@ -201,6 +202,8 @@ int hol__profiles_now(hol__xr *x)
                      : p >= 0                              ? hol_xr_profiles()[p].name
                                                            : path);
         x->profile[h] = p;
+        any |= st.interactionProfile != XR_NULL_PATH && p < 0;
     }
+    x->any_profile = any;
     return 0;
 }

@@ -47,6 +47,14 @@ int hol_xr_profile_find(const char *path)
     return -1;
 }
 
+uint32_t hol_xr_profile_device(int profile)
+{
+    static const uint32_t dev[HOL_XR_NPROFILES] = {HOL_DEVICE_XR_SIMPLE, HOL_DEVICE_XR_TOUCH,
+                                                    HOL_DEVICE_XR_VIVE, HOL_DEVICE_XR_INDEX,
+                                                    HOL_DEVICE_XR_WMR};
+    return profile >= 0 && profile < HOL_XR_NPROFILES ? dev[profile] : HOL_DEVICE_XR;
+}
+
 const char *hol_xr_input_label(int profile, int act)
 {
     if (profile < 0 || profile >= HOL_XR_NPROFILES || act < 0 || act >= HOL_XR_ACT_COUNT)

@@ -28,8 +28,10 @@
  *   menu, a restart held while the menu closes) counts in the new layer
  *   only once it has been released: one press never acts in both.
  * - hol_xr_profile_find names the profile of an interaction profile path
- *   (xrGetCurrentInteractionProfile), and hol_xr_input_label the input an
- *   action is bound to in it, in words a prompt can show ("A", "left menu").
+ *   (xrGetCurrentInteractionProfile), hol_xr_profile_device its device in
+ *   the input record (hol_input.device: the prompts name its buttons), and
+ *   hol_xr_input_label the input an action is bound to in it, in words a
+ *   prompt can show ("A", "left menu").
  */
 #ifndef HOL_XR_BIND_H
 #define HOL_XR_BIND_H
@@ -59,6 +61,9 @@ typedef struct hol_xr_profile {
 const hol_xr_profile *hol_xr_profiles(void);
 /* The index of the profile whose path is `path`, or -1. */
 int hol_xr_profile_find(const char *path);
+/* The hol_input device (HOL_DEVICE_XR_*) of profile `profile` (an index);
+ * HOL_DEVICE_XR for any other. */
+uint32_t hol_xr_profile_device(int profile);
 /* The input action `act` is bound to in profile `profile` (an index), in
  * words; "" for a bad index. */
 const char *hol_xr_input_label(int profile, int act);

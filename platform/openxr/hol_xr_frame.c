@@ -59,6 +59,17 @@ static int hol__hands(hol__xr *x, XrTime t, hol_input *in)
     return 0;
 }
 
+/* The device in use, for the prompts (HOL_DEVICE_*): the right hand's
+ * profile (it holds confirm), else the left's; none known: any XR
+ * controller, or none at all. */
+static uint32_t hol__device(const hol__xr *x)
+{
+    int p = x->profile[1] >= 0 ? x->profile[1] : x->profile[0];
+    if (p >= 0)
+        return hol_xr_profile_device(p);
+    return x->any_profile ? HOL_DEVICE_XR : HOL_DEVICE_NONE;
+}
+
 /* The input record of this frame; shift: what the scripted head motion
  * moved the head by (room coordinates), for the eyes. */
 static int hol__input(hol__xr *x, const XrFrameState *fs, hol_input *in, float shift[3])
@@ -82,7 +93,9 @@ static int hol__input(hol__xr *x, const XrFrameState *fs, hol_input *in, float s
         return 1;
     if ((in->buttons & HOL_BTN_RECENTRE) && !(x->prev_buttons & HOL_BTN_RECENTRE) && head)
         hol_xr_recentre(&x->calib, hp, hq);
+    in->pressed = in->buttons & ~x->prev_buttons; /* the runtime keeps no taps */
     x->prev_buttons = in->buttons;
+    in->device = hol__device(x);
     hol_xr_to_room(&x->calib, hp, hq, &in->head);
     /* scripted head motion (the simulated headset does not move): the
      * recorded record's head pose, in room coordinates */
@@ -96,6 +109,7 @@ static int hol__input(hol__xr *x, const XrFrameState *fs, hol_input *in, float s
             in->flags |= HOL_INPUT_HEAD_VALID;
         }
         in->buttons |= s->buttons;
+        in->pressed |= s->pressed;
     }
     return 0;
 }

@@ -136,6 +136,7 @@ typedef struct hol__xr {
     hol_xr_keys keys; /* the action layer (hol_xr_bind.h) */
     int in_menu;      /* the app's pause menu was open after the last step */
     int profile[2];   /* the hands' interaction profiles (hol_xr_bind.h), -1 none */
+    int any_profile;  /* a hand has a profile not in hol_xr_bind.h's list */
     int reached_focused;
     int failed;       /* a failure was reported: the run ends with status 1 */
     int lost;         /* the session or the instance is gone */
