@@ -14,6 +14,7 @@
 #   make web-serve  serve build/web on http://127.0.0.1:8080/ (WEB_PORT)
 #   make web-test   the web build in headless chromium, on an emulated Quest 3
 #   make deps-web   Debian's emscripten and chromium, npm's puppeteer-core and iwer
+#   make quest-link-check  the APK's sources compiled and linked for this machine
 #   make clean      remove build outputs
 #
 # Variables: CC (gcc or clang), BUILD (output folder), FUZZ_TIME (seconds),
@@ -94,7 +95,8 @@ APT_GET = $$SUDO env DEBIAN_FRONTEND=noninteractive apt-get -o DPkg::Lock::Timeo
 
 .PHONY: web web-serve web-test deps-web
 .PHONY: all test purity unit render-test cli-test fuzz-replay fuzz bench san clean deps xr \
-        deps-cross check-clang cross-test run quest quest-help deps-quest quest-check check-hid-libusb deps-xr xr-test soak
+        deps-cross check-clang cross-test run quest quest-help deps-quest quest-check check-hid-libusb deps-xr xr-test soak \
+        deps-quest-link quest-link-check
 
 all: $(BUILD)/holonomy
 
@@ -349,6 +351,19 @@ deps-web:
 
 web-test: web deps-web $(BUILD)/holonomy
 	@HOLONOMY=$(BUILD)/holonomy WEB=$(WEB) node tests/web/run.mjs
+
+# The APK's native library without the NDK (tests/quest_link_check.sh):
+# every source build_apk.sh links (but the NDK's glue and the entry that
+# needs its header) compiled for this machine with __ANDROID__, against
+# Debian's copies of the NDK's headers, and linked with --no-undefined
+# against exactly the libraries build_apk.sh names.
+QUEST_LINK_DEB_PACKAGES := android-liblog-dev android-libnativehelper-dev libopenxr-dev \
+  libegl-dev zlib1g-dev
+deps-quest-link:
+	@$(MAKE) -s deps DEB_PACKAGES="$(QUEST_LINK_DEB_PACKAGES)"
+
+quest-link-check: deps-quest-link
+	@CC=$(CC) sh tests/quest_link_check.sh
 
 clean:
 	rm -rf $(BUILD)

@@ -1,7 +1,9 @@
 #!/bin/sh
 # check_quest.sh - what CI can check of the Quest build without the NDK:
 # 1. the manifest packages with Debian's aapt against the Android framework
-#    resources, and the package says what the Quest needs (badging);
+#    resources, and the package says what the Quest needs (badging) and
+#    what the Khronos loader needs to find the runtime (the broker
+#    providers, the runtime and layer services in <queries>);
 # 2. `make quest` without NDK/OPENXR_LOADER stops with exit status 2 and
 #    one line naming both.
 set -eu
@@ -21,10 +23,13 @@ want "targetSdkVersion:'32'"
 want "uses-feature: name='android.hardware.vr.headtracking'"
 want "uses-gl-es: '0x30002'"
 want "uses-permission: name='org.khronos.openxr.permission.OPENXR'"
+want "uses-permission: name='org.khronos.openxr.permission.OPENXR_SYSTEM'"
 want "launchable-activity: name='android.app.NativeActivity'"
 aapt dump xmltree "$tmp/m.apk" AndroidManifest.xml >"$tmp/tree"
 for s in com.oculus.intent.category.VR org.khronos.openxr.intent.category.IMMERSIVE_HMD \
-         org.khronos.openxr.OpenXRRuntimeService android.app.lib_name; do
+         org.khronos.openxr.OpenXRRuntimeService org.khronos.openxr.OpenXRApiLayerService \
+         "org.khronos.openxr.runtime_broker;org.khronos.openxr.system_runtime_broker" \
+         com.oculus.vr.focusaware android.app.lib_name; do
     grep -q "$s" "$tmp/tree" || fail "manifest tree lacks $s"
 done
 grep -q '"holonomy"' "$tmp/tree" || fail "lib_name is not holonomy"

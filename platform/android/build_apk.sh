@@ -23,9 +23,27 @@ set -eu
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
 
+# What libholonomy.so is made of, named once. APK_SRC and APK_LIBS are
+# what `make quest-link-check` compiles and links for this machine
+# (--link-list prints them); NDK_SRC and NDK_LIBS only the NDK can build:
+# the NativeActivity entry needs the NDK's native_app_glue header, and the
+# glue and the entry are the only users of libandroid (ALooper, AInputQueue,
+# AConfiguration, ANativeActivity_finish).
+APK_SRC="core/*.c render/*.c platform/openxr/*.c platform/file/hol_sink_posix.c
+  platform/android/quest_shell.c"
+APK_LIBS="-llog -lEGL -lz -lm" # with the OpenXR loader; zlib: render/hol_png.c
+NDK_SRC="platform/android/android_main.c"
+NDK_LIBS="-landroid"
+
 case "${1:-}" in
 -h|--help)
     sed -n '2,21p' "$0" | sed 's/^# \{0,1\}//'
+    exit 0 ;;
+--link-list)
+    # for tests/quest_link_check.sh: the sources (relative to the top of the
+    # tree) and the libraries, the OpenXR loader first
+    (cd "$root" && echo "src" $APK_SRC)
+    echo "libs -lopenxr_loader $APK_LIBS"
     exit 0 ;;
 "") ;;
 *)
@@ -66,20 +84,18 @@ stage="$BUILD/quest"
 rm -rf "$stage"
 mkdir -p "$stage/apk/lib/arm64-v8a"
 
-# The native library: core (with the session), renderer, the session's
-# POSIX sink (logs and recordings in the app's files directory), OpenXR
-# layer (GLES binding) and the NativeActivity shell, all compiled and tested
-# on the desktop except the shell.
+# The native library: core (with the session), renderer, OpenXR layer (GLES
+# binding), the session's POSIX sink (logs and recordings in the app's files
+# directory), the Quest shell (all compiled and linked for this machine by
+# `make quest-link-check`) and the NativeActivity entry with the NDK's glue.
 glue="$NDK/sources/android/native_app_glue"
-srcs=$(ls "$root"/core/*.c "$root"/render/*.c "$root"/platform/openxr/*.c \
-          "$root"/platform/file/hol_sink_posix.c \
-          "$root"/platform/android/*.c "$glue"/android_native_app_glue.c 2>/dev/null)
+srcs=$(cd "$root" && ls $APK_SRC $NDK_SRC | sed "s|^|$root/|")
 # shellcheck disable=SC2086
 "$cc" -std=c11 -O2 -g -fPIC -shared -D_DEFAULT_SOURCE -DHOL_GLES=1 \
     -I"$OPENXR_INCLUDE" -I"$root" -I"$glue" \
     -Wl,--no-undefined -Wl,-z,max-page-size=16384 -u ANativeActivity_onCreate \
-    -o "$stage/apk/lib/arm64-v8a/libholonomy.so" $srcs \
-    "$OPENXR_LOADER" -landroid -llog -lEGL -lGLESv3 -lm
+    -o "$stage/apk/lib/arm64-v8a/libholonomy.so" $srcs "$glue"/android_native_app_glue.c \
+    "$OPENXR_LOADER" $NDK_LIBS $APK_LIBS
 cp "$OPENXR_LOADER" "$stage/apk/lib/arm64-v8a/libopenxr_loader.so"
 
 aapt package -f -M "$here/AndroidManifest.xml" -I "$FRAMEWORK_RES" \

@@ -1,0 +1,140 @@
+/* quest_shell.c - the Quest app on a quest_host (see quest_shell.h): the
+ * session under the OpenXR layer, files through the POSIX sink, every
+ * message through logcat. */
+#include "quest_shell.h"
+
+#include <android/log.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "../../core/hol_campaign.h"
+#include "../../core/hol_session.h"
+#include "../file/hol_sink_posix.h"
+#include "../openxr/hol_xr.h"
+
+typedef struct quest {
+    const quest_host *host;
+    hol_session *session;
+    hol_sink_posix logs, recs;
+    int resumed;
+    int destroy;
+} quest;
+
+#if defined(__GNUC__)
+__attribute__((format(printf, 2, 3)))
+#endif
+static void quest_log(int prio, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    __android_log_vprint(prio, "holonomy", fmt, ap);
+    va_end(ap);
+}
+
+static int quest_step(void *user, const hol_input *in, const hol_app_view **out_view)
+{
+    quest *q = user;
+    hol_input i2 = *in;
+    if (!q->resumed)
+        i2.flags &= ~HOL_INPUT_FOCUSED;
+    int over = 0;
+    hol_err err = hol_session_step(q->session, &i2, &over);
+    *out_view = hol_app_get_view(hol_session_app(q->session));
+    if (err)
+        quest_log(ANDROID_LOG_ERROR, "%s", hol_session_message(q->session));
+    return err ? -1 : over;
+}
+
+static struct hol_world *quest_world(void *user)
+{
+    return hol_app_world(hol_session_app(((quest *)user)->session));
+}
+
+static int quest_level_started(void *user)
+{
+    return hol_app_get_events(hol_session_app(((quest *)user)->session))->level_started;
+}
+
+static int quest_poll(void *user)
+{
+    quest *q = user;
+    q->destroy |= q->host->poll(q->host->user, &q->resumed) != 0;
+    return q->destroy;
+}
+
+/* The two folders in FILES (logs, recordings) and their sinks. 0 ok. */
+static int quest_folders(quest *q, const char *files)
+{
+    char logs[4096], recs[4096];
+    snprintf(logs, sizeof logs, "%s/logs", files);
+    snprintf(recs, sizeof recs, "%s/recordings", files);
+    if (hol_sink_posix_make_dir(logs) || hol_sink_posix_make_dir(recs) ||
+        hol_sink_posix_init(&q->logs, logs) || hol_sink_posix_init(&q->recs, recs))
+        return 1;
+    quest_log(ANDROID_LOG_INFO, "logs in %s, recordings in %s", logs, recs);
+    return 0;
+}
+
+/* The session: the default campaign, logs and a recording in the app's
+ * files directory (the external one, else the internal). 0 ok. */
+static int quest_session(quest *q)
+{
+    static hol_level levels[HOL_CAMPAIGN_LEVELS];
+    const char *ext = q->host->files_dir, *in = q->host->internal_dir;
+    if (hol_campaign_default(1, levels)) {
+        quest_log(ANDROID_LOG_ERROR, "cannot make the default campaign");
+        return 1;
+    }
+    if ((!ext || quest_folders(q, ext)) && (!in || quest_folders(q, in))) {
+        quest_log(ANDROID_LOG_ERROR, "cannot make the logs and recordings folders in %s or %s",
+                  ext ? ext : "(no external files directory)", in ? in : "(none)");
+        return 1;
+    }
+    hol_session_desc d;
+    memset(&d, 0, sizeof d);
+    d.levels = levels;
+    d.nlevels = HOL_CAMPAIGN_LEVELS;
+    d.log = &q->logs.sink;
+    d.append = 1;
+    d.rec = &q->recs.sink;
+    hol_sink_posix_meta(&d.meta, NULL);
+    char rec_name[96], msg[256];
+    snprintf(rec_name, sizeof rec_name, "%s.rec", d.meta.session);
+    d.rec_name = rec_name;
+    if (hol_session_create(&d, &q->session, msg, sizeof msg)) {
+        quest_log(ANDROID_LOG_ERROR, "%s", msg);
+        return 1;
+    }
+    return 0;
+}
+
+int quest_run(const quest_host *host)
+{
+    static quest q; /* the sinks' paths are large */
+    memset(&q, 0, sizeof q);
+    for (int i = 0; i < HOL_SINK_MAX_OPEN; i++) /* nothing open: fini closes nothing */
+        q.logs.fd[i] = q.recs.fd[i] = -1;
+    q.host = host;
+    q.resumed = 1;
+    int rc = 1;
+    if (quest_session(&q) == 0) {
+        hol_xr_desc d;
+        memset(&d, 0, sizeof d);
+        d.check_frame = -1;
+        d.android_vm = host->vm;
+        d.android_activity = host->activity;
+        hol_xr_app_fns fns = {.user = &q, .step = quest_step, .world = quest_world,
+                              .level_started = quest_level_started, .poll_platform = quest_poll};
+        rc = hol_xr_run(&d, &fns);
+        hol_err e = q.destroy ? hol_session_abort(q.session) : hol_session_finish(q.session);
+        if (e) {
+            quest_log(ANDROID_LOG_ERROR, "%s", hol_session_message(q.session));
+            rc = 1;
+        }
+        hol_session_destroy(q.session);
+    }
+    hol_sink_posix_fini(&q.logs);
+    hol_sink_posix_fini(&q.recs);
+    return rc;
+}

@@ -1,0 +1,71 @@
+#!/bin/sh
+# quest_link_check.sh - `make quest-link-check`: the Quest APK's native
+# library as far as this machine can build it, with no NDK and no stand-in
+# headers. Every source that platform/android/build_apk.sh links into
+# libholonomy.so (its APK_SRC, from `build_apk.sh --link-list`; all but the
+# NDK's native_app_glue and the NativeActivity entry that needs its header)
+# is compiled for this machine with the Android branches on (__ANDROID__, as
+# the NDK's compiler defines it), against Debian's copies of the NDK's
+# headers: EGL, JNI (android-libnativehelper-dev), android/log.h
+# (android-liblog-dev) and OpenXR (libopenxr-dev). Then the objects are
+# linked into a shared library with --no-undefined against exactly the
+# libraries build_apk.sh names (APK_LIBS and the OpenXR loader), Debian's
+# builds of each: a library missing from build_apk.sh leaves a symbol
+# undefined and fails here. With --as-needed, every named library must also
+# be needed (a stale one fails too).
+set -eu
+root=$(cd "$(dirname "$0")/.." && pwd)
+CC=${CC:-gcc}
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+fail() { echo "quest-link-check: FAIL: $*" >&2; exit 1; }
+
+list=$(sh "$root/platform/android/build_apk.sh" --link-list) || fail "build_apk.sh --link-list"
+srcs=$(echo "$list" | sed -n 's/^src //p')
+libs=$(echo "$list" | sed -n 's/^libs //p')
+[ -n "$srcs" ] && [ -n "$libs" ] || fail "build_apk.sh --link-list printed no sources or libraries"
+
+# Debian's builds of the named libraries (liblog lives in its own folder)
+ma=$($CC -print-multiarch)
+hostlibs=""
+for l in $libs; do
+    case "$l" in
+    -llog) hostlibs="$hostlibs -L/usr/lib/$ma/android -llog" ;;
+    -l*) hostlibs="$hostlibs $l" ;;
+    *) fail "build_apk.sh names '$l', not a -l library" ;;
+    esac
+done
+for h in /usr/include/android/android/log.h /usr/include/android/nativehelper/jni.h \
+         /usr/include/EGL/egl.h /usr/include/openxr/openxr_platform.h; do
+    [ -f "$h" ] || fail "$h missing (make deps-quest-link)"
+done
+
+flags="-std=c11 -O2 -g -fPIC -D_DEFAULT_SOURCE -DHOL_GLES=1 -D__ANDROID__
+  -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes -Wvla
+  -isystem /usr/include/android -isystem /usr/include/android/nativehelper -I$root"
+n=0
+objs=""
+for f in $srcs; do
+    o="$tmp/$(echo "$f" | tr / _).o"
+    # shellcheck disable=SC2086
+    $CC $flags -c "$root/$f" -o "$o" || fail "$f does not compile with __ANDROID__"
+    objs="$objs $o"
+    n=$((n + 1))
+done
+# shellcheck disable=SC2086
+$CC -shared -Wl,--no-undefined -Wl,--as-needed -o "$tmp/libholonomy.so" $objs $hostlibs \
+    2>"$tmp/link.err" || {
+    sed 's/^/  /' "$tmp/link.err" | grep -v "^  collect2" | head -20 >&2
+    fail "libholonomy.so does not link with --no-undefined against $libs (build_apk.sh)"
+}
+# every named library is needed (--as-needed keeps only those)
+needed=$(readelf -d "$tmp/libholonomy.so" | sed -n 's/.*(NEEDED).*\[\(.*\)\]/\1/p')
+for l in $libs; do
+    name=${l#-l}
+    echo "$needed" | grep -q "^lib$name\.so" ||
+        fail "build_apk.sh links $l, which nothing in the library needs"
+done
+# the entry android_main.c calls is there
+nm -D --defined-only "$tmp/libholonomy.so" | grep -q " T quest_run$" || fail "no quest_run"
+echo "quest-link-check: $n sources compiled with __ANDROID__; libholonomy.so linked with" \
+     "--no-undefined against $libs (Debian's); needs" $(echo "$needed" | tr '\n' ' ')
