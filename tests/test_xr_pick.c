@@ -31,17 +31,21 @@ static void test_space(void **state)
     double y = 99;
     const int both[] = {XR_REFERENCE_SPACE_TYPE_VIEW, XR_REFERENCE_SPACE_TYPE_LOCAL,
                         XR_REFERENCE_SPACE_TYPE_STAGE};
-    assert_int_equal(hol_xr_pick_space(both, 3, &y), HOL_XR_SPACE_STAGE);
+    assert_int_equal(hol_xr_pick_space(both, 3, 0, &y), HOL_XR_SPACE_STAGE);
     assert_true(y == 0);
     const int local[] = {XR_REFERENCE_SPACE_TYPE_VIEW, XR_REFERENCE_SPACE_TYPE_LOCAL};
-    assert_int_equal(hol_xr_pick_space(local, 2, &y), HOL_XR_SPACE_LOCAL);
+    assert_int_equal(hol_xr_pick_space(local, 2, 0, &y), HOL_XR_SPACE_LOCAL);
     /* LOCAL's origin is the head's start: the room's floor 1.6 m below it,
      * so a head at LOCAL y = 0 stands at room y = 1.6 */
     assert_true(y == -1.6);
     assert_true(0 - y == HOL_XR_EYE_HEIGHT);
+    /* LOCAL asked for: LOCAL with its floor offset, though STAGE is there */
+    y = 99;
+    assert_int_equal(hol_xr_pick_space(both, 3, HOL_XR_SPACE_LOCAL, &y), HOL_XR_SPACE_LOCAL);
+    assert_true(y == -1.6);
     const int view[] = {XR_REFERENCE_SPACE_TYPE_VIEW};
-    assert_int_equal(hol_xr_pick_space(view, 1, &y), 0);
-    assert_int_equal(hol_xr_pick_space(NULL, 0, &y), 0);
+    assert_int_equal(hol_xr_pick_space(view, 1, 0, &y), 0);
+    assert_int_equal(hol_xr_pick_space(NULL, 0, 0, &y), 0);
 }
 
 /* Issue 18: an sRGB swapchain when offered, whatever the runtime's order. */

@@ -100,7 +100,7 @@ static int hol__room_space(hol__xr *x)
                                : XR_ERROR_OUT_OF_MEMORY;
     for (uint32_t i = 0; XR_SUCCEEDED(r) && i < n; i++)
         ints[i] = (int)types[i];
-    x->space_type = XR_SUCCEEDED(r) ? hol_xr_pick_space(ints, n, &x->origin_y) : 0;
+    x->space_type = XR_SUCCEEDED(r) ? hol_xr_pick_space(ints, n, x->d->space, &x->origin_y) : 0;
     free(types);
     free(ints);
     if (XR_FAILED(r))
@@ -117,9 +117,9 @@ static int hol__room_space(hol__xr *x)
     if (x->space_type == HOL_XR_SPACE_STAGE)
         hol__say(x, "xr: reference space STAGE");
     else
-        hol__say(x, "xr: reference space LOCAL (no STAGE): the floor taken %.2f m below "
-                    "the head's start",
-                 -x->origin_y);
+        hol__say(x, "xr: reference space LOCAL (%s): the floor taken %.2f m below the head's "
+                    "start",
+                 x->d->space == HOL_XR_SPACE_LOCAL ? "asked for" : "no STAGE", -x->origin_y);
     return 0;
 }
 

@@ -39,6 +39,8 @@ typedef struct hol_xr_desc {
                                 coordinates) instead of the runtime's (the
                                 simulated headset does not move) */
     long nscript;
+    int space;               /* 0: STAGE when the runtime has it, else LOCAL;
+                                HOL_XR_SPACE_LOCAL (hol_xr_pick.h): LOCAL */
     /* Android only: the JavaVM and the activity object (jobject), for
      * xrInitializeLoaderKHR and XR_KHR_android_create_instance. */
     void *android_vm, *android_activity;

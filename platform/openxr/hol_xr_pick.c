@@ -2,11 +2,11 @@
  * hol_xr_pick.h). */
 #include "hol_xr_pick.h"
 
-int hol_xr_pick_space(const int *types, uint32_t n, double *out_origin_y)
+int hol_xr_pick_space(const int *types, uint32_t n, int want, double *out_origin_y)
 {
     int local = 0;
     for (uint32_t i = 0; i < n; i++) {
-        if (types[i] == HOL_XR_SPACE_STAGE) {
+        if (types[i] == HOL_XR_SPACE_STAGE && want != HOL_XR_SPACE_LOCAL) {
             *out_origin_y = 0;
             return HOL_XR_SPACE_STAGE;
         }

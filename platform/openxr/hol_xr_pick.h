@@ -32,7 +32,9 @@ enum { HOL_XR_SPACE_VIEW = 1, HOL_XR_SPACE_LOCAL = 2, HOL_XR_SPACE_STAGE = 3 };
 /* The standing eye height the LOCAL fallback assumes (SPEC section 1). */
 #define HOL_XR_EYE_HEIGHT 1.6
 
-int hol_xr_pick_space(const int *types, uint32_t n, double *out_origin_y);
+/* want: 0 for the contract's choice, HOL_XR_SPACE_LOCAL for LOCAL even
+ * where STAGE is offered (seated play, no play area set up). */
+int hol_xr_pick_space(const int *types, uint32_t n, int want, double *out_origin_y);
 int64_t hol_xr_pick_format(const int64_t *formats, uint32_t n, int *out_srgb);
 
 #endif

@@ -12,19 +12,32 @@ chmod 700 "$out/run"
 export XDG_RUNTIME_DIR="$out/run"
 Xvfb :77 -screen 0 640x480x24 -nolisten tcp >"$out/xvfb.log" 2>&1 &
 xvfb=$!
-env XRT_COMPOSITOR_NULL=1 SIMULATED_ENABLE=1 SIMULATED_LEFT=simple SIMULATED_RIGHT=simple \
-    XRT_NO_STDIN=1 VK_ICD_FILENAMES=/usr/share/vulkan/icd.d/lvp_icd.json \
-    monado-service >"$out/monado.log" 2>&1 &
-monado=$!
-cleanup() { kill "$monado" "$xvfb" 2>/dev/null; wait 2>/dev/null; }
+monado=
+cleanup() { kill $monado "$xvfb" 2>/dev/null; wait 2>/dev/null; }
 trap cleanup EXIT
-# wait for the service's socket and the display
-for i in $(seq 1 100); do
-    [ -S "$out/run/monado_comp_ipc" ] && [ -e /tmp/.X11-unix/X77 ] && break
-    sleep 0.1
-done
 fail=0
 check() { if eval "$2"; then echo "xr-test: ok: $1"; else echo "xr-test: FAIL: $1"; fail=1; fi; }
+for i in $(seq 1 100); do [ -e /tmp/.X11-unix/X77 ] && break; sleep 0.1; done
+
+# The runtime's service not running yet: one line in words that says so
+# and how to start it, exit 1 (issue 18: not "? (-2)").
+env DISPLAY=:77 "$BIN" xr --frames 5 >"$out/down.out" 2>"$out/down.err"
+rc=$?
+down=$(grep '^holonomy xr:' "$out/down.err")
+echo "  | $down"
+check "service down: exit 1 ($rc)" '[ "$rc" = 1 ]'
+check "service down: one line of ours, in words, naming monado-service" \
+    '[ "$(echo "$down" | wc -l)" = 1 ] && echo "$down" | grep -q "^holonomy xr: cannot start the OpenXR instance: .*service is probably not running.*monado-service.*(XR_ERROR_RUNTIME_FAILURE)$" && ! echo "$down" | grep -q "?\|(-[0-9]"'
+
+start_monado() {
+    rm -f "$out/run/monado_comp_ipc"
+    env XRT_COMPOSITOR_NULL=1 SIMULATED_ENABLE=1 SIMULATED_LEFT=simple SIMULATED_RIGHT=simple \
+        XRT_NO_STDIN=1 VK_ICD_FILENAMES=/usr/share/vulkan/icd.d/lvp_icd.json \
+        monado-service >>"$out/monado.log" 2>&1 &
+    monado=$!
+    for i in $(seq 1 100); do [ -S "$out/run/monado_comp_ipc" ] && break; sleep 0.1; done
+}
+start_monado
 printf 'mode flag\nseed 5\nflag Wrf\nminimap off\ncues none\n' >"$out/level.txt"
 # scripted head motion (the simulated headset does not move): from the
 # middle cell's centre 1 m north over 100 frames, across the cell edge;
@@ -51,11 +64,17 @@ for p in khr/simple_controller oculus/touch_controller htc/vive_controller \
 done
 check "left grip located" 'grep -q "^xr: grip left located" $all'
 check "right grip located" 'grep -q "^xr: grip right located" $all'
+check "the hands' interaction profile read (InteractionProfileChanged)" \
+    'grep -q "^xr: right hand: khr/simple_controller" $all'
+check "the recording names the controller in use (d=xr-simple)" \
+    'grep -q " d=xr-simple" "$out/session.rec"'
+check "an sRGB swapchain (issue 18: colours as authored on real compositors)" \
+    'grep -q "^xr: swapchains .*(sRGB)" $all'
 check "quit went through STOPPING to EXITING" \
     'grep -q "^xr: state STOPPING" $all && grep -q "session ended after STOPPING" $all && grep -q "^xr: state EXITING" $all'
 pct=$(sed -n 's/^xr: check frame .*(\([0-9.]*\) %).*/\1/p' "$out/xr.out")
-check "swapchain read back equals the OSMesa render (${pct:-none} % of pixels differ; at most 0.5)" \
-    '[ -n "$pct" ] && awk "BEGIN{exit !($pct <= 0.5)}"'
+check "sRGB swapchain read back (after the GL's encoding) equals the OSMesa render (${pct:-none} % of pixels differ; at most 0.5)" \
+    '[ -n "$pct" ] && grep -q "^xr: check frame .*(sRGB swapchain)" $all && awk "BEGIN{exit !($pct <= 0.5)}"'
 check "the core validation layer ran" 'grep -q "Core Validation" $all'
 check "no VALID_ERROR or VALID_WARNING from the validation layer" \
     '! grep -q "VALID_ERROR\|VALID_WARNING" $all'
@@ -75,4 +94,26 @@ check "frames before FOCUSED recorded without focus ($unf unfocused, $foc focuse
 check "the session's logs were written" '[ -s "$out/logs/summary.csv" ]'
 check "the recording replays headless" \
     'mkdir -p "$out/replay-logs" && "$BIN" replay "$out/session.rec" --log "$out/replay-logs" >/dev/null 2>&1 && cmp -s "$out/logs/summary.csv" "$out/replay-logs/summary.csv"'
+
+# The runtime's service dies in the middle of a session: exit 1 with one
+# line in words (the instance is lost), and the session's logs and
+# recording are still written (issue 19: not exit 0).
+mkdir -p "$out/lost-logs"
+env DISPLAY=:77 "$BIN" xr "$out/level.txt" --frames 100000 --log "$out/lost-logs" \
+    --record "$out/lost.rec" >"$out/lost.out" 2>"$out/lost.err" &
+xr=$!
+for i in $(seq 1 300); do grep -q "^xr: state FOCUSED" "$out/lost.out" && break; sleep 0.1; done
+sleep 1
+kill "$monado"
+wait "$monado" 2>/dev/null
+monado=
+wait "$xr"
+rc=$?
+lost=$(grep '^holonomy xr:' "$out/lost.err")
+echo "  | $lost"
+check "service killed mid-session: exit 1 ($rc)" '[ "$rc" = 1 ]'
+check "service killed: one line of ours, in words (the runtime went away)" \
+    '[ "$(echo "$lost" | wc -l)" = 1 ] && echo "$lost" | grep -q "went away\|shutting down\|was lost" && ! echo "$lost" | grep -q "xrWaitFrame\|x->session\|?"'
+check "service killed: the logs and the recording were still written" \
+    '[ -s "$out/lost-logs/summary.csv" ] && [ -s "$out/lost.rec" ]'
 exit $fail
