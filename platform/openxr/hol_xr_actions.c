@@ -182,19 +182,29 @@ int hol__bool(hol__xr *x, int a, int *out_held)
 }
 
 /* The hands' interaction profiles now (after an interaction profile
- * changed event): x->profile[h], one line each that changed. */
+ * changed event): x->profile[h], one line each that changed. Only for the
+ * prompts: a failed read keeps the old ones (one line), unless the session
+ * or the instance is gone. */
 int hol__profiles_now(hol__xr *x)
 {
     int any = 0;
     for (int h = 0; h < 2; h++) {
         XrInteractionProfileState st = {XR_TYPE_INTERACTION_PROFILE_STATE};
-        HOL__XR(x, "read the controllers' profile",
-                xrGetCurrentInteractionProfile(x->session, x->hand_path[h], &st));
         char path[XR_MAX_PATH_LENGTH] = "";
         uint32_t len = 0;
-        if (st.interactionProfile != XR_NULL_PATH)
-            HOL__XR(x, "read the controllers' profile",
-                    xrPathToString(x->instance, st.interactionProfile, sizeof path, &len, path));
+        XrResult r = xrGetCurrentInteractionProfile(x->session, x->hand_path[h], &st);
+        if (XR_SUCCEEDED(r) && st.interactionProfile != XR_NULL_PATH)
+            r = xrPathToString(x->instance, st.interactionProfile, sizeof path, &len, path);
+        if (XR_FAILED(r)) {
+            if (hol_xr_result_is_loss((int)r))
+                return hol__fail(x, "read the controllers' profile", r);
+            hol__say(x, "xr: cannot read the controllers' profile: %s (%s); the prompts keep "
+                        "the last one",
+                     hol_xr_result_words((int)r), hol_xr_result_name((int)r)
+                                                      ? hol_xr_result_name((int)r)
+                                                      : "an extension's result");
+            return 0;
+        }
         int p = st.interactionProfile == XR_NULL_PATH ? -1 : hol_xr_profile_find(path);
         if (p != x->profile[h])
             hol__say(x, "xr: %s hand: %s", h ? "right" : "left",

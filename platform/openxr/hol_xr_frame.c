@@ -137,7 +137,8 @@ static int hol__step(hol__xr *x, const hol_input *in, const hol_app_view **out_v
 /* One eye: drawn where it is (eroom, its room pose), with the view's own
  * asymmetric field of view, into the swapchain's next image. */
 static int hol__draw_eye(hol__xr *x, int e, const hol_app_view *v, const hol_input *in,
-                    const hol_pose *eroom, double fade, XrCompositionLayerProjectionView *pv)
+                         const hol_pose *eroom, double fade,
+                         XrCompositionLayerProjectionView *pv)
 {
     hol__eye *ey = &x->eye[e];
     const XrView *view = &x->views[e];
