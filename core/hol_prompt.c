@@ -14,15 +14,16 @@ static const char *const hol__words[HOL_DEVICE_COUNT][HOL__NBTN] = {
                          "DEBUG"},
     [HOL_DEVICE_KEYBOARD] = {"ENTER", NULL, "P", NULL, "M", "R", "ESC", "F3"},
     [HOL_DEVICE_GAMEPAD] = {"A", "B", "START", "Y", "X", NULL, NULL, NULL},
-    /* XR: restart and quit are the pause menu's (platform/openxr/hol_xr_bind.h) */
-    [HOL_DEVICE_XR_SIMPLE] = {"SELECT", NULL, "MENU", "LEFT MENU", "LEFT SELECT", "SELECT",
-                              "LEFT SELECT", NULL},
-    [HOL_DEVICE_XR_TOUCH] = {"A", NULL, "MENU", "Y", "X", "A", "B", NULL},
-    [HOL_DEVICE_XR_VIVE] = {"TRIGGER", NULL, "MENU", "LEFT MENU", "LEFT TRACKPAD", "TRIGGER",
-                            "LEFT TRIGGER", NULL},
-    [HOL_DEVICE_XR_INDEX] = {"A", NULL, "B", "LEFT B", "LEFT A", "A", "LEFT TRIGGER", NULL},
-    [HOL_DEVICE_XR_WMR] = {"TRIGGER", NULL, "MENU", "LEFT MENU", "LEFT TRACKPAD", "TRIGGER",
-                           "LEFT TRIGGER", NULL},
+    /* XR: quit is the pause menu's own input; restart has none outside the
+     * menu, and in it the confirm input restarts (platform/openxr/hol_xr_bind.h) */
+    [HOL_DEVICE_XR_SIMPLE] = {"SELECT", NULL, "MENU", "LEFT MENU", "LEFT SELECT", NULL,
+                              "LEFT MENU", NULL},
+    [HOL_DEVICE_XR_TOUCH] = {"A", NULL, "MENU", "Y", "X", NULL, "B", NULL},
+    [HOL_DEVICE_XR_VIVE] = {"TRIGGER", NULL, "MENU", "LEFT MENU", "LEFT TRACKPAD", NULL,
+                            "TRACKPAD", NULL},
+    [HOL_DEVICE_XR_INDEX] = {"A", NULL, "B", "LEFT B", "LEFT A", NULL, "LEFT TRIGGER", NULL},
+    [HOL_DEVICE_XR_WMR] = {"TRIGGER", NULL, "MENU", "LEFT MENU", "LEFT TRACKPAD", NULL,
+                           "TRACKPAD", NULL},
     [HOL_DEVICE_XR] = {"TRIGGER", NULL, "MENU", NULL, NULL, NULL, NULL, NULL},
     /* the web build's (platform/web/hol_web_xr.h): right trigger or A
      * confirm, B back, Y menu, left stick press recentre, X minimap */

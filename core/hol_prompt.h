@@ -10,7 +10,10 @@
  *   for each OpenXR interaction profile the control its suggested binding
  *   uses (platform/openxr/hol_xr_bind.c: "TRIGGER", "A", "MENU", "LEFT
  *   TRACKPAD", ...; a left-hand control is "LEFT ..." where the right hand
- *   has one of that name too). NULL: no control gives it on that device.
+ *   has one of that name too; quit is bound in the pause menu only, and
+ *   restart has no control of its own: in the menu the confirm control
+ *   restarts, as on every device). NULL: no control gives it on that
+ *   device.
  *   HOL_DEVICE_NONE names the action itself ("CONFIRM", "MENU", ...).
  * - hol_prompt_move(device) says how one walks with it ("W/S/A/D: WALK");
  *   NULL for HOL_DEVICE_NONE.

@@ -12,26 +12,26 @@ static const hol_xr_profile hol__profiles[HOL_XR_NPROFILES] = {
     /* confirm, menu, recentre, minimap | restart, quit (the menu's layer) */
     {"/interaction_profiles/khr/simple_controller", "khr/simple_controller",
      {HOL__R "select/click", HOL__R "menu/click", HOL__L "menu/click", HOL__L "select/click",
-      HOL__R "select/click", HOL__L "select/click"},
-     {"right select", "right menu", "left menu", "left select", "right select", "left select"}},
+      HOL__R "select/click", HOL__L "menu/click"},
+     {"right select", "right menu", "left menu", "left select", "right select", "left menu"}},
     {"/interaction_profiles/oculus/touch_controller", "oculus/touch_controller",
      {HOL__R "a/click", HOL__L "menu/click", HOL__L "y/click", HOL__L "x/click", HOL__R "a/click",
       HOL__R "b/click"},
      {"A", "menu", "Y", "X", "A", "B"}},
     {"/interaction_profiles/htc/vive_controller", "htc/vive_controller",
      {HOL__R "trigger/click", HOL__R "menu/click", HOL__L "menu/click",
-      HOL__L "trackpad/click", HOL__R "trigger/click", HOL__L "trigger/click"},
+      HOL__L "trackpad/click", HOL__R "trigger/click", HOL__R "trackpad/click"},
      {"right trigger", "right menu", "left menu", "left trackpad", "right trigger",
-      "left trigger"}},
+      "right trackpad"}},
     {"/interaction_profiles/valve/index_controller", "valve/index_controller",
      {HOL__R "a/click", HOL__R "b/click", HOL__L "b/click", HOL__L "a/click", HOL__R "a/click",
       HOL__L "trigger/click"},
      {"right A", "right B", "left B", "left A", "right A", "left trigger"}},
     {"/interaction_profiles/microsoft/motion_controller", "microsoft/motion_controller",
      {HOL__R "trigger/value", HOL__R "menu/click", HOL__L "menu/click",
-      HOL__L "trackpad/click", HOL__R "trigger/value", HOL__L "trigger/value"},
+      HOL__L "trackpad/click", HOL__R "trigger/value", HOL__R "trackpad/click"},
      {"right trigger", "right menu", "left menu", "left trackpad", "right trigger",
-      "left trigger"}},
+      "right trackpad"}},
 };
 
 const hol_xr_profile *hol_xr_profiles(void)
@@ -81,9 +81,9 @@ int hol_xr_action_in_layer(int act, int in_menu)
 {
     switch (act) {
     case HOL_XR_ACT_MENU:
-    case HOL_XR_ACT_RECENTRE:
         return 1;
     case HOL_XR_ACT_CONFIRM:
+    case HOL_XR_ACT_RECENTRE:
     case HOL_XR_ACT_MINIMAP:
         return !in_menu;
     case HOL_XR_ACT_RESTART:

@@ -12,12 +12,13 @@
  *   trigger), menu (the pause menu), recentre (place the room from the
  *   head), minimap (HUD, hand, off), restart (the level again) and quit
  *   (leave the app).
- * - Two layers: while the game runs, confirm, minimap, menu and recentre
- *   count; while the pause menu is open, restart, quit, menu (resume) and
- *   recentre. So restart and quit are never one accidental press away, and
- *   a controller with four inputs (khr/simple_controller) binds all six:
- *   restart shares confirm's input and quit minimap's. Within a layer every
- *   action has an input of its own.
+ * - Two layers: while the game runs, confirm, menu, recentre and minimap
+ *   count; while the pause menu is open, menu (resume), restart and quit.
+ *   So restart and quit are never one accidental press away, and a
+ *   controller with four inputs (khr/simple_controller) binds all six.
+ *   Restart is always on confirm's input (the prompts name it so: in the
+ *   menu, "confirm" restarts on every device, core/hol_app.c). Within a
+ *   layer every action has an input of its own.
  * - Profiles: khr/simple_controller, oculus/touch_controller,
  *   htc/vive_controller, valve/index_controller,
  *   microsoft/motion_controller; each binds every action to an input path
