@@ -170,7 +170,7 @@ $(BUILD)/bench/%: tests/%.c $(CORE_SRC)
 # libFuzzer harnesses (clang); the replay build runs the corpora as tests.
 # A harness links the core; FUZZ_EXTRA_<name> adds sources and libraries.
 FUZZ_EXTRA_fuzz_png := render/hol_png.c -lz
-FUZZ_EXTRA_fuzz_cli := platform/cli/cli_util.c platform/file/hol_file.c
+FUZZ_EXTRA_fuzz_cli := platform/cli/cli_util.c platform/file/hol_file.c platform/file/hol_lines.c
 FUZZ_EXTRA_fuzz_hid_desc := $(HID_SRC)
 FUZZ_EXTRA_fuzz_hid_report := $(HID_SRC)
 FUZZ_EXTRA_fuzz_hid_script := $(HID_SRC) $(HID_DEV_SRC) $(HID_LIBS)

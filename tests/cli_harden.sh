@@ -41,6 +41,34 @@ one_line "hid parse directory" "is a directory"
 run "replay FIFO" 2 timeout 10 "$H" replay fifo
 one_line "replay FIFO" "not a regular file"
 
+# --- stdin readers: a line limit, streamed (tile walk < /dev/zero grew to
+# 1.2 GB in 10 s; a 1 GB line of N was refused after 14 s at 1 GB) ---------
+printf 'mode flag\nflag Nr\n' >flag.lvl
+for c in "tile walk" "tile dist" "nav" "game flag.lvl"; do
+  run "$c < /dev/zero" 2 /usr/bin/time -f '%M' -o mem timeout 5 "$H" $c </dev/zero
+  one_line "$c < /dev/zero" "line 1: longer than 1048576 bytes"
+  kb=$(tail -n 1 mem)
+  [ "${kb:-999999}" -lt 200000 ] && ok || bad "$c < /dev/zero: $kb KB resident"
+done
+# a good line is answered, then the long one is refused naming its line
+{ printf 'NE\n'; head -c 3000000 /dev/zero | tr '\0' N; } >long.txt
+run "tile walk: a long second line" 2 timeout 5 "$H" tile walk <long.txt
+one_line "tile walk: a long second line" "line 2: longer than 1048576 bytes"
+[ "$(cat "$T/out")" = "Nr 2" ] && ok || bad "the first line was not answered: $(cat "$T/out")"
+# answers stream out as lines come in (a program can talk to it line by line)
+start=$(date +%s)
+{ echo NE; sleep 2; echo N; } | "$H" tile walk | { read -r first; echo "$first $(date +%s)" >t1; cat >/dev/null; }
+[ "$(cut -d' ' -f1-2 t1)" = "Nr 2" ] && [ $(( $(cut -d' ' -f3 t1) - start )) -lt 2 ] && ok ||
+  bad "the first answer waited for the input's end: $(cat t1), started $start"
+# gamepad scripts streamed and bounded too (read whole up to 64 MiB before)
+truncate -s 1G sparse.pad
+run "1 GB sparse pad script" 2 /usr/bin/time -f '%M' -o mem timeout 5 "$H" hid watch --replay sparse.pad
+one_line "1 GB sparse pad script" "line 1: gamepad script 'sparse.pad': longer than 12352 bytes"
+[ "$(tail -n 1 mem)" -lt 200000 ] && ok || bad "sparse pad script: $(tail -n 1 mem) KB"
+run "sparse pad script in play" 2 timeout 5 "$H" play --gamepad-replay sparse.pad --frames 1
+one_line "sparse pad script in play" "longer than 12352 bytes"
+rm -f sparse.pad
+
 # --- temporary files: owned names, cleaned by the next save --------------
 # a leftover of a killed save of w.img (writer gone) and unrelated files
 sh -c 'exit 0' & dead=$!; wait $dead

@@ -21,22 +21,15 @@
 #define CLI_EXIT_FAIL 1
 #define CLI_EXIT_USAGE 2
 
-typedef struct cli_lines {
-    FILE *in;
-    char *buf;
-    size_t cap;
-    long lineno;
-} cli_lines;
-
-void cli_lines_init(cli_lines *l, FILE *in);
-void cli_lines_fini(cli_lines *l);
-/* 1: a line in *out_s / *out_len (NUL-terminated; may contain NUL bytes,
- * which callers reject), 0: end of input, -1: read error. */
-int cli_lines_next(cli_lines *l, char **out_s, size_t *out_len);
-
 /* Run fn on every line of standard input until it returns nonzero (its
- * exit status, after it reported the problem) or the input ends. Handles
- * read and write errors. Returns the exit status. */
+ * exit status, after it reported the problem) or the input ends. Lines
+ * are streamed (platform/file/hol_lines.h: memory stays flat, each line is
+ * answered as it arrives) and bounded: a line longer than CLI_LINE_MAX
+ * bytes is bad input, refused when its CLI_LINE_MAX + 1st byte is read
+ * ("line N: longer than 1048576 bytes", exit 2). A line is given without
+ * its LF and one CR before it; it may hold NUL bytes, which fn refuses.
+ * Handles read and write errors. Returns the exit status. */
+#define CLI_LINE_MAX 1048576
 typedef int (*cli_line_fn)(void *ctx, long lineno, char *s, size_t len);
 int cli_for_each_line(const char *cmd, cli_line_fn fn, void *ctx);
 
@@ -88,6 +81,18 @@ int cli_split(char *s, size_t len, char **fields, size_t *lens, int max);
  * or no memory is 1. Free *out_data with free(). */
 int cli_read_file(const char *cmd, const char *what, const char *path, size_t max,
                   uint8_t **out_data, size_t *out_size);
+
+/* Open a file to read a line at a time (platform/file/hol_lines.h: a
+ * regular file only, lines of at most limit bytes): 0, or the exit status
+ * of a failure reported as one line naming WHAT and PATH (as
+ * cli_read_file). cli_lines_failed reports a failed hol_lines_next (a line
+ * longer than the limit is bad input, 2, naming the line; a read error 1)
+ * and returns the exit status. */
+struct hol_lines;
+int cli_open_lines(const char *cmd, const char *what, const char *path, size_t limit,
+                   struct hol_lines *l);
+int cli_lines_failed(const char *cmd, const char *what, const char *path,
+                     const struct hol_lines *l);
 
 /* 0 when path is NULL or names a folder; else report "OPT 'PATH' is not a
  * folder" (without OPT when it is NULL) and return CLI_EXIT_USAGE. */

@@ -3,6 +3,7 @@
 
 #include "../../core/hol_text.h"
 #include "../file/hol_file.h"
+#include "../file/hol_lines.h"
 
 #include <ctype.h>
 #include <errno.h>
@@ -12,39 +13,6 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
-
-void cli_lines_init(cli_lines *l, FILE *in)
-{
-    l->in = in;
-    l->buf = NULL;
-    l->cap = 0;
-    l->lineno = 0;
-}
-
-void cli_lines_fini(cli_lines *l)
-{
-    free(l->buf);
-    l->buf = NULL;
-    l->cap = 0;
-}
-
-int cli_lines_next(cli_lines *l, char **out_s, size_t *out_len)
-{
-    errno = 0;
-    ssize_t n = getline(&l->buf, &l->cap, l->in);
-    if (n < 0)
-        return ferror(l->in) ? -1 : 0;
-    l->lineno++;
-    size_t len = (size_t)n;
-    if (len > 0 && l->buf[len - 1] == '\n')
-        len--;
-    if (len > 0 && l->buf[len - 1] == '\r')
-        len--;
-    l->buf[len] = '\0';
-    *out_s = l->buf;
-    *out_len = len;
-    return 1;
-}
 
 const char *cli_escape(const char *s, char *buf, size_t cap)
 {
@@ -117,6 +85,30 @@ int cli_read_file(const char *cmd, const char *what, const char *path, size_t ma
     }
 }
 
+int cli_open_lines(const char *cmd, const char *what, const char *path, size_t limit,
+                   hol_lines *l)
+{
+    hol_err err = hol_lines_open(l, path, limit);
+    if (err == HOL_EARG)
+        cli_error(cmd, 0, "%s '%.200s' is %s, not a regular file", what, path,
+                  errno == EISDIR ? "a directory" : "a FIFO, socket or device");
+    else if (err == HOL_ENOMEM)
+        cli_error(cmd, 0, "out of memory reading %s '%.200s'", what, path);
+    else if (err)
+        cli_error(cmd, 0, "cannot open %s '%.200s': %s", what, path, strerror(errno));
+    return !err ? 0 : err == HOL_ENOMEM ? CLI_EXIT_FAIL : CLI_EXIT_USAGE;
+}
+
+int cli_lines_failed(const char *cmd, const char *what, const char *path, const hol_lines *l)
+{
+    if (l->err == HOL_ENOMEM) {
+        cli_error(cmd, l->lineno, "%s '%.200s': longer than %zu bytes", what, path, l->limit);
+        return CLI_EXIT_USAGE;
+    }
+    cli_error(cmd, 0, "cannot read %s '%.200s': %s", what, path, strerror(errno));
+    return CLI_EXIT_FAIL;
+}
+
 int cli_require_folder(const char *cmd, const char *opt, const char *path)
 {
     struct stat st;
@@ -187,18 +179,29 @@ int cli_wants_help(int argc, char **argv)
 
 int cli_for_each_line(const char *cmd, cli_line_fn fn, void *ctx)
 {
-    cli_lines in;
+    hol_lines in;
     char *s;
     size_t len;
-    int r, status = CLI_EXIT_OK;
-    cli_lines_init(&in, stdin);
-    while (status == CLI_EXIT_OK && (r = cli_lines_next(&in, &s, &len)) > 0)
+    int r = 0, status = CLI_EXIT_OK;
+    if (hol_lines_open_fd(&in, 0, CLI_LINE_MAX)) {
+        cli_error(cmd, 0, "out of memory");
+        return CLI_EXIT_FAIL;
+    }
+    while (status == CLI_EXIT_OK && (r = hol_lines_next(&in, &s, &len)) > 0) {
         status = fn(ctx, in.lineno, s, len);
-    if (status == CLI_EXIT_OK && r < 0) {
-        cli_error(cmd, 0, "cannot read input");
+        /* the answers so far go out before the reader waits for more
+         * input (a program feeding lines one at a time reads each answer) */
+        if (in.pos == in.end)
+            fflush(stdout);
+    }
+    if (status == CLI_EXIT_OK && r < 0 && in.err == HOL_ENOMEM) {
+        cli_error(cmd, in.lineno, "longer than %d bytes", CLI_LINE_MAX);
+        status = CLI_EXIT_USAGE;
+    } else if (status == CLI_EXIT_OK && r < 0) {
+        cli_error(cmd, 0, "cannot read input: %s", strerror(errno));
         status = CLI_EXIT_FAIL;
     }
-    cli_lines_fini(&in);
+    hol_lines_close(&in);
     int out = cli_finish_output(cmd);
     return status ? status : out;
 }

@@ -274,19 +274,25 @@ void play_print_end(hol_session *s)
 
 int play_load_pad_script(const char *cmd, const char *path, hol_hid_script *sc)
 {
-    uint8_t *data = NULL;
-    size_t size = 0;
-    int st = cli_read_file(cmd, "gamepad script", path, (size_t)64 << 20, &data, &size);
+    /* streamed: memory stays flat, the first bad line is refused at once */
+    const char *what = "gamepad script";
+    hol_lines in;
+    int st = cli_open_lines(cmd, what, path, HOL_HID_SCRIPT_LINE_MAX, &in);
     if (st)
         return st;
-    long line = 0;
-    hol_err err = hol_hid_script_parse(sc, (const char *)data, size, &line);
-    free(data);
-    if (err) {
-        cli_error(cmd, line, "'%.200s': %s", path,
+    char *s;
+    size_t len;
+    int r = 0;
+    hol_err err = HOL_OK;
+    hol_hid_script_begin(sc);
+    while (!err && (r = hol_lines_next(&in, &s, &len)) > 0)
+        err = hol_hid_script_line(sc, s, len);
+    if (err)
+        cli_error(cmd, sc->line, "'%.200s': %s", path,
                   err == HOL_ENOMEM ? "too many events or report bytes"
                                     : "not a gamepad script event (README: Gamepads)");
-        return CLI_EXIT_USAGE;
-    }
-    return 0;
+    else if (r < 0)
+        st = cli_lines_failed(cmd, what, path, &in);
+    hol_lines_close(&in);
+    return err ? CLI_EXIT_USAGE : st;
 }

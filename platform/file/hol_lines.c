@@ -13,23 +13,35 @@
 
 #define HOL__CHUNK (64u << 10)
 
-hol_err hol_lines_open(hol_lines *l, const char *path, size_t limit)
+hol_err hol_lines_open_fd(hol_lines *l, int fd, size_t limit)
 {
     memset(l, 0, sizeof *l);
     l->fd = -1;
-    hol_file_in f;
-    hol_err e = hol_file_open_in(path, &f);
-    if (e)
-        return e;
     l->line = malloc(limit + 2);
     l->buf = malloc(HOL__CHUNK);
     if (!l->line || !l->buf) {
-        hol_file_close_in(&f);
         hol_lines_close(l);
         return HOL_ENOMEM;
     }
-    l->fd = f.fd;
+    l->fd = fd;
     l->limit = limit;
+    return HOL_OK;
+}
+
+hol_err hol_lines_open(hol_lines *l, const char *path, size_t limit)
+{
+    hol_file_in f;
+    hol_err e = hol_file_open_in(path, &f);
+    if (e) {
+        memset(l, 0, sizeof *l);
+        l->fd = -1;
+        return e;
+    }
+    if ((e = hol_lines_open_fd(l, f.fd, limit))) {
+        hol_file_close_in(&f);
+        return e;
+    }
+    l->own_fd = 1;
     return HOL_OK;
 }
 
@@ -95,7 +107,7 @@ int hol_lines_next(hol_lines *l, char **out_s, size_t *out_len)
 
 void hol_lines_close(hol_lines *l)
 {
-    if (l->fd >= 0)
+    if (l->fd >= 0 && l->own_fd)
         close(l->fd);
     free(l->line);
     free(l->buf);

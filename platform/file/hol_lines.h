@@ -5,6 +5,9 @@
  * Contract
  * - hol_lines_open opens a regular file only (hol_file_open_in: a FIFO, a
  *   folder or a device is HOL_EARG at once, a missing file HOL_EOPEN).
+ *   hol_lines_open_fd reads an open descriptor (standard input of the line
+ *   commands: a pipe, a terminal, a file), which hol_lines_close leaves
+ *   open; a read returns the lines as they arrive (no waiting for more).
  * - hol_lines_next gives the next line without its LF (and without one CR
  *   before it), NUL-terminated in the reader's buffer (valid until the
  *   next call; it may hold NUL bytes, which callers refuse): 1 a line, 0 the
@@ -33,9 +36,11 @@ typedef struct hol_lines {
     int eof;
     long lineno;
     hol_err err;
+    int own_fd; /* hol_lines_close closes fd */
 } hol_lines;
 
 hol_err hol_lines_open(hol_lines *l, const char *path, size_t limit);
+hol_err hol_lines_open_fd(hol_lines *l, int fd, size_t limit);
 int hol_lines_next(hol_lines *l, char **out_s, size_t *out_len);
 void hol_lines_close(hol_lines *l);
 
