@@ -161,7 +161,7 @@ int cli_no_repeats(const char *cmd, int argc, char **argv)
         if (cli__repeatable(cmd, a, n))
             continue;
         for (int j = 1; j < i; j++)
-            if (!strncmp(argv[j], a, n) && (argv[j][n] == 0 || argv[j][n] == '=')) {
+            if (argv[j][2] && !strncmp(argv[j], a, n) && (argv[j][n] == 0 || argv[j][n] == '=')) {
                 cli_error(cmd, 0, "%.*s is given twice; give each option once", (int)(n < 40 ? n : 40), a);
                 return CLI_EXIT_USAGE;
             }
