@@ -197,10 +197,9 @@ static void hol__layout(const hol__px *p, float *rad, float *cx, float *cy)
     hol__hud_layout(w, h, rad, cx, cy);
 }
 
-static void hol__minimap(hol__px *p, const hol_frame_desc *f)
+/* The disk: a dark rim and a light ground. */
+static void hol__map_disk(hol__px *p, float rad, float cx, float cy)
 {
-    float rad, cx, cy;
-    hol__layout(p, &rad, &cx, &cy);
     static const uint8_t rim[3] = {20, 24, 30}, bg[3] = {200, 205, 210};
     float disk[48][2];
     for (int i = 0; i < 48; i++) {
@@ -215,7 +214,11 @@ static void hol__minimap(hol__px *p, const hol_frame_desc *f)
         disk[i][1] = cy + rad * (float)sin(a);
     }
     hol__poly(p, (const float(*)[2])disk, 48, bg);
-    /* tiles: geodesic squares (corners at circumradius acosh(cot(pi/5)),
+}
+
+static void hol__map_tiles(hol__px *p, const hol_frame_desc *f, float rad, float cx, float cy)
+{
+    /* geodesic squares (corners at circumradius acosh(cot(pi/5)),
      * edges subdivided so they bend like the disk's geodesics) */
     hol_nav_cell cells[512];
     size_t n = 0;
@@ -262,8 +265,12 @@ static void hol__minimap(hol__px *p, const hol_frame_desc *f)
         }
         hol__poly(p, (const float(*)[2])q, nq, col);
     }
+}
+
+/* The shortest-path overlay: tile centres along the room walk. */
+static void hol__map_path(hol__px *p, const hol_frame_desc *f, float rad, float cx, float cy)
+{
     static const double origin[3] = {0, 0, 1};
-    /* shortest-path overlay: tile centres along the room walk */
     hol_room st = f->user;
     float prev[2] = {cx, cy};
     static const uint8_t pathc[3] = {250, 250, 250};
@@ -279,6 +286,10 @@ static void hol__minimap(hol__px *p, const hol_frame_desc *f)
         prev[0] = c[0];
         prev[1] = c[1];
     }
+}
+
+static void hol__map_marks(hol__px *p, const hol_frame_desc *f, float rad, float cx, float cy)
+{
     /* marks: cyan rings round the tile centres (on the map only) */
     static const uint8_t markc[3] = {60, 230, 255};
     for (int k = 0; k < f->nmarks && k < HOL_RENDER_MAX_MARKS; k++) {
@@ -296,6 +307,12 @@ static void hol__minimap(hol__px *p, const hol_frame_desc *f)
                          c[0] + rr * (float)cos(a1), c[1] + rr * (float)sin(a1), th, markc);
         }
     }
+}
+
+static void hol__map_objectives(hol__px *p, const hol_frame_desc *f, float rad, float cx, float cy)
+{
+    static const uint8_t rim[3] = {20, 24, 30};
+    int nobj = f->nobjectives < HOL_RENDER_MAX_OBJECTIVES ? f->nobjectives : HOL_RENDER_MAX_OBJECTIVES;
     /* objectives: diamonds on the map, arrows on the rim when off it */
     static const uint8_t objc[3] = {255, 220, 40};
     for (int o = 0; o < nobj; o++) {
@@ -326,7 +343,17 @@ static void hol__minimap(hol__px *p, const hol_frame_desc *f)
             float tri[3][2] = {{tipx, tipy}, {bx - uy * s, by + ux * s}, {bx + uy * s, by - ux * s}};
             hol__poly(p, (const float(*)[2])tri, 3, objc);
         }
-    }
+    }}
+
+static void hol__minimap(hol__px *p, const hol_frame_desc *f)
+{
+    float rad, cx, cy;
+    hol__layout(p, &rad, &cx, &cy);
+    hol__map_disk(p, rad, cx, cy);
+    hol__map_tiles(p, f, rad, cx, cy);
+    hol__map_path(p, f, rad, cx, cy);
+    hol__map_marks(p, f, rad, cx, cy);
+    hol__map_objectives(p, f, rad, cx, cy);
 }
 
 static void hol__user_arrow(hol__px *p, const hol_frame_desc *f)

@@ -452,21 +452,10 @@ static void hol__fade_rgb(const hol_frame_desc *f, uint8_t out[3])
     memcpy(out, set ? f->fade_rgb : def, 3);
 }
 
-/* Build the queue of a frame. */
-static hol_err hol__build(hol_render *r, const hol_frame_desc *f)
+/* Pass 0 of the queue: one stencil polygon per leaf, in NDC. */
+static hol_err hol__queue_leaves(hol_render *r, const hol_frame_desc *f)
 {
-    int eu = (f->flags & HOL_RENDER_EUCLIDEAN) != 0;
-    int bare = (f->flags & HOL_RENDER_BARE) != 0;
-    hol_err err = hol_view_build(&f->user, f->cam.eye[0], f->cam.eye[2], eu, &r->view);
-    if (err)
-        return err;
-    hol_mesh_clear(&r->dyn);
-    r->nitems = 0;
-    r->frame++;
-    r->uploaded = 0;
-    r->tiles_built = 0;
     const hol_view *v = &r->view;
-    /* pass 0: one stencil polygon per leaf, in NDC */
     for (int k = 0; k < v->nleaves; k++) {
         float xy[8][2];
         int n = hol_view_leaf_ndc(&f->cam, &v->leaves[k], xy);
@@ -495,44 +484,62 @@ static hol_err hol__build(hol_render *r, const hol_frame_desc *f)
         it->mask = 0xff;
         it->key = (uint32_t)k;
     }
-    /* pass 1: the room's own meshes */
-    if (!bare) {
-        /* resident while the user's state and the world stay the same */
-        if (!r->room_valid || r->room_world != r->desc.world ||
-            memcmp(&r->room_user, &f->user, sizeof f->user)) {
-            hol_mesh_clear(&r->scratch);
-            hol_scene_room(r->scene, &r->scratch, &f->user, r->desc.world);
-            if (r->scratch.overflow)
-                return HOL_ENOMEM;
-            hol__upload_scratch(r, 0, 0);
-            r->room_nidx = r->scratch.ni;
-            r->room_user = f->user;
-            r->room_world = r->desc.world;
-            r->room_valid = 1;
-        }
-        hol__item *it = hol__push(r, HOL__PASS_ROOM, 0, r->room_nidx);
-        if (it)
-            it->key = 1u << 24;
+    return HOL_OK;
+}
+
+/* Pass 1: the room's own meshes, resident while the user's state and the
+ * world stay the same. */
+static hol_err hol__queue_room(hol_render *r, const hol_frame_desc *f)
+{
+    if (!r->room_valid || r->room_world != r->desc.world ||
+        memcmp(&r->room_user, &f->user, sizeof f->user)) {
+        hol_mesh_clear(&r->scratch);
+        hol_scene_room(r->scene, &r->scratch, &f->user, r->desc.world);
+        if (r->scratch.overflow)
+            return HOL_ENOMEM;
+        hol__upload_scratch(r, 0, 0);
+        r->room_nidx = r->scratch.ni;
+        r->room_user = f->user;
+        r->room_world = r->desc.world;
+        r->room_valid = 1;
     }
-    /* pass 2: one draw per branch, nearest cells first */
+    hol__item *it = hol__push(r, HOL__PASS_ROOM, 0, r->room_nidx);
+    if (it)
+        it->key = 1u << 24;
+    return HOL_OK;
+}
+
+/* The guide pole (objective index, or -1) and the game object kind on
+ * tile t. */
+static void hol__tile_marks(const hol_frame_desc *f, hol_tile t, int *pole, int *kind)
+{
+    *pole = -1;
+    *kind = 0;
+    for (int o = 0; o < f->nobjectives && o < HOL_RENDER_MAX_OBJECTIVES &&
+                    !(f->flags & HOL_RENDER_NO_POLES); o++)
+        if (hol_tile_eq(f->objectives[o], t)) {
+            *pole = o;
+            break;
+        }
+    for (int o = 0; o < f->nobjects && o < HOL_RENDER_MAX_OBJECTIVES; o++)
+        if (hol_tile_eq(f->object_tiles[o], t)) {
+            *kind = f->object_kinds[o];
+            break;
+        }
+}
+
+/* Pass 2: one draw per branch of its tile's resident mesh, placed in the
+ * branch's cell, nearest cells first. */
+static hol_err hol__queue_tiles(hol_render *r, const hol_frame_desc *f, int bare)
+{
+    const hol_view *v = &r->view;
     for (int k = 0; k < v->nbranches; k++) {
         const hol_view_branch *br = &v->branches[k];
         if (br->err)
             continue;
         uint32_t first, count;
-        int pole = -1;
-        for (int o = 0; o < f->nobjectives && o < HOL_RENDER_MAX_OBJECTIVES &&
-                        !(f->flags & HOL_RENDER_NO_POLES); o++)
-            if (hol_tile_eq(f->objectives[o], br->state.tile)) {
-                pole = o;
-                break;
-            }
-        int kind = 0;
-        for (int o = 0; o < f->nobjects && o < HOL_RENDER_MAX_OBJECTIVES; o++)
-            if (hol_tile_eq(f->object_tiles[o], br->state.tile)) {
-                kind = f->object_kinds[o];
-                break;
-            }
+        int pole, kind;
+        hol__tile_marks(f, br->state.tile, &pole, &kind);
         if (!hol__tile_range(r, br->state.tile, bare, pole, kind, &first, &count))
             return HOL_ENOMEM;
         hol__item *it = hol__push(r, HOL__PASS_TILE, first, count);
@@ -557,104 +564,144 @@ static hol_err hol__build(hol_render *r, const hol_frame_desc *f)
         m[12] = (float)br->state.col + 0.5f;
         m[14] = (float)br->state.row + 0.5f;
     }
-    /* the fade: one screen quad, blended by the constant alpha f->fade */
-    if (f->fade > 0 && !(f->flags & HOL_RENDER_IDS)) {
-        uint8_t rgb[3];
-        hol__fade_rgb(f, rgb);
-        int64_t b = hol_mesh_reserve(&r->dyn, 4, 6);
-        if (b < 0)
+    return HOL_OK;
+}
+
+/* The fade: one screen quad, blended by the constant alpha f->fade. */
+static hol_err hol__queue_fade(hol_render *r, const hol_frame_desc *f)
+{
+    uint8_t rgb[3];
+    hol__fade_rgb(f, rgb);
+    int64_t b = hol_mesh_reserve(&r->dyn, 4, 6);
+    if (b < 0)
+        return HOL_ENOMEM;
+    uint32_t i0 = r->dyn.ni;
+    static const float q[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+    for (int i = 0; i < 4; i++) {
+        hol_vertex *vx = &r->dyn.v[r->dyn.nv++];
+        memset(vx, 0, sizeof *vx);
+        vx->pos[0] = q[i][0];
+        vx->pos[1] = q[i][1];
+        memcpy(vx->rgba, rgb, 3);
+        vx->rgba[3] = 255;
+    }
+    static const uint32_t tri[6] = {0, 1, 2, 0, 2, 3};
+    for (int i = 0; i < 6; i++)
+        r->dyn.idx[r->dyn.ni++] = (uint32_t)b + tri[i];
+    hol__item *it = hol__push(r, HOL__PASS_FADE, i0, 6);
+    if (!it)
+        return HOL_ENOMEM;
+    it->key = (uint32_t)HOL__PASS_FADE << 24;
+    it->dyn = 1;
+    return HOL_OK;
+}
+
+/* What the resident minimap is a function of: the user's state, the
+ * objectives, the path, the marks, where it is (hand or HUD) and the HUD's
+ * size. */
+static uint64_t hol__map_key(const hol_frame_desc *f, int hand)
+{
+    uint64_t key = 0xcbf29ce484222325ull;
+    int nobj = f->nobjectives < 0 ? 0 : f->nobjectives > HOL_RENDER_MAX_OBJECTIVES
+                                            ? HOL_RENDER_MAX_OBJECTIVES : f->nobjectives;
+    key = hol__fnv(key, &f->user, sizeof f->user);
+    key = hol__fnv(key, &nobj, sizeof nobj);
+    key = hol__fnv(key, f->objectives, (size_t)nobj * sizeof f->objectives[0]);
+    key = hol__fnv(key, &f->npath, sizeof f->npath);
+    if (f->path && f->npath > 0)
+        key = hol__fnv(key, f->path, (size_t)f->npath);
+    key = hol__fnv(key, &hand, sizeof hand);
+    int nm = f->nmarks < 0 ? 0 : f->nmarks > HOL_RENDER_MAX_MARKS ? HOL_RENDER_MAX_MARKS
+                                                                  : f->nmarks;
+    key = hol__fnv(key, &nm, sizeof nm);
+    key = hol__fnv(key, f->marks, (size_t)nm * sizeof f->marks[0]);
+    if (!hand) {
+        key = hol__fnv(key, &f->cam.width, sizeof f->cam.width);
+        key = hol__fnv(key, &f->cam.height, sizeof f->cam.height);
+    }
+    return key;
+}
+
+/* The minimap (on the HUD or in the hand; resident while its inputs stay
+ * the same) and the live part: the user's arrow and the text. */
+static hol_err hol__queue_hud(hol_render *r, const hol_frame_desc *f)
+{
+    int hand = (f->flags & HOL_RENDER_MINIMAP_HAND) != 0;
+    uint64_t key = hol__map_key(f, hand);
+    if (!r->hud_valid || r->hud_key != key) {
+        hol_mesh_clear(&r->scratch);
+        r->scratch.cap_v = HOL__HUD_V;
+        r->scratch.cap_i = HOL__HUD_I;
+        if (hand)
+            hol_hud_build_hand_map(&r->scratch, f);
+        else
+            hol_hud_build_map(&r->scratch, f, f->cam.width, f->cam.height);
+        r->scratch.cap_v = HOL__ROOM_V;
+        r->scratch.cap_i = HOL__ROOM_I;
+        if (r->scratch.overflow)
             return HOL_ENOMEM;
-        uint32_t i0 = r->dyn.ni;
-        static const float q[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
-        for (int i = 0; i < 4; i++) {
-            hol_vertex *vx = &r->dyn.v[r->dyn.nv++];
-            memset(vx, 0, sizeof *vx);
-            vx->pos[0] = q[i][0];
-            vx->pos[1] = q[i][1];
-            memcpy(vx->rgba, rgb, 3);
-            vx->rgba[3] = 255;
+        hol__upload_scratch(r, HOL__HUD_VBASE, HOL__HUD_IBASE);
+        r->hud_nidx = r->scratch.ni;
+        r->hud_key = key;
+        r->hud_valid = 1;
+    }
+    int map_pass = hand ? HOL__PASS_HAND : HOL__PASS_HUD;
+    float hand_m[16];
+    if (hand)
+        hol__hand_matrix(f, hand_m);
+    hol__item *map = hol__push(r, map_pass, HOL__HUD_IBASE, r->hud_nidx);
+    if (map) {
+        map->key = (uint32_t)map_pass << 24;
+        if (hand)
+            memcpy(map->model, hand_m, sizeof hand_m);
+    }
+    uint32_t i0 = r->dyn.ni;
+    if (hand) {
+        hol_hud_build_hand_arrow(&r->dyn, f);
+        hol__item *it = hol__push(r, HOL__PASS_HAND, i0, r->dyn.ni - i0);
+        if (it) {
+            it->key = (uint32_t)HOL__PASS_HAND << 24 | 1;
+            it->dyn = 1;
+            memcpy(it->model, hand_m, sizeof hand_m);
         }
-        static const uint32_t tri[6] = {0, 1, 2, 0, 2, 3};
-        for (int i = 0; i < 6; i++)
-            r->dyn.idx[r->dyn.ni++] = (uint32_t)b + tri[i];
-        hol__item *it = hol__push(r, HOL__PASS_FADE, i0, 6);
-        if (!it)
-            return HOL_ENOMEM;
-        it->key = (uint32_t)HOL__PASS_FADE << 24;
+        i0 = r->dyn.ni;
+        hol_hud_build_text(&r->dyn, f, f->cam.width, f->cam.height);
+    } else {
+        hol_hud_build_live(&r->dyn, f, f->cam.width, f->cam.height);
+    }
+    hol__item *it = hol__push(r, HOL__PASS_HUD, i0, r->dyn.ni - i0);
+    if (it) {
+        it->key = (uint32_t)HOL__PASS_HUD << 24 | 1;
         it->dyn = 1;
     }
-    /* the minimap (on the HUD or in the hand) and the text */
-    if ((f->flags & HOL_RENDER_MINIMAP) && !(f->flags & HOL_RENDER_NO_HUD)) {
-        int hand = (f->flags & HOL_RENDER_MINIMAP_HAND) != 0;
-        /* the map stays resident while its inputs stay the same */
-        uint64_t key = 0xcbf29ce484222325ull;
-        int nobj = f->nobjectives < 0 ? 0 : f->nobjectives > HOL_RENDER_MAX_OBJECTIVES
-                                                ? HOL_RENDER_MAX_OBJECTIVES : f->nobjectives;
-        key = hol__fnv(key, &f->user, sizeof f->user);
-        key = hol__fnv(key, &nobj, sizeof nobj);
-        key = hol__fnv(key, f->objectives, (size_t)nobj * sizeof f->objectives[0]);
-        key = hol__fnv(key, &f->npath, sizeof f->npath);
-        if (f->path && f->npath > 0)
-            key = hol__fnv(key, f->path, (size_t)f->npath);
-        key = hol__fnv(key, &hand, sizeof hand);
-        int nm = f->nmarks < 0 ? 0 : f->nmarks > HOL_RENDER_MAX_MARKS ? HOL_RENDER_MAX_MARKS
-                                                                      : f->nmarks;
-        key = hol__fnv(key, &nm, sizeof nm);
-        key = hol__fnv(key, f->marks, (size_t)nm * sizeof f->marks[0]);
-        if (!hand) {
-            key = hol__fnv(key, &f->cam.width, sizeof f->cam.width);
-            key = hol__fnv(key, &f->cam.height, sizeof f->cam.height);
-        }
-        if (!r->hud_valid || r->hud_key != key) {
-            hol_mesh_clear(&r->scratch);
-            r->scratch.cap_v = HOL__HUD_V;
-            r->scratch.cap_i = HOL__HUD_I;
-            if (hand)
-                hol_hud_build_hand_map(&r->scratch, f);
-            else
-                hol_hud_build_map(&r->scratch, f, f->cam.width, f->cam.height);
-            r->scratch.cap_v = HOL__ROOM_V;
-            r->scratch.cap_i = HOL__ROOM_I;
-            if (r->scratch.overflow)
-                return HOL_ENOMEM;
-            hol__upload_scratch(r, HOL__HUD_VBASE, HOL__HUD_IBASE);
-            r->hud_nidx = r->scratch.ni;
-            r->hud_key = key;
-            r->hud_valid = 1;
-        }
-        int map_pass = hand ? HOL__PASS_HAND : HOL__PASS_HUD;
-        float hand_m[16];
-        if (hand)
-            hol__hand_matrix(f, hand_m);
-        hol__item *map = hol__push(r, map_pass, HOL__HUD_IBASE, r->hud_nidx);
-        if (map) {
-            map->key = (uint32_t)map_pass << 24;
-            if (hand)
-                memcpy(map->model, hand_m, sizeof hand_m);
-        }
-        uint32_t i0 = r->dyn.ni;
-        if (hand) {
-            hol_hud_build_hand_arrow(&r->dyn, f);
-            hol__item *it = hol__push(r, HOL__PASS_HAND, i0, r->dyn.ni - i0);
-            if (it) {
-                it->key = (uint32_t)HOL__PASS_HAND << 24 | 1;
-                it->dyn = 1;
-                memcpy(it->model, hand_m, sizeof hand_m);
-            }
-            i0 = r->dyn.ni;
-            hol_hud_build_text(&r->dyn, f, f->cam.width, f->cam.height);
-        } else {
-            hol_hud_build_live(&r->dyn, f, f->cam.width, f->cam.height);
-        }
-        hol__item *it = hol__push(r, HOL__PASS_HUD, i0, r->dyn.ni - i0);
-        if (it) {
-            it->key = (uint32_t)HOL__PASS_HUD << 24 | 1;
-            it->dyn = 1;
-        }
-    }
-    if (r->dyn.overflow)
-        return HOL_ENOMEM;
     return HOL_OK;
+}
+
+/* Build the queue of a frame: the view, then each pass's items. */
+static hol_err hol__build(hol_render *r, const hol_frame_desc *f)
+{
+    int eu = (f->flags & HOL_RENDER_EUCLIDEAN) != 0;
+    int bare = (f->flags & HOL_RENDER_BARE) != 0;
+    hol_err err = hol_view_build(&f->user, f->cam.eye[0], f->cam.eye[2], eu, &r->view);
+    if (err)
+        return err;
+    hol_mesh_clear(&r->dyn);
+    r->nitems = 0;
+    r->frame++;
+    r->uploaded = 0;
+    r->tiles_built = 0;
+    if ((err = hol__queue_leaves(r, f)))
+        return err;
+    if (!bare && (err = hol__queue_room(r, f)))
+        return err;
+    if ((err = hol__queue_tiles(r, f, bare)))
+        return err;
+    if (f->fade > 0 && !(f->flags & HOL_RENDER_IDS) && (err = hol__queue_fade(r, f)))
+        return err;
+    if ((f->flags & HOL_RENDER_MINIMAP) && !(f->flags & HOL_RENDER_NO_HUD) &&
+        (err = hol__queue_hud(r, f)))
+        return err;
+    return r->dyn.overflow ? HOL_ENOMEM : HOL_OK;
 }
 
 /* The frame's rectangle: viewport, and the scissor its clear keeps to. */
@@ -665,46 +712,28 @@ static void hol__viewport(hol_render *r, const hol_frame_desc *f)
     r->gl.Scissor(f->vp_x, f->vp_y, f->cam.width, f->cam.height);
 }
 
-hol_err hol_render_frame(hol_render *r, const hol_frame_desc *f,
-                         hol_render_stats *out_stats)
+/* Fully faded: the boundary colour alone, no view. */
+static hol_err hol__frame_faded(hol_render *r, const hol_frame_desc *f)
 {
-    double c0 = hol__now(CLOCK_PROCESS_CPUTIME_ID), w0 = hol__now(CLOCK_MONOTONIC);
-    int maxw = r->desc.max_width > 0 ? r->desc.max_width : 4096;
-    int maxh = r->desc.max_height > 0 ? r->desc.max_height : 4096;
-    if (f->cam.width <= 0 || f->cam.height <= 0 || f->cam.width > maxw ||
-        f->cam.height > maxh)
-        return HOL_EARG;
-    if (f->fade >= 1 && !(f->flags & HOL_RENDER_IDS)) {
-        /* fully faded: the boundary colour alone, no view */
-        uint8_t rgb[3];
-        hol__fade_rgb(f, rgb);
-        hol__viewport(r, f);
-        r->gl.DepthMask(GL_TRUE);
-        r->gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-        r->gl.StencilMask(0xff);
-        hol__clear_colour(r, rgb[0] / 255.0f, rgb[1] / 255.0f, rgb[2] / 255.0f);
-        r->gl.ClearDepthf(1.0f);
-        r->gl.ClearStencil(HOL_VIEW_STENCIL_CLEAR);
-        r->gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
-        r->gl.Disable(GL_SCISSOR_TEST);
-        if (out_stats) {
-            r->gl.Finish();
-            memset(out_stats, 0, sizeof *out_stats);
-            out_stats->cpu_ms = hol__now(CLOCK_PROCESS_CPUTIME_ID) - c0;
-            out_stats->wall_ms = hol__now(CLOCK_MONOTONIC) - w0;
-        }
-        return r->gl.GetError() == GL_NO_ERROR ? HOL_OK : HOL_EUNSUPPORTED;
-    }
-    hol_err err = hol__build(r, f);
-    if (err)
-        return err;
-    hol_render_stats st;
-    memset(&st, 0, sizeof st);
-    for (int i = 0; i < r->nitems; i++)
-        r->sorted[i] = &r->items[i];
-    qsort(r->sorted, (size_t)r->nitems, sizeof r->sorted[0], hol__cmp_item);
-    st.build_ms = hol__now(CLOCK_PROCESS_CPUTIME_ID) - c0;
+    uint8_t rgb[3];
+    hol__fade_rgb(f, rgb);
+    hol__viewport(r, f);
+    r->gl.DepthMask(GL_TRUE);
+    r->gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    r->gl.StencilMask(0xff);
+    hol__clear_colour(r, rgb[0] / 255.0f, rgb[1] / 255.0f, rgb[2] / 255.0f);
+    r->gl.ClearDepthf(1.0f);
+    r->gl.ClearStencil(HOL_VIEW_STENCIL_CLEAR);
+    r->gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    r->gl.Disable(GL_SCISSOR_TEST);
+    return r->gl.GetError() == GL_NO_ERROR ? HOL_OK : HOL_EUNSUPPORTED;
+}
 
+/* Clear the frame (sky, or black for IDs), upload this frame's dynamic
+ * geometry, and set the program's per-frame uniforms; vp receives the
+ * view-projection matrix. */
+static void hol__frame_begin(hol_render *r, const hol_frame_desc *f, float vp[16])
+{
     int ids = (f->flags & HOL_RENDER_IDS) != 0;
     float sky[3];
     hol_scene_sky(sky);
@@ -722,7 +751,6 @@ hol_err hol_render_frame(hol_render *r, const hol_frame_desc *f,
     r->gl.ClearDepthf(1.0f);
     r->gl.ClearStencil(HOL_VIEW_STENCIL_CLEAR);
     r->gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
-
     r->gl.UseProgram(r->prog);
     r->gl.BindVertexArray(r->vao[1]);
     r->gl.BindBuffer(GL_ARRAY_BUFFER, r->vbo[1]);
@@ -731,8 +759,7 @@ hol_err hol_render_frame(hol_render *r, const hol_frame_desc *f,
     r->gl.BufferData(GL_ELEMENT_ARRAY_BUFFER, (GLsizeiptr)(r->dyn.ni * sizeof(uint32_t)),
                      r->dyn.idx, GL_STREAM_DRAW);
     r->uploaded += (long)(r->dyn.nv * sizeof(hol_vertex) + r->dyn.ni * sizeof(uint32_t));
-    int cur_vao = 1;
-    float view[16], proj[16], vp[16], ident[16];
+    float view[16], proj[16];
     hol_camera_matrices(&f->cam, view, proj);
     for (int i = 0; i < 4; i++)
         for (int j = 0; j < 4; j++) {
@@ -741,116 +768,164 @@ hol_err hol_render_frame(hol_render *r, const hol_frame_desc *f,
                 s += proj[4 * k + j] * view[4 * i + k];
             vp[4 * i + j] = s;
         }
-    hol__identity(ident);
     r->gl.Uniform3f(r->u_eye, (float)f->cam.eye[0], (float)f->cam.eye[1],
-                (float)f->cam.eye[2]);
+                    (float)f->cam.eye[2]);
     r->gl.Uniform3f(r->u_fog, sky[0], sky[1], sky[2]);
     r->gl.Uniform1f(r->u_fogd, 0.06f);
     r->gl.Uniform1i(r->u_lin, r->desc.srgb != 0);
-    st.state_changes += 2;
+}
 
-    int cur_pass = -1, cur_ref = -1, cur_mask = -1;
+/* The GL state of a pass (vp: the view-projection, for the passes in the
+ * world). */
+static void hol__set_pass(hol_render *r, const hol_frame_desc *f, int pass, const float vp[16])
+{
+    int ids = (f->flags & HOL_RENDER_IDS) != 0;
+    float ident[16];
+    hol__identity(ident);
+    switch (pass) {
+    case HOL__PASS_STENCIL:
+        r->gl.ColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+        r->gl.Disable(GL_DEPTH_TEST);
+        r->gl.DepthMask(GL_FALSE);
+        r->gl.Enable(GL_STENCIL_TEST);
+        r->gl.StencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+        r->gl.UniformMatrix4fv(r->u_vp, 1, GL_FALSE, ident);
+        r->gl.UniformMatrix4fv(r->u_model, 1, GL_FALSE, ident);
+        break;
+    case HOL__PASS_ROOM:
+    case HOL__PASS_TILE:
+        r->gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        r->gl.Enable(GL_DEPTH_TEST);
+        r->gl.DepthFunc(GL_LESS);
+        r->gl.DepthMask(GL_TRUE);
+        r->gl.StencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+        if (pass == HOL__PASS_ROOM)
+            r->gl.Disable(GL_STENCIL_TEST);
+        else
+            r->gl.Enable(GL_STENCIL_TEST);
+        r->gl.UniformMatrix4fv(r->u_vp, 1, GL_FALSE, vp);
+        r->gl.Uniform1i(r->u_mode, ids ? HOL__MODE_ID : HOL__MODE_LIT);
+        r->gl.Uniform4f(r->u_id, 0, 0, 0, 1);
+        if (pass == HOL__PASS_ROOM)
+            r->gl.UniformMatrix4fv(r->u_model, 1, GL_FALSE, ident);
+        break;
+    case HOL__PASS_HAND:
+        /* in the world: hidden where the scene is nearer; its coplanar
+         * layers are painted in order (no depth writes) */
+        r->gl.Enable(GL_DEPTH_TEST);
+        r->gl.DepthFunc(GL_LEQUAL);
+        r->gl.DepthMask(GL_FALSE);
+        r->gl.Disable(GL_STENCIL_TEST);
+        r->gl.UniformMatrix4fv(r->u_vp, 1, GL_FALSE, vp);
+        r->gl.Uniform1i(r->u_mode, ids ? HOL__MODE_ID : HOL__MODE_FLAT);
+        break;
+    case HOL__PASS_FADE:
+        r->gl.Disable(GL_DEPTH_TEST);
+        r->gl.DepthMask(GL_FALSE);
+        r->gl.Disable(GL_STENCIL_TEST);
+        r->gl.UniformMatrix4fv(r->u_vp, 1, GL_FALSE, ident);
+        r->gl.UniformMatrix4fv(r->u_model, 1, GL_FALSE, ident);
+        r->gl.Uniform1i(r->u_mode, HOL__MODE_FLAT);
+        r->gl.Enable(GL_BLEND);
+        r->gl.BlendColor(0, 0, 0, (float)f->fade);
+        r->gl.BlendFunc(GL_CONSTANT_ALPHA, GL_ONE_MINUS_CONSTANT_ALPHA);
+        break;
+    default:
+        r->gl.Disable(GL_BLEND);
+        r->gl.Disable(GL_DEPTH_TEST);
+        r->gl.DepthMask(GL_FALSE);
+        r->gl.Disable(GL_STENCIL_TEST);
+        r->gl.UniformMatrix4fv(r->u_vp, 1, GL_FALSE, ident);
+        r->gl.UniformMatrix4fv(r->u_model, 1, GL_FALSE, ident);
+        r->gl.Uniform1i(r->u_mode, ids ? HOL__MODE_ID : HOL__MODE_FLAT);
+        break;
+    }
+}
+
+/* Execute the sorted queue, skipping redundant state changes. */
+static void hol__execute(hol_render *r, const hol_frame_desc *f, const float vp[16],
+                         hol_render_stats *st)
+{
+    int ids = (f->flags & HOL_RENDER_IDS) != 0;
+    int cur_vao = 1, cur_pass = -1, cur_ref = -1, cur_mask = -1;
     for (int i = 0; i < r->nitems; i++) {
         const hol__item *it = r->sorted[i];
         if (it->pass != cur_pass) {
             cur_pass = it->pass;
             cur_ref = cur_mask = -1;
-            st.state_changes++;
-            switch (cur_pass) {
-            case HOL__PASS_STENCIL:
-                r->gl.ColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-                r->gl.Disable(GL_DEPTH_TEST);
-                r->gl.DepthMask(GL_FALSE);
-                r->gl.Enable(GL_STENCIL_TEST);
-                r->gl.StencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
-                r->gl.UniformMatrix4fv(r->u_vp, 1, GL_FALSE, ident);
-                r->gl.UniformMatrix4fv(r->u_model, 1, GL_FALSE, ident);
-                break;
-            case HOL__PASS_ROOM:
-            case HOL__PASS_TILE:
-                r->gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-                r->gl.Enable(GL_DEPTH_TEST);
-                r->gl.DepthFunc(GL_LESS);
-                r->gl.DepthMask(GL_TRUE);
-                r->gl.StencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-                if (cur_pass == HOL__PASS_ROOM)
-                    r->gl.Disable(GL_STENCIL_TEST);
-                else
-                    r->gl.Enable(GL_STENCIL_TEST);
-                r->gl.UniformMatrix4fv(r->u_vp, 1, GL_FALSE, vp);
-                r->gl.Uniform1i(r->u_mode, ids ? HOL__MODE_ID : HOL__MODE_LIT);
-                r->gl.Uniform4f(r->u_id, 0, 0, 0, 1);
-                if (cur_pass == HOL__PASS_ROOM)
-                    r->gl.UniformMatrix4fv(r->u_model, 1, GL_FALSE, ident);
-                break;
-            case HOL__PASS_HAND:
-                /* in the world: hidden where the scene is nearer; its
-                 * coplanar layers are painted in order (no depth writes) */
-                r->gl.Enable(GL_DEPTH_TEST);
-                r->gl.DepthFunc(GL_LEQUAL);
-                r->gl.DepthMask(GL_FALSE);
-                r->gl.Disable(GL_STENCIL_TEST);
-                r->gl.UniformMatrix4fv(r->u_vp, 1, GL_FALSE, vp);
-                r->gl.Uniform1i(r->u_mode, ids ? HOL__MODE_ID : HOL__MODE_FLAT);
-                break;
-            case HOL__PASS_FADE:
-                r->gl.Disable(GL_DEPTH_TEST);
-                r->gl.DepthMask(GL_FALSE);
-                r->gl.Disable(GL_STENCIL_TEST);
-                r->gl.UniformMatrix4fv(r->u_vp, 1, GL_FALSE, ident);
-                r->gl.UniformMatrix4fv(r->u_model, 1, GL_FALSE, ident);
-                r->gl.Uniform1i(r->u_mode, HOL__MODE_FLAT);
-                r->gl.Enable(GL_BLEND);
-                r->gl.BlendColor(0, 0, 0, (float)f->fade);
-                r->gl.BlendFunc(GL_CONSTANT_ALPHA, GL_ONE_MINUS_CONSTANT_ALPHA);
-                break;
-            default:
-                r->gl.Disable(GL_BLEND);
-                r->gl.Disable(GL_DEPTH_TEST);
-                r->gl.DepthMask(GL_FALSE);
-                r->gl.Disable(GL_STENCIL_TEST);
-                r->gl.UniformMatrix4fv(r->u_vp, 1, GL_FALSE, ident);
-                r->gl.UniformMatrix4fv(r->u_model, 1, GL_FALSE, ident);
-                r->gl.Uniform1i(r->u_mode, ids ? HOL__MODE_ID : HOL__MODE_FLAT);
-                break;
-            }
+            st->state_changes++;
+            hol__set_pass(r, f, cur_pass, vp);
         }
         if (cur_pass == HOL__PASS_STENCIL) {
             r->gl.StencilFunc(GL_ALWAYS, it->ref, 0xff);
-            st.state_changes++;
-            st.stencil_passes++;
+            st->state_changes++;
+            st->stencil_passes++;
         } else if (cur_pass == HOL__PASS_TILE) {
             if (it->ref != cur_ref || it->mask != cur_mask) {
                 r->gl.StencilFunc(GL_EQUAL, it->ref, it->mask);
                 cur_ref = it->ref;
                 cur_mask = it->mask;
-                st.state_changes++;
+                st->state_changes++;
             }
             r->gl.UniformMatrix4fv(r->u_model, 1, GL_FALSE, it->model);
             if (ids) {
                 int id = it->branch + 1;
-                r->gl.Uniform4f(r->u_id, (float)(id & 255) / 255.0f,
-                            (float)(id >> 8) / 255.0f, 0, 1);
+                r->gl.Uniform4f(r->u_id, (float)(id & 255) / 255.0f, (float)(id >> 8) / 255.0f,
+                                0, 1);
             }
-            st.branches++;
+            st->branches++;
         } else if (cur_pass == HOL__PASS_HAND) {
             r->gl.UniformMatrix4fv(r->u_model, 1, GL_FALSE, it->model);
         }
         if (it->dyn != cur_vao) {
             cur_vao = it->dyn;
             r->gl.BindVertexArray(r->vao[cur_vao]);
-            st.state_changes++;
+            st->state_changes++;
         }
         r->gl.DrawElements(GL_TRIANGLES, (GLsizei)it->count, GL_UNSIGNED_INT,
-                       (const void *)(uintptr_t)(it->first * sizeof(uint32_t)));
-        st.draw_calls++;
-        st.triangles += it->count / 3;
+                           (const void *)(uintptr_t)(it->first * sizeof(uint32_t)));
+        st->draw_calls++;
+        st->triangles += it->count / 3;
     }
+}
+
+hol_err hol_render_frame(hol_render *r, const hol_frame_desc *f,
+                         hol_render_stats *out_stats)
+{
+    double c0 = hol__now(CLOCK_PROCESS_CPUTIME_ID), w0 = hol__now(CLOCK_MONOTONIC);
+    int maxw = r->desc.max_width > 0 ? r->desc.max_width : 4096;
+    int maxh = r->desc.max_height > 0 ? r->desc.max_height : 4096;
+    if (f->cam.width <= 0 || f->cam.height <= 0 || f->cam.width > maxw ||
+        f->cam.height > maxh)
+        return HOL_EARG;
+    hol_render_stats st;
+    memset(&st, 0, sizeof st);
+    if (f->fade >= 1 && !(f->flags & HOL_RENDER_IDS)) {
+        hol_err err = hol__frame_faded(r, f);
+        if (out_stats)
+            r->gl.Finish();
+        st.cpu_ms = hol__now(CLOCK_PROCESS_CPUTIME_ID) - c0;
+        st.wall_ms = hol__now(CLOCK_MONOTONIC) - w0;
+        if (out_stats)
+            *out_stats = st;
+        return err;
+    }
+    hol_err err = hol__build(r, f);
+    if (err)
+        return err;
+    for (int i = 0; i < r->nitems; i++)
+        r->sorted[i] = &r->items[i];
+    qsort(r->sorted, (size_t)r->nitems, sizeof r->sorted[0], hol__cmp_item);
+    st.build_ms = hol__now(CLOCK_PROCESS_CPUTIME_ID) - c0;
+    float vp[16];
+    hol__frame_begin(r, f, vp);
+    st.state_changes += 2;
+    hol__execute(r, f, vp, &st);
     r->gl.Disable(GL_BLEND);
     r->gl.BindVertexArray(0);
     r->gl.Disable(GL_SCISSOR_TEST);
     if (out_stats)
-        r->gl.Finish();
+        r->gl.Finish(); /* the figures include the GPU's time */
     st.cpu_ms = hol__now(CLOCK_PROCESS_CPUTIME_ID) - c0;
     st.uploaded_bytes = r->uploaded;
     st.tiles_built = r->tiles_built;
