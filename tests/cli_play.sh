@@ -32,6 +32,8 @@ run "pad script missing" 2 "$H" play --gamepad-replay "$T/nope.pad" && one_line 
 run "pad script and no pad" 2 "$H" play --gamepad-replay "$PAD" --no-gamepad &&
     one_line "both" "not both"
 run "pad script no value" 2 "$H" play --gamepad-replay && one_line "no value" "needs a value"
+run "bad snap turn" 2 "$H" play --snap-turn 7 && one_line "bad snap" "divisor of 360"
+run "snap turn zero" 2 "$H" play --snap-turn 0 && one_line "snap zero" "snap-turn"
 
 if ! command -v Xvfb >/dev/null 2>&1; then
     echo "note: no Xvfb here: the window is not tested"
@@ -118,15 +120,24 @@ grep -q "^level explore-1 playing steps 2 optimum -1 tile Wr cell 0,0\$" "$T/out
 # and let go at once, most likely between two frames, still act: the
 # first attempt ends by restart, the recording carries the presses
 # (p=20, p=10) and replays to the same logs; Q quits
+# wait_frames ERRFILE: until play --stats has run frames for a second (its
+# first stats line; at most 60 s), then focus its window
+wait_frames() {
+    for i in $(seq 1 120); do
+        grep -q '^stats: ' "$1" 2>/dev/null && break
+        sleep 0.5
+    done
+    WID=$(timeout 20 xdotool search --sync --name '^holonomy$' | head -n 1)
+    [ -n "$WID" ] && xdotool windowfocus --sync "$WID" 2>/dev/null
+    sleep 0.3
+}
 if command -v xdotool >/dev/null 2>&1; then
     mkdir "$T/tap" "$T/tap2"
-    "$H" play --mode explore --size 320x240 --log "$T/tap" --record "$T/tap.rec" \
+    "$H" play --mode explore --size 320x240 --log "$T/tap" --record "$T/tap.rec" --stats \
         >"$T/tap.out" 2>"$T/tap.err" &
     PPID_PLAY=$!
-    WID=$(timeout 20 xdotool search --sync --name '^holonomy$' | head -n 1)
+    wait_frames "$T/tap.err"
     if [ -n "$WID" ]; then
-        xdotool windowfocus --sync "$WID" 2>/dev/null
-        sleep 2 # the level is set up after the window opens
         xdotool key r
         sleep 0.5
         xdotool key m
@@ -146,6 +157,30 @@ if command -v xdotool >/dev/null 2>&1; then
     grep -q '^level explore-1 quit ' "$T/tap.out" && ok || bad "Q did not quit: $(cat "$T/tap.out")"
     run "taps replay" 0 "$H" replay "$T/tap.rec" --log "$T/tap2"
     diff -r "$T/tap" "$T/tap2" >/dev/null && ok || bad "the taps' logs differ in the replay"
+    # snap turn: a tapped Left turns the look to 90 degrees exactly (the
+    # recording carries the snap: f=48 y=90), a tapped Right back to 0;
+    # --stats prints the frame rate and CPU ms a frame at the end
+    "$H" play --mode explore --size 320x240 --snap-turn 90 --stats --record "$T/snap.rec" \
+        >"$T/snap.out" 2>"$T/snap.err" &
+    PPID_PLAY=$!
+    wait_frames "$T/snap.err"
+    if [ -n "$WID" ]; then
+        xdotool key Left
+        sleep 0.5
+        xdotool key Right
+        sleep 0.5
+        xdotool key q
+    fi
+    for i in 1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 17 18 19 20; do
+        kill -0 $PPID_PLAY 2>/dev/null || break
+        sleep 0.5
+    done
+    kill $PPID_PLAY 2>/dev/null
+    wait $PPID_PLAY 2>/dev/null
+    grep -q ' f=48 y=90 d=keyboard$' "$T/snap.rec" && ok || bad "a tapped Left did not snap to 90"
+    [ "$(grep -c ' f=48 d=keyboard$' "$T/snap.rec")" = 1 ] && ok || bad "a tapped Right did not snap to 0"
+    grep -q '^stats: [0-9]* frames in [0-9.]* s: [0-9.]* fps, CPU [0-9.]* ms a frame' "$T/snap.err" &&
+        ok || bad "--stats printed no summary: $(cat "$T/snap.err")"
 else
     echo "note: no xdotool here: taps are tested through recorded lines only"
 fi
