@@ -22,12 +22,14 @@ typedef struct hol_web {
     double last_t, last_frame_t;
     long frames;             /* app steps, pancake and XR */
     int over;                /* the session is over (quit, campaign done) */
+    int drawn_over;          /* the last view was drawn after that */
+    int drawn_first;         /* the first frame was drawn */
     int failed;
     /* WebXR */
     int xr_active;
     hol_web_xr_state xr;
     hol_web_xr_frame xf;     /* written by the glue each XR frame */
-    long xr_frames, xr_two_views;
+    long xr_frames, xr_two_views, xr_focused;
     double xr_cpu_ms[4096];  /* per XR frame: step and both eyes (ms) */
     int xr_ncpu;
     /* read-back check of both eyes at one XR frame (make web-test) */
@@ -49,7 +51,9 @@ void hol_web_game_finish(void);
 /* the end line, as `holonomy play` prints it */
 void hol_web_game_print_end(void);
 
-/* hol_web_xr_loop.c: render both eyes of an XR frame into framebuffer fb */
-void hol_web_xr_render(const hol_app_view *v, const hol_input *in, int fb);
+/* hol_web_main.c: one step of the session and what follows it (a level
+ * started: meshes rebuilt; over: the end line, the files committed, the
+ * page told). 0 go on, 1 over or failed. */
+int hol_web_step(const hol_input *in);
 
 #endif

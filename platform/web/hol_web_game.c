@@ -1,99 +1,176 @@
-/* hol_web_game.c - the web page's game session. (Interim: one level driven
- * through the app step, the recording kept in memory; the shared session,
- * core/hol_session.h, replaces it.) */
+/* hol_web_game.c - the page's game: the shared session (core/hol_session.h)
+ * over the levels the page asks for, writing its logs and recording to the
+ * browser's store (hol_web_sink.h). What to play comes from the page's
+ * config (page.js: URL parameters or a level file), as `holonomy play`
+ * takes it from its command line: a level file's text, or a mode and seed,
+ * or neither: the default campaign from the seed (default 1).
+ */
 #include <emscripten.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "../../core/hol_input_io.h"
+#include "../../core/hol_campaign.h"
+#include "../../core/hol_session.h"
 #include "hol_web.h"
+#include "hol_web_sink.h"
 
 extern void hol_web_js_config(const char *key, char *buf, int cap);
-extern void hol_web_js_store_put(const char *name, const char *data, int n);
+extern void hol_web_js_event(const char *kind, const char *text);
 
-static hol_app *app;
-static char *rec;
-static size_t rec_len, rec_cap;
-static char level_text[512];
+static hol_session *sess;
+static hol_level levels[HOL_SESSION_MAX_LEVELS];
+static int finished;
 
-static void rec_add(const char *s, size_t n)
+/* decimal or 0x hex, nothing else (as the desktop's --seed) */
+static int parse_seed(const char *s, uint64_t *out)
 {
-    if (rec_len + n + 1 > rec_cap) {
-        size_t cap = rec_cap ? rec_cap * 2 : 1 << 16;
-        while (cap < rec_len + n + 1)
-            cap *= 2;
-        char *p = realloc(rec, cap);
-        if (!p)
-            return;
-        rec = p;
-        rec_cap = cap;
+    int hex = s[0] == '0' && (s[1] == 'x' || s[1] == 'X');
+    const char *p = hex ? s + 2 : s;
+    uint64_t v = 0;
+    if (!*p)
+        return 1;
+    for (; *p; p++) {
+        int d = *p >= '0' && *p <= '9' ? *p - '0'
+                : hex && *p >= 'a' && *p <= 'f' ? *p - 'a' + 10
+                : hex && *p >= 'A' && *p <= 'F' ? *p - 'A' + 10 : -1;
+        uint64_t base = hex ? 16 : 10;
+        if (d < 0 || v > (UINT64_MAX - (uint64_t)d) / base)
+            return 1;
+        v = v * base + (uint64_t)d;
     }
-    memcpy(rec + rec_len, s, n);
-    rec_len += n;
-    rec[rec_len] = 0;
+    *out = v;
+    return 0;
+}
+
+/* The levels the page asks for; 0, or 1 with msg. */
+static int page_levels(int *n, char *msg, size_t cap)
+{
+    char mode[32], seed_s[40], name[HOL_LEVEL_NAME_MAX];
+    static char text[HOL_LEVEL_TEXT_MAX + 2];
+    hol_web_js_config("mode", mode, sizeof mode);
+    hol_web_js_config("seed", seed_s, sizeof seed_s);
+    hol_web_js_config("levelName", name, sizeof name);
+    hol_web_js_config("level", text, sizeof text);
+    uint64_t seed = 1;
+    if (seed_s[0] && parse_seed(seed_s, &seed)) {
+        snprintf(msg, cap, "seed '%.30s' is not an unsigned 64-bit number", seed_s);
+        return 1;
+    }
+    if (text[0]) {
+        hol_level_err le;
+        size_t len = strlen(text);
+        if (len > HOL_LEVEL_TEXT_MAX) {
+            snprintf(msg, cap, "the level file is longer than %d bytes", HOL_LEVEL_TEXT_MAX);
+            return 1;
+        }
+        if (!name[0])
+            snprintf(name, sizeof name, "level");
+        if (hol_level_make(name, strlen(name), text, len, &levels[0], &le)) {
+            char m[256];
+            snprintf(msg, cap, "%.60s: %s", name, hol_level_err_format(&le, 1, m, sizeof m));
+            return 1;
+        }
+        *n = 1;
+    } else if (mode[0]) {
+        if (hol_campaign_mode_level(mode, seed, &levels[0])) {
+            snprintf(msg, cap, "mode '%.30s' is not one of tutorial, flag, keys, explore", mode);
+            return 1;
+        }
+        *n = 1;
+    } else {
+        if (hol_campaign_default(seed, levels)) {
+            snprintf(msg, cap, "cannot make the default campaign");
+            return 1;
+        }
+        *n = HOL_CAMPAIGN_LEVELS;
+    }
+    return 0;
 }
 
 int hol_web_game_open(char *msg, size_t cap)
 {
-    char seed_s[32] = "";
-    hol_web_js_config("seed", seed_s, sizeof seed_s);
-    hol_app_level L;
-    memset(&L, 0, sizeof L);
-    L.mode = HOL_APP_EXPLORE;
-    L.seed = seed_s[0] ? strtoull(seed_s, NULL, 0) : 1;
-    L.cues = HOL_CUE_ALL;
-    L.minimap = HOL_MINIMAP_OFF;
-    hol_app_desc d;
-    memset(&d, 0, sizeof d);
-    hol_err err = hol_app_create(&d, &app);
-    if (!err)
-        err = hol_app_start_level(app, &L);
-    if (err) {
-        snprintf(msg, cap, "cannot start the game: %s", hol_err_str(err));
+    int n = 0;
+    if (page_levels(&n, msg, cap))
+        return 1;
+    char part[HOL_REC_ID_MAX + 8] = "";
+    hol_web_js_config("participant", part, sizeof part);
+    if (part[0] && !hol_rec_id_ok(part)) {
+        snprintf(msg, cap, "participant '%.40s' is not 1..63 letters, digits, '.', '_' or '-'",
+                 part);
         return 1;
     }
-    snprintf(level_text, sizeof level_text, "mode explore\nseed %llu\nminimap off\n",
-             (unsigned long long)L.seed);
-    char head[600];
-    int n = snprintf(head, sizeof head, "holonomy-rec 1\nlevel explore\nL mode explore\nL seed %llu\nL minimap off\nend\n",
-                     (unsigned long long)L.seed);
-    rec_add(head, (size_t)n);
+    hol_session_desc d;
+    memset(&d, 0, sizeof d);
+    d.levels = levels;
+    d.nlevels = n;
+    d.log = hol_web_sink();
+    d.append = 1; /* one folder for every visit (hol_web_sink.h) */
+    d.rec = hol_web_sink();
+    hol_web_sink_meta(&d.meta, part[0] ? part : NULL);
+    char rec_name[HOL_REC_ID_MAX + 16];
+    snprintf(rec_name, sizeof rec_name, "session-%s.rec", d.meta.session);
+    d.rec_name = rec_name;
+    hol_err e = hol_session_create(&d, &sess, msg, cap);
+    if (e)
+        return 1;
+    printf("web: session %s, %d level(s), recording %s\n", d.meta.session, n, rec_name);
+    if (hol_session_recovered(sess))
+        printf("web: %d unfinished attempt(s) of an earlier visit finished (end 'killed')\n",
+               hol_session_recovered(sess));
     return 0;
 }
 
 int hol_web_game_step(const hol_input *in)
 {
-    hol_err err = hol_app_step(app, in);
-    if (err) {
-        printf("web: the app step failed: %s\n", hol_err_str(err));
+    int over = 0;
+    hol_err e = hol_session_step(sess, in, &over);
+    if (e == HOL_EIO) { /* the session plays on, writing nothing more */
+        printf("web: %s\n", hol_session_message(sess));
+        hol_web_js_event("warning", hol_session_message(sess));
+    } else if (e) {
+        printf("web: the session step failed: %s\n", hol_session_message(sess));
         return -1;
     }
-    char line[HOL_INPUT_LINE_MAX + 2];
-    size_t n = hol_input_format(in, line, sizeof line);
-    line[n++] = '\n';
-    rec_add(line, n);
-    const hol_app_events *ev = hol_app_get_events(app);
+    const hol_app_events *ev = hol_app_get_events(hol_session_app(sess));
     for (int i = 0; i < ev->nsteps; i++)
         printf("web: step %d %c cell %d,%d\n", ev->steps[i].index,
                hol_dir_to_char(ev->steps[i].dir), ev->steps[i].room.col, ev->steps[i].room.row);
-    return hol_app_get_view(app)->state == HOL_APP_QUIT;
+    if (ev->level_ended)
+        hol_web_js_event("saved", "");
+    return over;
 }
 
 hol_app *hol_web_game_app(void)
 {
-    return app;
+    return sess ? hol_session_app(sess) : NULL;
 }
 
 void hol_web_game_finish(void)
 {
-    hol_web_js_store_put("session.rec", rec ? rec : "", (int)rec_len);
+    if (finished)
+        return;
+    finished = 1;
+    if (hol_session_finish(sess))
+        printf("web: %s\n", hol_session_message(sess));
+    hol_web_js_event("saved", "");
+}
+
+/* The page is going away (pagehide): the attempt in play ends `aborted`
+ * and every file is committed, as the desktop does on SIGTERM. */
+EMSCRIPTEN_KEEPALIVE void hol_web_abort(void)
+{
+    if (!sess || finished)
+        return;
+    finished = 1;
+    hol_session_abort(sess);
 }
 
 void hol_web_game_print_end(void)
 {
-    const hol_app_view *v = hol_app_get_view(app);
+    const hol_app_view *v = hol_app_get_view(hol_session_app(sess));
     static const char *const st[] = {"idle", "playing", "done", "quit"};
-    printf("level explore %s steps %d optimum %d tile %s cell %d,%d\n", st[v->state],
-           v->hud.steps, v->hud.optimum, v->hud.address, v->user.col, v->user.row);
+    printf("level %s %s steps %d optimum %d tile %s cell %d,%d\n", hol_session_level(sess)->name,
+           v->hud.timed_out ? "timeout" : st[v->state], v->hud.steps, v->hud.optimum,
+           v->hud.address, v->user.col, v->user.row);
 }

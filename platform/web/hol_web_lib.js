@@ -206,10 +206,53 @@ var HolWebLib = {
     stringToUTF8(v === undefined || v === null ? '' : String(v), buf, cap);
   },
 
-  hol_web_js_store_put: function (name, data, n) {
-    var nm = UTF8ToString(name);
-    var bytes = HEAPU8.slice(data, data + n);
-    if (Module['holStorePut']) Module['holStorePut'](nm, bytes);
+  // ---- the store behind the session's sink (hol_web_sink.c, store.js) ----
+  hol_web_js_store_open: function (name, append) {
+    try {
+      return window.holonomyStore.open(UTF8ToString(name), append);
+    } catch (e) {
+      return -1;
+    }
+  },
+  hol_web_js_store_write: function (h, data, n) {
+    return window.holonomyStore.write(h, HEAPU8.subarray(data, data + n)) ? 0 : -1;
+  },
+  hol_web_js_store_flush: function (h) {
+    return window.holonomyStore.flush(h) ? 0 : -1;
+  },
+  hol_web_js_store_close: function (h) {
+    return window.holonomyStore.close(h) ? 0 : -1;
+  },
+  hol_web_js_store_rename: function (from, to) {
+    var ok = window.holonomyStore.rename(UTF8ToString(from), UTF8ToString(to));
+    if (ok && Module['holEvent']) Module['holEvent']('saved', UTF8ToString(to));
+    return ok ? 0 : -1;
+  },
+  hol_web_js_store_remove: function (name) {
+    return window.holonomyStore.remove(UTF8ToString(name)) ? 0 : -1;
+  },
+  hol_web_js_store_read: function (name, off, buf, n) {
+    var b = window.holonomyStore.read(UTF8ToString(name), off, n);
+    if (!b) return -1;
+    HEAPU8.set(b, buf);
+    return b.length;
+  },
+  hol_web_js_store_list: function (buf, cap) {
+    var s = window.holonomyStore.names().map(function (n) { return n + '\n'; }).join('');
+    if (buf) stringToUTF8(s, buf, cap);
+    return lengthBytesUTF8(s);
+  },
+  hol_web_js_store_why: function (buf, cap) {
+    stringToUTF8(window.holonomyStore.why(), buf, cap);
+  },
+  // the session's start (ISO 8601 UTC) and id (YYYYMMDDTHHMMSSZ-XXXXXXXX)
+  hol_web_js_meta: function (start, session, cap) {
+    var iso = new Date().toISOString().replace(/\.\d+Z$/, 'Z');
+    var r = new Uint32Array(1);
+    crypto.getRandomValues(r);
+    var id = iso.replace(/[-:]/g, '') + '-' + ('0000000' + r[0].toString(16)).slice(-8);
+    stringToUTF8(iso, start, cap);
+    stringToUTF8(id, session, cap);
   }
 };
 

@@ -148,6 +148,40 @@ static void poll_gamepad(hol_web_pancake *p)
     }
 }
 
+/* What the page and the tests may ask (numbers, so no strings cross):
+ * 0 app steps, 1 XR frames, 2 XR frames with two views, 3 XR frames
+ * focused, 4 the app state (hol_app_state), 5 paused, 6 room steps in the
+ * level, 7 the session is over, 8 failed, 9 head x, 10 head z, 11 cell
+ * column, 12 cell row, 13 the level clock, 14 yaw. */
+EMSCRIPTEN_KEEPALIVE double hol_web_state(int what)
+{
+    hol_web *w = &hol_web_g;
+    const hol_app_view *v = hol_web_game_app() ? hol_app_get_view(hol_web_game_app()) : NULL;
+    switch (what) {
+    case 0: return (double)w->frames;
+    case 1: return (double)w->xr_frames;
+    case 2: return (double)w->xr_two_views;
+    case 3: return (double)w->xr_focused;
+    case 7: return w->over;
+    case 8: return w->failed;
+    default: break;
+    }
+    if (!v)
+        return -1;
+    switch (what) {
+    case 4: return v->state;
+    case 5: return v->paused;
+    case 6: return v->hud.steps;
+    case 9: return v->head[0];
+    case 10: return v->head[2];
+    case 11: return v->user.col;
+    case 12: return v->user.row;
+    case 13: return v->hud.elapsed_s;
+    case 14: return v->yaw_deg;
+    default: return -1;
+    }
+}
+
 /* ---- the loop ------------------------------------------------------------- */
 
 /* Time since the start, never going back. */
@@ -160,7 +194,6 @@ static double now_s(double t_ms)
     return t;
 }
 
-/* One step of the session with in; 0 go on. */
 int hol_web_step(const hol_input *in)
 {
     hol_web *w = &hol_web_g;
@@ -187,17 +220,20 @@ static EM_BOOL pancake_frame(double t_ms, void *user)
 {
     (void)user;
     hol_web *w = &hol_web_g;
-    if (w->xr_active || w->over)
+    if (w->xr_active || w->failed || (w->over && w->drawn_over))
         return EM_TRUE; /* the XR session draws, or nothing is left to do */
-    double t = now_s(t_ms), dt = t - w->last_frame_t;
-    w->last_frame_t = t;
-    hol_web_pancake *p = &w->pan;
-    p->focused = hol_web_js_focused();
-    poll_gamepad(p);
-    hol_input in;
-    hol_web_pancake_input(p, t, dt, hol_app_get_view(hol_web_game_app())->yaw_deg, &in);
-    if (hol_web_step(&in))
-        return EM_TRUE;
+    if (!w->over) {
+        double t = now_s(t_ms), dt = t - w->last_frame_t;
+        w->last_frame_t = t;
+        hol_web_pancake *p = &w->pan;
+        p->focused = hol_web_js_focused();
+        poll_gamepad(p);
+        hol_input in;
+        hol_web_pancake_input(p, t, dt, hol_app_get_view(hol_web_game_app())->yaw_deg, &in);
+        hol_web_step(&in);
+    }
+    /* once over, the last view is drawn once more (under the page's logs) */
+    w->drawn_over = w->over;
     int cw = 0, ch = 0;
     emscripten_get_canvas_element_size("#canvas", &cw, &ch);
     if (cw < 16 || ch < 16)
@@ -209,6 +245,10 @@ static EM_BOOL pancake_frame(double t_ms, void *user)
         printf("web: rendering failed\n");
         w->failed = w->over = 1;
         hol_web_js_event("failed", "rendering failed");
+    } else if (!w->drawn_first) {
+        w->drawn_first = 1; /* performance.now(): since the page's navigation began */
+        printf("web: first frame %.0f ms after the page began loading\n",
+               emscripten_performance_now());
     }
     return EM_TRUE;
 }

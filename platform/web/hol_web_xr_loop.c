@@ -16,8 +16,6 @@
 #include "../../render/hol_app_frame.h"
 #include "hol_web.h"
 
-int hol_web_step(const hol_input *in);
-
 #define HOL__MARGIN 0.15 /* the motion's default hedge margin */
 
 /* Offsets (in floats) of hol_web_xr_frame's fields, for the glue. */
@@ -70,6 +68,7 @@ EMSCRIPTEN_KEEPALIVE void hol_web_xr_active(int on)
 {
     hol_web *w = &hol_web_g;
     w->xr_active = on;
+    w->drawn_over = 0;
     if (on) {
         memset(&w->xr, 0, sizeof w->xr);
         w->xr.last_t = w->last_t;
@@ -111,7 +110,7 @@ static void check_eye(int e, const hol_frame_desc *fd)
            fd->user.col, fd->user.row);
 }
 
-void hol_web_xr_render(const hol_app_view *v, const hol_input *in, int fb)
+static void xr_render(const hol_app_view *v, const hol_input *in, int fb)
 {
     hol_web *w = &hol_web_g;
     int n = w->xf.nviews > 1.5f ? 2 : 1;
@@ -168,9 +167,10 @@ EMSCRIPTEN_KEEPALIVE int hol_web_xr_step(double t_ms, int fb)
     hol_input in;
     hol_web_xr_input(&w->xr, &w->xf, t > w->last_t ? t : w->last_t, &in);
     w->last_t = in.time_s;
+    w->xr_focused += (in.flags & HOL_INPUT_FOCUSED) != 0;
     if (hol_web_step(&in))
         return 1;
-    hol_web_xr_render(hol_app_get_view(hol_web_game_app()), &in, fb);
+    xr_render(hol_app_get_view(hol_web_game_app()), &in, fb);
     if (w->xr_ncpu < (int)(sizeof w->xr_cpu_ms / sizeof w->xr_cpu_ms[0]))
         w->xr_cpu_ms[w->xr_ncpu++] = emscripten_get_now() - c0;
     w->xr_frames++;
@@ -194,6 +194,11 @@ EMSCRIPTEN_KEEPALIVE double hol_web_xr_cpu_ms(int which)
     memcpy(s, w->xr_cpu_ms, (size_t)w->xr_ncpu * sizeof s[0]);
     qsort(s, (size_t)w->xr_ncpu, sizeof s[0], cmp_d);
     return which == 0 ? w->xr_ncpu : which == 1 ? s[w->xr_ncpu / 2] : s[w->xr_ncpu * 99 / 100];
+}
+
+EMSCRIPTEN_KEEPALIVE void hol_web_xr_cpu_reset(void)
+{
+    hol_web_g.xr_ncpu = 0;
 }
 
 EMSCRIPTEN_KEEPALIVE long hol_web_xr_frames(int two_views)

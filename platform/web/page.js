@@ -127,13 +127,16 @@
         console.error('holonomy: ' + text);
       } else if (kind === 'saved') {
         refreshLogs();
+      } else if (kind === 'warning') {
+        status('Warning: ' + text);
+        console.warn('holonomy: ' + text);
       }
-    },
-    holStorePut: function (name, bytes) {
-      if (window.holonomyStore) window.holonomyStore.put(name, bytes);
-      refreshLogs();
     }
   };
+  // leaving the page ends the attempt in play ('aborted') and keeps the files
+  window.addEventListener('pagehide', function () {
+    if (Module._hol_web_abort) Module._hol_web_abort();
+  });
   $('vr').addEventListener('click', function () {
     Module.holXR.enter().catch(function (e) { status('VR failed: ' + e.message); });
   });
@@ -150,11 +153,16 @@
       document.body.appendChild(s);
     });
   }
+  // a level's name: its file's name up to the first '.' (as the desktop's)
+  function levelName(file) {
+    var n = file.split('.')[0] || file;
+    return n.slice(0, 60);
+  }
   var saved = params.has('levelfile') && sessionStorage.getItem('holonomy-level');
   if (saved) {
     var lv = JSON.parse(saved);
     config.level = lv.text;
-    config.levelName = lv.name;
+    config.levelName = levelName(lv.name);
     start();
   } else if (params.has('level')) {
     var url = params.get('level');
@@ -163,7 +171,7 @@
       return r.text();
     }).then(function (t) {
       config.level = t;
-      config.levelName = url.split('/').pop();
+      config.levelName = levelName(url.split('/').pop());
       start();
     }).catch(function (e) {
       status('Cannot load the level: ' + e.message);
