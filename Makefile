@@ -66,7 +66,8 @@ CLI_TESTS := $(wildcard tests/cli_*.sh)
 RENDER_LIBS ?= -lOSMesa -lEGL -lX11 -lz
 # tests/bench_render*.c: benches that also link the renderer and GL.
 BENCH_RENDER_SRC := $(wildcard tests/bench_render*.c)
-BENCH_SRC := $(filter-out $(BENCH_RENDER_SRC),$(wildcard tests/bench_*.c))
+# tests/bench_web.c runs natively and in wasm under tests/web/bench.mjs (bench-web).
+BENCH_SRC := $(filter-out $(BENCH_RENDER_SRC) tests/bench_web.c,$(wildcard tests/bench_*.c))
 FUZZ_SRC := $(wildcard fuzz/fuzz_*.c)
 
 CORE_OBJ := $(CORE_SRC:%.c=$(BUILD)/%.o)
@@ -93,7 +94,7 @@ DEB_PACKAGES := make gcc clang libcmocka-dev libosmesa6-dev libegl-dev \
 APT_LOCK_WAIT ?= 120
 APT_GET = $$SUDO env DEBIAN_FRONTEND=noninteractive apt-get -o DPkg::Lock::Timeout=$(APT_LOCK_WAIT)
 
-.PHONY: web web-serve web-test deps-web
+.PHONY: web web-serve web-test deps-web bench-web
 .PHONY: all test purity unit render-test cli-test fuzz-replay fuzz bench san clean deps xr \
         deps-cross check-clang cross-test run quest quest-help deps-quest quest-check check-hid-libusb deps-xr xr-test soak \
         deps-quest-link quest-link-check
@@ -224,6 +225,9 @@ fuzz: $(FUZZ_BIN)
 
 bench: $(BENCH_BIN) $(BENCH_RENDER_BIN)
 	@set -e; for b in $(BENCH_BIN) $(BENCH_RENDER_BIN); do $$b; done
+	@if command -v $(EMCC) >/dev/null && [ -x /usr/bin/chromium ] && [ -d tests/web/node_modules ]; \
+	then $(MAKE) -s bench-web; \
+	else echo "== web: skipped (make deps-web installs emscripten, chromium and the npm packages)"; fi
 
 san:
 	$(MAKE) BUILD=$(BUILD)/san OPT=-O1 \
@@ -328,10 +332,12 @@ WEB_PORT ?= 8080
 
 $(BUILD)/web-obj/%.o: %.c
 	@mkdir -p $(dir $@)
-	$(EMCC_ENV) $(EMCC) $(WEB_CFLAGS) -c $< -o $@
+	@echo "emcc $<"
+	@$(EMCC_ENV) $(EMCC) $(WEB_CFLAGS) -c $< -o $@
 
 $(WEB)/holonomy.js: $(WEB_OBJ) platform/web/hol_web_lib.js
-	$(EMCC_ENV) $(EMCC) $(WEB_LDFLAGS) $(WEB_OBJ) -o $@
+	@echo "emcc -o $@"
+	@$(EMCC_ENV) $(EMCC) $(WEB_LDFLAGS) $(WEB_OBJ) -o $@
 
 $(WEB)/%: platform/web/%
 	@mkdir -p $(dir $@)
@@ -350,8 +356,27 @@ deps-web:
 	@cd tests/web && if npm ls --depth=0 >/dev/null 2>&1; then echo "make deps-web: npm packages present"; \
 	  else npm ci --no-audit --no-fund; fi
 
-web-test: web deps-web $(BUILD)/holonomy
-	@HOLONOMY=$(BUILD)/holonomy WEB=$(WEB) node tests/web/run.mjs
+# Programs for node (wasm embedded: no fetch of a .wasm file under node).
+WEB_NODE_FLAGS := -O2 -sENVIRONMENT=node -sSINGLE_FILE=1 -sALLOW_MEMORY_GROWTH=1
+$(BUILD)/web-node/math_check.js: tests/web/math_check.c tests/math_golden.h core/hol_math.c core/hol_math.h
+	@mkdir -p $(dir $@)
+	@echo "emcc -o $@"
+	@$(EMCC_ENV) $(EMCC) $(WEB_CFLAGS) $(WEB_NODE_FLAGS) tests/web/math_check.c core/hol_math.c -o $@
+
+$(BUILD)/web-node/bench_web.js: tests/bench_web.c tests/bench_util.h $(CORE_SRC) $(wildcard core/*.h)
+	@mkdir -p $(dir $@)
+	@echo "emcc -o $@"
+	@$(EMCC_ENV) $(EMCC) $(CSTD) -O2 -ffp-contract=off -DNDEBUG -D_DEFAULT_SOURCE $(WEB_NODE_FLAGS) \
+	  tests/bench_web.c $(CORE_SRC) -o $@
+
+# make bench's web figures (README: Performance)
+bench-web: web $(BUILD)/bench/bench_web $(BUILD)/web-node/bench_web.js
+	@BENCH_NATIVE=$(BUILD)/bench/bench_web BENCH_WASM=$(BUILD)/web-node/bench_web.js WEB=$(WEB) \
+	  node tests/web/bench.mjs
+
+web-test: web deps-web $(BUILD)/holonomy $(BUILD)/web-node/math_check.js
+	@HOLONOMY=$(BUILD)/holonomy WEB=$(WEB) MATH_CHECK=$(BUILD)/web-node/math_check.js \
+	  node tests/web/run.mjs
 
 # The APK's native library without the NDK (tests/quest_link_check.sh):
 # every source build_apk.sh links (but the NDK's glue and the entry that

@@ -1,0 +1,105 @@
+// bench.mjs - the web build's figures for make bench (README: Performance):
+// - the app step and the navigator's table build, the same C natively and in
+//   wasm under node (tests/bench_web.c), and their ratio;
+// - the first frame from page load in headless chromium (SwiftShader);
+// - the compressed transfer size of build/web (gzip -9 and brotli);
+// - CPU per XR frame at 800x600 on iwer's Quest 3 under SwiftShader: the
+//   page's main thread (step and both eyes' GL calls issued) and all of
+//   chromium's processes together (/proc: browser, renderer, GPU process
+//   where SwiftShader rasterises).
+// Environment: BENCH_NATIVE, BENCH_WASM (the two builds of bench_web), WEB,
+// CHROMIUM.
+import fs from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
+import zlib from 'node:zlib';
+import { spawnSync } from 'node:child_process';
+import { enterVR, launch, openPage, serve, sleep } from './lib.mjs';
+
+const WEB = path.resolve(process.env.WEB || 'build/web');
+const CHROMIUM = process.env.CHROMIUM || '/usr/bin/chromium';
+const tmp = fs.mkdtempSync(path.join(os.tmpdir(), 'holonomy-web-bench-'));
+const median = (a) => a.slice().sort((x, y) => x - y)[a.length >> 1];
+
+function figures(cmd, args) {
+  const r = spawnSync(cmd, args, { encoding: 'utf8' });
+  if (r.status !== 0) throw new Error(`${cmd}: ${r.stderr}`);
+  return Object.fromEntries(r.stdout.trim().split('\n').map((l) => l.split(' ')))
+}
+
+console.log('== web: the app step and the navigator, native and wasm (node ' + process.version + '), in one run');
+const runs = { native: [], wasm: [] };
+for (let i = 0; i < 3; i++) { /* interleaved: both see the same load */
+  runs.native.push(figures(process.env.BENCH_NATIVE, []));
+  runs.wasm.push(figures(process.execPath, [process.env.BENCH_WASM]));
+}
+const hash = new Set([...runs.native, ...runs.wasm].map((f) => f.view_hash));
+const pick = (k, which) => median(runs[which].map((f) => +f[k]));
+for (const k of ['nav_build_ms', 'step_mean_us', 'step_p99_us', 'step_max_us']) {
+  const n = pick(k, 'native'), w = pick(k, 'wasm');
+  console.log(`  ${k.padEnd(14)} native ${n.toFixed(2).padStart(9)}  wasm ${w.toFixed(2).padStart(9)}  wasm/native ${(w / n).toFixed(2)}`);
+}
+console.log(`  (medians of 3 runs; ${runs.native[0].frames} frames, ${runs.native[0].room_steps} room steps after a warm-up walk; ` +
+  `target for the step: 2x or better) the same final view natively and in wasm: ${hash.size === 1 ? 'yes' : 'NO'}`);
+
+console.log('== web: transfer size of build/web');
+let raw = 0, gz = 0, br = 0;
+for (const f of fs.readdirSync(WEB)) {
+  const b = fs.readFileSync(path.join(WEB, f));
+  raw += b.length;
+  gz += zlib.gzipSync(b, { level: 9 }).length;
+  br += zlib.brotliCompressSync(b, { params: { [zlib.constants.BROTLI_PARAM_QUALITY]: 11 } }).length;
+}
+console.log(`  ${fs.readdirSync(WEB).length} files: ${(raw / 1024).toFixed(0)} KB, gzip -9 ${(gz / 1024).toFixed(0)} KB, ` +
+  `brotli ${(br / 1024).toFixed(0)} KB (target < 2 MB)`);
+
+// CPU seconds of chromium's processes (the browser and its children)
+function chromiumCpu(root) {
+  const tick = 100; /* USER_HZ */
+  let total = 0;
+  const kids = new Map();
+  for (const d of fs.readdirSync('/proc')) {
+    if (!/^\d+$/.test(d)) continue;
+    try {
+      const st = fs.readFileSync(`/proc/${d}/stat`, 'utf8');
+      const f = st.slice(st.lastIndexOf(')') + 2).split(' ');
+      kids.set(+d, { ppid: +f[1], cpu: (+f[11] + +f[12]) / tick });
+    } catch (e) { /* gone */ }
+  }
+  const inTree = (pid) => { for (let p = pid, n = 0; p > 1 && n < 64; n++) { if (p === root) return true; p = kids.get(p)?.ppid; } return false; };
+  for (const [pid, k] of kids) if (inTree(pid)) total += k.cpu;
+  return total;
+}
+
+console.log('== web: headless chromium ' + spawnSync(CHROMIUM, ['--version'], { encoding: 'utf8' }).stdout.trim() + ', SwiftShader');
+const server = await serve(WEB, tmp);
+const browser = await launch(CHROMIUM, path.join(tmp, 'profile'), 800, 600);
+try {
+  const first = [];
+  for (let i = 0; i < 3; i++) {
+    const p = await openPage(browser, server.base + '/?mode=flag&seed=' + (i + 1));
+    await p.until(() => p.log.find((l) => l.startsWith('web: first frame')), 'the first frame');
+    first.push(+/(\d+) ms/.exec(p.log.find((l) => l.startsWith('web: first frame')))[1]);
+    await p.ctx.close();
+  }
+  console.log(`  first frame from page load (flag level; median of 3 loads): ${median(first)} ms`);
+  const p = await openPage(browser, server.base + '/?mode=flag&seed=1', { iwer: true });
+  await enterVR(p);
+  await p.until(async () => (await p.state(1)) >= 60, 'warm-up XR frames', 120000);
+  const pid = browser.process().pid;
+  const c0 = chromiumCpu(pid), f0 = await p.state(1), t0 = Date.now();
+  await p.page.evaluate(() => Module._hol_web_xr_cpu_reset());
+  await p.until(async () => (await p.state(1)) >= f0 + 120, '120 XR frames', 180000);
+  const c1 = chromiumCpu(pid), f1 = await p.state(1), secs = (Date.now() - t0) / 1000;
+  const [n, med, p99] = await p.page.evaluate(() => [0, 1, 2].map((w) => Module._hol_web_xr_cpu_ms(w)));
+  const size = await p.page.evaluate(() => [Module.canvas.width, Module.canvas.height]);
+  console.log(`  XR frames at ${size[0]}x${size[1]} (two eyes of ${size[0] / 2}x${size[1]}): ${((f1 - f0) / secs).toFixed(1)} frames/s`);
+  console.log(`  main thread per XR frame (app step, both eyes' GL calls issued): median ${med.toFixed(2)} ms, p99 ${p99.toFixed(2)} ms over ${n} frames`);
+  console.log(`  all chromium processes per XR frame (incl. SwiftShader rasterising): ${((c1 - c0) / (f1 - f0) * 1000).toFixed(1)} ms CPU`);
+  console.log(`  (machine: ${os.cpus().length} cores, load average ${os.loadavg()[0].toFixed(1)})`);
+  await p.ctx.close();
+} finally {
+  await browser.close();
+  server.close();
+  fs.rmSync(tmp, { recursive: true, force: true });
+}

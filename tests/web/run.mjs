@@ -1,0 +1,289 @@
+// run.mjs - make web-test: the web build (build/web) served on 127.0.0.1 and
+// played in headless chromium (SwiftShader WebGL 2), driven through the
+// DevTools protocol (puppeteer-core), with a Meta Quest 3 emulated by iwer
+// for WebXR. Each check prints "ok - NAME" or "not ok - NAME: why"; the exit
+// status is 1 when any failed. Artifacts (the eyes read back, the OSMesa
+// references, the browser's logs and recording, screenshots) go to
+// WEB_TEST_OUT (default: a temporary folder, removed unless a check failed).
+//
+// Environment: HOLONOMY (the desktop binary: replay, render), WEB (the
+// build), CHROMIUM (default /usr/bin/chromium), WEB_TEST_OUT.
+import fs from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
+import { spawnSync } from 'node:child_process';
+import { S, enterVR, launch, openPage as openPage_, serve, sleep, stored } from './lib.mjs';
+import { decodePNG, encodePNG } from './png.mjs';
+
+const HOLONOMY = path.resolve(process.env.HOLONOMY || 'build/holonomy');
+const WEB = path.resolve(process.env.WEB || 'build/web');
+const CHROMIUM = process.env.CHROMIUM || '/usr/bin/chromium';
+const tmp = fs.mkdtempSync(path.join(os.tmpdir(), 'holonomy-web-test-'));
+const OUT = process.env.WEB_TEST_OUT ? path.resolve(process.env.WEB_TEST_OUT) : path.join(tmp, 'out');
+fs.mkdirSync(OUT, { recursive: true });
+const t0 = Date.now();
+
+// ---- checks ----------------------------------------------------------------
+let passed = 0, failed = 0;
+async function check(name, fn) {
+  const t = Date.now();
+  try {
+    await fn();
+    passed++;
+    console.log(`ok - ${name} (${((Date.now() - t) / 1000).toFixed(1)} s)`);
+  } catch (e) {
+    failed++;
+    console.log(`not ok - ${name}: ${e.message}`);
+  }
+}
+function assert(c, msg) {
+  if (!c) throw new Error(msg);
+}
+
+// ---- the server, the browser ------------------------------------------------
+const testDir = path.join(tmp, 'serve');
+fs.mkdirSync(testDir);
+const server = await serve(WEB, testDir);
+const W = 800, H = 600;
+const browser = await launch(CHROMIUM, path.join(tmp, 'profile'), W, H);
+const openPage = (query, opts) => openPage_(browser, server.base + '/' + query, opts);
+
+// the room steps the page reported ("web: step N D cell C,R")
+function steps(log) {
+  return log.map((l) => /^web: step (\d+) ([NESW]) cell (\d),(\d)/.exec(l)).filter(Boolean)
+    .map((m) => ({ index: +m[1], dir: m[2], col: +m[3], row: +m[4] }));
+}
+
+// The data rows of attempt 1's step log (live while the attempt runs), as
+// objects by column name.
+async function stepRows(page) {
+  const t = (await stored(page, 'steps-001.csv')) || (await stored(page, 'steps-001.csv.live'));
+  if (!t) return [];
+  const [head, ...rows] = t.toString('utf8').trim().split('\n');
+  const cols = head.split(',');
+  return rows.map((r) => Object.fromEntries(r.split(',').map((v, i) => [cols[i], v])));
+}
+
+// ---- the core in wasm ------------------------------------------------------
+if (process.env.MATH_CHECK)
+  await check('the core\'s sin, cos, atan2, asin, log, acosh give the native bits in wasm (tests/math_golden.h)', async () => {
+    const r = spawnSync(process.execPath, [process.env.MATH_CHECK], { encoding: 'utf8' });
+    assert(r.status === 0, (r.stdout + r.stderr).trim());
+  });
+
+// ---- pancake ---------------------------------------------------------------
+await check('page loads with no console error on WebGL 2 with 8 stencil bits; held keys walk one room step north', async () => {
+  const p = await openPage('?seed=3');
+  const gl = p.log.find((l) => l.startsWith('web: WebGL 2 context'));
+  assert(gl && / 8 stencil bits/.test(gl), 'no WebGL 2 context with 8 stencil bits: ' + gl);
+  await p.page.screenshot({ path: path.join(OUT, 'pancake-start.png') });
+  await p.until(async () => (await p.state(S.FRAMES)) > 10, 'frames');
+  await p.page.keyboard.down('KeyW');
+  await p.until(async () => (await p.state(S.STEPS)) >= 1, 'a room step');
+  await p.page.keyboard.up('KeyW');
+  // the step row reaches the store within a second of play (the session's flush)
+  const rows = await p.until(async () => { const r = await stepRows(p.page); return r.length && r; },
+    'a step row in steps-001.csv', 10000);
+  assert(rows.length === 1 && rows[0].dir === 'N' && rows[0].col === '1' && rows[0].row === '0',
+    'step rows: ' + JSON.stringify(rows));
+  const st = steps(p.log);
+  assert(st.length === 1, 'steps: ' + JSON.stringify(st));
+  await p.page.screenshot({ path: path.join(OUT, 'pancake-north.png') });
+  assert(!p.errors.length, 'errors: ' + p.errors.join('; '));
+  await p.ctx.close();
+});
+
+await check('a gamepad (a getGamepads shim, standard mapping) walks one room step north', async () => {
+  const p = await openPage('?seed=3', { gamepad: true });
+  await p.until(async () => (await p.state(S.FRAMES)) > 10, 'frames');
+  await p.page.evaluate(() => { window.__pad.axes[1] = -1; });
+  await p.until(async () => (await p.state(S.STEPS)) >= 1, 'a room step');
+  await p.page.evaluate(() => { window.__pad.axes[1] = 0; });
+  const rows = await p.until(async () => { const r = await stepRows(p.page); return r.length && r; },
+    'a step row in steps-001.csv', 10000);
+  assert(rows.length === 1 && rows[0].dir === 'N' && rows[0].row === '0',
+    'step rows: ' + JSON.stringify(rows));
+  assert(!p.errors.length, 'errors: ' + p.errors.join('; '));
+  await p.ctx.close();
+});
+
+// ---- WebXR on iwer's Quest 3 -------------------------------------------------
+// explore, no minimap: the eyes are the world alone (as `holonomy render` draws it)
+const XR_SEED = 11;
+fs.writeFileSync(path.join(testDir, 'xr.lvl'), `mode explore\nseed ${XR_SEED}\nminimap off\n`);
+const xr = await openPage('?level=/test/xr.lvl', { iwer: true });
+const xrState = xr.state, xrPage = xr.page;
+const xrFrames = () => xrState(S.XR_FRAMES);
+// n more XR frames, or the session's end
+async function waitFrames(n) {
+  const f0 = await xrFrames();
+  await xr.until(() => xrPage.evaluate((f) => !Module.holXR.session ||
+    Module._hol_web_state(1) >= f, f0 + n), `${n} XR frames`, 60000);
+}
+// press an iwer controller button for a few frames (fewer when the press
+// ends the session)
+async function press(hand, id) {
+  await xrPage.evaluate((h, b) => xrDevice.controllers[h].updateButtonValue(b, 1), hand, id);
+  await waitFrames(3);
+  await xrPage.evaluate((h, b) => xrDevice.controllers[h].updateButtonValue(b, 0), hand, id);
+  await waitFrames(2);
+}
+const xrCounts = () => xrPage.evaluate(() => [1, 2, 3].map((w) => Module._hol_web_state(w)));
+
+await check('Enter VR on a Quest 3 (iwer, stereo): visible and focused, >= 120 XR frames drawn in two viewports', async () => {
+  await enterVR(xr);
+  await xr.until(async () => (await xrFrames()) >= 120, '120 XR frames', 90000);
+  const vis = await xrPage.evaluate(() => Module.holXR.session.visibilityState);
+  const [frames, two, focused] = await xrCounts();
+  assert(vis === 'visible', 'visibility ' + vis);
+  assert(two === frames && focused === frames, `${frames} frames, ${two} with two views, ${focused} focused`);
+  assert((await xrState(S.PAUSED)) === 0, 'the game is paused');
+  const space = xr.log.find((l) => l.startsWith('web: xr reference space'));
+  assert(/bounded-floor|local-floor/.test(space || ''), 'reference space: ' + space);
+  await xrPage.screenshot({ path: path.join(OUT, 'xr-stereo.png') });
+});
+
+// The tolerance of the eyes against OSMesa: SwiftShader (the browser) and
+// llvmpipe (OSMesa) rasterise the same triangles with other rounding; a
+// pixel differs when a colour channel is off by more than 12 of 255, and at
+// most 1 % of an eye's pixels may differ (a wrong pose, field of view,
+// viewport or cell moves far more: tens of percent).
+const TOL = 12, MAX_PCT = 1.0;
+await check(`each eye read back equals the OSMesa render of the same eye (channel within ${TOL}/255 on ${100 - MAX_PCT} % of pixels)`, async () => {
+  // look down 30 degrees and 20 degrees to the left: portals on the floor
+  await xrPage.evaluate(() => {
+    const y = 20 * Math.PI / 360, p = -30 * Math.PI / 360;
+    xrDevice.quaternion.set(Math.cos(y) * Math.sin(p), Math.sin(y) * Math.cos(p),
+      -Math.sin(y) * Math.sin(p), Math.cos(y) * Math.cos(p));
+  });
+  await waitFrames(3);
+  const at = (await xrFrames()) + 2;
+  await xrPage.evaluate((f) => Module._hol_web_check_request(f), at);
+  await xr.until(async () => (await xrFrames()) > at, 'the check frame', 30000);
+  const walk = steps(xr.log).map((s) => s.dir).join('') || '-';
+  for (let e = 0; e < 2; e++) {
+    const line = xr.log.find((l) => l.startsWith(`web: check eye ${e} frame ${at} `));
+    assert(line, 'no check line for eye ' + e);
+    const m = / render (.*) --size (\d+)x(\d+) cell (\d),(\d)$/.exec(line);
+    const w = +m[2], h = +m[3];
+    const b64 = await xrPage.evaluate((eye, n) => {
+      const p = Module._hol_web_check_pixels(eye);
+      let s = '';
+      const px = HEAPU8.subarray(p, p + n);
+      for (let i = 0; i < px.length; i += 32768) s += String.fromCharCode.apply(null, px.subarray(i, i + 32768));
+      return btoa(s);
+    }, e, w * h * 4);
+    const gl = Buffer.from(b64, 'base64'), got = Buffer.alloc(gl.length);
+    for (let y = 0; y < h; y++) gl.copy(got, (h - 1 - y) * w * 4, y * w * 4, (y + 1) * w * 4); // rows top to bottom
+    fs.writeFileSync(path.join(OUT, `xr-eye${e}.png`), encodePNG(got, w, h));
+    const ref = path.join(OUT, `osmesa-eye${e}.png`);
+    const args = ['render', '--walk', walk, '--seed', String(XR_SEED), ...m[1].split(' '),
+      '--size', `${w}x${h}`, '--out', ref];
+    const r = spawnSync(HOLONOMY, args, { encoding: 'utf8' });
+    assert(r.status === 0, `holonomy ${args.join(' ')}: ${r.stderr}`);
+    const want = decodePNG(fs.readFileSync(ref));
+    assert(want.w === w && want.h === h, 'reference size');
+    let bad = 0, worst = 0;
+    for (let i = 0; i < w * h; i++) {
+      let d = 0;
+      for (let k = 0; k < 3; k++) d = Math.max(d, Math.abs(got[i * 4 + k] - want.rgba[i * 4 + k]));
+      worst = Math.max(worst, d);
+      bad += d > TOL;
+    }
+    const pct = 100 * bad / (w * h);
+    console.log(`# eye ${e} ${w}x${h} (walk ${walk}): ${bad} pixels differ by more than ${TOL}/255 (${pct.toFixed(3)} %), largest ${worst}`);
+    assert(pct <= MAX_PCT, `eye ${e}: ${pct.toFixed(2)} % of pixels differ`);
+  }
+});
+
+await check('a scripted head walk makes one room step north', async () => {
+  await xrPage.evaluate(() => xrDevice.quaternion.set(0, 0, 0, 1));
+  const before = steps(xr.log).length;
+  // walk 0.8 m north at 0.5 m/s
+  await xrPage.evaluate(() => new Promise((done) => {
+    const t0 = performance.now();
+    const id = setInterval(() => {
+      const z = -Math.min(0.8, 0.5 * (performance.now() - t0) / 1000);
+      xrDevice.position.set(0, 1.6, z);
+      if (z <= -0.8) { clearInterval(id); done(); }
+    }, 20);
+  }));
+  await xr.until(async () => steps(xr.log).length > before, 'a room step', 20000);
+  await waitFrames(3);
+  const st = steps(xr.log).slice(before);
+  assert(st.length === 1 && st[0].dir === 'N' && st[0].row === 0, 'steps: ' + JSON.stringify(st));
+  assert(Math.abs((await xrState(S.HEAD_Z)) - 0.7) < 0.02, 'head z ' + (await xrState(S.HEAD_Z)));
+});
+
+await check('controllers reach the app: left stick press recentres, Y opens the menu, the trigger restarts there', async () => {
+  await press('left', 'thumbstick');
+  const hx = await xrState(S.HEAD_X), hz = await xrState(S.HEAD_Z);
+  assert(Math.abs(hx - 1.5) < 0.02 && Math.abs(hz - 1.5) < 0.02, `recentred head at ${hx},${hz}`);
+  await press('left', 'y-button');
+  assert((await xrState(S.PAUSED)) === 1, 'Y did not open the menu');
+  const clock = await xrState(S.CLOCK);
+  await press('right', 'trigger');
+  assert((await xrState(S.STEPS)) === 0 && (await xrState(S.CLOCK)) < clock, 'the trigger did not restart');
+  assert((await xrState(S.PAUSED)) === 0, 'still paused after the restart');
+});
+
+let recording = null;
+await check('quitting from a controller (Y, then B) ends the session and the logs are offered', async () => {
+  await press('left', 'y-button');
+  await press('right', 'b-button');
+  await xr.until(async () => (await xrState(S.OVER)) === 1, 'the session over');
+  await xr.until(() => xrPage.evaluate(() => !Module.holXR.session), 'the XR session to end');
+  const offered = await xrPage.evaluate(() => ({
+    shown: !document.getElementById('logs').hidden,
+    links: Array.from(document.querySelectorAll('#loglist a')).map((a) => a.textContent),
+    names: window.holonomyStore.names(),
+  }));
+  assert(offered.shown && offered.links.length > 0, 'logs not offered: ' + JSON.stringify(offered));
+  const rec = offered.names.find((n) => /\.rec$/.test(n));
+  assert(rec, 'no recording among ' + offered.names.join(', '));
+  recording = Buffer.from(await xrPage.evaluate((n) => btoa(String.fromCharCode.apply(null,
+    window.holonomyStore.bytes(n))), rec), 'base64');
+  fs.writeFileSync(path.join(OUT, 'browser.rec'), recording);
+  // iwer leaves its (empty) full-page container over the page
+  await xrPage.evaluate(() => document.querySelector('[data-webxr_runtime]')?.remove());
+  await sleep(200);
+  await xrPage.screenshot({ path: path.join(OUT, 'xr-over.png') });
+  assert(!xr.errors.length, 'errors: ' + xr.errors.join('; '));
+});
+
+await check('the browser recording replays on the desktop to the same step rows and summary, byte for byte', async () => {
+  assert(recording, 'no recording');
+  const end = xr.log.find((l) => l.startsWith('level '));
+  const logs = path.join(OUT, 'replay-logs');
+  fs.rmSync(logs, { recursive: true, force: true });
+  fs.mkdirSync(logs);
+  const r = spawnSync(HOLONOMY, ['replay', path.join(OUT, 'browser.rec'), '--log', logs],
+    { encoding: 'utf8' });
+  assert(r.status === 0, 'replay: ' + r.stderr);
+  assert(r.stdout.trim() === end, `replay says '${r.stdout.trim()}', the browser '${end}'`);
+  const names = fs.readdirSync(logs).filter((n) => /\.csv$/.test(n)).sort();
+  assert(names.includes('summary.csv') && names.includes('steps-001.csv') &&
+    names.includes('steps-002.csv'), 'replay logs: ' + names.join(' '));
+  const dir = path.join(OUT, 'browser-logs');
+  fs.mkdirSync(dir, { recursive: true });
+  for (const n of names) {
+    const b = await stored(xrPage, n);
+    assert(b, 'the browser has no ' + n);
+    fs.writeFileSync(path.join(dir, n), b);
+    assert(b.equals(fs.readFileSync(path.join(logs, n))), n + ' differs from the replay\'s');
+  }
+  const summary = fs.readFileSync(path.join(logs, 'summary.csv'), 'utf8').trim().split('\n');
+  assert(summary.length === 3 && /,restart$/.test(summary[1]) && /,quit$/.test(summary[2]),
+    'summary: ' + summary.join(' | '));
+  console.log(`# ${names.length} log files equal: ${names.join(' ')}`);
+});
+await xr.ctx.close();
+
+await browser.close();
+server.close();
+const secs = (Date.now() - t0) / 1000;
+console.log(`web-test: ${passed} passed, ${failed} failed in ${secs.toFixed(0)} s` +
+  (failed ? ` (artifacts in ${OUT})` : ''));
+if (!failed && !process.env.WEB_TEST_OUT) fs.rmSync(tmp, { recursive: true, force: true });
+else fs.rmSync(path.join(tmp, 'profile'), { recursive: true, force: true });
+process.exit(failed ? 1 : 0);
