@@ -16,7 +16,7 @@
 
 typedef struct hol__lp {
     hol_app_level L;
-    int have_mode;
+    long have_mode; /* the mode line, 0 before it */
     long line;
     /* objectives by distance (drawn after the last line) and where each
      * objective and placement was given */
@@ -129,7 +129,7 @@ static hol_err hol__key_mode(hol__lp *p, char **f, int nf)
         return hol__lfail(p, HOL_EPARSE, p->line,
                          "mode '%.20s' is not explore, tutorial, flag or keys", f[1]);
     p->L.mode = m;
-    p->have_mode = 1;
+    p->have_mode = p->line;
     return HOL_OK;
 }
 
@@ -485,6 +485,15 @@ static hol_err hol__finish(hol__lp *p)
     if (!p->have_mode)
         return hol__lfail(p, HOL_EARG, p->line ? p->line : 1, "no 'mode' line%s",
                          p->line ? "" : " (the level is empty)");
+    /* a missing objective is bad input naming the mode's line (it was
+     * left on tile O, where the level begins) */
+    const char *missing = p->L.mode == HOL_APP_FLAG && !p->flag_line    ? "flag"
+                          : p->L.mode == HOL_APP_KEYS && !p->keys_line  ? "keys"
+                          : p->L.mode == HOL_APP_KEYS && !p->chest_line ? "chest"
+                                                                        : NULL;
+    if (missing)
+        return hol__lfail(p, HOL_EARG, p->have_mode, "mode %s needs a '%s' or '%s-distance' line",
+                          p->L.mode == HOL_APP_FLAG ? "flag" : "keys", missing, missing);
     hol_room r0 = hol_room_start();
     for (int i = 0; i < p->L.nstart; i++)
         if (hol_room_step(&r0, p->L.start[i]))

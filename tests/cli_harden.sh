@@ -69,6 +69,17 @@ run "sparse pad script in play" 2 timeout 5 "$H" play --gamepad-replay sparse.pa
 one_line "sparse pad script in play" "longer than 12352 bytes"
 rm -f sparse.pad
 
+# --- a level without its objective names what is missing (it said "an
+# objective lies on the tile where the level begins": the flag was left on O)
+for l in "flag|mode flag|line 1: mode flag needs a 'flag' or 'flag-distance' line" \
+         "keys|# keys\nmode keys\nchest Nr|line 2: mode keys needs a 'keys' or 'keys-distance' line" \
+         "chest|mode keys\nkeys-distance 2 1 3|line 1: mode keys needs a 'chest' or 'chest-distance' line"; do
+  n=${l%%|*} rest=${l#*|}; text=${rest%%|*} msg=${rest#*|}
+  printf "$text\n" >"miss-$n.lvl"
+  run "level without its $n" 2 "$H" game "miss-$n.lvl" </dev/null
+  one_line "level without its $n" "$msg"
+done
+
 # --- temporary files: owned names, cleaned by the next save --------------
 # a leftover of a killed save of w.img (writer gone) and unrelated files
 sh -c 'exit 0' & dead=$!; wait $dead
