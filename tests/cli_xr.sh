@@ -16,6 +16,8 @@ run "bad --frames" 2 "$H" xr --frames x
 one_line "bad --frames" "frames"
 run "--frames without a value" 2 "$H" xr --frames
 one_line "--frames without a value" "needs a value"
+run "bad --space" 2 "$H" xr --space floor
+one_line "bad --space" "--space 'floor' is neither stage nor local"
 run "missing level" 2 "$H" xr "$T/none.lvl"
 one_line "missing level" "none.lvl"
 printf 'mode flag\nseed 5\nbogus 1\n' >"$T/bad.lvl"

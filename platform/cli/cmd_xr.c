@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "../../core/hol_session.h"
+#include "../openxr/hol_xr_pick.h"
 #include "cli.h"
 #include "play_setup.h"
 #ifdef HOL_XR
@@ -16,7 +17,8 @@
 
 static const char *const xr_usage =
     "usage: holonomy xr [LEVEL] [--frames N] [--log DIR [--append]] [--participant ID]\n"
-    "                   [--record FILE] [--input FILE] [--check-frame K --check-dir DIR]\n"
+    "                   [--record FILE] [--input FILE] [--space stage|local]\n"
+    "                   [--check-frame K --check-dir DIR]\n"
     "\n"
     "The headset app on this machine's OpenXR runtime (for example Monado):\n"
     "the room centred on the stage origin, north along stage -Z; the\n"
@@ -24,6 +26,8 @@ static const char *const xr_usage =
     "section 5); without one, the default campaign. Logs and the recording\n"
     "are those of 'holonomy play' (its --log, --append, --participant and\n"
     "--record), so 'holonomy replay' runs a headset session again headless.\n"
+    "Controllers: confirm, menu, recentre, minimap; in the menu, restart\n"
+    "(confirm's button) and quit (README: Headset, the bindings).\n"
     "\n"
     "  --frames N      request exit after N submitted frames\n"
     "  --log DIR       research logs (README: Research logs)\n"
@@ -31,6 +35,10 @@ static const char *const xr_usage =
     "  --input FILE    scripted head motion: frame k takes the head pose of\n"
     "                  input line k (room coordinates; the simulated headset\n"
     "                  does not move), repeating; at most 100000 lines\n"
+    "  --space S       the room's reference space: stage (the default: the\n"
+    "                  play area, where the runtime has one, else local) or\n"
+    "                  local (where the head starts, the floor 1.6 m below:\n"
+    "                  seated, or no play area set up)\n"
     "  --check-frame K with --check-dir DIR: read eye 0 of frame K back from\n"
     "                  the swapchain, render the same eye with OSMesa, write\n"
     "                  both PNGs to DIR and print how many pixels differ\n"
@@ -47,6 +55,7 @@ typedef struct xr_opts {
     const char *level_path, *log_dir, *rec, *input_path, *check_dir, *participant;
     long frames, check_frame;
     int append;
+    int space; /* 0 or HOL_XR_SPACE_LOCAL (hol_xr_desc.space) */
 } xr_opts;
 
 static int xr_count(const char *cmd, const char *a, const char *val, xr_opts *o)
@@ -68,7 +77,7 @@ static int xr_options(const char *cmd, int argc, char **argv, xr_opts *o)
 {
     static const char *const valued[] = {"--frames",      "--log",       "--record",
                                          "--input",       "--check-frame", "--check-dir",
-                                         "--participant", NULL};
+                                         "--participant", "--space",    NULL};
     static const char *const flags[] = {"--append", NULL};
     memset(o, 0, sizeof *o);
     o->check_frame = -1;
@@ -94,6 +103,12 @@ static int xr_options(const char *cmd, int argc, char **argv, xr_opts *o)
             o->check_dir = val;
         else if (!strcmp(a, "--append"))
             o->append = 1;
+        else if (!strcmp(a, "--space")) {
+            bad = strcmp(val, "stage") && strcmp(val, "local");
+            if (bad)
+                cli_error(cmd, 0, "--space '%.40s' is neither stage nor local", val);
+            o->space = !strcmp(val, "local") ? HOL_XR_SPACE_LOCAL : 0;
+        }
         else if (!hol_rec_id_ok(val)) {
             cli_error(cmd, 0, "--participant '%.40s' is not 1..63 letters, digits, '.', '_', '-'",
                       val);
@@ -182,6 +197,7 @@ static int xr_run(const xr_opts *o, hol_session *s, const hol_input *script, lon
     d.check_dir = o->check_dir;
     d.script = script;
     d.nscript = nscript;
+    d.space = o->space;
     hol_xr_app_fns fns = {.user = s, .step = xr_step, .world = xr_world,
                           .level_started = xr_level_started, .poll_platform = xr_poll};
     return hol_xr_run(&d, &fns) ? CLI_EXIT_FAIL : CLI_EXIT_OK;

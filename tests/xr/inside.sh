@@ -95,6 +95,35 @@ check "the session's logs were written" '[ -s "$out/logs/summary.csv" ]'
 check "the recording replays headless" \
     'mkdir -p "$out/replay-logs" && "$BIN" replay "$out/session.rec" --log "$out/replay-logs" >/dev/null 2>&1 && cmp -s "$out/logs/summary.csv" "$out/replay-logs/summary.csv"'
 
+# SIGINT in the middle of a session: the OpenXR session ends through
+# STOPPING and EXITING, the attempt is saved 'aborted', exit 130 (issue 18).
+mkdir -p "$out/sig-logs"
+env DISPLAY=:77 "$BIN" xr "$out/level.txt" --frames 100000 --log "$out/sig-logs" \
+    --record "$out/sig.rec" >"$out/sig.out" 2>"$out/sig.err" &
+xr=$!
+for i in $(seq 1 300); do grep -q "^xr: state FOCUSED" "$out/sig.out" && break; sleep 0.1; done
+sleep 0.5
+kill -INT "$xr"
+wait "$xr"
+rc=$?
+check "SIGINT: exit 130 ($rc)" '[ "$rc" = 130 ]'
+check "SIGINT: the session ended through STOPPING and EXITING" \
+    'grep -q "^xr: exit requested by the platform" "$out/sig.out" && grep -q "^xr: state STOPPING" "$out/sig.out" && grep -q "^xr: session ended after STOPPING$" "$out/sig.out" && grep -q "^xr: state EXITING" "$out/sig.out"'
+check "SIGINT: the attempt saved with end aborted, the recording replays" \
+    'tail -n 1 "$out/sig-logs/summary.csv" | grep -q ",aborted$" && mkdir -p "$out/sig-replay" && "$BIN" replay "$out/sig.rec" --log "$out/sig-replay" >/dev/null 2>&1'
+
+# --space local: the LOCAL space (where the head starts) moved down 1.6 m,
+# so the simulated head stands at eye height, not at y = 0 (issue 19).
+mkdir -p "$out/local-logs"
+env DISPLAY=:77 "$BIN" xr "$out/level.txt" --frames 30 --space local --log "$out/local-logs" \
+    >"$out/local.out" 2>"$out/local.err"
+rc=$?
+y=$(awk -F, 'NR == 3 { print $7 }' "$out/local-logs/head-001.csv" 2>/dev/null)
+check "--space local: exit 0 ($rc), LOCAL asked for" \
+    '[ "$rc" = 0 ] && grep -q "^xr: reference space LOCAL (asked for)" "$out/local.out"'
+check "--space local: the head at standing eye height (y ${y:-none}, want 1.4..1.8)" \
+    '[ -n "$y" ] && awk "BEGIN{exit !($y >= 1.4 && $y <= 1.8)}"'
+
 # The runtime's service dies in the middle of a session: exit 1 with one
 # line in words (the instance is lost), and the session's logs and
 # recording are still written (issue 19: not exit 0).
