@@ -323,8 +323,8 @@ WEB      := $(BUILD)/web
 WEB_SRC  := $(CORE_SRC) $(filter-out render/hol_png.c,$(RENDER_SRC)) \
             $(wildcard platform/web/*.c) platform/openxr/hol_xr_room.c
 WEB_OBJ  := $(WEB_SRC:%.c=$(BUILD)/web-obj/%.o)
-WEB_CFLAGS := $(CSTD) $(WARN) -O2 -ffp-contract=off -D_DEFAULT_SOURCE -MMD -MP
-WEB_LDFLAGS := -O2 -sENVIRONMENT=web -sMIN_WEBGL_VERSION=2 -sMAX_WEBGL_VERSION=2 \
+WEB_CFLAGS := $(CSTD) $(WARN) -O3 -ffp-contract=off -D_DEFAULT_SOURCE -MMD -MP
+WEB_LDFLAGS := -O3 -sENVIRONMENT=web -sMIN_WEBGL_VERSION=2 -sMAX_WEBGL_VERSION=2 \
   -sALLOW_MEMORY_GROWTH=1 -sINITIAL_MEMORY=67108864 -sTOTAL_STACK=1048576 \
   --js-library platform/web/hol_web_lib.js
 WEB_PAGE := $(addprefix $(WEB)/,index.html page.js store.js)
@@ -357,7 +357,7 @@ deps-web:
 	  else npm ci --no-audit --no-fund; fi
 
 # Programs for node (wasm embedded: no fetch of a .wasm file under node).
-WEB_NODE_FLAGS := -O2 -sENVIRONMENT=node -sSINGLE_FILE=1 -sALLOW_MEMORY_GROWTH=1
+WEB_NODE_FLAGS := -O3 -sENVIRONMENT=node -sSINGLE_FILE=1 -sALLOW_MEMORY_GROWTH=1
 $(BUILD)/web-node/math_check.js: tests/web/math_check.c tests/math_golden.h core/hol_math.c core/hol_math.h
 	@mkdir -p $(dir $@)
 	@echo "emcc -o $@"
@@ -366,7 +366,7 @@ $(BUILD)/web-node/math_check.js: tests/web/math_check.c tests/math_golden.h core
 $(BUILD)/web-node/bench_web.js: tests/bench_web.c tests/bench_util.h $(CORE_SRC) $(wildcard core/*.h)
 	@mkdir -p $(dir $@)
 	@echo "emcc -o $@"
-	@$(EMCC_ENV) $(EMCC) $(CSTD) -O2 -ffp-contract=off -DNDEBUG -D_DEFAULT_SOURCE $(WEB_NODE_FLAGS) \
+	@$(EMCC_ENV) $(EMCC) $(CSTD) -O3 -ffp-contract=off -DNDEBUG -D_DEFAULT_SOURCE $(WEB_NODE_FLAGS) \
 	  tests/bench_web.c $(CORE_SRC) -o $@
 
 # make bench's web figures (README: Performance)

@@ -35,9 +35,9 @@ for (let i = 0; i < 3; i++) { /* interleaved: both see the same load */
 }
 const hash = new Set([...runs.native, ...runs.wasm].map((f) => f.view_hash));
 const pick = (k, which) => median(runs[which].map((f) => +f[k]));
-for (const k of ['nav_build_ms', 'step_mean_us', 'step_p99_us', 'step_max_us']) {
+for (const k of ['nav_build_ms', 'step_cpu_mean_us', 'step_p99_us', 'step_max_us']) {
   const n = pick(k, 'native'), w = pick(k, 'wasm');
-  console.log(`  ${k.padEnd(14)} native ${n.toFixed(2).padStart(9)}  wasm ${w.toFixed(2).padStart(9)}  wasm/native ${(w / n).toFixed(2)}`);
+  console.log(`  ${k.padEnd(16)} native ${n.toFixed(2).padStart(9)}  wasm ${w.toFixed(2).padStart(9)}  wasm/native ${(w / n).toFixed(2)}`);
 }
 console.log(`  (medians of 3 runs; ${runs.native[0].frames} frames, ${runs.native[0].room_steps} room steps after a warm-up walk; ` +
   `target for the step: 2x or better) the same final view natively and in wasm: ${hash.size === 1 ? 'yes' : 'NO'}`);
