@@ -2,6 +2,7 @@
 #
 #   make            build build/holonomy
 #   make test       build and run every test (unit, CLI, fuzz-corpus replay)
+#   make gen-tiling rewrite core/hol_tile_dfa.h (tests/gen_tiling.c)
 #   make deps       install the Debian packages the project needs (apt-get)
 #   make fuzz       build the libFuzzer harnesses and run each FUZZ_TIME s
 #   make bench      build with optimisation and print the benchmark figures
@@ -190,8 +191,26 @@ $(BUILD)/fuzz-replay/%: fuzz/%.c fuzz/replay_main.c $(wildcard fuzz/*.h) $(CORE_
 run: $(BUILD)/holonomy
 	$(BUILD)/holonomy play $(RUN_ARGS)
 
-test: all purity unit render-test cli-test fuzz-replay
+test: all purity tiling-gen-check unit render-test cli-test fuzz-replay
 	@echo "make test: all suites passed"
+
+# The automata of canonical addresses (core/hol_tile_dfa.h) are derived from
+# the geometry by tests/gen_tiling.c: `make gen-tiling` rewrites the header,
+# and make test checks that the committed header is what the program prints
+# (tests/test_tile.c proves the automata against an independent model).
+.PHONY: tiling-gen-check gen-tiling
+$(BUILD)/tests/gen_tiling: tests/gen_tiling.c
+	@mkdir -p $(dir $@)
+	$(CC) $(CSTD) $(WARN) -O2 -D_DEFAULT_SOURCE -o $@ $< -lm
+
+gen-tiling: $(BUILD)/tests/gen_tiling
+	$(BUILD)/tests/gen_tiling > core/hol_tile_dfa.h.tmp && mv core/hol_tile_dfa.h.tmp core/hol_tile_dfa.h
+
+tiling-gen-check: $(BUILD)/tests/gen_tiling
+	@if $(BUILD)/tests/gen_tiling | cmp -s - core/hol_tile_dfa.h; then \
+	  echo "tiling automata: core/hol_tile_dfa.h is what tests/gen_tiling prints"; \
+	else echo "core/hol_tile_dfa.h differs from what tests/gen_tiling prints (make gen-tiling)"; \
+	  exit 1; fi
 
 purity: $(CORE_OBJ)
 	@sh tests/check_core_purity.sh $(CORE_OBJ)

@@ -6,24 +6,44 @@
 
 #define HOL__PI 3.14159265358979323846
 
-/* cos(pi/5) / sin(pi/4): the edge is 2 acosh(c) */
-static double hol__edge_c(void)
+/* cos(pi/q) / sin(pi/4): the edge of {4,q} (q >= 5) is 2 acosh(c) */
+static double hol__edge_c(int q)
 {
-    return hol_cos(HOL__PI / 5.0) / hol_sin(HOL__PI / 4.0);
+    return hol_cos(HOL__PI / q) / hol_sin(HOL__PI / 4.0);
 }
 
-double hol_hyper_edge(void)
+double hol_hyper_edge(void) { return hol_hyper_edge_q(5); }
+
+double hol_hyper_edge_q(int q)
 {
-    return 2.0 * hol_acosh(hol__edge_c());
+    if (q == 4)
+        return 1.0;
+    if (q < HOL_TILING_MIN_Q || q > HOL_TILING_MAX_Q)
+        return 0.0;
+    return 2.0 * hol_acosh(hol__edge_c(q));
 }
 
-/* m = m * R(turn quarter turns counter-clockwise) * T(+y by d) */
-static void hol__apply(double m[9], int turn, double ch, double sh)
+/* The translation by one edge along +y: [[1, 0, 0], [0, t0, t1], [0, t2, t3]]
+ * (a boost in the hyperbolic plane, a shift in the flat one). */
+static void hol__edge_move(int q, double t[4])
+{
+    if (q == 4) {
+        t[0] = 1, t[1] = 1, t[2] = 0, t[3] = 1;
+    } else {
+        /* cosh and sinh of the edge 2 acosh(c): 2c^2 - 1 and 2c sqrt(c^2 - 1) */
+        double c = hol__edge_c(q);
+        t[0] = t[3] = 2.0 * c * c - 1.0;
+        t[1] = t[2] = 2.0 * c * sqrt(c * c - 1.0);
+    }
+}
+
+/* m = m * R(turn quarter turns counter-clockwise) * T (t as hol__edge_move) */
+static void hol__apply(double m[9], int turn, const double t[4])
 {
     static const double cs[4][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
     double c = cs[turn & 3][0], s = cs[turn & 3][1];
-    /* R * T = [[c, -s ch, -s sh], [s, c ch, c sh], [0, sh, ch]] */
-    double rt[9] = {c, -s * ch, -s * sh, s, c * ch, c * sh, 0, sh, ch};
+    /* R * T = [[c, -s t0, -s t1], [s, c t0, c t1], [0, t2, t3]] */
+    double rt[9] = {c, -s * t[0], -s * t[1], s, c * t[0], c * t[1], 0, t[2], t[3]};
     double r[9];
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++)
@@ -40,12 +60,12 @@ hol_err hol_hyper_frame(hol_tile a, int a_north, hol_tile b, double out_m[9])
     int n = hol_tile_relative_letters(a, a_north, b, rel, &facing);
     if (n < 0)
         return HOL_EARG;
-    /* cosh and sinh of the edge 2 acosh(c): 2c^2 - 1 and 2c sqrt(c^2 - 1) */
-    double c = hol__edge_c(), ch = 2.0 * c * c - 1.0, sh = 2.0 * c * sqrt(c * c - 1.0);
+    double t[4], id[4] = {1, 0, 0, 1};
+    hol__edge_move(hol_tile_q(a), t);
     double m[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
     for (int i = 0; i < n; i++)
-        hol__apply(m, rel[i], ch, sh);
-    hol__apply(m, facing, 1.0, 0.0);
+        hol__apply(m, rel[i], t);
+    hol__apply(m, facing, id);
     for (int i = 0; i < 9; i++)
         out_m[i] = m[i];
     return HOL_OK;
@@ -67,7 +87,7 @@ hol_err hol_hyper_pos(hol_tile a, int a_north, hol_tile b, double out_p[3],
     if (out_angle)
         *out_angle = hol_atan2(-x, y);
     if (out_dist)
-        *out_dist = hol_acosh(w < 1.0 ? 1.0 : w);
+        *out_dist = hol_tile_q(a) == 4 ? sqrt(x * x + y * y) : hol_acosh(w < 1.0 ? 1.0 : w);
     return HOL_OK;
 }
 

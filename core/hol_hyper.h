@@ -3,6 +3,10 @@
  * Contract
  * - Points of the hyperbolic plane are on the hyperboloid x^2 + y^2 - w^2 = -1,
  *   w > 0, stored as (x, y, w). A frame is a 3x3 Lorentz matrix, row-major.
+ * - In the flat grid {4,4} (tiles with hol_tile_q 4) points are (x, y, 1) in
+ *   units of the tile's side and a frame is a rigid motion of the plane in
+ *   the same homogeneous form; every function below works for both, taking
+ *   the tiling from its tiles.
  * - Coordinates of tile b are computed from b's address relative to tile a
  *   (hol_tile_relative), so their precision depends only on the distance
  *   between a and b, never on how far both are from the origin.
@@ -16,20 +20,25 @@
 
 #include "hol_tile.h"
 
-/* Centre-to-centre distance of neighbouring tiles,
+/* Centre-to-centre distance of neighbouring tiles of {4,5},
  * 2 acosh(cos(pi/5) / sin(pi/4)) ~= 1.0612750619. */
 double hol_hyper_edge(void);
+/* The same in {4,q}: 2 acosh(cos(pi/q) / sin(pi/4)), and 1 in the flat
+ * {4,4} (there in tile sides, not curvature radii); 0 for a bad q. */
+double hol_hyper_edge_q(int q);
 
-/* Frame of b (its centre, +y its canonical heading) in a's frame. */
+/* Frame of b (its centre, +y its canonical heading) in a's frame.
+ * HOL_EARG for invalid tiles or tiles of two tilings. */
 hol_err hol_hyper_frame(hol_tile a, int a_north, hol_tile b, double out_m[9]);
 
 /* Centre of b in a's frame, and its direction and distance as seen from a's
  * centre: angle in radians counter-clockwise from +y (a_north), distance in
- * units of the plane's curvature radius. Either output may be NULL. */
+ * units of the plane's curvature radius (tile sides in {4,4}). Either
+ * output may be NULL. */
 hol_err hol_hyper_pos(hol_tile a, int a_north, hol_tile b, double out_p[3],
                       double *out_angle, double *out_dist);
 
-/* Poincare-disk point (|z| < 1) of a hyperboloid point. */
+/* Poincare-disk point (|z| < 1) of a hyperboloid point (not for {4,4}). */
 void hol_hyper_to_disk(const double p[3], double out_xy[2]);
 
 #endif

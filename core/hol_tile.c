@@ -1,12 +1,13 @@
-/* hol_tile.c - canonical addresses and exact neighbours in {4,5}.
+/* hol_tile.c - canonical addresses and exact neighbours in {4,Q}.
  *
  * Why the canonical words are what they are
  * -----------------------------------------
- * Walk on the tiles with a heading. Around every vertex five tiles meet, so
+ * Walk on the tiles with a heading. Around every vertex Q tiles meet, so
  * with F = step forward (heading carried across the edge) and L = turn left
- * a quarter, the flag (tile, heading) obeys L^4 = 1 and (F L)^5 = 1: five
+ * a quarter, the flag (tile, heading) obeys L^4 = 1 and (F L)^Q = 1: Q
  * times "step, turn left" goes round a vertex and returns the same flag.
- * Consequences for a shortest walk, written as letters f/l/r (turn, step):
+ * In {4,5}, consequences for a shortest walk, written as letters f/l/r
+ * (turn, step):
  *   - "ll" never appears: three tiles of a vertex's five, the other two are
  *     shorter. "rr" likewise.
  *   - ties exist: "a lfl b" and "a' rfr b'" can reach the same tile (two
@@ -24,50 +25,96 @@
  *     4    0  -  1
  *     5    1  2  -
  *
- * The tests check this language against an independent hyperboloid model:
- * each tile to distance 12 has exactly one accepted word, and it is shortest.
+ * Every tiling {4,Q} has such an automaton of leftmost shortest words
+ * (hol_tile_dfa.h: 2 states in the flat {4,4}, where words are a straight
+ * run, one right turn, a straight run; 4 in {4,6}, 10 in {4,7}, 6 in
+ * {4,8}), derived from the geometry by tests/gen_tiling.c. The tests check
+ * each against an independent model (a hyperboloid model for Q >= 5,
+ * integer coordinates for Q = 4): each tile to some distance has exactly
+ * one accepted word, and it is shortest.
  *
  * Neighbours
  * ----------
  * Stepping from tile w in direction t: back is the parent; a direction whose
- * letter the automaton accepts gives the child w+letter. Otherwise the
- * neighbour is reached the other way round the vertex between w, its parent
- * and that neighbour: from (F L)^5 = 1 follows
+ * letter the automaton accepts gives the child w+letter (straight on is
+ * always accepted, in every tiling). Otherwise the neighbour is reached the
+ * other way round the vertex between w, its parent and that neighbour: from
+ * (F L)^Q = 1 follows, for Q = 5,
  *     L F = L L F R F R F R F L     and     R F = R R F L F L F L F R,
- * that is: go back to the parent, then three steps round the vertex. The
- * three steps recurse on tiles no farther than w from O (at most one step
- * farther for the last one), and the recursion ends: the worst case is about
- * 2n calls for a word of length n, the mean under two.
+ * that is: go back to the parent, then Q - 2 steps round the vertex. The
+ * steps recurse on tiles no farther than w from O (at most one step
+ * farther for the last one), and the recursion ends: the worst case is
+ * about 2n calls for a word of length n in {4,5}, the mean under two (the
+ * tests walk every neighbour of every tile to some distance in each tiling,
+ * and random words to the reach).
  */
 #include "hol_tile.h"
 
 #include "hol_hash.h"
+#include "hol_tile_dfa.h"
 
 #include <string.h>
 
 #define HOL__CAP 127 /* letters a working word can hold */
-#define HOL__SINK 6
 
-/* hol__dfa[state][letter code]; code 2 (back) is never a letter. */
-static const uint8_t hol__dfa[7][4] = {
-    {0, 2, HOL__SINK, 1},
-    {3, 2, HOL__SINK, HOL__SINK},
-    {4, HOL__SINK, HOL__SINK, 1},
-    {0, 2, HOL__SINK, 5},
-    {0, HOL__SINK, HOL__SINK, 1},
-    {1, 2, HOL__SINK, HOL__SINK},
-    {HOL__SINK, HOL__SINK, HOL__SINK, HOL__SINK},
+/* Inlined into each caller, so that a {4,5} caller's copy knows its
+ * automaton at compile time (the core's hottest paths). */
+#if defined(__GNUC__)
+#define HOL__HOT static inline __attribute__((always_inline))
+#else
+#define HOL__HOT static inline
+#endif
+
+/* A tiling: its automaton (dfa[state][letter code], code 2 (back) is never
+ * a letter; `sink` is the state of no address), the synchronising runs
+ * (hol__state_of), the reach and the tiling bits of its words. */
+typedef struct hol__tiling {
+    int q, reach, nstates, sink;
+    const uint8_t (*dfa)[4];
+    const uint8_t *sync_run, *sync_state;
+    uint64_t qbits; /* or-ed into bits[1] */
+} hol__tiling;
+
+#define HOL__N(Q) ((int)(sizeof hol__dfa##Q / sizeof hol__dfa##Q[0]) - 1)
+#define HOL__T(Q, REACH, QB)                                                           \
+    {Q, REACH, HOL__N(Q), HOL__N(Q), hol__dfa##Q, hol__sync_run##Q, hol__sync_state##Q, QB}
+static const hol__tiling hol__tilings[5] = {
+    HOL__T(4, 59, UINT64_C(4) << 54),
+    HOL__T(5, 60, 0),
+    HOL__T(6, 59, UINT64_C(6) << 54),
+    HOL__T(7, 59, UINT64_C(7) << 54),
+    HOL__T(8, 59, UINT64_C(8) << 54),
 };
+_Static_assert(HOL__N(4) <= HOL_TILE_MAX_STATES && HOL__N(5) == HOL_TILE_STATES &&
+                   HOL__N(6) <= HOL_TILE_MAX_STATES && HOL__N(7) <= HOL_TILE_MAX_STATES &&
+                   HOL__N(8) <= HOL_TILE_MAX_STATES,
+               "an automaton larger than HOL_TILE_MAX_STATES");
+#define HOL__T45 (&hol__tilings[1])
+
+/* The tiling of a word (NULL: an unknown tiling code). */
+static inline const hol__tiling *hol__tiling_of(hol_tile t)
+{
+    if (!((t.bits[1] >> 56) & 3u))
+        return HOL__T45;
+    unsigned q = (unsigned)(t.bits[1] >> 54) & 15u;
+    return q == 4 || (q >= 6 && q <= 8) ? &hol__tilings[q - 4] : NULL;
+}
+
+static const hol__tiling *hol__tiling_q(int q)
+{
+    return q >= HOL_TILING_MIN_Q && q <= HOL_TILING_MAX_Q ? &hol__tilings[q - 4] : NULL;
+}
 
 /* Working word: like hol_tile but twice as long, so relative addresses
- * between any two tiles in reach (up to 2 * HOL_TILE_MAX_DIST) fit. */
+ * between any two tiles in reach (up to 2 * HOL_TILE_MAX_DIST) fit. It holds
+ * letters only; its tiling travels beside it. */
 typedef struct hol__word {
     uint64_t b[4];
     int len;
 } hol__word;
 
 /* Letter i of a bit array (a hol__word's b or a hol_tile's bits: letters
- * of a valid tile never reach the length field). */
+ * of a valid tile never reach the tiling or length fields). */
 static int hol__at(const uint64_t *b, int i)
 {
     return (int)((b[i >> 5] >> (2 * (i & 31))) & 3u);
@@ -89,10 +136,34 @@ static void hol__pop(hol__word *w)
     w->b[w->len >> 5] &= ~(UINT64_C(3) << (2 * (w->len & 31)));
 }
 
-/* Automaton state after the whole word (length >= 1). The automaton
- * synchronises: after an "l" it is always in state 2 and after "fff" always
- * in state 0, so only the letters after the last such mark are run. */
-static int hol__state_of(const uint64_t *b, int len)
+/* Automaton state after the whole word (length >= 1). The automata
+ * synchronise: a run of sync_run[c] letters c leads every state to
+ * sync_state[c], so only the letters after the last such run are run. */
+static int hol__state_gen(const hol__tiling *T, const uint64_t *b, int len)
+{
+    int i = len - 1, run = 0, prev = -1, s = 0;
+    for (; i >= 1; i--) {
+        int c = hol__at(b, i);
+        run = c == prev ? run + 1 : 1;
+        prev = c;
+        if (T->sync_run[c] && run == T->sync_run[c]) {
+            s = T->sync_state[c];
+            i += run - 1;
+            break;
+        }
+    }
+    if (i < 1)
+        i = 0;
+    for (i++; i < len; i++)
+        s = T->dfa[s][hol__at(b, i)];
+    return s;
+}
+
+/* The same for {4,5}, written out (the core's hottest path): after an "l"
+ * always state 2, after "fff" always state 0 (hol__sync_run5). A bit-mask
+ * search for the last such run cost more than this scan, which mostly
+ * stops within a few letters. */
+static int hol__state45(const uint64_t *b, int len)
 {
     int i = len - 1, run = 0, s = 0;
     for (; i >= 1; i--) {
@@ -111,38 +182,80 @@ static int hol__state_of(const uint64_t *b, int len)
     if (i < 1)
         i = 0;
     for (i++; i < len; i++)
-        s = hol__dfa[s][hol__at(b, i)];
+        s = hol__dfa5[s][hol__at(b, i)];
     return s;
 }
 
-static int hol__state(const hol__word *w) { return hol__state_of(w->b, w->len); }
+HOL__HOT int hol__state_of(const hol__tiling *T, const uint64_t *b, int len)
+{
+    return T == HOL__T45 ? hol__state45(b, len) : hol__state_gen(T, b, len);
+}
+
+static int hol__state(const hol__tiling *T, const hol__word *w)
+{
+    return hol__state_of(T, w->b, w->len);
+}
+
+#define HOL__LEN_SHIFT 58
+#define HOL__HIGH_MASK (~(UINT64_C(0) ) << 54) /* tiling and length fields */
 
 static hol__word hol__widen(hol_tile t)
 {
     hol__word w;
     w.b[0] = t.bits[0];
-    w.b[1] = t.bits[1] & ~(UINT64_C(63) << 58);
+    w.b[1] = t.bits[1] & ~HOL__HIGH_MASK;
     w.b[2] = w.b[3] = 0;
-    w.len = (int)(t.bits[1] >> 58);
+    w.len = (int)(t.bits[1] >> HOL__LEN_SHIFT);
+    if (w.len == 60) /* {4,5} only: letter 59 lies in bits 118..119 */
+        w.b[1] |= t.bits[1] & (UINT64_C(3) << 54);
     return w;
 }
 
-/* Caller ensures w.len <= HOL_TILE_MAX_DIST. */
-static hol_tile hol__narrow(const hol__word *w)
+/* Caller ensures w.len <= T->reach. */
+static hol_tile hol__narrow(const hol__tiling *T, const hol__word *w)
 {
     hol_tile t;
     t.bits[0] = w->b[0];
-    t.bits[1] = w->b[1] | ((uint64_t)w->len << 58);
+    t.bits[1] = w->b[1] | T->qbits | ((uint64_t)w->len << HOL__LEN_SHIFT);
     return t;
 }
 
-static int hol__len(hol_tile t) { return (int)(t.bits[1] >> 58); }
+static int hol__len(hol_tile t) { return (int)(t.bits[1] >> HOL__LEN_SHIFT); }
+
+/* The tiling of a valid tile word (length within its reach), else NULL. */
+static inline const hol__tiling *hol__valid_of(hol_tile t)
+{
+    const hol__tiling *T = hol__tiling_of(t);
+    return T && hol__len(t) <= T->reach ? T : NULL;
+}
 
 hol_tile hol_tile_origin(void)
 {
     hol_tile t;
     t.bits[0] = t.bits[1] = 0;
     return t;
+}
+
+hol_tile hol_tile_origin_q(int q)
+{
+    const hol__tiling *T = hol__tiling_q(q);
+    hol_tile t;
+    t.bits[0] = 0;
+    /* a bad q: a length no tiling reaches */
+    t.bits[1] = T ? T->qbits : UINT64_C(63) << HOL__LEN_SHIFT;
+    return t;
+}
+
+int hol_tile_q(hol_tile t)
+{
+    const hol__tiling *T = hol__valid_of(t);
+    return T ? T->q : 0;
+}
+
+int hol_tile_reach(int q)
+{
+    const hol__tiling *T = hol__tiling_q(q);
+    return T ? T->reach : 0;
 }
 
 int hol_tile_dist0(hol_tile t) { return hol__len(t); }
@@ -164,20 +277,61 @@ int hol_tile_letter(hol_tile t, int i)
     return hol__at(t.bits, i);
 }
 
+int hol_tile_states(int q)
+{
+    const hol__tiling *T = hol__tiling_q(q);
+    return T ? T->nstates : 0;
+}
+
+int hol_tile_automaton_q(int q, int state, int letter)
+{
+    const hol__tiling *T = hol__tiling_q(q);
+    if (!T || state < 0 || state >= T->nstates || letter < 0 || letter > 3)
+        return -1;
+    int next = T->dfa[state][letter];
+    return next == T->sink ? -1 : next;
+}
+
 int hol_tile_automaton(int state, int letter)
 {
-    if (state < 0 || state >= HOL_TILE_STATES || letter < 0 || letter > 3)
-        return -1;
-    int next = hol__dfa[state][letter];
-    return next == HOL__SINK ? -1 : next;
+    return hol_tile_automaton_q(5, state, letter);
 }
 
 int hol_tile_state(hol_tile t)
 {
+    const hol__tiling *T = hol__valid_of(t);
     int n = hol__len(t);
-    if (n == 0 || n > HOL_TILE_MAX_DIST)
+    if (!T || n == 0)
         return -1;
-    return hol__state_of(t.bits, n);
+    return hol__state_of(T, t.bits, n);
+}
+
+uint64_t hol_tile_count_at(int q, int d)
+{
+    const hol__tiling *T = hol__tiling_q(q);
+    if (!T || d < 0)
+        return 0;
+    if (d == 0)
+        return 1;
+    /* words of d - 1 letters after the branch, from state 0 */
+    uint64_t cnt[HOL_TILE_MAX_STATES], nx[HOL_TILE_MAX_STATES];
+    for (int s = 0; s < T->nstates; s++)
+        cnt[s] = 1;
+    for (int k = 1; k < d; k++) {
+        for (int s = 0; s < T->nstates; s++) {
+            uint64_t n = 0;
+            for (int c = 0; c < 4; c++)
+                if (T->dfa[s][c] != T->sink)
+                    n += cnt[T->dfa[s][c]];
+            nx[s] = n;
+        }
+        for (int s = 0; s < T->nstates; s++) {
+            if (nx[s] > (UINT64_C(1) << 61))
+                return 0;
+            cnt[s] = nx[s];
+        }
+    }
+    return 4 * cnt[0];
 }
 
 static const char hol__branch_ch[4] = {'N', 'W', 'S', 'E'};
@@ -202,14 +356,16 @@ static int hol__code(char c, ptrdiff_t i)
     return hol__turn_code[(unsigned char)c] - 1;
 }
 
-hol_err hol_tile_parse(const char *s, ptrdiff_t len, hol_tile *out_tile)
+static hol_err hol__parse(const hol__tiling *T, const char *s, ptrdiff_t len,
+                          hol_tile *out_tile)
 {
     if (len < 0)
         len = (ptrdiff_t)strlen(s);
     if (len == 0)
         return HOL_EPARSE;
     if (len == 1 && s[0] == 'O') {
-        *out_tile = hol_tile_origin();
+        hol__word o = {{0, 0, 0, 0}, 0};
+        *out_tile = hol__narrow(T, &o);
         return HOL_OK;
     }
     hol__word w = {{0, 0, 0, 0}, 0};
@@ -220,11 +376,11 @@ hol_err hol_tile_parse(const char *s, ptrdiff_t len, hol_tile *out_tile)
         if (c < 0)
             return HOL_EPARSE;
         if (i > 0) {
-            state = hol__dfa[state][c];
-            if (state == HOL__SINK && !err)
+            state = T->dfa[state][c];
+            if (state == T->sink && !err)
                 err = HOL_ENOTCANON; /* keep scanning for syntax errors */
         }
-        if (i >= HOL_TILE_MAX_DIST) {
+        if (i >= T->reach) {
             if (!err)
                 err = HOL_ERANGE;
         } else {
@@ -233,13 +389,26 @@ hol_err hol_tile_parse(const char *s, ptrdiff_t len, hol_tile *out_tile)
     }
     if (err)
         return err;
-    *out_tile = hol__narrow(&w);
+    *out_tile = hol__narrow(T, &w);
     return HOL_OK;
+}
+
+hol_err hol_tile_parse(const char *s, ptrdiff_t len, hol_tile *out_tile)
+{
+    return hol__parse(HOL__T45, s, len, out_tile);
+}
+
+hol_err hol_tile_parse_q(int q, const char *s, ptrdiff_t len, hol_tile *out_tile)
+{
+    const hol__tiling *T = hol__tiling_q(q);
+    return T ? hol__parse(T, s, len, out_tile) : HOL_EARG;
 }
 
 int hol_tile_print(hol_tile t, char *buf)
 {
     hol__word w = hol__widen(t);
+    if (w.len > HOL_TILE_MAX_DIST)
+        w.len = HOL_TILE_MAX_DIST; /* an invalid word: print what fits */
     if (w.len == 0) {
         buf[0] = 'O';
         buf[1] = '\0';
@@ -254,34 +423,51 @@ int hol_tile_print(hol_tile t, char *buf)
 
 hol_tile hol_tile_parent(hol_tile t)
 {
-    hol__word w = hol__widen(t);
-    hol__pop(&w);
-    return hol__narrow(&w);
+    int n = hol__len(t);
+    if (n == 0 || n > HOL_TILE_MAX_DIST)
+        return t;
+    t.bits[(n - 1) >> 5] &= ~(UINT64_C(3) << (2 * ((n - 1) & 31)));
+    t.bits[1] -= UINT64_C(1) << HOL__LEN_SHIFT;
+    return t;
 }
 
 /* Append letter code c to a tile short of the reach. */
 static hol_tile hol__tile_push(hol_tile t, int n, int c)
 {
     t.bits[n >> 5] |= (uint64_t)c << (2 * (n & 31));
-    t.bits[1] += UINT64_C(1) << 58;
+    t.bits[1] += UINT64_C(1) << HOL__LEN_SHIFT;
     return t;
 }
 
-hol_err hol_tile_child(hol_tile t, int letter, hol_tile *out_tile)
+HOL__HOT hol_err hol__child(const hol__tiling *T, hol_tile t, int letter, hol_tile *out_tile)
 {
     int n = hol__len(t);
-    if (letter < 0 || letter > 3 || n > HOL_TILE_MAX_DIST)
+    if (letter < 0 || letter > 3)
         return HOL_EARG;
-    if (n > 0 && hol__dfa[hol__state_of(t.bits, n)][letter] == HOL__SINK)
+    if (n > 0 && T->dfa[hol__state_of(T, t.bits, n)][letter] == T->sink)
         return HOL_ENOTCANON;
-    if (n == HOL_TILE_MAX_DIST)
+    if (n == T->reach)
         return HOL_ERANGE;
     *out_tile = hol__tile_push(t, n, letter);
     return HOL_OK;
 }
 
-/* The recursion described at the top, on working words. */
-static hol_err hol__step(hol__word *w, int t, int *arr)
+hol_err hol_tile_child(hol_tile t, int letter, hol_tile *out_tile)
+{
+    if (!((t.bits[1] >> 56) & 3u)) /* {4,5} */
+        return hol__len(t) > HOL_TILE_MAX_DIST ? HOL_EARG
+                                               : hol__child(HOL__T45, t, letter, out_tile);
+    const hol__tiling *T = hol__valid_of(t);
+    return T ? hol__child(T, t, letter, out_tile) : HOL_EARG;
+}
+
+/* The recursion described at the top, on working words; `self` is the
+ * function to recurse with (hol__step45 or hol__stepq: inlined into each,
+ * so the {4,5} copy knows its automaton at compile time). */
+typedef hol_err (*hol__step_fn)(const hol__tiling *T, hol__word *w, int t, int *arr);
+
+static inline hol_err hol__step_in(const hol__tiling *T, hol__word *w, int t, int *arr,
+                                   hol__step_fn self)
 {
     t &= 3;
     if (w->len == 0) {
@@ -294,21 +480,21 @@ static hol_err hol__step(hol__word *w, int t, int *arr)
         hol__pop(w);
         return HOL_OK;
     }
-    if (hol__dfa[hol__state(w)][t] != HOL__SINK) {
+    if (T->dfa[hol__state(T, w)][t] != T->sink) {
         if (w->len >= HOL__CAP)
             return HOL_ERANGE;
         hol__push(w, t);
         *arr = 0;
         return HOL_OK;
     }
-    /* Not a child: back to the parent, then three steps round the vertex,
+    /* Not a child: back to the parent, then Q - 2 steps round the vertex,
      * turning right each time for a left neighbour and left for a right. */
     int s = t == HOL_TURN_L ? -1 : 1;
     int th = (hol__get(w, w->len - 1) + 2) & 3;
     hol__word q = *w;
     hol__pop(&q);
-    for (int i = 0; i < 3; i++) {
-        hol_err err = hol__step(&q, th + s, &th);
+    for (int i = 0; i < T->q - 2; i++) {
+        hol_err err = self(T, &q, th + s, &th);
         if (err)
             return err;
     }
@@ -317,45 +503,69 @@ static hol_err hol__step(hol__word *w, int t, int *arr)
     return HOL_OK;
 }
 
-static int hol__valid(hol_tile t)
+static hol_err hol__step45(const hol__tiling *T, hol__word *w, int t, int *arr)
 {
-    return hol__len(t) <= HOL_TILE_MAX_DIST;
+    (void)T;
+    return hol__step_in(HOL__T45, w, t, arr, hol__step45);
 }
 
-hol_err hol_tile_step(hol_tile t, int turn, hol_tile *out_tile, int *out_arrive)
+static hol_err hol__stepq(const hol__tiling *T, hol__word *w, int t, int *arr)
+{
+    return hol__step_in(T, w, t, arr, hol__stepq);
+}
+
+static hol__step_fn hol__stepper(const hol__tiling *T)
+{
+    return T == HOL__T45 ? hol__step45 : hol__stepq;
+}
+
+/* hol_tile_step for a valid tile of tiling T (inlined twice, so that the
+ * {4,5} copy knows its automaton at compile time). */
+HOL__HOT hol_err hol__tile_step(const hol__tiling *T, hol_tile t, int turn, hol_tile *out_tile,
+                                int *out_arrive)
 {
     int arr, n = hol__len(t);
-    turn &= 3;
-    if (n > HOL_TILE_MAX_DIST)
-        return HOL_EARG;
     /* fast path: the parent */
     if (n > 0 && turn == HOL_TURN_B) {
         int last = hol__at(t.bits, n - 1);
         t.bits[(n - 1) >> 5] &= ~(UINT64_C(3) << (2 * ((n - 1) & 31)));
-        t.bits[1] -= UINT64_C(1) << 58;
+        t.bits[1] -= UINT64_C(1) << HOL__LEN_SHIFT;
         *out_tile = t;
         if (out_arrive)
             *out_arrive = (last + 2) & 3;
         return HOL_OK;
     }
     /* a child of a tile short of the reach */
-    if (n > 0 && n < HOL_TILE_MAX_DIST &&
-        hol__dfa[hol__state_of(t.bits, n)][turn] != HOL__SINK) {
+    if (n > 0 && n < T->reach && T->dfa[hol__state_of(T, t.bits, n)][turn] != T->sink) {
         *out_tile = hol__tile_push(t, n, turn);
         if (out_arrive)
             *out_arrive = 0;
         return HOL_OK;
     }
     hol__word w = hol__widen(t);
-    hol_err err = hol__step(&w, turn, &arr);
-    if (!err && w.len > HOL_TILE_MAX_DIST)
+    hol_err err = hol__stepper(T)(T, &w, turn, &arr);
+    if (!err && w.len > T->reach)
         err = HOL_ERANGE;
     if (err)
         return err;
-    *out_tile = hol__narrow(&w);
+    *out_tile = hol__narrow(T, &w);
     if (out_arrive)
         *out_arrive = arr;
     return HOL_OK;
+}
+
+hol_err hol_tile_step(hol_tile t, int turn, hol_tile *out_tile, int *out_arrive)
+{
+    turn &= 3;
+    if (!((t.bits[1] >> 56) & 3u)) { /* {4,5} */
+        if (hol__len(t) > HOL_TILE_MAX_DIST)
+            return HOL_EARG;
+        return hol__tile_step(HOL__T45, t, turn, out_tile, out_arrive);
+    }
+    const hol__tiling *T = hol__valid_of(t);
+    if (!T)
+        return HOL_EARG;
+    return hol__tile_step(T, t, turn, out_tile, out_arrive);
 }
 
 hol_err hol_heading_tile_step(hol_heading_tile f, int turn, hol_heading_tile *out_ht)
@@ -368,10 +578,12 @@ hol_err hol_heading_tile_step(hol_heading_tile f, int turn, hol_heading_tile *ou
     return HOL_OK;
 }
 
-hol_err hol_tile_from_walk(const uint8_t *dirs, size_t n, hol_tile *out_tile,
-                           int *out_orient)
+hol_err hol_tile_from_walk_q(int q, const uint8_t *dirs, size_t n, hol_tile *out_tile,
+                             int *out_orient)
 {
-    hol_tile t = hol_tile_origin();
+    if (!hol__tiling_q(q))
+        return HOL_EARG;
+    hol_tile t = hol_tile_origin_q(q);
     int orient = 0; /* room N relative to the tile's canonical heading */
     for (size_t i = 0; i < n; i++) {
         int arr;
@@ -388,16 +600,22 @@ hol_err hol_tile_from_walk(const uint8_t *dirs, size_t n, hol_tile *out_tile,
     return HOL_OK;
 }
 
-hol_err hol_tile_resolve(const char *s, ptrdiff_t len, hol_tile *out_tile)
+hol_err hol_tile_from_walk(const uint8_t *dirs, size_t n, hol_tile *out_tile,
+                           int *out_orient)
+{
+    return hol_tile_from_walk_q(5, dirs, n, out_tile, out_orient);
+}
+
+hol_err hol_tile_resolve_q(int q, const char *s, ptrdiff_t len, hol_tile *out_tile)
 {
     /* parse checks the whole syntax before it reports a non-canonical or
      * too long word; only those are walked */
-    hol_err err = hol_tile_parse(s, len, out_tile);
+    hol_err err = hol_tile_parse_q(q, s, len, out_tile);
     if (err != HOL_ENOTCANON && err != HOL_ERANGE)
         return err;
     if (len < 0)
         len = (ptrdiff_t)strlen(s);
-    hol_heading_tile f = {hol_tile_origin(), 0};
+    hol_heading_tile f = {hol_tile_origin_q(q), 0};
     for (ptrdiff_t i = 0; i < len; i++) {
         err = hol_heading_tile_step(f, hol__code(s[i], i), &f);
         if (err)
@@ -407,14 +625,21 @@ hol_err hol_tile_resolve(const char *s, ptrdiff_t len, hol_tile *out_tile)
     return HOL_OK;
 }
 
+hol_err hol_tile_resolve(const char *s, ptrdiff_t len, hol_tile *out_tile)
+{
+    return hol_tile_resolve_q(5, s, len, out_tile);
+}
+
 /* The walk a -> longest common prefix -> b, replayed from a's point of view
  * on a working word. theta: the walker's facing relative to the real tile's
- * heading; v, phi: the same walk seen from a. */
+ * heading; v, phi: the same walk seen from a. *out_t: the tiling. */
 static hol_err hol__relative(hol_tile a, int a_north, hol_tile b, hol__word *v,
-                             int *out_facing)
+                             int *out_facing, const hol__tiling **out_t)
 {
-    if (!hol__valid(a) || !hol__valid(b))
+    const hol__tiling *T = hol__valid_of(a);
+    if (!T || hol__valid_of(b) != T)
         return HOL_EARG;
+    hol__step_fn step = hol__stepper(T);
     hol__word wa = hol__widen(a), wb = hol__widen(b);
     int k = 0;
     while (k < wa.len && k < wb.len && hol__get(&wa, k) == hol__get(&wb, k))
@@ -422,18 +647,19 @@ static hol_err hol__relative(hol_tile a, int a_north, hol_tile b, hol__word *v,
     int theta = a_north & 3, phi = 0;
     *v = (hol__word){{0, 0, 0, 0}, 0};
     for (int i = wa.len - 1; i >= k; i--) {
-        hol_err err = hol__step(v, phi + HOL_TURN_B - theta, &phi);
+        hol_err err = step(T, v, phi + HOL_TURN_B - theta, &phi);
         if (err)
             return err;
         theta = (hol__get(&wa, i) + 2) & 3;
     }
     for (int i = k; i < wb.len; i++) {
-        hol_err err = hol__step(v, phi + hol__get(&wb, i) - theta, &phi);
+        hol_err err = step(T, v, phi + hol__get(&wb, i) - theta, &phi);
         if (err)
             return err;
         theta = 0;
     }
     *out_facing = (phi - theta) & 3;
+    *out_t = T;
     return HOL_OK;
 }
 
@@ -442,12 +668,13 @@ hol_err hol_tile_relative(hol_tile a, int a_north, hol_tile b, hol_tile *out_rel
 {
     hol__word v;
     int facing;
-    hol_err err = hol__relative(a, a_north, b, &v, &facing);
-    if (!err && v.len > HOL_TILE_MAX_DIST)
+    const hol__tiling *T;
+    hol_err err = hol__relative(a, a_north, b, &v, &facing, &T);
+    if (!err && v.len > T->reach)
         err = HOL_ERANGE;
     if (err)
         return err;
-    *out_rel = hol__narrow(&v);
+    *out_rel = hol__narrow(T, &v);
     if (out_facing)
         *out_facing = facing;
     return HOL_OK;
@@ -459,7 +686,8 @@ int hol_tile_relative_letters(hol_tile a, int a_north, hol_tile b,
 {
     hol__word v;
     int facing;
-    if (hol__relative(a, a_north, b, &v, &facing))
+    const hol__tiling *T;
+    if (hol__relative(a, a_north, b, &v, &facing, &T))
         return -1;
     for (int i = 0; i < v.len; i++)
         out_letters[i] = (uint8_t)hol__get(&v, i);
@@ -472,7 +700,8 @@ int hol_tile_dist(hol_tile a, hol_tile b)
 {
     hol__word v;
     int facing;
-    if (hol__relative(a, 0, b, &v, &facing))
+    const hol__tiling *T;
+    if (hol__relative(a, 0, b, &v, &facing, &T))
         return -1;
     return v.len;
 }

@@ -241,6 +241,7 @@ static hol_err hol__parse_header(const void *buf, size_t len, hol__image *im,
     im->user.orient = p[56];
     im->user.col = p[57];
     im->user.row = p[58];
+    im->user.more_cols = im->user.more_rows = 0;
     if (!hol__tile_valid(im->user.tile) || im->user.orient > 3 ||
         im->user.col >= HOL_ROOM_SIZE || im->user.row >= HOL_ROOM_SIZE)
         return hol__say(msg, cap, HOL_ECORRUPT, "invalid user state%.0llu%.0llu", 0, 0);

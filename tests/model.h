@@ -1,13 +1,17 @@
-/* model.h - an independent geometric model of the {4,5} tiling, for tests.
+/* model.h - an independent geometric model of the tilings {4,Q}, for tests.
  *
  * Contract: written only for the tests and shares no code with core/. Tiles
  * are 3x3 Lorentz matrices (hyperboloid model, double precision): a frame
  * whose origin is the tile centre and whose +y axis is a heading. A step in
  * direction k (quarter turns counter-clockwise, 0 = +y) is
- * M * R(k) * T(d) * R(-k) with d = 2 acosh(cos(pi/5) / sin(pi/4)), which
+ * M * R(k) * T(d) * R(-k) with d = 2 acosh(cos(pi/Q) / sin(pi/4)), which
  * carries the frame across the edge (parallel transport). A breadth-first
  * search from the origin identifies tiles by their centre points and gives
- * each tile's true distance. Good to about distance 14.
+ * each tile's true distance. Good to about distance 14 in {4,5} (the
+ * coordinates grow like cosh(d * edge), faster for larger Q: 11 in {4,8}).
+ * For Q = 4, the flat grid: plain integer coordinates, the same matrices as
+ * rigid motions of the plane (exact in double precision), T a unit
+ * translation. model_use_tiling(Q) selects the tiling ({4,5} by default).
  *
  * Header-only; include it once per test program.
  */
@@ -48,14 +52,24 @@ static model_mat model_rot(int k)
     return r;
 }
 
+static int model_q = 5;
+
+static void model_use_tiling(int q) { model_q = q; }
+
 static double model_edge(void)
 {
-    return 2.0 * acosh(cos(acos(-1.0) / 5.0) / sin(acos(-1.0) / 4.0));
+    if (model_q == 4)
+        return 1.0;
+    return 2.0 * acosh(cos(acos(-1.0) / model_q) / sin(acos(-1.0) / 4.0));
 }
 
 /* Translation along +y by the edge length. */
 static model_mat model_fwd(void)
 {
+    if (model_q == 4) {
+        model_mat e = {{1, 0, 0, 0, 1, 1, 0, 0, 1}};
+        return e;
+    }
     double d = model_edge();
     model_mat r = {{1, 0, 0, 0, cosh(d), sinh(d), 0, sinh(d), cosh(d)}};
     return r;
@@ -67,10 +81,17 @@ static model_mat model_step(model_mat m, int k)
                      model_rot(-k));
 }
 
-/* Inverse of a Lorentz matrix: J M^T J with J = diag(1, 1, -1). */
+/* Inverse of a Lorentz matrix: J M^T J with J = diag(1, 1, -1); of a
+ * rigid motion of the flat plane: [R^T, -R^T t]. */
 static model_mat model_inv(model_mat a)
 {
     model_mat r;
+    if (model_q == 4) {
+        model_mat e = {{a.m[0], a.m[3], 0, a.m[1], a.m[4], 0, 0, 0, 1}};
+        e.m[2] = -(a.m[0] * a.m[2] + a.m[3] * a.m[5]);
+        e.m[5] = -(a.m[1] * a.m[2] + a.m[4] * a.m[5]);
+        return e;
+    }
     static const double j[3] = {1, 1, -1};
     for (int i = 0; i < 3; i++)
         for (int k = 0; k < 3; k++)
@@ -128,10 +149,12 @@ static uint32_t model__hash(double x, double y)
 }
 
 /* Index of the tile centred at (x, y), or -1. Centres of distinct tiles are
- * far apart, so the test is a generous tolerance on the coordinates. */
+ * far apart, so the test is a generous tolerance on the coordinates
+ * (relative to their size: rounding errors are about 1e-15 of it, while two
+ * tiles far out can differ by as little as one unit in one coordinate). */
 static int model_find(const model_bfs *b, double x, double y)
 {
-    double tol = 1e-6 * (1.0 + fabs(x) + fabs(y));
+    double tol = 1e-9 * (1.0 + fabs(x) + fabs(y));
     for (int dx = -1; dx <= 1; dx++)
         for (int dy = -1; dy <= 1; dy++) {
             double qx = x + dx * 0.0625, qy = y + dy * 0.0625;
@@ -169,10 +192,14 @@ static int model_bfs_run(model_bfs *b, int max_dist)
     memset(b, 0, sizeof *b);
     b->max_dist = max_dist;
     b->cap = 1;
-    for (int d = 0, n = 1; d < max_dist; d++)
-        b->cap += (n *= 3) + 1; /* 4 * 3^(d) bound, loose */
+    for (int d = 1, n = 4; d <= max_dist; d++, n *= 3)
+        b->cap += n; /* 4 * 3^(d - 1) at distance d: a bound */
     if (b->cap > 4000000)
         b->cap = 4000000;
+    if (model_q == 4)
+        b->cap = 2 * (max_dist + 1) * (max_dist + 2) + 1; /* 1 + 2d(d + 1) */
+    if (max_dist > 31)
+        return -1; /* per_dist */
     b->nslots = 1;
     while (b->nslots < (uint32_t)b->cap * 2)
         b->nslots <<= 1;

@@ -5,13 +5,17 @@
  * carried frame, relative addresses, distances between arbitrary pairs, the
  * room state, hyperboloid coordinates, parsing, printing and the reach.
  * The language check also runs against the rules published with the
- * original system and must reject them (SPEC section 3).
+ * original system and must reject them (SPEC section 3). The same proofs
+ * run for every other tiling {4,Q} (each against its own model: the
+ * hyperboloid of {4,Q}, integer coordinates for the flat {4,4}), with rooms
+ * of every size and the options' text (SPEC section 7).
  */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
 #include <stdint.h>
 #include <stdio.h>
+#include <stdlib.h>
 
 #include <cmocka.h>
 
@@ -87,12 +91,14 @@ static hol_tile parse_ok(const char *s)
 
 typedef int (*acceptor_fn)(const int *codes, int n);
 
+static int g_q = 5; /* the tiling accept_core parses in */
+
 static int accept_core(const int *codes, int n)
 {
     char s[64];
     hol_tile t;
     codes_to_text(codes, n, s);
-    return hol_tile_parse(s, -1, &t) == HOL_OK;
+    return hol_tile_parse_q(g_q, s, -1, &t) == HOL_OK;
 }
 
 /* The validity rules published with the original system: no two right turns
@@ -114,12 +120,18 @@ static int accept_published(const int *codes, int n)
     return 1;
 }
 
+#define LANG_MAX 31 /* longest words a language check takes */
+
 typedef struct lang_check {
     acceptor_fn accepts;
+    const model_bfs *bfs;
+    int maxlen;
+    const int *spec; /* tiles by distance, spec[0..nspec) */
+    int nspec;
     int *owner; /* per model tile: index of the word that addresses it */
-    char (*words)[MAXLEN + 2];
+    char (*words)[LANG_MAX + 2];
     int nwords;
-    int per_len[MAXLEN + 1];
+    int per_len[LANG_MAX + 1];
     char problem[256];
 } lang_check;
 
@@ -133,23 +145,26 @@ static void lang_note(lang_check *c, const char *fmt, ...)
     va_end(ap);
 }
 
+/* Both acceptors are prefix-closed (a word with a rejected prefix is
+ * rejected), so the search stops at a rejected word: it visits every
+ * accepted word to maxlen. */
 static void lang_dfs(lang_check *c, int *codes, int n, model_mat m, int heading)
 {
-    if (c->accepts(codes, n)) {
-        char s[MAXLEN + 2];
-        codes_to_text(codes, n, s);
-        int i = model_find(&bfs, m.m[2], m.m[5]);
-        if (i < 0 || bfs.tiles[i].dist != n)
-            lang_note(c, "accepts %s, which is not a shortest walk", s);
-        else if (c->owner[i] >= 0)
-            lang_note(c, "%s and %s address the same tile", c->words[c->owner[i]], s);
-        else {
-            c->owner[i] = c->nwords;
-            strcpy(c->words[c->nwords++], s);
-            c->per_len[n]++;
-        }
+    if (n > 0 && !c->accepts(codes, n))
+        return;
+    char s[LANG_MAX + 2];
+    codes_to_text(codes, n, s);
+    int i = model_find(c->bfs, m.m[2], m.m[5]);
+    if (i < 0 || c->bfs->tiles[i].dist != n)
+        lang_note(c, "accepts %s, which is not a shortest walk", s);
+    else if (c->owner[i] >= 0)
+        lang_note(c, "%s and %s address the same tile", c->words[c->owner[i]], s);
+    else {
+        c->owner[i] = c->nwords;
+        strcpy(c->words[c->nwords++], s);
+        c->per_len[n]++;
     }
-    if (n == MAXLEN)
+    if (n == c->maxlen || c->problem[0])
         return;
     for (int k = 0; k < 4; k++) {
         if (n > 0 && k == 2)
@@ -160,29 +175,40 @@ static void lang_dfs(lang_check *c, int *codes, int n, model_mat m, int heading)
     }
 }
 
-/* 0 if `accepts` gives every tile to MAXLEN exactly one shortest address
- * and the SPEC counts; otherwise 1 and c->problem says why. */
-static int lang_run(lang_check *c, acceptor_fn accepts)
+/* 0 if `accepts` gives every tile of b to maxlen exactly one shortest
+ * address and the SPEC counts (spec[0..nspec)); otherwise 1 and
+ * c->problem says why. */
+static int lang_run_in(lang_check *c, acceptor_fn accepts, const model_bfs *b, int maxlen,
+                       const int *spec, int nspec)
 {
     memset(c, 0, sizeof *c);
+    assert_true(maxlen <= LANG_MAX && maxlen < b->max_dist + 1);
     c->accepts = accepts;
-    c->owner = malloc(sizeof *c->owner * (size_t)bfs.count);
-    c->words = malloc(sizeof *c->words * (size_t)bfs.count);
+    c->bfs = b;
+    c->maxlen = maxlen;
+    c->spec = spec;
+    c->nspec = nspec;
+    c->owner = malloc(sizeof *c->owner * (size_t)b->count);
+    c->words = malloc(sizeof *c->words * (size_t)b->count);
     assert_non_null(c->owner);
     assert_non_null(c->words);
-    for (int i = 0; i < bfs.count; i++)
+    for (int i = 0; i < b->count; i++)
         c->owner[i] = -1;
-    int codes[MAXLEN + 1];
+    int codes[LANG_MAX + 1];
     lang_dfs(c, codes, 0, model_identity(), 0);
-    for (int i = 0; i < bfs.count && !c->problem[0]; i++)
-        if (bfs.tiles[i].dist <= MAXLEN && c->owner[i] < 0)
-            lang_note(c, "a tile at distance %d has no address", bfs.tiles[i].dist);
-    for (int d = 0; d <= MAXLEN && !c->problem[0]; d++)
-        if (c->per_len[d] != bfs.per_dist[d] ||
-            (d <= SPEC_MAXLEN && bfs.per_dist[d] != spec_counts[d]))
+    for (int i = 0; i < b->count && !c->problem[0]; i++)
+        if (b->tiles[i].dist <= maxlen && c->owner[i] < 0)
+            lang_note(c, "a tile at distance %d has no address", b->tiles[i].dist);
+    for (int d = 0; d <= maxlen && !c->problem[0]; d++)
+        if (c->per_len[d] != b->per_dist[d] || (d < nspec && b->per_dist[d] != spec[d]))
             lang_note(c, "distance %d: %d addresses, %d tiles, SPEC says %d", d,
-                      c->per_len[d], bfs.per_dist[d], spec_counts[d]);
+                      c->per_len[d], b->per_dist[d], d < nspec ? spec[d] : -1);
     return c->problem[0] != 0;
+}
+
+static int lang_run(lang_check *c, acceptor_fn accepts)
+{
+    return lang_run_in(c, accepts, &bfs, MAXLEN, spec_counts, SPEC_MAXLEN + 1);
 }
 
 static void lang_free(lang_check *c)
@@ -243,10 +269,13 @@ static void check_automaton(hol_tile t)
         assert_int_equal(st, -1);
         return;
     }
-    assert_true(st >= 0 && st < HOL_TILE_STATES);
+    int q = hol_tile_q(t);
+    assert_true(st >= 0 && st < hol_tile_states(q) && st < HOL_TILE_MAX_STATES);
     for (int c = 0; c < 4; c++) {
         hol_tile ch;
-        int next = hol_tile_automaton(st, c);
+        int next = hol_tile_automaton_q(q, st, c);
+        if (q == 5)
+            assert_int_equal(next, hol_tile_automaton(st, c));
         assert_int_equal(next >= 0, hol_tile_child(t, c, &ch) == HOL_OK);
         if (next >= 0 && hol_tile_dist0(ch) < HOL_TILE_MAX_DIST)
             assert_int_equal(hol_tile_state(ch), next);
@@ -507,7 +536,7 @@ static void test_reach(void **state)
             assert_true(hol_tile_dist0(t) <= HOL_TILE_MAX_DIST);
     }
     /* the room refuses a step beyond the reach and keeps its state */
-    hol_room room = {far, 0, 1, 1};
+    hol_room room = {far, 0, 1, 1, 0, 0};
     hol_room before = room;
     assert_int_equal(hol_room_step(&room, HOL_DIR_N), HOL_ERANGE);
     assert_memory_equal(&room, &before, sizeof room);
@@ -598,6 +627,420 @@ static void test_hyperboloid(void **state)
     assert_true(fabs(ang - acos(-1.0) / 2) < 1e-12); /* to the left */
 }
 
+/* ---- every tiling {4,Q} ----
+ * The same proofs for Q = 4, 6, 7, 8 ({4,5} above), each against its own
+ * model: the hyperboloid of {4,Q}, or for Q = 4 integer coordinates. */
+
+typedef struct tiling_case {
+    int q, maxlen; /* the proofs run to maxlen */
+    int nspec;
+    int spec[16]; /* SPEC 7 counts by distance */
+} tiling_case;
+
+/* Deeper (a minute, 2 GB): make BUILD=build/deep CFLAGS=-DHOL_TEST_DEEP unit */
+#ifdef HOL_TEST_DEEP
+#define DEEPER 2
+#else
+#define DEEPER 0
+#endif
+static const tiling_case tilings[] = {
+    {4, 24 + DEEPER, 0, {0}}, /* 4d, checked below */
+    {6, 11 + DEEPER, 8, {1, 4, 12, 32, 84, 220, 576, 1508}},
+    {7, 10 + DEEPER, 7, {1, 4, 12, 36, 100, 284, 800}},
+    {8, 10 + DEEPER, 7, {1, 4, 12, 36, 104, 300, 868}},
+};
+#define NTILINGS (int)(sizeof tilings / sizeof tilings[0])
+
+/* A uniformly random letter, then canonical children: a random tile of
+ * {4,q} at distance n. */
+static hol_tile random_tile_q(int q, int n)
+{
+    hol_tile t = hol_tile_origin_q(q);
+    while (hol_tile_dist0(t) < n) {
+        hol_tile c;
+        int k = (int)(rng() % 4);
+        if (hol_tile_child(t, k, &c) == HOL_OK)
+            t = c;
+    }
+    return t;
+}
+
+static void test_tilings_addresses(void **state)
+{
+    (void)state;
+    for (int i = 0; i < NTILINGS; i++) {
+        const tiling_case *tc = &tilings[i];
+        model_bfs b;
+        model_use_tiling(tc->q);
+        g_q = tc->q;
+        assert_int_equal(model_bfs_run(&b, tc->maxlen + 1), 0);
+        int flat[LANG_MAX + 1];
+        for (int d = 0; d <= LANG_MAX; d++)
+            flat[d] = d ? 4 * d : 1;
+        const int *spec = tc->q == 4 ? flat : tc->spec;
+        int nspec = tc->q == 4 ? tc->maxlen + 1 : tc->nspec;
+        lang_check c;
+        if (lang_run_in(&c, accept_core, &b, tc->maxlen, spec, nspec))
+            fail_msg("{4,%d} addresses: %s", tc->q, c.problem);
+        for (int d = 0; d <= tc->maxlen; d++)
+            assert_int_equal(hol_tile_count_at(tc->q, d), (uint64_t)b.per_dist[d]);
+        print_message("{4,%d}: every tile to distance %d has one address, a shortest walk "
+                      "(%d words)\n", tc->q, tc->maxlen, c.nwords);
+        lang_free(&c);
+        model_bfs_free(&b);
+    }
+    model_use_tiling(5);
+    g_q = 5;
+}
+
+static void test_tilings_neighbours(void **state)
+{
+    (void)state;
+    for (int i = 0; i < NTILINGS; i++) {
+        const tiling_case *tc = &tilings[i];
+        model_use_tiling(tc->q);
+        int depth = tc->maxlen - 2 < 9 ? tc->maxlen - 2 : 9;
+        enum_words(hol_tile_origin_q(tc->q), depth, check_step);
+        enum_words(hol_tile_origin_q(tc->q), depth, check_automaton);
+        print_message("{4,%d}: neighbours and frames of every tile to distance %d\n", tc->q,
+                      depth);
+    }
+    model_use_tiling(5);
+}
+
+static void test_tilings_relative(void **state)
+{
+    (void)state;
+    for (int i = 0; i < NTILINGS; i++) {
+        const tiling_case *tc = &tilings[i];
+        model_bfs b;
+        model_use_tiling(tc->q);
+        assert_int_equal(model_bfs_run(&b, tc->maxlen), 0);
+        int checked = 0, half = tc->maxlen / 2;
+        for (int iter = 0; iter < 6000; iter++) {
+            hol_tile a = random_tile_q(tc->q, (int)(rng() % (unsigned)(half + 1)));
+            hol_tile t = random_tile_q(tc->q, (int)(rng() % (unsigned)(half + 1)));
+            int north = (int)(rng() % 4), facing;
+            model_mat rel = model_mul(model_inv(model_mul(tile_frame(a), model_rot(north))),
+                                      tile_frame(t));
+            int d = model_dist0(&b, rel);
+            if (d < 0)
+                continue;
+            hol_tile r;
+            assert_int_equal(hol_tile_relative(a, north, t, &r, &facing), HOL_OK);
+            assert_int_equal(hol_tile_q(r), tc->q);
+            assert_int_equal(hol_tile_dist0(r), d);
+            assert_int_equal(model_frame_diff(tile_frame(r), rel), facing);
+            assert_int_equal(hol_tile_dist(a, t), hol_tile_dist(t, a));
+            if (north == 0)
+                assert_int_equal(hol_tile_dist(a, t), d);
+            checked++;
+        }
+        assert_true(checked > 3000);
+        model_bfs_free(&b);
+    }
+    model_use_tiling(5);
+}
+
+/* Far from O, where no model reaches: Q times "step, turn left" closes
+ * the loop round a vertex, neighbours are at distance 1 and back, and
+ * distances are symmetric and obey the triangle inequality. In {4,4} the
+ * address is a plain coordinate: its distance is |x| + |y|. */
+static void test_tilings_far(void **state)
+{
+    (void)state;
+    for (int q = 4; q <= 8; q++) {
+        int reach = hol_tile_reach(q);
+        for (int iter = 0; iter < 600; iter++) {
+            hol_tile t = random_tile_q(q, reach - 20 + (int)(rng() % 21));
+            hol_heading_tile f = {t, (int)(rng() % 4)}, g = f;
+            int ok = 1;
+            for (int i = 0; i < q && ok; i++) {
+                ok = hol_heading_tile_step(g, 0, &g) == HOL_OK;
+                g.facing = (g.facing + 1) & 3;
+            }
+            if (ok) {
+                assert_true(hol_tile_eq(g.tile, f.tile));
+                assert_int_equal(g.facing, f.facing);
+            }
+            hol_tile u = random_tile_q(q, reach - 20 + (int)(rng() % 21)), nb, back;
+            int duv = hol_tile_dist(t, u);
+            assert_int_equal(duv, hol_tile_dist(u, t));
+            hol_tile v = random_tile_q(q, (int)(rng() % (unsigned)reach));
+            assert_true(hol_tile_dist(t, v) <= duv + hol_tile_dist(u, v));
+            int k = (int)(rng() % 4), arr, arr2;
+            if (hol_tile_step(t, k, &nb, &arr) == HOL_OK) {
+                assert_int_equal(hol_tile_dist(t, nb), 1);
+                assert_int_equal(hol_tile_step(nb, arr + 2, &back, &arr2), HOL_OK);
+                assert_true(hol_tile_eq(back, t));
+            }
+        }
+    }
+    /* {4,4}: (x, y) of a tile from its walk */
+    for (int iter = 0; iter < 2000; iter++) {
+        hol_tile t = random_tile_q(4, (int)(rng() % 59)), u = random_tile_q(4, (int)(rng() % 59));
+        int xy[2][2];
+        for (int w = 0; w < 2; w++) {
+            hol_tile x = w ? u : t;
+            int h = 0;
+            xy[w][0] = xy[w][1] = 0;
+            for (int i = 0; i < hol_tile_dist0(x); i++) {
+                static const int dx[4] = {0, -1, 0, 1}, dy[4] = {1, 0, -1, 0};
+                h = (h + hol_tile_letter(x, i)) & 3;
+                xy[w][0] += dx[h];
+                xy[w][1] += dy[h];
+            }
+            assert_int_equal(hol_tile_dist0(x), abs(xy[w][0]) + abs(xy[w][1]));
+        }
+        assert_int_equal(hol_tile_dist(t, u), abs(xy[0][0] - xy[1][0]) + abs(xy[0][1] - xy[1][1]));
+    }
+}
+
+static int room_same(const hol_room *a, const hol_room *b)
+{
+    return hol_tile_eq(a->tile, b->tile) && a->orient == b->orient && a->col == b->col &&
+           a->row == b->row && a->more_cols == b->more_cols && a->more_rows == b->more_rows;
+}
+
+/* Rooms of every size in every tiling: random walks against the model,
+ * refused steps at the room's bounds, the start cell. */
+static void test_rooms_sizes(void **state)
+{
+    (void)state;
+    static const int sizes[6][2] = {{3, 3}, {4, 4}, {5, 5}, {3, 5}, {5, 3}, {4, 5}};
+    for (int q = 4; q <= 8; q++)
+        for (int z = 0; z < 6; z++) {
+            int C = sizes[z][0], R = sizes[z][1];
+            model_use_tiling(q);
+            hol_room start;
+            assert_int_equal(hol_room_start_in(q, C, R, &start), HOL_OK);
+            assert_int_equal(hol_room_cols(&start), C);
+            assert_int_equal(hol_room_rows(&start), R);
+            assert_int_equal(start.col, C / 2);
+            assert_int_equal(start.row, R / 2);
+            assert_true(hol_room_ok(&start));
+            for (int w = 0; w < 60; w++) {
+                hol_room room = start;
+                model_mat frame = model_identity();
+                int col = C / 2, row = R / 2;
+                for (int k = 0; k < 16; k++) {
+                    int dir = (int)(rng() % 4), dc, dr;
+                    hol_dir_delta(dir, &dc, &dr);
+                    hol_room before = room;
+                    hol_err err = hol_room_step(&room, dir);
+                    if (col + dc < 0 || col + dc >= C || row + dr < 0 || row + dr >= R) {
+                        assert_int_equal(err, HOL_EROOM);
+                        assert_true(room_same(&room, &before));
+                        continue;
+                    }
+                    assert_int_equal(err, HOL_OK);
+                    col += dc;
+                    row += dr;
+                    frame = model_step(frame, dir);
+                    assert_int_equal(room.col, col);
+                    assert_int_equal(room.row, row);
+                    assert_int_equal(hol_room_cols(&room), C);
+                    model_mat c = tile_frame(room.tile);
+                    assert_true(model_same_point(c, frame));
+                    assert_int_equal(model_frame_diff(c, frame), room.orient);
+                }
+            }
+        }
+    model_use_tiling(5);
+    hol_room r = hol_room_start(), d;
+    assert_int_equal(hol_room_start_in(0, 0, 0, &d), HOL_OK);
+    assert_true(room_same(&r, &d)); /* the defaults are today's start */
+    assert_int_equal(hol_room_start_in(9, 3, 3, &d), HOL_EARG);
+    assert_int_equal(hol_room_start_in(5, 2, 3, &d), HOL_EARG);
+    assert_int_equal(hol_room_start_in(5, 3, 6, &d), HOL_EARG);
+    r.more_cols = 3; /* a 6-column room does not exist */
+    assert_false(hol_room_ok(&r));
+    assert_int_equal(hol_room_step(&r, HOL_DIR_E), HOL_EARG);
+}
+
+/* The flat grid has no holonomy: every walk of a C x R room in {4,4}
+ * stays on its C x R tiles, each cell always on the same tile (SPEC 7).
+ * A breadth-first search over every room state the start reaches. */
+static void test_flat_room_stays(void **state)
+{
+    (void)state;
+    for (int C = 3; C <= 5; C++)
+        for (int R = 3; R <= 5; R++) {
+            hol_room st[4 * 25 * 25];
+            int n = 1, head = 0;
+            assert_int_equal(hol_room_start_in(4, C, R, &st[0]), HOL_OK);
+            hol_tile seen[25];
+            int nseen = 1;
+            seen[0] = st[0].tile;
+            while (head < n) {
+                for (int d = 0; d < 4; d++) {
+                    hol_room r = st[head];
+                    if (hol_room_step(&r, d))
+                        continue;
+                    int known = 0;
+                    for (int i = 0; i < n && !known; i++)
+                        known = room_same(&st[i], &r);
+                    if (known)
+                        continue;
+                    assert_true(n < 4 * 25 * 25);
+                    st[n++] = r;
+                    /* the tile is the cell's: its offset from the start */
+                    uint8_t walk[16];
+                    int k = 0;
+                    for (int c = C / 2; c < r.col; c++)
+                        walk[k++] = HOL_DIR_E;
+                    for (int c = C / 2; c > r.col; c--)
+                        walk[k++] = HOL_DIR_W;
+                    for (int w = R / 2; w < r.row; w++)
+                        walk[k++] = HOL_DIR_S;
+                    for (int w = R / 2; w > r.row; w--)
+                        walk[k++] = HOL_DIR_N;
+                    hol_tile want;
+                    assert_int_equal(hol_tile_from_walk_q(4, walk, (size_t)k, &want, NULL), HOL_OK);
+                    assert_true(hol_tile_eq(r.tile, want));
+                    int fresh = 1;
+                    for (int i = 0; i < nseen; i++)
+                        fresh &= !hol_tile_eq(seen[i], r.tile);
+                    if (fresh)
+                        seen[nseen++] = r.tile;
+                }
+                head++;
+            }
+            assert_int_equal(nseen, C * R);
+        }
+}
+
+static void test_option_text(void **state)
+{
+    (void)state;
+    int q = 0, c = 0, r = 0;
+    assert_int_equal(hol_room_parse_tiling("4,6", 3, &q), HOL_OK);
+    assert_int_equal(q, 6);
+    assert_int_equal(hol_room_parse_tiling("{4,8}", 5, &q), HOL_OK);
+    assert_int_equal(q, 8);
+    static const char *const bad_syntax[] = {"", "4", "4,", ",5", "4,5,", "4;5", "{4,5", "4,5}",
+                                             " 4,5", "4,5 ", "4,0005", "4,x", "4,5\n"};
+    for (size_t i = 0; i < sizeof bad_syntax / sizeof *bad_syntax; i++)
+        assert_int_equal(hol_room_parse_tiling(bad_syntax[i], strlen(bad_syntax[i]), &q),
+                         HOL_EPARSE);
+    static const char *const bad_range[] = {"4,3", "4,9", "3,5", "5,4", "4,10", "4,0"};
+    for (size_t i = 0; i < sizeof bad_range / sizeof *bad_range; i++)
+        assert_int_equal(hol_room_parse_tiling(bad_range[i], strlen(bad_range[i]), &q), HOL_EARG);
+    assert_int_equal(hol_room_parse_tiling("4,5\0", 4, &q), HOL_EPARSE);
+    assert_int_equal(q, 8);
+    assert_int_equal(hol_room_parse_size("4x5", 3, &c, &r), HOL_OK);
+    assert_int_equal(c, 4);
+    assert_int_equal(r, 5);
+    assert_int_equal(hol_room_parse_size("3X3", 3, &c, &r), HOL_OK);
+    assert_int_equal(hol_room_parse_size("2x2", 3, &c, &r), HOL_EARG);
+    assert_int_equal(hol_room_parse_size("6x3", 3, &c, &r), HOL_EARG);
+    assert_int_equal(hol_room_parse_size("3x", 2, &c, &r), HOL_EPARSE);
+    assert_int_equal(hol_room_parse_size("3*3", 3, &c, &r), HOL_EPARSE);
+    assert_int_equal(hol_room_parse_size("3x3x3", 5, &c, &r), HOL_EPARSE);
+    assert_int_equal(c, 3);
+}
+
+/* Coordinates of every tiling against its model: frames, positions,
+ * angles and distances (Euclidean in {4,4}). */
+static void test_tilings_hyper(void **state)
+{
+    (void)state;
+    for (int q = 4; q <= 8; q++) {
+        model_use_tiling(q);
+        assert_true(fabs(hol_hyper_edge_q(q) - model_edge()) < 1e-15);
+        for (int iter = 0; iter < 500; iter++) {
+            hol_tile a = random_tile_q(q, (int)(rng() % 6));
+            hol_tile b = random_tile_q(q, (int)(rng() % 6));
+            int north = (int)(rng() % 4);
+            double m[9], p[3], ang, dist;
+            assert_int_equal(hol_hyper_frame(a, north, b, m), HOL_OK);
+            model_mat want = model_mul(model_inv(model_mul(tile_frame(a), model_rot(north))),
+                                       tile_frame(b));
+            for (int i = 0; i < 9; i++)
+                assert_true(fabs(m[i] - want.m[i]) < 1e-9 * (1 + fabs(want.m[8])));
+            assert_int_equal(hol_hyper_pos(a, north, b, p, &ang, &dist), HOL_OK);
+            double x = want.m[2], y = want.m[5];
+            if (q == 4)
+                assert_true(fabs(dist - sqrt(x * x + y * y)) < 1e-9);
+            else
+                assert_true(fabs(cosh(dist) - want.m[8]) < 1e-9 * want.m[8]);
+            if (dist > 1e-9)
+                assert_true(fabs(remainder(ang - atan2(-x, y), 2 * acos(-1.0))) < 1e-9);
+        }
+    }
+    model_use_tiling(5);
+    assert_true(hol_hyper_edge_q(3) == 0.0);
+    double m[9];
+    assert_int_equal(hol_hyper_frame(hol_tile_origin_q(6), 0, hol_tile_origin(), m), HOL_EARG);
+}
+
+/* The tiling is part of the word: {4,5} words are as before, the others
+ * carry Q, tiles of two tilings never meet, and the reach is 59. */
+static void test_tilings_words(void **state)
+{
+    (void)state;
+    hol_tile o5 = hol_tile_origin_q(5), t, u;
+    assert_true(hol_tile_eq(o5, hol_tile_origin()));
+    assert_int_equal(o5.bits[0] | o5.bits[1], 0);
+    assert_int_equal(hol_tile_q(o5), 5);
+    assert_int_equal(hol_tile_reach(5), HOL_TILE_MAX_DIST);
+    for (int q = 4; q <= 8; q++) {
+        hol_tile o = hol_tile_origin_q(q);
+        assert_int_equal(hol_tile_q(o), q);
+        assert_int_equal(hol_tile_dist0(o), 0);
+        assert_int_equal(hol_tile_reach(q), q == 5 ? 60 : 59);
+        assert_int_equal(hol_tile_parse_q(q, "Nf", -1, &t), HOL_OK);
+        assert_int_equal(hol_tile_q(t), q);
+        char buf[HOL_TILE_ADDR_MAX];
+        hol_tile_print(t, buf);
+        assert_string_equal(buf, "Nf");
+        assert_int_equal(hol_tile_count_at(q, 1), 4);
+        assert_int_equal(hol_tile_count_at(q, 2), q == 4 ? 8 : 12);
+        if (q == 5)
+            continue;
+        assert_false(hol_tile_eq(o, o5));
+        assert_int_equal(hol_tile_dist(o, o5), -1);
+        assert_int_equal(hol_tile_relative(o, 0, o5, &u, NULL), HOL_EARG);
+        /* the longest address, and one letter more */
+        char s[64];
+        s[0] = 'N';
+        memset(s + 1, 'f', 58);
+        s[59] = '\0';
+        assert_int_equal(hol_tile_parse_q(q, s, -1, &t), HOL_OK);
+        assert_int_equal(hol_tile_q(t), q);
+        assert_int_equal(hol_tile_dist0(t), 59);
+        assert_int_equal(hol_tile_step(t, HOL_TURN_F, &u, NULL), HOL_ERANGE);
+        assert_int_equal(hol_tile_step(t, HOL_TURN_B, &u, NULL), HOL_OK);
+        assert_int_equal(hol_tile_dist0(u), 58);
+        assert_int_equal(hol_tile_q(u), q);
+        s[59] = 'f';
+        s[60] = '\0';
+        assert_int_equal(hol_tile_parse_q(q, s, -1, &t), HOL_ERANGE);
+    }
+    assert_int_equal(hol_tile_parse_q(3, "O", -1, &t), HOL_EARG);
+    assert_int_equal(hol_tile_parse_q(9, "O", -1, &t), HOL_EARG);
+    hol_tile bad = hol_tile_origin_q(9);
+    assert_int_equal(hol_tile_q(bad), 0);
+    assert_int_equal(hol_tile_step(bad, 0, &t, NULL), HOL_EARG);
+    /* an unknown tiling code is no tile */
+    bad = hol_tile_origin();
+    bad.bits[1] |= UINT64_C(5) << 54; /* Q = 5 written as a code */
+    assert_int_equal(hol_tile_q(bad), 0);
+    assert_int_equal(hol_tile_step(bad, 0, &t, NULL), HOL_EARG);
+    /* walks: NESW closes in the flat grid, not in {4,6} */
+    uint8_t nesw[4] = {HOL_DIR_N, HOL_DIR_E, HOL_DIR_S, HOL_DIR_W};
+    int orient;
+    assert_int_equal(hol_tile_from_walk_q(4, nesw, 4, &t, &orient), HOL_OK);
+    assert_true(hol_tile_eq(t, hol_tile_origin_q(4)));
+    assert_int_equal(hol_tile_from_walk_q(6, nesw, 4, &t, &orient), HOL_OK);
+    assert_int_equal(hol_tile_dist0(t), 2); /* 4 of the 6 tiles round a vertex */
+    /* and the flat grid's ties between branches go to the left one */
+    assert_int_equal(hol_tile_resolve_q(4, "Nl", -1, &t), HOL_OK);
+    assert_int_equal(hol_tile_parse_q(4, "Wr", -1, &u), HOL_OK);
+    assert_true(hol_tile_eq(t, u));
+    assert_int_equal(hol_tile_parse_q(4, "Nl", -1, &t), HOL_ENOTCANON);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -614,6 +1057,15 @@ int main(void)
         cmocka_unit_test(test_reach),
         cmocka_unit_test(test_far_consistency),
         cmocka_unit_test(test_hyperboloid),
+        cmocka_unit_test(test_tilings_words),
+        cmocka_unit_test(test_tilings_addresses),
+        cmocka_unit_test(test_tilings_neighbours),
+        cmocka_unit_test(test_tilings_relative),
+        cmocka_unit_test(test_tilings_far),
+        cmocka_unit_test(test_tilings_hyper),
+        cmocka_unit_test(test_rooms_sizes),
+        cmocka_unit_test(test_flat_room_stays),
+        cmocka_unit_test(test_option_text),
     };
     return cmocka_run_group_tests_name("tile", tests, setup, teardown);
 }

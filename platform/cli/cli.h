@@ -44,6 +44,14 @@ size_t cli_parse_count(const char *s);
 int cli_budget_option(const char *cmd, int argc, char **argv, int *i,
                       size_t *out_budget);
 
+/* The geometry options (SPEC 7): "--tiling 4,Q" (or --tiling=4,Q) into *q
+ * and, when cols is not NULL, "--room CxR" into *cols and *rows (a command
+ * without a room passes NULL: --room is then not its option). Returns 1
+ * (taken, *i advanced past the value), 0 (another argument) or -1 (a bad
+ * value, reported for cmd as one line). */
+int cli_geometry_option(const char *cmd, int argc, char **argv, int *i, int *q, int *cols,
+                        int *rows);
+
 /* An unsigned 64-bit number, decimal or 0x hex (a leading 0 is not octal;
  * no sign): seeds of every command, and other numbers. 1 ok, 0 bad. Every
  * command's seed defaults to CLI_SEED_DEFAULT. */

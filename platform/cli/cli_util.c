@@ -1,4 +1,5 @@
 #define _POSIX_C_SOURCE 200809L
+#include "../../core/hol_room.h"
 #include "cli.h"
 
 #include "../../core/hol_text.h"
@@ -270,6 +271,47 @@ static size_t cli__decimal_len(const char *p)
             i = j;
     }
     return i;
+}
+
+/* The value of option `name` at argv[*i] ("--name V" or "--name=V"), or
+ * NULL (not this option; *found 0). A missing value: *found 1, NULL. */
+static const char *cli__value(const char *name, int argc, char **argv, int *i, int *found)
+{
+    const char *a = argv[*i];
+    size_t n = strlen(name);
+    *found = 0;
+    if (strncmp(a, name, n) || (a[n] != '\0' && a[n] != '='))
+        return NULL;
+    *found = 1;
+    if (a[n] == '=')
+        return a + n + 1;
+    return *i + 1 < argc ? argv[++*i] : NULL;
+}
+
+int cli_geometry_option(const char *cmd, int argc, char **argv, int *i, int *q, int *cols,
+                        int *rows)
+{
+    int found;
+    const char *v = cli__value("--tiling", argc, argv, i, &found);
+    if (found) {
+        if (!v || hol_room_parse_tiling(v, strlen(v), q)) {
+            cli_error(cmd, 0, "--tiling needs 4,Q with Q from 4 to 8 (the tiling {4,Q}), not '%.40s'",
+                      v ? v : "");
+            return -1;
+        }
+        return 1;
+    }
+    if (!cols)
+        return 0;
+    v = cli__value("--room", argc, argv, i, &found);
+    if (!found)
+        return 0;
+    if (!v || hol_room_parse_size(v, strlen(v), cols, rows)) {
+        cli_error(cmd, 0, "--room needs CxR with C and R from 3 to 5 (cells), not '%.40s'",
+                  v ? v : "");
+        return -1;
+    }
+    return 1;
 }
 
 int cli_parse_doubles(const char *s, double *out, int n)

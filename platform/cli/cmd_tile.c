@@ -7,7 +7,7 @@
 #include "cli.h"
 
 static const char *const tile_usage =
-    "usage: holonomy tile walk|dist\n"
+    "usage: holonomy tile walk|dist [--tiling 4,Q]\n"
     "\n"
     "  tile walk   read lines of room steps (N, E, S, W; '-' or an empty line\n"
     "              for none), each a free walk from the start, and print per\n"
@@ -15,19 +15,24 @@ static const char *const tile_usage =
     "  tile dist   read lines 'A B' of two tile addresses and print per line\n"
     "              the fewest steps between the two tiles\n"
     "\n"
-    "Addresses: O, or a branch N/E/S/W followed by f/l/r (SPEC section 3).\n"
-    "Tiles reach distance 60 from O; a walk that goes farther is bad input.\n"
+    "  --tiling 4,Q   the square tiling {4,Q}, Q squares round every vertex,\n"
+    "                 Q from 4 (the flat grid) to 8; default 4,5\n"
+    "\n"
+    "Addresses: O, or a branch N/E/S/W followed by f/l/r (SPEC sections 3\n"
+    "and 7): each tile's leftmost shortest walk from O. Tiles reach distance\n"
+    "60 from O in {4,5} and 59 in the other tilings; a walk that goes farther\n"
+    "is bad input.\n"
     "Exit status: 0 ok, 1 output error, 2 bad input (one line on stderr).\n";
 
 /* One line of `tile walk`: a free walk from the start. */
 static int walk_line(void *ctx, long lineno, char *s, size_t len)
 {
     const char *cmd = "tile walk";
-    (void)ctx;
+    int q = *(const int *)ctx;
     cli_trim(&s, &len);
     if (len == 1 && s[0] == '-')
         len = 0;
-    hol_tile t = hol_tile_origin();
+    hol_tile t = hol_tile_origin_q(q);
     int orient = 0;
     for (size_t i = 0; i < len; i++) {
         int d = hol_dir_from_char((unsigned char)s[i]), arr;
@@ -40,7 +45,7 @@ static int walk_line(void *ctx, long lineno, char *s, size_t len)
             cli_error(cmd, lineno,
                       "step %zu goes beyond distance %d from O, the reach of "
                       "tile words",
-                      i + 1, HOL_TILE_MAX_DIST);
+                      i + 1, hol_tile_reach(q));
             return CLI_EXIT_USAGE;
         }
         orient = (arr - d) & 3;
@@ -52,10 +57,10 @@ static int walk_line(void *ctx, long lineno, char *s, size_t len)
 }
 
 /* Parse one address field; on failure report it and return nonzero. */
-static int parse_addr(const char *cmd, long lineno, const char *s, size_t len,
+static int parse_addr(const char *cmd, long lineno, int q, const char *s, size_t len,
                       hol_tile *out)
 {
-    hol_err err = hol_tile_parse(s, (ptrdiff_t)len, out);
+    hol_err err = hol_tile_parse_q(q, s, (ptrdiff_t)len, out);
     if (!err)
         return 0;
     char shown[48];
@@ -65,7 +70,7 @@ static int parse_addr(const char *cmd, long lineno, const char *s, size_t len,
     if (err == HOL_ENOTCANON) {
         hol_tile t;
         char canon[HOL_TILE_ADDR_MAX];
-        if (!hol_tile_resolve(s, (ptrdiff_t)len, &t)) {
+        if (!hol_tile_resolve_q(q, s, (ptrdiff_t)len, &t)) {
             hol_tile_print(t, canon);
             cli_error(cmd, lineno,
                       "'%s' is not a canonical address (that walk reaches %s)",
@@ -75,7 +80,7 @@ static int parse_addr(const char *cmd, long lineno, const char *s, size_t len,
         }
     } else if (err == HOL_ERANGE) {
         cli_error(cmd, lineno, "'%s' is longer than %d letters, the reach of "
-                  "tile words", shown, HOL_TILE_MAX_DIST);
+                  "tile words", shown, hol_tile_reach(q));
     } else {
         cli_error(cmd, lineno,
                   "'%s' is not an address (O, or N/E/S/W then f/l/r)", shown);
@@ -90,7 +95,7 @@ static int dist_line(void *ctx, long lineno, char *s, size_t len)
     char *f[2];
     size_t fl[2];
     hol_tile a, b;
-    (void)ctx;
+    int q = *(const int *)ctx;
     if (memchr(s, '\0', len)) {
         cli_error(cmd, lineno, "line holds a NUL byte");
         return CLI_EXIT_USAGE;
@@ -99,8 +104,8 @@ static int dist_line(void *ctx, long lineno, char *s, size_t len)
         cli_error(cmd, lineno, "expected two addresses 'A B'");
         return CLI_EXIT_USAGE;
     }
-    if (parse_addr(cmd, lineno, f[0], fl[0], &a) ||
-        parse_addr(cmd, lineno, f[1], fl[1], &b))
+    if (parse_addr(cmd, lineno, q, f[0], fl[0], &a) ||
+        parse_addr(cmd, lineno, q, f[1], fl[1], &b))
         return CLI_EXIT_USAGE;
     printf("%d\n", hol_tile_dist(a, b));
     return CLI_EXIT_OK;
@@ -112,15 +117,32 @@ int cli_cmd_tile(int argc, char **argv)
         fputs(tile_usage, stdout);
         return cli_finish_output("tile");
     }
-    if (argc == 2 && !strcmp(argv[1], "walk"))
-        return cli_for_each_line("tile walk", walk_line, NULL);
-    if (argc == 2 && !strcmp(argv[1], "dist"))
-        return cli_for_each_line("tile dist", dist_line, NULL);
-    if (argc < 2)
+    int q = HOL_TILING_DEFAULT_Q, npos = 0;
+    const char *pos[2] = {NULL, NULL};
+    for (int i = 1; i < argc; i++) {
+        int g = cli_geometry_option("tile", argc, argv, &i, &q, NULL, NULL);
+        if (g < 0)
+            return CLI_EXIT_USAGE;
+        if (g > 0)
+            continue;
+        if (npos == 2 || (argv[i][0] == '-' && argv[i][1] != '\0')) {
+            if (argv[i][0] == '-')
+                cli_error("tile", 0, "unknown option '%.40s'; see --help", argv[i]);
+            else
+                cli_error("tile", 0, "'%s' takes no arguments; see --help", pos[0]);
+            return CLI_EXIT_USAGE;
+        }
+        pos[npos++] = argv[i];
+    }
+    if (npos == 1 && !strcmp(pos[0], "walk"))
+        return cli_for_each_line("tile walk", walk_line, &q);
+    if (npos == 1 && !strcmp(pos[0], "dist"))
+        return cli_for_each_line("tile dist", dist_line, &q);
+    if (npos == 0)
         cli_error("tile", 0, "missing subcommand (walk or dist); see --help");
-    else if (strcmp(argv[1], "walk") && strcmp(argv[1], "dist"))
-        cli_error("tile", 0, "unknown subcommand '%.40s'; see --help", argv[1]);
+    else if (strcmp(pos[0], "walk") && strcmp(pos[0], "dist"))
+        cli_error("tile", 0, "unknown subcommand '%.40s'; see --help", pos[0]);
     else
-        cli_error("tile", 0, "'%s' takes no arguments; see --help", argv[1]);
+        cli_error("tile", 0, "'%s' takes no arguments; see --help", pos[0]);
     return CLI_EXIT_USAGE;
 }
