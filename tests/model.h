@@ -192,7 +192,7 @@ static int model_bfs_run(model_bfs *b, int max_dist)
     memset(b, 0, sizeof *b);
     b->max_dist = max_dist;
     b->cap = 1;
-    for (int d = 1, n = 4; d <= max_dist; d++, n *= 3)
+    for (int d = 1, n = 4; d <= max_dist && b->cap < 4000000; d++, n *= 3)
         b->cap += n; /* 4 * 3^(d - 1) at distance d: a bound */
     if (b->cap > 4000000)
         b->cap = 4000000;
