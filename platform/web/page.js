@@ -29,6 +29,7 @@
     if (canvas.width !== w || canvas.height !== h) { canvas.width = w; canvas.height = h; }
   }
   window.addEventListener('resize', resize);
+  if (window.ResizeObserver) new ResizeObserver(resize).observe(canvas); // the bar wraps
   resize();
 
   // ---- touch buttons ----
@@ -133,9 +134,14 @@
       }
     }
   };
-  // leaving the page ends the attempt in play ('aborted') and keeps the files
+  // leaving the page ends the attempt in play ('aborted') and keeps the
+  // files: what IndexedDB has not committed yet goes to the store's journal
   window.addEventListener('pagehide', function () {
     if (Module._hol_web_abort) Module._hol_web_abort();
+    window.holonomyStore.journal(true);
+  });
+  document.addEventListener('visibilitychange', function () {
+    window.holonomyStore.journal(document.hidden);
   });
   $('vr').addEventListener('click', function () {
     Module.holXR.enter().catch(function (e) { status('VR failed: ' + e.message); });

@@ -1,45 +1,94 @@
 // store.js - the browser's folder of named byte streams behind the web
 // sink (platform/web/hol_web_sink.c, core/hol_sink.h): the session's logs
-// and recordings, kept in IndexedDB so a reload or a closed tab loses
-// nothing that was flushed, and read back at the next load (recovery of an
-// attempt a closed tab left unfinished happens in the session).
+// and recordings, kept in IndexedDB so that a reload or a closed tab loses
+// nothing, read back at the next load (the session itself finishes an
+// attempt a closed tab left unfinished).
 //
 // In memory every stream is a list of byte chunks (what the page offers for
 // download). IndexedDB holds two object stores: `names` (name -> {id}) and
-// `chunks` ([id, seq] -> bytes). Each change is one readwrite transaction
-// made at once; IndexedDB runs transactions on the same stores in the order
-// they were made, so the database always holds some prefix of the changes.
-// flush() hands the bytes written since the last flush to IndexedDB; a tab
-// closed in the milliseconds before that transaction commits can lose them
-// (IndexedDB has no synchronous commit). rename() is one transaction:
-// atomic. Without IndexedDB (some private modes) the store lives in memory
-// only and `persistent` is false.
+// `chunks` ([id, seq] -> bytes). Every change (open, flush, rename, remove)
+// is one transaction of blind writes (put or delete of fixed keys), made at
+// once; IndexedDB runs transactions on the same stores in the order they
+// were made, so the database always holds a prefix of the changes, and a
+// rename is atomic.
+//
+// IndexedDB commits asynchronously, so the changes not yet committed when
+// the page goes away (pagehide, or hidden) are also written, synchronously,
+// to localStorage as a journal; the next load applies the journal to the
+// database before reading it. Blind writes replayed in order give the same
+// end state whichever prefix had committed, so a reload or a closed tab
+// loses nothing the session handed over. Without IndexedDB (some private
+// modes) the store lives in memory only and `persistent` is false; a
+// journal too large for localStorage's quota is lost (why() says so).
 'use strict';
 
 (function () {
-  var files = new Map(); // name -> {id, parts: [Uint8Array], size, pending: []}
+  var files = new Map(); // name -> {id, parts: [Uint8Array], size, pending: [], seq}
   var handles = [];      // open handles -> file
   var db = null, nextId = 1, failure = '';
+  var uncommitted = [];  // transactions (op lists) made and not yet complete
+  var journaled = false; // the page is hidden or going: keep the journal current
+  var JOURNAL = 'holonomy-journal';
 
-  function tx(fn) {
+  // Ops: ['name', name, id] ['unname', name] ['chunk', id, seq, bytes]
+  // ['drop', id] ['clear']
+  function apply(names, chunks, op) {
+    if (op[0] === 'name') names.put({ id: op[2] }, op[1]);
+    else if (op[0] === 'unname') names.delete(op[1]);
+    else if (op[0] === 'chunk') chunks.put(op[3], [op[1], op[2]]);
+    else if (op[0] === 'drop') chunks.delete(IDBKeyRange.bound([op[1], 0], [op[1], Infinity]));
+    else if (op[0] === 'clear') { names.clear(); chunks.clear(); }
+  }
+
+  function commit(ops) {
     if (!db) return;
+    uncommitted.push(ops);
     try {
       var t = db.transaction(['names', 'chunks'], 'readwrite');
+      t.oncomplete = function () {
+        var i = uncommitted.indexOf(ops);
+        if (i >= 0) uncommitted.splice(i, 1);
+        if (journaled) writeJournal();
+      };
       t.onerror = function () { failure = String(t.error); };
-      fn(t.objectStore('names'), t.objectStore('chunks'));
+      var n = t.objectStore('names'), c = t.objectStore('chunks');
+      ops.forEach(function (op) { apply(n, c, op); });
     } catch (e) {
       failure = String(e);
     }
+    if (journaled) writeJournal();
   }
 
-  function dropChunks(chunks, id) {
-    chunks.delete(IDBKeyRange.bound([id, 0], [id, Infinity]));
+  // The uncommitted changes, in order, to localStorage (or none there).
+  function writeJournal() {
+    try {
+      var ops = [];
+      uncommitted.forEach(function (t) { ops = ops.concat(t); });
+      if (!ops.length) { localStorage.removeItem(JOURNAL); return; }
+      localStorage.setItem(JOURNAL, JSON.stringify(ops.map(function (op) {
+        return op[0] === 'chunk' ? ['chunk', op[1], op[2], b64(op[3])] : op;
+      })));
+    } catch (e) {
+      failure = 'the journal did not fit in localStorage: ' + e;
+    }
   }
 
   function concat(parts, size) {
     var out = new Uint8Array(size), at = 0;
     parts.forEach(function (p) { out.set(p, at); at += p.length; });
     return out;
+  }
+
+  function b64(u8) {
+    var s = '';
+    for (var i = 0; i < u8.length; i += 32768) s += String.fromCharCode.apply(null, u8.subarray(i, i + 32768));
+    return btoa(s);
+  }
+
+  function unb64(s) {
+    var t = atob(s), u8 = new Uint8Array(t.length);
+    for (var i = 0; i < t.length; i++) u8[i] = t.charCodeAt(i);
+    return u8;
   }
 
   var store = {
@@ -57,10 +106,7 @@
         var old = f;
         f = { id: nextId++, parts: [], size: 0, pending: [], seq: 0 };
         files.set(name, f);
-        tx(function (names, chunks) {
-          names.put({ id: f.id }, name);
-          if (old) dropChunks(chunks, old.id);
-        });
+        commit(old ? [['name', name, f.id], ['drop', old.id]] : [['name', name, f.id]]);
       }
       handles.push(f);
       return handles.length - 1;
@@ -80,9 +126,8 @@
       if (!f.pending.length) return true;
       var n = 0;
       f.pending.forEach(function (p) { n += p.length; });
-      var data = concat(f.pending, n), seq = f.seq++, id = f.id;
+      commit([['chunk', f.id, f.seq++, concat(f.pending, n)]]);
       f.pending = [];
-      tx(function (names, chunks) { chunks.put(data, [id, seq]); });
       return !failure;
     },
     close: function (h) {
@@ -97,21 +142,16 @@
       var old = files.get(to);
       files.delete(from);
       files.set(to, f);
-      tx(function (names, chunks) {
-        names.delete(from);
-        names.put({ id: f.id }, to);
-        if (old && old !== f) dropChunks(chunks, old.id);
-      });
+      var ops = [['unname', from], ['name', to, f.id]];
+      if (old && old !== f) ops.push(['drop', old.id]);
+      commit(ops);
       return true;
     },
     remove: function (name) {
       var f = files.get(name);
       if (!f) return true;
       files.delete(name);
-      tx(function (names, chunks) {
-        names.delete(name);
-        dropChunks(chunks, f.id);
-      });
+      commit([['unname', name], ['drop', f.id]]);
       return true;
     },
     // up to n bytes from offset off, or null when there is no such stream
@@ -121,15 +161,19 @@
       var all = concat(f.parts, f.size);
       return all.subarray(Math.min(off, all.length), Math.min(off + n, all.length));
     },
-    put: function (name, bytes) {
-      var h = store.open(name, 0);
-      store.write(h, bytes);
-      store.close(h);
-    },
     clear: function () {
       files.clear();
       handles.length = 0;
-      tx(function (names, chunks) { names.clear(); chunks.clear(); });
+      commit([['clear']]);
+    },
+    // on (the page is hidden or going away): the changes IndexedDB has not
+    // confirmed go to localStorage at once (synchronously), and the journal
+    // follows every change and commit; off (visible again): dropped, as the
+    // page lives to see its transactions commit.
+    journal: function (on) {
+      journaled = !!on && !!db;
+      if (journaled) writeJournal();
+      else try { localStorage.removeItem(JOURNAL); } catch (e) { /* none */ }
     },
     // loads what earlier pages kept; resolves when the store is usable
     ready: new Promise(function (resolve) {
@@ -148,43 +192,64 @@
       req.onerror = function () { failure = String(req.error); resolve(false); };
       req.onsuccess = function () {
         db = req.result;
-        var t = db.transaction(['names', 'chunks'], 'readonly');
-        var named = [], chunks = [];
-        t.objectStore('names').openCursor().onsuccess = function (e) {
-          var c = e.target.result;
-          if (!c) return;
-          named.push([c.key, c.value.id]);
-          c.continue();
-        };
-        t.objectStore('chunks').openCursor().onsuccess = function (e) {
-          var c = e.target.result;
-          if (!c) return;
-          chunks.push([c.key, new Uint8Array(c.value)]); // in key order: [id, seq]
-          c.continue();
-        };
-        t.oncomplete = function () {
-          var byId = new Map();
-          named.forEach(function (nv) {
-            var f = { id: nv[1], parts: [], size: 0, pending: [], seq: 0 };
-            files.set(nv[0], f);
-            byId.set(f.id, f);
-            nextId = Math.max(nextId, f.id + 1);
-          });
-          chunks.forEach(function (kc) {
-            var f = byId.get(kc[0][0]);
-            if (f) {
-              f.parts.push(kc[1]);
-              f.size += kc[1].length;
-              f.seq = kc[0][1] + 1;
-            }
-            nextId = Math.max(nextId, kc[0][0] + 1);
-          });
-          store.persistent = true;
-          resolve(true);
-        };
-        t.onerror = function () { failure = String(t.error); resolve(false); };
+        replayJournal(function () { load(resolve); });
       };
     })
   };
+
+  // A journal left by the last page: applied before anything is read.
+  function replayJournal(done) {
+    var j = null;
+    try { j = JSON.parse(localStorage.getItem(JOURNAL) || 'null'); } catch (e) { j = null; }
+    if (!j || !j.length) { done(); return; }
+    var t = db.transaction(['names', 'chunks'], 'readwrite');
+    var n = t.objectStore('names'), c = t.objectStore('chunks');
+    j.forEach(function (op) { apply(n, c, op[0] === 'chunk' ? ['chunk', op[1], op[2], unb64(op[3])] : op); });
+    t.oncomplete = function () {
+      localStorage.removeItem(JOURNAL);
+      console.log('holonomy: ' + j.length + ' change(s) the last page left uncommitted applied from its journal');
+      done();
+    };
+    t.onerror = function () { failure = String(t.error); done(); };
+  }
+
+  function load(resolve) {
+    var t = db.transaction(['names', 'chunks'], 'readonly');
+    var named = [], chunks = [];
+    t.objectStore('names').openCursor().onsuccess = function (e) {
+      var c = e.target.result;
+      if (!c) return;
+      named.push([c.key, c.value.id]);
+      c.continue();
+    };
+    t.objectStore('chunks').openCursor().onsuccess = function (e) {
+      var c = e.target.result;
+      if (!c) return;
+      chunks.push([c.key, new Uint8Array(c.value)]); // in key order: [id, seq]
+      c.continue();
+    };
+    t.oncomplete = function () {
+      var byId = new Map();
+      named.forEach(function (nv) {
+        var f = { id: nv[1], parts: [], size: 0, pending: [], seq: 0 };
+        files.set(nv[0], f);
+        byId.set(f.id, f);
+        nextId = Math.max(nextId, f.id + 1);
+      });
+      chunks.forEach(function (kc) {
+        var f = byId.get(kc[0][0]);
+        if (f) {
+          f.parts.push(kc[1]);
+          f.size += kc[1].length;
+          f.seq = kc[0][1] + 1;
+        }
+        nextId = Math.max(nextId, kc[0][0] + 1);
+      });
+      store.persistent = true;
+      resolve(true);
+    };
+    t.onerror = function () { failure = String(t.error); resolve(false); };
+  }
+
   window.holonomyStore = store;
 })();

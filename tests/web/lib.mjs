@@ -54,9 +54,14 @@ const iwerSource = fs.readFileSync(path.join(here, 'node_modules/iwer/build/iwer
 
 // A page in its own browser context (its own IndexedDB), loaded and
 // playing. Collects the console, page errors and failed requests.
-export async function openPage(browser, url, { iwer = false, gamepad = false } = {}) {
+export async function openPage(browser, url, { iwer = false, gamepad = false, touch = false,
+  fail = false } = {}) {
   const ctx = await browser.createBrowserContext();
   const page = await ctx.newPage();
+  if (touch) {
+    const v = page.viewport();
+    await page.setViewport({ width: v.width, height: v.height, hasTouch: true });
+  }
   const cdp = await page.createCDPSession();
   await cdp.send('Emulation.setFocusEmulationEnabled', { enabled: true });
   const log = [], errors = [];
@@ -81,8 +86,9 @@ export async function openPage(browser, url, { iwer = false, gamepad = false } =
       }];
     });
   await page.goto(url);
-  await page.waitForFunction(() => /^Playing/.test(document.getElementById('status').textContent),
-    { timeout: 30000 });
+  // playing (or, where a failure is expected, the page's one line about it)
+  await page.waitForFunction((f) => (f ? /^Failed/ : /^Playing/)
+    .test(document.getElementById('status').textContent), { timeout: 30000 }, fail);
   const state = (what) => page.evaluate((w) => Module._hol_web_state(w), what);
   const until = async (fn, what, ms = 20000) => {
     const end = Date.now() + ms;
