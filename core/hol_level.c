@@ -529,6 +529,16 @@ hol_err hol_level_parse(const char *text, size_t len, hol_app_level *out, hol_le
     return HOL_OK;
 }
 
+hol_err hol_level_line_check(const char *s, size_t n, hol_level_err *err)
+{
+    static const hol__lp zero;
+    hol__lp p = zero;
+    p.L.cues = HOL_CUE_ALL;
+    p.err = err;
+    p.line = 1;
+    return hol__line(&p, s, n);
+}
+
 char *hol_level_err_format(const hol_level_err *err, long first, char *out, size_t cap)
 {
     int n = err->line > 0 ? snprintf(out, cap, "line %ld: %s", first + err->line - 1, err->msg)
@@ -578,6 +588,8 @@ hol_err hol_level_make(const char *name, size_t name_len, const char *text, size
     out->len = o;
     memcpy(out->name, name, name_len);
     out->name[name_len] = 0;
+    out->condition[0] = 0;
+    out->position = 0;
     hol_sha256(out->text, out->len, out->sha256);
     return HOL_OK;
 }

@@ -27,7 +27,7 @@
  *   line 0); the text is kept with LF line ends (CR LF read as LF, a last
  *   line without its newline given one), which is exactly what a recording
  *   carries and replays, and its SHA-256 (hol_sha256.h) is kept: the
- *   `sha256sum` of a file with LF line ends.
+ *   `sha256sum` of a file with LF line ends. A study's labels start empty.
  * - Pure: no allocation, no I/O, no globals.
  */
 #ifndef HOL_LEVEL_H
@@ -58,10 +58,21 @@ typedef struct hol_level {
     size_t len;
     uint8_t sha256[32];
     hol_app_level lvl;
+    /* a study's labels (core/hol_study.h): the condition it is played
+     * under and its position in the participant's order; "" and 0 outside
+     * a study (hol_level_make clears them) */
+    char condition[HOL_LEVEL_NAME_MAX];
+    int position;
 } hol_level;
 
 hol_err hol_level_parse(const char *text, size_t len, hol_app_level *out,
                         hol_level_err *err);
+
+/* One line of a level file checked on its own (a study's set line): its
+ * key, value count and values as hol_level_parse reads them; what needs
+ * the other lines (a mode's objectives, conflicts) is not checked. Errors
+ * as hol_level_parse's, with line 1. */
+hol_err hol_level_line_check(const char *s, size_t n, hol_level_err *err);
 
 /* Writes "line N: MESSAGE..." (N counted from first for line 1; just the
  * message when err->line is 0) into out; returns out. */

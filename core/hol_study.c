@@ -1,0 +1,558 @@
+/* hol_study.c - study files, counterbalancing squares and a condition's
+ * levels (see hol_study.h). */
+#include "hol_study.h"
+
+#include <stdarg.h>
+#include <stdio.h>
+#include <string.h>
+
+/* ---- errors ------------------------------------------------------------------ */
+
+static hol_err hol__fail(hol_level_err *e, hol_err code, long line, long other,
+                         const char *fmt, ...) __attribute__((format(printf, 5, 6)));
+
+static hol_err hol__fail(hol_level_err *e, hol_err code, long line, long other,
+                         const char *fmt, ...)
+{
+    if (e) {
+        memset(e, 0, sizeof *e);
+        e->code = code;
+        e->line = line;
+        e->other = other;
+        va_list ap;
+        va_start(ap, fmt);
+        vsnprintf(e->msg, sizeof e->msg, fmt, ap);
+        va_end(ap);
+    }
+    return code;
+}
+
+/* ---- lines ------------------------------------------------------------------- */
+
+static int hol__set_key(const hol_study *s, int c, const char *k, size_t kn);
+
+/* The parser's state. */
+typedef struct hol__sp {
+    hol_study *s;
+    hol_level_err *err;
+    long line, study_line, rule_line;
+    int cur; /* the condition being read, -1 before the first */
+} hol__sp;
+
+static int hol__blank(char c)
+{
+    return c == ' ' || c == '\t';
+}
+
+/* The next field of [*p, end): its start and length (0 at the end). */
+static size_t hol__field(const char **p, const char *end, const char **out)
+{
+    const char *s = *p;
+    while (s < end && hol__blank(*s))
+        s++;
+    *out = s;
+    while (s < end && !hol__blank(*s))
+        s++;
+    *p = s;
+    return (size_t)(s - *out);
+}
+
+static int hol__is(const char *w, size_t n, const char *word)
+{
+    return strlen(word) == n && !memcmp(w, word, n);
+}
+
+/* A NAME field into out: 1 ok. */
+static int hol__name(const char *w, size_t n, char out[HOL_REC_ID_MAX])
+{
+    if (n == 0 || n >= HOL_REC_ID_MAX)
+        return 0;
+    memcpy(out, w, n);
+    out[n] = 0;
+    return hol_rec_id_ok(out);
+}
+
+/* A line's one value (after its key): its start and length, or -1 after
+ * reporting a missing or second value. */
+static long hol__one(hol__sp *p, const char *key, const char *rest, const char *end,
+                     const char **out)
+{
+    size_t n = hol__field(&rest, end, out);
+    const char *more;
+    if (n == 0)
+        return hol__fail(p->err, HOL_EPARSE, p->line, 0, "'%s' needs a value", key), -1;
+    if (hol__field(&rest, end, &more))
+        return hol__fail(p->err, HOL_EPARSE, p->line, 0, "'%s' takes one value", key), -1;
+    return (long)n;
+}
+
+static hol_err hol__add_level(hol__sp *p, const char *w, size_t n)
+{
+    hol_study *s = p->s;
+    if (s->nlevels >= HOL_STUDY_MAX_LEVELS)
+        return hol__fail(p->err, HOL_ENOMEM, p->line, 0,
+                         "more than %d levels in all (a recording holds %d)",
+                         HOL_STUDY_MAX_LEVELS, HOL_STUDY_MAX_LEVELS);
+    if (n >= HOL_STUDY_PATH_MAX)
+        return hol__fail(p->err, HOL_ENOMEM, p->line, 0, "a level's path is longer than %d bytes",
+                         HOL_STUDY_PATH_MAX - 1);
+    hol_study_span *sp = &s->levels[s->nlevels++];
+    sp->off = (uint16_t)(w - s->text);
+    sp->len = (uint16_t)n;
+    sp->line = p->line;
+    if (p->cur >= 0)
+        s->conditions[p->cur].nlevels++;
+    else
+        s->npractice++;
+    return HOL_OK;
+}
+
+/* set KEY VALUE...: checked as a level line. */
+static hol_err hol__add_set(hol__sp *p, const char *rest, const char *end)
+{
+    hol_study *s = p->s;
+    while (rest < end && hol__blank(*rest))
+        rest++;
+    while (end > rest && hol__blank(end[-1]))
+        end--;
+    if (rest == end)
+        return hol__fail(p->err, HOL_EPARSE, p->line, 0, "'set' needs a level line (KEY VALUE...)");
+    hol_level_err le;
+    if (hol_level_line_check(rest, (size_t)(end - rest), &le))
+        return hol__fail(p->err, le.code, p->line, 0, "set: %s", le.msg);
+    if (s->nsets >= HOL_STUDY_MAX_SETS)
+        return hol__fail(p->err, HOL_ENOMEM, p->line, 0, "more than %d set lines",
+                         HOL_STUDY_MAX_SETS);
+    hol_study_span *sp = &s->sets[s->nsets++];
+    sp->off = (uint16_t)(rest - s->text);
+    sp->len = (uint16_t)(end - rest);
+    sp->line = p->line;
+    if (p->cur >= 0)
+        s->conditions[p->cur].nsets++;
+    else
+        s->nglobal++;
+    return HOL_OK;
+}
+
+static hol_err hol__condition(hol__sp *p, const char *w, size_t n)
+{
+    hol_study *s = p->s;
+    if (s->nconditions >= HOL_STUDY_MAX_CONDITIONS)
+        return hol__fail(p->err, HOL_ENOMEM, p->line, 0, "more than %d conditions",
+                         HOL_STUDY_MAX_CONDITIONS);
+    hol_study_condition *c = &s->conditions[s->nconditions];
+    memset(c, 0, sizeof *c);
+    if (!hol__name(w, n, c->name))
+        return hol__fail(p->err, HOL_EPARSE, p->line, 0,
+                         "condition '%.*s' is not 1..63 letters, digits, '.', '_', '-'",
+                         (int)(n < 40 ? n : 40), w);
+    if (!strcmp(c->name, HOL_STUDY_PRACTICE))
+        return hol__fail(p->err, HOL_EARG, p->line, 0,
+                         "'practice' names the practice levels, not a condition");
+    for (int k = 0; k < s->nconditions; k++)
+        if (!strcmp(s->conditions[k].name, c->name))
+            return hol__fail(p->err, HOL_EARG, p->line, s->conditions[k].line,
+                             "condition '%s' is given twice", c->name);
+    c->line = p->line;
+    c->first_level = s->nlevels;
+    c->first_set = s->nsets;
+    p->cur = s->nconditions++;
+    return HOL_OK;
+}
+
+/* study NAME, counterbalance RULE: once, before the first condition. */
+static hol_err hol__header(hol__sp *p, int is_study, const char *w, size_t n)
+{
+    static const char *const rules[4] = {"williams", "latin", "complete", "fixed"};
+    const char *key = is_study ? "study" : "counterbalance";
+    long *seen = is_study ? &p->study_line : &p->rule_line;
+    if (p->cur >= 0)
+        return hol__fail(p->err, HOL_EARG, p->line, 0, "'%s' comes before the first condition",
+                         key);
+    if (*seen)
+        return hol__fail(p->err, HOL_EARG, p->line, *seen, "a second '%s' line", key);
+    *seen = p->line;
+    if (is_study) {
+        if (!hol__name(w, n, p->s->name))
+            return hol__fail(p->err, HOL_EPARSE, p->line, 0,
+                             "study '%.*s' is not 1..63 letters, digits, '.', '_', '-'",
+                             (int)(n < 40 ? n : 40), w);
+        return HOL_OK;
+    }
+    for (int r = 0; r < 4; r++)
+        if (hol__is(w, n, rules[r])) {
+            p->s->rule = (hol_study_rule)r;
+            return HOL_OK;
+        }
+    return hol__fail(p->err, HOL_EPARSE, p->line, 0,
+                     "counterbalance '%.*s' is not williams, latin, complete or fixed",
+                     (int)(n < 30 ? n : 30), w);
+}
+
+/* One line [b, end) (no LF, CR dropped, no comment). */
+static hol_err hol__line(hol__sp *p, const char *b, const char *end)
+{
+    const char *rest = b, *key, *w;
+    size_t kn = hol__field(&rest, end, &key);
+    if (kn == 0)
+        return HOL_OK;
+    if (hol__is(key, kn, "set"))
+        return hol__add_set(p, rest, end);
+    static const char *const keys[5] = {"study", "counterbalance", "practice", "condition",
+                                        "level"};
+    int k = 0;
+    while (k < 5 && !hol__is(key, kn, keys[k]))
+        k++;
+    if (k == 5)
+        return hol__fail(p->err, HOL_EPARSE, p->line, 0,
+                         "unknown key '%.*s' (study, counterbalance, practice, condition, level, "
+                         "set)", (int)(kn < 20 ? kn : 20), key);
+    long n = hol__one(p, keys[k], rest, end, &w);
+    if (n < 0)
+        return p->err ? p->err->code : HOL_EPARSE;
+    if (k <= 1)
+        return hol__header(p, k == 0, w, (size_t)n);
+    if (k == 3)
+        return hol__condition(p, w, (size_t)n);
+    if (k == 2 && p->cur >= 0)
+        return hol__fail(p->err, HOL_EARG, p->line, 0,
+                         "'practice' comes before the first condition");
+    if (k == 4 && p->cur < 0)
+        return hol__fail(p->err, HOL_EARG, p->line, 0,
+                         "'level' belongs to a condition (before the first: 'practice')");
+    return hol__add_level(p, w, (size_t)n);
+}
+
+/* After the last line: a name, a condition, and a level for each. */
+static hol_err hol__finish(hol__sp *p)
+{
+    hol_study *s = p->s;
+    if (!p->study_line)
+        return hol__fail(p->err, HOL_EARG, 0, 0, "no 'study NAME' line");
+    if (s->nconditions == 0)
+        return hol__fail(p->err, HOL_EARG, 0, 0, "no 'condition NAME' line");
+    /* a condition without a level file plays one level of its set lines:
+     * the levels in all, counted in file order, must fit */
+    int total = s->nlevels;
+    for (int c = 0; c < s->nconditions; c++) {
+        if (s->conditions[c].nlevels)
+            continue;
+        if (++total > HOL_STUDY_MAX_LEVELS)
+            return hol__fail(p->err, HOL_ENOMEM, s->conditions[c].line, 0,
+                             "more than %d levels in all", HOL_STUDY_MAX_LEVELS);
+        if (!hol__set_key(s, c, "mode", 4))
+            return hol__fail(p->err, HOL_EARG, s->conditions[c].line, 0,
+                             "condition %s has neither a 'level' nor a 'set mode' line",
+                             s->conditions[c].name);
+    }
+    /* its entry (an empty path) keeps the levels in file order */
+    for (int c = s->nconditions - 1; c >= 0; c--) {
+        hol_study_condition *cd = &s->conditions[c];
+        if (cd->nlevels)
+            continue;
+        int at = cd->first_level;
+        memmove(&s->levels[at + 1], &s->levels[at],
+                (size_t)(s->nlevels - at) * sizeof s->levels[0]);
+        s->nlevels++;
+        s->levels[at] = (hol_study_span){0, 0, cd->line};
+        cd->nlevels = 1;
+        for (int j = c + 1; j < s->nconditions; j++)
+            s->conditions[j].first_level++;
+    }
+    return HOL_OK;
+}
+
+hol_err hol_study_parse(const char *text, size_t len, hol_study *out, hol_level_err *err)
+{
+    static const hol_study zero;
+    if (len > HOL_STUDY_TEXT_MAX)
+        return hol__fail(err, HOL_ENOMEM, 0, 0, "longer than %d bytes", HOL_STUDY_TEXT_MAX);
+    *out = zero;
+    memcpy(out->text, text, len);
+    hol__sp p = {out, err, 0, 0, 0, -1};
+    const char *s = out->text, *end = out->text + len;
+    hol_err e = HOL_OK;
+    while (!e && s < end) {
+        const char *nl = memchr(s, '\n', (size_t)(end - s));
+        const char *le = nl ? nl : end;
+        p.line++;
+        while (le > s && le[-1] == '\r')
+            le--;
+        const char *hash = memchr(s, '#', (size_t)(le - s));
+        if ((size_t)(le - s) > HOL_STUDY_LINE_MAX)
+            e = hol__fail(err, HOL_ENOMEM, p.line, 0, "longer than %d bytes", HOL_STUDY_LINE_MAX);
+        else if (memchr(s, 0, (size_t)(le - s)))
+            e = hol__fail(err, HOL_EPARSE, p.line, 0, "a NUL byte");
+        else
+            e = hol__line(&p, s, hash ? hash : le);
+        s = nl ? nl + 1 : end;
+    }
+    if (!e)
+        e = hol__finish(&p);
+    if (e)
+        *out = zero;
+    return e;
+}
+
+/* ---- squares ------------------------------------------------------------------ */
+
+uint64_t hol_study_rows(hol_study_rule rule, int n)
+{
+    if (n < 1 || n > HOL_STUDY_MAX_CONDITIONS)
+        return 0;
+    switch (rule) {
+    case HOL_STUDY_WILLIAMS: return n == 1 ? 1 : n % 2 ? 2 * (uint64_t)n : (uint64_t)n;
+    case HOL_STUDY_LATIN: return (uint64_t)n;
+    case HOL_STUDY_COMPLETE: {
+        uint64_t f = 1;
+        for (int k = 2; k <= n; k++)
+            f *= (uint64_t)k;
+        return f;
+    }
+    case HOL_STUDY_FIXED: return 1;
+    }
+    return 0;
+}
+
+/* Row `row` of every order, lexicographic (the factorial number system). */
+static void hol__permutation(int n, uint64_t row, int *out)
+{
+    int left[HOL_STUDY_MAX_CONDITIONS];
+    uint64_t f = 1;
+    for (int k = 0; k < n; k++)
+        left[k] = k;
+    for (int k = 2; k < n; k++)
+        f *= (uint64_t)k; /* (n-1)! */
+    for (int pos = 0; pos < n; pos++) {
+        int m = n - pos; /* conditions left */
+        uint64_t pick = m > 1 ? row / f : 0;
+        row = m > 1 ? row % f : 0;
+        out[pos] = left[pick];
+        memmove(&left[pick], &left[pick + 1], (size_t)(m - 1 - (int)pick) * sizeof left[0]);
+        if (m > 1)
+            f /= (uint64_t)(m - 1 > 0 ? m - 1 : 1);
+    }
+}
+
+hol_err hol_study_square(hol_study_rule rule, int n, uint64_t row, int *out)
+{
+    uint64_t rows = hol_study_rows(rule, n);
+    if (!rows || row >= rows)
+        return HOL_EARG;
+    if (rule == HOL_STUDY_COMPLETE) {
+        hol__permutation(n, row, out);
+        return HOL_OK;
+    }
+    int r = (int)(row % (uint64_t)n), mirror = row >= (uint64_t)n;
+    for (int j = 0; j < n; j++) {
+        int first = j; /* latin and fixed: 0, 1, ..., n-1 */
+        if (rule == HOL_STUDY_WILLIAMS)
+            first = j == 0 ? 0 : j % 2 ? (j + 1) / 2 : n - j / 2;
+        int v = rule == HOL_STUDY_FIXED ? first : (first + r) % n;
+        out[mirror ? n - 1 - j : j] = v;
+    }
+    return HOL_OK;
+}
+
+hol_err hol_study_order(const hol_study *s, uint64_t participant, int *out)
+{
+    uint64_t rows = hol_study_rows(s->rule, s->nconditions);
+    if (participant == 0 || rows == 0)
+        return HOL_EARG;
+    return hol_study_square(s->rule, s->nconditions, (participant - 1) % rows, out);
+}
+
+int hol_study_session(const hol_study *s, const int *order, int *out, int *out_cond,
+                      int *out_pos)
+{
+    int n = 0;
+    for (int i = 0; i < s->npractice; i++, n++)
+        out[n] = i, out_cond[n] = -1, out_pos[n] = 0;
+    for (int k = 0; k < s->nconditions; k++) {
+        const hol_study_condition *c = &s->conditions[order[k]];
+        for (int i = 0; i < c->nlevels; i++, n++)
+            out[n] = c->first_level + i, out_cond[n] = order[k], out_pos[n] = k + 1;
+    }
+    return n;
+}
+
+void hol_study_level_path(const hol_study *s, int i, char path[HOL_STUDY_PATH_MAX])
+{
+    const hol_study_span *sp = &s->levels[i];
+    memcpy(path, s->text + sp->off, sp->len);
+    path[sp->len] = 0;
+}
+
+int hol_study_level_condition(const hol_study *s, int i)
+{
+    for (int c = 0; c < s->nconditions; c++)
+        if (i >= s->conditions[c].first_level &&
+            i < s->conditions[c].first_level + s->conditions[c].nlevels)
+            return c;
+    return -1;
+}
+
+uint64_t hol_study_participant_number(const char *id)
+{
+    size_t n = strlen(id), b = n;
+    while (b > 0 && id[b - 1] >= '0' && id[b - 1] <= '9')
+        b--;
+    uint64_t v = 0;
+    for (size_t i = b; i < n; i++) {
+        v = v * 10 + (uint64_t)(id[i] - '0');
+        if (v > 1000000000u)
+            return 0;
+    }
+    return v;
+}
+
+/* ---- a condition's level ---------------------------------------------------------- */
+
+/* The key of a level line [b, e): its first field before any comment. */
+static size_t hol__key(const char *b, const char *e, const char **out)
+{
+    const char *hash = memchr(b, '#', (size_t)(e - b));
+    return hol__field(&b, hash ? hash : e, out);
+}
+
+static int hol__same_key(const hol_study *s, int a, int b)
+{
+    const char *k, *k2;
+    const hol_study_span *x = &s->sets[a], *y = &s->sets[b];
+    size_t n = hol__key(s->text + x->off, s->text + x->off + x->len, &k);
+    size_t n2 = hol__key(s->text + y->off, s->text + y->off + y->len, &k2);
+    return n == n2 && !memcmp(k, k2, n);
+}
+
+/* Is set line j in force for condition c: the condition's own, or the
+ * study's when the condition does not set the same key? */
+static int hol__in_force(const hol_study *s, int c, int j)
+{
+    const hol_study_condition *cd = &s->conditions[c];
+    if (j >= cd->first_set && j < cd->first_set + cd->nsets)
+        return 1;
+    if (j >= s->nglobal)
+        return 0;
+    for (int i = cd->first_set; i < cd->first_set + cd->nsets; i++)
+        if (hol__same_key(s, i, j))
+            return 0;
+    return 1;
+}
+
+/* Does a set line in force for condition c give key [k, k+kn)? */
+static int hol__set_key(const hol_study *s, int c, const char *k, size_t kn)
+{
+    for (int j = 0; j < s->nsets; j++) {
+        const char *k2;
+        const hol_study_span *o = &s->sets[j];
+        size_t n = hol__key(s->text + o->off, s->text + o->off + o->len, &k2);
+        if (hol__in_force(s, c, j) && n == kn && !memcmp(k, k2, n))
+            return 1;
+    }
+    return 0;
+}
+
+/* A condition's level text being composed: out (cap bytes), origin[k] the
+ * line that composed line k + 1 came from (> 0 the file's, < 0 the
+ * study's). */
+typedef struct hol__compose {
+    char *out;
+    size_t n, cap;
+    long *origin;
+    long nlines, max_lines;
+} hol__compose;
+
+static int hol__put_line(hol__compose *c, const char *s, size_t n, long origin)
+{
+    if (c->n + n + 1 > c->cap || c->nlines >= c->max_lines)
+        return 1;
+    memcpy(c->out + c->n, s, n);
+    c->n += n;
+    c->out[c->n++] = '\n';
+    c->origin[c->nlines++] = origin;
+    return 0;
+}
+
+/* The level file's lines but those a set line replaces, the note, the set
+ * lines in force. 1 when it does not fit. */
+static int hol__compose_text(const hol_study *s, int c, const char *file, size_t len,
+                             hol__compose *cp)
+{
+    const hol_study_condition *cd = &s->conditions[c];
+    long fl = 0;
+    for (const char *p = file, *end = file ? file + len : NULL; p && p < end;) {
+        const char *nl = memchr(p, '\n', (size_t)(end - p));
+        const char *le = nl ? nl : end, *k;
+        fl++;
+        size_t n = (size_t)(le - p);
+        while (n && p[n - 1] == '\r')
+            n--;
+        size_t kn = hol__key(p, p + n, &k);
+        if (!(kn && hol__set_key(s, c, k, kn)) && hol__put_line(cp, p, n, fl))
+            return 1;
+        p = nl ? nl + 1 : end;
+    }
+    int used = 0;
+    for (int j = 0; j < s->nsets; j++)
+        used += hol__in_force(s, c, j);
+    if (used) {
+        char note[160];
+        int n = snprintf(note, sizeof note, "# study %s, condition %s:", s->name, cd->name);
+        if (hol__put_line(cp, note, (size_t)n, -cd->line))
+            return 1;
+    }
+    for (int j = 0; j < s->nsets; j++)
+        if (hol__in_force(s, c, j) &&
+            hol__put_line(cp, s->text + s->sets[j].off, s->sets[j].len, -s->sets[j].line))
+            return 1;
+    return 0;
+}
+
+/* A level error's lines, of the composed text, as the file's or the
+ * study's. */
+static void hol__map_err(const hol__compose *cp, long cond_line, hol_level_err *err,
+                         int *in_study)
+{
+    long o = err->line > 0 && err->line <= cp->nlines ? cp->origin[err->line - 1]
+             : err->line > 0                           ? -cond_line
+                                                       : 0;
+    *in_study = o < 0;
+    err->line = o < 0 ? -o : o;
+    if (err->other > 0 && err->other <= cp->nlines) {
+        long m = cp->origin[err->other - 1];
+        err->other = (m < 0) == *in_study ? (m < 0 ? -m : m) : 0;
+    }
+}
+
+hol_err hol_study_make_level(const hol_study *s, int i, int position, const char *file,
+                             size_t len, const char *name, hol_level *out, hol_level_err *err,
+                             int *out_in_study)
+{
+    char buf[HOL_LEVEL_TEXT_MAX + 1];
+    long origin[HOL_LEVEL_TEXT_MAX / 2 + 2];
+    *out_in_study = 0;
+    if (i < 0 || i >= s->nlevels)
+        return hol__fail(err, HOL_EARG, 0, 0, "no level %d in the study", i);
+    int c = hol_study_level_condition(s, i);
+    const char *cname = c < 0 ? HOL_STUDY_PRACTICE : s->conditions[c].name;
+    if (!name)
+        name = cname;
+    hol__compose cp = {buf, 0, sizeof buf, origin, 0, (long)(sizeof origin / sizeof origin[0])};
+    if (c >= 0 && hol__compose_text(s, c, file, len, &cp)) {
+        *out_in_study = 1;
+        return hol__fail(err, HOL_ENOMEM, s->conditions[c].line, 0,
+                         "condition %s: its level with the set lines is longer than %d bytes",
+                         cname, HOL_LEVEL_TEXT_MAX);
+    }
+    const char *t = c >= 0 ? buf : file ? file : "";
+    size_t tl = c >= 0 ? cp.n : file ? len : 0;
+    hol_err e = hol_level_make(name, strlen(name), t, tl, out, err);
+    if (e) {
+        if (c >= 0)
+            hol__map_err(&cp, s->conditions[c].line, err, out_in_study);
+        return e;
+    }
+    snprintf(out->condition, sizeof out->condition, "%s", cname);
+    out->position = c < 0 ? 0 : position;
+    return HOL_OK;
+}
