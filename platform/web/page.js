@@ -140,6 +140,11 @@
     if (Module._hol_web_abort) Module._hol_web_abort();
     window.holonomyStore.journal(true);
   });
+  // a page restored from the back-forward cache had its session ended at
+  // pagehide: start afresh
+  window.addEventListener('pageshow', function (e) {
+    if (e.persisted) location.reload();
+  });
   document.addEventListener('visibilitychange', function () {
     window.holonomyStore.journal(document.hidden);
   });

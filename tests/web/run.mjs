@@ -131,6 +131,26 @@ await check('a reload loses nothing: the attempt in play is kept (aborted at pag
   await p.ctx.close();
 });
 
+await check('a level file chosen on the page plays at the next load, the participant in the logs', async () => {
+  const lv = path.join(testDir, 'my-flag.lvl');
+  fs.writeFileSync(lv, 'mode flag\nseed 9\nflag-distance 3\n');
+  const p = await openPage('?participant=P07');
+  const input = await p.page.$('#file');
+  await Promise.all([p.page.waitForNavigation({ timeout: 30000 }), input.uploadFile(lv)]);
+  await p.page.waitForFunction(() => /^Playing/.test(document.getElementById('status').textContent),
+    { timeout: 30000 });
+  const st = await p.page.evaluate(() => document.getElementById('status').textContent);
+  assert(st === 'Playing my-flag', 'status: ' + st);
+  const live = await p.until(async () => {
+    const names = await p.page.evaluate(() => window.holonomyStore.names());
+    const n = names.filter((x) => /^attempt-\d+\.live$/.test(x)).sort().pop();
+    return n && (await stored(p.page, n)).toString('utf8');
+  }, 'the attempt in play');
+  assert(/,P07,/.test(live) && /,my-flag,/.test(live) && /,flag,9,/.test(live), 'attempt row: ' + live.trim());
+  assert(!p.errors.length, 'errors: ' + p.errors.join('; '));
+  await p.ctx.close();
+});
+
 await check('a bad level file is refused with one line naming its line, and nothing plays', async () => {
   fs.writeFileSync(path.join(testDir, 'bad.lvl'), 'mode flag\nseed 5\nflag Nzz\n');
   const p = await openPage('?level=/test/bad.lvl', { fail: true });
