@@ -181,6 +181,100 @@ static hol_err main_item(hid_parser *p, unsigned tag, uint32_t data,
     return HOL_OK;
 }
 
+/* A main item: Input, Output, Feature (fields), Collection, End Collection. */
+static hol_err main_tag(hid_parser *p, unsigned tag, uint32_t u, hol_hid_field *fields,
+                        size_t cap, size_t *n)
+{
+    hol_err err = HOL_OK;
+    concat_last_page(p);
+    switch (tag) {
+    case 0x8: case 0x9: case 0xb:
+        err = main_item(p, tag, u, fields, cap, n);
+        break;
+    case 0xa: {
+        if (p->collections == COLLECTION_DEPTH)
+            return HOL_EPARSE;
+        /* the usage naming this collection (application) */
+        uint32_t cu = element_usage(p, 0);
+        uint32_t parent = p->collections ? p->app[p->collections - 1] : 0;
+        p->app[p->collections++] = (u & 0xff) == 1 ? cu : parent;
+        break;
+    }
+    case 0xc:
+        if (p->collections == 0)
+            return HOL_EPARSE;
+        p->collections--;
+        break;
+    default:
+        return HOL_EPARSE;
+    }
+    clear_locals(p);
+    return err;
+}
+
+/* A global item (u unsigned, s signed: the same data). */
+static hol_err global_tag(hid_parser *p, unsigned tag, uint32_t u, int64_t s)
+{
+    switch (tag) {
+    case 0x0: p->g.usage_page = u & 0xffffu; break;
+    case 0x1: p->g.logical_min = s; break;
+    case 0x2: p->g.logical_max = p->g.logical_min < 0 ? s : (int64_t)u; break;
+    case 0x3: p->g.physical_min = s; break;
+    case 0x4: p->g.physical_max = p->g.physical_min < 0 ? s : (int64_t)u; break;
+    case 0x5: case 0x6: break; /* unit exponent, unit */
+    case 0x7:
+        if (u > MAX_REPORT_SIZE)
+            return HOL_EPARSE;
+        p->g.report_size = u;
+        break;
+    case 0x8:
+        if (u == 0 || u > 255)
+            return HOL_EPARSE;
+        p->g.report_id = u;
+        p->has_ids = 1;
+        break;
+    case 0x9:
+        if (u > HOL_HID_MAX_ELEMENTS)
+            return HOL_EPARSE;
+        p->g.report_count = u;
+        break;
+    case 0xa:
+        if (p->depth == STACK_DEPTH)
+            return HOL_EPARSE;
+        p->stack[p->depth++] = p->g;
+        break;
+    case 0xb:
+        if (p->depth == 0)
+            return HOL_EPARSE;
+        p->g = p->stack[--p->depth];
+        break;
+    default:
+        return HOL_EPARSE;
+    }
+    return HOL_OK;
+}
+
+/* A local item: usages (a 4-byte one carries its page). */
+static hol_err local_tag(hid_parser *p, unsigned tag, uint32_t u, size_t dsize)
+{
+    switch (tag) {
+    case 0x0:
+        return add_usage(p, u, u, dsize == 4) ? HOL_EPARSE : HOL_OK;
+    case 0x1:
+        p->pend_min = u;
+        p->min_page = dsize == 4;
+        p->have_min = 1;
+        return try_range(p) ? HOL_EPARSE : HOL_OK;
+    case 0x2:
+        p->pend_max = u;
+        p->max_page = dsize == 4;
+        p->have_max = 1;
+        return try_range(p) ? HOL_EPARSE : HOL_OK;
+    default: /* designators, strings, delimiters: not used */
+        return HOL_OK;
+    }
+}
+
 hol_err hol_hid_desc_parse(const uint8_t *desc, size_t len,
                            hol_hid_field *fields, size_t cap,
                            size_t *out_count, int *out_has_ids)
@@ -214,94 +308,10 @@ hol_err hol_hid_desc_parse(const uint8_t *desc, size_t len,
                   : dsize == 4 ? (int64_t)(int32_t)u : 0;
         i += 1 + dsize;
         unsigned type = (prefix >> 2) & 3, tag = prefix >> 4;
-        if (type == 0) { /* main */
-            concat_last_page(&p);
-            switch (tag) {
-            case 0x8: case 0x9: case 0xb:
-                err = main_item(&p, tag, u, fields, cap, &n);
-                break;
-            case 0xa:
-                if (p.collections == COLLECTION_DEPTH)
-                    return HOL_EPARSE;
-                {
-                    /* the usage naming this collection (application) */
-                    uint32_t cu = element_usage(&p, 0);
-                    uint32_t parent = p.collections ? p.app[p.collections - 1] : 0;
-                    p.app[p.collections++] = (u & 0xff) == 1 ? cu : parent;
-                }
-                break;
-            case 0xc:
-                if (p.collections == 0)
-                    return HOL_EPARSE;
-                p.collections--;
-                break;
-            default:
-                return HOL_EPARSE;
-            }
-            clear_locals(&p);
-        } else if (type == 1) { /* global */
-            switch (tag) {
-            case 0x0: p.g.usage_page = u & 0xffffu; break;
-            case 0x1: p.g.logical_min = s; break;
-            case 0x2: p.g.logical_max = p.g.logical_min < 0 ? s : (int64_t)u; break;
-            case 0x3: p.g.physical_min = s; break;
-            case 0x4: p.g.physical_max = p.g.physical_min < 0 ? s : (int64_t)u; break;
-            case 0x5: case 0x6: break; /* unit exponent, unit */
-            case 0x7:
-                if (u > MAX_REPORT_SIZE)
-                    return HOL_EPARSE;
-                p.g.report_size = u;
-                break;
-            case 0x8:
-                if (u == 0 || u > 255)
-                    return HOL_EPARSE;
-                p.g.report_id = u;
-                p.has_ids = 1;
-                break;
-            case 0x9:
-                if (u > HOL_HID_MAX_ELEMENTS)
-                    return HOL_EPARSE;
-                p.g.report_count = u;
-                break;
-            case 0xa:
-                if (p.depth == STACK_DEPTH)
-                    return HOL_EPARSE;
-                p.stack[p.depth++] = p.g;
-                break;
-            case 0xb:
-                if (p.depth == 0)
-                    return HOL_EPARSE;
-                p.g = p.stack[--p.depth];
-                break;
-            default:
-                return HOL_EPARSE;
-            }
-        } else if (type == 2) { /* local */
-            switch (tag) {
-            case 0x0:
-                if (add_usage(&p, u, u, dsize == 4))
-                    return HOL_EPARSE;
-                break;
-            case 0x1:
-                p.pend_min = u;
-                p.min_page = dsize == 4;
-                p.have_min = 1;
-                if (try_range(&p))
-                    return HOL_EPARSE;
-                break;
-            case 0x2:
-                p.pend_max = u;
-                p.max_page = dsize == 4;
-                p.have_max = 1;
-                if (try_range(&p))
-                    return HOL_EPARSE;
-                break;
-            default: /* designators, strings, delimiters: not used */
-                break;
-            }
-        } else {
-            return HOL_EPARSE; /* reserved item type */
-        }
+        err = type == 0   ? main_tag(&p, tag, u, fields, cap, &n)
+              : type == 1 ? global_tag(&p, tag, u, s)
+              : type == 2 ? local_tag(&p, tag, u, dsize)
+                          : HOL_EPARSE; /* reserved item type */
     }
     if (err)
         return err;
