@@ -158,7 +158,7 @@ one_line "capacity 2^30" "not a number of tiles 1..268435456"
 # command; the options documented as repeatable still repeat -------------
 mkfifo rep.fifo # a command that got past its options would block on it
 for c in "world --seed 1 --seed 2" "world --save=a.img --save b.img" "world save a.img --save b.img" \
-         "world load a.img --load b.img" "nav --stats --stats" \
+         "world load a.img --load b.img" "nav --stats --stats" "tile walk --tiling 4,5 --tiling=4,6" \
          "nav --budget 9 --budget=10" "tour --stats --stats - O" "render --size 8x8 --size 9x9 --stats" \
          "play --seed 1 --seed 2 --input rep.fifo" "replay rep.fifo --log . --log ." \
          "hid watch --frames 1 --frames 2" "xr --frames 1 --frames 2 --input rep.fifo" \
