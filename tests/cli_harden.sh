@@ -5,7 +5,13 @@
 # whole (7 s, 1.1 GB) before "not a world image"; a directory was exit 1;
 # a save killed mid-write left its temporary file for ever; --capacity 1
 # was raised silently; option values echoed escape bytes raw; a bare
-# `holonomy` printed 13 lines.
+# `holonomy` printed 13 lines. Issue 19: a save replaced device nodes and
+# FIFOs with exit 0; stdin readers had no line limit (tile walk < /dev/zero
+# grew to 1.2 GB); gamepad scripts were read whole; hid watch --replay never
+# ended; repeated options were taken (the last won); --budget 2147483648
+# was taken against its help; numbers took blanks, signs and hex; --out and
+# --tile-ids could name one file; a level without its objective blamed the
+# start tile.
 . "$(dirname "$0")/lib.sh"
 
 cd "$T" || exit 1
