@@ -121,72 +121,65 @@ hol_err hol_png_encode(const uint8_t *rgba, int w, int h, int alpha,
     return HOL_OK;
 }
 
-hol_err hol_png_decode(const uint8_t *data, size_t size, uint8_t **out_rgba,
-                       int *out_w, int *out_h)
+/* What IHDR says (8-bit grey, grey+alpha, RGB or RGBA, not interlaced). */
+typedef struct hol__png_hdr {
+    uint32_t w, h;
+    int ctype;
+} hol__png_hdr;
+
+static hol_err hol__png_ihdr(const uint8_t *body, uint32_t n, hol__png_hdr *hd)
 {
-    if (size < 8 || memcmp(data, "\x89PNG\r\n\x1a\n", 8))
+    if (n != 13)
         return HOL_ECORRUPT;
-    size_t pos = 8;
-    uint32_t w = 0, h = 0;
-    int ctype = -1, have_ihdr = 0, have_end = 0;
+    hd->w = hol__rd32(body);
+    hd->h = hol__rd32(body + 4);
+    hd->ctype = body[9];
+    if (hd->w == 0 || hd->h == 0 || hd->w > HOL_PNG_MAX_DIM || hd->h > HOL_PNG_MAX_DIM)
+        return HOL_ECORRUPT;
+    if (body[8] != 8 || body[10] || body[11] || body[12] ||
+        (hd->ctype != 0 && hd->ctype != 2 && hd->ctype != 4 && hd->ctype != 6))
+        return HOL_EUNSUPPORTED;
+    return HOL_OK;
+}
+
+/* The chunks up to IEND, each checked against its CRC: the header, and
+ * the IDAT payloads joined into *out_z (malloc'ed, *out_zn bytes). */
+static hol_err hol__png_chunks(const uint8_t *data, size_t size, hol__png_hdr *hd,
+                               uint8_t **out_z, size_t *out_zn)
+{
+    size_t pos = 8, zn = 0;
+    int have_ihdr = 0, have_end = 0;
     uint8_t *z = NULL;
-    size_t zn = 0;
     hol_err err = HOL_OK;
-    while (!have_end) {
-        if (size - pos < 12) {
+    while (!have_end && !err) {
+        if (size - pos < 12 || hol__rd32(data + pos) > size - pos - 12) {
             err = HOL_ECORRUPT;
             break;
         }
         uint32_t n = hol__rd32(data + pos);
         const uint8_t *type = data + pos + 4;
-        if (n > size - pos - 12) {
-            err = HOL_ECORRUPT;
-            break;
-        }
         const uint8_t *body = data + pos + 8;
         uLong crc = crc32(0L, Z_NULL, 0);
         crc = crc32(crc, type, (uInt)(n + 4));
-        if ((uint32_t)crc != hol__rd32(body + n)) {
+        if ((uint32_t)crc != hol__rd32(body + n))
             err = HOL_ECORRUPT;
-            break;
-        }
-        if (!memcmp(type, "IHDR", 4)) {
-            if (n != 13 || have_ihdr) {
-                err = HOL_ECORRUPT;
-                break;
-            }
-            have_ihdr = 1;
-            w = hol__rd32(body);
-            h = hol__rd32(body + 4);
-            ctype = body[9];
-            if (w == 0 || h == 0 || w > HOL_PNG_MAX_DIM || h > HOL_PNG_MAX_DIM) {
-                err = HOL_ECORRUPT;
-                break;
-            }
-            if (body[8] != 8 || body[10] || body[11] || body[12] ||
-                (ctype != 0 && ctype != 2 && ctype != 4 && ctype != 6)) {
-                err = HOL_EUNSUPPORTED;
-                break;
-            }
-        } else if (!memcmp(type, "IDAT", 4)) {
-            if (!have_ihdr) {
-                err = HOL_ECORRUPT;
-                break;
-            }
+        else if (!memcmp(type, "IHDR", 4))
+            err = have_ihdr++ ? HOL_ECORRUPT : hol__png_ihdr(body, n, hd);
+        else if (!memcmp(type, "IDAT", 4) && !have_ihdr)
+            err = HOL_ECORRUPT;
+        else if (!memcmp(type, "IDAT", 4)) {
             uint8_t *nz = realloc(z, zn + n + 1);
-            if (!nz) {
+            if (!nz)
                 err = HOL_ENOMEM;
-                break;
+            else {
+                z = nz;
+                memcpy(z + zn, body, n);
+                zn += n;
             }
-            z = nz;
-            memcpy(z + zn, body, n);
-            zn += n;
-        } else if (!memcmp(type, "IEND", 4)) {
+        } else if (!memcmp(type, "IEND", 4))
             have_end = 1;
-        } else if (!(type[0] & 0x20)) {
+        else if (!(type[0] & 0x20))
             err = HOL_EUNSUPPORTED; /* unknown critical chunk (e.g. PLTE) */
-            break;
-        }
         pos += 12 + (size_t)n;
     }
     if (!err && (!have_ihdr || !z))
@@ -195,41 +188,23 @@ hol_err hol_png_decode(const uint8_t *data, size_t size, uint8_t **out_rgba,
         free(z);
         return err;
     }
-    int bpp = ctype == 0 ? 1 : ctype == 4 ? 2 : ctype == 2 ? 3 : 4;
-    size_t stride = (size_t)w * (size_t)bpp + 1;
-    uLongf rawn = (uLongf)(stride * h);
-    /* deflate expands at most ~1032:1: refuse sizes the data cannot hold
-     * before allocating for them */
-    if ((double)rawn > (double)zn * 1100.0 + 1024.0) {
-        free(z);
-        return HOL_ECORRUPT;
-    }
-    uint8_t *raw = malloc(rawn ? rawn : 1);
-    uint8_t *rgba = malloc((size_t)w * h * 4);
-    if (!raw || !rgba) {
-        free(z);
-        free(raw);
-        free(rgba);
-        return HOL_ENOMEM;
-    }
-    uLongf got = rawn;
-    int zr = uncompress(raw, &got, z, (uLong)zn);
-    free(z);
-    if (zr != Z_OK || got != rawn) {
-        free(raw);
-        free(rgba);
-        return HOL_ECORRUPT;
-    }
-    for (uint32_t y = 0; y < h; y++) {
+    *out_z = z;
+    *out_zn = zn;
+    return HOL_OK;
+}
+
+/* Undo the row filters of raw (h rows of stride bytes, a filter byte
+ * first) and write RGBA. */
+static hol_err hol__png_rows(uint8_t *raw, size_t stride, const hol__png_hdr *hd, int bpp,
+                             uint8_t *rgba)
+{
+    for (uint32_t y = 0; y < hd->h; y++) {
         uint8_t *row = raw + (size_t)y * stride;
         uint8_t *cur = row + 1;
         const uint8_t *up = y ? raw + (size_t)(y - 1) * stride + 1 : NULL;
         int f = row[0];
-        if (f > 4) {
-            free(raw);
-            free(rgba);
+        if (f > 4)
             return HOL_ECORRUPT;
-        }
         for (size_t i = 0; i < stride - 1; i++) {
             int a = i >= (size_t)bpp ? cur[i - (size_t)bpp] : 0;
             int b = up ? up[i] : 0;
@@ -238,24 +213,55 @@ hol_err hol_png_decode(const uint8_t *data, size_t size, uint8_t **out_rgba,
                                                            : hol__paeth(a, b, c);
             cur[i] = (uint8_t)(cur[i] + pred);
         }
-        for (uint32_t x = 0; x < w; x++) {
-            uint8_t *o = rgba + ((size_t)y * w + x) * 4;
+        for (uint32_t x = 0; x < hd->w; x++) {
+            uint8_t *o = rgba + ((size_t)y * hd->w + x) * 4;
             const uint8_t *s = cur + (size_t)x * (size_t)bpp;
-            if (bpp <= 2) {
-                o[0] = o[1] = o[2] = s[0];
-                o[3] = bpp == 2 ? s[1] : 255;
-            } else {
-                o[0] = s[0];
-                o[1] = s[1];
-                o[2] = s[2];
-                o[3] = bpp == 4 ? s[3] : 255;
-            }
+            o[0] = s[0];
+            o[1] = bpp <= 2 ? s[0] : s[1];
+            o[2] = bpp <= 2 ? s[0] : s[2];
+            o[3] = bpp == 2 ? s[1] : bpp == 4 ? s[3] : 255;
         }
     }
-    free(raw);
-    *out_rgba = rgba;
-    *out_w = (int)w;
-    *out_h = (int)h;
     return HOL_OK;
 }
 
+hol_err hol_png_decode(const uint8_t *data, size_t size, uint8_t **out_rgba,
+                       int *out_w, int *out_h)
+{
+    if (size < 8 || memcmp(data, "\x89PNG\r\n\x1a\n", 8))
+        return HOL_ECORRUPT;
+    hol__png_hdr hd = {0, 0, -1};
+    uint8_t *z = NULL;
+    size_t zn = 0;
+    hol_err err = hol__png_chunks(data, size, &hd, &z, &zn);
+    if (err)
+        return err;
+    int bpp = hd.ctype == 0 ? 1 : hd.ctype == 4 ? 2 : hd.ctype == 2 ? 3 : 4;
+    size_t stride = (size_t)hd.w * (size_t)bpp + 1;
+    uLongf rawn = (uLongf)(stride * hd.h);
+    /* deflate expands at most ~1032:1: refuse sizes the data cannot hold
+     * before allocating for them */
+    if ((double)rawn > (double)zn * 1100.0 + 1024.0) {
+        free(z);
+        return HOL_ECORRUPT;
+    }
+    uint8_t *raw = malloc(rawn ? rawn : 1);
+    uint8_t *rgba = malloc((size_t)hd.w * hd.h * 4);
+    uLongf got = rawn;
+    if (!raw || !rgba)
+        err = HOL_ENOMEM;
+    else if (uncompress(raw, &got, z, (uLong)zn) != Z_OK || got != rawn)
+        err = HOL_ECORRUPT;
+    else
+        err = hol__png_rows(raw, stride, &hd, bpp, rgba);
+    free(z);
+    free(raw);
+    if (err) {
+        free(rgba);
+        return err;
+    }
+    *out_rgba = rgba;
+    *out_w = (int)hd.w;
+    *out_h = (int)hd.h;
+    return HOL_OK;
+}
