@@ -22,6 +22,24 @@ hol_web hol_web_g;
 /* the page's state and config (hol_web_lib.js) */
 extern int hol_web_js_focused(void);
 extern void hol_web_js_event(const char *kind, const char *text);
+extern void hol_web_js_config(const char *key, char *buf, int cap);
+
+/* ?snap=DEG: a divisor of 360 in 1..180, as play's --snap-turn; 0 none.
+ * -1 when it is not one. */
+static int config_snap(void)
+{
+    char s[16];
+    hol_web_js_config("snap", s, sizeof s);
+    if (!s[0])
+        return 0;
+    int v = 0;
+    for (const char *p = s; *p; p++) {
+        if (*p < '0' || *p > '9' || v > 1000)
+            return -1;
+        v = v * 10 + (*p - '0');
+    }
+    return v >= 1 && v <= 180 && 360 % v == 0 ? v : -1;
+}
 
 /* ---- devices ---------------------------------------------------------------- */
 
@@ -306,6 +324,11 @@ int main(void)
     char msg[256] = "";
     if (make_gl()) {
         hol_web_js_event("failed", "this browser has no WebGL 2 with a stencil buffer");
+        return 1;
+    }
+    w->pan.snap_deg = config_snap();
+    if (w->pan.snap_deg < 0) {
+        hol_web_js_event("failed", "snap is not a divisor of 360 in 1..180");
         return 1;
     }
     if (hol_web_game_open(msg, sizeof msg)) {

@@ -160,6 +160,19 @@ await check('a bad level file is refused with one line naming its line, and noth
   await p.ctx.close();
 });
 
+await check('snap turn (?snap=90): a tap of Left turns the look by 90 degrees; ?snap=7 is refused', async () => {
+  const p = await openPage('?mode=explore&seed=2&snap=90');
+  await p.until(async () => (await p.state(S.FRAMES)) > 5, 'frames');
+  await p.page.keyboard.press('ArrowLeft');
+  const yaw = await p.until(async () => { const y = await p.state(S.YAW); return y > 1 && y; }, 'a snap');
+  assert(Math.abs(yaw - 90) < 1e-6, 'yaw ' + yaw);
+  await p.ctx.close();
+  const q = await openPage('?snap=7', { fail: true });
+  const st = await q.page.evaluate(() => document.getElementById('status').textContent);
+  assert(/snap/.test(st), 'status: ' + st);
+  await q.ctx.close();
+});
+
 await check('a gamepad (a getGamepads shim, standard mapping) walks one room step north', async () => {
   const p = await openPage('?seed=3', { gamepad: true });
   await p.until(async () => (await p.state(S.FRAMES)) > 10, 'frames');
