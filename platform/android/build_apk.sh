@@ -90,8 +90,11 @@ mkdir -p "$stage/apk/lib/arm64-v8a"
 # `make quest-link-check`) and the NativeActivity entry with the NDK's glue.
 glue="$NDK/sources/android/native_app_glue"
 srcs=$(cd "$root" && ls $APK_SRC $NDK_SRC | sed "s|^|$root/|")
+# -ffp-contract=off: no fused multiply-add where the desktop has none, so
+# the core's results (and a recording's replay) are the same bits as on the
+# desktop and the web (README: "The same results on every platform").
 # shellcheck disable=SC2086
-"$cc" -std=c11 -O2 -g -fPIC -shared -D_DEFAULT_SOURCE -DHOL_GLES=1 \
+"$cc" -std=c11 -O2 -g -ffp-contract=off -fPIC -shared -D_DEFAULT_SOURCE -DHOL_GLES=1 \
     -I"$OPENXR_INCLUDE" -I"$root" -I"$glue" \
     -Wl,--no-undefined -Wl,-z,max-page-size=16384 -u ANativeActivity_onCreate \
     -o "$stage/apk/lib/arm64-v8a/libholonomy.so" $srcs "$glue"/android_native_app_glue.c \
