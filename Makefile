@@ -223,9 +223,14 @@ unit: $(UNIT_BIN)
 render-test: $(RENDER_TEST_BIN)
 	@set -e; for t in $(RENDER_TEST_BIN); do echo "== $$t"; $(TIMED) $$t $$t; done
 
-cli-test: $(BUILD)/holonomy
+cli-test: $(BUILD)/holonomy $(BUILD)/tests/x11_close
 	@set -e; for t in $(CLI_TESTS); do echo "== $$t"; \
-	  HOLONOMY=$(BUILD)/holonomy $(TIMED) $$t sh $$t; done
+	  HOLONOMY=$(BUILD)/holonomy X11_CLOSE=$(BUILD)/tests/x11_close $(TIMED) $$t sh $$t; done
+
+# A test helper: the close button of a window, as a window manager presses it.
+$(BUILD)/tests/x11_close: tests/x11_close.c
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) -o $@ $< -lX11
 
 # Every harness has a corpus of its own (a missing one fails here).
 fuzz-replay: $(FUZZ_SRC:fuzz/%.c=$(BUILD)/fuzz-replay/%)

@@ -30,9 +30,10 @@
  *   as known at its start), steps-NNN.csv.live and head-NNN.csv.live (its
  *   rows, streamed). When it ends: the live files are flushed durably, its
  *   row is appended to summary.csv (durably), then the live files are
- *   renamed to steps-NNN.csv and head-NNN.csv and attempt-NNN.live is
- *   removed. So an attempt's files appear together (with its summary row)
- *   or not at all, and rows of a finished attempt are never lost.
+ *   renamed to head-NNN.csv and, last, steps-NNN.csv, and attempt-NNN.live
+ *   is removed. So steps-NNN.csv never exists without head-NNN.csv and its
+ *   row (a kill before its rename leaves the rest for the next append
+ *   session to rename), and rows of a finished attempt are never lost.
  * - Recovery (desc.append): live files of attempts a killed session left
  *   are finished first: each gets its summary row (end killed; steps: its
  *   step rows; time: its last row's level time) unless summary.csv has it
@@ -123,6 +124,11 @@ long hol_session_frames(const hol_session *s);
 /* Attempts of a killed session finished by recovery at create. */
 int hol_session_recovered(const hol_session *s);
 const char *hol_session_message(const hol_session *s);
+
+/* 1 when name is one of a log folder's files (summary.csv, steps-NNN.csv,
+ * head-NNN.csv, or a live file of an attempt): a folder holding one is
+ * refused without append. Platforms check before they open anything. */
+int hol_session_is_log_name(const char *name);
 
 /* The cues drawn in a view: hot-cold (the minimap shows, an objective is
  * left), path (the minimap shows its strayed path), poles (an objective

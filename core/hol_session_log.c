@@ -266,7 +266,8 @@ void hol__attempt_end(hol_session *s, const hol_app_summary *sum, int end)
     char row[1024], name[64], live[80];
     size_t n = hol__summary_row(s, sum, end, row, sizeof row);
     hol__put_file(s, "summary.csv", 1, row, n);
-    static const char *const what[2] = {"steps", "head"};
+    /* steps last: a steps-NNN.csv always has its head file and row */
+    static const char *const what[2] = {"head", "steps"};
     for (int k = 0; k < 2; k++) {
         hol__attempt_name(name, sizeof name, what[k], s->attempt);
         snprintf(live, sizeof live, "%s.live", name);

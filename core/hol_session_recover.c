@@ -31,16 +31,25 @@ static long hol__numbered(const char *name, const char *prefix, const char *suff
     return v;
 }
 
+static const char *const hol__pat[5][2] = {{"steps-", ".csv"},      {"head-", ".csv"},
+                                           {"steps-", ".csv.live"}, {"head-", ".csv.live"},
+                                           {"attempt-", ".live"}};
+
+int hol_session_is_log_name(const char *name)
+{
+    int hit = !strcmp(name, "summary.csv");
+    for (int k = 0; k < 5 && !hit; k++)
+        hit = hol__numbered(name, hol__pat[k][0], hol__pat[k][1]) >= 0;
+    return hit;
+}
+
 static void hol__scan_name(void *ctx, const char *name)
 {
-    static const char *const pat[5][2] = {{"steps-", ".csv"},      {"head-", ".csv"},
-                                          {"steps-", ".csv.live"}, {"head-", ".csv.live"},
-                                          {"attempt-", ".live"}};
     hol__scan *sc = ctx;
     if (!strcmp(name, "summary.csv"))
         sc->logs = 1;
     for (int k = 0; k < 5; k++) {
-        long a = hol__numbered(name, pat[k][0], pat[k][1]);
+        long a = hol__numbered(name, hol__pat[k][0], hol__pat[k][1]);
         if (a < 0)
             continue;
         sc->logs = 1;
@@ -228,6 +237,18 @@ static size_t hol__killed_row(hol_session *s, int a, char *row, size_t cap)
     return n > 0 && (size_t)n < cap ? (size_t)n : 0;
 }
 
+/* A new stream holding text, durably. */
+static void hol__put(hol_session *s, const char *name, const char *text)
+{
+    hol__out o;
+    hol__out_init(&o, s->log, NULL, 0);
+    if (!hol__out_open(s, &o, name, 0)) {
+        hol__out_put(s, &o, text, strlen(text));
+        hol__out_flush(s, &o, 1);
+        hol__out_close(s, &o);
+    }
+}
+
 static void hol__recover(hol_session *s, int a)
 {
     char field[16], name[64], live[80], row[1200];
@@ -256,15 +277,23 @@ static void hol__recover(hol_session *s, int a)
         double time;
         hol__live_rows(s, a, &steps, &time); /* cut what the kill cut */
     }
-    static const char *const what[2] = {"steps", "head"};
+    /* the live files renamed, steps last (as at an attempt's end); one the
+     * kill left unmade (the attempt had just begun) made with its header,
+     * so the row has its files */
+    static const char *const what[2] = {"head", "steps"};
+    static const char *const cols[2] = {HOL_SESSION_HEAD_COLUMNS "\n",
+                                        HOL_SESSION_STEP_COLUMNS "\n"};
     for (int k = 0; k < 2 && !s->failed; k++) {
         hol__attempt_name(name, sizeof name, what[k], a);
         snprintf(live, sizeof live, "%s.live", name);
         char probe[1];
         size_t got;
-        if (s->log->read(s->log->user, live, 0, probe, 1, &got) == HOL_EOPEN)
-            continue;
-        if (s->log->rename(s->log->user, live, name))
+        if (s->log->read(s->log->user, live, 0, probe, 1, &got) == HOL_EOPEN) {
+            if (s->log->read(s->log->user, name, 0, probe, 1, &got) != HOL_EOPEN)
+                continue; /* renamed before the kill */
+            hol__put(s, live, cols[k]);
+        }
+        if (!s->failed && s->log->rename(s->log->user, live, name))
             hol__fail_sink(s, s->log, HOL_EIO, "rename", live);
     }
     hol__attempt_name(name, sizeof name, "attempt", a);

@@ -452,6 +452,33 @@ static void test_killed_attempt_recovered(void **state)
     mem_free(&m);
 }
 
+/* Killed right after the attempt began: only its attempt-NNN.live. The
+ * next session gives it its row and both files (headers only). */
+static void test_killed_at_begin(void **state)
+{
+    (void)state;
+    static mem_sink m;
+    mem_init(&m);
+    hol_session *s = make(&g_flag, 1, &m, NULL, 0);
+    hol_session_destroy(s); /* no frame: no attempt yet */
+    char row[512];
+    snprintf(row, sizeof row,
+             "x,,2026-01-01T00:00:00Z,0.1.0,5,lv,%064d,flag,5,15,3.0000,0,8,0.0000,killed\n", 0);
+    int h;
+    mem_open(&m, "attempt-005.live", 0, &h);
+    mem_write(&m, h, row, strlen(row));
+    mem_flush(&m, h, 1);
+    mem_close(&m, h);
+    s = make(&g_flag, 1, &m, NULL, 1);
+    assert_int_equal(hol_session_recovered(s), 1);
+    hol_session_destroy(s);
+    assert_non_null(strstr(mem_text(&m, "summary.csv"), ",5,lv,"));
+    assert_string_equal(mem_text(&m, "steps-005.csv"), HOL_SESSION_STEP_COLUMNS "\n");
+    assert_string_equal(mem_text(&m, "head-005.csv"), HOL_SESSION_HEAD_COLUMNS "\n");
+    assert_null(mem_find(&m, "attempt-005.live"));
+    mem_free(&m);
+}
+
 /* A kill between the summary row and the renames: the next session renames
  * and adds no second row. */
 static void test_no_double_row(void **state)
@@ -779,6 +806,7 @@ int main(void)
         cmocka_unit_test(test_folder_refused_or_appended),
         cmocka_unit_test(test_rows_flushed_each_second),
         cmocka_unit_test(test_killed_attempt_recovered),
+        cmocka_unit_test(test_killed_at_begin),
         cmocka_unit_test(test_no_double_row),
         cmocka_unit_test(test_head_rows_interpolated),
         cmocka_unit_test(test_visible_cues),

@@ -213,7 +213,7 @@ static int play_prepare_files(play_ctx *c)
     const play_opts *o = &c->o;
     int st = o->pad_script ? play_load_pad_script(c->cmd, o->pad_script, &c->script) : 0;
     if (!st)
-        st = play_out_open(c->cmd, o->log_dir, o->rec, &c->out);
+        st = play_out_open(c->cmd, o->log_dir, o->append, o->rec, &c->out);
     if (!st)
         st = play_levels(c->cmd, o->level_path, o->mode, o->seed, c->levels, &c->nlevels);
     if (!st && o->input_path) {

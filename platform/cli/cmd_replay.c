@@ -141,7 +141,7 @@ static int replay_prepare(replay_ctx *c)
         if (cli_check_output(c->cmd, "--out-dir", path))
             return CLI_EXIT_USAGE;
     }
-    int st = play_out_open(c->cmd, c->log_dir, NULL, &c->out);
+    int st = play_out_open(c->cmd, c->log_dir, c->append, NULL, &c->out);
     if (!st) {
         st = play_input_open(c->cmd, c->rec, 1, &c->input);
         c->has_input = !st;

@@ -228,7 +228,7 @@ int cli_cmd_xr(int argc, char **argv)
     hol_session *s = NULL;
     cli_catch_signals();
     if (!st)
-        st = play_out_open(cmd, o.log_dir, o.rec, &out);
+        st = play_out_open(cmd, o.log_dir, o.append, o.rec, &out);
     if (!st) {
         hol_rec_meta meta;
         hol_sink_posix_meta(&meta, o.participant);

@@ -5,6 +5,7 @@
 #endif
 #include "play_setup.h"
 
+#include <dirent.h>
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -182,37 +183,65 @@ void play_input_close(play_input *pi)
 
 /* ---- outputs -------------------------------------------------------------------- */
 
-int play_out_open(const char *cmd, const char *log_dir, const char *rec_path, play_out *po)
+/* --log DIR: made when missing (its parent exists); holding logs, refused
+ * unless append. */
+static int play_log_dir(const char *cmd, const char *dir, int append, play_out *po)
+{
+    if (hol_sink_posix_make_dir(dir) || hol_sink_posix_init(&po->log, dir)) {
+        cli_error(cmd, 0, "--log '%.200s' is not a folder and cannot be made: %s", dir,
+                  strerror(errno));
+        return CLI_EXIT_USAGE;
+    }
+    DIR *d = append ? NULL : opendir(dir);
+    struct dirent *e;
+    while (d && (e = readdir(d)) != NULL)
+        if (hol_session_is_log_name(e->d_name)) {
+            closedir(d);
+            cli_error(cmd, 0, "--log '%.200s' holds earlier logs ('%.60s'): add to them with "
+                      "--append, or choose another folder", dir, e->d_name);
+            return CLI_EXIT_USAGE;
+        }
+    if (d)
+        closedir(d);
+    po->has_log = 1;
+    return 0;
+}
+
+/* --record FILE: FILE and FILE.live may be written, and no FILE.live of a
+ * session that did not end is in the way. */
+static int play_rec_file(const char *cmd, const char *rec_path, play_out *po)
+{
+    char live[4096];
+    struct stat st;
+    snprintf(live, sizeof live, "%s.live", rec_path);
+    if (cli_check_output(cmd, "--record", rec_path) || cli_check_output(cmd, "--record", live))
+        return CLI_EXIT_USAGE;
+    if (!lstat(live, &st)) {
+        cli_error(cmd, 0, "--record: '%.200s' is there: the recording of a session that did "
+                  "not end (replay it, then move it away)", live);
+        return CLI_EXIT_USAGE;
+    }
+    const char *slash = strrchr(rec_path, '/');
+    char dir[4096];
+    snprintf(dir, sizeof dir, "%.*s", slash ? (int)(slash - rec_path) : 1, slash ? rec_path : ".");
+    if (slash == rec_path)
+        snprintf(dir, sizeof dir, "/");
+    const char *base = slash ? slash + 1 : rec_path;
+    if (strlen(base) + 6 > sizeof po->rec_name || hol_sink_posix_init(&po->rec, dir)) {
+        cli_error(cmd, 0, "--record '%.200s': the name is too long", rec_path);
+        return CLI_EXIT_USAGE;
+    }
+    snprintf(po->rec_name, sizeof po->rec_name, "%s", base);
+    po->has_rec = 1;
+    return 0;
+}
+
+int play_out_open(const char *cmd, const char *log_dir, int append, const char *rec_path,
+                  play_out *po)
 {
     memset(po, 0, sizeof *po);
-    if (log_dir) {
-        if (hol_sink_posix_make_dir(log_dir) || hol_sink_posix_init(&po->log, log_dir)) {
-            cli_error(cmd, 0, "--log '%.200s' is not a folder and cannot be made: %s", log_dir,
-                      strerror(errno));
-            return CLI_EXIT_USAGE;
-        }
-        po->has_log = 1;
-    }
-    if (rec_path) {
-        char live[4096];
-        snprintf(live, sizeof live, "%s.live", rec_path);
-        if (cli_check_output(cmd, "--record", rec_path) || cli_check_output(cmd, "--record", live))
-            return CLI_EXIT_USAGE;
-        const char *slash = strrchr(rec_path, '/');
-        char dir[4096];
-        snprintf(dir, sizeof dir, "%.*s", slash ? (int)(slash - rec_path) : 1,
-                 slash ? rec_path : ".");
-        if (slash == rec_path)
-            snprintf(dir, sizeof dir, "/");
-        const char *base = slash ? slash + 1 : rec_path;
-        if (strlen(base) + 6 > sizeof po->rec_name || hol_sink_posix_init(&po->rec, dir)) {
-            cli_error(cmd, 0, "--record '%.200s': the name is too long", rec_path);
-            return CLI_EXIT_USAGE;
-        }
-        snprintf(po->rec_name, sizeof po->rec_name, "%s", base);
-        po->has_rec = 1;
-    }
-    return 0;
+    int st = log_dir ? play_log_dir(cmd, log_dir, append, po) : 0;
+    return st ? st : rec_path ? play_rec_file(cmd, rec_path, po) : 0;
 }
 
 void play_out_close(play_out *po)

@@ -18,8 +18,10 @@
  *   metadata are kept in the play_input); each record's time may not go
  *   back. play_input_next: 1 a record, 0 the end, else -status.
  * - play_out_open checks the outputs before any play: --log DIR (made when
- *   missing and its parent exists; else bad input) and --record FILE (a
- *   regular file or a new name in an existing folder). play_session_open
+ *   missing and its parent exists; else bad input; one that holds logs is
+ *   refused unless append) and --record FILE (FILE and FILE.live a regular
+ *   file or a new name in an existing folder, cli_check_output; a FILE.live
+ *   a killed session left is refused). play_session_open
  *   then creates the session on them; play_session_end finishes it (or
  *   aborts it: the attempt in play ends `aborted`) and frees it.
  * - play_print_end prints "level NAME STATE steps S optimum O tile A cell
@@ -67,7 +69,8 @@ typedef struct play_out {
     char rec_name[HOL_SINK_NAME_MAX];
 } play_out;
 
-int play_out_open(const char *cmd, const char *log_dir, const char *rec_path, play_out *po);
+int play_out_open(const char *cmd, const char *log_dir, int append, const char *rec_path,
+                  play_out *po);
 void play_out_close(play_out *po);
 int play_session_open(const char *cmd, play_out *po, const hol_level *levels, int nlevels,
                       const hol_rec_meta *meta, int append, hol_session **out);
