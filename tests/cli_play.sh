@@ -35,20 +35,11 @@ run "pad script no value" 2 "$H" play --gamepad-replay && one_line "no value" "n
 run "bad snap turn" 2 "$H" play --snap-turn 7 && one_line "bad snap" "divisor of 360"
 run "snap turn zero" 2 "$H" play --snap-turn 0 && one_line "snap zero" "snap-turn"
 
-if ! command -v Xvfb >/dev/null 2>&1; then
+if ! start_xvfb 0; then
     echo "note: no Xvfb here: the window is not tested"
     finish cli_play
     exit $?
 fi
-D=":$((100 + $$ % 400))"
-Xvfb "$D" -screen 0 320x240x24 -nolisten tcp >/dev/null 2>&1 &
-XPID=$!
-trap 'kill $XPID 2>/dev/null; rm -rf "$T"' EXIT
-for i in 1 2 3 4 5 6 7 8 9 10; do
-    DISPLAY=$D "$H" play --frames 2 --size 64x48 >/dev/null 2>&1 && break
-    sleep 0.3
-done
-export DISPLAY=$D
 
 printf -- '- Wrf\n' | "$H" nav >"$T/nav" || bad "nav"
 K=$(cut -d' ' -f1 "$T/nav") WALK=$(cut -d' ' -f2 "$T/nav")

@@ -108,6 +108,8 @@ run "record a folder" 2 env DISPLAY= "$H" play --mode flag --record "$T"
 run "a killed recording in the way" 2 env DISPLAY= "$H" play --mode flag --record killed.rec
 one_line "killed recording" "did not end"
 run "log under a file" 2 env DISPLAY= "$H" play --mode flag --log new2.txt/logs
+run "a bad participant" 2 env DISPLAY= "$H" play --mode flag --participant 'P 1'
+one_line "bad participant" "--participant 'P 1' is not"
 cd "$OLDPWD" || exit 1
 
 # ---- a replay killed with -9 at any moment ---------------------------------------
@@ -172,20 +174,11 @@ st=$?
 tail -1 "$T/term/summary.csv" | grep -q ',aborted$' && ok || bad "replay SIGTERM: $(tail -1 "$T/term/summary.csv")"
 ls "$T/term" | grep -q '\.live$' && bad "replay SIGTERM left live files" || ok
 
-if ! command -v Xvfb >/dev/null 2>&1; then
+if ! start_xvfb 211; then
     echo "note: no Xvfb here: the live window is not tested"
     finish cli_session
     exit $?
 fi
-D=":$((100 + ($$ + 211) % 400))"
-Xvfb "$D" -screen 0 320x240x24 -nolisten tcp >/dev/null 2>&1 &
-XPID=$!
-trap 'kill $XPID 2>/dev/null; rm -rf "$T"' EXIT
-for i in 1 2 3 4 5 6 7 8 9 10; do
-    DISPLAY=$D "$H" play --frames 2 --size 64x48 >/dev/null 2>&1 && break
-    sleep 0.3
-done
-export DISPLAY=$D
 
 # live NAME: play in real time (the default campaign) with logs and a
 # recording in $T/NAME; pid in $pid once its window exists
@@ -206,8 +199,10 @@ ended() {
     wait $pid
     st=$?
     [ "$st" = "$2" ] && ok || bad "$1: status $st, want $2 ($(cat "$T/$1/err"))"
-    tail -1 "$T/$1/logs/summary.csv" | grep -q ',P01,.*,1,tutorial,.*,aborted$' && ok ||
-        bad "$1: $(cat "$T/$1/logs/summary.csv")"
+    # a session id of its start and 8 hex digits, the start in ISO 8601 UTC
+    tail -1 "$T/$1/logs/summary.csv" | grep -Eq \
+        '^[0-9]{8}T[0-9]{6}Z-[0-9a-f]{8},P01,[0-9]{4}-[0-9]{2}-[0-9]{2}T[0-9]{2}:[0-9]{2}:[0-9]{2}Z,[^,]+,1,tutorial,[0-9a-f]{64},tutorial,1,15,.*,aborted$' &&
+        ok || bad "$1: $(cat "$T/$1/logs/summary.csv")"
     [ -f "$T/$1/logs/steps-001.csv" ] && [ -f "$T/$1/logs/head-001.csv" ] && [ -f "$T/$1/s.rec" ] &&
         ! ls "$T/$1" "$T/$1/logs" | grep -q '\.live$' && ok || bad "$1: $(ls "$T/$1" "$T/$1/logs")"
 }

@@ -65,6 +65,22 @@ walk_input() {
     }'
 }
 
+# start_xvfb SALT: an Xvfb of its own on display :100..:499 (from the
+# script's pid and SALT), killed when the script ends; waits until a window
+# opens there and exports DISPLAY. Returns 1 (nothing started) without Xvfb.
+start_xvfb() {
+    command -v Xvfb >/dev/null 2>&1 || return 1
+    D=":$((100 + ($$ + $1) % 400))"
+    Xvfb "$D" -screen 0 320x240x24 -nolisten tcp >/dev/null 2>&1 &
+    XPID=$!
+    trap 'kill $XPID 2>/dev/null; rm -rf "$T"' EXIT
+    for i in 1 2 3 4 5 6 7 8 9 10; do
+        DISPLAY=$D "$H" play --frames 2 --size 64x48 >/dev/null 2>&1 && break
+        sleep 0.3
+    done
+    export DISPLAY=$D
+}
+
 finish() {
   echo "$1: $passes passed, $fails failed"
   [ "$fails" = 0 ]

@@ -130,11 +130,8 @@ static int play_value(const char *cmd, const char *a, const char *val, play_opts
     else if (!strcmp(a, "--gamepad-replay"))
         o->pad_script = val;
     else if (!strcmp(a, "--participant")) {
-        if (!hol_rec_id_ok(val)) {
-            cli_error(cmd, 0, "--participant '%.40s' is not 1..63 letters, digits, '.', '_', '-'",
-                      val);
+        if (play_participant(cmd, val))
             return 1;
-        }
         o->participant = val;
     } else if (!strcmp(a, "--seed")) {
         if (!cli_parse_u64(val, &o->seed)) {

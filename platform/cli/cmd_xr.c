@@ -109,11 +109,7 @@ static int xr_options(const char *cmd, int argc, char **argv, xr_opts *o)
                 cli_error(cmd, 0, "--space '%.40s' is neither stage nor local", val);
             o->space = !strcmp(val, "local") ? HOL_XR_SPACE_LOCAL : 0;
         }
-        else if (!hol_rec_id_ok(val)) {
-            cli_error(cmd, 0, "--participant '%.40s' is not 1..63 letters, digits, '.', '_', '-'",
-                      val);
-            bad = 1;
-        } else
+        else if (!(bad = play_participant(cmd, val)))
             o->participant = val;
     }
     if (bad || r < 0)

@@ -253,6 +253,14 @@ void play_out_close(play_out *po)
     po->has_log = po->has_rec = 0;
 }
 
+int play_participant(const char *cmd, const char *id)
+{
+    if (hol_rec_id_ok(id))
+        return 0;
+    cli_error(cmd, 0, "--participant '%.40s' is not 1..63 letters, digits, '.', '_', '-'", id);
+    return 1;
+}
+
 int play_session_open(const char *cmd, play_out *po, const hol_level *levels, int nlevels,
                       const hol_rec_meta *meta, int append, hol_session **out)
 {
