@@ -137,7 +137,8 @@ int cli_parse_size(const char *cmd, const char *val, int *w, int *h);
 /* SIGINT, SIGTERM and SIGHUP are caught (not fatal) from the first call of
  * cli_catch_signals on; cli_caught_signal gives the first one caught (0:
  * none) for a loop to end its session cleanly, and the command then exits
- * with 128 + that number, as the shell would report the signal. */
+ * with 128 + that number, as the shell would report the signal. SIGPIPE is
+ * ignored from then on: a write to a lost peer fails and is reported. */
 void cli_catch_signals(void);
 int cli_caught_signal(void);
 

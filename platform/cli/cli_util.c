@@ -376,6 +376,9 @@ void cli_catch_signals(void)
     sigemptyset(&sa.sa_mask);
     for (int i = 0; i < 3; i++)
         sigaction(sigs[i], &sa, NULL);
+    /* a write to a lost peer (an X display, a closed pipe) fails with EPIPE
+     * and is reported, instead of ending the process unsaved */
+    signal(SIGPIPE, SIG_IGN);
 }
 
 int cli_caught_signal(void)

@@ -9,6 +9,8 @@
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
+#include <signal.h>
+#include <unistd.h>
 
 #include "../../core/hol_input_io.h"
 #include "../../core/hol_session.h"
@@ -367,6 +369,21 @@ static int play_frame_input(play_ctx *c, int open, hol_input *in)
     return 1;
 }
 
+/* The last resort: a swap that never returns (Mesa's software swap spins
+ * on an X connection lost in the microseconds between hol_x11_swap's check
+ * and the swap) ends the process after PLAY_SWAP_LIMIT s; the logs then
+ * keep their rows to the last second, as after a kill -9. */
+#define PLAY_SWAP_LIMIT 10
+static void play_on_alarm(int sig)
+{
+    static const char msg[] = "holonomy play: the display stopped answering during a frame; "
+                              "the logs keep their rows to the last second\n";
+    (void)sig;
+    ssize_t w = write(2, msg, sizeof msg - 1);
+    (void)w;
+    _exit(CLI_EXIT_FAIL);
+}
+
 static int play_draw(play_ctx *c)
 {
     hol_frame_desc fd;
@@ -377,7 +394,10 @@ static int play_draw(play_ctx *c)
         cli_error(c->cmd, 0, "rendering failed: %s", hol_err_str(err));
         return CLI_EXIT_FAIL;
     }
+    signal(SIGALRM, play_on_alarm);
+    alarm(PLAY_SWAP_LIMIT);
     hol_x11_swap(&c->xw);
+    alarm(0);
     play_stats_add(&c->fs, c->o.stats);
     return 0;
 }

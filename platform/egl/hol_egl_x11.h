@@ -200,7 +200,17 @@ static inline int hol_x11_create(hol_x11 *x, int w, int h, const char *title, ch
 
 static inline void hol_x11_swap(hol_x11 *x)
 {
-    if (!x->closed && !hol__x11_lost)
+    /* a connection lost since the poll is found here, before the swap:
+     * Mesa's software swap loops for ever on a lost connection (its put
+     * image sees a maximum request length of 0); NoOp and a read make
+     * Xlib notice (the IO handlers set hol__x11_lost) */
+    if (!x->closed && !hol__x11_lost) {
+        XNoOp(x->dpy);
+        (void)XPending(x->dpy);
+    }
+    if (hol__x11_error || hol__x11_lost)
+        x->closed = 1;
+    if (!x->closed)
         eglSwapBuffers(x->edpy, x->surf);
 }
 
