@@ -68,7 +68,10 @@ RENDER_LIBS ?= -lOSMesa -lEGL -lX11 -lz
 # tests/bench_render*.c: benches that also link the renderer and GL.
 BENCH_RENDER_SRC := $(wildcard tests/bench_render*.c)
 # tests/bench_web.c runs natively and in wasm under tests/web/bench.mjs (bench-web).
-BENCH_SRC := $(filter-out $(BENCH_RENDER_SRC) tests/bench_web.c,$(wildcard tests/bench_*.c))
+# tests/bench_ratio.c runs under tests/bench_ratio.sh: {4,5} 3x3 against the
+# build before issue 20 (the tilings and room sizes), this commit's core/.
+BENCH_SRC := $(filter-out $(BENCH_RENDER_SRC) tests/bench_web.c tests/bench_ratio.c,$(wildcard tests/bench_*.c))
+BENCH_BASE_COMMIT ?= 609d0070eb51369e8de0939d12cbe940bcc0cbf5
 FUZZ_SRC := $(wildcard fuzz/fuzz_*.c)
 
 CORE_OBJ := $(CORE_SRC:%.c=$(BUILD)/%.o)
@@ -249,6 +252,7 @@ fuzz: $(FUZZ_BIN)
 
 bench: $(BENCH_BIN) $(BENCH_RENDER_BIN)
 	@set -e; for b in $(BENCH_BIN) $(BENCH_RENDER_BIN); do $$b; done
+	@CC="$(CC)" sh tests/bench_ratio.sh $(BUILD) $(BENCH_BASE_COMMIT)
 	@if command -v $(EMCC) >/dev/null && [ -x /usr/bin/chromium ] && [ -d tests/web/node_modules ]; \
 	then $(MAKE) -s bench-web; \
 	else echo "== web: skipped (make deps-web installs emscripten, chromium and the npm packages)"; fi

@@ -16,6 +16,7 @@ const char *hol_err_str(hol_err e)
     case HOL_EBUDGET: return "search budget exhausted";
     case HOL_EUNSUPPORTED: return "not supported in this build";
     case HOL_EOPEN: return "cannot open the file";
+    case HOL_EUNREACH: return "no walk inside the room reaches it";
     case HOL_ERR_COUNT: break;
     }
     return "unknown error";

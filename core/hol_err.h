@@ -21,6 +21,7 @@ typedef enum hol_err {
     HOL_EBUDGET,   /* a search stopped at its node or time budget */
     HOL_EUNSUPPORTED, /* a feature this build or platform does not have */
     HOL_EOPEN,     /* a file that cannot be opened (errno says why) */
+    HOL_EUNREACH,  /* no walk inside the room reaches the tile (flat {4,4}) */
     HOL_ERR_COUNT
 } hol_err;
 

@@ -1,5 +1,6 @@
-/* hol_nav.c - the navigator (one block: tables and arena), the search
- * arena, and the fewest room steps to a tile (hol_nav_find). Tours are in
+/* hol_nav.c - the navigator (one block: tables and arena; the radii of
+ * each tiling and room size) and the fewest room steps to a tile
+ * (hol_nav_find). The arena is in hol_nav_arena.c, tours in
  * hol_nav_tour.c, the minimap's field and arrows in hol_nav_field.c.
  *
  * Near targets (tile distance <= the table's trusted radius, radius - 2)
@@ -42,89 +43,207 @@ static void hol__free(void *ptr, void *user)
 
 static size_t hol__align(size_t n) { return (n + 63) & ~(size_t)63; }
 
-hol_err hol_nav_create(const hol_nav_desc *desc, hol_nav **out_nav)
+/* The one block of a navigator: sizes of its parts. */
+typedef struct hol__plan {
+    hol_navtab tab; /* configuration and numbering */
+    int leg_radius;
+    uint32_t cap, hsize;
+    size_t table, legs, far_e, sph, arena, total;
+} hol__plan;
+
+/* Plan a navigator of table radius r and leg radius lr (the desc checked). */
+static hol_err hol__plan_sizes(const hol_nav_desc *d, int r, int lr, hol__plan *p)
+{
+    if (hol_navtab_init(&p->tab, d->tiling_q, d->room_cols, d->room_rows, r))
+        return HOL_EARG;
+    p->leg_radius = lr;
+    p->cap = (uint32_t)d->max_nodes;
+    p->hsize = 16;
+    while (p->hsize < 2 * p->cap)
+        p->hsize <<= 1;
+    p->table = hol__align(hol_navtab_table_bytes(&p->tab));
+    p->arena = hol__align((size_t)p->cap * sizeof(hol__node)) +
+               hol__align((size_t)p->hsize * sizeof(uint32_t)) +
+               hol__align(HOL__FMAX * sizeof(uint32_t)) +
+               hol__align((size_t)p->cap * 4 * sizeof(uint32_t));
+    /* the table's build scratch spans the leg table and the arena (both
+     * unused then); the leg table's build scratch is the arena, and so is
+     * the tours' dynamic program */
+    p->legs = hol__align(hol_navtab_leg_bytes(&p->tab, lr));
+    size_t scratch = hol_navtab_scratch_bytes(&p->tab);
+    if (p->arena + p->legs < scratch)
+        p->arena = hol__align(scratch - p->legs);
+    if (p->arena < hol_navtab_leg_scratch_bytes(&p->tab, lr))
+        p->arena = hol__align(hol_navtab_leg_scratch_bytes(&p->tab, lr));
+    if (p->arena < sizeof(hol__dp))
+        p->arena = hol__align(sizeof(hol__dp));
+    p->far_e = hol__align(HOL__SPHERE_MAX * (size_t)p->tab.nst);
+    p->sph = hol__align(HOL__SPH_CACHE * sizeof(hol__sph));
+    p->total = hol__align(sizeof(hol_nav)) + p->table + p->legs + p->far_e + p->sph + p->arena;
+    return HOL_OK;
+}
+
+/* The leg radius for table radius r: the largest up to HOL__LEG_RADIUS (and
+ * r) whose leg table keeps within HOL_NAV_LEG_BUDGET; 0 if none. */
+static int hol__leg_radius(const hol_nav_desc *d, int r)
+{
+    hol_navtab t;
+    if (hol_navtab_init(&t, d->tiling_q, d->room_cols, d->room_rows, 0))
+        return 0;
+    for (int lr = r < HOL__LEG_RADIUS ? r : HOL__LEG_RADIUS; lr >= 1; lr--)
+        if (hol_navtab_leg_bytes(&t, lr) <= HOL_NAV_LEG_BUDGET)
+            return lr;
+    return 0;
+}
+
+static const uint8_t *hol__gap(const hol_navtab *tab);
+
+/* The plan of desc: its radius, or else the largest radius up to the
+ * default whose navigator keeps within HOL_NAV_BUDGET. */
+static hol_err hol__plan_desc(const hol_nav_desc *d, hol__plan *p)
+{
+    if (d->radius) {
+        int lr = hol__leg_radius(d, d->radius);
+        hol_err err = lr ? hol__plan_sizes(d, d->radius, lr, p) : HOL_EARG;
+        if (!err && (p->total > HOL_NAV_MAX_BYTES || d->radius - hol__gap(&p->tab)[0] < 1))
+            err = HOL_EARG; /* too large, or too small to trust any distance */
+        return err;
+    }
+    for (int r = HOL_NAV_DEFAULT_RADIUS; r >= 3; r--) {
+        int lr = hol__leg_radius(d, r);
+        if (lr && !hol__plan_sizes(d, r, lr, p) && p->total <= HOL_NAV_BUDGET)
+            return HOL_OK;
+    }
+    return HOL_EARG;
+}
+
+/* The desc with its defaults, checked. */
+static hol_err hol__desc(const hol_nav_desc *desc, hol_nav_desc *out)
 {
     hol_nav_desc d;
     if (desc)
         d = *desc;
     else
         memset(&d, 0, sizeof d);
-    if (d.radius == 0)
-        d.radius = HOL_NAV_DEFAULT_RADIUS;
     if (d.max_nodes == 0)
         d.max_nodes = HOL_NAV_DEFAULT_NODES;
     if (d.anytime_margin == 0)
         d.anytime_margin = HOL_NAV_DEFAULT_MARGIN;
-    if (d.radius < 3 || d.radius > HOL_NAV_MAX_RADIUS || d.max_nodes < 1024 ||
-        d.max_nodes > (1u << 26) || d.anytime_margin < 0 ||
-        d.anytime_margin > 255 || (!d.alloc_fn) != (!d.free_fn))
+    hol_room probe;
+    if ((d.radius && (d.radius < 3 || d.radius > HOL_NAV_MAX_RADIUS)) || d.max_nodes < 1024 ||
+        d.max_nodes > (1u << 26) || d.anytime_margin < 0 || d.anytime_margin > 255 ||
+        (!d.alloc_fn) != (!d.free_fn) ||
+        hol_room_start_in(d.tiling_q, d.room_cols, d.room_rows, &probe))
         return HOL_EARG;
     if (!d.alloc_fn) {
         d.alloc_fn = hol__malloc;
         d.free_fn = hol__free;
     }
-    uint32_t cap = (uint32_t)d.max_nodes;
-    uint32_t hsize = 16;
-    while (hsize < 2 * cap)
-        hsize <<= 1;
-    size_t table = hol__align(hol_navtab_table_bytes(d.radius));
-    size_t arena = hol__align((size_t)cap * sizeof(hol__node)) +
-                   hol__align((size_t)hsize * sizeof(uint32_t)) +
-                   hol__align(HOL__FMAX * sizeof(uint32_t)) +
-                   hol__align((size_t)cap * 4 * sizeof(uint32_t));
-    /* the table's build scratch spans the leg table and the arena (both
-     * unused then); the leg table's build scratch is the arena */
-    int leg_radius = d.radius < HOL__LEG_RADIUS ? d.radius : HOL__LEG_RADIUS;
-    size_t legs = hol__align(hol_navtab_leg_bytes(leg_radius));
-    size_t scratch = hol_navtab_scratch_bytes(d.radius);
-    if (arena + legs < scratch)
-        arena = scratch - legs;
-    if (arena < hol_navtab_leg_scratch_bytes(leg_radius))
-        arena = hol_navtab_leg_scratch_bytes(leg_radius);
-    if (arena < hol__nav_tour_scratch())
-        arena = hol__align(hol__nav_tour_scratch());
-    size_t far_e = hol__align(HOL__SPHERE_MAX * 36);
-    size_t sph = hol__align(HOL__SPH_CACHE * sizeof(hol__sph));
-    size_t total = hol__align(sizeof(hol_nav)) + table + legs + far_e + sph + arena;
-    char *block = (char *)d.alloc_fn(total, d.user);
+    *out = d;
+    return HOL_OK;
+}
+
+/* How far beyond a target's distance optimal walks stray, by tiling and
+ * room (the smaller side, then the larger): the main table is trusted to
+ * its radius minus the first, the leg table to its radius minus the second.
+ * Measured at each configuration's radius against a table one tile larger
+ * (make bench repeats it, NAV_BENCH_VERIFY=1; tests/test_nav.c at smaller
+ * radii); the gaps grow a little with the radius, so a smaller table than
+ * the default is trusted less than it could be, never more. {4,5} 3 x 3:
+ * 2 and 3, as always. {4,8} (like the flat grid) never strays: its tables
+ * agree with larger ones everywhere. */
+static const uint8_t hol__gaps[5][6][2] = {
+    /* 3x3    4x4     5x5     3x4     3x5     4x5 */
+    {{0, 0}, {0, 0}, {0, 0}, {0, 0}, {0, 0}, {0, 0}}, /* {4,4} */
+    {{2, 3}, {3, 4}, {4, 5}, {4, 4}, {3, 4}, {4, 5}}, /* {4,5} */
+    {{3, 3}, {3, 4}, {4, 5}, {4, 4}, {4, 4}, {4, 5}}, /* {4,6} */
+    {{3, 4}, {4, 5}, {4, 6}, {4, 4}, {4, 5}, {5, 6}}, /* {4,7} */
+    {{0, 0}, {0, 0}, {0, 0}, {0, 0}, {0, 0}, {0, 0}}, /* {4,8} */
+};
+
+static const uint8_t *hol__gap(const hol_navtab *tab)
+{
+    int a = tab->cols < tab->rows ? tab->cols : tab->rows;
+    int b = tab->cols < tab->rows ? tab->rows : tab->cols;
+    static const int8_t idx[3][3] = {{0, 3, 4}, {-1, 1, 5}, {-1, -1, 2}};
+    return hol__gaps[tab->q - 4][idx[a - 3][b - 3]];
+}
+
+/* The navigator's fields over its block (the table built). */
+static void hol__nav_init(hol_nav *nav, const hol_nav_desc *d, const hol__plan *pl, char *p)
+{
+    char *arena_p = p + pl->table + pl->legs + pl->far_e + pl->sph;
+    /* touch the arena once here (the table build used only part of it as
+     * scratch): the first far query paid about 8 ms of page faults */
+    memset(arena_p, 0, pl->arena);
+    nav->nodes = (hol__node *)(void *)arena_p;
+    nav->hash = (uint32_t *)(void *)(arena_p + hol__align((size_t)pl->cap * sizeof(hol__node)));
+    nav->bucket = (uint32_t *)(void *)((char *)nav->hash +
+                                       hol__align((size_t)pl->hsize * sizeof(uint32_t)));
+    nav->ent = (uint32_t *)(void *)((char *)nav->bucket + hol__align(HOL__FMAX * sizeof(uint32_t)));
+    nav->ent_cap = 2 * pl->cap;
+    nav->cap = pl->cap;
+    nav->hash_mask = pl->hsize - 1;
+    /* in the flat grid every walk stays on the room's tiles, all within
+     * (cols - 1) + (rows - 1) <= 8 of each other: the tables are exact to
+     * their radii (gaps 0) */
+    const uint8_t *gap = hol__gap(&nav->tab);
+    nav->trust = nav->tab.radius - gap[0]; /* at least 1 (hol__plan_desc) */
+    nav->leg = (uint8_t *)(p + pl->table);
+    nav->far_e = (uint8_t *)(p + pl->table + pl->legs);
+    nav->sph = (hol__sph *)(void *)(p + pl->table + pl->legs + pl->far_e);
+    nav->leg_radius = pl->leg_radius;
+    nav->leg_trust = pl->leg_radius - gap[1];
+    nav->margin = d->anytime_margin;
+    int t = nav->trust < nav->tab.radius ? nav->trust : nav->tab.radius - 1;
+    t = t < 1 ? 1 : t;
+    nav->far_base16 = nav->tab.mean16_at[t];
+    nav->far_slope16 = nav->tab.mean16_at[t] - nav->tab.mean16_at[t - 1];
+    for (int s = 0; s < nav->tab.nst; s++) {
+        int cell = s % nav->tab.ncell;
+        nav->par[s] = (uint8_t)((s / nav->tab.ncell + cell % nav->tab.cols + cell / nav->tab.cols) & 1);
+    }
+    for (size_t i = 0; i < (size_t)nav->tab.per * nav->tab.off[nav->trust + 1]; i++)
+        nav->partial |= nav->tab.cost[i] == 255;
+    nav->bytes = pl->total;
+}
+
+hol_err hol_nav_create(const hol_nav_desc *desc, hol_nav **out_nav)
+{
+    hol_nav_desc d;
+    hol__plan pl;
+    hol_err err = hol__desc(desc, &d);
+    if (!err)
+        err = hol__plan_desc(&d, &pl);
+    if (err)
+        return err;
+    char *block = (char *)d.alloc_fn(pl.total, d.user);
     if (!block)
         return HOL_ENOMEM;
-    hol_nav *nav = (hol_nav *)block;
+    hol_nav *nav = (hol_nav *)(void *)block;
     memset(nav, 0, sizeof *nav);
     char *p = block + hol__align(sizeof(hol_nav));
-    char *arena_p = p + table + legs + far_e + sph;
-    hol_err err = hol_navtab_build(&nav->tab, d.radius, p, p + table);
+    nav->tab = pl.tab;
+    err = hol_navtab_build(&nav->tab, p, p + pl.table);
     if (err) {
         d.free_fn(block, d.user);
         return err;
     }
-    /* touch the arena once here (the table build used only part of it as
-     * scratch): the first far query paid about 8 ms of page faults */
-    memset(arena_p, 0, arena);
-    nav->nodes = (hol__node *)arena_p;
-    nav->hash = (uint32_t *)(arena_p + hol__align((size_t)cap * sizeof(hol__node)));
-    nav->bucket = (uint32_t *)((char *)nav->hash +
-                               hol__align((size_t)hsize * sizeof(uint32_t)));
-    nav->ent = (uint32_t *)((char *)nav->bucket +
-                            hol__align(HOL__FMAX * sizeof(uint32_t)));
-    nav->ent_cap = 2 * cap;
-    nav->cap = cap;
-    nav->hash_mask = hsize - 1;
-    nav->trust = d.radius - 2;
-    nav->leg = (uint8_t *)(p + table);
-    nav->far_e = (uint8_t *)(p + table + legs);
-    nav->sph = (hol__sph *)(void *)(p + table + legs + far_e);
-    nav->leg_radius = leg_radius;
-    nav->leg_trust = leg_radius - 3;
-    nav->margin = d.anytime_margin;
-    nav->far_base16 = nav->tab.mean16_at[nav->trust];
-    nav->far_slope16 = nav->tab.mean16_at[nav->trust] - nav->tab.mean16_at[nav->trust - 1];
-    nav->bytes = total;
+    hol__nav_init(nav, &d, &pl, p);
     nav->block = block;
     nav->free_fn = d.free_fn;
     nav->user = d.user;
     *out_nav = nav;
     return HOL_OK;
+}
+
+size_t hol_nav_memory_for(const hol_nav_desc *desc)
+{
+    hol_nav_desc d;
+    hol__plan pl;
+    if (hol__desc(desc, &d) || hol__plan_desc(&d, &pl))
+        return 0;
+    return pl.total;
 }
 
 void hol_nav_destroy(hol_nav *nav)
@@ -137,144 +256,18 @@ size_t hol_nav_memory(const hol_nav *nav) { return nav->bytes; }
 
 int hol_nav_table_exact_radius(const hol_nav *nav) { return nav->trust; }
 
-/* ---- arena: nodes, hash of states, bucket queue on f ---- */
+int hol_nav_table_radius(const hol_nav *nav) { return nav->tab.radius; }
 
-static uint64_t hol__node_hash(const hol__node *n);
+int hol_nav_tour_exact_radius(const hol_nav *nav) { return nav->leg_trust; }
 
-/* Clearing the whole hash (2 MB at the defaults) cost more than a small
- * query; after a search only the slots of its nodes are cleared (found by
- * rehashing each node and probing for its id). */
-void hol__nav_reset(hol_nav *nav)
+void hol_nav_geometry(const hol_nav *nav, int *out_q, int *out_cols, int *out_rows)
 {
-    if (nav->hash_dirty) {
-        memset(nav->hash, 0, ((size_t)nav->hash_mask + 1) * sizeof(uint32_t));
-        nav->hash_dirty = 0;
-    } else {
-        for (uint32_t i = 0; i < nav->count; i++) {
-            uint32_t h = (uint32_t)hol__node_hash(&nav->nodes[i]) & nav->hash_mask;
-            while (nav->hash[h] != i + 1)
-                h = (h + 1) & nav->hash_mask;
-            nav->hash[h] = 0;
-        }
-    }
-    nav->count = 0;
-    nav->ent_n = 0;
-    for (int i = 0; i < HOL__FMAX; i++)
-        nav->bucket[i] = HOL__NIL;
-    nav->fmin = HOL__FMAX;
-}
-
-static uint64_t hol__node_hash(const hol__node *n)
-{
-    uint64_t h;
-    if (n->flags & HOL__INSIDE)
-        h = (uint64_t)n->u.idx * UINT64_C(0x9E3779B97F4A7C15);
-    else
-        h = hol_tile_hash(n->u.t);
-    h ^= (uint64_t)(n->o | n->cell << 2 | (n->flags & HOL__MASK) << 6) *
-         UINT64_C(0xD6E8FEB86659FD93);
-    h ^= h >> 29;
-    return h;
-}
-
-static int hol__node_same(const hol__node *a, const hol__node *b)
-{
-    if (a->o != b->o || a->cell != b->cell || a->flags != b->flags)
-        return 0;
-    if (a->flags & HOL__INSIDE)
-        return a->u.idx == b->u.idx;
-    return hol_tile_eq(a->u.t, b->u.t);
-}
-
-/* Find the node equal to *n, or add it. *out_new tells which. HOL__NIL when
- * the arena is full. */
-uint32_t hol__nav_intern(hol_nav *nav, const hol__node *n, int *out_new)
-{
-    uint32_t h = (uint32_t)hol__node_hash(n) & nav->hash_mask;
-    for (;;) {
-        uint32_t e = nav->hash[h];
-        if (e == 0)
-            break;
-        if (hol__node_same(&nav->nodes[e - 1], n)) {
-            *out_new = 0;
-            return e - 1;
-        }
-        h = (h + 1) & nav->hash_mask;
-    }
-    if (nav->count >= nav->cap)
-        return HOL__NIL;
-    uint32_t id = nav->count++;
-    nav->nodes[id] = *n;
-    nav->hash[h] = id + 1;
-    *out_new = 1;
-    return id;
-}
-
-uint32_t hol__nav_relax(hol_nav *nav, const hol__node *nx, uint32_t parent, int d,
-                        int g, int *out_full)
-{
-    int isnew;
-    if (g >= HOL__FMAX / 2)
-        return HOL__NIL;
-    uint32_t nid = hol__nav_intern(nav, nx, &isnew);
-    if (nid == HOL__NIL) {
-        *out_full = 1;
-        return HOL__NIL;
-    }
-    hol__node *q = &nav->nodes[nid];
-    if (!isnew && q->g <= g)
-        return HOL__NIL;
-    q->g = (uint16_t)g;
-    q->parent = parent;
-    q->dir = (uint8_t)d;
-    return nid;
-}
-
-/* Queue node id under its f; 0 when the entry pool is full. */
-int hol__nav_push(hol_nav *nav, uint32_t id)
-{
-    if (nav->ent_n >= nav->ent_cap)
-        return 0;
-    uint32_t f = nav->nodes[id].f, e = nav->ent_n++;
-    nav->ent[2 * e] = id;
-    nav->ent[2 * e + 1] = nav->bucket[f];
-    nav->bucket[f] = e;
-    if (f < nav->fmin)
-        nav->fmin = f;
-    return 1;
-}
-
-/* Pop the newest node of the lowest f; skips entries made stale by a
- * later improvement (the node's f no longer matches its bucket). */
-uint32_t hol__nav_pop(hol_nav *nav)
-{
-    while (nav->fmin < HOL__FMAX) {
-        uint32_t e = nav->bucket[nav->fmin];
-        if (e == HOL__NIL) {
-            nav->fmin++;
-            continue;
-        }
-        uint32_t id = nav->ent[2 * e];
-        nav->bucket[nav->fmin] = nav->ent[2 * e + 1];
-        if (nav->nodes[id].f == nav->fmin)
-            return id;
-    }
-    return HOL__NIL;
-}
-
-int hol__nav_cell_step(int cell, int dir)
-{
-    static const int8_t dc[4] = {0, -1, 0, 1}, dr[4] = {-1, 0, 1, 0};
-    int c = cell % 3 + dc[dir], r = cell / 3 + dr[dir];
-    if (c < 0 || c > 2 || r < 0 || r > 2)
-        return -1;
-    return c + 3 * r;
-}
-
-int hol__nav_room_ok(const hol_room *r)
-{
-    return r && r->orient < 4 && r->col < 3 && r->row < 3 &&
-           hol_tile_dist0(r->tile) <= HOL_TILE_MAX_DIST;
+    if (out_q)
+        *out_q = nav->tab.q;
+    if (out_cols)
+        *out_cols = nav->tab.cols;
+    if (out_rows)
+        *out_rows = nav->tab.rows;
 }
 
 /* The user's relative state: tile seen from `target` (target heading = N)
@@ -290,27 +283,6 @@ static hol_err hol__relate(const hol_room *user, hol_tile target, hol_tile *out_
     return HOL_OK;
 }
 
-
-void hol__nav_emit(hol__walk *w, int dir)
-{
-    if (w->n < w->cap)
-        w->dirs[w->n++] = (uint8_t)dir;
-    else
-        w->overflow = 1;
-}
-
-static int hol__tab_cost(const void *tab, uint32_t idx, int o, int cell)
-{
-    return hol_navtab_cost((const hol_navtab *)tab, idx, o, cell);
-}
-
-/* Descend the table from (idx, o, cell) to cost 0; returns the steps taken
- * (the table cost). */
-int hol__nav_descend(const hol_navtab *tab, uint32_t idx, int o, int cell,
-                        hol__walk *w)
-{
-    return hol__descend(tab, UINT32_MAX, hol__tab_cost, tab, idx, o, cell, w);
-}
 
 /* Admissible lower bound for a node outside the trusted radius: it must
  * first cross the trusted sphere. */
@@ -362,8 +334,10 @@ static hol_err hol__chain(hol_nav *nav, hol_room *room, hol_tile target,
         uint32_t idx = hol_navtab_rank(&nav->tab, u);
         if (idx == HOL_NAVTAB_NONE)
             return HOL_EARG;
+        if (hol_navtab_cost(&nav->tab, idx, o, room->col + nav->tab.cols * room->row) == 255)
+            return HOL_EUNREACH; /* {4,8}: a waypoint off the room's reach */
         size_t before = w->n;
-        hol__nav_descend(&nav->tab, idx, o, room->col + 3 * room->row, w);
+        hol__nav_descend(&nav->tab, idx, o, room->col + nav->tab.cols * room->row, w);
         if (w->overflow)
             return HOL_ENOMEM;
         for (size_t i = before; i < w->n; i++) {
@@ -375,26 +349,11 @@ static hol_err hol__chain(hol_nav *nav, hol_room *room, hol_tile target,
     return HOL_ENOMEM;
 }
 
-/* Path of room steps from the search root to node id, appended to w. */
-void hol__nav_emit_path(hol_nav *nav, uint32_t id, hol__walk *w)
-{
-    size_t start = w->n;
-    for (uint32_t x = id; nav->nodes[x].parent != HOL__NIL; x = nav->nodes[x].parent)
-        hol__nav_emit(w, nav->nodes[x].dir);
-    if (w->overflow)
-        return;
-    for (size_t i = start, j = w->n; i + 1 < j; i++, j--) {
-        uint8_t t = w->dirs[i];
-        w->dirs[i] = w->dirs[j - 1];
-        w->dirs[j - 1] = t;
-    }
-}
-
 /* Successor of a nav node in room direction d (relative tile stepping). */
 static int hol__nav_succ(const hol_nav *nav, const hol__node *n, int d,
                          hol__node *out)
 {
-    int c2 = hol__nav_cell_step(n->cell, d);
+    int c2 = hol__nav_cell_step(&nav->tab, n->cell, d);
     if (c2 < 0)
         return 0;
     int turn = (n->o + d) & 3, arr;
@@ -457,7 +416,7 @@ static hol_err hol__anytime(hol_nav *nav, const hol_room *start, hol_tile u, int
         root.u.t = u;
     }
     root.o = (uint8_t)o;
-    root.cell = (uint8_t)(start->col + 3 * start->row);
+    root.cell = (uint8_t)(start->col + nav->tab.cols * start->row);
     root.parent = HOL__NIL;
     int v, isnew;
     int h = hol__nav_h(nav, &root, &v);
@@ -524,23 +483,30 @@ hol_err hol_nav_find(hol_nav *nav, const hol_room *start, hol_tile target,
                      size_t budget, uint8_t *out_walk, size_t cap,
                      hol_nav_result *out_result)
 {
-    if (!nav || !hol__nav_room_ok(start) || !out_walk || !out_result ||
-        hol_tile_dist0(target) > HOL_TILE_MAX_DIST)
+    if (!nav || !hol__nav_room_ok(nav, start) || !out_walk || !out_result ||
+        !hol__nav_tile_ok(nav, target))
         return HOL_EARG;
     hol__walk w = {out_walk, cap, 0, 0};
     hol_nav_result res = {0, 0, 0};
     hol_tile u;
     int o;
     hol_err err = hol__relate(start, target, &u, &o);
+    int flat = nav->tab.q == 4;
     if (err == HOL_ERANGE) {
-        /* farther than a tile word reaches: waypoints only */
+        /* farther than a tile word reaches: waypoints only (none in the
+         * flat grid, whose rooms reach their own tiles only) */
         hol_room room = *start;
-        err = hol__chain(nav, &room, target, &w);
+        err = flat ? HOL_EUNREACH : hol__chain(nav, &room, target, &w);
     } else if (!err && hol_tile_dist0(u) <= nav->trust) {
         uint32_t idx = hol_navtab_rank(&nav->tab, u);
-        hol__nav_descend(&nav->tab, idx, o, start->col + 3 * start->row, &w);
+        int cell = start->col + nav->tab.cols * start->row;
+        if (hol_navtab_cost(&nav->tab, idx, o, cell) == 255)
+            return HOL_EUNREACH; /* {4,4} and {4,8}: no walk in the room reaches it */
+        hol__nav_descend(&nav->tab, idx, o, cell, &w);
         res.exact = 1;
         err = w.overflow ? HOL_ENOMEM : HOL_OK;
+    } else if (!err && flat) {
+        err = HOL_EUNREACH; /* beyond the room's span */
     } else if (!err) {
         if (budget == 0 || budget > nav->cap)
             budget = nav->cap;

@@ -26,6 +26,18 @@
  * - hol_nav_field and hol_nav_direction do not need a hol_nav: they are pure
  *   functions of tiles (no allocation, caller buffers).
  * - A hol_nav is not thread safe (one arena); use one per thread.
+ * - Geometry: a navigator serves one tiling {4,Q} and one room size C x R
+ *   (desc.tiling_q, room_cols, room_rows; zero: {4,5}, 3 x 3). Room states
+ *   and tiles of another tiling or room size are HOL_EARG. Radii: without
+ *   desc.radius, the largest table radius up to 14 whose navigator keeps
+ *   within HOL_NAV_BUDGET (tables, leg table, arena; the leg table up to
+ *   radius 10 and HOL_NAV_LEG_BUDGET): radius 14 for {4,5} 3 x 3, as it
+ *   always was; hol_nav_table_exact_radius and hol_nav_tour_exact_radius
+ *   tell what a navigator got (the README lists every configuration). The
+ *   numbers above are those of {4,5} 3 x 3.
+ * - The flat grid {4,4}: no holonomy, so a room reaches exactly its own
+ *   C x R tiles; the tables cover them whole (exact to their radius), and
+ *   a target or key off them is HOL_EUNREACH.
  */
 #ifndef HOL_NAV_H
 #define HOL_NAV_H
@@ -45,10 +57,16 @@
 /* Longest walk any query writes; out_walk buffers of this size always fit. */
 #define HOL_NAV_WALK_MAX 4096
 #define HOL_NAV_TOUR_MAX_KEYS 5
-#define HOL_NAV_TOUR_EXACT_RADIUS 7
+#define HOL_NAV_TOUR_EXACT_RADIUS 7 /* {4,5} 3 x 3 (hol_nav_tour_exact_radius) */
+/* Memory the default radii keep within, and the most an explicit radius
+ * may take. */
+#define HOL_NAV_BUDGET ((size_t)60 << 20)
+#define HOL_NAV_LEG_BUDGET ((size_t)16 << 20)
+#define HOL_NAV_MAX_BYTES ((size_t)512 << 20)
 
 typedef struct hol_nav_desc {
-    int radius;        /* cost table radius in tiles (3..15); 0: 14 */
+    int radius;        /* cost table radius in tiles (3..15); 0: the largest
+                        * up to 14 within HOL_NAV_BUDGET (14 in {4,5} 3 x 3) */
     size_t max_nodes;  /* search arena capacity in nodes (1024..2^26); 0: 2^18 */
     int anytime_margin; /* anytime search explores f up to best + this
                          * (steps, 1..255); 0: 16 */
@@ -56,22 +74,35 @@ typedef struct hol_nav_desc {
     void *(*alloc_fn)(size_t size, void *user);
     void (*free_fn)(void *ptr, void *user);
     void *user;
+    int tiling_q;      /* the tiling {4,Q}, 4..8; 0: 5 */
+    int room_cols;     /* the room's columns and rows, 3..5; 0: 3 */
+    int room_rows;
 } hol_nav_desc;
 
 typedef struct hol_nav hol_nav; /* opaque */
 
-/* Build the cost table (about 0.2 s; 30 MB in all at the defaults: table
+/* Build the cost table (about 0.5 s; 30 MB in all at the defaults: table
  * 11 MB, leg table 5 MB, arena 32 bytes a node plus 16 of hash and queue,
  * at least the table's build scratch). Errors:
- * HOL_EARG (radius out of range), HOL_ENOMEM (the allocation failed). */
+ * HOL_EARG (radius out of range, a bad tiling or room size, an explicit
+ * radius over HOL_NAV_MAX_BYTES), HOL_ENOMEM (the allocation failed). */
 hol_err hol_nav_create(const hol_nav_desc *desc, hol_nav **out_nav);
 void hol_nav_destroy(hol_nav *nav);
 
-/* Bytes held by the navigator (tables + arena). */
+/* Bytes held by the navigator (tables + arena); hol_nav_memory_for: what
+ * hol_nav_create(desc) would allocate (0 for a bad desc). */
 size_t hol_nav_memory(const hol_nav *nav);
-/* The trusted radius, desc.radius - 2 (12 by default): targets within it
- * are answered from the table alone (no search) and flagged exact (see the
- * contract above for what backs that). */
+size_t hol_nav_memory_for(const hol_nav_desc *desc);
+/* The navigator's tiling Q and room size (any output may be NULL). */
+void hol_nav_geometry(const hol_nav *nav, int *out_q, int *out_cols, int *out_rows);
+/* The cost table's radius; the tours' trusted radius (legs between keys
+ * within it are exact: 7 in {4,5} 3 x 3). */
+int hol_nav_table_radius(const hol_nav *nav);
+int hol_nav_tour_exact_radius(const hol_nav *nav);
+/* The trusted radius, the table's radius - 2 (12 by default; the radius
+ * itself in {4,4}): targets within it are answered from the table alone
+ * (no search) and flagged exact (see the contract above for what backs
+ * that). */
 int hol_nav_table_exact_radius(const hol_nav *nav);
 
 typedef struct hol_nav_result {
@@ -85,8 +116,10 @@ typedef struct hol_nav_result {
  * Within the trusted radius the answer is exact and budget is ignored.
  * Beyond: budget is the node budget of the anytime search (0: the arena
  * capacity); the best walk found is returned with exact = 0.
- * Errors: HOL_EARG (bad arguments), HOL_ENOMEM (cap too small for the
- * walk), HOL_ERANGE (a tile beyond the reach of tile words on the way). */
+ * Errors: HOL_EARG (bad arguments, another tiling or room size),
+ * HOL_ENOMEM (cap too small for the walk), HOL_ERANGE (a tile beyond the
+ * reach of tile words on the way), HOL_EUNREACH (no walk inside the room
+ * reaches the target: only in {4,4}, off the room's tiles). */
 hol_err hol_nav_find(hol_nav *nav, const hol_room *start, hol_tile target,
                      size_t budget, uint8_t *out_walk, size_t cap,
                      hol_nav_result *out_result);
@@ -112,7 +145,8 @@ hol_err hol_nav_find(hol_nav *nav, const hol_room *start, hol_tile target,
  *   otherwise the bound's tour (exact = 0), or without one, keys nearest
  *   first with hol_nav_find legs (exact = 0).
  * A key under the start counts as collected. nkeys = 0 is hol_nav_find.
- * Errors: as hol_nav_find; HOL_EARG for nkeys outside 0..5. */
+ * Errors: as hol_nav_find (HOL_EUNREACH: a key or the chest that no walk
+ * reaches); HOL_EARG for nkeys outside 0..5. */
 /* Build the state-to-state leg table of exact tours now (about 80 ms once)
  * instead of in the first hol_nav_tour call, so no tour pays for it; the
  * app calls it at create. Idempotent. */
@@ -131,8 +165,10 @@ typedef struct hol_nav_cell {
     int16_t hot;       /* tile distance to the nearest objective; -1 if none */
 } hol_nav_cell;
 
-/* Entries hol_nav_field writes for a radius (0..8): 1, 5, 17, 45, 109, ... */
+/* Entries hol_nav_field writes for a radius (0..8): 1, 5, 17, 45, 109, ...
+ * in {4,5}; hol_nav_field_count_q in {4,q}. */
 size_t hol_nav_field_count(int radius);
+size_t hol_nav_field_count_q(int q, int radius);
 
 /* Fill out_cells (cap entries) with the field around user (tile and room
  * orientation); objectives: n tiles (n may be 0: every hot is -1). Entries
@@ -148,7 +184,8 @@ hol_err hol_nav_field(const hol_room *user, int radius, const hol_tile *objectiv
  * user's tile to the objective's centre, and the hyperbolic distance between
  * the centres (curvature radius units). Correct for every pair of tiles in
  * reach (precision depends only on their distance). The angle is 0 when the
- * objective is the user's tile. Either output may be NULL. */
+ * objective is the user's tile. Either output may be NULL. In {4,4} the
+ * distance is in tile sides. */
 hol_err hol_nav_direction(const hol_room *user, hol_tile objective,
                           double *out_angle, double *out_dist);
 

@@ -11,22 +11,28 @@
 
 #define HOL__FIELD_MAX_RADIUS 8
 
-size_t hol_nav_field_count(int radius)
+size_t hol_nav_field_count_q(int q, int radius)
 {
     if (radius < 0 || radius > HOL__FIELD_MAX_RADIUS)
         return 0;
-    return hol_navtab_count(radius);
+    return hol_navtab_count_q(q, radius);
 }
+
+size_t hol_nav_field_count(int radius) { return hol_nav_field_count_q(5, radius); }
 
 hol_err hol_nav_field(const hol_room *user, int radius, const hol_tile *objectives,
                       size_t n, hol_nav_cell *out_cells, size_t cap,
                       size_t *out_n)
 {
-    if (!hol__nav_room_ok(user) || radius < 0 || radius > HOL__FIELD_MAX_RADIUS ||
+    if (!hol_room_ok(user) || radius < 0 || radius > HOL__FIELD_MAX_RADIUS ||
         (n && !objectives) || !out_cells || !out_n)
         return HOL_EARG;
+    int q = hol_tile_q(user->tile);
+    for (size_t j = 0; j < n; j++)
+        if (hol_tile_q(objectives[j]) != q)
+            return HOL_EARG;
     hol_navtab ix;
-    hol_navtab_init_index(&ix, radius);
+    hol_navtab_init(&ix, q, 0, 0, radius);
     if (cap < ix.count)
         return HOL_ENOMEM;
     for (uint32_t i = 0; i < ix.count; i++) {
@@ -56,7 +62,7 @@ hol_err hol_nav_field(const hol_room *user, int radius, const hol_tile *objectiv
 hol_err hol_nav_direction(const hol_room *user, hol_tile objective,
                           double *out_angle, double *out_dist)
 {
-    if (!hol__nav_room_ok(user) || hol_tile_dist0(objective) > HOL_TILE_MAX_DIST)
+    if (!hol_room_ok(user) || hol_tile_q(objective) != hol_tile_q(user->tile))
         return HOL_EARG;
     double angle, dist;
     hol_err err = hol_hyper_pos(user->tile, user->orient, objective, NULL, &angle,

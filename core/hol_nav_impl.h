@@ -1,10 +1,20 @@
-/* hol_nav_impl.h - internals shared by hol_nav.c (navigator, arena, fewest
- * steps), hol_nav_tour.c (keys and chest) and hol_nav_field.c (minimap).
+/* hol_nav_impl.h - internals shared by the guidance files.
  *
- * Contract: not a public header; names are hol__nav_*. The navigator is one
+ * Contract: not a public header; names are hol__*. The navigator is one
  * block from hol_nav_create: the cost table, the tour leg table and the
  * search arena (nodes, hash of states, bucket queue of open entries). The
  * arena is reset per query; nothing here allocates.
+ *
+ * The files, lowest first (each calls only the ones above it, never one
+ * below): hol_nav_table.c (tables), hol_nav_arena.c (the arena, walks,
+ * descents), hol_nav_legs.c (tour legs), hol_nav.c (the navigator and
+ * hol_nav_find), hol_nav_tour.c (tours), hol_nav_field.c (minimap field
+ * and arrows: pure functions of tiles). hol_nav.c sizes the tours' scratch
+ * from the struct below, without calling into hol_nav_tour.c.
+ *
+ * Room states: s = ncell * o + cell (o the room's north relative to the
+ * tile's heading, cell = col + cols * row), nst = 4 * ncell of them on a
+ * tile (36 in a 3 x 3 room, at most HOL__MAXST).
  */
 #ifndef HOL_NAV_IMPL_H
 #define HOL_NAV_IMPL_H
@@ -16,9 +26,10 @@
 #include "hol_nav_table.h"
 
 #define HOL__FMAX 8192
+#define HOL__MAXST HOL_NAVTAB_MAX_NST /* room states a tile, at most */
 #define HOL__LEG_RADIUS 10 /* tour legs exact between tiles within 7 */
 #define HOL__NIL UINT32_MAX
-#define HOL__SPHERE_MAX 1024 /* tiles at the leg table's trusted radius (780 at 7) */
+#define HOL__SPHERE_MAX 2048 /* tiles at the leg table's trusted radius (780 at 7; 1508 in {4,6}) */
 #define HOL__SPH_CACHE 8 /* spheres kept (hol_nav_legs.c), > HOL_NAV_TOUR_MAX_KEYS */
 #define HOL__INSIDE 0x80u
 #define HOL__MASK 0x3fu
@@ -34,8 +45,11 @@ typedef struct hol__node {
 } hol__node;
 
 struct hol_nav {
-    hol_navtab tab;
+    hol_navtab tab; /* and the configuration: tab.q, tab.cols, tab.rows */
+    uint8_t par[HOL__MAXST]; /* (o + col + row) mod 2 of each room state */
     int trust;          /* table costs within it are exact */
+    int partial;        /* 1: some room states reach some tiles within the
+                         * trusted radius never ({4,4}, {4,8}) */
     int far_base16;     /* extrapolation: 16 x mean cost at trust */
     int far_slope16;    /* 16 x mean cost per tile */
     int margin;         /* anytime: explore f up to best + margin */
@@ -51,7 +65,7 @@ struct hol_nav {
                          * scratch or as the tour's table): clear it whole */
     uint8_t *leg;       /* tour leg table (state to state), built lazily */
     int leg_radius, leg_trust, leg_ready;
-    uint8_t *far_e;     /* HOL__SPHERE_MAX x 36: least leg from a tile on the
+    uint8_t *far_e;     /* HOL__SPHERE_MAX x nst: least leg from a tile on the
                          * leg table's trusted sphere to each goal state,
                          * filled with the leg table (hol__far_e_fill) */
     struct hol__sph *sph; /* HOL__SPH_CACHE spheres around recent keys */
@@ -97,23 +111,26 @@ typedef struct hol__sph {
     hol__rel from_key[HOL__SPHERE_MAX]; /* hol__rel_of(tile[x], key) */
 } hol__sph;
 
-/* Room states: 9 * orientation (relative to the tile's heading) + cell.
- * A leg from every source state in src to every state on a key: lb a lower
- * bound on the fewest steps, ub the steps of a walk (255: none found),
- * that walk through (vt[vx], vm) or HOL__VIA_*. ub == lb: exact. */
+/* A leg from every source state in src to every state on a key: lb a
+ * lower bound on the fewest steps, ub the steps of a walk (255: none
+ * found), that walk through (vt[vx], vm) or HOL__VIA_*. ub == lb: exact.
+ * The tables are nst x nst, row s (a source state) at s * nst
+ * (HOL__LX(L, s, s2)), so a 3 x 3 room's fill a compact corner. */
 typedef struct hol__legb {
-    uint8_t ub[36][36], lb[36][36];
-    uint16_t vx[36][36];
-    uint8_t vm[36][36];
+    int nst;
+    uint8_t ub[HOL__MAXST * HOL__MAXST], lb[HOL__MAXST * HOL__MAXST];
+    uint16_t vx[HOL__MAXST * HOL__MAXST];
+    uint8_t vm[HOL__MAXST * HOL__MAXST];
     const hol_tile *vt;
     hol_tile mid;
 } hol__legb;
+#define HOL__LX(L, s, s2) ((size_t)(s) * (size_t)(L)->nst + (size_t)(s2))
 
 /* The same from every room state on a key to stand on the chest's tile. */
 typedef struct hol__chestb {
-    uint8_t ub[36], lb[36];
-    uint16_t vx[36];
-    uint8_t vm[36];
+    uint8_t ub[HOL__MAXST], lb[HOL__MAXST];
+    uint16_t vx[HOL__MAXST];
+    uint8_t vm[HOL__MAXST];
     const hol_tile *vt;
     hol_tile mid;
 } hol__chestb;
@@ -121,11 +138,17 @@ typedef struct hol__chestb {
 /* Scratch of the sphere passes. */
 typedef struct hol__legx {
     hol__rel r;
-    uint8_t d, c1[36], u2[36];
+    uint8_t d, c1[HOL__MAXST], u2[HOL__MAXST];
 } hol__legx;
 typedef struct hol__legscr {
     hol__legx x[HOL__SPHERE_MAX];
     uint16_t key[HOL__SPHERE_MAX], order[HOL__SPHERE_MAX];
+    /* a sphere tile's legs to the key (hol_nav_legs.c's hol__fan) */
+    struct hol__fanbuf {
+        uint8_t p2[HOL__MAXST][HOL__MAXST], z2[HOL__MAXST][HOL__MAXST];
+        int nz[HOL__MAXST];
+    } fan;
+    uint8_t c2[HOL__MAXST];
 } hol__legscr;
 
 /* nav->far_e, once the leg table is built (hol_nav_prepare_tours). */
@@ -155,7 +178,7 @@ typedef struct hol__walk {
     int overflow;
 } hol__walk;
 
-/* Shared internals (hol_nav.c), used by hol_nav_tour.c and hol_nav_field.c. */
+/* ---- the arena, walks and descents (hol_nav_arena.c) ---- */
 void hol__nav_reset(hol_nav *nav);
 /* Find the node equal to *n, or add it; HOL__NIL when the arena is full. */
 uint32_t hol__nav_intern(hol_nav *nav, const hol__node *n, int *out_new);
@@ -169,9 +192,20 @@ uint32_t hol__nav_relax(hol_nav *nav, const hol__node *nx, uint32_t parent, int 
 int hol__nav_push(hol_nav *nav, uint32_t id);
 /* The newest node of the lowest f (stale entries skipped), or HOL__NIL. */
 uint32_t hol__nav_pop(hol_nav *nav);
-/* Cell (col + 3 * row) after a room step, -1 outside the room. */
-int hol__nav_cell_step(int cell, int dir);
-int hol__nav_room_ok(const hol_room *r);
+/* Cell after a room step, -1 outside the room. */
+static inline int hol__nav_cell_step(const hol_navtab *tab, int cell, int dir)
+{
+    return tab->cellnb[cell][dir & 3];
+}
+/* A valid room state of the navigator's configuration (tiling, size). */
+int hol__nav_room_ok(const hol_nav *nav, const hol_room *r);
+/* Its room state s = ncell * orient + col + cols * row. */
+static inline int hol__nav_state(const hol_nav *nav, const hol_room *r)
+{
+    return nav->tab.ncell * r->orient + r->col + nav->tab.cols * r->row;
+}
+/* A tile of the navigator's tiling within the reach. */
+int hol__nav_tile_ok(const hol_nav *nav, hol_tile t);
 void hol__nav_emit(hol__walk *w, int dir);
 /* Descend the tile table from (idx, o, cell) to cost 0; returns the steps. */
 int hol__nav_descend(const hol_navtab *tab, uint32_t idx, int o, int cell, hol__walk *w);
@@ -187,7 +221,7 @@ static inline int hol__descend(const hol_navtab *tab, uint32_t n, hol__cost_fn c
     while (v > 0 && v < 255) {
         int moved = 0;
         for (int d = 0; d < 4 && !moved; d++) {
-            int c2 = hol__nav_cell_step(cell, d);
+            int c2 = hol__nav_cell_step(tab, cell, d);
             if (c2 < 0)
                 continue;
             uint32_t e = tab->nb[4 * (size_t)idx + (size_t)((o + d) & 3)];
@@ -209,16 +243,34 @@ static inline int hol__descend(const hol_navtab *tab, uint32_t n, hol__cost_fn c
     }
     return steps;
 }
-/* Bytes of arena the tours use as scratch (hol_nav_tour.c): the dynamic
- * program's table, then the far keys' bounds. */
-size_t hol__nav_tour_scratch(void);
 /* Room steps from the search root to node id, appended to w. */
 void hol__nav_emit_path(hol_nav *nav, uint32_t id, hol__walk *w);
-/* The walk of leg L from state s on tile a to s2 on b (ub[s][s2] steps),
+/* The walk of leg L from state s on tile a to s2 on b (its ub steps),
  * appended to w; and of C from s on key a to the chest. */
 void hol__legb_walk(const hol_nav *nav, const hol__legb *L, hol_tile a, int s, hol_tile b,
                     int s2, hol__walk *w);
 void hol__chestb_walk(const hol_nav *nav, const hol__chestb *C, hol_tile a, int s,
                       hol_tile chest, hol__walk *w);
+
+/* ---- tours (hol_nav_tour.c): the dynamic program, in the arena ----
+ * cost, lower, pj, ps: [mask][key j][state s] at HOL__DPX(nst, m, j, s):
+ * F[mask][j][s], the fewest steps from the start to stand on key j in room
+ * state s having first visited the keys in mask, j last (cost: over the
+ * legs' walks; lower: over their lower bounds); pj the previous key (-1:
+ * the start), ps its state. Here so that hol_nav.c sizes the arena without
+ * calling into the tours. */
+#define HOL__NK HOL_NAV_TOUR_MAX_KEYS
+#define HOL__DPX(nst, m, j, s) (((size_t)(m) * HOL__NK + (size_t)(j)) * (size_t)(nst) + (size_t)(s))
+typedef struct hol__dp {
+    uint16_t cost[(1 << HOL__NK) * HOL__NK * HOL__MAXST];
+    uint16_t lower[(1 << HOL__NK) * HOL__NK * HOL__MAXST];
+    int8_t pj[(1 << HOL__NK) * HOL__NK * HOL__MAXST];
+    uint8_t ps[(1 << HOL__NK) * HOL__NK * HOL__MAXST];
+    hol__legb leg[HOL__NK + 1][HOL__NK]; /* from key j (or the start, nk) to key k */
+    hol__chestb chest[HOL__NK];
+    const hol__sph *sph[HOL__NK]; /* the navigator's cache, or none */
+    hol__sph none;                /* n = 0 */
+    hol__legscr scr;
+} hol__dp;
 
 #endif

@@ -30,14 +30,17 @@ int hol__rel_of(const hol_nav *nav, hol_tile from, hol_tile to, int trust, hol__
 
 static int hol__leg_at(const hol_nav *nav, const hol__rel *r, int s, int s2)
 {
-    return hol_navtab_leg(nav->leg, r->idx, (r->facing + s / 9) & 3, s % 9, s2 / 9, s2 % 9);
+    int nc = nav->tab.ncell;
+    return hol_navtab_leg(&nav->tab, nav->leg, r->idx, (r->facing + s / nc) & 3, s % nc,
+                          s2 / nc, s2 % nc);
 }
 
 /* Main table: steps from room state s on the source of r to stand on its
  * destination tile. */
 static int hol__cost_at(const hol_nav *nav, const hol__rel *r, int s)
 {
-    return hol_navtab_cost(&nav->tab, r->idx, (r->facing + s / 9) & 3, s % 9);
+    int nc = nav->tab.ncell;
+    return hol_navtab_cost(&nav->tab, r->idx, (r->facing + s / nc) & 3, s % nc);
 }
 
 /* A lower bound on the steps from a tile at distance d of a target (any
@@ -79,7 +82,7 @@ int hol__lb_state(const hol_nav *nav, hol_tile tile, int o, int cell, hol_tile t
 {
     hol__rel r;
     int d = hol__rel_ranked(nav, tile, target, &r);
-    return hol__lb_rel(nav, &r, d, 9 * o + cell);
+    return hol__lb_rel(nav, &r, d, nav->tab.ncell * o + cell);
 }
 
 void hol__sph_fill(const hol_nav *nav, hol_tile key, hol__sph *S)
@@ -130,19 +133,19 @@ void hol__far_e_fill(hol_nav *nav)
 {
     int rho = nav->leg_trust;
     uint32_t lo = nav->tab.off[rho], n = nav->tab.off[rho + 1] - lo;
-    uint8_t (*e)[36] = (uint8_t (*)[36])(void *)nav->far_e;
+    int nst = nav->tab.nst, nc = nav->tab.ncell;
     if (n > HOL__SPHERE_MAX)
         return; /* no spheres either (hol__sph_fill) */
     for (uint32_t x = 0; x < n; x++)
-        for (int s2 = 0; s2 < 36; s2++) {
+        for (int s2 = 0; s2 < nst; s2++) {
             int m = 255;
             for (int o = 0; o < 4; o++)
-                for (int cell = 0; cell < 9; cell++) {
-                    int v = hol_navtab_leg(nav->leg, lo + x, o, cell, s2 / 9, s2 % 9);
+                for (int cell = 0; cell < nc; cell++) {
+                    int v = hol_navtab_leg(&nav->tab, nav->leg, lo + x, o, cell, s2 / nc, s2 % nc);
                     if (v < m)
                         m = v;
                 }
-            e[x][s2] = (uint8_t)m;
+            nav->far_e[(size_t)x * (size_t)nst + (size_t)s2] = (uint8_t)m;
         }
 }
 
@@ -187,21 +190,23 @@ static void hol__legb_midway(const hol_nav *nav, hol_tile a, hol_tile b, const i
                              int nsrc, hol__legb *L)
 {
     hol__rel r1, r2;
+    int nst = nav->tab.nst;
     if (!hol__midway(a, b, &L->mid) || !hol__rel_of(nav, a, L->mid, nav->leg_radius, &r1) ||
         !hol__rel_of(nav, L->mid, b, nav->leg_radius, &r2))
         return;
     for (int i = 0; i < nsrc; i++) {
         int s = src[i];
-        for (int m = 0; m < 36; m++) {
+        for (int m = 0; m < nst; m++) {
             int p = hol__leg_at(nav, &r1, s, m);
             if (p == 255)
                 continue;
-            for (int s2 = 0; s2 < 36; s2++) {
+            for (int s2 = 0; s2 < nst; s2++) {
                 int v = p + hol__leg_at(nav, &r2, m, s2);
-                if (v < L->ub[s][s2]) {
-                    L->ub[s][s2] = (uint8_t)v;
-                    L->vx[s][s2] = HOL__VIA_MID;
-                    L->vm[s][s2] = (uint8_t)m;
+                size_t x = HOL__LX(L, s, s2);
+                if (v < L->ub[x]) {
+                    L->ub[x] = (uint8_t)v;
+                    L->vx[x] = HOL__VIA_MID;
+                    L->vm[x] = (uint8_t)m;
                 }
             }
         }
@@ -209,39 +214,35 @@ static void hol__legb_midway(const hol_nav *nav, hol_tile a, hol_tile b, const i
 }
 
 /* Half the room states cannot reach the other half: with p(T) one bit per
- * tile, (col + row + o + p(T)) mod 2 never changes. (A step flips the
- * cell's colour and changes o by the arrival edge's index minus the
- * departure edge's, so p must change by 1 + arr - dep mod 2 across each
- * edge; around a vertex of the tiling, five tiles each entered and left
- * through adjacent edges, those changes add up to an even number, and the
- * plane being simply connected, p exists.) So one walk from s0 to s2_0
- * tells which pairs (s, s2) can be joined at all: lower bounds of the
- * others are 255 (never). */
-static int hol__par(int s)
-{
-    return (s / 9 + s % 9 % 3 + s % 9 / 3) & 1;
-}
+ * tile, (col + row + o + p(T)) mod 2 never changes (nav->par holds
+ * (col + row + o) mod 2). (A step flips the cell's colour and changes o by
+ * the arrival edge's index minus the departure edge's, so p must change
+ * by 1 + arr - dep mod 2 across each edge; around a vertex of the tiling,
+ * Q tiles each entered and left through adjacent edges, those changes add
+ * up to an even number, and the plane being simply connected, p exists.)
+ * So one walk from s0 to s2_0 tells which pairs (s, s2) can be joined at
+ * all: lower bounds of the others are 255 (never). */
 
-/* hol__par(s) ^ hol__par(s2) of the pairs a walk can join, from a walk
- * found; -1: none found yet. */
-static int hol__class(const hol__legb *L, const int *src, int nsrc)
+/* par(s) ^ par(s2) of the pairs a walk can join, from a walk found; -1:
+ * none found yet. */
+static int hol__class(const hol_nav *nav, const hol__legb *L, const int *src, int nsrc)
 {
     for (int i = 0; i < nsrc; i++)
-        for (int s2 = 0; s2 < 36; s2++)
-            if (L->ub[src[i]][s2] != 255)
-                return hol__par(src[i]) ^ hol__par(s2);
+        for (int s2 = 0; s2 < L->nst; s2++)
+            if (L->ub[HOL__LX(L, src[i], s2)] != 255)
+                return nav->par[src[i]] ^ nav->par[s2];
     return -1;
 }
 
-static void hol__unreachable(hol__legb *L, const int *src, int nsrc)
+static void hol__unreachable(const hol_nav *nav, hol__legb *L, const int *src, int nsrc)
 {
-    int want = hol__class(L, src, nsrc);
+    int want = hol__class(nav, L, src, nsrc);
     if (want < 0)
         return;
     for (int i = 0; i < nsrc; i++)
-        for (int s2 = 0; s2 < 36; s2++)
-            if ((hol__par(src[i]) ^ hol__par(s2)) != want)
-                L->lb[src[i]][s2] = 255;
+        for (int s2 = 0; s2 < L->nst; s2++)
+            if ((nav->par[src[i]] ^ nav->par[s2]) != want)
+                L->lb[HOL__LX(L, src[i], s2)] = 255;
 }
 
 /* Steps reverse, so a leg costs at least each end's cost to the other
@@ -249,14 +250,14 @@ static void hol__unreachable(hol__legb *L, const int *src, int nsrc)
 static void hol__lb_ends(const hol_nav *nav, hol_tile a, hol_tile b, const int *src, int nsrc,
                          hol__legb *L)
 {
-    int ca[36], cb[36];
-    for (int s = 0; s < 36; s++) {
-        ca[s] = hol__lb_state(nav, a, s / 9, s % 9, b);
-        cb[s] = hol__lb_state(nav, b, s / 9, s % 9, a);
+    int ca[HOL__MAXST], cb[HOL__MAXST], nst = nav->tab.nst, nc = nav->tab.ncell;
+    for (int s = 0; s < nst; s++) {
+        ca[s] = hol__lb_state(nav, a, s / nc, s % nc, b);
+        cb[s] = hol__lb_state(nav, b, s / nc, s % nc, a);
     }
     for (int i = 0; i < nsrc; i++) {
-        uint8_t *lb = L->lb[src[i]];
-        for (int s2 = 0; s2 < 36; s2++) {
+        uint8_t *lb = &L->lb[HOL__LX(L, src[i], 0)];
+        for (int s2 = 0; s2 < nst; s2++) {
             int v = ca[src[i]] > cb[s2] ? ca[src[i]] : cb[s2];
             if (v > lb[s2])
                 lb[s2] = (uint8_t)(v < 255 ? v : 255);
@@ -264,38 +265,44 @@ static void hol__lb_ends(const hol_nav *nav, hol_tile a, hol_tile b, const int *
     }
 }
 
-void hol__legb_fill(const hol_nav *nav, hol_tile a, hol_tile b, const hol__sph *sb,
-                    const int *src, int nsrc, hol__legb *L, hol__legscr *scr)
+/* A leg without a sphere (or within the leg table): the leg table where
+ * it reaches, else bounds from the ends and walks through a midway tile.
+ * Returns 1 when that is the whole leg. */
+static int hol__legb_near(const hol_nav *nav, hol_tile a, hol_tile b, const hol__sph *sb,
+                          const int *src, int nsrc, hol__legb *L)
 {
-    int rho = nav->leg_trust;
-    memset(L->ub, 255, sizeof L->ub);
-    memset(L->lb, 255, sizeof L->lb);
-    L->vt = sb->tile;
+    int nst = nav->tab.nst;
     hol__rel r;
     if (hol__rel_of(nav, a, b, nav->leg_radius, &r)) {
         for (int i = 0; i < nsrc; i++)
-            for (int s2 = 0; s2 < 36; s2++) {
-                int v = hol__leg_at(nav, &r, src[i], s2);
-                L->ub[src[i]][s2] = (uint8_t)v;
-                L->vx[src[i]][s2] = HOL__VIA_DIRECT;
+            for (int s2 = 0; s2 < nst; s2++) {
+                size_t x = HOL__LX(L, src[i], s2);
+                L->ub[x] = (uint8_t)hol__leg_at(nav, &r, src[i], s2);
+                L->vx[x] = HOL__VIA_DIRECT;
             }
-        if (hol_tile_dist(a, b) <= rho) {
-            memcpy(L->lb, L->ub, sizeof L->lb);
-            return;
+        if (hol_tile_dist(a, b) <= nav->leg_trust) {
+            memcpy(L->lb, L->ub, (size_t)nst * (size_t)nst);
+            return 1;
         }
     }
-    if (sb->n == 0) {
-        for (int i = 0; i < nsrc; i++)
-            memset(L->lb[src[i]], 0, 36);
-        hol__lb_ends(nav, a, b, src, nsrc, L);
-        hol__legb_midway(nav, a, b, src, nsrc, L);
-        hol__unreachable(L, src, nsrc);
-        return;
-    }
-    /* the cheap bound of each sphere tile: the least main-table cost from
-     * a source state to x's tile plus the least leg from x to the key */
-    uint32_t lo = nav->tab.off[rho];
-    const uint8_t (*e)[36] = (const uint8_t (*)[36])(const void *)nav->far_e;
+    if (sb->n)
+        return 0;
+    for (int i = 0; i < nsrc; i++)
+        memset(&L->lb[HOL__LX(L, src[i], 0)], 0, (size_t)nst);
+    hol__lb_ends(nav, a, b, src, nsrc, L);
+    hol__legb_midway(nav, a, b, src, nsrc, L);
+    hol__unreachable(nav, L, src, nsrc);
+    return 1;
+}
+
+/* The cheap bound of each sphere tile x around key b (scr->key[x]): the
+ * least main-table cost from a source state on a to x's tile plus the
+ * least leg from x to the key; then the tiles in its order. */
+static void hol__legb_keys(const hol_nav *nav, hol_tile a, const hol__sph *sb, const int *src,
+                           int nsrc, hol__legscr *scr)
+{
+    int nst = nav->tab.nst;
+    uint32_t lo = nav->tab.off[nav->leg_trust];
     for (uint32_t x = 0; x < sb->n; x++) {
         hol__legx *X = &scr->x[x];
         X->d = (uint8_t)hol__rel_ranked(nav, a, sb->tile[x], &X->r);
@@ -307,111 +314,156 @@ void hol__legb_fill(const hol_nav *nav, hol_tile a, hol_tile b, const hol__sph *
             if (X->c1[s] < c1)
                 c1 = X->c1[s];
         }
-        uint32_t xr = sb->from_key[x].idx - lo;
-        for (int s2 = 0; s2 < 36; s2++)
-            if (e[xr][s2] < e2)
-                e2 = e[xr][s2];
+        const uint8_t *ex = nav->far_e + (size_t)(sb->from_key[x].idx - lo) * (size_t)nst;
+        for (int s2 = 0; s2 < nst; s2++)
+            if (ex[s2] < e2)
+                e2 = ex[s2];
         scr->key[x] = hol__key(c1 + e2);
     }
     hol__by_key(scr->key, sb->n, scr->order);
-    int worst = 255, cls = hol__class(L, src, nsrc);
-    uint8_t p2[36][36], z2[36][36]; /* p2[m][i]: the leg from m to state z2[m][i] */
-    int nz[36];
+}
+
+/* The finite legs from each state m on sphere tile x to the key: p2[m][i]
+ * the leg to state z2[m][i], nz[m] of them (in the scratch). */
+typedef struct hol__fanbuf hol__fan;
+
+static void hol__fan_fill(const hol_nav *nav, const hol__rel *from_key, hol__fan *F)
+{
+    int nst = nav->tab.nst;
+    for (int m = 0; m < nst; m++) {
+        F->nz[m] = 0;
+        for (int s2 = 0; s2 < nst; s2++) {
+            int v = hol__leg_at(nav, from_key, m, s2);
+            if (v != 255) {
+                F->z2[m][F->nz[m]] = (uint8_t)s2;
+                F->p2[m][F->nz[m]++] = (uint8_t)v;
+            }
+        }
+    }
+}
+
+/* One sphere tile x of the pass: what the legs through it add to the
+ * source row s (bounds, and walks where x is in the leg table's reach). */
+typedef struct hol__via {
+    const hol__legx *X;
+    const uint8_t *ex; /* far_e of x */
+    const hol__fan *F;
+    const uint8_t *c2; /* main-table cost from each state on x back to a */
+    int exact, walk, coupled, want;
+    uint32_t x;
+} hol__via;
+
+static void hol__via_row(const hol_nav *nav, const hol__via *V, int s, hol__legb *L)
+{
+    int nst = nav->tab.nst;
+    const hol__legx *X = V->X;
+    uint8_t *lb = &L->lb[HOL__LX(L, s, 0)], *ub = &L->ub[HOL__LX(L, s, 0)];
+    if (V->coupled) {
+        for (int m = 0; m < nst; m++) {
+            if (V->want >= 0 && (nav->par[s] ^ nav->par[m]) != V->want)
+                continue;
+            int base = X->c1[s] > V->c2[m] ? X->c1[s] : V->c2[m];
+            for (int i2 = 0; i2 < V->F->nz[m]; i2++) {
+                int s2 = V->F->z2[m][i2], v = base + V->F->p2[m][i2];
+                if (v < lb[s2])
+                    lb[s2] = (uint8_t)v;
+            }
+        }
+    } else if (!V->exact) {
+        for (int s2 = 0; s2 < nst; s2++) {
+            int v = X->c1[s] + V->ex[s2];
+            if (v < lb[s2])
+                lb[s2] = (uint8_t)v;
+        }
+    }
+    if (!V->walk)
+        return;
+    for (int m = 0; m < nst; m++) {
+        int p = hol__leg_at(nav, &X->r, s, m);
+        if (p == 255)
+            continue;
+        for (int i2 = 0; i2 < V->F->nz[m]; i2++) {
+            int s2 = V->F->z2[m][i2], v = p + V->F->p2[m][i2];
+            if (v < ub[s2]) {
+                ub[s2] = (uint8_t)v;
+                L->vx[HOL__LX(L, s, s2)] = (uint16_t)V->x;
+                L->vm[HOL__LX(L, s, s2)] = (uint8_t)m;
+            }
+            if (V->exact && v < lb[s2])
+                lb[s2] = (uint8_t)v;
+        }
+    }
+}
+
+/* The greatest lower bound of the leg still open (the pass stops when the
+ * next tile's cheap bound reaches it); pairs no walk can join (the parity
+ * classes) do not hold the pass up. */
+static int hol__legb_worst(const hol_nav *nav, const hol__legb *L, const int *src, int nsrc,
+                           int cls)
+{
+    int worst = 0;
+    for (int k = 0; k < nsrc; k++)
+        for (int s2 = 0; s2 < L->nst; s2++) {
+            int v = L->lb[HOL__LX(L, src[k], s2)];
+            if (v > worst && (cls < 0 || (nav->par[src[k]] ^ nav->par[s2]) == cls))
+                worst = v;
+        }
+    return worst;
+}
+
+void hol__legb_fill(const hol_nav *nav, hol_tile a, hol_tile b, const hol__sph *sb,
+                    const int *src, int nsrc, hol__legb *L, hol__legscr *scr)
+{
+    int rho = nav->leg_trust, nst = nav->tab.nst;
+    L->nst = nst;
+    memset(L->ub, 255, (size_t)nst * (size_t)nst);
+    memset(L->lb, 255, (size_t)nst * (size_t)nst);
+    L->vt = sb->tile;
+    if (hol__legb_near(nav, a, b, sb, src, nsrc, L))
+        return;
+    hol__legb_keys(nav, a, sb, src, nsrc, scr);
+    uint32_t lo = nav->tab.off[rho];
+    int worst = 255, cls = hol__class(nav, L, src, nsrc);
     for (uint32_t i = 0; i < sb->n; i++) {
         uint32_t x = scr->order[i];
         if (scr->key[x] >= worst)
             break;
-        const hol__legx *X = &scr->x[x];
-        const uint8_t *ex = e[sb->from_key[x].idx - lo];
-        int exact = X->d <= rho, walk = X->d <= nav->leg_radius;
+        hol__via V = {&scr->x[x], nav->far_e + (size_t)(sb->from_key[x].idx - lo) * (size_t)nst,
+                      &scr->fan, scr->c2, 0, 0, 0, -1, x};
+        V.exact = V.X->d <= rho;
+        V.walk = V.X->d <= nav->leg_radius;
         /* coupled: D(s, m) >= max(main(s to x), main(m to a)), as steps
          * reverse; m only in s's class (hol__unreachable) when a walk from
          * a to x tells it */
-        int coupled = !exact && X->d <= nav->trust, want = -1;
-        hol__rel back;
-        uint8_t c2[36];
-        if (walk || coupled) {
-            /* the finite legs from each state m on x to the key */
-            for (int m = 0; m < 36; m++) {
-                nz[m] = 0;
-                for (int s2 = 0; s2 < 36; s2++) {
-                    int v = hol__leg_at(nav, &sb->from_key[x], m, s2);
-                    if (v != 255) {
-                        z2[m][nz[m]] = (uint8_t)s2;
-                        p2[m][nz[m]++] = (uint8_t)v;
-                    }
-                }
-            }
-        }
-        if (coupled) {
+        V.coupled = !V.exact && V.X->d <= nav->trust;
+        if (V.walk || V.coupled)
+            hol__fan_fill(nav, &sb->from_key[x], &scr->fan);
+        if (V.coupled) {
+            hol__rel back;
             if (hol__rel_of(nav, sb->tile[x], a, nav->trust, &back))
-                for (int m = 0; m < 36; m++)
-                    c2[m] = (uint8_t)hol__cost_at(nav, &back, m);
+                for (int m = 0; m < nst; m++)
+                    scr->c2[m] = (uint8_t)hol__cost_at(nav, &back, m);
             else
-                coupled = 0;
-            for (int m = 0; m < 36 && walk && want < 0; m++)
-                if (hol__leg_at(nav, &X->r, src[0], m) != 255)
-                    want = hol__par(src[0]) ^ hol__par(m);
+                V.coupled = 0;
+            for (int m = 0; m < nst && V.walk && V.want < 0; m++)
+                if (hol__leg_at(nav, &V.X->r, src[0], m) != 255)
+                    V.want = nav->par[src[0]] ^ nav->par[m];
         }
-        for (int k = 0; k < nsrc; k++) {
-            int s = src[k];
-            uint8_t *lb = L->lb[s], *ub = L->ub[s];
-            if (coupled) {
-                for (int m = 0; m < 36; m++) {
-                    if (want >= 0 && (hol__par(s) ^ hol__par(m)) != want)
-                        continue;
-                    int base = X->c1[s] > c2[m] ? X->c1[s] : c2[m];
-                    for (int i2 = 0; i2 < nz[m]; i2++) {
-                        int s2 = z2[m][i2], v = base + p2[m][i2];
-                        if (v < lb[s2])
-                            lb[s2] = (uint8_t)v;
-                    }
-                }
-            } else if (!exact) {
-                for (int s2 = 0; s2 < 36; s2++) {
-                    int v = X->c1[s] + ex[s2];
-                    if (v < lb[s2])
-                        lb[s2] = (uint8_t)v;
-                }
-            }
-            if (!walk)
-                continue;
-            for (int m = 0; m < 36; m++) {
-                int p = hol__leg_at(nav, &X->r, s, m);
-                if (p == 255)
-                    continue;
-                for (int i2 = 0; i2 < nz[m]; i2++) {
-                    int s2 = z2[m][i2], v = p + p2[m][i2];
-                    if (v < ub[s2]) {
-                        ub[s2] = (uint8_t)v;
-                        L->vx[s][s2] = (uint16_t)x;
-                        L->vm[s][s2] = (uint8_t)m;
-                    }
-                    if (exact && v < lb[s2])
-                        lb[s2] = (uint8_t)v;
-                }
-            }
-        }
-        /* entries no walk can join (hol__unreachable) do not hold the
-         * pass up */
-        if (cls < 0)
-            cls = hol__class(L, src, nsrc);
-        worst = 0;
         for (int k = 0; k < nsrc; k++)
-            for (int s2 = 0; s2 < 36; s2++)
-                if (L->lb[src[k]][s2] > worst &&
-                    (cls < 0 || (hol__par(src[k]) ^ hol__par(s2)) == cls))
-                    worst = L->lb[src[k]][s2];
+            hol__via_row(nav, &V, src[k], L);
+        if (cls < 0)
+            cls = hol__class(nav, L, src, nsrc);
+        worst = hol__legb_worst(nav, L, src, nsrc, cls);
     }
     hol__lb_ends(nav, a, b, src, nsrc, L);
-    hol__unreachable(L, src, nsrc);
+    hol__unreachable(nav, L, src, nsrc);
     int missing = 0;
     for (int k = 0; k < nsrc; k++)
-        for (int s2 = 0; s2 < 36; s2++)
-            missing |= L->ub[src[k]][s2] == 255 && L->lb[src[k]][s2] != 255;
+        for (int s2 = 0; s2 < nst; s2++)
+            missing |= L->ub[HOL__LX(L, src[k], s2)] == 255 && L->lb[HOL__LX(L, src[k], s2)] != 255;
     if (missing) {
         hol__legb_midway(nav, a, b, src, nsrc, L);
-        hol__unreachable(L, src, nsrc);
+        hol__unreachable(nav, L, src, nsrc);
     }
 }
 
@@ -420,16 +472,16 @@ void hol__legb_fill(const hol_nav *nav, hol_tile a, hol_tile b, const hol__sph *
 static void hol__chestb_midway(const hol_nav *nav, hol_tile a, hol_tile chest,
                                hol__chestb *C)
 {
-    int missing = 0;
-    for (int s = 0; s < 36; s++)
+    int missing = 0, nst = nav->tab.nst;
+    for (int s = 0; s < nst; s++)
         missing |= C->ub[s] == 255;
     hol__rel r1, r2;
     if (!missing || !hol__midway(a, chest, &C->mid) ||
         !hol__rel_of(nav, a, C->mid, nav->leg_radius, &r1) ||
         !hol__rel_of(nav, C->mid, chest, nav->tab.radius, &r2))
         return;
-    for (int s = 0; s < 36; s++)
-        for (int m = 0; m < 36; m++) {
+    for (int s = 0; s < nst; s++)
+        for (int m = 0; m < nst; m++) {
             int v = hol__leg_at(nav, &r1, s, m) + hol__cost_at(nav, &r2, m);
             if (v < C->ub[s]) {
                 C->ub[s] = (uint8_t)v;
@@ -439,16 +491,47 @@ static void hol__chestb_midway(const hol_nav *nav, hol_tile a, hol_tile chest,
         }
 }
 
+/* The first exit from a's sphere: the cheap bound of each tile x (the
+ * least leg from a to x plus the least cost from x to the chest), then
+ * the tiles in its order. */
+static void hol__chestb_keys(const hol_nav *nav, hol_tile chest, const hol__sph *sa,
+                             hol__legscr *scr)
+{
+    int nst = nav->tab.nst;
+    uint32_t lo = nav->tab.off[nav->leg_trust];
+    for (uint32_t x = 0; x < sa->n; x++) {
+        hol__legx *X = &scr->x[x];
+        int l2 = 255, e1 = 255;
+        X->d = (uint8_t)hol__rel_ranked(nav, sa->tile[x], chest, &X->r);
+        for (int m = 0; m < nst; m++) {
+            int lv = hol__lb_rel(nav, &X->r, X->d, m), uv = 255;
+            if (X->d <= nav->tab.radius)
+                uv = hol__cost_at(nav, &X->r, m);
+            X->c1[m] = (uint8_t)(lv < 255 ? lv : 255);
+            X->u2[m] = (uint8_t)(uv < 255 ? uv : 255);
+            if (X->c1[m] < l2)
+                l2 = X->c1[m];
+        }
+        const uint8_t *ex = nav->far_e + (size_t)(sa->from_key[x].idx - lo) * (size_t)nst;
+        for (int s = 0; s < nst; s++)
+            if (ex[s] < e1)
+                e1 = ex[s];
+        scr->key[x] = hol__key(e1 + l2);
+    }
+    hol__by_key(scr->key, sa->n, scr->order);
+}
+
 void hol__chestb_fill(const hol_nav *nav, hol_tile a, hol_tile chest, const hol__sph *sa,
                       hol__chestb *C, hol__legscr *scr)
 {
+    int nst = nav->tab.nst, nc = nav->tab.ncell;
     memset(C->ub, 255, sizeof C->ub);
     memset(C->lb, 255, sizeof C->lb);
     C->vt = sa->tile;
     hol__rel r;
     int d = hol_tile_dist(a, chest);
     if (hol__rel_of(nav, a, chest, nav->tab.radius, &r)) {
-        for (int s = 0; s < 36; s++) {
+        for (int s = 0; s < nst; s++) {
             C->ub[s] = (uint8_t)hol__cost_at(nav, &r, s);
             C->vx[s] = HOL__VIA_DIRECT;
         }
@@ -458,44 +541,22 @@ void hol__chestb_fill(const hol_nav *nav, hol_tile a, hol_tile chest, const hol_
         }
     }
     if (sa->n == 0 || d <= nav->leg_trust) {
-        for (int s = 0; s < 36; s++) {
-            int v = hol__lb_state(nav, a, s / 9, s % 9, chest);
+        for (int s = 0; s < nst; s++) {
+            int v = hol__lb_state(nav, a, s / nc, s % nc, chest);
             C->lb[s] = (uint8_t)(v < 255 ? v : 255);
         }
         hol__chestb_midway(nav, a, chest, C);
         return;
     }
-    /* first exit from a's sphere: leg(s, m) exact, then m to the chest */
-    uint32_t lo = nav->tab.off[nav->leg_trust];
-    const uint8_t (*e)[36] = (const uint8_t (*)[36])(const void *)nav->far_e;
-    for (uint32_t x = 0; x < sa->n; x++) {
-        hol__legx *X = &scr->x[x];
-        int l2 = 255, e1 = 255;
-        X->d = (uint8_t)hol__rel_ranked(nav, sa->tile[x], chest, &X->r);
-        for (int m = 0; m < 36; m++) {
-            int lv = hol__lb_rel(nav, &X->r, X->d, m), uv = 255;
-            if (X->d <= nav->tab.radius)
-                uv = hol__cost_at(nav, &X->r, m);
-            X->c1[m] = (uint8_t)(lv < 255 ? lv : 255);
-            X->u2[m] = (uint8_t)(uv < 255 ? uv : 255);
-            if (X->c1[m] < l2)
-                l2 = X->c1[m];
-        }
-        const uint8_t *ex = e[sa->from_key[x].idx - lo];
-        for (int s = 0; s < 36; s++)
-            if (ex[s] < e1)
-                e1 = ex[s];
-        scr->key[x] = hol__key(e1 + l2);
-    }
-    hol__by_key(scr->key, sa->n, scr->order);
+    hol__chestb_keys(nav, chest, sa, scr);
     int worst = 255;
     for (uint32_t i = 0; i < sa->n; i++) {
         uint32_t x = scr->order[i];
         if (scr->key[x] >= worst)
             break;
         const hol__legx *X = &scr->x[x];
-        for (int s = 0; s < 36; s++)
-            for (int m = 0; m < 36; m++) {
+        for (int s = 0; s < nst; s++)
+            for (int m = 0; m < nst; m++) {
                 /* steps reverse: the leg from s on a to m on x is the leg
                  * from m on x to s on a */
                 int p = hol__leg_at(nav, &sa->from_key[x], m, s);
@@ -510,7 +571,7 @@ void hol__chestb_fill(const hol_nav *nav, hol_tile a, hol_tile chest, const hol_
                 }
             }
         worst = 0;
-        for (int s = 0; s < 36; s++)
+        for (int s = 0; s < nst; s++)
             if (C->lb[s] > worst)
                 worst = C->lb[s];
     }
@@ -519,12 +580,14 @@ void hol__chestb_fill(const hol_nav *nav, hol_tile a, hol_tile chest, const hol_
 
 void hol__legb_reverse(const hol__legb *L, hol__legb *out_rev)
 {
-    for (int s = 0; s < 36; s++)
-        for (int s2 = 0; s2 < 36; s2++) {
-            out_rev->ub[s2][s] = L->ub[s][s2];
-            out_rev->lb[s2][s] = L->lb[s][s2];
-            out_rev->vx[s2][s] = L->vx[s][s2];
-            out_rev->vm[s2][s] = L->vm[s][s2];
+    out_rev->nst = L->nst;
+    for (int s = 0; s < L->nst; s++)
+        for (int s2 = 0; s2 < L->nst; s2++) {
+            size_t x = HOL__LX(L, s, s2), y = HOL__LX(L, s2, s);
+            out_rev->ub[y] = L->ub[x];
+            out_rev->lb[y] = L->lb[x];
+            out_rev->vx[y] = L->vx[x];
+            out_rev->vm[y] = L->vm[x];
         }
     out_rev->vt = L->vt;
     out_rev->mid = L->mid;
@@ -532,6 +595,7 @@ void hol__legb_reverse(const hol__legb *L, hol__legb *out_rev)
 
 /* Descend the leg table from (idx, o, cell) to the goal state (ob, cb). */
 typedef struct hol__leg_goal {
+    const hol_navtab *tab;
     const uint8_t *leg;
     int ob, cb;
 } hol__leg_goal;
@@ -539,13 +603,13 @@ typedef struct hol__leg_goal {
 static int hol__leg_cost(const void *ctx, uint32_t idx, int o, int cell)
 {
     const hol__leg_goal *g = ctx;
-    return hol_navtab_leg(g->leg, idx, o, cell, g->ob, g->cb);
+    return hol_navtab_leg(g->tab, g->leg, idx, o, cell, g->ob, g->cb);
 }
 
 static void hol__leg_descend(const hol_nav *nav, uint32_t idx, int o, int cell, int ob,
                              int cb, hol__walk *w)
 {
-    hol__leg_goal g = {nav->leg, ob, cb};
+    hol__leg_goal g = {&nav->tab, nav->leg, ob, cb};
     hol__descend(&nav->tab, nav->tab.off[nav->leg_radius + 1], hol__leg_cost, &g, idx, o,
                  cell, w);
 }
@@ -555,23 +619,24 @@ static void hol__leg_walk(const hol_nav *nav, hol_tile a, int s, hol_tile b, int
                           hol__walk *w)
 {
     hol__rel r;
+    int nc = nav->tab.ncell;
     if (!hol__rel_of(nav, a, b, nav->leg_radius, &r))
         return; /* cannot happen: the leg was costed this way (the caller
                  * checks the walk's length against its cost) */
-    hol__leg_descend(nav, r.idx, (r.facing + s / 9) & 3, s % 9, s2 / 9, s2 % 9, w);
+    hol__leg_descend(nav, r.idx, (r.facing + s / nc) & 3, s % nc, s2 / nc, s2 % nc, w);
 }
 
 void hol__legb_walk(const hol_nav *nav, const hol__legb *L, hol_tile a, int s, hol_tile b,
                     int s2, hol__walk *w)
 {
-    unsigned vx = L->vx[s][s2];
+    unsigned vx = L->vx[HOL__LX(L, s, s2)];
     if (vx == HOL__VIA_DIRECT) {
         hol__leg_walk(nav, a, s, b, s2, w);
         return;
     }
     hol_tile x = vx == HOL__VIA_MID ? L->mid : L->vt[vx];
-    hol__leg_walk(nav, a, s, x, L->vm[s][s2], w);
-    hol__leg_walk(nav, x, L->vm[s][s2], b, s2, w);
+    hol__leg_walk(nav, a, s, x, L->vm[HOL__LX(L, s, s2)], w);
+    hol__leg_walk(nav, x, L->vm[HOL__LX(L, s, s2)], b, s2, w);
 }
 
 void hol__chestb_walk(const hol_nav *nav, const hol__chestb *C, hol_tile a, int s,
@@ -579,6 +644,7 @@ void hol__chestb_walk(const hol_nav *nav, const hol__chestb *C, hol_tile a, int 
 {
     hol_tile from = a;
     hol__rel r;
+    int nc = nav->tab.ncell;
     if (C->vx[s] != HOL__VIA_DIRECT) {
         from = C->vx[s] == HOL__VIA_MID ? C->mid : C->vt[C->vx[s]];
         hol__leg_walk(nav, a, s, from, C->vm[s], w);
@@ -586,5 +652,5 @@ void hol__chestb_walk(const hol_nav *nav, const hol__chestb *C, hol_tile a, int 
     }
     if (!hol__rel_of(nav, from, chest, nav->tab.radius, &r))
         return; /* as above */
-    hol__nav_descend(&nav->tab, r.idx, (r.facing + s / 9) & 3, s % 9, w);
+    hol__nav_descend(&nav->tab, r.idx, (r.facing + s / nc) & 3, s % nc, w);
 }

@@ -25,6 +25,13 @@ static void hol__msg(char *msg, size_t cap, const char *text)
 hol_err hol_nav_parse_prefix(const char *s, size_t len, hol_room *out_room,
                              char *msg, size_t msg_cap)
 {
+    hol_room start = hol_room_start();
+    return hol_nav_parse_prefix_in(&start, s, len, out_room, msg, msg_cap);
+}
+
+hol_err hol_nav_parse_prefix_in(const hol_room *start, const char *s, size_t len,
+                                hol_room *out_room, char *msg, size_t msg_cap)
+{
     char buf[160];
     if (len == 1 && s[0] == '-')
         len = 0;
@@ -48,7 +55,7 @@ hol_err hol_nav_parse_prefix(const char *s, size_t len, hol_room *out_room,
         hol__msg(msg, msg_cap, buf);
         return HOL_ERANGE;
     }
-    hol_room room = hol_room_start();
+    hol_room room = *start;
     for (size_t i = 0; i < len; i++) {
         int d = hol_dir_from_char((unsigned char)s[i]);
         hol_err err = hol_room_step(&room, d);
@@ -62,7 +69,7 @@ hol_err hol_nav_parse_prefix(const char *s, size_t len, hol_room *out_room,
         if (err) {
             snprintf(buf, sizeof buf,
                      "prefix step %zu goes beyond distance %d from O, the reach of tile words",
-                     i + 1, HOL_TILE_MAX_DIST);
+                     i + 1, hol_tile_reach(hol_tile_q(start->tile)));
             hol__msg(msg, msg_cap, buf);
             return HOL_ERANGE;
         }
@@ -74,9 +81,15 @@ hol_err hol_nav_parse_prefix(const char *s, size_t len, hol_room *out_room,
 hol_err hol_nav_parse_target(const char *s, size_t len, hol_tile *out_tile,
                              char *msg, size_t msg_cap)
 {
+    return hol_nav_parse_target_q(5, s, len, out_tile, msg, msg_cap);
+}
+
+hol_err hol_nav_parse_target_q(int q, const char *s, size_t len, hol_tile *out_tile,
+                               char *msg, size_t msg_cap)
+{
     char buf[200], shown[48];
     hol_tile t;
-    hol_err err = hol_tile_parse(s, (ptrdiff_t)len, &t);
+    hol_err err = hol_tile_parse_q(q, s, (ptrdiff_t)len, &t);
     if (!err && memchr(s, '\0', len))
         err = HOL_EPARSE;
     if (!err) {
@@ -86,7 +99,7 @@ hol_err hol_nav_parse_target(const char *s, size_t len, hol_tile *out_tile,
     hol__shown(s, len, shown);
     if (err == HOL_ENOTCANON) {
         char canon[HOL_TILE_ADDR_MAX];
-        if (!hol_tile_resolve(s, (ptrdiff_t)len, &t)) {
+        if (!hol_tile_resolve_q(q, s, (ptrdiff_t)len, &t)) {
             hol_tile_print(t, canon);
             snprintf(buf, sizeof buf,
                      "target '%s' is not a canonical address (that walk reaches %s)",
@@ -97,7 +110,7 @@ hol_err hol_nav_parse_target(const char *s, size_t len, hol_tile *out_tile,
     } else if (err == HOL_ERANGE) {
         snprintf(buf, sizeof buf,
                  "target '%s' is longer than %d letters, the reach of tile words",
-                 shown, HOL_TILE_MAX_DIST);
+                 shown, hol_tile_reach(q));
     } else {
         err = HOL_EPARSE;
         snprintf(buf, sizeof buf,
@@ -111,6 +124,14 @@ static int hol__blank(char c) { return c == ' ' || c == '\t'; }
 
 hol_err hol_nav_parse_line(const char *s, size_t len, hol_room *out_room,
                            hol_tile *out_target, char *msg, size_t msg_cap)
+{
+    hol_room start = hol_room_start();
+    return hol_nav_parse_line_in(&start, s, len, out_room, out_target, msg, msg_cap);
+}
+
+hol_err hol_nav_parse_line_in(const hol_room *start, const char *s, size_t len,
+                              hol_room *out_room, hol_tile *out_target, char *msg,
+                              size_t msg_cap)
 {
     if (memchr(s, '\0', len)) {
         hol__msg(msg, msg_cap, "line holds a NUL byte");
@@ -144,10 +165,10 @@ hol_err hol_nav_parse_line(const char *s, size_t len, hol_room *out_room,
     }
     hol_room room;
     hol_tile target;
-    hol_err err = hol_nav_parse_prefix(f[0], fl[0], &room, msg, msg_cap);
+    hol_err err = hol_nav_parse_prefix_in(start, f[0], fl[0], &room, msg, msg_cap);
     if (err)
         return err;
-    err = hol_nav_parse_target(f[1], fl[1], &target, msg, msg_cap);
+    err = hol_nav_parse_target_q(hol_tile_q(start->tile), f[1], fl[1], &target, msg, msg_cap);
     if (err)
         return err;
     *out_room = room;

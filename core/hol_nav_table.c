@@ -11,7 +11,8 @@
  * of these relative states. Steps are reversible (step d then d + 2 returns
  * to the same state), so that BFS runs forward from the goal. Rotating the
  * whole room by a quarter turn maps walks to walks, so only o = 0 is stored
- * and other orientations rotate the cell.
+ * and other orientations rotate the cell (an oblong room only turns by a
+ * half: o = 0 and 1 are stored, 2 and 3 turn the room a half).
  *
  * The BFS is truncated to tiles within the radius R, which gives the fewest
  * steps among walks that stay inside, an upper bound on the truth. A walk
@@ -35,47 +36,57 @@
  * tests repeat that check and match the answers against brute-force BFS;
  * the radius-14 table also equals a radius-17 one (5.6 million tiles) to
  * distance 12 (NAV_BENCH_VERIFY=1 make bench). This is evidence, not a
- * proof, beyond proved_radius.
+ * proof, beyond proved_radius. Every tiling and room size has its own
+ * table by the same rules; tests/test_nav.c repeats the r against r + 1
+ * check for each, and hol_nav.c says which radius each gets.
  */
 #include "hol_nav_table.h"
 
 #include <string.h>
 
-static void hol__counts(uint32_t cnt[HOL_TILE_STATES][HOL_NAVTAB_MAX_RADIUS + 1], int r)
+static int hol__counts(uint32_t cnt[HOL_TILE_MAX_STATES][HOL_NAVTAB_MAX_RADIUS + 1], int q,
+                       int r)
 {
-    for (int s = 0; s < HOL_TILE_STATES; s++)
+    int ns = hol_tile_states(q);
+    for (int s = 0; s < ns; s++)
         cnt[s][0] = 1;
     for (int k = 1; k <= r; k++)
-        for (int s = 0; s < HOL_TILE_STATES; s++) {
-            uint32_t n = 0;
-            for (int c = 0; c < 4; c++)
-                if (hol_tile_automaton(s, c) >= 0)
-                    n += cnt[hol_tile_automaton(s, c)][k - 1];
-            cnt[s][k] = n;
+        for (int s = 0; s < ns; s++) {
+            uint64_t n = 0;
+            for (int c = 0; c < 4; c++) {
+                int t = hol_tile_automaton_q(q, s, c);
+                if (t >= 0)
+                    n += cnt[t][k - 1];
+            }
+            if (n > UINT32_MAX / 8)
+                return 0;
+            cnt[s][k] = (uint32_t)n;
         }
+    return 1;
 }
 
-uint32_t hol_navtab_count(int radius)
+uint32_t hol_navtab_count_q(int q, int radius)
 {
-    uint32_t cnt[HOL_TILE_STATES][HOL_NAVTAB_MAX_RADIUS + 1];
-    if (radius < 0 || radius > HOL_NAVTAB_MAX_RADIUS)
+    uint32_t cnt[HOL_TILE_MAX_STATES][HOL_NAVTAB_MAX_RADIUS + 1];
+    if (radius < 0 || radius > HOL_NAVTAB_MAX_RADIUS || !hol_tile_states(q) ||
+        !hol__counts(cnt, q, radius))
         return 0;
-    hol__counts(cnt, radius);
-    uint32_t n = 1;
+    uint64_t n = 1;
     for (int k = 1; k <= radius; k++)
-        n += 4 * cnt[0][k - 1];
-    return n;
+        n += 4 * (uint64_t)cnt[0][k - 1];
+    return n > UINT32_MAX / 2 ? 0 : (uint32_t)n;
 }
 
-size_t hol_navtab_table_bytes(int radius)
+uint32_t hol_navtab_count(int radius) { return hol_navtab_count_q(5, radius); }
+
+size_t hol_navtab_table_bytes(const hol_navtab *tab)
 {
-    size_t n = hol_navtab_count(radius);
-    return n * 4 * sizeof(uint32_t) + n * 9;
+    return (size_t)tab->count * (4 * sizeof(uint32_t) + (size_t)tab->per);
 }
 
-size_t hol_navtab_scratch_bytes(int radius)
+size_t hol_navtab_scratch_bytes(const hol_navtab *tab)
 {
-    return (size_t)hol_navtab_count(radius) * 9 * sizeof(uint32_t);
+    return (size_t)tab->count * (size_t)tab->per * sizeof(uint32_t);
 }
 
 int hol_navtab_rot_cell(int o, int cell)
@@ -88,6 +99,36 @@ int hol_navtab_rot_cell(int o, int cell)
         {2, 5, 8, 1, 4, 7, 0, 3, 6},
     };
     return rot[o & 3][cell];
+}
+
+/* The room's tables: cells turned, stored states, steps between cells. */
+static void hol__room_tables(hol_navtab *tab)
+{
+    int C = tab->cols, R = tab->rows, square = C == R;
+    static const int8_t dc[4] = {0, -1, 0, 1}, dr[4] = {-1, 0, 1, 0};
+    for (int cell = 0; cell < tab->ncell; cell++) {
+        int c = cell % C, r = cell / C;
+        /* a quarter turn counter-clockwise: (col, row) -> (row, C - 1 - col) */
+        tab->rotc[0][cell] = (uint8_t)cell;
+        tab->rotc[2][cell] = (uint8_t)((C - 1 - c) + C * (R - 1 - r));
+        tab->rotc[1][cell] = (uint8_t)(square ? r + C * (C - 1 - c) : cell);
+        tab->rotc[3][cell] = (uint8_t)(square ? (C - 1 - r) + C * c : cell);
+        for (int d = 0; d < 4; d++) {
+            int c2 = c + dc[d], r2 = r + dr[d];
+            tab->cellnb[cell][d] =
+                (int8_t)(c2 < 0 || c2 >= C || r2 < 0 || r2 >= R ? -1 : c2 + C * r2);
+        }
+    }
+    for (int o = 0; o < 4; o++) {
+        int g = square ? o : o & 2; /* turns that bring o to a stored one */
+        tab->turn[o] = (uint8_t)g;
+        for (int cell = 0; cell < tab->ncell; cell++)
+            tab->rot[o][cell] = (uint8_t)(tab->ncell * ((o - g) & 3) + tab->rotc[g][cell]);
+    }
+    for (int k = 0; k < tab->per; k++) {
+        tab->so[k] = (uint8_t)(k / tab->ncell);
+        tab->sc[k] = (uint8_t)(k % tab->ncell);
+    }
 }
 
 uint32_t hol_navtab_rank(const hol_navtab *tab, hol_tile t)
@@ -119,7 +160,7 @@ int hol_navtab_len(const hol_navtab *tab, uint32_t idx)
 
 hol_tile hol_navtab_unrank(const hol_navtab *tab, uint32_t idx)
 {
-    hol_tile t = hol_tile_origin();
+    hol_tile t = hol_tile_origin_q(tab->q);
     int n = hol_navtab_len(tab, idx);
     if (n == 0)
         return t;
@@ -144,35 +185,46 @@ hol_tile hol_navtab_unrank(const hol_navtab *tab, uint32_t idx)
     return t;
 }
 
-hol_err hol_navtab_init_index(hol_navtab *tab, int radius)
+hol_err hol_navtab_init(hol_navtab *tab, int q, int cols, int rows, int radius)
 {
-    if (radius < 0 || radius > HOL_NAVTAB_MAX_RADIUS)
+    hol_room probe;
+    if (radius < 0 || radius > HOL_NAVTAB_MAX_RADIUS || hol_room_start_in(q, cols, rows, &probe))
         return HOL_EARG;
     memset(tab, 0, sizeof *tab);
     tab->radius = radius;
-    for (int st = 0; st < HOL_TILE_STATES; st++)
+    tab->q = hol_tile_q(probe.tile);
+    tab->cols = hol_room_cols(&probe);
+    tab->rows = hol_room_rows(&probe);
+    tab->ncell = tab->cols * tab->rows;
+    tab->per = tab->cols == tab->rows ? tab->ncell : 2 * tab->ncell;
+    tab->nst = 4 * tab->ncell;
+    tab->nstates = hol_tile_states(tab->q);
+    for (int st = 0; st < tab->nstates; st++)
         for (int c = 0; c < 4; c++)
-            tab->next[st][c] = (int8_t)hol_tile_automaton(st, c);
-    hol__counts(tab->cnt, radius);
+            tab->next[st][c] = (int8_t)hol_tile_automaton_q(tab->q, st, c);
+    if (!hol__counts(tab->cnt, tab->q, radius))
+        return HOL_EARG;
     tab->off[0] = 0;
     tab->off[1] = 1;
-    for (int k = 1; k <= radius; k++)
+    for (int k = 1; k <= radius; k++) {
+        if ((uint64_t)tab->off[k] + 4 * (uint64_t)tab->cnt[0][k - 1] > UINT32_MAX / 8)
+            return HOL_EARG;
         tab->off[k + 1] = tab->off[k] + 4 * tab->cnt[0][k - 1];
+    }
     tab->count = tab->off[radius + 1];
+    hol__room_tables(tab);
     return HOL_OK;
 }
 
-hol_err hol_navtab_build(hol_navtab *tab, int radius, void *mem, void *scratch)
+hol_err hol_navtab_init_index(hol_navtab *tab, int radius)
 {
-    if (radius < 1 || radius > HOL_NAVTAB_MAX_RADIUS)
-        return HOL_EARG;
-    hol_navtab_init_index(tab, radius);
-    uint32_t n = tab->count;
-    tab->nb = (uint32_t *)mem;
-    tab->cost = (uint8_t *)(tab->nb + 4 * (size_t)n);
+    return hol_navtab_init(tab, 5, 3, 3, radius);
+}
 
-    /* neighbours */
-    for (uint32_t i = 0; i < n; i++) {
+/* nb: every tile's neighbours within the radius. */
+static void hol__neighbours(hol_navtab *tab)
+{
+    for (uint32_t i = 0; i < tab->count; i++) {
         hol_tile t = hol_navtab_unrank(tab, i);
         for (int turn = 0; turn < 4; turn++) {
             hol_tile u;
@@ -186,40 +238,14 @@ hol_err hol_navtab_build(hol_navtab *tab, int radius, void *mem, void *scratch)
             tab->nb[4 * (size_t)i + (size_t)turn] = v;
         }
     }
+}
 
-    /* BFS from the goal (tile O, every cell) over (tile, cell), o = 0 */
-    uint32_t *queue = (uint32_t *)scratch;
-    size_t head = 0, tail = 0;
-    memset(tab->cost, 255, 9 * (size_t)n);
-    for (int c = 0; c < 9; c++) {
-        tab->cost[c] = 0;
-        queue[tail++] = (uint32_t)c;
-    }
-    static const int8_t dcol[4] = {0, -1, 0, 1}, drow[4] = {-1, 0, 1, 0};
-    while (head < tail) {
-        uint32_t st = queue[head++];
-        uint32_t i = st / 9;
-        int cell = (int)(st % 9), col = cell % 3, row = cell / 3;
-        int v = tab->cost[st];
-        for (int d = 0; d < 4; d++) {
-            int c2 = col + dcol[d], r2 = row + drow[d];
-            if (c2 < 0 || c2 > 2 || r2 < 0 || r2 > 2)
-                continue;
-            uint32_t e = tab->nb[4 * (size_t)i + (size_t)d];
-            if (e == HOL_NAVTAB_NONE)
-                continue;
-            int o2 = (int)((e & 3u) - (uint32_t)d) & 3;
-            uint32_t s2 = 9 * (e >> 2) + (uint32_t)hol_navtab_rot_cell(o2, c2 + 3 * r2);
-            if (tab->cost[s2] == 255) {
-                tab->cost[s2] = (uint8_t)(v + 1);
-                queue[tail++] = s2;
-            }
-        }
-    }
-
-    /* certification */
-    int m = 255;
-    for (size_t s = 9 * (size_t)tab->off[radius]; s < 9 * (size_t)n; s++)
+/* The least and mean costs by distance, and how far the bound proves. */
+static void hol__certify(hol_navtab *tab)
+{
+    int m = 255, radius = tab->radius;
+    size_t per = (size_t)tab->per;
+    for (size_t s = per * tab->off[radius]; s < per * tab->count; s++)
         if (tab->cost[s] < m)
             m = tab->cost[s];
     tab->min_at_radius = m;
@@ -227,7 +253,7 @@ hol_err hol_navtab_build(hol_navtab *tab, int radius, void *mem, void *scratch)
     for (int k = 0; k <= radius; k++) {
         int bound = hol_navtab_exit_bound(tab, k), mn = 255;
         uint64_t sum = 0, cnt = 0;
-        for (size_t s = 9 * (size_t)tab->off[k]; s < 9 * (size_t)tab->off[k + 1]; s++) {
+        for (size_t s = per * tab->off[k]; s < per * tab->off[k + 1]; s++) {
             int v = tab->cost[s];
             if (v > bound && tab->proved_radius >= k)
                 tab->proved_radius = k - 1;
@@ -241,20 +267,60 @@ hol_err hol_navtab_build(hol_navtab *tab, int radius, void *mem, void *scratch)
         tab->min_at[k] = mn;
         tab->mean16_at[k] = cnt ? (int)(16 * sum / cnt) : 0;
     }
+}
+
+hol_err hol_navtab_build(hol_navtab *tab, void *mem, void *scratch)
+{
+    if (tab->radius < 1 || !tab->count)
+        return HOL_EARG;
+    uint32_t n = tab->count, per = (uint32_t)tab->per;
+    tab->nb = (uint32_t *)mem;
+    tab->cost = (uint8_t *)(tab->nb + 4 * (size_t)n);
+    hol__neighbours(tab);
+
+    /* BFS from the goal (tile O, every room state) over stored states */
+    uint32_t *queue = (uint32_t *)scratch;
+    size_t head = 0, tail = 0;
+    memset(tab->cost, 255, per * (size_t)n);
+    for (uint32_t k = 0; k < per; k++) {
+        tab->cost[k] = 0;
+        queue[tail++] = k;
+    }
+    while (head < tail) {
+        uint32_t st = queue[head++];
+        uint32_t i = st / per, k = st - i * per;
+        int o = tab->so[k], cell = tab->sc[k], v = tab->cost[st];
+        for (int d = 0; d < 4; d++) {
+            int c2 = tab->cellnb[cell][d];
+            if (c2 < 0)
+                continue;
+            uint32_t e = tab->nb[4 * (size_t)i + (size_t)((o + d) & 3)];
+            if (e == HOL_NAVTAB_NONE)
+                continue;
+            int o2 = (int)((e & 3u) - (uint32_t)d) & 3;
+            uint32_t s2 = per * (e >> 2) + tab->rot[o2][c2];
+            if (tab->cost[s2] == 255) {
+                tab->cost[s2] = (uint8_t)(v + 1);
+                queue[tail++] = s2;
+            }
+        }
+    }
+    hol__certify(tab);
     return HOL_OK;
 }
 
-size_t hol_navtab_leg_bytes(int leg_radius)
+size_t hol_navtab_leg_bytes(const hol_navtab *tab, int leg_radius)
 {
-    return (size_t)hol_navtab_count(leg_radius) * 9 * 36;
+    return (size_t)hol_navtab_count_q(tab->q, leg_radius) * (size_t)tab->per * (size_t)tab->nst;
 }
 
-size_t hol_navtab_leg_scratch_bytes(int leg_radius)
+size_t hol_navtab_leg_scratch_bytes(const hol_navtab *tab, int leg_radius)
 {
-    return (size_t)hol_navtab_count(leg_radius) * 36 * (sizeof(uint32_t) + 1);
+    return (size_t)hol_navtab_count_q(tab->q, leg_radius) * (size_t)tab->nst *
+           (sizeof(uint32_t) + 1);
 }
 
-/* One BFS per goal state (36): from (O, ob, cb) over full states
+/* One BFS per goal state (nst): from (O, ob, cb) over full states
  * (tile, o, cell) of the tiles within leg_radius; steps are reversible, so
  * these are the distances to the goal. */
 hol_err hol_navtab_build_legs(const hol_navtab *tab, int leg_radius, uint8_t *out_leg,
@@ -262,32 +328,34 @@ hol_err hol_navtab_build_legs(const hol_navtab *tab, int leg_radius, uint8_t *ou
 {
     if (leg_radius < 1 || leg_radius > tab->radius)
         return HOL_EARG;
-    uint32_t n = hol_navtab_count(leg_radius);
-    size_t nst = 36 * (size_t)n;
+    uint32_t n = hol_navtab_count_q(tab->q, leg_radius), nst = (uint32_t)tab->nst;
+    uint32_t nc = (uint32_t)tab->ncell, per = (uint32_t)tab->per;
+    size_t total = nst * (size_t)n;
     uint32_t *queue = (uint32_t *)scratch;
-    uint8_t *dist = (uint8_t *)(queue + nst);
-    static const int8_t dcol[4] = {0, -1, 0, 1}, drow[4] = {-1, 0, 1, 0};
-    for (int g = 0; g < 36; g++) {
-        int ob = g / 9, cb = g % 9;
-        memset(dist, 255, nst);
+    uint8_t *dist = (uint8_t *)(queue + total);
+    uint8_t fo[HOL_NAVTAB_MAX_NST], fc[HOL_NAVTAB_MAX_NST]; /* a full state's o, cell */
+    for (uint32_t s = 0; s < nst; s++) {
+        fo[s] = (uint8_t)(s / nc);
+        fc[s] = (uint8_t)(s % nc);
+    }
+    for (uint32_t g = 0; g < nst; g++) {
+        memset(dist, 255, total);
         size_t head = 0, tail = 0;
-        uint32_t s0 = (uint32_t)(ob * 9 + cb); /* tile 0 */
-        dist[s0] = 0;
-        queue[tail++] = s0;
+        dist[g] = 0; /* tile 0, state g */
+        queue[tail++] = g;
         while (head < tail) {
             uint32_t st = queue[head++];
-            uint32_t i = st / 36;
-            int o = (int)(st / 9 % 4), cell = (int)(st % 9);
-            int col = cell % 3, row = cell / 3, v = dist[st];
+            uint32_t i = st / nst, s = st - i * nst;
+            int o = fo[s], cell = fc[s], v = dist[st];
             for (int d = 0; d < 4; d++) {
-                int c2 = col + dcol[d], r2 = row + drow[d];
-                if (c2 < 0 || c2 > 2 || r2 < 0 || r2 > 2)
+                int c2 = tab->cellnb[cell][d];
+                if (c2 < 0)
                     continue;
                 uint32_t e = tab->nb[4 * (size_t)i + (size_t)((o + d) & 3)];
                 if (e == HOL_NAVTAB_NONE || (e >> 2) >= n)
                     continue;
                 int o2 = (int)((e & 3u) - (uint32_t)d) & 3;
-                uint32_t s2 = 36 * (e >> 2) + (uint32_t)(9 * o2 + c2 + 3 * r2);
+                uint32_t s2 = nst * (e >> 2) + nc * (uint32_t)o2 + (uint32_t)c2;
                 if (dist[s2] == 255) {
                     dist[s2] = (uint8_t)(v + 1);
                     queue[tail++] = s2;
@@ -295,8 +363,9 @@ hol_err hol_navtab_build_legs(const hol_navtab *tab, int leg_radius, uint8_t *ou
             }
         }
         for (uint32_t i = 0; i < n; i++)
-            for (int c = 0; c < 9; c++)
-                out_leg[36 * (9 * (size_t)i + (size_t)c) + (size_t)g] = dist[36 * (size_t)i + (size_t)c];
+            for (uint32_t k = 0; k < per; k++)
+                out_leg[nst * (per * (size_t)i + k) + g] =
+                    dist[nst * (size_t)i + nc * tab->so[k] + tab->sc[k]];
     }
     return HOL_OK;
 }

@@ -1,20 +1,29 @@
 /* hol_nav_table.h - the exact cost table behind hol_nav (internal module).
  *
  * Contract
+ * - A table serves one configuration: the tiling {4,q} and a room of
+ *   cols x rows cells (cell index col + cols * row). hol_navtab_init sets
+ *   it and the numbering; the build fills caller memory.
  * - Tiles within `radius` of O are numbered densely (O = 0, then by address
  *   length, then lexicographically by letter code) with an exact rank and
- *   unrank through the canonical-address automaton (a copy of the one
- *   documented in hol_tile.c; the tests check both agree).
+ *   unrank through the tiling's canonical-address automaton (a copy of
+ *   hol_tile_automaton_q; the tests check both agree).
  * - nb[4 * i + t] is the neighbour of tile i across the edge in turn t
  *   (relative to its canonical heading): (index << 2) | arrive, where arrive
  *   is the direction of travel on arrival relative to the neighbour's
  *   heading; HOL_NAVTAB_NONE when the neighbour lies beyond the radius.
- * - cost[9 * i + cell] is, for a user whose tile seen from the target is
- *   tile i with room north equal to i's canonical heading, standing on
- *   `cell` (col + 3 * row), the fewest room steps to stand on the target
- *   (tile O) among walks whose tiles all stay within the radius. Other room
- *   orientations o map to it by rotating the cell: hol_navtab_cost below.
- *   255 means unreachable inside the radius (does not happen for r >= 2).
+ * - Room states on a tile: (o, cell), o the room's north relative to the
+ *   tile's heading: 4 * cells of them (nst). Turning the whole room maps
+ *   walks to walks, so the table stores only `per` of them a tile: a square
+ *   room turned a quarter is itself (per = cells, o = 0 stored, other
+ *   orientations turn the cell); an oblong one only turned a half (per =
+ *   2 * cells, o = 0 and 1 stored). rot[o][cell] is the stored index of a
+ *   state (hol_navtab_cost).
+ * - cost[per * i + k] is, for a user whose tile seen from the target is
+ *   tile i in stored state k, the fewest room steps to stand on the target
+ *   (tile O) among walks whose tiles all stay within the radius. 255 means
+ *   unreachable inside the radius (in {4,4} every tile off the room's own
+ *   C x R; never in the other tilings for r >= 2).
  * - The table is filled once (hol_navtab_build) in caller memory; lookups
  *   are pure and thread safe.
  */
@@ -25,76 +34,98 @@
 #include <stdint.h>
 
 #include "hol_err.h"
+#include "hol_room.h"
 #include "hol_tile.h"
 
 #define HOL_NAVTAB_NONE UINT32_MAX
 #define HOL_NAVTAB_MAX_RADIUS 17
+#define HOL_NAVTAB_MAX_NST (4 * HOL_ROOM_MAX_CELLS) /* room states a tile, 100 */
 
 typedef struct hol_navtab {
     int radius;
+    int q, cols, rows, ncell;
+    int per; /* stored room states a tile: ncell (square room) or 2 * ncell */
+    int nst; /* room states a tile: 4 * ncell */
+    int nstates; /* automaton states */
     uint32_t count;                        /* tiles within the radius */
     uint32_t off[HOL_NAVTAB_MAX_RADIUS + 2];  /* first index of each length */
-    uint32_t cnt[HOL_TILE_STATES][HOL_NAVTAB_MAX_RADIUS + 1]; /* suffix counts per state */
-    int8_t next[HOL_TILE_STATES][4]; /* hol_tile_automaton, cached */
+    uint32_t cnt[HOL_TILE_MAX_STATES][HOL_NAVTAB_MAX_RADIUS + 1]; /* suffix counts per state */
+    int8_t next[HOL_TILE_MAX_STATES][4]; /* hol_tile_automaton_q, cached */
+    uint8_t rot[4][HOL_ROOM_MAX_CELLS];  /* stored index of state (o, cell) */
+    uint8_t turn[4];                     /* g: the quarter turns that bring o to a stored one */
+    uint8_t rotc[4][HOL_ROOM_MAX_CELLS]; /* a cell after turning the room g quarter turns */
+    uint8_t so[HOL_NAVTAB_MAX_NST];      /* stored index k: its orientation */
+    uint8_t sc[HOL_NAVTAB_MAX_NST];      /* and its cell */
+    int8_t cellnb[HOL_ROOM_MAX_CELLS][4]; /* cell after a room step, -1 outside */
     uint32_t *nb;   /* 4 * count */
-    uint8_t *cost;  /* 9 * count */
+    uint8_t *cost;  /* per * count */
     int min_at_radius; /* least cost over states at exactly `radius` */
     int proved_radius; /* costs within it are proved exact by the bound */
     int min_at[HOL_NAVTAB_MAX_RADIUS + 1];  /* least cost at each distance */
     int mean16_at[HOL_NAVTAB_MAX_RADIUS + 1]; /* 16 x mean finite cost */
 } hol_navtab;
 
-/* Tiles within radius r of a tile (r <= HOL_NAVTAB_MAX_RADIUS). */
+/* Tiles within radius r of a tile of {4,q} (r <= HOL_NAVTAB_MAX_RADIUS);
+ * hol_navtab_count is {4,5}. 0 for bad arguments or more than 2^32. */
+uint32_t hol_navtab_count_q(int q, int radius);
 uint32_t hol_navtab_count(int radius);
-/* Bytes hol_navtab_build needs: table memory and scratch memory. */
-size_t hol_navtab_table_bytes(int radius);
-size_t hol_navtab_scratch_bytes(int radius);
 
-/* Fill only the numbering (off, cnt, count) for radius 0..15: enough for
- * rank and unrank, no memory needed. */
+/* Set the configuration ({4,q}, cols x rows; zero: 5, 3, 3) and the
+ * numbering (off, cnt, count) for radius 0..HOL_NAVTAB_MAX_RADIUS: enough
+ * for rank and unrank, no memory needed. HOL_EARG for bad values.
+ * hol_navtab_init_index is the same for {4,5} and 3 x 3. */
+hol_err hol_navtab_init(hol_navtab *tab, int q, int cols, int rows, int radius);
 hol_err hol_navtab_init_index(hol_navtab *tab, int radius);
 
-/* Build in `mem` (hol_navtab_table_bytes) using `scratch` (overwritten). */
-hol_err hol_navtab_build(hol_navtab *tab, int radius, void *mem, void *scratch);
+/* Bytes hol_navtab_build needs for an initialised tab: table memory and
+ * scratch memory. */
+size_t hol_navtab_table_bytes(const hol_navtab *tab);
+size_t hol_navtab_scratch_bytes(const hol_navtab *tab);
 
-/* Index of tile t, or HOL_NAVTAB_NONE if it lies beyond the radius. */
+/* Build the initialised tab (radius >= 1) in `mem` (hol_navtab_table_bytes)
+ * using `scratch` (overwritten). */
+hol_err hol_navtab_build(hol_navtab *tab, void *mem, void *scratch);
+
+/* Index of tile t (of the table's tiling), or HOL_NAVTAB_NONE if it lies
+ * beyond the radius. */
 uint32_t hol_navtab_rank(const hol_navtab *tab, hol_tile t);
 hol_tile hol_navtab_unrank(const hol_navtab *tab, uint32_t idx);
 int hol_navtab_len(const hol_navtab *tab, uint32_t idx);
 
 /* ---- leg table: state-to-state costs for tours ----
- * leg[36 * (9 * i + cell) + 9 * ob + cb] is, for a user on tile i (seen
- * from the target as above, room north = i's heading, so o = 0) on `cell`,
- * the fewest steps to stand on the target with room north ob (relative to
- * the target's heading) on cell cb, among walks within leg_radius. Only
- * tiles i < hol_navtab_count(leg_radius) are covered; the neighbour table
- * of `tab` (radius >= leg_radius) is reused. Costs within leg_radius - 3
- * equal those of every larger leg table (the tests check r against r + 1;
- * one tile less than the tile table, as a given final room state may need
- * one more tile of room to turn into). */
-size_t hol_navtab_leg_bytes(int leg_radius);
-size_t hol_navtab_leg_scratch_bytes(int leg_radius);
+ * leg[nst * (per * i + k) + s2] is, for a user on tile i (seen from the
+ * target as above) in stored state k, the fewest steps to stand on the
+ * target in room state s2 = ncell * ob + cb (ob relative to the target's
+ * heading, cell cb), among walks within leg_radius. Only tiles
+ * i < hol_navtab_count_q(q, leg_radius) are covered; the neighbour table
+ * of `tab` (radius >= leg_radius) is reused. In {4,5} 3 x 3, costs within
+ * leg_radius - 3 equal those of every larger leg table (the tests check r
+ * against r + 1; one tile less than the tile table, as a given final room
+ * state may need one more tile of room to turn into). */
+size_t hol_navtab_leg_bytes(const hol_navtab *tab, int leg_radius);
+size_t hol_navtab_leg_scratch_bytes(const hol_navtab *tab, int leg_radius);
 hol_err hol_navtab_build_legs(const hol_navtab *tab, int leg_radius, uint8_t *out_leg,
                               void *scratch);
 
-/* Cell index (col + 3 * row) after rotating the room by o quarter turns
- * counter-clockwise. */
+/* Cell index after rotating a square room by o quarter turns
+ * counter-clockwise ({4,5} 3 x 3 cells; the tables use rot and rotc). */
 int hol_navtab_rot_cell(int o, int cell);
 
 /* Table cost (within the radius) of tile index idx, orientation o, cell. */
-static inline int hol_navtab_cost(const hol_navtab *tab, uint32_t idx, int o,
-                                  int cell)
+static inline int hol_navtab_cost(const hol_navtab *tab, uint32_t idx, int o, int cell)
 {
-    return tab->cost[9 * (size_t)idx + (size_t)hol_navtab_rot_cell(o, cell)];
+    return tab->cost[(size_t)tab->per * idx + tab->rot[o & 3][cell]];
 }
 
 /* Leg cost for a user (tile index i, room north o, cell) to stand on the
- * target with room north ob on cell cb (see above). */
-static inline int hol_navtab_leg(const uint8_t *leg, uint32_t idx, int o, int cell,
-                                 int ob, int cb)
+ * target with room north ob on cell cb (see above): the room turned by g
+ * (tab->turn[o]) brings the user to a stored state, and the goal with it. */
+static inline int hol_navtab_leg(const hol_navtab *tab, const uint8_t *leg, uint32_t idx,
+                                 int o, int cell, int ob, int cb)
 {
-    return leg[36 * (9 * (size_t)idx + (size_t)hol_navtab_rot_cell(o, cell)) +
-               (size_t)(9 * ((ob - o) & 3) + hol_navtab_rot_cell(o, cb))];
+    int g = tab->turn[o & 3];
+    return leg[(size_t)tab->nst * ((size_t)tab->per * idx + tab->rot[o & 3][cell]) +
+               (size_t)(tab->ncell * ((ob - g) & 3) + tab->rotc[g][cb])];
 }
 
 /* A lower bound on the true fewest steps (walks may leave the radius) for a

@@ -661,8 +661,7 @@ void hol__fill_content(const hol_world *w, const hol__entry *e,
 
 hol_err hol_world_update(hol_world *w, const hol_room *room)
 {
-    if (!w || !room || room->orient > 3 || room->col >= HOL_ROOM_SIZE ||
-        room->row >= HOL_ROOM_SIZE || hol_tile_dist0(room->tile) > HOL_TILE_MAX_DIST)
+    if (!w || !hol_room_ok(room) || hol_tile_q(room->tile) != w->q)
         return HOL_EARG;
     if (w->ready && hol_tile_eq(room->tile, w->user.tile)) {
         w->user = *room; /* same tile: its ball is already collapsed */
@@ -681,7 +680,7 @@ hol_err hol_world_update(hol_world *w, const hol_room *room)
 
 hol_err hol_world_get(hol_world *w, hol_tile t, hol_tile_content *out)
 {
-    if (!w || !out || hol_tile_dist0(t) > HOL_TILE_MAX_DIST)
+    if (!w || !out || hol_tile_q(t) != w->q)
         return HOL_EARG;
     int64_t idx = hol__find(w, t);
     if (idx < 0 || w->entries[idx].state == HOL__UNSET) {
@@ -729,7 +728,7 @@ hol_err hol_world_reserve(hol_world *w, hol_tile t, int max_dist,
 {
     if (!w || !out_tile || max_dist < 0 ||
         (obj != HOL_OBJ_FLAG && obj != HOL_OBJ_KEY && obj != HOL_OBJ_CHEST) ||
-        hol_tile_dist0(t) > HOL_TILE_MAX_DIST)
+        hol_tile_q(t) != w->q)
         return HOL_EARG;
     if (max_dist > w->radius)
         max_dist = w->radius;

@@ -17,14 +17,14 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* Tiles within distance r of a tile: 1 + 4 + 12 + 28 + ... (SPEC 3). */
-uint32_t hol__ball_size(int radius)
+/* Tiles within distance r of a tile of {4,q}: 1 + 4 + 12 + 28 + ... in
+ * {4,5} (SPEC 3 and 7). */
+uint32_t hol__ball_size(int q, int radius)
 {
-    static const uint32_t ball[10] = {1,   5,    17,   45,   109,
-                                      257, 597, 1377, 3169, 7285};
-    if (radius < 0)
-        return 0;
-    return ball[radius > 9 ? 9 : radius];
+    uint64_t n = 0;
+    for (int d = 0; d <= (radius > 9 ? 9 : radius); d++)
+        n += hol_tile_count_at(q, d);
+    return (uint32_t)n;
 }
 
 uint64_t hol__mix(uint64_t a, uint64_t b)
@@ -40,12 +40,13 @@ uint64_t hol__tile_hash(uint64_t seed, hol_tile t)
 int hol__tile_valid(hol_tile t)
 {
     int len = hol_tile_dist0(t);
-    if (len > HOL_TILE_MAX_DIST)
+    int q = hol_tile_q(t);
+    if (!q || len > HOL_TILE_MAX_DIST)
         return 0;
     char buf[HOL_TILE_ADDR_MAX];
     hol_tile back;
     hol_tile_print(t, buf);
-    if (hol_tile_parse(buf, -1, &back))
+    if (hol_tile_parse_q(q, buf, -1, &back))
         return 0;
     return hol_tile_eq(back, t); /* also rejects stray high bits */
 }
@@ -63,12 +64,14 @@ static size_t hol__align(size_t n) { return (n + 15) & ~(size_t)15; }
 static int hol__plan(const hol_world_desc *desc, hol__layout *l)
 {
     int radius = desc->radius ? desc->radius : HOL_WORLD_DEFAULT_RADIUS;
-    if (radius < 1 || radius > HOL_WORLD_MAX_RADIUS)
+    int q = desc->tiling_q ? desc->tiling_q : HOL_TILING_DEFAULT_Q;
+    if (radius < 1 || radius > HOL_WORLD_MAX_RADIUS || q < HOL_TILING_MIN_Q ||
+        q > HOL_TILING_MAX_Q)
         return 0;
     uint64_t want = desc->capacity ? desc->capacity : HOL_WORLD_DEFAULT_CAPACITY;
     if (want > (UINT64_C(1) << 31))
         return 0;
-    uint64_t minimum = (uint64_t)8 * hol__ball_size(radius + 1);
+    uint64_t minimum = (uint64_t)8 * hol__ball_size(q, radius + 1);
     if (want < minimum)
         want = minimum;
     if (want < HOL_WORLD_MIN_CAPACITY)
@@ -77,12 +80,12 @@ static int hol__plan(const hol_world_desc *desc, hol__layout *l)
     while (cap < want)
         cap <<= 1;
     l->cap = (uint32_t)cap;
-    l->max_slots = hol__ball_size(radius + 1);
+    l->max_slots = hol__ball_size(q, radius + 1);
     l->map_size = 1;
     while (l->map_size < 2 * l->max_slots)
         l->map_size <<= 1;
     l->max_trail = 32 * l->max_slots + 64;
-    l->max_reserve = hol__ball_size(radius);
+    l->max_reserve = hol__ball_size(q, radius);
     size_t off = hol__align(sizeof(hol_world));
     l->off_entries = off;
     off += hol__align((size_t)l->cap * sizeof(hol__entry));
@@ -155,6 +158,9 @@ hol_err hol_world_init(void *mem, size_t size, const hol_world_desc *desc,
         for (uint32_t j = 0; j < i; j++)
             if (hol_tile_eq(desc->places[i].tile, desc->places[j].tile))
                 return HOL_EARG;
+        int pq = desc->tiling_q ? desc->tiling_q : HOL_TILING_DEFAULT_Q;
+        if (hol_tile_q(desc->places[i].tile) != pq)
+            return HOL_EARG;
     }
     w->seed = desc->seed;
     w->nplaces = desc->nplaces;
@@ -166,7 +172,8 @@ hol_err hol_world_init(void *mem, size_t size, const hol_world_desc *desc,
     w->reject_per_mille = desc->test_reject_per_mille > 1000
                               ? 1000
                               : desc->test_reject_per_mille;
-    w->user = hol_room_start();
+    w->q = desc->tiling_q ? desc->tiling_q : HOL_TILING_DEFAULT_Q;
+    hol_room_start_in(w->q, 0, 0, &w->user);
     w->entries = (hol__entry *)(void *)(base + l.off_entries);
     w->slots = (hol__slot *)(void *)(base + l.off_slots);
     w->max_slots = l.max_slots;
@@ -234,6 +241,7 @@ void hol_world_destroy(hol_world *w)
 }
 
 uint64_t hol_world_seed(const hol_world *w) { return w->seed; }
+int hol_world_tiling(const hol_world *w) { return w->q; }
 int hol_world_radius(const hol_world *w) { return w->radius; }
 hol_room hol_world_user(const hol_world *w) { return w->user; }
 

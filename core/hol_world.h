@@ -15,9 +15,10 @@
  *     each has HOL_CONN_LOG on the shared edge only, and log_partner names
  *     that edge (-1 on every other tile).
  *   - Trees: a trunk stands on every vertex. Corner c of a tile is the vertex
- *     between its edges c and c + 1 (so corner 0 is front-left). Five tiles
- *     meet at a vertex; hol_world_vertex_canon names the vertex by the least
- *     (tile word, corner) pair of the five, and the tree is a pure function of
+ *     between its edges c and c + 1 (so corner 0 is front-left). Q tiles
+ *     meet at a vertex (five in {4,5}; the world's tiling, desc.tiling_q);
+ *     hol_world_vertex_canon names the vertex by the least (tile word,
+ *     corner) pair of the Q, and the tree is a pure function of
  *     (seed, canonical vertex), so every tile reports the same tree.
  *   - Game objects (FLAG, KEY, CHEST) are never generated; the game places
  *     them on free tiles with hol_world_reserve.
@@ -182,6 +183,10 @@ typedef struct hol_world_desc {
      * 0: as many as the store's capacity. Fixed memory, 24 bytes a tile,
      * allocated at init. */
     uint32_t keep_capacity;
+    /* The tiling {4,Q}, 4..8; 0: 5. Every tile and room state given to the
+     * world must be of it (HOL_EARG otherwise); trees stand on vertices
+     * with Q tiles round them. */
+    int tiling_q;
 } hol_world_desc;
 
 typedef struct hol_world hol_world;
@@ -213,6 +218,7 @@ hol_err hol_world_make(const hol_world_desc *desc, hol_world **out_world);
 void hol_world_destroy(hol_world *w); /* only for hol_world_make; NULL ok */
 
 uint64_t hol_world_seed(const hol_world *w);
+int hol_world_tiling(const hol_world *w); /* Q of its tiling {4,Q} */
 int hol_world_radius(const hol_world *w);
 /* The room state of the last update (the start before the first). */
 hol_room hol_world_user(const hol_world *w);
@@ -251,7 +257,7 @@ hol_err hol_world_reserve(hol_world *w, hol_tile t, int max_dist,
 hol_err hol_world_release(hol_world *w, hol_tile t);
 
 /* Canonical name of corner c of tile t: the least (tile word, corner) pair
- * among the five tiles around that vertex. */
+ * among the Q tiles around that vertex (Q of t's tiling). */
 hol_err hol_world_vertex_canon(hol_tile t, int corner, hol_tile *out_tile,
                                int *out_corner);
 /* The tree on corner c of t (pure in seed and vertex). */
@@ -271,7 +277,7 @@ hol_err hol_world_save(const hol_world *w, void *buf, size_t cap,
 /* Load an image made by hol_world_save: HOL_ECORRUPT (truncated, checksum
  * or structure), HOL_EVERSION (another format version), HOL_ENOMEM (more
  * tiles than 3/4 of the capacity), HOL_EARG (the image was saved with
- * another radius), with a one-line reason in msg (may be NULL). On error
+ * another radius or tiling), with a one-line reason in msg (may be NULL). On error
  * the world is unchanged. On success the seed, the user state and the
  * store come from the image; capacity, allocator and statistics stay. */
 hol_err hol_world_load(hol_world *w, const void *buf, size_t len, char *msg,
@@ -283,7 +289,7 @@ hol_err hol_world_load(hol_world *w, const void *buf, size_t len, char *msg,
 #define HOL_WORLD_IMAGE_HEADER 64
 hol_err hol_world_image_size(const void *header, size_t len, uint64_t *out_len, char *msg,
                              size_t msg_cap);
-/* The desc (seed, radius, a capacity that holds the image) to make a world
+/* The desc (seed, radius, tiling, a capacity that holds the image) to make a world
  * for an image, after checking its header, length and checksum; errors and
  * msg as hol_world_load. */
 hol_err hol_world_image_desc(const void *buf, size_t len,

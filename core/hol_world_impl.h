@@ -79,6 +79,7 @@ typedef struct hol__decision {
 struct hol_world {
     uint64_t seed;
     int radius;
+    int q;               /* the tiling {4,q} */
     uint32_t cap;        /* power of two */
     uint32_t mask;
     uint32_t count;
@@ -121,7 +122,7 @@ struct hol_world {
 };
 
 /* hol_world.c: the store */
-uint32_t hol__ball_size(int radius); /* tiles within radius, 0..9 */
+uint32_t hol__ball_size(int q, int radius); /* tiles within radius, 0..9 */
 int64_t hol__find(const hol_world *w, hol_tile t);       /* index or -1 */
 const hol__kept *hol__kept_find(const hol_world *w, hol_tile t); /* or NULL */
 void hol__keep(hol_world *w, const hol__entry *e); /* remember a seen tile */
@@ -132,7 +133,7 @@ int64_t hol__insert(hol_world *w, hol_tile t);
 void hol__maybe_evict(hol_world *w);
 uint64_t hol__mix(uint64_t a, uint64_t b);
 uint64_t hol__tile_hash(uint64_t seed, hol_tile t);
-int hol__tile_valid(hol_tile t); /* a canonical tile word in reach */
+int hol__tile_valid(hol_tile t); /* a canonical tile word in reach (any tiling) */
 
 /* hol_wfc.c: the tile set */
 int hol__state_obj(int s);

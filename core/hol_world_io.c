@@ -11,7 +11,8 @@
  *       32     4  update stamp
  *       36     4  reserved, 0
  *       40    16  user tile word (bits[0], bits[1])
- *       56     4  user orient, col, row, 0
+ *       56     4  user orient, col, row, room size ((cols - 3) | (rows - 3)
+ *                 << 4; 0: 3 x 3)
  *       60     4  reserved, 0
  *       64  24*N  records sorted by tile word (bits[1], then bits[0]):
  *                 tile bits[0] (8), bits[1] (8), stamp (4), state (1;
@@ -121,6 +122,7 @@ hol_err hol_world_save(const hol_world *w, void *buf, size_t cap,
     p[56] = w->user.orient;
     p[57] = w->user.col;
     p[58] = w->user.row;
+    p[59] = (uint8_t)(w->user.more_cols | w->user.more_rows << 4);
     uint8_t *r = p + HOL__HDR;
     for (uint32_t i = 0; i < w->cap; i++) {
         const hol__entry *e = &w->entries[i];
@@ -233,7 +235,7 @@ static hol_err hol__parse_header(const void *buf, size_t len, hol__image *im,
     if (im->radius < 1 || im->radius > HOL_WORLD_MAX_RADIUS)
         return hol__say(msg, cap, HOL_ECORRUPT, "radius %llu out of range 1..%llu",
                         im->radius, HOL_WORLD_MAX_RADIUS);
-    if (hol__get32(p + 36) || hol__get32(p + 60) || p[59])
+    if (hol__get32(p + 36) || hol__get32(p + 60))
         return hol__say(msg, cap, HOL_ECORRUPT, "reserved header bytes are not zero%.0llu%.0llu",
                         0, 0);
     im->user.tile.bits[0] = hol__get64(p + 40);
@@ -241,9 +243,9 @@ static hol_err hol__parse_header(const void *buf, size_t len, hol__image *im,
     im->user.orient = p[56];
     im->user.col = p[57];
     im->user.row = p[58];
-    im->user.more_cols = im->user.more_rows = 0;
-    if (!hol__tile_valid(im->user.tile) || im->user.orient > 3 ||
-        im->user.col >= HOL_ROOM_SIZE || im->user.row >= HOL_ROOM_SIZE)
+    im->user.more_cols = p[59] & 15;
+    im->user.more_rows = p[59] >> 4;
+    if (!hol__tile_valid(im->user.tile) || !hol_room_ok(&im->user))
         return hol__say(msg, cap, HOL_ECORRUPT, "invalid user state%.0llu%.0llu", 0, 0);
     return HOL_OK;
 }
@@ -290,6 +292,7 @@ hol_err hol_world_image_desc(const void *buf, size_t len,
     memset(out_desc, 0, sizeof *out_desc);
     out_desc->seed = im.seed;
     out_desc->radius = (int)im.radius;
+    out_desc->tiling_q = hol_tile_q(im.user.tile);
     uint64_t cap = HOL_WORLD_DEFAULT_CAPACITY;
     while (cap / 4 * 3 < im.count && cap < (UINT64_C(1) << 31))
         cap <<= 1;
@@ -312,6 +315,10 @@ hol_err hol_world_load(hol_world *w, const void *buf, size_t len, char *msg,
         return hol__say(msg, msg_cap, HOL_EARG,
                         "image saved with radius %llu, this world has radius %llu",
                         im.radius, (unsigned long long)w->radius);
+    if (hol_tile_q(im.user.tile) != w->q)
+        return hol__say(msg, msg_cap, HOL_EARG,
+                        "image saved in the tiling {4,%llu}, this world is {4,%llu}",
+                        (unsigned long long)hol_tile_q(im.user.tile), (unsigned long long)w->q);
     const uint8_t *recs = im.p + HOL__HDR;
     uint32_t nstore = 0, nkept = 0;
     for (uint32_t i = 0; i < im.count; i++) {
@@ -339,6 +346,9 @@ hol_err hol_world_load(hol_world *w, const void *buf, size_t len, char *msg,
                             "record %llu has unknown flags%.0llu", i, 0);
         hol__rec rec;
         hol__decode(r, &rec);
+        if (hol_tile_q(rec.tile) != hol_tile_q(im.user.tile))
+            return hol__say(msg, msg_cap, HOL_ECORRUPT,
+                            "record %llu is a tile of another tiling%.0llu", i, 0);
         if (rec.stamp > im.stamp)
             return hol__say(msg, msg_cap, HOL_ECORRUPT,
                             "record %llu is newer than the image%.0llu", i, 0);

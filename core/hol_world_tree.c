@@ -4,8 +4,9 @@
  * counter-clockwise from the canonical heading). Going round that vertex:
  * step across edge c to (n, arrive); the shared edge is (arrive + 2) & 3 in
  * n, and orientation flips across an edge, so the vertex is corner
- * (arrive + 1) & 3 of n. Five such moves return to (t, c). The canonical
- * name of the vertex is the least (tile word, corner) of the five, ordering
+ * (arrive + 1) & 3 of n. Q such moves return to (t, c) (five in {4,5}: Q
+ * of the tile's tiling). The canonical name of the vertex is the least
+ * (tile word, corner) of the Q, ordering
  * tile words by length first (so the tile nearest O wins); near the reach of
  * tile words the walk round goes both ways and uses the tiles that exist.
  */
@@ -23,7 +24,8 @@ static int hol__tile_less(hol_tile a, int ca, hol_tile b, int cb)
 hol_err hol_world_vertex_canon(hol_tile t, int corner, hol_tile *out_tile,
                                int *out_corner)
 {
-    if (hol_tile_dist0(t) > HOL_TILE_MAX_DIST || !out_tile || !out_corner)
+    int q = hol_tile_q(t);
+    if (!q || !out_tile || !out_corner)
         return HOL_EARG;
     corner &= 3;
     hol_tile best = t;
@@ -31,7 +33,7 @@ hol_err hol_world_vertex_canon(hol_tile t, int corner, hol_tile *out_tile,
     /* counter-clockwise round the vertex */
     hol_tile cur = t;
     int c = corner, i = 0;
-    for (; i < 4; i++) {
+    for (; i < q - 1; i++) {
         hol_tile n;
         int arr;
         if (hol_tile_step(cur, c, &n, &arr))
@@ -43,11 +45,11 @@ hol_err hol_world_vertex_canon(hol_tile t, int corner, hol_tile *out_tile,
             best_c = c;
         }
     }
-    if (i < 4) {
+    if (i < q - 1) {
         /* the other way: across edge c + 1, the vertex is corner arrive + 2 */
         cur = t;
         c = corner;
-        for (int j = 0; j < 4 - i; j++) {
+        for (int j = 0; j < q - 1 - i; j++) {
             hol_tile n;
             int arr;
             if (hol_tile_step(cur, c + 1, &n, &arr))

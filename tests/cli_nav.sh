@@ -135,4 +135,80 @@ expect_status "tour missing chest" 2 "$H" tour -
 expect_status "tour help" 0 "$H" tour --help
 grep -q "PREFIX KEY... CHEST" "$T/out" && ok || bad "tour --help text"
 
+# ---- tilings and rooms (SPEC 7) ----
+# in_room_cr WALK C R: the walk stays in a C x R room from (C/2, R/2)
+in_room_cr() {
+  printf '%s\n' "$1" | awk -v C="$2" -v R="$3" '{ c = int(C / 2); r = int(R / 2); s = $0;
+    if (s == "-") s = "";
+    for (i = 1; i <= length(s); i++) { x = substr(s, i, 1);
+      if (x == "N") r--; else if (x == "S") r++; else if (x == "E") c++;
+      else if (x == "W") c--; else exit 1;
+      if (c < 0 || c >= C || r < 0 || r >= R) exit 1 } }'
+}
+# check_lines_in Q C R: as check_lines, in {4,Q} and a C x R room
+check_lines_in() {
+  paste -d ' ' "$T/in" "$T/out" >"$T/pairs"
+  while read -r prefix target k walk; do
+    p=$prefix; [ "$p" = "-" ] && p=""
+    w=$walk; [ "$w" = "-" ] && w=""
+    if [ "${#w}" != "$k" ]; then bad "{4,$1} $2x$3: K $k but walk '$walk'"; continue; fi
+    if ! in_room_cr "$p$w" "$2" "$3"; then bad "{4,$1} $2x$3: $prefix+$walk leaves the room"; continue; fi
+    got=$(printf '%s\n' "$p$w" | "$H" tile walk --tiling "4,$1" | cut -d ' ' -f 1)
+    if [ "$got" != "$target" ]; then bad "{4,$1} $2x$3: $prefix+$walk ends on $got, not $target"; continue; fi
+    ok
+  done <"$T/pairs"
+}
+for cfg in "5 5 5" "6 4 4" "7 3 5" "5 5 3" "6 3 3"; do
+  set -- $cfg
+  printf -- '- O\n- Nff\nEN Wlf\n- Sfrf\nWS Elff\n' >"$T/in"
+  "$H" nav --tiling "4,$1" --room "$2x$3" <"$T/in" >"$T/out" 2>"$T/err"
+  [ $? = 0 ] && ok || bad "nav {4,$1} $2x$3 status ($(cat "$T/err"))"
+  check_lines_in "$1" "$2" "$3"
+done
+# a bigger room walks less: Nff from the start of 3x3, 4x4, 5x5 in {4,5}
+k3=$(printf -- '- Nffff\n' | "$H" nav | cut -d ' ' -f 1)
+k5=$(printf -- '- Nffff\n' | "$H" nav --room 5x5 | cut -d ' ' -f 1)
+[ "$k5" -lt "$k3" ] && ok || bad "5x5 room: K $k5, 3x3: $k3"
+# the flat grid: the room's own tiles only
+printf -- '- Nr\n- Er\n' >"$T/in"
+"$H" nav --tiling 4,4 <"$T/in" >"$T/out" 2>"$T/err" && ok || bad "flat nav status"
+check_lines_in 4 3 3
+printf -- '- N\n- Nf\n- O\n' >"$T/in"
+expect "flat: a tile off the room" 2 '1 N
+' "$H" nav --tiling 4,4
+[ "$(cat "$T/out")" = "" ] || true
+err_line "no walk inside the room reaches Nf"
+printf -- '- Nf\n' >"$T/in"
+expect "flat 5x5 reaches two north" 0 '2 NN
+' "$H" nav --tiling 4,4 --room 5x5
+# {4,8} folds onto the flat grid: straight two ahead is out of a 3x3 room's reach
+printf -- '- Nf\n' >"$T/in"
+expect "{4,8}: Nf out of reach" 2 '' "$H" nav --tiling 4,8
+err_line "no walk inside the room reaches Nf"
+# bad options and prefixes
+for v in 2x2 6x3 3x 3by3 ""; do
+  printf -- '- O\n' >"$T/in"
+  expect "bad --room '$v'" 2 '' "$H" nav --room "$v"
+  err_line "room"
+done
+printf -- 'NNN O\n' >"$T/in"
+expect "prefix leaves a 5x5 room" 2 '' "$H" nav --room 5x5
+err_line "leaves the room"
+printf -- '- Nrr\n' >"$T/in"
+expect "address of {4,8} in {4,5}" 2 '' "$H" nav
+err_line "canonical"
+printf -- '- Nrr\n' >"$T/in"
+"$H" nav --tiling 4,8 --room 5x5 <"$T/in" >"$T/out" 2>"$T/err" && ok || bad "Nrr in {4,8} 5x5: $(cat "$T/err")"
+check_lines_in 8 5 5
+# tours
+"$H" tour --tiling 4,6 --room 4x4 - Nf Wr Sf Nff >"$T/out" 2>"$T/err" && ok || bad "tour {4,6} 4x4"
+w=$(cut -d ' ' -f 2 "$T/out"); [ "$w" = "-" ] && w=""
+in_room_cr "$w" 4 4 && ok || bad "tour {4,6} 4x4 leaves the room"
+printf '%s\n' "$w" | "$H" tile walk --tiling 4,6 | grep -q '^Nff ' && ok || bad "tour {4,6} 4x4 ends off the chest"
+"$H" tour --tiling 4,4 - N Nf O >/dev/null 2>"$T/err"
+[ $? = 2 ] && ok || bad "flat tour to a tile off the room: status"
+err_line "no walk inside the room"
+"$H" tour --room 9x9 - N O >/dev/null 2>"$T/err"
+[ $? = 2 ] && ok || bad "tour --room 9x9 status"
+
 finish cli_nav

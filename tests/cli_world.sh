@@ -139,4 +139,33 @@ run "hex seed" 0 "$H" render --seed 0x10 --size 16x12 --out "$T/hex.png"
 run "decimal seed" 0 "$H" render --seed 16 --size 16x12 --out "$T/dec.png"
 same "render: 0x10 is 16" "$T/hex.png" "$T/dec.png"
 
+# ---- tilings and rooms (SPEC 7) ----
+# the ball of radius 2 around the start: 1 + 4 + 12 tiles (8 in the flat grid)
+for qn in 4:13 5:17 6:17 7:17 8:17; do
+  q=${qn%%:*} n=${qn#*:}
+  "$H" world --tiling "4,$q" --radius 2 --check >"$T/out" 2>"$T/err"
+  [ $? = 0 ] && ok || bad "world {4,$q}: status ($(cat "$T/err"))"
+  [ "$(wc -l <"$T/out")" = "$n" ] && ok || bad "world {4,$q}: $(wc -l <"$T/out") tiles, want $n"
+  # every line's address is an address of that tiling
+  cut -d ' ' -f 1 "$T/out" | awk '{ print "O", $1 }' >"$T/in"
+  "$H" tile dist --tiling "4,$q" <"$T/in" >/dev/null 2>&1 && ok || bad "world {4,$q}: addresses"
+done
+# a 5x5 room walks farther east than a 3x3 one, and the walk is the room's
+run "world 5x5 walk" 0 "$H" world --room 5x5 --walk EE --radius 0 --quiet --check
+run "world 3x3 walk off the room" 2 "$H" world --walk EE --radius 0
+one_line "world 3x3 walk off the room" "leaves the room"
+run "world bad --room" 2 "$H" world --room 6x6
+one_line "world bad --room" "room"
+run "world bad --tiling" 2 "$H" world --tiling 4,9
+one_line "world bad --tiling" "tiling"
+# save a {4,7} 4x3 world, load it: the tiling and the room come back
+run "world save {4,7}" 0 "$H" world --tiling 4,7 --room 4x3 --walk EN --save "$T/w7" --quiet
+run "world load {4,7}" 0 "$H" world --load "$T/w7" --walk W --radius 0
+head -1 "$T/out" >"$T/got"
+printf 'ENW\n' | "$H" tile walk --tiling 4,7 | cut -d ' ' -f 1 >"$T/want"
+[ "$(cut -d ' ' -f 1 "$T/got")" = "$(cat "$T/want")" ] && ok || bad "loaded {4,7} walk ends on $(cat "$T/got"), want $(cat "$T/want")"
+run "world load {4,7} walk off its 4x3 room" 2 "$H" world --load "$T/w7" --walk EE --radius 0
+run "world load with --tiling" 2 "$H" world --load "$T/w7" --tiling 4,7
+one_line "world load with --tiling" "do not go with --load"
+
 finish cli_world

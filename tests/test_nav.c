@@ -196,6 +196,15 @@ static int bf_cost(bf *b, const hol_room *start, hol_tile target, int max_depth)
 
 /* ---- helpers ---- */
 
+/* Random start: a random walk inside the room from `from`. */
+static hol_room random_start_from(hol_room r, int max_steps)
+{
+    int n = (int)rnd((uint32_t)max_steps + 1);
+    for (int i = 0; i < n; i++)
+        hol_room_step(&r, (int)rnd(4)); /* refused steps leave r unchanged */
+    return r;
+}
+
 /* Random start: a random walk inside the room from the start state. */
 static hol_room random_start(int max_steps)
 {
@@ -209,9 +218,10 @@ static hol_room random_start(int max_steps)
 /* A random tile at exactly distance d from the user's tile. */
 static hol_tile random_target(const hol_room *user, int d)
 {
+    int q = hol_tile_q(user->tile);
     if (d > HOL_NAVTAB_MAX_RADIUS) {
         /* random canonical word, letter by letter */
-        hol_tile rel = hol_tile_origin(), c;
+        hol_tile rel = hol_tile_origin_q(q), c;
         assert_int_equal(hol_tile_child(rel, (int)rnd(4), &rel), HOL_OK);
         while (hol_tile_dist0(rel) < d) {
             static const int letters[3] = {0, 1, 3};
@@ -225,7 +235,7 @@ static hol_tile random_target(const hol_room *user, int d)
         return f.tile;
     }
     hol_navtab ix;
-    hol_navtab_init_index(&ix, d);
+    hol_navtab_init(&ix, q, 0, 0, d);
     uint32_t lo = ix.off[d], hi = ix.off[d + 1];
     hol_tile rel = hol_navtab_unrank(&ix, lo + rnd(hi - lo));
     hol_heading_tile f = {user->tile, user->orient};
@@ -278,23 +288,36 @@ static void test_index(void **state)
 
 /* ---- the table: radius r agrees with radius r + 1 within r - 2 ---- */
 
-static void check_converged(int r, int more)
+/* Tables of radius r and r + more of one configuration agree within
+ * r - 2 (r - trust_gap) and differ beyond (the check has teeth). */
+static void check_converged_in(int q, int cols, int rows, int r, int more, int gap)
 {
     hol_navtab a, b;
-    void *ma = malloc(hol_navtab_table_bytes(r)), *mb = malloc(hol_navtab_table_bytes(r + more));
-    void *s = malloc(hol_navtab_scratch_bytes(r + more));
+    assert_int_equal(hol_navtab_init(&a, q, cols, rows, r), HOL_OK);
+    assert_int_equal(hol_navtab_init(&b, q, cols, rows, r + more), HOL_OK);
+    void *ma = malloc(hol_navtab_table_bytes(&a)), *mb = malloc(hol_navtab_table_bytes(&b));
+    void *s = malloc(hol_navtab_scratch_bytes(&b));
     assert_non_null(ma);
     assert_non_null(mb);
     assert_non_null(s);
-    assert_int_equal(hol_navtab_build(&a, r, ma, s), HOL_OK);
-    assert_int_equal(hol_navtab_build(&b, r + more, mb, s), HOL_OK);
-    size_t n = 9 * (size_t)a.off[r - 1];
-    assert_memory_equal(a.cost, b.cost, n);
-    /* and it does differ at the edge, so the check has teeth */
-    assert_true(memcmp(a.cost, b.cost, 9 * (size_t)a.count) != 0);
+    assert_int_equal(hol_navtab_build(&a, ma, s), HOL_OK);
+    assert_int_equal(hol_navtab_build(&b, mb, s), HOL_OK);
+    size_t n = (size_t)a.per * a.off[r - gap + 1];
+    if (memcmp(a.cost, b.cost, n))
+        fail_msg("{4,%d} %dx%d: the radius-%d table differs from radius %d within %d", q, cols,
+                 rows, r, r + more, r - gap);
+    /* and it does differ at the edge, so the check has teeth ({4,8} never
+     * strays: its tables agree everywhere) */
+    if (gap)
+        assert_true(memcmp(a.cost, b.cost, (size_t)a.per * a.count) != 0);
     free(ma);
     free(mb);
     free(s);
+}
+
+static void check_converged(int r, int more)
+{
+    check_converged_in(5, 3, 3, r, more, 2);
 }
 
 static void test_table_converges(void **state)
@@ -322,21 +345,22 @@ static void test_legs_converge(void **state)
 {
     (void)state;
     hol_navtab tab;
-    void *m = malloc(hol_navtab_table_bytes(11));
-    void *s = malloc(hol_navtab_scratch_bytes(11) > hol_navtab_leg_scratch_bytes(11)
-                         ? hol_navtab_scratch_bytes(11)
-                         : hol_navtab_leg_scratch_bytes(11));
-    uint8_t *a = malloc(hol_navtab_leg_bytes(11)), *b = malloc(hol_navtab_leg_bytes(11));
+    assert_int_equal(hol_navtab_init_index(&tab, 11), HOL_OK);
+    void *m = malloc(hol_navtab_table_bytes(&tab));
+    void *s = malloc(hol_navtab_scratch_bytes(&tab) > hol_navtab_leg_scratch_bytes(&tab, 11)
+                         ? hol_navtab_scratch_bytes(&tab)
+                         : hol_navtab_leg_scratch_bytes(&tab, 11));
+    uint8_t *a = malloc(hol_navtab_leg_bytes(&tab, 11)), *b = malloc(hol_navtab_leg_bytes(&tab, 11));
     assert_non_null(m);
     assert_non_null(s);
     assert_non_null(a);
     assert_non_null(b);
-    assert_int_equal(hol_navtab_build(&tab, 11, m, s), HOL_OK);
+    assert_int_equal(hol_navtab_build(&tab, m, s), HOL_OK);
     assert_int_equal(hol_navtab_build_legs(&tab, 5, a, s), HOL_OK);
     for (int r = 5; r <= 10; r++) {
         assert_int_equal(hol_navtab_build_legs(&tab, r + 1, b, s), HOL_OK);
         assert_memory_equal(a, b, 36 * 9 * (size_t)tab.off[r - 2]);
-        assert_true(memcmp(a, b, hol_navtab_leg_bytes(r)) != 0);
+        assert_true(memcmp(a, b, hol_navtab_leg_bytes(&tab, r)) != 0);
         uint8_t *t = a;
         a = b;
         b = t;
@@ -348,7 +372,7 @@ static void test_legs_converge(void **state)
         int cls = -1;
         for (int c = 0; c < 9; c++)
             for (int g = 0; g < 36; g++) {
-                int v = hol_navtab_leg(a, i, 0, c, g / 9, g % 9);
+                int v = hol_navtab_leg(&tab, a, i, 0, c, g / 9, g % 9);
                 int par = (c % 3 + c / 3 + g / 9 + g % 9 % 3 + g % 9 / 3) & 1;
                 if (v == 255)
                     continue;
@@ -364,7 +388,7 @@ static void test_legs_converge(void **state)
             for (int c = 0; c < 9; c++) {
                 int mn = 255;
                 for (int g = 0; g < 36; g++) {
-                    int v = hol_navtab_leg(a, i, o, c, g / 9, g % 9);
+                    int v = hol_navtab_leg(&tab, a, i, o, c, g / 9, g % 9);
                     if (v < mn)
                         mn = v;
                 }
@@ -696,8 +720,8 @@ static void test_leg_bounds_vs_bfs(void **state)
         int ss = 9 * s.orient + s.col + 3 * s.row, maxub = 0;
         hol__legb_fill(g_nav, s.tile, key, &sph, &ss, 1, &L, &scr);
         for (int s2 = 0; s2 < 36; s2++)
-            if (L.ub[ss][s2] != 255 && L.ub[ss][s2] > maxub)
-                maxub = L.ub[ss][s2];
+            if (L.ub[HOL__LX(&L, ss, s2)] != 255 && L.ub[HOL__LX(&L, ss, s2)] > maxub)
+                maxub = L.ub[HOL__LX(&L, ss, s2)];
         /* BFS to depth maxub: first arrival in each state on the key */
         int got[36];
         for (int s2 = 0; s2 < 36; s2++)
@@ -721,7 +745,7 @@ static void test_leg_bounds_vs_bfs(void **state)
                 }
         }
         for (int s2 = 0; s2 < 36; s2++) {
-            int lb = L.lb[ss][s2], ub = L.ub[ss][s2];
+            int lb = L.lb[HOL__LX(&L, ss, s2)], ub = L.ub[HOL__LX(&L, ss, s2)];
             if (got[s2] < 0) {
                 assert_int_equal(ub, 255); /* a walk of ub steps would be found */
                 never += lb == 255;
@@ -1172,6 +1196,337 @@ static void test_plain_astar_agrees(void **state)
     pa_fini(&pa);
 }
 
+/* ---- every tiling {4,Q} and room size (SPEC 7) ---- */
+
+static const int room_sizes[][2] = {{3, 3}, {4, 4}, {5, 5}, {3, 4}, {4, 3}, {3, 5}, {5, 3},
+                                    {4, 5}, {5, 4}};
+#define NROOMS (int)(sizeof room_sizes / sizeof room_sizes[0])
+
+/* The gaps the navigator claims (hol_nav.c): its tables are trusted to
+ * their radius minus the first, its leg table minus the second. */
+static void claimed_gaps(int q, int C, int R, int *gap, int *leg_gap)
+{
+    static const int g[5][6][2] = {
+        {{0, 0}, {0, 0}, {0, 0}, {0, 0}, {0, 0}, {0, 0}}, {{2, 3}, {3, 4}, {4, 5}, {4, 4}, {3, 4}, {4, 5}},
+        {{3, 3}, {3, 4}, {4, 5}, {4, 4}, {4, 4}, {4, 5}}, {{3, 4}, {4, 5}, {4, 6}, {4, 4}, {4, 5}, {5, 6}},
+        {{0, 0}, {0, 0}, {0, 0}, {0, 0}, {0, 0}, {0, 0}}};
+    static const int idx[3][3] = {{0, 3, 4}, {3, 1, 5}, {4, 5, 2}};
+    *gap = g[q - 4][idx[C - 3][R - 3]][0];
+    *leg_gap = g[q - 4][idx[C - 3][R - 3]][1];
+}
+
+/* The trust claim of every configuration: the table of radius r + 1 gives
+ * the same costs within r - 2 (the leg table: within r - 3), at radii
+ * small enough for the test's time; make bench checks the shipped radii. */
+static void test_configs_converge(void **state)
+{
+    (void)state;
+    static const int top[9] = {0, 0, 0, 0, 0, 9, 8, 8, 7};
+    for (int q = 5; q <= 8; q++)
+        for (int z = 0; z < NROOMS; z++) {
+            int C = room_sizes[z][0], R = room_sizes[z][1], gap, lgap;
+            claimed_gaps(q, C, R, &gap, &lgap);
+            check_converged_in(q, C, R, top[q], 1, gap);
+        }
+    /* legs: 3 x 3, 4 x 4, 5 x 5 and an oblong room, at radius 7 */
+    for (int q = 5; q <= 8; q++)
+        for (int z = 0; z < 4; z++) {
+            int C = room_sizes[z == 3 ? 5 : z][0], R = room_sizes[z == 3 ? 5 : z][1], gap, lgap;
+            claimed_gaps(q, C, R, &gap, &lgap);
+            hol_navtab tab;
+            assert_int_equal(hol_navtab_init(&tab, q, C, R, 8), HOL_OK);
+            size_t sb = hol_navtab_scratch_bytes(&tab), lb = hol_navtab_leg_bytes(&tab, 8);
+            size_t ls = hol_navtab_leg_scratch_bytes(&tab, 8);
+            void *m = malloc(hol_navtab_table_bytes(&tab)), *sc = malloc(sb > ls ? sb : ls);
+            uint8_t *a = malloc(lb), *b = malloc(lb);
+            assert_true(m && sc && a && b);
+            assert_int_equal(hol_navtab_build(&tab, m, sc), HOL_OK);
+            for (int r = 7; r <= 7; r++) {
+                assert_int_equal(hol_navtab_build_legs(&tab, r, a, sc), HOL_OK);
+                assert_int_equal(hol_navtab_build_legs(&tab, r + 1, b, sc), HOL_OK);
+                size_t n = (size_t)tab.nst * (size_t)tab.per * tab.off[r - lgap + 1];
+                if (memcmp(a, b, n))
+                    fail_msg("{4,%d} %dx%d: legs of radius %d and %d differ within %d", q, C, R, r,
+                             r + 1, r - lgap);
+            }
+            free(m);
+            free(sc);
+            free(a);
+            free(b);
+        }
+}
+
+static hol_nav *make_nav(int q, int C, int R, int radius)
+{
+    hol_nav_desc d = {0};
+    hol_nav *nav;
+    d.tiling_q = q;
+    d.room_cols = C;
+    d.room_rows = R;
+    d.radius = radius;
+    d.max_nodes = 1u << 16;
+    assert_int_equal(hol_nav_create(&d, &nav), HOL_OK);
+    return nav;
+}
+
+/* Optimal walks against BFS over absolute room states (which knows only
+ * hol_room_step), in 3 x 3, 4 x 4, 5 x 5 and oblong rooms of every hyperbolic
+ * tiling: radius-8 navigators, targets 1..6 tiles from random states. */
+static void test_configs_optimal_vs_bfs(void **state)
+{
+    (void)state;
+    bf b;
+    bf_init(&b, 1u << 22);
+    static const int rooms[4] = {0, 1, 2, 5};
+    int checked = 0, unreach = 0;
+    for (int q = 5; q <= 8; q++)
+        for (int z = 0; z < 4; z++) {
+            int C = room_sizes[rooms[z]][0], R = room_sizes[rooms[z]][1], gap, lgap;
+            claimed_gaps(q, C, R, &gap, &lgap);
+            hol_nav *nav = make_nav(q, C, R, 9);
+            int trust = hol_nav_table_exact_radius(nav);
+            assert_int_equal(trust, 9 - gap);
+            assert_true(hol_nav_tour_exact_radius(nav) <= 9 - lgap); /* leg radius 9 or less */
+            int gq, gc, gr;
+            hol_nav_geometry(nav, &gq, &gc, &gr);
+            assert_true(gq == q && gc == C && gr == R);
+            hol_room s0;
+            assert_int_equal(hol_room_start_in(q, C, R, &s0), HOL_OK);
+            for (int k = 0; k < 10; k++) {
+                hol_room s = random_start_from(s0, 30);
+                hol_tile t = random_target(&s, 1 + (int)rnd((uint32_t)(trust < 6 ? trust : 6)));
+                uint8_t walk[HOL_NAV_WALK_MAX];
+                hol_nav_result res;
+                hol_err err = hol_nav_find(nav, &s, t, 0, walk, sizeof walk, &res);
+                if (err == HOL_EUNREACH) {
+                    /* {4,8}: no walk reaches it; none to 16 steps, at least */
+                    assert_int_equal(q, 8);
+                    assert_int_equal(bf_cost(&b, &s, t, 16), -1);
+                    unreach++;
+                    continue;
+                }
+                assert_int_equal(err, HOL_OK);
+                assert_int_equal(res.exact, 1);
+                check_walk(&s, walk, res.len, t);
+                if (res.len > 20)
+                    continue; /* beyond the brute force in test time */
+                assert_int_equal(bf_cost(&b, &s, t, res.len), res.len);
+                checked++;
+            }
+            /* a room state of another size or tiling is refused */
+            hol_room other;
+            uint8_t walk[8];
+            hol_nav_result res;
+            hol_room_start_in(q == 5 ? 6 : 5, C, R, &other);
+            assert_int_equal(hol_nav_find(nav, &other, other.tile, 0, walk, 8, &res), HOL_EARG);
+            hol_room_start_in(q, C == 3 ? 4 : 3, R, &other);
+            assert_int_equal(hol_nav_find(nav, &other, s0.tile, 0, walk, 8, &res), HOL_EARG);
+            hol_nav_destroy(nav);
+        }
+    print_message("every tiling, rooms 3x3 4x4 5x5 3x5: %d walks equal to BFS, %d out of "
+                  "reach in {4,8} (BFS: none to 16 steps)\n", checked, unreach);
+    assert_true(checked > 100);
+    bf_free(&b);
+}
+
+/* Tours of 2 to 4 keys in larger rooms against the product BFS. */
+static void test_configs_tours(void **state)
+{
+    (void)state;
+    bf b;
+    bf_init(&b, 1u << 22);
+    static const int cfg[4][3] = {{6, 4, 4}, {8, 5, 5}, {5, 3, 5}, {7, 4, 5}};
+    int exact = 0, n = 0, unreach = 0;
+    for (int c = 0; c < 4; c++) {
+        hol_nav *nav = make_nav(cfg[c][0], cfg[c][1], cfg[c][2], 9);
+        hol_room s0;
+        assert_int_equal(hol_room_start_in(cfg[c][0], cfg[c][1], cfg[c][2], &s0), HOL_OK);
+        for (int k = 0; k < 4; k++) {
+            hol_room s = random_start_from(s0, 20);
+            int nk = 2 + k % 3;
+            hol_tile keys[5], chest;
+            for (int i = 0; i < nk; i++)
+                keys[i] = random_target(&s, 1 + (int)rnd(2));
+            chest = random_target(&s, 1 + (int)rnd(2));
+            uint8_t walk[HOL_NAV_WALK_MAX];
+            hol_nav_result res;
+            hol_err err = hol_nav_tour(nav, &s, keys, nk, chest, 0, walk, sizeof walk, &res);
+            if (err == HOL_EUNREACH) {
+                /* {4,8}: a key or the chest out of the room's reach */
+                assert_int_equal(cfg[c][0], 8);
+                assert_int_equal(bf_tour(&b, &s, keys, nk, chest, 14), -1);
+                unreach++;
+                continue;
+            }
+            assert_int_equal(err, HOL_OK);
+            hol_room r = s;
+            unsigned got = 0;
+            for (int i = 0; i <= res.len; i++) {
+                if (i > 0)
+                    assert_int_equal(hol_room_step(&r, walk[i - 1]), HOL_OK);
+                for (int j = 0; j < nk; j++)
+                    if (hol_tile_eq(r.tile, keys[j]))
+                        got |= 1u << j;
+            }
+            assert_int_equal(got, (1u << nk) - 1);
+            assert_true(hol_tile_eq(r.tile, chest));
+            int best = bf_tour(&b, &s, keys, nk, chest, res.len);
+            assert_true(best >= 0 && best <= res.len);
+            if (res.exact)
+                assert_int_equal(best, res.len);
+            exact += res.exact;
+            n++;
+        }
+        hol_nav_destroy(nav);
+    }
+    print_message("tours in 4x4, 5x5, 3x5, 4x5 rooms: %d of %d exact, all agree; %d out of reach "
+                  "in {4,8}\n", exact, n, unreach);
+    assert_int_equal(exact, n);
+    bf_free(&b);
+}
+
+/* The flat grid: a room reaches exactly its own tiles; the navigator
+ * answers those exactly (against BFS) and refuses the others. */
+static void test_flat(void **state)
+{
+    (void)state;
+    bf b;
+    bf_init(&b, 1u << 16);
+    for (int z = 0; z < NROOMS; z++) {
+        int C = room_sizes[z][0], R = room_sizes[z][1];
+        hol_nav *nav = make_nav(4, C, R, 0);
+        assert_int_equal(hol_nav_table_exact_radius(nav), hol_nav_table_radius(nav));
+        hol_room s0;
+        assert_int_equal(hol_room_start_in(4, C, R, &s0), HOL_OK);
+        for (int k = 0; k < 12; k++) {
+            hol_room s = random_start_from(s0, 20);
+            hol_tile t = random_target(&s, 1 + (int)rnd(10));
+            uint8_t walk[HOL_NAV_WALK_MAX];
+            hol_nav_result res;
+            hol_err err = hol_nav_find(nav, &s, t, 0, walk, sizeof walk, &res);
+            int c = bf_cost(&b, &s, t, 40);
+            if (c < 0) {
+                assert_int_equal(err, HOL_EUNREACH);
+                continue;
+            }
+            assert_int_equal(err, HOL_OK);
+            assert_int_equal(res.exact, 1);
+            assert_int_equal(res.len, c);
+            check_walk(&s, walk, res.len, t);
+        }
+        /* the room's far corner is reached, one tile beyond it is not */
+        uint8_t walk[HOL_NAV_WALK_MAX], steps[16];
+        int n = 0;
+        for (int i = C / 2; i < C - 1; i++)
+            steps[n++] = HOL_DIR_E;
+        for (int i = R / 2; i < R - 1; i++)
+            steps[n++] = HOL_DIR_S;
+        hol_tile corner, beyond;
+        assert_int_equal(hol_tile_from_walk_q(4, steps, (size_t)n, &corner, NULL), HOL_OK);
+        steps[n++] = HOL_DIR_E;
+        assert_int_equal(hol_tile_from_walk_q(4, steps, (size_t)n, &beyond, NULL), HOL_OK);
+        hol_nav_result res;
+        assert_int_equal(hol_nav_find(nav, &s0, corner, 0, walk, sizeof walk, &res), HOL_OK);
+        assert_int_equal(res.len, n - 1);
+        assert_int_equal(hol_nav_find(nav, &s0, beyond, 0, walk, sizeof walk, &res), HOL_EUNREACH);
+        hol_tile keys[2] = {corner, s0.tile};
+        assert_int_equal(hol_nav_tour(nav, &s0, keys, 2, s0.tile, 0, walk, sizeof walk, &res),
+                         HOL_OK);
+        assert_int_equal(res.len, 2 * (n - 1));
+        assert_int_equal(res.exact, 1);
+        keys[1] = beyond;
+        assert_int_equal(hol_nav_tour(nav, &s0, keys, 2, s0.tile, 0, walk, sizeof walk, &res),
+                         HOL_EUNREACH);
+        hol_nav_destroy(nav);
+    }
+    bf_free(&b);
+}
+
+/* Every configuration's navigator keeps within the budget (60 MB; all
+ * guidance memory under 64 MB), and {4,5} 3 x 3 keeps today's radii. */
+static void test_configs_memory(void **state)
+{
+    (void)state;
+    for (int q = 4; q <= 8; q++)
+        for (int z = 0; z < NROOMS; z++) {
+            hol_nav_desc d = {0};
+            d.tiling_q = q;
+            d.room_cols = room_sizes[z][0];
+            d.room_rows = room_sizes[z][1];
+            size_t bytes = hol_nav_memory_for(&d);
+            assert_true(bytes > 0 && bytes <= HOL_NAV_BUDGET);
+        }
+    assert_int_equal(hol_nav_table_exact_radius(g_nav), 12);
+    assert_int_equal(hol_nav_table_radius(g_nav), 14);
+    assert_int_equal(hol_nav_tour_exact_radius(g_nav), HOL_NAV_TOUR_EXACT_RADIUS);
+    assert_int_equal(hol_nav_memory(g_nav), hol_nav_memory_for(NULL));
+    hol_nav_desc bad = {0};
+    bad.tiling_q = 9;
+    assert_int_equal(hol_nav_memory_for(&bad), 0);
+    hol_nav *nav;
+    assert_int_equal(hol_nav_create(&bad, &nav), HOL_EARG);
+    bad.tiling_q = 8;
+    bad.room_cols = 6;
+    assert_int_equal(hol_nav_create(&bad, &nav), HOL_EARG);
+    bad.room_cols = 5;
+    bad.room_rows = 5;
+    bad.radius = 15; /* {4,8} 5 x 5 at radius 15: far over HOL_NAV_MAX_BYTES */
+    assert_int_equal(hol_nav_create(&bad, &nav), HOL_EARG);
+}
+
+/* The field and the arrows in every tiling: the field against
+ * hol_tile_dist, the arrows against the model of that tiling. */
+static void test_configs_field_direction(void **state)
+{
+    (void)state;
+    for (int q = 4; q <= 8; q++) {
+        hol_room u0;
+        assert_int_equal(hol_room_start_in(q, 4, 5, &u0), HOL_OK);
+        hol_room u = random_start_from(u0, 20);
+        hol_tile obj[2] = {random_target(&u, 3), random_target(&u, 5)};
+        size_t cnt = hol_nav_field_count_q(q, 3), n;
+        assert_int_equal(cnt, hol_tile_count_at(q, 0) + hol_tile_count_at(q, 1) +
+                                  hol_tile_count_at(q, 2) + hol_tile_count_at(q, 3));
+        hol_nav_cell cells[200];
+        assert_true(cnt <= 200);
+        assert_int_equal(hol_nav_field(&u, 3, obj, 2, cells, cnt, &n), HOL_OK);
+        assert_int_equal(n, cnt);
+        for (size_t i = 0; i < n; i++) {
+            assert_int_equal(hol_tile_q(cells[i].tile), q);
+            assert_int_equal(cells[i].user_dist, hol_tile_dist(u.tile, cells[i].tile));
+            int h0 = hol_tile_dist(cells[i].tile, obj[0]), h1 = hol_tile_dist(cells[i].tile, obj[1]);
+            assert_int_equal(cells[i].hot, h0 < h1 ? h0 : h1);
+        }
+        hol_tile other = hol_tile_origin_q(q == 5 ? 6 : 5);
+        assert_int_equal(hol_nav_field(&u, 3, &other, 1, cells, cnt, &n), HOL_EARG);
+        /* arrows against the model */
+        model_use_tiling(q);
+        for (int k = 0; k < 20; k++) {
+            hol_room v = u0;
+            model_mat mu = model_identity();
+            for (int i = 0; i < 12; i++) {
+                int d = (int)rnd(4);
+                if (hol_room_step(&v, d) == HOL_OK)
+                    mu = model_step(mu, d);
+            }
+            hol_tile t = random_target(&v, 1 + (int)rnd(8));
+            int codes[HOL_TILE_MAX_DIST], len = hol_tile_dist0(t);
+            for (int i = 0; i < len; i++)
+                codes[i] = hol_tile_letter(t, i);
+            model_mat rel = model_mul(model_inv(mu), model_walk_letters(codes, len));
+            double x = rel.m[2], y = rel.m[5], a, dd;
+            assert_int_equal(hol_nav_direction(&v, t, &a, &dd), HOL_OK);
+            if (hol_tile_eq(v.tile, t))
+                continue;
+            assert_true(fabs(remainder(a - atan2(-x, y), 2 * 3.14159265358979323846)) < 1e-6);
+            double want = q == 4 ? sqrt(x * x + y * y) : acosh(rel.m[8]);
+            assert_true(fabs(dd - want) < 1e-6 * (1 + want));
+        }
+        assert_int_equal(hol_nav_direction(&u, other, NULL, NULL), HOL_EARG);
+    }
+    model_use_tiling(5);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -1195,6 +1550,12 @@ int main(void)
         cmocka_unit_test(test_direction),
         cmocka_unit_test(test_direction_model),
         cmocka_unit_test(test_parse),
+        cmocka_unit_test(test_configs_memory),
+        cmocka_unit_test(test_configs_converge),
+        cmocka_unit_test(test_configs_optimal_vs_bfs),
+        cmocka_unit_test(test_configs_tours),
+        cmocka_unit_test(test_flat),
+        cmocka_unit_test(test_configs_field_direction),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }

@@ -1063,6 +1063,103 @@ static void test_designer_places(void **state)
     assert_int_equal(hol_world_make(&d, &w), HOL_EARG);
 }
 
+/* ---- every tiling {4,Q} ---- */
+
+/* Trees on vertices with Q tiles round them, creeks and logs across edges
+ * (hol_world_check), in every tiling and room size: random walks, every
+ * tile within the radius collapsed after each step, the trees of the Q
+ * tiles round each vertex the same, save and load of a {4,Q} world in a
+ * C x R room, and no tile or image of another tiling accepted. */
+static void test_tilings(void **state)
+{
+    (void)state;
+    static const int rooms[5][2] = {{3, 3}, {4, 4}, {5, 5}, {3, 5}, {4, 3}};
+    for (int q = 4; q <= 8; q++) {
+        hol_world_desc d;
+        memset(&d, 0, sizeof d);
+        d.seed = 100 + (uint64_t)q;
+        d.capacity = 1u << 14;
+        d.tiling_q = q;
+        hol_world *w = NULL;
+        assert_int_equal(hol_world_make(&d, &w), HOL_OK);
+        assert_int_equal(hol_world_tiling(w), q);
+        assert_int_equal(hol_tile_q(hol_world_user(w).tile), q);
+        hol_room room;
+        int C = rooms[q - 4][0], R = rooms[q - 4][1];
+        assert_int_equal(hol_room_start_in(q, C, R, &room), HOL_OK);
+        assert_int_equal(hol_world_update(w, &room), HOL_OK);
+        uint64_t rng = (uint64_t)q;
+        for (int i = 0; i < 300; i++) {
+            random_step(w, &room, &rng, q == 4 ? 0 : 300);
+            hol_tile_content c;
+            hol_tile around[64];
+            size_t n = ball(room.tile, 2, around, 64);
+            for (size_t k = 0; k < n; k++)
+                assert_int_equal(hol_world_peek(w, around[k], &c), HOL_OK);
+        }
+        assert_check(w);
+        /* the Q tiles round a vertex name one vertex and one tree */
+        for (int c = 0; c < 4; c++) {
+            hol_tile t = room.tile, ct, ct2;
+            int corner = c, cc, cc2;
+            hol_tree tree, tree2;
+            assert_int_equal(hol_world_vertex_canon(t, corner, &ct, &cc), HOL_OK);
+            assert_int_equal(hol_world_tree(d.seed, t, corner, &tree), HOL_OK);
+            for (int k = 0; k < q; k++) {
+                hol_tile nt;
+                int arr;
+                assert_int_equal(hol_tile_step(t, corner, &nt, &arr), HOL_OK);
+                t = nt;
+                corner = (arr + 1) & 3;
+                assert_int_equal(hol_world_vertex_canon(t, corner, &ct2, &cc2), HOL_OK);
+                assert_true(hol_tile_eq(ct, ct2) && cc == cc2);
+                assert_int_equal(hol_world_tree(d.seed, t, corner, &tree2), HOL_OK);
+                assert_true(tree.kind == tree2.kind && tree.size == tree2.size);
+                if (k < q - 1)
+                    assert_false(hol_tile_eq(t, room.tile) && corner == c);
+            }
+            assert_true(hol_tile_eq(t, room.tile) && corner == c);
+        }
+        /* save and load: the tiling and the room's size come back */
+        size_t len;
+        uint8_t *img = save_image(w, &len);
+        hol_world_desc d2;
+        char msg[200];
+        assert_int_equal(hol_world_image_desc(img, len, &d2, msg, sizeof msg), HOL_OK);
+        assert_int_equal(d2.tiling_q, q);
+        hol_world *w2 = NULL;
+        assert_int_equal(hol_world_make(&d2, &w2), HOL_OK);
+        assert_int_equal(hol_world_load(w2, img, len, msg, sizeof msg), HOL_OK);
+        hol_room u = hol_world_user(w2);
+        assert_true(hol_tile_eq(u.tile, room.tile) && hol_room_cols(&u) == C &&
+                    hol_room_rows(&u) == R && u.col == room.col && u.row == room.row);
+        assert_true(same_image(w, w2));
+        /* another tiling's world refuses the image, tiles and rooms */
+        hol_world_desc d3 = d2;
+        d3.tiling_q = q == 5 ? 6 : 5;
+        hol_world *w3 = NULL;
+        assert_int_equal(hol_world_make(&d3, &w3), HOL_OK);
+        assert_int_equal(hol_world_load(w3, img, len, msg, sizeof msg), HOL_EARG);
+        assert_non_null(strstr(msg, "tiling"));
+        hol_tile_content c;
+        assert_int_equal(hol_world_get(w3, room.tile, &c), HOL_EARG);
+        assert_int_equal(hol_world_update(w3, &room), HOL_EARG);
+        hol_tile got;
+        assert_int_equal(hol_world_reserve(w3, room.tile, 2, HOL_OBJ_FLAG, &got), HOL_EARG);
+        assert_int_equal(hol_world_reserve(w, room.tile, 2, HOL_OBJ_FLAG, &got), HOL_OK);
+        assert_int_equal(hol_tile_q(got), q);
+        free(img);
+        hol_world_destroy(w);
+        hol_world_destroy(w2);
+        hol_world_destroy(w3);
+    }
+    hol_world_desc bad;
+    memset(&bad, 0, sizeof bad);
+    bad.tiling_q = 9;
+    hol_world *w = NULL;
+    assert_int_equal(hol_world_make(&bad, &w), HOL_EARG);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -1082,6 +1179,7 @@ int main(void)
         cmocka_unit_test(test_reserve),
         cmocka_unit_test(test_check_detects),
         cmocka_unit_test(test_long_walk),
+        cmocka_unit_test(test_tilings),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -9,7 +9,8 @@
 #include "cli.h"
 
 static const char *const tour_usage =
-    "usage: holonomy tour [--budget N] [--stats] PREFIX KEY... CHEST\n"
+    "usage: holonomy tour [--tiling 4,Q] [--room CxR] [--budget N] [--stats]\n"
+    "                     PREFIX KEY... CHEST\n"
     "\n"
     "PREFIX: a walk of room steps (N, E, S, W) from the start, cell (1,1) of\n"
     "tile O, inside the room ('-' for none). KEY... (0 to 5) and CHEST: tile\n"
@@ -26,6 +27,10 @@ static const char *const tour_usage =
     "else K is the length of the best tour found (--stats tells which).\n"
     "\n"
     "  --budget N   node budget (default and maximum 262144)\n"
+    "  --tiling 4,Q the tiling {4,Q}, Q from 4 to 8 (default 4,5)\n"
+    "  --room CxR   a room of C x R cells, 3 to 5 each (default 3x3; the\n"
+    "               start is cell (C/2, R/2)). A key or chest that no walk\n"
+    "               inside the room reaches is bad input ({4,4}, {4,8})\n"
     "  --stats      also print 'exact|best NODES' on stderr (0 nodes: the\n"
     "               dynamic program answered)\n"
     "  -h, --help   this text\n"
@@ -40,11 +45,13 @@ int cli_cmd_tour(int argc, char **argv)
         return cli_finish_output(cmd);
     }
     size_t budget = 0;
-    int stats = 0;
+    int stats = 0, q = 0, cols = 0, rows = 0;
     const char *pos[HOL_NAV_TOUR_MAX_KEYS + 2];
     int npos = 0;
     for (int i = 1; i < argc; i++) {
         int b = cli_budget_option(cmd, argc, argv, &i, &budget);
+        if (!b)
+            b = cli_geometry_option(cmd, argc, argv, &i, &q, &cols, &rows);
         if (b < 0)
             return CLI_EXIT_USAGE;
         if (b > 0)
@@ -69,13 +76,15 @@ int cli_cmd_tour(int argc, char **argv)
     char msg[256];
     hol_room room;
     hol_tile tiles[HOL_NAV_TOUR_MAX_KEYS + 1];
-    if (hol_nav_parse_prefix(pos[0], strlen(pos[0]), &room, msg, sizeof msg)) {
+    hol_room start;
+    hol_room_start_in(q, cols, rows, &start);
+    if (hol_nav_parse_prefix_in(&start, pos[0], strlen(pos[0]), &room, msg, sizeof msg)) {
         cli_error(cmd, 0, "%s", msg);
         return CLI_EXIT_USAGE;
     }
     for (int i = 1; i < npos; i++) {
-        if (hol_nav_parse_target(pos[i], strlen(pos[i]), &tiles[i - 1], msg,
-                                 sizeof msg)) {
+        if (hol_nav_parse_target_q(hol_tile_q(start.tile), pos[i], strlen(pos[i]), &tiles[i - 1],
+                                   msg, sizeof msg)) {
             /* the message says "target"; name the argument instead */
             const char *what = i == npos - 1 ? "chest" : "key";
             char *p = strstr(msg, "target");
@@ -84,7 +93,11 @@ int cli_cmd_tour(int argc, char **argv)
         }
     }
     hol_nav *nav;
-    hol_err err = hol_nav_create(NULL, &nav);
+    hol_nav_desc desc = {0};
+    desc.tiling_q = q;
+    desc.room_cols = cols;
+    desc.room_rows = rows;
+    hol_err err = hol_nav_create(&desc, &nav);
     if (err) {
         cli_error(cmd, 0, "cannot build the cost table: %s", hol_err_str(err));
         return CLI_EXIT_FAIL;
@@ -95,6 +108,10 @@ int cli_cmd_tour(int argc, char **argv)
     err = hol_nav_tour(nav, &room, tiles, npos - 2, tiles[npos - 2], budget, walk,
                        sizeof walk, &res);
     hol_nav_destroy(nav);
+    if (err == HOL_EUNREACH) {
+        cli_error(cmd, 0, "no walk inside the room reaches every key and the chest");
+        return CLI_EXIT_USAGE;
+    }
     if (err) {
         cli_error(cmd, 0, "no tour: %s", hol_err_str(err));
         return err == HOL_ENOMEM ? CLI_EXIT_FAIL : CLI_EXIT_USAGE;

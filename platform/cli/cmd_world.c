@@ -18,7 +18,7 @@
 static const char *const world_usage =
     "usage: holonomy world [--seed S] [--walk W] [--radius R] [--check]\n"
     "                      [--load FILE] [--save FILE] [--capacity N] [--quiet]\n"
-    "                      [--stats]\n"
+    "                      [--stats] [--tiling 4,Q] [--room CxR]\n"
     "       holonomy world save FILE [OPTIONS]   (same as --save FILE)\n"
     "       holonomy world load FILE [OPTIONS]   (same as --load FILE)\n"
     "\n"
@@ -44,6 +44,13 @@ static const char *const world_usage =
     "Tiles farther than 4 from the user are collapsed on demand. Tiles\n"
     "beyond distance 60 from O do not exist (the reach of tile words).\n"
     "\n"
+    "  --tiling 4,Q    the tiling {4,Q}, Q from 4 (the flat grid) to 8, default\n"
+    "                  4,5: Q tiles round every vertex and its tree (tiles\n"
+    "                  reach 59 in the tilings other than {4,5})\n"
+    "  --room CxR      a room of C x R cells (3 to 5 each, default 3x3); the\n"
+    "                  walk starts on cell (C/2, R/2). A loaded world keeps\n"
+    "                  the tiling and room it was saved with (neither option\n"
+    "                  goes with --load)\n"
     "  --check         verify every constraint of every tile in the store\n"
     "                  after the walk; a violation is reported on stderr and\n"
     "                  exits 1\n"
@@ -82,6 +89,7 @@ typedef struct world_opts {
     const char *load;
     const char *save;
     uint32_t capacity;
+    int q, cols, rows, have_geometry;
 } world_opts;
 
 static int parse_args(int argc, char **argv, world_opts *o)
@@ -103,6 +111,13 @@ static int parse_args(int argc, char **argv, world_opts *o)
         i += 2;
     }
     for (; i < argc; i++) {
+        int g = cli_geometry_option(CMD, argc, argv, &i, &o->q, &o->cols, &o->rows);
+        if (g < 0)
+            return 0;
+        if (g > 0) {
+            o->have_geometry = 1;
+            continue;
+        }
         const char *a = argv[i];
         const char *v = i + 1 < argc ? argv[i + 1] : NULL;
         int takes = !strcmp(a, "--seed") || !strcmp(a, "--walk") ||
@@ -162,6 +177,11 @@ static int parse_args(int argc, char **argv, world_opts *o)
     if (o->load && o->have_seed) {
         cli_error(CMD, 0, "--seed and --load exclude each other (the file holds "
                           "its seed)");
+        return 0;
+    }
+    if (o->load && o->have_geometry) {
+        cli_error(CMD, 0, "--tiling and --room do not go with --load (the file holds "
+                          "its tiling and room)");
         return 0;
     }
     return 1;
@@ -270,7 +290,7 @@ static const char *gen_error(hol_err err)
 
 static int print_tiles(hol_world *w, hol_tile centre, int radius)
 {
-    size_t cap = 4096, n = 0;
+    size_t cap = 16384, n = 0; /* radius 8 of {4,8}: 11081 tiles */
     world_line *lines = malloc(cap * sizeof *lines);
     if (!lines) {
         cli_error(CMD, 0, "out of memory");
@@ -354,6 +374,7 @@ static int make_world(const world_opts *o, hol_world **out)
     hol_world_desc desc;
     memset(&desc, 0, sizeof desc);
     desc.seed = o->seed;
+    desc.tiling_q = o->q;
     uint8_t *image = NULL;
     size_t image_len = 0;
     char msg[200];
@@ -400,9 +421,12 @@ static int parse_walk(const char *walk, uint8_t **out, size_t *n)
 
 /* The steps in the room, the world collapsing around the user after each.
  * 0 ok, else the exit status (reported); *room where the walk ends. */
-static int walk_world(hol_world *w, const uint8_t *dirs, size_t n, hol_room *room)
+static int walk_world(hol_world *w, const world_opts *o, const uint8_t *dirs, size_t n,
+                      hol_room *room)
 {
     *room = hol_world_user(w);
+    if (!o->load)
+        hol_room_start_in(o->q, o->cols, o->rows, room);
     hol_err err = hol_world_update(w, room);
     for (size_t i = 0; !err && i < n; i++) {
         hol_room next = *room;
@@ -414,7 +438,7 @@ static int walk_world(hol_world *w, const uint8_t *dirs, size_t n, hol_room *roo
         }
         if (serr) {
             cli_error(CMD, 0, "--walk: step %zu goes beyond distance %d from O, the "
-                      "reach of tile words", i + 1, HOL_TILE_MAX_DIST);
+                      "reach of tile words", i + 1, hol_tile_reach(hol_tile_q(room->tile)));
             return CLI_EXIT_USAGE;
         }
         *room = next;
@@ -472,7 +496,7 @@ int cli_cmd_world(int argc, char **argv)
         return status;
     }
     hol_room room;
-    status = walk_world(w, dirs, nsteps, &room);
+    status = walk_world(w, &o, dirs, nsteps, &room);
     free(dirs);
     if (!status && !o.quiet)
         status = print_tiles(w, room.tile, o.radius);
