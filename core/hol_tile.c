@@ -61,8 +61,10 @@
  * automaton at compile time (the core's hottest paths). */
 #if defined(__GNUC__)
 #define HOL__HOT static inline __attribute__((always_inline))
+#define HOL__COLD static __attribute__((noinline))
 #else
 #define HOL__HOT static inline
+#define HOL__COLD static
 #endif
 
 /* A tiling: its automaton (dfa[state][letter code], code 2 (back) is never
@@ -199,16 +201,24 @@ static int hol__state(const hol__tiling *T, const hol__word *w)
 #define HOL__LEN_SHIFT 58
 #define HOL__HIGH_MASK (~(UINT64_C(0) ) << 54) /* tiling and length fields */
 
-static hol__word hol__widen(hol_tile t)
+/* The letters of a tile word of tiling T (its tiling and length fields
+ * cleared: {4,5} has no tiling field, so its 60th letter may fill bits
+ * 118..119). */
+HOL__HOT hol__word hol__widen_in(const hol__tiling *T, hol_tile t)
 {
     hol__word w;
     w.b[0] = t.bits[0];
-    w.b[1] = t.bits[1] & ~HOL__HIGH_MASK;
+    w.b[1] = t.bits[1] & ~(T == HOL__T45 ? UINT64_C(63) << HOL__LEN_SHIFT : HOL__HIGH_MASK);
     w.b[2] = w.b[3] = 0;
     w.len = (int)(t.bits[1] >> HOL__LEN_SHIFT);
-    if (w.len == 60) /* {4,5} only: letter 59 lies in bits 118..119 */
-        w.b[1] |= t.bits[1] & (UINT64_C(3) << 54);
     return w;
+}
+
+/* Any word, its tiling unknown (printing). */
+static hol__word hol__widen(hol_tile t)
+{
+    const hol__tiling *T = hol__tiling_of(t);
+    return hol__widen_in(T ? T : HOL__T45, t);
 }
 
 /* Caller ensures w.len <= T->reach. */
@@ -452,13 +462,18 @@ HOL__HOT hol_err hol__child(const hol__tiling *T, hol_tile t, int letter, hol_ti
     return HOL_OK;
 }
 
+/* The tilings other than {4,5}, out of the {4,5} path's way. */
+HOL__COLD hol_err hol__child_q(hol_tile t, int letter, hol_tile *out_tile)
+{
+    const hol__tiling *T = hol__valid_of(t);
+    return T && T != HOL__T45 ? hol__child(T, t, letter, out_tile) : HOL_EARG;
+}
+
 hol_err hol_tile_child(hol_tile t, int letter, hol_tile *out_tile)
 {
-    if (!((t.bits[1] >> 56) & 3u)) /* {4,5} */
-        return hol__len(t) > HOL_TILE_MAX_DIST ? HOL_EARG
-                                               : hol__child(HOL__T45, t, letter, out_tile);
-    const hol__tiling *T = hol__valid_of(t);
-    return T ? hol__child(T, t, letter, out_tile) : HOL_EARG;
+    if ((t.bits[1] >> 56) <= (HOL_TILE_MAX_DIST << 2) && !((t.bits[1] >> 56) & 3u))
+        return hol__child(HOL__T45, t, letter, out_tile); /* {4,5} within its reach */
+    return hol__child_q(t, letter, out_tile);
 }
 
 /* The recursion described at the top, on working words; `self` is the
@@ -519,12 +534,30 @@ static hol__step_fn hol__stepper(const hol__tiling *T)
     return T == HOL__T45 ? hol__step45 : hol__stepq;
 }
 
+/* The neighbour that is neither the parent nor a child: the recursion on a
+ * working word (out of the fast paths' way, so that they stay lean). */
+HOL__COLD hol_err hol__tile_step_far(const hol__tiling *T, hol_tile t, int turn,
+                                      hol_tile *out_tile, int *out_arrive)
+{
+    int arr;
+    hol__word w = hol__widen_in(T, t);
+    hol_err err = hol__stepper(T)(T, &w, turn, &arr);
+    if (!err && w.len > T->reach)
+        err = HOL_ERANGE;
+    if (err)
+        return err;
+    *out_tile = hol__narrow(T, &w);
+    if (out_arrive)
+        *out_arrive = arr;
+    return HOL_OK;
+}
+
 /* hol_tile_step for a valid tile of tiling T (inlined twice, so that the
  * {4,5} copy knows its automaton at compile time). */
 HOL__HOT hol_err hol__tile_step(const hol__tiling *T, hol_tile t, int turn, hol_tile *out_tile,
                                 int *out_arrive)
 {
-    int arr, n = hol__len(t);
+    int n = hol__len(t);
     /* fast path: the parent */
     if (n > 0 && turn == HOL_TURN_B) {
         int last = hol__at(t.bits, n - 1);
@@ -542,30 +575,26 @@ HOL__HOT hol_err hol__tile_step(const hol__tiling *T, hol_tile t, int turn, hol_
             *out_arrive = 0;
         return HOL_OK;
     }
-    hol__word w = hol__widen(t);
-    hol_err err = hol__stepper(T)(T, &w, turn, &arr);
-    if (!err && w.len > T->reach)
-        err = HOL_ERANGE;
-    if (err)
-        return err;
-    *out_tile = hol__narrow(T, &w);
-    if (out_arrive)
-        *out_arrive = arr;
-    return HOL_OK;
+    return hol__tile_step_far(T, t, turn, out_tile, out_arrive);
+}
+
+/* The tilings other than {4,5}, out of the {4,5} path's way. */
+HOL__COLD hol_err hol__tile_step_q(hol_tile t, int turn, hol_tile *out_tile, int *out_arrive)
+{
+    const hol__tiling *T = hol__valid_of(t);
+    if (!T || T == HOL__T45)
+        return HOL_EARG; /* an unknown tiling, or {4,5} beyond its reach */
+    return hol__tile_step(T, t, turn, out_tile, out_arrive);
 }
 
 hol_err hol_tile_step(hol_tile t, int turn, hol_tile *out_tile, int *out_arrive)
 {
     turn &= 3;
-    if (!((t.bits[1] >> 56) & 3u)) { /* {4,5} */
-        if (hol__len(t) > HOL_TILE_MAX_DIST)
-            return HOL_EARG;
+    /* {4,5} with a length within its reach: tiling bits 56..57 zero and the
+     * top byte (length << 2) at most 60 << 2 */
+    if ((t.bits[1] >> 56) <= (HOL_TILE_MAX_DIST << 2) && !((t.bits[1] >> 56) & 3u))
         return hol__tile_step(HOL__T45, t, turn, out_tile, out_arrive);
-    }
-    const hol__tiling *T = hol__valid_of(t);
-    if (!T)
-        return HOL_EARG;
-    return hol__tile_step(T, t, turn, out_tile, out_arrive);
+    return hol__tile_step_q(t, turn, out_tile, out_arrive);
 }
 
 hol_err hol_heading_tile_step(hol_heading_tile f, int turn, hol_heading_tile *out_ht)
@@ -640,7 +669,7 @@ static hol_err hol__relative(hol_tile a, int a_north, hol_tile b, hol__word *v,
     if (!T || hol__valid_of(b) != T)
         return HOL_EARG;
     hol__step_fn step = hol__stepper(T);
-    hol__word wa = hol__widen(a), wb = hol__widen(b);
+    hol__word wa = hol__widen_in(T, a), wb = hol__widen_in(T, b);
     int k = 0;
     while (k < wa.len && k < wb.len && hol__get(&wa, k) == hol__get(&wb, k))
         k++;

@@ -149,18 +149,22 @@ static void bench_prefix(hol_nav *any, hol_nav *exact, int dlo, int dhi, size_t 
 /* Optional (NAV_BENCH_VERIFY=1; about 4 s and 270 MB): the default
  * navigator's anytime answers at 13..15 against a radius-17 table (trusted
  * to 15), and the default table against it within 12. */
+static hol_navtab nav_tab_default; /* the default table's numbering, for its size */
+
 static void bench_verify(hol_nav *nav)
 {
     static uint8_t walk[HOL_NAV_WALK_MAX];
     hol_navtab big, small;
-    void *mb = malloc(hol_navtab_table_bytes(17)), *ms = malloc(hol_navtab_table_bytes(14));
-    void *s = malloc(hol_navtab_scratch_bytes(17));
+    hol_navtab_init_index(&big, 17);
+    hol_navtab_init_index(&small, 14);
+    void *mb = malloc(hol_navtab_table_bytes(&big)), *ms = malloc(hol_navtab_table_bytes(&small));
+    void *s = malloc(hol_navtab_scratch_bytes(&big));
     if (!mb || !ms || !s) {
         printf("verify: out of memory\n");
         return;
     }
-    hol_navtab_build(&big, 17, mb, s);
-    hol_navtab_build(&small, 14, ms, s);
+    hol_navtab_build(&big, mb, s);
+    hol_navtab_build(&small, ms, s);
     free(s);
     int first = -1;
     for (int k = 0; k <= 14 && first < 0; k++)
@@ -290,11 +294,12 @@ int main(void)
         printf("cannot create navigator\n");
         return 1;
     }
+    hol_navtab_init_index(&nav_tab_default, HOL_NAV_DEFAULT_RADIUS);
     printf("table radius %d (trusted/exact within %d): built in %.0f ms, "
            "%.1f MB in all (table %.1f MB, search arena %u nodes)\n",
            HOL_NAV_DEFAULT_RADIUS, hol_nav_table_exact_radius(nav), now_ms() - t0,
            (double)hol_nav_memory(nav) / 1048576.0,
-           (double)hol_navtab_table_bytes(HOL_NAV_DEFAULT_RADIUS) / 1048576.0,
+           (double)hol_navtab_table_bytes(&nav_tab_default) / 1048576.0,
            HOL_NAV_DEFAULT_NODES);
 
     bench_side_by_side(nav);
