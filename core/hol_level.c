@@ -510,8 +510,12 @@ hol_err hol_level_parse(const char *text, size_t len, hol_app_level *out, hol_le
     hol__lp p = zero;
     p.L.cues = HOL_CUE_ALL;
     p.err = err;
-    if (len > HOL_LEVEL_TEXT_MAX)
-        return hol__lfail(&p, HOL_ENOMEM, 0, "longer than %d bytes", HOL_LEVEL_TEXT_MAX);
+    /* the bound is on the text as a session keeps it (hol_level_make adds
+     * a last line end), so what parses is kept whole and parses again */
+    size_t kept = len + (len && text[len - 1] != '\n');
+    if (kept > HOL_LEVEL_TEXT_MAX)
+        return hol__lfail(&p, HOL_ENOMEM, 0, "longer than %d bytes (its last line end counted)",
+                          HOL_LEVEL_TEXT_MAX);
     const char *s = text, *end = text + len;
     while (s < end) {
         const char *nl = memchr(s, '\n', (size_t)(end - s));

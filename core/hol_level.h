@@ -6,7 +6,8 @@
  * - hol_level_parse reads a level file's text into a hol_app_level: one
  *   `KEY VALUE...` per line, `#` starts a comment, blank lines are ignored,
  *   a line may end in CR LF. Keys: SPEC section 5 and the added ones (README
- *   "Level files"). Bounds: at most HOL_LEVEL_TEXT_MAX bytes, lines of at
+ *   "Level files"). Bounds: at most HOL_LEVEL_TEXT_MAX bytes (a last line end
+ *   added if missing: the text as kept), lines of at
  *   most HOL_LEVEL_LINE_MAX bytes, no NUL byte.
  * - On bad input it returns a typed error and fills *err: the 1-based line
  *   of the text, the other line a conflict names (0: none) and a message

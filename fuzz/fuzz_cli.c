@@ -96,7 +96,8 @@ static void check_level(const char *text, size_t len)
         for (size_t i = 0; i < len; i++)
             lines += text[i] == '\n';
         CHECK(err.line >= 0 && err.line <= lines);
-        CHECK(err.line > 0 || len > HOL_LEVEL_TEXT_MAX);
+        size_t kept = len + (len && text[len - 1] != '\n'); /* a last LF added */
+        CHECK(err.line > 0 || kept > HOL_LEVEL_TEXT_MAX);
         CHECK(err.other >= 0 && err.other <= lines);
         char line[300];
         hol_level_err_format(&err, 1, line, sizeof line);

@@ -164,6 +164,20 @@ static void test_typed_errors(void **state)
     memset(big, '#', sizeof big - 1);
     big[0] = 'm';
     assert_int_equal(hol_level_parse(big, HOL_LEVEL_TEXT_MAX + 1, &L, &e), HOL_ENOMEM);
+    /* the bound counts the last line end a session adds: a full-size text
+     * is kept whole only when it ends in LF (found by fuzz_cli) */
+    static const char head[] = "mode flag\nflag Wrf\n";
+    memcpy(big, head, sizeof head - 1);
+    for (int i = (int)sizeof head - 1; i < HOL_LEVEL_TEXT_MAX; i++)
+        big[i] = i % 64 ? '#' : '\n'; /* short comment lines */
+    big[HOL_LEVEL_TEXT_MAX - 1] = '#';
+    assert_int_equal(hol_level_parse(big, HOL_LEVEL_TEXT_MAX, &L, &e), HOL_ENOMEM);
+    big[HOL_LEVEL_TEXT_MAX - 1] = '\n';
+    assert_int_equal(hol_level_parse(big, HOL_LEVEL_TEXT_MAX, &L, &e), HOL_OK);
+    static hol_level kept;
+    assert_int_equal(hol_level_make("big", 3, big, HOL_LEVEL_TEXT_MAX - 1, &kept, &e), HOL_OK);
+    assert_int_equal(kept.len, HOL_LEVEL_TEXT_MAX);
+    assert_int_equal(hol_level_parse(kept.text, kept.len, &L, &e), HOL_OK);
     char line[HOL_LEVEL_LINE_MAX + 40];
     int n = snprintf(line, sizeof line, "mode flag\n#");
     memset(line + n, 'x', HOL_LEVEL_LINE_MAX);
