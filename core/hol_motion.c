@@ -11,18 +11,18 @@
 /* Crossings of the grid lines x = k and z = k by the floor segment from
  * (hx, hz) to (ex, ez), in order along it (ties: x first): the room
  * directions in out_dir and the segment parameters in out_t. */
-static int hol__crossings(double hx, double hz, double ex, double ez,
+static int hol__crossings(double hx, double hz, double ex, double ez, const hol_room *u,
                           uint8_t out_dir[HOL_MOTION_MAX_STEPS],
                           double out_t[HOL_MOTION_MAX_STEPS])
 {
     int n = 0;
-    for (int k = 1; k < HOL_ROOM_SIZE; k++) {
+    for (int k = 1; k < hol_room_cols(u); k++) {
         if ((hx < k) != (ex < k)) {
             out_t[n] = (k - hx) / (ex - hx);
             out_dir[n++] = ex > hx ? HOL_DIR_E : HOL_DIR_W;
         }
     }
-    for (int k = 1; k < HOL_ROOM_SIZE; k++) {
+    for (int k = 1; k < hol_room_rows(u); k++) {
         if ((hz < k) != (ez < k)) {
             out_t[n] = (k - hz) / (ez - hz);
             out_dir[n++] = ez > hz ? HOL_DIR_S : HOL_DIR_N;
@@ -51,11 +51,11 @@ hol_err hol_motion_eye_state(const hol_room *user, const double head[3],
     double hx = head[0], hz = head[2], ex = eye[0], ez = eye[2];
     if (!hol__inside_cell(user, hx, hz))
         return HOL_EARG;
-    if (!(ex > 0 && ex < HOL_ROOM_SIZE && ez > 0 && ez < HOL_ROOM_SIZE))
+    if (!(ex > 0 && ex < hol_room_cols(user) && ez > 0 && ez < hol_room_rows(user)))
         return HOL_EROOM;
     uint8_t dir[HOL_MOTION_MAX_STEPS];
     double t[HOL_MOTION_MAX_STEPS];
-    int n = hol__crossings(hx, hz, ex, ez, dir, t);
+    int n = hol__crossings(hx, hz, ex, ez, user, dir, t);
     hol_room st = *user;
     for (int i = 0; i < n; i++) {
         hol_err err = hol_room_step(&st, dir[i]);
@@ -92,15 +92,16 @@ void hol_motion_init(hol_motion *m, const hol_room *user, const hol_motion_desc 
     m->pitch_deg = -30;
 }
 
-/* Clamp to the move area less the margin; off the grid lines. */
-static double hol__clamp_axis(double v, double margin)
+/* Clamp to the move area (0..size cells) less the margin; off the grid
+ * lines. */
+static double hol__clamp_axis(double v, double margin, int size)
 {
     if (!(v == v))
-        v = 0.5 * HOL_ROOM_SIZE;
+        v = 0.5 * size;
     if (v < margin)
         v = margin;
-    if (v > HOL_ROOM_SIZE - margin)
-        v = HOL_ROOM_SIZE - margin;
+    if (v > size - margin)
+        v = size - margin;
     if (v == floor(v))
         v += 1e-6;
     return v;
@@ -112,12 +113,12 @@ hol_err hol_motion_move_to(hol_motion *m, const double pos[3],
     hol_motion_steps local;
     hol_motion_steps *s = out_steps ? out_steps : &local;
     s->n = 0;
-    double x = hol__clamp_axis(pos[0], m->d.margin);
-    double z = hol__clamp_axis(pos[2], m->d.margin);
+    double x = hol__clamp_axis(pos[0], m->d.margin, hol_room_cols(&m->user));
+    double z = hol__clamp_axis(pos[2], m->d.margin, hol_room_rows(&m->user));
     uint8_t dir[HOL_MOTION_MAX_STEPS];
     double t[HOL_MOTION_MAX_STEPS];
     double hx = m->head[0], hz = m->head[2];
-    int n = hol__crossings(hx, hz, x, z, dir, t);
+    int n = hol__crossings(hx, hz, x, z, &m->user, dir, t);
     for (int i = 0; i < n; i++) {
         hol_room next = m->user;
         hol_err err = hol_room_step(&next, dir[i]);

@@ -4,7 +4,8 @@
  * Contract
  * - The user is a room state (hol_room: tile, room north, cell) plus a head
  *   position in room coordinates (SPEC section 1: metres, x east, y up, z
- *   south, move area x, z in [0, 3]) and a look direction (yaw 0 north,
+ *   south, move area x, z in [0, 3]; in [0, C] and [0, R] for a room of
+ *   C x R cells, hol_room_cols and rows of the state) and a look direction (yaw 0 north,
  *   positive turns west; pitch positive up). The head always lies strictly
  *   inside the state's cell.
  * - Moving the head from one position to another walks the cells that the
@@ -29,8 +30,9 @@
 #include "hol_err.h"
 #include "hol_room.h"
 
-/* Most room steps one move can take: two x and two z grid lines. */
-#define HOL_MOTION_MAX_STEPS 4
+/* Most room steps one move can take: every inner grid line of the largest
+ * room, four x and four z (two of each in a 3 x 3 room). */
+#define HOL_MOTION_MAX_STEPS 8
 
 typedef struct hol_motion_desc {
     double speed;      /* m/s at full move axis; 0: 1.4 */

@@ -251,6 +251,39 @@ static void test_snap_yaw(void **state)
     }
 }
 
+/* Rooms of other sizes (SPEC 7): the move area is C x R cells, a move
+ * across the whole room crosses every inner grid line, the hedges clamp at
+ * C and R, and the eye may lean anywhere in the room. */
+static void test_room_sizes(void **state)
+{
+    (void)state;
+    hol_room start;
+    assert_int_equal(hol_room_start_in(6, 5, 4, &start), HOL_OK);
+    hol_motion m;
+    hol_motion_init(&m, &start, NULL);
+    assert_true(m.head[0] > 2 && m.head[0] < 3 && m.head[2] > 2 && m.head[2] < 3);
+    hol_motion_steps st;
+    double west[3] = {0.5, 1.6, 2.5}, corner[3] = {0.5, 1.6, 0.5};
+    assert_int_equal(hol_motion_move_to(&m, west, &st), HOL_OK);
+    assert_int_equal(st.n, 2);
+    assert_int_equal(m.user.col, 0);
+    assert_int_equal(hol_motion_move_to(&m, corner, &st), HOL_OK);
+    assert_int_equal(st.n, 2);
+    assert_int_equal(m.user.row, 0);
+    double far[3] = {10.0, 1.6, 10.0}; /* clamped to 5 and 4 less the margin */
+    assert_int_equal(hol_motion_move_to(&m, far, &st), HOL_OK);
+    assert_int_equal(st.n, 7); /* 4 x lines and 3 z lines: HOL_MOTION_MAX_STEPS fits them */
+    assert_true(st.n <= HOL_MOTION_MAX_STEPS);
+    assert_int_equal(m.user.col, 4);
+    assert_int_equal(m.user.row, 3);
+    assert_true(fabs(m.head[0] - (5 - 0.15)) < 1e-9 && fabs(m.head[2] - (4 - 0.15)) < 1e-9);
+    hol_room eye;
+    double head[3] = {4.5, 1.6, 3.5}, lean[3] = {3.5, 1.6, 3.5}, out[3] = {5.5, 1.6, 3.5};
+    assert_int_equal(hol_motion_eye_state(&m.user, head, lean, &eye), HOL_OK);
+    assert_int_equal(eye.col, 3);
+    assert_int_equal(hol_motion_eye_state(&m.user, head, out, &eye), HOL_EROOM);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -259,6 +292,7 @@ int main(void)
         cmocka_unit_test(test_hedges),
         cmocka_unit_test(test_pancake),
         cmocka_unit_test(test_eye_state),
+        cmocka_unit_test(test_room_sizes),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
