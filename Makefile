@@ -364,6 +364,7 @@ $(BUILD)/web-obj/%.o: %.c
 	@$(EMCC_ENV) $(EMCC) $(WEB_CFLAGS) -c $< -o $@
 
 $(WEB)/holonomy.js: $(WEB_OBJ) platform/web/hol_web_lib.js
+	@mkdir -p $(dir $@)
 	@echo "emcc -o $@"
 	@$(EMCC_ENV) $(EMCC) $(WEB_LDFLAGS) $(WEB_OBJ) -o $@
 

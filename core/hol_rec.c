@@ -7,7 +7,8 @@
 #include <string.h>
 
 enum { HOL__START, HOL__META, HOL__LEVEL, HOL__LEVELS };
-enum { HOL__SEEN_SESSION = 1, HOL__SEEN_PART = 2, HOL__SEEN_START = 4, HOL__SEEN_VERSION = 8 };
+enum { HOL__SEEN_SESSION = 1, HOL__SEEN_PART = 2, HOL__SEEN_START = 4, HOL__SEEN_VERSION = 8,
+       HOL__SEEN_STUDY = 16 };
 
 static int hol__idc(int c, int plus)
 {
@@ -61,14 +62,23 @@ static void hol__emitf(hol_rec_emit fn, void *ctx, const char *fmt, ...)
 void hol_rec_write_header(const hol_rec_meta *m, const hol_level *levels, int nlevels,
                           hol_rec_emit fn, void *ctx)
 {
-    hol__emitf(fn, ctx, "holonomy-rec %d\n", HOL_REC_VERSION);
+    /* version 3 only for a study's session: others stay readable by
+     * builds that know version 2 */
+    int study = m->study[0] != 0;
+    for (int i = 0; i < nlevels; i++)
+        study |= levels[i].condition[0] != 0;
+    hol__emitf(fn, ctx, "holonomy-rec %d\n", study ? 3 : 2);
     hol__emitf(fn, ctx, "session %s\n", m->session);
     if (m->participant[0])
         hol__emitf(fn, ctx, "participant %s\n", m->participant);
     hol__emitf(fn, ctx, "start %s\n", m->start);
     hol__emitf(fn, ctx, "version %s\n", m->version);
+    if (study)
+        hol__emitf(fn, ctx, "study %s\n", m->study[0] ? m->study : "-");
     for (int i = 0; i < nlevels; i++) {
         hol__emitf(fn, ctx, "level %s\n", levels[i].name);
+        if (levels[i].condition[0])
+            hol__emitf(fn, ctx, "condition %s %d\n", levels[i].condition, levels[i].position);
         const char *p = levels[i].text, *e = p + levels[i].len;
         while (p < e) {
             const char *nl = memchr(p, '\n', (size_t)(e - p));
@@ -107,25 +117,27 @@ static hol_err hol__first_line(hol_rec_reader *r, const char *s, size_t len)
 {
     if (len < 13 || memcmp(s, "holonomy-rec ", 13))
         return hol__bad(r, HOL_EPARSE, "not a recording (no 'holonomy-rec' header)");
-    if (len == 14 && (s[13] == '1' || s[13] == '2')) {
+    if (len == 14 && s[13] >= '1' && s[13] <= '0' + HOL_REC_VERSION) {
         r->version = s[13] - '0';
         r->state = r->version == 1 ? HOL__LEVELS : HOL__META;
         return HOL_OK;
     }
-    return hol__bad(r, HOL_EVERSION, "recording format '%.30s' is not version 1 or %d",
+    return hol__bad(r, HOL_EVERSION, "recording format '%.30s' is not version 1 to %d",
                     len > 13 ? s + 13 : "", HOL_REC_VERSION);
 }
 
 /* "session ID", "participant ID", "start ISO", "version V" (version 2, before
- * the first level). 1 when the line was one of them (or an error). */
+ * the first level), "study NAME" (version 3). 1 when the line was one of
+ * them (or an error). */
 static int hol__meta_line(hol_rec_reader *r, const char *s, size_t len, hol_err *err)
 {
-    static const char *const keys[4] = {"session ", "participant ", "start ", "version "};
+    static const char *const keys[5] = {"session ", "participant ", "start ", "version ",
+                                         "study "};
     hol_rec_meta *m = &r->meta;
-    char *dst[4] = {m->session, m->participant, m->start, m->version};
-    size_t cap[4] = {sizeof m->session, sizeof m->participant, sizeof m->start,
-                     sizeof m->version};
-    for (int k = 0; k < 4; k++) {
+    char *dst[5] = {m->session, m->participant, m->start, m->version, m->study};
+    size_t cap[5] = {sizeof m->session, sizeof m->participant, sizeof m->start,
+                     sizeof m->version, sizeof m->study};
+    for (int k = 0; k < (r->version >= 3 ? 5 : 4); k++) {
         size_t kl = strlen(keys[k]);
         if (len < kl || memcmp(s, keys[k], kl))
             continue;
@@ -154,8 +166,11 @@ static int hol__meta_line(hol_rec_reader *r, const char *s, size_t len, hol_err 
 static hol_err hol__level_begin(hol_rec_reader *r, const char *s, size_t len)
 {
     if (r->state == HOL__META && (r->seen & 0xd) != 0xd)
-        return hol__bad(r, HOL_EPARSE, "a version 2 recording names its session, start and "
-                                       "version before its levels");
+        return hol__bad(r, HOL_EPARSE, "a version %d recording names its session, start and "
+                                       "version before its levels", r->version);
+    if (r->state == HOL__META && r->version >= 3 && !(r->seen & HOL__SEEN_STUDY))
+        return hol__bad(r, HOL_EPARSE, "a version 3 recording names its study before its "
+                                       "levels");
     if (r->nlevels >= HOL_REC_MAX_LEVELS)
         return hol__bad(r, HOL_ENOMEM, "more than %d levels", HOL_REC_MAX_LEVELS);
     r->name_len = len - 6;
@@ -164,6 +179,8 @@ static hol_err hol__level_begin(hol_rec_reader *r, const char *s, size_t len)
                         HOL_LEVEL_NAME_MAX - 1);
     memcpy(r->name, s + 6, r->name_len);
     r->name[r->name_len] = 0;
+    r->cond[0] = 0;
+    r->cond_pos = 0;
     r->len = 0;
     r->level_first = r->line + 1;
     r->state = HOL__LEVEL;
@@ -184,8 +201,39 @@ static hol_err hol__level_end(hol_rec_reader *r)
                  colon ? "" : ": ", colon ? colon : what);
         return e;
     }
+    memcpy(r->levels[r->nlevels].condition, r->cond, sizeof r->cond);
+    r->levels[r->nlevels].position = r->cond_pos;
     r->nlevels++;
     r->state = HOL__LEVELS;
+    return HOL_OK;
+}
+
+/* "condition NAME POS" right after a level line (version 3). */
+static hol_err hol__condition_line(hol_rec_reader *r, const char *s, size_t len)
+{
+    const char *sp = len > 10 ? memchr(s + 10, ' ', len - 10) : NULL;
+    size_t n = sp ? (size_t)(sp - s) - 10 : 0;
+    int pos = 0, digits = 0;
+    for (const char *p = sp ? sp + 1 : s + len; p < s + len && digits < 3; p++, digits++) {
+        if (*p < '0' || *p > '9')
+            digits = 9;
+        else
+            pos = pos * 10 + (*p - '0');
+    }
+    int ok = sp && n > 0 && n < sizeof r->cond && digits >= 1 && digits <= 2 &&
+             (size_t)(sp - s) + 1 + (size_t)digits == len && pos <= HOL_REC_MAX_LEVELS;
+    if (ok) {
+        memcpy(r->cond, s + 10, n);
+        r->cond[n] = 0;
+        ok = hol_rec_id_ok(r->cond);
+    }
+    if (!ok) {
+        r->cond[0] = 0;
+        return hol__bad(r, HOL_EPARSE, "not a 'condition NAME POSITION' line (POSITION 0..%d)",
+                        HOL_REC_MAX_LEVELS);
+    }
+    r->cond_pos = pos;
+    r->level_first++; /* the level's text starts on the next line */
     return HOL_OK;
 }
 
@@ -200,6 +248,9 @@ hol_err hol_rec_read_line(hol_rec_reader *r, const char *s, size_t len, int *out
     if (r->state == HOL__START)
         return hol__first_line(r, s, len);
     if (r->state == HOL__LEVEL) {
+        if (r->version >= 3 && len >= 10 && !memcmp(s, "condition ", 10) && r->len == 0 &&
+            !r->cond[0] && r->line == r->level_first)
+            return hol__condition_line(r, s, len);
         if (len >= 2 && s[0] == 'L' && s[1] == ' ') {
             if (r->len + len - 2 + 1 > HOL_LEVEL_TEXT_MAX)
                 return hol__bad(r, HOL_ENOMEM, "level '%.40s' longer than %d bytes", r->name,

@@ -5,20 +5,27 @@
  * Contract
  * - Text, one item per line (LF; a CR before the LF is ignored on reading):
  *
- *     holonomy-rec 2
+ *     holonomy-rec 2        (3 for a study's session)
  *     session ID            the session's id          (version 2)
  *     participant ID        optional                  (version 2)
  *     start ISO             start, UTC: 2025-01-31T12:00:00Z (version 2)
  *     version V             the app version that played (version 2)
+ *     study NAME            the study (version 3)
  *     level NAME            each level of the session, in order:
+ *     condition NAME POS    its study condition and position (version 3)
  *     L LINE                its text's lines (hol_level.h), then
  *     end
  *     TIME f=... ...        one input line per frame (core/hol_input_io.h)
  *
- *   Version 1 (no metadata lines) is read too. The metadata lines come
- *   before the first level, each at most once; session, start and version
- *   are required in version 2. IDs are 1..63 bytes of letters, digits and
- *   '.', '_', '-' (hol_rec_id_ok); a version 1..31 bytes of those and '+'.
+ *   Versions 1 (no metadata lines) and 2 (no study) are read too; the
+ *   writer writes version 2 unless the session is a study's, so a
+ *   recording without a study reads in a build that knows only version 2.
+ *   The metadata lines come before the first level, each at most once;
+ *   session, start and version are required from version 2, study in
+ *   version 3. IDs (and condition names) are 1..63 bytes of letters,
+ *   digits and '.', '_', '-' (hol_rec_id_ok); a version 1..31 bytes of
+ *   those and '+'. A condition line comes right after its level line,
+ *   POS 0..HOL_REC_MAX_LEVELS; a level without one has no labels.
  * - hol_rec_write_header emits the header through fn in pieces whose
  *   concatenation is the text above (levels given with LF-ended text, as
  *   hol_level_make keeps it), so the header of a recording that play wrote
@@ -43,7 +50,7 @@
 #include "hol_err.h"
 #include "hol_level.h"
 
-#define HOL_REC_VERSION 2
+#define HOL_REC_VERSION 3
 #define HOL_REC_MAX_LEVELS 16
 #define HOL_REC_LINE_MAX 1024
 #define HOL_REC_ID_MAX 64 /* with the NUL */
@@ -53,6 +60,7 @@ typedef struct hol_rec_meta {
     char participant[HOL_REC_ID_MAX]; /* "": none */
     char start[HOL_REC_ID_MAX];       /* ISO 8601 UTC, "" in version 1 */
     char version[32];                 /* "" in version 1 */
+    char study[HOL_REC_ID_MAX];       /* "": not a study's session */
 } hol_rec_meta;
 
 /* 1 when s is an id: 1..63 bytes of [A-Za-z0-9._-]. */
@@ -75,6 +83,8 @@ typedef struct hol_rec_reader {
     int state, seen;
     long level_first;
     char name[HOL_LEVEL_NAME_MAX];
+    char cond[HOL_LEVEL_NAME_MAX]; /* the level's condition line */
+    int cond_pos;
     size_t name_len, len;
     char text[HOL_LEVEL_TEXT_MAX + 1];
 } hol_rec_reader;

@@ -114,6 +114,10 @@ static hol_err hol__create(hol_session *s, const hol_session_desc *d)
         return e;
     if (s->log && (e = hol__log_open(s, d->append)))
         return e;
+    if (s->log)
+        hol__log_levels(s);
+    if (s->failed)
+        return s->failed;
     if (s->rec && (e = hol__rec_open(s)))
         return e;
     return HOL_OK;

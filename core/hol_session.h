@@ -41,6 +41,15 @@
  *   log file (summary.csv, steps-*, head-*, attempt-*.live) is refused
  *   (HOL_EARG): a session never mixes its files into another's unasked.
  *   With desc.append, summary.csv must have this version's columns.
+ * - Levels: at create, each level's text (as played and recorded) goes to
+ *   level-HASH.txt in the log folder (HASH its SHA-256 in hex, the
+ *   summary's level_sha256), written as level-HASH.txt.live and renamed:
+ *   a log folder holds every level its rows name (`holonomy report` draws
+ *   the optimal walks from them). Another session's file of the same hash
+ *   holds the same bytes and is replaced by them.
+ * - Studies: a level's labels (hol_level: condition, position) and the
+ *   study's name (meta.study) fill the summary's study, condition and
+ *   position; all three are empty for a level without a condition.
  * - Recording: written as REC.live (REC = desc.rec_name) and renamed to REC
  *   by hol_session_finish (or abort); a REC.live already there (a killed
  *   session's recording) is refused at create (HOL_EARG).
@@ -72,8 +81,8 @@
 #define HOL_SESSION_MAX_LEVELS HOL_REC_MAX_LEVELS
 
 #define HOL_SESSION_SUMMARY_COLUMNS                                                       \
-    "session,participant,session_start,version,attempt,level,level_sha256,mode,seed,cues," \
-    "started,steps,optimum,time,end"
+    "session,participant,session_start,version,attempt,study,condition,position,level,"    \
+    "level_sha256,mode,seed,cues,started,steps,optimum,time,end"
 #define HOL_SESSION_STEP_COLUMNS \
     "session,attempt,level,t,step,col,row,dir,yaw,tile,orient,remaining,cues,visible"
 #define HOL_SESSION_HEAD_COLUMNS \

@@ -67,6 +67,7 @@ size_t hol__summary_row(const hol_session *s, const hol_app_summary *sum, int en
                         size_t cap);
 void hol__log_frame(hol_session *s, const hol_app_events *ev, const hol_app_view *v);
 void hol__attempt_end(hol_session *s, const hol_app_summary *sum, int end);
+void hol__log_levels(hol_session *s);
 
 /* hol_session_recover.c */
 hol_err hol__log_open(hol_session *s, int append);

@@ -158,6 +158,24 @@ static void hol__rename(hol_session *s, const char *from, const char *to)
         hol__fail_sink(s, s->log, e, "rename", from);
 }
 
+/* Each level's text as level-HASH.txt (see hol_session.h). */
+void hol__log_levels(hol_session *s)
+{
+    for (int i = 0; i < s->nlevels && !s->failed; i++) {
+        char hex[HOL_SHA256_HEX], name[96], live[104];
+        hol_sha256_hex(s->levels[i].sha256, hex);
+        snprintf(name, sizeof name, "level-%s.txt", hex);
+        snprintf(live, sizeof live, "%s.live", name);
+        int seen = 0;
+        for (int j = 0; j < i; j++)
+            seen |= !memcmp(s->levels[j].sha256, s->levels[i].sha256, 32);
+        if (seen)
+            continue;
+        hol__put_file(s, live, 0, s->levels[i].text, s->levels[i].len);
+        hol__rename(s, live, name);
+    }
+}
+
 /* ---- rows ------------------------------------------------------------------- */
 
 void hol__attempt_name(char *out, size_t cap, const char *what, int attempt)
@@ -176,11 +194,15 @@ size_t hol__summary_row(const hol_session *s, const hol_app_summary *sum, int en
     hol__csv_name(L->name, name);
     hol_sha256_hex(L->sha256, hash);
     int mode = sum->mode >= 0 && sum->mode < 4 ? sum->mode : 0;
-    int n = snprintf(out, cap, "%s,%s,%s,%s,%d,%s,%s,%s,%llu,%u,%.4f,%d,%d,%.4f,%s\n",
+    char pos[16] = "";
+    if (L->condition[0])
+        snprintf(pos, sizeof pos, "%d", L->position);
+    int n = snprintf(out, cap, "%s,%s,%s,%s,%d,%s,%s,%s,%s,%s,%s,%llu,%u,%.4f,%d,%d,%.4f,%s\n",
                      s->meta.session, s->meta.participant, s->meta.start, s->meta.version,
-                     s->attempt, name, hash, hol__mode_names[mode],
-                     (unsigned long long)sum->seed, L->lvl.cues, s->attempt_started, sum->steps,
-                     sum->optimum, sum->time_s, hol__end_names[end]);
+                     s->attempt, L->condition[0] ? s->meta.study : "", L->condition, pos, name,
+                     hash, hol__mode_names[mode], (unsigned long long)sum->seed, L->lvl.cues,
+                     s->attempt_started, sum->steps, sum->optimum, sum->time_s,
+                     hol__end_names[end]);
     return n > 0 && (size_t)n < cap ? (size_t)n : 0;
 }
 

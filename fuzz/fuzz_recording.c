@@ -6,7 +6,7 @@
  * message naming a line of the file, or stops at a line inside the file (or
  * its end) with 1..HOL_REC_MAX_LEVELS levels, each named as a recording can
  * carry and parsed; written again (hol_rec_write_header), the header reads
- * back to the same levels and metadata; every later line either parses as
+ * back to the same levels, study labels and metadata; every later line either parses as
  * an input record or is refused.
  */
 #include <stdint.h>
@@ -92,8 +92,12 @@ static void check_round_trip(void)
         CHECK(!strcmp(levels[i].name, again[i].name));
         CHECK(levels[i].len == again[i].len && !memcmp(levels[i].text, again[i].text, levels[i].len));
         CHECK(!memcmp(levels[i].sha256, again[i].sha256, 32));
+        CHECK(!strcmp(levels[i].condition, again[i].condition));
+        CHECK(levels[i].position == again[i].position);
+        CHECK(!levels[i].condition[0] || hol_rec_id_ok(levels[i].condition));
     }
     CHECK(!strcmp(r2.meta.participant, m.participant));
+    CHECK(!strcmp(r2.meta.study, m.study));
 }
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)

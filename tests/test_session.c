@@ -32,6 +32,7 @@
 #include "../core/hol_nav.h"
 #include "../core/hol_rec.h"
 #include "../core/hol_session.h"
+#include "../core/hol_sha256.h"
 #include "../platform/file/hol_sink_posix.h"
 #include "count_alloc.h"
 
@@ -143,7 +144,7 @@ static hol_err mem_rename(void *user, const char *from, const char *to)
     assert_false(mem_is_open(m, s));
     if (t) {
         free(t->data);
-        t->used = 0;
+        memset(t, 0, sizeof *t);
     }
     snprintf(s->name, sizeof s->name, "%s", to);
     return HOL_OK;
@@ -336,7 +337,7 @@ static void test_folder_refused_or_appended(void **state)
     assert_non_null(mem_find(&m, "head-008.csv"));
     const char *sum = mem_text(&m, "summary.csv");
     assert_non_null(strstr(sum, HOL_SESSION_SUMMARY_COLUMNS "\n"));
-    assert_non_null(strstr(sum, ",8,lv,"));
+    assert_non_null(strstr(sum, ",8,,,,lv,")); /* no study: empty labels */
     assert_non_null(strstr(sum, ",done\n"));
     /* other columns in summary.csv: refused even with append */
     mem_stream *x = mem_find(&m, "summary.csv");
@@ -436,7 +437,7 @@ static void test_killed_attempt_recovered(void **state)
     assert_int_equal(hd[strlen(hd) - 1], '\n');
     const char *sum = mem_text(&m, "summary.csv");
     char want[64];
-    snprintf(want, sizeof want, ",2,lv,");
+    snprintf(want, sizeof want, ",2,,,,lv,");
     const char *row = strstr(sum, want);
     assert_non_null(row);
     assert_non_null(strstr(row, ",killed\n"));
@@ -719,6 +720,107 @@ static void test_recording_replays(void **state)
     mem_free(&r);
 }
 
+/* A study's session: the summary's study, condition and position from the
+ * levels' labels and the study's name; every level's text in
+ * level-HASH.txt; a version 3 recording that reads back to the same labels
+ * and replays to the same summary. */
+static void test_study_labels(void **state)
+{
+    (void)state;
+    static mem_sink m1, m2, r;
+    static hol_level lv[2], back[HOL_REC_MAX_LEVELS];
+    mem_init(&m1);
+    mem_init(&m2);
+    mem_init(&r);
+    lv[0] = g_flag;
+    const char *t2 = "mode flag\nseed 6\nflag Nf\nminimap hand\n";
+    assert_int_equal(hol_level_make("lv2", 3, t2, strlen(t2), &lv[1], NULL), HOL_OK);
+    assert_string_equal(lv[1].condition, ""); /* made without labels */
+    snprintf(lv[0].condition, sizeof lv[0].condition, "hand");
+    lv[0].position = 1;
+    snprintf(lv[1].condition, sizeof lv[1].condition, "hud");
+    lv[1].position = 2;
+    hol_session_desc d;
+    memset(&d, 0, sizeof d);
+    d.levels = lv;
+    d.nlevels = 2;
+    d.app.nav = g_nav;
+    d.log = &m1.sink;
+    d.rec = &r.sink;
+    d.rec_name = "s.rec";
+    snprintf(d.meta.session, sizeof d.meta.session, "20260101T000000Z-00000002");
+    snprintf(d.meta.start, sizeof d.meta.start, "2026-01-01T00:00:00Z");
+    snprintf(d.meta.participant, sizeof d.meta.participant, "P2");
+    snprintf(d.meta.study, sizeof d.meta.study, "s1");
+    hol_session *s = NULL;
+    char msg[256];
+    assert_int_equal(hol_session_create(&d, &s, msg, sizeof msg), HOL_OK);
+    double t = walk(s, g_walk, 0, NULL, NULL);
+    hol_input in = head_at(t + 0.5, 1.5, 1.5);
+    in.pressed = HOL_BTN_CONFIRM;
+    int over;
+    assert_int_equal(hol_session_step(s, &in, &over), HOL_OK);
+    assert_int_equal(hol_session_level_index(s), 1);
+    walk(s, "N", t + 1, NULL, NULL);
+    assert_int_equal(hol_session_finish(s), HOL_OK);
+    hol_session_destroy(s);
+    static char sum[4096];
+    snprintf(sum, sizeof sum, "%s", mem_text(&m1, "summary.csv"));
+    assert_non_null(strstr(sum, ",P2,2026-01-01T00:00:00Z,"));
+    assert_non_null(strstr(sum, ",1,s1,hand,1,lv,"));
+    assert_non_null(strstr(sum, ",2,s1,hud,2,lv2,"));
+    for (int i = 0; i < 2; i++) {
+        char hex[HOL_SHA256_HEX], name[96];
+        hol_sha256_hex(lv[i].sha256, hex);
+        snprintf(name, sizeof name, "level-%s.txt", hex);
+        assert_string_equal(mem_text(&m1, name), lv[i].text);
+        assert_non_null(strstr(sum, hex));
+        snprintf(name, sizeof name, "level-%s.txt.live", hex);
+        assert_null(mem_find(&m1, name));
+    }
+    /* the recording: version 3, read back with the labels */
+    static char copy[1 << 16];
+    snprintf(copy, sizeof copy, "%s", mem_text(&r, "s.rec"));
+    assert_true(!strncmp(copy, "holonomy-rec 3\nsession ", 23));
+    assert_non_null(strstr(copy, "\nstudy s1\nlevel lv\ncondition hand 1\nL mode flag\n"));
+    static hol_rec_reader rd;
+    hol_rec_reader_init(&rd, back);
+    char *line = copy, *nl;
+    int done = 0;
+    while (!done && (nl = strchr(line, '\n'))) {
+        *nl = 0;
+        assert_int_equal(hol_rec_read_line(&rd, line, strlen(line), &done), HOL_OK);
+        if (!done)
+            line = nl + 1;
+    }
+    assert_int_equal(rd.version, 3);
+    assert_string_equal(rd.meta.study, "s1");
+    assert_int_equal(rd.nlevels, 2);
+    assert_string_equal(back[1].condition, "hud");
+    assert_int_equal(back[1].position, 2);
+    assert_string_equal(back[1].text, lv[1].text);
+    /* replayed: the same summary */
+    d.levels = back;
+    d.log = &m2.sink;
+    d.rec = NULL;
+    d.meta = rd.meta;
+    assert_int_equal(hol_session_create(&d, &s, msg, sizeof msg), HOL_OK);
+    for (;;) {
+        assert_int_equal(hol_input_parse(line, strlen(line), &in, NULL), HOL_OK);
+        assert_int_equal(hol_session_step(s, &in, &over), HOL_OK);
+        line += strlen(line) + 1;
+        if (!*line)
+            break;
+        *strchr(line, '\n') = 0;
+    }
+    assert_int_equal(hol_session_finish(s), HOL_OK);
+    hol_session_destroy(s);
+    assert_string_equal(mem_text(&m2, "summary.csv"), sum);
+    mem_free(&m1);
+    mem_free(&m2);
+    mem_free(&r);
+}
+
 /* Every allocation at create (the session's and the app's hooks); none in
  * a thousand frames with logs and a recording. */
 static void test_no_allocation_after_create(void **state)
@@ -812,6 +914,7 @@ int main(void)
         cmocka_unit_test(test_visible_cues),
         cmocka_unit_test(test_abort),
         cmocka_unit_test(test_recording_replays),
+        cmocka_unit_test(test_study_labels),
         cmocka_unit_test(test_no_allocation_after_create),
         cmocka_unit_test(test_posix_sink),
     };

@@ -23,10 +23,12 @@
 #include "cli.h"
 #include "play_setup.h"
 #include "play_stats.h"
+#include "play_study.h"
 
 static const char *const play_usage =
-    "usage: holonomy play [LEVEL | --mode tutorial|flag|keys|explore] [--seed S]\n"
-    "                     [--log DIR [--append]] [--participant ID] [--record FILE]\n"
+    "usage: holonomy play [LEVEL | --mode tutorial|flag|keys|explore | --study FILE]\n"
+    "                     [--seed S] [--log DIR [--append]] [--participant ID]\n"
+    "                     [--record FILE]\n"
     "                     [--frames N] [--input FILE] [--size WxH]\n"
     "                     [--no-gamepad | --gamepad-replay FILE] [--snap-turn DEG]\n"
     "                     [--stats]\n"
@@ -53,6 +55,10 @@ static const char *const play_usage =
     "or a key is used. Prompts name the buttons of what was used last.\n"
     "\n"
     "  --mode M        tutorial (four lessons), flag, keys or explore\n"
+    "  --study FILE    play a study's conditions in the order of the participant's\n"
+    "                  number (--participant P07: 7; README: Study designs):\n"
+    "                  its practice levels, then each condition's levels; the\n"
+    "                  logs name the study, condition and position\n"
     "  --seed S        seed of --mode's level or the campaign's first (decimal or\n"
     "                  0x hex; default 1)\n"
     "  --log DIR       research logs, written as the game goes (README: Research\n"
@@ -90,6 +96,7 @@ static const char *const play_usage =
 
 typedef struct play_opts {
     const char *level_path, *mode, *log_dir, *rec, *input_path, *pad_script, *participant;
+    const char *study;
     uint64_t seed;
     long frames;
     int w, h, use_pad, append, snap_deg, stats;
@@ -100,6 +107,7 @@ typedef struct play_ctx {
     play_opts o;
     hol_level levels[HOL_SESSION_MAX_LEVELS];
     int nlevels;
+    char study[HOL_REC_ID_MAX]; /* --study: its name */
     play_input input;
     int has_input;
     play_out out;
@@ -131,6 +139,8 @@ static int play_value(const char *cmd, const char *a, const char *val, play_opts
         o->input_path = val;
     else if (!strcmp(a, "--gamepad-replay"))
         o->pad_script = val;
+    else if (!strcmp(a, "--study"))
+        o->study = val;
     else if (!strcmp(a, "--participant")) {
         if (play_participant(cmd, val))
             return 1;
@@ -164,7 +174,7 @@ static int play_options(const char *cmd, int argc, char **argv, play_opts *o)
 {
     static const char *const valued[] = {"--mode",  "--seed",  "--log",  "--record",
                                          "--frames", "--input", "--size", "--gamepad-replay",
-                                         "--participant", "--snap-turn", NULL};
+                                         "--participant", "--snap-turn", "--study", NULL};
     static const char *const flags[] = {"--no-gamepad", "--append", "--stats", NULL};
     memset(o, 0, sizeof *o);
     o->seed = CLI_SEED_DEFAULT;
@@ -192,7 +202,8 @@ static int play_options(const char *cmd, int argc, char **argv, play_opts *o)
     }
     if (r < 0)
         return CLI_EXIT_USAGE;
-    const char *clash = o->level_path && o->mode ? "give a LEVEL file or --mode, not both"
+    const char *clash = !!o->level_path + !!o->mode + !!o->study > 1
+                            ? "give one of a LEVEL file, --mode or --study"
                         : o->pad_script && !o->use_pad
                             ? "give --no-gamepad or --gamepad-replay, not both"
                         : o->append && !o->log_dir ? "--append goes with --log"
@@ -213,7 +224,10 @@ static int play_prepare_files(play_ctx *c)
     int st = o->pad_script ? play_load_pad_script(c->cmd, o->pad_script, &c->script) : 0;
     if (!st)
         st = play_out_open(c->cmd, o->log_dir, o->append, o->rec, &c->out);
-    if (!st)
+    if (!st && o->study)
+        st = play_study_levels(c->cmd, o->study, o->participant, c->levels, &c->nlevels,
+                               c->study);
+    else if (!st)
         st = play_levels(c->cmd, o->level_path, o->mode, o->seed, c->levels, &c->nlevels);
     if (!st && o->input_path) {
         st = play_input_open(c->cmd, o->input_path, 0, &c->input);
@@ -249,6 +263,7 @@ static int play_prepare(play_ctx *c)
     c->has_window = 1;
     hol_rec_meta meta;
     hol_sink_posix_meta(&meta, c->o.participant);
+    snprintf(meta.study, sizeof meta.study, "%s", c->study);
     st = play_session_open(c->cmd, &c->out, c->levels, c->nlevels, &meta, c->o.append, &c->s);
     if (st)
         return st;

@@ -11,12 +11,14 @@
 #include "../openxr/hol_xr_pick.h"
 #include "cli.h"
 #include "play_setup.h"
+#include "play_study.h"
 #ifdef HOL_XR
 #include "../openxr/hol_xr.h"
 #endif
 
 static const char *const xr_usage =
-    "usage: holonomy xr [LEVEL] [--frames N] [--log DIR [--append]] [--participant ID]\n"
+    "usage: holonomy xr [LEVEL | --study FILE] [--frames N] [--log DIR [--append]]\n"
+    "                   [--participant ID]\n"
     "                   [--record FILE] [--input FILE] [--space stage|local]\n"
     "                   [--check-frame K --check-dir DIR]\n"
     "\n"
@@ -29,6 +31,8 @@ static const char *const xr_usage =
     "Controllers: confirm, menu, recentre, minimap; in the menu, restart\n"
     "(confirm's button) and quit (README: Headset, the bindings).\n"
     "\n"
+    "  --study FILE    a study's conditions in the order of the participant's\n"
+    "                  number (--participant P07: 7), as 'holonomy play --study'\n"
     "  --frames N      request exit after N submitted frames\n"
     "  --log DIR       research logs (README: Research logs)\n"
     "  --record FILE   record the session's input\n"
@@ -52,7 +56,7 @@ static const char *const xr_usage =
 #define XR_SCRIPT_MAX 100000
 
 typedef struct xr_opts {
-    const char *level_path, *log_dir, *rec, *input_path, *check_dir, *participant;
+    const char *level_path, *log_dir, *rec, *input_path, *check_dir, *participant, *study;
     long frames, check_frame;
     int append;
     int space; /* 0 or HOL_XR_SPACE_LOCAL (hol_xr_desc.space) */
@@ -77,7 +81,7 @@ static int xr_options(const char *cmd, int argc, char **argv, xr_opts *o)
 {
     static const char *const valued[] = {"--frames",      "--log",       "--record",
                                          "--input",       "--check-frame", "--check-dir",
-                                         "--participant", "--space",    NULL};
+                                         "--participant", "--space",    "--study", NULL};
     static const char *const flags[] = {"--append", NULL};
     memset(o, 0, sizeof *o);
     o->check_frame = -1;
@@ -101,6 +105,8 @@ static int xr_options(const char *cmd, int argc, char **argv, xr_opts *o)
             o->input_path = val;
         else if (!strcmp(a, "--check-dir"))
             o->check_dir = val;
+        else if (!strcmp(a, "--study"))
+            o->study = val;
         else if (!strcmp(a, "--append"))
             o->append = 1;
         else if (!strcmp(a, "--space")) {
@@ -116,6 +122,7 @@ static int xr_options(const char *cmd, int argc, char **argv, xr_opts *o)
         return CLI_EXIT_USAGE;
     const char *clash = (o->check_frame >= 0) != (o->check_dir != NULL)
                             ? "--check-frame and --check-dir go together"
+                        : o->study && o->level_path ? "give a LEVEL file or --study, not both"
                         : o->append && !o->log_dir ? "--append goes with --log"
                                                    : NULL;
     if (clash) {
@@ -217,7 +224,9 @@ int cli_cmd_xr(int argc, char **argv)
     memset(&out, 0, sizeof out);
     hol_input *script = NULL;
     long nscript = 0;
-    st = play_levels(cmd, o.level_path, NULL, CLI_SEED_DEFAULT, levels, &nlevels);
+    char study[HOL_REC_ID_MAX] = "";
+    st = o.study ? play_study_levels(cmd, o.study, o.participant, levels, &nlevels, study)
+                 : play_levels(cmd, o.level_path, NULL, CLI_SEED_DEFAULT, levels, &nlevels);
     if (!st)
         st = xr_script(cmd, o.input_path, &script, &nscript);
 #ifdef HOL_XR
@@ -228,6 +237,7 @@ int cli_cmd_xr(int argc, char **argv)
     if (!st) {
         hol_rec_meta meta;
         hol_sink_posix_meta(&meta, o.participant);
+        snprintf(meta.study, sizeof meta.study, "%s", study);
         st = play_session_open(cmd, &out, levels, nlevels, &meta, o.append, &s);
     }
     if (!st)

@@ -2,8 +2,10 @@
  * over the levels the page asks for, writing its logs and recording to the
  * browser's store (hol_web_sink.h). What to play comes from the page's
  * config (page.js: URL parameters or a level file), as `holonomy play`
- * takes it from its command line: a level file's text, or a mode and seed,
- * or neither: the default campaign from the seed (default 1).
+ * takes it from its command line: a study (its file and the level files it
+ * names, played in the order of the participant's number), a level file's
+ * text, or a mode and seed, or neither: the default campaign from the seed
+ * (default 1).
  */
 #include <emscripten.h>
 #include <stdio.h>
@@ -12,6 +14,7 @@
 
 #include "../../core/hol_campaign.h"
 #include "../../core/hol_session.h"
+#include "../../core/hol_study.h"
 #include "hol_web.h"
 #include "hol_web_sink.h"
 
@@ -20,6 +23,7 @@ extern void hol_web_js_event(const char *kind, const char *text);
 
 static hol_session *sess;
 static hol_level levels[HOL_SESSION_MAX_LEVELS];
+static char study_name[64]; /* a study's, or "" */
 static int finished;
 
 /* decimal or 0x hex, nothing else (as the desktop's --seed) */
@@ -43,6 +47,65 @@ static int parse_seed(const char *s, uint64_t *out)
     return 0;
 }
 
+/* A study's levels (core/hol_study.h): the study file's text and each
+ * level file it names, which the page fetched (config "level:PATH"), in
+ * the order of the participant's number; 0, or 1 with msg. */
+static int study_levels(const char *text, const char *part, int *n, char out_name[64],
+                        char *msg, size_t cap)
+{
+    static hol_study st;
+    static char lvtext[HOL_LEVEL_TEXT_MAX + 2];
+    hol_level_err le;
+    char m[256], key[HOL_STUDY_PATH_MAX + 8], rel[HOL_STUDY_PATH_MAX];
+    uint64_t p = hol_study_participant_number(part);
+    if (!p) {
+        snprintf(msg, cap, "a study needs participant=ID ending in the participant's number "
+                           "(P07, 12)");
+        return 1;
+    }
+    if (hol_study_parse(text, strlen(text), &st, &le)) {
+        snprintf(msg, cap, "study: %s", hol_level_err_format(&le, 1, m, sizeof m));
+        return 1;
+    }
+    int order[HOL_STUDY_MAX_CONDITIONS], lv[HOL_STUDY_MAX_LEVELS], cond[HOL_STUDY_MAX_LEVELS],
+        pos[HOL_STUDY_MAX_LEVELS];
+    hol_study_order(&st, p, order);
+    *n = hol_study_session(&st, order, lv, cond, pos);
+    for (int i = 0; i < *n; i++) {
+        hol_study_level_path(&st, lv[i], rel);
+        snprintf(key, sizeof key, "level:%s", rel);
+        lvtext[0] = 0;
+        if (rel[0])
+            hol_web_js_config(key, lvtext, sizeof lvtext);
+        if (rel[0] && !lvtext[0]) {
+            snprintf(msg, cap, "study: the level file '%.100s' was not loaded", rel);
+            return 1;
+        }
+        char name[HOL_LEVEL_NAME_MAX] = "";
+        const char *base = strrchr(rel, '/') ? strrchr(rel, '/') + 1 : rel;
+        size_t bl = strcspn(base, ".");
+        snprintf(name, sizeof name, "%.*s", (int)(bl ? (bl < 60 ? bl : 60) : 60), base);
+        int in_study = 0;
+        size_t len = strlen(lvtext);
+        if (len > HOL_LEVEL_TEXT_MAX ||
+            hol_study_make_level(&st, lv[i], pos[i], rel[0] ? lvtext : NULL, len,
+                                 name[0] ? name : NULL, &levels[i], &le, &in_study)) {
+            if (len > HOL_LEVEL_TEXT_MAX)
+                snprintf(m, sizeof m, "longer than %d bytes", HOL_LEVEL_TEXT_MAX);
+            else
+                hol_level_err_format(&le, 1, m, sizeof m);
+            snprintf(msg, cap, "%.100s: %s", in_study || !rel[0] ? "study" : rel, m);
+            return 1;
+        }
+    }
+    snprintf(out_name, 64, "%s", st.name);
+    printf("web: study %s, participant %s (number %llu):", st.name, part, (unsigned long long)p);
+    for (int k = 0; k < st.nconditions; k++)
+        printf(" %s", st.conditions[order[k]].name);
+    printf("\n");
+    return 0;
+}
+
 /* The levels the page asks for; 0, or 1 with msg. */
 static int page_levels(int *n, char *msg, size_t cap)
 {
@@ -52,6 +115,13 @@ static int page_levels(int *n, char *msg, size_t cap)
     hol_web_js_config("seed", seed_s, sizeof seed_s);
     hol_web_js_config("levelName", name, sizeof name);
     hol_web_js_config("level", text, sizeof text);
+    static char study[HOL_STUDY_TEXT_MAX + 2];
+    hol_web_js_config("study", study, sizeof study);
+    if (study[0]) {
+        char part[HOL_REC_ID_MAX + 8] = "";
+        hol_web_js_config("participant", part, sizeof part);
+        return study_levels(study, part, n, study_name, msg, cap);
+    }
     uint64_t seed = 1;
     if (seed_s[0] && parse_seed(seed_s, &seed)) {
         snprintf(msg, cap, "seed '%.30s' is not an unsigned 64-bit number", seed_s);
@@ -108,6 +178,7 @@ int hol_web_game_open(char *msg, size_t cap)
     d.append = 1; /* one folder for every visit (hol_web_sink.h) */
     d.rec = hol_web_sink();
     hol_web_sink_meta(&d.meta, part[0] ? part : NULL);
+    snprintf(d.meta.study, sizeof d.meta.study, "%s", study_name);
     char rec_name[HOL_REC_ID_MAX + 16];
     snprintf(rec_name, sizeof rec_name, "session-%s.rec", d.meta.session);
     d.rec_name = rec_name;

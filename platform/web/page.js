@@ -5,8 +5,11 @@
 //
 // URL parameters: mode=tutorial|flag|keys|explore and seed=S (a level made
 // from the seed, as `holonomy play --mode`), level=URL (a level file served
-// beside the page), participant=ID (the logs' participant), snap=DEG (snap
-// turn on the Left/Right keys). None: the default campaign. A level file
+// beside the page), study=URL (a study file: its level files are fetched
+// from beside it, and the participant's number, from participant=P07,
+// gives the order of its conditions: README, Study designs),
+// participant=ID (the logs' participant), snap=DEG (snap turn on the
+// Left/Right keys). None: the default campaign. A level file
 // chosen with "Level file..." plays on the next load (kept in
 // sessionStorage for this tab).
 'use strict';
@@ -169,8 +172,36 @@
     var n = file.split('.')[0] || file;
     return n.slice(0, 60);
   }
+  // a study file and the level files its practice and level lines name
+  // (the wasm's parser checks the file; this only finds what to fetch)
+  function loadStudy(url) {
+    var base = new URL(url, location.href);
+    return fetch(base).then(function (r) {
+      if (!r.ok) throw new Error(url + ': ' + r.status);
+      return r.text();
+    }).then(function (t) {
+      config.study = t;
+      config.levelName = 'study ' + levelName(url.split('/').pop());
+      var paths = [];
+      t.split('\n').forEach(function (line) {
+        var m = /^\s*(practice|level)\s+(\S+)/.exec(line.split('#')[0]);
+        if (m && paths.indexOf(m[2]) < 0) paths.push(m[2]);
+      });
+      return Promise.all(paths.map(function (p) {
+        return fetch(new URL(p, base)).then(function (r) {
+          if (!r.ok) throw new Error(p + ': ' + r.status);
+          return r.text();
+        }).then(function (lt) { config['level:' + p] = lt; });
+      }));
+    });
+  }
   var saved = params.has('levelfile') && sessionStorage.getItem('holonomy-level');
-  if (saved) {
+  if (params.has('study')) {
+    loadStudy(params.get('study')).then(start).catch(function (e) {
+      status('Cannot load the study: ' + e.message);
+      console.error('holonomy: cannot load the study ' + e.message);
+    });
+  } else if (saved) {
     var lv = JSON.parse(saved);
     config.level = lv.text;
     config.levelName = levelName(lv.name);

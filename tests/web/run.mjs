@@ -173,6 +173,32 @@ await check('snap turn (?snap=90): a tap of Left turns the look by 90 degrees; ?
   await q.ctx.close();
 });
 
+await check('a study (study=URL, participant=P02) plays the participant\'s order: the levels fetched beside it, labelled in the logs', async () => {
+  fs.mkdirSync(path.join(testDir, 'st', 'lv'), { recursive: true });
+  fs.writeFileSync(path.join(testDir, 'st', 'lv', 'f.lvl'), 'mode flag\nseed 5\nflag Wrf\n');
+  fs.writeFileSync(path.join(testDir, 'st', 's.study'),
+    'study web # three conditions\ncondition a\nlevel lv/f.lvl\ncondition b\nlevel lv/f.lvl # again\n' +
+    'set minimap hand\ncondition c\nset mode explore\n');
+  const p = await openPage('?study=/test/st/s.study&participant=P02');
+  // Williams, three conditions: participant 2 plays row 2, b c a
+  const line = p.log.find((l) => l.startsWith('web: study '));
+  assert(line === 'web: study web, participant P02 (number 2): b c a', 'order line: ' + line);
+  const live = (await stored(p.page, 'attempt-001.live'))?.toString('utf8') || '';
+  assert(/^[^,]*,P02,[^,]*,[^,]*,1,web,b,1,f,[0-9a-f]{64},flag,/.test(live), 'attempt 1: ' + live);
+  const names = await p.page.evaluate(() => window.holonomyStore.names());
+  assert(names.filter((n) => /^level-[0-9a-f]{64}\.txt$/.test(n)).length === 3,
+    'the levels\' texts: ' + names.join(' '));
+  assert(!p.errors.length, 'errors: ' + p.errors.join('; '));
+  await p.ctx.close();
+});
+
+await check('a study without the participant\'s number is refused with one line', async () => {
+  const p = await openPage('?study=/test/st/s.study', { fail: true });
+  const st = await p.page.evaluate(() => document.getElementById('status').textContent);
+  assert(/^Failed: a study needs participant=ID ending in the participant's number/.test(st), 'status: ' + st);
+  await p.ctx.close();
+});
+
 await check('a gamepad (a getGamepads shim, standard mapping) walks one room step north', async () => {
   const p = await openPage('?seed=3', { gamepad: true });
   await p.until(async () => (await p.state(S.FRAMES)) > 10, 'frames');

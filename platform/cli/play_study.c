@@ -1,0 +1,118 @@
+/* play_study.c - a study's levels for play and xr (see play_study.h). */
+#include "play_study.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "../../core/hol_study.h"
+#include "cli.h"
+
+/* The participant's number, or 0 after the message. */
+static uint64_t study_number(const char *cmd, const char *participant)
+{
+    uint64_t p = participant ? hol_study_participant_number(participant) : 0;
+    if (!p)
+        cli_error(cmd, 0, "--study needs --participant ID ending in the participant's number "
+                          "(P07, 12: 1..1000000000)");
+    return p;
+}
+
+/* PATH of a level, relative to the study file's folder unless absolute. */
+static int study_path(const char *study, const char *level, char *out, size_t cap)
+{
+    const char *slash = strrchr(study, '/');
+    int n = level[0] == '/' || !slash
+                ? snprintf(out, cap, "%s", level)
+                : snprintf(out, cap, "%.*s/%s", (int)(slash - study), study, level);
+    return n < 0 || (size_t)n >= cap;
+}
+
+/* Level i of the study, labelled with position pos, into *out. */
+static int study_level(const char *cmd, const char *spath, const hol_study *s, int i, int pos,
+                       hol_level *out)
+{
+    char rel[HOL_STUDY_PATH_MAX], path[4096], name[64] = "", msg[256];
+    uint8_t *data = NULL;
+    size_t size = 0;
+    hol_study_level_path(s, i, rel);
+    if (rel[0]) {
+        if (study_path(spath, rel, path, sizeof path)) {
+            cli_error(cmd, 0, "%.200s: line %ld: the level's path is too long", spath,
+                      s->levels[i].line);
+            return CLI_EXIT_USAGE;
+        }
+        int rs = cli_read_file(cmd, "level", path, HOL_LEVEL_TEXT_MAX, &data, &size);
+        if (rs)
+            return rs;
+        const char *base = strrchr(path, '/');
+        base = base ? base + 1 : path;
+        size_t bl = strcspn(base, ".");
+        snprintf(name, sizeof name, "%.*s", (int)(bl ? (bl < 60 ? bl : 60) : 60), base);
+    }
+    hol_level_err le;
+    int in_study = 0;
+    hol_err e = hol_study_make_level(s, i, pos, (const char *)data, size, name[0] ? name : NULL,
+                                     out, &le, &in_study);
+    free(data);
+    if (e) {
+        int c = hol_study_level_condition(s, i);
+        hol_level_err_format(&le, 1, msg, sizeof msg);
+        if (in_study || !rel[0])
+            cli_error(cmd, 0, "%.200s: %s", spath, msg);
+        else
+            cli_error(cmd, 0, "%.200s: %s (condition %s of %.100s)", path, msg,
+                      c < 0 ? HOL_STUDY_PRACTICE : s->conditions[c].name, spath);
+        return CLI_EXIT_USAGE;
+    }
+    return 0;
+}
+
+/* "hud, hand, none" */
+static void study_tell(const char *cmd, const hol_study *s, const char *participant,
+                       uint64_t p, const int *order)
+{
+    uint64_t rows = hol_study_rows(s->rule, s->nconditions);
+    fprintf(stderr, "holonomy %s: study %s, participant %s (number %llu, order %llu of %llu):",
+            cmd, s->name, participant, (unsigned long long)p,
+            (unsigned long long)((p - 1) % rows + 1), (unsigned long long)rows);
+    if (s->npractice)
+        fprintf(stderr, " practice,");
+    for (int k = 0; k < s->nconditions; k++)
+        fprintf(stderr, " %s%s", s->conditions[order[k]].name, k + 1 < s->nconditions ? "," : "");
+    fprintf(stderr, "\n");
+}
+
+int play_study_levels(const char *cmd, const char *path, const char *participant,
+                      hol_level *levels, int *nlevels, char study_name[HOL_REC_ID_MAX])
+{
+    static hol_study s;
+    *nlevels = 0;
+    uint64_t p = study_number(cmd, participant);
+    if (!p)
+        return CLI_EXIT_USAGE;
+    uint8_t *data = NULL;
+    size_t size = 0;
+    int st = cli_read_file(cmd, "study", path, HOL_STUDY_TEXT_MAX, &data, &size);
+    if (st)
+        return st;
+    hol_level_err le;
+    hol_err e = hol_study_parse((const char *)data, size, &s, &le);
+    free(data);
+    if (e) {
+        char msg[256];
+        cli_error(cmd, 0, "%.200s: %s", path, hol_level_err_format(&le, 1, msg, sizeof msg));
+        return CLI_EXIT_USAGE;
+    }
+    int order[HOL_STUDY_MAX_CONDITIONS], lv[HOL_STUDY_MAX_LEVELS], cond[HOL_STUDY_MAX_LEVELS],
+        pos[HOL_STUDY_MAX_LEVELS];
+    hol_study_order(&s, p, order);
+    int n = hol_study_session(&s, order, lv, cond, pos);
+    for (int i = 0; i < n; i++)
+        if ((st = study_level(cmd, path, &s, lv[i], pos[i], &levels[i])))
+            return st;
+    *nlevels = n;
+    snprintf(study_name, HOL_REC_ID_MAX, "%s", s.name);
+    study_tell(cmd, &s, participant, p, order);
+    return 0;
+}

@@ -1,0 +1,29 @@
+/* play_study.h - a study file (core/hol_study.h) on this machine, for
+ * `holonomy play --study` and `xr --study`: the file and its level files
+ * read, the participant's order made from their number, the session's
+ * levels labelled.
+ *
+ * Contract
+ * - play_study_levels reads the study file (at most HOL_STUDY_TEXT_MAX
+ *   bytes) and each level file it names (paths relative to the study
+ *   file's folder, unless absolute), takes the participant's number from
+ *   the trailing digits of participant (--participant, required: "P07" is
+ *   7), and fills levels[0..*nlevels-1] in the participant's order, each
+ *   named as play_read_level names a level file (a condition without a
+ *   file: the condition's name) and labelled with its condition and
+ *   position; study_name gets the study's name (for the session's
+ *   metadata). It prints one line on stderr naming the order played.
+ * - Every problem is one line on stderr naming the file and line (a bad
+ *   study line, a level file's bad line with the condition it serves), and
+ *   the exit status is returned: 2 bad input, 1 failure; 0 ok.
+ */
+#ifndef HOL_PLAY_STUDY_H
+#define HOL_PLAY_STUDY_H
+
+#include "../../core/hol_level.h"
+#include "../../core/hol_rec.h"
+
+int play_study_levels(const char *cmd, const char *path, const char *participant,
+                      hol_level *levels, int *nlevels, char study_name[HOL_REC_ID_MAX]);
+
+#endif
