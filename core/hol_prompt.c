@@ -18,7 +18,9 @@ static const char *const hol__words[HOL_DEVICE_COUNT][HOL__NBTN] = {
      * menu, and in it the confirm input restarts (platform/openxr/hol_xr_bind.h) */
     [HOL_DEVICE_XR_SIMPLE] = {"SELECT", NULL, "MENU", "LEFT MENU", "LEFT SELECT", NULL,
                               "LEFT MENU", NULL},
-    [HOL_DEVICE_XR_TOUCH] = {"A", NULL, "MENU", "Y", "X", NULL, "B", NULL},
+    /* Touch: the same buttons as the web build's (below): Y menu, left
+     * thumbstick press recentre */
+    [HOL_DEVICE_XR_TOUCH] = {"A", NULL, "Y", "LEFT THUMBSTICK", "X", NULL, "B", NULL},
     [HOL_DEVICE_XR_VIVE] = {"TRIGGER", NULL, "MENU", "LEFT MENU", "LEFT TRACKPAD", NULL,
                             "TRACKPAD", NULL},
     [HOL_DEVICE_XR_INDEX] = {"A", NULL, "B", "LEFT B", "LEFT A", NULL, "LEFT TRIGGER", NULL},
@@ -26,8 +28,9 @@ static const char *const hol__words[HOL_DEVICE_COUNT][HOL__NBTN] = {
                            "TRACKPAD", NULL},
     [HOL_DEVICE_XR] = {"TRIGGER", NULL, "MENU", NULL, NULL, NULL, NULL, NULL},
     /* the web build's (platform/web/hol_web_xr.h): right trigger or A
-     * confirm, B back, Y menu, left stick press recentre, X minimap */
-    [HOL_DEVICE_WEBXR_TOUCH] = {"A", "B", "Y", "LEFT STICK", "X", NULL, NULL, NULL},
+     * confirm, B back, Y menu, left thumbstick press recentre, X minimap:
+     * the native Touch's buttons (in the menu B quits on both) */
+    [HOL_DEVICE_WEBXR_TOUCH] = {"A", "B", "Y", "LEFT THUMBSTICK", "X", NULL, NULL, NULL},
 };
 
 const char *hol_prompt_button(uint32_t device, uint32_t btn)

@@ -837,7 +837,7 @@ static void test_prompts_name_buttons(void **state)
         /* XR: quit is bound in the pause menu (platform/openxr/hol_xr_bind.h) */
         {HOL_DEVICE_XR_SIMPLE, "SELECT: next level",
          "MENU: resume, SELECT: restart, LEFT MENU: quit"},
-        {HOL_DEVICE_XR_TOUCH, "A: next level", "MENU: resume, A: restart, B: quit"},
+        {HOL_DEVICE_XR_TOUCH, "A: next level", "Y: resume, A: restart, B: quit"},
         {HOL_DEVICE_XR_VIVE, "TRIGGER: next level",
          "MENU: resume, TRIGGER: restart, TRACKPAD: quit"},
         {HOL_DEVICE_XR_INDEX, "A: next level", "B: resume, A: restart, LEFT TRIGGER: quit"},

@@ -289,10 +289,43 @@ static void test_prompt_words(void **state)
     }
 }
 
+/* Issue 20 item 4: the native Touch's buttons are the web build's
+ * (platform/web/hol_web_xr.h: right A confirm, left Y menu, left X
+ * minimap, left thumbstick press recentre, right B quits in the menu),
+ * and the prompts name the same buttons on both. */
+static void test_touch_as_the_web(void **state)
+{
+    (void)state;
+    int k = hol_xr_profile_find("/interaction_profiles/oculus/touch_controller");
+    assert_true(k >= 0);
+    const hol_xr_profile *p = &hol_xr_profiles()[k];
+    static const struct {
+        int act;
+        const char *path;
+        uint32_t btn;
+    } web[] = {
+        {HOL_XR_ACT_CONFIRM, "/user/hand/right/input/a/click", HOL_BTN_CONFIRM},
+        {HOL_XR_ACT_MENU, "/user/hand/left/input/y/click", HOL_BTN_MENU},
+        {HOL_XR_ACT_MINIMAP, "/user/hand/left/input/x/click", HOL_BTN_MINIMAP},
+        {HOL_XR_ACT_RECENTRE, "/user/hand/left/input/thumbstick/click", HOL_BTN_RECENTRE},
+        {HOL_XR_ACT_QUIT, "/user/hand/right/input/b/click", 0},
+    };
+    for (size_t i = 0; i < sizeof web / sizeof web[0]; i++) {
+        assert_string_equal(p->path[web[i].act], web[i].path);
+        if (web[i].btn)
+            assert_string_equal(hol_prompt_button(HOL_DEVICE_XR_TOUCH, web[i].btn),
+                                hol_prompt_button(HOL_DEVICE_WEBXR_TOUCH, web[i].btn));
+    }
+    /* quit: the native menu's own input, the web's back; both B */
+    assert_string_equal(hol_prompt_button(HOL_DEVICE_XR_TOUCH, HOL_BTN_QUIT),
+                        hol_prompt_button(HOL_DEVICE_WEBXR_TOUCH, HOL_BTN_BACK));
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_prompt_words),
+        cmocka_unit_test(test_touch_as_the_web),
         cmocka_unit_test(test_the_five_profiles),
         cmocka_unit_test(test_every_binding_is_in_its_profile),
         cmocka_unit_test(test_every_profile_reaches_every_action),

@@ -15,9 +15,11 @@ static const hol_xr_profile hol__profiles[HOL_XR_NPROFILES] = {
       HOL__R "select/click", HOL__L "menu/click"},
      {"right select", "right menu", "left menu", "left select", "right select", "left menu"}},
     {"/interaction_profiles/oculus/touch_controller", "oculus/touch_controller",
-     {HOL__R "a/click", HOL__L "menu/click", HOL__L "y/click", HOL__L "x/click", HOL__R "a/click",
-      HOL__R "b/click"},
-     {"A", "menu", "Y", "X", "A", "B"}},
+     /* as the web build's Touch (platform/web/hol_web_xr.h): Y menu, left
+      * thumbstick press recentre - WebXR gives pages no menu button */
+     {HOL__R "a/click", HOL__L "y/click", HOL__L "thumbstick/click", HOL__L "x/click",
+      HOL__R "a/click", HOL__R "b/click"},
+     {"A", "Y", "left thumbstick", "X", "A", "B"}},
     {"/interaction_profiles/htc/vive_controller", "htc/vive_controller",
      {HOL__R "trigger/click", HOL__R "menu/click", HOL__L "menu/click",
       HOL__L "trackpad/click", HOL__R "trigger/click", HOL__R "trackpad/click"},
