@@ -176,14 +176,14 @@ static void hol__nav_init(hol_nav *nav, const hol_nav_desc *d, const hol__plan *
     /* touch the arena once here (the table build used only part of it as
      * scratch): the first far query paid about 8 ms of page faults */
     memset(arena_p, 0, pl->arena);
-    nav->nodes = (hol__node *)(void *)arena_p;
-    nav->hash = (uint32_t *)(void *)(arena_p + hol__align((size_t)pl->cap * sizeof(hol__node)));
-    nav->bucket = (uint32_t *)(void *)((char *)nav->hash +
+    nav->ar.nodes = (hol__node *)(void *)arena_p;
+    nav->ar.hash = (uint32_t *)(void *)(arena_p + hol__align((size_t)pl->cap * sizeof(hol__node)));
+    nav->ar.bucket = (uint32_t *)(void *)((char *)nav->ar.hash +
                                        hol__align((size_t)pl->hsize * sizeof(uint32_t)));
-    nav->ent = (uint32_t *)(void *)((char *)nav->bucket + hol__align(HOL__FMAX * sizeof(uint32_t)));
-    nav->ent_cap = 2 * pl->cap;
-    nav->cap = pl->cap;
-    nav->hash_mask = pl->hsize - 1;
+    nav->ar.ent = (uint32_t *)(void *)((char *)nav->ar.bucket + hol__align(HOL__FMAX * sizeof(uint32_t)));
+    nav->ar.ent_cap = 2 * pl->cap;
+    nav->ar.cap = pl->cap;
+    nav->ar.hash_mask = pl->hsize - 1;
     /* in the flat grid every walk stays on the room's tiles, all within
      * (cols - 1) + (rows - 1) <= 8 of each other: the tables are exact to
      * their radii (gaps 0) */
@@ -405,7 +405,7 @@ static int hol__nav_h(const hol_nav *nav, const hol__node *n, int *out_cost)
 static hol_err hol__anytime(hol_nav *nav, const hol_room *start, hol_tile u, int o,
                             size_t budget, hol__walk *w, hol_nav_result *res)
 {
-    hol__nav_reset(nav);
+    hol__arena_reset(&nav->ar);
     hol__node root;
     memset(&root, 0, sizeof root);
     uint32_t idx = hol_navtab_rank(&nav->tab, u);
@@ -421,8 +421,8 @@ static hol_err hol__anytime(hol_nav *nav, const hol_room *start, hol_tile u, int
     int v, isnew;
     int h = hol__nav_h(nav, &root, &v);
     root.f = (uint16_t)(h < HOL__FMAX ? h : HOL__FMAX - 1);
-    uint32_t rid = hol__nav_intern(nav, &root, &isnew);
-    hol__nav_push(nav, rid);
+    uint32_t rid = hol__arena_intern(&nav->ar, &root, &isnew);
+    hol__arena_push(&nav->ar, rid);
     uint32_t best = HOL__NIL;
     int best_cost = 1 << 20;
     if (v < 255) {
@@ -432,8 +432,8 @@ static hol_err hol__anytime(hol_nav *nav, const hol_room *start, hol_tile u, int
     size_t expanded = 0;
     uint32_t id;
     int full = 0;
-    while (!full && expanded < budget && (id = hol__nav_pop(nav)) != HOL__NIL) {
-        hol__node cur = nav->nodes[id];
+    while (!full && expanded < budget && (id = hol__arena_pop(&nav->ar)) != HOL__NIL) {
+        hol__node cur = nav->ar.nodes[id];
         if ((int)cur.f >= best_cost + nav->margin)
             break;
         /* A node within the trusted radius is a finished candidate: every
@@ -449,12 +449,12 @@ static hol_err hol__anytime(hol_nav *nav, const hol_room *start, hol_tile u, int
             if (!hol__nav_succ(nav, &cur, d, &nx))
                 continue;
             int g = cur.g + 1;
-            uint32_t nid = hol__nav_relax(nav, &nx, id, d, g, &full);
+            uint32_t nid = hol__arena_relax(&nav->ar, &nx, id, d, g, &full);
             if (full)
                 break; /* arena full: stop */
             if (nid == HOL__NIL)
                 continue;
-            hol__node *q = &nav->nodes[nid];
+            hol__node *q = &nav->ar.nodes[nid];
             int c;
             int hh = hol__nav_h(nav, q, &c);
             int f = g + hh;
@@ -463,7 +463,7 @@ static hol_err hol__anytime(hol_nav *nav, const hol_room *start, hol_tile u, int
                 best_cost = g + c;
                 best = nid;
             }
-            if (!hol__nav_push(nav, nid)) {
+            if (!hol__arena_push(&nav->ar, nid)) {
                 full = 1;
                 break;
             }
@@ -471,8 +471,8 @@ static hol_err hol__anytime(hol_nav *nav, const hol_room *start, hol_tile u, int
     }
     res->nodes = expanded;
     if (best != HOL__NIL) {
-        hol__nav_emit_path(nav, best, w);
-        const hol__node *b = &nav->nodes[best];
+        hol__arena_path(&nav->ar, best, w);
+        const hol__node *b = &nav->ar.nodes[best];
         hol__nav_descend(&nav->tab, b->u.idx, b->o, b->cell, w);
         return w->overflow ? HOL_ENOMEM : HOL_OK;
     }
@@ -508,8 +508,8 @@ hol_err hol_nav_find(hol_nav *nav, const hol_room *start, hol_tile target,
     } else if (!err && flat) {
         err = HOL_EUNREACH; /* beyond the room's span */
     } else if (!err) {
-        if (budget == 0 || budget > nav->cap)
-            budget = nav->cap;
+        if (budget == 0 || budget > nav->ar.cap)
+            budget = nav->ar.cap;
         err = hol__anytime(nav, start, u, o, budget, &w, &res);
         if (err == HOL_EBUDGET) {
             /* no table node: chain waypoints on absolute tiles */

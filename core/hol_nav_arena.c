@@ -1,10 +1,11 @@
 /* hol_nav_arena.c - the search arena (nodes, a hash of states, a bucket
  * queue on f), walks and table descents: the lowest layer of guidance
- * above the tables (hol_nav_impl.h lists the files and their order).
+ * above the tables (hol_nav_arena.h; hol_nav_impl.h lists the files and
+ * their order). It knows the table, never the navigator.
  */
 #include <string.h>
 
-#include "hol_nav_impl.h"
+#include "hol_nav_arena.h"
 
 /* ---- arena: nodes, hash of states, bucket queue on f ---- */
 
@@ -13,24 +14,24 @@ static uint64_t hol__node_hash(const hol__node *n);
 /* Clearing the whole hash (2 MB at the defaults) cost more than a small
  * query; after a search only the slots of its nodes are cleared (found by
  * rehashing each node and probing for its id). */
-void hol__nav_reset(hol_nav *nav)
+void hol__arena_reset(hol__arena *ar)
 {
-    if (nav->hash_dirty) {
-        memset(nav->hash, 0, ((size_t)nav->hash_mask + 1) * sizeof(uint32_t));
-        nav->hash_dirty = 0;
+    if (ar->hash_dirty) {
+        memset(ar->hash, 0, ((size_t)ar->hash_mask + 1) * sizeof(uint32_t));
+        ar->hash_dirty = 0;
     } else {
-        for (uint32_t i = 0; i < nav->count; i++) {
-            uint32_t h = (uint32_t)hol__node_hash(&nav->nodes[i]) & nav->hash_mask;
-            while (nav->hash[h] != i + 1)
-                h = (h + 1) & nav->hash_mask;
-            nav->hash[h] = 0;
+        for (uint32_t i = 0; i < ar->count; i++) {
+            uint32_t h = (uint32_t)hol__node_hash(&ar->nodes[i]) & ar->hash_mask;
+            while (ar->hash[h] != i + 1)
+                h = (h + 1) & ar->hash_mask;
+            ar->hash[h] = 0;
         }
     }
-    nav->count = 0;
-    nav->ent_n = 0;
+    ar->count = 0;
+    ar->ent_n = 0;
     for (int i = 0; i < HOL__FMAX; i++)
-        nav->bucket[i] = HOL__NIL;
-    nav->fmin = HOL__FMAX;
+        ar->bucket[i] = HOL__NIL;
+    ar->fmin = HOL__FMAX;
 }
 
 static uint64_t hol__node_hash(const hol__node *n)
@@ -57,40 +58,40 @@ static int hol__node_same(const hol__node *a, const hol__node *b)
 
 /* Find the node equal to *n, or add it. *out_new tells which. HOL__NIL when
  * the arena is full. */
-uint32_t hol__nav_intern(hol_nav *nav, const hol__node *n, int *out_new)
+uint32_t hol__arena_intern(hol__arena *ar, const hol__node *n, int *out_new)
 {
-    uint32_t h = (uint32_t)hol__node_hash(n) & nav->hash_mask;
+    uint32_t h = (uint32_t)hol__node_hash(n) & ar->hash_mask;
     for (;;) {
-        uint32_t e = nav->hash[h];
+        uint32_t e = ar->hash[h];
         if (e == 0)
             break;
-        if (hol__node_same(&nav->nodes[e - 1], n)) {
+        if (hol__node_same(&ar->nodes[e - 1], n)) {
             *out_new = 0;
             return e - 1;
         }
-        h = (h + 1) & nav->hash_mask;
+        h = (h + 1) & ar->hash_mask;
     }
-    if (nav->count >= nav->cap)
+    if (ar->count >= ar->cap)
         return HOL__NIL;
-    uint32_t id = nav->count++;
-    nav->nodes[id] = *n;
-    nav->hash[h] = id + 1;
+    uint32_t id = ar->count++;
+    ar->nodes[id] = *n;
+    ar->hash[h] = id + 1;
     *out_new = 1;
     return id;
 }
 
-uint32_t hol__nav_relax(hol_nav *nav, const hol__node *nx, uint32_t parent, int d,
-                        int g, int *out_full)
+uint32_t hol__arena_relax(hol__arena *ar, const hol__node *nx, uint32_t parent, int d,
+                          int g, int *out_full)
 {
     int isnew;
     if (g >= HOL__FMAX / 2)
         return HOL__NIL;
-    uint32_t nid = hol__nav_intern(nav, nx, &isnew);
+    uint32_t nid = hol__arena_intern(ar, nx, &isnew);
     if (nid == HOL__NIL) {
         *out_full = 1;
         return HOL__NIL;
     }
-    hol__node *q = &nav->nodes[nid];
+    hol__node *q = &ar->nodes[nid];
     if (!isnew && q->g <= g)
         return HOL__NIL;
     q->g = (uint16_t)g;
@@ -100,46 +101,35 @@ uint32_t hol__nav_relax(hol_nav *nav, const hol__node *nx, uint32_t parent, int 
 }
 
 /* Queue node id under its f; 0 when the entry pool is full. */
-int hol__nav_push(hol_nav *nav, uint32_t id)
+int hol__arena_push(hol__arena *ar, uint32_t id)
 {
-    if (nav->ent_n >= nav->ent_cap)
+    if (ar->ent_n >= ar->ent_cap)
         return 0;
-    uint32_t f = nav->nodes[id].f, e = nav->ent_n++;
-    nav->ent[2 * e] = id;
-    nav->ent[2 * e + 1] = nav->bucket[f];
-    nav->bucket[f] = e;
-    if (f < nav->fmin)
-        nav->fmin = f;
+    uint32_t f = ar->nodes[id].f, e = ar->ent_n++;
+    ar->ent[2 * e] = id;
+    ar->ent[2 * e + 1] = ar->bucket[f];
+    ar->bucket[f] = e;
+    if (f < ar->fmin)
+        ar->fmin = f;
     return 1;
 }
 
 /* Pop the newest node of the lowest f; skips entries made stale by a
  * later improvement (the node's f no longer matches its bucket). */
-uint32_t hol__nav_pop(hol_nav *nav)
+uint32_t hol__arena_pop(hol__arena *ar)
 {
-    while (nav->fmin < HOL__FMAX) {
-        uint32_t e = nav->bucket[nav->fmin];
+    while (ar->fmin < HOL__FMAX) {
+        uint32_t e = ar->bucket[ar->fmin];
         if (e == HOL__NIL) {
-            nav->fmin++;
+            ar->fmin++;
             continue;
         }
-        uint32_t id = nav->ent[2 * e];
-        nav->bucket[nav->fmin] = nav->ent[2 * e + 1];
-        if (nav->nodes[id].f == nav->fmin)
+        uint32_t id = ar->ent[2 * e];
+        ar->bucket[ar->fmin] = ar->ent[2 * e + 1];
+        if (ar->nodes[id].f == ar->fmin)
             return id;
     }
     return HOL__NIL;
-}
-
-int hol__nav_room_ok(const hol_nav *nav, const hol_room *r)
-{
-    return hol_room_ok(r) && hol_tile_q(r->tile) == nav->tab.q &&
-           hol_room_cols(r) == nav->tab.cols && hol_room_rows(r) == nav->tab.rows;
-}
-
-int hol__nav_tile_ok(const hol_nav *nav, hol_tile t)
-{
-    return hol_tile_q(t) == nav->tab.q;
 }
 
 void hol__nav_emit(hol__walk *w, int dir)
@@ -157,18 +147,17 @@ static int hol__tab_cost(const void *tab, uint32_t idx, int o, int cell)
 
 /* Descend the table from (idx, o, cell) to cost 0; returns the steps taken
  * (the table cost). */
-int hol__nav_descend(const hol_navtab *tab, uint32_t idx, int o, int cell,
-                        hol__walk *w)
+int hol__nav_descend(const hol_navtab *tab, uint32_t idx, int o, int cell, hol__walk *w)
 {
     return hol__descend(tab, UINT32_MAX, hol__tab_cost, tab, idx, o, cell, w);
 }
 
 /* Path of room steps from the search root to node id, appended to w. */
-void hol__nav_emit_path(hol_nav *nav, uint32_t id, hol__walk *w)
+void hol__arena_path(const hol__arena *ar, uint32_t id, hol__walk *w)
 {
     size_t start = w->n;
-    for (uint32_t x = id; nav->nodes[x].parent != HOL__NIL; x = nav->nodes[x].parent)
-        hol__nav_emit(w, nav->nodes[x].dir);
+    for (uint32_t x = id; ar->nodes[x].parent != HOL__NIL; x = ar->nodes[x].parent)
+        hol__nav_emit(w, ar->nodes[x].dir);
     if (w->overflow)
         return;
     for (size_t i = start, j = w->n; i + 1 < j; i++, j--) {

@@ -7,7 +7,8 @@
  *
  * The files, lowest first (each calls only the ones above it, never one
  * below): hol_nav_table.c (tables), hol_nav_arena.c (the arena, walks,
- * descents), hol_nav_legs.c (tour legs), hol_nav.c (the navigator and
+ * descents; hol_nav_arena.h: it knows the tables, not the navigator),
+ * hol_nav_legs.c (tour legs), hol_nav.c (the navigator and
  * hol_nav_find), hol_nav_tour.c (tours), hol_nav_field.c (minimap field
  * and arrows: pure functions of tiles). hol_nav.c sizes the tours' scratch
  * from the struct below, without calling into hol_nav_tour.c.
@@ -23,26 +24,13 @@
 #include <stdint.h>
 
 #include "hol_nav.h"
+#include "hol_nav_arena.h"
 #include "hol_nav_table.h"
 
-#define HOL__FMAX 8192
 #define HOL__MAXST HOL_NAVTAB_MAX_NST /* room states a tile, at most */
 #define HOL__LEG_RADIUS 10 /* tour legs exact between tiles within 7 */
-#define HOL__NIL UINT32_MAX
 #define HOL__SPHERE_MAX 2048 /* tiles at the leg table's trusted radius (780 at 7; 1508 in {4,6}) */
 #define HOL__SPH_CACHE 8 /* spheres kept (hol_nav_legs.c), > HOL_NAV_TOUR_MAX_KEYS */
-#define HOL__INSIDE 0x80u
-#define HOL__MASK 0x3fu
-
-typedef struct hol__node {
-    union {
-        hol_tile t;   /* relative (nav, outside the table) or absolute (tour) */
-        uint32_t idx; /* table index (nav, inside the table) */
-    } u;
-    uint32_t parent, spare;
-    uint16_t g, f;
-    uint8_t o, cell, dir, flags; /* flags: HOL__INSIDE | key mask */
-} hol__node;
 
 struct hol_nav {
     hol_navtab tab; /* and the configuration: tab.q, tab.cols, tab.rows */
@@ -53,16 +41,8 @@ struct hol_nav {
     int far_base16;     /* extrapolation: 16 x mean cost at trust */
     int far_slope16;    /* 16 x mean cost per tile */
     int margin;         /* anytime: explore f up to best + margin */
-    hol__node *nodes;
-    uint32_t cap, count;
-    uint32_t *hash; /* node index + 1; 0 empty */
-    uint32_t hash_mask;
-    uint32_t *bucket; /* HOL__FMAX heads of open-entry lists */
-    uint32_t *ent;    /* open entries: node id, next entry (pairs) */
-    uint32_t ent_cap, ent_n;
-    uint32_t fmin;
-    int hash_dirty;     /* 1: the hash may hold anything (the arena served as
-                         * scratch or as the tour's table): clear it whole */
+    hol__arena ar;      /* the search arena (hol_nav_arena.h); its nodes
+                         * also serve as the tours' and leg build's scratch */
     uint8_t *leg;       /* tour leg table (state to state), built lazily */
     int leg_radius, leg_trust, leg_ready;
     uint8_t *far_e;     /* HOL__SPHERE_MAX x nst: least leg from a tile on the
@@ -171,80 +151,24 @@ void hol__legb_reverse(const hol__legb *L, hol__legb *out_rev);
 void hol__chestb_fill(const hol_nav *nav, hol_tile a, hol_tile chest, const hol__sph *sa,
                       hol__chestb *out_leg, hol__legscr *scr);
 
-/* Output buffer of a walk. */
-typedef struct hol__walk {
-    uint8_t *dirs;
-    size_t cap, n;
-    int overflow;
-} hol__walk;
-
-/* ---- the arena, walks and descents (hol_nav_arena.c) ---- */
-void hol__nav_reset(hol_nav *nav);
-/* Find the node equal to *n, or add it; HOL__NIL when the arena is full. */
-uint32_t hol__nav_intern(hol_nav *nav, const hol__node *n, int *out_new);
-/* Relax the step d from node `parent` to the state *nx at cost g: intern
- * it and, when g improves on its cost, record g, parent and step and
- * return its index. HOL__NIL: nothing improved (g too large, or known at
- * least as cheap), or the arena is full (then *out_full = 1). */
-uint32_t hol__nav_relax(hol_nav *nav, const hol__node *nx, uint32_t parent, int d,
-                        int g, int *out_full);
-/* Queue node id under its f; 0 when the entry pool is full. */
-int hol__nav_push(hol_nav *nav, uint32_t id);
-/* The newest node of the lowest f (stale entries skipped), or HOL__NIL. */
-uint32_t hol__nav_pop(hol_nav *nav);
-/* Cell after a room step, -1 outside the room. */
-static inline int hol__nav_cell_step(const hol_navtab *tab, int cell, int dir)
-{
-    return tab->cellnb[cell][dir & 3];
-}
+/* ---- the navigator's configuration ---- */
 /* A valid room state of the navigator's configuration (tiling, size). */
-int hol__nav_room_ok(const hol_nav *nav, const hol_room *r);
+static inline int hol__nav_room_ok(const hol_nav *nav, const hol_room *r)
+{
+    return hol_room_ok(r) && hol_tile_q(r->tile) == nav->tab.q &&
+           hol_room_cols(r) == nav->tab.cols && hol_room_rows(r) == nav->tab.rows;
+}
 /* Its room state s = ncell * orient + col + cols * row. */
 static inline int hol__nav_state(const hol_nav *nav, const hol_room *r)
 {
     return nav->tab.ncell * r->orient + r->col + nav->tab.cols * r->row;
 }
 /* A tile of the navigator's tiling within the reach. */
-int hol__nav_tile_ok(const hol_nav *nav, hol_tile t);
-void hol__nav_emit(hol__walk *w, int dir);
-/* Descend the tile table from (idx, o, cell) to cost 0; returns the steps. */
-int hol__nav_descend(const hol_navtab *tab, uint32_t idx, int o, int cell, hol__walk *w);
-
-/* The descent both tables share: from (idx, o, cell), step to a neighbour
- * (tile index below n) whose cost(ctx, idx, o, cell) is one less, until 0;
- * returns the steps. Inline so that each caller's cost is inlined too. */
-typedef int (*hol__cost_fn)(const void *ctx, uint32_t idx, int o, int cell);
-static inline int hol__descend(const hol_navtab *tab, uint32_t n, hol__cost_fn cost,
-                               const void *ctx, uint32_t idx, int o, int cell, hol__walk *w)
+static inline int hol__nav_tile_ok(const hol_nav *nav, hol_tile t)
 {
-    int v = cost(ctx, idx, o, cell), steps = 0;
-    while (v > 0 && v < 255) {
-        int moved = 0;
-        for (int d = 0; d < 4 && !moved; d++) {
-            int c2 = hol__nav_cell_step(tab, cell, d);
-            if (c2 < 0)
-                continue;
-            uint32_t e = tab->nb[4 * (size_t)idx + (size_t)((o + d) & 3)];
-            if (e == HOL_NAVTAB_NONE || (e >> 2) >= n)
-                continue;
-            int o2 = (int)((e & 3u) - (uint32_t)d) & 3;
-            if (cost(ctx, e >> 2, o2, c2) == v - 1) {
-                hol__nav_emit(w, d);
-                idx = e >> 2;
-                o = o2;
-                cell = c2;
-                v--;
-                steps++;
-                moved = 1;
-            }
-        }
-        if (!moved)
-            break; /* cannot happen for a BFS table */
-    }
-    return steps;
+    return hol_tile_q(t) == nav->tab.q;
 }
-/* Room steps from the search root to node id, appended to w. */
-void hol__nav_emit_path(hol_nav *nav, uint32_t id, hol__walk *w);
+
 /* The walk of leg L from state s on tile a to s2 on b (its ub steps),
  * appended to w; and of C from s on key a to the chest. */
 void hol__legb_walk(const hol_nav *nav, const hol__legb *L, hol_tile a, int s, hol_tile b,

@@ -20,9 +20,9 @@
 void hol_nav_prepare_tours(hol_nav *nav)
 {
     if (!nav->leg_ready) {
-        hol_navtab_build_legs(&nav->tab, nav->leg_radius, nav->leg, nav->nodes);
+        hol_navtab_build_legs(&nav->tab, nav->leg_radius, nav->leg, nav->ar.nodes);
         nav->leg_ready = 1;
-        nav->hash_dirty = 1; /* the build's scratch was the arena */
+        nav->ar.hash_dirty = 1; /* the build's scratch was the arena */
         hol__far_e_fill(nav);
     }
 }
@@ -298,8 +298,8 @@ static hol_err hol__tour_dp(hol_nav *nav, const hol_room *start, const hol__tour
     int nk = t->nkeys, nst = nav->tab.nst;
     hol_nav_prepare_tours(nav);
     /* the program lives in the arena (nodes are not used by this path) */
-    hol__dp *dp = (hol__dp *)(void *)nav->nodes;
-    nav->hash_dirty = 1; /* the nodes no longer match the hash */
+    hol__dp *dp = (hol__dp *)(void *)nav->ar.nodes;
+    nav->ar.hash_dirty = 1; /* the nodes no longer match the hash */
     int ss = hol__nav_state(nav, start);
     hol__dp_legs(nav, dp, start, t, ss);
     hol__dp_run(nav, dp, t, ss);
@@ -334,7 +334,7 @@ static hol_err hol__tour_dp(hol_nav *nav, const hol_room *start, const hol__tour
  * bounds (the program's, still in the arena). */
 static void hol__tour_suf(const hol_nav *nav, hol__tour *t)
 {
-    const hol__dp *dp = (const hol__dp *)(const void *)nav->nodes;
+    const hol__dp *dp = (const hol__dp *)(const void *)nav->ar.nodes;
     int nk = t->nkeys, nst = nav->tab.nst;
     for (unsigned m = t->full; m >= 1; m--)
         for (int k = 0; k < nk; k++) {
@@ -372,7 +372,7 @@ static void hol__tour_suf(const hol_nav *nav, hol__tour *t)
 static void hol__tour_astar(hol_nav *nav, const hol_room *start, const hol__tour *t, int ub,
                             size_t budget, uint32_t *out_goal, int *out_dry, size_t *out_nodes)
 {
-    hol__nav_reset(nav);
+    hol__arena_reset(&nav->ar);
     hol__node root;
     memset(&root, 0, sizeof root);
     root.u.t = start->tile;
@@ -382,17 +382,17 @@ static void hol__tour_astar(hol_nav *nav, const hol_room *start, const hol__tour
     root.parent = HOL__NIL;
     int h = hol__tour_h(nav, t, &root), isnew, full_arena = 0;
     root.f = (uint16_t)(h < HOL__FMAX ? h : HOL__FMAX - 1);
-    uint32_t id = hol__nav_intern(nav, &root, &isnew);
-    hol__nav_push(nav, id);
+    uint32_t id = hol__arena_intern(&nav->ar, &root, &isnew);
+    hol__arena_push(&nav->ar, id);
     size_t expanded = 0;
     *out_goal = HOL__NIL;
     *out_dry = 0;
     while (expanded < budget && !full_arena) {
-        if ((id = hol__nav_pop(nav)) == HOL__NIL) {
+        if ((id = hol__arena_pop(&nav->ar)) == HOL__NIL) {
             *out_dry = 1;
             break;
         }
-        hol__node cur = nav->nodes[id];
+        hol__node cur = nav->ar.nodes[id];
         if ((int)cur.f >= ub) {
             *out_dry = 1; /* nothing left below the bound */
             break;
@@ -414,17 +414,17 @@ static void hol__tour_astar(hol_nav *nav, const hol_room *start, const hol__tour
             nx.cell = (uint8_t)c2;
             nx.flags = (uint8_t)((cur.flags & HOL__MASK) | hol__keys_on(t, nx.u.t));
             int g = cur.g + 1;
-            uint32_t nid = hol__nav_relax(nav, &nx, id, d, g, &full_arena);
+            uint32_t nid = hol__arena_relax(&nav->ar, &nx, id, d, g, &full_arena);
             if (full_arena)
                 break;
             if (nid == HOL__NIL)
                 continue;
-            hol__node *q = &nav->nodes[nid];
+            hol__node *q = &nav->ar.nodes[nid];
             int f = g + hol__tour_h(nav, t, q);
             q->f = (uint16_t)(f < HOL__FMAX ? f : HOL__FMAX - 1);
             if (f >= ub)
                 continue; /* cannot beat the upper bound */
-            if (!hol__nav_push(nav, nid)) {
+            if (!hol__arena_push(&nav->ar, nid)) {
                 full_arena = 1;
                 break;
             }
@@ -486,8 +486,8 @@ hol_err hol_nav_tour(hol_nav *nav, const hol_room *start, const hol_tile *keys,
         return err;
     hol__tour t;
     hol__tour_init(nav, &t, keys, nkeys, chest);
-    if (budget == 0 || budget > nav->cap)
-        budget = nav->cap;
+    if (budget == 0 || budget > nav->ar.cap)
+        budget = nav->ar.cap;
     hol__walk w = {out_walk, cap, 0, 0};
     hol_nav_result res = {0, 0, 0};
     /* The program's tour: the optimum when every leg lies within the
@@ -513,7 +513,7 @@ hol_err hol_nav_tour(hol_nav *nav, const hol_room *start, const hol_tile *keys,
     hol__tour_astar(nav, start, &t, ub, budget, &goal, &dry, &res.nodes);
     if (goal != HOL__NIL) {
         w.n = 0;
-        hol__nav_emit_path(nav, goal, &w);
+        hol__arena_path(&nav->ar, goal, &w);
         res.exact = 1;
         err = w.overflow ? HOL_ENOMEM : HOL_OK;
     } else if (ub != INT32_MAX) {
