@@ -326,6 +326,23 @@ static hol_err hol__room_steps(hol_app *app, const hol_motion_steps *st, double 
     return HOL_OK;
 }
 
+/* A recentre (HOL_BTN_RECENTRE, or the runtime's HOL_INPUT_RECENTRED) with
+ * a tracked head: the room is placed anew around the head with no room
+ * step (hol_motion_replace); the world and the guidance follow the new
+ * room state. */
+static hol_err hol__replace(hol_app *app, const hol_input *in)
+{
+    double pos[3] = {in->head.pos[0], in->head.pos[1], in->head.pos[2]};
+    double yaw_was = app->mo.yaw_deg;
+    hol__yaw_pitch_from_quat(in->head.quat, &app->mo.yaw_deg, &app->mo.pitch_deg);
+    hol_motion_replace(&app->mo, pos, yaw_was);
+    hol_err err = hol_world_update(app->world, &app->mo.user);
+    int exact;
+    if (!err && !app->done && (app->optimum >= 0 || app->level.mode == HOL_APP_TUTORIAL))
+        (void)hol__plan(app, &app->mo.user, &app->remaining, &exact);
+    return err;
+}
+
 /* The user's motion over a frame of dt seconds that began at level time
  * t0: a tracked head moves to its pose; the pancake axes are integrated in
  * sub-steps of at most HOL__SUBSTEP, so the distance walked and the angle
@@ -423,6 +440,9 @@ hol_err hol_app_step(hol_app *app, const hol_input *in)
     }
     v->paused = !(in->flags & HOL_INPUT_FOCUSED) || (in->flags & HOL_INPUT_DEVICE_LOST) ||
                 app->menu;
+    if (((pressed & HOL_BTN_RECENTRE) || (in->flags & HOL_INPUT_RECENTRED)) &&
+        (in->flags & HOL_INPUT_HEAD_VALID) && (err = hol__replace(app, in)))
+        return err;
     if (v->state == HOL_APP_DONE) {
         if ((pressed & HOL_BTN_CONFIRM) && !v->paused)
             app->ev.next_level = 1;

@@ -25,6 +25,13 @@
  *   snap_yaw_deg (degrees, yaw as in SPEC section 1) at this step, before
  *   the axes apply; the platform chooses the angle (a multiple of its snap
  *   so the room's axes stay aligned), the record carries it for replays.
+ * - Recentre: a record with HOL_BTN_RECENTRE in its edges (the platform
+ *   placed the room from the head for that button) or with
+ *   HOL_INPUT_RECENTRED (the runtime moved its origin) and a tracked head
+ *   re-places the room around the head: the head's jump in room
+ *   coordinates is not walked, no room step is taken or logged, the user
+ *   keeps the tile and (within 45 degrees) the look's direction in the
+ *   world (hol_motion_replace).
  * - Axes are in [-1, 1] after the platform's dead zone; zero is at rest.
  *   The app step turns them into motion (pancake mode); a headset sends
  *   zero axes and a tracked head.
@@ -44,7 +51,11 @@
 #define HOL_INPUT_BOUNDS_SMALL (1u << 5) /* the play area is smaller than the
                                             3 x 3 m room: the HUD warns */
 #define HOL_INPUT_SNAP_YAW     (1u << 6) /* turn the look to snap_yaw_deg */
-#define HOL_INPUT_FLAGS_ALL    0x7fu
+#define HOL_INPUT_RECENTRED    (1u << 7) /* the runtime placed the room anew
+                                            since the previous record (its
+                                            recentre): the head's jump is
+                                            no walk (see below) */
+#define HOL_INPUT_FLAGS_ALL    0xffu
 
 /* buttons (held) */
 #define HOL_BTN_CONFIRM  (1u << 0) /* confirm / next level */

@@ -71,6 +71,16 @@ void hol_motion_init(hol_motion *m, const hol_room *user, const hol_motion_desc 
 hol_err hol_motion_move_to(hol_motion *m, const double pos[3],
                            hol_motion_steps *out_steps);
 
+/* Re-place the room around the head (a recentre: the room was placed anew
+ * in tracking space, so the head's room position jumped without the user
+ * walking): the head goes to pos (x and z clamped as in
+ * hol_motion_move_to) with no room step. The user keeps the tile; the
+ * cell becomes the one under the head; the room's north turns by the
+ * quarter turns nearest to (yaw_was_deg - m->yaw_deg), so the look keeps
+ * its direction in the world within 45 degrees (m->yaw_deg is the look in
+ * the new room, yaw_was_deg the look before). steps is unchanged. */
+void hol_motion_replace(hol_motion *m, const double pos[3], double yaw_was_deg);
+
 /* Pancake: turn and tilt by turn[0] (left +) and turn[1] (up +), then walk
  * move[1] forward and move[0] right for dt seconds (axes in [-1, 1], larger
  * values are clamped). Errors as hol_motion_move_to; HOL_EARG for a dt

@@ -416,6 +416,93 @@ static void test_pause_quit(void **state)
     hol_app_destroy(app);
 }
 
+/* The head tracked at (x, z) looking at yaw (degrees, positive west). */
+static hol_input tracked_pose(double t, double x, double z, double yaw_deg)
+{
+    hol_input in = tracked_at(t, 0, 0);
+    in.head.pos[0] = (float)x;
+    in.head.pos[2] = (float)z;
+    in.head.quat[1] = (float)sin(yaw_deg * M_PI / 360);
+    in.head.quat[3] = (float)cos(yaw_deg * M_PI / 360);
+    return in;
+}
+
+static int step_count(hol_app *app, const hol_input *in)
+{
+    assert_int_equal(hol_app_step(app, in), HOL_OK);
+    return hol_app_get_events(app)->nsteps;
+}
+
+/* A recentre (the button's edge, or the runtime's flag) re-places the room
+ * around the tracked head: its jump takes no room step, the tile stays, the
+ * cell is the head's and the room's north turns with the look (quarter
+ * turns); the same jump without it is walked. While paused too: resuming
+ * walks nothing. */
+static void test_recentre_no_steps(void **state)
+{
+    (void)state;
+    hol_app *app = make_app();
+    hol_app_level L = flag_level("Wrfl");
+    assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    const hol_app_view *v = hol_app_get_view(app);
+    hol_input in = tracked_pose(0, 1.5, 1.5, 0);
+    assert_int_equal(step_count(app, &in), 0);
+    in = tracked_pose(0.1, 0.5, 1.5, 90); /* a walk west, turned west */
+    assert_int_equal(step_count(app, &in), 1);
+    hol_room was = v->user;
+    /* the button: the platform placed the room from the head (centre,
+     * looking north), the core re-places it */
+    in = tracked_pose(0.2, 1.5, 1.5, 0);
+    in.buttons = in.pressed = HOL_BTN_RECENTRE;
+    assert_int_equal(step_count(app, &in), 0);
+    assert_true(hol_tile_eq(v->user.tile, was.tile));
+    assert_int_equal(v->user.col, 1);
+    assert_int_equal(v->user.row, 1);
+    assert_int_equal(v->user.orient, (was.orient + 1) & 3);
+    assert_int_equal(v->hud.steps, 1);
+    /* the guidance follows the new room state (the optimum from it) */
+    uint8_t walk[64];
+    hol_nav_result res;
+    assert_int_equal(hol_nav_find(g_nav, &v->user, L.flag, 0, walk, sizeof walk, &res),
+                     HOL_OK);
+    assert_int_equal(v->hud.remaining, (int)res.len);
+    /* a step west now (looking north) is the walk's: one step */
+    in = tracked_pose(0.3, 0.5, 1.5, 0);
+    assert_int_equal(step_count(app, &in), 1);
+    /* the runtime's recentre (a flag, no button) */
+    was = v->user;
+    in = tracked_pose(0.4, 2.5, 2.5, 0);
+    in.flags |= HOL_INPUT_RECENTRED;
+    assert_int_equal(step_count(app, &in), 0);
+    assert_true(hol_tile_eq(v->user.tile, was.tile) && v->user.orient == was.orient);
+    assert_int_equal(v->user.col, 2);
+    assert_int_equal(v->user.row, 2);
+    /* the same kind of jump without a recentre is walked: two steps */
+    in = tracked_pose(0.5, 1.5, 1.5, 0);
+    assert_int_equal(step_count(app, &in), 2);
+    assert_int_equal(v->hud.steps, 4);
+    /* a recentre while the menu is open: resuming walks nothing */
+    was = v->user;
+    in = tracked_pose(0.6, 1.5, 1.5, 0);
+    in.buttons = in.pressed = HOL_BTN_MENU;
+    assert_int_equal(step_count(app, &in), 0);
+    assert_true(v->paused);
+    in = tracked_pose(0.7, 0.5, 0.5, 0);
+    in.buttons = in.pressed = HOL_BTN_RECENTRE;
+    assert_int_equal(step_count(app, &in), 0);
+    in = tracked_pose(0.8, 0.5, 0.5, 0);
+    in.buttons = in.pressed = HOL_BTN_MENU;
+    assert_int_equal(step_count(app, &in), 0);
+    assert_true(!v->paused && hol_tile_eq(v->user.tile, was.tile));
+    assert_int_equal(v->hud.steps, 4);
+    /* without a tracked head (pancake) the button moves nothing */
+    in = pancake(0.9, 0, 0);
+    in.buttons = in.pressed = HOL_BTN_RECENTRE;
+    assert_int_equal(step_count(app, &in), 0);
+    assert_int_equal(v->user.col, 0);
+    hol_app_destroy(app);
+}
+
 /* A tap between two frames (pressed, no longer held) acts once; a button
  * held over frames acts once, at its press; a record without `pressed`
  * (as recordings before the field) still acts on its held edge. */
@@ -1153,6 +1240,7 @@ int main(void)
         cmocka_unit_test(test_menu_actions),
         cmocka_unit_test(test_debug_text),
         cmocka_unit_test(test_pause_quit),
+        cmocka_unit_test(test_recentre_no_steps),
         cmocka_unit_test(test_tap_between_frames),
         cmocka_unit_test(test_motion_frame_rate),
         cmocka_unit_test(test_turn_back),

@@ -284,6 +284,60 @@ static void test_room_sizes(void **state)
     assert_int_equal(hol_motion_eye_state(&m.user, head, out, &eye), HOL_EROOM);
 }
 
+/* A re-place (recentre) takes no step: the tile stays, the cell is the
+ * head's, the head where it was put (clamped); the room's north turns by
+ * the quarter turns nearest to the change of look, checked against the
+ * world: the step in the direction the user faces reaches the same tile
+ * before and after, in {4,5} 3 x 3 and {4,6} 5 x 4. */
+static void test_replace(void **state)
+{
+    (void)state;
+    hol_room starts[2];
+    starts[0] = state_of("ENSW");
+    assert_int_equal(hol_room_start_in(6, 5, 4, &starts[1]), HOL_OK);
+    static const double looks[][2] = {{0, 0},   {90, 0},   {100, 5},  {180, 0}, {0, 270},
+                                      {350, 10}, {44, 0},  {46, 0},   {271, 1}, {135.5, 0}};
+    for (int si = 0; si < 2; si++) {
+        for (size_t k = 0; k < sizeof looks / sizeof looks[0]; k++) {
+            hol_motion m;
+            hol_motion_init(&m, &starts[si], NULL);
+            m.yaw_deg = looks[k][1];
+            hol_room was = m.user;
+            double pos[3] = {1.5, 1.7, 2.5};
+            hol_motion_replace(&m, pos, looks[k][0]);
+            assert_true(hol_tile_eq(m.user.tile, was.tile));
+            assert_int_equal(m.user.col, 1);
+            assert_int_equal(m.user.row, 2);
+            assert_int_equal(m.steps, 0);
+            assert_true(m.head[0] == 1.5 && m.head[1] == 1.7 && m.head[2] == 2.5);
+            /* the world direction faced: the room direction nearest the
+             * look (N 0, W 1, S 2, E 3, as yaw turns west), stepped */
+            int before = (int)floor(looks[k][0] / 90 + 0.5) & 3;
+            int after = (int)floor(looks[k][1] / 90 + 0.5) & 3;
+            double turn = (looks[k][0] - looks[k][1]) / 90;
+            if (fabs(turn - floor(turn) - 0.5) < 0.1 ||
+                fabs(looks[k][0] / 90 - floor(looks[k][0] / 90) - 0.5) < 0.1)
+                continue; /* near 45 degrees: no nearest direction to compare */
+            hol_room a = was, b = m.user;
+            a.col = b.col = 1;
+            a.row = b.row = 1;
+            assert_int_equal(hol_room_step(&a, before), HOL_OK);
+            assert_int_equal(hol_room_step(&b, after), HOL_OK);
+            assert_true(hol_tile_eq(a.tile, b.tile));
+        }
+    }
+    /* clamped like a move, off the grid lines */
+    hol_motion m;
+    hol_room r = hol_room_start();
+    hol_motion_init(&m, &r, NULL);
+    double far[3] = {-4, 1.6, 3.0};
+    hol_motion_replace(&m, far, 0);
+    assert_int_equal(m.user.col, 0);
+    assert_int_equal(m.user.row, 2);
+    assert_true(fabs(m.head[0] - 0.15) < 1e-9 && fabs(m.head[2] - 2.85) < 1e-9);
+    assert_int_equal(m.user.orient, r.orient);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -293,6 +347,7 @@ int main(void)
         cmocka_unit_test(test_pancake),
         cmocka_unit_test(test_eye_state),
         cmocka_unit_test(test_room_sizes),
+        cmocka_unit_test(test_replace),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
