@@ -20,7 +20,9 @@
  *   single spaces, each at most once, in any order. Numbers are finite
  *   decimals (strtod syntax without hex, inf or nan).
  * - Version 2 added p, y and d (and the HOL_BTN_DEBUG and
- *   HOL_INPUT_SNAP_YAW bits); every version 1 line parses as it did.
+ *   HOL_INPUT_SNAP_YAW bits); every version 1 line parses as it did. The
+ *   HOL_INPUT_RECENTRED bit (80) joined version 2 later: builds before it
+ *   refuse a line that has it.
  * - hol_input_format writes the canonical line: fields in the order above,
  *   fields whose bytes are all zero left out (a -0 is written), floats with 9
  *   significant digits and the time with 17, so parsing the line gives back
