@@ -16,14 +16,104 @@
 /* Seen tiles the app's world remembers after eviction: 6 MB, hours of play. */
 #define HOL__APP_KEEP (1u << 18)
 
-static hol_world_desc hol__world_desc(const hol_app *app, uint64_t seed)
+static hol_world_desc hol__world_desc(const hol_app *app, uint64_t seed, int q)
 {
     hol_world_desc wd;
     memset(&wd, 0, sizeof wd);
     wd.seed = seed;
     wd.capacity = app->d.world_capacity;
     wd.keep_capacity = HOL__APP_KEEP;
+    wd.tiling_q = q;
     return wd;
+}
+
+/* The level's geometry with the defaults filled in. */
+static void hol__geometry(const hol_app_level *L, int *q, int *cols, int *rows, double *cell)
+{
+    *q = L->tiling_q ? L->tiling_q : HOL_TILING_DEFAULT_Q;
+    *cols = L->room_cols ? L->room_cols : HOL_ROOM_SIZE;
+    *rows = L->room_rows ? L->room_rows : HOL_ROOM_SIZE;
+    *cell = L->cell_m > 0 ? L->cell_m : 1.0;
+}
+
+/* The navigator slot of (q, cols, rows), or -1. */
+static int hol__nav_slot(const hol_app *app, int q, int cols, int rows)
+{
+    for (int i = 0; i < HOL_APP_MAX_NAVS; i++) {
+        const hol__app_nav *n = &app->navs[i];
+        if (n->nav && n->q == q && n->cols == cols && n->rows == rows)
+            return i;
+    }
+    return -1;
+}
+
+static hol_err hol__nav_make(hol_app *app, int q, int cols, int rows, int *out_slot)
+{
+    int k = hol__nav_slot(app, q, cols, rows);
+    if (k >= 0) {
+        *out_slot = k;
+        return HOL_OK;
+    }
+    /* a free slot, else the app's own least recently started one that
+     * the level in play does not use */
+    for (int i = 0; i < HOL_APP_MAX_NAVS; i++) {
+        const hol__app_nav *n = &app->navs[i];
+        if (!n->nav) {
+            k = i;
+            break;
+        }
+        if (n->own && n->nav != app->nav && (k < 0 || n->used < app->navs[k].used))
+            k = i;
+    }
+    if (k < 0)
+        return HOL_ENOMEM;
+    hol_nav_desc nd;
+    memset(&nd, 0, sizeof nd);
+    nd.alloc_fn = app->d.alloc.alloc;
+    nd.free_fn = app->d.alloc.free;
+    nd.user = app->d.alloc.user;
+    nd.tiling_q = q;
+    nd.room_cols = cols;
+    nd.room_rows = rows;
+    hol_nav *nav;
+    hol_err err = hol_nav_create(&nd, &nav);
+    if (err)
+        return err;
+    hol_nav_prepare_tours(nav); /* levels never pay for the leg table */
+    if (app->navs[k].nav)
+        hol_nav_destroy(app->navs[k].nav);
+    app->navs[k] = (hol__app_nav){nav, 1, q, cols, rows, app->starts};
+    *out_slot = k;
+    return HOL_OK;
+}
+
+hol_err hol_app_prepare(hol_app *app, int q, int cols, int rows)
+{
+    hol_room r;
+    if (!app || hol_room_start_in(q, cols, rows, &r))
+        return HOL_EARG;
+    int k;
+    return hol__nav_make(app, q ? q : HOL_TILING_DEFAULT_Q, cols ? cols : HOL_ROOM_SIZE,
+                         rows ? rows : HOL_ROOM_SIZE, &k);
+}
+
+/* The world store holds a world of any tiling (the most curved is the
+ * largest). */
+static size_t hol__world_size(const hol_app_desc *d)
+{
+    size_t most = 0;
+    for (int q = HOL_TILING_MIN_Q; q <= HOL_TILING_MAX_Q; q++) {
+        hol_world_desc wd;
+        memset(&wd, 0, sizeof wd);
+        wd.capacity = d->world_capacity;
+        wd.keep_capacity = HOL__APP_KEEP;
+        wd.tiling_q = q;
+        size_t n = hol_world_mem_size(&wd);
+        if (!n)
+            return 0;
+        most = n > most ? n : most;
+    }
+    return most;
 }
 
 hol_err hol_app_create(const hol_app_desc *desc, hol_app **out_app)
@@ -41,11 +131,10 @@ hol_err hol_app_create(const hol_app_desc *desc, hol_app **out_app)
         d.stray_steps = 3;
     if (!(d.ipd > 0))
         d.ipd = 0.064;
-    hol_world_desc wd;
-    memset(&wd, 0, sizeof wd);
+    hol_world_desc wd = {0};
     wd.capacity = d.world_capacity;
     wd.keep_capacity = HOL__APP_KEEP;
-    size_t wsize = hol_world_mem_size(&wd);
+    size_t wsize = hol__world_size(&d);
     if (!wsize)
         return HOL_EARG;
     size_t head = (sizeof(hol_app) + 63) & ~(size_t)63;
@@ -59,25 +148,23 @@ hol_err hol_app_create(const hol_app_desc *desc, hol_app **out_app)
     app->world_mem = (void *)w;
     app->world_size = wsize;
     hol_err err = hol_world_init(app->world_mem, wsize, &wd, &app->world);
-    if (!err && !d.nav) {
-        hol_nav_desc nd;
-        memset(&nd, 0, sizeof nd);
-        nd.alloc_fn = d.alloc.alloc;
-        nd.free_fn = d.alloc.free;
-        nd.user = d.alloc.user;
-        err = hol_nav_create(&nd, &app->nav);
-        app->own_nav = !err;
-    } else {
-        app->nav = d.nav;
+    int slot = 0;
+    if (!err && d.nav) {
+        hol__app_nav *n = &app->navs[0];
+        n->nav = d.nav;
+        hol_nav_geometry(d.nav, &n->q, &n->cols, &n->rows);
+        hol_nav_prepare_tours(d.nav);
+    } else if (!err) {
+        err = hol__nav_make(app, HOL_TILING_DEFAULT_Q, HOL_ROOM_SIZE, HOL_ROOM_SIZE, &slot);
     }
-    if (!err)
-        hol_nav_prepare_tours(app->nav); /* levels never pay for the leg table */
     if (err) {
         hol_alloc_release(&d.alloc, mem);
         return err;
     }
+    app->nav = app->navs[slot].nav;
     app->start_room = hol_room_start();
     hol_motion_init(&app->mo, &app->start_room, &d.motion);
+    app->view.cell_m = app->mo.d.cell_m;
     app->optimum = app->remaining = -1;
     *out_app = app;
     return HOL_OK;
@@ -87,8 +174,9 @@ void hol_app_destroy(hol_app *app)
 {
     if (!app)
         return;
-    if (app->own_nav)
-        hol_nav_destroy(app->nav);
+    for (int i = 0; i < HOL_APP_MAX_NAVS; i++)
+        if (app->navs[i].own)
+            hol_nav_destroy(app->navs[i].nav);
     hol_app_desc d = app->d;
     hol_alloc_release(&d.alloc, app);
 }
@@ -217,13 +305,18 @@ static hol_err hol__begin(hol_app *app)
         if (first[i])
             places[np++] = (hol_world_place){obj[i], HOL_OBJ_NONE};
     }
-    hol_world_desc wd = hol__world_desc(app, L->seed);
+    int q, cols, rows;
+    double cell;
+    hol__geometry(L, &q, &cols, &rows, &cell);
+    hol_world_desc wd = hol__world_desc(app, L->seed, q);
     wd.places = places;
     wd.nplaces = (uint32_t)np;
     hol_err err = hol_world_init(app->world_mem, app->world_size, &wd, &app->world);
     if (err)
         return err;
-    hol_room r = hol_room_start();
+    hol_room r;
+    if ((err = hol_room_start_in(q, cols, rows, &r)))
+        return err;
     if ((err = hol_world_update(app->world, &r)))
         return err;
     for (int i = 0; i < L->nstart; i++) {
@@ -266,7 +359,10 @@ static hol_err hol__begin(hol_app *app)
         app->stage_optimum = app->optimum; /* the first lesson's */
         app->optimum = -1; /* the level is not scored */
     }
-    hol_motion_init(&app->mo, &r, &app->d.motion);
+    hol_motion_desc md = app->d.motion;
+    md.cell_m = cell;
+    hol_motion_init(&app->mo, &r, &md);
+    app->view.cell_m = app->mo.d.cell_m;
     app->pending_start = 1;
     app->view.state = HOL_APP_PLAYING;
     app->view.paused = 0;
@@ -281,10 +377,25 @@ hol_err hol_app_start_level(hol_app *app, const hol_app_level *level)
         level->nplaces > HOL_APP_MAX_PLACES || level->minimap < 0 ||
         level->minimap > HOL_MINIMAP_OFF)
         return HOL_EARG;
+    int q, cols, rows, slot;
+    double cell;
+    hol_room r;
+    hol__geometry(level, &q, &cols, &rows, &cell);
+    if (hol_room_start_in(q, cols, rows, &r) || !(cell >= HOL_MOTION_MIN_CELL) ||
+        !(cell <= HOL_MOTION_MAX_CELL))
+        return HOL_EARG;
+    app->have_level = 0;
+    app->nav = NULL; /* the cache may replace the previous level's */
+    app->starts++;
+    hol_err err = hol__nav_make(app, q, cols, rows, &slot);
+    if (err)
+        return err;
+    app->nav = app->navs[slot].nav;
+    app->navs[slot].used = app->starts;
     app->level = *level;
     app->have_level = 1;
     app->view.map.place = level->minimap;
-    hol_err err = hol__begin(app);
+    err = hol__begin(app);
     if (err)
         app->have_level = 0;
     return err;

@@ -22,8 +22,22 @@
  * - Time comes only from input.time_s (never decreasing); the app has no
  *   clock. The level clock runs while the level is playing and not paused.
  * - Memory: hol_app_create makes every allocation through the desc's hooks
- *   (the app with its world store, and the navigator unless desc.nav is
- *   given); starting levels and stepping allocate nothing.
+ *   (the app with its world store sized for every tiling, and the {4,5}
+ *   3 x 3 navigator unless desc.nav is given); stepping allocates nothing.
+ * - Geometry (SPEC 7): each level is played in its own tiling, room and
+ *   cell size (hol_app_level.tiling_q, room_cols/rows, cell_m): it starts
+ *   in cell (C/2, R/2) of tile O, the room's bounds are C*M by R*M metres,
+ *   the eye stays at the motion's eye height (1.6 m) whatever M is, and the
+ *   view says the cell size (view.cell_m) and the room (view.user). Each
+ *   (tiling, room size) needs its navigator: hol_app_prepare makes it
+ *   (through the hooks; 0.01 to 1 s and 15 to 60 MB, docs/performance.md),
+ *   and hol_app_start_level makes it on the first level that needs it
+ *   when nobody prepared it. The app keeps at most HOL_APP_MAX_NAVS; a
+ *   new one beyond that replaces the one least recently started (never
+ *   desc.nav). A restart (in the step) reuses the level's navigator, so
+ *   only hol_app_prepare and hol_app_start_level ever allocate after
+ *   create. desc.nav serves the geometry it was made for
+ *   (hol_nav_geometry).
  * - Deterministic: the same desc, levels and input records give the same
  *   views and events, bit for bit (replay relies on it).
  * - Not thread safe; core rules apply (no OS, no GL, no globals).
@@ -72,6 +86,9 @@ enum hol_app_minimap_place { HOL_MINIMAP_HUD = 0, HOL_MINIMAP_HAND = 1, HOL_MINI
 /* The minimap shows the tiles within this many steps of the user's tile;
  * an objective farther away gets a rim arrow (render/hol_hud.h draws it). */
 #define HOL_APP_MINIMAP_RADIUS 4
+/* Navigators the app keeps at once, one per (tiling, room size) that its
+ * levels use (hol_app_prepare). */
+#define HOL_APP_MAX_NAVS 4
 /* A level's designer placements; the world takes these and a clearing on
  * each objective's tile (HOL_WORLD_MAX_PLACES holds both). */
 #define HOL_APP_MAX_PLACES 32
@@ -112,6 +129,12 @@ typedef struct hol_app_level {
                                  (hol_world_desc.places), never on an
                                  objective's tile */
     int nplaces;
+    /* The geometry (SPEC 7): tiles, the start walk and the objectives are
+     * of this tiling and room. 0 (the level file has no such line) takes
+     * the default: {4,5}, 3 x 3 cells of 1 m. */
+    int tiling_q;             /* the tiling {4,Q}, 4..8; 0: 5 */
+    int room_cols, room_rows; /* cells, 3..5 each; 0: 3 */
+    double cell_m;            /* a cell's side in metres, 0.5..1.5; 0: 1.0 */
 } hol_app_level;
 
 typedef struct hol_app_desc {
@@ -194,7 +217,13 @@ typedef struct hol_app_object {
 typedef struct hol_app_view {
     hol_app_state state;
     int paused;
-    hol_room user;                    /* the head's state */
+    hol_room user;                    /* the head's state (its tile word
+                                         carries the tiling, the state the
+                                         room's C x R) */
+    double cell_m;                    /* the side of a cell in metres (SPEC
+                                         7: cell (c,r) spans x in [c*M,
+                                         (c+1)*M]); always filled, 1.0 by
+                                         default */
     double head[3];                   /* room coordinates */
     double yaw_deg, pitch_deg;        /* look direction */
     double head_quat[4];              /* x, y, z, w (from a tracked head, or
@@ -258,11 +287,19 @@ void hol_app_destroy(hol_app *app); /* NULL ok */
  * tile, so each objective is reserved on a free tile (no rock, log, creek
  * or pond under it) wherever it lies; the start walk applied, the optimum
  * computed. Errors: HOL_EARG (bad level: no keys, an objective on the start
- * tile, a placement on an objective's tile, a start walk leaving the room),
+ * tile, a placement on an objective's tile, a start walk leaving the room,
+ * a bad geometry), HOL_EUNREACH (no walk inside the level's room reaches
+ * an objective: the flat {4,4} off the room's tiles, or {4,8}),
  * HOL_EBUDGET (the optimum could not be proved exact: the level
- * is refused), HOL_ENOMEM (the world store), HOL_ERANGE. On error no level
+ * is refused), HOL_ENOMEM (the world store, a navigator), HOL_ERANGE. On error no level
  * is playing. */
 hol_err hol_app_start_level(hol_app *app, const hol_app_level *level);
+
+/* Make (or find) the navigator of the tiling {4,q} and a room of cols x
+ * rows cells (0: 5, 3, 3), so that no level start pays for it: platforms
+ * call it at init for the geometries of the session's levels. Errors:
+ * HOL_EARG (a bad geometry), HOL_ENOMEM. */
+hol_err hol_app_prepare(hol_app *app, int q, int cols, int rows);
 
 /* One frame. Errors: HOL_EARG (an invalid record or time going back; the
  * app is unchanged), HOL_ENOMEM (the world store is full). Without a level

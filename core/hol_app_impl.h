@@ -17,10 +17,20 @@
 /* Tutorial feedback stays on the HUD this long (level clock, seconds). */
 #define HOL__FEEDBACK_S 6.0
 
+/* Navigators the app keeps, one per (tiling, room size): a bounded cache
+ * (hol_app.h, hol_app_prepare). */
+typedef struct hol__app_nav {
+    hol_nav *nav;        /* NULL: a free slot */
+    int own;             /* created by the app (else desc.nav) */
+    int q, cols, rows;
+    uint64_t used;       /* the last level start that took it */
+} hol__app_nav;
+
 struct hol_app {
     hol_app_desc d;
-    hol_nav *nav;
-    int own_nav;
+    hol_nav *nav;        /* the level's navigator (one of navs) */
+    hol__app_nav navs[HOL_APP_MAX_NAVS];
+    uint64_t starts;     /* level starts so far (the cache's clock) */
     void *world_mem;
     size_t world_size;
     hol_world *world;

@@ -40,6 +40,7 @@ static void hol__fill_eyes(hol_app *app, const hol_input *in)
 {
     hol_app_view *v = &app->view;
     v->user = app->mo.user;
+    v->cell_m = app->mo.d.cell_m;
     memcpy(v->head, app->mo.head, sizeof v->head);
     v->yaw_deg = app->mo.yaw_deg;
     v->pitch_deg = app->mo.pitch_deg;
@@ -59,7 +60,8 @@ static void hol__fill_eyes(hol_app *app, const hol_input *in)
         v->eye[e][0] = v->head[0] + s * rx;
         v->eye[e][1] = v->head[1];
         v->eye[e][2] = v->head[2] + s * rz;
-        if (hol_motion_eye_state(&v->user, v->head, v->eye[e], &v->eye_user[e]))
+        if (hol_motion_eye_state_m(&v->user, app->mo.d.cell_m, v->head, v->eye[e],
+                                   &v->eye_user[e]))
             v->eye_user[e] = v->user;
     }
 }
@@ -153,9 +155,11 @@ static void hol__fill_status(hol_app *app, const hol_input *in, hol_app_hud *h)
         hol__prompt(h, dev, ask, 1);
     }
     /* safety: a tracked head beyond the hedges; a play area too small */
+    double w = hol_room_cols(&v->user) * app->mo.d.cell_m,
+           d = hol_room_rows(&v->user) * app->mo.d.cell_m;
     if (in && (in->flags & HOL_INPUT_HEAD_VALID) &&
-        (in->head.pos[0] < 0 || in->head.pos[0] > HOL_ROOM_SIZE || in->head.pos[2] < 0 ||
-         in->head.pos[2] > HOL_ROOM_SIZE))
+        (in->head.pos[0] < 0 || in->head.pos[0] > w || in->head.pos[2] < 0 ||
+         in->head.pos[2] > d))
         snprintf(h->status, sizeof h->status, "Outside the room: step back in");
     if (in && (in->flags & HOL_INPUT_BOUNDS_SMALL) && !h->hint[0])
         snprintf(h->hint, sizeof h->hint, "Play area under 3 x 3 m: mind the edges");

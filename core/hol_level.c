@@ -22,6 +22,8 @@ typedef struct hol__lp {
      * objective and placement was given */
     int flag_lo, flag_hi, keys_n, keys_lo, keys_hi, chest_lo, chest_hi;
     long flag_line, keys_line, chest_line, place_line[HOL_APP_MAX_PLACES];
+    long tiling_line, room_line;
+    int geo_only; /* the first pass: only the geometry lines */
     hol_level_err *err;
 } hol__lp;
 
@@ -153,12 +155,18 @@ static hol_err hol__key_start(hol__lp *p, char **f, int nf)
     return HOL_OK;
 }
 
+/* The level's tiling Q (the geometry lines are read first). */
+static int hol__q(const hol__lp *p)
+{
+    return p->L.tiling_q ? p->L.tiling_q : HOL_TILING_DEFAULT_Q;
+}
+
 /* flag ADDRESS, chest ADDRESS */
 static hol_err hol__key_tile(hol__lp *p, char **f, int nf)
 {
     hol_tile t;
     (void)nf;
-    if (hol_tile_parse(f[1], -1, &t))
+    if (hol_tile_parse_q(hol__q(p), f[1], -1, &t))
         return hol__lfail(p, HOL_EPARSE, p->line, "'%.30s' is not a canonical address", f[1]);
     if (f[0][0] == 'f') {
         p->L.flag = t;
@@ -173,7 +181,7 @@ static hol_err hol__key_tile(hol__lp *p, char **f, int nf)
 static hol_err hol__key_keys(hol__lp *p, char **f, int nf)
 {
     for (int i = 1; i < nf; i++)
-        if (hol_tile_parse(f[i], -1, &p->L.keys[i - 1]))
+        if (hol_tile_parse_q(hol__q(p), f[i], -1, &p->L.keys[i - 1]))
             return hol__lfail(p, HOL_EPARSE, p->line, "key '%.30s' is not a canonical address",
                              f[i]);
     p->L.nkeys = nf - 1;
@@ -247,7 +255,7 @@ static hol_err hol__key_place(hol__lp *p, char **f, int nf)
                          "place '%.20s' is not clearing, grass, flowers, rock, mushroom or pond",
                          f[1]);
     hol_tile t;
-    if (hol_tile_parse(f[2], -1, &t))
+    if (hol_tile_parse_q(hol__q(p), f[2], -1, &t))
         return hol__lfail(p, HOL_EPARSE, p->line, "'%.30s' is not a canonical address", f[2]);
     hol_app_level *L = &p->L;
     for (int k = 0; k < L->nplaces; k++)
@@ -290,6 +298,48 @@ static hol_err hol__key_minimap(hol__lp *p, char **f, int nf)
     return HOL_OK;
 }
 
+/* tiling 4 Q (SPEC 7) */
+static hol_err hol__key_tiling(hol__lp *p, char **f, int nf)
+{
+    (void)nf;
+    uint64_t q = hol__count(f[2]);
+    if (strcmp(f[1], "4") || q < HOL_TILING_MIN_Q || q > HOL_TILING_MAX_Q)
+        return hol__lfail(p, HOL_ERANGE, p->line,
+                          "tiling needs 4 Q with Q from 4 to 8 (the tiling {4,Q}), not '%.10s %.10s'",
+                          f[1], f[2]);
+    p->L.tiling_q = (int)q;
+    p->tiling_line = p->line;
+    return HOL_OK;
+}
+
+/* room C R (SPEC 7) */
+static hol_err hol__key_room(hol__lp *p, char **f, int nf)
+{
+    (void)nf;
+    uint64_t c = hol__count(f[1]), r = hol__count(f[2]);
+    if (c < HOL_ROOM_MIN_SIDE || c > HOL_ROOM_MAX_SIDE || r < HOL_ROOM_MIN_SIDE ||
+        r > HOL_ROOM_MAX_SIDE)
+        return hol__lfail(p, HOL_ERANGE, p->line,
+                          "room needs C R with C and R from 3 to 5 (cells), not '%.10s %.10s'",
+                          f[1], f[2]);
+    p->L.room_cols = (int)c;
+    p->L.room_rows = (int)r;
+    p->room_line = p->line;
+    return HOL_OK;
+}
+
+/* cell M */
+static hol_err hol__key_cell(hol__lp *p, char **f, int nf)
+{
+    (void)nf;
+    hol_err e = hol_level_parse_cell(f[1], strlen(f[1]), &p->L.cell_m);
+    if (e)
+        return hol__lfail(p, e, p->line,
+                          "cell needs metres from 0.5 to 1.5 (at most 3 decimals), not '%.20s'",
+                          f[1]);
+    return HOL_OK;
+}
+
 /* Every key, with its least and most fields (the key included). */
 static const struct {
     const char *key;
@@ -310,7 +360,16 @@ static const struct {
     {"place", 3, 3, hol__key_place},
     {"cues", 2, HOL__FIELDS + 1, hol__key_cues},
     {"minimap", 2, 2, hol__key_minimap},
+    {"tiling", 3, 3, hol__key_tiling},
+    {"room", 3, 3, hol__key_room},
+    {"cell", 2, 2, hol__key_cell},
 };
+
+/* The geometry keys, read in a first pass (addresses need the tiling). */
+static int hol__geo_key(const char *key)
+{
+    return !strcmp(key, "tiling") || !strcmp(key, "room") || !strcmp(key, "cell");
+}
 
 /* ---- lines -------------------------------------------------------------------- */
 
@@ -357,6 +416,8 @@ static hol_err hol__line(hol__lp *p, const char *s, size_t n)
         return HOL_OK;
     if (nf < 2)
         return hol__lfail(p, HOL_EPARSE, p->line, "'%.20s' needs a value", f[0]);
+    if (p->geo_only && !hol__geo_key(f[0]))
+        return HOL_OK;
     for (size_t k = 0; k < sizeof hol__keys / sizeof hol__keys[0]; k++)
         if (!strcmp(f[0], hol__keys[k].key) && nf >= hol__keys[k].min &&
             nf <= hol__keys[k].max)
@@ -439,15 +500,51 @@ static int hol__taken(const hol_app_level *L, hol_tile start, hol_tile t)
     return 0;
 }
 
-/* A free tile at a distance in [lo, hi] from start; 1 if none was found in
- * 256 draws. */
-static int hol__draw(const hol_app_level *L, hol_tile start, int lo, int hi, uint64_t *rng,
-                     hol_tile *out)
+/* The tiles a walk inside the room reaches, in the flat {4,4} (where a
+ * room reaches exactly its own C x R tiles); n 0 in the other tilings,
+ * whose reach the navigator decides (HOL_EUNREACH at the app's start). */
+typedef struct hol__reach {
+    int n;
+    hol_tile tiles[HOL_ROOM_MAX_CELLS];
+} hol__reach;
+
+static void hol__reach_init(const hol_app_level *L, hol__reach *rc)
+{
+    rc->n = 0;
+    hol_room s;
+    if (L->tiling_q != 4 || hol_room_start_in(4, L->room_cols, L->room_rows, &s))
+        return;
+    int cols = hol_room_cols(&s), rows = hol_room_rows(&s);
+    for (int c = 0; c < cols; c++)
+        for (int r = 0; r < rows; r++) {
+            hol_room u = s;
+            while (u.col != c)
+                (void)hol_room_step(&u, u.col < c ? HOL_DIR_E : HOL_DIR_W);
+            while (u.row != r)
+                (void)hol_room_step(&u, u.row < r ? HOL_DIR_S : HOL_DIR_N);
+            rc->tiles[rc->n++] = u.tile;
+        }
+}
+
+static int hol__reached(const hol__reach *rc, hol_tile t)
+{
+    if (!rc->n)
+        return 1;
+    for (int i = 0; i < rc->n; i++)
+        if (hol_tile_eq(rc->tiles[i], t))
+            return 1;
+    return 0;
+}
+
+/* A free tile at a distance in [lo, hi] from start that a walk reaches; 1
+ * if none was found in 256 draws. */
+static int hol__draw(const hol_app_level *L, const hol__reach *rc, hol_tile start, int lo,
+                     int hi, uint64_t *rng, hol_tile *out)
 {
     for (int tries = 0; tries < 256; tries++) {
         int d = lo + (int)(hol__mix(rng) % (uint64_t)(hi - lo + 1));
         hol_tile t = hol__tile_at(start, d, rng);
-        if (hol_tile_dist(start, t) == d && !hol__taken(L, start, t)) {
+        if (hol_tile_dist(start, t) == d && !hol__taken(L, start, t) && hol__reached(rc, t)) {
             *out = t;
             return 0;
         }
@@ -456,28 +553,57 @@ static int hol__draw(const hol_app_level *L, hol_tile start, int lo, int hi, uin
 }
 
 /* Objectives by distance from the start tile, drawn from the seed. */
-static hol_err hol__draw_objectives(hol__lp *p, hol_tile start)
+static hol_err hol__draw_objectives(hol__lp *p, const hol__reach *rc, hol_tile start)
 {
     hol_app_level *L = &p->L;
     uint64_t rng = L->seed ^ 0x6c6576656cull;
+    const char *none = rc->n ? "that a walk inside the room reaches" : "";
     if (L->mode == HOL_APP_FLAG && p->flag_lo &&
-        hol__draw(L, start, p->flag_lo, p->flag_hi, &rng, &L->flag))
-        return hol__lfail(p, HOL_EARG, p->flag_line, "no free tile for the flag at that distance");
+        hol__draw(L, rc, start, p->flag_lo, p->flag_hi, &rng, &L->flag))
+        return hol__lfail(p, HOL_EARG, p->flag_line, "no free tile for the flag at that distance%s%s",
+                          *none ? " " : "", none);
     if (L->mode == HOL_APP_KEYS && p->chest_lo &&
-        hol__draw(L, start, p->chest_lo, p->chest_hi, &rng, &L->chest))
+        hol__draw(L, rc, start, p->chest_lo, p->chest_hi, &rng, &L->chest))
         return hol__lfail(p, HOL_EARG, p->chest_line,
-                         "no free tile for the chest at that distance");
+                          "no free tile for the chest at that distance%s%s", *none ? " " : "", none);
     if (L->mode == HOL_APP_KEYS && p->keys_n) {
         L->nkeys = 0;
         for (int k = 0; k < p->keys_n; k++) {
             hol_tile t;
-            if (hol__draw(L, start, p->keys_lo, p->keys_hi, &rng, &t))
+            if (hol__draw(L, rc, start, p->keys_lo, p->keys_hi, &rng, &t))
                 return hol__lfail(p, HOL_EARG, p->keys_line,
-                                 "no free tile for key %d at that distance", k + 1);
+                                  "no free tile for key %d at that distance%s%s", k + 1,
+                                  *none ? " " : "", none);
             L->keys[L->nkeys++] = t;
         }
     }
     return HOL_OK;
+}
+
+/* Objectives given by address that no walk inside the room reaches (the
+ * flat {4,4}: off the room's own tiles) are bad input naming their line. */
+static hol_err hol__check_reach(hol__lp *p, const hol__reach *rc)
+{
+    const hol_app_level *L = &p->L;
+    hol_tile t;
+    long at = 0;
+    const char *what = NULL;
+    if (L->mode == HOL_APP_FLAG && !p->flag_lo && !hol__reached(rc, L->flag))
+        t = L->flag, at = p->flag_line, what = "the flag";
+    for (int k = 0; !what && L->mode == HOL_APP_KEYS && !p->keys_n && k < L->nkeys; k++)
+        if (!hol__reached(rc, L->keys[k]))
+            t = L->keys[k], at = p->keys_line, what = "a key";
+    if (!what && L->mode == HOL_APP_KEYS && !p->chest_lo && !hol__reached(rc, L->chest))
+        t = L->chest, at = p->chest_line, what = "the chest";
+    if (!what)
+        return HOL_OK;
+    char a[HOL_TILE_ADDR_MAX];
+    hol_tile_print(t, a);
+    return hol__lfail(p, HOL_EARG, at,
+                      "no walk inside the room reaches %s's tile %.30s (in the flat {4,4} a "
+                      "%dx%d room reaches only its own %d tiles)",
+                      what, a, L->room_cols ? L->room_cols : 3, L->room_rows ? L->room_rows : 3,
+                      rc->n);
 }
 
 static hol_err hol__finish(hol__lp *p)
@@ -494,12 +620,23 @@ static hol_err hol__finish(hol__lp *p)
     if (missing)
         return hol__lfail(p, HOL_EARG, p->have_mode, "mode %s needs a '%s' or '%s-distance' line",
                           p->L.mode == HOL_APP_FLAG ? "flag" : "keys", missing, missing);
-    hol_room r0 = hol_room_start();
-    for (int i = 0; i < p->L.nstart; i++)
-        if (hol_room_step(&r0, p->L.start[i]))
+    const hol_app_level *L = &p->L;
+    int q = hol__q(p);
+    if (L->mode == HOL_APP_TUTORIAL && (q == 4 || q == 8))
+        return hol__lfail(p, HOL_EARG, p->tiling_line ? p->tiling_line : p->have_mode,
+                          "the tutorial needs the tiling {4,5}, {4,6} or {4,7}: its lessons have "
+                          "no walk inside the room in {4,%d}", q);
+    hol_room r0;
+    (void)hol_room_start_in(q, L->room_cols, L->room_rows, &r0);
+    for (int i = 0; i < L->nstart; i++)
+        if (hol_room_step(&r0, L->start[i]))
             return hol__lfail(p, HOL_EARG, p->line, "the start walk leaves the room");
+    hol__reach rc;
+    hol__reach_init(L, &rc);
     hol_err e = hol__check_places(p);
-    return e ? e : hol__draw_objectives(p, r0.tile);
+    if (!e)
+        e = hol__check_reach(p, &rc);
+    return e ? e : hol__draw_objectives(p, &rc, r0.tile);
 }
 
 /* ---- the API ------------------------------------------------------------------ */
@@ -516,15 +653,23 @@ hol_err hol_level_parse(const char *text, size_t len, hol_app_level *out, hol_le
     if (kept > HOL_LEVEL_TEXT_MAX)
         return hol__lfail(&p, HOL_ENOMEM, 0, "longer than %d bytes (its last line end counted)",
                           HOL_LEVEL_TEXT_MAX);
-    const char *s = text, *end = text + len;
-    while (s < end) {
-        const char *nl = memchr(s, '\n', (size_t)(end - s));
-        const char *le = nl ? nl : end;
-        p.line++;
-        hol_err e = hol__line(&p, s, (size_t)(le - s));
-        if (e)
-            return e;
-        s = nl ? nl + 1 : end;
+    /* two passes: the geometry lines first (quietly: the second pass
+     * reports every line's error in order), then every line in the
+     * level's tiling */
+    for (int pass = 0; pass < 2; pass++) {
+        p.geo_only = !pass;
+        p.err = pass ? err : NULL;
+        p.line = 0;
+        const char *s = text, *end = text + len;
+        while (s < end) {
+            const char *nl = memchr(s, '\n', (size_t)(end - s));
+            const char *le = nl ? nl : end;
+            p.line++;
+            hol_err e = hol__line(&p, s, (size_t)(le - s));
+            if (e && pass)
+                return e;
+            s = nl ? nl + 1 : end;
+        }
     }
     hol_err e = hol__finish(&p);
     if (e)
@@ -595,5 +740,95 @@ hol_err hol_level_make(const char *name, size_t name_len, const char *text, size
     out->condition[0] = 0;
     out->position = 0;
     hol_sha256(out->text, out->len, out->sha256);
+    return HOL_OK;
+}
+
+/* ---- geometry values and options ------------------------------------------- */
+
+hol_err hol_level_parse_cell(const char *s, size_t len, double *out_m)
+{
+    long v = 0;
+    size_t i = 0, digits = 0, decimals = 0;
+    for (; i < len && s[i] >= '0' && s[i] <= '9' && digits < 4; i++, digits++)
+        v = v * 10 + (s[i] - '0');
+    if (!digits)
+        return HOL_EPARSE;
+    if (i < len && s[i] == '.') {
+        for (i++; i < len && s[i] >= '0' && s[i] <= '9' && decimals < 3; i++, decimals++)
+            v = v * 10 + (s[i] - '0');
+        if (!decimals)
+            return HOL_EPARSE;
+    }
+    if (i != len)
+        return i < len && s[i] >= '0' && s[i] <= '9' ? HOL_ERANGE : HOL_EPARSE;
+    for (; decimals < 3; decimals++)
+        v *= 10;
+    if (v < 500 || v > 1500)
+        return HOL_ERANGE;
+    *out_m = (double)v / 1000.0; /* the nearest double, as strtod gives */
+    return HOL_OK;
+}
+
+char *hol_level_format_cell(double m, char out[16])
+{
+    if (!(m > 0))
+        m = 1.0;
+    snprintf(out, 16, "%.3f", m);
+    char *e = out + strlen(out);
+    while (e > out && e[-1] == '0')
+        *--e = 0;
+    if (e > out && e[-1] == '.')
+        *--e = 0;
+    return out;
+}
+
+hol_err hol_level_set_geometry(hol_level *lv, int q, int cols, int rows, double cell_m,
+                               hol_level_err *err)
+{
+    hol__lp p;
+    memset(&p, 0, sizeof p);
+    p.err = err;
+    const hol_app_level *L = &lv->lvl;
+    char add[96], had[32], want[32];
+    size_t n = 0;
+    had[0] = want[0] = 0;
+    if (q && L->tiling_q && L->tiling_q != q)
+        snprintf(had, sizeof had, "tiling 4 %d", L->tiling_q),
+            snprintf(want, sizeof want, "{4,%d}", q);
+    else if (cols && L->room_cols && (L->room_cols != cols || L->room_rows != rows))
+        snprintf(had, sizeof had, "room %d %d", L->room_cols, L->room_rows),
+            snprintf(want, sizeof want, "%dx%d", cols, rows);
+    else if (cell_m > 0 && L->cell_m > 0 && L->cell_m != cell_m) {
+        char a[16], b[16];
+        snprintf(had, sizeof had, "cell %s", hol_level_format_cell(L->cell_m, a));
+        snprintf(want, sizeof want, "%s m", hol_level_format_cell(cell_m, b));
+    }
+    if (had[0])
+        return hol__lfail(&p, HOL_EARG, 0,
+                          "its own line '%s' differs from the %s asked for", had, want);
+    if (q && !L->tiling_q)
+        n += (size_t)snprintf(add + n, sizeof add - n, "tiling 4 %d\n", q);
+    if (cols && !L->room_cols)
+        n += (size_t)snprintf(add + n, sizeof add - n, "room %d %d\n", cols, rows);
+    if (cell_m > 0 && !(L->cell_m > 0)) {
+        char c[16];
+        n += (size_t)snprintf(add + n, sizeof add - n, "cell %s\n", hol_level_format_cell(cell_m, c));
+    }
+    if (!n)
+        return HOL_OK;
+    if (n + lv->len > HOL_LEVEL_TEXT_MAX)
+        return hol__lfail(&p, HOL_ENOMEM, 0, "longer than %d bytes with the geometry lines",
+                          HOL_LEVEL_TEXT_MAX);
+    static const hol_level zero;
+    hol_level nl = zero;
+    char text[HOL_LEVEL_TEXT_MAX + 2];
+    memcpy(text, add, n);
+    memcpy(text + n, lv->text, lv->len);
+    hol_err e = hol_level_make(lv->name, strlen(lv->name), text, n + lv->len, &nl, err);
+    if (e)
+        return e;
+    memcpy(nl.condition, lv->condition, sizeof nl.condition);
+    nl.position = lv->position;
+    *lv = nl;
     return HOL_OK;
 }

@@ -85,4 +85,33 @@ int hol_level_name_ok(const char *name, size_t len);
 hol_err hol_level_make(const char *name, size_t name_len, const char *text, size_t len,
                        hol_level *out, hol_level_err *err);
 
+/* ---- geometry (SPEC 7; docs/levels.md) ----
+ * A level's lines `tiling 4 Q`, `room C R` and `cell M` set
+ * hol_app_level.tiling_q, room_cols/rows and cell_m (0 when the line is
+ * absent: {4,5}, 3 x 3, 1 m). The geometry lines are read before the
+ * others, so addresses anywhere in the file are of the level's tiling. In
+ * the flat {4,4} an objective off the room's own tiles is bad input
+ * (HOL_EARG naming its line) and objectives by distance are drawn among
+ * the room's tiles; in {4,5}..{4,8} the app's navigator decides the reach
+ * (hol_app_start_level: HOL_EUNREACH; only {4,8} has tiles out of reach).
+ * A tutorial is refused in {4,4} and {4,8} (its lessons need walks that
+ * those rooms do not have).
+ *
+ * hol_level_parse_cell: "D[.DDD]" metres (at most 3 decimals), 0.5..1.5:
+ * HOL_EPARSE (not that form), HOL_ERANGE (out of range); the value is the
+ * double nearest the decimal. The same rule for the level line and --cell.
+ * hol_level_format_cell: the shortest text of m with at most 3 decimals
+ * ("1", "0.75", "1.25"); what logs and recordings write.
+ * hol_level_set_geometry: the options a command was given (0: not given)
+ * applied to a made level: a level without the line gets it (the line
+ * prepended to its text, which is what logs and recordings keep, so a
+ * replay needs no options; the level parsed again); a level whose own line
+ * says otherwise is refused (HOL_EARG, line 0: "its own line 'tiling 4 5'
+ * differs from the {4,6} asked for"); errors of the new text as
+ * hol_level_make's (HOL_ENOMEM: too long with the lines). */
+hol_err hol_level_parse_cell(const char *s, size_t len, double *out_m);
+char *hol_level_format_cell(double m, char out[16]);
+hol_err hol_level_set_geometry(hol_level *lv, int q, int cols, int rows, double cell_m,
+                               hol_level_err *err);
+
 #endif

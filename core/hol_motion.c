@@ -12,19 +12,21 @@
  * (hx, hz) to (ex, ez), in order along it (ties: x first): the room
  * directions in out_dir and the segment parameters in out_t. */
 static int hol__crossings(double hx, double hz, double ex, double ez, const hol_room *u,
-                          uint8_t out_dir[HOL_MOTION_MAX_STEPS],
+                          double m, uint8_t out_dir[HOL_MOTION_MAX_STEPS],
                           double out_t[HOL_MOTION_MAX_STEPS])
 {
     int n = 0;
     for (int k = 1; k < hol_room_cols(u); k++) {
-        if ((hx < k) != (ex < k)) {
-            out_t[n] = (k - hx) / (ex - hx);
+        double g = k * m; /* the grid line x = k cells */
+        if ((hx < g) != (ex < g)) {
+            out_t[n] = (g - hx) / (ex - hx);
             out_dir[n++] = ex > hx ? HOL_DIR_E : HOL_DIR_W;
         }
     }
     for (int k = 1; k < hol_room_rows(u); k++) {
-        if ((hz < k) != (ez < k)) {
-            out_t[n] = (k - hz) / (ez - hz);
+        double g = k * m;
+        if ((hz < g) != (ez < g)) {
+            out_t[n] = (g - hz) / (ez - hz);
             out_dir[n++] = ez > hz ? HOL_DIR_S : HOL_DIR_N;
         }
     }
@@ -40,22 +42,33 @@ static int hol__crossings(double hx, double hz, double ex, double ez, const hol_
     return n;
 }
 
-static int hol__inside_cell(const hol_room *u, double x, double z)
+static int hol__inside_cell(const hol_room *u, double m, double x, double z)
 {
-    return x > u->col && x < u->col + 1 && z > u->row && z < u->row + 1;
+    return x > u->col * m && x < (u->col + 1) * m && z > u->row * m && z < (u->row + 1) * m;
+}
+
+static double hol__cell_m(double cell_m)
+{
+    return cell_m >= HOL_MOTION_MIN_CELL && cell_m <= HOL_MOTION_MAX_CELL ? cell_m : 1.0;
 }
 
 hol_err hol_motion_eye_state(const hol_room *user, const double head[3],
                              const double eye[3], hol_room *out_state)
 {
-    double hx = head[0], hz = head[2], ex = eye[0], ez = eye[2];
-    if (!hol__inside_cell(user, hx, hz))
+    return hol_motion_eye_state_m(user, 1.0, head, eye, out_state);
+}
+
+hol_err hol_motion_eye_state_m(const hol_room *user, double cell_m, const double head[3],
+                               const double eye[3], hol_room *out_state)
+{
+    double hx = head[0], hz = head[2], ex = eye[0], ez = eye[2], m = hol__cell_m(cell_m);
+    if (!hol__inside_cell(user, m, hx, hz))
         return HOL_EARG;
-    if (!(ex > 0 && ex < hol_room_cols(user) && ez > 0 && ez < hol_room_rows(user)))
+    if (!(ex > 0 && ex < hol_room_cols(user) * m && ez > 0 && ez < hol_room_rows(user) * m))
         return HOL_EROOM;
     uint8_t dir[HOL_MOTION_MAX_STEPS];
     double t[HOL_MOTION_MAX_STEPS];
-    int n = hol__crossings(hx, hz, ex, ez, user, dir, t);
+    int n = hol__crossings(hx, hz, ex, ez, user, m, dir, t);
     hol_room st = *user;
     for (int i = 0; i < n; i++) {
         hol_err err = hol_room_step(&st, dir[i]);
@@ -85,24 +98,26 @@ void hol_motion_init(hol_motion *m, const hol_room *user, const hol_motion_desc 
         m->d.margin = 0.45;
     if (!(m->d.eye_height > 0))
         m->d.eye_height = 1.6;
+    m->d.cell_m = hol__cell_m(m->d.cell_m);
     m->user = *user;
-    m->head[0] = user->col + 0.5;
+    m->head[0] = (user->col + 0.5) * m->d.cell_m;
     m->head[1] = m->d.eye_height;
-    m->head[2] = user->row + 0.5;
+    m->head[2] = (user->row + 0.5) * m->d.cell_m;
     m->pitch_deg = -30;
 }
 
-/* Clamp to the move area (0..size cells) less the margin; off the grid
- * lines. */
-static double hol__clamp_axis(double v, double margin, int size)
+/* Clamp to the move area (0..size cells of m metres) less the margin; off
+ * the grid lines. */
+static double hol__clamp_axis(double v, double margin, int size, double m)
 {
+    double w = size * m;
     if (!(v == v))
-        v = 0.5 * size;
+        v = 0.5 * w;
     if (v < margin)
         v = margin;
-    if (v > size - margin)
-        v = size - margin;
-    if (v == floor(v))
+    if (v > w - margin)
+        v = w - margin;
+    if (v / m == floor(v / m))
         v += 1e-6;
     return v;
 }
@@ -113,12 +128,13 @@ hol_err hol_motion_move_to(hol_motion *m, const double pos[3],
     hol_motion_steps local;
     hol_motion_steps *s = out_steps ? out_steps : &local;
     s->n = 0;
-    double x = hol__clamp_axis(pos[0], m->d.margin, hol_room_cols(&m->user));
-    double z = hol__clamp_axis(pos[2], m->d.margin, hol_room_rows(&m->user));
+    double cm = m->d.cell_m;
+    double x = hol__clamp_axis(pos[0], m->d.margin, hol_room_cols(&m->user), cm);
+    double z = hol__clamp_axis(pos[2], m->d.margin, hol_room_rows(&m->user), cm);
     uint8_t dir[HOL_MOTION_MAX_STEPS];
     double t[HOL_MOTION_MAX_STEPS];
     double hx = m->head[0], hz = m->head[2];
-    int n = hol__crossings(hx, hz, x, z, &m->user, dir, t);
+    int n = hol__crossings(hx, hz, x, z, &m->user, cm, dir, t);
     for (int i = 0; i < n; i++) {
         hol_room next = m->user;
         hol_err err = hol_room_step(&next, dir[i]);
@@ -126,8 +142,8 @@ hol_err hol_motion_move_to(hol_motion *m, const double pos[3],
             /* stop just before this edge, inside the current cell */
             double tt = t[i];
             double cx = hx + (x - hx) * tt, cz = hz + (z - hz) * tt;
-            double lo_x = m->user.col + 1e-6, hi_x = m->user.col + 1 - 1e-6;
-            double lo_z = m->user.row + 1e-6, hi_z = m->user.row + 1 - 1e-6;
+            double lo_x = m->user.col * cm + 1e-6, hi_x = (m->user.col + 1) * cm - 1e-6;
+            double lo_z = m->user.row * cm + 1e-6, hi_z = (m->user.row + 1) * cm - 1e-6;
             m->head[0] = cx < lo_x ? lo_x : cx > hi_x ? hi_x : cx;
             m->head[2] = cz < lo_z ? lo_z : cz > hi_z ? hi_z : cz;
             m->head[1] = pos[1];

@@ -4,8 +4,9 @@
  * Contract
  * - The user is a room state (hol_room: tile, room north, cell) plus a head
  *   position in room coordinates (SPEC section 1: metres, x east, y up, z
- *   south, move area x, z in [0, 3]; in [0, C] and [0, R] for a room of
- *   C x R cells, hol_room_cols and rows of the state) and a look direction (yaw 0 north,
+ *   south, move area x, z in [0, 3]; in [0, C*M] and [0, R*M] for a room
+ *   of C x R cells (hol_room_cols and rows of the state) of M metres
+ *   (desc.cell_m, SPEC 7)) and a look direction (yaw 0 north,
  *   positive turns west; pitch positive up). The head always lies strictly
  *   inside the state's cell.
  * - Moving the head from one position to another walks the cells that the
@@ -40,7 +41,12 @@ typedef struct hol_motion_desc {
     double pitch_rate; /* degrees/s at full look axis; 0: 90 */
     double margin;     /* metres kept from the hedges; 0: 0.15 */
     double eye_height; /* metres, the pancake head's y; 0: 1.6 */
+    double cell_m;     /* a cell's side in metres (SPEC 7: cell (c,r) spans
+                          x in [c*M, (c+1)*M]); 0 or outside 0.5..1.5: 1 */
 } hol_motion_desc;
+
+#define HOL_MOTION_MIN_CELL 0.5
+#define HOL_MOTION_MAX_CELL 1.5
 
 typedef struct hol_motion {
     hol_room user;     /* the room state; the head is inside its cell */
@@ -102,5 +108,9 @@ double hol_motion_snap_yaw(double yaw_deg, double step_deg, int turns);
  * room), HOL_ERANGE. */
 hol_err hol_motion_eye_state(const hol_room *user, const double head[3],
                              const double eye[3], hol_room *out_state);
+/* The same in a room of cells of cell_m metres (0: 1 m); the app's view
+ * has it in hol_app_view.cell_m. hol_motion_eye_state is cell_m 1. */
+hol_err hol_motion_eye_state_m(const hol_room *user, double cell_m, const double head[3],
+                               const double eye[3], hol_room *out_state);
 
 #endif

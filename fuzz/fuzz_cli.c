@@ -10,7 +10,9 @@
  *   nothing half-parsed.
  * - 1: a level file (core/hol_level.h, hol_level_parse and hol_level_make).
  *   Checks: accepted, the level's fields are in range (mode, 1..5 keys,
- *   time limit, stages, at most 32 placements), the kept text (LF line
+ *   time limit, stages, at most 32 placements, the geometry: tiling 4..8,
+ *   room 3..5 a side, a cell 0.5..1.5 m that prints back to itself), the
+ *   kept text (LF line
  *   ends) parses to the same level and its hash is its text's; refused,
  *   the typed error names a line of the file (and a conflict another).
  * - 2: a message with any bytes (cli_error into a memory stream). Checks:
@@ -81,6 +83,17 @@ static void check_level(const char *text, size_t len)
         CHECK(L.stages < (1u << HOL_APP_TUTORIAL_STAGES));
         CHECK(L.nplaces >= 0 && L.nplaces <= HOL_WORLD_MAX_PLACES);
         CHECK(L.nstart >= 0 && L.nstart <= (int)sizeof L.start);
+        CHECK(L.tiling_q == 0 || (L.tiling_q >= 4 && L.tiling_q <= 8));
+        CHECK((L.room_cols == 0) == (L.room_rows == 0));
+        CHECK(L.room_cols == 0 || (L.room_cols >= 3 && L.room_cols <= 5 && L.room_rows >= 3 &&
+                                   L.room_rows <= 5));
+        CHECK(L.cell_m == 0 || (L.cell_m >= 0.5 && L.cell_m <= 1.5));
+        if (L.cell_m > 0) { /* the cell size prints back to itself */
+            char c[16];
+            double again_m = 0;
+            hol_level_format_cell(L.cell_m, c);
+            CHECK(hol_level_parse_cell(c, strlen(c), &again_m) == HOL_OK && again_m == L.cell_m);
+        }
         static hol_level lv;
         hol_app_level again;
         CHECK(hol_level_make("x", 1, text, len, &lv, NULL) == HOL_OK);

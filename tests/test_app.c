@@ -16,6 +16,7 @@
 #include <cmocka.h>
 
 #include "../core/hol_app.h"
+#include "../core/hol_level.h"
 #include "../core/hol_nav.h"
 #include "../core/hol_prompt.h"
 #include "../core/hol_room.h"
@@ -1080,6 +1081,180 @@ static void test_deterministic(void **state)
     assert_string_equal(text[0], text[1]);
 }
 
+
+/* ---- geometries (SPEC 7) ---------------------------------------------------- */
+
+static hol_app_level parsed(const char *text)
+{
+    hol_app_level L;
+    hol_level_err e;
+    assert_int_equal(hol_level_parse(text, strlen(text), &L, &e), HOL_OK);
+    return L;
+}
+
+/* The flat {4,4} in a 3 x 3 room: a long wandering walk stays on the nine
+ * tiles of the room (and visits them all); an objective off them is
+ * HOL_EUNREACH. */
+static void test_flat_nine_tiles(void **state)
+{
+    (void)state;
+    hol_app *app = make_app();
+    hol_app_level L = parsed("tiling 4 4\nmode explore\nseed 3\n");
+    assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    const hol_app_view *v = hol_app_get_view(app);
+    assert_int_equal(hol_tile_q(v->user.tile), 4);
+    hol_tile seen[64];
+    int nseen = 0, steps = 0;
+    uint64_t s = 11;
+    float fwd = 1, turn = 0;
+    for (int f = 0; f < 6000; f++) {
+        if (f % 30 == 0) {
+            s = s * 6364136223846793005u + 1442695040888963407u;
+            fwd = ((s >> 33) % 4 == 0) ? -0.7f : 1.0f;
+            turn = (float)((s >> 45) % 3) - 1;
+        }
+        hol_input in = pancake(f / 60.0, fwd, turn);
+        assert_int_equal(hol_app_step(app, &in), HOL_OK);
+        steps += hol_app_get_events(app)->nsteps;
+        int k = 0;
+        while (k < nseen && !hol_tile_eq(seen[k], v->user.tile))
+            k++;
+        if (k == nseen) {
+            assert_true(nseen < 64);
+            seen[nseen++] = v->user.tile;
+        }
+        /* the tile is the cell's: the flat grid has no holonomy */
+        assert_int_equal(hol_tile_dist(hol_tile_origin_q(4), v->user.tile),
+                         abs(v->user.col - 1) + abs(v->user.row - 1));
+    }
+    assert_true(steps > 30);
+    assert_int_equal(nseen, 9);
+    L = parsed("tiling 4 4\nmode flag\nflag Wr\n");
+    assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    L.flag = hol_tile_origin_q(4);
+    assert_int_equal(hol_tile_child(L.flag, 0, &L.flag), HOL_OK); /* N */
+    assert_int_equal(hol_tile_child(L.flag, 0, &L.flag), HOL_OK); /* Nf: off the room */
+    assert_int_equal(hol_app_start_level(app, &L), HOL_EUNREACH);
+    hol_app_destroy(app);
+}
+
+/* A {4,6} level in a 4 x 4 room of 0.75 m cells, walked through the app
+ * by a tracked head along the optimal walk: it starts in cell (2,2) with
+ * the head at its centre (1.875 m, eye height 1.6 m), the cell edges lie
+ * at multiples of 0.75 m, the level ends at the optimum, and the safety
+ * text knows the room is 3 m wide. */
+static void test_hyperbolic_small_cells(void **state)
+{
+    (void)state;
+    hol_app_desc d;
+    memset(&d, 0, sizeof d);
+    d.alloc = count_alloc_hooks();
+    hol_app *app = NULL;
+    assert_int_equal(hol_app_create(&d, &app), HOL_OK);
+    hol_app_level L = parsed("mode flag\nflag Nlf\ntiling 4 6\nroom 4 4\ncell 0.75\nseed 8\n");
+    assert_int_equal(hol_app_prepare(app, 6, 4, 4), HOL_OK);
+    long before = count_allocs;
+    assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    assert_int_equal(count_allocs, before); /* prepared: the start makes none */
+    const hol_app_view *v = hol_app_get_view(app);
+    assert_true(v->cell_m == 0.75);
+    assert_int_equal(hol_room_cols(&v->user), 4);
+    assert_int_equal(hol_room_rows(&v->user), 4);
+    assert_int_equal(v->user.col, 2);
+    assert_int_equal(v->user.row, 2);
+    assert_int_equal(hol_tile_q(v->user.tile), 6);
+    assert_true(fabs(v->head[0] - 1.875) < 1e-12 && fabs(v->head[2] - 1.875) < 1e-12);
+    assert_true(fabs(v->head[1] - 1.6) < 1e-12);
+    int opt = v->hud.optimum;
+    assert_true(opt >= 3);
+    /* an independent walk: the navigator of that geometry */
+    hol_nav_desc nd;
+    memset(&nd, 0, sizeof nd);
+    nd.tiling_q = 6, nd.room_cols = 4, nd.room_rows = 4;
+    hol_nav *nav;
+    assert_int_equal(hol_nav_create(&nd, &nav), HOL_OK);
+    uint8_t walk[HOL_NAV_WALK_MAX];
+    hol_nav_result res;
+    hol_room r = v->user;
+    assert_int_equal(hol_nav_find(nav, &r, L.flag, 0, walk, sizeof walk, &res), HOL_OK);
+    assert_int_equal(res.len, opt);
+    double t = 0;
+    hol_input in = tracked_at(t, 0, 0);
+    in.head.pos[0] = in.head.pos[2] = 1.875f;
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    int col = 2, row = 2;
+    for (int i = 0; i < res.len; i++) {
+        int dc, dr;
+        hol_dir_delta(walk[i], &dc, &dr);
+        /* just short of the edge: no step yet */
+        float x0 = (float)((col + 0.5) * 0.75), z0 = (float)((row + 0.5) * 0.75);
+        in = tracked_at(t += 0.1, 0, 0);
+        in.head.pos[0] = x0 + (float)dc * 0.36f;
+        in.head.pos[2] = z0 + (float)dr * 0.36f;
+        assert_int_equal(hol_app_step(app, &in), HOL_OK);
+        assert_int_equal(hol_app_get_events(app)->nsteps, 0);
+        col += dc, row += dr;
+        in = tracked_at(t += 0.1, 0, 0);
+        in.head.pos[0] = (float)((col + 0.5) * 0.75);
+        in.head.pos[2] = (float)((row + 0.5) * 0.75);
+        assert_int_equal(hol_app_step(app, &in), HOL_OK);
+        const hol_app_events *ev = hol_app_get_events(app);
+        assert_int_equal(ev->nsteps, 1);
+        assert_int_equal(ev->steps[0].dir, walk[i]);
+        assert_int_equal(ev->steps[0].room.col, col);
+        assert_int_equal(ev->steps[0].room.row, row);
+        assert_string_equal(v->hud.status, i + 1 < res.len ? "" : v->hud.status);
+    }
+    assert_int_equal(v->state, HOL_APP_DONE);
+    assert_int_equal(v->hud.steps, opt);
+    assert_true(hol_tile_eq(v->user.tile, L.flag));
+    /* the room is 3 m wide: 2.9 m is inside, 3.1 m outside */
+    in = tracked_at(t += 0.1, 0, 0);
+    in.head.pos[0] = 2.9f, in.head.pos[2] = 1.0f;
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    assert_true(strstr(v->hud.status, "Outside") == NULL);
+    in.time_s = t += 0.1;
+    in.head.pos[0] = 3.1f;
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    assert_string_equal(v->hud.status, "Outside the room: step back in");
+    /* back to the default: {4,5} 3 x 3 of 1 m, the first navigator kept */
+    before = count_allocs;
+    hol_app_level D = flag_level("Nf");
+    assert_int_equal(hol_app_start_level(app, &D), HOL_OK);
+    assert_int_equal(count_allocs, before);
+    assert_true(v->cell_m == 1.0);
+    assert_true(fabs(v->head[0] - 1.5) < 1e-12);
+    hol_nav_destroy(nav);
+    hol_app_destroy(app);
+    assert_int_equal(count_frees, count_allocs);
+}
+
+/* The navigator cache: at most HOL_APP_MAX_NAVS, the least recently
+ * started replaced; a bad geometry refused. */
+static void test_nav_cache(void **state)
+{
+    (void)state;
+    hol_app *app = make_app();
+    static const int q[] = {4, 4, 4, 4, 4, 4};
+    static const int c[] = {3, 4, 5, 3, 4, 5};
+    static const int r[] = {3, 4, 5, 5, 3, 4};
+    for (int i = 0; i < 6; i++) {
+        char text[96];
+        snprintf(text, sizeof text, "tiling 4 %d\nroom %d %d\nmode flag\nflag N\n", q[i], c[i], r[i]);
+        hol_app_level L = parsed(text);
+        assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+        assert_int_equal(hol_app_get_view(app)->hud.optimum, 1);
+    }
+    hol_app_level L = flag_level("N");
+    L.tiling_q = 9;
+    assert_int_equal(hol_app_start_level(app, &L), HOL_EARG);
+    L.tiling_q = 0;
+    L.cell_m = 2;
+    assert_int_equal(hol_app_start_level(app, &L), HOL_EARG);
+    assert_int_equal(hol_app_prepare(app, 5, 6, 3), HOL_EARG);
+    hol_app_destroy(app);
+}
+
 /* ---- no allocation after the level starts --------------------------------- */
 
 static void test_no_allocation(void **state)
@@ -1248,6 +1423,9 @@ int main(void)
         cmocka_unit_test(test_snap_turn),
         cmocka_unit_test(test_deterministic),
         cmocka_unit_test(test_no_allocation),
+        cmocka_unit_test(test_flat_nine_tiles),
+        cmocka_unit_test(test_hyperbolic_small_cells),
+        cmocka_unit_test(test_nav_cache),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }

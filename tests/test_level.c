@@ -227,6 +227,128 @@ static void test_named_level(void **state)
 }
 
 /* The campaign and --mode levels: pure, from the seed, parseable texts. */
+/* ---- geometry lines (SPEC 7) ------------------------------------------------ */
+
+static void test_geometry_lines(void **state)
+{
+    (void)state;
+    char err[256];
+    hol_app_level L;
+    /* absent: zero (the defaults) */
+    assert_int_equal(parse("mode flag\nflag Nf\n", &L, err), 0);
+    assert_int_equal(L.tiling_q, 0);
+    assert_int_equal(L.room_cols, 0);
+    assert_true(L.cell_m == 0);
+    /* addresses are read in the level's tiling even before its line:
+     * Nrr is an address in {4,8}, not in {4,5} */
+    assert_int_equal(parse("mode flag\nflag Nrr\ntiling 4 8\nroom 4 5\ncell 0.75\n", &L, err), 0);
+    assert_int_equal(L.tiling_q, 8);
+    assert_int_equal(hol_tile_q(L.flag), 8);
+    assert_int_equal(L.room_cols, 4);
+    assert_int_equal(L.room_rows, 5);
+    assert_true(L.cell_m == 0.75);
+    assert_int_equal(parse("mode flag\nflag Nrr\n", &L, err), 1);
+    assert_string_equal(err, "line 2: 'Nrr' is not a canonical address");
+    /* bad values: one line naming the line */
+    static const struct { const char *text, *msg; hol_err code; } bad[] = {
+        {"mode explore\ntiling 4 9\n", "line 2: tiling needs 4 Q with Q from 4 to 8 (the tiling {4,Q}), not '4 9'", HOL_ERANGE},
+        {"mode explore\ntiling 3 5\n", "line 2: tiling needs 4 Q with Q from 4 to 8 (the tiling {4,Q}), not '3 5'", HOL_ERANGE},
+        {"mode explore\ntiling 4,5\n", "line 2: unknown key or wrong value count: 'tiling'", HOL_EPARSE},
+        {"mode explore\n\nroom 2 3\n", "line 3: room needs C R with C and R from 3 to 5 (cells), not '2 3'", HOL_ERANGE},
+        {"mode explore\nroom 3x3\n", "line 2: unknown key or wrong value count: 'room'", HOL_EPARSE},
+        {"mode explore\ncell 1.6\n", "line 2: cell needs metres from 0.5 to 1.5 (at most 3 decimals), not '1.6'", HOL_ERANGE},
+        {"mode explore\ncell 0.7505\n", "line 2: cell needs metres from 0.5 to 1.5 (at most 3 decimals), not '0.7505'", HOL_ERANGE},
+        {"mode explore\ncell 1e0\n", "line 2: cell needs metres from 0.5 to 1.5 (at most 3 decimals), not '1e0'", HOL_EPARSE},
+        {"mode explore\ncell .5\n", "line 2: cell needs metres from 0.5 to 1.5 (at most 3 decimals), not '.5'", HOL_EPARSE},
+        /* the flat grid: a 3 x 3 room reaches its nine tiles only */
+        {"tiling 4 4\nmode flag\nflag Nf\n", "line 3: no walk inside the room reaches the flag's tile Nf (in the flat {4,4} a 3x3 room reaches only its own 9 tiles)", HOL_EARG},
+        {"tiling 4 4\nmode keys\nkeys N Nr\nchest Sf\n", "line 4: no walk inside the room reaches the chest's tile Sf (in the flat {4,4} a 3x3 room reaches only its own 9 tiles)", HOL_EARG},
+        {"tiling 4 4\nmode flag\nflag-distance 3\n", "line 3: no free tile for the flag at that distance that a walk inside the room reaches", HOL_EARG},
+        {"tiling 4 4\nmode tutorial\n", "line 1: the tutorial needs the tiling {4,5}, {4,6} or {4,7}: its lessons have no walk inside the room in {4,4}", HOL_EARG},
+        {"mode flag\nflag N\nstart NN\n", "line 3: the start walk leaves the room", HOL_EARG},
+    };
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        hol_level_err e;
+        assert_int_equal(hol_level_parse(bad[i].text, strlen(bad[i].text), &L, &e), bad[i].code);
+        assert_string_equal(hol_level_err_format(&e, 1, err, 256), bad[i].msg);
+    }
+    /* a 5 x 5 room: two steps north from (2,2) stay inside; the flat
+     * grid reaches Nf there (two ahead) */
+    assert_int_equal(parse("mode flag\nflag Wf\nstart NN\nroom 5 5\ntiling 4 4\n", &L, err), 0);
+    /* {4,4} 3x3 draws among the room's tiles (distance 1 or 2) */
+    for (int seed = 0; seed < 50; seed++) {
+        char text[128];
+        snprintf(text, sizeof text, "tiling 4 4\nmode keys\nseed %d\nkeys-distance 3 1 2\nchest-distance 2\n", seed);
+        assert_int_equal(parse(text, &L, err), 0);
+        hol_tile o = hol_tile_origin_q(4);
+        for (int k = 0; k < L.nkeys; k++)
+            assert_true(hol_tile_dist(o, L.keys[k]) <= 2);
+        assert_int_equal(hol_tile_dist(o, L.chest), 2);
+        /* the chest on a corner tile of the room: two letters, one turn */
+        char a[HOL_TILE_ADDR_MAX];
+        hol_tile_print(L.chest, a);
+        assert_true(a[1] == 'l' || a[1] == 'r' || a[1] == 'f');
+        assert_true(a[1] != 'f');
+    }
+    /* cell values: the nearest double */
+    double m = 0;
+    assert_int_equal(hol_level_parse_cell("1", 1, &m), HOL_OK);
+    assert_true(m == 1.0);
+    assert_int_equal(hol_level_parse_cell("1.25", 4, &m), HOL_OK);
+    assert_true(m == 1.25);
+    assert_int_equal(hol_level_parse_cell("0.5", 3, &m), HOL_OK);
+    assert_true(m == 0.5);
+    assert_int_equal(hol_level_parse_cell("1.500", 5, &m), HOL_OK);
+    assert_int_equal(hol_level_parse_cell("0.499", 5, &m), HOL_ERANGE);
+    assert_int_equal(hol_level_parse_cell("-1", 2, &m), HOL_EPARSE);
+    assert_int_equal(hol_level_parse_cell("1.", 2, &m), HOL_EPARSE);
+    char c[16];
+    assert_string_equal(hol_level_format_cell(1.0, c), "1");
+    assert_string_equal(hol_level_format_cell(0.75, c), "0.75");
+    assert_string_equal(hol_level_format_cell(1.25, c), "1.25");
+    assert_string_equal(hol_level_format_cell(0.5, c), "0.5");
+    assert_string_equal(hol_level_format_cell(0, c), "1");
+}
+
+/* Options applied to a level: the lines added (the text a recording
+ * keeps), or a conflict refused. */
+static void test_set_geometry(void **state)
+{
+    (void)state;
+    static hol_level lv;
+    hol_level_err e;
+    char err[256];
+    const char *t = "mode flag\nflag Nf\n";
+    assert_int_equal(hol_level_make("a", 1, t, strlen(t), &lv, &e), HOL_OK);
+    assert_int_equal(hol_level_set_geometry(&lv, 0, 0, 0, 0, &e), HOL_OK);
+    assert_string_equal(lv.text, t); /* nothing asked: unchanged */
+    assert_int_equal(hol_level_set_geometry(&lv, 6, 4, 4, 0.75, &e), HOL_OK);
+    assert_string_equal(lv.text, "tiling 4 6\nroom 4 4\ncell 0.75\nmode flag\nflag Nf\n");
+    assert_int_equal(lv.lvl.tiling_q, 6);
+    assert_int_equal(hol_tile_q(lv.lvl.flag), 6);
+    assert_int_equal(lv.lvl.room_rows, 4);
+    assert_true(lv.lvl.cell_m == 0.75);
+    /* the same again: nothing added; another value: refused */
+    assert_int_equal(hol_level_set_geometry(&lv, 6, 4, 4, 0.75, &e), HOL_OK);
+    assert_string_equal(lv.text, "tiling 4 6\nroom 4 4\ncell 0.75\nmode flag\nflag Nf\n");
+    assert_int_equal(hol_level_set_geometry(&lv, 5, 0, 0, 0, &e), HOL_EARG);
+    assert_string_equal(hol_level_err_format(&e, 1, err, 256),
+                        "its own line 'tiling 4 6' differs from the {4,5} asked for");
+    assert_int_equal(hol_level_set_geometry(&lv, 0, 3, 5, 0, &e), HOL_EARG);
+    assert_string_equal(hol_level_err_format(&e, 1, err, 256),
+                        "its own line 'room 4 4' differs from the 3x5 asked for");
+    assert_int_equal(hol_level_set_geometry(&lv, 0, 0, 0, 1.0, &e), HOL_EARG);
+    assert_string_equal(hol_level_err_format(&e, 1, err, 256),
+                        "its own line 'cell 0.75' differs from the 1 m asked for");
+    /* the flat grid refuses the flag off the room's tiles */
+    const char *far = "mode flag\nflag Nf\n";
+    assert_int_equal(hol_level_make("b", 1, far, strlen(far), &lv, &e), HOL_OK);
+    assert_int_equal(hol_level_set_geometry(&lv, 4, 0, 0, 0, &e), HOL_EARG);
+    assert_string_equal(hol_level_err_format(&e, 1, err, 256),
+                        "line 3: no walk inside the room reaches the flag's tile Nf (in the "
+                        "flat {4,4} a 3x3 room reaches only its own 9 tiles)");
+}
+
 static void test_campaign(void **state)
 {
     (void)state;
@@ -264,6 +386,8 @@ int main(void)
         cmocka_unit_test(test_typed_errors),
         cmocka_unit_test(test_named_level),
         cmocka_unit_test(test_campaign),
+        cmocka_unit_test(test_geometry_lines),
+        cmocka_unit_test(test_set_geometry),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
