@@ -163,13 +163,14 @@ hol_err hol_motion_move_to(hol_motion *m, const double pos[3],
 void hol_motion_replace(hol_motion *m, const double pos[3], double yaw_was_deg)
 {
     int cols = hol_room_cols(&m->user), rows = hol_room_rows(&m->user);
-    double x = hol__clamp_axis(pos[0], m->d.margin, cols);
-    double z = hol__clamp_axis(pos[2], m->d.margin, rows);
+    double cm = m->d.cell_m;
+    double x = hol__clamp_axis(pos[0], m->d.margin, cols, cm);
+    double z = hol__clamp_axis(pos[2], m->d.margin, rows, cm);
     double turn = isfinite(yaw_was_deg - m->yaw_deg) ? (yaw_was_deg - m->yaw_deg) / 90 : 0;
     int q = (int)fmod(floor(turn + 0.5), 4.0);
     m->user.orient = (uint8_t)((m->user.orient + q + 4) & 3);
-    m->user.col = (uint8_t)x;
-    m->user.row = (uint8_t)z;
+    m->user.col = (uint8_t)(x / cm);
+    m->user.row = (uint8_t)(z / cm);
     m->head[0] = x;
     m->head[1] = pos[1];
     m->head[2] = z;
