@@ -148,18 +148,49 @@ static void hol__hot(int hot, uint8_t rgb[3])
     rgb[2] = (uint8_t)(40 + 200 * (b > 1 ? 1 : b));
 }
 
-/* Point of tile-local hyperboloid coordinates (x, y, w) under frame m, to
- * minimap pixels. */
-static void hol__map(const double m[9], const double q[3], float cx, float cy, float rad,
-                     float out[2])
+/* The flat grid's top view shows this many tile sides from the centre to
+ * the rim: the tiles within HOL_HUD_MAP_RADIUS steps (a diamond whose
+ * farthest corners lie sqrt(4.5^2 + 0.5^2) ~ 4.53 sides out) fit. */
+#define HOL__FLAT_SPAN (HOL_HUD_MAP_RADIUS + 0.75)
+
+/* A point of the user's tile's frame to the map's unit disk: the Poincare
+ * disk of a hyperboloid point ({4,Q}, Q >= 5), or a plain top view scaled
+ * by HOL__FLAT_SPAN in the flat grid ({4,4}: (x, y, 1) in tile sides). */
+static void hol__to_map(int q, const double p[3], double out[2])
+{
+    if (q == 4) {
+        out[0] = p[0] / p[2] / HOL__FLAT_SPAN;
+        out[1] = p[1] / p[2] / HOL__FLAT_SPAN;
+        return;
+    }
+    hol_hyper_to_disk(p, out);
+}
+
+/* Point of tile-local coordinates (x, y, w) under frame m, to minimap
+ * pixels. */
+static void hol__map(int q, const double m[9], const double pt[3], float cx, float cy,
+                     float rad, float out[2])
 {
     double p[3];
     for (int i = 0; i < 3; i++)
-        p[i] = m[3 * i] * q[0] + m[3 * i + 1] * q[1] + m[3 * i + 2] * q[2];
+        p[i] = m[3 * i] * pt[0] + m[3 * i + 1] * pt[1] + m[3 * i + 2] * pt[2];
     double d[2];
-    hol_hyper_to_disk(p, d);
+    hol__to_map(q, p, d);
     out[0] = cx + (float)(d[0] * rad);
     out[1] = cy - (float)(d[1] * rad);
+}
+
+/* The corners of a tile in its own frame: geodesic squares with corners at
+ * circumradius acosh(cot(pi/Q)) in {4,Q}; the unit square in {4,4}. */
+static void hol__tile_corners(int q, double corner[4][3])
+{
+    double rho = q == 4 ? 0 : acosh(1.0 / tan(HOL__PI / q)), shr = sinh(rho), chr = cosh(rho);
+    for (int k = 0; k < 4; k++) {
+        double a = HOL__PI / 4 + k * HOL__PI / 2;
+        corner[k][0] = q == 4 ? sqrt(0.5) * cos(a) : shr * cos(a);
+        corner[k][1] = q == 4 ? sqrt(0.5) * sin(a) : shr * sin(a);
+        corner[k][2] = q == 4 ? 1 : chr;
+    }
 }
 
 /* The HUD minimap: in the bottom right corner, a margin of 3 % of the
@@ -218,29 +249,24 @@ static void hol__map_disk(hol__px *p, float rad, float cx, float cy)
 
 static void hol__map_tiles(hol__px *p, const hol_frame_desc *f, float rad, float cx, float cy)
 {
-    /* geodesic squares (corners at circumradius acosh(cot(pi/5)),
-     * edges subdivided so they bend like the disk's geodesics) */
+    /* geodesic squares (hol__tile_corners), edges subdivided so they bend
+     * like the disk's geodesics */
     hol_nav_cell cells[512];
+    int q = hol_tile_q(f->user.tile);
     size_t n = 0;
     int nobj = f->nobjectives < HOL_RENDER_MAX_OBJECTIVES ? f->nobjectives : HOL_RENDER_MAX_OBJECTIVES;
     if (hol_nav_field(&f->user, HOL_HUD_MAP_RADIUS, f->objectives, (size_t)(nobj > 0 ? nobj : 0),
                       cells, sizeof cells / sizeof cells[0], &n))
         n = 0;
-    double rho = acosh(1.0 / tan(HOL__PI / 5)), shr = sinh(rho), chr = cosh(rho);
     double corner[4][3];
-    for (int k = 0; k < 4; k++) {
-        double a = HOL__PI / 4 + k * HOL__PI / 2;
-        corner[k][0] = shr * cos(a);
-        corner[k][1] = shr * sin(a);
-        corner[k][2] = chr;
-    }
+    hol__tile_corners(q, corner);
     for (size_t i = 0; i < n; i++) {
         double m[9];
         if (hol_hyper_frame(f->user.tile, f->user.orient, cells[i].tile, m))
             continue;
         uint8_t col[3];
         hol__hot((f->flags & HOL_RENDER_NO_HOT_COLD) ? -1 : cells[i].hot, col);
-        float q[16][2];
+        float poly[16][2];
         int nq = 0;
         for (int k = 0; k < 4; k++)
             for (int s = 0; s < 4; s++) {
@@ -248,22 +274,22 @@ static void hol__map_tiles(hol__px *p, const hol_frame_desc *f, float rad, float
                 double t = s / 4.0, pt[3];
                 for (int j = 0; j < 3; j++)
                     pt[j] = (1 - t) * corner[k][j] + t * corner[(k + 1) & 3][j];
-                double nn = sqrt(pt[2] * pt[2] - pt[0] * pt[0] - pt[1] * pt[1]);
+                double nn = q == 4 ? 1 : sqrt(pt[2] * pt[2] - pt[0] * pt[0] - pt[1] * pt[1]);
                 for (int j = 0; j < 3; j++)
                     pt[j] /= nn;
-                hol__map(m, pt, cx, cy, rad * 0.985f, q[nq++]);
+                hol__map(q, m, pt, cx, cy, rad * 0.985f, poly[nq++]);
             }
         /* shrink slightly towards the centre for visible seams */
         float mx = 0, my = 0;
         for (int k = 0; k < nq; k++) {
-            mx += q[k][0] / nq;
-            my += q[k][1] / nq;
+            mx += poly[k][0] / nq;
+            my += poly[k][1] / nq;
         }
         for (int k = 0; k < nq; k++) {
-            q[k][0] = mx + 0.9f * (q[k][0] - mx);
-            q[k][1] = my + 0.9f * (q[k][1] - my);
+            poly[k][0] = mx + 0.9f * (poly[k][0] - mx);
+            poly[k][1] = my + 0.9f * (poly[k][1] - my);
         }
-        hol__poly(p, (const float(*)[2])q, nq, col);
+        hol__poly(p, (const float(*)[2])poly, nq, col);
     }
 }
 
@@ -281,7 +307,7 @@ static void hol__map_path(hol__px *p, const hol_frame_desc *f, float rad, float 
         if (hol_hyper_frame(f->user.tile, f->user.orient, st.tile, m))
             break;
         float c[2];
-        hol__map(m, origin, cx, cy, rad * 0.985f, c);
+        hol__map(hol_tile_q(st.tile), m, origin, cx, cy, rad * 0.985f, c);
         hol__segment(p, prev[0], prev[1], c[0], c[1], rad * 0.035f + 1, pathc);
         prev[0] = c[0];
         prev[1] = c[1];
@@ -298,7 +324,7 @@ static void hol__map_marks(hol__px *p, const hol_frame_desc *f, float rad, float
             hol_hyper_frame(f->user.tile, f->user.orient, f->marks[k], m))
             continue;
         double pc[3] = {m[2], m[5], m[8]};
-        hol_hyper_to_disk(pc, d);
+        hol__to_map(hol_tile_q(f->user.tile), pc, d);
         float c[2] = {cx + (float)(d[0] * rad * 0.985), cy - (float)(d[1] * rad * 0.985)};
         float rr = rad * 0.11f + 2, th = rad * 0.03f + 1;
         for (int i = 0; i < 16; i++) {
@@ -321,7 +347,7 @@ static void hol__map_objectives(hol__px *p, const hol_frame_desc *f, float rad, 
         float c[2] = {cx, cy};
         if (!hol_hyper_frame(f->user.tile, f->user.orient, f->objectives[o], m)) {
             double pc[3] = {m[2], m[5], m[8]}, d[2];
-            hol_hyper_to_disk(pc, d);
+            hol__to_map(hol_tile_q(f->user.tile), pc, d);
             on = hol_tile_dist(f->user.tile, f->objectives[o]) <= HOL_HUD_MAP_RADIUS;
             c[0] = cx + (float)(d[0] * rad * 0.985);
             c[1] = cy - (float)(d[1] * rad * 0.985);
@@ -345,6 +371,26 @@ static void hol__map_objectives(hol__px *p, const hol_frame_desc *f, float rad, 
         }
     }}
 
+/* The flat grid's map is no Poincare disk: a caption over it says so (on
+ * the HUD right-aligned above the map, in the hand along its top). */
+static void hol__map_caption(hol__px *p, float rad, float cx, float cy)
+{
+    static const char text[] = HOL_HUD_FLAT_CAPTION;
+    static const uint8_t panel[3] = {24, 28, 34}, ink[3] = {240, 240, 230};
+    float sc = p->hand ? 3 : (float)(p->h >= 480 ? p->h / 240 : 1);
+    float tw = 6 * (float)(sizeof text - 1) * sc, x, y;
+    if (p->hand) {
+        x = cx - tw / 2;
+        y = 2 * sc;
+    } else {
+        x = cx + 1.1f * rad - tw;
+        x = x < 3 * sc ? 3 * sc : x;
+        y = cy - 1.1f * rad - 11 * sc;
+    }
+    hol__rect(p, x - 2 * sc, y - 2 * sc, x + tw + sc, y + 9 * sc, panel);
+    hol_hud_text(p->m, text, x, y, sc, ink, p->w, p->h);
+}
+
 static void hol__minimap(hol__px *p, const hol_frame_desc *f)
 {
     float rad, cx, cy;
@@ -354,6 +400,8 @@ static void hol__minimap(hol__px *p, const hol_frame_desc *f)
     hol__map_path(p, f, rad, cx, cy);
     hol__map_marks(p, f, rad, cx, cy);
     hol__map_objectives(p, f, rad, cx, cy);
+    if (hol_tile_q(f->user.tile) == 4)
+        hol__map_caption(p, rad, cx, cy);
 }
 
 static void hol__user_arrow(hol__px *p, const hol_frame_desc *f)
@@ -363,11 +411,19 @@ static void hol__user_arrow(hol__px *p, const hol_frame_desc *f)
     /* the user: an arrow where the eye stands in the tile (the cell's
      * offset scaled so that a cell edge maps to the tile edge), pointing
      * along the view yaw */
-    double ox = f->cam.eye[0] - f->user.col - 0.5, on = -(f->cam.eye[2] - f->user.row - 0.5);
+    double cm = f->cell_m > 0 ? f->cell_m : 1.0;
+    double ox = f->cam.eye[0] / cm - f->user.col - 0.5, on = -(f->cam.eye[2] / cm - f->user.row - 0.5);
     double ol = sqrt(ox * ox + on * on);
+    int tq = hol_tile_q(f->user.tile);
     if (ol > 1e-9 && ol < 1) {
-        double rr = ol * hol_hyper_edge(), q[3] = {sinh(rr) * ox / ol, sinh(rr) * on / ol, cosh(rr)}, d[2];
-        hol_hyper_to_disk(q, d);
+        double rr = ol * hol_hyper_edge_q(tq), d[2];
+        double q[3] = {sinh(rr) * ox / ol, sinh(rr) * on / ol, cosh(rr)};
+        if (tq == 4) {
+            q[0] = ox;
+            q[1] = on;
+            q[2] = 1;
+        }
+        hol__to_map(tq, q, d);
         cx += (float)(d[0] * rad * 0.985);
         cy -= (float)(d[1] * rad * 0.985);
     }

@@ -6,8 +6,11 @@
  *   Vertices are HOL_MESH_PROP (never floor). Nothing allocates.
  * - Minimap: a Poincare disk centred on the user's tile (room north up,
  *   room east right) showing every tile within HOL_HUD_MAP_RADIUS steps as
- *   its geodesic square, coloured hot-cold by the tile distance to the
- *   nearest objective (red near, blue far; grey-green without objectives),
+ *   its geodesic square (the tiling is the user's tile's, {4,5}..{4,8});
+ *   in the flat grid {4,4} a plain top view instead (squares, no disk
+ *   distortion, HOL_HUD_MAP_RADIUS + 0.75 tile sides from the centre to
+ *   the rim) with the caption HOL_HUD_FLAT_CAPTION over it. Tiles are
+ *   coloured hot-cold by the tile distance to the nearest objective (red near, blue far; grey-green without objectives),
  *   the shortest-path overlay (tile centres of the given room walk), the
  *   objectives (yellow diamonds), the user's arrow (view yaw), and for each
  *   objective off the map an arrow on the rim pointing towards it.
@@ -28,6 +31,8 @@
 #include "hol_render.h"
 
 #define HOL_HUD_MAP_RADIUS HOL_APP_MINIMAP_RADIUS
+/* The caption over the flat grid's map (Q = 4): a plain top view. */
+#define HOL_HUD_FLAT_CAPTION "MAP: FLAT TOP VIEW (4,4)"
 
 /* Append the HUD of frame f (viewport w x h pixels) to out: the map part
  * (disk, tiles, path, objectives, rim arrows: a function of the user's

@@ -18,7 +18,9 @@
  * per-frame leaf polygons and HUD (a few KB). */
 #define HOL__ROOM_V (1u << 16)
 #define HOL__ROOM_I (1u << 17)
-#define HOL__SLOTS HOL_VIEW_MAX_BRANCHES /* a frame never needs more */
+/* Tile meshes resident at once: a frame shows at most ~40 tiles in the
+ * 3 x 3 room and ~130 in the 5 x 5 one (test_render_tiles counts them). */
+#define HOL__SLOTS 160
 #define HOL__SLOT_V 8192u
 #define HOL__SLOT_I 16384u
 #define HOL__HUD_V (1u << 14) /* the resident minimap, after the slots */
@@ -33,6 +35,7 @@ typedef struct hol__slot {
     int used;
     hol_tile tile;
     int bare, pole, kind, have; /* have: content came from the world */
+    double cell_m;
     hol_tile_content content;
     uint64_t last_frame;
     uint32_t nidx;
@@ -54,6 +57,7 @@ typedef struct hol__item {
     uint8_t dyn; /* 1: dynamic buffers */
     uint8_t ref, mask;
     int16_t branch;
+    float wedge[4]; /* w0, w1 (x, z) when the view has wedges */
     uint32_t first, count; /* index range */
     float model[16];
 } hol__item;
@@ -63,7 +67,7 @@ struct hol_render {
     hol_gl gl;
     hol_scene *scene;
     GLuint prog, vao[2], vbo[2], ibo[2]; /* [0] static, [1] dynamic */
-    GLint u_vp, u_model, u_mode, u_id, u_eye, u_fog, u_fogd, u_lin;
+    GLint u_vp, u_model, u_mode, u_id, u_eye, u_fog, u_fogd, u_lin, u_wedge, u_wmode;
     hol_mesh dyn;     /* per-frame geometry */
     hol_mesh scratch; /* one room or tile mesh before upload */
     hol_vertex *verts;
@@ -77,6 +81,7 @@ struct hol_render {
     uint64_t frame;
     int room_valid, room_bare;
     hol_room room_user;
+    double room_cell;
     struct hol_world *room_world;
     uint32_t room_nidx;
     int hud_valid;
@@ -117,6 +122,8 @@ static const char *hol__fs =
     "uniform vec3 u_fog;\n"
     "uniform float u_fogd;\n"
     "uniform int u_lin;\n"
+    "uniform vec4 u_wedge;\n"
+    "uniform int u_wmode;\n"
     "out vec4 o_col;\n"
     "vec4 hol_out(vec3 c) {\n"
     "  if (u_lin == 0) return vec4(c, 1.0);\n"
@@ -125,6 +132,12 @@ static const char *hol__fs =
     "                  step(vec3(0.04045), c)), 1.0);\n"
     "}\n"
     "void main() {\n"
+    "  if (u_wmode == 1) {\n"
+    "    vec2 d = v_wpos.xz - u_eye.xz;\n"
+    "    float e = -1e-4 * length(d);\n"
+    "    if (u_wedge.x * d.y - u_wedge.y * d.x < e ||\n"
+    "        d.x * u_wedge.w - d.y * u_wedge.z < e) discard;\n"
+    "  }\n"
     "  if (u_mode == 1) {\n"
     "    o_col = v_col.a > 0.5 ? u_id : vec4(0.0, 0.0, 0.0, 1.0);\n"
     "    return;\n"
@@ -220,6 +233,8 @@ hol_err hol_render_create(const hol_render_desc *desc, hol_render **out)
     r->u_fog = r->gl.GetUniformLocation(r->prog, "u_fog");
     r->u_fogd = r->gl.GetUniformLocation(r->prog, "u_fogd");
     r->u_lin = r->gl.GetUniformLocation(r->prog, "u_lin");
+    r->u_wedge = r->gl.GetUniformLocation(r->prog, "u_wedge");
+    r->u_wmode = r->gl.GetUniformLocation(r->prog, "u_wmode");
     r->gl.GenVertexArrays(2, r->vao);
     r->gl.GenBuffers(2, r->vbo);
     r->gl.GenBuffers(2, r->ibo);
@@ -368,7 +383,7 @@ static void hol__upload_scratch(hol_render *r, uint32_t vbase, uint32_t ibase)
 /* The resident mesh of tile t: reused while the tile's content is the
  * same, else (re)built into the least recently used slot. */
 static int hol__tile_range(hol_render *r, hol_tile t, int bare, int pole, int kind,
-                           uint32_t *first, uint32_t *count)
+                           double cell_m, uint32_t *first, uint32_t *count)
 {
     hol_tile_content c;
     memset(&c, 0, sizeof c);
@@ -382,7 +397,8 @@ static int hol__tile_range(hol_render *r, hol_tile t, int bare, int pole, int ki
             continue;
         }
         if (hol_tile_eq(sl->tile, t) && sl->bare == bare && sl->pole == pole && sl->kind == kind &&
-            sl->have == have && (!have || !memcmp(&sl->content, &c, sizeof c))) {
+            sl->have == have && sl->cell_m == cell_m &&
+            (!have || !memcmp(&sl->content, &c, sizeof c))) {
             sl->last_frame = r->frame;
             *first = HOL__ROOM_I + (uint32_t)i * HOL__SLOT_I;
             *count = sl->nidx;
@@ -398,7 +414,7 @@ static int hol__tile_range(hol_render *r, hol_tile t, int bare, int pole, int ki
     hol_mesh_clear(&r->scratch);
     r->scratch.cap_v = HOL__SLOT_V;
     r->scratch.cap_i = HOL__SLOT_I;
-    hol_scene_tile(r->scene, &r->scratch, t, r->desc.world, bare, pole, kind);
+    hol_scene_tile(r->scene, &r->scratch, t, r->desc.world, bare, pole, kind, cell_m);
     r->scratch.cap_v = HOL__ROOM_V;
     r->scratch.cap_i = HOL__ROOM_I;
     if (r->scratch.overflow)
@@ -413,6 +429,7 @@ static int hol__tile_range(hol_render *r, hol_tile t, int bare, int pole, int ki
     sl->pole = pole;
     sl->kind = kind;
     sl->have = have;
+    sl->cell_m = cell_m;
     sl->content = c;
     sl->last_frame = r->frame;
     sl->nidx = r->scratch.ni;
@@ -489,17 +506,18 @@ static hol_err hol__queue_leaves(hol_render *r, const hol_frame_desc *f)
 
 /* Pass 1: the room's own meshes, resident while the user's state and the
  * world stay the same. */
-static hol_err hol__queue_room(hol_render *r, const hol_frame_desc *f)
+static hol_err hol__queue_room(hol_render *r, const hol_frame_desc *f, double cell_m)
 {
-    if (!r->room_valid || r->room_world != r->desc.world ||
+    if (!r->room_valid || r->room_world != r->desc.world || r->room_cell != cell_m ||
         memcmp(&r->room_user, &f->user, sizeof f->user)) {
         hol_mesh_clear(&r->scratch);
-        hol_scene_room(r->scene, &r->scratch, &f->user, r->desc.world);
+        hol_scene_room(r->scene, &r->scratch, &f->user, r->desc.world, cell_m);
         if (r->scratch.overflow)
             return HOL_ENOMEM;
         hol__upload_scratch(r, 0, 0);
         r->room_nidx = r->scratch.ni;
         r->room_user = f->user;
+        r->room_cell = cell_m;
         r->room_world = r->desc.world;
         r->room_valid = 1;
     }
@@ -530,7 +548,8 @@ static void hol__tile_marks(const hol_frame_desc *f, hol_tile t, int *pole, int 
 
 /* Pass 2: one draw per branch of its tile's resident mesh, placed in the
  * branch's cell, nearest cells first. */
-static hol_err hol__queue_tiles(hol_render *r, const hol_frame_desc *f, int bare)
+static hol_err hol__queue_tiles(hol_render *r, const hol_frame_desc *f, int bare,
+                                double cell_m)
 {
     const hol_view *v = &r->view;
     for (int k = 0; k < v->nbranches; k++) {
@@ -540,7 +559,7 @@ static hol_err hol__queue_tiles(hol_render *r, const hol_frame_desc *f, int bare
         uint32_t first, count;
         int pole, kind;
         hol__tile_marks(f, br->state.tile, &pole, &kind);
-        if (!hol__tile_range(r, br->state.tile, bare, pole, kind, &first, &count))
+        if (!hol__tile_range(r, br->state.tile, bare, pole, kind, cell_m, &first, &count))
             return HOL_ENOMEM;
         hol__item *it = hol__push(r, HOL__PASS_TILE, first, count);
         if (!it)
@@ -548,6 +567,10 @@ static hol_err hol__queue_tiles(hol_render *r, const hol_frame_desc *f, int bare
         it->ref = br->ref;
         it->mask = br->mask;
         it->branch = (int16_t)k;
+        for (int j = 0; j < 2; j++) {
+            it->wedge[j] = (float)br->w0[j];
+            it->wedge[2 + j] = (float)br->w1[j];
+        }
         it->key = 2u << 24 | (uint32_t)br->nsteps << 16 | (uint32_t)k;
         /* tile frame -> room: the tile's heading is room north turned
          * clockwise by orient quarter turns */
@@ -561,8 +584,8 @@ static hol_err hol__queue_tiles(hol_render *r, const hol_frame_desc *f, int bare
         m[2] = -s;
         m[8] = s;
         m[10] = c;
-        m[12] = (float)br->state.col + 0.5f;
-        m[14] = (float)br->state.row + 0.5f;
+        m[12] = (float)((br->state.col + 0.5) * cell_m);
+        m[14] = (float)((br->state.row + 0.5) * cell_m);
     }
     return HOL_OK;
 }
@@ -682,7 +705,10 @@ static hol_err hol__build(hol_render *r, const hol_frame_desc *f)
 {
     int eu = (f->flags & HOL_RENDER_EUCLIDEAN) != 0;
     int bare = (f->flags & HOL_RENDER_BARE) != 0;
-    hol_err err = hol_view_build(&f->user, f->cam.eye[0], f->cam.eye[2], eu, &r->view);
+    double m = f->cell_m > 0 ? f->cell_m : 1.0;
+    if (!(m >= 0.5 && m <= 1.5))
+        return HOL_EARG;
+    hol_err err = hol_view_build(&f->user, f->cam.eye[0] / m, f->cam.eye[2] / m, eu, &r->view);
     if (err)
         return err;
     hol_mesh_clear(&r->dyn);
@@ -690,11 +716,11 @@ static hol_err hol__build(hol_render *r, const hol_frame_desc *f)
     r->frame++;
     r->uploaded = 0;
     r->tiles_built = 0;
-    if ((err = hol__queue_leaves(r, f)))
+    if (!r->view.wedges && (err = hol__queue_leaves(r, f)))
         return err;
-    if (!bare && (err = hol__queue_room(r, f)))
+    if (!bare && (err = hol__queue_room(r, f, m)))
         return err;
-    if ((err = hol__queue_tiles(r, f, bare)))
+    if ((err = hol__queue_tiles(r, f, bare, m)))
         return err;
     if (f->fade > 0 && !(f->flags & HOL_RENDER_IDS) && (err = hol__queue_fade(r, f)))
         return err;
@@ -773,6 +799,7 @@ static void hol__frame_begin(hol_render *r, const hol_frame_desc *f, float vp[16
     r->gl.Uniform3f(r->u_fog, sky[0], sky[1], sky[2]);
     r->gl.Uniform1f(r->u_fogd, 0.06f);
     r->gl.Uniform1i(r->u_lin, r->desc.srgb != 0);
+    r->gl.Uniform1i(r->u_wmode, 0);
 }
 
 /* The GL state of a pass (vp: the view-projection, for the passes in the
@@ -782,6 +809,7 @@ static void hol__set_pass(hol_render *r, const hol_frame_desc *f, int pass, cons
     int ids = (f->flags & HOL_RENDER_IDS) != 0;
     float ident[16];
     hol__identity(ident);
+    r->gl.Uniform1i(r->u_wmode, 0); /* the tile pass sets it per branch */
     switch (pass) {
     case HOL__PASS_STENCIL:
         r->gl.ColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
@@ -868,6 +896,11 @@ static void hol__execute(hol_render *r, const hol_frame_desc *f, const float vp[
                 st->state_changes++;
             }
             r->gl.UniformMatrix4fv(r->u_model, 1, GL_FALSE, it->model);
+            if (r->view.wedges) {
+                r->gl.Uniform1i(r->u_wmode, it->branch > 0);
+                r->gl.Uniform4f(r->u_wedge, it->wedge[0], it->wedge[1], it->wedge[2],
+                                it->wedge[3]);
+            }
             if (ids) {
                 int id = it->branch + 1;
                 r->gl.Uniform4f(r->u_id, (float)(id & 255) / 255.0f, (float)(id >> 8) / 255.0f,

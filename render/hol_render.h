@@ -14,7 +14,9 @@
  *   polygons and the HUD are uploaded (a few KB).
  * - A frame is one eye: hol_view_build gives the leaves and branches; the
  *   queue holds one stencil polygon per visible leaf (pass 0, colour and
- *   depth writes off), the room's own meshes (trees on all 16 vertices,
+ *   depth writes off; rooms other than 3 x 3 tell branches apart by their
+ *   wedges instead, tested in the fragment shader: hol_view.h), the room's
+ *   own meshes (trees on all (C+1)(R+1) vertices,
  *   hedges on the boundary, a backdrop forest beyond them; pass 1, no
  *   stencil test), one draw per branch of its tile's mesh placed in the
  *   branch's cell and tested against the branch's stencil ref/mask (pass 2,
@@ -23,6 +25,11 @@
  *   the queue is sorted by (pass, buffer, depth) and executed with
  *   redundant state changes skipped. No scene pass per portal, no
  *   render-to-texture.
+ * - Geometry: the tiling is the user's tile word's (hol_tile_q: {4,4} the
+ *   flat grid .. {4,8}), the room the user state's C x R cells, the cell
+ *   side f->cell_m metres (0: 1). Room coordinates are metres (SPEC 7):
+ *   a tile's ground, creeks and the places of its props scale with the
+ *   cell; props, trees and hedges keep their size in metres.
  * - Floor outside the room is not drawn: hedges 2 m high stand on the room
  *   boundary (the move area ends there), and over them one sees sky/fog.
  *   Floor pixels are those showing the ground of a tile inside the room.
@@ -94,7 +101,8 @@ enum {
 };
 
 typedef struct hol_frame_desc {
-    hol_room user;
+    hol_room user;     /* tile (its tiling), orientation, cell, room size */
+    double cell_m;     /* a cell's side in metres, 0.5..1.5; 0: 1 */
     hol_camera cam;
     int flags;
     /* HUD / minimap (optional) */
@@ -179,7 +187,7 @@ void hol_render_invalidate(hol_render *r);
  * vp_x, vp_y). Only with out_stats does it wait for the GL to finish (the
  * figures include the GPU's time); without, the frame is queued.
  * Errors: HOL_EARG (eye not inside the user's cell unless fade >= 1, bad
- * size),
+ * size, a cell size outside 0.5..1.5),
  * HOL_ENOMEM (the fixed stores overflowed). */
 hol_err hol_render_frame(hol_render *r, const hol_frame_desc *f,
                          hol_render_stats *out_stats);

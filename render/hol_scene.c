@@ -173,7 +173,7 @@ static int hol__vertex_tree(const hol_room *user, struct hol_world *world, int i
     int best = -1, best_d = 1 << 30;
     for (int a = 0; a < 4; a++) {
         int c = i + dc[a], r = j + dr[a];
-        if (c < 0 || c >= HOL_ROOM_SIZE || r < 0 || r >= HOL_ROOM_SIZE)
+        if (c < 0 || c >= hol_room_cols(user) || r < 0 || r >= hol_room_rows(user))
             continue;
         int d = abs(c - user->col) + abs(r - user->row);
         if (d < best_d) {
@@ -196,82 +196,85 @@ static int hol__vertex_tree(const hol_room *user, struct hol_world *world, int i
            HOL_OK;
 }
 
-void hol_scene_room(const hol_scene *s, hol_mesh *out, const hol_room *user,
-                    struct hol_world *world)
+/* Forest ground outside the room (not floor: no tile is there; seen only
+ * from above the hedges): a ring round the W x D metres of the room. */
+static void hol__outer_ground(hol_mesh *out, float W, float D)
 {
-    for (int j = 0; j <= HOL_ROOM_SIZE; j++)
-        for (int i = 0; i <= HOL_ROOM_SIZE; i++) {
-            hol_tree tr = {(uint8_t)((i * 7 + j * 3) % 4), (uint8_t)((i + j) % 4)};
-            hol__vertex_tree(user, world, i, j, &tr);
-            float sc = 0.85f + 0.1f * (float)(tr.size & 3);
-            hol_place p = {(float)i, 0, (float)j, 0.7f * (float)(i * 4 + j), sc};
-            hol_mesh_append(out, &s->tpl[tr.kind & 3], p);
-        }
-    /* forest ground outside the room (not floor: no tile is there; seen
-     * only from above the hedges) */
-    {
-        static const uint8_t outer[3] = {52, 84, 44};
-        const float R = 40.0f, n = (float)HOL_ROOM_SIZE;
-        int64_t b = hol_mesh_reserve(out, 8, 24);
-        if (b >= 0) {
-            const float xy[8][2] = {{-R, -R}, {n + R, -R}, {n + R, n + R}, {-R, n + R},
-                                    {0, 0}, {n, 0}, {n, n}, {0, n}};
-            for (int k = 0; k < 8; k++) {
-                hol_vertex *v = &out->v[out->nv++];
-                memset(v, 0, sizeof *v);
-                v->pos[0] = xy[k][0];
-                v->pos[1] = -0.01f;
-                v->pos[2] = xy[k][1];
-                v->nrm[1] = 127;
-                memcpy(v->rgba, outer, 3);
-                v->rgba[3] = HOL_MESH_PROP;
-            }
-            /* the ring between the outer and the inner square */
-            for (int k = 0; k < 4; k++) {
-                uint32_t o0 = (uint32_t)b + (uint32_t)k, o1 = (uint32_t)b + (uint32_t)((k + 1) & 3);
-                uint32_t i0 = o0 + 4, i1 = o1 + 4;
-                uint32_t t[6] = {o0, o1, i1, o0, i1, i0};
-                memcpy(out->idx + out->ni, t, sizeof t);
-                out->ni += 6;
-            }
-        }
+    static const uint8_t outer[3] = {52, 84, 44};
+    const float R = 40.0f;
+    int64_t b = hol_mesh_reserve(out, 8, 24);
+    if (b < 0)
+        return;
+    const float xy[8][2] = {{-R, -R}, {W + R, -R}, {W + R, D + R}, {-R, D + R},
+                            {0, 0}, {W, 0}, {W, D}, {0, D}};
+    for (int k = 0; k < 8; k++) {
+        hol_vertex *v = &out->v[out->nv++];
+        memset(v, 0, sizeof *v);
+        v->pos[0] = xy[k][0];
+        v->pos[1] = -0.01f;
+        v->pos[2] = xy[k][1];
+        v->nrm[1] = 127;
+        memcpy(v->rgba, outer, 3);
+        v->rgba[3] = HOL_MESH_PROP;
     }
-    /* a backdrop forest beyond the hedges (decoration in the room frame:
-     * no floor, no tiles; seen over the hedge tops) */
+    /* the ring between the outer and the inner square */
+    for (int k = 0; k < 4; k++) {
+        uint32_t o0 = (uint32_t)b + (uint32_t)k, o1 = (uint32_t)b + (uint32_t)((k + 1) & 3);
+        uint32_t i0 = o0 + 4, i1 = o1 + 4;
+        uint32_t t[6] = {o0, o1, i1, o0, i1, i0};
+        memcpy(out->idx + out->ni, t, sizeof t);
+        out->ni += 6;
+    }
+}
+
+/* A backdrop forest beyond the hedges (decoration in the room frame: no
+ * floor, no tiles; seen over the hedge tops): 40 trees per 12 m of the
+ * room's perimeter, walked clockwise from the north-west corner. */
+static void hol__backdrop(const hol_scene *s, hol_mesh *out, float W, float D)
+{
     uint64_t rs = 0x666f72657374ull;
-    for (int k = 0; k < 40; k++) {
-        float t = (float)k / 40.0f * 12.0f, d = 0.9f + 2.2f * hol__unit(&rs);
+    const float P = 2 * W + 2 * D;
+    const int n = (int)lroundf(40.0f * P / 12.0f);
+    for (int k = 0; k < n; k++) {
+        float t = (float)k / (float)n * P, d = 0.9f + 2.2f * hol__unit(&rs);
         float x, z;
-        if (t < 3) {
+        if (t < W) {
             x = t; z = -d;
-        } else if (t < 6) {
-            x = 3 + d; z = t - 3;
-        } else if (t < 9) {
-            x = 9 - t; z = 3 + d;
+        } else if (t < W + D) {
+            x = W + d; z = t - W;
+        } else if (t < 2 * W + D) {
+            x = 2 * W + D - t; z = D + d;
         } else {
-            x = -d; z = 12 - t;
+            x = -d; z = P - t;
         }
         hol_place p = {x + 0.3f * hol__unit(&rs), 0, z, hol__unit(&rs) * 6.28f,
                        1.0f + 0.6f * hol__unit(&rs)};
         int kind = (int)(hol__mix(&rs) % 4);
         hol_mesh_append(out, &s->tpl[kind], p);
     }
-    /* hedges on the boundary, 2 m high, 0.3 m thick, outside the room,
-     * in slightly varied segments */
-    const float h = 2.0f, th = 0.3f, n = (float)HOL_ROOM_SIZE;
-    for (int side = 0; side < 4; side++)
-        for (int k = 0; k < 6; k++) {
-            float a = k * 0.5f - (k == 0 ? th : 0), b = (k + 1) * 0.5f + (k == 5 ? th : 0);
+}
+
+/* Hedges on the boundary, 2 m high, 0.3 m thick, outside the room, in
+ * slightly varied segments of about 0.5 m. */
+static void hol__hedges(hol_mesh *out, float W, float D)
+{
+    const float h = 2.0f, th = 0.3f;
+    for (int side = 0; side < 4; side++) {
+        float len = side < 2 ? W : D;
+        int nseg = (int)lroundf(len / 0.5f);
+        float seg = len / (float)nseg;
+        for (int k = 0; k < nseg; k++) {
+            float a = k * seg - (k == 0 ? th : 0), b = (k + 1) * seg + (k == nseg - 1 ? th : 0);
             float hh = h + 0.06f * (float)((k * 5 + side * 3) % 4);
             float lo[3], hi[3];
             if (side == 0) { /* north */
                 lo[0] = a; lo[2] = -th; hi[0] = b; hi[2] = 0;
             } else if (side == 1) { /* south */
-                lo[0] = a; lo[2] = n; hi[0] = b; hi[2] = n + th;
+                lo[0] = a; lo[2] = D; hi[0] = b; hi[2] = D + th;
             } else if (side == 2) { /* west */
                 lo[0] = -th; lo[2] = a; hi[0] = 0; hi[2] = b;
             } else { /* east */
-                lo[0] = n; lo[2] = a; hi[0] = n + th; hi[2] = b;
+                lo[0] = W; lo[2] = a; hi[0] = W + th; hi[2] = b;
             }
             lo[1] = 0;
             hi[1] = hh;
@@ -281,6 +284,26 @@ void hol_scene_room(const hol_scene *s, hol_mesh *out, const hol_room *user,
             uint8_t c2[3] = {(uint8_t)(c[0] + 8), (uint8_t)(c[1] + 10), (uint8_t)(c[2] + 6)};
             hol_mesh_blob(out, top, 0.34f, 0.16f, 0.34f, c2);
         }
+    }
+}
+
+void hol_scene_room(const hol_scene *s, hol_mesh *out, const hol_room *user,
+                    struct hol_world *world, double cell_m)
+{
+    int cols = hol_room_cols(user), rows = hol_room_rows(user);
+    float m = cell_m > 0 ? (float)cell_m : 1.0f;
+    for (int j = 0; j <= rows; j++)
+        for (int i = 0; i <= cols; i++) {
+            hol_tree tr = {(uint8_t)((i * 7 + j * 3) % 4), (uint8_t)((i + j) % 4)};
+            hol__vertex_tree(user, world, i, j, &tr);
+            float sc = 0.85f + 0.1f * (float)(tr.size & 3);
+            hol_place p = {(float)i * m, 0, (float)j * m, 0.7f * (float)(i * 4 + j), sc};
+            hol_mesh_append(out, &s->tpl[tr.kind & 3], p);
+        }
+    float W = (float)cols * m, D = (float)rows * m;
+    hol__outer_ground(out, W, D);
+    hol__backdrop(s, out, W, D);
+    hol__hedges(out, W, D);
 }
 
 static void hol__biome_rgb(int biome, uint64_t h, uint8_t rgb[3])
@@ -346,9 +369,37 @@ static void hol__creek_arm(hol_mesh *out, int d, const uint8_t rgb[3])
     hol_mesh_quad_y(out, x0, z0, x1, z1, 0.003f, rgb, HOL_MESH_FLOOR);
 }
 
-void hol_scene_tile(const hol_scene *s, hol_mesh *out, hol_tile t,
-                    struct hol_world *world, int bare, int pole, int kind)
+/* A prop placed at q in a tile of m metres a side: its place scales with
+ * the cell, its size does not. */
+static void hol__put(hol_mesh *out, const hol_mesh *tpl, hol_place q, float m)
 {
+    q.x *= m;
+    q.z *= m;
+    hol_mesh_append(out, tpl, q);
+}
+
+static void hol__put_tinted(hol_mesh *out, const hol_mesh *tpl, hol_place q, float m,
+                            const uint8_t tint[3])
+{
+    q.x *= m;
+    q.z *= m;
+    hol_mesh_append_tinted(out, tpl, q, tint);
+}
+
+/* The ground built since vertex v0 (a unit tile) scaled to m metres. */
+static void hol__scale_ground(hol_mesh *out, uint32_t v0, float m)
+{
+    for (uint32_t i = v0; i < out->nv && !out->overflow; i++) {
+        out->v[i].pos[0] *= m;
+        out->v[i].pos[2] *= m;
+    }
+}
+
+void hol_scene_tile(const hol_scene *s, hol_mesh *out, hol_tile t,
+                    struct hol_world *world, int bare, int pole, int kind, double cell_m)
+{
+    const float m = cell_m > 0 ? (float)cell_m : 1.0f;
+    const uint32_t v0 = out->nv;
     uint64_t h = hol_tile_hash(t);
     hol_tile_content c;
     memset(&c, 0, sizeof c);
@@ -380,6 +431,7 @@ void hol_scene_tile(const hol_scene *s, hol_mesh *out, hol_tile t,
         float r = c.object == HOL_OBJ_POOL ? 0.28f : 0.13f;
         hol_mesh_quad_y(out, -r, -r, r, r, 0.004f, water, HOL_MESH_FLOOR);
     }
+    hol__scale_ground(out, v0, m);
     if (bare)
         return;
     uint64_t rs = h ^ 0x5eedull;
@@ -390,7 +442,7 @@ void hol_scene_tile(const hol_scene *s, hol_mesh *out, hol_tile t,
                            hol__unit(&rs) * 6.28f, 0.7f + 0.4f * hol__unit(&rs)};
             if (ncreek && fabsf(q.x) < 0.18f && fabsf(q.z) < 0.18f)
                 continue;
-            hol_mesh_append(out, &s->tpl[HOL__T_TUFT], q);
+            hol__put(out, &s->tpl[HOL__T_TUFT], q, m);
         }
     float rot = (float)(c.rotation & 3) * HOL__PI_2;
     hol_place p = {0, 0, 0, rot, 1};
@@ -401,7 +453,7 @@ void hol_scene_tile(const hol_scene *s, hol_mesh *out, hol_tile t,
         for (int k = 0; k < n; k++) {
             hol_place q = {hol__unit(&rs) * 0.8f - 0.4f, 0, hol__unit(&rs) * 0.8f - 0.4f,
                            hol__unit(&rs) * 6.28f, 0.8f + 0.5f * hol__unit(&rs)};
-            hol_mesh_append(out, &s->tpl[HOL__T_TUFT], q);
+            hol__put(out, &s->tpl[HOL__T_TUFT], q, m);
         }
         break;
     }
@@ -411,20 +463,20 @@ void hol_scene_tile(const hol_scene *s, hol_mesh *out, hol_tile t,
         for (int k = 0; k < 12; k++) {
             hol_place q = {hol__unit(&rs) * 0.7f - 0.35f, 0, hol__unit(&rs) * 0.7f - 0.35f,
                            0, 0.8f + 0.4f * hol__unit(&rs)};
-            hol_mesh_append_tinted(out, &s->tpl[HOL__T_FLOWER], q,
-                                   cols[hol__mix(&rs) & 3]);
+            hol__put_tinted(out, &s->tpl[HOL__T_FLOWER], q, m, cols[hol__mix(&rs) & 3]);
         }
         break;
     }
     case HOL_OBJ_LOG:
         p.yaw = (float)((c.log_partner >= 0 ? c.log_partner : c.rotation) & 3) * HOL__PI_2;
+        p.scale = m; /* the half log reaches the edge */
         hol_mesh_append(out, &s->tpl[HOL__T_LOG], p);
         break;
     case HOL_OBJ_SPRING: {
         for (int k = 0; k < 5; k++) {
             float a = k * 1.2566f;
             hol_place q = {0.2f * cosf(a), 0, 0.2f * sinf(a), a, 0.35f};
-            hol_mesh_append(out, &s->tpl[HOL__T_ROCK], q);
+            hol__put(out, &s->tpl[HOL__T_ROCK], q, m);
         }
         break;
     }
@@ -435,7 +487,7 @@ void hol_scene_tile(const hol_scene *s, hol_mesh *out, hol_tile t,
         for (int k = 0; k < 5; k++) {
             hol_place q = {hol__unit(&rs) * 0.6f - 0.3f, 0, hol__unit(&rs) * 0.6f - 0.3f,
                            0, 0.7f + 0.6f * hol__unit(&rs)};
-            hol_mesh_append(out, &s->tpl[HOL__T_MUSHROOM], q);
+            hol__put(out, &s->tpl[HOL__T_MUSHROOM], q, m);
         }
         break;
     default: /* game objects: drawn below, as the app says */
@@ -451,6 +503,6 @@ void hol_scene_tile(const hol_scene *s, hol_mesh *out, hol_tile t,
         static const uint8_t pc[4][3] = {
             {255, 60, 40}, {40, 120, 255}, {250, 220, 40}, {200, 60, 220}};
         hol_place q = {0.3f, 0, 0.3f, 0, 1};
-        hol_mesh_append_tinted(out, &s->tpl[HOL__T_POLE], q, pc[pole & 3]);
+        hol__put_tinted(out, &s->tpl[HOL__T_POLE], q, m, pc[pole & 3]);
     }
 }

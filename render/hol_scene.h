@@ -5,13 +5,16 @@
  * - hol_scene_create builds every template mesh in code (no asset files)
  *   into one allocation; nothing else allocates.
  * - Tile meshes are in the tile's frame: the tile is the square
- *   x, z in [-0.5, 0.5] centred at the origin, its canonical heading is -z
+ *   x, z in [-M/2, M/2] centred at the origin (M the cell side in metres,
+ *   cell_m; 0: 1): its ground and the places of its props scale with M,
+ *   the props' sizes do not (they are metres), its canonical heading is -z
  *   (edge d of hol_tile_step lies towards heading + d quarter turns
  *   counter-clockwise). The ground is HOL_MESH_FLOOR, everything else
  *   HOL_MESH_PROP.
  * - Content comes from the world when one is given (hol_world_get), else a
  *   deterministic placeholder from hol_tile_hash (a biome-tinted floor).
- * - Room meshes are in room coordinates (x east, z south, 0..3).
+ * - Room meshes are in room coordinates (metres: x east, z south, 0..C*M
+ *   and 0..R*M).
  */
 #ifndef HOL_SCENE_H
 #define HOL_SCENE_H
@@ -29,19 +32,19 @@ typedef struct hol_scene hol_scene;
 hol_err hol_scene_create(const hol_alloc *a, hol_scene **out);
 void hol_scene_destroy(const hol_alloc *a, hol_scene *s);
 
-/* Trees on the 16 room vertices, the boundary hedges and the backdrop
- * forest. The tree kinds come from the world when given: each room vertex
+/* Trees on the (C+1)(R+1) room vertices, the boundary hedges and the
+ * backdrop forest, for the user's C x R room of cell_m metres (0: 1). The tree kinds come from the world when given: each room vertex
  * as a corner of the adjacent cell nearest the user's cell, reached by the
  * room walk columns first (a function of the user's state only). */
 void hol_scene_room(const hol_scene *s, hol_mesh *out, const hol_room *user,
-                    struct hol_world *world);
+                    struct hol_world *world, double cell_m);
 
 /* The mesh of tile t in its own frame; bare: the ground only. pole >= 0
  * adds a tall guide pole of colour pole (objective index). Game objects
  * are drawn as the app says, not from the world's content: kind is a
  * HOL_RENDER_OBJ_* (0: none) drawn at the tile's centre. */
 void hol_scene_tile(const hol_scene *s, hol_mesh *out, hol_tile t,
-                    struct hol_world *world, int bare, int pole, int kind);
+                    struct hol_world *world, int bare, int pole, int kind, double cell_m);
 
 /* Sky / fog colour (linear 0..1). */
 void hol_scene_sky(float out_rgb[3]);

@@ -143,9 +143,10 @@ uint8_t hol_view_mask(const uint8_t *steps, int n)
     return (uint8_t)mask;
 }
 
-/* Trace the half-line from (ex,ez) in direction (dx,dz) through the cells:
- * room steps up to and including the one that leaves the room. */
-static int hol__trace(double ex, double ez, double dx, double dz,
+/* Trace the half-line from (ex,ez) in direction (dx,dz) through the cells
+ * of a cols x rows room: room steps up to and including the one that
+ * leaves the room. */
+static int hol__trace(double ex, double ez, double dx, double dz, int cols, int rows,
                       uint8_t steps[HOL_VIEW_MAX_STEPS])
 {
     int c = (int)floor(ex), r = (int)floor(ez), n = 0;
@@ -161,7 +162,7 @@ static int hol__trace(double ex, double ez, double dx, double dz,
             r += dz > 0 ? 1 : -1;
         }
         steps[n++] = (uint8_t)d;
-        if (c < 0 || c >= HOL_ROOM_SIZE || r < 0 || r >= HOL_ROOM_SIZE)
+        if (c < 0 || c >= cols || r < 0 || r >= rows)
             break;
     }
     return n;
@@ -181,7 +182,8 @@ static void hol__add_branch(hol_view *v, const hol_room *user, const uint8_t *st
             return;
     }
     if (v->nbranches >= HOL_VIEW_MAX_BRANCHES)
-        return; /* cannot happen in a 3 x 3 room (at most ~40) */
+        return; /* cannot happen (at most ~40 in 3 x 3; test_render_tiles
+                   counts the 5 x 5 room's) */
     hol_view_branch *b = &v->branches[v->nbranches++];
     memset(b, 0, sizeof *b);
     b->state = *user;
@@ -189,43 +191,40 @@ static void hol__add_branch(hol_view *v, const hol_room *user, const uint8_t *st
     if (n > 0)
         memcpy(b->steps, steps, (size_t)n);
     b->err = hol_room_walk(&b->state, steps, (size_t)n, NULL);
-    if (stencil && n > 0) {
+    if (stencil && n > 0 && !v->wedges) {
         b->ref = hol_view_code(steps, n);
         b->mask = hol_view_mask(steps, n);
     }
 }
 
-hol_err hol_view_build(const hol_room *user, double ex, double ez, int euclidean,
-                       hol_view *out)
+/* The Euclidean baseline: one branch per cell, columns first, then rows. */
+static void hol__build_flat(hol_view *out, const hol_room *user, int cols, int rows)
 {
-    if (!(ex > user->col && ex < user->col + 1 && ez > user->row &&
-          ez < user->row + 1))
-        return HOL_EARG;
-    memset(out, 0, sizeof *out);
-    out->euclidean = euclidean ? 1 : 0;
-    hol__add_branch(out, user, NULL, 0, 0);
-    if (euclidean) {
-        for (int r = 0; r < HOL_ROOM_SIZE; r++)
-            for (int c = 0; c < HOL_ROOM_SIZE; c++) {
-                uint8_t steps[4];
-                int n = 0;
-                for (int k = user->col; k < c; k++)
-                    steps[n++] = HOL_DIR_E;
-                for (int k = user->col; k > c; k--)
-                    steps[n++] = HOL_DIR_W;
-                for (int k = user->row; k < r; k++)
-                    steps[n++] = HOL_DIR_S;
-                for (int k = user->row; k > r; k--)
-                    steps[n++] = HOL_DIR_N;
-                hol__add_branch(out, user, steps, n, 0);
-            }
-        return HOL_OK;
-    }
-    /* directions to the vertices, sorted by angle, collinear ones merged */
-    double dirs[16][2], ang[16];
+    for (int r = 0; r < rows; r++)
+        for (int c = 0; c < cols; c++) {
+            uint8_t steps[2 * HOL_ROOM_MAX_SIDE];
+            int n = 0;
+            for (int k = user->col; k < c; k++)
+                steps[n++] = HOL_DIR_E;
+            for (int k = user->col; k > c; k--)
+                steps[n++] = HOL_DIR_W;
+            for (int k = user->row; k < r; k++)
+                steps[n++] = HOL_DIR_S;
+            for (int k = user->row; k > r; k--)
+                steps[n++] = HOL_DIR_N;
+            hol__add_branch(out, user, steps, n, 0);
+        }
+}
+
+/* The directions from the eye to the room's vertices, sorted by angle,
+ * collinear ones merged; returns their number. */
+static int hol__vertex_dirs(double ex, double ez, int cols, int rows,
+                            double dirs[HOL_VIEW_MAX_LEAVES][2])
+{
+    double ang[HOL_VIEW_MAX_LEAVES];
     int nd = 0;
-    for (int j = 0; j <= HOL_ROOM_SIZE; j++)
-        for (int i = 0; i <= HOL_ROOM_SIZE; i++) {
+    for (int j = 0; j <= rows; j++)
+        for (int i = 0; i <= cols; i++) {
             double dx = i - ex, dz = j - ez, l = sqrt(dx * dx + dz * dz);
             double u[2] = {dx / l, dz / l};
             int dup = 0;
@@ -246,6 +245,55 @@ hol_err hol_view_build(const hol_room *user, double ex, double ez, int euclidean
             dirs[k][0] = u[0];
             dirs[k][1] = u[1];
         }
+    return nd;
+}
+
+/* 1 when leaf lf continues branch b (b's steps are a proper prefix). */
+static int hol__leaf_has(const hol_view_leaf *lf, const hol_view_branch *b)
+{
+    return lf->nsteps > b->nsteps && !memcmp(lf->steps, b->steps, b->nsteps);
+}
+
+/* Each branch's wedge: its leaves are contiguous in angle (cyclically):
+ * from the first's u0 to the last's u1. */
+static void hol__wedges(hol_view *v)
+{
+    int nl = v->nleaves;
+    for (int i = 1; i < v->nbranches; i++) {
+        hol_view_branch *b = &v->branches[i];
+        for (int k = 0; k < nl; k++) {
+            if (!hol__leaf_has(&v->leaves[k], b) ||
+                hol__leaf_has(&v->leaves[(k + nl - 1) % nl], b))
+                continue;
+            int e = k;
+            while (hol__leaf_has(&v->leaves[(e + 1) % nl], b) && (e + 1) % nl != k)
+                e = (e + 1) % nl;
+            memcpy(b->w0, v->leaves[k].u0, sizeof b->w0);
+            memcpy(b->w1, v->leaves[e].u1, sizeof b->w1);
+            break;
+        }
+    }
+}
+
+hol_err hol_view_build(const hol_room *user, double ex, double ez, int euclidean,
+                       hol_view *out)
+{
+    int cols = hol_room_cols(user), rows = hol_room_rows(user);
+    if (cols > HOL_ROOM_MAX_SIDE || rows > HOL_ROOM_MAX_SIDE)
+        return HOL_EARG;
+    if (!(ex > user->col && ex < user->col + 1 && ez > user->row &&
+          ez < user->row + 1))
+        return HOL_EARG;
+    memset(out, 0, sizeof *out);
+    out->euclidean = euclidean ? 1 : 0;
+    out->wedges = !euclidean && (cols != HOL_ROOM_SIZE || rows != HOL_ROOM_SIZE);
+    hol__add_branch(out, user, NULL, 0, 0);
+    if (euclidean) {
+        hol__build_flat(out, user, cols, rows);
+        return HOL_OK;
+    }
+    double dirs[HOL_VIEW_MAX_LEAVES][2];
+    int nd = hol__vertex_dirs(ex, ez, cols, rows, dirs);
     for (int k = 0; k < nd; k++) {
         const double *u0 = dirs[k], *u1 = dirs[(k + 1) % nd];
         double mx = u0[0] + u1[0], mz = u0[1] + u1[1];
@@ -254,11 +302,12 @@ hol_err hol_view_build(const hol_room *user, double ex, double ez, int euclidean
         lf->u0[1] = u0[1];
         lf->u1[0] = u1[0];
         lf->u1[1] = u1[1];
-        lf->nsteps = (uint8_t)hol__trace(ex, ez, mx, mz, lf->steps);
-        lf->code = hol_view_code(lf->steps, lf->nsteps);
+        lf->nsteps = (uint8_t)hol__trace(ex, ez, mx, mz, cols, rows, lf->steps);
+        lf->code = out->wedges ? 0 : hol_view_code(lf->steps, lf->nsteps);
         for (int n = 1; n < lf->nsteps; n++)
             hol__add_branch(out, user, lf->steps, n, 1);
     }
+    hol__wedges(out);
     return HOL_OK;
 }
 

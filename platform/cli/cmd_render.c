@@ -29,7 +29,8 @@ static const char *const render_usage =
     "                       [--frames N] [--seed S] [--hud] [--hand X,Y,Z]\n"
     "                       [--target ADDR] [--orient X,Y,Z,W --tan L,R,D,U]\n"
     "                       [--gl osmesa|egl] [--stereo IPD] [--window]\n"
-    "                       [--keys SCRIPT]\n"
+    "                       [--keys SCRIPT] [--tiling 4,Q] [--room CxR]\n"
+    "                       [--cell M]\n"
     "\n"
     "Render what the user sees and write a PNG: headless (OSMesa, or EGL\n"
     "surfaceless), or live in a window (--window).\n"
@@ -37,6 +38,13 @@ static const char *const render_usage =
     "  --walk W        walk inside the room from the start (N, E, S, W; '-'\n"
     "                  for none, the default): sets the user's tile,\n"
     "                  orientation and cell\n"
+    "  --tiling 4,Q    the tiling {4,Q}, Q from 4 (the flat grid) to 8\n"
+    "                  (default 4,5)\n"
+    "  --room CxR      a room of C x R cells, 3 to 5 each (default 3x3); the\n"
+    "                  walk starts on cell (C/2, R/2)\n"
+    "  --cell M        the side of a cell in metres, 0.5 to 1.5 (default 1):\n"
+    "                  cell (c,r) spans x in [c*M, (c+1)*M], z in [r*M,\n"
+    "                  (r+1)*M]\n"
     "  --eye X,Y,Z     eye in room coordinates (metres; x east, y up, z\n"
     "                  south); x,z strictly inside the cell the walk ends in,\n"
     "                  y in (0.01, 100]. Default: that cell's centre at 1.6\n"
@@ -48,12 +56,13 @@ static const char *const render_usage =
     "  --tile-ids FILE write 'PX PY ADDRESS' for every pixel showing floor\n"
     "                  (PX from the left, PY from the top, pixel centres)\n"
     "  --stats         print draw calls, triangles, stencil passes, CPU ms\n"
-    "  --euclidean     the same nine cells as a flat room, no portals\n"
+    "  --euclidean     the room's cells as a flat room, no portals\n"
     "  --bare          floors only (no trees, hedges, props): for tests\n"
     "  --frames N      render N times, 1..1000 (stats: median CPU ms), default 1\n"
     "  --seed S        world seed (decimal or 0x hex; default 1): the forest\n"
     "                  content\n"
-    "  --hud           draw the HUD text and the Poincare minimap\n"
+    "  --hud           draw the HUD text and the Poincare minimap (in {4,4}\n"
+    "                  a plain top view, captioned so)\n"
     "  --hand X,Y,Z    the minimap in the hand instead: a 25 cm square at\n"
     "                  X,Y,Z (room coordinates, 0.05..2 m from the eye across\n"
     "                  the floor) facing the eye; implies --hud\n"
@@ -77,7 +86,7 @@ static const char *const render_usage =
     "                  view's half-angles (L, D negative); --yaw, --pitch and\n"
     "                  --fov are then ignored\n"
     "\n"
-    "Floor outside the 3 x 3 room is never shown: 2 m hedges stand on the\n"
+    "Floor outside the room is never shown: 2 m hedges stand on the\n"
     "room boundary. Without --window, at least one of --out, --tile-ids,\n"
     "--stats is needed.\n"
     "Exit status: 0 ok, 1 render or write failure, 2 bad input.\n";
@@ -304,16 +313,20 @@ enum { RENDER_OSMESA, RENDER_EGL, RENDER_WINDOW };
 
 typedef struct render_opts {
     const char *walk, *eye, *out, *ids, *keys, *hand, *orient, *tan;
+    const char *target_s[HOL_RENDER_MAX_OBJECTIVES]; /* resolved in the tiling */
     double yaw, pitch, fov, ipd;
     long w, h, frames;
     int frames_set, stats, flags, ntargets, gl;
+    int q, cols, rows;  /* --tiling, --room (0: the defaults) */
+    double cell_m;      /* --cell (default 1) */
     uint64_t seed;
     hol_tile targets[HOL_RENDER_MAX_OBJECTIVES];
 } render_opts;
 
 static const char *const render_value_opts[] = {
     "--walk", "--eye", "--hand", "--orient", "--tan", "--yaw", "--pitch", "--size", "--out",
-    "--tile-ids", "--fov", "--frames", "--seed", "--target", "--gl", "--stereo", "--keys"};
+    "--tile-ids", "--fov", "--frames", "--seed", "--target", "--gl", "--stereo", "--keys",
+    "--cell"};
 
 static int takes_value(const char *a)
 {
@@ -359,6 +372,9 @@ static int parse_number_opt(const char *cmd, render_opts *o, const char *a, cons
     } else if (!strcmp(a, "--stereo")) {
         if (parse_double(val, &o->ipd) || o->ipd <= 0 || o->ipd > 0.2)
             bad = "is not an eye distance in (0, 0.2] m";
+    } else if (!strcmp(a, "--cell")) {
+        if (parse_double(val, &o->cell_m) || !(o->cell_m >= 0.5 && o->cell_m <= 1.5))
+            bad = "is not a cell side in metres from 0.5 to 1.5";
     } else {
         return 0;
     }
@@ -388,10 +404,7 @@ static int parse_value_opt(const char *cmd, render_opts *o, const char *a, const
             cli_error(cmd, 0, "more than %d --target options", HOL_RENDER_MAX_OBJECTIVES);
             return CLI_EXIT_USAGE;
         }
-        if (hol_tile_resolve(val, -1, &o->targets[o->ntargets++])) {
-            cli_error(cmd, 0, "--target '%.40s' is not a tile address", val);
-            return CLI_EXIT_USAGE;
-        }
+        o->target_s[o->ntargets++] = val;
     } else if (!strcmp(a, "--gl")) {
         if (strcmp(val, "egl") && strcmp(val, "osmesa")) {
             cli_error(cmd, 0, "--gl '%.40s' is not osmesa or egl", val);
@@ -435,6 +448,8 @@ static int check_opts(const char *cmd, render_opts *o)
         why = "--window shows one eye live; drop --stereo, --tile-ids, --stats";
     else if (o->keys && o->gl != RENDER_WINDOW)
         why = "--keys drives --window";
+    else if (o->gl == RENDER_WINDOW && o->cell_m != 1.0)
+        why = "--window walks cells of 1 m; 'holonomy play --cell M' walks other cells";
     else if (o->ipd > 0 && o->ids)
         why = "--tile-ids works on one eye; drop --stereo";
     else if (o->ipd > 0 && o->w < 2)
@@ -470,8 +485,14 @@ static int parse_opts(const char *cmd, int argc, char **argv, render_opts *o)
     o->frames = 1;
     o->flags = HOL_RENDER_NO_HUD;
     o->seed = CLI_SEED_DEFAULT;
+    o->cell_m = 1.0;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
+        int g = cli_geometry_option(cmd, argc, argv, &i, &o->q, &o->cols, &o->rows);
+        if (g < 0)
+            return CLI_EXIT_USAGE;
+        if (g > 0)
+            continue;
         if (takes_value(a)) {
             if (i + 1 >= argc) {
                 cli_error(cmd, 0, "%s needs a value; see 'holonomy render --help'", a);
@@ -485,6 +506,11 @@ static int parse_opts(const char *cmd, int argc, char **argv, render_opts *o)
             return CLI_EXIT_USAGE;
         }
     }
+    for (int k = 0; k < o->ntargets; k++)
+        if (hol_tile_resolve_q(o->q ? o->q : 5, o->target_s[k], -1, &o->targets[k])) {
+            cli_error(cmd, 0, "--target '%.40s' is not a tile address", o->target_s[k]);
+            return CLI_EXIT_USAGE;
+        }
     return check_opts(cmd, o);
 }
 
@@ -515,9 +541,10 @@ static int setup_hand(const char *cmd, const char *hand, hol_frame_desc *fd)
 static int setup_eye(const char *cmd, const render_opts *o, hol_frame_desc *fd)
 {
     const hol_room *u = &fd->user;
-    fd->cam.eye[0] = u->col + 0.5;
+    const double m = fd->cell_m;
+    fd->cam.eye[0] = (u->col + 0.5) * m;
     fd->cam.eye[1] = 1.6;
-    fd->cam.eye[2] = u->row + 0.5;
+    fd->cam.eye[2] = (u->row + 0.5) * m;
     if (o->eye && parse_vec3(o->eye, fd->cam.eye)) {
         cli_error(cmd, 0, "--eye '%.40s' is not three numbers X,Y,Z", o->eye);
         return CLI_EXIT_USAGE;
@@ -525,11 +552,13 @@ static int setup_eye(const char *cmd, const render_opts *o, hol_frame_desc *fd)
     if (o->hand && setup_hand(cmd, o->hand, fd))
         return CLI_EXIT_USAGE;
     const double *he = fd->cam.eye;
-    if (!(he[0] > u->col && he[0] < u->col + 1 && he[2] > u->row && he[2] < u->row + 1)) {
+    if (!(he[0] > u->col * m && he[0] < (u->col + 1) * m && he[2] > u->row * m &&
+          he[2] < (u->row + 1) * m)) {
         cli_error(cmd, 0,
                   "--eye x,z = %g,%g is not strictly inside cell (%d,%d) where the "
-                  "walk ends (x in (%d,%d), z in (%d,%d))",
-                  he[0], he[2], u->col, u->row, u->col, u->col + 1, u->row, u->row + 1);
+                  "walk ends (x in (%g,%g), z in (%g,%g))",
+                  he[0], he[2], u->col, u->row, u->col * m, (u->col + 1) * m, u->row * m,
+                  (u->row + 1) * m);
         return CLI_EXIT_USAGE;
     }
     if (!(he[1] > 0.01 && he[1] <= 100)) {
@@ -549,7 +578,8 @@ static int setup_frame(const char *cmd, const render_opts *o, hol_frame_desc *fd
         return CLI_EXIT_FAIL;
     }
     memset(fd, 0, sizeof *fd);
-    fd->user = hol_room_start();
+    fd->cell_m = o->cell_m;
+    hol_room_start_in(o->q, o->cols, o->rows, &fd->user); /* checked values */
     hol_err err = hol_walk_parse(o->walk, wlen, dirs, wlen + 1, &nd, &bad);
     if (!err)
         err = hol_room_walk(&fd->user, dirs, nd, &done);
@@ -639,6 +669,9 @@ static void setup_path(const render_opts *o, hol_frame_desc *fd)
     hol_nav *nav = NULL;
     hol_nav_desc navd;
     memset(&navd, 0, sizeof navd);
+    navd.tiling_q = hol_tile_q(fd->user.tile);
+    navd.room_cols = hol_room_cols(&fd->user);
+    navd.room_rows = hol_room_rows(&fd->user);
     hol_nav_result nr;
     if (!hol_nav_create(&navd, &nav) &&
         !hol_nav_find(nav, &fd->user, o->targets[0], 200000, path, sizeof path, &nr)) {
@@ -655,6 +688,7 @@ static int setup_scene(const char *cmd, const render_opts *o, int gl, hol_frame_
     memset(&wd, 0, sizeof wd);
     wd.seed = o->seed;
     wd.capacity = 1u << 14;
+    wd.tiling_q = o->q;
     hol_err err = hol_world_make(&wd, &sc->world);
     if (!err)
         err = hol_world_update(sc->world, &fd->user);
@@ -700,8 +734,11 @@ static int setup_eyes(const char *cmd, const render_opts *o, const hol_frame_des
         eye_fd[e].cam.eye[0] = fd->cam.eye[0] + side * cos(yr);
         eye_fd[e].cam.eye[2] = fd->cam.eye[2] - side * sin(yr);
         eye_fd[e].cam.width = (int)o->w / 2;
-        hol_err err = hol_motion_eye_state(&fd->user, fd->cam.eye, eye_fd[e].cam.eye,
-                                           &eye_fd[e].user);
+        /* in cells of 1 (the state does not depend on the cell's size) */
+        double head[3] = {fd->cam.eye[0] / fd->cell_m, fd->cam.eye[1], fd->cam.eye[2] / fd->cell_m};
+        double eye[3] = {eye_fd[e].cam.eye[0] / fd->cell_m, eye_fd[e].cam.eye[1],
+                         eye_fd[e].cam.eye[2] / fd->cell_m};
+        hol_err err = hol_motion_eye_state(&fd->user, head, eye, &eye_fd[e].user);
         if (err) {
             cli_error(cmd, 0, "--stereo: the %s eye is %s", e ? "right" : "left",
                       err == HOL_EROOM ? "outside the room" : "not in a cell");
