@@ -19,8 +19,8 @@
 #define HOL__ROOM_V (1u << 16)
 #define HOL__ROOM_I (1u << 17)
 /* Tile meshes resident at once: a frame shows at most ~40 tiles in the
- * 3 x 3 room and ~130 in the 5 x 5 one (test_render_tiles counts them). */
-#define HOL__SLOTS 160
+ * 3 x 3 room and 65 in a 5 x 5 one (test_render_tiles counts them). */
+#define HOL__SLOTS 96
 #define HOL__SLOT_V 8192u
 #define HOL__SLOT_I 16384u
 #define HOL__HUD_V (1u << 14) /* the resident minimap, after the slots */

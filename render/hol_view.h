@@ -54,7 +54,7 @@
  * leaving the room; branches: every in-room prefix of every leaf. */
 #define HOL_VIEW_MAX_LEAVES 36
 #define HOL_VIEW_MAX_STEPS 10
-#define HOL_VIEW_MAX_BRANCHES 192
+#define HOL_VIEW_MAX_BRANCHES 128
 #define HOL_VIEW_STENCIL_CLEAR 0x80 /* matches no branch */
 
 typedef struct hol_camera {

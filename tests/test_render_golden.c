@@ -45,28 +45,60 @@ typedef struct golden_view {
     const char *name, *walk;
     double eye[3], yaw, pitch, fov;
     int flags;
+    /* geometry (SPEC 7): tiling Q, room C x R, cell M metres; 0: {4,5},
+     * 3 x 3, 1 m. Each tiling gets a world of its own (same seed). */
+    int q, cols, rows;
+    double cell;
 } golden_view;
 
 static const golden_view views[] = {
-    {"centre_north", "-", {1.5, 1.6, 1.5}, 0, -30, 90, 0},
-    {"centre_down", "-", {1.45, 1.6, 1.55}, 20, -89, 100, 0},
-    {"centre_bare", "-", {1.5, 1.6, 1.5}, 0, -35, 90, HOL_RENDER_BARE},
-    {"corner_across_vertices", "NW", {0.3, 1.6, 0.3}, -135, -30, 90, 0},
-    {"corner_se", "SE", {2.7, 1.6, 2.7}, 45, -25, 90, 0},
-    {"edge_north", "N", {1.5, 1.6, 0.4}, 180, -30, 90, 0},
-    {"along_edge", "E", {2.5, 1.6, 1.03}, 90, -15, 90, 0},
-    {"along_edge_bare", "E", {2.5, 1.6, 1.03}, 90, -15, 90, HOL_RENDER_BARE},
-    {"deep_tile", "NWSSEEN", {2.3, 1.7, 1.6}, 120, -30, 90, 0},
-    {"low_eye", "S", {1.6, 0.8, 2.4}, 10, -10, 90, 0},
-    {"wide_west", "W", {0.7, 1.6, 1.3}, -70, -35, 120, 0},
-    {"euclidean_centre", "-", {1.5, 1.6, 1.5}, 0, -30, 90, HOL_RENDER_EUCLIDEAN},
-    {"minimap", "NE", {2.4, 1.6, 0.6}, 135, -30, 90, HOL_RENDER_MINIMAP},
+    {"centre_north", "-", {1.5, 1.6, 1.5}, 0, -30, 90, 0, 0, 0, 0, 0},
+    {"centre_down", "-", {1.45, 1.6, 1.55}, 20, -89, 100, 0, 0, 0, 0, 0},
+    {"centre_bare", "-", {1.5, 1.6, 1.5}, 0, -35, 90, HOL_RENDER_BARE, 0, 0, 0, 0},
+    {"corner_across_vertices", "NW", {0.3, 1.6, 0.3}, -135, -30, 90, 0, 0, 0, 0, 0},
+    {"corner_se", "SE", {2.7, 1.6, 2.7}, 45, -25, 90, 0, 0, 0, 0, 0},
+    {"edge_north", "N", {1.5, 1.6, 0.4}, 180, -30, 90, 0, 0, 0, 0, 0},
+    {"along_edge", "E", {2.5, 1.6, 1.03}, 90, -15, 90, 0, 0, 0, 0, 0},
+    {"along_edge_bare", "E", {2.5, 1.6, 1.03}, 90, -15, 90, HOL_RENDER_BARE, 0, 0, 0, 0},
+    {"deep_tile", "NWSSEEN", {2.3, 1.7, 1.6}, 120, -30, 90, 0, 0, 0, 0, 0},
+    {"low_eye", "S", {1.6, 0.8, 2.4}, 10, -10, 90, 0, 0, 0, 0, 0},
+    {"wide_west", "W", {0.7, 1.6, 1.3}, -70, -35, 120, 0, 0, 0, 0, 0},
+    {"euclidean_centre", "-", {1.5, 1.6, 1.5}, 0, -30, 90, HOL_RENDER_EUCLIDEAN, 0, 0, 0, 0},
+    {"minimap", "NE", {2.4, 1.6, 0.6}, 135, -30, 90, HOL_RENDER_MINIMAP, 0, 0, 0, 0},
     {"minimap_hand", "NE", {2.4, 1.6, 0.6}, 135, -30, 90,
-     HOL_RENDER_MINIMAP | HOL_RENDER_MINIMAP_HAND},
+     HOL_RENDER_MINIMAP | HOL_RENDER_MINIMAP_HAND, 0, 0, 0, 0},
+    /* other geometries: the same corner view in {4,4} (a flat grid: the
+     * map a plain top view, captioned), {4,6} and {4,8}; a 5 x 5 room;
+     * a 4 x 4 room of 0.7 m cells in {4,6}; the flat map in the hand */
+    {"q4_corner", "NE", {2.4, 1.6, 0.6}, 135, -30, 90, HOL_RENDER_MINIMAP, 4, 0, 0, 0},
+    {"q6_corner", "NE", {2.4, 1.6, 0.6}, 135, -30, 90, HOL_RENDER_MINIMAP, 6, 0, 0, 0},
+    {"q8_corner", "NE", {2.4, 1.6, 0.6}, 135, -30, 90, HOL_RENDER_MINIMAP, 8, 0, 0, 0},
+    {"q4_hand", "NE", {2.4, 1.6, 0.6}, 135, -30, 90,
+     HOL_RENDER_MINIMAP | HOL_RENDER_MINIMAP_HAND, 4, 0, 0, 0},
+    {"room5x5", "NW", {1.3, 1.6, 1.2}, -135, -25, 100, HOL_RENDER_MINIMAP, 5, 5, 5, 0},
+    {"cell07_q6_room4x4", "E", {2.2, 1.6, 1.6}, 100, -30, 90, HOL_RENDER_MINIMAP, 6, 4, 4, 0.7},
 };
 
 static render_fixture fx;
 static char out_dir[512];
+static struct hol_world *qworlds[9]; /* tilings other than {4,5}, by Q */
+
+/* The world of tiling {4,q}: the fixture's for {4,5}, else one of the
+ * same seed made on first use. */
+static struct hol_world *geometry_world(int q)
+{
+    if (q == 5)
+        return fx.world;
+    if (!qworlds[q]) {
+        hol_world_desc wd;
+        memset(&wd, 0, sizeof wd);
+        wd.seed = 2;
+        wd.capacity = 1u << 14;
+        wd.tiling_q = q;
+        assert_int_equal(hol_world_make(&wd, &qworlds[q]), HOL_OK);
+    }
+    return qworlds[q];
+}
 
 static int setup(void **state)
 {
@@ -77,6 +109,8 @@ static int setup(void **state)
 static int teardown(void **state)
 {
     (void)state;
+    for (int q = 0; q < 9; q++)
+        hol_world_destroy(qworlds[q]);
     render_fixture_destroy(&fx);
     return 0;
 }
@@ -85,7 +119,11 @@ static void render_with(hol_render *rr, const golden_view *g, uint8_t *rgba)
 {
     hol_frame_desc f;
     memset(&f, 0, sizeof f);
-    f.user = hol_room_start();
+    int q = g->q ? g->q : 5;
+    assert_int_equal(hol_room_start_in(q, g->cols, g->rows, &f.user), HOL_OK);
+    f.cell_m = g->cell;
+    struct hol_world *world = geometry_world(q);
+    hol_render_set_world(rr, world);
     for (const char *p = g->walk; *p && *p != '-'; p++)
         assert_int_equal(hol_room_step(&f.user, hol_dir_from_char(*p)), HOL_OK);
     memcpy(f.cam.eye, g->eye, sizeof f.cam.eye);
@@ -108,17 +146,18 @@ static void render_with(hol_render *rr, const golden_view *g, uint8_t *rgba)
         f.hand_size = 0.3;
     }
     f.nobjectives = 2;
-    assert_int_equal(hol_tile_resolve("Nrfl", -1, &f.objectives[0]), HOL_OK);
-    assert_int_equal(hol_tile_resolve("Wlffr", -1, &f.objectives[1]), HOL_OK);
+    assert_int_equal(hol_tile_resolve_q(q, "Nrfl", -1, &f.objectives[0]), HOL_OK);
+    assert_int_equal(hol_tile_resolve_q(q, "Wlffr", -1, &f.objectives[1]), HOL_OK);
     f.objective_text = "find the key";
     static const uint8_t path[] = {HOL_DIR_W, HOL_DIR_W, HOL_DIR_S, HOL_DIR_S};
     f.path = path;
     f.npath = 4;
-    assert_int_equal(hol_world_update(fx.world, &f.user), HOL_OK);
+    assert_int_equal(hol_world_update(world, &f.user), HOL_OK);
     f.steps_taken = 2;
     f.time_s = 83;
     assert_int_equal(hol_render_frame(rr, &f, NULL), HOL_OK);
     hol_render_read_rgba(rr, W, H, rgba);
+    hol_render_set_world(rr, fx.world);
 }
 
 static void render_view(const golden_view *g, uint8_t *rgba)
@@ -241,17 +280,20 @@ static void test_stats_within_budget(void **state)
                 hol_room_step(&u, hol_dir_from_char(*p));
             g = (golden_view){"sweep", walks[k / 8],
                               {u.col + 0.1 + 0.1 * (k % 8), 1.6, u.row + 0.85 - 0.1 * (k % 8)},
-                              45.0 * (k % 8), -30, 100, HOL_RENDER_MINIMAP};
+                              45.0 * (k % 8), -30, 100, HOL_RENDER_MINIMAP, 0, 0, 0, 0};
         } else {
             g = views[k - 72];
         }
         for (int eu = 0; eu < 2; eu++) {
             hol_frame_desc f;
             memset(&f, 0, sizeof f);
-            f.user = hol_room_start();
+            int q = g.q ? g.q : 5;
+            assert_int_equal(hol_room_start_in(q, g.cols, g.rows, &f.user), HOL_OK);
+            f.cell_m = g.cell;
             for (const char *p = g.walk; *p && *p != '-'; p++)
                 hol_room_step(&f.user, hol_dir_from_char(*p));
-            assert_int_equal(hol_world_update(fx.world, &f.user), HOL_OK);
+            hol_render_set_world(fx.rnd, geometry_world(q));
+            assert_int_equal(hol_world_update(geometry_world(q), &f.user), HOL_OK);
             memcpy(f.cam.eye, g.eye, sizeof f.cam.eye);
             f.cam.yaw_deg = g.yaw;
             f.cam.pitch_deg = g.pitch;
@@ -264,7 +306,8 @@ static void test_stats_within_budget(void **state)
             assert_int_equal(hol_render_frame(fx.rnd, &f, &st), HOL_OK);
             assert_true(st.draw_calls <= 150);
             assert_true(st.triangles <= 300000);
-            if (eu)
+            hol_render_set_world(fx.rnd, fx.world);
+            if (eu || hol_render_last_view(fx.rnd)->wedges)
                 assert_int_equal(st.stencil_passes, 0);
             else
                 assert_true(st.stencil_passes >= 1 && st.stencil_passes <= HOL_VIEW_MAX_LEAVES);

@@ -16,6 +16,9 @@
  *   floor with the expected tile (props may hide floor, never add it).
  * The test was checked against deliberate bugs (stencil masks cut to the
  * first step, leaf wedges shifted by 0.02): each makes it fail.
+ * Geometry cases (SPEC 7): the tilings {4,4}..{4,8}, rooms of 3..5 cells a
+ * side (larger rooms tell branches apart by wedges, not stencil codes)
+ * and cells of M metres (the ray walk crosses the lines x = k*M, z = k*M).
  */
 #include <math.h>
 #include <setjmp.h>
@@ -47,27 +50,42 @@ typedef struct view_case {
     /* headset form: roll and an asymmetric frustum (tangents) */
     int pose;
     double roll, tl, tr, td, tu;
+    /* geometry: tiling Q, room C x R, cell M metres (0: 5, 3, 3, 1) */
+    int q, cols, rows;
+    double cell;
 } view_case;
 
+#define GEOM_CASES 9
+
 static const view_case cases[] = {
-    {"-", {1.5, 1.6, 1.5}, 0, -45, 90, 0, 0, 0, 0, 0, 0, 0},          /* centre cell */
-    {"-", {1.2, 1.6, 1.7}, 90, -30, 90, 0, 0, 0, 0, 0, 0, 0},         /* centre, looking west */
-    {"N", {1.5, 1.6, 0.3}, 180, -40, 90, 0, 0, 0, 0, 0, 0, 0},        /* edge cell, looking south */
-    {"NW", {0.2, 1.6, 0.2}, -135, -35, 90, 0, 0, 0, 0, 0, 0, 0},      /* corner, across the room */
-    {"SE", {2.8, 1.7, 2.9}, 45, -30, 100, 0, 0, 0, 0, 0, 0, 0},       /* other corner */
-    {"E", {2.5, 1.5, 1.02}, 90, -20, 90, 0, 0, 0, 0, 0, 0, 0},        /* along the edge z = 1 */
-    {"NW", {0.5, 1.6, 0.5}, -135, -40, 90, 0, 0, 0, 0, 0, 0, 0},      /* across the diagonal vertices */
-    {"-", {1.37, 1.6, 1.61}, 33, -90, 90, 0, 0, 0, 0, 0, 0, 0},       /* straight down */
-    {"NWSSEEN", {2.3, 1.8, 1.6}, 200, -25, 120, 0, 0, 0, 0, 0, 0, 0}, /* deeper tile, wide view */
-    {"S", {1.6, 0.5, 2.4}, 10, -10, 90, 0, 0, 0, 0, 0, 0, 0},         /* low eye, grazing */
-    {"W", {0.7, 1.6, 1.3}, -70, -35, 90, 0, 0, 0, 0, 0, 0, 0},
-    {"-", {1.5, 1.6, 1.5}, 0, -45, 90, HOL_RENDER_EUCLIDEAN, 0, 0, 0, 0, 0, 0},
-    {"NW", {0.2, 1.6, 0.2}, -135, -35, 90, HOL_RENDER_EUCLIDEAN, 0, 0, 0, 0, 0, 0},
+    {"-", {1.5, 1.6, 1.5}, 0, -45, 90, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}, /* centre cell */
+    {"-", {1.2, 1.6, 1.7}, 90, -30, 90, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}, /* centre, looking west */
+    {"N", {1.5, 1.6, 0.3}, 180, -40, 90, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}, /* edge cell, looking south */
+    {"NW", {0.2, 1.6, 0.2}, -135, -35, 90, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}, /* corner, across the room */
+    {"SE", {2.8, 1.7, 2.9}, 45, -30, 100, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}, /* other corner */
+    {"E", {2.5, 1.5, 1.02}, 90, -20, 90, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}, /* along the edge z = 1 */
+    {"NW", {0.5, 1.6, 0.5}, -135, -40, 90, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}, /* across the diagonal vertices */
+    {"-", {1.37, 1.6, 1.61}, 33, -90, 90, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}, /* straight down */
+    {"NWSSEEN", {2.3, 1.8, 1.6}, 200, -25, 120, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}, /* deeper tile, wide view */
+    {"S", {1.6, 0.5, 2.4}, 10, -10, 90, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}, /* low eye, grazing */
+    {"W", {0.7, 1.6, 1.3}, -70, -35, 90, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},
+    {"-", {1.5, 1.6, 1.5}, 0, -45, 90, HOL_RENDER_EUCLIDEAN, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},
+    {"NW", {0.2, 1.6, 0.2}, -135, -35, 90, HOL_RENDER_EUCLIDEAN, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},
     /* headset poses: roll and asymmetric per-eye frusta as OpenXR gives */
-    {"-", {1.47, 1.62, 1.55}, 20, -30, 0, 0, 1, 12, -1.05, 0.88, -1.12, 0.84},
-    {"SE", {2.6, 1.7, 2.7}, 50, -45, 0, 0, 1, -25, -0.9, 1.02, -1.2, 0.9},
-    {"N", {1.3, 1.5, 0.6}, 170, -60, 0, 0, 1, 40, -1.3, 0.7, -0.8, 1.1},
-    {"W", {0.5, 1.6, 1.5}, -80, -20, 0, HOL_RENDER_EUCLIDEAN, 1, 8, -1.0, 1.0, -1.1, 0.8},
+    {"-", {1.47, 1.62, 1.55}, 20, -30, 0, 0, 1, 12, -1.05, 0.88, -1.12, 0.84, 0, 0, 0, 0},
+    {"SE", {2.6, 1.7, 2.7}, 50, -45, 0, 0, 1, -25, -0.9, 1.02, -1.2, 0.9, 0, 0, 0, 0},
+    {"N", {1.3, 1.5, 0.6}, 170, -60, 0, 0, 1, 40, -1.3, 0.7, -0.8, 1.1, 0, 0, 0, 0},
+    {"W", {0.5, 1.6, 1.5}, -80, -20, 0, HOL_RENDER_EUCLIDEAN, 1, 8, -1.0, 1.0, -1.1, 0.8, 0, 0, 0, 0},
+    /* geometries (GEOM_CASES, last): tilings, rooms, cells */
+    {"NE", {2.4, 1.6, 0.6}, 135, -30, 90, 0, 0, 0, 0, 0, 0, 0, 4, 0, 0, 0},
+    {"NE", {2.4, 1.6, 0.6}, 135, -30, 90, 0, 0, 0, 0, 0, 0, 0, 6, 0, 0, 0},
+    {"SW", {0.3, 1.6, 2.8}, -45, -35, 100, 0, 0, 0, 0, 0, 0, 0, 8, 0, 0, 0},
+    {"NW", {1.3, 1.6, 1.2}, -135, -30, 100, 0, 0, 0, 0, 0, 0, 0, 5, 5, 5, 0},
+    {"-", {2.45, 1.6, 2.6}, 20, -35, 100, 0, 0, 0, 0, 0, 0, 0, 7, 5, 5, 0},
+    {"E", {2.2, 1.6, 1.6}, 100, -30, 90, 0, 0, 0, 0, 0, 0, 0, 6, 4, 4, 0.7},
+    {"S", {3.0, 1.5, 2.9}, 200, -40, 90, 0, 0, 0, 0, 0, 0, 0, 5, 5, 3, 1.3},
+    {"N", {0.8, 1.6, 0.6}, 170, -45, 90, 0, 0, 0, 0, 0, 0, 0, 4, 3, 4, 0.5},
+    {"NW", {1.3, 1.6, 1.2}, -135, -30, 100, HOL_RENDER_EUCLIDEAN, 0, 0, 0, 0, 0, 0, 5, 5, 5, 0},
 };
 
 /* The renderer's camera for a case: yaw/pitch/fov, or the headset form
@@ -128,6 +146,21 @@ static hol_room state_of(const char *walk)
     return u;
 }
 
+/* A case's state: its walk from the start of its room in its tiling. */
+static hol_room case_state(const view_case *c)
+{
+    hol_room u;
+    assert_int_equal(hol_room_start_in(c->q, c->cols, c->rows, &u), HOL_OK);
+    for (const char *p = c->walk; *p && *p != '-'; p++)
+        assert_int_equal(hol_room_step(&u, hol_dir_from_char(*p)), HOL_OK);
+    return u;
+}
+
+static double case_cell(const view_case *c)
+{
+    return c->cell > 0 ? c->cell : 1.0;
+}
+
 /* The floor point of pixel (px, py) (fractional, pixel centres at .5). */
 static int floor_point(const view_case *c, double px, double py, double out[2])
 {
@@ -175,12 +208,14 @@ static int expected(const view_case *c, double px, double py, hol_tile *out)
     double p[2];
     if (!floor_point(c, px, py, p))
         return 0;
-    if (p[0] <= 0 || p[0] >= 3 || p[1] <= 0 || p[1] >= 3)
+    hol_room u = case_state(c);
+    const double m = case_cell(c);
+    const int cols = hol_room_cols(&u), rows = hol_room_rows(&u);
+    if (p[0] <= 0 || p[0] >= cols * m || p[1] <= 0 || p[1] >= rows * m)
         return 0;
     double ex = c->eye[0], ez = c->eye[2];
-    hol_room u = state_of(c->walk);
     if (c->flags & HOL_RENDER_EUCLIDEAN) {
-        int col = (int)floor(p[0]), row = (int)floor(p[1]);
+        int col = (int)floor(p[0] / m), row = (int)floor(p[1] / m);
         while (u.col != col)
             assert_int_equal(hol_room_step(&u, u.col < col ? HOL_DIR_E : HOL_DIR_W), 0);
         while (u.row != row)
@@ -188,14 +223,14 @@ static int expected(const view_case *c, double px, double py, hol_tile *out)
         *out = u.tile;
         return 1;
     }
-    cross cs[8];
+    cross cs[2 * HOL_ROOM_MAX_SIDE];
     int n = 0;
-    for (int k = 1; k < 3; k++) {
-        if ((ex < k) != (p[0] < k))
-            cs[n++] = (cross){(k - ex) / (p[0] - ex), p[0] > ex ? HOL_DIR_E : HOL_DIR_W};
-        if ((ez < k) != (p[1] < k))
-            cs[n++] = (cross){(k - ez) / (p[1] - ez), p[1] > ez ? HOL_DIR_S : HOL_DIR_N};
-    }
+    for (int k = 1; k < cols; k++)
+        if ((ex < k * m) != (p[0] < k * m))
+            cs[n++] = (cross){(k * m - ex) / (p[0] - ex), p[0] > ex ? HOL_DIR_E : HOL_DIR_W};
+    for (int k = 1; k < rows; k++)
+        if ((ez < k * m) != (p[1] < k * m))
+            cs[n++] = (cross){(k * m - ez) / (p[1] - ez), p[1] > ez ? HOL_DIR_S : HOL_DIR_N};
     qsort(cs, (size_t)n, sizeof cs[0], cmp_cross);
     double len = hypot(p[0] - ex, p[1] - ez);
     for (int i = 0; i + 1 < n; i++)
@@ -211,7 +246,8 @@ static void check_case(const view_case *c, int flags, int *out_checked)
 {
     hol_frame_desc f;
     memset(&f, 0, sizeof f);
-    f.user = state_of(c->walk);
+    f.user = case_state(c);
+    f.cell_m = c->cell;
     fill_cam(c, &f.cam);
     f.flags = c->flags | flags | HOL_RENDER_IDS | HOL_RENDER_NO_HUD;
     assert_int_equal(hol_render_frame(fx.rnd, &f, NULL), HOL_OK);
@@ -320,7 +356,8 @@ static void test_trunks_hide_seams(void **state)
         const view_case *c = &cases[i];
         hol_frame_desc f;
         memset(&f, 0, sizeof f);
-        f.user = state_of(c->walk);
+        f.user = case_state(c);
+        f.cell_m = c->cell;
         fill_cam(c, &f.cam);
         f.flags = c->flags | HOL_RENDER_IDS | HOL_RENDER_NO_HUD;
         assert_int_equal(hol_render_frame(fx.rnd, &f, NULL), HOL_OK);
@@ -334,12 +371,13 @@ static void test_trunks_hide_seams(void **state)
                 if (!floor_point(c, x + 0.5, y + 0.5, p))
                     fail_msg("pixel %d,%d shows floor above the horizon", x, y);
                 double ex = c->eye[0], ez = c->eye[2], dx = p[0] - ex, dz = p[1] - ez;
-                double l2 = dx * dx + dz * dz;
-                for (int vj = 0; vj <= 3; vj++)
-                    for (int vi = 0; vi <= 3; vi++) {
-                        double t = ((vi - ex) * dx + (vj - ez) * dz) / l2;
+                double l2 = dx * dx + dz * dz, m = case_cell(c);
+                hol_room u = case_state(c);
+                for (int vj = 0; vj <= hol_room_rows(&u); vj++)
+                    for (int vi = 0; vi <= hol_room_cols(&u); vi++) {
+                        double t = ((vi * m - ex) * dx + (vj * m - ez) * dz) / l2;
                         t = t < 0 ? 0 : t > 1 ? 1 : t;
-                        double d = hypot(ex + t * dx - vi, ez + t * dz - vj);
+                        double d = hypot(ex + t * dx - vi * m, ez + t * dz - vj * m);
                         if (d < 0.05)
                             fail_msg("case %s yaw %g: pixel %d,%d shows floor %.3f m "
                                      "from the trunk axis at vertex (%d,%d)",
@@ -410,7 +448,7 @@ static void test_creeks_continue_across_edges(void **state)
             if (hol_world_update(w, &u))
                 continue;
             view_case c = {walk, {1.5, 1.6, 1.5}, (double)(k * 90), -90, 110,
-                           HOL_RENDER_BARE, 0, 0, 0, 0, 0, 0};
+                           HOL_RENDER_BARE, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
             hol_frame_desc f;
             memset(&f, 0, sizeof f);
             f.user = u;
@@ -502,6 +540,59 @@ static void test_stencil_codes_are_prefix_codes(void **state)
     (void)pairs;
 }
 
+/* Larger rooms: branches are told apart by wedges. Over many eye
+ * positions in 5 x 5 rooms ({4,5} and {4,8}): the branches fit
+ * HOL_VIEW_MAX_BRANCHES with room to spare, the distinct tiles fit the
+ * renderer's 96 resident meshes (hol_render.c), and a branch's wedge holds exactly the
+ * leaves its steps are a prefix of (each leaf's middle direction). */
+static void test_wedges_in_large_rooms(void **state)
+{
+    (void)state;
+    uint64_t rng = 11;
+    int most = 0, most_tiles = 0;
+    for (int it = 0; it < 600; it++) {
+        hol_room u;
+        assert_int_equal(hol_room_start_in(it % 2 ? 8 : 5, 5, 5, &u), HOL_OK);
+        static const char *walks[] = {"NW", "NN", "NNWW", "-", "SSEE", "E", "WWS"};
+        for (const char *p = walks[it % 7]; *p && *p != '-'; p++)
+            assert_int_equal(hol_room_step(&u, hol_dir_from_char(*p)), HOL_OK);
+        rng = rng * 6364136223846793005ull + 1442695040888963407ull;
+        double ex = u.col + 0.01 + 0.98 * (double)(rng >> 11) / 9007199254740992.0;
+        rng = rng * 6364136223846793005ull + 1442695040888963407ull;
+        double ez = u.row + 0.01 + 0.98 * (double)(rng >> 11) / 9007199254740992.0;
+        static hol_view v;
+        assert_int_equal(hol_view_build(&u, ex, ez, 0, &v), HOL_OK);
+        assert_int_equal(v.wedges, 1);
+        assert_true(v.nbranches < HOL_VIEW_MAX_BRANCHES);
+        most = v.nbranches > most ? v.nbranches : most;
+        int ntiles = 0;
+        for (int b = 0; b < v.nbranches; b++) {
+            int seen = 0;
+            for (int o = 0; o < b && !seen; o++)
+                seen = hol_tile_eq(v.branches[o].state.tile, v.branches[b].state.tile);
+            ntiles += !seen;
+        }
+        most_tiles = ntiles > most_tiles ? ntiles : most_tiles;
+        for (int b = 1; b < v.nbranches; b++) {
+            const hol_view_branch *br = &v.branches[b];
+            assert_int_equal(br->mask, 0);
+            for (int l = 0; l < v.nleaves; l++) {
+                const hol_view_leaf *lf = &v.leaves[l];
+                double m[2] = {lf->u0[0] + lf->u1[0], lf->u0[1] + lf->u1[1]};
+                int in = br->w0[0] * m[1] - br->w0[1] * m[0] > 0 &&
+                         m[0] * br->w1[1] - m[1] * br->w1[0] > 0;
+                int prefix = lf->nsteps > br->nsteps &&
+                             !memcmp(lf->steps, br->steps, br->nsteps);
+                if (in != prefix)
+                    fail_msg("eye %.3f,%.3f: branch %d's wedge %s leaf %d", ex, ez, b,
+                             in ? "holds" : "misses", l);
+            }
+        }
+    }
+    printf("5 x 5 rooms: at most %d branches, %d distinct tiles\n", most, most_tiles);
+    assert_true(most_tiles <= 96);
+}
+
 static void test_ids_decode(void **state)
 {
     (void)state;
@@ -544,6 +635,7 @@ static void test_allocator_hooks(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_wedges_in_large_rooms),
         cmocka_unit_test(test_ids_decode),
         cmocka_unit_test(test_stencil_codes_are_prefix_codes),
         cmocka_unit_test(test_bare_views_match_ray_walk),
