@@ -31,6 +31,7 @@ void hol_app_frame_desc(const hol_app_view *v, int eye, int w, int h, double fov
         fd->user = v->user;
         memcpy(fd->cam.eye, v->head, sizeof fd->cam.eye);
     }
+    fd->cell_m = v->cell_m; /* the room's cells, for the view and the map */
     fd->cam.yaw_deg = v->yaw_deg;
     fd->cam.pitch_deg = v->pitch_deg;
     fd->cam.fovy_deg = fovy_deg > 0 ? fovy_deg : 90;

@@ -239,6 +239,7 @@ static int run_window(const char *cmd, hol_x11 *xw, hol_render *r, hol_world *wo
     md.speed = 1.8; /* 3 cm a frame at 60 Hz */
     md.margin = 0.05;
     md.eye_height = fd->cam.eye[1];
+    md.cell_m = fd->cell_m;
     hol_motion_init(&mo, &fd->user, &md);
     memcpy(mo.head, fd->cam.eye, sizeof mo.head);
     mo.yaw_deg = fd->cam.yaw_deg;
@@ -448,8 +449,6 @@ static int check_opts(const char *cmd, render_opts *o)
         why = "--window shows one eye live; drop --stereo, --tile-ids, --stats";
     else if (o->keys && o->gl != RENDER_WINDOW)
         why = "--keys drives --window";
-    else if (o->gl == RENDER_WINDOW && o->cell_m != 1.0)
-        why = "--window walks cells of 1 m; 'holonomy play --cell M' walks other cells";
     else if (o->ipd > 0 && o->ids)
         why = "--tile-ids works on one eye; drop --stereo";
     else if (o->ipd > 0 && o->w < 2)
@@ -734,11 +733,8 @@ static int setup_eyes(const char *cmd, const render_opts *o, const hol_frame_des
         eye_fd[e].cam.eye[0] = fd->cam.eye[0] + side * cos(yr);
         eye_fd[e].cam.eye[2] = fd->cam.eye[2] - side * sin(yr);
         eye_fd[e].cam.width = (int)o->w / 2;
-        /* in cells of 1 (the state does not depend on the cell's size) */
-        double head[3] = {fd->cam.eye[0] / fd->cell_m, fd->cam.eye[1], fd->cam.eye[2] / fd->cell_m};
-        double eye[3] = {eye_fd[e].cam.eye[0] / fd->cell_m, eye_fd[e].cam.eye[1],
-                         eye_fd[e].cam.eye[2] / fd->cell_m};
-        hol_err err = hol_motion_eye_state(&fd->user, head, eye, &eye_fd[e].user);
+        hol_err err = hol_motion_eye_state_m(&fd->user, fd->cell_m, fd->cam.eye,
+                                             eye_fd[e].cam.eye, &eye_fd[e].user);
         if (err) {
             cli_error(cmd, 0, "--stereo: the %s eye is %s", e ? "right" : "left",
                       err == HOL_EROOM ? "outside the room" : "not in a cell");
