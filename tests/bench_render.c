@@ -3,7 +3,11 @@
  * Per eye at most 150 draw calls and 300k triangles; the hyperbolic view at
  * most 1.25x the CPU time of the euclidean baseline (same nine cells, no
  * portals) at 1440 x 1584 under llvmpipe, measured side by side in one run
- * (interleaved frames, median of each). Prints the figures; exits 1 when a
+ * (interleaved frames, median of each). Then the frame time per geometry
+ * (SPEC 7): the tilings {4,4}..{4,8} in the 3 x 3 room, 5 x 5 rooms and a
+ * 4 x 4 room of 0.7 m cells, from the room's south-west corner looking
+ * across it (each tiling its own world, seed 2); the draw-call and
+ * triangle budgets hold there too. Prints the figures; exits 1 when a
  * budget is exceeded.
  */
 #include <stdio.h>
@@ -35,6 +39,72 @@ static int cmp_d(const void *a, const void *b)
 {
     double x = *(const double *)a, y = *(const double *)b;
     return x < y ? -1 : x > y;
+}
+
+typedef struct bgeom {
+    int q, cols, rows;
+    double cell;
+} bgeom;
+
+static const bgeom geoms[] = {
+    {4, 3, 3, 1}, {5, 3, 3, 1}, {6, 3, 3, 1}, {7, 3, 3, 1}, {8, 3, 3, 1},
+    {5, 5, 5, 1}, {8, 5, 5, 1}, {6, 4, 4, 0.7},
+};
+
+/* The frame time per geometry: 1 when a budget is exceeded. */
+static int bench_geometries(hol_render *r)
+{
+    int over = 0;
+    printf("  per geometry, from the south-west corner cell looking across the room:\n");
+    printf("  %-12s %8s %9s %8s %8s %6s %9s\n", "geometry", "ms", "draws", "tris", "stencil",
+           "branch", "queue ms");
+    for (size_t i = 0; i < sizeof geoms / sizeof geoms[0]; i++) {
+        const bgeom *g = &geoms[i];
+        hol_world *world;
+        hol_world_desc wd;
+        memset(&wd, 0, sizeof wd);
+        wd.seed = 2;
+        wd.capacity = 1u << 14;
+        wd.tiling_q = g->q;
+        hol_frame_desc f;
+        memset(&f, 0, sizeof f);
+        if (hol_world_make(&wd, &world) ||
+            hol_room_start_in(g->q, g->cols, g->rows, &f.user))
+            return 1;
+        while (f.user.col > 0)
+            hol_room_step(&f.user, HOL_DIR_W);
+        while (f.user.row < g->rows - 1)
+            hol_room_step(&f.user, HOL_DIR_S);
+        if (hol_world_update(world, &f.user))
+            return 1;
+        hol_render_set_world(r, world);
+        f.cell_m = g->cell;
+        f.cam.eye[0] = 0.15 * g->cell;
+        f.cam.eye[1] = 1.6;
+        f.cam.eye[2] = (g->rows - 0.15) * g->cell;
+        f.cam.yaw_deg = -30;
+        f.cam.pitch_deg = -22;
+        f.cam.width = BW;
+        f.cam.height = BH;
+        f.flags = HOL_RENDER_MINIMAP;
+        double t[FRAMES];
+        hol_render_stats st;
+        hol_render_frame(r, &f, &st); /* warm up */
+        for (int k = 0; k < FRAMES; k++) {
+            if (hol_render_frame(r, &f, &st))
+                return 1;
+            t[k] = st.cpu_ms;
+        }
+        qsort(t, FRAMES, sizeof t[0], cmp_d);
+        char name[32];
+        snprintf(name, sizeof name, "{4,%d} %dx%d %gm", g->q, g->cols, g->rows, g->cell);
+        printf("  %-12s %8.2f %9d %8ld %8d %6d %9.3f\n", name, t[FRAMES / 2], st.draw_calls,
+               st.triangles, st.stencil_passes, st.branches, st.build_ms);
+        over |= st.draw_calls > 150 || st.triangles > 300000;
+        hol_render_set_world(r, NULL);
+        hol_world_destroy(world);
+    }
+    return over;
 }
 
 int main(void)
@@ -125,6 +195,10 @@ int main(void)
     printf("  CPU hyperbolic / euclidean: %.3f (budget 1.25) %s\n", ratio,
            ratio <= 1.25 ? "ok" : "OVER BUDGET");
     over = max_dc > 150 || max_tri > 300000 || ratio > 1.25;
+    if (bench_geometries(r)) {
+        printf("  a geometry is OVER BUDGET (150 draw calls, 300000 triangles)\n");
+        over = 1;
+    }
     hol_render_destroy(r);
     hol_world_destroy(world);
     hol_osmesa_destroy(&gl);

@@ -131,4 +131,30 @@ expect_usage --out "$T/q.png" --orient 0,0,0,2 --tan -1,1,-1,1
 expect_usage --out "$T/q.png" --orient 0,0,1 --tan -1,1,-1,1
 expect_usage --out "$T/q.png" --orient 0,0,0,1 --tan 1,-1,-1,1
 expect_usage --out "$T/q.png" --orient 0,0,0,1 --tan -1,1,-1,1,0
+
+# geometries (SPEC 7): bad values one line, exit 2, no output
+for bad in "--tiling 4,3" "--tiling 4,9" "--tiling 5,5" "--tiling 4" "--room 2x3" \
+    "--room 6x6" "--room 3x" "--cell 0.4" "--cell 1.6" "--cell abc" "--cell 1,0" \
+    "--tiling 4,5 --tiling 4,6" "--room 4x4 --walk NNN" "--cell 0.5 --eye 1.5,1.6,1.5" \
+    "--room 4x4 --cell 0.7 --eye 1.1,1.6,1.1"; do
+    # shellcheck disable=SC2086
+    expect_usage $bad --out "$T/g.png"
+done
+[ ! -e "$T/g.png" ] || fail "a geometry usage error left an output file"
+# {4,4} in the 3 x 3 room: the floor shows only the room's nine tiles
+"$H" render --tiling 4,4 --walk NE --eye 2.4,1.6,0.6 --yaw 135 --pitch -40 --size 64x48 \
+    --tile-ids "$T/ids4" || fail "render --tiling 4,4"
+awk '{ print $3 }' "$T/ids4" | sort -u >"$T/tiles4"
+[ "$(wc -l <"$T/tiles4")" -ge 4 ] || fail "{4,4}: fewer than 4 tiles in view"
+[ "$(wc -l <"$T/tiles4")" -le 9 ] || fail "{4,4}: more than the room's nine tiles"
+awk 'length($0) > 2 { bad = 1 } END { exit bad }' "$T/tiles4" ||
+    fail "{4,4}: a tile farther than 2 steps from O in a 3 x 3 room"
+# {4,8}, a 5 x 5 room of 0.6 m cells: the default eye is the start cell's
+# centre (1.5, 1.6, 1.5) and the user's tile O is in view
+"$H" render --tiling 4,8 --room 5x5 --cell 0.6 --pitch -60 --size 64x48 \
+    --tile-ids "$T/ids8" --out "$T/g8.png" || fail "render --tiling 4,8 --room 5x5 --cell 0.6"
+grep -q ' O$' "$T/ids8" || fail "{4,8} 5x5: the user's tile O is not in view"
+[ "$(awk '{ print $3 }' "$T/ids8" | sort -u | wc -l)" -ge 9 ] ||
+    fail "{4,8} 5x5: fewer than 9 tiles in view"
+"$H" render --help | grep -q -- "--cell M" || fail "--help does not describe --cell"
 echo "cli_render: ok"
