@@ -56,7 +56,7 @@ static int bench_geometries(hol_render *r)
 {
     int over = 0;
     printf("  per geometry, from the south-west corner cell looking across the room:\n");
-    printf("  %-12s %8s %9s %8s %8s %6s %9s\n", "geometry", "ms", "draws", "tris", "stencil",
+    printf("  %-14s %8s %9s %8s %8s %6s %9s\n", "geometry", "ms", "draws", "tris", "stencil",
            "branch", "queue ms");
     for (size_t i = 0; i < sizeof geoms / sizeof geoms[0]; i++) {
         const bgeom *g = &geoms[i];
@@ -98,7 +98,7 @@ static int bench_geometries(hol_render *r)
         qsort(t, FRAMES, sizeof t[0], cmp_d);
         char name[32];
         snprintf(name, sizeof name, "{4,%d} %dx%d %gm", g->q, g->cols, g->rows, g->cell);
-        printf("  %-12s %8.2f %9d %8ld %8d %6d %9.3f\n", name, t[FRAMES / 2], st.draw_calls,
+        printf("  %-14s %8.2f %9d %8ld %8d %6d %9.3f\n", name, t[FRAMES / 2], st.draw_calls,
                st.triangles, st.stencil_passes, st.branches, st.build_ms);
         over |= st.draw_calls > 150 || st.triangles > 300000;
         hol_render_set_world(r, NULL);
