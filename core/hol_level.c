@@ -825,6 +825,14 @@ hol_err hol_level_set_geometry(hol_level *lv, int q, int cols, int rows, double 
     memcpy(text, add, n);
     memcpy(text + n, lv->text, lv->len);
     hol_err e = hol_level_make(lv->name, strlen(lv->name), text, n + lv->len, &nl, err);
+    if (e && err) {
+        /* lines of the file as it was (an added line itself: no line) */
+        long added = 0;
+        for (size_t i = 0; i < n; i++)
+            added += add[i] == '\n';
+        err->line = err->line > added ? err->line - added : 0;
+        err->other = err->other > added ? err->other - added : 0;
+    }
     if (e)
         return e;
     memcpy(nl.condition, lv->condition, sizeof nl.condition);

@@ -48,11 +48,46 @@ static hol_err hol__start_level(hol_session *s)
     if (e)
         snprintf(s->msg, sizeof s->msg, "level '%.60s' cannot start: %s",
                  s->levels[s->cur].name,
-                 e == HOL_EBUDGET ? "its optimum cannot be proved exact"
-                 : e == HOL_EARG  ? "an objective on the start tile, or a start walk leaving "
-                                    "the room"
-                                  : hol_err_str(e));
+                 e == HOL_EBUDGET     ? "its optimum cannot be proved exact"
+                 : e == HOL_EUNREACH ? "no walk inside its room reaches an objective"
+                 : e == HOL_EARG     ? "an objective on the start tile, or a start walk leaving "
+                                       "the room"
+                                     : hol_err_str(e));
     return e;
+}
+
+/* The navigators of the levels' geometries, made now (the first
+ * HOL_APP_MAX_NAVS of them), and every level of another geometry than
+ * {4,5} 3 x 3 started once, so one that cannot start is refused before
+ * the session begins; the first level is started last. */
+static hol_err hol__prepare_levels(hol_session *s)
+{
+    int made = 0;
+    for (int i = 0; i < s->nlevels; i++) {
+        const hol_app_level *L = &s->levels[i].lvl;
+        int fresh = 1;
+        for (int j = 0; j < i; j++) {
+            const hol_app_level *M = &s->levels[j].lvl;
+            fresh &= !(M->tiling_q == L->tiling_q && M->room_cols == L->room_cols &&
+                       M->room_rows == L->room_rows);
+        }
+        if (!fresh || made >= HOL_APP_MAX_NAVS)
+            continue;
+        made++;
+        hol_err e = hol_app_prepare(s->app, L->tiling_q, L->room_cols, L->room_rows);
+        if (e) {
+            snprintf(s->msg, sizeof s->msg, "cannot make the navigator of level '%.60s': %s",
+                     s->levels[i].name, hol_err_str(e));
+            return e;
+        }
+    }
+    for (s->cur = s->nlevels - 1; s->cur > 0; s->cur--) {
+        const hol_app_level *L = &s->levels[s->cur].lvl;
+        hol_err e = L->tiling_q || L->room_cols ? hol__start_level(s) : HOL_OK;
+        if (e)
+            return e;
+    }
+    return HOL_OK;
 }
 
 static void hol__rec_emit(void *ctx, const char *data, size_t n)
@@ -110,7 +145,7 @@ static hol_err hol__create(hol_session *s, const hol_session_desc *d)
         snprintf(s->msg, sizeof s->msg, "cannot create the app: %s", hol_err_str(e));
         return e;
     }
-    if ((e = hol__start_level(s)))
+    if ((e = hol__prepare_levels(s)) || (e = hol__start_level(s)))
         return e;
     if (s->log && (e = hol__log_open(s, d->append)))
         return e;

@@ -82,7 +82,7 @@
 
 #define HOL_SESSION_SUMMARY_COLUMNS                                                       \
     "session,participant,session_start,version,attempt,study,condition,position,level,"    \
-    "level_sha256,mode,seed,cues,started,steps,optimum,time,end"
+    "level_sha256,mode,seed,cues,tiling,room,cell,started,steps,optimum,time,end"
 #define HOL_SESSION_STEP_COLUMNS \
     "session,attempt,level,t,step,col,row,dir,yaw,tile,orient,remaining,cues,visible"
 #define HOL_SESSION_HEAD_COLUMNS \

@@ -197,12 +197,19 @@ size_t hol__summary_row(const hol_session *s, const hol_app_summary *sum, int en
     char pos[16] = "";
     if (L->condition[0])
         snprintf(pos, sizeof pos, "%d", L->position);
-    int n = snprintf(out, cap, "%s,%s,%s,%s,%d,%s,%s,%s,%s,%s,%s,%llu,%u,%.4f,%d,%d,%.4f,%s\n",
+    const hol_app_level *G = &L->lvl;
+    char cell[16];
+    hol_level_format_cell(G->cell_m, cell);
+    /* the geometry (tiling "4,Q" quoted: it holds a comma) before the
+     * started..end fields, which recovery reads from the row's end */
+    int n = snprintf(out, cap,
+                     "%s,%s,%s,%s,%d,%s,%s,%s,%s,%s,%s,%llu,%u,\"4,%d\",%dx%d,%s,%.4f,%d,%d,%.4f,%s\n",
                      s->meta.session, s->meta.participant, s->meta.start, s->meta.version,
                      s->attempt, L->condition[0] ? s->meta.study : "", L->condition, pos, name,
                      hash, hol__mode_names[mode], (unsigned long long)sum->seed, L->lvl.cues,
-                     s->attempt_started, sum->steps, sum->optimum, sum->time_s,
-                     hol__end_names[end]);
+                     G->tiling_q ? G->tiling_q : 5, G->room_cols ? G->room_cols : 3,
+                     G->room_rows ? G->room_rows : 3, cell, s->attempt_started, sum->steps,
+                     sum->optimum, sum->time_s, hol__end_names[end]);
     return n > 0 && (size_t)n < cap ? (size_t)n : 0;
 }
 

@@ -27,7 +27,7 @@ mkdir "$T/l1" "$T/l2" "$T/l3" "$T/png" "$T/png2"
 run "optimal walk" 0 "$H" replay "$T/opt.rec" --log "$T/l1"
 grep -q "^level lv done steps $K optimum $K " "$T/out" && ok ||
     bad "optimal walk: $(cat "$T/out"), want done $K $K"
-grep -q ",1,,,,lv,[0-9a-f]\{64\},flag,5,15,[0-9.]*,$K,$K,[0-9.]*,done\$" "$T/l1/summary.csv" && ok ||
+grep -q ",1,,,,lv,[0-9a-f]\{64\},flag,5,15,\"4,5\",3x3,1,[0-9.]*,$K,$K,[0-9.]*,done\$" "$T/l1/summary.csv" && ok ||
     bad "summary: $(cat "$T/l1/summary.csv")"
 [ "$(($(wc -l <"$T/l1/steps-001.csv") - 1))" = "$K" ] && ok || bad "one steps row per room step"
 tail -1 "$T/l1/steps-001.csv" | grep -q ',Wrf,[0-3],0,15,[0-9]*$' && ok ||
@@ -82,9 +82,9 @@ grep -q ',2,,,,b,[0-9a-f]*,keys,3,' "$T/l4/summary.csv" && ok || bad "attempt 2 
 } >"$T/restart.rec"
 mkdir "$T/l5"
 run "restart" 0 "$H" replay "$T/restart.rec" --log "$T/l5"
-sed -n 2p "$T/l5/summary.csv" | grep -q ',1,,,,a,[0-9a-f]*,flag,5,15,[0-9.]*,2,[0-9]*,[0-9.]*,restart$' && ok ||
+sed -n 2p "$T/l5/summary.csv" | grep -q ',1,,,,a,[0-9a-f]*,flag,5,15,"4,5",3x3,1,[0-9.]*,2,[0-9]*,[0-9.]*,restart$' && ok ||
     bad "restart row: $(cat "$T/l5/summary.csv")"
-sed -n 3p "$T/l5/summary.csv" | grep -q ',2,,,,a,[0-9a-f]*,flag,5,15,[0-9.]*,\([0-9]*\),\1,[0-9.]*,done$' && ok ||
+sed -n 3p "$T/l5/summary.csv" | grep -q ',2,,,,a,[0-9a-f]*,flag,5,15,"4,5",3x3,1,[0-9.]*,\([0-9]*\),\1,[0-9.]*,done$' && ok ||
     bad "done after restart: $(cat "$T/l5/summary.csv")"
 [ "$(($(wc -l <"$T/l5/steps-001.csv") - 1))" = 2 ] && ok || bad "2 steps before the restart"
 

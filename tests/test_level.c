@@ -345,7 +345,7 @@ static void test_set_geometry(void **state)
     assert_int_equal(hol_level_make("b", 1, far, strlen(far), &lv, &e), HOL_OK);
     assert_int_equal(hol_level_set_geometry(&lv, 4, 0, 0, 0, &e), HOL_EARG);
     assert_string_equal(hol_level_err_format(&e, 1, err, 256),
-                        "line 3: no walk inside the room reaches the flag's tile Nf (in the "
+                        "line 2: no walk inside the room reaches the flag's tile Nf (in the "
                         "flat {4,4} a 3x3 room reaches only its own 9 tiles)");
 }
 

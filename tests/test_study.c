@@ -16,6 +16,7 @@
 
 #include "../core/hol_sha256.h"
 #include "../core/hol_study.h"
+#include "../core/hol_tile.h"
 
 static hol_study study; /* 16 KB of text: not on the stack */
 
@@ -324,6 +325,47 @@ static int make(int i, int position, const char *file, hol_level *out, char *msg
     return 1;
 }
 
+/* Tiling, room and cell size as conditions: set lines replace the file's
+ * geometry lines, the addresses of the file are read in the condition's
+ * tiling, and a condition whose objective its room cannot reach is
+ * refused naming the file's line. */
+static void test_geometry_conditions(void **state)
+{
+    (void)state;
+    char msg[256];
+    int in_study = -1;
+    static hol_level L;
+    assert_int_equal(parse("study geo\ncounterbalance latin\nset seed 4\n"
+                           "condition flat\nlevel a.lvl\nset tiling 4 4\n"
+                           "condition curved\nlevel a.lvl\nset tiling 4 6\nset room 4 4\n"
+                           "set cell 0.75\n"
+                           "condition plain\nlevel a.lvl\n", msg), 0);
+    const char *file = "mode flag\nflag Nr\ntiling 4 5\n";
+    assert_int_equal(make(0, 1, file, &L, msg, &in_study), 0);
+    assert_int_equal(L.lvl.tiling_q, 4);
+    assert_int_equal(L.lvl.room_cols, 0);
+    assert_int_equal(hol_tile_q(L.lvl.flag), 4);
+    assert_string_equal(L.text, "mode flag\nflag Nr\n# study geo, condition flat:\nseed 4\n"
+                                "tiling 4 4\n");
+    assert_int_equal(make(1, 2, file, &L, msg, &in_study), 0);
+    assert_int_equal(L.lvl.tiling_q, 6);
+    assert_int_equal(L.lvl.room_cols, 4);
+    assert_int_equal(L.lvl.room_rows, 4);
+    assert_true(L.lvl.cell_m == 0.75);
+    assert_int_equal(hol_tile_q(L.lvl.flag), 6);
+    assert_string_equal(L.condition, "curved");
+    assert_int_equal(make(2, 3, file, &L, msg, &in_study), 0);
+    assert_int_equal(L.lvl.tiling_q, 5); /* the file's own line */
+    /* the flat condition cannot reach a flag two tiles ahead */
+    assert_int_equal(make(0, 1, "mode flag\nflag Nf\n", &L, msg, &in_study), 1);
+    assert_string_equal(msg, "line 2: no walk inside the room reaches the flag's tile Nf (in the "
+                             "flat {4,4} a 3x3 room reaches only its own 9 tiles)");
+    assert_int_equal(in_study, 0);
+    /* a bad set line: the study's line */
+    assert_int_equal(parse("study geo\ncondition a\nset mode explore\nset room 3 6\n", msg), 1);
+    assert_string_equal(msg, "line 4: set: room needs C R with C and R from 3 to 5 (cells), not '3 6'");
+}
+
 static void test_levels(void **state)
 {
     (void)state;
@@ -408,6 +450,7 @@ int main(void)
         cmocka_unit_test(test_williams),   cmocka_unit_test(test_other_rules),
         cmocka_unit_test(test_participants), cmocka_unit_test(test_grammar),
         cmocka_unit_test(test_refusals),   cmocka_unit_test(test_levels),
+        cmocka_unit_test(test_geometry_conditions),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

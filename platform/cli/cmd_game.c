@@ -11,7 +11,7 @@
 #include "play_setup.h"
 
 static const char *const game_usage =
-    "usage: holonomy game LEVEL < PLAYS\n"
+    "usage: holonomy game LEVEL [--tiling 4,Q] [--room CxR] [--cell M] < PLAYS\n"
     "\n"
     "Plays LEVEL (a level file, SPEC section 5) once per line of standard\n"
     "input: the line's room steps (N, E, S, W; '-' or empty for none) from the\n"
@@ -23,6 +23,8 @@ static const char *const game_usage =
     "and the tutorial, which are not scored). Steps after completion are\n"
     "ignored. A step that leaves the room is bad input.\n"
     "\n"
+    PLAY_GEOMETRY_USAGE
+    "\n"
     "Exit status: 0 ok, 1 failure, 2 bad input (one line naming the line).\n";
 
 typedef struct game_ctx {
@@ -32,17 +34,32 @@ typedef struct game_ctx {
     double t; /* input time never goes back, across plays too */
 } game_ctx;
 
-static hol_input head_at(double t, int col, int row)
+static hol_input head_at(double t, int col, int row, double m)
 {
     hol_input in;
     memset(&in, 0, sizeof in);
     in.time_s = t;
     in.flags = HOL_INPUT_FOCUSED | HOL_INPUT_HEAD_VALID;
-    in.head.pos[0] = (float)(col + 0.5);
+    in.head.pos[0] = (float)((col + 0.5) * m);
     in.head.pos[1] = 1.6f;
-    in.head.pos[2] = (float)(row + 0.5);
+    in.head.pos[2] = (float)((row + 0.5) * m);
     in.head.quat[3] = 1;
     return in;
+}
+
+/* Why a level cannot start, for the one line. */
+static const char *start_error(hol_err err)
+{
+    return err == HOL_EBUDGET    ? "its optimum cannot be proved exact"
+           : err == HOL_EARG     ? "an objective lies on the tile where the level begins"
+           : err == HOL_EUNREACH ? "no walk inside the room reaches an objective"
+                                 : hol_err_str(err);
+}
+
+static int start_status(hol_err err)
+{
+    return err == HOL_EBUDGET || err == HOL_EARG || err == HOL_EUNREACH ? CLI_EXIT_USAGE
+                                                                       : CLI_EXIT_FAIL;
 }
 
 static int play_line(void *vctx, long lineno, char *s, size_t len)
@@ -65,16 +82,13 @@ static int play_line(void *vctx, long lineno, char *s, size_t len)
         return CLI_EXIT_USAGE;
     }
     if ((err = hol_app_start_level(g->app, g->lvl))) {
-        cli_error("game", 0, "%.200s: %s", g->path,
-                  err == HOL_EBUDGET ? "its optimum cannot be proved exact"
-                  : err == HOL_EARG  ? "an objective lies on the tile where the level begins"
-                                     : hol_err_str(err));
-        return err == HOL_EBUDGET || err == HOL_EARG ? CLI_EXIT_USAGE : CLI_EXIT_FAIL;
+        cli_error("game", 0, "%.200s: %s", g->path, start_error(err));
+        return start_status(err);
     }
     const hol_app_view *v = hol_app_get_view(g->app);
     int col = v->user.col, row = v->user.row, done = -1;
     double t = g->t + 1;
-    hol_input in = head_at(t, col, row);
+    hol_input in = head_at(t, col, row, v->cell_m);
     if (hol_app_step(g->app, &in)) {
         cli_error("game", lineno, "the app step failed");
         return CLI_EXIT_FAIL;
@@ -82,7 +96,8 @@ static int play_line(void *vctx, long lineno, char *s, size_t len)
     for (size_t i = 0; i < nd; i++) {
         int dc, dr;
         hol_dir_delta(dirs[i], &dc, &dr);
-        if (col + dc < 0 || col + dc >= HOL_ROOM_SIZE || row + dr < 0 || row + dr >= HOL_ROOM_SIZE) {
+        if (col + dc < 0 || col + dc >= hol_room_cols(&v->user) || row + dr < 0 ||
+            row + dr >= hol_room_rows(&v->user)) {
             cli_error("game", lineno, "step %zu (%c from cell (%d,%d)) leaves the room", i + 1,
                       hol_dir_to_char(dirs[i]), col, row);
             return CLI_EXIT_USAGE;
@@ -92,7 +107,7 @@ static int play_line(void *vctx, long lineno, char *s, size_t len)
         if (done >= 0)
             continue; /* after completion: checked, not played */
         t += 0.25;
-        in = head_at(t, col, row);
+        in = head_at(t, col, row, v->cell_m);
         err = hol_app_step(g->app, &in);
         if (err) {
             cli_error("game", lineno, "step %zu: %s", i + 1, hol_err_str(err));
@@ -116,13 +131,31 @@ int cli_cmd_game(int argc, char **argv)
         fputs(game_usage, stdout);
         return cli_finish_output(cmd);
     }
-    if (argc != 2 || (argv[1][0] == '-' && argv[1][1])) {
+    static const char *const valued[] = {PLAY_GEOMETRY_OPTIONS, NULL};
+    static const char *const flags[] = {NULL};
+    cli_opts p;
+    cli_opts_init(&p, cmd, argc, argv, valued, flags);
+    const char *a, *val, *path = NULL;
+    play_geometry geo = {0, 0, 0, 0};
+    int r, operands = 0;
+    while ((r = cli_opts_next(&p, &a, &val)) > 0) {
+        if (!a) {
+            path = val;
+            operands++;
+        } else if (play_geometry_value(cmd, a, val, &geo) < 0) {
+            return CLI_EXIT_USAGE;
+        }
+    }
+    if (r < 0)
+        return CLI_EXIT_USAGE;
+    if (operands != 1) {
         cli_error(cmd, 0, "usage: holonomy game LEVEL < PLAYS; see 'holonomy game --help'");
         return CLI_EXIT_USAGE;
     }
-    const char *path = argv[1];
     static hol_level L;
     int rs = play_read_level(cmd, path, &L);
+    if (!rs)
+        rs = play_geometry_apply(cmd, &geo, &L, 1);
     if (rs)
         return rs;
     hol_app_desc d;
@@ -136,11 +169,8 @@ int cli_cmd_game(int argc, char **argv)
     /* a bad level is reported before any input is read */
     if ((err = hol_app_start_level(g.app, &L.lvl))) {
         hol_app_destroy(g.app);
-        cli_error(cmd, 0, "%.200s: %s", path,
-                  err == HOL_EBUDGET ? "its optimum cannot be proved exact"
-                  : err == HOL_EARG  ? "an objective lies on the tile where the level begins"
-                                     : hol_err_str(err));
-        return err == HOL_EBUDGET || err == HOL_EARG ? CLI_EXIT_USAGE : CLI_EXIT_FAIL;
+        cli_error(cmd, 0, "%.200s: %s", path, start_error(err));
+        return start_status(err);
     }
     int status = cli_for_each_line(cmd, play_line, &g);
     hol_app_destroy(g.app);

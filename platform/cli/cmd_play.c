@@ -31,7 +31,7 @@ static const char *const play_usage =
     "                     [--record FILE]\n"
     "                     [--frames N] [--input FILE] [--size WxH]\n"
     "                     [--no-gamepad | --gamepad-replay FILE] [--snap-turn DEG]\n"
-    "                     [--stats]\n"
+    "                     [--stats] [--tiling 4,Q] [--room CxR] [--cell M]\n"
     "\n"
     "Play in a desktop window (EGL on X11; also under Xvfb). LEVEL is a level\n"
     "file (SPEC section 5); --mode plays a level of that mode made from the seed\n"
@@ -81,6 +81,7 @@ static const char *const play_usage =
     "  --stats         print the frame rate and the CPU ms a frame on stderr,\n"
     "                  every second and at the end (CPU: the whole process,\n"
     "                  the software rasterizer's threads included)\n"
+    PLAY_GEOMETRY_USAGE
     "  --no-gamepad    do not use game controllers\n"
     "  --gamepad-replay FILE\n"
     "                  the controller is a script of plugs, reports and unplugs\n"
@@ -97,6 +98,7 @@ static const char *const play_usage =
 typedef struct play_opts {
     const char *level_path, *mode, *log_dir, *rec, *input_path, *pad_script, *participant;
     const char *study;
+    play_geometry geo;
     uint64_t seed;
     long frames;
     int w, h, use_pad, append, snap_deg, stats;
@@ -129,6 +131,9 @@ typedef struct play_ctx {
 
 static int play_value(const char *cmd, const char *a, const char *val, play_opts *o)
 {
+    int g = play_geometry_value(cmd, a, val, &o->geo);
+    if (g)
+        return g < 0;
     if (!strcmp(a, "--mode"))
         o->mode = val;
     else if (!strcmp(a, "--log"))
@@ -174,7 +179,8 @@ static int play_options(const char *cmd, int argc, char **argv, play_opts *o)
 {
     static const char *const valued[] = {"--mode",  "--seed",  "--log",  "--record",
                                          "--frames", "--input", "--size", "--gamepad-replay",
-                                         "--participant", "--snap-turn", "--study", NULL};
+                                         "--participant", "--snap-turn", "--study",
+                                         PLAY_GEOMETRY_OPTIONS, NULL};
     static const char *const flags[] = {"--no-gamepad", "--append", "--stats", NULL};
     memset(o, 0, sizeof *o);
     o->seed = CLI_SEED_DEFAULT;
@@ -229,6 +235,8 @@ static int play_prepare_files(play_ctx *c)
                                c->study);
     else if (!st)
         st = play_levels(c->cmd, o->level_path, o->mode, o->seed, c->levels, &c->nlevels);
+    if (!st)
+        st = play_geometry_apply(c->cmd, &o->geo, c->levels, c->nlevels);
     if (!st && o->input_path) {
         st = play_input_open(c->cmd, o->input_path, 0, &c->input);
         c->has_input = !st;

@@ -18,7 +18,7 @@
 
 static const char *const replay_usage =
     "usage: holonomy replay REC [--log DIR [--append]] [--png-frames LIST --out-dir D]\n"
-    "                       [--size WxH]\n"
+    "                       [--size WxH] [--tiling 4,Q] [--room CxR] [--cell M]\n"
     "\n"
     "Run a recording (holonomy play --record) through the same session: the\n"
     "logs come out byte for byte as in the play (the recording names the\n"
@@ -28,6 +28,11 @@ static const char *const replay_usage =
     "headless with OSMesa to D/frame-NNNNNN.png (--size, default 640x480); a\n"
     "frame beyond the recording is bad input (the others are still written).\n"
     "The recording is read a line at a time (lines of at most 1024 bytes).\n"
+    "A recording's levels carry their tiling, room and cell size (their\n"
+    "'tiling', 'room' and 'cell' lines), so a replay needs no options; given,\n"
+    "the options act on the recorded levels as on play's (a level without\n"
+    "the line is replayed in that geometry, one whose line differs is refused):\n"
+    PLAY_GEOMETRY_USAGE
     "\n"
     "SIGINT, SIGTERM or SIGHUP end it cleanly (the attempt in play is logged\n"
     "with end 'aborted'). Exit status: 0 ok, 1 failure, 2 bad input (a bad\n"
@@ -36,6 +41,7 @@ static const char *const replay_usage =
 typedef struct replay_ctx {
     const char *cmd, *rec, *log_dir, *out_dir, *list;
     int w, h, append;
+    play_geometry geo;
     long pngs[4096];
     int npng;
     play_input input;
@@ -72,12 +78,13 @@ static int parse_frame_list(const char *s, long *out, int cap, int *out_n)
 
 static int replay_options(replay_ctx *c, int argc, char **argv)
 {
-    static const char *const valued[] = {"--log", "--png-frames", "--out-dir", "--size", NULL};
+    static const char *const valued[] = {"--log",  "--png-frames", "--out-dir",
+                                         "--size", PLAY_GEOMETRY_OPTIONS, NULL};
     static const char *const flags[] = {"--append", NULL};
     cli_opts p;
     cli_opts_init(&p, c->cmd, argc, argv, valued, flags);
     const char *a, *val;
-    int r;
+    int r, g;
     while ((r = cli_opts_next(&p, &a, &val)) > 0) {
         if (!a && c->rec) {
             cli_error(c->cmd, 0, "more than one recording ('%.40s')", val);
@@ -93,7 +100,10 @@ static int replay_options(replay_ctx *c, int argc, char **argv)
             c->out_dir = val;
         else if (!strcmp(a, "--append"))
             c->append = 1;
-        else if (cli_parse_size(c->cmd, val, &c->w, &c->h))
+        else if ((g = play_geometry_value(c->cmd, a, val, &c->geo)) != 0) {
+            if (g < 0)
+                return CLI_EXIT_USAGE;
+        } else if (cli_parse_size(c->cmd, val, &c->w, &c->h))
             return CLI_EXIT_USAGE;
     }
     const char *bad = r < 0                      ? ""
@@ -146,6 +156,8 @@ static int replay_prepare(replay_ctx *c)
         st = play_input_open(c->cmd, c->rec, 1, &c->input);
         c->has_input = !st;
     }
+    if (!st)
+        st = play_geometry_apply(c->cmd, &c->geo, c->input.levels, c->input.rec.nlevels);
     if (!st)
         st = play_session_open(c->cmd, &c->out, c->input.levels, c->input.rec.nlevels,
                                &c->input.rec.meta, c->append, &c->s);

@@ -21,6 +21,7 @@ static const char *const xr_usage =
     "                   [--participant ID]\n"
     "                   [--record FILE] [--input FILE] [--space stage|local]\n"
     "                   [--check-frame K --check-dir DIR]\n"
+    "                   [--tiling 4,Q] [--room CxR] [--cell M]\n"
     "\n"
     "The headset app on this machine's OpenXR runtime (for example Monado):\n"
     "the room centred on the stage origin, north along stage -Z; the\n"
@@ -43,6 +44,7 @@ static const char *const xr_usage =
     "                  play area, where the runtime has one, else local) or\n"
     "                  local (where the head starts, the floor 1.6 m below:\n"
     "                  seated, or no play area set up)\n"
+    PLAY_GEOMETRY_USAGE
     "  --check-frame K with --check-dir DIR: read eye 0 of frame K back from\n"
     "                  the swapchain, render the same eye with OSMesa, write\n"
     "                  both PNGs to DIR and print how many pixels differ\n"
@@ -60,6 +62,7 @@ typedef struct xr_opts {
     long frames, check_frame;
     int append;
     int space; /* 0 or HOL_XR_SPACE_LOCAL (hol_xr_desc.space) */
+    play_geometry geo;
 } xr_opts;
 
 static int xr_count(const char *cmd, const char *a, const char *val, xr_opts *o)
@@ -81,20 +84,23 @@ static int xr_options(const char *cmd, int argc, char **argv, xr_opts *o)
 {
     static const char *const valued[] = {"--frames",      "--log",       "--record",
                                          "--input",       "--check-frame", "--check-dir",
-                                         "--participant", "--space",    "--study", NULL};
+                                         "--participant", "--space",    "--study",
+                                         PLAY_GEOMETRY_OPTIONS, NULL};
     static const char *const flags[] = {"--append", NULL};
     memset(o, 0, sizeof *o);
     o->check_frame = -1;
     cli_opts p;
     cli_opts_init(&p, cmd, argc, argv, valued, flags);
     const char *a, *val;
-    int r, bad = 0;
+    int r, bad = 0, g;
     while (!bad && (r = cli_opts_next(&p, &a, &val)) > 0) {
         if (!a && o->level_path) {
             cli_error(cmd, 0, "more than one LEVEL ('%.40s')", val);
             bad = 1;
         } else if (!a)
             o->level_path = val;
+        else if ((g = play_geometry_value(cmd, a, val, &o->geo)) != 0)
+            bad = g < 0;
         else if (!strcmp(a, "--frames") || !strcmp(a, "--check-frame"))
             bad = xr_count(cmd, a, val, o);
         else if (!strcmp(a, "--log"))
@@ -227,6 +233,8 @@ int cli_cmd_xr(int argc, char **argv)
     char study[HOL_REC_ID_MAX] = "";
     st = o.study ? play_study_levels(cmd, o.study, o.participant, levels, &nlevels, study)
                  : play_levels(cmd, o.level_path, NULL, CLI_SEED_DEFAULT, levels, &nlevels);
+    if (!st)
+        st = play_geometry_apply(cmd, &o.geo, levels, nlevels);
     if (!st)
         st = xr_script(cmd, o.input_path, &script, &nscript);
 #ifdef HOL_XR

@@ -44,6 +44,43 @@ int play_read_level(const char *cmd, const char *path, hol_level *out)
     return 0;
 }
 
+int play_geometry_value(const char *cmd, const char *opt, const char *val, play_geometry *g)
+{
+    size_t n = strlen(val);
+    if (!strcmp(opt, "--tiling")) {
+        if (!hol_room_parse_tiling(val, n, &g->q))
+            return 1;
+        cli_error(cmd, 0, "--tiling needs 4,Q with Q from 4 to 8 (the tiling {4,Q}), not '%.40s'",
+                  val);
+    } else if (!strcmp(opt, "--room")) {
+        if (!hol_room_parse_size(val, n, &g->cols, &g->rows))
+            return 1;
+        cli_error(cmd, 0, "--room needs CxR with C and R from 3 to 5 (cells), not '%.40s'", val);
+    } else if (!strcmp(opt, "--cell")) {
+        if (!hol_level_parse_cell(val, n, &g->cell_m))
+            return 1;
+        cli_error(cmd, 0,
+                  "--cell needs metres from 0.5 to 1.5 (at most 3 decimals), not '%.40s'", val);
+    } else {
+        return 0;
+    }
+    return -1;
+}
+
+int play_geometry_apply(const char *cmd, const play_geometry *g, hol_level *levels, int n)
+{
+    for (int i = 0; i < n; i++) {
+        hol_level_err le;
+        if (hol_level_set_geometry(&levels[i], g->q, g->cols, g->rows, g->cell_m, &le)) {
+            char msg[300], name[HOL_LEVEL_NAME_MAX * 4];
+            cli_error(cmd, 0, "level '%s': %s", cli_escape(levels[i].name, name, sizeof name),
+                      hol_level_err_format(&le, 1, msg, sizeof msg));
+            return CLI_EXIT_USAGE;
+        }
+    }
+    return 0;
+}
+
 int play_levels(const char *cmd, const char *level_path, const char *mode, uint64_t seed,
                 hol_level *levels, int *nlevels)
 {

@@ -44,6 +44,28 @@
 #include "../hid/hol_hid_script.h"
 
 int play_read_level(const char *cmd, const char *path, hol_level *out);
+
+/* The geometry options of play, xr, replay and game (SPEC 7): --tiling 4,Q,
+ * --room CxR, --cell M (0: not given). play_geometry_value takes one
+ * (opt its name, val its value): 1 taken, 0 not one of them, -1 a bad value
+ * reported as one line. play_geometry_apply gives each level the options
+ * as its default (hol_level_set_geometry: the missing lines added to its
+ * text; a level whose own line differs is refused naming the level). */
+typedef struct play_geometry {
+    int q, cols, rows;
+    double cell_m;
+} play_geometry;
+#define PLAY_GEOMETRY_OPTIONS "--tiling", "--room", "--cell"
+#define PLAY_GEOMETRY_USAGE                                                            \
+    "  --tiling 4,Q    the tiling {4,Q}, Q from 4 to 8 (default 4,5; SPEC 7)\n"         \
+    "  --room CxR      a room of C x R cells, 3 to 5 each (default 3x3)\n"              \
+    "  --cell M        the side of a cell in metres, 0.5 to 1.5 (default 1)\n"          \
+    "                  These are the default of levels without a 'tiling', 'room'\n"   \
+    "                  or 'cell' line (the line is added to the level's text, so\n"     \
+    "                  logs and recordings carry it); a level whose own line\n"         \
+    "                  differs is refused (docs/levels.md)\n"
+int play_geometry_value(const char *cmd, const char *opt, const char *val, play_geometry *g);
+int play_geometry_apply(const char *cmd, const play_geometry *g, hol_level *levels, int n);
 int play_levels(const char *cmd, const char *level_path, const char *mode, uint64_t seed,
                 hol_level *levels, int *nlevels);
 
