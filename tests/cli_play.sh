@@ -34,6 +34,9 @@ run "pad script and no pad" 2 "$H" play --gamepad-replay "$PAD" --no-gamepad &&
 run "pad script no value" 2 "$H" play --gamepad-replay && one_line "no value" "needs a value"
 run "bad snap turn" 2 "$H" play --snap-turn 7 && one_line "bad snap" "divisor of 360"
 run "snap turn zero" 2 "$H" play --snap-turn 0 && one_line "snap zero" "snap-turn"
+run "bad tiling" 2 "$H" play --tiling 4,3 && one_line "bad tiling" "--tiling needs 4,Q"
+run "bad room" 2 "$H" play --room 3x2 && one_line "bad room" "--room needs CxR"
+run "bad cell" 2 "$H" play --cell 0.4 && one_line "bad cell" "--cell needs metres"
 
 if ! start_xvfb 0; then
     echo "note: no Xvfb here: the window is not tested"
@@ -62,6 +65,20 @@ awk 'BEGIN { for (k = 0; k < 60; k++) printf "%.17g f=8 m=0,1\n", k / 60 }' >"$T
 run "pancake" 0 "$H" play --mode explore --input "$T/fwd.in" --size 64x48
 grep -q "^level explore-1 playing steps 1 optimum -1 tile N cell 1,0\$" "$T/out" && ok ||
     bad "pancake: $(cat "$T/out")"
+# another geometry: the options go into the level's text (the recording's L
+# lines, the summary's columns), and the recording replays with no options
+mkdir "$T/g1" "$T/g2"
+run "play {4,6} 4x4" 0 "$H" play "$T/f.lvl" --tiling 4,6 --room 4x4 --input "$T/fwd.in" \
+    --size 64x48 --log "$T/g1" --record "$T/g.rec"
+grep -q "^level f playing steps 1 optimum 3 tile N cell 2,1\$" "$T/out" && ok ||
+    bad "{4,6} 4x4: $(cat "$T/out")"
+grep -q '^L tiling 4 6$' "$T/g.rec" && grep -q '^L room 4 4$' "$T/g.rec" && ok ||
+    bad "the recording's level has no geometry lines"
+grep -q ',flag,5,15,"4,6",4x4,1,' "$T/g1/summary.csv" && ok || bad "geometry columns: $(cat "$T/g1/summary.csv")"
+run "replay {4,6} 4x4" 0 "$H" replay "$T/g.rec" --log "$T/g2"
+diff -r "$T/g1" "$T/g2" >/dev/null && ok || bad "replayed {4,6} logs differ"
+run "play a conflict" 2 "$H" play "$T/f.lvl" --tiling 4,4 --frames 2 --size 64x48 &&
+    one_line "flat play" "line 3: no walk inside the room reaches the flag's tile Wrf"
 # keyboard mode runs and stops after --frames; no LEVEL: the default
 # campaign (the tutorial, three flags, two keys levels), carried by the
 # recording
@@ -141,7 +158,7 @@ if command -v xdotool >/dev/null 2>&1; then
     done
     kill $PPID_PLAY 2>/dev/null
     wait $PPID_PLAY 2>/dev/null
-    grep -q ',1,,,,explore-1,[0-9a-f]*,explore,1,15,[0-9.]*,0,-1,[0-9.]*,restart$' "$T/tap/summary.csv" && ok ||
+    grep -q ',1,,,,explore-1,[0-9a-f]*,explore,1,15,"4,5",3x3,1,[0-9.]*,0,-1,[0-9.]*,restart$' "$T/tap/summary.csv" && ok ||
         bad "a tapped R did not restart: $(cat "$T/tap/summary.csv" "$T/tap.err" 2>&1)"
     grep -q ' p=20 .*d=keyboard$' "$T/tap.rec" && ok || bad "no pressed R (p=20) in the recording"
     grep -q ' p=10 .*d=keyboard$' "$T/tap.rec" && ok || bad "no pressed M (p=10) in the recording"
@@ -180,7 +197,7 @@ awk 'BEGIN { for (k = 0; k < 20; k++) printf "%.17g f=8%s\n", k / 10, (k == 5 ? 
     >"$T/ptap.in"
 mkdir "$T/ptap"
 run "pressed line" 0 "$H" play --mode explore --input "$T/ptap.in" --size 64x48 --log "$T/ptap"
-grep -q ',1,,,,explore-1,[0-9a-f]*,explore,1,15,[0-9.]*,0,-1,0.4000,restart$' "$T/ptap/summary.csv" && ok ||
+grep -q ',1,,,,explore-1,[0-9a-f]*,explore,1,15,"4,5",3x3,1,[0-9.]*,0,-1,0.4000,restart$' "$T/ptap/summary.csv" && ok ||
     bad "a pressed-only line did not restart: $(cat "$T/ptap/summary.csv")"
 kill $XPID 2>/dev/null
 wait $XPID 2>/dev/null

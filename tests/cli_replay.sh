@@ -126,4 +126,30 @@ run "time going back" 2 "$H" replay "$T/bad6" && one_line "time going back" "lin
 run "missing" 2 "$H" replay "$T/nonexistent"
 run "no args" 2 "$H" replay
 run "png without dir" 2 "$H" replay "$T/opt.rec" --png-frames 1
+# ---- geometry: a recording's level lines give the tiling, room and cell -----
+{ printf 'holonomy-rec 2\nsession 20260131T140509Z-5f3a9c01\nstart 2026-01-31T14:05:09Z\n'
+  printf 'version 0.1.0\nlevel g\nL tiling 4 6\nL room 4 4\nL cell 0.75\nL mode flag\n'
+  printf 'L seed 5\nL flag Wrf\nend\n'
+  awk 'BEGIN { for (k = 0; k < 60; k++) printf "%.17g f=8 m=0,1\n", k / 60 }'; } >"$T/geo.rec"
+mkdir "$T/geo1" "$T/geo2"
+run "replay {4,6} 4x4 0.75 m" 0 "$H" replay "$T/geo.rec" --log "$T/geo1"
+# 1 s at 1.4 m/s from z = 2.5 * 0.75 = 1.875 m crosses z = 1.5 and 0.75: two steps
+grep -q '^level g playing steps 2 optimum 3 tile Nf cell 2,0$' "$T/out" && ok ||
+    bad "geometry replay: $(cat "$T/out")"
+grep -q ',flag,5,15,"4,6",4x4,0.75,0.0000,2,3,' "$T/geo1/summary.csv" && ok ||
+    bad "geometry columns: $(cat "$T/geo1/summary.csv")"
+awk -F, 'NR == 2 { exit !($6 == "1.8750" && $7 == "1.6000" && $8 == "1.8750") }' \
+    "$T/geo1/head-001.csv" && ok || bad "the head does not start at (1.875, 1.6, 1.875)"
+run "replay with the same options" 0 "$H" replay "$T/geo.rec" --log "$T/geo2" --tiling 4,6 \
+    --room 4x4 --cell 0.75
+diff -r "$T/geo1" "$T/geo2" >/dev/null && ok || bad "the same options changed the replay"
+run "replay with another tiling" 2 "$H" replay "$T/geo.rec" --tiling 4,7 &&
+    one_line "conflict" "level 'g': its own line 'tiling 4 6' differs from the {4,7} asked for"
+run "replay with a bad cell" 2 "$H" replay "$T/geo.rec" --cell 1.55 &&
+    one_line "bad cell" "--cell needs metres from 0.5 to 1.5"
+# a {4,8} level no walk completes is refused before the replay
+sed 's/^L tiling 4 6$/L tiling 4 8/; s/^L flag Wrf$/L flag Nf/; /^L room/d' "$T/geo.rec" >"$T/geo8.rec"
+run "replay {4,8} out of reach" 2 "$H" replay "$T/geo8.rec" &&
+    one_line "out of reach" "level 'g' cannot start: no walk inside its room reaches an objective"
+
 finish cli_replay

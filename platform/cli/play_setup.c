@@ -314,8 +314,9 @@ int play_session_open(const char *cmd, play_out *po, const hol_level *levels, in
     hol_err e = hol_session_create(&d, out, msg, sizeof msg);
     if (e) {
         cli_error(cmd, 0, "%s", msg);
-        return e == HOL_EARG || e == HOL_EVERSION || e == HOL_EBUDGET ? CLI_EXIT_USAGE
-                                                                      : CLI_EXIT_FAIL;
+        return e == HOL_EARG || e == HOL_EVERSION || e == HOL_EBUDGET || e == HOL_EUNREACH
+                   ? CLI_EXIT_USAGE
+                   : CLI_EXIT_FAIL;
     }
     if (hol_session_recovered(*out))
         fprintf(stderr, "holonomy %s: %d unfinished attempt(s) of a killed session finished "
