@@ -158,6 +158,41 @@ static void test_flag(void **state)
     assert_true(differ > 300 && differ < W * H / 10);
 }
 
+/* The flag one tile north in other geometries, as the app plays them: the
+ * flat {4,4} (3 x 3: the map a plain top view with its caption) and {4,6}
+ * in a 4 x 4 room of 0.8 m cells (the view's cell size reaches the frame:
+ * the eye at the start cell's centre, 1.6 m up). */
+static void test_flag_geometries(void **state)
+{
+    (void)state;
+    static uint8_t img[W * H * 4];
+    static const struct { int q, cols, rows; double cell; const char *name; } g[] = {
+        {4, 3, 3, 1.0, "game_flag_q4"},
+        {6, 4, 4, 0.8, "game_flag_q6_room4x4_cell08"},
+    };
+    int failed = 0;
+    for (int i = 0; i < 2; i++) {
+        hol_app_level L = level(HOL_APP_FLAG);
+        L.tiling_q = g[i].q;
+        L.room_cols = g[i].cols;
+        L.room_rows = g[i].rows;
+        L.cell_m = g[i].cell;
+        assert_int_equal(hol_tile_resolve_q(g[i].q, "N", -1, &L.flag), HOL_OK);
+        start(&L);
+        step(1, 0, 0, 0, 0);
+        const hol_app_view *v = hol_app_get_view(app);
+        assert_int_equal(v->nobjects, 1);
+        assert_true(fabs(v->cell_m - g[i].cell) < 1e-12);
+        hol_frame_desc fd;
+        hol_app_frame_desc(v, -1, W, H, 0, &fd);
+        assert_true(fabs(fd.cell_m - g[i].cell) < 1e-12);
+        assert_int_equal(hol_tile_q(fd.user.tile), g[i].q);
+        assert_int_equal(hol_room_cols(&fd.user), g[i].cols);
+        failed += shot(g[i].name, 1, img);
+    }
+    assert_int_equal(failed, 0);
+}
+
 /* Two keys (north and east) and the chest (south): looking north shows a
  * key; turned round, the closed chest. */
 static void test_key_and_chest(void **state)
@@ -345,6 +380,7 @@ int main(int argc, char **argv)
     golden_out_dir(out_dir, sizeof out_dir, argv[0]);
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_flag),
+        cmocka_unit_test(test_flag_geometries),
         cmocka_unit_test(test_key_and_chest),
         cmocka_unit_test(test_chest_open),
         cmocka_unit_test(test_level_end),
