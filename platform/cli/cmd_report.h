@@ -1,0 +1,67 @@
+/* cmd_report.h - the parts of `holonomy report` (cmd_report.c runs them):
+ * reading log folders (cmd_report_read.c) and writing the report's files
+ * (cmd_report_write.c). Internal to the command.
+ *
+ * Contract
+ * - report_read_summaries reads every LOGDIR's summary.csv (streamed,
+ *   bounded lines) into r->att; report_walk reads one attempt's
+ *   steps-NNN.csv into tiles; report_optimal re-parses the attempt's level
+ *   (level-HASH.txt) and gives the optimal walk's tiles from its start.
+ *   Each returns 0 or the exit status after one line on stderr naming the
+ *   file and line (bad input 2, failure 1); a missing steps or level file
+ *   is not an error: a warning line, and the attempt has no walk (has_* 0).
+ * - report_write_* write DIR's files atomically (platform/file).
+ */
+#ifndef CMD_REPORT_H
+#define CMD_REPORT_H
+
+#include <stddef.h>
+
+#include "../../core/hol_level.h"
+#include "../../core/hol_nav.h"
+#include "../../core/hol_report.h"
+#include "../../core/hol_room.h"
+
+#define REPORT_MAX_ATTEMPTS 10000
+#define REPORT_MAX_STEPS 1000000 /* rows of one steps file */
+#define REPORT_LINE_MAX 65536
+#define REPORT_PNG_SIZE 360
+
+typedef struct report_att {
+    hol_report_attempt a;
+    int dir;          /* index of its LOGDIR */
+    int has_walk;     /* its steps file was read */
+    int has_optimal;  /* its level gave an optimal walk */
+    int optimal_len;
+    char png[32];     /* its picture's name in DIR, "" for none */
+} report_att;
+
+typedef struct report_run {
+    const char *cmd;
+    char **dirs;
+    int ndirs;
+    const char *out;
+    report_att *att;
+    int natt;
+    /* navigators by geometry, made on first use */
+    hol_nav *nav[6];
+    int nav_key[6];
+    int nnav;
+    hol_level level;   /* scratch */
+    int quiet;         /* 1: warnings were given (the second pass) */
+} report_run;
+
+int report_read_summaries(report_run *r);
+/* tiles: REPORT_MAX_STEPS entries (NULL: only check the file). */
+int report_walk(report_run *r, report_att *t, hol_tile *tiles, int *out_n);
+/* The level's start state and objectives, and the optimal walk's tiles
+ * (walk: HOL_NAV_WALK_MAX entries). */
+int report_optimal(report_run *r, report_att *t, hol_room *out_start, hol_tile *goals,
+                   int *ngoals, int *chest_last, hol_tile *walk, int *nwalk);
+void report_free(report_run *r);
+
+int report_write_csv(const report_run *r);
+int report_write_conditions(const report_run *r, const hol_report_agg *g);
+int report_write_html(const report_run *r, const hol_report_agg *g);
+
+#endif

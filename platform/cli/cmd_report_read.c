@@ -1,0 +1,267 @@
+/* cmd_report_read.c - log folders read back for `holonomy report`
+ * (cmd_report.h): summaries, steps files, levels and their optimal walks. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "../file/hol_lines.h"
+#include "cli.h"
+#include "cmd_report.h"
+#include "play_setup.h"
+
+static void path_of(char *out, size_t cap, const char *dir, const char *name)
+{
+    snprintf(out, cap, "%s/%s", dir, name);
+}
+
+static int bad_line(const char *cmd, const char *path, long line, const char *msg)
+{
+    char esc[512];
+    cli_error(cmd, 0, "%s: line %ld: %s", cli_escape(path, esc, sizeof esc), line, msg);
+    return CLI_EXIT_USAGE;
+}
+
+static int read_summary(report_run *r, int d)
+{
+    char path[4200];
+    path_of(path, sizeof path, r->dirs[d], "summary.csv");
+    hol_lines l;
+    int st = cli_open_lines(r->cmd, "summary", path, REPORT_LINE_MAX, &l);
+    if (st)
+        return st;
+    hol_report_header h;
+    char err[HOL_REPORT_ERR];
+    char *s;
+    size_t n;
+    int got;
+    while ((got = hol_lines_next(&l, &s, &n)) > 0) {
+        hol_err e;
+        if (l.lineno == 1) {
+            e = hol_report_summary_header(s, n, &h, err);
+        } else if (r->natt == REPORT_MAX_ATTEMPTS) {
+            snprintf(err, sizeof err, "more than %d attempts in all", REPORT_MAX_ATTEMPTS);
+            e = HOL_ENOMEM;
+        } else {
+            report_att *t = &r->att[r->natt];
+            memset(t, 0, sizeof *t);
+            t->dir = d;
+            if (!(e = hol_report_summary_row(&h, s, n, &t->a, err)))
+                r->natt++;
+        }
+        if (e) {
+            long line = l.lineno;
+            hol_lines_close(&l);
+            return bad_line(r->cmd, path, line, err);
+        }
+    }
+    st = got < 0 ? cli_lines_failed(r->cmd, "summary", path, &l) : 0;
+    if (!st && l.lineno == 0)
+        st = bad_line(r->cmd, path, 1, "empty: no header");
+    hol_lines_close(&l);
+    return st;
+}
+
+int report_read_summaries(report_run *r)
+{
+    r->att = malloc(sizeof *r->att * REPORT_MAX_ATTEMPTS);
+    if (!r->att) {
+        cli_error(r->cmd, 0, "out of memory");
+        return CLI_EXIT_FAIL;
+    }
+    for (int d = 0; d < r->ndirs; d++) {
+        int st = read_summary(r, d);
+        if (st)
+            return st;
+    }
+    return 0;
+}
+
+static int missing(const char *path)
+{
+    struct stat sb;
+    return lstat(path, &sb) != 0;
+}
+
+static int warn(const report_run *r, const char *path, const char *what)
+{
+    char esc[512];
+    if (r->quiet)
+        return 0;
+    fprintf(stderr, "holonomy %s: warning: %s: %s\n", r->cmd, cli_escape(path, esc, sizeof esc),
+            what);
+    return 0;
+}
+
+/* One steps row checked against its attempt; the tile into *out. */
+static int step_row(const report_att *t, const hol_report_step *s, long expect, hol_tile *out,
+                    char *err)
+{
+    if (strcmp(s->session, t->a.session) || s->attempt != t->a.attempt) {
+        snprintf(err, HOL_REPORT_ERR, "a row of another session or attempt");
+        return 0;
+    }
+    if (s->step != expect) {
+        snprintf(err, HOL_REPORT_ERR, "step %ld where step %ld was due", s->step, expect);
+        return 0;
+    }
+    if (s->col >= t->a.room_cols || s->row >= t->a.room_rows) {
+        snprintf(err, HOL_REPORT_ERR, "cell %d,%d outside the %dx%d room", s->col, s->row,
+                 t->a.room_cols, t->a.room_rows);
+        return 0;
+    }
+    if (hol_tile_parse_q(t->a.tiling_q, s->tile, -1, out)) {
+        snprintf(err, HOL_REPORT_ERR, "column tile: not an address of {4,%d}", t->a.tiling_q);
+        return 0;
+    }
+    return 1;
+}
+
+int report_walk(report_run *r, report_att *t, hol_tile *tiles, int *out_n)
+{
+    char name[64], path[4200];
+    snprintf(name, sizeof name, "steps-%03ld.csv", t->a.attempt);
+    path_of(path, sizeof path, r->dirs[t->dir], name);
+    *out_n = 0;
+    if (missing(path))
+        return warn(r, path, "missing: the attempt gets no picture");
+    hol_lines l;
+    int st = cli_open_lines(r->cmd, "steps", path, REPORT_LINE_MAX, &l);
+    if (st)
+        return st;
+    hol_report_header h;
+    hol_report_step s;
+    char err[HOL_REPORT_ERR];
+    char *line;
+    size_t n;
+    int got = 0, ok = 1;
+    long count = 0;
+    while (ok && (got = hol_lines_next(&l, &line, &n)) > 0) {
+        hol_tile tile;
+        if (l.lineno == 1) {
+            ok = !hol_report_steps_header(line, n, &h, err);
+        } else if (count == REPORT_MAX_STEPS) {
+            snprintf(err, sizeof err, "more than %d steps", REPORT_MAX_STEPS);
+            ok = 0;
+        } else {
+            ok = !hol_report_step_row(&h, line, n, &s, err) && step_row(t, &s, count + 1, &tile, err);
+            if (ok && tiles)
+                tiles[count] = tile;
+            count += ok;
+        }
+    }
+    if (!ok)
+        st = bad_line(r->cmd, path, l.lineno, err);
+    else if (got < 0)
+        st = cli_lines_failed(r->cmd, "steps", path, &l);
+    else if (l.lineno == 0)
+        st = bad_line(r->cmd, path, 1, "empty: no header");
+    hol_lines_close(&l);
+    *out_n = (int)count;
+    t->has_walk = !st;
+    return st;
+}
+
+/* The navigator of a geometry, made on first use. */
+static hol_nav *nav_for(report_run *r, int q, int cols, int rows)
+{
+    int key = q * 100 + cols * 10 + rows;
+    for (int i = 0; i < r->nnav; i++)
+        if (r->nav_key[i] == key)
+            return r->nav[i];
+    if (r->nnav == (int)(sizeof r->nav / sizeof r->nav[0]))
+        return NULL;
+    hol_nav_desc d;
+    memset(&d, 0, sizeof d);
+    d.tiling_q = q;
+    d.room_cols = cols;
+    d.room_rows = rows;
+    hol_nav *nav;
+    if (hol_nav_create(&d, &nav))
+        return NULL;
+    r->nav[r->nnav] = nav;
+    r->nav_key[r->nnav++] = key;
+    return nav;
+}
+
+/* A level's tile in the attempt's tiling (the level parser's tiles may be
+ * {4,5} words: the address is what the level file says). */
+static int in_tiling(hol_tile t, int q, hol_tile *out)
+{
+    char addr[HOL_TILE_ADDR_MAX];
+    if (hol_tile_q(t) == q) {
+        *out = t;
+        return 1;
+    }
+    hol_tile_print(t, addr);
+    return !hol_tile_parse_q(q, addr, -1, out);
+}
+
+static int objectives(const hol_app_level *L, int q, hol_tile *goals, int *ngoals, int *chest)
+{
+    *ngoals = 0;
+    *chest = L->mode == HOL_APP_KEYS;
+    if (L->mode == HOL_APP_FLAG)
+        return in_tiling(L->flag, q, &goals[(*ngoals)++]);
+    if (L->mode != HOL_APP_KEYS)
+        return 1;
+    for (int k = 0; k < L->nkeys; k++)
+        if (!in_tiling(L->keys[k], q, &goals[(*ngoals)++]))
+            return 0;
+    return in_tiling(L->chest, q, &goals[(*ngoals)++]);
+}
+
+int report_optimal(report_run *r, report_att *t, hol_room *out_start, hol_tile *goals,
+                   int *ngoals, int *chest_last, hol_tile *walk, int *nwalk)
+{
+    const hol_report_attempt *a = &t->a;
+    char name[HOL_REPORT_TEXT + 16], path[4400];
+    *nwalk = *ngoals = 0;
+    t->has_optimal = 0;
+    t->optimal_len = -1;
+    if (hol_room_start_in(a->tiling_q, a->room_cols, a->room_rows, out_start))
+        return 0;
+    snprintf(name, sizeof name, "level-%s.txt", a->level_sha256);
+    path_of(path, sizeof path, r->dirs[t->dir], name);
+    if (!a->level_sha256[0] || strchr(a->level_sha256, '/') || missing(path))
+        return warn(r, path, "missing: the picture has no optimal walk");
+    int st = play_read_level(r->cmd, path, &r->level);
+    if (st)
+        return st;
+    const hol_app_level *L = &r->level.lvl;
+    for (int i = 0; i < L->nstart; i++)
+        if (hol_room_step(out_start, L->start[i]))
+            return warn(r, path, "its start walk leaves the room: no optimal walk");
+    if (!objectives(L, a->tiling_q, goals, ngoals, chest_last))
+        return warn(r, path, "an objective outside the tiling: no optimal walk");
+    if (L->mode != HOL_APP_FLAG && L->mode != HOL_APP_KEYS)
+        return 0; /* explore and the tutorial have no optimum */
+    hol_nav *nav = nav_for(r, a->tiling_q, a->room_cols, a->room_rows);
+    uint8_t dirs[HOL_NAV_WALK_MAX];
+    hol_nav_result res;
+    hol_err e = !nav ? HOL_ENOMEM
+                : L->mode == HOL_APP_FLAG
+                    ? hol_nav_find(nav, out_start, goals[0], 0, dirs, sizeof dirs, &res)
+                    : hol_nav_tour(nav, out_start, goals, *ngoals - 1, goals[*ngoals - 1], 0,
+                                   dirs, sizeof dirs, &res);
+    if (e)
+        return warn(r, path, "no optimal walk found for it");
+    hol_room w = *out_start;
+    for (int i = 0; i < res.len; i++) {
+        if (hol_room_step(&w, dirs[i]))
+            return warn(r, path, "the optimal walk failed");
+        walk[(*nwalk)++] = w.tile;
+    }
+    t->has_optimal = 1;
+    t->optimal_len = res.len;
+    return 0;
+}
+
+void report_free(report_run *r)
+{
+    for (int i = 0; i < r->nnav; i++)
+        hol_nav_destroy(r->nav[i]);
+    r->nnav = 0;
+    free(r->att);
+    r->att = NULL;
+}

@@ -1,0 +1,229 @@
+/* cmd_report_write.c - the report's files (cmd_report.h): attempts.csv,
+ * conditions.csv and index.html, each written atomically. */
+#include <stdio.h>
+#include <string.h>
+
+#include "../../core/hol_text.h"
+#include "../file/hol_file.h"
+#include "cli.h"
+#include "cmd_report.h"
+
+static void csv(FILE *f, const char *s, int last)
+{
+    char buf[4 * HOL_REPORT_TEXT + 8];
+    hol_text_csv(s, strlen(s), buf, sizeof buf);
+    fputs(buf, f);
+    fputc(last ? '\n' : ',', f);
+}
+
+/* A path from the command line as it may stand in a CSV or on a page. */
+static const char *safe_path(const char *p, char *buf, size_t cap)
+{
+    hol_text_escape(p, strlen(p), buf, cap);
+    return buf;
+}
+
+static void num_or_empty(char *out, size_t cap, double v, const char *fmt)
+{
+    if (v < 0)
+        out[0] = 0;
+    else
+        snprintf(out, cap, fmt, v);
+}
+
+static int open_out(const report_run *r, const char *name, hol_file_atomic *a, char *path,
+                    size_t cap)
+{
+    snprintf(path, cap, "%s/%s", r->out, name);
+    if (hol_file_atomic_open(a, path)) {
+        char esc[512];
+        cli_error(r->cmd, 0, "cannot write '%s'", cli_escape(path, esc, sizeof esc));
+        return CLI_EXIT_FAIL;
+    }
+    return 0;
+}
+
+static int commit(const report_run *r, hol_file_atomic *a, const char *path)
+{
+    if (ferror(a->f) || hol_file_atomic_commit(a)) {
+        if (a->f)
+            hol_file_atomic_abort(a);
+        char esc[512];
+        cli_error(r->cmd, 0, "cannot write '%s'", cli_escape(path, esc, sizeof esc));
+        return CLI_EXIT_FAIL;
+    }
+    return 0;
+}
+
+static void geometry_text(const hol_report_attempt *a, char *tiling, char *room, char *cell)
+{
+    snprintf(tiling, 16, "4,%d", a->tiling_q);
+    snprintf(room, 16, "%dx%d", a->room_cols, a->room_rows);
+    snprintf(cell, 16, "%g", a->cell_m);
+}
+
+int report_write_csv(const report_run *r)
+{
+    hol_file_atomic a;
+    char path[4200];
+    int st = open_out(r, "attempts.csv", &a, path, sizeof path);
+    if (st)
+        return st;
+    fputs("participant,session,attempt,study,condition,position,level,mode,steps,optimum,"
+          "efficiency,time,end,tiling,room,cell,logdir,picture\n", a.f);
+    for (int i = 0; i < r->natt; i++) {
+        const hol_report_attempt *t = &r->att[i].a;
+        char pos[24], eff[24], tiling[16], room[16], cell[16], dir[1024];
+        num_or_empty(pos, sizeof pos, (double)t->position, "%.0f");
+        num_or_empty(eff, sizeof eff, hol_report_efficiency(t), "%.4f");
+        geometry_text(t, tiling, room, cell);
+        csv(a.f, t->participant, 0);
+        csv(a.f, t->session, 0);
+        fprintf(a.f, "%ld,", t->attempt);
+        csv(a.f, t->study, 0);
+        csv(a.f, t->condition, 0);
+        fprintf(a.f, "%s,", pos);
+        csv(a.f, t->level, 0);
+        csv(a.f, t->mode, 0);
+        fprintf(a.f, "%ld,%ld,%s,%.4f,", t->steps, t->optimum, eff, t->time_s);
+        csv(a.f, t->end, 0);
+        csv(a.f, tiling, 0);
+        fprintf(a.f, "%s,%s,", room, cell);
+        csv(a.f, safe_path(r->dirs[r->att[i].dir], dir, sizeof dir), 0);
+        csv(a.f, r->att[i].png, 1);
+    }
+    return commit(r, &a, path);
+}
+
+int report_write_conditions(const report_run *r, const hol_report_agg *g)
+{
+    hol_file_atomic a;
+    char path[4200];
+    int st = open_out(r, "conditions.csv", &a, path, sizeof path);
+    if (st)
+        return st;
+    fputs("study,condition,attempts,done,mean_steps,mean_efficiency,mean_time\n", a.f);
+    for (int i = 0; i < g->n; i++) {
+        const hol_report_cond *c = &g->c[i];
+        char eff[24];
+        num_or_empty(eff, sizeof eff, c->neff ? c->eff / (double)c->neff : -1, "%.4f");
+        csv(a.f, c->study, 0);
+        csv(a.f, c->condition, 0);
+        fprintf(a.f, "%ld,%ld,%.2f,%s,%.4f\n", c->n, c->done, c->steps / (double)c->n, eff,
+                c->time_s / (double)c->n);
+    }
+    return commit(r, &a, path);
+}
+
+/* Text for HTML: & < > " ' as entities (the names come from outside). */
+static void html(FILE *f, const char *s)
+{
+    for (; *s; s++)
+        switch (*s) {
+        case '&': fputs("&amp;", f); break;
+        case '<': fputs("&lt;", f); break;
+        case '>': fputs("&gt;", f); break;
+        case '"': fputs("&quot;", f); break;
+        case '\'': fputs("&#39;", f); break;
+        default: fputc(*s, f);
+        }
+}
+
+static void html_cell(FILE *f, const char *s)
+{
+    fputs("<td>", f);
+    html(f, s);
+    fputs("</td>", f);
+}
+
+static void html_head(FILE *f, const report_run *r, const hol_report_agg *g)
+{
+    fputs("<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+          "<title>Holonomy report</title>\n<style>\n"
+          "body{font-family:sans-serif;margin:1.5em;color:#222}\n"
+          "table{border-collapse:collapse;margin-bottom:2em}\n"
+          "td,th{border:1px solid #ccc;padding:.3em .5em;text-align:left;vertical-align:top}\n"
+          "td.n{text-align:right}\ntr.killed,tr.aborted{background:#fde8e8}\n"
+          ".walked{color:#dc5014}.optimal{color:#4a86d8}\n"
+          "</style>\n</head>\n<body>\n<h1>Holonomy report</h1>\n<p>", f);
+    fprintf(f, "%d attempts from %d log folder%s:", r->natt, r->ndirs, r->ndirs == 1 ? "" : "s");
+    for (int d = 0; d < r->ndirs; d++) {
+        char dir[1024];
+        fputs(d ? ", <code>" : " <code>", f);
+        html(f, safe_path(r->dirs[d], dir, sizeof dir));
+        fputs("</code>", f);
+    }
+    fputs(". Data: <a href=\"attempts.csv\">attempts.csv</a> (one row per attempt), "
+          "<a href=\"conditions.csv\">conditions.csv</a> (means per condition).</p>\n"
+          "<h2>Conditions</h2>\n<table>\n<tr><th>study</th><th>condition</th><th>attempts</th>"
+          "<th>done</th><th>mean steps</th><th>mean efficiency</th><th>mean time (s)</th></tr>\n",
+          f);
+    for (int i = 0; i < g->n; i++) {
+        const hol_report_cond *c = &g->c[i];
+        fputs("<tr>", f);
+        html_cell(f, c->study);
+        html_cell(f, c->condition);
+        fprintf(f, "<td class=\"n\">%ld</td><td class=\"n\">%ld</td><td class=\"n\">%.2f</td>",
+                c->n, c->done, c->steps / (double)c->n);
+        if (c->neff)
+            fprintf(f, "<td class=\"n\">%.4f</td>", c->eff / (double)c->neff);
+        else
+            fputs("<td class=\"n\"></td>", f);
+        fprintf(f, "<td class=\"n\">%.2f</td></tr>\n", c->time_s / (double)c->n);
+    }
+    fputs("</table>\n<h2>Attempts</h2>\n<p>Pictures: the Poincar&eacute; disk centred on the "
+          "tile where the level begins, room north up; the <span class=\"walked\">walked "
+          "path</span> over the <span class=\"optimal\">optimal walk</span>, the start green, "
+          "the objectives red (keys gold, the chest brown), the last tile ringed.</p>\n", f);
+}
+
+static void html_row(FILE *f, const report_run *r, int i)
+{
+    const report_att *t = &r->att[i];
+    const hol_report_attempt *a = &t->a;
+    char pos[24], eff[24], tiling[16], room[16], cell[16], num[64];
+    num_or_empty(pos, sizeof pos, (double)a->position, "%.0f");
+    num_or_empty(eff, sizeof eff, hol_report_efficiency(a), "%.4f");
+    geometry_text(a, tiling, room, cell);
+    fputs("<tr class=\"", f);
+    html(f, a->end);
+    fprintf(f, "\"><td class=\"n\">%d</td>", i + 1);
+    html_cell(f, a->participant);
+    html_cell(f, a->session);
+    fprintf(f, "<td class=\"n\">%ld</td>", a->attempt);
+    html_cell(f, a->study);
+    html_cell(f, a->condition);
+    html_cell(f, pos);
+    html_cell(f, a->level);
+    html_cell(f, a->mode);
+    fprintf(f, "<td class=\"n\">%ld</td><td class=\"n\">%ld</td>", a->steps, a->optimum);
+    html_cell(f, eff);
+    snprintf(num, sizeof num, "%.2f", a->time_s);
+    html_cell(f, num);
+    html_cell(f, a->end);
+    snprintf(num, sizeof num, "{%s} %s, %s m", tiling, room, cell);
+    html_cell(f, num);
+    if (t->png[0])
+        fprintf(f, "<td><a href=\"%s\"><img src=\"%s\" width=\"180\" height=\"180\" "
+                   "alt=\"attempt %d\"></a></td></tr>\n", t->png, t->png, i + 1);
+    else
+        fputs("<td>(no steps file)</td></tr>\n", f);
+}
+
+int report_write_html(const report_run *r, const hol_report_agg *g)
+{
+    hol_file_atomic a;
+    char path[4200];
+    int st = open_out(r, "index.html", &a, path, sizeof path);
+    if (st)
+        return st;
+    html_head(a.f, r, g);
+    fputs("<table>\n<tr><th>#</th><th>participant</th><th>session</th><th>attempt</th>"
+          "<th>study</th><th>condition</th><th>position</th><th>level</th><th>mode</th>"
+          "<th>steps</th><th>optimum</th><th>efficiency</th><th>time (s)</th><th>end</th>"
+          "<th>geometry</th><th>path</th></tr>\n", a.f);
+    for (int i = 0; i < r->natt; i++)
+        html_row(a.f, r, i);
+    fputs("</table>\n</body>\n</html>\n", a.f);
+    return commit(r, &a, path);
+}
