@@ -226,9 +226,15 @@ unit: $(UNIT_BIN)
 render-test: $(RENDER_TEST_BIN)
 	@set -e; for t in $(RENDER_TEST_BIN); do echo "== $$t"; $(TIMED) $$t $$t; done
 
-cli-test: $(BUILD)/holonomy $(BUILD)/tests/x11_close
+cli-test: $(BUILD)/holonomy $(BUILD)/tests/x11_close $(BUILD)/tests/png_probe
 	@set -e; for t in $(CLI_TESTS); do echo "== $$t"; \
-	  HOLONOMY=$(BUILD)/holonomy X11_CLOSE=$(BUILD)/tests/x11_close $(TIMED) $$t sh $$t; done
+	  HOLONOMY=$(BUILD)/holonomy X11_CLOSE=$(BUILD)/tests/x11_close \
+	  PNG_PROBE=$(BUILD)/tests/png_probe $(TIMED) $$t sh $$t; done
+
+# A test helper: a PNG decoded by render/hol_png.c, its colours counted.
+$(BUILD)/tests/png_probe: tests/png_probe.c render/hol_png.c render/hol_png.h
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) -o $@ $< render/hol_png.c -lz
 
 # A test helper: the close button of a window, as a window manager presses it.
 $(BUILD)/tests/x11_close: tests/x11_close.c
