@@ -100,7 +100,7 @@ run "--out a file" 2 "$H" report "$T/la" --out "$T/a.rec" && one_line "--out a f
 run "--out parent" 2 "$H" report "$T/la" --out "$T/none/o" && one_line "--out parent" "does not exist"
 run "unknown option" 2 "$H" report "$T/la" --out "$T/o2" --fast && one_line "unknown option" "fast"
 cp -r "$T/la" "$T/bad1"
-awk -F, -v OFS=, 'NR == 2 { $15 = "5x" } { print }' "$T/la/summary.csv" >"$T/bad1/summary.csv"
+sed -i "2s/,$K,$K,\([0-9.]*\),done\$/,${K}x,$K,\1,done/" "$T/bad1/summary.csv"
 cp -r "$T/la" "$T/bad2"
 awk -F, -v OFS=, 'NR == 3 { $10 = "Q" } { print }' "$T/la/steps-001.csv" >"$T/bad2/steps-001.csv"
 run "bad steps" 2 "$H" report "$T/la" "$T/bad2" --out "$T/o2" &&
