@@ -70,4 +70,43 @@ printf 'mode flag\nflag N\nminimap wrist\n' >"$T/b7.lvl"
 run "bad minimap" 2 "$H" game "$T/b7.lvl" && one_line "bad minimap" "line 3"
 run "no level" 2 "$H" game
 run "missing file" 2 "$H" game "$T/nope.lvl"
+# ---- geometry (SPEC 7): options and level lines ----------------------------------
+printf 'mode flag\nseed 5\nflag Wrf\n' >"$T/g.lvl"
+printf -- '- Wrf\n' | "$H" nav --tiling 4,6 --room 4x4 >"$T/nav6" || bad "nav {4,6} 4x4"
+K6=$(cut -d' ' -f1 "$T/nav6") W6=$(cut -d' ' -f2 "$T/nav6")
+printf '%s\nN\n' "$W6" >"$T/in"
+expect "game --tiling 4,6 --room 4x4" 0 "done $K6 $K6
+open 1 $K6
+" "$H" game "$T/g.lvl" --tiling 4,6 --room 4x4
+expect "the same in 0.5 m cells" 0 "done $K6 $K6
+open 1 $K6
+" "$H" game "$T/g.lvl" --tiling 4,6 --room 4x4 --cell 0.5
+printf 'tiling 4 6\nroom 4 4\ncell 1.25\nmode flag\nseed 5\nflag Wrf\n' >"$T/g6.lvl"
+expect "the same from level lines" 0 "done $K6 $K6
+open 1 $K6
+" "$H" game "$T/g6.lvl"
+expect "level lines and the same options" 0 "done $K6 $K6
+open 1 $K6
+" "$H" game "$T/g6.lvl" --tiling 4,6 --room 4x4 --cell 1.25
+run "an option against a level line" 2 "$H" game "$T/g6.lvl" --room 5x5 &&
+    one_line "conflict" "level 'g6': its own line 'room 4 4' differs from the 5x5 asked for"
+# 4x4: the start is cell (2,2), so EE leaves the room and W, WW do not
+printf 'WW\nEE\n' >"$T/in"
+run "4x4 bounds" 2 "$H" game "$T/g.lvl" --tiling 4,6 --room 4x4 <"$T/in" &&
+    one_line "4x4 bounds" "line 2: step 2 (E from cell (3,2)) leaves the room"
+# the flat {4,4}: a walk round the room comes back to O; a flag off the
+# nine tiles is refused with its line
+printf 'tiling 4 4\nmode flag\nflag Nr\n' >"$T/flat.lvl"
+printf 'NE\nWNES\n' >"$T/in"
+expect "flat flag" 0 "done 2 2
+open 4 2
+" "$H" game "$T/flat.lvl"
+run "flat out of reach" 2 "$H" game "$T/g.lvl" --tiling 4,4 &&
+    one_line "flat out of reach" "line 3: no walk inside the room reaches the flag's tile Wrf"
+run "bad --tiling" 2 "$H" game "$T/g.lvl" --tiling 5,4 && one_line "bad tiling" "--tiling needs 4,Q"
+run "bad --room" 2 "$H" game "$T/g.lvl" --room 3 && one_line "bad room" "--room needs CxR"
+run "bad --cell" 2 "$H" game "$T/g.lvl" --cell 0.5.1 && one_line "bad cell" "--cell needs metres"
+printf 'mode explore\ntiling 4 9\n' >"$T/b8.lvl"
+run "bad tiling line" 2 "$H" game "$T/b8.lvl" && one_line "bad tiling line" "line 2: tiling needs 4 Q"
+: >"$T/in"
 finish cli_game

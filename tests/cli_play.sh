@@ -68,14 +68,16 @@ grep -q "^level explore-1 playing steps 1 optimum -1 tile N cell 1,0\$" "$T/out"
 # another geometry: the options go into the level's text (the recording's L
 # lines, the summary's columns), and the recording replays with no options
 mkdir "$T/g1" "$T/g2"
-run "play {4,6} 4x4" 0 "$H" play "$T/f.lvl" --tiling 4,6 --room 4x4 --input "$T/fwd.in" \
-    --size 64x48 --log "$T/g1" --record "$T/g.rec"
-grep -q "^level f playing steps 1 optimum 3 tile N cell 2,1\$" "$T/out" && ok ||
+# (1 s forward from z = 1.875 m in 0.75 m cells crosses two cell edges)
+run "play {4,6} 4x4 0.75 m" 0 "$H" play "$T/f.lvl" --tiling 4,6 --room 4x4 --cell 0.75 \
+    --input "$T/fwd.in" --size 64x48 --log "$T/g1" --record "$T/g.rec"
+grep -q "^level f playing steps 2 optimum 3 tile Nf cell 2,0\$" "$T/out" && ok ||
     bad "{4,6} 4x4: $(cat "$T/out")"
-grep -q '^L tiling 4 6$' "$T/g.rec" && grep -q '^L room 4 4$' "$T/g.rec" && ok ||
-    bad "the recording's level has no geometry lines"
-grep -q ',flag,5,15,"4,6",4x4,1,' "$T/g1/summary.csv" && ok || bad "geometry columns: $(cat "$T/g1/summary.csv")"
-run "replay {4,6} 4x4" 0 "$H" replay "$T/g.rec" --log "$T/g2"
+grep -q '^L tiling 4 6$' "$T/g.rec" && grep -q '^L room 4 4$' "$T/g.rec" &&
+    grep -q '^L cell 0.75$' "$T/g.rec" && ok || bad "the recording's level has no geometry lines"
+grep -q ',flag,5,15,"4,6",4x4,0.75,' "$T/g1/summary.csv" && ok ||
+    bad "geometry columns: $(cat "$T/g1/summary.csv")"
+run "replay {4,6} 4x4 0.75 m" 0 "$H" replay "$T/g.rec" --log "$T/g2"
 diff -r "$T/g1" "$T/g2" >/dev/null && ok || bad "replayed {4,6} logs differ"
 run "play a conflict" 2 "$H" play "$T/f.lvl" --tiling 4,4 --frames 2 --size 64x48 &&
     one_line "flat play" "line 3: no walk inside the room reaches the flag's tile Wrf"
