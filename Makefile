@@ -180,15 +180,27 @@ FUZZ_EXTRA_fuzz_lines := platform/cli/cli_util.c platform/file/hol_file.c platfo
 FUZZ_EXTRA_fuzz_hid_desc := $(HID_SRC)
 FUZZ_EXTRA_fuzz_hid_report := $(HID_SRC)
 FUZZ_EXTRA_fuzz_hid_script := $(HID_SRC) $(HID_DEV_SRC) $(HID_LIBS)
-$(BUILD)/fuzz/%: fuzz/%.c $(wildcard fuzz/*.h) $(CORE_SRC) $(RENDER_SRC) $(HID_SRC) $(PLAT_SRC) $(CLI_SRC)
+# The harnesses share one instrumented build of the core (compiled once, not
+# once a harness: 15 harnesses compiled the core 15 times); the corpus
+# replays of make test link the core library of the plain build.
+FUZZ_FLAGS := $(CSTD) -g -O1 -D_DEFAULT_SOURCE -fsanitize=address,undefined -fno-sanitize-recover=all
+FUZZ_CORE_LIB := $(BUILD)/fuzz-core/libholcore.a
+$(BUILD)/fuzz-core/%.o: %.c
 	@mkdir -p $(dir $@)
-	$(FUZZ_CC) $(CSTD) -g -O1 -D_DEFAULT_SOURCE -fsanitize=fuzzer,address,undefined \
-	  -fno-sanitize-recover=all -o $@ $< $(CORE_SRC) $(FUZZ_EXTRA_$*) $(LDLIBS)
+	$(FUZZ_CC) $(FUZZ_FLAGS) -fsanitize=fuzzer-no-link -MMD -MP -c $< -o $@
 
-$(BUILD)/fuzz-replay/%: fuzz/%.c fuzz/replay_main.c $(wildcard fuzz/*.h) $(CORE_SRC) $(RENDER_SRC) $(HID_SRC) $(PLAT_SRC) $(CLI_SRC)
+$(FUZZ_CORE_LIB): $(CORE_SRC:%.c=$(BUILD)/fuzz-core/%.o)
+	@rm -f $@
+	$(AR) rcs $@ $^
+
+$(BUILD)/fuzz/%: fuzz/%.c $(wildcard fuzz/*.h) $(FUZZ_CORE_LIB) $(RENDER_SRC) $(HID_SRC) $(PLAT_SRC) $(CLI_SRC)
 	@mkdir -p $(dir $@)
-	$(CC) $(CSTD) $(WARN) -O1 -g -D_DEFAULT_SOURCE -o $@ $< fuzz/replay_main.c $(CORE_SRC) \
-	  $(FUZZ_EXTRA_$*) $(LDLIBS)
+	$(FUZZ_CC) $(FUZZ_FLAGS) -fsanitize=fuzzer -o $@ $< $(FUZZ_EXTRA_$*) $(FUZZ_CORE_LIB) $(LDLIBS)
+
+$(BUILD)/fuzz-replay/%: fuzz/%.c fuzz/replay_main.c $(wildcard fuzz/*.h) $(CORE_LIB) $(RENDER_SRC) $(HID_SRC) $(PLAT_SRC) $(CLI_SRC)
+	@mkdir -p $(dir $@)
+	$(CC) $(CSTD) $(WARN) -O1 -g -D_DEFAULT_SOURCE -o $@ $< fuzz/replay_main.c \
+	  $(FUZZ_EXTRA_$*) $(CORE_LIB) $(LDLIBS)
 
 # The desktop game (EGL/X11 window): `make run RUN_ARGS="--mode flag"`.
 run: $(BUILD)/holonomy
@@ -218,18 +230,23 @@ tiling-gen-check: $(BUILD)/tests/gen_tiling
 purity: $(CORE_OBJ)
 	@sh tests/check_core_purity.sh $(CORE_OBJ)
 
-# Each suite prints its time after it ("-- NAME: S.S s", tests/timed.sh).
+# Each suite is a target of its own, so make -j2 runs two at once; a suite's
+# output is kept until it ends, then printed whole (tests/suite.sh) with its
+# time after it ("-- NAME: S.S s", tests/timed.sh).
 TIMED := sh tests/timed.sh
-unit: $(UNIT_BIN)
-	@set -e; for t in $(UNIT_BIN); do echo "== $$t"; $(TIMED) $$t $$t; done
+SUITE := sh tests/suite.sh $(BUILD)/suite-logs
+unit: $(UNIT_BIN) $(UNIT_BIN:$(BUILD)/tests/%=unit-run-%)
+unit-run-%: $(BUILD)/tests/%
+	@$(SUITE) $< $<
 
-render-test: $(RENDER_TEST_BIN)
-	@set -e; for t in $(RENDER_TEST_BIN); do echo "== $$t"; $(TIMED) $$t $$t; done
+render-test: $(RENDER_TEST_BIN) $(RENDER_TEST_BIN:$(BUILD)/tests/%=render-run-%)
+render-run-%: $(BUILD)/tests/%
+	@$(SUITE) $< $<
 
-cli-test: $(BUILD)/holonomy $(BUILD)/tests/x11_close $(BUILD)/tests/png_probe
-	@set -e; for t in $(CLI_TESTS); do echo "== $$t"; \
-	  HOLONOMY=$(BUILD)/holonomy X11_CLOSE=$(BUILD)/tests/x11_close \
-	  PNG_PROBE=$(BUILD)/tests/png_probe $(TIMED) $$t sh $$t; done
+cli-test: $(CLI_TESTS:tests/%.sh=cli-run-%)
+cli-run-%: $(BUILD)/holonomy $(BUILD)/tests/x11_close $(BUILD)/tests/png_probe
+	@HOLONOMY=$(BUILD)/holonomy X11_CLOSE=$(BUILD)/tests/x11_close \
+	  PNG_PROBE=$(BUILD)/tests/png_probe $(SUITE) tests/$*.sh sh tests/$*.sh
 
 # A test helper: a PNG decoded by render/hol_png.c, its colours counted.
 $(BUILD)/tests/png_probe: tests/png_probe.c render/hol_png.c render/hol_png.h
@@ -242,19 +259,20 @@ $(BUILD)/tests/x11_close: tests/x11_close.c
 	$(CC) $(CFLAGS) -o $@ $< -lX11
 
 # Every harness has a corpus of its own (a missing one fails here).
-fuzz-replay: $(FUZZ_SRC:fuzz/%.c=$(BUILD)/fuzz-replay/%)
-	@set -e; for f in $^; do n=$$(basename $$f); \
-	  ls fuzz/corpus/$$n/* >/dev/null || { echo "$$n: no corpus in fuzz/corpus/$$n"; exit 1; }; \
-	  $(TIMED) "fuzz corpus $$n" $$f fuzz/corpus/$$n/*; done; \
-	  echo "fuzz corpora replayed: $(notdir $^)"
+fuzz-replay: $(FUZZ_SRC:fuzz/%.c=$(BUILD)/fuzz-replay/%) $(FUZZ_SRC:fuzz/%.c=fuzz-corpus-%)
+	@echo "fuzz corpora replayed: $(notdir $(FUZZ_SRC:.c=))"
+fuzz-corpus-%: $(BUILD)/fuzz-replay/%
+	@ls fuzz/corpus/$*/* >/dev/null || { echo "$*: no corpus in fuzz/corpus/$*"; exit 1; }
+	@$(SUITE) "fuzz corpus $*" $< fuzz/corpus/$*/*
 
-fuzz: $(FUZZ_BIN)
-	@set -e; for f in $(FUZZ_BIN); do n=$$(basename $$f); \
-	  mkdir -p $(BUILD)/fuzz/new-$$n; \
-	  echo "== $$n for $(FUZZ_TIME) s"; \
-	  $$f -max_total_time=$(FUZZ_TIME) -print_final_stats=1 \
-	    -artifact_prefix=$(BUILD)/fuzz/ $(BUILD)/fuzz/new-$$n fuzz/corpus/$$n; \
-	done
+# Each harness FUZZ_TIME seconds from its corpus (new inputs go to
+# $(BUILD)/fuzz/new-NAME, findings to $(BUILD)/fuzz/); make -j2 fuzz runs two
+# at once.
+fuzz: $(FUZZ_BIN) $(FUZZ_SRC:fuzz/%.c=fuzz-run-%)
+fuzz-run-%: $(BUILD)/fuzz/%
+	@mkdir -p $(BUILD)/fuzz/new-$*
+	@$(SUITE) "$* for $(FUZZ_TIME) s" $< -max_total_time=$(FUZZ_TIME) -print_final_stats=1 \
+	  -artifact_prefix=$(BUILD)/fuzz/ $(BUILD)/fuzz/new-$* fuzz/corpus/$*
 
 bench: $(BENCH_BIN) $(BENCH_RENDER_BIN)
 	@set -e; for b in $(BENCH_BIN) $(BENCH_RENDER_BIN); do $$b; done
@@ -277,8 +295,10 @@ check-clang:
 cross-test: deps-cross
 	$(MAKE) CC=aarch64-linux-gnu-gcc AR=aarch64-linux-gnu-ar BUILD=$(BUILD)/aarch64 \
 	  $(UNIT_SRC:tests/%.c=$(BUILD)/aarch64/tests/%) $(BUILD)/aarch64/libholrender.a
-	@set -e; for t in $(UNIT_SRC:tests/%.c=$(BUILD)/aarch64/tests/%); do \
-	  echo "== $$t (qemu-aarch64)"; qemu-aarch64 -L /usr/aarch64-linux-gnu $$t; done
+	@$(MAKE) -s $(UNIT_SRC:tests/%.c=cross-run-%)
+cross-run-%:
+	@$(SUITE) "$(BUILD)/aarch64/tests/$* (qemu-aarch64)" \
+	  qemu-aarch64 -L /usr/aarch64-linux-gnu $(BUILD)/aarch64/tests/$*
 
 deps:
 	@missing=""; a=$$(dpkg --print-architecture); for p in $(DEB_PACKAGES); do \
