@@ -99,7 +99,7 @@ APT_LOCK_WAIT ?= 120
 APT_GET = $$SUDO env DEBIAN_FRONTEND=noninteractive apt-get -o DPkg::Lock::Timeout=$(APT_LOCK_WAIT)
 
 .PHONY: web web-serve web-test deps-web bench-web
-.PHONY: all test purity unit render-test cli-test fuzz-replay fuzz bench san clean deps xr \
+.PHONY: all test purity fn-length unit render-test cli-test fuzz-replay fuzz bench san clean deps xr \
         deps-cross check-clang cross-test run quest quest-help deps-quest quest-check check-hid-libusb deps-xr xr-test soak \
         deps-quest-link quest-link-check
 
@@ -206,7 +206,7 @@ $(BUILD)/fuzz-replay/%: fuzz/%.c fuzz/replay_main.c $(wildcard fuzz/*.h) $(CORE_
 run: $(BUILD)/holonomy
 	$(BUILD)/holonomy play $(RUN_ARGS)
 
-test: all purity tiling-gen-check unit render-test cli-test fuzz-replay
+test: all purity fn-length tiling-gen-check unit render-test cli-test fuzz-replay
 	@echo "make test: all suites passed"
 
 # The automata of canonical addresses (core/hol_tile_dfa.h) are derived from
@@ -229,6 +229,10 @@ tiling-gen-check: $(BUILD)/tests/gen_tiling
 
 purity: $(CORE_OBJ)
 	@sh tests/check_core_purity.sh $(CORE_OBJ)
+
+# The house's rule: no C function over 120 lines in core/, render/, platform/.
+fn-length:
+	@sh tests/check_fn_length.sh
 
 # Each suite is a target of its own, so make -j2 runs two at once; a suite's
 # output is kept until it ends, then printed whole (tests/suite.sh) with its
