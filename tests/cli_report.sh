@@ -85,6 +85,20 @@ done
 d=$("$P" "$T/out1/attempt-0002.png" --vs "$G/report_detour.png")
 [ "${d:-99999}" -lt 200 ] && ok || bad "picture 2 differs from the golden in ${d:-?} pixels"
 
+# another geometry: {4,6} in a 4 x 4 room (the summary's columns), walked N, E, W, N
+{ printf 'holonomy-rec 2\nsession 20260131T140509Z-00000009\nstart 2026-01-31T14:05:09Z\n'
+  printf 'version 0.1.0\nlevel q6\nL mode flag\nL seed 5\nL tiling 4 6\nL room 4 4\nL flag Nf\nend\n'
+  printf '%s f=9 h=%s,1.6,%s,0,0,0,1\n' 0 2.5 2.5 1 2.5 1.5 2 3.5 1.5 3 2.5 1.5 4 2.5 0.5 5 2.5 0.5
+} >"$T/q6.rec"
+run "replay q6" 0 "$H" replay "$T/q6.rec" --log "$T/lq6"
+K6=$(printf -- '- Nf\n' | "$H" nav --tiling 4,6 --room 4x4 | cut -d' ' -f1)
+run "report q6" 0 "$H" report "$T/lq6" --out "$T/out6"
+sed -n 2p "$T/out6/attempts.csv" | grep -q ",q6,flag,4,$K6,[0-9.]*,[0-9.]*,done,\"4,6\",4x4,1," && ok ||
+    bad "{4,6} 4x4 row (optimum $K6): $(sed -n 2p "$T/out6/attempts.csv")"
+"$P" "$T/out6/attempt-0001.png" dc5014 78aaf0 >"$T/probe" &&
+    [ "$(sed -n 2p "$T/probe")" -gt 100 ] && [ "$(sed -n 3p "$T/probe")" -gt 100 ] && ok ||
+    bad "{4,6} picture: $(cat "$T/probe" | tr '\n' ' ')"
+
 # DIR again: a report's own files are replaced; a foreign file is refused
 run "again" 0 "$H" report "$T/la" --out "$T/out1"
 [ ! -e "$T/out1/attempt-0002.png" ] && [ "$(wc -l <"$C")" = 2 ] && ok || bad "the rerun left old pictures"

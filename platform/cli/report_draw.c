@@ -11,6 +11,7 @@ typedef struct canvas {
     int size;
     double cx, cy, r; /* the disk's centre and radius in pixels */
     int flat;         /* {4,4}: plane coordinates scaled by 1 / extent */
+    int clip;         /* 1: pixels outside the disk are left alone */
     double extent;
     hol_room start;
 } canvas;
@@ -18,6 +19,9 @@ typedef struct canvas {
 static void put(canvas *c, int x, int y, uint32_t rgb)
 {
     if (x < 0 || y < 0 || x >= c->size || y >= c->size)
+        return;
+    double dx = x + 0.5 - c->cx, dy = y + 0.5 - c->cy;
+    if (c->clip && dx * dx + dy * dy > (c->r - 1.5) * (c->r - 1.5))
         return;
     uint8_t *p = c->px + ((size_t)y * (size_t)c->size + (size_t)x) * 4;
     p[0] = (uint8_t)(rgb >> 16);
@@ -182,7 +186,7 @@ hol_err report_draw(const report_picture *p, uint8_t *rgba, int size)
     if (size < 64 || size > 2048 || !hol_room_ok(&p->start))
         return HOL_EARG;
     int q = hol_tile_q(p->start.tile);
-    canvas c = {rgba, size, size / 2.0, size / 2.0, size / 2.0 - 4, q == 4, 1, p->start};
+    canvas c = {rgba, size, size / 2.0, size / 2.0, size / 2.0 - 4, q == 4, 0, 1, p->start};
     for (int i = 0; i < size * size; i++)
         memcpy(rgba + 4 * (size_t)i, "\xff\xff\xff\xff", 4);
     dot(&c, c.cx, c.cy, c.r, 0xf4f3ec);
@@ -193,7 +197,9 @@ hol_err report_draw(const report_picture *p, uint8_t *rgba, int size)
         c.extent = flat_extent(p);
         depth = (int)fmin(2 * c.extent + 2, 40);
     }
+    c.clip = 1; /* the flat grid's lines end at the disk */
     grid(&c, hol_tile_origin_q(q), hol_tile_origin_q(q), depth, corner_r);
+    c.clip = 0;
     hol_err err = path(&c, p->optimal, p->noptimal, size / 50.0 + 3, REPORT_RGB_OPTIMAL);
     if (!err)
         err = path(&c, p->walked, p->nwalked, size / 120.0 + 1.5, REPORT_RGB_WALKED);
