@@ -141,7 +141,7 @@ static void html_head(FILE *f, const report_run *r, const hol_report_agg *g)
     fputs("<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
           "<title>Holonomy report</title>\n<style>\n"
           "body{font-family:sans-serif;margin:1.5em;color:#222}\n"
-          "table{border-collapse:collapse;margin-bottom:2em}\n"
+          "table{border-collapse:collapse;margin-bottom:2em;font-size:.9em}\n"
           "td,th{border:1px solid #ccc;padding:.3em .5em;text-align:left;vertical-align:top}\n"
           "td.n{text-align:right}\ntr.killed,tr.aborted{background:#fde8e8}\n"
           ".walked{color:#dc5014}.optimal{color:#4a86d8}\n"
@@ -188,6 +188,11 @@ static void html_row(FILE *f, const report_run *r, int i)
     fputs("<tr class=\"", f);
     html(f, a->end);
     fprintf(f, "\"><td class=\"n\">%d</td>", i + 1);
+    if (t->png[0]) /* the picture first: the table may be wider than the window */
+        fprintf(f, "<td><a href=\"%s\"><img src=\"%s\" width=\"180\" height=\"180\" "
+                   "alt=\"attempt %d\"></a></td>", t->png, t->png, i + 1);
+    else
+        fputs("<td>(no steps file)</td>", f);
     html_cell(f, a->participant);
     html_cell(f, a->session);
     fprintf(f, "<td class=\"n\">%ld</td>", a->attempt);
@@ -203,11 +208,7 @@ static void html_row(FILE *f, const report_run *r, int i)
     html_cell(f, a->end);
     snprintf(num, sizeof num, "{%s} %s, %s m", tiling, room, cell);
     html_cell(f, num);
-    if (t->png[0])
-        fprintf(f, "<td><a href=\"%s\"><img src=\"%s\" width=\"180\" height=\"180\" "
-                   "alt=\"attempt %d\"></a></td></tr>\n", t->png, t->png, i + 1);
-    else
-        fputs("<td>(no steps file)</td></tr>\n", f);
+    fputs("</tr>\n", f);
 }
 
 int report_write_html(const report_run *r, const hol_report_agg *g)
@@ -218,10 +219,10 @@ int report_write_html(const report_run *r, const hol_report_agg *g)
     if (st)
         return st;
     html_head(a.f, r, g);
-    fputs("<table>\n<tr><th>#</th><th>participant</th><th>session</th><th>attempt</th>"
+    fputs("<table>\n<tr><th>#</th><th>path</th><th>participant</th><th>session</th><th>attempt</th>"
           "<th>study</th><th>condition</th><th>position</th><th>level</th><th>mode</th>"
           "<th>steps</th><th>optimum</th><th>efficiency</th><th>time (s)</th><th>end</th>"
-          "<th>geometry</th><th>path</th></tr>\n", a.f);
+          "<th>geometry</th></tr>\n", a.f);
     for (int i = 0; i < r->natt; i++)
         html_row(a.f, r, i);
     fputs("</table>\n</body>\n</html>\n", a.f);
