@@ -145,7 +145,9 @@ static int parse_long(const char *s, long lo, long hi, long *out)
     return 1;
 }
 
-/* A plain decimal [-]D[.D] (no exponent), at most 1e9. */
+/* A plain decimal [-]D[.D] (no exponent, at most 15 digits, at most 1e9):
+ * the digits as an integer divided by a power of ten, both exact, so the
+ * result is the double nearest the text (as strtod gives it). */
 static int parse_decimal(const char *s, double *out)
 {
     int neg = *s == '-', digits = 0;
@@ -154,11 +156,13 @@ static int parse_decimal(const char *s, double *out)
     for (; *p >= '0' && *p <= '9'; p++, digits++)
         v = v * 10 + (*p - '0');
     if (*p == '.')
-        for (p++; *p >= '0' && *p <= '9'; p++, digits++)
-            v += (*p - '0') * (scale /= 10);
-    if (*p || !digits || v > 1e9)
+        for (p++; *p >= '0' && *p <= '9'; p++, digits++) {
+            v = v * 10 + (*p - '0');
+            scale *= 10;
+        }
+    if (*p || !digits || digits > 15 || v / scale > 1e9)
         return 0;
-    *out = neg ? -v : v;
+    *out = neg ? -(v / scale) : v / scale;
     return 1;
 }
 
