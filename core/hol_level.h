@@ -71,8 +71,9 @@ hol_err hol_level_parse(const char *text, size_t len, hol_app_level *out,
 
 /* One line of a level file checked on its own (a study's set line): its
  * key, value count and values as hol_level_parse reads them; what needs
- * the other lines (a mode's objectives, conflicts) is not checked. Errors
- * as hol_level_parse's, with line 1. */
+ * the other lines (a mode's objectives, conflicts) is not checked; an
+ * address may be of any tiling {4,4}..{4,8} (the level's tiling line may
+ * be another line). Errors as hol_level_parse's, with line 1. */
 hol_err hol_level_line_check(const char *s, size_t n, hol_level_err *err);
 
 /* Writes "line N: MESSAGE..." (N counted from first for line 1; just the

@@ -79,6 +79,12 @@ grep -q ',flag,5,15,"4,6",4x4,0.75,' "$T/g1/summary.csv" && ok ||
     bad "geometry columns: $(cat "$T/g1/summary.csv")"
 run "replay {4,6} 4x4 0.75 m" 0 "$H" replay "$T/g.rec" --log "$T/g2"
 diff -r "$T/g1" "$T/g2" >/dev/null && ok || bad "replayed {4,6} logs differ"
+# the campaign with --tiling: the tutorial stays {4,5} 3x3 (it takes --cell
+# only), the other five levels get the line
+run "campaign in {4,6}" 0 "$H" play --tiling 4,6 --cell 0.8 --frames 3 --size 64x48 --record "$T/c6.rec"
+[ "$(grep -c '^L tiling 4 6$' "$T/c6.rec")" = 5 ] && [ "$(grep -c '^L cell 0.8$' "$T/c6.rec")" = 6 ] &&
+    ! sed -n '/^level tutorial$/,/^level /p' "$T/c6.rec" | grep -q '^L tiling' && ok ||
+    bad "campaign geometry lines: $(grep '^L \(tiling\|cell\)' "$T/c6.rec" | tr '\n' ' ')"
 run "play a conflict" 2 "$H" play "$T/f.lvl" --tiling 4,4 --frames 2 --size 64x48 &&
     one_line "flat play" "line 3: no walk inside the room reaches the flag's tile Wrf"
 # keyboard mode runs and stops after --frames; no LEVEL: the default

@@ -361,6 +361,12 @@ static void test_geometry_conditions(void **state)
     assert_string_equal(msg, "line 2: no walk inside the room reaches the flag's tile Nf (in the "
                              "flat {4,4} a 3x3 room reaches only its own 9 tiles)");
     assert_int_equal(in_study, 0);
+    /* a set line with an address of another tiling ({4,8}'s Nrr) */
+    assert_int_equal(parse("study geo\ncondition a\nlevel a.lvl\nset tiling 4 8\n"
+                           "set flag Nrr\n", msg), 0);
+    assert_int_equal(make(0, 1, "mode flag\nflag N\n", &L, msg, &in_study), 0);
+    assert_int_equal(hol_tile_q(L.lvl.flag), 8);
+    assert_int_equal(parse("study geo\ncondition a\nlevel a.lvl\nset flag Nrrrrrrr\n", msg), 1);
     /* a bad set line: the study's line */
     assert_int_equal(parse("study geo\ncondition a\nset mode explore\nset room 3 6\n", msg), 1);
     assert_string_equal(msg, "line 4: set: room needs C R with C and R from 3 to 5 (cells), not '3 6'");

@@ -71,7 +71,12 @@ int play_geometry_apply(const char *cmd, const play_geometry *g, hol_level *leve
 {
     for (int i = 0; i < n; i++) {
         hol_level_err le;
-        if (hol_level_set_geometry(&levels[i], g->q, g->cols, g->rows, g->cell_m, &le)) {
+        /* the tutorial stays {4,5} 3x3 unless its own lines say otherwise
+         * (its lessons are made for it); the cell size, the player's space,
+         * applies to it too */
+        int tut = levels[i].lvl.mode == HOL_APP_TUTORIAL;
+        if (hol_level_set_geometry(&levels[i], tut ? 0 : g->q, tut ? 0 : g->cols,
+                                   tut ? 0 : g->rows, g->cell_m, &le)) {
             char msg[300], name[HOL_LEVEL_NAME_MAX * 4];
             cli_error(cmd, 0, "level '%s': %s", cli_escape(levels[i].name, name, sizeof name),
                       hol_level_err_format(&le, 1, msg, sizeof msg));

@@ -50,7 +50,9 @@ int play_read_level(const char *cmd, const char *path, hol_level *out);
  * (opt its name, val its value): 1 taken, 0 not one of them, -1 a bad value
  * reported as one line. play_geometry_apply gives each level the options
  * as its default (hol_level_set_geometry: the missing lines added to its
- * text; a level whose own line differs is refused naming the level). */
+ * text; a level whose own line differs is refused naming the level); a
+ * tutorial level takes only --cell (its lessons are made for {4,5} 3x3:
+ * its own lines may say otherwise). */
 typedef struct play_geometry {
     int q, cols, rows;
     double cell_m;
@@ -63,7 +65,9 @@ typedef struct play_geometry {
     "                  These are the default of levels without a 'tiling', 'room'\n"   \
     "                  or 'cell' line (the line is added to the level's text, so\n"     \
     "                  logs and recordings carry it); a level whose own line\n"         \
-    "                  differs is refused (docs/levels.md)\n"
+    "                  differs is refused (docs/levels.md). The tutorial takes\n"   \
+    "                  only --cell: it stays {4,5} 3x3 unless its own lines say\n"  \
+    "                  otherwise\n"
 int play_geometry_value(const char *cmd, const char *opt, const char *val, play_geometry *g);
 int play_geometry_apply(const char *cmd, const play_geometry *g, hol_level *levels, int n);
 int play_levels(const char *cmd, const char *level_path, const char *mode, uint64_t seed,
