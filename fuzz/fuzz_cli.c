@@ -3,7 +3,8 @@
  *
  * Input: the first byte picks the parser, the rest is its text.
  * - 0: an option value (NUL-terminated at the first NUL): cli_parse_u64
- *   (seeds; decimal or 0x hex), cli_parse_count and cli_parse_doubles (lists
+ *   (seeds; decimal or 0x hex), hol_level_parse_cell (--cell),
+ *   cli_parse_count and cli_parse_doubles (lists
  *   of numbers). Checks: accepted text is all digits (or 0x and hex digits)
  *   and prints back to the same value; a list is accepted only with as many
  *   values as it has commas plus one, all finite; refused text leaves
@@ -44,6 +45,21 @@ static void check_number(const char *s)
         while (digits[0] == '0' && digits[1])
             digits++; /* leading zeros */
         CHECK(strcasecmp(back, digits) == 0);
+    }
+    /* --cell M (hol_level_parse_cell): accepted, a value in 0.5..1.5 of
+     * digits and at most 3 decimals that prints back to the same value;
+     * refused, the output untouched */
+    double m = -7;
+    if (hol_level_parse_cell(s, strlen(s), &m) == HOL_OK) {
+        char back[16];
+        double again_m = 0;
+        CHECK(m >= 0.5 && m <= 1.5);
+        hol_level_format_cell(m, back);
+        CHECK(hol_level_parse_cell(back, strlen(back), &again_m) == HOL_OK && again_m == m);
+        for (const char *p = s; *p; p++)
+            CHECK(isdigit((unsigned char)*p) || *p == '.');
+    } else {
+        CHECK(m == -7);
     }
     size_t c = cli_parse_count(s);
     if (c) {
