@@ -134,7 +134,7 @@ expect_usage --out "$T/q.png" --orient 0,0,0,1 --tan -1,1,-1,1,0
 
 # geometries (SPEC 7): bad values one line, exit 2, no output
 for bad in "--tiling 4,3" "--tiling 4,9" "--tiling 5,5" "--tiling 4" "--room 2x3" \
-    "--room 6x6" "--room 3x" "--cell 0.4" "--cell 1.6" "--cell abc" "--cell 1,0" \
+    "--room 6x6" "--room 3x" "--cell 0.4" "--cell 1.6" "--cell abc" "--cell 1,0" "--cell 0.7501" \
     "--tiling 4,5 --tiling 4,6" "--room 4x4 --walk NNN" "--cell 0.5 --eye 1.5,1.6,1.5" \
     "--room 4x4 --cell 0.7 --eye 1.1,1.6,1.1"; do
     # shellcheck disable=SC2086

@@ -8,6 +8,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "../../core/hol_level.h"
 #include "../../core/hol_motion.h"
 #include "../../core/hol_nav.h"
 #include "../../core/hol_room.h"
@@ -42,7 +43,8 @@ static const char *const render_usage =
     "                  (default 4,5)\n"
     "  --room CxR      a room of C x R cells, 3 to 5 each (default 3x3); the\n"
     "                  walk starts on cell (C/2, R/2)\n"
-    "  --cell M        the side of a cell in metres, 0.5 to 1.5 (default 1):\n"
+    "  --cell M        the side of a cell in metres, 0.5 to 1.5, at most 3\n"
+    "                  decimals (default 1):\n"
     "                  cell (c,r) spans x in [c*M, (c+1)*M], z in [r*M,\n"
     "                  (r+1)*M]\n"
     "  --eye X,Y,Z     eye in room coordinates (metres; x east, y up, z\n"
@@ -374,8 +376,12 @@ static int parse_number_opt(const char *cmd, render_opts *o, const char *a, cons
         if (parse_double(val, &o->ipd) || o->ipd <= 0 || o->ipd > 0.2)
             bad = "is not an eye distance in (0, 0.2] m";
     } else if (!strcmp(a, "--cell")) {
-        if (parse_double(val, &o->cell_m) || !(o->cell_m >= 0.5 && o->cell_m <= 1.5))
-            bad = "is not a cell side in metres from 0.5 to 1.5";
+        /* the parser of play's --cell and the level line `cell M` */
+        if (hol_level_parse_cell(val, strlen(val), &o->cell_m)) {
+            cli_error(cmd, 0, "--cell needs metres from 0.5 to 1.5 (at most 3 decimals), not '%.40s'",
+                      val);
+            return -1;
+        }
     } else {
         return 0;
     }
