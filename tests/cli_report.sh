@@ -126,6 +126,8 @@ printf 'session,attempt\n' >"$T/bad1/summary.csv"
 run "no columns" 2 "$H" report "$T/bad1" --out "$T/o2" && one_line "no columns" "summary.csv: line 1: column level: missing"
 printf 'a,"b\n' >"$T/bad1/summary.csv"
 run "open quote" 2 "$H" report "$T/bad1" --out "$T/o2" && one_line "open quote" "closing quote"
+run "--out new/" 0 "$H" report "$T/la" --out "$T/o5/" && [ -f "$T/o5/index.html" ] && ok ||
+    bad "--out with a trailing slash"
 # a missing steps file: a warning, the row without a picture
 cp -r "$T/la" "$T/miss" && rm "$T/miss/steps-001.csv"
 run "missing steps" 0 "$H" report "$T/miss" --out "$T/o4" && one_line "missing steps" "warning: .*steps-001.csv: missing"

@@ -58,6 +58,9 @@ static int check_out_dir(const char *cmd, const char *dir)
     if (stat(dir, &sb)) {
         char parent[4096];
         snprintf(parent, sizeof parent, "%s", dir);
+        size_t n = strlen(parent);
+        while (n > 1 && parent[n - 1] == '/')
+            parent[--n] = 0; /* "new/" is the folder "new" */
         char *slash = strrchr(parent, '/');
         const char *p = slash ? (slash == parent ? "/" : (*slash = 0, parent)) : ".";
         if (errno == ENOENT && !stat(p, &sb) && S_ISDIR(sb.st_mode))
