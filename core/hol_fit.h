@@ -35,6 +35,7 @@
 #include <stddef.h>
 
 #include "hol_err.h"
+#include "hol_level.h"
 
 #define HOL_FIT_MARGIN 0.1      /* metres clear on every side (default) */
 #define HOL_FIT_STEP_CM 5       /* cell sizes are multiples of 5 cm */
@@ -73,5 +74,15 @@ int hol_fit_polygon_holds(const float *xz, int n, double margin, int cols, int r
  * playing 3 x 3 cells of 0.5 m, keep to the middle". Returns the length
  * (snprintf's). */
 int hol_fit_text(const hol_fit *f, double margin, char *buf, size_t cap);
+
+/* Plays the fit in a level that names neither a room nor a cell (its
+ * lvl.room_cols and lvl.cell_m are 0): the level's text gains the lines
+ * "room C R" and "cell M" and is made again (hol_level_make; the study
+ * labels kept), so its hash, the logs and the recording name the room
+ * and a replay plays it. Returns HOL_OK with *out_changed 1, or 0 when the
+ * level names its own geometry (kept as it is); an error of
+ * hol_level_make (the text too long, the room refusing the level: an
+ * objective out of its reach) leaves the level unchanged. */
+hol_err hol_fit_level(hol_level *lv, const hol_fit *f, int *out_changed);
 
 #endif

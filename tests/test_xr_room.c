@@ -46,7 +46,7 @@ static void rotate(const float q[4], const double v[3], double out[3])
 static void test_default_placement(void **state)
 {
     (void)state;
-    hol_xr_calib c = {0, 0, 0};
+    hol_xr_calib c = {0, 0, 0, 0, 0};
     float p[3] = {0, 1.7f, 0}, q[4] = {0, 0, 0, 1};
     hol_pose r;
     hol_xr_to_room(&c, p, q, &r);
@@ -67,7 +67,7 @@ static void test_recentre(void **state)
     (void)state;
     uint64_t s = 7;
     for (int i = 0; i < 2000; i++) {
-        hol_xr_calib c = {frand(&s) * 6, frand(&s) * 4 - 2, frand(&s) * 4 - 2};
+        hol_xr_calib c = {frand(&s) * 6, frand(&s) * 4 - 2, frand(&s) * 4 - 2, 0, 0};
         float p[3] = {(float)(frand(&s) * 6 - 3), (float)(1 + frand(&s)),
                       (float)(frand(&s) * 6 - 3)}, q[4];
         random_quat(&s, q);
@@ -150,6 +150,54 @@ static void test_fade(void **state)
     assert_true(fabs(hol_xr_fade(half, m) - 0.5) < 1e-9);
     double nan_eye[2][3] = {{NAN, 1.6, 1.5}, {1.5, 1.6, 1.5}};
     assert_true(hol_xr_fade(nan_eye, m) == 1);
+}
+
+/* Issue 20: a room of W x D metres (C*M by R*M) is centred on the stage
+ * origin (and on the head at a recentre), round-trips, and fades at its
+ * own hedges; the stage bounds hold it or not by its own size. */
+static void test_room_of_any_size(void **state)
+{
+    (void)state;
+    static const double size[][2] = {{2.4, 2.4}, {3.0, 1.8}, {7.5, 6.0}, {1.5, 1.5}};
+    uint64_t s = 11;
+    for (size_t k = 0; k < sizeof size / sizeof size[0]; k++) {
+        double w = size[k][0], d = size[k][1];
+        hol_xr_calib c = {0, 0, 0, w / 2, d / 2};
+        float p[3] = {0, 1.6f, 0}, q[4] = {0, 0, 0, 1};
+        hol_pose r;
+        hol_xr_to_room(&c, p, q, &r);
+        assert_true(fabs(r.pos[0] - w / 2) < 1e-6 && fabs(r.pos[2] - d / 2) < 1e-6);
+        /* the room's north-west corner is half the room west and north */
+        float nw[3] = {(float)(-w / 2), 1.6f, (float)(-d / 2)};
+        hol_xr_to_room(&c, nw, q, &r);
+        assert_true(fabs(r.pos[0]) < 1e-5 && fabs(r.pos[2]) < 1e-5);
+        /* recentre: the head becomes the room's centre; stage <-> room */
+        float hp[3] = {(float)(frand(&s) - 0.5), 1.7f, (float)(frand(&s) - 0.5)}, hq[4];
+        random_quat(&s, hq);
+        hol_xr_recentre(&c, hp, hq);
+        hol_xr_to_room(&c, hp, hq, &r);
+        assert_true(fabs(r.pos[0] - w / 2) < 1e-5 && fabs(r.pos[2] - d / 2) < 1e-5);
+        float back[3], bq[4];
+        hol_xr_to_stage(&c, &r, back, bq);
+        for (int i = 0; i < 3; i++)
+            assert_true(fabsf(back[i] - hp[i]) < 1e-5f);
+        /* the fade: none in the middle, full at and beyond the hedges */
+        double mid[2][3] = {{w / 2, 1.6, d / 2}, {w / 2, 1.6, d / 2}};
+        assert_true(hol_xr_fade_room(mid, 0.15, w, d) == 0);
+        double east[2][3] = {{w - 0.01, 1.6, d / 2}, {w / 2, 1.6, d / 2}};
+        assert_true(hol_xr_fade_room(east, 0.15, w, d) == 1);
+        double in_east[2][3] = {{w - 0.15, 1.6, d / 2}, {w / 2, 1.6, d / 2}};
+        assert_true(hol_xr_fade_room(in_east, 0.15, w, d) == 0);
+        double south[2][3] = {{w / 2, 1.6, d + 0.2}, {w / 2, 1.6, d / 2}};
+        assert_true(hol_xr_fade_room(south, 0.15, w, d) == 1);
+        /* bounds: the room's own size */
+        assert_true(hol_xr_bounds_hold((float)w, (float)d, w, d));
+        assert_false(hol_xr_bounds_hold((float)(w - 0.01), (float)d, w, d));
+        assert_false(hol_xr_bounds_hold((float)w, (float)(d - 0.01), w, d));
+    }
+    /* zero half sizes: the 3 x 3 m room, as before rooms had sizes */
+    double e[2][3] = {{2.9, 1.6, 1.5}, {1.5, 1.6, 1.5}};
+    assert_true(hol_xr_fade_room(e, 0.15, 3, 3) == hol_xr_fade(e, 0.15));
 }
 
 static void test_lifecycle(void **state)
@@ -266,6 +314,7 @@ int main(void)
         cmocka_unit_test(test_recentre),
         cmocka_unit_test(test_bounds),
         cmocka_unit_test(test_fade),
+        cmocka_unit_test(test_room_of_any_size),
         cmocka_unit_test(test_lifecycle),
         cmocka_unit_test(test_life_quit_by_the_app),
         cmocka_unit_test(test_life_stopped_by_the_runtime),

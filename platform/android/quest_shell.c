@@ -1,6 +1,8 @@
 /* quest_shell.c - the Quest app on a quest_host (see quest_shell.h): the
  * session under the OpenXR layer, files through the POSIX sink, every
- * message through logcat. */
+ * message through logcat. The session is made once the headset knows its
+ * play area (quest_fit): the campaign plays the room and cell size the
+ * stage bounds hold (core/hol_fit.h), as `holonomy xr` does. */
 #include "quest_shell.h"
 
 #include <android/log.h>
@@ -16,6 +18,7 @@
 typedef struct quest {
     const quest_host *host;
     hol_session *session;
+    hol_level levels[HOL_CAMPAIGN_LEVELS];
     hol_sink_posix logs, recs;
     int resumed;
     int destroy;
@@ -56,6 +59,12 @@ static int quest_level_started(void *user)
     return hol_app_get_events(hol_session_app(((quest *)user)->session))->level_started;
 }
 
+static const hol_app_view *quest_view(void *user)
+{
+    quest *q = user;
+    return q->session ? hol_app_get_view(hol_session_app(q->session)) : NULL;
+}
+
 static int quest_poll(void *user)
 {
     quest *q = user;
@@ -76,13 +85,12 @@ static int quest_folders(quest *q, const char *files)
     return 0;
 }
 
-/* The session: the default campaign, logs and a recording in the app's
- * files directory (the external one, else the internal). 0 ok. */
-static int quest_session(quest *q)
+/* The default campaign and the folders for its logs and recording in the
+ * app's files directory (the external one, else the internal). 0 ok. */
+static int quest_prepare(quest *q)
 {
-    static hol_level levels[HOL_CAMPAIGN_LEVELS];
     const char *ext = q->host->files_dir, *in = q->host->internal_dir;
-    if (hol_campaign_default(1, levels)) {
+    if (hol_campaign_default(1, q->levels)) {
         quest_log(ANDROID_LOG_ERROR, "cannot make the default campaign");
         return 1;
     }
@@ -91,9 +99,29 @@ static int quest_session(quest *q)
                   ext ? ext : "(no external files directory)", in ? in : "(none)");
         return 1;
     }
+    return 0;
+}
+
+/* The play area's fit (hol_xr_app_fns.fit; NULL: no bounds): told, played
+ * in the campaign's levels, then the session made. 0 ok. */
+static int quest_fit(void *user, const hol_fit *f)
+{
+    quest *q = user;
+    if (f) {
+        char line[160];
+        hol_fit_text(f, -1, line, sizeof line);
+        quest_log(ANDROID_LOG_INFO, "%s", line);
+        for (int i = 0; i < HOL_CAMPAIGN_LEVELS; i++) {
+            int changed = 0;
+            hol_err e = hol_fit_level(&q->levels[i], f, &changed);
+            if (e)
+                quest_log(ANDROID_LOG_WARN, "level %s keeps its room: the fitted one refuses "
+                                            "it (%s)", q->levels[i].name, hol_err_str(e));
+        }
+    }
     hol_session_desc d;
     memset(&d, 0, sizeof d);
-    d.levels = levels;
+    d.levels = q->levels;
     d.nlevels = HOL_CAMPAIGN_LEVELS;
     d.log = &q->logs.sink;
     d.append = 1;
@@ -118,16 +146,19 @@ int quest_run(const quest_host *host)
     q.host = host;
     q.resumed = 1;
     int rc = 1;
-    if (quest_session(&q) == 0) {
+    if (quest_prepare(&q) == 0) {
         hol_xr_desc d;
         memset(&d, 0, sizeof d);
         d.check_frame = -1;
         d.android_vm = host->vm;
         d.android_activity = host->activity;
         hol_xr_app_fns fns = {.user = &q, .step = quest_step, .world = quest_world,
-                              .level_started = quest_level_started, .poll_platform = quest_poll};
+                              .level_started = quest_level_started, .poll_platform = quest_poll,
+                              .fit = quest_fit, .view = quest_view};
         rc = hol_xr_run(&d, &fns);
-        hol_err e = q.destroy ? hol_session_abort(q.session) : hol_session_finish(q.session);
+        hol_err e = !q.session ? HOL_OK
+                    : q.destroy ? hol_session_abort(q.session)
+                                : hol_session_finish(q.session);
         if (e) {
             quest_log(ANDROID_LOG_ERROR, "%s", hol_session_message(q.session));
             rc = 1;

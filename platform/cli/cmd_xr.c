@@ -29,6 +29,9 @@ static const char *const xr_usage =
     "section 5); without one, the default campaign. Logs and the recording\n"
     "are those of 'holonomy play' (its --log, --append, --participant and\n"
     "--record), so 'holonomy replay' runs a headset session again headless.\n"
+    "Where the runtime gives the play area's bounds, the room and cell size\n"
+    "are fitted to them (the most cells of at least 0.6 m, 0.1 m clear; a\n"
+    "level's room or cell lines win) and an 'xr:' line says what was chosen.\n"
     "Controllers: confirm, menu, recentre, minimap; in the menu, restart\n"
     "(confirm's button) and quit (README: Headset, the bindings).\n"
     "\n"
@@ -169,9 +172,56 @@ static int xr_script(const char *cmd, const char *path, hol_input **out, long *n
 }
 
 #ifdef HOL_XR
+/* The session is made once the headset knows its play area (xr_fit):
+ * levels that name neither a room nor a cell play the room and cell the
+ * stage bounds hold (core/hol_fit.h), unless the command line names them. */
+typedef struct xr_ctx {
+    const char *cmd;
+    hol_level *levels;
+    int nlevels;
+    play_out *out;
+    hol_rec_meta meta;
+    int append;
+    int geo_named; /* --room or --cell given: no fit */
+    hol_session *s;
+    int st;        /* the session's opening status */
+} xr_ctx;
+
+static void xr_apply_fit(xr_ctx *c, const hol_fit *f)
+{
+    int n = 0;
+    for (int i = 0; i < c->nlevels; i++) {
+        int changed = 0;
+        hol_err e = hol_fit_level(&c->levels[i], f, &changed);
+        if (e)
+            printf("xr: level %s keeps its room: the fitted one refuses it (%s)\n",
+                   c->levels[i].name, hol_err_str(e));
+        n += changed;
+    }
+    printf("xr: the fitted room plays in %d of %d level(s) (the others name their own)\n", n,
+           c->nlevels);
+}
+
+static int xr_fit(void *user, const hol_fit *f)
+{
+    xr_ctx *c = user;
+    if (f && c->geo_named)
+        printf("xr: --room/--cell given: the play area's fit is not used\n");
+    else if (f)
+        xr_apply_fit(c, f);
+    c->st = play_session_open(c->cmd, c->out, c->levels, c->nlevels, &c->meta, c->append, &c->s);
+    return c->st != 0;
+}
+
+static const hol_app_view *xr_view(void *user)
+{
+    xr_ctx *c = user;
+    return c->s ? hol_app_get_view(hol_session_app(c->s)) : NULL;
+}
+
 static int xr_step(void *user, const hol_input *in, const hol_app_view **out_view)
 {
-    hol_session *s = user;
+    hol_session *s = ((xr_ctx *)user)->s;
     int over = 0;
     hol_err err = hol_session_step(s, in, &over);
     *out_view = hol_app_get_view(hol_session_app(s));
@@ -182,12 +232,12 @@ static int xr_step(void *user, const hol_input *in, const hol_app_view **out_vie
 
 static struct hol_world *xr_world(void *user)
 {
-    return hol_app_world(hol_session_app(user));
+    return hol_app_world(hol_session_app(((xr_ctx *)user)->s));
 }
 
 static int xr_level_started(void *user)
 {
-    return hol_app_get_events(hol_session_app(user))->level_started;
+    return hol_app_get_events(hol_session_app(((xr_ctx *)user)->s))->level_started;
 }
 
 /* A signal asks the OpenXR session to end (STOPPING, then the save). */
@@ -197,7 +247,7 @@ static int xr_poll(void *user)
     return cli_caught_signal() != 0;
 }
 
-static int xr_run(const xr_opts *o, hol_session *s, const hol_input *script, long nscript)
+static int xr_run(const xr_opts *o, xr_ctx *c, const hol_input *script, long nscript)
 {
     hol_xr_desc d;
     memset(&d, 0, sizeof d);
@@ -207,9 +257,11 @@ static int xr_run(const xr_opts *o, hol_session *s, const hol_input *script, lon
     d.script = script;
     d.nscript = nscript;
     d.space = o->space;
-    hol_xr_app_fns fns = {.user = s, .step = xr_step, .world = xr_world,
-                          .level_started = xr_level_started, .poll_platform = xr_poll};
-    return hol_xr_run(&d, &fns) ? CLI_EXIT_FAIL : CLI_EXIT_OK;
+    hol_xr_app_fns fns = {.user = c, .step = xr_step, .world = xr_world,
+                          .level_started = xr_level_started, .poll_platform = xr_poll,
+                          .fit = xr_fit, .view = xr_view};
+    int rc = hol_xr_run(&d, &fns);
+    return c->st ? c->st : rc ? CLI_EXIT_FAIL : CLI_EXIT_OK;
 }
 #endif
 
@@ -238,19 +290,17 @@ int cli_cmd_xr(int argc, char **argv)
     if (!st)
         st = xr_script(cmd, o.input_path, &script, &nscript);
 #ifdef HOL_XR
-    hol_session *s = NULL;
+    xr_ctx c = {.cmd = cmd, .levels = levels, .nlevels = nlevels, .out = &out,
+                .append = o.append};
     cli_catch_signals();
     if (!st)
         st = play_out_open(cmd, o.log_dir, o.append, o.rec, &out);
     if (!st) {
-        hol_rec_meta meta;
-        hol_sink_posix_meta(&meta, o.participant);
-        snprintf(meta.study, sizeof meta.study, "%s", study);
-        st = play_session_open(cmd, &out, levels, nlevels, &meta, o.append, &s);
+        hol_sink_posix_meta(&c.meta, o.participant);
+        snprintf(c.meta.study, sizeof c.meta.study, "%s", study);
+        st = xr_run(&o, &c, script, nscript);
     }
-    if (!st)
-        st = xr_run(&o, s, script, nscript);
-    int end = play_session_end(cmd, s, cli_caught_signal() != 0);
+    int end = play_session_end(cmd, c.s, cli_caught_signal() != 0);
     st = st ? st : end;
     if (!st && cli_caught_signal())
         st = 128 + cli_caught_signal();

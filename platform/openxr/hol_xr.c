@@ -95,6 +95,11 @@ static int hol__setup(hol__xr *x, const void *binding)
     HOL__XR(x, "create the headset session", xrCreateSession(x->instance, &sc, &x->session));
     if (hol__spaces(x) || hol__swapchains(x))
         return 1;
+    /* the platform plays the fit (or not) before its world is asked for */
+    if (x->fns->fit && x->fns->fit(x->fns->user, x->have_bounds ? &x->fit : NULL)) {
+        x->failed = 1;
+        return 1;
+    }
 #ifndef __ANDROID__
     /* desktop GL encodes sRGB images only when asked (GLES always does) */
     if (x->srgb)

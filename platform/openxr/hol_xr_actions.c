@@ -145,27 +145,32 @@ int hol__spaces(hol__xr *x)
     return hol__bounds(x);
 }
 
-/* The stage bounds (the play area), kept for fitting the room to them; a
- * runtime without them (Monado's null compositor) is not an error. */
+/* The stage bounds (the play area) and the room and cell that fit them
+ * (core/hol_fit.h), told in one line; a runtime without them (Monado's
+ * null compositor) is not an error. */
 int hol__bounds(hol__xr *x)
 {
     x->have_bounds = x->bounds_small = 0;
+    x->fit_text[0] = 0;
     if (x->space_type != HOL_XR_SPACE_STAGE)
         return 0;
     XrExtent2Df b = {0, 0};
     XrResult r = xrGetReferenceSpaceBoundsRect(x->session, XR_REFERENCE_SPACE_TYPE_STAGE, &b);
     if (XR_FAILED(r))
         return hol__fail(x, "read the play area's bounds", r);
-    if (r == XR_SPACE_BOUNDS_UNAVAILABLE || b.width <= 0 || b.height <= 0) {
-        hol__say(x, "xr: stage bounds not given by the runtime");
+    if (r == XR_SPACE_BOUNDS_UNAVAILABLE || b.width <= 0 || b.height <= 0 ||
+        hol_fit_rect(b.width, b.height, -1, &x->fit) != HOL_OK) {
+        hol__say(x, "xr: stage bounds not given by the runtime: the room is not fitted to "
+                    "the play area");
         return 0;
     }
     x->have_bounds = 1;
     x->bounds_w = b.width;
     x->bounds_d = b.height;
-    x->bounds_small = !hol_xr_bounds_hold_room(b.width, b.height);
-    hol__say(x, "xr: stage bounds %.2f x %.2f m%s", b.width, b.height,
-             x->bounds_small ? " (smaller than the 3 x 3 m room)" : "");
+    x->bounds_small = x->fit.too_small;
+    hol_fit_text(&x->fit, -1, x->fit_text, sizeof x->fit_text);
+    hol__say(x, "xr: stage bounds %.2f x %.2f m", b.width, b.height);
+    hol__say(x, "xr: %s", x->fit_text);
     return 0;
 }
 

@@ -7,6 +7,7 @@
 #define HOL_XR_APP_H
 
 #include "../../core/hol_app.h"
+#include "../../core/hol_fit.h"
 #include "../../core/hol_input.h"
 
 struct hol_world;
@@ -25,6 +26,20 @@ typedef struct hol_xr_app_fns {
      * through STOPPING; 1 may come again while it does), 2 to leave at
      * once without waiting for the runtime (a second Ctrl-C). */
     int (*poll_platform)(void *user);
+    /* Optional: the play area's fit (core/hol_fit.h: the room and cell
+     * size the stage bounds hold; NULL when the runtime gives no bounds or
+     * the room's space is LOCAL), called once after the stage bounds are
+     * read and before the first world() or step(): the platform plays it
+     * in every level that names neither a room nor a cell, unless its own
+     * options name them (and may create its session here). Returns 0 to go
+     * on, else the run ends with status 1 (the platform said why). A new
+     * play area later (a reference space change) is told ("xr: ..."), not
+     * applied: the room in play stays. */
+    int (*fit)(void *user, const hol_fit *f);
+    /* Optional: the view now (before the first step too), so the room in
+     * play is placed in the stage from the first frame; NULL: the 3 x 3 m
+     * room until the first step. */
+    const hol_app_view *(*view)(void *user);
 } hol_xr_app_fns;
 
 typedef struct hol_xr_desc {

@@ -64,6 +64,9 @@ static void hol__space_changed(hol__xr *x, const XrEventDataReferenceSpaceChange
                                                  : "recentred");
     if (hol__bounds(x))
         x->life.done = 1;
+    else if (x->have_bounds)
+        hol__say(x, "xr: the room in play stays as it is; Holonomy started again plays the "
+                    "new fit");
 }
 
 static void hol__event(hol__xr *x, const XrEventDataBuffer *ev)

@@ -70,6 +70,46 @@ static uint32_t hol__device(const hol__xr *x)
     return x->any_profile ? HOL_DEVICE_XR : HOL_DEVICE_NONE;
 }
 
+/* The room in play (v: the app's view; NULL keeps the last): its size
+ * places it in the stage (centred on the calibration's origin), sizes the
+ * safety fade, and says whether the stage bounds hold it. */
+static void hol__room_size(hol__xr *x, const hol_app_view *v)
+{
+    if (v) {
+        double m = v->cell_m > 0 ? v->cell_m : 1.0;
+        x->room_w = hol_room_cols(&v->user) * m;
+        x->room_d = hol_room_rows(&v->user) * m;
+    }
+    if (x->room_w <= 0)
+        x->room_w = x->room_d = 3.0;
+    x->calib.half_w = x->room_w / 2;
+    x->calib.half_d = x->room_d / 2;
+    x->bounds_small = x->have_bounds && (x->fit.too_small ||
+                                         !hol_xr_bounds_hold(x->bounds_w, x->bounds_d,
+                                                             x->room_w, x->room_d));
+}
+
+/* While the fit is told (the first HOL__FIT_NOTE_S seconds): the view with
+ * two more HUD lines, the room in play and the play area, in capitals. */
+static const hol_app_view *hol__noted(hol__xr *x, const hol_app_view *v, double t)
+{
+    if (!x->have_bounds || t >= HOL__FIT_NOTE_S || !v)
+        return v;
+    x->note = *v;
+    hol_app_hud *h = &x->note.hud;
+    double m = v->cell_m > 0 ? v->cell_m : 1.0;
+    int fitted = hol_room_cols(&v->user) == x->fit.cols &&
+                 hol_room_rows(&v->user) == x->fit.rows && fabs(m - x->fit.cell_m) < 1e-9;
+    if (h->nlines + 2 > HOL_APP_HUD_LINES)
+        return v;
+    snprintf(h->lines[h->nlines++], HOL_APP_TEXT_MAX, "ROOM %d X %d, CELLS %.2g M%s",
+             hol_room_cols(&v->user), hol_room_rows(&v->user), m,
+             fitted && !x->fit.too_small ? "" : x->fit.too_small ? ": TOO BIG" : " (ASKED)");
+    snprintf(h->lines[h->nlines++], HOL_APP_TEXT_MAX, "%s YOUR %.1f X %.1f M PLAY AREA",
+             fitted && !x->fit.too_small ? "FITS" : "IN", x->bounds_w, x->bounds_d);
+    return &x->note;
+}
+
 /* The input record of this frame; shift: what the scripted head motion
  * moved the head by (room coordinates), for the eyes. */
 static int hol__input(hol__xr *x, const XrFrameState *fs, hol_input *in, float shift[3])
@@ -80,6 +120,7 @@ static int hol__input(hol__xr *x, const XrFrameState *fs, hol_input *in, float s
     x->last_t = in->time_s;
     if (x->life.focused)
         in->flags |= HOL_INPUT_FOCUSED;
+    hol__room_size(x, x->fns->view ? x->fns->view(x->fns->user) : NULL);
     if (x->bounds_small)
         in->flags |= HOL_INPUT_BOUNDS_SMALL;
     /* the head where the runtime has none: standing in the room's middle */
@@ -128,6 +169,7 @@ static int hol__step(hol__xr *x, const hol_input *in, const hol_app_view **out_v
     if (st < 0)
         return hol__error(x, "the app step failed");
     x->in_menu = *out_v && (*out_v)->paused && x->life.focused;
+    hol__room_size(x, *out_v);
     if (x->fns->level_started(x->fns->user))
         hol_render_invalidate(x->rnd);
     if ((st > 0 || (x->d->frames > 0 && x->submitted + 1 >= x->d->frames)) &&
@@ -219,7 +261,7 @@ static int hol__eyes(hol__xr *x, const hol_app_view *v, const hol_input *in,
         for (int k = 0; k < 3; k++)
             eyes[e][k] = eroom[e].pos[k] += shift[k];
     }
-    double fade = hol_xr_fade(eyes, HOL__MARGIN);
+    double fade = hol_xr_fade_room(eyes, HOL__MARGIN, x->room_w, x->room_d);
     for (int e = 0; e < 2; e++)
         if (hol__draw_eye(x, e, v, in, &eroom[e], fade, &pv[e]))
             return 1;
@@ -264,6 +306,7 @@ int hol__frame(hol__xr *x)
     const hol_app_view *v = NULL;
     if (views_ok < 0 || hol__input(x, &fs, &in, shift) || hol__step(x, &in, &v))
         return 1;
+    v = hol__noted(x, v, in.time_s);
     XrCompositionLayerProjectionView pv[2];
     memset(pv, 0, sizeof pv);
     int rendered = 0;

@@ -20,14 +20,19 @@ static void hol__roty(double a, double x, double z, double *ox, double *oz)
     *oz = -x * s + z * c;
 }
 
+static double hol__half(double h)
+{
+    return h > 0 ? h : 1.5;
+}
+
 void hol_xr_to_room(const hol_xr_calib *c, const float stage_pos[3], const float stage_quat[4],
                     hol_pose *out)
 {
     double x, z;
     hol__roty(-c->yaw, stage_pos[0] - c->ox, stage_pos[2] - c->oz, &x, &z);
-    out->pos[0] = (float)(x + 1.5);
+    out->pos[0] = (float)(x + hol__half(c->half_w));
     out->pos[1] = stage_pos[1];
-    out->pos[2] = (float)(z + 1.5);
+    out->pos[2] = (float)(z + hol__half(c->half_d));
     double r[4] = {0, sin(-c->yaw / 2), 0, cos(-c->yaw / 2)};
     double q[4] = {stage_quat[0], stage_quat[1], stage_quat[2], stage_quat[3]}, o[4];
     hol__qmul(r, q, o);
@@ -39,7 +44,8 @@ void hol_xr_to_stage(const hol_xr_calib *c, const hol_pose *room, float out_pos[
                      float out_quat[4])
 {
     double x, z;
-    hol__roty(c->yaw, room->pos[0] - 1.5, room->pos[2] - 1.5, &x, &z);
+    hol__roty(c->yaw, room->pos[0] - hol__half(c->half_w), room->pos[2] - hol__half(c->half_d),
+              &x, &z);
     out_pos[0] = (float)(x + c->ox);
     out_pos[1] = room->pos[1];
     out_pos[2] = (float)(z + c->oz);
@@ -63,18 +69,29 @@ void hol_xr_recentre(hol_xr_calib *c, const float head_pos[3], const float head_
 
 int hol_xr_bounds_hold_room(float width, float depth)
 {
-    return width >= 3.0f && depth >= 3.0f;
+    return hol_xr_bounds_hold(width, depth, 3.0, 3.0);
+}
+
+int hol_xr_bounds_hold(float width, float depth, double room_w, double room_d)
+{
+    return width >= room_w - 1e-4 && depth >= room_d - 1e-4;
 }
 
 double hol_xr_fade(const double eye[2][3], double margin)
 {
+    return hol_xr_fade_room(eye, margin, 3.0, 3.0);
+}
+
+double hol_xr_fade_room(const double eye[2][3], double margin, double room_w, double room_d)
+{
+    double size[3] = {room_w, 0, room_d};
     double ramp = margin - HOL_XR_FADE_FULL, f = 0;
     for (int e = 0; e < 2; e++) {
         if (!isfinite(eye[e][0]) || !isfinite(eye[e][2]))
             return 1; /* not a position: nothing safe to show */
         double d = 0;
         for (int k = 0; k <= 2; k += 2) {
-            double lo = margin - eye[e][k], hi = eye[e][k] - (3 - margin);
+            double lo = margin - eye[e][k], hi = eye[e][k] - (size[k] - margin);
             d = lo > d ? lo : d;
             d = hi > d ? hi : d;
         }

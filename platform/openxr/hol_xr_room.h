@@ -4,15 +4,18 @@
  *
  * Contract
  * - Stage space (OpenXR): +x right, +y up, looking down -z. Room
- *   coordinates (SPEC section 1): x east, y up, z south, move area x, z in
- *   [0, 3]. By default the room is centred on the stage origin with north
- *   along stage -z: room = stage + (1.5, 0, 1.5).
+ *   coordinates (SPEC sections 1, 7): x east, y up, z south, move area x in
+ *   [0, W], z in [0, D] (W = C*M, D = R*M: the room's cells times the cell
+ *   size; 3 x 3 m by default). By default the room is centred on the stage
+ *   origin with north along stage -z: room = stage + (W/2, 0, D/2) (the
+ *   calibration's half_w, half_d; zero: 1.5, the 3 x 3 m room).
  * - Recentre places the room from the head: the head's floor position
- *   becomes the middle cell's centre (1.5, 1.5) and the direction it faces
+ *   becomes the room's centre (W/2, D/2) and the direction it faces
  *   (its forward vector projected on the floor) becomes room north; height
  *   is kept. A head looking straight up or down keeps the previous heading.
  * - Stage bounds (xrGetReferenceSpaceBoundsRect, full width and depth):
- *   smaller than 3 x 3 m in either direction is a warning; none is not an
+ *   the room and cell size are fitted to them (core/hol_fit.h); a room in
+ *   play larger than them in either direction is a warning; none is not an
  *   error.
  * - Safety: hol_xr_fade says how far the view fades to the boundary.
  * - Lifecycle: hol_xr_lifecycle maps each session state (the XrSessionState
@@ -29,6 +32,8 @@ typedef struct hol_xr_calib {
     double yaw;    /* radians: the room's north is stage -z turned by yaw
                       about +y (positive towards -x, as the app's yaw) */
     double ox, oz; /* stage floor point at the room's centre */
+    double half_w, half_d; /* the room's half width and depth, metres;
+                              0: 1.5 (the 3 x 3 m room) */
 } hol_xr_calib;   /* all zero: the default placement */
 
 /* Stage pose -> room pose. */
@@ -40,8 +45,10 @@ void hol_xr_to_stage(const hol_xr_calib *c, const hol_pose *room, float out_pos[
 /* Place the room from the head's stage pose (see the contract). */
 void hol_xr_recentre(hol_xr_calib *c, const float head_pos[3], const float head_quat[4]);
 
-/* 1 when the stage bounds (metres) hold the room, 0 when smaller (warn). */
+/* 1 when the stage bounds (metres) hold the 3 x 3 m room, 0 when smaller
+ * (warn); hol_xr_bounds_hold: the room of room_w x room_d metres. */
 int hol_xr_bounds_hold_room(float width, float depth);
+int hol_xr_bounds_hold(float width, float depth, double room_w, double room_d);
 
 /* The safety fade of the view (hol_frame_desc.fade) for the tracked,
  * unclamped eyes' room positions: 0 while every eye's floor point lies in
@@ -53,6 +60,8 @@ int hol_xr_bounds_hold_room(float width, float depth);
  * value for both eyes, the larger. */
 #define HOL_XR_FADE_FULL 0.05
 double hol_xr_fade(const double eye[2][3], double margin);
+/* The same in a room of room_w x room_d metres (hol_xr_fade: 3 x 3). */
+double hol_xr_fade_room(const double eye[2][3], double margin, double room_w, double room_d);
 
 /* XrSessionState values (OpenXR 1.0, section 10.3). */
 enum {

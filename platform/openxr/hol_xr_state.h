@@ -96,6 +96,8 @@ typedef struct hol__gl {
 /* metres the app's head keeps from the hedges: the motion's default margin
  * (hol_motion_desc), where the safety fade begins */
 #define HOL__MARGIN 0.15
+/* seconds the fit's line stays on the HUD after the first frame */
+#define HOL__FIT_NOTE_S 12.0
 
 #ifdef __ANDROID__
 typedef XrSwapchainImageOpenGLESKHR hol__image;
@@ -144,7 +146,11 @@ typedef struct hol__xr {
     hol_xr_calib calib;
     int have_bounds;  /* the runtime gave the stage bounds: */
     float bounds_w, bounds_d; /* full width (x) and depth (z), metres */
-    int bounds_small;
+    int bounds_small; /* the room in play (or the fit) is larger than them */
+    hol_fit fit;      /* with have_bounds: what they hold (core/hol_fit.h) */
+    char fit_text[160]; /* its line (hol_fit_text) */
+    double room_w, room_d; /* the room in play, metres (0: not known yet) */
+    hol_app_view note;  /* the view drawn while the fit is told on the HUD */
     hol__gl gl;
     hol_render *rnd;
     hol_render_getproc getproc;
