@@ -202,6 +202,34 @@ static void test_bounds(void **state)
     }
 }
 
+/* Issue 20: a room of another size (4 x 4 cells of 0.6 m: 2.4 m) is
+ * centred on the origin and checked against the bounds by its own size. */
+static void test_room_of_another_size(void **state)
+{
+    (void)state;
+    hol_web_xr_state st;
+    memset(&st, 0, sizeof st);
+    st.room_w = st.room_d = 2.4;
+    hol_web_xr_frame f = touch_frame();
+    f.head_valid = 1;
+    f.head_pos[0] = 0, f.head_pos[1] = 1.6f, f.head_pos[2] = 0;
+    f.head_quat[0] = f.head_quat[1] = f.head_quat[2] = 0, f.head_quat[3] = 1;
+    f.bounds[0] = 2.5f, f.bounds[1] = 2.5f;
+    hol_input in;
+    hol_web_xr_input(&st, &f, 0, &in);
+    assert_true(fabsf(in.head.pos[0] - 1.2f) < 1e-5f && fabsf(in.head.pos[2] - 1.2f) < 1e-5f);
+    assert_int_equal(in.flags & HOL_INPUT_BOUNDS_SMALL, 0); /* 2.5 m holds 2.4 m */
+    f.bounds[0] = 2.3f;
+    hol_web_xr_input(&st, &f, 0.1, &in);
+    assert_true(in.flags & HOL_INPUT_BOUNDS_SMALL);
+    /* the 3 x 3 m room does not fit in 2.5 m: small, centred on 1.5 */
+    memset(&st, 0, sizeof st);
+    f.bounds[0] = 2.5f;
+    hol_web_xr_input(&st, &f, 0, &in);
+    assert_true(in.flags & HOL_INPUT_BOUNDS_SMALL);
+    assert_true(fabsf(in.head.pos[0] - 1.5f) < 1e-5f);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -209,6 +237,7 @@ int main(void)
         cmocka_unit_test(test_buttons),
         cmocka_unit_test(test_input),
         cmocka_unit_test(test_bounds),
+        cmocka_unit_test(test_room_of_another_size),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -200,6 +200,37 @@ static void test_room_of_any_size(void **state)
     assert_true(hol_xr_fade_room(e, 0.15, 3, 3) == hol_xr_fade(e, 0.15));
 }
 
+/* The fit told on the HUD: two lines, in capitals, the room in play and the
+ * play area; the room in play named "(ASKED)" when it is not the fit. */
+static void test_fit_note(void **state)
+{
+    (void)state;
+    hol_fit f;
+    assert_int_equal(hol_fit_rect(2.6, 2.6, -1, &f), HOL_OK);
+    hol_app_view v, out;
+    memset(&v, 0, sizeof v);
+    v.user.more_cols = v.user.more_rows = 1; /* 4 x 4 */
+    v.cell_m = 0.6;
+    v.hud.nlines = 2;
+    assert_int_equal(hol_xr_fit_note(&f, 0, &v, &out), 1);
+    assert_int_equal(out.hud.nlines, 4);
+    assert_string_equal(out.hud.lines[2], "ROOM 4 X 4, CELLS 0.6 M");
+    assert_string_equal(out.hud.lines[3], "FITS YOUR 2.6 X 2.6 M PLAY AREA");
+    memset(&v.user, 0, sizeof v.user); /* 3 x 3 of 1 m: a level named it */
+    v.cell_m = 0;
+    assert_int_equal(hol_xr_fit_note(&f, 0, &v, &out), 1);
+    assert_string_equal(out.hud.lines[2], "ROOM 3 X 3, CELLS 1.0 M (ASKED)");
+    assert_string_equal(out.hud.lines[3], "IN YOUR 2.6 X 2.6 M PLAY AREA");
+    assert_int_equal(hol_xr_fit_note(&f, 1, &v, &out), 1);
+    assert_string_equal(out.hud.lines[2], "ROOM 3 X 3, CELLS 1.0 M (RELOAD FOR THE FIT)");
+    assert_int_equal(hol_fit_rect(1.2, 1.2, -1, &f), HOL_OK);
+    v.cell_m = 0.5;
+    assert_int_equal(hol_xr_fit_note(&f, 0, &v, &out), 1);
+    assert_string_equal(out.hud.lines[2], "ROOM 3 X 3, CELLS 0.5 M: TOO BIG");
+    v.hud.nlines = HOL_APP_HUD_LINES - 1; /* no room for two lines */
+    assert_int_equal(hol_xr_fit_note(&f, 0, &v, &out), 0);
+}
+
 static void test_lifecycle(void **state)
 {
     (void)state;
@@ -315,6 +346,7 @@ int main(void)
         cmocka_unit_test(test_bounds),
         cmocka_unit_test(test_fade),
         cmocka_unit_test(test_room_of_any_size),
+        cmocka_unit_test(test_fit_note),
         cmocka_unit_test(test_lifecycle),
         cmocka_unit_test(test_life_quit_by_the_app),
         cmocka_unit_test(test_life_stopped_by_the_runtime),

@@ -90,23 +90,11 @@ static void hol__room_size(hol__xr *x, const hol_app_view *v)
 }
 
 /* While the fit is told (the first HOL__FIT_NOTE_S seconds): the view with
- * two more HUD lines, the room in play and the play area, in capitals. */
+ * its two HUD lines (hol_xr_fit_note). */
 static const hol_app_view *hol__noted(hol__xr *x, const hol_app_view *v, double t)
 {
-    if (!x->have_bounds || t >= HOL__FIT_NOTE_S || !v)
+    if (!x->have_bounds || t >= HOL__FIT_NOTE_S || !v || !hol_xr_fit_note(&x->fit, 0, v, &x->note))
         return v;
-    x->note = *v;
-    hol_app_hud *h = &x->note.hud;
-    double m = v->cell_m > 0 ? v->cell_m : 1.0;
-    int fitted = hol_room_cols(&v->user) == x->fit.cols &&
-                 hol_room_rows(&v->user) == x->fit.rows && fabs(m - x->fit.cell_m) < 1e-9;
-    if (h->nlines + 2 > HOL_APP_HUD_LINES)
-        return v;
-    snprintf(h->lines[h->nlines++], HOL_APP_TEXT_MAX, "ROOM %d X %d, CELLS %.2g M%s",
-             hol_room_cols(&v->user), hol_room_rows(&v->user), m,
-             fitted && !x->fit.too_small ? "" : x->fit.too_small ? ": TOO BIG" : " (ASKED)");
-    snprintf(h->lines[h->nlines++], HOL_APP_TEXT_MAX, "%s YOUR %.1f X %.1f M PLAY AREA",
-             fitted && !x->fit.too_small ? "FITS" : "IN", x->bounds_w, x->bounds_d);
     return &x->note;
 }
 

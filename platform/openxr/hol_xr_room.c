@@ -2,6 +2,8 @@
 #include "hol_xr_room.h"
 
 #include <math.h>
+#include <stdio.h>
+#include <string.h>
 
 /* q = a * b (x, y, z, w) */
 static void hol__qmul(const double a[4], const double b[4], double q[4])
@@ -99,6 +101,39 @@ double hol_xr_fade_room(const double eye[2][3], double margin, double room_w, do
         f = fe > f ? fe : f;
     }
     return f > 1 ? 1 : f;
+}
+
+int hol_xr_fit_note(const hol_fit *f, int offered, const hol_app_view *v, hol_app_view *out)
+{
+    if (v->hud.nlines + 2 > HOL_APP_HUD_LINES)
+        return 0;
+    *out = *v;
+    hol_app_hud *h = &out->hud;
+    double m = v->cell_m > 0 ? v->cell_m : 1.0;
+    int c = hol_room_cols(&v->user), r = hol_room_rows(&v->user);
+    int fitted = c == f->cols && r == f->rows && fabs(m - f->cell_m) < 1e-9 && !f->too_small;
+    const char *mark = fitted ? "" : f->too_small ? ": TOO BIG" : offered ? " (RELOAD FOR THE FIT)"
+                                                                            : " (ASKED)";
+    char tmp[2][128]; /* whole numbers only: every line fits its field */
+    int cm = (int)floor(m * 100 + 0.5), w = (int)floor(f->area_w * 10 + 0.5),
+        d = (int)floor(f->area_d * 10 + 0.5);
+    w = w > 9999 ? 9999 : w;
+    d = d > 9999 ? 9999 : d;
+    if (cm % 10)
+        snprintf(tmp[0], sizeof tmp[0], "ROOM %d X %d, CELLS %d.%02d M%s", c, r, cm / 100,
+                 cm % 100, mark);
+    else
+        snprintf(tmp[0], sizeof tmp[0], "ROOM %d X %d, CELLS %d.%d M%s", c, r, cm / 100,
+                 cm / 10 % 10, mark);
+    snprintf(tmp[1], sizeof tmp[1], "%s YOUR %d.%d X %d.%d M PLAY AREA", fitted ? "FITS" : "IN",
+             w / 10, w % 10, d / 10, d % 10);
+    for (int k = 0; k < 2; k++) {
+        size_t n = strlen(tmp[k]);
+        n = n < HOL_APP_TEXT_MAX - 1 ? n : HOL_APP_TEXT_MAX - 1;
+        memcpy(h->lines[h->nlines], tmp[k], n);
+        h->lines[h->nlines++][n] = 0;
+    }
+    return 1;
 }
 
 hol_xr_do hol_xr_lifecycle(int state, int *out_running, int *out_focused)

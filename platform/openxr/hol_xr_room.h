@@ -26,6 +26,8 @@
 #ifndef HOL_XR_ROOM_H
 #define HOL_XR_ROOM_H
 
+#include "../../core/hol_app.h"
+#include "../../core/hol_fit.h"
 #include "../../core/hol_input.h"
 
 typedef struct hol_xr_calib {
@@ -62,6 +64,15 @@ int hol_xr_bounds_hold(float width, float depth, double room_w, double room_d);
 double hol_xr_fade(const double eye[2][3], double margin);
 /* The same in a room of room_w x room_d metres (hol_xr_fade: 3 x 3). */
 double hol_xr_fade_room(const double eye[2][3], double margin, double room_w, double room_d);
+
+/* The fit told on the HUD (the headset and the web, for their first
+ * seconds): *out = *v with two more lines, in capitals - "ROOM C X R,
+ * CELLS M M" and "FITS YOUR W X D M PLAY AREA" when the room in play is
+ * the fit, else the room in play marked "(ASKED)" (a level or the options
+ * named it; the web: "(RELOAD FOR THE FIT)" when offered is set) or ": TOO
+ * BIG" (too small an area) and "IN YOUR W X D M PLAY AREA". 0 when the
+ * HUD has no room for two more lines (*out untouched). */
+int hol_xr_fit_note(const hol_fit *f, int offered, const hol_app_view *v, hol_app_view *out);
 
 /* XrSessionState values (OpenXR 1.0, section 10.3). */
 enum {

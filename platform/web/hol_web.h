@@ -10,6 +10,7 @@
 #include <stdint.h>
 
 #include "../../core/hol_app.h"
+#include "../../core/hol_fit.h"
 #include "../../render/hol_render.h"
 #include "hol_web_input.h"
 #include "hol_web_xr.h"
@@ -25,6 +26,12 @@ typedef struct hol_web {
     int drawn_over;          /* the last view was drawn after that */
     int drawn_first;         /* the first frame was drawn */
     int failed;
+    int geo_named;           /* the page named the room (1) or the cell (2):
+                                the play area's fit leaves them */
+    int have_fit;            /* bounded-floor gave a polygon: the fit */
+    hol_fit fit;
+    double fit_t;            /* the XR time it was told from (HUD note) */
+    hol_app_view note;       /* the view drawn while the fit is told */
     /* WebXR */
     int xr_active;
     hol_web_xr_state xr;

@@ -106,6 +106,67 @@ static int study_levels(const char *text, const char *part, int *n, char out_nam
     return 0;
 }
 
+/* ?cell=M: metres, 0.5 to 1.5, at most 3 decimals ("0.6", "1", "1.25");
+ * 0 ok. */
+static int parse_cell(const char *s, double *out)
+{
+    long v = 0, scale = 1;
+    int dot = 0, digits = 0;
+    for (const char *p = s; *p; p++) {
+        if (*p == '.' && !dot && digits) {
+            dot = 1;
+            continue;
+        }
+        if (*p < '0' || *p > '9' || (dot && scale >= 1000) || digits > 6)
+            return 1;
+        v = v * 10 + (*p - '0');
+        digits++;
+        scale *= dot ? 10 : 1;
+    }
+    if (!digits || s[strlen(s) - 1] == '.' || v * 1000 < 500 * scale || v * 1000 > 1500 * scale)
+        return 1;
+    *out = (double)v / (double)scale;
+    return 0;
+}
+
+/* The geometry the page names: ?tiling=4,Q ?room=CxR ?cell=M, every level
+ * played in it (as play's --tiling, --room, --cell: they win over a level
+ * file's lines and over the play area's fit). 0, or 1 with msg. */
+static int page_geometry(int n, char *msg, size_t cap)
+{
+    char t[16], r[16], c[16];
+    hol_web_js_config("tiling", t, sizeof t);
+    hol_web_js_config("room", r, sizeof r);
+    hol_web_js_config("cell", c, sizeof c);
+    int q = 0, cols = 0, rows = 0;
+    double cell = 0;
+    if (t[0] && hol_room_parse_tiling(t, strlen(t), &q)) {
+        snprintf(msg, cap, "tiling '%.12s' is not 4,Q with Q from 4 to 8", t);
+        return 1;
+    }
+    if (r[0] && hol_room_parse_size(r, strlen(r), &cols, &rows)) {
+        snprintf(msg, cap, "room '%.12s' is not CxR with C and R from 3 to 5", r);
+        return 1;
+    }
+    if (c[0] && parse_cell(c, &cell)) {
+        snprintf(msg, cap, "cell '%.12s' is not a size in metres from 0.5 to 1.5", c);
+        return 1;
+    }
+    hol_web_g.geo_named = (r[0] ? 1 : 0) | (c[0] ? 2 : 0);
+    for (int i = 0; i < n; i++) {
+        if (q)
+            levels[i].lvl.tiling_q = q;
+        if (cols)
+            levels[i].lvl.room_cols = cols, levels[i].lvl.room_rows = rows;
+        if (cell > 0)
+            levels[i].lvl.cell_m = cell;
+    }
+    if (q || cols || cell > 0)
+        printf("web: geometry from the page: tiling %s, room %s, cell %s\n", t[0] ? t : "-",
+               r[0] ? r : "-", c[0] ? c : "-");
+    return 0;
+}
+
 /* The levels the page asks for; 0, or 1 with msg. */
 static int page_levels(int *n, char *msg, size_t cap)
 {
@@ -161,7 +222,7 @@ static int page_levels(int *n, char *msg, size_t cap)
 int hol_web_game_open(char *msg, size_t cap)
 {
     int n = 0;
-    if (page_levels(&n, msg, cap))
+    if (page_levels(&n, msg, cap) || page_geometry(n, msg, cap))
         return 1;
     char part[HOL_REC_ID_MAX + 8] = "";
     hol_web_js_config("participant", part, sizeof part);

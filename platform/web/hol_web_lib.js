@@ -76,6 +76,11 @@ var HolWebLib = {
       console.log('web: xr reference space ' + HolXR.spaceType);
       Module['_hol_web_xr_active'](1);
       if (Module['holEvent']) Module['holEvent']('xr', 'started');
+      if (HolXR.spaceType === 'bounded-floor') {
+        HolXR.fit();
+        if (HolXR.space.addEventListener)
+          HolXR.space.addEventListener('reset', function () { HolXR.fit(); });
+      }
       s.requestAnimationFrame(HolXR.frame);
     },
 
@@ -136,6 +141,22 @@ var HolWebLib = {
         var ax = gp.axes || [];
         for (var k = 0; k < 4; k++) f[p + o.axes + k] = typeof ax[k] === 'number' ? ax[k] : 0;
       }
+    },
+
+    // Bounded-floor: the polygon handed to the C side's fit (hol_web_xr_fit:
+    // the room and cell that fit it, told and offered), at most 64 points.
+    fit: function () {
+      var g = HolXR.space && HolXR.space.boundsGeometry;
+      if (!g || g.length < 3) {
+        console.log('web: no bounded-floor polygon: the room is not fitted to the play area');
+        return;
+      }
+      var n = Math.min(g.length, 64), p = Module['_hol_web_xr_fit_buffer']() >> 2;
+      for (var i = 0; i < n; i++) {
+        HEAPF32[p + 2 * i] = g[i].x;
+        HEAPF32[p + 2 * i + 1] = g[i].z;
+      }
+      Module['_hol_web_xr_fit'](n);
     },
 
     // Bounded-floor: the width and depth of the bounds polygon's box.

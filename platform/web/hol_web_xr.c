@@ -60,7 +60,10 @@ void hol_web_xr_input(hol_web_xr_state *st, const hol_web_xr_frame *f, double t,
     st->last_t = in.time_s;
     if (f->visibility == HOL_WEB_XR_VISIBLE)
         in.flags |= HOL_INPUT_FOCUSED;
-    if (f->bounds[0] > 0 && f->bounds[1] > 0 && !hol_xr_bounds_hold_room(f->bounds[0], f->bounds[1]))
+    double rw = st->room_w > 0 ? st->room_w : 3.0, rd = st->room_d > 0 ? st->room_d : 3.0;
+    st->calib.half_w = rw / 2;
+    st->calib.half_d = rd / 2;
+    if (f->bounds[0] > 0 && f->bounds[1] > 0 && !hol_xr_bounds_hold(f->bounds[0], f->bounds[1], rw, rd))
         in.flags |= HOL_INPUT_BOUNDS_SMALL;
     /* held while the session is not focused (a system menu over it) counts
      * neither then nor as a press when it comes back */

@@ -36,8 +36,9 @@
  *   pressed while the session is not focused, and an input held through
  *   that is not pressed when focus comes back), device, and
  *   HOL_INPUT_BOUNDS_SMALL when the bounded-floor area cannot hold the
- *   room. A recentre press places the room from the head before the head
- *   is converted (as the headset does).
+ *   room in play (state.room_w x room_d metres; 0: 3 x 3 m, which also
+ *   centres it: calib.half_w, half_d). A recentre press places the room
+ *   from the head before the head is converted (as the headset does).
  */
 #ifndef HOL_WEB_XR_H
 #define HOL_WEB_XR_H
@@ -84,6 +85,8 @@ typedef struct hol_web_xr_frame {
 /* What the loop keeps between frames. Zero it when a session begins. */
 typedef struct hol_web_xr_state {
     hol_xr_calib calib;
+    double room_w, room_d;  /* the room in play, metres (the loop sets it
+                               from the view; 0: 3 x 3 m) */
     uint32_t prev_buttons;
     double last_t;
 } hol_web_xr_state;

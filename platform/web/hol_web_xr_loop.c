@@ -7,6 +7,7 @@
  */
 #include <emscripten.h>
 #include <GLES3/gl3.h>
+#include <math.h>
 #include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -16,7 +17,10 @@
 #include "../../render/hol_app_frame.h"
 #include "hol_web.h"
 
+extern void hol_web_js_event(const char *kind, const char *text);
+
 #define HOL__MARGIN 0.15 /* the motion's default hedge margin */
+#define HOL__FIT_NOTE_S 12.0 /* seconds the fit stays on the HUD */
 
 /* Offsets (in floats) of hol_web_xr_frame's fields, for the glue. */
 enum {
@@ -120,7 +124,7 @@ static void xr_render(const hol_app_view *v, const hol_input *in, int fb)
         hol_web_xr_camera(&w->xr.calib, &w->xf.view[e < n ? e : 0], &cam[e]);
         memcpy(eyes[e], cam[e].eye, sizeof eyes[e]);
     }
-    double fade = hol_xr_fade(eyes, HOL__MARGIN);
+    double fade = hol_xr_fade_room(eyes, HOL__MARGIN, w->xr.room_w, w->xr.room_d);
     glBindFramebuffer(GL_FRAMEBUFFER, (GLuint)fb);
     int checking = w->check_frame == w->xr_frames;
     for (int e = 0; e < n; e++) {
@@ -154,6 +158,53 @@ static void xr_render(const hol_app_view *v, const hol_input *in, int fb)
     w->xr_two_views += n == 2;
 }
 
+/* The bounded-floor polygon (n points x, z in fit_xz; the glue's boundsGeometry, at
+ * the session's start and when the space is reset): the room and cell
+ * that fit it (core/hol_fit.h), told on the console, to the page (which
+ * offers it as a link: the session in play keeps its room, as the
+ * headset does after a new play area) and on the HUD for 12 s. The page's
+ * ?room= or ?cell= win: the fit is then only told. */
+static float fit_xz[2 * HOL_FIT_MAX_POINTS]; /* the glue writes the polygon here */
+
+EMSCRIPTEN_KEEPALIVE float *hol_web_xr_fit_buffer(void)
+{
+    return fit_xz;
+}
+
+EMSCRIPTEN_KEEPALIVE void hol_web_xr_fit(int n)
+{
+    hol_web *w = &hol_web_g;
+    if (n > HOL_FIT_MAX_POINTS || hol_fit_polygon(fit_xz, n, -1, &w->fit) != HOL_OK) {
+        printf("web: the bounded-floor polygon (%d points) gives no play area\n", n);
+        return;
+    }
+    w->have_fit = 1;
+    w->fit_t = w->last_t;
+    char line[200], offer[64];
+    hol_fit_text(&w->fit, -1, line, sizeof line);
+    printf("web: %s\n", line);
+    const hol_app_view *v = hol_app_get_view(hol_web_game_app());
+    double m = v->cell_m > 0 ? v->cell_m : 1.0;
+    int same = hol_room_cols(&v->user) == w->fit.cols && hol_room_rows(&v->user) == w->fit.rows &&
+               fabs(m - w->fit.cell_m) < 1e-9;
+    if (w->geo_named)
+        printf("web: the page names the room or cell: the fit is not offered\n");
+    snprintf(offer, sizeof offer, "room=%dx%d&cell=%.2f", w->fit.cols, w->fit.rows,
+             w->fit.cell_m);
+    hol_web_js_event("fit", line);
+    if (!w->geo_named && !same && !w->fit.too_small)
+        hol_web_js_event("fit-offer", offer);
+}
+
+/* While the fit is told: the view with its two HUD lines. */
+static const hol_app_view *xr_noted(const hol_app_view *v)
+{
+    hol_web *w = &hol_web_g;
+    if (!w->have_fit || w->last_t - w->fit_t >= HOL__FIT_NOTE_S)
+        return v;
+    return hol_xr_fit_note(&w->fit, !w->geo_named, v, &w->note) ? &w->note : v;
+}
+
 /* One XRFrame (t_ms: its time, performance.now()'s origin; fb: the layer's
  * framebuffer, 0 for the default one). Returns 0 to go on, 1 when the
  * session is over (the glue ends the XR session). */
@@ -165,12 +216,16 @@ EMSCRIPTEN_KEEPALIVE int hol_web_xr_step(double t_ms, int fb)
     double c0 = emscripten_get_now();
     double t = (t_ms - w->t0_ms) / 1000.0;
     hol_input in;
+    const hol_app_view *now = hol_app_get_view(hol_web_game_app());
+    double m = now->cell_m > 0 ? now->cell_m : 1.0;
+    w->xr.room_w = hol_room_cols(&now->user) * m; /* the room in play, in the stage */
+    w->xr.room_d = hol_room_rows(&now->user) * m;
     hol_web_xr_input(&w->xr, &w->xf, t > w->last_t ? t : w->last_t, &in);
     w->last_t = in.time_s;
     w->xr_focused += (in.flags & HOL_INPUT_FOCUSED) != 0;
     if (hol_web_step(&in))
         return 1;
-    xr_render(hol_app_get_view(hol_web_game_app()), &in, fb);
+    xr_render(xr_noted(hol_app_get_view(hol_web_game_app())), &in, fb);
     if (w->xr_ncpu < (int)(sizeof w->xr_cpu_ms / sizeof w->xr_cpu_ms[0]))
         w->xr_cpu_ms[w->xr_ncpu++] = emscripten_get_now() - c0;
     w->xr_frames++;

@@ -9,7 +9,8 @@
 // from beside it, and the participant's number, from participant=P07,
 // gives the order of its conditions: README, Study designs),
 // participant=ID (the logs' participant), snap=DEG (snap turn on the
-// Left/Right keys). None: the default campaign. A level file
+// Left/Right keys), tiling=4,Q room=CxR cell=M (every level's geometry, as
+// play's --tiling/--room/--cell). None: the default campaign. A level file
 // chosen with "Level file..." plays on the next load (kept in
 // sessionStorage for this tab).
 'use strict';
@@ -17,7 +18,7 @@
 (function () {
   var params = new URLSearchParams(location.search);
   var config = {};
-  ['mode', 'seed', 'participant', 'snap'].forEach(function (k) {
+  ['mode', 'seed', 'participant', 'snap', 'tiling', 'room', 'cell'].forEach(function (k) {
     if (params.has(k)) config[k] = params.get(k);
   });
   var $ = function (id) { return document.getElementById(id); };
@@ -120,6 +121,14 @@
         status(config.levelName ? 'Playing ' + config.levelName : 'Playing');
         canvas.focus();
         Module.holXR.supported().then(function (ok) { $('vr').hidden = !ok; });
+      } else if (kind === 'fit') {
+        status(text);
+      } else if (kind === 'fit-offer') {
+        // the room that fits the play area, offered: the page again with it
+        var u = new URL(location.href), q = new URLSearchParams(text);
+        q.forEach(function (v, k) { u.searchParams.set(k, v); });
+        var a = $('fitlink');
+        if (a) { a.href = u.href; a.hidden = false; }
       } else if (kind === 'xr') {
         status(text === 'started' ? 'In VR' : 'Playing');
       } else if (kind === 'over') {

@@ -173,6 +173,45 @@ await check('snap turn (?snap=90): a tap of Left turns the look by 90 degrees; ?
   await q.ctx.close();
 });
 
+await check('?tiling=4,6&room=4x4&cell=0.6 play (every level in them); a bad tiling, room or cell is refused with one line, and nothing plays', async () => {
+  const p = await openPage('?mode=explore&seed=2&tiling=4,6&room=4x4&cell=0.6');
+  await p.until(async () => (await p.state(S.FRAMES)) > 5, 'frames');
+  assert(p.log.includes('web: geometry from the page: tiling 4,6, room 4x4, cell 0.6'),
+    'no geometry line: ' + p.log.filter((l) => l.startsWith('web:')).join(' | '));
+  assert(!p.errors.length, 'errors: ' + p.errors.join('; '));
+  await p.ctx.close();
+  for (const [q, re] of [['tiling=4,9', /^Failed: tiling '4,9' is not 4,Q/],
+    ['room=2x2', /^Failed: room '2x2' is not CxR/], ['room=4', /^Failed: room '4' is not CxR/],
+    ['cell=2', /^Failed: cell '2' is not a size in metres from 0.5 to 1.5$/],
+    ['cell=0.6m', /^Failed: cell '0.6m'/], ['cell=.5', /^Failed: cell '.5'/]]) {
+    const r = await openPage('?' + q, { fail: true });
+    const st = await r.page.evaluate(() => document.getElementById('status').textContent);
+    assert(re.test(st), q + ': status ' + st);
+    assert((await r.page.evaluate(() => Module._hol_web_state(0))) === 0, q + ': frames were stepped');
+    await r.ctx.close();
+  }
+});
+
+await check('a 2.6 x 2.6 m bounded-floor (iwer, a boundsGeometry shim): the room that fits is told (4 x 4 cells of 0.6 m) and offered as a link that plays it', async () => {
+  const sq = [[-1.3, -1.3], [1.3, -1.3], [1.3, 1.3], [-1.3, 1.3]];
+  const p = await openPage('?mode=explore&seed=2', { iwer: true, bounds: sq });
+  await enterVR(p);
+  const want = 'Room 4 x 4 cells of 0.6 m fits your 2.6 x 2.6 m play area';
+  await p.until(() => p.log.includes('web: ' + want), 'the fit line: ' + want);
+  await p.until(() => p.page.evaluate(() => !document.getElementById('fitlink').hidden), 'the link');
+  const [st, href] = await p.page.evaluate(() => [document.getElementById('status').textContent,
+    document.getElementById('fitlink').href]);
+  assert(st === want, 'status: ' + st);
+  const u = new URL(href);
+  assert(u.searchParams.get('room') === '4x4' && u.searchParams.get('cell') === '0.60' &&
+    u.searchParams.get('mode') === 'explore', 'link: ' + href);
+  assert(!p.errors.length, 'errors: ' + p.errors.join('; '));
+  await p.ctx.close();
+  const q = await openPage(u.search);
+  assert(q.log.includes('web: geometry from the page: tiling -, room 4x4, cell 0.60'), 'the link does not play it');
+  await q.ctx.close();
+});
+
 await check('a study (study=URL, participant=P02) plays the participant\'s order: the levels fetched beside it, labelled in the logs', async () => {
   fs.mkdirSync(path.join(testDir, 'st', 'lv'), { recursive: true });
   fs.writeFileSync(path.join(testDir, 'st', 'lv', 'f.lvl'), 'mode flag\nseed 5\nflag Wrf\n');
