@@ -203,28 +203,13 @@ static void hol__metres(double m, char *buf, size_t cap)
 
 hol_err hol_fit_level(hol_level *lv, const hol_fit *f, int *out_changed)
 {
-    hol_level made; /* about 6 KB of stack, as the level parser's callers */
-    char text[HOL_LEVEL_TEXT_MAX + 2];
     *out_changed = 0;
     if (lv->lvl.room_cols || lv->lvl.room_rows || lv->lvl.cell_m > 0)
         return HOL_OK;
-    char add[64], m[32];
-    hol__metres(f->cell_m, m, sizeof m);
-    int n = snprintf(add, sizeof add, "%sroom %d %d\ncell %s\n",
-                     lv->len && lv->text[lv->len - 1] != '\n' ? "\n" : "", f->cols, f->rows, m);
-    if (n < 0 || lv->len + (size_t)n > HOL_LEVEL_TEXT_MAX)
-        return HOL_ENOMEM;
-    memcpy(text, lv->text, lv->len);
-    memcpy(text + lv->len, add, (size_t)n + 1);
     hol_level_err le;
-    hol_err e = hol_level_make(lv->name, strlen(lv->name), text, lv->len + (size_t)n, &made, &le);
-    if (e)
-        return e;
-    memcpy(made.condition, lv->condition, sizeof made.condition);
-    made.position = lv->position;
-    *lv = made;
-    *out_changed = 1;
-    return HOL_OK;
+    hol_err e = hol_level_set_geometry(lv, 0, f->cols, f->rows, f->cell_m, &le);
+    *out_changed = e == HOL_OK;
+    return e;
 }
 
 int hol_fit_text(const hol_fit *f, double margin, char *buf, size_t cap)

@@ -76,13 +76,13 @@ int hol_fit_polygon_holds(const float *xz, int n, double margin, int cols, int r
 int hol_fit_text(const hol_fit *f, double margin, char *buf, size_t cap);
 
 /* Plays the fit in a level that names neither a room nor a cell (its
- * lvl.room_cols and lvl.cell_m are 0): the level's text gains the lines
- * "room C R" and "cell M" and is made again (hol_level_make; the study
- * labels kept), so its hash, the logs and the recording name the room
- * and a replay plays it. Returns HOL_OK with *out_changed 1, or 0 when the
+ * lvl.room_cols and lvl.cell_m are 0): hol_level_set_geometry, the
+ * lines "room C R" and "cell M" added to the level's text, which is made
+ * again (so its hash, the logs and the recording name the room and a
+ * replay plays it). Returns HOL_OK with *out_changed 1, or 0 when the
  * level names its own geometry (kept as it is); an error of
- * hol_level_make (the text too long, the room refusing the level: an
- * objective out of its reach) leaves the level unchanged. */
+ * hol_level_set_geometry (the text too long, the room refusing the level)
+ * leaves the level unchanged. */
 hol_err hol_fit_level(hol_level *lv, const hol_fit *f, int *out_changed);
 
 #endif

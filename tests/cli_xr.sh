@@ -18,6 +18,8 @@ run "--frames without a value" 2 "$H" xr --frames
 one_line "--frames without a value" "needs a value"
 run "bad --space" 2 "$H" xr --space floor
 one_line "bad --space" "--space 'floor' is neither stage nor local"
+run "bad --play-area" 2 "$H" xr --play-area 2x
+one_line "bad --play-area" "--play-area '2x' is not WxD in metres, 0.5 to 100 each (2.6x2.6)"
 run "missing level" 2 "$H" xr "$T/none.lvl"
 one_line "missing level" "none.lvl"
 printf 'mode flag\nseed 5\nbogus 1\n' >"$T/bad.lvl"

@@ -246,6 +246,39 @@ static void test_text(void **state)
     assert_string_equal(buf, "Room 5 x 5 cells of 1.5 m fits your 10.0 x 12.0 m play area");
 }
 
+/* The fit played in a level: the lines added to its text (so logs and
+ * recordings name them), the level made again; a level naming its room
+ * or cell keeps it. */
+static void test_fit_level(void **state)
+{
+    (void)state;
+    hol_fit f;
+    assert_int_equal(hol_fit_rect(2.6, 2.6, -1, &f), HOL_OK);
+    static hol_level lv;
+    hol_level_err le;
+    const char *t = "mode explore\nseed 3\n";
+    assert_int_equal(hol_level_make("a", 1, t, strlen(t), &lv, &le), HOL_OK);
+    int changed = -1;
+    assert_int_equal(hol_fit_level(&lv, &f, &changed), HOL_OK);
+    assert_int_equal(changed, 1);
+    assert_int_equal(lv.lvl.room_cols, 4);
+    assert_int_equal(lv.lvl.room_rows, 4);
+    assert_true(fabs(lv.lvl.cell_m - 0.6) < 1e-12);
+    assert_non_null(strstr(lv.text, "room 4 4\n"));
+    assert_non_null(strstr(lv.text, "cell 0.6\n"));
+    assert_string_equal(lv.name, "a");
+    static const char *const own[] = {"mode explore\nseed 3\nroom 3 3\n",
+                                      "mode explore\nseed 3\ncell 1\n"};
+    for (int i = 0; i < 2; i++) {
+        assert_int_equal(hol_level_make("b", 1, own[i], strlen(own[i]), &lv, &le), HOL_OK);
+        char before[sizeof lv.text];
+        memcpy(before, lv.text, sizeof before);
+        assert_int_equal(hol_fit_level(&lv, &f, &changed), HOL_OK);
+        assert_int_equal(changed, 0);
+        assert_string_equal(lv.text, before);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -253,6 +286,7 @@ int main(void)
         cmocka_unit_test(test_rect_bad),           cmocka_unit_test(test_polygon_rect_equals_rect),
         cmocka_unit_test(test_polygon_against_model), cmocka_unit_test(test_polygon_bad),
         cmocka_unit_test(test_text),
+        cmocka_unit_test(test_fit_level),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -20,6 +20,7 @@ static const char *const xr_usage =
     "usage: holonomy xr [LEVEL | --study FILE] [--frames N] [--log DIR [--append]]\n"
     "                   [--participant ID]\n"
     "                   [--record FILE] [--input FILE] [--space stage|local]\n"
+    "                   [--play-area WxD]\n"
     "                   [--check-frame K --check-dir DIR]\n"
     "                   [--tiling 4,Q] [--room CxR] [--cell M]\n"
     "\n"
@@ -48,6 +49,9 @@ static const char *const xr_usage =
     "                  local (where the head starts, the floor 1.6 m below:\n"
     "                  seated, or no play area set up)\n"
     PLAY_GEOMETRY_USAGE
+    "  --play-area WxD the play area in metres (for example 2.6x2.6), used\n"
+    "                  instead of the runtime's stage bounds: a runtime that\n"
+    "                  gives none, or a smaller area than it draws\n"
     "  --check-frame K with --check-dir DIR: read eye 0 of frame K back from\n"
     "                  the swapchain, render the same eye with OSMesa, write\n"
     "                  both PNGs to DIR and print how many pixels differ\n"
@@ -66,7 +70,30 @@ typedef struct xr_opts {
     int append;
     int space; /* 0 or HOL_XR_SPACE_LOCAL (hol_xr_desc.space) */
     play_geometry geo;
+    float play_area[2]; /* --play-area (hol_xr_desc.play_area) */
 } xr_opts;
+
+/* --play-area WxD: two sizes in metres, 0.5 to 100 each, "2.6x2.6". 0 ok. */
+static int xr_play_area(const char *cmd, const char *val, float out[2])
+{
+    char *end = NULL;
+    double w = strtod(val, &end), d = 0;
+    int ok = end != val && (*end == 'x' || *end == 'X') && end[1] >= '0' && end[1] <= '9';
+    if (ok) {
+        const char *p = end + 1;
+        d = strtod(p, &end);
+        ok = end != p && !*end && w >= 0.5 && w <= 100 && d >= 0.5 && d <= 100 && val[0] >= '0' &&
+             val[0] <= '9';
+    }
+    if (!ok) {
+        cli_error(cmd, 0, "--play-area '%.40s' is not WxD in metres, 0.5 to 100 each (2.6x2.6)",
+                  val);
+        return 1;
+    }
+    out[0] = (float)w;
+    out[1] = (float)d;
+    return 0;
+}
 
 static int xr_count(const char *cmd, const char *a, const char *val, xr_opts *o)
 {
@@ -88,7 +115,7 @@ static int xr_options(const char *cmd, int argc, char **argv, xr_opts *o)
     static const char *const valued[] = {"--frames",      "--log",       "--record",
                                          "--input",       "--check-frame", "--check-dir",
                                          "--participant", "--space",    "--study",
-                                         PLAY_GEOMETRY_OPTIONS, NULL};
+                                         PLAY_GEOMETRY_OPTIONS, "--play-area", NULL};
     static const char *const flags[] = {"--append", NULL};
     memset(o, 0, sizeof *o);
     o->check_frame = -1;
@@ -118,6 +145,8 @@ static int xr_options(const char *cmd, int argc, char **argv, xr_opts *o)
             o->study = val;
         else if (!strcmp(a, "--append"))
             o->append = 1;
+        else if (!strcmp(a, "--play-area"))
+            bad = xr_play_area(cmd, val, o->play_area);
         else if (!strcmp(a, "--space")) {
             bad = strcmp(val, "stage") && strcmp(val, "local");
             if (bad)
@@ -257,6 +286,8 @@ static int xr_run(const xr_opts *o, xr_ctx *c, const hol_input *script, long nsc
     d.script = script;
     d.nscript = nscript;
     d.space = o->space;
+    d.play_area[0] = o->play_area[0];
+    d.play_area[1] = o->play_area[1];
     hol_xr_app_fns fns = {.user = c, .step = xr_step, .world = xr_world,
                           .level_started = xr_level_started, .poll_platform = xr_poll,
                           .fit = xr_fit, .view = xr_view};
@@ -291,7 +322,7 @@ int cli_cmd_xr(int argc, char **argv)
         st = xr_script(cmd, o.input_path, &script, &nscript);
 #ifdef HOL_XR
     xr_ctx c = {.cmd = cmd, .levels = levels, .nlevels = nlevels, .out = &out,
-                .append = o.append};
+                .append = o.append, .geo_named = o.geo.cols > 0 || o.geo.cell_m > 0};
     cli_catch_signals();
     if (!st)
         st = play_out_open(cmd, o.log_dir, o.append, o.rec, &out);

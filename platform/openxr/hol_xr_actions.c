@@ -158,6 +158,14 @@ int hol__bounds(hol__xr *x)
     XrResult r = xrGetReferenceSpaceBoundsRect(x->session, XR_REFERENCE_SPACE_TYPE_STAGE, &b);
     if (XR_FAILED(r))
         return hol__fail(x, "read the play area's bounds", r);
+    if (x->d->play_area[0] > 0 && x->d->play_area[1] > 0) { /* given by hand */
+        hol__say(x, "xr: play area %.2f x %.2f m given (the runtime's bounds: %s)",
+                 x->d->play_area[0], x->d->play_area[1],
+                 r == XR_SPACE_BOUNDS_UNAVAILABLE || b.width <= 0 ? "none" : "not used");
+        b.width = x->d->play_area[0];
+        b.height = x->d->play_area[1];
+        r = XR_SUCCESS;
+    }
     if (r == XR_SPACE_BOUNDS_UNAVAILABLE || b.width <= 0 || b.height <= 0 ||
         hol_fit_rect(b.width, b.height, -1, &x->fit) != HOL_OK) {
         hol__say(x, "xr: stage bounds not given by the runtime: the room is not fitted to "

@@ -56,6 +56,10 @@ typedef struct hol_xr_desc {
     long nscript;
     int space;               /* 0: STAGE when the runtime has it, else LOCAL;
                                 HOL_XR_SPACE_LOCAL (hol_xr_pick.h): LOCAL */
+    float play_area[2];      /* > 0: the play area's width and depth in
+                                metres, given by hand: used instead of the
+                                runtime's stage bounds (a runtime without
+                                them, or a smaller area than it draws) */
     /* Android only: the JavaVM and the activity object (jobject), for
      * xrInitializeLoaderKHR and XR_KHR_android_create_instance. */
     void *android_vm, *android_activity;

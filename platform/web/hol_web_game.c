@@ -106,32 +106,11 @@ static int study_levels(const char *text, const char *part, int *n, char out_nam
     return 0;
 }
 
-/* ?cell=M: metres, 0.5 to 1.5, at most 3 decimals ("0.6", "1", "1.25");
- * 0 ok. */
-static int parse_cell(const char *s, double *out)
-{
-    long v = 0, scale = 1;
-    int dot = 0, digits = 0;
-    for (const char *p = s; *p; p++) {
-        if (*p == '.' && !dot && digits) {
-            dot = 1;
-            continue;
-        }
-        if (*p < '0' || *p > '9' || (dot && scale >= 1000) || digits > 6)
-            return 1;
-        v = v * 10 + (*p - '0');
-        digits++;
-        scale *= dot ? 10 : 1;
-    }
-    if (!digits || s[strlen(s) - 1] == '.' || v * 1000 < 500 * scale || v * 1000 > 1500 * scale)
-        return 1;
-    *out = (double)v / (double)scale;
-    return 0;
-}
-
 /* The geometry the page names: ?tiling=4,Q ?room=CxR ?cell=M, every level
- * played in it (as play's --tiling, --room, --cell: they win over a level
- * file's lines and over the play area's fit). 0, or 1 with msg. */
+ * played in it (as play's --tiling, --room, --cell: hol_level_set_geometry
+ * adds the lines to each level's text; a level whose own line differs is
+ * refused; the play area's fit leaves what the page names). 0, or 1 with
+ * msg. */
 static int page_geometry(int n, char *msg, size_t cap)
 {
     char t[16], r[16], c[16];
@@ -148,18 +127,19 @@ static int page_geometry(int n, char *msg, size_t cap)
         snprintf(msg, cap, "room '%.12s' is not CxR with C and R from 3 to 5", r);
         return 1;
     }
-    if (c[0] && parse_cell(c, &cell)) {
+    if (c[0] && hol_level_parse_cell(c, strlen(c), &cell)) {
         snprintf(msg, cap, "cell '%.12s' is not a size in metres from 0.5 to 1.5", c);
         return 1;
     }
     hol_web_g.geo_named = (r[0] ? 1 : 0) | (c[0] ? 2 : 0);
     for (int i = 0; i < n; i++) {
-        if (q)
-            levels[i].lvl.tiling_q = q;
-        if (cols)
-            levels[i].lvl.room_cols = cols, levels[i].lvl.room_rows = rows;
-        if (cell > 0)
-            levels[i].lvl.cell_m = cell;
+        hol_level_err le;
+        char m[256];
+        if (hol_level_set_geometry(&levels[i], q, cols, rows, cell, &le)) {
+            snprintf(msg, cap, "%.60s: %s", levels[i].name,
+                     hol_level_err_format(&le, 1, m, sizeof m));
+            return 1;
+        }
     }
     if (q || cols || cell > 0)
         printf("web: geometry from the page: tiling %s, room %s, cell %s\n", t[0] ? t : "-",

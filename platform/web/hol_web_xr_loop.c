@@ -189,8 +189,9 @@ EMSCRIPTEN_KEEPALIVE void hol_web_xr_fit(int n)
                fabs(m - w->fit.cell_m) < 1e-9;
     if (w->geo_named)
         printf("web: the page names the room or cell: the fit is not offered\n");
-    snprintf(offer, sizeof offer, "room=%dx%d&cell=%.2f", w->fit.cols, w->fit.rows,
-             w->fit.cell_m);
+    char cm[16];
+    snprintf(offer, sizeof offer, "room=%dx%d&cell=%s", w->fit.cols, w->fit.rows,
+             hol_level_format_cell(w->fit.cell_m, cm));
     hol_web_js_event("fit", line);
     if (!w->geo_named && !same && !w->fit.too_small)
         hol_web_js_event("fit-offer", offer);

@@ -182,7 +182,7 @@ await check('?tiling=4,6&room=4x4&cell=0.6 play (every level in them); a bad til
   await p.ctx.close();
   for (const [q, re] of [['tiling=4,9', /^Failed: tiling '4,9' is not 4,Q/],
     ['room=2x2', /^Failed: room '2x2' is not CxR/], ['room=4', /^Failed: room '4' is not CxR/],
-    ['cell=2', /^Failed: cell '2' is not a size in metres from 0.5 to 1.5$/],
+    ['cell=2', /^Failed: cell '2' is not a size in metres from 0.5 to 1.5$/], ['tiling=4,4', /^Failed: /],
     ['cell=0.6m', /^Failed: cell '0.6m'/], ['cell=.5', /^Failed: cell '.5'/]]) {
     const r = await openPage('?' + q, { fail: true });
     const st = await r.page.evaluate(() => document.getElementById('status').textContent);
@@ -203,12 +203,12 @@ await check('a 2.6 x 2.6 m bounded-floor (iwer, a boundsGeometry shim): the room
     document.getElementById('fitlink').href]);
   assert(st === want, 'status: ' + st);
   const u = new URL(href);
-  assert(u.searchParams.get('room') === '4x4' && u.searchParams.get('cell') === '0.60' &&
+  assert(u.searchParams.get('room') === '4x4' && u.searchParams.get('cell') === '0.6' &&
     u.searchParams.get('mode') === 'explore', 'link: ' + href);
   assert(!p.errors.length, 'errors: ' + p.errors.join('; '));
   await p.ctx.close();
   const q = await openPage(u.search);
-  assert(q.log.includes('web: geometry from the page: tiling -, room 4x4, cell 0.60'), 'the link does not play it');
+  assert(q.log.includes('web: geometry from the page: tiling -, room 4x4, cell 0.6'), 'the link does not play it');
   await q.ctx.close();
 });
 

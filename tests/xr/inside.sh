@@ -116,6 +116,30 @@ check "SIGINT: the session ended through STOPPING and EXITING" \
 check "SIGINT: the attempt saved with end aborted, the recording replays" \
     'tail -n 1 "$out/sig-logs/summary.csv" | grep -q ",aborted$" && mkdir -p "$out/sig-replay" && "$BIN" replay "$out/sig.rec" --log "$out/sig-replay" >/dev/null 2>&1'
 
+# The play area fit end to end (issue 20): Monado gives no bounds, so the
+# area is given by hand (--play-area 2.6x2.6): 4 x 4 cells of 0.6 m, told,
+# played (the head at the stage origin is the room's centre, 1.2 m), the
+# level's text in the recording names the room, and it replays headless;
+# a level with its own room line keeps it.
+printf 'mode explore\nseed 4\nminimap off\n' >"$out/fit.txt"
+printf 'mode explore\nseed 4\nroom 3 3\n' >"$out/own.txt"
+mkdir -p "$out/fit-logs" "$out/fit-replay"
+env DISPLAY=:77 "$BIN" xr "$out/fit.txt" --frames 30 --play-area 2.6x2.6 --log "$out/fit-logs" \
+    --record "$out/fit.rec" >"$out/fit.out" 2>"$out/fit.err"
+rc=$?
+sed -n '/play area\|Room\|fitted/s/^/  | /p' "$out/fit.out"
+check "--play-area 2.6x2.6: exit 0 ($rc), told: Room 4 x 4 cells of 0.6 m fits your 2.6 x 2.6 m play area" \
+    '[ "$rc" = 0 ] && grep -q "^xr: Room 4 x 4 cells of 0.6 m fits your 2.6 x 2.6 m play area$" "$out/fit.out" && grep -q "^xr: the fitted room plays in 1 of 1 level(s)" "$out/fit.out"'
+# (the simulated head sways a few cm about the stage origin: 1.2 m in the
+# 2.4 m room, where the 3 x 3 m room would put it at 1.5 m)
+check "the fitted room played: the head near the stage origin is near the 2.4 m room's centre" \
+    'awk -F, "NR == 3 { exit !(\$6 > 1.05 && \$6 < 1.35 && \$8 > 1.05 && \$8 < 1.35) }" "$out/fit-logs/head-001.csv"'
+check "the recording's level names the room (room 4 4, cell 0.6) and replays headless" \
+    'grep -q "^L room 4 4$" "$out/fit.rec" && grep -q "^L cell 0.6$" "$out/fit.rec" && "$BIN" replay "$out/fit.rec" --log "$out/fit-replay" >/dev/null 2>&1 && cmp -s "$out/fit-logs/summary.csv" "$out/fit-replay/summary.csv"'
+env DISPLAY=:77 "$BIN" xr "$out/own.txt" --frames 10 --play-area 2.6x2.6 >"$out/own.out" 2>&1
+check "a level with its own room line keeps it (the fit plays in 0 of 1)" \
+    'grep -q "^xr: the fitted room plays in 0 of 1 level(s)" "$out/own.out"'
+
 # --space local: the LOCAL space (where the head starts) moved down 1.6 m,
 # so the simulated head stands at eye height, not at y = 0 (issue 19).
 mkdir -p "$out/local-logs"
