@@ -214,19 +214,21 @@ static void test_fit_note(void **state)
     v.hud.nlines = 2;
     assert_int_equal(hol_xr_fit_note(&f, 0, &v, &out), 1);
     assert_int_equal(out.hud.nlines, 4);
-    assert_string_equal(out.hud.lines[2], "ROOM 4 X 4, CELLS 0.6 M");
-    assert_string_equal(out.hud.lines[3], "FITS YOUR 2.6 X 2.6 M PLAY AREA");
+    assert_string_equal(out.hud.lines[2], "ROOM 4 X 4 OF 0.6 M");
+    assert_string_equal(out.hud.lines[3], "FITS YOUR 2.6 X 2.6 M AREA");
     memset(&v.user, 0, sizeof v.user); /* 3 x 3 of 1 m: a level named it */
     v.cell_m = 0;
     assert_int_equal(hol_xr_fit_note(&f, 0, &v, &out), 1);
-    assert_string_equal(out.hud.lines[2], "ROOM 3 X 3, CELLS 1.0 M (ASKED)");
-    assert_string_equal(out.hud.lines[3], "IN YOUR 2.6 X 2.6 M PLAY AREA");
+    assert_string_equal(out.hud.lines[2], "ROOM 3 X 3 OF 1.0 M (ASKED)");
+    assert_string_equal(out.hud.lines[3], "YOUR AREA: 2.6 X 2.6 M");
     assert_int_equal(hol_xr_fit_note(&f, 1, &v, &out), 1);
-    assert_string_equal(out.hud.lines[2], "ROOM 3 X 3, CELLS 1.0 M (RELOAD FOR THE FIT)");
+    assert_string_equal(out.hud.lines[2], "ROOM 3 X 3 OF 1.0 M");
+    assert_string_equal(out.hud.lines[3], "4 X 4 OF 0.6 FITS: RELOAD");
     assert_int_equal(hol_fit_rect(1.2, 1.2, -1, &f), HOL_OK);
     v.cell_m = 0.5;
     assert_int_equal(hol_xr_fit_note(&f, 0, &v, &out), 1);
-    assert_string_equal(out.hud.lines[2], "ROOM 3 X 3, CELLS 0.5 M: TOO BIG");
+    assert_string_equal(out.hud.lines[2], "ROOM 3 X 3 OF 0.5 M: TOO BIG");
+    assert_string_equal(out.hud.lines[3], "YOUR AREA: 1.2 X 1.2 M");
     v.hud.nlines = HOL_APP_HUD_LINES - 1; /* no room for two lines */
     assert_int_equal(hol_xr_fit_note(&f, 0, &v, &out), 0);
 }

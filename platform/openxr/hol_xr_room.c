@@ -103,6 +103,15 @@ double hol_xr_fade_room(const double eye[2][3], double margin, double room_w, do
     return f > 1 ? 1 : f;
 }
 
+/* "0.6", "1.0", "0.55": metres from centimetres */
+static void hol__m(int cm, char out[16])
+{
+    if (cm % 10)
+        snprintf(out, 16, "%d.%02d", cm / 100 % 100, cm % 100);
+    else
+        snprintf(out, 16, "%d.%d", cm / 100 % 100, cm / 10 % 10);
+}
+
 int hol_xr_fit_note(const hol_fit *f, int offered, const hol_app_view *v, hol_app_view *out)
 {
     if (v->hud.nlines + 2 > HOL_APP_HUD_LINES)
@@ -112,21 +121,21 @@ int hol_xr_fit_note(const hol_fit *f, int offered, const hol_app_view *v, hol_ap
     double m = v->cell_m > 0 ? v->cell_m : 1.0;
     int c = hol_room_cols(&v->user), r = hol_room_rows(&v->user);
     int fitted = c == f->cols && r == f->rows && fabs(m - f->cell_m) < 1e-9 && !f->too_small;
-    const char *mark = fitted ? "" : f->too_small ? ": TOO BIG" : offered ? " (RELOAD FOR THE FIT)"
-                                                                            : " (ASKED)";
-    char tmp[2][128]; /* whole numbers only: every line fits its field */
-    int cm = (int)floor(m * 100 + 0.5), w = (int)floor(f->area_w * 10 + 0.5),
-        d = (int)floor(f->area_d * 10 + 0.5);
-    w = w > 9999 ? 9999 : w;
-    d = d > 9999 ? 9999 : d;
-    if (cm % 10)
-        snprintf(tmp[0], sizeof tmp[0], "ROOM %d X %d, CELLS %d.%02d M%s", c, r, cm / 100,
-                 cm % 100, mark);
+    char cell[16], fcell[16], w[16], d[16];
+    int aw = (int)floor(f->area_w * 10 + 0.5), ad = (int)floor(f->area_d * 10 + 0.5);
+    hol__m((int)floor(m * 100 + 0.5), cell);
+    hol__m(f->cell_cm, fcell);
+    hol__m((aw > 9999 ? 9999 : aw) * 10, w);
+    hol__m((ad > 9999 ? 9999 : ad) * 10, d);
+    char tmp[2][96]; /* short lines: an eye's HUD is narrow */
+    snprintf(tmp[0], sizeof tmp[0], "ROOM %d X %d OF %s M%s", c, r, cell,
+             fitted || offered ? "" : f->too_small ? ": TOO BIG" : " (ASKED)");
+    if (fitted)
+        snprintf(tmp[1], sizeof tmp[1], "FITS YOUR %s X %s M AREA", w, d);
+    else if (offered && !f->too_small)
+        snprintf(tmp[1], sizeof tmp[1], "%d X %d OF %s FITS: RELOAD", f->cols, f->rows, fcell);
     else
-        snprintf(tmp[0], sizeof tmp[0], "ROOM %d X %d, CELLS %d.%d M%s", c, r, cm / 100,
-                 cm / 10 % 10, mark);
-    snprintf(tmp[1], sizeof tmp[1], "%s YOUR %d.%d X %d.%d M PLAY AREA", fitted ? "FITS" : "IN",
-             w / 10, w % 10, d / 10, d % 10);
+        snprintf(tmp[1], sizeof tmp[1], "YOUR AREA: %s X %s M", w, d);
     for (int k = 0; k < 2; k++) {
         size_t n = strlen(tmp[k]);
         n = n < HOL_APP_TEXT_MAX - 1 ? n : HOL_APP_TEXT_MAX - 1;

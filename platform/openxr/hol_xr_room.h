@@ -66,12 +66,12 @@ double hol_xr_fade(const double eye[2][3], double margin);
 double hol_xr_fade_room(const double eye[2][3], double margin, double room_w, double room_d);
 
 /* The fit told on the HUD (the headset and the web, for their first
- * seconds): *out = *v with two more lines, in capitals - "ROOM C X R,
- * CELLS M M" and "FITS YOUR W X D M PLAY AREA" when the room in play is
- * the fit, else the room in play marked "(ASKED)" (a level or the options
- * named it; the web: "(RELOAD FOR THE FIT)" when offered is set) or ": TOO
- * BIG" (too small an area) and "IN YOUR W X D M PLAY AREA". 0 when the
- * HUD has no room for two more lines (*out untouched). */
+ * seconds): *out = *v with two more short lines, in capitals: "ROOM C X R
+ * OF M M" and "FITS YOUR W X D M AREA" when the room in play is the fit;
+ * else, with `offered` (the web offers the fit as a link), "C X R OF M
+ * FITS: RELOAD"; else the room marked "(ASKED)" (a level or the options
+ * named it) or ": TOO BIG" (too small an area) and "YOUR AREA: W X D M".
+ * 0 when the HUD has no room for two more lines (*out untouched). */
 int hol_xr_fit_note(const hol_fit *f, int offered, const hol_app_view *v, hol_app_view *out);
 
 /* XrSessionState values (OpenXR 1.0, section 10.3). */

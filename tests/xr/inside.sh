@@ -139,6 +139,9 @@ check "the recording's level names the room (room 4 4, cell 0.6) and replays hea
 env DISPLAY=:77 "$BIN" xr "$out/own.txt" --frames 10 --play-area 2.6x2.6 >"$out/own.out" 2>&1
 check "a level with its own room line keeps it (the fit plays in 0 of 1)" \
     'grep -q "^xr: the fitted room plays in 0 of 1 level(s)" "$out/own.out"'
+env DISPLAY=:77 "$BIN" xr "$out/fit.txt" --frames 10 --play-area 2.6x2.6 --room 3x3 >"$out/opt.out" 2>&1
+check "--room given: the fit is told, not used" \
+    'grep -q "^xr: Room 4 x 4 cells of 0.6 m fits" "$out/opt.out" && grep -q "^xr: --room/--cell given: the play area.s fit is not used" "$out/opt.out"'
 
 # --space local: the LOCAL space (where the head starts) moved down 1.6 m,
 # so the simulated head stands at eye height, not at y = 0 (issue 19).
