@@ -373,6 +373,11 @@ void cli_catch_signals(void)
     struct sigaction sa;
     memset(&sa, 0, sizeof sa);
     sa.sa_handler = cli__on_signal;
+    /* calls the signal interrupts go on (the loop polls the flag): without
+     * it a SIGINT in the OpenXR runtime's IPC (Monado's recvmsg in
+     * xrWaitFrame) failed that call, and xr ended as if the instance were
+     * lost (exit 1, not 130) */
+    sa.sa_flags = SA_RESTART;
     sigemptyset(&sa.sa_mask);
     for (int i = 0; i < 3; i++)
         sigaction(sigs[i], &sa, NULL);
