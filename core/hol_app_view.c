@@ -161,8 +161,11 @@ static void hol__fill_status(hol_app *app, const hol_input *in, hol_app_hud *h)
         (in->head.pos[0] < 0 || in->head.pos[0] > w || in->head.pos[2] < 0 ||
          in->head.pos[2] > d))
         snprintf(h->status, sizeof h->status, "Outside the room: step back in");
-    if (in && (in->flags & HOL_INPUT_BOUNDS_SMALL) && !h->hint[0])
-        snprintf(h->hint, sizeof h->hint, "Play area under 3 x 3 m: mind the edges");
+    if (in && (in->flags & HOL_INPUT_BOUNDS_SMALL) && !h->hint[0]) {
+        char size[32]; /* the room in metres: "3 x 3", "2.5 x 3.75" */
+        snprintf(size, sizeof size, "%.3g x %.3g", w, d);
+        snprintf(h->hint, sizeof h->hint, "Play area under %.12s m: mind the edges", size);
+    }
 }
 
 /* The text as drawn: the feedback of a lesson just done, the status or the

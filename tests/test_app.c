@@ -1381,6 +1381,15 @@ static void test_safety_hud(void **state)
     assert_int_equal(hol_app_step(app, &in), HOL_OK);
     assert_true(strstr(v->hud.hint, "under 3 x 3 m") != NULL);
     assert_int_equal(v->hud.status[0], 0);
+    /* the warning names the level's room in metres */
+    hol_app_level S = parsed("mode flag\nflag Wrf\nroom 5 4\ncell 0.5\n");
+    assert_int_equal(hol_app_start_level(app, &S), HOL_OK);
+    in = tracked_at(0.01, 0, 0);
+    in.head.pos[0] = in.head.pos[2] = 1.25f;
+    in.flags |= HOL_INPUT_BOUNDS_SMALL;
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    assert_string_equal(v->hud.hint, "Play area under 2.5 x 2 m: mind the edges");
+    assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
     in = tracked_at(0.05, 0, 1); /* into the west cell: a room step */
     assert_int_equal(hol_app_step(app, &in), HOL_OK);
     hol_room before = v->user;
