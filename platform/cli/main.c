@@ -27,7 +27,8 @@ static const cli_command commands[] = {
 static void usage(FILE *f)
 {
     fprintf(f, "usage: holonomy [--help] [--version] COMMAND [ARGS]\n\n"
-               "Walk an infinite hyperbolic forest {4,5} inside a 3 x 3 m room.\n\n"
+               "Walk an infinite hyperbolic forest {4,5} inside a 3 x 3 m room\n"
+               "(--tiling 4,Q for Q 4..8, --room CxR up to 5x5, --cell M metres).\n\n"
                "commands:\n");
     for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++)
         fprintf(f, "  %-8s %s\n", commands[i].name, commands[i].summary);
