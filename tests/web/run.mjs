@@ -131,6 +131,44 @@ await check('a reload loses nothing: the attempt in play is kept (aborted at pag
   await p.ctx.close();
 });
 
+// Every mode the desktop plays, played on the page and replayed on the
+// desktop: the same final line, the same summary and step rows, byte for byte.
+await check('every mode (flag, keys, explore, tutorial) plays on the page; its recording replays on the desktop to the same logs (summary, steps, head rows), byte for byte', async () => {
+  for (const mode of ['flag', 'keys', 'explore', 'tutorial']) {
+    const p = await openPage(`?mode=${mode}&seed=4`);
+    await p.until(async () => (await p.state(S.FRAMES)) > 10, mode + ': frames');
+    await p.page.keyboard.down('KeyW');
+    await p.until(async () => (await p.state(S.STEPS)) >= 1, mode + ': a room step');
+    await p.page.keyboard.up('KeyW');
+    await p.page.keyboard.press('KeyQ');
+    await p.until(() => p.page.evaluate(() => !document.getElementById('logs').hidden),
+      mode + ': the session over, its logs offered');
+    const names = await p.page.evaluate(() => window.holonomyStore.names());
+    const rec = names.find((n) => /\.rec$/.test(n));
+    assert(rec, mode + ': no recording among ' + names.join(', '));
+    const dir = path.join(OUT, 'mode-' + mode);
+    fs.rmSync(dir, { recursive: true, force: true });
+    fs.mkdirSync(dir);
+    fs.writeFileSync(path.join(dir, 'browser.rec'), await stored(p.page, rec));
+    const r = spawnSync(HOLONOMY, ['replay', path.join(dir, 'browser.rec'), '--log', path.join(dir, 'logs')],
+      { encoding: 'utf8' });
+    assert(r.status === 0, mode + ': replay: ' + r.stderr);
+    const end = p.log.filter((l) => l.startsWith('level ')).pop();
+    assert(r.stdout.trim().split('\n').pop() === end,
+      `${mode}: replay says '${r.stdout.trim()}', the page '${end}'`);
+    const csv = names.filter((n) => /^(summary|steps-\d+|head-\d+)\.csv$/.test(n));
+    assert(csv.includes('summary.csv') && csv.includes('steps-001.csv'), mode + ': ' + names.join(' '));
+    for (const n of csv) {
+      const b = await stored(p.page, n);
+      assert(b.equals(fs.readFileSync(path.join(dir, 'logs', n))), `${mode}: ${n} differs from the replay's`);
+    }
+    const row = fs.readFileSync(path.join(dir, 'logs', 'summary.csv'), 'utf8').trim().split('\n')[1];
+    assert(row.includes(`,${mode},`) && /,quit$/.test(row), mode + ': summary row ' + row);
+    assert(!p.errors.length, mode + ': errors: ' + p.errors.join('; '));
+    await p.ctx.close();
+  }
+});
+
 await check('a level file chosen on the page plays at the next load, the participant in the logs', async () => {
   const lv = path.join(testDir, 'my-flag.lvl');
   fs.writeFileSync(lv, 'mode flag\nseed 9\nflag-distance 3\n');
