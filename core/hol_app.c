@@ -454,6 +454,35 @@ static hol_err hol__replace(hol_app *app, const hol_input *in)
     return err;
 }
 
+/* A level begins where a tracked head stands: at the level's first frame
+ * (a start or a restart) the room is placed around the head as a recentre
+ * places it, with no turn (the look is the head's own), so a player who is
+ * not in the start cell takes no room step by standing still; the tile is
+ * the level's start tile, the cell the head's, and the optimum (a lesson's,
+ * in the tutorial) is planned from there. A head in the start cell changes
+ * nothing but its place in the cell. */
+static hol_err hol__place_at_start(hol_app *app, const hol_input *in)
+{
+    double pos[3] = {in->head.pos[0], in->head.pos[1], in->head.pos[2]};
+    hol__yaw_pitch_from_quat(in->head.quat, &app->mo.yaw_deg, &app->mo.pitch_deg);
+    hol_room was = app->mo.user;
+    hol_motion_replace(&app->mo, pos, app->mo.yaw_deg);
+    if (was.col == app->mo.user.col && was.row == app->mo.user.row)
+        return HOL_OK;
+    hol_err err = hol_world_update(app->world, &app->mo.user);
+    int exact = 1, opt = -1;
+    if (err || (err = hol__plan(app, &app->mo.user, &opt, &exact)))
+        return err;
+    if (!exact)
+        return HOL_EBUDGET;
+    app->remaining = opt;
+    if (app->level.mode == HOL_APP_TUTORIAL)
+        app->stage_optimum = opt;
+    else
+        app->optimum = opt;
+    return HOL_OK;
+}
+
 /* The user's motion over a frame of dt seconds that began at level time
  * t0: a tracked head moves to its pose; the pancake axes are integrated in
  * sub-steps of at most HOL__SUBSTEP, so the distance walked and the angle
@@ -551,6 +580,9 @@ hol_err hol_app_step(hol_app *app, const hol_input *in)
     }
     v->paused = !(in->flags & HOL_INPUT_FOCUSED) || (in->flags & HOL_INPUT_DEVICE_LOST) ||
                 app->menu;
+    if (app->ev.level_started && (in->flags & HOL_INPUT_HEAD_VALID) &&
+        (err = hol__place_at_start(app, in)))
+        return err;
     if (((pressed & HOL_BTN_RECENTRE) || (in->flags & HOL_INPUT_RECENTRED)) &&
         (in->flags & HOL_INPUT_HEAD_VALID) && (err = hol__replace(app, in)))
         return err;

@@ -179,8 +179,9 @@ static void test_flag_optimum_and_detour(void **state)
         assert_int_equal(v->hud.remaining, 0);
         assert_string_equal(v->hud.status + 0, v->hud.status); /* filled */
         assert_true(strncmp(v->hud.status, "Done:", 5) == 0);
-        /* restart, then a detour of 2 (out and back) first */
-        hol_input in = tracked_at(t += 0.1, v->user.col, v->user.row);
+        /* restart (the player back in the start cell), then a detour of 2
+         * (out and back) first */
+        hol_input in = tracked_at(t += 0.1, 1, 1);
         in.buttons = HOL_BTN_RESTART;
         assert_int_equal(hol_app_step(app, &in), HOL_OK);
         assert_int_equal(hol_app_get_events(app)->level_started, 1);
@@ -196,6 +197,51 @@ static void test_flag_optimum_and_detour(void **state)
         /* the path cue: strayed 2 <= 3, so no path was shown at the end */
         hol_app_destroy(app);
     }
+}
+
+/* A level begins where a tracked head stands: a restart pressed in
+ * another cell than the start cell takes no room step, begins on the start
+ * tile in the head's cell, and its optimum is planned from there; standing
+ * still after it takes no step either. */
+static void test_start_where_the_head_stands(void **state)
+{
+    (void)state;
+    hol_app *app = make_app();
+    hol_app_level L = flag_level("Wrfl");
+    assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    const hol_app_view *v = hol_app_get_view(app);
+    double t = 0;
+    hol_input in = tracked_at(t, 1, 1);
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    in = tracked_at(t += 0.1, 0, 2); /* the player walked to a corner: steps */
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    assert_true(v->hud.steps > 0);
+    in = tracked_at(t += 0.1, 0, 2);
+    in.buttons = HOL_BTN_RESTART;
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    assert_int_equal(hol_app_get_events(app)->level_started, 1);
+    assert_int_equal(hol_app_get_events(app)->nsteps, 0);
+    assert_int_equal(v->hud.steps, 0);
+    assert_int_equal(v->user.col, 0);
+    assert_int_equal(v->user.row, 2);
+    hol_room start = hol_room_start();
+    assert_true(hol_tile_eq(v->user.tile, start.tile));
+    assert_int_equal(v->user.orient, start.orient);
+    uint8_t walk[HOL_NAV_WALK_MAX];
+    hol_nav_result res;
+    hol_room here = v->user;
+    assert_int_equal(hol_nav_find(g_nav, &here, L.flag, 0, walk, sizeof walk, &res), HOL_OK);
+    assert_int_equal(v->hud.optimum, res.len);
+    assert_int_equal(v->hud.remaining, res.len);
+    for (int i = 0; i < 5; i++) {
+        in = tracked_at(t += 0.1, 0, 2);
+        assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    }
+    assert_int_equal(v->hud.steps, 0);
+    assert_int_equal(play_walk(app, walk, res.len, &t), res.len);
+    assert_int_equal(v->state, HOL_APP_DONE);
+    assert_int_equal(v->hud.steps, v->hud.optimum);
+    hol_app_destroy(app);
 }
 
 /* Straying beyond optimum + N shows the path on the minimap. */
@@ -1410,6 +1456,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_scripted_room_step),
         cmocka_unit_test(test_flag_optimum_and_detour),
+        cmocka_unit_test(test_start_where_the_head_stands),
         cmocka_unit_test(test_path_when_strayed),
         cmocka_unit_test(test_keys_level),
         cmocka_unit_test(test_objectives_on_free_tiles),
