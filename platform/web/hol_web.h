@@ -39,6 +39,8 @@ typedef struct hol_web {
     long xr_frames, xr_two_views, xr_focused;
     double xr_cpu_ms[4096];  /* per XR frame: step and both eyes (ms) */
     int xr_ncpu;
+    int xr_recentred;        /* the reference space was reset (the browser's
+                                recentre): told on the next record with a head */
     /* read-back check of both eyes at one XR frame (make web-test) */
     long check_frame;        /* -1: none */
     uint8_t *check_px[2];

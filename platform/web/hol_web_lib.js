@@ -76,6 +76,12 @@ var HolWebLib = {
       console.log('web: xr reference space ' + HolXR.spaceType);
       Module['_hol_web_xr_active'](1);
       if (Module['holEvent']) Module['holEvent']('xr', 'started');
+      // the browser's recentre: the app re-places the room, walks nothing
+      if (HolXR.space.addEventListener)
+        HolXR.space.addEventListener('reset', function () {
+          console.log('web: reference space reset (a recentre)');
+          Module['_hol_web_xr_recentred']();
+        });
       if (HolXR.spaceType === 'bounded-floor') {
         HolXR.fit();
         if (HolXR.space.addEventListener)

@@ -206,6 +206,14 @@ static const hol_app_view *xr_noted(const hol_app_view *v)
     return hol_xr_fit_note(&w->fit, !w->geo_named, v, &w->note) ? &w->note : v;
 }
 
+/* The reference space's 'reset' event (the browser's or the system's
+ * recentre): the next record with a head carries HOL_INPUT_RECENTRED, so
+ * the app re-places the room instead of walking the jump (docs/play.md). */
+EMSCRIPTEN_KEEPALIVE void hol_web_xr_recentred(void)
+{
+    hol_web_g.xr_recentred = 1;
+}
+
 /* One XRFrame (t_ms: its time, performance.now()'s origin; fb: the layer's
  * framebuffer, 0 for the default one). Returns 0 to go on, 1 when the
  * session is over (the glue ends the XR session). */
@@ -223,6 +231,10 @@ EMSCRIPTEN_KEEPALIVE int hol_web_xr_step(double t_ms, int fb)
     w->xr.room_d = hol_room_rows(&now->user) * m;
     hol_web_xr_input(&w->xr, &w->xf, t > w->last_t ? t : w->last_t, &in);
     w->last_t = in.time_s;
+    if (w->xr_recentred && (in.flags & HOL_INPUT_HEAD_VALID)) {
+        in.flags |= HOL_INPUT_RECENTRED;
+        w->xr_recentred = 0;
+    }
     w->xr_focused += (in.flags & HOL_INPUT_FOCUSED) != 0;
     if (hol_web_step(&in))
         return 1;

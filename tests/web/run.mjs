@@ -398,6 +398,23 @@ await check('a scripted head walk makes one room step north', async () => {
   assert(Math.abs((await xrState(S.HEAD_Z)) - 0.7) < 0.02, 'head z ' + (await xrState(S.HEAD_Z)));
 });
 
+await check('the reference space\'s reset (the browser\'s recentre) re-places the room: a head jump with it walks no step, the same jump without it does', async () => {
+  const before = steps(xr.log).length;
+  const has = await xrPage.evaluate(() => {
+    const sp = Module.holXR.space;
+    if (!sp || !sp.dispatchEvent) return false;
+    xrDevice.position.set(0, 1.6, 0.8); /* 1.6 m south in one frame, with the reset */
+    sp.dispatchEvent(new Event('reset'));
+    return true;
+  });
+  assert(has, 'the page keeps no reference space with events');
+  await waitFrames(10);
+  assert(xr.log.some((l) => /reference space reset/.test(l)), 'the reset was not seen');
+  assert(steps(xr.log).length === before, 'steps with the reset: ' + JSON.stringify(steps(xr.log).slice(before)));
+  await xrPage.evaluate(() => xrDevice.position.set(0, 1.6, -0.8)); /* back, no reset */
+  await xr.until(async () => steps(xr.log).length > before, 'steps of the jump without a reset', 20000);
+});
+
 await check('controllers reach the app: left stick press recentres, Y opens the menu, the trigger restarts there', async () => {
   await press('left', 'thumbstick');
   const hx = await xrState(S.HEAD_X), hz = await xrState(S.HEAD_Z);
