@@ -163,13 +163,6 @@ static int hol__run(hol__xr *x, const void *binding)
     return x->failed;
 }
 
-/* A destroy call's result: reported unless the runtime is already gone. */
-static void hol__gone(hol__xr *x, const char *what, XrResult r)
-{
-    if (XR_FAILED(r) && !x->lost)
-        hol__fail(x, what, r);
-}
-
 static void hol__destroy(hol__xr *x)
 {
     hol_render_destroy(x->rnd);

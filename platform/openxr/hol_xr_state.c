@@ -55,3 +55,9 @@ int hol__fail(hol__xr *x, const char *doing, XrResult r)
         x->lost |= hol_xr_result_is_loss((int)r);
     return hol__error(x, "%s", line);
 }
+
+void hol__gone(hol__xr *x, const char *doing, XrResult r)
+{
+    if (XR_FAILED(r) && !x->lost)
+        hol__fail(x, doing, r);
+}

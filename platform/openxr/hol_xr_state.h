@@ -189,6 +189,9 @@ __attribute__((format(printf, 2, 3)))
 int hol__error(hol__xr *x, const char *fmt, ...); /* one failure line; returns 1;
                                                    x may be NULL */
 int hol__fail(hol__xr *x, const char *doing, XrResult r);
+/* A destroy call's result at teardown: reported (hol__fail) unless the
+ * session or the instance is already gone, when failures are expected. */
+void hol__gone(hol__xr *x, const char *doing, XrResult r);
 
 #define HOL__XR(x, doing, call)                                                               \
     do {                                                                                      \

@@ -160,7 +160,7 @@ void hol__views_free(hol__xr *x)
         ey->fbo = NULL;
         ey->nimages = 0;
         if (ey->swapchain != XR_NULL_HANDLE)
-            xrDestroySwapchain(ey->swapchain);
+            hol__gone(x, "destroy an eye's swapchain", xrDestroySwapchain(ey->swapchain));
         ey->swapchain = XR_NULL_HANDLE;
     }
     free(x->views);
