@@ -248,8 +248,8 @@ render-run-%: $(BUILD)/tests/%
 	@$(SUITE) $< $<
 
 cli-test: $(CLI_TESTS:tests/%.sh=cli-run-%)
-cli-run-%: $(BUILD)/holonomy $(BUILD)/tests/x11_close $(BUILD)/tests/png_probe
-	@HOLONOMY=$(BUILD)/holonomy X11_CLOSE=$(BUILD)/tests/x11_close \
+cli-run-%: $(BUILD)/holonomy $(BUILD)/tests/x11_close $(BUILD)/tests/x11_shot $(BUILD)/tests/png_probe
+	@HOLONOMY=$(BUILD)/holonomy X11_CLOSE=$(BUILD)/tests/x11_close X11_SHOT=$(BUILD)/tests/x11_shot \
 	  PNG_PROBE=$(BUILD)/tests/png_probe $(SUITE) tests/$*.sh sh tests/$*.sh
 
 # A test helper: a PNG decoded by render/hol_png.c, its colours counted.
@@ -259,6 +259,11 @@ $(BUILD)/tests/png_probe: tests/png_probe.c render/hol_png.c render/hol_png.h
 
 # A test helper: the close button of a window, as a window manager presses it.
 $(BUILD)/tests/x11_close: tests/x11_close.c
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) -o $@ $< -lX11
+
+# A test helper: a digest of what a box of a window shows.
+$(BUILD)/tests/x11_shot: tests/x11_shot.c
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) -o $@ $< -lX11
 

@@ -197,6 +197,31 @@ if command -v xdotool >/dev/null 2>&1; then
     [ "$(grep -c ' f=48 d=keyboard$' "$T/snap.rec")" = 1 ] && ok || bad "a tapped Right did not snap to 0"
     grep -q '^stats: [0-9]* frames in [0-9.]* s: [0-9.]* fps, CPU [0-9.]* ms a frame' "$T/snap.err" &&
         ok || bad "--stats printed no summary: $(cat "$T/snap.err")"
+    # F2: the frame time appears at the top right of the window (that box
+    # changes, the middle of the view does not), and F2 again hides it (the
+    # box is as before)
+    "$H" play --mode explore --size 320x240 --stats >"$T/f2.out" 2>"$T/f2.err" &
+    PPID_PLAY=$!
+    wait_frames "$T/f2.err"
+    if [ -n "$WID" ]; then
+        c0=$("$X11_SHOT" holonomy 55 0 100 12) m0=$("$X11_SHOT" holonomy 20 20 80 80)
+        xdotool key F2
+        sleep 1.5
+        c1=$("$X11_SHOT" holonomy 55 0 100 12) m1=$("$X11_SHOT" holonomy 20 20 80 80)
+        xdotool key F2
+        sleep 1.5
+        c2=$("$X11_SHOT" holonomy 55 0 100 12)
+        xdotool key q
+        [ -n "$c0" ] && [ "$c1" != "$c0" ] && ok || bad "F2 drew nothing at the top right ($c0, $c1)"
+        [ -n "$m0" ] && [ "$m1" = "$m0" ] && ok || bad "F2 changed the middle of the view"
+        [ "$c2" = "$c0" ] && ok || bad "F2 again did not hide the frame time ($c0, $c2)"
+    fi
+    for i in $(seq 1 20); do
+        kill -0 $PPID_PLAY 2>/dev/null || break
+        sleep 0.5
+    done
+    kill $PPID_PLAY 2>/dev/null
+    wait $PPID_PLAY 2>/dev/null
 else
     echo "note: no xdotool here: taps are tested through recorded lines only"
 fi
