@@ -805,6 +805,8 @@ hol_err hol_level_set_geometry(hol_level *lv, int q, int cols, int rows, double 
     char add[96], had[32], want[32];
     size_t n = 0;
     had[0] = want[0] = 0;
+    if (L->mode == HOL_APP_TUTORIAL) /* its lessons are made for {4,5} 3 x 3 */
+        q = cols = rows = 0;
     if (q && L->tiling_q && L->tiling_q != q)
         snprintf(had, sizeof had, "tiling 4 %d", L->tiling_q),
             snprintf(want, sizeof want, "{4,%d}", q);

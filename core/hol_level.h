@@ -109,7 +109,10 @@ hol_err hol_level_make(const char *name, size_t name_len, const char *text, size
  * replay needs no options; the level parsed again); a level whose own line
  * says otherwise is refused (HOL_EARG, line 0: "its own line 'tiling 4 5'
  * differs from the {4,6} asked for"); errors of the new text as
- * hol_level_make's (HOL_ENOMEM: too long with the lines). */
+ * hol_level_make's (HOL_ENOMEM: too long with the lines). A tutorial
+ * level takes only the cell size (the player's space): its lessons are
+ * made for {4,5} 3 x 3, so it keeps them unless its own lines say
+ * otherwise (q, cols and rows are ignored for it), on every platform. */
 hol_err hol_level_parse_cell(const char *s, size_t len, double *out_m);
 char *hol_level_format_cell(double m, char out[16]);
 hol_err hol_level_set_geometry(hol_level *lv, int q, int cols, int rows, double cell_m,

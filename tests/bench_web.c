@@ -126,7 +126,7 @@ int main(void)
     ad.nav = nav;
     hol_app *app;
     hol_level lv;
-    if (hol_app_create(&ad, &app) || hol_campaign_mode_level("flag", 7, &lv)) {
+    if (hol_app_create(&ad, &app) || hol_campaign_mode_level("flag", 7, NULL, &lv)) {
         fprintf(stderr, "bench_web: cannot start the level\n");
         return 1;
     }

@@ -85,6 +85,16 @@ run "campaign in {4,6}" 0 "$H" play --tiling 4,6 --cell 0.8 --frames 3 --size 64
 [ "$(grep -c '^L tiling 4 6$' "$T/c6.rec")" = 5 ] && [ "$(grep -c '^L cell 0.8$' "$T/c6.rec")" = 6 ] &&
     ! sed -n '/^level tutorial$/,/^level /p' "$T/c6.rec" | grep -q '^L tiling' && ok ||
     bad "campaign geometry lines: $(grep '^L \(tiling\|cell\)' "$T/c6.rec" | tr '\n' ' ')"
+# the campaign and --mode levels are made for the geometry asked for: the
+# flat {4,4} plays (flags within its nine tiles), {4,8} 5x5 plays (its
+# keys levels within the folded reach), each level holding its lines
+run "campaign in {4,4}" 0 "$H" play --tiling 4,4 --frames 3 --size 64x48 --record "$T/c4.rec"
+[ "$(grep -c '^L tiling 4 4$' "$T/c4.rec")" = 5 ] && ok || bad "{4,4} campaign: no tiling lines"
+run "campaign in {4,8} 5x5" 0 "$H" play --tiling 4,8 --room 5x5 --frames 3 --size 64x48 \
+    --record "$T/c8.rec"
+[ "$(grep -c '^L room 5 5$' "$T/c8.rec")" = 5 ] && ok || bad "{4,8} 5x5 campaign: no room lines"
+run "--mode keys in {4,4} 4x3" 0 "$H" play --mode keys --tiling 4,4 --room 4x3 --frames 3 \
+    --size 64x48
 run "play a conflict" 2 "$H" play "$T/f.lvl" --tiling 4,4 --frames 2 --size 64x48 &&
     one_line "flat play" "line 3: no walk inside the room reaches the flag's tile Wrf"
 # keyboard mode runs and stops after --frames; no LEVEL: the default

@@ -347,14 +347,21 @@ static void test_set_geometry(void **state)
     assert_string_equal(hol_level_err_format(&e, 1, err, 256),
                         "line 2: no walk inside the room reaches the flag's tile Nf (in the "
                         "flat {4,4} a 3x3 room reaches only its own 9 tiles)");
+    /* a tutorial takes only the cell: its lessons stay {4,5} 3x3 */
+    const char *tut = "mode tutorial\nseed 1\n";
+    assert_int_equal(hol_level_make("t", 1, tut, strlen(tut), &lv, &e), HOL_OK);
+    assert_int_equal(hol_level_set_geometry(&lv, 4, 5, 5, 0.75, &e), HOL_OK);
+    assert_string_equal(lv.text, "cell 0.75\nmode tutorial\nseed 1\n");
+    assert_int_equal(lv.lvl.tiling_q, 0);
+    assert_int_equal(lv.lvl.room_cols, 0);
 }
 
 static void test_campaign(void **state)
 {
     (void)state;
     static hol_level a[HOL_CAMPAIGN_LEVELS], b[HOL_CAMPAIGN_LEVELS];
-    assert_int_equal(hol_campaign_default(1, a), HOL_OK);
-    assert_int_equal(hol_campaign_default(1, b), HOL_OK);
+    assert_int_equal(hol_campaign_default(1, NULL, a), HOL_OK);
+    assert_int_equal(hol_campaign_default(1, NULL, b), HOL_OK);
     static const char *const names[] = {"tutorial", "flag-1", "flag-2", "flag-3", "keys-1", "keys-2"};
     static const int modes[] = {HOL_APP_TUTORIAL, HOL_APP_FLAG, HOL_APP_FLAG, HOL_APP_FLAG,
                                 HOL_APP_KEYS, HOL_APP_KEYS};
@@ -370,11 +377,75 @@ static void test_campaign(void **state)
     assert_int_equal(a[4].lvl.nkeys, 2);
     assert_int_equal(a[5].lvl.nkeys, 3);
     hol_level m;
-    assert_int_equal(hol_campaign_mode_level("keys", 16, &m), HOL_OK);
+    assert_int_equal(hol_campaign_mode_level("keys", 16, NULL, &m), HOL_OK);
     assert_string_equal(m.name, "keys-16");
     assert_int_equal(m.lvl.nkeys, 3);
     assert_int_equal(hol_tile_dist0(m.lvl.chest), 5);
-    assert_int_equal(hol_campaign_mode_level("chess", 1, &m), HOL_EARG);
+    assert_int_equal(hol_campaign_mode_level("chess", 1, NULL, &m), HOL_EARG);
+}
+
+/* The campaign and --mode levels of the other geometries: each level
+ * holds its tiling (and a room other than 3 x 3), and every one starts in
+ * an app, whose navigator (not the walk that placed them) proves each
+ * objective reachable inside the room with an exact optimum. In the flat
+ * {4,4} a flag asked at distance d lies at min(d, the farthest tile of
+ * the room from the start: the largest |dc| + |dr| of its cells). The
+ * {4,5} levels are those made before geometries came. */
+static void check_geo_level(hol_app *app, const hol_level *lv, const hol_campaign_geo *g, int d)
+{
+    const hol_app_level *L = &lv->lvl;
+    if (L->mode == HOL_APP_TUTORIAL)
+        return;
+    int cols = g->cols ? g->cols : 3, rows = g->rows ? g->rows : 3;
+    assert_int_equal(L->tiling_q, g->q);
+    assert_int_equal(L->room_cols ? L->room_cols : 3, cols);
+    assert_int_equal(L->room_rows ? L->room_rows : 3, rows);
+    hol_err e = hol_app_start_level(app, L);
+    if (e)
+        fail_msg("{4,%d} %dx%d %s: start %s\n%s", g->q, cols, rows, lv->name, hol_err_str(e),
+                 lv->text);
+    assert_true(hol_app_get_view(app)->hud.optimum > 0);
+    if (g->q == 4 && L->mode == HOL_APP_FLAG) {
+        int far = cols / 2 + rows / 2, want = d < far ? d : far;
+        assert_int_equal(hol_tile_dist0(L->flag), want);
+    }
+}
+
+static void test_campaign_geometries(void **state)
+{
+    (void)state;
+    static const hol_campaign_geo geos[] = {{4, 0, 0}, {4, 5, 5}, {4, 4, 3}, {6, 0, 0},
+                                            {7, 3, 5}, {8, 0, 0}, {8, 5, 5}, {8, 4, 3}};
+    static hol_level a[HOL_CAMPAIGN_LEVELS];
+    static const int dist[HOL_CAMPAIGN_LEVELS] = {0, 3, 5, 7, 3, 4};
+    hol_app_desc ad;
+    memset(&ad, 0, sizeof ad);
+    hol_app *app;
+    assert_int_equal(hol_app_create(&ad, &app), HOL_OK);
+    for (size_t i = 0; i < sizeof geos / sizeof geos[0]; i++) {
+        for (uint64_t seed = 1; seed <= 3; seed++) {
+            assert_int_equal(hol_campaign_default(seed, &geos[i], a), HOL_OK);
+            for (int k = 0; k < HOL_CAMPAIGN_LEVELS; k++)
+                check_geo_level(app, &a[k], &geos[i], dist[k]);
+            hol_level m;
+            assert_int_equal(hol_campaign_mode_level("keys", seed, &geos[i], &m), HOL_OK);
+            check_geo_level(app, &m, &geos[i], 5);
+            assert_int_equal(hol_campaign_mode_level("flag", seed, &geos[i], &m), HOL_OK);
+            check_geo_level(app, &m, &geos[i], 5);
+        }
+    }
+    hol_app_destroy(app);
+    /* {4,5}: the same texts with or without a geo, as before geometries */
+    static hol_level b[HOL_CAMPAIGN_LEVELS];
+    hol_campaign_geo g5 = {5, 5, 5};
+    assert_int_equal(hol_campaign_default(1, NULL, a), HOL_OK);
+    assert_int_equal(hol_campaign_default(1, &g5, b), HOL_OK);
+    for (int k = 0; k < HOL_CAMPAIGN_LEVELS; k++)
+        assert_string_equal(a[k].text, b[k].text);
+    assert_string_equal(a[3].text, "mode flag\nseed 3\nflag Wffrflf\n");
+    assert_string_equal(a[5].text, "mode keys\nseed 5\nkeys Nff Ef Er\nchest Slrf\n");
+    hol_campaign_geo bad = {9, 0, 0};
+    assert_int_equal(hol_campaign_default(1, &bad, a), HOL_EARG);
 }
 
 int main(void)
@@ -386,6 +457,7 @@ int main(void)
         cmocka_unit_test(test_typed_errors),
         cmocka_unit_test(test_named_level),
         cmocka_unit_test(test_campaign),
+        cmocka_unit_test(test_campaign_geometries),
         cmocka_unit_test(test_geometry_lines),
         cmocka_unit_test(test_set_geometry),
     };

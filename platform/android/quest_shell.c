@@ -90,7 +90,7 @@ static int quest_folders(quest *q, const char *files)
 static int quest_prepare(quest *q)
 {
     const char *ext = q->host->files_dir, *in = q->host->internal_dir;
-    if (hol_campaign_default(1, q->levels)) {
+    if (hol_campaign_default(1, NULL, q->levels)) {
         quest_log(ANDROID_LOG_ERROR, "cannot make the default campaign");
         return 1;
     }

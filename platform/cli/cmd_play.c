@@ -35,7 +35,8 @@ static const char *const play_usage =
     "\n"
     "Play in a desktop window (EGL on X11; also under Xvfb). LEVEL is a level\n"
     "file (SPEC section 5); --mode plays a level of that mode made from the seed\n"
-    "(flag 5 steps from the start; 3 keys 2..3 steps out and the chest at 5);\n"
+    "(flag 5 steps from the start; 3 keys 2..3 steps out and the chest at 5;\n"
+    "with --tiling 4,4 or 4,8 no farther than the room reaches);\n"
     "neither: the default campaign (the tutorial, three flags at distance 3, 5,\n"
     "7, then two keys-and-chest levels).\n"
     "\n"
@@ -234,7 +235,8 @@ static int play_prepare_files(play_ctx *c)
         st = play_study_levels(c->cmd, o->study, o->participant, c->levels, &c->nlevels,
                                c->study);
     else if (!st)
-        st = play_levels(c->cmd, o->level_path, o->mode, o->seed, c->levels, &c->nlevels);
+        st = play_levels(c->cmd, o->level_path, o->mode, o->seed, &o->geo, c->levels,
+                             &c->nlevels);
     if (!st)
         st = play_geometry_apply(c->cmd, &o->geo, c->levels, c->nlevels);
     if (!st && o->input_path) {

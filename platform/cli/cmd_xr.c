@@ -315,7 +315,8 @@ int cli_cmd_xr(int argc, char **argv)
     long nscript = 0;
     char study[HOL_REC_ID_MAX] = "";
     st = o.study ? play_study_levels(cmd, o.study, o.participant, levels, &nlevels, study)
-                 : play_levels(cmd, o.level_path, NULL, CLI_SEED_DEFAULT, levels, &nlevels);
+                 : play_levels(cmd, o.level_path, NULL, CLI_SEED_DEFAULT, &o.geo, levels,
+                               &nlevels);
     if (!st)
         st = play_geometry_apply(cmd, &o.geo, levels, nlevels);
     if (!st)

@@ -70,13 +70,8 @@ int play_geometry_value(const char *cmd, const char *opt, const char *val, play_
 int play_geometry_apply(const char *cmd, const play_geometry *g, hol_level *levels, int n)
 {
     for (int i = 0; i < n; i++) {
-        hol_level_err le;
-        /* the tutorial stays {4,5} 3x3 unless its own lines say otherwise
-         * (its lessons are made for it); the cell size, the player's space,
-         * applies to it too */
-        int tut = levels[i].lvl.mode == HOL_APP_TUTORIAL;
-        if (hol_level_set_geometry(&levels[i], tut ? 0 : g->q, tut ? 0 : g->cols,
-                                   tut ? 0 : g->rows, g->cell_m, &le)) {
+        hol_level_err le; /* a tutorial takes only the cell (hol_level.h) */
+        if (hol_level_set_geometry(&levels[i], g->q, g->cols, g->rows, g->cell_m, &le)) {
             char msg[300], name[HOL_LEVEL_NAME_MAX * 4];
             cli_error(cmd, 0, "level '%s': %s", cli_escape(levels[i].name, name, sizeof name),
                       hol_level_err_format(&le, 1, msg, sizeof msg));
@@ -87,8 +82,9 @@ int play_geometry_apply(const char *cmd, const play_geometry *g, hol_level *leve
 }
 
 int play_levels(const char *cmd, const char *level_path, const char *mode, uint64_t seed,
-                hol_level *levels, int *nlevels)
+                const play_geometry *g, hol_level *levels, int *nlevels)
 {
+    hol_campaign_geo geo = {g ? g->q : 0, g ? g->cols : 0, g ? g->rows : 0};
     *nlevels = 0;
     if (level_path) {
         int st = play_read_level(cmd, level_path, &levels[0]);
@@ -96,15 +92,19 @@ int play_levels(const char *cmd, const char *level_path, const char *mode, uint6
         return st;
     }
     if (mode) {
-        if (hol_campaign_mode_level(mode, seed, &levels[0])) {
+        hol_err e = hol_campaign_mode_level(mode, seed, &geo, &levels[0]);
+        if (e == HOL_EARG) {
             cli_error(cmd, 0, "--mode '%.40s' is not one of tutorial, flag, keys, explore",
                       mode);
             return CLI_EXIT_USAGE;
+        } else if (e) {
+            cli_error(cmd, 0, "cannot make a %.40s level: %s", mode, hol_err_str(e));
+            return CLI_EXIT_FAIL;
         }
         *nlevels = 1;
         return 0;
     }
-    if (hol_campaign_default(seed, levels)) {
+    if (hol_campaign_default(seed, &geo, levels)) {
         cli_error(cmd, 0, "cannot make the default campaign");
         return CLI_EXIT_FAIL;
     }

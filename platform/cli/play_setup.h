@@ -10,7 +10,8 @@
  *   file (its base name up to the first '.'; the whole base name when that
  *   is empty; at most 60 bytes); a name a recording cannot carry (a newline
  *   in the file's name) is refused. play_levels: a LEVEL file, a --mode
- *   level, or the default campaign (core/hol_campaign.h).
+ *   level, or the default campaign (core/hol_campaign.h), made for g's
+ *   tiling and room (g may be NULL: the defaults).
  * - play_input reads input records (core/hol_input_io.h) from a file a line
  *   at a time (platform/file/hol_lines.h, lines of at most HOL_REC_LINE_MAX
  *   bytes): a recording's header (core/hol_rec.h) is read first when the
@@ -71,7 +72,7 @@ typedef struct play_geometry {
 int play_geometry_value(const char *cmd, const char *opt, const char *val, play_geometry *g);
 int play_geometry_apply(const char *cmd, const play_geometry *g, hol_level *levels, int n);
 int play_levels(const char *cmd, const char *level_path, const char *mode, uint64_t seed,
-                hol_level *levels, int *nlevels);
+                const play_geometry *g, hol_level *levels, int *nlevels);
 
 typedef struct play_input {
     const char *cmd, *path;

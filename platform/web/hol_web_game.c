@@ -147,6 +147,21 @@ static int page_geometry(int n, char *msg, size_t cap)
     return 0;
 }
 
+/* The tiling and room the page names, for the levels a seed makes (a bad
+ * value is left to page_geometry, which refuses it). */
+static hol_campaign_geo page_campaign_geo(void)
+{
+    char t[16], r[16];
+    hol_campaign_geo g = {0, 0, 0};
+    hol_web_js_config("tiling", t, sizeof t);
+    hol_web_js_config("room", r, sizeof r);
+    if (t[0] && hol_room_parse_tiling(t, strlen(t), &g.q))
+        g.q = 0;
+    if (r[0] && hol_room_parse_size(r, strlen(r), &g.cols, &g.rows))
+        g.cols = g.rows = 0;
+    return g;
+}
+
 /* The levels the page asks for; 0, or 1 with msg. */
 static int page_levels(int *n, char *msg, size_t cap)
 {
@@ -184,13 +199,15 @@ static int page_levels(int *n, char *msg, size_t cap)
         }
         *n = 1;
     } else if (mode[0]) {
-        if (hol_campaign_mode_level(mode, seed, &levels[0])) {
+        hol_campaign_geo geo = page_campaign_geo();
+        if (hol_campaign_mode_level(mode, seed, &geo, &levels[0])) {
             snprintf(msg, cap, "mode '%.30s' is not one of tutorial, flag, keys, explore", mode);
             return 1;
         }
         *n = 1;
     } else {
-        if (hol_campaign_default(seed, levels)) {
+        hol_campaign_geo geo = page_campaign_geo();
+        if (hol_campaign_default(seed, &geo, levels)) {
             snprintf(msg, cap, "cannot make the default campaign");
             return 1;
         }

@@ -211,16 +211,23 @@ await check('snap turn (?snap=90): a tap of Left turns the look by 90 degrees; ?
   await q.ctx.close();
 });
 
-await check('?tiling=4,6&room=4x4&cell=0.6 play (every level in them); a bad tiling, room or cell is refused with one line, and nothing plays', async () => {
+await check('?tiling=4,6&room=4x4&cell=0.6 play (every level in them), the campaign in ?tiling=4,4 plays; a bad tiling, room or cell is refused with one line, and nothing plays', async () => {
   const p = await openPage('?mode=explore&seed=2&tiling=4,6&room=4x4&cell=0.6');
   await p.until(async () => (await p.state(S.FRAMES)) > 5, 'frames');
   assert(p.log.includes('web: geometry from the page: tiling 4,6, room 4x4, cell 0.6'),
     'no geometry line: ' + p.log.filter((l) => l.startsWith('web:')).join(' | '));
   assert(!p.errors.length, 'errors: ' + p.errors.join('; '));
   await p.ctx.close();
+  // the default campaign made for the flat {4,4} (its objectives on the room's tiles) plays
+  const f = await openPage('?tiling=4,4');
+  await f.until(async () => (await f.state(S.FRAMES)) > 5, 'frames in {4,4}');
+  assert(f.log.includes('web: geometry from the page: tiling 4,4, room -, cell -'),
+    'no {4,4} geometry line: ' + f.log.filter((l) => l.startsWith('web:')).join(' | '));
+  assert(!f.errors.length, '{4,4} errors: ' + f.errors.join('; '));
+  await f.ctx.close();
   for (const [q, re] of [['tiling=4,9', /^Failed: tiling '4,9' is not 4,Q/],
     ['room=2x2', /^Failed: room '2x2' is not CxR/], ['room=4', /^Failed: room '4' is not CxR/],
-    ['cell=2', /^Failed: cell '2' is not a size in metres from 0.5 to 1.5$/], ['tiling=4,4', /^Failed: /],
+    ['cell=2', /^Failed: cell '2' is not a size in metres from 0.5 to 1.5$/],
     ['cell=0.6m', /^Failed: cell '0.6m'/], ['cell=.5', /^Failed: cell '.5'/]]) {
     const r = await openPage('?' + q, { fail: true });
     const st = await r.page.evaluate(() => document.getElementById('status').textContent);
