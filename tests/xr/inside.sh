@@ -6,6 +6,7 @@
 # check; exit 0 only when every check passes.
 set -u
 BIN=${1:-build/xr/holonomy}
+LAYER=${2:-build/xr/libhol_inject_layer.so}
 out=/tmp/xr-test
 rm -rf "$out" && mkdir -p "$out/run" "$out/check" "$out/logs"
 chmod 700 "$out/run"
@@ -154,6 +155,45 @@ check "--space local: exit 0 ($rc), LOCAL asked for" \
     '[ "$rc" = 0 ] && grep -q "^xr: reference space LOCAL (asked for)" "$out/local.out"'
 check "--space local: the head at standing eye height (y ${y:-none}, want 1.4..1.8)" \
     '[ -n "$y" ] && awk "BEGIN{exit !($y >= 1.4 && $y <= 1.8)}"'
+
+# The runtime recentres (or the play area is drawn again): Monado sends no
+# XrEventDataReferenceSpaceChangePending, so the test's API layer
+# (tests/xr/inject_layer.c) gives one after 90 frames, when the scripted
+# head jumps 1.1 m north, as a head's coordinates do when the origin
+# moves under it. The room is placed on the new origin and the bounds are
+# read again; the jump walks no room step. Without the layer the same
+# jump walks one step north: the control, so the check can fail.
+mkdir -p "$out/layers" "$out/space-logs" "$out/nospace-logs"
+cat >"$out/layers/XrApiLayer_holonomy_inject.json" <<JSON
+{ "file_format_version": "1.0.0",
+  "api_layer": { "name": "XR_APILAYER_HOLONOMY_inject",
+    "library_path": "$(pwd)/${LAYER:-build/xr/libhol_inject_layer.so}",
+    "api_version": "1.0", "implementation_version": "1",
+    "description": "holonomy xr-test: a reference space change" } }
+JSON
+printf 'mode explore\nseed 3\nminimap off\n' >"$out/space.txt"
+awk 'BEGIN { for (k = 0; k < 150; k++)
+     printf "%.4f f=9 h=1.5,1.6,%.1f,0,0,0,1\n", k / 72.0, (k < 90 ? 1.5 : 0.4) }' >"$out/jump.txt"
+env DISPLAY=:77 HOL_INJECT_AT=90 \
+    XR_API_LAYER_PATH="$out/layers:/usr/share/openxr/1/api_layers/explicit.d" \
+    XR_ENABLE_API_LAYERS=XR_APILAYER_LUNARG_core_validation:XR_APILAYER_HOLONOMY_inject \
+    "$BIN" xr "$out/space.txt" --frames 150 --input "$out/jump.txt" --log "$out/space-logs" \
+    >"$out/space.out" 2>"$out/space.err"
+rc=$?
+grep "reference space\|stage bounds" "$out/space.out" | sed 's/^/  | /'
+env DISPLAY=:77 "$BIN" xr "$out/space.txt" --frames 150 --input "$out/jump.txt" \
+    --log "$out/nospace-logs" >"$out/nospace.out" 2>&1
+sp="$out/space.out $out/space.err"
+check "space change (injected by an API layer): exit 0 ($rc), told in words" \
+    '[ "$rc" = 0 ] && grep -q "^xr: reference space STAGE changed (recentred, or a new play area): the room is placed on its new origin$" "$out/space.out"'
+check "space change: the stage bounds read again (twice in the run)" \
+    '[ "$(grep -c "^xr: stage bounds not given by the runtime" "$out/space.out")" = 2 ]'
+check "space change: the head's 1.1 m jump with it walks no room step (steps log)" \
+    '[ -s "$out/space-logs/summary.csv" ] && [ "$(wc -l <"$out/space-logs/steps-001.csv")" = 1 ]'
+check "the same jump without the change walks one step north (the control)" \
+    '[ "$(grep -c ",N," "$out/nospace-logs/steps-001.csv")" = 1 ]'
+check "space change: the layers loaded, no VALID_ERROR or VALID_WARNING" \
+    'grep -q "Core Validation" $sp && ! grep -q "VALID_ERROR\|VALID_WARNING" $sp'
 
 # The runtime's service dies in the middle of a session: exit 1 with one
 # line in words (the instance is lost), and the session's logs and

@@ -2,7 +2,8 @@
 # tests/xr/run.sh - `make xr-test`: the headset layer against a real OpenXR
 # runtime. Builds (or reuses) the Debian trixie chroot with Monado
 # (tests/xr/chroot.sh), copies the source tree into it, builds
-# `holonomy` with XR=1 there with the chroot's compiler, and runs
+# `holonomy` with XR=1 (and the test's API layer, tests/xr/inject_layer.c)
+# there with the chroot's compiler, and runs
 # tests/xr/inside.sh (Xvfb, monado-service, holonomy xr under the core
 # validation layer, the checks). Binds /proc and /dev for the run and always
 # unbinds them. Needs root.
@@ -29,6 +30,9 @@ mkdir -p "$CHROOT/src"
 (cd "$root" && git ls-files -z --cached --others --exclude-standard | xargs -0 tar -cf - 2>/dev/null) | tar -C "$CHROOT/src" -xf -
 chroot "$CHROOT" sh -c 'cd /src && make -s -j2 BUILD=build/xr XR=1 build/xr/holonomy' || {
     echo "xr-test: FAIL: building holonomy with XR=1 in the chroot" >&2; exit 1; }
+# the test's API layer (tests/xr/inject_layer.c; trixie's loader headers)
+chroot "$CHROOT" sh -c 'cd /src && cc -std=c11 -O2 -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes -shared -fPIC -o build/xr/libhol_inject_layer.so tests/xr/inject_layer.c' || {
+    echo "xr-test: FAIL: building the test's API layer in the chroot" >&2; exit 1; }
 echo "xr-test: built in the chroot ($(( $(date +%s) - start )) s)"
 rc=0
 chroot "$CHROOT" sh -c 'cd /src && timeout 600 sh tests/xr/inside.sh build/xr/holonomy' || rc=1

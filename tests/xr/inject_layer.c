@@ -1,0 +1,122 @@
+/* inject_layer.c - a test-only OpenXR API layer for `make xr-test`: it
+ * gives the application a reference-space change that Monado never sends
+ * (a recentre from the runtime's menu, or a play area drawn again), so the
+ * handler in platform/openxr/hol_xr_events.c runs against a real loader,
+ * runtime and validation layer.
+ *
+ * Everything passes through to the next layer or the runtime, except
+ * xrPollEvent: once HOL_INJECT_AT frames have ended (xrEndFrame calls that
+ * succeeded; default 90) it returns, once, an
+ * XrEventDataReferenceSpaceChangePending for the session, of the space
+ * HOL_INJECT_SPACE ("STAGE", the default, or "LOCAL"), with the previous
+ * origin's pose valid (identity). The loader finds it through a manifest
+ * (inside.sh writes one) named in XR_API_LAYER_PATH and enabled with
+ * XR_ENABLE_API_LAYERS=XR_APILAYER_HOLONOMY_inject. */
+#include <stdlib.h>
+#include <string.h>
+
+#include <openxr/openxr.h>
+#include <openxr/openxr_loader_negotiation.h>
+
+#define LAYER_NAME "XR_APILAYER_HOLONOMY_inject"
+
+static PFN_xrGetInstanceProcAddr next_gipa;
+static PFN_xrPollEvent next_poll;
+static PFN_xrEndFrame next_end;
+static PFN_xrCreateSession next_create_session;
+static XrSession session;
+static long ended, at = 90;
+static int injected;
+
+static XRAPI_ATTR XrResult XRAPI_CALL inject_create_session(XrInstance instance,
+                                                            const XrSessionCreateInfo *info,
+                                                            XrSession *out)
+{
+    XrResult r = next_create_session(instance, info, out);
+    if (XR_SUCCEEDED(r))
+        session = *out;
+    return r;
+}
+
+static XRAPI_ATTR XrResult XRAPI_CALL inject_end_frame(XrSession s, const XrFrameEndInfo *info)
+{
+    XrResult r = next_end(s, info);
+    if (XR_SUCCEEDED(r))
+        ended++;
+    return r;
+}
+
+static XRAPI_ATTR XrResult XRAPI_CALL inject_poll(XrInstance instance, XrEventDataBuffer *ev)
+{
+    if (injected || ended < at || session == XR_NULL_HANDLE)
+        return next_poll(instance, ev);
+    const char *sp = getenv("HOL_INJECT_SPACE");
+    XrEventDataReferenceSpaceChangePending *e = (XrEventDataReferenceSpaceChangePending *)ev;
+    memset(e, 0, sizeof *e);
+    e->type = XR_TYPE_EVENT_DATA_REFERENCE_SPACE_CHANGE_PENDING;
+    e->session = session;
+    e->referenceSpaceType = sp && !strcmp(sp, "LOCAL") ? XR_REFERENCE_SPACE_TYPE_LOCAL
+                                                       : XR_REFERENCE_SPACE_TYPE_STAGE;
+    e->poseValid = XR_TRUE;
+    e->poseInPreviousSpace.orientation.w = 1;
+    injected = 1;
+    return XR_SUCCESS;
+}
+
+static XRAPI_ATTR XrResult XRAPI_CALL inject_gipa(XrInstance instance, const char *name,
+                                                  PFN_xrVoidFunction *out)
+{
+    if (!strcmp(name, "xrGetInstanceProcAddr"))
+        *out = (PFN_xrVoidFunction)inject_gipa;
+    else if (!strcmp(name, "xrPollEvent"))
+        *out = (PFN_xrVoidFunction)inject_poll;
+    else if (!strcmp(name, "xrEndFrame"))
+        *out = (PFN_xrVoidFunction)inject_end_frame;
+    else if (!strcmp(name, "xrCreateSession"))
+        *out = (PFN_xrVoidFunction)inject_create_session;
+    else
+        return next_gipa(instance, name, out);
+    return XR_SUCCESS;
+}
+
+static XRAPI_ATTR XrResult XRAPI_CALL inject_create_instance(const XrInstanceCreateInfo *info,
+                                                             const XrApiLayerCreateInfo *li,
+                                                             XrInstance *out)
+{
+    if (!li || !li->nextInfo || strcmp(li->nextInfo->layerName, LAYER_NAME))
+        return XR_ERROR_INITIALIZATION_FAILED;
+    next_gipa = li->nextInfo->nextGetInstanceProcAddr;
+    XrApiLayerCreateInfo down = *li;
+    down.nextInfo = li->nextInfo->next;
+    XrResult r = li->nextInfo->nextCreateApiLayerInstance(info, &down, out);
+    if (XR_FAILED(r))
+        return r;
+    const char *a = getenv("HOL_INJECT_AT");
+    if (a && *a)
+        at = strtol(a, NULL, 10);
+    if (XR_FAILED(next_gipa(*out, "xrPollEvent", (PFN_xrVoidFunction *)&next_poll)) ||
+        XR_FAILED(next_gipa(*out, "xrEndFrame", (PFN_xrVoidFunction *)&next_end)) ||
+        XR_FAILED(next_gipa(*out, "xrCreateSession",
+                            (PFN_xrVoidFunction *)&next_create_session)))
+        return XR_ERROR_INITIALIZATION_FAILED;
+    return XR_SUCCESS;
+}
+
+XRAPI_ATTR XrResult XRAPI_CALL xrNegotiateLoaderApiLayerInterface(
+    const XrNegotiateLoaderInfo *loader, const char *name, XrNegotiateApiLayerRequest *req);
+
+XRAPI_ATTR XrResult XRAPI_CALL xrNegotiateLoaderApiLayerInterface(
+    const XrNegotiateLoaderInfo *loader, const char *name, XrNegotiateApiLayerRequest *req)
+{
+    if (!loader || !req || !name || strcmp(name, LAYER_NAME) ||
+        loader->structType != XR_LOADER_INTERFACE_STRUCT_LOADER_INFO ||
+        req->structType != XR_LOADER_INTERFACE_STRUCT_API_LAYER_REQUEST ||
+        loader->minInterfaceVersion > XR_CURRENT_LOADER_API_LAYER_VERSION ||
+        loader->maxInterfaceVersion < XR_CURRENT_LOADER_API_LAYER_VERSION)
+        return XR_ERROR_INITIALIZATION_FAILED;
+    req->layerInterfaceVersion = XR_CURRENT_LOADER_API_LAYER_VERSION;
+    req->layerApiVersion = XR_CURRENT_API_VERSION;
+    req->getInstanceProcAddr = inject_gipa;
+    req->createApiLayerInstance = inject_create_instance;
+    return XR_SUCCESS;
+}
