@@ -156,6 +156,19 @@ check "--space local: exit 0 ($rc), LOCAL asked for" \
 check "--space local: the head at standing eye height (y ${y:-none}, want 1.4..1.8)" \
     '[ -n "$y" ] && awk "BEGIN{exit !($y >= 1.4 && $y <= 1.8)}"'
 
+# A study on the headset (issue 18): two conditions, counterbalanced by the
+# participant's number (P02 plays the second first), the second in {4,6};
+# the summary names the study, the condition, its position and the tiling.
+mkdir -p "$out/study/lv" "$out/study-logs"
+printf 'mode flag\nseed 5\nflag Wrf\n' >"$out/study/lv/flag.lvl"
+printf 'study two\ncondition flat5\nlevel lv/flag.lvl\ncondition six\nlevel lv/flag.lvl\nset tiling 4 6\n' \
+    >"$out/study/two.study"
+env DISPLAY=:77 "$BIN" xr --study "$out/study/two.study" --participant P02 --frames 40 \
+    --log "$out/study-logs" >"$out/study.out" 2>&1
+rc=$?
+check "xr --study: exit 0 ($rc); P02 plays condition six first, in {4,6}, the summary says so" \
+    '[ "$rc" = 0 ] && tail -n 1 "$out/study-logs/summary.csv" | grep -q ",P02,.*,two,six,1,flag,.*,\"4,6\",3x3,"'
+
 # The runtime recentres (or the play area is drawn again): Monado sends no
 # XrEventDataReferenceSpaceChangePending, so the test's API layer
 # (tests/xr/inject_layer.c) gives one after 90 frames, when the scripted
