@@ -7,6 +7,7 @@
 #   make fuzz       build the libFuzzer harnesses and run each FUZZ_TIME s
 #   make bench      build with optimisation and print the benchmark figures
 #   make san        run the unit tests under AddressSanitizer + UBSan
+#   make san-cli    run the command-line tests against an ASan + UBSan build
 #   make run        build and play in a desktop window (RUN_ARGS: play's options)
 #   make xr         build/xr/holonomy with `holonomy xr` (XR=1 in its own folder)
 #   make xr-test    the headset against Monado in a chroot (root; see README)
@@ -99,7 +100,7 @@ APT_LOCK_WAIT ?= 120
 APT_GET = $$SUDO env DEBIAN_FRONTEND=noninteractive apt-get -o DPkg::Lock::Timeout=$(APT_LOCK_WAIT)
 
 .PHONY: web web-serve web-test deps-web bench-web
-.PHONY: all test purity fn-length unit render-test cli-test fuzz-replay fuzz bench san clean deps xr \
+.PHONY: all test purity fn-length unit render-test cli-test fuzz-replay fuzz bench san san-cli clean deps xr \
         deps-cross check-clang cross-test run quest quest-help deps-quest quest-check check-hid-libusb deps-xr xr-test soak \
         deps-quest-link quest-link-check
 
@@ -294,6 +295,14 @@ san:
 	$(MAKE) BUILD=$(BUILD)/san OPT=-O1 \
 	  CFLAGS="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer" \
 	  LDFLAGS="-fsanitize=address,undefined" unit
+
+# The command-line tests against the tool itself built with ASan + UBSan
+# (Mesa's own leaks are not ours: leak detection is off for the GL paths).
+SAN_FLAGS := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
+san-cli:
+	ASAN_OPTIONS=detect_leaks=0:abort_on_error=0 UBSAN_OPTIONS=print_stacktrace=1 \
+	$(MAKE) BUILD=$(BUILD)/san OPT=-O1 CFLAGS="$(SAN_FLAGS)" \
+	  LDFLAGS="-fsanitize=address,undefined" cli-test
 
 check-clang:
 	$(MAKE) CC=clang BUILD=$(BUILD)/clang all $(UNIT_BIN:$(BUILD)/%=$(BUILD)/clang/%)
