@@ -598,7 +598,7 @@ hol_err hol_app_step(hol_app *app, const hol_input *in)
         if (app->level_t >= app->next_sample / 10.0) {
             app->ev.head_sample = 1;
             app->ev.head_sample_t = app->next_sample / 10.0;
-            app->next_sample = (long)floor(app->level_t * 10) + 1;
+            app->next_sample = floor(app->level_t * 10) + 1;
         }
         if (app->done) {
             hol__summary(app, HOL_APP_END_DONE);

@@ -52,7 +52,7 @@ struct hol_app {
     int timed_out;      /* the end screen is the time limit's */
     int steps, optimum, remaining;
     double level_t;
-    long next_sample; /* index of the next 10 Hz head sample */
+    double next_sample; /* index of the next 10 Hz head sample (whole; no cast) */
     /* the tutorial */
     int stage;               /* 0..HOL_APP_TUTORIAL_STAGES-1 */
     hol_room stage_start;

@@ -59,6 +59,11 @@
  *   each. Head rows fall on exact 10 Hz level times, interpolated between
  *   the frames around them (position linear, yaw the short way round;
  *   cell and tile from the nearer frame), frame_t the later frame's time.
+ *   Over a gap (HOL_SESSION_GAP_S) one row stands for the samples it hides:
+ *   t the first of them, frame_t the frame after the gap, x..row empty,
+ *   tile "gap". Every writer is bounded a frame: one recording line, at
+ *   most HOL_APP_MAX_STEP_EVENTS step rows and HOL_SESSION_GAP_ROWS head
+ *   rows, so the logs grow with the input, never with its time.
  *   A step row's visible says which cues were drawn after the step
  *   (hol_session_cues_visible), cues which were in force.
  * - Errors: hol_err, with a one-line reason in hol_session_message (naming
@@ -79,6 +84,12 @@
 #include "hol_sink.h"
 
 #define HOL_SESSION_MAX_LEVELS HOL_REC_MAX_LEVELS
+/* Head rows are interpolated over frames at most HOL_SESSION_GAP_S of level
+ * time apart; a longer gap (a stall, a laptop asleep, a recording whose
+ * time jumps) is one `gap` row. A frame writes at most HOL_SESSION_GAP_ROWS
+ * head rows (20 samples of a 2 s gap, and the one at its end). */
+#define HOL_SESSION_GAP_S 2.0
+#define HOL_SESSION_GAP_ROWS 21
 
 #define HOL_SESSION_SUMMARY_COLUMNS                                                       \
     "session,participant,session_start,version,attempt,study,condition,position,level,"    \

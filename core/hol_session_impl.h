@@ -41,7 +41,7 @@ struct hol_session {
     hol__out rec_out, steps, head;
     int attempt, attempt_open;
     double attempt_started;  /* session time at the attempt's start */
-    long next_sample;        /* the next head row's time, in 0.1 s */
+    double next_sample;      /* the next head row's time, in 0.1 s (whole) */
     hol__head_frame prev;
     double flush_s, next_flush, now;
     long frames;

@@ -228,16 +228,42 @@ static void hol__step_rows(hol_session *s, const hol_app_events *ev, const hol_a
     }
 }
 
+/* The index of the last 10 Hz sample at or before level time t (a whole
+ * number as a double: exact below 2^53, and no cast that can overflow). */
+static double hol__last_sample(double t)
+{
+    double k = floor(t * 10);
+    if ((k + 1) / 10.0 <= t)
+        k += 1;
+    else if (k / 10.0 > t)
+        k -= 1;
+    return k;
+}
+
 /* Head rows at every 0.1 s of level time up to this frame's, between the
- * previous frame of the attempt and this one. */
+ * previous frame of the attempt and this one; over a gap (frames more than
+ * HOL_SESSION_GAP_S apart, or more than HOL_SESSION_GAP_ROWS samples due)
+ * one gap row instead: t the first sample it stands for, frame_t this
+ * frame's time, the pose and cell empty, tile "gap". So a frame writes at
+ * most HOL_SESSION_GAP_ROWS rows, whatever its time. */
 static void hol__head_rows(hol_session *s, const hol_app_view *v)
 {
     hol__head_frame cur = {1, v->hud.elapsed_s, {v->head[0], v->head[1], v->head[2]},
                       v->yaw_deg, v->pitch_deg, v->user};
-    const hol__head_frame *p = s->prev.valid ? &s->prev : &cur;
+    const hol__head_frame prev = s->prev.valid ? s->prev : cur, *p = &prev;
     char name[HOL__CSV_NAME], addr[HOL_TILE_ADDR_MAX];
     hol__csv_name(s->levels[s->cur].name, name);
-    for (; s->next_sample / 10.0 <= cur.t; s->next_sample++) {
+    s->prev = cur;
+    double last = hol__last_sample(cur.t), due = last - s->next_sample + 1;
+    if (due < 1)
+        return;
+    if (cur.t - p->t > HOL_SESSION_GAP_S || due > HOL_SESSION_GAP_ROWS) {
+        hol__out_printf(s, &s->head, "%s,%d,%s,%.1f,%.4f,,,,,,,,gap\n", s->meta.session,
+                        s->attempt, name, s->next_sample / 10.0, cur.t);
+        s->next_sample = last + 1;
+        return;
+    }
+    for (int i = 0; i < (int)due; i++, s->next_sample++) {
         double t = s->next_sample / 10.0, span = cur.t - p->t;
         double a = span > 0 ? (t - p->t) / span : 1;
         a = a < 0 ? 0 : a > 1 ? 1 : a;
@@ -252,7 +278,6 @@ static void hol__head_rows(hol_session *s, const hol_app_view *v)
                         s->meta.session, s->attempt, name, t, cur.t, pos[0], pos[1], pos[2],
                         yaw, pitch, room->col, room->row, addr);
     }
-    s->prev = cur;
 }
 
 /* ---- attempts ---------------------------------------------------------------- */

@@ -238,9 +238,10 @@ static int play_log_dir(const char *cmd, const char *dir, int append, play_out *
     struct dirent *e;
     while (d && (e = readdir(d)) != NULL)
         if (hol_session_is_log_name(e->d_name)) {
-            closedir(d);
+            /* the name is the DIR's memory: said before closedir frees it */
             cli_error(cmd, 0, "--log '%.200s' holds earlier logs ('%.60s'): add to them with "
                       "--append, or choose another folder", dir, e->d_name);
+            closedir(d);
             return CLI_EXIT_USAGE;
         }
     if (d)
