@@ -131,6 +131,7 @@ static int play_input_header(play_input *pi, char *s, size_t len, int want_heade
     if (!pi->recording && !want_header) {
         memcpy(pi->first, s, len + 1);
         pi->first_len = len;
+        pi->first_cut = pi->lines.cut;
         pi->have_first = 1;
         return 0;
     }
@@ -195,14 +196,22 @@ int play_input_next(play_input *pi, hol_input *in)
     char *s = pi->first;
     size_t len = pi->first_len;
     long lineno = pi->lines.lineno;
+    int cut;
     if (pi->have_first) {
         pi->have_first = 0;
         lineno = pi->recording ? pi->rec.line + 1 : 1;
+        cut = pi->first_cut;
     } else {
         int r = hol_lines_next(&pi->lines, &s, &len);
         if (r <= 0)
             return r < 0 ? -play_input_failed(pi) : 0;
         lineno = pi->lines.lineno;
+        cut = pi->lines.cut;
+    }
+    if (cut) { /* a record the file's end cut: never taken (it may be a part) */
+        cli_error(pi->cmd, lineno, "'%.200s' ends inside this record (no newline): it is "
+                  "dropped", pi->path);
+        return 0;
     }
     size_t bad = 0;
     if (hol_input_parse(s, len, in, &bad)) {

@@ -67,6 +67,7 @@ int hol_lines_next(hol_lines *l, char **out_s, size_t *out_len)
     size_t n = 0;
     if (l->eof || l->err)
         return l->err ? -1 : 0;
+    l->cut = 0;
     for (;;) {
         if (l->pos == l->end) {
             int f = hol__fill(l);
@@ -76,6 +77,7 @@ int hol_lines_next(hol_lines *l, char **out_s, size_t *out_len)
                 l->eof = 1;
                 if (n == 0)
                     return 0;
+                l->cut = 1;
                 break; /* a last line without LF */
             }
         }

@@ -11,7 +11,8 @@
  * - hol_lines_next gives the next line without its LF (and without one CR
  *   before it), NUL-terminated in the reader's buffer (valid until the
  *   next call; it may hold NUL bytes, which callers refuse): 1 a line, 0 the
- *   end (a last line without LF is a line). -1 on failure with l->err:
+ *   end (a last line without LF is a line, with l->cut set: a reader of
+ *   records that must be whole can tell it). -1 on failure with l->err:
  *   HOL_ENOMEM a line longer than the limit (refused when limit + 1 bytes
  *   without LF have been read, not after the whole line), HOL_EIO a read
  *   failure. l->lineno counts the lines given (1-based), the failing one
@@ -34,6 +35,7 @@ typedef struct hol_lines {
     uint8_t *buf;         /* read buffer */
     size_t pos, end;      /* unread bytes in buf */
     int eof;
+    int cut; /* the last line given had no LF (the file's end cut it) */
     long lineno;
     hol_err err;
     int own_fd; /* hol_lines_close closes fd */
