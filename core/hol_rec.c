@@ -269,8 +269,14 @@ hol_err hol_rec_read_line(hol_rec_reader *r, const char *s, size_t len, int *out
         return err;
     if (len >= 6 && !memcmp(s, "level ", 6))
         return hol__level_begin(r, s, len);
+    if (r->nlevels == 0 && r->version < 3 && len >= 6 && !memcmp(s, "study ", 6))
+        return hol__bad(r, HOL_EPARSE, "a 'study' line needs a version 3 recording "
+                                       "('holonomy-rec 3'), not version %d", r->version);
     if (r->nlevels == 0)
-        return hol__bad(r, HOL_EPARSE, "the recording holds no level");
+        return hol__bad(r, HOL_EPARSE, "'%.*s' is not a header line (%s'level NAME') and "
+                                       "no level came before it",
+                        (int)(len < 20 ? len : 20), s,
+                        r->version >= 2 ? "session, participant, start, version, " : "");
     r->line--; /* not a header line: the first input line */
     *out_done = 1;
     return HOL_OK;

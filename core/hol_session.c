@@ -327,6 +327,11 @@ int hol_session_recovered(const hol_session *s)
     return s->recovered;
 }
 
+int hol_session_dropped(const hol_session *s)
+{
+    return s->dropped;
+}
+
 const char *hol_session_message(const hol_session *s)
 {
     return s->msg;

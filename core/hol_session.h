@@ -37,7 +37,13 @@
  * - Recovery (desc.append): live files of attempts a killed session left
  *   are finished first: each gets its summary row (end killed; steps: its
  *   step rows; time: its last row's level time) unless summary.csv has it
- *   already, then the renames. Without desc.append a folder that holds any
+ *   already, then the renames; a live file without a whole header line is
+ *   made again with its header. An attempt with no row and no whole
+ *   attempt-NNN.live (killed before it reached the disk) is dropped: its
+ *   files removed (hol_session_dropped). A summary.csv holding only a first
+ *   part of its header is made again; one whose last row the kill cut is
+ *   cut to its whole rows. So recovery always leaves a folder `report`
+ *   and `replay --append` accept. Without desc.append a folder that holds any
  *   log file (summary.csv, steps-*, head-*, attempt-*.live) is refused
  *   (HOL_EARG): a session never mixes its files into another's unasked.
  *   With desc.append, summary.csv must have this version's columns.
@@ -141,8 +147,10 @@ hol_app *hol_session_app(hol_session *s);
 int hol_session_level_index(const hol_session *s);
 const hol_level *hol_session_level(const hol_session *s);
 long hol_session_frames(const hol_session *s);
-/* Attempts of a killed session finished by recovery at create. */
+/* Attempts of a killed session finished by recovery at create; those it
+ * dropped (killed before their attempt-NNN.live reached the disk). */
 int hol_session_recovered(const hol_session *s);
+int hol_session_dropped(const hol_session *s);
 const char *hol_session_message(const hol_session *s);
 
 /* 1 when name is one of a log folder's files (summary.csv, steps-NNN.csv,

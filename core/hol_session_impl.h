@@ -45,7 +45,7 @@ struct hol_session {
     hol__head_frame prev;
     double flush_s, next_flush, now;
     long frames;
-    int over, finished, recovered;
+    int over, finished, recovered, dropped;
     hol_err failed;          /* the first sink failure (sticky) */
     int failed_told;
     char msg[256];

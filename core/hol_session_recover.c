@@ -249,6 +249,26 @@ static void hol__put(hol_session *s, const char *name, const char *text)
     }
 }
 
+/* Attempt a has no row and no whole attempt-NNN.live (killed before it
+ * reached the disk): nothing says what it played, so its files go. */
+static void hol__drop(hol_session *s, int a)
+{
+    static const char *const what[3] = {"head", "steps", "attempt"};
+    for (int k = 0; k < 3 && !s->failed; k++) {
+        char name[64], live[80];
+        hol__attempt_name(name, sizeof name, what[k], a);
+        snprintf(live, sizeof live, "%s%s", name, k < 2 ? ".live" : "");
+        char probe[1];
+        size_t got;
+        if (s->log->read(s->log->user, live, 0, probe, 1, &got) == HOL_EOPEN)
+            continue;
+        if (s->log->remove(s->log->user, live))
+            hol__fail_sink(s, s->log, HOL_EIO, "remove", live);
+    }
+    if (!s->failed)
+        s->dropped++;
+}
+
 static void hol__recover(hol_session *s, int a)
 {
     char field[16], name[64], live[80], row[1200];
@@ -263,14 +283,16 @@ static void hol__recover(hol_session *s, int a)
     }
     if (!l.has_field) {
         size_t n = hol__killed_row(s, a, row, sizeof row);
-        if (n) {
-            hol__out o;
-            hol__out_init(&o, s->log, NULL, 0);
-            if (!hol__out_open(s, &o, "summary.csv", 1)) {
-                hol__out_put(s, &o, row, n);
-                hol__out_flush(s, &o, 1);
-                hol__out_close(s, &o);
-            }
+        if (!n) {
+            hol__drop(s, a);
+            return;
+        }
+        hol__out o;
+        hol__out_init(&o, s->log, NULL, 0);
+        if (!hol__out_open(s, &o, "summary.csv", 1)) {
+            hol__out_put(s, &o, row, n);
+            hol__out_flush(s, &o, 1);
+            hol__out_close(s, &o);
         }
     } else {
         int steps;
@@ -278,8 +300,8 @@ static void hol__recover(hol_session *s, int a)
         hol__live_rows(s, a, &steps, &time); /* cut what the kill cut */
     }
     /* the live files renamed, steps last (as at an attempt's end); one the
-     * kill left unmade (the attempt had just begun) made with its header,
-     * so the row has its files */
+     * kill left unmade or without a whole header line (the attempt had
+     * just begun) made with its header, so the row has its files */
     static const char *const what[2] = {"head", "steps"};
     static const char *const cols[2] = {HOL_SESSION_HEAD_COLUMNS "\n",
                                         HOL_SESSION_STEP_COLUMNS "\n"};
@@ -288,11 +310,18 @@ static void hol__recover(hol_session *s, int a)
         snprintf(live, sizeof live, "%s.live", name);
         char probe[1];
         size_t got;
-        if (s->log->read(s->log->user, live, 0, probe, 1, &got) == HOL_EOPEN) {
-            if (s->log->read(s->log->user, name, 0, probe, 1, &got) != HOL_EOPEN)
-                continue; /* renamed before the kill */
-            hol__put(s, live, cols[k]);
+        hol__lines ll;
+        memset(&ll, 0, sizeof ll);
+        hol_err le = hol__read_lines(s->log, live, &ll);
+        if (le == HOL_EOPEN &&
+            s->log->read(s->log->user, name, 0, probe, 1, &got) != HOL_EOPEN)
+            continue; /* renamed before the kill */
+        if (le && le != HOL_EOPEN) {
+            hol__fail_sink(s, s->log, le, "read", live);
+            return;
         }
+        if (le == HOL_EOPEN || ll.complete == 0)
+            hol__put(s, live, cols[k]);
         if (!s->failed && s->log->rename(s->log->user, live, name))
             hol__fail_sink(s, s->log, HOL_EIO, "rename", live);
     }
@@ -304,6 +333,17 @@ static void hol__recover(hol_session *s, int a)
 }
 
 /* ---- opening the folder ------------------------------------------------------------- */
+
+/* 1 when summary.csv holds no more than a first part of its header line
+ * (no LF): a first session killed before its header reached the disk. */
+static int hol__header_part(hol_session *s)
+{
+    char buf[sizeof HOL_SESSION_SUMMARY_COLUMNS];
+    size_t got = 0;
+    if (s->log->read(s->log->user, "summary.csv", 0, buf, sizeof buf, &got))
+        return 0;
+    return got < sizeof buf && !memcmp(buf, HOL_SESSION_SUMMARY_COLUMNS, got);
+}
 
 static int hol__cmp_int(const void *a, const void *b)
 {
@@ -334,10 +374,17 @@ hol_err hol__log_open(hol_session *s, int append)
     e = hol__read_lines(s->log, "summary.csv", &l);
     if (e && e != HOL_EOPEN)
         return hol__fail_sink(s, s->log, e, "read", "summary.csv");
-    if (e == HOL_OK && !l.first_is) {
+    if (e == HOL_OK && l.complete == 0 && hol__header_part(s)) {
+        e = HOL_EOPEN; /* a kill before its header reached the disk: made again */
+    } else if (e == HOL_OK && !l.first_is) {
         snprintf(s->msg, sizeof s->msg, "the log folder's summary.csv has other columns "
                  "(another version's logs): choose another folder");
         return HOL_EVERSION;
+    } else if (e == HOL_OK) {
+        char probe[1];
+        size_t got = 0;
+        if (!s->log->read(s->log->user, "summary.csv", l.good, probe, 1, &got) && got)
+            hol__cut(s, "summary.csv", l.good); /* a row cut by the kill */
     }
     if (e == HOL_EOPEN) {
         /* a new summary.csv: its header first */

@@ -234,29 +234,51 @@ void play_input_close(play_input *pi)
 
 /* ---- outputs -------------------------------------------------------------------- */
 
-/* --log DIR: made when missing (its parent exists); holding logs, refused
- * unless append. */
+/* What a log folder's entry is, when it is not a regular file (NULL). */
+static const char *play_not_regular(DIR *d, const char *name)
+{
+    struct stat st;
+    if (fstatat(dirfd(d), name, &st, 0))
+        return "a dangling link";
+    return S_ISREG(st.st_mode)    ? NULL
+           : S_ISDIR(st.st_mode)  ? "a folder"
+           : S_ISFIFO(st.st_mode) ? "a FIFO"
+                                  : "a socket or device";
+}
+
+/* --log DIR: made when missing (its parent exists; removed again by
+ * play_out_close when no session opened on it); holding logs, refused
+ * unless append; with append each log file in it must be a regular file. */
 static int play_log_dir(const char *cmd, const char *dir, int append, play_out *po)
 {
+    struct stat st;
+    int missing = stat(dir, &st) && errno == ENOENT;
     if (hol_sink_posix_make_dir(dir) || hol_sink_posix_init(&po->log, dir)) {
         cli_error(cmd, 0, "--log '%.200s' is not a folder and cannot be made: %s", dir,
                   strerror(errno));
         return CLI_EXIT_USAGE;
     }
-    DIR *d = append ? NULL : opendir(dir);
+    po->has_log = 1;
+    if (missing && strlen(dir) < sizeof po->made_dir)
+        snprintf(po->made_dir, sizeof po->made_dir, "%s", dir);
+    DIR *d = opendir(dir);
     struct dirent *e;
-    while (d && (e = readdir(d)) != NULL)
-        if (hol_session_is_log_name(e->d_name)) {
-            /* the name is the DIR's memory: said before closedir frees it */
+    const char *what = NULL;
+    while (d && !what && (e = readdir(d)) != NULL) {
+        if (!hol_session_is_log_name(e->d_name))
+            continue;
+        /* the name is the DIR's memory: said before closedir frees it */
+        if (!append)
             cli_error(cmd, 0, "--log '%.200s' holds earlier logs ('%.60s'): add to them with "
                       "--append, or choose another folder", dir, e->d_name);
-            closedir(d);
-            return CLI_EXIT_USAGE;
-        }
+        else if ((what = play_not_regular(d, e->d_name)) != NULL)
+            cli_error(cmd, 0, "--log '%.200s': '%.60s' is %s, not a log file: move it away",
+                      dir, e->d_name, what);
+        what = append ? what : "";
+    }
     if (d)
         closedir(d);
-    po->has_log = 1;
-    return 0;
+    return what ? CLI_EXIT_USAGE : 0;
 }
 
 /* --record FILE: FILE and FILE.live may be written, and no FILE.live of a
@@ -300,6 +322,8 @@ void play_out_close(play_out *po)
 {
     if (po->has_log)
         hol_sink_posix_fini(&po->log);
+    if (po->made_dir[0] && !po->opened)
+        rmdir(po->made_dir); /* made for a session that never began: empty */
     if (po->has_rec)
         hol_sink_posix_fini(&po->rec);
     po->has_log = po->has_rec = 0;
@@ -333,10 +357,15 @@ int play_session_open(const char *cmd, play_out *po, const hol_level *levels, in
                    ? CLI_EXIT_USAGE
                    : CLI_EXIT_FAIL;
     }
+    po->opened = 1;
     if (hol_session_recovered(*out))
         fprintf(stderr, "holonomy %s: %d unfinished attempt(s) of a killed session finished "
                         "in the log folder (end 'killed')\n",
                 cmd, hol_session_recovered(*out));
+    if (hol_session_dropped(*out))
+        fprintf(stderr, "holonomy %s: %d attempt(s) of a killed session dropped from the log "
+                        "folder (killed before their first row reached the disk)\n",
+                cmd, hol_session_dropped(*out));
     return 0;
 }
 

@@ -24,7 +24,11 @@
  *   missing and its parent exists; else bad input; one that holds logs is
  *   refused unless append) and --record FILE (FILE and FILE.live a regular
  *   file or a new name in an existing folder, cli_check_output; a FILE.live
- *   a killed session left is refused). play_session_open
+ *   a killed session left is refused; with append, a log file in DIR that
+ *   is not a regular file, a folder or a FIFO, is refused). A DIR it made
+ *   is removed again by play_out_close when no session opened on it (a
+ *   refused study, a window that failed): no empty folder is left.
+ *   play_session_open
  *   then creates the session on them; play_session_end finishes it (or
  *   aborts it: the attempt in play ends `aborted`) and frees it.
  * - play_print_end prints "level NAME STATE steps S optimum O tile A cell
@@ -97,6 +101,8 @@ typedef struct play_out {
     hol_sink_posix log, rec;
     int has_log, has_rec;
     char rec_name[HOL_SINK_NAME_MAX];
+    char made_dir[4096]; /* --log DIR when play_out_open made it */
+    int opened;          /* a session opened on them */
 } play_out;
 
 int play_out_open(const char *cmd, const char *log_dir, int append, const char *rec_path,
