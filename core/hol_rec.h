@@ -16,6 +16,9 @@
  *     L LINE                its text's lines (hol_level.h), then
  *     end
  *     TIME f=... ...        one input line per frame (core/hol_input_io.h)
+ *     end aborted           last, when the session was aborted (a signal,
+ *                           the window closed: HOL_REC_ABORTED_LINE), so a
+ *                           replay ends it the same way
  *
  *   Versions 1 (no metadata lines) and 2 (no study) are read too; the
  *   writer writes version 2 unless the session is a study's, so a
@@ -48,6 +51,9 @@
 #include <stddef.h>
 
 #include "hol_err.h"
+
+/* The recording's last line when its session was aborted (no LF). */
+#define HOL_REC_ABORTED_LINE "end aborted"
 #include "hol_level.h"
 
 #define HOL_REC_VERSION 3

@@ -268,6 +268,9 @@ static hol_err hol__end(hol_session *s, int end)
     s->finished = s->over = 1;
     hol__end_attempt_now(s, end);
     if (s->rec && s->rec_out.h >= 0) {
+        if (end == HOL__END_ABORTED) /* a replay ends the same way */
+            hol__out_put(s, &s->rec_out, HOL_REC_ABORTED_LINE "\n",
+                         sizeof HOL_REC_ABORTED_LINE);
         char live[HOL_SINK_NAME_MAX + 8];
         snprintf(live, sizeof live, "%s.live", s->rec_name);
         hol__out_flush(s, &s->rec_out, 1);

@@ -17,9 +17,13 @@
 # - --append with summary.csv a folder or a FIFO: exit 1 "Invalid
 #   argument"; now exit 2, one line;
 # - a version 2 recording's `study` line: "holds no level"; now named;
-# - a refused study or a failed window left an empty --log folder.
+# - a refused study or a failed window left an empty --log folder;
+# - (issue 26) a play ended by SIGINT, SIGTERM, SIGHUP or the close button
+#   replayed with end `open`; now its recording ends "end aborted" and the
+#   replay's summary equals the play's byte for byte (quit and timeout too).
 . "$(dirname "$0")/lib.sh"
 H=$(cd "$(dirname "$H")" && pwd)/$(basename "$H")
+[ -n "${X11_CLOSE:-}" ] && X11_CLOSE=$(cd "$(dirname "$X11_CLOSE")" && pwd)/$(basename "$X11_CLOSE")
 cd "$T" || exit 1
 
 rec_header() {
@@ -160,7 +164,7 @@ run "report of k2" 0 "$H" report k2 --out r2
 mkdir kr
 # each kill falls a moment after the replay's first new file (its level, its
 # first attempt's files: before their first flush), or later
-for d in 0 0 0.001 0.002 0.005 0.01 0.05 0.2; do
+for d in 0 0 0.002 0.01 0.05 0.2; do
     before=$(ls kr | wc -l)
     "$H" replay long.rec --log kr --append >/dev/null 2>&1 &
     pid=$!
@@ -204,8 +208,49 @@ if start_xvfb 317; then
     rm -rf pterm hostile.in
     run "play --input cut" 0 "$H" play --size 64x48 --mode flag --input cut.in
     one_line "play --input cut" "line 3: 'cut.in' ends inside this record"
+
+    # ---- issue 26 item 2: replay reproduces every end, the summary byte for byte ----
+    # same_end NAME END: the play's logs in $T/NAME/logs and recording
+    # $T/NAME/s.rec; the replay's summary equals the play's, which ends END
+    same_end() {
+        if ! "$H" replay "$1/s.rec" --log "$1/re" >/dev/null 2>"$1/re.err"; then
+            bad "$1: the replay failed: $(cat "$1/re.err")"; return; fi
+        tail -1 "$1/logs/summary.csv" | grep -q ",$2\$" || {
+            bad "$1: the play ended $(tail -1 "$1/logs/summary.csv" | sed 's/.*,//'), want $2"; return; }
+        cmp -s "$1/logs/summary.csv" "$1/re/summary.csv" && ok ||
+            bad "$1: the replay's summary differs: $(tail -1 "$1/re/summary.csv")"
+    }
+    mkdir quit timeout
+    { walk_input WN; printf '0.75 f=9 p=40 h=0.5,1.6,0.5,0,0,0,1\n'; } >quit.in
+    run "play to quit" 0 "$H" play --size 64x48 --mode flag --input quit.in --log quit/logs \
+        --record quit/s.rec
+    same_end quit quit
+    printf 'mode flag\nseed 5\nflag Wrf\ntime-limit 1\n' >tl.lvl
+    walk_input WNESWNEE >timeout.in
+    run "play to timeout" 0 "$H" play --size 64x48 tl.lvl --input timeout.in --log timeout/logs \
+        --record timeout/s.rec
+    same_end timeout timeout
+    # live plays, ended by a signal or the close button
+    ends="INT:130 TERM:143 HUP:129"
+    [ -n "${X11_CLOSE:-}" ] && ends="$ends close:0" || echo "note: no X11_CLOSE: the close button is not tested"
+    for s in $ends; do
+        d=end-${s%:*}; mkdir "$d"
+        "$H" play --size 64x48 --mode flag --log "$d/logs" --record "$d/s.rec" >/dev/null 2>&1 &
+        pid=$!
+        for i in $(seq 1 100); do [ -f "$d/logs/head-001.csv.live" ] && break; sleep 0.1; done
+        sleep 0.5
+        if [ "${s%:*}" = close ]; then "$X11_CLOSE" holonomy || bad "close: no window"
+        else kill -"${s%:*}" $pid; fi
+        if gone_within $pid 100; then
+            wait $pid; st=$?
+            [ "$st" = "${s#*:}" ] && ok || bad "$d: status $st, want ${s#*:}"
+            same_end "$d" aborted
+        else
+            bad "$d: still running"; kill -9 $pid 2>/dev/null; wait $pid 2>/dev/null
+        fi
+    done
 else
-    echo "note: no Xvfb here: play --input is not tested"
+    echo "note: no Xvfb here: play --input and the ends of a live play are not tested"
 fi
 
 finish cli_harden_logs

@@ -467,7 +467,7 @@ static int play_cleanup(play_ctx *c, int status, int abort)
     if (c->use_pad)
         hol_hid_dev_close(&c->pad);
     hol_render_destroy(c->r);
-    int end = play_session_end(c->cmd, c->s, abort);
+    int end = play_session_end(c->cmd, c->s, abort || (c->has_input && c->input.aborted));
     play_out_close(&c->out);
     if (c->has_window)
         hol_x11_destroy(&c->xw);

@@ -252,7 +252,8 @@ int cli_cmd_replay(int argc, char **argv)
     free(c.rgba);
     if (c.have_gl)
         hol_osmesa_destroy(&c.gl);
-    int end = play_session_end(c.cmd, c.s, abort);
+    /* a recording of an aborted session ends aborted (its exit stays 0) */
+    int end = play_session_end(c.cmd, c.s, abort || (c.has_input && c.input.aborted));
     play_out_close(&c.out);
     if (c.has_input)
         play_input_close(&c.input);

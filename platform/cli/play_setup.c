@@ -213,6 +213,11 @@ int play_input_next(play_input *pi, hol_input *in)
                   "dropped", pi->path);
         return 0;
     }
+    if (pi->recording && len == sizeof HOL_REC_ABORTED_LINE - 1 &&
+        !memcmp(s, HOL_REC_ABORTED_LINE, len)) {
+        pi->aborted = 1; /* the session was aborted here: the records end */
+        return 0;
+    }
     size_t bad = 0;
     if (hol_input_parse(s, len, in, &bad)) {
         cli_error(pi->cmd, lineno, "not an input record (byte %zu)", bad + 1);

@@ -19,7 +19,9 @@
  *   metadata are kept in the play_input); each record's time may not go
  *   back. A record is taken only whole: a last line without its LF (a file
  *   cut in a record) is dropped with one warning line on stderr, as the
- *   end. play_input_next: 1 a record, 0 the end, else -status.
+ *   end. A recording's last line "end aborted" (core/hol_rec.h) ends the
+ *   records with pi->aborted set: the caller aborts its session as the
+ *   recorded one was. play_input_next: 1 a record, 0 the end, else -status.
  * - play_out_open checks the outputs before any play: --log DIR (made when
  *   missing and its parent exists; else bad input; one that holds logs is
  *   refused unless append) and --record FILE (FILE and FILE.live a regular
@@ -88,6 +90,7 @@ typedef struct play_input {
     char first[HOL_REC_LINE_MAX + 1];
     size_t first_len;
     int first_cut;                    /* first had no LF (the file's end) */
+    int aborted;                      /* ended by the "end aborted" line */
     int recording;                    /* the file has a recording's header */
     hol_rec_reader rec;               /* its levels and metadata */
     hol_level levels[HOL_REC_MAX_LEVELS];
