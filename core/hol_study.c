@@ -397,6 +397,10 @@ uint64_t hol_study_participant_number(const char *id)
     size_t n = strlen(id), b = n;
     while (b > 0 && id[b - 1] >= '0' && id[b - 1] <= '9')
         b--;
+    /* an id of digits, or one that begins with a letter: "-1", "1e3" and
+     * "0x10" are not participants 1, 3 and 10 */
+    if (b > 0 && !((id[0] >= 'A' && id[0] <= 'Z') || (id[0] >= 'a' && id[0] <= 'z')))
+        return 0;
     uint64_t v = 0;
     for (size_t i = b; i < n; i++) {
         v = v * 10 + (uint64_t)(id[i] - '0');

@@ -158,6 +158,12 @@ static void test_participants(void **state)
     assert_int_equal(hol_study_participant_number("s2-p031"), 31);
     assert_int_equal(hol_study_participant_number("P"), 0);
     assert_int_equal(hol_study_participant_number("P0"), 0);
+    /* issue 24 finding 16: a sign, an exponent or hex are not numbers */
+    assert_int_equal(hol_study_participant_number("-1"), 0);
+    assert_int_equal(hol_study_participant_number("1e3"), 0);
+    assert_int_equal(hol_study_participant_number("0x10"), 0);
+    assert_int_equal(hol_study_participant_number("_7"), 0);
+    assert_int_equal(hol_study_participant_number("007"), 7);
     assert_int_equal(hol_study_participant_number("P1000000000"), 1000000000);
     assert_int_equal(hol_study_participant_number("P1000000001"), 0);
     assert_int_equal(hol_study_participant_number("P99999999999999999999999"), 0);

@@ -127,12 +127,12 @@ static int play_line(void *vctx, long lineno, char *s, size_t len)
 int cli_cmd_game(int argc, char **argv)
 {
     const char *cmd = "game";
-    if (cli_wants_help(argc, argv)) {
+    static const char *const valued[] = {PLAY_GEOMETRY_OPTIONS, NULL};
+    static const char *const flags[] = {NULL};
+    if (cli_wants_help(argc, argv, valued)) {
         fputs(game_usage, stdout);
         return cli_finish_output(cmd);
     }
-    static const char *const valued[] = {PLAY_GEOMETRY_OPTIONS, NULL};
-    static const char *const flags[] = {NULL};
     cli_opts p;
     cli_opts_init(&p, cmd, argc, argv, valued, flags);
     const char *a, *val, *path = NULL;

@@ -76,13 +76,14 @@ static int parse_frame_list(const char *s, long *out, int cap, int *out_n)
     return n == 0;
 }
 
+static const char *const replay_valued[] = {"--log",  "--png-frames", "--out-dir",
+                                            "--size", PLAY_GEOMETRY_OPTIONS, NULL};
+
 static int replay_options(replay_ctx *c, int argc, char **argv)
 {
-    static const char *const valued[] = {"--log",  "--png-frames", "--out-dir",
-                                         "--size", PLAY_GEOMETRY_OPTIONS, NULL};
     static const char *const flags[] = {"--append", NULL};
     cli_opts p;
-    cli_opts_init(&p, c->cmd, argc, argv, valued, flags);
+    cli_opts_init(&p, c->cmd, argc, argv, replay_valued, flags);
     const char *a, *val;
     int r, g;
     while ((r = cli_opts_next(&p, &a, &val)) > 0) {
@@ -115,7 +116,11 @@ static int replay_options(replay_ctx *c, int argc, char **argv)
         bad = "--png-frames is not a comma-separated list of frames";
     if (bad && bad[0])
         cli_error(c->cmd, 0, "%s", bad);
-    return bad ? CLI_EXIT_USAGE : 0;
+    if (bad)
+        return CLI_EXIT_USAGE;
+    const cli_path in[] = {{"the recording", c->rec}};
+    const cli_path out[] = {{"--log", c->log_dir}, {"--out-dir", c->out_dir}};
+    return cli_check_distinct(c->cmd, in, 1, out, 2);
 }
 
 /* ---- setup ------------------------------------------------------------------------ */
@@ -232,7 +237,7 @@ int cli_cmd_replay(int argc, char **argv)
     memset(&c, 0, sizeof c);
     c.cmd = "replay";
     c.w = 640, c.h = 480;
-    if (cli_wants_help(argc, argv)) {
+    if (cli_wants_help(argc, argv, replay_valued)) {
         fputs(replay_usage, stdout);
         return cli_finish_output(c.cmd);
     }
