@@ -754,6 +754,31 @@ hol_err hol_level_line_check(const char *s, size_t n, hol_level_err *err)
     return first;
 }
 
+long hol_level_objective_line(const hol_level *lv)
+{
+    static const char *const keys[] = {"flag", "flag-distance", "keys", "keys-distance",
+                                       "chest", "chest-distance"};
+    int mode = lv->lvl.mode, from = mode == HOL_APP_FLAG ? 0 : 2, to = mode == HOL_APP_FLAG ? 2 : 6;
+    if (mode != HOL_APP_FLAG && mode != HOL_APP_KEYS)
+        return 0;
+    long line = 0;
+    for (const char *s = lv->text, *end = lv->text + lv->len; s < end;) {
+        const char *nl = memchr(s, '\n', (size_t)(end - s));
+        const char *le = nl ? nl : end;
+        line++;
+        while (s < le && (*s == ' ' || *s == '\t'))
+            s++;
+        size_t n = 0;
+        while (s + n < le && s[n] != ' ' && s[n] != '\t' && s[n] != '#')
+            n++;
+        for (int k = from; k < to; k++)
+            if (strlen(keys[k]) == n && !memcmp(s, keys[k], n))
+                return line > lv->added ? line - lv->added : 0;
+        s = nl ? nl + 1 : end;
+    }
+    return 0;
+}
+
 char *hol_level_err_format(const hol_level_err *err, long first, char *out, size_t cap)
 {
     int n = err->line > 0 ? snprintf(out, cap, "line %ld: %s", first + err->line - 1, err->msg)
@@ -806,6 +831,7 @@ hol_err hol_level_make(const char *name, size_t name_len, const char *text, size
     out->name[name_len] = 0;
     out->condition[0] = 0;
     out->position = 0;
+    out->added = 0;
     hol_sha256(out->text, out->len, out->sha256);
     return HOL_OK;
 }
@@ -906,6 +932,9 @@ hol_err hol_level_set_geometry(hol_level *lv, int q, int cols, int rows, double 
         return e;
     memcpy(nl.condition, lv->condition, sizeof nl.condition);
     nl.position = lv->position;
+    for (size_t i = 0; i < n; i++)
+        nl.added += add[i] == '\n';
+    nl.added += lv->added;
     *lv = nl;
     return HOL_OK;
 }

@@ -141,6 +141,20 @@ run "study with a BOM: read (then refused for its level's tiling)" 2 "$H" play -
     --participant P1 --tiling 4,6 --frames 1
 one_line "bom study" "tiling 4 5"
 
+# finding 13: a level that cannot start names its objective's line (the
+# file's line, not counting the lines --tiling adds)
+printf 'mode flag\ntiling 4 8\nseed 2\nflag-distance 2\n' >f8.lvl
+run "{4,8} flag-distance 2 seed 2" 2 "$H" game f8.lvl </dev/null
+one_line "f8" "f8.lvl: line 4: no walk inside the room reaches an objective"
+printf 'mode flag\nseed 2\nflag-distance 2\n' >f8b.lvl
+run "{4,8} by --tiling" 2 "$H" game f8b.lvl --tiling 4,8 </dev/null
+one_line "f8b" "f8b.lvl: line 3: no walk inside the room reaches an objective"
+{ printf 'holonomy-rec 2\nsession 20260131T140509Z-5f3a9c01\nstart 2026-01-31T14:05:09Z\n'
+  printf 'version 0.1.0\nlevel f8\n'; sed 's/^/L /' f8.lvl; printf 'end\n'
+  walk_input N; } >f8.rec
+run "replay names the line" 2 "$H" replay f8.rec
+one_line "replay f8" "level 'f8' cannot start: line 4: no walk inside its room"
+
 # --- replay never replays a recording in another geometry ------------------
 # (a level without a tiling line was recorded in {4,5}: --tiling 4,6 replayed
 # it silently in {4,6})

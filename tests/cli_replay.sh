@@ -150,6 +150,6 @@ run "replay with a bad cell" 2 "$H" replay "$T/geo.rec" --cell 1.55 &&
 # a {4,8} level no walk completes is refused before the replay
 sed 's/^L tiling 4 6$/L tiling 4 8/; s/^L flag Wrf$/L flag Nf/; /^L room/d' "$T/geo.rec" >"$T/geo8.rec"
 run "replay {4,8} out of reach" 2 "$H" replay "$T/geo8.rec" &&
-    one_line "out of reach" "level 'g' cannot start: no walk inside its room reaches an objective"
+    one_line "out of reach" "level 'g' cannot start: line 5: no walk inside its room reaches an objective"
 
 finish cli_replay

@@ -169,7 +169,11 @@ int cli_cmd_game(int argc, char **argv)
     /* a bad level is reported before any input is read */
     if ((err = hol_app_start_level(g.app, &L.lvl))) {
         hol_app_destroy(g.app);
-        cli_error(cmd, 0, "%.200s: %s", path, start_error(err));
+        long at = err == HOL_EBUDGET || err == HOL_EUNREACH ? hol_level_objective_line(&L) : 0;
+        if (at > 0) /* the objective's line (the level's other lines are good) */
+            cli_error(cmd, 0, "%.200s: line %ld: %s", path, at, start_error(err));
+        else
+            cli_error(cmd, 0, "%.200s: %s", path, start_error(err));
         return start_status(err);
     }
     int status = cli_for_each_line(cmd, play_line, &g);
