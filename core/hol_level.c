@@ -24,6 +24,9 @@ typedef struct hol__lp {
     long flag_line, keys_line, chest_line, place_line[HOL_APP_MAX_PLACES];
     long tiling_line, room_line;
     int geo_only; /* the first pass: only the geometry lines */
+    long key_line[24]; /* where each key of hol__keys was given (0: not yet) */
+    int repeated;      /* a key given twice: reported in either pass */
+    hol_level_err *loud;
     hol_level_err *err;
 } hol__lp;
 
@@ -161,13 +164,32 @@ static int hol__q(const hol__lp *p)
     return p->L.tiling_q ? p->L.tiling_q : HOL_TILING_DEFAULT_Q;
 }
 
+/* An address of the level's tiling at s into *t: 0, or the failure
+ * reported for what ("'ADDR'", "key 'ADDR'"). A tile must lie inside the
+ * reach of tile words with its neighbours (its distance below
+ * hol_tile_reach: 59 letters in {4,6} and {4,7} was exit 1 at start). */
+static hol_err hol__addr(hol__lp *p, const char *s, const char *what, hol_tile *t)
+{
+    int q = hol__q(p), reach = hol_tile_reach(q);
+    if (hol_tile_parse_q(q, s, -1, t))
+        return hol__lfail(p, HOL_EPARSE, p->line, "%s'%.30s' is not a canonical address of {4,%d}",
+                          what, s, q);
+    if (hol_tile_dist(hol_tile_origin_q(q), *t) >= reach)
+        return hol__lfail(p, HOL_ERANGE, p->line,
+                          "%s'%.30s...' lies %d steps from O; a level's tile lies at most %d "
+                          "in {4,%d}", what, s, hol_tile_dist(hol_tile_origin_q(q), *t),
+                          reach - 1, q);
+    return HOL_OK;
+}
+
 /* flag ADDRESS, chest ADDRESS */
 static hol_err hol__key_tile(hol__lp *p, char **f, int nf)
 {
     hol_tile t;
     (void)nf;
-    if (hol_tile_parse_q(hol__q(p), f[1], -1, &t))
-        return hol__lfail(p, HOL_EPARSE, p->line, "'%.30s' is not a canonical address", f[1]);
+    hol_err e = hol__addr(p, f[1], "", &t);
+    if (e)
+        return e;
     if (f[0][0] == 'f') {
         p->L.flag = t;
         p->flag_line = p->line;
@@ -181,9 +203,8 @@ static hol_err hol__key_tile(hol__lp *p, char **f, int nf)
 static hol_err hol__key_keys(hol__lp *p, char **f, int nf)
 {
     for (int i = 1; i < nf; i++)
-        if (hol_tile_parse_q(hol__q(p), f[i], -1, &p->L.keys[i - 1]))
-            return hol__lfail(p, HOL_EPARSE, p->line, "key '%.30s' is not a canonical address",
-                             f[i]);
+        if (hol__addr(p, f[i], "key ", &p->L.keys[i - 1]))
+            return hol__addr(p, f[i], "key ", &p->L.keys[i - 1]);
     p->L.nkeys = nf - 1;
     p->keys_line = p->line;
     return HOL_OK;
@@ -255,8 +276,9 @@ static hol_err hol__key_place(hol__lp *p, char **f, int nf)
                          "place '%.20s' is not clearing, grass, flowers, rock, mushroom or pond",
                          f[1]);
     hol_tile t;
-    if (hol_tile_parse_q(hol__q(p), f[2], -1, &t))
-        return hol__lfail(p, HOL_EPARSE, p->line, "'%.30s' is not a canonical address", f[2]);
+    hol_err e = hol__addr(p, f[2], "", &t);
+    if (e)
+        return e;
     hol_app_level *L = &p->L;
     for (int k = 0; k < L->nplaces; k++)
         if (hol_tile_eq(L->places[k].tile, t))
@@ -364,6 +386,7 @@ static const struct {
     {"room", 3, 3, hol__key_room},
     {"cell", 2, 2, hol__key_cell},
 };
+_Static_assert(sizeof hol__keys / sizeof hol__keys[0] <= 24, "hol__lp.key_line holds every key");
 
 /* The geometry keys, read in a first pass (addresses need the tiling). */
 static int hol__geo_key(const char *key)
@@ -420,8 +443,23 @@ static hol_err hol__line(hol__lp *p, const char *s, size_t n)
         return HOL_OK;
     for (size_t k = 0; k < sizeof hol__keys / sizeof hol__keys[0]; k++)
         if (!strcmp(f[0], hol__keys[k].key) && nf >= hol__keys[k].min &&
-            nf <= hol__keys[k].max)
+            nf <= hol__keys[k].max) {
+            /* a key given twice is refused, naming both lines (no silent
+             * last-wins; `place` is the one key a level repeats) */
+            if (p->key_line[k] && strcmp(f[0], "place")) {
+                hol_level_err *quiet = p->err;
+                p->err = p->loud;
+                p->repeated = 1;
+                hol__lfail(p, HOL_EARG, p->line, "'%s' is given twice; give each key once",
+                           f[0]);
+                if (p->err)
+                    p->err->other = p->key_line[k];
+                p->err = quiet;
+                return HOL_EARG;
+            }
+            p->key_line[k] = p->line;
             return hol__keys[k].fn(p, f, nf);
+        }
     return hol__lfail(p, HOL_EPARSE, p->line, "unknown key or wrong value count: '%.20s'", f[0]);
 }
 
@@ -641,12 +679,22 @@ static hol_err hol__finish(hol__lp *p)
 
 /* ---- the API ------------------------------------------------------------------ */
 
+/* A UTF-8 byte order mark at the start of a text (some editors write
+ * one) is skipped: the text begins after it. */
+static void hol__skip_bom(const char **text, size_t *len)
+{
+    if (*len >= 3 && !memcmp(*text, "\xef\xbb\xbf", 3))
+        *text += 3, *len -= 3;
+}
+
 hol_err hol_level_parse(const char *text, size_t len, hol_app_level *out, hol_level_err *err)
 {
+    hol__skip_bom(&text, &len);
     static const hol__lp zero;
     hol__lp p = zero;
     p.L.cues = HOL_CUE_ALL;
     p.err = err;
+    p.loud = err;
     /* the bound is on the text as a session keeps it (hol_level_make adds
      * a last line end), so what parses is kept whole and parses again */
     size_t kept = len + (len && text[len - 1] != '\n');
@@ -660,6 +708,7 @@ hol_err hol_level_parse(const char *text, size_t len, hol_app_level *out, hol_le
         p.geo_only = !pass;
         p.err = pass ? err : NULL;
         p.line = 0;
+        memset(p.key_line, 0, sizeof p.key_line);
         const char *s = text, *end = text + len;
         while (s < end) {
             const char *nl = memchr(s, '\n', (size_t)(end - s));
@@ -667,6 +716,10 @@ hol_err hol_level_parse(const char *text, size_t len, hol_app_level *out, hol_le
             p.line++;
             hol_err e = hol__line(&p, s, (size_t)(le - s));
             if (e && pass)
+                return e;
+            /* a repeated geometry line is refused before any address is
+             * read in a tiling that a later line changes */
+            if (e && p.repeated)
                 return e;
             s = nl ? nl + 1 : end;
         }
@@ -701,6 +754,31 @@ hol_err hol_level_line_check(const char *s, size_t n, hol_level_err *err)
     return first;
 }
 
+long hol_level_objective_line(const hol_level *lv)
+{
+    static const char *const keys[] = {"flag", "flag-distance", "keys", "keys-distance",
+                                       "chest", "chest-distance"};
+    int mode = lv->lvl.mode, from = mode == HOL_APP_FLAG ? 0 : 2, to = mode == HOL_APP_FLAG ? 2 : 6;
+    if (mode != HOL_APP_FLAG && mode != HOL_APP_KEYS)
+        return 0;
+    long line = 0;
+    for (const char *s = lv->text, *end = lv->text + lv->len; s < end;) {
+        const char *nl = memchr(s, '\n', (size_t)(end - s));
+        const char *le = nl ? nl : end;
+        line++;
+        while (s < le && (*s == ' ' || *s == '\t'))
+            s++;
+        size_t n = 0;
+        while (s + n < le && s[n] != ' ' && s[n] != '\t' && s[n] != '#')
+            n++;
+        for (int k = from; k < to; k++)
+            if (strlen(keys[k]) == n && !memcmp(s, keys[k], n))
+                return line > lv->added ? line - lv->added : 0;
+        s = nl ? nl + 1 : end;
+    }
+    return 0;
+}
+
 char *hol_level_err_format(const hol_level_err *err, long first, char *out, size_t cap)
 {
     int n = err->line > 0 ? snprintf(out, cap, "line %ld: %s", first + err->line - 1, err->msg)
@@ -730,6 +808,7 @@ hol_err hol_level_make(const char *name, size_t name_len, const char *text, size
                              ? "a level name longer than 63 bytes"
                              : "a level name with a NUL, CR or LF byte, which a recording "
                                "cannot carry");
+    hol__skip_bom(&text, &len); /* not kept: the text may gain lines before it */
     hol_err e = hol_level_parse(text, len, &out->lvl, err);
     if (e)
         return e;
@@ -752,6 +831,7 @@ hol_err hol_level_make(const char *name, size_t name_len, const char *text, size
     out->name[name_len] = 0;
     out->condition[0] = 0;
     out->position = 0;
+    out->added = 0;
     hol_sha256(out->text, out->len, out->sha256);
     return HOL_OK;
 }
@@ -852,6 +932,9 @@ hol_err hol_level_set_geometry(hol_level *lv, int q, int cols, int rows, double 
         return e;
     memcpy(nl.condition, lv->condition, sizeof nl.condition);
     nl.position = lv->position;
+    for (size_t i = 0; i < n; i++)
+        nl.added += add[i] == '\n';
+    nl.added += lv->added;
     *lv = nl;
     return HOL_OK;
 }

@@ -64,6 +64,7 @@ typedef struct hol_level {
      * a study (hol_level_make clears them) */
     char condition[HOL_LEVEL_NAME_MAX];
     int position;
+    int added; /* lines hol_level_set_geometry put before the file's first */
 } hol_level;
 
 hol_err hol_level_parse(const char *text, size_t len, hol_app_level *out,
@@ -75,6 +76,14 @@ hol_err hol_level_parse(const char *text, size_t len, hol_app_level *out,
  * address may be of any tiling {4,4}..{4,8} (the level's tiling line may
  * be another line). Errors as hol_level_parse's, with line 1. */
 hol_err hol_level_line_check(const char *s, size_t n, hol_level_err *err);
+
+/* The line of the level's file (lv->text less the lines the geometry
+ * options added) that gives its first objective: `flag` or
+ * `flag-distance` in mode flag, `keys`, `keys-distance`, `chest` or
+ * `chest-distance` in mode keys; 0 when there is none. A level that cannot
+ * start (no walk inside its room reaches an objective, or its optimum
+ * cannot be proved exact) is refused naming it. */
+long hol_level_objective_line(const hol_level *lv);
 
 /* Writes "line N: MESSAGE..." (N counted from first for line 1; just the
  * message when err->line is 0) into out; returns out. */

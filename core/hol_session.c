@@ -45,9 +45,13 @@ static hol_err hol__check_desc(const hol_session_desc *d, char *msg, size_t cap)
 static hol_err hol__start_level(hol_session *s)
 {
     hol_err e = hol_app_start_level(s->app, &s->levels[s->cur].lvl);
+    long at = e == HOL_EBUDGET || e == HOL_EUNREACH ? hol_level_objective_line(&s->levels[s->cur]) : 0;
+    char line[32] = "";
+    if (at > 0)
+        snprintf(line, sizeof line, "line %ld: ", at);
     if (e)
-        snprintf(s->msg, sizeof s->msg, "level '%.60s' cannot start: %s",
-                 s->levels[s->cur].name,
+        snprintf(s->msg, sizeof s->msg, "level '%.60s' cannot start: %s%s",
+                 s->levels[s->cur].name, line,
                  e == HOL_EBUDGET     ? "its optimum cannot be proved exact"
                  : e == HOL_EUNREACH ? "no walk inside its room reaches an objective"
                  : e == HOL_EARG     ? "an objective on the start tile, or a start walk leaving "

@@ -107,6 +107,9 @@ static hol_err hol__add_level(hol__sp *p, const char *w, size_t n)
     return HOL_OK;
 }
 
+static size_t hol__key(const char *b, const char *e, const char **out);
+static int hol__same_key(const hol_study *s, int a, int b);
+
 /* set KEY VALUE...: checked as a level line. */
 static hol_err hol__add_set(hol__sp *p, const char *rest, const char *end)
 {
@@ -127,6 +130,18 @@ static hol_err hol__add_set(hol__sp *p, const char *rest, const char *end)
     sp->off = (uint16_t)(rest - s->text);
     sp->len = (uint16_t)(end - rest);
     sp->line = p->line;
+    /* a key set twice in one place (the study's, or a condition's) is
+     * refused naming both lines, as a level's repeated key is */
+    int first = p->cur >= 0 ? s->conditions[p->cur].first_set : 0;
+    const char *key;
+    size_t kn = hol__key(rest, end, &key);
+    for (int i = first; i < s->nsets - 1; i++)
+        if (hol__same_key(s, i, s->nsets - 1) && !(kn == 5 && !memcmp(key, "place", 5))) {
+            s->nsets--;
+            return hol__fail(p->err, HOL_EARG, p->line, s->sets[i].line,
+                             "set %.*s is given twice in %s", (int)(kn < 20 ? kn : 20), key,
+                             p->cur >= 0 ? "this condition" : "the study");
+        }
     if (p->cur >= 0)
         s->conditions[p->cur].nsets++;
     else
@@ -272,6 +287,8 @@ hol_err hol_study_parse(const char *text, size_t len, hol_study *out, hol_level_
     hol__sp p = {out, err, 0, 0, 0, -1};
     const char *s = out->text, *end = out->text + len;
     hol_err e = HOL_OK;
+    if (len >= 3 && !memcmp(s, "\xef\xbb\xbf", 3))
+        s += 3; /* a UTF-8 byte order mark, as some editors write */
     while (!e && s < end) {
         const char *nl = memchr(s, '\n', (size_t)(end - s));
         const char *le = nl ? nl : end;
@@ -397,6 +414,10 @@ uint64_t hol_study_participant_number(const char *id)
     size_t n = strlen(id), b = n;
     while (b > 0 && id[b - 1] >= '0' && id[b - 1] <= '9')
         b--;
+    /* an id of digits, or one that begins with a letter: "-1", "1e3" and
+     * "0x10" are not participants 1, 3 and 10 */
+    if (b > 0 && !((id[0] >= 'A' && id[0] <= 'Z') || (id[0] >= 'a' && id[0] <= 'z')))
+        return 0;
     uint64_t v = 0;
     for (size_t i = b; i < n; i++) {
         v = v * 10 + (uint64_t)(id[i] - '0');

@@ -137,7 +137,9 @@ int hol_study_session(const hol_study *s, const int *order, int *out, int *out_c
 void hol_study_level_path(const hol_study *s, int i, char path[HOL_STUDY_PATH_MAX]);
 
 /* The participant's number in an id: its trailing decimal digits ("P07":
- * 7, "12": 12), or 0 when it has none or they are 0 or above 10^9. */
+ * 7, "12": 12, "s2-p031": 31), or 0 when it has none, they are 0 or above
+ * 10^9, or the id is not all digits and does not begin with a letter
+ * ("-1", "1e3", "0x10": 0, refused, not 1, 3 and 10). */
 uint64_t hol_study_participant_number(const char *id);
 
 /* Level i of the study made for a session (hol_level_make): from the level

@@ -168,7 +168,7 @@ for c in "world --seed 1 --seed 2" "world --save=a.img --save b.img" "world save
          "nav --budget 9 --budget=10" "tour --stats --stats - O" "render --size 8x8 --size 9x9 --stats" \
          "play --seed 1 --seed 2 --input rep.fifo" "replay rep.fifo --log . --log ." \
          "hid watch --frames 1 --frames 2" "xr --frames 1 --frames 2 --input rep.fifo" \
-         "game rep.fifo --x --x"; do
+         "game rep.fifo --tiling 4,5 --tiling=4,6"; do
   opt=$(echo "$c" | awk '{for (i = 2; i <= NF; i++) if ($i ~ /^--/) { sub(/=.*/, "", $i); print $i; exit }}')
   run "repeated: $c" 2 timeout 10 "$H" $c </dev/null
   one_line "repeated: $c" "$opt is given twice; give each option once"

@@ -94,7 +94,7 @@ check_lines
 expect_status "help" 0 "$H" nav --help
 grep -q "PREFIX TARGET" "$T/out" && ok || bad "nav --help text"
 expect_status "unknown option" 2 "$H" nav --fast
-err_line "unknown argument"
+err_line "unknown option"
 expect_status "budget 0" 2 "$H" nav --budget 0
 err_line "budget"
 expect_status "budget missing" 2 "$H" nav --budget

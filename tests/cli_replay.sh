@@ -144,12 +144,12 @@ run "replay with the same options" 0 "$H" replay "$T/geo.rec" --log "$T/geo2" --
     --room 4x4 --cell 0.75
 diff -r "$T/geo1" "$T/geo2" >/dev/null && ok || bad "the same options changed the replay"
 run "replay with another tiling" 2 "$H" replay "$T/geo.rec" --tiling 4,7 &&
-    one_line "conflict" "level 'g': its own line 'tiling 4 6' differs from the {4,7} asked for"
+    one_line "conflict" "level 'g' was recorded in {4,6}; --tiling 4,7 would replay it in another geometry"
 run "replay with a bad cell" 2 "$H" replay "$T/geo.rec" --cell 1.55 &&
     one_line "bad cell" "--cell needs metres from 0.5 to 1.5"
 # a {4,8} level no walk completes is refused before the replay
 sed 's/^L tiling 4 6$/L tiling 4 8/; s/^L flag Wrf$/L flag Nf/; /^L room/d' "$T/geo.rec" >"$T/geo8.rec"
 run "replay {4,8} out of reach" 2 "$H" replay "$T/geo8.rec" &&
-    one_line "out of reach" "level 'g' cannot start: no walk inside its room reaches an objective"
+    one_line "out of reach" "level 'g' cannot start: line 5: no walk inside its room reaches an objective"
 
 finish cli_replay

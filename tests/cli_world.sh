@@ -124,7 +124,7 @@ one_line "leaves the room" "step 2"
 run "bad step" 2 "$H" world --walk NX
 one_line "bad step" "character 2"
 run "unknown option" 2 "$H" world --colour
-one_line "unknown option" "unknown argument"
+one_line "unknown option" "unknown option"
 run "seed and load" 2 "$H" world --seed 1 --load "$T/w.hw"
 one_line "seed and load" "exclude"
 run "missing value" 2 "$H" world --walk

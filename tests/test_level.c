@@ -248,7 +248,7 @@ static void test_geometry_lines(void **state)
     assert_int_equal(L.room_rows, 5);
     assert_true(L.cell_m == 0.75);
     assert_int_equal(parse("mode flag\nflag Nrr\n", &L, err), 1);
-    assert_string_equal(err, "line 2: 'Nrr' is not a canonical address");
+    assert_string_equal(err, "line 2: 'Nrr' is not a canonical address of {4,5}");
     /* bad values: one line naming the line */
     static const struct { const char *text, *msg; hol_err code; } bad[] = {
         {"mode explore\ntiling 4 9\n", "line 2: tiling needs 4 Q with Q from 4 to 8 (the tiling {4,Q}), not '4 9'", HOL_ERANGE},
@@ -312,6 +312,58 @@ static void test_geometry_lines(void **state)
 
 /* Options applied to a level: the lines added (the text a recording
  * keeps), or a conflict refused. */
+/* Issue 24 findings 9 and 10: a key given twice is refused naming both
+ * lines (it was silently last-wins, and two tiling lines read addresses in
+ * the last one: "tiling 4 8 / flag Nrr / tiling 4 5" failed with a wrong
+ * reason); a tile beyond the reach less one is refused naming its line (59
+ * letters in {4,6} and {4,7} parsed, then failed at start with exit 1). */
+static void test_repeats_and_reach(void **state)
+{
+    (void)state;
+    char err[256];
+    hol_app_level L;
+    static const struct { const char *text, *msg; } bad[] = {
+        {"tiling 4 8\nmode flag\nflag Nrr\ntiling 4 5\n",
+         "line 4: 'tiling' is given twice; give each key once (line 1)"},
+        {"mode flag\nflag Nf\nflag Nr\n", "line 3: 'flag' is given twice; give each key once (line 2)"},
+        {"mode flag\nroom 3 3\nflag Nf\n# c\nroom 4 4\n",
+         "line 5: 'room' is given twice; give each key once (line 2)"},
+        {"cell 1\nmode flag\nflag Nf\ncell 1\n", "line 4: 'cell' is given twice; give each key once (line 1)"},
+        {"mode flag\nmode keys\n", "line 2: 'mode' is given twice; give each key once (line 1)"},
+        {"mode flag\nseed 1\nflag-distance 2\nseed 2\n", "line 4: 'seed' is given twice; give each key once (line 2)"},
+        {"mode flag\nflag-distance 2\nflag-distance 3\n",
+         "line 3: 'flag-distance' is given twice; give each key once (line 2)"},
+    };
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        assert_int_equal(parse(bad[i].text, &L, err), 1);
+        assert_string_equal(err, bad[i].msg);
+    }
+    /* a UTF-8 byte order mark before the first line is skipped, and a
+     * named level's text does not keep it */
+    assert_int_equal(parse("\xef\xbb\xbfmode flag\nflag Nf\n", &L, err), 0);
+    static hol_level lv;
+    hol_level_err le;
+    const char *bom = "\xef\xbb\xbfmode flag\nflag Nf\n";
+    assert_int_equal(hol_level_make("b", 1, bom, strlen(bom), &lv, &le), HOL_OK);
+    assert_string_equal(lv.text, "mode flag\nflag Nf\n");
+    /* place repeats (on different tiles) */
+    assert_int_equal(parse("mode flag\nflag Nf\nplace rock Sf\nplace pond Ef\n", &L, err), 0);
+    /* the reach: 58 letters is a level's tile in every tiling, 59 only
+     * in {4,5} (its reach is 60) */
+    char text[256], addr[64];
+    for (int q = 5; q <= 7; q++)
+        for (int n = 58; n <= 59; n++) {
+            addr[0] = 'N';
+            memset(addr + 1, 'f', (size_t)n - 1);
+            addr[n] = 0;
+            snprintf(text, sizeof text, "mode flag\ntiling 4 %d\nflag %s\n", q, addr);
+            int want_bad = n >= hol_tile_reach(q);
+            assert_int_equal(parse(text, &L, err), want_bad);
+            if (want_bad)
+                assert_non_null(strstr(err, "line 3: 'Nfff"));
+        }
+}
+
 static void test_set_geometry(void **state)
 {
     (void)state;
@@ -460,6 +512,7 @@ int main(void)
         cmocka_unit_test(test_campaign_geometries),
         cmocka_unit_test(test_geometry_lines),
         cmocka_unit_test(test_set_geometry),
+        cmocka_unit_test(test_repeats_and_reach),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

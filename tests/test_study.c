@@ -158,6 +158,12 @@ static void test_participants(void **state)
     assert_int_equal(hol_study_participant_number("s2-p031"), 31);
     assert_int_equal(hol_study_participant_number("P"), 0);
     assert_int_equal(hol_study_participant_number("P0"), 0);
+    /* issue 24 finding 16: a sign, an exponent or hex are not numbers */
+    assert_int_equal(hol_study_participant_number("-1"), 0);
+    assert_int_equal(hol_study_participant_number("1e3"), 0);
+    assert_int_equal(hol_study_participant_number("0x10"), 0);
+    assert_int_equal(hol_study_participant_number("_7"), 0);
+    assert_int_equal(hol_study_participant_number("007"), 7);
     assert_int_equal(hol_study_participant_number("P1000000000"), 1000000000);
     assert_int_equal(hol_study_participant_number("P1000000001"), 0);
     assert_int_equal(hol_study_participant_number("P99999999999999999999999"), 0);
@@ -301,11 +307,27 @@ static void test_refusals(void **state)
         n += snprintf(text + n, sizeof text - (size_t)n, "condition c%d\nset mode explore\n", k);
     assert_int_equal(parse(text, msg), 1);
     assert_string_equal(msg, "line 33: more than 16 levels in all");
-    n = snprintf(text, sizeof text, "study s\ncondition a\n");
-    for (int k = 0; k < 65; k++)
-        n += snprintf(text + n, sizeof text - (size_t)n, "set seed %d\n", k);
+    /* 65 set lines: five keys in each of 13 conditions (a key set twice
+     * in one condition is refused by itself) */
+    static const char *const sets5[5] = {"seed 1", "cues none", "minimap hud", "time-limit 5",
+                                         "start N"};
+    n = snprintf(text, sizeof text, "study s\n");
+    for (int k = 0; k < 65; k++) {
+        if (k % 5 == 0)
+            n += snprintf(text + n, sizeof text - (size_t)n, "condition c%d\n", k / 5);
+        n += snprintf(text + n, sizeof text - (size_t)n, "set %s\n", sets5[k % 5]);
+    }
     assert_int_equal(parse(text, msg), 1);
-    assert_string_equal(msg, "line 67: more than 64 set lines");
+    assert_string_equal(msg, "line 79: more than 64 set lines");
+    /* issue 24 finding 9: a key set twice in one place, naming both lines;
+     * a condition's set line over the study's is no repeat */
+    assert_int_equal(parse("study s\nset seed 1\nset seed 2\ncondition a\nset mode explore\n", msg), 1);
+    assert_string_equal(msg, "line 3: set seed is given twice in the study (line 2)");
+    assert_int_equal(parse("study s\ncondition a\nset mode flag\nset flag Nf\nset mode keys\n", msg), 1);
+    assert_string_equal(msg, "line 5: set mode is given twice in this condition (line 3)");
+    assert_int_equal(parse("study s\nset seed 1\ncondition a\nset mode explore\nset seed 2\n", msg), 0);
+    /* a UTF-8 byte order mark before the first line is not part of it */
+    assert_int_equal(parse("\xef\xbb\xbfstudy s\ncondition a\nset mode explore\n", msg), 0);
     /* 16 conditions, one level each, fit */
     n = snprintf(text, sizeof text, "study s\n");
     for (int k = 0; k < 16; k++)

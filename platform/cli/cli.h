@@ -36,21 +36,19 @@ int cli_for_each_line(const char *cmd, cli_line_fn fn, void *ctx);
 /* A positive decimal count (no sign, at most 2^40); 0 on failure. */
 size_t cli_parse_count(const char *s);
 
-/* If argv[*i] is "--budget N" or "--budget=N": parse N into *out_budget
- * (advancing *i past N) and return 1, or report a count outside
- * 1..CLI_BUDGET_MAX (the navigator's arena, HOL_NAV_DEFAULT_NODES) for cmd
- * and return -1. Any other argument: 0. */
+/* The value of --budget: a node count 1..CLI_BUDGET_MAX (the navigator's
+ * arena, HOL_NAV_DEFAULT_NODES) into *out_budget: 0, or -1 after reporting
+ * it for cmd. */
 #define CLI_BUDGET_MAX 262144
-int cli_budget_option(const char *cmd, int argc, char **argv, int *i,
-                      size_t *out_budget);
+int cli_budget_value(const char *cmd, const char *v, size_t *out_budget);
 
-/* The geometry options (SPEC 7): "--tiling 4,Q" (or --tiling=4,Q) into *q
- * and, when cols is not NULL, "--room CxR" into *cols and *rows (a command
- * without a room passes NULL: --room is then not its option). Returns 1
- * (taken, *i advanced past the value), 0 (another argument) or -1 (a bad
- * value, reported for cmd as one line). */
-int cli_geometry_option(const char *cmd, int argc, char **argv, int *i, int *q, int *cols,
-                        int *rows);
+/* The geometry options (SPEC 7): opt "--tiling" with the value "4,Q" into
+ * *q and, when cols is not NULL, "--room" with "CxR" into *cols and *rows
+ * (a command without a room passes NULL: --room is then not its option).
+ * Returns 1 (taken), 0 (another option) or -1 (a bad value, reported for
+ * cmd as one line). */
+int cli_geometry_value(const char *cmd, const char *opt, const char *v, int *q, int *cols,
+                       int *rows);
 
 /* An unsigned 64-bit number, decimal or 0x hex (a leading 0 is not octal;
  * no sign): seeds of every command, and other numbers. 1 ok, 0 bad. Every
@@ -114,16 +112,23 @@ int cli_require_folder(const char *cmd, const char *opt, const char *path);
  * work. */
 int cli_check_output(const char *cmd, const char *opt, const char *path);
 
-/* Options of a command: valued (each takes the next argument) and flags,
- * both NULL-terminated lists, at most 64 in all. cli_opts_next gives 1
- * with *opt one of them (and *val its value, NULL for a flag) or *opt NULL
- * and *val an operand; 0 at the end; -1 after reporting a usage error: an
- * unknown option, a missing value, or an option given twice. */
+/* The option grammar of every command (docs/cli.md): options are valued
+ * (each takes a value) or flags, both NULL-terminated lists, at most 64 in
+ * all. A valued option takes its value as "--opt VALUE" (the next
+ * argument, whatever it looks like: "--seed -h" is a seed) or
+ * "--opt=VALUE"; a flag takes none ("--stats=1" is refused). "--" ends the
+ * options: every argument after it is an operand. An argument "-" or one
+ * that does not start with '-' is an operand. cli_opts_next gives 1 with
+ * *opt one of the listed names (and *val its value, NULL for a flag) or
+ * *opt NULL and *val an operand; 0 at the end; -1 after reporting a usage
+ * error as one line: an unknown option, a missing value, a value given to
+ * a flag, or an option given twice (both spellings count) unless it is in
+ * repeatable (NULL: none; render --target). */
 typedef struct cli_opts {
     const char *cmd;
-    int argc, i;
+    int argc, i, ended;
     char **argv;
-    const char *const *valued, *const *flags;
+    const char *const *valued, *const *flags, *const *repeatable;
     uint64_t seen;
 } cli_opts;
 
@@ -142,19 +147,36 @@ int cli_parse_size(const char *cmd, const char *val, int *w, int *h);
 void cli_catch_signals(void);
 int cli_caught_signal(void);
 
+/* No output may name a file (or folder) that the same command reads:
+ * each output path of out[0..nout-1] that exists is compared with each
+ * input of in[0..nin-1] (both resolved: stat follows symbolic links, and
+ * device and inode are compared, so a link or a hard link to an input is
+ * the input). 0, or report "OPT 'PATH' is INOPT 'PATH', which this
+ * command reads" and return CLI_EXIT_USAGE, before anything is written.
+ * NULL paths are skipped. Every command with file inputs and outputs
+ * calls it (play, xr, replay, world, report). */
+typedef struct cli_path {
+    const char *opt; /* "--record", "LEVEL" */
+    const char *path;
+} cli_path;
+int cli_check_distinct(const char *cmd, const cli_path *in, int nin, const cli_path *out,
+                       int nout);
+
 /* Flush stdout; on failure report it and return CLI_EXIT_FAIL. */
 int cli_finish_output(const char *cmd);
 
-/* A repeated option is a usage error, in every command (main runs this
- * before the command): 0, or report "--save is given twice; give each
+/* A repeated option is a usage error, in every command (cli_opts_next
+ * refuses it; this check of a whole argv is the fuzzer's model of it): 0, or report "--save is given twice; give each
  * option once" and return CLI_EXIT_USAGE. Every argument of argv[1..]
- * that starts with "--" counts, by its name before any '=' ("--save a"
+ * before a "--" that starts with "--" counts, by its name before any '=' ("--save a"
  * and "--save=b" are the same option), except the options a command
  * documents as repeatable (render --target). */
 int cli_no_repeats(const char *cmd, int argc, char **argv);
 
-/* True when argv has -h or --help anywhere. */
-int cli_wants_help(int argc, char **argv);
+/* True when argv[1..] asks for help: -h or --help as an option, before
+ * any "--" and not as the value of one of the valued options (the
+ * command's list, as for cli_opts_init: "--seed -h" is not help). */
+int cli_wants_help(int argc, char **argv, const char *const *valued);
 
 /* Subcommands */
 int cli_cmd_tile(int argc, char **argv);

@@ -15,6 +15,8 @@
 #include <string.h>
 #include <sys/stat.h>
 
+static int cli__in_list(const char *const *list, const char *a, size_t n);
+
 const char *cli_escape(const char *s, char *buf, size_t cap)
 {
     hol_text_escape(s, strlen(s), buf, cap);
@@ -132,6 +134,26 @@ int cli_check_output(const char *cmd, const char *opt, const char *path)
     return CLI_EXIT_USAGE;
 }
 
+int cli_check_distinct(const char *cmd, const cli_path *in, int nin, const cli_path *out,
+                       int nout)
+{
+    for (int o = 0; o < nout; o++) {
+        struct stat so, si;
+        /* an output that does not exist yet is no input (each input exists) */
+        if (!out[o].path || stat(out[o].path, &so))
+            continue;
+        for (int i = 0; i < nin; i++)
+            if (in[i].path && !stat(in[i].path, &si) && si.st_dev == so.st_dev &&
+                si.st_ino == so.st_ino) {
+                cli_error(cmd, 0, "%s '%.200s' is %s '%.200s', which this command reads; give "
+                                  "the output another name",
+                          out[o].opt, out[o].path, in[i].opt, in[i].path);
+                return CLI_EXIT_USAGE;
+            }
+    }
+    return 0;
+}
+
 int cli_finish_output(const char *cmd)
 {
     if (fflush(stdout) != 0 || ferror(stdout)) {
@@ -154,9 +176,9 @@ static int cli__repeatable(const char *cmd, const char *opt, size_t n)
 
 int cli_no_repeats(const char *cmd, int argc, char **argv)
 {
-    for (int i = 1; i < argc; i++) {
+    for (int i = 1; i < argc && strcmp(argv[i], "--"); i++) {
         const char *a = argv[i];
-        if (strncmp(a, "--", 2) || !a[2])
+        if (strncmp(a, "--", 2))
             continue;
         size_t n = strcspn(a, "=");
         if (cli__repeatable(cmd, a, n))
@@ -170,11 +192,15 @@ int cli_no_repeats(const char *cmd, int argc, char **argv)
     return 0;
 }
 
-int cli_wants_help(int argc, char **argv)
+int cli_wants_help(int argc, char **argv, const char *const *valued)
 {
-    for (int i = 1; i < argc; i++)
+    for (int i = 1; i < argc && strcmp(argv[i], "--"); i++) {
         if (!strcmp(argv[i], "-h") || !strcmp(argv[i], "--help"))
             return 1;
+        /* the value of an option is never an option: "--seed -h" */
+        if (cli__in_list(valued, argv[i], strlen(argv[i])))
+            i++;
+    }
     return 0;
 }
 
@@ -233,21 +259,13 @@ size_t cli_parse_count(const char *s)
     return (size_t)v;
 }
 
-int cli_budget_option(const char *cmd, int argc, char **argv, int *i,
-                      size_t *out_budget)
+int cli_budget_value(const char *cmd, const char *v, size_t *out_budget)
 {
-    const char *a = argv[*i], *v;
-    if (!strcmp(a, "--budget"))
-        v = *i + 1 < argc ? argv[++*i] : NULL;
-    else if (!strncmp(a, "--budget=", 9))
-        v = a + 9;
-    else
-        return 0;
     if (!(*out_budget = cli_parse_count(v)) || *out_budget > CLI_BUDGET_MAX) {
         cli_error(cmd, 0, "--budget needs a node count 1..%d; see --help", CLI_BUDGET_MAX);
         return -1;
     }
-    return 1;
+    return 0;
 }
 
 /* The length of the plain decimal number at p ([-+]digits[.digits][e[-+]digits],
@@ -273,42 +291,21 @@ static size_t cli__decimal_len(const char *p)
     return i;
 }
 
-/* The value of option `name` at argv[*i] ("--name V" or "--name=V"), or
- * NULL (not this option; *found 0). A missing value: *found 1, NULL. */
-static const char *cli__value(const char *name, int argc, char **argv, int *i, int *found)
+int cli_geometry_value(const char *cmd, const char *opt, const char *v, int *q, int *cols,
+                       int *rows)
 {
-    const char *a = argv[*i];
-    size_t n = strlen(name);
-    *found = 0;
-    if (strncmp(a, name, n) || (a[n] != '\0' && a[n] != '='))
-        return NULL;
-    *found = 1;
-    if (a[n] == '=')
-        return a + n + 1;
-    return *i + 1 < argc ? argv[++*i] : NULL;
-}
-
-int cli_geometry_option(const char *cmd, int argc, char **argv, int *i, int *q, int *cols,
-                        int *rows)
-{
-    int found;
-    const char *v = cli__value("--tiling", argc, argv, i, &found);
-    if (found) {
-        if (!v || hol_room_parse_tiling(v, strlen(v), q)) {
+    if (!strcmp(opt, "--tiling")) {
+        if (hol_room_parse_tiling(v, strlen(v), q)) {
             cli_error(cmd, 0, "--tiling needs 4,Q with Q from 4 to 8 (the tiling {4,Q}), not '%.40s'",
-                      v ? v : "");
+                      v);
             return -1;
         }
         return 1;
     }
-    if (!cols)
+    if (!cols || strcmp(opt, "--room"))
         return 0;
-    v = cli__value("--room", argc, argv, i, &found);
-    if (!found)
-        return 0;
-    if (!v || hol_room_parse_size(v, strlen(v), cols, rows)) {
-        cli_error(cmd, 0, "--room needs CxR with C and R from 3 to 5 (cells), not '%.40s'",
-                  v ? v : "");
+    if (hol_room_parse_size(v, strlen(v), cols, rows)) {
+        cli_error(cmd, 0, "--room needs CxR with C and R from 3 to 5 (cells), not '%.40s'", v);
         return -1;
     }
     return 1;
@@ -403,47 +400,67 @@ void cli_opts_init(cli_opts *p, const char *cmd, int argc, char **argv,
     p->flags = flags;
 }
 
-/* The option's index in valued then flags, or -1; *takes a value. */
-static int cli__opt_index(const cli_opts *p, const char *a, int *takes)
+static int cli__in_list(const char *const *list, const char *a, size_t n)
+{
+    for (const char *const *v = list; v && *v; v++)
+        if (strlen(*v) == n && !strncmp(a, *v, n))
+            return 1;
+    return 0;
+}
+
+/* The option's index in valued then flags (its first n bytes), or -1;
+ * *takes a value. */
+static int cli__opt_index(const cli_opts *p, const char *a, size_t n, int *takes,
+                          const char **name)
 {
     int k = 0;
-    for (const char *const *v = p->valued; v && *v; v++, k++)
-        if (!strcmp(a, *v)) {
-            *takes = 1;
-            return k;
-        }
-    for (const char *const *f = p->flags; f && *f; f++, k++)
-        if (!strcmp(a, *f)) {
-            *takes = 0;
-            return k;
-        }
+    for (int t = 1; t >= 0; t--)
+        for (const char *const *v = t ? p->valued : p->flags; v && *v; v++, k++)
+            if (strlen(*v) == n && !strncmp(a, *v, n)) {
+                *takes = t;
+                *name = *v;
+                return k;
+            }
     return -1;
 }
 
 int cli_opts_next(cli_opts *p, const char **opt, const char **val)
 {
+    if (!p->ended && p->i < p->argc && !strcmp(p->argv[p->i], "--")) {
+        p->ended = 1; /* the rest are operands, whatever they look like */
+        p->i++;
+    }
     if (p->i >= p->argc)
         return 0;
     const char *a = p->argv[p->i++];
     *opt = NULL;
     *val = a;
-    if (a[0] != '-' || !a[1])
+    if (p->ended || a[0] != '-' || !a[1])
         return 1;
-    int takes = 0, k = cli__opt_index(p, a, &takes);
+    /* "--name=VALUE" is "--name VALUE" */
+    size_t n = a[1] == '-' ? strcspn(a, "=") : strlen(a);
+    const char *name = NULL;
+    int takes = 0, k = cli__opt_index(p, a, n, &takes, &name);
     if (k < 0 || k >= 64) {
         cli_error(p->cmd, 0, "unknown option '%.40s'; see 'holonomy %s --help'", a, p->cmd);
         return -1;
     }
-    if (p->seen >> k & 1) {
-        cli_error(p->cmd, 0, "%s is given twice; see 'holonomy %s --help'", a, p->cmd);
+    if ((p->seen >> k & 1) && !cli__in_list(p->repeatable, a, n)) {
+        cli_error(p->cmd, 0, "%.*s is given twice; give each option once", (int)(n < 40 ? n : 40), a);
         return -1;
     }
     p->seen |= (uint64_t)1 << k;
-    *opt = a;
+    *opt = name;
     *val = NULL;
-    if (takes) {
+    if (!takes && a[n] == '=') {
+        cli_error(p->cmd, 0, "%s takes no value; see 'holonomy %s --help'", *opt, p->cmd);
+        return -1;
+    }
+    if (takes && a[n] == '=') {
+        *val = a + n + 1;
+    } else if (takes) {
         if (p->i >= p->argc) {
-            cli_error(p->cmd, 0, "%s needs a value; see 'holonomy %s --help'", a, p->cmd);
+            cli_error(p->cmd, 0, "%s needs a value; see 'holonomy %s --help'", *opt, p->cmd);
             return -1;
         }
         *val = p->argv[p->i++];

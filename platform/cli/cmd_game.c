@@ -127,12 +127,12 @@ static int play_line(void *vctx, long lineno, char *s, size_t len)
 int cli_cmd_game(int argc, char **argv)
 {
     const char *cmd = "game";
-    if (cli_wants_help(argc, argv)) {
+    static const char *const valued[] = {PLAY_GEOMETRY_OPTIONS, NULL};
+    static const char *const flags[] = {NULL};
+    if (cli_wants_help(argc, argv, valued)) {
         fputs(game_usage, stdout);
         return cli_finish_output(cmd);
     }
-    static const char *const valued[] = {PLAY_GEOMETRY_OPTIONS, NULL};
-    static const char *const flags[] = {NULL};
     cli_opts p;
     cli_opts_init(&p, cmd, argc, argv, valued, flags);
     const char *a, *val, *path = NULL;
@@ -169,7 +169,11 @@ int cli_cmd_game(int argc, char **argv)
     /* a bad level is reported before any input is read */
     if ((err = hol_app_start_level(g.app, &L.lvl))) {
         hol_app_destroy(g.app);
-        cli_error(cmd, 0, "%.200s: %s", path, start_error(err));
+        long at = err == HOL_EBUDGET || err == HOL_EUNREACH ? hol_level_objective_line(&L) : 0;
+        if (at > 0) /* the objective's line (the level's other lines are good) */
+            cli_error(cmd, 0, "%.200s: line %ld: %s", path, at, start_error(err));
+        else
+            cli_error(cmd, 0, "%.200s: %s", path, start_error(err));
         return start_status(err);
     }
     int status = cli_for_each_line(cmd, play_line, &g);

@@ -137,15 +137,21 @@ static void print_field(FILE *f, const hol_hid_field *fd)
 
 static int cmd_parse(int argc, char **argv)
 {
-    const char *cmd = "hid parse";
-    if (argc != 3) {
-        cli_error(cmd, 0, argc < 3 ? "missing FILE; see --help"
-                                   : "takes one FILE; see --help");
+    const char *cmd = "hid parse", *a, *val, *path = NULL;
+    cli_opts p;
+    int r, nops = 0;
+    cli_opts_init(&p, cmd, argc - 1, argv + 1, NULL, NULL);
+    while ((r = cli_opts_next(&p, &a, &val)) > 0)
+        path = nops++ ? path : val;
+    if (r < 0)
+        return CLI_EXIT_USAGE;
+    if (nops != 1) {
+        cli_error(cmd, 0, nops < 1 ? "missing FILE; see --help" : "takes one FILE; see --help");
         return CLI_EXIT_USAGE;
     }
     uint8_t *desc;
     size_t len;
-    int st = load_desc(cmd, argv[2], &desc, &len);
+    int st = load_desc(cmd, path, &desc, &len);
     if (st)
         return st;
     hol_hid_field *map = malloc(MAP_CAP * sizeof *map);
@@ -157,10 +163,10 @@ static int cmd_parse(int argc, char **argv)
     size_t n;
     hol_err err = hol_hid_desc_parse(desc, len, map, MAP_CAP, &n, NULL);
     if (err == HOL_ENOMEM)
-        cli_error(cmd, 0, "'%s': more than %u input elements", argv[2], MAP_CAP);
+        cli_error(cmd, 0, "'%s': more than %u input elements", path, MAP_CAP);
     else if (err)
         cli_error(cmd, 0, "'%s': not a valid HID report descriptor (%zu bytes)",
-                  argv[2], len);
+                  path, len);
     else
         for (size_t i = 0; i < n; i++)
             print_field(stdout, &map[i]);
@@ -209,24 +215,29 @@ static double now_s(void)
     return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
 }
 
+static const char *const hid_valued[] = {"--replay", "--frames", NULL};
+
 static int cmd_watch(int argc, char **argv)
 {
     const char *cmd = "hid watch";
     size_t frames = 0;
-    const char *script_path = NULL;
-    for (int i = 2; i < argc; i++) {
-        if (!strcmp(argv[i], "--replay") && i + 1 < argc) {
-            script_path = argv[++i];
-        } else if (!strcmp(argv[i], "--frames") && i + 1 < argc) {
-            if (!(frames = cli_parse_count(argv[++i]))) {
-                cli_error(cmd, 0, "--frames needs a positive count; see --help");
-                return CLI_EXIT_USAGE;
-            }
-        } else {
-            cli_error(cmd, 0, "unknown argument '%.40s'; see --help", argv[i]);
+    const char *script_path = NULL, *a, *val;
+    cli_opts p;
+    int r;
+    cli_opts_init(&p, cmd, argc - 1, argv + 1, hid_valued, NULL);
+    while ((r = cli_opts_next(&p, &a, &val)) > 0) {
+        if (!a) {
+            cli_error(cmd, 0, "unknown argument '%.40s'; see --help", val);
+            return CLI_EXIT_USAGE;
+        } else if (!strcmp(a, "--replay")) {
+            script_path = val;
+        } else if (!(frames = cli_parse_count(val))) {
+            cli_error(cmd, 0, "--frames needs a positive count; see --help");
             return CLI_EXIT_USAGE;
         }
     }
+    if (r < 0)
+        return CLI_EXIT_USAGE;
     static hol_hid_dev dev;
     static hol_hid_script script;
     if (script_path) {
@@ -277,7 +288,7 @@ static int cmd_watch(int argc, char **argv)
 
 int cli_cmd_hid(int argc, char **argv)
 {
-    if (cli_wants_help(argc, argv)) {
+    if (cli_wants_help(argc, argv, hid_valued)) {
         fputs(hid_usage, stdout);
         return cli_finish_output("hid");
     }

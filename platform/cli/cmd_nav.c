@@ -84,27 +84,30 @@ static int nav_line(void *vctx, long lineno, char *s, size_t len)
 int cli_cmd_nav(int argc, char **argv)
 {
     const char *cmd = "nav";
-    if (cli_wants_help(argc, argv)) {
+    static const char *const valued[] = {"--budget", "--tiling", "--room", NULL};
+    static const char *const flags[] = {"--stats", NULL};
+    if (cli_wants_help(argc, argv, valued)) {
         fputs(nav_usage, stdout);
         return cli_finish_output(cmd);
     }
     size_t budget = 0;
-    int stats = 0, q = 0, cols = 0, rows = 0;
-    for (int i = 1; i < argc; i++) {
-        int b = cli_budget_option(cmd, argc, argv, &i, &budget);
-        if (!b)
-            b = cli_geometry_option(cmd, argc, argv, &i, &q, &cols, &rows);
-        if (b < 0)
-            return CLI_EXIT_USAGE;
-        if (b > 0)
-            continue;
-        if (!strcmp(argv[i], "--stats")) {
-            stats = 1;
-        } else {
-            cli_error(cmd, 0, "unknown argument '%.40s'; see --help", argv[i]);
+    int stats = 0, q = 0, cols = 0, rows = 0, r;
+    cli_opts p;
+    const char *a, *val;
+    cli_opts_init(&p, cmd, argc, argv, valued, flags);
+    while ((r = cli_opts_next(&p, &a, &val)) > 0) {
+        if (!a) {
+            cli_error(cmd, 0, "unknown argument '%.40s'; see --help", val);
             return CLI_EXIT_USAGE;
         }
+        if (!strcmp(a, "--stats"))
+            stats = 1;
+        else if (!strcmp(a, "--budget") ? cli_budget_value(cmd, val, &budget)
+                                         : cli_geometry_value(cmd, a, val, &q, &cols, &rows) < 0)
+            return CLI_EXIT_USAGE;
     }
+    if (r < 0)
+        return CLI_EXIT_USAGE;
     nav_ctx ctx = {NULL, hol_room_start(), budget, stats};
     hol_nav_desc desc = {0};
     desc.tiling_q = q;

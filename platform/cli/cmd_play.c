@@ -176,18 +176,19 @@ static int play_value(const char *cmd, const char *a, const char *val, play_opts
     return 0;
 }
 
+static const char *const play_valued[] = {"--mode",  "--seed",  "--log",  "--record",
+                                          "--frames", "--input", "--size", "--gamepad-replay",
+                                          "--participant", "--snap-turn", "--study",
+                                          PLAY_GEOMETRY_OPTIONS, NULL};
+
 static int play_options(const char *cmd, int argc, char **argv, play_opts *o)
 {
-    static const char *const valued[] = {"--mode",  "--seed",  "--log",  "--record",
-                                         "--frames", "--input", "--size", "--gamepad-replay",
-                                         "--participant", "--snap-turn", "--study",
-                                         PLAY_GEOMETRY_OPTIONS, NULL};
     static const char *const flags[] = {"--no-gamepad", "--append", "--stats", NULL};
     memset(o, 0, sizeof *o);
     o->seed = CLI_SEED_DEFAULT;
     o->w = 960, o->h = 720, o->use_pad = 1;
     cli_opts p;
-    cli_opts_init(&p, cmd, argc, argv, valued, flags);
+    cli_opts_init(&p, cmd, argc, argv, play_valued, flags);
     const char *a, *val;
     int r;
     while ((r = cli_opts_next(&p, &a, &val)) > 0) {
@@ -219,7 +220,10 @@ static int play_options(const char *cmd, int argc, char **argv, play_opts *o)
         cli_error(cmd, 0, "%s", clash);
         return CLI_EXIT_USAGE;
     }
-    return 0;
+    const cli_path in[] = {{"LEVEL", o->level_path}, {"--input", o->input_path},
+                           {"--gamepad-replay", o->pad_script}, {"--study", o->study}};
+    const cli_path out[] = {{"--record", o->rec}, {"--log", o->log_dir}};
+    return cli_check_distinct(cmd, in, 4, out, 2);
 }
 
 /* ---- setup ---------------------------------------------------------------------- */
@@ -277,6 +281,7 @@ static int play_prepare(play_ctx *c)
     st = play_session_open(c->cmd, &c->out, c->levels, c->nlevels, &meta, c->o.append, &c->s);
     if (st)
         return st;
+    play_study_announce();
     hol_render_desc rd;
     memset(&rd, 0, sizeof rd);
     rd.getproc = hol_egl_getproc;
@@ -484,7 +489,7 @@ int cli_cmd_play(int argc, char **argv)
     static play_ctx c;
     memset(&c, 0, sizeof c);
     c.cmd = "play";
-    if (cli_wants_help(argc, argv)) {
+    if (cli_wants_help(argc, argv, play_valued)) {
         fputs(play_usage, stdout);
         return cli_finish_output(c.cmd);
     }

@@ -329,15 +329,7 @@ typedef struct render_opts {
 static const char *const render_value_opts[] = {
     "--walk", "--eye", "--hand", "--orient", "--tan", "--yaw", "--pitch", "--size", "--out",
     "--tile-ids", "--fov", "--frames", "--seed", "--target", "--gl", "--stereo", "--keys",
-    "--cell"};
-
-static int takes_value(const char *a)
-{
-    for (size_t k = 0; k < sizeof render_value_opts / sizeof *render_value_opts; k++)
-        if (!strcmp(a, render_value_opts[k]))
-            return 1;
-    return 0;
-}
+    "--cell", "--tiling", "--room", NULL};
 
 /* --size WxH: 0 ok, 1 bad. */
 static int parse_size(const char *val, long *w, long *h)
@@ -491,26 +483,34 @@ static int parse_opts(const char *cmd, int argc, char **argv, render_opts *o)
     o->flags = HOL_RENDER_NO_HUD;
     o->seed = CLI_SEED_DEFAULT;
     o->cell_m = 1.0;
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        int g = cli_geometry_option(cmd, argc, argv, &i, &o->q, &o->cols, &o->rows);
+    static const char *const flags[] = {"--hud", "--window", "--stats", "--euclidean",
+                                        "--bare", NULL};
+    static const char *const repeatable[] = {"--target", NULL};
+    cli_opts p;
+    const char *a, *val;
+    int r;
+    cli_opts_init(&p, cmd, argc, argv, render_value_opts, flags);
+    p.repeatable = repeatable;
+    while ((r = cli_opts_next(&p, &a, &val)) > 0) {
+        int g = a ? cli_geometry_value(cmd, a, val, &o->q, &o->cols, &o->rows) : 0;
         if (g < 0)
             return CLI_EXIT_USAGE;
         if (g > 0)
             continue;
-        if (takes_value(a)) {
-            if (i + 1 >= argc) {
-                cli_error(cmd, 0, "%s needs a value; see 'holonomy render --help'", a);
-                return CLI_EXIT_USAGE;
-            }
-            int st = parse_value_opt(cmd, o, a, argv[++i]);
-            if (st)
-                return st;
-        } else if (!parse_flag(o, a)) {
-            cli_error(cmd, 0, "unknown option '%.40s'; see 'holonomy render --help'", a);
+        if (!a) {
+            cli_error(cmd, 0, "unknown argument '%.40s'; see 'holonomy render --help'", val);
             return CLI_EXIT_USAGE;
         }
+        if (val) {
+            int st = parse_value_opt(cmd, o, a, val);
+            if (st)
+                return st;
+        } else {
+            parse_flag(o, a);
+        }
     }
+    if (r < 0)
+        return CLI_EXIT_USAGE;
     for (int k = 0; k < o->ntargets; k++)
         if (hol_tile_resolve_q(o->q ? o->q : 5, o->target_s[k], -1, &o->targets[k])) {
             cli_error(cmd, 0, "--target '%.40s' is not a tile address", o->target_s[k]);
@@ -829,7 +829,7 @@ static int render_tile_ids(const char *cmd, const render_opts *o, hol_frame_desc
 int cli_cmd_render(int argc, char **argv)
 {
     const char *cmd = "render";
-    if (cli_wants_help(argc, argv)) {
+    if (cli_wants_help(argc, argv, render_value_opts)) {
         fputs(render_usage, stdout);
         return cli_finish_output(cmd);
     }

@@ -29,9 +29,9 @@ static const char *const replay_usage =
     "frame beyond the recording is bad input (the others are still written).\n"
     "The recording is read a line at a time (lines of at most 1024 bytes).\n"
     "A recording's levels carry their tiling, room and cell size (their\n"
-    "'tiling', 'room' and 'cell' lines), so a replay needs no options; given,\n"
-    "the options act on the recorded levels as on play's (a level without\n"
-    "the line is replayed in that geometry, one whose line differs is refused):\n"
+    "'tiling', 'room' and 'cell' lines; without one, the default), so a replay\n"
+    "needs no options and is never replayed in another geometry; given, an\n"
+    "option must equal every recorded level's (else refused, one line):\n"
     PLAY_GEOMETRY_USAGE
     "\n"
     "SIGINT, SIGTERM or SIGHUP end it cleanly (the attempt in play is logged\n"
@@ -76,13 +76,14 @@ static int parse_frame_list(const char *s, long *out, int cap, int *out_n)
     return n == 0;
 }
 
+static const char *const replay_valued[] = {"--log",  "--png-frames", "--out-dir",
+                                            "--size", PLAY_GEOMETRY_OPTIONS, NULL};
+
 static int replay_options(replay_ctx *c, int argc, char **argv)
 {
-    static const char *const valued[] = {"--log",  "--png-frames", "--out-dir",
-                                         "--size", PLAY_GEOMETRY_OPTIONS, NULL};
     static const char *const flags[] = {"--append", NULL};
     cli_opts p;
-    cli_opts_init(&p, c->cmd, argc, argv, valued, flags);
+    cli_opts_init(&p, c->cmd, argc, argv, replay_valued, flags);
     const char *a, *val;
     int r, g;
     while ((r = cli_opts_next(&p, &a, &val)) > 0) {
@@ -115,10 +116,47 @@ static int replay_options(replay_ctx *c, int argc, char **argv)
         bad = "--png-frames is not a comma-separated list of frames";
     if (bad && bad[0])
         cli_error(c->cmd, 0, "%s", bad);
-    return bad ? CLI_EXIT_USAGE : 0;
+    if (bad)
+        return CLI_EXIT_USAGE;
+    const cli_path in[] = {{"the recording", c->rec}};
+    const cli_path out[] = {{"--log", c->log_dir}, {"--out-dir", c->out_dir}};
+    return cli_check_distinct(c->cmd, in, 1, out, 2);
 }
 
 /* ---- setup ------------------------------------------------------------------------ */
+
+/* A recording names the geometry of each level (its lines, or the
+ * defaults {4,5} 3 x 3 of 1 m): --tiling, --room and --cell may only
+ * repeat it, never replay it in another (0, or refused as one line). */
+static int replay_check_geometry(const replay_ctx *c)
+{
+    const play_geometry *g = &c->geo;
+    for (int i = 0; i < c->input.rec.nlevels; i++) {
+        const hol_level *lv = &c->input.levels[i];
+        const hol_app_level *L = &lv->lvl;
+        int q = L->tiling_q ? L->tiling_q : HOL_TILING_DEFAULT_Q;
+        int cols = L->room_cols ? L->room_cols : 3, rows = L->room_rows ? L->room_rows : 3;
+        double cell = L->cell_m > 0 ? L->cell_m : 1.0;
+        char had[48] = "", want[48] = "";
+        if (g->q && g->q != q)
+            snprintf(had, sizeof had, "{4,%d}", q), snprintf(want, sizeof want, "--tiling 4,%d", g->q);
+        else if (g->cols && (g->cols != cols || g->rows != rows))
+            snprintf(had, sizeof had, "a %dx%d room", cols, rows),
+                snprintf(want, sizeof want, "--room %dx%d", g->cols, g->rows);
+        else if (g->cell_m > 0 && g->cell_m != cell) {
+            char a[16], b[16];
+            snprintf(had, sizeof had, "cells of %s m", hol_level_format_cell(cell, a));
+            snprintf(want, sizeof want, "--cell %s", hol_level_format_cell(g->cell_m, b));
+        }
+        if (had[0]) {
+            cli_error(c->cmd, 0, "level '%.60s' was recorded in %s; %s would replay it in "
+                                 "another geometry (drop the option)",
+                      lv->name, had, want);
+            return CLI_EXIT_USAGE;
+        }
+    }
+    return 0;
+}
 
 static int replay_renderer(replay_ctx *c)
 {
@@ -157,7 +195,7 @@ static int replay_prepare(replay_ctx *c)
         c->has_input = !st;
     }
     if (!st)
-        st = play_geometry_apply(c->cmd, &c->geo, c->input.levels, c->input.rec.nlevels);
+        st = replay_check_geometry(c);
     if (!st)
         st = play_session_open(c->cmd, &c->out, c->input.levels, c->input.rec.nlevels,
                                &c->input.rec.meta, c->append, &c->s);
@@ -232,7 +270,7 @@ int cli_cmd_replay(int argc, char **argv)
     memset(&c, 0, sizeof c);
     c.cmd = "replay";
     c.w = 640, c.h = 480;
-    if (cli_wants_help(argc, argv)) {
+    if (cli_wants_help(argc, argv, replay_valued)) {
         fputs(replay_usage, stdout);
         return cli_finish_output(c.cmd);
     }

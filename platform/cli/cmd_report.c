@@ -97,12 +97,13 @@ static int check_out_dir(const char *cmd, const char *dir)
     return 0;
 }
 
+static const char *const report_valued[] = {"--out", NULL};
+
 static int parse_args(report_run *r, int argc, char **argv)
 {
-    static const char *const valued[] = {"--out", NULL};
     static const char *const flags[] = {NULL};
     cli_opts p;
-    cli_opts_init(&p, r->cmd, argc, argv, valued, flags);
+    cli_opts_init(&p, r->cmd, argc, argv, report_valued, flags);
     const char *opt, *val;
     int got;
     r->dirs = calloc((size_t)argc, sizeof *r->dirs);
@@ -125,6 +126,9 @@ static int parse_args(report_run *r, int argc, char **argv)
     }
     for (int i = 0; i < r->ndirs; i++) {
         int st = cli_require_folder(r->cmd, NULL, r->dirs[i]);
+        const cli_path in = {"the log folder", r->dirs[i]}, out = {"--out", r->out};
+        if (!st)
+            st = cli_check_distinct(r->cmd, &in, 1, &out, 1);
         if (st)
             return st;
     }
@@ -225,7 +229,7 @@ static int run(report_run *r, report_buf *b)
 int cli_cmd_report(int argc, char **argv)
 {
     const char *cmd = "report";
-    if (cli_wants_help(argc, argv)) {
+    if (cli_wants_help(argc, argv, report_valued)) {
         fputs(report_usage, stdout);
         return cli_finish_output(cmd);
     }

@@ -113,27 +113,27 @@ static int dist_line(void *ctx, long lineno, char *s, size_t len)
 
 int cli_cmd_tile(int argc, char **argv)
 {
-    if (cli_wants_help(argc, argv)) {
+    static const char *const valued[] = {"--tiling", NULL};
+    if (cli_wants_help(argc, argv, valued)) {
         fputs(tile_usage, stdout);
         return cli_finish_output("tile");
     }
-    int q = HOL_TILING_DEFAULT_Q, npos = 0;
-    const char *pos[2] = {NULL, NULL};
-    for (int i = 1; i < argc; i++) {
-        int g = cli_geometry_option("tile", argc, argv, &i, &q, NULL, NULL);
-        if (g < 0)
+    int q = HOL_TILING_DEFAULT_Q, npos = 0, r;
+    const char *pos[2] = {NULL, NULL}, *a, *val;
+    cli_opts p;
+    cli_opts_init(&p, "tile", argc, argv, valued, NULL);
+    while ((r = cli_opts_next(&p, &a, &val)) > 0) {
+        if (a && cli_geometry_value("tile", a, val, &q, NULL, NULL) < 0)
             return CLI_EXIT_USAGE;
-        if (g > 0)
-            continue;
-        if (npos == 2 || (argv[i][0] == '-' && argv[i][1] != '\0')) {
-            if (argv[i][0] == '-')
-                cli_error("tile", 0, "unknown option '%.40s'; see --help", argv[i]);
-            else
-                cli_error("tile", 0, "'%s' takes no arguments; see --help", pos[0]);
+        if (!a && npos == 2) {
+            cli_error("tile", 0, "'%s' takes no arguments; see --help", pos[0]);
             return CLI_EXIT_USAGE;
         }
-        pos[npos++] = argv[i];
+        if (!a)
+            pos[npos++] = val;
     }
+    if (r < 0)
+        return CLI_EXIT_USAGE;
     if (npos == 1 && !strcmp(pos[0], "walk"))
         return cli_for_each_line("tile walk", walk_line, &q);
     if (npos == 1 && !strcmp(pos[0], "dist"))

@@ -40,35 +40,34 @@ static const char *const tour_usage =
 int cli_cmd_tour(int argc, char **argv)
 {
     const char *cmd = "tour";
-    if (cli_wants_help(argc, argv)) {
+    static const char *const valued[] = {"--budget", "--tiling", "--room", NULL};
+    static const char *const flags[] = {"--stats", NULL};
+    if (cli_wants_help(argc, argv, valued)) {
         fputs(tour_usage, stdout);
         return cli_finish_output(cmd);
     }
     size_t budget = 0;
-    int stats = 0, q = 0, cols = 0, rows = 0;
+    int stats = 0, q = 0, cols = 0, rows = 0, r;
     const char *pos[HOL_NAV_TOUR_MAX_KEYS + 2];
     int npos = 0;
-    for (int i = 1; i < argc; i++) {
-        int b = cli_budget_option(cmd, argc, argv, &i, &budget);
-        if (!b)
-            b = cli_geometry_option(cmd, argc, argv, &i, &q, &cols, &rows);
-        if (b < 0)
-            return CLI_EXIT_USAGE;
-        if (b > 0)
-            continue;
-        const char *a = argv[i];
-        if (!strcmp(a, "--stats")) {
+    cli_opts po;
+    const char *a, *val;
+    cli_opts_init(&po, cmd, argc, argv, valued, flags);
+    while ((r = cli_opts_next(&po, &a, &val)) > 0) {
+        if (a && !strcmp(a, "--stats")) {
             stats = 1;
-        } else if (a[0] == '-' && a[1] != '\0') {
-            cli_error(cmd, 0, "unknown option '%.40s'; see --help", a);
+        } else if (a && (!strcmp(a, "--budget") ? cli_budget_value(cmd, val, &budget)
+                                                : cli_geometry_value(cmd, a, val, &q, &cols, &rows) < 0)) {
             return CLI_EXIT_USAGE;
-        } else if (npos == HOL_NAV_TOUR_MAX_KEYS + 2) {
+        } else if (!a && npos == HOL_NAV_TOUR_MAX_KEYS + 2) {
             cli_error(cmd, 0, "at most %d keys", HOL_NAV_TOUR_MAX_KEYS);
             return CLI_EXIT_USAGE;
-        } else {
-            pos[npos++] = a;
+        } else if (!a) {
+            pos[npos++] = val;
         }
     }
+    if (r < 0)
+        return CLI_EXIT_USAGE;
     if (npos < 2) {
         cli_error(cmd, 0, "expected PREFIX KEY... CHEST; see --help");
         return CLI_EXIT_USAGE;

@@ -92,87 +92,98 @@ typedef struct world_opts {
     int q, cols, rows, have_geometry;
 } world_opts;
 
+static const char *const world_valued[] = {"--seed", "--walk",     "--radius", "--load",
+                                           "--save", "--capacity", "--tiling", "--room",
+                                           NULL};
+
+/* One option with a value: 0 ok, else reported and 1. */
+static int parse_value(const char *a, const char *v, world_opts *o)
+{
+    int g = cli_geometry_value(CMD, a, v, &o->q, &o->cols, &o->rows);
+    if (g) {
+        o->have_geometry = 1;
+        return g < 0;
+    }
+    if (!strcmp(a, "--seed")) {
+        if (!cli_parse_u64(v, &o->seed)) {
+            cli_error(CMD, 0, "--seed '%.40s' is not an unsigned 64-bit number", v);
+            return 1;
+        }
+        o->have_seed = 1;
+    } else if (!strcmp(a, "--walk")) {
+        o->walk = v;
+    } else if (!strcmp(a, "--radius")) {
+        uint64_t r;
+        if (!cli_parse_u64(v, &r) || r > HOL_WORLD_MAX_RADIUS) {
+            cli_error(CMD, 0, "--radius '%.40s' is not a number 0..%d", v, HOL_WORLD_MAX_RADIUS);
+            return 1;
+        }
+        o->radius = (int)r;
+    } else if (!strcmp(a, "--capacity")) {
+        uint64_t c;
+        if (!cli_parse_u64(v, &c) || c < 1 || c > WORLD_MAX_CAPACITY) {
+            cli_error(CMD, 0, "--capacity '%.40s' is not a number of tiles 1..%u", v,
+                      (unsigned)WORLD_MAX_CAPACITY);
+            return 1;
+        }
+        o->capacity = (uint32_t)c;
+    } else {
+        const char **slot = a[2] == 'l' ? &o->load : &o->save;
+        if (*slot) { /* 'world save FILE --save FILE2' */
+            cli_error(CMD, 0, "%s is given twice; give each option once ('world %s FILE' "
+                              "is %s FILE)", a, a + 2, a);
+            return 1;
+        }
+        *slot = v;
+    }
+    return 0;
+}
+
 static int parse_args(int argc, char **argv, world_opts *o)
 {
+    static const char *const flags[] = {"--check", "--quiet", "--stats", NULL};
     memset(o, 0, sizeof *o);
     o->seed = CLI_SEED_DEFAULT;
     o->radius = 4;
     o->walk = "-";
-    int i = 1;
-    if (i < argc && (!strcmp(argv[i], "save") || !strcmp(argv[i], "load"))) {
-        if (i + 1 >= argc) {
-            cli_error(CMD, 0, "'%s' needs a FILE; see --help", argv[i]);
+    cli_opts p;
+    const char *a, *v, *ops[2] = {NULL, NULL};
+    int r, nops = 0;
+    cli_opts_init(&p, CMD, argc, argv, world_valued, flags);
+    while ((r = cli_opts_next(&p, &a, &v)) > 0) {
+        if (!a && nops == 2) {
+            cli_error(CMD, 0, "unknown argument '%.40s'; see --help", v);
             return 0;
         }
-        if (argv[i][0] == 's')
-            o->save = argv[i + 1];
-        else
-            o->load = argv[i + 1];
-        i += 2;
-    }
-    for (; i < argc; i++) {
-        int g = cli_geometry_option(CMD, argc, argv, &i, &o->q, &o->cols, &o->rows);
-        if (g < 0)
-            return 0;
-        if (g > 0) {
-            o->have_geometry = 1;
-            continue;
-        }
-        const char *a = argv[i];
-        const char *v = i + 1 < argc ? argv[i + 1] : NULL;
-        int takes = !strcmp(a, "--seed") || !strcmp(a, "--walk") ||
-                    !strcmp(a, "--radius") || !strcmp(a, "--load") ||
-                    !strcmp(a, "--save") || !strcmp(a, "--capacity");
-        if (takes && !v) {
-            cli_error(CMD, 0, "%s needs a value; see --help", a);
-            return 0;
-        }
-        if (!strcmp(a, "--seed")) {
-            if (!cli_parse_u64(v, &o->seed)) {
-                cli_error(CMD, 0, "--seed '%.40s' is not an unsigned 64-bit number", v);
-                return 0;
-            }
-            o->have_seed = 1;
-        } else if (!strcmp(a, "--walk")) {
-            o->walk = v;
-        } else if (!strcmp(a, "--radius")) {
-            uint64_t r;
-            if (!cli_parse_u64(v, &r) || r > HOL_WORLD_MAX_RADIUS) {
-                cli_error(CMD, 0, "--radius '%.40s' is not a number 0..%d", v,
-                          HOL_WORLD_MAX_RADIUS);
-                return 0;
-            }
-            o->radius = (int)r;
-        } else if (!strcmp(a, "--capacity")) {
-            uint64_t c;
-            if (!cli_parse_u64(v, &c) || c < 1 || c > WORLD_MAX_CAPACITY) {
-                cli_error(CMD, 0, "--capacity '%.40s' is not a number of tiles 1..%u", v,
-                          (unsigned)WORLD_MAX_CAPACITY);
-                return 0;
-            }
-            o->capacity = (uint32_t)c;
-        } else if (!strcmp(a, "--load") || !strcmp(a, "--save")) {
-            const char **slot = a[2] == 'l' ? &o->load : &o->save;
-            if (*slot) { /* 'world save FILE --save FILE2' */
-                cli_error(CMD, 0, "%s is given twice; give each option once ('world %s FILE' "
-                                  "is %s FILE)", a, a + 2, a);
-                return 0;
-            }
-            *slot = v;
-        } else if (!strcmp(a, "--check")) {
+        if (!a)
+            ops[nops++] = v;
+        else if (!strcmp(a, "--check"))
             o->check = 1;
-            continue;
-        } else if (!strcmp(a, "--quiet")) {
+        else if (!strcmp(a, "--quiet"))
             o->quiet = 1;
-            continue;
-        } else if (!strcmp(a, "--stats")) {
+        else if (!strcmp(a, "--stats"))
             o->stats = 1;
-            continue;
-        } else {
-            cli_error(CMD, 0, "unknown argument '%.40s'; see --help", a);
+        else if (parse_value(a, v, o))
+            return 0;
+    }
+    if (r < 0)
+        return 0;
+    if (nops && strcmp(ops[0], "save") && strcmp(ops[0], "load")) {
+        cli_error(CMD, 0, "unknown argument '%.40s'; see --help", ops[0]);
+        return 0;
+    }
+    if (nops == 1) {
+        cli_error(CMD, 0, "'%s' needs a FILE; see --help", ops[0]);
+        return 0;
+    }
+    if (nops == 2) {
+        const char **slot = ops[0][0] == 's' ? &o->save : &o->load;
+        if (*slot) {
+            cli_error(CMD, 0, "--%s is given twice; give each option once ('world %s FILE' "
+                              "is --%s FILE)", ops[0], ops[0], ops[0]);
             return 0;
         }
-        i++;
+        *slot = ops[1];
     }
     if (o->load && o->have_seed) {
         cli_error(CMD, 0, "--seed and --load exclude each other (the file holds "
@@ -184,7 +195,8 @@ static int parse_args(int argc, char **argv, world_opts *o)
                           "its tiling and room)");
         return 0;
     }
-    return 1;
+    const cli_path in = {"--load", o->load}, out = {"--save", o->save};
+    return !cli_check_distinct(CMD, &in, 1, &out, 1);
 }
 
 /* Read a whole file: 0, or the exit status of a failure already reported
@@ -478,7 +490,7 @@ static int save_world(hol_world *w, const char *path)
 
 int cli_cmd_world(int argc, char **argv)
 {
-    if (cli_wants_help(argc, argv)) {
+    if (cli_wants_help(argc, argv, world_valued)) {
         fputs(world_usage, stdout);
         return cli_finish_output(CMD);
     }

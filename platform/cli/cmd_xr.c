@@ -110,17 +110,18 @@ static int xr_count(const char *cmd, const char *a, const char *val, xr_opts *o)
     return 0;
 }
 
+static const char *const xr_valued[] = {"--frames",      "--log",       "--record",
+                                        "--input",       "--check-frame", "--check-dir",
+                                        "--participant", "--space",    "--study",
+                                        PLAY_GEOMETRY_OPTIONS, "--play-area", NULL};
+
 static int xr_options(const char *cmd, int argc, char **argv, xr_opts *o)
 {
-    static const char *const valued[] = {"--frames",      "--log",       "--record",
-                                         "--input",       "--check-frame", "--check-dir",
-                                         "--participant", "--space",    "--study",
-                                         PLAY_GEOMETRY_OPTIONS, "--play-area", NULL};
     static const char *const flags[] = {"--append", NULL};
     memset(o, 0, sizeof *o);
     o->check_frame = -1;
     cli_opts p;
-    cli_opts_init(&p, cmd, argc, argv, valued, flags);
+    cli_opts_init(&p, cmd, argc, argv, xr_valued, flags);
     const char *a, *val;
     int r, bad = 0, g;
     while (!bad && (r = cli_opts_next(&p, &a, &val)) > 0) {
@@ -167,6 +168,12 @@ static int xr_options(const char *cmd, int argc, char **argv, xr_opts *o)
         cli_error(cmd, 0, "%s", clash);
         return CLI_EXIT_USAGE;
     }
+    const cli_path in[] = {{"LEVEL", o->level_path}, {"--input", o->input_path},
+                           {"--study", o->study}};
+    const cli_path out[] = {{"--record", o->rec}, {"--log", o->log_dir},
+                            {"--check-dir", o->check_dir}};
+    if (cli_check_distinct(cmd, in, 3, out, 3))
+        return CLI_EXIT_USAGE;
     return cli_require_folder(cmd, "--check-dir", o->check_dir);
 }
 
@@ -239,6 +246,8 @@ static int xr_fit(void *user, const hol_fit *f)
     else if (f)
         xr_apply_fit(c, f);
     c->st = play_session_open(c->cmd, c->out, c->levels, c->nlevels, &c->meta, c->append, &c->s);
+    if (!c->st)
+        play_study_announce();
     return c->st != 0;
 }
 
@@ -299,7 +308,7 @@ static int xr_run(const xr_opts *o, xr_ctx *c, const hol_input *script, long nsc
 int cli_cmd_xr(int argc, char **argv)
 {
     const char *cmd = "xr";
-    if (cli_wants_help(argc, argv)) {
+    if (cli_wants_help(argc, argv, xr_valued)) {
         fputs(xr_usage, stdout);
         return cli_finish_output(cmd);
     }

@@ -52,12 +52,10 @@ int main(int argc, char **argv)
         return cli_finish_output("--version");
     }
     for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++)
-        if (!strcmp(argv[1], commands[i].name)) {
-            if (!cli_wants_help(argc - 1, argv + 1) &&
-                cli_no_repeats(commands[i].name, argc - 1, argv + 1))
-                return CLI_EXIT_USAGE;
+        if (!strcmp(argv[1], commands[i].name))
+            /* each command reads its options with cli_opts_next: one
+             * grammar, repeated options refused there */
             return commands[i].run(argc - 1, argv + 1);
-        }
     cli_error("", 0, "unknown command '%.40s'; see 'holonomy --help'", argv[1]);
     return CLI_EXIT_USAGE;
 }

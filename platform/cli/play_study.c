@@ -68,19 +68,31 @@ static int study_level(const char *cmd, const char *spath, const hol_study *s, i
     return 0;
 }
 
+/* The order line, held until play_study_announce ("" when none). */
+static char study_line[2048];
+
 /* "hud, hand, none" */
 static void study_tell(const char *cmd, const hol_study *s, const char *participant,
                        uint64_t p, const int *order)
 {
     uint64_t rows = hol_study_rows(s->rule, s->nconditions);
-    fprintf(stderr, "holonomy %s: study %s, participant %s (number %llu, order %llu of %llu):",
-            cmd, s->name, participant, (unsigned long long)p,
-            (unsigned long long)((p - 1) % rows + 1), (unsigned long long)rows);
-    if (s->npractice)
-        fprintf(stderr, " practice,");
+    size_t cap = sizeof study_line, n;
+    snprintf(study_line, cap, "holonomy %s: study %s, participant %s (number %llu, order %llu of %llu):",
+             cmd, s->name, participant, (unsigned long long)p,
+             (unsigned long long)((p - 1) % rows + 1), (unsigned long long)rows);
+    if (s->npractice && (n = strlen(study_line)) < cap)
+        snprintf(study_line + n, cap - n, " practice,");
     for (int k = 0; k < s->nconditions; k++)
-        fprintf(stderr, " %s%s", s->conditions[order[k]].name, k + 1 < s->nconditions ? "," : "");
-    fprintf(stderr, "\n");
+        if ((n = strlen(study_line)) < cap)
+            snprintf(study_line + n, cap - n, " %s%s", s->conditions[order[k]].name,
+                     k + 1 < s->nconditions ? "," : "");
+}
+
+void play_study_announce(void)
+{
+    if (study_line[0])
+        fprintf(stderr, "%s\n", study_line);
+    study_line[0] = 0;
 }
 
 int play_study_levels(const char *cmd, const char *path, const char *participant,
@@ -88,6 +100,7 @@ int play_study_levels(const char *cmd, const char *path, const char *participant
 {
     static hol_study s;
     *nlevels = 0;
+    study_line[0] = 0;
     uint64_t p = study_number(cmd, participant);
     if (!p)
         return CLI_EXIT_USAGE;

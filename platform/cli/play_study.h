@@ -12,7 +12,9 @@
  *   named as play_read_level names a level file (a condition without a
  *   file: the condition's name) and labelled with its condition and
  *   position; study_name gets the study's name (for the session's
- *   metadata). It prints one line on stderr naming the order played.
+ *   metadata). play_study_announce then prints one line on stderr naming
+ *   the order played: the caller calls it once every other check has
+ *   passed (its session open), so that a refusal is its one line alone.
  * - Every problem is one line on stderr naming the file and line (a bad
  *   study line, a level file's bad line with the condition it serves), and
  *   the exit status is returned: 2 bad input, 1 failure; 0 ok.
@@ -25,5 +27,6 @@
 
 int play_study_levels(const char *cmd, const char *path, const char *participant,
                       hol_level *levels, int *nlevels, char study_name[HOL_REC_ID_MAX]);
+void play_study_announce(void);
 
 #endif
