@@ -31,8 +31,9 @@
 #define HOL_PROPS_H
 
 #include "hol_err.h"
+#include "hol_haptic.h"
 
-#define HOL_PROPS_TRUNK_M 0.11     /* the widest virtual trunk's base radius */
+#define HOL_PROPS_TRUNK_M HOL_HAPTIC_TRUNK_M /* the widest virtual trunk's base radius */
 #define HOL_PROPS_MAX_TREES 36     /* (5+1)(5+1) */
 #define HOL_PROPS_MAX_HEDGES 20    /* 2(5+5) */
 #define HOL_PROPS_SCALE_MIN 5
