@@ -8,8 +8,13 @@
 # written for it, atomic output, an output that is the level refused.
 . "$(dirname "$0")/lib.sh"
 
-svg_ok() { # FILE: well-formed XML
-    python3 -c 'import sys, xml.etree.ElementTree as E; E.parse(sys.argv[1])' "$1" 2>/dev/null
+# Debian's python3 when there (a python3 on PATH may be a slow shim)
+PY=python3
+[ -x /usr/bin/python3 ] && PY=/usr/bin/python3
+command -v "$PY" >/dev/null 2>&1 || echo "cli_props: no python3: the SVG's XML is not parsed"
+svg_ok() { # FILE: well-formed XML (when python3 is there)
+    command -v "$PY" >/dev/null 2>&1 || return 0
+    "$PY" -c 'import sys, xml.etree.ElementTree as E; E.parse(sys.argv[1])' "$1" 2>/dev/null
 }
 count() { grep -c "class=\"$1\"" "$2"; }
 

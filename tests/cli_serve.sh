@@ -203,7 +203,7 @@ fi
 run "make web without emcc" 2 M web EMCC=holonomy-no-emcc && one_line "web without emcc" "run make deps-web first"
 run "make web-serve without emcc" 2 M web-serve EMCC=holonomy-no-emcc && one_line "web-serve" "make deps-web"
 mkdir -p "$T/bin" && ln -s "$(command -v make)" "$T/bin/make"
-run "make web-serve without brotli" 2 env PATH="$T/bin" make --no-print-directory -C "$R" -n web-serve EMCC=/bin/true &&
+run "make web-serve without brotli" 2 env -u MAKEFLAGS -u MAKELEVEL -u MFLAGS PATH="$T/bin" make --no-print-directory -C "$R" -n web-serve EMCC=/bin/true &&
     one_line "web-serve without brotli" "brotli is not installed: run make deps-web first"
 # test and run: deps before any build; web-test: deps-web before the build
 M -n test >"$T/n" 2>&1
