@@ -207,6 +207,10 @@ int hol__haptics(hol__xr *x)
         XrResult r = xrApplyHapticFeedback(x->session, &hi, (const XrHapticBaseHeader *)&v);
         if (XR_FAILED(r) && hol_xr_result_is_loss((int)r))
             return hol__fail(x, "pulse a controller", r);
+        if (XR_SUCCEEDED(r)) {
+            x->pulses++;
+            x->pulses_hit += hp->hand[h].why != HOL_HAPTIC_STEP;
+        }
         if (XR_FAILED(r) && !x->haptic_failed) {
             x->haptic_failed = 1;
             hol__say(x, "xr: cannot pulse the %s controller: %s; the run goes on without",

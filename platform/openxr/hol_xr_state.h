@@ -131,6 +131,7 @@ typedef struct hol__xr {
     XrAction grip_action, act[HOL_XR_ACT_COUNT];
     XrAction haptic_action; /* vibration output, per hand (hol_xr_haptic_path) */
     int haptic_failed;      /* a pulse failed once: said once, not again */
+    long pulses, pulses_hit; /* pulses played (all; of them into a hedge or trunk) */
     XrPath hand_path[2];
     uint32_t nviews;  /* of the stereo configuration: 2 */
     XrView *views;    /* nviews, located each frame */
