@@ -1,21 +1,28 @@
 # Holonomy - plain GNU make, C11.
 #
 #   make            build build/holonomy
-#   make test       build and run every test (unit, CLI, fuzz-corpus replay)
+#   make test       install what is missing (make deps), then build and run
+#                   every test (unit, CLI, fuzz-corpus replay)
 #   make gen-tiling rewrite core/hol_tile_dfa.h (tests/gen_tiling.c)
 #   make deps       install the Debian packages the project needs (apt-get)
 #   make fuzz       build the libFuzzer harnesses and run each FUZZ_TIME s
 #   make bench      build with optimisation and print the benchmark figures
 #   make san        run the unit tests under AddressSanitizer + UBSan
 #   make san-cli    run the command-line tests against an ASan + UBSan build
-#   make run        build and play in a desktop window (RUN_ARGS: play's options)
+#   make run        install what is missing, build and play in a desktop window
+#                   (RUN_ARGS: play's options)
 #   make xr         build/xr/holonomy with `holonomy xr` (XR=1 in its own folder)
 #   make xr-test    the headset against Monado in a chroot (root; see README)
 #   make quest      the Quest APK (needs NDK= and OPENXR_LOADER=; see README)
 #   make web        build/web/: the game for browsers (WebGL 2, WebXR), emscripten
-#   make web-serve  serve build/web on http://127.0.0.1:8080/ (WEB_PORT)
-#   make web-test   the web build in headless chromium, on an emulated Quest 3
-#   make deps-web   Debian's emscripten and chromium, npm's puppeteer-core and iwer
+#   make web-serve  serve build/web on http://127.0.0.1:8080/ (WEB_PORT), gzip
+#                   and brotli precompressed, with cache headers
+#   make web-serve-https  serve it over HTTPS on the LAN address (WEB_HTTPS_PORT,
+#                   a self-signed certificate; docs/web.md)
+#   make web-test   deps-web, the web build, then headless chromium on an
+#                   emulated Quest 3
+#   make deps-web   Debian's emscripten, chromium, brotli and openssl; npm's
+#                   puppeteer-core and iwer
 #   make quest-link-check  the APK's sources compiled and linked for this machine
 #   make clean      remove build outputs
 #
@@ -95,11 +102,16 @@ DEB_PACKAGES := make gcc clang libcmocka-dev libosmesa6-dev libegl-dev \
   qemu-user xvfb xdotool zlib1g-dev libx11-dev
 # libc6-dev-arm64-cross is only a Recommends of gcc-aarch64-linux-gnu, and
 # deps installs without recommends: it must be named here.
-# apt waits up to APT_LOCK_WAIT seconds for another apt/dpkg to finish.
+# apt waits up to APT_LOCK_WAIT seconds for another apt/dpkg to finish
+# (tools/apt_get.sh: dpkg's lock through DPkg::Lock::Timeout, the lists'
+# and archives' locks, which that option does not cover, by trying again).
+# APT_GET_CMD: the program run (the tests give a fake one).
 APT_LOCK_WAIT ?= 120
-APT_GET = $$SUDO env DEBIAN_FRONTEND=noninteractive apt-get -o DPkg::Lock::Timeout=$(APT_LOCK_WAIT)
+APT_GET_CMD ?= apt-get
+APT_GET = $$SUDO env DEBIAN_FRONTEND=noninteractive APT_GET_CMD=$(APT_GET_CMD) \
+  sh tools/apt_get.sh $(APT_LOCK_WAIT)
 
-.PHONY: web web-serve web-test deps-web bench-web
+.PHONY: web web-serve web-serve-https web-test deps-web bench-web test-suites
 .PHONY: all test purity fn-length unit render-test cli-test fuzz-replay fuzz bench san san-cli clean deps xr \
         deps-cross check-clang cross-test run quest quest-help deps-quest quest-check check-hid-libusb deps-xr xr-test soak \
         deps-quest-link quest-link-check
@@ -204,10 +216,17 @@ $(BUILD)/fuzz-replay/%: fuzz/%.c fuzz/replay_main.c $(wildcard fuzz/*.h) $(CORE_
 	  $(FUZZ_EXTRA_$*) $(CORE_LIB) $(LDLIBS)
 
 # The desktop game (EGL/X11 window): `make run RUN_ARGS="--mode flag"`.
-run: $(BUILD)/holonomy
+# run and test install what is missing first (make deps: a second when all
+# is present), then build in a make of their own, so that make -j2 never
+# compiles before the headers and libraries are there.
+run: deps
+	@$(MAKE) --no-print-directory $(BUILD)/holonomy
 	$(BUILD)/holonomy play $(RUN_ARGS)
 
-test: all purity fn-length tiling-gen-check unit render-test cli-test fuzz-replay
+test: deps
+	@$(MAKE) --no-print-directory test-suites
+
+test-suites: all purity fn-length tiling-gen-check unit render-test cli-test fuzz-replay
 	@echo "make test: all suites passed"
 
 # The automata of canonical addresses (core/hol_tile_dfa.h) are derived from
@@ -401,6 +420,24 @@ WEB_LDFLAGS := -O3 -sENVIRONMENT=web -sMIN_WEBGL_VERSION=2 -sMAX_WEBGL_VERSION=2
   --js-library platform/web/hol_web_lib.js
 WEB_PAGE := $(addprefix $(WEB)/,index.html page.js store.js)
 WEB_PORT ?= 8080
+WEB_HTTPS_PORT ?= 8443
+# precompressed copies for web-serve: beside build/web, which stays the
+# build's own (make bench-web measures its files)
+WEB_Z    := $(BUILD)/web-z
+WEB_ZIPPED := $(foreach f,holonomy.wasm holonomy.js $(notdir $(WEB_PAGE)),$(WEB_Z)/$(f).gz $(WEB_Z)/$(f).br)
+
+# Without the toolchain, the web goals stop at once with one line that says
+# what to run (not make's bare "Error 127" from a missing emcc).
+ifneq ($(filter web web-serve web-serve-https bench-web,$(MAKECMDGOALS)),)
+ifeq ($(shell command -v $(EMCC) 2>/dev/null),)
+$(error emcc (emscripten) is not installed: run make deps-web first, then make $(filter web web-serve web-serve-https bench-web,$(MAKECMDGOALS)))
+endif
+endif
+ifneq ($(filter web-serve web-serve-https,$(MAKECMDGOALS)),)
+ifeq ($(shell command -v brotli 2>/dev/null),)
+$(error brotli is not installed: run make deps-web first, then make $(filter web-serve web-serve-https,$(MAKECMDGOALS)))
+endif
+endif
 
 $(BUILD)/web-obj/%.o: %.c
 	@mkdir -p $(dir $@)
@@ -419,11 +456,31 @@ $(WEB)/%: platform/web/%
 web: $(WEB)/holonomy.js $(WEB_PAGE)
 	@echo "make web: $(WEB)/ ($$(du -sk $(WEB)/holonomy.wasm | cut -f1) KB wasm); serve it with make web-serve"
 
-web-serve: web
-	@echo "http://127.0.0.1:$(WEB_PORT)/ (Ctrl-C stops)"
-	cd $(WEB) && python3 -m http.server $(WEB_PORT) --bind 127.0.0.1
+$(WEB)/holonomy.wasm: $(WEB)/holonomy.js
+	@:
+$(WEB_Z)/%.gz: $(WEB)/%
+	@mkdir -p $(dir $@)
+	gzip -9 -n -c $< > $@.tmp && mv $@.tmp $@ || { rm -f $@.tmp; exit 1; }
+$(WEB_Z)/%.br: $(WEB)/%
+	@mkdir -p $(dir $@)
+	brotli -q 11 -c $< > $@.tmp && mv $@.tmp $@ || { rm -f $@.tmp; exit 1; }
 
-WEB_DEB_PACKAGES := emscripten chromium
+# platform/web/serve.py: brotli or gzip when the browser takes it, ETag and
+# Cache-Control: no-cache (docs/web.md, "Serving").
+web-serve: web $(WEB_ZIPPED)
+	python3 platform/web/serve.py $(WEB) --precompressed $(WEB_Z) --bind 127.0.0.1 --port $(WEB_PORT)
+
+# HTTPS for a headset on the same network: a self-signed certificate for
+# the LAN address (WEB_LAN: give one by hand), made once in build/web-cert.
+WEB_LAN ?=
+web-serve-https: web $(WEB_ZIPPED)
+	@lan=$$(sh platform/web/make_cert.sh $(BUILD)/web-cert $(WEB_LAN)) || exit 2; \
+	echo "on the headset: https://$$lan:$(WEB_HTTPS_PORT)/ (accept the certificate once: docs/web.md)"; \
+	openssl x509 -noout -fingerprint -sha256 -in $(BUILD)/web-cert/cert.pem; \
+	python3 platform/web/serve.py $(WEB) --precompressed $(WEB_Z) --bind 0.0.0.0 \
+	  --port $(WEB_HTTPS_PORT) --https $(BUILD)/web-cert/cert.pem $(BUILD)/web-cert/key.pem
+
+WEB_DEB_PACKAGES := emscripten chromium brotli openssl python3 curl
 deps-web:
 	@$(MAKE) -s deps DEB_PACKAGES="$(WEB_DEB_PACKAGES)"
 	@cd tests/web && if npm ls --depth=0 >/dev/null 2>&1; then echo "make deps-web: npm packages present"; \
@@ -447,7 +504,10 @@ bench-web: web $(BUILD)/bench/bench_web $(BUILD)/web-node/bench_web.js
 	@BENCH_NATIVE=$(BUILD)/bench/bench_web BENCH_WASM=$(BUILD)/web-node/bench_web.js WEB=$(WEB) \
 	  node tests/web/bench.mjs
 
-web-test: web deps-web $(BUILD)/holonomy $(BUILD)/web-node/math_check.js
+# deps-web first (a fresh clone has no emcc), then the build in a make of
+# its own.
+web-test: deps-web
+	@$(MAKE) --no-print-directory web $(BUILD)/holonomy $(BUILD)/web-node/math_check.js
 	@HOLONOMY=$(BUILD)/holonomy WEB=$(WEB) MATH_CHECK=$(BUILD)/web-node/math_check.js \
 	  node tests/web/run.mjs
 

@@ -609,6 +609,9 @@ hol_err hol_app_step(hol_app *app, const hol_input *in)
             v->state = HOL_APP_DONE;
         }
     }
+    hol_haptic_step(&app->haptic, in, hol_room_cols(&app->mo.user), hol_room_rows(&app->mo.user),
+                    app->mo.d.cell_m, app->ev.nsteps, !app->d.no_haptics && !v->paused,
+                    &app->ev.haptic);
     hol__fill_view(app, in);
     return HOL_OK;
 }

@@ -50,6 +50,7 @@
 
 #include "hol_alloc.h"
 #include "hol_err.h"
+#include "hol_haptic.h"
 #include "hol_input.h"
 #include "hol_motion.h"
 #include "hol_room.h"
@@ -145,6 +146,8 @@ typedef struct hol_app_desc {
                                  NULL: the app creates one (0.5 s, 30 MB) */
     int stray_steps;          /* N: path shown beyond optimum + N; 0: 3 */
     double ipd;               /* eye distance for the per-eye states; 0: 0.064 */
+    int no_haptics;           /* 1: no controller pulses (events.haptic stays 0;
+                                 holonomy xr --no-haptics) */
 } hol_app_desc;
 
 typedef enum hol_app_state {
@@ -274,6 +277,10 @@ typedef struct hol_app_events {
     hol_app_summary summary; /* with level_ended */
     int next_level;        /* confirm on the end screen: the platform
                               starts the next level */
+    hol_haptic haptic;     /* the controllers' pulses of this step
+                              (core/hol_haptic.h: a hand into a hedge or a
+                              trunk, a room step; none while paused or
+                              with desc.no_haptics); the platform plays them */
 } hol_app_events;
 
 typedef struct hol_app hol_app;

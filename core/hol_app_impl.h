@@ -42,6 +42,7 @@ struct hol_app {
     hol_app_events ev;
     hol_input prev;
     int have_prev;
+    hol_haptic_state haptic; /* the hands' contacts (core/hol_haptic.h) */
     int menu;
     int pending_start;
     int debug;           /* the HUD's debug text (HOL_BTN_DEBUG toggles) */

@@ -174,6 +174,34 @@ static uint32_t press(hol_xr_keys *k, unsigned held_mask, int in_menu)
     return hol_xr_buttons(k, held, in_menu);
 }
 
+/* The haptic output: the spec gives every one of the five profiles one
+ * output per hand, /user/hand/{left,right}/output/haptic (section 6.4:
+ * "Supported component paths ... .../output/haptic"); the vibration
+ * action binds it on each, one path per hand (its subaction path). */
+static int spec_has_output(const char *name, const char *path)
+{
+    static const char *const out[2] = {"/user/hand/left/output/haptic",
+                                       "/user/hand/right/output/haptic"};
+    if (!spec_of(name))
+        return 0;
+    return !strcmp(path, out[0]) || !strcmp(path, out[1]);
+}
+
+static void test_haptic_output(void **state)
+{
+    (void)state;
+    const hol_xr_profile *p = hol_xr_profiles();
+    for (int i = 0; i < HOL_XR_NPROFILES; i++)
+        for (int h = 0; h < 2; h++) {
+            const char *path = hol_xr_haptic_path(h);
+            assert_true(spec_has_output(p[i].profile, path));
+            assert_non_null(strstr(path, h ? "/right/" : "/left/"));
+            /* an output, never one of the inputs an action reads */
+            assert_false(spec_has(spec_of(p[i].profile), path));
+        }
+    assert_string_not_equal(hol_xr_haptic_path(0), hol_xr_haptic_path(1));
+}
+
 static void test_buttons(void **state)
 {
     (void)state;
@@ -330,6 +358,7 @@ int main(void)
         cmocka_unit_test(test_every_binding_is_in_its_profile),
         cmocka_unit_test(test_every_profile_reaches_every_action),
         cmocka_unit_test(test_buttons),
+        cmocka_unit_test(test_haptic_output),
         cmocka_unit_test(test_layer_change_waits_for_a_release),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -190,5 +190,6 @@ int cli_cmd_replay(int argc, char **argv);
 int cli_cmd_hid(int argc, char **argv);
 int cli_cmd_xr(int argc, char **argv);
 int cli_cmd_report(int argc, char **argv);
+int cli_cmd_props(int argc, char **argv);
 
 #endif

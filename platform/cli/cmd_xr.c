@@ -20,7 +20,7 @@ static const char *const xr_usage =
     "usage: holonomy xr [LEVEL | --study FILE] [--frames N] [--log DIR [--append]]\n"
     "                   [--participant ID]\n"
     "                   [--record FILE] [--input FILE] [--space stage|local]\n"
-    "                   [--play-area WxD]\n"
+    "                   [--play-area WxD] [--no-haptics]\n"
     "                   [--check-frame K --check-dir DIR]\n"
     "                   [--tiling 4,Q] [--room CxR] [--cell M]\n"
     "\n"
@@ -52,6 +52,9 @@ static const char *const xr_usage =
     "  --play-area WxD the play area in metres (for example 2.6x2.6), used\n"
     "                  instead of the runtime's stage bounds: a runtime that\n"
     "                  gives none, or a smaller area than it draws\n"
+    "  --no-haptics    no controller pulses (by default a short one when a\n"
+    "                  controller goes into a hedge or a tree trunk, a gentle\n"
+    "                  one on both at each room step: docs/headset.md)\n"
     "  --check-frame K with --check-dir DIR: read eye 0 of frame K back from\n"
     "                  the swapchain, render the same eye with OSMesa, write\n"
     "                  both PNGs to DIR and print how many pixels differ\n"
@@ -71,6 +74,7 @@ typedef struct xr_opts {
     int space; /* 0 or HOL_XR_SPACE_LOCAL (hol_xr_desc.space) */
     play_geometry geo;
     float play_area[2]; /* --play-area (hol_xr_desc.play_area) */
+    int no_haptics;     /* --no-haptics: fns.haptic NULL */
 } xr_opts;
 
 /* --play-area WxD: two sizes in metres, 0.5 to 100 each, "2.6x2.6". 0 ok. */
@@ -117,7 +121,7 @@ static const char *const xr_valued[] = {"--frames",      "--log",       "--recor
 
 static int xr_options(const char *cmd, int argc, char **argv, xr_opts *o)
 {
-    static const char *const flags[] = {"--append", NULL};
+    static const char *const flags[] = {"--append", "--no-haptics", NULL};
     memset(o, 0, sizeof *o);
     o->check_frame = -1;
     cli_opts p;
@@ -146,6 +150,8 @@ static int xr_options(const char *cmd, int argc, char **argv, xr_opts *o)
             o->study = val;
         else if (!strcmp(a, "--append"))
             o->append = 1;
+        else if (!strcmp(a, "--no-haptics"))
+            o->no_haptics = 1;
         else if (!strcmp(a, "--play-area"))
             bad = xr_play_area(cmd, val, o->play_area);
         else if (!strcmp(a, "--space")) {
@@ -278,6 +284,12 @@ static int xr_level_started(void *user)
     return hol_app_get_events(hol_session_app(((xr_ctx *)user)->s))->level_started;
 }
 
+/* The controllers' pulses of the last step (core/hol_haptic.h). */
+static const hol_haptic *xr_haptic(void *user)
+{
+    return &hol_app_get_events(hol_session_app(((xr_ctx *)user)->s))->haptic;
+}
+
 /* A signal asks the OpenXR session to end (STOPPING, then the save). */
 static int xr_poll(void *user)
 {
@@ -299,7 +311,8 @@ static int xr_run(const xr_opts *o, xr_ctx *c, const hol_input *script, long nsc
     d.play_area[1] = o->play_area[1];
     hol_xr_app_fns fns = {.user = c, .step = xr_step, .world = xr_world,
                           .level_started = xr_level_started, .poll_platform = xr_poll,
-                          .fit = xr_fit, .view = xr_view};
+                          .fit = xr_fit, .view = xr_view,
+                          .haptic = o->no_haptics ? NULL : xr_haptic};
     int rc = hol_xr_run(&d, &fns);
     return c->st ? c->st : rc ? CLI_EXIT_FAIL : CLI_EXIT_OK;
 }

@@ -21,6 +21,7 @@ static const cli_command commands[] = {
     {"replay", cli_cmd_replay, "run a recording again: the same logs, PNG frames"},
     {"xr", cli_cmd_xr, "the headset app on this machine's OpenXR runtime (make XR=1)"},
     {"hid", cli_cmd_hid, "game controllers: descriptor field maps, list, watch"},
+    {"props", cli_cmd_props, "a printable plan of where real hedges and trees stand (SVG)"},
     {"report", cli_cmd_report, "research logs to a report: attempts CSV, pictures, a page"},
 };
 

@@ -46,6 +46,8 @@ int play_read_level(const char *cmd, const char *path, hol_level *out)
 
 int play_geometry_value(const char *cmd, const char *opt, const char *val, play_geometry *g)
 {
+    if (!val) /* a flag (--append): never a geometry option */
+        return 0;
     size_t n = strlen(val);
     if (!strcmp(opt, "--tiling")) {
         if (!hol_room_parse_tiling(val, n, &g->q))

@@ -119,6 +119,9 @@ static void hol__figures(hol__xr *x)
 {
     hol__say(x, "xr: frames submitted %ld, reached FOCUSED %s, faded at the boundary %ld",
              x->submitted, x->reached_focused ? "yes" : "no", x->faded);
+    hol__say(x, "xr: controller pulses %ld (%ld into a hedge or a trunk, %ld room steps)%s",
+             x->pulses, x->pulses_hit, x->pulses - x->pulses_hit,
+             x->fns->haptic ? "" : ": off (--no-haptics)");
     if (!x->ncpu)
         return;
     qsort(x->cpu_ms, (size_t)x->ncpu, sizeof x->cpu_ms[0], hol__cmp);

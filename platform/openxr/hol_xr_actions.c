@@ -40,11 +40,14 @@ static int hol__action(hol__xr *x, XrAction *out, const char *name, const char *
 /* The suggested bindings of profile i (hol_xr_bind.h): all must be accepted. */
 static int hol__suggest(hol__xr *x, const hol_xr_profile *p)
 {
-    XrActionSuggestedBinding sb[HOL_XR_ACT_COUNT + 2];
+    XrActionSuggestedBinding sb[HOL_XR_ACT_COUNT + 4];
     uint32_t n = 0;
     for (int h = 0; h < 2; h++) {
         sb[n].action = x->grip_action;
         if (hol__path(x, hol_xr_grip_path(h), &sb[n++].binding))
+            return 1;
+        sb[n].action = x->haptic_action;
+        if (hol__path(x, hol_xr_haptic_path(h), &sb[n++].binding))
             return 1;
     }
     for (int a = 0; a < HOL_XR_ACT_COUNT; a++) {
@@ -72,7 +75,8 @@ int hol__actions(hol__xr *x)
     HOL__XR(x, "create the controller actions", xrCreateActionSet(x->instance, &si, &x->set));
     if (hol__path(x, "/user/hand/left", &x->hand_path[0]) ||
         hol__path(x, "/user/hand/right", &x->hand_path[1]) ||
-        hol__action(x, &x->grip_action, "grip", "Hand pose", XR_ACTION_TYPE_POSE_INPUT, 1))
+        hol__action(x, &x->grip_action, "grip", "Hand pose", XR_ACTION_TYPE_POSE_INPUT, 1) ||
+        hol__action(x, &x->haptic_action, "haptic", "Pulse", XR_ACTION_TYPE_VIBRATION_OUTPUT, 1))
         return 1;
     for (int a = 0; a < HOL_XR_ACT_COUNT; a++)
         if (hol__action(x, &x->act[a], hol_xr_action_name(a), hol_xr_action_label(a),
@@ -179,6 +183,40 @@ int hol__bounds(hol__xr *x)
     hol_fit_text(&x->fit, -1, x->fit_text, sizeof x->fit_text);
     hol__say(x, "xr: stage bounds %.2f x %.2f m", b.width, b.height);
     hol__say(x, "xr: %s", x->fit_text);
+    return 0;
+}
+
+/* ---- haptics --------------------------------------------------------------- */
+
+/* The pulses of the last step (core/hol_haptic.h, through fns->haptic),
+ * played on their hands. A failed pulse is said once and never ends the
+ * run, unless the session or the instance is gone. */
+int hol__haptics(hol__xr *x)
+{
+    const hol_haptic *hp = x->fns->haptic ? x->fns->haptic(x->fns->user) : NULL;
+    for (int h = 0; hp && h < 2; h++) {
+        if (!(hp->hand[h].amplitude > 0))
+            continue;
+        XrHapticVibration v = {XR_TYPE_HAPTIC_VIBRATION};
+        v.duration = (XrDuration)hp->hand[h].duration_ms * 1000000;
+        v.frequency = XR_FREQUENCY_UNSPECIFIED;
+        v.amplitude = hp->hand[h].amplitude;
+        XrHapticActionInfo hi = {XR_TYPE_HAPTIC_ACTION_INFO};
+        hi.action = x->haptic_action;
+        hi.subactionPath = x->hand_path[h];
+        XrResult r = xrApplyHapticFeedback(x->session, &hi, (const XrHapticBaseHeader *)&v);
+        if (XR_FAILED(r) && hol_xr_result_is_loss((int)r))
+            return hol__fail(x, "pulse a controller", r);
+        if (XR_SUCCEEDED(r)) {
+            x->pulses++;
+            x->pulses_hit += hp->hand[h].why != HOL_HAPTIC_STEP;
+        }
+        if (XR_FAILED(r) && !x->haptic_failed) {
+            x->haptic_failed = 1;
+            hol__say(x, "xr: cannot pulse the %s controller: %s; the run goes on without",
+                     h ? "right" : "left", hol_xr_result_words((int)r));
+        }
+    }
     return 0;
 }
 

@@ -40,6 +40,10 @@ typedef struct hol_xr_app_fns {
      * play is placed in the stage from the first frame; NULL: the 3 x 3 m
      * room until the first step. */
     const hol_app_view *(*view)(void *user);
+    /* Optional: the controllers' pulses of the last step (the app's
+     * events.haptic, core/hol_haptic.h), played with xrApplyHapticFeedback;
+     * NULL: none (holonomy xr --no-haptics). */
+    const hol_haptic *(*haptic)(void *user);
 } hol_xr_app_fns;
 
 typedef struct hol_xr_desc {

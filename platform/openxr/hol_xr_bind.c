@@ -101,6 +101,11 @@ const char *hol_xr_grip_path(int hand)
     return hand ? "/user/hand/right/input/grip/pose" : "/user/hand/left/input/grip/pose";
 }
 
+const char *hol_xr_haptic_path(int hand)
+{
+    return hand ? "/user/hand/right/output/haptic" : "/user/hand/left/output/haptic";
+}
+
 uint32_t hol_xr_buttons(hol_xr_keys *k, const int held[HOL_XR_ACT_COUNT], int in_menu)
 {
     static const uint32_t bit[HOL_XR_ACT_COUNT] = {HOL_BTN_CONFIRM,  HOL_BTN_MENU,

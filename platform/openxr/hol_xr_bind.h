@@ -75,6 +75,11 @@ const char *hol_xr_action_label(int act);
 int hol_xr_action_in_layer(int act, int in_menu);
 /* The grip pose path of hand 0 (left) or 1 (right). */
 const char *hol_xr_grip_path(int hand);
+/* The haptic output path of hand 0 (left) or 1 (right): every profile
+ * above has /user/hand/{left,right}/output/haptic, bound to one vibration
+ * output action with the hands as its subaction paths; the app step's
+ * pulses (core/hol_haptic.h) are played on it. */
+const char *hol_xr_haptic_path(int hand);
 
 /* The layer state of hol_xr_buttons; zero it at the session's start. */
 typedef struct hol_xr_keys {

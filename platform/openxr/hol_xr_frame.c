@@ -292,7 +292,8 @@ int hol__frame(hol__xr *x)
     hol_input in;
     float shift[3];
     const hol_app_view *v = NULL;
-    if (views_ok < 0 || hol__input(x, &fs, &in, shift) || hol__step(x, &in, &v))
+    if (views_ok < 0 || hol__input(x, &fs, &in, shift) || hol__step(x, &in, &v) ||
+        hol__haptics(x))
         return 1;
     v = hol__noted(x, v, in.time_s);
     XrCompositionLayerProjectionView pv[2];

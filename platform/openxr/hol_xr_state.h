@@ -129,6 +129,9 @@ typedef struct hol__xr {
     double origin_y; /* the room space's origin in that space (LOCAL: -1.6) */
     XrActionSet set;
     XrAction grip_action, act[HOL_XR_ACT_COUNT];
+    XrAction haptic_action; /* vibration output, per hand (hol_xr_haptic_path) */
+    int haptic_failed;      /* a pulse failed once: said once, not again */
+    long pulses, pulses_hit; /* pulses played (all; of them into a hedge or trunk) */
     XrPath hand_path[2];
     uint32_t nviews;  /* of the stereo configuration: 2 */
     XrView *views;    /* nviews, located each frame */
@@ -212,6 +215,7 @@ int hol__actions(hol__xr *x);
 int hol__spaces(hol__xr *x);
 int hol__bounds(hol__xr *x);
 int hol__bool(hol__xr *x, int act, int *out_held);
+int hol__haptics(hol__xr *x);
 int hol__profiles_now(hol__xr *x);
 /* hol_xr_views.c: the stereo view configuration (x->nviews, x->views) and
  * one swapchain per eye with a framebuffer per image */
