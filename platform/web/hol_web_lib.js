@@ -70,8 +70,16 @@ var HolWebLib = {
       HolXR.session = s;
       HolXR.frames = 0;
       s.addEventListener('end', HolXR.ended);
+      // the pause's reason: a hidden session draws no frames, so the page
+      // hears it here (the headset taken off, its screen asleep); visible
+      // again, the next step tells the page its state anew
       s.addEventListener('visibilitychange', function () {
-        console.log('web: xr visibility ' + s.visibilityState);
+        var v = s.visibilityState;
+        console.log('web: xr visibility ' + v);
+        Module['_hol_web_pause_retell']();
+        if (Module['holEvent'] && v !== 'visible')
+          Module['holEvent']('pause', v === 'hidden' ? 'the headset is off' :
+            'a system menu is over the game');
       });
       console.log('web: xr reference space ' + HolXR.spaceType);
       Module['_hol_web_xr_active'](1);
