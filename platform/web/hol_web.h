@@ -34,6 +34,8 @@ typedef struct hol_web {
     double stats_t0, stats_ms;
     long stats_frames;
     char overlay_text[48];
+    double cpu_total_ms;     /* every frame's main-thread ms since the last */
+    long cpu_total_frames;   /* hol_web_cpu_mean_ms(1) (make bench-web) */
     const char *pause_told;  /* the pause reason last told to the page
                                 (NULL: playing; HOL_WEB_UNTOLD: nothing yet) */
     int failed;

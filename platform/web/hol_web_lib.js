@@ -22,6 +22,28 @@ var HolWebLib = {
     off: null,
     frames: 0,
 
+    scale: 1.0,       // XRWebGLLayer framebufferScaleFactor: the recommended size
+    foveation: 0.5,   // fixedFoveation 0 (none) .. 1 (most): medium
+    maxRate: 90,      // the highest target frame rate asked for (Hz)
+
+    // updateTargetFrameRate: the highest supported rate up to maxRate
+    frameRate: function (s) {
+      var rates = s.supportedFrameRates;
+      if (!rates || !rates.length || !s.updateTargetFrameRate) {
+        console.log('web: xr frame rate: the browser chooses (no supportedFrameRates)');
+        return;
+      }
+      var best = 0;
+      for (var i = 0; i < rates.length; i++)
+        if (rates[i] <= HolXR.maxRate && rates[i] > best) best = rates[i];
+      if (!best) return;
+      s.updateTargetFrameRate(best).then(function () {
+        console.log('web: xr frame rate ' + best + ' Hz');
+      }, function (e) {
+        console.log('web: xr frame rate not set: ' + e.message);
+      });
+    },
+
     supported: async function () {
       if (!navigator.xr || !navigator.xr.isSessionSupported) return false;
       try {
@@ -51,11 +73,18 @@ var HolWebLib = {
       try {
         var gl = GLctx;
         if (gl.makeXRCompatible) await gl.makeXRCompatible();
-        s.updateRenderState({
-          baseLayer: new XRWebGLLayer(s, gl, {
-            antialias: false, depth: true, stencil: true, alpha: false
-          })
+        // quality (docs/web.md: Quality): MSAA where the browser gives it,
+        // the device's recommended resolution (scale 1), medium fixed
+        // foveation where offered, and the highest frame rate up to 90 Hz
+        var layer = new XRWebGLLayer(s, gl, {
+          antialias: true, depth: true, stencil: true, alpha: false,
+          framebufferScaleFactor: HolXR.scale
         });
+        if ('fixedFoveation' in layer) {
+          try { layer.fixedFoveation = HolXR.foveation; } catch (e) { /* not offered */ }
+        }
+        s.updateRenderState({ baseLayer: layer });
+        HolXR.frameRate(s);
         try {
           HolXR.space = await s.requestReferenceSpace('bounded-floor');
           HolXR.spaceType = 'bounded-floor';

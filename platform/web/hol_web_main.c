@@ -211,6 +211,8 @@ void hol_web_stats_add(double c0)
 {
     hol_web *w = &hol_web_g;
     double now = emscripten_get_now();
+    w->cpu_total_ms += now - c0;
+    w->cpu_total_frames++;
     w->stats_ms += now - c0;
     w->stats_frames++;
     if (w->stats_t0 <= 0 || now < w->stats_t0) {
@@ -225,6 +227,17 @@ void hol_web_stats_add(double c0)
         w->stats_ms = 0;
         w->stats_frames = 0;
     }
+}
+
+/* The mean main-thread ms of the frames (pancake and XR: step, and the GL
+ * calls issued) since the last reset; reset: start again. -1: no frame. */
+EMSCRIPTEN_KEEPALIVE double hol_web_cpu_mean_ms(int reset)
+{
+    hol_web *w = &hol_web_g;
+    double m = w->cpu_total_frames ? w->cpu_total_ms / w->cpu_total_frames : -1;
+    if (reset)
+        w->cpu_total_ms = 0, w->cpu_total_frames = 0;
+    return m;
 }
 
 /* F2's line while it is on (the tests read it), else NULL. */
