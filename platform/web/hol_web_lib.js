@@ -68,7 +68,7 @@ var HolWebLib = {
       if (HolXR.session) return;
       var s = await navigator.xr.requestSession('immersive-vr', {
         requiredFeatures: ['local-floor'],
-        optionalFeatures: ['bounded-floor']
+        optionalFeatures: ['bounded-floor', 'hand-tracking']
       });
       try {
         var gl = GLctx;
@@ -98,6 +98,20 @@ var HolWebLib = {
       }
       HolXR.session = s;
       HolXR.frames = 0;
+      HolXR.held = { left: [0, 0], right: [0, 0] };
+      // select (a trigger, or a hand's pinch) and squeeze, held from their
+      // start to their end: the hand's trigger and squeeze buttons (so a
+      // hand with no gamepad confirms, backs, opens the menu: hol_web_xr.h)
+      var hold = function (k, v) {
+        return function (ev) {
+          var h = ev.inputSource && HolXR.held[ev.inputSource.handedness];
+          if (h) h[k] = v;
+        };
+      };
+      s.addEventListener('selectstart', hold(0, 1));
+      s.addEventListener('selectend', hold(0, 0));
+      s.addEventListener('squeezestart', hold(1, 1));
+      s.addEventListener('squeezeend', hold(1, 0));
       s.addEventListener('end', HolXR.ended);
       // the pause's reason: a hidden session draws no frames, so the page
       // hears it here (the headset taken off, its screen asleep); visible
@@ -176,11 +190,18 @@ var HolWebLib = {
               [t.orientation.x, t.orientation.y, t.orientation.z, t.orientation.w], 4);
           }
         }
+        var ev = HolXR.held && HolXR.held[src.handedness];
+        if (ev && (ev[0] || ev[1])) {
+          f[p + o.present] = 1;
+          if (ev[0]) f[p + o.button] = 1;
+          if (ev[1]) f[p + o.button + 1] = 1;
+        }
         if (!gp) continue;
         f[p + o.present] = 1;
         var b = gp.buttons || [];
         f[p + o.touch_layout] = b.length >= 6 && b[4] && b[5] ? 1 : 0;
-        for (var k = 0; k < 8; k++) f[p + o.button + k] = b[k] && b[k].pressed ? 1 : 0;
+        for (var k = 0; k < 8; k++)
+          f[p + o.button + k] = (b[k] && b[k].pressed) || f[p + o.button + k] ? 1 : 0;
         var ax = gp.axes || [];
         for (var k = 0; k < 4; k++) f[p + o.axes + k] = typeof ax[k] === 'number' ? ax[k] : 0;
       }

@@ -436,6 +436,35 @@ await check('the page in every state: why VR is unavailable (no headset; plain h
   await p.ctx.close();
 });
 
+await check('hands without controllers (iwer\'s hand mode): two hand input sources; a left pinch opens the menu, a right pinch restarts there', async () => {
+  const p = await openPage('?mode=explore&seed=2', { iwer: true });
+  await p.page.evaluate(() => { xrDevice.primaryInputMode = 'hand'; });
+  await enterVR(p);
+  const frames = async (n) => {
+    const f0 = await p.state(S.XR_FRAMES);
+    await p.until(async () => (await p.state(S.XR_FRAMES)) >= f0 + n, n + ' XR frames', 120000);
+  };
+  await frames(5);
+  const srcs = await p.page.evaluate(() => Array.from(Module.holXR.session.inputSources)
+    .map((x) => x.handedness + (x.hand ? ' hand' : '')));
+  assert(srcs.length === 2 && srcs.every((x) => / hand$/.test(x)), 'input sources: ' + JSON.stringify(srcs));
+  const pinch = async (hand) => {
+    await p.page.evaluate((h) => xrDevice.hands[h].updatePinchValue(1), hand);
+    await frames(3);
+    await p.page.evaluate((h) => xrDevice.hands[h].updatePinchValue(0), hand);
+    await frames(2);
+  };
+  await frames(20);
+  assert((await p.state(S.PAUSED)) === 0, 'paused before the pinch');
+  await pinch('left');
+  assert((await p.state(S.PAUSED)) === 1, 'a left pinch did not open the menu');
+  const clock = await p.state(S.CLOCK);
+  await pinch('right');
+  assert((await p.state(S.PAUSED)) === 0 && (await p.state(S.CLOCK)) < clock, 'a right pinch did not restart');
+  assert(!p.errors.length, 'errors: ' + p.errors.join('; '));
+  await p.ctx.close();
+});
+
 // ---- WebXR on iwer's Quest 3 -------------------------------------------------
 // explore, no minimap: the eyes are the world alone (as `holonomy render` draws it)
 const XR_SEED = 11;
