@@ -268,9 +268,17 @@ render-run-%: $(BUILD)/tests/%
 	@$(SUITE) $< $<
 
 cli-test: $(CLI_TESTS:tests/%.sh=cli-run-%)
-cli-run-%: $(BUILD)/holonomy $(BUILD)/tests/x11_close $(BUILD)/tests/x11_shot $(BUILD)/tests/png_probe
+cli-run-%: $(BUILD)/holonomy $(BUILD)/tests/x11_close $(BUILD)/tests/x11_shot $(BUILD)/tests/png_probe \
+           $(BUILD)/tests/gl_sync_count.so
 	@HOLONOMY=$(BUILD)/holonomy X11_CLOSE=$(BUILD)/tests/x11_close X11_SHOT=$(BUILD)/tests/x11_shot \
-	  PNG_PROBE=$(BUILD)/tests/png_probe $(SUITE) tests/$*.sh sh tests/$*.sh
+	  PNG_PROBE=$(BUILD)/tests/png_probe GL_SYNC_SO=$(BUILD)/tests/gl_sync_count.so \
+	  $(SUITE) tests/$*.sh sh tests/$*.sh
+
+# A test helper (LD_PRELOAD): the GL calls that wait for the GPU, counted
+# through eglGetProcAddress (tests/cli_gl_sync.sh).
+$(BUILD)/tests/gl_sync_count.so: tests/gl_sync_count.c
+	@mkdir -p $(dir $@)
+	$(CC) $(CSTD) $(WARN) -O2 -D_DEFAULT_SOURCE -fPIC -shared -o $@ $< -ldl
 
 # A test helper: a PNG decoded by render/hol_png.c, its colours counted.
 $(BUILD)/tests/png_probe: tests/png_probe.c render/hol_png.c render/hol_png.h

@@ -752,7 +752,7 @@ static hol_err hol__frame_faded(hol_render *r, const hol_frame_desc *f)
     r->gl.ClearStencil(HOL_VIEW_STENCIL_CLEAR);
     r->gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
     r->gl.Disable(GL_SCISSOR_TEST);
-    return r->gl.GetError() == GL_NO_ERROR ? HOL_OK : HOL_EUNSUPPORTED;
+    return r->desc.debug ? hol_render_check(r) : HOL_OK;
 }
 
 /* Clear the frame (sky, or black for IDs), upload this frame's dynamic
@@ -935,7 +935,7 @@ hol_err hol_render_frame(hol_render *r, const hol_frame_desc *f,
     memset(&st, 0, sizeof st);
     if (f->fade >= 1 && !(f->flags & HOL_RENDER_IDS)) {
         hol_err err = hol__frame_faded(r, f);
-        if (out_stats)
+        if (f->flags & HOL_RENDER_WAIT)
             r->gl.Finish();
         st.cpu_ms = hol__now(CLOCK_PROCESS_CPUTIME_ID) - c0;
         st.wall_ms = hol__now(CLOCK_MONOTONIC) - w0;
@@ -957,17 +957,26 @@ hol_err hol_render_frame(hol_render *r, const hol_frame_desc *f,
     r->gl.Disable(GL_BLEND);
     r->gl.BindVertexArray(0);
     r->gl.Disable(GL_SCISSOR_TEST);
-    if (out_stats)
+    if (f->flags & HOL_RENDER_WAIT)
         r->gl.Finish(); /* the figures include the GPU's time */
     st.cpu_ms = hol__now(CLOCK_PROCESS_CPUTIME_ID) - c0;
     st.uploaded_bytes = r->uploaded;
     st.tiles_built = r->tiles_built;
     st.wall_ms = hol__now(CLOCK_MONOTONIC) - w0;
-    if (r->gl.GetError() != GL_NO_ERROR)
+    if (r->desc.debug && hol_render_check(r))
         return HOL_EUNSUPPORTED;
     if (out_stats)
         *out_stats = st;
     return HOL_OK;
+}
+
+hol_err hol_render_check(hol_render *r)
+{
+    int bad = 0;
+    /* every error flag the GL holds (at most a few: one per kind) */
+    for (int i = 0; i < 8 && r->gl.GetError() != GL_NO_ERROR; i++)
+        bad = 1;
+    return bad ? HOL_EUNSUPPORTED : HOL_OK;
 }
 
 void hol_render_read_rgba(hol_render *r, int w, int h, uint8_t *out_rgba)

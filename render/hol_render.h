@@ -70,6 +70,14 @@ typedef struct hol_render_desc {
                                   linear values, so the stored bytes are those
                                   of a plain RGBA8 buffer. 0: written as they
                                   are (OSMesa, EGL, a linear swapchain) */
+    int debug;                 /* 1: hol_render_frame asks the GL for errors
+                                  after every frame (glGetError: a round trip
+                                  that waits for the GL's queue; a WebGL
+                                  frame spent 284 of 285 ms in it). 0 (normal
+                                  running): no glGet*, glGetError, glFinish or
+                                  glReadPixels in a frame; errors are checked
+                                  at create and by hol_render_check (after a
+                                  resize). Tools and tests set it. */
 } hol_render_desc;
 
 typedef struct hol_render hol_render;
@@ -84,7 +92,11 @@ enum {
                                      hand (hand_* below), the text on screen */
     HOL_RENDER_NO_POLES = 64,     /* no guide poles over the objectives */
     HOL_RENDER_NO_HOT_COLD = 128, /* minimap tiles grey, not hot-cold */
-    HOL_RENDER_NO_ARROW = 256     /* no rim arrows towards far objectives */
+    HOL_RENDER_NO_ARROW = 256,    /* no rim arrows towards far objectives */
+    HOL_RENDER_WAIT = 512         /* wait for the GL to finish the frame
+                                     (glFinish), so out_stats' times include
+                                     the GPU's: benches and --frames timings
+                                     only, never in a frame loop */
 };
 
 #define HOL_RENDER_MAX_OBJECTIVES 8
@@ -184,13 +196,21 @@ void hol_render_set_world(hol_render *r, struct hol_world *world);
 void hol_render_invalidate(hol_render *r);
 
 /* Render one eye into the current framebuffer (viewport: cam size at
- * vp_x, vp_y). Only with out_stats does it wait for the GL to finish (the
- * figures include the GPU's time); without, the frame is queued.
+ * vp_x, vp_y). The frame is queued: nothing in it waits for the GL (no
+ * glGet*, glGetError, glFinish, glReadPixels), unless f->flags has
+ * HOL_RENDER_WAIT (glFinish at the end: out_stats' times then include the
+ * GPU's) or desc.debug is set (glGetError at the end: a GL error is
+ * HOL_EUNSUPPORTED). out_stats' counts are filled either way.
  * Errors: HOL_EARG (eye not inside the user's cell unless fade >= 1, bad
  * size, a cell size outside 0.5..1.5),
  * HOL_ENOMEM (the fixed stores overflowed). */
 hol_err hol_render_frame(hol_render *r, const hol_frame_desc *f,
                          hol_render_stats *out_stats);
+
+/* Ask the GL for errors now (one glGetError round trip): HOL_OK, or
+ * HOL_EUNSUPPORTED when the GL reported one since the last check. For
+ * init and after a resize; not per frame (see desc.debug). */
+hol_err hol_render_check(hol_render *r);
 
 /* The room state an eye sees from (stereo) is the core's business:
  * hol_motion_eye_state (core/hol_motion.h). */

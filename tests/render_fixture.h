@@ -38,6 +38,7 @@ static int render_fixture_make(render_fixture *f, int w, int h, uint64_t seed)
     memset(&rd, 0, sizeof rd);
     rd.world = f->world;
     rd.getproc = hol_osmesa_getproc;
+    rd.debug = 1; /* a test build: every GL error reported */
     if (hol_render_create(&rd, &f->rnd)) {
         fprintf(stderr, "render fixture: cannot create the renderer\n");
         return -1;

@@ -53,6 +53,7 @@ static int setup(void **state)
     hol_render_desc rd;
     memset(&rd, 0, sizeof rd);
     rd.getproc = hol_osmesa_getproc;
+    rd.debug = 1; /* a test build: every GL error reported */
     rd.world = hol_app_world(app);
     return hol_render_create(&rd, &rnd) ? -1 : 0;
 }

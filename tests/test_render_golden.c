@@ -247,6 +247,7 @@ static void test_egl_gles_matches_goldens(void **state)
     memset(&rd, 0, sizeof rd);
     rd.world = fx.world;
     rd.getproc = hol_egl_getproc;
+    rd.debug = 1; /* a test build: every GL error reported */
     hol_render *er = NULL;
     assert_int_equal(hol_render_create(&rd, &er), HOL_OK);
     static uint8_t img[W * H * 4];

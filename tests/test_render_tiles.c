@@ -611,6 +611,7 @@ static void test_allocator_hooks(void **state)
     memset(&rd, 0, sizeof rd);
     rd.world = fx.world;
     rd.getproc = hol_osmesa_getproc;
+    rd.debug = 1; /* a test build: every GL error reported */
     rd.alloc = count_alloc_hooks();
     hol_render *r = NULL;
     assert_int_equal(hol_render_create(&rd, &r), HOL_OK);

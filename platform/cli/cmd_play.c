@@ -126,6 +126,8 @@ typedef struct play_ctx {
     double t0, last_t;
     frame_stats fs;
     int overlay; /* F2: the frame time drawn */
+    int drawn_w, drawn_h; /* the window's size at the last frame: a new one
+                             is checked for GL errors (no frame waits else) */
 } play_ctx;
 
 /* ---- options ------------------------------------------------------------------ */
@@ -285,6 +287,9 @@ static int play_prepare(play_ctx *c)
     hol_render_desc rd;
     memset(&rd, 0, sizeof rd);
     rd.getproc = hol_egl_getproc;
+    /* HOLONOMY_GL_DEBUG=1: every frame asks the GL for errors (a wait) */
+    const char *dbg = getenv("HOLONOMY_GL_DEBUG");
+    rd.debug = dbg && dbg[0] && strcmp(dbg, "0");
     rd.world = hol_app_world(hol_session_app(c->s));
     hol_err err = hol_render_create(&rd, &c->r);
     if (err) {
@@ -420,6 +425,11 @@ static int play_draw(play_ctx *c)
     hol_app_frame_desc(hol_app_get_view(hol_session_app(c->s)), -1, c->xw.w, c->xw.h, 0, &fd);
     fd.overlay = c->overlay ? c->fs.text : NULL;
     hol_err err = hol_render_frame(c->r, &fd, NULL);
+    if (!err && (c->xw.w != c->drawn_w || c->xw.h != c->drawn_h)) {
+        c->drawn_w = c->xw.w; /* the first frame, or a resize: one check */
+        c->drawn_h = c->xw.h;
+        err = hol_render_check(c->r);
+    }
     if (err) {
         cli_error(c->cmd, 0, "rendering failed: %s", hol_err_str(err));
         return CLI_EXIT_FAIL;

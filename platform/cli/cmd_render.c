@@ -707,6 +707,8 @@ static int setup_scene(const char *cmd, const render_opts *o, int gl, hol_frame_
     rd.max_width = rd.max_height = 8192;
     rd.world = sc->world;
     rd.getproc = gl != RENDER_OSMESA ? hol_egl_getproc : hol_osmesa_getproc; /* x11 too */
+    rd.debug = gl != RENDER_WINDOW; /* a tool's frames: every GL error reported
+                                       (the live window's frames sync nothing) */
     if ((err = hol_render_create(&rd, &sc->r))) {
         cli_error(cmd, 0, "cannot initialise the renderer: %s", hol_err_str(err));
         return CLI_EXIT_FAIL;
@@ -782,6 +784,8 @@ static int render_frames(const char *cmd, const render_opts *o, const hol_frame_
     int neyes = setup_eyes(cmd, o, fd, eye_fd), ew = (int)o->w / (neyes ? neyes : 1);
     if (!neyes)
         return CLI_EXIT_USAGE;
+    for (int e = 0; e < neyes && o->stats; e++)
+        eye_fd[e].flags |= HOL_RENDER_WAIT; /* the CPU ms include the GPU's */
     for (long k = 0; k < o->frames; k++) {
         sc->cpu[k] = 0;
         for (int e = 0; e < neyes; e++) {

@@ -169,6 +169,7 @@ static int replay_renderer(replay_ctx *c)
     hol_render_desc rd;
     memset(&rd, 0, sizeof rd);
     rd.getproc = hol_osmesa_getproc;
+    rd.debug = 1; /* a tool's frames: every GL error reported */
     rd.world = hol_app_world(hol_session_app(c->s));
     c->rgba = malloc((size_t)c->w * (size_t)c->h * 4);
     hol_err e = c->rgba ? hol_render_create(&rd, &c->r) : HOL_ENOMEM;

@@ -25,6 +25,19 @@ typedef struct hol_web {
     int over;                /* the session is over (quit, campaign done) */
     int drawn_over;          /* the last view was drawn after that */
     int drawn_first;         /* the first frame was drawn */
+    int drawn_w, drawn_h;    /* the canvas size of the last pancake frame:
+                                a new size is checked for GL errors */
+    int xr_checked;          /* this XR session's first frame was checked */
+    /* F2: the frame time on the view, as the desktop's (FPS and the main
+     * thread's ms a frame: step and GL calls issued, over the last second) */
+    int overlay;
+    double stats_t0, stats_ms;
+    long stats_frames;
+    char overlay_text[48];
+    double cpu_total_ms;     /* every frame's main-thread ms since the last */
+    long cpu_total_frames;   /* hol_web_cpu_mean_ms(1) (make bench-web) */
+    const char *pause_told;  /* the pause reason last told to the page
+                                (NULL: playing; HOL_WEB_UNTOLD: nothing yet) */
     int failed;
     int geo_named;           /* the page named the room (1) or the cell (2):
                                 the play area's fit leaves them */
@@ -59,6 +72,11 @@ hol_app *hol_web_game_app(void);
 void hol_web_game_finish(void);
 /* the end line, as `holonomy play` prints it */
 void hol_web_game_print_end(void);
+
+/* hol_web_main.c: F2's figures, a frame of c0..now (emscripten_get_now) */
+void hol_web_stats_add(double c0);
+/* F2's line while it is on, else NULL */
+const char *hol_web_overlay(void);
 
 /* hol_web_main.c: one step of the session and what follows it (a level
  * started: meshes rebuilt; over: the end line, the files committed, the

@@ -22,7 +22,7 @@ int hol_web_key_from_code(const char *code)
         {"Space", HOL_WEB_K_CONFIRM},     {"KeyP", HOL_WEB_K_MENU},
         {"KeyR", HOL_WEB_K_RESTART},      {"KeyM", HOL_WEB_K_MINIMAP},
         {"F3", HOL_WEB_K_DEBUG},          {"KeyQ", HOL_WEB_K_QUIT},
-        {"Escape", HOL_WEB_K_ESCAPE},
+        {"Escape", HOL_WEB_K_ESCAPE},     {"F2", HOL_WEB_K_STATS},
     };
     for (size_t i = 0; code && i < sizeof map / sizeof map[0]; i++)
         if (!strcmp(code, map[i].code))

@@ -8,7 +8,7 @@
  *   desktop's `holonomy play`: W/S or Up/Down walk, A/D step sideways,
  *   Left/Right turn (with a snap angle: snap, one turn a press), PgUp/PgDn
  *   look, Enter/Space confirm, P menu, R restart, M minimap, F3 debug,
- *   Q quit; Escape quits only while the pointer is not locked (with the
+ *   F2 the frame time (the loop's toggle: no button), Q quit; Escape quits only while the pointer is not locked (with the
  *   pointer locked the browser takes Escape to release it).
  * - A key counts while held or when it went down since the last frame (a
  *   tap between two frames: `taps`), and its button's `pressed` bit is set
@@ -54,6 +54,7 @@ enum {
     HOL_WEB_K_DEBUG,
     HOL_WEB_K_QUIT,
     HOL_WEB_K_ESCAPE, /* quit unless the pointer is locked */
+    HOL_WEB_K_STATS,  /* F2: the frame time on the view (the loop's, no button) */
     HOL_WEB_K_COUNT
 };
 

@@ -22,6 +22,28 @@ var HolWebLib = {
     off: null,
     frames: 0,
 
+    scale: 1.0,       // XRWebGLLayer framebufferScaleFactor: the recommended size
+    foveation: 0.5,   // fixedFoveation 0 (none) .. 1 (most): medium
+    maxRate: 90,      // the highest target frame rate asked for (Hz)
+
+    // updateTargetFrameRate: the highest supported rate up to maxRate
+    frameRate: function (s) {
+      var rates = s.supportedFrameRates;
+      if (!rates || !rates.length || !s.updateTargetFrameRate) {
+        console.log('web: xr frame rate: the browser chooses (no supportedFrameRates)');
+        return;
+      }
+      var best = 0;
+      for (var i = 0; i < rates.length; i++)
+        if (rates[i] <= HolXR.maxRate && rates[i] > best) best = rates[i];
+      if (!best) return;
+      s.updateTargetFrameRate(best).then(function () {
+        console.log('web: xr frame rate ' + best + ' Hz');
+      }, function (e) {
+        console.log('web: xr frame rate not set: ' + e.message);
+      });
+    },
+
     supported: async function () {
       if (!navigator.xr || !navigator.xr.isSessionSupported) return false;
       try {
@@ -46,16 +68,23 @@ var HolWebLib = {
       if (HolXR.session) return;
       var s = await navigator.xr.requestSession('immersive-vr', {
         requiredFeatures: ['local-floor'],
-        optionalFeatures: ['bounded-floor']
+        optionalFeatures: ['bounded-floor', 'hand-tracking']
       });
       try {
         var gl = GLctx;
         if (gl.makeXRCompatible) await gl.makeXRCompatible();
-        s.updateRenderState({
-          baseLayer: new XRWebGLLayer(s, gl, {
-            antialias: false, depth: true, stencil: true, alpha: false
-          })
+        // quality (docs/web.md: Quality): MSAA where the browser gives it,
+        // the device's recommended resolution (scale 1), medium fixed
+        // foveation where offered, and the highest frame rate up to 90 Hz
+        var layer = new XRWebGLLayer(s, gl, {
+          antialias: true, depth: true, stencil: true, alpha: false,
+          framebufferScaleFactor: HolXR.scale
         });
+        if ('fixedFoveation' in layer) {
+          try { layer.fixedFoveation = HolXR.foveation; } catch (e) { /* not offered */ }
+        }
+        s.updateRenderState({ baseLayer: layer });
+        HolXR.frameRate(s);
         try {
           HolXR.space = await s.requestReferenceSpace('bounded-floor');
           HolXR.spaceType = 'bounded-floor';
@@ -69,9 +98,31 @@ var HolWebLib = {
       }
       HolXR.session = s;
       HolXR.frames = 0;
+      HolXR.held = { left: [0, 0], right: [0, 0] };
+      // select (a trigger, or a hand's pinch) and squeeze, held from their
+      // start to their end: the hand's trigger and squeeze buttons (so a
+      // hand with no gamepad confirms, backs, opens the menu: hol_web_xr.h)
+      var hold = function (k, v) {
+        return function (ev) {
+          var h = ev.inputSource && HolXR.held[ev.inputSource.handedness];
+          if (h) h[k] = v;
+        };
+      };
+      s.addEventListener('selectstart', hold(0, 1));
+      s.addEventListener('selectend', hold(0, 0));
+      s.addEventListener('squeezestart', hold(1, 1));
+      s.addEventListener('squeezeend', hold(1, 0));
       s.addEventListener('end', HolXR.ended);
+      // the pause's reason: a hidden session draws no frames, so the page
+      // hears it here (the headset taken off, its screen asleep); visible
+      // again, the next step tells the page its state anew
       s.addEventListener('visibilitychange', function () {
-        console.log('web: xr visibility ' + s.visibilityState);
+        var v = s.visibilityState;
+        console.log('web: xr visibility ' + v);
+        Module['_hol_web_pause_retell']();
+        if (Module['holEvent'] && v !== 'visible')
+          Module['holEvent']('pause', v === 'hidden' ? 'the headset is off' :
+            'a system menu is over the game');
       });
       console.log('web: xr reference space ' + HolXR.spaceType);
       Module['_hol_web_xr_active'](1);
@@ -139,11 +190,18 @@ var HolWebLib = {
               [t.orientation.x, t.orientation.y, t.orientation.z, t.orientation.w], 4);
           }
         }
+        var ev = HolXR.held && HolXR.held[src.handedness];
+        if (ev && (ev[0] || ev[1])) {
+          f[p + o.present] = 1;
+          if (ev[0]) f[p + o.button] = 1;
+          if (ev[1]) f[p + o.button + 1] = 1;
+        }
         if (!gp) continue;
         f[p + o.present] = 1;
         var b = gp.buttons || [];
         f[p + o.touch_layout] = b.length >= 6 && b[4] && b[5] ? 1 : 0;
-        for (var k = 0; k < 8; k++) f[p + o.button + k] = b[k] && b[k].pressed ? 1 : 0;
+        for (var k = 0; k < 8; k++)
+          f[p + o.button + k] = (b[k] && b[k].pressed) || f[p + o.button + k] ? 1 : 0;
         var ax = gp.axes || [];
         for (var k = 0; k < 4; k++) f[p + o.axes + k] = typeof ax[k] === 'number' ? ax[k] : 0;
       }

@@ -49,6 +49,11 @@ static EM_BOOL on_key(int type, const EmscriptenKeyboardEvent *e, void *user)
     int k = hol_web_key_from_code(e->code);
     if (k < 0 || e->ctrlKey || e->altKey || e->metaKey)
         return EM_FALSE; /* the browser's own keys stay the browser's */
+    if (k == HOL_WEB_K_STATS) { /* F2: the frame time on the view, as the desktop's */
+        if (type == EMSCRIPTEN_EVENT_KEYDOWN && !e->repeat)
+            hol_web_g.overlay = !hol_web_g.overlay;
+        return EM_TRUE;
+    }
     hol_web_key(&hol_web_g.pan, k, type == EMSCRIPTEN_EVENT_KEYDOWN, e->repeat);
     return EM_TRUE;
 }
@@ -202,6 +207,79 @@ EMSCRIPTEN_KEEPALIVE double hol_web_state(int what)
 
 /* ---- the loop ------------------------------------------------------------- */
 
+void hol_web_stats_add(double c0)
+{
+    hol_web *w = &hol_web_g;
+    double now = emscripten_get_now();
+    w->cpu_total_ms += now - c0;
+    w->cpu_total_frames++;
+    w->stats_ms += now - c0;
+    w->stats_frames++;
+    if (w->stats_t0 <= 0 || now < w->stats_t0) {
+        w->stats_t0 = now;
+        w->stats_ms = 0;
+        w->stats_frames = 0;
+        snprintf(w->overlay_text, sizeof w->overlay_text, "FPS - CPU - MS");
+    } else if (now - w->stats_t0 >= 1000) {
+        snprintf(w->overlay_text, sizeof w->overlay_text, "FPS %.1f CPU %.1f MS",
+                 w->stats_frames * 1000.0 / (now - w->stats_t0), w->stats_ms / w->stats_frames);
+        w->stats_t0 = now;
+        w->stats_ms = 0;
+        w->stats_frames = 0;
+    }
+}
+
+/* The mean main-thread ms of the frames (pancake and XR: step, and the GL
+ * calls issued) since the last reset; reset: start again. -1: no frame. */
+EMSCRIPTEN_KEEPALIVE double hol_web_cpu_mean_ms(int reset)
+{
+    hol_web *w = &hol_web_g;
+    double m = w->cpu_total_frames ? w->cpu_total_ms / w->cpu_total_frames : -1;
+    if (reset)
+        w->cpu_total_ms = 0, w->cpu_total_frames = 0;
+    return m;
+}
+
+/* F2's line while it is on (the tests read it), else NULL. */
+EMSCRIPTEN_KEEPALIVE const char *hol_web_overlay(void)
+{
+    return hol_web_g.overlay ? hol_web_g.overlay_text : NULL;
+}
+
+#define HOL_WEB_UNTOLD "?"
+
+/* Why the game is paused now (NULL: it is not), for the page's status. */
+static const char *pause_reason(const hol_input *in, const hol_app_view *v)
+{
+    hol_web *w = &hol_web_g;
+    if (!v->paused)
+        return NULL;
+    if (!(in->flags & HOL_INPUT_FOCUSED)) {
+        if (!w->xr_active)
+            return "the window is not focused";
+        return w->xf.visibility < 0.5f ? "the headset is off" : "a system menu is over the game";
+    }
+    if (in->flags & HOL_INPUT_DEVICE_LOST)
+        return "the game controller went away";
+    return "the menu is open";
+}
+
+/* The page's visibilitychange (XR): the next step tells its reason anew. */
+EMSCRIPTEN_KEEPALIVE void hol_web_pause_retell(void)
+{
+    hol_web_g.pause_told = HOL_WEB_UNTOLD;
+}
+
+static void tell_pause(const hol_input *in)
+{
+    hol_web *w = &hol_web_g;
+    const char *why = pause_reason(in, hol_app_get_view(hol_web_game_app()));
+    if (why == w->pause_told)
+        return;
+    w->pause_told = why;
+    hol_web_js_event(why ? "pause" : "resume", why ? why : "");
+}
+
 /* Time since the start, never going back. */
 static double now_s(double t_ms)
 {
@@ -224,6 +302,8 @@ int hol_web_step(const hol_input *in)
     }
     if (hol_app_get_events(hol_web_game_app())->level_started)
         hol_render_invalidate(w->rnd);
+    if (rc == 0)
+        tell_pause(in);
     if (rc > 0) {
         w->over = 1;
         hol_web_game_print_end();
@@ -240,6 +320,7 @@ static EM_BOOL pancake_frame(double t_ms, void *user)
     hol_web *w = &hol_web_g;
     if (w->xr_active || w->failed || (w->over && w->drawn_over))
         return EM_TRUE; /* the XR session draws, or nothing is left to do */
+    double c0 = emscripten_get_now();
     if (!w->over) {
         double t = now_s(t_ms), dt = t - w->last_frame_t;
         w->last_frame_t = t;
@@ -258,8 +339,16 @@ static EM_BOOL pancake_frame(double t_ms, void *user)
         return EM_TRUE;
     hol_frame_desc fd;
     hol_app_frame_desc(hol_app_get_view(hol_web_game_app()), -1, cw, ch, 0, &fd);
+    fd.overlay = hol_web_overlay();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    if (hol_render_frame(w->rnd, &fd, NULL)) {
+    hol_err err = hol_render_frame(w->rnd, &fd, NULL);
+    if (!err && (cw != w->drawn_w || ch != w->drawn_h)) {
+        w->drawn_w = cw; /* the first frame, or a resize: one error check
+                            (glGetError waits for the GL: never per frame) */
+        w->drawn_h = ch;
+        err = hol_render_check(w->rnd);
+    }
+    if (err) {
         printf("web: rendering failed\n");
         w->failed = w->over = 1;
         hol_web_js_event("failed", "rendering failed");
@@ -268,6 +357,7 @@ static EM_BOOL pancake_frame(double t_ms, void *user)
         printf("web: first frame %.0f ms after the page began loading\n",
                emscripten_performance_now());
     }
+    hol_web_stats_add(c0);
     return EM_TRUE;
 }
 
@@ -321,6 +411,7 @@ int main(void)
 {
     hol_web *w = &hol_web_g;
     w->check_frame = -1;
+    w->pause_told = HOL_WEB_UNTOLD;
     char msg[256] = "";
     if (make_gl()) {
         hol_web_js_event("failed", "this browser has no WebGL 2 with a stencil buffer");
@@ -339,6 +430,9 @@ int main(void)
     hol_render_desc rd;
     memset(&rd, 0, sizeof rd);
     rd.getproc = gl_getproc;
+    char dbg[8];
+    hol_web_js_config("gldebug", dbg, sizeof dbg); /* ?gldebug=1: check every frame */
+    rd.debug = dbg[0] && strcmp(dbg, "0");
     rd.world = hol_app_world(hol_web_game_app());
     if (hol_render_create(&rd, &w->rnd)) {
         hol_web_js_event("failed", "cannot initialise the renderer on this WebGL context");

@@ -29,6 +29,9 @@
  *   right trigger confirm, right squeeze back,
  *   left trigger menu, left squeeze minimap, left thumbstick press
  *   recentre. The thumbsticks' axes move nothing: the player walks.
+ *   WebXR's select and squeeze (a hand's pinch, which has no gamepad on
+ *   every browser) are written by the glue as that hand's trigger and
+ *   squeeze held (present set), so hands alone use the second layout.
  * - hol_web_xr_input fills the frame's record: time, HOL_INPUT_FOCUSED
  *   while the session is `visible` (not `visible-blurred` or `hidden`), the
  *   head (the viewer pose) and both grips in room coordinates, buttons,

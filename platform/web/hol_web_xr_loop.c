@@ -73,6 +73,11 @@ EMSCRIPTEN_KEEPALIVE void hol_web_xr_active(int on)
     hol_web *w = &hol_web_g;
     w->xr_active = on;
     w->drawn_over = 0;
+    w->xr_checked = 0;
+    /* every session's first frame with a head re-places the room around it,
+     * as a recentre does: the head's place in the new reference space is
+     * not a walk from where the pancake view (or the last session) stood */
+    w->xr_recentred = on;
     if (on) {
         memset(&w->xr, 0, sizeof w->xr);
         w->xr.last_t = w->last_t;
@@ -133,6 +138,7 @@ static void xr_render(const hol_app_view *v, const hol_input *in, int fb)
             continue;
         hol_frame_desc fd;
         hol_app_frame_desc(v, n == 2 ? e : -1, cam[e].width, cam[e].height, 0, &fd);
+        fd.overlay = hol_web_overlay();
         fd.cam = cam[e];
         fd.vp_x = (int)vw->vp[0];
         fd.vp_y = (int)vw->vp[1];
@@ -148,6 +154,11 @@ static void xr_render(const hol_app_view *v, const hol_input *in, int fb)
         if (hol_render_frame(w->rnd, &fd, NULL)) {
             fd.fade = 1; /* never a stale image */
             hol_render_frame(w->rnd, &fd, NULL);
+        }
+        if (!w->xr_checked) { /* the session's first frame: one error check */
+            w->xr_checked = 1;
+            if (hol_render_check(w->rnd))
+                printf("web: the GL reported an error at the XR session's first frame\n");
         }
         if (checking) {
             w->check_user[e] = fd.user;
@@ -241,6 +252,7 @@ EMSCRIPTEN_KEEPALIVE int hol_web_xr_step(double t_ms, int fb)
     xr_render(xr_noted(hol_app_get_view(hol_web_game_app())), &in, fb);
     if (w->xr_ncpu < (int)(sizeof w->xr_cpu_ms / sizeof w->xr_cpu_ms[0]))
         w->xr_cpu_ms[w->xr_ncpu++] = emscripten_get_now() - c0;
+    hol_web_stats_add(c0);
     w->xr_frames++;
     return 0;
 }

@@ -18,11 +18,41 @@
 (function () {
   var params = new URLSearchParams(location.search);
   var config = {};
-  ['mode', 'seed', 'participant', 'snap', 'tiling', 'room', 'cell'].forEach(function (k) {
+  ['mode', 'seed', 'participant', 'snap', 'tiling', 'room', 'cell', 'gldebug'].forEach(function (k) {
     if (params.has(k)) config[k] = params.get(k);
   });
   var $ = function (id) { return document.getElementById(id); };
   var status = function (s) { $('status').textContent = s; };
+  // the page's state: playing (in VR or not), paused (and why), over
+  var playing = 'Playing', inVR = false, over = false;
+  var resumeStatus = function () { status(inVR ? 'In VR' : playing); };
+
+  // ---- the VR button: Enter VR, Exit VR, or why VR is not offered ----
+  function vrButton(text, enabled, why) {
+    var b = $('vr');
+    b.textContent = text;
+    b.disabled = !enabled;
+    b.title = why || '';
+    b.hidden = false;
+  }
+  function vrAvailability() {
+    if (over) { $('vr').hidden = true; return; }
+    if (inVR) { vrButton('Exit VR', true); return; }
+    if (!window.isSecureContext) {
+      vrButton('VR needs https:// or localhost', false,
+        'WebXR runs only on a secure page: open it with https://, or from localhost (docs/web.md)');
+      return;
+    }
+    if (!navigator.xr) {
+      vrButton('No VR in this browser', false, 'this browser has no WebXR');
+      return;
+    }
+    Module.holXR.supported().then(function (ok) {
+      if (over || inVR) return;
+      if (ok) vrButton('Enter VR', true);
+      else vrButton('No VR headset found', false, 'connect a headset (or open the page in its browser) and reload');
+    });
+  }
 
   // ---- canvas size: CSS pixels times the device's ratio (at most 2) ----
   var canvas = $('canvas');
@@ -118,9 +148,16 @@
     printErr: function (s) { console.warn(s); },
     holEvent: function (kind, text) {
       if (kind === 'ready') {
-        status(config.levelName ? 'Playing ' + config.levelName : 'Playing');
+        playing = config.levelName ? 'Playing ' + config.levelName : 'Playing';
+        status(playing);
         canvas.focus();
-        Module.holXR.supported().then(function (ok) { $('vr').hidden = !ok; });
+        vrAvailability();
+        if (navigator.xr && navigator.xr.addEventListener)
+          navigator.xr.addEventListener('devicechange', vrAvailability);
+      } else if (kind === 'pause') {
+        if (!over) status('Paused: ' + text);
+      } else if (kind === 'resume') {
+        if (!over) resumeStatus();
       } else if (kind === 'fit') {
         status(text);
       } else if (kind === 'fit-offer') {
@@ -130,12 +167,19 @@
         var a = $('fitlink');
         if (a) { a.href = u.href; a.hidden = false; }
       } else if (kind === 'xr') {
-        status(text === 'started' ? 'In VR' : 'Playing');
+        inVR = text === 'started';
+        if (!over) resumeStatus();
+        vrAvailability();
       } else if (kind === 'over') {
+        over = true;
         status('Session over: the logs are kept in this browser (Logs).');
+        vrAvailability();
+        $('again').hidden = false;
         refreshLogs();
         $('logs').hidden = false;
       } else if (kind === 'failed') {
+        over = true;
+        vrAvailability();
         status('Failed: ' + text);
         console.error('holonomy: ' + text);
       } else if (kind === 'saved') {
@@ -161,8 +205,11 @@
     window.holonomyStore.journal(document.hidden);
   });
   $('vr').addEventListener('click', function () {
+    if (inVR) { Module.holXR.leave(); return; }
     Module.holXR.enter().catch(function (e) { status('VR failed: ' + e.message); });
   });
+  // after the session: the same page afresh (its level, its parameters)
+  $('again').addEventListener('click', function () { location.reload(); });
 
   // the game starts once the store holds what earlier pages kept
   function start() {

@@ -3,6 +3,8 @@
 //   wasm under node (tests/bench_web.c), and their ratio;
 // - the first frame from page load in headless chromium (SwiftShader);
 // - the compressed transfer size of build/web (gzip -9 and brotli);
+// - the main thread per pancake and XR frame with the per-frame glGetError
+//   (?gldebug=1, as before it was taken out of the frame path) and without;
 // - CPU per XR frame at 800x600 on iwer's Quest 3 under SwiftShader: the
 //   page's main thread (step and both eyes' GL calls issued) and all of
 //   chromium's processes together (/proc: browser, renderer, GPU process
@@ -83,6 +85,24 @@ try {
     await p.ctx.close();
   }
   console.log(`  first frame from page load (flag level; median of 3 loads): ${median(first)} ms`);
+  // the main thread per frame with the frame path's error check (?gldebug=1:
+  // glGetError after every eye, as every frame did before it was taken out)
+  // and without (normal running), pancake and XR, in this one run
+  for (const [label, q] of [['with glGetError per frame (before)', '&gldebug=1'], ['normal running (after)', '']]) {
+    const d = await openPage(browser, server.base + '/?mode=flag&seed=1' + q, { iwer: true });
+    const mean = async (frames, n) => {
+      await d.until(async () => (await frames()) >= 10, 'warm-up frames', 120000);
+      await d.page.evaluate(() => Module._hol_web_cpu_mean_ms(1));
+      const f0 = await frames();
+      await d.until(async () => (await frames()) >= f0 + n, n + ' frames', 240000);
+      return d.page.evaluate(() => Module._hol_web_cpu_mean_ms(1));
+    };
+    const pan = await mean(() => d.state(0), 60);
+    await enterVR(d);
+    const xrm = await mean(() => d.state(1), 60);
+    console.log(`  main thread per frame, ${label}: pancake ${pan.toFixed(2)} ms, XR (both eyes) ${xrm.toFixed(2)} ms (means of 60 frames)`);
+    await d.ctx.close();
+  }
   const p = await openPage(browser, server.base + '/?mode=flag&seed=1', { iwer: true });
   await enterVR(p);
   await p.until(async () => (await p.state(1)) >= 60, 'warm-up XR frames', 120000);

@@ -46,6 +46,9 @@ export function launch(chromium, dir, w, h) {
     args: ['--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader',
       '--disable-background-networking', '--disable-component-update', '--disable-sync',
       '--no-first-run', '--no-default-browser-check', '--disable-default-apps', '--mute-audio',
+      // a name for 127.0.0.1 that is not localhost: the page as a LAN
+      // address serves it (http://, not a secure context: no WebXR)
+      '--host-resolver-rules=MAP lan.holonomy.test 127.0.0.1',
       `--window-size=${w},${h}`],
   });
 }
@@ -55,7 +58,7 @@ const iwerSource = fs.readFileSync(path.join(here, 'node_modules/iwer/build/iwer
 // A page in its own browser context (its own IndexedDB), loaded and
 // playing. Collects the console, page errors and failed requests.
 export async function openPage(browser, url, { iwer = false, gamepad = false, touch = false,
-  fail = false, bounds = null } = {}) {
+  fail = false, bounds = null, syncCount = false } = {}) {
   const ctx = await browser.createBrowserContext();
   const page = await ctx.newPage();
   if (touch) {
@@ -83,6 +86,28 @@ export async function openPage(browser, url, { iwer = false, gamepad = false, to
       Object.defineProperty(XRReferenceSpace.prototype, 'boundsGeometry', {
         configurable: true, get() { return b.map(([x, z]) => ({ x, y: 0, z, w: 1 })); } });
     }, bounds);
+  // The calls that wait for the GPU (getError, finish, readPixels, every
+  // get*: a synchronous round trip to the GPU process) made by the page's
+  // code (holonomy.js and its wasm, page.js; not iwer's emulation), counted
+  // by name in window.__sync from when __sync.on is set.
+  if (syncCount)
+    await page.evaluateOnNewDocument(() => {
+      const sync = window.__sync = { on: false, n: 0, names: {} };
+      const P = WebGL2RenderingContext.prototype;
+      for (const k of Object.getOwnPropertyNames(P)) {
+        if (!/^(get|finish$|readPixels$)/.test(k)) continue;
+        const d = Object.getOwnPropertyDescriptor(P, k);
+        if (typeof d.value !== 'function') continue;
+        const f = d.value;
+        P[k] = function (...a) {
+          if (sync.on && /holonomy\.js|page\.js|wasm/.test(new Error().stack)) {
+            sync.n++;
+            sync.names[k] = (sync.names[k] || 0) + 1;
+          }
+          return f.apply(this, a);
+        };
+      }
+    });
   if (gamepad)
     await page.evaluateOnNewDocument(() => {
       window.__pad = { axes: [0, 0, 0, 0], buttons: new Array(17).fill(0) };

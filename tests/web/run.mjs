@@ -25,7 +25,10 @@ const t0 = Date.now();
 
 // ---- checks ----------------------------------------------------------------
 let passed = 0, failed = 0;
+// WEB_TEST_ONLY=REGEX: only the checks whose names match (the rest skipped)
+const ONLY = process.env.WEB_TEST_ONLY ? new RegExp(process.env.WEB_TEST_ONLY) : null;
 async function check(name, fn) {
+  if (ONLY && !ONLY.test(name)) return;
   const t = Date.now();
   try {
     await fn();
@@ -297,11 +300,177 @@ await check('a gamepad (a getGamepads shim, standard mapping) walks one room ste
   await p.ctx.close();
 });
 
+// ---- the frame path waits for nothing; entering VR walks nothing; the page's states ----
+const statusOf = (p) => p.page.evaluate(() => document.getElementById('status').textContent);
+const vrButton = (p) => p.page.evaluate(() => {
+  const b = document.getElementById('vr'), a = document.getElementById('again');
+  return { text: b.textContent, hidden: b.hidden, disabled: b.disabled, again: !a.hidden };
+});
+async function exitVR(p) {
+  await p.until(async () => (await vrButton(p)).text === 'Exit VR', 'the Exit VR button');
+  // (iwer's emulator lays its full-page container over the page: the
+  // button is clicked as a script, as the browser's click event would)
+  await p.page.evaluate(() => document.getElementById('vr').click());
+  await p.until(() => p.page.evaluate(() => !Module.holXR.session), 'the XR session to end');
+  // iwer leaves its (empty) full-page container over the page
+  await p.page.evaluate(() => document.querySelector('[data-webxr_runtime]')?.remove());
+}
+
+await check('no GPU sync in the frame path: 0 getError, finish, readPixels or get* calls over 300 pancake frames and 300 XR frames', async () => {
+  const p = await openPage('?mode=explore&seed=2', { iwer: true, syncCount: true });
+  const count = async (what, frames, n) => {
+    await p.until(async () => (await frames()) >= 5, what + ': first frames', 60000);
+    await p.page.evaluate(() => { __sync.n = 0; __sync.names = {}; __sync.on = true; });
+    const f0 = await frames(), t = Date.now();
+    await p.until(async () => (await frames()) >= f0 + n, `${n} ${what} frames`, 240000);
+    const r = await p.page.evaluate(() => { __sync.on = false; return { n: __sync.n, names: __sync.names }; });
+    console.log(`# ${what}: ${r.n} sync calls over ${n} frames (${((Date.now() - t) / n).toFixed(1)} ms a frame) ${JSON.stringify(r.names)}`);
+    return r;
+  };
+  const pan = await count('pancake', () => p.state(S.FRAMES), 300);
+  await enterVR(p);
+  const xrc = await count('XR', () => p.state(S.XR_FRAMES), 300);
+  assert(pan.n === 0, 'pancake: ' + JSON.stringify(pan.names));
+  assert(xrc.n === 0, 'XR: ' + JSON.stringify(xrc.names));
+  assert(!p.errors.length, 'errors: ' + p.errors.join('; '));
+  await p.ctx.close();
+});
+
+await check('entering, leaving and entering VR again walks nothing: walk a step in pancake, Enter VR, Exit VR, walk a step, Enter VR: the log holds the two walked steps', async () => {
+  const p = await openPage('?mode=explore&seed=2', { iwer: true });
+  const walk = async () => {
+    const n = await p.state(S.STEPS);
+    await p.page.keyboard.down('KeyW');
+    await p.until(async () => (await p.state(S.STEPS)) > n, 'a room step');
+    await p.page.keyboard.up('KeyW');
+  };
+  const xrFor = async (n) => {
+    await enterVR(p);
+    const f0 = await p.state(S.XR_FRAMES);
+    await p.until(async () => (await p.state(S.XR_FRAMES)) >= f0 + n, n + ' XR frames', 120000);
+  };
+  await p.until(async () => (await p.state(S.FRAMES)) > 10, 'frames');
+  await walk();
+  await xrFor(30);
+  await exitVR(p);
+  await walk();
+  await xrFor(30);
+  await exitVR(p);
+  const f0 = await p.state(S.FRAMES);
+  await p.until(async () => (await p.state(S.FRAMES)) >= f0 + 10, 'pancake frames');
+  const st = steps(p.log);
+  assert(st.length === 2 && st.every((x) => x.dir === 'N'), 'steps: ' + JSON.stringify(st));
+  const rows = await p.until(async () => { const r = await stepRows(p.page); return r.length >= 2 && r; },
+    'two step rows', 10000);
+  assert(rows.length === 2 && rows.every((r) => r.dir === 'N'), 'step rows: ' + JSON.stringify(rows));
+  assert(!p.errors.length, 'errors: ' + p.errors.join('; '));
+  await p.ctx.close();
+});
+
+await check('the page in every state: why VR is unavailable (no headset; plain http from a LAN address), Enter and Exit VR, the pause\'s reason (window not focused, headset off, menu), F2\'s frame time, over: no Enter VR, Play again', async () => {
+  // no headset: chromium's WebXR with no device
+  const a = await openPage('?mode=explore&seed=2');
+  let b = await vrButton(a);
+  await a.until(async () => (b = await vrButton(a)) && !b.hidden, 'the VR button');
+  assert(b.text === 'No VR headset found' && b.disabled, 'no headset: ' + JSON.stringify(b));
+  await a.page.screenshot({ path: path.join(OUT, 'page-no-headset.png') });
+  // the window loses the focus: paused, and the status says why
+  await a.page.evaluate(() => { document.hasFocus = () => false; });
+  await a.until(async () => (await statusOf(a)) === 'Paused: the window is not focused', 'the focus pause');
+  await a.page.evaluate(() => { delete document.hasFocus; });
+  await a.until(async () => (await statusOf(a)) === 'Playing', 'playing again');
+  await a.page.keyboard.press('KeyP');
+  await a.until(async () => (await statusOf(a)) === 'Paused: the menu is open', 'the menu pause');
+  await a.page.keyboard.press('KeyP');
+  await a.until(async () => (await statusOf(a)) === 'Playing', 'the menu closed');
+  // F2: the frame time on the view, as the desktop's
+  const overlay = () => a.page.evaluate(() => {
+    const q = Module._hol_web_overlay();
+    if (!q) return null;
+    let s = '';
+    for (let i = q; HEAPU8[i]; i++) s += String.fromCharCode(HEAPU8[i]);
+    return s;
+  });
+  assert((await overlay()) === null, 'an overlay before F2');
+  await a.page.keyboard.press('F2');
+  const line = await a.until(async () => { const o = await overlay(); return o && /^FPS \d/.test(o) && o; },
+    'the frame time', 10000);
+  assert(/^FPS \d+\.\d CPU \d+\.\d MS$/.test(line), 'overlay: ' + line);
+  await a.page.screenshot({ path: path.join(OUT, 'page-f2.png') });
+  await a.page.keyboard.press('F2');
+  assert((await overlay()) === null, 'F2 again leaves the overlay on');
+  assert(!a.errors.length, 'errors: ' + a.errors.join('; '));
+  await a.ctx.close();
+  // a LAN address over plain http: no secure context, no WebXR
+  const lan = await openPage_(browser, server.base.replace('127.0.0.1', 'lan.holonomy.test') + '/?mode=explore&seed=2', { iwer: false });
+  const lb = await vrButton(lan);
+  assert(lb.text === 'VR needs https:// or localhost' && lb.disabled && !lb.hidden, 'http LAN: ' + JSON.stringify(lb));
+  await lan.page.screenshot({ path: path.join(OUT, 'page-http-lan.png') });
+  await lan.ctx.close();
+  // a headset (iwer): Enter VR, the headset off and on, Exit VR, quit, Play again
+  const p = await openPage('?mode=explore&seed=2', { iwer: true });
+  await enterVR(p);
+  await p.until(async () => (await vrButton(p)).text === 'Exit VR', 'Exit VR');
+  assert((await statusOf(p)) === 'In VR', 'status in VR: ' + (await statusOf(p)));
+  await p.page.evaluate(() => xrDevice.updateVisibilityState('hidden'));
+  await p.until(async () => (await statusOf(p)) === 'Paused: the headset is off', 'the headset-off pause');
+  await p.page.evaluate(() => xrDevice.updateVisibilityState('visible'));
+  await p.until(async () => (await statusOf(p)) === 'In VR', 'in VR again');
+  await exitVR(p);
+  await p.until(async () => (await statusOf(p)) === 'Playing', 'playing after Exit VR');
+  b = await vrButton(p);
+  assert(b.text === 'Enter VR' && !b.disabled && !b.hidden && !b.again, 'after Exit VR: ' + JSON.stringify(b));
+  await p.page.keyboard.press('KeyQ');
+  await p.until(async () => /^Session over/.test(await statusOf(p)), 'the session over');
+  b = await vrButton(p);
+  assert(b.hidden && b.again, 'over: ' + JSON.stringify(b));
+  await sleep(200);
+  await p.page.screenshot({ path: path.join(OUT, 'page-over.png') });
+  await Promise.all([p.page.waitForNavigation({ timeout: 30000 }), p.page.click('#again')]);
+  await p.page.waitForFunction(() => /^Playing/.test(document.getElementById('status').textContent),
+    { timeout: 30000 });
+  await p.until(async () => (await p.state(S.FRAMES)) > 3, 'frames after Play again');
+  b = await vrButton(p);
+  assert(!b.again && b.text === 'Enter VR', 'after Play again: ' + JSON.stringify(b));
+  assert(!p.errors.length, 'errors: ' + p.errors.join('; '));
+  await p.ctx.close();
+});
+
+await check('hands without controllers (iwer\'s hand mode): two hand input sources; a left pinch opens the menu, a right pinch restarts there', async () => {
+  const p = await openPage('?mode=explore&seed=2', { iwer: true });
+  await p.page.evaluate(() => { xrDevice.primaryInputMode = 'hand'; });
+  await enterVR(p);
+  const frames = async (n) => {
+    const f0 = await p.state(S.XR_FRAMES);
+    await p.until(async () => (await p.state(S.XR_FRAMES)) >= f0 + n, n + ' XR frames', 120000);
+  };
+  await frames(5);
+  const srcs = await p.page.evaluate(() => Array.from(Module.holXR.session.inputSources)
+    .map((x) => x.handedness + (x.hand ? ' hand' : '')));
+  assert(srcs.length === 2 && srcs.every((x) => / hand$/.test(x)), 'input sources: ' + JSON.stringify(srcs));
+  const pinch = async (hand) => {
+    await p.page.evaluate((h) => xrDevice.hands[h].updatePinchValue(1), hand);
+    await frames(3);
+    await p.page.evaluate((h) => xrDevice.hands[h].updatePinchValue(0), hand);
+    await frames(2);
+  };
+  await frames(20);
+  assert((await p.state(S.PAUSED)) === 0, 'paused before the pinch');
+  await pinch('left');
+  assert((await p.state(S.PAUSED)) === 1, 'a left pinch did not open the menu');
+  const clock = await p.state(S.CLOCK);
+  await pinch('right');
+  assert((await p.state(S.PAUSED)) === 0 && (await p.state(S.CLOCK)) < clock, 'a right pinch did not restart');
+  assert(!p.errors.length, 'errors: ' + p.errors.join('; '));
+  await p.ctx.close();
+});
+
 // ---- WebXR on iwer's Quest 3 -------------------------------------------------
 // explore, no minimap: the eyes are the world alone (as `holonomy render` draws it)
 const XR_SEED = 11;
 fs.writeFileSync(path.join(testDir, 'xr.lvl'), `mode explore\nseed ${XR_SEED}\nminimap off\n`);
-const xr = await openPage('?level=/test/xr.lvl', { iwer: true });
+const xrOn = !ONLY || ONLY.test('Quest 3');
+const xr = xrOn ? await openPage('?level=/test/xr.lvl', { iwer: true }) : {};
 const xrState = xr.state, xrPage = xr.page;
 const xrFrames = () => xrState(S.XR_FRAMES);
 // n more XR frames, or the session's end
@@ -446,6 +615,10 @@ await check('quitting from a controller (Y, then B) ends the session and the log
     names: window.holonomyStore.names(),
   }));
   assert(offered.shown && offered.links.length > 0, 'logs not offered: ' + JSON.stringify(offered));
+  // over in VR: the status says so after the XR session ended; no Enter VR, Play again
+  const st = await xrPage.evaluate(() => document.getElementById('status').textContent);
+  const vb = await vrButton(xr);
+  assert(/^Session over/.test(st) && vb.hidden && vb.again, `over in VR: status '${st}', ` + JSON.stringify(vb));
   const rec = offered.names.find((n) => /\.rec$/.test(n));
   assert(rec, 'no recording among ' + offered.names.join(', '));
   recording = Buffer.from(await xrPage.evaluate((n) => btoa(String.fromCharCode.apply(null,
@@ -484,7 +657,7 @@ await check('the browser recording replays on the desktop to the same step rows 
     'summary: ' + summary.join(' | '));
   console.log(`# ${names.length} log files equal: ${names.join(' ')}`);
 });
-await xr.ctx.close();
+if (xrOn) await xr.ctx.close();
 
 await browser.close();
 server.close();
