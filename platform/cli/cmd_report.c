@@ -49,52 +49,77 @@ static int own_name(const char *n)
            !strcmp(n + 12, ".png");
 }
 
+/* An entry of DIR with a report's name must be a regular file: a folder,
+ * a FIFO or a link there is not a report's (it would fail the writing or be
+ * removed). */
+static int own_file(const char *cmd, const char *dir, const char *n)
+{
+    char path[4200];
+    struct stat sb;
+    if (!strcmp(n, ".") || !strcmp(n, ".."))
+        return 0;
+    snprintf(path, sizeof path, "%s/%s", dir, n);
+    if (!lstat(path, &sb) && S_ISREG(sb.st_mode))
+        return 0;
+    cli_error(cmd, 0, "--out '%.300s' holds '%.200s', %s; give an empty or new folder", dir, n,
+              S_ISDIR(sb.st_mode) ? "a folder, not a report's file"
+              : S_ISLNK(sb.st_mode) ? "a symbolic link, not a report's file"
+                                     : "not a regular file");
+    return CLI_EXIT_USAGE;
+}
+
+/* A new DIR: its name is not empty nor a dangling link, its folder exists. */
+static int check_new_dir(const char *cmd, const char *dir)
+{
+    struct stat sb;
+    int err = errno;
+    if (!dir[0]) {
+        cli_error(cmd, 0, "--out '': an empty name");
+        return CLI_EXIT_USAGE;
+    }
+    if (!lstat(dir, &sb)) {
+        cli_error(cmd, 0, "--out '%.300s' is a symbolic link to nothing%s", dir,
+                  err == ELOOP ? " (a loop)" : "");
+        return CLI_EXIT_USAGE;
+    }
+    char parent[4096];
+    snprintf(parent, sizeof parent, "%s", dir);
+    size_t n = strlen(parent);
+    while (n > 1 && parent[n - 1] == '/')
+        parent[--n] = 0; /* "new/" is the folder "new" */
+    char *slash = strrchr(parent, '/');
+    const char *p = slash ? (slash == parent ? "/" : (*slash = 0, parent)) : ".";
+    if (err == ENOENT && !stat(p, &sb) && S_ISDIR(sb.st_mode))
+        return 0;
+    cli_error(cmd, 0, "--out '%.300s': its folder does not exist", dir);
+    return CLI_EXIT_USAGE;
+}
+
 /* DIR: a folder of a report's files only, or a new name in a folder. */
 static int check_out_dir(const char *cmd, const char *dir)
 {
-    char esc[512];
     struct stat sb;
-    cli_escape(dir, esc, sizeof esc);
-    if (stat(dir, &sb)) {
-        char parent[4096];
-        snprintf(parent, sizeof parent, "%s", dir);
-        size_t n = strlen(parent);
-        while (n > 1 && parent[n - 1] == '/')
-            parent[--n] = 0; /* "new/" is the folder "new" */
-        char *slash = strrchr(parent, '/');
-        const char *p = slash ? (slash == parent ? "/" : (*slash = 0, parent)) : ".";
-        if (errno == ENOENT && !stat(p, &sb) && S_ISDIR(sb.st_mode))
-            return 0;
-        cli_error(cmd, 0, "--out '%s': its folder does not exist", esc);
-        return CLI_EXIT_USAGE;
-    }
+    if (!dir[0] || stat(dir, &sb))
+        return check_new_dir(cmd, dir);
     if (!S_ISDIR(sb.st_mode)) {
-        cli_error(cmd, 0, "--out '%s' is not a folder", esc);
+        cli_error(cmd, 0, "--out '%.300s' is not a folder", dir);
         return CLI_EXIT_USAGE;
     }
     DIR *d = opendir(dir);
     if (!d) {
-        cli_error(cmd, 0, "--out '%s' cannot be read", esc);
+        cli_error(cmd, 0, "--out '%.300s' cannot be read", dir);
         return CLI_EXIT_USAGE;
     }
     struct dirent *e;
-    while ((e = readdir(d)))
-        if (!own_name(e->d_name)) {
-            char n[256];
-            cli_error(cmd, 0, "--out '%s' holds '%s', not a report's file; give an empty "
-                      "or new folder", esc, cli_escape(e->d_name, n, sizeof n));
-            closedir(d);
-            return CLI_EXIT_USAGE;
-        }
-    closedir(d);
-    static const char *const names[] = {"index.html", "attempts.csv", "conditions.csv"};
-    for (int i = 0; i < 3; i++) {
-        char path[4200];
-        snprintf(path, sizeof path, "%s/%s", dir, names[i]);
-        if (!stat(path, &sb) && cli_check_output(cmd, "--out", path))
-            return CLI_EXIT_USAGE;
+    int st = 0;
+    while (!st && (e = readdir(d))) {
+        if (!own_name(e->d_name))
+            cli_error(cmd, 0, "--out '%.300s' holds '%.200s', not a report's file; give an "
+                      "empty or new folder", dir, e->d_name);
+        st = !own_name(e->d_name) ? CLI_EXIT_USAGE : own_file(cmd, dir, e->d_name);
     }
-    return 0;
+    closedir(d);
+    return st;
 }
 
 static int parse_args(report_run *r, int argc, char **argv)
@@ -134,9 +159,7 @@ static int parse_args(report_run *r, int argc, char **argv)
 static int make_out(const report_run *r)
 {
     if (mkdir(r->out, 0777) && errno != EEXIST) {
-        char esc[512];
-        cli_error(r->cmd, 0, "--out '%s' cannot be made: %s",
-                  cli_escape(r->out, esc, sizeof esc), strerror(errno));
+        cli_error(r->cmd, 0, "--out '%.300s' cannot be made: %s", r->out, strerror(errno));
         return CLI_EXIT_FAIL;
     }
     return 0;
@@ -165,11 +188,11 @@ static int picture(report_run *r, report_buf *b, int i, int write)
     p.optimal = b->optimal;
     p.goals = b->goals;
     snprintf(t->png, sizeof t->png, "attempt-%04d.png", i + 1);
-    char path[4200], esc[512];
+    char path[4200];
     snprintf(path, sizeof path, "%s/%s", r->out, t->png);
     if (report_draw(&p, b->rgba, REPORT_PNG_SIZE) ||
         hol_png_write_file(path, b->rgba, REPORT_PNG_SIZE, REPORT_PNG_SIZE, 0)) {
-        cli_error(r->cmd, 0, "cannot write '%s'", cli_escape(path, esc, sizeof esc));
+        cli_error(r->cmd, 0, "cannot write '%.300s'", path);
         return CLI_EXIT_FAIL;
     }
     return 0;
@@ -183,7 +206,7 @@ static void remove_stale(const report_run *r)
     while (d && (e = readdir(d))) {
         int n = atoi(e->d_name + 8);
         if (own_name(e->d_name) && !strncmp(e->d_name, "attempt-", 8) &&
-            (n > r->natt || !r->att[n - 1].png[0])) {
+            (n < 1 || n > r->natt || !r->att[n - 1].png[0])) {
             char path[4200];
             snprintf(path, sizeof path, "%s/%s", r->out, e->d_name);
             remove(path);
@@ -204,10 +227,20 @@ static int run(report_run *r, report_buf *b)
     r->quiet = 1;
     for (int i = 0; !st && i < r->natt; i++)
         st = picture(r, b, i, 1);
-    static hol_report_agg g;
-    memset(&g, 0, sizeof g);
+    /* a table as long as the attempts: every condition has its row */
+    hol_report_agg g;
+    hol_report_cond *conds = st ? NULL : malloc(sizeof *conds * (size_t)(r->natt + 1));
+    hol_report_agg_init(&g, conds, r->natt + 1);
+    if (!st && !conds) {
+        cli_error(r->cmd, 0, "out of memory");
+        st = CLI_EXIT_FAIL;
+    }
     for (int i = 0; !st && i < r->natt; i++)
         hol_report_agg_add(&g, &r->att[i].a);
+    if (!st && g.overflow) { /* cannot happen: never a silent limit */
+        cli_error(r->cmd, 0, "more than %d conditions", g.cap);
+        st = CLI_EXIT_FAIL;
+    }
     if (!st)
         st = report_write_csv(r);
     if (!st)
@@ -219,6 +252,7 @@ static int run(report_run *r, report_buf *b)
         printf("report: %d attempts from %d log folder%s\n", r->natt, r->ndirs,
                r->ndirs == 1 ? "" : "s");
     }
+    free(conds);
     return st;
 }
 

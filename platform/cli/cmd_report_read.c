@@ -17,9 +17,24 @@ static void path_of(char *out, size_t cap, const char *dir, const char *name)
 
 static int bad_line(const char *cmd, const char *path, long line, const char *msg)
 {
-    char esc[512];
-    cli_error(cmd, 0, "%s: line %ld: %s", cli_escape(path, esc, sizeof esc), line, msg);
+    /* cli_error escapes the whole message once (the path is raw here) */
+    cli_error(cmd, 0, "%.300s: line %ld: %s", path, line, msg);
     return CLI_EXIT_USAGE;
+}
+
+/* A CSV line as the report reads it: a UTF-8 byte order mark at the start
+ * of the file is dropped (spreadsheets write one); 0 for a blank line
+ * (empty or only spaces and tabs), which is skipped wherever it stands. */
+static int csv_line(const hol_lines *l, char **s, size_t *n)
+{
+    if (l->lineno == 1 && *n >= 3 && !memcmp(*s, "\xef\xbb\xbf", 3)) {
+        *s += 3;
+        *n -= 3;
+    }
+    for (size_t i = 0; i < *n; i++)
+        if ((*s)[i] != ' ' && (*s)[i] != '\t')
+            return 1;
+    return 0;
 }
 
 static int read_summary(report_run *r, int d)
@@ -34,10 +49,12 @@ static int read_summary(report_run *r, int d)
     char err[HOL_REPORT_ERR];
     char *s;
     size_t n;
-    int got;
+    int got, header = 0;
     while ((got = hol_lines_next(&l, &s, &n)) > 0) {
         hol_err e;
-        if (l.lineno == 1) {
+        if (!csv_line(&l, &s, &n))
+            continue;
+        if (!header++) {
             e = hol_report_summary_header(s, n, &h, err);
         } else if (r->natt == REPORT_MAX_ATTEMPTS) {
             snprintf(err, sizeof err, "more than %d attempts in all", REPORT_MAX_ATTEMPTS);
@@ -56,7 +73,7 @@ static int read_summary(report_run *r, int d)
         }
     }
     st = got < 0 ? cli_lines_failed(r->cmd, "summary", path, &l) : 0;
-    if (!st && l.lineno == 0)
+    if (!st && !header)
         st = bad_line(r->cmd, path, 1, "empty: no header");
     hol_lines_close(&l);
     return st;
@@ -134,11 +151,13 @@ int report_walk(report_run *r, report_att *t, hol_tile *tiles, int *out_n)
     char err[HOL_REPORT_ERR];
     char *line;
     size_t n;
-    int got = 0, ok = 1;
+    int got = 0, ok = 1, header = 0;
     long count = 0;
     while (ok && (got = hol_lines_next(&l, &line, &n)) > 0) {
         hol_tile tile;
-        if (l.lineno == 1) {
+        if (!csv_line(&l, &line, &n))
+            continue;
+        if (!header++) {
             ok = !hol_report_steps_header(line, n, &h, err);
         } else if (count == REPORT_MAX_STEPS) {
             snprintf(err, sizeof err, "more than %d steps", REPORT_MAX_STEPS);
@@ -154,7 +173,7 @@ int report_walk(report_run *r, report_att *t, hol_tile *tiles, int *out_n)
         st = bad_line(r->cmd, path, l.lineno, err);
     else if (got < 0)
         st = cli_lines_failed(r->cmd, "steps", path, &l);
-    else if (l.lineno == 0)
+    else if (!header)
         st = bad_line(r->cmd, path, 1, "empty: no header");
     hol_lines_close(&l);
     *out_n = (int)count;
