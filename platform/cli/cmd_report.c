@@ -1,14 +1,17 @@
 /* cmd_report.c - `holonomy report LOGDIR... --out DIR`: what a researcher
  * looks at first (issue 18 section 7). Reads log folders, writes per-attempt
  * pictures, attempts.csv, conditions.csv and index.html into DIR. */
+#define _GNU_SOURCE /* syncfs */
 #include <dirent.h>
 #include <errno.h>
+#include <fcntl.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
-#include "../image/hol_png_file.h"
+#include "../../render/hol_png.h"
 #include "cli.h"
 #include "cmd_report.h"
 #include "report_draw.h"
@@ -170,7 +173,48 @@ typedef struct report_buf {
     hol_tile optimal[HOL_NAV_WALK_MAX];
     hol_tile goals[HOL_APP_MAX_OBJECTIVES];
     uint8_t rgba[REPORT_PNG_SIZE * REPORT_PNG_SIZE * 4];
+    uint8_t *background[9]; /* by q (5..8), drawn on first use */
 } report_buf;
+
+/* A picture's bytes into DIR: a temporary file renamed over the name, not
+ * synced one by one (10,000 fsyncs took minutes): report_sync syncs them
+ * all at once, before the tables that name them are written. */
+static int write_png(const char *path, const uint8_t *rgba)
+{
+    uint8_t *data;
+    size_t size;
+    char tmp[4300];
+    const char *slash = strrchr(path, '/');
+    snprintf(tmp, sizeof tmp, "%.*s.holonomy-tmp.%s", (int)(slash - path + 1), path, slash + 1);
+    if (hol_png_encode_level(rgba, REPORT_PNG_SIZE, REPORT_PNG_SIZE, 0, 1, &data, &size))
+        return -1;
+    FILE *f = fopen(tmp, "wb");
+    int ok = f && fwrite(data, 1, size, f) == size;
+    ok = (f && fclose(f) == 0) && ok;
+    free(data);
+    if (ok && !rename(tmp, path))
+        return 0;
+    remove(tmp);
+    return -1;
+}
+
+/* The pictures written (write_png) reach the disk. */
+static int report_sync(const report_run *r)
+{
+    int fd = open(r->out, O_RDONLY | O_DIRECTORY);
+#ifdef __linux__
+    int ok = fd >= 0 && syncfs(fd) == 0;
+#else
+    sync();
+    int ok = fd >= 0;
+#endif
+    if (fd >= 0)
+        close(fd);
+    if (ok)
+        return 0;
+    cli_error(r->cmd, 0, "cannot sync '%.300s': %s", r->out, strerror(errno));
+    return CLI_EXIT_FAIL;
+}
 
 /* One attempt's picture (when its steps file is there). */
 static int picture(report_run *r, report_buf *b, int i, int write)
@@ -187,11 +231,18 @@ static int picture(report_run *r, report_buf *b, int i, int write)
     p.walked = b->walked;
     p.optimal = b->optimal;
     p.goals = b->goals;
+    int q = t->a.tiling_q;
+    if (q >= 5 && q <= 8 && !b->background[q] &&
+        (b->background[q] = malloc(sizeof b->rgba)) &&
+        report_draw_background(q, b->background[q], REPORT_PNG_SIZE)) {
+        free(b->background[q]);
+        b->background[q] = NULL;
+    }
+    p.background = q >= 5 && q <= 8 ? b->background[q] : NULL;
     snprintf(t->png, sizeof t->png, "attempt-%04d.png", i + 1);
     char path[4200];
     snprintf(path, sizeof path, "%s/%s", r->out, t->png);
-    if (report_draw(&p, b->rgba, REPORT_PNG_SIZE) ||
-        hol_png_write_file(path, b->rgba, REPORT_PNG_SIZE, REPORT_PNG_SIZE, 0)) {
+    if (report_draw(&p, b->rgba, REPORT_PNG_SIZE) || write_png(path, b->rgba)) {
         cli_error(r->cmd, 0, "cannot write '%.300s'", path);
         return CLI_EXIT_FAIL;
     }
@@ -227,6 +278,8 @@ static int run(report_run *r, report_buf *b)
     r->quiet = 1;
     for (int i = 0; !st && i < r->natt; i++)
         st = picture(r, b, i, 1);
+    if (!st)
+        st = report_sync(r);
     /* a table as long as the attempts: every condition has its row */
     hol_report_agg g;
     hol_report_cond *conds = st ? NULL : malloc(sizeof *conds * (size_t)(r->natt + 1));
@@ -280,8 +333,11 @@ int cli_cmd_report(int argc, char **argv)
         st = cli_finish_output(cmd);
     report_free(&r);
     free(r.dirs);
-    if (b)
+    if (b) {
         free(b->walked);
+        for (int q = 0; q < 9; q++)
+            free(b->background[q]);
+    }
     free(b);
     return st;
 }
