@@ -79,16 +79,26 @@ static void hol__filter_best(const uint8_t *rgba, int w, int h, int bpp, uint8_t
 /* Every row filtered "up" (the row above subtracted; the first row as it is). */
 static void hol__filter_up(const uint8_t *rgba, int w, int h, int bpp, uint8_t *raw)
 {
-    size_t stride = (size_t)w * (size_t)bpp + 1;
+    size_t stride = (size_t)w * (size_t)bpp + 1, row = (size_t)w * 4;
     for (int y = 0; y < h; y++) {
-        uint8_t *dst = raw + (size_t)y * stride;
-        const uint8_t *src = rgba + (size_t)y * (size_t)w * 4;
-        const uint8_t *up = rgba + (size_t)(y ? y - 1 : 0) * (size_t)w * 4;
-        dst[0] = 2;
-        for (int x = 0; x < w; x++)
-            for (int k = 0; k < bpp; k++)
-                dst[1 + (size_t)x * (size_t)bpp + (size_t)k] =
-                    (uint8_t)(src[4 * x + k] - (y ? up[4 * x + k] : 0));
+        uint8_t *dst = raw + (size_t)y * stride + 1;
+        const uint8_t *src = rgba + (size_t)y * row;
+        const uint8_t *up = y ? src - row : NULL;
+        dst[-1] = 2;
+        if (!up && bpp == 4)
+            memcpy(dst, src, row);
+        else if (bpp == 4)
+            for (size_t i = 0; i < row; i++)
+                dst[i] = (uint8_t)(src[i] - up[i]);
+        else if (!up)
+            for (int x = 0; x < w; x++, dst += 3, src += 4)
+                dst[0] = src[0], dst[1] = src[1], dst[2] = src[2];
+        else
+            for (int x = 0; x < w; x++, dst += 3, src += 4, up += 4) {
+                dst[0] = (uint8_t)(src[0] - up[0]);
+                dst[1] = (uint8_t)(src[1] - up[1]);
+                dst[2] = (uint8_t)(src[2] - up[2]);
+            }
     }
 }
 
