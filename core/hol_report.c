@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "hol_room.h"
+#include "hol_text.h"
 
 /* Column names the report reads; their index in hol_report_header.col. */
 enum {
@@ -86,9 +87,13 @@ hol_err hol_report_csv_split(const char *s, size_t len, char *buf, size_t cap,
 static hol_err read_header(const char *s, size_t len, const int *need, hol_report_header *out,
                            char *err)
 {
-    char buf[2048];
+    char buf[HOL_REPORT_LINE_MAX + 1];
     const char *f[HOL_REPORT_MAX_COLS];
     int n;
+    if (len > HOL_REPORT_LINE_MAX) {
+        set_err(err, "a line too long", NULL);
+        return HOL_ENOMEM;
+    }
     hol_err e = hol_report_csv_split(s, len, buf, sizeof buf, f, HOL_REPORT_MAX_COLS, &n, err);
     if (e)
         return e;
@@ -251,6 +256,10 @@ static hol_err split_row(const hol_report_header *h, const char *s, size_t len, 
                          size_t cap, const char **f, char *err)
 {
     int n;
+    if (len > HOL_REPORT_LINE_MAX) {
+        set_err(err, "a line too long", NULL);
+        return HOL_ENOMEM;
+    }
     hol_err e = hol_report_csv_split(s, len, buf, cap, f, HOL_REPORT_MAX_COLS, &n, err);
     if (e)
         return e;
@@ -265,7 +274,7 @@ static hol_err split_row(const hol_report_header *h, const char *s, size_t len, 
 hol_err hol_report_summary_row(const hol_report_header *h, const char *s, size_t len,
                                hol_report_attempt *out, char *err)
 {
-    char buf[4096];
+    char buf[HOL_REPORT_LINE_MAX + 1]; /* the fields fit: at most len + 1 bytes */
     const char *f[HOL_REPORT_MAX_COLS];
     hol_err e = split_row(h, s, len, buf, sizeof buf, f, err);
     if (e)
@@ -282,7 +291,7 @@ hol_err hol_report_summary_row(const hol_report_header *h, const char *s, size_t
 hol_err hol_report_step_row(const hol_report_header *h, const char *s, size_t len,
                             hol_report_step *out, char *err)
 {
-    char buf[4096];
+    char buf[HOL_REPORT_LINE_MAX + 1]; /* the fields fit: at most len + 1 bytes */
     const char *f[HOL_REPORT_MAX_COLS];
     hol_err e = split_row(h, s, len, buf, sizeof buf, f, err);
     if (e)
@@ -320,6 +329,44 @@ double hol_report_efficiency(const hol_report_attempt *a)
     return (double)a->optimum / (double)a->steps;
 }
 
+size_t hol_report_clean(const char *s, char *out, size_t cap)
+{
+    size_t need = 0, o = 0; /* o: bytes written while everything fitted */
+    int whole = 1;
+    for (;;) {
+        const char *b = strchr(s, '\\');
+        size_t k = b ? (size_t)(b - s) : strlen(s);
+        size_t room = whole && cap > o ? cap - o : 0;
+        size_t n = hol_text_escape(s, k, room ? out + o : NULL, room);
+        if (whole && n < room)
+            o += n;
+        else if (whole && room)
+            o += strlen(out + o), whole = 0; /* cut inside this piece */
+        else
+            whole = 0;
+        need += n;
+        if (!b)
+            break;
+        if (whole && o + 1 < cap)
+            out[o++] = '\\';
+        else
+            whole = 0;
+        need++;
+        s = b + 1;
+    }
+    if (cap > 0)
+        out[o < cap ? o : cap - 1] = 0;
+    return need;
+}
+
+void hol_report_agg_init(hol_report_agg *g, hol_report_cond *conds, int cap)
+{
+    g->n = 0;
+    g->cap = cap;
+    g->overflow = 0;
+    g->c = conds;
+}
+
 void hol_report_agg_add(hol_report_agg *g, const hol_report_attempt *a)
 {
     const char *cond = a->study[0] ? a->condition : a->level;
@@ -328,7 +375,7 @@ void hol_report_agg_add(hol_report_agg *g, const hol_report_attempt *a)
         if (!strcmp(g->c[i].study, a->study) && !strcmp(g->c[i].condition, cond))
             break;
     if (i == g->n) {
-        if (g->n == HOL_REPORT_MAX_CONDS) {
+        if (g->n == g->cap) {
             g->overflow++;
             return;
         }

@@ -3,7 +3,8 @@
  * column name, into fixed structs; and per-condition means.
  *
  * Contract
- * - Lines come from the platform's bounded line reader (no LF, no CR); a
+ * - Lines come from the platform's bounded line reader (no LF, no CR; at
+ *   most HOL_REPORT_LINE_MAX bytes, longer is HOL_ENOMEM); a
  *   line is one record (the logs never hold a raw newline in a field: names
  *   are escaped before they are quoted). Fields follow RFC 4180: a field is
  *   either bare (no double quote in it) or enclosed in double quotes with
@@ -27,9 +28,9 @@
 
 #include "hol_err.h"
 
-#define HOL_REPORT_MAX_COLS 48
+#define HOL_REPORT_MAX_COLS 256
+#define HOL_REPORT_LINE_MAX 65536 /* bytes of one line (docs/research.md) */
 #define HOL_REPORT_TEXT 256   /* a text field with its NUL */
-#define HOL_REPORT_MAX_CONDS 64
 #define HOL_REPORT_ERR 160
 
 /* Column positions by name: -1 when absent. */
@@ -80,8 +81,19 @@ hol_err hol_report_step_row(const hol_report_header *h, const char *s, size_t le
  * steps > 0; 1 when both are 0); -1 otherwise (not defined). */
 double hol_report_efficiency(const hol_report_attempt *a);
 
+/* A text field read from a log made safe for a CSV a person may `cat` and
+ * for a page, as the app's writers make names (core/hol_text.h): what a
+ * terminal acts on (C0, DEL, C1, U+2028/9, bidi controls) and bad UTF-8 as
+ * \xHH per byte. A backslash is kept as it is: the logs' texts are already
+ * escaped (a name's backslash is there as \\), so escaping it again would
+ * double it. Same return and cut rules as hol_text_escape: the length the
+ * whole result needs; out always NUL-terminated when cap > 0. */
+size_t hol_report_clean(const char *s, char *out, size_t cap);
+
 /* Per-condition means: conditions are (study, condition) pairs; outside a
- * study the condition is the level's name. */
+ * study the condition is the level's name. The table is the caller's
+ * (hol_report_agg_init: cap entries); a condition beyond it is counted in
+ * overflow, never dropped silently (the caller refuses: one line). */
 typedef struct hol_report_cond {
     char study[HOL_REPORT_TEXT], condition[HOL_REPORT_TEXT];
     long n, done;        /* attempts, completed ones */
@@ -90,11 +102,12 @@ typedef struct hol_report_cond {
 } hol_report_cond;
 
 typedef struct hol_report_agg {
-    int n;
-    int overflow;        /* attempts of conditions beyond the table */
-    hol_report_cond c[HOL_REPORT_MAX_CONDS];
+    int n, cap;
+    long overflow;       /* attempts of conditions beyond the table */
+    hol_report_cond *c;
 } hol_report_agg;
 
+void hol_report_agg_init(hol_report_agg *g, hol_report_cond *conds, int cap);
 void hol_report_agg_add(hol_report_agg *g, const hol_report_attempt *a);
 
 #endif

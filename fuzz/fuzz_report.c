@@ -9,7 +9,8 @@
  * the largest room, a direction 0..3, NUL-terminated texts); efficiency
  * is -1 or in [0, 1]; every line that splits as CSV splits again to the
  * same fields after its fields are written back with hol_text_csv; the
- * per-condition table never overflows its count.
+ * per-condition table never overflows its count; a field cleaned for the
+ * report's files holds no control byte.
  */
 #include <stdint.h>
 #include <string.h>
@@ -20,6 +21,7 @@
 #include "fuzz_check.h"
 
 static hol_report_agg agg;
+static hol_report_cond conds[64];
 
 static void check_split(const char *s, size_t n)
 {
@@ -54,7 +56,12 @@ static void check_attempt(const hol_report_attempt *a)
     double e = hol_report_efficiency(a);
     CHECK(e == -1 || (e >= 0 && e <= 1));
     hol_report_agg_add(&agg, a);
-    CHECK(agg.n <= HOL_REPORT_MAX_CONDS);
+    CHECK(agg.n <= agg.cap && (agg.n < agg.cap || agg.overflow >= 0));
+    char clean[4 * HOL_REPORT_TEXT];
+    size_t n = hol_report_clean(a->condition, clean, sizeof clean);
+    CHECK(n == strlen(clean));
+    for (size_t i = 0; i < n; i++)
+        CHECK((unsigned char)clean[i] >= 0x20 && clean[i] != 0x7f);
 }
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
@@ -66,7 +73,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     hol_report_header h;
     int have = 0;
     char err[HOL_REPORT_ERR];
-    memset(&agg, 0, sizeof agg);
+    hol_report_agg_init(&agg, conds, 64);
     while (s <= end) {
         const char *nl = memchr(s, '\n', (size_t)(end - s));
         size_t n = (size_t)((nl ? nl : end) - s);

@@ -41,23 +41,12 @@ static int hol__paeth(int a, int b, int c)
     return pb <= pc ? b : c;
 }
 
-hol_err hol_png_encode(const uint8_t *rgba, int w, int h, int alpha,
-                       uint8_t **out_data, size_t *out_size)
+/* Per row, pick the filter (none, sub, up, paeth) with the smallest sum
+ * of absolute residuals: the usual heuristic, cheap and effective. */
+static void hol__filter_best(const uint8_t *rgba, int w, int h, int bpp, uint8_t *raw,
+                             uint8_t *line)
 {
-    if (!rgba || w <= 0 || h <= 0 || w > HOL_PNG_MAX_DIM || h > HOL_PNG_MAX_DIM)
-        return HOL_EARG;
-    int bpp = alpha ? 4 : 3;
     size_t stride = (size_t)w * (size_t)bpp + 1;
-    size_t rawn = stride * (size_t)h;
-    uint8_t *raw = malloc(rawn);
-    uint8_t *line = malloc(stride);
-    if (!raw || !line) {
-        free(raw);
-        free(line);
-        return HOL_ENOMEM;
-    }
-    /* Per row, pick the filter (none, sub, up, paeth) with the smallest sum
-     * of absolute residuals: the usual heuristic, cheap and effective. */
     for (int y = 0; y < h; y++) {
         uint8_t *dst = raw + (size_t)y * stride;
         const uint8_t *src = rgba + (size_t)y * (size_t)w * 4;
@@ -85,6 +74,79 @@ hol_err hol_png_encode(const uint8_t *rgba, int w, int h, int alpha,
             }
         }
     }
+}
+
+/* Every row filtered "up" (the row above subtracted; the first row as it is). */
+static void hol__filter_up(const uint8_t *rgba, int w, int h, int bpp, uint8_t *raw)
+{
+    size_t stride = (size_t)w * (size_t)bpp + 1, row = (size_t)w * 4;
+    for (int y = 0; y < h; y++) {
+        uint8_t *dst = raw + (size_t)y * stride + 1;
+        const uint8_t *src = rgba + (size_t)y * row;
+        const uint8_t *up = y ? src - row : NULL;
+        dst[-1] = 2;
+        if (!up && bpp == 4)
+            memcpy(dst, src, row);
+        else if (bpp == 4)
+            for (size_t i = 0; i < row; i++)
+                dst[i] = (uint8_t)(src[i] - up[i]);
+        else if (!up)
+            for (int x = 0; x < w; x++, dst += 3, src += 4)
+                dst[0] = src[0], dst[1] = src[1], dst[2] = src[2];
+        else
+            for (int x = 0; x < w; x++, dst += 3, src += 4, up += 4) {
+                dst[0] = (uint8_t)(src[0] - up[0]);
+                dst[1] = (uint8_t)(src[1] - up[1]);
+                dst[2] = (uint8_t)(src[2] - up[2]);
+            }
+    }
+}
+
+/* raw (n bytes) deflated into out (*zn bytes there): level 9 as compress2,
+ * below with the run-length strategy (fast on pictures of flat colours). */
+static int hol__deflate(uint8_t *out, uLongf *zn, const uint8_t *raw, size_t n, int level)
+{
+    if (level == 9)
+        return compress2(out, zn, raw, (uLong)n, 9) == Z_OK;
+    z_stream z;
+    memset(&z, 0, sizeof z);
+    if (deflateInit2(&z, level, Z_DEFLATED, 15, 8, Z_RLE) != Z_OK)
+        return 0;
+    z.next_in = (Bytef *)(uintptr_t)raw;
+    z.avail_in = (uInt)n;
+    z.next_out = out;
+    z.avail_out = (uInt)*zn;
+    int ok = deflate(&z, Z_FINISH) == Z_STREAM_END;
+    *zn = z.total_out;
+    return deflateEnd(&z) == Z_OK && ok;
+}
+
+hol_err hol_png_encode(const uint8_t *rgba, int w, int h, int alpha,
+                       uint8_t **out_data, size_t *out_size)
+{
+    return hol_png_encode_level(rgba, w, h, alpha, 9, out_data, out_size);
+}
+
+hol_err hol_png_encode_level(const uint8_t *rgba, int w, int h, int alpha, int level,
+                             uint8_t **out_data, size_t *out_size)
+{
+    if (!rgba || w <= 0 || h <= 0 || w > HOL_PNG_MAX_DIM || h > HOL_PNG_MAX_DIM || level < 1 ||
+        level > 9)
+        return HOL_EARG;
+    int bpp = alpha ? 4 : 3;
+    size_t stride = (size_t)w * (size_t)bpp + 1;
+    size_t rawn = stride * (size_t)h;
+    uint8_t *raw = malloc(rawn);
+    uint8_t *line = malloc(stride);
+    if (!raw || !line) {
+        free(raw);
+        free(line);
+        return HOL_ENOMEM;
+    }
+    if (level < 9)
+        hol__filter_up(rgba, w, h, bpp, raw);
+    else
+        hol__filter_best(rgba, w, h, bpp, raw, line);
     free(line);
     uLongf zn = compressBound((uLong)rawn);
     uint8_t *out = malloc(8 + 25 + 12 + (size_t)zn + 12);
@@ -103,7 +165,7 @@ hol_err hol_png_encode(const uint8_t *rgba, int w, int h, int alpha,
     hol__chunk(out, &pos, "IHDR", ihdr, 13);
     /* compress straight into the IDAT payload position */
     uint8_t *payload = out + pos + 8;
-    if (compress2(payload, &zn, raw, (uLong)rawn, 9) != Z_OK) {
+    if (!hol__deflate(payload, &zn, raw, rawn, level)) {
         free(raw);
         free(out);
         return HOL_ENOMEM;

@@ -45,10 +45,13 @@ static void test_split(void **state)
     assert_int_equal(split("\"a\"b", f, buf, sizeof buf), -1);
     assert_int_equal(split("a\"b", f, buf, sizeof buf), -1);
     assert_int_equal(split("abcdef", f, buf, 4), -1); /* longer than the buffer */
-    char many[200];
+    char many[HOL_REPORT_MAX_COLS + 1], big[4 * sizeof many];
     memset(many, ',', sizeof many);
-    many[sizeof many - 1] = 0;
-    assert_int_equal(split(many, f, buf, sizeof buf), -1); /* more than 48 fields */
+    many[HOL_REPORT_MAX_COLS - 1] = 0; /* HOL_REPORT_MAX_COLS fields */
+    assert_int_equal(split(many, f, big, sizeof big), HOL_REPORT_MAX_COLS);
+    many[HOL_REPORT_MAX_COLS - 1] = ',';
+    many[HOL_REPORT_MAX_COLS] = 0; /* one more */
+    assert_int_equal(split(many, f, big, sizeof big), -1); /* more than the report reads */
 }
 
 /* Random fields through the logs' writer read back the same. */
@@ -166,9 +169,10 @@ static void test_steps(void **state)
 static void test_agg(void **state)
 {
     (void)state;
-    static hol_report_agg g;
+    static hol_report_cond conds[80];
+    hol_report_agg g;
     hol_report_attempt a;
-    memset(&g, 0, sizeof g);
+    hol_report_agg_init(&g, conds, 80);
     memset(&a, 0, sizeof a);
     strcpy(a.end, "done");
     strcpy(a.level, "f");
@@ -188,13 +192,45 @@ static void test_agg(void **state)
     assert_int_equal(g.c[1].neff, 2);
     assert_true(g.c[1].eff / (double)g.c[1].neff == 0.75);
     assert_true(g.c[1].steps == 20 && g.c[1].time_s == 8);
-    for (int i = 0; i < HOL_REPORT_MAX_CONDS + 3; i++) {
+    /* 70 more levels (the old table held 64 and dropped the rest): all in
+     * a table of 80; beyond the caller's table, counted, never silent */
+    for (int i = 0; i < 70; i++) {
         a.level[0] = (char)('A' + i % 60), a.level[1] = (char)('0' + i / 60), a.level[2] = 0;
         a.study[0] = 0;
         hol_report_agg_add(&g, &a);
     }
-    assert_int_equal(g.n, HOL_REPORT_MAX_CONDS);
-    assert_true(g.overflow > 0);
+    assert_int_equal(g.n, 72);
+    assert_int_equal(g.overflow, 0);
+    assert_string_equal(g.c[71].condition, "J1");
+    for (int i = 0; i < 10; i++) {
+        a.level[0] = (char)('k' + i), a.level[1] = 0;
+        hol_report_agg_add(&g, &a);
+    }
+    assert_int_equal(g.n, 80);
+    assert_int_equal(g.overflow, 2);
+}
+
+/* Texts from logs: what a terminal acts on and bad UTF-8 as \xHH, valid
+ * UTF-8 and backslashes (the logs' own escapes) kept; cut between pieces. */
+static void test_clean(void **state)
+{
+    (void)state;
+    char out[128];
+    const char *in = "a\\b\\x1b \x1b]0;T\x07\x7f\xc2\x9b\xe2\x80\xae\xff\xc3\xa9z";
+    const char *want = "a\\b\\x1b \\x1b]0;T\\x07\\x7f\\xc2\\x9b\\xe2\\x80\\xae\\xff\xc3\xa9z";
+    size_t n = hol_report_clean(in, out, sizeof out);
+    assert_string_equal(out, want);
+    assert_int_equal(n, strlen(want));
+    assert_int_equal(hol_report_clean(in, NULL, 0), n);
+    for (size_t cap = 1; cap <= n; cap++) {
+        char cut[128];
+        memset(cut, 'Z', sizeof cut);
+        assert_int_equal(hol_report_clean(in, cut, cap), n);
+        assert_true(strlen(cut) < cap && strlen(cut) + 4 >= cap);
+        assert_memory_equal(cut, want, strlen(cut));
+    }
+    assert_int_equal(hol_report_clean("", out, sizeof out), 0);
+    assert_string_equal(out, "");
 }
 
 int main(void)
@@ -205,6 +241,7 @@ int main(void)
         cmocka_unit_test(test_summary),
         cmocka_unit_test(test_steps),
         cmocka_unit_test(test_agg),
+        cmocka_unit_test(test_clean),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

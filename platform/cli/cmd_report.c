@@ -1,14 +1,20 @@
 /* cmd_report.c - `holonomy report LOGDIR... --out DIR`: what a researcher
  * looks at first (issue 18 section 7). Reads log folders, writes per-attempt
  * pictures, attempts.csv, conditions.csv and index.html into DIR. */
+#define _GNU_SOURCE /* syncfs */
 #include <dirent.h>
 #include <errno.h>
+#include <fcntl.h>
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
-#include "../image/hol_png_file.h"
+#include "../../render/hol_png.h"
 #include "cli.h"
 #include "cmd_report.h"
 #include "report_draw.h"
@@ -49,52 +55,77 @@ static int own_name(const char *n)
            !strcmp(n + 12, ".png");
 }
 
+/* An entry of DIR with a report's name must be a regular file: a folder,
+ * a FIFO or a link there is not a report's (it would fail the writing or be
+ * removed). */
+static int own_file(const char *cmd, const char *dir, const char *n)
+{
+    char path[4200];
+    struct stat sb;
+    if (!strcmp(n, ".") || !strcmp(n, ".."))
+        return 0;
+    snprintf(path, sizeof path, "%s/%s", dir, n);
+    if (!lstat(path, &sb) && S_ISREG(sb.st_mode))
+        return 0;
+    cli_error(cmd, 0, "--out '%.300s' holds '%.200s', %s; give an empty or new folder", dir, n,
+              S_ISDIR(sb.st_mode) ? "a folder, not a report's file"
+              : S_ISLNK(sb.st_mode) ? "a symbolic link, not a report's file"
+                                     : "not a regular file");
+    return CLI_EXIT_USAGE;
+}
+
+/* A new DIR: its name is not empty nor a dangling link, its folder exists. */
+static int check_new_dir(const char *cmd, const char *dir)
+{
+    struct stat sb;
+    int err = errno;
+    if (!dir[0]) {
+        cli_error(cmd, 0, "--out '': an empty name");
+        return CLI_EXIT_USAGE;
+    }
+    if (!lstat(dir, &sb)) {
+        cli_error(cmd, 0, "--out '%.300s' is a symbolic link to nothing%s", dir,
+                  err == ELOOP ? " (a loop)" : "");
+        return CLI_EXIT_USAGE;
+    }
+    char parent[4096];
+    snprintf(parent, sizeof parent, "%s", dir);
+    size_t n = strlen(parent);
+    while (n > 1 && parent[n - 1] == '/')
+        parent[--n] = 0; /* "new/" is the folder "new" */
+    char *slash = strrchr(parent, '/');
+    const char *p = slash ? (slash == parent ? "/" : (*slash = 0, parent)) : ".";
+    if (err == ENOENT && !stat(p, &sb) && S_ISDIR(sb.st_mode))
+        return 0;
+    cli_error(cmd, 0, "--out '%.300s': its folder does not exist", dir);
+    return CLI_EXIT_USAGE;
+}
+
 /* DIR: a folder of a report's files only, or a new name in a folder. */
 static int check_out_dir(const char *cmd, const char *dir)
 {
-    char esc[512];
     struct stat sb;
-    cli_escape(dir, esc, sizeof esc);
-    if (stat(dir, &sb)) {
-        char parent[4096];
-        snprintf(parent, sizeof parent, "%s", dir);
-        size_t n = strlen(parent);
-        while (n > 1 && parent[n - 1] == '/')
-            parent[--n] = 0; /* "new/" is the folder "new" */
-        char *slash = strrchr(parent, '/');
-        const char *p = slash ? (slash == parent ? "/" : (*slash = 0, parent)) : ".";
-        if (errno == ENOENT && !stat(p, &sb) && S_ISDIR(sb.st_mode))
-            return 0;
-        cli_error(cmd, 0, "--out '%s': its folder does not exist", esc);
-        return CLI_EXIT_USAGE;
-    }
+    if (!dir[0] || stat(dir, &sb))
+        return check_new_dir(cmd, dir);
     if (!S_ISDIR(sb.st_mode)) {
-        cli_error(cmd, 0, "--out '%s' is not a folder", esc);
+        cli_error(cmd, 0, "--out '%.300s' is not a folder", dir);
         return CLI_EXIT_USAGE;
     }
     DIR *d = opendir(dir);
     if (!d) {
-        cli_error(cmd, 0, "--out '%s' cannot be read", esc);
+        cli_error(cmd, 0, "--out '%.300s' cannot be read", dir);
         return CLI_EXIT_USAGE;
     }
     struct dirent *e;
-    while ((e = readdir(d)))
-        if (!own_name(e->d_name)) {
-            char n[256];
-            cli_error(cmd, 0, "--out '%s' holds '%s', not a report's file; give an empty "
-                      "or new folder", esc, cli_escape(e->d_name, n, sizeof n));
-            closedir(d);
-            return CLI_EXIT_USAGE;
-        }
-    closedir(d);
-    static const char *const names[] = {"index.html", "attempts.csv", "conditions.csv"};
-    for (int i = 0; i < 3; i++) {
-        char path[4200];
-        snprintf(path, sizeof path, "%s/%s", dir, names[i]);
-        if (!stat(path, &sb) && cli_check_output(cmd, "--out", path))
-            return CLI_EXIT_USAGE;
+    int st = 0;
+    while (!st && (e = readdir(d))) {
+        if (!own_name(e->d_name))
+            cli_error(cmd, 0, "--out '%.300s' holds '%.200s', not a report's file; give an "
+                      "empty or new folder", dir, e->d_name);
+        st = !own_name(e->d_name) ? CLI_EXIT_USAGE : own_file(cmd, dir, e->d_name);
     }
-    return 0;
+    closedir(d);
+    return st;
 }
 
 static const char *const report_valued[] = {"--out", NULL};
@@ -138,9 +169,7 @@ static int parse_args(report_run *r, int argc, char **argv)
 static int make_out(const report_run *r)
 {
     if (mkdir(r->out, 0777) && errno != EEXIST) {
-        char esc[512];
-        cli_error(r->cmd, 0, "--out '%s' cannot be made: %s",
-                  cli_escape(r->out, esc, sizeof esc), strerror(errno));
+        cli_error(r->cmd, 0, "--out '%.300s' cannot be made: %s", r->out, strerror(errno));
         return CLI_EXIT_FAIL;
     }
     return 0;
@@ -151,7 +180,48 @@ typedef struct report_buf {
     hol_tile optimal[HOL_NAV_WALK_MAX];
     hol_tile goals[HOL_APP_MAX_OBJECTIVES];
     uint8_t rgba[REPORT_PNG_SIZE * REPORT_PNG_SIZE * 4];
+    uint8_t *background[9]; /* by q (5..8), drawn on first use */
 } report_buf;
+
+/* A picture's bytes into DIR: a temporary file renamed over the name, not
+ * synced one by one (10,000 fsyncs took minutes): report_sync syncs them
+ * all at once, before the tables that name them are written. */
+static int write_png(const char *path, const uint8_t *rgba)
+{
+    uint8_t *data;
+    size_t size;
+    char tmp[4300];
+    const char *slash = strrchr(path, '/');
+    snprintf(tmp, sizeof tmp, "%.*s.holonomy-tmp.%s", (int)(slash - path + 1), path, slash + 1);
+    if (hol_png_encode_level(rgba, REPORT_PNG_SIZE, REPORT_PNG_SIZE, 0, 1, &data, &size))
+        return -1;
+    FILE *f = fopen(tmp, "wb");
+    int ok = f && fwrite(data, 1, size, f) == size;
+    ok = (f && fclose(f) == 0) && ok;
+    free(data);
+    if (ok && !rename(tmp, path))
+        return 0;
+    remove(tmp);
+    return -1;
+}
+
+/* The pictures written (write_png) reach the disk. */
+static int report_sync(const report_run *r)
+{
+    int fd = open(r->out, O_RDONLY | O_DIRECTORY);
+#ifdef __linux__
+    int ok = fd >= 0 && syncfs(fd) == 0;
+#else
+    sync();
+    int ok = fd >= 0;
+#endif
+    if (fd >= 0)
+        close(fd);
+    if (ok)
+        return 0;
+    cli_error(r->cmd, 0, "cannot sync '%.300s': %s", r->out, strerror(errno));
+    return CLI_EXIT_FAIL;
+}
 
 /* One attempt's picture (when its steps file is there). */
 static int picture(report_run *r, report_buf *b, int i, int write)
@@ -168,12 +238,19 @@ static int picture(report_run *r, report_buf *b, int i, int write)
     p.walked = b->walked;
     p.optimal = b->optimal;
     p.goals = b->goals;
+    int q = t->a.tiling_q;
+    if (q >= 5 && q <= 8 && !b->background[q] &&
+        (b->background[q] = malloc(sizeof b->rgba)) &&
+        report_draw_background(q, b->background[q], REPORT_PNG_SIZE)) {
+        free(b->background[q]);
+        b->background[q] = NULL;
+    }
+    p.background = q >= 5 && q <= 8 ? b->background[q] : NULL;
     snprintf(t->png, sizeof t->png, "attempt-%04d.png", i + 1);
-    char path[4200], esc[512];
+    char path[4200];
     snprintf(path, sizeof path, "%s/%s", r->out, t->png);
-    if (report_draw(&p, b->rgba, REPORT_PNG_SIZE) ||
-        hol_png_write_file(path, b->rgba, REPORT_PNG_SIZE, REPORT_PNG_SIZE, 0)) {
-        cli_error(r->cmd, 0, "cannot write '%s'", cli_escape(path, esc, sizeof esc));
+    if (report_draw(&p, b->rgba, REPORT_PNG_SIZE) || write_png(path, b->rgba)) {
+        cli_error(r->cmd, 0, "cannot write '%.300s'", path);
         return CLI_EXIT_FAIL;
     }
     return 0;
@@ -187,7 +264,7 @@ static void remove_stale(const report_run *r)
     while (d && (e = readdir(d))) {
         int n = atoi(e->d_name + 8);
         if (own_name(e->d_name) && !strncmp(e->d_name, "attempt-", 8) &&
-            (n > r->natt || !r->att[n - 1].png[0])) {
+            (n < 1 || n > r->natt || !r->att[n - 1].png[0])) {
             char path[4200];
             snprintf(path, sizeof path, "%s/%s", r->out, e->d_name);
             remove(path);
@@ -208,10 +285,22 @@ static int run(report_run *r, report_buf *b)
     r->quiet = 1;
     for (int i = 0; !st && i < r->natt; i++)
         st = picture(r, b, i, 1);
-    static hol_report_agg g;
-    memset(&g, 0, sizeof g);
+    if (!st)
+        st = report_sync(r);
+    /* a table as long as the attempts: every condition has its row */
+    hol_report_agg g;
+    hol_report_cond *conds = st ? NULL : malloc(sizeof *conds * (size_t)(r->natt + 1));
+    hol_report_agg_init(&g, conds, r->natt + 1);
+    if (!st && !conds) {
+        cli_error(r->cmd, 0, "out of memory");
+        st = CLI_EXIT_FAIL;
+    }
     for (int i = 0; !st && i < r->natt; i++)
         hol_report_agg_add(&g, &r->att[i].a);
+    if (!st && g.overflow) { /* cannot happen: never a silent limit */
+        cli_error(r->cmd, 0, "more than %d conditions", g.cap);
+        st = CLI_EXIT_FAIL;
+    }
     if (!st)
         st = report_write_csv(r);
     if (!st)
@@ -223,6 +312,7 @@ static int run(report_run *r, report_buf *b)
         printf("report: %d attempts from %d log folder%s\n", r->natt, r->ndirs,
                r->ndirs == 1 ? "" : "s");
     }
+    free(conds);
     return st;
 }
 
@@ -233,6 +323,12 @@ int cli_cmd_report(int argc, char **argv)
         fputs(report_usage, stdout);
         return cli_finish_output(cmd);
     }
+#ifdef __GLIBC__
+    /* the picture encoder's buffers (about 400 KB each) are reused, not
+     * mapped and faulted in again for each of 10,000 pictures */
+    mallopt(M_MMAP_THRESHOLD, 4 << 20);
+    mallopt(M_TRIM_THRESHOLD, 16 << 20);
+#endif
     static report_run r;
     memset(&r, 0, sizeof r);
     r.cmd = cmd;
@@ -250,8 +346,11 @@ int cli_cmd_report(int argc, char **argv)
         st = cli_finish_output(cmd);
     report_free(&r);
     free(r.dirs);
-    if (b)
+    if (b) {
         free(b->walked);
+        for (int q = 0; q < 9; q++)
+            free(b->background[q]);
+    }
     free(b);
     return st;
 }

@@ -36,6 +36,20 @@ typedef struct report_att {
     char png[32];     /* its picture's name in DIR, "" for none */
 } report_att;
 
+/* A level's objectives and optimal walk in one geometry, computed once
+ * (report_optimal; REPORT_OPT_CACHE of them, the oldest replaced). */
+#define REPORT_OPT_CACHE 16
+typedef struct report_opt {
+    char sha[HOL_REPORT_TEXT]; /* "" for none */
+    int q, cols, rows;
+    hol_room start;
+    hol_tile goals[HOL_APP_MAX_OBJECTIVES];
+    int ngoals, chest_last;
+    int has_optimal, optimal_len;
+    int nwalk;
+    hol_tile walk[HOL_NAV_WALK_MAX]; /* last: not cleared */
+} report_opt;
+
 typedef struct report_run {
     const char *cmd;
     char **dirs;
@@ -48,6 +62,8 @@ typedef struct report_run {
     int nav_key[6];
     int nnav;
     hol_level level;   /* scratch */
+    report_opt *opt;   /* REPORT_OPT_CACHE entries, made on first use */
+    int nopt, nopt_next;
     int quiet;         /* 1: warnings were given (the second pass) */
 } report_run;
 

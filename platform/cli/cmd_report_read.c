@@ -1,5 +1,6 @@
 /* cmd_report_read.c - log folders read back for `holonomy report`
  * (cmd_report.h): summaries, steps files, levels and their optimal walks. */
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -17,9 +18,24 @@ static void path_of(char *out, size_t cap, const char *dir, const char *name)
 
 static int bad_line(const char *cmd, const char *path, long line, const char *msg)
 {
-    char esc[512];
-    cli_error(cmd, 0, "%s: line %ld: %s", cli_escape(path, esc, sizeof esc), line, msg);
+    /* cli_error escapes the whole message once (the path is raw here) */
+    cli_error(cmd, 0, "%.300s: line %ld: %s", path, line, msg);
     return CLI_EXIT_USAGE;
+}
+
+/* A CSV line as the report reads it: a UTF-8 byte order mark at the start
+ * of the file is dropped (spreadsheets write one); 0 for a blank line
+ * (empty or only spaces and tabs), which is skipped wherever it stands. */
+static int csv_line(const hol_lines *l, char **s, size_t *n)
+{
+    if (l->lineno == 1 && *n >= 3 && !memcmp(*s, "\xef\xbb\xbf", 3)) {
+        *s += 3;
+        *n -= 3;
+    }
+    for (size_t i = 0; i < *n; i++)
+        if ((*s)[i] != ' ' && (*s)[i] != '\t')
+            return 1;
+    return 0;
 }
 
 static int read_summary(report_run *r, int d)
@@ -34,10 +50,12 @@ static int read_summary(report_run *r, int d)
     char err[HOL_REPORT_ERR];
     char *s;
     size_t n;
-    int got;
+    int got, header = 0;
     while ((got = hol_lines_next(&l, &s, &n)) > 0) {
         hol_err e;
-        if (l.lineno == 1) {
+        if (!csv_line(&l, &s, &n))
+            continue;
+        if (!header++) {
             e = hol_report_summary_header(s, n, &h, err);
         } else if (r->natt == REPORT_MAX_ATTEMPTS) {
             snprintf(err, sizeof err, "more than %d attempts in all", REPORT_MAX_ATTEMPTS);
@@ -56,7 +74,7 @@ static int read_summary(report_run *r, int d)
         }
     }
     st = got < 0 ? cli_lines_failed(r->cmd, "summary", path, &l) : 0;
-    if (!st && l.lineno == 0)
+    if (!st && !header)
         st = bad_line(r->cmd, path, 1, "empty: no header");
     hol_lines_close(&l);
     return st;
@@ -134,11 +152,13 @@ int report_walk(report_run *r, report_att *t, hol_tile *tiles, int *out_n)
     char err[HOL_REPORT_ERR];
     char *line;
     size_t n;
-    int got = 0, ok = 1;
+    int got = 0, ok = 1, header = 0;
     long count = 0;
     while (ok && (got = hol_lines_next(&l, &line, &n)) > 0) {
         hol_tile tile;
-        if (l.lineno == 1) {
+        if (!csv_line(&l, &line, &n))
+            continue;
+        if (!header++) {
             ok = !hol_report_steps_header(line, n, &h, err);
         } else if (count == REPORT_MAX_STEPS) {
             snprintf(err, sizeof err, "more than %d steps", REPORT_MAX_STEPS);
@@ -154,7 +174,7 @@ int report_walk(report_run *r, report_att *t, hol_tile *tiles, int *out_n)
         st = bad_line(r->cmd, path, l.lineno, err);
     else if (got < 0)
         st = cli_lines_failed(r->cmd, "steps", path, &l);
-    else if (l.lineno == 0)
+    else if (!header)
         st = bad_line(r->cmd, path, 1, "empty: no header");
     hol_lines_close(&l);
     *out_n = (int)count;
@@ -211,6 +231,63 @@ static int objectives(const hol_app_level *L, int q, hol_tile *goals, int *ngoal
     return in_tiling(L->chest, q, &goals[(*ngoals)++]);
 }
 
+/* The level's objectives and optimal walk (report_optimal, the file read
+ * and found there): 0, or a warning given (no optimal walk), or the exit
+ * status of a refused level. *cacheable: 1 when the result is the level's
+ * (not a warning's). */
+static int optimal_of(report_run *r, const report_att *t, const char *path, report_opt *o,
+                      int *cacheable)
+{
+    const hol_report_attempt *a = &t->a;
+    *cacheable = 0;
+    int st = play_read_level(r->cmd, path, &r->level);
+    if (st)
+        return st;
+    const hol_app_level *L = &r->level.lvl;
+    for (int i = 0; i < L->nstart; i++)
+        if (hol_room_step(&o->start, L->start[i]))
+            return warn(r, path, "its start walk leaves the room: no optimal walk");
+    if (!objectives(L, a->tiling_q, o->goals, &o->ngoals, &o->chest_last))
+        return warn(r, path, "an objective outside the tiling: no optimal walk");
+    *cacheable = 1;
+    if (L->mode != HOL_APP_FLAG && L->mode != HOL_APP_KEYS)
+        return 0; /* explore and the tutorial have no optimum */
+    *cacheable = 0;
+    hol_nav *nav = nav_for(r, a->tiling_q, a->room_cols, a->room_rows);
+    uint8_t dirs[HOL_NAV_WALK_MAX];
+    hol_nav_result res;
+    hol_err e = !nav ? HOL_ENOMEM
+                : L->mode == HOL_APP_FLAG
+                    ? hol_nav_find(nav, &o->start, o->goals[0], 0, dirs, sizeof dirs, &res)
+                    : hol_nav_tour(nav, &o->start, o->goals, o->ngoals - 1,
+                                   o->goals[o->ngoals - 1], 0, dirs, sizeof dirs, &res);
+    if (e)
+        return warn(r, path, "no optimal walk found for it");
+    hol_room w = o->start;
+    for (int i = 0; i < res.len; i++) {
+        if (hol_room_step(&w, dirs[i]))
+            return warn(r, path, "the optimal walk failed");
+        o->walk[o->nwalk++] = w.tile;
+    }
+    o->has_optimal = 1;
+    o->optimal_len = res.len;
+    *cacheable = 1;
+    return 0;
+}
+
+/* A level's result by its hash and the geometry (the same file content in
+ * every folder: its name is its SHA-256), found or NULL. */
+static report_opt *cached(report_run *r, const hol_report_attempt *a)
+{
+    for (int i = 0; i < r->nopt; i++) {
+        report_opt *o = &r->opt[i];
+        if (o->q == a->tiling_q && o->cols == a->room_cols && o->rows == a->room_rows &&
+            !strcmp(o->sha, a->level_sha256))
+            return o;
+    }
+    return NULL;
+}
+
 int report_optimal(report_run *r, report_att *t, hol_room *out_start, hol_tile *goals,
                    int *ngoals, int *chest_last, hol_tile *walk, int *nwalk)
 {
@@ -225,36 +302,33 @@ int report_optimal(report_run *r, report_att *t, hol_room *out_start, hol_tile *
     path_of(path, sizeof path, r->dirs[t->dir], name);
     if (!a->level_sha256[0] || strchr(a->level_sha256, '/') || missing(path))
         return warn(r, path, "missing: the picture has no optimal walk");
-    int st = play_read_level(r->cmd, path, &r->level);
-    if (st)
-        return st;
-    const hol_app_level *L = &r->level.lvl;
-    for (int i = 0; i < L->nstart; i++)
-        if (hol_room_step(out_start, L->start[i]))
-            return warn(r, path, "its start walk leaves the room: no optimal walk");
-    if (!objectives(L, a->tiling_q, goals, ngoals, chest_last))
-        return warn(r, path, "an objective outside the tiling: no optimal walk");
-    if (L->mode != HOL_APP_FLAG && L->mode != HOL_APP_KEYS)
-        return 0; /* explore and the tutorial have no optimum */
-    hol_nav *nav = nav_for(r, a->tiling_q, a->room_cols, a->room_rows);
-    uint8_t dirs[HOL_NAV_WALK_MAX];
-    hol_nav_result res;
-    hol_err e = !nav ? HOL_ENOMEM
-                : L->mode == HOL_APP_FLAG
-                    ? hol_nav_find(nav, out_start, goals[0], 0, dirs, sizeof dirs, &res)
-                    : hol_nav_tour(nav, out_start, goals, *ngoals - 1, goals[*ngoals - 1], 0,
-                                   dirs, sizeof dirs, &res);
-    if (e)
-        return warn(r, path, "no optimal walk found for it");
-    hol_room w = *out_start;
-    for (int i = 0; i < res.len; i++) {
-        if (hol_room_step(&w, dirs[i]))
-            return warn(r, path, "the optimal walk failed");
-        walk[(*nwalk)++] = w.tile;
+    if (!r->opt && !(r->opt = malloc(sizeof *r->opt * REPORT_OPT_CACHE)))
+        return warn(r, path, "out of memory: no optimal walk");
+    report_opt *o = cached(r, a);
+    int st = 0, keep = 0;
+    if (!o) {
+        o = &r->opt[r->nopt < REPORT_OPT_CACHE ? r->nopt : r->nopt_next++ % REPORT_OPT_CACHE];
+        memset(o, 0, offsetof(report_opt, walk));
+        o->start = *out_start;
+        o->optimal_len = -1;
+        st = optimal_of(r, t, path, o, &keep);
+        if (keep) {
+            snprintf(o->sha, sizeof o->sha, "%s", a->level_sha256);
+            o->q = a->tiling_q, o->cols = a->room_cols, o->rows = a->room_rows;
+            r->nopt += r->nopt < REPORT_OPT_CACHE;
+        } else {
+            o->sha[0] = 0; /* a warning's: not kept */
+        }
     }
-    t->has_optimal = 1;
-    t->optimal_len = res.len;
-    return 0;
+    *out_start = o->start;
+    memcpy(goals, o->goals, sizeof *goals * (size_t)o->ngoals);
+    *ngoals = o->ngoals;
+    *chest_last = o->chest_last;
+    memcpy(walk, o->walk, sizeof *walk * (size_t)o->nwalk);
+    *nwalk = o->nwalk;
+    t->has_optimal = o->has_optimal;
+    t->optimal_len = o->optimal_len;
+    return st;
 }
 
 void report_free(report_run *r)
@@ -262,6 +336,8 @@ void report_free(report_run *r)
     for (int i = 0; i < r->nnav; i++)
         hol_nav_destroy(r->nav[i]);
     r->nnav = 0;
+    free(r->opt);
+    r->opt = NULL;
     free(r->att);
     r->att = NULL;
 }

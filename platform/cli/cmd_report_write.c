@@ -8,10 +8,12 @@
 #include "cli.h"
 #include "cmd_report.h"
 
+/* A text from the logs, cleaned (hol_report_clean), as a CSV field. */
 static void csv(FILE *f, const char *s, int last)
 {
-    char buf[4 * HOL_REPORT_TEXT + 8];
-    hol_text_csv(s, strlen(s), buf, sizeof buf);
+    char clean[4 * HOL_REPORT_TEXT + 8], buf[8 * HOL_REPORT_TEXT + 16];
+    hol_report_clean(s, clean, sizeof clean);
+    hol_text_csv(clean, strlen(clean), buf, sizeof buf);
     fputs(buf, f);
     fputc(last ? '\n' : ',', f);
 }
@@ -36,8 +38,7 @@ static int open_out(const report_run *r, const char *name, hol_file_atomic *a, c
 {
     snprintf(path, cap, "%s/%s", r->out, name);
     if (hol_file_atomic_open(a, path)) {
-        char esc[512];
-        cli_error(r->cmd, 0, "cannot write '%s'", cli_escape(path, esc, sizeof esc));
+        cli_error(r->cmd, 0, "cannot write '%.300s'", path);
         return CLI_EXIT_FAIL;
     }
     return 0;
@@ -48,8 +49,7 @@ static int commit(const report_run *r, hol_file_atomic *a, const char *path)
     if (ferror(a->f) || hol_file_atomic_commit(a)) {
         if (a->f)
             hol_file_atomic_abort(a);
-        char esc[512];
-        cli_error(r->cmd, 0, "cannot write '%s'", cli_escape(path, esc, sizeof esc));
+        cli_error(r->cmd, 0, "cannot write '%.300s'", path);
         return CLI_EXIT_FAIL;
     }
     return 0;
@@ -115,10 +115,13 @@ int report_write_conditions(const report_run *r, const hol_report_agg *g)
     return commit(r, &a, path);
 }
 
-/* Text for HTML: & < > " ' as entities (the names come from outside). */
-static void html(FILE *f, const char *s)
+/* Text for HTML: cleaned (hol_report_clean: no control byte, valid
+ * UTF-8), then & < > " ' as entities (the names come from outside). */
+static void html(FILE *f, const char *text)
 {
-    for (; *s; s++)
+    char clean[4 * 1024 + 8];
+    hol_report_clean(text, clean, sizeof clean);
+    for (const char *s = clean; *s; s++)
         switch (*s) {
         case '&': fputs("&amp;", f); break;
         case '<': fputs("&lt;", f); break;

@@ -181,25 +181,45 @@ static void marks(canvas *c, const report_picture *p)
     }
 }
 
+/* The disk and the tiling's edges (they do not depend on the start: the
+ * grid around it looks the same, see tile_edges). */
+static void background(canvas *c, int q)
+{
+    for (int i = 0; i < c->size * c->size; i++)
+        memcpy(c->px + 4 * (size_t)i, "\xff\xff\xff\xff", 4);
+    dot(c, c->cx, c->cy, c->r, 0xf4f3ec);
+    ring(c, c->cx, c->cy, c->r, 1.5, 0x82877a);
+    double corner_r = q == 4 ? 0 : acosh(1 / tan(M_PI / q));
+    int depth = q == 5 ? 6 : 5;
+    if (c->flat)
+        depth = (int)fmin(2 * c->extent + 2, 40);
+    c->clip = 1; /* the flat grid's lines end at the disk */
+    grid(c, hol_tile_origin_q(q), hol_tile_origin_q(q), depth, corner_r);
+    c->clip = 0;
+}
+
+hol_err report_draw_background(int q, uint8_t *rgba, int size)
+{
+    if (size < 64 || size > 2048 || q < 5 || q > 8)
+        return HOL_EARG;
+    canvas c = {.px = rgba, .size = size, .cx = size / 2.0, .cy = size / 2.0,
+                .r = size / 2.0 - 4, .extent = 1};
+    background(&c, q);
+    return HOL_OK;
+}
+
 hol_err report_draw(const report_picture *p, uint8_t *rgba, int size)
 {
     if (size < 64 || size > 2048 || !hol_room_ok(&p->start))
         return HOL_EARG;
     int q = hol_tile_q(p->start.tile);
     canvas c = {rgba, size, size / 2.0, size / 2.0, size / 2.0 - 4, q == 4, 0, 1, p->start};
-    for (int i = 0; i < size * size; i++)
-        memcpy(rgba + 4 * (size_t)i, "\xff\xff\xff\xff", 4);
-    dot(&c, c.cx, c.cy, c.r, 0xf4f3ec);
-    ring(&c, c.cx, c.cy, c.r, 1.5, 0x82877a);
-    double corner_r = q == 4 ? 0 : acosh(1 / tan(M_PI / q));
-    int depth = q == 5 ? 6 : 5;
-    if (c.flat) {
+    if (c.flat)
         c.extent = flat_extent(p);
-        depth = (int)fmin(2 * c.extent + 2, 40);
-    }
-    c.clip = 1; /* the flat grid's lines end at the disk */
-    grid(&c, hol_tile_origin_q(q), hol_tile_origin_q(q), depth, corner_r);
-    c.clip = 0;
+    if (p->background && !c.flat)
+        memcpy(rgba, p->background, (size_t)size * (size_t)size * 4);
+    else
+        background(&c, q);
     hol_err err = path(&c, p->optimal, p->noptimal, size / 50.0 + 3, REPORT_RGB_OPTIMAL);
     if (!err)
         err = path(&c, p->walked, p->nwalked, size / 120.0 + 1.5, REPORT_RGB_WALKED);

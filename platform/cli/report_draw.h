@@ -13,6 +13,11 @@
  *   so tests can count them.
  * - Tiles are of one tiling (the start's); others are HOL_EARG. size is
  *   64..2048. No allocation.
+ * - report_draw_background draws the disk and the edges alone for a
+ *   hyperbolic {4,q} (q 5..8; they are the same for every start): given as
+ *   background (same size and q), report_draw copies it instead of drawing
+ *   them again (many pictures: `holonomy report`). The flat {4,4} grid
+ *   depends on the walks' extent and is always drawn.
  */
 #ifndef REPORT_DRAW_H
 #define REPORT_DRAW_H
@@ -34,8 +39,10 @@ typedef struct report_picture {
     const hol_tile *goals;    /* objectives */
     int ngoals;
     int chest_last;           /* 1: the last goal is the chest (keys level) */
+    const uint8_t *background; /* NULL, or report_draw_background's of this q */
 } report_picture;
 
 hol_err report_draw(const report_picture *p, uint8_t *rgba, int size);
+hol_err report_draw_background(int q, uint8_t *rgba, int size);
 
 #endif
