@@ -84,7 +84,11 @@ enum {
                                      hand (hand_* below), the text on screen */
     HOL_RENDER_NO_POLES = 64,     /* no guide poles over the objectives */
     HOL_RENDER_NO_HOT_COLD = 128, /* minimap tiles grey, not hot-cold */
-    HOL_RENDER_NO_ARROW = 256     /* no rim arrows towards far objectives */
+    HOL_RENDER_NO_ARROW = 256,    /* no rim arrows towards far objectives */
+    HOL_RENDER_HUD_TEXT = 512     /* the HUD text, with or without the minimap
+                                     (MINIMAP implies it): a map that is off
+                                     never takes the objective, steps, time,
+                                     result or prompt with it */
 };
 
 #define HOL_RENDER_MAX_OBJECTIVES 8
