@@ -135,6 +135,10 @@ typedef struct hol_app_level {
     int tiling_q;             /* the tiling {4,Q}, 4..8; 0: 5 */
     int room_cols, room_rows; /* cells, 3..5 each; 0: 3 */
     double cell_m;            /* a cell's side in metres, 0.5..1.5; 0: 1.0 */
+    int last;                 /* 1: the last level of its session (the
+                                 session sets it): the end screen's confirm
+                                 finishes, and its prompt says "finish",
+                                 not "next level" */
 } hol_app_level;
 
 typedef struct hol_app_desc {
@@ -163,7 +167,8 @@ typedef struct hol_app_hud {
                                          named for the device in use
                                          (core/hol_prompt.h): "ENTER: NEXT
                                          LEVEL, R: AGAIN", "A: NEXT LEVEL",
-                                         "TRIGGER: NEXT LEVEL"; or "" */
+                                         "TRIGGER: NEXT LEVEL" ("FINISH" on
+                                         the last level); or "" */
     char address[HOL_TILE_ADDR_MAX];  /* the current tile */
     char feedback[HOL_APP_TEXT_MAX];  /* tutorial: the lesson just done, or "" */
     int steps;                        /* room steps this level */

@@ -140,7 +140,7 @@ static void hol__fill_status(hol_app *app, const hol_input *in, hol_app_hud *h)
         else
             snprintf(h->status, sizeof h->status, "Done: %d steps, best %d, %ld:%02ld",
                      app->steps, app->optimum, secs / 60 % 100000, secs % 60);
-        const hol__ask ask[2] = {{HOL_BTN_CONFIRM, 0, "next level"},
+        const hol__ask ask[2] = {{HOL_BTN_CONFIRM, 0, app->level.last ? "finish" : "next level"},
                                  {HOL_BTN_RESTART, 0, "again"}};
         hol__prompt(h, dev, ask, 2);
     } else if (v->paused && in && (in->flags & HOL_INPUT_DEVICE_LOST)) {

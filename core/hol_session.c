@@ -44,7 +44,9 @@ static hol_err hol__check_desc(const hol_session_desc *d, char *msg, size_t cap)
 
 static hol_err hol__start_level(hol_session *s)
 {
-    hol_err e = hol_app_start_level(s->app, &s->levels[s->cur].lvl);
+    hol_app_level L = s->levels[s->cur].lvl;
+    L.last = s->cur == s->nlevels - 1; /* its end screen says "finish" */
+    hol_err e = hol_app_start_level(s->app, &L);
     if (e)
         snprintf(s->msg, sizeof s->msg, "level '%.60s' cannot start: %s",
                  s->levels[s->cur].name,
