@@ -135,6 +135,11 @@ typedef struct hol_app_level {
     int tiling_q;             /* the tiling {4,Q}, 4..8; 0: 5 */
     int room_cols, room_rows; /* cells, 3..5 each; 0: 3 */
     double cell_m;            /* a cell's side in metres, 0.5..1.5; 0: 1.0 */
+    int minimap_fixed;        /* 1: the minimap stays where `minimap`
+                                 puts it (level line `fixed minimap`; a
+                                 study condition that sets the minimap):
+                                 HOL_BTN_MINIMAP only says "Minimap fixed
+                                 in this study" (hud.feedback, 3 s) */
     int last;                 /* 1: the last level of its session (the
                                  session sets it): the end screen's confirm
                                  finishes, and its prompt says "finish",
@@ -279,6 +284,10 @@ typedef struct hol_app_events {
     hol_app_summary summary; /* with level_ended */
     int next_level;        /* confirm on the end screen: the platform
                               starts the next level */
+    int minimap_moved;     /* HOL_BTN_MINIMAP moved the minimap (to
+                              view.map.place) in this step */
+    int minimap_refused;   /* HOL_BTN_MINIMAP was pressed on a level whose
+                              minimap is fixed: nothing moved */
 } hol_app_events;
 
 typedef struct hol_app hol_app;

@@ -177,7 +177,7 @@ static void hol__fill_lines(const hol_app *app, hol_app_hud *h)
     long secs = (long)app->level_t, lim = (long)app->level.time_limit_s;
     h->nlines = 0;
 #define HOL__LINE(...) snprintf(h->lines[h->nlines++], HOL_APP_TEXT_MAX, __VA_ARGS__)
-    if (h->feedback[0] && v->state != HOL_APP_DONE)
+    if (h->feedback[0] && (v->state != HOL_APP_DONE || !strcmp(h->feedback, HOL__FIXED_TEXT)))
         HOL__LINE("%s", h->feedback);
     HOL__LINE("%s", h->status[0] ? h->status : h->objective);
     HOL__LINE("STEPS %d", h->steps);
@@ -214,7 +214,9 @@ static void hol__fill_hud(hol_app *app, const hol_input *in)
         h->keys_held += (int)(app->keys_held >> k & 1);
     hol_tile_print(app->view.user.tile, h->address);
     int fb = tut && app->feedback[0] && app->level_t < app->feedback_until;
-    snprintf(h->feedback, sizeof h->feedback, "%s", fb ? app->feedback : "");
+    int fixed = app->fixed_shown && in && in->time_s < app->fixed_until;
+    snprintf(h->feedback, sizeof h->feedback, "%s",
+             fixed ? HOL__FIXED_TEXT : fb ? app->feedback : "");
     hol__fill_objective(app, h);
     hol__fill_status(app, in, h);
     hol__fill_lines(app, h);
