@@ -245,7 +245,8 @@ static void hol__fill_map(hol_app *app)
         if (h->keys_held == h->keys_total)
             m->objectives[m->nobjectives++] = L->chest;
     }
-    m->nmarks = h->feedback[0] ? app->nmarks : 0;
+    /* the lesson's marks go with its feedback (not with "Minimap fixed") */
+    m->nmarks = h->feedback[0] && strcmp(h->feedback, HOL__FIXED_TEXT) ? app->nmarks : 0;
     memcpy(m->marks, app->marks, sizeof m->marks);
     v->nobjects = 0;
     if (L->mode == HOL_APP_FLAG)
