@@ -565,8 +565,14 @@ hol_err hol_app_step(hol_app *app, const hol_input *in)
     }
     if (pressed & HOL_BTN_MENU)
         app->menu = !app->menu;
-    if (pressed & HOL_BTN_MINIMAP)
+    if ((pressed & HOL_BTN_MINIMAP) && app->level.minimap_fixed) {
+        app->ev.minimap_refused = 1; /* a condition's minimap holds */
+        app->fixed_shown = 1;
+        app->fixed_until = in->time_s + HOL__FIXED_S;
+    } else if (pressed & HOL_BTN_MINIMAP) {
         v->map.place = (v->map.place + 1) % 3;
+        app->ev.minimap_moved = 1;
+    }
     int restarted = 0;
     if (pressed & HOL_BTN_RESTART) {
         restarted = 1;

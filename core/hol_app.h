@@ -136,6 +136,15 @@ typedef struct hol_app_level {
     int tiling_q;             /* the tiling {4,Q}, 4..8; 0: 5 */
     int room_cols, room_rows; /* cells, 3..5 each; 0: 3 */
     double cell_m;            /* a cell's side in metres, 0.5..1.5; 0: 1.0 */
+    int minimap_fixed;        /* 1: the minimap stays where `minimap`
+                                 puts it (level line `fixed minimap`; a
+                                 study condition that sets the minimap):
+                                 HOL_BTN_MINIMAP only says "Minimap fixed
+                                 in this study" (hud.feedback, 3 s) */
+    int last;                 /* 1: the last level of its session (the
+                                 session sets it): the end screen's confirm
+                                 finishes, and its prompt says "finish",
+                                 not "next level" */
 } hol_app_level;
 
 typedef struct hol_app_desc {
@@ -166,7 +175,8 @@ typedef struct hol_app_hud {
                                          named for the device in use
                                          (core/hol_prompt.h): "ENTER: NEXT
                                          LEVEL, R: AGAIN", "A: NEXT LEVEL",
-                                         "TRIGGER: NEXT LEVEL"; or "" */
+                                         "TRIGGER: NEXT LEVEL" ("FINISH" on
+                                         the last level); or "" */
     char address[HOL_TILE_ADDR_MAX];  /* the current tile */
     char feedback[HOL_APP_TEXT_MAX];  /* tutorial: the lesson just done, or "" */
     int steps;                        /* room steps this level */
@@ -281,6 +291,10 @@ typedef struct hol_app_events {
                               (core/hol_haptic.h: a hand into a hedge or a
                               trunk, a room step; none while paused or
                               with desc.no_haptics); the platform plays them */
+    int minimap_moved;     /* HOL_BTN_MINIMAP moved the minimap (to
+                              view.map.place) in this step */
+    int minimap_refused;   /* HOL_BTN_MINIMAP was pressed on a level whose
+                              minimap is fixed: nothing moved */
 } hol_app_events;
 
 typedef struct hol_app hol_app;

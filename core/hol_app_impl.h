@@ -14,6 +14,10 @@
 #include "hol_app.h"
 #include "hol_nav.h"
 
+/* "Minimap fixed in this study" stays on the HUD this long (input clock,
+ * seconds: it shows on a paused or finished level too). */
+#define HOL__FIXED_S 3.0
+#define HOL__FIXED_TEXT "Minimap fixed in this study"
 /* Tutorial feedback stays on the HUD this long (level clock, seconds). */
 #define HOL__FEEDBACK_S 6.0
 
@@ -63,6 +67,8 @@ struct hol_app {
     hol_tile target;
     char feedback[HOL_APP_TEXT_MAX]; /* the last lesson done says so */
     double feedback_until;   /* level time the feedback shows until */
+    int fixed_shown;         /* "Minimap fixed" was asked for ... */
+    double fixed_until;      /* ... and shows until this input time */
     int nmarks;              /* tiles marked on the minimap with it */
     hol_tile marks[HOL_APP_MAX_MARKS];
     uint8_t walk[HOL_NAV_WALK_MAX]; /* replan scratch */

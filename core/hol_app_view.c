@@ -140,7 +140,7 @@ static void hol__fill_status(hol_app *app, const hol_input *in, hol_app_hud *h)
         else
             snprintf(h->status, sizeof h->status, "Done: %d steps, best %d, %ld:%02ld",
                      app->steps, app->optimum, secs / 60 % 100000, secs % 60);
-        const hol__ask ask[2] = {{HOL_BTN_CONFIRM, 0, "next level"},
+        const hol__ask ask[2] = {{HOL_BTN_CONFIRM, 0, app->level.last ? "finish" : "next level"},
                                  {HOL_BTN_RESTART, 0, "again"}};
         hol__prompt(h, dev, ask, 2);
     } else if (v->paused && in && (in->flags & HOL_INPUT_DEVICE_LOST)) {
@@ -177,7 +177,7 @@ static void hol__fill_lines(const hol_app *app, hol_app_hud *h)
     long secs = (long)app->level_t, lim = (long)app->level.time_limit_s;
     h->nlines = 0;
 #define HOL__LINE(...) snprintf(h->lines[h->nlines++], HOL_APP_TEXT_MAX, __VA_ARGS__)
-    if (h->feedback[0] && v->state != HOL_APP_DONE)
+    if (h->feedback[0] && (v->state != HOL_APP_DONE || !strcmp(h->feedback, HOL__FIXED_TEXT)))
         HOL__LINE("%s", h->feedback);
     HOL__LINE("%s", h->status[0] ? h->status : h->objective);
     HOL__LINE("STEPS %d", h->steps);
@@ -214,7 +214,9 @@ static void hol__fill_hud(hol_app *app, const hol_input *in)
         h->keys_held += (int)(app->keys_held >> k & 1);
     hol_tile_print(app->view.user.tile, h->address);
     int fb = tut && app->feedback[0] && app->level_t < app->feedback_until;
-    snprintf(h->feedback, sizeof h->feedback, "%s", fb ? app->feedback : "");
+    int fixed = app->fixed_shown && in && in->time_s < app->fixed_until;
+    snprintf(h->feedback, sizeof h->feedback, "%s",
+             fixed ? HOL__FIXED_TEXT : fb ? app->feedback : "");
     hol__fill_objective(app, h);
     hol__fill_status(app, in, h);
     hol__fill_lines(app, h);
@@ -243,7 +245,8 @@ static void hol__fill_map(hol_app *app)
         if (h->keys_held == h->keys_total)
             m->objectives[m->nobjectives++] = L->chest;
     }
-    m->nmarks = h->feedback[0] ? app->nmarks : 0;
+    /* the lesson's marks go with its feedback (not with "Minimap fixed") */
+    m->nmarks = h->feedback[0] && strcmp(h->feedback, HOL__FIXED_TEXT) ? app->nmarks : 0;
     memcpy(m->marks, app->marks, sizeof m->marks);
     v->nobjects = 0;
     if (L->mode == HOL_APP_FLAG)

@@ -309,6 +309,16 @@ static hol_err hol__key_cues(hol__lp *p, char **f, int nf)
     return HOL_OK;
 }
 
+/* fixed minimap: the minimap's place holds (HOL_BTN_MINIMAP is refused) */
+static hol_err hol__key_fixed(hol__lp *p, char **f, int nf)
+{
+    (void)nf;
+    if (strcmp(f[1], "minimap"))
+        return hol__lfail(p, HOL_EPARSE, p->line, "fixed '%.20s' is not minimap", f[1]);
+    p->L.minimap_fixed = 1;
+    return HOL_OK;
+}
+
 static hol_err hol__key_minimap(hol__lp *p, char **f, int nf)
 {
     static const char *const places[3] = {"hud", "hand", "off"};
@@ -382,6 +392,7 @@ static const struct {
     {"place", 3, 3, hol__key_place},
     {"cues", 2, HOL__FIELDS + 1, hol__key_cues},
     {"minimap", 2, 2, hol__key_minimap},
+    {"fixed", 2, 2, hol__key_fixed},
     {"tiling", 3, 3, hol__key_tiling},
     {"room", 3, 3, hol__key_room},
     {"cell", 2, 2, hol__key_cell},

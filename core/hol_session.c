@@ -44,7 +44,9 @@ static hol_err hol__check_desc(const hol_session_desc *d, char *msg, size_t cap)
 
 static hol_err hol__start_level(hol_session *s)
 {
-    hol_err e = hol_app_start_level(s->app, &s->levels[s->cur].lvl);
+    hol_app_level L = s->levels[s->cur].lvl;
+    L.last = s->cur == s->nlevels - 1; /* its end screen says "finish" */
+    hol_err e = hol_app_start_level(s->app, &L);
     long at = e == HOL_EBUDGET || e == HOL_EUNREACH ? hol_level_objective_line(&s->levels[s->cur]) : 0;
     char line[32] = "";
     if (at > 0)

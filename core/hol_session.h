@@ -61,7 +61,10 @@
  *   session's recording) is refused at create (HOL_EARG).
  * - Columns (CSV per RFC 4180; names via hol_text_csv):
  *   summary.csv HOL_SESSION_SUMMARY_COLUMNS, steps HOL_SESSION_STEP_COLUMNS,
- *   head HOL_SESSION_HEAD_COLUMNS; the README ("Research logs") documents
+ *   head HOL_SESSION_HEAD_COLUMNS; events.csv HOL_SESSION_EVENT_COLUMNS (a
+ *   row, appended durably as it happens, for each change of the minimap's
+ *   place during play, `minimap`, and each refused one, `minimap-fixed`;
+ *   the header when the file is new; a folder holding it holds logs); the README ("Research logs") documents
  *   each. Head rows fall on exact 10 Hz level times, interpolated between
  *   the frames around them (position linear, yaw the short way round;
  *   cell and tile from the nearer frame), frame_t the later frame's time.
@@ -104,6 +107,7 @@
     "session,attempt,level,t,step,col,row,dir,yaw,tile,orient,remaining,cues,visible"
 #define HOL_SESSION_HEAD_COLUMNS \
     "session,attempt,level,t,frame_t,x,y,z,yaw,pitch,col,row,tile"
+#define HOL_SESSION_EVENT_COLUMNS "session,attempt,level,t,event,value"
 
 typedef struct hol_session_desc {
     const hol_level *levels; /* 1..HOL_SESSION_MAX_LEVELS, copied */

@@ -46,6 +46,7 @@ struct hol_session {
     double flush_s, next_flush, now;
     long frames;
     int over, finished, recovered, dropped;
+    int events_known;        /* events.csv is known to have its header */
     hol_err failed;          /* the first sink failure (sticky) */
     int failed_told;
     char msg[256];

@@ -332,6 +332,41 @@ void hol__attempt_end(hol_session *s, const hol_app_summary *sum, int end)
         hol__fail_sink(s, s->log, HOL_EIO, "remove", name);
 }
 
+/* A row of events.csv (see hol_session.h), with the header when the file
+ * is new. */
+static void hol__event_row(hol_session *s, const char *event, const char *value, double t)
+{
+    if (s->failed)
+        return;
+    if (!s->events_known) {
+        char c;
+        size_t got = 0;
+        hol_err e = s->log->read(s->log->user, "events.csv", 0, &c, 1, &got);
+        if (e == HOL_EOPEN || (!e && got == 0))
+            hol__put_file(s, "events.csv", 1, HOL_SESSION_EVENT_COLUMNS "\n",
+                          sizeof HOL_SESSION_EVENT_COLUMNS);
+        else if (e)
+            hol__fail_sink(s, s->log, e, "read", "events.csv");
+        s->events_known = 1;
+    }
+    char name[HOL__CSV_NAME], row[HOL__CSV_NAME + 256];
+    hol__csv_name(s->levels[s->cur].name, name);
+    int n = snprintf(row, sizeof row, "%s,%d,%s,%.4f,%s,%s\n", s->meta.session, s->attempt,
+                     name, t, event, value);
+    if (n > 0 && (size_t)n < sizeof row)
+        hol__put_file(s, "events.csv", 1, row, (size_t)n);
+}
+
+static void hol__events(hol_session *s, const hol_app_events *ev, const hol_app_view *v)
+{
+    static const char *const places[3] = {"hud", "hand", "off"};
+    const char *place = places[v->map.place >= 0 && v->map.place < 3 ? v->map.place : 0];
+    if (ev->minimap_moved)
+        hol__event_row(s, "minimap", place, v->hud.elapsed_s);
+    if (ev->minimap_refused)
+        hol__event_row(s, "minimap-fixed", place, v->hud.elapsed_s);
+}
+
 void hol__log_frame(hol_session *s, const hol_app_events *ev, const hol_app_view *v)
 {
     /* a restart ends the old attempt before the new one's rows; a
@@ -340,6 +375,7 @@ void hol__log_frame(hol_session *s, const hol_app_events *ev, const hol_app_view
         hol__attempt_end(s, &ev->summary, ev->level_ended);
     if (ev->level_started)
         hol__attempt_begin(s, v);
+    hol__events(s, ev, v); /* the end screen's too: the place outlives it */
     if (!s->attempt_open)
         return;
     hol__step_rows(s, ev, v);

@@ -204,6 +204,19 @@ static hol_err hol__header(hol__sp *p, int is_study, const char *w, size_t n)
                      (int)(n < 30 ? n : 30), w);
 }
 
+/* allow minimap-toggle: before the first condition; the conditions'
+ * minimap is not fixed (M moves it, and the logs say so). */
+static hol_err hol__allow(hol__sp *p, const char *w, size_t n)
+{
+    if (p->cur >= 0)
+        return hol__fail(p->err, HOL_EARG, p->line, 0, "'allow' comes before the first condition");
+    if (!hol__is(w, n, "minimap-toggle"))
+        return hol__fail(p->err, HOL_EPARSE, p->line, 0, "allow '%.*s' is not minimap-toggle",
+                         (int)(n < 30 ? n : 30), w);
+    p->s->allow_minimap_toggle = 1;
+    return HOL_OK;
+}
+
 /* One line [b, end) (no LF, CR dropped, no comment). */
 static hol_err hol__line(hol__sp *p, const char *b, const char *end)
 {
@@ -213,18 +226,20 @@ static hol_err hol__line(hol__sp *p, const char *b, const char *end)
         return HOL_OK;
     if (hol__is(key, kn, "set"))
         return hol__add_set(p, rest, end);
-    static const char *const keys[5] = {"study", "counterbalance", "practice", "condition",
-                                        "level"};
+    static const char *const keys[6] = {"study", "counterbalance", "practice", "condition",
+                                        "level", "allow"};
     int k = 0;
-    while (k < 5 && !hol__is(key, kn, keys[k]))
+    while (k < 6 && !hol__is(key, kn, keys[k]))
         k++;
-    if (k == 5)
+    if (k == 6)
         return hol__fail(p->err, HOL_EPARSE, p->line, 0,
                          "unknown key '%.*s' (study, counterbalance, practice, condition, level, "
-                         "set)", (int)(kn < 20 ? kn : 20), key);
+                         "set, allow)", (int)(kn < 20 ? kn : 20), key);
     long n = hol__one(p, keys[k], rest, end, &w);
     if (n < 0)
         return p->err ? p->err->code : HOL_EPARSE;
+    if (k == 5)
+        return hol__allow(p, w, (size_t)n);
     if (k <= 1)
         return hol__header(p, k == 0, w, (size_t)n);
     if (k == 3)
@@ -526,6 +541,10 @@ static int hol__compose_text(const hol_study *s, int c, const char *file, size_t
         if (hol__in_force(s, c, j) &&
             hol__put_line(cp, s->text + s->sets[j].off, s->sets[j].len, -s->sets[j].line))
             return 1;
+    /* a condition's minimap holds during its levels (issue 26) */
+    if (hol__set_key(s, c, "minimap", 7) && !s->allow_minimap_toggle &&
+        hol__put_line(cp, "fixed minimap", 13, -cd->line))
+        return 1;
     return 0;
 }
 

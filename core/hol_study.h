@@ -20,6 +20,9 @@
  *                             order; none: the condition's level is made of
  *                             its set lines alone and named after it
  *     set KEY VALUE...        in a condition: a level line for its levels
+ *     allow minimap-toggle    before the first condition: a condition's
+ *                             `set minimap` is where its levels start, and
+ *                             the minimap key still moves it
  *   NAME: 1..63 letters, digits, '.', '_', '-' (hol_rec_id_ok); condition
  *   names are unique and not "practice". LEVEL: a level file's path (one
  *   field, 1..255 bytes), relative to the study file's folder; the
@@ -32,8 +35,10 @@
  *   every line of its key: `set place ...` replaces all placements), then
  *   a comment line naming the study and condition, then the study's set
  *   lines (those of a key the condition also sets left out), then the
- *   condition's. With no set line the text is the file's, unchanged (the
- *   same SHA-256). Practice levels are the files as they are.
+ *   condition's, then `fixed minimap` when a set line in force gives
+ *   `minimap` and the study has no `allow minimap-toggle` (the condition's
+ *   minimap holds: the key says "fixed in this study"). With no set line
+ *   the text is the file's, unchanged (the same SHA-256). Practice levels are the files as they are.
  * - Counterbalancing (hol_study_order, hol_study_square): participant
  *   number P (1, 2, ...) plays row (P - 1) mod R of the rule's square of
  *   the n conditions, R = hol_study_rows:
@@ -106,6 +111,7 @@ typedef struct hol_study {
     int nlevels;                            /* practice and conditions' */
     hol_study_span levels[HOL_STUDY_MAX_LEVELS]; /* LEVEL paths (len 0: a
                                                condition without a file) */
+    int allow_minimap_toggle;               /* `allow minimap-toggle` */
     int nglobal;                            /* sets[0..nglobal-1]: the study's */
     int nsets;
     hol_study_span sets[HOL_STUDY_MAX_SETS]; /* "KEY VALUE..." */

@@ -37,7 +37,7 @@ void hol_app_frame_desc(const hol_app_view *v, int eye, int w, int h, double fov
     fd->cam.fovy_deg = fovy_deg > 0 ? fovy_deg : 90;
     fd->cam.width = w;
     fd->cam.height = h;
-    fd->flags = v->map.place == HOL_MINIMAP_OFF ? 0 : HOL_RENDER_MINIMAP;
+    fd->flags = HOL_RENDER_HUD_TEXT | (v->map.place == HOL_MINIMAP_OFF ? 0 : HOL_RENDER_MINIMAP);
     if (!(v->map.cues & HOL_CUE_POLES))
         fd->flags |= HOL_RENDER_NO_POLES;
     if (!(v->map.cues & HOL_CUE_HOT_COLD))

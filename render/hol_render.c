@@ -700,6 +700,19 @@ static hol_err hol__queue_hud(hol_render *r, const hol_frame_desc *f)
     return HOL_OK;
 }
 
+/* The HUD text alone (the minimap off). */
+static hol_err hol__queue_text(hol_render *r, const hol_frame_desc *f)
+{
+    uint32_t i0 = r->dyn.ni;
+    hol_hud_build_text(&r->dyn, f, f->cam.width, f->cam.height);
+    hol__item *it = hol__push(r, HOL__PASS_HUD, i0, r->dyn.ni - i0);
+    if (it) {
+        it->key = (uint32_t)HOL__PASS_HUD << 24 | 1;
+        it->dyn = 1;
+    }
+    return HOL_OK;
+}
+
 /* Build the queue of a frame: the view, then each pass's items. */
 static hol_err hol__build(hol_render *r, const hol_frame_desc *f)
 {
@@ -724,9 +737,14 @@ static hol_err hol__build(hol_render *r, const hol_frame_desc *f)
         return err;
     if (f->fade > 0 && !(f->flags & HOL_RENDER_IDS) && (err = hol__queue_fade(r, f)))
         return err;
-    if ((f->flags & HOL_RENDER_MINIMAP) && !(f->flags & HOL_RENDER_NO_HUD) &&
-        (err = hol__queue_hud(r, f)))
-        return err;
+    if (!(f->flags & HOL_RENDER_NO_HUD)) {
+        if (f->flags & HOL_RENDER_MINIMAP)
+            err = hol__queue_hud(r, f);
+        else if (f->flags & HOL_RENDER_HUD_TEXT)
+            err = hol__queue_text(r, f);
+        if (err)
+            return err;
+    }
     return r->dyn.overflow ? HOL_ENOMEM : HOL_OK;
 }
 

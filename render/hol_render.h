@@ -93,10 +93,14 @@ enum {
     HOL_RENDER_NO_POLES = 64,     /* no guide poles over the objectives */
     HOL_RENDER_NO_HOT_COLD = 128, /* minimap tiles grey, not hot-cold */
     HOL_RENDER_NO_ARROW = 256,    /* no rim arrows towards far objectives */
-    HOL_RENDER_WAIT = 512         /* wait for the GL to finish the frame
+    HOL_RENDER_WAIT = 512,        /* wait for the GL to finish the frame
                                      (glFinish), so out_stats' times include
                                      the GPU's: benches and --frames timings
                                      only, never in a frame loop */
+    HOL_RENDER_HUD_TEXT = 1024    /* the HUD text, with or without the minimap
+                                     (MINIMAP implies it): a map that is off
+                                     never takes the objective, steps, time,
+                                     result or prompt with it */
 };
 
 #define HOL_RENDER_MAX_OBJECTIVES 8

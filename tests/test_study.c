@@ -263,7 +263,12 @@ static void test_refusals(void **state)
          "line 2: condition 'a,b' is not 1..63 letters, digits, '.', '_', '-'"},
         {"study s\nconditions a\n",
          "line 2: unknown key 'conditions' (study, counterbalance, practice, condition, level, "
-         "set)"},
+         "set, allow)"},
+        {"study s\nallow minimap\ncondition a\n",
+         "line 2: allow 'minimap' is not minimap-toggle"},
+        {"study s\ncondition a\nallow minimap-toggle\n",
+         "line 3: 'allow' comes before the first condition"},
+        {"study s\nallow\ncondition a\n", "line 2: 'allow' needs a value"},
         {"study s\ncondition a\nset\n", "line 3: 'set' needs a level line (KEY VALUE...)"},
         {"study s\ncondition a\nset minimap wrist\n",
          "line 3: set: minimap 'wrist' is not hud, hand or off"},
@@ -413,10 +418,12 @@ static void test_levels(void **state)
     assert_int_equal(make(1, 2, flag, &L, msg, &in_study), 0);
     assert_string_equal(L.text, "mode flag\nseed 7 # the world\nflag Nf\nplace rock Ef\n"
                                 "place pond Wf\n# study minimap-place, condition hud:\n"
-                                "time-limit 300\ncues hot-cold path poles arrow\nminimap hud\n");
+                                "time-limit 300\ncues hot-cold path poles arrow\nminimap hud\n"
+                                "fixed minimap\n");
     assert_string_equal(L.condition, "hud");
     assert_int_equal(L.position, 2);
     assert_int_equal(L.lvl.minimap, HOL_MINIMAP_HUD);
+    assert_int_equal(L.lvl.minimap_fixed, 1); /* the condition's minimap holds */
     assert_int_equal(L.lvl.cues, HOL_CUE_ALL);
     assert_true(L.lvl.time_limit_s == 300);
     assert_int_equal(L.lvl.nplaces, 2);
@@ -424,7 +431,8 @@ static void test_levels(void **state)
     assert_int_equal(make(3, 1, flag, &L, msg, &in_study), 0);
     assert_string_equal(L.text, "mode flag\nseed 7 # the world\nflag Nf\nplace rock Ef\n"
                                 "place pond Wf\n# study minimap-place, condition hand:\n"
-                                "time-limit 300\nminimap hand\ncues hot-cold   path\n");
+                                "time-limit 300\nminimap hand\ncues hot-cold   path\n"
+                                "fixed minimap\n");
     assert_int_equal(L.lvl.cues, HOL_CUE_HOT_COLD | HOL_CUE_PATH);
     /* none: no file; named after the condition */
     assert_int_equal(make(4, 3, NULL, &L, msg, &in_study), 0);

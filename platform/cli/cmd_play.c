@@ -27,7 +27,7 @@
 
 static const char *const play_usage =
     "usage: holonomy play [LEVEL | --mode tutorial|flag|keys|explore | --study FILE]\n"
-    "                     [--seed S] [--log DIR [--append]] [--participant ID]\n"
+    "                     [--seed S] [--log DIR [--append [--restart-participant]]] [--participant ID]\n"
     "                     [--record FILE]\n"
     "                     [--frames N] [--input FILE] [--size WxH]\n"
     "                     [--no-gamepad | --gamepad-replay FILE] [--snap-turn DEG]\n"
@@ -44,7 +44,8 @@ static const char *const play_usage =
     "  Left/Right       turn (--snap-turn: snap) PgUp/PgDn  look up/down\n"
     "  mouse drag       look (left button)     P            pause menu\n"
     "  R                restart the level      M            minimap: HUD, hand, off\n"
-    "  Enter/Space      next level (end screen); in the menu: restart\n"
+    "  Enter/Space      next level, or finish after the last (end screen);\n"
+    "                   in the menu: restart\n"
     "  F3               debug text (tile, cell)  F2        frame time (fps, CPU)\n"
     "  Esc/Q            quit\n"
     "\n"
@@ -68,6 +69,9 @@ static const char *const play_usage =
     "                  parent exists; a DIR holding logs is refused without\n"
     "  --append        add this session to the logs already in DIR (finishing\n"
     "                  the attempts a killed session left: end 'killed')\n"
+    "  --restart-participant  with --study and --append: start a participant\n"
+    "                  who already has rows of this study in DIR again from\n"
+    "                  the start of their order (else refused: one line)\n"
     "  --participant ID  the participant (1..63 letters, digits, '.', '_', '-'),\n"
     "                  in the summary and the recording\n"
     "  --record FILE   record the session (replay with 'holonomy replay'),\n"
@@ -102,7 +106,7 @@ typedef struct play_opts {
     play_geometry geo;
     uint64_t seed;
     long frames;
-    int w, h, use_pad, append, snap_deg, stats;
+    int w, h, use_pad, append, snap_deg, stats, restart_participant;
 } play_opts;
 
 typedef struct play_ctx {
@@ -185,7 +189,8 @@ static const char *const play_valued[] = {"--mode",  "--seed",  "--log",  "--rec
 
 static int play_options(const char *cmd, int argc, char **argv, play_opts *o)
 {
-    static const char *const flags[] = {"--no-gamepad", "--append", "--stats", NULL};
+    static const char *const flags[] = {"--no-gamepad", "--append", "--stats",
+                                        "--restart-participant", NULL};
     memset(o, 0, sizeof *o);
     o->seed = CLI_SEED_DEFAULT;
     o->w = 960, o->h = 720, o->use_pad = 1;
@@ -206,6 +211,8 @@ static int play_options(const char *cmd, int argc, char **argv, play_opts *o)
             o->append = 1;
         } else if (!strcmp(a, "--stats")) {
             o->stats = 1;
+        } else if (!strcmp(a, "--restart-participant")) {
+            o->restart_participant = 1;
         } else if (play_value(cmd, a, val, o)) {
             return CLI_EXIT_USAGE;
         }
@@ -217,7 +224,9 @@ static int play_options(const char *cmd, int argc, char **argv, play_opts *o)
                         : o->pad_script && !o->use_pad
                             ? "give --no-gamepad or --gamepad-replay, not both"
                         : o->append && !o->log_dir ? "--append goes with --log"
-                                                   : NULL;
+                        : o->restart_participant && !o->study
+                            ? "--restart-participant goes with --study"
+                            : NULL;
     if (clash) {
         cli_error(cmd, 0, "%s", clash);
         return CLI_EXIT_USAGE;
@@ -238,8 +247,9 @@ static int play_prepare_files(play_ctx *c)
     if (!st)
         st = play_out_open(c->cmd, o->log_dir, o->append, o->rec, &c->out);
     if (!st && o->study)
-        st = play_study_levels(c->cmd, o->study, o->participant, c->levels, &c->nlevels,
-                               c->study);
+        st = play_study_levels(c->cmd, o->study, o->participant,
+                               o->append && !o->restart_participant ? o->log_dir : NULL,
+                               c->levels, &c->nlevels, c->study);
     else if (!st)
         st = play_levels(c->cmd, o->level_path, o->mode, o->seed, &o->geo, c->levels,
                              &c->nlevels);

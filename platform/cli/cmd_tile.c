@@ -1,19 +1,29 @@
-/* cmd_tile.c - `holonomy tile walk` and `holonomy tile dist` (SPEC 4). */
+/* cmd_tile.c - `holonomy tile walk`, `tile dist` (SPEC 4) and `tile bearing`
+ * (SPEC 8). */
 #include <stdint.h>
 #include <string.h>
 
+#include "../../core/hol_bearing.h"
 #include "../../core/hol_room.h"
 #include "../../core/hol_tile.h"
 #include "cli.h"
 
 static const char *const tile_usage =
-    "usage: holonomy tile walk|dist [--tiling 4,Q]\n"
+    "usage: holonomy tile walk|dist|bearing [--tiling 4,Q]\n"
     "\n"
     "  tile walk   read lines of room steps (N, E, S, W; '-' or an empty line\n"
     "              for none), each a free walk from the start, and print per\n"
     "              line the tile reached: ADDRESS DISTANCE\n"
     "  tile dist   read lines 'A B' of two tile addresses and print per line\n"
     "              the fewest steps between the two tiles\n"
+    "  tile bearing  read lines 'WALK TARGET' (WALK a free walk from the\n"
+    "              start, '-' for none; TARGET an address) and print per line\n"
+    "              'TRUE FLAT': bearings in degrees clockwise from room north\n"
+    "              with one decimal (SPEC 8). TRUE: at the walk's end, the\n"
+    "              initial direction of the geodesic to TARGET's centre ('-'\n"
+    "              when the walk ends on TARGET); FLAT: the direction, in a\n"
+    "              flat grid, to where the walk first stood on TARGET ('-'\n"
+    "              when it never did or that vector is zero)\n"
     "\n"
     "  --tiling 4,Q   the square tiling {4,Q}, Q squares round every vertex,\n"
     "                 Q from 4 (the flat grid) to 8; default 4,5\n"
@@ -111,6 +121,56 @@ static int dist_line(void *ctx, long lineno, char *s, size_t len)
     return CLI_EXIT_OK;
 }
 
+/* One line of `tile bearing`: WALK TARGET. */
+static int bearing_line(void *ctx, long lineno, char *s, size_t len)
+{
+    const char *cmd = "tile bearing";
+    char *f[2];
+    size_t fl[2];
+    hol_tile target;
+    int q = *(const int *)ctx;
+    if (memchr(s, '\0', len)) {
+        cli_error(cmd, lineno, "line holds a NUL byte");
+        return CLI_EXIT_USAGE;
+    }
+    if (cli_split(s, len, f, fl, 2) != 2) {
+        cli_error(cmd, lineno, "expected 'WALK TARGET' (WALK '-' for none)");
+        return CLI_EXIT_USAGE;
+    }
+    if (fl[0] == 1 && f[0][0] == '-')
+        fl[0] = 0;
+    for (size_t i = 0; i < fl[0]; i++)
+        if (hol_dir_from_char((unsigned char)f[0][i]) < 0) {
+            cli_error(cmd, lineno, "character %zu of the walk is not a step (N, E, S "
+                      "or W)", i + 1);
+            return CLI_EXIT_USAGE;
+        }
+    if (parse_addr(cmd, lineno, q, f[1], fl[1], &target))
+        return CLI_EXIT_USAGE;
+    hol_bearing_walk w;
+    hol_bearing b;
+    hol_bearing_begin(&w, target);
+    for (size_t i = 0; i < fl[0]; i++)
+        if (hol_bearing_step(&w, hol_dir_from_char((unsigned char)f[0][i]))) {
+            cli_error(cmd, lineno,
+                      "step %zu goes beyond distance %d from O, the reach of "
+                      "tile words",
+                      i + 1, hol_tile_reach(q));
+            return CLI_EXIT_USAGE;
+        }
+    if (hol_bearing_end(&w, &b)) {
+        cli_error(cmd, lineno, "no bearing from the walk's end to that tile");
+        return CLI_EXIT_USAGE;
+    }
+    char t[HOL_BEARING_TEXT] = "-", fb[HOL_BEARING_TEXT] = "-";
+    if (b.has_true)
+        hol_bearing_format(b.true_deg, t);
+    if (b.has_flat)
+        hol_bearing_format(b.flat_deg, fb);
+    printf("%s %s\n", t, fb);
+    return CLI_EXIT_OK;
+}
+
 int cli_cmd_tile(int argc, char **argv)
 {
     static const char *const valued[] = {"--tiling", NULL};
@@ -138,9 +198,11 @@ int cli_cmd_tile(int argc, char **argv)
         return cli_for_each_line("tile walk", walk_line, &q);
     if (npos == 1 && !strcmp(pos[0], "dist"))
         return cli_for_each_line("tile dist", dist_line, &q);
+    if (npos == 1 && !strcmp(pos[0], "bearing"))
+        return cli_for_each_line("tile bearing", bearing_line, &q);
     if (npos == 0)
-        cli_error("tile", 0, "missing subcommand (walk or dist); see --help");
-    else if (strcmp(pos[0], "walk") && strcmp(pos[0], "dist"))
+        cli_error("tile", 0, "missing subcommand (walk, dist or bearing); see --help");
+    else if (strcmp(pos[0], "walk") && strcmp(pos[0], "dist") && strcmp(pos[0], "bearing"))
         cli_error("tile", 0, "unknown subcommand '%.40s'; see --help", pos[0]);
     else
         cli_error("tile", 0, "'%s' takes no arguments; see --help", pos[0]);

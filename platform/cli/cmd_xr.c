@@ -17,7 +17,8 @@
 #endif
 
 static const char *const xr_usage =
-    "usage: holonomy xr [LEVEL | --study FILE] [--frames N] [--log DIR [--append]]\n"
+    "usage: holonomy xr [LEVEL | --study FILE] [--frames N]\n"
+    "                   [--log DIR [--append [--restart-participant]]]\n"
     "                   [--participant ID]\n"
     "                   [--record FILE] [--input FILE] [--space stage|local]\n"
     "                   [--play-area WxD] [--no-haptics]\n"
@@ -28,8 +29,8 @@ static const char *const xr_usage =
     "the room centred on the stage origin, north along stage -Z; the\n"
     "recentre action places it from the head. LEVEL is a level file (SPEC\n"
     "section 5); without one, the default campaign. Logs and the recording\n"
-    "are those of 'holonomy play' (its --log, --append, --participant and\n"
-    "--record), so 'holonomy replay' runs a headset session again headless.\n"
+    "are those of 'holonomy play' (its --log, --append, --restart-participant,\n"
+    "--participant and --record), so 'holonomy replay' runs a headset session again headless.\n"
     "Where the runtime gives the play area's bounds, the room and cell size\n"
     "are fitted to them (the most cells of at least 0.6 m, 0.1 m clear; a\n"
     "level's room or cell lines win) and an 'xr:' line says what was chosen.\n"
@@ -70,7 +71,7 @@ static const char *const xr_usage =
 typedef struct xr_opts {
     const char *level_path, *log_dir, *rec, *input_path, *check_dir, *participant, *study;
     long frames, check_frame;
-    int append;
+    int append, restart_participant;
     int space; /* 0 or HOL_XR_SPACE_LOCAL (hol_xr_desc.space) */
     play_geometry geo;
     float play_area[2]; /* --play-area (hol_xr_desc.play_area) */
@@ -121,7 +122,8 @@ static const char *const xr_valued[] = {"--frames",      "--log",       "--recor
 
 static int xr_options(const char *cmd, int argc, char **argv, xr_opts *o)
 {
-    static const char *const flags[] = {"--append", "--no-haptics", NULL};
+    static const char *const flags[] = {"--append", "--no-haptics", "--restart-participant",
+                                        NULL};
     memset(o, 0, sizeof *o);
     o->check_frame = -1;
     cli_opts p;
@@ -134,7 +136,7 @@ static int xr_options(const char *cmd, int argc, char **argv, xr_opts *o)
             bad = 1;
         } else if (!a)
             o->level_path = val;
-        else if ((g = play_geometry_value(cmd, a, val, &o->geo)) != 0)
+        else if (val && (g = play_geometry_value(cmd, a, val, &o->geo)) != 0) /* flags: no value */
             bad = g < 0;
         else if (!strcmp(a, "--frames") || !strcmp(a, "--check-frame"))
             bad = xr_count(cmd, a, val, o);
@@ -152,6 +154,8 @@ static int xr_options(const char *cmd, int argc, char **argv, xr_opts *o)
             o->append = 1;
         else if (!strcmp(a, "--no-haptics"))
             o->no_haptics = 1;
+        else if (!strcmp(a, "--restart-participant"))
+            o->restart_participant = 1;
         else if (!strcmp(a, "--play-area"))
             bad = xr_play_area(cmd, val, o->play_area);
         else if (!strcmp(a, "--space")) {
@@ -169,7 +173,9 @@ static int xr_options(const char *cmd, int argc, char **argv, xr_opts *o)
                             ? "--check-frame and --check-dir go together"
                         : o->study && o->level_path ? "give a LEVEL file or --study, not both"
                         : o->append && !o->log_dir ? "--append goes with --log"
-                                                   : NULL;
+                        : o->restart_participant && !o->study
+                            ? "--restart-participant goes with --study"
+                            : NULL;
     if (clash) {
         cli_error(cmd, 0, "%s", clash);
         return CLI_EXIT_USAGE;
@@ -336,7 +342,9 @@ int cli_cmd_xr(int argc, char **argv)
     hol_input *script = NULL;
     long nscript = 0;
     char study[HOL_REC_ID_MAX] = "";
-    st = o.study ? play_study_levels(cmd, o.study, o.participant, levels, &nlevels, study)
+    st = o.study ? play_study_levels(cmd, o.study, o.participant,
+                                     o.append && !o.restart_participant ? o.log_dir : NULL,
+                                     levels, &nlevels, study)
                  : play_levels(cmd, o.level_path, NULL, CLI_SEED_DEFAULT, &o.geo, levels,
                                &nlevels);
     if (!st)

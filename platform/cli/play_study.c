@@ -5,8 +5,12 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "../../core/hol_report.h"
 #include "../../core/hol_study.h"
+#include "../file/hol_lines.h"
 #include "cli.h"
+
+#include <sys/stat.h>
 
 /* The participant's number, or 0 after the message. */
 static uint64_t study_number(const char *cmd, const char *participant)
@@ -96,7 +100,8 @@ void play_study_announce(void)
 }
 
 int play_study_levels(const char *cmd, const char *path, const char *participant,
-                      hol_level *levels, int *nlevels, char study_name[HOL_REC_ID_MAX])
+                      const char *fresh_in, hol_level *levels, int *nlevels,
+                      char study_name[HOL_REC_ID_MAX])
 {
     static hol_study s;
     *nlevels = 0;
@@ -124,8 +129,49 @@ int play_study_levels(const char *cmd, const char *path, const char *participant
     for (int i = 0; i < n; i++)
         if ((st = study_level(cmd, path, &s, lv[i], pos[i], &levels[i])))
             return st;
+    if (fresh_in && (st = play_study_participant_new(cmd, fresh_in, s.name, participant)))
+        return st;
     *nlevels = n;
     snprintf(study_name, HOL_REC_ID_MAX, "%s", s.name);
     study_tell(cmd, &s, participant, p, order);
     return 0;
+}
+
+int play_study_participant_new(const char *cmd, const char *log_dir, const char *study_name,
+                               const char *participant)
+{
+    char path[4096];
+    struct stat st;
+    if (!log_dir || !participant ||
+        snprintf(path, sizeof path, "%s/summary.csv", log_dir) >= (int)sizeof path ||
+        stat(path, &st) != 0)
+        return 0; /* no summary yet: nobody has data */
+    hol_lines l;
+    int rc = cli_open_lines(cmd, "summary", path, 65536, &l);
+    if (rc)
+        return rc;
+    hol_report_header h;
+    static hol_report_attempt a; /* 2.5 KB of text fields */
+    char err[HOL_REPORT_ERR];
+    long rows = 0, line = 0;
+    char *s;
+    size_t n;
+    while (hol_lines_next(&l, &s, &n) > 0) {
+        if (++line == 1) {
+            if (hol_report_summary_header(s, n, &h, err))
+                break; /* not this version's: the session says so */
+            continue;
+        }
+        if (!hol_report_summary_row(&h, s, n, &a, err) && !strcmp(a.study, study_name) &&
+            !strcmp(a.participant, participant))
+            rows++;
+    }
+    hol_lines_close(&l);
+    if (!rows)
+        return 0;
+    cli_error(cmd, 0,
+              "participant %s already has data for study %s in '%s' (%ld attempt%s); "
+              "--restart-participant plays their order again from the start",
+              participant, study_name, log_dir, rows, rows == 1 ? "" : "s");
+    return CLI_EXIT_USAGE;
 }

@@ -15,6 +15,8 @@
  *   metadata). play_study_announce then prints one line on stderr naming
  *   the order played: the caller calls it once every other check has
  *   passed (its session open), so that a refusal is its one line alone.
+ *   fresh_in (NULL: no check): a log folder the session appends to; a
+ *   participant with data there is refused (play_study_participant_new).
  * - Every problem is one line on stderr naming the file and line (a bad
  *   study line, a level file's bad line with the condition it serves), and
  *   the exit status is returned: 2 bad input, 1 failure; 0 ok.
@@ -26,7 +28,18 @@
 #include "../../core/hol_rec.h"
 
 int play_study_levels(const char *cmd, const char *path, const char *participant,
-                      hol_level *levels, int *nlevels, char study_name[HOL_REC_ID_MAX]);
+                      const char *fresh_in, hol_level *levels, int *nlevels,
+                      char study_name[HOL_REC_ID_MAX]);
 void play_study_announce(void);
+
+/* A participant who already has data is not started again unasked (issue
+ * 26): with --append, when log_dir's summary.csv has a row of this study
+ * and participant, one line on stderr ("participant P07 already has data
+ * for study four in 'DIR' (3 attempts); --restart-participant plays their
+ * order again from the start") and 2. 0 when the folder has no
+ * summary.csv or no such row; a summary.csv that cannot be read is
+ * reported as cli_open_lines does (the session would refuse it too). */
+int play_study_participant_new(const char *cmd, const char *log_dir, const char *study_name,
+                               const char *participant);
 
 #endif

@@ -1,0 +1,165 @@
+/* test_render_hud.c - the HUD text does not hang on the minimap (issue 26):
+ * with the map off (a level's `minimap off`, or M), the objective, steps,
+ * time, the end screen's result and its prompt are still drawn; only the
+ * map's corner stays empty. The app's view goes the way every platform's
+ * does (core/hol_app.h, render/hol_app_frame.h, the renderer on OSMesa at
+ * 320 x 240), and the pixels are read back: the HUD panel's colour top
+ * left, the prompt's yellow, nothing drawn in the map's rectangle.
+ */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "../core/hol_app.h"
+#include "../core/hol_tile.h"
+#include "../platform/osmesa/hol_osmesa.h"
+#include "../render/hol_app_frame.h"
+#include "../render/hol_hud.h"
+#include "../render/hol_render.h"
+
+#define W 320
+#define H 240
+
+static hol_osmesa gl;
+static hol_app *app;
+static hol_render *rnd;
+static double now;
+
+static int setup(void **state)
+{
+    (void)state;
+    char msg[256];
+    if (hol_osmesa_create(&gl, W, H, msg, sizeof msg)) {
+        fprintf(stderr, "%s\n", msg);
+        return -1;
+    }
+    hol_app_desc ad;
+    memset(&ad, 0, sizeof ad);
+    if (hol_app_create(&ad, &app))
+        return -1;
+    hol_render_desc rd;
+    memset(&rd, 0, sizeof rd);
+    rd.getproc = hol_osmesa_getproc;
+    rd.world = hol_app_world(app);
+    return hol_render_create(&rd, &rnd) ? -1 : 0;
+}
+
+static int teardown(void **state)
+{
+    (void)state;
+    hol_render_destroy(rnd);
+    hol_app_destroy(app);
+    hol_osmesa_destroy(&gl);
+    return 0;
+}
+
+static void step(int frames, float fwd)
+{
+    for (int i = 0; i < frames; i++) {
+        hol_input in;
+        memset(&in, 0, sizeof in);
+        in.time_s = now;
+        in.flags = HOL_INPUT_FOCUSED;
+        in.device = HOL_DEVICE_KEYBOARD;
+        in.move[1] = fwd;
+        assert_int_equal(hol_app_step(app, &in), HOL_OK);
+        now += 1.0 / 60;
+    }
+}
+
+static void start_flag(int minimap)
+{
+    hol_app_level L;
+    memset(&L, 0, sizeof L);
+    L.mode = HOL_APP_FLAG;
+    L.seed = 7;
+    L.cues = HOL_CUE_ALL;
+    L.minimap = minimap;
+    assert_int_equal(hol_tile_resolve("N", -1, &L.flag), HOL_OK);
+    assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    hol_render_set_world(rnd, hol_app_world(app));
+    step(1, 0);
+}
+
+typedef struct counts {
+    int changed;     /* pixels the HUD changes */
+    int in_map;      /* of them, inside the minimap's rectangle */
+    int panel;       /* pixels of the text panel's colour, top left */
+    int yellow;      /* pixels of the prompt's yellow */
+} counts;
+
+/* The app's view drawn with and without the HUD (HOL_RENDER_NO_HUD). */
+static counts draw(void)
+{
+    static uint8_t with[W * H * 4], without[W * H * 4];
+    hol_frame_desc fd;
+    hol_app_frame_desc(hol_app_get_view(app), -1, W, H, 0, &fd);
+    assert_int_equal(hol_render_frame(rnd, &fd, NULL), HOL_OK);
+    hol_render_read_rgba(rnd, W, H, with);
+    fd.flags |= HOL_RENDER_NO_HUD;
+    assert_int_equal(hol_render_frame(rnd, &fd, NULL), HOL_OK);
+    hol_render_read_rgba(rnd, W, H, without);
+    float r[4];
+    hol_hud_map_rect(W, H, r);
+    counts c = {0, 0, 0, 0};
+    for (int y = 0; y < H; y++)
+        for (int x = 0; x < W; x++) {
+            const uint8_t *a = with + 4 * (y * W + x), *b = without + 4 * (y * W + x);
+            if (memcmp(a, b, 3) == 0)
+                continue;
+            c.changed++;
+            int ty = y; /* rows top to bottom, as the map's rectangle */
+            c.in_map += x >= r[0] && x < r[2] && ty >= r[1] && ty < r[3];
+            c.panel += x < W / 2 && ty < H / 2 && a[0] == 24 && a[1] == 28 && a[2] == 34;
+            c.yellow += a[0] == 255 && a[1] == 215 && a[2] == 60;
+        }
+    return c;
+}
+
+/* Map on the HUD: the control (text and map). */
+static void test_map_on(void **state)
+{
+    (void)state;
+    start_flag(HOL_MINIMAP_HUD);
+    counts c = draw();
+    print_message("    map on: %d changed, %d in the map, %d panel\n", c.changed, c.in_map,
+                  c.panel);
+    assert_true(c.in_map > 1000);
+    assert_true(c.panel > 300);
+}
+
+/* Map off: the text stays, the map's corner is the world's. Then the end
+ * screen: the result and the prompt (yellow) stay too. */
+static void test_map_off_keeps_text(void **state)
+{
+    (void)state;
+    start_flag(HOL_MINIMAP_OFF);
+    const hol_app_view *v = hol_app_get_view(app);
+    assert_int_equal(v->map.place, HOL_MINIMAP_OFF);
+    counts c = draw();
+    print_message("    map off: %d changed, %d in the map, %d panel\n", c.changed,
+                  c.in_map, c.panel);
+    assert_int_equal(c.in_map, 0);
+    assert_true(c.panel > 300);
+    step(40, 1); /* 0.93 m north: onto the flag */
+    assert_int_equal(hol_app_get_view(app)->state, HOL_APP_DONE);
+    c = draw();
+    print_message("    end screen, map off: %d panel, %d yellow\n", c.panel, c.yellow);
+    assert_int_equal(c.in_map, 0);
+    assert_true(c.panel > 300);
+    assert_true(c.yellow > 50);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_map_on),
+        cmocka_unit_test(test_map_off_keeps_text),
+    };
+    return cmocka_run_group_tests_name("render_hud", tests, setup, teardown);
+}
