@@ -8,10 +8,14 @@
 
 #include "hol_gl.h"
 #include "hol_hud.h"
+#include "hol_light.h"
 #include "hol_mesh.h"
 #include "hol_scene.h"
 
 #include "../core/hol_world.h"
+
+#define HOL__STR2(x) #x
+#define HOL__STR(x) HOL__STR2(x)
 
 /* GPU memory layout. The static buffers hold the room meshes and a pool of
  * tile meshes that stay resident across frames; the dynamic buffers get the
@@ -58,6 +62,9 @@ typedef struct hol__item {
     uint8_t ref, mask;
     int16_t branch;
     float wedge[4]; /* w0, w1 (x, z) when the view has wedges */
+    int8_t nl;      /* lit tiles: lights (-1: no hyperbolic frame) */
+    float hf[9];    /* the tile's frame in the user's (column-major) */
+    float lp[HOL_LIGHT_PER_TILE][4]; /* its lights: point, height */
     uint32_t first, count; /* index range */
     float model[16];
 } hol__item;
@@ -68,6 +75,9 @@ struct hol_render {
     hol_scene *scene;
     GLuint prog, vao[2], vbo[2], ibo[2]; /* [0] static, [1] dynamic */
     GLint u_vp, u_model, u_mode, u_id, u_eye, u_fog, u_fogd, u_lin, u_wedge, u_wmode;
+    GLint u_light, u_flat, u_klein, u_mpu, u_hf, u_eyep, u_nl, u_lp, u_amb, u_sun, u_lcol,
+        u_lonly;
+    hol_light_frame lights; /* this frame's (at dusk and night) */
     hol_mesh dyn;     /* per-frame geometry */
     hol_mesh scratch; /* one room or tile mesh before upload */
     hol_vertex *verts;
@@ -102,8 +112,10 @@ static const char *hol__vs =
     "out vec3 v_nrm;\n"
     "out vec4 v_col;\n"
     "out vec3 v_wpos;\n"
+    "out vec3 v_loc;\n"
     "void main() {\n"
     "  vec4 w = u_model * vec4(a_pos, 1.0);\n"
+    "  v_loc = a_pos;\n"
     "  v_wpos = w.xyz;\n"
     "  v_nrm = mat3(u_model) * a_nrm;\n"
     "  v_col = a_col;\n"
@@ -116,6 +128,7 @@ static const char *hol__fs =
     "in vec3 v_nrm;\n"
     "in vec4 v_col;\n"
     "in vec3 v_wpos;\n"
+    "in vec3 v_loc;\n"
     "uniform int u_mode;\n"
     "uniform vec4 u_id;\n"
     "uniform vec3 u_eye;\n"
@@ -124,12 +137,50 @@ static const char *hol__fs =
     "uniform int u_lin;\n"
     "uniform vec4 u_wedge;\n"
     "uniform int u_wmode;\n"
+    /* lighting (hol_light.h): 0 day; 1 a tile with its hyperbolic frame;
+     * 2 the room's own meshes (no tile: ambient, fog by room distance) */
+    "uniform int u_light;\n"
+    "uniform int u_flat;\n"
+    "uniform int u_lonly;\n"
+    "uniform float u_klein;\n"
+    "uniform float u_mpu;\n"
+    "uniform mat3 u_hf;\n"
+    "uniform vec4 u_eyep;\n"
+    "uniform int u_nl;\n"
+    "uniform vec4 u_lp[4];\n"
+    "uniform vec3 u_amb;\n"
+    "uniform vec3 u_sun;\n"
+    "uniform vec3 u_lcol;\n"
     "out vec4 o_col;\n"
     "vec4 hol_out(vec3 c) {\n"
     "  if (u_lin == 0) return vec4(c, 1.0);\n"
     "  c = clamp(c, 0.0, 1.0);\n"
     "  return vec4(mix(c / 12.92, pow((c + 0.055) / 1.055, vec3(2.4)),\n"
     "                  step(vec3(0.04045), c)), 1.0);\n"
+    "}\n"
+    "float hol_floor(vec3 p, vec3 l) {\n" /* floor distance, curvature units */
+    "  vec3 d = p - l;\n"
+    "  float c2 = dot(d.xy, d.xy) - (u_flat == 1 ? 0.0 : d.z * d.z);\n"
+    "  float c = sqrt(max(c2, 0.0));\n"
+    "  return u_flat == 1 ? c : 2.0 * asinh(0.5 * c);\n"
+    "}\n"
+    "float hol_lights(vec3 p, float h, float nup) {\n"
+    "  float lam = 0.0;\n"
+    "  for (int i = 0; i < 4; i++) {\n"
+    "    if (i >= u_nl) break;\n"
+    "    float x = hol_floor(p, u_lp[i].xyz);\n"
+    "    float xm = x * u_mpu, dh = u_lp[i].w - h;\n"
+    "    float d = sqrt(xm * xm + dh * dh);\n"
+    "    if (d >= " HOL__STR(HOL_LIGHT_RADIUS_M) ") continue;\n"
+    "    float u = d / " HOL__STR(HOL_LIGHT_RADIUS_M) ";\n"
+    "    float w = (1.0 - u * u) * (1.0 - u * u);\n"
+    "    float s = (u_flat == 1 || x < 1e-6) ? 1.0 : x / sinh(x);\n"
+    "    float e = d / " HOL__STR(HOL_LIGHT_D0_M) ";\n"
+    "    float f = w * (1.0 - " HOL__STR(HOL_LIGHT_PHYS) " + " HOL__STR(HOL_LIGHT_PHYS) " * s)"
+    " / (1.0 + e * e);\n"
+    "    lam += f * (0.3 + 0.7 * max(nup, 0.0) * max(dh, 0.0) / max(d, 1e-4));\n"
+    "  }\n"
+    "  return lam;\n"
     "}\n"
     "void main() {\n"
     "  if (u_wmode == 1) {\n"
@@ -152,9 +203,30 @@ static const char *hol__fs =
     "  n = normalize(n);\n"
     "  if (dot(n, toeye) < 0.0) n = -n;\n"
     "  float d = max(dot(n, normalize(vec3(0.35, 0.85, 0.40))), 0.0);\n"
-    "  vec3 c = v_col.rgb * (0.50 + 0.60 * d);\n"
-    "  float dist = length(toeye) * u_fogd;\n"
-    "  float f = exp(-dist * dist);\n"
+    "  if (u_light == 0) {\n"
+    "    vec3 c = v_col.rgb * (0.50 + 0.60 * d);\n"
+    "    float dist = length(toeye) * u_fogd;\n"
+    "    float f = exp(-dist * dist);\n"
+    "    o_col = hol_out(mix(u_fog, c, f));\n"
+    "    return;\n"
+    "  }\n"
+    "  float lam = 0.0, de = length(toeye);\n"
+    "  if (u_light == 1) {\n"
+    "    vec2 k = vec2(v_loc.x, -v_loc.z) * u_klein;\n"
+    "    vec3 h = u_flat == 1 ? vec3(k, 1.0)\n"
+    "                         : vec3(k, 1.0) / sqrt(max(1.0 - dot(k, k), 1e-6));\n"
+    "    vec3 p = u_hf * h;\n"
+    "    lam = hol_lights(p, v_loc.y, n.y);\n"
+    "    float xe = hol_floor(p, u_eyep.xyz) * u_mpu, dh = u_eyep.w - v_loc.y;\n"
+    "    de = sqrt(xe * xe + dh * dh);\n"
+    "  }\n"
+    "  float fd = de * u_fogd;\n"
+    "  float f = exp(-fd * fd);\n"
+    "  if (u_lonly == 1) {\n"
+    "    o_col = vec4(min(lam, 1.0), f, 0.0, 1.0);\n"
+    "    return;\n"
+    "  }\n"
+    "  vec3 c = v_col.rgb * (u_amb + u_sun * d + u_lcol * lam);\n"
     "  o_col = hol_out(mix(u_fog, c, f));\n"
     "}\n";
 
@@ -235,6 +307,13 @@ hol_err hol_render_create(const hol_render_desc *desc, hol_render **out)
     r->u_lin = r->gl.GetUniformLocation(r->prog, "u_lin");
     r->u_wedge = r->gl.GetUniformLocation(r->prog, "u_wedge");
     r->u_wmode = r->gl.GetUniformLocation(r->prog, "u_wmode");
+    static const char *const lnames[] = {"u_light", "u_flat", "u_klein", "u_mpu", "u_hf",
+                                         "u_eyep", "u_nl", "u_lp", "u_amb", "u_sun",
+                                         "u_lcol", "u_lonly"};
+    GLint *lu[] = {&r->u_light, &r->u_flat, &r->u_klein, &r->u_mpu, &r->u_hf, &r->u_eyep,
+                   &r->u_nl, &r->u_lp, &r->u_amb, &r->u_sun, &r->u_lcol, &r->u_lonly};
+    for (size_t k = 0; k < sizeof lu / sizeof lu[0]; k++)
+        *lu[k] = r->gl.GetUniformLocation(r->prog, lnames[k]);
     r->gl.GenVertexArrays(2, r->vao);
     r->gl.GenBuffers(2, r->vbo);
     r->gl.GenBuffers(2, r->ibo);
@@ -546,6 +625,25 @@ static void hol__tile_marks(const hol_frame_desc *f, hol_tile t, int *pole, int 
         }
 }
 
+/* A lit tile's frame in the user's (column-major for GL) and its lights. */
+static void hol__item_lights(hol_render *r, hol__item *it, hol_tile t)
+{
+    double fr[9];
+    int idx[HOL_LIGHT_PER_TILE];
+    int n = hol_light_tile(&r->lights, t, fr, idx);
+    it->nl = (int8_t)n;
+    if (n < 0)
+        return;
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            it->hf[3 * j + i] = (float)fr[3 * i + j];
+    for (int k = 0; k < n; k++) {
+        for (int j = 0; j < 3; j++)
+            it->lp[k][j] = (float)r->lights.pos[idx[k]][j];
+        it->lp[k][3] = (float)HOL_LIGHT_HEIGHT_M;
+    }
+}
+
 /* Pass 2: one draw per branch of its tile's resident mesh, placed in the
  * branch's cell, nearest cells first. */
 static hol_err hol__queue_tiles(hol_render *r, const hol_frame_desc *f, int bare,
@@ -572,6 +670,8 @@ static hol_err hol__queue_tiles(hol_render *r, const hol_frame_desc *f, int bare
             it->wedge[2 + j] = (float)br->w1[j];
         }
         it->key = 2u << 24 | (uint32_t)br->nsteps << 16 | (uint32_t)k;
+        if (f->lighting)
+            hol__item_lights(r, it, br->state.tile);
         /* tile frame -> room: the tile's heading is room north turned
          * clockwise by orient quarter turns */
         double a = -(double)br->state.orient * 1.5707963267948966;
@@ -711,6 +811,8 @@ static hol_err hol__build(hol_render *r, const hol_frame_desc *f)
     hol_err err = hol_view_build(&f->user, f->cam.eye[0] / m, f->cam.eye[2] / m, eu, &r->view);
     if (err)
         return err;
+    if (f->lighting && (err = hol_light_prepare(f, &r->lights)))
+        return err;
     hol_mesh_clear(&r->dyn);
     r->nitems = 0;
     r->frame++;
@@ -755,6 +857,40 @@ static hol_err hol__frame_faded(hol_render *r, const hol_frame_desc *f)
     return r->gl.GetError() == GL_NO_ERROR ? HOL_OK : HOL_EUNSUPPORTED;
 }
 
+/* The sky of a frame's lighting (day: hol_scene_sky) and its fog density
+ * per metre. */
+static float hol__sky(const hol_frame_desc *f, float rgb[3])
+{
+    static const float skies[3][3] = {{0, 0, 0}, {0.46f, 0.36f, 0.44f}, {0.03f, 0.04f, 0.08f}};
+    if (f->lighting == HOL_RENDER_DUSK || f->lighting == HOL_RENDER_NIGHT) {
+        memcpy(rgb, skies[f->lighting], sizeof skies[0]);
+        return f->lighting == HOL_RENDER_DUSK ? 0.10f : 0.15f;
+    }
+    hol_scene_sky(rgb);
+    return 0.06f;
+}
+
+/* The per-frame uniforms of dusk and night (hol_light.h). */
+static void hol__frame_lights(hol_render *r, const hol_frame_desc *f)
+{
+    const hol_light_frame *lf = &r->lights;
+    int night = f->lighting == HOL_RENDER_NIGHT;
+    r->gl.Uniform1i(r->u_flat, lf->flat);
+    r->gl.Uniform1i(r->u_lonly, (f->flags & HOL_RENDER_LIGHT_ONLY) != 0);
+    r->gl.Uniform1f(r->u_klein, (float)lf->klein);
+    r->gl.Uniform1f(r->u_mpu, (float)lf->metres_per_unit);
+    r->gl.Uniform4f(r->u_eyep, (float)lf->eye[0], (float)lf->eye[1], (float)lf->eye[2],
+                    (float)lf->eye_h);
+    if (night) {
+        r->gl.Uniform3f(r->u_amb, 0.07f, 0.08f, 0.13f);
+        r->gl.Uniform3f(r->u_sun, 0.05f, 0.06f, 0.10f);
+    } else {
+        r->gl.Uniform3f(r->u_amb, 0.30f, 0.26f, 0.28f);
+        r->gl.Uniform3f(r->u_sun, 0.28f, 0.17f, 0.11f);
+    }
+    r->gl.Uniform3f(r->u_lcol, 3.0f, 2.25f, 1.25f);
+}
+
 /* Clear the frame (sky, or black for IDs), upload this frame's dynamic
  * geometry, and set the program's per-frame uniforms; vp receives the
  * view-projection matrix. */
@@ -762,7 +898,7 @@ static void hol__frame_begin(hol_render *r, const hol_frame_desc *f, float vp[16
 {
     int ids = (f->flags & HOL_RENDER_IDS) != 0;
     float sky[3];
-    hol_scene_sky(sky);
+    float fogd = hol__sky(f, sky);
     hol__viewport(r, f);
     r->gl.Disable(GL_CULL_FACE);
     r->gl.Disable(GL_BLEND);
@@ -797,9 +933,12 @@ static void hol__frame_begin(hol_render *r, const hol_frame_desc *f, float vp[16
     r->gl.Uniform3f(r->u_eye, (float)f->cam.eye[0], (float)f->cam.eye[1],
                     (float)f->cam.eye[2]);
     r->gl.Uniform3f(r->u_fog, sky[0], sky[1], sky[2]);
-    r->gl.Uniform1f(r->u_fogd, 0.06f);
+    r->gl.Uniform1f(r->u_fogd, fogd);
     r->gl.Uniform1i(r->u_lin, r->desc.srgb != 0);
     r->gl.Uniform1i(r->u_wmode, 0);
+    r->gl.Uniform1i(r->u_light, 0);
+    if (f->lighting)
+        hol__frame_lights(r, f);
 }
 
 /* The GL state of a pass (vp: the view-projection, for the passes in the
@@ -836,6 +975,8 @@ static void hol__set_pass(hol_render *r, const hol_frame_desc *f, int pass, cons
         r->gl.Uniform4f(r->u_id, 0, 0, 0, 1);
         if (pass == HOL__PASS_ROOM)
             r->gl.UniformMatrix4fv(r->u_model, 1, GL_FALSE, ident);
+        if (f->lighting) /* the tile pass sets it per tile */
+            r->gl.Uniform1i(r->u_light, 2);
         break;
     case HOL__PASS_HAND:
         /* in the world: hidden where the scene is nearer; its coplanar
@@ -870,6 +1011,18 @@ static void hol__set_pass(hol_render *r, const hol_frame_desc *f, int pass, cons
     }
 }
 
+/* A lit tile's frame and lights (a tile without a frame: as the room). */
+static void hol__item_uniforms(hol_render *r, const hol__item *it)
+{
+    r->gl.Uniform1i(r->u_light, it->nl < 0 ? 2 : 1);
+    if (it->nl < 0)
+        return;
+    r->gl.UniformMatrix3fv(r->u_hf, 1, GL_FALSE, it->hf);
+    r->gl.Uniform1i(r->u_nl, it->nl);
+    if (it->nl > 0)
+        r->gl.Uniform4fv(r->u_lp, it->nl, &it->lp[0][0]);
+}
+
 /* Execute the sorted queue, skipping redundant state changes. */
 static void hol__execute(hol_render *r, const hol_frame_desc *f, const float vp[16],
                          hol_render_stats *st)
@@ -896,6 +1049,8 @@ static void hol__execute(hol_render *r, const hol_frame_desc *f, const float vp[
                 st->state_changes++;
             }
             r->gl.UniformMatrix4fv(r->u_model, 1, GL_FALSE, it->model);
+            if (f->lighting)
+                hol__item_uniforms(r, it);
             if (r->view.wedges) {
                 r->gl.Uniform1i(r->u_wmode, it->branch > 0);
                 r->gl.Uniform4f(r->u_wedge, it->wedge[0], it->wedge[1], it->wedge[2],

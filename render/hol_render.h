@@ -84,12 +84,20 @@ enum {
                                      hand (hand_* below), the text on screen */
     HOL_RENDER_NO_POLES = 64,     /* no guide poles over the objectives */
     HOL_RENDER_NO_HOT_COLD = 128, /* minimap tiles grey, not hot-cold */
-    HOL_RENDER_NO_ARROW = 256     /* no rim arrows towards far objectives */
+    HOL_RENDER_NO_ARROW = 256,    /* no rim arrows towards far objectives */
+    HOL_RENDER_LIGHT_ONLY = 512   /* tests, at dusk and night: a tile's
+                                     pixel is (lanterns' sum, fog factor, 0)
+                                     (docs/rendering.md#lighting) */
 };
 
 #define HOL_RENDER_MAX_OBJECTIVES 8
 #define HOL_RENDER_HUD_LINES 6
 #define HOL_RENDER_MAX_MARKS 2
+/* Lanterns a frame may name (a level's 8 placed, one per objective). */
+#define HOL_RENDER_MAX_LANTERNS 16
+
+/* hol_frame_desc.lighting (the same numbers as core's hol_app_lighting). */
+enum { HOL_RENDER_DAY = 0, HOL_RENDER_DUSK = 1, HOL_RENDER_NIGHT = 2 };
 
 /* Game object kinds (hol_frame_desc.object_kinds). */
 enum {
@@ -155,6 +163,13 @@ typedef struct hol_frame_desc {
      * eye's viewport here; the frame clears and draws only its own
      * cam.width x cam.height rectangle (scissor). */
     int vp_x, vp_y;
+    /* The sky and its lights (docs/rendering.md#lighting): lighting 0 day
+     * (the picture without lights, exactly as before), 1 dusk, 2 night
+     * (hol_app_lighting); lanterns: tiles with a lantern over their centre
+     * (lit at dusk and night). */
+    int lighting;
+    int nlanterns;
+    hol_tile lanterns[HOL_RENDER_MAX_LANTERNS];
 } hol_frame_desc;
 
 #define HOL_RENDER_FADE_RGB {56, 117, 61}
