@@ -227,6 +227,7 @@ static const char *hol__fs =
     "    return;\n"
     "  }\n"
     "  vec3 c = v_col.rgb * (u_amb + u_sun * d + u_lcol * lam);\n"
+    "  if (abs(v_col.a - 100.0 / 255.0) < 0.01) c = v_col.rgb * 1.2;\n" /* glass */
     "  o_col = hol_out(mix(u_fog, c, f));\n"
     "}\n";
 
@@ -621,6 +622,11 @@ static void hol__tile_marks(const hol_frame_desc *f, hol_tile t, int *pole, int 
     for (int o = 0; o < f->nobjects && o < HOL_RENDER_MAX_OBJECTIVES; o++)
         if (hol_tile_eq(f->object_tiles[o], t)) {
             *kind = f->object_kinds[o];
+            break;
+        }
+    for (int o = 0; f->lighting && o < f->nlanterns && o < HOL_RENDER_MAX_LANTERNS; o++)
+        if (hol_tile_eq(f->lanterns[o], t)) {
+            *kind |= HOL_SCENE_LANTERN; /* shown at dusk and night */
             break;
         }
 }
