@@ -23,6 +23,8 @@
  * - test_lantern_through_portal: a lantern's light falls on other tiles
  *   seen through portals (two or more cells away), as the model says.
  * - test_day_unchanged_without_lighting: lanterns at day change nothing.
+ * - test_app_frame_carries_lights: the app's view (play, replay, xr, the
+ *   web) hands the level's sky and lanterns to the renderer.
  */
 #include <math.h>
 #include <setjmp.h>
@@ -41,6 +43,7 @@
 #pragma GCC diagnostic ignored "-Wunused-function" /* model.h helpers not used here */
 #include "model.h"
 #include "render_fixture.h"
+#include "../render/hol_app_frame.h"
 
 #define W 160
 #define H 120
@@ -496,6 +499,28 @@ static void test_day_unchanged_without_lighting(void **state)
     assert_memory_equal(a, b, sizeof a);
 }
 
+/* Every platform draws the app's view through hol_app_frame_desc: the
+ * level's sky and lanterns reach the renderer. */
+static void test_app_frame_carries_lights(void **state)
+{
+    (void)state;
+    static hol_app_view v;
+    memset(&v, 0, sizeof v);
+    v.user = hol_room_start();
+    v.cell_m = 1;
+    v.head[0] = v.head[2] = 1.5;
+    v.head[1] = 1.6;
+    v.lighting = HOL_LIGHT_DUSK;
+    v.nlanterns = 2;
+    assert_int_equal(hol_tile_parse("Nf", -1, &v.lanterns[0]), HOL_OK);
+    assert_int_equal(hol_tile_parse("Wr", -1, &v.lanterns[1]), HOL_OK);
+    hol_frame_desc f;
+    hol_app_frame_desc(&v, -1, W, H, 90, &f);
+    assert_int_equal(f.lighting, HOL_RENDER_DUSK);
+    assert_int_equal(f.nlanterns, 2);
+    assert_true(hol_tile_eq(f.lanterns[1], v.lanterns[1]));
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -504,6 +529,7 @@ int main(void)
         cmocka_unit_test(test_light_continuous_across_edges),
         cmocka_unit_test(test_lantern_through_portal),
         cmocka_unit_test(test_day_unchanged_without_lighting),
+        cmocka_unit_test(test_app_frame_carries_lights),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }
