@@ -76,7 +76,7 @@ struct hol_render {
     GLuint prog, vao[2], vbo[2], ibo[2]; /* [0] static, [1] dynamic */
     GLint u_vp, u_model, u_mode, u_id, u_eye, u_fog, u_fogd, u_lin, u_wedge, u_wmode;
     GLint u_light, u_flat, u_klein, u_mpu, u_hf, u_eyep, u_nl, u_lp, u_amb, u_sun, u_lcol,
-        u_lonly;
+        u_lonly, u_cmax;
     hol_light_frame lights; /* this frame's (at dusk and night) */
     hol_mesh dyn;     /* per-frame geometry */
     hol_mesh scratch; /* one room or tile mesh before upload */
@@ -144,6 +144,7 @@ static const char *hol__fs =
     "uniform int u_lonly;\n"
     "uniform float u_klein;\n"
     "uniform float u_mpu;\n"
+    "uniform float u_cmax;\n"
     "uniform mat3 u_hf;\n"
     "uniform vec4 u_eyep;\n"
     "uniform int u_nl;\n"
@@ -164,21 +165,28 @@ static const char *hol__fs =
     "  float c = sqrt(max(c2, 0.0));\n"
     "  return u_flat == 1 ? c : 2.0 * asinh(0.5 * c);\n"
     "}\n"
+    /* the chord c = |p - l|_L gives x = 2 asinh(c/2) and sinh(x) =
+     * c sqrt(1 + c^2/4) with one sqrt and one log; a chord beyond u_cmax
+     * is farther than the radius on the floor alone */
     "float hol_lights(vec3 p, float h, float nup) {\n"
     "  float lam = 0.0;\n"
     "  for (int i = 0; i < 4; i++) {\n"
     "    if (i >= u_nl) break;\n"
-    "    float x = hol_floor(p, u_lp[i].xyz);\n"
+    "    vec3 dv = p - u_lp[i].xyz;\n"
+    "    float c2 = max(dot(dv.xy, dv.xy) - (u_flat == 1 ? 0.0 : dv.z * dv.z), 0.0);\n"
+    "    float c = sqrt(c2);\n"
+    "    if (c >= u_cmax) continue;\n"
+    "    float q = sqrt(1.0 + 0.25 * c2);\n"
+    "    float x = u_flat == 1 ? c : 2.0 * log(0.5 * c + q);\n"
     "    float xm = x * u_mpu, dh = u_lp[i].w - h;\n"
-    "    float d = sqrt(xm * xm + dh * dh);\n"
-    "    if (d >= " HOL__STR(HOL_LIGHT_RADIUS_M) ") continue;\n"
-    "    float u = d / " HOL__STR(HOL_LIGHT_RADIUS_M) ";\n"
-    "    float w = (1.0 - u * u) * (1.0 - u * u);\n"
-    "    float s = (u_flat == 1 || x < 1e-6) ? 1.0 : x / sinh(x);\n"
-    "    float e = d / " HOL__STR(HOL_LIGHT_D0_M) ";\n"
+    "    float d2 = xm * xm + dh * dh;\n"
+    "    if (d2 >= " HOL__STR(HOL_LIGHT_RADIUS_M) " * " HOL__STR(HOL_LIGHT_RADIUS_M) ") continue;\n"
+    "    float u2 = d2 / (" HOL__STR(HOL_LIGHT_RADIUS_M) " * " HOL__STR(HOL_LIGHT_RADIUS_M) ");\n"
+    "    float w = (1.0 - u2) * (1.0 - u2);\n"
+    "    float s = (u_flat == 1 || c < 1e-4) ? 1.0 : x / (c * q);\n"
     "    float f = w * (1.0 - " HOL__STR(HOL_LIGHT_PHYS) " + " HOL__STR(HOL_LIGHT_PHYS) " * s)"
-    " / (1.0 + e * e);\n"
-    "    lam += f * (0.3 + 0.7 * max(nup, 0.0) * max(dh, 0.0) / max(d, 1e-4));\n"
+    " / (1.0 + d2 / (" HOL__STR(HOL_LIGHT_D0_M) " * " HOL__STR(HOL_LIGHT_D0_M) "));\n"
+    "    lam += f * (0.3 + 0.7 * max(nup, 0.0) * max(dh, 0.0) * inversesqrt(max(d2, 1e-8)));\n"
     "  }\n"
     "  return lam;\n"
     "}\n"
@@ -310,9 +318,10 @@ hol_err hol_render_create(const hol_render_desc *desc, hol_render **out)
     r->u_wmode = r->gl.GetUniformLocation(r->prog, "u_wmode");
     static const char *const lnames[] = {"u_light", "u_flat", "u_klein", "u_mpu", "u_hf",
                                          "u_eyep", "u_nl", "u_lp", "u_amb", "u_sun",
-                                         "u_lcol", "u_lonly"};
+                                         "u_lcol", "u_lonly", "u_cmax"};
     GLint *lu[] = {&r->u_light, &r->u_flat, &r->u_klein, &r->u_mpu, &r->u_hf, &r->u_eyep,
-                   &r->u_nl, &r->u_lp, &r->u_amb, &r->u_sun, &r->u_lcol, &r->u_lonly};
+                   &r->u_nl, &r->u_lp, &r->u_amb, &r->u_sun, &r->u_lcol, &r->u_lonly,
+                   &r->u_cmax};
     for (size_t k = 0; k < sizeof lu / sizeof lu[0]; k++)
         *lu[k] = r->gl.GetUniformLocation(r->prog, lnames[k]);
     r->gl.GenVertexArrays(2, r->vao);
@@ -885,6 +894,8 @@ static void hol__frame_lights(hol_render *r, const hol_frame_desc *f)
     r->gl.Uniform1i(r->u_lonly, (f->flags & HOL_RENDER_LIGHT_ONLY) != 0);
     r->gl.Uniform1f(r->u_klein, (float)lf->klein);
     r->gl.Uniform1f(r->u_mpu, (float)lf->metres_per_unit);
+    double xr = HOL_LIGHT_RADIUS_M / lf->metres_per_unit; /* the radius, units */
+    r->gl.Uniform1f(r->u_cmax, (float)(lf->flat ? xr : 2 * sinh(xr / 2)));
     r->gl.Uniform4f(r->u_eyep, (float)lf->eye[0], (float)lf->eye[1], (float)lf->eye[2],
                     (float)lf->eye_h);
     if (night) {
