@@ -36,6 +36,15 @@
  * - ID mode renders the same queue but writes, for floor pixels, the index
  *   + 1 of the branch drawn there and 0 elsewhere (props, trees, sky): the
  *   tile under every pixel, as the portals decided it.
+ * - Lighting (f->lighting, docs/rendering.md#lighting): day draws exactly
+ *   the picture without lights. At dusk and night every tile fragment gets
+ *   its point on the hyperboloid (render/hol_light.h: the tile's frame in
+ *   the user's tile, the Klein map of the square), up to 4 lanterns chosen
+ *   per tile on the CPU light it by the true distance in H^2 x E, and fog
+ *   follows the true distance from the eye; the room's own meshes get the
+ *   sky's ambient light and fog by room distance. A lantern tile shows a
+ *   lantern (its glass drawn unlit). HOL_RENDER_LIGHT_ONLY (tests) writes a
+ *   tile fragment as (the lanterns' sum, the fog factor, 0).
  * - World content: with desc.world the tiles' content (biome, objects,
  *   creeks, logs, trees) comes from hol_world_get; without it, a plain
  *   biome-tinted floor from hol_tile_hash.
