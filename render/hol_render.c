@@ -69,14 +69,21 @@ typedef struct hol__item {
     float model[16];
 } hol__item;
 
+/* A shader program and its uniforms (-1: not in this program). */
+typedef struct hol__prog {
+    GLuint prog;
+    GLint u_vp, u_model, u_mode, u_id, u_eye, u_fog, u_fogd, u_lin, u_wedge, u_wmode;
+    GLint u_light, u_flat, u_klein, u_mpu, u_hf, u_eyep, u_nl, u_lp, u_amb, u_sun, u_lcol,
+        u_lonly, u_cmax;
+} hol__prog;
+
 struct hol_render {
     hol_render_desc desc;
     hol_gl gl;
     hol_scene *scene;
-    GLuint prog, vao[2], vbo[2], ibo[2]; /* [0] static, [1] dynamic */
-    GLint u_vp, u_model, u_mode, u_id, u_eye, u_fog, u_fogd, u_lin, u_wedge, u_wmode;
-    GLint u_light, u_flat, u_klein, u_mpu, u_hf, u_eyep, u_nl, u_lp, u_amb, u_sun, u_lcol,
-        u_lonly, u_cmax;
+    GLuint vao[2], vbo[2], ibo[2]; /* [0] static, [1] dynamic */
+    hol__prog progs[2]; /* [0] day (the picture without lights), [1] lit */
+    hol__prog *pg;      /* this frame's */
     hol_light_frame lights; /* this frame's (at dusk and night) */
     hol_mesh dyn;     /* per-frame geometry */
     hol_mesh scratch; /* one room or tile mesh before upload */
@@ -103,7 +110,6 @@ struct hol_render {
 };
 
 static const char *hol__vs =
-    "#version 300 es\n"
     "layout(location = 0) in vec3 a_pos;\n"
     "layout(location = 1) in vec3 a_nrm;\n"
     "layout(location = 2) in vec4 a_col;\n"
@@ -112,23 +118,29 @@ static const char *hol__vs =
     "out vec3 v_nrm;\n"
     "out vec4 v_col;\n"
     "out vec3 v_wpos;\n"
+    "#if HOL_LIT\n"
     "out vec3 v_loc;\n"
+    "#endif\n"
     "void main() {\n"
     "  vec4 w = u_model * vec4(a_pos, 1.0);\n"
+    "#if HOL_LIT\n"
     "  v_loc = a_pos;\n"
+    "#endif\n"
     "  v_wpos = w.xyz;\n"
     "  v_nrm = mat3(u_model) * a_nrm;\n"
     "  v_col = a_col;\n"
     "  gl_Position = u_vp * w;\n"
     "}\n";
 
+/* After "#version 300 es" and "#define HOL_LIT 0|1" (hol__make_prog): the
+ * day program is exactly the shader before lights; the lit one (dusk and
+ * night) adds the hyperboloid point, the lanterns and the fog by the true
+ * distance. */
 static const char *hol__fs =
-    "#version 300 es\n"
     "precision highp float;\n"
     "in vec3 v_nrm;\n"
     "in vec4 v_col;\n"
     "in vec3 v_wpos;\n"
-    "in vec3 v_loc;\n"
     "uniform int u_mode;\n"
     "uniform vec4 u_id;\n"
     "uniform vec3 u_eye;\n"
@@ -137,8 +149,10 @@ static const char *hol__fs =
     "uniform int u_lin;\n"
     "uniform vec4 u_wedge;\n"
     "uniform int u_wmode;\n"
-    /* lighting (hol_light.h): 0 day; 1 a tile with its hyperbolic frame;
-     * 2 the room's own meshes (no tile: ambient, fog by room distance) */
+    "#if HOL_LIT\n"
+    /* lighting (hol_light.h): 1 a tile with its hyperbolic frame; 2 the
+     * room's own meshes (no tile: ambient, fog by room distance) */
+    "in vec3 v_loc;\n"
     "uniform int u_light;\n"
     "uniform int u_flat;\n"
     "uniform int u_lonly;\n"
@@ -152,6 +166,7 @@ static const char *hol__fs =
     "uniform vec3 u_amb;\n"
     "uniform vec3 u_sun;\n"
     "uniform vec3 u_lcol;\n"
+    "#endif\n"
     "out vec4 o_col;\n"
     "vec4 hol_out(vec3 c) {\n"
     "  if (u_lin == 0) return vec4(c, 1.0);\n"
@@ -159,12 +174,7 @@ static const char *hol__fs =
     "  return vec4(mix(c / 12.92, pow((c + 0.055) / 1.055, vec3(2.4)),\n"
     "                  step(vec3(0.04045), c)), 1.0);\n"
     "}\n"
-    "float hol_floor(vec3 p, vec3 l) {\n" /* floor distance, curvature units */
-    "  vec3 d = p - l;\n"
-    "  float c2 = dot(d.xy, d.xy) - (u_flat == 1 ? 0.0 : d.z * d.z);\n"
-    "  float c = sqrt(max(c2, 0.0));\n"
-    "  return u_flat == 1 ? c : 2.0 * asinh(0.5 * c);\n"
-    "}\n"
+    "#if HOL_LIT\n"
     /* the chord c = |p - l|_L gives x = 2 asinh(c/2) and sinh(x) =
      * c sqrt(1 + c^2/4) with one sqrt and one log; a chord beyond u_cmax
      * is farther than the radius on the floor alone */
@@ -190,6 +200,7 @@ static const char *hol__fs =
     "  }\n"
     "  return lam;\n"
     "}\n"
+    "#endif\n"
     "void main() {\n"
     "  if (u_wmode == 1) {\n"
     "    vec2 d = v_wpos.xz - u_eye.xz;\n"
@@ -211,21 +222,24 @@ static const char *hol__fs =
     "  n = normalize(n);\n"
     "  if (dot(n, toeye) < 0.0) n = -n;\n"
     "  float d = max(dot(n, normalize(vec3(0.35, 0.85, 0.40))), 0.0);\n"
-    "  if (u_light == 0) {\n"
-    "    vec3 c = v_col.rgb * (0.50 + 0.60 * d);\n"
-    "    float dist = length(toeye) * u_fogd;\n"
-    "    float f = exp(-dist * dist);\n"
-    "    o_col = hol_out(mix(u_fog, c, f));\n"
-    "    return;\n"
-    "  }\n"
+    "#if HOL_LIT == 0\n"
+    "  vec3 c = v_col.rgb * (0.50 + 0.60 * d);\n"
+    "  float dist = length(toeye) * u_fogd;\n"
+    "  float f = exp(-dist * dist);\n"
+    "  o_col = hol_out(mix(u_fog, c, f));\n"
+    "#else\n"
     "  float lam = 0.0, de = length(toeye);\n"
     "  if (u_light == 1) {\n"
     "    vec2 k = vec2(v_loc.x, -v_loc.z) * u_klein;\n"
     "    vec3 h = u_flat == 1 ? vec3(k, 1.0)\n"
     "                         : vec3(k, 1.0) / sqrt(max(1.0 - dot(k, k), 1e-6));\n"
     "    vec3 p = u_hf * h;\n"
-    "    lam = hol_lights(p, v_loc.y, n.y);\n"
-    "    float xe = hol_floor(p, u_eyep.xyz) * u_mpu, dh = u_eyep.w - v_loc.y;\n"
+    "    if (u_nl > 0) lam = hol_lights(p, v_loc.y, n.y);\n"
+    /* fog: the chord 2 sinh(x/2) of the floor distance x (a function of
+     * the true distance, within 4 % of it to 3 m; no log per pixel) */
+    "    vec3 ev = p - u_eyep.xyz;\n"
+    "    float ce = sqrt(max(dot(ev.xy, ev.xy) - (u_flat == 1 ? 0.0 : ev.z * ev.z), 0.0));\n"
+    "    float xe = ce * u_mpu, dh = u_eyep.w - v_loc.y;\n"
     "    de = sqrt(xe * xe + dh * dh);\n"
     "  }\n"
     "  float fd = de * u_fogd;\n"
@@ -237,12 +251,13 @@ static const char *hol__fs =
     "  vec3 c = v_col.rgb * (u_amb + u_sun * d + u_lcol * lam);\n"
     "  if (abs(v_col.a - 100.0 / 255.0) < 0.01) c = v_col.rgb * 1.2;\n" /* glass */
     "  o_col = hol_out(mix(u_fog, c, f));\n"
+    "#endif\n"
     "}\n";
 
-static GLuint hol__shader(const hol_gl *gl, GLenum type, const char *src)
+static GLuint hol__shader(const hol_gl *gl, GLenum type, int n, const char *const *src)
 {
     GLuint s = gl->CreateShader(type);
-    gl->ShaderSource(s, 1, &src, NULL);
+    gl->ShaderSource(s, n, src, NULL);
     gl->CompileShader(s);
     GLint ok = 0;
     gl->GetShaderiv(s, GL_COMPILE_STATUS, &ok);
@@ -251,6 +266,47 @@ static GLuint hol__shader(const hol_gl *gl, GLenum type, const char *src)
         return 0;
     }
     return s;
+}
+
+/* Program k: the day shader (lit 0: exactly the picture before lights)
+ * or the lit one (dusk and night); 0 ok. */
+static int hol__make_prog(hol_render *r, hol__prog *pg, int lit)
+{
+    const char *fsrc[2] = {lit ? "#version 300 es\n#define HOL_LIT 1\n"
+                               : "#version 300 es\n#define HOL_LIT 0\n", hol__fs};
+    const char *vsrc[2] = {fsrc[0], hol__vs};
+    GLuint vs = hol__shader(&r->gl, GL_VERTEX_SHADER, 2, vsrc);
+    GLuint fs = hol__shader(&r->gl, GL_FRAGMENT_SHADER, 2, fsrc);
+    if (!vs || !fs) {
+        if (vs)
+            r->gl.DeleteShader(vs);
+        if (fs)
+            r->gl.DeleteShader(fs);
+        return 1;
+    }
+    pg->prog = r->gl.CreateProgram();
+    r->gl.AttachShader(pg->prog, vs);
+    r->gl.AttachShader(pg->prog, fs);
+    r->gl.LinkProgram(pg->prog);
+    r->gl.DeleteShader(vs);
+    r->gl.DeleteShader(fs);
+    GLint ok = 0;
+    r->gl.GetProgramiv(pg->prog, GL_LINK_STATUS, &ok);
+    if (!ok)
+        return 1;
+    static const char *const names[] = {"u_vp", "u_model", "u_mode", "u_id", "u_eye",
+                                        "u_fog", "u_fogd", "u_lin", "u_wedge", "u_wmode",
+                                        "u_light", "u_flat", "u_klein", "u_mpu", "u_hf",
+                                        "u_eyep", "u_nl", "u_lp", "u_amb", "u_sun",
+                                        "u_lcol", "u_lonly", "u_cmax"};
+    GLint *loc[] = {&pg->u_vp, &pg->u_model, &pg->u_mode, &pg->u_id, &pg->u_eye,
+                    &pg->u_fog, &pg->u_fogd, &pg->u_lin, &pg->u_wedge, &pg->u_wmode,
+                    &pg->u_light, &pg->u_flat, &pg->u_klein, &pg->u_mpu, &pg->u_hf,
+                    &pg->u_eyep, &pg->u_nl, &pg->u_lp, &pg->u_amb, &pg->u_sun,
+                    &pg->u_lcol, &pg->u_lonly, &pg->u_cmax};
+    for (size_t k = 0; k < sizeof loc / sizeof loc[0]; k++)
+        *loc[k] = r->gl.GetUniformLocation(pg->prog, names[k]);
+    return 0;
 }
 
 hol_err hol_render_create(const hol_render_desc *desc, hol_render **out)
@@ -284,46 +340,11 @@ hol_err hol_render_create(const hol_render_desc *desc, hol_render **out)
         hol_alloc_release(&d.alloc, r);
         return gerr;
     }
-    GLuint vs = hol__shader(&r->gl, GL_VERTEX_SHADER, hol__vs);
-    GLuint fs = hol__shader(&r->gl, GL_FRAGMENT_SHADER, hol__fs);
-    if (!vs || !fs) {
-        if (vs)
-            r->gl.DeleteShader(vs);
-        if (fs)
-            r->gl.DeleteShader(fs);
+    if (hol__make_prog(r, &r->progs[0], 0) || hol__make_prog(r, &r->progs[1], 1)) {
         hol_render_destroy(r);
         return HOL_EUNSUPPORTED;
     }
-    r->prog = r->gl.CreateProgram();
-    r->gl.AttachShader(r->prog, vs);
-    r->gl.AttachShader(r->prog, fs);
-    r->gl.LinkProgram(r->prog);
-    r->gl.DeleteShader(vs);
-    r->gl.DeleteShader(fs);
-    GLint ok = 0;
-    r->gl.GetProgramiv(r->prog, GL_LINK_STATUS, &ok);
-    if (!ok) {
-        hol_render_destroy(r);
-        return HOL_EUNSUPPORTED;
-    }
-    r->u_vp = r->gl.GetUniformLocation(r->prog, "u_vp");
-    r->u_model = r->gl.GetUniformLocation(r->prog, "u_model");
-    r->u_mode = r->gl.GetUniformLocation(r->prog, "u_mode");
-    r->u_id = r->gl.GetUniformLocation(r->prog, "u_id");
-    r->u_eye = r->gl.GetUniformLocation(r->prog, "u_eye");
-    r->u_fog = r->gl.GetUniformLocation(r->prog, "u_fog");
-    r->u_fogd = r->gl.GetUniformLocation(r->prog, "u_fogd");
-    r->u_lin = r->gl.GetUniformLocation(r->prog, "u_lin");
-    r->u_wedge = r->gl.GetUniformLocation(r->prog, "u_wedge");
-    r->u_wmode = r->gl.GetUniformLocation(r->prog, "u_wmode");
-    static const char *const lnames[] = {"u_light", "u_flat", "u_klein", "u_mpu", "u_hf",
-                                         "u_eyep", "u_nl", "u_lp", "u_amb", "u_sun",
-                                         "u_lcol", "u_lonly", "u_cmax"};
-    GLint *lu[] = {&r->u_light, &r->u_flat, &r->u_klein, &r->u_mpu, &r->u_hf, &r->u_eyep,
-                   &r->u_nl, &r->u_lp, &r->u_amb, &r->u_sun, &r->u_lcol, &r->u_lonly,
-                   &r->u_cmax};
-    for (size_t k = 0; k < sizeof lu / sizeof lu[0]; k++)
-        *lu[k] = r->gl.GetUniformLocation(r->prog, lnames[k]);
+    r->pg = &r->progs[0];
     r->gl.GenVertexArrays(2, r->vao);
     r->gl.GenBuffers(2, r->vbo);
     r->gl.GenBuffers(2, r->ibo);
@@ -364,8 +385,9 @@ void hol_render_destroy(hol_render *r)
 {
     if (!r)
         return;
-    if (r->prog)
-        r->gl.DeleteProgram(r->prog);
+    for (int k = 0; k < 2; k++)
+        if (r->progs[k].prog)
+            r->gl.DeleteProgram(r->progs[k].prog);
     if (r->vao[0])
         r->gl.DeleteVertexArrays(2, r->vao);
     if (r->vbo[0])
@@ -890,22 +912,22 @@ static void hol__frame_lights(hol_render *r, const hol_frame_desc *f)
 {
     const hol_light_frame *lf = &r->lights;
     int night = f->lighting == HOL_RENDER_NIGHT;
-    r->gl.Uniform1i(r->u_flat, lf->flat);
-    r->gl.Uniform1i(r->u_lonly, (f->flags & HOL_RENDER_LIGHT_ONLY) != 0);
-    r->gl.Uniform1f(r->u_klein, (float)lf->klein);
-    r->gl.Uniform1f(r->u_mpu, (float)lf->metres_per_unit);
+    r->gl.Uniform1i(r->pg->u_flat, lf->flat);
+    r->gl.Uniform1i(r->pg->u_lonly, (f->flags & HOL_RENDER_LIGHT_ONLY) != 0);
+    r->gl.Uniform1f(r->pg->u_klein, (float)lf->klein);
+    r->gl.Uniform1f(r->pg->u_mpu, (float)lf->metres_per_unit);
     double xr = HOL_LIGHT_RADIUS_M / lf->metres_per_unit; /* the radius, units */
-    r->gl.Uniform1f(r->u_cmax, (float)(lf->flat ? xr : 2 * sinh(xr / 2)));
-    r->gl.Uniform4f(r->u_eyep, (float)lf->eye[0], (float)lf->eye[1], (float)lf->eye[2],
+    r->gl.Uniform1f(r->pg->u_cmax, (float)(lf->flat ? xr : 2 * sinh(xr / 2)));
+    r->gl.Uniform4f(r->pg->u_eyep, (float)lf->eye[0], (float)lf->eye[1], (float)lf->eye[2],
                     (float)lf->eye_h);
     if (night) {
-        r->gl.Uniform3f(r->u_amb, 0.07f, 0.08f, 0.13f);
-        r->gl.Uniform3f(r->u_sun, 0.05f, 0.06f, 0.10f);
+        r->gl.Uniform3f(r->pg->u_amb, 0.07f, 0.08f, 0.13f);
+        r->gl.Uniform3f(r->pg->u_sun, 0.05f, 0.06f, 0.10f);
     } else {
-        r->gl.Uniform3f(r->u_amb, 0.30f, 0.26f, 0.28f);
-        r->gl.Uniform3f(r->u_sun, 0.28f, 0.17f, 0.11f);
+        r->gl.Uniform3f(r->pg->u_amb, 0.30f, 0.26f, 0.28f);
+        r->gl.Uniform3f(r->pg->u_sun, 0.28f, 0.17f, 0.11f);
     }
-    r->gl.Uniform3f(r->u_lcol, 3.0f, 2.25f, 1.25f);
+    r->gl.Uniform3f(r->pg->u_lcol, 3.0f, 2.25f, 1.25f);
 }
 
 /* Clear the frame (sky, or black for IDs), upload this frame's dynamic
@@ -930,7 +952,8 @@ static void hol__frame_begin(hol_render *r, const hol_frame_desc *f, float vp[16
     r->gl.ClearDepthf(1.0f);
     r->gl.ClearStencil(HOL_VIEW_STENCIL_CLEAR);
     r->gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
-    r->gl.UseProgram(r->prog);
+    r->pg = &r->progs[f->lighting ? 1 : 0];
+    r->gl.UseProgram(r->pg->prog);
     r->gl.BindVertexArray(r->vao[1]);
     r->gl.BindBuffer(GL_ARRAY_BUFFER, r->vbo[1]);
     r->gl.BufferData(GL_ARRAY_BUFFER, (GLsizeiptr)(r->dyn.nv * sizeof(hol_vertex)), r->dyn.v,
@@ -947,13 +970,13 @@ static void hol__frame_begin(hol_render *r, const hol_frame_desc *f, float vp[16
                 s += proj[4 * k + j] * view[4 * i + k];
             vp[4 * i + j] = s;
         }
-    r->gl.Uniform3f(r->u_eye, (float)f->cam.eye[0], (float)f->cam.eye[1],
+    r->gl.Uniform3f(r->pg->u_eye, (float)f->cam.eye[0], (float)f->cam.eye[1],
                     (float)f->cam.eye[2]);
-    r->gl.Uniform3f(r->u_fog, sky[0], sky[1], sky[2]);
-    r->gl.Uniform1f(r->u_fogd, fogd);
-    r->gl.Uniform1i(r->u_lin, r->desc.srgb != 0);
-    r->gl.Uniform1i(r->u_wmode, 0);
-    r->gl.Uniform1i(r->u_light, 0);
+    r->gl.Uniform3f(r->pg->u_fog, sky[0], sky[1], sky[2]);
+    r->gl.Uniform1f(r->pg->u_fogd, fogd);
+    r->gl.Uniform1i(r->pg->u_lin, r->desc.srgb != 0);
+    r->gl.Uniform1i(r->pg->u_wmode, 0);
+    r->gl.Uniform1i(r->pg->u_light, 0);
     if (f->lighting)
         hol__frame_lights(r, f);
 }
@@ -965,7 +988,7 @@ static void hol__set_pass(hol_render *r, const hol_frame_desc *f, int pass, cons
     int ids = (f->flags & HOL_RENDER_IDS) != 0;
     float ident[16];
     hol__identity(ident);
-    r->gl.Uniform1i(r->u_wmode, 0); /* the tile pass sets it per branch */
+    r->gl.Uniform1i(r->pg->u_wmode, 0); /* the tile pass sets it per branch */
     switch (pass) {
     case HOL__PASS_STENCIL:
         r->gl.ColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
@@ -973,8 +996,8 @@ static void hol__set_pass(hol_render *r, const hol_frame_desc *f, int pass, cons
         r->gl.DepthMask(GL_FALSE);
         r->gl.Enable(GL_STENCIL_TEST);
         r->gl.StencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
-        r->gl.UniformMatrix4fv(r->u_vp, 1, GL_FALSE, ident);
-        r->gl.UniformMatrix4fv(r->u_model, 1, GL_FALSE, ident);
+        r->gl.UniformMatrix4fv(r->pg->u_vp, 1, GL_FALSE, ident);
+        r->gl.UniformMatrix4fv(r->pg->u_model, 1, GL_FALSE, ident);
         break;
     case HOL__PASS_ROOM:
     case HOL__PASS_TILE:
@@ -987,13 +1010,13 @@ static void hol__set_pass(hol_render *r, const hol_frame_desc *f, int pass, cons
             r->gl.Disable(GL_STENCIL_TEST);
         else
             r->gl.Enable(GL_STENCIL_TEST);
-        r->gl.UniformMatrix4fv(r->u_vp, 1, GL_FALSE, vp);
-        r->gl.Uniform1i(r->u_mode, ids ? HOL__MODE_ID : HOL__MODE_LIT);
-        r->gl.Uniform4f(r->u_id, 0, 0, 0, 1);
+        r->gl.UniformMatrix4fv(r->pg->u_vp, 1, GL_FALSE, vp);
+        r->gl.Uniform1i(r->pg->u_mode, ids ? HOL__MODE_ID : HOL__MODE_LIT);
+        r->gl.Uniform4f(r->pg->u_id, 0, 0, 0, 1);
         if (pass == HOL__PASS_ROOM)
-            r->gl.UniformMatrix4fv(r->u_model, 1, GL_FALSE, ident);
+            r->gl.UniformMatrix4fv(r->pg->u_model, 1, GL_FALSE, ident);
         if (f->lighting) /* the tile pass sets it per tile */
-            r->gl.Uniform1i(r->u_light, 2);
+            r->gl.Uniform1i(r->pg->u_light, 2);
         break;
     case HOL__PASS_HAND:
         /* in the world: hidden where the scene is nearer; its coplanar
@@ -1002,16 +1025,16 @@ static void hol__set_pass(hol_render *r, const hol_frame_desc *f, int pass, cons
         r->gl.DepthFunc(GL_LEQUAL);
         r->gl.DepthMask(GL_FALSE);
         r->gl.Disable(GL_STENCIL_TEST);
-        r->gl.UniformMatrix4fv(r->u_vp, 1, GL_FALSE, vp);
-        r->gl.Uniform1i(r->u_mode, ids ? HOL__MODE_ID : HOL__MODE_FLAT);
+        r->gl.UniformMatrix4fv(r->pg->u_vp, 1, GL_FALSE, vp);
+        r->gl.Uniform1i(r->pg->u_mode, ids ? HOL__MODE_ID : HOL__MODE_FLAT);
         break;
     case HOL__PASS_FADE:
         r->gl.Disable(GL_DEPTH_TEST);
         r->gl.DepthMask(GL_FALSE);
         r->gl.Disable(GL_STENCIL_TEST);
-        r->gl.UniformMatrix4fv(r->u_vp, 1, GL_FALSE, ident);
-        r->gl.UniformMatrix4fv(r->u_model, 1, GL_FALSE, ident);
-        r->gl.Uniform1i(r->u_mode, HOL__MODE_FLAT);
+        r->gl.UniformMatrix4fv(r->pg->u_vp, 1, GL_FALSE, ident);
+        r->gl.UniformMatrix4fv(r->pg->u_model, 1, GL_FALSE, ident);
+        r->gl.Uniform1i(r->pg->u_mode, HOL__MODE_FLAT);
         r->gl.Enable(GL_BLEND);
         r->gl.BlendColor(0, 0, 0, (float)f->fade);
         r->gl.BlendFunc(GL_CONSTANT_ALPHA, GL_ONE_MINUS_CONSTANT_ALPHA);
@@ -1021,9 +1044,9 @@ static void hol__set_pass(hol_render *r, const hol_frame_desc *f, int pass, cons
         r->gl.Disable(GL_DEPTH_TEST);
         r->gl.DepthMask(GL_FALSE);
         r->gl.Disable(GL_STENCIL_TEST);
-        r->gl.UniformMatrix4fv(r->u_vp, 1, GL_FALSE, ident);
-        r->gl.UniformMatrix4fv(r->u_model, 1, GL_FALSE, ident);
-        r->gl.Uniform1i(r->u_mode, ids ? HOL__MODE_ID : HOL__MODE_FLAT);
+        r->gl.UniformMatrix4fv(r->pg->u_vp, 1, GL_FALSE, ident);
+        r->gl.UniformMatrix4fv(r->pg->u_model, 1, GL_FALSE, ident);
+        r->gl.Uniform1i(r->pg->u_mode, ids ? HOL__MODE_ID : HOL__MODE_FLAT);
         break;
     }
 }
@@ -1031,13 +1054,13 @@ static void hol__set_pass(hol_render *r, const hol_frame_desc *f, int pass, cons
 /* A lit tile's frame and lights (a tile without a frame: as the room). */
 static void hol__item_uniforms(hol_render *r, const hol__item *it)
 {
-    r->gl.Uniform1i(r->u_light, it->nl < 0 ? 2 : 1);
+    r->gl.Uniform1i(r->pg->u_light, it->nl < 0 ? 2 : 1);
     if (it->nl < 0)
         return;
-    r->gl.UniformMatrix3fv(r->u_hf, 1, GL_FALSE, it->hf);
-    r->gl.Uniform1i(r->u_nl, it->nl);
+    r->gl.UniformMatrix3fv(r->pg->u_hf, 1, GL_FALSE, it->hf);
+    r->gl.Uniform1i(r->pg->u_nl, it->nl);
     if (it->nl > 0)
-        r->gl.Uniform4fv(r->u_lp, it->nl, &it->lp[0][0]);
+        r->gl.Uniform4fv(r->pg->u_lp, it->nl, &it->lp[0][0]);
 }
 
 /* Execute the sorted queue, skipping redundant state changes. */
@@ -1065,22 +1088,22 @@ static void hol__execute(hol_render *r, const hol_frame_desc *f, const float vp[
                 cur_mask = it->mask;
                 st->state_changes++;
             }
-            r->gl.UniformMatrix4fv(r->u_model, 1, GL_FALSE, it->model);
+            r->gl.UniformMatrix4fv(r->pg->u_model, 1, GL_FALSE, it->model);
             if (f->lighting)
                 hol__item_uniforms(r, it);
             if (r->view.wedges) {
-                r->gl.Uniform1i(r->u_wmode, it->branch > 0);
-                r->gl.Uniform4f(r->u_wedge, it->wedge[0], it->wedge[1], it->wedge[2],
+                r->gl.Uniform1i(r->pg->u_wmode, it->branch > 0);
+                r->gl.Uniform4f(r->pg->u_wedge, it->wedge[0], it->wedge[1], it->wedge[2],
                                 it->wedge[3]);
             }
             if (ids) {
                 int id = it->branch + 1;
-                r->gl.Uniform4f(r->u_id, (float)(id & 255) / 255.0f, (float)(id >> 8) / 255.0f,
+                r->gl.Uniform4f(r->pg->u_id, (float)(id & 255) / 255.0f, (float)(id >> 8) / 255.0f,
                                 0, 1);
             }
             st->branches++;
         } else if (cur_pass == HOL__PASS_HAND) {
-            r->gl.UniformMatrix4fv(r->u_model, 1, GL_FALSE, it->model);
+            r->gl.UniformMatrix4fv(r->pg->u_model, 1, GL_FALSE, it->model);
         }
         if (it->dyn != cur_vao) {
             cur_vao = it->dyn;

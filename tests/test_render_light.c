@@ -214,6 +214,16 @@ static double floor_m(double m, const double a[3], const double b[3])
     return acosh(ip < 1 ? 1 : ip) * m / model_edge();
 }
 
+/* The fog's distance on the floor: the chord 2 sinh(x/2) of the floor
+ * distance x (its Lorentz norm), in metres; the distance in {4,4}. */
+static double chord_m(double m, const double a[3], const double b[3])
+{
+    if (model_q == 4)
+        return hypot(a[0] - b[0], a[1] - b[1]) * m;
+    double ip = a[2] * b[2] - a[0] * b[0] - a[1] * b[1];
+    return sqrt(ip > 1 ? 2 * (ip - 1) : 0) * m / model_edge();
+}
+
 /* The documented falloff and incidence of a lantern over a floor point:
  * d true distance (m), x floor distance in curvature units. */
 static double lantern_term(double floor_metres, double x_units)
@@ -289,7 +299,7 @@ static int model_pixel(const light_case *c, const scene *s, int x, int y, double
         double fm = floor_m(c->cell, h, s->lant[i]);
         lam += lantern_term(fm, fm * model_edge() / c->cell);
     }
-    double fe = floor_m(c->cell, h, s->eye), de = hypot(fe, c->eye[1]);
+    double fe = chord_m(c->cell, h, s->eye), de = hypot(fe, c->eye[1]);
     double fd = de * (c->dusk ? FOG_DUSK : FOG_NIGHT);
     out[0] = lam < 1 ? lam : 1;
     out[1] = exp(-fd * fd);
