@@ -82,7 +82,8 @@ struct hol_render {
     hol_gl gl;
     hol_scene *scene;
     GLuint vao[2], vbo[2], ibo[2]; /* [0] static, [1] dynamic */
-    hol__prog progs[2]; /* [0] day (the picture without lights), [1] lit */
+    hol__prog progs[3]; /* [0] day (the picture without lights), [1] lit
+                           tiles, [2] lit room meshes (no tile code) */
     hol__prog *pg;      /* this frame's */
     hol_light_frame lights; /* this frame's (at dusk and night) */
     hol_mesh dyn;     /* per-frame geometry */
@@ -229,6 +230,7 @@ static const char *hol__fs =
     "  o_col = hol_out(mix(u_fog, c, f));\n"
     "#else\n"
     "  float lam = 0.0, de = length(toeye);\n"
+    "#if HOL_LIT == 1\n"
     "  if (u_light == 1) {\n"
     "    vec2 k = vec2(v_loc.x, -v_loc.z) * u_klein;\n"
     "    vec3 h = u_flat == 1 ? vec3(k, 1.0)\n"
@@ -242,6 +244,7 @@ static const char *hol__fs =
     "    float xe = ce * u_mpu, dh = u_eyep.w - v_loc.y;\n"
     "    de = sqrt(xe * xe + dh * dh);\n"
     "  }\n"
+    "#endif\n"
     "  float fd = de * u_fogd;\n"
     "  float f = exp(-fd * fd);\n"
     "  if (u_lonly == 1) {\n"
@@ -272,8 +275,10 @@ static GLuint hol__shader(const hol_gl *gl, GLenum type, int n, const char *cons
  * or the lit one (dusk and night); 0 ok. */
 static int hol__make_prog(hol_render *r, hol__prog *pg, int lit)
 {
-    const char *fsrc[2] = {lit ? "#version 300 es\n#define HOL_LIT 1\n"
-                               : "#version 300 es\n#define HOL_LIT 0\n", hol__fs};
+    static const char *const pre[3] = {"#version 300 es\n#define HOL_LIT 0\n",
+                                       "#version 300 es\n#define HOL_LIT 1\n",
+                                       "#version 300 es\n#define HOL_LIT 2\n"};
+    const char *fsrc[2] = {pre[lit], hol__fs};
     const char *vsrc[2] = {fsrc[0], hol__vs};
     GLuint vs = hol__shader(&r->gl, GL_VERTEX_SHADER, 2, vsrc);
     GLuint fs = hol__shader(&r->gl, GL_FRAGMENT_SHADER, 2, fsrc);
@@ -340,7 +345,8 @@ hol_err hol_render_create(const hol_render_desc *desc, hol_render **out)
         hol_alloc_release(&d.alloc, r);
         return gerr;
     }
-    if (hol__make_prog(r, &r->progs[0], 0) || hol__make_prog(r, &r->progs[1], 1)) {
+    if (hol__make_prog(r, &r->progs[0], 0) || hol__make_prog(r, &r->progs[1], 1) ||
+        hol__make_prog(r, &r->progs[2], 2)) {
         hol_render_destroy(r);
         return HOL_EUNSUPPORTED;
     }
@@ -385,7 +391,7 @@ void hol_render_destroy(hol_render *r)
 {
     if (!r)
         return;
-    for (int k = 0; k < 2; k++)
+    for (int k = 0; k < 3; k++)
         if (r->progs[k].prog)
             r->gl.DeleteProgram(r->progs[k].prog);
     if (r->vao[0])
@@ -952,8 +958,6 @@ static void hol__frame_begin(hol_render *r, const hol_frame_desc *f, float vp[16
     r->gl.ClearDepthf(1.0f);
     r->gl.ClearStencil(HOL_VIEW_STENCIL_CLEAR);
     r->gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
-    r->pg = &r->progs[f->lighting ? 1 : 0];
-    r->gl.UseProgram(r->pg->prog);
     r->gl.BindVertexArray(r->vao[1]);
     r->gl.BindBuffer(GL_ARRAY_BUFFER, r->vbo[1]);
     r->gl.BufferData(GL_ARRAY_BUFFER, (GLsizeiptr)(r->dyn.nv * sizeof(hol_vertex)), r->dyn.v,
@@ -970,15 +974,22 @@ static void hol__frame_begin(hol_render *r, const hol_frame_desc *f, float vp[16
                 s += proj[4 * k + j] * view[4 * i + k];
             vp[4 * i + j] = s;
         }
-    r->gl.Uniform3f(r->pg->u_eye, (float)f->cam.eye[0], (float)f->cam.eye[1],
-                    (float)f->cam.eye[2]);
-    r->gl.Uniform3f(r->pg->u_fog, sky[0], sky[1], sky[2]);
-    r->gl.Uniform1f(r->pg->u_fogd, fogd);
-    r->gl.Uniform1i(r->pg->u_lin, r->desc.srgb != 0);
-    r->gl.Uniform1i(r->pg->u_wmode, 0);
-    r->gl.Uniform1i(r->pg->u_light, 0);
-    if (f->lighting)
-        hol__frame_lights(r, f);
+    /* the per-frame uniforms of every program the frame uses: day's, or
+     * at dusk and night the room's then the tiles' (current at the end) */
+    int first = f->lighting ? 2 : 0, last = f->lighting ? 1 : 0;
+    for (int k = first; k >= last; k--) {
+        r->pg = &r->progs[k];
+        r->gl.UseProgram(r->pg->prog);
+        r->gl.Uniform3f(r->pg->u_eye, (float)f->cam.eye[0], (float)f->cam.eye[1],
+                        (float)f->cam.eye[2]);
+        r->gl.Uniform3f(r->pg->u_fog, sky[0], sky[1], sky[2]);
+        r->gl.Uniform1f(r->pg->u_fogd, fogd);
+        r->gl.Uniform1i(r->pg->u_lin, r->desc.srgb != 0);
+        r->gl.Uniform1i(r->pg->u_wmode, 0);
+        r->gl.Uniform1i(r->pg->u_light, k == 2 ? 2 : 0);
+        if (f->lighting)
+            hol__frame_lights(r, f);
+    }
 }
 
 /* The GL state of a pass (vp: the view-projection, for the passes in the
@@ -988,6 +999,13 @@ static void hol__set_pass(hol_render *r, const hol_frame_desc *f, int pass, cons
     int ids = (f->flags & HOL_RENDER_IDS) != 0;
     float ident[16];
     hol__identity(ident);
+    if (f->lighting) { /* the room's meshes: the program without tile code */
+        hol__prog *want = &r->progs[pass == HOL__PASS_ROOM ? 2 : 1];
+        if (want != r->pg) {
+            r->pg = want;
+            r->gl.UseProgram(want->prog);
+        }
+    }
     r->gl.Uniform1i(r->pg->u_wmode, 0); /* the tile pass sets it per branch */
     switch (pass) {
     case HOL__PASS_STENCIL:
