@@ -72,7 +72,14 @@ enum hol_app_mode {
 #define HOL_CUE_PATH     (1u << 1) /* shortest path when strayed */
 #define HOL_CUE_POLES    (1u << 2) /* guide poles on objectives */
 #define HOL_CUE_ARROW    (1u << 3) /* direction arrow */
-#define HOL_CUE_ALL      0xfu
+#define HOL_CUE_ALL      0xfu      /* the default: every cue above */
+#define HOL_CUE_LANTERN  (1u << 4) /* a lantern on every objective (lights
+                                      at dusk and night); only when a
+                                      level's cues line names it */
+
+/* A level's sky (`lighting day|dusk|night`): day is the picture without
+ * lights; at dusk and night lanterns light the forest (render/hol_render.h). */
+enum hol_app_lighting { HOL_LIGHT_DAY = 0, HOL_LIGHT_DUSK = 1, HOL_LIGHT_NIGHT = 2 };
 
 enum hol_app_minimap_place { HOL_MINIMAP_HUD = 0, HOL_MINIMAP_HAND = 1, HOL_MINIMAP_OFF = 2 };
 
@@ -93,6 +100,8 @@ enum hol_app_minimap_place { HOL_MINIMAP_HUD = 0, HOL_MINIMAP_HAND = 1, HOL_MINI
 /* A level's designer placements; the world takes these and a clearing on
  * each objective's tile (HOL_WORLD_MAX_PLACES holds both). */
 #define HOL_APP_MAX_PLACES 32
+/* Placed lanterns of a level (`place lantern ADDRESS`, repeatable). */
+#define HOL_APP_MAX_LANTERNS 8
 /* The tutorial's lessons, in order, each completed by a room step:
  * 0 step onto the marked tile one step ahead (room north);
  * 1 walk round a tree: back in the cell where the lesson began, after at
@@ -145,6 +154,9 @@ typedef struct hol_app_level {
                                  session sets it): the end screen's confirm
                                  finishes, and its prompt says "finish",
                                  not "next level" */
+    int lighting;             /* hol_app_lighting; 0: day */
+    hol_tile lanterns[HOL_APP_MAX_LANTERNS]; /* `place lantern` tiles */
+    int nlanterns;
 } hol_app_level;
 
 typedef struct hol_app_desc {
@@ -248,6 +260,11 @@ typedef struct hol_app_view {
     int nobjects;                     /* game objects to draw in the world */
     hol_app_object objects[HOL_APP_MAX_OBJECTIVES];
     uint64_t frame;                   /* steps of the app so far */
+    int lighting;                     /* the level's hol_app_lighting */
+    int nlanterns;                    /* the level's placed lanterns, then
+                                         (cue lantern) one per objective
+                                         still to reach */
+    hol_tile lanterns[HOL_APP_MAX_LANTERNS + HOL_APP_MAX_OBJECTIVES];
 } hol_app_view;
 
 /* One room step, for the per-step log. */

@@ -270,9 +270,24 @@ static void hol__fill_map(hol_app *app)
     }
 }
 
+/* The level's sky and lights: its placed lanterns, then (cue lantern) one
+ * on every game object drawn. */
+static void hol__fill_lights(hol_app *app)
+{
+    hol_app_view *v = &app->view;
+    const hol_app_level *L = &app->level;
+    v->lighting = L->lighting;
+    v->nlanterns = 0;
+    for (int k = 0; k < L->nlanterns && k < HOL_APP_MAX_LANTERNS; k++)
+        v->lanterns[v->nlanterns++] = L->lanterns[k];
+    for (int k = 0; (L->cues & HOL_CUE_LANTERN) && k < v->nobjects; k++)
+        v->lanterns[v->nlanterns++] = v->objects[k].tile;
+}
+
 void hol__fill_view(hol_app *app, const hol_input *in)
 {
     hol__fill_eyes(app, in);
     hol__fill_hud(app, in);
     hol__fill_map(app);
+    hol__fill_lights(app);
 }

@@ -22,7 +22,7 @@ typedef struct hol__lp {
      * objective and placement was given */
     int flag_lo, flag_hi, keys_n, keys_lo, keys_hi, chest_lo, chest_hi;
     long flag_line, keys_line, chest_line, place_line[HOL_APP_MAX_PLACES];
-    long tiling_line, room_line;
+    long tiling_line, room_line, lantern_line[HOL_APP_MAX_LANTERNS];
     int geo_only; /* the first pass: only the geometry lines */
     long key_line[24]; /* where each key of hol__keys was given (0: not yet) */
     int repeated;      /* a key given twice: reported in either pass */
@@ -264,16 +264,41 @@ static hol_err hol__key_stages(hol__lp *p, char **f, int nf)
     return HOL_OK;
 }
 
+/* place lantern ADDRESS (repeatable: one lantern a tile) */
+static hol_err hol__key_lantern(hol__lp *p, char **f)
+{
+    hol_tile t;
+    if (hol_tile_parse_q(hol__q(p), f[2], -1, &t))
+        return hol__lfail(p, HOL_EPARSE, p->line, "'%.30s' is not a canonical address", f[2]);
+    hol_app_level *L = &p->L;
+    for (int k = 0; k < L->nlanterns; k++)
+        if (hol_tile_eq(L->lanterns[k], t)) {
+            hol__lfail(p, HOL_EARG, p->line, "a lantern on %.30s is already placed", f[2]);
+            if (p->err) {
+                p->err->other = p->lantern_line[k];
+                p->err->other_on = 1;
+            }
+            return HOL_EARG;
+        }
+    if (L->nlanterns >= HOL_APP_MAX_LANTERNS)
+        return hol__lfail(p, HOL_ENOMEM, p->line, "more than %d lanterns", HOL_APP_MAX_LANTERNS);
+    p->lantern_line[L->nlanterns] = p->line;
+    L->lanterns[L->nlanterns++] = t;
+    return HOL_OK;
+}
+
 static hol_err hol__key_place(hol__lp *p, char **f, int nf)
 {
     static const char *const objs[] = {"clearing", "grass", "flowers", "rock", "mushroom", "pond"};
     static const int ids[] = {HOL_OBJ_NONE, HOL_OBJ_GRASS, HOL_OBJ_FLOWERS,
                               HOL_OBJ_ROCK, HOL_OBJ_MUSHROOM, HOL_OBJ_POOL};
     (void)nf;
+    if (!strcmp(f[1], "lantern"))
+        return hol__key_lantern(p, f);
     int o = hol__word(f[1], objs, 6);
     if (o < 0)
         return hol__lfail(p, HOL_EPARSE, p->line,
-                         "place '%.20s' is not clearing, grass, flowers, rock, mushroom or pond",
+                         "place '%.20s' is not clearing, grass, flowers, rock, mushroom, pond or lantern",
                          f[1]);
     hol_tile t;
     hol_err e = hol__addr(p, f[2], "", &t);
@@ -293,18 +318,19 @@ static hol_err hol__key_place(hol__lp *p, char **f, int nf)
 
 static hol_err hol__key_cues(hol__lp *p, char **f, int nf)
 {
-    static const char *const names[4] = {"hot-cold", "path", "poles", "arrow"};
+    static const char *const names[5] = {"hot-cold", "path", "poles", "arrow", "lantern"};
     unsigned cues = 0;
     for (int i = 1; i < nf && i < HOL__FIELDS; i++) {
-        int c = hol__word(f[i], names, 4);
+        int c = hol__word(f[i], names, 5);
         if (c < 0 && !(nf == 2 && !strcmp(f[i], "none")))
             return hol__lfail(p, HOL_EPARSE, p->line,
-                             "cue '%.20s' is not hot-cold, path, poles, arrow or none", f[i]);
+                             "cue '%.20s' is not hot-cold, path, poles, arrow, lantern or none",
+                             f[i]);
         if (c >= 0)
             cues |= 1u << c;
     }
-    if (nf > 5)
-        return hol__lfail(p, HOL_EPARSE, p->line, "more than the four cues");
+    if (nf > 6)
+        return hol__lfail(p, HOL_EPARSE, p->line, "more than the five cues");
     p->L.cues = cues;
     return HOL_OK;
 }
@@ -327,6 +353,19 @@ static hol_err hol__key_minimap(hol__lp *p, char **f, int nf)
     if (m < 0)
         return hol__lfail(p, HOL_EPARSE, p->line, "minimap '%.20s' is not hud, hand or off", f[1]);
     p->L.minimap = m;
+    return HOL_OK;
+}
+
+/* lighting day|dusk|night */
+static hol_err hol__key_lighting(hol__lp *p, char **f, int nf)
+{
+    static const char *const skies[3] = {"day", "dusk", "night"};
+    (void)nf;
+    int m = hol__word(f[1], skies, 3);
+    if (m < 0)
+        return hol__lfail(p, HOL_EPARSE, p->line, "lighting '%.20s' is not day, dusk or night",
+                          f[1]);
+    p->L.lighting = m;
     return HOL_OK;
 }
 
@@ -393,6 +432,7 @@ static const struct {
     {"cues", 2, HOL__FIELDS + 1, hol__key_cues},
     {"minimap", 2, 2, hol__key_minimap},
     {"fixed", 2, 2, hol__key_fixed},
+    {"lighting", 2, 2, hol__key_lighting},
     {"tiling", 3, 3, hol__key_tiling},
     {"room", 3, 3, hol__key_room},
     {"cell", 2, 2, hol__key_cell},

@@ -165,7 +165,9 @@ int hol_session_is_log_name(const char *name);
 /* The cues drawn in a view: hot-cold (the minimap shows, an objective is
  * left), path (the minimap shows its strayed path), poles (an objective
  * stands), arrow (the minimap shows and an objective lies beyond its
- * HOL_APP_MINIMAP_RADIUS tiles) - each only where the level has it. */
+ * HOL_APP_MINIMAP_RADIUS tiles), lantern (an objective stands and the sky
+ * is dusk or night: its lantern is lit) - each only where the level has
+ * it. */
 unsigned hol_session_cues_visible(const hol_app_view *v);
 
 #endif

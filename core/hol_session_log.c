@@ -38,6 +38,8 @@ unsigned hol_session_cues_visible(const hol_app_view *v)
     for (int i = 0; map && (c & HOL_CUE_ARROW) && i < v->map.nobjectives; i++)
         if (hol_tile_dist(v->user.tile, v->map.objectives[i]) > HOL_APP_MINIMAP_RADIUS)
             vis |= HOL_CUE_ARROW;
+    if (objs && (c & HOL_CUE_LANTERN) && v->lighting != HOL_LIGHT_DAY)
+        vis |= HOL_CUE_LANTERN;
     return vis;
 }
 

@@ -68,6 +68,8 @@ typedef hol_gl_proc (*hol_gl_getproc)(const char *name);
     X(PFNGLUNIFORM1IPROC, Uniform1i, "glUniform1i") \
     X(PFNGLUNIFORM3FPROC, Uniform3f, "glUniform3f") \
     X(PFNGLUNIFORM4FPROC, Uniform4f, "glUniform4f") \
+    X(PFNGLUNIFORM4FVPROC, Uniform4fv, "glUniform4fv") \
+    X(PFNGLUNIFORMMATRIX3FVPROC, UniformMatrix3fv, "glUniformMatrix3fv") \
     X(PFNGLUNIFORMMATRIX4FVPROC, UniformMatrix4fv, "glUniformMatrix4fv") \
     X(PFNGLUSEPROGRAMPROC, UseProgram, "glUseProgram") \
     X(PFNGLVERTEXATTRIBPOINTERPROC, VertexAttribPointer, "glVertexAttribPointer") \

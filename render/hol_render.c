@@ -8,10 +8,14 @@
 
 #include "hol_gl.h"
 #include "hol_hud.h"
+#include "hol_light.h"
 #include "hol_mesh.h"
 #include "hol_scene.h"
 
 #include "../core/hol_world.h"
+
+#define HOL__STR2(x) #x
+#define HOL__STR(x) HOL__STR2(x)
 
 /* GPU memory layout. The static buffers hold the room meshes and a pool of
  * tile meshes that stay resident across frames; the dynamic buffers get the
@@ -58,16 +62,30 @@ typedef struct hol__item {
     uint8_t ref, mask;
     int16_t branch;
     float wedge[4]; /* w0, w1 (x, z) when the view has wedges */
+    int8_t nl;      /* lit tiles: lights (-1: no hyperbolic frame) */
+    float hf[9];    /* the tile's frame in the user's (column-major) */
+    float lp[HOL_LIGHT_PER_TILE][4]; /* its lights: point, height */
     uint32_t first, count; /* index range */
     float model[16];
 } hol__item;
+
+/* A shader program and its uniforms (-1: not in this program). */
+typedef struct hol__prog {
+    GLuint prog;
+    GLint u_vp, u_model, u_mode, u_id, u_eye, u_fog, u_fogd, u_lin, u_wedge, u_wmode;
+    GLint u_light, u_flat, u_klein, u_mpu, u_hf, u_eyep, u_nl, u_lp, u_amb, u_sun, u_lcol,
+        u_lonly, u_cmax;
+} hol__prog;
 
 struct hol_render {
     hol_render_desc desc;
     hol_gl gl;
     hol_scene *scene;
-    GLuint prog, vao[2], vbo[2], ibo[2]; /* [0] static, [1] dynamic */
-    GLint u_vp, u_model, u_mode, u_id, u_eye, u_fog, u_fogd, u_lin, u_wedge, u_wmode;
+    GLuint vao[2], vbo[2], ibo[2]; /* [0] static, [1] dynamic */
+    hol__prog progs[3]; /* [0] day (the picture without lights), [1] lit
+                           tiles, [2] lit room meshes (no tile code) */
+    hol__prog *pg;      /* this frame's */
+    hol_light_frame lights; /* this frame's (at dusk and night) */
     hol_mesh dyn;     /* per-frame geometry */
     hol_mesh scratch; /* one room or tile mesh before upload */
     hol_vertex *verts;
@@ -93,7 +111,6 @@ struct hol_render {
 };
 
 static const char *hol__vs =
-    "#version 300 es\n"
     "layout(location = 0) in vec3 a_pos;\n"
     "layout(location = 1) in vec3 a_nrm;\n"
     "layout(location = 2) in vec4 a_col;\n"
@@ -102,16 +119,25 @@ static const char *hol__vs =
     "out vec3 v_nrm;\n"
     "out vec4 v_col;\n"
     "out vec3 v_wpos;\n"
+    "#if HOL_LIT\n"
+    "out vec3 v_loc;\n"
+    "#endif\n"
     "void main() {\n"
     "  vec4 w = u_model * vec4(a_pos, 1.0);\n"
+    "#if HOL_LIT\n"
+    "  v_loc = a_pos;\n"
+    "#endif\n"
     "  v_wpos = w.xyz;\n"
     "  v_nrm = mat3(u_model) * a_nrm;\n"
     "  v_col = a_col;\n"
     "  gl_Position = u_vp * w;\n"
     "}\n";
 
+/* After "#version 300 es" and "#define HOL_LIT 0|1" (hol__make_prog): the
+ * day program is exactly the shader before lights; the lit one (dusk and
+ * night) adds the hyperboloid point, the lanterns and the fog by the true
+ * distance. */
 static const char *hol__fs =
-    "#version 300 es\n"
     "precision highp float;\n"
     "in vec3 v_nrm;\n"
     "in vec4 v_col;\n"
@@ -124,6 +150,24 @@ static const char *hol__fs =
     "uniform int u_lin;\n"
     "uniform vec4 u_wedge;\n"
     "uniform int u_wmode;\n"
+    "#if HOL_LIT\n"
+    /* lighting (hol_light.h): 1 a tile with its hyperbolic frame; 2 the
+     * room's own meshes (no tile: ambient, fog by room distance) */
+    "in vec3 v_loc;\n"
+    "uniform int u_light;\n"
+    "uniform int u_flat;\n"
+    "uniform int u_lonly;\n"
+    "uniform float u_klein;\n"
+    "uniform float u_mpu;\n"
+    "uniform float u_cmax;\n"
+    "uniform mat3 u_hf;\n"
+    "uniform vec4 u_eyep;\n"
+    "uniform int u_nl;\n"
+    "uniform vec4 u_lp[4];\n"
+    "uniform vec3 u_amb;\n"
+    "uniform vec3 u_sun;\n"
+    "uniform vec3 u_lcol;\n"
+    "#endif\n"
     "out vec4 o_col;\n"
     "vec4 hol_out(vec3 c) {\n"
     "  if (u_lin == 0) return vec4(c, 1.0);\n"
@@ -131,6 +175,33 @@ static const char *hol__fs =
     "  return vec4(mix(c / 12.92, pow((c + 0.055) / 1.055, vec3(2.4)),\n"
     "                  step(vec3(0.04045), c)), 1.0);\n"
     "}\n"
+    "#if HOL_LIT\n"
+    /* the chord c = |p - l|_L gives x = 2 asinh(c/2) and sinh(x) =
+     * c sqrt(1 + c^2/4) with one sqrt and one log; a chord beyond u_cmax
+     * is farther than the radius on the floor alone */
+    "float hol_lights(vec3 p, float h, float nup) {\n"
+    "  float lam = 0.0;\n"
+    "  for (int i = 0; i < 4; i++) {\n"
+    "    if (i >= u_nl) break;\n"
+    "    vec3 dv = p - u_lp[i].xyz;\n"
+    "    float c2 = max(dot(dv.xy, dv.xy) - (u_flat == 1 ? 0.0 : dv.z * dv.z), 0.0);\n"
+    "    float c = sqrt(c2);\n"
+    "    if (c >= u_cmax) continue;\n"
+    "    float q = sqrt(1.0 + 0.25 * c2);\n"
+    "    float x = u_flat == 1 ? c : 2.0 * log(0.5 * c + q);\n"
+    "    float xm = x * u_mpu, dh = u_lp[i].w - h;\n"
+    "    float d2 = xm * xm + dh * dh;\n"
+    "    if (d2 >= " HOL__STR(HOL_LIGHT_RADIUS_M) " * " HOL__STR(HOL_LIGHT_RADIUS_M) ") continue;\n"
+    "    float u2 = d2 / (" HOL__STR(HOL_LIGHT_RADIUS_M) " * " HOL__STR(HOL_LIGHT_RADIUS_M) ");\n"
+    "    float w = (1.0 - u2) * (1.0 - u2);\n"
+    "    float s = (u_flat == 1 || c < 1e-4) ? 1.0 : x / (c * q);\n"
+    "    float f = w * (1.0 - " HOL__STR(HOL_LIGHT_PHYS) " + " HOL__STR(HOL_LIGHT_PHYS) " * s)"
+    " / (1.0 + d2 / (" HOL__STR(HOL_LIGHT_D0_M) " * " HOL__STR(HOL_LIGHT_D0_M) "));\n"
+    "    lam += f * (0.3 + 0.7 * max(nup, 0.0) * max(dh, 0.0) * inversesqrt(max(d2, 1e-8)));\n"
+    "  }\n"
+    "  return lam;\n"
+    "}\n"
+    "#endif\n"
     "void main() {\n"
     "  if (u_wmode == 1) {\n"
     "    vec2 d = v_wpos.xz - u_eye.xz;\n"
@@ -152,16 +223,44 @@ static const char *hol__fs =
     "  n = normalize(n);\n"
     "  if (dot(n, toeye) < 0.0) n = -n;\n"
     "  float d = max(dot(n, normalize(vec3(0.35, 0.85, 0.40))), 0.0);\n"
+    "#if HOL_LIT == 0\n"
     "  vec3 c = v_col.rgb * (0.50 + 0.60 * d);\n"
     "  float dist = length(toeye) * u_fogd;\n"
     "  float f = exp(-dist * dist);\n"
     "  o_col = hol_out(mix(u_fog, c, f));\n"
+    "#else\n"
+    "  float lam = 0.0, de = length(toeye);\n"
+    "#if HOL_LIT == 1\n"
+    "  if (u_light == 1) {\n"
+    "    vec2 k = vec2(v_loc.x, -v_loc.z) * u_klein;\n"
+    "    vec3 h = u_flat == 1 ? vec3(k, 1.0)\n"
+    "                         : vec3(k, 1.0) / sqrt(max(1.0 - dot(k, k), 1e-6));\n"
+    "    vec3 p = u_hf * h;\n"
+    "    if (u_nl > 0) lam = hol_lights(p, v_loc.y, n.y);\n"
+    /* fog: the chord 2 sinh(x/2) of the floor distance x (a function of
+     * the true distance, within 4 % of it to 3 m; no log per pixel) */
+    "    vec3 ev = p - u_eyep.xyz;\n"
+    "    float ce = sqrt(max(dot(ev.xy, ev.xy) - (u_flat == 1 ? 0.0 : ev.z * ev.z), 0.0));\n"
+    "    float xe = ce * u_mpu, dh = u_eyep.w - v_loc.y;\n"
+    "    de = sqrt(xe * xe + dh * dh);\n"
+    "  }\n"
+    "#endif\n"
+    "  float fd = de * u_fogd;\n"
+    "  float f = exp(-fd * fd);\n"
+    "  if (u_lonly == 1) {\n"
+    "    o_col = vec4(min(lam, 1.0), f, 0.0, 1.0);\n"
+    "    return;\n"
+    "  }\n"
+    "  vec3 c = v_col.rgb * (u_amb + u_sun * d + u_lcol * lam);\n"
+    "  if (abs(v_col.a - 100.0 / 255.0) < 0.01) c = v_col.rgb * 1.2;\n" /* glass */
+    "  o_col = hol_out(mix(u_fog, c, f));\n"
+    "#endif\n"
     "}\n";
 
-static GLuint hol__shader(const hol_gl *gl, GLenum type, const char *src)
+static GLuint hol__shader(const hol_gl *gl, GLenum type, int n, const char *const *src)
 {
     GLuint s = gl->CreateShader(type);
-    gl->ShaderSource(s, 1, &src, NULL);
+    gl->ShaderSource(s, n, src, NULL);
     gl->CompileShader(s);
     GLint ok = 0;
     gl->GetShaderiv(s, GL_COMPILE_STATUS, &ok);
@@ -170,6 +269,49 @@ static GLuint hol__shader(const hol_gl *gl, GLenum type, const char *src)
         return 0;
     }
     return s;
+}
+
+/* Program k: the day shader (lit 0: exactly the picture before lights)
+ * or the lit one (dusk and night); 0 ok. */
+static int hol__make_prog(hol_render *r, hol__prog *pg, int lit)
+{
+    static const char *const pre[3] = {"#version 300 es\n#define HOL_LIT 0\n",
+                                       "#version 300 es\n#define HOL_LIT 1\n",
+                                       "#version 300 es\n#define HOL_LIT 2\n"};
+    const char *fsrc[2] = {pre[lit], hol__fs};
+    const char *vsrc[2] = {fsrc[0], hol__vs};
+    GLuint vs = hol__shader(&r->gl, GL_VERTEX_SHADER, 2, vsrc);
+    GLuint fs = hol__shader(&r->gl, GL_FRAGMENT_SHADER, 2, fsrc);
+    if (!vs || !fs) {
+        if (vs)
+            r->gl.DeleteShader(vs);
+        if (fs)
+            r->gl.DeleteShader(fs);
+        return 1;
+    }
+    pg->prog = r->gl.CreateProgram();
+    r->gl.AttachShader(pg->prog, vs);
+    r->gl.AttachShader(pg->prog, fs);
+    r->gl.LinkProgram(pg->prog);
+    r->gl.DeleteShader(vs);
+    r->gl.DeleteShader(fs);
+    GLint ok = 0;
+    r->gl.GetProgramiv(pg->prog, GL_LINK_STATUS, &ok);
+    if (!ok)
+        return 1;
+    static const char *const names[] = {"u_vp", "u_model", "u_mode", "u_id", "u_eye",
+                                        "u_fog", "u_fogd", "u_lin", "u_wedge", "u_wmode",
+                                        "u_light", "u_flat", "u_klein", "u_mpu", "u_hf",
+                                        "u_eyep", "u_nl", "u_lp", "u_amb", "u_sun",
+                                        "u_lcol", "u_lonly", "u_cmax"};
+    GLint *loc[] = {&pg->u_vp, &pg->u_model, &pg->u_mode, &pg->u_id, &pg->u_eye,
+                    &pg->u_fog, &pg->u_fogd, &pg->u_lin, &pg->u_wedge, &pg->u_wmode,
+                    &pg->u_light, &pg->u_flat, &pg->u_klein, &pg->u_mpu, &pg->u_hf,
+                    &pg->u_eyep, &pg->u_nl, &pg->u_lp, &pg->u_amb, &pg->u_sun,
+                    &pg->u_lcol, &pg->u_lonly, &pg->u_cmax};
+    for (size_t k = 0; k < sizeof loc / sizeof loc[0]; k++)
+        *loc[k] = r->gl.GetUniformLocation(pg->prog, names[k]);
+    return 0;
 }
 
 hol_err hol_render_create(const hol_render_desc *desc, hol_render **out)
@@ -203,38 +345,12 @@ hol_err hol_render_create(const hol_render_desc *desc, hol_render **out)
         hol_alloc_release(&d.alloc, r);
         return gerr;
     }
-    GLuint vs = hol__shader(&r->gl, GL_VERTEX_SHADER, hol__vs);
-    GLuint fs = hol__shader(&r->gl, GL_FRAGMENT_SHADER, hol__fs);
-    if (!vs || !fs) {
-        if (vs)
-            r->gl.DeleteShader(vs);
-        if (fs)
-            r->gl.DeleteShader(fs);
+    if (hol__make_prog(r, &r->progs[0], 0) || hol__make_prog(r, &r->progs[1], 1) ||
+        hol__make_prog(r, &r->progs[2], 2)) {
         hol_render_destroy(r);
         return HOL_EUNSUPPORTED;
     }
-    r->prog = r->gl.CreateProgram();
-    r->gl.AttachShader(r->prog, vs);
-    r->gl.AttachShader(r->prog, fs);
-    r->gl.LinkProgram(r->prog);
-    r->gl.DeleteShader(vs);
-    r->gl.DeleteShader(fs);
-    GLint ok = 0;
-    r->gl.GetProgramiv(r->prog, GL_LINK_STATUS, &ok);
-    if (!ok) {
-        hol_render_destroy(r);
-        return HOL_EUNSUPPORTED;
-    }
-    r->u_vp = r->gl.GetUniformLocation(r->prog, "u_vp");
-    r->u_model = r->gl.GetUniformLocation(r->prog, "u_model");
-    r->u_mode = r->gl.GetUniformLocation(r->prog, "u_mode");
-    r->u_id = r->gl.GetUniformLocation(r->prog, "u_id");
-    r->u_eye = r->gl.GetUniformLocation(r->prog, "u_eye");
-    r->u_fog = r->gl.GetUniformLocation(r->prog, "u_fog");
-    r->u_fogd = r->gl.GetUniformLocation(r->prog, "u_fogd");
-    r->u_lin = r->gl.GetUniformLocation(r->prog, "u_lin");
-    r->u_wedge = r->gl.GetUniformLocation(r->prog, "u_wedge");
-    r->u_wmode = r->gl.GetUniformLocation(r->prog, "u_wmode");
+    r->pg = &r->progs[0];
     r->gl.GenVertexArrays(2, r->vao);
     r->gl.GenBuffers(2, r->vbo);
     r->gl.GenBuffers(2, r->ibo);
@@ -275,8 +391,9 @@ void hol_render_destroy(hol_render *r)
 {
     if (!r)
         return;
-    if (r->prog)
-        r->gl.DeleteProgram(r->prog);
+    for (int k = 0; k < 3; k++)
+        if (r->progs[k].prog)
+            r->gl.DeleteProgram(r->progs[k].prog);
     if (r->vao[0])
         r->gl.DeleteVertexArrays(2, r->vao);
     if (r->vbo[0])
@@ -544,6 +661,30 @@ static void hol__tile_marks(const hol_frame_desc *f, hol_tile t, int *pole, int 
             *kind = f->object_kinds[o];
             break;
         }
+    for (int o = 0; f->lighting && o < f->nlanterns && o < HOL_RENDER_MAX_LANTERNS; o++)
+        if (hol_tile_eq(f->lanterns[o], t)) {
+            *kind |= HOL_SCENE_LANTERN; /* shown at dusk and night */
+            break;
+        }
+}
+
+/* A lit tile's frame in the user's (column-major for GL) and its lights. */
+static void hol__item_lights(hol_render *r, hol__item *it, hol_tile t)
+{
+    double fr[9];
+    int idx[HOL_LIGHT_PER_TILE];
+    int n = hol_light_tile(&r->lights, t, fr, idx);
+    it->nl = (int8_t)n;
+    if (n < 0)
+        return;
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            it->hf[3 * j + i] = (float)fr[3 * i + j];
+    for (int k = 0; k < n; k++) {
+        for (int j = 0; j < 3; j++)
+            it->lp[k][j] = (float)r->lights.pos[idx[k]][j];
+        it->lp[k][3] = (float)HOL_LIGHT_HEIGHT_M;
+    }
 }
 
 /* Pass 2: one draw per branch of its tile's resident mesh, placed in the
@@ -572,6 +713,8 @@ static hol_err hol__queue_tiles(hol_render *r, const hol_frame_desc *f, int bare
             it->wedge[2 + j] = (float)br->w1[j];
         }
         it->key = 2u << 24 | (uint32_t)br->nsteps << 16 | (uint32_t)k;
+        if (f->lighting)
+            hol__item_lights(r, it, br->state.tile);
         /* tile frame -> room: the tile's heading is room north turned
          * clockwise by orient quarter turns */
         double a = -(double)br->state.orient * 1.5707963267948966;
@@ -724,6 +867,8 @@ static hol_err hol__build(hol_render *r, const hol_frame_desc *f)
     hol_err err = hol_view_build(&f->user, f->cam.eye[0] / m, f->cam.eye[2] / m, eu, &r->view);
     if (err)
         return err;
+    if (f->lighting && (err = hol_light_prepare(f, &r->lights)))
+        return err;
     hol_mesh_clear(&r->dyn);
     r->nitems = 0;
     r->frame++;
@@ -773,6 +918,42 @@ static hol_err hol__frame_faded(hol_render *r, const hol_frame_desc *f)
     return r->desc.debug ? hol_render_check(r) : HOL_OK;
 }
 
+/* The sky of a frame's lighting (day: hol_scene_sky) and its fog density
+ * per metre. */
+static float hol__sky(const hol_frame_desc *f, float rgb[3])
+{
+    static const float skies[3][3] = {{0, 0, 0}, {0.46f, 0.36f, 0.44f}, {0.03f, 0.04f, 0.08f}};
+    if (f->lighting == HOL_RENDER_DUSK || f->lighting == HOL_RENDER_NIGHT) {
+        memcpy(rgb, skies[f->lighting], sizeof skies[0]);
+        return f->lighting == HOL_RENDER_DUSK ? 0.10f : 0.15f;
+    }
+    hol_scene_sky(rgb);
+    return 0.06f;
+}
+
+/* The per-frame uniforms of dusk and night (hol_light.h). */
+static void hol__frame_lights(hol_render *r, const hol_frame_desc *f)
+{
+    const hol_light_frame *lf = &r->lights;
+    int night = f->lighting == HOL_RENDER_NIGHT;
+    r->gl.Uniform1i(r->pg->u_flat, lf->flat);
+    r->gl.Uniform1i(r->pg->u_lonly, (f->flags & HOL_RENDER_LIGHT_ONLY) != 0);
+    r->gl.Uniform1f(r->pg->u_klein, (float)lf->klein);
+    r->gl.Uniform1f(r->pg->u_mpu, (float)lf->metres_per_unit);
+    double xr = HOL_LIGHT_RADIUS_M / lf->metres_per_unit; /* the radius, units */
+    r->gl.Uniform1f(r->pg->u_cmax, (float)(lf->flat ? xr : 2 * sinh(xr / 2)));
+    r->gl.Uniform4f(r->pg->u_eyep, (float)lf->eye[0], (float)lf->eye[1], (float)lf->eye[2],
+                    (float)lf->eye_h);
+    if (night) {
+        r->gl.Uniform3f(r->pg->u_amb, 0.07f, 0.08f, 0.13f);
+        r->gl.Uniform3f(r->pg->u_sun, 0.05f, 0.06f, 0.10f);
+    } else {
+        r->gl.Uniform3f(r->pg->u_amb, 0.30f, 0.26f, 0.28f);
+        r->gl.Uniform3f(r->pg->u_sun, 0.28f, 0.17f, 0.11f);
+    }
+    r->gl.Uniform3f(r->pg->u_lcol, 3.0f, 2.25f, 1.25f);
+}
+
 /* Clear the frame (sky, or black for IDs), upload this frame's dynamic
  * geometry, and set the program's per-frame uniforms; vp receives the
  * view-projection matrix. */
@@ -780,7 +961,7 @@ static void hol__frame_begin(hol_render *r, const hol_frame_desc *f, float vp[16
 {
     int ids = (f->flags & HOL_RENDER_IDS) != 0;
     float sky[3];
-    hol_scene_sky(sky);
+    float fogd = hol__sky(f, sky);
     hol__viewport(r, f);
     r->gl.Disable(GL_CULL_FACE);
     r->gl.Disable(GL_BLEND);
@@ -795,7 +976,6 @@ static void hol__frame_begin(hol_render *r, const hol_frame_desc *f, float vp[16
     r->gl.ClearDepthf(1.0f);
     r->gl.ClearStencil(HOL_VIEW_STENCIL_CLEAR);
     r->gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
-    r->gl.UseProgram(r->prog);
     r->gl.BindVertexArray(r->vao[1]);
     r->gl.BindBuffer(GL_ARRAY_BUFFER, r->vbo[1]);
     r->gl.BufferData(GL_ARRAY_BUFFER, (GLsizeiptr)(r->dyn.nv * sizeof(hol_vertex)), r->dyn.v,
@@ -812,12 +992,22 @@ static void hol__frame_begin(hol_render *r, const hol_frame_desc *f, float vp[16
                 s += proj[4 * k + j] * view[4 * i + k];
             vp[4 * i + j] = s;
         }
-    r->gl.Uniform3f(r->u_eye, (float)f->cam.eye[0], (float)f->cam.eye[1],
-                    (float)f->cam.eye[2]);
-    r->gl.Uniform3f(r->u_fog, sky[0], sky[1], sky[2]);
-    r->gl.Uniform1f(r->u_fogd, 0.06f);
-    r->gl.Uniform1i(r->u_lin, r->desc.srgb != 0);
-    r->gl.Uniform1i(r->u_wmode, 0);
+    /* the per-frame uniforms of every program the frame uses: day's, or
+     * at dusk and night the room's then the tiles' (current at the end) */
+    int first = f->lighting ? 2 : 0, last = f->lighting ? 1 : 0;
+    for (int k = first; k >= last; k--) {
+        r->pg = &r->progs[k];
+        r->gl.UseProgram(r->pg->prog);
+        r->gl.Uniform3f(r->pg->u_eye, (float)f->cam.eye[0], (float)f->cam.eye[1],
+                        (float)f->cam.eye[2]);
+        r->gl.Uniform3f(r->pg->u_fog, sky[0], sky[1], sky[2]);
+        r->gl.Uniform1f(r->pg->u_fogd, fogd);
+        r->gl.Uniform1i(r->pg->u_lin, r->desc.srgb != 0);
+        r->gl.Uniform1i(r->pg->u_wmode, 0);
+        r->gl.Uniform1i(r->pg->u_light, k == 2 ? 2 : 0);
+        if (f->lighting)
+            hol__frame_lights(r, f);
+    }
 }
 
 /* The GL state of a pass (vp: the view-projection, for the passes in the
@@ -827,7 +1017,14 @@ static void hol__set_pass(hol_render *r, const hol_frame_desc *f, int pass, cons
     int ids = (f->flags & HOL_RENDER_IDS) != 0;
     float ident[16];
     hol__identity(ident);
-    r->gl.Uniform1i(r->u_wmode, 0); /* the tile pass sets it per branch */
+    if (f->lighting) { /* the room's meshes: the program without tile code */
+        hol__prog *want = &r->progs[pass == HOL__PASS_ROOM ? 2 : 1];
+        if (want != r->pg) {
+            r->pg = want;
+            r->gl.UseProgram(want->prog);
+        }
+    }
+    r->gl.Uniform1i(r->pg->u_wmode, 0); /* the tile pass sets it per branch */
     switch (pass) {
     case HOL__PASS_STENCIL:
         r->gl.ColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
@@ -835,8 +1032,8 @@ static void hol__set_pass(hol_render *r, const hol_frame_desc *f, int pass, cons
         r->gl.DepthMask(GL_FALSE);
         r->gl.Enable(GL_STENCIL_TEST);
         r->gl.StencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
-        r->gl.UniformMatrix4fv(r->u_vp, 1, GL_FALSE, ident);
-        r->gl.UniformMatrix4fv(r->u_model, 1, GL_FALSE, ident);
+        r->gl.UniformMatrix4fv(r->pg->u_vp, 1, GL_FALSE, ident);
+        r->gl.UniformMatrix4fv(r->pg->u_model, 1, GL_FALSE, ident);
         break;
     case HOL__PASS_ROOM:
     case HOL__PASS_TILE:
@@ -849,11 +1046,13 @@ static void hol__set_pass(hol_render *r, const hol_frame_desc *f, int pass, cons
             r->gl.Disable(GL_STENCIL_TEST);
         else
             r->gl.Enable(GL_STENCIL_TEST);
-        r->gl.UniformMatrix4fv(r->u_vp, 1, GL_FALSE, vp);
-        r->gl.Uniform1i(r->u_mode, ids ? HOL__MODE_ID : HOL__MODE_LIT);
-        r->gl.Uniform4f(r->u_id, 0, 0, 0, 1);
+        r->gl.UniformMatrix4fv(r->pg->u_vp, 1, GL_FALSE, vp);
+        r->gl.Uniform1i(r->pg->u_mode, ids ? HOL__MODE_ID : HOL__MODE_LIT);
+        r->gl.Uniform4f(r->pg->u_id, 0, 0, 0, 1);
         if (pass == HOL__PASS_ROOM)
-            r->gl.UniformMatrix4fv(r->u_model, 1, GL_FALSE, ident);
+            r->gl.UniformMatrix4fv(r->pg->u_model, 1, GL_FALSE, ident);
+        if (f->lighting) /* the tile pass sets it per tile */
+            r->gl.Uniform1i(r->pg->u_light, 2);
         break;
     case HOL__PASS_HAND:
         /* in the world: hidden where the scene is nearer; its coplanar
@@ -862,16 +1061,16 @@ static void hol__set_pass(hol_render *r, const hol_frame_desc *f, int pass, cons
         r->gl.DepthFunc(GL_LEQUAL);
         r->gl.DepthMask(GL_FALSE);
         r->gl.Disable(GL_STENCIL_TEST);
-        r->gl.UniformMatrix4fv(r->u_vp, 1, GL_FALSE, vp);
-        r->gl.Uniform1i(r->u_mode, ids ? HOL__MODE_ID : HOL__MODE_FLAT);
+        r->gl.UniformMatrix4fv(r->pg->u_vp, 1, GL_FALSE, vp);
+        r->gl.Uniform1i(r->pg->u_mode, ids ? HOL__MODE_ID : HOL__MODE_FLAT);
         break;
     case HOL__PASS_FADE:
         r->gl.Disable(GL_DEPTH_TEST);
         r->gl.DepthMask(GL_FALSE);
         r->gl.Disable(GL_STENCIL_TEST);
-        r->gl.UniformMatrix4fv(r->u_vp, 1, GL_FALSE, ident);
-        r->gl.UniformMatrix4fv(r->u_model, 1, GL_FALSE, ident);
-        r->gl.Uniform1i(r->u_mode, HOL__MODE_FLAT);
+        r->gl.UniformMatrix4fv(r->pg->u_vp, 1, GL_FALSE, ident);
+        r->gl.UniformMatrix4fv(r->pg->u_model, 1, GL_FALSE, ident);
+        r->gl.Uniform1i(r->pg->u_mode, HOL__MODE_FLAT);
         r->gl.Enable(GL_BLEND);
         r->gl.BlendColor(0, 0, 0, (float)f->fade);
         r->gl.BlendFunc(GL_CONSTANT_ALPHA, GL_ONE_MINUS_CONSTANT_ALPHA);
@@ -881,11 +1080,23 @@ static void hol__set_pass(hol_render *r, const hol_frame_desc *f, int pass, cons
         r->gl.Disable(GL_DEPTH_TEST);
         r->gl.DepthMask(GL_FALSE);
         r->gl.Disable(GL_STENCIL_TEST);
-        r->gl.UniformMatrix4fv(r->u_vp, 1, GL_FALSE, ident);
-        r->gl.UniformMatrix4fv(r->u_model, 1, GL_FALSE, ident);
-        r->gl.Uniform1i(r->u_mode, ids ? HOL__MODE_ID : HOL__MODE_FLAT);
+        r->gl.UniformMatrix4fv(r->pg->u_vp, 1, GL_FALSE, ident);
+        r->gl.UniformMatrix4fv(r->pg->u_model, 1, GL_FALSE, ident);
+        r->gl.Uniform1i(r->pg->u_mode, ids ? HOL__MODE_ID : HOL__MODE_FLAT);
         break;
     }
+}
+
+/* A lit tile's frame and lights (a tile without a frame: as the room). */
+static void hol__item_uniforms(hol_render *r, const hol__item *it)
+{
+    r->gl.Uniform1i(r->pg->u_light, it->nl < 0 ? 2 : 1);
+    if (it->nl < 0)
+        return;
+    r->gl.UniformMatrix3fv(r->pg->u_hf, 1, GL_FALSE, it->hf);
+    r->gl.Uniform1i(r->pg->u_nl, it->nl);
+    if (it->nl > 0)
+        r->gl.Uniform4fv(r->pg->u_lp, it->nl, &it->lp[0][0]);
 }
 
 /* Execute the sorted queue, skipping redundant state changes. */
@@ -913,20 +1124,22 @@ static void hol__execute(hol_render *r, const hol_frame_desc *f, const float vp[
                 cur_mask = it->mask;
                 st->state_changes++;
             }
-            r->gl.UniformMatrix4fv(r->u_model, 1, GL_FALSE, it->model);
+            r->gl.UniformMatrix4fv(r->pg->u_model, 1, GL_FALSE, it->model);
+            if (f->lighting)
+                hol__item_uniforms(r, it);
             if (r->view.wedges) {
-                r->gl.Uniform1i(r->u_wmode, it->branch > 0);
-                r->gl.Uniform4f(r->u_wedge, it->wedge[0], it->wedge[1], it->wedge[2],
+                r->gl.Uniform1i(r->pg->u_wmode, it->branch > 0);
+                r->gl.Uniform4f(r->pg->u_wedge, it->wedge[0], it->wedge[1], it->wedge[2],
                                 it->wedge[3]);
             }
             if (ids) {
                 int id = it->branch + 1;
-                r->gl.Uniform4f(r->u_id, (float)(id & 255) / 255.0f, (float)(id >> 8) / 255.0f,
+                r->gl.Uniform4f(r->pg->u_id, (float)(id & 255) / 255.0f, (float)(id >> 8) / 255.0f,
                                 0, 1);
             }
             st->branches++;
         } else if (cur_pass == HOL__PASS_HAND) {
-            r->gl.UniformMatrix4fv(r->u_model, 1, GL_FALSE, it->model);
+            r->gl.UniformMatrix4fv(r->pg->u_model, 1, GL_FALSE, it->model);
         }
         if (it->dyn != cur_vao) {
             cur_vao = it->dyn;

@@ -36,6 +36,15 @@
  * - ID mode renders the same queue but writes, for floor pixels, the index
  *   + 1 of the branch drawn there and 0 elsewhere (props, trees, sky): the
  *   tile under every pixel, as the portals decided it.
+ * - Lighting (f->lighting, docs/rendering.md#lighting): day draws exactly
+ *   the picture without lights. At dusk and night every tile fragment gets
+ *   its point on the hyperboloid (render/hol_light.h: the tile's frame in
+ *   the user's tile, the Klein map of the square), up to 4 lanterns chosen
+ *   per tile on the CPU light it by the true distance in H^2 x E, and fog
+ *   follows the true distance from the eye; the room's own meshes get the
+ *   sky's ambient light and fog by room distance. A lantern tile shows a
+ *   lantern (its glass drawn unlit). HOL_RENDER_LIGHT_ONLY (tests) writes a
+ *   tile fragment as (the lanterns' sum, the fog factor, 0).
  * - World content: with desc.world the tiles' content (biome, objects,
  *   creeks, logs, trees) comes from hol_world_get; without it, a plain
  *   biome-tinted floor from hol_tile_hash.
@@ -97,15 +106,23 @@ enum {
                                      (glFinish), so out_stats' times include
                                      the GPU's: benches and --frames timings
                                      only, never in a frame loop */
-    HOL_RENDER_HUD_TEXT = 1024    /* the HUD text, with or without the minimap
+    HOL_RENDER_HUD_TEXT = 1024,   /* the HUD text, with or without the minimap
                                      (MINIMAP implies it): a map that is off
                                      never takes the objective, steps, time,
                                      result or prompt with it */
+    HOL_RENDER_LIGHT_ONLY = 4096  /* tests, at dusk and night: a tile's
+                                     pixel is (lanterns' sum, fog factor, 0)
+                                     (docs/rendering.md#lighting) */
 };
 
 #define HOL_RENDER_MAX_OBJECTIVES 8
 #define HOL_RENDER_HUD_LINES 6
 #define HOL_RENDER_MAX_MARKS 2
+/* Lanterns a frame may name (a level's 8 placed, one per objective). */
+#define HOL_RENDER_MAX_LANTERNS 16
+
+/* hol_frame_desc.lighting (the same numbers as core's hol_app_lighting). */
+enum { HOL_RENDER_DAY = 0, HOL_RENDER_DUSK = 1, HOL_RENDER_NIGHT = 2 };
 
 /* Game object kinds (hol_frame_desc.object_kinds). */
 enum {
@@ -171,6 +188,13 @@ typedef struct hol_frame_desc {
      * eye's viewport here; the frame clears and draws only its own
      * cam.width x cam.height rectangle (scissor). */
     int vp_x, vp_y;
+    /* The sky and its lights (docs/rendering.md#lighting): lighting 0 day
+     * (the picture without lights, exactly as before), 1 dusk, 2 night
+     * (hol_app_lighting); lanterns: tiles with a lantern over their centre
+     * (lit at dusk and night). */
+    int lighting;
+    int nlanterns;
+    hol_tile lanterns[HOL_RENDER_MAX_LANTERNS];
 } hol_frame_desc;
 
 #define HOL_RENDER_FADE_RGB {56, 117, 61}

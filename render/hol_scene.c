@@ -395,11 +395,30 @@ static void hol__scale_ground(hol_mesh *out, uint32_t v0, float m)
     }
 }
 
+/* A lantern: a dark post 18 cm beside the centre, an arm, the glass over
+ * the centre at the light's height (render/hol_light.h: 1.3 m). */
+static void hol__lantern(hol_mesh *out)
+{
+    static const uint8_t iron[3] = {40, 36, 34}, glass[3] = {255, 214, 140};
+    const float px = -0.18f, top = 1.42f;
+    float lo[3] = {px - 0.02f, 0, -0.02f}, hi[3] = {px + 0.02f, top, 0.02f};
+    hol_mesh_box(out, lo, hi, iron);
+    float alo[3] = {px, top - 0.03f, -0.012f}, ahi[3] = {0.012f, top, 0.012f};
+    hol_mesh_box(out, alo, ahi, iron);
+    uint32_t g0 = out->nv;
+    float c[3] = {0, 1.3f, 0};
+    hol_mesh_blob(out, c, 0.07f, 0.10f, 0.07f, glass);
+    for (uint32_t i = g0; i < out->nv; i++)
+        out->v[i].rgba[3] = HOL_MESH_GLOW;
+}
+
 void hol_scene_tile(const hol_scene *s, hol_mesh *out, hol_tile t,
                     struct hol_world *world, int bare, int pole, int kind, double cell_m)
 {
     const float m = cell_m > 0 ? (float)cell_m : 1.0f;
     const uint32_t v0 = out->nv;
+    const int lantern = (kind & HOL_SCENE_LANTERN) != 0;
+    kind &= 0xff;
     uint64_t h = hol_tile_hash(t);
     hol_tile_content c;
     memset(&c, 0, sizeof c);
@@ -505,4 +524,6 @@ void hol_scene_tile(const hol_scene *s, hol_mesh *out, hol_tile t,
         hol_place q = {0.3f, 0, 0.3f, 0, 1};
         hol__put_tinted(out, &s->tpl[HOL__T_POLE], q, m, pc[pole & 3]);
     }
+    if (lantern)
+        hol__lantern(out);
 }

@@ -42,7 +42,12 @@ void hol_scene_room(const hol_scene *s, hol_mesh *out, const hol_room *user,
 /* The mesh of tile t in its own frame; bare: the ground only. pole >= 0
  * adds a tall guide pole of colour pole (objective index). Game objects
  * are drawn as the app says, not from the world's content: kind is a
- * HOL_RENDER_OBJ_* (0: none) drawn at the tile's centre. */
+ * HOL_RENDER_OBJ_* (0: none) drawn at the tile's centre, or'd with
+ * HOL_SCENE_LANTERN for a lantern over the centre (HOL_LIGHT_HEIGHT_M) on
+ * a post beside it; the lantern's glass has alpha HOL_MESH_GLOW (the
+ * shader draws it unlit, glowing). */
+#define HOL_SCENE_LANTERN 0x100
+#define HOL_MESH_GLOW 100
 void hol_scene_tile(const hol_scene *s, hol_mesh *out, hol_tile t,
                     struct hol_world *world, int bare, int pole, int kind, double cell_m);
 

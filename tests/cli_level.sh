@@ -173,7 +173,7 @@ chest Sf'
 refused "placed twice" 3 "Nf is already placed on line 2" 'mode explore
 place rock Nf
 place grass Nf'
-refused "place a tree" 2 "place 'tree' is not clearing, grass, flowers, rock, mushroom or pond" 'mode explore
+refused "place a tree" 2 "place 'tree' is not clearing, grass, flowers, rock, mushroom, pond or lantern" 'mode explore
 place tree Nf'
 refused "place bad address" 2 "'Nx' is not a canonical address" 'mode explore
 place rock Nx'

@@ -293,6 +293,46 @@ static void test_keys_level(void **state)
     hol_app_destroy(app);
 }
 
+/* The level's sky and lanterns reach the view (so every platform's
+ * renderer gets them): the placed lanterns, then with the cue lantern one
+ * on each game object drawn; a collected key's lantern goes with it. */
+static void test_lighting_in_view(void **state)
+{
+    (void)state;
+    hol_app *app = make_app();
+    hol_app_level L;
+    memset(&L, 0, sizeof L);
+    L.mode = HOL_APP_KEYS;
+    L.seed = 3;
+    L.keys[0] = tile("N");
+    L.nkeys = 1;
+    L.chest = tile("Sf");
+    L.cues = HOL_CUE_ALL;
+    L.lighting = HOL_LIGHT_NIGHT;
+    L.lanterns[0] = tile("Wr");
+    L.nlanterns = 1;
+    assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    const hol_app_view *v = hol_app_get_view(app);
+    assert_int_equal(v->lighting, HOL_LIGHT_NIGHT);
+    assert_int_equal(v->nlanterns, 1); /* no cue lantern: the placed one */
+    L.cues = HOL_CUE_ALL | HOL_CUE_LANTERN;
+    assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    assert_int_equal(v->nlanterns, 3);
+    assert_true(hol_tile_eq(v->lanterns[0], tile("Wr")));
+    assert_true(hol_tile_eq(v->lanterns[1], tile("N")));
+    assert_true(hol_tile_eq(v->lanterns[2], tile("Sf")));
+    double t = 0;
+    static const uint8_t north[1] = {HOL_DIR_N};
+    assert_int_equal(play_walk(app, north, 1, &t), -1); /* not done: the chest */
+    assert_int_equal(v->hud.keys_held, 1);
+    assert_int_equal(v->nlanterns, 2); /* the key's lantern is gone */
+    assert_true(hol_tile_eq(v->lanterns[1], tile("Sf")));
+    L.lighting = HOL_LIGHT_DAY;
+    assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    assert_int_equal(v->lighting, HOL_LIGHT_DAY);
+    hol_app_destroy(app);
+}
+
 /* Every objective stands on a free tile holding its game object, whatever
  * the seed would have put there (rock, log, creek, pond): the app makes the
  * objective tiles clearings before generation. Over 40 seeds and tiles at
@@ -1459,6 +1499,7 @@ int main(void)
         cmocka_unit_test(test_start_where_the_head_stands),
         cmocka_unit_test(test_path_when_strayed),
         cmocka_unit_test(test_keys_level),
+        cmocka_unit_test(test_lighting_in_view),
         cmocka_unit_test(test_objectives_on_free_tiles),
         cmocka_unit_test(test_tutorial),
         cmocka_unit_test(test_time_limit),

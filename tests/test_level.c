@@ -88,6 +88,68 @@ static void test_other_keys(void **state)
     assert_int_equal(L.places[1].object, HOL_OBJ_NONE);
 }
 
+/* lighting and lanterns (issue 27): the sky line, placed lanterns (a
+ * repeatable line, one lantern a tile, a lantern may share a tile with an
+ * objective or a placement) and the cue lantern, which the default cues
+ * leave off. */
+static void test_lighting_lines(void **state)
+{
+    (void)state;
+    hol_app_level L;
+    char err[256] = "";
+    assert_int_equal(parse("mode explore\n", &L, err), 0);
+    assert_int_equal(L.lighting, HOL_LIGHT_DAY);
+    assert_int_equal(L.nlanterns, 0);
+    assert_false(L.cues & HOL_CUE_LANTERN);
+    assert_int_equal(parse("mode flag\nflag Wrf\nlighting night\nplace lantern Wrf\n"
+                           "place rock Nf\nplace lantern Nf\nplace lantern O\ncues lantern poles\n",
+                           &L, err), 0);
+    assert_int_equal(L.lighting, HOL_LIGHT_NIGHT);
+    assert_int_equal(L.nlanterns, 3);
+    assert_int_equal(L.nplaces, 1); /* the rock; lanterns are not content */
+    hol_tile t;
+    assert_int_equal(hol_tile_parse("Nf", -1, &t), HOL_OK);
+    assert_true(hol_tile_eq(L.lanterns[1], t));
+    assert_int_equal(L.cues, HOL_CUE_LANTERN | HOL_CUE_POLES);
+    assert_int_equal(parse("mode explore\nlighting dusk\ncues hot-cold path poles arrow lantern\n",
+                           &L, err), 0);
+    assert_int_equal(L.lighting, HOL_LIGHT_DUSK);
+    assert_int_equal(L.cues, HOL_CUE_ALL | HOL_CUE_LANTERN);
+    /* in {4,6} the addresses are {4,6}'s */
+    assert_int_equal(parse("tiling 4 6\nmode explore\nplace lantern Nrr\n", &L, err), 0);
+    assert_int_equal(hol_tile_q(L.lanterns[0]), 6);
+    static const struct {
+        const char *text, *want;
+        hol_err code;
+    } bad[] = {
+        {"mode explore\nlighting noon\n", "line 2: lighting 'noon' is not day, dusk or night",
+         HOL_EPARSE},
+        {"mode explore\nlighting\n", "line 2: 'lighting' needs a value", HOL_EPARSE},
+        {"mode explore\nlighting day night\n", "line 2: unknown key or wrong value count",
+         HOL_EPARSE},
+        {"mode explore\nplace lantern Nx\n", "line 2: 'Nx' is not a canonical address",
+         HOL_EPARSE},
+        {"mode explore\nplace lantern N\nplace lantern N\n",
+         "line 3: a lantern on N is already placed on line 2", HOL_EARG},
+        {"mode explore\ncues lantern beacon\n", "line 2: cue 'beacon' is not", HOL_EPARSE},
+        {"mode explore\nplace lantern N\nplace lantern E\nplace lantern S\nplace lantern W\n"
+         "place lantern Nf\nplace lantern Ef\nplace lantern Sf\nplace lantern Wf\n"
+         "place lantern Nl\n",
+         "line 10: more than 8 lanterns", HOL_ENOMEM},
+    };
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        hol_level_err e;
+        assert_int_equal(hol_level_parse(bad[i].text, strlen(bad[i].text), &L, &e), bad[i].code);
+        hol_level_err_format(&e, 1, err, sizeof err);
+        if (strncmp(err, bad[i].want, strlen(bad[i].want)))
+            fail_msg("case %zu: got '%s', want '%s...'", i, err, bad[i].want);
+    }
+    /* a study's set line */
+    hol_level_err e;
+    assert_int_equal(hol_level_line_check("lighting night", 14, &e), HOL_OK);
+    assert_int_equal(hol_level_line_check("place lantern Nrr", 17, &e), HOL_OK);
+}
+
 static void test_bad_lines(void **state)
 {
     (void)state;
@@ -506,6 +568,7 @@ int main(void)
         cmocka_unit_test(test_distances),
         cmocka_unit_test(test_other_keys),
         cmocka_unit_test(test_bad_lines),
+        cmocka_unit_test(test_lighting_lines),
         cmocka_unit_test(test_typed_errors),
         cmocka_unit_test(test_named_level),
         cmocka_unit_test(test_campaign),

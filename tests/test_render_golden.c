@@ -49,8 +49,14 @@ typedef struct golden_view {
      * 3 x 3, 1 m. Each tiling gets a world of its own (same seed). */
     int q, cols, rows;
     double cell;
+    /* dusk and night (docs/rendering.md#lighting): the sky, and lanterns
+     * on the tiles that these room walks from the user's state reach */
+    int lighting;
+    const char *lanterns[4];
 } golden_view;
 
+/* the day views leave lighting and lanterns out (zero: day, none) */
+#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
 static const golden_view views[] = {
     {"centre_north", "-", {1.5, 1.6, 1.5}, 0, -30, 90, 0, 0, 0, 0, 0},
     {"centre_down", "-", {1.45, 1.6, 1.55}, 20, -89, 100, 0, 0, 0, 0, 0},
@@ -77,6 +83,17 @@ static const golden_view views[] = {
      HOL_RENDER_MINIMAP | HOL_RENDER_MINIMAP_HAND, 4, 0, 0, 0},
     {"room5x5", "NW", {1.3, 1.6, 1.2}, -135, -25, 100, HOL_RENDER_MINIMAP, 5, 5, 5, 0},
     {"cell07_q6_room4x4", "E", {2.2, 1.6, 1.6}, 100, -30, 90, HOL_RENDER_MINIMAP, 6, 4, 4, 0.7},
+    /* dusk and night with lanterns: on the user's tile, and on the two
+     * tiles of the middle cell (reached west-then-south and south-then-
+     * west: two tiles in {4,5} and {4,6}, holonomy), one more south */
+    {"q5_dusk", "NE", {2.4, 1.6, 0.6}, 135, -25, 90, 0, 5, 0, 0, 0, HOL_RENDER_DUSK,
+     {"-", "WS", "SW", "SSW"}},
+    {"q5_night", "NE", {2.4, 1.6, 0.6}, 135, -25, 90, 0, 5, 0, 0, 0, HOL_RENDER_NIGHT,
+     {"-", "WS", "SW", "SSW"}},
+    {"q6_dusk", "NE", {2.4, 1.6, 0.6}, 135, -25, 90, 0, 6, 0, 0, 0, HOL_RENDER_DUSK,
+     {"-", "WS", "SW", "SSW"}},
+    {"q6_night", "NE", {2.4, 1.6, 0.6}, 135, -25, 90, 0, 6, 0, 0, 0, HOL_RENDER_NIGHT,
+     {"-", "WS", "SW", "SSW"}},
 };
 
 static render_fixture fx;
@@ -126,6 +143,13 @@ static void render_with(hol_render *rr, const golden_view *g, uint8_t *rgba)
     hol_render_set_world(rr, world);
     for (const char *p = g->walk; *p && *p != '-'; p++)
         assert_int_equal(hol_room_step(&f.user, hol_dir_from_char(*p)), HOL_OK);
+    f.lighting = g->lighting;
+    for (int k = 0; k < 4 && g->lanterns[k]; k++) {
+        hol_room u = f.user;
+        for (const char *p = g->lanterns[k]; *p && *p != '-'; p++)
+            assert_int_equal(hol_room_step(&u, hol_dir_from_char(*p)), HOL_OK);
+        f.lanterns[f.nlanterns++] = u.tile;
+    }
     memcpy(f.cam.eye, g->eye, sizeof f.cam.eye);
     f.cam.yaw_deg = g->yaw;
     f.cam.pitch_deg = g->pitch;

@@ -580,6 +580,10 @@ static void test_visible_cues(void **state)
     assert_int_equal(hol_session_cues_visible(&v), HOL_CUE_ALL);
     v.map.place = HOL_MINIMAP_OFF; /* in force, not shown */
     assert_int_equal(hol_session_cues_visible(&v), HOL_CUE_POLES);
+    v.map.cues = HOL_CUE_POLES | HOL_CUE_LANTERN; /* lanterns: lit at dusk and night */
+    assert_int_equal(hol_session_cues_visible(&v), HOL_CUE_POLES);
+    v.lighting = HOL_LIGHT_DUSK;
+    assert_int_equal(hol_session_cues_visible(&v), HOL_CUE_POLES | HOL_CUE_LANTERN);
     v.map.cues = HOL_CUE_PATH;
     v.map.place = HOL_MINIMAP_HAND;
     assert_int_equal(hol_session_cues_visible(&v), HOL_CUE_PATH);

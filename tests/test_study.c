@@ -399,6 +399,30 @@ static void test_geometry_conditions(void **state)
     assert_string_equal(msg, "line 4: set: room needs C R with C and R from 3 to 5 (cells), not '3 6'");
 }
 
+/* Light per condition (issue 27): `set lighting` and `set cues ...
+ * lantern` make the conditions; the file's own lighting line is replaced. */
+static void test_lighting_conditions(void **state)
+{
+    (void)state;
+    char msg[256];
+    int in_study = -1;
+    static hol_level L;
+    assert_int_equal(parse("study sky\ncounterbalance latin\n"
+                           "condition lanterns\nlevel a.lvl\nset lighting night\n"
+                           "set cues poles lantern\n"
+                           "condition day\nlevel a.lvl\nset lighting day\n", msg), 0);
+    const char *file = "mode flag\nflag Nr\nlighting dusk\nplace lantern E\n";
+    assert_int_equal(make(0, 1, file, &L, msg, &in_study), 0);
+    assert_int_equal(L.lvl.lighting, HOL_LIGHT_NIGHT);
+    assert_int_equal(L.lvl.cues, HOL_CUE_POLES | HOL_CUE_LANTERN);
+    assert_int_equal(L.lvl.nlanterns, 1);
+    assert_int_equal(make(1, 2, file, &L, msg, &in_study), 0);
+    assert_int_equal(L.lvl.lighting, HOL_LIGHT_DAY);
+    assert_int_equal(L.lvl.cues, HOL_CUE_ALL);
+    assert_int_equal(parse("study sky\ncondition a\nset lighting noon\n", msg), 1);
+    assert_string_equal(msg, "line 3: set: lighting 'noon' is not day, dusk or night");
+}
+
 static void test_levels(void **state)
 {
     (void)state;
@@ -487,6 +511,7 @@ int main(void)
         cmocka_unit_test(test_participants), cmocka_unit_test(test_grammar),
         cmocka_unit_test(test_refusals),   cmocka_unit_test(test_levels),
         cmocka_unit_test(test_geometry_conditions),
+        cmocka_unit_test(test_lighting_conditions),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

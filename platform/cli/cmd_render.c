@@ -31,7 +31,8 @@ static const char *const render_usage =
     "                       [--target ADDR] [--orient X,Y,Z,W --tan L,R,D,U]\n"
     "                       [--gl osmesa|egl] [--stereo IPD] [--window]\n"
     "                       [--keys SCRIPT] [--tiling 4,Q] [--room CxR]\n"
-    "                       [--cell M]\n"
+    "                       [--cell M] [--lighting day|dusk|night]\n"
+    "                       [--lantern ADDR]\n"
     "\n"
     "Render what the user sees and write a PNG: headless (OSMesa, or EGL\n"
     "surfaceless), or live in a window (--window).\n"
@@ -82,6 +83,11 @@ static const char *const render_usage =
     "                  (OpenGL ES 3 on EGL's surfaceless platform)\n"
     "  --target ADDR   an objective tile (repeatable, up to 8): guide pole,\n"
     "                  minimap marker, hot-cold colours\n"
+    "  --lighting SKY  day (default: no lights), dusk or night: lanterns light\n"
+    "                  the forest by the true distance, fog by the true\n"
+    "                  distance from the eye\n"
+    "  --lantern ADDR  a lantern over that tile's centre (repeatable, up to\n"
+    "                  16); lit at dusk and night\n"
     "  --orient X,Y,Z,W with --tan L,R,D,U: the headset's form of the eye (as\n"
     "                  'holonomy xr' prints it): orientation quaternion (view\n"
     "                  to room; roll too) and the tangents of the field of\n"
@@ -317,6 +323,9 @@ enum { RENDER_OSMESA, RENDER_EGL, RENDER_WINDOW };
 typedef struct render_opts {
     const char *walk, *eye, *out, *ids, *keys, *hand, *orient, *tan;
     const char *target_s[HOL_RENDER_MAX_OBJECTIVES]; /* resolved in the tiling */
+    const char *lantern_s[HOL_RENDER_MAX_LANTERNS];
+    int nlanterns, lighting;
+    hol_tile lanterns[HOL_RENDER_MAX_LANTERNS];
     double yaw, pitch, fov, ipd;
     long w, h, frames;
     int frames_set, stats, flags, ntargets, gl;
@@ -329,7 +338,7 @@ typedef struct render_opts {
 static const char *const render_value_opts[] = {
     "--walk", "--eye", "--hand", "--orient", "--tan", "--yaw", "--pitch", "--size", "--out",
     "--tile-ids", "--fov", "--frames", "--seed", "--target", "--gl", "--stereo", "--keys",
-    "--cell", "--tiling", "--room", NULL};
+    "--cell", "--tiling", "--room", "--lighting", "--lantern", NULL};
 
 /* --size WxH: 0 ok, 1 bad. */
 static int parse_size(const char *val, long *w, long *h)
@@ -404,6 +413,22 @@ static int parse_value_opt(const char *cmd, render_opts *o, const char *a, const
             return CLI_EXIT_USAGE;
         }
         o->target_s[o->ntargets++] = val;
+    } else if (!strcmp(a, "--lantern")) {
+        if (o->nlanterns >= HOL_RENDER_MAX_LANTERNS) {
+            cli_error(cmd, 0, "more than %d --lantern options", HOL_RENDER_MAX_LANTERNS);
+            return CLI_EXIT_USAGE;
+        }
+        o->lantern_s[o->nlanterns++] = val;
+    } else if (!strcmp(a, "--lighting")) {
+        static const char *const skies[3] = {"day", "dusk", "night"};
+        o->lighting = -1;
+        for (int k = 0; k < 3; k++)
+            if (!strcmp(val, skies[k]))
+                o->lighting = k;
+        if (o->lighting < 0) {
+            cli_error(cmd, 0, "--lighting '%.40s' is not day, dusk or night", val);
+            return CLI_EXIT_USAGE;
+        }
     } else if (!strcmp(a, "--gl")) {
         if (strcmp(val, "egl") && strcmp(val, "osmesa")) {
             cli_error(cmd, 0, "--gl '%.40s' is not osmesa or egl", val);
@@ -485,7 +510,7 @@ static int parse_opts(const char *cmd, int argc, char **argv, render_opts *o)
     o->cell_m = 1.0;
     static const char *const flags[] = {"--hud", "--window", "--stats", "--euclidean",
                                         "--bare", NULL};
-    static const char *const repeatable[] = {"--target", NULL};
+    static const char *const repeatable[] = {"--target", "--lantern", NULL};
     cli_opts p;
     const char *a, *val;
     int r;
@@ -514,6 +539,11 @@ static int parse_opts(const char *cmd, int argc, char **argv, render_opts *o)
     for (int k = 0; k < o->ntargets; k++)
         if (hol_tile_resolve_q(o->q ? o->q : 5, o->target_s[k], -1, &o->targets[k])) {
             cli_error(cmd, 0, "--target '%.40s' is not a tile address", o->target_s[k]);
+            return CLI_EXIT_USAGE;
+        }
+    for (int k = 0; k < o->nlanterns; k++)
+        if (hol_tile_resolve_q(o->q ? o->q : 5, o->lantern_s[k], -1, &o->lanterns[k])) {
+            cli_error(cmd, 0, "--lantern '%.40s' is not a tile address", o->lantern_s[k]);
             return CLI_EXIT_USAGE;
         }
     return check_opts(cmd, o);
@@ -611,6 +641,9 @@ static int setup_frame(const char *cmd, const render_opts *o, hol_frame_desc *fd
     fd->nobjectives = o->ntargets;
     memcpy(fd->objectives, o->targets, sizeof o->targets);
     fd->objective_text = o->ntargets ? "reach the guide pole" : NULL;
+    fd->lighting = o->lighting;
+    fd->nlanterns = o->nlanterns;
+    memcpy(fd->lanterns, o->lanterns, sizeof o->lanterns);
     fd->steps_taken = (int)nd;
     return 0;
 }

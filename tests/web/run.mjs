@@ -201,6 +201,26 @@ await check('a bad level file is refused with one line naming its line, and noth
   await p.ctx.close();
 });
 
+await check('a night level with lanterns draws on WebGL 2 (the lit shader compiles, no console error), much darker than the same level at day', async () => {
+  const mean = async (name, text) => {
+    fs.writeFileSync(path.join(testDir, name), text);
+    const p = await openPage('?level=/test/' + name);
+    await p.until(async () => (await p.state(S.FRAMES)) > 5, 'frames');
+    const shot = path.join(OUT, name + '.png');
+    await p.page.screenshot({ path: shot });
+    assert(!p.errors.length, 'errors: ' + p.errors.join('; '));
+    await p.ctx.close();
+    const img = decodePNG(fs.readFileSync(shot));
+    const bpp = img.rgba.length / (img.w * img.h);
+    let sum = 0;
+    for (let i = 0; i < img.rgba.length; i += bpp) sum += img.rgba[i] + img.rgba[i + 1] + img.rgba[i + 2];
+    return sum / (3 * img.w * img.h);
+  };
+  const day = await mean('day.lvl', 'mode explore\nseed 3\nminimap off\n');
+  const night = await mean('night.lvl', 'mode explore\nseed 3\nminimap off\nlighting night\nplace lantern O\nplace lantern N\n');
+  assert(night < 0.6 * day && night > 2, `mean brightness: day ${day.toFixed(1)}, night ${night.toFixed(1)}`);
+});
+
 await check('snap turn (?snap=90): a tap of Left turns the look by 90 degrees; ?snap=7 is refused', async () => {
   const p = await openPage('?mode=explore&seed=2&snap=90');
   await p.until(async () => (await p.state(S.FRAMES)) > 5, 'frames');

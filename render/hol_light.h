@@ -1,0 +1,95 @@
+/* hol_light.h - lights in the world's geometry (issue 27): where every
+ * drawn point lies on the hyperboloid, which lanterns light each drawn
+ * tile, and the falloff. Pure CPU data prep for the renderer's shader (no
+ * GL); the tests model the same formulas independently.
+ *
+ * Contract
+ * - The frame near the user: the user's tile U with +y room north (the
+ *   hyperboloid frame of hol_hyper_frame(U, user.orient, .)); every point
+ *   and light of a frame is in it, so the numbers a frame uses stay small
+ *   near the user (lights farther than the radius are never used).
+ * - The map of a tile: a point of a tile mesh at (x, z) metres in the
+ *   tile's own frame (the square [-M/2, M/2]^2, heading -z; M the cell
+ *   side) has Klein coordinates K = (x, -z) * a / (M/2) in the tile's
+ *   hyperbolic frame (+y its heading), a = tanh(r_in) the Klein radius of
+ *   an edge's midpoint (r_in the inradius: cosh r_in = cos(pi/Q)/sin(pi/4)).
+ *   The Klein model keeps geodesics straight, so the mesh's square is the
+ *   true tile and neighbouring tiles meet exactly on their shared edge. Its
+ *   hyperboloid point is (K, 1)/sqrt(1 - |K|^2), then the tile's frame
+ *   (hol_light_tile) takes it to the user's frame. In the flat {4,4} the
+ *   point is (x/M, -z/M, 1) (tile sides) and frames are rigid motions.
+ * - Distances: the floor distance of two hyperboloid points is
+ *   2 asinh(|p - q|_L / 2) (|.|_L the Lorentz norm of the chord: exact and
+ *   without acosh's cancellation near 0), |p - q| in {4,4}; in metres times
+ *   metres_per_unit = M / e (e the centre distance of neighbours,
+ *   hol_hyper_edge_q: a step is one cell). The true distance in H^2 x E is
+ *   sqrt(floor^2 + dh^2), dh the height difference in metres.
+ * - Falloff (hol_light_falloff): F(d) = W(d) (1 - B + B s) / (1 + (d/D0)^2)
+ *   with W(d) = (1 - (d/R)^2)^2 for d < R and 0 beyond (R =
+ *   HOL_LIGHT_RADIUS_M: a light reaches no farther, which keeps the choice
+ *   per tile exact), s = x / sinh(x) for the floor distance x in curvature
+ *   units (1 in {4,4}): the physical spreading of H^2 (a circle's length
+ *   grows as sinh) blended by B = HOL_LIGHT_PHYS into the softened inverse
+ *   square of the ray-marchers' default, so the forest stays readable.
+ * - A surface at height h with normal n lit by a lantern at height L gets
+ *   F(d) (0.3 + 0.7 max(n_y, 0) max(L - h, 0) / d); the shader sums the
+ *   tile's lights (render/hol_render.c). It takes x and sinh x from the
+ *   chord c (x = 2 asinh(c/2), sinh x = c sqrt(1 + c^2/4)) and the window
+ *   and inverse square from d^2: the same numbers, fewer transcendentals.
+ * - A lantern hangs HOL_LIGHT_HEIGHT_M over its tile's centre.
+ * - Which lights: hol_light_tile gives a tile up to HOL_LIGHT_PER_TILE
+ *   lanterns, the nearest to its centre among those whose floor distance to
+ *   the centre is under R plus the tile's circumradius (so every lantern
+ *   that reaches some point of the tile is chosen while at most 4 do).
+ */
+#ifndef HOL_LIGHT_H
+#define HOL_LIGHT_H
+
+#include "../core/hol_err.h"
+#include "../core/hol_room.h"
+#include "hol_render.h"
+
+#define HOL_LIGHT_PER_TILE 4
+#define HOL_LIGHT_RADIUS_M 3.0
+#define HOL_LIGHT_HEIGHT_M 1.3
+#define HOL_LIGHT_D0_M 1.0
+#define HOL_LIGHT_PHYS 0.5
+
+typedef struct hol_light_frame {
+    int flat;                 /* {4,4} */
+    int q;
+    hol_room user;
+    double cell_m;
+    double klein;             /* Klein coordinate per metre: a / (M/2);
+                                 {4,4}: 1/M */
+    double metres_per_unit;   /* M / e; {4,4}: M */
+    double circum_m;          /* a tile's circumradius in metres */
+    double eye[3];            /* the eye's point (user frame) */
+    double eye_h;             /* its height, metres */
+    int n;                    /* lanterns placed (within reach of tiles) */
+    double pos[HOL_RENDER_MAX_LANTERNS][3]; /* their points, user frame */
+} hol_light_frame;
+
+/* The frame's lights from f (the user, the cell, the eye, the lanterns).
+ * A lantern whose tile is too far from the user's for a frame
+ * (hol_hyper_frame fails) is dropped. HOL_EARG: a cell outside 0.5..1.5. */
+hol_err hol_light_prepare(const hol_frame_desc *f, hol_light_frame *out);
+
+/* Tile t's frame in the user's frame (row-major 3x3) and its lights
+ * (indices into lf->pos, nearest first); returns how many (0..4), or -1
+ * when t is too far for a frame. */
+int hol_light_tile(const hol_light_frame *lf, hol_tile t, double out_frame[9],
+                   int out_idx[HOL_LIGHT_PER_TILE]);
+
+/* The point of the tile map: (x, z) metres in a tile's own frame to its
+ * hyperboloid point in that tile's frame (see the contract). */
+void hol_light_point(const hol_light_frame *lf, double x, double z, double out_p[3]);
+
+/* Floor distance of two points in metres. */
+double hol_light_floor_m(const hol_light_frame *lf, const double p[3], const double l[3]);
+
+/* F(d): d the true distance in metres, x the floor distance in curvature
+ * units (ignored in {4,4}: pass 0). */
+double hol_light_falloff(double d_m, double x_units, int flat);
+
+#endif

@@ -1,0 +1,545 @@
+/* test_render_light.c - dusk and night (issue 27): lanterns light each
+ * floor pixel by the true distance in H^2 x E, read back from OSMesa and
+ * compared with a CPU model written here.
+ *
+ * The model shares no geometry with the renderer: a pixel's floor point
+ * comes from the test's own camera; its hyperboloid point from the
+ * independent model of tests/model.h (the frame of the cell the sight line
+ * reaches, walked edge by edge from the user's cell, then the stated Klein
+ * map of the point in that cell); a lantern's point from the same model
+ * walked along the room steps that reach its tile. Only the falloff and
+ * the map are the documented formulas (docs/rendering.md#lighting), written
+ * again here. The renderer draws with HOL_RENDER_LIGHT_ONLY: red the
+ * lanterns' sum, green the fog factor.
+ *
+ * - test_light_matches_model: every floor pixel of views in {4,5}, {4,6},
+ *   {4,8}, a 5 x 5 room and 0.7 m cells within 3 of 255 of the model.
+ * - test_flat_equals_euclid: in {4,4} the same pixels equal flat-space
+ *   lighting (room metres, Euclidean distance, the same falloff).
+ * - test_light_continuous_across_edges: pixel pairs on both sides of a
+ *   cell edge (one branch the other plus the step across it: neighbours in
+ *   the world) step by no more than the light's gradient either side of
+ *   the edge (within 3 of 255); no model involved.
+ * - test_lantern_through_portal: a lantern's light falls on other tiles
+ *   seen through portals (two or more cells away), as the model says.
+ * - test_day_unchanged_without_lighting: lanterns at day change nothing.
+ * - test_app_frame_carries_lights: the app's view (play, replay, xr, the
+ *   web) hands the level's sky and lanterns to the renderer.
+ */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "../core/hol_room.h"
+#include "../core/hol_tile.h"
+#include "../core/hol_world.h"
+#pragma GCC diagnostic ignored "-Wunused-function" /* model.h helpers not used here */
+#include "model.h"
+#include "render_fixture.h"
+#include "../render/hol_app_frame.h"
+
+#define W 160
+#define H 120
+#define PI 3.14159265358979323846
+#define TOL 3
+/* the documented constants (render/hol_light.h) */
+#define RADIUS 3.0
+#define HEIGHT 1.3
+#define D0 1.0
+#define PHYS 0.5
+#define FOG_NIGHT 0.15
+#define FOG_DUSK 0.10
+
+typedef struct light_case {
+    const char *walk;
+    double eye[3], yaw, pitch;
+    int q, cols, rows;
+    double cell;
+    const char *lanterns[4]; /* room walks from the user's state */
+    int dusk;
+} light_case;
+
+static const light_case cases[] = {
+    {"-", {1.5, 1.6, 1.5}, 0, -35, 5, 3, 3, 1, {"N", "ES", "W", NULL}, 0},
+    {"-", {1.3, 1.6, 1.7}, 150, -40, 5, 3, 3, 1, {"S", "EN", NULL, NULL}, 1},
+    {"NE", {2.4, 1.6, 0.6}, 135, -30, 5, 3, 3, 1, {"W", "S", "WS", NULL}, 0},
+    {"-", {1.4, 1.6, 1.6}, -60, -30, 6, 3, 3, 1, {"N", "EN", "W", "S"}, 0},
+    {"W", {0.3, 1.6, 1.2}, -100, -35, 8, 3, 3, 1, {"E", "N", NULL, NULL}, 0},
+    {"-", {2.2, 1.6, 2.4}, 20, -30, 5, 5, 5, 1, {"N", "NN", "WW", "EN"}, 0},
+    {"-", {1.0, 1.6, 1.1}, 200, -35, 6, 3, 3, 0.7, {"S", "E", "SW", NULL}, 1},
+};
+
+static render_fixture fx;
+static struct hol_world *qworlds[9];
+
+static int setup(void **state)
+{
+    (void)state;
+    return render_fixture_make(&fx, W, H, 3);
+}
+
+static int teardown(void **state)
+{
+    (void)state;
+    for (int q = 0; q < 9; q++)
+        hol_world_destroy(qworlds[q]);
+    render_fixture_destroy(&fx);
+    return 0;
+}
+
+static struct hol_world *world_of(int q)
+{
+    if (q == 5)
+        return fx.world;
+    if (!qworlds[q]) {
+        hol_world_desc wd;
+        memset(&wd, 0, sizeof wd);
+        wd.seed = 3;
+        wd.capacity = 1u << 14;
+        wd.tiling_q = q;
+        assert_int_equal(hol_world_make(&wd, &qworlds[q]), HOL_OK);
+    }
+    return qworlds[q];
+}
+
+static hol_room user_of(const light_case *c)
+{
+    hol_room u;
+    assert_int_equal(hol_room_start_in(c->q, c->cols, c->rows, &u), HOL_OK);
+    for (const char *p = c->walk; *p && *p != '-'; p++)
+        assert_int_equal(hol_room_step(&u, hol_dir_from_char(*p)), HOL_OK);
+    return u;
+}
+
+/* Room direction to the model's quarter turns counter-clockwise from +y
+ * (room north): N 0, W 1, S 2, E 3. */
+static int turns_of(int dir)
+{
+    return dir == HOL_DIR_N ? 0 : dir == HOL_DIR_W ? 1 : dir == HOL_DIR_S ? 2 : 3;
+}
+
+/* The floor point of pixel (px, py) (pixel centres at .5); 0: the sky. */
+static int floor_point(const light_case *c, double px, double py, double out[2])
+{
+    double yaw = c->yaw * PI / 180, pitch = c->pitch * PI / 180;
+    double ty = tan(PI / 4), tx = ty * W / H;
+    double vx = (2 * px / W - 1) * tx, vy = (1 - 2 * py / H) * ty, vz = -1;
+    double y1 = vy * cos(pitch) - vz * sin(pitch);
+    double z1 = vy * sin(pitch) + vz * cos(pitch);
+    double x2 = vx * cos(yaw) + z1 * sin(yaw);
+    double z2 = -vx * sin(yaw) + z1 * cos(yaw);
+    if (y1 >= 0)
+        return 0;
+    double t = -c->eye[1] / y1;
+    out[0] = c->eye[0] + t * x2;
+    out[1] = c->eye[2] + t * z2;
+    return 1;
+}
+
+typedef struct crossing {
+    double t;
+    int dir;
+} crossing;
+
+static int cmp_crossing(const void *a, const void *b)
+{
+    double x = ((const crossing *)a)->t, y = ((const crossing *)b)->t;
+    return x < y ? -1 : x > y;
+}
+
+/* The model's Klein map: offset (dx, dz) metres from a cell's centre, in
+ * a frame whose +y is room north, to the hyperboloid (or the flat plane's
+ * (x, y, 1) in tile sides). */
+static void klein_point(double m, double dx, double dz, double out[3])
+{
+    if (model_q == 4) {
+        out[0] = dx / m, out[1] = -dz / m, out[2] = 1;
+        return;
+    }
+    double a = tanh(model_edge() / 2) / (m / 2);
+    double kx = dx * a, ky = -dz * a, s = 1 / sqrt(1 - kx * kx - ky * ky);
+    out[0] = kx * s, out[1] = ky * s, out[2] = s;
+}
+
+static void apply(model_mat f, const double v[3], double out[3])
+{
+    for (int i = 0; i < 3; i++)
+        out[i] = f.m[3 * i] * v[0] + f.m[3 * i + 1] * v[1] + f.m[3 * i + 2] * v[2];
+}
+
+/* The model point (user frame) of the floor point p; 0 when the sight
+ * line passes within 1e-9 of a vertex or p is off the room. */
+static int model_point(const light_case *c, const double p[2], double out[3])
+{
+    double m = c->cell;
+    if (p[0] <= 0.01 || p[0] >= c->cols * m - 0.01 || p[1] <= 0.01 ||
+        p[1] >= c->rows * m - 0.01)
+        return 0;
+    double ex = c->eye[0], ez = c->eye[2];
+    crossing cs[16];
+    int n = 0;
+    for (int k = 1; k < c->cols; k++)
+        if ((ex < k * m) != (p[0] < k * m))
+            cs[n++] = (crossing){(k * m - ex) / (p[0] - ex), p[0] > ex ? HOL_DIR_E : HOL_DIR_W};
+    for (int k = 1; k < c->rows; k++)
+        if ((ez < k * m) != (p[1] < k * m))
+            cs[n++] = (crossing){(k * m - ez) / (p[1] - ez), p[1] > ez ? HOL_DIR_S : HOL_DIR_N};
+    qsort(cs, (size_t)n, sizeof cs[0], cmp_crossing);
+    for (int i = 0; i + 1 < n; i++)
+        if (cs[i + 1].t - cs[i].t < 1e-9)
+            return 0;
+    model_mat f = model_identity();
+    for (int i = 0; i < n; i++)
+        f = model_step(f, turns_of(cs[i].dir));
+    int col = (int)floor(p[0] / m), row = (int)floor(p[1] / m);
+    double h[3];
+    klein_point(m, p[0] - (col + 0.5) * m, p[1] - (row + 0.5) * m, h);
+    apply(f, h, out);
+    return 1;
+}
+
+/* Floor distance in metres of two model points. */
+static double floor_m(double m, const double a[3], const double b[3])
+{
+    if (model_q == 4)
+        return hypot(a[0] - b[0], a[1] - b[1]) * m;
+    double ip = a[2] * b[2] - a[0] * b[0] - a[1] * b[1];
+    return acosh(ip < 1 ? 1 : ip) * m / model_edge();
+}
+
+/* The fog's distance on the floor: the chord 2 sinh(x/2) of the floor
+ * distance x (its Lorentz norm), in metres; the distance in {4,4}. */
+static double chord_m(double m, const double a[3], const double b[3])
+{
+    if (model_q == 4)
+        return hypot(a[0] - b[0], a[1] - b[1]) * m;
+    double ip = a[2] * b[2] - a[0] * b[0] - a[1] * b[1];
+    return sqrt(ip > 1 ? 2 * (ip - 1) : 0) * m / model_edge();
+}
+
+/* The documented falloff and incidence of a lantern over a floor point:
+ * d true distance (m), x floor distance in curvature units. */
+static double lantern_term(double floor_metres, double x_units)
+{
+    double d = hypot(floor_metres, HEIGHT);
+    if (d >= RADIUS)
+        return 0;
+    double u = d / RADIUS, w = (1 - u * u) * (1 - u * u);
+    double s = model_q == 4 || x_units < 1e-9 ? 1 : x_units / sinh(x_units);
+    double e = d / D0;
+    return w * (1 - PHYS + PHYS * s) / (1 + e * e) * (0.3 + 0.7 * HEIGHT / d);
+}
+
+typedef struct scene {
+    hol_frame_desc f;
+    int n;
+    double lant[4][3];     /* model points */
+    double lroom[4][2];    /* room metres of the cell each walk ends in */
+    double eye[3];
+} scene;
+
+static void make_scene(const light_case *c, scene *s)
+{
+    memset(s, 0, sizeof *s);
+    model_use_tiling(c->q);
+    hol_render_set_world(fx.rnd, world_of(c->q));
+    s->f.user = user_of(c);
+    s->f.cell_m = c->cell;
+    memcpy(s->f.cam.eye, c->eye, sizeof c->eye);
+    s->f.cam.yaw_deg = c->yaw;
+    s->f.cam.pitch_deg = c->pitch;
+    s->f.cam.fovy_deg = 90;
+    s->f.cam.width = W;
+    s->f.cam.height = H;
+    s->f.lighting = c->dusk ? HOL_RENDER_DUSK : HOL_RENDER_NIGHT;
+    for (int i = 0; i < 4 && c->lanterns[i]; i++) {
+        hol_room u = s->f.user;
+        model_mat f = model_identity();
+        for (const char *p = c->lanterns[i]; *p; p++) {
+            int dir = hol_dir_from_char(*p);
+            assert_int_equal(hol_room_step(&u, dir), HOL_OK);
+            f = model_step(f, turns_of(dir));
+        }
+        s->f.lanterns[s->n] = u.tile;
+        s->lant[s->n][0] = f.m[2];
+        s->lant[s->n][1] = f.m[5];
+        s->lant[s->n][2] = f.m[8];
+        s->lroom[s->n][0] = (u.col + 0.5) * c->cell;
+        s->lroom[s->n][1] = (u.row + 0.5) * c->cell;
+        s->n++;
+    }
+    s->f.nlanterns = s->n;
+    int col = (int)floor(c->eye[0] / c->cell), row = (int)floor(c->eye[2] / c->cell);
+    klein_point(c->cell, c->eye[0] - (col + 0.5) * c->cell, c->eye[2] - (row + 0.5) * c->cell,
+                s->eye);
+}
+
+static void render(scene *s, int flags, uint8_t *px)
+{
+    s->f.flags = flags | HOL_RENDER_NO_HUD;
+    assert_int_equal(hol_render_frame(fx.rnd, &s->f, NULL), HOL_OK);
+    hol_render_read_rgba(fx.rnd, W, H, px);
+}
+
+/* The model's (lanterns, fog) at a pixel; 0 when it is not checked. */
+static int model_pixel(const light_case *c, const scene *s, int x, int y, double out[2])
+{
+    double p[2], h[3];
+    if (!floor_point(c, x + 0.5, y + 0.5, p) || !model_point(c, p, h))
+        return 0;
+    double lam = 0;
+    for (int i = 0; i < s->n; i++) {
+        double fm = floor_m(c->cell, h, s->lant[i]);
+        lam += lantern_term(fm, fm * model_edge() / c->cell);
+    }
+    double fe = chord_m(c->cell, h, s->eye), de = hypot(fe, c->eye[1]);
+    double fd = de * (c->dusk ? FOG_DUSK : FOG_NIGHT);
+    out[0] = lam < 1 ? lam : 1;
+    out[1] = exp(-fd * fd);
+    return 1;
+}
+
+static void test_light_matches_model(void **state)
+{
+    (void)state;
+    static uint8_t px[W * H * 4];
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        const light_case *c = &cases[k];
+        scene s;
+        make_scene(c, &s);
+        render(&s, HOL_RENDER_BARE | HOL_RENDER_LIGHT_ONLY, px);
+        int checked = 0, lit = 0, bad = 0;
+        double worst = 0;
+        for (int y = 0; y < H; y++)
+            for (int x = 0; x < W; x++) {
+                double want[2];
+                if (!model_pixel(c, &s, x, y, want))
+                    continue;
+                const uint8_t *p = px + 4 * (y * W + x);
+                double er = fabs(p[0] - 255 * want[0]), eg = fabs(p[1] - 255 * want[1]);
+                worst = fmax(worst, fmax(er, eg));
+                bad += er > TOL || eg > TOL;
+                checked++;
+                lit += want[0] > 0.05;
+            }
+        printf("light case %zu ({4,%d}): %d floor pixels, %d lit, worst %.1f/255, %d off\n", k,
+               c->q, checked, lit, worst, bad);
+        assert_true(checked > W * H / 8);
+        assert_true(lit > 200);
+        assert_int_equal(bad, 0);
+    }
+}
+
+/* {4,4}: flat-space lighting in room metres, no hyperboloid at all. */
+static void test_flat_equals_euclid(void **state)
+{
+    (void)state;
+    static const light_case flat[] = {
+        {"-", {1.5, 1.6, 1.5}, 20, -40, 4, 3, 3, 1, {"N", "ES", "W", NULL}, 0},
+        {"NE", {1.8, 1.6, 0.5}, 150, -35, 4, 3, 3, 0.7, {"W", "S", "WS", NULL}, 1},
+        {"-", {2.3, 1.6, 2.6}, -20, -30, 4, 5, 5, 1, {"N", "NN", "WW", "EN"}, 0},
+    };
+    static uint8_t px[W * H * 4];
+    for (size_t k = 0; k < sizeof flat / sizeof flat[0]; k++) {
+        const light_case *c = &flat[k];
+        scene s;
+        make_scene(c, &s);
+        render(&s, HOL_RENDER_BARE | HOL_RENDER_LIGHT_ONLY, px);
+        int checked = 0, lit = 0, bad = 0;
+        for (int y = 0; y < H; y++)
+            for (int x = 0; x < W; x++) {
+                double p[2], h[3];
+                if (!floor_point(c, x + 0.5, y + 0.5, p) || !model_point(c, p, h))
+                    continue;
+                double lam = 0;
+                for (int i = 0; i < s.n; i++) {
+                    double dx = p[0] - s.lroom[i][0], dz = p[1] - s.lroom[i][1];
+                    lam += lantern_term(hypot(dx, dz), 0);
+                }
+                double de = hypot(hypot(p[0] - c->eye[0], p[1] - c->eye[2]), c->eye[1]);
+                double fd = de * (c->dusk ? FOG_DUSK : FOG_NIGHT);
+                const uint8_t *q = px + 4 * (y * W + x);
+                bad += fabs(q[0] - 255 * fmin(lam, 1)) > TOL ||
+                       fabs(q[1] - 255 * exp(-fd * fd)) > TOL;
+                lit += lam > 0.05;
+                checked++;
+            }
+        printf("flat case %zu: %d floor pixels, %d lit, %d off\n", k, checked, lit, bad);
+        assert_true(checked > W * H / 5);
+        assert_true(lit > 200);
+        assert_int_equal(bad, 0);
+    }
+}
+
+/* The branch's tile under every pixel (ID mode), -1 for none. */
+static void branch_ids(scene *s, int *ids)
+{
+    static uint8_t px[W * H * 4];
+    render(s, HOL_RENDER_BARE | HOL_RENDER_IDS, px);
+    for (int i = 0; i < W * H; i++)
+        ids[i] = hol_render_decode_id(px + 4 * i);
+}
+
+/* Branch b continues branch a by one step (or a b): their pixels meet on
+ * the cell edge that step crosses (not on a seam behind a vertex). */
+static int one_step_apart(const hol_view *v, int a, int b)
+{
+    const hol_view_branch *x = &v->branches[a], *y = &v->branches[b];
+    if (x->nsteps > y->nsteps) {
+        const hol_view_branch *t = x;
+        x = y;
+        y = t;
+    }
+    return y->nsteps == x->nsteps + 1 && !memcmp(x->steps, y->steps, x->nsteps);
+}
+
+static void test_light_continuous_across_edges(void **state)
+{
+    (void)state;
+    static uint8_t px[W * H * 4];
+    static int ids[W * H];
+    int total = 0;
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        const light_case *c = &cases[k];
+        scene s;
+        make_scene(c, &s);
+        branch_ids(&s, ids);
+        hol_view v = *hol_render_last_view(fx.rnd);
+        render(&s, HOL_RENDER_BARE | HOL_RENDER_LIGHT_ONLY, px);
+        int pairs = 0, lit = 0;
+        for (int y = 0; y + 1 < H; y++)
+            for (int x = 0; x + 1 < W; x++) {
+                int a = ids[y * W + x];
+                for (int d = 0; d < 2; d++) {
+                    int j = d ? (y + 1) * W + x : y * W + x + 1;
+                    int b = ids[j];
+                    if (a < 0 || b < 0 || a == b || !one_step_apart(&v, a, b))
+                        continue;
+                    assert_int_equal(
+                        hol_tile_dist(v.branches[a].state.tile, v.branches[b].state.tile), 1);
+                    /* model-free: the step across the edge against the
+                     * steps just before and after it, inside each tile
+                     * (the light's own gradient) */
+                    int st = d ? W : 1, i0 = y * W + x;
+                    if ((d ? y < 1 || y + 2 >= H : x < 1 || x + 2 >= W) ||
+                        ids[i0 - st] != a || ids[i0 + 2 * st] != b)
+                        continue;
+                    int bad = 0;
+                    for (int ch = 0; ch < 2; ch++) {
+                        int v0 = px[4 * (i0 - st) + ch], v1 = px[4 * i0 + ch],
+                            v2 = px[4 * (i0 + st) + ch], v3 = px[4 * (i0 + 2 * st) + ch];
+                        /* a kink is allowed (each side's map has its own
+                         * slope), a jump is not */
+                        double jump = v2 - v1, lo = fmin(v1 - v0, v3 - v2),
+                               hi = fmax(v1 - v0, v3 - v2);
+                        bad |= jump < lo - TOL || jump > hi + TOL;
+                    }
+                    const uint8_t *p = px + 4 * i0, *q = px + 4 * j;
+                    if (bad)
+                        fail_msg("case %zu: pixels (%d,%d) and its %s neighbour differ: "
+                                 "%d,%d against %d,%d", k, x, y, d ? "lower" : "right",
+                                 p[0], p[1], q[0], q[1]);
+                    pairs++;
+                    lit += p[0] > 12;
+                }
+            }
+        printf("edges case %zu: %d pixel pairs across cell edges, %d lit\n", k, pairs, lit);
+        assert_true(pairs > 100);
+        assert_true(lit > 20);
+        total += pairs;
+    }
+    printf("edges: %d pairs in all\n", total);
+}
+
+/* Tiles two or more cells away (through portals) get a lantern's light,
+ * as the model says (the model check covers the values). */
+static void test_lantern_through_portal(void **state)
+{
+    (void)state;
+    /* one lantern, on the tile one step north: its light reaches tiles
+     * seen two and three cells away (north-west, north-east, ...) */
+    static const light_case c = {"-", {1.5, 1.6, 1.9}, 0, -30, 5, 3, 3, 1,
+                                 {"N", NULL, NULL, NULL}, 0};
+    static uint8_t px[W * H * 4];
+    static int ids[W * H];
+    scene s;
+    make_scene(&c, &s);
+    branch_ids(&s, ids);
+    hol_view v = *hol_render_last_view(fx.rnd);
+    render(&s, HOL_RENDER_BARE | HOL_RENDER_LIGHT_ONLY, px);
+    int far_lit = 0, far_model = 0;
+    for (int y = 0; y < H; y++)
+        for (int x = 0; x < W; x++) {
+            int b = ids[y * W + x];
+            double want[2];
+            if (b < 0 || v.branches[b].nsteps < 2 ||
+                hol_tile_eq(v.branches[b].state.tile, s.f.lanterns[0]) ||
+                !model_pixel(&c, &s, x, y, want))
+                continue;
+            far_model += want[0] > 0.05;
+            if (px[4 * (y * W + x)] > 0.05 * 255) {
+                far_lit++;
+                assert_true(fabs(px[4 * (y * W + x)] - 255 * want[0]) <= TOL);
+            }
+        }
+    printf("portal: %d pixels of tiles two or more cells away lit by the lantern (model %d)\n",
+           far_lit, far_model);
+    assert_true(far_lit > 100);
+    assert_true(abs(far_lit - far_model) < far_model / 50 + 5);
+}
+
+/* Lanterns at day change nothing: the same pixels as without them. */
+static void test_day_unchanged_without_lighting(void **state)
+{
+    (void)state;
+    static uint8_t a[W * H * 4], b[W * H * 4];
+    scene s;
+    make_scene(&cases[0], &s);
+    s.f.lighting = HOL_RENDER_DAY;
+    render(&s, 0, a);
+    s.f.nlanterns = 0;
+    render(&s, 0, b);
+    assert_memory_equal(a, b, sizeof a);
+}
+
+/* Every platform draws the app's view through hol_app_frame_desc: the
+ * level's sky and lanterns reach the renderer. */
+static void test_app_frame_carries_lights(void **state)
+{
+    (void)state;
+    static hol_app_view v;
+    memset(&v, 0, sizeof v);
+    v.user = hol_room_start();
+    v.cell_m = 1;
+    v.head[0] = v.head[2] = 1.5;
+    v.head[1] = 1.6;
+    v.lighting = HOL_LIGHT_DUSK;
+    v.nlanterns = 2;
+    assert_int_equal(hol_tile_parse("Nf", -1, &v.lanterns[0]), HOL_OK);
+    assert_int_equal(hol_tile_parse("Wr", -1, &v.lanterns[1]), HOL_OK);
+    hol_frame_desc f;
+    hol_app_frame_desc(&v, -1, W, H, 90, &f);
+    assert_int_equal(f.lighting, HOL_RENDER_DUSK);
+    assert_int_equal(f.nlanterns, 2);
+    assert_true(hol_tile_eq(f.lanterns[1], v.lanterns[1]));
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_light_matches_model),
+        cmocka_unit_test(test_flat_equals_euclid),
+        cmocka_unit_test(test_light_continuous_across_edges),
+        cmocka_unit_test(test_lantern_through_portal),
+        cmocka_unit_test(test_day_unchanged_without_lighting),
+        cmocka_unit_test(test_app_frame_carries_lights),
+    };
+    return cmocka_run_group_tests(tests, setup, teardown);
+}
