@@ -188,6 +188,7 @@ static int hol__draw_eye(hol__xr *x, int e, const hol_app_view *v, const hol_inp
     x->gl.Viewport(0, 0, ey->w, ey->h);
     hol_frame_desc fd;
     hol_app_frame_desc(v, e, ey->w, ey->h, 0, &fd);
+    hol_app_frame_panel(v, &fd); /* the HUD on a panel in the world */
     for (int k = 0; k < 3; k++)
         fd.cam.eye[k] = eroom->pos[k];
     fd.cam.has_pose = 1;

@@ -133,6 +133,7 @@ static void xr_render(const hol_app_view *v, const hol_input *in, int fb)
             continue;
         hol_frame_desc fd;
         hol_app_frame_desc(v, n == 2 ? e : -1, cam[e].width, cam[e].height, 0, &fd);
+        hol_app_frame_panel(v, &fd); /* the HUD on a panel in the world */
         fd.cam = cam[e];
         fd.vp_x = (int)vw->vp[0];
         fd.vp_y = (int)vw->vp[1];
