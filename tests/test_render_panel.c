@@ -278,6 +278,21 @@ static void shot_png(eye_shot s[2])
     free(both);
 }
 
+/* The panel's cost in one eye: draws and triangles over the same frame
+ * without it. */
+static void panel_cost(render_fixture *fx, const hol_app_view *v, int *draws, long *tris)
+{
+    hol_frame_desc fd;
+    hol_app_frame_desc(v, 0, W, H, 90, &fd);
+    hol_app_frame_panel(v, &fd);
+    hol_render_stats with, without;
+    assert_int_equal(hol_render_frame(fx->rnd, &fd, &with), HOL_OK);
+    fd.flags |= HOL_RENDER_NO_HUD;
+    assert_int_equal(hol_render_frame(fx->rnd, &fd, &without), HOL_OK);
+    *draws = with.draw_calls - without.draw_calls;
+    *tris = with.triangles - without.triangles;
+}
+
 static void free_pair(eye_shot s[2])
 {
     for (int e = 0; e < 2; e++) {
@@ -305,6 +320,12 @@ static void test_panel_stereo(void **state)
                   s[0].text.x0 - s[1].text.x0, s[0].text.y0, s[0].text.y1, s[0].map.x0,
                   s[0].map.x1, s[1].map.x0, s[1].map.x1);
     shot_png(s);
+    int draws;
+    long tris;
+    panel_cost(&fx, &v, &draws, &tris);
+    print_message("panel cost an eye: %d draws, %ld triangles\n", draws, tris);
+    assert_int_equal(draws, 3); /* the text, the resident map, the arrow */
+    assert_true(tris > 0 && tris < 4000);
     /* a capital: 7 font pixels of 4.3 mm at about 1.5 m */
     double cap = atan(7 * PX / 1.5) * 180 / PI;
     assert_true(cap >= 1.0);
