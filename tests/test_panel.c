@@ -14,6 +14,8 @@
 
 #include <cmocka.h>
 
+#include "../core/hol_app.h"
+#include "../core/hol_nav.h"
 #include "../core/hol_panel.h"
 
 #define PI 3.14159265358979323846
@@ -139,11 +141,72 @@ static void test_lazy(void **state)
     assert_at(&p, h, 90);
 }
 
+/* a tracked head at (x, 1.6, z) turned yaw degrees */
+static hol_input head_at(double t, double x, double z, double yaw)
+{
+    hol_input in;
+    memset(&in, 0, sizeof in);
+    in.time_s = t;
+    in.flags = HOL_INPUT_FOCUSED | HOL_INPUT_HEAD_VALID;
+    in.head.pos[0] = (float)x;
+    in.head.pos[1] = 1.6f;
+    in.head.pos[2] = (float)z;
+    in.head.quat[1] = (float)sin(yaw * PI / 360);
+    in.head.quat[3] = (float)cos(yaw * PI / 360);
+    return in;
+}
+
+/* The app step drives it from the tracked head: placed at the level's
+ * start, kept through a small turn, re-centred after a large one. */
+static void test_app_drives_it(void **state)
+{
+    (void)state;
+    hol_nav *nav = NULL;
+    hol_nav_desc nd;
+    memset(&nd, 0, sizeof nd);
+    assert_int_equal(hol_nav_create(&nd, &nav), HOL_OK);
+    hol_app_desc d;
+    memset(&d, 0, sizeof d);
+    d.nav = nav;
+    hol_app *app = NULL;
+    assert_int_equal(hol_app_create(&d, &app), HOL_OK);
+    hol_app_level L;
+    memset(&L, 0, sizeof L);
+    L.seed = 9;
+    assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    double t = 0;
+    hol_input in = head_at(t, 1.5, 1.5, 0);
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    const hol_app_view *v = hol_app_get_view(app);
+    assert_int_equal(v->panel.placed, 1);
+    assert_at(&v->panel, v->head, 0);
+    double h0[3] = {v->head[0], v->head[1], v->head[2]};
+    for (int f = 1; f <= 30; f++) { /* a 15 degree look aside */
+        in = head_at(t += 1.0 / 72, 1.5, 1.5, 15);
+        assert_int_equal(hol_app_step(app, &in), HOL_OK);
+        assert_int_equal(v->panel.moving, 0);
+    }
+    assert_at(&v->panel, h0, 0);
+    for (int f = 1; f <= 72; f++) { /* a 40 degree turn, held a second */
+        in = head_at(t += 1.0 / 72, 1.5, 1.5, 40);
+        assert_int_equal(hol_app_step(app, &in), HOL_OK);
+        if (f == 1)
+            assert_int_equal(v->panel.moving, 1);
+    }
+    assert_int_equal(v->panel.moving, 0);
+    assert_true(fabs(v->yaw_deg - 40) < 1e-3);
+    assert_at(&v->panel, v->head, v->panel.yaw_deg);
+    assert_true(fabs(v->panel.yaw_deg - v->yaw_deg) < 0.5);
+    hol_app_destroy(app);
+    hol_nav_destroy(nav);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_place),
         cmocka_unit_test(test_lazy),
+        cmocka_unit_test(test_app_drives_it),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
