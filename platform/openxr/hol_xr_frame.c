@@ -219,8 +219,8 @@ static int hol__draw_eye(hol__xr *x, int e, const hol_app_view *v, const hol_inp
         x->tris[e] = rs.triangles;
     }
 #ifndef __ANDROID__
-    if (e == 0 && x->d->check_dir && x->submitted == x->d->check_frame && inside && fd.fade == 0)
-        hol__check(x, &fd, ey->w, ey->h);
+    if (x->d->check_dir && x->submitted == x->d->check_frame && inside && fd.fade == 0)
+        hol__check_eye(x, e, &fd, ey->fbo[idx], ey->w, ey->h);
 #endif
     x->gl.BindFramebuffer(HOL__GL_FRAMEBUFFER, 0);
     XrSwapchainImageReleaseInfo ri = {XR_TYPE_SWAPCHAIN_IMAGE_RELEASE_INFO};
