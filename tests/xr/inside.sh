@@ -89,7 +89,7 @@ panel_eye_ok() {
 }
 for e in 0 1; do
     l=$(grep "^xr: check panel eye $e:" "$out/xr.out")
-    check "UI panel in eye $e: its left edge where its pose projects, within 1 px, all of it within 20 degrees of the eye's axis (${l#xr: check panel eye }))" \
+    check "UI panel in eye $e: its left edge where its pose projects, within 1 px, all of it within 20 degrees of the eye's axis (${l#xr: check panel eye })" \
         'panel_eye_ok "$l"'
 done
 l=$(sed -n 's/^xr: check panel disparity \([-0-9]*\) px (predicted \([-0-9.]*\))$/\1 \2/p' "$out/xr.out")
