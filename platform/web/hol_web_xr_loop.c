@@ -151,9 +151,16 @@ static void xr_render(const hol_app_view *v, const hol_input *in, int fb)
             hol_render_frame(w->rnd, &fd, NULL);
         }
         if (checking) {
+            /* the check compares the world with `holonomy render` (no
+             * HUD): it reads back a draw without the UI panel, then the
+             * eye is drawn again as shown */
+            hol_frame_desc bare = fd;
+            bare.flags |= HOL_RENDER_NO_HUD;
+            hol_render_frame(w->rnd, &bare, NULL);
             w->check_user[e] = fd.user;
             w->check_cam[e] = fd.cam;
-            check_eye(e, &fd);
+            check_eye(e, &bare);
+            hol_render_frame(w->rnd, &fd, NULL);
         }
     }
     w->xr_two_views += n == 2;
