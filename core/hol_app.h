@@ -53,6 +53,7 @@
 #include "hol_haptic.h"
 #include "hol_input.h"
 #include "hol_motion.h"
+#include "hol_panel.h"
 #include "hol_room.h"
 #include "hol_tile.h"
 #include "hol_world.h"
@@ -255,6 +256,10 @@ typedef struct hol_app_view {
                                          from yaw and pitch) */
     hol_room eye_user[2];             /* the state each eye sees from */
     double eye[2][3];                 /* eye positions (head +- ipd / 2) */
+    hol_panel panel;                  /* where a headset's UI panel stands:
+                                         lazily following the head
+                                         (core/hol_panel.h); drawn there
+                                         only for a headset's eyes */
     hol_app_hud hud;
     hol_app_minimap map;
     int nobjects;                     /* game objects to draw in the world */

@@ -64,6 +64,13 @@ static void hol__fill_eyes(hol_app *app, const hol_input *in)
                                    &v->eye_user[e]))
             v->eye_user[e] = v->user;
     }
+    /* the headset's UI panel: placed ahead at once when a level starts or
+     * the room is re-placed around the head, else lazily following */
+    double t = in ? in->time_s : v->panel.t;
+    if (app->ev.level_started || (in && (in->flags & HOL_INPUT_RECENTRED)))
+        hol_panel_place(&v->panel, v->head, v->yaw_deg, t);
+    else
+        hol_panel_follow(&v->panel, v->head, v->yaw_deg, t);
 }
 
 static void hol__fill_objective(const hol_app *app, hol_app_hud *h)

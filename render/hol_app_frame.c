@@ -84,3 +84,11 @@ void hol_app_frame_desc(const hol_app_view *v, int eye, int w, int h, double fov
     memcpy(fd->lanterns, v->lanterns, (size_t)fd->nlanterns * sizeof fd->lanterns[0]);
     fd->npath = v->map.npath;
 }
+
+void hol_app_frame_panel(const hol_app_view *v, hol_frame_desc *out)
+{
+    out->flags |= HOL_RENDER_PANEL;
+    memcpy(out->panel_pos, v->panel.pos, sizeof out->panel_pos);
+    memcpy(out->panel_orient, v->panel.orient, sizeof out->panel_orient);
+    out->panel_px = 0;
+}

@@ -17,6 +17,11 @@
  *   degrees down) it sits in the lower part of the view, out of its middle,
  *   where a glance down finds it. A platform with tracked hands overwrites
  *   hand_pos and hand_orient with the hand's pose.
+ * - A headset's eyes: hol_app_frame_panel moves the HUD text (and the
+ *   minimap, unless it is in the hand) onto the panel in the world where
+ *   the app step placed it (hol_app_view.panel, core/hol_panel.h). Every
+ *   platform that draws for a headset (OpenXR, WebXR) calls it for each
+ *   eye; desktop, pancake and replays keep the screen layout.
  */
 #ifndef HOL_APP_FRAME_H
 #define HOL_APP_FRAME_H
@@ -28,5 +33,8 @@
  * (0: 90). */
 void hol_app_frame_desc(const hol_app_view *v, int eye, int w, int h, double fovy_deg,
                         hol_frame_desc *out);
+
+/* Draw the HUD of *out on the view's world panel (HOL_RENDER_PANEL). */
+void hol_app_frame_panel(const hol_app_view *v, hol_frame_desc *out);
 
 #endif

@@ -536,3 +536,85 @@ void hol_hud_build_text(hol_mesh *out, const hol_frame_desc *f, int w, int h)
         hol_hud_text(out, o, (float)w - m - ow + 2 * so, m + 2 * so, so, text, w, h);
     }
 }
+
+/* Wrap src into lines of at most cols characters at spaces (a word longer
+ * than a line is cut at the line's end and goes on); returns the number of
+ * lines written into out (at most max). */
+static int hol__wrap(const char *src, int cols, char out[][96], int max)
+{
+    int n = 0;
+    size_t len = strlen(src), at = 0;
+    while (at < len && n < max) {
+        while (at < len && src[at] == ' ' && n > 0)
+            at++; /* a wrapped line does not start with a blank */
+        size_t take = len - at;
+        if ((int)take > cols) {
+            take = (size_t)cols;
+            size_t sp = take;
+            while (sp > 0 && src[at + sp] != ' ')
+                sp--;
+            if (sp > 0)
+                take = sp;
+        }
+        if (take > 95)
+            take = 95;
+        memcpy(out[n], src + at, take);
+        out[n][take] = 0;
+        n++;
+        at += take;
+        if (at >= len)
+            break;
+    }
+    return n;
+}
+
+/* The wrapped lines of the panel at glyph scale k: one entry a screen
+ * line, colours per line (0 text, 1 prompt). */
+static int hol__panel_lines(const hol_frame_desc *f, float k, char out[][96], uint8_t *kind,
+                            int max)
+{
+    char lines[HOL_RENDER_HUD_LINES + 2][96];
+    int nl = hol__text_lines(f, lines), prompt = f->prompt && f->prompt[0], n = 0;
+    int last = prompt ? nl - 1 : -1; /* the prompt's line */
+    if (f->overlay && f->overlay[0] && nl < HOL_RENDER_HUD_LINES + 2)
+        snprintf(lines[nl++], 96, "%.60s", f->overlay);
+    int cols = (int)((HOL_HUD_PANEL_W - 4) / (6 * k));
+    for (int i = 0; i < nl && n < max; i++) {
+        int m = hol__wrap(lines[i], cols, out + n, max - n);
+        int is_prompt = i == last;
+        for (int j = 0; j < m; j++)
+            kind[n + j] = (uint8_t)is_prompt;
+        n += m;
+    }
+    return n;
+}
+
+void hol_hud_build_panel_text(hol_mesh *out, const hol_frame_desc *f, float out_wh[2])
+{
+    char lines[48][96];
+    uint8_t kind[48];
+    float k = 1;
+    int n = hol__panel_lines(f, k, lines, kind, 48);
+    /* shrink until every line fits the block's height (nothing is cut) */
+    while (k > 0.3f && 9 * k * (float)n + 4 > HOL_HUD_PANEL_HMAX) {
+        k *= 0.9f;
+        n = hol__panel_lines(f, k, lines, kind, 48);
+    }
+    float wpx = HOL_HUD_PANEL_W, hpx = 9 * k * (float)n + 4;
+    if (n == 0) {
+        out_wh[0] = out_wh[1] = 0;
+        return;
+    }
+    /* 8 units a font pixel: the block is (8 wpx) x (8 hpx) units, laid out
+     * in [-1, 1]^2 for the renderer to scale to wpx x hpx font pixels */
+    hol__px p = {out, (int)(8 * wpx + 0.5f), (int)(8 * hpx + 0.5f), 0};
+    static const uint8_t panel[3] = {24, 28, 34}, text[3] = {240, 240, 230},
+                         yellow[3] = {255, 215, 60};
+    hol__rect(&p, 0, 0, (float)p.w, (float)p.h, panel);
+    float sc = 8 * k;
+    for (int i = 0; i < n; i++)
+        hol_hud_text(out, lines[i], 2 * 8, 2 * 8 + 9 * sc * (float)i, sc,
+                     kind[i] ? yellow : text, p.w, p.h);
+    out_wh[0] = wpx;
+    out_wh[1] = hpx;
+}

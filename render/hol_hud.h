@@ -22,6 +22,8 @@
  * - In the hand: the same minimap laid out to fill the square [-1, 1]^2
  *   (x right, y up, z = 0), for the renderer to place on a quad at the
  *   hand's pose; the text stays on the screen.
+ * - On a headset's panel (hol_hud_build_panel_text): the text wrapped into
+ *   a block of a fixed width, for the renderer to place in the world.
  */
 #ifndef HOL_HUD_H
 #define HOL_HUD_H
@@ -47,6 +49,21 @@ void hol_hud_build_text(hol_mesh *out, const hol_frame_desc *f, int w, int h);
  * (live), in the square [-1, 1]^2. */
 void hol_hud_build_hand_map(hol_mesh *out, const hol_frame_desc *f);
 void hol_hud_build_hand_arrow(hol_mesh *out, const hol_frame_desc *f);
+
+/* The headset's panel (HOL_RENDER_PANEL), in font pixels (the renderer
+ * makes one font pixel f->panel_px metres): the text block is
+ * HOL_HUD_PANEL_W wide and at most HOL_HUD_PANEL_HMAX high, its lines
+ * wrapped at blanks to fit the width (the prompt in yellow, the overlay
+ * last); when more lines than fit the height, the glyphs shrink until all
+ * fit: no line is cut off. The map square (HOL_HUD_PANEL_MAP a side, the
+ * hand's layout) stands HOL_HUD_PANEL_GAP to its right, their tops level.
+ * Builds the block into the square [-1, 1]^2 (x right, y up, z = 0) and
+ * gives its size in font pixels in out_wh ({0, 0}: no text). */
+#define HOL_HUD_PANEL_W 136.0f
+#define HOL_HUD_PANEL_HMAX 93.0f
+#define HOL_HUD_PANEL_MAP 64.0f
+#define HOL_HUD_PANEL_GAP 6.0f
+void hol_hud_build_panel_text(hol_mesh *out, const hol_frame_desc *f, float out_wh[2]);
 
 /* The HUD minimap's square, rim arrows included, on a w x h screen:
  * out = x0, y0, x1, y1 in pixels (y down). */

@@ -51,7 +51,8 @@ enum {
     HOL__PASS_TILE = 2,
     HOL__PASS_HAND = 3, /* the minimap on a quad in the hand (world space) */
     HOL__PASS_FADE = 4, /* the safety fade over the scene (blended) */
-    HOL__PASS_HUD = 5
+    HOL__PASS_HUD = 5,
+    HOL__PASS_PANEL = 6 /* a headset's UI panel in the world, over all */
 };
 enum { HOL__MODE_LIT = 0, HOL__MODE_ID = 1, HOL__MODE_FLAT = 2 };
 
@@ -440,13 +441,14 @@ static void hol__identity(float m[16])
     m[0] = m[5] = m[10] = m[15] = 1;
 }
 
-/* Column-major model matrix of the hand's minimap quad: the square
- * [-1, 1]^2 (z = 0) scaled to hand_size, turned by hand_orient, moved to
- * hand_pos. */
-static void hol__hand_matrix(const hol_frame_desc *f, float m[16])
+/* Column-major model matrix of a quad in the world: the square [-1, 1]^2
+ * (z = 0) scaled to sx x sy (half sides, metres) and moved by (ox, oy) in
+ * its own plane, turned by the quaternion q (all zero: identity), moved to
+ * pos. */
+static void hol__quad_matrix(const double pos[3], const double q[4], double sx, double sy,
+                             double ox, double oy, float m[16])
 {
-    double x = f->hand_orient[0], y = f->hand_orient[1], z = f->hand_orient[2],
-           w = f->hand_orient[3];
+    double x = q[0], y = q[1], z = q[2], w = q[3];
     double n = sqrt(x * x + y * y + z * z + w * w);
     if (n < 1e-12) {
         x = y = z = 0;
@@ -454,16 +456,23 @@ static void hol__hand_matrix(const hol_frame_desc *f, float m[16])
     } else {
         x /= n, y /= n, z /= n, w /= n;
     }
-    double half = (f->hand_size > 0 ? f->hand_size : 0.25) / 2;
     double rot[9] = {1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w),
                      2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w),
                      2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)};
     hol__identity(m);
-    for (int c = 0; c < 3; c++)
-        for (int r = 0; r < 3; r++)
-            m[4 * c + r] = (float)(rot[3 * r + c] * half);
-    for (int r = 0; r < 3; r++)
-        m[12 + r] = (float)f->hand_pos[r];
+    for (int r = 0; r < 3; r++) {
+        m[r] = (float)(rot[3 * r] * sx);
+        m[4 + r] = (float)(rot[3 * r + 1] * sy);
+        m[8 + r] = (float)rot[3 * r + 2];
+        m[12 + r] = (float)(pos[r] + rot[3 * r] * ox + rot[3 * r + 1] * oy);
+    }
+}
+
+/* The hand's minimap quad: hand_size a side, at hand_pos, hand_orient. */
+static void hol__hand_matrix(const hol_frame_desc *f, float m[16])
+{
+    double half = (f->hand_size > 0 ? f->hand_size : 0.25) / 2;
+    hol__quad_matrix(f->hand_pos, f->hand_orient, half, half, 0, 0, m);
 }
 
 static hol__item *hol__push(hol_render *r, int pass, uint32_t first, uint32_t count)
@@ -790,9 +799,54 @@ static uint64_t hol__map_key(const hol_frame_desc *f, int hand)
 
 /* The minimap (on the HUD or in the hand; resident while its inputs stay
  * the same) and the live part: the user's arrow and the text. */
+/* The headset's panel: the text block and, unless the map is in the hand,
+ * the resident map (the hand's square layout) and the user's arrow beside
+ * it, each a quad placed in the panel's plane (render/hol_hud.h). */
+static hol_err hol__queue_panel(hol_render *r, const hol_frame_desc *f)
+{
+    int map = (f->flags & HOL_RENDER_MINIMAP) && !(f->flags & HOL_RENDER_MINIMAP_HAND);
+    double px = f->panel_px > 0 ? f->panel_px : HOL_RENDER_PANEL_PX;
+    double wide = HOL_HUD_PANEL_W + (map ? HOL_HUD_PANEL_GAP + HOL_HUD_PANEL_MAP : 0);
+    double left = -wide / 2, top = HOL_HUD_PANEL_MAP / 2;
+    uint32_t i0 = r->dyn.ni;
+    float wh[2];
+    hol_hud_build_panel_text(&r->dyn, f, wh);
+    hol__item *it = hol__push(r, HOL__PASS_PANEL, i0, r->dyn.ni - i0);
+    if (it) {
+        it->key = (uint32_t)HOL__PASS_PANEL << 24 | 2;
+        it->dyn = 1;
+        hol__quad_matrix(f->panel_pos, f->panel_orient, wh[0] / 2 * px, wh[1] / 2 * px,
+                         (left + wh[0] / 2) * px, (top - wh[1] / 2) * px, it->model);
+    }
+    if (!map)
+        return HOL_OK;
+    float m[16];
+    double half = HOL_HUD_PANEL_MAP / 2;
+    hol__quad_matrix(f->panel_pos, f->panel_orient, half * px, half * px,
+                     (left + HOL_HUD_PANEL_W + HOL_HUD_PANEL_GAP + half) * px, 0, m);
+    hol__item *mi = hol__push(r, HOL__PASS_PANEL, HOL__HUD_IBASE, r->hud_nidx);
+    if (mi) {
+        mi->key = (uint32_t)HOL__PASS_PANEL << 24;
+        memcpy(mi->model, m, sizeof m);
+    }
+    i0 = r->dyn.ni;
+    hol_hud_build_hand_arrow(&r->dyn, f);
+    hol__item *ai = hol__push(r, HOL__PASS_PANEL, i0, r->dyn.ni - i0);
+    if (ai) {
+        ai->key = (uint32_t)HOL__PASS_PANEL << 24 | 1;
+        ai->dyn = 1;
+        memcpy(ai->model, m, sizeof m);
+    }
+    return HOL_OK;
+}
+
 static hol_err hol__queue_hud(hol_render *r, const hol_frame_desc *f)
 {
-    int hand = (f->flags & HOL_RENDER_MINIMAP_HAND) != 0;
+    int panel = (f->flags & HOL_RENDER_PANEL) != 0;
+    /* the map's square layout: in the hand, or on the headset's panel */
+    if (panel && !(f->flags & HOL_RENDER_MINIMAP))
+        return hol__queue_panel(r, f); /* the text alone */
+    int hand = (f->flags & HOL_RENDER_MINIMAP_HAND) != 0 || panel;
     uint64_t key = hol__map_key(f, hand);
     if (!r->hud_valid || r->hud_key != key) {
         hol_mesh_clear(&r->scratch);
@@ -811,6 +865,8 @@ static hol_err hol__queue_hud(hol_render *r, const hol_frame_desc *f)
         r->hud_key = key;
         r->hud_valid = 1;
     }
+    if (panel && !(f->flags & HOL_RENDER_MINIMAP_HAND))
+        return hol__queue_panel(r, f);
     int map_pass = hand ? HOL__PASS_HAND : HOL__PASS_HUD;
     float hand_m[16];
     if (hand)
@@ -830,6 +886,8 @@ static hol_err hol__queue_hud(hol_render *r, const hol_frame_desc *f)
             it->dyn = 1;
             memcpy(it->model, hand_m, sizeof hand_m);
         }
+        if (panel) /* the map in the hand, the text on the panel */
+            return hol__queue_panel(r, f);
         i0 = r->dyn.ni;
         hol_hud_build_text(&r->dyn, f, f->cam.width, f->cam.height);
     } else {
@@ -883,7 +941,7 @@ static hol_err hol__build(hol_render *r, const hol_frame_desc *f)
     if (f->fade > 0 && !(f->flags & HOL_RENDER_IDS) && (err = hol__queue_fade(r, f)))
         return err;
     if (!(f->flags & HOL_RENDER_NO_HUD)) {
-        if (f->flags & HOL_RENDER_MINIMAP)
+        if (f->flags & (HOL_RENDER_MINIMAP | HOL_RENDER_PANEL))
             err = hol__queue_hud(r, f);
         else if (f->flags & HOL_RENDER_HUD_TEXT)
             err = hol__queue_text(r, f);
@@ -1064,6 +1122,16 @@ static void hol__set_pass(hol_render *r, const hol_frame_desc *f, int pass, cons
         r->gl.UniformMatrix4fv(r->pg->u_vp, 1, GL_FALSE, vp);
         r->gl.Uniform1i(r->pg->u_mode, ids ? HOL__MODE_ID : HOL__MODE_FLAT);
         break;
+    case HOL__PASS_PANEL:
+        /* in the world, drawn last over everything (no depth test): the
+         * text is never hidden by a hedge or a trunk nearer than it */
+        r->gl.Disable(GL_BLEND);
+        r->gl.Disable(GL_DEPTH_TEST);
+        r->gl.DepthMask(GL_FALSE);
+        r->gl.Disable(GL_STENCIL_TEST);
+        r->gl.UniformMatrix4fv(r->pg->u_vp, 1, GL_FALSE, vp);
+        r->gl.Uniform1i(r->pg->u_mode, ids ? HOL__MODE_ID : HOL__MODE_FLAT);
+        break;
     case HOL__PASS_FADE:
         r->gl.Disable(GL_DEPTH_TEST);
         r->gl.DepthMask(GL_FALSE);
@@ -1138,7 +1206,7 @@ static void hol__execute(hol_render *r, const hol_frame_desc *f, const float vp[
                                 0, 1);
             }
             st->branches++;
-        } else if (cur_pass == HOL__PASS_HAND) {
+        } else if (cur_pass == HOL__PASS_HAND || cur_pass == HOL__PASS_PANEL) {
             r->gl.UniformMatrix4fv(r->pg->u_model, 1, GL_FALSE, it->model);
         }
         if (it->dyn != cur_vao) {

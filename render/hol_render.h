@@ -21,7 +21,8 @@
  *   stencil test), one draw per branch of its tile's mesh placed in the
  *   branch's cell and tested against the branch's stencil ref/mask (pass 2,
  *   nearest cells first for early depth rejection), the HUD (pass 3: the
- *   resident minimap and the live arrow and text). One program for all;
+ *   resident minimap and the live arrow and text; for a headset's eye a
+ *   panel in the world instead, the last pass: HOL_RENDER_PANEL). One program for all;
  *   the queue is sorted by (pass, buffer, depth) and executed with
  *   redundant state changes skipped. No scene pass per portal, no
  *   render-to-texture.
@@ -110,9 +111,13 @@ enum {
                                      (MINIMAP implies it): a map that is off
                                      never takes the objective, steps, time,
                                      result or prompt with it */
-    HOL_RENDER_LIGHT_ONLY = 4096  /* tests, at dusk and night: a tile's
+    HOL_RENDER_LIGHT_ONLY = 4096, /* tests, at dusk and night: a tile's
                                      pixel is (lanterns' sum, fog factor, 0)
                                      (docs/rendering.md#lighting) */
+    HOL_RENDER_PANEL = 2048       /* a headset's eye: the HUD text (and the
+                                     minimap unless in the hand) on a panel
+                                     in the world (panel_* below), not on
+                                     the screen */
 };
 
 #define HOL_RENDER_MAX_OBJECTIVES 8
@@ -195,7 +200,20 @@ typedef struct hol_frame_desc {
     int lighting;
     int nlanterns;
     hol_tile lanterns[HOL_RENDER_MAX_LANTERNS];
+    /* The headset's panel (HOL_RENDER_PANEL): its centre panel_pos (room
+     * coordinates), turned by the unit quaternion panel_orient (x, y, z, w;
+     * unturned it faces +z, up +y), one font pixel panel_px metres (0:
+     * HOL_RENDER_PANEL_PX). The text block and the map square beside it
+     * (render/hol_hud.h) are drawn with the eye's view and projection,
+     * after the scene and over it (no depth test): always readable, even
+     * where a hedge or a trunk comes nearer than the panel. */
+    double panel_pos[3];
+    double panel_orient[4];
+    double panel_px;
 } hol_frame_desc;
+
+/* 4.3 mm: a capital (7 font pixels) 30 mm high, 1.15 degrees at 1.5 m */
+#define HOL_RENDER_PANEL_PX 0.0043
 
 #define HOL_RENDER_FADE_RGB {56, 117, 61}
 

@@ -85,3 +85,92 @@ void hol__check(hol__xr *x, const hol_frame_desc *fd, int w, int h)
     free(ref);
 }
 #endif
+
+#ifndef __ANDROID__
+/* v turned by the unit quaternion q (x, y, z, w); conj: by its inverse */
+static void hol__turn(const double q[4], int conj, const double v[3], double out[3])
+{
+    double x = conj ? -q[0] : q[0], y = conj ? -q[1] : q[1], z = conj ? -q[2] : q[2], w = q[3];
+    double t[3] = {2 * (y * v[2] - z * v[1]), 2 * (z * v[0] - x * v[2]),
+                   2 * (x * v[1] - y * v[0])};
+    out[0] = v[0] + w * t[0] + (y * t[2] - z * t[1]);
+    out[1] = v[1] + w * t[1] + (z * t[0] - x * t[2]);
+    out[2] = v[2] + w * t[2] + (x * t[1] - y * t[0]);
+}
+
+/* Where the text block's top-left corner projects in the eye (pixels from
+ * the left): the panel's documented layout (docs/headset.md: the block 136
+ * font pixels wide, the map 6 + 64 beside it, the tops 32 above the
+ * centre) and a pinhole of the eye's pose and tangents. -1: behind. */
+static double hol__panel_corner(const hol_frame_desc *fd, int w)
+{
+    int map = (fd->flags & HOL_RENDER_MINIMAP) && !(fd->flags & HOL_RENDER_MINIMAP_HAND);
+    double px = fd->panel_px > 0 ? fd->panel_px : HOL_RENDER_PANEL_PX;
+    double u = -(136.0 + (map ? 70 : 0)) / 2 * px, v = 32 * px;
+    static const double ex[3] = {1, 0, 0}, ey[3] = {0, 1, 0};
+    double r[3], up[3], d[3], c[3];
+    hol__turn(fd->panel_orient, 0, ex, r);
+    hol__turn(fd->panel_orient, 0, ey, up);
+    for (int k = 0; k < 3; k++)
+        d[k] = fd->panel_pos[k] + u * r[k] + v * up[k] - fd->cam.eye[k];
+    hol__turn(fd->cam.orient, 1, d, c);
+    if (c[2] >= 0)
+        return -1;
+    double t = c[0] / -c[2];
+    return (t - fd->cam.tan_left) / (fd->cam.tan_right - fd->cam.tan_left) * w;
+}
+
+static void hol__measure_panel(hol__xr *x, int e, const hol_frame_desc *fd, const uint8_t *bare,
+                               const uint8_t *shown, int w, int h)
+{
+    const hol_camera *c = &fd->cam;
+    long n = 0;
+    int y0 = -1, left = w;
+    double worst = 0;
+    for (int y = 0; y < h; y++)
+        for (int i = 0; i < w; i++) {
+            size_t p = 4 * ((size_t)y * (size_t)w + (size_t)i);
+            if (!memcmp(bare + p, shown + p, 3))
+                continue;
+            n++;
+            y0 = y0 < 0 ? y : y0;
+            if (y == y0 + 1 && i < left)
+                left = i; /* the block's second row: whole pixels */
+            double tx = c->tan_left + (i + 0.5) / w * (c->tan_right - c->tan_left);
+            double ty = c->tan_up - (y + 0.5) / h * (c->tan_up - c->tan_down);
+            double a = fabs(atan(tx)) > fabs(atan(ty)) ? fabs(atan(tx)) : fabs(atan(ty));
+            worst = a > worst ? a : worst;
+        }
+    x->panel_left[e] = n ? left : -1;
+    x->panel_pred[e] = hol__panel_corner(fd, w);
+    hol__say(x, "xr: check panel eye %d: %ld pixels, left edge %d px (predicted %.2f), at most "
+                "%.1f degrees from the eye's axis",
+             e, n, n ? left : -1, x->panel_pred[e], worst * 180 / 3.14159265358979323846);
+    if (e == 1)
+        hol__say(x, "xr: check panel disparity %.0f px (predicted %.2f)",
+                 x->panel_left[0] - x->panel_left[1], x->panel_pred[0] - x->panel_pred[1]);
+}
+
+void hol__check_eye(hol__xr *x, int e, const hol_frame_desc *fd, unsigned fbo, int w, int h)
+{
+    size_t bytes = (size_t)w * (size_t)h * 4;
+    uint8_t *bare = malloc(bytes), *shown = malloc(bytes);
+    hol_frame_desc b = *fd;
+    b.flags |= HOL_RENDER_NO_HUD;
+    if (!bare || !shown || hol_render_frame(x->rnd, &b, NULL) != HOL_OK) {
+        free(bare);
+        free(shown);
+        return;
+    }
+    hol_render_read_rgba(x->rnd, w, h, bare);
+    if (e == 0) /* the world against the renders without a HUD */
+        hol__check(x, &b, w, h);
+    x->gl.BindFramebuffer(HOL__GL_FRAMEBUFFER, fbo);
+    if (hol_render_frame(x->rnd, fd, NULL) == HOL_OK) {
+        hol_render_read_rgba(x->rnd, w, h, shown);
+        hol__measure_panel(x, e, fd, bare, shown, w, h);
+    }
+    free(bare);
+    free(shown);
+}
+#endif

@@ -188,6 +188,7 @@ static int hol__draw_eye(hol__xr *x, int e, const hol_app_view *v, const hol_inp
     x->gl.Viewport(0, 0, ey->w, ey->h);
     hol_frame_desc fd;
     hol_app_frame_desc(v, e, ey->w, ey->h, 0, &fd);
+    hol_app_frame_panel(v, &fd); /* the HUD on a panel in the world */
     for (int k = 0; k < 3; k++)
         fd.cam.eye[k] = eroom->pos[k];
     fd.cam.has_pose = 1;
@@ -218,8 +219,8 @@ static int hol__draw_eye(hol__xr *x, int e, const hol_app_view *v, const hol_inp
         x->tris[e] = rs.triangles;
     }
 #ifndef __ANDROID__
-    if (e == 0 && x->d->check_dir && x->submitted == x->d->check_frame && inside && fd.fade == 0)
-        hol__check(x, &fd, ey->w, ey->h);
+    if (x->d->check_dir && x->submitted == x->d->check_frame && inside && fd.fade == 0)
+        hol__check_eye(x, e, &fd, ey->fbo[idx], ey->w, ey->h);
 #endif
     x->gl.BindFramebuffer(HOL__GL_FRAMEBUFFER, 0);
     XrSwapchainImageReleaseInfo ri = {XR_TYPE_SWAPCHAIN_IMAGE_RELEASE_INFO};

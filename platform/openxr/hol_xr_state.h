@@ -168,6 +168,7 @@ typedef struct hol__xr {
     long ncpu;
     double step_now;
     long draws[2], tris[2];
+    double panel_left[2], panel_pred[2]; /* the check frame's UI panel */
 #ifdef __ANDROID__
     EGLDisplay edpy;
     EGLContext ectx;
@@ -225,6 +226,11 @@ void hol__views_free(hol__xr *x);
 #ifndef __ANDROID__
 /* hol_xr_check.c: eye 0 read back against an OSMesa render of fd */
 void hol__check(hol__xr *x, const hol_frame_desc *fd, int w, int h);
+/* The check frame's eye e (bound to fbo): drawn without the HUD and read
+ * back (eye 0: hol__check on it), then drawn as shown (the UI panel) and
+ * read back; the panel's pixels (where the two differ) measured against a
+ * pinhole model of the eye: "xr: check panel ..." lines. */
+void hol__check_eye(hol__xr *x, int e, const hol_frame_desc *fd, unsigned fbo, int w, int h);
 #endif
 /* hol_xr_frame.c: one frame (xrWaitFrame to xrEndFrame); 0 ok, 1 failure */
 int hol__frame(hol__xr *x);

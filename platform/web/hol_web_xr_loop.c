@@ -94,7 +94,22 @@ EMSCRIPTEN_KEEPALIVE void hol_web_check_request(int frame)
 
 EMSCRIPTEN_KEEPALIVE uint8_t *hol_web_check_pixels(int eye)
 {
-    return eye == 0 || eye == 1 ? hol_web_g.check_px[eye] : NULL;
+    return eye >= 0 && eye < 4 ? hol_web_g.check_px[eye] : NULL;
+}
+
+/* Read the eye's viewport back into check slot k (rows bottom to top). */
+static void check_read(int k, const hol_frame_desc *fd)
+{
+    hol_web *w = &hol_web_g;
+    int ew = fd->cam.width, eh = fd->cam.height;
+    free(w->check_px[k]);
+    w->check_px[k] = malloc((size_t)ew * (size_t)eh * 4);
+    if (!w->check_px[k])
+        return;
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(fd->vp_x, fd->vp_y, ew, eh, GL_RGBA, GL_UNSIGNED_BYTE, w->check_px[k]);
+    w->check_w[k] = ew;
+    w->check_h[k] = eh;
 }
 
 /* The eye's read back (rows bottom to top, as GL gives them), and the
@@ -103,14 +118,9 @@ static void check_eye(int e, const hol_frame_desc *fd)
 {
     hol_web *w = &hol_web_g;
     int ew = fd->cam.width, eh = fd->cam.height;
-    free(w->check_px[e]);
-    w->check_px[e] = malloc((size_t)ew * (size_t)eh * 4);
+    check_read(e, fd);
     if (!w->check_px[e])
         return;
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(fd->vp_x, fd->vp_y, ew, eh, GL_RGBA, GL_UNSIGNED_BYTE, w->check_px[e]);
-    w->check_w[e] = ew;
-    w->check_h[e] = eh;
     const hol_camera *c = &fd->cam;
     printf("web: check eye %d frame %ld render --eye %.9g,%.9g,%.9g --orient %.9g,%.9g,%.9g,%.9g "
            "--tan %.17g,%.17g,%.17g,%.17g --size %dx%d cell %d,%d\n",
@@ -139,6 +149,7 @@ static void xr_render(const hol_app_view *v, const hol_input *in, int fb)
         hol_frame_desc fd;
         hol_app_frame_desc(v, n == 2 ? e : -1, cam[e].width, cam[e].height, 0, &fd);
         fd.overlay = hol_web_overlay();
+        hol_app_frame_panel(v, &fd); /* the HUD on a panel in the world */
         fd.cam = cam[e];
         fd.vp_x = (int)vw->vp[0];
         fd.vp_y = (int)vw->vp[1];
@@ -161,9 +172,23 @@ static void xr_render(const hol_app_view *v, const hol_input *in, int fb)
                 printf("web: the GL reported an error at the XR session's first frame\n");
         }
         if (checking) {
+            /* the check compares the world with `holonomy render` (no
+             * HUD): it reads back a draw without the UI panel, then the
+             * eye is drawn again as shown */
+            hol_frame_desc bare = fd;
+            bare.flags |= HOL_RENDER_NO_HUD;
+            hol_render_frame(w->rnd, &bare, NULL);
             w->check_user[e] = fd.user;
             w->check_cam[e] = fd.cam;
-            check_eye(e, &fd);
+            check_eye(e, &bare);
+            hol_render_frame(w->rnd, &fd, NULL);
+            check_read(2 + e, &fd); /* as shown: the panel's pixels differ */
+            printf("web: check panel eye %d frame %ld pos %.9g,%.9g,%.9g orient "
+                   "%.9g,%.9g,%.9g,%.9g px %.9g map %d\n",
+                   e, w->xr_frames, fd.panel_pos[0], fd.panel_pos[1], fd.panel_pos[2],
+                   fd.panel_orient[0], fd.panel_orient[1], fd.panel_orient[2],
+                   fd.panel_orient[3], fd.panel_px > 0 ? fd.panel_px : HOL_RENDER_PANEL_PX,
+                   (fd.flags & HOL_RENDER_MINIMAP) && !(fd.flags & HOL_RENDER_MINIMAP_HAND));
         }
     }
     w->xr_two_views += n == 2;

@@ -575,6 +575,80 @@ await check(`each eye read back equals the OSMesa render of the same eye (channe
   }
 });
 
+// The UI panel (issue 25): at a check frame with the head level, each eye is
+// read back without the HUD (slots 0, 1) and as shown (slots 2, 3); the
+// pixels that differ are the panel's. Against a pinhole model of the eye's
+// pose and tangents and the panel's pose (printed by the page) and its
+// documented layout (docs/headset.md: the text block 136 font pixels wide,
+// the map 6 + 64 beside it, their tops 32 above the centre).
+function turnQ(q, v) {
+  const [x, y, z, w] = q;
+  const t = [2 * (y * v[2] - z * v[1]), 2 * (z * v[0] - x * v[2]), 2 * (x * v[1] - y * v[0])];
+  return [v[0] + w * t[0] + (y * t[2] - z * t[1]), v[1] + w * t[1] + (z * t[0] - x * t[2]),
+    v[2] + w * t[2] + (x * t[1] - y * t[0])];
+}
+await check('the UI panel in both eyes read back: its left edge where its pose projects and its offset between the eyes its depth\'s, within 1 px; all of it within 20 degrees of each eye\'s axis', async () => {
+  /* turned 60 degrees, then level again: the panel re-centres on each
+   * (the glide ends within a second), so it stands ahead of the level head */
+  await xrPage.evaluate(() => xrDevice.quaternion.set(0, 0.5, 0, Math.sqrt(0.75)));
+  await waitFrames(60);
+  await xrPage.evaluate(() => xrDevice.quaternion.set(0, 0, 0, 1));
+  await waitFrames(60);
+  const at = (await xrFrames()) + 2;
+  await xrPage.evaluate((f) => Module._hol_web_check_request(f), at);
+  await xr.until(async () => (await xrFrames()) > at, 'the check frame', 30000);
+  const left = [], pred = [];
+  for (let e = 0; e < 2; e++) {
+    const eyeLine = xr.log.find((l) => l.startsWith(`web: check eye ${e} frame ${at} `));
+    const panLine = xr.log.find((l) => l.startsWith(`web: check panel eye ${e} frame ${at} `));
+    assert(eyeLine && panLine, 'no check lines for eye ' + e);
+    const m = / --eye (\S+) --orient (\S+) --tan (\S+) --size (\d+)x(\d+)/.exec(eyeLine);
+    const eye = m[1].split(',').map(Number), q = m[2].split(',').map(Number);
+    const [tl, tr, td, tu] = m[3].split(',').map(Number), w = +m[4], h = +m[5];
+    const pm = / pos (\S+) orient (\S+) px (\S+) map (\d)$/.exec(panLine);
+    const pos = pm[1].split(',').map(Number), pq = pm[2].split(',').map(Number), px = +pm[3];
+    const read = async (slot) => Buffer.from(await xrPage.evaluate((k, n) => {
+      const p = Module._hol_web_check_pixels(k);
+      let s = '';
+      const b = HEAPU8.subarray(p, p + n);
+      for (let i = 0; i < b.length; i += 32768) s += String.fromCharCode.apply(null, b.subarray(i, i + 32768));
+      return btoa(s);
+    }, slot, w * h * 4), 'base64');
+    const bare = await read(e), shown = await read(2 + e);
+    const img = Buffer.alloc(w * h * 4);
+    let n = 0, top = -1, lft = w, worst = 0;
+    for (let y = 0; y < h; y++) { /* y from the top; GL's rows bottom to top */
+      const r = h - 1 - y;
+      shown.copy(img, y * w * 4, r * w * 4, (r + 1) * w * 4);
+      for (let x = 0; x < w; x++) {
+        const i = (r * w + x) * 4;
+        if (bare[i] === shown[i] && bare[i + 1] === shown[i + 1] && bare[i + 2] === shown[i + 2]) continue;
+        n++;
+        if (top < 0) top = y;
+        if (y === top + 1) lft = Math.min(lft, x); /* the block's second row: whole pixels */
+        const tx = tl + (x + 0.5) / w * (tr - tl), ty = tu - (y + 0.5) / h * (tu - td);
+        worst = Math.max(worst, Math.abs(Math.atan(tx)), Math.abs(Math.atan(ty)));
+      }
+    }
+    fs.writeFileSync(path.join(OUT, `xr-panel-eye${e}.png`), encodePNG(img, w, h));
+    const u = -(136 + (+pm[4] ? 70 : 0)) / 2 * px, v = 32 * px;
+    const rx = turnQ(pq, [1, 0, 0]), up = turnQ(pq, [0, 1, 0]);
+    const d = [0, 1, 2].map((k) => pos[k] + u * rx[k] + v * up[k] - eye[k]);
+    const c = turnQ([-q[0], -q[1], -q[2], q[3]], d);
+    const p = ((c[0] / -c[2]) - tl) / (tr - tl) * w;
+    const deg = worst * 180 / Math.PI;
+    console.log(`# panel eye ${e} ${w}x${h}: ${n} pixels, left edge ${lft} px (predicted ${p.toFixed(2)}), at most ${deg.toFixed(1)} degrees from the axis`);
+    assert(n > 100, `eye ${e}: ${n} panel pixels`);
+    assert(c[2] < 0 && Math.abs(lft - p) <= 1, `eye ${e}: left edge ${lft}, predicted ${p.toFixed(2)}`);
+    assert(deg <= 20, `eye ${e}: a panel pixel ${deg.toFixed(1)} degrees from the axis`);
+    left.push(lft);
+    pred.push(p);
+  }
+  const dm = left[0] - left[1], dp = pred[0] - pred[1];
+  console.log(`# panel offset between the eyes ${dm} px (predicted ${dp.toFixed(2)})`);
+  assert(dp > 3 && Math.abs(dm - dp) <= 1, `offset ${dm} px, predicted ${dp.toFixed(2)}`);
+});
+
 await check('a scripted head walk makes one room step north', async () => {
   await xrPage.evaluate(() => xrDevice.quaternion.set(0, 0, 0, 1));
   const before = steps(xr.log).length;

@@ -80,6 +80,21 @@ check "quit went through STOPPING to EXITING" \
 pct=$(sed -n 's/^xr: check frame .*(\([0-9.]*\) %).*/\1/p' "$out/xr.out")
 check "sRGB swapchain read back (after the GL's encoding) equals the OSMesa render (${pct:-none} % of pixels differ; at most 0.5)" \
     '[ -n "$pct" ] && grep -q "^xr: check frame .*(sRGB swapchain)" $all && awk "BEGIN{exit !($pct <= 0.5)}"'
+# the UI panel in the eyes read back from the swapchain (issue 25): its pixels
+# are where the check frame drawn with and without it differ; "xr: check
+# panel eye E: N pixels, left edge X px (predicted P), at most D degrees ..."
+panel_eye_ok() {
+    echo "$1" | awk '{ p = $13; sub(/\),?/, "", p)
+        exit !($6 > 100 && $10 - p <= 1 && p - $10 <= 1 && $16 <= 20) }'
+}
+for e in 0 1; do
+    l=$(grep "^xr: check panel eye $e:" "$out/xr.out")
+    check "UI panel in eye $e: its left edge where its pose projects, within 1 px, all of it within 20 degrees of the eye's axis (${l#xr: check panel eye })" \
+        'panel_eye_ok "$l"'
+done
+l=$(sed -n 's/^xr: check panel disparity \([-0-9]*\) px (predicted \([-0-9.]*\))$/\1 \2/p' "$out/xr.out")
+check "UI panel: its offset between the eyes is its depth's, within 1 px (measured, predicted: ${l:-none})" \
+    'echo "$l" | awk "{ exit !(NF == 2 && \$2 > 3 && \$1 - \$2 <= 1 && \$2 - \$1 <= 1) }"'
 check "the core validation layer ran" 'grep -q "Core Validation" $all'
 check "no VALID_ERROR or VALID_WARNING from the validation layer" \
     '! grep -q "VALID_ERROR\|VALID_WARNING" $all'
