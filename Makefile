@@ -103,13 +103,13 @@ DEB_PACKAGES := make gcc clang libcmocka-dev libosmesa6-dev libegl-dev \
 # libc6-dev-arm64-cross is only a Recommends of gcc-aarch64-linux-gnu, and
 # deps installs without recommends: it must be named here.
 # apt waits up to APT_LOCK_WAIT seconds for another apt/dpkg to finish
-# (tools/apt_get.sh: dpkg's lock through DPkg::Lock::Timeout, the lists'
+# (platform/debian/apt_get.sh: dpkg's lock through DPkg::Lock::Timeout, the lists'
 # and archives' locks, which that option does not cover, by trying again).
 # APT_GET_CMD: the program run (the tests give a fake one).
 APT_LOCK_WAIT ?= 120
 APT_GET_CMD ?= apt-get
 APT_GET = $$SUDO env DEBIAN_FRONTEND=noninteractive APT_GET_CMD=$(APT_GET_CMD) \
-  sh tools/apt_get.sh $(APT_LOCK_WAIT)
+  sh platform/debian/apt_get.sh $(APT_LOCK_WAIT)
 
 .PHONY: web web-serve web-serve-https web-test deps-web bench-web test-suites
 .PHONY: all test purity fn-length unit render-test cli-test fuzz-replay fuzz bench san san-cli clean deps xr \

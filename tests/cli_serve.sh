@@ -3,7 +3,7 @@
 # platform/web/serve.py started on 127.0.0.1 with a free port, fetched with
 # curl (Accept-Encoding br, gzip, none; Content-Encoding, Cache-Control,
 # ETag and 304, types, nothing outside the folder), stopped; HTTPS with the
-# certificate of platform/web/make_cert.sh; tools/apt_get.sh waiting for an
+# certificate of platform/web/make_cert.sh; platform/debian/apt_get.sh waiting for an
 # apt lock (a fake apt-get); the make targets' order and messages.
 # Loopback only, everything in a scratch folder; each server is stopped by
 # its own process id.
@@ -152,7 +152,7 @@ if [ "$skip_server" = 0 ]; then
     fi
 fi
 
-# ---- tools/apt_get.sh: waits while another apt holds a lock ----------------
+# ---- platform/debian/apt_get.sh: waits while another apt holds a lock ----------------
 cat >"$T/fake-apt" <<'EOF'
 #!/bin/sh
 # fails with apt's lock message while $FAKE_DIR/locked-N counts down
@@ -171,17 +171,17 @@ chmod +x "$T/fake-apt"
 export FAKE_DIR="$T/fake"
 mkdir -p "$FAKE_DIR"
 echo 2 >"$FAKE_DIR/locked"
-run "apt waits for the lock" 0 env APT_GET_CMD="$T/fake-apt" sh "$R/tools/apt_get.sh" 20 update -qq
+run "apt waits for the lock" 0 env APT_GET_CMD="$T/fake-apt" sh "$R/platform/debian/apt_get.sh" 20 update -qq
 [ "$(wc -l <"$FAKE_DIR/calls")" = 3 ] && ok || bad "apt_get: $(wc -l <"$FAKE_DIR/calls") calls, want 3"
 grep -q 'waiting up to 20 s' "$T/out" && ok || bad "apt_get: no word about the wait"
 grep -q -- '-o DPkg::Lock::Timeout=20 update -qq' "$FAKE_DIR/calls" && ok || bad "apt_get args: $(head -1 "$FAKE_DIR/calls")"
 rm -f "$FAKE_DIR/calls"; echo always >"$FAKE_DIR/locked"
 s0=$(date +%s)
-run "apt gives up" 100 env APT_GET_CMD="$T/fake-apt" sh "$R/tools/apt_get.sh" 2 update
+run "apt gives up" 100 env APT_GET_CMD="$T/fake-apt" sh "$R/platform/debian/apt_get.sh" 2 update
 s1=$(date +%s)
 [ $((s1 - s0)) -le 8 ] && grep -q 'Could not get lock' "$T/out" && ok || bad "apt_get: gave up after $((s1 - s0)) s"
 rm -f "$FAKE_DIR/calls"; echo 0 >"$FAKE_DIR/locked"; touch "$FAKE_DIR/broken"
-run "apt other error" 100 env APT_GET_CMD="$T/fake-apt" sh "$R/tools/apt_get.sh" 20 install nope
+run "apt other error" 100 env APT_GET_CMD="$T/fake-apt" sh "$R/platform/debian/apt_get.sh" 20 install nope
 [ "$(wc -l <"$FAKE_DIR/calls")" = 1 ] && ok || bad "apt_get retried another error"
 rm -f "$FAKE_DIR/broken" "$FAKE_DIR/calls"
 
@@ -189,14 +189,14 @@ rm -f "$FAKE_DIR/broken" "$FAKE_DIR/calls"
 # dry run is checked first so that an older Makefile never reaches apt)
 M() { env -u MAKEFLAGS -u MAKELEVEL -u MFLAGS make --no-print-directory -C "$R" "$@"; }
 if [ "$(id -u)" = 0 ] && M -n deps DEB_PACKAGES=holonomy-no-such-package APT_GET_CMD="$T/fake-apt" |
-        grep -q 'tools/apt_get.sh'; then
+        grep -q 'platform/debian/apt_get.sh'; then
     ok
     echo 1 >"$FAKE_DIR/locked"
     run "make deps waits" 0 M -s deps DEB_PACKAGES=holonomy-no-such-package APT_GET_CMD="$T/fake-apt" APT_LOCK_WAIT=20
     grep -q 'install -y -qq --no-install-recommends holonomy-no-such-package' "$FAKE_DIR/calls" && ok ||
         bad "make deps: $(cat "$FAKE_DIR/calls")"
 elif [ "$(id -u)" = 0 ]; then
-    bad "make deps does not run tools/apt_get.sh"
+    bad "make deps does not run platform/debian/apt_get.sh"
 fi
 
 # ---- make's order and messages ---------------------------------------------
