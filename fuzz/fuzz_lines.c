@@ -82,15 +82,18 @@ static void check_repeats(const uint8_t *d, size_t n, int which)
         a = e + 1;
     }
     argv[argc] = NULL;
-    /* the model */
-    int repeated = 0;
-    for (int i = 1; i < argc && !repeated; i++) {
+    /* the model: options end at the first "--" */
+    int repeated = 0, end = 1;
+    while (end < argc && strcmp(argv[end], "--"))
+        end++;
+    for (int i = 1; i < end && !repeated; i++) {
         size_t ni = strcspn(argv[i], "=");
         if (strncmp(argv[i], "--", 2) || !argv[i][2])
             continue;
-        if (!strcmp(cmd, "render") && ni == 8 && !strncmp(argv[i], "--target", 8))
+        if (!strcmp(cmd, "render") && ((ni == 8 && !strncmp(argv[i], "--target", 8)) ||
+                                       (ni == 9 && !strncmp(argv[i], "--lantern", 9))))
             continue;
-        for (int j = i + 1; j < argc && !repeated; j++)
+        for (int j = i + 1; j < end && !repeated; j++)
             repeated = argv[j][0] == '-' && argv[j][1] == '-' && argv[j][2] &&
                        strcspn(argv[j], "=") == ni && !strncmp(argv[i], argv[j], ni);
     }
