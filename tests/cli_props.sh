@@ -130,9 +130,9 @@ run "out a FIFO" 2 "$H" props --out "$T/fifo" && one_line "out a FIFO" "FIFO"
 
 # the output is the level: refused, the level untouched (also through a link)
 cp "$T/lv.lvl" "$T/keep.lvl"
-run "out is the level" 2 "$H" props --level "$T/lv.lvl" --out "$T/lv.lvl" && one_line "out is level" "is the level file"
+run "out is the level" 2 "$H" props --level "$T/lv.lvl" --out "$T/lv.lvl" && one_line "out is level" "which this command reads"
 ln -s lv.lvl "$T/link.svg"
-run "out links to the level" 2 "$H" props --level "$T/lv.lvl" --out "$T/link.svg" && one_line "link" "is the level file"
+run "out links to the level" 2 "$H" props --level "$T/lv.lvl" --out "$T/link.svg" && one_line "link" "which this command reads"
 cmp -s "$T/lv.lvl" "$T/keep.lvl" && ok || bad "the level was changed"
 
 # atomic: an existing plan is replaced whole, no temporary file left

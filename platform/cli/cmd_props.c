@@ -4,7 +4,6 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 
 #include "../../core/hol_fit.h"
 #include "../../core/hol_props.h"
@@ -126,18 +125,12 @@ static int props_parse(const char *cmd, int argc, char **argv, props_args *a)
     return 0;
 }
 
-/* 2 (reported) when out names the level file itself (also through a link). */
+/* 2 (reported) when out names the level file itself (also through a
+ * link): the check every command makes (cli_check_distinct). */
 static int props_out_is_input(const char *cmd, const props_args *a)
 {
-    struct stat si, so;
-    if (!a->level || stat(a->level, &si) || stat(a->out, &so))
-        return 0;
-    if (si.st_dev != so.st_dev || si.st_ino != so.st_ino)
-        return 0;
-    char esc[256];
-    cli_error(cmd, 0, "--out '%s' is the level file; write the plan to another file",
-              cli_escape(a->out, esc, sizeof esc));
-    return CLI_EXIT_USAGE;
+    const cli_path in = {"--level", a->level}, out = {"--out", a->out};
+    return cli_check_distinct(cmd, &in, 1, &out, 1);
 }
 
 /* The plan's geometry: the level, the options, the fitted play area. */
