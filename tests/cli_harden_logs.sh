@@ -164,17 +164,26 @@ run "report of k2" 0 "$H" report k2 --out r2
        printf "%.17g f=9%s h=%.4f,1.6,1.5,0,0,0,1\n", t, (k % 30 == 29 ? " p=20" : ""), x } }'
 } >long.rec
 mkdir kr
+# until_new DIR N PID: until DIR holds other than N entries or PID has ended
+# (at most 1000 polls 5 ms apart). Shell builtins but sleep: the poll used
+# `ls | wc -l` and cost more CPU than the replays it waits for.
+until_new() {
+    un_d=$1 un_n=$2 un_p=$3
+    for i in $(seq 1 1000); do
+        set -- "$un_d"/*
+        [ -e "$1" ] || set --
+        [ "$#" != "$un_n" ] && return 0
+        kill -0 "$un_p" 2>/dev/null || return 0
+        sleep 0.005
+    done
+}
 # each kill falls a moment after the replay's first new file (its level, its
 # first attempt's files: before their first flush), or later
 for d in 0 0 0.002 0.01 0.05 0.2; do
     before=$(ls kr | wc -l)
     "$H" replay long.rec --log kr --append >/dev/null 2>&1 &
     pid=$!
-    for i in $(seq 1 1000); do
-        [ "$(ls kr | wc -l)" != "$before" ] && break
-        kill -0 $pid 2>/dev/null || break
-        sleep 0.005
-    done
+    until_new kr "$before" $pid
     sleep $d
     kill -9 $pid 2>/dev/null
     wait $pid 2>/dev/null
