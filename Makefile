@@ -71,6 +71,14 @@ $(BUILD)/platform/hid/hol_hid_dev.o: override CFLAGS += -DHOL_HID_BACKEND='"$(HI
 RENDER_TEST_SRC := $(wildcard tests/test_render*.c)
 UNIT_SRC := $(filter-out $(RENDER_TEST_SRC),$(wildcard tests/test_*.c))
 CLI_TESTS := $(wildcard tests/cli_*.sh)
+# Suites that take long (CPU time measured by tests/timed.sh) run first, so
+# that make -j2 does not end with one long suite running alone; the others
+# follow in name order (a new suite needs no entry here).
+SLOW_FIRST := cli_harden_logs cli_play cli_docs cli_nav cli_session cli_harden cli_level \
+              cli_harden_opts cli_game cli_hostile cli_world cli_replay cli_gl_sync \
+              test_nav test_world test_app test_tile test_level
+slow_first = $(foreach s,$(SLOW_FIRST),$(filter %/$(s).c %/$(s).sh,$(1))) \
+             $(filter-out $(foreach s,$(SLOW_FIRST),%/$(s).c %/$(s).sh),$(1))
 # Libraries the renderer needs (headless OSMesa; EGL for the desktop build).
 RENDER_LIBS ?= -lOSMesa -lEGL -lX11 -lz
 # tests/bench_render*.c: benches that also link the renderer and GL.
@@ -226,7 +234,8 @@ run: deps
 test: deps
 	@$(MAKE) --no-print-directory test-suites
 
-test-suites: all purity fn-length tiling-gen-check unit render-test cli-test fuzz-replay
+# cli-test before unit: its suites are the long ones (see SLOW_FIRST).
+test-suites: all purity fn-length tiling-gen-check cli-test unit render-test fuzz-replay
 	@echo "make test: all suites passed"
 
 # The automata of canonical addresses (core/hol_tile_dfa.h) are derived from
@@ -256,10 +265,10 @@ fn-length:
 
 # Each suite is a target of its own, so make -j2 runs two at once; a suite's
 # output is kept until it ends, then printed whole (tests/suite.sh) with its
-# time after it ("-- NAME: S.S s", tests/timed.sh).
+# time after it ("-- NAME: S.S s, cpu C.C s", tests/timed.sh).
 TIMED := sh tests/timed.sh
 SUITE := sh tests/suite.sh $(BUILD)/suite-logs
-unit: $(UNIT_BIN) $(UNIT_BIN:$(BUILD)/tests/%=unit-run-%)
+unit: $(UNIT_BIN) $(patsubst tests/%.c,unit-run-%,$(call slow_first,$(UNIT_SRC)))
 unit-run-%: $(BUILD)/tests/%
 	@$(SUITE) $< $<
 
@@ -267,7 +276,7 @@ render-test: $(RENDER_TEST_BIN) $(RENDER_TEST_BIN:$(BUILD)/tests/%=render-run-%)
 render-run-%: $(BUILD)/tests/%
 	@$(SUITE) $< $<
 
-cli-test: $(CLI_TESTS:tests/%.sh=cli-run-%)
+cli-test: $(patsubst tests/%.sh,cli-run-%,$(call slow_first,$(CLI_TESTS)))
 cli-run-%: $(BUILD)/holonomy $(BUILD)/tests/x11_close $(BUILD)/tests/x11_shot $(BUILD)/tests/png_probe \
            $(BUILD)/tests/gl_sync_count.so
 	@HOLONOMY=$(BUILD)/holonomy X11_CLOSE=$(BUILD)/tests/x11_close X11_SHOT=$(BUILD)/tests/x11_shot \
@@ -341,7 +350,7 @@ check-clang:
 cross-test: deps-cross
 	$(MAKE) CC=aarch64-linux-gnu-gcc AR=aarch64-linux-gnu-ar BUILD=$(BUILD)/aarch64 \
 	  $(UNIT_SRC:tests/%.c=$(BUILD)/aarch64/tests/%) $(BUILD)/aarch64/libholrender.a
-	@$(MAKE) -s $(UNIT_SRC:tests/%.c=cross-run-%)
+	@$(MAKE) -s $(patsubst tests/%.c,cross-run-%,$(call slow_first,$(UNIT_SRC)))
 cross-run-%:
 	@$(SUITE) "$(BUILD)/aarch64/tests/$* (qemu-aarch64)" \
 	  qemu-aarch64 -L /usr/aarch64-linux-gnu $(BUILD)/aarch64/tests/$*
