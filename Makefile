@@ -120,7 +120,7 @@ APT_GET = $$SUDO env DEBIAN_FRONTEND=noninteractive APT_GET_CMD=$(APT_GET_CMD) \
   sh platform/debian/apt_get.sh $(APT_LOCK_WAIT)
 
 .PHONY: web web-serve web-serve-https web-test deps-web bench-web test-suites
-.PHONY: all test purity fn-length unit render-test cli-test fuzz-replay fuzz bench san san-cli clean deps xr \
+.PHONY: all test purity fn-length unit render-test cli-test fuzz-replay fuzz bench san san-cli san-all clean deps xr \
         deps-cross check-clang cross-test run quest quest-help deps-quest quest-check check-hid-libusb deps-xr xr-test soak \
         deps-quest-link quest-link-check
 
@@ -279,7 +279,7 @@ render-run-%: $(BUILD)/tests/%
 cli-test: $(patsubst tests/%.sh,cli-run-%,$(call slow_first,$(CLI_TESTS)))
 cli-run-%: $(BUILD)/holonomy $(BUILD)/tests/x11_close $(BUILD)/tests/x11_shot $(BUILD)/tests/png_probe \
            $(BUILD)/tests/gl_sync_count.so
-	@HOLONOMY=$(BUILD)/holonomy X11_CLOSE=$(BUILD)/tests/x11_close X11_SHOT=$(BUILD)/tests/x11_shot \
+	@$(CLI_ENV) HOLONOMY=$(BUILD)/holonomy X11_CLOSE=$(BUILD)/tests/x11_close X11_SHOT=$(BUILD)/tests/x11_shot \
 	  PNG_PROBE=$(BUILD)/tests/png_probe GL_SYNC_SO=$(BUILD)/tests/gl_sync_count.so \
 	  $(SUITE) tests/$*.sh sh tests/$*.sh
 
@@ -336,10 +336,17 @@ san:
 # The command-line tests against the tool itself built with ASan + UBSan
 # (Mesa's own leaks are not ours: leak detection is off for the GL paths).
 SAN_FLAGS := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
+# CLI_ENV: set for the CLI suites only (the unit tests keep leak detection).
+CLI_ENV ?=
+SAN_CLI_ENV := ASAN_OPTIONS=detect_leaks=0:abort_on_error=0 UBSAN_OPTIONS=print_stacktrace=1
 san-cli:
-	ASAN_OPTIONS=detect_leaks=0:abort_on_error=0 UBSAN_OPTIONS=print_stacktrace=1 \
 	$(MAKE) BUILD=$(BUILD)/san OPT=-O1 CFLAGS="$(SAN_FLAGS)" \
-	  LDFLAGS="-fsanitize=address,undefined" cli-test
+	  LDFLAGS="-fsanitize=address,undefined" CLI_ENV="$(SAN_CLI_ENV)" cli-test
+# make san and make san-cli as one make (CI): the unit tests fill the two
+# slots of make -j2 while the long CLI suites run, with no idle end between.
+san-all:
+	$(MAKE) BUILD=$(BUILD)/san OPT=-O1 CFLAGS="$(SAN_FLAGS)" \
+	  LDFLAGS="-fsanitize=address,undefined" CLI_ENV="$(SAN_CLI_ENV)" cli-test unit
 
 check-clang:
 	$(MAKE) CC=clang BUILD=$(BUILD)/clang all $(UNIT_BIN:$(BUILD)/%=$(BUILD)/clang/%)
