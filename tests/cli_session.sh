@@ -182,13 +182,15 @@ if ! start_xvfb 211; then
 fi
 
 # live NAME: play in real time (the default campaign) with logs and a
-# recording in $T/NAME; pid in $pid once its window exists
+# recording in $T/NAME; pid in $pid once its window exists (polled up to
+# 30 s: on a loaded machine the first attempt's files took over 5 s, and a
+# signal before them left no attempt to check)
 live() {
     mkdir -p "$T/$1"
     "$H" play --size 64x48 --log "$T/$1/logs" --record "$T/$1/s.rec" --participant P01 \
         >"$T/$1/out" 2>"$T/$1/err" &
     pid=$!
-    for i in $(seq 1 50); do
+    for i in $(seq 1 300); do
         [ -f "$T/$1/logs/head-001.csv.live" ] && break
         sleep 0.1
     done
