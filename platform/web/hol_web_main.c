@@ -175,7 +175,8 @@ static void poll_gamepad(hol_web_pancake *p)
  * 0 app steps, 1 XR frames, 2 XR frames with two views, 3 XR frames
  * focused, 4 the app state (hol_app_state), 5 paused, 6 room steps in the
  * level, 7 the session is over, 8 failed, 9 head x, 10 head z, 11 cell
- * column, 12 cell row, 13 the level clock, 14 yaw. */
+ * column, 12 cell row, 13 the level clock, 14 yaw, 15 the device the
+ * prompts name (HOL_DEVICE_*). */
 EMSCRIPTEN_KEEPALIVE double hol_web_state(int what)
 {
     hol_web *w = &hol_web_g;
@@ -201,6 +202,7 @@ EMSCRIPTEN_KEEPALIVE double hol_web_state(int what)
     case 12: return v->user.row;
     case 13: return v->hud.elapsed_s;
     case 14: return v->yaw_deg;
+    case 15: return v->hud.device;
     default: return -1;
     }
 }
@@ -244,6 +246,13 @@ EMSCRIPTEN_KEEPALIVE double hol_web_cpu_mean_ms(int reset)
 EMSCRIPTEN_KEEPALIVE const char *hol_web_overlay(void)
 {
     return hol_web_g.overlay ? hol_web_g.overlay_text : NULL;
+}
+
+/* The prompt line the HUD shows (on the world panel in VR: "LEFT PINCH:
+ * menu" in a session's first seconds with hands), for the tests. */
+EMSCRIPTEN_KEEPALIVE const char *hol_web_hint(void)
+{
+    return hol_web_game_app() ? hol_app_get_view(hol_web_game_app())->hud.hint : "";
 }
 
 #define HOL_WEB_UNTOLD "?"
