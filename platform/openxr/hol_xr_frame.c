@@ -118,10 +118,8 @@ static int hol__input(hol__xr *x, const XrFrameState *fs, hol_input *in, float s
         return 1;
     if (head)
         in->flags |= HOL_INPUT_HEAD_VALID;
-    if (head && x->recentred) { /* the runtime's recentre, told once with a head */
-        in->flags |= HOL_INPUT_RECENTRED;
-        x->recentred = 0;
-    }
+    /* the runtime's recentre, or the session begun again: told once with a head */
+    in->flags |= hol_xr_life_take(&x->life, head);
     if (x->life.focused && hol__hands(x, fs->predictedDisplayTime, in))
         return 1;
     if ((in->buttons & HOL_BTN_RECENTRE) && !(x->prev_buttons & HOL_BTN_RECENTRE) && head)

@@ -161,7 +161,6 @@ typedef struct hol__xr {
     XrTime t0;
     double last_t;
     unsigned prev_buttons;
-    int recentred; /* the runtime moved the space's origin: the next record says so */
     int grips_located[2];
     long faded; /* frames drawn with the safety fade */
     double cpu_ms[4096], step_ms[4096];
