@@ -182,7 +182,7 @@ static int hol__draw_eye(hol__xr *x, int e, const hol_app_view *v, const hol_inp
     HOL__XR(x, "draw the next frame", xrWaitSwapchainImage(ey->swapchain, &wi));
     if (idx >= ey->nimages)
         return hol__error(x, "the runtime gave swapchain image %u of %u", idx, ey->nimages);
-    x->gl.BindFramebuffer(HOL__GL_FRAMEBUFFER, ey->fbo[idx]);
+    x->gl.BindFramebuffer(HOL__GL_FRAMEBUFFER, ey->samples > 1 ? ey->msaa_fbo : ey->fbo[idx]);
     x->gl.Viewport(0, 0, ey->w, ey->h);
     hol_frame_desc fd;
     hol_app_frame_desc(v, e, ey->w, ey->h, 0, &fd);
@@ -215,6 +215,12 @@ static int hol__draw_eye(hol__xr *x, int e, const hol_app_view *v, const hol_inp
     if (fade == 0) { /* the figures of a full view */
         x->draws[e] = rs.draw_calls;
         x->tris[e] = rs.triangles;
+    }
+    if (ey->samples > 1) { /* the multisampled eye resolved into the image */
+        x->gl.BindFramebuffer(HOL__GL_READ_FRAMEBUFFER, ey->msaa_fbo);
+        x->gl.BindFramebuffer(HOL__GL_DRAW_FRAMEBUFFER, ey->fbo[idx]);
+        x->gl.BlitFramebuffer(0, 0, ey->w, ey->h, 0, 0, ey->w, ey->h, HOL__GL_COLOR_BUFFER_BIT,
+                              HOL__GL_NEAREST);
     }
 #ifndef __ANDROID__
     if (x->d->check_dir && x->submitted == x->d->check_frame && inside && fd.fade == 0)

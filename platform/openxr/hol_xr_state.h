@@ -76,6 +76,10 @@ typedef int hol__GLsizei;
 #define HOL__GL_TEXTURE_2D 0x0DE1
 #define HOL__GL_FRAMEBUFFER_COMPLETE 0x8CD5
 #define HOL__GL_FRAMEBUFFER_SRGB 0x8DB9
+#define HOL__GL_READ_FRAMEBUFFER 0x8CA8
+#define HOL__GL_DRAW_FRAMEBUFFER 0x8CA9
+#define HOL__GL_COLOR_BUFFER_BIT 0x4000
+#define HOL__GL_NEAREST 0x2600
 
 typedef struct hol__gl {
     void (*GenFramebuffers)(hol__GLsizei, hol__GLuint *);
@@ -91,6 +95,10 @@ typedef struct hol__gl {
     void (*Viewport)(hol__GLint, hol__GLint, hol__GLsizei, hol__GLsizei);
     void (*Enable)(hol__GLenum);
     void (*Disable)(hol__GLenum);
+    void (*RenderbufferStorageMultisample)(hol__GLenum, hol__GLsizei, hol__GLenum, hol__GLsizei,
+                                           hol__GLsizei);
+    void (*BlitFramebuffer)(hol__GLint, hol__GLint, hol__GLint, hol__GLint, hol__GLint,
+                            hol__GLint, hol__GLint, hol__GLint, unsigned int, hol__GLenum);
 } hol__gl;
 
 /* metres the app's head keeps from the hedges: the motion's default margin
@@ -116,6 +124,9 @@ typedef struct hol__eye {
     hol__image *images; /* nimages, from the runtime */
     hol__GLuint *fbo;   /* one per image */
     hol__GLuint depth;
+    int samples;        /* hol_xr_pick_samples; > 1: drawn into msaa_fbo,
+                           resolved into the image's fbo */
+    hol__GLuint msaa_fbo, msaa_color, msaa_depth;
 } hol__eye;
 
 typedef struct hol__xr {
