@@ -93,7 +93,10 @@ enum hol_input_device {
                                    the menu, a long pinch (either hand) backs
                                    and in the menu quits
                                    (platform/web/hol_web_xr.h) */
-    HOL_DEVICE_COUNT = 11
+    HOL_DEVICE_XR_HAND = 11,    /* OpenXR hands (XR_EXT_hand_interaction):
+                                   pinches and grasps
+                                   (platform/openxr/hol_xr_bind.h) */
+    HOL_DEVICE_COUNT = 12
 };
 
 enum { HOL_HAND_LEFT = 0, HOL_HAND_RIGHT = 1 };

@@ -35,6 +35,11 @@ static const char *const hol__words[HOL_DEVICE_COUNT][HOL__NBTN] = {
      * confirms, a left pinch opens the menu, a pinch held a second backs
      * (in the menu it quits) */
     [HOL_DEVICE_WEBXR_HAND] = {"PINCH", "LONG PINCH", "LEFT PINCH", NULL, NULL, NULL, NULL, NULL},
+    /* OpenXR's hands (ext/hand_interaction_ext): right pinch confirm, left
+     * pinch menu, left grasp recentre, right grasp minimap (in the menu:
+     * quit) */
+    [HOL_DEVICE_XR_HAND] = {"PINCH", NULL, "LEFT PINCH", "LEFT GRASP", "GRASP", NULL, "GRASP",
+                            NULL},
 };
 
 const char *hol_prompt_button(uint32_t device, uint32_t btn)

@@ -156,6 +156,12 @@ static int hol__step(hol__xr *x, const hol_input *in, const hol_app_view **out_v
         return hol__error(x, "the app step failed");
     x->in_menu = *out_v && (*out_v)->paused && x->life.focused;
     hol__room_size(x, *out_v);
+    /* the panel's prompt line, said when it changes (the first seconds
+     * name the menu's control: "xr: prompt MENU: menu") */
+    if (*out_v && strcmp((*out_v)->hud.hint, x->prompt)) {
+        snprintf(x->prompt, sizeof x->prompt, "%s", (*out_v)->hud.hint);
+        hol__say(x, "xr: prompt %s", x->prompt[0] ? x->prompt : "(none)");
+    }
     if (x->fns->level_started(x->fns->user))
         hol_render_invalidate(x->rnd);
     if ((st > 0 || (x->d->frames > 0 && x->submitted + 1 >= x->d->frames)) &&

@@ -154,6 +154,7 @@ typedef struct hol__xr {
     int profile[2];   /* the hands' interaction profiles (hol_xr_bind.h), -1 none */
     int any_profile;  /* a hand has a profile not in hol_xr_bind.h's list */
     int reached_focused;
+    int hand_interaction; /* XR_EXT_hand_interaction enabled (the runtime lists it) */
     int failed;       /* a failure was reported: the run ends with status 1 */
     int lost;         /* the session or the instance is gone */
     int external;     /* the instance and GL context are the caller's */
@@ -163,6 +164,7 @@ typedef struct hol__xr {
     int bounds_small; /* the room in play (or the fit) is larger than them */
     hol_fit fit;      /* with have_bounds: what they hold (core/hol_fit.h) */
     char fit_text[160]; /* its line (hol_fit_text) */
+    char prompt[HOL_APP_HINT_MAX]; /* the prompt line said last */
     double room_w, room_d; /* the room in play, metres (0: not known yet) */
     hol_app_view note;  /* the view drawn while the fit is told on the HUD */
     hol__gl gl;
