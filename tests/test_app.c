@@ -1018,6 +1018,8 @@ static void test_prompts_name_buttons(void **state)
         {HOL_DEVICE_XR_WMR, "TRIGGER: next level",
          "MENU: resume, TRIGGER: restart, TRACKPAD: quit"},
         {HOL_DEVICE_WEBXR_TOUCH, "A: next level", "Y: resume, A: restart, B: quit"},
+        /* OpenXR's hands (XR_EXT_hand_interaction): the right grasp quits */
+        {HOL_DEVICE_XR_HAND, "PINCH: next level", "LEFT PINCH: resume, PINCH: restart, GRASP: quit"},
         /* hands alone: a long pinch backs, so it quits in the menu */
         {HOL_DEVICE_WEBXR_HAND, "PINCH: next level",
          "LEFT PINCH: resume, PINCH: restart, LONG PINCH: quit"},
