@@ -387,7 +387,7 @@ await check('entering, leaving and entering VR again walks nothing: walk a step 
   await p.ctx.close();
 });
 
-await check('the page in every state: why VR is unavailable (no headset; plain http from a LAN address), Enter and Exit VR, the pause\'s reason (window not focused, headset off, menu), F2\'s frame time, over: no Enter VR, Play again', async () => {
+await check('the page in every state: why VR is unavailable (no headset; plain http from a LAN address), Enter and Exit VR (the first seconds name Y for the menu), the pause\'s reason (window not focused, headset off, menu), F2\'s frame time, over: no Enter VR, Play again', async () => {
   // no headset: chromium's WebXR with no device
   const a = await openPage('?mode=explore&seed=2');
   let b = await vrButton(a);
@@ -432,6 +432,10 @@ await check('the page in every state: why VR is unavailable (no headset; plain h
   await enterVR(p);
   await p.until(async () => (await vrButton(p)).text === 'Exit VR', 'Exit VR');
   assert((await statusOf(p)) === 'In VR', 'status in VR: ' + (await statusOf(p)));
+  // the first seconds with the Quest's controllers: the panel names Y
+  const firstHint = await p.until(() => p.page.evaluate(() => UTF8ToString(Module._hol_web_hint())),
+    'a prompt in the first seconds', 10000);
+  assert(firstHint === 'Y: menu', 'the first seconds\' prompt with controllers: ' + firstHint);
   await p.page.evaluate(() => xrDevice.updateVisibilityState('hidden'));
   await p.until(async () => (await statusOf(p)) === 'Paused: the headset is off', 'the headset-off pause');
   await p.page.evaluate(() => xrDevice.updateVisibilityState('visible'));
