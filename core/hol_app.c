@@ -546,6 +546,9 @@ hol_err hol_app_step(hol_app *app, const hol_input *in)
         dt = 0;
     }
     hol_err err = HOL_OK;
+    if (!app->device_seen || in->device != app->device)
+        app->device_t = in->time_s; /* the menu's hint starts (hol_app.h) */
+    app->device_seen = 1;
     app->device = in->device;
     if (app->menu && !(pressed & HOL_BTN_MENU)) {
         /* the menu: confirm restarts, back quits (menu resumes) */

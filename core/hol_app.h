@@ -88,6 +88,10 @@ enum hol_app_minimap_place { HOL_MINIMAP_HUD = 0, HOL_MINIMAP_HAND = 1, HOL_MINI
 #define HOL_APP_MAX_OBJECTIVES 8
 #define HOL_APP_PATH_MAX 64
 #define HOL_APP_TEXT_MAX 48
+#define HOL_APP_HINT_MAX 60 /* the prompt's line (the HUD draws 60 characters) */
+/* Seconds a headset's device shows which control opens the menu, from the
+ * moment it is in use (hol_app_hud.hint: "Y: menu", "LEFT PINCH: menu"). */
+#define HOL_APP_MENU_HINT_S 10.0
 #define HOL_APP_HUD_LINES 6
 #define HOL_APP_MAX_MARKS 2
 /* Most room steps one app step reports (a frame's motion in sub-steps). */
@@ -184,12 +188,18 @@ typedef struct hol_app_hud {
     char objective[HOL_APP_TEXT_MAX]; /* "Find the flag", "Keys 2/3", ... */
     char status[HOL_APP_TEXT_MAX];    /* "Paused", "Controller lost" (device
                                          lost), "Done: 14 steps, ...", "" */
-    char hint[HOL_APP_TEXT_MAX];      /* the prompt: what the buttons do now,
+    char hint[HOL_APP_HINT_MAX];      /* the prompt: what the buttons do now,
                                          named for the device in use
                                          (core/hol_prompt.h): "ENTER: NEXT
                                          LEVEL, R: AGAIN", "A: NEXT LEVEL",
                                          "TRIGGER: NEXT LEVEL" ("FINISH" on
-                                         the last level); or "" */
+                                         the last level); with a headset's
+                                         device (HOL_DEVICE_XR_SIMPLE and
+                                         after), for HOL_APP_MENU_HINT_S
+                                         from its first record, the control
+                                         that opens the menu ("Y: menu",
+                                         after the prompt if one is
+                                         shown); or "" */
     char address[HOL_TILE_ADDR_MAX];  /* the current tile */
     char feedback[HOL_APP_TEXT_MAX];  /* tutorial: the lesson just done, or "" */
     int steps;                        /* room steps this level */

@@ -51,6 +51,8 @@ struct hol_app {
     int pending_start;
     int debug;           /* the HUD's debug text (HOL_BTN_DEBUG toggles) */
     uint32_t device;     /* HOL_DEVICE_* of the last record: the prompts' words */
+    double device_t;     /* the time the device in use became that device */
+    int device_seen;     /* 1 once a record named a device */
     /* the game */
     int done;
     unsigned keys_held; /* bit per key */

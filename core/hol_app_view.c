@@ -122,6 +122,22 @@ static void hol__prompt(hol_app_hud *h, uint32_t device, const hol__ask *ask, in
     }
 }
 
+/* A headset's first seconds with its device: the control that opens the
+ * menu ("Y: menu"), after the prompt shown if it fits (hol_app.h:
+ * HOL_APP_MENU_HINT_S). Not in the menu nor on the end screen, whose
+ * prompts name it or need it not. */
+static void hol__menu_hint(const hol_app *app, const hol_input *in, hol_app_hud *h)
+{
+    const char *b = hol_prompt_button(app->device, HOL_BTN_MENU);
+    if (!in || !b || app->device < HOL_DEVICE_XR_SIMPLE || app->menu ||
+        app->view.state == HOL_APP_DONE || !(in->time_s - app->device_t < HOL_APP_MENU_HINT_S))
+        return;
+    size_t len = strlen(h->hint);
+    int k = snprintf(h->hint + len, sizeof h->hint - len, "%s%s: menu", len ? ", " : "", b);
+    if (k < 0 || (size_t)k >= sizeof h->hint - len)
+        h->hint[len] = 0; /* no room: the prompt alone */
+}
+
 /* Status (end screen, pause, safety) and the prompt of what the buttons do
  * now, worded for the device in use. */
 static void hol__fill_status(hol_app *app, const hol_input *in, hol_app_hud *h)
@@ -161,6 +177,7 @@ static void hol__fill_status(hol_app *app, const hol_input *in, hol_app_hud *h)
         const hol__ask ask[1] = {{HOL_BTN_MINIMAP, 0, "map on the HUD, in the hand, off"}};
         hol__prompt(h, dev, ask, 1);
     }
+    hol__menu_hint(app, in, h);
     /* safety: a tracked head beyond the hedges; a play area too small */
     double w = hol_room_cols(&v->user) * app->mo.d.cell_m,
            d = hol_room_rows(&v->user) * app->mo.d.cell_m;

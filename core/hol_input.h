@@ -74,7 +74,8 @@
  * web build's WebXR controllers with A/B and X/Y buttons (Meta Quest Touch,
  * the WebXR Gamepads Module's xr-standard layout: platform/web/hol_web_xr.h;
  * the Quest's menu button is not given to web pages, so its bindings differ
- * from OpenXR's touch_controller). Names in the input line format
+ * from OpenXR's touch_controller); HOL_DEVICE_WEBXR_HAND the web build's
+ * tracked hands without controllers (pinches). Names in the input line format
  * (core/hol_input_io.h): hol_input_device_name. */
 enum hol_input_device {
     HOL_DEVICE_NONE = 0,      /* unknown: prompts name actions */
@@ -87,7 +88,15 @@ enum hol_input_device {
     HOL_DEVICE_XR_WMR = 7,    /* microsoft/motion_controller */
     HOL_DEVICE_XR = 8,        /* another XR controller */
     HOL_DEVICE_WEBXR_TOUCH = 9, /* WebXR, xr-standard with A/B, X/Y (Quest) */
-    HOL_DEVICE_COUNT = 10
+    HOL_DEVICE_WEBXR_HAND = 10, /* WebXR hand tracking, no controller: a
+                                   right pinch confirms, a left pinch opens
+                                   the menu, a long pinch (either hand) backs
+                                   and in the menu quits
+                                   (platform/web/hol_web_xr.h) */
+    HOL_DEVICE_XR_HAND = 11,    /* OpenXR hands (XR_EXT_hand_interaction):
+                                   pinches and grasps
+                                   (platform/openxr/hol_xr_bind.h) */
+    HOL_DEVICE_COUNT = 12
 };
 
 enum { HOL_HAND_LEFT = 0, HOL_HAND_RIGHT = 1 };

@@ -14,7 +14,7 @@
  *   degrees, [0, 360); h, l, r the head, left and right hand poses: seven
  *   numbers px,py,pz,qx,qy,qz,qw; DEVICE the device in use, one of
  *   keyboard, gamepad, xr-simple, xr-touch, xr-vive, xr-index, xr-wmr, xr,
- *   webxr-touch
+ *   webxr-touch, webxr-hand, xr-hand
  *   (hol_input_device_name). A field left out is zero (an omitted pose is
  *   all zero, an omitted device HOL_DEVICE_NONE). Fields are separated by
  *   single spaces, each at most once, in any order. Numbers are finite

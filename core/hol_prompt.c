@@ -31,6 +31,15 @@ static const char *const hol__words[HOL_DEVICE_COUNT][HOL__NBTN] = {
      * confirm, B back, Y menu, left thumbstick press recentre, X minimap:
      * the native Touch's buttons (in the menu B quits on both) */
     [HOL_DEVICE_WEBXR_TOUCH] = {"A", "B", "Y", "LEFT THUMBSTICK", "X", NULL, NULL, NULL},
+    /* the web build's hands (platform/web/hol_web_xr.h): a right pinch
+     * confirms, a left pinch opens the menu, a pinch held a second backs
+     * (in the menu it quits) */
+    [HOL_DEVICE_WEBXR_HAND] = {"PINCH", "LONG PINCH", "LEFT PINCH", NULL, NULL, NULL, NULL, NULL},
+    /* OpenXR's hands (ext/hand_interaction_ext): right pinch confirm, left
+     * pinch menu, left grasp recentre, right grasp minimap (in the menu:
+     * quit) */
+    [HOL_DEVICE_XR_HAND] = {"PINCH", NULL, "LEFT PINCH", "LEFT GRASP", "GRASP", NULL, "GRASP",
+                            NULL},
 };
 
 const char *hol_prompt_button(uint32_t device, uint32_t btn)

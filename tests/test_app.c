@@ -1018,11 +1018,16 @@ static void test_prompts_name_buttons(void **state)
         {HOL_DEVICE_XR_WMR, "TRIGGER: next level",
          "MENU: resume, TRIGGER: restart, TRACKPAD: quit"},
         {HOL_DEVICE_WEBXR_TOUCH, "A: next level", "Y: resume, A: restart, B: quit"},
+        /* OpenXR's hands (XR_EXT_hand_interaction): the right grasp quits */
+        {HOL_DEVICE_XR_HAND, "PINCH: next level", "LEFT PINCH: resume, PINCH: restart, GRASP: quit"},
+        /* hands alone: a long pinch backs, so it quits in the menu */
+        {HOL_DEVICE_WEBXR_HAND, "PINCH: next level",
+         "LEFT PINCH: resume, PINCH: restart, LONG PINCH: quit"},
         {HOL_DEVICE_NONE, "CONFIRM: next level, RESTART: again",
          "MENU: resume, CONFIRM: restart, QUIT: quit"},
     };
     for (size_t i = 0; i < sizeof want / sizeof want[0]; i++) {
-        char end[HOL_APP_TEXT_MAX], menu[HOL_APP_TEXT_MAX];
+        char end[HOL_APP_HINT_MAX], menu[HOL_APP_HINT_MAX];
         prompts_for(want[i].device, end, menu);
         assert_string_equal(end, want[i].end);
         assert_string_equal(menu, want[i].menu);
@@ -1039,6 +1044,66 @@ static void test_prompts_name_buttons(void **state)
         assert_non_null(hol_prompt_button(HOL_DEVICE_KEYBOARD, kb[i]));
     assert_null(hol_prompt_button(HOL_DEVICE_KEYBOARD, HOL_BTN_CONFIRM | HOL_BTN_MENU));
     assert_null(hol_prompt_button(HOL_DEVICE_COUNT, HOL_BTN_CONFIRM));
+}
+
+/* A headset's first seconds: the prompt names the control that opens the
+ * menu (on the world panel in XR), for HOL_APP_MENU_HINT_S from the
+ * device's first record, anew when another device comes into use; never
+ * for the keyboard; not in the menu. */
+static void test_menu_hint_first_seconds(void **state)
+{
+    (void)state;
+    static const struct {
+        uint32_t device;
+        const char *hint;
+    } want[] = {{HOL_DEVICE_XR_TOUCH, "Y: menu"},
+                {HOL_DEVICE_WEBXR_TOUCH, "Y: menu"},
+                {HOL_DEVICE_WEBXR_HAND, "LEFT PINCH: menu"},
+                {HOL_DEVICE_XR_VIVE, "MENU: menu"},
+                {HOL_DEVICE_KEYBOARD, ""},
+                {HOL_DEVICE_NONE, ""}};
+    for (size_t i = 0; i < sizeof want / sizeof want[0]; i++) {
+        hol_app *app = make_app();
+        hol_app_level L = flag_level("Nff");
+        assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+        const hol_app_view *v = hol_app_get_view(app);
+        double t0 = 3.0; /* the session ran before the device came */
+        hol_input in = tracked_at(0, 1, 1);
+        assert_int_equal(hol_app_step(app, &in), HOL_OK);
+        assert_string_equal(v->hud.hint, "");
+        in = tracked_at(t0, 1, 1);
+        in.device = want[i].device;
+        assert_int_equal(hol_app_step(app, &in), HOL_OK);
+        assert_string_equal(v->hud.hint, want[i].hint);
+        in.time_s = t0 + HOL_APP_MENU_HINT_S - 0.1;
+        assert_int_equal(hol_app_step(app, &in), HOL_OK);
+        assert_string_equal(v->hud.hint, want[i].hint);
+        in.time_s = t0 + HOL_APP_MENU_HINT_S;
+        assert_int_equal(hol_app_step(app, &in), HOL_OK);
+        assert_string_equal(v->hud.hint, "");
+        hol_app_destroy(app);
+    }
+    /* the hands after the controllers: the hands' word for 10 s more; the
+     * menu's own prompt while it is open */
+    hol_app *app = make_app();
+    hol_app_level L = flag_level("Nff");
+    assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    const hol_app_view *v = hol_app_get_view(app);
+    hol_input in = tracked_at(0, 1, 1);
+    in.device = HOL_DEVICE_WEBXR_TOUCH;
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    in.time_s = 20;
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    assert_string_equal(v->hud.hint, "");
+    in.time_s = 21;
+    in.device = HOL_DEVICE_WEBXR_HAND;
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    assert_string_equal(v->hud.hint, "LEFT PINCH: menu");
+    in.time_s = 22;
+    in.pressed = HOL_BTN_MENU;
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    assert_string_equal(v->hud.hint, "LEFT PINCH: resume, PINCH: restart, LONG PINCH: quit");
+    hol_app_destroy(app);
 }
 
 /* In the menu, confirm restarts the level (a pad or a headset has no
@@ -1509,6 +1574,7 @@ int main(void)
         cmocka_unit_test(test_tutorial_loop_optimum),
         cmocka_unit_test(test_tutorial_strayed),
         cmocka_unit_test(test_prompts_name_buttons),
+        cmocka_unit_test(test_menu_hint_first_seconds),
         cmocka_unit_test(test_menu_actions),
         cmocka_unit_test(test_debug_text),
         cmocka_unit_test(test_pause_quit),

@@ -183,6 +183,84 @@ static void test_input(void **state)
     assert_int_equal(in.flags & HOL_INPUT_HEAD_VALID, 0);
 }
 
+/* Hands alone (iwer's hand mode, a Quest without controllers): the device
+ * is the hands'; a right pinch let go is confirm, a left one the menu
+ * (both pressed at the pinch's end); a pinch held a second is back (held
+ * until let go, its end pressing nothing); a pinch begun while not
+ * focused counts neither then nor at its end. */
+static void test_hands(void **state)
+{
+    (void)state;
+    hol_web_xr_state st;
+    memset(&st, 0, sizeof st);
+    hol_web_xr_frame f;
+    memset(&f, 0, sizeof f);
+    f.visibility = HOL_WEB_XR_VISIBLE;
+    f.head_valid = 1;
+    f.head_quat[3] = 1;
+    for (int h = 0; h < 2; h++)
+        f.pad[h].present = f.pad[h].hand = 1;
+    hol_input in;
+    double t = 1.0;
+    hol_web_xr_input(&st, &f, t, &in);
+    assert_int_equal(in.device, HOL_DEVICE_WEBXR_HAND);
+    assert_int_equal(in.buttons | in.pressed, 0);
+    /* a short right pinch: nothing while held, confirm when let go */
+    f.pad[1].button[0] = 1;
+    hol_web_xr_input(&st, &f, t += 0.1, &in);
+    assert_int_equal(in.buttons | in.pressed, 0);
+    hol_web_xr_input(&st, &f, t += 0.5, &in);
+    assert_int_equal(in.buttons | in.pressed, 0);
+    f.pad[1].button[0] = 0;
+    hol_web_xr_input(&st, &f, t += 0.1, &in);
+    assert_int_equal(in.pressed, HOL_BTN_CONFIRM);
+    assert_int_equal(in.buttons, 0);
+    hol_web_xr_input(&st, &f, t += 0.1, &in);
+    assert_int_equal(in.pressed, 0);
+    /* a short left pinch (select and squeeze as the glue writes them):
+     * the menu */
+    f.pad[0].button[0] = f.pad[0].button[1] = 1;
+    hol_web_xr_input(&st, &f, t += 0.1, &in);
+    assert_int_equal(in.buttons | in.pressed, 0);
+    f.pad[0].button[0] = f.pad[0].button[1] = 0;
+    hol_web_xr_input(&st, &f, t += 0.1, &in);
+    assert_int_equal(in.pressed, HOL_BTN_MENU);
+    /* a long pinch (either hand): back once it has lasted a second, held
+     * on, nothing when let go */
+    f.pad[1].button[0] = 1;
+    hol_web_xr_input(&st, &f, t += 0.1, &in);
+    double t0 = t;
+    hol_web_xr_input(&st, &f, t = t0 + HOL_WEB_XR_LONG_PINCH_S - 0.01, &in);
+    assert_int_equal(in.buttons | in.pressed, 0);
+    hol_web_xr_input(&st, &f, t = t0 + HOL_WEB_XR_LONG_PINCH_S, &in);
+    assert_int_equal(in.pressed, HOL_BTN_BACK);
+    assert_int_equal(in.buttons, HOL_BTN_BACK);
+    hol_web_xr_input(&st, &f, t += 0.5, &in);
+    assert_int_equal(in.pressed, 0);
+    assert_int_equal(in.buttons, HOL_BTN_BACK);
+    f.pad[1].button[0] = 0;
+    hol_web_xr_input(&st, &f, t += 0.1, &in);
+    assert_int_equal(in.buttons | in.pressed, 0);
+    /* begun under a system menu: nothing then, nothing at its end */
+    f.visibility = HOL_WEB_XR_BLURRED;
+    f.pad[0].button[0] = 1;
+    hol_web_xr_input(&st, &f, t += 0.1, &in);
+    f.visibility = HOL_WEB_XR_VISIBLE;
+    hol_web_xr_input(&st, &f, t += 2.0, &in);
+    assert_int_equal(in.buttons | in.pressed, 0);
+    f.pad[0].button[0] = 0;
+    hol_web_xr_input(&st, &f, t += 0.1, &in);
+    assert_int_equal(in.buttons | in.pressed, 0);
+    /* a controller with A/B, X/Y beside a hand: the controller's layout,
+     * the trigger held as a trigger */
+    f.pad[1].hand = 0;
+    f.pad[1].touch_layout = 1;
+    f.pad[1].button[0] = 1;
+    hol_web_xr_input(&st, &f, t += 0.1, &in);
+    assert_int_equal(in.device, HOL_DEVICE_WEBXR_TOUCH);
+    assert_int_equal(in.pressed, HOL_BTN_CONFIRM);
+}
+
 static void test_bounds(void **state)
 {
     (void)state;
@@ -236,6 +314,7 @@ int main(void)
         cmocka_unit_test(test_camera),
         cmocka_unit_test(test_buttons),
         cmocka_unit_test(test_input),
+        cmocka_unit_test(test_hands),
         cmocka_unit_test(test_bounds),
         cmocka_unit_test(test_room_of_another_size),
     };

@@ -53,6 +53,16 @@ static const spec_profile spec[] = {
      {"menu/click", "squeeze/click", "trigger/value", "thumbstick/x", "thumbstick/y",
       "thumbstick/click", "trackpad/x", "trackpad/y", "trackpad/click", "trackpad/touch",
       "grip/pose", "aim/pose"}},
+    /* XR_EXT_hand_interaction (the extension's chapter: "The interaction
+     * profile path is /interaction_profiles/ext/hand_interaction_ext"),
+     * the same components on both hands, no output */
+    {"/interaction_profiles/ext/hand_interaction_ext",
+     {"aim/pose", "grip/pose", "pinch_ext/pose", "poke_ext/pose", "pinch_ext/value",
+      "pinch_ext/ready_ext", "aim_activate_ext/value", "aim_activate_ext/ready_ext",
+      "grasp_ext/value", "grasp_ext/ready_ext"},
+     {"aim/pose", "grip/pose", "pinch_ext/pose", "poke_ext/pose", "pinch_ext/value",
+      "pinch_ext/ready_ext", "aim_activate_ext/value", "aim_activate_ext/ready_ext",
+      "grasp_ext/value", "grasp_ext/ready_ext"}},
 };
 #define NSPEC (sizeof spec / sizeof spec[0])
 
@@ -132,9 +142,20 @@ static void test_every_binding_is_in_its_profile(void **state)
                {"/interaction_profiles/oculus/touch_controller", HOL_DEVICE_XR_TOUCH},
                {"/interaction_profiles/htc/vive_controller", HOL_DEVICE_XR_VIVE},
                {"/interaction_profiles/valve/index_controller", HOL_DEVICE_XR_INDEX},
-               {"/interaction_profiles/microsoft/motion_controller", HOL_DEVICE_XR_WMR}};
+               {"/interaction_profiles/microsoft/motion_controller", HOL_DEVICE_XR_WMR},
+               {"/interaction_profiles/ext/hand_interaction_ext", HOL_DEVICE_XR_HAND}};
     for (size_t i = 0; i < sizeof dev / sizeof dev[0]; i++)
         assert_int_equal(hol_xr_profile_device(hol_xr_profile_find(dev[i].path)), dev[i].device);
+    /* the core profiles need no extension; the hands need
+     * XR_EXT_hand_interaction (suggested only where it is enabled) and have
+     * no haptic output */
+    for (int k = 0; k < HOL_XR_NPROFILES; k++) {
+        int hands = !strcmp(p[k].name, "ext/hand_interaction_ext");
+        assert_int_equal(p[k].extension != NULL, hands);
+        assert_int_equal(p[k].no_haptic, hands);
+        if (hands)
+            assert_string_equal(p[k].extension, "XR_EXT_hand_interaction");
+    }
     assert_int_equal(hol_xr_profile_device(-1), HOL_DEVICE_XR);
     assert_int_equal(hol_xr_profile_find(NULL), -1);
     assert_string_equal(hol_xr_input_label(HOL_XR_NPROFILES, 0), "");
@@ -192,7 +213,7 @@ static void test_haptic_output(void **state)
     (void)state;
     const hol_xr_profile *p = hol_xr_profiles();
     for (int i = 0; i < HOL_XR_NPROFILES; i++)
-        for (int h = 0; h < 2; h++) {
+        for (int h = 0; h < 2 && !p[i].no_haptic; h++) {
             const char *path = hol_xr_haptic_path(h);
             assert_true(spec_has_output(p[i].profile, path));
             assert_non_null(strstr(path, h ? "/right/" : "/left/"));
@@ -263,6 +284,7 @@ static void test_prompt_words(void **state)
         {"/interaction_profiles/htc/vive_controller", HOL_DEVICE_XR_VIVE},
         {"/interaction_profiles/valve/index_controller", HOL_DEVICE_XR_INDEX},
         {"/interaction_profiles/microsoft/motion_controller", HOL_DEVICE_XR_WMR},
+        {"/interaction_profiles/ext/hand_interaction_ext", HOL_DEVICE_XR_HAND},
     };
     const hol_xr_profile *p = hol_xr_profiles();
     for (int k = 0; k < HOL_XR_NPROFILES; k++) {
@@ -299,6 +321,8 @@ static void test_prompt_words(void **state)
             const char *const *other = left ? sp->right : sp->left;
             for (int i = 0; i < 16 && other[i]; i++)
                 both |= !strncmp(other[i], comp, n) && other[i][n] == '/';
+            if (n > 4 && !strncmp(comp + n - 4, "_ext", 4))
+                n -= 4; /* an extension's component: "pinch_ext" is "PINCH" */
             char want[64];
             size_t w = 0;
             if (left && both)

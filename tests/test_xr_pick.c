@@ -67,11 +67,27 @@ static void test_format(void **state)
     assert_int_equal(hol_xr_pick_format(NULL, 0, &srgb), 0);
 }
 
+/* The eyes' samples: the runtime's recommendation within its maximum and
+ * HOL_XR_MAX_SAMPLES (Monado recommends 1: no multisampled framebuffer;
+ * a Quest-like 4 of 4: four, resolved). */
+static void test_samples(void **state)
+{
+    (void)state;
+    assert_int_equal(hol_xr_pick_samples(1, 1), 1);
+    assert_int_equal(hol_xr_pick_samples(1, 8), 1);
+    assert_int_equal(hol_xr_pick_samples(4, 4), 4);
+    assert_int_equal(hol_xr_pick_samples(4, 2), 2);
+    assert_int_equal(hol_xr_pick_samples(0, 4), 1);
+    assert_int_equal(hol_xr_pick_samples(16, 0), HOL_XR_MAX_SAMPLES);
+    assert_int_equal(hol_xr_pick_samples(16, 32), HOL_XR_MAX_SAMPLES);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_mirrored_values),
         cmocka_unit_test(test_space),
+        cmocka_unit_test(test_samples),
         cmocka_unit_test(test_format),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

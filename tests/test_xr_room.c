@@ -12,6 +12,7 @@
 
 #include <cmocka.h>
 
+#include "../core/hol_nav.h"
 #include "../platform/openxr/hol_xr_room.h"
 
 static double frand(uint64_t *s)
@@ -321,6 +322,88 @@ static void test_life_stopped_by_the_runtime(void **state)
     assert_int_equal(hol_xr_life_quit(&l), HOL_XR_QUIT_NONE);
 }
 
+/* The app's frames around a lifecycle (as the platform's: the record's
+ * RECENTRED from hol_xr_life_take), the head walked from `from` to `to`
+ * in 2 cm strides at 60 Hz; returns the room steps the app took. */
+static int walk_head(hol_app *app, hol_xr_life *l, double *t, const float from[3],
+                     const float to[3])
+{
+    int steps = 0;
+    double d = hypot(to[0] - from[0], to[2] - from[2]);
+    int n = (int)ceil(d / 0.02);
+    for (int i = 0; i <= n; i++) {
+        hol_input in;
+        memset(&in, 0, sizeof in);
+        in.time_s = *t += 1.0 / 60;
+        in.flags = HOL_INPUT_HEAD_VALID | (l->focused ? HOL_INPUT_FOCUSED : 0);
+        in.flags |= hol_xr_life_take(l, 1);
+        for (int k = 0; k < 3; k++)
+            in.head.pos[k] = (float)(from[k] + (to[k] - from[k]) * (n ? (double)i / n : 1));
+        in.head.quat[3] = 1;
+        assert_int_equal(hol_app_step(app, &in), HOL_OK);
+        steps += hol_app_get_events(app)->nsteps;
+    }
+    return steps;
+}
+
+/* Entering, leaving and entering the session again (the headset taken
+ * off: STOPPING, IDLE; put on again: READY) walks nothing: the head's way
+ * while the session was stopped is no room step, the steps walked in
+ * either session are, each once. */
+static void test_life_reenter_walks_nothing(void **state)
+{
+    (void)state;
+    hol_nav *nav = NULL;
+    hol_nav_desc nd;
+    memset(&nd, 0, sizeof nd);
+    assert_int_equal(hol_nav_create(&nd, &nav), HOL_OK);
+    hol_app_desc d;
+    memset(&d, 0, sizeof d);
+    d.nav = nav;
+    hol_app *app = NULL;
+    assert_int_equal(hol_app_create(&d, &app), HOL_OK);
+    hol_app_level L;
+    memset(&L, 0, sizeof L);
+    L.mode = HOL_APP_EXPLORE;
+    L.seed = 5;
+    assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    hol_xr_life l;
+    memset(&l, 0, sizeof l);
+    static const int on[][2] = {{HOL_XR_STATE_IDLE, HOL_XR_DO_NOTHING},
+                                {HOL_XR_STATE_READY, HOL_XR_DO_BEGIN},
+                                {HOL_XR_STATE_FOCUSED, HOL_XR_DO_NOTHING}};
+    static const int off[][2] = {{HOL_XR_STATE_VISIBLE, HOL_XR_DO_NOTHING},
+                                 {HOL_XR_STATE_STOPPING, HOL_XR_DO_END},
+                                 {HOL_XR_STATE_IDLE, HOL_XR_DO_NOTHING}};
+    double t = 0;
+    const float mid[3] = {1.5f, 1.6f, 1.5f}, north[3] = {1.5f, 1.6f, 0.6f},
+                south[3] = {1.4f, 1.6f, 2.6f}, east[3] = {2.5f, 1.6f, 2.6f};
+    run_events(&l, on, 3);
+    assert_false(l.recentre); /* the first session: placed at the level's start */
+    assert_int_equal(walk_head(app, &l, &t, mid, mid), 0);
+    assert_int_equal(walk_head(app, &l, &t, mid, north), 1); /* one step north */
+    run_events(&l, off, 3);
+    /* the headset off, its wearer walks two cells south: nothing is run */
+    run_events(&l, on, 3);
+    assert_true(l.recentre);
+    assert_int_equal(walk_head(app, &l, &t, south, south), 0); /* re-placed */
+    assert_false(l.recentre);
+    assert_int_equal(walk_head(app, &l, &t, south, east), 1); /* one step east */
+    /* once more: off, on where it was left: still nothing */
+    run_events(&l, off, 3);
+    run_events(&l, on, 3);
+    assert_int_equal(walk_head(app, &l, &t, east, east), 0);
+    assert_int_equal(hol_app_get_view(app)->hud.steps, 2);
+    assert_int_equal(l.begins, 3);
+    /* no head yet: the recentre waits for one */
+    hol_xr_life_recentred(&l);
+    assert_int_equal(hol_xr_life_take(&l, 0), 0);
+    assert_int_equal(hol_xr_life_take(&l, 1), HOL_INPUT_RECENTRED);
+    assert_int_equal(hol_xr_life_take(&l, 1), 0);
+    hol_app_destroy(app);
+    hol_nav_destroy(nav);
+}
+
 static void test_life_loss(void **state)
 {
     (void)state;
@@ -353,6 +436,7 @@ int main(void)
         cmocka_unit_test(test_life_quit_by_the_app),
         cmocka_unit_test(test_life_stopped_by_the_runtime),
         cmocka_unit_test(test_life_loss),
+        cmocka_unit_test(test_life_reenter_walks_nothing),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -51,7 +51,29 @@ static int hol__android_loader(hol__xr *x, int *out_attached)
 }
 #endif
 
-/* The instance and system (hol_xr_run; hol_xr_run_session is given them). */
+/* 1 when the runtime lists extension `name` (xrEnumerateInstanceExtensionProperties;
+ * a failure lists nothing). */
+static int hol__has_extension(const char *name)
+{
+    uint32_t n = 0;
+    if (XR_FAILED(xrEnumerateInstanceExtensionProperties(NULL, 0, &n, NULL)) || !n)
+        return 0;
+    XrExtensionProperties *p = calloc(n, sizeof *p);
+    if (!p)
+        return 0;
+    for (uint32_t i = 0; i < n; i++)
+        p[i].type = XR_TYPE_EXTENSION_PROPERTIES;
+    int found = 0;
+    if (XR_SUCCEEDED(xrEnumerateInstanceExtensionProperties(NULL, n, &n, p)))
+        for (uint32_t i = 0; i < n && !found; i++)
+            found = !strcmp(p[i].extensionName, name);
+    free(p);
+    return found;
+}
+
+/* The instance and system (hol_xr_run; hol_xr_run_session is given them);
+ * XR_EXT_hand_interaction enabled where the runtime lists it (the hands'
+ * bindings, hol_xr_bind.h). */
 static int hol__instance(hol__xr *x)
 {
     XrInstanceCreateInfo ic = {XR_TYPE_INSTANCE_CREATE_INFO};
@@ -61,12 +83,15 @@ static int hol__instance(hol__xr *x)
     ai.applicationActivity = x->d->android_activity;
     ic.next = &ai;
     const char *ext[] = {XR_KHR_OPENGL_ES_ENABLE_EXTENSION_NAME,
-                         XR_KHR_ANDROID_CREATE_INSTANCE_EXTENSION_NAME};
+                         XR_KHR_ANDROID_CREATE_INSTANCE_EXTENSION_NAME, NULL};
     ic.enabledExtensionCount = 2;
 #else
-    const char *ext[] = {XR_KHR_OPENGL_ENABLE_EXTENSION_NAME};
+    const char *ext[] = {XR_KHR_OPENGL_ENABLE_EXTENSION_NAME, NULL};
     ic.enabledExtensionCount = 1;
 #endif
+    x->hand_interaction = hol__has_extension(HOL_XR_EXT_HAND_INTERACTION);
+    if (x->hand_interaction)
+        ext[ic.enabledExtensionCount++] = HOL_XR_EXT_HAND_INTERACTION;
     ic.enabledExtensionNames = ext;
     snprintf(ic.applicationInfo.applicationName, sizeof ic.applicationInfo.applicationName, "%s",
              x->d->app_name ? x->d->app_name : "Holonomy");
@@ -78,6 +103,9 @@ static int hol__instance(hol__xr *x)
     HOL__XR(x, "read the runtime's name", xrGetInstanceProperties(x->instance, &ip));
     hol__say(x, "xr: runtime %s %u.%u.%u", ip.runtimeName, XR_VERSION_MAJOR(ip.runtimeVersion),
              XR_VERSION_MINOR(ip.runtimeVersion), XR_VERSION_PATCH(ip.runtimeVersion));
+    hol__say(x, "xr: %s %s", HOL_XR_EXT_HAND_INTERACTION,
+             x->hand_interaction ? "enabled: the hands are bound (pinches and grasps)"
+                                 : "not listed by the runtime: no hand bindings");
     XrSystemGetInfo sg = {XR_TYPE_SYSTEM_GET_INFO};
     sg.formFactor = XR_FORM_FACTOR_HEAD_MOUNTED_DISPLAY;
     HOL__XR(x, "find the headset", xrGetSystem(x->instance, &sg, &x->system));

@@ -23,7 +23,9 @@
  * - Lifecycle as hol_xr_life says (hol_xr_room.h): READY begins the
  *   session, STOPPING ends it, EXITING tears it down and returns; a
  *   STOPPING the app did not ask for (headset off, app in the background)
- *   waits for READY again. Quitting (the app's quit, desc.frames reached,
+ *   waits for READY again; the session begun again re-places the room
+ *   around the head at its first tracked frame (HOL_INPUT_RECENTRED: the
+ *   head's way while stopped is no walk). Quitting (the app's quit, desc.frames reached,
  *   or fns->poll_platform) calls xrRequestExitSession and goes on until
  *   STOPPING (xrEndSession) and EXITING, then destroys everything; without
  *   a running session it leaves at once.

@@ -46,6 +46,8 @@ static int hol__suggest(hol__xr *x, const hol_xr_profile *p)
         sb[n].action = x->grip_action;
         if (hol__path(x, hol_xr_grip_path(h), &sb[n++].binding))
             return 1;
+        if (p->no_haptic)
+            continue;
         sb[n].action = x->haptic_action;
         if (hol__path(x, hol_xr_haptic_path(h), &sb[n++].binding))
             return 1;
@@ -84,7 +86,7 @@ int hol__actions(hol__xr *x)
             return 1;
     const hol_xr_profile *binds = hol_xr_profiles();
     for (int i = 0; i < HOL_XR_NPROFILES; i++)
-        if (hol__suggest(x, &binds[i]))
+        if ((!binds[i].extension || x->hand_interaction) && hol__suggest(x, &binds[i]))
             return 1;
     x->profile[0] = x->profile[1] = -1;
     return 0;

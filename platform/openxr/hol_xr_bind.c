@@ -13,27 +13,39 @@ static const hol_xr_profile hol__profiles[HOL_XR_NPROFILES] = {
     {"/interaction_profiles/khr/simple_controller", "khr/simple_controller",
      {HOL__R "select/click", HOL__R "menu/click", HOL__L "menu/click", HOL__L "select/click",
       HOL__R "select/click", HOL__L "menu/click"},
-     {"right select", "right menu", "left menu", "left select", "right select", "left menu"}},
+     {"right select", "right menu", "left menu", "left select", "right select", "left menu"},
+     NULL, 0},
     {"/interaction_profiles/oculus/touch_controller", "oculus/touch_controller",
      /* as the web build's Touch (platform/web/hol_web_xr.h): Y menu, left
       * thumbstick press recentre - WebXR gives pages no menu button */
      {HOL__R "a/click", HOL__L "y/click", HOL__L "thumbstick/click", HOL__L "x/click",
       HOL__R "a/click", HOL__R "b/click"},
-     {"A", "Y", "left thumbstick", "X", "A", "B"}},
+     {"A", "Y", "left thumbstick", "X", "A", "B"},
+     NULL, 0},
     {"/interaction_profiles/htc/vive_controller", "htc/vive_controller",
      {HOL__R "trigger/click", HOL__R "menu/click", HOL__L "menu/click",
       HOL__L "trackpad/click", HOL__R "trigger/click", HOL__R "trackpad/click"},
      {"right trigger", "right menu", "left menu", "left trackpad", "right trigger",
-      "right trackpad"}},
+      "right trackpad"},
+     NULL, 0},
     {"/interaction_profiles/valve/index_controller", "valve/index_controller",
      {HOL__R "a/click", HOL__R "b/click", HOL__L "b/click", HOL__L "a/click", HOL__R "a/click",
       HOL__L "trigger/click"},
-     {"right A", "right B", "left B", "left A", "right A", "left trigger"}},
+     {"right A", "right B", "left B", "left A", "right A", "left trigger"},
+     NULL, 0},
     {"/interaction_profiles/microsoft/motion_controller", "microsoft/motion_controller",
      {HOL__R "trigger/value", HOL__R "menu/click", HOL__L "menu/click",
       HOL__L "trackpad/click", HOL__R "trigger/value", HOL__R "trackpad/click"},
      {"right trigger", "right menu", "left menu", "left trackpad", "right trigger",
-      "right trackpad"}},
+      "right trackpad"},
+     NULL, 0},
+    /* hands alone (XR_EXT_hand_interaction): a pinch as a button (the
+     * boolean action on the float value: the runtime's threshold) */
+    {"/interaction_profiles/ext/hand_interaction_ext", "ext/hand_interaction_ext",
+     {HOL__R "pinch_ext/value", HOL__L "pinch_ext/value", HOL__L "grasp_ext/value",
+      HOL__R "grasp_ext/value", HOL__R "pinch_ext/value", HOL__R "grasp_ext/value"},
+     {"right pinch", "left pinch", "left grasp", "right grasp", "right pinch", "right grasp"},
+     HOL_XR_EXT_HAND_INTERACTION, 1},
 };
 
 const hol_xr_profile *hol_xr_profiles(void)
@@ -53,7 +65,7 @@ uint32_t hol_xr_profile_device(int profile)
 {
     static const uint32_t dev[HOL_XR_NPROFILES] = {HOL_DEVICE_XR_SIMPLE, HOL_DEVICE_XR_TOUCH,
                                                     HOL_DEVICE_XR_VIVE, HOL_DEVICE_XR_INDEX,
-                                                    HOL_DEVICE_XR_WMR};
+                                                    HOL_DEVICE_XR_WMR, HOL_DEVICE_XR_HAND};
     return profile >= 0 && profile < HOL_XR_NPROFILES ? dev[profile] : HOL_DEVICE_XR;
 }
 

@@ -23,7 +23,12 @@
  *   htc/vive_controller, valve/index_controller,
  *   microsoft/motion_controller; each binds every action to an input path
  *   of that profile. A runtime that refuses one is an error of the session
- *   (the suggested bindings must all be accepted).
+ *   (the suggested bindings must all be accepted). And the hands of
+ *   XR_EXT_hand_interaction (ext/hand_interaction_ext: its `extension`
+ *   names the extension, suggested only where the runtime lists it and it
+ *   is enabled; it has no haptic output, `haptic` 0): right pinch
+ *   confirm (and restart), left pinch menu, left grasp recentre, right
+ *   grasp minimap and, in the menu, quit.
  * - hol_xr_buttons maps the held actions of the current layer to HOL_BTN_*
  *   bits. An input held while the layer changes (the press that opened the
  *   menu, a restart held while the menu closes) counts in the new layer
@@ -54,9 +59,13 @@ typedef struct hol_xr_profile {
     const char *name;                    /* short: "oculus/touch_controller" */
     const char *path[HOL_XR_ACT_COUNT];  /* per HOL_XR_ACT_* */
     const char *label[HOL_XR_ACT_COUNT]; /* the input in words: "A" */
+    const char *extension;               /* NULL: core OpenXR; else the
+                                            extension that defines it */
+    int no_haptic;                       /* 1: no output/haptic paths */
 } hol_xr_profile;
 
-#define HOL_XR_NPROFILES 5
+#define HOL_XR_NPROFILES 6
+#define HOL_XR_EXT_HAND_INTERACTION "XR_EXT_hand_interaction"
 
 /* The profiles (HOL_XR_NPROFILES of them), static data. */
 const hol_xr_profile *hol_xr_profiles(void);

@@ -57,7 +57,7 @@ static void hol__space_changed(hol__xr *x, const XrEventDataReferenceSpaceChange
     if (e->session != x->session || (int)e->referenceSpaceType != x->space_type)
         return;
     memset(&x->calib, 0, sizeof x->calib);
-    x->recentred = 1; /* the app re-places the room: the head's jump is no walk */
+    hol_xr_life_recentred(&x->life); /* the app re-places the room: the head's jump is no walk */
     hol__say(x, "xr: reference space %s changed (%s): the room is placed on its new origin",
              x->space_type == HOL_XR_SPACE_STAGE ? "STAGE" : "LOCAL",
              x->space_type == HOL_XR_SPACE_STAGE ? "recentred, or a new play area"

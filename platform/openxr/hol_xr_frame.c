@@ -118,10 +118,8 @@ static int hol__input(hol__xr *x, const XrFrameState *fs, hol_input *in, float s
         return 1;
     if (head)
         in->flags |= HOL_INPUT_HEAD_VALID;
-    if (head && x->recentred) { /* the runtime's recentre, told once with a head */
-        in->flags |= HOL_INPUT_RECENTRED;
-        x->recentred = 0;
-    }
+    /* the runtime's recentre, or the session begun again: told once with a head */
+    in->flags |= hol_xr_life_take(&x->life, head);
     if (x->life.focused && hol__hands(x, fs->predictedDisplayTime, in))
         return 1;
     if ((in->buttons & HOL_BTN_RECENTRE) && !(x->prev_buttons & HOL_BTN_RECENTRE) && head)
@@ -158,6 +156,12 @@ static int hol__step(hol__xr *x, const hol_input *in, const hol_app_view **out_v
         return hol__error(x, "the app step failed");
     x->in_menu = *out_v && (*out_v)->paused && x->life.focused;
     hol__room_size(x, *out_v);
+    /* the panel's prompt line, said when it changes (the first seconds
+     * name the menu's control: "xr: prompt MENU: menu") */
+    if (*out_v && strcmp((*out_v)->hud.hint, x->prompt)) {
+        snprintf(x->prompt, sizeof x->prompt, "%s", (*out_v)->hud.hint);
+        hol__say(x, "xr: prompt %s", x->prompt[0] ? x->prompt : "(none)");
+    }
     if (x->fns->level_started(x->fns->user))
         hol_render_invalidate(x->rnd);
     if ((st > 0 || (x->d->frames > 0 && x->submitted + 1 >= x->d->frames)) &&
@@ -184,7 +188,7 @@ static int hol__draw_eye(hol__xr *x, int e, const hol_app_view *v, const hol_inp
     HOL__XR(x, "draw the next frame", xrWaitSwapchainImage(ey->swapchain, &wi));
     if (idx >= ey->nimages)
         return hol__error(x, "the runtime gave swapchain image %u of %u", idx, ey->nimages);
-    x->gl.BindFramebuffer(HOL__GL_FRAMEBUFFER, ey->fbo[idx]);
+    x->gl.BindFramebuffer(HOL__GL_FRAMEBUFFER, ey->samples > 1 ? ey->msaa_fbo : ey->fbo[idx]);
     x->gl.Viewport(0, 0, ey->w, ey->h);
     hol_frame_desc fd;
     hol_app_frame_desc(v, e, ey->w, ey->h, 0, &fd);
@@ -217,6 +221,12 @@ static int hol__draw_eye(hol__xr *x, int e, const hol_app_view *v, const hol_inp
     if (fade == 0) { /* the figures of a full view */
         x->draws[e] = rs.draw_calls;
         x->tris[e] = rs.triangles;
+    }
+    if (ey->samples > 1) { /* the multisampled eye resolved into the image */
+        x->gl.BindFramebuffer(HOL__GL_READ_FRAMEBUFFER, ey->msaa_fbo);
+        x->gl.BindFramebuffer(HOL__GL_DRAW_FRAMEBUFFER, ey->fbo[idx]);
+        x->gl.BlitFramebuffer(0, 0, ey->w, ey->h, 0, 0, ey->w, ey->h, HOL__GL_COLOR_BUFFER_BIT,
+                              HOL__GL_NEAREST);
     }
 #ifndef __ANDROID__
     if (x->d->check_dir && x->submitted == x->d->check_frame && inside && fd.fade == 0)

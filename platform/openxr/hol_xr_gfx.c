@@ -138,6 +138,8 @@ int hol__load_gl(hol__xr *x)
     HOL__LOAD(Viewport);
     HOL__LOAD(Enable);
     HOL__LOAD(Disable);
+    HOL__LOAD(RenderbufferStorageMultisample);
+    HOL__LOAD(BlitFramebuffer);
 #undef HOL__LOAD
     return 0;
 }

@@ -29,3 +29,11 @@ int64_t hol_xr_pick_format(const int64_t *formats, uint32_t n, int *out_srgb)
             return formats[i];
     return 0;
 }
+
+int hol_xr_pick_samples(uint32_t recommended, uint32_t max)
+{
+    uint32_t s = recommended ? recommended : 1;
+    if (max && s > max)
+        s = max;
+    return (int)(s > HOL_XR_MAX_SAMPLES ? HOL_XR_MAX_SAMPLES : s);
+}

@@ -16,6 +16,13 @@
  *   image as sRGB, as the colours are authored, so the renderer writes
  *   linear values and the GL encodes them (hol_render_desc.srgb). A linear
  *   RGBA8 image would be read as linear and look washed out.
+ * - hol_xr_pick_samples: the multisampling of the eyes: the runtime's
+ *   recommendedSwapchainSampleCount, within 1 and its
+ *   maxSwapchainSampleCount and at most HOL_XR_MAX_SAMPLES (0 read as 1).
+ *   More than 1: each eye draws into a multisampled framebuffer of that
+ *   many samples and resolves it into the swapchain image (the swapchain
+ *   itself stays single-sampled, which every compositor reads); 1: it
+ *   draws into the swapchain image directly.
  */
 #ifndef HOL_XR_PICK_H
 #define HOL_XR_PICK_H
@@ -36,5 +43,8 @@ enum { HOL_XR_SPACE_VIEW = 1, HOL_XR_SPACE_LOCAL = 2, HOL_XR_SPACE_STAGE = 3 };
  * where STAGE is offered (seated play, no play area set up). */
 int hol_xr_pick_space(const int *types, uint32_t n, int want, double *out_origin_y);
 int64_t hol_xr_pick_format(const int64_t *formats, uint32_t n, int *out_srgb);
+
+#define HOL_XR_MAX_SAMPLES 8
+int hol_xr_pick_samples(uint32_t recommended, uint32_t max);
 
 #endif

@@ -176,7 +176,22 @@ hol_xr_do hol_xr_life_event(hol_xr_life *l, int state)
     hol_xr_do d = hol_xr_lifecycle(state, &l->running, &l->focused);
     if (d == HOL_XR_DO_TEAR_DOWN)
         l->done = 1;
+    if (d == HOL_XR_DO_BEGIN && ++l->begins > 1)
+        l->recentre = 1; /* begun again: the head's jump is no walk */
     return d;
+}
+
+void hol_xr_life_recentred(hol_xr_life *l)
+{
+    l->recentre = 1;
+}
+
+uint32_t hol_xr_life_take(hol_xr_life *l, int head_valid)
+{
+    if (!head_valid || !l->recentre)
+        return 0;
+    l->recentre = 0;
+    return HOL_INPUT_RECENTRED;
 }
 
 hol_xr_quit hol_xr_life_quit(hol_xr_life *l)

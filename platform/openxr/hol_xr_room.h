@@ -109,13 +109,24 @@ hol_xr_do hol_xr_lifecycle(int state, int *out_running, int *out_focused);
  *   HOL_XR_QUIT_REQUEST_EXIT (call xrRequestExitSession; then STOPPING,
  *   EXITING come as events) while the session runs, HOL_XR_QUIT_LEAVE
  *   (l->done: destroy it now) while it does not, HOL_XR_QUIT_NONE when
- *   already asked. */
+ *   already asked.
+ * - Re-entering walks nothing: a session begun again (READY after a
+ *   STOPPING: the headset taken off and put on, the app sent to the
+ *   background and back) sets l->recentre, as the runtime's own recentre
+ *   does (hol_xr_life_recentred: the platform sets it on
+ *   XrEventDataReferenceSpaceChangePending); hol_xr_life_take(l, head)
+ *   gives HOL_INPUT_RECENTRED for the first record with a tracked head
+ *   after it (and clears it), so the app re-places the room around the
+ *   head where it is now: where the head went while the session was
+ *   stopped is no walk, no room step is logged. */
 typedef struct hol_xr_life {
     int state;          /* the last session state (0: none yet) */
     int running;        /* frames run */
     int focused;        /* the game has the input */
     int quit_requested; /* xrRequestExitSession was called */
     int done;           /* destroy the session and leave */
+    int begins;         /* sessions begun (READY) so far */
+    int recentre;       /* the next record with a head re-places the room */
 } hol_xr_life;
 
 typedef enum hol_xr_quit {
@@ -126,5 +137,7 @@ typedef enum hol_xr_quit {
 
 hol_xr_do hol_xr_life_event(hol_xr_life *l, int state);
 hol_xr_quit hol_xr_life_quit(hol_xr_life *l);
+void hol_xr_life_recentred(hol_xr_life *l);
+uint32_t hol_xr_life_take(hol_xr_life *l, int head_valid);
 
 #endif

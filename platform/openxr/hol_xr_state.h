@@ -76,6 +76,10 @@ typedef int hol__GLsizei;
 #define HOL__GL_TEXTURE_2D 0x0DE1
 #define HOL__GL_FRAMEBUFFER_COMPLETE 0x8CD5
 #define HOL__GL_FRAMEBUFFER_SRGB 0x8DB9
+#define HOL__GL_READ_FRAMEBUFFER 0x8CA8
+#define HOL__GL_DRAW_FRAMEBUFFER 0x8CA9
+#define HOL__GL_COLOR_BUFFER_BIT 0x4000
+#define HOL__GL_NEAREST 0x2600
 
 typedef struct hol__gl {
     void (*GenFramebuffers)(hol__GLsizei, hol__GLuint *);
@@ -91,6 +95,10 @@ typedef struct hol__gl {
     void (*Viewport)(hol__GLint, hol__GLint, hol__GLsizei, hol__GLsizei);
     void (*Enable)(hol__GLenum);
     void (*Disable)(hol__GLenum);
+    void (*RenderbufferStorageMultisample)(hol__GLenum, hol__GLsizei, hol__GLenum, hol__GLsizei,
+                                           hol__GLsizei);
+    void (*BlitFramebuffer)(hol__GLint, hol__GLint, hol__GLint, hol__GLint, hol__GLint,
+                            hol__GLint, hol__GLint, hol__GLint, unsigned int, hol__GLenum);
 } hol__gl;
 
 /* metres the app's head keeps from the hedges: the motion's default margin
@@ -116,6 +124,9 @@ typedef struct hol__eye {
     hol__image *images; /* nimages, from the runtime */
     hol__GLuint *fbo;   /* one per image */
     hol__GLuint depth;
+    int samples;        /* hol_xr_pick_samples; > 1: drawn into msaa_fbo,
+                           resolved into the image's fbo */
+    hol__GLuint msaa_fbo, msaa_color, msaa_depth;
 } hol__eye;
 
 typedef struct hol__xr {
@@ -143,6 +154,7 @@ typedef struct hol__xr {
     int profile[2];   /* the hands' interaction profiles (hol_xr_bind.h), -1 none */
     int any_profile;  /* a hand has a profile not in hol_xr_bind.h's list */
     int reached_focused;
+    int hand_interaction; /* XR_EXT_hand_interaction enabled (the runtime lists it) */
     int failed;       /* a failure was reported: the run ends with status 1 */
     int lost;         /* the session or the instance is gone */
     int external;     /* the instance and GL context are the caller's */
@@ -152,6 +164,7 @@ typedef struct hol__xr {
     int bounds_small; /* the room in play (or the fit) is larger than them */
     hol_fit fit;      /* with have_bounds: what they hold (core/hol_fit.h) */
     char fit_text[160]; /* its line (hol_fit_text) */
+    char prompt[HOL_APP_HINT_MAX]; /* the prompt line said last */
     double room_w, room_d; /* the room in play, metres (0: not known yet) */
     hol_app_view note;  /* the view drawn while the fit is told on the HUD */
     hol__gl gl;
@@ -161,7 +174,6 @@ typedef struct hol__xr {
     XrTime t0;
     double last_t;
     unsigned prev_buttons;
-    int recentred; /* the runtime moved the space's origin: the next record says so */
     int grips_located[2];
     long faded; /* frames drawn with the safety fade */
     double cpu_ms[4096], step_ms[4096];

@@ -61,6 +61,8 @@ int hol__views(hol__xr *x)
         x->views[e].type = XR_TYPE_VIEW;
         x->eye[e].w = (int32_t)vc[e].recommendedImageRectWidth;
         x->eye[e].h = (int32_t)vc[e].recommendedImageRectHeight;
+        x->eye[e].samples = hol_xr_pick_samples(vc[e].recommendedSwapchainSampleCount,
+                                                vc[e].maxSwapchainSampleCount);
         if (x->eye[e].w <= 0 || x->eye[e].h <= 0 || x->eye[e].w > 4096 || x->eye[e].h > 4096)
             return hol__error(x, "the headset asks for %dx%d images per eye (1 to 4096 each)",
                               x->eye[e].w, x->eye[e].h);
@@ -84,6 +86,35 @@ static int hol__format(hol__xr *x, int64_t *out)
     if (!*out)
         return hol__error(x, "the OpenXR runtime offers no 8-bit RGBA image format (neither "
                              "GL_SRGB8_ALPHA8 nor GL_RGBA8)");
+    return 0;
+}
+
+/* The eye's multisampled framebuffer (ey->samples > 1): colour in the
+ * swapchain's format and depth-stencil, resolved into the image at the
+ * eye's end (hol_xr_pick.h). */
+static int hol__msaa(hol__xr *x, hol__eye *ey, int64_t fmt)
+{
+    hol__GLuint rb[2];
+    x->gl.GenRenderbuffers(2, rb);
+    ey->msaa_color = rb[0];
+    ey->msaa_depth = rb[1];
+    x->gl.BindRenderbuffer(HOL__GL_RENDERBUFFER, rb[0]);
+    x->gl.RenderbufferStorageMultisample(HOL__GL_RENDERBUFFER, ey->samples, (hol__GLenum)fmt,
+                                         ey->w, ey->h);
+    x->gl.BindRenderbuffer(HOL__GL_RENDERBUFFER, rb[1]);
+    x->gl.RenderbufferStorageMultisample(HOL__GL_RENDERBUFFER, ey->samples,
+                                         HOL__GL_DEPTH24_STENCIL8, ey->w, ey->h);
+    x->gl.GenFramebuffers(1, &ey->msaa_fbo);
+    x->gl.BindFramebuffer(HOL__GL_FRAMEBUFFER, ey->msaa_fbo);
+    x->gl.FramebufferRenderbuffer(HOL__GL_FRAMEBUFFER, HOL__GL_COLOR_ATTACHMENT0,
+                                  HOL__GL_RENDERBUFFER, rb[0]);
+    x->gl.FramebufferRenderbuffer(HOL__GL_FRAMEBUFFER, HOL__GL_DEPTH_STENCIL_ATTACHMENT,
+                                  HOL__GL_RENDERBUFFER, rb[1]);
+    int ok = x->gl.CheckFramebufferStatus(HOL__GL_FRAMEBUFFER) == HOL__GL_FRAMEBUFFER_COMPLETE;
+    x->gl.BindFramebuffer(HOL__GL_FRAMEBUFFER, 0);
+    if (!ok)
+        return hol__error(x, "cannot draw %d samples per pixel (multisampled framebuffer "
+                             "incomplete)", ey->samples);
     return 0;
 }
 
@@ -137,12 +168,15 @@ int hol__swapchains(hol__xr *x)
         ci.arraySize = 1;
         ci.mipCount = 1;
         HOL__XR(x, "create the swapchains", xrCreateSwapchain(x->session, &ci, &ey->swapchain));
-        if (hol__images(x, ey))
+        if (hol__images(x, ey) || (ey->samples > 1 && hol__msaa(x, ey, fmt)))
             return 1;
     }
-    hol__say(x, "xr: swapchains %dx%d per eye, format 0x%llx (%s), %u images, two passes",
+    hol__say(x, "xr: swapchains %dx%d per eye, format 0x%llx (%s), %u images, two passes, "
+                "%d sample%s per pixel (the runtime's recommendation%s)",
              x->eye[0].w, x->eye[0].h, (unsigned long long)fmt,
-             x->srgb ? "sRGB" : "linear RGBA8", x->eye[0].nimages);
+             x->srgb ? "sRGB" : "linear RGBA8", x->eye[0].nimages, x->eye[0].samples,
+             x->eye[0].samples > 1 ? "s" : "",
+             x->eye[0].samples > 1 ? ": resolved into the swapchain" : "");
     return 0;
 }
 
@@ -154,6 +188,12 @@ void hol__views_free(hol__xr *x)
             x->gl.DeleteFramebuffers((hol__GLsizei)ey->nimages, ey->fbo);
             x->gl.DeleteRenderbuffers(1, &ey->depth);
         }
+        if (ey->msaa_fbo && x->gl.DeleteFramebuffers) {
+            hol__GLuint rb[2] = {ey->msaa_color, ey->msaa_depth};
+            x->gl.DeleteFramebuffers(1, &ey->msaa_fbo);
+            x->gl.DeleteRenderbuffers(2, rb);
+        }
+        ey->msaa_fbo = ey->msaa_color = ey->msaa_depth = 0;
         free(ey->images);
         free(ey->fbo);
         ey->images = NULL;

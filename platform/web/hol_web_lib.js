@@ -57,7 +57,7 @@ var HolWebLib = {
       if (HolXR.off) return HolXR.off;
       var names = ['frame', 'nviews', 'visibility', 'head_valid', 'head_pos', 'head_quat',
         'bounds', 'view', 'view_size', 'vp', 'proj', 'pos', 'quat', 'pad', 'pad_size',
-        'present', 'touch_layout', 'grip_valid', 'grip_pos', 'grip_quat', 'button', 'axes'];
+        'present', 'touch_layout', 'grip_valid', 'grip_pos', 'grip_quat', 'button', 'axes', 'hand'];
       var o = {};
       for (var i = 0; i < names.length; i++) o[names[i]] = Module['_hol_web_xr_offset'](i);
       HolXR.off = o;
@@ -190,6 +190,12 @@ var HolWebLib = {
               [t.orientation.x, t.orientation.y, t.orientation.z, t.orientation.w], 4);
           }
         }
+        // a tracked hand is there (and is a hand: its pinches are
+        // gestures, hol_web_xr.h) with or without a gamepad
+        if (src.hand) {
+          f[p + o.present] = 1;
+          f[p + o.hand] = 1;
+        }
         var ev = HolXR.held && HolXR.held[src.handedness];
         if (ev && (ev[0] || ev[1])) {
           f[p + o.present] = 1;
@@ -274,6 +280,28 @@ var HolWebLib = {
     }
   },
   $HolXR__postset: 'Module["holXR"] = HolXR;',
+
+  // a controller pulse (hand 0 left, 1 right; amplitude 0..1; ms) on the
+  // first haptic actuator of that hand's gamepad; 1 if one was asked
+  hol_web_js_pulse__deps: ['$HolXR'],
+  hol_web_js_pulse: function (hand, amp, ms) {
+    var s = HolXR.session, want = hand ? 'right' : 'left';
+    if (!s) return 0;
+    var srcs = s.inputSources;
+    for (var i = 0; i < srcs.length; i++) {
+      var gp = srcs[i].handedness === want && srcs[i].gamepad;
+      var a = gp && gp.hapticActuators && gp.hapticActuators[0];
+      if (!a || !a.pulse) continue;
+      try {
+        a.pulse(amp, ms).catch(function () {});
+        HolXR.pulses = (HolXR.pulses || 0) + 1;
+        return 1;
+      } catch (e) {
+        return 0;
+      }
+    }
+    return 0;
+  },
 
   hol_web_js_focused__deps: ['$HolXR'],
   hol_web_js_focused: function () {

@@ -175,7 +175,8 @@ static void poll_gamepad(hol_web_pancake *p)
  * 0 app steps, 1 XR frames, 2 XR frames with two views, 3 XR frames
  * focused, 4 the app state (hol_app_state), 5 paused, 6 room steps in the
  * level, 7 the session is over, 8 failed, 9 head x, 10 head z, 11 cell
- * column, 12 cell row, 13 the level clock, 14 yaw. */
+ * column, 12 cell row, 13 the level clock, 14 yaw, 15 the device the
+ * prompts name (HOL_DEVICE_*). */
 EMSCRIPTEN_KEEPALIVE double hol_web_state(int what)
 {
     hol_web *w = &hol_web_g;
@@ -201,6 +202,7 @@ EMSCRIPTEN_KEEPALIVE double hol_web_state(int what)
     case 12: return v->user.row;
     case 13: return v->hud.elapsed_s;
     case 14: return v->yaw_deg;
+    case 15: return v->hud.device;
     default: return -1;
     }
 }
@@ -245,6 +247,18 @@ EMSCRIPTEN_KEEPALIVE const char *hol_web_overlay(void)
 {
     return hol_web_g.overlay ? hol_web_g.overlay_text : NULL;
 }
+
+/* The prompt line the HUD shows (on the world panel in VR: "LEFT PINCH:
+ * menu" in a session's first seconds with hands), for the tests. */
+EMSCRIPTEN_KEEPALIVE const char *hol_web_hint(void)
+{
+    return hol_web_game_app() ? hol_app_get_view(hol_web_game_app())->hud.hint : "";
+}
+
+/* Where the first frame's time goes (performance.now() at: main's start,
+ * after the GL context, after the game - the navigator's table, the
+ * world, the level -, after the renderer), told with the first frame. */
+static double boot_ms[4];
 
 #define HOL_WEB_UNTOLD "?"
 
@@ -354,8 +368,13 @@ static EM_BOOL pancake_frame(double t_ms, void *user)
         hol_web_js_event("failed", "rendering failed");
     } else if (!w->drawn_first) {
         w->drawn_first = 1; /* performance.now(): since the page's navigation began */
-        printf("web: first frame %.0f ms after the page began loading\n",
-               emscripten_performance_now());
+        double now = emscripten_performance_now();
+        printf("web: first frame %.0f ms after the page began loading: main at %.0f ms (the "
+               "page, the wasm's download and compile), GL context %.0f ms, the game (the "
+               "navigator's table, the world) %.0f ms, the renderer %.0f ms, the first frame "
+               "%.0f ms\n",
+               now, boot_ms[0], boot_ms[1] - boot_ms[0], boot_ms[2] - boot_ms[1],
+               boot_ms[3] - boot_ms[2], now - boot_ms[3]);
     }
     hol_web_stats_add(c0);
     return EM_TRUE;
@@ -413,10 +432,12 @@ int main(void)
     w->check_frame = -1;
     w->pause_told = HOL_WEB_UNTOLD;
     char msg[256] = "";
+    boot_ms[0] = emscripten_performance_now();
     if (make_gl()) {
         hol_web_js_event("failed", "this browser has no WebGL 2 with a stencil buffer");
         return 1;
     }
+    boot_ms[1] = emscripten_performance_now();
     w->pan.snap_deg = config_snap();
     if (w->pan.snap_deg < 0) {
         hol_web_js_event("failed", "snap is not a divisor of 360 in 1..180");
@@ -427,6 +448,7 @@ int main(void)
         hol_web_js_event("failed", msg);
         return 1;
     }
+    boot_ms[2] = emscripten_performance_now();
     hol_render_desc rd;
     memset(&rd, 0, sizeof rd);
     rd.getproc = gl_getproc;
@@ -438,7 +460,7 @@ int main(void)
         hol_web_js_event("failed", "cannot initialise the renderer on this WebGL context");
         return 1;
     }
-    w->t0_ms = emscripten_performance_now();
+    w->t0_ms = boot_ms[3] = emscripten_performance_now();
     listen();
     emscripten_request_animation_frame_loop(pancake_frame, NULL);
     hol_web_js_event("ready", "");

@@ -51,6 +51,42 @@ uint32_t hol_web_xr_buttons(const hol_web_xr_pad pad[2], uint32_t *out_device)
     return b;
 }
 
+/* The hands' pinches (hol_web_xr.h: a tap on its end, back when held
+ * long) into *held and *pressed; clears the hands' buttons in pad. */
+static void hand_pinches(hol_web_xr_state *st, hol_web_xr_pad pad[2], double t, int focused,
+                         uint32_t *held, uint32_t *pressed)
+{
+    for (int h = 0; h < 2; h++) {
+        hol_web_xr_pad *p = &pad[h];
+        if (!(p->present > 0 && p->hand > 0)) {
+            st->pinch_on[h] = 0;
+            continue;
+        }
+        int pinch = p->button[B_TRIGGER] > 0.5f;
+        p->button[B_TRIGGER] = p->button[B_SQUEEZE] = 0;
+        if (pinch && !st->pinch_on[h]) {
+            st->pinch_on[h] = 1;
+            st->pinch_t0[h] = t;
+            st->pinch_spent[h] = !focused;
+        } else if (!pinch && st->pinch_on[h]) {
+            st->pinch_on[h] = 0;
+            if (!st->pinch_spent[h] && focused)
+                *pressed |= h == HOL_HAND_RIGHT ? HOL_BTN_CONFIRM : HOL_BTN_MENU;
+            continue;
+        }
+        if (!pinch)
+            continue;
+        if (!focused) {
+            st->pinch_spent[h] = 1;
+        } else if (t - st->pinch_t0[h] >= HOL_WEB_XR_LONG_PINCH_S && !st->pinch_spent[h]) {
+            st->pinch_spent[h] = 2; /* long: back, held until it ends */
+            *pressed |= HOL_BTN_BACK;
+        }
+        if (st->pinch_spent[h] == 2)
+            *held |= HOL_BTN_BACK;
+    }
+}
+
 void hol_web_xr_input(hol_web_xr_state *st, const hol_web_xr_frame *f, double t,
                       hol_input *out)
 {
@@ -67,10 +103,21 @@ void hol_web_xr_input(hol_web_xr_state *st, const hol_web_xr_frame *f, double t,
         in.flags |= HOL_INPUT_BOUNDS_SMALL;
     /* held while the session is not focused (a system menu over it) counts
      * neither then nor as a press when it comes back */
-    uint32_t held = hol_web_xr_buttons(f->pad, &in.device);
-    if (in.flags & HOL_INPUT_FOCUSED) {
+    hol_web_xr_pad pad[2] = {f->pad[0], f->pad[1]};
+    int focused = (in.flags & HOL_INPUT_FOCUSED) != 0;
+    uint32_t hand_held = 0, hand_taps = 0;
+    uint32_t dev = HOL_DEVICE_NONE;
+    hol_web_xr_buttons(pad, &dev);
+    if (dev != HOL_DEVICE_WEBXR_TOUCH)
+        hand_pinches(st, pad, in.time_s, focused, &hand_held, &hand_taps);
+    for (int h = 0; h < 2; h++)
+        if (dev != HOL_DEVICE_WEBXR_TOUCH && pad[h].present > 0 && pad[h].hand > 0)
+            dev = HOL_DEVICE_WEBXR_HAND;
+    in.device = dev;
+    uint32_t held = hol_web_xr_buttons(pad, NULL) | hand_held;
+    if (focused) {
         in.buttons = held;
-        in.pressed = held & ~st->prev_buttons;
+        in.pressed = (held & ~st->prev_buttons) | hand_taps;
     }
     st->prev_buttons = held;
     if (f->head_valid > 0) {

@@ -31,7 +31,18 @@
  *   recentre. The thumbsticks' axes move nothing: the player walks.
  *   WebXR's select and squeeze (a hand's pinch, which has no gamepad on
  *   every browser) are written by the glue as that hand's trigger and
- *   squeeze held (present set), so hands alone use the second layout.
+ *   squeeze held (present set).
+ * - Hands (a tracked hand, XRInputSource.hand; the glue sets `hand` and
+ *   `present` for it whether or not it has a gamepad): with no controller
+ *   of the A/B, X/Y layout, HOL_DEVICE_WEBXR_HAND, and a hand's pinch
+ *   (its select, or its gamepad's button 0) is a gesture of its own rather
+ *   than a held trigger: a pinch let go within HOL_WEB_XR_LONG_PINCH_S is
+ *   a tap, pressed when it ends (right hand: confirm; left hand: the menu,
+ *   opened and closed); a pinch held HOL_WEB_XR_LONG_PINCH_S is back,
+ *   pressed then and held until it ends, its end pressing nothing (in the
+ *   menu back quits: hands alone open the menu, resume, restart and
+ *   quit). A pinch going on while the session is not focused counts
+ *   neither then nor at its end. A hand's squeeze does nothing.
  * - hol_web_xr_input fills the frame's record: time, HOL_INPUT_FOCUSED
  *   while the session is `visible` (not `visible-blurred` or `hidden`), the
  *   head (the viewer pose) and both grips in room coordinates, buttons,
@@ -54,6 +65,7 @@
 
 #define HOL_WEB_XR_BUTTONS 8
 #define HOL_WEB_XR_AXES 4
+#define HOL_WEB_XR_LONG_PINCH_S 1.0 /* a hand's pinch held this long: back */
 
 enum { HOL_WEB_XR_HIDDEN = 0, HOL_WEB_XR_BLURRED = 1, HOL_WEB_XR_VISIBLE = 2 };
 
@@ -71,6 +83,7 @@ typedef struct hol_web_xr_pad {
     float grip_pos[3], grip_quat[4];
     float button[HOL_WEB_XR_BUTTONS];   /* 1 pressed, 0 not (or missing) */
     float axes[HOL_WEB_XR_AXES];
+    float hand;                         /* 1: a tracked hand (XRInputSource.hand) */
 } hol_web_xr_pad;
 
 /* Everything the glue copies per XRFrame: floats only, so the page writes
@@ -92,6 +105,10 @@ typedef struct hol_web_xr_state {
                                from the view; 0: 3 x 3 m) */
     uint32_t prev_buttons;
     double last_t;
+    /* each hand's pinch: going on (1), since pinch_t0; spent (1: long, or
+     * begun unfocused: its end presses nothing) */
+    int pinch_on[2], pinch_spent[2];
+    double pinch_t0[2];
 } hol_web_xr_state;
 
 /* The room camera of one view (viewport size as the camera's size). */

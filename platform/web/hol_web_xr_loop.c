@@ -18,6 +18,8 @@
 #include "hol_web.h"
 
 extern void hol_web_js_event(const char *kind, const char *text);
+extern void hol_web_js_config(const char *key, char *buf, int cap);
+extern int hol_web_js_pulse(int hand, double amplitude, int duration_ms);
 
 #define HOL__MARGIN 0.15 /* the motion's default hedge margin */
 #define HOL__FIT_NOTE_S 12.0 /* seconds the fit stays on the HUD */
@@ -28,7 +30,8 @@ enum {
     HOL__OFF_HEAD_POS, HOL__OFF_HEAD_QUAT, HOL__OFF_BOUNDS, HOL__OFF_VIEW, HOL__OFF_VIEW_FLOATS,
     HOL__OFF_VIEW_VP, HOL__OFF_VIEW_PROJ, HOL__OFF_VIEW_POS, HOL__OFF_VIEW_QUAT, HOL__OFF_PAD,
     HOL__OFF_PAD_FLOATS, HOL__OFF_PAD_PRESENT, HOL__OFF_PAD_TOUCH, HOL__OFF_PAD_GRIP_VALID,
-    HOL__OFF_PAD_GRIP_POS, HOL__OFF_PAD_GRIP_QUAT, HOL__OFF_PAD_BUTTON, HOL__OFF_PAD_AXES
+    HOL__OFF_PAD_GRIP_POS, HOL__OFF_PAD_GRIP_QUAT, HOL__OFF_PAD_BUTTON, HOL__OFF_PAD_AXES,
+    HOL__OFF_PAD_HAND
 };
 
 EMSCRIPTEN_KEEPALIVE int hol_web_xr_offset(int what)
@@ -57,6 +60,7 @@ EMSCRIPTEN_KEEPALIVE int hol_web_xr_offset(int what)
         F(offsetof(hol_web_xr_pad, grip_quat)),
         F(offsetof(hol_web_xr_pad, button)),
         F(offsetof(hol_web_xr_pad, axes)),
+        F(offsetof(hol_web_xr_pad, hand)),
     };
 #undef F
     return what >= 0 && what < (int)(sizeof off / sizeof off[0]) ? off[what] : -1;
@@ -250,6 +254,26 @@ EMSCRIPTEN_KEEPALIVE void hol_web_xr_recentred(void)
     hol_web_g.xr_recentred = 1;
 }
 
+/* The step's controller pulses (core/hol_haptic.h: a hand into a hedge or
+ * a trunk, a gentle one on each room step), played on that hand's
+ * gamepad's first haptic actuator (the glue: GamepadHapticActuator.pulse;
+ * a hand without one is skipped). Off with the page's haptics=0 (as
+ * holonomy xr --no-haptics). */
+static void xr_pulses(void)
+{
+    static int off = -1;
+    if (off < 0) {
+        char s[8];
+        hol_web_js_config("haptics", s, sizeof s);
+        off = !strcmp(s, "0") || !strcmp(s, "off");
+        printf("web: haptics %s\n", off ? "off (haptics=0)" : "on");
+    }
+    const hol_haptic *hp = &hol_app_get_events(hol_web_game_app())->haptic;
+    for (int h = 0; !off && h < 2; h++)
+        if (hp->hand[h].amplitude > 0)
+            hol_web_js_pulse(h, hp->hand[h].amplitude, hp->hand[h].duration_ms);
+}
+
 /* One XRFrame (t_ms: its time, performance.now()'s origin; fb: the layer's
  * framebuffer, 0 for the default one). Returns 0 to go on, 1 when the
  * session is over (the glue ends the XR session). */
@@ -274,6 +298,7 @@ EMSCRIPTEN_KEEPALIVE int hol_web_xr_step(double t_ms, int fb)
     w->xr_focused += (in.flags & HOL_INPUT_FOCUSED) != 0;
     if (hol_web_step(&in))
         return 1;
+    xr_pulses();
     xr_render(xr_noted(hol_app_get_view(hol_web_game_app())), &in, fb);
     if (w->xr_ncpu < (int)(sizeof w->xr_cpu_ms / sizeof w->xr_cpu_ms[0]))
         w->xr_cpu_ms[w->xr_ncpu++] = emscripten_get_now() - c0;

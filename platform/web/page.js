@@ -10,7 +10,8 @@
 // gives the order of its conditions: README, Study designs),
 // participant=ID (the logs' participant), snap=DEG (snap turn on the
 // Left/Right keys), tiling=4,Q room=CxR cell=M (every level's geometry, as
-// play's --tiling/--room/--cell). None: the default campaign. A level file
+// play's --tiling/--room/--cell), haptics=0 (no controller pulses in VR, as
+// holonomy xr --no-haptics). None: the default campaign. A level file
 // chosen with "Level file..." plays on the next load (kept in
 // sessionStorage for this tab).
 'use strict';
@@ -18,7 +19,7 @@
 (function () {
   var params = new URLSearchParams(location.search);
   var config = {};
-  ['mode', 'seed', 'participant', 'snap', 'tiling', 'room', 'cell', 'gldebug'].forEach(function (k) {
+  ['mode', 'seed', 'participant', 'snap', 'tiling', 'room', 'cell', 'gldebug', 'haptics'].forEach(function (k) {
     if (params.has(k)) config[k] = params.get(k);
   });
   var $ = function (id) { return document.getElementById(id); };

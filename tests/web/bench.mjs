@@ -77,14 +77,26 @@ console.log('== web: headless chromium ' + spawnSync(CHROMIUM, ['--version'], { 
 const server = await serve(WEB, tmp);
 const browser = await launch(CHROMIUM, path.join(tmp, 'profile'), 800, 600);
 try {
-  const first = [];
+  const first = [], parts = [[], [], [], [], []];
+  const pid0 = browser.process().pid;
+  let cpu = 0;
   for (let i = 0; i < 3; i++) {
+    const c0 = chromiumCpu(pid0);
     const p = await openPage(browser, server.base + '/?mode=flag&seed=' + (i + 1));
     await p.until(() => p.log.find((l) => l.startsWith('web: first frame')), 'the first frame');
-    first.push(+/(\d+) ms/.exec(p.log.find((l) => l.startsWith('web: first frame')))[1]);
+    cpu += chromiumCpu(pid0) - c0;
+    const line = p.log.find((l) => l.startsWith('web: first frame'));
+    first.push(+/(\d+) ms/.exec(line)[1]);
+    // main's start (page, wasm download and compile), GL, the game, the renderer, the frame
+    const m = /main at (\d+) ms .* GL context (\d+) ms, the game .* (\d+) ms, the renderer (\d+) ms, the first frame (\d+) ms/.exec(line);
+    if (m) for (let k = 0; k < 5; k++) parts[k].push(+m[k + 1]);
     await p.ctx.close();
   }
   console.log(`  first frame from page load (flag level; median of 3 loads): ${median(first)} ms`);
+  console.log(`    of which (medians): main begins at ${median(parts[0])} ms (the page, the wasm's download and compile), ` +
+    `GL context ${median(parts[1])} ms, the game (the navigator's table, the world) ${median(parts[2])} ms, ` +
+    `the renderer ${median(parts[3])} ms, the first frame itself ${median(parts[4])} ms; ` +
+    `all chromium processes ${(cpu / 3 * 1000).toFixed(0)} ms CPU a load`);
   // the main thread per frame with the frame path's error check (?gldebug=1:
   // glGetError after every eye, as every frame did before it was taken out)
   // and without (normal running), pancake and XR, in this one run

@@ -387,7 +387,7 @@ await check('entering, leaving and entering VR again walks nothing: walk a step 
   await p.ctx.close();
 });
 
-await check('the page in every state: why VR is unavailable (no headset; plain http from a LAN address), Enter and Exit VR, the pause\'s reason (window not focused, headset off, menu), F2\'s frame time, over: no Enter VR, Play again', async () => {
+await check('the page in every state: why VR is unavailable (no headset; plain http from a LAN address), Enter and Exit VR (the first seconds name Y for the menu), the pause\'s reason (window not focused, headset off, menu), F2\'s frame time, over: no Enter VR, Play again', async () => {
   // no headset: chromium's WebXR with no device
   const a = await openPage('?mode=explore&seed=2');
   let b = await vrButton(a);
@@ -432,6 +432,10 @@ await check('the page in every state: why VR is unavailable (no headset; plain h
   await enterVR(p);
   await p.until(async () => (await vrButton(p)).text === 'Exit VR', 'Exit VR');
   assert((await statusOf(p)) === 'In VR', 'status in VR: ' + (await statusOf(p)));
+  // the first seconds with the Quest's controllers: the panel names Y
+  const firstHint = await p.until(() => p.page.evaluate(() => UTF8ToString(Module._hol_web_hint())),
+    'a prompt in the first seconds', 10000);
+  assert(firstHint === 'Y: menu', 'the first seconds\' prompt with controllers: ' + firstHint);
   await p.page.evaluate(() => xrDevice.updateVisibilityState('hidden'));
   await p.until(async () => (await statusOf(p)) === 'Paused: the headset is off', 'the headset-off pause');
   await p.page.evaluate(() => xrDevice.updateVisibilityState('visible'));
@@ -456,33 +460,89 @@ await check('the page in every state: why VR is unavailable (no headset; plain h
   await p.ctx.close();
 });
 
-await check('hands without controllers (iwer\'s hand mode): two hand input sources; a left pinch opens the menu, a right pinch restarts there', async () => {
+await check('hands without controllers (iwer\'s hand mode): two hand input sources; the panel names the menu\'s gesture; a left pinch opens the menu, a right pinch restarts there, a long pinch quits', async () => {
   const p = await openPage('?mode=explore&seed=2', { iwer: true });
   await p.page.evaluate(() => { xrDevice.primaryInputMode = 'hand'; });
   await enterVR(p);
   const frames = async (n) => {
     const f0 = await p.state(S.XR_FRAMES);
-    await p.until(async () => (await p.state(S.XR_FRAMES)) >= f0 + n, n + ' XR frames', 120000);
+    await p.until(async () => (await p.state(S.XR_FRAMES)) >= f0 + n ||
+      (await p.state(S.OVER)) === 1, n + ' XR frames', 120000);
   };
+  const hint = () => p.page.evaluate(() => UTF8ToString(Module._hol_web_hint()));
   await frames(5);
   const srcs = await p.page.evaluate(() => Array.from(Module.holXR.session.inputSources)
     .map((x) => x.handedness + (x.hand ? ' hand' : '')));
   assert(srcs.length === 2 && srcs.every((x) => / hand$/.test(x)), 'input sources: ' + JSON.stringify(srcs));
-  const pinch = async (hand) => {
+  // the first seconds: the world panel's prompt names the gesture (hands: webxr-hand, 10)
+  assert((await p.state(S.DEVICE)) === 10, 'device ' + (await p.state(S.DEVICE)));
+  assert((await hint()) === 'LEFT PINCH: menu', 'the first seconds\' prompt: ' + (await hint()));
+  // a pinch: on, one frame, off (a tap: its action when it ends)
+  const pinch = async (hand, holdMs) => {
     await p.page.evaluate((h) => xrDevice.hands[h].updatePinchValue(1), hand);
-    await frames(3);
+    const t = Date.now();
+    await frames(1);
+    if (holdMs) {
+      while (Date.now() - t < holdMs) await sleep(100);
+      await frames(1);
+    }
     await p.page.evaluate((h) => xrDevice.hands[h].updatePinchValue(0), hand);
     await frames(2);
   };
-  await frames(20);
   assert((await p.state(S.PAUSED)) === 0, 'paused before the pinch');
   await pinch('left');
   assert((await p.state(S.PAUSED)) === 1, 'a left pinch did not open the menu');
+  const menuHint = await hint();
+  assert(menuHint === 'LEFT PINCH: resume, PINCH: restart, LONG PINCH: quit', 'the menu\'s prompt: ' + menuHint);
   const clock = await p.state(S.CLOCK);
   await pinch('right');
   assert((await p.state(S.PAUSED)) === 0 && (await p.state(S.CLOCK)) < clock, 'a right pinch did not restart');
+  await pinch('left');
+  assert((await p.state(S.PAUSED)) === 1, 'a left pinch did not open the menu again');
+  await pinch('right', 1500); /* held 1.5 s: back, which quits in the menu */
+  await p.until(async () => (await p.state(S.OVER)) === 1, 'the session over after a long pinch', 30000);
+  await p.until(() => p.page.evaluate(() => !Module.holXR.session), 'the XR session to end');
+  await p.until(async () => /^Session over/.test(await statusOf(p)), 'the page says the session is over');
   assert(!p.errors.length, 'errors: ' + p.errors.join('; '));
   await p.ctx.close();
+});
+
+await check('haptics on the web: a controller into the hedge gets one short pulse (0.8, 40 ms) on that hand; haptics=0 gives none', async () => {
+  const run = async (query) => {
+    const p = await openPage(query, { iwer: true });
+    await enterVR(p);
+    const frames = async (n) => {
+      const f0 = await p.state(S.XR_FRAMES);
+      await p.until(async () => (await p.state(S.XR_FRAMES)) >= f0 + n, n + ' XR frames', 120000);
+    };
+    await frames(5);
+    // count the pulses at the actuators the page is given
+    await p.page.evaluate(() => {
+      window.__pulses = [];
+      for (const src of Module.holXR.session.inputSources) {
+        const a = src.gamepad && src.gamepad.hapticActuators[0];
+        if (!a) continue;
+        const orig = a.pulse.bind(a);
+        a.pulse = (v, d) => { window.__pulses.push([src.handedness, v, d]); return orig(v, d); };
+      }
+    });
+    // the right controller 2 m to the right of the head (the room, 3 x 3 m,
+    // is centred on the head at the session's start): into the east hedge
+    await p.page.evaluate(() => {
+      const c = xrDevice.controllers.right, hp = xrDevice.position;
+      c.position.set(hp.x + 2.0, 1.0, hp.z);
+    });
+    await frames(10);
+    const pulses = await p.page.evaluate(() => window.__pulses);
+    assert(!p.errors.length, 'errors: ' + p.errors.join('; '));
+    await p.ctx.close();
+    return pulses;
+  };
+  const on = await run('?mode=explore&seed=2');
+  assert(on.length === 1 && on[0][0] === 'right' && Math.abs(on[0][1] - 0.8) < 1e-6 && on[0][2] === 40,
+    'pulses: ' + JSON.stringify(on));
+  const off = await run('?mode=explore&seed=2&haptics=0');
+  assert(off.length === 0, 'pulses with haptics=0: ' + JSON.stringify(off));
 });
 
 // ---- WebXR on iwer's Quest 3 -------------------------------------------------

@@ -67,6 +67,15 @@ for p in khr/simple_controller oculus/touch_controller htc/vive_controller \
          valve/index_controller microsoft/motion_controller; do
     check "bindings accepted: $p" "grep -q 'bindings accepted $p' $all"
 done
+# XR_EXT_hand_interaction: where the runtime lists it, enabled and its
+# bindings accepted; where not, said so (and not suggested)
+check "the hands (XR_EXT_hand_interaction): bound where listed ($(grep -o '^xr: XR_EXT_hand_interaction [a-z ]*' "$out/xr.out"))" \
+    'if grep -q "^xr: XR_EXT_hand_interaction enabled" $all; then grep -q "bindings accepted ext/hand_interaction_ext" $all;
+     else grep -q "^xr: XR_EXT_hand_interaction not listed" $all && ! grep -q "bindings accepted ext/hand_interaction_ext" $all; fi'
+check "the eyes' samples are the runtime's recommendation (said on the swapchain line)" \
+    'grep -q "^xr: swapchains .* sample.* per pixel (the runtime.s recommendation" $all'
+check "the first seconds name the menu's control (the simple controller's MENU) on the panel" \
+    'grep -q "^xr: prompt MENU: menu" $all' 
 check "left grip located" 'grep -q "^xr: grip left located" $all'
 check "right grip located" 'grep -q "^xr: grip right located" $all'
 check "the hands' interaction profile read (InteractionProfileChanged)" \
