@@ -117,4 +117,9 @@ run "P02 timeout" 0 "$H" play --study "$T/s/t.study" --participant P02 --size 64
 run "P02 resumes" 0 "$H" play --study "$T/s/t.study" --participant P02 --size 64x48 --log tlogs --input in1 --resume
 grep -q "practice, b, a; resumed at b (position 1), level 2 of 3\$" err && ok ||
     bad "a practice ended by its time limit is played again: $(cat err) $(cat tlogs/summary.csv)"
+# one level file twice in a condition: the one attempt done finishes the first only
+printf 'study tw\ncondition a\nlevel f.lvl\nlevel f.lvl\nset minimap hud\ncondition b\nlevel f.lvl\n' >"$T/s/tw.study"
+run "twice: session 1" 0 "$H" play --study "$T/s/tw.study" --participant P01 --size 64x48 --log twl --input in1
+run "twice: resumed" 0 "$H" play --study "$T/s/tw.study" --participant P01 --size 64x48 --log twl --input in1 --resume
+grep -q "a, b; resumed at a (position 1), level 2 of 3\$" err && ok || bad "twice: $(cat err)"
 finish cli_resume

@@ -16,13 +16,10 @@
 /* What the folder holds of one participant in one study. */
 typedef struct resume_rows {
     long rows;     /* summary rows and unfinished attempts of theirs */
-    int nfin;      /* finished attempts (done, timeout) in fin[] */
-    struct {
-        char condition[HOL_LEVEL_NAME_MAX];
-        long position;
-        char sha[HOL_SHA256_HEX];
-        int used;
-    } fin[HOL_SESSION_MAX_LEVELS * 4];
+    /* levels of the order with a finished attempt (done, timeout): each
+     * finished attempt marks the first unmarked level of its condition,
+     * position and text (a condition may play one level file twice) */
+    int done[HOL_SESSION_MAX_LEVELS];
     char bad[256]; /* a row the study given cannot have played ("" none) */
 } resume_rows;
 
@@ -33,34 +30,32 @@ static int resume_finished(const char *end)
     return !strcmp(end, "done") || !strcmp(end, "timeout");
 }
 
-/* Does the session's list (the whole order) hold a level of this
- * condition, position and text? */
-static int resume_known(const hol_level *levels, int n, const hol_report_attempt *a)
+/* The first level of the order (the whole order) of this condition,
+ * position and text not yet marked in done
+ * (done NULL: any); -1 when none. */
+static int resume_level(const hol_level *levels, int n, const hol_report_attempt *a,
+                        const int *done)
 {
     for (int i = 0; i < n; i++) {
         char hex[HOL_SHA256_HEX];
         hol_sha256_hex(levels[i].sha256, hex);
-        if (!strcmp(levels[i].condition, a->condition) && levels[i].position == a->position &&
-            !strcmp(hex, a->level_sha256))
-            return 1;
+        if ((!done || !done[i]) && !strcmp(levels[i].condition, a->condition) &&
+            levels[i].position == a->position && !strcmp(hex, a->level_sha256))
+            return i;
     }
-    return 0;
+    return -1;
 }
 
 static void resume_add(resume_rows *r, const hol_level *levels, int n,
                        const hol_report_attempt *a, int is_row)
 {
     r->rows++;
-    if (!r->bad[0] && !resume_known(levels, n, a))
+    if (!r->bad[0] && resume_level(levels, n, a, NULL) < 0)
         snprintf(r->bad, sizeof r->bad, "attempt %ld (condition %.60s, position %ld, level %.60s)",
                  a->attempt, a->condition, a->position, a->level);
-    if (!is_row || !resume_finished(a->end) ||
-        r->nfin >= (int)(sizeof r->fin / sizeof r->fin[0]))
-        return;
-    snprintf(r->fin[r->nfin].condition, sizeof r->fin[0].condition, "%.63s", a->condition);
-    r->fin[r->nfin].position = a->position;
-    snprintf(r->fin[r->nfin].sha, sizeof r->fin[0].sha, "%.64s", a->level_sha256);
-    r->fin[r->nfin++].used = 0;
+    int i = is_row && resume_finished(a->end) ? resume_level(levels, n, a, r->done) : -1;
+    if (i >= 0)
+        r->done[i] = 1;
 }
 
 /* The rows of one CSV file (summary.csv: header then rows; an
@@ -120,25 +115,13 @@ static int resume_scan(const char *cmd, const char *dir, const char *study,
     return rc;
 }
 
-/* The first level of the order without a finished attempt; finished
- * attempts are matched to the order's levels one each, in order, by
- * condition, position and level text (a condition may play one file
- * twice). */
-static int resume_first(const hol_level *levels, int n, resume_rows *r)
+/* The first level of the order without a finished attempt. */
+static int resume_first(int n, const resume_rows *r)
 {
-    for (int i = 0; i < n; i++) {
-        char hex[HOL_SHA256_HEX];
-        hol_sha256_hex(levels[i].sha256, hex);
-        int k = 0;
-        while (k < r->nfin && (r->fin[k].used || r->fin[k].position != levels[i].position ||
-                               strcmp(r->fin[k].condition, levels[i].condition) ||
-                               strcmp(r->fin[k].sha, hex)))
-            k++;
-        if (k == r->nfin)
-            return i;
-        r->fin[k].used = 1;
-    }
-    return n;
+    int i = 0;
+    while (i < n && r->done[i])
+        i++;
+    return i;
 }
 
 static char resume_note[256];
@@ -164,7 +147,7 @@ int play_study_resume(const char *cmd, const char *log_dir, const char *study,
                   participant, log_dir, r.bad);
         return CLI_EXIT_USAGE;
     }
-    int first = resume_first(levels, n, &r);
+    int first = resume_first(n, &r);
     if (first == n) {
         cli_error(cmd, 0, "participant %s has finished study %s in '%s': nothing to resume",
                   participant, study, log_dir);
