@@ -292,6 +292,20 @@ hol_err hol_session_abort(hol_session *s)
     return hol__end(s, HOL__END_ABORTED);
 }
 
+hol_err hol_session_end_killed(hol_session *s)
+{
+    if (!s->finished && s->log && s->attempt_open && !s->failed) {
+        hol__out_flush(s, &s->steps, 1);
+        hol__out_flush(s, &s->head, 1);
+        hol__out_close(s, &s->steps);
+        hol__out_close(s, &s->head);
+        s->attempt_open = 0;
+        if (!s->failed)
+            hol__recover_killed(s, s->attempt);
+    }
+    return hol__end(s, HOL_APP_END_NONE);
+}
+
 hol_err hol_session_finish(hol_session *s)
 {
     return hol__end(s, HOL_APP_END_NONE);

@@ -142,6 +142,14 @@ hol_err hol_session_abort(hol_session *s);
 /* End: the attempt in play ends `open`, every file is committed. Later
  * calls do nothing. */
 hol_err hol_session_finish(hol_session *s);
+/* End as a kill at this frame, then the next --append session's recovery,
+ * would have (a replay of a killed session's REC.live, issue 26): the
+ * attempt in play's rows are flushed and it is finished as recovery
+ * finishes a killed attempt (its summary row with end `killed`, `steps`
+ * the steps rows, `time` the last row's; its live files renamed), so the
+ * replay's summary equals the play's recovered one byte for byte; then as
+ * finish. */
+hol_err hol_session_end_killed(hol_session *s);
 /* Frees everything; writes nothing (call finish first to keep the files:
  * unfinished live files stay, for the next session's recovery). NULL ok. */
 void hol_session_destroy(hol_session *s);

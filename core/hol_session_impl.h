@@ -72,5 +72,8 @@ void hol__log_levels(hol_session *s);
 
 /* hol_session_recover.c */
 hol_err hol__log_open(hol_session *s, int append);
+/* Attempt a's live files (their rows flushed and closed) finished as a
+ * later session's recovery finishes a killed one. */
+void hol__recover_killed(hol_session *s, int a);
 
 #endif

@@ -332,6 +332,11 @@ static void hol__recover(hol_session *s, int a)
         s->recovered++;
 }
 
+void hol__recover_killed(hol_session *s, int a)
+{
+    hol__recover(s, a);
+}
+
 /* ---- opening the folder ------------------------------------------------------------- */
 
 /* 1 when summary.csv holds no more than a first part of its header line

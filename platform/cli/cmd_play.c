@@ -28,6 +28,7 @@
 static const char *const play_usage =
     "usage: holonomy play [LEVEL | --mode tutorial|flag|keys|explore | --study FILE]\n"
     "                     [--seed S] [--log DIR [--append [--restart-participant]]] [--participant ID]\n"
+    "                     [--resume]\n"
     "                     [--record FILE]\n"
     "                     [--frames N] [--input FILE] [--size WxH]\n"
     "                     [--no-gamepad | --gamepad-replay FILE] [--snap-turn DEG]\n"
@@ -72,6 +73,10 @@ static const char *const play_usage =
     "  --restart-participant  with --study and --append: start a participant\n"
     "                  who already has rows of this study in DIR again from\n"
     "                  the start of their order (else refused: one line)\n"
+    "  --resume        with --study and --log: continue the participant at the\n"
+    "                  first level of their order not finished in DIR (no\n"
+    "                  attempt ended done or timeout; README: Research logs),\n"
+    "                  appending to DIR; positions keep their numbers\n"
     "  --participant ID  the participant (1..63 letters, digits, '.', '_', '-'),\n"
     "                  in the summary and the recording\n"
     "  --record FILE   record the session (replay with 'holonomy replay'),\n"
@@ -106,7 +111,7 @@ typedef struct play_opts {
     play_geometry geo;
     uint64_t seed;
     long frames;
-    int w, h, use_pad, append, snap_deg, stats, restart_participant;
+    int w, h, use_pad, append, snap_deg, stats, restart_participant, resume;
 } play_opts;
 
 typedef struct play_ctx {
@@ -190,7 +195,7 @@ static const char *const play_valued[] = {"--mode",  "--seed",  "--log",  "--rec
 static int play_options(const char *cmd, int argc, char **argv, play_opts *o)
 {
     static const char *const flags[] = {"--no-gamepad", "--append", "--stats",
-                                        "--restart-participant", NULL};
+                                        "--restart-participant", "--resume", NULL};
     memset(o, 0, sizeof *o);
     o->seed = CLI_SEED_DEFAULT;
     o->w = 960, o->h = 720, o->use_pad = 1;
@@ -213,6 +218,8 @@ static int play_options(const char *cmd, int argc, char **argv, play_opts *o)
             o->stats = 1;
         } else if (!strcmp(a, "--restart-participant")) {
             o->restart_participant = 1;
+        } else if (!strcmp(a, "--resume")) {
+            o->resume = 1;
         } else if (play_value(cmd, a, val, o)) {
             return CLI_EXIT_USAGE;
         }
@@ -226,11 +233,16 @@ static int play_options(const char *cmd, int argc, char **argv, play_opts *o)
                         : o->append && !o->log_dir ? "--append goes with --log"
                         : o->restart_participant && !o->study
                             ? "--restart-participant goes with --study"
+                        : o->resume && o->restart_participant
+                            ? "give --resume or --restart-participant, not both"
+                        : o->resume && !o->study ? "--resume goes with --study"
+                        : o->resume && !o->log_dir ? "--resume goes with --log"
                             : NULL;
     if (clash) {
         cli_error(cmd, 0, "%s", clash);
         return CLI_EXIT_USAGE;
     }
+    o->append |= o->resume;
     const cli_path in[] = {{"LEVEL", o->level_path}, {"--input", o->input_path},
                            {"--gamepad-replay", o->pad_script}, {"--study", o->study}};
     const cli_path out[] = {{"--record", o->rec}, {"--log", o->log_dir}};
@@ -248,13 +260,17 @@ static int play_prepare_files(play_ctx *c)
         st = play_out_open(c->cmd, o->log_dir, o->append, o->rec, &c->out);
     if (!st && o->study)
         st = play_study_levels(c->cmd, o->study, o->participant,
-                               o->append && !o->restart_participant ? o->log_dir : NULL,
+                               o->append && !o->restart_participant && !o->resume
+                                   ? o->log_dir : NULL,
                                c->levels, &c->nlevels, c->study);
     else if (!st)
         st = play_levels(c->cmd, o->level_path, o->mode, o->seed, &o->geo, c->levels,
                              &c->nlevels);
     if (!st)
         st = play_geometry_apply(c->cmd, &o->geo, c->levels, c->nlevels);
+    if (!st && o->resume)
+        st = play_study_resume(c->cmd, o->log_dir, c->study, o->participant, c->levels,
+                               &c->nlevels);
     if (!st && o->input_path) {
         st = play_input_open(c->cmd, o->input_path, 0, &c->input);
         c->has_input = !st;

@@ -35,7 +35,9 @@ static const char *const replay_usage =
     PLAY_GEOMETRY_USAGE
     "\n"
     "SIGINT, SIGTERM or SIGHUP end it cleanly (the attempt in play is logged\n"
-    "with end 'aborted'). Exit status: 0 ok, 1 failure, 2 bad input (a bad\n"
+    "with end 'aborted'). A killed session's recording (REC.live) ends its\n"
+    "attempt 'killed', as the recovery of the play's log folder did.\n"
+    "Exit status: 0 ok, 1 failure, 2 bad input (a bad\n"
     "recording line is named), 128+N after signal N.\n";
 
 typedef struct replay_ctx {
@@ -291,8 +293,15 @@ int cli_cmd_replay(int argc, char **argv)
     free(c.rgba);
     if (c.have_gl)
         hol_osmesa_destroy(&c.gl);
-    /* a recording of an aborted session ends aborted (its exit stays 0) */
-    int end = play_session_end(c.cmd, c.s, abort || (c.has_input && c.input.aborted));
+    /* a recording of an aborted session ends aborted (its exit stays 0);
+     * a killed one's (REC.live, never renamed) as the kill and the
+     * recovery ended the play's attempt: killed */
+    size_t rl = strlen(c.rec);
+    int killed = !status && !abort && c.has_input && !c.input.aborted && rl > 5 &&
+                 !strcmp(c.rec + rl - 5, ".live");
+    int end = play_session_end(c.cmd, c.s,
+                               killed ? PLAY_END_KILLED
+                                      : abort || (c.has_input && c.input.aborted));
     play_out_close(&c.out);
     if (c.has_input)
         play_input_close(&c.input);

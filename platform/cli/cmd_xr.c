@@ -18,7 +18,7 @@
 
 static const char *const xr_usage =
     "usage: holonomy xr [LEVEL | --study FILE] [--frames N]\n"
-    "                   [--log DIR [--append [--restart-participant]]]\n"
+    "                   [--log DIR [--append [--restart-participant]] [--resume]]\n"
     "                   [--participant ID]\n"
     "                   [--record FILE] [--input FILE] [--space stage|local]\n"
     "                   [--play-area WxD] [--no-haptics]\n"
@@ -29,7 +29,7 @@ static const char *const xr_usage =
     "the room centred on the stage origin, north along stage -Z; the\n"
     "recentre action places it from the head. LEVEL is a level file (SPEC\n"
     "section 5); without one, the default campaign. Logs and the recording\n"
-    "are those of 'holonomy play' (its --log, --append, --restart-participant,\n"
+    "are those of 'holonomy play' (its --log, --append, --restart-participant, --resume,\n"
     "--participant and --record), so 'holonomy replay' runs a headset session again headless.\n"
     "Where the runtime gives the play area's bounds, the room and cell size\n"
     "are fitted to them (the most cells of at least 0.6 m, 0.1 m clear; a\n"
@@ -71,7 +71,7 @@ static const char *const xr_usage =
 typedef struct xr_opts {
     const char *level_path, *log_dir, *rec, *input_path, *check_dir, *participant, *study;
     long frames, check_frame;
-    int append, restart_participant;
+    int append, restart_participant, resume;
     int space; /* 0 or HOL_XR_SPACE_LOCAL (hol_xr_desc.space) */
     play_geometry geo;
     float play_area[2]; /* --play-area (hol_xr_desc.play_area) */
@@ -123,7 +123,7 @@ static const char *const xr_valued[] = {"--frames",      "--log",       "--recor
 static int xr_options(const char *cmd, int argc, char **argv, xr_opts *o)
 {
     static const char *const flags[] = {"--append", "--no-haptics", "--restart-participant",
-                                        NULL};
+                                        "--resume", NULL};
     memset(o, 0, sizeof *o);
     o->check_frame = -1;
     cli_opts p;
@@ -156,6 +156,8 @@ static int xr_options(const char *cmd, int argc, char **argv, xr_opts *o)
             o->no_haptics = 1;
         else if (!strcmp(a, "--restart-participant"))
             o->restart_participant = 1;
+        else if (!strcmp(a, "--resume"))
+            o->resume = 1;
         else if (!strcmp(a, "--play-area"))
             bad = xr_play_area(cmd, val, o->play_area);
         else if (!strcmp(a, "--space")) {
@@ -175,11 +177,16 @@ static int xr_options(const char *cmd, int argc, char **argv, xr_opts *o)
                         : o->append && !o->log_dir ? "--append goes with --log"
                         : o->restart_participant && !o->study
                             ? "--restart-participant goes with --study"
+                        : o->resume && o->restart_participant
+                            ? "give --resume or --restart-participant, not both"
+                        : o->resume && !o->study ? "--resume goes with --study"
+                        : o->resume && !o->log_dir ? "--resume goes with --log"
                             : NULL;
     if (clash) {
         cli_error(cmd, 0, "%s", clash);
         return CLI_EXIT_USAGE;
     }
+    o->append |= o->resume;
     const cli_path in[] = {{"LEVEL", o->level_path}, {"--input", o->input_path},
                            {"--study", o->study}};
     const cli_path out[] = {{"--record", o->rec}, {"--log", o->log_dir},
@@ -343,12 +350,15 @@ int cli_cmd_xr(int argc, char **argv)
     long nscript = 0;
     char study[HOL_REC_ID_MAX] = "";
     st = o.study ? play_study_levels(cmd, o.study, o.participant,
-                                     o.append && !o.restart_participant ? o.log_dir : NULL,
+                                     o.append && !o.restart_participant && !o.resume
+                                         ? o.log_dir : NULL,
                                      levels, &nlevels, study)
                  : play_levels(cmd, o.level_path, NULL, CLI_SEED_DEFAULT, &o.geo, levels,
                                &nlevels);
     if (!st)
         st = play_geometry_apply(cmd, &o.geo, levels, nlevels);
+    if (!st && o.resume)
+        st = play_study_resume(cmd, o.log_dir, study, o.participant, levels, &nlevels);
     if (!st)
         st = xr_script(cmd, o.input_path, &script, &nscript);
 #ifdef HOL_XR

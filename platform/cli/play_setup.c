@@ -380,7 +380,9 @@ int play_session_end(const char *cmd, hol_session *s, int abort)
 {
     if (!s)
         return 0;
-    hol_err e = abort ? hol_session_abort(s) : hol_session_finish(s);
+    hol_err e = abort == PLAY_END_KILLED ? hol_session_end_killed(s)
+                : abort                    ? hol_session_abort(s)
+                                           : hol_session_finish(s);
     if (e)
         cli_error(cmd, 0, "%s", hol_session_message(s));
     hol_session_destroy(s);

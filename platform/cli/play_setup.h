@@ -115,6 +115,9 @@ void play_out_close(play_out *po);
 int play_participant(const char *cmd, const char *id);
 int play_session_open(const char *cmd, play_out *po, const hol_level *levels, int nlevels,
                       const hol_rec_meta *meta, int append, hol_session **out);
+/* abort: 0 finish, 1 abort, PLAY_END_KILLED as a kill and its recovery
+ * (hol_session_end_killed: the replay of a killed session's REC.live). */
+#define PLAY_END_KILLED 2
 int play_session_end(const char *cmd, hol_session *s, int abort);
 
 void play_print_end(hol_session *s);

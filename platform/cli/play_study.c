@@ -95,7 +95,7 @@ static void study_tell(const char *cmd, const hol_study *s, const char *particip
 void play_study_announce(void)
 {
     if (study_line[0])
-        fprintf(stderr, "%s\n", study_line);
+        fprintf(stderr, "%s%s\n", study_line, play_study_resume_note());
     study_line[0] = 0;
 }
 
@@ -171,7 +171,8 @@ int play_study_participant_new(const char *cmd, const char *log_dir, const char 
         return 0;
     cli_error(cmd, 0,
               "participant %s already has data for study %s in '%s' (%ld attempt%s); "
-              "--restart-participant plays their order again from the start",
+              "--restart-participant plays their order again from the start, --resume "
+              "continues it",
               participant, study_name, log_dir, rows, rows == 1 ? "" : "s");
     return CLI_EXIT_USAGE;
 }

@@ -36,10 +36,31 @@ void play_study_announce(void);
  * 26): with --append, when log_dir's summary.csv has a row of this study
  * and participant, one line on stderr ("participant P07 already has data
  * for study four in 'DIR' (3 attempts); --restart-participant plays their
- * order again from the start") and 2. 0 when the folder has no
+ * order again from the start, --resume continues it") and 2. 0 when the folder has no
  * summary.csv or no such row; a summary.csv that cannot be read is
  * reported as cli_open_lines does (the session would refuse it too). */
 int play_study_participant_new(const char *cmd, const char *log_dir, const char *study_name,
                                const char *participant);
+
+/* --resume (issue 26): a participant's study continued where the log
+ * folder says it stopped. levels[0..*nlevels-1] is the participant's whole
+ * order (play_study_levels, with the geometry options applied); the rows
+ * of this study and participant in log_dir (summary.csv, and the
+ * attempt-NNN.live files a killed session left) say which levels are
+ * finished: a level is finished when one of its attempts ended `done` or
+ * `timeout` (its own rules ended it); `restart`, `quit`, `open`,
+ * `aborted`, `killed` leave it unfinished. Finished attempts are matched
+ * to the order's levels by condition, position and level_sha256 (one
+ * attempt per level, in order); the list is cut to start at the first
+ * level without one (a practice block already done is not played again),
+ * the levels keeping their condition and position. Refused with one line
+ * and 2: no rows of theirs (nothing to resume), every level finished, or
+ * a row the study given cannot have played (its condition, position and
+ * level text are in none of the order's levels: another study file, or
+ * another version of it). 0 ok; a summary that cannot be read: as
+ * cli_open_lines says. play_study_announce then adds where it resumed. */
+int play_study_resume(const char *cmd, const char *log_dir, const char *study,
+                      const char *participant, hol_level *levels, int *nlevels);
+const char *play_study_resume_note(void);
 
 #endif
