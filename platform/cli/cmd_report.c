@@ -18,6 +18,7 @@
 #include "cli.h"
 #include "cmd_report.h"
 #include "report_draw.h"
+#include "report_stats.h"
 
 static const char *const report_usage =
     "usage: holonomy report LOGDIR... --out DIR\n"
@@ -47,7 +48,8 @@ static int own_name(const char *n)
 {
     size_t l = strlen(n);
     if (!strcmp(n, ".") || !strcmp(n, "..") || !strcmp(n, "index.html") ||
-        !strcmp(n, "attempts.csv") || !strcmp(n, "conditions.csv"))
+        !strcmp(n, "attempts.csv") || !strcmp(n, "conditions.csv") ||
+        !strcmp(n, "stats.csv") || !strcmp(n, "learning.csv") || !strcmp(n, "participants.csv"))
         return 1;
     if (n[0] == '.' && strstr(n, ".holonomy-tmp."))
         return 1;
@@ -277,6 +279,8 @@ static void remove_stale(const report_run *r)
 static int run(report_run *r, report_buf *b)
 {
     int st = report_read_summaries(r);
+    if (!st)
+        st = report_stats_read(r);
     /* first every steps file and level is checked, then anything written */
     for (int i = 0; !st && i < r->natt; i++)
         st = picture(r, b, i, 0);
@@ -305,6 +309,8 @@ static int run(report_run *r, report_buf *b)
         st = report_write_csv(r);
     if (!st)
         st = report_write_conditions(r, &g);
+    if (!st)
+        st = report_stats_write(r);
     if (!st)
         st = report_write_html(r, &g);
     if (!st) {
@@ -344,6 +350,7 @@ int cli_cmd_report(int argc, char **argv)
         st = run(&r, b);
     if (!st)
         st = cli_finish_output(cmd);
+    report_stats_free(&r);
     report_free(&r);
     free(r.dirs);
     if (b) {

@@ -65,6 +65,7 @@ typedef struct report_run {
     report_opt *opt;   /* REPORT_OPT_CACHE entries, made on first use */
     int nopt, nopt_next;
     int quiet;         /* 1: warnings were given (the second pass) */
+    struct report_stats *stats; /* report_stats.h */
 } report_run;
 
 int report_read_summaries(report_run *r);

@@ -7,6 +7,7 @@
 #include "../file/hol_file.h"
 #include "cli.h"
 #include "cmd_report.h"
+#include "report_stats.h"
 
 /* A text from the logs, cleaned (hol_report_clean), as a CSV field. */
 static void csv(FILE *f, const char *s, int last)
@@ -174,7 +175,7 @@ static void html_head(FILE *f, const report_run *r, const hol_report_agg *g)
             fputs("<td class=\"n\"></td>", f);
         fprintf(f, "<td class=\"n\">%.2f</td></tr>\n", c->time_s / (double)c->n);
     }
-    fputs("</table>\n<h2>Attempts</h2>\n<p>Pictures: the Poincar&eacute; disk centred on the "
+    fputs("</table>\n<p>Pictures: the Poincar&eacute; disk centred on the "
           "tile where the level begins, room north up; the <span class=\"walked\">walked "
           "path</span> over the <span class=\"optimal\">optimal walk</span>, the start green, "
           "the objectives red (keys gold, the chest brown), the last tile ringed.</p>\n", f);
@@ -222,6 +223,8 @@ int report_write_html(const report_run *r, const hol_report_agg *g)
     if (st)
         return st;
     html_head(a.f, r, g);
+    report_stats_html(a.f, r);
+    fputs("<h2>Attempts</h2>\n", a.f);
     fputs("<table>\n<tr><th>#</th><th>path</th><th>participant</th><th>session</th><th>attempt</th>"
           "<th>study</th><th>condition</th><th>position</th><th>level</th><th>mode</th>"
           "<th>steps</th><th>optimum</th><th>efficiency</th><th>time (s)</th><th>end</th>"
