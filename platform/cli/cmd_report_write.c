@@ -175,11 +175,14 @@ static void html_head(FILE *f, const report_run *r, const hol_report_agg *g)
             fputs("<td class=\"n\"></td>", f);
         fprintf(f, "<td class=\"n\">%.2f</td></tr>\n", c->time_s / (double)c->n);
     }
-    fputs("</table>\n<p>Pictures: the Poincar&eacute; disk centred on the "
-          "tile where the level begins, room north up; the <span class=\"walked\">walked "
-          "path</span> over the <span class=\"optimal\">optimal walk</span>, the start green, "
-          "the objectives red (keys gold, the chest brown), the last tile ringed.</p>\n", f);
+    fputs("</table>\n", f);
 }
+
+static const char pictures_note[] =
+    "<p>Pictures: the Poincar&eacute; disk centred on the "
+    "tile where the level begins, room north up; the <span class=\"walked\">walked "
+    "path</span> over the <span class=\"optimal\">optimal walk</span>, the start green, "
+    "the objectives red (keys gold, the chest brown), the last tile ringed.</p>\n";
 
 static void html_row(FILE *f, const report_run *r, int i)
 {
@@ -225,6 +228,7 @@ int report_write_html(const report_run *r, const hol_report_agg *g)
     html_head(a.f, r, g);
     report_stats_html(a.f, r);
     fputs("<h2>Attempts</h2>\n", a.f);
+    fputs(pictures_note, a.f);
     fputs("<table>\n<tr><th>#</th><th>path</th><th>participant</th><th>session</th><th>attempt</th>"
           "<th>study</th><th>condition</th><th>position</th><th>level</th><th>mode</th>"
           "<th>steps</th><th>optimum</th><th>efficiency</th><th>time (s)</th><th>end</th>"
