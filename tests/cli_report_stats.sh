@@ -133,4 +133,28 @@ rm "$T/l3/points.csv" "$T/l3/answers.csv"
 run "no instruments" 0 "$H" report "$T/l3" --out "$T/r3"
 grep -q 'error_true\|ssq_\|likert' "$T/r3/stats.csv" && bad "rows from no data" || ok
 
+# factor columns after picture: q (numeric), cues (the summary's), minimap
+# (the level's place, read from level-HASH.txt), the log folder from DIR
+mkdir -p "$T/f/logs/a" "$T/f/out"
+HA=$(cd "$(dirname "$H")" && pwd)/$(basename "$H") # the binary from another folder
+{
+    echo "$S"
+    echo 'sa,P01,x,0.1.0,1,s1,map,1,lvl,abc,flag,5,6,"4,6",3x3,1,x,5,5,10,done'
+    echo 'sa,P01,x,0.1.0,2,s1,map,2,lvl,,flag,5,,"4,5",4x4,0.75,x,5,5,10,done'
+} >"$T/f/logs/a/summary.csv"
+printf 'mode flag\nseed 5\nflag Nf\nminimap hand\n' >"$T/f/logs/a/level-abc.txt"
+(cd "$T/f" && "$HA" report logs/a --out out/r >/dev/null 2>&1) && ok || bad "report of factors"
+head -1 "$T/f/out/r/attempts.csv" | grep -q ',logdir,picture,q,cues,minimap,logdir_relative$' && ok ||
+    bad "attempts.csv header: $(head -1 "$T/f/out/r/attempts.csv")"
+[ "$(sed -n 2p "$T/f/out/r/attempts.csv" | cut -d, -f18-)" = 'logs/a,,6,6,hand,../../logs/a' ] && ok ||
+    bad "factors row 1: $(sed -n 2p "$T/f/out/r/attempts.csv")"
+[ "$(sed -n 3p "$T/f/out/r/attempts.csv" | cut -d, -f16-)" = '4x4,0.75,logs/a,,5,,,../../logs/a' ] && ok ||
+    bad "factors row 2: $(sed -n 3p "$T/f/out/r/attempts.csv")"
+(cd "$T/f/logs/a" && "$HA" report . --out r >/dev/null 2>&1) && ok || bad "report inside the logs"
+[ "$(sed -n 2p "$T/f/logs/a/r/attempts.csv" | cut -d, -f23)" = '..' ] && ok ||
+    bad "the logs from inside: $(sed -n 2p "$T/f/logs/a/r/attempts.csv")"
+echo 'sa,P01,x,0.1.0,3,s1,map,2,lvl,,flag,5,many,"4,5",3x3,1,x,5,5,10,done' >>"$T/f/logs/a/summary.csv"
+run "bad cues" 2 "$H" report "$T/f/logs/a" --out "$T/f/bad"
+one_line "bad cues" "line 4: column cues: not a whole number"
+
 finish cli_report_stats

@@ -1,6 +1,7 @@
 /* cmd_report_write.c - the report's files (cmd_report.h): attempts.csv,
  * conditions.csv and index.html, each written atomically. */
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "../../core/hol_text.h"
@@ -63,6 +64,19 @@ static void geometry_text(const hol_report_attempt *a, char *tiling, char *room,
     snprintf(cell, 16, "%g", a->cell_m);
 }
 
+/* The factor columns after picture: q (numeric), cues (the summary's bits),
+ * minimap (the level's place), the log folder from DIR. */
+static void factor_columns(FILE *f, const report_run *r, int i, const char *rel)
+{
+    static const char *const place[] = {"hud", "hand", "off"};
+    const report_att *t = &r->att[i];
+    fprintf(f, "%d,", t->a.tiling_q);
+    if (t->a.cues >= 0)
+        fprintf(f, "%ld", t->a.cues);
+    fprintf(f, ",%s,", t->minimap >= 0 && t->minimap <= 2 ? place[t->minimap] : "");
+    csv(f, rel, 1);
+}
+
 int report_write_csv(const report_run *r)
 {
     hol_file_atomic a;
@@ -70,8 +84,18 @@ int report_write_csv(const report_run *r)
     int st = open_out(r, "attempts.csv", &a, path, sizeof path);
     if (st)
         return st;
+    static char rel[64][1024];
+    char(*rels)[1024] = r->ndirs <= 64 ? rel : calloc((size_t)r->ndirs, sizeof *rels);
+    if (!rels) {
+        hol_file_atomic_abort(&a);
+        cli_error(r->cmd, 0, "out of memory");
+        return CLI_EXIT_FAIL;
+    }
+    for (int d = 0; d < r->ndirs; d++)
+        report_rel_dir(r, d, rels[d], sizeof rels[d]);
     fputs("participant,session,attempt,study,condition,position,level,mode,steps,optimum,"
-          "efficiency,time,end,tiling,room,cell,logdir,picture\n", a.f);
+          "efficiency,time,end,tiling,room,cell,logdir,picture,q,cues,minimap,logdir_relative\n",
+          a.f);
     for (int i = 0; i < r->natt; i++) {
         const hol_report_attempt *t = &r->att[i].a;
         char pos[24], eff[24], tiling[16], room[16], cell[16], dir[1024];
@@ -91,8 +115,11 @@ int report_write_csv(const report_run *r)
         csv(a.f, tiling, 0);
         fprintf(a.f, "%s,%s,", room, cell);
         csv(a.f, safe_path(r->dirs[r->att[i].dir], dir, sizeof dir), 0);
-        csv(a.f, r->att[i].png, 1);
+        csv(a.f, r->att[i].png, 0);
+        factor_columns(a.f, r, i, rels[r->att[i].dir]);
     }
+    if (rels != rel)
+        free(rels);
     return commit(r, &a, path);
 }
 

@@ -2,6 +2,7 @@
  * points.csv and answers.csv read back, learning curves and the
  * per-participant table computed, stats.csv, learning.csv and
  * participants.csv written. */
+#include <limits.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -591,4 +592,35 @@ int report_stats_write(const report_run *r)
         cli_error(r->cmd, 0, "out of memory");
     free(o);
     return st;
+}
+
+/* ---- a log folder named from the report's folder ---- */
+
+void report_rel_dir(const report_run *r, int d, char *out, size_t cap)
+{
+    char from[4096], to[4096];
+    out[0] = 0;
+    if (!realpath(r->out, from) || !realpath(r->dirs[d], to))
+        return;
+    size_t common = 0, i = 0;
+    for (;; i++) { /* the last '/' (or end) where both agree */
+        int ef = !from[i] || from[i] == '/', et = !to[i] || to[i] == '/';
+        if (ef && et)
+            common = i;
+        if (!from[i] || !to[i] || from[i] != to[i])
+            break;
+    }
+    if (!strcmp(from, "/"))
+        common = 0;
+    size_t n = 0;
+    for (const char *p = from + common; *p; p++)
+        if (*p == '/' && n + 4 < cap)
+            n += (size_t)snprintf(out + n, cap - n, "../");
+    const char *rest = to + common + (to[common] == '/');
+    if (!*rest && n)
+        out[n - 1] = 0; /* "../.." */
+    else if (!*rest)
+        snprintf(out, cap, ".");
+    else
+        snprintf(out + n, cap - n, "%s", rest);
 }

@@ -21,6 +21,7 @@
 #ifndef REPORT_STATS_H
 #define REPORT_STATS_H
 
+#include <stddef.h>
 #include <stdio.h>
 
 #include "cmd_report.h"
@@ -29,5 +30,8 @@ int report_stats_read(report_run *r);
 int report_stats_write(const report_run *r);
 void report_stats_html(FILE *f, const report_run *r);
 void report_stats_free(report_run *r);
+/* LOGDIR d named from DIR (both resolved: "../logs"); "" when either
+ * cannot be resolved. */
+void report_rel_dir(const report_run *r, int d, char *out, size_t cap);
 
 #endif
