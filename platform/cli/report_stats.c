@@ -3,6 +3,7 @@
  * per-participant table computed, stats.csv, learning.csv and
  * participants.csv written. */
 #include <limits.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -210,16 +211,37 @@ static void flush_group(report_stats *s, rs_group *g)
     g->have_ssq = g->have_tlx = 0;
 }
 
+/* The Likert items by (condition, questionnaire, item): an open-addressed
+ * table of RS_LIK_SLOTS (twice the items it may hold), O(1) a row. */
+static unsigned lik_hash(int cond, const char *q, const char *item)
+{
+    unsigned h = 2166136261u ^ (unsigned)cond;
+    for (const char *p = q; *p; p++)
+        h = (h ^ (unsigned char)*p) * 16777619u;
+    h = (h ^ 0x1f) * 16777619u;
+    for (const char *p = item; *p; p++)
+        h = (h ^ (unsigned char)*p) * 16777619u;
+    return h;
+}
+
 static void add_likert(report_stats *s, int cond, const char *q, const char *item, double v)
 {
+    unsigned h = lik_hash(cond, q, item) % RS_LIK_SLOTS;
     int i;
-    for (i = 0; i < s->nlik; i++)
-        if (s->lik[i].cond == cond && !strcmp(s->lik[i].q, q) && !strcmp(s->lik[i].item, item))
+    while ((i = s->slot[h]) >= 0) {
+        const rs_likert *l = &s->lik[i];
+        if (l->cond == cond && !strncmp(l->q, q, sizeof l->q - 1) &&
+            !strncmp(l->item, item, sizeof l->item - 1))
             break;
-    if (i == s->nlik) {
-        if (s->nlik == s->caplik)
-            return; /* bounded: the first caplik items are counted */
-        rs_likert *l = &s->lik[s->nlik++];
+        h = (h + 1) % RS_LIK_SLOTS;
+    }
+    if (i < 0) {
+        if (s->nlik == s->caplik) {
+            s->lik_dropped++; /* bounded: a warning names it */
+            return;
+        }
+        i = s->slot[h] = s->nlik++;
+        rs_likert *l = &s->lik[i];
         l->cond = cond;
         snprintf(l->q, sizeof l->q, "%s", q);
         snprintf(l->item, sizeof l->item, "%s", item);
@@ -388,11 +410,14 @@ static int alloc_stats(report_run *r)
         !(s->att_cond = malloc(sizeof *s->att_cond * n)) ||
         !(s->order = malloc(sizeof *s->order * n)) ||
         !(s->fix = calloc(n * RS_NFIX, sizeof *s->fix)) ||
-        !(s->lik = malloc(sizeof *s->lik * 4096))) {
+        !(s->lik = malloc(sizeof *s->lik * RS_LIK_MAX)) ||
+        !(s->slot = malloc(sizeof *s->slot * RS_LIK_SLOTS))) {
         cli_error(r->cmd, 0, "out of memory");
         return CLI_EXIT_FAIL;
     }
-    s->caplik = 4096;
+    s->caplik = RS_LIK_MAX;
+    for (int i = 0; i < RS_LIK_SLOTS; i++)
+        s->slot[i] = -1;
     return 0;
 }
 
@@ -429,6 +454,9 @@ int report_stats_read(report_run *r)
             st = read_answers(r, d, c);
     }
     free(c);
+    if (!st && s->lik_dropped)
+        fprintf(stderr, "holonomy %s: warning: more than %d Likert items and conditions: "
+                        "%ld answers not in stats.csv\n", r->cmd, RS_LIK_MAX, s->lik_dropped);
     if (!st && (learning(r, s) || participants(r, s)))
         st = CLI_EXIT_FAIL;
     if (st == CLI_EXIT_FAIL)
@@ -446,6 +474,7 @@ void report_stats_free(report_run *r)
     free(s->order);
     free(s->fix);
     free(s->lik);
+    free(s->slot);
     free(s->learn);
     free(s->prow);
     free(s);

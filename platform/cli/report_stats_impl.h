@@ -15,6 +15,9 @@ typedef struct rs_cond {
     int practice;
 } rs_cond;
 
+#define RS_LIK_MAX 4096   /* Likert items x conditions counted */
+#define RS_LIK_SLOTS 8192
+
 typedef struct rs_likert {
     int cond;
     char q[64], item[64];
@@ -41,6 +44,8 @@ typedef struct report_stats {
     hol_stats *fix; /* ncond x RS_NFIX */
     rs_likert *lik;
     int nlik, caplik;
+    int *slot; /* RS_LIK_SLOTS: an index in lik, -1 empty */
+    long lik_dropped; /* answers beyond RS_LIK_MAX items */
     rs_learn *learn;
     int nlearn;
     rs_prow *prow;
