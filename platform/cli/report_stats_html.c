@@ -52,7 +52,8 @@ static void means_table(FILE *f, const report_run *r)
           "(Student's t, n &minus; 1 degrees of freedom) and n. Pointing errors: |pointed "
           "&minus; true| and |pointed &minus; flat| in degrees (points.csv); SSQ scores with "
           "Kennedy's weights and raw TLX (mean of the six, 0..100) per complete questionnaire; "
-          "Likert items: every answer (answers.csv). Data: <a href=\"stats.csv\">stats.csv</a>, "
+          "other Likert items: every answer (answers.csv; the SSQ's and TLX's items one by one "
+          "in stats.csv). Data: <a href=\"stats.csv\">stats.csv</a>, "
           "<a href=\"learning.csv\">learning.csv</a>, "
           "<a href=\"participants.csv\">participants.csv</a>.</p>\n<table>\n<tr><th>condition"
           "</th><th>measure</th><th>n</th><th>mean</th><th>SD</th><th>95 % CI</th></tr>\n", f);
@@ -66,8 +67,9 @@ static void means_table(FILE *f, const report_run *r)
             stat_cells(f, &s->fix[c * RS_NFIX + m]);
         }
         for (int i = 0; i < s->nlik; i++) {
-            if (s->lik[i].cond != c)
-                continue;
+            if (s->lik[i].cond != c || !strcmp(s->lik[i].q, "ssq") ||
+                !strcmp(s->lik[i].q, "tlx"))
+                continue; /* their scores stand above; each item in stats.csv */
             fputs("<tr><td>", f);
             cond_name(f, &s->cond[c]);
             fputs("</td><td>likert ", f);
