@@ -40,15 +40,15 @@ run "report" 0 "$H" report "$T/la" "$T/lb" "$T/lc" --out "$T/out1"
 [ "$(cat "$T/out")" = "report: 3 attempts from 3 log folders" ] && ok || bad "stdout: $(cat "$T/out")"
 [ ! -s "$T/err" ] && ok || bad "warnings on good logs: $(cat "$T/err")"
 ls "$T/out1" | tr '\n' ' ' >"$T/ls"
-[ "$(cat "$T/ls")" = "attempt-0001.png attempt-0002.png attempt-0003.png attempts.csv conditions.csv index.html " ] &&
+[ "$(cat "$T/ls")" = "attempt-0001.png attempt-0002.png attempt-0003.png attempts.csv conditions.csv index.html learning.csv participants.csv stats.csv " ] &&
     ok || bad "files: $(cat "$T/ls")"
 
 # the CSV: one row per attempt, values from the summaries
 C="$T/out1/attempts.csv"
-head -1 "$C" | grep -qx 'participant,session,attempt,study,condition,position,level,mode,steps,optimum,efficiency,time,end,tiling,room,cell,logdir,picture' &&
+head -1 "$C" | grep -qx 'participant,session,attempt,study,condition,position,level,mode,steps,optimum,efficiency,time,end,tiling,room,cell,logdir,picture,q,cues,minimap,logdir_relative' &&
     ok || bad "header: $(head -1 "$C")"
 [ "$(wc -l <"$C")" = 4 ] && ok || bad "rows: $(wc -l <"$C")"
-sed -n 2p "$C" | grep -q "^P01,20260131T140509Z-00000001,1,s1,map,1,flag-a,flag,$K,$K,1.0000,[0-9.]*,done,\"4,5\",3x3,1,.*,attempt-0001.png\$" &&
+sed -n 2p "$C" | grep -q "^P01,20260131T140509Z-00000001,1,s1,map,1,flag-a,flag,$K,$K,1.0000,[0-9.]*,done,\"4,5\",3x3,1,.*,attempt-0001.png,5,15,hud,\.\./la\$" &&
     ok || bad "row 1: $(sed -n 2p "$C")"
 EFF=$(awk -v k="$K" 'BEGIN { printf "%.4f", k / (k + 2) }')
 sed -n 3p "$C" | grep -qF "P02,20260131T140509Z-00000002,1,s1,nomap,1,\"<b>&\"\"x\",flag,$((K + 2)),$K,$EFF," &&
@@ -131,7 +131,7 @@ run "--out new/" 0 "$H" report "$T/la" --out "$T/o5/" && [ -f "$T/o5/index.html"
 # a missing steps file: a warning, the row without a picture
 cp -r "$T/la" "$T/miss" && rm "$T/miss/steps-001.csv"
 run "missing steps" 0 "$H" report "$T/miss" --out "$T/o4" && one_line "missing steps" "warning: .*steps-001.csv: missing"
-[ ! -e "$T/o4/attempt-0001.png" ] && grep -q ',done,"4,5",3x3,1,.*,$' "$T/o4/attempts.csv" && ok ||
+[ ! -e "$T/o4/attempt-0001.png" ] && grep -q ',done,"4,5",3x3,1,.*,,5,15,hud,\.\./miss$' "$T/o4/attempts.csv" && ok ||
     bad "missing steps: $(cat "$T/o4/attempts.csv")"
 
 finish cli_report

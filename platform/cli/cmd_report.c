@@ -18,6 +18,7 @@
 #include "cli.h"
 #include "cmd_report.h"
 #include "report_draw.h"
+#include "report_stats.h"
 
 static const char *const report_usage =
     "usage: holonomy report LOGDIR... --out DIR\n"
@@ -28,12 +29,19 @@ static const char *const report_usage =
     "                   attempt, study, condition, position, level, mode, steps,\n"
     "                   optimum, efficiency (optimum/steps of a completed scored\n"
     "                   attempt, else empty), time, end, tiling, room, cell,\n"
-    "                   logdir, picture (RFC 4180, for R or pandas)\n"
+    "                   logdir, picture, q (the tiling's Q), cues, minimap (the\n"
+    "                   level's place), logdir_relative (the folder from DIR)\n"
+    "                   (RFC 4180, for R or pandas)\n"
     "  conditions.csv   per condition (study and condition; outside a study the\n"
     "                   level): attempts, done, mean steps, efficiency, time\n"
     "  attempt-NNNN.png each attempt's walked path beside the optimal walk on the\n"
     "                   Poincare disk (360 x 360), numbered in the order of the rows\n"
-    "  index.html       a page with both tables and the pictures\n"
+    "  stats.csv        per condition and measure (completed attempts outside\n"
+    "                   practice; pointing errors from points.csv, SSQ, TLX and\n"
+    "                   Likert items from answers.csv): n, mean, SD, 95 % CI (t)\n"
+    "  learning.csv     efficiency by position per condition (learning curves)\n"
+    "  participants.csv per participant and condition: attempts, done, means\n"
+    "  index.html       a page with the tables, the statistics and the pictures\n"
     "DIR is made when it does not exist (its parent must); an existing DIR must\n"
     "be empty or hold only a report's files (they are replaced). A malformed log\n"
     "is refused naming its file and line; a missing steps or level file is a\n"
@@ -47,7 +55,8 @@ static int own_name(const char *n)
 {
     size_t l = strlen(n);
     if (!strcmp(n, ".") || !strcmp(n, "..") || !strcmp(n, "index.html") ||
-        !strcmp(n, "attempts.csv") || !strcmp(n, "conditions.csv"))
+        !strcmp(n, "attempts.csv") || !strcmp(n, "conditions.csv") ||
+        !strcmp(n, "stats.csv") || !strcmp(n, "learning.csv") || !strcmp(n, "participants.csv"))
         return 1;
     if (n[0] == '.' && strstr(n, ".holonomy-tmp."))
         return 1;
@@ -277,6 +286,8 @@ static void remove_stale(const report_run *r)
 static int run(report_run *r, report_buf *b)
 {
     int st = report_read_summaries(r);
+    if (!st)
+        st = report_stats_read(r);
     /* first every steps file and level is checked, then anything written */
     for (int i = 0; !st && i < r->natt; i++)
         st = picture(r, b, i, 0);
@@ -305,6 +316,8 @@ static int run(report_run *r, report_buf *b)
         st = report_write_csv(r);
     if (!st)
         st = report_write_conditions(r, &g);
+    if (!st)
+        st = report_stats_write(r);
     if (!st)
         st = report_write_html(r, &g);
     if (!st) {
@@ -344,6 +357,7 @@ int cli_cmd_report(int argc, char **argv)
         st = run(&r, b);
     if (!st)
         st = cli_finish_output(cmd);
+    report_stats_free(&r);
     report_free(&r);
     free(r.dirs);
     if (b) {

@@ -33,6 +33,7 @@ typedef struct report_att {
     int has_walk;     /* its steps file was read */
     int has_optimal;  /* its level gave an optimal walk */
     int optimal_len;
+    int minimap;      /* its level's minimap place (hol_app_minimap_place), -1: unknown */
     char png[32];     /* its picture's name in DIR, "" for none */
 } report_att;
 
@@ -45,6 +46,7 @@ typedef struct report_opt {
     hol_room start;
     hol_tile goals[HOL_APP_MAX_OBJECTIVES];
     int ngoals, chest_last;
+    int minimap;               /* the level's minimap place, -1: unread */
     int has_optimal, optimal_len;
     int nwalk;
     hol_tile walk[HOL_NAV_WALK_MAX]; /* last: not cleared */
@@ -65,6 +67,7 @@ typedef struct report_run {
     report_opt *opt;   /* REPORT_OPT_CACHE entries, made on first use */
     int nopt, nopt_next;
     int quiet;         /* 1: warnings were given (the second pass) */
+    struct report_stats *stats; /* report_stats.h */
 } report_run;
 
 int report_read_summaries(report_run *r);

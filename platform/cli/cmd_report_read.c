@@ -244,6 +244,7 @@ static int optimal_of(report_run *r, const report_att *t, const char *path, repo
     if (st)
         return st;
     const hol_app_level *L = &r->level.lvl;
+    o->minimap = L->minimap;
     for (int i = 0; i < L->nstart; i++)
         if (hol_room_step(&o->start, L->start[i]))
             return warn(r, path, "its start walk leaves the room: no optimal walk");
@@ -296,6 +297,7 @@ int report_optimal(report_run *r, report_att *t, hol_room *out_start, hol_tile *
     *nwalk = *ngoals = 0;
     t->has_optimal = 0;
     t->optimal_len = -1;
+    t->minimap = -1;
     if (hol_room_start_in(a->tiling_q, a->room_cols, a->room_rows, out_start))
         return 0;
     snprintf(name, sizeof name, "level-%s.txt", a->level_sha256);
@@ -311,6 +313,7 @@ int report_optimal(report_run *r, report_att *t, hol_room *out_start, hol_tile *
         memset(o, 0, offsetof(report_opt, walk));
         o->start = *out_start;
         o->optimal_len = -1;
+        o->minimap = -1;
         st = optimal_of(r, t, path, o, &keep);
         if (keep) {
             snprintf(o->sha, sizeof o->sha, "%s", a->level_sha256);
@@ -328,6 +331,7 @@ int report_optimal(report_run *r, report_att *t, hol_room *out_start, hol_tile *
     *nwalk = o->nwalk;
     t->has_optimal = o->has_optimal;
     t->optimal_len = o->optimal_len;
+    t->minimap = o->minimap;
     return st;
 }
 

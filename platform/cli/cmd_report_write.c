@@ -1,12 +1,14 @@
 /* cmd_report_write.c - the report's files (cmd_report.h): attempts.csv,
  * conditions.csv and index.html, each written atomically. */
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "../../core/hol_text.h"
 #include "../file/hol_file.h"
 #include "cli.h"
 #include "cmd_report.h"
+#include "report_stats.h"
 
 /* A text from the logs, cleaned (hol_report_clean), as a CSV field. */
 static void csv(FILE *f, const char *s, int last)
@@ -62,6 +64,19 @@ static void geometry_text(const hol_report_attempt *a, char *tiling, char *room,
     snprintf(cell, 16, "%g", a->cell_m);
 }
 
+/* The factor columns after picture: q (numeric), cues (the summary's bits),
+ * minimap (the level's place), the log folder from DIR. */
+static void factor_columns(FILE *f, const report_run *r, int i, const char *rel)
+{
+    static const char *const place[] = {"hud", "hand", "off"};
+    const report_att *t = &r->att[i];
+    fprintf(f, "%d,", t->a.tiling_q);
+    if (t->a.cues >= 0)
+        fprintf(f, "%ld", t->a.cues);
+    fprintf(f, ",%s,", t->minimap >= 0 && t->minimap <= 2 ? place[t->minimap] : "");
+    csv(f, rel, 1);
+}
+
 int report_write_csv(const report_run *r)
 {
     hol_file_atomic a;
@@ -69,8 +84,18 @@ int report_write_csv(const report_run *r)
     int st = open_out(r, "attempts.csv", &a, path, sizeof path);
     if (st)
         return st;
+    static char rel[64][1024];
+    char(*rels)[1024] = r->ndirs <= 64 ? rel : calloc((size_t)r->ndirs, sizeof *rels);
+    if (!rels) {
+        hol_file_atomic_abort(&a);
+        cli_error(r->cmd, 0, "out of memory");
+        return CLI_EXIT_FAIL;
+    }
+    for (int d = 0; d < r->ndirs; d++)
+        report_rel_dir(r, d, rels[d], sizeof rels[d]);
     fputs("participant,session,attempt,study,condition,position,level,mode,steps,optimum,"
-          "efficiency,time,end,tiling,room,cell,logdir,picture\n", a.f);
+          "efficiency,time,end,tiling,room,cell,logdir,picture,q,cues,minimap,logdir_relative\n",
+          a.f);
     for (int i = 0; i < r->natt; i++) {
         const hol_report_attempt *t = &r->att[i].a;
         char pos[24], eff[24], tiling[16], room[16], cell[16], dir[1024];
@@ -90,8 +115,11 @@ int report_write_csv(const report_run *r)
         csv(a.f, tiling, 0);
         fprintf(a.f, "%s,%s,", room, cell);
         csv(a.f, safe_path(r->dirs[r->att[i].dir], dir, sizeof dir), 0);
-        csv(a.f, r->att[i].png, 1);
+        csv(a.f, r->att[i].png, 0);
+        factor_columns(a.f, r, i, rels[r->att[i].dir]);
     }
+    if (rels != rel)
+        free(rels);
     return commit(r, &a, path);
 }
 
@@ -174,11 +202,14 @@ static void html_head(FILE *f, const report_run *r, const hol_report_agg *g)
             fputs("<td class=\"n\"></td>", f);
         fprintf(f, "<td class=\"n\">%.2f</td></tr>\n", c->time_s / (double)c->n);
     }
-    fputs("</table>\n<h2>Attempts</h2>\n<p>Pictures: the Poincar&eacute; disk centred on the "
-          "tile where the level begins, room north up; the <span class=\"walked\">walked "
-          "path</span> over the <span class=\"optimal\">optimal walk</span>, the start green, "
-          "the objectives red (keys gold, the chest brown), the last tile ringed.</p>\n", f);
+    fputs("</table>\n", f);
 }
+
+static const char pictures_note[] =
+    "<p>Pictures: the Poincar&eacute; disk centred on the "
+    "tile where the level begins, room north up; the <span class=\"walked\">walked "
+    "path</span> over the <span class=\"optimal\">optimal walk</span>, the start green, "
+    "the objectives red (keys gold, the chest brown), the last tile ringed.</p>\n";
 
 static void html_row(FILE *f, const report_run *r, int i)
 {
@@ -222,6 +253,9 @@ int report_write_html(const report_run *r, const hol_report_agg *g)
     if (st)
         return st;
     html_head(a.f, r, g);
+    report_stats_html(a.f, r);
+    fputs("<h2>Attempts</h2>\n", a.f);
+    fputs(pictures_note, a.f);
     fputs("<table>\n<tr><th>#</th><th>path</th><th>participant</th><th>session</th><th>attempt</th>"
           "<th>study</th><th>condition</th><th>position</th><th>level</th><th>mode</th>"
           "<th>steps</th><th>optimum</th><th>efficiency</th><th>time (s)</th><th>end</th>"

@@ -1,0 +1,655 @@
+/* report_stats.c - the report's statistics (report_stats.h): conditions,
+ * points.csv and answers.csv read back, learning curves and the
+ * per-participant table computed, stats.csv, learning.csv and
+ * participants.csv written. */
+#include <limits.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "../../core/hol_study.h"
+#include "../../core/hol_text.h"
+#include "../file/hol_file.h"
+#include "../file/hol_lines.h"
+#include "cli.h"
+#include "report_stats_impl.h"
+
+const char *const rs_measure[RS_NFIX] = {
+    "steps",    "efficiency", "time",       "error_true",         "error_flat",
+    "ssq_total", "ssq_nausea", "ssq_oculomotor", "ssq_disorientation", "tlx_raw"};
+
+int rs_included(const report_run *r, int i)
+{
+    const report_stats *s = r->stats;
+    return !strcmp(r->att[i].a.end, "done") && !s->cond[s->att_cond[i]].practice;
+}
+
+static int cond_of(report_stats *s, const hol_report_attempt *a)
+{
+    const char *c = a->study[0] ? a->condition : a->level;
+    for (int i = 0; i < s->ncond; i++)
+        if (!strcmp(s->cond[i].study, a->study) && !strcmp(s->cond[i].condition, c))
+            return i;
+    rs_cond *n = &s->cond[s->ncond];
+    memcpy(n->study, a->study, sizeof n->study);
+    snprintf(n->condition, sizeof n->condition, "%s", c);
+    n->practice = a->study[0] && (!strcmp(c, HOL_STUDY_PRACTICE) || a->position == 0);
+    return s->ncond++;
+}
+
+static const report_run *sort_run; /* qsort has no context argument */
+
+static int by_key(const void *pa, const void *pb)
+{
+    const report_att *a = &sort_run->att[*(const int *)pa], *b = &sort_run->att[*(const int *)pb];
+    if (a->dir != b->dir)
+        return a->dir < b->dir ? -1 : 1;
+    int c = strcmp(a->a.session, b->a.session);
+    if (c)
+        return c;
+    return a->a.attempt < b->a.attempt ? -1 : a->a.attempt > b->a.attempt;
+}
+
+/* The condition of (dir, session, attempt): its attempt's, else "none". */
+static int find_cond(const report_run *r, int dir, const char *session, long attempt)
+{
+    const report_stats *s = r->stats;
+    int lo = 0, hi = r->natt;
+    while (lo < hi) {
+        int m = (lo + hi) / 2;
+        const report_att *t = &r->att[s->order[m]];
+        int c = t->dir != dir ? (t->dir < dir ? -1 : 1) : strcmp(t->a.session, session);
+        if (!c)
+            c = t->a.attempt < attempt ? -1 : t->a.attempt > attempt;
+        if (!c)
+            return s->att_cond[s->order[m]];
+        if (c < 0)
+            lo = m + 1;
+        else
+            hi = m;
+    }
+    return s->none;
+}
+
+/* ---- CSV files of the instruments, read by column name ---- */
+
+typedef struct rs_csv {
+    const report_run *r;
+    int dir;
+    char path[4200];
+    hol_lines l;
+    int col[16];
+    int ncol;
+    const char *f[HOL_REPORT_MAX_COLS];
+    int nf;
+    char buf[REPORT_LINE_MAX + 8];
+    char err[HOL_REPORT_ERR];
+} rs_csv;
+
+static int bad(rs_csv *c, const char *msg)
+{
+    cli_error(c->r->cmd, 0, "%.300s: line %ld: %s", c->path, c->l.lineno, msg);
+    return CLI_EXIT_USAGE;
+}
+
+/* Next data row into c->f (0 at the end, 1 a row, else -exit status);
+ * the header's columns (names) found first. */
+static int next_row(rs_csv *c, const char *const *names, int nnames)
+{
+    char *s;
+    size_t n;
+    int got;
+    while ((got = hol_lines_next(&c->l, &s, &n)) > 0) {
+        if (c->l.lineno == 1 && n >= 3 && !memcmp(s, "\xef\xbb\xbf", 3))
+            s += 3, n -= 3;
+        if (n == strspn(s, " \t"))
+            continue;
+        if (hol_report_csv_split(s, n, c->buf, sizeof c->buf, c->f, HOL_REPORT_MAX_COLS, &c->nf,
+                                 c->err))
+            return -bad(c, c->err);
+        if (c->ncol)
+            return 1;
+        for (int k = 0; k < nnames; k++) {
+            c->col[k] = -1;
+            for (int i = 0; i < c->nf; i++)
+                if (!strcmp(c->f[i], names[k]))
+                    c->col[k] = i;
+            if (c->col[k] < 0) {
+                snprintf(c->err, sizeof c->err, "no column '%s'", names[k]);
+                return -bad(c, c->err);
+            }
+        }
+        c->ncol = nnames;
+    }
+    return got < 0 ? -cli_lines_failed(c->r->cmd, "log", c->path, &c->l) : 0;
+}
+
+static const char *field(const rs_csv *c, int k)
+{
+    return c->col[k] < c->nf ? c->f[c->col[k]] : "";
+}
+
+/* A number field: 1 and *v, 0 empty; -1 not a number. */
+static int num(const char *s, double *v)
+{
+    if (!*s)
+        return 0;
+    char *end;
+    *v = strtod(s, &end);
+    return *end || *v != *v ? -1 : 1;
+}
+
+static int open_csv(rs_csv *c, const report_run *r, int d, const char *name)
+{
+    struct stat sb;
+    memset(c, 0, sizeof *c - sizeof c->buf);
+    c->r = r;
+    c->dir = d;
+    snprintf(c->path, sizeof c->path, "%s/%s", r->dirs[d], name);
+    if (lstat(c->path, &sb))
+        return 1; /* not there: nothing to read */
+    return cli_open_lines(r->cmd, "log", c->path, REPORT_LINE_MAX, &c->l) ? -1 : 0;
+}
+
+enum { P_SESSION, P_ATTEMPT, P_ETRUE, P_EFLAT };
+
+static int read_points(report_run *r, int d, rs_csv *c)
+{
+    static const char *const names[] = {"session", "attempt", "error_true", "error_flat"};
+    report_stats *s = r->stats;
+    int o = open_csv(c, r, d, "points.csv"), got;
+    if (o)
+        return o > 0 ? 0 : CLI_EXIT_USAGE;
+    while ((got = next_row(c, names, 4)) > 0) {
+        double att = 0, e[2] = {0, 0};
+        int k0 = num(field(c, P_ATTEMPT), &att), k1 = num(field(c, P_ETRUE), &e[0]),
+            k2 = num(field(c, P_EFLAT), &e[1]);
+        if (k0 != 1 || k1 < 0 || k2 < 0) {
+            got = -bad(c, k0 != 1 ? "attempt is not a number" : "an error is not a number");
+            break;
+        }
+        int ci = find_cond(r, d, field(c, P_SESSION), (long)att);
+        for (int k = 0; k < 2; k++)
+            if ((k ? k2 : k1) == 1)
+                hol_stats_add(&s->fix[ci * RS_NFIX + RS_ERR_TRUE + k], e[k] < 0 ? -e[k] : e[k]);
+    }
+    hol_lines_close(&c->l);
+    return got < 0 ? -got : 0;
+}
+
+/* ---- answers.csv: questionnaires grouped, scored, likert means ---- */
+
+enum { A_SESSION, A_PART, A_ATTEMPT, A_Q, A_WHEN, A_ITEM, A_KIND, A_VALUE };
+static const char *const tlx_items[6] = {"mental", "physical", "temporal",
+                                          "performance", "effort", "frustration"};
+
+typedef struct rs_group {
+    char key[4 * HOL_REPORT_TEXT];
+    int cond, nssq, ntlx;
+    double ssq[HOL_STATS_SSQ_NITEMS], tlx[6];
+    unsigned have_ssq, have_tlx;
+} rs_group;
+
+static void flush_group(report_stats *s, rs_group *g)
+{
+    hol_stats *f = &s->fix[g->cond * RS_NFIX];
+    if (g->have_ssq == (1u << HOL_STATS_SSQ_NITEMS) - 1) {
+        hol_stats_ssq_score sc;
+        hol_stats_ssq(g->ssq, &sc);
+        hol_stats_add(&f[RS_SSQ_T], sc.total);
+        hol_stats_add(&f[RS_SSQ_N], sc.nausea);
+        hol_stats_add(&f[RS_SSQ_O], sc.oculomotor);
+        hol_stats_add(&f[RS_SSQ_D], sc.disorientation);
+    }
+    if (g->have_tlx == 63) {
+        double t = 0;
+        for (int i = 0; i < 6; i++)
+            t += g->tlx[i];
+        hol_stats_add(&f[RS_TLX], t / 6);
+    }
+    g->have_ssq = g->have_tlx = 0;
+}
+
+/* The Likert items by (condition, questionnaire, item): an open-addressed
+ * table of RS_LIK_SLOTS (twice the items it may hold), O(1) a row. */
+static unsigned lik_hash(int cond, const char *q, const char *item)
+{
+    unsigned h = 2166136261u ^ (unsigned)cond;
+    for (const char *p = q; *p; p++)
+        h = (h ^ (unsigned char)*p) * 16777619u;
+    h = (h ^ 0x1f) * 16777619u;
+    for (const char *p = item; *p; p++)
+        h = (h ^ (unsigned char)*p) * 16777619u;
+    return h;
+}
+
+static void add_likert(report_stats *s, int cond, const char *q, const char *item, double v)
+{
+    unsigned h = lik_hash(cond, q, item) % RS_LIK_SLOTS;
+    int i;
+    while ((i = s->slot[h]) >= 0) {
+        const rs_likert *l = &s->lik[i];
+        if (l->cond == cond && !strncmp(l->q, q, sizeof l->q - 1) &&
+            !strncmp(l->item, item, sizeof l->item - 1))
+            break;
+        h = (h + 1) % RS_LIK_SLOTS;
+    }
+    if (i < 0) {
+        if (s->nlik == s->caplik) {
+            s->lik_dropped++; /* bounded: a warning names it */
+            return;
+        }
+        i = s->slot[h] = s->nlik++;
+        rs_likert *l = &s->lik[i];
+        l->cond = cond;
+        snprintf(l->q, sizeof l->q, "%s", q);
+        snprintf(l->item, sizeof l->item, "%s", item);
+        hol_stats_init(&l->s);
+    }
+    hol_stats_add(&s->lik[i].s, v);
+}
+
+static void answer_row(report_run *r, rs_csv *c, rs_group *g, double att, double v)
+{
+    report_stats *s = r->stats;
+    char key[sizeof g->key];
+    const char *q = field(c, A_Q), *item = field(c, A_ITEM);
+    snprintf(key, sizeof key, "%s\x1f%s\x1f%.0f\x1f%s\x1f%s", field(c, A_SESSION),
+             field(c, A_PART), att, q, field(c, A_WHEN));
+    if (strcmp(key, g->key)) {
+        flush_group(s, g);
+        memcpy(g->key, key, sizeof key);
+        g->cond = find_cond(r, c->dir, field(c, A_SESSION), (long)att);
+    }
+    add_likert(s, g->cond, q, item, v);
+    int k = hol_stats_ssq_index(item);
+    if (!strcmp(q, "ssq") && k >= 0) {
+        g->ssq[k] = v;
+        g->have_ssq |= 1u << k;
+    }
+    for (k = 0; !strcmp(q, "tlx") && k < 6; k++)
+        if (!strcmp(item, tlx_items[k])) {
+            g->tlx[k] = v;
+            g->have_tlx |= 1u << k;
+        }
+}
+
+static int read_answers(report_run *r, int d, rs_csv *c)
+{
+    static const char *const names[] = {"session", "participant", "attempt", "questionnaire",
+                                        "when", "item", "kind", "value"};
+    static rs_group g;
+    int o = open_csv(c, r, d, "answers.csv"), got;
+    if (o)
+        return o > 0 ? 0 : CLI_EXIT_USAGE;
+    memset(&g, 0, sizeof g);
+    while ((got = next_row(c, names, 8)) > 0) {
+        double att = 0, v = 0;
+        int likert = !strcmp(field(c, A_KIND), "likert");
+        int k0 = num(field(c, A_ATTEMPT), &att), k1 = likert ? num(field(c, A_VALUE), &v) : 0;
+        if (k0 != 1 || k1 < 0 || (likert && k1 == 0)) {
+            got = -bad(c, k0 != 1 ? "attempt is not a number" : "a likert value is not a number");
+            break;
+        }
+        if (likert)
+            answer_row(r, c, &g, att, v);
+    }
+    flush_group(r->stats, &g);
+    hol_lines_close(&c->l);
+    return got < 0 ? -got : 0;
+}
+
+/* ---- learning curves and the per-participant table ---- */
+
+typedef struct rs_lentry {
+    int cond;
+    long pos;
+    double eff;
+} rs_lentry;
+
+static int by_cond_pos(const void *pa, const void *pb)
+{
+    const rs_lentry *a = pa, *b = pb;
+    if (a->cond != b->cond)
+        return a->cond < b->cond ? -1 : 1;
+    return a->pos < b->pos ? -1 : a->pos > b->pos;
+}
+
+/* Position in the participant's order; outside a study the attempt. */
+static long position(const hol_report_attempt *a)
+{
+    return a->position >= 1 ? a->position : a->attempt;
+}
+
+static int learning(const report_run *r, report_stats *s)
+{
+    rs_lentry *e = malloc(sizeof *e * (size_t)(r->natt + 1));
+    s->learn = malloc(sizeof *s->learn * (size_t)(r->natt + 1));
+    if (!e || !s->learn) {
+        free(e);
+        return -1;
+    }
+    int n = 0;
+    for (int i = 0; i < r->natt; i++) {
+        double eff = hol_report_efficiency(&r->att[i].a);
+        if (rs_included(r, i) && eff >= 0)
+            e[n++] = (rs_lentry){s->att_cond[i], position(&r->att[i].a), eff};
+    }
+    qsort(e, (size_t)n, sizeof *e, by_cond_pos);
+    for (int i = 0; i < n;) {
+        hol_stats st;
+        hol_stats_init(&st);
+        int j = i;
+        for (; j < n && e[j].cond == e[i].cond && e[j].pos == e[i].pos; j++)
+            hol_stats_add(&st, e[j].eff);
+        rs_learn *l = &s->learn[s->nlearn++];
+        l->cond = e[i].cond;
+        l->pos = e[i].pos;
+        hol_stats_summarize(&st, &l->m);
+        i = j;
+    }
+    free(e);
+    return 0;
+}
+
+static int by_part_cond(const void *pa, const void *pb)
+{
+    int ia = *(const int *)pa, ib = *(const int *)pb;
+    int c = strcmp(sort_run->att[ia].a.participant, sort_run->att[ib].a.participant);
+    const int *ac = sort_run->stats->att_cond;
+    if (!c)
+        c = ac[ia] < ac[ib] ? -1 : ac[ia] > ac[ib];
+    return c ? c : (ia < ib ? -1 : ia > ib);
+}
+
+static int participants(const report_run *r, report_stats *s)
+{
+    int *ix = malloc(sizeof *ix * (size_t)(r->natt + 1));
+    s->prow = malloc(sizeof *s->prow * (size_t)(r->natt + 1));
+    if (!ix || !s->prow) {
+        free(ix);
+        return -1;
+    }
+    for (int i = 0; i < r->natt; i++)
+        ix[i] = i;
+    sort_run = r;
+    qsort(ix, (size_t)r->natt, sizeof *ix, by_part_cond);
+    for (int i = 0; i < r->natt;) {
+        rs_prow *p = &s->prow[s->nprow++];
+        memset(p, 0, sizeof *p);
+        p->att = ix[i];
+        p->cond = s->att_cond[ix[i]];
+        int j = i;
+        for (; j < r->natt && s->att_cond[ix[j]] == p->cond &&
+               !strcmp(r->att[ix[j]].a.participant, r->att[ix[i]].a.participant); j++) {
+            const hol_report_attempt *a = &r->att[ix[j]].a;
+            double eff = hol_report_efficiency(a);
+            p->n++;
+            if (strcmp(a->end, "done"))
+                continue;
+            p->done++;
+            hol_stats_add(&p->steps, (double)a->steps);
+            hol_stats_add(&p->time, a->time_s);
+            if (eff >= 0)
+                hol_stats_add(&p->eff, eff);
+        }
+        i = j;
+    }
+    free(ix);
+    return 0;
+}
+
+/* ---- reading it all ---- */
+
+static int alloc_stats(report_run *r)
+{
+    report_stats *s = r->stats = calloc(1, sizeof *r->stats);
+    size_t n = (size_t)r->natt + 1;
+    if (!s || !(s->cond = malloc(sizeof *s->cond * n)) ||
+        !(s->att_cond = malloc(sizeof *s->att_cond * n)) ||
+        !(s->order = malloc(sizeof *s->order * n)) ||
+        !(s->fix = calloc(n * RS_NFIX, sizeof *s->fix)) ||
+        !(s->lik = malloc(sizeof *s->lik * RS_LIK_MAX)) ||
+        !(s->slot = malloc(sizeof *s->slot * RS_LIK_SLOTS))) {
+        cli_error(r->cmd, 0, "out of memory");
+        return CLI_EXIT_FAIL;
+    }
+    s->caplik = RS_LIK_MAX;
+    for (int i = 0; i < RS_LIK_SLOTS; i++)
+        s->slot[i] = -1;
+    return 0;
+}
+
+int report_stats_read(report_run *r)
+{
+    int st = alloc_stats(r);
+    report_stats *s = r->stats;
+    for (int i = 0; !st && i < r->natt; i++) {
+        s->att_cond[i] = cond_of(s, &r->att[i].a);
+        s->order[i] = i;
+    }
+    if (st)
+        return st;
+    s->none = s->ncond++;
+    memset(&s->cond[s->none], 0, sizeof s->cond[0]);
+    snprintf(s->cond[s->none].condition, sizeof s->cond[0].condition, "none");
+    sort_run = r;
+    qsort(s->order, (size_t)r->natt, sizeof *s->order, by_key);
+    for (int i = 0; i < r->natt; i++) {
+        hol_stats *f = &s->fix[s->att_cond[i] * RS_NFIX];
+        double eff = hol_report_efficiency(&r->att[i].a);
+        if (!rs_included(r, i))
+            continue;
+        hol_stats_add(&f[RS_STEPS], (double)r->att[i].a.steps);
+        hol_stats_add(&f[RS_TIME], r->att[i].a.time_s);
+        if (eff >= 0)
+            hol_stats_add(&f[RS_EFF], eff);
+    }
+    rs_csv *c = malloc(sizeof *c);
+    st = c ? 0 : CLI_EXIT_FAIL;
+    for (int d = 0; !st && d < r->ndirs; d++) {
+        st = read_points(r, d, c);
+        if (!st)
+            st = read_answers(r, d, c);
+    }
+    free(c);
+    if (!st && s->lik_dropped)
+        fprintf(stderr, "holonomy %s: warning: more than %d Likert items and conditions: "
+                        "%ld answers not in stats.csv\n", r->cmd, RS_LIK_MAX, s->lik_dropped);
+    if (!st && (learning(r, s) || participants(r, s)))
+        st = CLI_EXIT_FAIL;
+    if (st == CLI_EXIT_FAIL)
+        cli_error(r->cmd, 0, "out of memory");
+    return st;
+}
+
+void report_stats_free(report_run *r)
+{
+    report_stats *s = r->stats;
+    if (!s)
+        return;
+    free(s->cond);
+    free(s->att_cond);
+    free(s->order);
+    free(s->fix);
+    free(s->lik);
+    free(s->slot);
+    free(s->learn);
+    free(s->prow);
+    free(s);
+    r->stats = NULL;
+}
+
+/* ---- the CSV files ---- */
+
+static void csv(FILE *f, const char *s, int last)
+{
+    char clean[4 * HOL_REPORT_TEXT + 8], buf[8 * HOL_REPORT_TEXT + 16];
+    hol_report_clean(s, clean, sizeof clean);
+    hol_text_csv(clean, strlen(clean), buf, sizeof buf);
+    fputs(buf, f);
+    fputc(last ? '\n' : ',', f);
+}
+
+/* n,mean,sd,ci_low,ci_high (empty where not defined) */
+static void summary(FILE *f, const hol_stats *st)
+{
+    hol_stats_summary m;
+    hol_stats_summarize(st, &m);
+    fprintf(f, "%ld,", m.n);
+    if (m.has_mean)
+        fprintf(f, "%.4f", m.mean);
+    if (m.has_sd)
+        fprintf(f, ",%.4f,%.4f,%.4f\n", m.sd, m.lo, m.hi);
+    else
+        fputs(",,,\n", f);
+}
+
+typedef struct rs_out {
+    hol_file_atomic a;
+    char path[4200];
+} rs_out;
+
+static int open_out(const report_run *r, rs_out *o, const char *name)
+{
+    snprintf(o->path, sizeof o->path, "%s/%s", r->out, name);
+    if (!hol_file_atomic_open(&o->a, o->path))
+        return 0;
+    cli_error(r->cmd, 0, "cannot write '%.300s'", o->path);
+    return CLI_EXIT_FAIL;
+}
+
+static int close_out(const report_run *r, rs_out *o)
+{
+    if (!ferror(o->a.f) && !hol_file_atomic_commit(&o->a))
+        return 0;
+    if (o->a.f)
+        hol_file_atomic_abort(&o->a);
+    cli_error(r->cmd, 0, "cannot write '%.300s'", o->path);
+    return CLI_EXIT_FAIL;
+}
+
+static int write_stats(const report_run *r, rs_out *o)
+{
+    const report_stats *s = r->stats;
+    int st = open_out(r, o, "stats.csv");
+    if (st)
+        return st;
+    fputs("study,condition,measure,item,n,mean,sd,ci_low,ci_high\n", o->a.f);
+    for (int c = 0; c < s->ncond; c++) {
+        for (int m = 0; m < RS_NFIX; m++) {
+            if (!s->fix[c * RS_NFIX + m].n)
+                continue;
+            csv(o->a.f, s->cond[c].study, 0);
+            csv(o->a.f, s->cond[c].condition, 0);
+            fprintf(o->a.f, "%s,,", rs_measure[m]);
+            summary(o->a.f, &s->fix[c * RS_NFIX + m]);
+        }
+        for (int i = 0; i < s->nlik; i++) {
+            char item[160];
+            if (s->lik[i].cond != c)
+                continue;
+            snprintf(item, sizeof item, "%s/%s", s->lik[i].q, s->lik[i].item);
+            csv(o->a.f, s->cond[c].study, 0);
+            csv(o->a.f, s->cond[c].condition, 0);
+            fputs("likert,", o->a.f);
+            csv(o->a.f, item, 0);
+            summary(o->a.f, &s->lik[i].s);
+        }
+    }
+    return close_out(r, o);
+}
+
+static int write_learning(const report_run *r, rs_out *o)
+{
+    const report_stats *s = r->stats;
+    int st = open_out(r, o, "learning.csv");
+    if (st)
+        return st;
+    fputs("study,condition,position,n,mean_efficiency,sd,ci_low,ci_high\n", o->a.f);
+    for (int i = 0; i < s->nlearn; i++) {
+        const rs_learn *l = &s->learn[i];
+        csv(o->a.f, s->cond[l->cond].study, 0);
+        csv(o->a.f, s->cond[l->cond].condition, 0);
+        fprintf(o->a.f, "%ld,%ld,%.4f,", l->pos, l->m.n, l->m.mean);
+        if (l->m.has_sd)
+            fprintf(o->a.f, "%.4f,%.4f,%.4f\n", l->m.sd, l->m.lo, l->m.hi);
+        else
+            fputs(",,\n", o->a.f);
+    }
+    return close_out(r, o);
+}
+
+static void mean_or_empty(FILE *f, const hol_stats *st, int last)
+{
+    if (st->n)
+        fprintf(f, "%.4f", st->mean);
+    fputc(last ? '\n' : ',', f);
+}
+
+static int write_participants(const report_run *r, rs_out *o)
+{
+    const report_stats *s = r->stats;
+    int st = open_out(r, o, "participants.csv");
+    if (st)
+        return st;
+    fputs("participant,study,condition,attempts,done,mean_steps,mean_efficiency,mean_time\n",
+          o->a.f);
+    for (int i = 0; i < s->nprow; i++) {
+        const rs_prow *p = &s->prow[i];
+        csv(o->a.f, r->att[p->att].a.participant, 0);
+        csv(o->a.f, s->cond[p->cond].study, 0);
+        csv(o->a.f, s->cond[p->cond].condition, 0);
+        fprintf(o->a.f, "%ld,%ld,", p->n, p->done);
+        mean_or_empty(o->a.f, &p->steps, 0);
+        mean_or_empty(o->a.f, &p->eff, 0);
+        mean_or_empty(o->a.f, &p->time, 1);
+    }
+    return close_out(r, o);
+}
+
+int report_stats_write(const report_run *r)
+{
+    rs_out *o = malloc(sizeof *o);
+    int st = o ? write_stats(r, o) : CLI_EXIT_FAIL;
+    if (!st)
+        st = write_learning(r, o);
+    if (!st)
+        st = write_participants(r, o);
+    if (!o)
+        cli_error(r->cmd, 0, "out of memory");
+    free(o);
+    return st;
+}
+
+/* ---- a log folder named from the report's folder ---- */
+
+void report_rel_dir(const report_run *r, int d, char *out, size_t cap)
+{
+    char from[4096], to[4096];
+    out[0] = 0;
+    if (!realpath(r->out, from) || !realpath(r->dirs[d], to))
+        return;
+    size_t common = 0, i = 0;
+    for (;; i++) { /* the last '/' (or end) where both agree */
+        int ef = !from[i] || from[i] == '/', et = !to[i] || to[i] == '/';
+        if (ef && et)
+            common = i;
+        if (!from[i] || !to[i] || from[i] != to[i])
+            break;
+    }
+    if (!strcmp(from, "/"))
+        common = 0;
+    size_t n = 0;
+    for (const char *p = from + common; *p; p++)
+        if (*p == '/' && n + 4 < cap)
+            n += (size_t)snprintf(out + n, cap - n, "../");
+    const char *rest = to + common + (to[common] == '/');
+    if (!*rest && n)
+        out[n - 1] = 0; /* "../.." */
+    else if (!*rest)
+        snprintf(out, cap, ".");
+    else
+        snprintf(out + n, cap - n, "%s", rest);
+}

@@ -1,0 +1,37 @@
+/* report_stats.h - the statistics of `holonomy report` (docs/research.md
+ * "Report"): stats.csv, learning.csv, participants.csv and the page's
+ * statistics section, from the attempts and, when a log folder has them,
+ * points.csv and answers.csv. Internal to the command.
+ *
+ * Contract
+ * - report_stats_read (after report_read_summaries, before anything is
+ *   written): each attempt's condition (a study's condition; outside a
+ *   study the level), and every LOGDIR's points.csv and answers.csv when
+ *   present (a missing one is no error; a malformed one is refused naming
+ *   its file and line: exit 2, one line). The row's condition is its
+ *   attempt's (session, attempt) in that folder's summary.csv; attempt 0
+ *   or an attempt not in the summary: the condition "none".
+ * - Means are over COMPLETED attempts (end "done") outside practice only
+ *   (core/hol_stats.h: SD, 95 % t interval, n). Pointing errors: |error|
+ *   in degrees, every answer with a bearing. SSQ and TLX: one score per
+ *   complete questionnaire (all 16, all 6 items). Likert: every answer.
+ * - report_stats_write writes the three CSVs atomically; report_stats_html
+ *   writes the page's section into f. O(n log n) in the attempts.
+ */
+#ifndef REPORT_STATS_H
+#define REPORT_STATS_H
+
+#include <stddef.h>
+#include <stdio.h>
+
+#include "cmd_report.h"
+
+int report_stats_read(report_run *r);
+int report_stats_write(const report_run *r);
+void report_stats_html(FILE *f, const report_run *r);
+void report_stats_free(report_run *r);
+/* LOGDIR d named from DIR (both resolved: "../logs"); "" when either
+ * cannot be resolved. */
+void report_rel_dir(const report_run *r, int d, char *out, size_t cap);
+
+#endif

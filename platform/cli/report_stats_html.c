@@ -1,0 +1,234 @@
+/* report_stats_html.c - the page's statistics section (report_stats.h):
+ * the means table with SD, 95 % CI and n, the learning curves and the
+ * steps-against-optimum plot as inline SVG, the per-participant table. */
+#include <string.h>
+
+#include "report_stats_impl.h"
+
+static const char *const palette[8] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd",
+                                       "#ff7f0e", "#8c564b", "#e377c2", "#17becf"};
+
+static void html(FILE *f, const char *text)
+{
+    char clean[4 * HOL_REPORT_TEXT + 8];
+    hol_report_clean(text, clean, sizeof clean);
+    for (const char *s = clean; *s; s++)
+        switch (*s) {
+        case '&': fputs("&amp;", f); break;
+        case '<': fputs("&lt;", f); break;
+        case '>': fputs("&gt;", f); break;
+        case '"': fputs("&quot;", f); break;
+        case '\'': fputs("&#39;", f); break;
+        default: fputc(*s, f);
+        }
+}
+
+static void cond_name(FILE *f, const rs_cond *c)
+{
+    if (c->study[0]) {
+        html(f, c->study);
+        fputs(" / ", f);
+    }
+    html(f, c->condition);
+}
+
+static void stat_cells(FILE *f, const hol_stats *st)
+{
+    hol_stats_summary m;
+    hol_stats_summarize(st, &m);
+    fprintf(f, "<td class=\"n\">%ld</td><td class=\"n\">%.3f</td>", m.n, m.mean);
+    if (m.has_sd)
+        fprintf(f, "<td class=\"n\">%.3f</td><td class=\"n\">[%.3f, %.3f]</td></tr>\n", m.sd,
+                m.lo, m.hi);
+    else
+        fputs("<td></td><td></td></tr>\n", f);
+}
+
+static void means_table(FILE *f, const report_run *r)
+{
+    const report_stats *s = r->stats;
+    fputs("<h2>Statistics</h2>\n<p>Per condition, over <b>completed</b> attempts only "
+          "(practice left out): mean, sample SD, the 95 % confidence interval of the mean "
+          "(Student's t, n &minus; 1 degrees of freedom) and n. Pointing errors: |pointed "
+          "&minus; true| and |pointed &minus; flat| in degrees (points.csv); SSQ scores with "
+          "Kennedy's weights and raw TLX (mean of the six, 0..100) per complete questionnaire; "
+          "other Likert items: every answer (answers.csv; the SSQ's and TLX's items one by one "
+          "in stats.csv). Data: <a href=\"stats.csv\">stats.csv</a>, "
+          "<a href=\"learning.csv\">learning.csv</a>, "
+          "<a href=\"participants.csv\">participants.csv</a>.</p>\n<table>\n<tr><th>condition"
+          "</th><th>measure</th><th>n</th><th>mean</th><th>SD</th><th>95 % CI</th></tr>\n", f);
+    for (int c = 0; c < s->ncond; c++) {
+        for (int m = 0; m < RS_NFIX; m++) {
+            if (!s->fix[c * RS_NFIX + m].n)
+                continue;
+            fputs("<tr><td>", f);
+            cond_name(f, &s->cond[c]);
+            fprintf(f, "</td><td>%s</td>", rs_measure[m]);
+            stat_cells(f, &s->fix[c * RS_NFIX + m]);
+        }
+        for (int i = 0; i < s->nlik; i++) {
+            if (s->lik[i].cond != c || !strcmp(s->lik[i].q, "ssq") ||
+                !strcmp(s->lik[i].q, "tlx"))
+                continue; /* their scores stand above; each item in stats.csv */
+            fputs("<tr><td>", f);
+            cond_name(f, &s->cond[c]);
+            fputs("</td><td>likert ", f);
+            html(f, s->lik[i].q);
+            fputc('/', f);
+            html(f, s->lik[i].item);
+            fputs("</td>", f);
+            stat_cells(f, &s->lik[i].s);
+        }
+    }
+    fputs("</table>\n", f);
+}
+
+/* Conditions that have a point in the learning curves, in order. */
+static int legend(FILE *f, const report_run *r, int x, int y, const int *used)
+{
+    const report_stats *s = r->stats;
+    int k = 0;
+    for (int c = 0; c < s->ncond; c++) {
+        if (!used[c])
+            continue;
+        fprintf(f, "<rect x=\"%d\" y=\"%d\" width=\"12\" height=\"12\" fill=\"%s\"/>"
+                   "<text x=\"%d\" y=\"%d\">", x, y + 16 * k, palette[c % 8], x + 16, y + 16 * k + 11);
+        cond_name(f, &s->cond[c]);
+        fputs("</text>\n", f);
+        k++;
+    }
+    return k;
+}
+
+#define PW 640
+#define PH 360
+#define PL 60 /* left margin */
+#define PB 40 /* bottom margin */
+#define PR 180 /* legend */
+
+static void axes(FILE *f, const char *xl, const char *yl, double xmax, double ymax, int ticks)
+{
+    int w = PW - PL - PR, h = PH - PB - 20;
+    fprintf(f, "<line x1=\"%d\" y1=\"%d\" x2=\"%d\" y2=\"%d\" stroke=\"#444\"/>"
+               "<line x1=\"%d\" y1=\"20\" x2=\"%d\" y2=\"%d\" stroke=\"#444\"/>\n",
+            PL, 20 + h, PL + w, 20 + h, PL, PL, 20 + h);
+    for (int t = 0; t <= ticks; t++) {
+        double fx = (double)t / ticks;
+        fprintf(f, "<text x=\"%.1f\" y=\"%d\" text-anchor=\"middle\">%.3g</text>"
+                   "<text x=\"%d\" y=\"%.1f\" text-anchor=\"end\">%.3g</text>\n",
+                PL + fx * w, 20 + h + 16, fx * xmax, PL - 6, 20 + h - fx * h + 4, fx * ymax);
+    }
+    fprintf(f, "<text x=\"%d\" y=\"%d\" text-anchor=\"middle\">%s</text>"
+               "<text x=\"14\" y=\"%d\" text-anchor=\"middle\" transform=\"rotate(-90 14 %d)\">"
+               "%s</text>\n", PL + w / 2, PH - 4, xl, 20 + h / 2, 20 + h / 2, yl);
+}
+
+static void learning_svg(FILE *f, const report_run *r, int *used)
+{
+    const report_stats *s = r->stats;
+    long maxpos = 1;
+    for (int i = 0; i < s->nlearn; i++)
+        maxpos = s->learn[i].pos > maxpos ? s->learn[i].pos : maxpos;
+    int w = PW - PL - PR, h = PH - PB - 20;
+    fputs("<h3>Learning curves</h3>\n<p>Mean efficiency (optimum / steps) of completed "
+          "attempts by position in the participant's order (outside a study: the attempt "
+          "number), per condition; bars: 95 % CI.</p>\n", f);
+    fprintf(f, "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%d\" height=\"%d\" "
+               "font-family=\"sans-serif\" font-size=\"11\" role=\"img\" "
+               "aria-label=\"learning curves\">\n", PW, PH);
+    axes(f, "position", "efficiency", (double)maxpos, 1, 4);
+    for (int i = 0; i < s->nlearn;) {
+        int c = s->learn[i].cond, j = i;
+        used[c] = 1;
+        fprintf(f, "<polyline fill=\"none\" stroke=\"%s\" stroke-width=\"2\" points=\"",
+                palette[c % 8]);
+        for (; j < s->nlearn && s->learn[j].cond == c; j++)
+            fprintf(f, "%.1f,%.1f ", PL + (double)s->learn[j].pos / maxpos * w,
+                    20 + h - s->learn[j].m.mean * h);
+        fputs("\"/>\n", f);
+        for (; i < j; i++) {
+            const rs_learn *l = &s->learn[i];
+            double x = PL + (double)l->pos / maxpos * w;
+            double lo = l->m.lo < 0 ? 0 : l->m.lo, hi = l->m.hi > 1.05 ? 1.05 : l->m.hi;
+            fprintf(f, "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"3\" fill=\"%s\"/>", x,
+                    20 + h - l->m.mean * h, palette[c % 8]);
+            if (l->m.has_sd)
+                fprintf(f, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"%s\"/>",
+                        x, 20 + h - lo * h, x, 20 + h - hi * h, palette[c % 8]);
+            fputc('\n', f);
+        }
+    }
+    legend(f, r, PW - PR + 10, 24, used);
+    fputs("</svg>\n", f);
+}
+
+static void scatter_svg(FILE *f, const report_run *r, int *used)
+{
+    const report_stats *s = r->stats;
+    double maxv = 1;
+    for (int i = 0; i < r->natt; i++)
+        if (rs_included(r, i) && r->att[i].a.optimum >= 0) {
+            double m = (double)(r->att[i].a.steps > r->att[i].a.optimum ? r->att[i].a.steps
+                                                                         : r->att[i].a.optimum);
+            maxv = m > maxv ? m : maxv;
+        }
+    int w = PW - PL - PR, h = PH - PB - 20;
+    fputs("<h3>Steps against optimum</h3>\n<p>Each completed scored attempt (practice left "
+          "out); on the grey line steps = optimum.</p>\n", f);
+    fprintf(f, "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%d\" height=\"%d\" "
+               "font-family=\"sans-serif\" font-size=\"11\" role=\"img\" "
+               "aria-label=\"steps against optimum\">\n", PW, PH);
+    axes(f, "optimum (steps)", "steps", maxv, maxv, 4);
+    fprintf(f, "<line x1=\"%d\" y1=\"%d\" x2=\"%d\" y2=\"20\" stroke=\"#aaa\"/>\n", PL, 20 + h,
+            PL + w);
+    memset(used, 0, sizeof *used * (size_t)s->ncond);
+    for (int i = 0; i < r->natt; i++) {
+        const hol_report_attempt *a = &r->att[i].a;
+        if (!rs_included(r, i) || a->optimum < 0)
+            continue;
+        int c = s->att_cond[i];
+        used[c] = 1;
+        fprintf(f, "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"3\" fill=\"%s\" fill-opacity=\"0.6\"/>\n",
+                PL + (double)a->optimum / maxv * w, 20 + h - (double)a->steps / maxv * h,
+                palette[c % 8]);
+    }
+    legend(f, r, PW - PR + 10, 24, used);
+    fputs("</svg>\n", f);
+}
+
+static void participants_table(FILE *f, const report_run *r)
+{
+    const report_stats *s = r->stats;
+    fputs("<h3>Participants</h3>\n<table>\n<tr><th>participant</th><th>condition</th>"
+          "<th>attempts</th><th>done</th><th>mean steps</th><th>mean efficiency</th>"
+          "<th>mean time (s)</th></tr>\n", f);
+    for (int i = 0; i < s->nprow; i++) {
+        const rs_prow *p = &s->prow[i];
+        const hol_stats *m[3] = {&p->steps, &p->eff, &p->time};
+        fputs("<tr><td>", f);
+        html(f, r->att[p->att].a.participant);
+        fputs("</td><td>", f);
+        cond_name(f, &s->cond[p->cond]);
+        fprintf(f, "</td><td class=\"n\">%ld</td><td class=\"n\">%ld</td>", p->n, p->done);
+        for (int k = 0; k < 3; k++)
+            if (m[k]->n)
+                fprintf(f, "<td class=\"n\">%.3f</td>", m[k]->mean);
+            else
+                fputs("<td></td>", f);
+        fputs("</tr>\n", f);
+    }
+    fputs("</table>\n", f);
+}
+
+void report_stats_html(FILE *f, const report_run *r)
+{
+    const report_stats *s = r->stats;
+    static int used_buf[REPORT_MAX_ATTEMPTS + 2];
+    if (!s)
+        return;
+    memset(used_buf, 0, sizeof used_buf);
+    means_table(f, r);
+    learning_svg(f, r, used_buf);
+    scatter_svg(f, r, used_buf);
+    participants_table(f, r);
+}

@@ -1,0 +1,57 @@
+/* report_stats_impl.h - report_stats.c's tables, shared with
+ * report_stats_html.c. Internal. */
+#ifndef REPORT_STATS_IMPL_H
+#define REPORT_STATS_IMPL_H
+
+#include "../../core/hol_stats.h"
+#include "report_stats.h"
+
+enum { RS_STEPS, RS_EFF, RS_TIME, RS_ERR_TRUE, RS_ERR_FLAT, RS_SSQ_T, RS_SSQ_N, RS_SSQ_O,
+       RS_SSQ_D, RS_TLX, RS_NFIX };
+extern const char *const rs_measure[RS_NFIX];
+
+typedef struct rs_cond {
+    char study[HOL_REPORT_TEXT], condition[HOL_REPORT_TEXT];
+    int practice;
+} rs_cond;
+
+#define RS_LIK_MAX 4096   /* Likert items x conditions counted */
+#define RS_LIK_SLOTS 8192
+
+typedef struct rs_likert {
+    int cond;
+    char q[64], item[64];
+    hol_stats s;
+} rs_likert;
+
+typedef struct rs_learn { /* one point of a learning curve */
+    int cond;
+    long pos;
+    hol_stats_summary m;
+} rs_learn;
+
+typedef struct rs_prow { /* one participant x condition */
+    int att, cond; /* att: an attempt of it (its participant) */
+    long n, done;
+    hol_stats steps, eff, time;
+} rs_prow;
+
+typedef struct report_stats {
+    int ncond, none; /* none: the condition "none" */
+    rs_cond *cond;  /* natt + 1 */
+    int *att_cond;  /* per attempt */
+    int *order;     /* attempts by (dir, session, attempt) */
+    hol_stats *fix; /* ncond x RS_NFIX */
+    rs_likert *lik;
+    int nlik, caplik;
+    int *slot; /* RS_LIK_SLOTS: an index in lik, -1 empty */
+    long lik_dropped; /* answers beyond RS_LIK_MAX items */
+    rs_learn *learn;
+    int nlearn;
+    rs_prow *prow;
+    int nprow;
+} report_stats;
+
+int rs_included(const report_run *r, int i); /* done, not practice */
+
+#endif
