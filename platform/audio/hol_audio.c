@@ -5,9 +5,11 @@
 #include <AL/alc.h>
 #include <AL/alext.h>
 #include <dlfcn.h>
+#include <fcntl.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #define AUD_FUNCS(X)                                                                          \
     X(ALCdevice *, alcOpenDevice, (const ALCchar *))                                          \
@@ -66,6 +68,7 @@ static int aud_fail(char *msg, size_t cap, const char *what)
 
 static int aud_load(hol_audio *a, char *msg, size_t cap)
 {
+    setenv("ALSOFT_LOGLEVEL", "0", 0); /* OpenAL Soft's own log off */
     a->lib = dlopen("libopenal.so.1", RTLD_NOW | RTLD_LOCAL);
     if (!a->lib)
         return aud_fail(msg, cap, "OpenAL Soft (libopenal.so.1) is not installed");
@@ -92,7 +95,18 @@ static int aud_device(hol_audio *a, char *msg, size_t cap)
         if (a->dev)
             a->ctx = a->f.alcCreateContext(a->dev, attrs);
     } else {
+        /* ALSA and OpenAL Soft print their own lines when no device opens:
+         * the caller's one warning says it, so theirs go to /dev/null */
+        int saved = dup(2), null = open("/dev/null", O_WRONLY);
+        if (saved >= 0 && null >= 0)
+            dup2(null, 2);
         a->dev = a->f.alcOpenDevice(NULL);
+        if (saved >= 0 && null >= 0)
+            dup2(saved, 2);
+        if (saved >= 0)
+            close(saved);
+        if (null >= 0)
+            close(null);
         int has = a->dev && a->f.alcIsExtensionPresent(a->dev, "ALC_SOFT_HRTF");
         ALCint attrs[] = {ALC_HRTF_SOFT, ALC_TRUE, 0};
         if (a->dev)
