@@ -1,15 +1,45 @@
 /* hol_audio.c - OpenAL Soft player loaded at run time (see hol_audio.h). */
 #include "hol_audio.h"
 
-#include <AL/al.h>
-#include <AL/alc.h>
-#include <AL/alext.h>
 #include <dlfcn.h>
 #include <fcntl.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
+
+/* OpenAL's types and the values used, as al.h, alc.h and alext.h define
+ * them (the OpenAL 1.1 ABI and the ALC_SOFT_loopback and ALC_SOFT_HRTF
+ * extensions): no header is needed at build time, so the tool builds where
+ * libopenal-dev is missing (the xr-test chroot) and runs silent there. */
+typedef struct ALCdevice ALCdevice;
+typedef struct ALCcontext ALCcontext;
+typedef char ALCchar, ALCboolean, ALboolean;
+typedef int ALCint, ALCenum, ALCsizei, ALint, ALenum, ALsizei;
+typedef unsigned int ALuint;
+typedef float ALfloat;
+typedef void ALvoid;
+#define AL_NONE 0
+#define AL_FALSE 0
+#define AL_TRUE 1
+#define AL_SOURCE_RELATIVE 0x202
+#define AL_POSITION 0x1004
+#define AL_LOOPING 0x1007
+#define AL_BUFFER 0x1009
+#define AL_GAIN 0x100A
+#define AL_ROLLOFF_FACTOR 0x1021
+#define AL_FORMAT_MONO16 0x1101
+#define AL_NO_ERROR 0
+#define ALC_FALSE 0
+#define ALC_TRUE 1
+#define ALC_FREQUENCY 0x1007
+#define ALC_FORMAT_CHANNELS_SOFT 0x1990
+#define ALC_FORMAT_TYPE_SOFT 0x1991
+#define ALC_FLOAT_SOFT 0x1406
+#define ALC_STEREO_SOFT 0x1501
+#define ALC_HRTF_SOFT 0x1992
+typedef ALCdevice *(*LPALCLOOPBACKOPENDEVICESOFT)(const ALCchar *);
+typedef void (*LPALCRENDERSAMPLESSOFT)(ALCdevice *, void *, ALCsizei);
 
 #define AUD_FUNCS(X)                                                                          \
     X(ALCdevice *, alcOpenDevice, (const ALCchar *))                                          \
