@@ -317,6 +317,7 @@ fuzz-run-%: $(BUILD)/fuzz/%
 bench: $(BENCH_BIN) $(BENCH_RENDER_BIN) $(BUILD)/holonomy
 	@set -e; for b in $(BENCH_BIN) $(BENCH_RENDER_BIN); do $$b; done
 	@sh tests/bench_report.sh $(BUILD)/holonomy
+	@sh tests/bench_sound.sh $(BUILD)/holonomy
 	@CC="$(CC)" sh tests/bench_ratio.sh $(BUILD) $(BENCH_BASE_COMMIT)
 	@if command -v $(EMCC) >/dev/null && [ -x /usr/bin/chromium ] && [ -d tests/web/node_modules ]; \
 	then $(MAKE) -s bench-web; \
