@@ -20,6 +20,7 @@
 
 #include "../core/hol_app.h"
 #include "../core/hol_hyper.h"
+#include "../core/hol_level.h"
 #include "../core/hol_nav.h"
 #include "../core/hol_sound.h"
 
@@ -251,12 +252,32 @@ static void test_synth(void **state)
     assert_int_equal(hol_sound_length(HOL_SND_KINDS, HOL_SOUND_RATE), 0);
 }
 
+/* The level line (a study's `set sound` and `set cues sound` lines are
+ * level lines, checked by hol_level_line_check). */
+static void test_level_line(void **state)
+{
+    (void)state;
+    const char *good[] = {"sound all", "sound cues", "sound off", "cues sound", "cues sound lantern poles"};
+    const char *bad[] = {"sound loud", "sound", "sound all cues", "cues beacon"};
+    for (size_t i = 0; i < sizeof good / sizeof *good; i++) {
+        hol_level_err e;
+        memset(&e, 0, sizeof e);
+        assert_int_equal(hol_level_line_check(good[i], strlen(good[i]), &e), HOL_OK);
+    }
+    for (size_t i = 0; i < sizeof bad / sizeof *bad; i++) {
+        hol_level_err e;
+        memset(&e, 0, sizeof e);
+        assert_int_not_equal(hol_level_line_check(bad[i], strlen(bad[i]), &e), HOL_OK);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_falloff),       cmocka_unit_test(test_synth),
         cmocka_unit_test(test_east_is_right), cmocka_unit_test(test_beacon_geometry),
         cmocka_unit_test(test_modes),         cmocka_unit_test(test_footsteps),
+        cmocka_unit_test(test_level_line),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }
