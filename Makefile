@@ -46,6 +46,9 @@ RENDER_SRC := $(wildcard render/*.c)
 CLI_SRC  := $(wildcard platform/cli/*.c)
 # Desktop platform services (files, PNG files) shared by the tool, render tests, benches.
 PLAT_SRC := $(wildcard platform/file/*.c platform/image/*.c)
+# Sound (issue 27): OpenAL Soft, loaded at run time (dlopen), so the tool
+# runs silent where libopenal.so.1 is missing (platform/audio/hol_audio.h).
+AUDIO_SRC := $(wildcard platform/audio/*.c)
 # Gamepads: the pure descriptor parser and report decoder (tests, fuzz,
 # benches link these) and the hidapi device layer (the tool only).
 # The headset (OpenXR): the pure room/lifecycle part always, the session
@@ -91,7 +94,7 @@ BENCH_BASE_COMMIT ?= 609d0070eb51369e8de0939d12cbe940bcc0cbf5
 FUZZ_SRC := $(wildcard fuzz/fuzz_*.c)
 
 CORE_OBJ := $(CORE_SRC:%.c=$(BUILD)/%.o)
-CLI_OBJ  := $(CLI_SRC:%.c=$(BUILD)/%.o) $(PLAT_SRC:%.c=$(BUILD)/%.o) \
+CLI_OBJ  := $(CLI_SRC:%.c=$(BUILD)/%.o) $(PLAT_SRC:%.c=$(BUILD)/%.o) $(AUDIO_SRC:%.c=$(BUILD)/%.o) \
   $(HID_SRC:%.c=$(BUILD)/%.o) $(HID_DEV_SRC:%.c=$(BUILD)/%.o) $(XR_SRC:%.c=$(BUILD)/%.o)
 PLAT_OBJ := $(PLAT_SRC:%.c=$(BUILD)/%.o)
 CORE_LIB := $(BUILD)/libholcore.a
@@ -107,7 +110,7 @@ FUZZ_BIN := $(FUZZ_SRC:fuzz/%.c=$(BUILD)/fuzz/%)
 DEB_PACKAGES := make gcc clang libcmocka-dev libosmesa6-dev libegl-dev \
   libgles-dev libhidapi-dev libusb-1.0-0-dev libopenxr-dev \
   libegl-mesa0 libgl1-mesa-dri gcc-aarch64-linux-gnu libc6-dev-arm64-cross \
-  qemu-user xvfb xdotool zlib1g-dev libx11-dev
+  qemu-user xvfb xdotool zlib1g-dev libx11-dev libopenal-dev
 # libc6-dev-arm64-cross is only a Recommends of gcc-aarch64-linux-gnu, and
 # deps installs without recommends: it must be named here.
 # apt waits up to APT_LOCK_WAIT seconds for another apt/dpkg to finish
@@ -323,6 +326,7 @@ fuzz-run-%: $(BUILD)/fuzz/%
 bench: $(BENCH_BIN) $(BENCH_RENDER_BIN) $(BUILD)/holonomy
 	@set -e; for b in $(BENCH_BIN) $(BENCH_RENDER_BIN); do $$b; done
 	@sh tests/bench_report.sh $(BUILD)/holonomy
+	@sh tests/bench_sound.sh $(BUILD)/holonomy
 	@CC="$(CC)" sh tests/bench_ratio.sh $(BUILD) $(BENCH_BASE_COMMIT)
 	@if command -v $(EMCC) >/dev/null && [ -x /usr/bin/chromium ] && [ -d tests/web/node_modules ]; \
 	then $(MAKE) -s bench-web; \

@@ -77,6 +77,14 @@ enum hol_app_mode {
 #define HOL_CUE_LANTERN  (1u << 4) /* a lantern on every objective (lights
                                       at dusk and night); only when a
                                       level's cues line names it */
+#define HOL_CUE_SOUND    (1u << 5) /* a sound beacon on every objective
+                                      (core/hol_sound.h); only when a
+                                      level's cues line names it */
+
+/* A level's sound (`sound all|cues|off`): all is ambience, effects and
+ * beacons (the default: a forest that is heard); cues is effects and
+ * beacons only; off is silence. */
+enum hol_app_sound { HOL_SOUND_ALL = 0, HOL_SOUND_CUES = 1, HOL_SOUND_OFF = 2 };
 
 /* A level's sky (`lighting day|dusk|night`): day is the picture without
  * lights; at dusk and night lanterns light the forest (render/hol_render.h). */
@@ -162,6 +170,7 @@ typedef struct hol_app_level {
     int lighting;             /* hol_app_lighting; 0: day */
     hol_tile lanterns[HOL_APP_MAX_LANTERNS]; /* `place lantern` tiles */
     int nlanterns;
+    int sound;                /* hol_app_sound; 0: all */
 } hol_app_level;
 
 typedef struct hol_app_desc {
@@ -280,6 +289,8 @@ typedef struct hol_app_view {
                                          (cue lantern) one per objective
                                          still to reach */
     hol_tile lanterns[HOL_APP_MAX_LANTERNS + HOL_APP_MAX_OBJECTIVES];
+    int sound;                        /* the level's hol_app_sound (the
+                                         sources: core/hol_sound.h) */
 } hol_app_view;
 
 /* One room step, for the per-step log. */

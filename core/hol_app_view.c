@@ -301,6 +301,7 @@ static void hol__fill_lights(hol_app *app)
     hol_app_view *v = &app->view;
     const hol_app_level *L = &app->level;
     v->lighting = L->lighting;
+    v->sound = L->sound;
     v->nlanterns = 0;
     for (int k = 0; k < L->nlanterns && k < HOL_APP_MAX_LANTERNS; k++)
         v->lanterns[v->nlanterns++] = L->lanterns[k];

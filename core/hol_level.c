@@ -318,19 +318,20 @@ static hol_err hol__key_place(hol__lp *p, char **f, int nf)
 
 static hol_err hol__key_cues(hol__lp *p, char **f, int nf)
 {
-    static const char *const names[5] = {"hot-cold", "path", "poles", "arrow", "lantern"};
+    static const char *const names[6] = {"hot-cold", "path", "poles", "arrow", "lantern",
+                                         "sound"};
     unsigned cues = 0;
     for (int i = 1; i < nf && i < HOL__FIELDS; i++) {
-        int c = hol__word(f[i], names, 5);
+        int c = hol__word(f[i], names, 6);
         if (c < 0 && !(nf == 2 && !strcmp(f[i], "none")))
             return hol__lfail(p, HOL_EPARSE, p->line,
-                             "cue '%.20s' is not hot-cold, path, poles, arrow, lantern or none",
+                             "cue '%.20s' is not hot-cold, path, poles, arrow, lantern, sound or none",
                              f[i]);
         if (c >= 0)
             cues |= 1u << c;
     }
-    if (nf > 6)
-        return hol__lfail(p, HOL_EPARSE, p->line, "more than the five cues");
+    if (nf > 7)
+        return hol__lfail(p, HOL_EPARSE, p->line, "more than the six cues");
     p->L.cues = cues;
     return HOL_OK;
 }
@@ -366,6 +367,18 @@ static hol_err hol__key_lighting(hol__lp *p, char **f, int nf)
         return hol__lfail(p, HOL_EPARSE, p->line, "lighting '%.20s' is not day, dusk or night",
                           f[1]);
     p->L.lighting = m;
+    return HOL_OK;
+}
+
+/* sound all|cues|off */
+static hol_err hol__key_sound(hol__lp *p, char **f, int nf)
+{
+    static const char *const modes[3] = {"all", "cues", "off"};
+    (void)nf;
+    int m = hol__word(f[1], modes, 3);
+    if (m < 0)
+        return hol__lfail(p, HOL_EPARSE, p->line, "sound '%.20s' is not all, cues or off", f[1]);
+    p->L.sound = m;
     return HOL_OK;
 }
 
@@ -433,6 +446,7 @@ static const struct {
     {"minimap", 2, 2, hol__key_minimap},
     {"fixed", 2, 2, hol__key_fixed},
     {"lighting", 2, 2, hol__key_lighting},
+    {"sound", 2, 2, hol__key_sound},
     {"tiling", 3, 3, hol__key_tiling},
     {"room", 3, 3, hol__key_room},
     {"cell", 2, 2, hol__key_cell},

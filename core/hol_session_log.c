@@ -40,6 +40,8 @@ unsigned hol_session_cues_visible(const hol_app_view *v)
             vis |= HOL_CUE_ARROW;
     if (objs && (c & HOL_CUE_LANTERN) && v->lighting != HOL_LIGHT_DAY)
         vis |= HOL_CUE_LANTERN;
+    if (objs && (c & HOL_CUE_SOUND) && v->sound != HOL_SOUND_OFF)
+        vis |= HOL_CUE_SOUND;
     return vis;
 }
 

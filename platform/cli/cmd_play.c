@@ -21,6 +21,7 @@
 #include "../hid/hol_hid_dev.h"
 #include "../hid/hol_hid_link.h"
 #include "cli.h"
+#include "../audio/hol_audio.h"
 #include "play_setup.h"
 #include "play_stats.h"
 #include "play_study.h"
@@ -33,6 +34,7 @@ static const char *const play_usage =
     "                     [--frames N] [--input FILE] [--size WxH]\n"
     "                     [--no-gamepad | --gamepad-replay FILE] [--snap-turn DEG]\n"
     "                     [--stats] [--tiling 4,Q] [--room CxR] [--cell M]\n"
+    "                     [--mute | --volume V]\n"
     "\n"
     "Play in a desktop window (EGL on X11; also under Xvfb). LEVEL is a level\n"
     "file (SPEC section 5); --mode plays a level of that mode made from the seed\n"
@@ -93,6 +95,12 @@ static const char *const play_usage =
     "                  the software rasterizer's threads included)\n"
     PLAY_GEOMETRY_USAGE
     "  --no-gamepad    do not use game controllers\n"
+    "  --mute          no sound; --volume V: 0..1 (default 1) times the\n"
+    "                  forest's and the cues' gain (OpenAL Soft, HRTF where\n"
+    "                  offered; docs/sound.md). Without an audio device, or\n"
+    "                  without libopenal.so.1, one warning line and play goes\n"
+    "                  on silent. A scripted play (--input) is silent: replay\n"
+    "                  --wav renders its sound\n"
     "  --gamepad-replay FILE\n"
     "                  the controller is a script of plugs, reports and unplugs\n"
     "                  (README: Gamepads) on the game's clock, not a device; with\n"
@@ -111,7 +119,8 @@ typedef struct play_opts {
     play_geometry geo;
     uint64_t seed;
     long frames;
-    int w, h, use_pad, append, snap_deg, stats, restart_participant, resume;
+    int w, h, use_pad, append, snap_deg, stats, restart_participant, resume, mute;
+    double volume;
 } play_opts;
 
 typedef struct play_ctx {
@@ -137,6 +146,9 @@ typedef struct play_ctx {
     int overlay; /* F2: the frame time drawn */
     int drawn_w, drawn_h; /* the window's size at the last frame: a new one
                              is checked for GL errors (no frame waits else) */
+    hol_audio *au;        /* NULL: silent */
+    hol_sound snd;
+    hol_sound_list sl;
 } play_ctx;
 
 /* ---- options ------------------------------------------------------------------ */
@@ -183,6 +195,14 @@ static int play_value(const char *cmd, const char *a, const char *val, play_opts
             return 1;
         }
         o->snap_deg = (int)n;
+    } else if (!strcmp(a, "--volume")) {
+        char *end = NULL;
+        double v = strtod(val, &end);
+        if (!val[0] || *end || !(v >= 0 && v <= 1)) {
+            cli_error(cmd, 0, "--volume '%.40s' is not a number in 0..1", val);
+            return 1;
+        }
+        o->volume = v;
     }
     return 0;
 }
@@ -190,15 +210,15 @@ static int play_value(const char *cmd, const char *a, const char *val, play_opts
 static const char *const play_valued[] = {"--mode",  "--seed",  "--log",  "--record",
                                           "--frames", "--input", "--size", "--gamepad-replay",
                                           "--participant", "--snap-turn", "--study",
-                                          PLAY_GEOMETRY_OPTIONS, NULL};
+                                          "--volume", PLAY_GEOMETRY_OPTIONS, NULL};
 
 static int play_options(const char *cmd, int argc, char **argv, play_opts *o)
 {
     static const char *const flags[] = {"--no-gamepad", "--append", "--stats",
-                                        "--restart-participant", "--resume", NULL};
+                                        "--restart-participant", "--resume", "--mute", NULL};
     memset(o, 0, sizeof *o);
     o->seed = CLI_SEED_DEFAULT;
-    o->w = 960, o->h = 720, o->use_pad = 1;
+    o->w = 960, o->h = 720, o->use_pad = 1, o->volume = -1;
     cli_opts p;
     cli_opts_init(&p, cmd, argc, argv, play_valued, flags);
     const char *a, *val;
@@ -216,6 +236,8 @@ static int play_options(const char *cmd, int argc, char **argv, play_opts *o)
             o->append = 1;
         } else if (!strcmp(a, "--stats")) {
             o->stats = 1;
+        } else if (!strcmp(a, "--mute")) {
+            o->mute = 1;
         } else if (!strcmp(a, "--restart-participant")) {
             o->restart_participant = 1;
         } else if (!strcmp(a, "--resume")) {
@@ -237,6 +259,7 @@ static int play_options(const char *cmd, int argc, char **argv, play_opts *o)
                             ? "give --resume or --restart-participant, not both"
                         : o->resume && !o->study ? "--resume goes with --study"
                         : o->resume && !o->log_dir ? "--resume goes with --log"
+                        : o->mute && o->volume >= 0 ? "give --mute or --volume, not both"
                             : NULL;
     if (clash) {
         cli_error(cmd, 0, "%s", clash);
@@ -292,6 +315,29 @@ static void play_open_pad(play_ctx *c)
                 c->pad.info.pid);
 }
 
+/* Sound unless muted, at volume 0 or scripted; a missing device is one
+ * warning line, then silence. */
+static void play_open_audio(play_ctx *c)
+{
+    hol_sound_init(&c->snd);
+    double v = c->o.volume < 0 ? 1.0 : c->o.volume;
+    if (c->o.mute || v == 0 || c->o.input_path)
+        return;
+    char msg[160];
+    if (hol_audio_open(0, v, &c->au, msg, sizeof msg))
+        fprintf(stderr, "holonomy play: warning: %s: playing silent\n", msg);
+}
+
+static void play_sound(play_ctx *c)
+{
+    if (!c->au)
+        return;
+    hol_app *app = hol_session_app(c->s);
+    hol_sound_update(&c->snd, hol_app_get_view(app), hol_app_get_events(app),
+                     hol_app_world(app), &c->sl);
+    hol_audio_apply(c->au, &c->sl);
+}
+
 static int play_prepare(play_ctx *c)
 {
     int st = play_prepare_files(c);
@@ -323,6 +369,7 @@ static int play_prepare(play_ctx *c)
         return CLI_EXIT_FAIL;
     }
     play_open_pad(c);
+    play_open_audio(c);
     return 0;
 }
 
@@ -491,6 +538,7 @@ static int play_loop(play_ctx *c, int *abort)
         }
         if (hol_app_get_events(hol_session_app(c->s))->level_started)
             hol_render_invalidate(c->r);
+        play_sound(c);
         if (over || !open)
             return 0;
         if ((r = play_draw(c)))
@@ -508,6 +556,7 @@ static int play_cleanup(play_ctx *c, int status, int abort)
     if (c->use_pad)
         hol_hid_dev_close(&c->pad);
     hol_render_destroy(c->r);
+    hol_audio_close(c->au);
     int end = play_session_end(c->cmd, c->s, abort || (c->has_input && c->input.aborted));
     play_out_close(&c->out);
     if (c->has_window)

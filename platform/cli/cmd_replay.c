@@ -11,6 +11,8 @@
 #include "../../core/hol_session.h"
 #include "../../render/hol_app_frame.h"
 #include "../../render/hol_render.h"
+#include "../audio/hol_audio.h"
+#include "../file/hol_file.h"
 #include "../image/hol_png_file.h"
 #include "../osmesa/hol_osmesa.h"
 #include "cli.h"
@@ -19,6 +21,7 @@
 static const char *const replay_usage =
     "usage: holonomy replay REC [--log DIR [--append]] [--png-frames LIST --out-dir D]\n"
     "                       [--size WxH] [--tiling 4,Q] [--room CxR] [--cell M]\n"
+    "                       [--wav FILE]\n"
     "\n"
     "Run a recording (holonomy play --record) through the same session: the\n"
     "logs come out byte for byte as in the play (the recording names the\n"
@@ -27,6 +30,11 @@ static const char *const replay_usage =
     "--png-frames renders the listed frames (0-based, comma separated)\n"
     "headless with OSMesa to D/frame-NNNNNN.png (--size, default 640x480); a\n"
     "frame beyond the recording is bad input (the others are still written).\n"
+    "--wav FILE renders the recording's sound (core/hol_sound.h: the\n"
+    "level's 'sound' line and cues) offline through OpenAL Soft's loopback\n"
+    "device: 16-bit PCM stereo at 48 kHz, from the first record's time to the\n"
+    "last plus 1 s, at most 600 s; the same recording gives the same bytes;\n"
+    "written whole or not at all (docs/sound.md).\n"
     "The recording is read a line at a time (lines of at most 1024 bytes).\n"
     "A recording's levels carry their tiling, room and cell size (their\n"
     "'tiling', 'room' and 'cell' lines; without one, the default), so a replay\n"
@@ -54,6 +62,14 @@ typedef struct replay_ctx {
     int have_gl;
     hol_render *r;
     uint8_t *rgba;
+    const char *wav;
+    hol_audio *au;
+    hol_sound snd;
+    hol_sound_list sl;
+    int16_t *pcm;        /* stereo frames rendered so far */
+    long nframes, capframes;
+    double t0, last_t;
+    int have_t0;
 } replay_ctx;
 
 /* ---- options ------------------------------------------------------------------ */
@@ -78,8 +94,8 @@ static int parse_frame_list(const char *s, long *out, int cap, int *out_n)
     return n == 0;
 }
 
-static const char *const replay_valued[] = {"--log",  "--png-frames", "--out-dir",
-                                            "--size", PLAY_GEOMETRY_OPTIONS, NULL};
+static const char *const replay_valued[] = {"--log",  "--png-frames", "--out-dir", "--size",
+                                            "--wav",  PLAY_GEOMETRY_OPTIONS, NULL};
 
 static int replay_options(replay_ctx *c, int argc, char **argv)
 {
@@ -103,6 +119,8 @@ static int replay_options(replay_ctx *c, int argc, char **argv)
             c->out_dir = val;
         else if (!strcmp(a, "--append"))
             c->append = 1;
+        else if (!strcmp(a, "--wav"))
+            c->wav = val;
         else if ((g = play_geometry_value(c->cmd, a, val, &c->geo)) != 0) {
             if (g < 0)
                 return CLI_EXIT_USAGE;
@@ -121,8 +139,8 @@ static int replay_options(replay_ctx *c, int argc, char **argv)
     if (bad)
         return CLI_EXIT_USAGE;
     const cli_path in[] = {{"the recording", c->rec}};
-    const cli_path out[] = {{"--log", c->log_dir}, {"--out-dir", c->out_dir}};
-    return cli_check_distinct(c->cmd, in, 1, out, 2);
+    const cli_path out[] = {{"--log", c->log_dir}, {"--out-dir", c->out_dir}, {"--wav", c->wav}};
+    return cli_check_distinct(c->cmd, in, 1, out, 3);
 }
 
 /* ---- setup ------------------------------------------------------------------------ */
@@ -192,6 +210,8 @@ static int replay_prepare(replay_ctx *c)
         if (cli_check_output(c->cmd, "--out-dir", path))
             return CLI_EXIT_USAGE;
     }
+    if (c->wav && cli_check_output(c->cmd, "--wav", c->wav))
+        return CLI_EXIT_USAGE;
     int st = play_out_open(c->cmd, c->log_dir, c->append, NULL, &c->out);
     if (!st) {
         st = play_input_open(c->cmd, c->rec, 1, &c->input);
@@ -204,7 +224,93 @@ static int replay_prepare(replay_ctx *c)
                                &c->input.rec.meta, c->append, &c->s);
     if (!st && c->npng)
         st = replay_renderer(c);
+    char msg[256];
+    if (!st && c->wav && hol_audio_open(1, 1.0, &c->au, msg, sizeof msg)) {
+        cli_error(c->cmd, 0, "--wav: %s", msg);
+        st = CLI_EXIT_FAIL;
+    }
+    hol_sound_init(&c->snd);
     return st;
+}
+
+/* ---- sound ------------------------------------------------------------------------ */
+
+#define REPLAY_WAV_MAX_S 600
+
+/* Render the sound up to time t (the state of the frame before). */
+static int replay_render_to(replay_ctx *c, double t)
+{
+    long target = (long)((t - c->t0) * HOL_SOUND_RATE + 0.5);
+    if (target <= c->nframes)
+        return 0;
+    if (target > (long)REPLAY_WAV_MAX_S * HOL_SOUND_RATE) {
+        cli_error(c->cmd, 0, "--wav: the recording is longer than %d s of sound",
+                  REPLAY_WAV_MAX_S);
+        return CLI_EXIT_FAIL;
+    }
+    if (target > c->capframes) {
+        long cap = c->capframes ? c->capframes : HOL_SOUND_RATE * 4;
+        while (cap < target)
+            cap *= 2;
+        int16_t *p = realloc(c->pcm, (size_t)cap * 4);
+        if (!p) {
+            cli_error(c->cmd, 0, "--wav: out of memory");
+            return CLI_EXIT_FAIL;
+        }
+        c->pcm = p, c->capframes = cap;
+    }
+    hol_audio_render(c->au, c->pcm + 2 * c->nframes, (int)(target - c->nframes));
+    c->nframes = target;
+    return 0;
+}
+
+static int replay_sound(replay_ctx *c, const hol_input *in)
+{
+    if (!c->have_t0)
+        c->t0 = in->time_s, c->have_t0 = 1;
+    int r = replay_render_to(c, in->time_s);
+    if (r)
+        return r;
+    hol_app *app = hol_session_app(c->s);
+    hol_sound_update(&c->snd, hol_app_get_view(app), hol_app_get_events(app),
+                     hol_app_world(app), &c->sl);
+    hol_audio_apply(c->au, &c->sl);
+    c->last_t = in->time_s;
+    return 0;
+}
+
+static void replay_le(uint8_t *p, uint32_t v, int n)
+{
+    for (int i = 0; i < n; i++)
+        p[i] = (uint8_t)(v >> (8 * i));
+}
+
+/* The last record plus 1 s, then the file, whole or not at all. */
+static int replay_write_wav(replay_ctx *c)
+{
+    int r = replay_render_to(c, c->last_t + 1.0);
+    if (r)
+        return r;
+    size_t data = (size_t)c->nframes * 4;
+    uint8_t *f = malloc(44 + data);
+    if (!f) {
+        cli_error(c->cmd, 0, "--wav: out of memory");
+        return CLI_EXIT_FAIL;
+    }
+    memcpy(f, "RIFF", 4), replay_le(f + 4, (uint32_t)(36 + data), 4);
+    memcpy(f + 8, "WAVEfmt ", 8), replay_le(f + 16, 16, 4), replay_le(f + 20, 1, 2);
+    replay_le(f + 22, 2, 2), replay_le(f + 24, HOL_SOUND_RATE, 4);
+    replay_le(f + 28, HOL_SOUND_RATE * 4, 4), replay_le(f + 32, 4, 2), replay_le(f + 34, 16, 2);
+    memcpy(f + 36, "data", 4), replay_le(f + 40, (uint32_t)data, 4);
+    for (long i = 0; i < 2 * c->nframes; i++)
+        replay_le(f + 44 + 2 * i, (uint16_t)c->pcm[i], 2);
+    hol_err e = hol_file_write_atomic(c->wav, f, 44 + data);
+    free(f);
+    if (e) {
+        cli_error(c->cmd, 0, "cannot write '%.200s': %s", c->wav, hol_err_str(e));
+        return CLI_EXIT_FAIL;
+    }
+    return 0;
 }
 
 /* ---- the loop ------------------------------------------------------------------------ */
@@ -245,6 +351,8 @@ static int replay_loop(replay_ctx *c, int *abort)
         }
         if (c->r && hol_app_get_events(hol_session_app(c->s))->level_started)
             hol_render_invalidate(c->r);
+        if (c->au && (r = replay_sound(c, &in)))
+            return r;
         for (int k = 0; k < c->npng; k++)
             if (c->pngs[k] == frame && (r = replay_png(c, frame)))
                 return r;
@@ -289,6 +397,10 @@ int cli_cmd_replay(int argc, char **argv)
         play_print_end(c.s);
     if (!status && !abort)
         status = replay_missed_frames(&c);
+    if (!status && !abort && c.au)
+        status = replay_write_wav(&c);
+    hol_audio_close(c.au);
+    free(c.pcm);
     hol_render_destroy(c.r);
     free(c.rgba);
     if (c.have_gl)

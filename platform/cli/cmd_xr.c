@@ -13,6 +13,7 @@
 #include "play_setup.h"
 #include "play_study.h"
 #ifdef HOL_XR
+#include "../audio/hol_audio.h"
 #include "../openxr/hol_xr.h"
 #endif
 
@@ -21,7 +22,7 @@ static const char *const xr_usage =
     "                   [--log DIR [--append [--restart-participant]] [--resume]]\n"
     "                   [--participant ID]\n"
     "                   [--record FILE] [--input FILE] [--space stage|local]\n"
-    "                   [--play-area WxD] [--no-haptics]\n"
+    "                   [--play-area WxD] [--no-haptics] [--mute | --volume V]\n"
     "                   [--check-frame K --check-dir DIR]\n"
     "                   [--tiling 4,Q] [--room CxR] [--cell M]\n"
     "\n"
@@ -53,6 +54,11 @@ static const char *const xr_usage =
     "  --play-area WxD the play area in metres (for example 2.6x2.6), used\n"
     "                  instead of the runtime's stage bounds: a runtime that\n"
     "                  gives none, or a smaller area than it draws\n"
+    "  --mute          no sound; --volume V: 0..1 (default 1) times the\n"
+    "                  sound's gain (OpenAL Soft, HRTF where offered; a line\n"
+    "                  'xr: sound ...' says whether it plays; without a device\n"
+    "                  or libopenal.so.1 it goes on silent; --input is silent;\n"
+    "                  docs/sound.md)\n"
     "  --no-haptics    no controller pulses (by default a short one when a\n"
     "                  controller goes into a hedge or a tree trunk, a gentle\n"
     "                  one on both at each room step: docs/headset.md)\n"
@@ -76,6 +82,8 @@ typedef struct xr_opts {
     play_geometry geo;
     float play_area[2]; /* --play-area (hol_xr_desc.play_area) */
     int no_haptics;     /* --no-haptics: fns.haptic NULL */
+    int mute;           /* --mute */
+    double volume;      /* --volume; -1: not given (1) */
 } xr_opts;
 
 /* --play-area WxD: two sizes in metres, 0.5 to 100 each, "2.6x2.6". 0 ok. */
@@ -118,14 +126,15 @@ static int xr_count(const char *cmd, const char *a, const char *val, xr_opts *o)
 static const char *const xr_valued[] = {"--frames",      "--log",       "--record",
                                         "--input",       "--check-frame", "--check-dir",
                                         "--participant", "--space",    "--study",
-                                        PLAY_GEOMETRY_OPTIONS, "--play-area", NULL};
+                                        PLAY_GEOMETRY_OPTIONS, "--play-area", "--volume", NULL};
 
 static int xr_options(const char *cmd, int argc, char **argv, xr_opts *o)
 {
     static const char *const flags[] = {"--append", "--no-haptics", "--restart-participant",
-                                        "--resume", NULL};
+                                        "--resume", "--mute", NULL};
     memset(o, 0, sizeof *o);
     o->check_frame = -1;
+    o->volume = -1;
     cli_opts p;
     cli_opts_init(&p, cmd, argc, argv, xr_valued, flags);
     const char *a, *val;
@@ -154,6 +163,15 @@ static int xr_options(const char *cmd, int argc, char **argv, xr_opts *o)
             o->append = 1;
         else if (!strcmp(a, "--no-haptics"))
             o->no_haptics = 1;
+        else if (!strcmp(a, "--mute"))
+            o->mute = 1;
+        else if (!strcmp(a, "--volume")) {
+            char *end = NULL;
+            o->volume = strtod(val, &end);
+            bad = !val[0] || *end || !(o->volume >= 0 && o->volume <= 1);
+            if (bad)
+                cli_error(cmd, 0, "--volume '%.40s' is not a number in 0..1", val);
+        }
         else if (!strcmp(a, "--restart-participant"))
             o->restart_participant = 1;
         else if (!strcmp(a, "--resume"))
@@ -175,6 +193,7 @@ static int xr_options(const char *cmd, int argc, char **argv, xr_opts *o)
                             ? "--check-frame and --check-dir go together"
                         : o->study && o->level_path ? "give a LEVEL file or --study, not both"
                         : o->append && !o->log_dir ? "--append goes with --log"
+                        : o->mute && o->volume >= 0 ? "give --mute or --volume, not both"
                         : o->restart_participant && !o->study
                             ? "--restart-participant goes with --study"
                         : o->resume && o->restart_participant
@@ -240,7 +259,33 @@ typedef struct xr_ctx {
     int geo_named; /* --room or --cell given: no fit */
     hol_session *s;
     int st;        /* the session's opening status */
+    int sound;     /* 1: try to open the sound at the first step */
+    double volume;
+    hol_audio *au; /* NULL: silent */
+    hol_sound snd;
+    hol_sound_list sl;
 } xr_ctx;
+
+/* The sound opens at the first step (the session is up); its line goes
+ * with xr's progress lines on stdout. */
+static void xr_sound(xr_ctx *c)
+{
+    if (c->sound) {
+        c->sound = 0;
+        hol_sound_init(&c->snd);
+        char msg[160];
+        if (hol_audio_open(0, c->volume, &c->au, msg, sizeof msg))
+            printf("xr: sound off: %s\n", msg);
+        else
+            printf("xr: sound: OpenAL Soft%s\n", hol_audio_hrtf(c->au) ? ", HRTF" : "");
+    }
+    if (!c->au)
+        return;
+    hol_app *app = hol_session_app(c->s);
+    hol_sound_update(&c->snd, hol_app_get_view(app), hol_app_get_events(app),
+                     hol_app_world(app), &c->sl);
+    hol_audio_apply(c->au, &c->sl);
+}
 
 static void xr_apply_fit(xr_ctx *c, const hol_fit *f)
 {
@@ -284,6 +329,8 @@ static int xr_step(void *user, const hol_input *in, const hol_app_view **out_vie
     *out_view = hol_app_get_view(hol_session_app(s));
     if (err)
         cli_error("xr", 0, "%s", hol_session_message(s));
+    else
+        xr_sound(user);
     return err ? -1 : over ? 1 : 0;
 }
 
@@ -363,7 +410,9 @@ int cli_cmd_xr(int argc, char **argv)
         st = xr_script(cmd, o.input_path, &script, &nscript);
 #ifdef HOL_XR
     xr_ctx c = {.cmd = cmd, .levels = levels, .nlevels = nlevels, .out = &out,
-                .append = o.append, .geo_named = o.geo.cols > 0 || o.geo.cell_m > 0};
+                .append = o.append, .geo_named = o.geo.cols > 0 || o.geo.cell_m > 0,
+                .volume = o.volume < 0 ? 1.0 : o.volume};
+    c.sound = !o.mute && c.volume > 0 && !o.input_path;
     cli_catch_signals();
     if (!st)
         st = play_out_open(cmd, o.log_dir, o.append, o.rec, &out);
@@ -372,6 +421,7 @@ int cli_cmd_xr(int argc, char **argv)
         snprintf(c.meta.study, sizeof c.meta.study, "%s", study);
         st = xr_run(&o, &c, script, nscript);
     }
+    hol_audio_close(c.au);
     int end = play_session_end(cmd, c.s, cli_caught_signal() != 0);
     st = st ? st : end;
     if (!st && cli_caught_signal())

@@ -1,0 +1,413 @@
+/* hol_sound.c - the sources around the listener and their synthesis (see
+ * hol_sound.h). */
+#include "hol_sound.h"
+
+#include <math.h>
+#include <string.h>
+
+#include "hol_hyper.h"
+#include "hol_math.h"
+#include "hol_world.h"
+
+#define HOL__PI 3.14159265358979323846
+#define HOL__SND_TILES 1024 /* tiles a frame visits at most */
+
+/* ---- geometry ----------------------------------------------------------------- */
+
+typedef struct hol__sg {
+    int flat;
+    double klein, mpu;   /* Klein per metre, metres per curvature unit */
+    double p[3];         /* the listener's point (user frame) */
+    double boost[9];     /* takes p to the origin */
+    double head_h;
+    double q[4];         /* head quaternion x, y, z, w */
+    hol_room user;
+} hol__sg;
+
+static double hol__asinh(double x)
+{
+    return hol_log1p(x + x * x / (1 + sqrt(1 + x * x)));
+}
+
+static void hol__sg_init(hol__sg *g, const hol_app_view *v)
+{
+    double m = v->cell_m > 0 ? v->cell_m : 1.0;
+    int q = hol_tile_q(v->user.tile);
+    g->flat = q == 4;
+    g->user = v->user;
+    if (g->flat) {
+        g->klein = 1 / m;
+        g->mpu = m;
+    } else {
+        double e = hol_hyper_edge_q(q);
+        /* tanh(e/2) = sqrt(1 - 1/cosh^2(e/2)), cosh(e/2) = cos(pi/q)/sin(pi/4) */
+        double ch = hol_cos(HOL__PI / q) * sqrt(2.0);
+        g->klein = sqrt(1 - 1 / (ch * ch)) / (m / 2);
+        g->mpu = m / e;
+    }
+    double kx = (v->head[0] - (v->user.col + 0.5) * m) * g->klein;
+    double ky = -(v->head[2] - (v->user.row + 0.5) * m) * g->klein;
+    if (g->flat) {
+        g->p[0] = kx, g->p[1] = ky, g->p[2] = 1;
+    } else {
+        double r2 = kx * kx + ky * ky, s = 1 / sqrt(r2 < 0.999999 ? 1 - r2 : 1e-6);
+        g->p[0] = kx * s, g->p[1] = ky * s, g->p[2] = s;
+    }
+    double px = g->p[0], py = g->p[1], pw = g->p[2];
+    double k = g->flat ? 0 : 1 / (1 + pw);
+    double b[9] = {1 + k * px * px, k * px * py, -px, k * px * py, 1 + k * py * py, -py,
+                   -px, -py, pw};
+    memcpy(g->boost, b, sizeof b);
+    g->head_h = v->head[1];
+    for (int i = 0; i < 4; i++)
+        g->q[i] = v->head_quat[i];
+}
+
+/* Rotate room vector a by the inverse of the head's rotation. */
+static void hol__to_head(const double q[4], const double a[3], double out[3])
+{
+    double x = -q[0], y = -q[1], z = -q[2], w = q[3];
+    /* t = 2 (u x a); out = a + w t + u x t, u = (x, y, z) */
+    double t0 = 2 * (y * a[2] - z * a[1]), t1 = 2 * (z * a[0] - x * a[2]),
+           t2 = 2 * (x * a[1] - y * a[0]);
+    out[0] = a[0] + w * t0 + (y * t2 - z * t1);
+    out[1] = a[1] + w * t1 + (z * t0 - x * t2);
+    out[2] = a[2] + w * t2 + (x * t1 - y * t0);
+}
+
+double hol_sound_falloff(double d_m, double chord, int flat, int windowed)
+{
+    double w = 1;
+    if (windowed) {
+        if (d_m >= HOL_SOUND_RADIUS_M)
+            return 0;
+        double u = d_m / HOL_SOUND_RADIUS_M;
+        w = (1 - u * u) * (1 - u * u);
+    }
+    double s = 1;
+    if (!flat && chord > 1e-6) /* x = 2 asinh(c/2), sinh x = c sqrt(1 + c^2/4) */
+        s = 2 * hol__asinh(chord / 2) / (chord * sqrt(1 + chord * chord / 4));
+    return w * (1 - HOL_SOUND_PHYS + HOL_SOUND_PHYS * s) / (1 + d_m / HOL_SOUND_D0_M);
+}
+
+/* The source at point S (user frame) h metres up: its true distance, the
+ * chord to it (Lorentz norm) and its direction in the head's frame. */
+static void hol__place(const hol__sg *g, const double S[3], double h, double *out_d,
+                       double *out_x, double dir[3])
+{
+    double dx = S[0] - g->p[0], dy = S[1] - g->p[1], dw = S[2] - g->p[2];
+    double c2 = dx * dx + dy * dy - (g->flat ? 0 : dw * dw);
+    double c = sqrt(c2 > 0 ? c2 : 0);
+    double x = g->flat ? c : 2 * hol__asinh(c / 2);
+    double fm = x * g->mpu, dh = h - g->head_h;
+    double v[3];
+    if (g->flat) {
+        v[0] = dx, v[1] = dy;
+    } else {
+        double ip = g->p[0] * S[0] + g->p[1] * S[1] - g->p[2] * S[2]; /* <P,S> */
+        double t[3] = {S[0] + ip * g->p[0], S[1] + ip * g->p[1], S[2] + ip * g->p[2]};
+        for (int i = 0; i < 2; i++)
+            v[i] = g->boost[3 * i] * t[0] + g->boost[3 * i + 1] * t[1] + g->boost[3 * i + 2] * t[2];
+    }
+    double n = sqrt(v[0] * v[0] + v[1] * v[1]);
+    double room[3] = {0, dh, 0};
+    if (n > 1e-12) {
+        room[0] = v[0] / n * fm;  /* east */
+        room[2] = -v[1] / n * fm; /* north is -z */
+    }
+    double d = sqrt(fm * fm + dh * dh);
+    if (d > 1e-9)
+        for (int i = 0; i < 3; i++)
+            room[i] /= d;
+    else
+        room[0] = 0, room[1] = 0, room[2] = -1;
+    hol__to_head(g->q, room, dir);
+    *out_d = d;
+    *out_x = c;
+}
+
+/* ---- the list ------------------------------------------------------------------- */
+
+static uint32_t hol__tile_hash(hol_tile t, int kind)
+{
+    uint64_t h = t.bits[0] * 0x9E3779B97F4A7C15ull ^ (t.bits[1] + 0x632BE59BD9B4E019ull);
+    h ^= h >> 29;
+    h *= 0xBF58476D1CE4E5B9ull;
+    h ^= h >> 32;
+    return (uint32_t)(h & 0xffffff00u) | (uint32_t)kind;
+}
+
+/* Insert by gain into the list (loudest first, ties: the one found first). */
+static void hol__add(hol_sound_list *o, int first, const hol_sound_src *s)
+{
+    if (s->gain <= 0)
+        return;
+    int k = o->n < HOL_SOUND_MAX_SOURCES ? o->n++ : HOL_SOUND_MAX_SOURCES;
+    while (k > first && o->src[k - 1].gain < s->gain) {
+        if (k < HOL_SOUND_MAX_SOURCES)
+            o->src[k] = o->src[k - 1];
+        k--;
+    }
+    if (k < HOL_SOUND_MAX_SOURCES)
+        o->src[k] = *s;
+}
+
+static void hol__tile_src(const hol__sg *g, hol_tile t, int kind, double h, int windowed,
+                          hol_sound_list *o, int first)
+{
+    double fr[9];
+    if (hol_hyper_frame(g->user.tile, g->user.orient, t, fr))
+        return;
+    double S[3] = {fr[2], fr[5], fr[8]}, x;
+    hol_sound_src s;
+    s.kind = kind;
+    s.id = hol__tile_hash(t, kind);
+    hol__place(g, S, h, &s.dist_m, &x, s.dir);
+    s.gain = hol_sound_falloff(s.dist_m, x, g->flat, windowed);
+    hol__add(o, first, &s);
+}
+
+static int hol__seen(const hol_tile *seen, int n, hol_tile t)
+{
+    for (int i = 0; i < n; i++)
+        if (hol_tile_eq(seen[i], t))
+            return 1;
+    return 0;
+}
+
+/* Ambience: the tiles within HOL_SOUND_STEPS steps (breadth first). */
+static void hol__ambience(const hol__sg *g, const struct hol_world *w, hol_sound_list *o,
+                          int first)
+{
+    hol_tile seen[HOL__SND_TILES];
+    int n = 0, head = 0, level_end = 1, depth = 0;
+    seen[n++] = g->user.tile;
+    while (head < n) {
+        if (head == level_end) {
+            if (++depth >= HOL_SOUND_STEPS)
+                break;
+            level_end = n;
+        }
+        hol_tile t = seen[head++];
+        for (int e = 0; e < 4 && depth < HOL_SOUND_STEPS; e++) {
+            hol_tile nb;
+            if (hol_tile_step(t, e, &nb, NULL) || n >= HOL__SND_TILES || hol__seen(seen, n, nb))
+                continue;
+            seen[n++] = nb;
+        }
+    }
+    for (int i = 0; i < n; i++) {
+        hol_tile_content c;
+        if (hol_world_peek(w, seen[i], &c))
+            continue;
+        if (c.object == HOL_OBJ_CREEK || c.object == HOL_OBJ_SPRING || c.object == HOL_OBJ_POOL)
+            hol__tile_src(g, seen[i], HOL_SND_WATER, 0, 1, o, first);
+        int big = 0;
+        for (int k = 0; k < 4; k++)
+            big |= c.tree[k].size >= 2;
+        if (big && (hol__tile_hash(seen[i], 0) >> 8) % 3 == 0)
+            hol__tile_src(g, seen[i], HOL_SND_BIRDS, 3.0, 1, o, first);
+    }
+}
+
+/* Wind in the room's four hedges: room points, the room is flat. */
+static void hol__wind(const hol__sg *g, const hol_app_view *v, hol_sound_list *o, int first)
+{
+    double m = v->cell_m > 0 ? v->cell_m : 1.0;
+    double W = hol_room_cols(&v->user) * m, D = hol_room_rows(&v->user) * m;
+    const double pts[4][2] = {{W / 2, 0}, {W, D / 2}, {W / 2, D}, {0, D / 2}};
+    for (int i = 0; i < 4; i++) {
+        double a[3] = {pts[i][0] - v->head[0], 1.0 - v->head[1], pts[i][1] - v->head[2]};
+        double d = sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+        hol_sound_src s;
+        s.kind = HOL_SND_WIND;
+        s.id = (uint32_t)(0x57494e00u + (uint32_t)(i << 8)) | HOL_SND_WIND;
+        s.dist_m = d;
+        for (int k = 0; k < 3; k++)
+            a[k] = d > 1e-9 ? a[k] / d : (k == 2 ? -1 : 0);
+        hol__to_head(g->q, a, s.dir);
+        s.gain = 0.5 * hol_sound_falloff(d, 0, 1, 1);
+        hol__add(o, first, &s);
+    }
+}
+
+static void hol__shot(hol_sound_list *o, int kind, double gain, double dy)
+{
+    if (o->nshots >= HOL_SOUND_MAX_SHOTS)
+        return;
+    hol_sound_src *s = &o->shot[o->nshots++];
+    memset(s, 0, sizeof *s);
+    s->kind = kind;
+    s->id = (uint32_t)kind;
+    s->gain = gain;
+    s->dir[1] = dy;
+    s->dir[2] = dy < 0 ? -0.2 : -1;
+    double n = sqrt(s->dir[1] * s->dir[1] + s->dir[2] * s->dir[2]);
+    s->dir[1] /= n, s->dir[2] /= n;
+}
+
+static void hol__effects(hol_sound *st, const hol_app_view *v, const hol_app_events *ev,
+                         const struct hol_world *w, hol_sound_list *o)
+{
+    if (ev->level_started)
+        hol__shot(o, HOL_SND_CHIME_START, 1.0, 0);
+    for (int i = 0; i < ev->nsteps; i++) {
+        hol_tile_content c;
+        int kind = HOL_SND_STEP_EARTH;
+        if (!hol_world_peek(w, ev->steps[i].room.tile, &c)) {
+            if (c.object == HOL_OBJ_CREEK || c.object == HOL_OBJ_SPRING || c.object == HOL_OBJ_POOL)
+                kind = HOL_SND_STEP_WATER;
+            else if (c.object == HOL_OBJ_GRASS || c.object == HOL_OBJ_FLOWERS)
+                kind = HOL_SND_STEP_GRASS;
+        }
+        hol__shot(o, kind, 0.6, -1);
+    }
+    if (!ev->level_started && v->hud.keys_held > st->keys_held)
+        hol__shot(o, HOL_SND_CHIME_KEY, 1.0, 0);
+    if (!ev->level_started && v->state == HOL_APP_DONE && st->state == HOL_APP_PLAYING &&
+        !v->hud.timed_out)
+        hol__shot(o, v->hud.keys_total > 0 ? HOL_SND_CHIME_CHEST : HOL_SND_CHIME_FLAG, 1.0, 0);
+}
+
+void hol_sound_init(hol_sound *s)
+{
+    memset(s, 0, sizeof *s);
+}
+
+hol_err hol_sound_update(hol_sound *s, const hol_app_view *v, const hol_app_events *ev,
+                         const struct hol_world *w, hol_sound_list *out)
+{
+    if (!s || !v || !ev || !w || !out)
+        return HOL_EARG;
+    out->n = 0;
+    out->nshots = 0;
+    out->beacons = 0;
+    if (v->state == HOL_APP_IDLE || v->sound == HOL_SOUND_OFF) {
+        s->keys_held = v->hud.keys_held;
+        s->state = v->state;
+        return HOL_OK;
+    }
+    hol__sg g;
+    hol__sg_init(&g, v);
+    if (!v->paused)
+        hol__effects(s, v, ev, w, out);
+    if (v->state == HOL_APP_PLAYING && (v->map.cues & HOL_CUE_SOUND)) {
+        for (int i = 0; i < v->map.nobjectives && out->n < HOL_SOUND_MAX_SOURCES; i++)
+            hol__tile_src(&g, v->map.objectives[i], HOL_SND_BEACON, 1.5, 0, out, 0);
+        out->beacons = out->n;
+    }
+    if (v->sound == HOL_SOUND_ALL) {
+        hol__ambience(&g, w, out, out->beacons);
+        hol__wind(&g, v, out, out->beacons);
+    }
+    s->keys_held = v->hud.keys_held;
+    s->state = v->state;
+    return HOL_OK;
+}
+
+/* ---- synthesis ------------------------------------------------------------------ */
+
+static const char *const hol__kind_names[HOL_SND_KINDS] = {
+    "birds", "water", "wind", "beacon", "step-earth", "step-grass", "step-water",
+    "chime-key", "chime-chest", "chime-flag", "chime-start"};
+
+const char *hol_sound_kind_name(int kind)
+{
+    return kind >= 0 && kind < HOL_SND_KINDS ? hol__kind_names[kind] : "?";
+}
+
+int hol_sound_loops(int kind)
+{
+    return kind >= HOL_SND_BIRDS && kind <= HOL_SND_BEACON;
+}
+
+int hol_sound_length(int kind, int rate)
+{
+    if (kind < 0 || kind >= HOL_SND_KINDS || rate < 8000 || rate > 192000)
+        return 0;
+    if (hol_sound_loops(kind))
+        return 2 * rate;
+    return kind <= HOL_SND_STEP_WATER ? rate * 12 / 100 : rate * 12 / 10;
+}
+
+static double hol__noise(uint64_t *x)
+{
+    *x ^= *x << 13;
+    *x ^= *x >> 7;
+    *x ^= *x << 17;
+    return (double)(*x >> 11) / 4503599627370496.0 - 1; /* -1..1 */
+}
+
+/* One sample of kind at sample i (t seconds), state in st[]. */
+static double hol__sample(int kind, int i, int rate, double *st, uint64_t *rng)
+{
+    double t = (double)i / rate, n = hol__noise(rng), tw = 2 * HOL__PI;
+    switch (kind) {
+    case HOL_SND_WATER: /* band of noise, bubbling */
+        st[0] += 0.25 * (n - st[0]);
+        st[1] += 0.05 * (st[0] - st[1]);
+        return 1.6 * (st[0] - st[1]) * (0.8 + 0.2 * hol_sin(tw * 3 * t));
+    case HOL_SND_WIND: { /* low noise swelling twice in 2 s */
+        st[0] += 0.02 * (n - st[0]);
+        double sw = 0.5 - 0.5 * hol_cos(tw * t); /* 1 Hz: whole periods in 2 s */
+        return 4.0 * st[0] * (0.3 + 0.7 * sw);
+    }
+    case HOL_SND_BIRDS: { /* three chirps (rising sweeps) in 2 s */
+        double u = t * 1.5 - (int)(t * 1.5); /* 0..1 within a chirp slot */
+        if (u > 0.25)
+            return 0;
+        double f = 2600 + 2400 * (u / 0.25);
+        st[0] += tw * f / rate;
+        if (st[0] > tw)
+            st[0] -= tw;
+        double env = hol_sin(HOL__PI * u / 0.25);
+        return 0.5 * env * hol_sin(st[0]);
+    }
+    case HOL_SND_BEACON: { /* 880 Hz pips, 4 per second */
+        double u = t * 4 - (int)(t * 4);
+        double env = u < 0.3 ? hol_sin(HOL__PI * u / 0.3) : 0;
+        return 0.6 * env * hol_sin(tw * 880 * t);
+    }
+    case HOL_SND_STEP_EARTH:
+    case HOL_SND_STEP_GRASS:
+    case HOL_SND_STEP_WATER: {
+        double a = kind == HOL_SND_STEP_EARTH ? 0.08 : kind == HOL_SND_STEP_GRASS ? 0.5 : 0.25;
+        st[0] += a * (n - st[0]);
+        st[1] = i == 0 ? 1 : st[1] * (1 - 40.0 / rate); /* decay */
+        double b = kind == HOL_SND_STEP_WATER ? 0.5 + 0.5 * hol_sin(tw * 300 * t) : 1;
+        return (kind == HOL_SND_STEP_EARTH ? 3.0 : 1.2) * st[0] * st[1] * b;
+    }
+    default: { /* chimes: three partials, decaying */
+        static const double base[4] = {1318.5, 659.3, 1046.5, 784.0};
+        double f = base[kind - HOL_SND_CHIME_KEY];
+        st[1] = i == 0 ? 1 : st[1] * (1 - 4.0 / rate);
+        return 0.5 * st[1] *
+               (hol_sin(tw * f * t) + 0.5 * hol_sin(tw * 2.76 * f * t) +
+                0.25 * hol_sin(tw * 5.4 * f * t)) / 1.75;
+    }
+    }
+}
+
+hol_err hol_sound_synth(int kind, int rate, int16_t *out, int n)
+{
+    int len = hol_sound_length(kind, rate);
+    if (!out || len == 0 || n != len)
+        return HOL_EARG;
+    uint64_t rng = 0x9E3779B97F4A7C15ull ^ (uint64_t)(kind + 1) * 0xD1B54A32D192ED03ull;
+    double st[2] = {0, 0};
+    int fade = hol_sound_loops(kind) ? rate / 100 : 0; /* loops meet without a click */
+    for (int i = 0; i < n; i++) {
+        double y = hol__sample(kind, i, rate, st, &rng);
+        if (fade && kind != HOL_SND_BEACON && kind != HOL_SND_BIRDS) {
+            if (i < fade)
+                y *= (double)i / fade;
+            else if (i >= n - fade)
+                y *= (double)(n - 1 - i) / fade;
+        }
+        if (!hol_sound_loops(kind) && i >= n - rate / 100)
+            y *= (double)(n - 1 - i) / (rate / 100);
+        y = y > 1 ? 1 : y < -1 ? -1 : y;
+        out[i] = (int16_t)(y * 32000);
+    }
+    return HOL_OK;
+}

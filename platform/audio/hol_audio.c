@@ -1,0 +1,296 @@
+/* hol_audio.c - OpenAL Soft player loaded at run time (see hol_audio.h). */
+#include "hol_audio.h"
+
+#include <dlfcn.h>
+#include <fcntl.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+/* OpenAL's types and the values used, as al.h, alc.h and alext.h define
+ * them (the OpenAL 1.1 ABI and the ALC_SOFT_loopback and ALC_SOFT_HRTF
+ * extensions): no header is needed at build time, so the tool builds where
+ * libopenal-dev is missing (the xr-test chroot) and runs silent there. */
+typedef struct ALCdevice ALCdevice;
+typedef struct ALCcontext ALCcontext;
+typedef char ALCchar, ALCboolean, ALboolean;
+typedef int ALCint, ALCenum, ALCsizei, ALint, ALenum, ALsizei;
+typedef unsigned int ALuint;
+typedef float ALfloat;
+typedef void ALvoid;
+#define AL_NONE 0
+#define AL_FALSE 0
+#define AL_TRUE 1
+#define AL_SOURCE_RELATIVE 0x202
+#define AL_POSITION 0x1004
+#define AL_LOOPING 0x1007
+#define AL_BUFFER 0x1009
+#define AL_GAIN 0x100A
+#define AL_ROLLOFF_FACTOR 0x1021
+#define AL_FORMAT_MONO16 0x1101
+#define AL_NO_ERROR 0
+#define ALC_FALSE 0
+#define ALC_TRUE 1
+#define ALC_FREQUENCY 0x1007
+#define ALC_FORMAT_CHANNELS_SOFT 0x1990
+#define ALC_FORMAT_TYPE_SOFT 0x1991
+#define ALC_FLOAT_SOFT 0x1406
+#define ALC_STEREO_SOFT 0x1501
+#define ALC_HRTF_SOFT 0x1992
+typedef ALCdevice *(*LPALCLOOPBACKOPENDEVICESOFT)(const ALCchar *);
+typedef void (*LPALCRENDERSAMPLESSOFT)(ALCdevice *, void *, ALCsizei);
+
+#define AUD_FUNCS(X)                                                                          \
+    X(ALCdevice *, alcOpenDevice, (const ALCchar *))                                          \
+    X(ALCboolean, alcCloseDevice, (ALCdevice *))                                              \
+    X(ALCcontext *, alcCreateContext, (ALCdevice *, const ALCint *))                          \
+    X(void, alcDestroyContext, (ALCcontext *))                                                \
+    X(ALCboolean, alcMakeContextCurrent, (ALCcontext *))                                      \
+    X(ALCboolean, alcIsExtensionPresent, (ALCdevice *, const ALCchar *))                      \
+    X(void *, alcGetProcAddress, (ALCdevice *, const ALCchar *))                              \
+    X(void, alcGetIntegerv, (ALCdevice *, ALCenum, ALCsizei, ALCint *))                       \
+    X(void, alGenBuffers, (ALsizei, ALuint *))                                                \
+    X(void, alDeleteBuffers, (ALsizei, const ALuint *))                                       \
+    X(void, alBufferData, (ALuint, ALenum, const ALvoid *, ALsizei, ALsizei))                 \
+    X(void, alGenSources, (ALsizei, ALuint *))                                                \
+    X(void, alDeleteSources, (ALsizei, const ALuint *))                                       \
+    X(void, alSourcei, (ALuint, ALenum, ALint))                                               \
+    X(void, alSourcef, (ALuint, ALenum, ALfloat))                                             \
+    X(void, alSource3f, (ALuint, ALenum, ALfloat, ALfloat, ALfloat))                          \
+    X(void, alSourcePlay, (ALuint))                                                           \
+    X(void, alSourceStop, (ALuint))                                                           \
+    X(void, alSourceRewind, (ALuint))                                                         \
+    X(void, alDistanceModel, (ALenum))                                                        \
+    X(ALenum, alGetError, (void))
+
+#define AUD_PTR(ret, name, args) ret(*name) args;
+
+typedef struct aud_voice {
+    ALuint src;
+    uint32_t id;
+    int used;
+} aud_voice;
+
+struct hol_audio {
+    void *lib;
+    struct {
+        AUD_FUNCS(AUD_PTR)
+    } f;
+    LPALCLOOPBACKOPENDEVICESOFT loop_open;
+    LPALCRENDERSAMPLESSOFT render;
+    ALCdevice *dev;
+    ALCcontext *ctx;
+    int loopback, hrtf;
+    double volume;
+    ALuint buf[HOL_SND_KINDS];
+    int nbuf;
+    aud_voice loops[HOL_SOUND_MAX_SOURCES];
+    ALuint shots[HOL_SOUND_MAX_SHOTS];
+    int nsrc, next_shot;
+};
+
+static int aud_fail(char *msg, size_t cap, const char *what)
+{
+    snprintf(msg, cap, "%s", what);
+    return -1;
+}
+
+static int aud_load(hol_audio *a, char *msg, size_t cap)
+{
+    setenv("ALSOFT_LOGLEVEL", "0", 0); /* OpenAL Soft's own log off */
+    a->lib = dlopen("libopenal.so.1", RTLD_NOW | RTLD_LOCAL);
+    if (!a->lib)
+        return aud_fail(msg, cap, "OpenAL Soft (libopenal.so.1) is not installed");
+#define AUD_SYM(ret, name, args)                                                              \
+    *(void **)&a->f.name = dlsym(a->lib, #name);                                              \
+    if (!a->f.name)                                                                           \
+        return aud_fail(msg, cap, "libopenal.so.1 lacks " #name);
+    AUD_FUNCS(AUD_SYM)
+#undef AUD_SYM
+    return 0;
+}
+
+static int aud_device(hol_audio *a, char *msg, size_t cap)
+{
+    if (a->loopback) {
+        *(void **)&a->loop_open = a->f.alcGetProcAddress(NULL, "alcLoopbackOpenDeviceSOFT");
+        *(void **)&a->render = a->f.alcGetProcAddress(NULL, "alcRenderSamplesSOFT");
+        if (!a->f.alcIsExtensionPresent(NULL, "ALC_SOFT_loopback") || !a->loop_open || !a->render)
+            return aud_fail(msg, cap, "OpenAL lacks ALC_SOFT_loopback");
+        a->dev = a->loop_open(NULL);
+        ALCint attrs[] = {ALC_FORMAT_CHANNELS_SOFT, ALC_STEREO_SOFT, ALC_FORMAT_TYPE_SOFT,
+                          ALC_FLOAT_SOFT, ALC_FREQUENCY, HOL_SOUND_RATE, ALC_HRTF_SOFT, ALC_FALSE,
+                          0};
+        if (a->dev)
+            a->ctx = a->f.alcCreateContext(a->dev, attrs);
+    } else {
+        /* ALSA and OpenAL Soft print their own lines when no device opens:
+         * the caller's one warning says it, so theirs go to /dev/null */
+        int saved = dup(2), null = open("/dev/null", O_WRONLY);
+        if (saved >= 0 && null >= 0)
+            dup2(null, 2);
+        a->dev = a->f.alcOpenDevice(NULL);
+        if (saved >= 0 && null >= 0)
+            dup2(saved, 2);
+        if (saved >= 0)
+            close(saved);
+        if (null >= 0)
+            close(null);
+        int has = a->dev && a->f.alcIsExtensionPresent(a->dev, "ALC_SOFT_HRTF");
+        ALCint attrs[] = {ALC_HRTF_SOFT, ALC_TRUE, 0};
+        if (a->dev)
+            a->ctx = a->f.alcCreateContext(a->dev, has ? attrs : NULL);
+        if (has && a->ctx) {
+            ALCint st = 0;
+            a->f.alcGetIntegerv(a->dev, ALC_HRTF_SOFT, 1, &st);
+            a->hrtf = st == ALC_TRUE;
+        }
+    }
+    if (!a->dev)
+        return aud_fail(msg, cap, "no audio device opens");
+    if (!a->ctx || !a->f.alcMakeContextCurrent(a->ctx))
+        return aud_fail(msg, cap, "cannot make an OpenAL context");
+    return 0;
+}
+
+static int aud_buffers(hol_audio *a, char *msg, size_t cap)
+{
+    a->f.alGenBuffers(HOL_SND_KINDS, a->buf);
+    a->nbuf = HOL_SND_KINDS;
+    for (int k = 0; k < HOL_SND_KINDS; k++) {
+        int n = hol_sound_length(k, HOL_SOUND_RATE);
+        int16_t *pcm = malloc((size_t)n * sizeof *pcm);
+        if (!pcm || hol_sound_synth(k, HOL_SOUND_RATE, pcm, n)) {
+            free(pcm);
+            return aud_fail(msg, cap, "cannot synthesise the sounds");
+        }
+        a->f.alBufferData(a->buf[k], AL_FORMAT_MONO16, pcm, n * 2, HOL_SOUND_RATE);
+        free(pcm);
+    }
+    ALuint s[HOL_SOUND_MAX_SOURCES + HOL_SOUND_MAX_SHOTS];
+    a->f.alGenSources(HOL_SOUND_MAX_SOURCES + HOL_SOUND_MAX_SHOTS, s);
+    if (a->f.alGetError() != AL_NO_ERROR)
+        return aud_fail(msg, cap, "cannot make the OpenAL sources");
+    a->nsrc = HOL_SOUND_MAX_SOURCES + HOL_SOUND_MAX_SHOTS;
+    a->f.alDistanceModel(AL_NONE);
+    for (int i = 0; i < a->nsrc; i++) {
+        a->f.alSourcei(s[i], AL_SOURCE_RELATIVE, AL_TRUE);
+        a->f.alSourcef(s[i], AL_ROLLOFF_FACTOR, 0);
+        if (i < HOL_SOUND_MAX_SOURCES)
+            a->loops[i].src = s[i];
+        else
+            a->shots[i - HOL_SOUND_MAX_SOURCES] = s[i];
+    }
+    return 0;
+}
+
+int hol_audio_open(int loopback, double volume, hol_audio **out, char *msg, size_t cap)
+{
+    *out = NULL;
+    hol_audio *a = calloc(1, sizeof *a);
+    if (!a)
+        return aud_fail(msg, cap, "out of memory");
+    a->loopback = loopback;
+    a->volume = volume < 0 ? 0 : volume > 1 ? 1 : volume;
+    if (aud_load(a, msg, cap) || aud_device(a, msg, cap) || aud_buffers(a, msg, cap)) {
+        hol_audio_close(a);
+        return -1;
+    }
+    *out = a;
+    return 0;
+}
+
+static void aud_place(hol_audio *a, ALuint s, const hol_sound_src *src)
+{
+    a->f.alSource3f(s, AL_POSITION, (float)src->dir[0], (float)src->dir[1], (float)src->dir[2]);
+    a->f.alSourcef(s, AL_GAIN, (float)(src->gain * a->volume));
+}
+
+void hol_audio_apply(hol_audio *a, const hol_sound_list *l)
+{
+    if (!a)
+        return;
+    int keep[HOL_SOUND_MAX_SOURCES] = {0}, placed[HOL_SOUND_MAX_SOURCES] = {0};
+    for (int i = 0; i < l->n; i++) /* sources that keep their voice */
+        for (int v = 0; v < HOL_SOUND_MAX_SOURCES; v++)
+            if (a->loops[v].used && !keep[v] && a->loops[v].id == l->src[i].id) {
+                keep[v] = 1, placed[i] = 1;
+                aud_place(a, a->loops[v].src, &l->src[i]);
+                break;
+            }
+    for (int v = 0; v < HOL_SOUND_MAX_SOURCES; v++)
+        if (a->loops[v].used && !keep[v]) {
+            a->f.alSourceStop(a->loops[v].src);
+            a->f.alSourcei(a->loops[v].src, AL_BUFFER, 0);
+            a->loops[v].used = 0;
+        }
+    for (int i = 0, v = 0; i < l->n; i++) { /* newcomers take free voices */
+        if (placed[i])
+            continue;
+        while (v < HOL_SOUND_MAX_SOURCES && a->loops[v].used)
+            v++;
+        if (v == HOL_SOUND_MAX_SOURCES)
+            break;
+        aud_voice *vo = &a->loops[v];
+        vo->used = 1, vo->id = l->src[i].id;
+        a->f.alSourcei(vo->src, AL_BUFFER, (ALint)a->buf[l->src[i].kind]);
+        a->f.alSourcei(vo->src, AL_LOOPING, AL_TRUE);
+        aud_place(a, vo->src, &l->src[i]);
+        a->f.alSourcePlay(vo->src);
+    }
+    for (int i = 0; i < l->nshots; i++) {
+        ALuint s = a->shots[a->next_shot];
+        a->next_shot = (a->next_shot + 1) % HOL_SOUND_MAX_SHOTS;
+        a->f.alSourceStop(s);
+        a->f.alSourcei(s, AL_BUFFER, (ALint)a->buf[l->shot[i].kind]);
+        a->f.alSourcei(s, AL_LOOPING, AL_FALSE);
+        aud_place(a, s, &l->shot[i]);
+        a->f.alSourcePlay(s);
+    }
+}
+
+int hol_audio_render(hol_audio *a, int16_t *out, int n)
+{
+    if (!a || !a->loopback || n < 0)
+        return -1;
+    float tmp[2 * 1024];
+    while (n > 0) {
+        int k = n < 1024 ? n : 1024;
+        a->render(a->dev, tmp, k);
+        for (int i = 0; i < 2 * k; i++) {
+            float f = tmp[i] * 32767.0f;
+            f = f > 32767.0f ? 32767.0f : f < -32768.0f ? -32768.0f : f;
+            out[i] = (int16_t)(f < 0 ? f - 0.5f : f + 0.5f);
+        }
+        out += 2 * k, n -= k;
+    }
+    return 0;
+}
+
+int hol_audio_hrtf(const hol_audio *a)
+{
+    return a && a->hrtf;
+}
+
+void hol_audio_close(hol_audio *a)
+{
+    if (!a)
+        return;
+    if (a->ctx) {
+        ALuint s[HOL_SOUND_MAX_SOURCES + HOL_SOUND_MAX_SHOTS];
+        for (int i = 0; i < a->nsrc; i++)
+            s[i] = i < HOL_SOUND_MAX_SOURCES ? a->loops[i].src : a->shots[i - HOL_SOUND_MAX_SOURCES];
+        if (a->nsrc)
+            a->f.alDeleteSources(a->nsrc, s);
+        if (a->nbuf)
+            a->f.alDeleteBuffers(a->nbuf, a->buf);
+        a->f.alcMakeContextCurrent(NULL);
+        a->f.alcDestroyContext(a->ctx);
+    }
+    if (a->dev)
+        a->f.alcCloseDevice(a->dev);
+    if (a->lib)
+        dlclose(a->lib);
+    free(a);
+}

@@ -1,0 +1,46 @@
+/* hol_audio.h - the sound player (issue 27): carries out core's sound list
+ * (core/hol_sound.h) with OpenAL Soft; decides nothing.
+ *
+ * Contract
+ * - OpenAL Soft is loaded at run time (dlopen of libopenal.so.1), so the
+ *   binary runs where it is missing (the xr-test chroot, a machine without
+ *   it): hol_audio_open then fails with a message and the caller goes on
+ *   silent (play and xr say so in one warning line).
+ * - Buffers: one per hol_sound_kind, synthesised by hol_sound_synth at
+ *   HOL_SOUND_RATE, mono 16-bit.
+ * - Voices: HOL_SOUND_MAX_SOURCES looping voices follow the list's ids
+ *   (a source keeps its voice while it stays in the list, and stops when
+ *   it leaves); HOL_SOUND_MAX_SHOTS voices play the shots in turn. Every
+ *   voice is AL_SOURCE_RELATIVE with the listener at the origin, placed at
+ *   core's direction (a unit vector, head frame), rolloff 0 and the
+ *   distance model AL_NONE: core's gain times the volume is THE gain.
+ * - A device (play, xr): the default output, with HRTF asked for where
+ *   ALC_SOFT_HRTF is offered. Loopback (replay --wav): ALC_SOFT_loopback,
+ *   stereo at 48 kHz rendered as float and rounded here to 16-bit PCM
+ *   (OpenAL Soft's own 16-bit output is dithered: silence would not be
+ *   zeros), HRTF off (plain stereo panning, so the
+ *   channels are the left and right of the head); rendering only when
+ *   asked (hol_audio_render), so the same calls give the same samples.
+ * - Not thread safe; one player per process (OpenAL's current context).
+ */
+#ifndef HOL_AUDIO_H
+#define HOL_AUDIO_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "../../core/hol_sound.h"
+
+typedef struct hol_audio hol_audio;
+
+/* loopback 1: the offline renderer; volume 0..1. 0 ok, else -1 with msg. */
+int hol_audio_open(int loopback, double volume, hol_audio **out, char *msg, size_t cap);
+/* Carry out this frame's list (loops followed, shots started). */
+void hol_audio_apply(hol_audio *a, const hol_sound_list *l);
+/* Loopback only: render n stereo frames (2n int16) into out. 0 ok. */
+int hol_audio_render(hol_audio *a, int16_t *out, int n);
+/* 1 when HRTF is in use. */
+int hol_audio_hrtf(const hol_audio *a);
+void hol_audio_close(hol_audio *a); /* NULL ok */
+
+#endif
