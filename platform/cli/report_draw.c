@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "../../core/hol_hyper.h"
+#include "cli.h"
 
 typedef struct canvas {
     uint8_t *px;
@@ -180,6 +181,8 @@ static hol_err path(canvas *c, const hol_tile *tiles, int n, double w, uint32_t 
     double a[3], b[3];
     hol_err err = centre(c, c->start.tile, a);
     for (int i = 0; !err && i < n; i++) {
+        if (!(i & 1023) && cli_caught_signal())
+            return HOL_EBUDGET; /* a walk of a million steps: stopped (report_draw.h) */
         if ((err = centre(c, tiles[i], b)))
             break;
         geodesic(c, a, b, w, rgb);
