@@ -90,11 +90,14 @@ static void ring(canvas *c, double x, double y, double rad, double w, uint32_t r
         }
 }
 
-static void line(canvas *c, const double a[2], const double b[2], double w, uint32_t rgb)
+/* Discs every half pixel from a to b; from the second when first is 0 (a
+ * piece continuing another, whose last disc is the same). */
+static void line(canvas *c, const double a[2], const double b[2], double w, uint32_t rgb,
+                 int first)
 {
     double dx = b[0] - a[0], dy = b[1] - a[1];
     int n = (int)(sqrt(dx * dx + dy * dy) * 2) + 1;
-    for (int k = 0; k <= n; k++)
+    for (int k = first ? 0 : 1; k <= n; k++)
         dot(c, a[0] + dx * k / n, a[1] + dy * k / n, w / 2, rgb);
 }
 
@@ -127,7 +130,7 @@ static void geodesic(canvas *c, const double a[3], const double b[3], double w, 
                 p[i] /= n;
         }
         to_px(c, p, cur);
-        line(c, prev, cur, w, rgb);
+        line(c, prev, cur, w, rgb, k == 1);
         prev[0] = cur[0];
         prev[1] = cur[1];
     }
