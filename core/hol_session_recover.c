@@ -175,6 +175,8 @@ static void hol__cut(hol_session *s, const char *name, uint64_t good)
     hol__out_close(s, &o);
     if (!s->failed && s->log->rename(s->log->user, tmp, name))
         hol__fail_sink(s, s->log, HOL_EIO, "rename", tmp);
+    if (s->failed) /* no half copy left: the live file stays as it was */
+        s->log->remove(s->log->user, tmp);
 }
 
 /* The live rows of attempt a: steps and the last level time; each stream

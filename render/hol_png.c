@@ -1,6 +1,7 @@
 /* hol_png.c - PNG encode/decode on top of zlib; atomic file writes. */
 #include "hol_png.h"
 
+#include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
 #include <zlib.h>
@@ -121,6 +122,49 @@ static int hol__deflate(uint8_t *out, uLongf *zn, const uint8_t *raw, size_t n, 
     return deflateEnd(&z) == Z_OK && ok;
 }
 
+/* rgba's colours (alpha ignored) as a palette of at most 256 (plte: 3
+ * bytes each) and raw (h rows: a filter byte "up", then one index a
+ * pixel): the palette's size, or 0 when there are more colours. */
+static int hol__palette(const uint8_t *rgba, int w, int h, uint8_t *plte, uint8_t *raw)
+{
+    uint32_t pal[256], last = 0;
+    int n = 0, li = -1;
+    size_t stride = (size_t)w + 1;
+    for (int y = 0; y < h; y++) {
+        uint8_t *dst = raw + (size_t)y * stride;
+        const uint8_t *src = rgba + (size_t)y * (size_t)w * 4;
+        dst[0] = 2;
+        for (int x = 0; x < w; x++, src += 4) {
+            uint32_t c = (uint32_t)src[0] << 16 | (uint32_t)src[1] << 8 | src[2];
+            if (li < 0 || c != last) {
+                li = -1;
+                for (int k = 0; k < n && li < 0; k++)
+                    if (pal[k] == c)
+                        li = k;
+                if (li < 0 && n == 256)
+                    return 0;
+                if (li < 0) {
+                    pal[n] = c;
+                    li = n++;
+                }
+                last = c;
+            }
+            dst[1 + x] = (uint8_t)li;
+        }
+    }
+    for (int y = h - 1; y > 0; y--) { /* "up": the row above subtracted */
+        uint8_t *r = raw + (size_t)y * stride + 1;
+        for (int x = 0; x < w; x++)
+            r[x] = (uint8_t)(r[x] - r[x - (ptrdiff_t)stride]);
+    }
+    for (int k = 0; k < n; k++) {
+        plte[3 * k] = (uint8_t)(pal[k] >> 16);
+        plte[3 * k + 1] = (uint8_t)(pal[k] >> 8);
+        plte[3 * k + 2] = (uint8_t)pal[k];
+    }
+    return n;
+}
+
 hol_err hol_png_encode(const uint8_t *rgba, int w, int h, int alpha,
                        uint8_t **out_data, size_t *out_size)
 {
@@ -143,13 +187,17 @@ hol_err hol_png_encode_level(const uint8_t *rgba, int w, int h, int alpha, int l
         free(line);
         return HOL_ENOMEM;
     }
-    if (level < 9)
+    uint8_t plte[768];
+    int npal = level < 9 && !alpha ? hol__palette(rgba, w, h, plte, raw) : 0;
+    if (npal)
+        rawn = ((size_t)w + 1) * (size_t)h;
+    else if (level < 9)
         hol__filter_up(rgba, w, h, bpp, raw);
     else
         hol__filter_best(rgba, w, h, bpp, raw, line);
     free(line);
     uLongf zn = compressBound((uLong)rawn);
-    uint8_t *out = malloc(8 + 25 + 12 + (size_t)zn + 12);
+    uint8_t *out = malloc(8 + 25 + 12 + 768 + 12 + (size_t)zn + 12);
     if (!out) {
         free(raw);
         return HOL_ENOMEM;
@@ -160,9 +208,11 @@ hol_err hol_png_encode_level(const uint8_t *rgba, int w, int h, int alpha, int l
     hol__be32(ihdr, (uint32_t)w);
     hol__be32(ihdr + 4, (uint32_t)h);
     ihdr[8] = 8;
-    ihdr[9] = alpha ? 6 : 2;
+    ihdr[9] = npal ? 3 : alpha ? 6 : 2;
     ihdr[10] = ihdr[11] = ihdr[12] = 0;
     hol__chunk(out, &pos, "IHDR", ihdr, 13);
+    if (npal)
+        hol__chunk(out, &pos, "PLTE", plte, (uint32_t)(3 * npal));
     /* compress straight into the IDAT payload position */
     uint8_t *payload = out + pos + 8;
     if (!hol__deflate(payload, &zn, raw, rawn, level)) {
@@ -187,6 +237,8 @@ hol_err hol_png_encode_level(const uint8_t *rgba, int w, int h, int alpha, int l
 typedef struct hol__png_hdr {
     uint32_t w, h;
     int ctype;
+    int npal;          /* PLTE's entries (ctype 3) */
+    uint8_t plte[768];
 } hol__png_hdr;
 
 static hol_err hol__png_ihdr(const uint8_t *body, uint32_t n, hol__png_hdr *hd)
@@ -199,7 +251,8 @@ static hol_err hol__png_ihdr(const uint8_t *body, uint32_t n, hol__png_hdr *hd)
     if (hd->w == 0 || hd->h == 0 || hd->w > HOL_PNG_MAX_DIM || hd->h > HOL_PNG_MAX_DIM)
         return HOL_ECORRUPT;
     if (body[8] != 8 || body[10] || body[11] || body[12] ||
-        (hd->ctype != 0 && hd->ctype != 2 && hd->ctype != 4 && hd->ctype != 6))
+        (hd->ctype != 0 && hd->ctype != 2 && hd->ctype != 3 && hd->ctype != 4 &&
+         hd->ctype != 6))
         return HOL_EUNSUPPORTED;
     return HOL_OK;
 }
@@ -227,8 +280,16 @@ static hol_err hol__png_chunks(const uint8_t *data, size_t size, hol__png_hdr *h
             err = HOL_ECORRUPT;
         else if (!memcmp(type, "IHDR", 4))
             err = have_ihdr++ ? HOL_ECORRUPT : hol__png_ihdr(body, n, hd);
-        else if (!memcmp(type, "IDAT", 4) && !have_ihdr)
+        else if (!memcmp(type, "IDAT", 4) && (!have_ihdr || (hd->ctype == 3 && !hd->npal)))
             err = HOL_ECORRUPT;
+        else if (!memcmp(type, "PLTE", 4)) {
+            if (!have_ihdr || hd->npal || z || !n || n % 3 || n > 768)
+                err = HOL_ECORRUPT;
+            else {
+                memcpy(hd->plte, body, n);
+                hd->npal = (int)(n / 3);
+            }
+        }
         else if (!memcmp(type, "IDAT", 4)) {
             uint8_t *nz = realloc(z, zn + n + 1);
             if (!nz)
@@ -241,7 +302,7 @@ static hol_err hol__png_chunks(const uint8_t *data, size_t size, hol__png_hdr *h
         } else if (!memcmp(type, "IEND", 4))
             have_end = 1;
         else if (!(type[0] & 0x20))
-            err = HOL_EUNSUPPORTED; /* unknown critical chunk (e.g. PLTE) */
+            err = HOL_EUNSUPPORTED; /* unknown critical chunk */
         pos += 12 + (size_t)n;
     }
     if (!err && (!have_ihdr || !z))
@@ -275,7 +336,14 @@ static hol_err hol__png_rows(uint8_t *raw, size_t stride, const hol__png_hdr *hd
                                                            : hol__paeth(a, b, c);
             cur[i] = (uint8_t)(cur[i] + pred);
         }
-        for (uint32_t x = 0; x < hd->w; x++) {
+        for (uint32_t x = 0; hd->ctype == 3 && x < hd->w; x++) {
+            if (cur[x] >= hd->npal)
+                return HOL_ECORRUPT;
+            uint8_t *o = rgba + ((size_t)y * hd->w + x) * 4;
+            memcpy(o, hd->plte + 3 * cur[x], 3);
+            o[3] = 255;
+        }
+        for (uint32_t x = 0; hd->ctype != 3 && x < hd->w; x++) {
             uint8_t *o = rgba + ((size_t)y * hd->w + x) * 4;
             const uint8_t *s = cur + (size_t)x * (size_t)bpp;
             o[0] = s[0];
@@ -292,13 +360,15 @@ hol_err hol_png_decode(const uint8_t *data, size_t size, uint8_t **out_rgba,
 {
     if (size < 8 || memcmp(data, "\x89PNG\r\n\x1a\n", 8))
         return HOL_ECORRUPT;
-    hol__png_hdr hd = {0, 0, -1};
+    static hol__png_hdr hd0;
+    hol__png_hdr hd = hd0;
+    hd.ctype = -1;
     uint8_t *z = NULL;
     size_t zn = 0;
     hol_err err = hol__png_chunks(data, size, &hd, &z, &zn);
     if (err)
         return err;
-    int bpp = hd.ctype == 0 ? 1 : hd.ctype == 4 ? 2 : hd.ctype == 2 ? 3 : 4;
+    int bpp = hd.ctype == 0 || hd.ctype == 3 ? 1 : hd.ctype == 4 ? 2 : hd.ctype == 2 ? 3 : 4;
     size_t stride = (size_t)hd.w * (size_t)bpp + 1;
     uLongf rawn = (uLongf)(stride * hd.h);
     /* deflate expands at most ~1032:1: refuse sizes the data cannot hold

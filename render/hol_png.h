@@ -28,13 +28,16 @@ hol_err hol_png_encode(const uint8_t *rgba, int w, int h, int alpha,
                        uint8_t **out_data, size_t *out_size);
 
 /* The same with zlib's level 1..9 (hol_png_encode is level 9). Below 9 the
- * rows are all filtered "up" instead of the best of four per row: at level
- * 1 about ten times faster (many pictures: `holonomy report`), the files
- * somewhat larger; the pixels are the same. */
+ * rows are all filtered "up" instead of the best of four per row, and a
+ * picture without alpha of at most 256 colours is written with a palette
+ * (colour type 3, one byte a pixel): at level 1 many times faster (many
+ * pictures: `holonomy report`); the pixels are the same. */
 hol_err hol_png_encode_level(const uint8_t *rgba, int w, int h, int alpha, int level,
                              uint8_t **out_data, size_t *out_size);
 
-/* Decode PNG bytes to malloc'ed RGBA (opaque alpha for formats without). */
+/* Decode PNG bytes to malloc'ed RGBA (opaque alpha for formats without):
+ * 8-bit grey, grey+alpha, RGB, RGBA or palette (an index beyond the
+ * palette is HOL_ECORRUPT). */
 hol_err hol_png_decode(const uint8_t *data, size_t size, uint8_t **out_rgba,
                        int *out_w, int *out_h);
 

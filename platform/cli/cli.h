@@ -165,14 +165,6 @@ int cli_check_distinct(const char *cmd, const cli_path *in, int nin, const cli_p
 /* Flush stdout; on failure report it and return CLI_EXIT_FAIL. */
 int cli_finish_output(const char *cmd);
 
-/* A repeated option is a usage error, in every command (cli_opts_next
- * refuses it; this check of a whole argv is the fuzzer's model of it): 0, or report "--save is given twice; give each
- * option once" and return CLI_EXIT_USAGE. Every argument of argv[1..]
- * before a "--" that starts with "--" counts, by its name before any '=' ("--save a"
- * and "--save=b" are the same option), except the options a command
- * documents as repeatable (render --target). */
-int cli_no_repeats(const char *cmd, int argc, char **argv);
-
 /* True when argv[1..] asks for help: -h or --help as an option, before
  * any "--" and not as the value of one of the valued options (the
  * command's list, as for cli_opts_init: "--seed -h" is not help). */

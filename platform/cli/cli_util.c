@@ -163,36 +163,6 @@ int cli_finish_output(const char *cmd)
     return CLI_EXIT_OK;
 }
 
-/* The options a command documents as repeatable. */
-static int cli__repeatable(const char *cmd, const char *opt, size_t n)
-{
-    static const char *const allowed[][2] = {{"render", "--target"},
-                                             {"render", "--lantern"}};
-    for (size_t k = 0; k < sizeof allowed / sizeof allowed[0]; k++)
-        if (!strcmp(cmd, allowed[k][0]) && strlen(allowed[k][1]) == n &&
-            !strncmp(opt, allowed[k][1], n))
-            return 1;
-    return 0;
-}
-
-int cli_no_repeats(const char *cmd, int argc, char **argv)
-{
-    for (int i = 1; i < argc && strcmp(argv[i], "--"); i++) {
-        const char *a = argv[i];
-        if (strncmp(a, "--", 2))
-            continue;
-        size_t n = strcspn(a, "=");
-        if (cli__repeatable(cmd, a, n))
-            continue;
-        for (int j = 1; j < i; j++)
-            if (argv[j][2] && !strncmp(argv[j], a, n) && (argv[j][n] == 0 || argv[j][n] == '=')) {
-                cli_error(cmd, 0, "%.*s is given twice; give each option once", (int)(n < 40 ? n : 40), a);
-                return CLI_EXIT_USAGE;
-            }
-    }
-    return 0;
-}
-
 int cli_wants_help(int argc, char **argv, const char *const *valued)
 {
     for (int i = 1; i < argc && strcmp(argv[i], "--"); i++) {

@@ -259,6 +259,8 @@ static int picture(report_run *r, report_buf *b, int i, int write)
     char path[4200];
     snprintf(path, sizeof path, "%s/%s", r->out, t->png);
     if (report_draw(&p, b->rgba, REPORT_PNG_SIZE) || write_png(path, b->rgba)) {
+        if ((st = report_stopped(r)))
+            return st;
         cli_error(r->cmd, 0, "cannot write '%.300s'", path);
         return CLI_EXIT_FAIL;
     }
@@ -290,12 +292,14 @@ static int run(report_run *r, report_buf *b)
         st = report_stats_read(r);
     /* first every steps file and level is checked, then anything written */
     for (int i = 0; !st && i < r->natt; i++)
-        st = picture(r, b, i, 0);
+        if (!(st = report_stopped(r)))
+            st = picture(r, b, i, 0);
     if (!st)
         st = make_out(r);
     r->quiet = 1;
     for (int i = 0; !st && i < r->natt; i++)
-        st = picture(r, b, i, 1);
+        if (!(st = report_stopped(r)))
+            st = picture(r, b, i, 1);
     if (!st)
         st = report_sync(r);
     /* a table as long as the attempts: every condition has its row */
@@ -353,6 +357,8 @@ int cli_cmd_report(int argc, char **argv)
         cli_error(cmd, 0, "out of memory");
     if (!st)
         st = parse_args(&r, argc, argv);
+    if (!st)
+        cli_catch_signals();
     if (!st)
         st = run(&r, b);
     if (!st)

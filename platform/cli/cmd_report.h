@@ -73,6 +73,9 @@ typedef struct report_run {
 int report_read_summaries(report_run *r);
 /* tiles: REPORT_MAX_STEPS entries (NULL: only check the file). */
 int report_walk(report_run *r, report_att *t, hol_tile *tiles, int *out_n);
+/* 0, or after SIGINT, SIGTERM or SIGHUP (cli_catch_signals) 128+N with one
+ * line on stderr: every loop of the command asks, so it stops within 1 s. */
+int report_stopped(const report_run *r);
 /* The level's start state and objectives, and the optimal walk's tiles
  * (walk: HOL_NAV_WALK_MAX entries). */
 int report_optimal(report_run *r, report_att *t, hol_room *out_start, hol_tile *goals,

@@ -88,7 +88,9 @@ int report_read_summaries(report_run *r)
         return CLI_EXIT_FAIL;
     }
     for (int d = 0; d < r->ndirs; d++) {
-        int st = read_summary(r, d);
+        int st = report_stopped(r);
+        if (!st)
+            st = read_summary(r, d);
         if (st)
             return st;
     }
@@ -135,6 +137,15 @@ static int step_row(const report_att *t, const hol_report_step *s, long expect, 
     return 1;
 }
 
+int report_stopped(const report_run *r)
+{
+    int sig = cli_caught_signal();
+    if (!sig)
+        return 0;
+    cli_error(r->cmd, 0, "stopped by signal %d: --out holds no new tables", sig);
+    return 128 + sig;
+}
+
 int report_walk(report_run *r, report_att *t, hol_tile *tiles, int *out_n)
 {
     char name[64], path[4200];
@@ -156,6 +167,8 @@ int report_walk(report_run *r, report_att *t, hol_tile *tiles, int *out_n)
     long count = 0;
     while (ok && (got = hol_lines_next(&l, &line, &n)) > 0) {
         hol_tile tile;
+        if (!(l.lineno & 4095) && (st = report_stopped(r)))
+            break;
         if (!csv_line(&l, &line, &n))
             continue;
         if (!header++) {
@@ -170,7 +183,9 @@ int report_walk(report_run *r, report_att *t, hol_tile *tiles, int *out_n)
             count += ok;
         }
     }
-    if (!ok)
+    if (st)
+        ;
+    else if (!ok)
         st = bad_line(r->cmd, path, l.lineno, err);
     else if (got < 0)
         st = cli_lines_failed(r->cmd, "steps", path, &l);

@@ -357,7 +357,12 @@ int play_session_open(const char *cmd, play_out *po, const hol_level *levels, in
     d.rec_name = po->rec_name;
     d.meta = *meta;
     char msg[256];
+    /* recovery of a killed session's huge live files ends on a signal */
+    if (po->has_log)
+        po->log.stop = cli_caught_signal;
     hol_err e = hol_session_create(&d, out, msg, sizeof msg);
+    if (po->has_log)
+        po->log.stop = NULL;
     if (e) {
         cli_error(cmd, 0, "%s", msg);
         return e == HOL_EARG || e == HOL_EVERSION || e == HOL_EBUDGET || e == HOL_EUNREACH

@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "../../core/hol_hyper.h"
+#include "cli.h"
 
 typedef struct canvas {
     uint8_t *px;
@@ -30,14 +31,53 @@ static void put(canvas *c, int x, int y, uint32_t rgb)
     p[3] = 255;
 }
 
+/* Pixels a..b of row j (put's checks, made once for the row). */
+static void span(canvas *c, int a, int b, int j, uint32_t rgb)
+{
+    if (j < 0 || j >= c->size || c->clip) {
+        for (int i = a; i <= b; i++)
+            put(c, i, j, rgb);
+        return;
+    }
+    a = a < 0 ? 0 : a;
+    b = b >= c->size ? c->size - 1 : b;
+    uint8_t px[4] = {(uint8_t)(rgb >> 16), (uint8_t)(rgb >> 8), (uint8_t)rgb, 255};
+    uint8_t *p = c->px + ((size_t)j * (size_t)c->size + (size_t)(a < 0 ? 0 : a)) * 4;
+    for (int i = a; i <= b; i++, p += 4)
+        memcpy(p, px, 4);
+}
+
+/* Pixel (i, j)'s centre within rad of (x, y): the one test dot makes. */
+static int in_disc(int i, int j, double x, double y, double rad)
+{
+    double dx = i + 0.5 - x, dy = j + 0.5 - y;
+    return dx * dx + dy * dy <= rad * rad;
+}
+
+/* The pixels whose centres are within rad of (x, y), a row at a time: the
+ * row's span from one square root, its ends settled by in_disc (so the
+ * pixels are exactly those the test picks; on a row they are contiguous). */
 static void dot(canvas *c, double x, double y, double rad, uint32_t rgb)
 {
-    for (int j = (int)floor(y - rad); j <= (int)ceil(y + rad); j++)
-        for (int i = (int)floor(x - rad); i <= (int)ceil(x + rad); i++) {
-            double dx = i + 0.5 - x, dy = j + 0.5 - y;
-            if (dx * dx + dy * dy <= rad * rad)
-                put(c, i, j, rgb);
-        }
+    int i0 = (int)floor(x - rad), i1 = (int)ceil(x + rad);
+    for (int j = (int)floor(y - rad); j <= (int)ceil(y + rad); j++) {
+        double dy = j + 0.5 - y, s2 = rad * rad - dy * dy;
+        if (s2 < 0)
+            s2 = 0;
+        double s = sqrt(s2);
+        int a = (int)floor(x - s - 0.5), b = (int)ceil(x + s - 0.5);
+        a = a < i0 ? i0 : a;
+        b = b > i1 ? i1 : b;
+        while (a > i0 && in_disc(a - 1, j, x, y, rad))
+            a--;
+        while (a <= b && !in_disc(a, j, x, y, rad))
+            a++;
+        while (b < i1 && in_disc(b + 1, j, x, y, rad))
+            b++;
+        while (b >= a && !in_disc(b, j, x, y, rad))
+            b--;
+        span(c, a, b, j, rgb);
+    }
 }
 
 static void ring(canvas *c, double x, double y, double rad, double w, uint32_t rgb)
@@ -50,11 +90,14 @@ static void ring(canvas *c, double x, double y, double rad, double w, uint32_t r
         }
 }
 
-static void line(canvas *c, const double a[2], const double b[2], double w, uint32_t rgb)
+/* Discs every half pixel from a to b; from the second when first is 0 (a
+ * piece continuing another, whose last disc is the same). */
+static void line(canvas *c, const double a[2], const double b[2], double w, uint32_t rgb,
+                 int first)
 {
     double dx = b[0] - a[0], dy = b[1] - a[1];
     int n = (int)(sqrt(dx * dx + dy * dy) * 2) + 1;
-    for (int k = 0; k <= n; k++)
+    for (int k = first ? 0 : 1; k <= n; k++)
         dot(c, a[0] + dx * k / n, a[1] + dy * k / n, w / 2, rgb);
 }
 
@@ -87,7 +130,7 @@ static void geodesic(canvas *c, const double a[3], const double b[3], double w, 
                 p[i] /= n;
         }
         to_px(c, p, cur);
-        line(c, prev, cur, w, rgb);
+        line(c, prev, cur, w, rgb, k == 1);
         prev[0] = cur[0];
         prev[1] = cur[1];
     }
@@ -141,6 +184,8 @@ static hol_err path(canvas *c, const hol_tile *tiles, int n, double w, uint32_t 
     double a[3], b[3];
     hol_err err = centre(c, c->start.tile, a);
     for (int i = 0; !err && i < n; i++) {
+        if (!(i & 1023) && cli_caught_signal())
+            return HOL_EBUDGET; /* a walk of a million steps: stopped (report_draw.h) */
         if ((err = centre(c, tiles[i], b)))
             break;
         geodesic(c, a, b, w, rgb);

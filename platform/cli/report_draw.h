@@ -12,7 +12,9 @@
  *   the walk's last tile (an orange ring). Colours are exact (no blending)
  *   so tests can count them.
  * - Tiles are of one tiling (the start's); others are HOL_EARG. size is
- *   64..2048. No allocation.
+ *   64..2048. No allocation. After a signal (cli_caught_signal) a path
+ *   stops within 1,024 tiles and report_draw gives HOL_EBUDGET (a walk of a
+ *   million steps takes seconds to draw).
  * - report_draw_background draws the disk and the edges alone for a
  *   hyperbolic {4,q} (q 5..8; they are the same for every start): given as
  *   background (same size and q), report_draw copies it instead of drawing

@@ -137,6 +137,10 @@ static hol_err hol__read(void *user, const char *name, uint64_t off, void *buf, 
     hol_sink_posix *p = user;
     char path[4096 + HOL_SINK_NAME_MAX];
     *out_got = 0;
+    if (p->stop && p->stop()) {
+        snprintf(p->why, sizeof p->why, "stopped by a signal");
+        return HOL_EIO;
+    }
     if (hol__path(p, name, path, sizeof path))
         return hol__why(p, HOL_EIO);
     int fd = hol__open_regular(path, O_RDONLY);

@@ -14,6 +14,10 @@
  *   read opens, preads and closes. list reads the folder (not "." nor
  *   "..").
  * - why gives strerror of the last failure.
+ * - stop (NULL after init): when set and it returns nonzero, read fails
+ *   (HOL_EIO, why "stopped by a signal") before reading, so a long read of
+ *   a stream (recovery of a huge live file) ends soon after a signal. The
+ *   caller sets it only around such a read.
  * - hol_sink_posix_fini closes what is still open (nothing is flushed or
  *   renamed). Plain POSIX: no allocation, no globals; one sink per
  *   thread.
@@ -37,6 +41,7 @@ typedef struct hol_sink_posix {
     char dir[4096];
     int fd[HOL_SINK_MAX_OPEN];
     char why[128];
+    int (*stop)(void);
 } hol_sink_posix;
 
 hol_err hol_sink_posix_init(hol_sink_posix *p, const char *dir);
