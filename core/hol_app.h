@@ -82,6 +82,16 @@ enum hol_app_mode {
  * lights; at dusk and night lanterns light the forest (render/hol_render.h). */
 enum hol_app_lighting { HOL_LIGHT_DAY = 0, HOL_LIGHT_DUSK = 1, HOL_LIGHT_NIGHT = 2 };
 
+/* A level's pointing question (`point start|objective`, SPEC 8): at the
+ * level's end (done or time up) the app asks for the direction to the
+ * level's start tile, or to its objective (the flag; the chest in mode
+ * keys), before the end screen (state HOL_APP_POINT). */
+enum hol_app_point_target {
+    HOL_APP_POINT_NONE = 0,
+    HOL_APP_POINT_START = 1,
+    HOL_APP_POINT_OBJECTIVE = 2
+};
+
 enum hol_app_minimap_place { HOL_MINIMAP_HUD = 0, HOL_MINIMAP_HAND = 1, HOL_MINIMAP_OFF = 2 };
 
 #define HOL_APP_MAX_KEYS 5
@@ -158,6 +168,8 @@ typedef struct hol_app_level {
     int lighting;             /* hol_app_lighting; 0: day */
     hol_tile lanterns[HOL_APP_MAX_LANTERNS]; /* `place lantern` tiles */
     int nlanterns;
+    int point;                /* hol_app_point_target: the question asked
+                                 at the level's end; 0: none */
 } hol_app_level;
 
 typedef struct hol_app_desc {
@@ -176,7 +188,13 @@ typedef enum hol_app_state {
     HOL_APP_IDLE = 0,         /* no level started yet */
     HOL_APP_PLAYING = 1,
     HOL_APP_DONE = 2,         /* the level is complete: the end screen */
-    HOL_APP_QUIT = 3          /* the user asked to quit: the platform exits */
+    HOL_APP_QUIT = 3,         /* the user asked to quit: the platform exits */
+    HOL_APP_POINT = 4         /* the level is over (done or time up) and
+                                 its `point` question is asked: the user
+                                 turns (pancake: the view's yaw; a tracked
+                                 head: the controller's ray, see
+                                 hol_app_point) and confirms; then DONE.
+                                 The level clock is stopped, no walking. */
 } hol_app_state;
 
 /* The HUD model: filled at the step, drawn as is. */
@@ -299,6 +317,29 @@ typedef struct hol_app_summary {
     hol_app_end end;
 } hol_app_summary;
 
+/* A pointing answer (SPEC 8, level line `point`). Bearings in degrees
+ * clockwise from room north, [0, 360). pointed: the direction the user
+ * gave at confirm: with a tracked head (a headset) the yaw of the right
+ * controller's pose (its -z axis, the ray) when HOL_INPUT_HAND_R_VALID,
+ * else the left's, else the head's; without one (pancake) the view's yaw.
+ * true_deg, flat_deg: hol_bearing_end of the level's walk of room steps
+ * (core/hol_bearing.h; the same computation as `holonomy tile bearing`),
+ * the target the level's start tile or its objective; the flat vector
+ * counts the steps from the level's start (after its start walk; the start
+ * walk's own visits do not count). has_true 0: the user stands on the
+ * target; has_flat 0: the walk never stood on it, or the flat vector is
+ * zero. error_*: pointed minus the bearing, wrapped to (-180, 180]. */
+typedef struct hol_app_point {
+    int target;            /* hol_app_point_target */
+    double t;              /* the level clock when it was asked (the end) */
+    double asked_s;        /* the input time it was asked */
+    double time_s;         /* seconds taken to answer */
+    double pointed_deg;
+    int has_true, has_flat;
+    double true_deg, flat_deg;
+    double error_true, error_flat;
+} hol_app_point;
+
 typedef struct hol_app_events {
     int nsteps;
     hol_app_step_event steps[HOL_APP_MAX_STEP_EVENTS];
@@ -317,6 +358,9 @@ typedef struct hol_app_events {
                               view.map.place) in this step */
     int minimap_refused;   /* HOL_BTN_MINIMAP was pressed on a level whose
                               minimap is fixed: nothing moved */
+    int pointed;           /* the level's pointing question was answered
+                              in this step (point) */
+    hol_app_point point;
 } hol_app_events;
 
 typedef struct hol_app hol_app;

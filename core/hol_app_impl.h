@@ -12,6 +12,7 @@
 #define HOL_APP_IMPL_H
 
 #include "hol_app.h"
+#include "hol_bearing.h"
 #include "hol_nav.h"
 
 /* "Minimap fixed in this study" stays on the HUD this long (input clock,
@@ -71,6 +72,10 @@ struct hol_app {
     double fixed_until;      /* ... and shows until this input time */
     int nmarks;              /* tiles marked on the minimap with it */
     hol_tile marks[HOL_APP_MAX_MARKS];
+    /* pointing (level.point): the level's walk as SPEC 8 counts it */
+    hol_bearing_walk bw;
+    int bw_ok;               /* bw follows the walk (else no question) */
+    double asked_s;          /* input time the question was asked */
     uint8_t walk[HOL_NAV_WALK_MAX]; /* replan scratch */
     int nwalk;
 };
@@ -87,6 +92,17 @@ void hol__tutorial_enter(hol_app *app, const hol_room *r);
  * -1 when none within HOL__LOOP_MAX steps (never in a 3 x 3 room). */
 #define HOL__LOOP_MAX 12
 int hol__loop_left(const hol_app *app, const hol_room *r, uint8_t *out_walk, int cap);
+
+/* hol_app_point.c: the level's walk for its pointing question (begun at
+ * the level's start, a room step at a time, synced after a re-placing),
+ * whether it can be asked, the direction pointed and the answer (fills
+ * app->ev.point, sets ev.pointed). */
+void hol__point_begin(hol_app *app);
+void hol__point_step(hol_app *app, int dir);
+void hol__point_sync(hol_app *app);
+int hol__point_can_ask(const hol_app *app);
+double hol__pointed_yaw(const hol_app *app, const hol_input *in);
+void hol__point_answer(hol_app *app, const hol_input *in);
 
 /* hol_app_view.c */
 void hol__fill_view(hol_app *app, const hol_input *in);

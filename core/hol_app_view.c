@@ -122,6 +122,23 @@ static void hol__prompt(hol_app_hud *h, uint32_t device, const hol__ask *ask, in
     }
 }
 
+/* The pointing question (state HOL_APP_POINT): what to point at, and how
+ * (a headset: the controller; else the view). */
+static void hol__point_status(const hol_app *app, const hol_input *in, hol_app_hud *h)
+{
+    const hol_app_level *L = &app->level;
+    const char *what = L->point == HOL_APP_POINT_START ? "the start"
+                       : L->mode == HOL_APP_KEYS       ? "the chest"
+                                                       : "the flag";
+    if (in && (in->flags & HOL_INPUT_HEAD_VALID) &&
+        (in->flags & (HOL_INPUT_HAND_R_VALID | HOL_INPUT_HAND_L_VALID)))
+        snprintf(h->status, sizeof h->status, "Point the controller at %s", what);
+    else
+        snprintf(h->status, sizeof h->status, "Turn to face %s", what);
+    const hol__ask ask[1] = {{HOL_BTN_CONFIRM, 0, "confirm"}};
+    hol__prompt(h, app->device, ask, 1);
+}
+
 /* Status (end screen, pause, safety) and the prompt of what the buttons do
  * now, worded for the device in use. */
 static void hol__fill_status(hol_app *app, const hol_input *in, hol_app_hud *h)
@@ -137,6 +154,8 @@ static void hol__fill_status(hol_app *app, const hol_input *in, hol_app_hud *h)
                                  {HOL_BTN_CONFIRM, 0, "restart"},
                                  {HOL_BTN_QUIT, HOL_BTN_BACK, "quit"}};
         hol__prompt(h, dev, ask, 3);
+    } else if (v->state == HOL_APP_POINT) {
+        hol__point_status(app, in, h);
     } else if (v->state == HOL_APP_DONE) {
         if (app->timed_out)
             snprintf(h->status, sizeof h->status, "Time up: %d steps, best %d, %ld:%02ld",

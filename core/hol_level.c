@@ -24,6 +24,7 @@ typedef struct hol__lp {
     long flag_line, keys_line, chest_line, place_line[HOL_APP_MAX_PLACES];
     long tiling_line, room_line, lantern_line[HOL_APP_MAX_LANTERNS];
     int geo_only; /* the first pass: only the geometry lines */
+    long point_line;   /* the `point` line (0: none) */
     long key_line[24]; /* where each key of hol__keys was given (0: not yet) */
     int repeated;      /* a key given twice: reported in either pass */
     hol_level_err *loud;
@@ -369,6 +370,19 @@ static hol_err hol__key_lighting(hol__lp *p, char **f, int nf)
     return HOL_OK;
 }
 
+/* point start|objective (SPEC 8): the pointing question at the level's end */
+static hol_err hol__key_point(hol__lp *p, char **f, int nf)
+{
+    static const char *const targets[2] = {"start", "objective"};
+    (void)nf;
+    int m = hol__word(f[1], targets, 2);
+    if (m < 0)
+        return hol__lfail(p, HOL_EPARSE, p->line, "point '%.20s' is not start or objective", f[1]);
+    p->L.point = m + 1;
+    p->point_line = p->line;
+    return HOL_OK;
+}
+
 /* tiling 4 Q (SPEC 7) */
 static hol_err hol__key_tiling(hol__lp *p, char **f, int nf)
 {
@@ -433,6 +447,7 @@ static const struct {
     {"minimap", 2, 2, hol__key_minimap},
     {"fixed", 2, 2, hol__key_fixed},
     {"lighting", 2, 2, hol__key_lighting},
+    {"point", 2, 2, hol__key_point},
     {"tiling", 3, 3, hol__key_tiling},
     {"room", 3, 3, hol__key_room},
     {"cell", 2, 2, hol__key_cell},
@@ -715,6 +730,12 @@ static hol_err hol__finish(hol__lp *p)
         return hol__lfail(p, HOL_EARG, p->tiling_line ? p->tiling_line : p->have_mode,
                           "the tutorial needs the tiling {4,5}, {4,6} or {4,7}: its lessons have "
                           "no walk inside the room in {4,%d}", q);
+    if (L->point && (L->mode == HOL_APP_TUTORIAL ||
+                     (L->point == HOL_APP_POINT_OBJECTIVE && L->mode == HOL_APP_EXPLORE)))
+        return hol__lfail(p, HOL_EARG, p->point_line,
+                          "point %s needs a mode with an objective (flag or keys%s)",
+                          L->point == HOL_APP_POINT_START ? "start" : "objective",
+                          L->point == HOL_APP_POINT_START ? ", or explore" : "");
     hol_room r0;
     (void)hol_room_start_in(q, L->room_cols, L->room_rows, &r0);
     for (int i = 0; i < L->nstart; i++)

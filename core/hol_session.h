@@ -64,7 +64,8 @@
  *   head HOL_SESSION_HEAD_COLUMNS; events.csv HOL_SESSION_EVENT_COLUMNS (a
  *   row, appended durably as it happens, for each change of the minimap's
  *   place during play, `minimap`, and each refused one, `minimap-fixed`;
- *   the header when the file is new; a folder holding it holds logs); the README ("Research logs") documents
+ *   the header when the file is new; a folder holding it holds logs);
+ *   points.csv HOL_SESSION_POINT_COLUMNS (likewise); the README ("Research logs") documents
  *   each. Head rows fall on exact 10 Hz level times, interpolated between
  *   the frames around them (position linear, yaw the short way round;
  *   cell and tile from the nearer frame), frame_t the later frame's time.
@@ -108,6 +109,15 @@
 #define HOL_SESSION_HEAD_COLUMNS \
     "session,attempt,level,t,frame_t,x,y,z,yaw,pitch,col,row,tile"
 #define HOL_SESSION_EVENT_COLUMNS "session,attempt,level,t,event,value"
+/* points.csv: a row per pointing answer (level line `point`, SPEC 8;
+ * hol_app_point), appended durably as it happens, the header when the file
+ * is new. attempt: the attempt just ended (the level asked about); t its
+ * level time at the question; pointed, true, flat: bearings with one
+ * decimal (true, flat empty when undefined); error_true, error_flat:
+ * pointed minus them wrapped to (-180, 180], one decimal, empty with
+ * theirs; time: seconds taken to answer. */
+#define HOL_SESSION_POINT_COLUMNS \
+    "session,participant,attempt,level,t,target,pointed,true,flat,error_true,error_flat,time"
 
 typedef struct hol_session_desc {
     const hol_level *levels; /* 1..HOL_SESSION_MAX_LEVELS, copied */

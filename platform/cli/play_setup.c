@@ -390,7 +390,7 @@ int play_session_end(const char *cmd, hol_session *s, int abort)
 void play_print_end(hol_session *s)
 {
     const hol_app_view *v = hol_app_get_view(hol_session_app(s));
-    static const char *const st[] = {"idle", "playing", "done", "quit"};
+    static const char *const st[] = {"idle", "playing", "done", "quit", "point"};
     char name[4 * HOL_LEVEL_NAME_MAX];
     cli_escape(hol_session_level(s)->name, name, sizeof name);
     printf("level %s %s steps %d optimum %d tile %s cell %d,%d\n", name,

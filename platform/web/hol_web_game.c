@@ -298,7 +298,7 @@ EMSCRIPTEN_KEEPALIVE void hol_web_abort(void)
 void hol_web_game_print_end(void)
 {
     const hol_app_view *v = hol_app_get_view(hol_session_app(sess));
-    static const char *const st[] = {"idle", "playing", "done", "quit"};
+    static const char *const st[] = {"idle", "playing", "done", "quit", "point"};
     printf("level %s %s steps %d optimum %d tile %s cell %d,%d\n", hol_session_level(sess)->name,
            v->hud.timed_out ? "timeout" : st[v->state], v->hud.steps, v->hud.optimum,
            v->hud.address, v->user.col, v->user.row);
