@@ -396,10 +396,19 @@ hol_err hol_app_start_level(hol_app *app, const hol_app_level *level)
     app->level = *level;
     app->have_level = 1;
     app->view.map.place = level->minimap;
+    app->screen = HOL_APP_SCREEN_NONE;
     err = hol__begin(app);
-    if (err)
+    if (err) {
         app->have_level = 0;
-    return err;
+        return err;
+    }
+    if (level->instructions[0]) { /* the level begins after them */
+        app->screen = HOL_APP_SCREEN_INSTRUCTIONS;
+        app->view.state = HOL_APP_SCREEN;
+        app->place_panel = 1;
+        hol__fill_view(app, NULL);
+    }
+    return HOL_OK;
 }
 
 /* ---- the step ------------------------------------------------------------ */
@@ -521,6 +530,31 @@ static hol_err hol__move(hol_app *app, const hol_input *in, double t0, double dt
     return HOL_OK;
 }
 
+/* A frame of a screen of text (state HOL_APP_SCREEN): quit quits, confirm
+ * goes on (the instructions: the level begins at the next frame; the
+ * closing screen: the session ends); nothing else acts. */
+static void hol__screen_frame(hol_app *app, const hol_input *in, uint32_t pressed)
+{
+    hol_app_view *v = &app->view;
+    app->device = in->device;
+    v->paused = !(in->flags & HOL_INPUT_FOCUSED) || (in->flags & HOL_INPUT_DEVICE_LOST);
+    if (pressed & HOL_BTN_DEBUG)
+        app->debug = !app->debug;
+    if (pressed & HOL_BTN_QUIT) {
+        v->state = HOL_APP_QUIT;
+    } else if ((pressed & HOL_BTN_CONFIRM) && !v->paused) {
+        if (app->screen == HOL_APP_SCREEN_CLOSING) {
+            app->ev.next_level = 1;
+        } else {
+            app->screen = HOL_APP_SCREEN_NONE;
+            v->state = HOL_APP_PLAYING; /* pending_start: the next frame */
+        }
+    }
+    if (in->flags & HOL_INPUT_HEAD_VALID) /* the look follows the head */
+        hol__yaw_pitch_from_quat(in->head.quat, &app->mo.yaw_deg, &app->mo.pitch_deg);
+    hol__fill_view(app, in);
+}
+
 /* The level is over (done or time up): its pointing question, if it has
  * one, before the end screen. */
 static void hol__level_over(hol_app *app, const hol_input *in)
@@ -576,6 +610,10 @@ hol_err hol_app_step(hol_app *app, const hol_input *in)
     }
     if (v->state == HOL_APP_QUIT)
         return HOL_OK;
+    if (v->state == HOL_APP_SCREEN) {
+        hol__screen_frame(app, in, pressed);
+        return HOL_OK;
+    }
     if (app->pending_start) {
         /* a level started between frames begins at this frame: the time
          * since the previous frame (another level, another play) is not
@@ -636,8 +674,14 @@ hol_err hol_app_step(hol_app *app, const hol_input *in)
         if ((err = hol__point_frame(app, in, pressed, dt)))
             return err;
     } else if (v->state == HOL_APP_DONE) {
-        if ((pressed & HOL_BTN_CONFIRM) && !v->paused)
+        if ((pressed & HOL_BTN_CONFIRM) && !v->paused && app->level.last &&
+            app->level.closing[0]) {
+            app->screen = HOL_APP_SCREEN_CLOSING; /* then the closing screen */
+            v->state = HOL_APP_SCREEN;
+            app->place_panel = 1;
+        } else if ((pressed & HOL_BTN_CONFIRM) && !v->paused) {
             app->ev.next_level = 1;
+        }
     } else if (!v->paused && !restarted) {
         double t0 = app->level_t;
         app->level_t += dt;

@@ -130,6 +130,21 @@ enum hol_app_minimap_place { HOL_MINIMAP_HUD = 0, HOL_MINIMAP_HAND = 1, HOL_MINI
  * -1: its lessons begin where the player ends the one before). */
 #define HOL_APP_TUTORIAL_STAGES 4
 
+/* A screen of text (hol_app_level.instructions, .closing): printable
+ * ASCII (the HUD's font), at most HOL_APP_SCREEN_TEXT - 1 bytes, wrapped
+ * at spaces into lines of at most HOL_APP_SCREEN_COLS characters
+ * (hol_app_wrap), at most HOL_APP_SCREEN_LINES of them (the HUD's lines:
+ * the text is shown whole, never cut; the level parser refuses more). */
+#define HOL_APP_SCREEN_TEXT 288
+#define HOL_APP_SCREEN_COLS 46
+#define HOL_APP_SCREEN_LINES 6
+
+enum hol_app_screen {
+    HOL_APP_SCREEN_NONE = 0,
+    HOL_APP_SCREEN_INSTRUCTIONS = 1, /* before the level: confirm begins it */
+    HOL_APP_SCREEN_CLOSING = 2       /* after the last level: confirm ends */
+};
+
 /* One level as the app plays it. */
 typedef struct hol_app_level {
     int mode;                 /* hol_app_mode */
@@ -170,6 +185,14 @@ typedef struct hol_app_level {
     int nlanterns;
     int point;                /* hol_app_point_target: the question asked
                                  at the level's end; 0: none */
+    /* Screens (issue 26, session flow): "" none. instructions: shown when
+     * the level is started (hol_app_start_level; not on a restart) until
+     * confirm; the level (its clock, its attempt: events.level_started)
+     * begins at the frame after. closing: on the session's last level
+     * (last 1), the end screen's confirm shows it, and its confirm ends
+     * (events.next_level). A study puts them there (core/hol_study.h). */
+    char instructions[HOL_APP_SCREEN_TEXT];
+    char closing[HOL_APP_SCREEN_TEXT];
 } hol_app_level;
 
 typedef struct hol_app_desc {
@@ -189,12 +212,17 @@ typedef enum hol_app_state {
     HOL_APP_PLAYING = 1,
     HOL_APP_DONE = 2,         /* the level is complete: the end screen */
     HOL_APP_QUIT = 3,         /* the user asked to quit: the platform exits */
-    HOL_APP_POINT = 4         /* the level is over (done or time up) and
+    HOL_APP_POINT = 4,        /* the level is over (done or time up) and
                                  its `point` question is asked: the user
                                  turns (pancake: the view's yaw; a tracked
                                  head: the controller's ray, see
                                  hol_app_point) and confirms; then DONE.
                                  The level clock is stopped, no walking. */
+    HOL_APP_SCREEN = 5        /* a screen of text (hud.screen: the level's
+                                 instructions before it begins, the closing
+                                 screen after the last): its lines are
+                                 hud.lines, confirm goes on, quit quits;
+                                 nothing else acts, no clock runs */
 } hol_app_state;
 
 /* The HUD model: filled at the step, drawn as is. */
@@ -222,6 +250,8 @@ typedef struct hol_app_hud {
     int timed_out;                    /* 1: the level ended at its time limit
                                          (state DONE, "Time up"), not complete */
     double elapsed_s;                 /* level clock */
+    int screen;                       /* hol_app_screen shown (state
+                                         HOL_APP_SCREEN), else 0 */
     /* the text as drawn, one line each: the feedback if any, the
      * objective (or status), "STEPS n", "TIME m:ss OF m:ss" when the level
      * has a time limit; with debug on also "TILE address", "CELL c,r NORTH
@@ -364,6 +394,12 @@ typedef struct hol_app_events {
 } hol_app_events;
 
 typedef struct hol_app hol_app;
+
+/* Wraps text at spaces into lines of at most cols (1..HOL_APP_TEXT_MAX-1)
+ * characters (a word longer than a line is cut at the line's end and goes
+ * on; runs of blanks at a wrap are dropped); writes at most max lines into
+ * out (NULL: none) and returns how many lines the whole text needs. */
+int hol_app_wrap(const char *text, int cols, char (*out)[HOL_APP_TEXT_MAX], int max);
 
 /* Errors: HOL_EARG, HOL_ENOMEM (an allocation failed). */
 hol_err hol_app_create(const hol_app_desc *desc, hol_app **out_app);

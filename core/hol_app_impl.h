@@ -76,6 +76,9 @@ struct hol_app {
     hol_bearing_walk bw;
     int bw_ok;               /* bw follows the walk (else no question) */
     double asked_s;          /* input time the question was asked */
+    /* screens (hol_app_level.instructions, .closing) */
+    int screen;              /* hol_app_screen up (state HOL_APP_SCREEN) */
+    int place_panel;         /* a screen came up: the panel goes ahead now */
     uint8_t walk[HOL_NAV_WALK_MAX]; /* replan scratch */
     int nwalk;
 };

@@ -25,6 +25,7 @@ typedef struct hol__lp {
     long tiling_line, room_line, lantern_line[HOL_APP_MAX_LANTERNS];
     int geo_only; /* the first pass: only the geometry lines */
     long point_line;   /* the `point` line (0: none) */
+    const char *raw;   /* the line being read, comment removed, unsplit */
     long key_line[24]; /* where each key of hol__keys was given (0: not yet) */
     int repeated;      /* a key given twice: reported in either pass */
     hol_level_err *loud;
@@ -383,6 +384,42 @@ static hol_err hol__key_point(hol__lp *p, char **f, int nf)
     return HOL_OK;
 }
 
+/* instructions TEXT, closing TEXT: the rest of the line (hol_app.h:
+ * screens), checked: printable ASCII, wrapped whole on the HUD. */
+static hol_err hol__key_text(hol__lp *p, char **f, int nf)
+{
+    (void)nf;
+    const char *r = p->raw;
+    while (*r == ' ' || *r == '\t')
+        r++;
+    r += strlen(f[0]);
+    while (*r == ' ' || *r == '\t')
+        r++;
+    size_t n = strlen(r);
+    while (n && (r[n - 1] == ' ' || r[n - 1] == '\t'))
+        n--;
+    int closing = !strcmp(f[0], "closing");
+    char *out = closing ? p->L.closing : p->L.instructions;
+    if (n > HOL_APP_SCREEN_TEXT - 1)
+        return hol__lfail(p, HOL_ERANGE, p->line, "%s: longer than %d characters", f[0],
+                          HOL_APP_SCREEN_TEXT - 1);
+    for (size_t i = 0; i < n; i++)
+        if ((unsigned char)r[i] < 0x20 || (unsigned char)r[i] > 0x7e || r[i] == '\t')
+            return hol__lfail(p, HOL_EPARSE, p->line,
+                              "%s: only printable ASCII and spaces (the HUD's font), not byte "
+                              "0x%02x", f[0], (unsigned char)r[i]);
+    memcpy(out, r, n);
+    out[n] = 0;
+    int lines = hol_app_wrap(out, HOL_APP_SCREEN_COLS, NULL, 0);
+    if (lines > HOL_APP_SCREEN_LINES) {
+        out[0] = 0;
+        return hol__lfail(p, HOL_ERANGE, p->line,
+                          "%s: wraps into %d lines of %d characters; at most %d are shown", f[0],
+                          lines, HOL_APP_SCREEN_COLS, HOL_APP_SCREEN_LINES);
+    }
+    return HOL_OK;
+}
+
 /* tiling 4 Q (SPEC 7) */
 static hol_err hol__key_tiling(hol__lp *p, char **f, int nf)
 {
@@ -448,6 +485,8 @@ static const struct {
     {"fixed", 2, 2, hol__key_fixed},
     {"lighting", 2, 2, hol__key_lighting},
     {"point", 2, 2, hol__key_point},
+    {"instructions", 2, HOL__FIELDS + 1, hol__key_text},
+    {"closing", 2, HOL__FIELDS + 1, hol__key_text},
     {"tiling", 3, 3, hol__key_tiling},
     {"room", 3, 3, hol__key_room},
     {"cell", 2, 2, hol__key_cell},
@@ -499,6 +538,9 @@ static hol_err hol__line(hol__lp *p, const char *s, size_t n)
     char *hash = strchr(line, '#');
     if (hash)
         *hash = 0;
+    char raw[HOL_LEVEL_LINE_MAX + 1];
+    memcpy(raw, line, strlen(line) + 1);
+    p->raw = raw;
     char *f[HOL__FIELDS];
     int nf = hol__split(line, f);
     if (nf == 0)

@@ -94,6 +94,10 @@
 #include "hol_sink.h"
 
 #define HOL_SESSION_MAX_LEVELS HOL_REC_MAX_LEVELS
+/* The closing screen of a study's session whose study gives no `closing`
+ * line: shown after the last level's end screen (a level labelled with a
+ * condition: hol_level.condition), its confirm ends the session. */
+#define HOL_SESSION_CLOSING "Thank you: the study is over."
 /* Head rows are interpolated over frames at most HOL_SESSION_GAP_S of level
  * time apart; a longer gap (a stall, a laptop asleep, a recording whose
  * time jumps) is one `gap` row. A frame writes at most HOL_SESSION_GAP_ROWS

@@ -217,6 +217,35 @@ static hol_err hol__allow(hol__sp *p, const char *w, size_t n)
     return HOL_OK;
 }
 
+/* instructions TEXT (the practice's before the first condition, else the
+ * condition's), closing TEXT (before the first condition): once each,
+ * checked as the level line they become. */
+static hol_err hol__screen(hol__sp *p, int closing, const char *b, const char *end)
+{
+    hol_study *s = p->s;
+    const char *key = closing ? "closing" : "instructions";
+    while (b < end && hol__blank(*b))
+        b++;
+    while (end > b && hol__blank(end[-1]))
+        end--;
+    if (closing && p->cur >= 0)
+        return hol__fail(p->err, HOL_EARG, p->line, 0, "'closing' comes before the first condition");
+    hol_study_span *sp = closing ? &s->closing
+                         : p->cur >= 0 ? &s->conditions[p->cur].instructions
+                                       : &s->practice_instructions;
+    if (sp->len)
+        return hol__fail(p->err, HOL_EARG, p->line, sp->line, "a second '%s' line %s", key,
+                         closing ? "in the study" : p->cur >= 0 ? "in this condition"
+                                                                : "for the practice");
+    hol_level_err le;
+    if (hol_level_line_check(b, (size_t)(end - b), &le))
+        return hol__fail(p->err, le.code, p->line, 0, "%s", le.msg);
+    sp->off = (uint16_t)(b - s->text);
+    sp->len = (uint16_t)(end - b);
+    sp->line = p->line;
+    return HOL_OK;
+}
+
 /* One line [b, end) (no LF, CR dropped, no comment). */
 static hol_err hol__line(hol__sp *p, const char *b, const char *end)
 {
@@ -226,6 +255,8 @@ static hol_err hol__line(hol__sp *p, const char *b, const char *end)
         return HOL_OK;
     if (hol__is(key, kn, "set"))
         return hol__add_set(p, rest, end);
+    if (hol__is(key, kn, "instructions") || hol__is(key, kn, "closing"))
+        return hol__screen(p, hol__is(key, kn, "closing"), b, end);
     static const char *const keys[6] = {"study", "counterbalance", "practice", "condition",
                                         "level", "allow"};
     int k = 0;
@@ -234,7 +265,7 @@ static hol_err hol__line(hol__sp *p, const char *b, const char *end)
     if (k == 6)
         return hol__fail(p->err, HOL_EPARSE, p->line, 0,
                          "unknown key '%.*s' (study, counterbalance, practice, condition, level, "
-                         "set, allow)", (int)(kn < 20 ? kn : 20), key);
+                         "set, allow, instructions, closing)", (int)(kn < 20 ? kn : 20), key);
     long n = hol__one(p, keys[k], rest, end, &w);
     if (n < 0)
         return p->err ? p->err->code : HOL_EPARSE;
@@ -509,12 +540,49 @@ static int hol__put_line(hol__compose *c, const char *s, size_t n, long origin)
     return 0;
 }
 
-/* The level file's lines but those a set line replaces, the note, the set
- * lines in force. 1 when it does not fit. */
-static int hol__compose_text(const hol_study *s, int c, const char *file, size_t len,
-                             hol__compose *cp)
+/* The study's screen lines level i carries (see hol_study.h): its
+ * instructions (the first level of the practice or of its condition) and
+ * the closing (the participant's last level); NULL when none. */
+static const hol_study_span *hol__instr_of(const hol_study *s, int c, int i)
 {
-    const hol_study_condition *cd = &s->conditions[c];
+    const hol_study_span *sp = c < 0 ? &s->practice_instructions : &s->conditions[c].instructions;
+    int first = c < 0 ? 0 : s->conditions[c].first_level;
+    return sp->len && i == first ? sp : NULL;
+}
+
+static const hol_study_span *hol__closing_of(const hol_study *s, int c, int i, int position)
+{
+    const hol_study_condition *cd = c >= 0 ? &s->conditions[c] : NULL;
+    return s->closing.len && cd && position == s->nconditions &&
+                   i == cd->first_level + cd->nlevels - 1
+               ? &s->closing
+               : NULL;
+}
+
+/* Does the study give level i's line of key [k, k+kn) (a screen line)? */
+static int hol__screen_key(const hol_study *s, int c, int i, int position, const char *k,
+                           size_t kn)
+{
+    return (kn == 12 && !memcmp(k, "instructions", 12) && hol__instr_of(s, c, i)) ||
+           (kn == 7 && !memcmp(k, "closing", 7) && hol__closing_of(s, c, i, position));
+}
+
+/* The screen lines of level i after its text. 1 when they do not fit. */
+static int hol__put_screens(const hol_study *s, int c, int i, int position, hol__compose *cp)
+{
+    const hol_study_span *a = hol__instr_of(s, c, i), *b = hol__closing_of(s, c, i, position);
+    if (a && hol__put_line(cp, s->text + a->off, a->len, -a->line))
+        return 1;
+    return b && hol__put_line(cp, s->text + b->off, b->len, -b->line);
+}
+
+/* The level file's lines but those a set line (or a screen line of the
+ * study's) replaces, the note, the set lines in force, the screens. 1 when
+ * it does not fit. c -1: a practice level (no set lines). */
+static int hol__compose_text(const hol_study *s, int c, int i, int position, const char *file,
+                             size_t len, hol__compose *cp)
+{
+    const hol_study_condition *cd = c >= 0 ? &s->conditions[c] : NULL;
     long fl = 0;
     for (const char *p = file, *end = file ? file + len : NULL; p && p < end;) {
         const char *nl = memchr(p, '\n', (size_t)(end - p));
@@ -524,10 +592,14 @@ static int hol__compose_text(const hol_study *s, int c, const char *file, size_t
         while (n && p[n - 1] == '\r')
             n--;
         size_t kn = hol__key(p, p + n, &k);
-        if (!(kn && hol__set_key(s, c, k, kn)) && hol__put_line(cp, p, n, fl))
+        int replaced = kn && ((c >= 0 && hol__set_key(s, c, k, kn)) ||
+                              hol__screen_key(s, c, i, position, k, kn));
+        if (!replaced && hol__put_line(cp, p, n, fl))
             return 1;
         p = nl ? nl + 1 : end;
     }
+    if (c < 0)
+        return hol__put_screens(s, c, i, position, cp);
     int used = 0;
     for (int j = 0; j < s->nsets; j++)
         used += hol__in_force(s, c, j);
@@ -545,7 +617,7 @@ static int hol__compose_text(const hol_study *s, int c, const char *file, size_t
     if (hol__set_key(s, c, "minimap", 7) && !s->allow_minimap_toggle &&
         hol__put_line(cp, "fixed minimap", 13, -cd->line))
         return 1;
-    return 0;
+    return hol__put_screens(s, c, i, position, cp);
 }
 
 /* A level error's lines, of the composed text, as the file's or the
@@ -578,18 +650,23 @@ hol_err hol_study_make_level(const hol_study *s, int i, int position, const char
     if (!name)
         name = cname;
     hol__compose cp = {buf, 0, sizeof buf, origin, 0, (long)(sizeof origin / sizeof origin[0])};
-    if (c >= 0 && hol__compose_text(s, c, file, len, &cp)) {
+    /* a practice level is the file as it is, unless it carries the
+     * practice's instructions */
+    int composed = c >= 0 || hol__instr_of(s, c, i);
+    long at = c >= 0 ? s->conditions[c].line : s->practice_instructions.line;
+    if (composed && hol__compose_text(s, c, i, position, file, len, &cp)) {
         *out_in_study = 1;
-        return hol__fail(err, HOL_ENOMEM, s->conditions[c].line, 0,
-                         "condition %s: its level with the set lines is longer than %d bytes",
-                         cname, HOL_LEVEL_TEXT_MAX);
+        return hol__fail(err, HOL_ENOMEM, at, 0,
+                         "%s %s: its level with the %s is longer than %d bytes",
+                         c >= 0 ? "condition" : "the", cname,
+                         c >= 0 ? "set lines" : "instructions", HOL_LEVEL_TEXT_MAX);
     }
-    const char *t = c >= 0 ? buf : file ? file : "";
-    size_t tl = c >= 0 ? cp.n : file ? len : 0;
+    const char *t = composed ? buf : file ? file : "";
+    size_t tl = composed ? cp.n : file ? len : 0;
     hol_err e = hol_level_make(name, strlen(name), t, tl, out, err);
     if (e) {
-        if (c >= 0)
-            hol__map_err(&cp, s->conditions[c].line, err, out_in_study);
+        if (composed)
+            hol__map_err(&cp, at, err, out_in_study);
         return e;
     }
     snprintf(out->condition, sizeof out->condition, "%s", cname);
