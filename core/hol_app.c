@@ -614,6 +614,16 @@ hol_err hol_app_step(hol_app *app, const hol_input *in)
         hol__screen_frame(app, in, pressed);
         return HOL_OK;
     }
+    if (v->state == HOL_APP_ASK) {
+        app->device = in->device;
+        v->paused = !(in->flags & HOL_INPUT_FOCUSED) || (in->flags & HOL_INPUT_DEVICE_LOST);
+        if (pressed & HOL_BTN_QUIT)
+            v->state = HOL_APP_QUIT;
+        else
+            hol__ask_frame(app, in, pressed);
+        hol__fill_view(app, in);
+        return HOL_OK;
+    }
     if (app->pending_start) {
         /* a level started between frames begins at this frame: the time
          * since the previous frame (another level, another play) is not
@@ -674,14 +684,8 @@ hol_err hol_app_step(hol_app *app, const hol_input *in)
         if ((err = hol__point_frame(app, in, pressed, dt)))
             return err;
     } else if (v->state == HOL_APP_DONE) {
-        if ((pressed & HOL_BTN_CONFIRM) && !v->paused && app->level.last &&
-            app->level.closing[0]) {
-            app->screen = HOL_APP_SCREEN_CLOSING; /* then the closing screen */
-            v->state = HOL_APP_SCREEN;
-            app->place_panel = 1;
-        } else if ((pressed & HOL_BTN_CONFIRM) && !v->paused) {
-            app->ev.next_level = 1;
-        }
+        if ((pressed & HOL_BTN_CONFIRM) && !v->paused)
+            hol__after_end(app, in, 0); /* questionnaires, closing, next */
     } else if (!v->paused && !restarted) {
         double t0 = app->level_t;
         app->level_t += dt;

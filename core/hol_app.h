@@ -145,6 +145,40 @@ enum hol_app_screen {
     HOL_APP_SCREEN_CLOSING = 2       /* after the last level: confirm ends */
 };
 
+/* Questionnaires (issue 26 item 7; docs/research.md "Questionnaires"):
+ * items (`question` level lines, or the presets ssq and tlx: core/hol_ask.h)
+ * asked after the level's end screen, one screen an item, answered with
+ * left/right and confirm. */
+#define HOL_APP_MAX_QUESTIONS 40
+#define HOL_APP_MAX_ASKS 4
+#define HOL_APP_ID_MAX 32        /* an item's or questionnaire's ID, with the NUL */
+#define HOL_APP_QTEXT_MAX 96     /* an item's text, with the NUL */
+#define HOL_APP_LABEL_MAX 24     /* an anchor or a choice, with the NUL */
+#define HOL_APP_MAX_CHOICES 6
+#define HOL_APP_MAX_SCALE 21     /* a likert scale's marks at most */
+
+enum hol_app_question_kind { HOL_APP_LIKERT = 0, HOL_APP_CHOICE = 1 };
+enum hol_app_ask_when { HOL_APP_AFTER_LEVEL = 0, HOL_APP_AFTER_CONDITION = 1,
+                        HOL_APP_AFTER_STUDY = 2 };
+
+typedef struct hol_app_question {
+    char id[HOL_APP_ID_MAX];
+    int kind;                         /* hol_app_question_kind */
+    int lo, hi, step;                 /* likert: lo, lo+step, ..., hi */
+    char text[HOL_APP_QTEXT_MAX];
+    char low[HOL_APP_LABEL_MAX], high[HOL_APP_LABEL_MAX]; /* likert anchors */
+    int nchoices;                     /* choice: 2..HOL_APP_MAX_CHOICES */
+    char choices[HOL_APP_MAX_CHOICES][HOL_APP_LABEL_MAX];
+} hol_app_question;
+
+/* A questionnaire to ask (level line `ask NAME WHEN [ID...]`): its items
+ * are questions[first .. first + n - 1]. */
+typedef struct hol_app_ask {
+    char name[HOL_APP_ID_MAX];
+    int when;                         /* hol_app_ask_when (for the logs) */
+    int first, n;
+} hol_app_ask;
+
 /* One level as the app plays it. */
 typedef struct hol_app_level {
     int mode;                 /* hol_app_mode */
@@ -193,6 +227,12 @@ typedef struct hol_app_level {
      * (events.next_level). A study puts them there (core/hol_study.h). */
     char instructions[HOL_APP_SCREEN_TEXT];
     char closing[HOL_APP_SCREEN_TEXT];
+    /* Questionnaires asked after the end screen's confirm, in order (then
+     * the closing screen, then the next level): asks[k]'s items. */
+    int nquestions;
+    hol_app_question questions[HOL_APP_MAX_QUESTIONS];
+    int nasks;
+    hol_app_ask asks[HOL_APP_MAX_ASKS];
 } hol_app_level;
 
 typedef struct hol_app_desc {
@@ -218,6 +258,9 @@ typedef enum hol_app_state {
                                  head: the controller's ray, see
                                  hol_app_point) and confirms; then DONE.
                                  The level clock is stopped, no walking. */
+    HOL_APP_ASK = 6,          /* a questionnaire's item (hud.ask_*): left
+                                 and right choose, confirm answers
+                                 (events.answered), quit quits */
     HOL_APP_SCREEN = 5        /* a screen of text (hud.screen: the level's
                                  instructions before it begins, the closing
                                  screen after the last): its lines are
@@ -252,6 +295,10 @@ typedef struct hol_app_hud {
     double elapsed_s;                 /* level clock */
     int screen;                       /* hol_app_screen shown (state
                                          HOL_APP_SCREEN), else 0 */
+    int ask_item, ask_items;          /* state HOL_APP_ASK: the item (0-based)
+                                         of the questionnaire and its count */
+    int ask_value;                    /* the value chosen now (likert: the
+                                         number; choice: its index) */
     /* the text as drawn, one line each: the feedback if any, the
      * objective (or status), "STEPS n", "TIME m:ss OF m:ss" when the level
      * has a time limit; with debug on also "TILE address", "CELL c,r NORTH
@@ -370,6 +417,18 @@ typedef struct hol_app_point {
     double error_true, error_flat;
 } hol_app_point;
 
+/* A questionnaire item's answer. */
+typedef struct hol_app_answer {
+    char questionnaire[HOL_APP_ID_MAX];
+    int when;                         /* hol_app_ask_when */
+    char item[HOL_APP_ID_MAX];
+    int kind;                         /* hol_app_question_kind */
+    int value;                        /* likert: the number chosen */
+    char choice[HOL_APP_LABEL_MAX];   /* choice: its text */
+    double time_s;                    /* seconds from the item's screen to
+                                         its confirm */
+} hol_app_answer;
+
 typedef struct hol_app_events {
     int nsteps;
     hol_app_step_event steps[HOL_APP_MAX_STEP_EVENTS];
@@ -391,6 +450,8 @@ typedef struct hol_app_events {
     int pointed;           /* the level's pointing question was answered
                               in this step (point) */
     hol_app_point point;
+    int answered;          /* a questionnaire's item was answered (answer) */
+    hol_app_answer answer;
 } hol_app_events;
 
 typedef struct hol_app hol_app;

@@ -79,6 +79,12 @@ struct hol_app {
     /* screens (hol_app_level.instructions, .closing) */
     int screen;              /* hol_app_screen up (state HOL_APP_SCREEN) */
     int place_panel;         /* a screen came up: the panel goes ahead now */
+    /* questionnaires (hol_app_level.asks) */
+    int ask_k, ask_i;        /* the ask and its item on screen (state ASK) */
+    int ask_mark;            /* the mark chosen (0 .. marks - 1) */
+    int ask_axis;            /* the left/right axis's side at the last record */
+    double ask_t0;           /* input time the item came up */
+    double ask_ref_yaw;      /* the look then (a controller points from it) */
     uint8_t walk[HOL_NAV_WALK_MAX]; /* replan scratch */
     int nwalk;
 };
@@ -106,6 +112,13 @@ void hol__point_sync(hol_app *app);
 int hol__point_can_ask(const hol_app *app);
 double hol__pointed_yaw(const hol_app *app, const hol_input *in);
 void hol__point_answer(hol_app *app, const hol_input *in);
+
+/* hol_app_ask.c: after the end screen's confirm (from_ask 0) or the last
+ * item (1): the questionnaires, the closing screen or the next level; a
+ * frame of an item; its lines on the HUD. */
+void hol__after_end(hol_app *app, const hol_input *in, int from_ask);
+void hol__ask_frame(hol_app *app, const hol_input *in, uint32_t pressed);
+void hol__ask_lines(const hol_app *app, hol_app_hud *h);
 
 /* hol_app_view.c */
 void hol__fill_view(hol_app *app, const hol_input *in);

@@ -200,6 +200,9 @@ static void hol__fill_status(hol_app *app, const hol_input *in, hol_app_hud *h)
         hol__prompt(h, dev, ask, 3);
     } else if (v->state == HOL_APP_SCREEN) {
         hol__screen_status(app, h);
+    } else if (v->state == HOL_APP_ASK) {
+        const hol__ask ask[2] = {{HOL_BTN_CONFIRM, 0, "answer"}, {HOL_BTN_QUIT, 0, "quit"}};
+        hol__prompt(h, dev, ask, 2);
     } else if (v->state == HOL_APP_POINT) {
         hol__point_status(app, in, h);
     } else if (v->state == HOL_APP_DONE) {
@@ -248,6 +251,10 @@ static void hol__fill_lines(const hol_app *app, hol_app_hud *h)
     const hol_app_view *v = &app->view;
     long secs = (long)app->level_t, lim = (long)app->level.time_limit_s;
     h->nlines = 0;
+    if (v->state == HOL_APP_ASK) {
+        hol__ask_lines(app, h);
+        return;
+    }
     if (v->state == HOL_APP_SCREEN) { /* the screen's text, whole */
         const char *text = app->screen == HOL_APP_SCREEN_CLOSING ? app->level.closing
                                                                  : app->level.instructions;
@@ -289,6 +296,8 @@ static void hol__fill_hud(hol_app *app, const hol_input *in)
     h->timed_out = app->timed_out;
     h->debug = app->debug;
     h->screen = app->view.state == HOL_APP_SCREEN ? app->screen : 0;
+    if (app->view.state != HOL_APP_ASK)
+        h->ask_item = h->ask_items = h->ask_value = 0;
     h->device = app->device;
     for (int k = 0; k < h->keys_total; k++)
         h->keys_held += (int)(app->keys_held >> k & 1);

@@ -2,6 +2,8 @@
  * objectives drawn by distance, and named levels (see hol_level.h). */
 #include "hol_level.h"
 
+#include "hol_ask.h"
+
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
@@ -26,6 +28,8 @@ typedef struct hol__lp {
     int geo_only; /* the first pass: only the geometry lines */
     long point_line;   /* the `point` line (0: none) */
     const char *raw;   /* the line being read, comment removed, unsplit */
+    int ndefs;         /* `question` lines read (asks copy theirs) */
+    hol_app_question defs[HOL_APP_MAX_QUESTIONS];
     long key_line[24]; /* where each key of hol__keys was given (0: not yet) */
     int repeated;      /* a key given twice: reported in either pass */
     hol_level_err *loud;
@@ -420,6 +424,102 @@ static hol_err hol__key_text(hol__lp *p, char **f, int nf)
     return HOL_OK;
 }
 
+/* question ID likert|choice ... (core/hol_ask.h): an item `ask` lines
+ * may name (after it). */
+static hol_err hol__key_question(hol__lp *p, char **f, int nf)
+{
+    (void)nf;
+    if (p->ndefs >= HOL_APP_MAX_QUESTIONS)
+        return hol__lfail(p, HOL_ENOMEM, p->line, "more than %d questions",
+                          HOL_APP_MAX_QUESTIONS);
+    char msg[160];
+    hol_app_question *q = &p->defs[p->ndefs];
+    hol_err e = hol_ask_parse_question(p->raw, strlen(p->raw), q, msg, sizeof msg);
+    if (e)
+        return hol__lfail(p, e, p->line, "%s", msg);
+    for (int i = 0; i < p->ndefs; i++)
+        if (!strcmp(p->defs[i].id, q->id))
+            return hol__lfail(p, HOL_EARG, p->line, "question %s is given twice", q->id);
+    p->ndefs++;
+    (void)f;
+    return HOL_OK;
+}
+
+/* An ask's items: the preset's (NAME ssq or tlx, no IDs) or the questions
+ * named (given before), copied after the level's questions. */
+static hol_err hol__ask_items(hol__lp *p, hol_app_ask *a, const char *ids)
+{
+    hol_app_level *L = &p->L;
+    a->first = L->nquestions;
+    int room = HOL_APP_MAX_QUESTIONS - L->nquestions;
+    if (!*ids) {
+        int n = hol_ask_preset(a->name, strlen(a->name), L->questions + L->nquestions, room);
+        if (!n)
+            return hol__lfail(p, HOL_EPARSE, p->line,
+                              "ask %s names no items (IDs of questions; ssq and tlx need none)",
+                              a->name);
+        if (n > room)
+            return hol__lfail(p, HOL_ENOMEM, p->line, "more than %d items to ask",
+                              HOL_APP_MAX_QUESTIONS);
+        a->n = n;
+        L->nquestions += n;
+        return HOL_OK;
+    }
+    for (const char *s = ids; *s;) {
+        size_t n = strcspn(s, " \t");
+        int k = 0;
+        while (k < p->ndefs && !(strlen(p->defs[k].id) == n && !memcmp(p->defs[k].id, s, n)))
+            k++;
+        if (k == p->ndefs)
+            return hol__lfail(p, HOL_EARG, p->line, "ask %s: no question '%.*s' before it",
+                              a->name, (int)(n < 32 ? n : 32), s);
+        if (L->nquestions >= HOL_APP_MAX_QUESTIONS)
+            return hol__lfail(p, HOL_ENOMEM, p->line, "more than %d items to ask",
+                              HOL_APP_MAX_QUESTIONS);
+        L->questions[L->nquestions++] = p->defs[k];
+        a->n++;
+        s += n;
+        s += strspn(s, " \t");
+    }
+    return HOL_OK;
+}
+
+/* ask NAME level|condition|study [ID...]: a questionnaire after the end
+ * screen (in the order of the lines). */
+static hol_err hol__key_ask(hol__lp *p, char **f, int nf)
+{
+    (void)nf;
+    hol_app_level *L = &p->L;
+    if (L->nasks >= HOL_APP_MAX_ASKS)
+        return hol__lfail(p, HOL_ENOMEM, p->line, "more than %d ask lines", HOL_APP_MAX_ASKS);
+    hol_app_ask *a = &L->asks[L->nasks];
+    memset(a, 0, sizeof *a);
+    if (!hol_ask_id_ok(f[1], strlen(f[1])))
+        return hol__lfail(p, HOL_EPARSE, p->line,
+                          "ask: '%.31s' is not 1..31 letters, digits, '_', '-', '.'", f[1]);
+    snprintf(a->name, sizeof a->name, "%s", f[1]);
+    a->when = hol_ask_when(f[2], strlen(f[2]));
+    if (a->when < 0)
+        return hol__lfail(p, HOL_EPARSE, p->line, "ask %s: '%.20s' is not level, condition or "
+                          "study", a->name, f[2]);
+    /* the IDs: the raw line after the key, NAME and WHEN */
+    const char *r = p->raw;
+    for (int k = 0; k < 3; k++) {
+        r += strspn(r, " \t");
+        r += strcspn(r, " \t");
+    }
+    r += strspn(r, " \t");
+    char ids[HOL_LEVEL_LINE_MAX + 1];
+    snprintf(ids, sizeof ids, "%s", r);
+    size_t n = strlen(ids);
+    while (n && (ids[n - 1] == ' ' || ids[n - 1] == '\t'))
+        ids[--n] = 0;
+    hol_err e = hol__ask_items(p, a, ids);
+    if (!e)
+        L->nasks++;
+    return e;
+}
+
 /* tiling 4 Q (SPEC 7) */
 static hol_err hol__key_tiling(hol__lp *p, char **f, int nf)
 {
@@ -487,6 +587,8 @@ static const struct {
     {"point", 2, 2, hol__key_point},
     {"instructions", 2, HOL__FIELDS + 1, hol__key_text},
     {"closing", 2, HOL__FIELDS + 1, hol__key_text},
+    {"question", 3, HOL__FIELDS + 1, hol__key_question},
+    {"ask", 3, HOL__FIELDS + 1, hol__key_ask},
     {"tiling", 3, 3, hol__key_tiling},
     {"room", 3, 3, hol__key_room},
     {"cell", 2, 2, hol__key_cell},
@@ -554,7 +656,8 @@ static hol_err hol__line(hol__lp *p, const char *s, size_t n)
             nf <= hol__keys[k].max) {
             /* a key given twice is refused, naming both lines (no silent
              * last-wins; `place` is the one key a level repeats) */
-            if (p->key_line[k] && strcmp(f[0], "place")) {
+            if (p->key_line[k] && strcmp(f[0], "place") && strcmp(f[0], "question") &&
+                strcmp(f[0], "ask")) {
                 hol_level_err *quiet = p->err;
                 p->err = p->loud;
                 p->repeated = 1;

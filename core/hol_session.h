@@ -65,7 +65,8 @@
  *   row, appended durably as it happens, for each change of the minimap's
  *   place during play, `minimap`, and each refused one, `minimap-fixed`;
  *   the header when the file is new; a folder holding it holds logs);
- *   points.csv HOL_SESSION_POINT_COLUMNS (likewise); the README ("Research logs") documents
+ *   points.csv HOL_SESSION_POINT_COLUMNS and answers.csv
+ *   HOL_SESSION_ANSWER_COLUMNS (likewise); the README ("Research logs") documents
  *   each. Head rows fall on exact 10 Hz level times, interpolated between
  *   the frames around them (position linear, yaw the short way round;
  *   cell and tile from the nearer frame), frame_t the later frame's time.
@@ -120,6 +121,14 @@
  * decimal (true, flat empty when undefined); error_true, error_flat:
  * pointed minus them wrapped to (-180, 180], one decimal, empty with
  * theirs; time: seconds taken to answer. */
+/* answers.csv: a row per questionnaire item answered (hol_app_answer),
+ * appended durably as it happens, the header when the file is new.
+ * attempt: the last attempt before the questionnaire; questionnaire its
+ * name, when level|condition|study, item the item's ID, kind
+ * likert|choice, value the number (likert) or the choice's text (CSV
+ * quoted when it needs it), time the seconds taken. */
+#define HOL_SESSION_ANSWER_COLUMNS \
+    "session,participant,attempt,questionnaire,when,item,kind,value,time"
 #define HOL_SESSION_POINT_COLUMNS \
     "session,participant,attempt,level,t,target,pointed,true,flat,error_true,error_flat,time"
 

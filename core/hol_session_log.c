@@ -419,8 +419,30 @@ static void hol__point_row(hol_session *s, const hol_app_point *p)
         hol__put_file(s, "points.csv", 1, row, (size_t)n);
 }
 
+/* A row of answers.csv (see hol_session.h). */
+static void hol__answer_row(hol_session *s, const hol_app_answer *a)
+{
+    hol__header_once(s, &s->answers_known, "answers.csv", HOL_SESSION_ANSWER_COLUMNS "\n");
+    if (s->failed)
+        return;
+    char value[HOL__CSV_NAME], row[HOL__CSV_NAME + 512];
+    if (a->kind == HOL_APP_CHOICE)
+        hol__csv_name(a->choice, value);
+    else
+        snprintf(value, sizeof value, "%d", a->value);
+    static const char *const whens[3] = {"level", "condition", "study"};
+    int n = snprintf(row, sizeof row, "%s,%s,%d,%s,%s,%s,%s,%s,%.4f\n", s->meta.session,
+                     s->meta.participant, s->attempt, a->questionnaire,
+                     whens[a->when >= 0 && a->when < 3 ? a->when : 0], a->item,
+                     a->kind == HOL_APP_CHOICE ? "choice" : "likert", value, a->time_s);
+    if (n > 0 && (size_t)n < sizeof row)
+        hol__put_file(s, "answers.csv", 1, row, (size_t)n);
+}
+
 void hol__log_frame(hol_session *s, const hol_app_events *ev, const hol_app_view *v)
 {
+    if (ev->answered)
+        hol__answer_row(s, &ev->answer);
     if (ev->pointed)
         hol__point_row(s, &ev->point);
     /* a restart ends the old attempt before the new one's rows; a
