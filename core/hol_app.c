@@ -555,6 +555,20 @@ static void hol__screen_frame(hol_app *app, const hol_input *in, uint32_t presse
     hol__fill_view(app, in);
 }
 
+/* A frame of a questionnaire's item (state HOL_APP_ASK): quit quits, else
+ * hol_app_ask.c chooses and answers. */
+static void hol__ask_step(hol_app *app, const hol_input *in, uint32_t pressed)
+{
+    hol_app_view *v = &app->view;
+    app->device = in->device;
+    v->paused = !(in->flags & HOL_INPUT_FOCUSED) || (in->flags & HOL_INPUT_DEVICE_LOST);
+    if (pressed & HOL_BTN_QUIT)
+        v->state = HOL_APP_QUIT;
+    else
+        hol__ask_frame(app, in, pressed);
+    hol__fill_view(app, in);
+}
+
 /* The level is over (done or time up): its pointing question, if it has
  * one, before the end screen. */
 static void hol__level_over(hol_app *app, const hol_input *in)
@@ -615,13 +629,7 @@ hol_err hol_app_step(hol_app *app, const hol_input *in)
         return HOL_OK;
     }
     if (v->state == HOL_APP_ASK) {
-        app->device = in->device;
-        v->paused = !(in->flags & HOL_INPUT_FOCUSED) || (in->flags & HOL_INPUT_DEVICE_LOST);
-        if (pressed & HOL_BTN_QUIT)
-            v->state = HOL_APP_QUIT;
-        else
-            hol__ask_frame(app, in, pressed);
-        hol__fill_view(app, in);
+        hol__ask_step(app, in, pressed);
         return HOL_OK;
     }
     if (app->pending_start) {
