@@ -2,6 +2,8 @@
  * levels (see hol_study.h). */
 #include "hol_study.h"
 
+#include "hol_ask.h"
+
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
@@ -246,6 +248,100 @@ static hol_err hol__screen(hol__sp *p, int closing, const char *b, const char *e
     return HOL_OK;
 }
 
+/* question ID ...: before the first condition, checked as a level line. */
+static hol_err hol__question(hol__sp *p, const char *b, const char *end)
+{
+    hol_study *s = p->s;
+    while (end > b && hol__blank(end[-1]))
+        end--;
+    while (b < end && hol__blank(*b))
+        b++;
+    if (p->cur >= 0)
+        return hol__fail(p->err, HOL_EARG, p->line, 0, "'question' comes before the first condition");
+    if (s->nquestions >= HOL_STUDY_MAX_QUESTIONS)
+        return hol__fail(p->err, HOL_ENOMEM, p->line, 0, "more than %d questions",
+                         HOL_STUDY_MAX_QUESTIONS);
+    hol_app_question q;
+    char msg[160];
+    hol_err e = hol_ask_parse_question(b, (size_t)(end - b), &q, msg, sizeof msg);
+    if (e)
+        return hol__fail(p->err, e, p->line, 0, "%s", msg);
+    for (int i = 0; i < s->nquestions; i++)
+        if (!strcmp(s->question_ids[i], q.id))
+            return hol__fail(p->err, HOL_EARG, p->line, s->questions[i].line,
+                             "question %s is given twice", q.id);
+    snprintf(s->question_ids[s->nquestions], HOL_APP_ID_MAX, "%s", q.id);
+    s->questions[s->nquestions++] = (hol_study_span){(uint16_t)(b - s->text),
+                                                     (uint16_t)(end - b), p->line};
+    return HOL_OK;
+}
+
+/* questionnaire NAME ITEM... | questionnaire NAME after WHEN. */
+static hol_err hol__questionnaire(hol__sp *p, const char *rest, const char *end)
+{
+    hol_study *s = p->s;
+    const char *w, *w2, *w3, *more;
+    size_t n = hol__field(&rest, end, &w), n2 = hol__field(&rest, end, &w2);
+    const char *items = rest;
+    size_t n3 = hol__field(&rest, end, &w3), n4 = hol__field(&rest, end, &more);
+    if (p->cur >= 0)
+        return hol__fail(p->err, HOL_EARG, p->line, 0,
+                         "'questionnaire' comes before the first condition");
+    if (!hol_ask_id_ok(w, n) || n2 == 0)
+        return hol__fail(p->err, HOL_EPARSE, p->line, 0,
+                         "questionnaire needs NAME ITEM... or NAME after level|condition|study "
+                         "(NAME 1..31 letters, digits, '_', '-', '.')");
+    char name[HOL_APP_ID_MAX];
+    memcpy(name, w, n);
+    name[n] = 0;
+    if (hol__is(w2, n2, "after") && n3 && !n4) {
+        int when = hol_ask_when(w3, n3);
+        if (when < 0)
+            return hol__fail(p->err, HOL_EPARSE, p->line, 0,
+                             "questionnaire %s after '%.*s': level, condition or study", name,
+                             (int)(n3 < 20 ? n3 : 20), w3);
+        if (s->nasks >= HOL_APP_MAX_ASKS)
+            return hol__fail(p->err, HOL_ENOMEM, p->line, 0, "more than %d questionnaires asked",
+                             HOL_APP_MAX_ASKS);
+        hol_study_ask *a = &s->asks[s->nasks++];
+        snprintf(a->name, sizeof a->name, "%s", name);
+        a->when = when;
+        a->line = p->line;
+        return HOL_OK;
+    }
+    if (hol_ask_preset(w, n, NULL, 0))
+        return hol__fail(p->err, HOL_EARG, p->line, 0, "questionnaire %s is a preset: it has its "
+                         "items", name);
+    for (int i = 0; i < s->nquestionnaires; i++)
+        if (!strcmp(s->questionnaires[i].name, name))
+            return hol__fail(p->err, HOL_EARG, p->line, 0, "questionnaire %s is given twice",
+                             name);
+    if (s->nquestionnaires >= HOL_STUDY_MAX_QUESTIONNAIRES)
+        return hol__fail(p->err, HOL_ENOMEM, p->line, 0, "more than %d questionnaires",
+                         HOL_STUDY_MAX_QUESTIONNAIRES);
+    /* every item a question given before */
+    const char *it = w2;
+    while (end > it && hol__blank(end[-1]))
+        end--;
+    for (const char *q = it; q < end;) {
+        const char *id;
+        size_t k = hol__field(&q, end, &id), j = 0;
+        if (!k)
+            break;
+        while (j < (size_t)s->nquestions && !hol__is(id, k, s->question_ids[j]))
+            j++;
+        if (j == (size_t)s->nquestions)
+            return hol__fail(p->err, HOL_EARG, p->line, 0,
+                             "questionnaire %s: no question '%.*s' before it", name,
+                             (int)(k < 32 ? k : 32), id);
+    }
+    (void)items;
+    hol_study_questionnaire *d = &s->questionnaires[s->nquestionnaires++];
+    snprintf(d->name, sizeof d->name, "%s", name);
+    d->items = (hol_study_span){(uint16_t)(it - s->text), (uint16_t)(end - it), p->line};
+    return HOL_OK;
+}
+
 /* One line [b, end) (no LF, CR dropped, no comment). */
 static hol_err hol__line(hol__sp *p, const char *b, const char *end)
 {
@@ -257,6 +353,10 @@ static hol_err hol__line(hol__sp *p, const char *b, const char *end)
         return hol__add_set(p, rest, end);
     if (hol__is(key, kn, "instructions") || hol__is(key, kn, "closing"))
         return hol__screen(p, hol__is(key, kn, "closing"), b, end);
+    if (hol__is(key, kn, "question"))
+        return hol__question(p, b, end);
+    if (hol__is(key, kn, "questionnaire"))
+        return hol__questionnaire(p, rest, end);
     static const char *const keys[6] = {"study", "counterbalance", "practice", "condition",
                                         "level", "allow"};
     int k = 0;
@@ -265,7 +365,7 @@ static hol_err hol__line(hol__sp *p, const char *b, const char *end)
     if (k == 6)
         return hol__fail(p->err, HOL_EPARSE, p->line, 0,
                          "unknown key '%.*s' (study, counterbalance, practice, condition, level, "
-                         "set, allow, instructions, closing)", (int)(kn < 20 ? kn : 20), key);
+                         "set, allow, instructions, closing, question, questionnaire)", (int)(kn < 20 ? kn : 20), key);
     long n = hol__one(p, keys[k], rest, end, &w);
     if (n < 0)
         return p->err ? p->err->code : HOL_EPARSE;
@@ -292,6 +392,16 @@ static hol_err hol__finish(hol__sp *p)
         return hol__fail(p->err, HOL_EARG, 0, 0, "no 'study NAME' line");
     if (s->nconditions == 0)
         return hol__fail(p->err, HOL_EARG, 0, 0, "no 'condition NAME' line");
+    for (int k = 0; k < s->nasks; k++) {
+        const char *nm = s->asks[k].name;
+        int known = hol_ask_preset(nm, strlen(nm), NULL, 0) > 0;
+        for (int i = 0; i < s->nquestionnaires && !known; i++)
+            known = !strcmp(s->questionnaires[i].name, nm);
+        if (!known)
+            return hol__fail(p->err, HOL_EARG, s->asks[k].line, 0,
+                             "questionnaire %s is neither given (questionnaire %s ITEM...) nor "
+                             "ssq or tlx", nm, nm);
+    }
     /* a condition without a level file plays one level of its set lines:
      * the levels in all, counted in file order, must fit */
     int total = s->nlevels;
@@ -567,9 +677,70 @@ static int hol__screen_key(const hol_study *s, int c, int i, int position, const
            (kn == 7 && !memcmp(k, "closing", 7) && hol__closing_of(s, c, i, position));
 }
 
+/* Is the study's ask k due after level i (condition c, position)? */
+static int hol__ask_due(const hol_study *s, int k, int c, int i, int position)
+{
+    if (c < 0)
+        return 0; /* practice levels ask nothing */
+    const hol_study_condition *cd = &s->conditions[c];
+    int last_of_cond = i == cd->first_level + cd->nlevels - 1;
+    switch (s->asks[k].when) {
+    case HOL_APP_AFTER_LEVEL: return 1;
+    case HOL_APP_AFTER_CONDITION: return last_of_cond;
+    default: return last_of_cond && position == s->nconditions;
+    }
+}
+
+/* The question line of ID [id, id+n) once into the level. 1 when it does
+ * not fit. */
+static int hol__put_question(const hol_study *s, const char *id, size_t n, hol__compose *cp,
+                             unsigned char *put)
+{
+    for (int j = 0; j < s->nquestions; j++)
+        if (hol__is(id, n, s->question_ids[j]) && !put[j]) {
+            put[j] = 1;
+            return hol__put_line(cp, s->text + s->questions[j].off, s->questions[j].len,
+                                 -s->questions[j].line);
+        }
+    return 0;
+}
+
+/* The questionnaires due after level i: their questions, then `ask NAME
+ * WHEN ID...`, by when (level, condition, study), in the file's order. */
+static int hol__put_asks(const hol_study *s, int c, int i, int position, hol__compose *cp)
+{
+    unsigned char put[HOL_STUDY_MAX_QUESTIONS] = {0};
+    for (int when = 0; when < 3; when++)
+        for (int k = 0; k < s->nasks; k++) {
+            const hol_study_ask *a = &s->asks[k];
+            if (a->when != when || !hol__ask_due(s, k, c, i, position))
+                continue;
+            const hol_study_questionnaire *d = NULL;
+            for (int j = 0; j < s->nquestionnaires; j++)
+                if (!strcmp(s->questionnaires[j].name, a->name))
+                    d = &s->questionnaires[j];
+            char line[HOL_STUDY_LINE_MAX + 64];
+            int n = snprintf(line, sizeof line, "ask %s %s", a->name, hol_ask_when_name(when));
+            if (d) {
+                const char *q = s->text + d->items.off, *end = q + d->items.len, *id;
+                size_t kn;
+                while ((kn = hol__field(&q, end, &id)) > 0)
+                    if (hol__put_question(s, id, kn, cp, put))
+                        return 1;
+                n += snprintf(line + n, sizeof line - (size_t)n, " %.*s", (int)d->items.len,
+                              s->text + d->items.off);
+            }
+            if (n < 0 || (size_t)n >= sizeof line || hol__put_line(cp, line, (size_t)n, -a->line))
+                return 1;
+        }
+    return 0;
+}
+
 /* The screen lines of level i after its text. 1 when they do not fit. */
 static int hol__put_screens(const hol_study *s, int c, int i, int position, hol__compose *cp)
 {
+    if (hol__put_asks(s, c, i, position, cp))
+        return 1;
     const hol_study_span *a = hol__instr_of(s, c, i), *b = hol__closing_of(s, c, i, position);
     if (a && hol__put_line(cp, s->text + a->off, a->len, -a->line))
         return 1;

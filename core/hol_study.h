@@ -31,6 +31,19 @@
  *                             line, printable ASCII, at most 6 lines of 46
  *                             characters when wrapped; checked as a level
  *                             line)
+ *     question ID ...         before the first condition: a questionnaire
+ *                             item (core/hol_ask.h: likert or choice)
+ *     questionnaire NAME ITEM...  before the first condition: a
+ *                             questionnaire of those items (question IDs)
+ *     questionnaire NAME after level|condition|study  before the first
+ *                             condition: asked after every level of the
+ *                             conditions, after each condition's last
+ *                             level, or after the participant's last
+ *                             level (NAME: one defined, or the presets
+ *                             ssq and tlx; at most HOL_APP_MAX_ASKS);
+ *                             the level carries it as `question` and
+ *                             `ask NAME WHEN ID...` level lines (after the
+ *                             set lines), so logs and recordings hold it
  *     closing TEXT            once, before the first condition: the closing
  *                             screen after the participant's last level
  *                             (default: HOL_SESSION_CLOSING, which the
@@ -121,6 +134,21 @@ typedef struct hol_study_condition {
     hol_study_span instructions; /* its `instructions TEXT` line (len 0: none) */
 } hol_study_condition;
 
+/* Questionnaires of a study (docs/research.md "Questionnaires"). */
+#define HOL_STUDY_MAX_QUESTIONS HOL_APP_MAX_QUESTIONS
+#define HOL_STUDY_MAX_QUESTIONNAIRES 8
+
+typedef struct hol_study_questionnaire {
+    char name[HOL_APP_ID_MAX];
+    hol_study_span items;     /* its item IDs, blank separated */
+} hol_study_questionnaire;
+
+typedef struct hol_study_ask {
+    char name[HOL_APP_ID_MAX]; /* a questionnaire's, or ssq, tlx */
+    int when;                  /* hol_app_ask_when */
+    long line;
+} hol_study_ask;
+
 typedef struct hol_study {
     char name[HOL_REC_ID_MAX];
     hol_study_rule rule;
@@ -134,6 +162,13 @@ typedef struct hol_study {
     hol_study_span practice_instructions;   /* `instructions TEXT` before the
                                                first condition (len 0: none) */
     hol_study_span closing;                 /* `closing TEXT` (len 0: none) */
+    int nquestions;                         /* `question` lines */
+    hol_study_span questions[HOL_STUDY_MAX_QUESTIONS];
+    char question_ids[HOL_STUDY_MAX_QUESTIONS][HOL_APP_ID_MAX];
+    int nquestionnaires;                    /* `questionnaire NAME ITEM...` */
+    hol_study_questionnaire questionnaires[HOL_STUDY_MAX_QUESTIONNAIRES];
+    int nasks;                              /* `questionnaire NAME after WHEN` */
+    hol_study_ask asks[HOL_APP_MAX_ASKS];
     int nglobal;                            /* sets[0..nglobal-1]: the study's */
     int nsets;
     hol_study_span sets[HOL_STUDY_MAX_SETS]; /* "KEY VALUE..." */
