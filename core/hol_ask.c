@@ -198,7 +198,8 @@ hol_err hol_ask_parse_question(const char *line, size_t len, hol_app_question *q
         return HOL__BAD(HOL_EPARSE, "question %s: '%.*s' is not likert or choice", q->id,
                         (int)(n[2] < 20 ? n[2] : 20), w[2]);
     q->kind = HOL_APP_CHOICE;
-    if (nf < 6 || hol__text(kind[3], w[3], n[3], q->text, sizeof q->text))
+    if (nf < 6 || nf - 4 > HOL_APP_MAX_CHOICES ||
+        hol__text(kind[3], w[3], n[3], q->text, sizeof q->text))
         return HOL__BAD(HOL_EPARSE, "question %s choice needs \"TEXT\" and 2..%d \"CHOICE\"s "
                                     "(TEXT 1..95 characters, a choice 1..23)",
                         q->id, HOL_APP_MAX_CHOICES);
