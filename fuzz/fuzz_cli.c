@@ -110,6 +110,26 @@ static void check_level(const char *text, size_t len)
         CHECK(!L.point || L.mode != HOL_APP_TUTORIAL);
         CHECK(L.point != HOL_APP_POINT_OBJECTIVE || L.mode == HOL_APP_FLAG ||
               L.mode == HOL_APP_KEYS);
+        /* questionnaires: asks within the items, items well formed; screens
+         * of printable text */
+        CHECK(L.nasks >= 0 && L.nasks <= HOL_APP_MAX_ASKS);
+        CHECK(L.nquestions >= 0 && L.nquestions <= HOL_APP_MAX_QUESTIONS);
+        for (int k = 0; k < L.nasks; k++)
+            CHECK(L.asks[k].n > 0 && L.asks[k].first >= 0 &&
+                  L.asks[k].first + L.asks[k].n <= L.nquestions && L.asks[k].when >= 0 &&
+                  L.asks[k].when <= 2);
+        for (int k = 0; k < L.nquestions; k++) {
+            const hol_app_question *q = &L.questions[k];
+            CHECK(q->id[0] && q->text[0]);
+            if (q->kind == HOL_APP_LIKERT)
+                CHECK(q->lo < q->hi && q->hi <= 100 && q->step >= 1 &&
+                      (q->hi - q->lo) / q->step + 1 <= HOL_APP_MAX_SCALE);
+            else
+                CHECK(q->kind == HOL_APP_CHOICE && q->nchoices >= 2 &&
+                      q->nchoices <= HOL_APP_MAX_CHOICES);
+        }
+        CHECK(hol_app_wrap(L.instructions, HOL_APP_SCREEN_COLS, NULL, 0) <= HOL_APP_SCREEN_LINES);
+        CHECK(hol_app_wrap(L.closing, HOL_APP_SCREEN_COLS, NULL, 0) <= HOL_APP_SCREEN_LINES);
         if (L.cell_m > 0) { /* the cell size prints back to itself */
             char c[16];
             double again_m = 0;
