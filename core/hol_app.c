@@ -344,6 +344,7 @@ static hol_err hol__begin(hol_app *app)
     app->nmarks = 0;
     if (L->mode == HOL_APP_TUTORIAL)
         hol__stage(app, hol__next_stage(app, 0), &r);
+    hol__point_begin(app);
     app->timed_out = 0;
     app->steps = 0;
     app->level_t = 0;
@@ -395,10 +396,19 @@ hol_err hol_app_start_level(hol_app *app, const hol_app_level *level)
     app->level = *level;
     app->have_level = 1;
     app->view.map.place = level->minimap;
+    app->screen = HOL_APP_SCREEN_NONE;
     err = hol__begin(app);
-    if (err)
+    if (err) {
         app->have_level = 0;
-    return err;
+        return err;
+    }
+    if (level->instructions[0]) { /* the level begins after them */
+        app->screen = HOL_APP_SCREEN_INSTRUCTIONS;
+        app->view.state = HOL_APP_SCREEN;
+        app->place_panel = 1;
+        hol__fill_view(app, NULL);
+    }
+    return HOL_OK;
 }
 
 /* ---- the step ------------------------------------------------------------ */
@@ -413,6 +423,7 @@ static hol_err hol__room_steps(hol_app *app, const hol_motion_steps *st, double 
         if (app->done)
             continue;
         app->steps++;
+        hol__point_step(app, st->dir[i]);
         int stage = app->stage;
         hol__enter(app, &st->after[i]);
         int exact;
@@ -447,6 +458,7 @@ static hol_err hol__replace(hol_app *app, const hol_input *in)
     double yaw_was = app->mo.yaw_deg;
     hol__yaw_pitch_from_quat(in->head.quat, &app->mo.yaw_deg, &app->mo.pitch_deg);
     hol_motion_replace(&app->mo, pos, yaw_was);
+    hol__point_sync(app);
     hol_err err = hol_world_update(app->world, &app->mo.user);
     int exact;
     if (!err && !app->done && (app->optimum >= 0 || app->level.mode == HOL_APP_TUTORIAL))
@@ -467,6 +479,7 @@ static hol_err hol__place_at_start(hol_app *app, const hol_input *in)
     hol__yaw_pitch_from_quat(in->head.quat, &app->mo.yaw_deg, &app->mo.pitch_deg);
     hol_room was = app->mo.user;
     hol_motion_replace(&app->mo, pos, app->mo.yaw_deg);
+    hol__point_sync(app);
     if (was.col == app->mo.user.col && was.row == app->mo.user.row)
         return HOL_OK;
     hol_err err = hol_world_update(app->world, &app->mo.user);
@@ -517,6 +530,81 @@ static hol_err hol__move(hol_app *app, const hol_input *in, double t0, double dt
     return HOL_OK;
 }
 
+/* A frame of a screen of text (state HOL_APP_SCREEN): quit quits, confirm
+ * goes on (the instructions: the level begins at the next frame; the
+ * closing screen: the session ends); nothing else acts. */
+static void hol__screen_frame(hol_app *app, const hol_input *in, uint32_t pressed)
+{
+    hol_app_view *v = &app->view;
+    app->device = in->device;
+    v->paused = !(in->flags & HOL_INPUT_FOCUSED) || (in->flags & HOL_INPUT_DEVICE_LOST);
+    if (pressed & HOL_BTN_DEBUG)
+        app->debug = !app->debug;
+    if (pressed & HOL_BTN_QUIT) {
+        v->state = HOL_APP_QUIT;
+    } else if ((pressed & HOL_BTN_CONFIRM) && !v->paused) {
+        if (app->screen == HOL_APP_SCREEN_CLOSING) {
+            app->ev.next_level = 1;
+        } else {
+            app->screen = HOL_APP_SCREEN_NONE;
+            v->state = HOL_APP_PLAYING; /* pending_start: the next frame */
+        }
+    }
+    if (in->flags & HOL_INPUT_HEAD_VALID) /* the look follows the head */
+        hol__yaw_pitch_from_quat(in->head.quat, &app->mo.yaw_deg, &app->mo.pitch_deg);
+    hol__fill_view(app, in);
+}
+
+/* A frame of a questionnaire's item (state HOL_APP_ASK): quit quits, else
+ * hol_app_ask.c chooses and answers. */
+static void hol__ask_step(hol_app *app, const hol_input *in, uint32_t pressed)
+{
+    hol_app_view *v = &app->view;
+    app->device = in->device;
+    v->paused = !(in->flags & HOL_INPUT_FOCUSED) || (in->flags & HOL_INPUT_DEVICE_LOST);
+    if (pressed & HOL_BTN_QUIT)
+        v->state = HOL_APP_QUIT;
+    else
+        hol__ask_frame(app, in, pressed);
+    hol__fill_view(app, in);
+}
+
+/* The level is over (done or time up): its pointing question, if it has
+ * one, before the end screen. */
+static void hol__level_over(hol_app *app, const hol_input *in)
+{
+    if (hol__point_can_ask(app)) {
+        app->view.state = HOL_APP_POINT;
+        app->asked_s = in->time_s;
+    } else {
+        app->view.state = HOL_APP_DONE;
+    }
+}
+
+/* A frame of the pointing question: the user turns (a tracked head looks,
+ * pancake turns without walking; the level clock stands) and confirms. */
+static hol_err hol__point_frame(hol_app *app, const hol_input *in, uint32_t pressed, double dt)
+{
+    if (app->view.paused)
+        return HOL_OK;
+    if (in->flags & HOL_INPUT_HEAD_VALID) {
+        hol__yaw_pitch_from_quat(in->head.quat, &app->mo.yaw_deg, &app->mo.pitch_deg);
+    } else {
+        hol_input still = *in;
+        still.move[0] = still.move[1] = 0;
+        int nsteps = app->ev.nsteps;
+        hol_err err = hol__move(app, &still, app->level_t, dt);
+        app->ev.nsteps = nsteps; /* standing still: no room step */
+        if (err)
+            return err;
+    }
+    if (pressed & HOL_BTN_CONFIRM) {
+        hol__point_answer(app, in);
+        app->view.state = HOL_APP_DONE;
+    }
+    return HOL_OK;
+}
+
 hol_err hol_app_step(hol_app *app, const hol_input *in)
 {
     if (!in || !hol_input_valid(in) || (app->have_prev && in->time_s < app->prev.time_s))
@@ -536,6 +624,14 @@ hol_err hol_app_step(hol_app *app, const hol_input *in)
     }
     if (v->state == HOL_APP_QUIT)
         return HOL_OK;
+    if (v->state == HOL_APP_SCREEN) {
+        hol__screen_frame(app, in, pressed);
+        return HOL_OK;
+    }
+    if (v->state == HOL_APP_ASK) {
+        hol__ask_step(app, in, pressed);
+        return HOL_OK;
+    }
     if (app->pending_start) {
         /* a level started between frames begins at this frame: the time
          * since the previous frame (another level, another play) is not
@@ -595,9 +691,12 @@ hol_err hol_app_step(hol_app *app, const hol_input *in)
     if (((pressed & HOL_BTN_RECENTRE) || (in->flags & HOL_INPUT_RECENTRED)) &&
         (in->flags & HOL_INPUT_HEAD_VALID) && (err = hol__replace(app, in)))
         return err;
-    if (v->state == HOL_APP_DONE) {
+    if (v->state == HOL_APP_POINT && !restarted) {
+        if ((err = hol__point_frame(app, in, pressed, dt)))
+            return err;
+    } else if (v->state == HOL_APP_DONE) {
         if ((pressed & HOL_BTN_CONFIRM) && !v->paused)
-            app->ev.next_level = 1;
+            hol__after_end(app, in, 0); /* questionnaires, closing, next */
     } else if (!v->paused && !restarted) {
         double t0 = app->level_t;
         app->level_t += dt;
@@ -611,11 +710,11 @@ hol_err hol_app_step(hol_app *app, const hol_input *in)
         }
         if (app->done) {
             hol__summary(app, HOL_APP_END_DONE);
-            v->state = HOL_APP_DONE;
+            hol__level_over(app, in);
         } else if (app->level.time_limit_s > 0 && app->level_t >= app->level.time_limit_s) {
             app->timed_out = 1;
             hol__summary(app, HOL_APP_END_TIMEOUT);
-            v->state = HOL_APP_DONE;
+            hol__level_over(app, in);
         }
     }
     hol_haptic_step(&app->haptic, in, hol_room_cols(&app->mo.user), hol_room_rows(&app->mo.user),

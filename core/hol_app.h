@@ -90,6 +90,16 @@ enum hol_app_sound { HOL_SOUND_ALL = 0, HOL_SOUND_CUES = 1, HOL_SOUND_OFF = 2 };
  * lights; at dusk and night lanterns light the forest (render/hol_render.h). */
 enum hol_app_lighting { HOL_LIGHT_DAY = 0, HOL_LIGHT_DUSK = 1, HOL_LIGHT_NIGHT = 2 };
 
+/* A level's pointing question (`point start|objective`, SPEC 8): at the
+ * level's end (done or time up) the app asks for the direction to the
+ * level's start tile, or to its objective (the flag; the chest in mode
+ * keys), before the end screen (state HOL_APP_POINT). */
+enum hol_app_point_target {
+    HOL_APP_POINT_NONE = 0,
+    HOL_APP_POINT_START = 1,
+    HOL_APP_POINT_OBJECTIVE = 2
+};
+
 enum hol_app_minimap_place { HOL_MINIMAP_HUD = 0, HOL_MINIMAP_HAND = 1, HOL_MINIMAP_OFF = 2 };
 
 #define HOL_APP_MAX_KEYS 5
@@ -132,6 +142,55 @@ enum hol_app_minimap_place { HOL_MINIMAP_HUD = 0, HOL_MINIMAP_HAND = 1, HOL_MINI
  * -1: its lessons begin where the player ends the one before). */
 #define HOL_APP_TUTORIAL_STAGES 4
 
+/* A screen of text (hol_app_level.instructions, .closing): printable
+ * ASCII (the HUD's font), at most HOL_APP_SCREEN_TEXT - 1 bytes, wrapped
+ * at spaces into lines of at most HOL_APP_SCREEN_COLS characters
+ * (hol_app_wrap), at most HOL_APP_SCREEN_LINES of them (the HUD's lines:
+ * the text is shown whole, never cut; the level parser refuses more). */
+#define HOL_APP_SCREEN_TEXT 288
+#define HOL_APP_SCREEN_COLS 46
+#define HOL_APP_SCREEN_LINES 6
+
+enum hol_app_screen {
+    HOL_APP_SCREEN_NONE = 0,
+    HOL_APP_SCREEN_INSTRUCTIONS = 1, /* before the level: confirm begins it */
+    HOL_APP_SCREEN_CLOSING = 2       /* after the last level: confirm ends */
+};
+
+/* Questionnaires (issue 26 item 7; docs/research.md "Questionnaires"):
+ * items (`question` level lines, or the presets ssq and tlx: core/hol_ask.h)
+ * asked after the level's end screen, one screen an item, answered with
+ * left/right and confirm. */
+#define HOL_APP_MAX_QUESTIONS 40
+#define HOL_APP_MAX_ASKS 4
+#define HOL_APP_ID_MAX 32        /* an item's or questionnaire's ID, with the NUL */
+#define HOL_APP_QTEXT_MAX 96     /* an item's text, with the NUL */
+#define HOL_APP_LABEL_MAX 24     /* an anchor or a choice, with the NUL */
+#define HOL_APP_MAX_CHOICES 6
+#define HOL_APP_MAX_SCALE 21     /* a likert scale's marks at most */
+
+enum hol_app_question_kind { HOL_APP_LIKERT = 0, HOL_APP_CHOICE = 1 };
+enum hol_app_ask_when { HOL_APP_AFTER_LEVEL = 0, HOL_APP_AFTER_CONDITION = 1,
+                        HOL_APP_AFTER_STUDY = 2 };
+
+typedef struct hol_app_question {
+    char id[HOL_APP_ID_MAX];
+    int kind;                         /* hol_app_question_kind */
+    int lo, hi, step;                 /* likert: lo, lo+step, ..., hi */
+    char text[HOL_APP_QTEXT_MAX];
+    char low[HOL_APP_LABEL_MAX], high[HOL_APP_LABEL_MAX]; /* likert anchors */
+    int nchoices;                     /* choice: 2..HOL_APP_MAX_CHOICES */
+    char choices[HOL_APP_MAX_CHOICES][HOL_APP_LABEL_MAX];
+} hol_app_question;
+
+/* A questionnaire to ask (level line `ask NAME WHEN [ID...]`): its items
+ * are questions[first .. first + n - 1]. */
+typedef struct hol_app_ask {
+    char name[HOL_APP_ID_MAX];
+    int when;                         /* hol_app_ask_when (for the logs) */
+    int first, n;
+} hol_app_ask;
+
 /* One level as the app plays it. */
 typedef struct hol_app_level {
     int mode;                 /* hol_app_mode */
@@ -171,6 +230,22 @@ typedef struct hol_app_level {
     hol_tile lanterns[HOL_APP_MAX_LANTERNS]; /* `place lantern` tiles */
     int nlanterns;
     int sound;                /* hol_app_sound; 0: all */
+    int point;                /* hol_app_point_target: the question asked
+                                 at the level's end; 0: none */
+    /* Screens (issue 26, session flow): "" none. instructions: shown when
+     * the level is started (hol_app_start_level; not on a restart) until
+     * confirm; the level (its clock, its attempt: events.level_started)
+     * begins at the frame after. closing: on the session's last level
+     * (last 1), the end screen's confirm shows it, and its confirm ends
+     * (events.next_level). A study puts them there (core/hol_study.h). */
+    char instructions[HOL_APP_SCREEN_TEXT];
+    char closing[HOL_APP_SCREEN_TEXT];
+    /* Questionnaires asked after the end screen's confirm, in order (then
+     * the closing screen, then the next level): asks[k]'s items. */
+    int nquestions;
+    hol_app_question questions[HOL_APP_MAX_QUESTIONS];
+    int nasks;
+    hol_app_ask asks[HOL_APP_MAX_ASKS];
 } hol_app_level;
 
 typedef struct hol_app_desc {
@@ -189,7 +264,21 @@ typedef enum hol_app_state {
     HOL_APP_IDLE = 0,         /* no level started yet */
     HOL_APP_PLAYING = 1,
     HOL_APP_DONE = 2,         /* the level is complete: the end screen */
-    HOL_APP_QUIT = 3          /* the user asked to quit: the platform exits */
+    HOL_APP_QUIT = 3,         /* the user asked to quit: the platform exits */
+    HOL_APP_POINT = 4,        /* the level is over (done or time up) and
+                                 its `point` question is asked: the user
+                                 turns (pancake: the view's yaw; a tracked
+                                 head: the controller's ray, see
+                                 hol_app_point) and confirms; then DONE.
+                                 The level clock is stopped, no walking. */
+    HOL_APP_ASK = 6,          /* a questionnaire's item (hud.ask_*): left
+                                 and right choose, confirm answers
+                                 (events.answered), quit quits */
+    HOL_APP_SCREEN = 5        /* a screen of text (hud.screen: the level's
+                                 instructions before it begins, the closing
+                                 screen after the last): its lines are
+                                 hud.lines, confirm goes on, quit quits;
+                                 nothing else acts, no clock runs */
 } hol_app_state;
 
 /* The HUD model: filled at the step, drawn as is. */
@@ -223,6 +312,12 @@ typedef struct hol_app_hud {
     int timed_out;                    /* 1: the level ended at its time limit
                                          (state DONE, "Time up"), not complete */
     double elapsed_s;                 /* level clock */
+    int screen;                       /* hol_app_screen shown (state
+                                         HOL_APP_SCREEN), else 0 */
+    int ask_item, ask_items;          /* state HOL_APP_ASK: the item (0-based)
+                                         of the questionnaire and its count */
+    int ask_value;                    /* the value chosen now (likert: the
+                                         number; choice: its index) */
     /* the text as drawn, one line each: the feedback if any, the
      * objective (or status), "STEPS n", "TIME m:ss OF m:ss" when the level
      * has a time limit; with debug on also "TILE address", "CELL c,r NORTH
@@ -320,6 +415,41 @@ typedef struct hol_app_summary {
     hol_app_end end;
 } hol_app_summary;
 
+/* A pointing answer (SPEC 8, level line `point`). Bearings in degrees
+ * clockwise from room north, [0, 360). pointed: the direction the user
+ * gave at confirm: with a tracked head (a headset) the yaw of the right
+ * controller's pose (its -z axis, the ray) when HOL_INPUT_HAND_R_VALID,
+ * else the left's, else the head's; without one (pancake) the view's yaw.
+ * true_deg, flat_deg: hol_bearing_end of the level's walk of room steps
+ * (core/hol_bearing.h; the same computation as `holonomy tile bearing`),
+ * the target the level's start tile or its objective; the flat vector
+ * counts the steps from the level's start (after its start walk; the start
+ * walk's own visits do not count). has_true 0: the user stands on the
+ * target; has_flat 0: the walk never stood on it, or the flat vector is
+ * zero. error_*: pointed minus the bearing, wrapped to (-180, 180]. */
+typedef struct hol_app_point {
+    int target;            /* hol_app_point_target */
+    double t;              /* the level clock when it was asked (the end) */
+    double asked_s;        /* the input time it was asked */
+    double time_s;         /* seconds taken to answer */
+    double pointed_deg;
+    int has_true, has_flat;
+    double true_deg, flat_deg;
+    double error_true, error_flat;
+} hol_app_point;
+
+/* A questionnaire item's answer. */
+typedef struct hol_app_answer {
+    char questionnaire[HOL_APP_ID_MAX];
+    int when;                         /* hol_app_ask_when */
+    char item[HOL_APP_ID_MAX];
+    int kind;                         /* hol_app_question_kind */
+    int value;                        /* likert: the number chosen */
+    char choice[HOL_APP_LABEL_MAX];   /* choice: its text */
+    double time_s;                    /* seconds from the item's screen to
+                                         its confirm */
+} hol_app_answer;
+
 typedef struct hol_app_events {
     int nsteps;
     hol_app_step_event steps[HOL_APP_MAX_STEP_EVENTS];
@@ -338,9 +468,20 @@ typedef struct hol_app_events {
                               view.map.place) in this step */
     int minimap_refused;   /* HOL_BTN_MINIMAP was pressed on a level whose
                               minimap is fixed: nothing moved */
+    int pointed;           /* the level's pointing question was answered
+                              in this step (point) */
+    hol_app_point point;
+    int answered;          /* a questionnaire's item was answered (answer) */
+    hol_app_answer answer;
 } hol_app_events;
 
 typedef struct hol_app hol_app;
+
+/* Wraps text at spaces into lines of at most cols (1..HOL_APP_TEXT_MAX-1)
+ * characters (a word longer than a line is cut at the line's end and goes
+ * on; runs of blanks at a wrap are dropped); writes at most max lines into
+ * out (NULL: none) and returns how many lines the whole text needs. */
+int hol_app_wrap(const char *text, int cols, char (*out)[HOL_APP_TEXT_MAX], int max);
 
 /* Errors: HOL_EARG, HOL_ENOMEM (an allocation failed). */
 hol_err hol_app_create(const hol_app_desc *desc, hol_app **out_app);

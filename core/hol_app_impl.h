@@ -12,6 +12,7 @@
 #define HOL_APP_IMPL_H
 
 #include "hol_app.h"
+#include "hol_bearing.h"
 #include "hol_nav.h"
 
 /* "Minimap fixed in this study" stays on the HUD this long (input clock,
@@ -73,6 +74,19 @@ struct hol_app {
     double fixed_until;      /* ... and shows until this input time */
     int nmarks;              /* tiles marked on the minimap with it */
     hol_tile marks[HOL_APP_MAX_MARKS];
+    /* pointing (level.point): the level's walk as SPEC 8 counts it */
+    hol_bearing_walk bw;
+    int bw_ok;               /* bw follows the walk (else no question) */
+    double asked_s;          /* input time the question was asked */
+    /* screens (hol_app_level.instructions, .closing) */
+    int screen;              /* hol_app_screen up (state HOL_APP_SCREEN) */
+    int place_panel;         /* a screen came up: the panel goes ahead now */
+    /* questionnaires (hol_app_level.asks) */
+    int ask_k, ask_i;        /* the ask and its item on screen (state ASK) */
+    int ask_mark;            /* the mark chosen (0 .. marks - 1) */
+    int ask_axis;            /* the left/right axis's side at the last record */
+    double ask_t0;           /* input time the item came up */
+    double ask_ref_yaw;      /* the look then (a controller points from it) */
     uint8_t walk[HOL_NAV_WALK_MAX]; /* replan scratch */
     int nwalk;
 };
@@ -89,6 +103,24 @@ void hol__tutorial_enter(hol_app *app, const hol_room *r);
  * -1 when none within HOL__LOOP_MAX steps (never in a 3 x 3 room). */
 #define HOL__LOOP_MAX 12
 int hol__loop_left(const hol_app *app, const hol_room *r, uint8_t *out_walk, int cap);
+
+/* hol_app_point.c: the level's walk for its pointing question (begun at
+ * the level's start, a room step at a time, synced after a re-placing),
+ * whether it can be asked, the direction pointed and the answer (fills
+ * app->ev.point, sets ev.pointed). */
+void hol__point_begin(hol_app *app);
+void hol__point_step(hol_app *app, int dir);
+void hol__point_sync(hol_app *app);
+int hol__point_can_ask(const hol_app *app);
+double hol__pointed_yaw(const hol_app *app, const hol_input *in);
+void hol__point_answer(hol_app *app, const hol_input *in);
+
+/* hol_app_ask.c: after the end screen's confirm (from_ask 0) or the last
+ * item (1): the questionnaires, the closing screen or the next level; a
+ * frame of an item; its lines on the HUD. */
+void hol__after_end(hol_app *app, const hol_input *in, int from_ask);
+void hol__ask_frame(hol_app *app, const hol_input *in, uint32_t pressed);
+void hol__ask_lines(const hol_app *app, hol_app_hud *h);
 
 /* hol_app_view.c */
 void hol__fill_view(hol_app *app, const hol_input *in);

@@ -67,10 +67,12 @@ static void hol__fill_eyes(hol_app *app, const hol_input *in)
     /* the headset's UI panel: placed ahead at once when a level starts or
      * the room is re-placed around the head, else lazily following */
     double t = in ? in->time_s : v->panel.t;
-    if (app->ev.level_started || (in && (in->flags & HOL_INPUT_RECENTRED)))
+    if (app->ev.level_started || app->place_panel || (in && (in->flags & HOL_INPUT_RECENTRED)))
         hol_panel_place(&v->panel, v->head, v->yaw_deg, t);
     else
         hol_panel_follow(&v->panel, v->head, v->yaw_deg, t);
+    if (in)
+        app->place_panel = 0;
 }
 
 static void hol__fill_objective(const hol_app *app, hol_app_hud *h)
@@ -138,6 +140,65 @@ static void hol__menu_hint(const hol_app *app, const hol_input *in, hol_app_hud 
         h->hint[len] = 0; /* no room: the prompt alone */
 }
 
+int hol_app_wrap(const char *text, int cols, char (*out)[HOL_APP_TEXT_MAX], int max)
+{
+    if (cols < 1)
+        cols = 1;
+    if (cols > HOL_APP_TEXT_MAX - 1)
+        cols = HOL_APP_TEXT_MAX - 1;
+    int n = 0;
+    size_t len = strlen(text), at = 0;
+    while (at < len && text[at] == ' ')
+        at++;
+    while (at < len) {
+        size_t take = len - at;
+        if (take > (size_t)cols) {
+            size_t sp = (size_t)cols; /* the last space at or before cols */
+            while (sp > 0 && text[at + sp] != ' ')
+                sp--;
+            take = sp > 0 ? sp : (size_t)cols;
+        }
+        size_t keep = take;
+        while (keep > 0 && text[at + keep - 1] == ' ')
+            keep--;
+        if (out && n < max) {
+            memcpy(out[n], text + at, keep);
+            out[n][keep] = 0;
+        }
+        n++;
+        at += take;
+        while (at < len && text[at] == ' ')
+            at++;
+    }
+    return n;
+}
+
+/* A screen of text (state HOL_APP_SCREEN): its prompt. */
+static void hol__screen_status(const hol_app *app, hol_app_hud *h)
+{
+    const hol__ask ask[2] = {{HOL_BTN_CONFIRM, 0,
+                              app->screen == HOL_APP_SCREEN_CLOSING ? "finish" : "begin"},
+                             {HOL_BTN_QUIT, 0, "quit"}};
+    hol__prompt(h, app->device, ask, app->screen == HOL_APP_SCREEN_CLOSING ? 1 : 2);
+}
+
+/* The pointing question (state HOL_APP_POINT): what to point at, and how
+ * (a headset: the controller; else the view). */
+static void hol__point_status(const hol_app *app, const hol_input *in, hol_app_hud *h)
+{
+    const hol_app_level *L = &app->level;
+    const char *what = L->point == HOL_APP_POINT_START ? "the start"
+                       : L->mode == HOL_APP_KEYS       ? "the chest"
+                                                       : "the flag";
+    if (in && (in->flags & HOL_INPUT_HEAD_VALID) &&
+        (in->flags & (HOL_INPUT_HAND_R_VALID | HOL_INPUT_HAND_L_VALID)))
+        snprintf(h->status, sizeof h->status, "Point the controller at %s", what);
+    else
+        snprintf(h->status, sizeof h->status, "Turn to face %s", what);
+    const hol__ask ask[1] = {{HOL_BTN_CONFIRM, 0, "confirm"}};
+    hol__prompt(h, app->device, ask, 1);
+}
+
 /* Status (end screen, pause, safety) and the prompt of what the buttons do
  * now, worded for the device in use. */
 static void hol__fill_status(hol_app *app, const hol_input *in, hol_app_hud *h)
@@ -153,6 +214,13 @@ static void hol__fill_status(hol_app *app, const hol_input *in, hol_app_hud *h)
                                  {HOL_BTN_CONFIRM, 0, "restart"},
                                  {HOL_BTN_QUIT, HOL_BTN_BACK, "quit"}};
         hol__prompt(h, dev, ask, 3);
+    } else if (v->state == HOL_APP_SCREEN) {
+        hol__screen_status(app, h);
+    } else if (v->state == HOL_APP_ASK) {
+        const hol__ask ask[2] = {{HOL_BTN_CONFIRM, 0, "answer"}, {HOL_BTN_QUIT, 0, "quit"}};
+        hol__prompt(h, dev, ask, 2);
+    } else if (v->state == HOL_APP_POINT) {
+        hol__point_status(app, in, h);
     } else if (v->state == HOL_APP_DONE) {
         if (app->timed_out)
             snprintf(h->status, sizeof h->status, "Time up: %d steps, best %d, %ld:%02ld",
@@ -200,6 +268,17 @@ static void hol__fill_lines(const hol_app *app, hol_app_hud *h)
     const hol_app_view *v = &app->view;
     long secs = (long)app->level_t, lim = (long)app->level.time_limit_s;
     h->nlines = 0;
+    if (v->state == HOL_APP_ASK) {
+        hol__ask_lines(app, h);
+        return;
+    }
+    if (v->state == HOL_APP_SCREEN) { /* the screen's text, whole */
+        const char *text = app->screen == HOL_APP_SCREEN_CLOSING ? app->level.closing
+                                                                 : app->level.instructions;
+        int n = hol_app_wrap(text, HOL_APP_SCREEN_COLS, h->lines, HOL_APP_HUD_LINES);
+        h->nlines = n < HOL_APP_HUD_LINES ? n : HOL_APP_HUD_LINES;
+        return;
+    }
 #define HOL__LINE(...) snprintf(h->lines[h->nlines++], HOL_APP_TEXT_MAX, __VA_ARGS__)
     if (h->feedback[0] && (v->state != HOL_APP_DONE || !strcmp(h->feedback, HOL__FIXED_TEXT)))
         HOL__LINE("%s", h->feedback);
@@ -233,6 +312,9 @@ static void hol__fill_hud(hol_app *app, const hol_input *in)
     h->stage_optimum = tut ? app->stage_optimum : -1;
     h->timed_out = app->timed_out;
     h->debug = app->debug;
+    h->screen = app->view.state == HOL_APP_SCREEN ? app->screen : 0;
+    if (app->view.state != HOL_APP_ASK)
+        h->ask_item = h->ask_items = h->ask_value = 0;
     h->device = app->device;
     for (int k = 0; k < h->keys_total; k++)
         h->keys_held += (int)(app->keys_held >> k & 1);

@@ -2,6 +2,8 @@
  * objectives drawn by distance, and named levels (see hol_level.h). */
 #include "hol_level.h"
 
+#include "hol_ask.h"
+
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
@@ -24,7 +26,11 @@ typedef struct hol__lp {
     long flag_line, keys_line, chest_line, place_line[HOL_APP_MAX_PLACES];
     long tiling_line, room_line, lantern_line[HOL_APP_MAX_LANTERNS];
     int geo_only; /* the first pass: only the geometry lines */
-    long key_line[24]; /* where each key of hol__keys was given (0: not yet) */
+    long point_line;   /* the `point` line (0: none) */
+    const char *raw;   /* the line being read, comment removed, unsplit */
+    int ndefs;         /* `question` lines read (asks copy theirs) */
+    hol_app_question defs[HOL_APP_MAX_QUESTIONS];
+    long key_line[32]; /* where each key of hol__keys was given (0: not yet) */
     int repeated;      /* a key given twice: reported in either pass */
     hol_level_err *loud;
     hol_level_err *err;
@@ -382,6 +388,151 @@ static hol_err hol__key_sound(hol__lp *p, char **f, int nf)
     return HOL_OK;
 }
 
+/* point start|objective (SPEC 8): the pointing question at the level's end */
+static hol_err hol__key_point(hol__lp *p, char **f, int nf)
+{
+    static const char *const targets[2] = {"start", "objective"};
+    (void)nf;
+    int m = hol__word(f[1], targets, 2);
+    if (m < 0)
+        return hol__lfail(p, HOL_EPARSE, p->line, "point '%.20s' is not start or objective", f[1]);
+    p->L.point = m + 1;
+    p->point_line = p->line;
+    return HOL_OK;
+}
+
+/* instructions TEXT, closing TEXT: the rest of the line (hol_app.h:
+ * screens), checked: printable ASCII, wrapped whole on the HUD. */
+static hol_err hol__key_text(hol__lp *p, char **f, int nf)
+{
+    (void)nf;
+    const char *r = p->raw;
+    while (*r == ' ' || *r == '\t')
+        r++;
+    r += strlen(f[0]);
+    while (*r == ' ' || *r == '\t')
+        r++;
+    size_t n = strlen(r);
+    while (n && (r[n - 1] == ' ' || r[n - 1] == '\t'))
+        n--;
+    int closing = !strcmp(f[0], "closing");
+    char *out = closing ? p->L.closing : p->L.instructions;
+    if (n > HOL_APP_SCREEN_TEXT - 1)
+        return hol__lfail(p, HOL_ERANGE, p->line, "%s: longer than %d characters", f[0],
+                          HOL_APP_SCREEN_TEXT - 1);
+    for (size_t i = 0; i < n; i++)
+        if ((unsigned char)r[i] < 0x20 || (unsigned char)r[i] > 0x7e || r[i] == '\t')
+            return hol__lfail(p, HOL_EPARSE, p->line,
+                              "%s: only printable ASCII and spaces (the HUD's font), not byte "
+                              "0x%02x", f[0], (unsigned char)r[i]);
+    memcpy(out, r, n);
+    out[n] = 0;
+    int lines = hol_app_wrap(out, HOL_APP_SCREEN_COLS, NULL, 0);
+    if (lines > HOL_APP_SCREEN_LINES) {
+        out[0] = 0;
+        return hol__lfail(p, HOL_ERANGE, p->line,
+                          "%s: wraps into %d lines of %d characters; at most %d are shown", f[0],
+                          lines, HOL_APP_SCREEN_COLS, HOL_APP_SCREEN_LINES);
+    }
+    return HOL_OK;
+}
+
+/* question ID likert|choice ... (core/hol_ask.h): an item `ask` lines
+ * may name (after it). */
+static hol_err hol__key_question(hol__lp *p, char **f, int nf)
+{
+    (void)nf;
+    if (p->ndefs >= HOL_APP_MAX_QUESTIONS)
+        return hol__lfail(p, HOL_ENOMEM, p->line, "more than %d questions",
+                          HOL_APP_MAX_QUESTIONS);
+    char msg[160];
+    hol_app_question *q = &p->defs[p->ndefs];
+    hol_err e = hol_ask_parse_question(p->raw, strlen(p->raw), q, msg, sizeof msg);
+    if (e)
+        return hol__lfail(p, e, p->line, "%s", msg);
+    for (int i = 0; i < p->ndefs; i++)
+        if (!strcmp(p->defs[i].id, q->id))
+            return hol__lfail(p, HOL_EARG, p->line, "question %s is given twice", q->id);
+    p->ndefs++;
+    (void)f;
+    return HOL_OK;
+}
+
+/* An ask's items: the preset's (NAME ssq or tlx, no IDs) or the questions
+ * named (given before), copied after the level's questions. */
+static hol_err hol__ask_items(hol__lp *p, hol_app_ask *a, const char *ids)
+{
+    hol_app_level *L = &p->L;
+    a->first = L->nquestions;
+    int room = HOL_APP_MAX_QUESTIONS - L->nquestions;
+    if (!*ids) {
+        int n = hol_ask_preset(a->name, strlen(a->name), L->questions + L->nquestions, room);
+        if (!n)
+            return hol__lfail(p, HOL_EPARSE, p->line,
+                              "ask %s names no items (IDs of questions; ssq and tlx need none)",
+                              a->name);
+        if (n > room)
+            return hol__lfail(p, HOL_ENOMEM, p->line, "more than %d items to ask",
+                              HOL_APP_MAX_QUESTIONS);
+        a->n = n;
+        L->nquestions += n;
+        return HOL_OK;
+    }
+    for (const char *s = ids; *s;) {
+        size_t n = strcspn(s, " \t");
+        int k = 0;
+        while (k < p->ndefs && !(strlen(p->defs[k].id) == n && !memcmp(p->defs[k].id, s, n)))
+            k++;
+        if (k == p->ndefs)
+            return hol__lfail(p, HOL_EARG, p->line, "ask %s: no question '%.*s' before it",
+                              a->name, (int)(n < 32 ? n : 32), s);
+        if (L->nquestions >= HOL_APP_MAX_QUESTIONS)
+            return hol__lfail(p, HOL_ENOMEM, p->line, "more than %d items to ask",
+                              HOL_APP_MAX_QUESTIONS);
+        L->questions[L->nquestions++] = p->defs[k];
+        a->n++;
+        s += n;
+        s += strspn(s, " \t");
+    }
+    return HOL_OK;
+}
+
+/* ask NAME level|condition|study [ID...]: a questionnaire after the end
+ * screen (in the order of the lines). */
+static hol_err hol__key_ask(hol__lp *p, char **f, int nf)
+{
+    (void)nf;
+    hol_app_level *L = &p->L;
+    if (L->nasks >= HOL_APP_MAX_ASKS)
+        return hol__lfail(p, HOL_ENOMEM, p->line, "more than %d ask lines", HOL_APP_MAX_ASKS);
+    hol_app_ask *a = &L->asks[L->nasks];
+    memset(a, 0, sizeof *a);
+    if (!hol_ask_id_ok(f[1], strlen(f[1])))
+        return hol__lfail(p, HOL_EPARSE, p->line,
+                          "ask: '%.31s' is not 1..31 letters, digits, '_', '-', '.'", f[1]);
+    snprintf(a->name, sizeof a->name, "%s", f[1]);
+    a->when = hol_ask_when(f[2], strlen(f[2]));
+    if (a->when < 0)
+        return hol__lfail(p, HOL_EPARSE, p->line, "ask %s: '%.20s' is not level, condition or "
+                          "study", a->name, f[2]);
+    /* the IDs: the raw line after the key, NAME and WHEN */
+    const char *r = p->raw;
+    for (int k = 0; k < 3; k++) {
+        r += strspn(r, " \t");
+        r += strcspn(r, " \t");
+    }
+    r += strspn(r, " \t");
+    char ids[HOL_LEVEL_LINE_MAX + 1];
+    snprintf(ids, sizeof ids, "%s", r);
+    size_t n = strlen(ids);
+    while (n && (ids[n - 1] == ' ' || ids[n - 1] == '\t'))
+        ids[--n] = 0;
+    hol_err e = hol__ask_items(p, a, ids);
+    if (!e)
+        L->nasks++;
+    return e;
+}
+
 /* tiling 4 Q (SPEC 7) */
 static hol_err hol__key_tiling(hol__lp *p, char **f, int nf)
 {
@@ -447,11 +598,16 @@ static const struct {
     {"fixed", 2, 2, hol__key_fixed},
     {"lighting", 2, 2, hol__key_lighting},
     {"sound", 2, 2, hol__key_sound},
+    {"point", 2, 2, hol__key_point},
+    {"instructions", 2, HOL__FIELDS + 1, hol__key_text},
+    {"closing", 2, HOL__FIELDS + 1, hol__key_text},
+    {"question", 3, HOL__FIELDS + 1, hol__key_question},
+    {"ask", 3, HOL__FIELDS + 1, hol__key_ask},
     {"tiling", 3, 3, hol__key_tiling},
     {"room", 3, 3, hol__key_room},
     {"cell", 2, 2, hol__key_cell},
 };
-_Static_assert(sizeof hol__keys / sizeof hol__keys[0] <= 24, "hol__lp.key_line holds every key");
+_Static_assert(sizeof hol__keys / sizeof hol__keys[0] <= 32, "hol__lp.key_line holds every key");
 
 /* The geometry keys, read in a first pass (addresses need the tiling). */
 static int hol__geo_key(const char *key)
@@ -498,6 +654,9 @@ static hol_err hol__line(hol__lp *p, const char *s, size_t n)
     char *hash = strchr(line, '#');
     if (hash)
         *hash = 0;
+    char raw[HOL_LEVEL_LINE_MAX + 1];
+    memcpy(raw, line, strlen(line) + 1);
+    p->raw = raw;
     char *f[HOL__FIELDS];
     int nf = hol__split(line, f);
     if (nf == 0)
@@ -511,7 +670,8 @@ static hol_err hol__line(hol__lp *p, const char *s, size_t n)
             nf <= hol__keys[k].max) {
             /* a key given twice is refused, naming both lines (no silent
              * last-wins; `place` is the one key a level repeats) */
-            if (p->key_line[k] && strcmp(f[0], "place")) {
+            if (p->key_line[k] && strcmp(f[0], "place") && strcmp(f[0], "question") &&
+                strcmp(f[0], "ask")) {
                 hol_level_err *quiet = p->err;
                 p->err = p->loud;
                 p->repeated = 1;
@@ -729,6 +889,12 @@ static hol_err hol__finish(hol__lp *p)
         return hol__lfail(p, HOL_EARG, p->tiling_line ? p->tiling_line : p->have_mode,
                           "the tutorial needs the tiling {4,5}, {4,6} or {4,7}: its lessons have "
                           "no walk inside the room in {4,%d}", q);
+    if (L->point && (L->mode == HOL_APP_TUTORIAL ||
+                     (L->point == HOL_APP_POINT_OBJECTIVE && L->mode == HOL_APP_EXPLORE)))
+        return hol__lfail(p, HOL_EARG, p->point_line,
+                          "point %s needs a mode with an objective (flag or keys%s)",
+                          L->point == HOL_APP_POINT_START ? "start" : "objective",
+                          L->point == HOL_APP_POINT_START ? ", or explore" : "");
     hol_room r0;
     (void)hol_room_start_in(q, L->room_cols, L->room_rows, &r0);
     for (int i = 0; i < L->nstart; i++)

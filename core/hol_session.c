@@ -46,6 +46,10 @@ static hol_err hol__start_level(hol_session *s)
 {
     hol_app_level L = s->levels[s->cur].lvl;
     L.last = s->cur == s->nlevels - 1; /* its end screen says "finish" */
+    /* a study's session ends on a closing screen (its `closing` text, or
+     * this) */
+    if (L.last && s->levels[s->cur].condition[0] && !L.closing[0])
+        snprintf(L.closing, sizeof L.closing, "%s", HOL_SESSION_CLOSING);
     hol_err e = hol_app_start_level(s->app, &L);
     long at = e == HOL_EBUDGET || e == HOL_EUNREACH ? hol_level_objective_line(&s->levels[s->cur]) : 0;
     char line[32] = "";

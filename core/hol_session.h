@@ -64,7 +64,9 @@
  *   head HOL_SESSION_HEAD_COLUMNS; events.csv HOL_SESSION_EVENT_COLUMNS (a
  *   row, appended durably as it happens, for each change of the minimap's
  *   place during play, `minimap`, and each refused one, `minimap-fixed`;
- *   the header when the file is new; a folder holding it holds logs); the README ("Research logs") documents
+ *   the header when the file is new; a folder holding it holds logs);
+ *   points.csv HOL_SESSION_POINT_COLUMNS and answers.csv
+ *   HOL_SESSION_ANSWER_COLUMNS (likewise); the README ("Research logs") documents
  *   each. Head rows fall on exact 10 Hz level times, interpolated between
  *   the frames around them (position linear, yaw the short way round;
  *   cell and tile from the nearer frame), frame_t the later frame's time.
@@ -93,6 +95,10 @@
 #include "hol_sink.h"
 
 #define HOL_SESSION_MAX_LEVELS HOL_REC_MAX_LEVELS
+/* The closing screen of a study's session whose study gives no `closing`
+ * line: shown after the last level's end screen (a level labelled with a
+ * condition: hol_level.condition), its confirm ends the session. */
+#define HOL_SESSION_CLOSING "Thank you: the study is over."
 /* Head rows are interpolated over frames at most HOL_SESSION_GAP_S of level
  * time apart; a longer gap (a stall, a laptop asleep, a recording whose
  * time jumps) is one `gap` row. A frame writes at most HOL_SESSION_GAP_ROWS
@@ -108,6 +114,23 @@
 #define HOL_SESSION_HEAD_COLUMNS \
     "session,attempt,level,t,frame_t,x,y,z,yaw,pitch,col,row,tile"
 #define HOL_SESSION_EVENT_COLUMNS "session,attempt,level,t,event,value"
+/* points.csv: a row per pointing answer (level line `point`, SPEC 8;
+ * hol_app_point), appended durably as it happens, the header when the file
+ * is new. attempt: the attempt just ended (the level asked about); t its
+ * level time at the question; pointed, true, flat: bearings with one
+ * decimal (true, flat empty when undefined); error_true, error_flat:
+ * pointed minus them wrapped to (-180, 180], one decimal, empty with
+ * theirs; time: seconds taken to answer. */
+/* answers.csv: a row per questionnaire item answered (hol_app_answer),
+ * appended durably as it happens, the header when the file is new.
+ * attempt: the last attempt before the questionnaire; questionnaire its
+ * name, when level|condition|study, item the item's ID, kind
+ * likert|choice, value the number (likert) or the choice's text (CSV
+ * quoted when it needs it), time the seconds taken. */
+#define HOL_SESSION_ANSWER_COLUMNS \
+    "session,participant,attempt,questionnaire,when,item,kind,value,time"
+#define HOL_SESSION_POINT_COLUMNS \
+    "session,participant,attempt,level,t,target,pointed,true,flat,error_true,error_flat,time"
 
 typedef struct hol_session_desc {
     const hol_level *levels; /* 1..HOL_SESSION_MAX_LEVELS, copied */

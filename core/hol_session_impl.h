@@ -47,6 +47,8 @@ struct hol_session {
     long frames;
     int over, finished, recovered, dropped;
     int events_known;        /* events.csv is known to have its header */
+    int points_known;        /* points.csv likewise */
+    int answers_known;       /* answers.csv likewise */
     hol_err failed;          /* the first sink failure (sticky) */
     int failed_told;
     char msg[256];

@@ -8,6 +8,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "hol_bearing.h"
 #include "hol_sha256.h"
 #include "hol_text.h"
 
@@ -371,8 +372,81 @@ static void hol__events(hol_session *s, const hol_app_events *ev, const hol_app_
         hol__event_row(s, "minimap-fixed", place, v->hud.elapsed_s);
 }
 
+/* Creates name with its header when the file is new or empty (*known
+ * keeps that it is done). */
+static void hol__header_once(hol_session *s, int *known, const char *name, const char *header)
+{
+    if (*known || s->failed)
+        return;
+    char c;
+    size_t got = 0;
+    hol_err e = s->log->read(s->log->user, name, 0, &c, 1, &got);
+    if (e == HOL_EOPEN || (!e && got == 0))
+        hol__put_file(s, name, 1, header, strlen(header));
+    else if (e)
+        hol__fail_sink(s, s->log, e, "read", name);
+    *known = 1;
+}
+
+/* An angle with one decimal, never "-0.0"; "" when absent. */
+static void hol__deg(char out[16], int has, double d)
+{
+    out[0] = 0;
+    if (has)
+        snprintf(out, 16, "%.1f", fabs(d) < 0.05 ? 0.0 : d);
+}
+
+/* A row of points.csv (see hol_session.h). */
+static void hol__point_row(hol_session *s, const hol_app_point *p)
+{
+    hol__header_once(s, &s->points_known, "points.csv", HOL_SESSION_POINT_COLUMNS "\n");
+    if (s->failed)
+        return;
+    char name[HOL__CSV_NAME], row[HOL__CSV_NAME + 512];
+    char pointed[HOL_BEARING_TEXT], tru[HOL_BEARING_TEXT] = "", flat[HOL_BEARING_TEXT] = "";
+    char et[16], ef[16];
+    hol__csv_name(s->levels[s->cur].name, name);
+    hol_bearing_format(p->pointed_deg, pointed);
+    if (p->has_true)
+        hol_bearing_format(p->true_deg, tru);
+    if (p->has_flat)
+        hol_bearing_format(p->flat_deg, flat);
+    hol__deg(et, p->has_true, p->error_true);
+    hol__deg(ef, p->has_flat, p->error_flat);
+    int n = snprintf(row, sizeof row, "%s,%s,%d,%s,%.4f,%s,%s,%s,%s,%s,%s,%.4f\n",
+                     s->meta.session, s->meta.participant, s->attempt, name, p->t,
+                     p->target == HOL_APP_POINT_START ? "start" : "objective", pointed, tru,
+                     flat, et, ef, p->time_s);
+    if (n > 0 && (size_t)n < sizeof row)
+        hol__put_file(s, "points.csv", 1, row, (size_t)n);
+}
+
+/* A row of answers.csv (see hol_session.h). */
+static void hol__answer_row(hol_session *s, const hol_app_answer *a)
+{
+    hol__header_once(s, &s->answers_known, "answers.csv", HOL_SESSION_ANSWER_COLUMNS "\n");
+    if (s->failed)
+        return;
+    char value[HOL__CSV_NAME], row[HOL__CSV_NAME + 512];
+    if (a->kind == HOL_APP_CHOICE)
+        hol__csv_name(a->choice, value);
+    else
+        snprintf(value, sizeof value, "%d", a->value);
+    static const char *const whens[3] = {"level", "condition", "study"};
+    int n = snprintf(row, sizeof row, "%s,%s,%d,%s,%s,%s,%s,%s,%.4f\n", s->meta.session,
+                     s->meta.participant, s->attempt, a->questionnaire,
+                     whens[a->when >= 0 && a->when < 3 ? a->when : 0], a->item,
+                     a->kind == HOL_APP_CHOICE ? "choice" : "likert", value, a->time_s);
+    if (n > 0 && (size_t)n < sizeof row)
+        hol__put_file(s, "answers.csv", 1, row, (size_t)n);
+}
+
 void hol__log_frame(hol_session *s, const hol_app_events *ev, const hol_app_view *v)
 {
+    if (ev->answered)
+        hol__answer_row(s, &ev->answer);
+    if (ev->pointed)
+        hol__point_row(s, &ev->point);
     /* a restart ends the old attempt before the new one's rows; a
      * completion ends it after this frame's rows */
     if (ev->level_ended && ev->level_started)

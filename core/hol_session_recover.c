@@ -37,7 +37,8 @@ static const char *const hol__pat[5][2] = {{"steps-", ".csv"},      {"head-", ".
 
 int hol_session_is_log_name(const char *name)
 {
-    int hit = !strcmp(name, "summary.csv") || !strcmp(name, "events.csv");
+    int hit = !strcmp(name, "summary.csv") || !strcmp(name, "events.csv") ||
+              !strcmp(name, "points.csv") || !strcmp(name, "answers.csv");
     for (int k = 0; k < 5 && !hit; k++)
         hit = hol__numbered(name, hol__pat[k][0], hol__pat[k][1]) >= 0;
     return hit;
@@ -46,7 +47,7 @@ int hol_session_is_log_name(const char *name)
 static void hol__scan_name(void *ctx, const char *name)
 {
     hol__scan *sc = ctx;
-    if (!strcmp(name, "summary.csv") || !strcmp(name, "events.csv"))
+    if (hol_session_is_log_name(name))
         sc->logs = 1;
     for (int k = 0; k < 5; k++) {
         long a = hol__numbered(name, hol__pat[k][0], hol__pat[k][1]);

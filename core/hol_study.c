@@ -2,6 +2,8 @@
  * levels (see hol_study.h). */
 #include "hol_study.h"
 
+#include "hol_ask.h"
+
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
@@ -217,6 +219,129 @@ static hol_err hol__allow(hol__sp *p, const char *w, size_t n)
     return HOL_OK;
 }
 
+/* instructions TEXT (the practice's before the first condition, else the
+ * condition's), closing TEXT (before the first condition): once each,
+ * checked as the level line they become. */
+static hol_err hol__screen(hol__sp *p, int closing, const char *b, const char *end)
+{
+    hol_study *s = p->s;
+    const char *key = closing ? "closing" : "instructions";
+    while (b < end && hol__blank(*b))
+        b++;
+    while (end > b && hol__blank(end[-1]))
+        end--;
+    if (closing && p->cur >= 0)
+        return hol__fail(p->err, HOL_EARG, p->line, 0, "'closing' comes before the first condition");
+    hol_study_span *sp = closing ? &s->closing
+                         : p->cur >= 0 ? &s->conditions[p->cur].instructions
+                                       : &s->practice_instructions;
+    if (sp->len)
+        return hol__fail(p->err, HOL_EARG, p->line, sp->line, "a second '%s' line %s", key,
+                         closing ? "in the study" : p->cur >= 0 ? "in this condition"
+                                                                : "for the practice");
+    hol_level_err le;
+    if (hol_level_line_check(b, (size_t)(end - b), &le))
+        return hol__fail(p->err, le.code, p->line, 0, "%s", le.msg);
+    sp->off = (uint16_t)(b - s->text);
+    sp->len = (uint16_t)(end - b);
+    sp->line = p->line;
+    return HOL_OK;
+}
+
+/* question ID ...: before the first condition, checked as a level line. */
+static hol_err hol__question(hol__sp *p, const char *b, const char *end)
+{
+    hol_study *s = p->s;
+    while (end > b && hol__blank(end[-1]))
+        end--;
+    while (b < end && hol__blank(*b))
+        b++;
+    if (p->cur >= 0)
+        return hol__fail(p->err, HOL_EARG, p->line, 0, "'question' comes before the first condition");
+    if (s->nquestions >= HOL_STUDY_MAX_QUESTIONS)
+        return hol__fail(p->err, HOL_ENOMEM, p->line, 0, "more than %d questions",
+                         HOL_STUDY_MAX_QUESTIONS);
+    hol_app_question q;
+    char msg[160];
+    hol_err e = hol_ask_parse_question(b, (size_t)(end - b), &q, msg, sizeof msg);
+    if (e)
+        return hol__fail(p->err, e, p->line, 0, "%s", msg);
+    for (int i = 0; i < s->nquestions; i++)
+        if (!strcmp(s->question_ids[i], q.id))
+            return hol__fail(p->err, HOL_EARG, p->line, s->questions[i].line,
+                             "question %s is given twice", q.id);
+    snprintf(s->question_ids[s->nquestions], HOL_APP_ID_MAX, "%s", q.id);
+    s->questions[s->nquestions++] = (hol_study_span){(uint16_t)(b - s->text),
+                                                     (uint16_t)(end - b), p->line};
+    return HOL_OK;
+}
+
+/* questionnaire NAME ITEM... | questionnaire NAME after WHEN. */
+static hol_err hol__questionnaire(hol__sp *p, const char *rest, const char *end)
+{
+    hol_study *s = p->s;
+    const char *w, *w2, *w3, *more;
+    size_t n = hol__field(&rest, end, &w), n2 = hol__field(&rest, end, &w2);
+    const char *items = rest;
+    size_t n3 = hol__field(&rest, end, &w3), n4 = hol__field(&rest, end, &more);
+    if (p->cur >= 0)
+        return hol__fail(p->err, HOL_EARG, p->line, 0,
+                         "'questionnaire' comes before the first condition");
+    if (!hol_ask_id_ok(w, n) || n2 == 0)
+        return hol__fail(p->err, HOL_EPARSE, p->line, 0,
+                         "questionnaire needs NAME ITEM... or NAME after level|condition|study "
+                         "(NAME 1..31 letters, digits, '_', '-', '.')");
+    char name[HOL_APP_ID_MAX];
+    memcpy(name, w, n);
+    name[n] = 0;
+    if (hol__is(w2, n2, "after") && n3 && !n4) {
+        int when = hol_ask_when(w3, n3);
+        if (when < 0)
+            return hol__fail(p->err, HOL_EPARSE, p->line, 0,
+                             "questionnaire %s after '%.*s': level, condition or study", name,
+                             (int)(n3 < 20 ? n3 : 20), w3);
+        if (s->nasks >= HOL_APP_MAX_ASKS)
+            return hol__fail(p->err, HOL_ENOMEM, p->line, 0, "more than %d questionnaires asked",
+                             HOL_APP_MAX_ASKS);
+        hol_study_ask *a = &s->asks[s->nasks++];
+        snprintf(a->name, sizeof a->name, "%s", name);
+        a->when = when;
+        a->line = p->line;
+        return HOL_OK;
+    }
+    if (hol_ask_preset(w, n, NULL, 0))
+        return hol__fail(p->err, HOL_EARG, p->line, 0, "questionnaire %s is a preset: it has its "
+                         "items", name);
+    for (int i = 0; i < s->nquestionnaires; i++)
+        if (!strcmp(s->questionnaires[i].name, name))
+            return hol__fail(p->err, HOL_EARG, p->line, 0, "questionnaire %s is given twice",
+                             name);
+    if (s->nquestionnaires >= HOL_STUDY_MAX_QUESTIONNAIRES)
+        return hol__fail(p->err, HOL_ENOMEM, p->line, 0, "more than %d questionnaires",
+                         HOL_STUDY_MAX_QUESTIONNAIRES);
+    /* every item a question given before */
+    const char *it = w2;
+    while (end > it && hol__blank(end[-1]))
+        end--;
+    for (const char *q = it; q < end;) {
+        const char *id;
+        size_t k = hol__field(&q, end, &id), j = 0;
+        if (!k)
+            break;
+        while (j < (size_t)s->nquestions && !hol__is(id, k, s->question_ids[j]))
+            j++;
+        if (j == (size_t)s->nquestions)
+            return hol__fail(p->err, HOL_EARG, p->line, 0,
+                             "questionnaire %s: no question '%.*s' before it", name,
+                             (int)(k < 32 ? k : 32), id);
+    }
+    (void)items;
+    hol_study_questionnaire *d = &s->questionnaires[s->nquestionnaires++];
+    snprintf(d->name, sizeof d->name, "%s", name);
+    d->items = (hol_study_span){(uint16_t)(it - s->text), (uint16_t)(end - it), p->line};
+    return HOL_OK;
+}
+
 /* One line [b, end) (no LF, CR dropped, no comment). */
 static hol_err hol__line(hol__sp *p, const char *b, const char *end)
 {
@@ -226,6 +351,12 @@ static hol_err hol__line(hol__sp *p, const char *b, const char *end)
         return HOL_OK;
     if (hol__is(key, kn, "set"))
         return hol__add_set(p, rest, end);
+    if (hol__is(key, kn, "instructions") || hol__is(key, kn, "closing"))
+        return hol__screen(p, hol__is(key, kn, "closing"), b, end);
+    if (hol__is(key, kn, "question"))
+        return hol__question(p, b, end);
+    if (hol__is(key, kn, "questionnaire"))
+        return hol__questionnaire(p, rest, end);
     static const char *const keys[6] = {"study", "counterbalance", "practice", "condition",
                                         "level", "allow"};
     int k = 0;
@@ -234,7 +365,7 @@ static hol_err hol__line(hol__sp *p, const char *b, const char *end)
     if (k == 6)
         return hol__fail(p->err, HOL_EPARSE, p->line, 0,
                          "unknown key '%.*s' (study, counterbalance, practice, condition, level, "
-                         "set, allow)", (int)(kn < 20 ? kn : 20), key);
+                         "set, allow, instructions, closing, question, questionnaire)", (int)(kn < 20 ? kn : 20), key);
     long n = hol__one(p, keys[k], rest, end, &w);
     if (n < 0)
         return p->err ? p->err->code : HOL_EPARSE;
@@ -261,6 +392,16 @@ static hol_err hol__finish(hol__sp *p)
         return hol__fail(p->err, HOL_EARG, 0, 0, "no 'study NAME' line");
     if (s->nconditions == 0)
         return hol__fail(p->err, HOL_EARG, 0, 0, "no 'condition NAME' line");
+    for (int k = 0; k < s->nasks; k++) {
+        const char *nm = s->asks[k].name;
+        int known = hol_ask_preset(nm, strlen(nm), NULL, 0) > 0;
+        for (int i = 0; i < s->nquestionnaires && !known; i++)
+            known = !strcmp(s->questionnaires[i].name, nm);
+        if (!known)
+            return hol__fail(p->err, HOL_EARG, s->asks[k].line, 0,
+                             "questionnaire %s is neither given (questionnaire %s ITEM...) nor "
+                             "ssq or tlx", nm, nm);
+    }
     /* a condition without a level file plays one level of its set lines:
      * the levels in all, counted in file order, must fit */
     int total = s->nlevels;
@@ -509,12 +650,110 @@ static int hol__put_line(hol__compose *c, const char *s, size_t n, long origin)
     return 0;
 }
 
-/* The level file's lines but those a set line replaces, the note, the set
- * lines in force. 1 when it does not fit. */
-static int hol__compose_text(const hol_study *s, int c, const char *file, size_t len,
-                             hol__compose *cp)
+/* The study's screen lines level i carries (see hol_study.h): its
+ * instructions (the first level of the practice or of its condition) and
+ * the closing (the participant's last level); NULL when none. */
+static const hol_study_span *hol__instr_of(const hol_study *s, int c, int i)
 {
+    const hol_study_span *sp = c < 0 ? &s->practice_instructions : &s->conditions[c].instructions;
+    int first = c < 0 ? 0 : s->conditions[c].first_level;
+    return sp->len && i == first ? sp : NULL;
+}
+
+static const hol_study_span *hol__closing_of(const hol_study *s, int c, int i, int position)
+{
+    const hol_study_condition *cd = c >= 0 ? &s->conditions[c] : NULL;
+    return s->closing.len && cd && position == s->nconditions &&
+                   i == cd->first_level + cd->nlevels - 1
+               ? &s->closing
+               : NULL;
+}
+
+/* Does the study give level i's line of key [k, k+kn) (a screen line)? */
+static int hol__screen_key(const hol_study *s, int c, int i, int position, const char *k,
+                           size_t kn)
+{
+    return (kn == 12 && !memcmp(k, "instructions", 12) && hol__instr_of(s, c, i)) ||
+           (kn == 7 && !memcmp(k, "closing", 7) && hol__closing_of(s, c, i, position));
+}
+
+/* Is the study's ask k due after level i (condition c, position)? */
+static int hol__ask_due(const hol_study *s, int k, int c, int i, int position)
+{
+    if (c < 0)
+        return 0; /* practice levels ask nothing */
     const hol_study_condition *cd = &s->conditions[c];
+    int last_of_cond = i == cd->first_level + cd->nlevels - 1;
+    switch (s->asks[k].when) {
+    case HOL_APP_AFTER_LEVEL: return 1;
+    case HOL_APP_AFTER_CONDITION: return last_of_cond;
+    default: return last_of_cond && position == s->nconditions;
+    }
+}
+
+/* The question line of ID [id, id+n) once into the level. 1 when it does
+ * not fit. */
+static int hol__put_question(const hol_study *s, const char *id, size_t n, hol__compose *cp,
+                             unsigned char *put)
+{
+    for (int j = 0; j < s->nquestions; j++)
+        if (hol__is(id, n, s->question_ids[j]) && !put[j]) {
+            put[j] = 1;
+            return hol__put_line(cp, s->text + s->questions[j].off, s->questions[j].len,
+                                 -s->questions[j].line);
+        }
+    return 0;
+}
+
+/* The questionnaires due after level i: their questions, then `ask NAME
+ * WHEN ID...`, by when (level, condition, study), in the file's order. */
+static int hol__put_asks(const hol_study *s, int c, int i, int position, hol__compose *cp)
+{
+    unsigned char put[HOL_STUDY_MAX_QUESTIONS] = {0};
+    for (int when = 0; when < 3; when++)
+        for (int k = 0; k < s->nasks; k++) {
+            const hol_study_ask *a = &s->asks[k];
+            if (a->when != when || !hol__ask_due(s, k, c, i, position))
+                continue;
+            const hol_study_questionnaire *d = NULL;
+            for (int j = 0; j < s->nquestionnaires; j++)
+                if (!strcmp(s->questionnaires[j].name, a->name))
+                    d = &s->questionnaires[j];
+            char line[HOL_STUDY_LINE_MAX + 64];
+            int n = snprintf(line, sizeof line, "ask %s %s", a->name, hol_ask_when_name(when));
+            if (d) {
+                const char *q = s->text + d->items.off, *end = q + d->items.len, *id;
+                size_t kn;
+                while ((kn = hol__field(&q, end, &id)) > 0)
+                    if (hol__put_question(s, id, kn, cp, put))
+                        return 1;
+                n += snprintf(line + n, sizeof line - (size_t)n, " %.*s", (int)d->items.len,
+                              s->text + d->items.off);
+            }
+            if (n < 0 || (size_t)n >= sizeof line || hol__put_line(cp, line, (size_t)n, -a->line))
+                return 1;
+        }
+    return 0;
+}
+
+/* The screen lines of level i after its text. 1 when they do not fit. */
+static int hol__put_screens(const hol_study *s, int c, int i, int position, hol__compose *cp)
+{
+    if (hol__put_asks(s, c, i, position, cp))
+        return 1;
+    const hol_study_span *a = hol__instr_of(s, c, i), *b = hol__closing_of(s, c, i, position);
+    if (a && hol__put_line(cp, s->text + a->off, a->len, -a->line))
+        return 1;
+    return b && hol__put_line(cp, s->text + b->off, b->len, -b->line);
+}
+
+/* The level file's lines but those a set line (or a screen line of the
+ * study's) replaces, the note, the set lines in force, the screens. 1 when
+ * it does not fit. c -1: a practice level (no set lines). */
+static int hol__compose_text(const hol_study *s, int c, int i, int position, const char *file,
+                             size_t len, hol__compose *cp)
+{
+    const hol_study_condition *cd = c >= 0 ? &s->conditions[c] : NULL;
     long fl = 0;
     for (const char *p = file, *end = file ? file + len : NULL; p && p < end;) {
         const char *nl = memchr(p, '\n', (size_t)(end - p));
@@ -524,10 +763,14 @@ static int hol__compose_text(const hol_study *s, int c, const char *file, size_t
         while (n && p[n - 1] == '\r')
             n--;
         size_t kn = hol__key(p, p + n, &k);
-        if (!(kn && hol__set_key(s, c, k, kn)) && hol__put_line(cp, p, n, fl))
+        int replaced = kn && ((c >= 0 && hol__set_key(s, c, k, kn)) ||
+                              hol__screen_key(s, c, i, position, k, kn));
+        if (!replaced && hol__put_line(cp, p, n, fl))
             return 1;
         p = nl ? nl + 1 : end;
     }
+    if (c < 0)
+        return hol__put_screens(s, c, i, position, cp);
     int used = 0;
     for (int j = 0; j < s->nsets; j++)
         used += hol__in_force(s, c, j);
@@ -545,7 +788,7 @@ static int hol__compose_text(const hol_study *s, int c, const char *file, size_t
     if (hol__set_key(s, c, "minimap", 7) && !s->allow_minimap_toggle &&
         hol__put_line(cp, "fixed minimap", 13, -cd->line))
         return 1;
-    return 0;
+    return hol__put_screens(s, c, i, position, cp);
 }
 
 /* A level error's lines, of the composed text, as the file's or the
@@ -578,18 +821,23 @@ hol_err hol_study_make_level(const hol_study *s, int i, int position, const char
     if (!name)
         name = cname;
     hol__compose cp = {buf, 0, sizeof buf, origin, 0, (long)(sizeof origin / sizeof origin[0])};
-    if (c >= 0 && hol__compose_text(s, c, file, len, &cp)) {
+    /* a practice level is the file as it is, unless it carries the
+     * practice's instructions */
+    int composed = c >= 0 || hol__instr_of(s, c, i);
+    long at = c >= 0 ? s->conditions[c].line : s->practice_instructions.line;
+    if (composed && hol__compose_text(s, c, i, position, file, len, &cp)) {
         *out_in_study = 1;
-        return hol__fail(err, HOL_ENOMEM, s->conditions[c].line, 0,
-                         "condition %s: its level with the set lines is longer than %d bytes",
-                         cname, HOL_LEVEL_TEXT_MAX);
+        return hol__fail(err, HOL_ENOMEM, at, 0,
+                         "%s %s: its level with the %s is longer than %d bytes",
+                         c >= 0 ? "condition" : "the", cname,
+                         c >= 0 ? "set lines" : "instructions", HOL_LEVEL_TEXT_MAX);
     }
-    const char *t = c >= 0 ? buf : file ? file : "";
-    size_t tl = c >= 0 ? cp.n : file ? len : 0;
+    const char *t = composed ? buf : file ? file : "";
+    size_t tl = composed ? cp.n : file ? len : 0;
     hol_err e = hol_level_make(name, strlen(name), t, tl, out, err);
     if (e) {
-        if (c >= 0)
-            hol__map_err(&cp, s->conditions[c].line, err, out_in_study);
+        if (composed)
+            hol__map_err(&cp, at, err, out_in_study);
         return e;
     }
     snprintf(out->condition, sizeof out->condition, "%s", cname);

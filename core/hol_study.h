@@ -23,6 +23,31 @@
  *     allow minimap-toggle    before the first condition: a condition's
  *                             `set minimap` is where its levels start, and
  *                             the minimap key still moves it
+ *     instructions TEXT       once before the first condition (the
+ *                             practice's) and once in a condition (its):
+ *                             shown before the first level of the practice
+ *                             or the condition until confirm (a level line,
+ *                             hol_app_level.instructions: the rest of the
+ *                             line, printable ASCII, at most 6 lines of 46
+ *                             characters when wrapped; checked as a level
+ *                             line)
+ *     question ID ...         before the first condition: a questionnaire
+ *                             item (core/hol_ask.h: likert or choice)
+ *     questionnaire NAME ITEM...  before the first condition: a
+ *                             questionnaire of those items (question IDs)
+ *     questionnaire NAME after level|condition|study  before the first
+ *                             condition: asked after every level of the
+ *                             conditions, after each condition's last
+ *                             level, or after the participant's last
+ *                             level (NAME: one defined, or the presets
+ *                             ssq and tlx; at most HOL_APP_MAX_ASKS);
+ *                             the level carries it as `question` and
+ *                             `ask NAME WHEN ID...` level lines (after the
+ *                             set lines), so logs and recordings hold it
+ *     closing TEXT            once, before the first condition: the closing
+ *                             screen after the participant's last level
+ *                             (default: HOL_SESSION_CLOSING, which the
+ *                             session shows)
  *   NAME: 1..63 letters, digits, '.', '_', '-' (hol_rec_id_ok); condition
  *   names are unique and not "practice". LEVEL: a level file's path (one
  *   field, 1..255 bytes), relative to the study file's folder; the
@@ -37,8 +62,14 @@
  *   lines (those of a key the condition also sets left out), then the
  *   condition's, then `fixed minimap` when a set line in force gives
  *   `minimap` and the study has no `allow minimap-toggle` (the condition's
- *   minimap holds: the key says "fixed in this study"). With no set line
- *   the text is the file's, unchanged (the same SHA-256). Practice levels are the files as they are.
+ *   minimap holds: the key says "fixed in this study"). Then, on the
+ *   first level of the practice or of a condition with an `instructions`
+ *   line, that line (the file's own `instructions` lines left out), and on
+ *   the participant's last level (position = the number of conditions, the
+ *   condition's last level) the study's `closing` line (the file's own left
+ *   out). With none of these the text is the file's, unchanged (the same
+ *   SHA-256); practice levels are the files as they are but for their
+ *   instructions.
  * - Counterbalancing (hol_study_order, hol_study_square): participant
  *   number P (1, 2, ...) plays row (P - 1) mod R of the rule's square of
  *   the n conditions, R = hol_study_rows:
@@ -100,7 +131,23 @@ typedef struct hol_study_condition {
     long line;
     int first_level, nlevels; /* into hol_study.levels */
     int first_set, nsets;     /* into hol_study.sets */
+    hol_study_span instructions; /* its `instructions TEXT` line (len 0: none) */
 } hol_study_condition;
+
+/* Questionnaires of a study (docs/research.md "Questionnaires"). */
+#define HOL_STUDY_MAX_QUESTIONS HOL_APP_MAX_QUESTIONS
+#define HOL_STUDY_MAX_QUESTIONNAIRES 8
+
+typedef struct hol_study_questionnaire {
+    char name[HOL_APP_ID_MAX];
+    hol_study_span items;     /* its item IDs, blank separated */
+} hol_study_questionnaire;
+
+typedef struct hol_study_ask {
+    char name[HOL_APP_ID_MAX]; /* a questionnaire's, or ssq, tlx */
+    int when;                  /* hol_app_ask_when */
+    long line;
+} hol_study_ask;
 
 typedef struct hol_study {
     char name[HOL_REC_ID_MAX];
@@ -112,6 +159,16 @@ typedef struct hol_study {
     hol_study_span levels[HOL_STUDY_MAX_LEVELS]; /* LEVEL paths (len 0: a
                                                condition without a file) */
     int allow_minimap_toggle;               /* `allow minimap-toggle` */
+    hol_study_span practice_instructions;   /* `instructions TEXT` before the
+                                               first condition (len 0: none) */
+    hol_study_span closing;                 /* `closing TEXT` (len 0: none) */
+    int nquestions;                         /* `question` lines */
+    hol_study_span questions[HOL_STUDY_MAX_QUESTIONS];
+    char question_ids[HOL_STUDY_MAX_QUESTIONS][HOL_APP_ID_MAX];
+    int nquestionnaires;                    /* `questionnaire NAME ITEM...` */
+    hol_study_questionnaire questionnaires[HOL_STUDY_MAX_QUESTIONNAIRES];
+    int nasks;                              /* `questionnaire NAME after WHEN` */
+    hol_study_ask asks[HOL_APP_MAX_ASKS];
     int nglobal;                            /* sets[0..nglobal-1]: the study's */
     int nsets;
     hol_study_span sets[HOL_STUDY_MAX_SETS]; /* "KEY VALUE..." */

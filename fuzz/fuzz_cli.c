@@ -12,7 +12,8 @@
  * - 1: a level file (core/hol_level.h, hol_level_parse and hol_level_make).
  *   Checks: accepted, the level's fields are in range (mode, 1..5 keys,
  *   time limit, stages, at most 32 placements, the geometry: tiling 4..8,
- *   room 3..5 a side, a cell 0.5..1.5 m that prints back to itself), the
+ *   room 3..5 a side, a cell 0.5..1.5 m that prints back to itself, a
+ *   `point` question only in a mode with its target), the
  *   kept text (LF line
  *   ends) parses to the same level and its hash is its text's; refused,
  *   the typed error names a line of the file (and a conflict another).
@@ -104,6 +105,31 @@ static void check_level(const char *text, size_t len)
         CHECK(L.room_cols == 0 || (L.room_cols >= 3 && L.room_cols <= 5 && L.room_rows >= 3 &&
                                    L.room_rows <= 5));
         CHECK(L.cell_m == 0 || (L.cell_m >= 0.5 && L.cell_m <= 1.5));
+        /* a pointing question only where it has a target */
+        CHECK(L.point >= 0 && L.point <= HOL_APP_POINT_OBJECTIVE);
+        CHECK(!L.point || L.mode != HOL_APP_TUTORIAL);
+        CHECK(L.point != HOL_APP_POINT_OBJECTIVE || L.mode == HOL_APP_FLAG ||
+              L.mode == HOL_APP_KEYS);
+        /* questionnaires: asks within the items, items well formed; screens
+         * of printable text */
+        CHECK(L.nasks >= 0 && L.nasks <= HOL_APP_MAX_ASKS);
+        CHECK(L.nquestions >= 0 && L.nquestions <= HOL_APP_MAX_QUESTIONS);
+        for (int k = 0; k < L.nasks; k++)
+            CHECK(L.asks[k].n > 0 && L.asks[k].first >= 0 &&
+                  L.asks[k].first + L.asks[k].n <= L.nquestions && L.asks[k].when >= 0 &&
+                  L.asks[k].when <= 2);
+        for (int k = 0; k < L.nquestions; k++) {
+            const hol_app_question *q = &L.questions[k];
+            CHECK(q->id[0] && q->text[0]);
+            if (q->kind == HOL_APP_LIKERT)
+                CHECK(q->lo < q->hi && q->hi <= 100 && q->step >= 1 &&
+                      (q->hi - q->lo) / q->step + 1 <= HOL_APP_MAX_SCALE);
+            else
+                CHECK(q->kind == HOL_APP_CHOICE && q->nchoices >= 2 &&
+                      q->nchoices <= HOL_APP_MAX_CHOICES);
+        }
+        CHECK(hol_app_wrap(L.instructions, HOL_APP_SCREEN_COLS, NULL, 0) <= HOL_APP_SCREEN_LINES);
+        CHECK(hol_app_wrap(L.closing, HOL_APP_SCREEN_COLS, NULL, 0) <= HOL_APP_SCREEN_LINES);
         if (L.cell_m > 0) { /* the cell size prints back to itself */
             char c[16];
             double again_m = 0;

@@ -263,7 +263,7 @@ static void test_refusals(void **state)
          "line 2: condition 'a,b' is not 1..63 letters, digits, '.', '_', '-'"},
         {"study s\nconditions a\n",
          "line 2: unknown key 'conditions' (study, counterbalance, practice, condition, level, "
-         "set, allow)"},
+         "set, allow, instructions, closing, question, questionnaire)"},
         {"study s\nallow minimap\ncondition a\n",
          "line 2: allow 'minimap' is not minimap-toggle"},
         {"study s\ncondition a\nallow minimap-toggle\n",
