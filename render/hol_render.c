@@ -81,9 +81,12 @@ struct hol_render {
     hol_gl gl;
     hol_scene *scene;
     GLuint vao[2], vbo[2], ibo[2]; /* [0] static, [1] dynamic */
-    hol__prog progs[4]; /* [0] day (the picture without lights), [1] lit
+    hol__prog progs[8]; /* [0] day (the picture without lights), [1] lit
                            tiles, [2] lit room meshes (no tile code), [3]
-                           lit tiles of the flat {4,4} */
+                           lit tiles of the flat {4,4}; [4 + k] the same
+                           able to discard outside a branch's wedge (the
+                           others have no discard, so llvmpipe tests depth
+                           before shading) */
     hol__prog *pg;      /* this frame's */
     hol_light_frame lights; /* this frame's (at dusk and night) */
     hol_mesh dyn;     /* per-frame geometry */
@@ -200,12 +203,14 @@ static const char *hol__fs =
     "}\n"
     "#endif\n"
     "void main() {\n"
+    "#if HOL_WEDGE\n"
     "  if (u_wmode == 1) {\n"
     "    vec2 d = v_wpos.xz - u_eye.xz;\n"
     "    float e = -1e-4 * length(d);\n"
     "    if (u_wedge.x * d.y - u_wedge.y * d.x < e ||\n"
     "        d.x * u_wedge.w - d.y * u_wedge.z < e) discard;\n"
     "  }\n"
+    "#endif\n"
     "  if (u_mode == 1) {\n"
     "    o_col = v_col.a > 0.5 ? u_id : vec4(0.0, 0.0, 0.0, 1.0);\n"
     "    return;\n"
@@ -270,15 +275,16 @@ static GLuint hol__shader(const hol_gl *gl, GLenum type, int n, const char *cons
     return s;
 }
 
-/* Program k: the day shader (lit 0: exactly the picture before lights)
- * or the lit one (dusk and night); 0 ok. */
-static int hol__make_prog(hol_render *r, hol__prog *pg, int lit)
+/* Program k (struct hol_render's progs): the day shader (exactly the
+ * picture before lights) or a lit one (dusk and night); 0 ok. */
+static int hol__make_prog(hol_render *r, hol__prog *pg, int k)
 {
-    static const char *const pre[4] = {"#version 300 es\n#define HOL_LIT 0\n#define HOL_FLAT 0\n",
-                                       "#version 300 es\n#define HOL_LIT 1\n#define HOL_FLAT 0\n",
-                                       "#version 300 es\n#define HOL_LIT 2\n#define HOL_FLAT 0\n",
-                                       "#version 300 es\n#define HOL_LIT 1\n#define HOL_FLAT 1\n"};
-    const char *fsrc[2] = {pre[lit], hol__fs};
+    char pre[] = "#version 300 es\n#define HOL_LIT 0\n#define HOL_FLAT 0\n#define HOL_WEDGE 0\n";
+    static const char lit[4] = {'0', '1', '2', '1'};
+    pre[sizeof "#version 300 es\n#define HOL_LIT " - 1] = lit[k % 4];
+    pre[sizeof "#version 300 es\n#define HOL_LIT 0\n#define HOL_FLAT " - 1] = k % 4 == 3 ? '1' : '0';
+    pre[sizeof pre - 3] = k >= 4 ? '1' : '0';
+    const char *fsrc[2] = {pre, hol__fs};
     const char *vsrc[2] = {fsrc[0], hol__vs};
     GLuint vs = hol__shader(&r->gl, GL_VERTEX_SHADER, 2, vsrc);
     GLuint fs = hol__shader(&r->gl, GL_FRAGMENT_SHADER, 2, fsrc);
@@ -307,8 +313,8 @@ static int hol__make_prog(hol_render *r, hol__prog *pg, int lit)
                     &pg->u_fog, &pg->u_fogd, &pg->u_lin, &pg->u_wedge, &pg->u_wmode,
                     &pg->u_light, &pg->u_klein, &pg->u_mpu2, &pg->u_lh, &pg->u_tl,
                     &pg->u_eyeh, &pg->u_amb, &pg->u_sun, &pg->u_lcol, &pg->u_lonly};
-    for (size_t k = 0; k < sizeof loc / sizeof loc[0]; k++)
-        *loc[k] = r->gl.GetUniformLocation(pg->prog, names[k]);
+    for (size_t i = 0; i < sizeof loc / sizeof loc[0]; i++)
+        *loc[i] = r->gl.GetUniformLocation(pg->prog, names[i]);
     return 0;
 }
 
@@ -343,8 +349,10 @@ hol_err hol_render_create(const hol_render_desc *desc, hol_render **out)
         hol_alloc_release(&d.alloc, r);
         return gerr;
     }
-    if (hol__make_prog(r, &r->progs[0], 0) || hol__make_prog(r, &r->progs[1], 1) ||
-        hol__make_prog(r, &r->progs[2], 2) || hol__make_prog(r, &r->progs[3], 3)) {
+    int bad = 0;
+    for (int k = 0; k < 8; k++)
+        bad = bad || hol__make_prog(r, &r->progs[k], k);
+    if (bad) {
         hol_render_destroy(r);
         return HOL_EUNSUPPORTED;
     }
@@ -389,7 +397,7 @@ void hol_render_destroy(hol_render *r)
 {
     if (!r)
         return;
-    for (int k = 0; k < 4; k++)
+    for (int k = 0; k < 8; k++)
         if (r->progs[k].prog)
             r->gl.DeleteProgram(r->progs[k].prog);
     if (r->vao[0])
@@ -1033,10 +1041,14 @@ static void hol__frame_lights(hol_render *r, const hol_frame_desc *f)
     r->gl.Uniform3f(r->pg->u_lcol, 3.0f, 2.25f, 1.25f);
 }
 
-/* The lit tiles' program of this frame: hyperbolic or flat. */
-static int hol__tile_prog(const hol_render *r)
+/* This frame's program of a kind (0 day, 1 lit tiles, 2 lit room): the
+ * lit tiles' hyperbolic or flat, with the wedge's discard when the view
+ * has wedges. */
+static hol__prog *hol__prog_of(hol_render *r, int kind)
 {
-    return r->lights.flat ? 3 : 1;
+    if (kind == 1 && r->lights.flat)
+        kind = 3;
+    return &r->progs[kind + (r->view.wedges ? 4 : 0)];
 }
 
 /* Clear the frame (sky, or black for IDs), upload this frame's dynamic
@@ -1081,7 +1093,7 @@ static void hol__frame_begin(hol_render *r, const hol_frame_desc *f, float vp[16
      * at dusk and night the room's then the tiles' (current at the end) */
     int first = f->lighting ? 2 : 0, last = f->lighting ? 1 : 0;
     for (int k = first; k >= last; k--) {
-        r->pg = &r->progs[k == 1 ? hol__tile_prog(r) : k];
+        r->pg = hol__prog_of(r, k);
         r->gl.UseProgram(r->pg->prog);
         r->gl.Uniform3f(r->pg->u_eye, (float)f->cam.eye[0], (float)f->cam.eye[1],
                         (float)f->cam.eye[2]);
@@ -1103,7 +1115,7 @@ static void hol__set_pass(hol_render *r, const hol_frame_desc *f, int pass, cons
     float ident[16];
     hol__identity(ident);
     if (f->lighting) { /* the room's meshes: the program without tile code */
-        hol__prog *want = &r->progs[pass == HOL__PASS_ROOM ? 2 : hol__tile_prog(r)];
+        hol__prog *want = hol__prog_of(r, pass == HOL__PASS_ROOM ? 2 : 1);
         if (want != r->pg) {
             r->pg = want;
             r->gl.UseProgram(want->prog);
