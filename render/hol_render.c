@@ -73,7 +73,7 @@ typedef struct hol__item {
 typedef struct hol__prog {
     GLuint prog;
     GLint u_vp, u_model, u_mode, u_id, u_eye, u_fog, u_fogd, u_lin, u_wedge, u_wmode;
-    GLint u_light, u_klein, u_mpu2, u_lh, u_tl, u_eyeh, u_amb, u_sun, u_lcol, u_lonly;
+    GLint u_light, u_klein, u_mpu2, u_tl, u_eyeh, u_lonly;
 } hol__prog;
 
 struct hol_render {
@@ -81,12 +81,14 @@ struct hol_render {
     hol_gl gl;
     hol_scene *scene;
     GLuint vao[2], vbo[2], ibo[2]; /* [0] static, [1] dynamic */
-    hol__prog progs[8]; /* [0] day (the picture without lights), [1] lit
-                           tiles, [2] lit room meshes (no tile code), [3]
-                           lit tiles of the flat {4,4}; [4 + k] the same
-                           able to discard outside a branch's wedge (the
-                           others have no discard, so llvmpipe tests depth
-                           before shading) */
+    hol__prog progs[16]; /* [0] day (the picture without lights), [1] lit
+                            tiles, [2] lit room meshes (no tile code), [3]
+                            lit tiles of the flat {4,4}; [4 + k] the same
+                            able to discard outside a branch's wedge (the
+                            others have no discard, so llvmpipe tests depth
+                            before shading); [8 + k] the lit ones at night
+                            ([k] at dusk: the sky's colours are constants,
+                            uniforms cost llvmpipe a load per pixel) */
     hol__prog *pg;      /* this frame's */
     hol_light_frame lights; /* this frame's (at dusk and night) */
     hol_mesh dyn;     /* per-frame geometry */
@@ -123,12 +125,13 @@ static const char *hol__vs =
     "out vec4 v_col;\n"
     "out vec3 v_wpos;\n"
     "#if HOL_LIT\n"
-    "out vec3 v_loc;\n"
+    "uniform float u_klein;\n"
+    "out vec3 v_loc;\n" /* the Klein point (x, y) of a tile's floor, height */
     "#endif\n"
     "void main() {\n"
     "  vec4 w = u_model * vec4(a_pos, 1.0);\n"
     "#if HOL_LIT\n"
-    "  v_loc = a_pos;\n"
+    "  v_loc = vec3(a_pos.x * u_klein, a_pos.y, -a_pos.z * u_klein);\n"
     "#endif\n"
     "  v_wpos = w.xyz;\n"
     "  v_nrm = mat3(u_model) * a_nrm;\n"
@@ -159,16 +162,18 @@ static const char *hol__fs =
     "in vec3 v_loc;\n"
     "uniform int u_light;\n"
     "uniform int u_lonly;\n"
-    "uniform float u_klein;\n"
     "uniform float u_mpu2;\n"
-    "uniform float u_lh;\n"
     "uniform float u_eyeh;\n"
     /* the tile's four light slots and the eye, in the tile's own frame
      * (hol__item_lights): the x, y, z of lights 0..3, then the eye's */
     "uniform vec4 u_tl[4];\n"
-    "uniform vec3 u_amb;\n"
-    "uniform vec3 u_sun;\n"
-    "uniform vec3 u_lcol;\n"
+    /* the sky (docs/rendering.md#lighting): ambient, sun and lantern colours */
+    "#if HOL_NIGHT\n"
+    "const vec3 u_amb = vec3(0.07, 0.08, 0.13), u_sun = vec3(0.05, 0.06, 0.10);\n"
+    "#else\n"
+    "const vec3 u_amb = vec3(0.30, 0.26, 0.28), u_sun = vec3(0.28, 0.17, 0.11);\n"
+    "#endif\n"
+    "const vec3 u_lcol = vec3(3.0, 2.25, 1.25);\n"
     "#endif\n"
     "out vec4 o_col;\n"
     "vec4 hol_out(vec3 c) {\n"
@@ -238,14 +243,14 @@ static const char *hol__fs =
     "  float lam = 0.0, de2 = dot(toeye, toeye);\n"
     "#if HOL_LIT == 1\n"
     "  if (u_light == 1) {\n"
-    "    vec2 k = vec2(v_loc.x, -v_loc.z) * u_klein;\n"
+    "    vec2 k = v_loc.xz;\n"
     "    float kk = dot(k, k);\n"
     "#if HOL_FLAT\n"
     "    float g = 1.0, o = kk;\n"
     "#else\n"
     "    float g = inversesqrt(max(1.0 - kk, 1e-6)), o = -2.0;\n"
     "#endif\n"
-    "    lam = hol_lights(k, 2.0 * g, o, u_lh - v_loc.y, n.y);\n"
+    "    lam = hol_lights(k, 2.0 * g, o, " HOL__STR(HOL_LIGHT_HEIGHT_M) " - v_loc.y, n.y);\n"
     /* fog: the chord 2 sinh(x/2) of the floor distance x (a function of
      * the true distance, within 4 % of it to 3 m; no log per pixel) */
     "    float ce2 = max(2.0 * g * (u_tl[3].z - k.x * u_tl[3].x - k.y * u_tl[3].y) + o, 0.0);\n"
@@ -282,11 +287,14 @@ static GLuint hol__shader(const hol_gl *gl, GLenum type, int n, const char *cons
  * picture before lights) or a lit one (dusk and night); 0 ok. */
 static int hol__make_prog(hol_render *r, hol__prog *pg, int k)
 {
-    char pre[] = "#version 300 es\n#define HOL_LIT 0\n#define HOL_FLAT 0\n#define HOL_WEDGE 0\n";
+    char pre[] = "#version 300 es\n#define HOL_LIT 0\n#define HOL_FLAT 0\n#define HOL_WEDGE 0\n"
+                 "#define HOL_NIGHT 0\n";
     static const char lit[4] = {'0', '1', '2', '1'};
     pre[sizeof "#version 300 es\n#define HOL_LIT " - 1] = lit[k % 4];
     pre[sizeof "#version 300 es\n#define HOL_LIT 0\n#define HOL_FLAT " - 1] = k % 4 == 3 ? '1' : '0';
-    pre[sizeof pre - 3] = k >= 4 ? '1' : '0';
+    pre[sizeof "#version 300 es\n#define HOL_LIT 0\n#define HOL_FLAT 0\n#define HOL_WEDGE " - 1] =
+        k % 8 >= 4 ? '1' : '0';
+    pre[sizeof pre - 3] = k >= 8 ? '1' : '0';
     const char *fsrc[2] = {pre, hol__fs};
     const char *vsrc[2] = {fsrc[0], hol__vs};
     GLuint vs = hol__shader(&r->gl, GL_VERTEX_SHADER, 2, vsrc);
@@ -310,12 +318,12 @@ static int hol__make_prog(hol_render *r, hol__prog *pg, int k)
         return 1;
     static const char *const names[] = {"u_vp", "u_model", "u_mode", "u_id", "u_eye",
                                         "u_fog", "u_fogd", "u_lin", "u_wedge", "u_wmode",
-                                        "u_light", "u_klein", "u_mpu2", "u_lh", "u_tl",
-                                        "u_eyeh", "u_amb", "u_sun", "u_lcol", "u_lonly"};
+                                        "u_light", "u_klein", "u_mpu2", "u_tl", "u_eyeh",
+                                        "u_lonly"};
     GLint *loc[] = {&pg->u_vp, &pg->u_model, &pg->u_mode, &pg->u_id, &pg->u_eye,
                     &pg->u_fog, &pg->u_fogd, &pg->u_lin, &pg->u_wedge, &pg->u_wmode,
-                    &pg->u_light, &pg->u_klein, &pg->u_mpu2, &pg->u_lh, &pg->u_tl,
-                    &pg->u_eyeh, &pg->u_amb, &pg->u_sun, &pg->u_lcol, &pg->u_lonly};
+                    &pg->u_light, &pg->u_klein, &pg->u_mpu2, &pg->u_tl, &pg->u_eyeh,
+                    &pg->u_lonly};
     for (size_t i = 0; i < sizeof loc / sizeof loc[0]; i++)
         *loc[i] = r->gl.GetUniformLocation(pg->prog, names[i]);
     return 0;
@@ -353,8 +361,9 @@ hol_err hol_render_create(const hol_render_desc *desc, hol_render **out)
         return gerr;
     }
     int bad = 0;
-    for (int k = 0; k < 8; k++)
-        bad = bad || hol__make_prog(r, &r->progs[k], k);
+    for (int k = 0; k < 16; k++)
+        if (k % 4 || k < 8) /* day has no night variant */
+            bad = bad || hol__make_prog(r, &r->progs[k], k);
     if (bad) {
         hol_render_destroy(r);
         return HOL_EUNSUPPORTED;
@@ -400,7 +409,7 @@ void hol_render_destroy(hol_render *r)
 {
     if (!r)
         return;
-    for (int k = 0; k < 8; k++)
+    for (int k = 0; k < 16; k++)
         if (r->progs[k].prog)
             r->gl.DeleteProgram(r->progs[k].prog);
     if (r->vao[0])
@@ -1028,29 +1037,21 @@ static float hol__sky(const hol_frame_desc *f, float rgb[3])
 static void hol__frame_lights(hol_render *r, const hol_frame_desc *f)
 {
     const hol_light_frame *lf = &r->lights;
-    int night = f->lighting == HOL_RENDER_NIGHT;
     r->gl.Uniform1i(r->pg->u_lonly, (f->flags & HOL_RENDER_LIGHT_ONLY) != 0);
     r->gl.Uniform1f(r->pg->u_klein, (float)lf->klein);
     r->gl.Uniform1f(r->pg->u_mpu2, (float)(lf->metres_per_unit * lf->metres_per_unit));
-    r->gl.Uniform1f(r->pg->u_lh, (float)HOL_LIGHT_HEIGHT_M);
     r->gl.Uniform1f(r->pg->u_eyeh, (float)lf->eye_h);
-    if (night) {
-        r->gl.Uniform3f(r->pg->u_amb, 0.07f, 0.08f, 0.13f);
-        r->gl.Uniform3f(r->pg->u_sun, 0.05f, 0.06f, 0.10f);
-    } else {
-        r->gl.Uniform3f(r->pg->u_amb, 0.30f, 0.26f, 0.28f);
-        r->gl.Uniform3f(r->pg->u_sun, 0.28f, 0.17f, 0.11f);
-    }
-    r->gl.Uniform3f(r->pg->u_lcol, 3.0f, 2.25f, 1.25f);
 }
 
 /* This frame's program of a kind (0 day, 1 lit tiles, 2 lit room): the
  * lit tiles' hyperbolic or flat, with the wedge's discard when the view
  * has wedges. */
-static hol__prog *hol__prog_of(hol_render *r, int kind)
+static hol__prog *hol__prog_of(hol_render *r, const hol_frame_desc *f, int kind)
 {
     if (kind == 1 && r->lights.flat)
         kind = 3;
+    if (kind && f->lighting == HOL_RENDER_NIGHT)
+        kind += 8;
     return &r->progs[kind + (r->view.wedges ? 4 : 0)];
 }
 
@@ -1096,7 +1097,7 @@ static void hol__frame_begin(hol_render *r, const hol_frame_desc *f, float vp[16
      * at dusk and night the room's then the tiles' (current at the end) */
     int first = f->lighting ? 2 : 0, last = f->lighting ? 1 : 0;
     for (int k = first; k >= last; k--) {
-        r->pg = hol__prog_of(r, k);
+        r->pg = hol__prog_of(r, f, k);
         r->gl.UseProgram(r->pg->prog);
         r->gl.Uniform3f(r->pg->u_eye, (float)f->cam.eye[0], (float)f->cam.eye[1],
                         (float)f->cam.eye[2]);
@@ -1118,7 +1119,7 @@ static void hol__set_pass(hol_render *r, const hol_frame_desc *f, int pass, cons
     float ident[16];
     hol__identity(ident);
     if (f->lighting) { /* the room's meshes: the program without tile code */
-        hol__prog *want = hol__prog_of(r, pass == HOL__PASS_ROOM ? 2 : 1);
+        hol__prog *want = hol__prog_of(r, f, pass == HOL__PASS_ROOM ? 2 : 1);
         if (want != r->pg) {
             r->pg = want;
             r->gl.UseProgram(want->prog);
