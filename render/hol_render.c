@@ -128,10 +128,22 @@ static const char *hol__vs =
     "uniform float u_klein;\n"
     "out vec3 v_loc;\n" /* the Klein point (x, y) of a tile's floor, height */
     "#endif\n"
+    /* the tile's four light slots and the eye, in the tile's own frame
+     * (hol__item_lights): the x, y, z of lights 0..3, then the eye's; L =
+     * l.z - k.l.xy is affine in the vertex, so interpolation is exact */
+    "#if HOL_LIT == 1\n"
+    "uniform vec4 u_tl[4];\n"
+    "out vec4 v_L;\n"
+    "out float v_Le;\n"
+    "#endif\n"
     "void main() {\n"
     "  vec4 w = u_model * vec4(a_pos, 1.0);\n"
     "#if HOL_LIT\n"
     "  v_loc = vec3(a_pos.x * u_klein, a_pos.y, -a_pos.z * u_klein);\n"
+    "#endif\n"
+    "#if HOL_LIT == 1\n"
+    "  v_L = u_tl[2] - v_loc.x * u_tl[0] - v_loc.z * u_tl[1];\n"
+    "  v_Le = u_tl[3].z - v_loc.x * u_tl[3].x - v_loc.z * u_tl[3].y;\n"
     "#endif\n"
     "  v_wpos = w.xyz;\n"
     "  v_nrm = mat3(u_model) * a_nrm;\n"
@@ -164,9 +176,10 @@ static const char *hol__fs =
     "uniform int u_lonly;\n"
     "uniform float u_mpu2;\n"
     "uniform float u_eyeh;\n"
-    /* the tile's four light slots and the eye, in the tile's own frame
-     * (hol__item_lights): the x, y, z of lights 0..3, then the eye's */
-    "uniform vec4 u_tl[4];\n"
+    "#if HOL_LIT == 1\n"
+    "in vec4 v_L;\n"
+    "in float v_Le;\n"
+    "#endif\n"
     /* the sky (docs/rendering.md#lighting): ambient, sun and lantern colours */
     "#if HOL_NIGHT\n"
     "const vec3 u_amb = vec3(0.07, 0.08, 0.13), u_sun = vec3(0.05, 0.06, 0.10);\n"
@@ -189,8 +202,7 @@ static const char *hol__fs =
      * c^2 = 2 (cosh x - 1) = 2 g L - 2, sinh x = sqrt(c^2 (1 + c^2/4)),
      * x = log(cosh x + sinh x); flat: the slot's z is |l|^2/2 and
      * c^2 = |k - l|^2 = 2 L + |k|^2, x = c */
-    "float hol_lights(vec2 k, float g2, float o, float dh, float nup) {\n"
-    "  vec4 L = u_tl[2] - k.x * u_tl[0] - k.y * u_tl[1];\n"
+    "float hol_lights(vec4 L, float g2, float o, float dh, float nup) {\n"
     "  vec4 c2 = max(g2 * L + o, 0.0);\n"
     "#if HOL_FLAT\n"
     "  vec4 d2 = c2 * u_mpu2 + dh * dh;\n"
@@ -250,10 +262,10 @@ static const char *hol__fs =
     "#else\n"
     "    float g = inversesqrt(max(1.0 - kk, 1e-6)), o = -2.0;\n"
     "#endif\n"
-    "    lam = hol_lights(k, 2.0 * g, o, " HOL__STR(HOL_LIGHT_HEIGHT_M) " - v_loc.y, n.y);\n"
+    "    lam = hol_lights(v_L, 2.0 * g, o, " HOL__STR(HOL_LIGHT_HEIGHT_M) " - v_loc.y, n.y);\n"
     /* fog: the chord 2 sinh(x/2) of the floor distance x (a function of
      * the true distance, within 4 % of it to 3 m; no log per pixel) */
-    "    float ce2 = max(2.0 * g * (u_tl[3].z - k.x * u_tl[3].x - k.y * u_tl[3].y) + o, 0.0);\n"
+    "    float ce2 = max(2.0 * g * v_Le + o, 0.0);\n"
     "    float dh = u_eyeh - v_loc.y;\n"
     "    de2 = ce2 * u_mpu2 + dh * dh;\n"
     "  }\n"
