@@ -107,7 +107,9 @@ enum hol_app_minimap_place { HOL_MINIMAP_HUD = 0, HOL_MINIMAP_HAND = 1, HOL_MINI
  * 0 step onto the marked tile one step ahead (room north);
  * 1 walk round a tree: back in the cell where the lesson began, after at
  *   least 4 steps, on another tile (holonomy);
- * 2 reach a marker two tiles ahead, reading the minimap;
+ * 2 reach a marker two tiles away in a straight line the room allows
+ *   (room north, else west, east, south; two ahead if none fits), reading
+ *   the minimap;
  * 3 find a flag three tiles away (ahead, ahead, left), every cue on.
  * Targets are placed relative to where the lesson begins; the level is done
  * after the last. Each lesson done says so on the HUD for 6 s of level time
