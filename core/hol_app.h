@@ -88,6 +88,8 @@ enum hol_app_minimap_place { HOL_MINIMAP_HUD = 0, HOL_MINIMAP_HAND = 1, HOL_MINI
 #define HOL_APP_MAX_OBJECTIVES 8
 #define HOL_APP_PATH_MAX 64
 #define HOL_APP_TEXT_MAX 48
+/* The tutorial's feedback line the first time the path cue shows. */
+#define HOL_APP_PATH_TEXT "Map line: the fewest steps to the marker"
 #define HOL_APP_HUD_LINES 6
 #define HOL_APP_MAX_MARKS 2
 /* Most room steps one app step reports (a frame's motion in sub-steps). */

@@ -999,6 +999,8 @@ static void test_tutorial_strayed(void **state)
         assert_int_equal(v->map.npath != 0, v->hud.stage_steps + v->hud.remaining > opt + 3);
     }
     assert_true(shown > 0);
+    /* the first time the path shows, one line says what it means */
+    assert_string_equal(v->hud.feedback, HOL_APP_PATH_TEXT);
     hol_app_destroy(app);
 }
 
