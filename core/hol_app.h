@@ -110,6 +110,8 @@ enum hol_app_minimap_place { HOL_MINIMAP_HUD = 0, HOL_MINIMAP_HAND = 1, HOL_MINI
 /* Seconds a headset's device shows which control opens the menu, from the
  * moment it is in use (hol_app_hud.hint: "Y: menu", "LEFT PINCH: menu"). */
 #define HOL_APP_MENU_HINT_S 10.0
+/* The tutorial's feedback line the first time the path cue shows. */
+#define HOL_APP_PATH_TEXT "Map line: the fewest steps to the marker"
 #define HOL_APP_HUD_LINES 6
 #define HOL_APP_MAX_MARKS 2
 /* Most room steps one app step reports (a frame's motion in sub-steps). */
@@ -129,7 +131,9 @@ enum hol_app_minimap_place { HOL_MINIMAP_HUD = 0, HOL_MINIMAP_HAND = 1, HOL_MINI
  * 0 step onto the marked tile one step ahead (room north);
  * 1 walk round a tree: back in the cell where the lesson began, after at
  *   least 4 steps, on another tile (holonomy);
- * 2 reach a marker two tiles ahead, reading the minimap;
+ * 2 reach a marker two tiles away in a straight line the room allows
+ *   (room north, else west, east, south; two ahead if none fits), reading
+ *   the minimap;
  * 3 find a flag three tiles away (ahead, ahead, left), every cue on.
  * Targets are placed relative to where the lesson begins; the level is done
  * after the last. Each lesson done says so on the HUD for 6 s of level time

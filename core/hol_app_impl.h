@@ -72,6 +72,7 @@ struct hol_app {
     double feedback_until;   /* level time the feedback shows until */
     int fixed_shown;         /* "Minimap fixed" was asked for ... */
     double fixed_until;      /* ... and shows until this input time */
+    int path_told;           /* the path cue's meaning said (tutorial) */
     int nmarks;              /* tiles marked on the minimap with it */
     hol_tile marks[HOL_APP_MAX_MARKS];
     /* pointing (level.point): the level's walk as SPEC 8 counts it */

@@ -24,6 +24,23 @@ static hol_tile hol__tile_ahead(const hol_room *r, const int *turns, int n)
     return ht.tile;
 }
 
+/* Lesson 3's marker: two tiles away in a straight line that the room
+ * allows (room north, else west, east, south: the first with two cells
+ * free), so the two tiles are two room steps, not a walk round the hedge;
+ * where no line fits (the centre of a 3 x 3 room, a level that begins
+ * with this lesson) two tiles ahead. */
+static hol_tile hol__two_ahead(const hol_room *r)
+{
+    static const int order[4] = {HOL_DIR_N, HOL_DIR_W, HOL_DIR_E, HOL_DIR_S};
+    static const int two[2] = {0, 0};
+    for (int i = 0; i < 4; i++) {
+        hol_room n = *r;
+        if (!hol_room_step(&n, order[i]) && !hol_room_step(&n, order[i]))
+            return n.tile;
+    }
+    return hol__tile_ahead(r, two, 2);
+}
+
 /* The first lesson at or after k that the level plays (HOL_APP_TUTORIAL_STAGES:
  * none left). */
 int hol__next_stage(const hol_app *app, int k)
@@ -38,7 +55,7 @@ int hol__next_stage(const hol_app *app, int k)
  * world marker on it. The caller plans the lesson's optimum. */
 void hol__stage(hol_app *app, int k, const hol_room *r)
 {
-    static const int one[1] = {0}, two[2] = {0, 0}, three[3] = {0, 0, 1};
+    static const int one[1] = {0}, three[3] = {0, 0, 1};
     app->stage = k;
     app->stage_start = *r;
     app->stage_steps = 0;
@@ -47,7 +64,7 @@ void hol__stage(hol_app *app, int k, const hol_room *r)
     if (k == 0)
         app->target = hol__tile_ahead(r, one, 1);
     else if (k == 2)
-        app->target = hol__tile_ahead(r, two, 2);
+        app->target = hol__two_ahead(r);
     else if (k == 3)
         app->target = hol__tile_ahead(r, three, 3);
     if (app->has_target) {

@@ -374,6 +374,13 @@ static void hol__fill_map(hol_app *app)
         m->npath = app->nwalk < HOL_APP_PATH_MAX ? app->nwalk : HOL_APP_PATH_MAX;
         memcpy(m->path, app->walk, (size_t)m->npath);
     }
+    if (tut && m->npath && !app->path_told) { /* the first time: what it means */
+        app->path_told = 1;
+        snprintf(app->feedback, sizeof app->feedback, "%s", HOL_APP_PATH_TEXT);
+        app->feedback_until = app->level_t + HOL__FEEDBACK_S;
+        app->nmarks = 0;
+        snprintf(v->hud.feedback, sizeof v->hud.feedback, "%s", HOL_APP_PATH_TEXT);
+    }
 }
 
 /* The level's sky and lights: its placed lanterns, then (cue lantern) one

@@ -33,9 +33,12 @@
  *   square of the ray-marchers' default, so the forest stays readable.
  * - A surface at height h with normal n lit by a lantern at height L gets
  *   F(d) (0.3 + 0.7 max(n_y, 0) max(L - h, 0) / d); the shader sums the
- *   tile's lights (render/hol_render.c). It takes x and sinh x from the
- *   chord c (x = 2 asinh(c/2), sinh x = c sqrt(1 + c^2/4)) and the window
- *   and inverse square from d^2: the same numbers, fewer transcendentals.
+ *   tile's lights (render/hol_render.c). It gets them in the tile's own
+ *   frame (the renderer applies the inverse of hol_light_tile's frame), so
+ *   for the fragment's Klein point K, cosh x = (l_z - K.l_xy) /
+ *   sqrt(1 - |K|^2), the first factor affine in the mesh (the vertex
+ *   shader's); sinh x = sqrt(cosh^2 x - 1) by the chord, x = log(cosh x +
+ *   sinh x), the window and inverse square from d^2: the same numbers.
  * - A lantern hangs HOL_LIGHT_HEIGHT_M over its tile's centre.
  * - Which lights: hol_light_tile gives a tile up to HOL_LIGHT_PER_TILE
  *   lanterns, the nearest to its centre among those whose floor distance to

@@ -64,8 +64,7 @@ typedef struct hol__item {
     int16_t branch;
     float wedge[4]; /* w0, w1 (x, z) when the view has wedges */
     int8_t nl;      /* lit tiles: lights (-1: no hyperbolic frame) */
-    float hf[9];    /* the tile's frame in the user's (column-major) */
-    float lp[HOL_LIGHT_PER_TILE][4]; /* its lights: point, height */
+    float tl[4][4]; /* u_tl: its lights and the eye in the tile's own frame */
     uint32_t first, count; /* index range */
     float model[16];
 } hol__item;
@@ -74,8 +73,7 @@ typedef struct hol__item {
 typedef struct hol__prog {
     GLuint prog;
     GLint u_vp, u_model, u_mode, u_id, u_eye, u_fog, u_fogd, u_lin, u_wedge, u_wmode;
-    GLint u_light, u_flat, u_klein, u_mpu, u_hf, u_eyep, u_nl, u_lp, u_amb, u_sun, u_lcol,
-        u_lonly, u_cmax;
+    GLint u_light, u_klein, u_mpu2, u_tl, u_eyeh, u_lonly;
 } hol__prog;
 
 struct hol_render {
@@ -83,8 +81,14 @@ struct hol_render {
     hol_gl gl;
     hol_scene *scene;
     GLuint vao[2], vbo[2], ibo[2]; /* [0] static, [1] dynamic */
-    hol__prog progs[3]; /* [0] day (the picture without lights), [1] lit
-                           tiles, [2] lit room meshes (no tile code) */
+    hol__prog progs[16]; /* [0] day (the picture without lights), [1] lit
+                            tiles, [2] lit room meshes (no tile code), [3]
+                            lit tiles of the flat {4,4}; [4 + k] the same
+                            able to discard outside a branch's wedge (the
+                            others have no discard, so llvmpipe tests depth
+                            before shading); [8 + k] the lit ones at night
+                            ([k] at dusk: the sky's colours are constants,
+                            uniforms cost llvmpipe a load per pixel) */
     hol__prog *pg;      /* this frame's */
     hol_light_frame lights; /* this frame's (at dusk and night) */
     hol_mesh dyn;     /* per-frame geometry */
@@ -121,12 +125,25 @@ static const char *hol__vs =
     "out vec4 v_col;\n"
     "out vec3 v_wpos;\n"
     "#if HOL_LIT\n"
-    "out vec3 v_loc;\n"
+    "uniform float u_klein;\n"
+    "out vec3 v_loc;\n" /* the Klein point (x, y) of a tile's floor, height */
+    "#endif\n"
+    /* the tile's four light slots and the eye, in the tile's own frame
+     * (hol__item_lights): the x, y, z of lights 0..3, then the eye's; L =
+     * l.z - k.l.xy is affine in the vertex, so interpolation is exact */
+    "#if HOL_LIT == 1\n"
+    "uniform vec4 u_tl[4];\n"
+    "out vec4 v_L;\n"
+    "out float v_Le;\n"
     "#endif\n"
     "void main() {\n"
     "  vec4 w = u_model * vec4(a_pos, 1.0);\n"
     "#if HOL_LIT\n"
-    "  v_loc = a_pos;\n"
+    "  v_loc = vec3(a_pos.x * u_klein, a_pos.y, -a_pos.z * u_klein);\n"
+    "#endif\n"
+    "#if HOL_LIT == 1\n"
+    "  v_L = u_tl[2] - v_loc.x * u_tl[0] - v_loc.z * u_tl[1];\n"
+    "  v_Le = u_tl[3].z - v_loc.x * u_tl[3].x - v_loc.z * u_tl[3].y;\n"
     "#endif\n"
     "  v_wpos = w.xyz;\n"
     "  v_nrm = mat3(u_model) * a_nrm;\n"
@@ -156,18 +173,20 @@ static const char *hol__fs =
      * room's own meshes (no tile: ambient, fog by room distance) */
     "in vec3 v_loc;\n"
     "uniform int u_light;\n"
-    "uniform int u_flat;\n"
     "uniform int u_lonly;\n"
-    "uniform float u_klein;\n"
-    "uniform float u_mpu;\n"
-    "uniform float u_cmax;\n"
-    "uniform mat3 u_hf;\n"
-    "uniform vec4 u_eyep;\n"
-    "uniform int u_nl;\n"
-    "uniform vec4 u_lp[4];\n"
-    "uniform vec3 u_amb;\n"
-    "uniform vec3 u_sun;\n"
-    "uniform vec3 u_lcol;\n"
+    "uniform float u_mpu2;\n"
+    "uniform float u_eyeh;\n"
+    "#if HOL_LIT == 1\n"
+    "in vec4 v_L;\n"
+    "in float v_Le;\n"
+    "#endif\n"
+    /* the sky (docs/rendering.md#lighting): ambient, sun and lantern colours */
+    "#if HOL_NIGHT\n"
+    "const vec3 u_amb = vec3(0.07, 0.08, 0.13), u_sun = vec3(0.05, 0.06, 0.10);\n"
+    "#else\n"
+    "const vec3 u_amb = vec3(0.30, 0.26, 0.28), u_sun = vec3(0.28, 0.17, 0.11);\n"
+    "#endif\n"
+    "const vec3 u_lcol = vec3(3.0, 2.25, 1.25);\n"
     "#endif\n"
     "out vec4 o_col;\n"
     "vec4 hol_out(vec3 c) {\n"
@@ -177,39 +196,42 @@ static const char *hol__fs =
     "                  step(vec3(0.04045), c)), 1.0);\n"
     "}\n"
     "#if HOL_LIT\n"
-    /* the chord c = |p - l|_L gives x = 2 asinh(c/2) and sinh(x) =
-     * c sqrt(1 + c^2/4) with one sqrt and one log; a chord beyond u_cmax
-     * is farther than the radius on the floor alone */
-    "float hol_lights(vec3 p, float h, float nup) {\n"
-    "  float lam = 0.0;\n"
-    "  for (int i = 0; i < 4; i++) {\n"
-    "    if (i >= u_nl) break;\n"
-    "    vec3 dv = p - u_lp[i].xyz;\n"
-    "    float c2 = max(dot(dv.xy, dv.xy) - (u_flat == 1 ? 0.0 : dv.z * dv.z), 0.0);\n"
-    "    float c = sqrt(c2);\n"
-    "    if (c >= u_cmax) continue;\n"
-    "    float q = sqrt(1.0 + 0.25 * c2);\n"
-    "    float x = u_flat == 1 ? c : 2.0 * log(0.5 * c + q);\n"
-    "    float xm = x * u_mpu, dh = u_lp[i].w - h;\n"
-    "    float d2 = xm * xm + dh * dh;\n"
-    "    if (d2 >= " HOL__STR(HOL_LIGHT_RADIUS_M) " * " HOL__STR(HOL_LIGHT_RADIUS_M) ") continue;\n"
-    "    float u2 = d2 / (" HOL__STR(HOL_LIGHT_RADIUS_M) " * " HOL__STR(HOL_LIGHT_RADIUS_M) ");\n"
-    "    float w = (1.0 - u2) * (1.0 - u2);\n"
-    "    float s = (u_flat == 1 || c < 1e-4) ? 1.0 : x / (c * q);\n"
-    "    float f = w * (1.0 - " HOL__STR(HOL_LIGHT_PHYS) " + " HOL__STR(HOL_LIGHT_PHYS) " * s)"
-    " / (1.0 + d2 / (" HOL__STR(HOL_LIGHT_D0_M) " * " HOL__STR(HOL_LIGHT_D0_M) "));\n"
-    "    lam += f * (0.3 + 0.7 * max(nup, 0.0) * max(dh, 0.0) * inversesqrt(max(d2, 1e-8)));\n"
-    "  }\n"
-    "  return lam;\n"
+    /* all four slots at once (an empty slot lies far beyond the radius).
+     * k the fragment's Klein point; hyperbolic: g = 1/sqrt(1 - |k|^2) and
+     * cosh x = g L, L = -<(k, 1), l>_L = l.z - k.l.xy, so the squared chord
+     * c^2 = 2 (cosh x - 1) = 2 g L - 2, sinh x = sqrt(c^2 (1 + c^2/4)),
+     * x = log(cosh x + sinh x); flat: the slot's z is |l|^2/2 and
+     * c^2 = |k - l|^2 = 2 L + |k|^2, x = c */
+    "float hol_lights(vec4 L, float g2, float o, float dh, float nup) {\n"
+    "  vec4 c2 = max(g2 * L + o, 0.0);\n"
+    "#if HOL_FLAT\n"
+    "  vec4 d2 = c2 * u_mpu2 + dh * dh;\n"
+    "  vec4 den = 1.0 + d2 * (1.0 / (" HOL__STR(HOL_LIGHT_D0_M) " * " HOL__STR(HOL_LIGHT_D0_M) "));\n"
+    "  vec4 num = vec4(1.0);\n"
+    "#else\n"
+    /* s = x / sinh x as one quotient with the inverse square: (1 - B + B s)
+     * / (1 + d^2/D0^2) = ((1 - B) sh + B x) / (sh (1 + d^2/D0^2)), sh and x
+     * nudged by 1e-6 so that s is 1 at the light's foot */
+    "  vec4 sh = sqrt(c2 + 0.25 * c2 * c2) + 1e-6;\n"
+    "  vec4 x = log(1.0 + 0.5 * c2 + sh);\n"
+    "  vec4 d2 = x * x * u_mpu2 + dh * dh;\n"
+    "  vec4 num = (1.0 - " HOL__STR(HOL_LIGHT_PHYS) ") * sh + " HOL__STR(HOL_LIGHT_PHYS) " * x;\n"
+    "  vec4 den = sh * (1.0 + d2 * (1.0 / (" HOL__STR(HOL_LIGHT_D0_M) " * " HOL__STR(HOL_LIGHT_D0_M) ")));\n"
+    "#endif\n"
+    "  vec4 w = max(1.0 - d2 * (1.0 / (" HOL__STR(HOL_LIGHT_RADIUS_M) " * " HOL__STR(HOL_LIGHT_RADIUS_M) ")), 0.0);\n"
+    "  vec4 f = w * w * num / den;\n"
+    "  return dot(f, 0.3 + (0.7 * max(nup, 0.0) * max(dh, 0.0)) * inversesqrt(max(d2, 1e-8)));\n"
     "}\n"
     "#endif\n"
     "void main() {\n"
+    "#if HOL_WEDGE\n"
     "  if (u_wmode == 1) {\n"
     "    vec2 d = v_wpos.xz - u_eye.xz;\n"
     "    float e = -1e-4 * length(d);\n"
     "    if (u_wedge.x * d.y - u_wedge.y * d.x < e ||\n"
     "        d.x * u_wedge.w - d.y * u_wedge.z < e) discard;\n"
     "  }\n"
+    "#endif\n"
     "  if (u_mode == 1) {\n"
     "    o_col = v_col.a > 0.5 ? u_id : vec4(0.0, 0.0, 0.0, 1.0);\n"
     "    return;\n"
@@ -230,24 +252,25 @@ static const char *hol__fs =
     "  float f = exp(-dist * dist);\n"
     "  o_col = hol_out(mix(u_fog, c, f));\n"
     "#else\n"
-    "  float lam = 0.0, de = length(toeye);\n"
+    "  float lam = 0.0, de2 = dot(toeye, toeye);\n"
     "#if HOL_LIT == 1\n"
     "  if (u_light == 1) {\n"
-    "    vec2 k = vec2(v_loc.x, -v_loc.z) * u_klein;\n"
-    "    vec3 h = u_flat == 1 ? vec3(k, 1.0)\n"
-    "                         : vec3(k, 1.0) / sqrt(max(1.0 - dot(k, k), 1e-6));\n"
-    "    vec3 p = u_hf * h;\n"
-    "    if (u_nl > 0) lam = hol_lights(p, v_loc.y, n.y);\n"
+    "    vec2 k = v_loc.xz;\n"
+    "    float kk = dot(k, k);\n"
+    "#if HOL_FLAT\n"
+    "    float g = 1.0, o = kk;\n"
+    "#else\n"
+    "    float g = inversesqrt(max(1.0 - kk, 1e-6)), o = -2.0;\n"
+    "#endif\n"
+    "    lam = hol_lights(v_L, 2.0 * g, o, " HOL__STR(HOL_LIGHT_HEIGHT_M) " - v_loc.y, n.y);\n"
     /* fog: the chord 2 sinh(x/2) of the floor distance x (a function of
      * the true distance, within 4 % of it to 3 m; no log per pixel) */
-    "    vec3 ev = p - u_eyep.xyz;\n"
-    "    float ce = sqrt(max(dot(ev.xy, ev.xy) - (u_flat == 1 ? 0.0 : ev.z * ev.z), 0.0));\n"
-    "    float xe = ce * u_mpu, dh = u_eyep.w - v_loc.y;\n"
-    "    de = sqrt(xe * xe + dh * dh);\n"
+    "    float ce2 = max(2.0 * g * v_Le + o, 0.0);\n"
+    "    float dh = u_eyeh - v_loc.y;\n"
+    "    de2 = ce2 * u_mpu2 + dh * dh;\n"
     "  }\n"
     "#endif\n"
-    "  float fd = de * u_fogd;\n"
-    "  float f = exp(-fd * fd);\n"
+    "  float f = exp(-de2 * (u_fogd * u_fogd));\n"
     "  if (u_lonly == 1) {\n"
     "    o_col = vec4(min(lam, 1.0), f, 0.0, 1.0);\n"
     "    return;\n"
@@ -272,14 +295,19 @@ static GLuint hol__shader(const hol_gl *gl, GLenum type, int n, const char *cons
     return s;
 }
 
-/* Program k: the day shader (lit 0: exactly the picture before lights)
- * or the lit one (dusk and night); 0 ok. */
-static int hol__make_prog(hol_render *r, hol__prog *pg, int lit)
+/* Program k (struct hol_render's progs): the day shader (exactly the
+ * picture before lights) or a lit one (dusk and night); 0 ok. */
+static int hol__make_prog(hol_render *r, hol__prog *pg, int k)
 {
-    static const char *const pre[3] = {"#version 300 es\n#define HOL_LIT 0\n",
-                                       "#version 300 es\n#define HOL_LIT 1\n",
-                                       "#version 300 es\n#define HOL_LIT 2\n"};
-    const char *fsrc[2] = {pre[lit], hol__fs};
+    char pre[] = "#version 300 es\n#define HOL_LIT 0\n#define HOL_FLAT 0\n#define HOL_WEDGE 0\n"
+                 "#define HOL_NIGHT 0\n";
+    static const char lit[4] = {'0', '1', '2', '1'};
+    pre[sizeof "#version 300 es\n#define HOL_LIT " - 1] = lit[k % 4];
+    pre[sizeof "#version 300 es\n#define HOL_LIT 0\n#define HOL_FLAT " - 1] = k % 4 == 3 ? '1' : '0';
+    pre[sizeof "#version 300 es\n#define HOL_LIT 0\n#define HOL_FLAT 0\n#define HOL_WEDGE " - 1] =
+        k % 8 >= 4 ? '1' : '0';
+    pre[sizeof pre - 3] = k >= 8 ? '1' : '0';
+    const char *fsrc[2] = {pre, hol__fs};
     const char *vsrc[2] = {fsrc[0], hol__vs};
     GLuint vs = hol__shader(&r->gl, GL_VERTEX_SHADER, 2, vsrc);
     GLuint fs = hol__shader(&r->gl, GL_FRAGMENT_SHADER, 2, fsrc);
@@ -302,16 +330,14 @@ static int hol__make_prog(hol_render *r, hol__prog *pg, int lit)
         return 1;
     static const char *const names[] = {"u_vp", "u_model", "u_mode", "u_id", "u_eye",
                                         "u_fog", "u_fogd", "u_lin", "u_wedge", "u_wmode",
-                                        "u_light", "u_flat", "u_klein", "u_mpu", "u_hf",
-                                        "u_eyep", "u_nl", "u_lp", "u_amb", "u_sun",
-                                        "u_lcol", "u_lonly", "u_cmax"};
+                                        "u_light", "u_klein", "u_mpu2", "u_tl", "u_eyeh",
+                                        "u_lonly"};
     GLint *loc[] = {&pg->u_vp, &pg->u_model, &pg->u_mode, &pg->u_id, &pg->u_eye,
                     &pg->u_fog, &pg->u_fogd, &pg->u_lin, &pg->u_wedge, &pg->u_wmode,
-                    &pg->u_light, &pg->u_flat, &pg->u_klein, &pg->u_mpu, &pg->u_hf,
-                    &pg->u_eyep, &pg->u_nl, &pg->u_lp, &pg->u_amb, &pg->u_sun,
-                    &pg->u_lcol, &pg->u_lonly, &pg->u_cmax};
-    for (size_t k = 0; k < sizeof loc / sizeof loc[0]; k++)
-        *loc[k] = r->gl.GetUniformLocation(pg->prog, names[k]);
+                    &pg->u_light, &pg->u_klein, &pg->u_mpu2, &pg->u_tl, &pg->u_eyeh,
+                    &pg->u_lonly};
+    for (size_t i = 0; i < sizeof loc / sizeof loc[0]; i++)
+        *loc[i] = r->gl.GetUniformLocation(pg->prog, names[i]);
     return 0;
 }
 
@@ -346,8 +372,11 @@ hol_err hol_render_create(const hol_render_desc *desc, hol_render **out)
         hol_alloc_release(&d.alloc, r);
         return gerr;
     }
-    if (hol__make_prog(r, &r->progs[0], 0) || hol__make_prog(r, &r->progs[1], 1) ||
-        hol__make_prog(r, &r->progs[2], 2)) {
+    int bad = 0;
+    for (int k = 0; k < 16; k++)
+        if (k % 4 || k < 8) /* day has no night variant */
+            bad = bad || hol__make_prog(r, &r->progs[k], k);
+    if (bad) {
         hol_render_destroy(r);
         return HOL_EUNSUPPORTED;
     }
@@ -392,7 +421,7 @@ void hol_render_destroy(hol_render *r)
 {
     if (!r)
         return;
-    for (int k = 0; k < 3; k++)
+    for (int k = 0; k < 16; k++)
         if (r->progs[k].prog)
             r->gl.DeleteProgram(r->progs[k].prog);
     if (r->vao[0])
@@ -677,23 +706,50 @@ static void hol__tile_marks(const hol_frame_desc *f, hol_tile t, int *pole, int 
         }
 }
 
-/* A lit tile's frame in the user's (column-major for GL) and its lights. */
+/* A point of the user's frame in the tile's own frame (inv: the inverse of
+ * the tile's frame), as the shader's slot takes it: x, y and z (hyperbolic)
+ * or |p|^2/2 (flat, where z is 1). */
+static void hol__tile_slot(const double inv[9], const double p[3], int flat, float out[3])
+{
+    double q[3];
+    for (int i = 0; i < 3; i++)
+        q[i] = inv[3 * i] * p[0] + inv[3 * i + 1] * p[1] + inv[3 * i + 2] * p[2];
+    out[0] = (float)q[0];
+    out[1] = (float)q[1];
+    out[2] = (float)(flat ? (q[0] * q[0] + q[1] * q[1]) / 2 : q[2]);
+}
+
+/* A lit tile's lights and the eye in the tile's own frame (u_tl: the
+ * lights' x, y, z as four-slot vectors, then the eye's point; an empty
+ * slot lies far beyond the radius), so the shader needs no matrix. */
 static void hol__item_lights(hol_render *r, hol__item *it, hol_tile t)
 {
-    double fr[9];
+    double fr[9], inv[9];
     int idx[HOL_LIGHT_PER_TILE];
     int n = hol_light_tile(&r->lights, t, fr, idx);
     it->nl = (int8_t)n;
     if (n < 0)
         return;
+    /* the inverse of the frame: Lorentz J F^T J (flat: the rigid motion's) */
+    int flat = r->lights.flat;
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++)
-            it->hf[3 * j + i] = (float)fr[3 * i + j];
-    for (int k = 0; k < n; k++) {
-        for (int j = 0; j < 3; j++)
-            it->lp[k][j] = (float)r->lights.pos[idx[k]][j];
-        it->lp[k][3] = (float)HOL_LIGHT_HEIGHT_M;
+            inv[3 * i + j] = fr[3 * j + i] * (!flat && (i == 2) != (j == 2) ? -1 : 1);
+    if (flat) {
+        for (int i = 0; i < 2; i++)
+            inv[3 * i + 2] = -(fr[i] * fr[2] + fr[3 + i] * fr[5]);
+        inv[6] = inv[7] = 0;
+        inv[8] = 1;
     }
+    for (int k = 0; k < HOL_LIGHT_PER_TILE; k++) {
+        float v[3] = {0, 0, 1e4f};
+        if (k < n)
+            hol__tile_slot(inv, r->lights.pos[idx[k]], flat, v);
+        for (int j = 0; j < 3; j++)
+            it->tl[j][k] = v[j];
+    }
+    hol__tile_slot(inv, r->lights.eye, flat, it->tl[3]);
+    it->tl[3][3] = 0;
 }
 
 /* Pass 2: one draw per branch of its tile's resident mesh, placed in the
@@ -993,23 +1049,22 @@ static float hol__sky(const hol_frame_desc *f, float rgb[3])
 static void hol__frame_lights(hol_render *r, const hol_frame_desc *f)
 {
     const hol_light_frame *lf = &r->lights;
-    int night = f->lighting == HOL_RENDER_NIGHT;
-    r->gl.Uniform1i(r->pg->u_flat, lf->flat);
     r->gl.Uniform1i(r->pg->u_lonly, (f->flags & HOL_RENDER_LIGHT_ONLY) != 0);
     r->gl.Uniform1f(r->pg->u_klein, (float)lf->klein);
-    r->gl.Uniform1f(r->pg->u_mpu, (float)lf->metres_per_unit);
-    double xr = HOL_LIGHT_RADIUS_M / lf->metres_per_unit; /* the radius, units */
-    r->gl.Uniform1f(r->pg->u_cmax, (float)(lf->flat ? xr : 2 * sinh(xr / 2)));
-    r->gl.Uniform4f(r->pg->u_eyep, (float)lf->eye[0], (float)lf->eye[1], (float)lf->eye[2],
-                    (float)lf->eye_h);
-    if (night) {
-        r->gl.Uniform3f(r->pg->u_amb, 0.07f, 0.08f, 0.13f);
-        r->gl.Uniform3f(r->pg->u_sun, 0.05f, 0.06f, 0.10f);
-    } else {
-        r->gl.Uniform3f(r->pg->u_amb, 0.30f, 0.26f, 0.28f);
-        r->gl.Uniform3f(r->pg->u_sun, 0.28f, 0.17f, 0.11f);
-    }
-    r->gl.Uniform3f(r->pg->u_lcol, 3.0f, 2.25f, 1.25f);
+    r->gl.Uniform1f(r->pg->u_mpu2, (float)(lf->metres_per_unit * lf->metres_per_unit));
+    r->gl.Uniform1f(r->pg->u_eyeh, (float)lf->eye_h);
+}
+
+/* This frame's program of a kind (0 day, 1 lit tiles, 2 lit room): the
+ * lit tiles' hyperbolic or flat, with the wedge's discard when the view
+ * has wedges. */
+static hol__prog *hol__prog_of(hol_render *r, const hol_frame_desc *f, int kind)
+{
+    if (kind == 1 && r->lights.flat)
+        kind = 3;
+    if (kind && f->lighting == HOL_RENDER_NIGHT)
+        kind += 8;
+    return &r->progs[kind + (r->view.wedges ? 4 : 0)];
 }
 
 /* Clear the frame (sky, or black for IDs), upload this frame's dynamic
@@ -1054,7 +1109,7 @@ static void hol__frame_begin(hol_render *r, const hol_frame_desc *f, float vp[16
      * at dusk and night the room's then the tiles' (current at the end) */
     int first = f->lighting ? 2 : 0, last = f->lighting ? 1 : 0;
     for (int k = first; k >= last; k--) {
-        r->pg = &r->progs[k];
+        r->pg = hol__prog_of(r, f, k);
         r->gl.UseProgram(r->pg->prog);
         r->gl.Uniform3f(r->pg->u_eye, (float)f->cam.eye[0], (float)f->cam.eye[1],
                         (float)f->cam.eye[2]);
@@ -1076,7 +1131,7 @@ static void hol__set_pass(hol_render *r, const hol_frame_desc *f, int pass, cons
     float ident[16];
     hol__identity(ident);
     if (f->lighting) { /* the room's meshes: the program without tile code */
-        hol__prog *want = &r->progs[pass == HOL__PASS_ROOM ? 2 : 1];
+        hol__prog *want = hol__prog_of(r, f, pass == HOL__PASS_ROOM ? 2 : 1);
         if (want != r->pg) {
             r->pg = want;
             r->gl.UseProgram(want->prog);
@@ -1161,10 +1216,7 @@ static void hol__item_uniforms(hol_render *r, const hol__item *it)
     r->gl.Uniform1i(r->pg->u_light, it->nl < 0 ? 2 : 1);
     if (it->nl < 0)
         return;
-    r->gl.UniformMatrix3fv(r->pg->u_hf, 1, GL_FALSE, it->hf);
-    r->gl.Uniform1i(r->pg->u_nl, it->nl);
-    if (it->nl > 0)
-        r->gl.Uniform4fv(r->pg->u_lp, it->nl, &it->lp[0][0]);
+    r->gl.Uniform4fv(r->pg->u_tl, 4, &it->tl[0][0]);
 }
 
 /* Execute the sorted queue, skipping redundant state changes. */

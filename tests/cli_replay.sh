@@ -89,10 +89,11 @@ sed -n 3p "$T/l5/summary.csv" | grep -q ',2,,,,a,[0-9a-f]*,flag,5,15,"4,5",3x3,1
 [ "$(($(wc -l <"$T/l5/steps-001.csv") - 1))" = 2 ] && ok || bad "2 steps before the restart"
 
 # the tutorial's lessons in order: a step ahead (N); round a tree back to
-# the cell (ESWN); a marker 2 ahead; a flag ahead, ahead, left: targets from
-# `tile walk`, walks from `nav`
+# the cell (ESWN); a marker 2 tiles away in a straight line the room allows
+# (SS: the north row has the hedge ahead); a flag ahead, ahead, left:
+# targets from `tile walk`, walks from `nav`
 P=NESWN
-A2=$(printf '%sNN\n' "$P" | "$H" tile walk | cut -d' ' -f1)
+A2=$(printf '%sSS\n' "$P" | "$H" tile walk | cut -d' ' -f1)
 W2=$(printf '%s %s\n' "$P" "$A2" | "$H" nav | cut -d' ' -f2)
 A3=$(printf '%s%sNNW\n' "$P" "$W2" | "$H" tile walk | cut -d' ' -f1)
 W3=$(printf '%s%s %s\n' "$P" "$W2" "$A3" | "$H" nav | cut -d' ' -f2)

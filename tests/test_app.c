@@ -454,6 +454,35 @@ static void test_tutorial(void **state)
     hol_app_destroy(app);
 }
 
+/* Lesson 3 after lessons 1 and 2 (in the north row, against the hedge):
+ * its marker is two tiles away in a straight line the room allows (two
+ * steps south here), not two tiles north behind the hedge (5 steps). */
+static void test_tutorial_two_tiles_straight(void **state)
+{
+    (void)state;
+    hol_app *app = make_app();
+    hol_app_level L;
+    memset(&L, 0, sizeof L);
+    L.mode = HOL_APP_TUTORIAL;
+    L.seed = 8;
+    L.cues = HOL_CUE_ALL;
+    assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    const hol_app_view *v = hol_app_get_view(app);
+    double t = 0;
+    uint8_t walk[5] = {HOL_DIR_N, HOL_DIR_E, HOL_DIR_S, HOL_DIR_W, HOL_DIR_N};
+    assert_int_equal(play_walk(app, walk, 5, &t), -1);
+    assert_int_equal(v->hud.stage, 2);
+    assert_int_equal(v->user.row, 0); /* the hedge one cell north */
+    assert_int_equal(v->map.nobjectives, 1);
+    assert_int_equal(hol_tile_dist(v->user.tile, v->map.objectives[0]), 2);
+    assert_int_equal(v->hud.stage_optimum, 2);
+    assert_int_equal(v->hud.remaining, 2);
+    uint8_t south[2] = {HOL_DIR_S, HOL_DIR_S};
+    assert_int_equal(play_walk(app, south, 2, &t), -1);
+    assert_int_equal(v->hud.stage, 3);
+    hol_app_destroy(app);
+}
+
 /* Paused while unfocused or the device is lost or the menu is open: no
  * motion, no clock. Quit ends the level with a summary. */
 static void test_pause_quit(void **state)
@@ -970,6 +999,8 @@ static void test_tutorial_strayed(void **state)
         assert_int_equal(v->map.npath != 0, v->hud.stage_steps + v->hud.remaining > opt + 3);
     }
     assert_true(shown > 0);
+    /* the first time the path shows, one line says what it means */
+    assert_string_equal(v->hud.feedback, HOL_APP_PATH_TEXT);
     hol_app_destroy(app);
 }
 
@@ -1573,6 +1604,7 @@ int main(void)
         cmocka_unit_test(test_tutorial_feedback),
         cmocka_unit_test(test_tutorial_loop_optimum),
         cmocka_unit_test(test_tutorial_strayed),
+        cmocka_unit_test(test_tutorial_two_tiles_straight),
         cmocka_unit_test(test_prompts_name_buttons),
         cmocka_unit_test(test_menu_hint_first_seconds),
         cmocka_unit_test(test_menu_actions),
