@@ -62,9 +62,9 @@ void hol_stats_summarize(const hol_stats *s, hol_stats_summary *out)
 }
 
 const char *const HOL_STATS_SSQ_ITEMS[HOL_STATS_SSQ_NITEMS] = {
-    "general_discomfort", "fatigue", "headache", "eyestrain", "difficulty_focusing",
-    "increased_salivation", "sweating", "nausea", "difficulty_concentrating",
-    "fullness_of_head", "blurred_vision", "dizzy_eyes_open", "dizzy_eyes_closed",
+    "general_discomfort", "fatigue", "headache", "eye_strain", "difficulty_focusing",
+    "salivation_increasing", "sweating", "nausea", "difficulty_concentrating",
+    "fullness_of_head", "blurred_vision", "dizziness_eyes_open", "dizziness_eyes_closed",
     "vertigo", "stomach_awareness", "burping"};
 
 /* Kennedy et al. 1993, table: which subscales each item weighs in. */

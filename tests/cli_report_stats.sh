@@ -40,9 +40,9 @@ P
 # likert item of the study's own; an SSQ at attempt 0 (condition none)
 {
     echo 'session,participant,attempt,questionnaire,when,item,kind,value,time'
-    for i in general_discomfort fatigue headache eyestrain difficulty_focusing \
-        increased_salivation sweating nausea difficulty_concentrating fullness_of_head \
-        blurred_vision dizzy_eyes_open dizzy_eyes_closed vertigo stomach_awareness burping; do
+    for i in general_discomfort fatigue headache eye_strain difficulty_focusing \
+        salivation_increasing sweating nausea difficulty_concentrating fullness_of_head \
+        blurred_vision dizziness_eyes_open dizziness_eyes_closed vertigo stomach_awareness burping; do
         v=0; [ $i = nausea ] && v=3; [ $i = burping ] && v=1; [ $i = difficulty_focusing ] && v=2
         echo "sa,P01,3,ssq,condition,$i,likert,$v,1.0"
     done
