@@ -167,7 +167,8 @@ int cli_finish_output(const char *cmd)
 static int cli__repeatable(const char *cmd, const char *opt, size_t n)
 {
     static const char *const allowed[][2] = {{"render", "--target"},
-                                             {"render", "--lantern"}};
+                                             {"render", "--lantern"},
+                                             {"play", "--meta"}, {"xr", "--meta"}};
     for (size_t k = 0; k < sizeof allowed / sizeof allowed[0]; k++)
         if (!strcmp(cmd, allowed[k][0]) && strlen(allowed[k][1]) == n &&
             !strncmp(opt, allowed[k][1], n))
