@@ -27,6 +27,13 @@ one_line "session without log" "--session goes with --log"
 run "meta without log" 2 env DISPLAY= "$H" play --mode flag --meta a=1
 one_line "meta without log" "--meta goes with --log"
 [ ! -e l0 ] && ok || bad "a refused play made l0"
+run "xr: bad session" 2 "$H" xr --log l0 --session 1000
+one_line "xr: bad session" "--session '1000' is not a session number"
+run "xr: meta without log" 2 "$H" xr --meta a=1
+one_line "xr: meta without log" "--meta goes with --log"
+run "xr: twice the key" 2 "$H" xr --log l0 --meta a=1 --meta a=2
+one_line "xr: twice the key" "--meta key 'a' is given twice"
+"$H" xr --help | grep -q -- "--session N" && ok || bad "xr --help lacks --session"
 "$H" play --help | grep -q -- "--meta KEY=VALUE" && ok || bad "play --help lacks --meta"
 
 start_xvfb 37 || { bad "Xvfb did not start"; finish cli_meta; exit $?; }
