@@ -75,6 +75,13 @@ int play_env_check(const char *cmd, const play_env *e, const char *log_dir)
         cli_error(cmd, 0, "%s goes with --log", e->session_no ? "--session" : "--meta");
         return CLI_EXIT_USAGE;
     }
+    char name[4200], msg[200];
+    struct stat st;
+    if (log_dir && snprintf(name, sizeof name, "%s/environment.csv", log_dir) > 0 &&
+        lstat(name, &st) == 0 && hol_file_check_out(name, msg, sizeof msg)) {
+        cli_error(cmd, 0, "--log: '%.200s' %s", name, msg);
+        return CLI_EXIT_USAGE;
+    }
     return 0;
 }
 
@@ -143,9 +150,14 @@ static int play_env_append(const char *cmd, const char *dir, const play_env_row 
 {
     char name[4200];
     snprintf(name, sizeof name, "%s/environment.csv", dir);
-    int fd = open(name, O_WRONLY | O_APPEND | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0666);
+    int fd = open(name, O_WRONLY | O_APPEND | O_CREAT | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK, 0666);
     struct stat st;
     int ok = fd >= 0 && fstat(fd, &st) == 0 && S_ISREG(st.st_mode);
+    if (fd >= 0 && !ok) {
+        close(fd);
+        cli_error(cmd, 0, "'%.200s' is not a regular file", name);
+        return 1;
+    }
     char line[PLAY_ENV_ROW_MAX + 256];
     int n = snprintf(line, sizeof line, "%s%s\n", ok && st.st_size == 0 ? PLAY_ENV_COLUMNS "\n" : "",
                      r->buf);

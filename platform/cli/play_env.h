@@ -9,7 +9,8 @@
  *   1..32 bytes, VALUE at most 200 bytes without';' (the separator), at most PLAY_ENV_META_MAX, a key
  *   given twice refused.
  * - play_env_check: exit status 0, or 2 after reporting --session/--meta
- *   without --log.
+ *   without --log, or a DIR/environment.csv there that is not a regular
+ *   file (hol_file_check_out: a FIFO, a folder), before anything opens.
  * - play_env_write (after the session opened on DIR): the study's text
  *   (study_path, NULL: none) written as DIR/study-HASH.txt (atomically; kept
  *   when there), and one row appended to DIR/environment.csv (made with its
