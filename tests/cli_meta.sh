@@ -20,6 +20,7 @@ for bad_arg in "--session 0" "--session 1000" "--session x" "--meta K=v" "--meta
   run "bad: $bad_arg" 2 env DISPLAY= "$H" play --mode flag --log l0 $bad_arg
   [ "$(wc -l <"$T/err")" -eq 1 ] && ok || bad "$bad_arg: not one line: $(cat "$T/err")"
 done
+# shellcheck disable=SC2046
 run "17 metas" 2 env DISPLAY= "$H" play --mode flag --log l0 $(for i in 0 1 2 3 4 5 6 7 8 9 a b c d e f g; do printf -- '--meta k%s=1 ' $i; done)
 one_line "17 metas" "more than 16"
 run "session without log" 2 env DISPLAY= "$H" play --mode flag --session 2
