@@ -22,6 +22,7 @@
 #include "../hid/hol_hid_link.h"
 #include "cli.h"
 #include "../audio/hol_audio.h"
+#include "play_env.h"
 #include "play_setup.h"
 #include "play_stats.h"
 #include "play_study.h"
@@ -29,7 +30,7 @@
 static const char *const play_usage =
     "usage: holonomy play [LEVEL | --mode tutorial|flag|keys|explore | --study FILE]\n"
     "                     [--seed S] [--log DIR [--append [--restart-participant]]] [--participant ID]\n"
-    "                     [--resume]\n"
+    "                     [--resume] [--session N] [--meta KEY=VALUE]...\n"
     "                     [--record FILE]\n"
     "                     [--frames N] [--input FILE] [--size WxH]\n"
     "                     [--no-gamepad | --gamepad-replay FILE] [--snap-turn DEG]\n"
@@ -79,6 +80,7 @@ static const char *const play_usage =
     "                  first level of their order not finished in DIR (no\n"
     "                  attempt ended done or timeout; README: Research logs),\n"
     "                  appending to DIR; positions keep their numbers\n"
+    PLAY_ENV_USAGE
     "  --participant ID  the participant (1..63 letters, digits, '.', '_', '-'),\n"
     "                  in the summary and the recording\n"
     "  --record FILE   record the session (replay with 'holonomy replay'),\n"
@@ -121,6 +123,9 @@ typedef struct play_opts {
     long frames;
     int w, h, use_pad, append, snap_deg, stats, restart_participant, resume, mute;
     double volume;
+    play_env env; /* --session, --meta */
+    int argc;
+    char **argv;
 } play_opts;
 
 typedef struct play_ctx {
@@ -156,6 +161,8 @@ typedef struct play_ctx {
 static int play_value(const char *cmd, const char *a, const char *val, play_opts *o)
 {
     int g = play_geometry_value(cmd, a, val, &o->geo);
+    if (!g)
+        g = play_env_value(cmd, a, val, &o->env);
     if (g)
         return g < 0;
     if (!strcmp(a, "--mode"))
@@ -210,7 +217,7 @@ static int play_value(const char *cmd, const char *a, const char *val, play_opts
 static const char *const play_valued[] = {"--mode",  "--seed",  "--log",  "--record",
                                           "--frames", "--input", "--size", "--gamepad-replay",
                                           "--participant", "--snap-turn", "--study",
-                                          "--volume", PLAY_GEOMETRY_OPTIONS, NULL};
+                                          "--volume", PLAY_GEOMETRY_OPTIONS, PLAY_ENV_OPTIONS, NULL};
 
 static int play_options(const char *cmd, int argc, char **argv, play_opts *o)
 {
@@ -221,6 +228,9 @@ static int play_options(const char *cmd, int argc, char **argv, play_opts *o)
     o->w = 960, o->h = 720, o->use_pad = 1, o->volume = -1;
     cli_opts p;
     cli_opts_init(&p, cmd, argc, argv, play_valued, flags);
+    static const char *const repeatable[] = {"--meta", NULL};
+    p.repeatable = repeatable;
+    o->argc = argc, o->argv = argv;
     const char *a, *val;
     int r;
     while ((r = cli_opts_next(&p, &a, &val)) > 0) {
@@ -265,6 +275,8 @@ static int play_options(const char *cmd, int argc, char **argv, play_opts *o)
         cli_error(cmd, 0, "%s", clash);
         return CLI_EXIT_USAGE;
     }
+    if (play_env_check(cmd, &o->env, o->log_dir))
+        return CLI_EXIT_USAGE;
     o->append |= o->resume;
     const cli_path in[] = {{"LEVEL", o->level_path}, {"--input", o->input_path},
                            {"--gamepad-replay", o->pad_script}, {"--study", o->study}};
@@ -338,6 +350,18 @@ static void play_sound(play_ctx *c)
     hol_audio_apply(c->au, &c->sl);
 }
 
+/* environment.csv's row (play_env.h): the desktop, the GL's renderer. */
+static int play_write_env(play_ctx *c, const char *session)
+{
+    typedef const unsigned char *(*get_string_fn)(unsigned);
+    get_string_fn gs = (get_string_fn)hol_egl_getproc("glGetString");
+    const unsigned char *gl = gs ? gs(0x1F01 /* GL_RENDERER */) : NULL;
+    play_env_host h = {"desktop", "", gl ? (const char *)gl : "",
+                       c->use_pad ? c->pad.info.name : "", 0, c->o.w, c->o.h};
+    return play_env_write(c->cmd, c->o.log_dir, &c->o.env, session, c->o.participant,
+                          c->o.study, &h, c->o.argc, c->o.argv) ? CLI_EXIT_FAIL : 0;
+}
+
 static int play_prepare(play_ctx *c)
 {
     int st = play_prepare_files(c);
@@ -370,7 +394,7 @@ static int play_prepare(play_ctx *c)
     }
     play_open_pad(c);
     play_open_audio(c);
-    return 0;
+    return play_write_env(c, meta.session);
 }
 
 /* ---- the loop ---------------------------------------------------------------------- */

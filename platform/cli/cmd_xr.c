@@ -10,6 +10,7 @@
 #include "../../core/hol_session.h"
 #include "../openxr/hol_xr_pick.h"
 #include "cli.h"
+#include "play_env.h"
 #include "play_setup.h"
 #include "play_study.h"
 #ifdef HOL_XR
@@ -20,7 +21,7 @@
 static const char *const xr_usage =
     "usage: holonomy xr [LEVEL | --study FILE] [--frames N]\n"
     "                   [--log DIR [--append [--restart-participant]] [--resume]]\n"
-    "                   [--participant ID]\n"
+    "                   [--participant ID] [--session N] [--meta KEY=VALUE]...\n"
     "                   [--record FILE] [--input FILE] [--space stage|local]\n"
     "                   [--play-area WxD] [--no-haptics] [--mute | --volume V]\n"
     "                   [--check-frame K --check-dir DIR]\n"
@@ -42,6 +43,7 @@ static const char *const xr_usage =
     "                  number (--participant P07: 7), as 'holonomy play --study'\n"
     "  --frames N      request exit after N submitted frames\n"
     "  --log DIR       research logs (README: Research logs)\n"
+    PLAY_ENV_USAGE
     "  --record FILE   record the session's input\n"
     "  --input FILE    scripted head motion: frame k takes the head pose of\n"
     "                  input line k (room coordinates; the simulated headset\n"
@@ -84,6 +86,9 @@ typedef struct xr_opts {
     int no_haptics;     /* --no-haptics: fns.haptic NULL */
     int mute;           /* --mute */
     double volume;      /* --volume; -1: not given (1) */
+    play_env env;       /* --session, --meta */
+    int argc;
+    char **argv;
 } xr_opts;
 
 /* --play-area WxD: two sizes in metres, 0.5 to 100 each, "2.6x2.6". 0 ok. */
@@ -126,7 +131,8 @@ static int xr_count(const char *cmd, const char *a, const char *val, xr_opts *o)
 static const char *const xr_valued[] = {"--frames",      "--log",       "--record",
                                         "--input",       "--check-frame", "--check-dir",
                                         "--participant", "--space",    "--study",
-                                        PLAY_GEOMETRY_OPTIONS, "--play-area", "--volume", NULL};
+                                        PLAY_GEOMETRY_OPTIONS, "--play-area", "--volume",
+                                        PLAY_ENV_OPTIONS, NULL};
 
 static int xr_options(const char *cmd, int argc, char **argv, xr_opts *o)
 {
@@ -137,6 +143,9 @@ static int xr_options(const char *cmd, int argc, char **argv, xr_opts *o)
     o->volume = -1;
     cli_opts p;
     cli_opts_init(&p, cmd, argc, argv, xr_valued, flags);
+    static const char *const repeatable[] = {"--meta", NULL};
+    p.repeatable = repeatable;
+    o->argc = argc, o->argv = argv;
     const char *a, *val;
     int r, bad = 0, g;
     while (!bad && (r = cli_opts_next(&p, &a, &val)) > 0) {
@@ -146,6 +155,8 @@ static int xr_options(const char *cmd, int argc, char **argv, xr_opts *o)
         } else if (!a)
             o->level_path = val;
         else if (val && (g = play_geometry_value(cmd, a, val, &o->geo)) != 0) /* flags: no value */
+            bad = g < 0;
+        else if (val && (g = play_env_value(cmd, a, val, &o->env)) != 0)
             bad = g < 0;
         else if (!strcmp(a, "--frames") || !strcmp(a, "--check-frame"))
             bad = xr_count(cmd, a, val, o);
@@ -205,6 +216,8 @@ static int xr_options(const char *cmd, int argc, char **argv, xr_opts *o)
         cli_error(cmd, 0, "%s", clash);
         return CLI_EXIT_USAGE;
     }
+    if (play_env_check(cmd, &o->env, o->log_dir))
+        return CLI_EXIT_USAGE;
     o->append |= o->resume;
     const cli_path in[] = {{"LEVEL", o->level_path}, {"--input", o->input_path},
                            {"--study", o->study}};
@@ -264,6 +277,9 @@ typedef struct xr_ctx {
     hol_audio *au; /* NULL: silent */
     hol_sound snd;
     hol_sound_list sl;
+    const xr_opts *o;
+    char runtime[160], gl[160]; /* the host callback's (environment.csv) */
+    int eye_w, eye_h;
 } xr_ctx;
 
 /* The sound opens at the first step (the session is up); its line goes
@@ -285,6 +301,14 @@ static void xr_sound(xr_ctx *c)
     hol_sound_update(&c->snd, hol_app_get_view(app), hol_app_get_events(app),
                      hol_app_world(app), &c->sl);
     hol_audio_apply(c->au, &c->sl);
+}
+
+static void xr_host(void *user, const char *runtime, const char *gl, int eye_w, int eye_h)
+{
+    xr_ctx *c = user;
+    snprintf(c->runtime, sizeof c->runtime, "%s", runtime);
+    snprintf(c->gl, sizeof c->gl, "%s", gl);
+    c->eye_w = eye_w, c->eye_h = eye_h;
 }
 
 static void xr_apply_fit(xr_ctx *c, const hol_fit *f)
@@ -310,6 +334,12 @@ static int xr_fit(void *user, const hol_fit *f)
     else if (f)
         xr_apply_fit(c, f);
     c->st = play_session_open(c->cmd, c->out, c->levels, c->nlevels, &c->meta, c->append, &c->s);
+    if (!c->st) {
+        play_env_host h = {"openxr", c->runtime, c->gl, "", 0, c->eye_w, c->eye_h};
+        c->st = play_env_write(c->cmd, c->o->log_dir, &c->o->env, c->meta.session,
+                               c->o->participant, c->o->study, &h, c->o->argc, c->o->argv)
+                    ? CLI_EXIT_FAIL : 0;
+    }
     if (!c->st)
         play_study_announce();
     return c->st != 0;
@@ -372,7 +402,7 @@ static int xr_run(const xr_opts *o, xr_ctx *c, const hol_input *script, long nsc
     hol_xr_app_fns fns = {.user = c, .step = xr_step, .world = xr_world,
                           .level_started = xr_level_started, .poll_platform = xr_poll,
                           .fit = xr_fit, .view = xr_view,
-                          .haptic = o->no_haptics ? NULL : xr_haptic};
+                          .haptic = o->no_haptics ? NULL : xr_haptic, .host = xr_host};
     int rc = hol_xr_run(&d, &fns);
     return c->st ? c->st : rc ? CLI_EXIT_FAIL : CLI_EXIT_OK;
 }
@@ -410,7 +440,7 @@ int cli_cmd_xr(int argc, char **argv)
         st = xr_script(cmd, o.input_path, &script, &nscript);
 #ifdef HOL_XR
     xr_ctx c = {.cmd = cmd, .levels = levels, .nlevels = nlevels, .out = &out,
-                .append = o.append, .geo_named = o.geo.cols > 0 || o.geo.cell_m > 0,
+                .append = o.append, .o = &o, .geo_named = o.geo.cols > 0 || o.geo.cell_m > 0,
                 .volume = o.volume < 0 ? 1.0 : o.volume};
     c.sound = !o.mute && c.volume > 0 && !o.input_path;
     cli_catch_signals();

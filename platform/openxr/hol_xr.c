@@ -101,6 +101,9 @@ static int hol__instance(hol__xr *x)
     HOL__XR(x, "start the OpenXR instance", xrCreateInstance(&ic, &x->instance));
     XrInstanceProperties ip = {XR_TYPE_INSTANCE_PROPERTIES};
     HOL__XR(x, "read the runtime's name", xrGetInstanceProperties(x->instance, &ip));
+    snprintf(x->runtime, sizeof x->runtime, "%s %u.%u.%u", ip.runtimeName,
+             XR_VERSION_MAJOR(ip.runtimeVersion), XR_VERSION_MINOR(ip.runtimeVersion),
+             XR_VERSION_PATCH(ip.runtimeVersion));
     hol__say(x, "xr: runtime %s %u.%u.%u", ip.runtimeName, XR_VERSION_MAJOR(ip.runtimeVersion),
              XR_VERSION_MINOR(ip.runtimeVersion), XR_VERSION_PATCH(ip.runtimeVersion));
     hol__say(x, "xr: %s %s", HOL_XR_EXT_HAND_INTERACTION,
@@ -123,6 +126,13 @@ static int hol__setup(hol__xr *x, const void *binding)
     HOL__XR(x, "create the headset session", xrCreateSession(x->instance, &sc, &x->session));
     if (hol__spaces(x) || hol__swapchains(x))
         return 1;
+    if (x->fns->host) {
+        typedef const unsigned char *(*get_string_fn)(unsigned);
+        get_string_fn gs = (get_string_fn)x->getproc("glGetString");
+        const unsigned char *gl = gs ? gs(0x1F01 /* GL_RENDERER */) : NULL;
+        x->fns->host(x->fns->user, x->runtime, gl ? (const char *)gl : "", (int)x->eye[0].w,
+                     (int)x->eye[0].h);
+    }
     /* the platform plays the fit (or not) before its world is asked for */
     if (x->fns->fit && x->fns->fit(x->fns->user, x->have_bounds ? &x->fit : NULL)) {
         x->failed = 1;

@@ -44,6 +44,12 @@ typedef struct hol_xr_app_fns {
      * events.haptic, core/hol_haptic.h), played with xrApplyHapticFeedback;
      * NULL: none (holonomy xr --no-haptics). */
     const hol_haptic *(*haptic)(void *user);
+    /* Optional: what the headset's side is (for the platform's records:
+     * holonomy xr's environment.csv), called once just before fit with the
+     * runtime's name and version, the GL renderer and eye 0's image size;
+     * the strings live only during the call. */
+    void (*host)(void *user, const char *runtime, const char *gl_renderer, int eye_w,
+                 int eye_h);
 } hol_xr_app_fns;
 
 typedef struct hol_xr_desc {

@@ -164,6 +164,7 @@ typedef struct hol__xr {
     int bounds_small; /* the room in play (or the fit) is larger than them */
     hol_fit fit;      /* with have_bounds: what they hold (core/hol_fit.h) */
     char fit_text[160]; /* its line (hol_fit_text) */
+    char runtime[160];  /* the runtime's name and version */
     char prompt[HOL_APP_HINT_MAX]; /* the prompt line said last */
     double room_w, room_d; /* the room in play, metres (0: not known yet) */
     hol_app_view note;  /* the view drawn while the fit is told on the HUD */

@@ -1,0 +1,212 @@
+/* play_env.c - --session, --meta, the study's copy and environment.csv
+ * (play_env.h). */
+#include "play_env.h"
+
+#include <errno.h>
+#include <fcntl.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/utsname.h>
+#include <unistd.h>
+
+#include "../../core/hol_sha256.h"
+#include "../../core/hol_text.h"
+#include "../file/hol_file.h"
+#include "cli.h"
+
+#define PLAY_ENV_ROW_MAX 16384
+
+static int play_env__key_ok(const char *k, size_t n)
+{
+    if (n < 1 || n > 32)
+        return 0;
+    for (size_t i = 0; i < n; i++)
+        if (!((k[i] >= 'a' && k[i] <= 'z') || (k[i] >= '0' && k[i] <= '9') || k[i] == '_'))
+            return 0;
+    return 1;
+}
+
+static int play_env__meta(const char *cmd, const char *val, play_env *e)
+{
+    const char *eq = strchr(val, '=');
+    size_t n = eq ? (size_t)(eq - val) : 0;
+    if (!eq || !play_env__key_ok(val, n)) {
+        cli_error(cmd, 0, "--meta '%.40s' is not KEY=VALUE with KEY 1..32 of a-z, 0-9, '_'", val);
+        return -1;
+    }
+    if (strlen(eq + 1) > 200 || strchr(eq + 1, ';')) {
+        cli_error(cmd, 0, "--meta '%.*s': its value is over 200 bytes or holds ';'", (int)n, val);
+        return -1;
+    }
+    if (e->nmeta == PLAY_ENV_META_MAX) {
+        cli_error(cmd, 0, "--meta is given more than %d times", PLAY_ENV_META_MAX);
+        return -1;
+    }
+    for (int i = 0; i < e->nmeta; i++)
+        if (!strncmp(e->meta[i], val, n + 1)) {
+            cli_error(cmd, 0, "--meta key '%.*s' is given twice", (int)n, val);
+            return -1;
+        }
+    e->meta[e->nmeta++] = val;
+    return 1;
+}
+
+int play_env_value(const char *cmd, const char *opt, const char *val, play_env *e)
+{
+    if (!strcmp(opt, "--meta"))
+        return play_env__meta(cmd, val, e);
+    if (strcmp(opt, "--session"))
+        return 0;
+    size_t n = cli_parse_count(val);
+    if (!n || n > 999) {
+        cli_error(cmd, 0, "--session '%.40s' is not a session number in 1..999", val);
+        return -1;
+    }
+    e->session_no = (int)n;
+    return 1;
+}
+
+int play_env_check(const char *cmd, const play_env *e, const char *log_dir)
+{
+    if ((e->session_no || e->nmeta) && !log_dir) {
+        cli_error(cmd, 0, "%s goes with --log", e->session_no ? "--session" : "--meta");
+        return CLI_EXIT_USAGE;
+    }
+    char name[4200], msg[200];
+    struct stat st;
+    if (log_dir && snprintf(name, sizeof name, "%s/environment.csv", log_dir) > 0 &&
+        lstat(name, &st) == 0 && hol_file_check_out(name, msg, sizeof msg)) {
+        cli_error(cmd, 0, "--log: '%.200s' %s", name, msg);
+        return CLI_EXIT_USAGE;
+    }
+    return 0;
+}
+
+/* A row being built: fields escaped and RFC 4180, comma-separated. */
+typedef struct play_env_row {
+    char buf[PLAY_ENV_ROW_MAX];
+    size_t n;
+    int fields, over;
+} play_env_row;
+
+static void row_field(play_env_row *r, const char *s)
+{
+    char esc[4096], csv[8200];
+    size_t e = hol_text_escape(s ? s : "", s ? strlen(s) : 0, esc, sizeof esc);
+    if (e >= sizeof esc)
+        r->over = 1;
+    size_t c = hol_text_csv(esc, strlen(esc), csv, sizeof csv);
+    if (c >= sizeof csv)
+        r->over = 1;
+    int w = snprintf(r->buf + r->n, sizeof r->buf - r->n, "%s%s", r->fields ? "," : "", csv);
+    if (w < 0 || (size_t)w >= sizeof r->buf - r->n)
+        r->over = 1;
+    else
+        r->n += (size_t)w;
+    r->fields++;
+}
+
+/* KEY=VALUE;... or the command line, joined with sep into out. */
+static void join(char *out, size_t cap, const char *const *v, int n, const char *sep)
+{
+    size_t at = 0;
+    out[0] = 0;
+    for (int i = 0; i < n && at < cap; i++) {
+        int w = snprintf(out + at, cap - at, "%s%s", i ? sep : "", v[i]);
+        if (w < 0)
+            break;
+        at += (size_t)w;
+    }
+}
+
+/* DIR/study-HASH.txt, hex its hash (study_path's text). */
+static int play_env_study(const char *cmd, const char *dir, const char *path,
+                          char hex[HOL_SHA256_HEX])
+{
+    uint8_t *data = NULL, dig[32];
+    size_t len = 0;
+    if (hol_file_read_all(path, 1 << 20, &data, &len)) {
+        cli_error(cmd, 0, "cannot read --study '%.200s' again", path);
+        return 1;
+    }
+    hol_sha256(data, len, dig);
+    hol_sha256_hex(dig, hex);
+    char name[4200];
+    snprintf(name, sizeof name, "%s/study-%s.txt", dir, hex);
+    struct stat st;
+    hol_err err = stat(name, &st) == 0 ? HOL_OK : hol_file_write_atomic(name, data, len);
+    free(data);
+    if (err) {
+        cli_error(cmd, 0, "cannot write '%.200s': %s", name, strerror(errno));
+        return 1;
+    }
+    return 0;
+}
+
+static int play_env_append(const char *cmd, const char *dir, const play_env_row *r)
+{
+    char name[4200];
+    snprintf(name, sizeof name, "%s/environment.csv", dir);
+    int fd = open(name, O_WRONLY | O_APPEND | O_CREAT | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK, 0666);
+    struct stat st;
+    int ok = fd >= 0 && fstat(fd, &st) == 0 && S_ISREG(st.st_mode);
+    if (fd >= 0 && !ok) {
+        close(fd);
+        cli_error(cmd, 0, "'%.200s' is not a regular file", name);
+        return 1;
+    }
+    char line[PLAY_ENV_ROW_MAX + 256];
+    int n = snprintf(line, sizeof line, "%s%s\n", ok && st.st_size == 0 ? PLAY_ENV_COLUMNS "\n" : "",
+                     r->buf);
+    ok = ok && n > 0 && (size_t)n < sizeof line && write(fd, line, (size_t)n) == n &&
+         fsync(fd) == 0;
+    int e = errno;
+    if (fd >= 0)
+        close(fd);
+    if (!ok) {
+        cli_error(cmd, 0, "cannot write '%.200s': %s", name, strerror(e));
+        return 1;
+    }
+    return 0;
+}
+
+int play_env_write(const char *cmd, const char *log_dir, const play_env *e, const char *session,
+                   const char *participant, const char *study_path, const play_env_host *h,
+                   int argc, char **argv)
+{
+    char hex[HOL_SHA256_HEX] = "";
+    if (!log_dir || (study_path && play_env_study(cmd, log_dir, study_path, hex)))
+        return log_dir ? 1 : 0;
+    static play_env_row r;
+    memset(&r, 0, sizeof r);
+    char num[32] = "", os[400] = "", meta[4096], opts[4096];
+    struct utsname u;
+    if (uname(&u) == 0)
+        snprintf(os, sizeof os, "%s %s %s", u.sysname, u.release, u.machine);
+    if (e->session_no)
+        snprintf(num, sizeof num, "%d", e->session_no);
+    join(meta, sizeof meta, e->meta, e->nmeta, ";");
+    join(opts, sizeof opts, (const char *const *)argv, argc, " ");
+    const char *f[] = {session, participant, num, hex, h->platform, os, h->runtime,
+                       h->gl_renderer, h->controller};
+    for (size_t i = 0; i < sizeof f / sizeof f[0]; i++)
+        row_field(&r, f[i]);
+    char v[64] = "";
+    if (h->refresh_hz > 0)
+        snprintf(v, sizeof v, "%.3f", h->refresh_hz);
+    row_field(&r, v);
+    snprintf(v, sizeof v, "%d", h->width);
+    row_field(&r, h->width ? v : "");
+    snprintf(v, sizeof v, "%d", h->height);
+    row_field(&r, h->height ? v : "");
+    row_field(&r, meta);
+    row_field(&r, opts);
+    if (r.over) {
+        cli_error(cmd, 0, "the environment row is too long");
+        return 1;
+    }
+    return play_env_append(cmd, log_dir, &r);
+}

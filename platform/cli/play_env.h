@@ -1,0 +1,55 @@
+/* play_env.h - a session's environment and metadata (issue 26 item 5):
+ * `--session N` and repeatable `--meta KEY=VALUE` of play (and xr), the
+ * study file kept in the log folder, and one row per session start in the
+ * log folder's environment.csv (docs/research.md).
+ *
+ * Contract (problems reported as one line on stderr, as cli_error does)
+ * - play_env_value takes one option: 1 taken, 0 not one of these, -1 a bad
+ *   value reported. --session N: 1..999. --meta KEY=VALUE: KEY [a-z0-9_]
+ *   1..32 bytes, VALUE at most 200 bytes without';' (the separator), at most PLAY_ENV_META_MAX, a key
+ *   given twice refused.
+ * - play_env_check: exit status 0, or 2 after reporting --session/--meta
+ *   without --log, or a DIR/environment.csv there that is not a regular
+ *   file (hol_file_check_out: a FIFO, a folder), before anything opens.
+ * - play_env_write (after the session opened on DIR): the study's text
+ *   (study_path, NULL: none) written as DIR/study-HASH.txt (atomically; kept
+ *   when there), and one row appended to DIR/environment.csv (made with its
+ *   header PLAY_ENV_COLUMNS; the row written with one write(2) and
+ *   fsync'ed). Every field is RFC 4180 and escaped (core/hol_text.h).
+ *   Returns 0 or 1 (reported).
+ * - Replay writes no environment row: the environment is the live one.
+ */
+#ifndef HOL_PLAY_ENV_H
+#define HOL_PLAY_ENV_H
+
+#define PLAY_ENV_META_MAX 16
+#define PLAY_ENV_COLUMNS                                                                  \
+    "session,participant,session_no,study_sha256,platform,os,runtime,gl_renderer,"        \
+    "controller,refresh_hz,width,height,meta,options"
+#define PLAY_ENV_OPTIONS "--session", "--meta"
+#define PLAY_ENV_USAGE                                                                   \
+    "  --session N     the participant's session number, 1..999 (day 1, day 2),\n"      \
+    "                  in environment.csv (needs --log)\n"                               \
+    "  --meta KEY=VALUE  a note for environment.csv (needs --log; repeatable, up to\n"  \
+    "                  16; KEY 1..32 of a-z, 0-9, '_')\n"
+
+typedef struct play_env {
+    int session_no; /* 0: not given */
+    int nmeta;
+    const char *meta[PLAY_ENV_META_MAX];
+} play_env;
+
+/* What the platform knows of itself ("" or 0 when it does not). */
+typedef struct play_env_host {
+    const char *platform, *runtime, *gl_renderer, *controller;
+    double refresh_hz;
+    int width, height;
+} play_env_host;
+
+int play_env_value(const char *cmd, const char *opt, const char *val, play_env *e);
+int play_env_check(const char *cmd, const play_env *e, const char *log_dir);
+int play_env_write(const char *cmd, const char *log_dir, const play_env *e, const char *session,
+                   const char *participant, const char *study_path, const play_env_host *h,
+                   int argc, char **argv);
+
+#endif
