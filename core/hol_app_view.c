@@ -126,13 +126,14 @@ static void hol__prompt(hol_app_hud *h, uint32_t device, const hol__ask *ask, in
 
 /* A headset's first seconds with its device: the control that opens the
  * menu ("Y: menu"), after the prompt shown if it fits (hol_app.h:
- * HOL_APP_MENU_HINT_S). Not in the menu nor on the end screen, whose
- * prompts name it or need it not. */
+ * HOL_APP_MENU_HINT_S). Only while a level is played: not in the menu,
+ * nor on the end screen, a pointing question, a questionnaire or a screen
+ * of text, whose prompts name what acts there. */
 static void hol__menu_hint(const hol_app *app, const hol_input *in, hol_app_hud *h)
 {
     const char *b = hol_prompt_button(app->device, HOL_BTN_MENU);
     if (!in || !b || app->device < HOL_DEVICE_XR_SIMPLE || app->menu ||
-        app->view.state == HOL_APP_DONE || !(in->time_s - app->device_t < HOL_APP_MENU_HINT_S))
+        app->view.state != HOL_APP_PLAYING || !(in->time_s - app->device_t < HOL_APP_MENU_HINT_S))
         return;
     size_t len = strlen(h->hint);
     int k = snprintf(h->hint + len, sizeof h->hint - len, "%s%s: menu", len ? ", " : "", b);
