@@ -48,7 +48,7 @@ tail -1 "$T/l/answers.csv" | cut -d, -f4-8 | grep -qx 'ssq,study,burping,likert,
 tail -1 "$T/r.rec" | grep -q "^21 " && ok || bad "the session ended at $(tail -1 "$T/r.rec")"
 mkdir "$T/l2"
 run "replay" 0 "$H" replay "$T/r.rec" --log "$T/l2"
-diff -r "$T/l" "$T/l2" >/dev/null && ok || bad "the replay's logs differ"
+logs_diff "$T/l" "$T/l2" >/dev/null && ok || bad "the replay's logs differ"
 
 mkdir "$T/l3" && cp "$T/l/answers.csv" "$T/l3/"
 run "folder with answers" 2 "$H" play "$T/a.lvl" --frames 1 --size 64x48 --log "$T/l3" &&

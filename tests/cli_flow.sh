@@ -47,7 +47,7 @@ grep -lx 'instructions Practice first: walk one step north to the flag.' "$T"/l/
   bad "screen lines: $(cat "$T"/l/level-*.txt | grep '^instructions\|^closing')"
 mkdir "$T/l2"
 run "replay" 0 "$H" replay "$T/r.rec" --log "$T/l2"
-diff -r "$T/l" "$T/l2" >/dev/null && ok || bad "the replay's logs differ"
+logs_diff "$T/l" "$T/l2" >/dev/null && ok || bad "the replay's logs differ"
 
 # no closing line: the default closing screen still waits for a confirm
 grep -v '^closing' "$T/s.study" >"$T/d.study"

@@ -56,7 +56,7 @@ run "play detour" 0 "$H" play "$T/f.lvl" --input "$T/detour.in" --size 64x48
 grep -q "^level f done steps $((K + 2)) optimum $K " "$T/out" && ok || bad "detour: $(cat "$T/out")"
 # the recording replays to the same logs, byte for byte
 run "replay" 0 "$H" replay "$T/r.rec" --log "$T/l2"
-diff -r "$T/l1" "$T/l2" >/dev/null && ok || bad "replayed logs differ: $(diff -r "$T/l1" "$T/l2" | head -3)"
+logs_diff "$T/l1" "$T/l2" >/dev/null && ok || bad "replayed logs differ: $(logs_diff "$T/l1" "$T/l2" | head -3)"
 # a recording is also a play's --input
 run "recording as input" 0 "$H" play "$T/f.lvl" --input "$T/r.rec" --size 64x48
 grep -q "^level f done steps $K " "$T/out" && ok || bad "recording as input: $(cat "$T/out")"
@@ -78,7 +78,7 @@ grep -q '^L tiling 4 6$' "$T/g.rec" && grep -q '^L room 4 4$' "$T/g.rec" &&
 grep -q ',flag,5,15,"4,6",4x4,0.75,' "$T/g1/summary.csv" && ok ||
     bad "geometry columns: $(cat "$T/g1/summary.csv")"
 run "replay {4,6} 4x4 0.75 m" 0 "$H" replay "$T/g.rec" --log "$T/g2"
-diff -r "$T/g1" "$T/g2" >/dev/null && ok || bad "replayed {4,6} logs differ"
+logs_diff "$T/g1" "$T/g2" >/dev/null && ok || bad "replayed {4,6} logs differ"
 # the campaign with --tiling: the tutorial stays {4,5} 3x3 (it takes --cell
 # only), the other five levels get the line
 run "campaign in {4,6}" 0 "$H" play --tiling 4,6 --cell 0.8 --frames 3 --size 64x48 --record "$T/c6.rec"
@@ -182,7 +182,7 @@ if command -v xdotool >/dev/null 2>&1; then
     grep -q ' p=10 .*d=keyboard$' "$T/tap.rec" && ok || bad "no pressed M (p=10) in the recording"
     grep -q '^level explore-1 quit ' "$T/tap.out" && ok || bad "Q did not quit: $(cat "$T/tap.out")"
     run "taps replay" 0 "$H" replay "$T/tap.rec" --log "$T/tap2"
-    diff -r "$T/tap" "$T/tap2" >/dev/null && ok || bad "the taps' logs differ in the replay"
+    logs_diff "$T/tap" "$T/tap2" >/dev/null && ok || bad "the taps' logs differ in the replay"
     # snap turn: a tapped Left turns the look to 90 degrees exactly (the
     # recording carries the snap: f=48 y=90), a tapped Right back to 0;
     # --stats prints the frame rate and CPU ms a frame at the end

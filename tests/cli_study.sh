@@ -127,5 +127,5 @@ run "walk" 0 "$H" play --study "$S" --participant 3 --input "$T/in" --size 64x48
     --record "$T/w.rec"
 mkdir "$T/w2"
 run "replay" 0 "$H" replay "$T/w.rec" --log "$T/w2"
-diff -r "$T/w" "$T/w2" >/dev/null && ok || bad "a study session's replay writes other logs"
+logs_diff "$T/w" "$T/w2" >/dev/null && ok || bad "a study session's replay writes other logs"
 finish cli_study

@@ -81,6 +81,11 @@ start_xvfb() {
     export DISPLAY=$D
 }
 
+# A replay's logs against the play's: every file byte for byte, but
+# environment.csv and study-HASH.txt, which only a live session writes
+# (docs/research.md: Session metadata).
+logs_diff() { diff -r -x environment.csv -x 'study-*.txt' "$@"; }
+
 finish() {
   echo "$1: $passes passed, $fails failed"
   [ "$fails" = 0 ]
