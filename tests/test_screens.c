@@ -188,6 +188,43 @@ static void test_app_instructions(void **state)
     hol_app_destroy(app);
 }
 
+/* The menu's hint (a headset's first 10 s of play) waits for the
+ * instructions: read for 20 s, they do not use it up. */
+static void test_app_instructions_menu_hint(void **state)
+{
+    (void)state;
+    hol_app *app = make_app();
+    hol_app_level L;
+    memset(&L, 0, sizeof L);
+    L.mode = HOL_APP_FLAG;
+    L.seed = 3;
+    L.cues = HOL_CUE_ALL;
+    assert_int_equal(hol_tile_parse("N", -1, &L.flag), HOL_OK);
+    snprintf(L.instructions, sizeof L.instructions, "Find the flag.");
+    assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    const hol_app_view *v = hol_app_get_view(app);
+    hol_input in = head_at(0, 1, 1, 0);
+    in.device = HOL_DEVICE_XR_TOUCH;
+    step(app, in);
+    assert_int_equal(v->state, HOL_APP_SCREEN);
+    assert_null(strstr(v->hud.hint, "Y: menu"));
+    in = head_at(20, 1, 1, HOL_BTN_CONFIRM);
+    in.device = HOL_DEVICE_XR_TOUCH;
+    step(app, in);
+    in = head_at(21, 1, 1, 0);
+    in.device = HOL_DEVICE_XR_TOUCH;
+    step(app, in);
+    assert_int_equal(v->state, HOL_APP_PLAYING);
+    assert_non_null(strstr(v->hud.hint, "Y: menu"));
+    in.time_s = 21 + HOL_APP_MENU_HINT_S - 0.1;
+    step(app, in);
+    assert_non_null(strstr(v->hud.hint, "Y: menu"));
+    in.time_s = 21 + HOL_APP_MENU_HINT_S;
+    step(app, in);
+    assert_null(strstr(v->hud.hint, "Y: menu"));
+    hol_app_destroy(app);
+}
+
 static void test_app_closing(void **state)
 {
     (void)state;
@@ -301,6 +338,7 @@ int main(void)
         cmocka_unit_test(test_level_lines),
         cmocka_unit_test(test_wrap),
         cmocka_unit_test(test_app_instructions),
+        cmocka_unit_test(test_app_instructions_menu_hint),
         cmocka_unit_test(test_app_closing),
         cmocka_unit_test(test_study_lines),
     };
