@@ -441,12 +441,13 @@ EMCC     ?= emcc
 EMCC_ENV := NODE_PATH=/usr/share/nodejs EM_CACHE=/usr/share/emscripten/cache
 WEB      := $(BUILD)/web
 WEB_SRC  := $(CORE_SRC) $(filter-out render/hol_png.c,$(RENDER_SRC)) \
-            $(wildcard platform/web/*.c) platform/openxr/hol_xr_room.c
+            $(wildcard platform/web/*.c) platform/openxr/hol_xr_room.c \
+            platform/audio/hol_audio.c
 WEB_OBJ  := $(WEB_SRC:%.c=$(BUILD)/web-obj/%.o)
 WEB_CFLAGS := $(CSTD) $(WARN) -O3 -ffp-contract=off -D_DEFAULT_SOURCE -MMD -MP
 WEB_LDFLAGS := -O3 -sENVIRONMENT=web -sMIN_WEBGL_VERSION=2 -sMAX_WEBGL_VERSION=2 \
   -sALLOW_MEMORY_GROWTH=1 -sINITIAL_MEMORY=67108864 -sTOTAL_STACK=1048576 \
-  --js-library platform/web/hol_web_lib.js
+  -lopenal --js-library platform/web/hol_web_lib.js
 WEB_PAGE := $(addprefix $(WEB)/,index.html page.js store.js)
 WEB_PORT ?= 8080
 WEB_HTTPS_PORT ?= 8443

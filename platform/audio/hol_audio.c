@@ -1,7 +1,14 @@
-/* hol_audio.c - OpenAL Soft player loaded at run time (see hol_audio.h). */
+/* hol_audio.c - OpenAL Soft player loaded at run time (see hol_audio.h);
+ * in the web build (__EMSCRIPTEN__) the same player on emscripten's OpenAL
+ * (WebAudio, linked with -lopenal: no dlopen). */
 #include "hol_audio.h"
 
+#ifdef __EMSCRIPTEN__
+#include <AL/al.h>
+#include <AL/alc.h>
+#else
 #include <dlfcn.h>
+#endif
 #include <fcntl.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -12,6 +19,7 @@
  * them (the OpenAL 1.1 ABI and the ALC_SOFT_loopback and ALC_SOFT_HRTF
  * extensions): no header is needed at build time, so the tool builds where
  * libopenal-dev is missing (the xr-test chroot) and runs silent there. */
+#ifndef __EMSCRIPTEN__
 typedef struct ALCdevice ALCdevice;
 typedef struct ALCcontext ALCcontext;
 typedef char ALCchar, ALCboolean, ALboolean;
@@ -33,6 +41,7 @@ typedef void ALvoid;
 #define ALC_FALSE 0
 #define ALC_TRUE 1
 #define ALC_FREQUENCY 0x1007
+#endif
 #define ALC_FORMAT_CHANNELS_SOFT 0x1990
 #define ALC_FORMAT_TYPE_SOFT 0x1991
 #define ALC_FLOAT_SOFT 0x1406
@@ -96,6 +105,17 @@ static int aud_fail(char *msg, size_t cap, const char *what)
     return -1;
 }
 
+#ifdef __EMSCRIPTEN__
+/* emscripten's OpenAL is linked in: the table points at it */
+static int aud_load(hol_audio *a, char *msg, size_t cap)
+{
+    (void)msg, (void)cap;
+#define AUD_SYM(ret, name, args) a->f.name = name;
+    AUD_FUNCS(AUD_SYM)
+#undef AUD_SYM
+    return 0;
+}
+#else
 static int aud_load(hol_audio *a, char *msg, size_t cap)
 {
     setenv("ALSOFT_LOGLEVEL", "0", 0); /* OpenAL Soft's own log off */
@@ -110,6 +130,7 @@ static int aud_load(hol_audio *a, char *msg, size_t cap)
 #undef AUD_SYM
     return 0;
 }
+#endif
 
 static int aud_device(hol_audio *a, char *msg, size_t cap)
 {
@@ -125,6 +146,9 @@ static int aud_device(hol_audio *a, char *msg, size_t cap)
         if (a->dev)
             a->ctx = a->f.alcCreateContext(a->dev, attrs);
     } else {
+#ifdef __EMSCRIPTEN__
+        a->dev = a->f.alcOpenDevice(NULL); /* an AudioContext */
+#else
         /* ALSA and OpenAL Soft print their own lines when no device opens:
          * the caller's one warning says it, so theirs go to /dev/null */
         int saved = dup(2), null = open("/dev/null", O_WRONLY);
@@ -137,6 +161,7 @@ static int aud_device(hol_audio *a, char *msg, size_t cap)
             close(saved);
         if (null >= 0)
             close(null);
+#endif
         int has = a->dev && a->f.alcIsExtensionPresent(a->dev, "ALC_SOFT_HRTF");
         ALCint attrs[] = {ALC_HRTF_SOFT, ALC_TRUE, 0};
         if (a->dev)
@@ -268,6 +293,14 @@ int hol_audio_render(hol_audio *a, int16_t *out, int n)
     return 0;
 }
 
+int hol_audio_active(const hol_audio *a)
+{
+    int n = 0;
+    for (int v = 0; a && v < HOL_SOUND_MAX_SOURCES; v++)
+        n += a->loops[v].used;
+    return n;
+}
+
 int hol_audio_hrtf(const hol_audio *a)
 {
     return a && a->hrtf;
@@ -290,7 +323,9 @@ void hol_audio_close(hol_audio *a)
     }
     if (a->dev)
         a->f.alcCloseDevice(a->dev);
+#ifndef __EMSCRIPTEN__
     if (a->lib)
         dlclose(a->lib);
+#endif
     free(a);
 }

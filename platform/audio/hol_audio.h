@@ -21,6 +21,9 @@
  *   zeros), HRTF off (plain stereo panning, so the
  *   channels are the left and right of the head); rendering only when
  *   asked (hol_audio_render), so the same calls give the same samples.
+ * - The web build (__EMSCRIPTEN__): the same player linked against
+ *   emscripten's OpenAL (-lopenal, on WebAudio): a device is an
+ *   AudioContext, no HRTF (its panner is placed as OpenAL's), no loopback.
  * - Not thread safe; one player per process (OpenAL's current context).
  */
 #ifndef HOL_AUDIO_H
@@ -39,6 +42,8 @@ int hol_audio_open(int loopback, double volume, hol_audio **out, char *msg, size
 void hol_audio_apply(hol_audio *a, const hol_sound_list *l);
 /* Loopback only: render n stereo frames (2n int16) into out. 0 ok. */
 int hol_audio_render(hol_audio *a, int16_t *out, int n);
+/* The looping voices playing now (0..HOL_SOUND_MAX_SOURCES); 0 for NULL. */
+int hol_audio_active(const hol_audio *a);
 /* 1 when HRTF is in use. */
 int hol_audio_hrtf(const hol_audio *a);
 void hol_audio_close(hol_audio *a); /* NULL ok */

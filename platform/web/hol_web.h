@@ -84,4 +84,10 @@ const char *hol_web_overlay(void);
  * page told). 0 go on, 1 over or failed. */
 int hol_web_step(const hol_input *in);
 
+/* hol_web_sound.c: ?sound=0|1 read (-1: neither); one step's sound
+ * (over: the loops stop); the looping sources playing now. */
+int hol_web_sound_config(void);
+void hol_web_sound_step(int over);
+int hol_web_sound_active(void);
+
 #endif

@@ -176,7 +176,8 @@ static void poll_gamepad(hol_web_pancake *p)
  * focused, 4 the app state (hol_app_state), 5 paused, 6 room steps in the
  * level, 7 the session is over, 8 failed, 9 head x, 10 head z, 11 cell
  * column, 12 cell row, 13 the level clock, 14 yaw, 15 the device the
- * prompts name (HOL_DEVICE_*). */
+ * prompts name (HOL_DEVICE_*), 16 the looping sound sources playing
+ * (0 before the first gesture, with ?sound=0, or without WebAudio). */
 EMSCRIPTEN_KEEPALIVE double hol_web_state(int what)
 {
     hol_web *w = &hol_web_g;
@@ -188,6 +189,7 @@ EMSCRIPTEN_KEEPALIVE double hol_web_state(int what)
     case 3: return (double)w->xr_focused;
     case 7: return w->over;
     case 8: return w->failed;
+    case 16: return hol_web_sound_active();
     default: break;
     }
     if (!v)
@@ -316,6 +318,7 @@ int hol_web_step(const hol_input *in)
     }
     if (hol_app_get_events(hol_web_game_app())->level_started)
         hol_render_invalidate(w->rnd);
+    hol_web_sound_step(rc != 0);
     if (rc == 0)
         tell_pause(in);
     if (rc > 0) {
@@ -441,6 +444,10 @@ int main(void)
     w->pan.snap_deg = config_snap();
     if (w->pan.snap_deg < 0) {
         hol_web_js_event("failed", "snap is not a divisor of 360 in 1..180");
+        return 1;
+    }
+    if (hol_web_sound_config()) {
+        hol_web_js_event("failed", "sound is not 0 or 1");
         return 1;
     }
     if (hol_web_game_open(msg, sizeof msg)) {

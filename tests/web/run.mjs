@@ -201,6 +201,34 @@ await check('a bad level file is refused with one line naming its line, and noth
   await p.ctx.close();
 });
 
+await check('sound: after a click, an AudioContext runs and a level with sound all plays its sources; nothing before the click, nothing with ?sound=0, ?sound=2 refused', async () => {
+  fs.writeFileSync(path.join(testDir, 'sound.lvl'), 'mode flag\nseed 9\nflag-distance 3\nsound all\n');
+  const audio = (p) => p.page.evaluate(() => Module.holAudioState());
+  const p = await openPage('?level=/test/sound.lvl');
+  await p.until(async () => (await p.state(S.FRAMES)) > 10, 'frames');
+  assert((await p.state(S.SOUNDS)) === 0 && (await audio(p)) === '',
+    `before a gesture: ${await p.state(S.SOUNDS)} sources, AudioContext '${await audio(p)}'`);
+  await p.page.mouse.click(W / 2, H / 2);
+  await p.until(async () => (await p.state(S.SOUNDS)) > 0, 'sources playing after the click');
+  await p.until(async () => (await audio(p)) === 'running', 'the AudioContext running');
+  assert(p.log.includes('web: sound: OpenAL on WebAudio'), 'no sound line: ' + p.log.join(' | '));
+  assert(!p.errors.length, 'errors: ' + p.errors.join('; '));
+  await p.ctx.close();
+  const q = await openPage('?level=/test/sound.lvl&sound=0');
+  await q.until(async () => (await q.state(S.FRAMES)) > 10, 'frames (sound=0)');
+  await q.page.mouse.click(W / 2, H / 2);
+  const f = await q.state(S.FRAMES);
+  await q.until(async () => (await q.state(S.FRAMES)) > f + 10, 'frames after the click (sound=0)');
+  assert((await q.state(S.SOUNDS)) === 0 && (await audio(q)) === '',
+    `sound=0: ${await q.state(S.SOUNDS)} sources, AudioContext '${await audio(q)}'`);
+  assert(!q.errors.length, 'errors (sound=0): ' + q.errors.join('; '));
+  await q.ctx.close();
+  const r = await openPage('?level=/test/sound.lvl&sound=2', { fail: true });
+  const st = await r.page.evaluate(() => document.getElementById('status').textContent);
+  assert(st === 'Failed: sound is not 0 or 1', 'status: ' + st);
+  await r.ctx.close();
+});
+
 await check('a night level with lanterns draws on WebGL 2 (the lit shader compiles, no console error), much darker than the same level at day', async () => {
   const mean = async (name, text) => {
     fs.writeFileSync(path.join(testDir, name), text);
