@@ -23,7 +23,8 @@
  *   asked (hol_audio_render), so the same calls give the same samples.
  * - The web build (__EMSCRIPTEN__): the same player linked against
  *   emscripten's OpenAL (-lopenal, on WebAudio): a device is an
- *   AudioContext, no HRTF (its panner is placed as OpenAL's), no loopback.
+ *   AudioContext; its ALC_SOFT_HRTF sets the panners' model to WebAudio's
+ *   'HRTF'; no loopback.
  * - Not thread safe; one player per process (OpenAL's current context).
  */
 #ifndef HOL_AUDIO_H

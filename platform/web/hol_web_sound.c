@@ -57,7 +57,7 @@ void hol_web_sound_step(int over)
             printf("web: sound off: %s\n", msg);
             return;
         }
-        printf("web: sound: OpenAL on WebAudio\n");
+        printf("web: sound: OpenAL on WebAudio%s\n", hol_audio_hrtf(g.au) ? ", HRTF" : "");
     }
     hol_sound_update(&g.snd, hol_app_get_view(app), hol_app_get_events(app), hol_app_world(app),
                      &g.sl);
