@@ -27,7 +27,7 @@ typedef struct hol__lp {
     long tiling_line, room_line, lantern_line[HOL_APP_MAX_LANTERNS];
     int geo_only; /* the first pass: only the geometry lines */
     long point_line;   /* the `point` line (0: none) */
-    const char *raw;   /* the line being read, comment removed, unsplit */
+    char raw[HOL_LEVEL_LINE_MAX + 1]; /* the line being read, comment removed, unsplit */
     int ndefs;         /* `question` lines read (asks copy theirs) */
     hol_app_question defs[HOL_APP_MAX_QUESTIONS];
     long key_line[32]; /* where each key of hol__keys was given (0: not yet) */
@@ -654,9 +654,7 @@ static hol_err hol__line(hol__lp *p, const char *s, size_t n)
     char *hash = strchr(line, '#');
     if (hash)
         *hash = 0;
-    char raw[HOL_LEVEL_LINE_MAX + 1];
-    memcpy(raw, line, strlen(line) + 1);
-    p->raw = raw;
+    memcpy(p->raw, line, strlen(line) + 1);
     char *f[HOL__FIELDS];
     int nf = hol__split(line, f);
     if (nf == 0)
