@@ -42,6 +42,10 @@ size_t cli_parse_count(const char *s);
 #define CLI_BUDGET_MAX 262144
 int cli_budget_value(const char *cmd, const char *v, size_t *out_budget);
 
+/* The value of --volume (play, xr): a number in 0..1 into *out_volume: 0,
+ * or -1 after reporting it for cmd. */
+int cli_volume_value(const char *cmd, const char *v, double *out_volume);
+
 /* The geometry options (SPEC 7): opt "--tiling" with the value "4,Q" into
  * *q and, when cols is not NULL, "--room" with "CxR" into *cols and *rows
  * (a command without a room passes NULL: --room is then not its option).

@@ -230,6 +230,18 @@ size_t cli_parse_count(const char *s)
     return (size_t)v;
 }
 
+int cli_volume_value(const char *cmd, const char *v, double *out_volume)
+{
+    char *end = NULL;
+    double x = strtod(v, &end);
+    if (!v[0] || *end || !(x >= 0 && x <= 1)) {
+        cli_error(cmd, 0, "--volume '%.40s' is not a number in 0..1", v);
+        return -1;
+    }
+    *out_volume = x;
+    return 0;
+}
+
 int cli_budget_value(const char *cmd, const char *v, size_t *out_budget)
 {
     if (!(*out_budget = cli_parse_count(v)) || *out_budget > CLI_BUDGET_MAX) {

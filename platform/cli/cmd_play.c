@@ -203,13 +203,7 @@ static int play_value(const char *cmd, const char *a, const char *val, play_opts
         }
         o->snap_deg = (int)n;
     } else if (!strcmp(a, "--volume")) {
-        char *end = NULL;
-        double v = strtod(val, &end);
-        if (!val[0] || *end || !(v >= 0 && v <= 1)) {
-            cli_error(cmd, 0, "--volume '%.40s' is not a number in 0..1", val);
-            return 1;
-        }
-        o->volume = v;
+        return cli_volume_value(cmd, val, &o->volume) ? 1 : 0;
     }
     return 0;
 }

@@ -176,13 +176,8 @@ static int xr_options(const char *cmd, int argc, char **argv, xr_opts *o)
             o->no_haptics = 1;
         else if (!strcmp(a, "--mute"))
             o->mute = 1;
-        else if (!strcmp(a, "--volume")) {
-            char *end = NULL;
-            o->volume = strtod(val, &end);
-            bad = !val[0] || *end || !(o->volume >= 0 && o->volume <= 1);
-            if (bad)
-                cli_error(cmd, 0, "--volume '%.40s' is not a number in 0..1", val);
-        }
+        else if (!strcmp(a, "--volume"))
+            bad = cli_volume_value(cmd, val, &o->volume) != 0;
         else if (!strcmp(a, "--restart-participant"))
             o->restart_participant = 1;
         else if (!strcmp(a, "--resume"))
