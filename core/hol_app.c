@@ -342,6 +342,9 @@ static hol_err hol__begin(hol_app *app)
     app->feedback[0] = 0;
     app->feedback_until = 0;
     app->path_told = 0;
+    app->rings_told = 0;
+    app->rings_note = 0;
+    app->has_tree = 0;
     app->nmarks = 0;
     if (L->mode == HOL_APP_TUTORIAL)
         hol__stage(app, hol__next_stage(app, 0), &r);

@@ -112,6 +112,10 @@ enum hol_app_minimap_place { HOL_MINIMAP_HUD = 0, HOL_MINIMAP_HAND = 1, HOL_MINI
 #define HOL_APP_MENU_HINT_S 10.0
 /* The tutorial's feedback line the first time the path cue shows. */
 #define HOL_APP_PATH_TEXT "Map line: the fewest steps to the marker"
+/* The tutorial's line (hol_app_hud.note) the first time the minimap's
+ * rings show (lesson 2's two tiles of one cell, map.marks), beside the
+ * lesson's feedback, as long as the rings. */
+#define HOL_APP_RINGS_TEXT "Rings on the map: this cell's two tiles"
 #define HOL_APP_HUD_LINES 6
 #define HOL_APP_MAX_MARKS 2
 /* Most room steps one app step reports (a frame's motion in sub-steps). */
@@ -130,12 +134,16 @@ enum hol_app_minimap_place { HOL_MINIMAP_HUD = 0, HOL_MINIMAP_HAND = 1, HOL_MINI
 /* The tutorial's lessons, in order, each completed by a room step:
  * 0 step onto the marked tile one step ahead (room north);
  * 1 walk round a tree: back in the cell where the lesson began, after at
- *   least 4 steps, on another tile (holonomy);
+ *   least 4 steps, on another tile (holonomy); one tree is marked
+ *   (view.tree_marked, view.tree_vertex): the inner corner of that cell
+ *   that the lesson's first fewest-steps walk goes round (any loop that
+ *   comes back on another tile still counts);
  * 2 reach a marker two tiles away in a straight line the room allows
  *   (room north, else west, east, south; two ahead if none fits), reading
  *   the minimap;
  * 3 find a flag three tiles away (ahead, ahead, left), every cue on.
- * Targets are placed relative to where the lesson begins; the level is done
+ * Lessons 1 and 3's targets stand as markers (HOL_APP_OBJ_MARKER), drawn
+ * unlike the flag of lesson 4. Targets are placed relative to where the lesson begins; the level is done
  * after the last. Each lesson done says so on the HUD for 6 s of level time
  * (hud.feedback; lesson 2: "Same cell, another tile: that is holonomy",
  * with the cell's two tiles marked on the minimap: map.marks). Each lesson
@@ -304,6 +312,10 @@ typedef struct hol_app_hud {
                                          shown); or "" */
     char address[HOL_TILE_ADDR_MAX];  /* the current tile */
     char feedback[HOL_APP_TEXT_MAX];  /* tutorial: the lesson just done, or "" */
+    char note[HOL_APP_TEXT_MAX];      /* tutorial: HOL_APP_RINGS_TEXT while the
+                                         minimap's rings show the first time
+                                         in the level (a line after the
+                                         feedback), or "" */
     int steps;                        /* room steps this level */
     int optimum;                      /* fewest steps from the level start; -1 none */
     int remaining;                    /* optimal steps left from here; -1 none */
@@ -322,8 +334,8 @@ typedef struct hol_app_hud {
                                          of the questionnaire and its count */
     int ask_value;                    /* the value chosen now (likert: the
                                          number; choice: its index) */
-    /* the text as drawn, one line each: the feedback if any, the
-     * objective (or status), "STEPS n", "TIME m:ss OF m:ss" when the level
+    /* the text as drawn, one line each: the feedback if any, the note
+     * if any, the objective (or status), "STEPS n", "TIME m:ss OF m:ss" when the level
      * has a time limit; with debug on also "TILE address", "CELL c,r NORTH
      * o" and the time; "TILE" keeps the address's case, other lines are
      * shown in capitals. The hint (the prompt) is drawn on its own. */
@@ -346,10 +358,12 @@ typedef struct hol_app_minimap {
 /* A game object standing in the world. */
 typedef enum hol_app_object_kind {
     HOL_APP_OBJ_NONE = 0,
-    HOL_APP_OBJ_FLAG,        /* the flag, or a tutorial lesson's marker */
+    HOL_APP_OBJ_FLAG,        /* the flag (a flag level, tutorial lesson 4) */
     HOL_APP_OBJ_KEY,         /* a key not yet collected */
     HOL_APP_OBJ_CHEST,       /* the chest, closed */
-    HOL_APP_OBJ_CHEST_OPEN   /* the chest once every key is held */
+    HOL_APP_OBJ_CHEST_OPEN,  /* the chest once every key is held */
+    HOL_APP_OBJ_MARKER       /* a tutorial lesson's marker (lessons 1, 3):
+                                not a flag */
 } hol_app_object_kind;
 
 typedef struct hol_app_object {
@@ -380,6 +394,13 @@ typedef struct hol_app_view {
                                          only for a headset's eyes */
     hol_app_hud hud;
     hol_app_minimap map;
+    int tree_marked;                  /* 1: the tree on room vertex
+                                         tree_vertex is marked (tutorial
+                                         lesson 2: the tree to walk round) */
+    int tree_vertex[2];               /* its column and row of vertices: it
+                                         stands at x = tree_vertex[0] *
+                                         cell_m, z = tree_vertex[1] * cell_m
+                                         (0..C, 0..R; inside the room) */
     int nobjects;                     /* game objects to draw in the world */
     hol_app_object objects[HOL_APP_MAX_OBJECTIVES];
     uint64_t frame;                   /* steps of the app so far */

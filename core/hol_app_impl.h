@@ -73,6 +73,10 @@ struct hol_app {
     int fixed_shown;         /* "Minimap fixed" was asked for ... */
     double fixed_until;      /* ... and shows until this input time */
     int path_told;           /* the path cue's meaning said (tutorial) */
+    int rings_told;          /* the rings' meaning said (tutorial) ... */
+    int rings_note;          /* ... with the marks now shown */
+    int has_tree;            /* lesson 2 marks the tree on vertex ... */
+    int tree[2];             /* ... (column, row of room vertices) */
     int nmarks;              /* tiles marked on the minimap with it */
     hol_tile marks[HOL_APP_MAX_MARKS];
     /* pointing (level.point): the level's walk as SPEC 8 counts it */

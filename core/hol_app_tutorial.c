@@ -41,6 +41,33 @@ static hol_tile hol__two_ahead(const hol_room *r)
     return hol__tile_ahead(r, two, 2);
 }
 
+/* Lesson 2's marked tree: the room vertex that the lesson's first
+ * fewest-steps walk from its start goes round (a square of 4 steps: its
+ * first two steps name the corner of the cell); else the first inner
+ * corner of the cell (NW, NE, SW, SE). None in no room this game has. */
+static void hol__mark_tree(hol_app *app, const hol_room *r)
+{
+    uint8_t w[HOL__LOOP_MAX];
+    int c = r->col, row = r->row, cols = hol_room_cols(r), rows = hol_room_rows(r);
+    app->has_tree = 0;
+    if (hol__loop_left(app, r, w, (int)sizeof w) == 4 && (w[0] - w[1]) % 2 &&
+        w[2] == (w[0] + 2) % 4 && w[3] == (w[1] + 2) % 4) {
+        app->tree[0] = c + (w[0] == HOL_DIR_E || w[1] == HOL_DIR_E);
+        app->tree[1] = row + (w[0] == HOL_DIR_S || w[1] == HOL_DIR_S);
+        app->has_tree = 1;
+        return;
+    }
+    for (int k = 0; k < 4; k++) {
+        int x = c + (k & 1), z = row + (k >> 1);
+        if (x > 0 && x < cols && z > 0 && z < rows) {
+            app->tree[0] = x;
+            app->tree[1] = z;
+            app->has_tree = 1;
+            return;
+        }
+    }
+}
+
 /* The first lesson at or after k that the level plays (HOL_APP_TUTORIAL_STAGES:
  * none left). */
 int hol__next_stage(const hol_app *app, int k)
@@ -71,6 +98,9 @@ void hol__stage(hol_app *app, int k, const hol_room *r)
         hol_tile placed;
         (void)hol_world_reserve(app->world, app->target, 0, HOL_OBJ_FLAG, &placed);
     }
+    app->has_tree = 0;
+    if (k == 1)
+        hol__mark_tree(app, r);
 }
 
 void hol__tutorial_enter(hol_app *app, const hol_room *r)
@@ -86,9 +116,12 @@ void hol__tutorial_enter(hol_app *app, const hol_room *r)
     snprintf(app->feedback, sizeof app->feedback, "%s", hol__lesson_done[app->stage]);
     app->feedback_until = app->level_t + HOL__FEEDBACK_S;
     app->nmarks = 0;
+    app->rings_note = 0;
     if (!app->has_target) {
         app->marks[app->nmarks++] = s0->tile;
         app->marks[app->nmarks++] = r->tile;
+        app->rings_note = !app->rings_told; /* the first rings: what they mean */
+        app->rings_told = 1;
     }
     int next = hol__next_stage(app, app->stage + 1);
     if (next >= HOL_APP_TUTORIAL_STAGES) {

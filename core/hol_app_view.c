@@ -78,7 +78,7 @@ static void hol__fill_eyes(hol_app *app, const hol_input *in)
 static void hol__fill_objective(const hol_app *app, hol_app_hud *h)
 {
     static const char *const lesson[HOL_APP_TUTORIAL_STAGES] = {
-        "1/4 Step onto the marked tile ahead", "2/4 Walk round a tree back to this cell",
+        "1/4 Step onto the marked tile ahead", "2/4 Walk round the marked tree to this cell",
         "3/4 Use the map: reach the marker", "4/4 Find the flag, every cue on"};
     switch (app->level.mode) {
     case HOL_APP_FLAG: snprintf(h->objective, sizeof h->objective, "Find the flag"); break;
@@ -280,9 +280,14 @@ static void hol__fill_lines(const hol_app *app, hol_app_hud *h)
         h->nlines = n < HOL_APP_HUD_LINES ? n : HOL_APP_HUD_LINES;
         return;
     }
-#define HOL__LINE(...) snprintf(h->lines[h->nlines++], HOL_APP_TEXT_MAX, __VA_ARGS__)
+#define HOL__LINE(...)                                                                     \
+    (h->nlines < HOL_APP_HUD_LINES                                                         \
+         ? (void)snprintf(h->lines[h->nlines++], HOL_APP_TEXT_MAX, __VA_ARGS__)            \
+         : (void)0)
     if (h->feedback[0] && (v->state != HOL_APP_DONE || !strcmp(h->feedback, HOL__FIXED_TEXT)))
         HOL__LINE("%s", h->feedback);
+    if (h->note[0] && v->state != HOL_APP_DONE)
+        HOL__LINE("%s", h->note);
     HOL__LINE("%s", h->status[0] ? h->status : h->objective);
     HOL__LINE("STEPS %d", h->steps);
     if (lim > 0)
@@ -291,7 +296,7 @@ static void hol__fill_lines(const hol_app *app, hol_app_hud *h)
     if (h->debug) {
         HOL__LINE("TILE %.40s", h->address);
         HOL__LINE("CELL %d,%d NORTH %d", v->user.col, v->user.row, v->user.orient);
-        if (lim <= 0 && h->nlines < HOL_APP_HUD_LINES)
+        if (lim <= 0)
             HOL__LINE("TIME %ld:%02ld", secs / 60 % 100000, secs % 60);
     }
 #undef HOL__LINE
@@ -324,13 +329,15 @@ static void hol__fill_hud(hol_app *app, const hol_input *in)
     int fixed = app->fixed_shown && in && in->time_s < app->fixed_until;
     snprintf(h->feedback, sizeof h->feedback, "%s",
              fixed ? HOL__FIXED_TEXT : fb ? app->feedback : "");
+    snprintf(h->note, sizeof h->note, "%s",
+             fb && !fixed && app->nmarks && app->rings_note ? HOL_APP_RINGS_TEXT : "");
     hol__fill_objective(app, h);
     hol__fill_status(app, in, h);
     hol__fill_lines(app, h);
 }
 
 /* The minimap model and the game objects in the world: the flag (or a
- * lesson's marker), the keys not yet collected, the chest (open once every
+ * lesson's marker, and lesson 2's marked tree), the keys not yet collected, the chest (open once every
  * key is held); the path when the user strays beyond the optimum (the
  * lesson's, in the tutorial) plus desc.stray_steps. */
 static void hol__fill_map(hol_app *app)
@@ -359,7 +366,11 @@ static void hol__fill_map(hol_app *app)
     if (L->mode == HOL_APP_FLAG)
         v->objects[v->nobjects++] = (hol_app_object){L->flag, HOL_APP_OBJ_FLAG};
     if (L->mode == HOL_APP_TUTORIAL && app->has_target && !app->done)
-        v->objects[v->nobjects++] = (hol_app_object){app->target, HOL_APP_OBJ_FLAG};
+        v->objects[v->nobjects++] = (hol_app_object){
+            app->target, app->stage == 3 ? HOL_APP_OBJ_FLAG : HOL_APP_OBJ_MARKER};
+    v->tree_marked = L->mode == HOL_APP_TUTORIAL && app->stage == 1 && app->has_tree && !app->done;
+    v->tree_vertex[0] = v->tree_marked ? app->tree[0] : 0;
+    v->tree_vertex[1] = v->tree_marked ? app->tree[1] : 0;
     if (L->mode == HOL_APP_KEYS) {
         for (int k = 0; k < L->nkeys; k++)
             if (!(app->keys_held >> k & 1))
@@ -380,6 +391,8 @@ static void hol__fill_map(hol_app *app)
         snprintf(app->feedback, sizeof app->feedback, "%s", HOL_APP_PATH_TEXT);
         app->feedback_until = app->level_t + HOL__FEEDBACK_S;
         app->nmarks = 0;
+        app->rings_note = 0;
+        v->hud.note[0] = 0;
         snprintf(v->hud.feedback, sizeof v->hud.feedback, "%s", HOL_APP_PATH_TEXT);
     }
 }

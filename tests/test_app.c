@@ -887,6 +887,110 @@ static void test_tutorial_feedback(void **state)
     hol_app_destroy(app);
 }
 
+/* The square walk from cell (c, r) round the room vertex (vx, vz), one of
+ * the cell's corners: towards it across, towards it along, then back. */
+static void round_vertex(int c, int r, int vx, int vz, uint8_t walk[4])
+{
+    walk[0] = vx == c + 1 ? HOL_DIR_E : HOL_DIR_W;
+    walk[1] = vz == r + 1 ? HOL_DIR_S : HOL_DIR_N;
+    walk[2] = (uint8_t)((walk[0] + 2) % 4);
+    walk[3] = (uint8_t)((walk[1] + 2) % 4);
+}
+
+/* Lesson 2 marks the tree to walk round, from every cell: an inner corner
+ * of the lesson's cell, and walking round it finishes the lesson in its
+ * optimum, 4 steps; the mark goes with the lesson. */
+static void test_tutorial_marked_tree(void **state)
+{
+    (void)state;
+    for (int start = 0; start < 9; start++) {
+        hol_app *app = make_app();
+        hol_app_level L = tutorial_level(1u << 1 | 1u << 2);
+        int c = 1, r = 1, n = 0;
+        while (c < start % 3)
+            L.start[n++] = HOL_DIR_E, c++;
+        while (c > start % 3)
+            L.start[n++] = HOL_DIR_W, c--;
+        while (r < start / 3)
+            L.start[n++] = HOL_DIR_S, r++;
+        while (r > start / 3)
+            L.start[n++] = HOL_DIR_N, r--;
+        L.nstart = n;
+        assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+        const hol_app_view *v = hol_app_get_view(app);
+        assert_int_equal(v->hud.stage, 1);
+        assert_true(strstr(v->hud.objective, "marked tree") != NULL);
+        assert_int_equal(v->tree_marked, 1);
+        int vx = v->tree_vertex[0], vz = v->tree_vertex[1];
+        assert_true(vx == c || vx == c + 1);
+        assert_true(vz == r || vz == r + 1);
+        assert_true(vx > 0 && vx < 3 && vz > 0 && vz < 3); /* a tree inside the room */
+        uint8_t walk[4];
+        round_vertex(c, r, vx, vz, walk);
+        double t = 0;
+        assert_int_equal(play_walk(app, walk, 3, &t), -1);
+        assert_int_equal(v->hud.stage, 1);
+        assert_int_equal(v->tree_marked, 1);
+        assert_int_equal(play_walk(app, walk + 3, 1, &t), -1);
+        assert_int_equal(v->hud.stage, 2); /* done in 4 steps: the optimum */
+        assert_int_equal(v->user.col, c);
+        assert_int_equal(v->user.row, r);
+        assert_int_equal(v->tree_marked, 0);
+        hol_app_destroy(app);
+    }
+}
+
+/* The lessons' markers are not flags: lessons 1 and 3 stand a marker,
+ * lesson 4 the flag; the first time the minimap's rings show (lesson 2's
+ * end), one line after the feedback says what they mean, as long as they
+ * show. */
+static void test_tutorial_marker_and_rings(void **state)
+{
+    (void)state;
+    hol_app *app = make_app();
+    hol_app_level L = tutorial_level(0);
+    assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    const hol_app_view *v = hol_app_get_view(app);
+    assert_int_equal(v->nobjects, 1);
+    assert_int_equal(v->objects[0].kind, HOL_APP_OBJ_MARKER);
+    assert_int_equal(v->tree_marked, 0);
+    double t = 0;
+    uint8_t north[1] = {HOL_DIR_N};
+    play_walk(app, north, 1, &t);
+    assert_int_equal(v->hud.stage, 1);
+    assert_int_equal(v->nobjects, 0);
+    assert_string_equal(v->hud.note, "");
+    uint8_t walk[4];
+    round_vertex(v->user.col, v->user.row, v->tree_vertex[0], v->tree_vertex[1], walk);
+    play_walk(app, walk, 4, &t);
+    assert_int_equal(v->hud.stage, 2);
+    assert_int_equal(v->map.nmarks, 2);
+    assert_string_equal(v->hud.note, HOL_APP_RINGS_TEXT);
+    assert_string_equal(v->hud.lines[0], "Same cell, another tile: that is holonomy");
+    assert_string_equal(v->hud.lines[1], HOL_APP_RINGS_TEXT);
+    assert_true(strstr(v->hud.lines[2], "3/4") != NULL);
+    assert_int_equal(v->objects[0].kind, HOL_APP_OBJ_MARKER);
+    hol_input in = tracked_at(t + 5.9, v->user.col, v->user.row);
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    assert_string_equal(v->hud.note, HOL_APP_RINGS_TEXT);
+    in = tracked_at(t + 6.1, v->user.col, v->user.row);
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    assert_int_equal(v->map.nmarks, 0);
+    assert_string_equal(v->hud.note, "");
+    assert_true(strstr(v->hud.lines[0], "3/4") != NULL);
+    t += 6.1;
+    uint8_t nav[HOL_NAV_WALK_MAX];
+    hol_nav_result res;
+    hol_room here = v->user;
+    assert_int_equal(hol_nav_find(g_nav, &here, v->map.objectives[0], 0, nav, sizeof nav, &res),
+                     HOL_OK);
+    play_walk(app, nav, res.len, &t);
+    assert_int_equal(v->hud.stage, 3);
+    assert_int_equal(v->objects[0].kind, HOL_APP_OBJ_FLAG); /* lesson 4: the flag */
+    assert_string_equal(v->hud.note, "");
+    hol_app_destroy(app);
+}
+
 /* The fewest steps that finish lesson 2 from r (taken steps so far), by
  * brute force over every walk of up to 10 steps: back in (col, row) on a
  * tile other than t0, at least 4 steps in all. */
@@ -1604,6 +1708,8 @@ int main(void)
         cmocka_unit_test(test_tutorial_feedback),
         cmocka_unit_test(test_tutorial_loop_optimum),
         cmocka_unit_test(test_tutorial_strayed),
+        cmocka_unit_test(test_tutorial_marked_tree),
+        cmocka_unit_test(test_tutorial_marker_and_rings),
         cmocka_unit_test(test_tutorial_two_tiles_straight),
         cmocka_unit_test(test_prompts_name_buttons),
         cmocka_unit_test(test_menu_hint_first_seconds),
