@@ -69,11 +69,14 @@ void hol_app_frame_desc(const hol_app_view *v, int eye, int w, int h, double fov
     for (int i = 0; i < no; i++) {
         static const uint8_t kinds[] = {HOL_RENDER_OBJ_NONE, HOL_RENDER_OBJ_FLAG,
                                         HOL_RENDER_OBJ_KEY, HOL_RENDER_OBJ_CHEST,
-                                        HOL_RENDER_OBJ_CHEST_OPEN};
+                                        HOL_RENDER_OBJ_CHEST_OPEN, HOL_RENDER_OBJ_MARKER};
         int k = v->objects[i].kind;
         fd->object_tiles[i] = v->objects[i].tile;
         fd->object_kinds[i] = k >= 0 && k < (int)sizeof kinds ? kinds[k] : 0;
     }
+    fd->tree_marked = v->tree_marked != 0;
+    fd->tree_vertex[0] = v->tree_vertex[0];
+    fd->tree_vertex[1] = v->tree_vertex[1];
     fd->objective_text = v->hud.status[0] ? v->hud.status : v->hud.objective;
     fd->steps_taken = v->hud.steps;
     fd->time_s = v->hud.elapsed_s;

@@ -103,6 +103,7 @@ struct hol_render {
     hol__slot slots[HOL__SLOTS];
     uint64_t frame;
     int room_valid, room_bare;
+    int room_tree[3];  /* the marked tree the room mesh has (marked, vx, vz) */
     hol_room room_user;
     double room_cell;
     struct hol_world *room_world;
@@ -663,10 +664,15 @@ static hol_err hol__queue_leaves(hol_render *r, const hol_frame_desc *f)
  * world stay the same. */
 static hol_err hol__queue_room(hol_render *r, const hol_frame_desc *f, double cell_m)
 {
+    int tree[3] = {f->tree_marked != 0, f->tree_marked ? f->tree_vertex[0] : 0,
+                   f->tree_marked ? f->tree_vertex[1] : 0};
     if (!r->room_valid || r->room_world != r->desc.world || r->room_cell != cell_m ||
-        memcmp(&r->room_user, &f->user, sizeof f->user)) {
+        memcmp(&r->room_user, &f->user, sizeof f->user) || memcmp(r->room_tree, tree, sizeof tree)) {
         hol_mesh_clear(&r->scratch);
         hol_scene_room(r->scene, &r->scratch, &f->user, r->desc.world, cell_m);
+        if (tree[0])
+            hol_scene_tree_mark(r->scene, &r->scratch, tree[1], tree[2], cell_m);
+        memcpy(r->room_tree, tree, sizeof tree);
         if (r->scratch.overflow)
             return HOL_ENOMEM;
         hol__upload_scratch(r, 0, 0);

@@ -135,7 +135,11 @@ enum {
     HOL_RENDER_OBJ_FLAG,
     HOL_RENDER_OBJ_KEY,
     HOL_RENDER_OBJ_CHEST,      /* closed */
-    HOL_RENDER_OBJ_CHEST_OPEN  /* every key held */
+    HOL_RENDER_OBJ_CHEST_OPEN, /* every key held */
+    HOL_RENDER_OBJ_MARKER      /* a tutorial lesson's marker: a glowing
+                                  violet ring on the ground round a violet
+                                  post with a glowing orb (no cloth: not a
+                                  flag) */
 };
 
 typedef struct hol_frame_desc {
@@ -152,6 +156,12 @@ typedef struct hol_frame_desc {
     int nobjects;
     hol_tile object_tiles[HOL_RENDER_MAX_OBJECTIVES];
     uint8_t object_kinds[HOL_RENDER_MAX_OBJECTIVES];
+    /* A marked tree (the tutorial's tree to walk round): tree_marked 1
+     * puts two glowing violet bands round the trunk on room vertex
+     * (tree_vertex[0], tree_vertex[1]), at x = tree_vertex[0] * cell_m,
+     * z = tree_vertex[1] * cell_m, and the marker's ring round its foot. */
+    int tree_marked;
+    int tree_vertex[2];
     const char *objective_text; /* e.g. "find the key"; NULL: none */
     int steps_taken;
     double time_s;

@@ -14,7 +14,8 @@
 enum {
     HOL__T_PINE, HOL__T_BIRCH, HOL__T_OAK, HOL__T_MAPLE, /* = hol_tree_kind */
     HOL__T_TUFT, HOL__T_FLOWER, HOL__T_ROCK, HOL__T_MUSHROOM, HOL__T_LOG,
-    HOL__T_FLAG, HOL__T_KEY, HOL__T_CHEST, HOL__T_CHEST_OPEN, HOL__T_POLE, HOL__T_COUNT
+    HOL__T_FLAG, HOL__T_KEY, HOL__T_CHEST, HOL__T_CHEST_OPEN, HOL__T_POLE,
+    HOL__T_MARKER, HOL__T_TREE_MARK, HOL__T_COUNT
 };
 
 struct hol_scene {
@@ -26,6 +27,48 @@ struct hol_scene {
 static const uint8_t hol__trunk[3] = {104, 74, 50};
 static const uint8_t hol__hedge[3] = {56, 118, 60};
 static const uint8_t hol__white[3] = {255, 255, 255};
+/* the tutorial's marks: violet, a colour no prop, flag or pole has */
+static const uint8_t hol__mark[3] = {150, 90, 255};
+static const uint8_t hol__mark_dark[3] = {96, 58, 170};
+
+/* A ring of 16 flat blocks of radius r on the ground. */
+static void hol__ring(hol_mesh *m, float r)
+{
+    hol_vertex tv[64];
+    uint32_t ti[128];
+    hol_mesh tmp;
+    hol_mesh_init(&tmp, tv, 64, ti, 128);
+    float half = r * 0.21f; /* a little over pi r / 16: the blocks meet */
+    hol_mesh_box(&tmp, (const float[3]){-half, 0.005f, r - 0.03f},
+                 (const float[3]){half, 0.045f, r + 0.03f}, hol__mark);
+    for (int k = 0; k < 16; k++)
+        hol_mesh_append(m, &tmp, (hol_place){0, 0, 0, (float)k * 0.3926991f, 1});
+}
+
+/* Vertices from v0 on glow (drawn unlit, bright). */
+static void hol__glow(hol_mesh *m, uint32_t v0)
+{
+    for (uint32_t i = v0; i < m->nv; i++)
+        m->v[i].rgba[3] = HOL_MESH_GLOW;
+}
+
+/* The lesson's marker (a glowing ring, a violet post and a glowing orb:
+ * no cloth, nothing red) and the marked tree's bands and ring. */
+static void hol__build_marks(hol_scene *s)
+{
+    hol_mesh *m = &s->tpl[HOL__T_MARKER];
+    hol__ring(m, 0.32f);
+    hol__glow(m, 0);
+    hol_mesh_frustum(m, 6, 0.035f, 0.0f, 0.025f, 1.0f, hol__mark_dark);
+    uint32_t g = m->nv;
+    hol_mesh_blob(m, (const float[3]){0, 1.1f, 0}, 0.11f, 0.11f, 0.11f, hol__mark);
+    hol__glow(m, g);
+    m = &s->tpl[HOL__T_TREE_MARK];
+    hol__ring(m, 0.30f);
+    hol_mesh_frustum(m, 8, 0.125f, 1.00f, 0.125f, 1.16f, hol__mark);
+    hol_mesh_frustum(m, 8, 0.12f, 1.36f, 0.12f, 1.52f, hol__mark);
+    hol__glow(m, 0);
+}
 
 void hol_scene_sky(float out_rgb[3])
 {
@@ -118,6 +161,7 @@ static void hol__build_templates(hol_scene *s)
     m = &s->tpl[HOL__T_POLE]; /* white: tinted per objective */
     hol_mesh_frustum(m, 6, 0.035f, 0.0f, 0.035f, 2.6f, hol__white);
     hol_mesh_blob(m, (const float[3]){0, 2.65f, 0}, 0.09f, 0.09f, 0.09f, hol__white);
+    hol__build_marks(s);
 }
 
 hol_err hol_scene_create(const hol_alloc *a, hol_scene **out)
@@ -304,6 +348,12 @@ void hol_scene_room(const hol_scene *s, hol_mesh *out, const hol_room *user,
     hol__outer_ground(out, W, D);
     hol__backdrop(s, out, W, D);
     hol__hedges(out, W, D);
+}
+
+void hol_scene_tree_mark(const hol_scene *s, hol_mesh *out, int vx, int vz, double cell_m)
+{
+    float m = cell_m > 0 ? (float)cell_m : 1.0f;
+    hol_mesh_append(out, &s->tpl[HOL__T_TREE_MARK], (hol_place){(float)vx * m, 0, (float)vz * m, 0, 1});
 }
 
 static void hol__biome_rgb(int biome, uint64_t h, uint8_t rgb[3])
@@ -512,7 +562,8 @@ void hol_scene_tile(const hol_scene *s, hol_mesh *out, hol_tile t,
     default: /* game objects: drawn below, as the app says */
         break;
     }
-    static const int game_tpl[] = {-1, HOL__T_FLAG, HOL__T_KEY, HOL__T_CHEST, HOL__T_CHEST_OPEN};
+    static const int game_tpl[] = {-1,          HOL__T_FLAG,       HOL__T_KEY,
+                                   HOL__T_CHEST, HOL__T_CHEST_OPEN, HOL__T_MARKER};
     if (kind > 0 && kind < (int)(sizeof game_tpl / sizeof game_tpl[0])) {
         /* the key is small: shown half as large again */
         hol_place g = {0, 0, 0, 0, kind == HOL_RENDER_OBJ_KEY ? 1.5f : 1};

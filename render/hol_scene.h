@@ -39,6 +39,11 @@ void hol_scene_destroy(const hol_alloc *a, hol_scene *s);
 void hol_scene_room(const hol_scene *s, hol_mesh *out, const hol_room *user,
                     struct hol_world *world, double cell_m);
 
+/* The mark of the tree on room vertex (vx, vz) (hol_frame_desc.tree_marked):
+ * two glowing bands round its trunk and a glowing ring round its foot, in
+ * room coordinates (x = vx * cell_m, z = vz * cell_m; cell_m 0: 1). */
+void hol_scene_tree_mark(const hol_scene *s, hol_mesh *out, int vx, int vz, double cell_m);
+
 /* The mesh of tile t in its own frame; bare: the ground only. pole >= 0
  * adds a tall guide pole of colour pole (objective index). Game objects
  * are drawn as the app says, not from the world's content: kind is a

@@ -102,6 +102,12 @@ static void step(int frames, float right, float fwd, float turn_left, float look
 
 /* Draw the app's view as the desktop does (the head's view), without the
  * HUD when hud is 0, and compare it with golden NAME. */
+static void draw(const hol_frame_desc *fd, uint8_t *img)
+{
+    assert_int_equal(hol_render_frame(rnd, fd, NULL), HOL_OK);
+    hol_render_read_rgba(rnd, W, H, img);
+}
+
 static int shot(const char *name, int hud, uint8_t *img)
 {
     hol_frame_desc fd;
@@ -256,17 +262,84 @@ static void test_level_end(void **state)
     assert_int_equal(shot("game_level_end", 1, img), 0);
 }
 
-/* The tutorial's first prompt with its marker one tile ahead. */
+/* Pixels of img that differ from other and are red like the flag's
+ * cloth: red well over green and blue. */
+static int red_pixels(const uint8_t *img, const uint8_t *other)
+{
+    int n = 0;
+    for (int i = 0; i < W * H; i++) {
+        const uint8_t *p = img + 4 * i;
+        n += memcmp(p, other + 4 * i, 3) && p[0] > 140 && p[1] < 90 && p[2] < 90;
+    }
+    return n;
+}
+
+/* The tutorial's first prompt with its marker one tile ahead: a violet
+ * ring and post, unlike the flag (the same frame with a flag there shows
+ * the flag's red cloth where the two differ; the marker's no red at all;
+ * the red guide pole beside it is the same in both). */
 static void test_tutorial_prompt(void **state)
 {
     (void)state;
-    static uint8_t img[W * H * 4];
+    static uint8_t img[W * H * 4], flag[W * H * 4];
     hol_app_level L = level(HOL_APP_TUTORIAL);
     start(&L);
     step(1, 0, 0, 0, 0);
     const hol_app_view *v = hol_app_get_view(app);
     assert_int_equal(v->hud.stage, 0);
     assert_int_equal(shot("game_tutorial_prompt", 1, img), 0);
+    hol_frame_desc fd;
+    hol_app_frame_desc(v, -1, W, H, 0, &fd);
+    fd.flags |= HOL_RENDER_NO_HUD;
+    assert_int_equal(fd.nobjects, 1);
+    assert_int_equal(fd.object_kinds[0], HOL_RENDER_OBJ_MARKER);
+    draw(&fd, img);
+    fd.object_kinds[0] = HOL_RENDER_OBJ_FLAG;
+    draw(&fd, flag);
+    printf("    red pixels where they differ: marker %d, flag %d\n", red_pixels(img, flag),
+           red_pixels(flag, img));
+    assert_int_equal(red_pixels(img, flag), 0);
+    assert_true(red_pixels(flag, img) > 50);
+}
+
+/* Lesson 2 (a tutorial of that lesson alone, from the middle cell): the
+ * tree to walk round is marked, violet bands on its trunk and a ring at
+ * its foot, at the room vertex the app names; the same frame without the
+ * mark differs only round that trunk (a few per cent of the pixels). */
+static void test_tutorial_tree(void **state)
+{
+    (void)state;
+    static uint8_t img[W * H * 4], plain[W * H * 4];
+    hol_app_level L = level(HOL_APP_TUTORIAL);
+    L.stages = 1u << 1;
+    start(&L);
+    step(1, 0, 0, 0, 0);
+    const hol_app_view *v = hol_app_get_view(app);
+    assert_int_equal(v->hud.stage, 1);
+    assert_int_equal(v->tree_marked, 1);
+    assert_int_equal(shot("game_tutorial_tree", 1, img), 0);
+    hol_frame_desc fd;
+    hol_app_frame_desc(v, -1, W, H, 0, &fd);
+    fd.flags |= HOL_RENDER_NO_HUD;
+    assert_int_equal(fd.tree_marked, 1);
+    draw(&fd, img);
+    fd.tree_marked = 0;
+    draw(&fd, plain);
+    /* the changed pixels lie on the marked tree's side: the vertex (vx, vz)
+     * seen from the eye at yaw 0 is left of the middle when vx < eye x */
+    int differ = 0, left = 0;
+    for (int i = 0; i < W * H; i++)
+        if (memcmp(img + 4 * i, plain + 4 * i, 3)) {
+            differ++;
+            left += i % W < W / 2;
+        }
+    printf("    tree mark: %d of %d pixels change, %d left of the middle\n", differ, W * H, left);
+    assert_true(differ > 300 && differ < W * H / 10);
+    double ex = v->head[0], vx = v->tree_vertex[0] * v->cell_m;
+    if (vx < ex)
+        assert_true(left > differ * 9 / 10);
+    else
+        assert_true(left < differ / 10);
 }
 
 /* The HUD minimap sits in the bottom right corner, scaled to the window,
@@ -386,6 +459,7 @@ int main(int argc, char **argv)
         cmocka_unit_test(test_chest_open),
         cmocka_unit_test(test_level_end),
         cmocka_unit_test(test_tutorial_prompt),
+        cmocka_unit_test(test_tutorial_tree),
         cmocka_unit_test(test_map_corner),
         cmocka_unit_test(test_hand_map_low),
     };
