@@ -22,34 +22,8 @@
 #include "../core/hol_room.h"
 #include "../core/hol_tile.h"
 #include "../core/hol_world.h"
+#include "app_fixture.h"
 #include "count_alloc.h"
-
-static hol_nav *g_nav;
-
-static int setup(void **state)
-{
-    (void)state;
-    hol_nav_desc nd;
-    memset(&nd, 0, sizeof nd);
-    return hol_nav_create(&nd, &g_nav) != HOL_OK;
-}
-
-static int teardown(void **state)
-{
-    (void)state;
-    hol_nav_destroy(g_nav);
-    return 0;
-}
-
-static hol_app *make_app(void)
-{
-    hol_app_desc d;
-    memset(&d, 0, sizeof d);
-    d.nav = g_nav;
-    hol_app *app = NULL;
-    assert_int_equal(hol_app_create(&d, &app), HOL_OK);
-    return app;
-}
 
 static hol_tile tile(const char *a)
 {
@@ -114,20 +88,6 @@ static void test_scripted_room_step(void **state)
     assert_true(fabs(v->eye[1][0] - v->eye[0][0] - 0.064) < 1e-9);
     assert_true(fabs(v->hud.elapsed_s - 59 / 60.0) < 1e-9);
     hol_app_destroy(app);
-}
-
-/* The centre of the cell after a room step from cell (col, row). */
-static hol_input tracked_at(double t, int col, int row)
-{
-    hol_input in;
-    memset(&in, 0, sizeof in);
-    in.time_s = t;
-    in.flags = HOL_INPUT_FOCUSED | HOL_INPUT_HEAD_VALID;
-    in.head.pos[0] = (float)(col + 0.5);
-    in.head.pos[1] = 1.6f;
-    in.head.pos[2] = (float)(row + 0.5);
-    in.head.quat[3] = 1;
-    return in;
 }
 
 /* Play walk (room directions) through tracked head positions from the
@@ -887,6 +847,22 @@ static void test_tutorial_feedback(void **state)
     hol_app_destroy(app);
 }
 
+/* L begins in cell (col, row) of the 3 x 3 room: its start walk goes
+ * there from the middle, columns first. */
+static void start_in_cell(hol_app_level *L, int col, int row)
+{
+    int c = 1, r = 1, n = 0;
+    while (c < col)
+        L->start[n++] = HOL_DIR_E, c++;
+    while (c > col)
+        L->start[n++] = HOL_DIR_W, c--;
+    while (r < row)
+        L->start[n++] = HOL_DIR_S, r++;
+    while (r > row)
+        L->start[n++] = HOL_DIR_N, r--;
+    L->nstart = n;
+}
+
 /* The square walk from cell (c, r) round the room vertex (vx, vz), one of
  * the cell's corners: towards it across, towards it along, then back. */
 static void round_vertex(int c, int r, int vx, int vz, uint8_t walk[4])
@@ -906,16 +882,8 @@ static void test_tutorial_marked_tree(void **state)
     for (int start = 0; start < 9; start++) {
         hol_app *app = make_app();
         hol_app_level L = tutorial_level(1u << 1 | 1u << 2);
-        int c = 1, r = 1, n = 0;
-        while (c < start % 3)
-            L.start[n++] = HOL_DIR_E, c++;
-        while (c > start % 3)
-            L.start[n++] = HOL_DIR_W, c--;
-        while (r < start / 3)
-            L.start[n++] = HOL_DIR_S, r++;
-        while (r > start / 3)
-            L.start[n++] = HOL_DIR_N, r--;
-        L.nstart = n;
+        int c = start % 3, r = start / 3;
+        start_in_cell(&L, c, r);
         assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
         const hol_app_view *v = hol_app_get_view(app);
         assert_int_equal(v->hud.stage, 1);
@@ -1023,17 +991,7 @@ static void test_tutorial_loop_optimum(void **state)
     for (int start = 0; start < 9; start++) {
         hol_app *app = make_app();
         hol_app_level L = tutorial_level(1u << 1);
-        /* begin the lesson in cell (start % 3, start / 3) */
-        int c = 1, r = 1, n = 0;
-        while (c < start % 3)
-            L.start[n++] = HOL_DIR_E, c++;
-        while (c > start % 3)
-            L.start[n++] = HOL_DIR_W, c--;
-        while (r < start / 3)
-            L.start[n++] = HOL_DIR_S, r++;
-        while (r > start / 3)
-            L.start[n++] = HOL_DIR_N, r--;
-        L.nstart = n;
+        start_in_cell(&L, start % 3, start / 3); /* the lesson begins there */
         assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
         const hol_app_view *v = hol_app_get_view(app);
         hol_room r0 = v->user;
@@ -1366,7 +1324,6 @@ static void test_deterministic(void **state)
     }
     assert_string_equal(text[0], text[1]);
 }
-
 
 /* ---- geometries (SPEC 7) ---------------------------------------------------- */
 

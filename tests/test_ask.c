@@ -23,23 +23,7 @@
 #include "../core/hol_nav.h"
 #include "../core/hol_study.h"
 #include "../core/hol_tile.h"
-
-static hol_nav *g_nav;
-
-static int setup(void **state)
-{
-    (void)state;
-    hol_nav_desc nd;
-    memset(&nd, 0, sizeof nd);
-    return hol_nav_create(&nd, &g_nav) != HOL_OK;
-}
-
-static int teardown(void **state)
-{
-    (void)state;
-    hol_nav_destroy(g_nav);
-    return 0;
-}
+#include "app_fixture.h"
 
 /* Kennedy et al. (1993), table 4: the items of each subscale, written out
  * here by name (N nausea, O oculomotor, D disorientation). */
@@ -145,20 +129,10 @@ static hol_input key_in(double t, uint32_t pressed, float move_x, float turn_x)
     return in;
 }
 
-static const hol_app_events *step(hol_app *app, hol_input in)
-{
-    assert_int_equal(hol_app_step(app, &in), HOL_OK);
-    return hol_app_get_events(app);
-}
-
 /* A level ended by its time limit at t = 1 whose text asks (lines). */
 static hol_app *ended_level(const char *text)
 {
-    hol_app_desc d;
-    memset(&d, 0, sizeof d);
-    d.nav = g_nav;
-    hol_app *app = NULL;
-    assert_int_equal(hol_app_create(&d, &app), HOL_OK);
+    hol_app *app = make_app();
     hol_app_level L;
     hol_level_err e;
     assert_int_equal(hol_level_parse(text, strlen(text), &L, &e), HOL_OK);

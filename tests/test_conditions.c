@@ -24,6 +24,7 @@
 #include "../core/hol_session.h"
 #include "../core/hol_study.h"
 #include "../core/hol_tile.h"
+#include "app_fixture.h"
 
 /* ---- a sink in memory (from test_session.c) ---- */
 #define MEM_MAX 64
@@ -201,37 +202,12 @@ static const char *mem_text(mem_sink *m, const char *name)
 
 /* ---- the tests ---- */
 
-static hol_nav *g_nav;
 static hol_study study;
 
-static int setup(void **state)
-{
-    (void)state;
-    hol_nav_desc nd;
-    memset(&nd, 0, sizeof nd);
-    return hol_nav_create(&nd, &g_nav) != HOL_OK;
-}
-
-static int teardown(void **state)
-{
-    (void)state;
-    hol_nav_destroy(g_nav);
-    return 0;
-}
-
+/* A tracked head at cell (c, r) looking north, keys pressed. */
 static hol_input head_at(double t, int c, int r, uint32_t pressed)
 {
-    hol_input in;
-    memset(&in, 0, sizeof in);
-    in.time_s = t;
-    in.flags = HOL_INPUT_FOCUSED | HOL_INPUT_HEAD_VALID;
-    in.head.pos[0] = (float)c + 0.5f;
-    in.head.pos[1] = 1.6f;
-    in.head.pos[2] = (float)r + 0.5f;
-    in.head.quat[3] = 1;
-    in.device = HOL_DEVICE_KEYBOARD;
-    in.pressed = pressed;
-    return in;
+    return app_head(t, c, r, 0, HOL_DEVICE_KEYBOARD, pressed);
 }
 
 static const char *const g_file = "mode flag\nseed 5\nflag N\nminimap hud\n";
@@ -288,11 +264,7 @@ static void test_app_refuses(void **state)
 {
     (void)state;
     for (int fixed = 0; fixed <= 1; fixed++) {
-        hol_app_desc d;
-        memset(&d, 0, sizeof d);
-        d.nav = g_nav;
-        hol_app *app = NULL;
-        assert_int_equal(hol_app_create(&d, &app), HOL_OK);
+        hol_app *app = make_app();
         hol_app_level L;
         memset(&L, 0, sizeof L);
         L.mode = HOL_APP_EXPLORE;

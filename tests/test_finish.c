@@ -20,48 +20,18 @@
 #include "../core/hol_nav.h"
 #include "../core/hol_session.h"
 #include "../core/hol_tile.h"
-
-static hol_nav *g_nav;
-
-static int setup(void **state)
-{
-    (void)state;
-    hol_nav_desc nd;
-    memset(&nd, 0, sizeof nd);
-    return hol_nav_create(&nd, &g_nav) != HOL_OK;
-}
-
-static int teardown(void **state)
-{
-    (void)state;
-    hol_nav_destroy(g_nav);
-    return 0;
-}
+#include "app_fixture.h"
 
 /* A tracked head standing at cell (c, r)'s centre at time t. */
 static hol_input head_at(double t, int c, int r, uint32_t device, uint32_t pressed)
 {
-    hol_input in;
-    memset(&in, 0, sizeof in);
-    in.time_s = t;
-    in.flags = HOL_INPUT_FOCUSED | HOL_INPUT_HEAD_VALID;
-    in.head.pos[0] = (float)c + 0.5f;
-    in.head.pos[1] = 1.6f;
-    in.head.pos[2] = (float)r + 0.5f;
-    in.head.quat[3] = 1;
-    in.device = device;
-    in.pressed = pressed;
-    return in;
+    return app_head(t, c, r, 0, device, pressed);
 }
 
 /* The end screen's prompt of a flag level one step north, for a device. */
 static void end_prompt(uint32_t device, int last, char *out)
 {
-    hol_app_desc d;
-    memset(&d, 0, sizeof d);
-    d.nav = g_nav;
-    hol_app *app = NULL;
-    assert_int_equal(hol_app_create(&d, &app), HOL_OK);
+    hol_app *app = make_app();
     hol_app_level L;
     memset(&L, 0, sizeof L);
     L.mode = HOL_APP_FLAG;

@@ -24,27 +24,11 @@
 #include "../core/hol_level.h"
 #include "../core/hol_nav.h"
 #include "../core/hol_tile.h"
+#include "app_fixture.h"
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wunused-function"
 #include "model.h"
 #pragma GCC diagnostic pop
-
-static hol_nav *g_nav;
-
-static int setup(void **state)
-{
-    (void)state;
-    hol_nav_desc nd;
-    memset(&nd, 0, sizeof nd);
-    return hol_nav_create(&nd, &g_nav) != HOL_OK;
-}
-
-static int teardown(void **state)
-{
-    (void)state;
-    hol_nav_destroy(g_nav);
-    return 0;
-}
 
 static double ang_diff(double a, double b)
 {
@@ -72,29 +56,7 @@ static double wrap180(double d)
  * positive towards the west). */
 static hol_input head_at(double t, int c, int r, double yaw, uint32_t pressed)
 {
-    hol_input in;
-    memset(&in, 0, sizeof in);
-    in.time_s = t;
-    in.flags = HOL_INPUT_FOCUSED | HOL_INPUT_HEAD_VALID;
-    in.head.pos[0] = (float)c + 0.5f;
-    in.head.pos[1] = 1.6f;
-    in.head.pos[2] = (float)r + 0.5f;
-    double h = yaw * acos(-1.0) / 360;
-    in.head.quat[1] = (float)sin(h);
-    in.head.quat[3] = (float)cos(h);
-    in.pressed = pressed;
-    in.device = HOL_DEVICE_XR_TOUCH;
-    return in;
-}
-
-static hol_app *make_app(void)
-{
-    hol_app_desc d;
-    memset(&d, 0, sizeof d);
-    d.nav = g_nav;
-    hol_app *app = NULL;
-    assert_int_equal(hol_app_create(&d, &app), HOL_OK);
-    return app;
+    return app_head(t, c, r, yaw, HOL_DEVICE_XR_TOUCH, pressed);
 }
 
 static hol_app_level flag_level_q(int q, const char *flag, int point, double limit)
@@ -357,32 +319,26 @@ static void test_point_none_restart_quit(void **state)
     hol_app_destroy(app);
 }
 
-static hol_err parse(const char *text, hol_app_level *L, hol_level_err *e)
-{
-    memset(L, 0, sizeof *L);
-    return hol_level_parse(text, strlen(text), L, e);
-}
-
 static void test_point_parse(void **state)
 {
     (void)state;
     hol_app_level L;
     hol_level_err e;
-    assert_int_equal(parse("mode flag\nflag Nf\npoint start\n", &L, &e), HOL_OK);
+    assert_int_equal(parse_level("mode flag\nflag Nf\npoint start\n", &L, &e), HOL_OK);
     assert_int_equal(L.point, HOL_APP_POINT_START);
-    assert_int_equal(parse("mode keys\nkeys N E\nchest S\npoint objective\n", &L, &e), HOL_OK);
+    assert_int_equal(parse_level("mode keys\nkeys N E\nchest S\npoint objective\n", &L, &e), HOL_OK);
     assert_int_equal(L.point, HOL_APP_POINT_OBJECTIVE);
-    assert_int_equal(parse("mode explore\npoint start\n", &L, &e), HOL_OK);
-    assert_int_equal(parse("mode flag\nflag Nf\n", &L, &e), HOL_OK);
+    assert_int_equal(parse_level("mode explore\npoint start\n", &L, &e), HOL_OK);
+    assert_int_equal(parse_level("mode flag\nflag Nf\n", &L, &e), HOL_OK);
     assert_int_equal(L.point, 0);
-    assert_int_equal(parse("mode flag\nflag Nf\npoint north\n", &L, &e), HOL_EPARSE);
+    assert_int_equal(parse_level("mode flag\nflag Nf\npoint north\n", &L, &e), HOL_EPARSE);
     assert_int_equal(e.line, 3);
-    assert_int_equal(parse("mode flag\nflag Nf\npoint\n", &L, &e), HOL_EPARSE);
-    assert_int_equal(parse("mode flag\nflag Nf\npoint start start\n", &L, &e), HOL_EPARSE);
-    assert_int_equal(parse("mode explore\npoint objective\n", &L, &e), HOL_EARG);
+    assert_int_equal(parse_level("mode flag\nflag Nf\npoint\n", &L, &e), HOL_EPARSE);
+    assert_int_equal(parse_level("mode flag\nflag Nf\npoint start start\n", &L, &e), HOL_EPARSE);
+    assert_int_equal(parse_level("mode explore\npoint objective\n", &L, &e), HOL_EARG);
     assert_int_equal(e.line, 2);
-    assert_int_equal(parse("mode tutorial\npoint start\n", &L, &e), HOL_EARG);
-    assert_int_equal(parse("mode flag\npoint start\nflag N\npoint objective\n", &L, &e),
+    assert_int_equal(parse_level("mode tutorial\npoint start\n", &L, &e), HOL_EARG);
+    assert_int_equal(parse_level("mode flag\npoint start\nflag N\npoint objective\n", &L, &e),
                      HOL_EARG); /* a key twice */
     assert_int_equal(hol_level_line_check("point objective", 15, &e), HOL_OK);
     assert_int_equal(hol_level_line_check("point east", 10, &e), HOL_EPARSE);

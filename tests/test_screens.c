@@ -22,60 +22,38 @@
 #include "../core/hol_nav.h"
 #include "../core/hol_study.h"
 #include "../core/hol_tile.h"
-
-static hol_nav *g_nav;
-
-static int setup(void **state)
-{
-    (void)state;
-    hol_nav_desc nd;
-    memset(&nd, 0, sizeof nd);
-    return hol_nav_create(&nd, &g_nav) != HOL_OK;
-}
-
-static int teardown(void **state)
-{
-    (void)state;
-    hol_nav_destroy(g_nav);
-    return 0;
-}
-
-static hol_err parse(const char *text, hol_app_level *L, hol_level_err *e)
-{
-    memset(L, 0, sizeof *L);
-    return hol_level_parse(text, strlen(text), L, e);
-}
+#include "app_fixture.h"
 
 static void test_level_lines(void **state)
 {
     (void)state;
     hol_app_level L;
     hol_level_err e;
-    assert_int_equal(parse("mode flag\nflag N\ninstructions  Walk to the flag, then   wait.  \n"
+    assert_int_equal(parse_level("mode flag\nflag N\ninstructions  Walk to the flag, then   wait.  \n"
                            "closing Thanks! # a comment\n",
                            &L, &e),
                      HOL_OK);
     assert_string_equal(L.instructions, "Walk to the flag, then   wait.");
     assert_string_equal(L.closing, "Thanks!");
-    assert_int_equal(parse("mode flag\nflag N\n", &L, &e), HOL_OK);
+    assert_int_equal(parse_level("mode flag\nflag N\n", &L, &e), HOL_OK);
     assert_string_equal(L.instructions, "");
     assert_string_equal(L.closing, "");
-    assert_int_equal(parse("mode flag\nflag N\ninstructions\n", &L, &e), HOL_EPARSE);
-    assert_int_equal(parse("mode flag\nflag N\ninstructions caf\xc3\xa9\n", &L, &e), HOL_EPARSE);
+    assert_int_equal(parse_level("mode flag\nflag N\ninstructions\n", &L, &e), HOL_EPARSE);
+    assert_int_equal(parse_level("mode flag\nflag N\ninstructions caf\xc3\xa9\n", &L, &e), HOL_EPARSE);
     assert_int_equal(e.line, 3);
     assert_non_null(strstr(e.msg, "printable ASCII"));
-    assert_int_equal(parse("mode flag\nflag N\ninstructions a\ninstructions b\n", &L, &e),
+    assert_int_equal(parse_level("mode flag\nflag N\ninstructions a\ninstructions b\n", &L, &e),
                      HOL_EARG);
     /* six lines of 46 fit; a seventh is refused, naming the count */
     char text[1024] = "mode flag\nflag N\ninstructions ";
     for (int i = 0; i < 6; i++)
         strcat(text, "aaaaaaaaaa bbbbbbbbbb cccccccccc dddddddddd ee ");
     strcat(text, "\n");
-    assert_int_equal(parse(text, &L, &e), HOL_OK);
+    assert_int_equal(parse_level(text, &L, &e), HOL_OK);
     assert_int_equal(hol_app_wrap(L.instructions, HOL_APP_SCREEN_COLS, NULL, 0), 6);
     text[strlen(text) - 1] = 0;
     strcat(text, "x\n");
-    assert_int_equal(parse(text, &L, &e), HOL_ERANGE);
+    assert_int_equal(parse_level(text, &L, &e), HOL_ERANGE);
     assert_non_null(strstr(e.msg, "wraps into 7 lines"));
     assert_int_equal(hol_level_line_check("closing Bye.", 12, &e), HOL_OK);
 }
@@ -106,35 +84,10 @@ static void test_wrap(void **state)
     assert_string_equal(out[2], "c");
 }
 
+/* A tracked head at cell (c, r) looking north, keys pressed. */
 static hol_input head_at(double t, int c, int r, uint32_t pressed)
 {
-    hol_input in;
-    memset(&in, 0, sizeof in);
-    in.time_s = t;
-    in.flags = HOL_INPUT_FOCUSED | HOL_INPUT_HEAD_VALID;
-    in.head.pos[0] = (float)c + 0.5f;
-    in.head.pos[1] = 1.6f;
-    in.head.pos[2] = (float)r + 0.5f;
-    in.head.quat[3] = 1;
-    in.pressed = pressed;
-    in.device = HOL_DEVICE_KEYBOARD;
-    return in;
-}
-
-static hol_app *make_app(void)
-{
-    hol_app_desc d;
-    memset(&d, 0, sizeof d);
-    d.nav = g_nav;
-    hol_app *app = NULL;
-    assert_int_equal(hol_app_create(&d, &app), HOL_OK);
-    return app;
-}
-
-static const hol_app_events *step(hol_app *app, hol_input in)
-{
-    assert_int_equal(hol_app_step(app, &in), HOL_OK);
-    return hol_app_get_events(app);
+    return app_head(t, c, r, 0, HOL_DEVICE_KEYBOARD, pressed);
 }
 
 static void test_app_instructions(void **state)
