@@ -115,7 +115,7 @@ enum hol_app_minimap_place { HOL_MINIMAP_HUD = 0, HOL_MINIMAP_HAND = 1, HOL_MINI
 /* The tutorial's line (hol_app_hud.note) the first time the minimap's
  * rings show (lesson 2's two tiles of one cell, map.marks), beside the
  * lesson's feedback, as long as the rings. */
-#define HOL_APP_RINGS_TEXT "Rings on the map: this cell's two tiles"
+#define HOL_APP_RINGS_TEXT "Rings on the map: the two tiles of this cell"
 #define HOL_APP_HUD_LINES 6
 #define HOL_APP_MAX_MARKS 2
 /* Most room steps one app step reports (a frame's motion in sub-steps). */

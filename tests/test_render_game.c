@@ -342,6 +342,41 @@ static void test_tutorial_tree(void **state)
         assert_true(left < differ / 10);
 }
 
+/* Lesson 2 done: the head walked round the marked tree (tracked, a
+ * quarter second a cell) and is back in the middle cell on another tile;
+ * the HUD says holonomy, the next line what the minimap's cyan rings
+ * mean, and the map rings the cell's two tiles. */
+static void test_tutorial_rings(void **state)
+{
+    (void)state;
+    static uint8_t img[W * H * 4];
+    hol_app_level L = level(HOL_APP_TUTORIAL);
+    L.stages = 1u << 1 | 1u << 2;
+    start(&L);
+    step(1, 0, 0, 0, 0);
+    const hol_app_view *v = hol_app_get_view(app);
+    int c = v->user.col, r = v->user.row;
+    int dx = v->tree_vertex[0] == c + 1 ? 1 : -1, dz = v->tree_vertex[1] == r + 1 ? 1 : -1;
+    const int cells[4][2] = {{c + dx, r}, {c + dx, r + dz}, {c, r + dz}, {c, r}};
+    for (int i = 0; i < 4; i++) {
+        hol_input in;
+        memset(&in, 0, sizeof in);
+        in.time_s = now;
+        in.flags = HOL_INPUT_FOCUSED | HOL_INPUT_HEAD_VALID;
+        in.device = HOL_DEVICE_KEYBOARD;
+        in.head.pos[0] = (float)cells[i][0] + 0.5f;
+        in.head.pos[1] = 1.6f;
+        in.head.pos[2] = (float)cells[i][1] + 0.5f;
+        in.head.quat[3] = 1;
+        assert_int_equal(hol_app_step(app, &in), HOL_OK);
+        now += 0.25;
+    }
+    assert_int_equal(v->hud.stage, 2);
+    assert_int_equal(v->map.nmarks, 2);
+    assert_string_equal(v->hud.note, HOL_APP_RINGS_TEXT);
+    assert_int_equal(shot("game_tutorial_rings", 1, img), 0);
+}
+
 /* The HUD minimap sits in the bottom right corner, scaled to the window,
  * and never reaches into the middle 40 % of the view both ways, at any
  * window shape; at 320 x 240 no pixel the HUD changes lies in that middle
@@ -460,6 +495,7 @@ int main(int argc, char **argv)
         cmocka_unit_test(test_level_end),
         cmocka_unit_test(test_tutorial_prompt),
         cmocka_unit_test(test_tutorial_tree),
+        cmocka_unit_test(test_tutorial_rings),
         cmocka_unit_test(test_map_corner),
         cmocka_unit_test(test_hand_map_low),
     };
