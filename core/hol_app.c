@@ -487,6 +487,8 @@ static hol_err hol__place_at_start(hol_app *app, const hol_input *in)
     if (was.col == app->mo.user.col && was.row == app->mo.user.row)
         return HOL_OK;
     hol_err err = hol_world_update(app->world, &app->mo.user);
+    if (app->level.mode == HOL_APP_TUTORIAL && !app->has_target)
+        hol__stage(app, app->stage, &app->mo.user); /* the loop: back to this cell */
     int exact = 1, opt = -1;
     if (err || (err = hol__plan(app, &app->mo.user, &opt, &exact)))
         return err;

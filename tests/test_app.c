@@ -908,6 +908,35 @@ static void test_tutorial_marked_tree(void **state)
     }
 }
 
+/* A tutorial that begins with lesson 2, the head standing in a corner
+ * cell at its first frame: the lesson is that cell's ("back to this
+ * cell"), its tree a corner of it, and round it is 4 steps. */
+static void test_tutorial_loop_where_the_head_stands(void **state)
+{
+    (void)state;
+    hol_app *app = make_app();
+    hol_app_level L = tutorial_level(1u << 1 | 1u << 2);
+    assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    const hol_app_view *v = hol_app_get_view(app);
+    hol_tile t0 = v->user.tile;
+    hol_input in = tracked_at(0, 2, 2);
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    assert_int_equal(v->user.col, 2);
+    assert_int_equal(v->user.row, 2);
+    assert_true(hol_tile_eq(v->user.tile, t0)); /* no room step */
+    assert_int_equal(v->hud.stage_optimum, 4);
+    assert_int_equal(v->tree_marked, 1);
+    assert_int_equal(v->tree_vertex[0], 2); /* the one inner corner of (2,2) */
+    assert_int_equal(v->tree_vertex[1], 2);
+    uint8_t walk[4];
+    round_vertex(2, 2, 2, 2, walk);
+    double t = 0.25;
+    assert_int_equal(play_walk(app, walk, 4, &t), -1);
+    assert_int_equal(v->hud.stage, 2);
+    assert_int_equal(v->hud.steps, 4);
+    hol_app_destroy(app);
+}
+
 /* The lessons' markers are not flags: lessons 1 and 3 stand a marker,
  * lesson 4 the flag; the first time the minimap's rings show (lesson 2's
  * end), one line after the feedback says what they mean, as long as they
@@ -1667,6 +1696,7 @@ int main(void)
         cmocka_unit_test(test_tutorial_strayed),
         cmocka_unit_test(test_tutorial_marked_tree),
         cmocka_unit_test(test_tutorial_marker_and_rings),
+        cmocka_unit_test(test_tutorial_loop_where_the_head_stands),
         cmocka_unit_test(test_tutorial_two_tiles_straight),
         cmocka_unit_test(test_prompts_name_buttons),
         cmocka_unit_test(test_menu_hint_first_seconds),
