@@ -1,6 +1,7 @@
 /* test_render_game.c - the game as players see it, against reviewed golden
  * PNGs: the flag, a key, the chest closed and open, the level-end screen
- * and a tutorial prompt.
+ * and the tutorial (its first prompt and marker, lesson 2's marked tree,
+ * lesson 2's end with the rings' line).
  *
  * Each picture goes the whole way a platform goes: a level started in the
  * app (core/hol_app.h), input records stepped, the view turned into a
