@@ -23,6 +23,8 @@ if ! command -v Xvfb >/dev/null 2>&1; then
 fi
 start_xvfb 43 || { bad "Xvfb did not start"; finish cli_mock_study; exit $?; }
 case $H in /*) ;; *) H=$PWD/$H ;; esac
+KEEP=${KEEP:-}
+case $KEEP in ''|/*) ;; *) KEEP=$PWD/$KEEP ;; esac
 cd "$T" || exit 1
 
 printf 'mode flag\nseed 3\nflag N\ntime-limit 3\n' >p.lvl
@@ -233,3 +235,72 @@ cmp -s want.ssq got.ssq && ok || { bad "SSQ answers:"; diff want.ssq got.ssq | h
 # ---- participant 1's recording replays to the same logs ----------------------------------------
 run "replay P1" 0 "$H" replay p1.rec --log re1
 logs_diff p1logs re1 >/dev/null && ok || { bad "P1's replay differs"; logs_diff p1logs re1 | head -5; }
+
+# ---- the report -----------------------------------------------------------------------------
+run "report" 0 "$H" report logs --out rep
+grep -qx "report: $(($(wc -l <logs/summary.csv) - 1)) attempts from 1 log folder" out && ok ||
+    bad "report said: $(cat out)"
+# SSQ scores (Kennedy et al. 1993) per participant and condition, from the
+# answers given: "participant condition nausea oculomotor disorientation total"
+awk 'BEGIN { split("1 6 7 8 9 15 16", a); for (j in a) N[a[j]] = 1
+             split("1 2 3 4 5 9 11", a); for (j in a) O[a[j]] = 1
+             split("5 8 10 11 12 13 14", a); for (j in a) D[a[j]] = 1 }
+     { key = $1 " " $2; i = ++item[key]; n[key] += N[i] * $4; o[key] += O[i] * $4; d[key] += D[i] * $4
+       if (i == 16) print key, n[key] * 9.54, o[key] * 7.58, d[key] * 13.92, (n[key] + o[key] + d[key]) * 3.74 }' \
+    want.ssq >ssq.scores
+# expected "condition measure n mean" for stats.csv: steps, efficiency
+# over the levels done (practice left out), pointing n, SSQ means
+{ awk '$2 != "practice" && $6 == "done" { opt = $4 == "a" ? 1 : 2
+        n[$2]++; st[$2] += $5; ef[$2] += opt / $5 }
+       END { for (c in n) { printf "%s steps %d %.4f\n", c, n[c], st[c] / n[c]
+                            printf "%s efficiency %d %.4f\n", c, n[c], ef[c] / n[c] } }' want.rows
+  awk '{ n[$2]++; t[$2] += $6; na[$2] += $3; oc[$2] += $4; di[$2] += $5 }
+       END { for (c in n) { printf "%s ssq_total %d %.4f\n", c, n[c], t[c] / n[c]
+                            printf "%s ssq_nausea %d %.4f\n", c, n[c], na[c] / n[c]
+                            printf "%s ssq_oculomotor %d %.4f\n", c, n[c], oc[c] / n[c]
+                            printf "%s ssq_disorientation %d %.4f\n", c, n[c], di[c] / n[c] } }' ssq.scores
+} | sort >want.stats
+awk -F, '$1 == "mock" && $3 ~ /^(steps|efficiency|ssq_)/ { print $2, $3, $5, $6 }' rep/stats.csv | sort >got.stats
+cmp -s want.stats got.stats && ok || { bad "stats.csv:"; diff want.stats got.stats | head -10; }
+# the pointing errors: 8 answers a condition (4 participants, 2 levels)
+[ "$(awk -F, '$3 ~ /^error_(true|flat)$/ && $5 == 8' rep/stats.csv | wc -l)" = 8 ] && ok ||
+    bad "pointing rows of stats.csv: $(grep error_ rep/stats.csv)"
+# the learning curve: a row per condition and position it was played at
+awk '$2 != "practice" && $6 == "done" { k = $2 " " $3; n[k]++; ef[k] += ($4 == "a" ? 1 : 2) / $5 }
+     END { for (k in n) printf "%s %d %.4f\n", k, n[k], ef[k] / n[k] }' want.rows | sort >want.learn
+awk -F, 'NR > 1 { print $2, $3, $4, $5 }' rep/learning.csv | sort >got.learn
+cmp -s want.learn got.learn && ok || { bad "learning.csv:"; diff want.learn got.learn | head -10; }
+# participants.csv: 4 participants, a row per condition (practice too);
+# the killed attempt is an attempt, not a level done: P3's q5-hand has 3
+# attempts, 2 done (the level killed counted once, when resumed)
+awk '{ k = $1 " " $2; a[k]++; if ($6 == "done") d[k]++ } END { for (k in a) print k, a[k], d[k] + 0 }' \
+    want.rows | sort >want.part
+awk -F, 'NR > 1 { print $1, $3, $4, $5 }' rep/participants.csv | sort >got.part
+cmp -s want.part got.part && ok || { bad "participants.csv:"; diff want.part got.part | head -10; }
+[ "$(cut -d, -f1 rep/participants.csv | sed 1d | sort -u | tr '\n' ' ')" = "P1 P2 P3 P4 " ] && ok ||
+    bad "participants: $(cut -d, -f1 rep/participants.csv | sort -u | tr '\n' ' ')"
+grep -qx 'P3,mock,q5-hand,3,2,2.5000,0.6667,0.6250' rep/participants.csv && ok ||
+    bad "P3's q5-hand: $(grep '^P3,mock,q5-hand' rep/participants.csv)"
+# the factor columns of attempts.csv (the quoted tiling is two fields here)
+awk -F, 'NR > 1 && $5 != "practice" {
+        q = substr($5, 2, 1); m = substr($5, 4)
+        if ($14 $15 != "\"4" q "\"" || $16 != "3x3" || $17 != "1" || $20 != q || $22 != m) print }' \
+    rep/attempts.csv >bad.rows
+[ ! -s bad.rows ] && [ "$(sed 1d rep/attempts.csv | wc -l)" = "$(sed 1d logs/summary.csv | wc -l)" ] && ok ||
+    bad "attempts.csv factor columns: $(head -3 bad.rows)"
+[ "$(ls rep/attempt-*.png | wc -l)" = "$(sed 1d logs/summary.csv | wc -l)" ] && ok ||
+    bad "pictures: $(ls rep | grep -c png)"
+# participant 1 alone (the replay's folder): the SSQ scores are theirs
+run "report P1" 0 "$H" report re1 --out rep1
+grep '^P1 ' ssq.scores | while read -r pp c na oc di tot; do
+    printf '%s ssq_nausea 1 %.4f\n%s ssq_oculomotor 1 %.4f\n%s ssq_disorientation 1 %.4f\n%s ssq_total 1 %.4f\n' \
+        "$c" "$na" "$c" "$oc" "$c" "$di" "$c" "$tot"
+done | sort >want.p1
+awk -F, '$3 ~ /^ssq_/ { print $2, $3, $5, $6 }' rep1/stats.csv | sort >got.p1
+[ "$(wc -l <want.p1)" = 16 ] && cmp -s want.p1 got.p1 && ok || { bad "P1's SSQ scores:"; diff want.p1 got.p1 | head; }
+
+if [ -n "$KEEP" ]; then
+    mkdir -p "$KEEP" && rm -rf "$KEEP/logs" "$KEEP/report" && cp -r logs "$KEEP/logs" &&
+        cp -r rep "$KEEP/report" && echo "cli_mock_study: kept the logs and the report in $KEEP"
+fi
+finish cli_mock_study
