@@ -262,9 +262,16 @@ awk 'BEGIN { split("1 6 7 8 9 15 16", a); for (j in a) N[a[j]] = 1
 } | sort >want.stats
 awk -F, '$1 == "mock" && $3 ~ /^(steps|efficiency|ssq_)/ { print $2, $3, $5, $6 }' rep/stats.csv | sort >got.stats
 cmp -s want.stats got.stats && ok || { bad "stats.csv:"; diff want.stats got.stats | head -10; }
-# the pointing errors: 8 answers a condition (4 participants, 2 levels)
-[ "$(awk -F, '$3 ~ /^error_(true|flat)$/ && $5 == 8' rep/stats.csv | wc -l)" = 8 ] && ok ||
-    bad "pointing rows of stats.csv: $(grep error_ rep/stats.csv)"
+# the pointing errors: 8 answers a condition (4 participants, 2 levels),
+# the mean of |error| of points.csv's rows of its attempts
+awk -F, 'FNR == 1 { next } FILENAME ~ /summary/ { cond[$2 "," $5] = $7; next }
+         { c = cond[$2 "," $3]; n[c]++; et[c] += $10 < 0 ? -$10 : $10; ef[c] += $11 < 0 ? -$11 : $11 }
+         END { for (c in n) printf "%s error_true %d %.4f\n%s error_flat %d %.4f\n",
+                                   c, n[c], et[c] / n[c], c, n[c], ef[c] / n[c] }' \
+    logs/summary.csv logs/points.csv | sort >want.err
+awk -F, '$3 ~ /^error_/ { print $2, $3, $5, $6 }' rep/stats.csv | sort >got.err
+[ "$(grep -c ' 8 ' want.err)" = 8 ] && cmp -s want.err got.err && ok ||
+    { bad "pointing errors in stats.csv:"; diff want.err got.err | head; }
 # the learning curve: a row per condition and position it was played at
 awk '$2 != "practice" && $6 == "done" { k = $2 " " $3; n[k]++; ef[k] += ($4 == "a" ? 1 : 2) / $5 }
      END { for (k in n) printf "%s %d %.4f\n", k, n[k], ef[k] / n[k] }' want.rows | sort >want.learn
@@ -290,6 +297,12 @@ awk -F, 'NR > 1 && $5 != "practice" {
     bad "attempts.csv factor columns: $(head -3 bad.rows)"
 [ "$(ls rep/attempt-*.png | wc -l)" = "$(sed 1d logs/summary.csv | wc -l)" ] && ok ||
     bad "pictures: $(ls rep | grep -c png)"
+# index.html's learning curves: q5-hud and q6-hand have the same means at
+# every position; each curve is drawn apart from the others (dodged)
+sed -n '/aria-label="learning curves"/,/<\/svg>/p' rep/index.html | grep -o '<polyline[^>]*>' |
+    sed 's/.* points="\([^"]*\)".*/\1/' >curves
+[ "$(wc -l <curves)" = 4 ] && [ "$(sort -u curves | wc -l)" = 4 ] && ok ||
+    bad "learning curves drawn on top of each other: $(cat curves)"
 # participant 1 alone (the replay's folder): the SSQ scores are theirs
 run "report P1" 0 "$H" report re1 --out rep1
 grep '^P1 ' ssq.scores | while read -r pp c na oc di tot; do
