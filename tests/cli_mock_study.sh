@@ -145,7 +145,7 @@ for p in 1 2 4; do
 done
 awk -v plan=$plan3 -v p=3 -v kill=4 -f gen.awk >p3a.in
 awk -v plan=$plan3 -v p=3 -v from=4 -f gen.awk >p3b.in
-P="$H play --study mock.study --size 64x48 --mute --log logs"
+P="$H play --study mock.study --size 64x48 --log logs"
 order_ok() { # P: the order line on stderr names the Williams row
     want="practice, $(eval echo \$order$1 | sed 's/ /, /g')"
     grep -q "participant P$1 (number $1, order $1 of 4): $want" err && ok ||
