@@ -77,7 +77,7 @@ CLI_TESTS := $(wildcard tests/cli_*.sh)
 # Suites that take long (CPU time measured by tests/timed.sh) run first, so
 # that make -j2 does not end with one long suite running alone; the others
 # follow in name order (a new suite needs no entry here).
-SLOW_FIRST := cli_harden_logs cli_play cli_docs cli_nav cli_session cli_harden cli_level \
+SLOW_FIRST := cli_mock_study cli_harden_logs cli_play cli_docs cli_nav cli_session cli_harden cli_level \
               cli_harden_opts cli_game cli_hostile cli_world cli_replay cli_gl_sync \
               test_nav test_world test_app test_tile test_level
 slow_first = $(foreach s,$(SLOW_FIRST),$(filter %/$(s).c %/$(s).sh,$(1))) \

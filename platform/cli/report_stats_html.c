@@ -132,23 +132,32 @@ static void learning_svg(FILE *f, const report_run *r, int *used)
     int w = PW - PL - PR, h = PH - PB - 20;
     fputs("<h3>Learning curves</h3>\n<p>Mean efficiency (optimum / steps) of completed "
           "attempts by position in the participant's order (outside a study: the attempt "
-          "number), per condition; bars: 95 % CI.</p>\n", f);
+          "number), per condition; bars: 95 % CI (cut at 0 and 1.05). Each condition's "
+          "curve is drawn a little to the side of its position and narrower than the one "
+          "before, so that equal curves stay visible.</p>\n", f);
     fprintf(f, "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%d\" height=\"%d\" "
                "font-family=\"sans-serif\" font-size=\"11\" role=\"img\" "
                "aria-label=\"learning curves\">\n", PW, PH);
     axes(f, "position", "efficiency", (double)maxpos, 1, 4);
-    for (int i = 0; i < s->nlearn;) {
+    int ncurves = 0;
+    for (int i = 0; i < s->nlearn; i++)
+        ncurves += i == 0 || s->learn[i].cond != s->learn[i - 1].cond;
+    for (int i = 0, g = 0; i < s->nlearn; g++) {
         int c = s->learn[i].cond, j = i;
+        /* equal curves stay visible: each is drawn 3 px to the side of the
+         * one before (dodged), and narrower (the first 6 px wide, the last 2) */
+        double dx = (g - (ncurves - 1) / 2.0) * 3;
+        double sw = ncurves > 1 ? 2 + 4.0 * (ncurves - 1 - g) / (ncurves - 1) : 2;
         used[c] = 1;
-        fprintf(f, "<polyline fill=\"none\" stroke=\"%s\" stroke-width=\"2\" points=\"",
-                palette[c % 8]);
+        fprintf(f, "<polyline fill=\"none\" stroke=\"%s\" stroke-width=\"%.1f\" points=\"",
+                palette[c % 8], sw);
         for (; j < s->nlearn && s->learn[j].cond == c; j++)
-            fprintf(f, "%.1f,%.1f ", PL + (double)s->learn[j].pos / maxpos * w,
+            fprintf(f, "%.1f,%.1f ", PL + (double)s->learn[j].pos / maxpos * w + dx,
                     20 + h - s->learn[j].m.mean * h);
         fputs("\"/>\n", f);
         for (; i < j; i++) {
             const rs_learn *l = &s->learn[i];
-            double x = PL + (double)l->pos / maxpos * w;
+            double x = PL + (double)l->pos / maxpos * w + dx;
             double lo = l->m.lo < 0 ? 0 : l->m.lo, hi = l->m.hi > 1.05 ? 1.05 : l->m.hi;
             fprintf(f, "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"3\" fill=\"%s\"/>", x,
                     20 + h - l->m.mean * h, palette[c % 8]);
