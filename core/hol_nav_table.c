@@ -221,21 +221,56 @@ hol_err hol_navtab_init_index(hol_navtab *tab, int radius)
     return hol_navtab_init(tab, 5, 3, 3, radius);
 }
 
-/* nb: every tile's neighbours within the radius. */
-static void hol__neighbours(hol_navtab *tab)
+/* nb: every tile's neighbours within the radius. The tiles are made in
+ * index order from their parents (a tile's children, its canonical
+ * extensions, come in letter order, so they are the next indices of the
+ * level below): the edges to a child (arriving straight on, arrive 0) and
+ * back to the parent cost nothing. Only the other edges (about one a tile)
+ * take a hol_tile_step and a rank, and each of those is stepped once: the
+ * edge read backwards is the neighbour's edge in turn arrive + 2, arriving
+ * in turn + 2. `scratch` holds the tiles and their automaton states
+ * (17 bytes a tile; hol_navtab_scratch_bytes gives at least 36). */
+#define HOL__NB_UNSET (UINT32_MAX - 1)
+static void hol__neighbours(hol_navtab *tab, void *scratch)
 {
-    for (uint32_t i = 0; i < tab->count; i++) {
-        hol_tile t = hol_navtab_unrank(tab, i);
+    uint32_t n = tab->count, kids = 1;
+    int len = 0;
+    hol_tile *tile = (hol_tile *)scratch;
+    uint8_t *state = (uint8_t *)(tile + n);
+    for (size_t k = 0; k < 4 * (size_t)n; k++)
+        tab->nb[k] = HOL__NB_UNSET;
+    tile[0] = hol_tile_origin_q(tab->q);
+    state[0] = 0;
+    for (uint32_t i = 0; i < n; i++) {
+        if (i == tab->off[len + 1])
+            len++;
+        uint32_t *nb = tab->nb + 4 * (size_t)i;
+        for (int c = 0; c < 4; c++) {
+            int s2 = len == 0 ? 0 : tab->next[state[i]][c];
+            if (s2 < 0)
+                continue;
+            if (len == tab->radius) {
+                nb[c] = HOL_NAVTAB_NONE;
+                continue;
+            }
+            hol_tile_child(tile[i], c, &tile[kids]);
+            state[kids] = (uint8_t)s2;
+            nb[c] = kids << 2;
+            tab->nb[4 * (size_t)kids + HOL_TURN_B] = (i << 2) | (uint32_t)((c + 2) & 3);
+            kids++;
+        }
         for (int turn = 0; turn < 4; turn++) {
+            if (nb[turn] != HOL__NB_UNSET)
+                continue;
             hol_tile u;
             int arr;
-            uint32_t v = HOL_NAVTAB_NONE;
-            if (!hol_tile_step(t, turn, &u, &arr)) {
-                uint32_t j = hol_navtab_rank(tab, u);
-                if (j != HOL_NAVTAB_NONE)
-                    v = (j << 2) | (uint32_t)arr;
-            }
-            tab->nb[4 * (size_t)i + (size_t)turn] = v;
+            uint32_t j = HOL_NAVTAB_NONE;
+            if (!hol_tile_step(tile[i], turn, &u, &arr))
+                j = hol_navtab_rank(tab, u);
+            nb[turn] = j == HOL_NAVTAB_NONE ? j : (j << 2) | (uint32_t)arr;
+            if (j != HOL_NAVTAB_NONE)
+                tab->nb[4 * (size_t)j + (size_t)((arr + 2) & 3)] =
+                    (i << 2) | (uint32_t)((turn + 2) & 3);
         }
     }
 }
@@ -276,7 +311,7 @@ hol_err hol_navtab_build(hol_navtab *tab, void *mem, void *scratch)
     uint32_t n = tab->count, per = (uint32_t)tab->per;
     tab->nb = (uint32_t *)mem;
     tab->cost = (uint8_t *)(tab->nb + 4 * (size_t)n);
-    hol__neighbours(tab);
+    hol__neighbours(tab, scratch);
 
     /* BFS from the goal (tile O, every room state) over stored states */
     uint32_t *queue = (uint32_t *)scratch;
