@@ -355,9 +355,41 @@ size_t hol_navtab_leg_scratch_bytes(const hol_navtab *tab, int leg_radius)
            (sizeof(uint32_t) + 1);
 }
 
-/* One BFS per goal state (nst): from (O, ob, cb) over full states
- * (tile, o, cell) of the tiles within leg_radius; steps are reversible, so
- * these are the distances to the goal. */
+/* One BFS per stored goal state (per of the nst): from (O, ob, cb) over
+ * full states (tile, o, cell) of the tiles within leg_radius; steps are
+ * reversible, so these are the distances to the goal. Turning the whole
+ * room (the turns of hol_navtab_cost) maps walks to walks, so the goal G
+ * whose stored state is k has the distances of goal k read at the turned
+ * states: dist_G(i, s) = dist_k(i, s turned like G). */
+static void hol__leg_bfs(const hol_navtab *tab, uint32_t n, uint32_t g, uint32_t *queue,
+                         uint8_t *dist)
+{
+    uint32_t nst = (uint32_t)tab->nst, nc = (uint32_t)tab->ncell;
+    memset(dist, 255, nst * (size_t)n);
+    size_t head = 0, tail = 0;
+    dist[g] = 0; /* tile 0, state g */
+    queue[tail++] = g;
+    while (head < tail) {
+        uint32_t st = queue[head++];
+        uint32_t i = st / nst, s = st - i * nst;
+        int o = (int)(s / nc), cell = (int)(s % nc), v = dist[st];
+        for (int d = 0; d < 4; d++) {
+            int c2 = tab->cellnb[cell][d];
+            if (c2 < 0)
+                continue;
+            uint32_t e = tab->nb[4 * (size_t)i + (size_t)((o + d) & 3)];
+            if (e == HOL_NAVTAB_NONE || (e >> 2) >= n)
+                continue;
+            int o2 = (int)((e & 3u) - (uint32_t)d) & 3;
+            uint32_t s2 = nst * (e >> 2) + nc * (uint32_t)o2 + (uint32_t)c2;
+            if (dist[s2] == 255) {
+                dist[s2] = (uint8_t)(v + 1);
+                queue[tail++] = s2;
+            }
+        }
+    }
+}
+
 hol_err hol_navtab_build_legs(const hol_navtab *tab, int leg_radius, uint8_t *out_leg,
                               void *scratch)
 {
@@ -365,42 +397,21 @@ hol_err hol_navtab_build_legs(const hol_navtab *tab, int leg_radius, uint8_t *ou
         return HOL_EARG;
     uint32_t n = hol_navtab_count_q(tab->q, leg_radius), nst = (uint32_t)tab->nst;
     uint32_t nc = (uint32_t)tab->ncell, per = (uint32_t)tab->per;
-    size_t total = nst * (size_t)n;
     uint32_t *queue = (uint32_t *)scratch;
-    uint8_t *dist = (uint8_t *)(queue + total);
-    uint8_t fo[HOL_NAVTAB_MAX_NST], fc[HOL_NAVTAB_MAX_NST]; /* a full state's o, cell */
-    for (uint32_t s = 0; s < nst; s++) {
-        fo[s] = (uint8_t)(s / nc);
-        fc[s] = (uint8_t)(s % nc);
-    }
-    for (uint32_t g = 0; g < nst; g++) {
-        memset(dist, 255, total);
-        size_t head = 0, tail = 0;
-        dist[g] = 0; /* tile 0, state g */
-        queue[tail++] = g;
-        while (head < tail) {
-            uint32_t st = queue[head++];
-            uint32_t i = st / nst, s = st - i * nst;
-            int o = fo[s], cell = fc[s], v = dist[st];
-            for (int d = 0; d < 4; d++) {
-                int c2 = tab->cellnb[cell][d];
-                if (c2 < 0)
-                    continue;
-                uint32_t e = tab->nb[4 * (size_t)i + (size_t)((o + d) & 3)];
-                if (e == HOL_NAVTAB_NONE || (e >> 2) >= n)
-                    continue;
-                int o2 = (int)((e & 3u) - (uint32_t)d) & 3;
-                uint32_t s2 = nst * (e >> 2) + nc * (uint32_t)o2 + (uint32_t)c2;
-                if (dist[s2] == 255) {
-                    dist[s2] = (uint8_t)(v + 1);
-                    queue[tail++] = s2;
-                }
-            }
+    uint8_t *dist = (uint8_t *)(queue + nst * (size_t)n);
+    for (uint32_t k = 0; k < per; k++) {
+        hol__leg_bfs(tab, n, nc * tab->so[k] + tab->sc[k], queue, dist);
+        for (uint32_t G = 0; G < nst; G++) {
+            int og = (int)(G / nc), g = tab->turn[og];
+            if (tab->rot[og][G % nc] != k)
+                continue;
+            uint32_t at[HOL_NAVTAB_MAX_NST]; /* stored state k2, turned like G */
+            for (uint32_t k2 = 0; k2 < per; k2++)
+                at[k2] = nc * (uint32_t)((tab->so[k2] - g) & 3) + tab->rotc[g][tab->sc[k2]];
+            for (uint32_t i = 0; i < n; i++)
+                for (uint32_t k2 = 0; k2 < per; k2++)
+                    out_leg[nst * (per * (size_t)i + k2) + G] = dist[nst * (size_t)i + at[k2]];
         }
-        for (uint32_t i = 0; i < n; i++)
-            for (uint32_t k = 0; k < per; k++)
-                out_leg[nst * (per * (size_t)i + k) + g] =
-                    dist[nst * (size_t)i + nc * tab->so[k] + tab->sc[k]];
     }
     return HOL_OK;
 }
