@@ -86,7 +86,7 @@ size_t hol_navtab_table_bytes(const hol_navtab *tab)
 
 size_t hol_navtab_scratch_bytes(const hol_navtab *tab)
 {
-    return (size_t)tab->count * (size_t)tab->per * sizeof(uint32_t);
+    return (size_t)tab->count * (sizeof(hol_tile) + 1); /* hol__neighbours */
 }
 
 int hol_navtab_rot_cell(int o, int cell)
@@ -229,7 +229,7 @@ hol_err hol_navtab_init_index(hol_navtab *tab, int radius)
  * take a hol_tile_step and a rank, and each of those is stepped once: the
  * edge read backwards is the neighbour's edge in turn arrive + 2, arriving
  * in turn + 2. `scratch` holds the tiles and their automaton states
- * (17 bytes a tile; hol_navtab_scratch_bytes gives at least 36). */
+ * (17 bytes a tile: hol_navtab_scratch_bytes). */
 #define HOL__NB_UNSET (UINT32_MAX - 1)
 static void hol__neighbours(hol_navtab *tab, void *scratch)
 {
@@ -304,6 +304,31 @@ static void hol__certify(hol_navtab *tab)
     }
 }
 
+/* Expand stored state st (cost v): its unvisited neighbours get v + 1;
+ * [*lo, *hi) grows to cover them. */
+static inline void hol__expand(hol_navtab *tab, uint32_t st, int v, size_t *lo, size_t *hi)
+{
+    uint32_t per = (uint32_t)tab->per, i = st / per, k = st - i * per;
+    int o = tab->so[k], cell = tab->sc[k];
+    for (int d = 0; d < 4; d++) {
+        int c2 = tab->cellnb[cell][d];
+        if (c2 < 0)
+            continue;
+        uint32_t e = tab->nb[4 * (size_t)i + (size_t)((o + d) & 3)];
+        if (e == HOL_NAVTAB_NONE)
+            continue;
+        int o2 = (int)((e & 3u) - (uint32_t)d) & 3;
+        size_t s2 = (size_t)per * (e >> 2) + tab->rot[o2][c2];
+        if (tab->cost[s2] == 255) {
+            tab->cost[s2] = (uint8_t)(v + 1);
+            if (s2 < *lo)
+                *lo = s2;
+            if (s2 >= *hi)
+                *hi = s2 + 1;
+        }
+    }
+}
+
 hol_err hol_navtab_build(hol_navtab *tab, void *mem, void *scratch)
 {
     if (tab->radius < 1 || !tab->count)
@@ -313,32 +338,22 @@ hol_err hol_navtab_build(hol_navtab *tab, void *mem, void *scratch)
     tab->cost = (uint8_t *)(tab->nb + 4 * (size_t)n);
     hol__neighbours(tab, scratch);
 
-    /* BFS from the goal (tile O, every room state) over stored states */
-    uint32_t *queue = (uint32_t *)scratch;
-    size_t head = 0, tail = 0;
-    memset(tab->cost, 255, per * (size_t)n);
-    for (uint32_t k = 0; k < per; k++) {
-        tab->cost[k] = 0;
-        queue[tail++] = k;
-    }
-    while (head < tail) {
-        uint32_t st = queue[head++];
-        uint32_t i = st / per, k = st - i * per;
-        int o = tab->so[k], cell = tab->sc[k], v = tab->cost[st];
-        for (int d = 0; d < 4; d++) {
-            int c2 = tab->cellnb[cell][d];
-            if (c2 < 0)
-                continue;
-            uint32_t e = tab->nb[4 * (size_t)i + (size_t)((o + d) & 3)];
-            if (e == HOL_NAVTAB_NONE)
-                continue;
-            int o2 = (int)((e & 3u) - (uint32_t)d) & 3;
-            uint32_t s2 = per * (e >> 2) + tab->rot[o2][c2];
-            if (tab->cost[s2] == 255) {
-                tab->cost[s2] = (uint8_t)(v + 1);
-                queue[tail++] = s2;
-            }
+    /* BFS from the goal (tile O, every room state) over stored states, a
+     * level at a time: the states of cost v are found by scanning the cost
+     * array over the span where the level before wrote them (no queue, and
+     * the neighbour table is read in order) */
+    size_t total = per * (size_t)n, lo = 0, hi = per;
+    memset(tab->cost, 255, total);
+    memset(tab->cost, 0, per);
+    for (int v = 0; lo < hi && v < 254; v++) {
+        size_t nlo = total, nhi = 0;
+        const uint8_t *p = tab->cost + lo, *end = tab->cost + hi;
+        while (p < end && (p = (const uint8_t *)memchr(p, v, (size_t)(end - p))) != NULL) {
+            hol__expand(tab, (uint32_t)(p - tab->cost), v, &nlo, &nhi);
+            p++;
         }
+        lo = nlo;
+        hi = nhi;
     }
     hol__certify(tab);
     return HOL_OK;
