@@ -70,7 +70,13 @@ static hol_err hol__plan_sizes(const hol_nav_desc *d, int r, int lr, hol__plan *
      * unused then); the leg table's build scratch is the arena, and so is
      * the tours' dynamic program */
     p->legs = hol__align(hol_navtab_leg_bytes(&p->tab, lr));
-    size_t scratch = hol_navtab_scratch_bytes(&p->tab);
+    /* what the table's build once took as its queue (4 bytes a stored
+     * state): the radii within HOL_NAV_BUDGET were chosen with it, so the
+     * plan still reserves it and every configuration keeps its radius (the
+     * build itself needs hol_navtab_scratch_bytes, far less) */
+    size_t scratch = (size_t)p->tab.count * (size_t)p->tab.per * sizeof(uint32_t);
+    if (scratch < hol_navtab_scratch_bytes(&p->tab))
+        scratch = hol_navtab_scratch_bytes(&p->tab);
     if (p->arena + p->legs < scratch)
         p->arena = hol__align(scratch - p->legs);
     if (p->arena < hol_navtab_leg_scratch_bytes(&p->tab, lr))

@@ -86,7 +86,7 @@ size_t hol_navtab_table_bytes(const hol_navtab *tab)
 
 size_t hol_navtab_scratch_bytes(const hol_navtab *tab)
 {
-    return (size_t)tab->count * (size_t)tab->per * sizeof(uint32_t);
+    return (size_t)tab->count * (sizeof(hol_tile) + 1); /* hol__neighbours */
 }
 
 int hol_navtab_rot_cell(int o, int cell)
@@ -221,21 +221,56 @@ hol_err hol_navtab_init_index(hol_navtab *tab, int radius)
     return hol_navtab_init(tab, 5, 3, 3, radius);
 }
 
-/* nb: every tile's neighbours within the radius. */
-static void hol__neighbours(hol_navtab *tab)
+/* nb: every tile's neighbours within the radius. The tiles are made in
+ * index order from their parents (a tile's children, its canonical
+ * extensions, come in letter order, so they are the next indices of the
+ * level below): the edges to a child (arriving straight on, arrive 0) and
+ * back to the parent cost nothing. Only the other edges (about one a tile)
+ * take a hol_tile_step and a rank, and each of those is stepped once: the
+ * edge read backwards is the neighbour's edge in turn arrive + 2, arriving
+ * in turn + 2. `scratch` holds the tiles and their automaton states
+ * (17 bytes a tile: hol_navtab_scratch_bytes). */
+#define HOL__NB_UNSET (UINT32_MAX - 1)
+static void hol__neighbours(hol_navtab *tab, void *scratch)
 {
-    for (uint32_t i = 0; i < tab->count; i++) {
-        hol_tile t = hol_navtab_unrank(tab, i);
+    uint32_t n = tab->count, kids = 1;
+    int len = 0;
+    hol_tile *tile = (hol_tile *)scratch;
+    uint8_t *state = (uint8_t *)(tile + n);
+    for (size_t k = 0; k < 4 * (size_t)n; k++)
+        tab->nb[k] = HOL__NB_UNSET;
+    tile[0] = hol_tile_origin_q(tab->q);
+    state[0] = 0;
+    for (uint32_t i = 0; i < n; i++) {
+        if (i == tab->off[len + 1])
+            len++;
+        uint32_t *nb = tab->nb + 4 * (size_t)i;
+        for (int c = 0; c < 4; c++) {
+            int s2 = len == 0 ? 0 : tab->next[state[i]][c];
+            if (s2 < 0)
+                continue;
+            if (len == tab->radius) {
+                nb[c] = HOL_NAVTAB_NONE;
+                continue;
+            }
+            hol_tile_child(tile[i], c, &tile[kids]);
+            state[kids] = (uint8_t)s2;
+            nb[c] = kids << 2;
+            tab->nb[4 * (size_t)kids + HOL_TURN_B] = (i << 2) | (uint32_t)((c + 2) & 3);
+            kids++;
+        }
         for (int turn = 0; turn < 4; turn++) {
+            if (nb[turn] != HOL__NB_UNSET)
+                continue;
             hol_tile u;
             int arr;
-            uint32_t v = HOL_NAVTAB_NONE;
-            if (!hol_tile_step(t, turn, &u, &arr)) {
-                uint32_t j = hol_navtab_rank(tab, u);
-                if (j != HOL_NAVTAB_NONE)
-                    v = (j << 2) | (uint32_t)arr;
-            }
-            tab->nb[4 * (size_t)i + (size_t)turn] = v;
+            uint32_t j = HOL_NAVTAB_NONE;
+            if (!hol_tile_step(tile[i], turn, &u, &arr))
+                j = hol_navtab_rank(tab, u);
+            nb[turn] = j == HOL_NAVTAB_NONE ? j : (j << 2) | (uint32_t)arr;
+            if (j != HOL_NAVTAB_NONE)
+                tab->nb[4 * (size_t)j + (size_t)((arr + 2) & 3)] =
+                    (i << 2) | (uint32_t)((turn + 2) & 3);
         }
     }
 }
@@ -269,6 +304,31 @@ static void hol__certify(hol_navtab *tab)
     }
 }
 
+/* Expand stored state st (cost v): its unvisited neighbours get v + 1;
+ * [*lo, *hi) grows to cover them. */
+static inline void hol__expand(hol_navtab *tab, uint32_t st, int v, size_t *lo, size_t *hi)
+{
+    uint32_t per = (uint32_t)tab->per, i = st / per, k = st - i * per;
+    int o = tab->so[k], cell = tab->sc[k];
+    for (int d = 0; d < 4; d++) {
+        int c2 = tab->cellnb[cell][d];
+        if (c2 < 0)
+            continue;
+        uint32_t e = tab->nb[4 * (size_t)i + (size_t)((o + d) & 3)];
+        if (e == HOL_NAVTAB_NONE)
+            continue;
+        int o2 = (int)((e & 3u) - (uint32_t)d) & 3;
+        size_t s2 = (size_t)per * (e >> 2) + tab->rot[o2][c2];
+        if (tab->cost[s2] == 255) {
+            tab->cost[s2] = (uint8_t)(v + 1);
+            if (s2 < *lo)
+                *lo = s2;
+            if (s2 >= *hi)
+                *hi = s2 + 1;
+        }
+    }
+}
+
 hol_err hol_navtab_build(hol_navtab *tab, void *mem, void *scratch)
 {
     if (tab->radius < 1 || !tab->count)
@@ -276,34 +336,24 @@ hol_err hol_navtab_build(hol_navtab *tab, void *mem, void *scratch)
     uint32_t n = tab->count, per = (uint32_t)tab->per;
     tab->nb = (uint32_t *)mem;
     tab->cost = (uint8_t *)(tab->nb + 4 * (size_t)n);
-    hol__neighbours(tab);
+    hol__neighbours(tab, scratch);
 
-    /* BFS from the goal (tile O, every room state) over stored states */
-    uint32_t *queue = (uint32_t *)scratch;
-    size_t head = 0, tail = 0;
-    memset(tab->cost, 255, per * (size_t)n);
-    for (uint32_t k = 0; k < per; k++) {
-        tab->cost[k] = 0;
-        queue[tail++] = k;
-    }
-    while (head < tail) {
-        uint32_t st = queue[head++];
-        uint32_t i = st / per, k = st - i * per;
-        int o = tab->so[k], cell = tab->sc[k], v = tab->cost[st];
-        for (int d = 0; d < 4; d++) {
-            int c2 = tab->cellnb[cell][d];
-            if (c2 < 0)
-                continue;
-            uint32_t e = tab->nb[4 * (size_t)i + (size_t)((o + d) & 3)];
-            if (e == HOL_NAVTAB_NONE)
-                continue;
-            int o2 = (int)((e & 3u) - (uint32_t)d) & 3;
-            uint32_t s2 = per * (e >> 2) + tab->rot[o2][c2];
-            if (tab->cost[s2] == 255) {
-                tab->cost[s2] = (uint8_t)(v + 1);
-                queue[tail++] = s2;
-            }
+    /* BFS from the goal (tile O, every room state) over stored states, a
+     * level at a time: the states of cost v are found by scanning the cost
+     * array over the span where the level before wrote them (no queue, and
+     * the neighbour table is read in order) */
+    size_t total = per * (size_t)n, lo = 0, hi = per;
+    memset(tab->cost, 255, total);
+    memset(tab->cost, 0, per);
+    for (int v = 0; lo < hi && v < 254; v++) {
+        size_t nlo = total, nhi = 0;
+        const uint8_t *p = tab->cost + lo, *end = tab->cost + hi;
+        while (p < end && (p = (const uint8_t *)memchr(p, v, (size_t)(end - p))) != NULL) {
+            hol__expand(tab, (uint32_t)(p - tab->cost), v, &nlo, &nhi);
+            p++;
         }
+        lo = nlo;
+        hi = nhi;
     }
     hol__certify(tab);
     return HOL_OK;
@@ -320,9 +370,41 @@ size_t hol_navtab_leg_scratch_bytes(const hol_navtab *tab, int leg_radius)
            (sizeof(uint32_t) + 1);
 }
 
-/* One BFS per goal state (nst): from (O, ob, cb) over full states
- * (tile, o, cell) of the tiles within leg_radius; steps are reversible, so
- * these are the distances to the goal. */
+/* One BFS per stored goal state (per of the nst): from (O, ob, cb) over
+ * full states (tile, o, cell) of the tiles within leg_radius; steps are
+ * reversible, so these are the distances to the goal. Turning the whole
+ * room (the turns of hol_navtab_cost) maps walks to walks, so the goal G
+ * whose stored state is k has the distances of goal k read at the turned
+ * states: dist_G(i, s) = dist_k(i, s turned like G). */
+static void hol__leg_bfs(const hol_navtab *tab, uint32_t n, uint32_t g, uint32_t *queue,
+                         uint8_t *dist)
+{
+    uint32_t nst = (uint32_t)tab->nst, nc = (uint32_t)tab->ncell;
+    memset(dist, 255, nst * (size_t)n);
+    size_t head = 0, tail = 0;
+    dist[g] = 0; /* tile 0, state g */
+    queue[tail++] = g;
+    while (head < tail) {
+        uint32_t st = queue[head++];
+        uint32_t i = st / nst, s = st - i * nst;
+        int o = (int)(s / nc), cell = (int)(s % nc), v = dist[st];
+        for (int d = 0; d < 4; d++) {
+            int c2 = tab->cellnb[cell][d];
+            if (c2 < 0)
+                continue;
+            uint32_t e = tab->nb[4 * (size_t)i + (size_t)((o + d) & 3)];
+            if (e == HOL_NAVTAB_NONE || (e >> 2) >= n)
+                continue;
+            int o2 = (int)((e & 3u) - (uint32_t)d) & 3;
+            uint32_t s2 = nst * (e >> 2) + nc * (uint32_t)o2 + (uint32_t)c2;
+            if (dist[s2] == 255) {
+                dist[s2] = (uint8_t)(v + 1);
+                queue[tail++] = s2;
+            }
+        }
+    }
+}
+
 hol_err hol_navtab_build_legs(const hol_navtab *tab, int leg_radius, uint8_t *out_leg,
                               void *scratch)
 {
@@ -330,42 +412,21 @@ hol_err hol_navtab_build_legs(const hol_navtab *tab, int leg_radius, uint8_t *ou
         return HOL_EARG;
     uint32_t n = hol_navtab_count_q(tab->q, leg_radius), nst = (uint32_t)tab->nst;
     uint32_t nc = (uint32_t)tab->ncell, per = (uint32_t)tab->per;
-    size_t total = nst * (size_t)n;
     uint32_t *queue = (uint32_t *)scratch;
-    uint8_t *dist = (uint8_t *)(queue + total);
-    uint8_t fo[HOL_NAVTAB_MAX_NST], fc[HOL_NAVTAB_MAX_NST]; /* a full state's o, cell */
-    for (uint32_t s = 0; s < nst; s++) {
-        fo[s] = (uint8_t)(s / nc);
-        fc[s] = (uint8_t)(s % nc);
-    }
-    for (uint32_t g = 0; g < nst; g++) {
-        memset(dist, 255, total);
-        size_t head = 0, tail = 0;
-        dist[g] = 0; /* tile 0, state g */
-        queue[tail++] = g;
-        while (head < tail) {
-            uint32_t st = queue[head++];
-            uint32_t i = st / nst, s = st - i * nst;
-            int o = fo[s], cell = fc[s], v = dist[st];
-            for (int d = 0; d < 4; d++) {
-                int c2 = tab->cellnb[cell][d];
-                if (c2 < 0)
-                    continue;
-                uint32_t e = tab->nb[4 * (size_t)i + (size_t)((o + d) & 3)];
-                if (e == HOL_NAVTAB_NONE || (e >> 2) >= n)
-                    continue;
-                int o2 = (int)((e & 3u) - (uint32_t)d) & 3;
-                uint32_t s2 = nst * (e >> 2) + nc * (uint32_t)o2 + (uint32_t)c2;
-                if (dist[s2] == 255) {
-                    dist[s2] = (uint8_t)(v + 1);
-                    queue[tail++] = s2;
-                }
-            }
+    uint8_t *dist = (uint8_t *)(queue + nst * (size_t)n);
+    for (uint32_t k = 0; k < per; k++) {
+        hol__leg_bfs(tab, n, nc * tab->so[k] + tab->sc[k], queue, dist);
+        for (uint32_t G = 0; G < nst; G++) {
+            int og = (int)(G / nc), g = tab->turn[og];
+            if (tab->rot[og][G % nc] != k)
+                continue;
+            uint32_t at[HOL_NAVTAB_MAX_NST]; /* stored state k2, turned like G */
+            for (uint32_t k2 = 0; k2 < per; k2++)
+                at[k2] = nc * (uint32_t)((tab->so[k2] - g) & 3) + tab->rotc[g][tab->sc[k2]];
+            for (uint32_t i = 0; i < n; i++)
+                for (uint32_t k2 = 0; k2 < per; k2++)
+                    out_leg[nst * (per * (size_t)i + k2) + G] = dist[nst * (size_t)i + at[k2]];
         }
-        for (uint32_t i = 0; i < n; i++)
-            for (uint32_t k = 0; k < per; k++)
-                out_leg[nst * (per * (size_t)i + k) + g] =
-                    dist[nst * (size_t)i + nc * tab->so[k] + tab->sc[k]];
     }
     return HOL_OK;
 }

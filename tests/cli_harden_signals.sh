@@ -19,6 +19,29 @@ gone_within() {
     for i in $(seq 1 "$2"); do kill -0 "$1" 2>/dev/null || return 0; sleep 0.1; done
     ! kill -0 "$1" 2>/dev/null
 }
+# signal_check NAME PID STATUS TEXT ENDED LEFT DIR: SIGTERM to PID (a command
+# started in the background), which must be gone within 1 s; unless the
+# shell test ENDED says it finished before the signal came (a fast
+# machine), it ended with STATUS and one stderr line with TEXT, and the test
+# LEFT holds (nothing half written; DIR is listed when not).
+signal_check() {
+    name=$1 pid=$2 want=$3 text=$4 ended=$5 left=$6 dir=$7
+    kill -TERM "$pid" 2>/dev/null
+    if ! gone_within "$pid" 10; then
+        bad "$name still running 1 s after SIGTERM"
+        kill -KILL "$pid" 2>/dev/null
+        wait "$pid"
+        return
+    fi
+    wait "$pid"; st=$?
+    if eval "$ended"; then
+        skip "$name ended before the signal (a fast machine)"
+        return
+    fi
+    [ "$st" = "$want" ] && ok || bad "$name SIGTERM: status $st, want $want"
+    one_line "$name SIGTERM" "$text"
+    eval "$left" && ok || bad "$name SIGTERM left: $(ls -A "$dir" 2>/dev/null)"
+}
 rec_header() {
     printf 'holonomy-rec 2\nsession 20260131T140509Z-5f3a9c0%s\nparticipant P01\n' "$1"
     printf 'start 2026-01-31T14:05:09Z\nversion 0.1.0\nlevel f\nL mode flag\nL seed 5\nL flag Nf\nend\n'
@@ -34,22 +57,8 @@ awk -F, -v OFS=, 'NR == 1 { print; next } NR == 2 { for (k = 1; k <= 1000000; k+
 ( ulimit -f 65536; exec "$H" report one --out rout ) >out 2>err &
 pid=$!
 sleep 1 # started (loading the libraries takes a while on a loaded machine)
-kill -TERM $pid 2>/dev/null
-if gone_within $pid 10; then
-    wait $pid; st=$?
-    if [ "$st" = 0 ]; then
-        skip "report ended before the signal (a fast machine)"
-    else
-        [ "$st" = 143 ] && ok || bad "report SIGTERM: status $st, want 143"
-        one_line "report SIGTERM" "stopped by signal 15"
-        [ ! -e rout/attempts.csv ] && [ -z "$(ls -A rout 2>/dev/null | grep holonomy-tmp)" ] && ok ||
-            bad "report SIGTERM left: $(ls -A rout)"
-    fi
-else
-    bad "report still running 1 s after SIGTERM"
-    kill -KILL $pid 2>/dev/null
-    wait $pid
-fi
+signal_check report $pid 143 "stopped by signal 15" '[ "$st" = 0 ]' \
+    '[ ! -e rout/attempts.csv ] && [ -z "$(ls -A rout 2>/dev/null | grep holonomy-tmp)" ]' rout
 
 # ---- report: the pictures' loop ------------------------------------------------------
 mkdir many
@@ -64,22 +73,8 @@ awk -v dir=many 'NR == 1 { head = $0; next } { row = $0 } END {
 ( ulimit -f 65536; exec "$H" report many --out pout ) >out 2>err &
 pid=$!
 for i in $(seq 1 200); do [ -e pout/attempt-0001.png ] && break; sleep 0.05; done
-kill -TERM $pid 2>/dev/null
-if gone_within $pid 10; then
-    wait $pid; st=$?
-    if [ "$st" = 0 ]; then
-        skip "report ended before the signal (a fast machine)"
-    else
-        [ "$st" = 143 ] && ok || bad "pictures SIGTERM: status $st, want 143"
-        one_line "pictures SIGTERM" "stopped by signal 15"
-        [ ! -e pout/attempts.csv ] && [ -z "$(ls -A pout | grep holonomy-tmp)" ] && ok ||
-            bad "pictures SIGTERM left: $(ls -A pout | grep -v '^attempt-[0-9]*.png$')"
-    fi
-else
-    bad "report (pictures) still running 1 s after SIGTERM"
-    kill -KILL $pid 2>/dev/null
-    wait $pid
-fi
+signal_check "report (pictures)" $pid 143 "stopped by signal 15" '[ "$st" = 0 ]' \
+    '[ ! -e pout/attempts.csv ] && [ -z "$(ls -A pout | grep holonomy-tmp)" ]' pout
 
 # ---- recovery of a huge live file ----------------------------------------------------
 # a killed session's folder: its attempt's files still .live, the head rows
@@ -100,21 +95,7 @@ size=$(wc -c <killed/head-001.csv.live)
 pid=$!
 # the signal once recovery copies the file's whole rows (its .cut copy)
 for i in $(seq 1 400); do ls killed | grep -q '\.cut$' && break; sleep 0.05; done
-kill -TERM $pid 2>/dev/null
-if gone_within $pid 10; then
-    wait $pid; st=$?
-    if grep -q "finished in the log folder" err; then
-        skip "recovery ended before the signal (a fast machine)"
-    else
-        [ "$st" = 1 ] && ok || bad "recovery SIGTERM: status $st, want 1"
-        one_line "recovery SIGTERM" "stopped by a signal"
-        [ "$(wc -c <killed/head-001.csv.live)" = "$size" ] && ! ls killed | grep -q '\.cut$' && ok ||
-            bad "recovery SIGTERM left: $(ls killed)"
-    fi
-else
-    bad "recovery still running 1 s after SIGTERM"
-    kill -KILL $pid 2>/dev/null
-    wait $pid
-fi
+signal_check recovery $pid 1 "stopped by a signal" 'grep -q "finished in the log folder" err' \
+    '[ "$(wc -c <killed/head-001.csv.live)" = "$size" ] && ! ls killed | grep -q "\.cut$"' killed
 rm -f killed/head-001.csv.live
 finish cli_harden_signals

@@ -286,6 +286,38 @@ static void test_index(void **state)
     assert_int_equal(hol_navtab_rank(&ix, far), HOL_NAVTAB_NONE);
 }
 
+/* The neighbour table (built from parents and children, each other edge
+ * stepped once) is hol_tile_step and rank, edge by edge, in every tiling. */
+static void test_neighbours_are_steps(void **state)
+{
+    (void)state;
+    for (int q = HOL_TILING_MIN_Q; q <= HOL_TILING_MAX_Q; q++) {
+        hol_navtab tab;
+        int r = q == 4 ? 6 : 9 - q / 2; /* a few thousand tiles each */
+        assert_int_equal(hol_navtab_init(&tab, q, 3, 4, r), HOL_OK);
+        void *m = malloc(hol_navtab_table_bytes(&tab)), *s = malloc(hol_navtab_scratch_bytes(&tab));
+        assert_non_null(m);
+        assert_non_null(s);
+        assert_int_equal(hol_navtab_build(&tab, m, s), HOL_OK);
+        for (uint32_t i = 0; i < tab.count; i++) {
+            hol_tile t = hol_navtab_unrank(&tab, i), u;
+            for (int turn = 0; turn < 4; turn++) {
+                int arr;
+                uint32_t want = HOL_NAVTAB_NONE;
+                assert_int_equal(hol_tile_step(t, turn, &u, &arr), HOL_OK);
+                uint32_t j = hol_navtab_rank(&tab, u);
+                if (j != HOL_NAVTAB_NONE)
+                    want = (j << 2) | (uint32_t)arr;
+                if (tab.nb[4 * i + (uint32_t)turn] != want)
+                    fail_msg("{4,%d} radius %d: tile %u turn %d: nb %x, step %x", q, r, i, turn,
+                             tab.nb[4 * i + (uint32_t)turn], want);
+            }
+        }
+        free(m);
+        free(s);
+    }
+}
+
 /* ---- the table: radius r agrees with radius r + 1 within r - 2 ---- */
 
 /* Tables of radius r and r + more of one configuration agree within
@@ -1531,6 +1563,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_index),
+        cmocka_unit_test(test_neighbours_are_steps),
         cmocka_unit_test(test_plain_astar_agrees),
         cmocka_unit_test(test_table_converges),
         cmocka_unit_test(test_table_converges_default),
