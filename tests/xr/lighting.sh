@@ -15,8 +15,9 @@
 # - at dusk and night the lantern's glass glows where the pinhole puts it
 #   (pixels of luma 200 or more within 16 px, their mean x within 2 px of
 #   the projection), and at day there is no glass;
-# - at night the floor by the lantern's foot is more than twice the
-#   frame's mean (a lit region in the dark);
+# - at night the floor by the lantern's foot (0.15 m beyond it, under the
+#   glass) is more than twice the frame's mean (a lit region in the dark),
+#   and at day it is not (the control: the light, not the floor's colour);
 # - the glass's offset between the eyes: eye 0 (the left) sees it further
 #   right, by the projections' difference within 1 px;
 # - each eye equals the host's `holonomy render` of the same pose, tiling,
@@ -27,7 +28,7 @@ IN=$1 OUT=$2
 fail=0
 check() { if eval "$2"; then echo "xr-test: ok: $1"; else echo "xr-test: FAIL: $1"; fail=1; fi; }
 rm -rf "$OUT" && mkdir -p "$OUT"
-GLASS=1.5,1.3,0.5 FOOT=1.5,0,0.8
+GLASS=1.5,1.3,0.5 FOOT=1.5,0,0.35
 # field F of a probe line "mean M at PX,PY disc D bright N centroid CX"
 f() { echo "$1" | awk -v k="$2" '{ split($4, p, ","); v["mean"] = $2; v["px"] = p[1]; v["disc"] = $6;
       v["bright"] = $8; v["cx"] = $10; print v[k] }'; }
@@ -53,7 +54,7 @@ for q in 5 6; do
         done
     done
     for e in 0 1; do
-        eval "gd=\$g_${q}_day_$e gu=\$g_${q}_dusk_$e gn=\$g_${q}_night_$e fn=\$ft_${q}_night_$e"
+        eval "gd=\$g_${q}_day_$e gu=\$g_${q}_dusk_$e gn=\$g_${q}_night_$e fn=\$ft_${q}_night_$e fd=\$ft_${q}_day_$e"
         md=$(f "$gd" mean) mu=$(f "$gu" mean) mn=$(f "$gn" mean)
         check "lighting {4,$q} eye $e: night darker than dusk darker than day, night below half of day (mean luma $mn, $mu, $md)" \
             'awk "BEGIN { exit !($mn < $mu && $mu < $md && $mn < 0.5 * $md) }"'
@@ -65,6 +66,8 @@ for q in 5 6; do
         check "lighting {4,$q} day eye $e: no glass ($(f "$gd" bright) bright pixels)" '[ "$(f "$gd" bright)" = 0 ]'
         check "lighting {4,$q} night eye $e: the floor by the lantern's foot lit (luma $(f "$fn" disc)) above twice the frame's mean ($mn)" \
             'awk "BEGIN { exit !($(f "$fn" disc) > 2 * $mn) }"'
+        check "lighting {4,$q} day eye $e: the same floor not above twice the frame's mean (luma $(f "$fd" disc), mean $md)" \
+            'awk "BEGIN { exit !($(f "$fd" disc) <= 2 * $md) }"'
     done
     for s in dusk night; do
         eval "a=\$g_${q}_${s}_0 b=\$g_${q}_${s}_1"
