@@ -414,8 +414,13 @@ xr:
 $(BUILD)/xr_png_diff: tests/xr/png_diff.c $(PLAT_OBJ) $(RENDER_LIB) $(CORE_LIB)
 	$(CC) $(CFLAGS) -o $@ $< $(PLAT_OBJ) $(RENDER_LIB) $(CORE_LIB) $(LDFLAGS) -lz $(LDLIBS)
 
-xr-test: deps-xr $(BUILD)/holonomy $(BUILD)/xr_png_diff
-	@HOLONOMY=$(BUILD)/holonomy PNG_DIFF=$(BUILD)/xr_png_diff sh tests/xr/run.sh
+# The host's look at the lit eyes (tests/xr/lighting.sh).
+$(BUILD)/xr_light_probe: tests/xr/light_probe.c $(PLAT_OBJ) $(RENDER_LIB) $(CORE_LIB)
+	$(CC) $(CFLAGS) -o $@ $< $(PLAT_OBJ) $(RENDER_LIB) $(CORE_LIB) $(LDFLAGS) -lz $(LDLIBS)
+
+xr-test: deps-xr $(BUILD)/holonomy $(BUILD)/xr_png_diff $(BUILD)/xr_light_probe
+	@HOLONOMY=$(BUILD)/holonomy PNG_DIFF=$(BUILD)/xr_png_diff LIGHT_PROBE=$(BUILD)/xr_light_probe \
+	  OUT=$(BUILD)/xr-test sh tests/xr/run.sh
 
 # The libusb hidapi backend builds too (CI builds it beside the default).
 check-hid-libusb:

@@ -33,12 +33,6 @@ void hol__check(hol__xr *x, const hol_frame_desc *fd, int w, int h)
     char path[600];
     snprintf(path, sizeof path, "%s/xr-eye0.png", x->d->check_dir);
     hol_png_write_file(path, got, w, h, 0);
-    /* the same eye for `holonomy render` (the host's check in make xr-test) */
-    const hol_camera *c = &fd->cam;
-    hol__say(x, "xr: check eye 0 render --eye %.9g,%.9g,%.9g --orient %.9g,%.9g,%.9g,%.9g "
-                "--tan %.17g,%.17g,%.17g,%.17g --size %dx%d",
-             c->eye[0], c->eye[1], c->eye[2], c->orient[0], c->orient[1], c->orient[2],
-             c->orient[3], c->tan_left, c->tan_right, c->tan_down, c->tan_up, w, h);
     snprintf(path, sizeof path, "%s/osmesa-eye0.png", x->d->check_dir);
     fflush(stdout);
     pid_t pid = fork();
@@ -163,11 +157,23 @@ void hol__check_eye(hol__xr *x, int e, const hol_frame_desc *fd, unsigned fbo, i
         return;
     }
     hol_render_read_rgba(x->rnd, w, h, bare);
+    /* the eye's world (no HUD) as a PNG, and the eye for `holonomy render`
+     * (make xr-test's host half renders both eyes again from these lines) */
+    char path[600];
+    snprintf(path, sizeof path, "%s/xr-world-eye%d.png", x->d->check_dir, e);
+    hol_png_write_file(path, bare, w, h, 0);
+    const hol_camera *c = &b.cam;
+    hol__say(x, "xr: check eye %d render --eye %.9g,%.9g,%.9g --orient %.9g,%.9g,%.9g,%.9g "
+                "--tan %.17g,%.17g,%.17g,%.17g --size %dx%d",
+             e, c->eye[0], c->eye[1], c->eye[2], c->orient[0], c->orient[1], c->orient[2],
+             c->orient[3], c->tan_left, c->tan_right, c->tan_down, c->tan_up, w, h);
     if (e == 0) /* the world against the renders without a HUD */
         hol__check(x, &b, w, h);
     x->gl.BindFramebuffer(HOL__GL_FRAMEBUFFER, fbo);
     if (hol_render_frame(x->rnd, fd, NULL) == HOL_OK) {
         hol_render_read_rgba(x->rnd, w, h, shown);
+        snprintf(path, sizeof path, "%s/xr-shown-eye%d.png", x->d->check_dir, e);
+        hol_png_write_file(path, shown, w, h, 0);
         hol__measure_panel(x, e, fd, bare, shown, w, h);
     }
     free(bare);

@@ -8,7 +8,9 @@
 // - CPU per XR frame at 800x600 on iwer's Quest 3 under SwiftShader: the
 //   page's main thread (step and both eyes' GL calls issued) and all of
 //   chromium's processes together (/proc: browser, renderer, GPU process
-//   where SwiftShader rasterises).
+//   where SwiftShader rasterises);
+// - the same per XR frame at night (eight lanterns) against day, one level
+//   each, in the same run.
 // Environment: BENCH_NATIVE, BENCH_WASM (the two builds of bench_web), WEB,
 // CHROMIUM.
 import fs from 'node:fs';
@@ -128,8 +130,34 @@ try {
   console.log(`  XR frames at ${size[0]}x${size[1]} (two eyes of ${size[0] / 2}x${size[1]}): ${((f1 - f0) / secs).toFixed(1)} frames/s`);
   console.log(`  main thread per XR frame (app step, both eyes' GL calls issued): median ${med.toFixed(2)} ms, p99 ${p99.toFixed(2)} ms over ${n} frames`);
   console.log(`  all chromium processes per XR frame (incl. SwiftShader rasterising): ${((c1 - c0) / (f1 - f0) * 1000).toFixed(1)} ms CPU`);
-  console.log(`  (machine: ${os.cpus().length} cores, load average ${os.loadavg()[0].toFixed(1)})`);
   await p.ctx.close();
+  // night against day in this run (issue 27): the same explore level with
+  // eight lanterns, at day (lanterns not drawn) and at night, on iwer's
+  // Quest 3 at 800x600, interleaved day, night, day, night so both see the
+  // same load: the main thread per XR frame and all chromium's processes
+  // (SwiftShader runs the lit fragment shader on the CPU)
+  const lanterns = ['O', 'N', 'E', 'S', 'W', 'Nf', 'Ef', 'Sf'].map((a) => `place lantern ${a}\n`).join('');
+  for (const sky of ['day', 'night'])
+    fs.writeFileSync(path.join(tmp, `bench-${sky}.lvl`), `mode explore\nseed 3\nminimap off\nlighting ${sky}\n${lanterns}`);
+  const sky = { day: { main: [], all: [] }, night: { main: [], all: [] } };
+  for (const s of ['day', 'night', 'day', 'night']) {
+    const q = await openPage(browser, server.base + `/?level=/test/bench-${s}.lvl`, { iwer: true });
+    await enterVR(q);
+    await q.page.evaluate(() => xrDevice.quaternion.set(-0.2164, 0, 0, 0.9763)); /* 25 degrees down: the lit floor */
+    await q.until(async () => (await q.state(1)) >= 30, 'warm-up XR frames', 120000);
+    const a0 = chromiumCpu(pid), g0 = await q.state(1);
+    await q.page.evaluate(() => Module._hol_web_xr_cpu_reset());
+    await q.until(async () => (await q.state(1)) >= g0 + 90, '90 XR frames', 180000);
+    const a1 = chromiumCpu(pid), g1 = await q.state(1);
+    sky[s].main.push(await q.page.evaluate(() => Module._hol_web_xr_cpu_ms(1)));
+    sky[s].all.push((a1 - a0) / (g1 - g0) * 1000);
+    await q.ctx.close();
+  }
+  const avg = (a) => a.reduce((x, y) => x + y, 0) / a.length;
+  for (const [k, label] of [['main', 'main thread per XR frame (median of each run)'], ['all', 'all chromium processes per XR frame (CPU)']])
+    console.log(`  night (8 lanterns) against day, ${label}: day ${avg(sky.day[k]).toFixed(2)} ms, night ${avg(sky.night[k]).toFixed(2)} ms, ` +
+      `night/day ${(avg(sky.night[k]) / avg(sky.day[k])).toFixed(2)} (runs: day ${sky.day[k].map((v) => v.toFixed(1)).join(', ')}; night ${sky.night[k].map((v) => v.toFixed(1)).join(', ')})`);
+  console.log(`  (machine: ${os.cpus().length} cores, load average ${os.loadavg()[0].toFixed(1)})`);
 } finally {
   await browser.close();
   server.close();

@@ -842,6 +842,98 @@ await check('the browser recording replays on the desktop to the same step rows 
 });
 if (xrOn) await xr.ctx.close();
 
+// ---- dusk and night in WebXR (issue 27) ---------------------------------------
+// A level with a lantern on N at dusk and at night, in {4,5} and {4,6}, on
+// iwer's headset looking north 25 degrees down: both eyes read back (saved
+// as xr-light-*.png with the page's screenshot) and checked against a
+// pinhole of each eye's printed pose (the glass 1.3 m over N's centre, at
+// 1.5, 1.3, 0.5) and against `holonomy render` of the same eye.
+function lightLuma(px, w, h) {
+  let sum = 0;
+  for (let i = 0; i < w * h; i++) sum += 0.299 * px[4 * i] + 0.587 * px[4 * i + 1] + 0.114 * px[4 * i + 2];
+  return sum / (w * h);
+}
+function lightProject(p, eye, q, [tl, tr, td, tu], w, h) {
+  const c = turnQ([-q[0], -q[1], -q[2], q[3]], [p[0] - eye[0], p[1] - eye[1], p[2] - eye[2]]);
+  if (c[2] >= 0) return null;
+  return [(c[0] / -c[2] - tl) / (tr - tl) * w, (tu - c[1] / -c[2]) / (tu - td) * h];
+}
+for (const q of [5, 6]) for (const sky of ['dusk', 'night']) {
+  await check(`WebXR {4,${q}} at ${sky} with a lantern, both eyes: the glass glows where each eye's pose projects it, further right in the left eye by the projections' offset (within 1 px); ` +
+    `the eyes darker than the day render of the same pose${sky === 'night' ? ' by half' : ''}; each equals holonomy render --lighting ${sky} --lantern N of its eye (channel within ${TOL}/255 on ${100 - MAX_PCT} % of pixels)`, async () => {
+    const name = `light-q${q}-${sky}`;
+    fs.writeFileSync(path.join(testDir, name + '.lvl'),
+      `mode explore\nseed 5\nminimap off\ncues none\ntiling 4 ${q}\nlighting ${sky}\nplace lantern N\n`);
+    const p = await openPage(`?level=/test/${name}.lvl`, { iwer: true });
+    try {
+      await enterVR(p);
+      const a = Math.sin(-12.5 * Math.PI / 180), b = Math.cos(-12.5 * Math.PI / 180);
+      await p.page.evaluate((x, w) => xrDevice.quaternion.set(x, 0, 0, w), a, b);
+      await p.until(async () => (await p.state(S.XR_FRAMES)) >= 10, '10 XR frames', 60000);
+      const at = (await p.state(S.XR_FRAMES)) + 2;
+      await p.page.evaluate((f) => Module._hol_web_check_request(f), at);
+      await p.until(async () => (await p.state(S.XR_FRAMES)) > at, 'the check frame', 30000);
+      await p.page.screenshot({ path: path.join(OUT, `xr-${name}-page.png`) });
+      const glass = [], proj = [];
+      for (let e = 0; e < 2; e++) {
+        const line = p.log.find((l) => l.startsWith(`web: check eye ${e} frame ${at} `));
+        assert(line, 'no check line for eye ' + e);
+        const m = / render (--eye (\S+) --orient (\S+) --tan (\S+)) --size (\d+)x(\d+) cell (\d),(\d)$/.exec(line);
+        const w = +m[5], h = +m[6];
+        assert(m[7] === '1' && m[8] === '1', 'not in the middle cell: ' + line);
+        const b64 = await p.page.evaluate((eye, n) => {
+          const px = HEAPU8.subarray(Module._hol_web_check_pixels(eye), Module._hol_web_check_pixels(eye) + n);
+          let s = '';
+          for (let i = 0; i < px.length; i += 32768) s += String.fromCharCode.apply(null, px.subarray(i, i + 32768));
+          return btoa(s);
+        }, e, w * h * 4);
+        const gl = Buffer.from(b64, 'base64'), got = Buffer.alloc(gl.length);
+        for (let y = 0; y < h; y++) gl.copy(got, (h - 1 - y) * w * 4, y * w * 4, (y + 1) * w * 4);
+        fs.writeFileSync(path.join(OUT, `xr-${name}-eye${e}.png`), encodePNG(got, w, h));
+        const render = (lighting, out) => {
+          const args = ['render', '--walk', '-', '--seed', '5', '--tiling', `4,${q}`, ...m[1].split(' '),
+            '--size', `${w}x${h}`, '--lighting', lighting, '--lantern', 'N', '--out', out];
+          const r = spawnSync(HOLONOMY, args, { encoding: 'utf8' });
+          assert(r.status === 0, `holonomy ${args.join(' ')}: ${r.stderr}`);
+          const img = decodePNG(fs.readFileSync(out));
+          assert(img.w === w && img.h === h, 'reference size');
+          return img.rgba;
+        };
+        const want = render(sky, path.join(OUT, `osmesa-${name}-eye${e}.png`));
+        const day = render('day', path.join(OUT, `osmesa-${name}-day-eye${e}.png`));
+        let bad = 0;
+        for (let i = 0; i < w * h; i++) {
+          let d = 0;
+          for (let k = 0; k < 3; k++) d = Math.max(d, Math.abs(got[i * 4 + k] - want[i * 4 + k]));
+          bad += d > TOL;
+        }
+        const pct = 100 * bad / (w * h);
+        const mean = lightLuma(got, w, h), dayMean = lightLuma(day, w, h);
+        const pr = lightProject([1.5, 1.3, 0.5], m[2].split(',').map(Number), m[3].split(',').map(Number),
+          m[4].split(',').map(Number), w, h);
+        assert(pr, `eye ${e}: the glass is behind the eye`);
+        let n = 0, sx = 0;
+        for (let y = 0; y < h; y++) for (let x = 0; x < w; x++) {
+          const i = 4 * (y * w + x);
+          if (Math.hypot(x + 0.5 - pr[0], y + 0.5 - pr[1]) <= 16 &&
+            0.299 * got[i] + 0.587 * got[i + 1] + 0.114 * got[i + 2] >= 200) { n++; sx += x + 0.5; }
+        }
+        glass.push(n ? sx / n : NaN);
+        proj.push(pr[0]);
+        console.log(`# ${name} eye ${e} ${w}x${h}: mean luma ${mean.toFixed(1)} (day ${dayMean.toFixed(1)}), glass ${n} px at x ${(sx / n).toFixed(2)} (projected ${pr[0].toFixed(2)},${pr[1].toFixed(2)}), ${pct.toFixed(3)} % off the render`);
+        assert(pct <= MAX_PCT, `eye ${e}: ${pct.toFixed(2)} % of pixels differ from the render`);
+        assert(mean < (sky === 'night' ? 0.5 : 0.9) * dayMean, `eye ${e}: mean luma ${mean.toFixed(1)}, day ${dayMean.toFixed(1)}`);
+        assert(n >= 5 && Math.abs(sx / n - pr[0]) <= 2, `eye ${e}: ${n} glowing pixels at x ${sx / n}, projected ${pr[0]}`);
+      }
+      const dm = glass[0] - glass[1], dp = proj[0] - proj[1];
+      assert(dp > 0.5 && dm > 0 && Math.abs(dm - dp) <= 1, `offset between the eyes ${dm}, projected ${dp}`);
+      assert(!p.errors.length, 'errors: ' + p.errors.join('; '));
+    } finally {
+      await p.ctx.close();
+    }
+  });
+}
+
 await browser.close();
 server.close();
 const secs = (Date.now() - t0) / 1000;

@@ -39,6 +39,29 @@ start_monado() {
     for i in $(seq 1 100); do [ -S "$out/run/monado_comp_ipc" ] && break; sleep 0.1; done
 }
 start_monado
+# Lighting in the headset (issue 27): day, dusk and night levels with a
+# lantern on N, in {4,5} and {4,6}, the head held at 1.5,1.2,1.9 (low, so
+# the floor by the lantern's foot is in view: the eyes look where Monado's
+# simulated head looks, north and level); frame 30's eyes read back (D/xr-world-eyeE.png
+# without the HUD, D/xr-shown-eyeE.png as shown) with their `render`
+# arguments. The host half (tests/xr/lighting.sh) measures them.
+awk 'BEGIN { for (k = 0; k < 40; k++)
+     printf "%.4f f=9 h=1.5,1.2,1.9,0,0,0,1\n", k / 72.0 }' >"$out/look.txt"
+for q in 5 6; do
+    for s in day dusk night; do
+        d="$out/light/q${q}_$s"
+        mkdir -p "$d"
+        printf 'mode explore\nseed 5\nminimap off\ncues none\ntiling 4 %s\nlighting %s\nplace lantern N\n' \
+            "$q" "$s" >"$d/level.txt"
+        env DISPLAY=:77 "$BIN" xr "$d/level.txt" --frames 40 --check-frame 30 --check-dir "$d" \
+            --input "$out/look.txt" >"$d/xr.out" 2>"$d/xr.err"
+        rc=$?
+        check "lighting {4,$q} $s: exit 0 ($rc), both eyes of frame 30 read back" \
+            '[ "$rc" = 0 ] && [ -s "$d/xr-world-eye0.png" ] && [ -s "$d/xr-world-eye1.png" ] &&
+             [ "$(grep -c "^xr: check eye [01] render " "$d/xr.out")" = 2 ]'
+    done
+done
+if [ "${XR_ONLY:-}" = lighting ]; then exit $fail; fi
 printf 'mode flag\nseed 5\nflag Wrf\nminimap off\ncues none\n' >"$out/level.txt"
 # scripted head motion (the simulated headset does not move): from the
 # middle cell's centre 1 m north over 100 frames, across the cell edge;
