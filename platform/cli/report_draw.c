@@ -253,7 +253,8 @@ static void geodesic(canvas *c, const double a[3], const double b[3], double w, 
     to_px(c, a, pa);
     to_px(c, b, pb);
     double dx = pb[0] - pa[0], dy = pb[1] - pa[1], l = sqrt(dx * dx + dy * dy);
-    if (off != 0 && l > 0)
+    off = fmin(off, l / 3); /* no wider than the step is long (near the rim) */
+    if (off > 0)
         o[0] = -dy / l * off, o[1] = dx / l * off; /* right of the direction, y down */
     int n = c->flat ? 1 : 1 + (int)fmin(l / 6, 23);
     double prev[2] = {pa[0] + o[0], pa[1] + o[1]}, cur[2];
@@ -387,8 +388,9 @@ static hol_tile point_tile(const report_picture *p, long k)
     return p->goals[k - p->noptimal];
 }
 
-/* The Minkowski centroid C (or the flat bounding box) of the points. */
-static hol_err fit_centre(const report_picture *p, long n, int flat, report_view *v)
+/* The Minkowski centroid C of the walk's points (the start and the walked
+ * tiles: k < nc), the flat bounding box of all n. */
+static hol_err fit_centre(const report_picture *p, long nc, long n, int flat, report_view *v)
 {
     double s[3] = {0, 0, 0}, lo[2] = {0, 0}, hi[2] = {0, 0}, q[3];
     for (long k = 0; k < n; k++) {
@@ -398,7 +400,7 @@ static hol_err fit_centre(const report_picture *p, long n, int flat, report_view
                                     NULL);
         if (err)
             return err;
-        for (int i = 0; i < 3; i++)
+        for (int i = 0; k < nc && i < 3; i++)
             s[i] += q[i];
         for (int i = 0; i < 2; i++)
             lo[i] = fmin(lo[i], q[i]), hi[i] = fmax(hi[i], q[i]);
@@ -415,7 +417,7 @@ static hol_err fit_centre(const report_picture *p, long n, int flat, report_view
     return HOL_OK;
 }
 
-/* T, the point nearest C (the least Minkowski product -<q, C> = cosh d). */
+/* T, the walk's point nearest C (the least -<q, C> = cosh d; k < n). */
 static hol_err fit_tile(const report_picture *p, long n, report_view *v)
 {
     double best = INFINITY, q[3];
@@ -463,13 +465,16 @@ static hol_err fit_matrix(const report_picture *p, report_view *v)
     return HOL_OK;
 }
 
-/* The largest zoom that keeps every point within 0.85 of the view. */
+/* The largest zoom that keeps the walk and the objectives within 0.85 of
+ * the view. */
 static hol_err fit_zoom(const report_picture *p, long n, report_view *v)
 {
     double rho = 0, q[3], u[3];
     for (long k = 0; k < n; k++) {
         if (!(k & 1023) && k && cli_caught_signal())
             return HOL_EBUDGET;
+        if (k > p->nwalked && k <= (long)p->nwalked + p->noptimal)
+            continue; /* the optimal walk may leave the view */
         hol_err err = hol_hyper_pos(p->start.tile, p->start.orient, point_tile(p, k), q, NULL,
                                     NULL);
         if (err)
@@ -491,10 +496,10 @@ hol_err report_view_fit(const report_picture *p, report_view *v)
     v->tile = p->start.tile;
     int flat = hol_tile_q(p->start.tile) == 4;
     long n = 1L + p->nwalked + p->noptimal + p->ngoals;
-    hol_err err = fit_centre(p, n, flat, v);
+    hol_err err = fit_centre(p, 1L + p->nwalked, n, flat, v);
     if (err || flat)
         return err;
-    if (!(err = fit_tile(p, n, v)) && !(err = fit_matrix(p, v)))
+    if (!(err = fit_tile(p, 1L + p->nwalked, v)) && !(err = fit_matrix(p, v)))
         err = fit_zoom(p, n, v);
     return err;
 }
@@ -576,7 +581,8 @@ static hol_err optimal_path(canvas *c, const report_picture *p)
 }
 
 /* The walked path: each step in its ramp colour, an edge walked again
- * beside its earlier passes (at most 6 widths out). */
+ * beside its earlier passes (at most 3 widths out, and a third of the
+ * step's length on the screen). */
 static hol_err walked_path(canvas *c, const report_picture *p)
 {
     double a[3], b[3], w = walked_width(c->size);
@@ -589,7 +595,7 @@ static hol_err walked_path(canvas *c, const report_picture *p)
         if ((err = centre(c, p->walked[i], b)))
             break;
         int pass = edge_pass(prev, p->walked[i]);
-        geodesic(c, a, b, w, ramp(i, p->nwalked), (pass > 6 ? 6 : pass) * (w + 2));
+        geodesic(c, a, b, w, ramp(i, p->nwalked), (pass > 3 ? 3 : pass) * (w + 2));
         memcpy(a, b, sizeof a);
         prev = p->walked[i];
     }

@@ -4,15 +4,16 @@
  * edges, with a legend in a band at the bottom.
  *
  * Contract
- * - report_view_fit chooses the view: the centre C of the picture's points
- *   (the start, the walked tiles, the optimal walk's, the objectives) is
- *   their mean on the hyperboloid, normalised (the Minkowski centroid); the
- *   tile T of those points nearest C is moved to the disk's centre by an
+ * - report_view_fit chooses the view: the centre C of the walk (the start
+ *   and the walked tiles) is their mean on the hyperboloid, normalised (the
+ *   Minkowski centroid); the walk's tile T nearest C is moved to the disk's
+ *   centre by an
  *   isometry of the tiling (a Mobius map of the disk: T's frame inverted,
  *   then the quarter turn that leaves the room's north within 45 degrees of
  *   up, as seen along the geodesic from T's centre), and the disk is
  *   magnified by 2^(zoom/4), zoom 0..REPORT_ZOOM_MAX, the largest that keeps
- *   every point within 0.85 of the view's radius. Centring on a tile, not on
+ *   the walk and the objectives within 0.85 of the view's radius (the
+ *   optimal walk may leave the view). Centring on a tile, not on
  *   C itself, keeps the tiling's picture the same for every attempt of a
  *   zoom (drawn once: report_draw_background). {4,4}: the points' bounding
  *   box centred, its half-width plus a tile the view's radius (zoom 0).
