@@ -171,6 +171,49 @@ hol_err hol_png_encode(const uint8_t *rgba, int w, int h, int alpha,
     return hol_png_encode_level(rgba, w, h, alpha, 9, out_data, out_size);
 }
 
+/* raw (rawn bytes: h filtered rows) as a PNG of colour type ctype (with
+ * its palette: npal entries, when ctype 3); raw is freed. */
+static hol_err hol__png_write(uint8_t *raw, size_t rawn, int w, int h, int ctype,
+                              const uint8_t *plte, int npal, int level, uint8_t **out_data,
+                              size_t *out_size)
+{
+    uLongf zn = compressBound((uLong)rawn);
+    uint8_t *out = malloc(8 + 25 + 12 + 768 + 12 + (size_t)zn + 12);
+    if (!out) {
+        free(raw);
+        return HOL_ENOMEM;
+    }
+    size_t pos = 8;
+    memcpy(out, "\x89PNG\r\n\x1a\n", 8);
+    uint8_t ihdr[13];
+    hol__be32(ihdr, (uint32_t)w);
+    hol__be32(ihdr + 4, (uint32_t)h);
+    ihdr[8] = 8;
+    ihdr[9] = (uint8_t)ctype;
+    ihdr[10] = ihdr[11] = ihdr[12] = 0;
+    hol__chunk(out, &pos, "IHDR", ihdr, 13);
+    if (ctype == 3)
+        hol__chunk(out, &pos, "PLTE", plte, (uint32_t)(3 * npal));
+    /* compress straight into the IDAT payload position */
+    uint8_t *payload = out + pos + 8;
+    if (!hol__deflate(payload, &zn, raw, rawn, level)) {
+        free(raw);
+        free(out);
+        return HOL_ENOMEM;
+    }
+    free(raw);
+    hol__be32(out + pos, (uint32_t)zn);
+    memcpy(out + pos + 4, "IDAT", 4);
+    uLong crc = crc32(0L, Z_NULL, 0);
+    crc = crc32(crc, out + pos + 4, (uInt)(zn + 4));
+    hol__be32(out + pos + 8 + zn, (uint32_t)crc);
+    pos += 12 + (size_t)zn;
+    hol__chunk(out, &pos, "IEND", NULL, 0);
+    *out_data = out;
+    *out_size = pos;
+    return HOL_OK;
+}
+
 hol_err hol_png_encode_level(const uint8_t *rgba, int w, int h, int alpha, int level,
                              uint8_t **out_data, size_t *out_size)
 {
@@ -196,38 +239,155 @@ hol_err hol_png_encode_level(const uint8_t *rgba, int w, int h, int alpha, int l
     else
         hol__filter_best(rgba, w, h, bpp, raw, line);
     free(line);
-    uLongf zn = compressBound((uLong)rawn);
-    uint8_t *out = malloc(8 + 25 + 12 + 768 + 12 + (size_t)zn + 12);
-    if (!out) {
+    return hol__png_write(raw, rawn, w, h, npal ? 3 : alpha ? 6 : 2, plte, npal, level,
+                          out_data, out_size);
+}
+
+/* A raw deflate stream's bits, least significant first (RFC 1951 3.1.1). */
+typedef struct hol__bits {
+    uint8_t *out;
+    size_t pos;
+    uint64_t acc;
+    int n;
+} hol__bits;
+
+static void hol__put(hol__bits *b, uint32_t v, int n)
+{
+    b->acc |= (uint64_t)v << b->n;
+    b->n += n;
+    while (b->n >= 8) {
+        b->out[b->pos++] = (uint8_t)b->acc;
+        b->acc >>= 8;
+        b->n -= 8;
+    }
+}
+
+/* Symbol s of the fixed literal/length code (RFC 1951 3.2.6): its code,
+ * most significant bit first, so reversed into the stream (a table made
+ * on first use). */
+static void hol__put_sym(hol__bits *b, int s)
+{
+    static uint16_t rev[288];
+    static uint8_t len[288];
+    if (!len[0])
+        for (int t = 0; t < 288; t++) {
+            uint32_t code;
+            int n;
+            if (t < 144)
+                code = 0x30u + (uint32_t)t, n = 8;
+            else if (t < 256)
+                code = 0x190u + (uint32_t)(t - 144), n = 9;
+            else if (t < 280)
+                code = (uint32_t)(t - 256), n = 7;
+            else
+                code = 0xc0u + (uint32_t)(t - 280), n = 8;
+            uint32_t r = 0;
+            for (int i = 0; i < n; i++)
+                r |= ((code >> i) & 1u) << (n - 1 - i);
+            rev[t] = (uint16_t)r;
+            len[t] = (uint8_t)n;
+        }
+    hol__put(b, rev[s], len[s]);
+}
+
+/* A match of length 3..258 at distance 1 (the byte before, repeated). */
+static void hol__put_run(hol__bits *b, int len)
+{
+    static const uint16_t base[29] = {3,  4,  5,  6,  7,  8,  9,  10, 11,  13,  15,  17,  19,  23, 27,
+                                      31, 35, 43, 51, 59, 67, 83, 99, 115, 131, 163, 195, 227, 258};
+    static const uint8_t extra[29] = {0, 0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 2, 2, 2,
+                                      2, 3, 3, 3, 3, 4, 4, 4, 4, 5, 5, 5, 5, 0};
+    int k = 28;
+    while (base[k] > len)
+        k--;
+    hol__put_sym(b, 257 + k);
+    hol__put(b, (uint32_t)(len - base[k]), extra[k]);
+    hol__put(b, 0, 5); /* distance code 0: distance 1 */
+}
+
+/* raw (n bytes) as a zlib stream of one block with the fixed codes, only
+ * literals and runs of the byte before (what "up"-filtered pictures of
+ * flat colours are): out holds n + n / 8 + 64 bytes; its length. */
+static size_t hol__deflate_runs(const uint8_t *raw, size_t n, uint8_t *out)
+{
+    hol__bits b = {out, 2, 0, 0};
+    out[0] = 0x78, out[1] = 0x01; /* deflate, 32 KB window, no dictionary */
+    hol__put(&b, 1, 1);           /* the last block */
+    hol__put(&b, 1, 2);           /* fixed codes */
+    for (size_t i = 0; i < n;) {
+        size_t len = 0, max = n - i < 258 ? n - i : 258;
+        if (i > 0) {
+            uint64_t pat = raw[i - 1] * 0x0101010101010101u, v;
+            while (len + 8 <= max && (memcpy(&v, raw + i + len, 8), v == pat))
+                len += 8;
+#if defined(__GNUC__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+            if (len + 8 <= max) /* v: the first word that differs */
+                len += (size_t)__builtin_ctzll(v ^ pat) >> 3;
+#endif
+            while (len < max && raw[i + len] == raw[i - 1])
+                len++;
+        }
+        if (len >= 3) {
+            hol__put_run(&b, (int)len);
+            i += len;
+        } else {
+            hol__put_sym(&b, raw[i++]);
+        }
+    }
+    hol__put_sym(&b, 256);
+    hol__put(&b, 0, 7); /* flush the last byte */
+    uint32_t a = (uint32_t)adler32(adler32(0L, Z_NULL, 0), raw, (uInt)n);
+    hol__be32(out + b.pos, a);
+    return b.pos + 4;
+}
+
+hol_err hol_png_encode_indexed(const uint8_t *idx, int w, int h, const uint8_t *plte,
+                               int npal, uint8_t **out_data, size_t *out_size)
+{
+    if (!idx || !plte || w <= 0 || h <= 0 || w > HOL_PNG_MAX_DIM || h > HOL_PNG_MAX_DIM ||
+        npal < 1 || npal > 256)
+        return HOL_EARG;
+    size_t stride = (size_t)w + 1, rawn = stride * (size_t)h;
+    uint8_t *raw = malloc(rawn), *z = malloc(rawn + rawn / 8 + 64);
+    uint8_t *out = malloc(8 + 25 + 12 + 768 + 12 + rawn + rawn / 8 + 64 + 12);
+    if (!raw || !z || !out) {
         free(raw);
+        free(z);
+        free(out);
         return HOL_ENOMEM;
     }
+    for (int y = 0; y < h; y++) { /* "up": the row above subtracted */
+        uint8_t *dst = raw + (size_t)y * stride;
+        const uint8_t *src = idx + (size_t)y * (size_t)w, *up = src - w;
+        dst[0] = 2;
+        int x = 0;
+        if (!y) {
+            memcpy(dst + 1, src, (size_t)w);
+            continue;
+        }
+        for (const uint64_t hi = 0x8080808080808080u; x + 8 <= w; x += 8) {
+            uint64_t a, b, d; /* eight bytes' differences at once, no borrow across */
+            memcpy(&a, src + x, 8);
+            memcpy(&b, up + x, 8);
+            d = ((a | hi) - (b & ~hi)) ^ ((a ^ ~b) & hi);
+            memcpy(dst + 1 + x, &d, 8);
+        }
+        for (; x < w; x++)
+            dst[1 + x] = (uint8_t)(src[x] - up[x]);
+    }
+    size_t zn = hol__deflate_runs(raw, rawn, z);
+    free(raw);
     size_t pos = 8;
     memcpy(out, "\x89PNG\r\n\x1a\n", 8);
     uint8_t ihdr[13];
     hol__be32(ihdr, (uint32_t)w);
     hol__be32(ihdr + 4, (uint32_t)h);
-    ihdr[8] = 8;
-    ihdr[9] = npal ? 3 : alpha ? 6 : 2;
-    ihdr[10] = ihdr[11] = ihdr[12] = 0;
+    ihdr[8] = 8, ihdr[9] = 3, ihdr[10] = ihdr[11] = ihdr[12] = 0;
     hol__chunk(out, &pos, "IHDR", ihdr, 13);
-    if (npal)
-        hol__chunk(out, &pos, "PLTE", plte, (uint32_t)(3 * npal));
-    /* compress straight into the IDAT payload position */
-    uint8_t *payload = out + pos + 8;
-    if (!hol__deflate(payload, &zn, raw, rawn, level)) {
-        free(raw);
-        free(out);
-        return HOL_ENOMEM;
-    }
-    free(raw);
-    hol__be32(out + pos, (uint32_t)zn);
-    memcpy(out + pos + 4, "IDAT", 4);
-    uLong crc = crc32(0L, Z_NULL, 0);
-    crc = crc32(crc, out + pos + 4, (uInt)(zn + 4));
-    hol__be32(out + pos + 8 + zn, (uint32_t)crc);
-    pos += 12 + (size_t)zn;
+    hol__chunk(out, &pos, "PLTE", plte, (uint32_t)(3 * npal));
+    hol__chunk(out, &pos, "IDAT", z, (uint32_t)zn);
     hol__chunk(out, &pos, "IEND", NULL, 0);
+    free(z);
     *out_data = out;
     *out_size = pos;
     return HOL_OK;

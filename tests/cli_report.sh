@@ -77,7 +77,7 @@ grep -q 'href="attempts.csv"' "$I" && ok || bad "index.html does not link attemp
 # the pictures decode (render/hol_png.c), with both paths drawn
 for n in 1 2 3; do
     "$P" "$T/out1/attempt-000$n.png" dc5014 78aaf0 >"$T/probe" || bad "picture $n does not decode"
-    [ "$(sed -n 1p "$T/probe")" = "360 360" ] && ok || bad "picture $n size $(sed -n 1p "$T/probe")"
+    [ "$(sed -n 1p "$T/probe")" = "480 480" ] && ok || bad "picture $n size $(sed -n 1p "$T/probe")"
     [ "$(sed -n 2p "$T/probe")" -gt 100 ] && [ "$(sed -n 3p "$T/probe")" -gt 100 ] && ok ||
         bad "picture $n: walked/optimal pixels $(sed -n 2,3p "$T/probe" | tr '\n' ' ')"
 done

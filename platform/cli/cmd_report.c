@@ -35,7 +35,9 @@ static const char *const report_usage =
     "  conditions.csv   per condition (study and condition; outside a study the\n"
     "                   level): attempts, done, mean steps, efficiency, time\n"
     "  attempt-NNNN.png each attempt's walked path beside the optimal walk on the\n"
-    "                   Poincare disk (360 x 360), numbered in the order of the rows\n"
+    "                   Poincare disk, re-centred and zoomed on the walk, steps as\n"
+    "                   a colour ramp with numbers, a legend (480 x 480), numbered\n"
+    "                   in the order of the rows\n"
     "  stats.csv        per condition and measure (completed attempts outside\n"
     "                   practice; pointing errors from points.csv, SSQ, TLX and\n"
     "                   Likert items from answers.csv): n, mean, SD, 95 % CI (t)\n"
@@ -188,21 +190,24 @@ typedef struct report_buf {
     hol_tile *walked;
     hol_tile optimal[HOL_NAV_WALK_MAX];
     hol_tile goals[HOL_APP_MAX_OBJECTIVES];
-    uint8_t rgba[REPORT_PNG_SIZE * REPORT_PNG_SIZE * 4];
-    uint8_t *background[9]; /* by q (5..8), drawn on first use */
+    uint8_t px[REPORT_PNG_SIZE * REPORT_PNG_SIZE]; /* palette indices (report_draw.h) */
+    uint8_t plte[768];
+    int npal;
+    uint8_t *background[9][REPORT_ZOOM_MAX + 1]; /* by q (5..8) and zoom, drawn on first use */
 } report_buf;
 
 /* A picture's bytes into DIR: a temporary file renamed over the name, not
  * synced one by one (10,000 fsyncs took minutes): report_sync syncs them
  * all at once, before the tables that name them are written. */
-static int write_png(const char *path, const uint8_t *rgba)
+static int write_png(const char *path, const report_buf *b)
 {
     uint8_t *data;
     size_t size;
     char tmp[4300];
     const char *slash = strrchr(path, '/');
     snprintf(tmp, sizeof tmp, "%.*s.holonomy-tmp.%s", (int)(slash - path + 1), path, slash + 1);
-    if (hol_png_encode_level(rgba, REPORT_PNG_SIZE, REPORT_PNG_SIZE, 0, 1, &data, &size))
+    if (hol_png_encode_indexed(b->px, REPORT_PNG_SIZE, REPORT_PNG_SIZE, b->plte, b->npal, &data,
+                               &size))
         return -1;
     FILE *f = fopen(tmp, "wb");
     int ok = f && fwrite(data, 1, size, f) == size;
@@ -247,18 +252,21 @@ static int picture(report_run *r, report_buf *b, int i, int write)
     p.walked = b->walked;
     p.optimal = b->optimal;
     p.goals = b->goals;
+    report_view v;
+    if (!report_view_fit(&p, &v))
+        p.view = &v;
     int q = t->a.tiling_q;
-    if (q >= 5 && q <= 8 && !b->background[q] &&
-        (b->background[q] = malloc(sizeof b->rgba)) &&
-        report_draw_background(q, b->background[q], REPORT_PNG_SIZE)) {
-        free(b->background[q]);
-        b->background[q] = NULL;
+    uint8_t **bg = q >= 5 && q <= 8 && p.view ? &b->background[q][v.zoom] : NULL;
+    if (bg && !*bg && (*bg = malloc(sizeof b->px)) &&
+        report_draw_background(q, v.zoom, *bg, REPORT_PNG_SIZE)) {
+        free(*bg);
+        *bg = NULL;
     }
-    p.background = q >= 5 && q <= 8 ? b->background[q] : NULL;
+    p.background = bg ? *bg : NULL;
     snprintf(t->png, sizeof t->png, "attempt-%04d.png", i + 1);
     char path[4200];
     snprintf(path, sizeof path, "%s/%s", r->out, t->png);
-    if (report_draw(&p, b->rgba, REPORT_PNG_SIZE) || write_png(path, b->rgba)) {
+    if (report_draw(&p, b->px, REPORT_PNG_SIZE) || write_png(path, b)) {
         if ((st = report_stopped(r)))
             return st;
         cli_error(r->cmd, 0, "cannot write '%.300s'", path);
@@ -353,6 +361,8 @@ int cli_cmd_report(int argc, char **argv)
     int st = b ? 0 : CLI_EXIT_FAIL;
     if (!st && !(b->walked = malloc(sizeof *b->walked * REPORT_MAX_STEPS)))
         st = CLI_EXIT_FAIL;
+    if (!st)
+        b->npal = report_palette(b->plte);
     if (st)
         cli_error(cmd, 0, "out of memory");
     if (!st)
@@ -369,7 +379,8 @@ int cli_cmd_report(int argc, char **argv)
     if (b) {
         free(b->walked);
         for (int q = 0; q < 9; q++)
-            free(b->background[q]);
+            for (int z = 0; z <= REPORT_ZOOM_MAX; z++)
+                free(b->background[q][z]);
     }
     free(b);
     return st;

@@ -25,7 +25,7 @@
 #define REPORT_MAX_ATTEMPTS 10000
 #define REPORT_MAX_STEPS 1000000 /* rows of one steps file */
 #define REPORT_LINE_MAX 65536
-#define REPORT_PNG_SIZE 360
+#define REPORT_PNG_SIZE 480
 
 typedef struct report_att {
     hol_report_attempt a;

@@ -206,10 +206,12 @@ static void html_head(FILE *f, const report_run *r, const hol_report_agg *g)
 }
 
 static const char pictures_note[] =
-    "<p>Pictures: the Poincar&eacute; disk centred on the "
-    "tile where the level begins, room north up; the <span class=\"walked\">walked "
-    "path</span> over the <span class=\"optimal\">optimal walk</span>, the start green, "
-    "the objectives red (keys gold, the chest brown), the last tile ringed.</p>\n";
+    "<p>Pictures: the Poincar&eacute; disk re-centred and zoomed on the walk (on its tile "
+    "nearest the walk's centre); the walked path's steps from indigo (the first) to "
+    "<span class=\"walked\">orange</span> (the last), numbered, an edge walked again drawn "
+    "beside the earlier passes, over the <span class=\"optimal\">optimal walk</span>; the "
+    "start green, the objectives red (keys gold, the chest brown), the last tile ringed; "
+    "a legend in each picture.</p>\n";
 
 static void html_row(FILE *f, const report_run *r, int i)
 {
@@ -223,7 +225,7 @@ static void html_row(FILE *f, const report_run *r, int i)
     html(f, a->end);
     fprintf(f, "\"><td class=\"n\">%d</td>", i + 1);
     if (t->png[0]) /* the picture first: the table may be wider than the window */
-        fprintf(f, "<td><a href=\"%s\"><img src=\"%s\" width=\"180\" height=\"180\" "
+        fprintf(f, "<td><a href=\"%s\"><img src=\"%s\" width=\"240\" height=\"240\" "
                    "alt=\"attempt %d\"></a></td>", t->png, t->png, i + 1);
     else
         fputs("<td>(no steps file)</td>", f);

@@ -1,136 +1,276 @@
-/* report_draw.c - an attempt's walks on the Poincare disk (report_draw.h). */
+/* report_draw.c - an attempt's walks on the Poincare disk, re-centred and
+ * zoomed on the walk, with step order and a legend (report_draw.h). */
 #include "report_draw.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "../../core/hol_hyper.h"
 #include "cli.h"
 
+#define RGB_WHITE 0xffffffu
+#define RGB_TEXT 0x202020u
+#define RGB_START 0x1e9b3cu
+#define RGB_GOAL 0xd21e1eu
+#define RGB_KEY 0xe6b400u
+#define RGB_CHEST 0x8b5a2bu
+#define RGB_EDGE 0xb4b9aau
+#define RGB_RAMP_MID 0xc23c8cu
+#define RGB_DISK 0xf4f3ecu
+#define RGB_RIM 0x82877au
+
 typedef struct canvas {
     uint8_t *px;
     int size;
-    double cx, cy, r; /* the disk's centre and radius in pixels */
-    int flat;         /* {4,4}: plane coordinates scaled by 1 / extent */
+    double cx, cy, r; /* the view's centre and radius in pixels */
+    double zs;        /* the disk's magnification */
+    int flat;         /* {4,4}: plane coordinates, v->flat */
     int clip;         /* 1: pixels outside the disk are left alone */
-    double extent;
+    const report_view *v;
     hol_room start;
+    uint32_t ink_rgb; /* the last colour asked for and its index */
+    uint8_t ink;
 } canvas;
+
+/* Every colour of a picture, the palette's order: these, then the ramp. */
+static const uint32_t fixed_rgb[] = {RGB_WHITE, RGB_DISK, RGB_RIM, RGB_EDGE, REPORT_RGB_OPTIMAL,
+                                     RGB_TEXT, RGB_START, RGB_GOAL, RGB_KEY, RGB_CHEST};
+#define NFIXED (int)(sizeof fixed_rgb / sizeof fixed_rgb[0])
+
+/* The ramp's colour at level l of REPORT_RAMP_LEVELS (0: the first step):
+ * indigo to magenta to orange, computed once. */
+static uint32_t ramp_level(int l)
+{
+    static uint32_t tab[REPORT_RAMP_LEVELS];
+    static int made;
+    for (int k = 0; !made && k < REPORT_RAMP_LEVELS; k++) {
+        double t = k / (double)(REPORT_RAMP_LEVELS - 1) * 2;
+        uint32_t a = t <= 1 ? REPORT_RGB_RAMP0 : RGB_RAMP_MID;
+        uint32_t b = t <= 1 ? RGB_RAMP_MID : REPORT_RGB_RAMP1;
+        t = t <= 1 ? t : t - 1;
+        tab[k] = 0;
+        for (int s = 16; s >= 0; s -= 8)
+            tab[k] |= (uint32_t)lround(((a >> s) & 255) * (1 - t) + ((b >> s) & 255) * t) << s;
+    }
+    made = 1;
+    return tab[l];
+}
+
+int report_palette(uint8_t plte[3 * 256])
+{
+    for (int i = 0; i < NFIXED + REPORT_RAMP_LEVELS; i++) {
+        uint32_t c = i < NFIXED ? fixed_rgb[i] : ramp_level(i - NFIXED);
+        plte[3 * i] = (uint8_t)(c >> 16);
+        plte[3 * i + 1] = (uint8_t)(c >> 8);
+        plte[3 * i + 2] = (uint8_t)c;
+    }
+    return NFIXED + REPORT_RAMP_LEVELS;
+}
+
+/* rgb's palette index (one of the picture's colours; else the text's). */
+static uint8_t colour_index(uint32_t rgb)
+{
+    for (int i = 0; i < NFIXED; i++)
+        if (fixed_rgb[i] == rgb)
+            return (uint8_t)i;
+    for (int l = 0; l < REPORT_RAMP_LEVELS; l++)
+        if (ramp_level(l) == rgb)
+            return (uint8_t)(NFIXED + l);
+    return 5;
+}
+
+static uint8_t ink(canvas *c, uint32_t rgb)
+{
+    if (rgb != c->ink_rgb) {
+        c->ink_rgb = rgb;
+        c->ink = colour_index(rgb);
+    }
+    return c->ink;
+}
 
 static void put(canvas *c, int x, int y, uint32_t rgb)
 {
     if (x < 0 || y < 0 || x >= c->size || y >= c->size)
         return;
-    double dx = x + 0.5 - c->cx, dy = y + 0.5 - c->cy;
-    if (c->clip && dx * dx + dy * dy > (c->r - 1.5) * (c->r - 1.5))
+    double dx = x + 0.5 - c->cx, dy = y + 0.5 - c->cy, rr = c->r * c->zs - 1.5;
+    if (c->clip && dx * dx + dy * dy > rr * rr)
         return;
-    uint8_t *p = c->px + ((size_t)y * (size_t)c->size + (size_t)x) * 4;
-    p[0] = (uint8_t)(rgb >> 16);
-    p[1] = (uint8_t)(rgb >> 8);
-    p[2] = (uint8_t)rgb;
-    p[3] = 255;
+    c->px[(size_t)y * (size_t)c->size + (size_t)x] = ink(c, rgb);
 }
 
 /* Pixels a..b of row j (put's checks, made once for the row). */
 static void span(canvas *c, int a, int b, int j, uint32_t rgb)
 {
-    if (j < 0 || j >= c->size || c->clip) {
+    if (j < 0 || j >= c->size)
+        return;
+    a = a < 0 ? 0 : a;
+    b = b >= c->size ? c->size - 1 : b;
+    if (c->clip) {
         for (int i = a; i <= b; i++)
             put(c, i, j, rgb);
         return;
     }
-    a = a < 0 ? 0 : a;
-    b = b >= c->size ? c->size - 1 : b;
-    uint8_t px[4] = {(uint8_t)(rgb >> 16), (uint8_t)(rgb >> 8), (uint8_t)rgb, 255};
-    uint8_t *p = c->px + ((size_t)j * (size_t)c->size + (size_t)(a < 0 ? 0 : a)) * 4;
-    for (int i = a; i <= b; i++, p += 4)
-        memcpy(p, px, 4);
+    if (a <= b)
+        memset(c->px + (size_t)j * (size_t)c->size + (size_t)a, ink(c, rgb),
+               (size_t)(b - a + 1));
 }
 
-/* Pixel (i, j)'s centre within rad of (x, y): the one test dot makes. */
-static int in_disc(int i, int j, double x, double y, double rad)
+static void rect(canvas *c, int x0, int y0, int x1, int y1, uint32_t rgb)
 {
-    double dx = i + 0.5 - x, dy = j + 0.5 - y;
-    return dx * dx + dy * dy <= rad * rad;
+    for (int j = y0; j < y1; j++)
+        span(c, x0, x1 - 1, j, rgb);
 }
 
-/* The pixels whose centres are within rad of (x, y), a row at a time: the
- * row's span from one square root, its ends settled by in_disc (so the
- * pixels are exactly those the test picks; on a row they are contiguous). */
+/* The pixels whose centres are within rad of (x, y), a row at a time. */
 static void dot(canvas *c, double x, double y, double rad, uint32_t rgb)
 {
-    int i0 = (int)floor(x - rad), i1 = (int)ceil(x + rad);
-    for (int j = (int)floor(y - rad); j <= (int)ceil(y + rad); j++) {
+    int j0 = (int)floor(y - rad), j1 = (int)ceil(y + rad);
+    j0 = j0 < 0 ? 0 : j0;
+    j1 = j1 >= c->size ? c->size - 1 : j1;
+    for (int j = j0; j <= j1; j++) {
         double dy = j + 0.5 - y, s2 = rad * rad - dy * dy;
         if (s2 < 0)
-            s2 = 0;
+            continue;
         double s = sqrt(s2);
-        int a = (int)floor(x - s - 0.5), b = (int)ceil(x + s - 0.5);
-        a = a < i0 ? i0 : a;
-        b = b > i1 ? i1 : b;
-        while (a > i0 && in_disc(a - 1, j, x, y, rad))
-            a--;
-        while (a <= b && !in_disc(a, j, x, y, rad))
-            a++;
-        while (b < i1 && in_disc(b + 1, j, x, y, rad))
-            b++;
-        while (b >= a && !in_disc(b, j, x, y, rad))
-            b--;
-        span(c, a, b, j, rgb);
+        span(c, (int)ceil(x - s - 0.5), (int)floor(x + s - 0.5), j, rgb);
     }
 }
 
 static void ring(canvas *c, double x, double y, double rad, double w, uint32_t rgb)
 {
-    for (int j = (int)floor(y - rad); j <= (int)ceil(y + rad); j++)
-        for (int i = (int)floor(x - rad); i <= (int)ceil(x + rad); i++) {
+    int j0 = (int)fmax(floor(y - rad), 0), j1 = (int)fmin(ceil(y + rad), c->size - 1);
+    int i0 = (int)fmax(floor(x - rad), 0), i1 = (int)fmin(ceil(x + rad), c->size - 1);
+    for (int j = j0; j <= j1; j++)
+        for (int i = i0; i <= i1; i++) {
             double dx = i + 0.5 - x, dy = j + 0.5 - y, d = sqrt(dx * dx + dy * dy);
             if (d <= rad && d >= rad - w)
                 put(c, i, j, rgb);
         }
 }
 
-/* Discs every half pixel from a to b; from the second when first is 0 (a
- * piece continuing another, whose last disc is the same). */
-static void line(canvas *c, const double a[2], const double b[2], double w, uint32_t rgb,
-                 int first)
+/* x with lo <= k x + m <= hi, intersected into [*a, *b]. */
+static void solve(double k, double m, double lo, double hi, double *a, double *b)
 {
-    double dx = b[0] - a[0], dy = b[1] - a[1];
-    int n = (int)(sqrt(dx * dx + dy * dy) * 2) + 1;
-    for (int k = first ? 0 : 1; k <= n; k++)
-        dot(c, a[0] + dx * k / n, a[1] + dy * k / n, w / 2, rgb);
+    if (k == 0) {
+        if (m < lo || m > hi)
+            *a = INFINITY, *b = -INFINITY;
+        return;
+    }
+    double u = (lo - m) / k, w = (hi - m) / k;
+    *a = fmax(*a, fmin(u, w));
+    *b = fmin(*b, fmax(u, w));
 }
 
-/* A point of the plane (hyperboloid, or (x, y, 1) in the flat grid) in pixels. */
+/* The pixels whose centres are within rad of the segment a-b (a capsule:
+ * convex, so a row's pixels are one span, the union of its three parts'). */
+static void line(canvas *c, const double a[2], const double b[2], double w, uint32_t rgb)
+{
+    double rad = w / 2, dx = b[0] - a[0], dy = b[1] - a[1], l2 = dx * dx + dy * dy;
+    double l = sqrt(l2);
+    int j0 = (int)floor(fmin(a[1], b[1]) - rad), j1 = (int)ceil(fmax(a[1], b[1]) + rad);
+    j0 = j0 < 0 ? 0 : j0;
+    j1 = j1 >= c->size ? c->size - 1 : j1;
+    for (int j = j0; j <= j1; j++) {
+        double y = j + 0.5, lo = INFINITY, hi = -INFINITY;
+        for (int e = 0; e < 2; e++) {
+            const double *p = e ? b : a;
+            double s2 = rad * rad - (y - p[1]) * (y - p[1]);
+            if (s2 >= 0) {
+                double s = sqrt(s2);
+                lo = fmin(lo, p[0] - s);
+                hi = fmax(hi, p[0] + s);
+            }
+        }
+        if (l > 0) {
+            double u = -INFINITY, v = INFINITY; /* 0 <= t <= 1, |distance| <= rad */
+            solve(dx / l2, (-a[0] * dx + (y - a[1]) * dy) / l2, 0, 1, &u, &v);
+            solve(dy / l, (-a[0] * dy - (y - a[1]) * dx) / l, -rad, rad, &u, &v);
+            if (u <= v) {
+                lo = fmin(lo, u);
+                hi = fmax(hi, v);
+            }
+        }
+        if (lo <= hi)
+            span(c, (int)ceil(lo - 0.5), (int)floor(hi - 0.5), j, rgb);
+    }
+}
+
+static double zoom_scale(int zoom)
+{
+    return pow(2, zoom / 4.0);
+}
+
+int report_legend_height(int size)
+{
+    int k = size >= 400 ? 2 : 1;
+    return 2 * (7 * k + 6) + 6;
+}
+
+static void view_geometry(int size, double *cx, double *cy, double *r)
+{
+    double h = size - report_legend_height(size);
+    *cx = size / 2.0;
+    *cy = h / 2.0;
+    *r = h / 2.0 - 4;
+}
+
+static void mat_vec(const double m[9], const double p[3], double out[3])
+{
+    for (int i = 0; i < 3; i++)
+        out[i] = m[3 * i] * p[0] + m[3 * i + 1] * p[1] + m[3 * i + 2] * p[2];
+}
+
+void report_view_px(const report_view *v, int flat, int size, const double p[3],
+                    double out[2])
+{
+    double cx, cy, r, d[2];
+    view_geometry(size, &cx, &cy, &r);
+    if (flat) {
+        d[0] = (p[0] - v->flat[0]) / v->flat[2];
+        d[1] = (p[1] - v->flat[1]) / v->flat[2];
+    } else {
+        double q[3], zs = zoom_scale(v->zoom);
+        mat_vec(v->m, p, q);
+        d[0] = q[0] / (1 + q[2]) * zs;
+        d[1] = q[1] / (1 + q[2]) * zs;
+    }
+    out[0] = cx + d[0] * r;
+    out[1] = cy - d[1] * r;
+}
+
 static void to_px(const canvas *c, const double p[3], double out[2])
 {
-    double d[2];
-    if (c->flat) {
-        d[0] = p[0] / c->extent;
-        d[1] = p[1] / c->extent;
-    } else {
-        hol_hyper_to_disk(p, d);
-    }
-    out[0] = c->cx + d[0] * c->r;
-    out[1] = c->cy - d[1] * c->r;
+    report_view_px(c->v, c->flat, c->size, p, out);
 }
 
-/* The geodesic from a to b in pieces. */
-static void geodesic(canvas *c, const double a[3], const double b[3], double w, uint32_t rgb)
+/* The geodesic from a to b (start frame) in pieces, offset off pixels to
+ * the right of its direction. */
+static void geodesic(canvas *c, const double a[3], const double b[3], double w, uint32_t rgb,
+                     double off)
 {
-    double prev[2], cur[2];
-    to_px(c, a, prev);
-    for (int k = 1; k <= 24; k++) {
-        double t = k / 24.0, p[3];
+    double pa[2], pb[2], o[2] = {0, 0};
+    to_px(c, a, pa);
+    to_px(c, b, pb);
+    double dx = pb[0] - pa[0], dy = pb[1] - pa[1], l = sqrt(dx * dx + dy * dy);
+    off = fmin(off, l / 3); /* no wider than the step is long (near the rim) */
+    if (off > 0)
+        o[0] = -dy / l * off, o[1] = dx / l * off; /* right of the direction, y down */
+    int n = c->flat ? 1 : 1 + (int)fmin(l / 6, 23);
+    double prev[2] = {pa[0] + o[0], pa[1] + o[1]}, cur[2];
+    for (int k = 1; k <= n; k++) {
+        double t = k / (double)n, p[3];
         for (int i = 0; i < 3; i++)
             p[i] = a[i] * (1 - t) + b[i] * t;
         if (!c->flat) {
-            double n = sqrt(p[2] * p[2] - p[0] * p[0] - p[1] * p[1]);
+            double s = sqrt(p[2] * p[2] - p[0] * p[0] - p[1] * p[1]);
             for (int i = 0; i < 3; i++)
-                p[i] /= n;
+                p[i] /= s;
         }
         to_px(c, p, cur);
-        line(c, prev, cur, w, rgb, k == 1);
+        cur[0] += o[0];
+        cur[1] += o[1];
+        line(c, prev, cur, w, rgb);
         prev[0] = cur[0];
         prev[1] = cur[1];
     }
@@ -142,25 +282,20 @@ static hol_err centre(const canvas *c, hol_tile t, double out[3])
 }
 
 /* Tile b's four edges (b seen from O of its tiling: the grid around the
- * start looks the same, up to a quarter turn that maps it onto itself). */
+ * view's centre tile looks the same, up to a quarter turn that maps it
+ * onto itself). The background's view is the identity. */
 static void tile_edges(canvas *c, hol_tile o, hol_tile b, double corner_r)
 {
     double m[9], pts[4][3];
     if (hol_hyper_frame(o, 0, b, m))
         return;
     for (int k = 0; k < 4; k++) {
-        double sx = k == 0 || k == 3 ? 1 : -1, sy = k < 2 ? 1 : -1, l[3];
-        if (c->flat) {
-            l[0] = sx * 0.5, l[1] = sy * 0.5, l[2] = 1;
-        } else {
-            double s = sinh(corner_r) * sqrt(0.5);
-            l[0] = sx * s, l[1] = sy * s, l[2] = cosh(corner_r);
-        }
-        for (int i = 0; i < 3; i++)
-            pts[k][i] = m[3 * i] * l[0] + m[3 * i + 1] * l[1] + m[3 * i + 2] * l[2];
+        double sx = k == 0 || k == 3 ? 1 : -1, sy = k < 2 ? 1 : -1, s = sinh(corner_r) * sqrt(0.5);
+        double l[3] = {sx * s, sy * s, cosh(corner_r)};
+        mat_vec(m, l, pts[k]);
     }
     for (int k = 0; k < 4; k++)
-        geodesic(c, pts[k], pts[(k + 1) % 4], 1, 0xb4b9aa);
+        geodesic(c, pts[k], pts[(k + 1) % 4], 1, RGB_EDGE, 0);
 }
 
 /* Every tile within depth steps of O, by its canonical address. */
@@ -179,31 +314,345 @@ static void grid(canvas *c, hol_tile o, hol_tile t, int depth, double corner_r)
     }
 }
 
-static hol_err path(canvas *c, const hol_tile *tiles, int n, double w, uint32_t rgb)
+/* The flat grid: lines between the tiles (half-integer coordinates of the
+ * start's frame) across the view. */
+static void flat_grid(canvas *c)
+{
+    const double *f = c->v->flat;
+    for (int axis = 0; axis < 2; axis++)
+        for (double k = floor(f[axis] - f[2]) - 0.5; k <= f[axis] + f[2] + 1; k++) {
+            double a[3] = {0, 0, 1}, b[3] = {0, 0, 1}, pa[2], pb[2];
+            a[axis] = b[axis] = k;
+            a[1 - axis] = f[1 - axis] - f[2] - 1;
+            b[1 - axis] = f[1 - axis] + f[2] + 1;
+            to_px(c, a, pa);
+            to_px(c, b, pb);
+            line(c, pa, pb, 1, RGB_EDGE);
+        }
+}
+
+/* The view's disk and the tiling's edges. */
+static void background(canvas *c, int q)
+{
+    memset(c->px, ink(c, RGB_WHITE), (size_t)c->size * (size_t)c->size);
+    dot(c, c->cx, c->cy, c->r * c->zs, RGB_DISK);
+    ring(c, c->cx, c->cy, c->r * c->zs, 1.5, RGB_RIM);
+    c->clip = 1; /* the lines end at the disk */
+    if (c->flat)
+        flat_grid(c);
+    else
+        grid(c, hol_tile_origin_q(q), hol_tile_origin_q(q), q == 5 ? 6 : 5,
+             acosh(1 / tan(M_PI / q)));
+    c->clip = 0;
+}
+
+static void canvas_init(canvas *c, uint8_t *px, int size, const report_view *v, int flat,
+                        hol_room start)
+{
+    memset(c, 0, sizeof *c);
+    c->px = px;
+    c->size = size;
+    c->v = v;
+    c->flat = flat;
+    c->start = start;
+    view_geometry(size, &c->cx, &c->cy, &c->r);
+    c->ink_rgb = RGB_WHITE;
+    c->ink = 0;
+    c->zs = flat ? 1 : zoom_scale(v->zoom);
+}
+
+hol_err report_draw_background(int q, int zoom, uint8_t *px, int size)
+{
+    if (size < 64 || size > 2048 || q < 5 || q > 8 || zoom < 0 || zoom > REPORT_ZOOM_MAX)
+        return HOL_EARG;
+    report_view v;
+    memset(&v, 0, sizeof v);
+    v.m[0] = v.m[4] = v.m[8] = 1;
+    v.zoom = zoom;
+    canvas c;
+    canvas_init(&c, px, size, &v, 0, (hol_room){0});
+    background(&c, q);
+    return HOL_OK;
+}
+
+/* Points of the picture: k = 0 the start, then the walked tiles, the
+ * optimal walk's, the objectives. */
+static hol_tile point_tile(const report_picture *p, long k)
+{
+    if (k == 0)
+        return p->start.tile;
+    if (--k < p->nwalked)
+        return p->walked[k];
+    if ((k -= p->nwalked) < p->noptimal)
+        return p->optimal[k];
+    return p->goals[k - p->noptimal];
+}
+
+/* The Minkowski centroid C of the walk's points (the start and the walked
+ * tiles: k < nc), the flat bounding box of all n. */
+static hol_err fit_centre(const report_picture *p, long nc, long n, int flat, report_view *v)
+{
+    double s[3] = {0, 0, 0}, lo[2] = {0, 0}, hi[2] = {0, 0}, q[3];
+    for (long k = 0; k < n; k++) {
+        if (!(k & 1023) && k && cli_caught_signal())
+            return HOL_EBUDGET;
+        hol_err err = hol_hyper_pos(p->start.tile, p->start.orient, point_tile(p, k), q, NULL,
+                                    NULL);
+        if (err)
+            return err;
+        for (int i = 0; k < nc && i < 3; i++)
+            s[i] += q[i];
+        for (int i = 0; i < 2; i++)
+            lo[i] = fmin(lo[i], q[i]), hi[i] = fmax(hi[i], q[i]);
+    }
+    if (flat) {
+        v->flat[0] = (lo[0] + hi[0]) / 2;
+        v->flat[1] = (lo[1] + hi[1]) / 2;
+        v->flat[2] = fmax(fmax(hi[0] - lo[0], hi[1] - lo[1]) / 2 + 1, 1.5);
+        return HOL_OK;
+    }
+    double norm = sqrt(s[2] * s[2] - s[0] * s[0] - s[1] * s[1]);
+    for (int i = 0; i < 3; i++)
+        v->centre[i] = s[i] / norm;
+    return HOL_OK;
+}
+
+/* T, the walk's point nearest C (the least -<q, C> = cosh d; k < n). */
+static hol_err fit_tile(const report_picture *p, long n, report_view *v)
+{
+    double best = INFINITY, q[3];
+    const double *c = v->centre;
+    for (long k = 0; k < n; k++) {
+        if (!(k & 1023) && k && cli_caught_signal())
+            return HOL_EBUDGET;
+        hol_tile t = point_tile(p, k);
+        hol_err err = hol_hyper_pos(p->start.tile, p->start.orient, t, q, NULL, NULL);
+        if (err)
+            return err;
+        double ch = q[2] * c[2] - q[0] * c[0] - q[1] * c[1];
+        if (ch < best - 1e-12)
+            best = ch, v->tile = t;
+    }
+    return HOL_OK;
+}
+
+/* v->m: T's frame inverted (J F^T J, J = diag(1, 1, -1)), then the quarter
+ * turn nearest to the pure translation taking T's centre to the origin. */
+static hol_err fit_matrix(const report_picture *p, report_view *v)
+{
+    double f[9], inv[9], b[9], r[9];
+    hol_err err = hol_hyper_frame(p->start.tile, p->start.orient, v->tile, f);
+    if (err)
+        return err;
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            inv[3 * i + j] = f[3 * j + i] * (i == 2 ? -1 : 1) * (j == 2 ? -1 : 1);
+    double cx = f[2], cy = f[5], cz = f[8], w = 1 + cz; /* the boost from O to T's centre */
+    double boost[9] = {1 + cx * cx / w, cx * cy / w, cx, cx * cy / w, 1 + cy * cy / w, cy,
+                       cx, cy, cz};
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            b[3 * i + j] = inv[3 * i] * boost[j] + inv[3 * i + 1] * boost[3 + j] +
+                           inv[3 * i + 2] * boost[6 + j];
+    int k = ((int)lround(atan2(b[3], b[0]) / (M_PI / 2)) % 4 + 4) % 4; /* b: a rotation */
+    static const double cs[4][2] = {{1, 0}, {0, -1}, {-1, 0}, {0, 1}}; /* by -k quarter turns */
+    double rot[9] = {cs[k][0], -cs[k][1], 0, cs[k][1], cs[k][0], 0, 0, 0, 1};
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            r[3 * i + j] = rot[3 * i] * inv[j] + rot[3 * i + 1] * inv[3 + j] +
+                           rot[3 * i + 2] * inv[6 + j];
+    memcpy(v->m, r, sizeof r);
+    return HOL_OK;
+}
+
+/* The largest zoom that keeps the walk and the objectives within 0.85 of
+ * the view. */
+static hol_err fit_zoom(const report_picture *p, long n, report_view *v)
+{
+    double rho = 0, q[3], u[3];
+    for (long k = 0; k < n; k++) {
+        if (!(k & 1023) && k && cli_caught_signal())
+            return HOL_EBUDGET;
+        if (k > p->nwalked && k <= (long)p->nwalked + p->noptimal)
+            continue; /* the optimal walk may leave the view */
+        hol_err err = hol_hyper_pos(p->start.tile, p->start.orient, point_tile(p, k), q, NULL,
+                                    NULL);
+        if (err)
+            return err;
+        mat_vec(v->m, q, u);
+        rho = fmax(rho, sqrt(u[0] * u[0] + u[1] * u[1]) / (1 + u[2]));
+    }
+    int z = rho > 0 ? (int)floor(4 * log2(0.85 / rho)) : REPORT_ZOOM_MAX;
+    v->zoom = z < 0 ? 0 : z > REPORT_ZOOM_MAX ? REPORT_ZOOM_MAX : z;
+    return HOL_OK;
+}
+
+hol_err report_view_fit(const report_picture *p, report_view *v)
+{
+    memset(v, 0, sizeof *v);
+    v->m[0] = v->m[4] = v->m[8] = 1;
+    if (!hol_room_ok(&p->start))
+        return HOL_EARG;
+    v->tile = p->start.tile;
+    int flat = hol_tile_q(p->start.tile) == 4;
+    long n = 1L + p->nwalked + p->noptimal + p->ngoals;
+    hol_err err = fit_centre(p, 1L + p->nwalked, n, flat, v);
+    if (err || flat)
+        return err;
+    if (!(err = fit_tile(p, 1L + p->nwalked, v)) && !(err = fit_matrix(p, v)))
+        err = fit_zoom(p, n, v);
+    return err;
+}
+
+
+static uint32_t ramp(long i, long n)
+{
+    return ramp_level(n > 1 ? (int)(i * (REPORT_RAMP_LEVELS - 1) / (n - 1)) : REPORT_RAMP_LEVELS - 1);
+}
+
+/* Edges walked (unordered pairs of tiles) and how often, for the current
+ * picture (a stamp empties the table). */
+typedef struct edge_slot {
+    uint64_t k[4];
+    uint32_t stamp, count;
+} edge_slot;
+static edge_slot edge_tab[2 * REPORT_EDGE_SLOTS];
+static uint32_t edge_stamp;
+static int edge_used;
+
+static int tile_less(hol_tile a, hol_tile b)
+{
+    return a.bits[1] != b.bits[1] ? a.bits[1] < b.bits[1] : a.bits[0] < b.bits[0];
+}
+
+/* Earlier passes of the edge a-b (0 when untracked), counting this one. */
+static int edge_pass(hol_tile a, hol_tile b)
+{
+    if (tile_less(b, a)) {
+        hol_tile t = a;
+        a = b;
+        b = t;
+    }
+    uint64_t k[4] = {a.bits[0], a.bits[1], b.bits[0], b.bits[1]}, h = 0x9e3779b97f4a7c15u;
+    for (int i = 0; i < 4; i++)
+        h = (h ^ k[i]) * 0x100000001b3u, h ^= h >> 29;
+    for (uint32_t i = (uint32_t)h % (2 * REPORT_EDGE_SLOTS);; i = (i + 1) % (2 * REPORT_EDGE_SLOTS)) {
+        edge_slot *e = &edge_tab[i];
+        if (e->stamp == edge_stamp && !memcmp(e->k, k, sizeof k))
+            return (int)e->count++;
+        if (e->stamp != edge_stamp) {
+            if (edge_used >= REPORT_EDGE_SLOTS)
+                return 0;
+            edge_used++;
+            memcpy(e->k, k, sizeof k);
+            e->stamp = edge_stamp;
+            e->count = 1;
+            return 0;
+        }
+    }
+}
+
+static void edges_reset(void)
+{
+    if (++edge_stamp == 0) { /* wrapped: every slot is old */
+        memset(edge_tab, 0, sizeof edge_tab);
+        edge_stamp = 1;
+    }
+    edge_used = 0;
+}
+
+static double walked_width(int size)
+{
+    return size / 120.0 + 2;
+}
+
+/* The optimal walk: one colour, wide, under the walked path. */
+static hol_err optimal_path(canvas *c, const report_picture *p)
 {
     double a[3], b[3];
     hol_err err = centre(c, c->start.tile, a);
-    for (int i = 0; !err && i < n; i++) {
-        if (!(i & 1023) && cli_caught_signal())
-            return HOL_EBUDGET; /* a walk of a million steps: stopped (report_draw.h) */
-        if ((err = centre(c, tiles[i], b)))
+    for (int i = 0; !err && i < p->noptimal; i++) {
+        if ((err = centre(c, p->optimal[i], b)))
             break;
-        geodesic(c, a, b, w, rgb);
+        geodesic(c, a, b, c->size / 50.0 + 3, REPORT_RGB_OPTIMAL, 0);
         memcpy(a, b, sizeof a);
     }
     return err;
 }
 
-static double flat_extent(const report_picture *p)
+/* The walked path: each step in its ramp colour, an edge walked again
+ * beside its earlier passes (at most 3 widths out, and a third of the
+ * step's length on the screen). */
+static hol_err walked_path(canvas *c, const report_picture *p)
 {
-    double e = 2.5, q[3];
-    const hol_tile *lists[3] = {p->walked, p->optimal, p->goals};
-    int ns[3] = {p->nwalked, p->noptimal, p->ngoals};
-    for (int l = 0; l < 3; l++)
-        for (int i = 0; i < ns[l]; i++)
-            if (!hol_hyper_pos(p->start.tile, p->start.orient, lists[l][i], q, NULL, NULL))
-                e = fmax(e, fmax(fabs(q[0]), fabs(q[1])) + 1);
-    return e;
+    double a[3], b[3], w = walked_width(c->size);
+    hol_tile prev = c->start.tile;
+    hol_err err = centre(c, prev, a);
+    edges_reset();
+    for (long i = 0; !err && i < p->nwalked; i++) {
+        if (!(i & 1023) && cli_caught_signal())
+            return HOL_EBUDGET; /* a walk of a million steps: stopped (report_draw.h) */
+        if ((err = centre(c, p->walked[i], b)))
+            break;
+        int pass = edge_pass(prev, p->walked[i]);
+        geodesic(c, a, b, w, ramp(i, p->nwalked), (pass > 3 ? 3 : pass) * (w + 2));
+        memcpy(a, b, sizeof a);
+        prev = p->walked[i];
+    }
+    return err;
+}
+
+/* Text at (x, y) (the first glyph's top-left), font pixels k x k. */
+static int text(canvas *c, const char *s, int x, int y, int k, uint32_t rgb)
+{
+    int x0 = x;
+    for (; *s; s++, x += 6 * k) {
+        const uint8_t *g = report_glyph((unsigned char)*s);
+        for (int r = 0; r < 7; r++)
+            for (int col = 0; col < 5; col++)
+                if (g[r] & (0x10 >> col))
+                    rect(c, x + col * k, y + r * k, x + (col + 1) * k, y + (r + 1) * k, rgb);
+    }
+    return x - x0;
+}
+
+/* Text with a white outline (readable over the lines). */
+static void text_halo(canvas *c, const char *s, int x, int y, int k, uint32_t rgb)
+{
+    for (int dy = -1; dy <= 1; dy++)
+        for (int dx = -1; dx <= 1; dx++)
+            if (dx || dy)
+                text(c, s, x + dx * k, y + dy * k, k, RGB_WHITE);
+    text(c, s, x, y, k, rgb);
+}
+
+/* Every few steps' number beside the tile it reached: 1, 2, 5, 10, 20, 50
+ * ... steps apart, at most 12 to 24 numbers; the last step's too. */
+static void step_numbers(canvas *c, const report_picture *p)
+{
+    static const int digit[3] = {1, 2, 5};
+    long every = 1;
+    for (long base = 1, m = 0; p->nwalked / every > 12; m++, base *= m % 3 ? 1 : 10)
+        every = digit[m % 3] * base;
+    int k = c->size >= 400 ? 2 : 1;
+    for (long i = 0; i < p->nwalked; i++) {
+        if ((i + 1) % every && i + 1 != p->nwalked)
+            continue;
+        if (i + 1 != p->nwalked && p->nwalked - (i + 1) < every / 2)
+            continue; /* too near the last */
+        double q[3], x[2];
+        char num[24];
+        if (centre(c, p->walked[i], q))
+            continue;
+        to_px(c, q, x);
+        snprintf(num, sizeof num, "%ld", i + 1);
+        text_halo(c, num, (int)lround(x[0]) + 4 * k, (int)lround(x[1]) - 9 * k, k, RGB_TEXT);
+    }
+}
+
+static uint32_t goal_rgb(const report_picture *p, int i)
+{
+    return p->chest_last && i == p->ngoals - 1 ? RGB_CHEST : p->chest_last ? RGB_KEY : RGB_GOAL;
 }
 
 static void marks(canvas *c, const report_picture *p)
@@ -212,63 +661,86 @@ static void marks(canvas *c, const report_picture *p)
     for (int i = 0; i < p->ngoals; i++)
         if (!centre(c, p->goals[i], q)) {
             to_px(c, q, x);
-            uint32_t rgb = p->chest_last && i == p->ngoals - 1 ? 0x8b5a2b
-                           : p->chest_last                  ? 0xe6b400 : 0xd21e1e;
-            dot(c, x[0], x[1], c->size / 60.0 + 2, rgb);
+            dot(c, x[0], x[1], c->size / 60.0 + 2, goal_rgb(p, i));
         }
     if (!centre(c, p->start.tile, q)) {
         to_px(c, q, x);
-        dot(c, x[0], x[1], c->size / 80.0 + 2, 0x1e9b3c);
+        dot(c, x[0], x[1], c->size / 80.0 + 2, RGB_START);
     }
     if (p->nwalked > 0 && !centre(c, p->walked[p->nwalked - 1], q)) {
         to_px(c, q, x);
-        ring(c, x[0], x[1], c->size / 50.0 + 3, 2, 0xdc5014);
+        ring(c, x[0], x[1], c->size / 50.0 + 3, 2, REPORT_RGB_RAMP1);
     }
 }
 
-/* The disk and the tiling's edges (they do not depend on the start: the
- * grid around it looks the same, see tile_edges). */
-static void background(canvas *c, int q)
+/* A legend entry: its mark, then its name; the x after it. */
+static int legend_item(canvas *c, int x, int y, int k, int kind, uint32_t rgb, const char *name)
 {
-    for (int i = 0; i < c->size * c->size; i++)
-        memcpy(c->px + 4 * (size_t)i, "\xff\xff\xff\xff", 4);
-    dot(c, c->cx, c->cy, c->r, 0xf4f3ec);
-    ring(c, c->cx, c->cy, c->r, 1.5, 0x82877a);
-    double corner_r = q == 4 ? 0 : acosh(1 / tan(M_PI / q));
-    int depth = q == 5 ? 6 : 5;
-    if (c->flat)
-        depth = (int)fmin(2 * c->extent + 2, 40);
-    c->clip = 1; /* the flat grid's lines end at the disk */
-    grid(c, hol_tile_origin_q(q), hol_tile_origin_q(q), depth, corner_r);
-    c->clip = 0;
+    double h = 7 * k, mx = x + h / 2, my = y + h / 2;
+    if (kind == 0)
+        dot(c, mx, my, h / 2, rgb);
+    else if (kind == 1)
+        line(c, (double[2]){x, my}, (double[2]){x + 3 * h, my}, h * 0.8, rgb), mx += 2.5 * h;
+    else
+        ring(c, mx, my, h / 2 + 1, 2, rgb);
+    return x + (int)(mx - x + h) + text(c, name, (int)(mx + h), y, k, RGB_TEXT) + 5 * k;
 }
 
-hol_err report_draw_background(int q, uint8_t *rgba, int size)
+/* The legend band at the bottom: the ramp of the steps, then the marks. */
+static void legend(canvas *c, const report_picture *p)
 {
-    if (size < 64 || size > 2048 || q < 5 || q > 8)
-        return HOL_EARG;
-    canvas c = {.px = rgba, .size = size, .cx = size / 2.0, .cy = size / 2.0,
-                .r = size / 2.0 - 4, .extent = 1};
-    background(&c, q);
-    return HOL_OK;
+    int band = report_legend_height(c->size), k = c->size >= 400 ? 2 : 1, y0 = c->size - band;
+    rect(c, 0, y0, c->size, c->size, RGB_WHITE);
+    rect(c, 0, y0, c->size, y0 + 1, RGB_RIM);
+    int x = 4 * k, y = y0 + 3 + 3 * k;
+    char num[32];
+    if (p->nwalked > 0) {
+        x += text(c, "STEP 1", x, y, k, RGB_TEXT) + 2 * k;
+        int bw = c->size * 2 / 5;
+        for (int l = 0; l < REPORT_RAMP_LEVELS; l++)
+            rect(c, x + bw * l / REPORT_RAMP_LEVELS, y, x + bw * (l + 1) / REPORT_RAMP_LEVELS,
+                 y + 7 * k, ramp_level(l));
+        snprintf(num, sizeof num, "%d", p->nwalked);
+        text(c, num, x + bw + 3 * k, y, k, RGB_TEXT);
+    } else {
+        text(c, "NO STEPS WALKED", x, y, k, RGB_TEXT);
+    }
+    x = 4 * k;
+    y += 7 * k + 6;
+    x = legend_item(c, x, y, k, 0, RGB_START, "START");
+    if (p->chest_last) {
+        x = legend_item(c, x, y, k, 0, RGB_KEY, "KEY");
+        x = legend_item(c, x, y, k, 0, RGB_CHEST, "CHEST");
+    } else if (p->ngoals > 0) {
+        x = legend_item(c, x, y, k, 0, RGB_GOAL, "GOAL");
+    }
+    if (p->noptimal > 0)
+        x = legend_item(c, x, y, k, 1, REPORT_RGB_OPTIMAL, "OPTIMAL");
+    if (p->nwalked > 0)
+        legend_item(c, x, y, k, 2, REPORT_RGB_RAMP1, "END");
 }
 
-hol_err report_draw(const report_picture *p, uint8_t *rgba, int size)
+hol_err report_draw(const report_picture *p, uint8_t *px, int size)
 {
     if (size < 64 || size > 2048 || !hol_room_ok(&p->start))
         return HOL_EARG;
+    report_view fit;
+    const report_view *v = p->view;
+    hol_err err = HOL_OK;
+    if (!v && (err = report_view_fit(p, &fit)))
+        return err;
+    v = v ? v : &fit;
     int q = hol_tile_q(p->start.tile);
-    canvas c = {rgba, size, size / 2.0, size / 2.0, size / 2.0 - 4, q == 4, 0, 1, p->start};
-    if (c.flat)
-        c.extent = flat_extent(p);
+    canvas c;
+    canvas_init(&c, px, size, v, q == 4, p->start);
     if (p->background && !c.flat)
-        memcpy(rgba, p->background, (size_t)size * (size_t)size * 4);
+        memcpy(px, p->background, (size_t)size * (size_t)size);
     else
         background(&c, q);
-    hol_err err = path(&c, p->optimal, p->noptimal, size / 50.0 + 3, REPORT_RGB_OPTIMAL);
-    if (!err)
-        err = path(&c, p->walked, p->nwalked, size / 120.0 + 1.5, REPORT_RGB_WALKED);
-    if (!err)
+    if (!(err = optimal_path(&c, p)) && !(err = walked_path(&c, p))) {
         marks(&c, p);
+        step_numbers(&c, p);
+        legend(&c, p);
+    }
     return err;
 }

@@ -1,25 +1,47 @@
 /* report_draw.h - an attempt's picture for `holonomy report`: the walked
  * path and the optimal one on the Poincare disk (the flat grid {4,4}: a
- * plain top view), centred on the tile where the level begins, room north
- * up, over the tiling's edges.
+ * plain top view), re-centred and zoomed on the walk, over the tiling's
+ * edges, with a legend in a band at the bottom.
  *
  * Contract
- * - report_draw fills rgba (size * size * 4 bytes, rows top to bottom):
- *   the disk, the tiles' edges within a few steps of the start (grey), the
- *   optimal walk (REPORT_RGB_OPTIMAL, 7 px wide) under the walked one
- *   (REPORT_RGB_WALKED, 3 px), both through tile centres along geodesics;
- *   the start (green), the objectives (red; keys gold, the chest brown) and
- *   the walk's last tile (an orange ring). Colours are exact (no blending)
- *   so tests can count them.
+ * - report_view_fit chooses the view: the centre C of the walk (the start
+ *   and the walked tiles) is their mean on the hyperboloid, normalised (the
+ *   Minkowski centroid); the walk's tile T nearest C is moved to the disk's
+ *   centre by an
+ *   isometry of the tiling (a Mobius map of the disk: T's frame inverted,
+ *   then the quarter turn that leaves the room's north within 45 degrees of
+ *   up, as seen along the geodesic from T's centre), and the disk is
+ *   magnified by 2^(zoom/4), zoom 0..REPORT_ZOOM_MAX, the largest that keeps
+ *   the walk and the objectives within 0.85 of the view's radius (the
+ *   optimal walk may leave the view). Centring on a tile, not on
+ *   C itself, keeps the tiling's picture the same for every attempt of a
+ *   zoom (drawn once: report_draw_background). {4,4}: the points' bounding
+ *   box centred, its half-width plus a tile the view's radius (zoom 0).
+ * - report_draw fills px (size * size bytes, rows top to bottom, one
+ *   index of report_palette's colours a pixel: a PNG's colour type 3): the
+ *   view (the disk, the tiles' edges grey), the optimal walk
+ *   (REPORT_RGB_OPTIMAL, a wide line) under the walked one, through tile
+ *   centres along geodesics. The walked path's steps go from
+ *   REPORT_RGB_RAMP0 (the first) to REPORT_RGB_RAMP1 (the last) through
+ *   REPORT_RAMP_LEVELS colours; an edge walked again is drawn beside the
+ *   earlier passes (offset to the right of its direction, a line's width
+ *   and a gap per earlier pass; the first REPORT_EDGE_SLOTS distinct edges
+ *   of a walk are tracked); the number of every few steps (1, 2, 5, 10, 20,
+ *   ... so that at most 12 to 24 are shown) beside the tile it reached; the
+ *   start (green), the objectives (red; keys gold, the chest brown), the
+ *   walk's last tile (a ring of the ramp's end). The bottom
+ *   report_legend_height(size) rows are the legend: the ramp with its first
+ *   and last step numbers, and the marks and lines named. Colours are exact
+ *   (no blending) so tests can count them.
  * - Tiles are of one tiling (the start's); others are HOL_EARG. size is
  *   64..2048. No allocation. After a signal (cli_caught_signal) a path
  *   stops within 1,024 tiles and report_draw gives HOL_EBUDGET (a walk of a
  *   million steps takes seconds to draw).
- * - report_draw_background draws the disk and the edges alone for a
- *   hyperbolic {4,q} (q 5..8; they are the same for every start): given as
- *   background (same size and q), report_draw copies it instead of drawing
- *   them again (many pictures: `holonomy report`). The flat {4,4} grid
- *   depends on the walks' extent and is always drawn.
+ * - report_draw_background draws the view's disk and edges alone for a
+ *   hyperbolic {4,q} (q 5..8) at a zoom: given as background (same size, q
+ *   and zoom), report_draw copies it instead of drawing them again (many
+ *   pictures: `holonomy report`). The flat {4,4} grid depends on the walks'
+ *   extent and is always drawn.
  */
 #ifndef REPORT_DRAW_H
 #define REPORT_DRAW_H
@@ -29,8 +51,13 @@
 #include "../../core/hol_err.h"
 #include "../../core/hol_room.h"
 
-#define REPORT_RGB_WALKED 0xdc5014u  /* orange */
+#define REPORT_RGB_RAMP0 0x3c28b4u   /* the first step: indigo */
+#define REPORT_RGB_RAMP1 0xdc5014u   /* the last step: orange */
+#define REPORT_RGB_WALKED REPORT_RGB_RAMP1
 #define REPORT_RGB_OPTIMAL 0x78aaf0u /* light blue */
+#define REPORT_RAMP_LEVELS 24
+#define REPORT_ZOOM_MAX 12
+#define REPORT_EDGE_SLOTS 4096
 
 typedef struct report_picture {
     hol_room start;           /* the level's beginning */
@@ -41,10 +68,28 @@ typedef struct report_picture {
     const hol_tile *goals;    /* objectives */
     int ngoals;
     int chest_last;           /* 1: the last goal is the chest (keys level) */
-    const uint8_t *background; /* NULL, or report_draw_background's of this q */
+    const uint8_t *background; /* NULL, or report_draw_background's of this q and zoom */
+    const struct report_view *view; /* NULL, or report_view_fit's of this picture */
 } report_picture;
 
-hol_err report_draw(const report_picture *p, uint8_t *rgba, int size);
-hol_err report_draw_background(int q, uint8_t *rgba, int size);
+typedef struct report_view {
+    double m[9];     /* a start-frame hyperboloid point to the view's (row-major) */
+    double centre[3]; /* C, the points' centroid (start frame) */
+    hol_tile tile;   /* T, moved to the disk's centre */
+    int zoom;        /* the disk magnified 2^(zoom/4) */
+    double flat[3];  /* {4,4}: the centre x, y and the half-width shown */
+} report_view;
+
+hol_err report_view_fit(const report_picture *p, report_view *out);
+/* A start-frame point to pixels of a size x size picture of view v. */
+void report_view_px(const report_view *v, int flat, int size, const double p[3],
+                    double out[2]);
+int report_legend_height(int size);
+hol_err report_draw(const report_picture *p, uint8_t *px, int size);
+hol_err report_draw_background(int q, int zoom, uint8_t *px, int size);
+/* The pictures' colours (3 bytes each, plte: 768 bytes): how many. */
+int report_palette(uint8_t plte[3 * 256]);
+/* The 5x7 glyph of c (report_font.c): 7 rows, bit 4 the leftmost column. */
+const uint8_t *report_glyph(int c);
 
 #endif
