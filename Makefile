@@ -182,7 +182,7 @@ $(BUILD)/tests/test_hid_dev: tests/test_hid_dev.c tests/hid_samples.h tests/fake
 	$(CC) $(CFLAGS) -Itests/fake_hidapi -o $@ $< $(HID_SRC) $(HID_DEV_SRC) $(CORE_LIB) $(LDFLAGS) -lcmocka $(LDLIBS)
 
 # The report's pictures (platform/cli/report_draw.c) and their PNG writer.
-REPORT_DRAW_SRC := platform/cli/report_draw.c platform/cli/report_font.c render/hol_png.c
+REPORT_DRAW_SRC := platform/cli/report_draw.c render/hol_font.c render/hol_png.c
 $(BUILD)/tests/test_report_draw: tests/test_report_draw.c $(REPORT_DRAW_SRC) platform/cli/report_draw.h $(CORE_LIB)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) -o $@ $< $(REPORT_DRAW_SRC) $(CORE_LIB) $(LDFLAGS) -lcmocka -lz $(LDLIBS)

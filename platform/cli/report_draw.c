@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "../../core/hol_hyper.h"
+#include "../../render/hol_font.h"
 #include "cli.h"
 
 #define RGB_WHITE 0xffffffu
@@ -607,7 +608,7 @@ static int text(canvas *c, const char *s, int x, int y, int k, uint32_t rgb)
 {
     int x0 = x;
     for (; *s; s++, x += 6 * k) {
-        const uint8_t *g = report_glyph((unsigned char)*s);
+        const uint8_t *g = hol_font_glyph((unsigned char)*s);
         for (int r = 0; r < 7; r++)
             for (int col = 0; col < 5; col++)
                 if (g[r] & (0x10 >> col))

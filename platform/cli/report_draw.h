@@ -89,7 +89,5 @@ hol_err report_draw(const report_picture *p, uint8_t *px, int size);
 hol_err report_draw_background(int q, int zoom, uint8_t *px, int size);
 /* The pictures' colours (3 bytes each, plte: 768 bytes): how many. */
 int report_palette(uint8_t plte[3 * 256]);
-/* The 5x7 glyph of c (report_font.c): 7 rows, bit 4 the leftmost column. */
-const uint8_t *report_glyph(int c);
 
 #endif

@@ -1,12 +1,11 @@
-/* report_font.c - the 5x7 glyphs of the HUD's font (render/hol_hud.c's
- * table, copied: render/ keeps its own static) for the report's pictures'
- * numbers and legend (report_draw.h). */
-#include "report_draw.h"
+/* hol_font.c - the built-in 5x7 bitmap font (hol_font.h). */
+#include "hol_font.h"
 
 #include <string.h>
 
-static const char report__chars[] = " 0123456789ABCDEFGHIJKLMNOPQRSTUVWXYZ:.-/flr,!()";
-static const uint8_t report__font[][7] = {
+/* 5x7 glyphs, 7 rows, bit 4 is the leftmost column. */
+static const char hol__font_chars[] = " 0123456789ABCDEFGHIJKLMNOPQRSTUVWXYZ:.-/flr,!()";
+static const uint8_t hol__font_rows[][7] = {
     {0, 0, 0, 0, 0, 0, 0},
     {0x0E, 0x11, 0x13, 0x15, 0x19, 0x11, 0x0E}, {0x04, 0x0C, 0x04, 0x04, 0x04, 0x04, 0x0E},
     {0x0E, 0x11, 0x01, 0x02, 0x04, 0x08, 0x1F}, {0x1F, 0x02, 0x04, 0x02, 0x01, 0x11, 0x0E},
@@ -33,12 +32,12 @@ static const uint8_t report__font[][7] = {
     {0, 0, 0, 0, 0x0C, 0x04, 0x08}, {0x04, 0x04, 0x04, 0x04, 0x04, 0, 0x04},
     {0x02, 0x04, 0x08, 0x08, 0x08, 0x04, 0x02}, {0x08, 0x04, 0x02, 0x02, 0x02, 0x04, 0x08},
 };
-static const uint8_t report__box[7] = {0x1F, 0x11, 0x11, 0x11, 0x11, 0x11, 0x1F};
+static const uint8_t hol__font_box[7] = {0x1F, 0x11, 0x11, 0x11, 0x11, 0x11, 0x1F};
 
-const uint8_t *report_glyph(int c)
+const uint8_t *hol_font_glyph(int c)
 {
     if (c >= 'a' && c <= 'z' && c != 'f' && c != 'l' && c != 'r')
         c -= 32;
-    const char *at = c > 0 && c < 128 ? strchr(report__chars, c) : NULL;
-    return at ? report__font[at - report__chars] : report__box;
+    const char *at = c > 0 && c < 128 ? strchr(hol__font_chars, c) : NULL;
+    return at ? hol__font_rows[at - hol__font_chars] : hol__font_box;
 }
