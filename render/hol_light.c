@@ -10,26 +10,12 @@
 
 void hol_light_point(const hol_light_frame *lf, double x, double z, double out_p[3])
 {
-    double kx = x * lf->klein, ky = -z * lf->klein;
-    if (lf->flat) {
-        out_p[0] = kx;
-        out_p[1] = ky;
-        out_p[2] = 1;
-        return;
-    }
-    double r2 = kx * kx + ky * ky;
-    double s = 1 / sqrt(r2 < 0.999999 ? 1 - r2 : 1e-6);
-    out_p[0] = kx * s;
-    out_p[1] = ky * s;
-    out_p[2] = s;
+    hol_hyper_from_klein(x * lf->klein, -z * lf->klein, lf->flat, out_p);
 }
 
 double hol_light_floor_m(const hol_light_frame *lf, const double p[3], const double l[3])
 {
-    double dx = p[0] - l[0], dy = p[1] - l[1], dw = p[2] - l[2];
-    double c2 = dx * dx + dy * dy - (lf->flat ? 0 : dw * dw);
-    double c = sqrt(c2 > 0 ? c2 : 0);
-    return (lf->flat ? c : 2 * asinh(c / 2)) * lf->metres_per_unit;
+    return hol_hyper_dist(p, l, lf->flat) * lf->metres_per_unit;
 }
 
 double hol_light_falloff(double d_m, double x_units, int flat)
