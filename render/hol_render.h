@@ -200,6 +200,13 @@ typedef struct hol_frame_desc {
     int lighting;
     int nlanterns;
     hol_tile lanterns[HOL_RENDER_MAX_LANTERNS];
+    /* A lantern's spot (render/hol_light.h): 0 a round lantern, 1..4 a spot
+     * towards its tile's heading turned k - 1 quarter turns clockwise and
+     * tilted 45 degrees down, 5 a spot straight down. */
+    uint8_t lantern_spot[HOL_RENDER_MAX_LANTERNS];
+    /* 1: fireflies over the creek and flower tiles near the user at dusk
+     * and night (with desc.world; they circle with time_s). */
+    int fireflies;
     /* The headset's panel (HOL_RENDER_PANEL): its centre panel_pos (room
      * coordinates), turned by the unit quaternion panel_orient (x, y, z, w;
      * unturned it faces +z, up +y), one font pixel panel_px metres (0:

@@ -132,7 +132,7 @@ static double light_choice_ms(hol_render *r, const hol_frame_desc *f, int n, dou
     int sum = 0, four = 0, tiles = 0;
     double t0 = thread_ms();
     for (int k = 0; k < n; k++) {
-        hol_light_prepare(f, &lf);
+        hol_light_prepare(f, NULL, &lf);
         for (int b = 0; b < v->nbranches; b++) {
             double fr[9];
             int idx[HOL_LIGHT_PER_TILE];
