@@ -37,6 +37,8 @@
 
 #include <cmocka.h>
 
+#pragma GCC diagnostic ignored "-Wmissing-field-initializers" /* cases without spots */
+
 #include "../core/hol_room.h"
 #include "../core/hol_tile.h"
 #include "../core/hol_world.h"
@@ -56,6 +58,9 @@
 #define PHYS 0.5
 #define FOG_NIGHT 0.15
 #define FOG_DUSK 0.10
+#define SPOT_TILT 45.0
+#define SPOT_OUTER 35.0
+#define SPOT_INNER 25.0
 
 typedef struct light_case {
     const char *walk;
@@ -64,6 +69,7 @@ typedef struct light_case {
     double cell;
     const char *lanterns[4]; /* room walks from the user's state */
     int dusk;
+    int spot[4]; /* hol_frame_desc.lantern_spot of each */
 } light_case;
 
 static const light_case cases[] = {
@@ -74,6 +80,11 @@ static const light_case cases[] = {
     {"W", {0.3, 1.6, 1.2}, -100, -35, 8, 3, 3, 1, {"E", "N", NULL, NULL}, 0},
     {"-", {2.2, 1.6, 2.4}, 20, -30, 5, 5, 5, 1, {"N", "NN", "WW", "EN"}, 0},
     {"-", {1.0, 1.6, 1.1}, 200, -35, 6, 3, 3, 0.7, {"S", "E", "SW", NULL}, 1},
+    /* spots (lantern_spot): turned edges, straight down, with round ones */
+    {"-", {1.5, 1.6, 1.5}, 0, -35, 5, 3, 3, 1, {"N", "ES", "W", NULL}, 0, {3, 5, 2, 0}},
+    {"NE", {2.4, 1.6, 0.6}, 135, -30, 5, 3, 3, 1, {"W", "S", "WS", NULL}, 0, {1, 0, 4, 0}},
+    {"-", {1.4, 1.6, 1.6}, -60, -30, 6, 3, 3, 1, {"N", "EN", "W", "S"}, 0, {2, 3, 4, 1}},
+    {"-", {2.2, 1.6, 2.4}, 20, -30, 5, 5, 5, 1, {"N", "NN", "WW", "EN"}, 1, {5, 3, 1, 2}},
 };
 
 static render_fixture fx;
@@ -242,6 +253,10 @@ typedef struct scene {
     int n;
     double lant[4][3];     /* model points */
     double lroom[4][2];    /* room metres of the cell each walk ends in */
+    int spot[4];
+    double sdir[4][3];     /* a spot's unit horizontal direction: a tangent at
+                              lant (model frame) */
+    double sroom[4][2];    /* the same in room metres (east, north) */
     double eye[3];
 } scene;
 
@@ -273,6 +288,18 @@ static void make_scene(const light_case *c, scene *s)
         s->lant[s->n][2] = f.m[8];
         s->lroom[s->n][0] = (u.col + 0.5) * c->cell;
         s->lroom[s->n][1] = (u.row + 0.5) * c->cell;
+        /* the spot's direction: the tile's heading (room north at its cell
+         * turned clockwise by the state's orient), turned spot - 1 more */
+        s->spot[s->n] = c->spot[i];
+        s->f.lantern_spot[s->n] = (uint8_t)c->spot[i];
+        if (c->spot[i] >= 1 && c->spot[i] <= 4) {
+            int t = (u.orient + c->spot[i] - 1) % 4;
+            double e = t == 1 ? 1 : t == 3 ? -1 : 0, nn = t == 0 ? 1 : t == 2 ? -1 : 0;
+            for (int r = 0; r < 3; r++)
+                s->sdir[s->n][r] = f.m[3 * r] * e + f.m[3 * r + 1] * nn;
+            s->sroom[s->n][0] = e;
+            s->sroom[s->n][1] = nn;
+        }
         s->n++;
     }
     s->f.nlanterns = s->n;
@@ -288,6 +315,40 @@ static void render(scene *s, int flags, uint8_t *px)
     hol_render_read_rgba(fx.rnd, W, H, px);
 }
 
+static double smooth(double a, double b, double x)
+{
+    double t = (x - a) / (b - a);
+    t = t < 0 ? 0 : t > 1 ? 1 : t;
+    return t * t * (3 - 2 * t);
+}
+
+/* A spot's cone factor at model point h for lantern i (1: no spot): the
+ * unit tangent at the lantern of the geodesic towards h, (h - cosh(x) L) /
+ * sinh x on the hyperboloid ((h - L)/|h - L| flat), against the spot's
+ * direction; cos(angle) = (x_m cos(tilt) <u, t> + sin(tilt) HEIGHT) / d. */
+static double cone_model(const light_case *c, const scene *s, int i, const double h[3])
+{
+    if (!s->spot[i])
+        return 1;
+    const double *L = s->lant[i];
+    double fm = floor_m(c->cell, h, L), d = hypot(fm, HEIGHT);
+    double tilt = (s->spot[i] == 5 ? 90 : SPOT_TILT) * PI / 180, ut = 0;
+    if (s->spot[i] != 5 && fm > 1e-9) {
+        const double *u = s->sdir[i];
+        if (model_q == 4) {
+            double dx = h[0] - L[0], dy = h[1] - L[1];
+            ut = (u[0] * dx + u[1] * dy) / hypot(dx, dy);
+        } else {
+            double x = fm * model_edge() / c->cell, ch = cosh(x), sh = sinh(x);
+            double t[3] = {(h[0] - ch * L[0]) / sh, (h[1] - ch * L[1]) / sh,
+                           (h[2] - ch * L[2]) / sh};
+            ut = u[0] * t[0] + u[1] * t[1] - u[2] * t[2];
+        }
+    }
+    double ca = (fm * cos(tilt) * ut + sin(tilt) * HEIGHT) / d;
+    return smooth(cos(SPOT_OUTER * PI / 180), cos(SPOT_INNER * PI / 180), ca);
+}
+
 /* The model's (lanterns, fog) at a pixel; 0 when it is not checked. */
 static int model_pixel(const light_case *c, const scene *s, int x, int y, double out[2])
 {
@@ -297,7 +358,7 @@ static int model_pixel(const light_case *c, const scene *s, int x, int y, double
     double lam = 0;
     for (int i = 0; i < s->n; i++) {
         double fm = floor_m(c->cell, h, s->lant[i]);
-        lam += lantern_term(fm, fm * model_edge() / c->cell);
+        lam += lantern_term(fm, fm * model_edge() / c->cell) * cone_model(c, s, i, h);
     }
     double fe = chord_m(c->cell, h, s->eye), de = hypot(fe, c->eye[1]);
     double fd = de * (c->dusk ? FOG_DUSK : FOG_NIGHT);
@@ -345,6 +406,8 @@ static void test_flat_equals_euclid(void **state)
         {"-", {1.5, 1.6, 1.5}, 20, -40, 4, 3, 3, 1, {"N", "ES", "W", NULL}, 0},
         {"NE", {1.8, 1.6, 0.5}, 150, -35, 4, 3, 3, 0.7, {"W", "S", "WS", NULL}, 1},
         {"-", {2.3, 1.6, 2.6}, -20, -30, 4, 5, 5, 1, {"N", "NN", "WW", "EN"}, 0},
+        {"-", {1.5, 1.6, 1.5}, 20, -40, 4, 3, 3, 1, {"N", "ES", "W", NULL}, 0, {2, 5, 3, 0}},
+        {"NE", {1.8, 1.6, 0.5}, 150, -35, 4, 3, 3, 0.7, {"W", "S", "WS", NULL}, 1, {1, 4, 0, 0}},
     };
     static uint8_t px[W * H * 4];
     for (size_t k = 0; k < sizeof flat / sizeof flat[0]; k++) {
@@ -361,7 +424,18 @@ static void test_flat_equals_euclid(void **state)
                 double lam = 0;
                 for (int i = 0; i < s.n; i++) {
                     double dx = p[0] - s.lroom[i][0], dz = p[1] - s.lroom[i][1];
-                    lam += lantern_term(hypot(dx, dz), 0);
+                    double cone = 1, fm = hypot(dx, dz), d = hypot(fm, HEIGHT);
+                    if (s.spot[i] == 5) /* straight down */
+                        cone = smooth(cos(SPOT_OUTER * PI / 180), cos(SPOT_INNER * PI / 180),
+                                      HEIGHT / d);
+                    else if (s.spot[i]) { /* room metres: east, north = -z */
+                        double tl = SPOT_TILT * PI / 180;
+                        double ca = (cos(tl) * (dx * s.sroom[i][0] - dz * s.sroom[i][1]) +
+                                     sin(tl) * HEIGHT) / d;
+                        cone = smooth(cos(SPOT_OUTER * PI / 180), cos(SPOT_INNER * PI / 180),
+                                      ca);
+                    }
+                    lam += lantern_term(fm, 0) * cone;
                 }
                 double de = hypot(hypot(p[0] - c->eye[0], p[1] - c->eye[2]), c->eye[1]);
                 double fd = de * (c->dusk ? FOG_DUSK : FOG_NIGHT);
