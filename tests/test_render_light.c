@@ -46,6 +46,7 @@
 #include "model.h"
 #include "render_fixture.h"
 #include "../render/hol_app_frame.h"
+#include "../render/hol_light.h"
 
 #define W 160
 #define H 120
@@ -187,6 +188,8 @@ static void apply(model_mat f, const double v[3], double out[3])
 
 /* The model point (user frame) of the floor point p; 0 when the sight
  * line passes within 1e-9 of a vertex or p is off the room. */
+static double model_centre[3]; /* the centre of model_point's last cell */
+
 static int model_point(const light_case *c, const double p[2], double out[3])
 {
     double m = c->cell;
@@ -213,6 +216,7 @@ static int model_point(const light_case *c, const double p[2], double out[3])
     double h[3];
     klein_point(m, p[0] - (col + 0.5) * m, p[1] - (row + 0.5) * m, h);
     apply(f, h, out);
+    model_centre[0] = f.m[2], model_centre[1] = f.m[5], model_centre[2] = f.m[8];
     return 1;
 }
 
@@ -605,6 +609,162 @@ static void test_app_frame_carries_lights(void **state)
     assert_true(hol_tile_eq(f.lanterns[1], v.lanterns[1]));
 }
 
+/* Fireflies: over creek, spring, pool and flower tiles only, fixed by the
+ * tile (the same place again), inside the tile, resting at time 0 and
+ * circling a little; at night (the app's frame) they light the floor in
+ * blue of HOL_RENDER_LIGHT_ONLY: the fireflies of the room's cells are
+ * where the model's walk puts them, and every floor pixel's blue is the
+ * model's light of the frame's fireflies (model distance and falloff, with
+ * their height and weight; a tile may hold at most 4 lights, so a test
+ * view keeps few). */
+static void test_fireflies(void **state)
+{
+    (void)state;
+    static const double FF_W = 0.35;
+    hol_tile_content c;
+    memset(&c, 0, sizeof c);
+    hol_tile t;
+    assert_int_equal(hol_tile_parse("Nf", -1, &t), HOL_OK);
+    double a[3], b[3];
+    c.object = HOL_OBJ_ROCK;
+    assert_int_equal(hol_light_firefly(t, &c, 1, 0, a), 0);
+    c.object = HOL_OBJ_GRASS;
+    assert_int_equal(hol_light_firefly(t, &c, 1, 0, a), 0);
+    static const int with[] = {HOL_OBJ_CREEK, HOL_OBJ_SPRING, HOL_OBJ_POOL, HOL_OBJ_FLOWERS};
+    for (int k = 0; k < 4; k++) {
+        c.object = (uint8_t)with[k];
+        assert_int_equal(hol_light_firefly(t, &c, 1, 0, a), 1);
+        assert_int_equal(hol_light_firefly(t, &c, 1, 0, b), 1);
+        assert_memory_equal(a, b, sizeof a);
+        for (double ts = 0; ts < 20; ts += 0.37) {
+            hol_light_firefly(t, &c, 1, ts, b);
+            assert_true(fabs(b[0]) < 0.5 && fabs(b[1]) < 0.5 && b[2] > 0.35 && b[2] < 0.85);
+            assert_true(hypot(b[0] - a[0], b[1] - a[1]) <= 0.161);
+        }
+    }
+    /* the app's frame at night: fireflies on; at dusk and day off */
+    static hol_app_view v;
+    memset(&v, 0, sizeof v);
+    v.user = hol_room_start();
+    v.cell_m = 1;
+    v.head[0] = v.head[2] = 1.5;
+    v.head[1] = 1.6;
+    hol_frame_desc fd;
+    v.lighting = HOL_LIGHT_NIGHT;
+    hol_app_frame_desc(&v, -1, W, H, 90, &fd);
+    assert_int_equal(fd.fireflies, 1);
+    v.lighting = HOL_LIGHT_DUSK;
+    hol_app_frame_desc(&v, -1, W, H, 90, &fd);
+    assert_int_equal(fd.fireflies, 0);
+
+    /* the light against the model */
+    static uint8_t px[W * H * 4];
+    static const light_case cs[] = {
+        {"-", {1.5, 1.6, 1.5}, 0, -50, 5, 3, 3, 1, {NULL}, 0},
+        {"-", {1.5, 1.6, 1.5}, 180, -50, 5, 3, 3, 1, {NULL}, 0},
+        {"-", {1.4, 1.6, 1.6}, -60, -45, 6, 3, 3, 1, {NULL}, 0},
+        {"-", {1.5, 1.6, 1.5}, 90, -45, 4, 3, 3, 1, {NULL}, 0},
+    };
+    int lit_all = 0;
+    for (size_t k = 0; k < sizeof cs / sizeof cs[0]; k++) {
+        const light_case *lc = &cs[k];
+        scene s;
+        make_scene(lc, &s);
+        s.f.fireflies = 1;
+        s.f.time_s = 1.5 * (double)k;
+        struct hol_world *w = world_of(lc->q);
+        /* generate the tiles near the user (the renderer only peeks) */
+        render(&s, HOL_RENDER_BARE | HOL_RENDER_LIGHT_ONLY, px);
+        /* the fireflies of the room's cells, placed by the model */
+        double ff[16][4];
+        int nff = 0;
+        hol_tile mt[16];
+        for (int col = 0; col < lc->cols; col++)
+            for (int row = 0; row < lc->rows; row++) {
+                hol_room u = s.f.user;
+                model_mat f = model_identity();
+                while (u.col != col || u.row != row) {
+                    int dir = u.col < col ? HOL_DIR_E : u.col > col ? HOL_DIR_W
+                              : u.row < row ? HOL_DIR_S : HOL_DIR_N;
+                    assert_int_equal(hol_room_step(&u, dir), HOL_OK);
+                    f = model_step(f, turns_of(dir));
+                }
+                double xzh[3], p[3];
+                if (hol_world_peek(w, u.tile, &c) ||
+                    !hol_light_firefly(u.tile, &c, lc->cell, s.f.time_s, xzh))
+                    continue;
+                /* the tile's own frame: x, z turned by the state's orient
+                 * (its heading is room north turned clockwise by orient) */
+                double an = -u.orient * PI / 2, cx = cos(an), sx = sin(an);
+                double rx = xzh[0] * cx + xzh[1] * sx, rz = -xzh[0] * sx + xzh[1] * cx;
+                klein_point(lc->cell, rx, rz, p);
+                apply(f, p, ff[nff]);
+                ff[nff][3] = xzh[2];
+                mt[nff++] = u.tile;
+            }
+        /* the renderer's fireflies: those of the room's cells where the
+         * model puts them; the light of all of them (from those points) by
+         * the model's distance and falloff */
+        hol_light_frame lf;
+        assert_int_equal(hol_light_prepare(&s.f, w, &lf), HOL_OK);
+        int found = 0;
+        for (int j = 0; j < nff; j++)
+            for (int i = 0; i < lf.n; i++)
+                if (fabs(lf.pos[i][0] - ff[j][0]) + fabs(lf.pos[i][1] - ff[j][1]) +
+                        fabs(lf.pos[i][2] - ff[j][2]) < 1e-6 &&
+                    fabs(lf.h[i] - ff[j][3]) < 1e-9) {
+                    found++;
+                    break;
+                }
+        assert_int_equal(found, nff);
+        int checked = 0, lit = 0, bad = 0;
+        for (int y = 0; y < H; y++)
+            for (int x = 0; x < W; x++) {
+                double p[2], h[3];
+                if (!floor_point(lc, x + 0.5, y + 0.5, p) || !model_point(lc, p, h))
+                    continue;
+                /* the tile's four: the nearest to its centre in reach */
+                double circ = model_q == 4 ? lc->cell * sqrt(0.5)
+                                           : acosh(1 / tan(PI / model_q)) * lc->cell / model_edge();
+                int pick[HOL_LIGHT_MAX] = {0};
+                for (int k4 = 0; k4 < 4; k4++) {
+                    int best = -1;
+                    double bd = RADIUS + circ;
+                    for (int j = 0; j < lf.n; j++) {
+                        double dc = floor_m(lc->cell, model_centre, lf.pos[j]);
+                        if (!pick[j] && dc < bd)
+                            best = j, bd = dc;
+                    }
+                    if (best >= 0)
+                        pick[best] = 1;
+                }
+                double lam = 0;
+                for (int j = 0; j < lf.n; j++) {
+                    double fm = floor_m(lc->cell, h, lf.pos[j]), d = hypot(fm, lf.h[j]);
+                    if (d >= RADIUS || !lf.ff[j] || !pick[j])
+                        continue;
+                    double xu = fm * model_edge() / lc->cell;
+                    double u = d / RADIUS, ww = (1 - u * u) * (1 - u * u);
+                    double sf = model_q == 4 || xu < 1e-9 ? 1 : xu / sinh(xu);
+                    lam += FF_W * ww * (1 - PHYS + PHYS * sf) / (1 + d * d / (D0 * D0)) *
+                           (0.3 + 0.7 * lf.h[j] / d);
+                }
+                const uint8_t *q = px + 4 * (y * W + x);
+                if (fabs(q[2] - 255 * fmin(lam, 1)) > TOL && bad < 5)
+                    printf("  px %d,%d: %d want %.1f (n %d)\n", x, y, q[2], 255 * lam, lf.n);
+                bad += fabs(q[2] - 255 * fmin(lam, 1)) > TOL;
+                lit += lam > 0.02;
+                checked++;
+            }
+        (void)mt;
+        printf("fireflies case %zu ({4,%d}): %d room fireflies, %d pixels checked, %d lit, "
+               "%d off\n", k, lc->q, nff, checked, lit, bad);
+        assert_int_equal(bad, 0);
+        lit_all += lit;
+    }
+    assert_true(lit_all > 300);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -614,6 +774,7 @@ int main(void)
         cmocka_unit_test(test_lantern_through_portal),
         cmocka_unit_test(test_day_unchanged_without_lighting),
         cmocka_unit_test(test_app_frame_carries_lights),
+        cmocka_unit_test(test_fireflies),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }
