@@ -86,14 +86,16 @@ struct hol_render {
     hol_gl gl;
     hol_scene *scene;
     GLuint vao[2], vbo[2], ibo[2]; /* [0] static, [1] dynamic */
-    hol__prog progs[16]; /* [0] day (the picture without lights), [1] lit
+    hol__prog progs[32]; /* [0] day (the picture without lights), [1] lit
                             tiles, [2] lit room meshes (no tile code), [3]
                             lit tiles of the flat {4,4}; [4 + k] the same
                             able to discard outside a branch's wedge (the
                             others have no discard, so llvmpipe tests depth
                             before shading); [8 + k] the lit ones at night
                             ([k] at dusk: the sky's colours are constants,
-                            uniforms cost llvmpipe a load per pixel) */
+                            uniforms cost llvmpipe a load per pixel);
+                            [16 + k] the lit tiles' with fireflies and spots
+                            (HOL_FX: only frames that have them pay) */
     hol__prog *pg;      /* this frame's */
     hol_light_frame lights; /* this frame's (at dusk and night) */
     hol_mesh dyn;     /* per-frame geometry */
@@ -138,10 +140,12 @@ static const char *hol__vs =
      * l.z - k.l.xy is affine in the vertex, so interpolation is exact */
     "#if HOL_LIT == 1\n"
     "uniform vec4 u_tl[4];\n"
-    "uniform vec4 u_tx[7];\n"
     "out vec4 v_L;\n"
     "out float v_Le;\n"
+    "#if HOL_FX\n"
+    "uniform vec4 u_tx[7];\n"
     "out vec4 v_U;\n" /* <u, (k, 1)>: a spot's direction, affine too */
+    "#endif\n"
     "#endif\n"
     "void main() {\n"
     "  vec4 w = u_model * vec4(a_pos, 1.0);\n"
@@ -151,7 +155,9 @@ static const char *hol__vs =
     "#if HOL_LIT == 1\n"
     "  v_L = u_tl[2] - v_loc.x * u_tl[0] - v_loc.z * u_tl[1];\n"
     "  v_Le = u_tl[3].z - v_loc.x * u_tl[3].x - v_loc.z * u_tl[3].y;\n"
+    "#if HOL_FX\n"
     "  v_U = v_loc.x * u_tx[0] + v_loc.z * u_tx[1] - u_tx[2];\n"
+    "#endif\n"
     "#endif\n"
     "  v_wpos = w.xyz;\n"
     "  v_nrm = mat3(u_model) * a_nrm;\n"
@@ -187,8 +193,10 @@ static const char *hol__fs =
     "#if HOL_LIT == 1\n"
     "in vec4 v_L;\n"
     "in float v_Le;\n"
+    "#if HOL_FX\n"
     "in vec4 v_U;\n"
     "uniform vec4 u_tx[7];\n"
+    "#endif\n"
     "#endif\n"
     /* the sky (docs/rendering.md#lighting): ambient, sun and lantern colours */
     "#if HOL_NIGHT\n"
@@ -212,6 +220,7 @@ static const char *hol__fs =
      * c^2 = 2 (cosh x - 1) = 2 g L - 2, sinh x = sqrt(c^2 (1 + c^2/4)),
      * x = log(cosh x + sinh x); flat: the slot's z is |l|^2/2 and
      * c^2 = |k - l|^2 = 2 L + |k|^2, x = c */
+    "#if HOL_FX\n"
     /* per slot: u_tx[4] the light's height, [5] a lantern's weight, [6] a
      * firefly's (the second sum, ff); a spot (u_tx[3] its sin(tilt), -2:
      * none) multiplies by its cone: cos(angle) = (x <u,t> + sin(tilt) dh)
@@ -224,7 +233,6 @@ static const char *hol__fs =
     "  vec4 d2 = c2 * u_mpu2 + dh * dh;\n"
     "  vec4 den = 1.0 + d2 * (1.0 / (" HOL__STR(HOL_LIGHT_D0_M) " * " HOL__STR(HOL_LIGHT_D0_M) "));\n"
     "  vec4 num = vec4(1.0);\n"
-    "  vec4 hz = U;\n"
     "#else\n"
     /* s = x / sinh x as one quotient with the inverse square: (1 - B + B s)
      * / (1 + d^2/D0^2) = ((1 - B) sh + B x) / (sh (1 + d^2/D0^2)), sh and x
@@ -234,17 +242,48 @@ static const char *hol__fs =
     "  vec4 d2 = x * x * u_mpu2 + dh * dh;\n"
     "  vec4 num = (1.0 - " HOL__STR(HOL_LIGHT_PHYS) ") * sh + " HOL__STR(HOL_LIGHT_PHYS) " * x;\n"
     "  vec4 den = sh * (1.0 + d2 * (1.0 / (" HOL__STR(HOL_LIGHT_D0_M) " * " HOL__STR(HOL_LIGHT_D0_M) ")));\n"
-    "  vec4 hz = g * x * U / sh;\n"
     "#endif\n"
     "  vec4 w = max(1.0 - d2 * (1.0 / (" HOL__STR(HOL_LIGHT_RADIUS_M) " * " HOL__STR(HOL_LIGHT_RADIUS_M) ")), 0.0);\n"
     "  vec4 id = inversesqrt(max(d2, 1e-8));\n"
-    "  vec4 cone = smoothstep(vec4(" HOL__STR(HOL__SPOT_COS_O) "), vec4(" HOL__STR(HOL__SPOT_COS_I) "),\n"
-    "                         (hz + u_tx[3] * dh) * id);\n"
-    "  vec4 f = w * w * num / den * mix(cone, vec4(1.0), step(u_tx[3], vec4(-1.5)));\n"
+    "  vec4 f = w * w * num / den;\n"
+    /* the cone only where the tile has a spot (uniform: the same branch
+     * for every pixel of the draw) */
+    "  if (u_tx[3] != vec4(-2.0)) {\n"
+    "#if HOL_FLAT\n"
+    "    vec4 hz = U;\n"
+    "#else\n"
+    "    vec4 hz = g * x * U / sh;\n"
+    "#endif\n"
+    "    vec4 cone = smoothstep(vec4(" HOL__STR(HOL__SPOT_COS_O) "), vec4(" HOL__STR(HOL__SPOT_COS_I) "),\n"
+    "                           (hz + u_tx[3] * dh) * id);\n"
+    "    f *= mix(cone, vec4(1.0), step(u_tx[3], vec4(-1.5)));\n"
+    "  }\n"
     "  f *= 0.3 + (0.7 * max(nup, 0.0)) * max(dh, 0.0) * id;\n"
     "  ff = dot(f, u_tx[6]);\n"
     "  return dot(f, u_tx[5]);\n"
     "}\n"
+    "#else\n"
+    "float hol_lights(vec4 L, float g2, float o, float dh, float nup) {\n"
+    "  vec4 c2 = max(g2 * L + o, 0.0);\n"
+    "#if HOL_FLAT\n"
+    "  vec4 d2 = c2 * u_mpu2 + dh * dh;\n"
+    "  vec4 den = 1.0 + d2 * (1.0 / (" HOL__STR(HOL_LIGHT_D0_M) " * " HOL__STR(HOL_LIGHT_D0_M) "));\n"
+    "  vec4 num = vec4(1.0);\n"
+    "#else\n"
+    /* s = x / sinh x as one quotient with the inverse square: (1 - B + B s)
+     * / (1 + d^2/D0^2) = ((1 - B) sh + B x) / (sh (1 + d^2/D0^2)), sh and x
+     * nudged by 1e-6 so that s is 1 at the light's foot */
+    "  vec4 sh = sqrt(c2 + 0.25 * c2 * c2) + 1e-6;\n"
+    "  vec4 x = log(1.0 + 0.5 * c2 + sh);\n"
+    "  vec4 d2 = x * x * u_mpu2 + dh * dh;\n"
+    "  vec4 num = (1.0 - " HOL__STR(HOL_LIGHT_PHYS) ") * sh + " HOL__STR(HOL_LIGHT_PHYS) " * x;\n"
+    "  vec4 den = sh * (1.0 + d2 * (1.0 / (" HOL__STR(HOL_LIGHT_D0_M) " * " HOL__STR(HOL_LIGHT_D0_M) ")));\n"
+    "#endif\n"
+    "  vec4 w = max(1.0 - d2 * (1.0 / (" HOL__STR(HOL_LIGHT_RADIUS_M) " * " HOL__STR(HOL_LIGHT_RADIUS_M) ")), 0.0);\n"
+    "  vec4 f = w * w * num / den;\n"
+    "  return dot(f, 0.3 + (0.7 * max(nup, 0.0) * max(dh, 0.0)) * inversesqrt(max(d2, 1e-8)));\n"
+    "}\n"
+    "#endif\n"
     "#endif\n"
     "void main() {\n"
     "#if HOL_WEDGE\n"
@@ -285,7 +324,11 @@ static const char *hol__fs =
     "#else\n"
     "    float g = inversesqrt(max(1.0 - kk, 1e-6)), o = -2.0;\n"
     "#endif\n"
+    "#if HOL_FX\n"
     "    lam = hol_lights(v_L, v_U, g, o, v_loc.y, n.y, lamf);\n"
+    "#else\n"
+    "    lam = hol_lights(v_L, 2.0 * g, o, " HOL__STR(HOL_LIGHT_HEIGHT_M) " - v_loc.y, n.y);\n"
+    "#endif\n"
     /* fog: the chord 2 sinh(x/2) of the floor distance x (a function of
      * the true distance, within 4 % of it to 3 m; no log per pixel) */
     "    float ce2 = max(2.0 * g * v_Le + o, 0.0);\n"
@@ -323,13 +366,14 @@ static GLuint hol__shader(const hol_gl *gl, GLenum type, int n, const char *cons
 static int hol__make_prog(hol_render *r, hol__prog *pg, int k)
 {
     char pre[] = "#version 300 es\n#define HOL_LIT 0\n#define HOL_FLAT 0\n#define HOL_WEDGE 0\n"
-                 "#define HOL_NIGHT 0\n";
+                 "#define HOL_NIGHT 0\n#define HOL_FX 0\n";
     static const char lit[4] = {'0', '1', '2', '1'};
     pre[sizeof "#version 300 es\n#define HOL_LIT " - 1] = lit[k % 4];
     pre[sizeof "#version 300 es\n#define HOL_LIT 0\n#define HOL_FLAT " - 1] = k % 4 == 3 ? '1' : '0';
     pre[sizeof "#version 300 es\n#define HOL_LIT 0\n#define HOL_FLAT 0\n#define HOL_WEDGE " - 1] =
         k % 8 >= 4 ? '1' : '0';
-    pre[sizeof pre - 3] = k >= 8 ? '1' : '0';
+    pre[sizeof pre - 3 - (sizeof "#define HOL_FX 0\n" - 1)] = k % 16 >= 8 ? '1' : '0';
+    pre[sizeof pre - 3] = k >= 16 ? '1' : '0';
     const char *fsrc[2] = {pre, hol__fs};
     const char *vsrc[2] = {fsrc[0], hol__vs};
     GLuint vs = hol__shader(&r->gl, GL_VERTEX_SHADER, 2, vsrc);
@@ -396,8 +440,8 @@ hol_err hol_render_create(const hol_render_desc *desc, hol_render **out)
         return gerr;
     }
     int bad = 0;
-    for (int k = 0; k < 16; k++)
-        if (k % 4 || k < 8) /* day has no night variant */
+    for (int k = 0; k < 32; k++)
+        if (k < 16 ? k % 4 || k < 8 : k % 2) /* day has no night variant, FX only tiles */
             bad = bad || hol__make_prog(r, &r->progs[k], k);
     if (bad) {
         hol_render_destroy(r);
@@ -444,7 +488,7 @@ void hol_render_destroy(hol_render *r)
 {
     if (!r)
         return;
-    for (int k = 0; k < 16; k++)
+    for (int k = 0; k < 32; k++)
         if (r->progs[k].prog)
             r->gl.DeleteProgram(r->progs[k].prog);
     if (r->vao[0])
@@ -1113,6 +1157,8 @@ static hol__prog *hol__prog_of(hol_render *r, const hol_frame_desc *f, int kind)
         kind = 3;
     if (kind && f->lighting == HOL_RENDER_NIGHT)
         kind += 8;
+    if (kind % 2 && r->lights.fx)
+        kind += 16;
     return &r->progs[kind + (r->view.wedges ? 4 : 0)];
 }
 
