@@ -107,7 +107,7 @@ static void hol__fireflies(const hol_frame_desc *f, const struct hol_world *w,
             continue;
         hol__put(o, fr, xzh[0], xzh[1], xzh[2]);
         o->ff[o->n++] = 1;
-        o->fx = 1;
+        o->fx = o->fx ? o->fx : 1;
         nff++;
     }
 }
@@ -145,7 +145,8 @@ hol_err hol_light_prepare(const hol_frame_desc *f, const struct hol_world *w,
             continue;
         hol__put(out, fr, 0, 0, HOL_LIGHT_HEIGHT_M);
         hol__spot(out, fr, f->lantern_spot[i]);
-        out->fx |= out->ssin[out->n] > -1.5;
+        if (out->ssin[out->n] > -1.5)
+            out->fx = 2;
         out->n++;
     }
     if (f->fireflies && w)

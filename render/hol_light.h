@@ -112,8 +112,9 @@ typedef struct hol_light_frame {
                                      cos(tilt) * metres_per_unit; 0 for
                                      down or no spot */
     double ssin[HOL_LIGHT_MAX];   /* a spot's sin(tilt); -2: no spot */
-    int fx;                       /* a firefly or a spot is placed: the
-                                     renderer's HOL_FX programs */
+    int fx;                       /* 2: a spot is placed, 1: fireflies but
+                                     no spot, 0: neither (the renderer's
+                                     HOL_FX programs) */
 } hol_light_frame;
 
 /* The frame's lights from f (the user, the cell, the eye, the lanterns and

@@ -86,7 +86,7 @@ struct hol_render {
     hol_gl gl;
     hol_scene *scene;
     GLuint vao[2], vbo[2], ibo[2]; /* [0] static, [1] dynamic */
-    hol__prog progs[32]; /* [0] day (the picture without lights), [1] lit
+    hol__prog progs[48]; /* [0] day (the picture without lights), [1] lit
                             tiles, [2] lit room meshes (no tile code), [3]
                             lit tiles of the flat {4,4}; [4 + k] the same
                             able to discard outside a branch's wedge (the
@@ -94,8 +94,9 @@ struct hol_render {
                             before shading); [8 + k] the lit ones at night
                             ([k] at dusk: the sky's colours are constants,
                             uniforms cost llvmpipe a load per pixel);
-                            [16 + k] the lit tiles' with fireflies and spots
-                            (HOL_FX: only frames that have them pay) */
+                            [16 + k] the lit tiles' with fireflies (HOL_FX
+                            1: per-light heights and weights), [32 + k] and
+                            spots (HOL_FX 2): only frames that have them pay */
     hol__prog *pg;      /* this frame's */
     hol_light_frame lights; /* this frame's (at dusk and night) */
     hol_mesh dyn;     /* per-frame geometry */
@@ -142,7 +143,7 @@ static const char *hol__vs =
     "uniform vec4 u_tl[4];\n"
     "out vec4 v_L;\n"
     "out float v_Le;\n"
-    "#if HOL_FX\n"
+    "#if HOL_FX == 2\n"
     "uniform vec4 u_tx[7];\n"
     "out vec4 v_U;\n" /* <u, (k, 1)>: a spot's direction, affine too */
     "#endif\n"
@@ -155,7 +156,7 @@ static const char *hol__vs =
     "#if HOL_LIT == 1\n"
     "  v_L = u_tl[2] - v_loc.x * u_tl[0] - v_loc.z * u_tl[1];\n"
     "  v_Le = u_tl[3].z - v_loc.x * u_tl[3].x - v_loc.z * u_tl[3].y;\n"
-    "#if HOL_FX\n"
+    "#if HOL_FX == 2\n"
     "  v_U = v_loc.x * u_tx[0] + v_loc.z * u_tx[1] - u_tx[2];\n"
     "#endif\n"
     "#endif\n"
@@ -194,8 +195,12 @@ static const char *hol__fs =
     "in vec4 v_L;\n"
     "in float v_Le;\n"
     "#if HOL_FX\n"
-    "in vec4 v_U;\n"
     "uniform vec4 u_tx[7];\n"
+    "#endif\n"
+    "#if HOL_FX == 2\n"
+    "in vec4 v_U;\n"
+    "#else\n"
+    "const vec4 v_U = vec4(0.0);\n"
     "#endif\n"
     "#endif\n"
     /* the sky (docs/rendering.md#lighting): ambient, sun and lantern colours */
@@ -246,9 +251,9 @@ static const char *hol__fs =
     "  vec4 w = max(1.0 - d2 * (1.0 / (" HOL__STR(HOL_LIGHT_RADIUS_M) " * " HOL__STR(HOL_LIGHT_RADIUS_M) ")), 0.0);\n"
     "  vec4 id = inversesqrt(max(d2, 1e-8));\n"
     "  vec4 f = w * w * num / den;\n"
-    /* the cone only where the tile has a spot (uniform: the same branch
-     * for every pixel of the draw) */
-    "  if (u_tx[3] != vec4(-2.0)) {\n"
+    /* the cone: only the programs of frames with a spot (HOL_FX 2) */
+    "#if HOL_FX == 2\n"
+    "  {\n"
     "#if HOL_FLAT\n"
     "    vec4 hz = U;\n"
     "#else\n"
@@ -258,6 +263,7 @@ static const char *hol__fs =
     "                           (hz + u_tx[3] * dh) * id);\n"
     "    f *= mix(cone, vec4(1.0), step(u_tx[3], vec4(-1.5)));\n"
     "  }\n"
+    "#endif\n"
     "  f *= 0.3 + (0.7 * max(nup, 0.0)) * max(dh, 0.0) * id;\n"
     "  ff = dot(f, u_tx[6]);\n"
     "  return dot(f, u_tx[5]);\n"
@@ -373,7 +379,7 @@ static int hol__make_prog(hol_render *r, hol__prog *pg, int k)
     pre[sizeof "#version 300 es\n#define HOL_LIT 0\n#define HOL_FLAT 0\n#define HOL_WEDGE " - 1] =
         k % 8 >= 4 ? '1' : '0';
     pre[sizeof pre - 3 - (sizeof "#define HOL_FX 0\n" - 1)] = k % 16 >= 8 ? '1' : '0';
-    pre[sizeof pre - 3] = k >= 16 ? '1' : '0';
+    pre[sizeof pre - 3] = (char)('0' + k / 16);
     const char *fsrc[2] = {pre, hol__fs};
     const char *vsrc[2] = {fsrc[0], hol__vs};
     GLuint vs = hol__shader(&r->gl, GL_VERTEX_SHADER, 2, vsrc);
@@ -440,7 +446,7 @@ hol_err hol_render_create(const hol_render_desc *desc, hol_render **out)
         return gerr;
     }
     int bad = 0;
-    for (int k = 0; k < 32; k++)
+    for (int k = 0; k < 48; k++)
         if (k < 16 ? k % 4 || k < 8 : k % 2) /* day has no night variant, FX only tiles */
             bad = bad || hol__make_prog(r, &r->progs[k], k);
     if (bad) {
@@ -488,7 +494,7 @@ void hol_render_destroy(hol_render *r)
 {
     if (!r)
         return;
-    for (int k = 0; k < 32; k++)
+    for (int k = 0; k < 48; k++)
         if (r->progs[k].prog)
             r->gl.DeleteProgram(r->progs[k].prog);
     if (r->vao[0])
@@ -1157,8 +1163,8 @@ static hol__prog *hol__prog_of(hol_render *r, const hol_frame_desc *f, int kind)
         kind = 3;
     if (kind && f->lighting == HOL_RENDER_NIGHT)
         kind += 8;
-    if (kind % 2 && r->lights.fx)
-        kind += 16;
+    if (kind % 2)
+        kind += 16 * r->lights.fx;
     return &r->progs[kind + (r->view.wedges ? 4 : 0)];
 }
 
