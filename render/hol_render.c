@@ -209,7 +209,7 @@ static const char *hol__fs =
     "#else\n"
     "const vec3 u_amb = vec3(0.30, 0.26, 0.28), u_sun = vec3(0.28, 0.17, 0.11);\n"
     "#endif\n"
-    "const vec3 u_lcol = vec3(3.0, 2.25, 1.25), u_fcol = vec3(1.6, 2.4, 0.6);\n"
+    "const vec3 u_lcol = vec3(3.0, 2.25, 1.25), u_fcol = vec3(1.4, 2.0, 0.6);\n"
     "#endif\n"
     "out vec4 o_col;\n"
     "vec4 hol_out(vec3 c) {\n"

@@ -620,7 +620,7 @@ static void test_app_frame_carries_lights(void **state)
 static void test_fireflies(void **state)
 {
     (void)state;
-    static const double FF_W = 0.35;
+    static const double FF_W = 0.15;
     hol_tile_content c;
     memset(&c, 0, sizeof c);
     hol_tile t;
