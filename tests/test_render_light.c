@@ -600,6 +600,7 @@ static void test_app_frame_carries_lights(void **state)
     v.head[1] = 1.6;
     v.lighting = HOL_LIGHT_DUSK;
     v.nlanterns = 2;
+    v.lantern_spot[1] = 5;
     assert_int_equal(hol_tile_parse("Nf", -1, &v.lanterns[0]), HOL_OK);
     assert_int_equal(hol_tile_parse("Wr", -1, &v.lanterns[1]), HOL_OK);
     hol_frame_desc f;
@@ -607,6 +608,8 @@ static void test_app_frame_carries_lights(void **state)
     assert_int_equal(f.lighting, HOL_RENDER_DUSK);
     assert_int_equal(f.nlanterns, 2);
     assert_true(hol_tile_eq(f.lanterns[1], v.lanterns[1]));
+    assert_int_equal(f.lantern_spot[0], 0);
+    assert_int_equal(f.lantern_spot[1], 5);
 }
 
 /* Fireflies: over creek, spring, pool and flower tiles only, fixed by the
