@@ -240,6 +240,9 @@ typedef struct hol_app_level {
                                  not "next level" */
     int lighting;             /* hol_app_lighting; 0: day */
     hol_tile lanterns[HOL_APP_MAX_LANTERNS]; /* `place lantern` tiles */
+    uint8_t lantern_spot[HOL_APP_MAX_LANTERNS]; /* `... spot DIR`: 0 round,
+                                 1..4 ahead/right/back/left of the tile's
+                                 heading (tilted down), 5 down */
     int nlanterns;
     int sound;                /* hol_app_sound; 0: all */
     int point;                /* hol_app_point_target: the question asked
@@ -409,6 +412,8 @@ typedef struct hol_app_view {
                                          (cue lantern) one per objective
                                          still to reach */
     hol_tile lanterns[HOL_APP_MAX_LANTERNS + HOL_APP_MAX_OBJECTIVES];
+    uint8_t lantern_spot[HOL_APP_MAX_LANTERNS + HOL_APP_MAX_OBJECTIVES]; /* the
+                                         level's spots; 0: round */
     int sound;                        /* the level's hol_app_sound (the
                                          sources: core/hol_sound.h) */
 } hol_app_view;

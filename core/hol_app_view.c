@@ -406,10 +406,14 @@ static void hol__fill_lights(hol_app *app)
     v->lighting = L->lighting;
     v->sound = L->sound;
     v->nlanterns = 0;
-    for (int k = 0; k < L->nlanterns && k < HOL_APP_MAX_LANTERNS; k++)
+    for (int k = 0; k < L->nlanterns && k < HOL_APP_MAX_LANTERNS; k++) {
+        v->lantern_spot[v->nlanterns] = L->lantern_spot[k];
         v->lanterns[v->nlanterns++] = L->lanterns[k];
-    for (int k = 0; (L->cues & HOL_CUE_LANTERN) && k < v->nobjects; k++)
+    }
+    for (int k = 0; (L->cues & HOL_CUE_LANTERN) && k < v->nobjects; k++) {
+        v->lantern_spot[v->nlanterns] = 0;
         v->lanterns[v->nlanterns++] = v->objects[k].tile;
+    }
 }
 
 void hol__fill_view(hol_app *app, const hol_input *in)

@@ -96,3 +96,27 @@ void hol_hyper_to_disk(const double p[3], double out_xy[2])
     out_xy[0] = p[0] / (1.0 + p[2]);
     out_xy[1] = p[1] / (1.0 + p[2]);
 }
+
+void hol_hyper_from_klein(double kx, double ky, int flat, double out_p[3])
+{
+    if (flat) {
+        out_p[0] = kx, out_p[1] = ky, out_p[2] = 1;
+        return;
+    }
+    double r2 = kx * kx + ky * ky;
+    double s = 1 / sqrt(r2 < 0.999999 ? 1 - r2 : 1e-6);
+    out_p[0] = kx * s, out_p[1] = ky * s, out_p[2] = s;
+}
+
+double hol_hyper_chord(const double p[3], const double q[3], int flat)
+{
+    double dx = p[0] - q[0], dy = p[1] - q[1], dw = p[2] - q[2];
+    double c2 = dx * dx + dy * dy - (flat ? 0 : dw * dw);
+    return sqrt(c2 > 0 ? c2 : 0);
+}
+
+double hol_hyper_dist(const double p[3], const double q[3], int flat)
+{
+    double c = hol_hyper_chord(p, q, flat);
+    return flat ? c : 2 * hol_asinh(c / 2);
+}

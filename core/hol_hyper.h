@@ -38,6 +38,17 @@ hol_err hol_hyper_frame(hol_tile a, int a_north, hol_tile b, double out_m[9]);
 hol_err hol_hyper_pos(hol_tile a, int a_north, hol_tile b, double out_p[3],
                       double *out_angle, double *out_dist);
 
+/* The hyperboloid point (x, y, w) of the Klein point (kx, ky) (|k| < 1;
+ * clamped just inside the disk), or (kx, ky, 1) when flat ({4,4}). */
+void hol_hyper_from_klein(double kx, double ky, int flat, double out_p[3]);
+
+/* The chord |p - q|_L (Lorentz norm of p - q: exact near 0, no acosh
+ * cancellation; the Euclidean |p - q| when flat) and the distance on the
+ * plane, 2 asinh(chord / 2) (the chord itself when flat), in curvature
+ * units (tile sides when flat). */
+double hol_hyper_chord(const double p[3], const double q[3], int flat);
+double hol_hyper_dist(const double p[3], const double q[3], int flat);
+
 /* Poincare-disk point (|z| < 1) of a hyperboloid point (not for {4,4}). */
 void hol_hyper_to_disk(const double p[3], double out_xy[2]);
 

@@ -270,9 +270,15 @@ static hol_err hol__key_stages(hol__lp *p, char **f, int nf)
     return HOL_OK;
 }
 
-/* place lantern ADDRESS (repeatable: one lantern a tile) */
-static hol_err hol__key_lantern(hol__lp *p, char **f)
+/* place lantern ADDRESS [spot DIR] (repeatable: one lantern a tile) */
+static hol_err hol__key_lantern(hol__lp *p, char **f, int nf)
 {
+    static const char *const dirs[] = {"ahead", "right", "back", "left", "down"};
+    int spot = 0;
+    if (nf != 3 && (nf != 5 || strcmp(f[3], "spot") ||
+                    (spot = hol__word(f[4], dirs, 5) + 1) <= 0))
+        return hol__lfail(p, HOL_EPARSE, p->line,
+                          "place lantern takes ADDRESS [spot ahead|right|back|left|down]");
     hol_tile t;
     if (hol_tile_parse_q(hol__q(p), f[2], -1, &t))
         return hol__lfail(p, HOL_EPARSE, p->line, "'%.30s' is not a canonical address", f[2]);
@@ -289,6 +295,7 @@ static hol_err hol__key_lantern(hol__lp *p, char **f)
     if (L->nlanterns >= HOL_APP_MAX_LANTERNS)
         return hol__lfail(p, HOL_ENOMEM, p->line, "more than %d lanterns", HOL_APP_MAX_LANTERNS);
     p->lantern_line[L->nlanterns] = p->line;
+    L->lantern_spot[L->nlanterns] = (uint8_t)spot;
     L->lanterns[L->nlanterns++] = t;
     return HOL_OK;
 }
@@ -298,9 +305,10 @@ static hol_err hol__key_place(hol__lp *p, char **f, int nf)
     static const char *const objs[] = {"clearing", "grass", "flowers", "rock", "mushroom", "pond"};
     static const int ids[] = {HOL_OBJ_NONE, HOL_OBJ_GRASS, HOL_OBJ_FLOWERS,
                               HOL_OBJ_ROCK, HOL_OBJ_MUSHROOM, HOL_OBJ_POOL};
-    (void)nf;
     if (!strcmp(f[1], "lantern"))
-        return hol__key_lantern(p, f);
+        return hol__key_lantern(p, f, nf);
+    if (nf != 3)
+        return hol__lfail(p, HOL_EPARSE, p->line, "unknown key or wrong value count: '%.20s'", f[0]);
     int o = hol__word(f[1], objs, 6);
     if (o < 0)
         return hol__lfail(p, HOL_EPARSE, p->line,
@@ -592,7 +600,7 @@ static const struct {
     {"keys-distance", 3, 4, hol__key_keys_dist},
     {"time-limit", 2, 2, hol__key_time_limit},
     {"stages", 2, HOL__FIELDS + 1, hol__key_stages},
-    {"place", 3, 3, hol__key_place},
+    {"place", 3, 5, hol__key_place},
     {"cues", 2, HOL__FIELDS + 1, hol__key_cues},
     {"minimap", 2, 2, hol__key_minimap},
     {"fixed", 2, 2, hol__key_fixed},

@@ -430,3 +430,12 @@ double hol_acosh(double x)
         return hol__nan();
     return hol_log(x) + 0.693147180559945309417232121458176568; /* big, inf or NaN */
 }
+
+double hol_asinh(double x)
+{
+    double a = x < 0 ? -x : x;
+    if (a > 1e150) /* x^2 would overflow: asinh(a) = log(2a) to double precision */
+        return (x < 0 ? -1 : 1) * (hol_log(a) + 0.693147180559945309417232121458176568);
+    double r = hol_log1p(a + a * a / (1 + sqrt(1 + a * a)));
+    return x < 0 ? -r : r;
+}

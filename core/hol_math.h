@@ -19,7 +19,7 @@
  *   tests/test_math.c against the 64-bit-mantissa long double libm over
  *   random and special arguments: under 1 ulp for hol_sin and hol_cos
  *   (|x| < 2^20 pi/2, 1.6e6), hol_atan, hol_atan2, hol_asin, hol_log and
- *   hol_log1p; under 2 ulp for hol_acosh.
+ *   hol_log1p; under 2 ulp for hol_acosh and hol_asinh.
  * - Special values follow C99 Annex F: NaN in, NaN out; hol_sin and
  *   hol_cos of an infinity, hol_asin beyond [-1, 1], hol_log of a negative
  *   number, hol_acosh below 1: NaN. Beyond |x| >= 2^28 hol_sin and hol_cos
@@ -38,5 +38,8 @@ double hol_asin(double x);
 double hol_log(double x);
 double hol_log1p(double x);
 double hol_acosh(double x);
+/* asinh by log1p (odd; for the hyperbolic distances of hol_hyper_dist):
+ * log1p(|x| + x^2 / (1 + sqrt(1 + x^2))), within 2 ulp. */
+double hol_asinh(double x);
 
 #endif

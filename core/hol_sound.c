@@ -24,11 +24,6 @@ typedef struct hol__sg {
     hol_room user;
 } hol__sg;
 
-static double hol__asinh(double x)
-{
-    return hol_log1p(x + x * x / (1 + sqrt(1 + x * x)));
-}
-
 static void hol__sg_init(hol__sg *g, const hol_app_view *v)
 {
     double m = v->cell_m > 0 ? v->cell_m : 1.0;
@@ -47,12 +42,7 @@ static void hol__sg_init(hol__sg *g, const hol_app_view *v)
     }
     double kx = (v->head[0] - (v->user.col + 0.5) * m) * g->klein;
     double ky = -(v->head[2] - (v->user.row + 0.5) * m) * g->klein;
-    if (g->flat) {
-        g->p[0] = kx, g->p[1] = ky, g->p[2] = 1;
-    } else {
-        double r2 = kx * kx + ky * ky, s = 1 / sqrt(r2 < 0.999999 ? 1 - r2 : 1e-6);
-        g->p[0] = kx * s, g->p[1] = ky * s, g->p[2] = s;
-    }
+    hol_hyper_from_klein(kx, ky, g->flat, g->p);
     double px = g->p[0], py = g->p[1], pw = g->p[2];
     double k = g->flat ? 0 : 1 / (1 + pw);
     double b[9] = {1 + k * px * px, k * px * py, -px, k * px * py, 1 + k * py * py, -py,
@@ -86,7 +76,7 @@ double hol_sound_falloff(double d_m, double chord, int flat, int windowed)
     }
     double s = 1;
     if (!flat && chord > 1e-6) /* x = 2 asinh(c/2), sinh x = c sqrt(1 + c^2/4) */
-        s = 2 * hol__asinh(chord / 2) / (chord * sqrt(1 + chord * chord / 4));
+        s = 2 * hol_asinh(chord / 2) / (chord * sqrt(1 + chord * chord / 4));
     return w * (1 - HOL_SOUND_PHYS + HOL_SOUND_PHYS * s) / (1 + d_m / HOL_SOUND_D0_M);
 }
 
@@ -95,10 +85,9 @@ double hol_sound_falloff(double d_m, double chord, int flat, int windowed)
 static void hol__place(const hol__sg *g, const double S[3], double h, double *out_d,
                        double *out_x, double dir[3])
 {
-    double dx = S[0] - g->p[0], dy = S[1] - g->p[1], dw = S[2] - g->p[2];
-    double c2 = dx * dx + dy * dy - (g->flat ? 0 : dw * dw);
-    double c = sqrt(c2 > 0 ? c2 : 0);
-    double x = g->flat ? c : 2 * hol__asinh(c / 2);
+    double dx = S[0] - g->p[0], dy = S[1] - g->p[1];
+    double c = hol_hyper_chord(S, g->p, g->flat);
+    double x = hol_hyper_dist(S, g->p, g->flat);
     double fm = x * g->mpu, dh = h - g->head_h;
     double v[3];
     if (g->flat) {

@@ -82,9 +82,11 @@ void hol_app_frame_desc(const hol_app_view *v, int eye, int w, int h, double fov
     fd->time_s = v->hud.elapsed_s;
     fd->path = v->map.npath ? v->map.path : NULL;
     fd->lighting = v->lighting;
+    fd->fireflies = v->lighting == HOL_RENDER_NIGHT; /* at night (render/hol_light.h) */
     int nlan = v->nlanterns < HOL_RENDER_MAX_LANTERNS ? v->nlanterns : HOL_RENDER_MAX_LANTERNS;
     fd->nlanterns = nlan > 0 ? nlan : 0;
     memcpy(fd->lanterns, v->lanterns, (size_t)fd->nlanterns * sizeof fd->lanterns[0]);
+    memcpy(fd->lantern_spot, v->lantern_spot, (size_t)fd->nlanterns);
     fd->npath = v->map.npath;
 }
 

@@ -10,26 +10,12 @@
 
 void hol_light_point(const hol_light_frame *lf, double x, double z, double out_p[3])
 {
-    double kx = x * lf->klein, ky = -z * lf->klein;
-    if (lf->flat) {
-        out_p[0] = kx;
-        out_p[1] = ky;
-        out_p[2] = 1;
-        return;
-    }
-    double r2 = kx * kx + ky * ky;
-    double s = 1 / sqrt(r2 < 0.999999 ? 1 - r2 : 1e-6);
-    out_p[0] = kx * s;
-    out_p[1] = ky * s;
-    out_p[2] = s;
+    hol_hyper_from_klein(x * lf->klein, -z * lf->klein, lf->flat, out_p);
 }
 
 double hol_light_floor_m(const hol_light_frame *lf, const double p[3], const double l[3])
 {
-    double dx = p[0] - l[0], dy = p[1] - l[1], dw = p[2] - l[2];
-    double c2 = dx * dx + dy * dy - (lf->flat ? 0 : dw * dw);
-    double c = sqrt(c2 > 0 ? c2 : 0);
-    return (lf->flat ? c : 2 * asinh(c / 2)) * lf->metres_per_unit;
+    return hol_hyper_dist(p, l, lf->flat) * lf->metres_per_unit;
 }
 
 double hol_light_falloff(double d_m, double x_units, int flat)
@@ -42,7 +28,92 @@ double hol_light_falloff(double d_m, double x_units, int flat)
     return w * (1 - HOL_LIGHT_PHYS + HOL_LIGHT_PHYS * s) / (1 + e * e);
 }
 
-hol_err hol_light_prepare(const hol_frame_desc *f, hol_light_frame *out)
+int hol_light_firefly(hol_tile t, const hol_tile_content *c, double cell_m, double time_s,
+                      double out_xzh[3])
+{
+    if (c->object != HOL_OBJ_CREEK && c->object != HOL_OBJ_SPRING &&
+        c->object != HOL_OBJ_POOL && c->object != HOL_OBJ_FLOWERS)
+        return 0;
+    uint64_t h = hol_tile_hash(t) * 0x9e3779b97f4a7c15ull;
+    double u[5];
+    for (int i = 0; i < 5; i++)
+        u[i] = (double)((h >> (12 * i)) & 0xfff) / 4095.0;
+    double period = 5 + 4 * u[3], ph = 2 * HOL__PI * u[4];
+    double a = 2 * HOL__PI * time_s / period + ph;
+    out_xzh[0] = (u[0] - 0.5) * 0.6 * cell_m + 0.08 * (cos(a) - cos(ph));
+    out_xzh[1] = (u[1] - 0.5) * 0.6 * cell_m + 0.08 * (sin(a) - sin(ph));
+    out_xzh[2] = 0.45 + 0.3 * u[2] + 0.05 * sin(2 * a);
+    return 1;
+}
+
+/* Light i at the point of (x, z) metres, h up, in the frame fr of a tile. */
+static void hol__put(hol_light_frame *o, const double fr[9], double x, double z, double h)
+{
+    double p[3];
+    hol_light_point(o, x, z, p);
+    for (int r = 0; r < 3; r++)
+        o->pos[o->n][r] = fr[3 * r] * p[0] + fr[3 * r + 1] * p[1] + fr[3 * r + 2] * p[2];
+    o->h[o->n] = h;
+    o->ssin[o->n] = -2;
+    memset(o->sd[o->n], 0, sizeof o->sd[0]);
+}
+
+/* A lantern's spot: its direction in its tile's frame fr (see the contract). */
+static void hol__spot(hol_light_frame *o, const double fr[9], int spot)
+{
+    if (spot < 1 || spot > 5)
+        return;
+    double tilt = (spot == 5 ? 90 : HOL_LIGHT_SPOT_TILT_DEG) * HOL__PI / 180;
+    o->ssin[o->n] = sin(tilt);
+    if (spot == 5)
+        return;
+    /* heading +y turned clockwise (towards +x) by spot - 1 quarter turns */
+    static const double dx[4] = {0, 1, 0, -1}, dy[4] = {1, 0, -1, 0};
+    double k = cos(tilt) * o->metres_per_unit;
+    for (int r = 0; r < 3; r++)
+        o->sd[o->n][r] = k * (fr[3 * r] * dx[spot - 1] + fr[3 * r + 1] * dy[spot - 1]);
+}
+
+/* The fireflies of the world's tiles within HOL_LIGHT_FF_STEPS steps of
+ * the user's (breadth first: the nearest first, up to HOL_LIGHT_MAX_FF). */
+static void hol__fireflies(const hol_frame_desc *f, const struct hol_world *w,
+                           hol_light_frame *o)
+{
+    enum { NT = 256 };
+    hol_tile seen[NT];
+    int n = 0, head = 0, level_end = 1, depth = 0, nff = 0;
+    seen[n++] = f->user.tile;
+    while (head < n && nff < HOL_LIGHT_MAX_FF) {
+        if (head == level_end) {
+            if (++depth > HOL_LIGHT_FF_STEPS)
+                break;
+            level_end = n;
+        }
+        hol_tile t = seen[head++];
+        for (int e = 0; e < 4 && depth < HOL_LIGHT_FF_STEPS; e++) {
+            hol_tile nb;
+            int dup = 0;
+            if (hol_tile_step(t, e, &nb, NULL) || n >= NT)
+                continue;
+            for (int i = 0; i < n && !dup; i++)
+                dup = hol_tile_eq(seen[i], nb);
+            if (!dup)
+                seen[n++] = nb;
+        }
+        hol_tile_content c;
+        double xzh[3], fr[9];
+        if (hol_world_peek(w, t, &c) || !hol_light_firefly(t, &c, o->cell_m, f->time_s, xzh) ||
+            hol_hyper_frame(f->user.tile, f->user.orient, t, fr))
+            continue;
+        hol__put(o, fr, xzh[0], xzh[1], xzh[2]);
+        o->ff[o->n++] = 1;
+        o->fx = o->fx ? o->fx : 1;
+        nff++;
+    }
+}
+
+hol_err hol_light_prepare(const hol_frame_desc *f, const struct hol_world *w,
+                          hol_light_frame *out)
 {
     memset(out, 0, sizeof *out);
     double m = f->cell_m > 0 ? f->cell_m : 1.0;
@@ -72,11 +143,14 @@ hol_err hol_light_prepare(const hol_frame_desc *f, hol_light_frame *out)
         double fr[9];
         if (hol_hyper_frame(f->user.tile, f->user.orient, f->lanterns[i], fr))
             continue;
-        out->pos[out->n][0] = fr[2];
-        out->pos[out->n][1] = fr[5];
-        out->pos[out->n][2] = fr[8];
+        hol__put(out, fr, 0, 0, HOL_LIGHT_HEIGHT_M);
+        hol__spot(out, fr, f->lantern_spot[i]);
+        if (out->ssin[out->n] > -1.5)
+            out->fx = 2;
         out->n++;
     }
+    if (f->fireflies && w)
+        hol__fireflies(f, w, out);
     return HOL_OK;
 }
 

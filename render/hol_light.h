@@ -41,15 +41,40 @@
  *   sinh x), the window and inverse square from d^2: the same numbers.
  * - A lantern hangs HOL_LIGHT_HEIGHT_M over its tile's centre.
  * - Which lights: hol_light_tile gives a tile up to HOL_LIGHT_PER_TILE
- *   lanterns, the nearest to its centre among those whose floor distance to
- *   the centre is under R plus the tile's circumradius (so every lantern
+ *   lights, the nearest to its centre among those whose floor distance to
+ *   the centre is under R plus the tile's circumradius (so every light
  *   that reaches some point of the tile is chosen while at most 4 do).
+ * - Fireflies (f->fireflies, at dusk and night): over every creek, spring,
+ *   pool and flower tile within HOL_LIGHT_FF_STEPS steps of the user's
+ *   (the nearest HOL_LIGHT_MAX_FF), one small light; its place in the
+ *   tile's own frame comes from the tile's address (hol_tile_hash), as the
+ *   world's other fixed choices (hol_light_firefly): an offset of up to
+ *   0.3 cell from the centre, 0.45..0.75 m up, circling 0.08 m around it
+ *   (period 5..9 s by f->time_s; time 0 is the resting place). A firefly
+ *   is a light like a lantern (the same falloff, distance and choice of
+ *   four a tile) with its own height and a weight HOL_LIGHT_FF_WEIGHT in
+ *   its own colour (yellow-green, the shader's u_fcol).
+ * - Spots (f->lantern_spot[k] != 0): the lantern's light only in a cone
+ *   around its direction, given in the lantern tile's own frame: 1..4 its
+ *   heading turned k - 1 quarter turns clockwise and tilted
+ *   HOL_LIGHT_SPOT_TILT_DEG below the horizon, 5 straight down. The frame
+ *   takes that tangent to the user's frame (pos's tangent sd, metres per
+ *   unit folded in), the tile's frame to the drawing tile's. For a point P
+ *   at true distance d, floor distance x, height difference dh below the
+ *   light: cos(angle) = (x_m <u, t> + sin(tilt) dh) / d, t the unit
+ *   tangent at the light of the geodesic towards P (= (P + <P,L> L) /
+ *   sinh x on the hyperboloid, (P - L)/|P - L| flat), u the direction's
+ *   horizontal part (|u| = cos tilt): the geodesic direction from the
+ *   light in the light's frame, the same numbers as the distance. The
+ *   light is then multiplied by smoothstep(cos OUTER, cos INNER, cos
+ *   angle) (HOL_LIGHT_SPOT_*_DEG).
  */
 #ifndef HOL_LIGHT_H
 #define HOL_LIGHT_H
 
 #include "../core/hol_err.h"
 #include "../core/hol_room.h"
+#include "../core/hol_world.h"
 #include "hol_render.h"
 
 #define HOL_LIGHT_PER_TILE 4
@@ -57,6 +82,15 @@
 #define HOL_LIGHT_HEIGHT_M 1.3
 #define HOL_LIGHT_D0_M 1.0
 #define HOL_LIGHT_PHYS 0.5
+#define HOL_LIGHT_MAX_FF 16
+#define HOL_LIGHT_MAX (HOL_RENDER_MAX_LANTERNS + HOL_LIGHT_MAX_FF)
+#define HOL_LIGHT_FF_STEPS 3
+#define HOL_LIGHT_FF_WEIGHT 0.15
+#define HOL_LIGHT_SPOT_TILT_DEG 45.0
+#define HOL_LIGHT_SPOT_OUTER_DEG 35.0
+#define HOL_LIGHT_SPOT_INNER_DEG 25.0
+
+struct hol_world;
 
 typedef struct hol_light_frame {
     int flat;                 /* {4,4} */
@@ -69,14 +103,32 @@ typedef struct hol_light_frame {
     double circum_m;          /* a tile's circumradius in metres */
     double eye[3];            /* the eye's point (user frame) */
     double eye_h;             /* its height, metres */
-    int n;                    /* lanterns placed (within reach of tiles) */
-    double pos[HOL_RENDER_MAX_LANTERNS][3]; /* their points, user frame */
+    int n;                    /* lights placed (lanterns, then fireflies) */
+    double pos[HOL_LIGHT_MAX][3]; /* their points, user frame */
+    double h[HOL_LIGHT_MAX];      /* their heights, metres */
+    uint8_t ff[HOL_LIGHT_MAX];    /* 1: a firefly */
+    double sd[HOL_LIGHT_MAX][3];  /* a spot's horizontal direction, a tangent
+                                     at pos (user frame) of length
+                                     cos(tilt) * metres_per_unit; 0 for
+                                     down or no spot */
+    double ssin[HOL_LIGHT_MAX];   /* a spot's sin(tilt); -2: no spot */
+    int fx;                       /* 2: a spot is placed, 1: fireflies but
+                                     no spot, 0: neither (the renderer's
+                                     HOL_FX programs) */
 } hol_light_frame;
 
-/* The frame's lights from f (the user, the cell, the eye, the lanterns).
- * A lantern whose tile is too far from the user's for a frame
+/* The frame's lights from f (the user, the cell, the eye, the lanterns and
+ * their spots; with f->fireflies and a world, the fireflies of its tiles).
+ * A light whose tile is too far from the user's for a frame
  * (hol_hyper_frame fails) is dropped. HOL_EARG: a cell outside 0.5..1.5. */
-hol_err hol_light_prepare(const hol_frame_desc *f, hol_light_frame *out);
+hol_err hol_light_prepare(const hol_frame_desc *f, const struct hol_world *w,
+                          hol_light_frame *out);
+
+/* Tile t's firefly at time_s: 1 and its place (x, z metres in the tile's
+ * own frame, as the tile meshes; height in metres) when content c has one
+ * (creek, spring, pool or flowers), else 0. */
+int hol_light_firefly(hol_tile t, const hol_tile_content *c, double cell_m, double time_s,
+                      double out_xzh[3]);
 
 /* Tile t's frame in the user's frame (row-major 3x3) and its lights
  * (indices into lf->pos, nearest first); returns how many (0..4), or -1

@@ -16,6 +16,9 @@
 
 #define HOL__STR2(x) #x
 #define HOL__STR(x) HOL__STR2(x)
+/* cos of HOL_LIGHT_SPOT_OUTER_DEG and _INNER_DEG (35 and 25 degrees) */
+#define HOL__SPOT_COS_O 0.8191520443
+#define HOL__SPOT_COS_I 0.9063077870
 
 /* GPU memory layout. The static buffers hold the room meshes and a pool of
  * tile meshes that stay resident across frames; the dynamic buffers get the
@@ -65,6 +68,8 @@ typedef struct hol__item {
     float wedge[4]; /* w0, w1 (x, z) when the view has wedges */
     int8_t nl;      /* lit tiles: lights (-1: no hyperbolic frame) */
     float tl[4][4]; /* u_tl: its lights and the eye in the tile's own frame */
+    float tx[7][4]; /* u_tx: the spots' tangents (3) and sines, heights,
+                       lantern and firefly weights (hol__item_lights) */
     uint32_t first, count; /* index range */
     float model[16];
 } hol__item;
@@ -73,7 +78,7 @@ typedef struct hol__item {
 typedef struct hol__prog {
     GLuint prog;
     GLint u_vp, u_model, u_mode, u_id, u_eye, u_fog, u_fogd, u_lin, u_wedge, u_wmode;
-    GLint u_light, u_klein, u_mpu2, u_tl, u_eyeh, u_lonly;
+    GLint u_light, u_klein, u_mpu2, u_tl, u_eyeh, u_lonly, u_tx;
 } hol__prog;
 
 struct hol_render {
@@ -81,14 +86,17 @@ struct hol_render {
     hol_gl gl;
     hol_scene *scene;
     GLuint vao[2], vbo[2], ibo[2]; /* [0] static, [1] dynamic */
-    hol__prog progs[16]; /* [0] day (the picture without lights), [1] lit
+    hol__prog progs[48]; /* [0] day (the picture without lights), [1] lit
                             tiles, [2] lit room meshes (no tile code), [3]
                             lit tiles of the flat {4,4}; [4 + k] the same
                             able to discard outside a branch's wedge (the
                             others have no discard, so llvmpipe tests depth
                             before shading); [8 + k] the lit ones at night
                             ([k] at dusk: the sky's colours are constants,
-                            uniforms cost llvmpipe a load per pixel) */
+                            uniforms cost llvmpipe a load per pixel);
+                            [16 + k] the lit tiles' with fireflies (HOL_FX
+                            1: per-light heights and weights), [32 + k] and
+                            spots (HOL_FX 2): only frames that have them pay */
     hol__prog *pg;      /* this frame's */
     hol_light_frame lights; /* this frame's (at dusk and night) */
     hol_mesh dyn;     /* per-frame geometry */
@@ -136,6 +144,10 @@ static const char *hol__vs =
     "uniform vec4 u_tl[4];\n"
     "out vec4 v_L;\n"
     "out float v_Le;\n"
+    "#if HOL_FX == 2\n"
+    "uniform vec4 u_tx[7];\n"
+    "out vec4 v_U;\n" /* <u, (k, 1)>: a spot's direction, affine too */
+    "#endif\n"
     "#endif\n"
     "void main() {\n"
     "  vec4 w = u_model * vec4(a_pos, 1.0);\n"
@@ -145,6 +157,9 @@ static const char *hol__vs =
     "#if HOL_LIT == 1\n"
     "  v_L = u_tl[2] - v_loc.x * u_tl[0] - v_loc.z * u_tl[1];\n"
     "  v_Le = u_tl[3].z - v_loc.x * u_tl[3].x - v_loc.z * u_tl[3].y;\n"
+    "#if HOL_FX == 2\n"
+    "  v_U = v_loc.x * u_tx[0] + v_loc.z * u_tx[1] - u_tx[2];\n"
+    "#endif\n"
     "#endif\n"
     "  v_wpos = w.xyz;\n"
     "  v_nrm = mat3(u_model) * a_nrm;\n"
@@ -180,6 +195,14 @@ static const char *hol__fs =
     "#if HOL_LIT == 1\n"
     "in vec4 v_L;\n"
     "in float v_Le;\n"
+    "#if HOL_FX\n"
+    "uniform vec4 u_tx[7];\n"
+    "#endif\n"
+    "#if HOL_FX == 2\n"
+    "in vec4 v_U;\n"
+    "#else\n"
+    "const vec4 v_U = vec4(0.0);\n"
+    "#endif\n"
     "#endif\n"
     /* the sky (docs/rendering.md#lighting): ambient, sun and lantern colours */
     "#if HOL_NIGHT\n"
@@ -187,7 +210,7 @@ static const char *hol__fs =
     "#else\n"
     "const vec3 u_amb = vec3(0.30, 0.26, 0.28), u_sun = vec3(0.28, 0.17, 0.11);\n"
     "#endif\n"
-    "const vec3 u_lcol = vec3(3.0, 2.25, 1.25);\n"
+    "const vec3 u_lcol = vec3(3.0, 2.25, 1.25), u_fcol = vec3(1.4, 2.0, 0.6);\n"
     "#endif\n"
     "out vec4 o_col;\n"
     "vec4 hol_out(vec3 c) {\n"
@@ -196,13 +219,57 @@ static const char *hol__fs =
     "  return vec4(mix(c / 12.92, pow((c + 0.055) / 1.055, vec3(2.4)),\n"
     "                  step(vec3(0.04045), c)), 1.0);\n"
     "}\n"
-    "#if HOL_LIT\n"
+    "#if HOL_LIT == 1\n"
     /* all four slots at once (an empty slot lies far beyond the radius).
      * k the fragment's Klein point; hyperbolic: g = 1/sqrt(1 - |k|^2) and
      * cosh x = g L, L = -<(k, 1), l>_L = l.z - k.l.xy, so the squared chord
      * c^2 = 2 (cosh x - 1) = 2 g L - 2, sinh x = sqrt(c^2 (1 + c^2/4)),
      * x = log(cosh x + sinh x); flat: the slot's z is |l|^2/2 and
      * c^2 = |k - l|^2 = 2 L + |k|^2, x = c */
+    "#if HOL_FX\n"
+    /* per slot: u_tx[4] the light's height, [5] a lantern's weight, [6] a
+     * firefly's (the second sum, ff); a spot (u_tx[3] its sin(tilt), -2:
+     * none) multiplies by its cone: cos(angle) = (x <u,t> + sin(tilt) dh)
+     * / d, x <u,t> = x <u,p> / sinh x = g x U / sh (flat: U), metres per
+     * unit folded into u (render/hol_light.h) */
+    "float hol_lights(vec4 L, vec4 U, float g, float o, float y, float nup, out float ff) {\n"
+    "  vec4 c2 = max(2.0 * g * L + o, 0.0);\n"
+    "  vec4 dh = u_tx[4] - y;\n"
+    "#if HOL_FLAT\n"
+    "  vec4 d2 = c2 * u_mpu2 + dh * dh;\n"
+    "  vec4 den = 1.0 + d2 * (1.0 / (" HOL__STR(HOL_LIGHT_D0_M) " * " HOL__STR(HOL_LIGHT_D0_M) "));\n"
+    "  vec4 num = vec4(1.0);\n"
+    "#else\n"
+    /* s = x / sinh x as one quotient with the inverse square: (1 - B + B s)
+     * / (1 + d^2/D0^2) = ((1 - B) sh + B x) / (sh (1 + d^2/D0^2)), sh and x
+     * nudged by 1e-6 so that s is 1 at the light's foot */
+    "  vec4 sh = sqrt(c2 + 0.25 * c2 * c2) + 1e-6;\n"
+    "  vec4 x = log(1.0 + 0.5 * c2 + sh);\n"
+    "  vec4 d2 = x * x * u_mpu2 + dh * dh;\n"
+    "  vec4 num = (1.0 - " HOL__STR(HOL_LIGHT_PHYS) ") * sh + " HOL__STR(HOL_LIGHT_PHYS) " * x;\n"
+    "  vec4 den = sh * (1.0 + d2 * (1.0 / (" HOL__STR(HOL_LIGHT_D0_M) " * " HOL__STR(HOL_LIGHT_D0_M) ")));\n"
+    "#endif\n"
+    "  vec4 w = max(1.0 - d2 * (1.0 / (" HOL__STR(HOL_LIGHT_RADIUS_M) " * " HOL__STR(HOL_LIGHT_RADIUS_M) ")), 0.0);\n"
+    "  vec4 id = inversesqrt(max(d2, 1e-8));\n"
+    "  vec4 f = w * w * num / den;\n"
+    /* the cone: only the programs of frames with a spot (HOL_FX 2) */
+    "#if HOL_FX == 2\n"
+    "  {\n"
+    "#if HOL_FLAT\n"
+    "    vec4 hz = U;\n"
+    "#else\n"
+    "    vec4 hz = g * x * U / sh;\n"
+    "#endif\n"
+    "    vec4 cone = smoothstep(vec4(" HOL__STR(HOL__SPOT_COS_O) "), vec4(" HOL__STR(HOL__SPOT_COS_I) "),\n"
+    "                           (hz + u_tx[3] * dh) * id);\n"
+    "    f *= mix(cone, vec4(1.0), step(u_tx[3], vec4(-1.5)));\n"
+    "  }\n"
+    "#endif\n"
+    "  f *= 0.3 + (0.7 * max(nup, 0.0)) * max(dh, 0.0) * id;\n"
+    "  ff = dot(f, u_tx[6]);\n"
+    "  return dot(f, u_tx[5]);\n"
+    "}\n"
+    "#else\n"
     "float hol_lights(vec4 L, float g2, float o, float dh, float nup) {\n"
     "  vec4 c2 = max(g2 * L + o, 0.0);\n"
     "#if HOL_FLAT\n"
@@ -223,6 +290,7 @@ static const char *hol__fs =
     "  vec4 f = w * w * num / den;\n"
     "  return dot(f, 0.3 + (0.7 * max(nup, 0.0) * max(dh, 0.0)) * inversesqrt(max(d2, 1e-8)));\n"
     "}\n"
+    "#endif\n"
     "#endif\n"
     "void main() {\n"
     "#if HOL_WEDGE\n"
@@ -253,7 +321,7 @@ static const char *hol__fs =
     "  float f = exp(-dist * dist);\n"
     "  o_col = hol_out(mix(u_fog, c, f));\n"
     "#else\n"
-    "  float lam = 0.0, de2 = dot(toeye, toeye);\n"
+    "  float lam = 0.0, lamf = 0.0, de2 = dot(toeye, toeye);\n"
     "#if HOL_LIT == 1\n"
     "  if (u_light == 1) {\n"
     "    vec2 k = v_loc.xz;\n"
@@ -263,7 +331,11 @@ static const char *hol__fs =
     "#else\n"
     "    float g = inversesqrt(max(1.0 - kk, 1e-6)), o = -2.0;\n"
     "#endif\n"
+    "#if HOL_FX\n"
+    "    lam = hol_lights(v_L, v_U, g, o, v_loc.y, n.y, lamf);\n"
+    "#else\n"
     "    lam = hol_lights(v_L, 2.0 * g, o, " HOL__STR(HOL_LIGHT_HEIGHT_M) " - v_loc.y, n.y);\n"
+    "#endif\n"
     /* fog: the chord 2 sinh(x/2) of the floor distance x (a function of
      * the true distance, within 4 % of it to 3 m; no log per pixel) */
     "    float ce2 = max(2.0 * g * v_Le + o, 0.0);\n"
@@ -273,10 +345,10 @@ static const char *hol__fs =
     "#endif\n"
     "  float f = exp(-de2 * (u_fogd * u_fogd));\n"
     "  if (u_lonly == 1) {\n"
-    "    o_col = vec4(min(lam, 1.0), f, 0.0, 1.0);\n"
+    "    o_col = vec4(min(lam, 1.0), f, min(lamf, 1.0), 1.0);\n"
     "    return;\n"
     "  }\n"
-    "  vec3 c = v_col.rgb * (u_amb + u_sun * d + u_lcol * lam);\n"
+    "  vec3 c = v_col.rgb * (u_amb + u_sun * d + u_lcol * lam + u_fcol * lamf);\n"
     "  if (abs(v_col.a - 100.0 / 255.0) < 0.01) c = v_col.rgb * 1.2;\n" /* glass */
     "  o_col = hol_out(mix(u_fog, c, f));\n"
     "#endif\n"
@@ -301,13 +373,14 @@ static GLuint hol__shader(const hol_gl *gl, GLenum type, int n, const char *cons
 static int hol__make_prog(hol_render *r, hol__prog *pg, int k)
 {
     char pre[] = "#version 300 es\n#define HOL_LIT 0\n#define HOL_FLAT 0\n#define HOL_WEDGE 0\n"
-                 "#define HOL_NIGHT 0\n";
+                 "#define HOL_NIGHT 0\n#define HOL_FX 0\n";
     static const char lit[4] = {'0', '1', '2', '1'};
     pre[sizeof "#version 300 es\n#define HOL_LIT " - 1] = lit[k % 4];
     pre[sizeof "#version 300 es\n#define HOL_LIT 0\n#define HOL_FLAT " - 1] = k % 4 == 3 ? '1' : '0';
     pre[sizeof "#version 300 es\n#define HOL_LIT 0\n#define HOL_FLAT 0\n#define HOL_WEDGE " - 1] =
         k % 8 >= 4 ? '1' : '0';
-    pre[sizeof pre - 3] = k >= 8 ? '1' : '0';
+    pre[sizeof pre - 3 - (sizeof "#define HOL_FX 0\n" - 1)] = k % 16 >= 8 ? '1' : '0';
+    pre[sizeof pre - 3] = (char)('0' + k / 16);
     const char *fsrc[2] = {pre, hol__fs};
     const char *vsrc[2] = {fsrc[0], hol__vs};
     GLuint vs = hol__shader(&r->gl, GL_VERTEX_SHADER, 2, vsrc);
@@ -332,11 +405,11 @@ static int hol__make_prog(hol_render *r, hol__prog *pg, int k)
     static const char *const names[] = {"u_vp", "u_model", "u_mode", "u_id", "u_eye",
                                         "u_fog", "u_fogd", "u_lin", "u_wedge", "u_wmode",
                                         "u_light", "u_klein", "u_mpu2", "u_tl", "u_eyeh",
-                                        "u_lonly"};
+                                        "u_lonly", "u_tx"};
     GLint *loc[] = {&pg->u_vp, &pg->u_model, &pg->u_mode, &pg->u_id, &pg->u_eye,
                     &pg->u_fog, &pg->u_fogd, &pg->u_lin, &pg->u_wedge, &pg->u_wmode,
                     &pg->u_light, &pg->u_klein, &pg->u_mpu2, &pg->u_tl, &pg->u_eyeh,
-                    &pg->u_lonly};
+                    &pg->u_lonly, &pg->u_tx};
     for (size_t i = 0; i < sizeof loc / sizeof loc[0]; i++)
         *loc[i] = r->gl.GetUniformLocation(pg->prog, names[i]);
     return 0;
@@ -374,8 +447,8 @@ hol_err hol_render_create(const hol_render_desc *desc, hol_render **out)
         return gerr;
     }
     int bad = 0;
-    for (int k = 0; k < 16; k++)
-        if (k % 4 || k < 8) /* day has no night variant */
+    for (int k = 0; k < 48; k++)
+        if (k < 16 ? k % 4 || k < 8 : k % 2) /* day has no night variant, FX only tiles */
             bad = bad || hol__make_prog(r, &r->progs[k], k);
     if (bad) {
         hol_render_destroy(r);
@@ -422,7 +495,7 @@ void hol_render_destroy(hol_render *r)
 {
     if (!r)
         return;
-    for (int k = 0; k < 16; k++)
+    for (int k = 0; k < 48; k++)
         if (r->progs[k].prog)
             r->gl.DeleteProgram(r->progs[k].prog);
     if (r->vao[0])
@@ -725,6 +798,22 @@ static void hol__tile_slot(const double inv[9], const double p[3], int flat, flo
     out[2] = (float)(flat ? (q[0] * q[0] + q[1] * q[1]) / 2 : q[2]);
 }
 
+/* A spot's tangent u at light point l (user frame) in the tile's own frame
+ * (the vertex shader's U = u.xy k - u.z): u itself (its z the Lorentz
+ * part) on the hyperboloid; flat, u.z = u.xy . l, so U = u . (k - l). */
+static void hol__tile_tangent(const double inv[9], const double u[3], const double l[3],
+                              int flat, float out[3])
+{
+    double a[3], b[3];
+    for (int i = 0; i < 3; i++) {
+        a[i] = inv[3 * i] * u[0] + inv[3 * i + 1] * u[1] + (flat ? 0 : inv[3 * i + 2] * u[2]);
+        b[i] = inv[3 * i] * l[0] + inv[3 * i + 1] * l[1] + inv[3 * i + 2] * l[2];
+    }
+    out[0] = (float)a[0];
+    out[1] = (float)a[1];
+    out[2] = (float)(flat ? a[0] * b[0] + a[1] * b[1] : a[2]);
+}
+
 /* A lit tile's lights and the eye in the tile's own frame (u_tl: the
  * lights' x, y, z as four-slot vectors, then the eye's point; an empty
  * slot lies far beyond the radius), so the shader needs no matrix. */
@@ -747,12 +836,22 @@ static void hol__item_lights(hol_render *r, hol__item *it, hol_tile t)
         inv[6] = inv[7] = 0;
         inv[8] = 1;
     }
+    const hol_light_frame *lf = &r->lights;
     for (int k = 0; k < HOL_LIGHT_PER_TILE; k++) {
-        float v[3] = {0, 0, 1e4f};
-        if (k < n)
-            hol__tile_slot(inv, r->lights.pos[idx[k]], flat, v);
-        for (int j = 0; j < 3; j++)
+        float v[3] = {0, 0, 1e4f}, u[3] = {0, 0, 0};
+        int i = k < n ? idx[k] : -1;
+        if (i >= 0) {
+            hol__tile_slot(inv, lf->pos[i], flat, v);
+            hol__tile_tangent(inv, lf->sd[i], lf->pos[i], flat, u);
+        }
+        for (int j = 0; j < 3; j++) {
             it->tl[j][k] = v[j];
+            it->tx[j][k] = u[j];
+        }
+        it->tx[3][k] = i >= 0 ? (float)lf->ssin[i] : -2.0f;
+        it->tx[4][k] = i >= 0 ? (float)lf->h[i] : (float)HOL_LIGHT_HEIGHT_M;
+        it->tx[5][k] = i >= 0 && !lf->ff[i] ? 1.0f : 0.0f;
+        it->tx[6][k] = i >= 0 && lf->ff[i] ? (float)HOL_LIGHT_FF_WEIGHT : 0.0f;
     }
     hol__tile_slot(inv, r->lights.eye, flat, it->tl[3]);
     it->tl[3][3] = 0;
@@ -987,7 +1086,7 @@ static hol_err hol__build(hol_render *r, const hol_frame_desc *f)
     hol_err err = hol_view_build(&f->user, f->cam.eye[0] / m, f->cam.eye[2] / m, eu, &r->view);
     if (err)
         return err;
-    if (f->lighting && (err = hol_light_prepare(f, &r->lights)))
+    if (f->lighting && (err = hol_light_prepare(f, r->desc.world, &r->lights)))
         return err;
     hol_mesh_clear(&r->dyn);
     r->nitems = 0;
@@ -1070,6 +1169,8 @@ static hol__prog *hol__prog_of(hol_render *r, const hol_frame_desc *f, int kind)
         kind = 3;
     if (kind && f->lighting == HOL_RENDER_NIGHT)
         kind += 8;
+    if (kind % 2)
+        kind += 16 * r->lights.fx;
     return &r->progs[kind + (r->view.wedges ? 4 : 0)];
 }
 
@@ -1223,6 +1324,7 @@ static void hol__item_uniforms(hol_render *r, const hol__item *it)
     if (it->nl < 0)
         return;
     r->gl.Uniform4fv(r->pg->u_tl, 4, &it->tl[0][0]);
+    r->gl.Uniform4fv(r->pg->u_tx, 7, &it->tx[0][0]);
 }
 
 /* Execute the sorted queue, skipping redundant state changes. */

@@ -44,8 +44,10 @@
  *   per tile on the CPU light it by the true distance in H^2 x E, and fog
  *   follows the true distance from the eye; the room's own meshes get the
  *   sky's ambient light and fog by room distance. A lantern tile shows a
- *   lantern (its glass drawn unlit). HOL_RENDER_LIGHT_ONLY (tests) writes a
- *   tile fragment as (the lanterns' sum, the fog factor, 0).
+ *   lantern (its glass drawn unlit). Fireflies (f->fireflies) and spots
+ *   (f->lantern_spot) join the same choice (render/hol_light.h).
+ *   HOL_RENDER_LIGHT_ONLY (tests) writes a tile fragment as (the lanterns'
+ *   sum, the fog factor, the fireflies' sum).
  * - World content: with desc.world the tiles' content (biome, objects,
  *   creeks, logs, trees) comes from hol_world_get; without it, a plain
  *   biome-tinted floor from hol_tile_hash.
@@ -112,7 +114,8 @@ enum {
                                      never takes the objective, steps, time,
                                      result or prompt with it */
     HOL_RENDER_LIGHT_ONLY = 4096, /* tests, at dusk and night: a tile's
-                                     pixel is (lanterns' sum, fog factor, 0)
+                                     pixel is (lanterns' sum, fog factor,
+                                     fireflies' sum)
                                      (docs/rendering.md#lighting) */
     HOL_RENDER_PANEL = 2048       /* a headset's eye: the HUD text (and the
                                      minimap unless in the hand) on a panel
@@ -210,6 +213,13 @@ typedef struct hol_frame_desc {
     int lighting;
     int nlanterns;
     hol_tile lanterns[HOL_RENDER_MAX_LANTERNS];
+    /* A lantern's spot (render/hol_light.h): 0 a round lantern, 1..4 a spot
+     * towards its tile's heading turned k - 1 quarter turns clockwise and
+     * tilted 45 degrees down, 5 a spot straight down. */
+    uint8_t lantern_spot[HOL_RENDER_MAX_LANTERNS];
+    /* 1: fireflies over the creek and flower tiles near the user at dusk
+     * and night (with desc.world; they circle with time_s). */
+    int fireflies;
     /* The headset's panel (HOL_RENDER_PANEL): its centre panel_pos (room
      * coordinates), turned by the unit quaternion panel_orient (x, y, z, w;
      * unturned it faces +z, up +y), one font pixel panel_px metres (0:

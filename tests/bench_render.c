@@ -132,7 +132,7 @@ static double light_choice_ms(hol_render *r, const hol_frame_desc *f, int n, dou
     int sum = 0, four = 0, tiles = 0;
     double t0 = thread_ms();
     for (int k = 0; k < n; k++) {
-        hol_light_prepare(f, &lf);
+        hol_light_prepare(f, NULL, &lf);
         for (int b = 0; b < v->nbranches; b++) {
             double fr[9];
             int idx[HOL_LIGHT_PER_TILE];
@@ -157,8 +157,11 @@ static int bench_lighting(hol_render *r)
 {
     int over = 0;
     printf("  dusk and night: 16 lanterns on the tiles in view, the corner view, night / day\n");
-    printf("  %-8s %8s %8s %6s %10s %12s %14s\n", "tiling", "day ms", "night ms", "ratio",
-           "dusk ms", "lights/tile", "choice ms");
+    printf("  (ff: the same night with fireflies, as the app draws it; spot: and every\n"
+           "  other lantern a spot, all in view)\n");
+    printf("  %-8s %8s %8s %6s %10s %12s %14s %8s %6s %8s %6s\n", "tiling", "day ms",
+           "night ms", "ratio", "dusk ms", "lights/tile", "choice ms", "ff ms", "ratio",
+           "spot ms", "ratio");
     static const int qs[2] = {5, 6};
     for (int i = 0; i < 2; i++) {
         hol_world *world;
@@ -194,7 +197,7 @@ static int bench_lighting(hol_render *r)
             if (!dup)
                 f.lanterns[f.nlanterns++] = v->branches[b].state.tile;
         }
-        double td[LFRAMES], tn[LFRAMES], tk[LFRAMES];
+        double td[LFRAMES], tn[LFRAMES], tk[LFRAMES], tf[LFRAMES], ts[LFRAMES];
         for (int w = 0; w < 2; w++) /* warm up */
             for (int l = 0; l < 3; l++) {
                 f.lighting = l;
@@ -213,10 +216,25 @@ static int bench_lighting(hol_render *r)
             if (hol_render_frame(r, &f, &st))
                 return 1;
             tk[k] = st.cpu_ms;
+            f.lighting = HOL_RENDER_NIGHT;
+            f.fireflies = 1;
+            if (hol_render_frame(r, &f, &st))
+                return 1;
+            tf[k] = st.cpu_ms;
+            for (int j = 0; j < f.nlanterns; j += 2)
+                f.lantern_spot[j] = (uint8_t)(j % 3 ? 5 : 1 + j % 4);
+            int e = hol_render_frame(r, &f, &st);
+            f.fireflies = 0;
+            memset(f.lantern_spot, 0, sizeof f.lantern_spot);
+            if (e)
+                return 1;
+            ts[k] = st.cpu_ms;
         }
         qsort(td, LFRAMES, sizeof td[0], cmp_d);
         qsort(tn, LFRAMES, sizeof tn[0], cmp_d);
         qsort(tk, LFRAMES, sizeof tk[0], cmp_d);
+        qsort(tf, LFRAMES, sizeof tf[0], cmp_d);
+        qsort(ts, LFRAMES, sizeof ts[0], cmp_d);
         double mean;
         int four, tiles;
         double choice = light_choice_ms(r, &f, 1000, &mean, &four, &tiles);
@@ -224,9 +242,12 @@ static int bench_lighting(hol_render *r)
         char name[16], per[32];
         snprintf(name, sizeof name, "{4,%d}", qs[i]);
         snprintf(per, sizeof per, "%.2f (%d/%d: 4)", mean, four, tiles);
-        printf("  %-8s %8.2f %8.2f %6.3f %10.2f %12s %14.4f\n", name, td[LFRAMES / 2],
-               tn[LFRAMES / 2], ratio, tk[LFRAMES / 2], per, choice);
-        over |= ratio > 1.3;
+        double fratio = tf[LFRAMES / 2] / td[LFRAMES / 2];
+        double sratio = ts[LFRAMES / 2] / td[LFRAMES / 2];
+        printf("  %-8s %8.2f %8.2f %6.3f %10.2f %12s %14.4f %8.2f %6.3f %8.2f %6.3f\n", name,
+               td[LFRAMES / 2], tn[LFRAMES / 2], ratio, tk[LFRAMES / 2], per, choice,
+               tf[LFRAMES / 2], fratio, ts[LFRAMES / 2], sratio);
+        over |= ratio > 1.3 || fratio > 1.3;
         hol_render_set_world(r, NULL);
         hol_world_destroy(world);
     }

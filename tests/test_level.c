@@ -118,6 +118,15 @@ static void test_lighting_lines(void **state)
     /* in {4,6} the addresses are {4,6}'s */
     assert_int_equal(parse("tiling 4 6\nmode explore\nplace lantern Nrr\n", &L, err), 0);
     assert_int_equal(hol_tile_q(L.lanterns[0]), 6);
+    /* spots: place lantern ADDRESS spot DIR (render/hol_light.h) */
+    assert_int_equal(parse("mode explore\nplace lantern N spot down\nplace lantern E\n"
+                           "place lantern S spot ahead\nplace lantern W spot left\n",
+                           &L, err), 0);
+    assert_int_equal(L.nlanterns, 4);
+    assert_int_equal(L.lantern_spot[0], 5);
+    assert_int_equal(L.lantern_spot[1], 0);
+    assert_int_equal(L.lantern_spot[2], 1);
+    assert_int_equal(L.lantern_spot[3], 4);
     static const struct {
         const char *text, *want;
         hol_err code;
@@ -128,6 +137,13 @@ static void test_lighting_lines(void **state)
         {"mode explore\nlighting day night\n", "line 2: unknown key or wrong value count",
          HOL_EPARSE},
         {"mode explore\nplace lantern Nx\n", "line 2: 'Nx' is not a canonical address",
+         HOL_EPARSE},
+        {"mode explore\nplace lantern N spot up\n",
+         "line 2: place lantern takes ADDRESS [spot ahead|right|back|left|down]", HOL_EPARSE},
+        {"mode explore\nplace lantern N cone down\n",
+         "line 2: place lantern takes ADDRESS [spot", HOL_EPARSE},
+        {"mode explore\nplace lantern N spot\n", "line 2: place lantern takes", HOL_EPARSE},
+        {"mode explore\nplace rock N spot down\n", "line 2: unknown key or wrong value count",
          HOL_EPARSE},
         {"mode explore\nplace lantern N\nplace lantern N\n",
          "line 3: a lantern on N is already placed on line 2", HOL_EARG},

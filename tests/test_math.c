@@ -152,6 +152,9 @@ static void test_log_acosh(void **state)
     check1("hol_acosh", hol_acosh, acoshl, 1, 2, 0, 2.0);
     check1("hol_acosh", hol_acosh, acoshl, 1, 1e300, 1, 2.0);
     check1("hol_acosh", hol_acosh, acoshl, 2, 100, 0, 2.0);
+    check1("hol_asinh", hol_asinh, asinhl, 1e-20, 1e300, 1, 2.0);
+    check1("hol_asinh", hol_asinh, asinhl, 0, 3, 0, 2.0);
+    check1("hol_asinh", hol_asinh, asinhl, -3, 0, 0, 2.0);
 }
 
 static int same_bits(double a, double b)

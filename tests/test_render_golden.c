@@ -53,6 +53,10 @@ typedef struct golden_view {
      * on the tiles that these room walks from the user's state reach */
     int lighting;
     const char *lanterns[4];
+    /* fireflies and spots (render/hol_light.h): hol_frame_desc.fireflies
+     * and each lantern's lantern_spot */
+    int fireflies;
+    int spot[4];
 } golden_view;
 
 /* the day views leave lighting and lanterns out (zero: day, none) */
@@ -94,6 +98,17 @@ static const golden_view views[] = {
      {"-", "WS", "SW", "SSW"}},
     {"q6_night", "NE", {2.4, 1.6, 0.6}, 135, -25, 90, 0, 6, 0, 0, 0, HOL_RENDER_NIGHT,
      {"-", "WS", "SW", "SSW"}},
+    /* the same with fireflies, the middle cell's lanterns spots (straight
+     * down; towards their tiles' heading turned a quarter) and the far one
+     * a spot towards its heading */
+    {"q5_dusk_fx", "NE", {2.4, 1.6, 0.6}, 135, -25, 90, 0, 5, 0, 0, 0, HOL_RENDER_DUSK,
+     {"-", "WS", "SW", "SSW"}, 1, {0, 5, 2, 1}},
+    {"q5_night_fx", "NE", {2.4, 1.6, 0.6}, 135, -25, 90, 0, 5, 0, 0, 0, HOL_RENDER_NIGHT,
+     {"-", "WS", "SW", "SSW"}, 1, {0, 5, 2, 1}},
+    {"q6_dusk_fx", "NE", {2.4, 1.6, 0.6}, 135, -25, 90, 0, 6, 0, 0, 0, HOL_RENDER_DUSK,
+     {"-", "WS", "SW", "SSW"}, 1, {0, 5, 2, 1}},
+    {"q6_night_fx", "NE", {2.4, 1.6, 0.6}, 135, -25, 90, 0, 6, 0, 0, 0, HOL_RENDER_NIGHT,
+     {"-", "WS", "SW", "SSW"}, 1, {0, 5, 2, 1}},
 };
 
 static render_fixture fx;
@@ -148,8 +163,10 @@ static void render_with(hol_render *rr, const golden_view *g, uint8_t *rgba)
         hol_room u = f.user;
         for (const char *p = g->lanterns[k]; *p && *p != '-'; p++)
             assert_int_equal(hol_room_step(&u, hol_dir_from_char(*p)), HOL_OK);
+        f.lantern_spot[f.nlanterns] = (uint8_t)g->spot[k];
         f.lanterns[f.nlanterns++] = u.tile;
     }
+    f.fireflies = g->fireflies;
     memcpy(f.cam.eye, g->eye, sizeof f.cam.eye);
     f.cam.yaw_deg = g->yaw;
     f.cam.pitch_deg = g->pitch;

@@ -37,6 +37,8 @@
 
 #include <cmocka.h>
 
+#pragma GCC diagnostic ignored "-Wmissing-field-initializers" /* cases without spots */
+
 #include "../core/hol_room.h"
 #include "../core/hol_tile.h"
 #include "../core/hol_world.h"
@@ -44,6 +46,7 @@
 #include "model.h"
 #include "render_fixture.h"
 #include "../render/hol_app_frame.h"
+#include "../render/hol_light.h"
 
 #define W 160
 #define H 120
@@ -56,6 +59,9 @@
 #define PHYS 0.5
 #define FOG_NIGHT 0.15
 #define FOG_DUSK 0.10
+#define SPOT_TILT 45.0
+#define SPOT_OUTER 35.0
+#define SPOT_INNER 25.0
 
 typedef struct light_case {
     const char *walk;
@@ -64,6 +70,7 @@ typedef struct light_case {
     double cell;
     const char *lanterns[4]; /* room walks from the user's state */
     int dusk;
+    int spot[4]; /* hol_frame_desc.lantern_spot of each */
 } light_case;
 
 static const light_case cases[] = {
@@ -74,6 +81,11 @@ static const light_case cases[] = {
     {"W", {0.3, 1.6, 1.2}, -100, -35, 8, 3, 3, 1, {"E", "N", NULL, NULL}, 0},
     {"-", {2.2, 1.6, 2.4}, 20, -30, 5, 5, 5, 1, {"N", "NN", "WW", "EN"}, 0},
     {"-", {1.0, 1.6, 1.1}, 200, -35, 6, 3, 3, 0.7, {"S", "E", "SW", NULL}, 1},
+    /* spots (lantern_spot): turned edges, straight down, with round ones */
+    {"-", {1.5, 1.6, 1.5}, 0, -35, 5, 3, 3, 1, {"N", "ES", "W", NULL}, 0, {3, 5, 2, 0}},
+    {"NE", {2.4, 1.6, 0.6}, 135, -30, 5, 3, 3, 1, {"W", "S", "WS", NULL}, 0, {1, 0, 4, 0}},
+    {"-", {1.4, 1.6, 1.6}, -60, -30, 6, 3, 3, 1, {"N", "EN", "W", "S"}, 0, {2, 3, 4, 1}},
+    {"-", {2.2, 1.6, 2.4}, 20, -30, 5, 5, 5, 1, {"N", "NN", "WW", "EN"}, 1, {5, 3, 1, 2}},
 };
 
 static render_fixture fx;
@@ -176,6 +188,8 @@ static void apply(model_mat f, const double v[3], double out[3])
 
 /* The model point (user frame) of the floor point p; 0 when the sight
  * line passes within 1e-9 of a vertex or p is off the room. */
+static double model_centre[3]; /* the centre of model_point's last cell */
+
 static int model_point(const light_case *c, const double p[2], double out[3])
 {
     double m = c->cell;
@@ -202,6 +216,7 @@ static int model_point(const light_case *c, const double p[2], double out[3])
     double h[3];
     klein_point(m, p[0] - (col + 0.5) * m, p[1] - (row + 0.5) * m, h);
     apply(f, h, out);
+    model_centre[0] = f.m[2], model_centre[1] = f.m[5], model_centre[2] = f.m[8];
     return 1;
 }
 
@@ -242,6 +257,10 @@ typedef struct scene {
     int n;
     double lant[4][3];     /* model points */
     double lroom[4][2];    /* room metres of the cell each walk ends in */
+    int spot[4];
+    double sdir[4][3];     /* a spot's unit horizontal direction: a tangent at
+                              lant (model frame) */
+    double sroom[4][2];    /* the same in room metres (east, north) */
     double eye[3];
 } scene;
 
@@ -273,6 +292,18 @@ static void make_scene(const light_case *c, scene *s)
         s->lant[s->n][2] = f.m[8];
         s->lroom[s->n][0] = (u.col + 0.5) * c->cell;
         s->lroom[s->n][1] = (u.row + 0.5) * c->cell;
+        /* the spot's direction: the tile's heading (room north at its cell
+         * turned clockwise by the state's orient), turned spot - 1 more */
+        s->spot[s->n] = c->spot[i];
+        s->f.lantern_spot[s->n] = (uint8_t)c->spot[i];
+        if (c->spot[i] >= 1 && c->spot[i] <= 4) {
+            int t = (u.orient + c->spot[i] - 1) % 4;
+            double e = t == 1 ? 1 : t == 3 ? -1 : 0, nn = t == 0 ? 1 : t == 2 ? -1 : 0;
+            for (int r = 0; r < 3; r++)
+                s->sdir[s->n][r] = f.m[3 * r] * e + f.m[3 * r + 1] * nn;
+            s->sroom[s->n][0] = e;
+            s->sroom[s->n][1] = nn;
+        }
         s->n++;
     }
     s->f.nlanterns = s->n;
@@ -288,6 +319,40 @@ static void render(scene *s, int flags, uint8_t *px)
     hol_render_read_rgba(fx.rnd, W, H, px);
 }
 
+static double smooth(double a, double b, double x)
+{
+    double t = (x - a) / (b - a);
+    t = t < 0 ? 0 : t > 1 ? 1 : t;
+    return t * t * (3 - 2 * t);
+}
+
+/* A spot's cone factor at model point h for lantern i (1: no spot): the
+ * unit tangent at the lantern of the geodesic towards h, (h - cosh(x) L) /
+ * sinh x on the hyperboloid ((h - L)/|h - L| flat), against the spot's
+ * direction; cos(angle) = (x_m cos(tilt) <u, t> + sin(tilt) HEIGHT) / d. */
+static double cone_model(const light_case *c, const scene *s, int i, const double h[3])
+{
+    if (!s->spot[i])
+        return 1;
+    const double *L = s->lant[i];
+    double fm = floor_m(c->cell, h, L), d = hypot(fm, HEIGHT);
+    double tilt = (s->spot[i] == 5 ? 90 : SPOT_TILT) * PI / 180, ut = 0;
+    if (s->spot[i] != 5 && fm > 1e-9) {
+        const double *u = s->sdir[i];
+        if (model_q == 4) {
+            double dx = h[0] - L[0], dy = h[1] - L[1];
+            ut = (u[0] * dx + u[1] * dy) / hypot(dx, dy);
+        } else {
+            double x = fm * model_edge() / c->cell, ch = cosh(x), sh = sinh(x);
+            double t[3] = {(h[0] - ch * L[0]) / sh, (h[1] - ch * L[1]) / sh,
+                           (h[2] - ch * L[2]) / sh};
+            ut = u[0] * t[0] + u[1] * t[1] - u[2] * t[2];
+        }
+    }
+    double ca = (fm * cos(tilt) * ut + sin(tilt) * HEIGHT) / d;
+    return smooth(cos(SPOT_OUTER * PI / 180), cos(SPOT_INNER * PI / 180), ca);
+}
+
 /* The model's (lanterns, fog) at a pixel; 0 when it is not checked. */
 static int model_pixel(const light_case *c, const scene *s, int x, int y, double out[2])
 {
@@ -297,7 +362,7 @@ static int model_pixel(const light_case *c, const scene *s, int x, int y, double
     double lam = 0;
     for (int i = 0; i < s->n; i++) {
         double fm = floor_m(c->cell, h, s->lant[i]);
-        lam += lantern_term(fm, fm * model_edge() / c->cell);
+        lam += lantern_term(fm, fm * model_edge() / c->cell) * cone_model(c, s, i, h);
     }
     double fe = chord_m(c->cell, h, s->eye), de = hypot(fe, c->eye[1]);
     double fd = de * (c->dusk ? FOG_DUSK : FOG_NIGHT);
@@ -345,6 +410,8 @@ static void test_flat_equals_euclid(void **state)
         {"-", {1.5, 1.6, 1.5}, 20, -40, 4, 3, 3, 1, {"N", "ES", "W", NULL}, 0},
         {"NE", {1.8, 1.6, 0.5}, 150, -35, 4, 3, 3, 0.7, {"W", "S", "WS", NULL}, 1},
         {"-", {2.3, 1.6, 2.6}, -20, -30, 4, 5, 5, 1, {"N", "NN", "WW", "EN"}, 0},
+        {"-", {1.5, 1.6, 1.5}, 20, -40, 4, 3, 3, 1, {"N", "ES", "W", NULL}, 0, {2, 5, 3, 0}},
+        {"NE", {1.8, 1.6, 0.5}, 150, -35, 4, 3, 3, 0.7, {"W", "S", "WS", NULL}, 1, {1, 4, 0, 0}},
     };
     static uint8_t px[W * H * 4];
     for (size_t k = 0; k < sizeof flat / sizeof flat[0]; k++) {
@@ -361,7 +428,18 @@ static void test_flat_equals_euclid(void **state)
                 double lam = 0;
                 for (int i = 0; i < s.n; i++) {
                     double dx = p[0] - s.lroom[i][0], dz = p[1] - s.lroom[i][1];
-                    lam += lantern_term(hypot(dx, dz), 0);
+                    double cone = 1, fm = hypot(dx, dz), d = hypot(fm, HEIGHT);
+                    if (s.spot[i] == 5) /* straight down */
+                        cone = smooth(cos(SPOT_OUTER * PI / 180), cos(SPOT_INNER * PI / 180),
+                                      HEIGHT / d);
+                    else if (s.spot[i]) { /* room metres: east, north = -z */
+                        double tl = SPOT_TILT * PI / 180;
+                        double ca = (cos(tl) * (dx * s.sroom[i][0] - dz * s.sroom[i][1]) +
+                                     sin(tl) * HEIGHT) / d;
+                        cone = smooth(cos(SPOT_OUTER * PI / 180), cos(SPOT_INNER * PI / 180),
+                                      ca);
+                    }
+                    lam += lantern_term(fm, 0) * cone;
                 }
                 double de = hypot(hypot(p[0] - c->eye[0], p[1] - c->eye[2]), c->eye[1]);
                 double fd = de * (c->dusk ? FOG_DUSK : FOG_NIGHT);
@@ -522,6 +600,7 @@ static void test_app_frame_carries_lights(void **state)
     v.head[1] = 1.6;
     v.lighting = HOL_LIGHT_DUSK;
     v.nlanterns = 2;
+    v.lantern_spot[1] = 5;
     assert_int_equal(hol_tile_parse("Nf", -1, &v.lanterns[0]), HOL_OK);
     assert_int_equal(hol_tile_parse("Wr", -1, &v.lanterns[1]), HOL_OK);
     hol_frame_desc f;
@@ -529,6 +608,164 @@ static void test_app_frame_carries_lights(void **state)
     assert_int_equal(f.lighting, HOL_RENDER_DUSK);
     assert_int_equal(f.nlanterns, 2);
     assert_true(hol_tile_eq(f.lanterns[1], v.lanterns[1]));
+    assert_int_equal(f.lantern_spot[0], 0);
+    assert_int_equal(f.lantern_spot[1], 5);
+}
+
+/* Fireflies: over creek, spring, pool and flower tiles only, fixed by the
+ * tile (the same place again), inside the tile, resting at time 0 and
+ * circling a little; at night (the app's frame) they light the floor in
+ * blue of HOL_RENDER_LIGHT_ONLY: the fireflies of the room's cells are
+ * where the model's walk puts them, and every floor pixel's blue is the
+ * model's light of the frame's fireflies (model distance and falloff, with
+ * their height and weight; a tile may hold at most 4 lights, so a test
+ * view keeps few). */
+static void test_fireflies(void **state)
+{
+    (void)state;
+    static const double FF_W = 0.15;
+    hol_tile_content c;
+    memset(&c, 0, sizeof c);
+    hol_tile t;
+    assert_int_equal(hol_tile_parse("Nf", -1, &t), HOL_OK);
+    double a[3], b[3];
+    c.object = HOL_OBJ_ROCK;
+    assert_int_equal(hol_light_firefly(t, &c, 1, 0, a), 0);
+    c.object = HOL_OBJ_GRASS;
+    assert_int_equal(hol_light_firefly(t, &c, 1, 0, a), 0);
+    static const int with[] = {HOL_OBJ_CREEK, HOL_OBJ_SPRING, HOL_OBJ_POOL, HOL_OBJ_FLOWERS};
+    for (int k = 0; k < 4; k++) {
+        c.object = (uint8_t)with[k];
+        assert_int_equal(hol_light_firefly(t, &c, 1, 0, a), 1);
+        assert_int_equal(hol_light_firefly(t, &c, 1, 0, b), 1);
+        assert_memory_equal(a, b, sizeof a);
+        for (double ts = 0; ts < 20; ts += 0.37) {
+            hol_light_firefly(t, &c, 1, ts, b);
+            assert_true(fabs(b[0]) < 0.5 && fabs(b[1]) < 0.5 && b[2] > 0.35 && b[2] < 0.85);
+            assert_true(hypot(b[0] - a[0], b[1] - a[1]) <= 0.161);
+        }
+    }
+    /* the app's frame at night: fireflies on; at dusk and day off */
+    static hol_app_view v;
+    memset(&v, 0, sizeof v);
+    v.user = hol_room_start();
+    v.cell_m = 1;
+    v.head[0] = v.head[2] = 1.5;
+    v.head[1] = 1.6;
+    hol_frame_desc fd;
+    v.lighting = HOL_LIGHT_NIGHT;
+    hol_app_frame_desc(&v, -1, W, H, 90, &fd);
+    assert_int_equal(fd.fireflies, 1);
+    v.lighting = HOL_LIGHT_DUSK;
+    hol_app_frame_desc(&v, -1, W, H, 90, &fd);
+    assert_int_equal(fd.fireflies, 0);
+
+    /* the light against the model */
+    static uint8_t px[W * H * 4];
+    static const light_case cs[] = {
+        {"-", {1.5, 1.6, 1.5}, 0, -50, 5, 3, 3, 1, {NULL}, 0},
+        {"-", {1.5, 1.6, 1.5}, 180, -50, 5, 3, 3, 1, {NULL}, 0},
+        {"-", {1.4, 1.6, 1.6}, -60, -45, 6, 3, 3, 1, {NULL}, 0},
+        {"-", {1.5, 1.6, 1.5}, 90, -45, 4, 3, 3, 1, {NULL}, 0},
+    };
+    int lit_all = 0;
+    for (size_t k = 0; k < sizeof cs / sizeof cs[0]; k++) {
+        const light_case *lc = &cs[k];
+        scene s;
+        make_scene(lc, &s);
+        s.f.fireflies = 1;
+        s.f.time_s = 1.5 * (double)k;
+        struct hol_world *w = world_of(lc->q);
+        /* generate the tiles near the user (the renderer only peeks) */
+        render(&s, HOL_RENDER_BARE | HOL_RENDER_LIGHT_ONLY, px);
+        /* the fireflies of the room's cells, placed by the model */
+        double ff[16][4];
+        int nff = 0;
+        hol_tile mt[16];
+        for (int col = 0; col < lc->cols; col++)
+            for (int row = 0; row < lc->rows; row++) {
+                hol_room u = s.f.user;
+                model_mat f = model_identity();
+                while (u.col != col || u.row != row) {
+                    int dir = u.col < col ? HOL_DIR_E : u.col > col ? HOL_DIR_W
+                              : u.row < row ? HOL_DIR_S : HOL_DIR_N;
+                    assert_int_equal(hol_room_step(&u, dir), HOL_OK);
+                    f = model_step(f, turns_of(dir));
+                }
+                double xzh[3], p[3];
+                if (hol_world_peek(w, u.tile, &c) ||
+                    !hol_light_firefly(u.tile, &c, lc->cell, s.f.time_s, xzh))
+                    continue;
+                /* the tile's own frame: x, z turned by the state's orient
+                 * (its heading is room north turned clockwise by orient) */
+                double an = -u.orient * PI / 2, cx = cos(an), sx = sin(an);
+                double rx = xzh[0] * cx + xzh[1] * sx, rz = -xzh[0] * sx + xzh[1] * cx;
+                klein_point(lc->cell, rx, rz, p);
+                apply(f, p, ff[nff]);
+                ff[nff][3] = xzh[2];
+                mt[nff++] = u.tile;
+            }
+        /* the renderer's fireflies: those of the room's cells where the
+         * model puts them; the light of all of them (from those points) by
+         * the model's distance and falloff */
+        hol_light_frame lf;
+        assert_int_equal(hol_light_prepare(&s.f, w, &lf), HOL_OK);
+        int found = 0;
+        for (int j = 0; j < nff; j++)
+            for (int i = 0; i < lf.n; i++)
+                if (fabs(lf.pos[i][0] - ff[j][0]) + fabs(lf.pos[i][1] - ff[j][1]) +
+                        fabs(lf.pos[i][2] - ff[j][2]) < 1e-6 &&
+                    fabs(lf.h[i] - ff[j][3]) < 1e-9) {
+                    found++;
+                    break;
+                }
+        assert_int_equal(found, nff);
+        int checked = 0, lit = 0, bad = 0;
+        for (int y = 0; y < H; y++)
+            for (int x = 0; x < W; x++) {
+                double p[2], h[3];
+                if (!floor_point(lc, x + 0.5, y + 0.5, p) || !model_point(lc, p, h))
+                    continue;
+                /* the tile's four: the nearest to its centre in reach */
+                double circ = model_q == 4 ? lc->cell * sqrt(0.5)
+                                           : acosh(1 / tan(PI / model_q)) * lc->cell / model_edge();
+                int pick[HOL_LIGHT_MAX] = {0};
+                for (int k4 = 0; k4 < 4; k4++) {
+                    int best = -1;
+                    double bd = RADIUS + circ;
+                    for (int j = 0; j < lf.n; j++) {
+                        double dc = floor_m(lc->cell, model_centre, lf.pos[j]);
+                        if (!pick[j] && dc < bd)
+                            best = j, bd = dc;
+                    }
+                    if (best >= 0)
+                        pick[best] = 1;
+                }
+                double lam = 0;
+                for (int j = 0; j < lf.n; j++) {
+                    double fm = floor_m(lc->cell, h, lf.pos[j]), d = hypot(fm, lf.h[j]);
+                    if (d >= RADIUS || !lf.ff[j] || !pick[j])
+                        continue;
+                    double xu = fm * model_edge() / lc->cell;
+                    double u = d / RADIUS, ww = (1 - u * u) * (1 - u * u);
+                    double sf = model_q == 4 || xu < 1e-9 ? 1 : xu / sinh(xu);
+                    lam += FF_W * ww * (1 - PHYS + PHYS * sf) / (1 + d * d / (D0 * D0)) *
+                           (0.3 + 0.7 * lf.h[j] / d);
+                }
+                const uint8_t *q = px + 4 * (y * W + x);
+                if (fabs(q[2] - 255 * fmin(lam, 1)) > TOL && bad < 5)
+                    printf("  px %d,%d: %d want %.1f (n %d)\n", x, y, q[2], 255 * lam, lf.n);
+                bad += fabs(q[2] - 255 * fmin(lam, 1)) > TOL;
+                lit += lam > 0.02;
+                checked++;
+            }
+        (void)mt;
+        printf("fireflies case %zu ({4,%d}): %d room fireflies, %d pixels checked, %d lit, "
+               "%d off\n", k, lc->q, nff, checked, lit, bad);
+        assert_int_equal(bad, 0);
+        lit_all += lit;
+    }
+    assert_true(lit_all > 300);
 }
 
 int main(void)
@@ -540,6 +777,7 @@ int main(void)
         cmocka_unit_test(test_lantern_through_portal),
         cmocka_unit_test(test_day_unchanged_without_lighting),
         cmocka_unit_test(test_app_frame_carries_lights),
+        cmocka_unit_test(test_fireflies),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }
