@@ -10,6 +10,7 @@
 
 #define HOL__REC_BUF (64u << 10)
 #define HOL__ROWS_BUF (32u << 10)
+#define HOL__TRACK_BUF (128u << 10) /* a second at 90 Hz and a gap's rows */
 
 /* ---- create ---------------------------------------------------------------- */
 
@@ -32,6 +33,12 @@ static hol_err hol__check_desc(const hol_session_desc *d, char *msg, size_t cap)
     }
     if (m->participant[0] && !hol_rec_id_ok(m->participant)) {
         snprintf(msg, cap, "the participant is not 1..63 letters, digits, '.', '_', '-'");
+        return HOL_EARG;
+    }
+    if (d->track_hz && (d->track_hz < HOL_SESSION_TRACK_HZ_MIN ||
+                        d->track_hz > HOL_SESSION_TRACK_HZ_MAX)) {
+        snprintf(msg, cap, "the tracking rate is not %d..%d", HOL_SESSION_TRACK_HZ_MIN,
+                 HOL_SESSION_TRACK_HZ_MAX);
         return HOL_EARG;
     }
     if (d->rec && (!d->rec_name || !d->rec_name[0] ||
@@ -129,7 +136,7 @@ static hol_err hol__rec_open(hol_session *s)
 static hol_err hol__alloc(hol_session *s, const hol_session_desc *d)
 {
     size_t lv = (size_t)d->nlevels * sizeof *s->levels;
-    size_t bufs = (d->rec ? HOL__REC_BUF : 0) + (d->log ? 2 * HOL__ROWS_BUF : 0);
+    size_t bufs = (d->rec ? HOL__REC_BUF : 0) + (d->log ? 2 * HOL__ROWS_BUF + HOL__TRACK_BUF : 0);
     char *mem = hol_alloc_mem(&s->alloc, lv + bufs);
     if (!mem)
         return HOL_ENOMEM;
@@ -141,6 +148,8 @@ static hol_err hol__alloc(hol_session *s, const hol_session_desc *d)
     hol__out_init(&s->steps, d->log, d->log ? b : NULL, d->log ? HOL__ROWS_BUF : 0);
     hol__out_init(&s->head, d->log, d->log ? b + HOL__ROWS_BUF : NULL,
                   d->log ? HOL__ROWS_BUF : 0);
+    hol__out_init(&s->track, d->log, d->log ? b + 2 * HOL__ROWS_BUF : NULL,
+                  d->log ? HOL__TRACK_BUF : 0);
     return HOL_OK;
 }
 
@@ -189,6 +198,7 @@ hol_err hol_session_create(const hol_session_desc *d, hol_session **out, char *m
     if (d->rec)
         snprintf(s->rec_name, sizeof s->rec_name, "%s", d->rec_name);
     s->flush_s = d->flush_s > 0 ? d->flush_s : 1.0;
+    s->track_hz = d->track_hz ? d->track_hz : HOL_SESSION_TRACK_HZ;
     if ((e = hol__create(s, d))) {
         snprintf(msg, cap, "%s", s->msg);
         hol_session_destroy(s);
@@ -205,6 +215,7 @@ static void hol__flush_all(hol_session *s, int durable)
     hol__out_flush(s, &s->rec_out, durable);
     hol__out_flush(s, &s->steps, durable);
     hol__out_flush(s, &s->head, durable);
+    hol__out_flush(s, &s->track, durable);
 }
 
 hol_err hol_session_step(hol_session *s, const hol_input *in, int *out_over)
@@ -229,7 +240,7 @@ hol_err hol_session_step(hol_session *s, const hol_input *in, int *out_over)
     const hol_app_events *ev = hol_app_get_events(s->app);
     const hol_app_view *v = hol_app_get_view(s->app);
     if (s->log)
-        hol__log_frame(s, ev, v);
+        hol__log_frame(s, ev, v, in);
     if (v->state == HOL_APP_QUIT) {
         s->over = 1;
     } else if (ev->next_level) {
@@ -301,8 +312,10 @@ hol_err hol_session_end_killed(hol_session *s)
     if (!s->finished && s->log && s->attempt_open && !s->failed) {
         hol__out_flush(s, &s->steps, 1);
         hol__out_flush(s, &s->head, 1);
+        hol__out_flush(s, &s->track, 1);
         hol__out_close(s, &s->steps);
         hol__out_close(s, &s->head);
+        hol__out_close(s, &s->track);
         s->attempt_open = 0;
         if (!s->failed)
             hol__recover_killed(s, s->attempt);
@@ -319,8 +332,8 @@ void hol_session_destroy(hol_session *s)
 {
     if (!s)
         return;
-    hol__out *outs[3] = {&s->rec_out, &s->steps, &s->head};
-    for (int i = 0; i < 3; i++)
+    hol__out *outs[4] = {&s->rec_out, &s->steps, &s->head, &s->track};
+    for (int i = 0; i < 4; i++)
         if (outs[i]->h >= 0)
             outs[i]->sink->close(outs[i]->sink->user, outs[i]->h);
     hol_app_destroy(s->app);

@@ -73,8 +73,20 @@
  *   Over a gap (HOL_SESSION_GAP_S) one row stands for the samples it hides:
  *   t the first of them, frame_t the frame after the gap, x..row empty,
  *   tile "gap". Every writer is bounded a frame: one recording line, at
- *   most HOL_APP_MAX_STEP_EVENTS step rows and HOL_SESSION_GAP_ROWS head
- *   rows, so the logs grow with the input, never with its time.
+ *   most HOL_APP_MAX_STEP_EVENTS step rows, HOL_SESSION_GAP_ROWS head
+ *   rows and HOL_SESSION_GAP_S * track_hz + 1 track rows, so the logs grow
+ *   with the input, never with its time.
+ * - Track rows (track-NNN.csv, HOL_SESSION_TRACK_COLUMNS; live, renamed
+ *   and recovered as head-NNN.csv, renamed between head and steps): the
+ *   head (the view's, as head rows) and both hands (the input's grip
+ *   poses, HOL_INPUT_HAND_*_VALID) at samples k = 0, 1, 2, ... of level
+ *   time k / track_hz, computed as k / hz in doubles (no sum that drifts);
+ *   sample k, t with 4 decimals. Between the frames around a sample a pose
+ *   is interpolated (position linear, quaternion normalized linear the short
+ *   way), tracked as in the nearer frame (its seven fields empty when not),
+ *   device the nearer frame's (hol_input_device_name). A gap as for head
+ *   rows: one row, device "gap", sample and t the first sample it hides,
+ *   every pose field empty.
  *   A step row's visible says which cues were drawn after the step
  *   (hol_session_cues_visible), cues which were in force.
  * - Errors: hol_err, with a one-line reason in hol_session_message (naming
@@ -105,6 +117,13 @@
  * head rows (20 samples of a 2 s gap, and the one at its end). */
 #define HOL_SESSION_GAP_S 2.0
 #define HOL_SESSION_GAP_ROWS 21
+/* Track rows (track-NNN.csv): desc.track_hz samples a second of level time,
+ * HOL_SESSION_TRACK_HZ_MIN..MAX, default HOL_SESSION_TRACK_HZ; over a gap
+ * as head rows (HOL_SESSION_GAP_S), so a frame writes at most
+ * HOL_SESSION_GAP_S * hz + 1 track rows (181 at 90 Hz). */
+#define HOL_SESSION_TRACK_HZ 10
+#define HOL_SESSION_TRACK_HZ_MIN 10
+#define HOL_SESSION_TRACK_HZ_MAX 90
 
 #define HOL_SESSION_SUMMARY_COLUMNS                                                       \
     "session,participant,session_start,version,attempt,study,condition,position,level,"    \
@@ -113,6 +132,11 @@
     "session,attempt,level,t,step,col,row,dir,yaw,tile,orient,remaining,cues,visible"
 #define HOL_SESSION_HEAD_COLUMNS \
     "session,attempt,level,t,frame_t,x,y,z,yaw,pitch,col,row,tile"
+#define HOL_SESSION_TRACK_COLUMNS                                                   \
+    "session,attempt,level,sample,t,frame_t,device,"                                   \
+    "head_x,head_y,head_z,head_qx,head_qy,head_qz,head_qw,"                          \
+    "left_x,left_y,left_z,left_qx,left_qy,left_qz,left_qw,"                          \
+    "right_x,right_y,right_z,right_qx,right_qy,right_qz,right_qw"
 #define HOL_SESSION_EVENT_COLUMNS "session,attempt,level,t,event,value"
 /* points.csv: a row per pointing answer (level line `point`, SPEC 8;
  * hol_app_point), appended durably as it happens, the header when the file
@@ -146,6 +170,7 @@ typedef struct hol_session_desc {
                                 checked (hol_rec_id_ok, hol_rec_time_ok)
                                 when there are logs or a recording */
     double flush_s;          /* 0: 1 s */
+    int track_hz;            /* track rows a second, 10..90; 0: 10 */
 } hol_session_desc;
 
 typedef struct hol_session hol_session;

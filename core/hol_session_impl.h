@@ -27,6 +27,17 @@ typedef struct hol__head_frame {
     hol_room room;
 } hol__head_frame;
 
+/* The previous frame of the attempt, for track rows between frames: the
+ * head (0), left (1) and right (2) hands, x y z qx qy qz qw each, and
+ * which are tracked. */
+typedef struct hol__track_frame {
+    int valid;
+    double t; /* level time */
+    double pose[3][7];
+    int ok[3];
+    uint32_t device;
+} hol__track_frame;
+
 /* Row ends: the app's (hol_app_end) and the session's own. */
 enum { HOL__END_ABORTED = 5, HOL__END_KILLED = 6 };
 
@@ -38,11 +49,14 @@ struct hol_session {
     hol_rec_meta meta;
     const hol_sink *log, *rec;
     char rec_name[HOL_SINK_NAME_MAX];
-    hol__out rec_out, steps, head;
+    hol__out rec_out, steps, head, track;
     int attempt, attempt_open;
     double attempt_started;  /* session time at the attempt's start */
     double next_sample;      /* the next head row's time, in 0.1 s (whole) */
     hol__head_frame prev;
+    int track_hz;            /* track rows per second of level time */
+    double track_next;       /* the next track row's sample (whole) */
+    hol__track_frame track_prev;
     double flush_s, next_flush, now;
     long frames;
     int over, finished, recovered, dropped;
@@ -68,9 +82,16 @@ hol_err hol__fail_sink(hol_session *s, const hol_sink *k, hol_err e, const char 
 void hol__attempt_name(char *out, size_t cap, const char *what, int attempt);
 size_t hol__summary_row(const hol_session *s, const hol_app_summary *sum, int end, char *out,
                         size_t cap);
-void hol__log_frame(hol_session *s, const hol_app_events *ev, const hol_app_view *v);
+void hol__log_frame(hol_session *s, const hol_app_events *ev, const hol_app_view *v,
+                    const hol_input *in);
 void hol__attempt_end(hol_session *s, const hol_app_summary *sum, int end);
 void hol__log_levels(hol_session *s);
+
+/* hol_session_track.c: the last sample k / hz at or before t; the track
+ * rows of a frame (name: the level's CSV field). */
+double hol__last_sample_hz(double t, int hz);
+void hol__track_rows(hol_session *s, const hol_app_view *v, const hol_input *in,
+                     const char *name);
 
 /* hol_session_recover.c */
 hol_err hol__log_open(hol_session *s, int append);

@@ -294,6 +294,8 @@ static void hol__attempt_begin(hol_session *s, const hol_app_view *v)
     s->attempt_started = s->now;
     s->next_sample = 0;
     s->prev.valid = 0;
+    s->track_next = 0;
+    s->track_prev.valid = 0;
     const hol_app_level *L = &s->levels[s->cur].lvl;
     hol_app_summary sum = {L->mode, L->seed, 0, v->hud.optimum, 0, HOL_APP_END_NONE};
     char row[1024], name[64], live[80];
@@ -310,6 +312,11 @@ static void hol__attempt_begin(hol_session *s, const hol_app_view *v)
     if (!hol__out_open(s, &s->head, live, 0))
         hol__out_put(s, &s->head, HOL_SESSION_HEAD_COLUMNS "\n",
                      sizeof HOL_SESSION_HEAD_COLUMNS);
+    hol__attempt_name(name, sizeof name, "track", s->attempt);
+    snprintf(live, sizeof live, "%s.live", name);
+    if (!hol__out_open(s, &s->track, live, 0))
+        hol__out_put(s, &s->track, HOL_SESSION_TRACK_COLUMNS "\n",
+                     sizeof HOL_SESSION_TRACK_COLUMNS);
 }
 
 void hol__attempt_end(hol_session *s, const hol_app_summary *sum, int end)
@@ -322,12 +329,14 @@ void hol__attempt_end(hol_session *s, const hol_app_summary *sum, int end)
     hol__out_close(s, &s->steps);
     hol__out_flush(s, &s->head, 1);
     hol__out_close(s, &s->head);
+    hol__out_flush(s, &s->track, 1);
+    hol__out_close(s, &s->track);
     char row[1024], name[64], live[80];
     size_t n = hol__summary_row(s, sum, end, row, sizeof row);
     hol__put_file(s, "summary.csv", 1, row, n);
     /* steps last: a steps-NNN.csv always has its head file and row */
-    static const char *const what[2] = {"head", "steps"};
-    for (int k = 0; k < 2; k++) {
+    static const char *const what[3] = {"head", "track", "steps"};
+    for (int k = 0; k < 3; k++) {
         hol__attempt_name(name, sizeof name, what[k], s->attempt);
         snprintf(live, sizeof live, "%s.live", name);
         hol__rename(s, live, name);
@@ -441,7 +450,8 @@ static void hol__answer_row(hol_session *s, const hol_app_answer *a)
         hol__put_file(s, "answers.csv", 1, row, (size_t)n);
 }
 
-void hol__log_frame(hol_session *s, const hol_app_events *ev, const hol_app_view *v)
+void hol__log_frame(hol_session *s, const hol_app_events *ev, const hol_app_view *v,
+                    const hol_input *in)
 {
     if (ev->answered)
         hol__answer_row(s, &ev->answer);
@@ -458,6 +468,9 @@ void hol__log_frame(hol_session *s, const hol_app_events *ev, const hol_app_view
         return;
     hol__step_rows(s, ev, v);
     hol__head_rows(s, v);
+    char name[HOL__CSV_NAME];
+    hol__csv_name(s->levels[s->cur].name, name);
+    hol__track_rows(s, v, in, name);
     if (ev->level_ended && !ev->level_started)
         hol__attempt_end(s, &ev->summary, ev->level_ended);
 }

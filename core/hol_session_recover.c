@@ -31,15 +31,19 @@ static long hol__numbered(const char *name, const char *prefix, const char *suff
     return v;
 }
 
-static const char *const hol__pat[5][2] = {{"steps-", ".csv"},      {"head-", ".csv"},
-                                           {"steps-", ".csv.live"}, {"head-", ".csv.live"},
-                                           {"attempt-", ".live"}};
+/* the finished files first (HOL__PAT_DONE of them), then the live ones */
+#define HOL__PAT_DONE 3
+#define HOL__PAT_N 7
+static const char *const hol__pat[HOL__PAT_N][2] = {
+    {"steps-", ".csv"},      {"head-", ".csv"},      {"track-", ".csv"},
+    {"steps-", ".csv.live"}, {"head-", ".csv.live"}, {"track-", ".csv.live"},
+    {"attempt-", ".live"}};
 
 int hol_session_is_log_name(const char *name)
 {
     int hit = !strcmp(name, "summary.csv") || !strcmp(name, "events.csv") ||
               !strcmp(name, "points.csv") || !strcmp(name, "answers.csv");
-    for (int k = 0; k < 5 && !hit; k++)
+    for (int k = 0; k < HOL__PAT_N && !hit; k++)
         hit = hol__numbered(name, hol__pat[k][0], hol__pat[k][1]) >= 0;
     return hit;
 }
@@ -49,14 +53,14 @@ static void hol__scan_name(void *ctx, const char *name)
     hol__scan *sc = ctx;
     if (hol_session_is_log_name(name))
         sc->logs = 1;
-    for (int k = 0; k < 5; k++) {
+    for (int k = 0; k < HOL__PAT_N; k++) {
         long a = hol__numbered(name, hol__pat[k][0], hol__pat[k][1]);
         if (a < 0)
             continue;
         sc->logs = 1;
         if (a > sc->max_attempt)
             sc->max_attempt = (int)a;
-        if (k < 2)
+        if (k < HOL__PAT_DONE)
             return;
         for (int i = 0; i < sc->nlive; i++)
             if (sc->live[i] == a)
@@ -180,15 +184,16 @@ static void hol__cut(hol_session *s, const char *name, uint64_t good)
         s->log->remove(s->log->user, tmp);
 }
 
-/* The live rows of attempt a: steps and the last level time; each stream
- * cut to its complete lines. */
+/* The live rows of attempt a: steps and the last level time (of the steps
+ * and head rows); each stream, the track rows' too, cut to its complete
+ * lines. */
 static void hol__live_rows(hol_session *s, int a, int *steps, double *time)
 {
-    static const char *const what[2] = {"steps", "head"};
+    static const char *const what[3] = {"steps", "head", "track"};
     static const int tcol[2] = {10, 9}; /* t, counted from the right */
     *steps = 0;
     *time = 0;
-    for (int k = 0; k < 2; k++) {
+    for (int k = 0; k < 3; k++) {
         char name[64], live[80];
         hol__attempt_name(name, sizeof name, what[k], a);
         snprintf(live, sizeof live, "%s.live", name);
@@ -207,7 +212,7 @@ static void hol__live_rows(hol_session *s, int a, int *steps, double *time)
             hol__cut(s, live, l.good); /* bytes after the last LF */
         if (k == 0)
             *steps = l.complete > 1 ? (int)(l.complete - 1) : 0;
-        if (l.complete > 1) {
+        if (l.complete > 1 && k < 2) {
             double t = hol__field_right(l.last, l.last_len, tcol[k]);
             *time = t > *time ? t : *time;
         }
@@ -256,11 +261,11 @@ static void hol__put(hol_session *s, const char *name, const char *text)
  * reached the disk): nothing says what it played, so its files go. */
 static void hol__drop(hol_session *s, int a)
 {
-    static const char *const what[3] = {"head", "steps", "attempt"};
-    for (int k = 0; k < 3 && !s->failed; k++) {
+    static const char *const what[4] = {"head", "track", "steps", "attempt"};
+    for (int k = 0; k < 4 && !s->failed; k++) {
         char name[64], live[80];
         hol__attempt_name(name, sizeof name, what[k], a);
-        snprintf(live, sizeof live, "%s%s", name, k < 2 ? ".live" : "");
+        snprintf(live, sizeof live, "%s%s", name, k < 3 ? ".live" : "");
         char probe[1];
         size_t got;
         if (s->log->read(s->log->user, live, 0, probe, 1, &got) == HOL_EOPEN)
@@ -305,10 +310,11 @@ static void hol__recover(hol_session *s, int a)
     /* the live files renamed, steps last (as at an attempt's end); one the
      * kill left unmade or without a whole header line (the attempt had
      * just begun) made with its header, so the row has its files */
-    static const char *const what[2] = {"head", "steps"};
-    static const char *const cols[2] = {HOL_SESSION_HEAD_COLUMNS "\n",
+    static const char *const what[3] = {"head", "track", "steps"};
+    static const char *const cols[3] = {HOL_SESSION_HEAD_COLUMNS "\n",
+                                        HOL_SESSION_TRACK_COLUMNS "\n",
                                         HOL_SESSION_STEP_COLUMNS "\n"};
-    for (int k = 0; k < 2 && !s->failed; k++) {
+    for (int k = 0; k < 3 && !s->failed; k++) {
         hol__attempt_name(name, sizeof name, what[k], a);
         snprintf(live, sizeof live, "%s.live", name);
         char probe[1];

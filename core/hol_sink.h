@@ -47,7 +47,9 @@
 
 #include "hol_err.h"
 
-#define HOL_SINK_MAX_OPEN 4
+/* steps, head and track rows, a small file, and a recording on the same
+ * sink (the web's) */
+#define HOL_SINK_MAX_OPEN 5
 #define HOL_SINK_NAME_MAX 256 /* with the NUL */
 
 typedef struct hol_sink {

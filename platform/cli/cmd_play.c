@@ -26,6 +26,7 @@
 #include "play_setup.h"
 #include "play_stats.h"
 #include "play_study.h"
+#include "play_track.h"
 
 static const char *const play_usage =
     "usage: holonomy play [LEVEL | --mode tutorial|flag|keys|explore | --study FILE]\n"
@@ -35,7 +36,7 @@ static const char *const play_usage =
     "                     [--frames N] [--input FILE] [--size WxH]\n"
     "                     [--no-gamepad | --gamepad-replay FILE] [--snap-turn DEG]\n"
     "                     [--stats] [--tiling 4,Q] [--room CxR] [--cell M]\n"
-    "                     [--mute | --volume V]\n"
+    "                     [--mute | --volume V] [--track-hz N]\n"
     "\n"
     "Play in a desktop window (EGL on X11; also under Xvfb). LEVEL is a level\n"
     "file (SPEC section 5); --mode plays a level of that mode made from the seed\n"
@@ -68,8 +69,9 @@ static const char *const play_usage =
     "  --seed S        seed of --mode's level or the campaign's first (decimal or\n"
     "                  0x hex; default 1)\n"
     "  --log DIR       research logs, written as the game goes (README: Research\n"
-    "                  logs): DIR/summary.csv, DIR/steps-NNN.csv and\n"
-    "                  DIR/head-NNN.csv per level attempt; DIR is made when its\n"
+    "                  logs): DIR/summary.csv, DIR/steps-NNN.csv,\n"
+    "                  DIR/head-NNN.csv and DIR/track-NNN.csv per level\n"
+    "                  attempt; DIR is made when its\n"
     "                  parent exists; a DIR holding logs is refused without\n"
     "  --append        add this session to the logs already in DIR (finishing\n"
     "                  the attempts a killed session left: end 'killed')\n"
@@ -81,6 +83,7 @@ static const char *const play_usage =
     "                  attempt ended done or timeout; README: Research logs),\n"
     "                  appending to DIR; positions keep their numbers\n"
     PLAY_ENV_USAGE
+    PLAY_TRACK_USAGE
     "  --participant ID  the participant (1..63 letters, digits, '.', '_', '-'),\n"
     "                  in the summary and the recording\n"
     "  --record FILE   record the session (replay with 'holonomy replay'),\n"
@@ -122,6 +125,7 @@ typedef struct play_opts {
     uint64_t seed;
     long frames;
     int w, h, use_pad, append, snap_deg, stats, restart_participant, resume, mute;
+    int track_hz; /* --track-hz; 0: not given (10) */
     double volume;
     play_env env; /* --session, --meta */
     int argc;
@@ -204,6 +208,8 @@ static int play_value(const char *cmd, const char *a, const char *val, play_opts
         o->snap_deg = (int)n;
     } else if (!strcmp(a, "--volume")) {
         return cli_volume_value(cmd, val, &o->volume) ? 1 : 0;
+    } else if (!strcmp(a, "--track-hz")) {
+        return play_track_value(cmd, val, &o->track_hz);
     }
     return 0;
 }
@@ -211,7 +217,7 @@ static int play_value(const char *cmd, const char *a, const char *val, play_opts
 static const char *const play_valued[] = {"--mode",  "--seed",  "--log",  "--record",
                                           "--frames", "--input", "--size", "--gamepad-replay",
                                           "--participant", "--snap-turn", "--study",
-                                          "--volume", PLAY_GEOMETRY_OPTIONS, PLAY_ENV_OPTIONS, NULL};
+                                          "--volume", "--track-hz", PLAY_GEOMETRY_OPTIONS, PLAY_ENV_OPTIONS, NULL};
 
 static int play_options(const char *cmd, int argc, char **argv, play_opts *o)
 {
@@ -269,7 +275,8 @@ static int play_options(const char *cmd, int argc, char **argv, play_opts *o)
         cli_error(cmd, 0, "%s", clash);
         return CLI_EXIT_USAGE;
     }
-    if (play_env_check(cmd, &o->env, o->log_dir))
+    if (play_env_check(cmd, &o->env, o->log_dir) ||
+        play_track_check(cmd, o->track_hz, o->log_dir))
         return CLI_EXIT_USAGE;
     o->append |= o->resume;
     const cli_path in[] = {{"LEVEL", o->level_path}, {"--input", o->input_path},
@@ -287,6 +294,7 @@ static int play_prepare_files(play_ctx *c)
     int st = o->pad_script ? play_load_pad_script(c->cmd, o->pad_script, &c->script) : 0;
     if (!st)
         st = play_out_open(c->cmd, o->log_dir, o->append, o->rec, &c->out);
+    c->out.track_hz = o->track_hz;
     if (!st && o->study)
         st = play_study_levels(c->cmd, o->study, o->participant,
                                o->append && !o->restart_participant && !o->resume

@@ -17,11 +17,12 @@
 #include "../osmesa/hol_osmesa.h"
 #include "cli.h"
 #include "play_setup.h"
+#include "play_track.h"
 
 static const char *const replay_usage =
     "usage: holonomy replay REC [--log DIR [--append]] [--png-frames LIST --out-dir D]\n"
     "                       [--size WxH] [--tiling 4,Q] [--room CxR] [--cell M]\n"
-    "                       [--wav FILE]\n"
+    "                       [--wav FILE] [--track-hz N]\n"
     "\n"
     "Run a recording (holonomy play --record) through the same session: the\n"
     "logs come out byte for byte as in the play (the recording names the\n"
@@ -41,6 +42,8 @@ static const char *const replay_usage =
     "needs no options and is never replayed in another geometry; given, an\n"
     "option must equal every recorded level's (else refused, one line):\n"
     PLAY_GEOMETRY_USAGE
+    PLAY_TRACK_USAGE
+    "                  the play's --track-hz gives its track rows byte for byte\n"
     "\n"
     "SIGINT, SIGTERM or SIGHUP end it cleanly (the attempt in play is logged\n"
     "with end 'aborted'). A killed session's recording (REC.live) ends its\n"
@@ -51,6 +54,7 @@ static const char *const replay_usage =
 typedef struct replay_ctx {
     const char *cmd, *rec, *log_dir, *out_dir, *list;
     int w, h, append;
+    int track_hz; /* --track-hz; 0: not given (10) */
     play_geometry geo;
     long pngs[4096];
     int npng;
@@ -95,7 +99,7 @@ static int parse_frame_list(const char *s, long *out, int cap, int *out_n)
 }
 
 static const char *const replay_valued[] = {"--log",  "--png-frames", "--out-dir", "--size",
-                                            "--wav",  PLAY_GEOMETRY_OPTIONS, NULL};
+                                            "--wav",  "--track-hz", PLAY_GEOMETRY_OPTIONS, NULL};
 
 static int replay_options(replay_ctx *c, int argc, char **argv)
 {
@@ -121,7 +125,10 @@ static int replay_options(replay_ctx *c, int argc, char **argv)
             c->append = 1;
         else if (!strcmp(a, "--wav"))
             c->wav = val;
-        else if ((g = play_geometry_value(c->cmd, a, val, &c->geo)) != 0) {
+        else if (!strcmp(a, "--track-hz")) {
+            if (play_track_value(c->cmd, val, &c->track_hz))
+                return CLI_EXIT_USAGE;
+        } else if ((g = play_geometry_value(c->cmd, a, val, &c->geo)) != 0) {
             if (g < 0)
                 return CLI_EXIT_USAGE;
         } else if (cli_parse_size(c->cmd, val, &c->w, &c->h))
@@ -136,7 +143,7 @@ static int replay_options(replay_ctx *c, int argc, char **argv)
         bad = "--png-frames is not a comma-separated list of frames";
     if (bad && bad[0])
         cli_error(c->cmd, 0, "%s", bad);
-    if (bad)
+    if (bad || play_track_check(c->cmd, c->track_hz, c->log_dir))
         return CLI_EXIT_USAGE;
     const cli_path in[] = {{"the recording", c->rec}};
     const cli_path out[] = {{"--log", c->log_dir}, {"--out-dir", c->out_dir}, {"--wav", c->wav}};
@@ -213,6 +220,7 @@ static int replay_prepare(replay_ctx *c)
     if (c->wav && cli_check_output(c->cmd, "--wav", c->wav))
         return CLI_EXIT_USAGE;
     int st = play_out_open(c->cmd, c->log_dir, c->append, NULL, &c->out);
+    c->out.track_hz = c->track_hz;
     if (!st) {
         st = play_input_open(c->cmd, c->rec, 1, &c->input);
         c->has_input = !st;

@@ -13,6 +13,7 @@
 #include "play_env.h"
 #include "play_setup.h"
 #include "play_study.h"
+#include "play_track.h"
 #ifdef HOL_XR
 #include "../audio/hol_audio.h"
 #include "../openxr/hol_xr.h"
@@ -24,7 +25,7 @@ static const char *const xr_usage =
     "                   [--participant ID] [--session N] [--meta KEY=VALUE]...\n"
     "                   [--record FILE] [--input FILE] [--space stage|local]\n"
     "                   [--play-area WxD] [--no-haptics] [--mute | --volume V]\n"
-    "                   [--check-frame K --check-dir DIR]\n"
+    "                   [--track-hz N] [--check-frame K --check-dir DIR]\n"
     "                   [--tiling 4,Q] [--room CxR] [--cell M]\n"
     "\n"
     "The headset app on this machine's OpenXR runtime (for example Monado):\n"
@@ -44,6 +45,7 @@ static const char *const xr_usage =
     "  --frames N      request exit after N submitted frames\n"
     "  --log DIR       research logs (README: Research logs)\n"
     PLAY_ENV_USAGE
+    PLAY_TRACK_USAGE
     "  --record FILE   record the session's input\n"
     "  --input FILE    scripted head motion: frame k takes the head pose of\n"
     "                  input line k (room coordinates; the simulated headset\n"
@@ -89,6 +91,7 @@ typedef struct xr_opts {
     int no_haptics;     /* --no-haptics: fns.haptic NULL */
     int mute;           /* --mute */
     double volume;      /* --volume; -1: not given (1) */
+    int track_hz;       /* --track-hz; 0: not given (10) */
     play_env env;       /* --session, --meta */
     int argc;
     char **argv;
@@ -135,7 +138,7 @@ static const char *const xr_valued[] = {"--frames",      "--log",       "--recor
                                         "--input",       "--check-frame", "--check-dir",
                                         "--participant", "--space",    "--study",
                                         PLAY_GEOMETRY_OPTIONS, "--play-area", "--volume",
-                                        PLAY_ENV_OPTIONS, NULL};
+                                        "--track-hz", PLAY_ENV_OPTIONS, NULL};
 
 static int xr_options(const char *cmd, int argc, char **argv, xr_opts *o)
 {
@@ -181,6 +184,8 @@ static int xr_options(const char *cmd, int argc, char **argv, xr_opts *o)
             o->mute = 1;
         else if (!strcmp(a, "--volume"))
             bad = cli_volume_value(cmd, val, &o->volume) != 0;
+        else if (!strcmp(a, "--track-hz"))
+            bad = play_track_value(cmd, val, &o->track_hz);
         else if (!strcmp(a, "--restart-participant"))
             o->restart_participant = 1;
         else if (!strcmp(a, "--resume"))
@@ -214,7 +219,8 @@ static int xr_options(const char *cmd, int argc, char **argv, xr_opts *o)
         cli_error(cmd, 0, "%s", clash);
         return CLI_EXIT_USAGE;
     }
-    if (play_env_check(cmd, &o->env, o->log_dir))
+    if (play_env_check(cmd, &o->env, o->log_dir) ||
+        play_track_check(cmd, o->track_hz, o->log_dir))
         return CLI_EXIT_USAGE;
     o->append |= o->resume;
     const cli_path in[] = {{"LEVEL", o->level_path}, {"--input", o->input_path},
@@ -444,6 +450,7 @@ int cli_cmd_xr(int argc, char **argv)
     cli_catch_signals();
     if (!st)
         st = play_out_open(cmd, o.log_dir, o.append, o.rec, &out);
+    out.track_hz = o.track_hz;
     if (!st) {
         hol_sink_posix_meta(&c.meta, o.participant);
         snprintf(c.meta.study, sizeof c.meta.study, "%s", study);

@@ -106,6 +106,7 @@ typedef struct play_out {
     char rec_name[HOL_SINK_NAME_MAX];
     char made_dir[4096]; /* --log DIR when play_out_open made it */
     int opened;          /* a session opened on them */
+    int track_hz;        /* --track-hz, set after play_out_open; 0: 10 */
 } play_out;
 
 int play_out_open(const char *cmd, const char *log_dir, int append, const char *rec_path,

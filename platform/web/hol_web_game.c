@@ -216,10 +216,34 @@ static int page_levels(int *n, char *msg, size_t cap)
     return 0;
 }
 
+/* ?track_hz=N: the track rows' rate, 10..90 (as --track-hz), 0 when not
+ * given; -1 with msg when not such a number. */
+static int page_track_hz(char *msg, size_t cap)
+{
+    char v[16];
+    hol_web_js_config("track_hz", v, sizeof v);
+    if (!v[0])
+        return 0;
+    int hz = 0, ok = strlen(v) <= 2;
+    for (const char *p = v; *p && ok; p++) {
+        ok = *p >= '0' && *p <= '9';
+        hz = hz * 10 + (*p - '0');
+    }
+    if (!ok || hz < HOL_SESSION_TRACK_HZ_MIN || hz > HOL_SESSION_TRACK_HZ_MAX) {
+        snprintf(msg, cap, "track_hz '%.12s' is not a whole number in %d..%d", v,
+                 HOL_SESSION_TRACK_HZ_MIN, HOL_SESSION_TRACK_HZ_MAX);
+        return -1;
+    }
+    return hz;
+}
+
 int hol_web_game_open(char *msg, size_t cap)
 {
     int n = 0;
     if (page_levels(&n, msg, cap) || page_geometry(n, msg, cap))
+        return 1;
+    int track_hz = page_track_hz(msg, cap);
+    if (track_hz < 0)
         return 1;
     char part[HOL_REC_ID_MAX + 8] = "";
     hol_web_js_config("participant", part, sizeof part);
@@ -235,6 +259,7 @@ int hol_web_game_open(char *msg, size_t cap)
     d.log = hol_web_sink();
     d.append = 1; /* one folder for every visit (hol_web_sink.h) */
     d.rec = hol_web_sink();
+    d.track_hz = track_hz;
     hol_web_sink_meta(&d.meta, part[0] ? part : NULL);
     snprintf(d.meta.study, sizeof d.meta.study, "%s", study_name);
     char rec_name[HOL_REC_ID_MAX + 16];

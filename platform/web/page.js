@@ -11,7 +11,8 @@
 // participant=ID (the logs' participant), snap=DEG (snap turn on the
 // Left/Right keys), tiling=4,Q room=CxR cell=M (every level's geometry, as
 // play's --tiling/--room/--cell), haptics=0 (no controller pulses in VR, as
-// holonomy xr --no-haptics). None: the default campaign. A level file
+// holonomy xr --no-haptics), track_hz=N (the logs' track rows N times a
+// second, 10..90, as --track-hz). None: the default campaign. A level file
 // chosen with "Level file..." plays on the next load (kept in
 // sessionStorage for this tab).
 'use strict';
@@ -19,7 +20,7 @@
 (function () {
   var params = new URLSearchParams(location.search);
   var config = {};
-  ['mode', 'seed', 'participant', 'snap', 'tiling', 'room', 'cell', 'gldebug', 'haptics', 'sound'].forEach(function (k) {
+  ['mode', 'seed', 'participant', 'snap', 'tiling', 'room', 'cell', 'gldebug', 'haptics', 'sound', 'track_hz'].forEach(function (k) {
     if (params.has(k)) config[k] = params.get(k);
   });
   var $ = function (id) { return document.getElementById(id); };
