@@ -30,6 +30,11 @@ int report_stats_read(report_run *r);
 int report_stats_write(const report_run *r);
 void report_stats_html(FILE *f, const report_run *r);
 void report_stats_free(report_run *r);
+/* Sort g's conditions (as hol_report_agg_add finds them: first seen) into
+ * the order of stats.csv (docs/research.md "Report": a study's practice,
+ * its conditions in the study file's order, then the rest by name). 0, or
+ * CLI_EXIT_FAIL out of memory (one line said). */
+int report_stats_order_agg(const report_run *r, hol_report_agg *g);
 /* LOGDIR d named from DIR (both resolved: "../logs"); "" when either
  * cannot be resolved. */
 void report_rel_dir(const report_run *r, int d, char *out, size_t cap);
