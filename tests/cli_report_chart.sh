@@ -89,9 +89,11 @@ mkfifo "$T/l1/study-fifo.txt"
     echo "$S"
     row sc P03 1 s2 bb 1 4 4    # no study file for s2: by name
     row sc P03 2 s2 aa 2 4 4
+    row sc P03 3 s2 c10 3 4 4   # numbers in names by value: c2 before c10
+    row sc P03 4 s2 c2 4 4 4
 } >"$T/l2/summary.csv"
 run "report in order" 0 "$H" report "$T/l1" "$T/l2" --out "$T/or"
-want='s1,practice s1,zeta s1,alpha s1,mid s1,extra s2,aa s2,bb'
+want='s1,practice s1,zeta s1,alpha s1,mid s1,extra s2,aa s2,bb s2,c2 s2,c10'
 got=$(tail -n +2 "$T/or/conditions.csv" | cut -d, -f1,2 | tr '\n' ' ' | sed 's/ $//')
 [ "$got" = "$want" ] && ok || bad "conditions.csv order: $got, want $want"
 got=$(tail -n +2 "$T/or/stats.csv" | cut -d, -f1,2 | uniq | tr '\n' ' ' | sed 's/ $//')
@@ -101,15 +103,15 @@ got=$(tail -n +2 "$T/or/learning.csv" | cut -d, -f1,2 | uniq | tr '\n' ' ' | sed
 got=$(grep '^P01,' "$T/or/participants.csv" | cut -d, -f3 | tr '\n' ' ' | sed 's/ $//')
 [ "$got" = 'practice zeta alpha mid extra' ] && ok || bad "participants.csv order: $got"
 # the page: the means table and the legend in the same order
-got=$(sed -n '/<h2>Statistics/,/<\/table>/p' "$T/or/index.html" | grep -o '<tr><td>s[12] / [a-z]*' |
+got=$(sed -n '/<h2>Statistics/,/<\/table>/p' "$T/or/index.html" | grep -o '<tr><td>s[12] / [a-z0-9]*' |
     sed 's/.*\/ //' | uniq | tr '\n' ' ' | sed 's/ $//')
-[ "$got" = 'zeta alpha mid extra aa bb' ] && ok || bad "the page's table: $got"
-got=$(sed -n '/aria-label="learning curves"/,/<\/svg>/p' "$T/or/index.html" | grep -o '>s[12] / [a-z]*' |
+[ "$got" = 'zeta alpha mid extra aa bb c2 c10' ] && ok || bad "the page's table: $got"
+got=$(sed -n '/aria-label="learning curves"/,/<\/svg>/p' "$T/or/index.html" | grep -o '>s[12] / [a-z0-9]*' |
     sed 's/.*\/ //' | tr '\n' ' ' | sed 's/ $//')
-[ "$got" = 'zeta alpha mid extra aa bb' ] && ok || bad "the legend: $got"
+[ "$got" = 'zeta alpha mid extra aa bb c2 c10' ] && ok || bad "the legend: $got"
 # the per-condition table of the page follows conditions.csv
-got=$(sed -n '/conditions.csv/,/<\/table>/p' "$T/or/index.html" | grep -o '<tr><td>s[12]</td><td>[a-z]*' |
+got=$(sed -n '/conditions.csv/,/<\/table>/p' "$T/or/index.html" | grep -o '<tr><td>s[12]</td><td>[a-z0-9]*' |
     sed 's/.*<td>//' | tr '\n' ' ' | sed 's/ $//')
-[ "$got" = 'practice zeta alpha mid extra aa bb' ] && ok || bad "the page's conditions: $got"
+[ "$got" = 'practice zeta alpha mid extra aa bb c2 c10' ] && ok || bad "the page's conditions: $got"
 
 finish cli_report_chart

@@ -445,6 +445,36 @@ static void rank_from_files(const report_run *r, rs_rank *k, hol_study *st)
     }
 }
 
+/* Names as a person sorts them: runs of digits by their value (c2 before
+ * c10; leading zeros decide a tie), the rest byte by byte. */
+static int name_cmp(const char *a, const char *b)
+{
+    while (*a && *b) {
+        if (*a >= '0' && *a <= '9' && *b >= '0' && *b <= '9') {
+            const char *za = a, *zb = b;
+            while (*za == '0')
+                za++;
+            while (*zb == '0')
+                zb++;
+            size_t na = strspn(za, "0123456789"), nb = strspn(zb, "0123456789");
+            if (na != nb)
+                return na < nb ? -1 : 1;
+            int c = memcmp(za, zb, na);
+            if (c)
+                return c;
+            if (za - a != zb - b)
+                return za - a < zb - b ? -1 : 1;
+            a = za + na;
+            b = zb + nb;
+            continue;
+        }
+        if (*a != *b)
+            return (unsigned char)*a < (unsigned char)*b ? -1 : 1;
+        a++, b++;
+    }
+    return *a ? 1 : *b ? -1 : 0;
+}
+
 static int by_rank(const void *pa, const void *pb)
 {
     int a = *(const int *)pa, b = *(const int *)pb;
@@ -455,7 +485,9 @@ static int by_rank(const void *pa, const void *pb)
         return x->klass < y->klass ? -1 : 1;
     if (x->klass != 2 && x->index != y->index)
         return x->index < y->index ? -1 : 1;
-    int c = strcmp(sort_stats->cond[a].condition, sort_stats->cond[b].condition);
+    int c = name_cmp(sort_stats->cond[a].condition, sort_stats->cond[b].condition);
+    if (!c)
+        c = strcmp(sort_stats->cond[a].condition, sort_stats->cond[b].condition);
     return c ? c : (a < b ? -1 : a > b);
 }
 

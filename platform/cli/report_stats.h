@@ -15,6 +15,10 @@
  *   (core/hol_stats.h: SD, 95 % t interval, n). Pointing errors: |error|
  *   in degrees, every answer with a bearing. SSQ and TLX: one score per
  *   complete questionnaire (all 16, all 6 items). Likert: every answer.
+ * - Conditions are listed (every CSV, the page) by study in the order
+ *   first seen; in a study practice first, then the order of the study
+ *   file (a LOGDIR's study-HASH.txt naming the condition), then by name;
+ *   outside a study in the order first seen; "none" last.
  * - report_stats_write writes the three CSVs atomically; report_stats_html
  *   writes the page's section into f. O(n log n) in the attempts.
  */
