@@ -303,6 +303,11 @@ sed -n '/aria-label="learning curves"/,/<\/svg>/p' rep/index.html | grep -o '<po
     sed 's/.* points="\([^"]*\)".*/\1/' >curves
 [ "$(wc -l <curves)" = 4 ] && [ "$(sort -u curves | wc -l)" = 4 ] && ok ||
     bad "learning curves drawn on top of each other: $(cat curves)"
+# conditions in the study file's order (study-HASH.txt), not P1's (q6-hand
+# before q6-hud): conditions.csv and stats.csv alike
+[ "$(sed 1d rep/conditions.csv | cut -d, -f2 | tr '\n' ' ')" = 'practice q5-hud q5-hand q6-hud q6-hand ' ] &&
+    [ "$(sed 1d rep/stats.csv | cut -d, -f2 | uniq | tr '\n' ' ')" = 'q5-hud q5-hand q6-hud q6-hand ' ] && ok ||
+    bad "conditions' order: $(cut -d, -f2 rep/conditions.csv | tr '\n' ' ')"
 # participant 1 alone (the replay's folder): the SSQ scores are theirs
 run "report P1" 0 "$H" report re1 --out rep1
 grep '^P1 ' ssq.scores | while read -r pp c na oc di tot; do

@@ -325,6 +325,8 @@ static int run(report_run *r, report_buf *b)
         st = CLI_EXIT_FAIL;
     }
     if (!st)
+        st = report_stats_order_agg(r, &g);
+    if (!st)
         st = report_write_csv(r);
     if (!st)
         st = report_write_conditions(r, &g);

@@ -2,6 +2,7 @@
  * points.csv and answers.csv read back, learning curves and the
  * per-participant table computed, stats.csv, learning.csv and
  * participants.csv written. */
+#include <dirent.h>
 #include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -400,6 +401,190 @@ static int participants(const report_run *r, report_stats *s)
     return 0;
 }
 
+/* ---- the conditions' order: the study file's (docs/research.md) ---- */
+
+typedef struct rs_rank {
+    int group;  /* the study's first condition in first-seen order */
+    int klass;  /* 0 practice, 1 in a study file, 2 not in one */
+    int index;  /* in the study file; outside a study: first seen */
+} rs_rank;
+
+static rs_rank *sort_rank; /* qsort has no context argument */
+static const report_stats *sort_stats;
+
+/* Each LOGDIR's study-HASH.txt files (by name) give their study's
+ * conditions in the file's order; the first file naming a condition wins. */
+static void rank_from_files(const report_run *r, rs_rank *k, hol_study *st)
+{
+    const report_stats *s = r->stats;
+    for (int d = 0; d < r->ndirs; d++) {
+        struct dirent **e = NULL;
+        int n = scandir(r->dirs[d], &e, NULL, alphasort);
+        for (int i = 0; i < n; i++) {
+            const char *nm = e[i]->d_name;
+            size_t len = strlen(nm);
+            char path[4200];
+            struct stat sb;
+            uint8_t *data = NULL;
+            size_t size = 0;
+            hol_level_err err;
+            snprintf(path, sizeof path, "%s/%s", r->dirs[d], nm);
+            if (len > 10 && !strncmp(nm, "study-", 6) && !strcmp(nm + len - 4, ".txt") &&
+                !lstat(path, &sb) && S_ISREG(sb.st_mode) &&
+                !hol_file_read_all(path, HOL_STUDY_TEXT_MAX, &data, &size) &&
+                !hol_study_parse((const char *)data, size, st, &err))
+                for (int c = 0; c < s->ncond; c++)
+                    for (int j = 0; k[c].klass == 2 && j < st->nconditions; j++)
+                        if (!strcmp(s->cond[c].study, st->name) &&
+                            !strcmp(s->cond[c].condition, st->conditions[j].name))
+                            k[c].klass = 1, k[c].index = j;
+            free(data);
+            free(e[i]);
+        }
+        free(e);
+    }
+}
+
+/* Names as a person sorts them: runs of digits by their value (c2 before
+ * c10; leading zeros decide a tie), the rest byte by byte. */
+static int name_cmp(const char *a, const char *b)
+{
+    while (*a && *b) {
+        if (*a >= '0' && *a <= '9' && *b >= '0' && *b <= '9') {
+            const char *za = a, *zb = b;
+            while (*za == '0')
+                za++;
+            while (*zb == '0')
+                zb++;
+            size_t na = strspn(za, "0123456789"), nb = strspn(zb, "0123456789");
+            if (na != nb)
+                return na < nb ? -1 : 1;
+            int c = memcmp(za, zb, na);
+            if (c)
+                return c;
+            if (za - a != zb - b)
+                return za - a < zb - b ? -1 : 1;
+            a = za + na;
+            b = zb + nb;
+            continue;
+        }
+        if (*a != *b)
+            return (unsigned char)*a < (unsigned char)*b ? -1 : 1;
+        a++, b++;
+    }
+    return *a ? 1 : *b ? -1 : 0;
+}
+
+static int by_rank(const void *pa, const void *pb)
+{
+    int a = *(const int *)pa, b = *(const int *)pb;
+    const rs_rank *x = &sort_rank[a], *y = &sort_rank[b];
+    if (x->group != y->group)
+        return x->group < y->group ? -1 : 1;
+    if (x->klass != y->klass)
+        return x->klass < y->klass ? -1 : 1;
+    if (x->klass != 2 && x->index != y->index)
+        return x->index < y->index ? -1 : 1;
+    int c = name_cmp(sort_stats->cond[a].condition, sort_stats->cond[b].condition);
+    if (!c)
+        c = strcmp(sort_stats->cond[a].condition, sort_stats->cond[b].condition);
+    return c ? c : (a < b ? -1 : a > b);
+}
+
+/* Conditions (not yet "none") reordered: by study in first-seen order;
+ * in a study practice first, then the study file's order, then those no
+ * study file names by name; outside a study the order first seen. */
+static int order_conditions(report_run *r)
+{
+    report_stats *s = r->stats;
+    int n = s->ncond;
+    rs_rank *k = malloc(sizeof *k * (size_t)(n + 1));
+    int *ix = malloc(sizeof *ix * (size_t)(n + 1)), *to = malloc(sizeof *to * (size_t)(n + 1));
+    rs_cond *old = malloc(sizeof *old * (size_t)(n + 1));
+    hol_study *st = malloc(sizeof *st);
+    int ok = k && ix && to && old && st;
+    for (int c = 0; ok && c < n; c++) {
+        ix[c] = c;
+        k[c].group = c;
+        for (int g = 0; g < c; g++)
+            if (!strcmp(s->cond[g].study, s->cond[c].study)) {
+                k[c].group = k[g].group;
+                break;
+            }
+        k[c].klass = !s->cond[c].study[0] ? 0 : s->cond[c].practice ? 0 : 2;
+        k[c].index = c;
+    }
+    if (ok) {
+        rank_from_files(r, k, st);
+        sort_rank = k;
+        sort_stats = s;
+        qsort(ix, (size_t)n, sizeof *ix, by_rank);
+        memcpy(old, s->cond, sizeof *old * (size_t)n);
+        for (int c = 0; c < n; c++) {
+            s->cond[c] = old[ix[c]];
+            to[ix[c]] = c;
+        }
+        for (int i = 0; i < r->natt; i++)
+            s->att_cond[i] = to[s->att_cond[i]];
+        s->seen = to; /* first seen -> listed (report_stats_order_agg) */
+        s->nseen = n;
+        to = NULL;
+    }
+    free(k);
+    free(ix);
+    free(to);
+    free(old);
+    free(st);
+    return ok ? 0 : CLI_EXIT_FAIL;
+}
+
+typedef struct rs_aggkey {
+    int rank, i;
+} rs_aggkey;
+
+static int by_aggkey(const void *pa, const void *pb)
+{
+    const rs_aggkey *a = pa, *b = pb;
+    if (a->rank != b->rank)
+        return a->rank < b->rank ? -1 : 1;
+    return a->i < b->i ? -1 : a->i > b->i;
+}
+
+/* The conditions of g (first seen, as report_stats_read's were) in the
+ * same order as stats.csv's. */
+int report_stats_order_agg(const report_run *r, hol_report_agg *g)
+{
+    const report_stats *s = r->stats;
+    if (!s || !g->c || g->n < 2)
+        return 0;
+    rs_aggkey *k = malloc(sizeof *k * (size_t)g->n);
+    hol_report_cond *old = malloc(sizeof *old * (size_t)g->n);
+    if (!k || !old) {
+        free(k);
+        free(old);
+        cli_error(r->cmd, 0, "out of memory");
+        return CLI_EXIT_FAIL;
+    }
+    for (int i = 0; i < g->n; i++) {
+        const hol_report_cond *c = &g->c[i];
+        int at = i < s->nseen ? s->seen[i] : -1;
+        if (at < 0 || strcmp(s->cond[at].study, c->study) ||
+            strcmp(s->cond[at].condition, c->condition))
+            for (at = 0; at < s->ncond; at++) /* not expected: looked up */
+                if (!strcmp(s->cond[at].study, c->study) &&
+                    !strcmp(s->cond[at].condition, c->condition))
+                    break;
+        k[i] = (rs_aggkey){at, i};
+    }
+    qsort(k, (size_t)g->n, sizeof *k, by_aggkey);
+    memcpy(old, g->c, sizeof *old * (size_t)g->n);
+    for (int i = 0; i < g->n; i++)
+        g->c[i] = old[k[i].i];
+    free(k);
+    free(old);
+    return 0;
+}
+
 /* ---- reading it all ---- */
 
 static int alloc_stats(report_run *r)
@@ -428,6 +613,10 @@ int report_stats_read(report_run *r)
     for (int i = 0; !st && i < r->natt; i++) {
         s->att_cond[i] = cond_of(s, &r->att[i].a);
         s->order[i] = i;
+    }
+    if (!st && order_conditions(r)) {
+        cli_error(r->cmd, 0, "out of memory");
+        st = CLI_EXIT_FAIL;
     }
     if (st)
         return st;
@@ -477,6 +666,7 @@ void report_stats_free(report_run *r)
     free(s->slot);
     free(s->learn);
     free(s->prow);
+    free(s->seen);
     free(s);
     r->stats = NULL;
 }

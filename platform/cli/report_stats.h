@@ -15,6 +15,10 @@
  *   (core/hol_stats.h: SD, 95 % t interval, n). Pointing errors: |error|
  *   in degrees, every answer with a bearing. SSQ and TLX: one score per
  *   complete questionnaire (all 16, all 6 items). Likert: every answer.
+ * - Conditions are listed (every CSV, the page) by study in the order
+ *   first seen; in a study practice first, then the order of the study
+ *   file (a LOGDIR's study-HASH.txt naming the condition), then by name;
+ *   outside a study in the order first seen; "none" last.
  * - report_stats_write writes the three CSVs atomically; report_stats_html
  *   writes the page's section into f. O(n log n) in the attempts.
  */
@@ -30,6 +34,11 @@ int report_stats_read(report_run *r);
 int report_stats_write(const report_run *r);
 void report_stats_html(FILE *f, const report_run *r);
 void report_stats_free(report_run *r);
+/* Sort g's conditions (as hol_report_agg_add finds them: first seen) into
+ * the order of stats.csv (docs/research.md "Report": a study's practice,
+ * its conditions in the study file's order, then the rest by name). 0, or
+ * CLI_EXIT_FAIL out of memory (one line said). */
+int report_stats_order_agg(const report_run *r, hol_report_agg *g);
 /* LOGDIR d named from DIR (both resolved: "../logs"); "" when either
  * cannot be resolved. */
 void report_rel_dir(const report_run *r, int d, char *out, size_t cap);

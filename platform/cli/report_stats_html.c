@@ -83,8 +83,9 @@ static void means_table(FILE *f, const report_run *r)
     fputs("</table>\n", f);
 }
 
-/* Conditions that have a point in the learning curves, in order. */
-static int legend(FILE *f, const report_run *r, int x, int y, const int *used)
+/* Conditions with a point in the plot (used[c]), in order; with n (not
+ * NULL) each says its n: n[2c]..n[2c+1] (one number when equal). */
+static int legend(FILE *f, const report_run *r, int x, int y, const int *used, const long *n)
 {
     const report_stats *s = r->stats;
     int k = 0;
@@ -94,6 +95,10 @@ static int legend(FILE *f, const report_run *r, int x, int y, const int *used)
         fprintf(f, "<rect x=\"%d\" y=\"%d\" width=\"12\" height=\"12\" fill=\"%s\"/>"
                    "<text x=\"%d\" y=\"%d\">", x, y + 16 * k, palette[c % 8], x + 16, y + 16 * k + 11);
         cond_name(f, &s->cond[c]);
+        if (n && n[2 * c] == n[2 * c + 1])
+            fprintf(f, " (n = %ld)", n[2 * c]);
+        else if (n)
+            fprintf(f, " (n = %ld&#8211;%ld)", n[2 * c], n[2 * c + 1]);
         fputs("</text>\n", f);
         k++;
     }
@@ -123,7 +128,40 @@ static void axes(FILE *f, const char *xl, const char *yl, double xmax, double ym
                "%s</text>\n", PL + w / 2, PH - 4, xl, 20 + h / 2, 20 + h / 2, yl);
 }
 
-static void learning_svg(FILE *f, const report_run *r, int *used)
+#define RS_YTOP 1.05 /* the learning plot's top (efficiency) */
+
+/* One end of a CI bar at y: a cap, or (cut) an arrowhead pointing out of
+ * the plot (dir -1 up, +1 down). */
+static void bar_end(FILE *f, double x, double y, int cut, int dir, const char *col)
+{
+    if (cut)
+        fprintf(f, "<polygon class=\"ci-cut\" points=\"%.1f,%.1f %.1f,%.1f %.1f,%.1f\" "
+                   "fill=\"%s\"/>", x - 4, y - 7.0 * dir, x + 4, y - 7.0 * dir, x, y, col);
+    else
+        fprintf(f, "<line class=\"ci-cap\" x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" "
+                   "stroke=\"%s\"/>", x - 4, y, x + 4, y, col);
+}
+
+/* A point of a learning curve: its dot (a title with its numbers) and,
+ * when it has a CI, its bar cut at 0 and RS_YTOP. */
+static void learn_point(FILE *f, const rs_learn *l, double x, int h, const char *col)
+{
+    double y0 = 20 + h;
+    fprintf(f, "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"3\" fill=\"%s\"><title>position %ld: mean "
+               "%.3f, n = %ld</title></circle>", x, y0 - l->m.mean * h, col, l->pos, l->m.mean,
+            l->m.n);
+    if (l->m.has_sd) {
+        int cut_lo = l->m.lo < 0, cut_hi = l->m.hi > RS_YTOP;
+        double lo = cut_lo ? 0 : l->m.lo, hi = cut_hi ? RS_YTOP : l->m.hi;
+        fprintf(f, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"%s\"/>", x,
+                y0 - lo * h, x, y0 - hi * h, col);
+        bar_end(f, x, y0 - hi * h, cut_hi, -1, col);
+        bar_end(f, x, y0 - lo * h, cut_lo, 1, col);
+    }
+    fputc('\n', f);
+}
+
+static void learning_svg(FILE *f, const report_run *r, int *used, long *nrange)
 {
     const report_stats *s = r->stats;
     long maxpos = 1;
@@ -132,7 +170,10 @@ static void learning_svg(FILE *f, const report_run *r, int *used)
     int w = PW - PL - PR, h = PH - PB - 20;
     fputs("<h3>Learning curves</h3>\n<p>Mean efficiency (optimum / steps) of completed "
           "attempts by position in the participant's order (outside a study: the attempt "
-          "number), per condition; bars: 95 % CI (cut at 0 and 1.05). Each condition's "
+          "number), per condition; bars: 95 % CI, with a cap at each end; bars cut at the "
+          "plot's edge (0 and 1.05) end in an arrow. n: completed attempts at a point "
+          "(range per condition in the legend; each point's in its tooltip and in "
+          "learning.csv); with n = 2 the interval is wide. Each condition's "
           "curve is drawn a little to the side of its position and narrower than the one "
           "before, so that equal curves stay visible.</p>\n", f);
     fprintf(f, "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%d\" height=\"%d\" "
@@ -157,21 +198,17 @@ static void learning_svg(FILE *f, const report_run *r, int *used)
         fputs("\"/>\n", f);
         for (; i < j; i++) {
             const rs_learn *l = &s->learn[i];
-            double x = PL + (double)l->pos / maxpos * w + dx;
-            double lo = l->m.lo < 0 ? 0 : l->m.lo, hi = l->m.hi > 1.05 ? 1.05 : l->m.hi;
-            fprintf(f, "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"3\" fill=\"%s\"/>", x,
-                    20 + h - l->m.mean * h, palette[c % 8]);
-            if (l->m.has_sd)
-                fprintf(f, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"%s\"/>",
-                        x, 20 + h - lo * h, x, 20 + h - hi * h, palette[c % 8]);
-            fputc('\n', f);
+            long *n = &nrange[2 * c];
+            n[0] = !n[1] || l->m.n < n[0] ? l->m.n : n[0];
+            n[1] = l->m.n > n[1] ? l->m.n : n[1];
+            learn_point(f, l, PL + (double)l->pos / maxpos * w + dx, h, palette[c % 8]);
         }
     }
-    legend(f, r, PW - PR + 10, 24, used);
+    legend(f, r, PW - PR + 10, 24, used, nrange);
     fputs("</svg>\n", f);
 }
 
-static void scatter_svg(FILE *f, const report_run *r, int *used)
+static void scatter_svg(FILE *f, const report_run *r, int *used, long *nrange)
 {
     const report_stats *s = r->stats;
     double maxv = 1;
@@ -183,7 +220,7 @@ static void scatter_svg(FILE *f, const report_run *r, int *used)
         }
     int w = PW - PL - PR, h = PH - PB - 20;
     fputs("<h3>Steps against optimum</h3>\n<p>Each completed scored attempt (practice left "
-          "out); on the grey line steps = optimum.</p>\n", f);
+          "out); on the grey line steps = optimum; n per condition in the legend.</p>\n", f);
     fprintf(f, "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%d\" height=\"%d\" "
                "font-family=\"sans-serif\" font-size=\"11\" role=\"img\" "
                "aria-label=\"steps against optimum\">\n", PW, PH);
@@ -191,17 +228,19 @@ static void scatter_svg(FILE *f, const report_run *r, int *used)
     fprintf(f, "<line x1=\"%d\" y1=\"%d\" x2=\"%d\" y2=\"20\" stroke=\"#aaa\"/>\n", PL, 20 + h,
             PL + w);
     memset(used, 0, sizeof *used * (size_t)s->ncond);
+    memset(nrange, 0, sizeof *nrange * 2 * (size_t)s->ncond);
     for (int i = 0; i < r->natt; i++) {
         const hol_report_attempt *a = &r->att[i].a;
         if (!rs_included(r, i) || a->optimum < 0)
             continue;
         int c = s->att_cond[i];
         used[c] = 1;
+        nrange[2 * c] = ++nrange[2 * c + 1];
         fprintf(f, "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"3\" fill=\"%s\" fill-opacity=\"0.6\"/>\n",
                 PL + (double)a->optimum / maxv * w, 20 + h - (double)a->steps / maxv * h,
                 palette[c % 8]);
     }
-    legend(f, r, PW - PR + 10, 24, used);
+    legend(f, r, PW - PR + 10, 24, used, nrange);
     fputs("</svg>\n", f);
 }
 
@@ -233,11 +272,13 @@ void report_stats_html(FILE *f, const report_run *r)
 {
     const report_stats *s = r->stats;
     static int used_buf[REPORT_MAX_ATTEMPTS + 2];
+    static long n_buf[2 * (REPORT_MAX_ATTEMPTS + 2)];
     if (!s)
         return;
     memset(used_buf, 0, sizeof used_buf);
+    memset(n_buf, 0, sizeof n_buf);
     means_table(f, r);
-    learning_svg(f, r, used_buf);
-    scatter_svg(f, r, used_buf);
+    learning_svg(f, r, used_buf, n_buf);
+    scatter_svg(f, r, used_buf, n_buf);
     participants_table(f, r);
 }

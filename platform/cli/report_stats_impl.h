@@ -50,6 +50,8 @@ typedef struct report_stats {
     int nlearn;
     rs_prow *prow;
     int nprow;
+    int *seen; /* a condition first seen i-th is listed seen[i]-th */
+    int nseen;
 } report_stats;
 
 int rs_included(const report_run *r, int i); /* done, not practice */
