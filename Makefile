@@ -55,7 +55,8 @@ AUDIO_SRC := $(wildcard platform/audio/*.c)
 # only with `make XR=1` (CI builds and runs it in the Monado chroot).
 XR      ?= 0
 XR_PURE_SRC := platform/openxr/hol_xr_room.c platform/openxr/hol_xr_bind.c \
-               platform/openxr/hol_xr_pick.c platform/openxr/hol_xr_text.c
+               platform/openxr/hol_xr_pick.c platform/openxr/hol_xr_text.c \
+               platform/openxr/hol_xr_quad.c
 XR_SRC  := $(XR_PURE_SRC) $(if $(filter 1,$(XR)),$(filter-out $(XR_PURE_SRC),$(wildcard platform/openxr/*.c)))
 XR_LIBS := $(if $(filter 1,$(XR)),-lopenxr_loader -lGL -lX11)
 ifeq ($(XR),1)
