@@ -442,7 +442,7 @@ EMCC     ?= emcc
 EMCC_ENV := NODE_PATH=/usr/share/nodejs EM_CACHE=/usr/share/emscripten/cache
 WEB      := $(BUILD)/web
 WEB_SRC  := $(CORE_SRC) $(filter-out render/hol_png.c,$(RENDER_SRC)) \
-            $(wildcard platform/web/*.c) platform/openxr/hol_xr_room.c \
+            $(wildcard platform/web/*.c) platform/openxr/hol_xr_room.c platform/openxr/hol_xr_quad.c \
             platform/audio/hol_audio.c
 WEB_OBJ  := $(WEB_SRC:%.c=$(BUILD)/web-obj/%.o)
 WEB_CFLAGS := $(CSTD) $(WARN) -O3 -ffp-contract=off -D_DEFAULT_SOURCE -MMD -MP
