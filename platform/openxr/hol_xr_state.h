@@ -6,13 +6,14 @@
  *   hol_xr_events.c   the runtime's events: lifecycle, loss, a reference
  *                     space changed, an interaction profile changed
  *   hol_xr_frame.c    one frame: the input record, the app step, both eyes
+ *   hol_xr_panel.c    the world panel's quad layer (its swapchain, its image)
  *   hol_xr_check.c    the desktop read-back check of one eye
  *   hol_xr_views.c    view configuration and swapchains
  *   hol_xr_actions.c  actions, bindings, reference spaces, stage bounds
  *   hol_xr_gfx.c      the GL context and its graphics binding
  *   hol_xr_state.c    reporting: progress lines and the one failure line
  * and the pure parts every one of them may use: hol_xr_room.h,
- * hol_xr_bind.h, hol_xr_pick.h, hol_xr_text.h.
+ * hol_xr_bind.h, hol_xr_pick.h, hol_xr_quad.h, hol_xr_text.h.
  *
  * Contract
  * - One hol__xr per run, zeroed at start; every XR handle not yet made is
