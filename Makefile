@@ -55,7 +55,8 @@ AUDIO_SRC := $(wildcard platform/audio/*.c)
 # only with `make XR=1` (CI builds and runs it in the Monado chroot).
 XR      ?= 0
 XR_PURE_SRC := platform/openxr/hol_xr_room.c platform/openxr/hol_xr_bind.c \
-               platform/openxr/hol_xr_pick.c platform/openxr/hol_xr_text.c
+               platform/openxr/hol_xr_pick.c platform/openxr/hol_xr_text.c \
+               platform/openxr/hol_xr_quad.c
 XR_SRC  := $(XR_PURE_SRC) $(if $(filter 1,$(XR)),$(filter-out $(XR_PURE_SRC),$(wildcard platform/openxr/*.c)))
 XR_LIBS := $(if $(filter 1,$(XR)),-lopenxr_loader -lGL -lX11)
 ifeq ($(XR),1)
@@ -454,7 +455,7 @@ EMCC     ?= emcc
 EMCC_ENV := NODE_PATH=/usr/share/nodejs EM_CACHE=/usr/share/emscripten/cache
 WEB      := $(BUILD)/web
 WEB_SRC  := $(CORE_SRC) $(filter-out render/hol_png.c,$(RENDER_SRC)) \
-            $(wildcard platform/web/*.c) platform/openxr/hol_xr_room.c \
+            $(wildcard platform/web/*.c) platform/openxr/hol_xr_room.c platform/openxr/hol_xr_quad.c \
             platform/audio/hol_audio.c
 WEB_OBJ  := $(WEB_SRC:%.c=$(BUILD)/web-obj/%.o)
 WEB_CFLAGS := $(CSTD) $(WARN) -O3 -ffp-contract=off -D_DEFAULT_SOURCE -MMD -MP

@@ -65,6 +65,24 @@ void hol_hud_build_hand_arrow(hol_mesh *out, const hol_frame_desc *f);
 #define HOL_HUD_PANEL_GAP 6.0f
 void hol_hud_build_panel_text(hol_mesh *out, const hol_frame_desc *f, float out_wh[2]);
 
+/* The panel's whole box in its own plane (x right, y up, metres; the
+ * panel's centre, panel_pos, at 0, 0): what a composition layer shows
+ * (HOL_RENDER_PANEL_LAYER). map: the map square stands beside the text
+ * (HOL_RENDER_MINIMAP without HOL_RENDER_MINIMAP_HAND); px: metres per
+ * font pixel (0: HOL_RENDER_PANEL_PX). The box is the text block's
+ * widest and tallest (HOL_HUD_PANEL_HMAX: a block of fewer lines leaves
+ * its lower part empty): out = width, height, centre x, centre y. */
+static inline void hol_hud_panel_box(int map, double px, double out[4])
+{
+    double k = px > 0 ? px : HOL_RENDER_PANEL_PX;
+    double wide = HOL_HUD_PANEL_W + (map ? HOL_HUD_PANEL_GAP + HOL_HUD_PANEL_MAP : 0);
+    double top = HOL_HUD_PANEL_MAP / 2, bottom = top - HOL_HUD_PANEL_HMAX;
+    out[0] = wide * k;
+    out[1] = (top - bottom) * k;
+    out[2] = 0;
+    out[3] = (top + bottom) / 2 * k;
+}
+
 /* The HUD minimap's square, rim arrows included, on a w x h screen:
  * out = x0, y0, x1, y1 in pixels (y down). */
 void hol_hud_map_rect(int w, int h, float out[4]);

@@ -965,6 +965,8 @@ static uint64_t hol__map_key(const hol_frame_desc *f, int hand)
  * it, each a quad placed in the panel's plane (render/hol_hud.h). */
 static hol_err hol__queue_panel(hol_render *r, const hol_frame_desc *f)
 {
+    if (f->flags & HOL_RENDER_PANEL_LAYER)
+        return HOL_OK; /* the runtime shows it (hol_render_panel_image) */
     int map = (f->flags & HOL_RENDER_MINIMAP) && !(f->flags & HOL_RENDER_MINIMAP_HAND);
     double px = f->panel_px > 0 ? f->panel_px : HOL_RENDER_PANEL_PX;
     double wide = HOL_HUD_PANEL_W + (map ? HOL_HUD_PANEL_GAP + HOL_HUD_PANEL_MAP : 0);
@@ -1427,6 +1429,85 @@ hol_err hol_render_frame(hol_render *r, const hol_frame_desc *f,
     if (out_stats)
         *out_stats = st;
     return HOL_OK;
+}
+
+/* The panel alone (hol_render_panel_key, _image): g is f with the panel
+ * at the origin, unturned, the map beside the text or none (a map in the
+ * hand is not the panel's), queued into the dynamic mesh. */
+static hol_err hol__queue_panel_only(hol_render *r, const hol_frame_desc *f, hol_frame_desc *g)
+{
+    *g = *f;
+    uint32_t keep = HOL_RENDER_MINIMAP | HOL_RENDER_NO_HOT_COLD | HOL_RENDER_NO_ARROW;
+    g->flags = (f->flags & keep) | HOL_RENDER_PANEL;
+    if (f->flags & HOL_RENDER_MINIMAP_HAND)
+        g->flags &= ~(uint32_t)HOL_RENDER_MINIMAP;
+    memset(g->panel_pos, 0, sizeof g->panel_pos);
+    static const double unturned[4] = {0, 0, 0, 1};
+    memcpy(g->panel_orient, unturned, sizeof unturned);
+    g->lighting = 0;
+    g->fade = 0;
+    hol_mesh_clear(&r->dyn);
+    r->nitems = 0;
+    hol_err err = hol__queue_hud(r, g);
+    return err ? err : r->dyn.overflow ? HOL_ENOMEM : HOL_OK;
+}
+
+uint64_t hol_render_panel_key(hol_render *r, const hol_frame_desc *f)
+{
+    hol_frame_desc g;
+    uint64_t key = 0xcbf29ce484222325ull;
+    if (hol__queue_panel_only(r, f, &g))
+        return key; /* an overflow draws nothing: never equal to a drawn key */
+    key = hol__fnv(key, &g.flags, sizeof g.flags);
+    key = hol__fnv(key, &g.panel_px, sizeof g.panel_px);
+    key = hol__fnv(key, r->dyn.v, r->dyn.nv * sizeof r->dyn.v[0]);
+    key = hol__fnv(key, r->dyn.idx, r->dyn.ni * sizeof r->dyn.idx[0]);
+    for (int i = 0; i < r->nitems; i++) {
+        key = hol__fnv(key, r->items[i].model, sizeof r->items[i].model);
+        key = hol__fnv(key, &r->items[i].count, sizeof r->items[i].count);
+    }
+    if (g.flags & HOL_RENDER_MINIMAP)
+        key = hol__fnv(key, &r->hud_key, sizeof r->hud_key);
+    return key ^ 1; /* never the overflow's */
+}
+
+hol_err hol_render_panel_image(hol_render *r, const hol_frame_desc *f, int w, int h)
+{
+    int maxw = r->desc.max_width > 0 ? r->desc.max_width : 4096;
+    int maxh = r->desc.max_height > 0 ? r->desc.max_height : 4096;
+    if (w <= 0 || h <= 0 || w > maxw || h > maxh)
+        return HOL_EARG;
+    hol_frame_desc g;
+    hol_err err = hol__queue_panel_only(r, f, &g);
+    if (err)
+        return err;
+    for (int i = 0; i < r->nitems; i++)
+        r->sorted[i] = &r->items[i];
+    qsort(r->sorted, (size_t)r->nitems, sizeof r->sorted[0], hol__cmp_item);
+    g.cam.width = w;
+    g.cam.height = h;
+    g.vp_x = g.vp_y = 0;
+    float vp[16];
+    hol__frame_begin(r, &g, vp); /* uploads the text; clears to the sky */
+    r->gl.ClearColor(0, 0, 0, 0);
+    r->gl.Clear(GL_COLOR_BUFFER_BIT);
+    /* the box (panel plane, metres) onto the whole image */
+    double box[4];
+    hol_hud_panel_box((g.flags & HOL_RENDER_MINIMAP) != 0, g.panel_px, box);
+    memset(vp, 0, sizeof vp);
+    vp[0] = (float)(2 / box[0]);
+    vp[5] = (float)(2 / box[1]);
+    vp[10] = 1;
+    vp[12] = (float)(-2 * box[2] / box[0]);
+    vp[13] = (float)(-2 * box[3] / box[1]);
+    vp[15] = 1;
+    hol_render_stats st;
+    memset(&st, 0, sizeof st);
+    hol__execute(r, &g, vp, &st);
+    r->gl.Disable(GL_BLEND);
+    r->gl.BindVertexArray(0);
+    r->gl.Disable(GL_SCISSOR_TEST);
+    return r->desc.debug ? hol_render_check(r) : HOL_OK;
 }
 
 hol_err hol_render_check(hol_render *r)

@@ -117,10 +117,14 @@ enum {
                                      pixel is (lanterns' sum, fog factor,
                                      fireflies' sum)
                                      (docs/rendering.md#lighting) */
-    HOL_RENDER_PANEL = 2048       /* a headset's eye: the HUD text (and the
+    HOL_RENDER_PANEL = 2048,      /* a headset's eye: the HUD text (and the
                                      minimap unless in the hand) on a panel
                                      in the world (panel_* below), not on
                                      the screen */
+    HOL_RENDER_PANEL_LAYER = 8192 /* with PANEL: the panel is shown by the
+                                     runtime (a composition layer drawn by
+                                     hol_render_panel_image): the eye leaves
+                                     it out (a map in the hand stays) */
 };
 
 #define HOL_RENDER_MAX_OBJECTIVES 8
@@ -272,6 +276,22 @@ void hol_render_invalidate(hol_render *r);
  * HOL_ENOMEM (the fixed stores overflowed). */
 hol_err hol_render_frame(hol_render *r, const hol_frame_desc *f,
                          hol_render_stats *out_stats);
+
+/* The headset panel's content alone, for a composition layer (an OpenXR
+ * quad layer, a WebXR XRQuadLayer): f as for an eye with HOL_RENDER_PANEL
+ * (its text, flags, map; the camera and the panel's pose are not used).
+ * hol_render_panel_key: a hash of everything the image shows (the text
+ * block's vertices and size, the map's inputs), computed on the CPU (it
+ * may upload a changed resident map, as a frame would): equal keys, equal
+ * images, so the caller redraws only when the key changes.
+ * hol_render_panel_image: draws the image into the current framebuffer at
+ * (0, 0), w x h pixels: the panel's box (hol_hud_panel_box in
+ * render/hol_hud.h) fills it, x right and y up as GL's (row 0 at the
+ * bottom), the rest of the box cleared to transparent (0, 0, 0, 0), the
+ * panel's own pixels opaque. Errors: HOL_EARG (a size outside 1..the
+ * renderer's maximum), HOL_ENOMEM. */
+uint64_t hol_render_panel_key(hol_render *r, const hol_frame_desc *f);
+hol_err hol_render_panel_image(hol_render *r, const hol_frame_desc *f, int w, int h);
 
 /* Ask the GL for errors now (one glGetError round trip): HOL_OK, or
  * HOL_EUNSUPPORTED when the GL reported one since the last check. For

@@ -9,6 +9,7 @@
 
 #include "../../core/hol_session.h"
 #include "../openxr/hol_xr_pick.h"
+#include "../openxr/hol_xr_quad.h"
 #include "cli.h"
 #include "play_env.h"
 #include "play_setup.h"
@@ -25,7 +26,8 @@ static const char *const xr_usage =
     "                   [--participant ID] [--session N] [--meta KEY=VALUE]...\n"
     "                   [--record FILE] [--input FILE] [--space stage|local]\n"
     "                   [--play-area WxD] [--no-haptics] [--mute | --volume V]\n"
-    "                   [--track-hz N] [--check-frame K --check-dir DIR]\n"
+    "                   [--track-hz N] [--panel quad|scene]\n"
+    "                   [--check-frame K --check-dir DIR]\n"
     "                   [--tiling 4,Q] [--room CxR] [--cell M]\n"
     "\n"
     "The headset app on this machine's OpenXR runtime (for example Monado):\n"
@@ -58,6 +60,12 @@ static const char *const xr_usage =
     "  --play-area WxD the play area in metres (for example 2.6x2.6), used\n"
     "                  instead of the runtime's stage bounds: a runtime that\n"
     "                  gives none, or a smaller area than it draws\n"
+    "  --panel P       the world panel (text, prompts, menus, end screens,\n"
+    "                  questionnaires): quad (the default) an OpenXR quad\n"
+    "                  layer the runtime composites over the scene (crisp\n"
+    "                  text; where the runtime cannot make its image, the\n"
+    "                  scene instead, said in an 'xr:' line), or scene: drawn\n"
+    "                  in each eye's image (docs/headset.md)\n"
     "  --mute          no sound; --volume V: 0..1 (default 1) times the\n"
     "                  sound's gain (OpenAL Soft, HRTF where offered; a line\n"
     "                  'xr: sound ...' says whether it plays; without a device\n"
@@ -86,6 +94,7 @@ typedef struct xr_opts {
     long frames, check_frame;
     int append, restart_participant, resume;
     int space; /* 0 or HOL_XR_SPACE_LOCAL (hol_xr_desc.space) */
+    int panel; /* HOL_XR_PANEL_QUAD (0) or _SCENE (hol_xr_desc.panel) */
     play_geometry geo;
     float play_area[2]; /* --play-area (hol_xr_desc.play_area) */
     int no_haptics;     /* --no-haptics: fns.haptic NULL */
@@ -136,7 +145,7 @@ static int xr_count(const char *cmd, const char *a, const char *val, xr_opts *o)
 
 static const char *const xr_valued[] = {"--frames",      "--log",       "--record",
                                         "--input",       "--check-frame", "--check-dir",
-                                        "--participant", "--space",    "--study",
+                                        "--participant", "--space",    "--study", "--panel",
                                         PLAY_GEOMETRY_OPTIONS, "--play-area", "--volume",
                                         "--track-hz", PLAY_ENV_OPTIONS, NULL};
 
@@ -192,7 +201,12 @@ static int xr_options(const char *cmd, int argc, char **argv, xr_opts *o)
             o->resume = 1;
         else if (!strcmp(a, "--play-area"))
             bad = xr_play_area(cmd, val, o->play_area);
-        else if (!strcmp(a, "--space")) {
+        else if (!strcmp(a, "--panel")) {
+            bad = strcmp(val, "quad") && strcmp(val, "scene");
+            if (bad)
+                cli_error(cmd, 0, "--panel '%.40s' is neither quad nor scene", val);
+            o->panel = !strcmp(val, "scene") ? HOL_XR_PANEL_SCENE : HOL_XR_PANEL_QUAD;
+        } else if (!strcmp(a, "--space")) {
             bad = strcmp(val, "stage") && strcmp(val, "local");
             if (bad)
                 cli_error(cmd, 0, "--space '%.40s' is neither stage nor local", val);
@@ -401,6 +415,7 @@ static int xr_run(const xr_opts *o, xr_ctx *c, const hol_input *script, long nsc
     d.script = script;
     d.nscript = nscript;
     d.space = o->space;
+    d.panel = o->panel;
     d.play_area[0] = o->play_area[0];
     d.play_area[1] = o->play_area[1];
     hol_xr_app_fns fns = {.user = c, .step = xr_step, .world = xr_world,

@@ -124,7 +124,7 @@ static int hol__setup(hol__xr *x, const void *binding)
     sc.next = binding;
     sc.systemId = x->system;
     HOL__XR(x, "create the headset session", xrCreateSession(x->instance, &sc, &x->session));
-    if (hol__spaces(x) || hol__swapchains(x))
+    if (hol__spaces(x) || hol__swapchains(x) || hol__quad_setup(x))
         return 1;
     if (x->fns->host) {
         typedef const unsigned char *(*get_string_fn)(unsigned);
@@ -157,6 +157,10 @@ static void hol__figures(hol__xr *x)
 {
     hol__say(x, "xr: frames submitted %ld, reached FOCUSED %s, faded at the boundary %ld",
              x->submitted, x->reached_focused ? "yes" : "no", x->faded);
+    if (x->quad_on)
+        hol__say(x, "xr: panel quad layer submitted in %ld frames, its image drawn %ld times "
+                    "(when its content changed)",
+                 x->quad_frames, x->quad_cache.redraws);
     hol__say(x, "xr: controller pulses %ld (%ld into a hedge or a trunk, %ld room steps)%s",
              x->pulses, x->pulses_hit, x->pulses - x->pulses_hit,
              x->fns->haptic ? "" : ": off (--no-haptics)");
@@ -207,6 +211,7 @@ static int hol__run(hol__xr *x, const void *binding)
 static void hol__destroy(hol__xr *x)
 {
     hol_render_destroy(x->rnd);
+    hol__quad_free(x);
     hol__views_free(x);
     for (int h = 0; h < 2; h++)
         if (x->grip[h] != XR_NULL_HANDLE)

@@ -66,6 +66,11 @@ typedef struct hol_xr_desc {
     long nscript;
     int space;               /* 0: STAGE when the runtime has it, else LOCAL;
                                 HOL_XR_SPACE_LOCAL (hol_xr_pick.h): LOCAL */
+    int panel;               /* the world panel (hol_xr_quad.h):
+                                HOL_XR_PANEL_QUAD (0) an OpenXR quad layer
+                                where the runtime makes its swapchain, else
+                                in the scene; HOL_XR_PANEL_SCENE in the
+                                scene */
     float play_area[2];      /* > 0: the play area's width and depth in
                                 metres, given by hand: used instead of the
                                 runtime's stage bounds (a runtime without

@@ -193,6 +193,8 @@ static int hol__draw_eye(hol__xr *x, int e, const hol_app_view *v, const hol_inp
     hol_frame_desc fd;
     hol_app_frame_desc(v, e, ey->w, ey->h, 0, &fd);
     hol_app_frame_panel(v, &fd); /* the HUD on a panel in the world */
+    if (x->quad_on) /* the panel is the quad layer's */
+        fd.flags |= HOL_RENDER_PANEL_LAYER;
     for (int k = 0; k < 3; k++)
         fd.cam.eye[k] = eroom->pos[k];
     fd.cam.has_pose = 1;
@@ -265,6 +267,7 @@ static int hol__eyes(hol__xr *x, const hol_app_view *v, const hol_input *in,
         if (hol__draw_eye(x, e, v, in, &eroom[e], fade, &pv[e]))
             return 1;
     *out_rendered = fade > 0 ? 2 : 1;
+    x->fade_now = fade;
     return 0;
 }
 
@@ -316,11 +319,18 @@ int hol__frame(hol__xr *x)
     layer.space = x->stage;
     layer.viewCount = 2;
     layer.views = pv;
-    const XrCompositionLayerBaseHeader *layers[1] = {(const XrCompositionLayerBaseHeader *)&layer};
+    /* the panel's quad after the projection layer (over it), unless the
+     * view is faded out entirely */
+    XrCompositionLayerQuad quad = {XR_TYPE_COMPOSITION_LAYER_QUAD};
+    int with_quad = 0;
+    if (rendered && x->fade_now < 1 && hol__quad_layer(x, v, shift, &quad, &with_quad))
+        return 1;
+    const XrCompositionLayerBaseHeader *layers[2] = {(const XrCompositionLayerBaseHeader *)&layer,
+                                                     (const XrCompositionLayerBaseHeader *)&quad};
     XrFrameEndInfo ei = {XR_TYPE_FRAME_END_INFO};
     ei.displayTime = fs.predictedDisplayTime;
     ei.environmentBlendMode = XR_ENVIRONMENT_BLEND_MODE_OPAQUE;
-    ei.layerCount = rendered ? 1 : 0;
+    ei.layerCount = rendered ? 1 + (uint32_t)with_quad : 0;
     ei.layers = layers;
     HOL__XR(x, "show the frame", xrEndFrame(x->session, &ei));
     x->submitted++;

@@ -6,13 +6,14 @@
  *   hol_xr_events.c   the runtime's events: lifecycle, loss, a reference
  *                     space changed, an interaction profile changed
  *   hol_xr_frame.c    one frame: the input record, the app step, both eyes
+ *   hol_xr_panel.c    the world panel's quad layer (its swapchain, its image)
  *   hol_xr_check.c    the desktop read-back check of one eye
  *   hol_xr_views.c    view configuration and swapchains
  *   hol_xr_actions.c  actions, bindings, reference spaces, stage bounds
  *   hol_xr_gfx.c      the GL context and its graphics binding
  *   hol_xr_state.c    reporting: progress lines and the one failure line
  * and the pure parts every one of them may use: hol_xr_room.h,
- * hol_xr_bind.h, hol_xr_pick.h, hol_xr_text.h.
+ * hol_xr_bind.h, hol_xr_pick.h, hol_xr_quad.h, hol_xr_text.h.
  *
  * Contract
  * - One hol__xr per run, zeroed at start; every XR handle not yet made is
@@ -60,6 +61,7 @@
 #include "hol_xr_app.h"
 #include "hol_xr_bind.h"
 #include "hol_xr_pick.h"
+#include "hol_xr_quad.h"
 #include "hol_xr_room.h"
 #include "hol_xr_text.h"
 
@@ -177,11 +179,24 @@ typedef struct hol__xr {
     unsigned prev_buttons;
     int grips_located[2];
     long faded; /* frames drawn with the safety fade */
+    double fade_now; /* this frame's safety fade (1: the view is gone) */
     double cpu_ms[4096], step_ms[4096];
     long ncpu;
     double step_now;
     long draws[2], tris[2];
     double panel_left[2], panel_pred[2]; /* the check frame's UI panel */
+    int64_t format;   /* the eyes' swapchain format (the quad's too) */
+    /* the world panel as a quad layer (hol_xr_panel.c): quad_on 0 draws
+     * it in the scene (--panel scene, or no quad swapchain) */
+    int quad_on;
+    XrSwapchain quad_chain;
+    uint32_t quad_nimages;
+    hol__image *quad_images;
+    hol__GLuint *quad_fbo;
+    int quad_w, quad_h;      /* the image (hol_xr_quad_image) */
+    hol_xr_quad_cache quad_cache;
+    long quad_frames;        /* frames that submitted it */
+    hol_xr_quad quad_last;   /* the last submitted */
 #ifdef __ANDROID__
     EGLDisplay edpy;
     EGLContext ectx;
@@ -245,6 +260,15 @@ void hol__check(hol__xr *x, const hol_frame_desc *fd, int w, int h);
  * pinhole model of the eye: "xr: check panel ..." lines. */
 void hol__check_eye(hol__xr *x, int e, const hol_frame_desc *fd, unsigned fbo, int w, int h);
 #endif
+/* hol_xr_panel.c: the world panel's quad layer: its swapchain (made once
+ * after the eyes'; a failure falls back to the panel in the scene, said
+ * in one line, not a failure of the run), its layer for this frame (the
+ * image drawn again only when the panel's content changed;
+ * *out_submit 0: no panel this frame), the figures, teardown */
+int hol__quad_setup(hol__xr *x);
+int hol__quad_layer(hol__xr *x, const hol_app_view *v, const float shift[3],
+                    XrCompositionLayerQuad *out, int *out_submit);
+void hol__quad_free(hol__xr *x);
 /* hol_xr_frame.c: one frame (xrWaitFrame to xrEndFrame); 0 ok, 1 failure */
 int hol__frame(hol__xr *x);
 /* hol_xr_events.c: every waiting event; sets x->life.done to leave */

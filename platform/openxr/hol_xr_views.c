@@ -156,6 +156,7 @@ int hol__swapchains(hol__xr *x)
     int64_t fmt = 0;
     if (hol__format(x, &fmt))
         return 1;
+    x->format = fmt;
     for (int e = 0; e < 2; e++) {
         hol__eye *ey = &x->eye[e];
         XrSwapchainCreateInfo ci = {XR_TYPE_SWAPCHAIN_CREATE_INFO};

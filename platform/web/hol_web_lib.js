@@ -11,6 +11,15 @@
 // then hol_web_xr_step draws both eyes into the layer's framebuffer
 // (registered with emscripten's GL as a framebuffer name; IWER's layer has
 // none: the canvas's default framebuffer).
+//
+// The world panel (HUD text, prompts, menus): where the browser offers the
+// WebXR Layers API (the session granted the optional 'layers' feature and
+// XRWebGLBinding has createQuadLayer), an XRQuadLayer in front of the
+// projection layer (renderState.layers [projection, quad]: back to front),
+// drawn by the C side only when its content changes (a static layer; again
+// when the browser says needsRedraw); else, or with ?panel=scene, the
+// panel in each eye (the fallback; iwer has no layers). A console line
+// 'web: panel ...' says which.
 
 var HolWebLib = {
   $HolXR: {
@@ -21,6 +30,72 @@ var HolWebLib = {
     fbName: 0,
     off: null,
     frames: 0,
+    base: null,       // the projection layer (XRWebGLLayer)
+    quad: null,       // the panel's quad layer: { binding, layer, fb, fbName }
+    quadW: 824,       // its texture: the widest panel box (hol_xr_quad_image)
+    quadH: 372,
+
+    // Where the world panel goes: 'quad' or 'scene' and why (no browser
+    // needed: tests/web/quad_check.mjs runs it on stubs).
+    panelMode: function (s, Binding, pref) {
+      if (pref === 'scene') return { mode: 'scene', why: 'asked for (?panel=scene)' };
+      if (typeof Binding !== 'function' || !Binding.prototype ||
+          typeof Binding.prototype.createQuadLayer !== 'function')
+        return { mode: 'scene', why: 'the browser has no XRWebGLBinding.createQuadLayer' };
+      var f = s.enabledFeatures;
+      if (!f || Array.prototype.indexOf.call(f, 'layers') < 0)
+        return { mode: 'scene', why: 'the session was not granted the layers feature' };
+      return { mode: 'quad', why: 'XRQuadLayer' };
+    },
+
+    // The quad layer after the projection layer, or the fallback (the
+    // projection layer alone, set already): the chosen mode's name.
+    quadSetup: function (s, gl, base, Binding, pref) {
+      var m = HolXR.panelMode(s, Binding, pref);
+      if (m.mode === 'quad') {
+        try {
+          var binding = new Binding(s, gl);
+          var layer = binding.createQuadLayer({
+            space: HolXR.space, viewPixelWidth: HolXR.quadW, viewPixelHeight: HolXR.quadH,
+            layout: 'mono', isStatic: true, width: 0.3, height: 0.2
+          });
+          if ('blendTextureSourceAlpha' in layer) layer.blendTextureSourceAlpha = true;
+          s.updateRenderState({ layers: [base, layer] }); // back to front
+          HolXR.quad = { binding: binding, layer: layer, fb: gl.createFramebuffer(), fbName: 0 };
+        } catch (e) {
+          m = { mode: 'scene', why: 'the quad layer failed (' + e.message + ')' };
+          HolXR.quad = null;
+        }
+      }
+      console.log('web: panel ' + (m.mode === 'quad' ? 'as a WebXR quad layer (XRQuadLayer ' +
+        HolXR.quadW + 'x' + HolXR.quadH + ', over the projection layer)'
+        : 'in the scene: ' + m.why));
+      if (Module['_hol_web_xr_panel_quad']) Module['_hol_web_xr_panel_quad'](HolXR.quad ? 1 : 0);
+      return m.mode;
+    },
+
+    // After the step: the quad placed, and drawn when its content changed.
+    quadFrame: function (xrf) {
+      var q = HolXR.quad;
+      var r = Module['_hol_web_xr_panel_place'](q.layer.needsRedraw ? 1 : 0);
+      if (!r) return;
+      var o = Module['_hol_web_xr_panel_buffer']() >> 2, f = HEAPF32;
+      q.layer.transform = new XRRigidTransform(
+        { x: f[o], y: f[o + 1], z: f[o + 2] }, { x: f[o + 3], y: f[o + 4], z: f[o + 5], w: f[o + 6] });
+      q.layer.width = f[o + 7];
+      q.layer.height = f[o + 8];
+      if (r !== 2) return;
+      var gl = GLctx, sub = q.binding.getSubImage(q.layer, xrf);
+      if (!q.fbName) {
+        q.fbName = GL.getNewId(GL.framebuffers);
+        q.fb.name = q.fbName;
+        GL.framebuffers[q.fbName] = q.fb;
+      }
+      gl.bindFramebuffer(gl.FRAMEBUFFER, q.fb);
+      gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D,
+        sub.colorTexture, 0);
+      Module['_hol_web_xr_panel_draw'](q.fbName, sub.viewport.width, sub.viewport.height);
+    },
 
     scale: 1.0,       // XRWebGLLayer framebufferScaleFactor: the recommended size
     foveation: 0.5,   // fixedFoveation 0 (none) .. 1 (most): medium
@@ -68,7 +143,7 @@ var HolWebLib = {
       if (HolXR.session) return;
       var s = await navigator.xr.requestSession('immersive-vr', {
         requiredFeatures: ['local-floor'],
-        optionalFeatures: ['bounded-floor', 'hand-tracking']
+        optionalFeatures: ['bounded-floor', 'hand-tracking', 'layers']
       });
       try {
         var gl = GLctx;
@@ -84,6 +159,7 @@ var HolWebLib = {
           try { layer.fixedFoveation = HolXR.foveation; } catch (e) { /* not offered */ }
         }
         s.updateRenderState({ baseLayer: layer });
+        HolXR.base = layer;
         HolXR.frameRate(s);
         try {
           HolXR.space = await s.requestReferenceSpace('bounded-floor');
@@ -92,6 +168,8 @@ var HolWebLib = {
           HolXR.space = await s.requestReferenceSpace('local-floor');
           HolXR.spaceType = 'local-floor';
         }
+        HolXR.quadSetup(s, gl, layer, typeof XRWebGLBinding === 'undefined' ? null
+          : XRWebGLBinding, (Module['holConfig'] || {}).panel);
       } catch (e) {
         s.end();
         throw e;
@@ -149,6 +227,13 @@ var HolWebLib = {
       HolXR.session = null;
       HolXR.space = null;
       HolXR.fb = null;
+      HolXR.base = null;
+      if (HolXR.quad && HolXR.quad.fbName) {
+        GLctx.deleteFramebuffer(HolXR.quad.fb);
+        GL.framebuffers[HolXR.quad.fbName] = null;
+      }
+      HolXR.quad = null;
+      Module['_hol_web_xr_panel_quad'](0);
       Module['_hol_web_xr_active'](0);
       if (Module['holEvent']) Module['holEvent']('xr', 'ended');
     },
@@ -253,7 +338,7 @@ var HolWebLib = {
       f[base + o.visibility] = vis === 'visible' ? 2 : vis === 'visible-blurred' ? 1 : 0;
       HolXR.put(f, base + o.bounds, HolXR.bounds(), 2);
       var pose = xrf.getViewerPose(HolXR.space);
-      var layer = s.renderState.baseLayer;
+      var layer = HolXR.base || s.renderState.baseLayer; // with layers, baseLayer is null
       if (pose) {
         var tr = pose.transform;
         f[base + o.head_valid] = pose.emulatedPosition ? 0 : 1;
@@ -277,6 +362,7 @@ var HolWebLib = {
       if (!pose) return; // no views to draw this frame (tracking lost)
       var rc = Module['_hol_web_xr_step'](t, HolXR.fbId(layer.framebuffer));
       if (rc !== 0) s.end();
+      else if (HolXR.quad) HolXR.quadFrame(xrf);
     }
   },
   $HolXR__postset: 'Module["holXR"] = HolXR;',

@@ -15,6 +15,7 @@
 
 #include "../../core/hol_motion.h"
 #include "../../render/hol_app_frame.h"
+#include "../openxr/hol_xr_quad.h"
 #include "hol_web.h"
 
 extern void hol_web_js_event(const char *kind, const char *text);
@@ -133,6 +134,76 @@ static void check_eye(int e, const hol_frame_desc *fd)
            fd->user.col, fd->user.row);
 }
 
+/* The world panel as a WebXR quad layer (XRQuadLayer, where the glue
+ * got one: hol_web_lib.js, HolXR.quadSetup): the eyes leave it out, and
+ * after each step the glue asks for its place (hol_web_xr_panel_place)
+ * and, when its content changed, draws it (hol_web_xr_panel_draw). */
+static struct {
+    int on;
+    hol_xr_quad_cache cache;
+    float out[10]; /* pos 3, quat 4, width, height, map */
+    const hol_app_view *v;
+    float fade;
+} quad;
+
+EMSCRIPTEN_KEEPALIVE void hol_web_xr_panel_quad(int on)
+{
+    quad.on = on;
+    hol_xr_quad_forget(&quad.cache);
+}
+
+EMSCRIPTEN_KEEPALIVE float *hol_web_xr_panel_buffer(void)
+{
+    return quad.out;
+}
+
+/* The panel of the last step, in the reference space (out): 0 none this
+ * frame (no panel, or the view faded out), 1 unchanged, 2 its content
+ * changed (draw it). force: a new texture (the layer's needsRedraw). */
+EMSCRIPTEN_KEEPALIVE int hol_web_xr_panel_place(int force)
+{
+    const hol_app_view *v = quad.v;
+    if (!quad.on || !v || quad.fade >= 1)
+        return 0;
+    hol_frame_desc fd;
+    hol_app_frame_desc(v, 0, 16, 16, 0, &fd);
+    hol_app_frame_panel(v, &fd);
+    if (fd.flags & HOL_RENDER_NO_HUD)
+        return 0;
+    int map = (fd.flags & HOL_RENDER_MINIMAP) && !(fd.flags & HOL_RENDER_MINIMAP_HAND);
+    hol_xr_quad q;
+    hol_xr_quad_place(&hol_web_g.xr.calib, fd.panel_pos, fd.panel_orient, map, fd.panel_px,
+                      NULL, &q);
+    memcpy(quad.out, q.pos, sizeof q.pos);
+    memcpy(quad.out + 3, q.quat, sizeof q.quat);
+    quad.out[7] = q.size[0];
+    quad.out[8] = q.size[1];
+    quad.out[9] = (float)map;
+    if (force)
+        hol_xr_quad_forget(&quad.cache);
+    return hol_xr_quad_stale(&quad.cache, hol_render_panel_key(hol_web_g.rnd, &fd)) ? 2 : 1;
+}
+
+/* Draw the panel into fb (the layer's texture, w x h: the whole texture
+ * holds the panel's box). 0 ok. */
+EMSCRIPTEN_KEEPALIVE int hol_web_xr_panel_draw(int fb, int w, int h)
+{
+    if (!quad.v)
+        return 1;
+    hol_frame_desc fd;
+    hol_app_frame_desc(quad.v, 0, 16, 16, 0, &fd);
+    hol_app_frame_panel(quad.v, &fd);
+    glBindFramebuffer(GL_FRAMEBUFFER, (GLuint)fb);
+    int r = hol_render_panel_image(hol_web_g.rnd, &fd, w, h) != HOL_OK;
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    return r;
+}
+
+EMSCRIPTEN_KEEPALIVE long hol_web_xr_panel_redraws(void)
+{
+    return quad.cache.redraws;
+}
+
 static void xr_render(const hol_app_view *v, const hol_input *in, int fb)
 {
     hol_web *w = &hol_web_g;
@@ -144,6 +215,8 @@ static void xr_render(const hol_app_view *v, const hol_input *in, int fb)
         memcpy(eyes[e], cam[e].eye, sizeof eyes[e]);
     }
     double fade = hol_xr_fade_room(eyes, HOL__MARGIN, w->xr.room_w, w->xr.room_d);
+    quad.v = v;
+    quad.fade = (float)fade;
     glBindFramebuffer(GL_FRAMEBUFFER, (GLuint)fb);
     int checking = w->check_frame == w->xr_frames;
     for (int e = 0; e < n; e++) {
@@ -154,6 +227,8 @@ static void xr_render(const hol_app_view *v, const hol_input *in, int fb)
         hol_app_frame_desc(v, n == 2 ? e : -1, cam[e].width, cam[e].height, 0, &fd);
         fd.overlay = hol_web_overlay();
         hol_app_frame_panel(v, &fd); /* the HUD on a panel in the world */
+        if (quad.on) /* the quad layer's */
+            fd.flags |= HOL_RENDER_PANEL_LAYER;
         fd.cam = cam[e];
         fd.vp_x = (int)vw->vp[0];
         fd.vp_y = (int)vw->vp[1];

@@ -20,7 +20,7 @@
 (function () {
   var params = new URLSearchParams(location.search);
   var config = {};
-  ['mode', 'seed', 'participant', 'snap', 'tiling', 'room', 'cell', 'gldebug', 'haptics', 'sound', 'track_hz'].forEach(function (k) {
+  ['mode', 'seed', 'participant', 'snap', 'tiling', 'room', 'cell', 'gldebug', 'haptics', 'sound', 'track_hz', 'panel'].forEach(function (k) {
     if (params.has(k)) config[k] = params.get(k);
   });
   var $ = function (id) { return document.getElementById(id); };

@@ -611,6 +611,16 @@ await check('Enter VR on a Quest 3 (iwer, stereo): visible and focused, >= 120 X
   await xrPage.screenshot({ path: path.join(OUT, 'xr-stereo.png') });
 });
 
+// The world panel (issue 25): iwer 2.5.0 has no WebXR layers, so the page
+// falls back to the panel in the scene and says why (the quad path:
+// tests/web/quad_check.mjs on stubs; no real browser here).
+await check('the world panel on the Quest 3 (iwer has no XRQuadLayer): in the scene, said on the console', async () => {
+  const line = xr.log.find((l) => l.startsWith('web: panel '));
+  console.log('# ' + line);
+  assert(/^web: panel in the scene: (the browser has no XRWebGLBinding.createQuadLayer|the session was not granted the layers feature)$/.test(line || ''),
+    'panel line: ' + line);
+});
+
 // The tolerance of the eyes against OSMesa: SwiftShader (the browser) and
 // llvmpipe (OSMesa) rasterise the same triangles with other rounding; a
 // pixel differs when a colour channel is off by more than 12 of 255, and at

@@ -11,7 +11,16 @@
  * HOL_INJECT_SPACE ("STAGE", the default, or "LOCAL"), with the previous
  * origin's pose valid (identity). The loader finds it through a manifest
  * (inside.sh writes one) named in XR_API_LAYER_PATH and enabled with
- * XR_ENABLE_API_LAYERS=XR_APILAYER_HOLONOMY_inject. */
+ * XR_ENABLE_API_LAYERS=XR_APILAYER_HOLONOMY_inject.
+ *
+ * For the panel's quad layer (tests/xr/quad.sh): HOL_INJECT_LAYERS_AT=K
+ * prints, on stderr, the layers the application submits in xrEndFrame
+ * once K frames have ended ("inject: frame K: 2 layers: projection(2
+ * views) quad(...)"), as the runtime receives them; and
+ * HOL_INJECT_SWAPCHAIN_FAIL=N makes the N-th xrCreateSwapchain (1: the
+ * first) fail with XR_ERROR_SWAPCHAIN_FORMAT_UNSUPPORTED, as a runtime
+ * that cannot make it would. */
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -24,8 +33,9 @@ static PFN_xrGetInstanceProcAddr next_gipa;
 static PFN_xrPollEvent next_poll;
 static PFN_xrEndFrame next_end;
 static PFN_xrCreateSession next_create_session;
+static PFN_xrCreateSwapchain next_create_swapchain;
 static XrSession session;
-static long ended, at = 90;
+static long ended, at = 90, swapchains;
 static int injected;
 
 static XRAPI_ATTR XrResult XRAPI_CALL inject_create_session(XrInstance instance,
@@ -38,8 +48,48 @@ static XRAPI_ATTR XrResult XRAPI_CALL inject_create_session(XrInstance instance,
     return r;
 }
 
+static XRAPI_ATTR XrResult XRAPI_CALL inject_create_swapchain(XrSession s,
+                                                              const XrSwapchainCreateInfo *info,
+                                                              XrSwapchain *out)
+{
+    const char *f = getenv("HOL_INJECT_SWAPCHAIN_FAIL");
+    if (f && *f && ++swapchains == strtol(f, NULL, 10))
+        return XR_ERROR_SWAPCHAIN_FORMAT_UNSUPPORTED;
+    return next_create_swapchain(s, info, out);
+}
+
+/* The submitted layers, one line (HOL_INJECT_LAYERS_AT). */
+static void print_layers(const XrFrameEndInfo *info)
+{
+    fprintf(stderr, "inject: frame %ld: %u layers:", ended, info->layerCount);
+    for (uint32_t i = 0; i < info->layerCount; i++) {
+        const XrCompositionLayerBaseHeader *h = info->layers[i];
+        if (h->type == XR_TYPE_COMPOSITION_LAYER_PROJECTION) {
+            fprintf(stderr, " projection(%u views)",
+                    ((const XrCompositionLayerProjection *)h)->viewCount);
+        } else if (h->type == XR_TYPE_COMPOSITION_LAYER_QUAD) {
+            const XrCompositionLayerQuad *q = (const XrCompositionLayerQuad *)h;
+            fprintf(stderr,
+                    " quad(eyes %s, size %.3f %.3f, position %.3f %.3f %.3f, rect %dx%d, "
+                    "source alpha %s)",
+                    q->eyeVisibility == XR_EYE_VISIBILITY_BOTH ? "both" : "one",
+                    q->size.width, q->size.height, q->pose.position.x, q->pose.position.y,
+                    q->pose.position.z, q->subImage.imageRect.extent.width,
+                    q->subImage.imageRect.extent.height,
+                    h->layerFlags & XR_COMPOSITION_LAYER_BLEND_TEXTURE_SOURCE_ALPHA_BIT ? "yes"
+                                                                                        : "no");
+        } else {
+            fprintf(stderr, " other(%d)", (int)h->type);
+        }
+    }
+    fprintf(stderr, "\n");
+}
+
 static XRAPI_ATTR XrResult XRAPI_CALL inject_end_frame(XrSession s, const XrFrameEndInfo *info)
 {
+    const char *k = getenv("HOL_INJECT_LAYERS_AT");
+    if (k && *k && ended == strtol(k, NULL, 10))
+        print_layers(info);
     XrResult r = next_end(s, info);
     if (XR_SUCCEEDED(r))
         ended++;
@@ -74,6 +124,8 @@ static XRAPI_ATTR XrResult XRAPI_CALL inject_gipa(XrInstance instance, const cha
         *out = (PFN_xrVoidFunction)inject_end_frame;
     else if (!strcmp(name, "xrCreateSession"))
         *out = (PFN_xrVoidFunction)inject_create_session;
+    else if (!strcmp(name, "xrCreateSwapchain"))
+        *out = (PFN_xrVoidFunction)inject_create_swapchain;
     else
         return next_gipa(instance, name, out);
     return XR_SUCCESS;
@@ -97,7 +149,9 @@ static XRAPI_ATTR XrResult XRAPI_CALL inject_create_instance(const XrInstanceCre
     if (XR_FAILED(next_gipa(*out, "xrPollEvent", (PFN_xrVoidFunction *)&next_poll)) ||
         XR_FAILED(next_gipa(*out, "xrEndFrame", (PFN_xrVoidFunction *)&next_end)) ||
         XR_FAILED(next_gipa(*out, "xrCreateSession",
-                            (PFN_xrVoidFunction *)&next_create_session)))
+                            (PFN_xrVoidFunction *)&next_create_session)) ||
+        XR_FAILED(next_gipa(*out, "xrCreateSwapchain",
+                            (PFN_xrVoidFunction *)&next_create_swapchain)))
         return XR_ERROR_INITIALIZATION_FAILED;
     return XR_SUCCESS;
 }

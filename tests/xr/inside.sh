@@ -72,7 +72,8 @@ awk 'BEGIN { for (k = 0; k < 150; k++) { z = 1.5 - (k < 100 ? k : 100) / 100.0;
 start=$(date +%s)
 env DISPLAY=:77 XR_ENABLE_API_LAYERS=XR_APILAYER_LUNARG_core_validation \
     "$BIN" xr "$out/level.txt" --frames 150 --check-frame 60 --check-dir "$out/check" \
-    --log "$out/logs" --record "$out/session.rec" --input "$out/head.txt" >"$out/xr.out" 2>"$out/xr.err"
+    --log "$out/logs" --record "$out/session.rec" --input "$out/head.txt" --panel scene \
+    >"$out/xr.out" 2>"$out/xr.err"
 rc=$?
 echo "xr-test: holonomy xr ran $(( $(date +%s) - start )) s, exit $rc"
 sed 's/^/  | /' "$out/xr.out"
@@ -112,7 +113,8 @@ check "quit went through STOPPING to EXITING" \
 pct=$(sed -n 's/^xr: check frame .*(\([0-9.]*\) %).*/\1/p' "$out/xr.out")
 check "sRGB swapchain read back (after the GL's encoding) equals the OSMesa render (${pct:-none} % of pixels differ; at most 0.5)" \
     '[ -n "$pct" ] && grep -q "^xr: check frame .*(sRGB swapchain)" $all && awk "BEGIN{exit !($pct <= 0.5)}"'
-# the UI panel in the eyes read back from the swapchain (issue 25): its pixels
+# the UI panel in the eyes read back from the swapchain (issue 25; this run
+# draws it in the scene, --panel scene; the quad layer: tests/xr/quad.sh): its pixels
 # are where the check frame drawn with and without it differ; "xr: check
 # panel eye E: N pixels, left edge X px (predicted P), at most D degrees ..."
 panel_eye_ok() {
@@ -146,6 +148,9 @@ check "frames before FOCUSED recorded without focus ($unf unfocused, $foc focuse
 check "the session's logs were written" '[ -s "$out/logs/summary.csv" ]'
 check "the recording replays headless" \
     'mkdir -p "$out/replay-logs" && "$BIN" replay "$out/session.rec" --log "$out/replay-logs" >/dev/null 2>&1 && cmp -s "$out/logs/summary.csv" "$out/replay-logs/summary.csv"'
+
+# The world panel as a quad layer (issue 25): its own checks
+sh tests/xr/quad.sh "$BIN" "$LAYER" || fail=1
 
 # SIGINT in the middle of a session: the OpenXR session ends through
 # STOPPING and EXITING, the attempt is saved 'aborted', exit 130 (issue 18).

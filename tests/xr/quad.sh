@@ -1,0 +1,80 @@
+#!/bin/sh
+# tests/xr/quad.sh - the world panel as an OpenXR quad layer (issue 25),
+# run by tests/xr/inside.sh while monado-service runs (Xvfb :77,
+# XDG_RUNTIME_DIR set). Monado's null compositor shows nothing and its
+# composited picture cannot be read back, so the checks are: the run is
+# clean under the core validation layer; the quad layer reaches the
+# runtime as submitted (the test's API layer, tests/xr/inject_layer.c,
+# prints the layers of one xrEndFrame): after the projection layer, both
+# eyes, the panel's size and a pose 1.5 m ahead; the eyes' own swapchains
+# no longer contain the panel (the check frame drawn with and without the
+# HUD is the same); the quad's image holds the panel (read back); it is
+# drawn again only when the panel's content changes; and where the quad's
+# swapchain cannot be made (the layer fails it) the run goes on with the
+# panel in the scene. Prints one line per check; exit 0 when all pass.
+set -u
+BIN=${1:-build/xr/holonomy}
+LAYER=${2:-build/xr/libhol_inject_layer.so}
+out=/tmp/xr-test/quad
+rm -rf "$out" && mkdir -p "$out/check" "$out/layers"
+fail=0
+check() { if eval "$2"; then echo "xr-test: ok: $1"; else echo "xr-test: FAIL: $1"; fail=1; fi; }
+cat >"$out/layers/XrApiLayer_holonomy_inject.json" <<JSON
+{ "file_format_version": "1.0.0",
+  "api_layer": { "name": "XR_APILAYER_HOLONOMY_inject",
+    "library_path": "$(pwd)/$LAYER",
+    "api_version": "1.0", "implementation_version": "1",
+    "description": "holonomy xr-test: the submitted layers" } }
+JSON
+printf 'mode flag\nseed 5\nflag Wrf\nminimap off\ncues none\n' >"$out/level.txt"
+xrl="$out/layers:/usr/share/openxr/1/api_layers/explicit.d"
+xre=XR_APILAYER_LUNARG_core_validation:XR_APILAYER_HOLONOMY_inject
+env DISPLAY=:77 HOL_INJECT_AT=1000000 HOL_INJECT_LAYERS_AT=60 XR_API_LAYER_PATH="$xrl" \
+    XR_ENABLE_API_LAYERS="$xre" \
+    "$BIN" xr "$out/level.txt" --frames 120 --check-frame 60 --check-dir "$out/check" \
+    >"$out/xr.out" 2>"$out/xr.err"
+rc=$?
+grep "quad\|panel" "$out/xr.out" | sed 's/^/  | /'
+grep "^inject:" "$out/xr.err" | sed 's/^/  | /'
+all="$out/xr.out $out/xr.err"
+check "quad: exit 0 ($rc), the core validation layer ran, no VALID_ERROR or VALID_WARNING" \
+    '[ "$rc" = 0 ] && grep -q "Core Validation" $all && ! grep -q "VALID_ERROR\|VALID_WARNING" $all'
+check "quad: its swapchain made once (824x372, the eyes' format)" \
+    '[ "$(grep -c "^xr: panel as a quad layer: 824x372 image, format" "$out/xr.out")" = 1 ]'
+# as the runtime receives it: projection first, then the quad over it
+l=$(grep "^inject: frame 60:" "$out/xr.err")
+check "quad: the runtime receives projection then quad: both eyes, 0.585 x 0.400 m (136 x 93 font pixels of 4.3 mm), 544x372 texels, source alpha" \
+    'echo "$l" | grep -q "2 layers: projection(2 views) quad(eyes both, size 0.585 0.400, position .*, rect 544x372, source alpha yes)$"'
+# Monado's simulated head stands near the stage origin looking along -z:
+# the panel 1.5 m ahead, below the eyes (the box's centre a little lower)
+pos=$(echo "$l" | sed -n 's/.*position \([-0-9.]*\) \([-0-9.]*\) \([-0-9.]*\),.*/\1 \2 \3/p')
+check "quad: its centre 1.3 to 1.6 m ahead of the stage origin (-z), within 0.3 m of the middle ($pos)" \
+    'echo "$pos" | awk "{ exit !(NF == 3 && \$3 <= -1.3 && \$3 >= -1.6 && \$1 <= 0.3 && \$1 >= -0.3) }"'
+check "quad: the frame-end line of the check frame names the same submission" \
+    'grep -q "^xr: frame 60 ends with the quad layer after the projection layer: eye visibility BOTH, pose .*, size 0.585 x 0.400 m, image 544x372 of 824x372$" "$out/xr.out"'
+for e in 0 1; do
+    check "quad: eye $e's swapchain no longer contains the panel (drawn with and without the HUD: 0 pixels differ)" \
+        'grep -q "^xr: check panel eye '$e': 0 pixels" "$out/xr.out"'
+done
+img=$(sed -n 's/^xr: check quad image: \([0-9]*\) opaque, \([0-9]*\) transparent of 544x372 texels$/\1 \2/p' "$out/xr.out")
+check "quad: its image read back holds the panel: opaque texels and a transparent rest (${img:-none})" \
+    'echo "$img" | awk "{ exit !(NF == 2 && \$1 > 20000 && \$2 > 1000 && \$1 + \$2 == 544 * 372) }"'
+sub=$(sed -n 's/^xr: panel quad layer submitted in \([0-9]*\) frames, its image drawn \([0-9]*\) times.*/\1 \2/p' "$out/xr.out")
+check "quad: submitted every frame, its image drawn again only when the panel changed (frames, draws: ${sub:-none})" \
+    'echo "$sub" | awk "{ exit !(NF == 2 && \$1 >= 100 && \$2 >= 1 && \$2 * 4 <= \$1) }"'
+
+# no quad swapchain (the third xrCreateSwapchain fails: after both eyes'):
+# the panel in the scene, said in one line, and the run goes on (exit 0)
+env DISPLAY=:77 HOL_INJECT_AT=1000000 HOL_INJECT_SWAPCHAIN_FAIL=3 HOL_INJECT_LAYERS_AT=40 \
+    XR_API_LAYER_PATH="$xrl" XR_ENABLE_API_LAYERS="$xre" \
+    "$BIN" xr "$out/level.txt" --frames 60 --check-frame 40 --check-dir "$out/check" \
+    >"$out/fb.out" 2>"$out/fb.err"
+rc=$?
+grep "panel in the scene" "$out/fb.out" | sed 's/^/  | /'
+check "quad unavailable: exit 0 ($rc), said once: the panel in the scene, the fallback" \
+    '[ "$rc" = 0 ] && [ "$(grep -c "^xr: panel in the scene: the quad layer.s swapchain failed (XR_ERROR_SWAPCHAIN_FORMAT_UNSUPPORTED): the fallback$" "$out/fb.out")" = 1 ]'
+check "quad unavailable: the projection layer alone, and the panel in the eyes" \
+    'grep -q "^inject: frame 40: 1 layers: projection(2 views)$" "$out/fb.err" && grep "^xr: check panel eye 0:" "$out/fb.out" | awk "{ exit !(\$6 > 100) }"'
+check "quad unavailable: no VALID_ERROR or VALID_WARNING" \
+    'grep -q "Core Validation" "$out/fb.out" "$out/fb.err" && ! grep -q "VALID_ERROR\|VALID_WARNING" "$out/fb.out" "$out/fb.err"'
+exit $fail
