@@ -10,7 +10,8 @@
 dir=$1
 name=$2
 shift 2
-mkdir -p "$dir/home" || exit 1
+# (Mesa does not make its cache folder's parents, and says so on stderr.)
+mkdir -p "$dir/home/.cache/mesa" "$dir/home/.config" "$dir/home/.local/share" || exit 1
 home=$(cd "$dir/home" && pwd) || exit 1
 export HOME="$home" XDG_CACHE_HOME="$home/.cache" XDG_CONFIG_HOME="$home/.config" \
     XDG_DATA_HOME="$home/.local/share" MESA_SHADER_CACHE_DIR="$home/.cache/mesa"
