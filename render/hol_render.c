@@ -171,6 +171,29 @@ static const char *hol__vs =
  * day program is exactly the shader before lights; the lit one (dusk and
  * night) adds the hyperboloid point, the lanterns and the fog by the true
  * distance. */
+
+/* The lights' falloff in GLSL, shared by hol_lights' two forms: from c2
+ * (the squared chord to each light) and dh (the height above the point) to
+ * d2 (the squared H2 x E distance, metres), num / den (the blended falloff)
+ * and w (the fade to 0 at HOL_LIGHT_RADIUS_M); sh and x (sinh and the floor
+ * distance) in hyperbolic programs. */
+#define HOL__FALLOFF_GLSL \
+    "#if HOL_FLAT\n" \
+    "  vec4 d2 = c2 * u_mpu2 + dh * dh;\n" \
+    "  vec4 den = 1.0 + d2 * (1.0 / (" HOL__STR(HOL_LIGHT_D0_M) " * " HOL__STR(HOL_LIGHT_D0_M) "));\n" \
+    "  vec4 num = vec4(1.0);\n" \
+    "#else\n" \
+    /* s = x / sinh x as one quotient with the inverse square: (1 - B + B s) \
+     * / (1 + d^2/D0^2) = ((1 - B) sh + B x) / (sh (1 + d^2/D0^2)), sh and x \
+     * nudged by 1e-6 so that s is 1 at the light's foot */ \
+    "  vec4 sh = sqrt(c2 + 0.25 * c2 * c2) + 1e-6;\n" \
+    "  vec4 x = log(1.0 + 0.5 * c2 + sh);\n" \
+    "  vec4 d2 = x * x * u_mpu2 + dh * dh;\n" \
+    "  vec4 num = (1.0 - " HOL__STR(HOL_LIGHT_PHYS) ") * sh + " HOL__STR(HOL_LIGHT_PHYS) " * x;\n" \
+    "  vec4 den = sh * (1.0 + d2 * (1.0 / (" HOL__STR(HOL_LIGHT_D0_M) " * " HOL__STR(HOL_LIGHT_D0_M) ")));\n" \
+    "#endif\n" \
+    "  vec4 w = max(1.0 - d2 * (1.0 / (" HOL__STR(HOL_LIGHT_RADIUS_M) " * " HOL__STR(HOL_LIGHT_RADIUS_M) ")), 0.0);\n"
+
 static const char *hol__fs =
     "precision highp float;\n"
     "in vec3 v_nrm;\n"
@@ -235,21 +258,7 @@ static const char *hol__fs =
     "float hol_lights(vec4 L, vec4 U, float g, float o, float y, float nup, out float ff) {\n"
     "  vec4 c2 = max(2.0 * g * L + o, 0.0);\n"
     "  vec4 dh = u_tx[4] - y;\n"
-    "#if HOL_FLAT\n"
-    "  vec4 d2 = c2 * u_mpu2 + dh * dh;\n"
-    "  vec4 den = 1.0 + d2 * (1.0 / (" HOL__STR(HOL_LIGHT_D0_M) " * " HOL__STR(HOL_LIGHT_D0_M) "));\n"
-    "  vec4 num = vec4(1.0);\n"
-    "#else\n"
-    /* s = x / sinh x as one quotient with the inverse square: (1 - B + B s)
-     * / (1 + d^2/D0^2) = ((1 - B) sh + B x) / (sh (1 + d^2/D0^2)), sh and x
-     * nudged by 1e-6 so that s is 1 at the light's foot */
-    "  vec4 sh = sqrt(c2 + 0.25 * c2 * c2) + 1e-6;\n"
-    "  vec4 x = log(1.0 + 0.5 * c2 + sh);\n"
-    "  vec4 d2 = x * x * u_mpu2 + dh * dh;\n"
-    "  vec4 num = (1.0 - " HOL__STR(HOL_LIGHT_PHYS) ") * sh + " HOL__STR(HOL_LIGHT_PHYS) " * x;\n"
-    "  vec4 den = sh * (1.0 + d2 * (1.0 / (" HOL__STR(HOL_LIGHT_D0_M) " * " HOL__STR(HOL_LIGHT_D0_M) ")));\n"
-    "#endif\n"
-    "  vec4 w = max(1.0 - d2 * (1.0 / (" HOL__STR(HOL_LIGHT_RADIUS_M) " * " HOL__STR(HOL_LIGHT_RADIUS_M) ")), 0.0);\n"
+    HOL__FALLOFF_GLSL
     "  vec4 id = inversesqrt(max(d2, 1e-8));\n"
     "  vec4 f = w * w * num / den;\n"
     /* the cone: only the programs of frames with a spot (HOL_FX 2) */
@@ -272,21 +281,7 @@ static const char *hol__fs =
     "#else\n"
     "float hol_lights(vec4 L, float g2, float o, float dh, float nup) {\n"
     "  vec4 c2 = max(g2 * L + o, 0.0);\n"
-    "#if HOL_FLAT\n"
-    "  vec4 d2 = c2 * u_mpu2 + dh * dh;\n"
-    "  vec4 den = 1.0 + d2 * (1.0 / (" HOL__STR(HOL_LIGHT_D0_M) " * " HOL__STR(HOL_LIGHT_D0_M) "));\n"
-    "  vec4 num = vec4(1.0);\n"
-    "#else\n"
-    /* s = x / sinh x as one quotient with the inverse square: (1 - B + B s)
-     * / (1 + d^2/D0^2) = ((1 - B) sh + B x) / (sh (1 + d^2/D0^2)), sh and x
-     * nudged by 1e-6 so that s is 1 at the light's foot */
-    "  vec4 sh = sqrt(c2 + 0.25 * c2 * c2) + 1e-6;\n"
-    "  vec4 x = log(1.0 + 0.5 * c2 + sh);\n"
-    "  vec4 d2 = x * x * u_mpu2 + dh * dh;\n"
-    "  vec4 num = (1.0 - " HOL__STR(HOL_LIGHT_PHYS) ") * sh + " HOL__STR(HOL_LIGHT_PHYS) " * x;\n"
-    "  vec4 den = sh * (1.0 + d2 * (1.0 / (" HOL__STR(HOL_LIGHT_D0_M) " * " HOL__STR(HOL_LIGHT_D0_M) ")));\n"
-    "#endif\n"
-    "  vec4 w = max(1.0 - d2 * (1.0 / (" HOL__STR(HOL_LIGHT_RADIUS_M) " * " HOL__STR(HOL_LIGHT_RADIUS_M) ")), 0.0);\n"
+    HOL__FALLOFF_GLSL
     "  vec4 f = w * w * num / den;\n"
     "  return dot(f, 0.3 + (0.7 * max(nup, 0.0) * max(dh, 0.0)) * inversesqrt(max(d2, 1e-8)));\n"
     "}\n"
