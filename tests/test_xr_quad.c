@@ -16,20 +16,10 @@
 
 #include "../core/hol_panel.h"
 #include "../platform/openxr/hol_xr_quad.h"
+#include "quat_model.h"
 
 #define PI 3.14159265358979323846
 #define PX 0.0043 /* HOL_RENDER_PANEL_PX */
-
-/* v turned by unit quaternion q (matrix form) */
-static void turn(const float q[4], const double v[3], double out[3])
-{
-    double x = q[0], y = q[1], z = q[2], w = q[3];
-    double m[3][3] = {{1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)},
-                      {2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)},
-                      {2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)}};
-    for (int i = 0; i < 3; i++)
-        out[i] = m[i][0] * v[0] + m[i][1] * v[1] + m[i][2] * v[2];
-}
 
 /* room -> stage of a calibration (model: a yaw matrix about +y) */
 static void to_stage(const hol_xr_calib *c, const double room[3], double out[3])
@@ -72,9 +62,9 @@ static void check_place(const hol_xr_calib *c, double yaw_deg, int map, const fl
     /* the quad's own top left corner and axes, from its pose */
     const double l[3] = {-q.size[0] / 2, q.size[1] / 2, 0}, ex[3] = {1, 0, 0}, ey[3] = {0, 1, 0};
     double d[3], qr[3], qu[3];
-    turn(q.quat, l, d);
-    turn(q.quat, ex, qr);
-    turn(q.quat, ey, qu);
+    quat_model_rotate(q.quat, l, d);
+    quat_model_rotate(q.quat, ex, qr);
+    quat_model_rotate(q.quat, ey, qu);
     for (int k = 0; k < 3; k++)
         assert_true(fabs(q.pos[k] + d[k] - corner[k]) < 1e-5);
     /* the panel's axes carried into the stage: differences of points */
@@ -127,7 +117,7 @@ static void test_place_default(void **state)
     assert_true(q.pos[1] < 1.6);
     const double ez[3] = {0, 0, 1};
     double n[3];
-    turn(q.quat, ez, n);
+    quat_model_rotate(q.quat, ez, n);
     assert_true(n[2] > 0.9 && n[1] > 0.1); /* towards the head, up at the eyes */
 }
 

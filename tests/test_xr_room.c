@@ -14,6 +14,7 @@
 
 #include "../core/hol_nav.h"
 #include "../platform/openxr/hol_xr_room.h"
+#include "quat_model.h"
 
 static double frand(uint64_t *s)
 {
@@ -31,17 +32,6 @@ static void random_quat(uint64_t *s, float q[4])
     n = sqrt(n);
     for (int k = 0; k < 4; k++)
         q[k] = (float)(a[k] / n);
-}
-
-/* v rotated by unit quaternion q, as a matrix (the model) */
-static void rotate(const float q[4], const double v[3], double out[3])
-{
-    double x = q[0], y = q[1], z = q[2], w = q[3];
-    double m[3][3] = {{1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)},
-                      {2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)},
-                      {2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)}};
-    for (int i = 0; i < 3; i++)
-        out[i] = m[i][0] * v[0] + m[i][1] * v[1] + m[i][2] * v[2];
 }
 
 static void test_default_placement(void **state)
@@ -73,7 +63,7 @@ static void test_recentre(void **state)
                       (float)(frand(&s) * 6 - 3)}, q[4];
         random_quat(&s, q);
         double fwd[3], nz[3] = {0, 0, -1};
-        rotate(q, nz, fwd);
+        quat_model_rotate(q, nz, fwd);
         if (fwd[0] * fwd[0] + fwd[2] * fwd[2] < 1e-3)
             continue; /* looking straight up or down */
         hol_xr_recentre(&c, p, q);
@@ -82,7 +72,7 @@ static void test_recentre(void **state)
         assert_true(fabsf(r.pos[0] - 1.5f) < 1e-4f && fabsf(r.pos[2] - 1.5f) < 1e-4f);
         assert_true(fabsf(r.pos[1] - p[1]) < 1e-6f);
         double rf[3];
-        rotate(r.quat, nz, rf);
+        quat_model_rotate(r.quat, nz, rf);
         double h = sqrt(rf[0] * rf[0] + rf[2] * rf[2]);
         assert_true(fabs(rf[0] / h) < 1e-4 && rf[2] / h < -0.9999);
         /* the vertical is kept: the pitch of the forward vector */
