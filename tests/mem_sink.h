@@ -3,7 +3,8 @@
  *
  * Contract
  * - Include after <cmocka.h> and core/hol_session.h, once per test program
- *   (static functions).
+ *   (static functions marked unused: a program uses what it needs). MEM_TEXT_MAX
+ *   (default 1 MB), defined before the include, sizes mem_text's buffer.
  * - mem_init gives an empty folder; streams keep `kept` as of their last
  *   flush or close, so mem_kill is a kill -9 (unflushed bytes and open
  *   handles gone); fail_rename makes the n-th rename from now fail.
@@ -12,6 +13,12 @@
  */
 #ifndef TESTS_MEM_SINK_H
 #define TESTS_MEM_SINK_H
+
+#define MEM__UNUSED __attribute__((unused))
+
+#ifndef MEM_TEXT_MAX
+#define MEM_TEXT_MAX (1 << 20)
+#endif
 
 #define MEM_MAX 64
 
@@ -30,7 +37,7 @@ typedef struct mem_sink {
     long flushes;
 } mem_sink;
 
-static mem_stream *mem_find(mem_sink *m, const char *name)
+MEM__UNUSED static mem_stream *mem_find(mem_sink *m, const char *name)
 {
     for (int i = 0; i < MEM_MAX; i++)
         if (m->s[i].used && !strcmp(m->s[i].name, name))
@@ -38,7 +45,7 @@ static mem_stream *mem_find(mem_sink *m, const char *name)
     return NULL;
 }
 
-static mem_stream *mem_make(mem_sink *m, const char *name)
+MEM__UNUSED static mem_stream *mem_make(mem_sink *m, const char *name)
 {
     mem_stream *s = mem_find(m, name);
     for (int i = 0; !s && i < MEM_MAX; i++)
@@ -52,7 +59,7 @@ static mem_stream *mem_make(mem_sink *m, const char *name)
     return s;
 }
 
-static hol_err mem_open(void *user, const char *name, int append, int *out_h)
+MEM__UNUSED static hol_err mem_open(void *user, const char *name, int append, int *out_h)
 {
     mem_sink *m = user;
     mem_stream *s = mem_make(m, name);
@@ -68,7 +75,7 @@ static hol_err mem_open(void *user, const char *name, int append, int *out_h)
     return HOL_EIO;
 }
 
-static hol_err mem_write(void *user, int h, const void *data, size_t n)
+MEM__UNUSED static hol_err mem_write(void *user, int h, const void *data, size_t n)
 {
     mem_sink *m = user;
     assert_true(h >= 0 && h < HOL_SINK_MAX_OPEN && m->open[h]);
@@ -83,7 +90,7 @@ static hol_err mem_write(void *user, int h, const void *data, size_t n)
     return HOL_OK;
 }
 
-static hol_err mem_flush(void *user, int h, int durable)
+MEM__UNUSED static hol_err mem_flush(void *user, int h, int durable)
 {
     mem_sink *m = user;
     (void)durable;
@@ -93,7 +100,7 @@ static hol_err mem_flush(void *user, int h, int durable)
     return HOL_OK;
 }
 
-static hol_err mem_close(void *user, int h)
+MEM__UNUSED static hol_err mem_close(void *user, int h)
 {
     mem_sink *m = user;
     assert_true(m->open[h]);
@@ -101,7 +108,7 @@ static hol_err mem_close(void *user, int h)
     return HOL_OK;
 }
 
-static int mem_is_open(mem_sink *m, const mem_stream *s)
+MEM__UNUSED static int mem_is_open(mem_sink *m, const mem_stream *s)
 {
     for (int h = 0; h < HOL_SINK_MAX_OPEN; h++)
         if (m->open[h] == (int)(s - m->s) + 1)
@@ -109,7 +116,7 @@ static int mem_is_open(mem_sink *m, const mem_stream *s)
     return 0;
 }
 
-static hol_err mem_rename(void *user, const char *from, const char *to)
+MEM__UNUSED static hol_err mem_rename(void *user, const char *from, const char *to)
 {
     mem_sink *m = user;
     if (m->fail_rename > 0 && --m->fail_rename == 0)
@@ -125,7 +132,7 @@ static hol_err mem_rename(void *user, const char *from, const char *to)
     return HOL_OK;
 }
 
-static hol_err mem_remove(void *user, const char *name)
+MEM__UNUSED static hol_err mem_remove(void *user, const char *name)
 {
     mem_stream *s = mem_find(user, name);
     if (s) {
@@ -135,7 +142,7 @@ static hol_err mem_remove(void *user, const char *name)
     return HOL_OK;
 }
 
-static hol_err mem_read(void *user, const char *name, uint64_t off, void *buf, size_t n,
+MEM__UNUSED static hol_err mem_read(void *user, const char *name, uint64_t off, void *buf, size_t n,
                         size_t *out_got)
 {
     mem_stream *s = mem_find(user, name);
@@ -150,7 +157,7 @@ static hol_err mem_read(void *user, const char *name, uint64_t off, void *buf, s
     return HOL_OK;
 }
 
-static hol_err mem_list(void *user, void (*fn)(void *ctx, const char *name), void *ctx)
+MEM__UNUSED static hol_err mem_list(void *user, void (*fn)(void *ctx, const char *name), void *ctx)
 {
     mem_sink *m = user;
     for (int i = 0; i < MEM_MAX; i++)
@@ -159,7 +166,7 @@ static hol_err mem_list(void *user, void (*fn)(void *ctx, const char *name), voi
     return HOL_OK;
 }
 
-static void mem_init(mem_sink *m)
+MEM__UNUSED static void mem_init(mem_sink *m)
 {
     memset(m, 0, sizeof *m);
     m->sink = (hol_sink){m, mem_open, mem_write, mem_flush, mem_close, mem_rename, mem_remove,
@@ -167,14 +174,14 @@ static void mem_init(mem_sink *m)
 }
 
 /* A kill -9: what was not flushed is gone, open handles with it. */
-static void mem_kill(mem_sink *m)
+MEM__UNUSED static void mem_kill(mem_sink *m)
 {
     for (int i = 0; i < MEM_MAX; i++)
         m->s[i].len = m->s[i].kept;
     memset(m->open, 0, sizeof m->open);
 }
 
-static void mem_free(mem_sink *m)
+MEM__UNUSED static void mem_free(mem_sink *m)
 {
     for (int i = 0; i < MEM_MAX; i++)
         free(m->s[i].data);
@@ -182,9 +189,9 @@ static void mem_free(mem_sink *m)
 }
 
 /* The stream's text (NUL-terminated copy in a static buffer), or NULL. */
-static const char *mem_text(mem_sink *m, const char *name)
+MEM__UNUSED static const char *mem_text(mem_sink *m, const char *name)
 {
-    static char buf[1 << 20];
+    static char buf[MEM_TEXT_MAX];
     mem_stream *s = mem_find(m, name);
     if (!s)
         return NULL;
@@ -194,7 +201,7 @@ static const char *mem_text(mem_sink *m, const char *name)
     return buf;
 }
 
-static int count_lines(const char *t)
+MEM__UNUSED static int count_lines(const char *t)
 {
     int n = 0;
     for (; t && *t; t++)
