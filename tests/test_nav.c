@@ -32,6 +32,7 @@
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wunused-function" /* model.h helpers not used here */
 #include "model.h"
+#include "quick.h"
 #pragma GCC diagnostic pop
 
 #ifndef FAR_BFS
@@ -466,9 +467,11 @@ static void test_optimal_vs_bfs(void **state)
     bf b;
     bf_init(&b, 1u << 21);
     int checked = 0, hist[9] = {0};
-    for (int q = 0; q < 400; q++) {
+    /* quick (tests/quick.h): 160 queries, not 400, and 2 far ones, not 4 */
+    int nq = test_quick() ? 160 : 400, nfar = test_quick() ? 2 : FAR_BFS;
+    for (int q = 0; q < nq; q++) {
         hol_room s = random_start(40);
-        int d = 1 + (int)rnd(q < 200 ? 6 : 8);
+        int d = 1 + (int)rnd(q < nq / 2 ? 6 : 8);
         hol_tile t = random_target(&s, d);
         uint8_t walk[HOL_NAV_WALK_MAX];
         hol_nav_result res;
@@ -485,7 +488,7 @@ static void test_optimal_vs_bfs(void **state)
     }
     /* a few far ones, from the start state (a BFS to depth ~36 is ~1 s) */
     int far_checked = 0;
-    for (int q = 0; q < 200 && far_checked < FAR_BFS; q++) {
+    for (int q = 0; q < 200 && far_checked < nfar; q++) {
         hol_room s = hol_room_start();
         hol_tile t = random_target(&s, 10 + q % 3);
         uint8_t walk[HOL_NAV_WALK_MAX];
