@@ -280,9 +280,11 @@ fn-length:
 # time after it ("-- NAME: S.S s, cpu C.C s", tests/timed.sh).
 TIMED := sh tests/timed.sh
 SUITE := sh tests/suite.sh $(BUILD)/suite-logs
+# UNIT_ENV: set for the unit tests only (make san: HOL_TEST_QUICK=1).
+UNIT_ENV ?=
 unit: $(UNIT_BIN) $(patsubst tests/%.c,unit-run-%,$(call slow_first,$(UNIT_SRC)))
 unit-run-%: $(BUILD)/tests/%
-	@$(SUITE) $< $<
+	@$(UNIT_ENV) $(SUITE) $< $<
 
 render-test: $(RENDER_TEST_BIN) $(RENDER_TEST_BIN:$(BUILD)/tests/%=render-run-%)
 render-run-%: $(BUILD)/tests/%
@@ -341,10 +343,14 @@ bench: $(BENCH_BIN) $(BENCH_RENDER_BIN) $(BUILD)/holonomy
 	then $(MAKE) -s bench-web; \
 	else echo "== web: skipped (make deps-web installs emscripten, chromium and the npm packages)"; fi
 
+# The brute-force unit tests run lighter under the sanitizers
+# (HOL_TEST_QUICK=1, tests/quick.h); make test runs them in full.
+# make san SAN_UNIT_ENV= runs them in full under the sanitizers too.
+SAN_UNIT_ENV ?= HOL_TEST_QUICK=1
 san:
 	$(MAKE) BUILD=$(BUILD)/san OPT=-O1 \
 	  CFLAGS="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer" \
-	  LDFLAGS="-fsanitize=address,undefined" unit
+	  LDFLAGS="-fsanitize=address,undefined" UNIT_ENV="$(SAN_UNIT_ENV)" unit
 
 # The command-line tests against the tool itself built with ASan + UBSan
 # (Mesa's own leaks are not ours: leak detection is off for the GL paths).
@@ -359,10 +365,12 @@ san-cli:
 # slots of make -j2 while the long CLI suites run, with no idle end between.
 san-all:
 	$(MAKE) BUILD=$(BUILD)/san OPT=-O1 CFLAGS="$(SAN_FLAGS)" \
-	  LDFLAGS="-fsanitize=address,undefined" CLI_ENV="$(SAN_CLI_ENV)" cli-test unit
+	  LDFLAGS="-fsanitize=address,undefined" CLI_ENV="$(SAN_CLI_ENV)" UNIT_ENV="$(SAN_UNIT_ENV)" cli-test unit
 
+# A warnings check: it builds and links everything, at -O0 (clang's
+# warnings do not depend on the optimiser; about half the CPU of -O2).
 check-clang:
-	$(MAKE) CC=clang BUILD=$(BUILD)/clang all $(UNIT_BIN:$(BUILD)/%=$(BUILD)/clang/%)
+	$(MAKE) CC=clang BUILD=$(BUILD)/clang OPT=-O0 all $(UNIT_BIN:$(BUILD)/%=$(BUILD)/clang/%)
 
 # The core and its unit tests for the headset's arm64 CPU, run under qemu;
 # the renderer is cross-compiled too (its GL tests need a GL, so they run on
@@ -373,8 +381,12 @@ cross-test: deps-cross
 	$(MAKE) CC=aarch64-linux-gnu-gcc AR=aarch64-linux-gnu-ar BUILD=$(BUILD)/aarch64 \
 	  $(CROSS_UNIT_SRC:tests/%.c=$(BUILD)/aarch64/tests/%) $(BUILD)/aarch64/libholrender.a
 	@$(MAKE) -s $(patsubst tests/%.c,cross-run-%,$(call slow_first,$(CROSS_UNIT_SRC)))
+# Under qemu the brute-force tests run lighter (HOL_TEST_QUICK=1,
+# tests/quick.h: the same checks at a smaller depth or count; the host's
+# make test runs them in full). CROSS_UNIT_ENV= runs them in full here too.
+CROSS_UNIT_ENV ?= HOL_TEST_QUICK=1
 cross-run-%:
-	@$(SUITE) "$(BUILD)/aarch64/tests/$* (qemu-aarch64)" \
+	@$(CROSS_UNIT_ENV) $(SUITE) "$(BUILD)/aarch64/tests/$* (qemu-aarch64)" \
 	  qemu-aarch64 -L /usr/aarch64-linux-gnu $(BUILD)/aarch64/tests/$*
 
 deps:

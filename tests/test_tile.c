@@ -16,6 +16,7 @@
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include <cmocka.h>
 
@@ -23,6 +24,7 @@
 #include "../core/hol_room.h"
 #include "../core/hol_tile.h"
 #include "model.h"
+#include "quick.h"
 
 /* Checked exhaustively to this distance; SPEC gives counts to 12. A deeper
  * run: make BUILD=build/deep CFLAGS=-DHOL_TEST_MAXLEN=14 unit */
@@ -326,8 +328,10 @@ static void check_step(hol_tile t)
 static void test_neighbours_and_frames(void **state)
 {
     (void)state;
-    enum_words(hol_tile_origin(), MAXLEN - 1, check_step);
-    print_message("neighbours of every tile to distance %d checked\n", MAXLEN - 1);
+    /* HOL_TEST_QUICK (tests/quick.h): to distance 9, 5 times fewer tiles */
+    int depth = test_quick() ? MAXLEN - 3 : MAXLEN - 1;
+    enum_words(hol_tile_origin(), depth, check_step);
+    print_message("neighbours of every tile to distance %d checked\n", depth);
 }
 
 static uint64_t rng_state = 0x1234567887654321u;
@@ -356,8 +360,8 @@ static hol_tile random_tile(int n)
 static void test_relative_and_distance(void **state)
 {
     (void)state;
-    int checked = 0;
-    for (int iter = 0; iter < 40000; iter++) {
+    int checked = 0, iters = test_quick() ? 10000 : 40000; /* tests/quick.h */
+    for (int iter = 0; iter < iters; iter++) {
         hol_tile a = random_tile((int)(rng() % 9));
         hol_tile b = random_tile((int)(rng() % 9));
         int north = (int)(rng() % 4);
@@ -385,7 +389,7 @@ static void test_relative_and_distance(void **state)
         checked++;
     }
     print_message("%d pairs checked\n", checked);
-    assert_true(checked > 20000);
+    assert_true(checked > iters / 2);
 }
 
 /* ---- the room ---- */
@@ -651,6 +655,13 @@ static const tiling_case tilings[] = {
 };
 #define NTILINGS (int)(sizeof tilings / sizeof tilings[0])
 
+/* The depth the proofs of a tiling run to: 2 less with HOL_TEST_QUICK
+ * (tests/quick.h), still past every SPEC count of the tiling. */
+static int tiling_maxlen(const tiling_case *tc)
+{
+    return tc->maxlen - (test_quick() ? 2 : 0);
+}
+
 /* A uniformly random letter, then canonical children: a random tile of
  * {4,q} at distance n. */
 static hol_tile random_tile_q(int q, int n)
@@ -671,21 +682,22 @@ static void test_tilings_addresses(void **state)
     for (int i = 0; i < NTILINGS; i++) {
         const tiling_case *tc = &tilings[i];
         model_bfs b;
+        int maxlen = tiling_maxlen(tc);
         model_use_tiling(tc->q);
         g_q = tc->q;
-        assert_int_equal(model_bfs_run(&b, tc->maxlen + 1), 0);
+        assert_int_equal(model_bfs_run(&b, maxlen + 1), 0);
         int flat[LANG_MAX + 1];
         for (int d = 0; d <= LANG_MAX; d++)
             flat[d] = d ? 4 * d : 1;
         const int *spec = tc->q == 4 ? flat : tc->spec;
-        int nspec = tc->q == 4 ? tc->maxlen + 1 : tc->nspec;
+        int nspec = tc->q == 4 ? maxlen + 1 : tc->nspec;
         lang_check c;
-        if (lang_run_in(&c, accept_core, &b, tc->maxlen, spec, nspec))
+        if (lang_run_in(&c, accept_core, &b, maxlen, spec, nspec))
             fail_msg("{4,%d} addresses: %s", tc->q, c.problem);
-        for (int d = 0; d <= tc->maxlen; d++)
+        for (int d = 0; d <= maxlen; d++)
             assert_int_equal(hol_tile_count_at(tc->q, d), (uint64_t)b.per_dist[d]);
         print_message("{4,%d}: every tile to distance %d has one address, a shortest walk "
-                      "(%d words)\n", tc->q, tc->maxlen, c.nwords);
+                      "(%d words)\n", tc->q, maxlen, c.nwords);
         lang_free(&c);
         model_bfs_free(&b);
     }
@@ -699,7 +711,7 @@ static void test_tilings_neighbours(void **state)
     for (int i = 0; i < NTILINGS; i++) {
         const tiling_case *tc = &tilings[i];
         model_use_tiling(tc->q);
-        int depth = tc->maxlen - 2 < 9 ? tc->maxlen - 2 : 9;
+        int depth = tiling_maxlen(tc) - 2 < 9 ? tiling_maxlen(tc) - 2 : 9;
         enum_words(hol_tile_origin_q(tc->q), depth, check_step);
         enum_words(hol_tile_origin_q(tc->q), depth, check_automaton);
         print_message("{4,%d}: neighbours and frames of every tile to distance %d\n", tc->q,
@@ -715,8 +727,8 @@ static void test_tilings_relative(void **state)
         const tiling_case *tc = &tilings[i];
         model_bfs b;
         model_use_tiling(tc->q);
-        assert_int_equal(model_bfs_run(&b, tc->maxlen), 0);
-        int checked = 0, half = tc->maxlen / 2;
+        assert_int_equal(model_bfs_run(&b, tiling_maxlen(tc)), 0);
+        int checked = 0, half = tiling_maxlen(tc) / 2;
         for (int iter = 0; iter < 6000; iter++) {
             hol_tile a = random_tile_q(tc->q, (int)(rng() % (unsigned)(half + 1)));
             hol_tile t = random_tile_q(tc->q, (int)(rng() % (unsigned)(half + 1)));

@@ -2,9 +2,13 @@
  * constraints after long random walks, determinism, save/load, corrupt and
  * truncated images, capacity exhaustion, backtracking, game objects.
  *
- * The long walk takes HOL_TEST_WORLD_STEPS room steps (default 100000; the
- * sanitizer build runs the same number). Set it lower for a quick run:
+ * The long walk takes HOL_TEST_WORLD_STEPS room steps (default 100000). Set
+ * it lower for a quick run:
  *   make BUILD=build/quick CFLAGS=-DHOL_TEST_WORLD_STEPS=5000 unit
+ * With HOL_TEST_QUICK=1 in the environment (tests/quick.h: CI's runs under
+ * qemu and under the sanitizers) the long walk takes 30000 steps at most in
+ * a store of 2^14 tiles (not 2^16), and the walk of seen tiles 10000 steps
+ * instead of 30000.
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -20,6 +24,7 @@
 #include "../core/hol_tile.h"
 #include "../core/hol_world.h"
 #include "../core/hol_world_impl.h" /* white box: the tile set, checksum */
+#include "quick.h"
 
 #ifndef HOL_TEST_WORLD_STEPS
 #define HOL_TEST_WORLD_STEPS 100000
@@ -272,7 +277,9 @@ static void test_vertices(void **state)
 static void test_long_walk(void **state)
 {
     (void)state;
-    hol_world *w = make_world(2024, 1u << 16, 0);
+    /* quick (tests/quick.h): a quarter of the store, so the shorter walk
+     * evicts too */
+    hol_world *w = make_world(2024, test_quick() ? 1u << 14 : 1u << 16, 0);
     hol_room room = hol_room_start();
     assert_int_equal(hol_world_update(w, &room), HOL_OK);
     uint64_t rng = 99;
@@ -280,6 +287,8 @@ static void test_long_walk(void **state)
     static hol_tile_content prevc[128], curc[128];
     size_t nprev = 0, compared = 0;
     long steps = HOL_TEST_WORLD_STEPS;
+    if (test_quick() && steps > 30000)
+        steps = 30000;
     for (long i = 0; i < steps; i++) {
         random_step(w, &room, &rng, i < steps / 2 ? 450 : 0);
         /* snapshots at steps 16k and 16k + 1: a tile seen in both balls
@@ -745,7 +754,7 @@ static seen_rec *seen_slot(seen_rec *tab, size_t mask, hol_tile t)
 static void test_seen_tiles_stay(void **state)
 {
     (void)state;
-    enum { STEPS = 30000 };
+    const int STEPS = test_quick() ? 10000 : 30000;
     const size_t mask = (1u << 17) - 1;
     seen_rec *tab = calloc(mask + 1, sizeof *tab);
     assert_non_null(tab);

@@ -365,7 +365,11 @@ async function exitVR(p) {
   await p.page.evaluate(() => document.querySelector('[data-webxr_runtime]')?.remove());
 }
 
-await check('no GPU sync in the frame path: 0 getError, finish, readPixels or get* calls over 300 pancake frames and 300 XR frames', async () => {
+// 120 frames of each (300 before issue 24's CI budget: the check is the
+// same, a sync call in the frame path shows once a frame; the desktop's
+// tests/cli_gl_sync.sh still counts 300)
+const SYNC_FRAMES = 120;
+await check(`no GPU sync in the frame path: 0 getError, finish, readPixels or get* calls over ${SYNC_FRAMES} pancake frames and ${SYNC_FRAMES} XR frames`, async () => {
   const p = await openPage('?mode=explore&seed=2', { iwer: true, syncCount: true });
   const count = async (what, frames, n) => {
     await p.until(async () => (await frames()) >= 5, what + ': first frames', 60000);
@@ -376,9 +380,9 @@ await check('no GPU sync in the frame path: 0 getError, finish, readPixels or ge
     console.log(`# ${what}: ${r.n} sync calls over ${n} frames (${((Date.now() - t) / n).toFixed(1)} ms a frame) ${JSON.stringify(r.names)}`);
     return r;
   };
-  const pan = await count('pancake', () => p.state(S.FRAMES), 300);
+  const pan = await count('pancake', () => p.state(S.FRAMES), SYNC_FRAMES);
   await enterVR(p);
-  const xrc = await count('XR', () => p.state(S.XR_FRAMES), 300);
+  const xrc = await count('XR', () => p.state(S.XR_FRAMES), SYNC_FRAMES);
   assert(pan.n === 0, 'pancake: ' + JSON.stringify(pan.names));
   assert(xrc.n === 0, 'XR: ' + JSON.stringify(xrc.names));
   assert(!p.errors.length, 'errors: ' + p.errors.join('; '));
@@ -868,6 +872,7 @@ function lightProject(p, eye, q, [tl, tr, td, tu], w, h) {
   if (c[2] >= 0) return null;
   return [(c[0] / -c[2] - tl) / (tr - tl) * w, (tu - c[1] / -c[2]) / (tu - td) * h];
 }
+const dayRenders = new Map(); /* holonomy render --lighting day, by its arguments */
 for (const q of [5, 6]) for (const sky of ['dusk', 'night']) {
   await check(`WebXR {4,${q}} at ${sky} with a lantern, both eyes: the glass glows where each eye's pose projects it, further right in the left eye by the projections' offset (within 1 px); ` +
     `the eyes darker than the day render of the same pose${sky === 'night' ? ' by half' : ''}; each equals holonomy render --lighting ${sky} --lantern N of its eye (channel within ${TOL}/255 on ${100 - MAX_PCT} % of pixels)`, async () => {
@@ -903,10 +908,14 @@ for (const q of [5, 6]) for (const sky of ['dusk', 'night']) {
         const render = (lighting, out) => {
           const args = ['render', '--walk', '-', '--seed', '5', '--tiling', `4,${q}`, ...m[1].split(' '),
             '--size', `${w}x${h}`, '--lighting', lighting, '--lantern', 'N', '--out', out];
+          // the day render of a pose is made once (dusk's and night's checks share it)
+          const key = lighting === 'day' ? args.slice(0, -1).join(' ') : null;
+          if (key && dayRenders.has(key)) return dayRenders.get(key);
           const r = spawnSync(HOLONOMY, args, { encoding: 'utf8' });
           assert(r.status === 0, `holonomy ${args.join(' ')}: ${r.stderr}`);
           const img = decodePNG(fs.readFileSync(out));
           assert(img.w === w && img.h === h, 'reference size');
+          if (key) dayRenders.set(key, img.rgba);
           return img.rgba;
         };
         const want = render(sky, path.join(OUT, `osmesa-${name}-eye${e}.png`));
