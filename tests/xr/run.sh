@@ -35,10 +35,20 @@ chroot "$CHROOT" sh -c 'cd /src && cc -std=c11 -O2 -Wall -Wextra -Werror -Wshado
     echo "xr-test: FAIL: building the test's API layer in the chroot" >&2; exit 1; }
 echo "xr-test: built in the chroot ($(( $(date +%s) - start )) s)"
 rc=0
-chroot "$CHROOT" env XR_ONLY="${XR_ONLY:-}" sh -c 'cd /src && timeout 600 sh tests/xr/inside.sh build/xr/holonomy' || rc=1
+# every check's line is kept too, so the end can repeat the failed ones
+# (CI shows only the last lines of a long run)
+log=${OUT:-$root/build/xr-test}/checks.txt
+mkdir -p "$(dirname "$log")" && : >"$log" && rm -f "$log.rc"
+done_in() {
+    grep "^xr-test: FAIL" "$log" | sed 's/^xr-test: FAIL/xr-test: failed earlier/'
+    [ ! -e "$log.rc" ] || echo "xr-test: failed earlier: $(tr '\n' ' ' <"$log.rc")exited non-zero (tests/xr/inside.sh, lighting.sh)"
+    echo "xr-test: done in $(( $(date +%s) - start )) s, $(grep -c '^xr-test: ok' "$log") checks passed, $(grep -c '^xr-test: FAIL' "$log") failed"
+}
+{ chroot "$CHROOT" env XR_ONLY="${XR_ONLY:-}" sh -c 'cd /src && timeout 600 sh tests/xr/inside.sh build/xr/holonomy' || echo inside >>"$log.rc"; } | tee -a "$log"
 # the lit eyes, measured here and kept in the build folder (tests/xr/lighting.sh)
-sh "$root/tests/xr/lighting.sh" "$CHROOT/tmp/xr-test/light" "${OUT:-$root/build/xr-test}/lighting" || rc=1
-if [ "${XR_ONLY:-}" = lighting ]; then echo "xr-test: done in $(( $(date +%s) - start )) s"; exit $rc; fi
+{ sh "$root/tests/xr/lighting.sh" "$CHROOT/tmp/xr-test/light" "${OUT:-$root/build/xr-test}/lighting" || echo lighting >>"$log.rc"; } | tee -a "$log"
+if grep -q "^xr-test: FAIL" "$log" || [ -e "$log.rc" ]; then rc=1; fi
+if [ "${XR_ONLY:-}" = lighting ]; then done_in; exit $rc; fi
 # The host's half: the eye read back from the swapchain in the chroot
 # against the host build's `holonomy render` of the same eye pose (another
 # process, another Mesa, the CLI's pose arguments), within png_diff's
@@ -51,10 +61,10 @@ if [ -n "$args" ] && [ -n "${HOLONOMY:-}" ] && [ -n "${PNG_DIFF:-}" ] &&
    # shellcheck disable=SC2086
    "$HOLONOMY" render --walk "${walk:--}" --seed "$seed" $args --out "$out/check/host-eye0.png" &&
    d=$("$PNG_DIFF" "$out/check/xr-eye0.png" "$out/check/host-eye0.png"); then
-    echo "xr-test: ok: swapchain read back equals the host's holonomy render --walk ${walk:--} (same eye): $d"
+    echo "xr-test: ok: swapchain read back equals the host's holonomy render --walk ${walk:--} (same eye): $d" | tee -a "$log"
 else
-    echo "xr-test: FAIL: swapchain read back against the host's holonomy render: ${d:-no comparison}"
+    echo "xr-test: FAIL: swapchain read back against the host's holonomy render: ${d:-no comparison}" | tee -a "$log"
     rc=1
 fi
-echo "xr-test: done in $(( $(date +%s) - start )) s"
+done_in
 exit $rc
