@@ -89,9 +89,10 @@
 #define HOL_LIGHT_FF_STEPS 3
 #define HOL_LIGHT_FF_WEIGHT 0.15
 /* A firefly's sprite: an octahedron of this radius (metres) at its place,
- * drawn unlit (as a lantern's glass: 1.2 times this colour) and fogged */
+ * drawn unlit (as a lantern's glass: 1.2 times this colour) and fogged;
+ * its luma stays under 200, the glass's (make xr-test finds the glass so) */
 #define HOL_FF_SPRITE_M 0.04f
-#define HOL_FF_SPRITE_RGB 200, 240, 110
+#define HOL_FF_SPRITE_RGB 150, 190, 80
 #define HOL_LIGHT_SPOT_TILT_DEG 45.0
 #define HOL_LIGHT_SPOT_OUTER_DEG 35.0
 #define HOL_LIGHT_SPOT_INNER_DEG 25.0
