@@ -6,9 +6,9 @@
  * --check-frame` prints them ("xr: check eye E render --eye X,Y,Z --orient
  * X,Y,Z,W --tan L,R,D,U --size WxH --fireflies T"; the frame's time T
  * places the fireflies: taken and ignored here). The point (room
- * coordinates, metres: a lantern's glass) is projected through that eye by a pinhole of its pose
- * and tangents (the model, independent of the renderer), and the picture
- * is measured. Prints one line:
+ * coordinates, metres: a lantern's glass) is projected through that eye
+ * by a pinhole of its pose and tangents (the model, independent of the
+ * renderer), and the picture is measured. Prints one line:
  *
  *   mean M at PX,PY disc D bright N centroid CX
  *
