@@ -82,10 +82,9 @@ void hol_app_frame_desc(const hol_app_view *v, int eye, int w, int h, double fov
     fd->time_s = v->hud.elapsed_s;
     fd->path = v->map.npath ? v->map.path : NULL;
     fd->lighting = v->lighting;
-    /* Fireflies are off in the app's frames for now: xr-test and web-test
-     * compare each night eye with `holonomy render` of its pose, which cannot
-     * draw them at the eye's time yet (docs/rendering.md: Fireflies). */
-    fd->fireflies = 0;
+    /* fireflies at dusk and night, circling with the level's clock (time_s;
+     * `holonomy render --fireflies T` draws the same frame) */
+    fd->fireflies = 1;
     int nlan = v->nlanterns < HOL_RENDER_MAX_LANTERNS ? v->nlanterns : HOL_RENDER_MAX_LANTERNS;
     fd->nlanterns = nlan > 0 ? nlan : 0;
     memcpy(fd->lanterns, v->lanterns, (size_t)fd->nlanterns * sizeof fd->lanterns[0]);

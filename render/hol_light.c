@@ -46,6 +46,14 @@ int hol_light_firefly(hol_tile t, const hol_tile_content *c, double cell_m, doub
     return 1;
 }
 
+int hol_light_ff_of(const hol_light_frame *lf, hol_tile t)
+{
+    for (int i = 0; i < lf->nff; i++)
+        if (hol_tile_eq(lf->ff_tile[i], t))
+            return i;
+    return -1;
+}
+
 /* Light i at the point of (x, z) metres, h up, in the frame fr of a tile. */
 static void hol__put(hol_light_frame *o, const double fr[9], double x, double z, double h)
 {
@@ -106,6 +114,8 @@ static void hol__fireflies(const hol_frame_desc *f, const struct hol_world *w,
             hol_hyper_frame(f->user.tile, f->user.orient, t, fr))
             continue;
         hol__put(o, fr, xzh[0], xzh[1], xzh[2]);
+        o->ff_tile[o->nff] = t;
+        memcpy(o->ff_xzh[o->nff++], xzh, sizeof xzh);
         o->ff[o->n++] = 1;
         o->fx = o->fx ? o->fx : 1;
         nff++;

@@ -53,7 +53,9 @@
  *   (period 5..9 s by f->time_s; time 0 is the resting place). A firefly
  *   is a light like a lantern (the same falloff, distance and choice of
  *   four a tile) with its own height and a weight HOL_LIGHT_FF_WEIGHT in
- *   its own colour (yellow-green, the shader's u_fcol).
+ *   its own colour (yellow-green, the shader's u_fcol). The renderer
+ *   draws each one as a small glowing sprite at its place too, in the
+ *   tile's mesh coordinates (HOL_FF_SPRITE_*; not in HOL_RENDER_BARE).
  * - Spots (f->lantern_spot[k] != 0): the lantern's light only in a cone
  *   around its direction, given in the lantern tile's own frame: 1..4 its
  *   heading turned k - 1 quarter turns clockwise and tilted
@@ -86,6 +88,11 @@
 #define HOL_LIGHT_MAX (HOL_RENDER_MAX_LANTERNS + HOL_LIGHT_MAX_FF)
 #define HOL_LIGHT_FF_STEPS 3
 #define HOL_LIGHT_FF_WEIGHT 0.15
+/* A firefly's sprite: an octahedron of this radius (metres) at its place,
+ * drawn unlit (as a lantern's glass: 1.2 times this colour) and fogged;
+ * its luma stays under 200, the glass's (make xr-test finds the glass so) */
+#define HOL_FF_SPRITE_M 0.04f
+#define HOL_FF_SPRITE_RGB 150, 190, 80
 #define HOL_LIGHT_SPOT_TILT_DEG 45.0
 #define HOL_LIGHT_SPOT_OUTER_DEG 35.0
 #define HOL_LIGHT_SPOT_INNER_DEG 25.0
@@ -107,6 +114,13 @@ typedef struct hol_light_frame {
     double pos[HOL_LIGHT_MAX][3]; /* their points, user frame */
     double h[HOL_LIGHT_MAX];      /* their heights, metres */
     uint8_t ff[HOL_LIGHT_MAX];    /* 1: a firefly */
+    int nff;                      /* the fireflies' tiles and places (x, z,
+                                     height in metres in the tile's own
+                                     frame, hol_light_firefly), in the
+                                     order placed: the renderer draws
+                                     each one's sprite there */
+    hol_tile ff_tile[HOL_LIGHT_MAX_FF];
+    double ff_xzh[HOL_LIGHT_MAX_FF][3];
     double sd[HOL_LIGHT_MAX][3];  /* a spot's horizontal direction, a tangent
                                      at pos (user frame) of length
                                      cos(tilt) * metres_per_unit; 0 for
@@ -123,6 +137,9 @@ typedef struct hol_light_frame {
  * (hol_hyper_frame fails) is dropped. HOL_EARG: a cell outside 0.5..1.5. */
 hol_err hol_light_prepare(const hol_frame_desc *f, const struct hol_world *w,
                           hol_light_frame *out);
+
+/* The index into lf->ff_tile of tile t's firefly, or -1 (none placed). */
+int hol_light_ff_of(const hol_light_frame *lf, hol_tile t);
 
 /* Tile t's firefly at time_s: 1 and its place (x, z metres in the tile's
  * own frame, as the tile meshes; height in metres) when content c has one

@@ -852,6 +852,36 @@ static void hol__item_lights(hol_render *r, hol__item *it, hol_tile t)
     it->tl[3][3] = 0;
 }
 
+/* A firefly's sprite (render/hol_light.h): when tile t has one of the
+ * frame's fireflies, a small glowing blob at its place in the tile's own
+ * frame, drawn like the tile's item (its stencil, wedge, matrix and
+ * lights) from the dynamic buffer after every tile; nonzero: out of
+ * room. */
+static int hol__queue_firefly(hol_render *r, const hol__item *tile_it, hol_tile t)
+{
+    int i = hol_light_ff_of(&r->lights, t);
+    if (i < 0)
+        return 0;
+    static const uint8_t glow[3] = {HOL_FF_SPRITE_RGB};
+    const double *p = r->lights.ff_xzh[i];
+    float c[3] = {(float)p[0], (float)p[2], (float)p[1]};
+    uint32_t v0 = r->dyn.nv, i0 = r->dyn.ni;
+    hol_mesh_blob(&r->dyn, c, HOL_FF_SPRITE_M, HOL_FF_SPRITE_M, HOL_FF_SPRITE_M, glow);
+    if (r->dyn.overflow)
+        return 1;
+    for (uint32_t v = v0; v < r->dyn.nv; v++)
+        r->dyn.v[v].rgba[3] = HOL_MESH_GLOW; /* unlit, as a lantern's glass */
+    hol__item *it = hol__push(r, HOL__PASS_TILE, i0, r->dyn.ni - i0);
+    if (!it)
+        return 1;
+    *it = *tile_it;
+    it->first = i0;
+    it->count = r->dyn.ni - i0;
+    it->dyn = 1;
+    it->key = 2u << 24 | 0xffu << 16 | (uint32_t)(uint16_t)tile_it->branch;
+    return 0;
+}
+
 /* Pass 2: one draw per branch of its tile's resident mesh, placed in the
  * branch's cell, nearest cells first. */
 static hol_err hol__queue_tiles(hol_render *r, const hol_frame_desc *f, int bare,
@@ -894,6 +924,8 @@ static hol_err hol__queue_tiles(hol_render *r, const hol_frame_desc *f, int bare
         m[10] = c;
         m[12] = (float)((br->state.col + 0.5) * cell_m);
         m[14] = (float)((br->state.row + 0.5) * cell_m);
+        if (f->lighting && !bare && hol__queue_firefly(r, it, br->state.tile))
+            return HOL_ENOMEM;
     }
     return HOL_OK;
 }
@@ -1362,7 +1394,7 @@ static void hol__execute(hol_render *r, const hol_frame_desc *f, const float vp[
                 r->gl.Uniform4f(r->pg->u_id, (float)(id & 255) / 255.0f, (float)(id >> 8) / 255.0f,
                                 0, 1);
             }
-            st->branches++;
+            st->branches += !it->dyn; /* a firefly's sprite is no branch */
         } else if (cur_pass == HOL__PASS_HAND || cur_pass == HOL__PASS_PANEL) {
             r->gl.UniformMatrix4fv(r->pg->u_model, 1, GL_FALSE, it->model);
         }

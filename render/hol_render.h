@@ -222,7 +222,8 @@ typedef struct hol_frame_desc {
      * tilted 45 degrees down, 5 a spot straight down. */
     uint8_t lantern_spot[HOL_RENDER_MAX_LANTERNS];
     /* 1: fireflies over the creek and flower tiles near the user at dusk
-     * and night (with desc.world; they circle with time_s). */
+     * and night (with desc.world; they circle with time_s), each a light
+     * and a small glowing sprite at its place (not with HOL_RENDER_BARE). */
     int fireflies;
     /* The headset's panel (HOL_RENDER_PANEL): its centre panel_pos (room
      * coordinates), turned by the unit quaternion panel_orient (x, y, z, w;

@@ -25,6 +25,10 @@
  * - test_day_unchanged_without_lighting: lanterns at day change nothing.
  * - test_app_frame_carries_lights: the app's view (play, replay, xr, the
  *   web) hands the level's sky and lanterns to the renderer.
+ * - test_fireflies: their light against the model; the app's frames turn
+ *   them on at the level's clock.
+ * - test_firefly_sprites: each firefly's sprite where the test's camera
+ *   projects its place, in both eyes of a pair.
  */
 #include <math.h>
 #include <setjmp.h>
@@ -645,20 +649,25 @@ static void test_fireflies(void **state)
             assert_true(hypot(b[0] - a[0], b[1] - a[1]) <= 0.161);
         }
     }
-    /* the app's frame: fireflies off at night too (render/hol_app_frame.c) */
+    /* the app's frame: fireflies on, at the level's clock (the time that
+     * `holonomy render --fireflies T` takes: the check lines print it) */
     static hol_app_view v;
     memset(&v, 0, sizeof v);
     v.user = hol_room_start();
     v.cell_m = 1;
     v.head[0] = v.head[2] = 1.5;
     v.head[1] = 1.6;
+    v.hud.elapsed_s = 4.75;
     hol_frame_desc fd;
     v.lighting = HOL_LIGHT_NIGHT;
-    hol_app_frame_desc(&v, -1, W, H, 90, &fd);
-    assert_int_equal(fd.fireflies, 0);
+    for (int e = -1; e < 2; e++) {
+        hol_app_frame_desc(&v, e, W, H, 90, &fd);
+        assert_int_equal(fd.fireflies, 1);
+        assert_true(fd.time_s == 4.75);
+    }
     v.lighting = HOL_LIGHT_DUSK;
     hol_app_frame_desc(&v, -1, W, H, 90, &fd);
-    assert_int_equal(fd.fireflies, 0);
+    assert_int_equal(fd.fireflies, 1);
 
     /* the light against the model */
     static uint8_t px[W * H * 4];
@@ -768,6 +777,119 @@ static void test_fireflies(void **state)
     assert_true(lit_all > 300);
 }
 
+/* Room point p (metres) to pixel (x from the left, y from the top) of an
+ * eye at e looking by yaw and pitch (degrees), the test's camera; 0:
+ * behind the eye. */
+static int project(const double e[3], double yaw_deg, double pitch_deg, const double p[3],
+                   double out[2])
+{
+    double yaw = yaw_deg * PI / 180, pitch = pitch_deg * PI / 180;
+    double dx = p[0] - e[0], dy = p[1] - e[1], dz = p[2] - e[2];
+    double vx = dx * cos(yaw) - dz * sin(yaw), z1 = dx * sin(yaw) + dz * cos(yaw);
+    double vy = dy * cos(pitch) + z1 * sin(pitch), vz = -dy * sin(pitch) + z1 * cos(pitch);
+    if (vz > -1e-3)
+        return 0;
+    double ty = tan(PI / 4), tx = ty * W / H;
+    out[0] = (vx / -vz / tx + 1) * W / 2;
+    out[1] = (1 - vy / -vz / ty) * H / 2;
+    return 1;
+}
+
+/* A firefly sprite's pixel: its unlit yellow-green (render/hol_light.h:
+ * HOL_FF_SPRITE_RGB times 1.2, a little fog), which nothing else at night
+ * without lanterns comes near. */
+static int sprite_px(const uint8_t *q)
+{
+    return q[1] > 150 && q[0] > 100 && q[1] > q[0] && q[2] < 130;
+}
+
+/* Firefly sprites (render/hol_light.h): at night, in the full picture,
+ * from the middle cell of {4,5} and {4,6} (after loops of room steps
+ * that end there on other tiles) at several times, each eye of a
+ * pair 6.4 cm apart: around every firefly of the eye's cell and its four
+ * neighbours (one room step: the tile and its frame by hol_room_step, the
+ * place by hol_light_firefly in that tile's own frame, turned into the
+ * room by the state's orient) that projects inside the picture, the
+ * sprite's pixels have their centroid within 1 px of the projection of
+ * that place (so the two eyes' offset is the place's disparity); and
+ * every sprite pixel lies within 5 px of the projection of some firefly
+ * of a room cell (the corners by both of their two-step walks). */
+static void test_firefly_sprites(void **state)
+{
+    (void)state;
+    static uint8_t px[W * H * 4];
+    static const struct { const char *walk; int q; double yaw, t; } views[] = {
+        {"-", 5, 0, 0},       {"-", 5, 90, 2.3},     {"-", 5, 180, 0},   {"-", 5, 270, 2.3},
+        {"NESW", 5, 30, 0.7}, {"NESW", 5, 200, 3.9}, {"SWNE", 5, 120, 0}, {"ENWS", 5, 300, 5},
+        {"-", 6, 45, 1.1},    {"NESW", 6, 225, 0},   {"SWNE", 6, 10, 2}, {"ENWS", 6, 160, 7.5},
+    };
+    static const char *const walks[] = {"", "N", "E", "S", "W", "NE", "EN", "NW", "WN",
+                                        "SE", "ES", "SW", "WS"};
+    int found = 0, pixels = 0;
+    for (size_t k = 0; k < sizeof views / sizeof views[0]; k++)
+        for (int e = 0; e < 2; e++) {
+            double yaw = views[k].yaw * PI / 180, side = e ? 0.032 : -0.032;
+            light_case lc = {views[k].walk, {1.5 + side * cos(yaw), 1.6, 1.45 - side * sin(yaw)},
+                             views[k].yaw, -30, views[k].q, 3, 3, 1, {NULL}, 0};
+            scene s;
+            make_scene(&lc, &s);
+            s.f.fireflies = 1;
+            s.f.time_s = views[k].t;
+            struct hol_world *w = world_of(lc.q);
+            render(&s, HOL_RENDER_BARE, px); /* the tiles near the user generated */
+            render(&s, 0, px);
+            double pr[16][2];
+            int npr = 0;
+            for (size_t i = 0; i < sizeof walks / sizeof walks[0]; i++) {
+                hol_room u = s.f.user;
+                for (const char *c = walks[i]; *c; c++)
+                    assert_int_equal(hol_room_step(&u, hol_dir_from_char(*c)), HOL_OK);
+                hol_tile_content c;
+                double xzh[3];
+                if (hol_world_peek(w, u.tile, &c) ||
+                    !hol_light_firefly(u.tile, &c, 1, s.f.time_s, xzh))
+                    continue;
+                double an = -u.orient * PI / 2, cx = cos(an), sx = sin(an);
+                double p[3] = {u.col + 0.5 + xzh[0] * cx + xzh[1] * sx, xzh[2],
+                               u.row + 0.5 - xzh[0] * sx + xzh[1] * cx};
+                double xy[2];
+                if (!project(lc.eye, lc.yaw, lc.pitch, p, xy))
+                    continue;
+                memcpy(pr[npr++], xy, sizeof xy);
+                if (strlen(walks[i]) > 1 || xy[0] < 6 || xy[0] > W - 6 || xy[1] < 6 ||
+                    xy[1] > H - 6)
+                    continue;
+                double sx2 = 0, sy2 = 0;
+                int n = 0;
+                for (int y = (int)xy[1] - 4; y <= (int)xy[1] + 4; y++)
+                    for (int x = (int)xy[0] - 4; x <= (int)xy[0] + 4; x++)
+                        if (sprite_px(px + 4 * (y * W + x)))
+                            sx2 += x + 0.5, sy2 += y + 0.5, n++;
+                printf("  {4,%d} yaw %g eye %d walk %s: sprite at %.2f,%.2f, %d pixels "
+                       "centred %.2f,%.2f\n", lc.q, lc.yaw, e, walks[i][0] ? walks[i] : "-",
+                       xy[0], xy[1], n, n ? sx2 / n : -1, n ? sy2 / n : -1);
+                assert_true(n > 0);
+                assert_true(fabs(sx2 / n - xy[0]) <= 1 && fabs(sy2 / n - xy[1]) <= 1);
+                found++;
+            }
+            for (int y = 0; y < H; y++)
+                for (int x = 0; x < W; x++) {
+                    if (!sprite_px(px + 4 * (y * W + x)))
+                        continue;
+                    int near = 0;
+                    for (int i = 0; i < npr && !near; i++)
+                        near = hypot(x + 0.5 - pr[i][0], y + 0.5 - pr[i][1]) <= 5;
+                    if (!near)
+                        printf("  a sprite pixel at %d,%d with no firefly near\n", x, y);
+                    assert_true(near);
+                    pixels++;
+                }
+        }
+    printf("firefly sprites: %d placed within 1 px, %d sprite pixels, all by a firefly\n", found,
+           pixels);
+    assert_true(found >= 8);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -778,6 +900,7 @@ int main(void)
         cmocka_unit_test(test_day_unchanged_without_lighting),
         cmocka_unit_test(test_app_frame_carries_lights),
         cmocka_unit_test(test_fireflies),
+        cmocka_unit_test(test_firefly_sprites),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }

@@ -32,7 +32,7 @@ static const char *const render_usage =
     "                       [--gl osmesa|egl] [--stereo IPD] [--window]\n"
     "                       [--keys SCRIPT] [--tiling 4,Q] [--room CxR]\n"
     "                       [--cell M] [--lighting day|dusk|night]\n"
-    "                       [--lantern ADDR]\n"
+    "                       [--lantern ADDR] [--fireflies SECONDS|off]\n"
     "\n"
     "Render what the user sees and write a PNG: headless (OSMesa, or EGL\n"
     "surfaceless), or live in a window (--window).\n"
@@ -88,6 +88,10 @@ static const char *const render_usage =
     "                  distance from the eye\n"
     "  --lantern ADDR  a lantern over that tile's centre (repeatable, up to\n"
     "                  16); lit at dusk and night\n"
+    "  --fireflies T   the frame's time in seconds, 0..1e9 (default 0): at dusk\n"
+    "                  and night the fireflies (over creek, spring, pool and\n"
+    "                  flower tiles, as the app draws them) circle with it;\n"
+    "                  also the HUD's clock. 'off': no fireflies\n"
     "  --orient X,Y,Z,W with --tan L,R,D,U: the headset's form of the eye (as\n"
     "                  'holonomy xr' prints it): orientation quaternion (view\n"
     "                  to room; roll too) and the tangents of the field of\n"
@@ -240,7 +244,7 @@ static int run_window(const char *cmd, hol_x11 *xw, hol_render *r, hol_world *wo
     hol_x11_keys keys;
     memset(&keys, 0, sizeof keys);
     long k = 0;
-    double t = 0;
+    double t = fd->time_s; /* --fireflies */
     hol_motion mo;
     hol_motion_desc md;
     memset(&md, 0, sizeof md);
@@ -325,6 +329,8 @@ typedef struct render_opts {
     const char *target_s[HOL_RENDER_MAX_OBJECTIVES]; /* resolved in the tiling */
     const char *lantern_s[HOL_RENDER_MAX_LANTERNS];
     int nlanterns, lighting;
+    int ff_off;         /* --fireflies off */
+    double ff_time;     /* --fireflies T */
     hol_tile lanterns[HOL_RENDER_MAX_LANTERNS];
     double yaw, pitch, fov, ipd;
     long w, h, frames;
@@ -338,7 +344,7 @@ typedef struct render_opts {
 static const char *const render_value_opts[] = {
     "--walk", "--eye", "--hand", "--orient", "--tan", "--yaw", "--pitch", "--size", "--out",
     "--tile-ids", "--fov", "--frames", "--seed", "--target", "--gl", "--stereo", "--keys",
-    "--cell", "--tiling", "--room", "--lighting", "--lantern", NULL};
+    "--cell", "--tiling", "--room", "--lighting", "--lantern", "--fireflies", NULL};
 
 /* --size WxH: 0 ok, 1 bad. */
 static int parse_size(const char *val, long *w, long *h)
@@ -376,6 +382,10 @@ static int parse_number_opt(const char *cmd, render_opts *o, const char *a, cons
     } else if (!strcmp(a, "--stereo")) {
         if (parse_double(val, &o->ipd) || o->ipd <= 0 || o->ipd > 0.2)
             bad = "is not an eye distance in (0, 0.2] m";
+    } else if (!strcmp(a, "--fireflies")) {
+        o->ff_off = !strcmp(val, "off");
+        if (!o->ff_off && (parse_double(val, &o->ff_time) || o->ff_time < 0 || o->ff_time > 1e9))
+            bad = "is not a time in seconds in 0..1e9 (or off)";
     } else if (!strcmp(a, "--cell")) {
         /* the parser of play's --cell and the level line `cell M` */
         if (hol_level_parse_cell(val, strlen(val), &o->cell_m)) {
@@ -642,6 +652,8 @@ static int setup_frame(const char *cmd, const render_opts *o, hol_frame_desc *fd
     memcpy(fd->objectives, o->targets, sizeof o->targets);
     fd->objective_text = o->ntargets ? "reach the guide pole" : NULL;
     fd->lighting = o->lighting;
+    fd->fireflies = !o->ff_off; /* drawn at dusk and night, as in the app */
+    fd->time_s = o->ff_time;
     fd->nlanterns = o->nlanterns;
     memcpy(fd->lanterns, o->lanterns, sizeof o->lanterns);
     fd->steps_taken = (int)nd;

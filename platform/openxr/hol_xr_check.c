@@ -164,9 +164,10 @@ void hol__check_eye(hol__xr *x, int e, const hol_frame_desc *fd, unsigned fbo, i
     hol_png_write_file(path, bare, w, h, 0);
     const hol_camera *c = &b.cam;
     hol__say(x, "xr: check eye %d render --eye %.9g,%.9g,%.9g --orient %.9g,%.9g,%.9g,%.9g "
-                "--tan %.17g,%.17g,%.17g,%.17g --size %dx%d",
+                "--tan %.17g,%.17g,%.17g,%.17g --size %dx%d --fireflies %.17g",
              e, c->eye[0], c->eye[1], c->eye[2], c->orient[0], c->orient[1], c->orient[2],
-             c->orient[3], c->tan_left, c->tan_right, c->tan_down, c->tan_up, w, h);
+             c->orient[3], c->tan_left, c->tan_right, c->tan_down, c->tan_up, w, h,
+             b.fireflies ? b.time_s : 0.0);
     if (e == 0) /* the world against the renders without a HUD */
         hol__check(x, &b, w, h);
     x->gl.BindFramebuffer(HOL__GL_FRAMEBUFFER, fbo);

@@ -127,9 +127,9 @@ static void check_eye(int e, const hol_frame_desc *fd)
     if (!w->check_px[e])
         return;
     const hol_camera *c = &fd->cam;
-    printf("web: check eye %d frame %ld render --eye %.9g,%.9g,%.9g --orient %.9g,%.9g,%.9g,%.9g "
-           "--tan %.17g,%.17g,%.17g,%.17g --size %dx%d cell %d,%d\n",
-           e, w->xr_frames, c->eye[0], c->eye[1], c->eye[2], c->orient[0], c->orient[1],
+    printf("web: check eye %d frame %ld render --fireflies %.17g --eye %.9g,%.9g,%.9g "
+           "--orient %.9g,%.9g,%.9g,%.9g --tan %.17g,%.17g,%.17g,%.17g --size %dx%d cell %d,%d\n",
+           e, w->xr_frames, fd->fireflies ? fd->time_s : 0.0, c->eye[0], c->eye[1], c->eye[2], c->orient[0], c->orient[1],
            c->orient[2], c->orient[3], c->tan_left, c->tan_right, c->tan_down, c->tan_up, ew, eh,
            fd->user.col, fd->user.row);
 }

@@ -893,7 +893,7 @@ for (const q of [5, 6]) for (const sky of ['dusk', 'night']) {
       for (let e = 0; e < 2; e++) {
         const line = p.log.find((l) => l.startsWith(`web: check eye ${e} frame ${at} `));
         assert(line, 'no check line for eye ' + e);
-        const m = / render (--eye (\S+) --orient (\S+) --tan (\S+)) --size (\d+)x(\d+) cell (\d),(\d)$/.exec(line);
+        const m = / render (--fireflies \S+ --eye (\S+) --orient (\S+) --tan (\S+)) --size (\d+)x(\d+) cell (\d),(\d)$/.exec(line);
         const w = +m[5], h = +m[6];
         assert(m[7] === '1' && m[8] === '1', 'not in the middle cell: ' + line);
         const b64 = await p.page.evaluate((eye, n) => {

@@ -4,10 +4,11 @@
  *
  * RENDER-ARGS are the eye's `holonomy render` arguments as `holonomy xr
  * --check-frame` prints them ("xr: check eye E render --eye X,Y,Z --orient
- * X,Y,Z,W --tan L,R,D,U --size WxH"). The point (room coordinates, metres:
- * a lantern's glass) is projected through that eye by a pinhole of its pose
- * and tangents (the model, independent of the renderer), and the picture
- * is measured. Prints one line:
+ * X,Y,Z,W --tan L,R,D,U --size WxH --fireflies T"; the frame's time T
+ * places the fireflies: taken and ignored here). The point (room
+ * coordinates, metres: a lantern's glass) is projected through that eye
+ * by a pinhole of its pose and tangents (the model, independent of the
+ * renderer), and the picture is measured. Prints one line:
  *
  *   mean M at PX,PY disc D bright N centroid CX
  *
@@ -54,7 +55,7 @@ static double luma(const uint8_t *p)
 
 int main(int argc, char **argv)
 {
-    double eye[3] = {0}, q[4] = {0, 0, 0, 1}, tan[4] = {0}, pt[3] = {0};
+    double eye[3] = {0}, q[4] = {0, 0, 0, 1}, tan[4] = {0}, pt[3] = {0}, ff_t = 0;
     int got = 0, sw = 0, sh = 0;
     for (int i = 2; i + 1 < argc; i += 2) {
         const char *a = argv[i], *v = argv[i + 1];
@@ -69,6 +70,8 @@ int main(int argc, char **argv)
             bad = nums(v, pt, 3), got |= 8;
         else if (!strcmp(a, "--size"))
             bad = sscanf(v, "%dx%d", &sw, &sh) != 2;
+        else if (!strcmp(a, "--fireflies"))
+            bad = nums(v, &ff_t, 1) || ff_t < 0;
         else
             bad = 1;
         if (bad) {
@@ -80,7 +83,7 @@ int main(int argc, char **argv)
     int w, h;
     if (argc < 2 || argc % 2 || got != 15) {
         fprintf(stderr, "usage: light_probe EYE.png --point X,Y,Z --eye X,Y,Z --orient "
-                        "X,Y,Z,W --tan L,R,D,U [--size WxH]\n");
+                        "X,Y,Z,W --tan L,R,D,U [--size WxH] [--fireflies T]\n");
         return 2;
     }
     if (hol_png_read_file(argv[1], &img, &w, &h) || (sw && (sw != w || sh != h))) {
