@@ -10,7 +10,8 @@
  *   last, the start green, an edge walked back drawn beside the first pass,
  *   the legend's ramp and marks in the bottom band;
  * - the step numbers of a walk back and forth through the start and a goal:
- *   no number's box meets a mark's or another number's, the first and the
+ *   no number's box meets a mark's or comes within 2 font pixels of another
+ *   number's, the first and the
  *   last are shown, the text is drawn only in the boxes, the marks whole;
  * - the indexed PNG decodes (render/hol_png.c and zlib) to the same pixels.
  */
@@ -308,8 +309,11 @@ static void test_numbers_beside_the_marks(void **state)
             for (int j = 0; j < nm; j++)
                 if (meets(&l[i].box, &m[j]))
                     fail_msg("size %d: step %ld's number meets mark %d", size, l[i].step, j);
+            int g = size >= 400 ? 4 : 2; /* 2 font pixels apart */
+            report_box near = {l[i].box.x0 - g, l[i].box.y0 - g, l[i].box.x1 + g,
+                               l[i].box.y1 + g};
             for (int j = 0; j < i; j++)
-                if (meets(&l[i].box, &l[j].box))
+                if (meets(&near, &l[j].box))
                     fail_msg("size %d: steps %ld and %ld's numbers meet", size, l[i].step,
                              l[j].step);
         }

@@ -715,7 +715,8 @@ static int numbered_steps(long n, long out[REPORT_LABELS_MAX])
 
 /* A free place for a number w x h pixels (its halo included) near (x, y):
  * the first of 8 directions (up right first) at 3 distances whose box lies
- * in the view above the legend and meets no mark and no number placed. */
+ * in the view above the legend and meets no mark and no number placed (nor
+ * comes within 2 font pixels of one). */
 static int label_place(const canvas *c, const report_picture *p, double x, double y, int w,
                        int h, const report_label *done, int ndone, report_box *out)
 {
@@ -731,8 +732,9 @@ static int label_place(const canvas *c, const report_picture *p, double x, doubl
                                                                           : y - h / 2.0);
             report_box b = {x0, y0, x0 + w, y0 + h};
             int free = b.x0 >= 0 && b.y0 >= 0 && b.x1 <= c->size && b.y1 <= bottom;
-            for (int i = 0; free && i < ndone; i++)
-                free = !box_meets(&b, &done[i].box);
+            report_box apart = {b.x0 - 2 * k, b.y0 - 2 * k, b.x1 + 2 * k, b.y1 + 2 * k};
+            for (int i = 0; free && i < ndone; i++) /* a gap between numbers: "14 2", not "142" */
+                free = !box_meets(&apart, &done[i].box);
             double mx[2], rad;
             for (int i = 0; free && i < mark_count(p); i++)
                 if (!mark_at(c, p, i, mx, &rad)) {

@@ -42,7 +42,7 @@
  *   each beside the tile it reached, in the first of 8 directions (up right
  *   first) at 3 distances where its box (the glyphs and the halo) lies in
  *   the view above the legend and meets no mark's box and no number placed
- *   before; a number with no such place is left out (so a tile revisited
+ *   before (nor comes within 2 font pixels of one); a number with no such place is left out (so a tile revisited
  *   has its numbers around it, none over another). report_mark_boxes gives
  *   the marks' boxes: the squares around the start's disk, the objectives'
  *   and the end ring, a pixel wider. Both for tests; report_draw draws the
