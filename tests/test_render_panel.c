@@ -34,6 +34,7 @@
 #include "../core/hol_app.h"
 #include "../platform/image/hol_png_file.h"
 #include "../render/hol_app_frame.h"
+#include "panel_view.h"
 #include "render_fixture.h"
 
 static int W = 480, H = 480; /* HOL_PANEL_SIZE=N: N x N an eye */
@@ -52,37 +53,18 @@ typedef struct eye_shot {
     box all, text, map;
 } eye_shot;
 
-static const char *lines[] = {"FIND THE FLAG", "STEPS 3", "TIME 0:42"};
+static const char *const lines[] = {"FIND THE FLAG", "STEPS 3", "TIME 0:42"};
 static const char *hint = "TRIGGER: NEXT LEVEL, B: AGAIN";
 
+/* The shared view (tests/panel_view.h), the eyes 64 mm apart, and a flag
+ * two tiles ahead, on the map and in the world, with its cues. */
 static void make_view(hol_app_view *v, int map_place)
 {
-    memset(v, 0, sizeof *v);
-    v->state = HOL_APP_PLAYING;
-    v->user = hol_room_start();
-    v->cell_m = 1;
-    v->head[0] = 1.5;
-    v->head[1] = 1.6;
-    v->head[2] = 1.62;
-    v->head_quat[3] = 1;
-    for (int e = 0; e < 2; e++) {
-        memcpy(v->eye[e], v->head, sizeof v->head);
-        v->eye[e][0] += e ? 0.032 : -0.032;
-        v->eye_user[e] = v->user;
-    }
-    for (int i = 0; i < 3; i++)
-        snprintf(v->hud.lines[i], sizeof v->hud.lines[i], "%s", lines[i]);
-    v->hud.nlines = 3;
-    snprintf(v->hud.hint, sizeof v->hud.hint, "%s", hint);
-    v->map.place = map_place;
-    /* a flag two tiles ahead, on the map and in the world */
-    assert_int_equal(hol_tile_parse("Nf", 2, &v->map.objectives[0]), HOL_OK);
-    v->map.nobjectives = 1;
+    panel_view(v, map_place, 0.064, lines, 3, hint);
     v->objects[0].tile = v->map.objectives[0];
     v->objects[0].kind = HOL_APP_OBJ_FLAG;
     v->nobjects = 1;
     v->map.cues = HOL_CUE_POLES | HOL_CUE_HOT_COLD;
-    hol_panel_follow(&v->panel, v->head, v->yaw_deg, 0);
 }
 
 static void bound(box *b, int x, int y)

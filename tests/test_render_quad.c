@@ -24,6 +24,7 @@
 
 #include "../core/hol_app.h"
 #include "../render/hol_app_frame.h"
+#include "panel_view.h"
 #include "render_fixture.h"
 
 #define K 4 /* texels a font pixel */
@@ -32,26 +33,8 @@
 
 static void make_view(hol_app_view *v, int map_place)
 {
-    memset(v, 0, sizeof *v);
-    v->state = HOL_APP_PLAYING;
-    v->user = hol_room_start();
-    v->cell_m = 1;
-    v->head[0] = 1.5;
-    v->head[1] = 1.6;
-    v->head[2] = 1.62;
-    v->head_quat[3] = 1;
-    for (int e = 0; e < 2; e++) {
-        memcpy(v->eye[e], v->head, sizeof v->head);
-        v->eye_user[e] = v->user;
-    }
-    snprintf(v->hud.lines[0], sizeof v->hud.lines[0], "FIND THE FLAG");
-    snprintf(v->hud.lines[1], sizeof v->hud.lines[1], "STEPS 3");
-    v->hud.nlines = 2;
-    snprintf(v->hud.hint, sizeof v->hud.hint, "MENU: MENU");
-    v->map.place = map_place;
-    assert_int_equal(hol_tile_parse("Nf", 2, &v->map.objectives[0]), HOL_OK);
-    v->map.nobjectives = 1;
-    hol_panel_follow(&v->panel, v->head, v->yaw_deg, 0);
+    static const char *const lines[] = {"FIND THE FLAG", "STEPS 3"};
+    panel_view(v, map_place, 0, lines, 2, "MENU: MENU");
 }
 
 static void eye_desc(const hol_app_view *v, hol_frame_desc *fd)

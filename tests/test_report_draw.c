@@ -9,6 +9,10 @@
  * - pixels: the first step in the ramp's first colour, the last in its
  *   last, the start green, an edge walked back drawn beside the first pass,
  *   the legend's ramp and marks in the bottom band;
+ * - the step numbers of a walk back and forth through the start and a goal:
+ *   no number's box meets a mark's or comes within 2 font pixels of another
+ *   number's, the first and the
+ *   last are shown, the text is drawn only in the boxes, the marks whole;
  * - the indexed PNG decodes (render/hol_png.c and zlib) to the same pixels.
  */
 #include <complex.h>
@@ -241,6 +245,102 @@ static void test_walked_back_beside(void **state)
     assert_true(back > 50);
 }
 
+static int meets(const report_box *a, const report_box *b)
+{
+    return a->x0 < b->x1 && b->x0 < a->x1 && a->y0 < b->y1 && b->y0 < a->y1;
+}
+
+/* The pixels within rad - 1 of the tile's centre are all of colour rgb (a
+ * mark no number covers). */
+static void assert_disk(const report_view *v, hol_room s, hol_tile t, int size, double rad,
+                        uint32_t rgb)
+{
+    double o[3], x[2];
+    uint8_t plte[768];
+    report_palette(plte);
+    assert_int_equal(hol_hyper_pos(s.tile, s.orient, t, o, NULL, NULL), HOL_OK);
+    report_view_px(v, 0, size, o, x);
+    for (int j = (int)(x[1] - rad); j <= (int)(x[1] + rad); j++)
+        for (int i = (int)(x[0] - rad); i <= (int)(x[0] + rad); i++) {
+            double dx = i + 0.5 - x[0], dy = j + 0.5 - x[1];
+            if (dx * dx + dy * dy > (rad - 1) * (rad - 1))
+                continue;
+            const uint8_t *c = plte + 3 * px[(size_t)j * (size_t)size + (size_t)i];
+            if (((uint32_t)c[0] << 16 | (uint32_t)c[1] << 8 | c[2]) != rgb)
+                fail_msg("a mark's pixel %d,%d is %02x%02x%02x, not %06x", i, j, c[0], c[1],
+                         c[2], rgb);
+        }
+}
+
+/* Back and forth through the start and a goal: every number's box lies in
+ * the view, meets no mark's box and no other number's; the first and the
+ * last are there; the drawn text is only in the boxes; the marks' disks
+ * stay whole. At 480 (font pixels 2 x 2) and 160 (1 x 1). */
+static void test_numbers_beside_the_marks(void **state)
+{
+    (void)state;
+    hol_room s = start();
+    hol_tile w[13] = {tile("N"),  s.tile, tile("E"), s.tile, tile("N"), s.tile, tile("W"),
+                      s.tile,     tile("S"), s.tile, tile("N"), tile("Nf"), tile("N")};
+    hol_tile goals[2] = {tile("Nf"), tile("E")};
+    report_picture p = {.start = s, .walked = w, .nwalked = 13, .goals = goals, .ngoals = 2};
+    static const int sizes[2] = {480, 160};
+    for (int z = 0; z < 2; z++) {
+        int size = sizes[z], bottom = size - report_legend_height(size);
+        report_view v;
+        report_label l[REPORT_LABELS_MAX];
+        report_box m[8];
+        assert_int_equal(report_view_fit(&p, &v), HOL_OK);
+        int nl = report_step_labels(&p, &v, size, l), nm = report_mark_boxes(&p, &v, size, m, 8);
+        assert_int_equal(nm, 4); /* the start, two goals, the end */
+        /* the marks' boxes hold their disks: the start's radius size/80 + 2 */
+        double o[3], x[2];
+        assert_int_equal(hol_hyper_pos(s.tile, s.orient, s.tile, o, NULL, NULL), HOL_OK);
+        report_view_px(&v, 0, size, o, x);
+        double rs = size / 80.0 + 2;
+        assert_true(m[0].x0 <= x[0] - rs && m[0].x1 >= x[0] + rs && m[0].y0 <= x[1] - rs &&
+                    m[0].y1 >= x[1] + rs);
+        int first = 0, last = 0;
+        for (int i = 0; i < nl; i++) {
+            first |= l[i].step == 1;
+            last |= l[i].step == 13;
+            assert_true(l[i].box.x0 >= 0 && l[i].box.y0 >= 0 && l[i].box.x1 <= size &&
+                        l[i].box.y1 <= bottom);
+            for (int j = 0; j < nm; j++)
+                if (meets(&l[i].box, &m[j]))
+                    fail_msg("size %d: step %ld's number meets mark %d", size, l[i].step, j);
+            int g = size >= 400 ? 4 : 2; /* 2 font pixels apart */
+            report_box near = {l[i].box.x0 - g, l[i].box.y0 - g, l[i].box.x1 + g,
+                               l[i].box.y1 + g};
+            for (int j = 0; j < i; j++)
+                if (meets(&near, &l[j].box))
+                    fail_msg("size %d: steps %ld and %ld's numbers meet", size, l[i].step,
+                             l[j].step);
+        }
+        assert_true(first && last);
+        assert_true(nl >= 8); /* most of the 13 find a place: around the start */
+        /* the picture: dark text pixels only in the numbers' boxes */
+        assert_int_equal(report_draw(&p, px, size), HOL_OK);
+        uint8_t plte[768];
+        report_palette(plte);
+        for (int y = 0; y < bottom; y++)
+            for (int i = 0; i < size; i++) {
+                const uint8_t *c = plte + 3 * px[(size_t)y * (size_t)size + (size_t)i];
+                if (c[0] != 0x20 || c[1] != 0x20 || c[2] != 0x20)
+                    continue;
+                int in = 0;
+                for (int j = 0; !in && j < nl; j++)
+                    in = i >= l[j].box.x0 && i < l[j].box.x1 && y >= l[j].box.y0 &&
+                         y < l[j].box.y1;
+                if (!in)
+                    fail_msg("size %d: text at %d,%d outside the numbers' boxes", size, i, y);
+            }
+        assert_disk(&v, s, s.tile, size, size / 80.0 + 2, 0x1e9b3c);
+        assert_disk(&v, s, goals[0], size, size / 60.0 + 2, 0xd21e1e);
+        assert_disk(&v, s, goals[1], size, size / 60.0 + 2, 0xd21e1e);
+    }
+}
+
 /* The indexed PNG: zlib and render/hol_png.c decode it to the same pixels. */
 static void test_indexed_png_round_trip(void **state)
 {
@@ -283,6 +383,7 @@ int main(void)
         cmocka_unit_test(test_long_walk_not_in_the_rim),
         cmocka_unit_test(test_pixels_of_a_small_walk),
         cmocka_unit_test(test_walked_back_beside),
+        cmocka_unit_test(test_numbers_beside_the_marks),
         cmocka_unit_test(test_indexed_png_round_trip),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -627,51 +627,174 @@ static void text_halo(canvas *c, const char *s, int x, int y, int k, uint32_t rg
     text(c, s, x, y, k, rgb);
 }
 
-/* Every few steps' number beside the tile it reached: 1, 2, 5, 10, 20, 50
- * ... steps apart, at most 12 to 24 numbers; the last step's too. */
-static void step_numbers(canvas *c, const report_picture *p)
-{
-    static const int digit[3] = {1, 2, 5};
-    long every = 1;
-    for (long base = 1, m = 0; p->nwalked / every > 12; m++, base *= m % 3 ? 1 : 10)
-        every = digit[m % 3] * base;
-    int k = c->size >= 400 ? 2 : 1;
-    for (long i = 0; i < p->nwalked; i++) {
-        if ((i + 1) % every && i + 1 != p->nwalked)
-            continue;
-        if (i + 1 != p->nwalked && p->nwalked - (i + 1) < every / 2)
-            continue; /* too near the last */
-        double q[3], x[2];
-        char num[24];
-        if (centre(c, p->walked[i], q))
-            continue;
-        to_px(c, q, x);
-        snprintf(num, sizeof num, "%ld", i + 1);
-        text_halo(c, num, (int)lround(x[0]) + 4 * k, (int)lround(x[1]) - 9 * k, k, RGB_TEXT);
-    }
-}
-
 static uint32_t goal_rgb(const report_picture *p, int i)
 {
     return p->chest_last && i == p->ngoals - 1 ? RGB_CHEST : p->chest_last ? RGB_KEY : RGB_GOAL;
 }
 
+/* The marks' radii (pixels) at size. */
+static double goal_radius(int size)
+{
+    return size / 60.0 + 2;
+}
+
+static double start_radius(int size)
+{
+    return size / 80.0 + 2;
+}
+
+static double end_radius(int size)
+{
+    return size / 50.0 + 3;
+}
+
+static int mark_count(const report_picture *p)
+{
+    return 1 + p->ngoals + (p->nwalked > 0);
+}
+
+/* Mark i's centre and radius: 0 the start, then the objectives, then the
+ * end ring; 0, or -1 when its tile has no place. */
+static int mark_at(const canvas *c, const report_picture *p, int i, double x[2], double *rad)
+{
+    double q[3];
+    hol_tile t = i == 0 ? p->start.tile : i <= p->ngoals ? p->goals[i - 1]
+                                                         : p->walked[p->nwalked - 1];
+    if (centre(c, t, q))
+        return -1;
+    to_px(c, q, x);
+    *rad = i == 0 ? start_radius(c->size) : i <= p->ngoals ? goal_radius(c->size)
+                                                           : end_radius(c->size);
+    return 0;
+}
+
 static void marks(canvas *c, const report_picture *p)
 {
-    double q[3], x[2];
-    for (int i = 0; i < p->ngoals; i++)
-        if (!centre(c, p->goals[i], q)) {
-            to_px(c, q, x);
-            dot(c, x[0], x[1], c->size / 60.0 + 2, goal_rgb(p, i));
+    double x[2], rad;
+    for (int i = 1; i <= p->ngoals; i++)
+        if (!mark_at(c, p, i, x, &rad))
+            dot(c, x[0], x[1], rad, goal_rgb(p, i - 1));
+    if (!mark_at(c, p, 0, x, &rad))
+        dot(c, x[0], x[1], rad, RGB_START);
+    if (p->nwalked > 0 && !mark_at(c, p, 1 + p->ngoals, x, &rad))
+        ring(c, x[0], x[1], rad, 2, REPORT_RGB_RAMP1);
+}
+
+/* The square of pixels around a mark (its disk or ring, and a pixel). */
+static report_box mark_box(const double x[2], double rad)
+{
+    return (report_box){(int)floor(x[0] - rad) - 1, (int)floor(x[1] - rad) - 1,
+                        (int)ceil(x[0] + rad) + 1, (int)ceil(x[1] + rad) + 1};
+}
+
+static int box_meets(const report_box *a, const report_box *b)
+{
+    return a->x0 < b->x1 && b->x0 < a->x1 && a->y0 < b->y1 && b->y0 < a->y1;
+}
+
+/* The steps numbered, in the order they are placed: the last, the first,
+ * then every few (1, 2, 5, 10, 20, 50 ... steps apart, at most 12), none
+ * nearer the first or the last than half that; how many. */
+static int numbered_steps(long n, long out[REPORT_LABELS_MAX])
+{
+    static const int digit[3] = {1, 2, 5};
+    long every = 1;
+    int k = 0;
+    for (long base = 1, m = 0; n / every > 12; m++, base *= m % 3 ? 1 : 10)
+        every = digit[m % 3] * base;
+    if (n < 1)
+        return 0;
+    out[k++] = n;
+    if (n > 1)
+        out[k++] = 1;
+    for (long s = every; s < n && k < REPORT_LABELS_MAX; s += every)
+        if (s > 1 && s - 1 >= every / 2 && n - s >= every / 2)
+            out[k++] = s;
+    return k;
+}
+
+/* A free place for a number w x h pixels (its halo included) near (x, y):
+ * the first of 8 directions (up right first) at 3 distances whose box lies
+ * in the view above the legend and meets no mark and no number placed (nor
+ * comes within 2 font pixels of one). */
+static int label_place(const canvas *c, const report_picture *p, double x, double y, int w,
+                       int h, const report_label *done, int ndone, report_box *out)
+{
+    static const int dir[8][2] = {{1, -1}, {-1, -1}, {1, 1}, {-1, 1},
+                                  {1, 0},  {-1, 0},  {0, -1}, {0, 1}};
+    int k = c->size >= 400 ? 2 : 1, bottom = c->size - report_legend_height(c->size);
+    for (int r = 0; r < 3; r++)
+        for (int d = 0; d < 8; d++) {
+            double gap = (2 + 5 * r) * k + 2;
+            int x0 = (int)lround(dir[d][0] > 0 ? x + gap : dir[d][0] < 0 ? x - gap - w
+                                                                          : x - w / 2.0);
+            int y0 = (int)lround(dir[d][1] > 0 ? y + gap : dir[d][1] < 0 ? y - gap - h
+                                                                          : y - h / 2.0);
+            report_box b = {x0, y0, x0 + w, y0 + h};
+            int free = b.x0 >= 0 && b.y0 >= 0 && b.x1 <= c->size && b.y1 <= bottom;
+            report_box apart = {b.x0 - 2 * k, b.y0 - 2 * k, b.x1 + 2 * k, b.y1 + 2 * k};
+            for (int i = 0; free && i < ndone; i++) /* a gap between numbers: "14 2", not "142" */
+                free = !box_meets(&apart, &done[i].box);
+            double mx[2], rad;
+            for (int i = 0; free && i < mark_count(p); i++)
+                if (!mark_at(c, p, i, mx, &rad)) {
+                    report_box m = mark_box(mx, rad);
+                    free = !box_meets(&b, &m);
+                }
+            if (free) {
+                *out = b;
+                return 1;
+            }
         }
-    if (!centre(c, p->start.tile, q)) {
+    return 0;
+}
+
+static int layout(const canvas *c, const report_picture *p, report_label out[REPORT_LABELS_MAX])
+{
+    long steps[REPORT_LABELS_MAX];
+    int k = c->size >= 400 ? 2 : 1, n = numbered_steps(p->nwalked, steps), m = 0;
+    for (int i = 0; i < n; i++) {
+        double q[3], x[2];
+        report_label *l = &out[m];
+        if (centre(c, p->walked[steps[i] - 1], q))
+            continue;
         to_px(c, q, x);
-        dot(c, x[0], x[1], c->size / 80.0 + 2, RGB_START);
+        l->step = steps[i];
+        snprintf(l->text, sizeof l->text, "%ld", steps[i]);
+        int w = 6 * k * (int)strlen(l->text) + k, h = 9 * k; /* the glyphs and the halo */
+        m += label_place(c, p, x[0], x[1], w, h, out, m, &l->box);
     }
-    if (p->nwalked > 0 && !centre(c, p->walked[p->nwalked - 1], q)) {
-        to_px(c, q, x);
-        ring(c, x[0], x[1], c->size / 50.0 + 3, 2, REPORT_RGB_RAMP1);
-    }
+    return m;
+}
+
+int report_mark_boxes(const report_picture *p, const report_view *v, int size,
+                      report_box *out, int max)
+{
+    canvas c;
+    double x[2], rad;
+    int n = 0;
+    canvas_init(&c, NULL, size, v, hol_tile_q(p->start.tile) == 4, p->start);
+    for (int i = 0; i < mark_count(p); i++)
+        if (!mark_at(&c, p, i, x, &rad) && n < max)
+            out[n++] = mark_box(x, rad);
+    return n;
+}
+
+int report_step_labels(const report_picture *p, const report_view *v, int size,
+                       report_label out[REPORT_LABELS_MAX])
+{
+    canvas c;
+    canvas_init(&c, NULL, size, v, hol_tile_q(p->start.tile) == 4, p->start);
+    return layout(&c, p, out);
+}
+
+/* The numbers where layout placed them: over the lines, beside the marks. */
+static void step_numbers(canvas *c, const report_picture *p)
+{
+    report_label l[REPORT_LABELS_MAX];
+    int k = c->size >= 400 ? 2 : 1, n = layout(c, p, l);
+    for (int i = 0; i < n; i++)
+        text_halo(c, l[i].text, l[i].box.x0 + k, l[i].box.y0 + k, k, RGB_TEXT);
 }
 
 /* A legend entry: its mark, then its name; the x after it. */

@@ -26,10 +26,9 @@
  *   REPORT_RAMP_LEVELS colours; an edge walked again is drawn beside the
  *   earlier passes (offset to the right of its direction, a line's width
  *   and a gap per earlier pass; the first REPORT_EDGE_SLOTS distinct edges
- *   of a walk are tracked); the number of every few steps (1, 2, 5, 10, 20,
- *   ... so that at most 12 to 24 are shown) beside the tile it reached; the
- *   start (green), the objectives (red; keys gold, the chest brown), the
- *   walk's last tile (a ring of the ramp's end). The bottom
+ *   of a walk are tracked); the start (green), the objectives (red; keys
+ *   gold, the chest brown), the walk's last tile (a ring of the ramp's
+ *   end); the step numbers where report_step_labels places them. The bottom
  *   report_legend_height(size) rows are the legend: the ramp with its first
  *   and last step numbers, and the marks and lines named. Colours are exact
  *   (no blending) so tests can count them.
@@ -37,6 +36,17 @@
  *   64..2048. No allocation. After a signal (cli_caught_signal) a path
  *   stops within 1,024 tiles and report_draw gives HOL_EBUDGET (a walk of a
  *   million steps takes seconds to draw).
+ * - report_step_labels places the step numbers (dark, in a white halo): the
+ *   last step's and the first's, then every few steps' (1, 2, 5, 10, 20, ...
+ *   apart, at most 12; none nearer the first or the last than half that),
+ *   each beside the tile it reached, in the first of 8 directions (up right
+ *   first) at 3 distances where its box (the glyphs and the halo) lies in
+ *   the view above the legend and meets no mark's box and no number placed
+ *   before (nor comes within 2 font pixels of one); a number with no such place is left out (so a tile revisited
+ *   has its numbers around it, none over another). report_mark_boxes gives
+ *   the marks' boxes: the squares around the start's disk, the objectives'
+ *   and the end ring, a pixel wider. Both for tests; report_draw draws the
+ *   same numbers.
  * - report_draw_background draws the view's disk and edges alone for a
  *   hyperbolic {4,q} (q 5..8) at a zoom: given as background (same size, q
  *   and zoom), report_draw copies it instead of drawing them again (many
@@ -80,11 +90,29 @@ typedef struct report_view {
     double flat[3];  /* {4,4}: the centre x, y and the half-width shown */
 } report_view;
 
+typedef struct report_box { /* pixels x0 <= x < x1, y0 <= y < y1 */
+    int x0, y0, x1, y1;
+} report_box;
+
+#define REPORT_LABELS_MAX 32
+
+typedef struct report_label {
+    long step;      /* 1: the first step */
+    char text[24];  /* its number */
+    report_box box; /* the glyphs and their halo */
+} report_label;
+
 hol_err report_view_fit(const report_picture *p, report_view *out);
 /* A start-frame point to pixels of a size x size picture of view v. */
 void report_view_px(const report_view *v, int flat, int size, const double p[3],
                     double out[2]);
 int report_legend_height(int size);
+/* The numbers' places in a size x size picture of view v: how many. */
+int report_step_labels(const report_picture *p, const report_view *v, int size,
+                       report_label out[REPORT_LABELS_MAX]);
+/* The marks' boxes (the start, the objectives, the end): how many (<= max). */
+int report_mark_boxes(const report_picture *p, const report_view *v, int size,
+                      report_box *out, int max);
 hol_err report_draw(const report_picture *p, uint8_t *px, int size);
 hol_err report_draw_background(int q, int zoom, uint8_t *px, int size);
 /* The pictures' colours (3 bytes each, plte: 768 bytes): how many. */

@@ -1,6 +1,8 @@
 /* report_stats_html.c - the page's statistics section (report_stats.h):
  * the means table with SD, 95 % CI and n, the learning curves and the
  * steps-against-optimum plot as inline SVG, the per-participant table. */
+#include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "report_stats_impl.h"
@@ -208,8 +210,115 @@ static void learning_svg(FILE *f, const report_run *r, int *used, long *nrange)
     fputs("</svg>\n", f);
 }
 
+/* A point of the steps-against-optimum plot: the attempts of one condition
+ * with the same optimum and steps (n of them). */
+typedef struct rs_pt {
+    long opt, steps;
+    int cond, n;
+} rs_pt;
+
+static int by_point(const void *pa, const void *pb)
+{
+    const rs_pt *a = pa, *b = pb;
+    if (a->opt != b->opt)
+        return a->opt < b->opt ? -1 : 1;
+    if (a->steps != b->steps)
+        return a->steps < b->steps ? -1 : 1;
+    return (a->cond > b->cond) - (a->cond < b->cond);
+}
+
+#define RS_R1 4.0    /* the radius of a point of one attempt (px) */
+#define RS_RMAX 18.0 /* the largest point's radius, at most */
+#define RS_RMIN 1.5  /* the smallest drawn (with thousands in the largest) */
+
+/* The plot's points, one per condition, optimum and steps, in pts (sorted
+ * by optimum, steps, condition); their number. */
+static int scatter_points(const report_run *r, rs_pt *pts, int *used, long *nrange)
+{
+    const report_stats *s = r->stats;
+    int n = 0, m = 0;
+    for (int i = 0; i < r->natt; i++) {
+        const hol_report_attempt *a = &r->att[i].a;
+        if (!rs_included(r, i) || a->optimum < 0)
+            continue;
+        int c = s->att_cond[i];
+        used[c] = 1;
+        nrange[2 * c] = ++nrange[2 * c + 1];
+        pts[n++] = (rs_pt){a->optimum, a->steps, c, 1};
+    }
+    qsort(pts, (size_t)n, sizeof *pts, by_point);
+    for (int i = 0; i < n; i++)
+        if (m && !by_point(&pts[m - 1], &pts[i]))
+            pts[m - 1].n++;
+        else
+            pts[m++] = pts[i];
+    return m;
+}
+
+/* A point's radius: its area n times one attempt's (r1 chosen so that the
+ * largest point stays within RS_RMAX). */
+static double pt_radius(double r1, int n)
+{
+    double rad = r1 * sqrt((double)n);
+    return rad < RS_RMIN ? RS_RMIN : rad;
+}
+
+/* The count of a point: inside its circle when it fits, else beside it. */
+static void pt_count(FILE *f, double x, double y, double rad, int n)
+{
+    int digits = snprintf(NULL, 0, "%d", n);
+    if (2 * rad >= 6.5 * digits + 2)
+        fprintf(f, "<text class=\"count\" x=\"%.1f\" y=\"%.1f\" text-anchor=\"middle\">%d"
+                   "</text>", x, y + 4, n);
+    else
+        fprintf(f, "<text class=\"count\" x=\"%.1f\" y=\"%.1f\">%d</text>", x + rad + 2, y + 4,
+                n);
+}
+
+/* The points at one place (pts[0..k-1]: the same optimum and steps), side
+ * by side in the conditions' order, centred on the place. */
+static void place_points(FILE *f, const report_run *r, const rs_pt *pts, int k, double x,
+                         double y, double r1)
+{
+    double width = 2.0 * (k - 1);
+    for (int j = 0; j < k; j++)
+        width += 2 * pt_radius(r1, pts[j].n);
+    double at = x - width / 2;
+    for (int j = 0; j < k; j++) {
+        double rad = pt_radius(r1, pts[j].n);
+        const char *col = palette[pts[j].cond % 8];
+        fprintf(f, "<g class=\"pt\"><circle cx=\"%.1f\" cy=\"%.1f\" r=\"%.2f\" fill=\"%s\" "
+                   "fill-opacity=\"0.6\" stroke=\"%s\"><title>", at + rad, y, rad, col, col);
+        cond_name(f, &r->stats->cond[pts[j].cond]);
+        fprintf(f, ": optimum %ld, steps %ld, %d attempt%s</title></circle>", pts[j].opt,
+                pts[j].steps, pts[j].n, pts[j].n == 1 ? "" : "s");
+        if (pts[j].n > 1)
+            pt_count(f, at + rad, y, rad, pts[j].n);
+        fputs("</g>\n", f);
+        at += 2 * rad + 2;
+    }
+}
+
+/* The legend's key to the points' size: one attempt and the most at a
+ * point, from y down. */
+static void size_key(FILE *f, int x, int y, double r1, int nmax)
+{
+    int keys[2] = {1, nmax};
+    fprintf(f, "<text x=\"%d\" y=\"%d\">circle area: attempts</text>\n", x, y + 11);
+    y += 16;
+    for (int k = 0; k < (nmax > 1 ? 2 : 1); k++) {
+        double rad = pt_radius(r1, keys[k]), big = pt_radius(r1, nmax);
+        fprintf(f, "<g class=\"size-key\"><circle cx=\"%.1f\" cy=\"%.1f\" r=\"%.2f\" "
+                   "fill=\"#888\" fill-opacity=\"0.6\" stroke=\"#888\"/><text x=\"%.1f\" "
+                   "y=\"%.1f\">%d attempt%s</text></g>\n", x + big, y + big, rad,
+                x + 2 * big + 6, y + big + 4, keys[k], keys[k] == 1 ? "" : "s");
+        y += (int)ceil(2 * big) + 4;
+    }
+}
+
 static void scatter_svg(FILE *f, const report_run *r, int *used, long *nrange)
 {
+    static rs_pt pts[REPORT_MAX_ATTEMPTS + 2];
     const report_stats *s = r->stats;
     double maxv = 1;
     for (int i = 0; i < r->natt; i++)
@@ -220,7 +329,11 @@ static void scatter_svg(FILE *f, const report_run *r, int *used, long *nrange)
         }
     int w = PW - PL - PR, h = PH - PB - 20;
     fputs("<h3>Steps against optimum</h3>\n<p>Each completed scored attempt (practice left "
-          "out); on the grey line steps = optimum; n per condition in the legend.</p>\n", f);
+          "out); on the grey line steps = optimum; n per condition in the legend. The "
+          "attempts of a condition with the same optimum and steps are one circle, its area "
+          "their number (written in it, or beside it when it does not fit; each circle's "
+          "numbers in its tooltip); the conditions of one place side by side, in the "
+          "legend's order.</p>\n", f);
     fprintf(f, "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%d\" height=\"%d\" "
                "font-family=\"sans-serif\" font-size=\"11\" role=\"img\" "
                "aria-label=\"steps against optimum\">\n", PW, PH);
@@ -229,18 +342,19 @@ static void scatter_svg(FILE *f, const report_run *r, int *used, long *nrange)
             PL + w);
     memset(used, 0, sizeof *used * (size_t)s->ncond);
     memset(nrange, 0, sizeof *nrange * 2 * (size_t)s->ncond);
-    for (int i = 0; i < r->natt; i++) {
-        const hol_report_attempt *a = &r->att[i].a;
-        if (!rs_included(r, i) || a->optimum < 0)
-            continue;
-        int c = s->att_cond[i];
-        used[c] = 1;
-        nrange[2 * c] = ++nrange[2 * c + 1];
-        fprintf(f, "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"3\" fill=\"%s\" fill-opacity=\"0.6\"/>\n",
-                PL + (double)a->optimum / maxv * w, 20 + h - (double)a->steps / maxv * h,
-                palette[c % 8]);
+    int npts = scatter_points(r, pts, used, nrange), nmax = 1;
+    for (int i = 0; i < npts; i++)
+        nmax = pts[i].n > nmax ? pts[i].n : nmax;
+    double r1 = fmin(RS_R1, RS_RMAX / sqrt((double)nmax));
+    for (int i = 0, j; i < npts; i = j) {
+        for (j = i + 1; j < npts && pts[j].opt == pts[i].opt && pts[j].steps == pts[i].steps;)
+            j++;
+        place_points(f, r, pts + i, j - i, PL + (double)pts[i].opt / maxv * w,
+                     20 + h - (double)pts[i].steps / maxv * h, r1);
     }
-    legend(f, r, PW - PR + 10, 24, used, nrange);
+    int k = legend(f, r, PW - PR + 10, 24, used, nrange);
+    if (npts)
+        size_key(f, PW - PR + 10, 24 + 16 * k + 4, r1, nmax);
     fputs("</svg>\n", f);
 }
 
