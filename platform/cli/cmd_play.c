@@ -378,6 +378,8 @@ static int play_prepare(play_ctx *c)
     hol_rec_meta meta;
     hol_sink_posix_meta(&meta, c->o.participant);
     snprintf(meta.study, sizeof meta.study, "%s", c->study);
+    if (play_env_meta(c->cmd, &c->o.env, c->o.study, &meta))
+        return CLI_EXIT_FAIL;
     st = play_session_open(c->cmd, &c->out, c->levels, c->nlevels, &meta, c->o.append, &c->s);
     if (st)
         return st;

@@ -469,7 +469,8 @@ int cli_cmd_xr(int argc, char **argv)
     if (!st) {
         hol_sink_posix_meta(&c.meta, o.participant);
         snprintf(c.meta.study, sizeof c.meta.study, "%s", study);
-        st = xr_run(&o, &c, script, nscript);
+        st = play_env_meta(cmd, &o.env, o.study, &c.meta) ? CLI_EXIT_FAIL
+                                                           : xr_run(&o, &c, script, nscript);
     }
     hol_audio_close(c.au);
     int end = play_session_end(cmd, c.s, cli_caught_signal() != 0);
