@@ -55,10 +55,10 @@ mkdir old
   echo '20260131T140509Z-5f3a9c01,P09,2026-01-31T14:05:09Z,0.1.0,1,,,,f,00,flag,5,15,"4,5",3x3,1,0.0000,1,8,1.0000,open'
 } >old/summary.csv
 run "report old and new" 0 "$H" report old l4 --out rep
-head -1 rep/attempts.csv | grep -q ',session_no' && ok || bad "attempts.csv header: $(head -1 rep/attempts.csv)"
-COL=$(head -1 rep/attempts.csv | tr , '\n' | grep -nx session_no | cut -d: -f1)
-[ "$(sed -n 2p rep/attempts.csv | cut -d, -f"${COL:-1}")" = "" ] &&
-  [ "$(sed -n 3p rep/attempts.csv | cut -d, -f"${COL:-1}")" = 2 ] && ok ||
+head -1 rep/attempts.csv | grep -q ',logdir_relative,session_no$' && ok ||
+  bad "attempts.csv header: $(head -1 rep/attempts.csv)"
+[ "$(sed -n 2p rep/attempts.csv | awk -F, '{print $NF}')" = "" ] &&
+  [ "$(sed -n 3p rep/attempts.csv | awk -F, '{print $NF}')" = 2 ] && ok ||
   bad "session_no in attempts.csv: $(cat rep/attempts.csv)"
 
 if ! command -v Xvfb >/dev/null 2>&1; then

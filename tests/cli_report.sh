@@ -45,7 +45,7 @@ ls "$T/out1" | tr '\n' ' ' >"$T/ls"
 
 # the CSV: one row per attempt, values from the summaries
 C="$T/out1/attempts.csv"
-head -1 "$C" | grep -qx 'participant,session,attempt,study,condition,position,level,mode,steps,optimum,efficiency,time,end,tiling,room,cell,logdir,picture,q,cues,minimap,logdir_relative' &&
+head -1 "$C" | grep -qx 'participant,session,attempt,study,condition,position,level,mode,steps,optimum,efficiency,time,end,tiling,room,cell,logdir,picture,q,cues,minimap,logdir_relative,session_no' &&
     ok || bad "header: $(head -1 "$C")"
 [ "$(wc -l <"$C")" = 4 ] && ok || bad "rows: $(wc -l <"$C")"
 sed -n 2p "$C" | grep -q "^P01,20260131T140509Z-00000001,1,s1,map,1,flag-a,flag,$K,$K,1.0000,[0-9.]*,done,\"4,5\",3x3,1,.*,attempt-0001.png,5,15,hud,\.\./la\$" &&
