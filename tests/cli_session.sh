@@ -172,7 +172,7 @@ kill -TERM $pid
 wait $pid
 st=$?
 [ "$st" = 143 ] && ok || bad "replay after SIGTERM: status $st, want 143"
-tail -1 "$T/term/summary.csv" | grep -q ',aborted$' && ok || bad "replay SIGTERM: $(tail -1 "$T/term/summary.csv")"
+tail -1 "$T/term/summary.csv" | grep -q ',aborted,,,$' && ok || bad "replay SIGTERM: $(tail -1 "$T/term/summary.csv")"
 ls "$T/term" | grep -q '\.live$' && bad "replay SIGTERM left live files" || ok
 
 if ! start_xvfb 211; then
@@ -204,7 +204,7 @@ ended() {
     [ "$st" = "$2" ] && ok || bad "$1: status $st, want $2 ($(cat "$T/$1/err"))"
     # a session id of its start and 8 hex digits, the start in ISO 8601 UTC
     tail -1 "$T/$1/logs/summary.csv" | grep -Eq \
-        '^[0-9]{8}T[0-9]{6}Z-[0-9a-f]{8},P01,[0-9]{4}-[0-9]{2}-[0-9]{2}T[0-9]{2}:[0-9]{2}:[0-9]{2}Z,[^,]+,1,,,,tutorial,[0-9a-f]{64},tutorial,1,15,.*,aborted$' &&
+        '^[0-9]{8}T[0-9]{6}Z-[0-9a-f]{8},P01,[0-9]{4}-[0-9]{2}-[0-9]{2}T[0-9]{2}:[0-9]{2}:[0-9]{2}Z,[^,]+,1,,,,tutorial,[0-9a-f]{64},tutorial,1,15,.*,aborted,,,$' &&
         ok || bad "$1: $(cat "$T/$1/logs/summary.csv")"
     [ -f "$T/$1/logs/steps-001.csv" ] && [ -f "$T/$1/logs/head-001.csv" ] && [ -f "$T/$1/s.rec" ] &&
         ! ls "$T/$1" "$T/$1/logs" | grep -q '\.live$' && ok || bad "$1: $(ls "$T/$1" "$T/$1/logs")"
@@ -228,7 +228,7 @@ awk -v t="${last:-0}" 'BEGIN { exit !(t + 0 >= 1.0) }' && ok ||
 [ -f "$T/kill9/s.rec.live" ] && [ ! -e "$T/kill9/s.rec" ] && ok || bad "killed: $(ls "$T/kill9")"
 run "a killed session's recording replays" 0 "$H" replay "$T/kill9/s.rec.live" \
     --log "$T/kill9/logs" --append
-grep -q ',1,,,,tutorial,.*,killed$' "$T/kill9/logs/summary.csv" && ok ||
+grep -q ',1,,,,tutorial,.*,killed,,,$' "$T/kill9/logs/summary.csv" && ok ||
     bad "kill -9: $(cat "$T/kill9/logs/summary.csv")"
 
 for s in INT:130 TERM:143 HUP:129; do
