@@ -86,6 +86,11 @@ head -1 r.rec | grep -qx 'holonomy-rec 4' && grep -qx 'session_no 3' r.rec &&
   bad "the recording's header: $(head -12 r.rec)"
 run "replay" 0 "$H" replay r.rec --log rl
 cmp -s logs/summary.csv rl/summary.csv && ok || bad "replay's summary differs: $(cat rl/summary.csv)"
+# refresh_hz: Xvfb's XRandR mode has no rate, so the present rate is
+# measured (a number with three decimals, written at the session's end
+# when it presented fewer than 60 frames)
+sed -n 2p logs/environment.csv | grep -q ',[0-9][0-9]*\.[0-9][0-9][0-9],64,48,' && ok ||
+  bad "refresh_hz: $(sed -n 2p logs/environment.csv)"
 # the meta column of environment.csv is the summary's
 E=$(sed -n 2p logs/environment.csv | sed 's/^.*,64,48,//' | sed 's/,"play --study.*//')
 case "$(sed -n 2p logs/summary.csv)" in *",$E") ok ;; *) bad "environment's meta $E" ;; esac
