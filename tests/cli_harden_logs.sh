@@ -226,8 +226,8 @@ if start_xvfb 317; then
     same_end() {
         if ! "$H" replay "$1/s.rec" --log "$1/re" >/dev/null 2>"$1/re.err"; then
             bad "$1: the replay failed: $(cat "$1/re.err")"; return; fi
-        tail -1 "$1/logs/summary.csv" | grep -q ",$2\$" || {
-            bad "$1: the play ended $(tail -1 "$1/logs/summary.csv" | sed 's/.*,//'), want $2"; return; }
+        tail -1 "$1/logs/summary.csv" | grep -q ",$2,,,\$" || {
+            bad "$1: the play ended $(tail -1 "$1/logs/summary.csv" | sed 's/,,,$//; s/.*,//'), want $2"; return; }
         cmp -s "$1/logs/summary.csv" "$1/re/summary.csv" && ok ||
             bad "$1: the replay's summary differs: $(tail -1 "$1/re/summary.csv")"
     }
