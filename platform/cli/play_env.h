@@ -34,9 +34,9 @@
 #define PLAY_ENV_OPTIONS "--session", "--meta"
 #define PLAY_ENV_USAGE                                                                   \
     "  --session N     the participant's session number, 1..999 (day 1, day 2),\n"      \
-    "                  in environment.csv (needs --log)\n"                               \
-    "  --meta KEY=VALUE  a note for environment.csv (needs --log; repeatable, up to\n"  \
-    "                  16; KEY 1..32 of a-z, 0-9, '_')\n"
+    "                  in summary.csv and environment.csv (needs --log)\n"              \
+    "  --meta KEY=VALUE  a note for summary.csv and environment.csv (needs --log;\n"    \
+    "                  repeatable, up to 16; KEY 1..32 of a-z, 0-9, '_')\n"
 
 typedef struct play_env {
     int session_no; /* 0: not given */
