@@ -165,6 +165,7 @@ typedef struct play_ctx {
     long swaps;
     double swap_first, swap_last, refresh_hz;
     char session[HOL_REC_ID_MAX];
+    char gl[160]; /* GL_RENDERER, read at the start (no GL call later) */
 } play_ctx;
 
 /* ---- options ------------------------------------------------------------------ */
@@ -392,10 +393,7 @@ static double play_refresh_hz(const hol_x11 *xw)
  * the refresh rate (c->refresh_hz). */
 static int play_write_env(play_ctx *c)
 {
-    typedef const unsigned char *(*get_string_fn)(unsigned);
-    get_string_fn gs = (get_string_fn)hol_egl_getproc("glGetString");
-    const unsigned char *gl = gs ? gs(0x1F01 /* GL_RENDERER */) : NULL;
-    play_env_host h = {"desktop", "", gl ? (const char *)gl : "",
+    play_env_host h = {"desktop", "", c->gl,
                        c->use_pad ? c->pad.info.name : "", c->refresh_hz, c->o.w, c->o.h};
     c->env_due = 0;
     return play_env_write(c->cmd, c->o.log_dir, &c->o.env, c->session, c->o.participant,
@@ -458,6 +456,10 @@ static int play_prepare(play_ctx *c)
     play_open_pad(c);
     play_open_audio(c);
     snprintf(c->session, sizeof c->session, "%s", meta.session);
+    typedef const unsigned char *(*get_string_fn)(unsigned);
+    get_string_fn gs = (get_string_fn)hol_egl_getproc("glGetString");
+    const unsigned char *gl = gs ? gs(0x1F01 /* GL_RENDERER */) : NULL;
+    snprintf(c->gl, sizeof c->gl, "%s", gl ? (const char *)gl : "");
     c->refresh_hz = play_refresh_hz(&c->xw);
     if (c->refresh_hz > 0 || !c->o.log_dir)
         return play_write_env(c);
