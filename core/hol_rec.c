@@ -260,10 +260,14 @@ static int hol__meta4_line(hol_rec_reader *r, const char *s, size_t len, hol_err
         return 0;
     int ok = r->state == HOL__META;
     if (k == 1) {
-        int n = 0, d = 0;
-        for (size_t i = 11; i < len && ok; i++, d++)
-            ok = s[i] >= '0' && s[i] <= '9' && d < 3 && (n = n * 10 + (s[i] - '0')) >= 0;
-        ok = ok && !m->session_no && n >= 1 && n <= 999 && s[11] != '0';
+        /* 1..999, no leading zero */
+        int n = 0;
+        ok = ok && len - 11 <= 3 && s[11] != '0';
+        for (size_t i = 11; i < len && ok; i++) {
+            ok = s[i] >= '0' && s[i] <= '9';
+            n = n * 10 + (s[i] - '0');
+        }
+        ok = ok && !m->session_no && n >= 1 && n <= 999;
         if (ok)
             m->session_no = n;
     } else if (k == 2) {
