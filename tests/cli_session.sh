@@ -57,7 +57,7 @@ run "a folder with other files" 0 "$H" replay "$T/opt.rec" --log "$T/other"
 # ---- the summary's metadata ------------------------------------------------------
 row=$(sed -n 2p "$T/new/summary.csv")
 sha=$(printf '%s\n' "$LEVEL" | sha256sum | cut -d' ' -f1)
-want="20260131T140509Z-5f3a9c01,P07,2026-01-31T14:05:09Z,9.9.9,1,,,,lv,$sha,flag,5,15,\"4,5\",3x3,1,0.0000,8,8,2.0000,done"
+want="20260131T140509Z-5f3a9c01,P07,2026-01-31T14:05:09Z,9.9.9,1,,,,lv,$sha,flag,5,15,\"4,5\",3x3,1,0.0000,8,8,2.0000,done,,,"
 [ "$row" = "$want" ] && ok || bad "summary row: $row, want $want"
 head -1 "$T/new/steps-001.csv" | grep -q '^session,attempt,level,t,step,col,row,dir,yaw,tile,orient,remaining,cues,visible$' &&
     ok || bad "steps columns: $(head -1 "$T/new/steps-001.csv")"
@@ -77,10 +77,10 @@ if LC_ALL=C grep -q "$(printf '\033')" "$T/out" "$T/names"/*; then bad "a raw es
 grep -q '^level a,b"c done steps 8 ' "$T/out" && ok || bad "names: $(cat "$T/out")"
 grep -q ',1,,,,\\x1b\]0;pwned\\x07,' "$T/names/summary.csv" && ok || bad "escaped name: $(cat "$T/names/summary.csv")"
 grep -q ',2,,,,"a,b""c",' "$T/names/summary.csv" && ok || bad "quoted name: $(cat "$T/names/summary.csv")"
-# every row has the header's 21 fields once quoted fields are read as one
+# every row has the header's 24 fields once quoted fields are read as one
 awk '{ n = 0; q = 0; for (i = 1; i <= length($0); i++) { c = substr($0, i, 1);
-       if (c == "\"") q = !q; else if (c == "," && !q) n++ } if (n != 20) exit 1 }' \
-    "$T/names/summary.csv" && ok || bad "summary rows without 21 fields"
+       if (c == "\"") q = !q; else if (c == "," && !q) n++ } if (n != 23) exit 1 }' \
+    "$T/names/summary.csv" && ok || bad "summary rows without 24 fields"
 
 # ---- readers: a line at a time ----------------------------------------------------
 cd "$T" || exit 1
