@@ -31,7 +31,8 @@
  *   writer writes version 2 unless the session is a study's (3) or has a
  *   session number, a study hash or meta (4), so a recording without them
  *   reads in a build that knows only version 2 (or 3).
- *   The metadata lines come before the first level, each at most once;
+ *   The metadata lines come before the first level, each at most once
+ *   (meta: once per KEY, up to HOL_REC_META_MAX);
  *   session, start and version are required from version 2, study in
  *   version 3. IDs (and condition names) are 1..63 bytes of letters,
  *   digits and '.', '_', '-' (hol_rec_id_ok); a version 1..31 bytes of
