@@ -6,6 +6,8 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "hol_text.h"
+
 enum { HOL__START, HOL__META, HOL__LEVEL, HOL__LEVELS };
 enum { HOL__SEEN_SESSION = 1, HOL__SEEN_PART = 2, HOL__SEEN_START = 4, HOL__SEEN_VERSION = 8,
        HOL__SEEN_STUDY = 16 };
@@ -43,6 +45,76 @@ int hol_rec_time_ok(const char *s)
     return 1;
 }
 
+/* ---- the meta text ---------------------------------------------------------- */
+
+static int hol__meta_key_ok(const char *k, size_t n)
+{
+    if (n < 1 || n > 32)
+        return 0;
+    for (size_t i = 0; i < n; i++)
+        if (!((k[i] >= 'a' && k[i] <= 'z') || (k[i] >= '0' && k[i] <= '9') || k[i] == '_'))
+            return 0;
+    return 1;
+}
+
+/* 1 when v (n bytes) is hol_text_escape's output for some bytes: read
+ * back (\\ and \xHH), escaped again, the same. */
+static int hol__escaped_ok(const char *v, size_t n)
+{
+    char raw[HOL_REC_META_VALUE], again[HOL_REC_META_VALUE + 1];
+    size_t m = 0;
+    if (n > HOL_REC_META_VALUE)
+        return 0;
+    for (size_t i = 0; i < n; i++) {
+        unsigned char c = (unsigned char)v[i];
+        if (c == ';' || c < 0x20 || c == 0x7f)
+            return 0;
+        if (c != '\\') {
+            raw[m++] = (char)c;
+            continue;
+        }
+        if (i + 1 < n && v[i + 1] == '\\') {
+            raw[m++] = '\\';
+            i++;
+            continue;
+        }
+        static const char hex[] = "0123456789abcdef";
+        if (i + 3 >= n || v[i + 1] != 'x')
+            return 0;
+        const char *a = memchr(hex, v[i + 2], 16), *b = memchr(hex, v[i + 3], 16);
+        if (!a || !b)
+            return 0;
+        raw[m++] = (char)((a - hex) * 16 + (b - hex));
+        i += 3;
+    }
+    size_t e = hol_text_escape(raw, m, again, sizeof again);
+    return e == n && !memcmp(again, v, n);
+}
+
+int hol_rec_meta_ok(const char *s)
+{
+    const char *items[HOL_REC_META_MAX];
+    size_t lens[HOL_REC_META_MAX];
+    int k = 0;
+    if (!*s)
+        return 1;
+    for (const char *p = s;;) {
+        const char *semi = strchr(p, ';'), *end = semi ? semi : p + strlen(p);
+        const char *eq = memchr(p, '=', (size_t)(end - p));
+        if (k == HOL_REC_META_MAX || !eq || !hol__meta_key_ok(p, (size_t)(eq - p)) ||
+            !hol__escaped_ok(eq + 1, (size_t)(end - eq - 1)))
+            return 0;
+        for (int i = 0; i < k; i++)
+            if (lens[i] == (size_t)(eq - p) && !memcmp(items[i], p, lens[i]))
+                return 0;
+        items[k] = p;
+        lens[k++] = (size_t)(eq - p);
+        if (!semi)
+            return 1;
+        p = semi + 1;
+    }
+}
+
 /* ---- writing --------------------------------------------------------------- */
 
 static void hol__emitf(hol_rec_emit fn, void *ctx, const char *fmt, ...)
@@ -67,7 +139,9 @@ void hol_rec_write_header(const hol_rec_meta *m, const hol_level *levels, int nl
     int study = m->study[0] != 0;
     for (int i = 0; i < nlevels; i++)
         study |= levels[i].condition[0] != 0;
-    hol__emitf(fn, ctx, "holonomy-rec %d\n", study ? 3 : 2);
+    /* version 4 only with a session number, a study's hash or meta */
+    int four = m->session_no > 0 || m->study_sha256[0] || m->meta[0];
+    hol__emitf(fn, ctx, "holonomy-rec %d\n", four ? 4 : study ? 3 : 2);
     hol__emitf(fn, ctx, "session %s\n", m->session);
     if (m->participant[0])
         hol__emitf(fn, ctx, "participant %s\n", m->participant);
@@ -75,6 +149,16 @@ void hol_rec_write_header(const hol_rec_meta *m, const hol_level *levels, int nl
     hol__emitf(fn, ctx, "version %s\n", m->version);
     if (study)
         hol__emitf(fn, ctx, "study %s\n", m->study[0] ? m->study : "-");
+    if (m->session_no > 0)
+        hol__emitf(fn, ctx, "session_no %d\n", m->session_no);
+    if (m->study_sha256[0])
+        hol__emitf(fn, ctx, "study_sha256 %s\n", m->study_sha256);
+    for (const char *p = m->meta; *p;) {
+        const char *semi = strchr(p, ';');
+        size_t n = semi ? (size_t)(semi - p) : strlen(p);
+        hol__emitf(fn, ctx, "meta %.*s\n", (int)n, p);
+        p += n + (semi != NULL);
+    }
     for (int i = 0; i < nlevels; i++) {
         hol__emitf(fn, ctx, "level %s\n", levels[i].name);
         if (levels[i].condition[0])
@@ -163,12 +247,62 @@ static int hol__meta_line(hol_rec_reader *r, const char *s, size_t len, hol_err 
     return 0;
 }
 
+/* "session_no N", "study_sha256 HEX", "meta KEY=VALUE" (version 4, before
+ * the first level; meta repeated, in order). 1 when the line was one. */
+static int hol__meta4_line(hol_rec_reader *r, const char *s, size_t len, hol_err *err)
+{
+    hol_rec_meta *m = &r->meta;
+    int k = len > 11 && !memcmp(s, "session_no ", 11)     ? 1
+            : len > 13 && !memcmp(s, "study_sha256 ", 13) ? 2
+            : len > 5 && !memcmp(s, "meta ", 5)           ? 3
+                                                          : 0;
+    if (!k || r->version < 4)
+        return 0;
+    int ok = r->state == HOL__META;
+    if (k == 1) {
+        /* 1..999, no leading zero */
+        int n = 0;
+        ok = ok && len - 11 <= 3 && s[11] != '0';
+        for (size_t i = 11; i < len && ok; i++) {
+            ok = s[i] >= '0' && s[i] <= '9';
+            n = n * 10 + (s[i] - '0');
+        }
+        ok = ok && !m->session_no && n >= 1 && n <= 999;
+        if (ok)
+            m->session_no = n;
+    } else if (k == 2) {
+        ok = ok && !m->study_sha256[0] && len - 13 == 64;
+        for (size_t i = 13; i < len && ok; i++)
+            ok = (s[i] >= '0' && s[i] <= '9') || (s[i] >= 'a' && s[i] <= 'f');
+        if (ok) {
+            memcpy(m->study_sha256, s + 13, 64);
+            m->study_sha256[64] = 0;
+        }
+    } else {
+        size_t have = strlen(m->meta), n = len - 5;
+        ok = ok && have + 1 + n < sizeof m->meta;
+        if (ok) {
+            if (have)
+                m->meta[have++] = ';';
+            memcpy(m->meta + have, s + 5, n);
+            m->meta[have + n] = 0;
+            ok = !memchr(s + 5, ';', n) && hol_rec_meta_ok(m->meta);
+            if (!ok)
+                m->meta[have ? have - 1 : 0] = 0;
+        }
+    }
+    *err = ok ? HOL_OK
+              : hol__bad(r, HOL_EPARSE, "not a valid '%s' line (once, before the levels)",
+                         k == 1 ? "session_no 1..999" : k == 2 ? "study_sha256 HEX" : "meta KEY=VALUE");
+    return 1;
+}
+
 static hol_err hol__level_begin(hol_rec_reader *r, const char *s, size_t len)
 {
     if (r->state == HOL__META && (r->seen & 0xd) != 0xd)
         return hol__bad(r, HOL_EPARSE, "a version %d recording names its session, start and "
                                        "version before its levels", r->version);
-    if (r->state == HOL__META && r->version >= 3 && !(r->seen & HOL__SEEN_STUDY))
+    if (r->state == HOL__META && r->version == 3 && !(r->seen & HOL__SEEN_STUDY))
         return hol__bad(r, HOL_EPARSE, "a version 3 recording names its study before its "
                                        "levels");
     if (r->nlevels >= HOL_REC_MAX_LEVELS)
@@ -265,7 +399,7 @@ hol_err hol_rec_read_line(hol_rec_reader *r, const char *s, size_t len, int *out
         return hol__bad(r, HOL_EPARSE, "level '%.40s' not closed by 'end'", r->name);
     }
     hol_err err;
-    if (hol__meta_line(r, s, len, &err))
+    if (hol__meta_line(r, s, len, &err) || hol__meta4_line(r, s, len, &err))
         return err;
     if (len >= 6 && !memcmp(s, "level ", 6))
         return hol__level_begin(r, s, len);

@@ -5,12 +5,19 @@
  * Contract
  * - Text, one item per line (LF; a CR before the LF is ignored on reading):
  *
- *     holonomy-rec 2        (3 for a study's session)
+ *     holonomy-rec 2        (3 for a study's session, 4 with the lines below)
  *     session ID            the session's id          (version 2)
  *     participant ID        optional                  (version 2)
  *     start ISO             start, UTC: 2025-01-31T12:00:00Z (version 2)
  *     version V             the app version that played (version 2)
- *     study NAME            the study (version 3)
+ *     study NAME            the study (version 3; optional in 4)
+ *     session_no N          --session N, 1..999       (version 4, optional)
+ *     study_sha256 HEX      the study file's SHA-256, 64 lowercase hex
+ *                           digits                    (version 4, optional)
+ *     meta KEY=VALUE        each --meta, in order     (version 4, optional,
+ *                           up to HOL_REC_META_MAX; KEY 1..32 of a-z 0-9 _,
+ *                           VALUE as hol_text_escape writes it: no ';',
+ *                           no control byte, at most 800 bytes)
  *     level NAME            each level of the session, in order:
  *     condition NAME POS    its study condition and position (version 3)
  *     L LINE                its text's lines (hol_level.h), then
@@ -20,10 +27,12 @@
  *                           the window closed: HOL_REC_ABORTED_LINE), so a
  *                           replay ends it the same way
  *
- *   Versions 1 (no metadata lines) and 2 (no study) are read too; the
- *   writer writes version 2 unless the session is a study's, so a
- *   recording without a study reads in a build that knows only version 2.
- *   The metadata lines come before the first level, each at most once;
+ *   Versions 1 (no metadata lines), 2 (no study) and 3 are read too; the
+ *   writer writes version 2 unless the session is a study's (3) or has a
+ *   session number, a study hash or meta (4), so a recording without them
+ *   reads in a build that knows only version 2 (or 3).
+ *   The metadata lines come before the first level, each at most once
+ *   (meta: once per KEY, up to HOL_REC_META_MAX);
  *   session, start and version are required from version 2, study in
  *   version 3. IDs (and condition names) are 1..63 bytes of letters,
  *   digits and '.', '_', '-' (hol_rec_id_ok); a version 1..31 bytes of
@@ -56,10 +65,14 @@
 #define HOL_REC_ABORTED_LINE "end aborted"
 #include "hol_level.h"
 
-#define HOL_REC_VERSION 3
+#define HOL_REC_VERSION 4
 #define HOL_REC_MAX_LEVELS 16
 #define HOL_REC_LINE_MAX 1024
 #define HOL_REC_ID_MAX 64 /* with the NUL */
+#define HOL_REC_META_MAX 16 /* meta lines (--meta options) */
+#define HOL_REC_META_VALUE 800 /* bytes of an escaped value (4 x 200) */
+/* the meta text: KEY=VALUE items joined with ';', with its NUL */
+#define HOL_REC_META_TEXT (HOL_REC_META_MAX * (32 + 1 + HOL_REC_META_VALUE + 1))
 
 typedef struct hol_rec_meta {
     char session[HOL_REC_ID_MAX];     /* "" in version 1 */
@@ -67,7 +80,17 @@ typedef struct hol_rec_meta {
     char start[HOL_REC_ID_MAX];       /* ISO 8601 UTC, "" in version 1 */
     char version[32];                 /* "" in version 1 */
     char study[HOL_REC_ID_MAX];       /* "": not a study's session */
+    int session_no;                   /* --session N, 1..999; 0: none */
+    char study_sha256[65];            /* "" or 64 lowercase hex digits */
+    /* the --meta options, KEY=VALUE joined with ';', each VALUE escaped
+     * (hol_text_escape: no control byte); "": none */
+    char meta[HOL_REC_META_TEXT];
 } hol_rec_meta;
+
+/* 1 when s is a meta text as above: 0..HOL_REC_META_MAX items, distinct
+ * keys, values escaped (hol_text_escape's own output) of at most
+ * HOL_REC_META_VALUE bytes; 1 for "". */
+int hol_rec_meta_ok(const char *s);
 
 /* 1 when s is an id: 1..63 bytes of [A-Za-z0-9._-]. */
 int hol_rec_id_ok(const char *s);

@@ -11,12 +11,12 @@
 enum {
     C_SESSION, C_PARTICIPANT, C_ATTEMPT, C_STUDY, C_CONDITION, C_POSITION, C_LEVEL,
     C_SHA, C_MODE, C_STEPS, C_OPTIMUM, C_TIME, C_END, C_TILING, C_ROOM, C_CELL,
-    S_STEP, S_COL, S_ROW, S_DIR, S_TILE, S_ORIENT, C_CUES, C_COUNT
+    S_STEP, S_COL, S_ROW, S_DIR, S_TILE, S_ORIENT, C_CUES, C_SESSION_NO, C_COUNT
 };
 static const char *const col_names[C_COUNT] = {
     "session", "participant", "attempt", "study", "condition", "position", "level",
     "level_sha256", "mode", "steps", "optimum", "time", "end", "tiling", "room", "cell",
-    "step", "col", "row", "dir", "tile", "orient", "cues"};
+    "step", "col", "row", "dir", "tile", "orient", "cues", "session_no"};
 
 static void set_err(char *err, const char *msg, const char *col)
 {
@@ -243,6 +243,9 @@ static int fill_attempt(const row_ctx *r, hol_report_attempt *a)
         return 0;
     a->cues = -1;
     if (*field(r, C_CUES) && !get_long(r, C_CUES, 0, 65535, &a->cues))
+        return 0;
+    a->session_no = -1;
+    if (*field(r, C_SESSION_NO) && !get_long(r, C_SESSION_NO, 1, 999, &a->session_no))
         return 0;
     if (!get_long(r, C_ATTEMPT, 1, 999999999, &a->attempt) ||
         !get_long(r, C_STEPS, 0, 999999999, &a->steps) ||

@@ -11,7 +11,8 @@
  *   inner quotes doubled; anything else is bad input.
  * - A header line names the columns; columns are found by name, so added
  *   columns (any order) are ignored and missing optional ones take their
- *   defaults: participant, study, condition, position, cues empty; tiling 4,5,
+ *   defaults: participant, study, condition, position, cues, session_no
+ *   empty; tiling 4,5,
  *   room 3x3, cell 1 (the geometry columns come from newer logs).
  *   Required: summary session, attempt, level, mode, steps, optimum, time,
  *   end; steps session, attempt, step, col, row, dir, tile, orient.
@@ -48,6 +49,7 @@ typedef struct hol_report_attempt {
     long attempt;
     long position;     /* -1: empty (outside a study) */
     long cues;         /* column `cues` (bits, 0..65535); -1: absent or empty */
+    long session_no;   /* column `session_no` (1..999); -1: absent or empty */
     long steps, optimum; /* optimum -1: not scored */
     double time_s;
     int tiling_q;      /* 4..8 (column `tiling`, "4,Q"; default 5) */

@@ -31,6 +31,12 @@ static hol_err hol__check_desc(const hol_session_desc *d, char *msg, size_t cap)
         snprintf(msg, cap, "the start time is not YYYY-MM-DDTHH:MM:SSZ");
         return HOL_EARG;
     }
+    if (m->session_no < 0 || m->session_no > 999 ||
+        (m->study_sha256[0] && strspn(m->study_sha256, "0123456789abcdef") != 64) ||
+        strlen(m->study_sha256) % 64 || !hol_rec_meta_ok(m->meta)) {
+        snprintf(msg, cap, "the session number, study hash or meta is not valid");
+        return HOL_EARG;
+    }
     if (m->participant[0] && !hol_rec_id_ok(m->participant)) {
         snprintf(msg, cap, "the participant is not 1..63 letters, digits, '.', '_', '-'");
         return HOL_EARG;
@@ -136,7 +142,9 @@ static hol_err hol__rec_open(hol_session *s)
 static hol_err hol__alloc(hol_session *s, const hol_session_desc *d)
 {
     size_t lv = (size_t)d->nlevels * sizeof *s->levels;
-    size_t bufs = (d->rec ? HOL__REC_BUF : 0) + (d->log ? 2 * HOL__ROWS_BUF + HOL__TRACK_BUF : 0);
+    size_t bufs = (d->rec ? HOL__REC_BUF : 0) +
+                  (d->log ? 2 * HOL__ROWS_BUF + HOL__TRACK_BUF + 2 * HOL__ROW_MAX + HOL__TAIL_MAX
+                          : 0);
     char *mem = hol_alloc_mem(&s->alloc, lv + bufs);
     if (!mem)
         return HOL_ENOMEM;
@@ -150,6 +158,13 @@ static hol_err hol__alloc(hol_session *s, const hol_session_desc *d)
                   d->log ? HOL__ROWS_BUF : 0);
     hol__out_init(&s->track, d->log, d->log ? b + 2 * HOL__ROWS_BUF : NULL,
                   d->log ? HOL__TRACK_BUF : 0);
+    if (d->log) {
+        b += 2 * HOL__ROWS_BUF + HOL__TRACK_BUF;
+        s->row = b;
+        s->scratch = b + HOL__ROW_MAX;
+        s->tail = b + 2 * HOL__ROW_MAX;
+        hol__summary_tail(&d->meta, s->tail, HOL__TAIL_MAX, &s->tail_len);
+    }
     return HOL_OK;
 }
 

@@ -46,7 +46,14 @@
  *   and `replay --append` accept. Without desc.append a folder that holds any
  *   log file (summary.csv, steps-*, head-*, attempt-*.live) is refused
  *   (HOL_EARG): a session never mixes its files into another's unasked.
- *   With desc.append, summary.csv must have this version's columns.
+ *   With desc.append, summary.csv must have this version's columns, or
+ *   the previous version's (HOL_SESSION_SUMMARY_COLUMNS_OLD): then the
+ *   session's rows (and recovered ones) have those columns only.
+ * - The summary's session_no, study_sha256 and meta are desc.meta's (the
+ *   same in every row of the session: empty, or the number, the hash and
+ *   the escaped meta text, CSV-quoted when it needs it), so a replay of
+ *   the recording (which carries them, hol_rec.h version 4) writes the
+ *   same rows.
  * - Levels: at create, each level's text (as played and recorded) goes to
  *   level-HASH.txt in the log folder (HASH its SHA-256 in hex, the
  *   summary's level_sha256), written as level-HASH.txt.live and renamed:
@@ -125,9 +132,13 @@
 #define HOL_SESSION_TRACK_HZ_MIN 10
 #define HOL_SESSION_TRACK_HZ_MAX 90
 
-#define HOL_SESSION_SUMMARY_COLUMNS                                                       \
+/* summary.csv's columns; a folder whose summary.csv has the columns of
+ * the build before session_no, study_sha256 and meta
+ * (HOL_SESSION_SUMMARY_COLUMNS_OLD) is appended to in those columns. */
+#define HOL_SESSION_SUMMARY_COLUMNS_OLD                                                   \
     "session,participant,session_start,version,attempt,study,condition,position,level,"    \
     "level_sha256,mode,seed,cues,tiling,room,cell,started,steps,optimum,time,end"
+#define HOL_SESSION_SUMMARY_COLUMNS HOL_SESSION_SUMMARY_COLUMNS_OLD ",session_no,study_sha256,meta"
 #define HOL_SESSION_STEP_COLUMNS \
     "session,attempt,level,t,step,col,row,dir,yaw,tile,orient,remaining,cues,visible"
 #define HOL_SESSION_HEAD_COLUMNS \
@@ -168,7 +179,9 @@ typedef struct hol_session_desc {
     hol_rec_meta meta;       /* session id, participant, start, version:
                                 "" version: HOL_VERSION; required ids
                                 checked (hol_rec_id_ok, hol_rec_time_ok)
-                                when there are logs or a recording */
+                                when there are logs or a recording;
+                                session_no, study_sha256 and meta checked
+                                (hol_rec_meta_ok) always */
     double flush_s;          /* 0: 1 s */
     int track_hz;            /* track rows a second, 10..90; 0: 10 */
 } hol_session_desc;

@@ -10,6 +10,11 @@
 
 #include "hol_session.h"
 
+/* A summary row's fixed part, then its tail: ",N,HEX,META" with META
+ * CSV-quoted (each byte at most doubled). */
+#define HOL__TAIL_MAX (2 * HOL_REC_META_TEXT + 96)
+#define HOL__ROW_MAX (1024 + HOL__TAIL_MAX)
+
 /* A buffered output stream of a sink. */
 typedef struct hol__out {
     const hol_sink *sink;
@@ -63,6 +68,11 @@ struct hol_session {
     int events_known;        /* events.csv is known to have its header */
     int points_known;        /* points.csv likewise */
     int answers_known;       /* answers.csv likewise */
+    char *row;               /* a summary row being made (HOL__ROW_MAX) */
+    char *scratch;           /* recovery's copy of a row (HOL__ROW_MAX) */
+    char *tail;              /* the summary rows' last three fields */
+    size_t tail_len;
+    int old_cols;            /* summary.csv has HOL_SESSION_SUMMARY_COLUMNS_OLD */
     hol_err failed;          /* the first sink failure (sticky) */
     int failed_told;
     char msg[256];
@@ -82,6 +92,8 @@ hol_err hol__fail_sink(hol_session *s, const hol_sink *k, hol_err e, const char 
 void hol__attempt_name(char *out, size_t cap, const char *what, int attempt);
 size_t hol__summary_row(const hol_session *s, const hol_app_summary *sum, int end, char *out,
                         size_t cap);
+/* The summary rows' tail from m: ",session_no,study_sha256,meta". */
+void hol__summary_tail(const hol_rec_meta *m, char *out, size_t cap, size_t *out_len);
 void hol__log_frame(hol_session *s, const hol_app_events *ev, const hol_app_view *v,
                     const hol_input *in);
 void hol__attempt_end(hol_session *s, const hol_app_summary *sum, int end);

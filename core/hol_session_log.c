@@ -215,7 +215,31 @@ size_t hol__summary_row(const hol_session *s, const hol_app_summary *sum, int en
                      G->tiling_q ? G->tiling_q : 5, G->room_cols ? G->room_cols : 3,
                      G->room_rows ? G->room_rows : 3, cell, s->attempt_started, sum->steps,
                      sum->optimum, sum->time_s, hol__end_names[end]);
-    return n > 0 && (size_t)n < cap ? (size_t)n : 0;
+    if (n <= 0 || (size_t)n >= cap)
+        return 0;
+    if (s->old_cols || !s->tail)
+        return (size_t)n;
+    /* the tail before the row's LF */
+    if ((size_t)n + s->tail_len >= cap)
+        return 0;
+    memcpy(out + n - 1, s->tail, s->tail_len);
+    out[n - 1 + s->tail_len] = '\n';
+    out[n + s->tail_len] = 0;
+    return (size_t)n + s->tail_len;
+}
+
+void hol__summary_tail(const hol_rec_meta *m, char *out, size_t cap, size_t *out_len)
+{
+    char num[16] = "";
+    if (m->session_no > 0)
+        snprintf(num, sizeof num, "%d", m->session_no);
+    int n = snprintf(out, cap, ",%s,%s,", num, m->study_sha256);
+    size_t at = n > 0 && (size_t)n < cap ? (size_t)n : 0;
+    /* meta is escaped already (hol_rec_meta_ok): only quoted here */
+    size_t need = hol_text_csv(m->meta, strlen(m->meta), out + at, cap - at);
+    *out_len = at + need < cap ? at + need : 0;
+    if (!*out_len && cap)
+        out[0] = 0;
 }
 
 static void hol__step_rows(hol_session *s, const hol_app_events *ev, const hol_app_view *v)
@@ -298,10 +322,10 @@ static void hol__attempt_begin(hol_session *s, const hol_app_view *v)
     s->track_prev.valid = 0;
     const hol_app_level *L = &s->levels[s->cur].lvl;
     hol_app_summary sum = {L->mode, L->seed, 0, v->hud.optimum, 0, HOL_APP_END_NONE};
-    char row[1024], name[64], live[80];
-    size_t n = hol__summary_row(s, &sum, HOL__END_KILLED, row, sizeof row);
+    char name[64], live[80];
+    size_t n = hol__summary_row(s, &sum, HOL__END_KILLED, s->row, HOL__ROW_MAX);
     hol__attempt_name(name, sizeof name, "attempt", s->attempt);
-    hol__put_file(s, name, 0, row, n);
+    hol__put_file(s, name, 0, s->row, n);
     hol__attempt_name(name, sizeof name, "steps", s->attempt);
     snprintf(live, sizeof live, "%s.live", name);
     if (!hol__out_open(s, &s->steps, live, 0))
@@ -331,9 +355,9 @@ void hol__attempt_end(hol_session *s, const hol_app_summary *sum, int end)
     hol__out_close(s, &s->head);
     hol__out_flush(s, &s->track, 1);
     hol__out_close(s, &s->track);
-    char row[1024], name[64], live[80];
-    size_t n = hol__summary_row(s, sum, end, row, sizeof row);
-    hol__put_file(s, "summary.csv", 1, row, n);
+    char name[64], live[80];
+    size_t n = hol__summary_row(s, sum, end, s->row, HOL__ROW_MAX);
+    hol__put_file(s, "summary.csv", 1, s->row, n);
     /* steps last: a steps-NNN.csv always has its head file and row */
     static const char *const what[3] = {"head", "track", "steps"};
     for (int k = 0; k < 3; k++) {

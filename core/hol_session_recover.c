@@ -219,30 +219,82 @@ static void hol__live_rows(hol_session *s, int a, int *steps, double *time)
     }
 }
 
-/* The pending row of attempt a with its steps, time and end killed. */
+/* The starts of line's CSV fields (RFC 4180: a quoted field may hold
+ * commas; the logs' fields hold no LF), at most max; their number, or -1
+ * when the line is not CSV. at[n] is one past the last field's end + 1. */
+static int hol__csv_fields(const char *line, size_t n, size_t *at, int max)
+{
+    int k = 0;
+    size_t i = 0;
+    for (;;) {
+        if (k == max)
+            return -1;
+        at[k++] = i;
+        if (i < n && line[i] == '"') {
+            for (i++;; i++) {
+                if (i >= n)
+                    return -1;
+                if (line[i] == '"' && i + 1 < n && line[i + 1] == '"')
+                    i++;
+                else if (line[i] == '"')
+                    break;
+            }
+            i++;
+            if (i < n && line[i] != ',')
+                return -1;
+        } else {
+            while (i < n && line[i] != ',')
+                i++;
+        }
+        if (i >= n) {
+            at[k] = n + 1;
+            return k;
+        }
+        i++;
+    }
+}
+
+/* The pending row of attempt a (attempt-NNN.live's one line) with its
+ * steps, time and end killed; its other fields, the tail's too, kept. */
 static size_t hol__killed_row(hol_session *s, int a, char *row, size_t cap)
 {
     char name[64];
     hol__attempt_name(name, sizeof name, "attempt", a);
-    hol__lines l;
-    memset(&l, 0, sizeof l);
-    if (hol__read_lines(s->log, name, &l) || l.complete < 1)
+    size_t got = 0;
+    if (s->log->read(s->log->user, name, 0, s->scratch, HOL__ROW_MAX, &got))
+        return 0;
+    const char *line = s->scratch, *lf = memchr(line, '\n', got);
+    if (!lf)
+        return 0; /* not whole */
+    size_t len = (size_t)(lf - line), at[32];
+    int nf = hol__csv_fields(line, len, at, 31);
+    /* steps, optimum, time, end are the four fields before the tail
+     * (session_no, study_sha256, meta: fields 21..23 of this version's
+     * 24; none in a row of the columns before them) */
+    int k = nf == 24 ? 21 : nf;
+    if (k < 5)
         return 0;
     int steps;
     double time;
     hol__live_rows(s, a, &steps, &time);
-    /* "...,started,STEPS,OPTIMUM,TIME,END": keep all but the four last */
-    char *end = l.last + l.last_len;
-    for (int c = 0; c < 4 && end > l.last; c++) {
-        while (end > l.last && end[-1] != ',')
-            end--;
-        if (end > l.last)
-            end--;
-    }
-    int optimum = (int)hol__field_right(l.last, l.last_len, 2);
-    int n = snprintf(row, cap, "%.*s,%d,%d,%.4f,%s\n", (int)(end - l.last), l.last, steps,
-                     optimum, time, hol__end_names[HOL__END_KILLED]);
-    return n > 0 && (size_t)n < cap ? (size_t)n : 0;
+    int optimum = atoi(line + at[k - 3]);
+    int n = snprintf(row, cap, "%.*s%d,%d,%.4f,%s", (int)at[k - 4], line, steps, optimum, time,
+                     hol__end_names[HOL__END_KILLED]);
+    if (n <= 0 || (size_t)n >= cap)
+        return 0;
+    size_t m = (size_t)n;
+    /* the tail as the killed session wrote it (its meta, not ours) */
+    const char *tail = nf == 24 ? line + at[21] - 1 : ",,,";
+    size_t tl = nf == 24 ? len - (at[21] - 1) : 3;
+    if (s->old_cols)
+        tl = 0;
+    if (m + tl + 1 >= cap)
+        return 0;
+    memcpy(row + m, tail, tl);
+    m += tl;
+    row[m++] = '\n';
+    row[m] = 0;
+    return m;
 }
 
 /* A new stream holding text, durably. */
@@ -279,7 +331,7 @@ static void hol__drop(hol_session *s, int a)
 
 static void hol__recover(hol_session *s, int a)
 {
-    char field[16], name[64], live[80], row[1200];
+    char field[16], name[64], live[80], *row = s->row;
     snprintf(field, sizeof field, "%d", a);
     hol__lines l;
     memset(&l, 0, sizeof l);
@@ -290,7 +342,7 @@ static void hol__recover(hol_session *s, int a)
         return;
     }
     if (!l.has_field) {
-        size_t n = hol__killed_row(s, a, row, sizeof row);
+        size_t n = hol__killed_row(s, a, row, HOL__ROW_MAX);
         if (!n) {
             hol__drop(s, a);
             return;
@@ -359,6 +411,20 @@ static int hol__header_part(hol_session *s)
     return got < sizeof buf && !memcmp(buf, HOL_SESSION_SUMMARY_COLUMNS, got);
 }
 
+/* 1 when summary.csv's first line is HOL_SESSION_SUMMARY_COLUMNS_OLD
+ * (sets old_cols: the rows are written in those columns). */
+static int hol__old_header(hol_session *s)
+{
+    static const char want[] = HOL_SESSION_SUMMARY_COLUMNS_OLD "\n";
+    char buf[sizeof want];
+    size_t got = 0;
+    if (s->log->read(s->log->user, "summary.csv", 0, buf, sizeof want - 1, &got) ||
+        got != sizeof want - 1 || memcmp(buf, want, got))
+        return 0;
+    s->old_cols = 1;
+    return 1;
+}
+
 static int hol__cmp_int(const void *a, const void *b)
 {
     return *(const int *)a - *(const int *)b;
@@ -388,9 +454,10 @@ hol_err hol__log_open(hol_session *s, int append)
     e = hol__read_lines(s->log, "summary.csv", &l);
     if (e && e != HOL_EOPEN)
         return hol__fail_sink(s, s->log, e, "read", "summary.csv");
+    s->old_cols = 0;
     if (e == HOL_OK && l.complete == 0 && hol__header_part(s)) {
         e = HOL_EOPEN; /* a kill before its header reached the disk: made again */
-    } else if (e == HOL_OK && !l.first_is) {
+    } else if (e == HOL_OK && !l.first_is && !hol__old_header(s)) {
         snprintf(s->msg, sizeof s->msg, "the log folder's summary.csv has other columns "
                  "(another version's logs): choose another folder");
         return HOL_EVERSION;

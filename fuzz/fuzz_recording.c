@@ -98,6 +98,10 @@ static void check_round_trip(void)
     }
     CHECK(!strcmp(r2.meta.participant, m.participant));
     CHECK(!strcmp(r2.meta.study, m.study));
+    /* version 4: the session number, the study's hash, the meta text */
+    CHECK(r2.meta.session_no == m.session_no);
+    CHECK(!strcmp(r2.meta.study_sha256, m.study_sha256));
+    CHECK(!strcmp(r2.meta.meta, m.meta) && hol_rec_meta_ok(m.meta));
 }
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)

@@ -49,7 +49,7 @@ want='session,attempt,level,t,frame_t,x,y,z,yaw,pitch,col,row,tile
 20260131T140509Z-5f3a9c01,1,f,0.1,1000000000.0000,,,,,,,,gap'
 [ "$(cat jump/head-001.csv 2>/dev/null)" = "$want" ] && ok ||
     bad "jump head rows: $(head -c 300 jump/head-001.csv 2>/dev/null)"
-grep -q ',1000000000.0000,open$' jump/summary.csv && ok || bad "jump summary: $(cat jump/summary.csv)"
+grep -q ',1000000000.0000,open,,,$' jump/summary.csv && ok || bad "jump summary: $(cat jump/summary.csv)"
 
 # a gap of 2 s is interpolated (20 rows); of 2.5 s one gap row, then rows go on
 { rec_header; level_lines
@@ -76,7 +76,7 @@ kill -TERM $pid 2>/dev/null
 if gone_within $pid 10; then
     wait $pid; st=$?
     [ "$st" = 143 ] && ok || bad "SIGTERM: status $st, want 143"
-    tail -1 term/summary.csv | grep -q ',aborted$' && ok || bad "SIGTERM: $(tail -1 term/summary.csv)"
+    tail -1 term/summary.csv | grep -q ',aborted,,,$' && ok || bad "SIGTERM: $(tail -1 term/summary.csv)"
 else
     bad "a replay of a hostile recording still runs 1 s after SIGTERM"
     kill -9 $pid 2>/dev/null; wait $pid 2>/dev/null
@@ -131,7 +131,7 @@ run "refused in a folder of its own" 2 "$H" replay v2study.rec --log keep
 # ---- finding 4: recovery leaves a folder report and replay accept -----------------------
 # by hand: the files a kill before the first flush leaves
 run "logs to break" 0 "$H" replay whole.rec --log k0
-row=$(sed -n 2p k0/summary.csv | sed 's/,open$/,killed/')
+row=$(sed -n 2p k0/summary.csv | sed 's/,open,,,$/,killed,,,/')
 mkdir k1
 sed -n 1p k0/summary.csv >k1/summary.csv
 for a in 001 002; do printf '%s\n' "$row" | sed "s/,P01,\([^,]*\),\([^,]*\),1,/,P01,\1,\2,${a#00},/" \
@@ -226,8 +226,8 @@ if start_xvfb 317; then
     same_end() {
         if ! "$H" replay "$1/s.rec" --log "$1/re" >/dev/null 2>"$1/re.err"; then
             bad "$1: the replay failed: $(cat "$1/re.err")"; return; fi
-        tail -1 "$1/logs/summary.csv" | grep -q ",$2\$" || {
-            bad "$1: the play ended $(tail -1 "$1/logs/summary.csv" | sed 's/.*,//'), want $2"; return; }
+        tail -1 "$1/logs/summary.csv" | grep -q ",$2,,,\$" || {
+            bad "$1: the play ended $(tail -1 "$1/logs/summary.csv" | sed 's/,,,$//; s/.*,//'), want $2"; return; }
         cmp -s "$1/logs/summary.csv" "$1/re/summary.csv" && ok ||
             bad "$1: the replay's summary differs: $(tail -1 "$1/re/summary.csv")"
     }

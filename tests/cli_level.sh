@@ -104,7 +104,7 @@ mkdir "$T/g1" "$T/g2"
 run "time-limit replay" 0 "$H" replay "$T/t.rec" --log "$T/g1"
 grep -q '^level lv timeout steps 4 optimum 8 ' "$T/out" && ok ||
     bad "time-limit replay: $(cat "$T/out")"
-grep -q ',1,,,,lv,[0-9a-f]\{64\},flag,5,15,"4,5",3x3,1,[0-9.]*,4,8,1.0000,timeout$' "$T/g1/summary.csv" && ok ||
+grep -q ',1,,,,lv,[0-9a-f]\{64\},flag,5,15,"4,5",3x3,1,[0-9.]*,4,8,1.0000,timeout,,,$' "$T/g1/summary.csv" && ok ||
     bad "time-limit summary: $(cat "$T/g1/summary.csv")"
 [ "$(($(wc -l <"$T/g1/steps-001.csv") - 1))" = 4 ] && ok || bad "time-limit: not 4 step rows"
 run "time-limit replay again" 0 "$H" replay "$T/t.rec" --log "$T/g2"

@@ -176,7 +176,7 @@ if command -v xdotool >/dev/null 2>&1; then
     done
     kill $PPID_PLAY 2>/dev/null
     wait $PPID_PLAY 2>/dev/null
-    grep -q ',1,,,,explore-1,[0-9a-f]*,explore,1,15,"4,5",3x3,1,[0-9.]*,0,-1,[0-9.]*,restart$' "$T/tap/summary.csv" && ok ||
+    grep -q ',1,,,,explore-1,[0-9a-f]*,explore,1,15,"4,5",3x3,1,[0-9.]*,0,-1,[0-9.]*,restart,,,$' "$T/tap/summary.csv" && ok ||
         bad "a tapped R did not restart: $(cat "$T/tap/summary.csv" "$T/tap.err" 2>&1)"
     grep -q ' p=20 .*d=keyboard$' "$T/tap.rec" && ok || bad "no pressed R (p=20) in the recording"
     grep -q ' p=10 .*d=keyboard$' "$T/tap.rec" && ok || bad "no pressed M (p=10) in the recording"
@@ -248,7 +248,7 @@ awk 'BEGIN { for (k = 0; k < 20; k++) printf "%.17g f=8%s\n", k / 10, (k == 5 ? 
     >"$T/ptap.in"
 mkdir "$T/ptap"
 run "pressed line" 0 "$H" play --mode explore --input "$T/ptap.in" --size 64x48 --log "$T/ptap"
-grep -q ',1,,,,explore-1,[0-9a-f]*,explore,1,15,"4,5",3x3,1,[0-9.]*,0,-1,0.4000,restart$' "$T/ptap/summary.csv" && ok ||
+grep -q ',1,,,,explore-1,[0-9a-f]*,explore,1,15,"4,5",3x3,1,[0-9.]*,0,-1,0.4000,restart,,,$' "$T/ptap/summary.csv" && ok ||
     bad "a pressed-only line did not restart: $(cat "$T/ptap/summary.csv")"
 kill $XPID 2>/dev/null
 wait $XPID 2>/dev/null

@@ -27,7 +27,7 @@ mkdir "$T/l1" "$T/l2" "$T/l3" "$T/png" "$T/png2"
 run "optimal walk" 0 "$H" replay "$T/opt.rec" --log "$T/l1"
 grep -q "^level lv done steps $K optimum $K " "$T/out" && ok ||
     bad "optimal walk: $(cat "$T/out"), want done $K $K"
-grep -q ",1,,,,lv,[0-9a-f]\{64\},flag,5,15,\"4,5\",3x3,1,[0-9.]*,$K,$K,[0-9.]*,done\$" "$T/l1/summary.csv" && ok ||
+grep -q ",1,,,,lv,[0-9a-f]\{64\},flag,5,15,\"4,5\",3x3,1,[0-9.]*,$K,$K,[0-9.]*,done,,,\$" "$T/l1/summary.csv" && ok ||
     bad "summary: $(cat "$T/l1/summary.csv")"
 [ "$(($(wc -l <"$T/l1/steps-001.csv") - 1))" = "$K" ] && ok || bad "one steps row per room step"
 tail -1 "$T/l1/steps-001.csv" | grep -q ',Wrf,[0-3],0,15,[0-9]*$' && ok ||
@@ -73,7 +73,7 @@ grep -q "^level lv done steps $K optimum $K " "$T/out" && ok || bad "keys: $(cat
 mkdir "$T/l4"
 run "two levels" 0 "$H" replay "$T/two.rec" --log "$T/l4"
 grep -q "^level b done steps $K optimum $K " "$T/out" && ok || bad "two levels: $(cat "$T/out")"
-[ "$(grep -c ',done$' "$T/l4/summary.csv")" = 2 ] && ok || bad "two levels: $(cat "$T/l4/summary.csv")"
+[ "$(grep -c ',done,,,$' "$T/l4/summary.csv")" = 2 ] && ok || bad "two levels: $(cat "$T/l4/summary.csv")"
 grep -q ',2,,,,b,[0-9a-f]*,keys,3,' "$T/l4/summary.csv" && ok || bad "attempt 2 is level b"
 {
     printf 'holonomy-rec 1\nlevel a\nL mode flag\nL seed 5\nL flag Wrf\nend\n'
@@ -82,9 +82,9 @@ grep -q ',2,,,,b,[0-9a-f]*,keys,3,' "$T/l4/summary.csv" && ok || bad "attempt 2 
 } >"$T/restart.rec"
 mkdir "$T/l5"
 run "restart" 0 "$H" replay "$T/restart.rec" --log "$T/l5"
-sed -n 2p "$T/l5/summary.csv" | grep -q ',1,,,,a,[0-9a-f]*,flag,5,15,"4,5",3x3,1,[0-9.]*,2,[0-9]*,[0-9.]*,restart$' && ok ||
+sed -n 2p "$T/l5/summary.csv" | grep -q ',1,,,,a,[0-9a-f]*,flag,5,15,"4,5",3x3,1,[0-9.]*,2,[0-9]*,[0-9.]*,restart,,,$' && ok ||
     bad "restart row: $(cat "$T/l5/summary.csv")"
-sed -n 3p "$T/l5/summary.csv" | grep -q ',2,,,,a,[0-9a-f]*,flag,5,15,"4,5",3x3,1,[0-9.]*,\([0-9]*\),\1,[0-9.]*,done$' && ok ||
+sed -n 3p "$T/l5/summary.csv" | grep -q ',2,,,,a,[0-9a-f]*,flag,5,15,"4,5",3x3,1,[0-9.]*,\([0-9]*\),\1,[0-9.]*,done,,,$' && ok ||
     bad "done after restart: $(cat "$T/l5/summary.csv")"
 [ "$(($(wc -l <"$T/l5/steps-001.csv") - 1))" = 2 ] && ok || bad "2 steps before the restart"
 
@@ -114,8 +114,8 @@ grep -q "^level tut playing " "$T/out" && ok || bad "lessons out of order: $(cat
 # bad recordings: exit 2, one line naming the line
 printf 'hello\n' >"$T/bad1"
 run "no header" 2 "$H" replay "$T/bad1" && one_line "no header" "line 1"
-printf 'holonomy-rec 4\n' >"$T/bad2"
-run "version" 2 "$H" replay "$T/bad2" && one_line "version" "version 1 to 3"
+printf 'holonomy-rec 5\n' >"$T/bad2"
+run "version" 2 "$H" replay "$T/bad2" && one_line "version" "version 1 to 4"
 { rec "$LEVEL" "N"; printf '9 m=4,0\n'; } >"$T/bad3"
 run "bad input line" 2 "$H" replay "$T/bad3" && one_line "bad input line" "line 10"
 printf 'holonomy-rec 1\nlevel x\nL mode flag\nL flug Nf\nend\n0\n' >"$T/bad4"

@@ -33,8 +33,8 @@ for p in a b c; do
     run "replay $p" 0 "$H" replay "$T/$p.rec" --log "$T/l$p"
 done
 # a killed attempt: its end as a later --append session writes it
-sed -i '2s/,open$/,killed/' "$T/lc/summary.csv"
-grep -q ',killed$' "$T/lc/summary.csv" && ok || bad "the killed row was not made"
+sed -i '2s/,open,,,$/,killed,,,/' "$T/lc/summary.csv"
+grep -q ',killed,,,$' "$T/lc/summary.csv" && ok || bad "the killed row was not made"
 
 run "report" 0 "$H" report "$T/la" "$T/lb" "$T/lc" --out "$T/out1"
 [ "$(cat "$T/out")" = "report: 3 attempts from 3 log folders" ] && ok || bad "stdout: $(cat "$T/out")"
@@ -45,10 +45,10 @@ ls "$T/out1" | tr '\n' ' ' >"$T/ls"
 
 # the CSV: one row per attempt, values from the summaries
 C="$T/out1/attempts.csv"
-head -1 "$C" | grep -qx 'participant,session,attempt,study,condition,position,level,mode,steps,optimum,efficiency,time,end,tiling,room,cell,logdir,picture,q,cues,minimap,logdir_relative' &&
+head -1 "$C" | grep -qx 'participant,session,attempt,study,condition,position,level,mode,steps,optimum,efficiency,time,end,tiling,room,cell,logdir,picture,q,cues,minimap,logdir_relative,session_no' &&
     ok || bad "header: $(head -1 "$C")"
 [ "$(wc -l <"$C")" = 4 ] && ok || bad "rows: $(wc -l <"$C")"
-sed -n 2p "$C" | grep -q "^P01,20260131T140509Z-00000001,1,s1,map,1,flag-a,flag,$K,$K,1.0000,[0-9.]*,done,\"4,5\",3x3,1,.*,attempt-0001.png,5,15,hud,\.\./la\$" &&
+sed -n 2p "$C" | grep -q "^P01,20260131T140509Z-00000001,1,s1,map,1,flag-a,flag,$K,$K,1.0000,[0-9.]*,done,\"4,5\",3x3,1,.*,attempt-0001.png,5,15,hud,\.\./la,\$" &&
     ok || bad "row 1: $(sed -n 2p "$C")"
 EFF=$(awk -v k="$K" 'BEGIN { printf "%.4f", k / (k + 2) }')
 sed -n 3p "$C" | grep -qF "P02,20260131T140509Z-00000002,1,s1,nomap,1,\"<b>&\"\"x\",flag,$((K + 2)),$K,$EFF," &&
@@ -56,7 +56,7 @@ sed -n 3p "$C" | grep -qF "P02,20260131T140509Z-00000002,1,s1,nomap,1,\"<b>&\"\"
 sed -n 4p "$C" | grep -q "^P03,.*,flag-c,flag,1,$K,,[0-9.]*,killed," && ok ||
     bad "row 3 (killed, no efficiency): $(sed -n 4p "$C")"
 for p in a b c; do # steps, optimum, time and end as in each summary
-    s=$(tail -1 "$T/l$p/summary.csv" | awk -F, '{ print $(NF-3) "," $(NF-2) ",[0-9.]*," $(NF-1) "," $NF }')
+    s=$(tail -1 "$T/l$p/summary.csv" | awk -F, '{ print $(NF-6) "," $(NF-5) ",[0-9.]*," $(NF-4) "," $(NF-3) }')
     grep -q ",$s," "$C" && ok || bad "summary of $p ($s) not in the CSV"
 done
 grep -qx 'study,condition,attempts,done,mean_steps,mean_efficiency,mean_time' "$T/out1/conditions.csv" &&
@@ -114,7 +114,7 @@ run "--out a file" 2 "$H" report "$T/la" --out "$T/a.rec" && one_line "--out a f
 run "--out parent" 2 "$H" report "$T/la" --out "$T/none/o" && one_line "--out parent" "does not exist"
 run "unknown option" 2 "$H" report "$T/la" --out "$T/o2" --fast && one_line "unknown option" "fast"
 cp -r "$T/la" "$T/bad1"
-sed -i "2s/,$K,$K,\([0-9.]*\),done\$/,${K}x,$K,\1,done/" "$T/bad1/summary.csv"
+sed -i "2s/,$K,$K,\([0-9.]*\),done,,,\$/,${K}x,$K,\1,done,,,/" "$T/bad1/summary.csv"
 cp -r "$T/la" "$T/bad2"
 awk -F, -v OFS=, 'NR == 3 { $10 = "Q" } { print }' "$T/la/steps-001.csv" >"$T/bad2/steps-001.csv"
 run "bad steps" 2 "$H" report "$T/la" "$T/bad2" --out "$T/o2" &&
@@ -131,7 +131,7 @@ run "--out new/" 0 "$H" report "$T/la" --out "$T/o5/" && [ -f "$T/o5/index.html"
 # a missing steps file: a warning, the row without a picture
 cp -r "$T/la" "$T/miss" && rm "$T/miss/steps-001.csv"
 run "missing steps" 0 "$H" report "$T/miss" --out "$T/o4" && one_line "missing steps" "warning: .*steps-001.csv: missing"
-[ ! -e "$T/o4/attempt-0001.png" ] && grep -q ',done,"4,5",3x3,1,.*,,5,15,hud,\.\./miss$' "$T/o4/attempts.csv" && ok ||
+[ ! -e "$T/o4/attempt-0001.png" ] && grep -q ',done,"4,5",3x3,1,.*,,5,15,hud,\.\./miss,$' "$T/o4/attempts.csv" && ok ||
     bad "missing steps: $(cat "$T/o4/attempts.csv")"
 
 finish cli_report

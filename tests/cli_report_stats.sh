@@ -144,11 +144,11 @@ HA=$(cd "$(dirname "$H")" && pwd)/$(basename "$H") # the binary from another fol
 } >"$T/f/logs/a/summary.csv"
 printf 'mode flag\nseed 5\nflag Nf\nminimap hand\n' >"$T/f/logs/a/level-abc.txt"
 (cd "$T/f" && "$HA" report logs/a --out out/r >/dev/null 2>&1) && ok || bad "report of factors"
-head -1 "$T/f/out/r/attempts.csv" | grep -q ',logdir,picture,q,cues,minimap,logdir_relative$' && ok ||
+head -1 "$T/f/out/r/attempts.csv" | grep -q ',logdir,picture,q,cues,minimap,logdir_relative,session_no$' && ok ||
     bad "attempts.csv header: $(head -1 "$T/f/out/r/attempts.csv")"
-[ "$(sed -n 2p "$T/f/out/r/attempts.csv" | cut -d, -f18-)" = 'logs/a,,6,6,hand,../../logs/a' ] && ok ||
+[ "$(sed -n 2p "$T/f/out/r/attempts.csv" | cut -d, -f18-)" = 'logs/a,,6,6,hand,../../logs/a,' ] && ok ||
     bad "factors row 1: $(sed -n 2p "$T/f/out/r/attempts.csv")"
-[ "$(sed -n 3p "$T/f/out/r/attempts.csv" | cut -d, -f16-)" = '4x4,0.75,logs/a,,5,,,../../logs/a' ] && ok ||
+[ "$(sed -n 3p "$T/f/out/r/attempts.csv" | cut -d, -f16-)" = '4x4,0.75,logs/a,,5,,,../../logs/a,' ] && ok ||
     bad "factors row 2: $(sed -n 3p "$T/f/out/r/attempts.csv")"
 (cd "$T/f/logs/a" && "$HA" report . --out r >/dev/null 2>&1) && ok || bad "report inside the logs"
 [ "$(sed -n 2p "$T/f/logs/a/r/attempts.csv" | cut -d, -f23)" = '..' ] && ok ||

@@ -70,7 +70,7 @@ cd "$T" || exit 1
 { walk_input WNESE; printf '1.5 f=9 p=1 h=2.5,1.6,1.5,0,0,0,1\n1.75 f=9 h=2.5,1.6,1.5,0,0,0,1\n'; } >in1
 P="$H play --study $S --participant P01 --size 64x48 --log logs"
 # rows: "attempt condition position end" of the summary
-rows() { awk -F, 'NR > 1 { print $5, $7, $8, $NF }' logs/summary.csv | tr '\n' ';'; }
+rows() { awk -F, 'NR > 1 { print $5, $7, $8, $(NF-3) }' logs/summary.csv | tr '\n' ';'; } # end: before session_no, study_sha256, meta
 
 # session 1: practice done, condition 1 left open
 run "session 1" 0 $P --input in1

@@ -57,7 +57,7 @@ run "a folder with other files" 0 "$H" replay "$T/opt.rec" --log "$T/other"
 # ---- the summary's metadata ------------------------------------------------------
 row=$(sed -n 2p "$T/new/summary.csv")
 sha=$(printf '%s\n' "$LEVEL" | sha256sum | cut -d' ' -f1)
-want="20260131T140509Z-5f3a9c01,P07,2026-01-31T14:05:09Z,9.9.9,1,,,,lv,$sha,flag,5,15,\"4,5\",3x3,1,0.0000,8,8,2.0000,done"
+want="20260131T140509Z-5f3a9c01,P07,2026-01-31T14:05:09Z,9.9.9,1,,,,lv,$sha,flag,5,15,\"4,5\",3x3,1,0.0000,8,8,2.0000,done,,,"
 [ "$row" = "$want" ] && ok || bad "summary row: $row, want $want"
 head -1 "$T/new/steps-001.csv" | grep -q '^session,attempt,level,t,step,col,row,dir,yaw,tile,orient,remaining,cues,visible$' &&
     ok || bad "steps columns: $(head -1 "$T/new/steps-001.csv")"
@@ -77,10 +77,10 @@ if LC_ALL=C grep -q "$(printf '\033')" "$T/out" "$T/names"/*; then bad "a raw es
 grep -q '^level a,b"c done steps 8 ' "$T/out" && ok || bad "names: $(cat "$T/out")"
 grep -q ',1,,,,\\x1b\]0;pwned\\x07,' "$T/names/summary.csv" && ok || bad "escaped name: $(cat "$T/names/summary.csv")"
 grep -q ',2,,,,"a,b""c",' "$T/names/summary.csv" && ok || bad "quoted name: $(cat "$T/names/summary.csv")"
-# every row has the header's 21 fields once quoted fields are read as one
+# every row has the header's 24 fields once quoted fields are read as one
 awk '{ n = 0; q = 0; for (i = 1; i <= length($0); i++) { c = substr($0, i, 1);
-       if (c == "\"") q = !q; else if (c == "," && !q) n++ } if (n != 20) exit 1 }' \
-    "$T/names/summary.csv" && ok || bad "summary rows without 21 fields"
+       if (c == "\"") q = !q; else if (c == "," && !q) n++ } if (n != 23) exit 1 }' \
+    "$T/names/summary.csv" && ok || bad "summary rows without 24 fields"
 
 # ---- readers: a line at a time ----------------------------------------------------
 cd "$T" || exit 1
@@ -173,7 +173,7 @@ kill -TERM $pid
 wait $pid
 st=$?
 [ "$st" = 143 ] && ok || bad "replay after SIGTERM: status $st, want 143"
-tail -1 "$T/term/summary.csv" | grep -q ',aborted$' && ok || bad "replay SIGTERM: $(tail -1 "$T/term/summary.csv")"
+tail -1 "$T/term/summary.csv" | grep -q ',aborted,,,$' && ok || bad "replay SIGTERM: $(tail -1 "$T/term/summary.csv")"
 ls "$T/term" | grep -q '\.live$' && bad "replay SIGTERM left live files" || ok
 
 if ! start_xvfb 211; then
@@ -205,7 +205,7 @@ ended() {
     [ "$st" = "$2" ] && ok || bad "$1: status $st, want $2 ($(cat "$T/$1/err"))"
     # a session id of its start and 8 hex digits, the start in ISO 8601 UTC
     tail -1 "$T/$1/logs/summary.csv" | grep -Eq \
-        '^[0-9]{8}T[0-9]{6}Z-[0-9a-f]{8},P01,[0-9]{4}-[0-9]{2}-[0-9]{2}T[0-9]{2}:[0-9]{2}:[0-9]{2}Z,[^,]+,1,,,,tutorial,[0-9a-f]{64},tutorial,1,15,.*,aborted$' &&
+        '^[0-9]{8}T[0-9]{6}Z-[0-9a-f]{8},P01,[0-9]{4}-[0-9]{2}-[0-9]{2}T[0-9]{2}:[0-9]{2}:[0-9]{2}Z,[^,]+,1,,,,tutorial,[0-9a-f]{64},tutorial,1,15,.*,aborted,,,$' &&
         ok || bad "$1: $(cat "$T/$1/logs/summary.csv")"
     [ -f "$T/$1/logs/steps-001.csv" ] && [ -f "$T/$1/logs/head-001.csv" ] && [ -f "$T/$1/s.rec" ] &&
         ! ls "$T/$1" "$T/$1/logs" | grep -q '\.live$' && ok || bad "$1: $(ls "$T/$1" "$T/$1/logs")"
@@ -229,7 +229,7 @@ awk -v t="${last:-0}" 'BEGIN { exit !(t + 0 >= 1.0) }' && ok ||
 [ -f "$T/kill9/s.rec.live" ] && [ ! -e "$T/kill9/s.rec" ] && ok || bad "killed: $(ls "$T/kill9")"
 run "a killed session's recording replays" 0 "$H" replay "$T/kill9/s.rec.live" \
     --log "$T/kill9/logs" --append
-grep -q ',1,,,,tutorial,.*,killed$' "$T/kill9/logs/summary.csv" && ok ||
+grep -q ',1,,,,tutorial,.*,killed,,,$' "$T/kill9/logs/summary.csv" && ok ||
     bad "kill -9: $(cat "$T/kill9/logs/summary.csv")"
 
 for s in INT:130 TERM:143 HUP:129; do

@@ -2,6 +2,7 @@
  * through the session every platform runs (core/hol_session.h). Its
  * options, its setup (levels, input, outputs, window, renderer, game
  * controller) and its frame loop. */
+#include <dlfcn.h>
 #include <errno.h>
 #include <math.h>
 #include <stdint.h>
@@ -158,6 +159,13 @@ typedef struct play_ctx {
     hol_audio *au;        /* NULL: silent */
     hol_sound snd;
     hol_sound_list sl;
+    /* environment.csv's row waits for the measured present rate when
+     * XRandR gives none (play_env_due) */
+    int env_due;
+    long swaps;
+    double swap_first, swap_last, refresh_hz;
+    char session[HOL_REC_ID_MAX];
+    char gl[160]; /* GL_RENDERER, read at the start (no GL call later) */
 } play_ctx;
 
 /* ---- options ------------------------------------------------------------------ */
@@ -352,16 +360,65 @@ static void play_sound(play_ctx *c)
     hol_audio_apply(c->au, &c->sl);
 }
 
-/* environment.csv's row (play_env.h): the desktop, the GL's renderer. */
-static int play_write_env(play_ctx *c, const char *session)
+/* The display's refresh rate for environment.csv: the X screen's current
+ * XRandR mode's rate (RandR 1.1, XRRConfigCurrentRate: whole Hz), read
+ * through libXrandr.so.2 when the system has it (dlopen: not linked, no
+ * package added; kept loaded, as Xlib keeps its close hook); 0 unknown. */
+static double play_refresh_hz(const hol_x11 *xw)
 {
-    typedef const unsigned char *(*get_string_fn)(unsigned);
-    get_string_fn gs = (get_string_fn)hol_egl_getproc("glGetString");
-    const unsigned char *gl = gs ? gs(0x1F01 /* GL_RENDERER */) : NULL;
-    play_env_host h = {"desktop", "", gl ? (const char *)gl : "",
-                       c->use_pad ? c->pad.info.name : "", 0, c->o.w, c->o.h};
-    return play_env_write(c->cmd, c->o.log_dir, &c->o.env, session, c->o.participant,
+    void *lib = dlopen("libXrandr.so.2", RTLD_LAZY | RTLD_LOCAL);
+    if (!lib)
+        return 0;
+    typedef void *(*info_fn)(Display *, Window);
+    typedef short (*rate_fn)(void *);
+    typedef void (*free_fn)(void *);
+    info_fn info = (info_fn)dlsym(lib, "XRRGetScreenInfo");
+    rate_fn rate = (rate_fn)dlsym(lib, "XRRConfigCurrentRate");
+    free_fn done = (free_fn)dlsym(lib, "XRRFreeScreenConfigInfo");
+    int ev, er;
+    typedef int (*query_fn)(Display *, int *, int *);
+    query_fn query = (query_fn)dlsym(lib, "XRRQueryExtension");
+    double hz = 0;
+    if (info && rate && done && query && query(xw->dpy, &ev, &er)) {
+        void *conf = info(xw->dpy, DefaultRootWindow(xw->dpy));
+        if (conf) {
+            hz = rate(conf);
+            done(conf);
+        }
+    }
+    return hz > 0 ? hz : 0;
+}
+
+/* environment.csv's row (play_env.h): the desktop, the GL's renderer,
+ * the refresh rate (c->refresh_hz). */
+static int play_write_env(play_ctx *c)
+{
+    play_env_host h = {"desktop", "", c->gl,
+                       c->use_pad ? c->pad.info.name : "", c->refresh_hz, c->o.w, c->o.h};
+    c->env_due = 0;
+    return play_env_write(c->cmd, c->o.log_dir, &c->o.env, c->session, c->o.participant,
                           c->o.study, &h, c->o.argc, c->o.argv) ? CLI_EXIT_FAIL : 0;
+}
+
+/* Without an XRandR rate, the row is written once PLAY_ENV_SWAPS frames
+ * were presented, with their mean rate (last: the session ends first, the
+ * rate of those presented, 0 with fewer than two). */
+#define PLAY_ENV_SWAPS 60
+static int play_env_due(play_ctx *c, int last)
+{
+    if (!c->env_due)
+        return 0;
+    if (!last) {
+        c->swap_last = play_now_s();
+        if (c->swaps++ == 0)
+            c->swap_first = c->swap_last;
+        if (c->swaps <= PLAY_ENV_SWAPS)
+            return 0;
+    }
+    long n = c->swaps - 1;
+    double dt = c->swap_last - c->swap_first;
+    c->refresh_hz = n > 0 && dt > 0 ? n / dt : 0;
+    return play_write_env(c);
 }
 
 static int play_prepare(play_ctx *c)
@@ -378,6 +435,8 @@ static int play_prepare(play_ctx *c)
     hol_rec_meta meta;
     hol_sink_posix_meta(&meta, c->o.participant);
     snprintf(meta.study, sizeof meta.study, "%s", c->study);
+    if (play_env_meta(c->cmd, &c->o.env, c->o.study, &meta))
+        return CLI_EXIT_FAIL;
     st = play_session_open(c->cmd, &c->out, c->levels, c->nlevels, &meta, c->o.append, &c->s);
     if (st)
         return st;
@@ -396,7 +455,16 @@ static int play_prepare(play_ctx *c)
     }
     play_open_pad(c);
     play_open_audio(c);
-    return play_write_env(c, meta.session);
+    snprintf(c->session, sizeof c->session, "%s", meta.session);
+    typedef const unsigned char *(*get_string_fn)(unsigned);
+    get_string_fn gs = (get_string_fn)hol_egl_getproc("glGetString");
+    const unsigned char *gl = gs ? gs(0x1F01 /* GL_RENDERER */) : NULL;
+    snprintf(c->gl, sizeof c->gl, "%s", gl ? (const char *)gl : "");
+    c->refresh_hz = play_refresh_hz(&c->xw);
+    if (c->refresh_hz > 0 || !c->o.log_dir)
+        return play_write_env(c);
+    c->env_due = 1;
+    return 0;
 }
 
 /* ---- the loop ---------------------------------------------------------------------- */
@@ -538,7 +606,7 @@ static int play_draw(play_ctx *c)
     hol_x11_swap(&c->xw);
     alarm(0);
     play_stats_add(&c->fs, c->o.stats);
-    return 0;
+    return play_env_due(c, 0);
 }
 
 /* The frames: 0 when the session is over (or the input, or --frames), a
@@ -577,6 +645,8 @@ static int play_cleanup(play_ctx *c, int status, int abort)
 {
     if (c->s && !status)
         play_print_end(c->s);
+    if (c->s && play_env_due(c, 1) && !status)
+        status = CLI_EXIT_FAIL;
     if (c->o.stats)
         play_stats_end(&c->fs);
     if (c->use_pad)

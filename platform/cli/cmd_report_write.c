@@ -74,7 +74,10 @@ static void factor_columns(FILE *f, const report_run *r, int i, const char *rel)
     if (t->a.cues >= 0)
         fprintf(f, "%ld", t->a.cues);
     fprintf(f, ",%s,", t->minimap >= 0 && t->minimap <= 2 ? place[t->minimap] : "");
-    csv(f, rel, 1);
+    csv(f, rel, 0);
+    if (t->a.session_no > 0) /* the summary's session_no (empty: none) */
+        fprintf(f, "%ld", t->a.session_no);
+    fputc('\n', f);
 }
 
 int report_write_csv(const report_run *r)
@@ -94,7 +97,8 @@ int report_write_csv(const report_run *r)
     for (int d = 0; d < r->ndirs; d++)
         report_rel_dir(r, d, rels[d], sizeof rels[d]);
     fputs("participant,session,attempt,study,condition,position,level,mode,steps,optimum,"
-          "efficiency,time,end,tiling,room,cell,logdir,picture,q,cues,minimap,logdir_relative\n",
+          "efficiency,time,end,tiling,room,cell,logdir,picture,q,cues,minimap,logdir_relative,"
+          "session_no\n",
           a.f);
     for (int i = 0; i < r->natt; i++) {
         const hol_report_attempt *t = &r->att[i].a;

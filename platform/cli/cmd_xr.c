@@ -298,6 +298,7 @@ typedef struct xr_ctx {
     const xr_opts *o;
     char runtime[160], gl[160]; /* the host callback's (environment.csv) */
     int eye_w, eye_h;
+    int env_due;   /* the session is open, its environment row not written */
 } xr_ctx;
 
 /* The sound opens at the first step (the session is up); its line goes
@@ -352,15 +353,26 @@ static int xr_fit(void *user, const hol_fit *f)
     else if (f)
         xr_apply_fit(c, f);
     c->st = play_session_open(c->cmd, c->out, c->levels, c->nlevels, &c->meta, c->append, &c->s);
-    if (!c->st) {
-        play_env_host h = {"openxr", c->runtime, c->gl, "", 0, c->eye_w, c->eye_h};
-        c->st = play_env_write(c->cmd, c->o->log_dir, &c->o->env, c->meta.session,
-                               c->o->participant, c->o->study, &h, c->o->argc, c->o->argv)
-                    ? CLI_EXIT_FAIL : 0;
-    }
+    c->env_due = !c->st; /* written once the controller and refresh rate are known */
     if (!c->st)
         play_study_announce();
     return c->st != 0;
+}
+
+/* environment.csv's row (play_env.h), once the frames tell the hands'
+ * profile and the refresh rate (hol_xr_app.h), or at the run's end. */
+static void xr_environment(void *user, const char *controller, double refresh_hz,
+                           const char *how)
+{
+    xr_ctx *c = user;
+    (void)how;
+    if (!c->env_due)
+        return;
+    c->env_due = 0;
+    play_env_host h = {"openxr", c->runtime, c->gl, controller, refresh_hz, c->eye_w, c->eye_h};
+    if (play_env_write(c->cmd, c->o->log_dir, &c->o->env, c->meta.session, c->o->participant,
+                       c->o->study, &h, c->o->argc, c->o->argv) && !c->st)
+        c->st = CLI_EXIT_FAIL;
 }
 
 static const hol_app_view *xr_view(void *user)
@@ -421,8 +433,10 @@ static int xr_run(const xr_opts *o, xr_ctx *c, const hol_input *script, long nsc
     hol_xr_app_fns fns = {.user = c, .step = xr_step, .world = xr_world,
                           .level_started = xr_level_started, .poll_platform = xr_poll,
                           .fit = xr_fit, .view = xr_view,
-                          .haptic = o->no_haptics ? NULL : xr_haptic, .host = xr_host};
+                          .haptic = o->no_haptics ? NULL : xr_haptic, .host = xr_host,
+                          .environment = xr_environment};
     int rc = hol_xr_run(&d, &fns);
+    xr_environment(c, "", 0, ""); /* a run that failed before telling */
     return c->st ? c->st : rc ? CLI_EXIT_FAIL : CLI_EXIT_OK;
 }
 #endif
@@ -469,7 +483,8 @@ int cli_cmd_xr(int argc, char **argv)
     if (!st) {
         hol_sink_posix_meta(&c.meta, o.participant);
         snprintf(c.meta.study, sizeof c.meta.study, "%s", study);
-        st = xr_run(&o, &c, script, nscript);
+        st = play_env_meta(cmd, &o.env, o.study, &c.meta) ? CLI_EXIT_FAIL
+                                                           : xr_run(&o, &c, script, nscript);
     }
     hol_audio_close(c.au);
     int end = play_session_end(cmd, c.s, cli_caught_signal() != 0);

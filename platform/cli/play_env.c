@@ -12,6 +12,7 @@
 #include <sys/utsname.h>
 #include <unistd.h>
 
+#include "../../core/hol_rec.h"
 #include "../../core/hol_sha256.h"
 #include "../../core/hol_text.h"
 #include "../file/hol_file.h"
@@ -141,6 +142,31 @@ static int play_env_study(const char *cmd, const char *dir, const char *path,
     free(data);
     if (err) {
         cli_error(cmd, 0, "cannot write '%.200s': %s", name, strerror(errno));
+        return 1;
+    }
+    return 0;
+}
+
+int play_env_meta(const char *cmd, const play_env *e, const char *study_path, hol_rec_meta *m)
+{
+    m->session_no = e->session_no;
+    m->study_sha256[0] = 0;
+    if (study_path) {
+        uint8_t *data = NULL, dig[32];
+        size_t len = 0;
+        if (hol_file_read_all(study_path, 1 << 20, &data, &len)) {
+            cli_error(cmd, 0, "cannot read --study '%.200s' again", study_path);
+            return 1;
+        }
+        hol_sha256(data, len, dig);
+        free(data);
+        hol_sha256_hex(dig, m->study_sha256);
+    }
+    static char raw[PLAY_ENV_META_MAX * 240];
+    join(raw, sizeof raw, e->meta, e->nmeta, ";");
+    size_t need = hol_text_escape(raw, strlen(raw), m->meta, sizeof m->meta);
+    if (need >= sizeof m->meta || !hol_rec_meta_ok(m->meta)) {
+        cli_error(cmd, 0, "--meta: the notes do not fit the logs");
         return 1;
     }
     return 0;

@@ -17,6 +17,11 @@
  *   header PLAY_ENV_COLUMNS; the row written with one write(2) and
  *   fsync'ed). Every field is RFC 4180 and escaped (core/hol_text.h).
  *   Returns 0 or 1 (reported).
+ * - play_env_meta (before the session opens): the session's metadata for
+ *   summary.csv and the recording (hol_rec_meta's session_no,
+ *   study_sha256: the study file's SHA-256, read now; meta: the --meta
+ *   options joined with ';', escaped by hol_text_escape). 0, or 1
+ *   reported (the study cannot be read again).
  * - Replay writes no environment row: the environment is the live one.
  */
 #ifndef HOL_PLAY_ENV_H
@@ -29,9 +34,9 @@
 #define PLAY_ENV_OPTIONS "--session", "--meta"
 #define PLAY_ENV_USAGE                                                                   \
     "  --session N     the participant's session number, 1..999 (day 1, day 2),\n"      \
-    "                  in environment.csv (needs --log)\n"                               \
-    "  --meta KEY=VALUE  a note for environment.csv (needs --log; repeatable, up to\n"  \
-    "                  16; KEY 1..32 of a-z, 0-9, '_')\n"
+    "                  in summary.csv and environment.csv (needs --log)\n"              \
+    "  --meta KEY=VALUE  a note for summary.csv and environment.csv (needs --log;\n"    \
+    "                  repeatable, up to 16; KEY 1..32 of a-z, 0-9, '_')\n"
 
 typedef struct play_env {
     int session_no; /* 0: not given */
@@ -48,6 +53,9 @@ typedef struct play_env_host {
 
 int play_env_value(const char *cmd, const char *opt, const char *val, play_env *e);
 int play_env_check(const char *cmd, const play_env *e, const char *log_dir);
+struct hol_rec_meta;
+int play_env_meta(const char *cmd, const play_env *e, const char *study_path,
+                  struct hol_rec_meta *m);
 int play_env_write(const char *cmd, const char *log_dir, const play_env *e, const char *session,
                    const char *participant, const char *study_path, const play_env_host *h,
                    int argc, char **argv);

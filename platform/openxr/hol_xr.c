@@ -82,16 +82,19 @@ static int hol__instance(hol__xr *x)
     ai.applicationVM = x->d->android_vm;
     ai.applicationActivity = x->d->android_activity;
     ic.next = &ai;
-    const char *ext[] = {XR_KHR_OPENGL_ES_ENABLE_EXTENSION_NAME,
-                         XR_KHR_ANDROID_CREATE_INSTANCE_EXTENSION_NAME, NULL};
+    const char *ext[4] = {XR_KHR_OPENGL_ES_ENABLE_EXTENSION_NAME,
+                          XR_KHR_ANDROID_CREATE_INSTANCE_EXTENSION_NAME};
     ic.enabledExtensionCount = 2;
 #else
-    const char *ext[] = {XR_KHR_OPENGL_ENABLE_EXTENSION_NAME, NULL};
+    const char *ext[4] = {XR_KHR_OPENGL_ENABLE_EXTENSION_NAME};
     ic.enabledExtensionCount = 1;
 #endif
     x->hand_interaction = hol__has_extension(HOL_XR_EXT_HAND_INTERACTION);
     if (x->hand_interaction)
         ext[ic.enabledExtensionCount++] = HOL_XR_EXT_HAND_INTERACTION;
+    x->fb_refresh = hol__has_extension(XR_FB_DISPLAY_REFRESH_RATE_EXTENSION_NAME);
+    if (x->fb_refresh)
+        ext[ic.enabledExtensionCount++] = XR_FB_DISPLAY_REFRESH_RATE_EXTENSION_NAME;
     ic.enabledExtensionNames = ext;
     snprintf(ic.applicationInfo.applicationName, sizeof ic.applicationInfo.applicationName, "%s",
              x->d->app_name ? x->d->app_name : "Holonomy");
@@ -115,6 +118,24 @@ static int hol__instance(hol__xr *x)
     return 0;
 }
 
+/* The display's refresh rate from XR_FB_display_refresh_rate, where the
+ * runtime lists it (x->refresh_fb; a failure leaves it 0: measured). */
+static void hol__refresh_fb(hol__xr *x)
+{
+    PFN_xrGetDisplayRefreshRateFB get = NULL;
+    float hz = 0;
+    if (x->fb_refresh &&
+        XR_SUCCEEDED(xrGetInstanceProcAddr(x->instance, "xrGetDisplayRefreshRateFB",
+                                           (PFN_xrVoidFunction *)&get)) &&
+        get && XR_SUCCEEDED(get(x->session, &hz)) && hz > 0)
+        x->refresh_fb = hz;
+    hol__say(x, "xr: %s %s", XR_FB_DISPLAY_REFRESH_RATE_EXTENSION_NAME,
+             x->refresh_fb > 0 ? "gives the display's refresh rate"
+             : x->fb_refresh   ? "gave no rate: it is measured (predictedDisplayPeriod)"
+                               : "not listed by the runtime: the refresh rate is measured "
+                                 "(predictedDisplayPeriod)");
+}
+
 /* The session and everything on it, before the first frame. */
 static int hol__setup(hol__xr *x, const void *binding)
 {
@@ -126,6 +147,7 @@ static int hol__setup(hol__xr *x, const void *binding)
     HOL__XR(x, "create the headset session", xrCreateSession(x->instance, &sc, &x->session));
     if (hol__spaces(x) || hol__swapchains(x) || hol__quad_setup(x))
         return 1;
+    hol__refresh_fb(x);
     if (x->fns->host) {
         typedef const unsigned char *(*get_string_fn)(unsigned);
         get_string_fn gs = (get_string_fn)x->getproc("glGetString");
@@ -204,6 +226,7 @@ static int hol__run(hol__xr *x, const void *binding)
             nanosleep(&ts, NULL);
         }
     }
+    hol__tell_env(x, 1);
     hol__figures(x);
     return x->failed;
 }

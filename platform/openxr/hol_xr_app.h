@@ -50,7 +50,23 @@ typedef struct hol_xr_app_fns {
      * the strings live only during the call. */
     void (*host)(void *user, const char *runtime, const char *gl_renderer, int eye_w,
                  int eye_h);
+    /* Optional: what is known only once frames run, called once: the
+     * controller (the hands' interaction profile as the input's device
+     * name, hol_input_device_name: "xr-simple", "xr-touch", ...; "xr" for
+     * a profile not in hol_xr_bind.h's list; "" none) and the display's
+     * refresh rate in Hz (XR_FB_display_refresh_rate's where the runtime
+     * lists the extension, how "runtime"; else 1e9 over the mean
+     * predictedDisplayPeriod of xrWaitFrame's first HOL_XR_REFRESH_FRAMES
+     * frames, how "measured"; 0 and "" when no frame ran). Called at the
+     * first frame where the rate is known and a hand's profile is (or
+     * HOL_XR_PROFILE_WAIT frames have passed without one), else when the
+     * run ends. */
+    void (*environment)(void *user, const char *controller, double refresh_hz,
+                        const char *how);
 } hol_xr_app_fns;
+
+#define HOL_XR_REFRESH_FRAMES 60
+#define HOL_XR_PROFILE_WAIT 600
 
 typedef struct hol_xr_desc {
     const char *app_name;    /* NULL: "Holonomy" */

@@ -5,6 +5,8 @@
 #define _GNU_SOURCE
 #include "hol_xr_state.h"
 
+#include "../../core/hol_input_io.h"
+
 /* OpenXR structs are initialised by their type alone ({XR_TYPE_...}), the
  * rest zero: the API's own idiom. */
 #pragma GCC diagnostic ignored "-Wmissing-field-initializers"
@@ -292,11 +294,39 @@ static int hol__locate_views(hol__xr *x, XrTime t)
            (vs.viewStateFlags & XR_VIEW_STATE_ORIENTATION_VALID_BIT);
 }
 
+void hol__tell_env(hol__xr *x, int last)
+{
+    if (x->env_told || !x->fns->environment)
+        return;
+    int p = x->profile[1] >= 0 ? x->profile[1] : x->profile[0];
+    int rate = x->refresh_fb > 0 || x->periods >= HOL_XR_REFRESH_FRAMES;
+    if (!last && !(rate && (p >= 0 || x->any_profile || x->submitted >= HOL_XR_PROFILE_WAIT)))
+        return;
+    x->env_told = 1;
+    double hz = x->refresh_fb > 0 ? x->refresh_fb
+                : x->periods      ? 1e9 / (x->period_ns / (double)x->periods)
+                                  : 0;
+    const char *how = x->refresh_fb > 0 ? "runtime" : x->periods ? "measured" : "";
+    const char *ctl = p >= 0 ? hol_input_device_name(hol_xr_profile_device(p))
+                      : x->any_profile ? "xr"
+                                       : "";
+    if (hz > 0)
+        hol__say(x, "xr: display refresh %.3f Hz (%s%s)", hz, how,
+                 x->refresh_fb > 0 ? ": XR_FB_display_refresh_rate"
+                                   : ": the mean predictedDisplayPeriod of the first frames");
+    x->fns->environment(x->fns->user, ctl ? ctl : "", hz, how);
+}
+
 int hol__frame(hol__xr *x)
 {
     XrFrameWaitInfo wi = {XR_TYPE_FRAME_WAIT_INFO};
     XrFrameState fs = {XR_TYPE_FRAME_STATE};
     HOL__XR(x, "wait for the next frame", xrWaitFrame(x->session, &wi, &fs));
+    if (x->periods < HOL_XR_REFRESH_FRAMES && fs.predictedDisplayPeriod > 0) {
+        x->period_ns += (double)fs.predictedDisplayPeriod;
+        x->periods++;
+    }
+    hol__tell_env(x, 0);
     double c0 = hol__thread_cpu_ms();
     XrFrameBeginInfo bi = {XR_TYPE_FRAME_BEGIN_INFO};
     HOL__XR(x, "begin the next frame", xrBeginFrame(x->session, &bi));

@@ -157,6 +157,11 @@ typedef struct hol__xr {
     int any_profile;  /* a hand has a profile not in hol_xr_bind.h's list */
     int reached_focused;
     int hand_interaction; /* XR_EXT_hand_interaction enabled (the runtime lists it) */
+    int fb_refresh;   /* XR_FB_display_refresh_rate enabled (the runtime lists it) */
+    double refresh_fb; /* its rate, Hz (0: not known) */
+    double period_ns; /* predictedDisplayPeriod summed over the first frames */
+    long periods;     /* how many (up to HOL_XR_REFRESH_FRAMES) */
+    int env_told;     /* fns->environment was called */
     int failed;       /* a failure was reported: the run ends with status 1 */
     int lost;         /* the session or the instance is gone */
     int external;     /* the instance and GL context are the caller's */
@@ -269,6 +274,9 @@ int hol__quad_setup(hol__xr *x);
 int hol__quad_layer(hol__xr *x, const hol_app_view *v, const float shift[3],
                     XrCompositionLayerQuad *out, int *out_submit);
 void hol__quad_free(hol__xr *x);
+/* hol_xr_frame.c: fns->environment once what it tells is known (last: the
+ * run ends, tell what is known now) */
+void hol__tell_env(hol__xr *x, int last);
 /* hol_xr_frame.c: one frame (xrWaitFrame to xrEndFrame); 0 ok, 1 failure */
 int hol__frame(hol__xr *x);
 /* hol_xr_events.c: every waiting event; sets x->life.done to leave */

@@ -121,7 +121,7 @@ await check('a reload loses nothing: the attempt in play is kept (aborted at pag
     { timeout: 30000 });
   const summary = (await stored(p.page, 'summary.csv'))?.toString('utf8').trim().split('\n') || [];
   assert(summary.length === 2 && summary[1].startsWith(session1 + ',') &&
-    new RegExp(`,${before},-?\\d+,[\\d.]+,aborted$`).test(summary[1]),
+    new RegExp(`,${before},-?\\d+,[\\d.]+,aborted,,,$`).test(summary[1]),
     `summary.csv (attempt 1, ${before} steps, aborted): ` + summary.join(' | '));
   const rows = await stepRows(p.page);
   assert(rows.length === before && rows[0].dir === 'N' && rows[1].dir === 'S', 'steps-001.csv: ' + JSON.stringify(rows));
@@ -166,7 +166,7 @@ await check('every mode (flag, keys, explore, tutorial) plays on the page; its r
       assert(b.equals(fs.readFileSync(path.join(dir, 'logs', n))), `${mode}: ${n} differs from the replay's`);
     }
     const row = fs.readFileSync(path.join(dir, 'logs', 'summary.csv'), 'utf8').trim().split('\n')[1];
-    assert(row.includes(`,${mode},`) && /,quit$/.test(row), mode + ': summary row ' + row);
+    assert(row.includes(`,${mode},`) && /,quit,,,$/.test(row), mode + ': summary row ' + row);
     assert(!p.errors.length, mode + ': errors: ' + p.errors.join('; '));
     await p.ctx.close();
   }
@@ -850,7 +850,7 @@ await check('the browser recording replays on the desktop to the same step rows 
     assert(b.equals(fs.readFileSync(path.join(logs, n))), n + ' differs from the replay\'s');
   }
   const summary = fs.readFileSync(path.join(logs, 'summary.csv'), 'utf8').trim().split('\n');
-  assert(summary.length === 3 && /,restart$/.test(summary[1]) && /,quit$/.test(summary[2]),
+  assert(summary.length === 3 && /,restart,,,$/.test(summary[1]) && /,quit,,,$/.test(summary[2]),
     'summary: ' + summary.join(' | '));
   console.log(`# ${names.length} log files equal: ${names.join(' ')}`);
 });
