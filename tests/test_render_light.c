@@ -13,13 +13,23 @@
  * lanterns' sum, green the fog factor.
  *
  * - test_light_matches_model: every floor pixel of views in {4,5}, {4,6},
- *   {4,8}, a 5 x 5 room and 0.7 m cells within 3 of 255 of the model.
+ *   {4,8}, a 5 x 5 room and 0.7 m cells within 3 of 255 of the model,
+ *   trunk shadows included: the model puts a trunk on every vertex its
+ *   frames reach and takes each trunk's distance to the floor geodesic
+ *   from the pixel's point to the lantern by a ternary search along it;
+ *   the tile's nearest lantern casts them (docs/rendering.md#lighting).
+ *   Unshadowed pixels must all match (but for ones on a cell edge, where
+ *   the raster may take either tile); of the shadowed, 95 % (a tile keeps
+ *   4 trunks).
  * - test_flat_equals_euclid: in {4,4} the same pixels equal flat-space
- *   lighting (room metres, Euclidean distance, the same falloff).
+ *   lighting (room metres, Euclidean distance, the same falloff), with
+ *   trunk shadows from a trunk on every grid point.
  * - test_light_continuous_across_edges: pixel pairs on both sides of a
  *   cell edge (one branch the other plus the step across it: neighbours in
  *   the world) step by no more than the light's gradient either side of
- *   the edge (within 3 of 255); no model involved.
+ *   the edge (within 3 of 255), away from trunk shadows' edges (the model
+ *   says where); where both sides lie in the same full shadow, both are
+ *   darker than the light without it.
  * - test_lantern_through_portal: a lantern's light falls on other tiles
  *   seen through portals (two or more cells away), as the model says.
  * - test_day_unchanged_without_lighting: lanterns at day change nothing.
