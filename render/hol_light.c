@@ -122,6 +122,204 @@ static void hol__fireflies(const hol_frame_desc *f, const struct hol_world *w,
     }
 }
 
+/* The tile-frame constants of trunk shadows (corners, edge reflections,
+ * circumradius, the trunk's radius and soft edge in curvature units). */
+static void hol__shadow_frame(hol_light_frame *o)
+{
+    double A = o->klein * o->cell_m / 2; /* Klein coordinate of an edge */
+    for (int k = 0; k < 4; k++)
+        hol_hyper_from_klein(k & 1 ? A : -A, k & 2 ? A : -A, o->flat, o->corner[k]);
+    for (int e = 0; e < 4; e++) {
+        /* edge e: x = +-A (e 0, 1) or y = +-A (e 2, 3); its plane's normal
+         * n = (1, 0, sA) (or (0, 1, sA)), reflection v - 2 <v,n>/<n,n> n */
+        double sg = e & 1 ? -1 : 1, *M = o->refl[e];
+        int ax = e < 2 ? 0 : 1;
+        memset(M, 0, 9 * sizeof *M);
+        M[0] = M[4] = M[8] = 1;
+        if (o->flat) {
+            M[4 * ax] = -1;
+            M[3 * ax + 2] = sg; /* x -> sg - x: the line x = sg/2 */
+            continue;
+        }
+        double n[3] = {0, 0, sg * A}, jn[3];
+        n[ax] = 1;
+        jn[0] = n[0], jn[1] = n[1], jn[2] = -n[2];
+        double nn = 1 - A * A;
+        for (int i = 0; i < 3; i++)
+            for (int j = 0; j < 3; j++)
+                M[3 * i + j] -= 2 * n[i] * jn[j] / nn;
+    }
+    double c[3] = {0, 0, 1};
+    o->rho = hol_hyper_dist(c, o->corner[0], o->flat);
+    o->trunk_r = HOL_SHADOW_TRUNK_M / o->metres_per_unit;
+    o->reach = HOL_LIGHT_RADIUS_M / o->metres_per_unit;
+    double a = (HOL_SHADOW_TRUNK_M - HOL_SHADOW_EDGE_M) / o->metres_per_unit;
+    double b = (HOL_SHADOW_TRUNK_M + HOL_SHADOW_EDGE_M) / o->metres_per_unit;
+    o->s0 = o->flat ? a : sinh(a);
+    o->s1 = o->flat ? b : sinh(b);
+}
+
+static double hol__lor(const double a[3], const double b[3], int flat)
+{
+    return a[0] * b[0] + a[1] * b[1] - (flat ? 0 : a[2] * b[2]);
+}
+
+double hol_light_seg_dist(const double t[3], const double a[3], const double b[3], int flat)
+{
+    double det = t[0] * (a[1] * b[2] - a[2] * b[1]) - t[1] * (a[0] * b[2] - a[2] * b[0]) +
+                 t[2] * (a[0] * b[1] - a[1] * b[0]);
+    double at = hol_hyper_dist(a, t, flat), bt = hol_hyper_dist(b, t, flat);
+    double ab = hol_hyper_dist(a, b, flat);
+    if (flat) {
+        double u[2] = {b[0] - a[0], b[1] - a[1]}, v[2] = {t[0] - a[0], t[1] - a[1]};
+        double w[2] = {t[0] - b[0], t[1] - b[1]};
+        if (ab < 1e-12 || u[0] * v[0] + u[1] * v[1] <= 0)
+            return at;
+        if (u[0] * w[0] + u[1] * w[1] >= 0)
+            return bt;
+        return fabs(det) / ab;
+    }
+    double cab = -hol__lor(a, b, 0), cat = -hol__lor(a, t, 0), cbt = -hol__lor(b, t, 0);
+    if (ab < 1e-12 || cab * cat <= cbt)
+        return at;
+    if (cab * cbt <= cat)
+        return bt;
+    return asinh(fabs(det) / sinh(ab));
+}
+
+static void hol__mul3(const double A[9], const double B[9], double out[9])
+{
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            out[3 * i + j] = A[3 * i] * B[j] + A[3 * i + 1] * B[3 + j] + A[3 * i + 2] * B[6 + j];
+}
+
+/* Is point c within dmax of the segment from one of the used lights to the
+ * tile's centre? */
+static int hol__near_segs(const hol_light_frame *lf, const double c[3], const double lp[][3],
+                          const uint8_t *use, int nl, double dmax)
+{
+    static const double o[3] = {0, 0, 1};
+    for (int i = 0; i < nl; i++)
+        if (use[i] && hol_light_seg_dist(c, lp[i], o, lf->flat) < dmax)
+            return 1;
+    return 0;
+}
+
+/* The trunks that may shadow a tile: the corners of the tiles whose centre
+ * lies within 2 rho + r of a light's segment (breadth first over edge
+ * reflections from the tile itself); returns how many. */
+static int hol__shadow_trunks(const hol_light_frame *lf, const double lp[][3],
+                              const uint8_t *use, int nl, double (*vt)[3], int maxv)
+{
+    enum { NT = 48 };
+    double fr[NT][9], cen[NT][3];
+    int n = 1, nv = 0;
+    memset(fr[0], 0, sizeof fr[0]);
+    fr[0][0] = fr[0][4] = fr[0][8] = 1;
+    cen[0][0] = cen[0][1] = 0;
+    cen[0][2] = 1;
+    double wide = 2 * lf->rho + lf->trunk_r, eps = 1e-6;
+    for (int h = 0; h < n; h++) {
+        for (int k = 0; k < 4; k++) {
+            double v[3];
+            for (int r = 0; r < 3; r++)
+                v[r] = fr[h][3 * r] * lf->corner[k][0] + fr[h][3 * r + 1] * lf->corner[k][1] +
+                       fr[h][3 * r + 2] * lf->corner[k][2];
+            int dup = 0;
+            for (int i = 0; i < nv && !dup; i++)
+                dup = hol_hyper_dist(vt[i], v, lf->flat) < eps;
+            if (!dup && nv < maxv)
+                memcpy(vt[nv++], v, sizeof v);
+        }
+        for (int e = 0; e < 4 && n < NT; e++) {
+            hol__mul3(fr[h], lf->refl[e], fr[n]);
+            double *c = cen[n];
+            for (int r = 0; r < 3; r++)
+                c[r] = fr[n][3 * r + 2];
+            int dup = 0;
+            for (int i = 0; i < n && !dup; i++)
+                dup = hol_hyper_dist(cen[i], c, lf->flat) < eps;
+            if (!dup && hol__near_segs(lf, c, lp, use, nl, wide))
+                n++;
+        }
+    }
+    return nv;
+}
+
+/* Klein point k in triangle (a, b, c) (straight in Klein; either winding) */
+static int hol__in_tri(const double k[2], const double a[2], const double b[2], const double c[2])
+{
+    double d0 = (b[0] - a[0]) * (k[1] - a[1]) - (b[1] - a[1]) * (k[0] - a[0]);
+    double d1 = (c[0] - b[0]) * (k[1] - b[1]) - (c[1] - b[1]) * (k[0] - b[0]);
+    double d2 = (a[0] - c[0]) * (k[1] - c[1]) - (a[1] - c[1]) * (k[0] - c[0]);
+    return (d0 >= 0 && d1 >= 0 && d2 >= 0) || (d0 <= 0 && d1 <= 0 && d2 <= 0);
+}
+
+/* Can trunk t shadow some point of the tile from light l? It must lie
+ * within r of the convex hull of l and the tile (the tile and the
+ * triangles from l over its edges; straight in Klein): inside, or within
+ * r of an edge or of a segment from l to a corner. */
+static int hol__may_shadow(const hol_light_frame *lf, const double t[3], const double l[3])
+{
+    static const int cyc[5] = {0, 1, 3, 2, 0};
+    double A = lf->klein * lf->cell_m / 2, r = lf->trunk_r;
+    double tk[2] = {t[0] / t[2], t[1] / t[2]}, lk[2] = {l[0] / l[2], l[1] / l[2]};
+    if (fabs(tk[0]) <= A && fabs(tk[1]) <= A)
+        return 1;
+    for (int e = 0; e < 4; e++) {
+        const double *a = lf->corner[cyc[e]], *b = lf->corner[cyc[e + 1]];
+        double ak[2] = {a[0] / a[2], a[1] / a[2]}, bk[2] = {b[0] / b[2], b[1] / b[2]};
+        if (hol__in_tri(tk, lk, ak, bk) || hol_light_seg_dist(t, l, a, lf->flat) < r ||
+            hol_light_seg_dist(t, a, b, lf->flat) < r)
+            return 1;
+    }
+    return 0;
+}
+
+void hol_light_shadows(const hol_light_frame *lf, const double lp[][3], const uint8_t *use,
+                       int nl, hol_shadow_set *out)
+{
+    enum { NV = 96 };
+    double vt[NV][3], key[HOL_SHADOW_TRUNKS];
+    static const double o[3] = {0, 0, 1};
+    out->n = 0;
+    out->slot = 0;
+    int j = 0;
+    while (j < nl && !use[j])
+        j++;
+    if (j == nl)
+        return;
+    out->slot = j;
+    const double *l = lp[j];
+    double A = lf->klein * lf->cell_m / 2;
+    if (fabs(l[0] / l[2]) <= A && fabs(l[1] / l[2]) <= A)
+        return; /* a light on the tile: its trunks shadow only other tiles */
+    uint8_t one[HOL_LIGHT_PER_TILE] = {0};
+    one[j] = 1;
+    int nv = hol__shadow_trunks(lf, lp, one, nl, vt, NV);
+    for (int i = 0; i < nv; i++) {
+        double d = hol_hyper_dist(l, vt[i], lf->flat);
+        if (d >= lf->reach + lf->trunk_r ||
+            hol_light_seg_dist(vt[i], l, o, lf->flat) >= lf->rho + lf->trunk_r ||
+            !hol__may_shadow(lf, vt[i], l))
+            continue;
+        /* insert by distance to the light (ties: the one found first) */
+        int k = out->n < HOL_SHADOW_TRUNKS ? out->n++ : HOL_SHADOW_TRUNKS;
+        while (k > 0 && key[k - 1] > d) {
+            if (k < HOL_SHADOW_TRUNKS) {
+                key[k] = key[k - 1];
+                memcpy(out->trunk[k], out->trunk[k - 1], sizeof out->trunk[0]);
+            }
+            k--;
+        }
+        if (k < HOL_SHADOW_TRUNKS) {
+            key[k] = d;
+            memcpy(out->trunk[k], vt[i], sizeof vt[0]);
+        }
+    }
+}
+
 hol_err hol_light_prepare(const hol_frame_desc *f, const struct hol_world *w,
                           hol_light_frame *out)
 {
@@ -144,6 +342,7 @@ hol_err hol_light_prepare(const hol_frame_desc *f, const struct hol_world *w,
         out->metres_per_unit = m / hol_hyper_edge_q(q);
         out->circum_m = acosh(1 / tan(HOL__PI / q)) * out->metres_per_unit;
     }
+    hol__shadow_frame(out);
     double dx = f->cam.eye[0] - (f->user.col + 0.5) * m;
     double dz = f->cam.eye[2] - (f->user.row + 0.5) * m;
     hol_light_point(out, dx, dz, out->eye);

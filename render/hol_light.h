@@ -70,6 +70,29 @@
  *   light in the light's frame, the same numbers as the distance. The
  *   light is then multiplied by smoothstep(cos OUTER, cos INNER, cos
  *   angle) (HOL_LIGHT_SPOT_*_DEG).
+ * - Trunk shadows (issue 27): a trunk of radius HOL_SHADOW_TRUNK_M stands on
+ *   every vertex of the tiling, taller (2.7 m and more) than any light, so
+ *   a point P under its top is in its shadow from light L exactly when the
+ *   floor geodesic segment from P to L's foot passes within the radius of
+ *   the trunk's axis T (H2 x E is a product: the segment in H2 x E projects
+ *   onto the floor geodesic). The distance from T to the geodesic through P
+ *   and L: sinh d = |det(T, P, L)| / sinh x (x = d(P, L); flat: |det| /
+ *   |P - L|, points (x, y, 1)); T lies between when the angles at P and at L
+ *   are acute: cosh PL cosh PT > cosh LT and cosh PL cosh LT > cosh PT
+ *   (flat: PL^2 + PT^2 > LT^2 and PL^2 + LT^2 > PT^2). The light is
+ *   multiplied by max(0, 1 - sum of the occlusions o) over the trunks the
+ *   tile has for it, o = 1 - smoothstep(r - e, r + e, d) (e =
+ *   HOL_SHADOW_EDGE_M) when T lies between, 0 otherwise.
+ * - Which trunks (the budget: docs/performance.md#lighting):
+ *   hol_light_shadows gives a tile the shadows of one light, its nearest
+ *   lantern (the first of its slots that is not a firefly; none when that
+ *   lantern stands on the tile, whose own corners shadow only other tiles),
+ *   up to HOL_SHADOW_TRUNKS trunks: among the corners of the tiles whose
+ *   centre lies within 2 rho + r of the segment from the light to the
+ *   tile's centre (rho the circumradius), those within r of the convex hull
+ *   of the light and the tile and within R + r of the light (only those can
+ *   shadow a point of the tile), nearest the light first. The other
+ *   lanterns of the tile cast none on it.
  */
 #ifndef HOL_LIGHT_H
 #define HOL_LIGHT_H
@@ -96,6 +119,9 @@
 #define HOL_LIGHT_SPOT_TILT_DEG 45.0
 #define HOL_LIGHT_SPOT_OUTER_DEG 35.0
 #define HOL_LIGHT_SPOT_INNER_DEG 25.0
+#define HOL_SHADOW_TRUNKS 4
+#define HOL_SHADOW_TRUNK_M 0.09
+#define HOL_SHADOW_EDGE_M 0.02
 
 struct hol_world;
 
@@ -129,7 +155,23 @@ typedef struct hol_light_frame {
     int fx;                       /* 2: a spot is placed, 1: fireflies but
                                      no spot, 0: neither (the renderer's
                                      HOL_FX programs) */
+    /* trunk shadows, in a tile's own frame (curvature units; flat: sides) */
+    double corner[4][3];          /* its corners: the trunks' axes */
+    double refl[4][9];            /* the reflections in its four edges */
+    double rho;                   /* its circumradius */
+    double trunk_r;               /* HOL_SHADOW_TRUNK_M */
+    double reach;                 /* HOL_LIGHT_RADIUS_M */
+    double s0, s1;                /* the soft edge: sinh (flat: the distance)
+                                     of r - e and r + e */
 } hol_light_frame;
+
+/* A tile's trunk shadows (hol_light_shadows), in the tile's own frame. */
+typedef struct hol_shadow_set {
+    int n;                                /* trunks, 0..HOL_SHADOW_TRUNKS */
+    int slot;                             /* the light casting them: its
+                                             index in lp */
+    double trunk[HOL_SHADOW_TRUNKS][3];   /* the trunks' points */
+} hol_shadow_set;
 
 /* The frame's lights from f (the user, the cell, the eye, the lanterns and
  * their spots; with f->fireflies and a world, the fireflies of its tiles).
@@ -152,6 +194,16 @@ int hol_light_firefly(hol_tile t, const hol_tile_content *c, double cell_m, doub
  * when t is too far for a frame. */
 int hol_light_tile(const hol_light_frame *lf, hol_tile t, double out_frame[9],
                    int out_idx[HOL_LIGHT_PER_TILE]);
+
+/* The trunk shadow pairs of a tile (see the contract): lp[0..nl-1] its
+ * lights' points in its own frame (hyperboloid; flat (x, y, 1)), use[i] 0
+ * for a light that casts none (a firefly). Deterministic; no allocation. */
+void hol_light_shadows(const hol_light_frame *lf, const double lp[][3], const uint8_t *use,
+                       int nl, hol_shadow_set *out);
+
+/* The distance (curvature units; flat: tile sides) from point t to the
+ * geodesic segment from a to b. */
+double hol_light_seg_dist(const double t[3], const double a[3], const double b[3], int flat);
 
 /* The point of the tile map: (x, z) metres in a tile's own frame to its
  * hyperboloid point in that tile's frame (see the contract). */

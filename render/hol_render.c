@@ -12,6 +12,7 @@
 #include "hol_mesh.h"
 #include "hol_scene.h"
 
+#include "../core/hol_hyper.h"
 #include "../core/hol_world.h"
 
 #define HOL__STR2(x) #x
@@ -70,6 +71,7 @@ typedef struct hol__item {
     float tl[4][4]; /* u_tl: its lights and the eye in the tile's own frame */
     float tx[7][4]; /* u_tx: the spots' tangents (3) and sines, heights,
                        lantern and firefly weights (hol__item_lights) */
+    float ts[8][4]; /* u_ts: its trunk shadow pairs (hol__item_shadows) */
     uint32_t first, count; /* index range */
     float model[16];
 } hol__item;
@@ -78,7 +80,7 @@ typedef struct hol__item {
 typedef struct hol__prog {
     GLuint prog;
     GLint u_vp, u_model, u_mode, u_id, u_eye, u_fog, u_fogd, u_lin, u_wedge, u_wmode;
-    GLint u_light, u_klein, u_mpu2, u_tl, u_eyeh, u_lonly, u_tx;
+    GLint u_light, u_klein, u_mpu2, u_tl, u_eyeh, u_lonly, u_tx, u_ts, u_soff;
 } hol__prog;
 
 struct hol_render {
@@ -144,6 +146,10 @@ static const char *hol__vs =
     "uniform vec4 u_tl[4];\n"
     "out vec4 v_L;\n"
     "out float v_Le;\n"
+    /* the tile's trunk shadows (hol__item_shadows): A and T, affine */
+    "uniform vec4 u_ts[8];\n"
+    "out vec4 v_A;\n"
+    "out vec4 v_T;\n"
     "#if HOL_FX == 2\n"
     "uniform vec4 u_tx[7];\n"
     "out vec4 v_U;\n" /* <u, (k, 1)>: a spot's direction, affine too */
@@ -157,6 +163,8 @@ static const char *hol__vs =
     "#if HOL_LIT == 1\n"
     "  v_L = u_tl[2] - v_loc.x * u_tl[0] - v_loc.z * u_tl[1];\n"
     "  v_Le = u_tl[3].z - v_loc.x * u_tl[3].x - v_loc.z * u_tl[3].y;\n"
+    "  v_A = v_loc.x * u_ts[0] + v_loc.z * u_ts[1] + u_ts[2];\n"
+    "  v_T = u_ts[5] - v_loc.x * u_ts[3] - v_loc.z * u_ts[4];\n"
     "#if HOL_FX == 2\n"
     "  v_U = v_loc.x * u_tx[0] + v_loc.z * u_tx[1] - u_tx[2];\n"
     "#endif\n"
@@ -194,6 +202,34 @@ static const char *hol__vs =
     "#endif\n" \
     "  vec4 w = max(1.0 - d2 * (1.0 / (" HOL__STR(HOL_LIGHT_RADIUS_M) " * " HOL__STR(HOL_LIGHT_RADIUS_M) ")), 0.0);\n"
 
+/* The trunk shadows of a tile (hol_light.h): up to four trunks t from
+ * one of its lights, l (the one-hot u_ts[7] selects it). Per trunk, A =
+ * det(t, (k, 1), l) / (the soft edge's width) and T = -<(k, 1), t> from the
+ * vertex shader, so sinh d = g |A| / sinh x (flat: d = |A| / |k - l|); the
+ * trunk lies between the point and the light when cosh PL cosh PT > cosh
+ * LT (flat: PL^2 + PT^2 > LT^2; the light's side holds for every trunk
+ * hol_light_shadows picks); the light is multiplied by 1 - the sum of the
+ * occlusions (0 at least). sh: sinh x of each light (flat: unused). */
+#define HOL__SHADOW_GLSL \
+    "#if HOL_FLAT\n" \
+    "#define HOL_SH c2\n" \
+    "#else\n" \
+    "#define HOL_SH sh\n" \
+    "#endif\n" \
+    "vec4 hol_shadow(float g, float o, vec4 L, vec4 c2, vec4 sh) {\n" \
+    "  vec4 sel = u_ts[7];\n" \
+    "#if HOL_FLAT\n" \
+    "  float cp = dot(c2, sel), shp = sqrt(cp);\n" \
+    "  vec4 ok = step(u_ts[6], cp + 2.0 * v_T + o);\n" \
+    "#else\n" \
+    "  float cp = g * dot(L, sel), shp = dot(sh, sel);\n" \
+    "  vec4 ok = step(u_ts[6], (cp * g) * v_T);\n" \
+    "#endif\n" \
+    "  vec4 e = clamp(abs(v_A) * (g / max(shp, 1e-6)) - u_soff, 0.0, 1.0);\n" \
+    "  float occ = dot(ok, 1.0 - e * e * (3.0 - 2.0 * e));\n" \
+    "  return 1.0 - sel * min(occ, 1.0);\n" \
+    "}\n"
+
 static const char *hol__fs =
     "precision highp float;\n"
     "in vec3 v_nrm;\n"
@@ -218,6 +254,10 @@ static const char *hol__fs =
     "#if HOL_LIT == 1\n"
     "in vec4 v_L;\n"
     "in float v_Le;\n"
+    "in vec4 v_A;\n"
+    "in vec4 v_T;\n"
+    "uniform vec4 u_ts[8];\n"
+    "uniform float u_soff;\n"
     "#if HOL_FX\n"
     "uniform vec4 u_tx[7];\n"
     "#endif\n"
@@ -249,6 +289,7 @@ static const char *hol__fs =
      * c^2 = 2 (cosh x - 1) = 2 g L - 2, sinh x = sqrt(c^2 (1 + c^2/4)),
      * x = log(cosh x + sinh x); flat: the slot's z is |l|^2/2 and
      * c^2 = |k - l|^2 = 2 L + |k|^2, x = c */
+    HOL__SHADOW_GLSL
     "#if HOL_FX\n"
     /* per slot: u_tx[4] the light's height, [5] a lantern's weight, [6] a
      * firefly's (the second sum, ff); a spot (u_tx[3] its sin(tilt), -2:
@@ -261,6 +302,7 @@ static const char *hol__fs =
     HOL__FALLOFF_GLSL
     "  vec4 id = inversesqrt(max(d2, 1e-8));\n"
     "  vec4 f = w * w * num / den;\n"
+    "  f *= hol_shadow(g, o, L, c2, HOL_SH);\n"
     /* the cone: only the programs of frames with a spot (HOL_FX 2) */
     "#if HOL_FX == 2\n"
     "  {\n"
@@ -282,7 +324,7 @@ static const char *hol__fs =
     "float hol_lights(vec4 L, float g2, float o, float dh, float nup) {\n"
     "  vec4 c2 = max(g2 * L + o, 0.0);\n"
     HOL__FALLOFF_GLSL
-    "  vec4 f = w * w * num / den;\n"
+    "  vec4 f = w * w * num / den * hol_shadow(0.5 * g2, o, L, c2, HOL_SH);\n"
     "  return dot(f, 0.3 + (0.7 * max(nup, 0.0) * max(dh, 0.0)) * inversesqrt(max(d2, 1e-8)));\n"
     "}\n"
     "#endif\n"
@@ -400,11 +442,11 @@ static int hol__make_prog(hol_render *r, hol__prog *pg, int k)
     static const char *const names[] = {"u_vp", "u_model", "u_mode", "u_id", "u_eye",
                                         "u_fog", "u_fogd", "u_lin", "u_wedge", "u_wmode",
                                         "u_light", "u_klein", "u_mpu2", "u_tl", "u_eyeh",
-                                        "u_lonly", "u_tx"};
+                                        "u_lonly", "u_tx", "u_ts", "u_soff"};
     GLint *loc[] = {&pg->u_vp, &pg->u_model, &pg->u_mode, &pg->u_id, &pg->u_eye,
                     &pg->u_fog, &pg->u_fogd, &pg->u_lin, &pg->u_wedge, &pg->u_wmode,
                     &pg->u_light, &pg->u_klein, &pg->u_mpu2, &pg->u_tl, &pg->u_eyeh,
-                    &pg->u_lonly, &pg->u_tx};
+                    &pg->u_lonly, &pg->u_tx, &pg->u_ts, &pg->u_soff};
     for (size_t i = 0; i < sizeof loc / sizeof loc[0]; i++)
         *loc[i] = r->gl.GetUniformLocation(pg->prog, names[i]);
     return 0;
@@ -809,6 +851,46 @@ static void hol__tile_tangent(const double inv[9], const double u[3], const doub
     out[2] = (float)(flat ? a[0] * b[0] + a[1] * b[1] : a[2]);
 }
 
+/* A lit tile's trunk shadows (hol_light.h; the shader's hol_shadow), u_ts:
+ * [0..2] w = l x t (Euclidean; flat points (x, y, 1)) over the soft edge's
+ * width, so that A = (k, 1) . w; [3..5] the trunk as a light slot (T = t.z
+ * - k . t.xy); [6] cosh LT (flat: LT^2; 1e30 for no trunk); [7] the light's
+ * slot, one-hot. */
+static void hol__item_shadows(const hol_light_frame *lf, hol__item *it, const double inv[9],
+                              const int idx[], int n)
+{
+    double lp[HOL_LIGHT_PER_TILE][3];
+    uint8_t use[HOL_LIGHT_PER_TILE];
+    for (int k = 0; k < n; k++) {
+        const double *p = lf->pos[idx[k]];
+        for (int i = 0; i < 3; i++)
+            lp[k][i] = inv[3 * i] * p[0] + inv[3 * i + 1] * p[1] + inv[3 * i + 2] * p[2];
+        use[k] = !lf->ff[idx[k]];
+    }
+    hol_shadow_set ss;
+    hol_light_shadows(lf, (const double(*)[3])lp, use, n, &ss);
+    memset(it->ts, 0, sizeof it->ts);
+    double sc = 1 / (lf->s1 - lf->s0);
+    for (int m = 0; m < HOL_SHADOW_TRUNKS; m++) {
+        it->ts[6][m] = 1e30f;
+        if (m >= ss.n)
+            continue;
+        const double *t = ss.trunk[m], *l = lp[ss.slot];
+        double w[3] = {l[1] * t[2] - l[2] * t[1], l[2] * t[0] - l[0] * t[2],
+                       l[0] * t[1] - l[1] * t[0]};
+        float ts[3];
+        hol__tile_slot((const double[9]){1, 0, 0, 0, 1, 0, 0, 0, 1}, t, lf->flat, ts);
+        for (int i = 0; i < 3; i++) {
+            it->ts[i][m] = (float)(w[i] * sc);
+            it->ts[3 + i][m] = ts[i];
+        }
+        double d = hol_hyper_dist(l, t, lf->flat);
+        it->ts[6][m] = (float)(lf->flat ? d * d : cosh(d));
+    }
+    if (ss.n > 0)
+        it->ts[7][ss.slot] = 1;
+}
+
 /* A lit tile's lights and the eye in the tile's own frame (u_tl: the
  * lights' x, y, z as four-slot vectors, then the eye's point; an empty
  * slot lies far beyond the radius), so the shader needs no matrix. */
@@ -850,6 +932,7 @@ static void hol__item_lights(hol_render *r, hol__item *it, hol_tile t)
     }
     hol__tile_slot(inv, r->lights.eye, flat, it->tl[3]);
     it->tl[3][3] = 0;
+    hol__item_shadows(lf, it, inv, idx, n);
 }
 
 /* A firefly's sprite (render/hol_light.h): when tile t has one of the
@@ -1187,6 +1270,7 @@ static void hol__frame_lights(hol_render *r, const hol_frame_desc *f)
     r->gl.Uniform1f(r->pg->u_klein, (float)lf->klein);
     r->gl.Uniform1f(r->pg->u_mpu2, (float)(lf->metres_per_unit * lf->metres_per_unit));
     r->gl.Uniform1f(r->pg->u_eyeh, (float)lf->eye_h);
+    r->gl.Uniform1f(r->pg->u_soff, (float)(lf->s0 / (lf->s1 - lf->s0)));
 }
 
 /* This frame's program of a kind (0 day, 1 lit tiles, 2 lit room): the
@@ -1354,6 +1438,7 @@ static void hol__item_uniforms(hol_render *r, const hol__item *it)
         return;
     r->gl.Uniform4fv(r->pg->u_tl, 4, &it->tl[0][0]);
     r->gl.Uniform4fv(r->pg->u_tx, 7, &it->tx[0][0]);
+    r->gl.Uniform4fv(r->pg->u_ts, 8, &it->ts[0][0]);
 }
 
 /* Execute the sorted queue, skipping redundant state changes. */

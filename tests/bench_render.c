@@ -11,8 +11,8 @@
  * frame at night with 16 lanterns on the tiles in view (most drawn tiles
  * get the 4 they may have) against the same frame at day, interleaved in
  * the same run (target: at most 1.3x), in {4,5} and {4,6}, and the CPU
- * time of choosing every drawn tile's lights (hol_light_prepare and
- * hol_light_tile). Prints the figures; exits 1 when a budget is exceeded.
+ * time of choosing every drawn tile's lights and trunk shadows
+ * (hol_light_prepare, hol_light_tile and hol_light_shadows). Prints the figures; exits 1 when a budget is exceeded.
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -138,6 +138,20 @@ static double light_choice_ms(hol_render *r, const hol_frame_desc *f, int n, dou
             int idx[HOL_LIGHT_PER_TILE];
             int nl = v->branches[b].err ? -1 : hol_light_tile(&lf, v->branches[b].state.tile,
                                                               fr, idx);
+            if (nl > 0) { /* and its trunk shadows (hol_light_shadows), as the
+                             renderer does: the lights in the tile's frame */
+                double lp[HOL_LIGHT_PER_TILE][3];
+                uint8_t use[HOL_LIGHT_PER_TILE];
+                for (int j = 0; j < nl; j++) {
+                    const double *p = lf.pos[idx[j]];
+                    for (int i = 0; i < 3; i++) /* J F^T J: the inverse (hyperbolic) */
+                        lp[j][i] = (i == 2 ? -1 : 1) * (fr[i] * p[0] + fr[3 + i] * p[1] -
+                                                        fr[6 + i] * p[2]);
+                    use[j] = !lf.ff[idx[j]];
+                }
+                hol_shadow_set ss;
+                hol_light_shadows(&lf, (const double(*)[3])lp, use, nl, &ss);
+            }
             if (k == 0 && nl >= 0) {
                 sum += nl;
                 four += nl == HOL_LIGHT_PER_TILE;

@@ -13,13 +13,23 @@
  * lanterns' sum, green the fog factor.
  *
  * - test_light_matches_model: every floor pixel of views in {4,5}, {4,6},
- *   {4,8}, a 5 x 5 room and 0.7 m cells within 3 of 255 of the model.
+ *   {4,8}, a 5 x 5 room and 0.7 m cells within 3 of 255 of the model,
+ *   trunk shadows included: the model puts a trunk on every vertex its
+ *   frames reach and takes each trunk's distance to the floor geodesic
+ *   from the pixel's point to the lantern by a ternary search along it;
+ *   the tile's nearest lantern casts them (docs/rendering.md#lighting).
+ *   Unshadowed pixels must all match (but for ones on a cell edge, where
+ *   the raster may take either tile); of the shadowed, 95 % (a tile keeps
+ *   4 trunks).
  * - test_flat_equals_euclid: in {4,4} the same pixels equal flat-space
- *   lighting (room metres, Euclidean distance, the same falloff).
+ *   lighting (room metres, Euclidean distance, the same falloff), with
+ *   trunk shadows from a trunk on every grid point.
  * - test_light_continuous_across_edges: pixel pairs on both sides of a
  *   cell edge (one branch the other plus the step across it: neighbours in
  *   the world) step by no more than the light's gradient either side of
- *   the edge (within 3 of 255); no model involved.
+ *   the edge (within 3 of 255), away from trunk shadows' edges (the model
+ *   says where); where both sides lie in the same full shadow, both are
+ *   darker than the light without it.
  * - test_lantern_through_portal: a lantern's light falls on other tiles
  *   seen through portals (two or more cells away), as the model says.
  * - test_day_unchanged_without_lighting: lanterns at day change nothing.
@@ -66,6 +76,9 @@
 #define SPOT_TILT 45.0
 #define SPOT_OUTER 35.0
 #define SPOT_INNER 25.0
+#define TRUNK_R 0.09 /* trunk shadows: the trunk's radius, the soft edge's half width */
+#define TRUNK_E 0.02
+#define NTRUNK 512
 
 typedef struct light_case {
     const char *walk;
@@ -266,7 +279,103 @@ typedef struct scene {
                               lant (model frame) */
     double sroom[4][2];    /* the same in room metres (east, north) */
     double eye[3];
+    int ntr;
+    double trunk[NTRUNK][3]; /* model points of the vertices near a lantern */
 } scene;
+
+/* Every vertex of the tiling within RADIUS + 1 m of a lantern: the
+ * corners of the tiles the model reaches in up to 7 steps (breadth first,
+ * each tile once). */
+static double smooth(double a, double b, double x);
+
+static void make_trunks(const light_case *c, scene *s)
+{
+    enum { NT = 4096 };
+    static model_mat t[NT];
+    int n = 0, head = 0, end = 1, depth = 0;
+    t[n++] = model_identity();
+    s->ntr = 0;
+    for (; head < n; head++) {
+        if (head == end) {
+            depth++;
+            end = n;
+        }
+        for (int k = 0; k < 4; k++) {
+            double v[3], cnr[3];
+            klein_point(c->cell, (k & 1 ? 0.5 : -0.5) * c->cell, (k & 2 ? 0.5 : -0.5) * c->cell,
+                        cnr);
+            apply(t[head], cnr, v);
+            int keep = 0, dup = 0;
+            for (int i = 0; i < s->n; i++)
+                keep |= floor_m(c->cell, v, s->lant[i]) < RADIUS + 1;
+            for (int i = 0; i < s->ntr && keep && !dup; i++)
+                dup = floor_m(c->cell, v, s->trunk[i]) < 1e-6;
+            if (keep && !dup && s->ntr < NTRUNK)
+                memcpy(s->trunk[s->ntr++], v, sizeof v);
+        }
+        for (int k = 0; k < 4 && depth < 7; k++) {
+            model_mat m = model_step(t[head], k);
+            double cm[3] = {m.m[2], m.m[5], m.m[8]};
+            int dup = 0, near = 0;
+            for (int i = 0; i < s->n; i++)
+                near |= floor_m(c->cell, cm, s->lant[i]) < RADIUS + 2 * c->cell;
+            for (int i = 0; i < n && near && !dup; i++) {
+                double ci[3] = {t[i].m[2], t[i].m[5], t[i].m[8]};
+                dup = floor_m(c->cell, cm, ci) < 1e-6;
+            }
+            if (near && !dup && n < NT)
+                t[n++] = m;
+        }
+    }
+}
+
+/* The point at fraction u of the geodesic from a to b (x their distance in
+ * curvature units): (sinh((1-u)x) a + sinh(u x) b) / sinh x; flat: the
+ * straight line. */
+static void geo_at(const double a[3], const double b[3], double x, double u, double out[3])
+{
+    for (int i = 0; i < 3; i++)
+        out[i] = model_q == 4 || x < 1e-9 ? a[i] + u * (b[i] - a[i])
+                                          : (sinh((1 - u) * x) * a[i] + sinh(u * x) * b[i]) / sinh(x);
+}
+
+/* Trunk shadows (docs/rendering.md#lighting): the factor on lantern i's
+ * light at model point h: 1 - the sum of the occlusions of every trunk
+ * whose distance to the floor geodesic segment from h to the lantern is
+ * under TRUNK_R + TRUNK_E, found by a ternary search along the segment (the
+ * distance to a geodesic is convex); a closest point at h itself (the
+ * trunk not between) casts none. -1: h lies within a trunk's soft edge
+ * plus 2 cm of its axis (under the trunk: not checked). */
+static double shadow_model(const light_case *c, const scene *s, int i, const double h[3])
+{
+    const double *L = s->lant[i];
+    double hl = floor_m(c->cell, h, L), x = hl * model_edge() / c->cell, occ = 0;
+    for (int k = 0; k < s->ntr; k++) {
+        const double *t = s->trunk[k];
+        double ht = floor_m(c->cell, h, t), lt = floor_m(c->cell, L, t);
+        if (ht < TRUNK_R + TRUNK_E + 0.02)
+            return -1;
+        if (ht + lt - hl > 2 * (TRUNK_R + TRUNK_E) || hl < 1e-9)
+            continue;
+        double lo = 0, hi = 1, q[3];
+        for (int it = 0; it < 60; it++) {
+            double u1 = lo + (hi - lo) / 3, u2 = hi - (hi - lo) / 3, d1, d2;
+            geo_at(h, L, x, u1, q);
+            d1 = floor_m(c->cell, q, t);
+            geo_at(h, L, x, u2, q);
+            d2 = floor_m(c->cell, q, t);
+            if (d1 < d2)
+                hi = u2;
+            else
+                lo = u1;
+        }
+        if (lo < 1e-6 || hi > 1 - 1e-6)
+            continue; /* the closest point is an end: not between */
+        geo_at(h, L, x, (lo + hi) / 2, q);
+        occ += 1 - smooth(TRUNK_R - TRUNK_E, TRUNK_R + TRUNK_E, floor_m(c->cell, q, t));
+    }
+    return occ < 1 ? 1 - occ : 0;
+}
 
 static void make_scene(const light_case *c, scene *s)
 {
@@ -311,6 +420,7 @@ static void make_scene(const light_case *c, scene *s)
         s->n++;
     }
     s->f.nlanterns = s->n;
+    make_trunks(c, s);
     int col = (int)floor(c->eye[0] / c->cell), row = (int)floor(c->eye[2] / c->cell);
     klein_point(c->cell, c->eye[0] - (col + 0.5) * c->cell, c->eye[2] - (row + 0.5) * c->cell,
                 s->eye);
@@ -357,53 +467,167 @@ static double cone_model(const light_case *c, const scene *s, int i, const doubl
     return smooth(cos(SPOT_OUTER * PI / 180), cos(SPOT_INNER * PI / 180), ca);
 }
 
-/* The model's (lanterns, fog) at a pixel; 0 when it is not checked. */
-static int model_pixel(const light_case *c, const scene *s, int x, int y, double out[2])
+/* The model's (lanterns, fog, lanterns without trunk shadows) at a pixel,
+ * and each lantern's shadow factor (sf, when not NULL); 0 when it is not
+ * checked. */
+static int model_pixel_sf(const light_case *c, const scene *s, int x, int y, double out[3],
+                          double sf[4])
 {
     double p[2], h[3];
     if (!floor_point(c, x + 0.5, y + 0.5, p) || !model_point(c, p, h))
         return 0;
-    double lam = 0;
+    /* trunk shadows are cast by the lantern nearest the tile's centre
+     * (none when it stands on the tile; a tie is not checked) */
+    int near = -1, next = -1;
+    double dn = 1e9, d2 = 1e9;
+    for (int i = 0; i < s->n; i++) {
+        double d = floor_m(c->cell, model_centre, s->lant[i]);
+        if (d < dn)
+            d2 = dn, next = near, dn = d, near = i;
+        else if (d < d2)
+            d2 = d, next = i;
+    }
+    if (d2 - dn < 1e-6 && next >= 0) { /* a tie: checked where neither shadows */
+        if (shadow_model(c, s, near, h) != 1 || shadow_model(c, s, next, h) != 1)
+            return 0;
+        near = -1;
+    }
+    double lam = 0, lam0 = 0;
     for (int i = 0; i < s->n; i++) {
         double fm = floor_m(c->cell, h, s->lant[i]);
-        lam += lantern_term(fm, fm * model_edge() / c->cell) * cone_model(c, s, i, h);
+        double sh = i == near && dn > 1e-6 ? shadow_model(c, s, i, h) : 1;
+        if (sh < 0)
+            return 0;
+        double l = lantern_term(fm, fm * model_edge() / c->cell) * cone_model(c, s, i, h);
+        lam += l * sh;
+        lam0 += l;
+        if (sf)
+            sf[i] = sh;
     }
     double fe = chord_m(c->cell, h, s->eye), de = hypot(fe, c->eye[1]);
     double fd = de * (c->dusk ? FOG_DUSK : FOG_NIGHT);
     out[0] = lam < 1 ? lam : 1;
     out[1] = exp(-fd * fd);
+    out[2] = lam0 < 1 ? lam0 : 1;
     return 1;
+}
+
+static int model_pixel(const light_case *c, const scene *s, int x, int y, double out[3])
+{
+    return model_pixel_sf(c, s, x, y, out, NULL);
+}
+
+/* Trunk shadow counts of a view: pixels the model shadows (its light
+ * without shadows differs by more than TOL) and those of them the renderer
+ * draws as the model does. */
+typedef struct shadow_count {
+    int shadowed, match, strict_bad;
+} shadow_count;
+
+/* Does pixel (x, y) touch a cell edge (a 4-neighbour's floor point lies
+ * in another cell)? There the raster may take either tile, and each tile
+ * has its own shadowing lantern. */
+static int on_cell_edge(const light_case *c, int x, int y)
+{
+    double p[2], q[2];
+    if (!floor_point(c, x + 0.5, y + 0.5, p))
+        return 1;
+    static const int dx[4] = {1, -1, 0, 0}, dy[4] = {0, 0, 1, -1};
+    for (int k = 0; k < 4; k++)
+        if (!floor_point(c, x + dx[k] + 0.5, y + dy[k] + 0.5, q) ||
+            floor(q[0] / c->cell) != floor(p[0] / c->cell) ||
+            floor(q[1] / c->cell) != floor(p[1] / c->cell))
+            return 1;
+    return 0;
+}
+
+/* One pixel against the model: a pixel no shadow touches must match
+ * (strict, but for one on a cell edge); a shadowed one is counted, since a
+ * tile keeps at most HOL_SHADOW_TRUNKS trunks and may drop a far one. */
+static void shadow_check(shadow_count *sc, const uint8_t *p, const double want[3], int edge)
+{
+    double er = fabs(p[0] - 255 * want[0]), eg = fabs(p[1] - 255 * want[1]);
+    if (fabs(want[0] - want[2]) * 255 <= 0.5) {
+        sc->strict_bad += (er > TOL || eg > TOL) && !edge;
+        return;
+    }
+    sc->shadowed++;
+    sc->match += er <= TOL && eg <= TOL;
+}
+
+/* The shadow half of a view's check: at least 95 % of the shadowed pixels
+ * as the model says (all of them while a tile has at most
+ * HOL_SHADOW_PAIRS pairs). */
+static void shadow_assert(const char *what, size_t k, const shadow_count *sc)
+{
+    printf("%s %zu: %d pixels in trunk shadows, %d as the model, %d unshadowed off\n", what, k,
+           sc->shadowed, sc->match, sc->strict_bad);
+    assert_int_equal(sc->strict_bad, 0);
+    assert_true(sc->match * 20 >= sc->shadowed * 19);
 }
 
 static void test_light_matches_model(void **state)
 {
     (void)state;
     static uint8_t px[W * H * 4];
+    int total_sh = 0;
     for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
         const light_case *c = &cases[k];
         scene s;
         make_scene(c, &s);
         render(&s, HOL_RENDER_BARE | HOL_RENDER_LIGHT_ONLY, px);
-        int checked = 0, lit = 0, bad = 0;
+        int checked = 0, lit = 0;
+        shadow_count sc = {0, 0, 0};
         double worst = 0;
         for (int y = 0; y < H; y++)
             for (int x = 0; x < W; x++) {
-                double want[2];
+                double want[3];
                 if (!model_pixel(c, &s, x, y, want))
                     continue;
                 const uint8_t *p = px + 4 * (y * W + x);
                 double er = fabs(p[0] - 255 * want[0]), eg = fabs(p[1] - 255 * want[1]);
-                worst = fmax(worst, fmax(er, eg));
-                bad += er > TOL || eg > TOL;
+                if (er > TOL || eg > TOL || fabs(want[0] - want[2]) * 255 > 0.5) {
+                    shadow_check(&sc, p, want, on_cell_edge(c, x, y));
+                    if (getenv("SHADOW_DEBUG") && (er > TOL || eg > TOL))
+                        printf("  off (%d,%d): %d,%d against %.1f,%.1f (unshadowed %.1f)\n", x,
+                               y, p[0], p[1], 255 * want[0], 255 * want[1], 255 * want[2]);
+                } else
+                    worst = fmax(worst, fmax(er, eg));
                 checked++;
                 lit += want[0] > 0.05;
             }
-        printf("light case %zu ({4,%d}): %d floor pixels, %d lit, worst %.1f/255, %d off\n", k,
-               c->q, checked, lit, worst, bad);
+        printf("light case %zu ({4,%d}): %d floor pixels, %d lit, worst unshadowed %.1f/255\n", k,
+               c->q, checked, lit, worst);
         assert_true(checked > W * H / 8);
         assert_true(lit > 200);
-        assert_int_equal(bad, 0);
+        shadow_assert("light case", k, &sc);
+        total_sh += sc.shadowed;
     }
+    printf("light: %d pixels in trunk shadows in all\n", total_sh);
+    assert_true(total_sh > 500);
+}
+
+/* {4,4}: the trunk shadows of the lantern at room point l on floor point
+ * p, in room metres: a trunk on every grid point (i m, j m), its distance
+ * to the segment from p to l; -1 under a trunk. */
+static double flat_shadow(double m, const double p[2], const double l[2])
+{
+    double ux = l[0] - p[0], uz = l[1] - p[1], len = hypot(ux, uz), occ = 0;
+    if (len < 1e-9)
+        return 1;
+    for (int i = (int)floor(fmin(p[0], l[0]) / m) - 1; i <= (int)ceil(fmax(p[0], l[0]) / m) + 1; i++)
+        for (int j = (int)floor(fmin(p[1], l[1]) / m) - 1; j <= (int)ceil(fmax(p[1], l[1]) / m) + 1;
+             j++) {
+            double tx = i * m - p[0], tz = j * m - p[1];
+            if (hypot(tx, tz) < TRUNK_R + TRUNK_E + 0.02)
+                return -1;
+            double u = (tx * ux + tz * uz) / (len * len);
+            if (u <= 0 || u >= 1)
+                continue;
+            double d = fabs(tx * uz - tz * ux) / len;
+            occ += 1 - smooth(TRUNK_R - TRUNK_E, TRUNK_R + TRUNK_E, d);
+        }
+    return occ < 1 ? 1 - occ : 0;
 }
 
 /* {4,4}: flat-space lighting in room metres, no hyperboloid at all. */
@@ -418,18 +642,36 @@ static void test_flat_equals_euclid(void **state)
         {"NE", {1.8, 1.6, 0.5}, 150, -35, 4, 3, 3, 0.7, {"W", "S", "WS", NULL}, 1, {1, 4, 0, 0}},
     };
     static uint8_t px[W * H * 4];
+    int total_sh = 0;
     for (size_t k = 0; k < sizeof flat / sizeof flat[0]; k++) {
         const light_case *c = &flat[k];
         scene s;
         make_scene(c, &s);
         render(&s, HOL_RENDER_BARE | HOL_RENDER_LIGHT_ONLY, px);
-        int checked = 0, lit = 0, bad = 0;
+        int checked = 0, lit = 0;
+        shadow_count sc = {0, 0, 0};
         for (int y = 0; y < H; y++)
             for (int x = 0; x < W; x++) {
                 double p[2], h[3];
                 if (!floor_point(c, x + 0.5, y + 0.5, p) || !model_point(c, p, h))
                     continue;
-                double lam = 0;
+                /* shadows from the lantern nearest the cell's centre */
+                double cc[2] = {(floor(p[0] / c->cell) + 0.5) * c->cell,
+                                (floor(p[1] / c->cell) + 0.5) * c->cell};
+                int near = -1;
+                double dn = 1e9, d2n = 1e9;
+                for (int i = 0; i < s.n; i++) {
+                    double d = hypot(cc[0] - s.lroom[i][0], cc[1] - s.lroom[i][1]);
+                    if (d < dn)
+                        d2n = dn, dn = d, near = i;
+                    else if (d < d2n)
+                        d2n = d;
+                }
+                if (d2n - dn < 1e-6)
+                    continue;
+                double lam = 0, lam0 = 0, shf = 1;
+                if (dn > 1e-6 && (shf = flat_shadow(c->cell, p, s.lroom[near])) < 0)
+                    continue;
                 for (int i = 0; i < s.n; i++) {
                     double dx = p[0] - s.lroom[i][0], dz = p[1] - s.lroom[i][1];
                     double cone = 1, fm = hypot(dx, dz), d = hypot(fm, HEIGHT);
@@ -443,21 +685,24 @@ static void test_flat_equals_euclid(void **state)
                         cone = smooth(cos(SPOT_OUTER * PI / 180), cos(SPOT_INNER * PI / 180),
                                       ca);
                     }
-                    lam += lantern_term(fm, 0) * cone;
+                    lam += lantern_term(fm, 0) * cone * (i == near ? shf : 1);
+                    lam0 += lantern_term(fm, 0) * cone;
                 }
                 double de = hypot(hypot(p[0] - c->eye[0], p[1] - c->eye[2]), c->eye[1]);
                 double fd = de * (c->dusk ? FOG_DUSK : FOG_NIGHT);
                 const uint8_t *q = px + 4 * (y * W + x);
-                bad += fabs(q[0] - 255 * fmin(lam, 1)) > TOL ||
-                       fabs(q[1] - 255 * exp(-fd * fd)) > TOL;
+                double want[3] = {fmin(lam, 1), exp(-fd * fd), fmin(lam0, 1)};
+                shadow_check(&sc, q, want, on_cell_edge(c, x, y));
                 lit += lam > 0.05;
                 checked++;
             }
-        printf("flat case %zu: %d floor pixels, %d lit, %d off\n", k, checked, lit, bad);
+        printf("flat case %zu: %d floor pixels, %d lit\n", k, checked, lit);
         assert_true(checked > W * H / 5);
         assert_true(lit > 200);
-        assert_int_equal(bad, 0);
+        shadow_assert("flat case", k, &sc);
+        total_sh += sc.shadowed;
     }
+    assert_true(total_sh > 300);
 }
 
 /* The branch's tile under every pixel (ID mode), -1 for none. */
@@ -482,12 +727,36 @@ static int one_step_apart(const hol_view *v, int a, int b)
     return y->nsteps == x->nsteps + 1 && !memcmp(x->steps, y->steps, x->nsteps);
 }
 
+/* The model's trunk shadows over the four pixels around the edge between
+ * (x, y) and its right (d 0) or lower (d 1) neighbour: -1 when one is not
+ * checked, lies on a shadow's soft edge or the four differ; 1 when all lie
+ * in the same full shadow; 0 when none is shadowed. */
+static int shadow_window(const light_case *c, const scene *s, int x, int y, int d)
+{
+    double ref[4] = {0}, sf[4], want[3];
+    int any = 0;
+    for (int e = -1; e <= 2; e++) {
+        int xe = x + (d ? 0 : e), ye = y + (d ? e : 0);
+        for (int i = 0; i < 4; i++)
+            sf[i] = 1;
+        if (!model_pixel_sf(c, s, xe, ye, want, sf))
+            return -1;
+        for (int i = 0; i < s->n; i++) {
+            if ((sf[i] > 1e-3 && sf[i] < 1 - 1e-3) || (e > -1 && fabs(sf[i] - ref[i]) > 1e-3))
+                return -1;
+            ref[i] = sf[i];
+            any |= sf[i] < 0.5;
+        }
+    }
+    return any;
+}
+
 static void test_light_continuous_across_edges(void **state)
 {
     (void)state;
     static uint8_t px[W * H * 4];
     static int ids[W * H];
-    int total = 0;
+    int total = 0, total_in = 0;
     for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
         const light_case *c = &cases[k];
         scene s;
@@ -495,7 +764,7 @@ static void test_light_continuous_across_edges(void **state)
         branch_ids(&s, ids);
         hol_view v = *hol_render_last_view(fx.rnd);
         render(&s, HOL_RENDER_BARE | HOL_RENDER_LIGHT_ONLY, px);
-        int pairs = 0, lit = 0;
+        int pairs = 0, lit = 0, in_shadow = 0;
         for (int y = 0; y + 1 < H; y++)
             for (int x = 0; x + 1 < W; x++) {
                 int a = ids[y * W + x];
@@ -513,6 +782,28 @@ static void test_light_continuous_across_edges(void **state)
                     if ((d ? y < 1 || y + 2 >= H : x < 1 || x + 2 >= W) ||
                         ids[i0 - st] != a || ids[i0 + 2 * st] != b)
                         continue;
+                    /* away from shadow boundaries: the model's shadow
+                     * factors of the four pixels equal and each 0 or 1 */
+                    int sh = shadow_window(c, &s, x, y, d);
+                    if (sh < 0)
+                        continue;
+                    if (sh == 1) { /* in a shadow on both sides */
+                        double want[3];
+                        int seen = 0;
+                        for (int e = 0; e < 2; e++) {
+                            int xe = x + (d ? 0 : e), ye = y + (d ? e : 0);
+                            model_pixel(c, &s, xe, ye, want);
+                            if ((want[2] - want[0]) * 255 < 2 * TOL)
+                                continue; /* a shadow of a light too weak here */
+                            seen++;
+                            if (px[4 * (ye * W + xe)] > 255 * want[2] - TOL)
+                                fail_msg("case %zu: pixel (%d,%d) lies in a trunk's shadow on "
+                                         "both sides of a cell edge but is lit %d (%.1f "
+                                         "without)", k, xe, ye, px[4 * (ye * W + xe)],
+                                         255 * want[2]);
+                        }
+                        in_shadow += seen == 2;
+                    }
                     int bad = 0;
                     for (int ch = 0; ch < 2; ch++) {
                         int v0 = px[4 * (i0 - st) + ch], v1 = px[4 * i0 + ch],
@@ -533,11 +824,13 @@ static void test_light_continuous_across_edges(void **state)
                 }
             }
         printf("edges case %zu: %d pixel pairs across cell edges, %d lit\n", k, pairs, lit);
+        total_in += in_shadow;
         assert_true(pairs > 100);
         assert_true(lit > 20);
         total += pairs;
     }
-    printf("edges: %d pairs in all\n", total);
+    printf("edges: %d pairs in all, %d in a trunk's shadow on both sides\n", total, total_in);
+    assert_true(total_in > 10);
 }
 
 /* Tiles two or more cells away (through portals) get a lantern's light,
@@ -560,7 +853,7 @@ static void test_lantern_through_portal(void **state)
     for (int y = 0; y < H; y++)
         for (int x = 0; x < W; x++) {
             int b = ids[y * W + x];
-            double want[2];
+            double want[3];
             if (b < 0 || v.branches[b].nsteps < 2 ||
                 hol_tile_eq(v.branches[b].state.tile, s.f.lanterns[0]) ||
                 !model_pixel(&c, &s, x, y, want))
