@@ -463,7 +463,7 @@ WEB_OBJ  := $(WEB_SRC:%.c=$(BUILD)/web-obj/%.o)
 WEB_CFLAGS := $(CSTD) $(WARN) -O3 -ffp-contract=off -D_DEFAULT_SOURCE -MMD -MP
 WEB_LDFLAGS := -O3 -sENVIRONMENT=web -sMIN_WEBGL_VERSION=2 -sMAX_WEBGL_VERSION=2 \
   -sALLOW_MEMORY_GROWTH=1 -sINITIAL_MEMORY=67108864 -sTOTAL_STACK=1048576 \
-  -lopenal --js-library platform/web/hol_web_lib.js
+  --js-library platform/web/hol_web_al.js --js-library platform/web/hol_web_lib.js
 WEB_PAGE := $(addprefix $(WEB)/,index.html page.js store.js)
 WEB_PORT ?= 8080
 WEB_HTTPS_PORT ?= 8443
@@ -490,7 +490,7 @@ $(BUILD)/web-obj/%.o: %.c
 	@echo "emcc $<"
 	@$(EMCC_ENV) $(EMCC) $(WEB_CFLAGS) -c $< -o $@
 
-$(WEB)/holonomy.js: $(WEB_OBJ) platform/web/hol_web_lib.js
+$(WEB)/holonomy.js: $(WEB_OBJ) platform/web/hol_web_lib.js platform/web/hol_web_al.js
 	@mkdir -p $(dir $@)
 	@echo "emcc -o $@"
 	@$(EMCC_ENV) $(EMCC) $(WEB_LDFLAGS) $(WEB_OBJ) -o $@

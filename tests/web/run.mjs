@@ -211,6 +211,13 @@ await check('sound: after a click, an AudioContext runs and a level with sound a
   await p.page.mouse.click(W / 2, H / 2);
   await p.until(async () => (await p.state(S.SOUNDS)) > 0, 'sources playing after the click');
   await p.until(async () => (await audio(p)) === 'running', 'the AudioContext running');
+  // the player's looping sources are WebAudio's (hol_web_al.js): as many
+  // looping AudioBufferSourceNodes playing as the player's voices, through
+  // HRTF panners, at gains above 0 (read in one turn of the page's loop)
+  const [voices, nodes] = await p.page.evaluate(() => [Module._hol_web_state(16), Module.holAudioNodes()]);
+  assert(voices > 0 && nodes.loops === voices && nodes.models.join() === 'HRTF' &&
+    nodes.gains.every((g) => g > 0 && g <= 1),
+    `${voices} voices against WebAudio's ${JSON.stringify(nodes)}`);
   assert(p.log.some((l) => /^web: sound: OpenAL on WebAudio, HRTF$/.test(l)),
     'no sound line: ' + p.log.join(' | '));
   assert(!p.errors.length, 'errors: ' + p.errors.join('; '));
