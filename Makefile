@@ -472,10 +472,24 @@ WEB_SRC  := $(CORE_SRC) $(filter-out render/hol_png.c,$(RENDER_SRC)) \
             $(wildcard platform/web/*.c) platform/openxr/hol_xr_room.c platform/openxr/hol_xr_quad.c \
             platform/audio/hol_audio.c
 WEB_OBJ  := $(WEB_SRC:%.c=$(BUILD)/web-obj/%.o)
-WEB_CFLAGS := $(CSTD) $(WARN) -O3 -ffp-contract=off -D_DEFAULT_SOURCE -MMD -MP
-WEB_LDFLAGS := -O3 -sENVIRONMENT=web -sMIN_WEBGL_VERSION=2 -sMAX_WEBGL_VERSION=2 \
+# Size (issue 25: the page's transfer at most 162 KB gzip -9, checked by
+# make web-test): the code at -Os, but for the core's parts that run every
+# frame or build the navigator's table before the first frame, at -O3
+# (-Os made the wasm step about 40 % slower); the link at -Oz, emmalloc
+# (docs/web.md, "The transfer size").
+WEB_HOT  := $(addprefix core/,hol_app.c hol_app_view.c hol_hyper.c hol_math.c hol_motion.c \
+  hol_nav.c hol_nav_arena.c hol_nav_field.c hol_nav_line.c hol_nav_table.c hol_room.c \
+  hol_tile.c hol_wfc.c hol_world.c hol_world_tree.c)
+WEB_OPT  := -Os
+WEB_OPT_HOT := -O3
+WEB_CFLAGS = $(CSTD) $(WARN) $(if $(filter $(WEB_HOT),$<),$(WEB_OPT_HOT),$(WEB_OPT)) -ffp-contract=off \
+  -D_DEFAULT_SOURCE -MMD -MP
+WEB_LDFLAGS := -Oz -sMALLOC=emmalloc -sENVIRONMENT=web -sMIN_WEBGL_VERSION=2 -sMAX_WEBGL_VERSION=2 \
   -sALLOW_MEMORY_GROWTH=1 -sINITIAL_MEMORY=67108864 -sTOTAL_STACK=1048576 \
-  -lopenal --js-library platform/web/hol_web_lib.js
+  --js-library platform/web/hol_web_al.js --js-library platform/web/hol_web_lib.js
+# the objects are made again when these flags change (an -O3 object of an
+# older build would otherwise stay)
+WEB_STAMP := $(BUILD)/web-obj/flags-$(shell echo '$(CSTD) $(WARN) $(WEB_OPT) $(WEB_OPT_HOT) $(WEB_HOT)' | cksum | cut -d' ' -f1)
 WEB_PAGE := $(addprefix $(WEB)/,index.html page.js store.js)
 WEB_PORT ?= 8080
 WEB_HTTPS_PORT ?= 8443
@@ -497,12 +511,16 @@ $(error brotli is not installed: run make deps-web first, then make $(filter web
 endif
 endif
 
-$(BUILD)/web-obj/%.o: %.c
+$(WEB_STAMP):
+	@mkdir -p $(dir $@)
+	@rm -f $(BUILD)/web-obj/flags-*; touch $@
+
+$(BUILD)/web-obj/%.o: %.c $(WEB_STAMP)
 	@mkdir -p $(dir $@)
 	@echo "emcc $<"
 	@$(EMCC_ENV) $(EMCC) $(WEB_CFLAGS) -c $< -o $@
 
-$(WEB)/holonomy.js: $(WEB_OBJ) platform/web/hol_web_lib.js
+$(WEB)/holonomy.js: $(WEB_OBJ) platform/web/hol_web_lib.js platform/web/hol_web_al.js
 	@mkdir -p $(dir $@)
 	@echo "emcc -o $@"
 	@$(EMCC_ENV) $(EMCC) $(WEB_LDFLAGS) $(WEB_OBJ) -o $@

@@ -1,6 +1,6 @@
 /* hol_audio.c - OpenAL Soft player loaded at run time (see hol_audio.h);
- * in the web build (__EMSCRIPTEN__) the same player on emscripten's OpenAL
- * (WebAudio, linked with -lopenal: no dlopen). */
+ * in the web build (__EMSCRIPTEN__) the same player on the OpenAL calls of
+ * platform/web/hol_web_al.js (WebAudio, linked in: no dlopen). */
 #include "hol_audio.h"
 
 #ifdef __EMSCRIPTEN__
@@ -57,7 +57,6 @@ typedef void (*LPALCRENDERSAMPLESSOFT)(ALCdevice *, void *, ALCsizei);
     X(void, alcDestroyContext, (ALCcontext *))                                                \
     X(ALCboolean, alcMakeContextCurrent, (ALCcontext *))                                      \
     X(ALCboolean, alcIsExtensionPresent, (ALCdevice *, const ALCchar *))                      \
-    X(void *, alcGetProcAddress, (ALCdevice *, const ALCchar *))                              \
     X(void, alcGetIntegerv, (ALCdevice *, ALCenum, ALCsizei, ALCint *))                       \
     X(void, alGenBuffers, (ALsizei, ALuint *))                                                \
     X(void, alDeleteBuffers, (ALsizei, const ALuint *))                                       \
@@ -73,6 +72,9 @@ typedef void (*LPALCRENDERSAMPLESSOFT)(ALCdevice *, void *, ALCsizei);
     X(void, alDistanceModel, (ALenum))                                                        \
     X(ALenum, alGetError, (void))
 
+/* the loopback device's extensions are looked up (not on the web: aud_load) */
+#define AUD_GETPROC(X) X(void *, alcGetProcAddress, (ALCdevice *, const ALCchar *))
+
 #define AUD_PTR(ret, name, args) ret(*name) args;
 
 typedef struct aud_voice {
@@ -85,6 +87,7 @@ struct hol_audio {
     void *lib;
     struct {
         AUD_FUNCS(AUD_PTR)
+        AUD_GETPROC(AUD_PTR)
     } f;
     LPALCLOOPBACKOPENDEVICESOFT loop_open;
     LPALCRENDERSAMPLESSOFT render;
@@ -106,13 +109,23 @@ static int aud_fail(char *msg, size_t cap, const char *what)
 }
 
 #ifdef __EMSCRIPTEN__
-/* emscripten's OpenAL is linked in: the table points at it */
+/* The web build has no loopback device, so nothing to look up; linking
+ * alcGetProcAddress (emscripten's al.c) would bring all of emscripten's
+ * OpenAL into the page. */
+static void *aud_no_proc(ALCdevice *dev, const ALCchar *name)
+{
+    (void)dev, (void)name;
+    return NULL;
+}
+
+/* the calls are linked in (platform/web/hol_web_al.js: on WebAudio) */
 static int aud_load(hol_audio *a, char *msg, size_t cap)
 {
     (void)msg, (void)cap;
 #define AUD_SYM(ret, name, args) a->f.name = name;
     AUD_FUNCS(AUD_SYM)
 #undef AUD_SYM
+    a->f.alcGetProcAddress = aud_no_proc;
     return 0;
 }
 #else
@@ -127,6 +140,7 @@ static int aud_load(hol_audio *a, char *msg, size_t cap)
     if (!a->f.name)                                                                           \
         return aud_fail(msg, cap, "libopenal.so.1 lacks " #name);
     AUD_FUNCS(AUD_SYM)
+    AUD_GETPROC(AUD_SYM)
 #undef AUD_SYM
     return 0;
 }

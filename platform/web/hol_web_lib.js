@@ -397,14 +397,14 @@ var HolWebLib = {
   // The first user gesture (a click, a key, a touch; Enter VR is a click):
   // a browser lets an AudioContext run only after one (hol_web_sound.c).
   // Module.holAudioState() tells the tests the AudioContext's state
-  // (emscripten's OpenAL keeps it in AL.currentCtx.audioCtx; '' if none).
+  // (hol_web_al.js keeps it in HolAL.ctx; '' if none).
   $HolGesture: { seen: false },
-  $HolGesture__deps: ['$AL'],
+  $HolGesture__deps: ['$HolAL'],
   $HolGesture__postset:
     '["pointerdown", "mousedown", "keydown", "touchend"].forEach(function (t) {' +
     '  window.addEventListener(t, function () { HolGesture.seen = true; }, true); });' +
     'Module["holAudioState"] = function () {' +
-    '  return AL.currentCtx && AL.currentCtx.audioCtx ? AL.currentCtx.audioCtx.state : ""; };',
+    '  return HolAL.ctx ? HolAL.ctx.state : ""; };',
   hol_web_js_gesture__deps: ['$HolGesture'],
   hol_web_js_gesture: function () {
     return HolGesture.seen ? 1 : 0;

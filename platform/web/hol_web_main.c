@@ -15,6 +15,7 @@
 #include <string.h>
 
 #include "../../render/hol_app_frame.h"
+#include "../../render/hol_gl.h"
 #include "hol_web.h"
 
 hol_web hol_web_g;
@@ -383,9 +384,23 @@ static EM_BOOL pancake_frame(double t_ms, void *user)
     return EM_TRUE;
 }
 
+/* The renderer's GL functions (render/hol_gl.h's list), linked by name:
+ * emscripten_webgl_get_proc_address would link every WebGL function
+ * emscripten has (57 KB of JS, a 4 KB table in the wasm; docs/web.md). */
 static hol_render_proc gl_getproc(const char *name)
 {
-    return (hol_render_proc)emscripten_webgl_get_proc_address(name);
+    static const struct {
+        const char *name;
+        hol_render_proc fn;
+    } fns[] = {
+#define GL_FN(type, fn, str) {str, (hol_render_proc)gl##fn},
+        HOL_GL_FUNCS(GL_FN)
+#undef GL_FN
+    };
+    for (size_t i = 0; i < sizeof fns / sizeof fns[0]; i++)
+        if (!strcmp(fns[i].name, name))
+            return fns[i].fn;
+    return NULL;
 }
 
 /* The WebGL 2 context: depth, 8 stencil bits, no antialiasing (the

@@ -1,6 +1,6 @@
 /* hol_web_sound.c - the web build's sound (issue 27): core's sound list
  * (core/hol_sound.h) played by the platform's player (platform/audio,
- * compiled against emscripten's OpenAL on WebAudio).
+ * its OpenAL calls carried out on WebAudio by hol_web_al.js).
  *
  * A browser lets an AudioContext run only after a user gesture, so the
  * player opens at the first step after one (a click, a key, a touch, Enter

@@ -11,6 +11,7 @@
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
+import zlib from 'node:zlib';
 import { spawnSync } from 'node:child_process';
 import { S, enterVR, launch, openPage as openPage_, serve, sleep, stored } from './lib.mjs';
 import { decodePNG, encodePNG } from './png.mjs';
@@ -73,6 +74,19 @@ if (process.env.MATH_CHECK)
     const r = spawnSync(process.execPath, [process.env.MATH_CHECK], { encoding: 'utf8' });
     assert(r.status === 0, (r.stdout + r.stderr).trim());
   });
+
+// ---- the transfer size (issue 25) ------------------------------------------
+// Every file of build/web (the page loads them all), each gzipped at level
+// 9 as a server sends it: at most 162 KB in all, the size before the web
+// had sound (docs/performance.md). A regression fails here, not in a bench.
+const BUDGET = 162 * 1024;
+await check(`the transfer size: build/web's files gzip -9 at most ${BUDGET / 1024} KB in all`, async () => {
+  const sizes = fs.readdirSync(WEB).map((f) => [f, zlib.gzipSync(fs.readFileSync(path.join(WEB, f)), { level: 9 }).length]);
+  const total = sizes.reduce((a, [, n]) => a + n, 0);
+  assert(sizes.some(([f]) => f === 'holonomy.wasm') && total <= BUDGET,
+    `${(total / 1024).toFixed(1)} KB: ${sizes.map(([f, n]) => `${f} ${(n / 1024).toFixed(1)}`).join(', ')}`);
+  console.log(`  ${(total / 1024).toFixed(1)} KB (${sizes.map(([f, n]) => `${f} ${(n / 1024).toFixed(1)}`).join(', ')})`);
+});
 
 // ---- pancake ---------------------------------------------------------------
 let p1 = null; /* the pancake page, kept for the touch and reload checks */
@@ -211,6 +225,13 @@ await check('sound: after a click, an AudioContext runs and a level with sound a
   await p.page.mouse.click(W / 2, H / 2);
   await p.until(async () => (await p.state(S.SOUNDS)) > 0, 'sources playing after the click');
   await p.until(async () => (await audio(p)) === 'running', 'the AudioContext running');
+  // the player's looping sources are WebAudio's (hol_web_al.js): as many
+  // looping AudioBufferSourceNodes playing as the player's voices, through
+  // HRTF panners, at gains above 0 (read in one turn of the page's loop)
+  const [voices, nodes] = await p.page.evaluate(() => [Module._hol_web_state(16), Module.holAudioNodes()]);
+  assert(voices > 0 && nodes.loops === voices && nodes.models.join() === 'HRTF' &&
+    nodes.gains.every((g) => g > 0 && g <= 1),
+    `${voices} voices against WebAudio's ${JSON.stringify(nodes)}`);
   assert(p.log.some((l) => /^web: sound: OpenAL on WebAudio, HRTF$/.test(l)),
     'no sound line: ' + p.log.join(' | '));
   assert(!p.errors.length, 'errors: ' + p.errors.join('; '));
