@@ -128,8 +128,10 @@ static void hol__measure_panel(hol__xr *x, int e, const hol_frame_desc *fd, cons
                 continue;
             n++;
             y0 = y0 < 0 ? y : y0;
-            if (y == y0 + 1 && i < left)
-                left = i; /* the block's second row: whole pixels */
+            if (y <= y0 + 3 && i < left)
+                left = i; /* the block's first rows, whole pixels across: the
+                           * first glyph's leftmost column (a T has it only
+                           * in its top row) */
             double tx = c->tan_left + (i + 0.5) / w * (c->tan_right - c->tan_left);
             double ty = c->tan_up - (y + 0.5) / h * (c->tan_up - c->tan_down);
             double a = fabs(atan(tx)) > fabs(atan(ty)) ? fabs(atan(tx)) : fabs(atan(ty));

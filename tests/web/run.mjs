@@ -749,7 +749,7 @@ await check('the UI panel in both eyes read back: its left edge where its pose p
         if (bare[i] === shown[i] && bare[i + 1] === shown[i + 1] && bare[i + 2] === shown[i + 2]) continue;
         n++;
         if (top < 0) top = y;
-        if (y === top + 1) lft = Math.min(lft, x); /* the block's second row: whole pixels */
+        if (y <= top + 3) lft = Math.min(lft, x); /* the block's first rows, whole pixels across: the first glyph's leftmost column (a T has it only in its top row) */
         const tx = tl + (x + 0.5) / w * (tr - tl), ty = tu - (y + 0.5) / h * (tu - td);
         worst = Math.max(worst, Math.abs(Math.atan(tx)), Math.abs(Math.atan(ty)));
       }
