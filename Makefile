@@ -481,7 +481,7 @@ WEB_HOT  := $(addprefix core/,hol_app.c hol_app_view.c hol_hyper.c hol_math.c ho
   hol_nav.c hol_nav_arena.c hol_nav_field.c hol_nav_line.c hol_nav_table.c hol_room.c \
   hol_tile.c hol_wfc.c hol_world.c hol_world_tree.c)
 WEB_OPT  := -Os
-WEB_OPT_HOT := -O3
+WEB_OPT_HOT := -O2
 WEB_CFLAGS = $(CSTD) $(WARN) $(if $(filter $(WEB_HOT),$<),$(WEB_OPT_HOT),$(WEB_OPT)) -ffp-contract=off \
   -D_DEFAULT_SOURCE -MMD -MP
 WEB_LDFLAGS := -Oz -sMALLOC=emmalloc -sENVIRONMENT=web -sMIN_WEBGL_VERSION=2 -sMAX_WEBGL_VERSION=2 \
@@ -524,6 +524,13 @@ $(WEB)/holonomy.js: $(WEB_OBJ) platform/web/hol_web_lib.js platform/web/hol_web_
 	@mkdir -p $(dir $@)
 	@echo "emcc -o $@"
 	@$(EMCC_ENV) $(EMCC) $(WEB_LDFLAGS) $(WEB_OBJ) -o $@
+
+# the page's scripts without their comment lines and indentation (about 2 KB
+# of the gzip'ed transfer; the sources keep them): a line whose first
+# characters are // is a comment (no string spans lines in these files)
+$(WEB)/%.js: platform/web/%.js
+	@mkdir -p $(dir $@)
+	sed -e '/^[[:space:]]*\/\//d' -e 's/^[[:space:]]*//' $< >$@
 
 $(WEB)/%: platform/web/%
 	@mkdir -p $(dir $@)
