@@ -126,7 +126,7 @@ APT_GET_CMD ?= apt-get
 APT_GET = $$SUDO env DEBIAN_FRONTEND=noninteractive APT_GET_CMD=$(APT_GET_CMD) \
   sh platform/debian/apt_get.sh $(APT_LOCK_WAIT)
 
-.PHONY: web web-serve web-serve-https web-test deps-web bench-web test-suites
+.PHONY: web web-serve web-serve-https web-test deps-web bench-web test-suites test-tools
 .PHONY: all test purity fn-length unit render-test cli-test fuzz-replay fuzz bench san san-cli san-all clean deps xr \
         deps-cross check-clang cross-test run quest quest-help deps-quest quest-check check-hid-libusb deps-xr xr-test soak \
         deps-quest-link quest-link-check
@@ -244,8 +244,14 @@ run: deps
 	@$(MAKE) --no-print-directory $(BUILD)/holonomy
 	$(BUILD)/holonomy play $(RUN_ARGS)
 
+# The tool and the CLI suites' helpers first (both slots compile them), then
+# the suites: with the tool still building, make -j2 started the suites that
+# came later in the list first, and the long ones first in it ran at the end.
 test: deps
+	@$(MAKE) --no-print-directory test-tools
 	@$(MAKE) --no-print-directory test-suites
+test-tools: all $(BUILD)/tests/x11_close $(BUILD)/tests/x11_shot $(BUILD)/tests/png_probe \
+            $(BUILD)/tests/gl_sync_count.so
 
 # Every suite of make test as one list, CLI, unit and render alike: the long
 # ones first (SLOW_FIRST's order), then the rest by name. A unit or render
