@@ -75,12 +75,13 @@ $(BUILD)/platform/hid/hol_hid_dev.o: override CFLAGS += -DHOL_HID_BACKEND='"$(HI
 RENDER_TEST_SRC := $(wildcard tests/test_render*.c)
 UNIT_SRC := $(filter-out $(RENDER_TEST_SRC),$(wildcard tests/test_*.c))
 CLI_TESTS := $(wildcard tests/cli_*.sh)
-# Suites that take long (CPU time measured by tests/timed.sh) run first, so
-# that make -j2 does not end with one long suite running alone; the others
-# follow in name order (a new suite needs no entry here).
-SLOW_FIRST := cli_mock_study cli_harden_logs cli_play cli_docs cli_nav cli_session cli_harden cli_level \
-              cli_harden_opts cli_game cli_hostile cli_world cli_replay cli_gl_sync \
-              test_nav test_world test_app test_tile test_level
+# Suites that take long (CPU time measured by tests/timed.sh; cli_serve for
+# its wall time, it waits on servers) run first, longest first, so that
+# make -j2 does not end with one long suite running alone; the others follow
+# in name order (a new suite needs no entry here).
+SLOW_FIRST := cli_play cli_docs cli_harden_logs cli_session cli_mock_study cli_world test_world \
+              cli_nav cli_hostile cli_serve cli_harden_opts test_nav cli_harden cli_level cli_replay \
+              cli_render cli_resume cli_game cli_study cli_gl_sync cli_track test_app test_tile test_level
 slow_first = $(foreach s,$(SLOW_FIRST),$(filter %/$(s).c %/$(s).sh,$(1))) \
              $(filter-out $(foreach s,$(SLOW_FIRST),%/$(s).c %/$(s).sh),$(1))
 # Libraries the renderer needs (headless OSMesa; EGL for the desktop build).
@@ -125,7 +126,7 @@ APT_GET_CMD ?= apt-get
 APT_GET = $$SUDO env DEBIAN_FRONTEND=noninteractive APT_GET_CMD=$(APT_GET_CMD) \
   sh platform/debian/apt_get.sh $(APT_LOCK_WAIT)
 
-.PHONY: web web-serve web-serve-https web-test deps-web bench-web test-suites
+.PHONY: web web-serve web-serve-https web-test deps-web bench-web test-suites test-tools
 .PHONY: all test purity fn-length unit render-test cli-test fuzz-replay fuzz bench san san-cli san-all clean deps xr \
         deps-cross check-clang cross-test run quest quest-help deps-quest quest-check check-hid-libusb deps-xr xr-test soak \
         deps-quest-link quest-link-check
@@ -243,11 +244,27 @@ run: deps
 	@$(MAKE) --no-print-directory $(BUILD)/holonomy
 	$(BUILD)/holonomy play $(RUN_ARGS)
 
+# The tool and the CLI suites' helpers first (both slots compile them), then
+# the suites: with the tool still building, make -j2 started the suites that
+# came later in the list first, and the long ones first in it ran at the end.
 test: deps
+	@$(MAKE) --no-print-directory test-tools
 	@$(MAKE) --no-print-directory test-suites
+test-tools: all $(BUILD)/tests/x11_close $(BUILD)/tests/x11_shot $(BUILD)/tests/png_probe \
+            $(BUILD)/tests/gl_sync_count.so
 
-# cli-test before unit: its suites are the long ones (see SLOW_FIRST).
-test-suites: all purity fn-length tiling-gen-check cli-test unit render-test fuzz-replay
+# Every suite of make test as one list, CLI, unit and render alike: the long
+# ones first (SLOW_FIRST's order), then the rest by name. A unit or render
+# suite's program is built just before it runs (make -j2 starts jobs in this
+# order), so the builds of the small ones fill the slots beside the long
+# suites, and the end is short suites on both slots, not a build then
+# test_world alone.
+TEST_RUNS := $(patsubst tests/%.sh,cli-run-%,$(CLI_TESTS)) \
+             $(patsubst tests/%.c,unit-run-%,$(UNIT_SRC)) \
+             $(patsubst tests/%.c,render-run-%,$(RENDER_TEST_SRC))
+slow_first_runs = $(foreach s,$(SLOW_FIRST),$(filter %-run-$(s),$(1))) \
+                  $(filter-out $(foreach s,$(SLOW_FIRST),%-run-$(s)),$(1))
+test-suites: all purity fn-length tiling-gen-check $(call slow_first_runs,$(TEST_RUNS)) fuzz-replay
 	@echo "make test: all suites passed"
 
 # The automata of canonical addresses (core/hol_tile_dfa.h) are derived from

@@ -1,5 +1,8 @@
 /* main.c - the `holonomy` tool: one binary, subcommands (SPEC section 4). */
 #include <string.h>
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
 
 #include "../../core/hol_version.h"
 #include "cli.h"
@@ -39,6 +42,15 @@ static void usage(FILE *f)
 
 int main(int argc, char **argv)
 {
+#ifdef __GLIBC__
+    /* Mesa frees and takes again blocks of a few hundred KB every frame;
+     * with glibc's defaults each free at the heap's top gave the pages back
+     * (brk) and the next frame faulted them in again: 3/4 of a 64 x 48
+     * frame's CPU under llvmpipe (docs/performance.md, Start-up). Kept up
+     * to 32 MB; blocks of 4 MB and more are still mapped on their own. */
+    mallopt(M_MMAP_THRESHOLD, 4 << 20);
+    mallopt(M_TRIM_THRESHOLD, 32 << 20);
+#endif
     if (argc < 2) {
         cli_error("", 0, "no command given; see 'holonomy --help'");
         return CLI_EXIT_USAGE;
