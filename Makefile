@@ -126,7 +126,7 @@ APT_GET_CMD ?= apt-get
 APT_GET = $$SUDO env DEBIAN_FRONTEND=noninteractive APT_GET_CMD=$(APT_GET_CMD) \
   sh platform/debian/apt_get.sh $(APT_LOCK_WAIT)
 
-.PHONY: web web-serve web-serve-https web-test deps-web bench-web test-suites test-tools
+.PHONY: web web-serve web-serve-https web-test deps-web bench-web test-suites test-tools FORCE
 .PHONY: all test purity fn-length unit render-test cli-test fuzz-replay fuzz bench san san-cli san-all clean deps xr \
         deps-cross check-clang cross-test run quest quest-help deps-quest quest-check check-hid-libusb deps-xr xr-test soak \
         deps-quest-link quest-link-check
@@ -505,8 +505,10 @@ WEB_LDFLAGS := -Oz -sMALLOC=emmalloc -sENVIRONMENT=web -sMIN_WEBGL_VERSION=2 -sM
   -sALLOW_MEMORY_GROWTH=1 -sINITIAL_MEMORY=67108864 -sTOTAL_STACK=1048576 \
   --js-library platform/web/hol_web_al.js --js-library platform/web/hol_web_lib.js
 # the objects are made again when these flags change (an -O3 object of an
-# older build would otherwise stay)
-WEB_STAMP := $(BUILD)/web-obj/flags-$(shell echo '$(CSTD) $(WARN) $(WEB_OPT) $(WEB_OPT_HOT) $(WEB_HOT)' | cksum | cut -d' ' -f1)
+# older build would otherwise stay): the file holds them, and is written
+# only when they differ (no shell at parse time: every make would run it)
+WEB_STAMP := $(BUILD)/web-obj/flags.txt
+WEB_FLAGS_TEXT := $(CSTD) $(WARN) $(WEB_OPT) $(WEB_OPT_HOT) $(WEB_HOT)
 WEB_PAGE := $(addprefix $(WEB)/,index.html page.js store.js)
 WEB_PORT ?= 8080
 WEB_HTTPS_PORT ?= 8443
@@ -528,9 +530,11 @@ $(error brotli is not installed: run make deps-web first, then make $(filter web
 endif
 endif
 
-$(WEB_STAMP):
+$(WEB_STAMP): FORCE
 	@mkdir -p $(dir $@)
-	@rm -f $(BUILD)/web-obj/flags-*; touch $@
+	@echo '$(WEB_FLAGS_TEXT)' | cmp -s - $@ || echo '$(WEB_FLAGS_TEXT)' >$@
+
+FORCE:
 
 $(BUILD)/web-obj/%.o: %.c $(WEB_STAMP)
 	@mkdir -p $(dir $@)
