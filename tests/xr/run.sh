@@ -11,9 +11,13 @@ set -eu
 root=$(cd "$(dirname "$0")/../.." && pwd)
 # One run at a time on a machine: the chroot's /src and /tmp/xr-test are
 # shared by every checkout (flock waits for another run to finish).
+# -o: the run's children (Xvfb, monado-service) do not inherit the lock, so
+# one left behind by a killed run cannot hold it for ever; only flock does.
 if [ -z "${HOL_XR_LOCKED:-}" ] && command -v flock >/dev/null 2>&1; then
     mkdir -p /var/cache/holonomy
-    HOL_XR_LOCKED=1 exec flock /var/cache/holonomy/xr-test.lock sh "$0" "$@"
+    lock=/var/cache/holonomy/xr-test.lock
+    flock -n -o "$lock" true || echo "xr-test: another xr-test holds $lock: waiting for it"
+    HOL_XR_LOCKED=1 exec flock -o "$lock" sh "$0" "$@"
 fi
 start=$(date +%s)
 CHROOT=$(sh "$root/tests/xr/chroot.sh")
