@@ -47,7 +47,7 @@ int hol_rec_time_ok(const char *s)
 
 /* ---- the meta text ---------------------------------------------------------- */
 
-static int hol__meta_key_ok(const char *k, size_t n)
+int hol_rec_meta_key_ok(const char *k, size_t n)
 {
     if (n < 1 || n > 32)
         return 0;
@@ -101,7 +101,7 @@ int hol_rec_meta_ok(const char *s)
     for (const char *p = s;;) {
         const char *semi = strchr(p, ';'), *end = semi ? semi : p + strlen(p);
         const char *eq = memchr(p, '=', (size_t)(end - p));
-        if (k == HOL_REC_META_MAX || !eq || !hol__meta_key_ok(p, (size_t)(eq - p)) ||
+        if (k == HOL_REC_META_MAX || !eq || !hol_rec_meta_key_ok(p, (size_t)(eq - p)) ||
             !hol__escaped_ok(eq + 1, (size_t)(end - eq - 1)))
             return 0;
         for (int i = 0; i < k; i++)

@@ -87,6 +87,9 @@ typedef struct hol_rec_meta {
     char meta[HOL_REC_META_TEXT];
 } hol_rec_meta;
 
+/* 1 when k (n bytes) is a meta KEY: 1..32 of a-z, 0-9, '_'. */
+int hol_rec_meta_key_ok(const char *k, size_t n);
+
 /* 1 when s is a meta text as above: 0..HOL_REC_META_MAX items, distinct
  * keys, values escaped (hol_text_escape's own output) of at most
  * HOL_REC_META_VALUE bytes; 1 for "". */

@@ -20,21 +20,11 @@
 
 #define PLAY_ENV_ROW_MAX 16384
 
-static int play_env__key_ok(const char *k, size_t n)
-{
-    if (n < 1 || n > 32)
-        return 0;
-    for (size_t i = 0; i < n; i++)
-        if (!((k[i] >= 'a' && k[i] <= 'z') || (k[i] >= '0' && k[i] <= '9') || k[i] == '_'))
-            return 0;
-    return 1;
-}
-
 static int play_env__meta(const char *cmd, const char *val, play_env *e)
 {
     const char *eq = strchr(val, '=');
     size_t n = eq ? (size_t)(eq - val) : 0;
-    if (!eq || !play_env__key_ok(val, n)) {
+    if (!eq || !hol_rec_meta_key_ok(val, n)) {
         cli_error(cmd, 0, "--meta '%.40s' is not KEY=VALUE with KEY 1..32 of a-z, 0-9, '_'", val);
         return -1;
     }
@@ -123,18 +113,29 @@ static void join(char *out, size_t cap, const char *const *v, int n, const char 
     }
 }
 
+/* The study file's text (*out_data, the caller frees it) and hex its
+ * SHA-256; 1 with the error said. */
+static int play_env__study_read(const char *cmd, const char *path, uint8_t **out_data,
+                                size_t *out_len, char hex[HOL_SHA256_HEX])
+{
+    uint8_t dig[32];
+    if (hol_file_read_all(path, 1 << 20, out_data, out_len)) {
+        cli_error(cmd, 0, "cannot read --study '%.200s' again", path);
+        return 1;
+    }
+    hol_sha256(*out_data, *out_len, dig);
+    hol_sha256_hex(dig, hex);
+    return 0;
+}
+
 /* DIR/study-HASH.txt, hex its hash (study_path's text). */
 static int play_env_study(const char *cmd, const char *dir, const char *path,
                           char hex[HOL_SHA256_HEX])
 {
-    uint8_t *data = NULL, dig[32];
+    uint8_t *data = NULL;
     size_t len = 0;
-    if (hol_file_read_all(path, 1 << 20, &data, &len)) {
-        cli_error(cmd, 0, "cannot read --study '%.200s' again", path);
+    if (play_env__study_read(cmd, path, &data, &len, hex))
         return 1;
-    }
-    hol_sha256(data, len, dig);
-    hol_sha256_hex(dig, hex);
     char name[4200];
     snprintf(name, sizeof name, "%s/study-%s.txt", dir, hex);
     struct stat st;
@@ -152,15 +153,11 @@ int play_env_meta(const char *cmd, const play_env *e, const char *study_path, ho
     m->session_no = e->session_no;
     m->study_sha256[0] = 0;
     if (study_path) {
-        uint8_t *data = NULL, dig[32];
+        uint8_t *data = NULL;
         size_t len = 0;
-        if (hol_file_read_all(study_path, 1 << 20, &data, &len)) {
-            cli_error(cmd, 0, "cannot read --study '%.200s' again", study_path);
+        if (play_env__study_read(cmd, study_path, &data, &len, m->study_sha256))
             return 1;
-        }
-        hol_sha256(data, len, dig);
         free(data);
-        hol_sha256_hex(dig, m->study_sha256);
     }
     static char raw[PLAY_ENV_META_MAX * 240];
     join(raw, sizeof raw, e->meta, e->nmeta, ";");
