@@ -364,25 +364,28 @@ bench: $(BENCH_BIN) $(BENCH_RENDER_BIN) $(BUILD)/holonomy
 # (HOL_TEST_QUICK=1, tests/quick.h); make test runs them in full.
 # make san SAN_UNIT_ENV= runs them in full under the sanitizers too.
 SAN_UNIT_ENV ?= HOL_TEST_QUICK=1
+# The sanitizer build links its runtimes statically and not as PIE: a run
+# of the tool then costs about 55 ms of CPU at start, not 80 (the dynamic
+# linker no longer applies the 78,000 relocations of ASan's globals and
+# UBSan's type data, nor binds libasan's interceptors; CI's CLI suites run
+# the tool thousands of times). The checks are the same.
+SAN_FLAGS := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
+SAN_LDFLAGS := -fsanitize=address,undefined -static-libasan -static-libubsan -no-pie
+SAN_MAKE = $(MAKE) BUILD=$(BUILD)/san OPT=-O1 CFLAGS="$(SAN_FLAGS)" LDFLAGS="$(SAN_LDFLAGS)"
 san:
-	$(MAKE) BUILD=$(BUILD)/san OPT=-O1 \
-	  CFLAGS="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer" \
-	  LDFLAGS="-fsanitize=address,undefined" UNIT_ENV="$(SAN_UNIT_ENV)" unit
+	$(SAN_MAKE) UNIT_ENV="$(SAN_UNIT_ENV)" unit
 
 # The command-line tests against the tool itself built with ASan + UBSan
 # (Mesa's own leaks are not ours: leak detection is off for the GL paths).
-SAN_FLAGS := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
 # CLI_ENV: set for the CLI suites only (the unit tests keep leak detection).
 CLI_ENV ?=
 SAN_CLI_ENV := ASAN_OPTIONS=detect_leaks=0:abort_on_error=0 UBSAN_OPTIONS=print_stacktrace=1
 san-cli:
-	$(MAKE) BUILD=$(BUILD)/san OPT=-O1 CFLAGS="$(SAN_FLAGS)" \
-	  LDFLAGS="-fsanitize=address,undefined" CLI_ENV="$(SAN_CLI_ENV)" cli-test
+	$(SAN_MAKE) CLI_ENV="$(SAN_CLI_ENV)" cli-test
 # make san and make san-cli as one make (CI): the unit tests fill the two
 # slots of make -j2 while the long CLI suites run, with no idle end between.
 san-all:
-	$(MAKE) BUILD=$(BUILD)/san OPT=-O1 CFLAGS="$(SAN_FLAGS)" \
-	  LDFLAGS="-fsanitize=address,undefined" CLI_ENV="$(SAN_CLI_ENV)" UNIT_ENV="$(SAN_UNIT_ENV)" cli-test unit
+	$(SAN_MAKE) CLI_ENV="$(SAN_CLI_ENV)" UNIT_ENV="$(SAN_UNIT_ENV)" cli-test unit
 
 # A warnings check: it builds and links everything, at -O0 (clang's
 # warnings do not depend on the optimiser; about half the CPU of -O2).
