@@ -46,12 +46,18 @@ flags="-std=c11 -O2 -g -fPIC -D_DEFAULT_SOURCE -DHOL_GLES=1 -D__ANDROID__
 n=0
 objs=""
 for f in $srcs; do
-    o="$tmp/$(echo "$f" | tr / _).o"
-    # shellcheck disable=SC2086
-    $CC $flags -c "$root/$f" -o "$o" || fail "$f does not compile with __ANDROID__"
-    objs="$objs $o"
+    objs="$objs $tmp/$(echo "$f" | tr / _).o"
     n=$((n + 1))
 done
+# two compilers at once (QUEST_LINK_JOBS; CI's two cores); the first source
+# that does not compile stops the rest (xargs stops at a status of 255)
+export CC flags root tmp
+# shellcheck disable=SC2016
+printf '%s\n' $srcs | xargs -P "${QUEST_LINK_JOBS:-2}" -n 1 sh -c '
+    # shellcheck disable=SC2086
+    $CC $flags -c "$root/$1" -o "$tmp/$(echo "$1" | tr / _).o" && exit 0
+    echo "quest-link-check: FAIL: $1 does not compile with __ANDROID__" >&2
+    exit 255' sh || exit 1
 # shellcheck disable=SC2086
 $CC -shared -Wl,--no-undefined -Wl,--as-needed -o "$tmp/libholonomy.so" $objs $hostlibs \
     2>"$tmp/link.err" || {
