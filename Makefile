@@ -426,7 +426,7 @@ deps-cross: deps
 # The Quest APK (platform/android/build_apk.sh; needs NDK= and
 # OPENXR_LOADER=, which this machine cannot have: without them it names
 # them in one line and stops with exit status 2).
-QUEST_DEB_PACKAGES := aapt zipalign android-framework-res
+QUEST_DEB_PACKAGES := aapt zipalign android-framework-res cmake curl
 quest:
 	@NDK="$(NDK)" OPENXR_LOADER="$(OPENXR_LOADER)" BUILD="$(BUILD)" \
 	  sh platform/android/build_apk.sh
@@ -619,14 +619,16 @@ web-test: deps-web
 # every source build_apk.sh links (but the NDK's glue and the entry that
 # needs its header) compiled for this machine with __ANDROID__, against
 # Debian's copies of the NDK's headers, and linked with --no-undefined
-# against exactly the libraries build_apk.sh names.
+# against exactly the libraries build_apk.sh names; then it must fail on
+# copies of build_apk.sh without the sound player or without -lopenal
+# (tests/quest_link_test.sh).
 QUEST_LINK_DEB_PACKAGES := android-liblog-dev android-libnativehelper-dev libopenxr-dev \
-  libegl-dev zlib1g-dev
+  libegl-dev zlib1g-dev libopenal-dev
 deps-quest-link:
 	@$(MAKE) -s deps DEB_PACKAGES="$(QUEST_LINK_DEB_PACKAGES)"
 
 quest-link-check: deps-quest-link
-	@CC=$(CC) sh tests/quest_link_check.sh
+	@CC=$(CC) sh tests/quest_link_test.sh
 
 clean:
 	rm -rf $(BUILD)
