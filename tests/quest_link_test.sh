@@ -33,7 +33,9 @@ must_fail() {
         fail "without $1 the check's last line is: $(tail -n 1 "$tmp/$1.err")"
     grep -q "undefined reference to \`$2" "$tmp/$1.err" ||
         fail "without $1 the link does not name $2 undefined: $(head -n 3 "$tmp/$1.err")"
-    echo "quest-link-check: without $1: FAIL as it must ($2... undefined)"
+    echo "quest-link-check: without $1: FAIL as it must ($2... undefined):"
+    grep -m 1 "undefined reference to \`$2" "$tmp/$1.err" | sed 's/^ */  /'
+    tail -n 1 "$tmp/$1.err" | sed 's/^/  /'
 }
 variant player 's|platform/audio/hol_audio\.c ||'
 grep -q "hol_audio" "$tmp/player.list" && fail "the player variant still lists hol_audio.c"
