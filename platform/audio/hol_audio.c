@@ -265,6 +265,14 @@ static void aud_place(hol_audio *a, ALuint s, const hol_sound_src *src)
     a->f.alSourcef(s, AL_GAIN, (float)(src->gain * a->volume));
 }
 
+/* loop voice v stops and is free again */
+static void aud_release(hol_audio *a, int v)
+{
+    a->f.alSourceStop(a->loops[v].src);
+    a->f.alSourcei(a->loops[v].src, AL_BUFFER, 0);
+    a->loops[v].used = 0;
+}
+
 void hol_audio_apply(hol_audio *a, const hol_sound_list *l)
 {
     if (!a || a->paused)
@@ -278,11 +286,8 @@ void hol_audio_apply(hol_audio *a, const hol_sound_list *l)
                 break;
             }
     for (int v = 0; v < HOL_SOUND_MAX_SOURCES; v++)
-        if (a->loops[v].used && !keep[v]) {
-            a->f.alSourceStop(a->loops[v].src);
-            a->f.alSourcei(a->loops[v].src, AL_BUFFER, 0);
-            a->loops[v].used = 0;
-        }
+        if (a->loops[v].used && !keep[v])
+            aud_release(a, v);
     for (int i = 0, v = 0; i < l->n; i++) { /* newcomers take free voices */
         if (placed[i])
             continue;
@@ -319,11 +324,8 @@ void hol_audio_pause(hol_audio *a, int on)
         return;
     }
     for (int v = 0; v < HOL_SOUND_MAX_SOURCES; v++) /* released: apply starts them again */
-        if (a->loops[v].used) {
-            a->f.alSourceStop(a->loops[v].src);
-            a->f.alSourcei(a->loops[v].src, AL_BUFFER, 0);
-            a->loops[v].used = 0;
-        }
+        if (a->loops[v].used)
+            aud_release(a, v);
     for (int i = 0; i < HOL_SOUND_MAX_SHOTS && a->nsrc; i++)
         a->f.alSourceStop(a->shots[i]);
     if (a->dev_pause)
