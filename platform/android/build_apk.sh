@@ -108,7 +108,7 @@ else
     command -v curl >/dev/null 2>&1 || missing="$missing curl"
 fi
 if [ -n "$missing" ]; then
-    echo "make quest: needs$missing (Debian: apt-get install aapt zipalign apksigner android-framework-res; see README 'Quest build')" >&2
+    echo "make quest: needs$missing (Debian: apt-get install aapt zipalign apksigner android-framework-res cmake curl; see README 'Quest build')" >&2
     exit 2
 fi
 
