@@ -46,7 +46,11 @@ NDK_LIBS="-landroid"
 # .dsc's Checksums-Sha256), the version Debian's libopenal-dev has, which
 # `make quest-link-check` links against. Only the library: no utilities,
 # examples or tests; OpenSL ES required (Android's output; 1.19.1 has no
-# AAudio or Oboe backend); the default HRTF data embedded.
+# AAudio or Oboe backend); the default HRTF data embedded. 1.19.1 defines
+# some tables in headers (FuMa2N3DScale, ...): compilers that default to
+# -fno-common (GCC 10+, clang 11+, so every NDK this script accepts) fail
+# its link with "multiple definition" unless CFLAGS has -fcommon
+# (OPENAL_CFLAGS; CMake adds the environment's CFLAGS to the toolchain's).
 OPENAL_VERSION=1.19.1
 OPENAL_TARBALL=openal-soft_$OPENAL_VERSION.orig.tar.gz
 OPENAL_SHA256=9f3536ab2bb7781dbafabc6a61e0b34b17edd16bd6c2eaf2ae71bc63078f98c7
@@ -55,6 +59,7 @@ OPENAL_OPTIONS="-DCMAKE_BUILD_TYPE=Release -DLIBTYPE=SHARED -DALSOFT_UTILS=OFF
   -DALSOFT_NO_CONFIG_UTIL=ON -DALSOFT_EXAMPLES=OFF -DALSOFT_TESTS=OFF -DALSOFT_CONFIG=OFF
   -DALSOFT_HRTF_DEFS=OFF -DALSOFT_AMBDEC_PRESETS=OFF -DALSOFT_INSTALL=OFF
   -DALSOFT_EMBED_HRTF_DATA=ON -DALSOFT_REQUIRE_OPENSL=ON"
+OPENAL_CFLAGS="-fcommon"
 
 case "${1:-}" in
 -h|--help)
@@ -71,6 +76,7 @@ case "${1:-}" in
     echo "version $OPENAL_VERSION"
     echo "tarball $OPENAL_TARBALL $OPENAL_SHA256 $OPENAL_URL"
     echo "options" $OPENAL_OPTIONS
+    echo "cflags $OPENAL_CFLAGS"
     exit 0 ;;
 "") ;;
 *)
@@ -134,7 +140,7 @@ echo "$OPENAL_SHA256  $oal/$OPENAL_TARBALL" | sha256sum -c --status || {
 }
 tar -xzf "$oal/$OPENAL_TARBALL" -C "$oal/src" --strip-components=1
 # shellcheck disable=SC2086
-cmake -S "$oal/src" -B "$oal/build" -DCMAKE_TOOLCHAIN_FILE="$NDK/build/cmake/android.toolchain.cmake" \
+CFLAGS="$OPENAL_CFLAGS" cmake -S "$oal/src" -B "$oal/build" -DCMAKE_TOOLCHAIN_FILE="$NDK/build/cmake/android.toolchain.cmake" \
     -DANDROID_ABI=arm64-v8a -DANDROID_PLATFORM=android-$API \
     -DCMAKE_SHARED_LINKER_FLAGS="-Wl,-z,max-page-size=16384" $OPENAL_OPTIONS >"$oal/cmake.log"
 cmake --build "$oal/build" --target OpenAL -j 2 >"$oal/build.log"
