@@ -183,6 +183,12 @@ $(BUILD)/tests/test_hid_dev: tests/test_hid_dev.c tests/hid_samples.h tests/fake
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) -Itests/fake_hidapi -o $@ $< $(HID_SRC) $(HID_DEV_SRC) $(CORE_LIB) $(LDFLAGS) -lcmocka $(LDLIBS)
 
+# The sound player's hold on OpenAL Soft's loopback device (loaded at run
+# time: skipped where libopenal.so.1 is missing, as under qemu).
+$(BUILD)/tests/test_audio: tests/test_audio.c $(AUDIO_SRC) platform/audio/hol_audio.h $(CORE_LIB)
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) -o $@ $< $(AUDIO_SRC) $(CORE_LIB) $(LDFLAGS) -lcmocka $(LDLIBS)
+
 # The report's pictures (platform/cli/report_draw.c) and their PNG writer.
 REPORT_DRAW_SRC := platform/cli/report_draw.c render/hol_font.c render/hol_png.c
 $(BUILD)/tests/test_report_draw: tests/test_report_draw.c $(REPORT_DRAW_SRC) platform/cli/report_draw.h $(CORE_LIB)
@@ -429,7 +435,7 @@ deps-cross: deps
 # The Quest APK (platform/android/build_apk.sh; needs NDK= and
 # OPENXR_LOADER=, which this machine cannot have: without them it names
 # them in one line and stops with exit status 2).
-QUEST_DEB_PACKAGES := aapt zipalign android-framework-res
+QUEST_DEB_PACKAGES := aapt zipalign android-framework-res cmake curl
 quest:
 	@NDK="$(NDK)" OPENXR_LOADER="$(OPENXR_LOADER)" BUILD="$(BUILD)" \
 	  sh platform/android/build_apk.sh
@@ -634,14 +640,16 @@ web-test: deps-web
 # every source build_apk.sh links (but the NDK's glue and the entry that
 # needs its header) compiled for this machine with __ANDROID__, against
 # Debian's copies of the NDK's headers, and linked with --no-undefined
-# against exactly the libraries build_apk.sh names.
+# against exactly the libraries build_apk.sh names; then it must fail on
+# copies of build_apk.sh without the sound player or without -lopenal
+# (tests/quest_link_test.sh).
 QUEST_LINK_DEB_PACKAGES := android-liblog-dev android-libnativehelper-dev libopenxr-dev \
-  libegl-dev zlib1g-dev
+  libegl-dev zlib1g-dev libopenal-dev
 deps-quest-link:
 	@$(MAKE) -s deps DEB_PACKAGES="$(QUEST_LINK_DEB_PACKAGES)"
 
 quest-link-check: deps-quest-link
-	@CC=$(CC) sh tests/quest_link_check.sh
+	@CC=$(CC) sh tests/quest_link_test.sh
 
 clean:
 	rm -rf $(BUILD)

@@ -2,7 +2,8 @@
  * native_app_glue: it maps the activity onto a quest_host (quest_shell.h)
  * and runs quest_run, then finishes the activity.
  * - APP_CMD_RESUME / APP_CMD_PAUSE: the looper is polled without waiting
- *   while resumed, and quest_run pauses the game while paused;
+ *   while resumed, and quest_run pauses the game and holds the sound while
+ *   paused;
  * - APP_CMD_DESTROY (or destroyRequested): the session ends properly
  *   (xrRequestExitSession, STOPPING, EXITING) and the activity finishes.
  * This file and the glue are the only sources of the APK that need the

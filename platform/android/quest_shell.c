@@ -1,5 +1,6 @@
 /* quest_shell.c - the Quest app on a quest_host (see quest_shell.h): the
- * session under the OpenXR layer, files through the POSIX sink, every
+ * session under the OpenXR layer, files through the POSIX sink, sound
+ * through the platform's player (platform/audio: OpenAL Soft), every
  * message through logcat. The session is made once the headset knows its
  * play area (quest_fit): the campaign plays the room and cell size the
  * stage bounds hold (core/hol_fit.h), as `holonomy xr` does. */
@@ -12,6 +13,7 @@
 
 #include "../../core/hol_campaign.h"
 #include "../../core/hol_session.h"
+#include "../audio/hol_audio.h"
 #include "../file/hol_sink_posix.h"
 #include "../openxr/hol_xr.h"
 
@@ -21,7 +23,10 @@ typedef struct quest {
     hol_level levels[HOL_CAMPAIGN_LEVELS];
     hol_sink_posix logs, recs;
     int resumed;
+    int focused; /* the OpenXR session is FOCUSED (quest_focus) */
     int destroy;
+    int sound_due; /* 1: open the sound at the next step */
+    hol_audio_feed sound;
 } quest;
 
 #if defined(__GNUC__)
@@ -35,6 +40,35 @@ static void quest_log(int prio, const char *fmt, ...)
     va_end(ap);
 }
 
+/* The sound, as `holonomy xr` plays it (platform/audio's feed): opened at
+ * the first step (the session is up), then core's list each step; held
+ * unless the session is FOCUSED and the activity resumed. */
+static void quest_sound(quest *q)
+{
+    if (q->sound_due) {
+        q->sound_due = 0;
+        char msg[160];
+        if (hol_audio_feed_open(&q->sound, 1.0, msg, sizeof msg))
+            quest_log(ANDROID_LOG_WARN, "sound off: %s", msg);
+        else
+            quest_log(ANDROID_LOG_INFO, "sound: OpenAL Soft%s",
+                      hol_audio_hrtf(q->sound.au) ? ", HRTF" : "");
+    }
+    hol_audio_feed_step(&q->sound, hol_session_app(q->session));
+}
+
+static void quest_hold(quest *q)
+{
+    hol_audio_feed_hold(&q->sound, !(q->focused && q->resumed));
+}
+
+static void quest_focus(void *user, int focused)
+{
+    quest *q = user;
+    q->focused = focused;
+    quest_hold(q);
+}
+
 static int quest_step(void *user, const hol_input *in, const hol_app_view **out_view)
 {
     quest *q = user;
@@ -44,9 +78,12 @@ static int quest_step(void *user, const hol_input *in, const hol_app_view **out_
     int over = 0;
     hol_err err = hol_session_step(q->session, &i2, &over);
     *out_view = hol_app_get_view(hol_session_app(q->session));
-    if (err)
+    if (err) {
         quest_log(ANDROID_LOG_ERROR, "%s", hol_session_message(q->session));
-    return err ? -1 : over;
+        return -1;
+    }
+    quest_sound(q);
+    return over;
 }
 
 static struct hol_world *quest_world(void *user)
@@ -69,6 +106,7 @@ static int quest_poll(void *user)
 {
     quest *q = user;
     q->destroy |= q->host->poll(q->host->user, &q->resumed) != 0;
+    quest_hold(q); /* onPause: held at once, whether frames run or not */
     return q->destroy;
 }
 
@@ -145,6 +183,8 @@ int quest_run(const quest_host *host)
         q.logs.fd[i] = q.recs.fd[i] = -1;
     q.host = host;
     q.resumed = 1;
+    q.sound_due = 1;
+    q.sound.held = 1; /* until the session is FOCUSED */
     int rc = 1;
     if (quest_prepare(&q) == 0) {
         hol_xr_desc d;
@@ -154,7 +194,7 @@ int quest_run(const quest_host *host)
         d.android_activity = host->activity;
         hol_xr_app_fns fns = {.user = &q, .step = quest_step, .world = quest_world,
                               .level_started = quest_level_started, .poll_platform = quest_poll,
-                              .fit = quest_fit, .view = quest_view};
+                              .fit = quest_fit, .view = quest_view, .focus = quest_focus};
         rc = hol_xr_run(&d, &fns);
         hol_err e = !q.session ? HOL_OK
                     : q.destroy ? hol_session_abort(q.session)
@@ -163,6 +203,7 @@ int quest_run(const quest_host *host)
             quest_log(ANDROID_LOG_ERROR, "%s", hol_session_message(q.session));
             rc = 1;
         }
+        hol_audio_feed_close(&q.sound);
         hol_session_destroy(q.session);
     }
     hol_sink_posix_fini(&q.logs);

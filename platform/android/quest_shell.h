@@ -10,6 +10,12 @@
  *   it attaches the thread to the Java VM and initialises the Android
  *   loader before anything else). While the activity is paused the game is
  *   paused, whatever the OpenXR session says.
+ * - Sound: as `holonomy xr` plays it (platform/audio/hol_audio.h's feed,
+ *   OpenAL Soft linked: the APK's libopenal.so), opened at the first step;
+ *   held while the OpenXR session is not FOCUSED (hol_xr_app_fns.focus)
+ *   or the activity is paused (host->poll's *out_resumed 0: held at once,
+ *   frames or not); a device that does not open is one logcat line, then
+ *   silence.
  * - Files, through the POSIX sink (platform/file/hol_sink_posix.h), in the
  *   app's external files directory, which `adb pull` reaches
  *   (/sdcard/Android/data/org.holonomy.app/files), else its internal one:

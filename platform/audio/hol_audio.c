@@ -1,9 +1,12 @@
 /* hol_audio.c - OpenAL Soft player loaded at run time (see hol_audio.h);
- * in the web build (__EMSCRIPTEN__) the same player on the OpenAL calls of
- * platform/web/hol_web_al.js (WebAudio, linked in: no dlopen). */
+ * in the Quest build (__ANDROID__) the same player linked against the
+ * APK's libopenal.so (OpenAL Soft, built by build_apk.sh), and in the web
+ * build (__EMSCRIPTEN__) on the OpenAL calls of platform/web/hol_web_al.js
+ * (WebAudio, linked in): AUD_LINKED, no dlopen. */
 #include "hol_audio.h"
 
-#ifdef __EMSCRIPTEN__
+#if defined(__EMSCRIPTEN__) || defined(__ANDROID__)
+#define AUD_LINKED 1
 #include <AL/al.h>
 #include <AL/alc.h>
 #else
@@ -19,7 +22,7 @@
  * them (the OpenAL 1.1 ABI and the ALC_SOFT_loopback and ALC_SOFT_HRTF
  * extensions): no header is needed at build time, so the tool builds where
  * libopenal-dev is missing (the xr-test chroot) and runs silent there. */
-#ifndef __EMSCRIPTEN__
+#ifndef AUD_LINKED
 typedef struct ALCdevice ALCdevice;
 typedef struct ALCcontext ALCcontext;
 typedef char ALCchar, ALCboolean, ALboolean;
@@ -49,6 +52,7 @@ typedef void ALvoid;
 #define ALC_HRTF_SOFT 0x1992
 typedef ALCdevice *(*LPALCLOOPBACKOPENDEVICESOFT)(const ALCchar *);
 typedef void (*LPALCRENDERSAMPLESSOFT)(ALCdevice *, void *, ALCsizei);
+typedef void (*LPALCDEVICEPAUSESOFT)(ALCdevice *); /* ALC_SOFT_pause_device */
 
 #define AUD_FUNCS(X)                                                                          \
     X(ALCdevice *, alcOpenDevice, (const ALCchar *))                                          \
@@ -91,9 +95,10 @@ struct hol_audio {
     } f;
     LPALCLOOPBACKOPENDEVICESOFT loop_open;
     LPALCRENDERSAMPLESSOFT render;
+    LPALCDEVICEPAUSESOFT dev_pause, dev_resume; /* NULL: not offered */
     ALCdevice *dev;
     ALCcontext *ctx;
-    int loopback, hrtf;
+    int loopback, hrtf, paused;
     double volume;
     ALuint buf[HOL_SND_KINDS];
     int nbuf;
@@ -108,6 +113,7 @@ static int aud_fail(char *msg, size_t cap, const char *what)
     return -1;
 }
 
+#ifdef AUD_LINKED
 #ifdef __EMSCRIPTEN__
 /* The web build has no loopback device, so nothing to look up; linking
  * alcGetProcAddress (emscripten's al.c) would bring all of emscripten's
@@ -118,14 +124,21 @@ static void *aud_no_proc(ALCdevice *dev, const ALCchar *name)
     return NULL;
 }
 
-/* the calls are linked in (platform/web/hol_web_al.js: on WebAudio) */
+#endif
+
+/* the calls are linked in (Android: the APK's libopenal.so; the web:
+ * platform/web/hol_web_al.js, on WebAudio) */
 static int aud_load(hol_audio *a, char *msg, size_t cap)
 {
     (void)msg, (void)cap;
 #define AUD_SYM(ret, name, args) a->f.name = name;
     AUD_FUNCS(AUD_SYM)
-#undef AUD_SYM
+#ifdef __EMSCRIPTEN__
     a->f.alcGetProcAddress = aud_no_proc;
+#else
+    AUD_GETPROC(AUD_SYM)
+#endif
+#undef AUD_SYM
     return 0;
 }
 #else
@@ -190,6 +203,12 @@ static int aud_device(hol_audio *a, char *msg, size_t cap)
         return aud_fail(msg, cap, "no audio device opens");
     if (!a->ctx || !a->f.alcMakeContextCurrent(a->ctx))
         return aud_fail(msg, cap, "cannot make an OpenAL context");
+    if (!a->loopback && a->f.alcIsExtensionPresent(a->dev, "ALC_SOFT_pause_device")) {
+        *(void **)&a->dev_pause = a->f.alcGetProcAddress(a->dev, "alcDevicePauseSOFT");
+        *(void **)&a->dev_resume = a->f.alcGetProcAddress(a->dev, "alcDeviceResumeSOFT");
+        if (!a->dev_pause || !a->dev_resume)
+            a->dev_pause = a->dev_resume = NULL;
+    }
     return 0;
 }
 
@@ -246,9 +265,17 @@ static void aud_place(hol_audio *a, ALuint s, const hol_sound_src *src)
     a->f.alSourcef(s, AL_GAIN, (float)(src->gain * a->volume));
 }
 
+/* loop voice v stops and is free again */
+static void aud_release(hol_audio *a, int v)
+{
+    a->f.alSourceStop(a->loops[v].src);
+    a->f.alSourcei(a->loops[v].src, AL_BUFFER, 0);
+    a->loops[v].used = 0;
+}
+
 void hol_audio_apply(hol_audio *a, const hol_sound_list *l)
 {
-    if (!a)
+    if (!a || a->paused)
         return;
     int keep[HOL_SOUND_MAX_SOURCES] = {0}, placed[HOL_SOUND_MAX_SOURCES] = {0};
     for (int i = 0; i < l->n; i++) /* sources that keep their voice */
@@ -259,11 +286,8 @@ void hol_audio_apply(hol_audio *a, const hol_sound_list *l)
                 break;
             }
     for (int v = 0; v < HOL_SOUND_MAX_SOURCES; v++)
-        if (a->loops[v].used && !keep[v]) {
-            a->f.alSourceStop(a->loops[v].src);
-            a->f.alSourcei(a->loops[v].src, AL_BUFFER, 0);
-            a->loops[v].used = 0;
-        }
+        if (a->loops[v].used && !keep[v])
+            aud_release(a, v);
     for (int i = 0, v = 0; i < l->n; i++) { /* newcomers take free voices */
         if (placed[i])
             continue;
@@ -287,6 +311,30 @@ void hol_audio_apply(hol_audio *a, const hol_sound_list *l)
         aud_place(a, s, &l->shot[i]);
         a->f.alSourcePlay(s);
     }
+}
+
+void hol_audio_pause(hol_audio *a, int on)
+{
+    if (!a || !on == !a->paused)
+        return;
+    a->paused = on != 0;
+    if (!on) {
+        if (a->dev_resume)
+            a->dev_resume(a->dev);
+        return;
+    }
+    for (int v = 0; v < HOL_SOUND_MAX_SOURCES; v++) /* released: apply starts them again */
+        if (a->loops[v].used)
+            aud_release(a, v);
+    for (int i = 0; i < HOL_SOUND_MAX_SHOTS && a->nsrc; i++)
+        a->f.alSourceStop(a->shots[i]);
+    if (a->dev_pause)
+        a->dev_pause(a->dev);
+}
+
+int hol_audio_paused(const hol_audio *a)
+{
+    return a && a->paused;
 }
 
 int hol_audio_render(hol_audio *a, int16_t *out, int n)
@@ -337,9 +385,39 @@ void hol_audio_close(hol_audio *a)
     }
     if (a->dev)
         a->f.alcCloseDevice(a->dev);
-#ifndef __EMSCRIPTEN__
+#ifndef AUD_LINKED
     if (a->lib)
         dlclose(a->lib);
 #endif
     free(a);
+}
+
+int hol_audio_feed_open(hol_audio_feed *f, double volume, char *msg, size_t cap)
+{
+    hol_sound_init(&f->snd);
+    if (hol_audio_open(0, volume, &f->au, msg, cap))
+        return -1;
+    hol_audio_pause(f->au, f->held);
+    return 0;
+}
+
+void hol_audio_feed_step(hol_audio_feed *f, hol_app *app)
+{
+    if (!f->au || !app)
+        return; /* held: the list is made (the listener's memory stays true), not played */
+    hol_sound_update(&f->snd, hol_app_get_view(app), hol_app_get_events(app), hol_app_world(app),
+                     &f->sl);
+    hol_audio_apply(f->au, &f->sl);
+}
+
+void hol_audio_feed_hold(hol_audio_feed *f, int held)
+{
+    f->held = held != 0;
+    hol_audio_pause(f->au, f->held);
+}
+
+void hol_audio_feed_close(hol_audio_feed *f)
+{
+    hol_audio_close(f->au);
+    f->au = NULL;
 }

@@ -6,6 +6,10 @@
  *   binary runs where it is missing (the xr-test chroot, a machine without
  *   it): hol_audio_open then fails with a message and the caller goes on
  *   silent (play and xr say so in one warning line).
+ * - The Quest build (__ANDROID__): the same player linked against the
+ *   APK's libopenal.so (OpenAL Soft for Android, its OpenSL ES backend,
+ *   built by platform/android/build_apk.sh); no dlopen, so the library is
+ *   NEEDED by libholonomy.so (`make quest-link-check` checks it).
  * - Buffers: one per hol_sound_kind, synthesised by hol_sound_synth at
  *   HOL_SOUND_RATE, mono 16-bit.
  * - Voices: HOL_SOUND_MAX_SOURCES looping voices follow the list's ids
@@ -47,6 +51,35 @@ int hol_audio_render(hol_audio *a, int16_t *out, int n);
 int hol_audio_active(const hol_audio *a);
 /* 1 when HRTF is in use. */
 int hol_audio_hrtf(const hol_audio *a);
+/* Hold the sound (on 1: the app lost the focus, the activity paused) or
+ * let it go on (on 0); idempotent, NULL ok. Held: every voice stops (the
+ * loops are released: the first hol_audio_apply after on 0 starts them
+ * again), the output device pauses where OpenAL offers
+ * ALC_SOFT_pause_device (OpenAL Soft: its backend's stream stops; not the
+ * web's, nor a loopback device), and hol_audio_apply does nothing. */
+void hol_audio_pause(hol_audio *a, int on);
+int hol_audio_paused(const hol_audio *a); /* 1 while held; 0 for NULL */
 void hol_audio_close(hol_audio *a); /* NULL ok */
+
+/* One listener fed by one app frame by frame: what play, xr and the Quest
+ * do (the platform decides when to open it and when to hold it; the feed
+ * carries out core's list). A zeroed struct is a closed, unheld feed. */
+typedef struct hol_audio_feed {
+    hol_audio *au; /* NULL: silent */
+    hol_sound snd;
+    hol_sound_list sl;
+    int held;      /* hol_audio_feed_hold's last word, kept across the open */
+} hol_audio_feed;
+
+/* The default output device (hol_audio_open(0, volume)); held at once if
+ * the feed is held. 0 ok, else -1 with msg (the feed stays silent). */
+int hol_audio_feed_open(hol_audio_feed *f, double volume, char *msg, size_t cap);
+/* This frame: core's list (hol_sound_update) from app's view, events and
+ * world, carried out (hol_audio_apply; nothing plays while held). Silent
+ * feed or NULL app: nothing. */
+void hol_audio_feed_step(hol_audio_feed *f, hol_app *app);
+/* Hold (1) or go on (0): hol_audio_pause, remembered for a later open. */
+void hol_audio_feed_hold(hol_audio_feed *f, int held);
+void hol_audio_feed_close(hol_audio_feed *f); /* then silent; may open again */
 
 #endif

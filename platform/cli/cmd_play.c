@@ -156,9 +156,7 @@ typedef struct play_ctx {
     int overlay; /* F2: the frame time drawn */
     int drawn_w, drawn_h; /* the window's size at the last frame: a new one
                              is checked for GL errors (no frame waits else) */
-    hol_audio *au;        /* NULL: silent */
-    hol_sound snd;
-    hol_sound_list sl;
+    hol_audio_feed snd;   /* its au NULL: silent */
     /* environment.csv's row waits for the measured present rate when
      * XRandR gives none (play_env_due) */
     int env_due;
@@ -341,23 +339,17 @@ static void play_open_pad(play_ctx *c)
  * warning line, then silence. */
 static void play_open_audio(play_ctx *c)
 {
-    hol_sound_init(&c->snd);
     double v = c->o.volume < 0 ? 1.0 : c->o.volume;
     if (c->o.mute || v == 0 || c->o.input_path)
         return;
     char msg[160];
-    if (hol_audio_open(0, v, &c->au, msg, sizeof msg))
+    if (hol_audio_feed_open(&c->snd, v, msg, sizeof msg))
         fprintf(stderr, "holonomy play: warning: %s: playing silent\n", msg);
 }
 
 static void play_sound(play_ctx *c)
 {
-    if (!c->au)
-        return;
-    hol_app *app = hol_session_app(c->s);
-    hol_sound_update(&c->snd, hol_app_get_view(app), hol_app_get_events(app),
-                     hol_app_world(app), &c->sl);
-    hol_audio_apply(c->au, &c->sl);
+    hol_audio_feed_step(&c->snd, hol_session_app(c->s));
 }
 
 /* The display's refresh rate for environment.csv: the X screen's current
@@ -652,7 +644,7 @@ static int play_cleanup(play_ctx *c, int status, int abort)
     if (c->use_pad)
         hol_hid_dev_close(&c->pad);
     hol_render_destroy(c->r);
-    hol_audio_close(c->au);
+    hol_audio_feed_close(&c->snd);
     int end = play_session_end(c->cmd, c->s, abort || (c->has_input && c->input.aborted));
     play_out_close(&c->out);
     if (c->has_window)

@@ -292,9 +292,7 @@ typedef struct xr_ctx {
     int st;        /* the session's opening status */
     int sound;     /* 1: try to open the sound at the first step */
     double volume;
-    hol_audio *au; /* NULL: silent */
-    hol_sound snd;
-    hol_sound_list sl;
+    hol_audio_feed snd; /* its au NULL: silent */
     const xr_opts *o;
     char runtime[160], gl[160]; /* the host callback's (environment.csv) */
     int eye_w, eye_h;
@@ -302,24 +300,24 @@ typedef struct xr_ctx {
 } xr_ctx;
 
 /* The sound opens at the first step (the session is up); its line goes
- * with xr's progress lines on stdout. */
+ * with xr's progress lines on stdout. It is held while the session is not
+ * FOCUSED (xr_focus). */
 static void xr_sound(xr_ctx *c)
 {
     if (c->sound) {
         c->sound = 0;
-        hol_sound_init(&c->snd);
         char msg[160];
-        if (hol_audio_open(0, c->volume, &c->au, msg, sizeof msg))
+        if (hol_audio_feed_open(&c->snd, c->volume, msg, sizeof msg))
             printf("xr: sound off: %s\n", msg);
         else
-            printf("xr: sound: OpenAL Soft%s\n", hol_audio_hrtf(c->au) ? ", HRTF" : "");
+            printf("xr: sound: OpenAL Soft%s\n", hol_audio_hrtf(c->snd.au) ? ", HRTF" : "");
     }
-    if (!c->au)
-        return;
-    hol_app *app = hol_session_app(c->s);
-    hol_sound_update(&c->snd, hol_app_get_view(app), hol_app_get_events(app),
-                     hol_app_world(app), &c->sl);
-    hol_audio_apply(c->au, &c->sl);
+    hol_audio_feed_step(&c->snd, hol_session_app(c->s));
+}
+
+static void xr_focus(void *user, int focused)
+{
+    hol_audio_feed_hold(&((xr_ctx *)user)->snd, !focused);
 }
 
 static void xr_host(void *user, const char *runtime, const char *gl, int eye_w, int eye_h)
@@ -434,7 +432,7 @@ static int xr_run(const xr_opts *o, xr_ctx *c, const hol_input *script, long nsc
                           .level_started = xr_level_started, .poll_platform = xr_poll,
                           .fit = xr_fit, .view = xr_view,
                           .haptic = o->no_haptics ? NULL : xr_haptic, .host = xr_host,
-                          .environment = xr_environment};
+                          .environment = xr_environment, .focus = xr_focus};
     int rc = hol_xr_run(&d, &fns);
     xr_environment(c, "", 0, ""); /* a run that failed before telling */
     return c->st ? c->st : rc ? CLI_EXIT_FAIL : CLI_EXIT_OK;
@@ -486,7 +484,7 @@ int cli_cmd_xr(int argc, char **argv)
         st = play_env_meta(cmd, &o.env, o.study, &c.meta) ? CLI_EXIT_FAIL
                                                            : xr_run(&o, &c, script, nscript);
     }
-    hol_audio_close(c.au);
+    hol_audio_feed_close(&c.snd);
     int end = play_session_end(cmd, c.s, cli_caught_signal() != 0);
     st = st ? st : end;
     if (!st && cli_caught_signal())

@@ -63,6 +63,12 @@ typedef struct hol_xr_app_fns {
      * run ends. */
     void (*environment)(void *user, const char *controller, double refresh_hz,
                         const char *how);
+    /* Optional: at every change of the session's state, 1 when the new
+     * state is FOCUSED, else 0 (VISIBLE, SYNCHRONIZED, STOPPING, lost,
+     * ...): what the game's own pause does not stop follows it (the
+     * sound is held). The steps tell it too (HOL_INPUT_FOCUSED), but none
+     * runs once the session stops. */
+    void (*focus)(void *user, int focused);
 } hol_xr_app_fns;
 
 #define HOL_XR_REFRESH_FRAMES 60

@@ -24,6 +24,8 @@ static void hol__state_changed(hol__xr *x, const XrEventDataSessionStateChanged 
     hol__say(x, "xr: state %s", hol__state_name(state));
     x->reached_focused |= state == HOL_XR_STATE_FOCUSED;
     hol_xr_do d = hol_xr_life_event(&x->life, state);
+    if (x->fns->focus)
+        x->fns->focus(x->fns->user, x->life.focused);
     if (state == HOL_XR_STATE_LOSS_PENDING) {
         x->lost = 1;
         hol__error(x, "the headset session was lost (the headset was disconnected or the "

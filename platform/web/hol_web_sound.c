@@ -19,9 +19,7 @@ extern void hol_web_js_config(const char *key, char *buf, int cap);
 
 static struct {
     int want;      /* 1: play once a gesture was seen; 0 muted or failed */
-    hol_audio *au;
-    hol_sound snd;
-    hol_sound_list sl;
+    hol_audio_feed feed; /* its au NULL: not open */
 } g;
 
 int hol_web_sound_config(void)
@@ -40,31 +38,25 @@ void hol_web_sound_step(int over)
     if (!app)
         return;
     if (over) {
-        if (g.au) {
-            memset(&g.sl, 0, sizeof g.sl);
-            hol_audio_apply(g.au, &g.sl); /* the loops stop */
-        }
+        hol_audio_feed_hold(&g.feed, 1); /* the loops stop */
         g.want = 0;
         return;
     }
-    if (!g.au) {
+    if (!g.feed.au) {
         if (!g.want || !hol_web_js_gesture())
             return;
         char msg[160];
-        hol_sound_init(&g.snd);
-        if (hol_audio_open(0, 1.0, &g.au, msg, sizeof msg)) {
+        if (hol_audio_feed_open(&g.feed, 1.0, msg, sizeof msg)) {
             g.want = 0;
             printf("web: sound off: %s\n", msg);
             return;
         }
-        printf("web: sound: OpenAL on WebAudio%s\n", hol_audio_hrtf(g.au) ? ", HRTF" : "");
+        printf("web: sound: OpenAL on WebAudio%s\n", hol_audio_hrtf(g.feed.au) ? ", HRTF" : "");
     }
-    hol_sound_update(&g.snd, hol_app_get_view(app), hol_app_get_events(app), hol_app_world(app),
-                     &g.sl);
-    hol_audio_apply(g.au, &g.sl);
+    hol_audio_feed_step(&g.feed, app);
 }
 
 int hol_web_sound_active(void)
 {
-    return hol_audio_active(g.au);
+    return hol_audio_active(g.feed.au);
 }
