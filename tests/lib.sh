@@ -65,20 +65,27 @@ walk_input() {
     }'
 }
 
-# start_xvfb SALT: an Xvfb of its own on display :100..:499 (from the
-# script's pid and SALT), killed when the script ends; waits until a window
-# opens there and exports DISPLAY. Returns 1 (nothing started) without Xvfb.
+# start_xvfb [SALT]: an Xvfb of its own, killed when the script ends;
+# exports DISPLAY once the server accepts clients. Xvfb picks a free display
+# number itself and writes it to a FIFO when it is ready (-displayfd), so
+# nothing polls: the read blocks until then (or until Xvfb ends, at once,
+# when it cannot start: a failed check, then DISPLAY names no server and
+# every window check fails). SALT is not used any more (the number was made
+# from the script's pid and SALT, and the readiness polled with a play of 2
+# frames: about 1 s of CPU a start). Returns 1 (nothing started) without Xvfb.
 start_xvfb() {
     command -v Xvfb >/dev/null 2>&1 || return 1
-    D=":$((100 + ($$ + $1) % 400))"
-    Xvfb "$D" -screen 0 320x240x24 -nolisten tcp >/dev/null 2>&1 &
+    rm -f "$T/.xvfb.fd"
+    mkfifo "$T/.xvfb.fd" || { bad "Xvfb: no FIFO in $T"; return 0; }
+    Xvfb -displayfd 3 -screen 0 320x240x24 -nolisten tcp 3>"$T/.xvfb.fd" >/dev/null 2>&1 &
     XPID=$!
     trap 'kill $XPID 2>/dev/null; rm -rf "$T"' EXIT
-    for i in 1 2 3 4 5 6 7 8 9 10; do
-        DISPLAY=$D "$H" play --frames 2 --size 64x48 >/dev/null 2>&1 && break
-        sleep 0.3
-    done
-    export DISPLAY=$D
+    read -r xvfb_n <"$T/.xvfb.fd" || xvfb_n=
+    rm -f "$T/.xvfb.fd"
+    case $xvfb_n in
+    [0-9]*) export DISPLAY=":$xvfb_n" ;;
+    *) bad "Xvfb did not start"; export DISPLAY=":none" ;;
+    esac
 }
 
 # A replay's logs against the play's: every file byte for byte, but
