@@ -251,7 +251,7 @@ test: deps
 	@$(MAKE) --no-print-directory test-tools
 	@$(MAKE) --no-print-directory test-suites
 test-tools: all $(BUILD)/tests/x11_close $(BUILD)/tests/x11_shot $(BUILD)/tests/png_probe \
-            $(BUILD)/tests/gl_sync_count.so
+            $(BUILD)/tests/gl_sync_count.so $(BUILD)/tests/wait_for
 
 # Every suite of make test as one list, CLI, unit and render alike: the long
 # ones first (SLOW_FIRST's order), then the rest by name. A unit or render
@@ -309,9 +309,9 @@ render-run-%: $(BUILD)/tests/%
 
 cli-test: $(patsubst tests/%.sh,cli-run-%,$(call slow_first,$(CLI_TESTS)))
 cli-run-%: $(BUILD)/holonomy $(BUILD)/tests/x11_close $(BUILD)/tests/x11_shot $(BUILD)/tests/png_probe \
-           $(BUILD)/tests/gl_sync_count.so
+           $(BUILD)/tests/gl_sync_count.so $(BUILD)/tests/wait_for
 	@$(CLI_ENV) HOLONOMY=$(BUILD)/holonomy X11_CLOSE=$(BUILD)/tests/x11_close X11_SHOT=$(BUILD)/tests/x11_shot \
-	  PNG_PROBE=$(BUILD)/tests/png_probe GL_SYNC_SO=$(BUILD)/tests/gl_sync_count.so \
+	  PNG_PROBE=$(BUILD)/tests/png_probe GL_SYNC_SO=$(BUILD)/tests/gl_sync_count.so WAIT_FOR=$(BUILD)/tests/wait_for \
 	  $(SUITE) tests/$*.sh sh tests/$*.sh
 
 # A test helper (LD_PRELOAD): the GL calls that wait for the GPU, counted
@@ -324,6 +324,12 @@ $(BUILD)/tests/gl_sync_count.so: tests/gl_sync_count.c
 $(BUILD)/tests/png_probe: tests/png_probe.c render/hol_png.c render/hol_png.h
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) -o $@ $< render/hol_png.c -lz
+
+# A test helper: waits in one process until a file appears, a folder's
+# entries change or a process ends (the suites' polls; tests/lib.sh).
+$(BUILD)/tests/wait_for: tests/wait_for.c
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) -o $@ $<
 
 # A test helper: the close button of a window, as a window manager presses it.
 $(BUILD)/tests/x11_close: tests/x11_close.c
