@@ -206,20 +206,19 @@ ended() {
 }
 
 # a live play killed with -9: rows up to the last second are on disk.
-# Polled: the kill falls as soon as a row of 1 s or more is on disk, at the
-# latest 3 s after the start (the bound the fixed 3 s wait gave); the rows
-# are read again after the kill, so they must have survived it.
+# Waited for: the kill falls as soon as a row of 1 s or more is on disk (the
+# header and 11 rows: rows are 0.1 s apart from 0.0, a gap one row too), at
+# the latest 5 s after the start (tests/wait_for.c; the shell's poll ran a
+# tail, cut, awk and sleep every 0.1 s); the rows are read again after the
+# kill, so they must have survived it.
 head_t() { tail -1 "$T/kill9/logs/head-001.csv.live" 2>/dev/null | cut -d, -f4; }
 live kill9
-for i in $(seq 1 30); do
-    awk -v t="$(head_t)" 'BEGIN { exit !(t + 0 >= 1.0) }' && break
-    sleep 0.1
-done
+wait_for 5 -l "$T/kill9/logs/head-001.csv.live" 12
 kill -9 $pid
 wait $pid 2>/dev/null
 last=$(head_t)
 awk -v t="${last:-0}" 'BEGIN { exit !(t + 0 >= 1.0) }' && ok ||
-    bad "killed 3 s after the start with head rows up to ${last:-none} s"
+    bad "killed at most 5 s after the start with head rows up to ${last:-none} s"
 [ -f "$T/kill9/s.rec.live" ] && [ ! -e "$T/kill9/s.rec" ] && ok || bad "killed: $(ls "$T/kill9")"
 run "a killed session's recording replays" 0 "$H" replay "$T/kill9/s.rec.live" \
     --log "$T/kill9/logs" --append
