@@ -250,14 +250,17 @@ run: deps
 	@$(MAKE) --no-print-directory $(BUILD)/holonomy
 	$(BUILD)/holonomy play $(RUN_ARGS)
 
-# The tool and the CLI suites' helpers first (both slots compile them), then
-# the suites: with the tool still building, make -j2 started the suites that
-# came later in the list first, and the long ones first in it ran at the end.
+# deps first (a fresh clone may lack the compilers and headers), then one
+# make of the build and the suites: make -j2 starts the tool's objects first
+# (test-tools leads test-suites' list), and a slot the build leaves idle (the
+# archive, the link, a make of its own between the two: about 10 s from a
+# fresh clone) goes to the next job that can run: the checks of core/, the
+# unit suites (they need only the core's library) and their builds; the CLI
+# suites start, longest first, once the tool is linked.
 test: deps
-	@$(MAKE) --no-print-directory test-tools
 	@$(MAKE) --no-print-directory test-suites
 test-tools: all $(BUILD)/tests/x11_close $(BUILD)/tests/x11_shot $(BUILD)/tests/png_probe \
-            $(BUILD)/tests/gl_sync_count.so
+            $(BUILD)/tests/gl_sync_count.so $(BUILD)/tests/wait_for
 
 # Every suite of make test as one list, CLI, unit and render alike: the long
 # ones first (SLOW_FIRST's order), then the rest by name. A unit or render
@@ -270,7 +273,7 @@ TEST_RUNS := $(patsubst tests/%.sh,cli-run-%,$(CLI_TESTS)) \
              $(patsubst tests/%.c,render-run-%,$(RENDER_TEST_SRC))
 slow_first_runs = $(foreach s,$(SLOW_FIRST),$(filter %-run-$(s),$(1))) \
                   $(filter-out $(foreach s,$(SLOW_FIRST),%-run-$(s)),$(1))
-test-suites: all purity fn-length tiling-gen-check $(call slow_first_runs,$(TEST_RUNS)) fuzz-replay
+test-suites: test-tools purity fn-length tiling-gen-check $(call slow_first_runs,$(TEST_RUNS)) fuzz-replay
 	@echo "make test: all suites passed"
 
 # The automata of canonical addresses (core/hol_tile_dfa.h) are derived from
@@ -315,9 +318,9 @@ render-run-%: $(BUILD)/tests/%
 
 cli-test: $(patsubst tests/%.sh,cli-run-%,$(call slow_first,$(CLI_TESTS)))
 cli-run-%: $(BUILD)/holonomy $(BUILD)/tests/x11_close $(BUILD)/tests/x11_shot $(BUILD)/tests/png_probe \
-           $(BUILD)/tests/gl_sync_count.so
+           $(BUILD)/tests/gl_sync_count.so $(BUILD)/tests/wait_for
 	@$(CLI_ENV) HOLONOMY=$(BUILD)/holonomy X11_CLOSE=$(BUILD)/tests/x11_close X11_SHOT=$(BUILD)/tests/x11_shot \
-	  PNG_PROBE=$(BUILD)/tests/png_probe GL_SYNC_SO=$(BUILD)/tests/gl_sync_count.so \
+	  PNG_PROBE=$(BUILD)/tests/png_probe GL_SYNC_SO=$(BUILD)/tests/gl_sync_count.so WAIT_FOR=$(BUILD)/tests/wait_for \
 	  $(SUITE) tests/$*.sh sh tests/$*.sh
 
 # A test helper (LD_PRELOAD): the GL calls that wait for the GPU, counted
@@ -330,6 +333,12 @@ $(BUILD)/tests/gl_sync_count.so: tests/gl_sync_count.c
 $(BUILD)/tests/png_probe: tests/png_probe.c render/hol_png.c render/hol_png.h
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) -o $@ $< render/hol_png.c -lz
+
+# A test helper: waits in one process until a file appears, a folder's
+# entries change or a process ends (the suites' polls; tests/lib.sh).
+$(BUILD)/tests/wait_for: tests/wait_for.c
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) -o $@ $<
 
 # A test helper: the close button of a window, as a window manager presses it.
 $(BUILD)/tests/x11_close: tests/x11_close.c

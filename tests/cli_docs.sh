@@ -50,8 +50,8 @@ PAGES=$(cd "$R" && ls README.md docs/*.md)
 ' $PAGES) >"$T/records"
 
 # ---- 2. run ---------------------------------------------------------------
-# matches EXPECTED ACTUAL: the actual lines match the expected ones ("..."
-# any number of lines)
+# matches EXPECTED ACTUAL...: the actual lines (the files' lines one after
+# the other) match the expected ones ("..." any number of lines)
 matches() {
     awk -v want="$1" '
         function m(i, j) {
@@ -62,7 +62,7 @@ matches() {
         FILENAME == want { e[++ne] = $0; next }
         { a[++na] = $0 }
         END { exit m(1, 1) ? 0 : 1 }
-    ' "$1" "$2"
+    ' "$@"
 }
 
 nblock=0 nrun=0 nskip=0 cmd=""
@@ -83,14 +83,13 @@ check_cmd() {
     nrun=$((nrun + 1))
     (cd "$B" && timeout 120 sh -c "$cmd" >"$T/out" 2>"$T/err" </dev/null)
     st=$?
-    cat "$T/out" "$T/err" >"$T/got"
     if [ "$st" != "$want_st" ]; then
         bad "$file:$cline: exit status $st, the page says $want_st"
         printf '  $ %s\n' "$cmd"; head -c 300 "$T/err"
-    elif ! matches "$T/want" "$T/got"; then
+    elif ! matches "$T/want" "$T/out" "$T/err"; then
         bad "$file:$cline: the output differs from the page (< page, > binary)"
         printf '  $ %s\n' "$cmd"
-        diff "$T/want" "$T/got" | head -10
+        cat "$T/out" "$T/err" | diff "$T/want" - | head -10
     else
         ok
     fi
@@ -102,10 +101,12 @@ new_block() {
     B=$T/block$nblock
     mkdir -p "$B/build"
     ln -s "$HA" "$B/build/holonomy"
+    # the top-level entries but build/, in one ln (not one ln an entry)
+    set --
     for f in "$R"/*; do
-        n=${f##*/}
-        [ "$n" = build ] || ln -s "$f" "$B/$n"
+        [ "${f##*/}" = build ] || set -- "$@" "$f"
     done
+    ln -s "$@" "$B/"
 }
 
 TAB=$(printf '\t')

@@ -70,7 +70,7 @@ want="$want 2.0,2.0000,O 2.1,4.5000,gap 4.6,4.7000,O 4.7,4.7000,O "
   awk 'BEGIN { for (k = 0; k < 1000000; k++) printf "%d f=9\n", k * 2000 }'; } >hostile.rec
 ( ulimit -f 262144; exec "$H" replay hostile.rec --log term ) >/dev/null 2>&1 &
 pid=$!
-for i in $(seq 1 100); do [ -f term/head-001.csv.live ] && break; sleep 0.1; done
+wait_for 60 -e term/head-001.csv.live
 sleep 0.2
 kill -TERM $pid 2>/dev/null
 if gone_within $pid 10; then
@@ -165,18 +165,9 @@ run "report of k2" 0 "$H" report k2 --out r2
 } >long.rec
 mkdir kr
 # until_new DIR N PID: until DIR holds other than N entries or PID has ended
-# (at most 1000 polls 5 ms apart). Shell builtins but sleep: the poll used
-# `ls | wc -l` and cost more CPU than the replays it waits for.
-until_new() {
-    un_d=$1 un_n=$2 un_p=$3
-    for i in $(seq 1 1000); do
-        set -- "$un_d"/*
-        [ -e "$1" ] || set --
-        [ "$#" != "$un_n" ] && return 0
-        kill -0 "$un_p" 2>/dev/null || return 0
-        sleep 0.005
-    done
-}
+# (at most 5 s; tests/wait_for.c polls every 5 ms in one process: a `sleep`
+# a poll cost more CPU than the replays it waits for)
+until_new() { wait_for 5 -c "$1" "$2" -p "$3"; }
 # each kill falls a moment after the replay's first new file (its level, its
 # first attempt's files: before their first flush), or later
 for d in 0 0 0.002 0.01 0.05 0.2; do
@@ -206,7 +197,7 @@ if start_xvfb 317; then
     ( ulimit -f 262144; exec "$H" play --size 64x48 --mode flag --input hostile.in --log pterm ) \
         >/dev/null 2>&1 &
     pid=$!
-    for i in $(seq 1 50); do [ -f pterm/head-001.csv.live ] && break; sleep 0.1; done
+    wait_for 60 -e pterm/head-001.csv.live
     sleep 0.3
     kill -TERM $pid 2>/dev/null
     if gone_within $pid 10; then
@@ -248,7 +239,7 @@ if start_xvfb 317; then
         d=end-${s%:*}; mkdir "$d"
         "$H" play --size 64x48 --mode flag --log "$d/logs" --record "$d/s.rec" >/dev/null 2>&1 &
         pid=$!
-        for i in $(seq 1 100); do [ -f "$d/logs/head-001.csv.live" ] && break; sleep 0.1; done
+        wait_for 60 -e "$d/logs/head-001.csv.live"
         sleep 0.5
         if [ "${s%:*}" = close ]; then "$X11_CLOSE" holonomy || bad "close: no window"
         else kill -"${s%:*}" $pid; fi

@@ -72,7 +72,7 @@ awk -v dir=many 'NR == 1 { head = $0; next } { row = $0 } END {
         print head >f; print s >f; close(f) } }' row.csv
 ( ulimit -f 65536; exec "$H" report many --out pout ) >out 2>err &
 pid=$!
-for i in $(seq 1 200); do [ -e pout/attempt-0001.png ] && break; sleep 0.05; done
+wait_for 60 -e pout/attempt-0001.png
 signal_check "report (pictures)" $pid 143 "stopped by signal 15" '[ "$st" = 0 ]' \
     '[ ! -e pout/attempts.csv ] && [ -z "$(ls -A pout | grep holonomy-tmp)" ]' pout
 

@@ -18,9 +18,9 @@ export H
 n=0
 for c in "$root"/*/; do
     [ -f "$c/cmd" ] || continue
-    name=$(basename "$c"); n=$((n + 1))
-    w="$T/case-$name"; mkdir -p "$w"; cp -R "$c". "$w/"
-    want=$(cat "$c/status")
+    name=${c%/}; name=${name##*/}; n=$((n + 1))
+    w="$T/case-$name"; cp -R "$c". "$w/"
+    read -r want <"$c/status"
     (cd "$w" && timeout -s KILL 20 sh ./cmd >"$T/out" 2>"$T/err"); st=$?
     if [ "$st" != "$want" ]; then
         bad "$name: status $st, want $want ($(head -c 200 "$T/err"))"; continue; fi

@@ -110,9 +110,7 @@ awk 'BEGIN { for (k = 0; k < 60000; k++) { c = (int(k / 25) % 2) ? 2.5 : 1.5
 "$H" play --size 64x48 --mode explore --input walk.in --log lk --record k.rec \
     --session 7 --meta who=killed >/dev/null 2>&1 &
 pid=$!
-for i in $(seq 1 300); do
-  [ "$(cat lk/steps-001.csv.live 2>/dev/null | wc -l)" -ge 4 ] && break; sleep 0.1
-done
+wait_for 120 -l lk/steps-001.csv.live 4
 kill -9 $pid 2>/dev/null
 wait $pid 2>/dev/null
 [ -f lk/attempt-001.live ] && ok || bad "no killed attempt: $(ls lk)"

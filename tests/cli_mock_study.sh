@@ -161,10 +161,7 @@ run "P2" 0 $P --participant P2 --input p2.in --append && order_ok 2
 nnn=$(printf %03d $(($(wc -l <logs/summary.csv) + 5)))
 $P --participant P3 --input p3a.in --append >/dev/null 2>&1 &
 pid=$!
-for i in $(seq 1 300); do
-    [ -f logs/attempt-$nnn.live ] && [ "$(cat logs/steps-$nnn.csv.live 2>/dev/null | wc -l)" -ge 2 ] && break
-    sleep 0.1
-done
+wait_for 120 -l logs/steps-$nnn.csv.live 2 && wait_for 120 -e logs/attempt-$nnn.live
 kill -9 $pid 2>/dev/null; wait $pid 2>/dev/null
 [ -f logs/attempt-$nnn.live ] && ok || bad "P3 was not killed in attempt $nnn: $(ls logs | grep live)"
 run "P3 resumed" 0 $P --participant P3 --input p3b.in --resume

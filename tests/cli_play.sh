@@ -159,7 +159,7 @@ wait_frames() {
 }
 if command -v xdotool >/dev/null 2>&1; then
     mkdir "$T/tap" "$T/tap2"
-    "$H" play --mode explore --size 320x240 --log "$T/tap" --record "$T/tap.rec" --stats \
+    "$H" play --mode explore --size 160x120 --log "$T/tap" --record "$T/tap.rec" --stats \
         >"$T/tap.out" 2>"$T/tap.err" &
     PPID_PLAY=$!
     wait_frames "$T/tap.err"
@@ -170,10 +170,7 @@ if command -v xdotool >/dev/null 2>&1; then
         sleep 0.5
         xdotool key q
     fi
-    for i in 1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 17 18 19 20; do
-        kill -0 $PPID_PLAY 2>/dev/null || break
-        sleep 0.5
-    done
+    wait_for 10 -p $PPID_PLAY
     kill $PPID_PLAY 2>/dev/null
     wait $PPID_PLAY 2>/dev/null
     grep -q ',1,,,,explore-1,[0-9a-f]*,explore,1,15,"4,5",3x3,1,[0-9.]*,0,-1,[0-9.]*,restart,,,$' "$T/tap/summary.csv" && ok ||
@@ -186,7 +183,7 @@ if command -v xdotool >/dev/null 2>&1; then
     # snap turn: a tapped Left turns the look to 90 degrees exactly (the
     # recording carries the snap: f=48 y=90), a tapped Right back to 0;
     # --stats prints the frame rate and CPU ms a frame at the end
-    "$H" play --mode explore --size 320x240 --snap-turn 90 --stats --record "$T/snap.rec" \
+    "$H" play --mode explore --size 160x120 --snap-turn 90 --stats --record "$T/snap.rec" \
         >"$T/snap.out" 2>"$T/snap.err" &
     PPID_PLAY=$!
     wait_frames "$T/snap.err"
@@ -197,10 +194,7 @@ if command -v xdotool >/dev/null 2>&1; then
         sleep 0.5
         xdotool key q
     fi
-    for i in 1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 17 18 19 20; do
-        kill -0 $PPID_PLAY 2>/dev/null || break
-        sleep 0.5
-    done
+    wait_for 10 -p $PPID_PLAY
     kill $PPID_PLAY 2>/dev/null
     wait $PPID_PLAY 2>/dev/null
     grep -q ' f=48 y=90 d=keyboard$' "$T/snap.rec" && ok || bad "a tapped Left did not snap to 90"
@@ -234,10 +228,7 @@ if command -v xdotool >/dev/null 2>&1; then
         [ -n "$m0" ] && [ "$m1" = "$m0" ] && ok || bad "F2 changed the middle of the view"
         [ "$c2" = "$c0" ] && ok || bad "F2 again did not hide the frame time ($c0, $c2)"
     fi
-    for i in $(seq 1 20); do
-        kill -0 $PPID_PLAY 2>/dev/null || break
-        sleep 0.5
-    done
+    wait_for 10 -p $PPID_PLAY
     kill $PPID_PLAY 2>/dev/null
     wait $PPID_PLAY 2>/dev/null
 else

@@ -73,17 +73,13 @@ fi
 
 # the desktop build: a window through EGL on X11, here under Xvfb
 if command -v Xvfb >/dev/null 2>&1; then
-    D=":$((100 + $$ % 400))"
-    Xvfb "$D" -screen 0 320x240x24 -nolisten tcp >/dev/null 2>&1 &
-    XPID=$!
-    trap 'kill $XPID 2>/dev/null; rm -rf "$T"' EXIT
-    ok=0
-    for i in 1 2 3 4 5 6 7 8 9 10; do
-        if DISPLAY=$D "$H" render --window --frames 2 --size 64x48 --seed 2 \
-            --out "$T/w.png" >/dev/null 2>&1; then ok=1; break; fi
-        sleep 0.3
-    done
-    [ $ok = 1 ] || fail "--window under Xvfb"
+    # (lib.sh's Xvfb, ready when it returns; DISPLAY as it was for the rest)
+    xd_old=${DISPLAY-}
+    start_xvfb 0
+    D=$DISPLAY
+    if [ -n "$xd_old" ]; then DISPLAY=$xd_old; else unset DISPLAY; fi
+    DISPLAY=$D "$H" render --window --frames 2 --size 64x48 --seed 2 \
+        --out "$T/w.png" >/dev/null 2>&1 || fail "--window under Xvfb"
     # the window shows what the headless build shows (HUD on in both)
     "$H" render --hud --size 64x48 --seed 2 --out "$T/w_osm.png" || fail "render --hud"
     cmp -s "$T/w.png" "$T/w_osm.png" || echo "note: window and OSMesa images differ"

@@ -23,9 +23,7 @@ awk 'BEGIN { for (k = 0; k < 60000; k++) { c = (int(k / 25) % 2) ? 2.5 : 1.5
 "$H" play --size 64x48 --mode explore --input walk.in --log logs --record s.rec >/dev/null 2>&1 &
 pid=$!
 # killed once rows of a few seconds and steps reached the disk
-for i in $(seq 1 300); do
-    [ "$(cat logs/steps-001.csv.live 2>/dev/null | wc -l)" -ge 8 ] && break; sleep 0.1
-done
+wait_for 120 -l logs/steps-001.csv.live 8
 sleep 0.3
 kill -9 $pid 2>/dev/null
 wait $pid 2>/dev/null

@@ -95,7 +95,7 @@ one_line "changed study" "is not the one participant P01 played in 'logs': their
 awk 'BEGIN { for (k = 0; k < 400; k++) printf "%.2f f=9 h=1.5,1.6,1.5,0,0,0,1\n", k * 0.05 }' >slow.in
 $P --input slow.in --resume >/dev/null 2>&1 &
 pid=$!
-for i in $(seq 1 100); do [ -f logs/attempt-005.live ] && break; sleep 0.1; done
+wait_for 60 -e logs/attempt-005.live
 sleep 0.3
 kill -9 $pid 2>/dev/null; wait $pid 2>/dev/null
 [ -f logs/attempt-005.live ] && ok || bad "session 3 left no attempt-005.live: $(ls logs)"

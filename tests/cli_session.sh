@@ -123,30 +123,27 @@ cd "$OLDPWD" || exit 1
 consistent() { # the folder: a steps-NNN.csv (an attempt's last file) has its
     # head file and summary row; a head-NNN.csv or a row whose files are not
     # all renamed (the kill fell between the row and the renames) has the
-    # rest still live, for --append to rename
+    # rest still live, for --append to rename (in the shell but one awk: a
+    # basename, sed and awk a file cost more CPU than the replays checked)
     d=$1
     [ -f "$d/summary.csv" ] || return 0
+    rows=" $(awk -F, '{ printf "%s ", $5 }' "$d/summary.csv")"
     for f in "$d"/steps-*.csv "$d"/head-*.csv; do
         [ -e "$f" ] || continue
-        n=$(basename "$f" .csv | sed 's/^[a-z]*-0*//')
-        a=$(printf %03d "$n")
-        awk -F, -v n="$n" '$5 == n { f = 1 } END { exit !f }' "$d/summary.csv" &&
-            [ -f "$d/head-$a.csv" ] && { [ -f "$d/steps-$a.csv" ] || [ -f "$d/steps-$a.csv.live" ]; } ||
-            { echo "attempt $n incomplete in $d: $(ls "$d" | tr '\n' ' ')"; return 1; }
+        a=${f##*/}; a=${a%.csv}; a=${a#*-}
+        n=${a#"${a%%[!0]*}"}
+        case $rows in *" $n "*) ;; *) n=x ;; esac
+        [ "$n" != x ] && [ -f "$d/head-$a.csv" ] && { [ -f "$d/steps-$a.csv" ] || [ -f "$d/steps-$a.csv.live" ]; } ||
+            { echo "attempt ${a#"${a%%[!0]*}"} incomplete in $d: $(ls "$d" | tr '\n' ' ')"; return 1; }
     done
-    awk -F, 'NR > 1 { print $5 }' "$d/summary.csv" | while read -r n; do
-        a=$(printf %03d "$n")
-        [ -f "$d/steps-$a.csv" ] || [ -f "$d/steps-$a.csv.live" ] || { echo "row $n without files"; exit 1; }
+    for n in $rows; do
+        [ "$n" = attempt ] && continue
+        case $n in ?) a=00$n ;; ??) a=0$n ;; *) a=$n ;; esac
+        [ -f "$d/steps-$a.csv" ] || [ -f "$d/steps-$a.csv.live" ] || { echo "row $n without files"; return 1; }
     done
 }
-# until_files DIR N: wait (up to 20 s) until DIR holds N attempts' files
-until_files() {
-    for i in $(seq 1 400); do
-        [ "$(ls "$1" 2>/dev/null | grep -c '^steps-')" -ge "$2" ] && return 0
-        sleep 0.05
-    done
-    return 1
-}
+# until_files DIR N: wait (up to 60 s) until DIR holds N attempts' files
+until_files() { wait_for 60 -n "$1" steps- "$2"; }
 mkdir "$T/k"
 for n in 3 9 15; do
     "$H" replay "$T/long.rec" --log "$T/k" --append >/dev/null 2>&1 &
@@ -183,23 +180,20 @@ if ! start_xvfb 211; then
 fi
 
 # live NAME: play in real time (the default campaign) with logs and a
-# recording in $T/NAME; pid in $pid once its window exists (polled up to
-# 30 s: on a loaded machine the first attempt's files took over 5 s, and a
+# recording in $T/NAME; pid in $pid once its window exists (waited for up to
+# 120 s, tests/wait_for.c: on a loaded machine the first attempt's files took over 5 s, and a
 # signal before them left no attempt to check)
 live() {
     mkdir -p "$T/$1"
     "$H" play --size 64x48 --log "$T/$1/logs" --record "$T/$1/s.rec" --participant P01 \
         >"$T/$1/out" 2>"$T/$1/err" &
     pid=$!
-    for i in $(seq 1 300); do
-        [ -f "$T/$1/logs/head-001.csv.live" ] && break
-        sleep 0.1
-    done
+    wait_for 120 -e "$T/$1/logs/head-001.csv.live"
 }
 # ended NAME STATUS: the play ended with STATUS, its attempt `aborted`, files in place
 ended() {
-    for i in $(seq 1 100); do kill -0 $pid 2>/dev/null || break; sleep 0.1; done
-    if kill -0 $pid 2>/dev/null; then bad "$1: still running"; kill -9 $pid; return; fi
+    # (the helper's answer, not kill -0: the ended play may not be reaped yet)
+    if ! wait_for 60 -p $pid; then bad "$1: still running"; kill -9 $pid; return; fi
     wait $pid
     st=$?
     [ "$st" = "$2" ] && ok || bad "$1: status $st, want $2 ($(cat "$T/$1/err"))"
@@ -212,20 +206,19 @@ ended() {
 }
 
 # a live play killed with -9: rows up to the last second are on disk.
-# Polled: the kill falls as soon as a row of 1 s or more is on disk, at the
-# latest 3 s after the start (the bound the fixed 3 s wait gave); the rows
-# are read again after the kill, so they must have survived it.
+# Waited for: the kill falls as soon as a row of 1 s or more is on disk (the
+# header and 11 rows: rows are 0.1 s apart from 0.0, a gap one row too), at
+# the latest 5 s after the start (tests/wait_for.c; the shell's poll ran a
+# tail, cut, awk and sleep every 0.1 s); the rows are read again after the
+# kill, so they must have survived it.
 head_t() { tail -1 "$T/kill9/logs/head-001.csv.live" 2>/dev/null | cut -d, -f4; }
 live kill9
-for i in $(seq 1 30); do
-    awk -v t="$(head_t)" 'BEGIN { exit !(t + 0 >= 1.0) }' && break
-    sleep 0.1
-done
+wait_for 5 -l "$T/kill9/logs/head-001.csv.live" 12
 kill -9 $pid
 wait $pid 2>/dev/null
 last=$(head_t)
 awk -v t="${last:-0}" 'BEGIN { exit !(t + 0 >= 1.0) }' && ok ||
-    bad "killed 3 s after the start with head rows up to ${last:-none} s"
+    bad "killed at most 5 s after the start with head rows up to ${last:-none} s"
 [ -f "$T/kill9/s.rec.live" ] && [ ! -e "$T/kill9/s.rec" ] && ok || bad "killed: $(ls "$T/kill9")"
 run "a killed session's recording replays" 0 "$H" replay "$T/kill9/s.rec.live" \
     --log "$T/kill9/logs" --append

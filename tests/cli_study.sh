@@ -72,15 +72,7 @@ if ! command -v Xvfb >/dev/null 2>&1; then
     finish cli_study
     exit $?
 fi
-D=":$((100 + ($$ + 7) % 400))"
-Xvfb "$D" -screen 0 320x240x24 -nolisten tcp >/dev/null 2>&1 &
-XPID=$!
-trap 'kill $XPID 2>/dev/null; rm -rf "$T"' EXIT
-for i in 1 2 3 4 5 6 7 8 9 10; do
-    DISPLAY=$D "$H" play --frames 2 --size 64x48 >/dev/null 2>&1 && break
-    sleep 0.3
-done
-export DISPLAY=$D
+start_xvfb 7
 
 # participants 1..4: the orders the recordings and the stderr line name
 : >"$T/orders"

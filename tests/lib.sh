@@ -65,20 +65,64 @@ walk_input() {
     }'
 }
 
-# start_xvfb SALT: an Xvfb of its own on display :100..:499 (from the
-# script's pid and SALT), killed when the script ends; waits until a window
-# opens there and exports DISPLAY. Returns 1 (nothing started) without Xvfb.
+# start_xvfb [SALT]: an Xvfb of its own, killed when the script ends;
+# exports DISPLAY once the server accepts clients. Xvfb picks a free display
+# number itself and writes it to a FIFO when it is ready (-displayfd), so
+# nothing polls: the read blocks until then (or until Xvfb ends, at once,
+# when it cannot start: a failed check, then DISPLAY names no server and
+# every window check fails). SALT is not used any more (the number was made
+# from the script's pid and SALT, and the readiness polled with a play of 2
+# frames: about 1 s of CPU a start). Returns 1 (nothing started) without Xvfb.
 start_xvfb() {
     command -v Xvfb >/dev/null 2>&1 || return 1
-    D=":$((100 + ($$ + $1) % 400))"
-    Xvfb "$D" -screen 0 320x240x24 -nolisten tcp >/dev/null 2>&1 &
+    rm -f "$T/.xvfb.fd"
+    mkfifo "$T/.xvfb.fd" || { bad "Xvfb: no FIFO in $T"; return 0; }
+    Xvfb -displayfd 3 -screen 0 320x240x24 -nolisten tcp 3>"$T/.xvfb.fd" >/dev/null 2>&1 &
     XPID=$!
     trap 'kill $XPID 2>/dev/null; rm -rf "$T"' EXIT
-    for i in 1 2 3 4 5 6 7 8 9 10; do
-        DISPLAY=$D "$H" play --frames 2 --size 64x48 >/dev/null 2>&1 && break
-        sleep 0.3
+    read -r xvfb_n <"$T/.xvfb.fd" || xvfb_n=
+    rm -f "$T/.xvfb.fd"
+    case $xvfb_n in
+    [0-9]*) export DISPLAY=":$xvfb_n" ;;
+    *) bad "Xvfb did not start"; export DISPLAY=":none" ;;
+    esac
+}
+
+# wait_for SECONDS COND...: until a COND holds (0) or SECONDS pass (1):
+# -e PATH exists, -n DIR PREFIX N (at least N entries named PREFIX...),
+# -c DIR N (other than N entries, dot files not counted), -l FILE N (at
+# least N lines), -p PID ended. tests/wait_for.c ($WAIT_FOR,
+# which make test builds) polls in one process every 5 ms; without it, the
+# same in the shell with a `sleep` a poll (about 7 ms of CPU each when the
+# machine is loaded: hundreds a suite).
+WAIT_FOR=${WAIT_FOR:-$(dirname "$H")/tests/wait_for}
+case $WAIT_FOR in /*) ;; *) WAIT_FOR=$(pwd)/$WAIT_FOR ;; esac
+wait_for() {
+    [ -x "$WAIT_FOR" ] && { "$WAIT_FOR" "$@"; return; }
+    wf_n=$(awk -v s="$1" 'BEGIN { printf "%d", s * 20 + 1 }'); shift
+    while [ "$wf_n" -gt 0 ]; do
+        wf_i=1
+        while [ "$wf_i" -le $# ]; do
+            eval "wf_c=\${$wf_i} wf_a=\${$((wf_i + 1))}"
+            case $wf_c in
+            -e) [ -e "$wf_a" ] || [ -L "$wf_a" ] && return 0; wf_i=$((wf_i + 2)) ;;
+            -p) kill -0 "$wf_a" 2>/dev/null || return 0; wf_i=$((wf_i + 2)) ;;
+            -n) eval "wf_p=\${$((wf_i + 2))} wf_k=\${$((wf_i + 3))}"
+                [ "$(ls -A "$wf_a" 2>/dev/null | grep -c "^$wf_p")" -ge "$wf_k" ] && return 0
+                wf_i=$((wf_i + 4)) ;;
+            -l) eval "wf_k=\${$((wf_i + 2))}"
+                [ "$(cat "$wf_a" 2>/dev/null | wc -l)" -ge "$wf_k" ] && return 0
+                wf_i=$((wf_i + 3)) ;;
+            -c) eval "wf_k=\${$((wf_i + 2))}"
+                [ "$(ls "$wf_a" 2>/dev/null | wc -l)" != "$wf_k" ] && return 0
+                wf_i=$((wf_i + 3)) ;;
+            *) echo "wait_for: bad condition '$wf_c'" >&2; return 2 ;;
+            esac
+        done
+        wf_n=$((wf_n - 1))
+        [ "$wf_n" -gt 0 ] && sleep 0.05
     done
-    export DISPLAY=$D
+    return 1
 }
 
 # A replay's logs against the play's: every file byte for byte, but
