@@ -483,8 +483,10 @@ hol_err hol_render_create(const hol_render_desc *desc, hol_render **out)
         hol_alloc_release(&d.alloc, r);
         return gerr;
     }
-    int bad = 0;
-    for (int k = 0; k < 48; k++)
+    /* the day program now (it proves the GL compiles the shaders); the
+     * others when a frame first uses one (hol__use_progs), or all now */
+    int bad = hol__make_prog(r, &r->progs[0], 0);
+    for (int k = 1; k < 48 && d.all_programs; k++)
         if (k < 16 ? k % 4 || k < 8 : k % 2) /* day has no night variant, FX only tiles */
             bad = bad || hol__make_prog(r, &r->progs[k], k);
     if (bad) {
@@ -1287,6 +1289,24 @@ static hol__prog *hol__prog_of(hol_render *r, const hol_frame_desc *f, int kind)
     return &r->progs[kind + (r->view.wedges ? 4 : 0)];
 }
 
+/* Compile, if not yet, the programs of the kinds first..last (kinds as in
+ * hol__prog_of, last <= first) this frame uses: a command that draws only
+ * the day compiles 1 or 2 programs of the 30 (each costs llvmpipe about
+ * 8 ms of CPU). HOL_EUNSUPPORTED if one does not compile. */
+static hol_err hol__use_progs(hol_render *r, const hol_frame_desc *f, int first, int last)
+{
+    for (int k = first; k >= last; k--) {
+        hol__prog *pg = hol__prog_of(r, f, k);
+        if (!pg->prog && hol__make_prog(r, pg, (int)(pg - r->progs))) {
+            if (pg->prog)
+                r->gl.DeleteProgram(pg->prog);
+            pg->prog = 0;
+            return HOL_EUNSUPPORTED;
+        }
+    }
+    return HOL_OK;
+}
+
 /* Clear the frame (sky, or black for IDs), upload this frame's dynamic
  * geometry, and set the program's per-frame uniforms; vp receives the
  * view-projection matrix. */
@@ -1517,6 +1537,8 @@ hol_err hol_render_frame(hol_render *r, const hol_frame_desc *f,
         return err;
     }
     hol_err err = hol__build(r, f);
+    if (!err)
+        err = f->lighting ? hol__use_progs(r, f, 2, 1) : hol__use_progs(r, f, 0, 0);
     if (err)
         return err;
     for (int i = 0; i < r->nitems; i++)
@@ -1591,6 +1613,8 @@ hol_err hol_render_panel_image(hol_render *r, const hol_frame_desc *f, int w, in
         return HOL_EARG;
     hol_frame_desc g;
     hol_err err = hol__queue_panel_only(r, f, &g);
+    if (!err)
+        err = hol__use_progs(r, &g, 0, 0);
     if (err)
         return err;
     for (int i = 0; i < r->nitems; i++)
