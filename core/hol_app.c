@@ -75,11 +75,13 @@ static hol_err hol__nav_make(hol_app *app, int q, int cols, int rows, int *out_s
     nd.tiling_q = q;
     nd.room_cols = cols;
     nd.room_rows = rows;
+    nd.lazy = app->d.lazy_nav;
     hol_nav *nav;
     hol_err err = hol_nav_create(&nd, &nav);
     if (err)
         return err;
-    hol_nav_prepare_tours(nav); /* levels never pay for the leg table */
+    if (!app->d.lazy_nav)
+        hol_nav_prepare_tours(nav); /* levels never pay for the leg table */
     if (app->navs[k].nav)
         hol_nav_destroy(app->navs[k].nav);
     app->navs[k] = (hol__app_nav){nav, 1, q, cols, rows, app->starts};
@@ -153,7 +155,8 @@ hol_err hol_app_create(const hol_app_desc *desc, hol_app **out_app)
         hol__app_nav *n = &app->navs[0];
         n->nav = d.nav;
         hol_nav_geometry(d.nav, &n->q, &n->cols, &n->rows);
-        hol_nav_prepare_tours(d.nav);
+        if (!d.lazy_nav)
+            hol_nav_prepare_tours(d.nav);
     } else if (!err) {
         err = hol__nav_make(app, HOL_TILING_DEFAULT_Q, HOL_ROOM_SIZE, HOL_ROOM_SIZE, &slot);
     }

@@ -273,6 +273,12 @@ typedef struct hol_app_desc {
     double ipd;               /* eye distance for the per-eye states; 0: 0.064 */
     int no_haptics;           /* 1: no controller pulses (events.haptic stays 0;
                                  holonomy xr --no-haptics) */
+    int lazy_nav;             /* 1 (tools, headless and desktop runs): the
+                                 navigator it creates is lazy (hol_nav_desc)
+                                 and builds its tours' leg table at the
+                                 first keys level's tour (60-140 ms then), not
+                                 at create; 0 (a headset): both at create, so
+                                 no level start pays. Same answers. */
 } hol_app_desc;
 
 typedef enum hol_app_state {

@@ -180,8 +180,13 @@ static void hol__nav_init(hol_nav *nav, const hol_nav_desc *d, const hol__plan *
 {
     char *arena_p = p + pl->table + pl->legs + pl->far_e + pl->sph;
     /* touch the arena once here (the table build used only part of it as
-     * scratch): the first far query paid about 8 ms of page faults */
-    memset(arena_p, 0, pl->arena);
+     * scratch): the first far query paid about 8 ms of page faults; lazy:
+     * only the hash is cleared, at the first search (14 MB at the
+     * defaults, most of a short tool's navigator) */
+    if (d->lazy)
+        nav->ar.hash_dirty = 1;
+    else
+        memset(arena_p, 0, pl->arena);
     nav->ar.nodes = (hol__node *)(void *)arena_p;
     nav->ar.hash = (uint32_t *)(void *)(arena_p + hol__align((size_t)pl->cap * sizeof(hol__node)));
     nav->ar.bucket = (uint32_t *)(void *)((char *)nav->ar.hash +

@@ -77,6 +77,11 @@ typedef struct hol_nav_desc {
     int tiling_q;      /* the tiling {4,Q}, 4..8; 0: 5 */
     int room_cols;     /* the room's columns and rows, 3..5; 0: 3 */
     int room_rows;
+    int lazy;          /* 1 (tools, short runs): the search arena's pages are
+                        * not touched at create (its hash is cleared at the
+                        * first search instead; the first far query pays
+                        * its page faults, about 8 ms). 0: touched at
+                        * create. The answers are the same. */
 } hol_nav_desc;
 
 typedef struct hol_nav hol_nav; /* opaque */

@@ -136,8 +136,11 @@ size_t hol_world_mem_size(const hol_world_desc *desc)
     return l.total;
 }
 
-hol_err hol_world_init(void *mem, size_t size, const hol_world_desc *desc,
-                       hol_world **out_world)
+/* hol_world_init; zeroed: mem is known to hold zeros (calloc), so the
+ * store and the table of seen tiles are not cleared (the world command's
+ * store is over 100 MB: its clear was nearly all of a short run's time). */
+static hol_err hol__world_init(void *mem, size_t size, const hol_world_desc *desc,
+                               hol_world **out_world, int zeroed)
 {
     hol__layout l;
     if (!mem || !desc || !out_world || ((uintptr_t)mem & 15) ||
@@ -146,7 +149,8 @@ hol_err hol_world_init(void *mem, size_t size, const hol_world_desc *desc,
     if (size < l.total)
         return HOL_ENOMEM;
     char *base = mem;
-    memset(base, 0, l.off_slots); /* struct and store */
+    if (!zeroed)
+        memset(base, 0, l.off_slots); /* struct and store */
     hol_world *w = mem;
     if (desc->nplaces > HOL_WORLD_MAX_PLACES || (desc->nplaces && !desc->places))
         return HOL_EARG;
@@ -188,7 +192,8 @@ hol_err hol_world_init(void *mem, size_t size, const hol_world_desc *desc,
     w->reserve_tiles = (hol_tile *)(void *)(base + l.off_reserve);
     w->max_reserve = l.max_reserve;
     w->kept = (hol__kept *)(void *)(base + l.off_kept);
-    memset(w->kept, 0, (size_t)l.kept_size * sizeof(hol__kept));
+    if (!zeroed)
+        memset(w->kept, 0, (size_t)l.kept_size * sizeof(hol__kept));
     w->kept_mask = l.kept_size - 1;
     w->kept_max = l.kept_max;
     w->bytes = l.total;
@@ -196,10 +201,16 @@ hol_err hol_world_init(void *mem, size_t size, const hol_world_desc *desc,
     return HOL_OK;
 }
 
+hol_err hol_world_init(void *mem, size_t size, const hol_world_desc *desc,
+                       hol_world **out_world)
+{
+    return hol__world_init(mem, size, desc, out_world, 0);
+}
+
 static void *hol__default_alloc(size_t size, void *user)
 {
     (void)user;
-    return malloc(size);
+    return calloc(1, size); /* zero pages, mapped when first written */
 }
 
 static void hol__default_free(void *ptr, void *user)
@@ -223,7 +234,7 @@ hol_err hol_world_make(const hol_world_desc *desc, hol_world **out_world)
     if (!mem)
         return HOL_ENOMEM;
     hol_world *w;
-    hol_err err = hol_world_init(mem, size, desc, &w);
+    hol_err err = hol__world_init(mem, size, desc, &w, alloc == hol__default_alloc);
     if (err) {
         free_fn(mem, desc->allocator.user);
         return err;

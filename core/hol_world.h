@@ -43,7 +43,9 @@
  *   to keep the world a function of seed and walk alone, read only within
  *   the radius, or choose a radius (up to 8) that covers what is shown.
  * - Fixed memory: one allocation at hol_world_make (or caller memory with
- *   hol_world_init); the store is an open-addressing table keyed by the tile
+ *   hol_world_init, which clears the store: its pages are touched then,
+ *   so no update takes a page fault; hol_world_make's default allocator is
+ *   calloc instead, whose pages are mapped when first written); the store is an open-addressing table keyed by the tile
  *   word. Full-store policy: when an update (or a get that must generate)
  *   finds the store over 3/4 full, it evicts, in an incremental sweep of
  *   cap/256 table slots per call (all at once over 7/8), the tiles least

@@ -37,6 +37,7 @@ typedef hol_gl_proc (*hol_gl_getproc)(const char *name);
     X(PFNGLCLEARSTENCILPROC, ClearStencil, "glClearStencil") \
     X(PFNGLCOLORMASKPROC, ColorMask, "glColorMask") \
     X(PFNGLCOMPILESHADERPROC, CompileShader, "glCompileShader") \
+    X(PFNGLCOPYBUFFERSUBDATAPROC, CopyBufferSubData, "glCopyBufferSubData") \
     X(PFNGLCREATEPROGRAMPROC, CreateProgram, "glCreateProgram") \
     X(PFNGLCREATESHADERPROC, CreateShader, "glCreateShader") \
     X(PFNGLDELETEBUFFERSPROC, DeleteBuffers, "glDeleteBuffers") \

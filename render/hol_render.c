@@ -27,14 +27,21 @@
 #define HOL__ROOM_V (1u << 16)
 #define HOL__ROOM_I (1u << 17)
 /* Tile meshes resident at once: a frame shows at most ~40 tiles in the
- * 3 x 3 room and 65 in a 5 x 5 one (test_render_tiles counts them). */
+ * 3 x 3 room and 65 in a 5 x 5 one (test_render_tiles counts them). The
+ * static buffers hold HOL__SLOTS_FIRST slots at create and all of them
+ * from the first frame that needs more (hol__static_grow): llvmpipe
+ * clears a buffer it allocates, 24 MB for all the slots, about 0.1 s of
+ * a picture's start-up. */
 #define HOL__SLOTS 96
+#define HOL__SLOTS_FIRST 48
 #define HOL__SLOT_V 8192u
 #define HOL__SLOT_I 16384u
-#define HOL__HUD_V (1u << 14) /* the resident minimap, after the slots */
+#define HOL__HUD_V (1u << 14) /* the resident minimap, after the room */
 #define HOL__HUD_I (1u << 15)
-#define HOL__HUD_VBASE (HOL__ROOM_V + HOL__SLOTS * HOL__SLOT_V)
-#define HOL__HUD_IBASE (HOL__ROOM_I + HOL__SLOTS * HOL__SLOT_I)
+#define HOL__HUD_VBASE HOL__ROOM_V
+#define HOL__HUD_IBASE HOL__ROOM_I
+#define HOL__SLOT_VBASE(k) (HOL__ROOM_V + HOL__HUD_V + (uint32_t)(k) * HOL__SLOT_V)
+#define HOL__SLOT_IBASE(k) (HOL__ROOM_I + HOL__HUD_I + (uint32_t)(k) * HOL__SLOT_I)
 #define HOL__DYN_V (1u << 16)
 #define HOL__DYN_I (1u << 17)
 #define HOL__MAX_ITEMS 1024
@@ -111,6 +118,7 @@ struct hol_render {
     hol_view view;
     /* resident meshes */
     hol__slot slots[HOL__SLOTS];
+    int slot_cap; /* slots the static buffers hold now */
     uint64_t frame;
     int room_valid, room_bare;
     int room_tree[3];  /* the marked tree the room mesh has (marked, vx, vz) */
@@ -452,6 +460,61 @@ static int hol__make_prog(hol_render *r, hol__prog *pg, int k)
     return 0;
 }
 
+/* The vertex layout of vao[k] (bound), read from vbo[k]. */
+static void hol__vao_attribs(hol_render *r, int k)
+{
+    r->gl.BindBuffer(GL_ARRAY_BUFFER, r->vbo[k]);
+    r->gl.EnableVertexAttribArray(0);
+    r->gl.EnableVertexAttribArray(1);
+    r->gl.EnableVertexAttribArray(2);
+    r->gl.VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(hol_vertex),
+                              (const void *)offsetof(hol_vertex, pos));
+    r->gl.VertexAttribPointer(1, 3, GL_BYTE, GL_TRUE, sizeof(hol_vertex),
+                              (const void *)offsetof(hol_vertex, nrm));
+    r->gl.VertexAttribPointer(2, 4, GL_UNSIGNED_BYTE, GL_TRUE, sizeof(hol_vertex),
+                              (const void *)offsetof(hol_vertex, rgba));
+}
+
+/* The static buffers (the room, the minimap, then the tile slots) made
+ * for cap slots: new ones, what the old ones held copied in, vao[0]
+ * pointed at them. Leaves no vertex array bound. */
+static void hol__static_grow(hol_render *r, int cap)
+{
+    GLuint vbo = 0, ibo = 0;
+    r->gl.GenBuffers(1, &vbo);
+    r->gl.GenBuffers(1, &ibo);
+    r->gl.BindVertexArray(0);
+    r->gl.BindBuffer(GL_COPY_WRITE_BUFFER, vbo);
+    r->gl.BufferData(GL_COPY_WRITE_BUFFER, (GLsizeiptr)(HOL__SLOT_VBASE(cap) * sizeof(hol_vertex)),
+                     NULL, GL_DYNAMIC_DRAW);
+    if (r->vbo[0]) {
+        r->gl.BindBuffer(GL_COPY_READ_BUFFER, r->vbo[0]);
+        r->gl.CopyBufferSubData(GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER, 0, 0,
+                                (GLsizeiptr)(HOL__SLOT_VBASE(r->slot_cap) * sizeof(hol_vertex)));
+    }
+    r->gl.BindBuffer(GL_COPY_WRITE_BUFFER, ibo);
+    r->gl.BufferData(GL_COPY_WRITE_BUFFER, (GLsizeiptr)(HOL__SLOT_IBASE(cap) * sizeof(uint32_t)),
+                     NULL, GL_DYNAMIC_DRAW);
+    if (r->ibo[0]) {
+        r->gl.BindBuffer(GL_COPY_READ_BUFFER, r->ibo[0]);
+        r->gl.CopyBufferSubData(GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER, 0, 0,
+                                (GLsizeiptr)(HOL__SLOT_IBASE(r->slot_cap) * sizeof(uint32_t)));
+    }
+    r->gl.BindBuffer(GL_COPY_READ_BUFFER, 0);
+    r->gl.BindBuffer(GL_COPY_WRITE_BUFFER, 0);
+    if (r->vbo[0])
+        r->gl.DeleteBuffers(1, &r->vbo[0]);
+    if (r->ibo[0])
+        r->gl.DeleteBuffers(1, &r->ibo[0]);
+    r->vbo[0] = vbo;
+    r->ibo[0] = ibo;
+    r->slot_cap = cap;
+    r->gl.BindVertexArray(r->vao[0]);
+    r->gl.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, r->ibo[0]);
+    hol__vao_attribs(r, 0);
+    r->gl.BindVertexArray(0);
+}
+
 hol_err hol_render_create(const hol_render_desc *desc, hol_render **out)
 {
     hol_render_desc d;
@@ -483,8 +546,10 @@ hol_err hol_render_create(const hol_render_desc *desc, hol_render **out)
         hol_alloc_release(&d.alloc, r);
         return gerr;
     }
-    int bad = 0;
-    for (int k = 0; k < 48; k++)
+    /* the day program now (it proves the GL compiles the shaders); the
+     * others when a frame first uses one (hol__use_progs), or all now */
+    int bad = hol__make_prog(r, &r->progs[0], 0);
+    for (int k = 1; k < 48 && d.all_programs; k++)
         if (k < 16 ? k % 4 || k < 8 : k % 2) /* day has no night variant, FX only tiles */
             bad = bad || hol__make_prog(r, &r->progs[k], k);
     if (bad) {
@@ -493,33 +558,12 @@ hol_err hol_render_create(const hol_render_desc *desc, hol_render **out)
     }
     r->pg = &r->progs[0];
     r->gl.GenVertexArrays(2, r->vao);
-    r->gl.GenBuffers(2, r->vbo);
-    r->gl.GenBuffers(2, r->ibo);
-    for (int k = 0; k < 2; k++) {
-        r->gl.BindVertexArray(r->vao[k]);
-        r->gl.BindBuffer(GL_ARRAY_BUFFER, r->vbo[k]);
-        r->gl.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, r->ibo[k]);
-        if (k == 0) {
-            r->gl.BufferData(GL_ARRAY_BUFFER,
-                             (GLsizeiptr)((HOL__HUD_VBASE + HOL__HUD_V) *
-                                          sizeof(hol_vertex)),
-                             NULL, GL_DYNAMIC_DRAW);
-            r->gl.BufferData(GL_ELEMENT_ARRAY_BUFFER,
-                             (GLsizeiptr)((HOL__HUD_IBASE + HOL__HUD_I) *
-                                          sizeof(uint32_t)),
-                             NULL, GL_DYNAMIC_DRAW);
-        }
-        r->gl.EnableVertexAttribArray(0);
-        r->gl.EnableVertexAttribArray(1);
-        r->gl.EnableVertexAttribArray(2);
-        r->gl.VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(hol_vertex),
-                                  (const void *)offsetof(hol_vertex, pos));
-        r->gl.VertexAttribPointer(1, 3, GL_BYTE, GL_TRUE, sizeof(hol_vertex),
-                                  (const void *)offsetof(hol_vertex, nrm));
-        r->gl.VertexAttribPointer(2, 4, GL_UNSIGNED_BYTE, GL_TRUE, sizeof(hol_vertex),
-                                  (const void *)offsetof(hol_vertex, rgba));
-    }
-    r->gl.BindVertexArray(0);
+    r->gl.GenBuffers(1, &r->vbo[1]);
+    r->gl.GenBuffers(1, &r->ibo[1]);
+    r->gl.BindVertexArray(r->vao[1]);
+    r->gl.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, r->ibo[1]);
+    hol__vao_attribs(r, 1);
+    hol__static_grow(r, d.all_programs ? HOL__SLOTS : HOL__SLOTS_FIRST);
     if (r->gl.GetError() != GL_NO_ERROR) {
         hol_render_destroy(r);
         return HOL_EUNSUPPORTED;
@@ -666,7 +710,7 @@ static int hol__tile_range(hol_render *r, hol_tile t, int bare, int pole, int ki
             sl->have == have && sl->cell_m == cell_m &&
             (!have || !memcmp(&sl->content, &c, sizeof c))) {
             sl->last_frame = r->frame;
-            *first = HOL__ROOM_I + (uint32_t)i * HOL__SLOT_I;
+            *first = HOL__SLOT_IBASE(i);
             *count = sl->nidx;
             return 1;
         }
@@ -685,8 +729,10 @@ static int hol__tile_range(hol_render *r, hol_tile t, int bare, int pole, int ki
     r->scratch.cap_i = HOL__ROOM_I;
     if (r->scratch.overflow)
         return 0;
-    uint32_t vbase = HOL__ROOM_V + (uint32_t)k * HOL__SLOT_V;
-    uint32_t ibase = HOL__ROOM_I + (uint32_t)k * HOL__SLOT_I;
+    if (k >= r->slot_cap)
+        hol__static_grow(r, HOL__SLOTS);
+    uint32_t vbase = HOL__SLOT_VBASE(k);
+    uint32_t ibase = HOL__SLOT_IBASE(k);
     hol__upload_scratch(r, vbase, ibase);
     hol__slot *sl = &r->slots[k];
     sl->used = 1;
@@ -1287,6 +1333,24 @@ static hol__prog *hol__prog_of(hol_render *r, const hol_frame_desc *f, int kind)
     return &r->progs[kind + (r->view.wedges ? 4 : 0)];
 }
 
+/* Compile, if not yet, the programs of the kinds first..last (kinds as in
+ * hol__prog_of, last <= first) this frame uses: a command that draws only
+ * the day compiles 1 or 2 programs of the 30 (each costs llvmpipe about
+ * 8 ms of CPU). HOL_EUNSUPPORTED if one does not compile. */
+static hol_err hol__use_progs(hol_render *r, const hol_frame_desc *f, int first, int last)
+{
+    for (int k = first; k >= last; k--) {
+        hol__prog *pg = hol__prog_of(r, f, k);
+        if (!pg->prog && hol__make_prog(r, pg, (int)(pg - r->progs))) {
+            if (pg->prog)
+                r->gl.DeleteProgram(pg->prog);
+            pg->prog = 0;
+            return HOL_EUNSUPPORTED;
+        }
+    }
+    return HOL_OK;
+}
+
 /* Clear the frame (sky, or black for IDs), upload this frame's dynamic
  * geometry, and set the program's per-frame uniforms; vp receives the
  * view-projection matrix. */
@@ -1517,6 +1581,8 @@ hol_err hol_render_frame(hol_render *r, const hol_frame_desc *f,
         return err;
     }
     hol_err err = hol__build(r, f);
+    if (!err)
+        err = f->lighting ? hol__use_progs(r, f, 2, 1) : hol__use_progs(r, f, 0, 0);
     if (err)
         return err;
     for (int i = 0; i < r->nitems; i++)
@@ -1591,6 +1657,8 @@ hol_err hol_render_panel_image(hol_render *r, const hol_frame_desc *f, int w, in
         return HOL_EARG;
     hol_frame_desc g;
     hol_err err = hol__queue_panel_only(r, f, &g);
+    if (!err)
+        err = hol__use_progs(r, &g, 0, 0);
     if (err)
         return err;
     for (int i = 0; i < r->nitems; i++)

@@ -8,7 +8,9 @@
  *   makes a GL context current (8 stencil bits, a depth buffer) before
  *   hol_render_create and keeps it current for every call.
  * - hol_render_create makes the GL objects and the CPU stores once (fixed
- *   sizes); frames allocate nothing. Meshes stay resident on the GPU: the
+ *   sizes); frames allocate nothing on the CPU. Shader programs other than
+ *   the day's are compiled the first time a frame uses one, unless
+ *   desc.all_programs (then all at create). Meshes stay resident on the GPU: the
  *   room's (rebuilt when the user steps) and a pool of tile meshes (LRU,
  *   rebuilt when a tile's content changes); per frame only the leaf
  *   polygons and the HUD are uploaded (a few KB).
@@ -90,6 +92,13 @@ typedef struct hol_render_desc {
                                   glReadPixels in a frame; errors are checked
                                   at create and by hol_render_check (after a
                                   resize). Tools and tests set it. */
+    int all_programs;          /* 1: compile every shader program at create
+                                  (a headset: no compile in a frame). 0:
+                                  the day program at create, each other
+                                  the first time a frame uses it (that
+                                  frame's CPU time includes it; one that
+                                  does not compile fails the frame with
+                                  HOL_EUNSUPPORTED) */
 } hol_render_desc;
 
 typedef struct hol_render hol_render;

@@ -556,6 +556,50 @@ static void test_anytime(void **state)
     hol_nav_destroy(small);
 }
 
+/* A lazy navigator (its arena untouched at create, hash cleared at the
+ * first search) answers as an eager one, query for query: anytime finds
+ * (the arena's nodes and hash), tours (the leg table built in the first,
+ * on the arena as scratch), finds again after them. */
+static void test_lazy_same(void **state)
+{
+    (void)state;
+    hol_nav_desc desc = {0};
+    desc.radius = 8;
+    desc.max_nodes = 1u << 16;
+    hol_nav *eager, *lazy;
+    assert_int_equal(hol_nav_create(&desc, &eager), HOL_OK);
+    hol_nav_prepare_tours(eager); /* as the app did at create */
+    desc.lazy = 1;
+    assert_int_equal(hol_nav_create(&desc, &lazy), HOL_OK);
+    for (int q = 0; q < 60; q++) {
+        hol_room s = random_start(20);
+        uint8_t w1[HOL_NAV_WALK_MAX], w2[HOL_NAV_WALK_MAX];
+        hol_nav_result r1, r2;
+        hol_err e1, e2;
+        if (q % 3 == 2) {
+            hol_tile keys[3], chest = random_target(&s, 1 + (int)rnd(4));
+            for (int i = 0; i < 3; i++)
+                keys[i] = random_target(&s, 2 + (int)rnd(5));
+            e1 = hol_nav_tour(eager, &s, keys, 1 + q % 3, chest, 0, w1, sizeof w1, &r1);
+            e2 = hol_nav_tour(lazy, &s, keys, 1 + q % 3, chest, 0, w2, sizeof w2, &r2);
+        } else {
+            hol_tile t = random_target(&s, 3 + (int)rnd(9));
+            size_t budget = q % 2 ? 300 : 0;
+            e1 = hol_nav_find(eager, &s, t, budget, w1, sizeof w1, &r1);
+            e2 = hol_nav_find(lazy, &s, t, budget, w2, sizeof w2, &r2);
+        }
+        assert_int_equal(e1, e2);
+        if (e1)
+            continue;
+        assert_int_equal(r1.len, r2.len);
+        assert_int_equal(r1.exact, r2.exact);
+        assert_int_equal(r1.nodes, r2.nodes);
+        assert_memory_equal(w1, w2, (size_t)r1.len);
+    }
+    hol_nav_destroy(eager);
+    hol_nav_destroy(lazy);
+}
+
 /* Far targets: complete, valid walks, never exact, bounded work. */
 static void test_far(void **state)
 {
@@ -1592,6 +1636,7 @@ int main(void)
         cmocka_unit_test(test_configs_optimal_vs_bfs),
         cmocka_unit_test(test_configs_tours),
         cmocka_unit_test(test_flat),
+        cmocka_unit_test(test_lazy_same),
         cmocka_unit_test(test_configs_field_direction),
     };
     return cmocka_run_group_tests(tests, setup, teardown);

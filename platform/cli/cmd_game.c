@@ -160,6 +160,7 @@ int cli_cmd_game(int argc, char **argv)
         return rs;
     hol_app_desc d;
     memset(&d, 0, sizeof d);
+    d.lazy_nav = 1; /* headless: tables when first needed */
     game_ctx g = {NULL, &L.lvl, path, 0};
     hol_err err;
     if ((err = hol_app_create(&d, &g.app))) {

@@ -111,6 +111,7 @@ int cli_cmd_nav(int argc, char **argv)
     nav_ctx ctx = {NULL, hol_room_start(), budget, stats};
     hol_nav_desc desc = {0};
     desc.tiling_q = q;
+    desc.lazy = 1;
     desc.room_cols = cols;
     desc.room_rows = rows;
     hol_room_start_in(q, cols, rows, &ctx.start);

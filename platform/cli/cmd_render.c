@@ -722,6 +722,7 @@ static void setup_path(const render_opts *o, hol_frame_desc *fd)
     navd.tiling_q = hol_tile_q(fd->user.tile);
     navd.room_cols = hol_room_cols(&fd->user);
     navd.room_rows = hol_room_rows(&fd->user);
+    navd.lazy = 1;
     hol_nav_result nr;
     if (!hol_nav_create(&navd, &nav) &&
         !hol_nav_find(nav, &fd->user, o->targets[0], 200000, path, sizeof path, &nr)) {

@@ -211,6 +211,7 @@ static hol_nav *nav_for(report_run *r, int q, int cols, int rows)
     d.tiling_q = q;
     d.room_cols = cols;
     d.room_rows = rows;
+    d.lazy = 1;
     hol_nav *nav;
     if (hol_nav_create(&d, &nav))
         return NULL;

@@ -94,6 +94,7 @@ int cli_cmd_tour(int argc, char **argv)
     hol_nav *nav;
     hol_nav_desc desc = {0};
     desc.tiling_q = q;
+    desc.lazy = 1;
     desc.room_cols = cols;
     desc.room_rows = rows;
     hol_err err = hol_nav_create(&desc, &nav);

@@ -357,6 +357,7 @@ int play_session_open(const char *cmd, play_out *po, const hol_level *levels, in
     d.rec_name = po->rec_name;
     d.meta = *meta;
     d.track_hz = po->track_hz;
+    d.app.lazy_nav = strcmp(cmd, "xr") != 0;
     char msg[256];
     /* recovery of a killed session's huge live files ends on a signal */
     if (po->has_log)

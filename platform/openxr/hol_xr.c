@@ -170,6 +170,7 @@ static int hol__setup(hol__xr *x, const void *binding)
     rd.getproc = x->getproc;
     rd.world = x->fns->world(x->fns->user);
     rd.srgb = x->srgb;
+    rd.all_programs = 1; /* no shader compiled in a frame the headset waits for */
     if (hol_render_create(&rd, &x->rnd))
         return hol__error(x, "cannot initialise the renderer on this GL context");
     return 0;
