@@ -24,6 +24,7 @@ hol_web hol_web_g;
 extern int hol_web_js_focused(void);
 extern void hol_web_js_event(const char *kind, const char *text);
 extern void hol_web_js_config(const char *key, char *buf, int cap);
+extern void hol_web_js_mark(const char *name);
 
 /* ?snap=DEG: a divisor of 360 in 1..180, as play's --snap-turn; 0 none.
  * -1 when it is not one. */
@@ -373,6 +374,7 @@ static EM_BOOL pancake_frame(double t_ms, void *user)
     } else if (!w->drawn_first) {
         w->drawn_first = 1; /* performance.now(): since the page's navigation began */
         double now = emscripten_performance_now();
+        hol_web_js_mark("holonomy-first-frame");
         printf("web: first frame %.0f ms after the page began loading: main at %.0f ms (the "
                "page, the wasm's download and compile), GL context %.0f ms, the game (the "
                "navigator's table, the world) %.0f ms, the renderer %.0f ms, the first frame "
@@ -451,11 +453,13 @@ int main(void)
     w->pause_told = HOL_WEB_UNTOLD;
     char msg[256] = "";
     boot_ms[0] = emscripten_performance_now();
+    hol_web_js_mark("holonomy-main");
     if (make_gl()) {
         hol_web_js_event("failed", "this browser has no WebGL 2 with a stencil buffer");
         return 1;
     }
     boot_ms[1] = emscripten_performance_now();
+    hol_web_js_mark("holonomy-gl");
     w->pan.snap_deg = config_snap();
     if (w->pan.snap_deg < 0) {
         hol_web_js_event("failed", "snap is not a divisor of 360 in 1..180");
@@ -471,6 +475,7 @@ int main(void)
         return 1;
     }
     boot_ms[2] = emscripten_performance_now();
+    hol_web_js_mark("holonomy-game");
     hol_render_desc rd;
     memset(&rd, 0, sizeof rd);
     rd.getproc = gl_getproc;
@@ -483,6 +488,7 @@ int main(void)
         return 1;
     }
     w->t0_ms = boot_ms[3] = emscripten_performance_now();
+    hol_web_js_mark("holonomy-renderer");
     listen();
     emscripten_request_animation_frame_loop(pancake_frame, NULL);
     hol_web_js_event("ready", "");
