@@ -100,6 +100,8 @@ struct hol_render {
                             1: per-light heights and weights), [32 + k] and
                             spots (HOL_FX 2): only frames that have them pay */
     hol__prog *pg;      /* this frame's */
+    int prog_failed;    /* desc.lazy_programs: a program compiled for a
+                           frame failed (the frame returns an error) */
     hol_light_frame lights; /* this frame's (at dusk and night) */
     hol_mesh dyn;     /* per-frame geometry */
     hol_mesh scratch; /* one room or tile mesh before upload */
@@ -452,6 +454,30 @@ static int hol__make_prog(hol_render *r, hol__prog *pg, int k)
     return 0;
 }
 
+/* Whether program k is one of the renderer's: day has no night variant,
+ * FX only the lit tiles'. */
+static int hol__prog_exists(int k)
+{
+    return k < 16 ? k % 4 || k < 8 : k % 2;
+}
+
+int hol_render_prepare(hol_render *r)
+{
+    int left = 0, made = 0;
+    for (int k = 0; k < 48; k++) {
+        if (!hol__prog_exists(k) || r->progs[k].prog)
+            continue;
+        if (!made) {
+            made = 1;
+            if (hol__make_prog(r, &r->progs[k], k))
+                return -1;
+            continue;
+        }
+        left++;
+    }
+    return left;
+}
+
 hol_err hol_render_create(const hol_render_desc *desc, hol_render **out)
 {
     hol_render_desc d;
@@ -484,8 +510,8 @@ hol_err hol_render_create(const hol_render_desc *desc, hol_render **out)
         return gerr;
     }
     int bad = 0;
-    for (int k = 0; k < 48; k++)
-        if (k < 16 ? k % 4 || k < 8 : k % 2) /* day has no night variant, FX only tiles */
+    for (int k = 0; k < (d.lazy_programs ? 1 : 48); k++)
+        if (hol__prog_exists(k))
             bad = bad || hol__make_prog(r, &r->progs[k], k);
     if (bad) {
         hol_render_destroy(r);
@@ -1284,7 +1310,12 @@ static hol__prog *hol__prog_of(hol_render *r, const hol_frame_desc *f, int kind)
         kind += 8;
     if (kind % 2)
         kind += 16 * r->lights.fx;
-    return &r->progs[kind + (r->view.wedges ? 4 : 0)];
+    int k = kind + (r->view.wedges ? 4 : 0);
+    if (!r->progs[k].prog && hol__make_prog(r, &r->progs[k], k)) { /* desc.lazy_programs */
+        r->prog_failed = 1;
+        return &r->progs[0];
+    }
+    return &r->progs[k];
 }
 
 /* Clear the frame (sky, or black for IDs), upload this frame's dynamic
@@ -1536,7 +1567,7 @@ hol_err hol_render_frame(hol_render *r, const hol_frame_desc *f,
     st.uploaded_bytes = r->uploaded;
     st.tiles_built = r->tiles_built;
     st.wall_ms = hol__now(CLOCK_MONOTONIC) - w0;
-    if (r->desc.debug && hol_render_check(r))
+    if (r->prog_failed || (r->desc.debug && hol_render_check(r)))
         return HOL_EUNSUPPORTED;
     if (out_stats)
         *out_stats = st;

@@ -90,6 +90,13 @@ typedef struct hol_render_desc {
                                   glReadPixels in a frame; errors are checked
                                   at create and by hol_render_check (after a
                                   resize). Tools and tests set it. */
+    int lazy_programs;         /* 1: hol_render_create compiles only the day
+                                  program; every other (wedges, dusk, night,
+                                  fireflies) is compiled by the first frame
+                                  that uses it, or before by
+                                  hol_render_prepare. 0: all at create. The
+                                  web sets it: 30 programs compiled at once
+                                  held its first frame back */
 } hol_render_desc;
 
 typedef struct hol_render hol_render;
@@ -293,6 +300,12 @@ hol_err hol_render_frame(hol_render *r, const hol_frame_desc *f,
  * renderer's maximum), HOL_ENOMEM. */
 uint64_t hol_render_panel_key(hol_render *r, const hol_frame_desc *f);
 hol_err hol_render_panel_image(hol_render *r, const hol_frame_desc *f, int w, int h);
+
+/* With desc.lazy_programs: compile one more of the programs not compiled
+ * yet (a caller spreads them over the frames after the first). Returns how
+ * many are left, 0 when all are made, or -1 when this one failed (its
+ * first frame would fail the same way). */
+int hol_render_prepare(hol_render *r);
 
 /* Ask the GL for errors now (one glGetError round trip): HOL_OK, or
  * HOL_EUNSUPPORTED when the GL reported one since the last check. For

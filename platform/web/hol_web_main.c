@@ -371,6 +371,11 @@ static EM_BOOL pancake_frame(double t_ms, void *user)
         printf("web: rendering failed\n");
         w->failed = w->over = 1;
         hol_web_js_event("failed", "rendering failed");
+    } else if (w->drawn_first && w->progs_left > 0) {
+        /* the programs the first frame did not need: one a frame after it */
+        w->progs_left = hol_render_prepare(w->rnd);
+        if (w->progs_left < 0)
+            printf("web: a shader program did not compile (a frame that needs it fails)\n");
     } else if (!w->drawn_first) {
         w->drawn_first = 1; /* performance.now(): since the page's navigation began */
         double now = emscripten_performance_now();
@@ -483,6 +488,8 @@ int main(void)
     hol_web_js_config("gldebug", dbg, sizeof dbg); /* ?gldebug=1: check every frame */
     rd.debug = dbg[0] && strcmp(dbg, "0");
     rd.world = hol_app_world(hol_web_game_app());
+    rd.lazy_programs = 1; /* the day program now, the others after the first frame */
+    w->progs_left = 1;
     if (hol_render_create(&rd, &w->rnd)) {
         hol_web_js_event("failed", "cannot initialise the renderer on this WebGL context");
         return 1;
