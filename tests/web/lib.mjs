@@ -225,7 +225,8 @@ export async function firstFrameLoad(browser, url, { trace = false } = {}) {
 // Per phase, the CPU (trace thread time) of the page's main thread, of the
 // GPU process's main thread and of all chromium's threads; a task that
 // spans a phase's end is split in proportion to its wall time, but for the
-// page's main thread, where the marks carry the thread's clock.
+// page's main thread after main begins, where the marks carry the thread's
+// clock (main runs the GL context, the game and the renderer in one task).
 function traceCpu(ev, at) {
   const marks = new Map(ev.filter((e) => /^holonomy-/.test(e.name || '') && e.ph !== 'X').map((e) => [e.name.slice(9), e]));
   const main = marks.get('main');
@@ -241,13 +242,17 @@ function traceCpu(ev, at) {
       const ov = Math.min(e.ts + e.dur, bounds[k + 1]) - Math.max(e.ts, bounds[k]);
       if (ov <= 0) continue;
       const ms = e.tdur / 1000 * ov / e.dur, o = out[FIRST_FRAME_PHASES[k]];
+      if (e.pid === main.pid && e.tid === main.tid) {
+        if (k === 0) o.main += ms;
+        continue;
+      }
       o.all += ms;
       if (e.pid === gpuPid && e.tid === gpuTid) o.gpu += ms;
-      if (e.pid === main.pid && e.tid === main.tid && k === 0) o.main += ms;
     }
   }
   for (let k = 1; k < FIRST_FRAME_PHASES.length; k++) /* the marks' thread clock */
     out[FIRST_FRAME_PHASES[k]].main = (marks.get(FIRST_FRAME_PHASES[k]).tts - marks.get(FIRST_FRAME_PHASES[k - 1]).tts) / 1000;
+  for (const p of FIRST_FRAME_PHASES) out[p].all += out[p].main;
   return out;
 }
 
