@@ -372,8 +372,10 @@ static EM_BOOL pancake_frame(double t_ms, void *user)
         w->failed = w->over = 1;
         hol_web_js_event("failed", "rendering failed");
     } else if (w->drawn_first && w->progs_left > 0) {
-        /* the programs the first frame did not need: one a frame after it */
-        w->progs_left = hol_render_prepare(w->rnd);
+        /* the programs the first frame did not need, all in the frame after
+         * it (their status queries wait for the GL: never later in play) */
+        while ((w->progs_left = hol_render_prepare(w->rnd)) > 0)
+            ;
         if (w->progs_left < 0)
             printf("web: a shader program did not compile (a frame that needs it fails)\n");
     } else if (!w->drawn_first) {
@@ -488,7 +490,7 @@ int main(void)
     hol_web_js_config("gldebug", dbg, sizeof dbg); /* ?gldebug=1: check every frame */
     rd.debug = dbg[0] && strcmp(dbg, "0");
     rd.world = hol_app_world(hol_web_game_app());
-    rd.lazy_programs = 1; /* the day program now, the others after the first frame */
+    rd.lazy_programs = 1; /* the day program now, the others in the second frame */
     w->progs_left = 1;
     if (hol_render_create(&rd, &w->rnd)) {
         hol_web_js_event("failed", "cannot initialise the renderer on this WebGL context");
