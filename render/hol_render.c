@@ -515,6 +515,30 @@ static void hol__static_grow(hol_render *r, int cap)
     r->gl.BindVertexArray(0);
 }
 
+/* Whether program k is one of the renderer's: day has no night variant,
+ * FX only the lit tiles'. */
+static int hol__prog_exists(int k)
+{
+    return k < 16 ? k % 4 || k < 8 : k % 2;
+}
+
+int hol_render_prepare(hol_render *r)
+{
+    int left = 0, made = 0;
+    for (int k = 0; k < 48; k++) {
+        if (!hol__prog_exists(k) || r->progs[k].prog)
+            continue;
+        if (!made) {
+            made = 1;
+            if (hol__make_prog(r, &r->progs[k], k))
+                return -1;
+            continue;
+        }
+        left++;
+    }
+    return left;
+}
+
 hol_err hol_render_create(const hol_render_desc *desc, hol_render **out)
 {
     hol_render_desc d;
@@ -547,10 +571,11 @@ hol_err hol_render_create(const hol_render_desc *desc, hol_render **out)
         return gerr;
     }
     /* the day program now (it proves the GL compiles the shaders); the
-     * others when a frame first uses one (hol__use_progs), or all now */
+     * others when a frame first uses one (hol__use_progs), or all now
+     * (desc.all_programs), or by hol_render_prepare */
     int bad = hol__make_prog(r, &r->progs[0], 0);
     for (int k = 1; k < 48 && d.all_programs; k++)
-        if (k < 16 ? k % 4 || k < 8 : k % 2) /* day has no night variant, FX only tiles */
+        if (hol__prog_exists(k))
             bad = bad || hol__make_prog(r, &r->progs[k], k);
     if (bad) {
         hol_render_destroy(r);

@@ -303,6 +303,13 @@ hol_err hol_render_frame(hol_render *r, const hol_frame_desc *f,
 uint64_t hol_render_panel_key(hol_render *r, const hol_frame_desc *f);
 hol_err hol_render_panel_image(hol_render *r, const hol_frame_desc *f, int w, int h);
 
+/* With desc.lazy_programs: compile one more of the programs not compiled
+ * yet. Returns how
+ * many are left, 0 when all are made, or -1 when this one failed (its
+ * first frame would fail the same way). Each compile waits for the GL
+ * (its status): the web compiles them all in the frame after its first. */
+int hol_render_prepare(hol_render *r);
+
 /* Ask the GL for errors now (one glGetError round trip): HOL_OK, or
  * HOL_EUNSUPPORTED when the GL reported one since the last check. For
  * init and after a resize; not per frame (see desc.debug). */

@@ -25,6 +25,9 @@ typedef struct hol_web {
     int over;                /* the session is over (quit, campaign done) */
     int drawn_over;          /* the last view was drawn after that */
     int drawn_first;         /* the first frame was drawn */
+    int progs_left;          /* shader programs still to compile (all in
+                                the pancake frame after the first; <= 0
+                                none) */
     int drawn_w, drawn_h;    /* the canvas size of the last pancake frame:
                                 a new size is checked for GL errors */
     int xr_checked;          /* this XR session's first frame was checked */

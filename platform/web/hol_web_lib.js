@@ -415,6 +415,12 @@ var HolWebLib = {
     if (Module['holEvent']) Module['holEvent'](k, t);
   },
 
+  // a User Timing mark (performance.mark): the start's phases and the
+  // first frame, for the bench (tests/web/first_frame.mjs)
+  hol_web_js_mark: function (name) {
+    if (window.performance && performance.mark) performance.mark(UTF8ToString(name));
+  },
+
   hol_web_js_config: function (key, buf, cap) {
     var c = Module['holConfig'] || {};
     var v = c[UTF8ToString(key)];

@@ -24,6 +24,7 @@ hol_web hol_web_g;
 extern int hol_web_js_focused(void);
 extern void hol_web_js_event(const char *kind, const char *text);
 extern void hol_web_js_config(const char *key, char *buf, int cap);
+extern void hol_web_js_mark(const char *name);
 
 /* ?snap=DEG: a divisor of 360 in 1..180, as play's --snap-turn; 0 none.
  * -1 when it is not one. */
@@ -370,9 +371,17 @@ static EM_BOOL pancake_frame(double t_ms, void *user)
         printf("web: rendering failed\n");
         w->failed = w->over = 1;
         hol_web_js_event("failed", "rendering failed");
+    } else if (w->drawn_first && w->progs_left > 0) {
+        /* the programs the first frame did not need, all in the frame after
+         * it (their status queries wait for the GL: never later in play) */
+        while ((w->progs_left = hol_render_prepare(w->rnd)) > 0)
+            ;
+        if (w->progs_left < 0)
+            printf("web: a shader program did not compile (a frame that needs it fails)\n");
     } else if (!w->drawn_first) {
         w->drawn_first = 1; /* performance.now(): since the page's navigation began */
         double now = emscripten_performance_now();
+        hol_web_js_mark("holonomy-first-frame");
         printf("web: first frame %.0f ms after the page began loading: main at %.0f ms (the "
                "page, the wasm's download and compile), GL context %.0f ms, the game (the "
                "navigator's table, the world) %.0f ms, the renderer %.0f ms, the first frame "
@@ -451,11 +460,13 @@ int main(void)
     w->pause_told = HOL_WEB_UNTOLD;
     char msg[256] = "";
     boot_ms[0] = emscripten_performance_now();
+    hol_web_js_mark("holonomy-main");
     if (make_gl()) {
         hol_web_js_event("failed", "this browser has no WebGL 2 with a stencil buffer");
         return 1;
     }
     boot_ms[1] = emscripten_performance_now();
+    hol_web_js_mark("holonomy-gl");
     w->pan.snap_deg = config_snap();
     if (w->pan.snap_deg < 0) {
         hol_web_js_event("failed", "snap is not a divisor of 360 in 1..180");
@@ -471,6 +482,7 @@ int main(void)
         return 1;
     }
     boot_ms[2] = emscripten_performance_now();
+    hol_web_js_mark("holonomy-game");
     hol_render_desc rd;
     memset(&rd, 0, sizeof rd);
     rd.getproc = gl_getproc;
@@ -478,11 +490,14 @@ int main(void)
     hol_web_js_config("gldebug", dbg, sizeof dbg); /* ?gldebug=1: check every frame */
     rd.debug = dbg[0] && strcmp(dbg, "0");
     rd.world = hol_app_world(hol_web_game_app());
+    /* the day program now, the others in the second frame (prepare) */
+    w->progs_left = 1;
     if (hol_render_create(&rd, &w->rnd)) {
         hol_web_js_event("failed", "cannot initialise the renderer on this WebGL context");
         return 1;
     }
     w->t0_ms = boot_ms[3] = emscripten_performance_now();
+    hol_web_js_mark("holonomy-renderer");
     listen();
     emscripten_request_animation_frame_loop(pancake_frame, NULL);
     hol_web_js_event("ready", "");

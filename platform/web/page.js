@@ -142,8 +142,31 @@
     }
   });
 
+  // ---- the wasm: its download and compile start now, beside the store's
+  // opening, and holonomy.js instantiates the compiled module (a server
+  // without application/wasm: compiled from the bytes instead) ----
+  var fail = function (what, e) {
+    status('Failed: ' + what + ': ' + e);
+    console.error('holonomy: ' + what + ': ' + e);
+  };
+  var wasm = (WebAssembly.compileStreaming ? WebAssembly.compileStreaming(fetch('holonomy.wasm'))
+    : Promise.reject(0)).catch(function () {
+    return fetch('holonomy.wasm').then(function (r) {
+      if (!r.ok) throw new Error('holonomy.wasm: ' + r.status);
+      return r.arrayBuffer();
+    }).then(function (b) { return WebAssembly.compile(b); });
+  });
+  wasm.then(function () { performance.mark('holonomy-wasm'); }, function (e) {
+    fail('cannot load the game', e);
+  });
+
   // ---- the module ----
   window.Module = {
+    instantiateWasm: function (imports, done) {
+      wasm.then(function (m) { return WebAssembly.instantiate(m, imports); })
+        .then(function (i) { done(i); }, function (e) { fail('cannot start the game', e); });
+      return {};
+    },
     canvas: canvas,
     holConfig: config,
     print: function (s) { console.log(s); },
@@ -220,6 +243,7 @@
         console.warn('holonomy: no IndexedDB here: logs are kept in memory only (' +
           window.holonomyStore.why() + ')');
       refreshLogs();
+      performance.mark('holonomy-store');
       var s = document.createElement('script');
       s.src = 'holonomy.js';
       document.body.appendChild(s);

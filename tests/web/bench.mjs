@@ -1,7 +1,9 @@
 // bench.mjs - the web build's figures for make bench (README: Performance):
 // - the app step and the navigator's table build, the same C natively and in
 //   wasm under node (tests/bench_web.c), and their ratio;
-// - the first frame from page load in headless chromium (SwiftShader);
+// - the first frame from the navigation's start in headless chromium
+//   (SwiftShader): the median of FIRST_LOADS (default 5) first visits, its
+//   phases' wall time and (traced loads) CPU;
 // - the compressed transfer size of build/web (gzip -9 and brotli);
 // - the main thread per pancake and XR frame with the per-frame glGetError
 //   (?gldebug=1, as before it was taken out of the frame path) and without;
@@ -12,18 +14,17 @@
 // - the same per XR frame at night (eight lanterns) against day, one level
 //   each, in the same run.
 // Environment: BENCH_NATIVE, BENCH_WASM (the two builds of bench_web), WEB,
-// CHROMIUM.
+// CHROMIUM, FIRST_LOADS.
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import zlib from 'node:zlib';
 import { spawnSync } from 'node:child_process';
-import { enterVR, launch, openPage, serve, sleep } from './lib.mjs';
+import { enterVR, firstFrameLoad, firstFrameReport, launch, median, openPage, processTreeCpu, serve } from './lib.mjs';
 
 const WEB = path.resolve(process.env.WEB || 'build/web');
 const CHROMIUM = process.env.CHROMIUM || '/usr/bin/chromium';
 const tmp = fs.mkdtempSync(path.join(os.tmpdir(), 'holonomy-web-bench-'));
-const median = (a) => a.slice().sort((x, y) => x - y)[a.length >> 1];
 
 function figures(cmd, args) {
   const r = spawnSync(cmd, args, { encoding: 'utf8' });
@@ -57,48 +58,22 @@ for (const f of fs.readdirSync(WEB)) {
 console.log(`  ${fs.readdirSync(WEB).length} files: ${(raw / 1024).toFixed(0)} KB, gzip -9 ${(gz / 1024).toFixed(0)} KB, ` +
   `brotli ${(br / 1024).toFixed(0)} KB (target: at most 162 KB gzip -9, checked by make web-test)`);
 
-// CPU seconds of chromium's processes (the browser and its children)
-function chromiumCpu(root) {
-  const tick = 100; /* USER_HZ */
-  let total = 0;
-  const kids = new Map();
-  for (const d of fs.readdirSync('/proc')) {
-    if (!/^\d+$/.test(d)) continue;
-    try {
-      const st = fs.readFileSync(`/proc/${d}/stat`, 'utf8');
-      const f = st.slice(st.lastIndexOf(')') + 2).split(' ');
-      kids.set(+d, { ppid: +f[1], cpu: (+f[11] + +f[12]) / tick });
-    } catch (e) { /* gone */ }
-  }
-  const inTree = (pid) => { for (let p = pid, n = 0; p > 1 && n < 64; n++) { if (p === root) return true; p = kids.get(p)?.ppid; } return false; };
-  for (const [pid, k] of kids) if (inTree(pid)) total += k.cpu;
-  return total;
-}
+const chromiumCpu = processTreeCpu;
 
 console.log('== web: headless chromium ' + spawnSync(CHROMIUM, ['--version'], { encoding: 'utf8' }).stdout.trim() + ', SwiftShader');
 const server = await serve(WEB, tmp);
 const browser = await launch(CHROMIUM, path.join(tmp, 'profile'), 800, 600);
 try {
-  const first = [], parts = [[], [], [], [], []];
-  const pid0 = browser.process().pid;
-  let cpu = 0;
-  for (let i = 0; i < 3; i++) {
-    const c0 = chromiumCpu(pid0);
-    const p = await openPage(browser, server.base + '/?mode=flag&seed=' + (i + 1));
-    await p.until(() => p.log.find((l) => l.startsWith('web: first frame')), 'the first frame');
-    cpu += chromiumCpu(pid0) - c0;
-    const line = p.log.find((l) => l.startsWith('web: first frame'));
-    first.push(+/(\d+) ms/.exec(line)[1]);
-    // main's start (page, wasm download and compile), GL, the game, the renderer, the frame
-    const m = /main at (\d+) ms .* GL context (\d+) ms, the game .* (\d+) ms, the renderer (\d+) ms, the first frame (\d+) ms/.exec(line);
-    if (m) for (let k = 0; k < 5; k++) parts[k].push(+m[k + 1]);
-    await p.ctx.close();
+  // the first frame (lib.mjs firstFrameLoad): FIRST_LOADS first visits of
+  // ?mode=flag&seed=1..N after a warm-up load, and three traced for the
+  // phases' CPU
+  const N = +(process.env.FIRST_LOADS || 5), loads = [], traced = [];
+  await firstFrameLoad(browser, server.base + '/?mode=flag&seed=1');
+  for (let i = 0; i < N; i++) {
+    loads.push(await firstFrameLoad(browser, server.base + '/?mode=flag&seed=' + (i + 1)));
+    if (i < 3) traced.push(await firstFrameLoad(browser, server.base + '/?mode=flag&seed=' + (i + 1), { trace: true }));
   }
-  console.log(`  first frame from page load (flag level; median of 3 loads): ${median(first)} ms`);
-  console.log(`    of which (medians): main begins at ${median(parts[0])} ms (the page, the wasm's download and compile), ` +
-    `GL context ${median(parts[1])} ms, the game (the navigator's table, the world) ${median(parts[2])} ms, ` +
-    `the renderer ${median(parts[3])} ms, the first frame itself ${median(parts[4])} ms; ` +
-    `all chromium processes ${(cpu / 3 * 1000).toFixed(0)} ms CPU a load`);
+  for (const line of firstFrameReport(loads, traced)) console.log(line);
   // the main thread per frame with the frame path's error check (?gldebug=1:
   // glGetError after every eye, as every frame did before it was taken out)
   // and without (normal running), pancake and XR, in this one run

@@ -152,3 +152,131 @@ export async function enterVR(p) {
   await p.page.click('#vr');
   await p.until(() => p.page.evaluate(() => !!Module.holXR.session), 'the XR session');
 }
+
+// CPU seconds of a process and its descendants (/proc; chromium's browser
+// process: its renderers, the GPU process where SwiftShader draws).
+export function processTreeCpu(root) {
+  const procs = new Map();
+  for (const d of fs.readdirSync('/proc')) {
+    if (!/^\d+$/.test(d)) continue;
+    try {
+      const st = fs.readFileSync(`/proc/${d}/stat`, 'utf8');
+      const f = st.slice(st.lastIndexOf(')') + 2).split(' ');
+      procs.set(+d, { ppid: +f[1], cpu: (+f[11] + +f[12]) / 100 }); /* USER_HZ */
+    } catch (e) { /* gone */ }
+  }
+  let total = 0;
+  for (const [pid, k] of procs)
+    for (let p = pid, n = 0; p > 1 && n < 64; n++, p = procs.get(p)?.ppid)
+      if (p === root) { total += k.cpu; break; }
+  return total;
+}
+
+// The first frame (docs/performance.md, "The web's first frame"): from the
+// navigation's start to the end of the animation frame in which the app
+// drew its first frame on the canvas, the page's User Timing mark
+// holonomy-first-frame (performance.now() is time since the navigation
+// began). The phases end at the marks the page sets: the store is open
+// (holonomy-store) and the wasm compiled (holonomy-wasm) in parallel, then
+// main begins (holonomy-main), the GL context (holonomy-gl), the game
+// (holonomy-game: the session, the app, the navigator's table, the world,
+// the level), the renderer (holonomy-renderer: buffers, the day shader),
+// the first frame (holonomy-first-frame).
+export const FIRST_FRAME_PHASES = ['main', 'gl', 'game', 'renderer', 'first-frame'];
+
+// One load of url in a new tab of the browser's default context (a new
+// context would open a window, and with it chromium's omnibox WebUI, about
+// 0.7 s of CPU beside the page), the origin's storage cleared first (a
+// first visit: no logs, nothing cached). Returns { at: mark -> ms since the
+// navigation began, wasmFetch: the wasm's request to its last byte (ms),
+// chromium: CPU ms of all chromium's processes from the navigation to the
+// first frame (/proc), and with trace (chromium traces its tasks, which
+// costs CPU and wall time itself) cpu: phase -> { main: the page's main
+// thread, gpu: the GPU process's main thread (GL calls, SwiftShader), all:
+// every chromium thread } in ms of thread time (CPU: the other helpers'
+// load does not count) }.
+export async function firstFrameLoad(browser, url, { trace = false } = {}) {
+  const page = await browser.newPage();
+  try {
+    const cdp = await page.createCDPSession();
+    await cdp.send('Storage.clearDataForOrigin', { origin: new URL(url).origin, storageTypes: 'all' });
+    await sleep(300); /* the last tab's teardown */
+    const c0 = processTreeCpu(browser.process().pid);
+    /* the CPU from here to the first frame is mostly the load's */
+    if (trace) await page.tracing.start({ categories: ['__metadata', 'toplevel', 'blink.user_timing'] });
+    await page.goto(url);
+    await page.waitForFunction(() => performance.getEntriesByName('holonomy-first-frame').length ||
+      /^Failed/.test(document.getElementById('status').textContent), { timeout: 120000, polling: 50 });
+    const chromium = (processTreeCpu(browser.process().pid) - c0) * 1000;
+    const r = await page.evaluate(() => {
+      const at = {};
+      for (const m of performance.getEntriesByType('mark')) if (/^holonomy-/.test(m.name)) at[m.name.slice(9)] = m.startTime;
+      const w = performance.getEntriesByType('resource').find((e) => /holonomy\.wasm$/.test(e.name));
+      return { at, wasmFetch: w ? w.responseEnd - w.startTime : NaN, status: document.getElementById('status').textContent };
+    });
+    const t = trace ? JSON.parse(Buffer.from(await page.tracing.stop()).toString('utf8')) : null;
+    if (!r.at['first-frame']) throw new Error(url + ': ' + r.status);
+    return { ...r, cpu: t && traceCpu(t.traceEvents || t, r.at), chromium };
+  } finally {
+    await page.close();
+  }
+}
+
+// Per phase, the CPU (trace thread time) of the page's main thread, of the
+// GPU process's main thread and of all chromium's threads; a task that
+// spans a phase's end is split in proportion to its wall time, but for the
+// page's main thread after main begins, where the marks carry the thread's
+// clock (main runs the GL context, the game and the renderer in one task).
+function traceCpu(ev, at) {
+  const marks = new Map(ev.filter((e) => /^holonomy-/.test(e.name || '') && e.ph !== 'X').map((e) => [e.name.slice(9), e]));
+  const main = marks.get('main');
+  const t0 = main.ts - at.main * 1000; /* the navigation's start on the trace's clock */
+  const gpuPid = ev.find((e) => e.ph === 'M' && e.name === 'process_name' && e.args.name === 'GPU Process')?.pid;
+  const gpuTid = ev.find((e) => e.ph === 'M' && e.name === 'thread_name' && e.pid === gpuPid && e.args.name === 'CrGpuMain')?.tid;
+  const bounds = [t0, ...FIRST_FRAME_PHASES.map((p) => marks.get(p).ts)];
+  const out = Object.fromEntries(FIRST_FRAME_PHASES.map((p) => [p, { main: 0, gpu: 0, all: 0 }]));
+  for (const e of ev) {
+    if (e.ph !== 'X' || e.tdur === undefined || !/^(ThreadControllerImpl::RunTask|ThreadPool_RunTask)$/.test(e.name) || !e.dur)
+      continue;
+    for (let k = 0; k < FIRST_FRAME_PHASES.length; k++) {
+      const ov = Math.min(e.ts + e.dur, bounds[k + 1]) - Math.max(e.ts, bounds[k]);
+      if (ov <= 0) continue;
+      const ms = e.tdur / 1000 * ov / e.dur, o = out[FIRST_FRAME_PHASES[k]];
+      if (e.pid === main.pid && e.tid === main.tid) {
+        if (k === 0) o.main += ms;
+        continue;
+      }
+      o.all += ms;
+      if (e.pid === gpuPid && e.tid === gpuTid) o.gpu += ms;
+    }
+  }
+  for (let k = 1; k < FIRST_FRAME_PHASES.length; k++) /* the marks' thread clock */
+    out[FIRST_FRAME_PHASES[k]].main = (marks.get(FIRST_FRAME_PHASES[k]).tts - marks.get(FIRST_FRAME_PHASES[k - 1]).tts) / 1000;
+  for (const p of FIRST_FRAME_PHASES) out[p].all += out[p].main;
+  return out;
+}
+
+export const median = (a) => a.slice().sort((x, y) => x - y)[a.length >> 1];
+
+// The medians of loads (firstFrameLoad's: wall figures) and of traced
+// loads (CPU figures), as lines of text.
+export function firstFrameReport(loads, traced, indent = '  ') {
+  const f = (x) => Math.round(x);
+  const med = (ls, fn) => f(median(ls.map(fn)));
+  const lines = [`${indent}first frame ${med(loads, (l) => l.at['first-frame'])} ms after the navigation began ` +
+    `(median of ${loads.length} loads: ${loads.map((l) => f(l.at['first-frame'])).join(', ')})`];
+  const names = { main: 'before main (the page, the store, the wasm)', gl: 'the GL context', game: 'the game',
+    renderer: 'the renderer', 'first-frame': 'the first frame itself' };
+  FIRST_FRAME_PHASES.forEach((p, k) => {
+    const wall = med(loads, (l) => l.at[p] - (k ? l.at[FIRST_FRAME_PHASES[k - 1]] : 0));
+    lines.push(`${indent}  ${names[p].padEnd(43)} wall ${String(wall).padStart(5)} ms` + (traced.length
+      ? `; CPU (traced): page main thread ${String(med(traced, (l) => l.cpu[p].main)).padStart(4)}, ` +
+        `GPU process ${String(med(traced, (l) => l.cpu[p].gpu)).padStart(4)}, all chromium ${String(med(traced, (l) => l.cpu[p].all)).padStart(5)} ms`
+      : ''));
+  });
+  lines.push(`${indent}  (the store open at ${med(loads, (l) => l.at.store)} ms, the wasm compiled at ` +
+    `${med(loads, (l) => l.at.wasm ?? NaN)} ms, its download ${med(loads, (l) => l.wasmFetch)} ms; ` +
+    `all chromium's processes ${med(loads, (l) => l.chromium)} ms CPU a load (/proc)` +
+    (traced.length ? `, traced ${med(traced, (l) => l.at['first-frame'])} ms to the first frame)` : ')'));
+  return lines;
+}
