@@ -410,6 +410,31 @@ var HolWebLib = {
     return HolGesture.seen ? 1 : 0;
   },
 
+  // environment.csv's strings (hol_web_env.c): 0 os (the user agent's
+  // parenthesised part), 1 the browser and version, 2 the GL renderer (the
+  // unmasked one where WEBGL_debug_renderer_info exists), 3 the controller
+  // (in VR the right, else left, input source's profiles[0]; else the first
+  // standard gamepad's id), 4 the query string, 5 XRSession.frameRate
+  hol_web_js_env: function (what, buf, cap) {
+    var ua = navigator.userAgent, s = HolXR.session, q = s ? s.inputSources : [], b, v, i;
+    if (what == 0) v = (/\(([^)]*)/.exec(ua) || [])[1] || (navigator.userAgentData || {}).platform;
+    b = ['OculusBrowser', 'SamsungBrowser', 'Edg', 'OPR', 'Firefox', 'HeadlessChrome', 'Chrome', 'Version'];
+    for (i = 0; what == 1 && !v && i < b.length; i++) v = (RegExp(b[i] + '/[\\d.]*\\d').exec(ua) || [])[0];
+    if (what == 1 && v) v = v.replace('Version', 'Safari');
+    if (what == 2) {
+      b = GLctx.getExtension('WEBGL_debug_renderer_info');
+      v = GLctx.getParameter(b ? b.UNMASKED_RENDERER_WEBGL : GLctx.RENDERER);
+    }
+    for (i = 0; what == 3 && i < q.length; i++)
+      if (!v || q[i].handedness == 'right') v = q[i].profiles[0];
+    if (what == 3 && !s)
+      v = (Array.from(navigator.getGamepads ? navigator.getGamepads() : []).find(function (g) {
+        return g && g.connected && g.mapping == 'standard'; }) || {}).id;
+    if (what == 4) v = location.search.slice(1);
+    if (what == 5) v = s && s.frameRate;
+    stringToUTF8(v ? String(v) : '', buf, cap);
+  },
+
   hol_web_js_event: function (kind, text) {
     var k = UTF8ToString(kind), t = UTF8ToString(text);
     if (Module['holEvent']) Module['holEvent'](k, t);
