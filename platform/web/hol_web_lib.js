@@ -411,28 +411,27 @@ var HolWebLib = {
   },
 
   // environment.csv's strings (hol_web_env.c): 0 os (the user agent's
-  // parenthesised part), 1 the browser and version, 2 the GL renderer (the
-  // unmasked one where WEBGL_debug_renderer_info exists), 3 the controller
-  // (in VR the right, else left, input source's profiles[0]; else the first
-  // standard gamepad's id), 4 the query string, 5 XRSession.frameRate
+  // parenthesised part), 1 the browser and version, 2 the controller (in VR
+  // the right, else left, input source's profiles[0]; else the first
+  // standard gamepad's id), 3 the query string, 4 the GL renderer (the
+  // unmasked one where WEBGL_debug_renderer_info exists), 5
+  // XRSession.frameRate (also returned: 0 where undefined)
   hol_web_js_env: function (what, buf, cap) {
-    var ua = navigator.userAgent, s = HolXR.session, q = s ? s.inputSources : [], b, v, i;
-    if (what == 0) v = (/\(([^)]*)/.exec(ua) || [])[1] || (navigator.userAgentData || {}).platform;
-    b = ['OculusBrowser', 'SamsungBrowser', 'Edg', 'OPR', 'Firefox', 'HeadlessChrome', 'Chrome', 'Version'];
-    for (i = 0; what == 1 && !v && i < b.length; i++) v = (RegExp(b[i] + '/[\\d.]*\\d').exec(ua) || [])[0];
-    if (what == 1 && v) v = v.replace('Version', 'Safari');
-    if (what == 2) {
+    var ua = navigator.userAgent, s = HolXR.session, q = s ? s.inputSources : navigator.getGamepads(), b, v, i;
+    if (what == 0) v = (/\(([^)]*)/.exec(ua) || [])[1];
+    if (what == 1) v = ((/(OculusBrowser|SamsungBrowser|Edg|OPR)\/[\d.]*\d/.exec(ua) ||
+      /(Firefox|HeadlessChrome|Chrome|Version)\/[\d.]*\d/.exec(ua) || [])[0] || '').replace('Version', 'Safari');
+    if (what == 4) {
       b = GLctx.getExtension('WEBGL_debug_renderer_info');
       v = GLctx.getParameter(b ? b.UNMASKED_RENDERER_WEBGL : GLctx.RENDERER);
     }
-    for (i = 0; what == 3 && i < q.length; i++)
-      if (!v || q[i].handedness == 'right') v = q[i].profiles[0];
-    if (what == 3 && !s)
-      v = (Array.from(navigator.getGamepads ? navigator.getGamepads() : []).find(function (g) {
-        return g && g.connected && g.mapping == 'standard'; }) || {}).id;
-    if (what == 4) v = location.search.slice(1);
+    for (i = 0; what == 2 && i < q.length; i++)
+      if (s ? !v || q[i].handedness == 'right' : !v && q[i] && q[i].mapping == 'standard')
+        v = s ? q[i].profiles[0] : q[i].id;
+    if (what == 3) v = location.search.slice(1);
     if (what == 5) v = s && s.frameRate;
     stringToUTF8(v ? String(v) : '', buf, cap);
+    return +v || 0;
   },
 
   hol_web_js_event: function (kind, text) {
