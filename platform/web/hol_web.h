@@ -77,9 +77,10 @@ const struct hol_rec_meta *hol_web_game_meta(void);
 /* hol_web_env.c: environment.csv (docs/research.md, Session metadata).
  * init: the GL renderer asked once, at setup (no GL call in the frames);
  * pancake: a frame outside VR (the `web` row once the rate is measured);
- * xr: a WebXR session began (1: its row armed) or ended (0: its row
- * written with what is known, if it was not); xr_frame: an XR frame and
- * the hands' device (its row once the rate and device are known). */
+ * xr: a WebXR session began (1: its row armed; 0, ended: nothing, a
+ * session ended before its row has none); xr_frame: an XR frame and the
+ * hands' device (its row once the rate is known: XRSession.frameRate with
+ * an input source present, else 60 frames measured). */
 void hol_web_env_init(void);
 void hol_web_env_pancake(double t_ms);
 void hol_web_env_xr(int on);

@@ -1,7 +1,7 @@
 /* hol_web_env.c - environment.csv on the web (hol_web.h; docs/research.md,
  * "Session metadata"): one row when the page's session starts (platform
  * `web`, once its display rate is measured) and one at every Enter VR
- * (platform `webxr`, once the rate and the hands' device are known), in the
+ * (platform `webxr`, once the rate is known, the hands' device with it), in the
  * page's log folder, with the desktop's header (play_env.h) and fields
  * escaped and quoted as play_env.c does (hol_text_escape, hol_text_csv).
  */
