@@ -74,6 +74,20 @@ int hol_web_game_open(char *msg, size_t cap);
 int hol_web_game_step(const hol_input *in);
 hol_app *hol_web_game_app(void);
 void hol_web_game_finish(void);
+/* the session's metadata (id, participant), NULL before it opened */
+const struct hol_rec_meta *hol_web_game_meta(void);
+
+/* hol_web_env.c: environment.csv (docs/research.md, Session metadata).
+ * init: the GL renderer asked once, at setup (no GL call in the frames);
+ * pancake: a frame outside VR (the `web` row once the rate is measured);
+ * xr: a WebXR session began (1: its row armed; 0, ended: nothing, a
+ * session ended before its row has none); xr_frame: an XR frame and the
+ * hands' device (its row once the rate is known: XRSession.frameRate with
+ * an input source present, else 60 frames measured). */
+void hol_web_env_init(void);
+void hol_web_env_pancake(double t_ms);
+void hol_web_env_xr(int on);
+void hol_web_env_xr_frame(double t_ms, uint32_t device);
 /* the end line, as `holonomy play` prints it */
 void hol_web_game_print_end(void);
 

@@ -22,6 +22,7 @@ extern void hol_web_js_config(const char *key, char *buf, int cap);
 extern void hol_web_js_event(const char *kind, const char *text);
 
 static hol_session *sess;
+static hol_rec_meta meta; /* the session's (environment.csv) */
 static hol_level levels[HOL_SESSION_MAX_LEVELS];
 static char study_name[64]; /* a study's, or "" */
 static int finished;
@@ -268,6 +269,7 @@ int hol_web_game_open(char *msg, size_t cap)
     hol_err e = hol_session_create(&d, &sess, msg, cap);
     if (e)
         return 1;
+    meta = d.meta;
     printf("web: session %s, %d level(s), recording %s\n", d.meta.session, n, rec_name);
     if (hol_session_recovered(sess))
         printf("web: %d unfinished attempt(s) of an earlier visit finished (end 'killed')\n",
@@ -293,6 +295,11 @@ int hol_web_game_step(const hol_input *in)
     if (ev->level_ended)
         hol_web_js_event("saved", "");
     return over;
+}
+
+const hol_rec_meta *hol_web_game_meta(void)
+{
+    return sess ? &meta : NULL;
 }
 
 hol_app *hol_web_game_app(void)

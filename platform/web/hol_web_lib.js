@@ -410,6 +410,30 @@ var HolWebLib = {
     return HolGesture.seen ? 1 : 0;
   },
 
+  // environment.csv's strings (hol_web_env.c): 0 os (the user agent's
+  // parenthesised part), 1 the browser and version, 2 the controller (in VR
+  // the right, else left, input source's profiles[0]; else the first
+  // standard gamepad's id), 3 the query string, 4 the GL renderer (the
+  // unmasked one where WEBGL_debug_renderer_info exists), 5
+  // XRSession.frameRate (also returned: 0 where undefined)
+  hol_web_js_env: function (what, buf, cap) {
+    var ua = navigator.userAgent, s = HolXR.session, q = s ? s.inputSources : navigator.getGamepads(), b, v, i;
+    if (what == 0) v = (/\(([^)]*)/.exec(ua) || [])[1];
+    if (what == 1) v = ((/(OculusBrowser|SamsungBrowser|Edg|OPR)\/[\d.]*\d/.exec(ua) ||
+      /(Firefox|HeadlessChrome|Chrome|Version)\/[\d.]*\d/.exec(ua) || [])[0] || '').replace('Version', 'Safari');
+    if (what == 4) {
+      b = GLctx.getExtension('WEBGL_debug_renderer_info');
+      v = GLctx.getParameter(b ? b.UNMASKED_RENDERER_WEBGL : GLctx.RENDERER);
+    }
+    for (i = 0; what == 2 && i < q.length; i++)
+      if (s ? !v || q[i].handedness == 'right' : !v && q[i] && q[i].mapping == 'standard')
+        v = s ? q[i].profiles[0] : q[i].id;
+    if (what == 3) v = location.search.slice(1);
+    if (what == 5) v = s && s.frameRate;
+    stringToUTF8(v ? String(v) : '', buf, cap);
+    return +v || 0;
+  },
+
   hol_web_js_event: function (kind, text) {
     var k = UTF8ToString(kind), t = UTF8ToString(text);
     if (Module['holEvent']) Module['holEvent'](k, t);

@@ -337,6 +337,8 @@ static EM_BOOL pancake_frame(double t_ms, void *user)
 {
     (void)user;
     hol_web *w = &hol_web_g;
+    if (!w->xr_active && !w->failed)
+        hol_web_env_pancake(t_ms);
     if (w->xr_active || w->failed || (w->over && w->drawn_over))
         return EM_TRUE; /* the XR session draws, or nothing is left to do */
     double c0 = emscripten_get_now();
@@ -465,6 +467,7 @@ int main(void)
         hol_web_js_event("failed", "this browser has no WebGL 2 with a stencil buffer");
         return 1;
     }
+    hol_web_env_init();
     boot_ms[1] = emscripten_performance_now();
     hol_web_js_mark("holonomy-gl");
     w->pan.snap_deg = config_snap();

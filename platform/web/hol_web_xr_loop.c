@@ -88,6 +88,7 @@ EMSCRIPTEN_KEEPALIVE void hol_web_xr_active(int on)
         w->xr.last_t = w->last_t;
         hol_render_invalidate(w->rnd);
     }
+    hol_web_env_xr(on);
     printf("web: xr session %s after %ld XR frames\n", on ? "started" : "ended", w->xr_frames);
 }
 
@@ -371,6 +372,7 @@ EMSCRIPTEN_KEEPALIVE int hol_web_xr_step(double t_ms, int fb)
         w->xr_recentred = 0;
     }
     w->xr_focused += (in.flags & HOL_INPUT_FOCUSED) != 0;
+    hol_web_env_xr_frame(t_ms, in.device);
     if (hol_web_step(&in))
         return 1;
     xr_pulses();

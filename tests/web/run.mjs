@@ -68,6 +68,34 @@ async function stepRows(page) {
   return rows.map((r) => Object.fromEntries(r.split(',').map((v, i) => [cols[i], v])));
 }
 
+// environment.csv (docs/research.md, Session metadata): its header, the
+// desktop's (tests/cli_meta.sh), and its rows as objects by column name
+// (RFC 4180: a quoted field may hold commas and doubled quotes).
+const ENV_HEADER = 'session,participant,session_no,study_sha256,platform,os,runtime,gl_renderer,controller,refresh_hz,width,height,meta,options';
+function csvRows(text) {
+  const rows = [];
+  let row = [], f = '', q = false;
+  for (let i = 0; i < text.length; i++) {
+    const c = text[i];
+    if (q) {
+      if (c === '"' && text[i + 1] === '"') { f += '"'; i++; } else if (c === '"') q = false; else f += c;
+    } else if (c === '"') q = true;
+    else if (c === ',') { row.push(f); f = ''; }
+    else if (c === '\n') { row.push(f); rows.push(row); row = []; f = ''; }
+    else f += c;
+  }
+  return rows;
+}
+async function envRows(page) {
+  const b = await stored(page, 'environment.csv');
+  if (!b) return null;
+  const text = b.toString('utf8'), [head, ...rows] = csvRows(text);
+  assert(text.split('\n')[0] === ENV_HEADER, 'environment.csv header: ' + text.split('\n')[0]);
+  assert(text.endsWith('\n') && rows.every((r) => r.length === head.length), 'environment.csv rows: ' + text);
+  return rows.map((r) => Object.fromEntries(r.map((v, i) => [head[i], v])));
+}
+const sessionOf = (p) => /web: session (\S+),/.exec(p.log.find((l) => l.startsWith('web: session ')))[1];
+
 // ---- the core in wasm ------------------------------------------------------
 if (process.env.MATH_CHECK)
   await check('the core\'s sin, cos, atan2, asin, log, acosh give the native bits in wasm (tests/math_golden.h)', async () => {
@@ -370,6 +398,26 @@ await check('a gamepad (a getGamepads shim, standard mapping) walks one room ste
   await p.ctx.close();
 });
 
+await check('environment.csv (issue 26): a pancake session writes one row, platform web: the desktop\'s header, the browser, the GL renderer, the gamepad\'s id, the measured refresh rate, the canvas size, the query string', async () => {
+  const p = await openPage('?seed=3&participant=P05', { gamepad: true });
+  const rows = await p.until(async () => { const r = await envRows(p.page); return r && r.length && r; },
+    'a row in environment.csv', 90000);
+  const r = rows[0], session = sessionOf(p);
+  const [cw, ch] = await p.page.evaluate(() => [canvas.width, canvas.height]);
+  console.log('# ' + JSON.stringify(r));
+  assert(rows.length === 1 && r.session === session && r.participant === 'P05' && r.platform === 'web',
+    `rows (one, session ${session}, P05, web): ` + JSON.stringify(rows));
+  assert(r.session_no === '' && r.study_sha256 === '' && r.meta === '', 'session_no, study_sha256, meta: ' + JSON.stringify(r));
+  assert(/Linux/.test(r.os) && /^HeadlessChrome\/\d+\.[\d.]+$/.test(r.runtime) && /SwiftShader/.test(r.gl_renderer),
+    `os '${r.os}', runtime '${r.runtime}', gl_renderer '${r.gl_renderer}'`);
+  assert(r.controller === 'holonomy test pad (standard)', 'controller: ' + r.controller);
+  assert(/^\d+\.\d{3}$/.test(r.refresh_hz) && +r.refresh_hz > 0, 'refresh_hz: ' + r.refresh_hz);
+  assert(+r.width === cw && +r.height === ch && cw > 0, `size ${r.width}x${r.height}, canvas ${cw}x${ch}`);
+  assert(r.options === 'seed=3&participant=P05', 'options: ' + r.options);
+  assert(!p.errors.length, 'errors: ' + p.errors.join('; '));
+  await p.ctx.close();
+});
+
 // ---- the frame path waits for nothing; entering VR walks nothing; the page's states ----
 const statusOf = (p) => p.page.evaluate(() => document.getElementById('status').textContent);
 const vrButton = (p) => p.page.evaluate(() => {
@@ -437,6 +485,29 @@ await check('entering, leaving and entering VR again walks nothing: walk a step 
   const rows = await p.until(async () => { const r = await stepRows(p.page); return r.length >= 2 && r; },
     'two step rows', 10000);
   assert(rows.length === 2 && rows.every((r) => r.dir === 'N'), 'step rows: ' + JSON.stringify(rows));
+  assert(!p.errors.length, 'errors: ' + p.errors.join('; '));
+  await p.ctx.close();
+});
+
+await check('environment.csv (issue 26): without XRSession.frameRate the XR rate is measured over 60 XR frames; every Enter VR writes its own webxr row', async () => {
+  const p = await openPage('?mode=explore&seed=2', { iwer: true });
+  await p.page.evaluate(() => Object.defineProperty(XRSession.prototype, 'frameRate',
+    { configurable: true, get() { return undefined; } }));
+  const xrRows = async (n) => p.until(async () => {
+    const r = ((await envRows(p.page)) || []).filter((x) => x.platform === 'webxr');
+    return r.length >= n && r;
+  }, n + ' webxr row(s)', 120000);
+  for (const n of [1, 2]) {
+    await enterVR(p);
+    await xrRows(n);
+    await exitVR(p);
+  }
+  const rows = await envRows(p.page), vr = rows.filter((x) => x.platform === 'webxr');
+  console.log('# ' + vr.map((r) => r.refresh_hz + ' Hz ' + r.controller).join(', '));
+  assert(vr.length === 2 && rows.every((r) => r.session === sessionOf(p)), 'rows: ' + JSON.stringify(rows));
+  assert(vr.every((r) => /^\d+\.\d{3}$/.test(r.refresh_hz) && +r.refresh_hz > 0 && r.refresh_hz !== '90.000' &&
+    r.controller === 'webxr-touch' && r.width === String(W / 2)), 'webxr rows: ' + JSON.stringify(vr));
+  assert(p.log.some((l) => /^web: environment webxr \d+\.\d{3} Hz/.test(l)), 'no console line');
   assert(!p.errors.length, 'errors: ' + p.errors.join('; '));
   await p.ctx.close();
 });
@@ -847,6 +918,23 @@ await check('quitting from a controller (Y, then B) ends the session and the log
   await sleep(200);
   await xrPage.screenshot({ path: path.join(OUT, 'xr-over.png') });
   assert(!xr.errors.length, 'errors: ' + xr.errors.join('; '));
+});
+
+await check('environment.csv (issue 26): Enter VR on the Quest 3 writes a row, platform webxr: the emulated controller (webxr-touch), the refresh rate, the eye\'s size, the page\'s session', async () => {
+  const rows = (await envRows(xrPage)) || [];
+  const session = sessionOf(xr), vr = rows.filter((r) => r.platform === 'webxr');
+  console.log('# ' + JSON.stringify(vr));
+  assert(vr.length === 1 && rows.every((r) => r.session === session && /^webx?r?$/.test(r.platform)) &&
+    rows.length <= 2, `rows (one webxr, session ${session}): ` + JSON.stringify(rows));
+  const r = vr[0];
+  assert(r.controller === 'webxr-touch', 'controller: ' + r.controller);
+  assert(/^\d+\.\d{3}$/.test(r.refresh_hz) && +r.refresh_hz > 0, 'refresh_hz: ' + r.refresh_hz);
+  assert(r.width === String(W / 2) && r.height === String(H), `eye ${r.width}x${r.height}`);
+  // iwer gives the page the Quest 3's user agent (OculusBrowser/33.0.0.x.x.x)
+  // and XRSession.frameRate (its nominal 90 Hz)
+  assert(/Quest 3/.test(r.os) && r.runtime === 'OculusBrowser/33.0.0' && r.refresh_hz === '90.000' &&
+    /SwiftShader/.test(r.gl_renderer) && r.options === 'level=/test/xr.lvl',
+    'os, runtime, refresh_hz, gl_renderer, options: ' + JSON.stringify(r));
 });
 
 await check('the browser recording replays on the desktop to the same step rows and summary, byte for byte', async () => {
