@@ -1,0 +1,28 @@
+// minify.mjs - the web build's last step: node platform/web/minify.mjs IN OUT
+// writes IN's JavaScript minified by Debian's terser (package `terser`, a
+// library under /usr/share/nodejs: run with NODE_PATH=/usr/share/nodejs)
+// to OUT, through OUT.tmp renamed (no half-written file). Compress and
+// local names only: top-level names and properties stay (page.js calls
+// Module's by name). emscripten's glue (holonomy.js) loses about 2.3 KB of
+// the page's gzip'ed transfer (docs/web.md, "The transfer size").
+// Exit 1 with one line on stderr when it cannot.
+import { createRequire } from 'module';
+import fs from 'fs';
+
+const [inPath, outPath] = process.argv.slice(2);
+try {
+    if (!inPath || !outPath)
+        throw new Error('usage: node platform/web/minify.mjs IN OUT');
+    const require = createRequire(import.meta.url);
+    const { minify } = require('terser');
+    const src = fs.readFileSync(inPath, 'utf8');
+    const r = await minify(src, { compress: true, mangle: true });
+    if (!r.code)
+        throw new Error(`terser gave no code for ${inPath}`);
+    fs.writeFileSync(outPath + '.tmp', r.code);
+    fs.renameSync(outPath + '.tmp', outPath);
+} catch (e) {
+    try { fs.unlinkSync(outPath + '.tmp'); } catch (_) { /* none */ }
+    console.error(`minify: ${inPath}: ${String(e.message).split('\n')[0]} (make deps-web installs terser)`);
+    process.exit(1);
+}
