@@ -206,20 +206,13 @@ static int hol__near_segs(const hol_light_frame *lf, const double c[3], const do
     return 0;
 }
 
-/* Points a and b equal to eps in every coordinate (points near the
- * user: their coordinates are small, so this is a distance test). */
-static int hol__same(const double a[3], const double b[3], double eps)
-{
-    return fabs(a[0] - b[0]) < eps && fabs(a[1] - b[1]) < eps && fabs(a[2] - b[2]) < eps;
-}
-
 /* The trunks that may shadow a tile: the corners of the tiles whose centre
  * lies within 2 rho + r of a light's segment (breadth first over edge
  * reflections from the tile itself); returns how many. */
 static int hol__shadow_trunks(const hol_light_frame *lf, const double lp[][3],
                               const uint8_t *use, int nl, double (*vt)[3], int maxv)
 {
-    enum { NT = 96 };
+    enum { NT = 48 };
     double fr[NT][9], cen[NT][3];
     int n = 1, nv = 0;
     memset(fr[0], 0, sizeof fr[0]);
@@ -235,7 +228,7 @@ static int hol__shadow_trunks(const hol_light_frame *lf, const double lp[][3],
                        fr[h][3 * r + 2] * lf->corner[k][2];
             int dup = 0;
             for (int i = 0; i < nv && !dup; i++)
-                dup = hol__same(vt[i], v, eps);
+                dup = hol_hyper_dist(vt[i], v, lf->flat) < eps;
             if (!dup && nv < maxv)
                 memcpy(vt[nv++], v, sizeof v);
         }
@@ -246,7 +239,7 @@ static int hol__shadow_trunks(const hol_light_frame *lf, const double lp[][3],
                 c[r] = fr[n][3 * r + 2];
             int dup = 0;
             for (int i = 0; i < n && !dup; i++)
-                dup = hol__same(cen[i], c, eps);
+                dup = hol_hyper_dist(cen[i], c, lf->flat) < eps;
             if (!dup && hol__near_segs(lf, c, lp, use, nl, wide))
                 n++;
         }
@@ -284,86 +277,45 @@ static int hol__may_shadow(const hol_light_frame *lf, const double t[3], const d
     return 0;
 }
 
-/* Does the whole tile lie more than 2 (r + e) on light l's side of the
- * geodesic through trunk t perpendicular to tl? Then t shadows no point of
- * it from l (a shadowed point lies within r + e of that side's far edge;
- * the margin is doubled for the curvature). The side is a half-plane,
- * straight in Klein, so the four corners decide. */
-static int hol__behind_tile(const hol_light_frame *lf, const double t[3], const double l[3],
-                            double ct)
-{
-    double n[3], m = 2 * (lf->trunk_r + (lf->s1 - lf->s0)), lim;
-    if (lf->flat) {
-        double len = hypot(l[0] - t[0], l[1] - t[1]);
-        if (len < 1e-9)
-            return 0;
-        for (int k = 0; k < 4; k++)
-            if (((lf->corner[k][0] - t[0]) * (l[0] - t[0]) +
-                 (lf->corner[k][1] - t[1]) * (l[1] - t[1])) / len < m)
-                return 0;
-        return 1;
-    }
-    /* the unit tangent at t towards l: (l - cosh(d) t) / sinh d; the
-     * signed distance s of a corner c: sinh s = <c, n> (Lorentz) */
-    double sh = sqrt(ct * ct - 1);
-    if (sh < 1e-9)
-        return 0;
-    for (int i = 0; i < 3; i++)
-        n[i] = (l[i] - ct * t[i]) / sh;
-    lim = sinh(m);
-    for (int k = 0; k < 4; k++) {
-        const double *c = lf->corner[k];
-        if (c[0] * n[0] + c[1] * n[1] - c[2] * n[2] < lim)
-            return 0;
-    }
-    return 1;
-}
-
 void hol_light_shadows(const hol_light_frame *lf, const double lp[][3], const uint8_t *use,
                        int nl, hol_shadow_set *out)
 {
-    enum { NV = 192 };
+    enum { NV = 96 };
     double vt[NV][3], key[HOL_SHADOW_TRUNKS];
     static const double o[3] = {0, 0, 1};
     out->n = 0;
-    double A = lf->klein * lf->cell_m / 2;
-    uint8_t cast[HOL_LIGHT_PER_TILE] = {0};
-    int any = 0;
-    for (int j = 0; j < nl && j < HOL_LIGHT_PER_TILE; j++) {
-        const double *l = lp[j];
-        /* a light on the tile: its trunks shadow only other tiles */
-        cast[j] = use[j] && !(fabs(l[0] / l[2]) <= A && fabs(l[1] / l[2]) <= A);
-        any |= cast[j];
-    }
-    if (!any)
+    out->slot = 0;
+    int j = 0;
+    while (j < nl && !use[j])
+        j++;
+    if (j == nl)
         return;
-    int nv = hol__shadow_trunks(lf, lp, cast, nl, vt, NV);
-    for (int j = 0; j < nl && j < HOL_LIGHT_PER_TILE; j++) {
-        if (!cast[j])
+    out->slot = j;
+    const double *l = lp[j];
+    double A = lf->klein * lf->cell_m / 2;
+    if (fabs(l[0] / l[2]) <= A && fabs(l[1] / l[2]) <= A)
+        return; /* a light on the tile: its trunks shadow only other tiles */
+    uint8_t one[HOL_LIGHT_PER_TILE] = {0};
+    one[j] = 1;
+    int nv = hol__shadow_trunks(lf, lp, one, nl, vt, NV);
+    for (int i = 0; i < nv; i++) {
+        double d = hol_hyper_dist(l, vt[i], lf->flat);
+        if (d >= lf->reach + lf->trunk_r ||
+            hol_light_seg_dist(vt[i], l, o, lf->flat) >= lf->rho + lf->trunk_r ||
+            !hol__may_shadow(lf, vt[i], l))
             continue;
-        const double *l = lp[j];
-        for (int i = 0; i < nv; i++) {
-            double d = hol_hyper_dist(l, vt[i], lf->flat);
-            double ct = lf->flat ? 0 : l[2] * vt[i][2] - l[0] * vt[i][0] - l[1] * vt[i][1];
-            if (d >= lf->reach + lf->trunk_r || hol__behind_tile(lf, vt[i], l, ct) ||
-                hol_light_seg_dist(vt[i], l, o, lf->flat) >= lf->rho + lf->trunk_r ||
-                !hol__may_shadow(lf, vt[i], l))
-                continue;
-            /* insert by distance to its light (ties: the one found first) */
-            int k = out->n < HOL_SHADOW_TRUNKS ? out->n++ : HOL_SHADOW_TRUNKS;
-            while (k > 0 && key[k - 1] > d) {
-                if (k < HOL_SHADOW_TRUNKS) {
-                    key[k] = key[k - 1];
-                    out->slot[k] = out->slot[k - 1];
-                    memcpy(out->trunk[k], out->trunk[k - 1], sizeof out->trunk[0]);
-                }
-                k--;
-            }
+        /* insert by distance to the light (ties: the one found first) */
+        int k = out->n < HOL_SHADOW_TRUNKS ? out->n++ : HOL_SHADOW_TRUNKS;
+        while (k > 0 && key[k - 1] > d) {
             if (k < HOL_SHADOW_TRUNKS) {
-                key[k] = d;
-                out->slot[k] = j;
-                memcpy(out->trunk[k], vt[i], sizeof vt[0]);
+                key[k] = key[k - 1];
+                memcpy(out->trunk[k], out->trunk[k - 1], sizeof out->trunk[0]);
             }
+            k--;
+        }
+        if (k < HOL_SHADOW_TRUNKS) {
+            key[k] = d;
+            memcpy(out->trunk[k], vt[i], sizeof vt[0]);
         }
     }
 }

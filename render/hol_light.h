@@ -119,7 +119,7 @@
 #define HOL_LIGHT_SPOT_TILT_DEG 45.0
 #define HOL_LIGHT_SPOT_OUTER_DEG 35.0
 #define HOL_LIGHT_SPOT_INNER_DEG 25.0
-#define HOL_SHADOW_TRUNKS 8
+#define HOL_SHADOW_TRUNKS 4
 #define HOL_SHADOW_TRUNK_M 0.09
 #define HOL_SHADOW_EDGE_M 0.02
 
@@ -168,7 +168,7 @@ typedef struct hol_light_frame {
 /* A tile's trunk shadows (hol_light_shadows), in the tile's own frame. */
 typedef struct hol_shadow_set {
     int n;                                /* trunks, 0..HOL_SHADOW_TRUNKS */
-    int slot[HOL_SHADOW_TRUNKS];          /* the light casting each: its
+    int slot;                             /* the light casting them: its
                                              index in lp */
     double trunk[HOL_SHADOW_TRUNKS][3];   /* the trunks' points */
 } hol_shadow_set;

@@ -71,7 +71,7 @@ typedef struct hol__item {
     float tl[4][4]; /* u_tl: its lights and the eye in the tile's own frame */
     float tx[7][4]; /* u_tx: the spots' tangents (3) and sines, heights,
                        lantern and firefly weights (hol__item_lights) */
-    float ts[22][4]; /* u_ts: its trunk shadow pairs (hol__item_shadows) */
+    float ts[8][4]; /* u_ts: its trunk shadow pairs (hol__item_shadows) */
     uint32_t first, count; /* index range */
     float model[16];
 } hol__item;
@@ -147,9 +147,9 @@ static const char *hol__vs =
     "out vec4 v_L;\n"
     "out float v_Le;\n"
     /* the tile's trunk shadows (hol__item_shadows): A and T, affine */
-    "uniform vec4 u_ts[22];\n"
-    "out vec4 v_A, v_A1;\n"
-    "out vec4 v_T, v_T1;\n"
+    "uniform vec4 u_ts[8];\n"
+    "out vec4 v_A;\n"
+    "out vec4 v_T;\n"
     "#if HOL_FX == 2\n"
     "uniform vec4 u_tx[7];\n"
     "out vec4 v_U;\n" /* <u, (k, 1)>: a spot's direction, affine too */
@@ -165,8 +165,6 @@ static const char *hol__vs =
     "  v_Le = u_tl[3].z - v_loc.x * u_tl[3].x - v_loc.z * u_tl[3].y;\n"
     "  v_A = v_loc.x * u_ts[0] + v_loc.z * u_ts[1] + u_ts[2];\n"
     "  v_T = u_ts[5] - v_loc.x * u_ts[3] - v_loc.z * u_ts[4];\n"
-    "  v_A1 = v_loc.x * u_ts[11] + v_loc.z * u_ts[12] + u_ts[13];\n"
-    "  v_T1 = u_ts[16] - v_loc.x * u_ts[14] - v_loc.z * u_ts[15];\n"
     "#if HOL_FX == 2\n"
     "  v_U = v_loc.x * u_tx[0] + v_loc.z * u_tx[1] - u_tx[2];\n"
     "#endif\n"
@@ -204,38 +202,32 @@ static const char *hol__vs =
     "#endif\n" \
     "  vec4 w = max(1.0 - d2 * (1.0 / (" HOL__STR(HOL_LIGHT_RADIUS_M) " * " HOL__STR(HOL_LIGHT_RADIUS_M) ")), 0.0);\n"
 
-/* The trunk shadows of a tile (hol_light.h): up to four trunks t, each
- * with the light l that casts it, one of the tile's four (the columns of
- * the one-hot matrix u_ts[7..10], trunk by trunk: v * sm picks each trunk's
- * light's value of a per-light v, sm * occ sums the trunks' occlusions per
- * light). Per trunk, A = det(t, (k, 1), l) / (the soft edge's width) and
- * T = -<(k, 1), t> from the vertex shader, so sinh d = g |A| / sinh x
- * (flat: d = |A| / |k - l|); the trunk lies between the point and the
- * light when cosh PL cosh PT > cosh LT (flat: PL^2 + PT^2 > LT^2; the
- * light's side holds for every trunk hol_light_shadows picks); each light
- * is multiplied by 1 - the sum of its trunks' occlusions (0 at least).
- * sh: sinh x of each light (flat: unused). */
+/* The trunk shadows of a tile (hol_light.h): up to four trunks t from
+ * one of its lights, l (the one-hot u_ts[7] selects it). Per trunk, A =
+ * det(t, (k, 1), l) / (the soft edge's width) and T = -<(k, 1), t> from the
+ * vertex shader, so sinh d = g |A| / sinh x (flat: d = |A| / |k - l|); the
+ * trunk lies between the point and the light when cosh PL cosh PT > cosh
+ * LT (flat: PL^2 + PT^2 > LT^2; the light's side holds for every trunk
+ * hol_light_shadows picks); the light is multiplied by 1 - the sum of the
+ * occlusions (0 at least). sh: sinh x of each light (flat: unused). */
 #define HOL__SHADOW_GLSL \
     "#if HOL_FLAT\n" \
     "#define HOL_SH c2\n" \
     "#else\n" \
     "#define HOL_SH sh\n" \
     "#endif\n" \
-    "vec4 hol_occ(mat4 sm, vec4 A, vec4 T, vec4 lt, float g, float o, vec4 L, vec4 c2, vec4 sh) {\n" \
-    "#if HOL_FLAT\n" \
-    "  vec4 cp = c2 * sm;\n" \
-    "  vec4 ok = step(lt, cp + 2.0 * T + o);\n" \
-    "  vec4 e = clamp(abs(A) * inversesqrt(max(cp, 1e-12)) - u_soff, 0.0, 1.0);\n" \
-    "#else\n" \
-    "  vec4 ok = step(lt, (g * g) * (L * sm) * T);\n" \
-    "  vec4 e = clamp(abs(A) * (g / max(sh * sm, 1e-6)) - u_soff, 0.0, 1.0);\n" \
-    "#endif\n" \
-    "  return sm * (ok * (1.0 - e * e * (3.0 - 2.0 * e)));\n" \
-    "}\n" \
     "vec4 hol_shadow(float g, float o, vec4 L, vec4 c2, vec4 sh) {\n" \
-    "  vec4 occ = hol_occ(mat4(u_ts[7], u_ts[8], u_ts[9], u_ts[10]), v_A, v_T, u_ts[6], g, o, L, c2, sh)\n" \
-    "    + hol_occ(mat4(u_ts[18], u_ts[19], u_ts[20], u_ts[21]), v_A1, v_T1, u_ts[17], g, o, L, c2, sh);\n" \
-    "  return 1.0 - min(occ, 1.0);\n" \
+    "  vec4 sel = u_ts[7];\n" \
+    "#if HOL_FLAT\n" \
+    "  float cp = dot(c2, sel), shp = sqrt(cp);\n" \
+    "  vec4 ok = step(u_ts[6], cp + 2.0 * v_T + o);\n" \
+    "#else\n" \
+    "  float cp = g * dot(L, sel), shp = dot(sh, sel);\n" \
+    "  vec4 ok = step(u_ts[6], (cp * g) * v_T);\n" \
+    "#endif\n" \
+    "  vec4 e = clamp(abs(v_A) * (g / max(shp, 1e-6)) - u_soff, 0.0, 1.0);\n" \
+    "  float occ = dot(ok, 1.0 - e * e * (3.0 - 2.0 * e));\n" \
+    "  return 1.0 - sel * min(occ, 1.0);\n" \
     "}\n"
 
 static const char *hol__fs =
@@ -262,9 +254,9 @@ static const char *hol__fs =
     "#if HOL_LIT == 1\n"
     "in vec4 v_L;\n"
     "in float v_Le;\n"
-    "in vec4 v_A, v_A1;\n"
-    "in vec4 v_T, v_T1;\n"
-    "uniform vec4 u_ts[22];\n"
+    "in vec4 v_A;\n"
+    "in vec4 v_T;\n"
+    "uniform vec4 u_ts[8];\n"
     "uniform float u_soff;\n"
     "#if HOL_FX\n"
     "uniform vec4 u_tx[7];\n"
@@ -862,8 +854,8 @@ static void hol__tile_tangent(const double inv[9], const double u[3], const doub
 /* A lit tile's trunk shadows (hol_light.h; the shader's hol_shadow), u_ts:
  * [0..2] w = l x t (Euclidean; flat points (x, y, 1)) over the soft edge's
  * width, so that A = (k, 1) . w; [3..5] the trunk as a light slot (T = t.z
- * - k . t.xy); [6] cosh LT (flat: LT^2; 1e30 for no trunk); [7 + m] trunk
- * m's light's slot, one-hot (0 for no trunk). */
+ * - k . t.xy); [6] cosh LT (flat: LT^2; 1e30 for no trunk); [7] the light's
+ * slot, one-hot. */
 static void hol__item_shadows(const hol_light_frame *lf, hol__item *it, const double inv[9],
                               const int idx[], int n)
 {
@@ -879,25 +871,24 @@ static void hol__item_shadows(const hol_light_frame *lf, hol__item *it, const do
     hol_light_shadows(lf, (const double(*)[3])lp, use, n, &ss);
     memset(it->ts, 0, sizeof it->ts);
     double sc = 1 / (lf->s1 - lf->s0);
-    for (int mm = 0; mm < HOL_SHADOW_TRUNKS; mm++) {
-        float(*ts4)[4] = it->ts + 11 * (mm / 4); /* four trunks a group */
-        int m = mm % 4;
-        ts4[6][m] = 1e30f;
-        if (mm >= ss.n)
+    for (int m = 0; m < HOL_SHADOW_TRUNKS; m++) {
+        it->ts[6][m] = 1e30f;
+        if (m >= ss.n)
             continue;
-        const double *t = ss.trunk[mm], *l = lp[ss.slot[mm]];
+        const double *t = ss.trunk[m], *l = lp[ss.slot];
         double w[3] = {l[1] * t[2] - l[2] * t[1], l[2] * t[0] - l[0] * t[2],
                        l[0] * t[1] - l[1] * t[0]};
         float ts[3];
         hol__tile_slot((const double[9]){1, 0, 0, 0, 1, 0, 0, 0, 1}, t, lf->flat, ts);
         for (int i = 0; i < 3; i++) {
-            ts4[i][m] = (float)(w[i] * sc);
-            ts4[3 + i][m] = ts[i];
+            it->ts[i][m] = (float)(w[i] * sc);
+            it->ts[3 + i][m] = ts[i];
         }
         double d = hol_hyper_dist(l, t, lf->flat);
-        ts4[6][m] = (float)(lf->flat ? d * d : cosh(d));
-        ts4[7 + m][ss.slot[mm]] = 1;
+        it->ts[6][m] = (float)(lf->flat ? d * d : cosh(d));
     }
+    if (ss.n > 0)
+        it->ts[7][ss.slot] = 1;
 }
 
 /* A lit tile's lights and the eye in the tile's own frame (u_tl: the
@@ -1447,7 +1438,7 @@ static void hol__item_uniforms(hol_render *r, const hol__item *it)
         return;
     r->gl.Uniform4fv(r->pg->u_tl, 4, &it->tl[0][0]);
     r->gl.Uniform4fv(r->pg->u_tx, 7, &it->tx[0][0]);
-    r->gl.Uniform4fv(r->pg->u_ts, 22, &it->ts[0][0]);
+    r->gl.Uniform4fv(r->pg->u_ts, 8, &it->ts[0][0]);
 }
 
 /* Execute the sorted queue, skipping redundant state changes. */

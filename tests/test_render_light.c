@@ -476,12 +476,26 @@ static int model_pixel_sf(const light_case *c, const scene *s, int x, int y, dou
     double p[2], h[3];
     if (!floor_point(c, x + 0.5, y + 0.5, p) || !model_point(c, p, h))
         return 0;
-    /* trunk shadows are cast by every lantern (but on the tile it stands
-     * on: its corners shadow only other tiles) */
+    /* trunk shadows are cast by the lantern nearest the tile's centre
+     * (none when it stands on the tile; a tie is not checked) */
+    int near = -1, next = -1;
+    double dn = 1e9, d2 = 1e9;
+    for (int i = 0; i < s->n; i++) {
+        double d = floor_m(c->cell, model_centre, s->lant[i]);
+        if (d < dn)
+            d2 = dn, next = near, dn = d, near = i;
+        else if (d < d2)
+            d2 = d, next = i;
+    }
+    if (d2 - dn < 1e-6 && next >= 0) { /* a tie: checked where neither shadows */
+        if (shadow_model(c, s, near, h) != 1 || shadow_model(c, s, next, h) != 1)
+            return 0;
+        near = -1;
+    }
     double lam = 0, lam0 = 0;
     for (int i = 0; i < s->n; i++) {
         double fm = floor_m(c->cell, h, s->lant[i]);
-        double sh = floor_m(c->cell, model_centre, s->lant[i]) > 1e-6 ? shadow_model(c, s, i, h) : 1;
+        double sh = i == near && dn > 1e-6 ? shadow_model(c, s, i, h) : 1;
         if (sh < 0)
             return 0;
         double l = lantern_term(fm, fm * model_edge() / c->cell) * cone_model(c, s, i, h);
@@ -641,17 +655,22 @@ static void test_flat_equals_euclid(void **state)
                 double p[2], h[3];
                 if (!floor_point(c, x + 0.5, y + 0.5, p) || !model_point(c, p, h))
                     continue;
-                /* shadows from every lantern not on the pixel's cell */
+                /* shadows from the lantern nearest the cell's centre */
                 double cc[2] = {(floor(p[0] / c->cell) + 0.5) * c->cell,
                                 (floor(p[1] / c->cell) + 0.5) * c->cell};
-                double lam = 0, lam0 = 0, shf[4];
-                int under = 0;
+                int near = -1;
+                double dn = 1e9, d2n = 1e9;
                 for (int i = 0; i < s.n; i++) {
                     double d = hypot(cc[0] - s.lroom[i][0], cc[1] - s.lroom[i][1]);
-                    shf[i] = d > 1e-6 ? flat_shadow(c->cell, p, s.lroom[i]) : 1;
-                    under |= shf[i] < 0;
+                    if (d < dn)
+                        d2n = dn, dn = d, near = i;
+                    else if (d < d2n)
+                        d2n = d;
                 }
-                if (under)
+                if (d2n - dn < 1e-6)
+                    continue;
+                double lam = 0, lam0 = 0, shf = 1;
+                if (dn > 1e-6 && (shf = flat_shadow(c->cell, p, s.lroom[near])) < 0)
                     continue;
                 for (int i = 0; i < s.n; i++) {
                     double dx = p[0] - s.lroom[i][0], dz = p[1] - s.lroom[i][1];
@@ -666,7 +685,7 @@ static void test_flat_equals_euclid(void **state)
                         cone = smooth(cos(SPOT_OUTER * PI / 180), cos(SPOT_INNER * PI / 180),
                                       ca);
                     }
-                    lam += lantern_term(fm, 0) * cone * shf[i];
+                    lam += lantern_term(fm, 0) * cone * (i == near ? shf : 1);
                     lam0 += lantern_term(fm, 0) * cone;
                 }
                 double de = hypot(hypot(p[0] - c->eye[0], p[1] - c->eye[2]), c->eye[1]);
