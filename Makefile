@@ -21,7 +21,7 @@
 #                   a self-signed certificate; docs/web.md)
 #   make web-test   deps-web, the web build, then headless chromium on an
 #                   emulated Quest 3
-#   make deps-web   Debian's emscripten, chromium, brotli and openssl; npm's
+#   make deps-web   Debian's emscripten, chromium, terser, brotli and openssl; npm's
 #                   puppeteer-core and iwer
 #   make quest-link-check  the APK's sources compiled and linked for this machine
 #   make clean      remove build outputs
