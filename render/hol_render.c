@@ -492,14 +492,18 @@ static void hol__static_grow(hol_render *r, int cap)
         r->gl.CopyBufferSubData(GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER, 0, 0,
                                 (GLsizeiptr)(HOL__SLOT_VBASE(r->slot_cap) * sizeof(hol_vertex)));
     }
-    r->gl.BindBuffer(GL_COPY_WRITE_BUFFER, ibo);
-    r->gl.BufferData(GL_COPY_WRITE_BUFFER, (GLsizeiptr)(HOL__SLOT_IBASE(cap) * sizeof(uint32_t)),
+    /* the index buffer bound first as one (vertex array 0 is bound): WebGL
+     * 2 fixes a buffer's type at its first binding, and one first bound to
+     * a copy target can never be an element array */
+    r->gl.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, ibo);
+    r->gl.BufferData(GL_ELEMENT_ARRAY_BUFFER, (GLsizeiptr)(HOL__SLOT_IBASE(cap) * sizeof(uint32_t)),
                      NULL, GL_DYNAMIC_DRAW);
     if (r->ibo[0]) {
         r->gl.BindBuffer(GL_COPY_READ_BUFFER, r->ibo[0]);
-        r->gl.CopyBufferSubData(GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER, 0, 0,
+        r->gl.CopyBufferSubData(GL_COPY_READ_BUFFER, GL_ELEMENT_ARRAY_BUFFER, 0, 0,
                                 (GLsizeiptr)(HOL__SLOT_IBASE(r->slot_cap) * sizeof(uint32_t)));
     }
+    r->gl.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
     r->gl.BindBuffer(GL_COPY_READ_BUFFER, 0);
     r->gl.BindBuffer(GL_COPY_WRITE_BUFFER, 0);
     if (r->vbo[0])
