@@ -386,9 +386,11 @@ SAN_UNIT_ENV ?= HOL_TEST_QUICK=1
 # the tool thousands of times). The checks are the same.
 SAN_FLAGS := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
 SAN_LDFLAGS := -fsanitize=address,undefined -static-libasan -static-libubsan -no-pie
+# (recipes run it with +: make sees no $(MAKE) through a variable, and its
+# jobserver would not reach the sub-make, which then ran at -j1)
 SAN_MAKE = $(MAKE) BUILD=$(BUILD)/san OPT=-O1 CFLAGS="$(SAN_FLAGS)" LDFLAGS="$(SAN_LDFLAGS)"
 san:
-	$(SAN_MAKE) UNIT_ENV="$(SAN_UNIT_ENV)" unit
+	+$(SAN_MAKE) UNIT_ENV="$(SAN_UNIT_ENV)" unit
 
 # The command-line tests against the tool itself built with ASan + UBSan
 # (Mesa's own leaks are not ours: leak detection is off for the GL paths).
@@ -396,11 +398,11 @@ san:
 CLI_ENV ?=
 SAN_CLI_ENV := ASAN_OPTIONS=detect_leaks=0:abort_on_error=0 UBSAN_OPTIONS=print_stacktrace=1
 san-cli:
-	$(SAN_MAKE) CLI_ENV="$(SAN_CLI_ENV)" cli-test
+	+$(SAN_MAKE) CLI_ENV="$(SAN_CLI_ENV)" cli-test
 # make san and make san-cli as one make (CI): the unit tests fill the two
 # slots of make -j2 while the long CLI suites run, with no idle end between.
 san-all:
-	$(SAN_MAKE) CLI_ENV="$(SAN_CLI_ENV)" UNIT_ENV="$(SAN_UNIT_ENV)" cli-test unit
+	+$(SAN_MAKE) CLI_ENV="$(SAN_CLI_ENV)" UNIT_ENV="$(SAN_UNIT_ENV)" cli-test unit
 
 # A warnings check: it builds and links everything, at -O0 (clang's
 # warnings do not depend on the optimiser; about half the CPU of -O2).
