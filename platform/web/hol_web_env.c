@@ -70,7 +70,8 @@ static void env_write(int xr, double hz, int w, int h, uint32_t device)
     int n = hz > 0 ? snprintf(num, sizeof num, "%.3f", hz) : 0;
     if (w > 0 && h > 0) /* "HZ\0W\0H" */
         snprintf(num + n + 1, sizeof num - (size_t)n - 1, "%d%c%d", w, 0, h);
-    const char *wd = num + n + 1, *f[] = {m->session, m->participant, "", "", xr ? "webxr" : "web",
+    const char *wd = num + n + 1, *f[] = {m->session, m->participant, "", m->study_sha256,
+                                          xr ? "webxr" : "web",
                                           str[0], str[1], env.gl, ctl, num, wd,
                                           wd + strlen(wd) + 1, "", str[3]};
     size_t at = 0;

@@ -14,6 +14,7 @@
 
 #include "../../core/hol_campaign.h"
 #include "../../core/hol_session.h"
+#include "../../core/hol_sha256.h"
 #include "../../core/hol_study.h"
 #include "hol_web.h"
 #include "hol_web_sink.h"
@@ -25,6 +26,8 @@ static hol_session *sess;
 static hol_rec_meta meta; /* the session's (environment.csv) */
 static hol_level levels[HOL_SESSION_MAX_LEVELS];
 static char study_name[64]; /* a study's, or "" */
+static const char *study_text;             /* its text as the page fetched it */
+static char study_hex[HOL_SHA256_HEX];     /* its SHA-256, or "" */
 static int finished;
 
 /* decimal or 0x hex, nothing else (as the desktop's --seed) */
@@ -177,7 +180,13 @@ static int page_levels(int *n, char *msg, size_t cap)
     if (study[0]) {
         char part[HOL_REC_ID_MAX + 8] = "";
         hol_web_js_config("participant", part, sizeof part);
-        return study_levels(study, part, n, study_name, msg, cap);
+        if (study_levels(study, part, n, study_name, msg, cap))
+            return 1;
+        uint8_t dig[32];
+        hol_sha256(study, strlen(study), dig);
+        hol_sha256_hex(dig, study_hex);
+        study_text = study;
+        return 0;
     }
     uint64_t seed = 1;
     if (seed_s[0] && parse_seed(seed_s, &seed)) {
@@ -238,6 +247,32 @@ static int page_track_hz(char *msg, size_t cap)
     return hz;
 }
 
+/* The study's text kept in the store as study-HASH.txt, as `play --study`
+ * keeps it beside its logs: written as .live, flushed and renamed (the
+ * same text under the same name where one is there). A failure is said
+ * and the session plays on, as with the logs. */
+static void study_keep(void)
+{
+    const hol_sink *k = hol_web_sink();
+    char name[HOL_SHA256_HEX + 16], live[HOL_SHA256_HEX + 24];
+    snprintf(name, sizeof name, "study-%s.txt", study_hex);
+    snprintf(live, sizeof live, "%s.live", name);
+    int h = -1;
+    hol_err e = k->open(k->user, live, 0, &h);
+    if (!e) {
+        e = k->write(k->user, h, study_text, strlen(study_text));
+        if (!e)
+            e = k->flush(k->user, h, 1);
+        hol_err c = k->close(k->user, h);
+        if (!e)
+            e = c ? c : k->rename(k->user, live, name);
+    }
+    if (e) {
+        printf("web: cannot keep %s: %s\n", name, k->why(k->user));
+        hol_web_js_event("warning", "the study's text could not be kept with the logs");
+    }
+}
+
 int hol_web_game_open(char *msg, size_t cap)
 {
     int n = 0;
@@ -263,6 +298,7 @@ int hol_web_game_open(char *msg, size_t cap)
     d.track_hz = track_hz;
     hol_web_sink_meta(&d.meta, part[0] ? part : NULL);
     snprintf(d.meta.study, sizeof d.meta.study, "%s", study_name);
+    snprintf(d.meta.study_sha256, sizeof d.meta.study_sha256, "%s", study_hex);
     char rec_name[HOL_REC_ID_MAX + 16];
     snprintf(rec_name, sizeof rec_name, "session-%s.rec", d.meta.session);
     d.rec_name = rec_name;
@@ -270,6 +306,8 @@ int hol_web_game_open(char *msg, size_t cap)
     if (e)
         return 1;
     meta = d.meta;
+    if (study_hex[0])
+        study_keep();
     printf("web: session %s, %d level(s), recording %s\n", d.meta.session, n, rec_name);
     if (hol_session_recovered(sess))
         printf("web: %d unfinished attempt(s) of an earlier visit finished (end 'killed')\n",

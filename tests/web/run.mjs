@@ -13,6 +13,7 @@ import os from 'node:os';
 import path from 'node:path';
 import zlib from 'node:zlib';
 import { spawnSync } from 'node:child_process';
+import crypto from 'node:crypto';
 import { S, enterVR, launch, openPage as openPage_, serve, sleep, stored } from './lib.mjs';
 import { decodePNG, encodePNG } from './png.mjs';
 
@@ -373,6 +374,13 @@ await check('a study (study=URL, participant=P02) plays the participant\'s order
   const names = await p.page.evaluate(() => window.holonomyStore.names());
   assert(names.filter((n) => /^level-[0-9a-f]{64}\.txt$/.test(n)).length === 3,
     'the levels\' texts: ' + names.join(' '));
+  // the study's SHA-256 in the row's study_sha256 (session_no and meta
+  // empty), and its text kept as study-HASH.txt, as play --study keeps it
+  const text = fs.readFileSync(path.join(testDir, 'st', 's.study'));
+  const sha = crypto.createHash('sha256').update(text).digest('hex');
+  assert(live.split('\n')[0].endsWith(`,,${sha},`), 'attempt 1\'s study_sha256: ' + live);
+  const kept = await stored(p.page, `study-${sha}.txt`);
+  assert(kept && kept.equals(text), 'study-HASH.txt: ' + names.join(' '));
   assert(!p.errors.length, 'errors: ' + p.errors.join('; '));
   await p.ctx.close();
 });
