@@ -445,8 +445,11 @@ static int hol__make_prog(hol_render *r, hol__prog *pg, int k)
     r->gl.DeleteShader(fs);
     GLint ok = 0;
     r->gl.GetProgramiv(pg->prog, GL_LINK_STATUS, &ok);
-    if (!ok)
+    if (!ok) { /* none left half-made: a later frame or prepare tries again */
+        r->gl.DeleteProgram(pg->prog);
+        pg->prog = 0;
         return 1;
+    }
     static const char *const names[] = {"u_vp", "u_model", "u_mode", "u_id", "u_eye",
                                         "u_fog", "u_fogd", "u_lin", "u_wedge", "u_wmode",
                                         "u_light", "u_klein", "u_mpu2", "u_tl", "u_eyeh",
@@ -475,43 +478,39 @@ static void hol__vao_attribs(hol_render *r, int k)
                               (const void *)offsetof(hol_vertex, rgba));
 }
 
+/* A new buffer of new_bytes for target (bound first to it: WebGL 2 fixes a
+ * buffer's type at its first binding, and one first bound to a copy
+ * target can never be an element array), old's first old_bytes copied in
+ * (old 0: none), old deleted. Leaves target unbound. */
+static GLuint hol__buffer_grown(hol_render *r, GLenum target, GLuint old, size_t old_bytes,
+                                size_t new_bytes)
+{
+    GLuint b = 0;
+    r->gl.GenBuffers(1, &b);
+    r->gl.BindBuffer(target, b);
+    r->gl.BufferData(target, (GLsizeiptr)new_bytes, NULL, GL_DYNAMIC_DRAW);
+    if (old) {
+        r->gl.BindBuffer(GL_COPY_READ_BUFFER, old);
+        r->gl.CopyBufferSubData(GL_COPY_READ_BUFFER, target, 0, 0, (GLsizeiptr)old_bytes);
+        r->gl.BindBuffer(GL_COPY_READ_BUFFER, 0);
+        r->gl.DeleteBuffers(1, &old);
+    }
+    r->gl.BindBuffer(target, 0);
+    return b;
+}
+
 /* The static buffers (the room, the minimap, then the tile slots) made
  * for cap slots: new ones, what the old ones held copied in, vao[0]
  * pointed at them. Leaves no vertex array bound. */
 static void hol__static_grow(hol_render *r, int cap)
 {
-    GLuint vbo = 0, ibo = 0;
-    r->gl.GenBuffers(1, &vbo);
-    r->gl.GenBuffers(1, &ibo);
-    r->gl.BindVertexArray(0);
-    r->gl.BindBuffer(GL_COPY_WRITE_BUFFER, vbo);
-    r->gl.BufferData(GL_COPY_WRITE_BUFFER, (GLsizeiptr)(HOL__SLOT_VBASE(cap) * sizeof(hol_vertex)),
-                     NULL, GL_DYNAMIC_DRAW);
-    if (r->vbo[0]) {
-        r->gl.BindBuffer(GL_COPY_READ_BUFFER, r->vbo[0]);
-        r->gl.CopyBufferSubData(GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER, 0, 0,
-                                (GLsizeiptr)(HOL__SLOT_VBASE(r->slot_cap) * sizeof(hol_vertex)));
-    }
-    /* the index buffer bound first as one (vertex array 0 is bound): WebGL
-     * 2 fixes a buffer's type at its first binding, and one first bound to
-     * a copy target can never be an element array */
-    r->gl.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, ibo);
-    r->gl.BufferData(GL_ELEMENT_ARRAY_BUFFER, (GLsizeiptr)(HOL__SLOT_IBASE(cap) * sizeof(uint32_t)),
-                     NULL, GL_DYNAMIC_DRAW);
-    if (r->ibo[0]) {
-        r->gl.BindBuffer(GL_COPY_READ_BUFFER, r->ibo[0]);
-        r->gl.CopyBufferSubData(GL_COPY_READ_BUFFER, GL_ELEMENT_ARRAY_BUFFER, 0, 0,
-                                (GLsizeiptr)(HOL__SLOT_IBASE(r->slot_cap) * sizeof(uint32_t)));
-    }
-    r->gl.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
-    r->gl.BindBuffer(GL_COPY_READ_BUFFER, 0);
-    r->gl.BindBuffer(GL_COPY_WRITE_BUFFER, 0);
-    if (r->vbo[0])
-        r->gl.DeleteBuffers(1, &r->vbo[0]);
-    if (r->ibo[0])
-        r->gl.DeleteBuffers(1, &r->ibo[0]);
-    r->vbo[0] = vbo;
-    r->ibo[0] = ibo;
+    r->gl.BindVertexArray(0); /* the element binding below is vertex array 0's */
+    r->vbo[0] = hol__buffer_grown(r, GL_ARRAY_BUFFER, r->vbo[0],
+                                  HOL__SLOT_VBASE(r->slot_cap) * sizeof(hol_vertex),
+                                  HOL__SLOT_VBASE(cap) * sizeof(hol_vertex));
+    r->ibo[0] = hol__buffer_grown(r, GL_ELEMENT_ARRAY_BUFFER, r->ibo[0],
+                                  HOL__SLOT_IBASE(r->slot_cap) * sizeof(uint32_t),
+                                  HOL__SLOT_IBASE(cap) * sizeof(uint32_t));
     r->slot_cap = cap;
     r->gl.BindVertexArray(r->vao[0]);
     r->gl.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, r->ibo[0]);
@@ -1370,12 +1369,8 @@ static hol_err hol__use_progs(hol_render *r, const hol_frame_desc *f, int first,
 {
     for (int k = first; k >= last; k--) {
         hol__prog *pg = hol__prog_of(r, f, k);
-        if (!pg->prog && hol__make_prog(r, pg, (int)(pg - r->progs))) {
-            if (pg->prog)
-                r->gl.DeleteProgram(pg->prog);
-            pg->prog = 0;
+        if (!pg->prog && hol__make_prog(r, pg, (int)(pg - r->progs)))
             return HOL_EUNSUPPORTED;
-        }
     }
     return HOL_OK;
 }

@@ -93,7 +93,9 @@ typedef struct hol_render_desc {
                                   at create and by hol_render_check (after a
                                   resize). Tools and tests set it. */
     int all_programs;          /* 1: compile every shader program at create
-                                  (a headset: no compile in a frame). 0:
+                                  and size the tile meshes' buffers for all
+                                  their slots (a headset: no compile and no
+                                  buffer growth in a frame). 0:
                                   the day program at create, each other
                                   the first time a frame uses it (that
                                   frame's CPU time includes it; one that
