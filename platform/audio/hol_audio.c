@@ -404,7 +404,9 @@ int hol_audio_feed_open(hol_audio_feed *f, double volume, char *msg, size_t cap)
 void hol_audio_feed_step(hol_audio_feed *f, hol_app *app)
 {
     if (!f->au || !app)
-        return; /* held: the list is made (the listener's memory stays true), not played */
+        return;
+    /* held too, the list is made (the listener's memory stays true);
+     * hol_audio_apply plays nothing while the player is paused */
     hol_sound_update(&f->snd, hol_app_get_view(app), hol_app_get_events(app), hol_app_world(app),
                      &f->sl);
     hol_audio_apply(f->au, &f->sl);
