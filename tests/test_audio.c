@@ -18,8 +18,8 @@
 #include <cmocka.h>
 
 #include "../core/hol_app.h"
-#include "../core/hol_nav.h"
 #include "../platform/audio/hol_audio.h"
+#include "app_fixture.h" /* the group's navigator, make_app */
 
 #define N 4800 /* 0.1 s at 48 kHz */
 
@@ -90,15 +90,7 @@ static void test_feed_holds(void **state)
     hol_audio *a = open_loopback();
     if (!a)
         skip();
-    hol_nav *nav = NULL;
-    hol_nav_desc nd;
-    memset(&nd, 0, sizeof nd);
-    assert_int_equal(hol_nav_create(&nd, &nav), HOL_OK);
-    hol_app_desc d;
-    memset(&d, 0, sizeof d);
-    d.nav = nav;
-    hol_app *app = NULL;
-    assert_int_equal(hol_app_create(&d, &app), HOL_OK);
+    hol_app *app = make_app();
     hol_app_level L;
     memset(&L, 0, sizeof L);
     L.seed = 5;
@@ -134,7 +126,6 @@ static void test_feed_holds(void **state)
     hol_audio_feed_hold(&f, 1);
     assert_int_equal(f.held, 1); /* remembered for a later open */
     hol_app_destroy(app);
-    hol_nav_destroy(nav);
 }
 
 int main(void)
@@ -143,5 +134,5 @@ int main(void)
         cmocka_unit_test(test_pause_stops_and_resumes),
         cmocka_unit_test(test_feed_holds),
     };
-    return cmocka_run_group_tests(tests, NULL, NULL);
+    return cmocka_run_group_tests(tests, setup, teardown);
 }
