@@ -63,17 +63,18 @@ static void env_write(int xr, double hz, int w, int h, uint32_t device)
     if (!m)
         return;
     static char row[ENV__ROW + 64], str[4][1024];
-    char num[64] = {0};
+    char hzs[32] = "", ws[16] = "", hs[16] = ""; /* empty when unknown */
     for (int k = 0; k < 4; k++) /* os, runtime, controller, options */
         hol_web_js_env(k, str[k], sizeof str[k]);
     const char *ctl = device ? hol_input_device_name(device) : str[2];
-    int n = hz > 0 ? snprintf(num, sizeof num, "%.3f", hz) : 0;
-    if (w > 0 && h > 0) /* "HZ\0W\0H" */
-        snprintf(num + n + 1, sizeof num - (size_t)n - 1, "%d%c%d", w, 0, h);
-    const char *wd = num + n + 1, *f[] = {m->session, m->participant, "", m->study_sha256,
-                                          xr ? "webxr" : "web",
-                                          str[0], str[1], env.gl, ctl, num, wd,
-                                          wd + strlen(wd) + 1, "", str[3]};
+    if (hz > 0)
+        snprintf(hzs, sizeof hzs, "%.3f", hz);
+    if (w > 0 && h > 0) {
+        snprintf(ws, sizeof ws, "%d", w);
+        snprintf(hs, sizeof hs, "%d", h);
+    }
+    const char *f[] = {m->session, m->participant, "", m->study_sha256, xr ? "webxr" : "web",
+                       str[0], str[1], env.gl, ctl, hzs, ws, hs, "", str[3]};
     size_t at = 0;
     for (size_t i = 0; i < sizeof f / sizeof f[0]; i++)
         at = env_field(row, at, f[i]);
@@ -84,7 +85,7 @@ static void env_write(int xr, double hz, int w, int h, uint32_t device)
     int bad = hd < 0 ||
               (new_file && hol_web_js_store_write(hd, PLAY_ENV_COLUMNS "\n", sizeof PLAY_ENV_COLUMNS)) ||
               hol_web_js_store_write(hd, row, (int)at) | hol_web_js_store_close(hd);
-    printf("web: environment %s %s Hz%s\n", f[4], num, bad ? ": not written" : "");
+    printf("web: environment %s %s Hz%s\n", f[4], hzs, bad ? ": not written" : "");
 }
 
 /* A frame at t_ms; the rate measured over ENV__COUNT frames (unless known).
