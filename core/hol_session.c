@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "hol_input_io.h"
+#include "hol_sha256.h"
 #include "hol_version.h"
 
 #define HOL__REC_BUF (64u << 10)
@@ -13,6 +14,16 @@
 #define HOL__TRACK_BUF (128u << 10) /* a second at 90 Hz and a gap's rows */
 
 /* ---- create ---------------------------------------------------------------- */
+
+/* desc.study_text's SHA-256 is meta.study_sha256 (see Studies). */
+static int hol__study_hash_ok(const hol_session_desc *d)
+{
+    uint8_t dig[32];
+    char hex[HOL_SHA256_HEX];
+    hol_sha256(d->study_text, d->study_len, dig);
+    hol_sha256_hex(dig, hex);
+    return !strcmp(hex, d->meta.study_sha256);
+}
 
 static hol_err hol__check_desc(const hol_session_desc *d, char *msg, size_t cap)
 {
@@ -39,6 +50,10 @@ static hol_err hol__check_desc(const hol_session_desc *d, char *msg, size_t cap)
     }
     if (m->participant[0] && !hol_rec_id_ok(m->participant)) {
         snprintf(msg, cap, "the participant is not 1..63 letters, digits, '.', '_', '-'");
+        return HOL_EARG;
+    }
+    if (d->study_text && !hol__study_hash_ok(d)) {
+        snprintf(msg, cap, "the study's text is not the one its hash names");
         return HOL_EARG;
     }
     if (d->track_hz && (d->track_hz < HOL_SESSION_TRACK_HZ_MIN ||
@@ -185,6 +200,8 @@ static hol_err hol__create(hol_session *s, const hol_session_desc *d)
         return e;
     if (s->log)
         hol__log_levels(s);
+    if (s->log && d->study_text)
+        hol__log_study(s, d->study_text, d->study_len);
     if (s->failed)
         return s->failed;
     if (s->rec && (e = hol__rec_open(s)))

@@ -63,6 +63,13 @@
  * - Studies: a level's labels (hol_level: condition, position) and the
  *   study's name (meta.study) fill the summary's study, condition and
  *   position; all three are empty for a level without a condition.
+ *   At create, desc.study_text (the study file's bytes, as the platform
+ *   read them) goes to study-HASH.txt in the log folder (HASH: the
+ *   summary's study_sha256, meta.study_sha256, which must be the text's
+ *   SHA-256: HOL_EARG otherwise), written as study-HASH.txt.live and
+ *   renamed, as a level's text: once a session, whatever its attempts.
+ *   Only a live session has the text: a replay (whose recording carries
+ *   the hash, not the text) writes none, so a replay's folder lacks it.
  * - Recording: written as REC.live (REC = desc.rec_name) and renamed to REC
  *   by hol_session_finish (or abort); a REC.live already there (a killed
  *   session's recording) is refused at create (HOL_EARG).
@@ -184,6 +191,10 @@ typedef struct hol_session_desc {
                                 (hol_rec_meta_ok) always */
     double flush_s;          /* 0: 1 s */
     int track_hz;            /* track rows a second, 10..90; 0: 10 */
+    const char *study_text;  /* a live study session's study file, kept as
+                                study-HASH.txt (see Studies); NULL: none
+                                (a replay: its recording has only the hash) */
+    size_t study_len;        /* its bytes */
 } hol_session_desc;
 
 typedef struct hol_session hol_session;

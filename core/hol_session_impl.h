@@ -98,6 +98,8 @@ void hol__log_frame(hol_session *s, const hol_app_events *ev, const hol_app_view
                     const hol_input *in);
 void hol__attempt_end(hol_session *s, const hol_app_summary *sum, int end);
 void hol__log_levels(hol_session *s);
+/* The study's text as study-HASH.txt, HASH meta.study_sha256. */
+void hol__log_study(hol_session *s, const char *text, size_t len);
 
 /* hol_session_track.c: the last sample k / hz at or before t; the track
  * rows of a frame (name: the level's CSV field). */

@@ -181,6 +181,16 @@ void hol__log_levels(hol_session *s)
     }
 }
 
+/* The study's text as study-HASH.txt, as a level's (see hol_session.h). */
+void hol__log_study(hol_session *s, const char *text, size_t len)
+{
+    char name[96], live[104];
+    snprintf(name, sizeof name, "study-%s.txt", s->meta.study_sha256);
+    snprintf(live, sizeof live, "%s.live", name);
+    hol__put_file(s, live, 0, text, len);
+    hol__rename(s, live, name);
+}
+
 /* ---- rows ------------------------------------------------------------------- */
 
 void hol__attempt_name(char *out, size_t cap, const char *what, int attempt)

@@ -15,6 +15,7 @@
 
 #include "../../core/hol_input_io.h"
 #include "../../core/hol_session.h"
+#include "../../core/hol_sha256.h"
 #include "../../render/hol_app_frame.h"
 #include "../../render/hol_render.h"
 #include "../egl/hol_egl.h"
@@ -139,6 +140,7 @@ typedef struct play_ctx {
     hol_level levels[HOL_SESSION_MAX_LEVELS];
     int nlevels;
     char study[HOL_REC_ID_MAX]; /* --study: its name */
+    char study_sha256[HOL_SHA256_HEX]; /* and its hash ("": none) */
     play_input input;
     int has_input;
     play_out out;
@@ -389,7 +391,7 @@ static int play_write_env(play_ctx *c)
                        c->use_pad ? c->pad.info.name : "", c->refresh_hz, c->o.w, c->o.h};
     c->env_due = 0;
     return play_env_write(c->cmd, c->o.log_dir, &c->o.env, c->session, c->o.participant,
-                          c->o.study, &h, c->o.argc, c->o.argv) ? CLI_EXIT_FAIL : 0;
+                          c->study_sha256, &h, c->o.argc, c->o.argv) ? CLI_EXIT_FAIL : 0;
 }
 
 /* Without an XRandR rate, the row is written once PLAY_ENV_SWAPS frames
@@ -427,8 +429,10 @@ static int play_prepare(play_ctx *c)
     hol_rec_meta meta;
     hol_sink_posix_meta(&meta, c->o.participant);
     snprintf(meta.study, sizeof meta.study, "%s", c->study);
-    if (play_env_meta(c->cmd, &c->o.env, c->o.study, &meta))
+    if (play_env_meta(c->cmd, &c->o.env, c->o.study, &meta, &c->out.study_text,
+                      &c->out.study_len))
         return CLI_EXIT_FAIL;
+    snprintf(c->study_sha256, sizeof c->study_sha256, "%s", meta.study_sha256);
     st = play_session_open(c->cmd, &c->out, c->levels, c->nlevels, &meta, c->o.append, &c->s);
     if (st)
         return st;

@@ -369,7 +369,7 @@ static void xr_environment(void *user, const char *controller, double refresh_hz
     c->env_due = 0;
     play_env_host h = {"openxr", c->runtime, c->gl, controller, refresh_hz, c->eye_w, c->eye_h};
     if (play_env_write(c->cmd, c->o->log_dir, &c->o->env, c->meta.session, c->o->participant,
-                       c->o->study, &h, c->o->argc, c->o->argv) && !c->st)
+                       c->meta.study_sha256, &h, c->o->argc, c->o->argv) && !c->st)
         c->st = CLI_EXIT_FAIL;
 }
 
@@ -481,8 +481,9 @@ int cli_cmd_xr(int argc, char **argv)
     if (!st) {
         hol_sink_posix_meta(&c.meta, o.participant);
         snprintf(c.meta.study, sizeof c.meta.study, "%s", study);
-        st = play_env_meta(cmd, &o.env, o.study, &c.meta) ? CLI_EXIT_FAIL
-                                                           : xr_run(&o, &c, script, nscript);
+        st = play_env_meta(cmd, &o.env, o.study, &c.meta, &out.study_text, &out.study_len)
+                 ? CLI_EXIT_FAIL
+                 : xr_run(&o, &c, script, nscript);
     }
     hol_audio_feed_close(&c.snd);
     int end = play_session_end(cmd, c.s, cli_caught_signal() != 0);

@@ -1,4 +1,4 @@
-/* play_env.c - --session, --meta, the study's copy and environment.csv
+/* play_env.c - --session, --meta, the study's hash and environment.csv
  * (play_env.h). */
 #include "play_env.h"
 
@@ -113,51 +113,22 @@ static void join(char *out, size_t cap, const char *const *v, int n, const char 
     }
 }
 
-/* The study file's text (*out_data, the caller frees it) and hex its
- * SHA-256; 1 with the error said. */
-static int play_env__study_read(const char *cmd, const char *path, uint8_t **out_data,
-                                size_t *out_len, char hex[HOL_SHA256_HEX])
-{
-    uint8_t dig[32];
-    if (hol_file_read_all(path, 1 << 20, out_data, out_len)) {
-        cli_error(cmd, 0, "cannot read --study '%.200s' again", path);
-        return 1;
-    }
-    hol_sha256(*out_data, *out_len, dig);
-    hol_sha256_hex(dig, hex);
-    return 0;
-}
-
-/* DIR/study-HASH.txt, hex its hash (study_path's text). */
-static int play_env_study(const char *cmd, const char *dir, const char *path,
-                          char hex[HOL_SHA256_HEX])
-{
-    uint8_t *data = NULL;
-    size_t len = 0;
-    if (play_env__study_read(cmd, path, &data, &len, hex))
-        return 1;
-    char name[4200];
-    snprintf(name, sizeof name, "%s/study-%s.txt", dir, hex);
-    struct stat st;
-    hol_err err = stat(name, &st) == 0 ? HOL_OK : hol_file_write_atomic(name, data, len);
-    free(data);
-    if (err) {
-        cli_error(cmd, 0, "cannot write '%.200s': %s", name, strerror(errno));
-        return 1;
-    }
-    return 0;
-}
-
-int play_env_meta(const char *cmd, const play_env *e, const char *study_path, hol_rec_meta *m)
+int play_env_meta(const char *cmd, const play_env *e, const char *study_path, hol_rec_meta *m,
+                  char **out_study, size_t *out_len)
 {
     m->session_no = e->session_no;
     m->study_sha256[0] = 0;
+    *out_study = NULL;
+    *out_len = 0;
     if (study_path) {
-        uint8_t *data = NULL;
-        size_t len = 0;
-        if (play_env__study_read(cmd, study_path, &data, &len, m->study_sha256))
+        uint8_t *data = NULL, dig[32];
+        if (hol_file_read_all(study_path, 1 << 20, &data, out_len)) {
+            cli_error(cmd, 0, "cannot read --study '%.200s' again", study_path);
             return 1;
-        free(data);
+        }
+        hol_sha256(data, *out_len, dig);
+        hol_sha256_hex(dig, m->study_sha256);
+        *out_study = (char *)data;
     }
     static char raw[PLAY_ENV_META_MAX * 240];
     join(raw, sizeof raw, e->meta, e->nmeta, ";");
@@ -197,12 +168,11 @@ static int play_env_append(const char *cmd, const char *dir, const play_env_row 
 }
 
 int play_env_write(const char *cmd, const char *log_dir, const play_env *e, const char *session,
-                   const char *participant, const char *study_path, const play_env_host *h,
+                   const char *participant, const char *study_sha256, const play_env_host *h,
                    int argc, char **argv)
 {
-    char hex[HOL_SHA256_HEX] = "";
-    if (!log_dir || (study_path && play_env_study(cmd, log_dir, study_path, hex)))
-        return log_dir ? 1 : 0;
+    if (!log_dir)
+        return 0;
     static play_env_row r;
     memset(&r, 0, sizeof r);
     char num[32] = "", os[400] = "", meta[4096], opts[4096];
@@ -213,7 +183,7 @@ int play_env_write(const char *cmd, const char *log_dir, const play_env *e, cons
         snprintf(num, sizeof num, "%d", e->session_no);
     join(meta, sizeof meta, e->meta, e->nmeta, ";");
     join(opts, sizeof opts, (const char *const *)argv, argc, " ");
-    const char *f[] = {session, participant, num, hex, h->platform, os, h->runtime,
+    const char *f[] = {session, participant, num, study_sha256, h->platform, os, h->runtime,
                        h->gl_renderer, h->controller};
     for (size_t i = 0; i < sizeof f / sizeof f[0]; i++)
         row_field(&r, f[i]);

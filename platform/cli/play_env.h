@@ -1,7 +1,7 @@
 /* play_env.h - a session's environment and metadata (issue 26 item 5):
  * `--session N` and repeatable `--meta KEY=VALUE` of play (and xr), the
- * study file kept in the log folder, and one row per session start in the
- * log folder's environment.csv (docs/research.md).
+ * study file's text and hash, and one row per session start in the log
+ * folder's environment.csv (docs/research.md).
  *
  * Contract (problems reported as one line on stderr, as cli_error does)
  * - play_env_value takes one option: 1 taken, 0 not one of these, -1 a bad
@@ -11,21 +11,25 @@
  * - play_env_check: exit status 0, or 2 after reporting --session/--meta
  *   without --log, or a DIR/environment.csv there that is not a regular
  *   file (hol_file_check_out: a FIFO, a folder), before anything opens.
- * - play_env_write (after the session opened on DIR): the study's text
- *   (study_path, NULL: none) written as DIR/study-HASH.txt (atomically; kept
- *   when there), and one row appended to DIR/environment.csv (made with its
- *   header PLAY_ENV_COLUMNS; the row written with one write(2) and
- *   fsync'ed). Every field is RFC 4180 and escaped (core/hol_text.h).
- *   Returns 0 or 1 (reported).
+ * - play_env_write (after the session opened on DIR): one row appended to
+ *   DIR/environment.csv (made with its header PLAY_ENV_COLUMNS; the row
+ *   written with one write(2) and fsync'ed), study_sha256 its column ("":
+ *   none). Every field is RFC 4180 and escaped (core/hol_text.h). Returns 0
+ *   or 1 (reported).
  * - play_env_meta (before the session opens): the session's metadata for
  *   summary.csv and the recording (hol_rec_meta's session_no,
  *   study_sha256: the study file's SHA-256, read now; meta: the --meta
- *   options joined with ';', escaped by hol_text_escape). 0, or 1
- *   reported (the study cannot be read again).
+ *   options joined with ';', escaped by hol_text_escape), and the study's
+ *   text as read (*out_study, malloc'ed, the caller frees it even on
+ *   failure; NULL without study_path): the session keeps it as
+ *   DIR/study-HASH.txt (hol_session_desc's study_text). 0, or 1 reported
+ *   (the study cannot be read again).
  * - Replay writes no environment row: the environment is the live one.
  */
 #ifndef HOL_PLAY_ENV_H
 #define HOL_PLAY_ENV_H
+
+#include <stddef.h>
 
 #define PLAY_ENV_META_MAX 16
 #define PLAY_ENV_COLUMNS                                                                  \
@@ -55,9 +59,9 @@ int play_env_value(const char *cmd, const char *opt, const char *val, play_env *
 int play_env_check(const char *cmd, const play_env *e, const char *log_dir);
 struct hol_rec_meta;
 int play_env_meta(const char *cmd, const play_env *e, const char *study_path,
-                  struct hol_rec_meta *m);
+                  struct hol_rec_meta *m, char **out_study, size_t *out_len);
 int play_env_write(const char *cmd, const char *log_dir, const play_env *e, const char *session,
-                   const char *participant, const char *study_path, const play_env_host *h,
+                   const char *participant, const char *study_sha256, const play_env_host *h,
                    int argc, char **argv);
 
 #endif

@@ -334,6 +334,8 @@ void play_out_close(play_out *po)
     if (po->has_rec)
         hol_sink_posix_fini(&po->rec);
     po->has_log = po->has_rec = 0;
+    free(po->study_text);
+    po->study_text = NULL;
 }
 
 int play_participant(const char *cmd, const char *id)
@@ -357,6 +359,8 @@ int play_session_open(const char *cmd, play_out *po, const hol_level *levels, in
     d.rec_name = po->rec_name;
     d.meta = *meta;
     d.track_hz = po->track_hz;
+    d.study_text = po->study_text;
+    d.study_len = po->study_len;
     d.app.lazy_nav = strcmp(cmd, "xr") != 0;
     char msg[256];
     /* recovery of a killed session's huge live files ends on a signal */

@@ -31,7 +31,8 @@
  *   is removed again by play_out_close when no session opened on it (a
  *   refused study, a window that failed): no empty folder is left.
  *   play_session_open
- *   then creates the session on them (its navigator lazy, hol_app_desc's
+ *   then creates the session on them (with po's study_text, which the
+ *   session keeps as DIR/study-HASH.txt; its navigator lazy, hol_app_desc's
  *   lazy_nav, except for "xr": a headset's level start never pays); play_session_end finishes it (or
  *   aborts it: the attempt in play ends `aborted`) and frees it.
  * - play_print_end prints "level NAME STATE steps S optimum O tile A cell
@@ -108,6 +109,10 @@ typedef struct play_out {
     char made_dir[4096]; /* --log DIR when play_out_open made it */
     int opened;          /* a session opened on them */
     int track_hz;        /* --track-hz, set after play_out_open; 0: 10 */
+    char *study_text;    /* --study's text for the session to keep (set
+                            after play_out_open, play_env_meta; freed by
+                            play_out_close); NULL: none */
+    size_t study_len;
 } play_out;
 
 int play_out_open(const char *cmd, const char *log_dir, int append, const char *rec_path,

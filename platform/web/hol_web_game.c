@@ -247,32 +247,6 @@ static int page_track_hz(char *msg, size_t cap)
     return hz;
 }
 
-/* The study's text kept in the store as study-HASH.txt, as `play --study`
- * keeps it beside its logs: written as .live, flushed and renamed (the
- * same text under the same name where one is there). A failure is said
- * and the session plays on, as with the logs. */
-static void study_keep(void)
-{
-    const hol_sink *k = hol_web_sink();
-    char name[HOL_SHA256_HEX + 16], live[HOL_SHA256_HEX + 24];
-    snprintf(name, sizeof name, "study-%s.txt", study_hex);
-    snprintf(live, sizeof live, "%s.live", name);
-    int h = -1;
-    hol_err e = k->open(k->user, live, 0, &h);
-    if (!e) {
-        e = k->write(k->user, h, study_text, strlen(study_text));
-        if (!e)
-            e = k->flush(k->user, h, 1);
-        hol_err c = k->close(k->user, h);
-        if (!e)
-            e = c ? c : k->rename(k->user, live, name);
-    }
-    if (e) {
-        printf("web: cannot keep %s: %s\n", name, k->why(k->user));
-        hol_web_js_event("warning", "the study's text could not be kept with the logs");
-    }
-}
-
 int hol_web_game_open(char *msg, size_t cap)
 {
     int n = 0;
@@ -299,6 +273,9 @@ int hol_web_game_open(char *msg, size_t cap)
     hol_web_sink_meta(&d.meta, part[0] ? part : NULL);
     snprintf(d.meta.study, sizeof d.meta.study, "%s", study_name);
     snprintf(d.meta.study_sha256, sizeof d.meta.study_sha256, "%s", study_hex);
+    /* kept in the store as study-HASH.txt by the session, as play --study's */
+    d.study_text = study_hex[0] ? study_text : NULL;
+    d.study_len = study_hex[0] ? strlen(study_text) : 0;
     char rec_name[HOL_REC_ID_MAX + 16];
     snprintf(rec_name, sizeof rec_name, "session-%s.rec", d.meta.session);
     d.rec_name = rec_name;
@@ -306,8 +283,6 @@ int hol_web_game_open(char *msg, size_t cap)
     if (e)
         return 1;
     meta = d.meta;
-    if (study_hex[0])
-        study_keep();
     printf("web: session %s, %d level(s), recording %s\n", d.meta.session, n, rec_name);
     if (hol_session_recovered(sess))
         printf("web: %d unfinished attempt(s) of an earlier visit finished (end 'killed')\n",
