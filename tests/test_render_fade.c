@@ -35,15 +35,7 @@ static int teardown(void **state)
 
 static hol_frame_desc frame(double fade, int flags)
 {
-    hol_frame_desc f;
-    memset(&f, 0, sizeof f);
-    f.user = hol_room_start();
-    f.cam.eye[0] = 1.5;
-    f.cam.eye[1] = 1.6;
-    f.cam.eye[2] = 1.5;
-    f.cam.pitch_deg = -20;
-    f.cam.width = W;
-    f.cam.height = H;
+    hol_frame_desc f = render_fixture_frame(W, H, -20);
     f.flags = flags;
     f.fade = fade;
     return f;
@@ -51,8 +43,7 @@ static hol_frame_desc frame(double fade, int flags)
 
 static void render(const hol_frame_desc *f, uint8_t *out)
 {
-    assert_int_equal(hol_render_frame(fx.rnd, f, NULL), HOL_OK);
-    hol_render_read_rgba(fx.rnd, W, H, out);
+    render_fixture_draw(fx.rnd, f, W, H, out);
 }
 
 static void test_partial_fade_blends_every_pixel(void **state)

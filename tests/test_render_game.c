@@ -29,6 +29,7 @@
 #include "../render/hol_hud.h"
 #include "../render/hol_render.h"
 #include "golden_compare.h"
+#include "render_fixture.h"
 
 #define W 320
 #define H 240
@@ -105,8 +106,7 @@ static void step(int frames, float right, float fwd, float turn_left, float look
  * HUD when hud is 0, and compare it with golden NAME. */
 static void draw(const hol_frame_desc *fd, uint8_t *img)
 {
-    assert_int_equal(hol_render_frame(rnd, fd, NULL), HOL_OK);
-    hol_render_read_rgba(rnd, W, H, img);
+    render_fixture_draw(rnd, fd, W, H, img);
 }
 
 static int shot(const char *name, int hud, uint8_t *img)
@@ -115,8 +115,7 @@ static int shot(const char *name, int hud, uint8_t *img)
     hol_app_frame_desc(hol_app_get_view(app), -1, W, H, 0, &fd);
     if (!hud)
         fd.flags |= HOL_RENDER_NO_HUD;
-    assert_int_equal(hol_render_frame(rnd, &fd, NULL), HOL_OK);
-    hol_render_read_rgba(rnd, W, H, img);
+    draw(&fd, img);
     if (golden_update_requested()) {
         char path[600];
         snprintf(path, sizeof path, "tests/golden/%s.png", name);
@@ -413,11 +412,7 @@ static void test_map_corner(void **state)
     step(60, 0, 0, 0.5f, 0);
     hol_frame_desc fd;
     hol_app_frame_desc(hol_app_get_view(app), -1, W, H, 0, &fd);
-    assert_int_equal(hol_render_frame(rnd, &fd, NULL), HOL_OK);
-    hol_render_read_rgba(rnd, W, H, with);
-    fd.flags |= HOL_RENDER_NO_HUD;
-    assert_int_equal(hol_render_frame(rnd, &fd, NULL), HOL_OK);
-    hol_render_read_rgba(rnd, W, H, without);
+    render_fixture_draw_hud(rnd, &fd, W, H, with, without);
     int changed = 0, middle = 0;
     for (int y = 0; y < H; y++)
         for (int x = 0; x < W; x++) {

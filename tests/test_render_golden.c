@@ -196,8 +196,7 @@ static void render_with(hol_render *rr, const golden_view *g, uint8_t *rgba)
     assert_int_equal(hol_world_update(world, &f.user), HOL_OK);
     f.steps_taken = 2;
     f.time_s = 83;
-    assert_int_equal(hol_render_frame(rr, &f, NULL), HOL_OK);
-    hol_render_read_rgba(rr, W, H, rgba);
+    render_fixture_draw(rr, &f, W, H, rgba);
     hol_render_set_world(rr, fx.world);
 }
 

@@ -21,6 +21,7 @@
 #include "../render/hol_app_frame.h"
 #include "../render/hol_hud.h"
 #include "../render/hol_render.h"
+#include "render_fixture.h"
 
 #define W 320
 #define H 240
@@ -99,11 +100,7 @@ static counts draw(void)
     static uint8_t with[W * H * 4], without[W * H * 4];
     hol_frame_desc fd;
     hol_app_frame_desc(hol_app_get_view(app), -1, W, H, 0, &fd);
-    assert_int_equal(hol_render_frame(rnd, &fd, NULL), HOL_OK);
-    hol_render_read_rgba(rnd, W, H, with);
-    fd.flags |= HOL_RENDER_NO_HUD;
-    assert_int_equal(hol_render_frame(rnd, &fd, NULL), HOL_OK);
-    hol_render_read_rgba(rnd, W, H, without);
+    render_fixture_draw_hud(rnd, &fd, W, H, with, without);
     float r[4];
     hol_hud_map_rect(W, H, r);
     counts c = {0, 0, 0, 0};

@@ -68,15 +68,7 @@ static int teardown(void **state)
 
 static hol_frame_desc frame(int lighting)
 {
-    hol_frame_desc f;
-    memset(&f, 0, sizeof f);
-    f.user = hol_room_start();
-    f.cam.eye[0] = 1.5;
-    f.cam.eye[1] = 1.6;
-    f.cam.eye[2] = 1.5;
-    f.cam.pitch_deg = -25;
-    f.cam.width = W;
-    f.cam.height = H;
+    hol_frame_desc f = render_fixture_frame(W, H, -25);
     f.flags = HOL_RENDER_MINIMAP;
     f.lighting = lighting;
     f.time_s = 3.0;
@@ -90,8 +82,7 @@ static hol_frame_desc frame(int lighting)
 
 static void render(hol_render *r, const hol_frame_desc *f, uint8_t *out)
 {
-    assert_int_equal(hol_render_frame(r, f, NULL), HOL_OK);
-    hol_render_read_rgba(r, W, H, out);
+    render_fixture_draw(r, f, W, H, out);
 }
 
 static void test_lazy_frames_equal_eager(void **state)

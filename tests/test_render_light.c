@@ -429,8 +429,7 @@ static void make_scene(const light_case *c, scene *s)
 static void render(scene *s, int flags, uint8_t *px)
 {
     s->f.flags = flags | HOL_RENDER_NO_HUD;
-    assert_int_equal(hol_render_frame(fx.rnd, &s->f, NULL), HOL_OK);
-    hol_render_read_rgba(fx.rnd, W, H, px);
+    render_fixture_draw(fx.rnd, &s->f, W, H, px);
 }
 
 static double smooth(double a, double b, double x)

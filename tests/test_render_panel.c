@@ -94,11 +94,7 @@ static void shoot(render_fixture *fx, const hol_app_view *v, int e, int panel, e
     assert_non_null(ref);
     assert_non_null(s->img);
     assert_non_null(s->mask);
-    assert_int_equal(hol_render_frame(fx->rnd, &fd, NULL), HOL_OK);
-    hol_render_read_rgba(fx->rnd, W, H, s->img);
-    fd.flags |= HOL_RENDER_NO_HUD;
-    assert_int_equal(hol_render_frame(fx->rnd, &fd, NULL), HOL_OK);
-    hol_render_read_rgba(fx->rnd, W, H, ref);
+    render_fixture_draw_hud(fx->rnd, &fd, W, H, s->img, ref);
     memset(&s->all, 0, sizeof s->all);
     int *cols = calloc(W, sizeof *cols);
     assert_non_null(cols);

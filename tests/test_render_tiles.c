@@ -250,9 +250,8 @@ static void check_case(const view_case *c, int flags, int *out_checked)
     f.cell_m = c->cell;
     fill_cam(c, &f.cam);
     f.flags = c->flags | flags | HOL_RENDER_IDS | HOL_RENDER_NO_HUD;
-    assert_int_equal(hol_render_frame(fx.rnd, &f, NULL), HOL_OK);
     static uint8_t px[W * H * 4];
-    hol_render_read_rgba(fx.rnd, W, H, px);
+    render_fixture_draw(fx.rnd, &f, W, H, px);
     const hol_view *v = hol_render_last_view(fx.rnd);
     int bare = (flags & HOL_RENDER_BARE) != 0;
     int checked = 0, skipped = 0, drawn = 0, exp_floor = 0;
@@ -360,9 +359,8 @@ static void test_trunks_hide_seams(void **state)
         f.cell_m = c->cell;
         fill_cam(c, &f.cam);
         f.flags = c->flags | HOL_RENDER_IDS | HOL_RENDER_NO_HUD;
-        assert_int_equal(hol_render_frame(fx.rnd, &f, NULL), HOL_OK);
         static uint8_t px[W * H * 4];
-        hol_render_read_rgba(fx.rnd, W, H, px);
+        render_fixture_draw(fx.rnd, &f, W, H, px);
         for (int y = 0; y < H; y++)
             for (int x = 0; x < W; x++) {
                 if (hol_render_decode_id(px + (y * W + x) * 4) < 0)
@@ -459,9 +457,8 @@ static void test_creeks_continue_across_edges(void **state)
             f.cam.width = W;
             f.cam.height = H;
             f.flags = HOL_RENDER_BARE | HOL_RENDER_NO_HUD;
-            assert_int_equal(hol_render_frame(fx.rnd, &f, NULL), HOL_OK);
             static uint8_t px[W * H * 4];
-            hol_render_read_rgba(fx.rnd, W, H, px);
+            render_fixture_draw(fx.rnd, &f, W, H, px);
             /* the 12 interior edges: vertical x = 1, 2 and horizontal z = 1, 2 */
             for (int e = 0; e < 12; e++) {
                 int vert = e < 6, line = 1 + (e % 6) / 3, seg = e % 3;
@@ -617,14 +614,7 @@ static void test_allocator_hooks(void **state)
     assert_int_equal(hol_render_create(&rd, &r), HOL_OK);
     long made = count_allocs;
     assert_true(made >= 2);
-    hol_frame_desc f;
-    memset(&f, 0, sizeof f);
-    f.user = hol_room_start();
-    f.cam.eye[0] = f.cam.eye[2] = 1.5;
-    f.cam.eye[1] = 1.6;
-    f.cam.pitch_deg = -30;
-    f.cam.width = W;
-    f.cam.height = H;
+    hol_frame_desc f = render_fixture_frame(W, H, -30);
     f.flags = HOL_RENDER_MINIMAP;
     for (int k = 0; k < 3; k++)
         assert_int_equal(hol_render_frame(r, &f, NULL), HOL_OK);

@@ -23,15 +23,9 @@
 
 static void view(hol_frame_desc *f, double yaw)
 {
-    memset(f, 0, sizeof *f);
-    f->user = hol_room_start();
-    f->cam.eye[0] = 1.45;
-    f->cam.eye[1] = 1.6;
-    f->cam.eye[2] = 1.5;
+    *f = render_fixture_frame(EW, EH, -25);
+    f->cam.eye[0] = 1.45; /* off the cell's centre */
     f->cam.yaw_deg = yaw;
-    f->cam.pitch_deg = -25;
-    f->cam.width = EW;
-    f->cam.height = EH;
 }
 
 /* the framebuffer, rows bottom to top as GL gives them */
