@@ -1,6 +1,7 @@
 /* app_fixture.h - the fixture the app's core tests share (test_app.c,
  * test_screens.c, test_point.c, test_ask.c, test_finish.c,
- * test_conditions.c, test_audio.c): one navigator, an app on it, a tracked head's input
+ * test_conditions.c, test_audio.c; test_session_study.c takes its navigator
+ * and tracked head): one navigator, an app on it, a tracked head's input
  * record, a step that must succeed.
  *
  * Contract

@@ -23,14 +23,14 @@
 
 #include <cmocka.h>
 
+#include "../core/hol_app.h"
 #include "../core/hol_level.h"
-#include "../core/hol_nav.h"
 #include "../core/hol_session.h"
 #include "../core/hol_sha256.h"
 
-#include "mem_sink.h" /* a folder in memory */
+#include "app_fixture.h" /* the navigator, a tracked head */
+#include "mem_sink.h"    /* a folder in memory */
 
-static hol_nav *g_nav;
 static hol_level g_flag; /* mode flag, seed 5, flag Wrf: 8 steps by WNESWNEE */
 
 /* A study file's bytes: CR LF kept, a NUL-free text whose last bytes
@@ -40,29 +40,19 @@ static const char g_study[] = "study s1\r\ncondition hand\nlevel f.lvl\nset mini
 #define STUDY_LEN (sizeof g_study - 1 - 20)
 static char g_hex[HOL_SHA256_HEX], g_name[96], g_live[104];
 
-static int setup(void **state)
+/* The group's navigator (app_fixture.h's setup), the level, the names. */
+static int study_setup(void **state)
 {
-    (void)state;
-    hol_nav_desc nd;
-    memset(&nd, 0, sizeof nd);
     const char *t = "mode flag\nseed 5\nflag Wrf\n";
     uint8_t dig[32];
     hol_sha256(g_study, STUDY_LEN, dig);
     hol_sha256_hex(dig, g_hex);
     snprintf(g_name, sizeof g_name, "study-%s.txt", g_hex);
     snprintf(g_live, sizeof g_live, "%s.live", g_name);
-    if (hol_nav_create(&nd, &g_nav) != HOL_OK ||
-        hol_level_make("lv", 2, t, strlen(t), &g_flag, NULL) != HOL_OK)
+    if (setup(state) || hol_level_make("lv", 2, t, strlen(t), &g_flag, NULL) != HOL_OK)
         return -1;
     snprintf(g_flag.condition, sizeof g_flag.condition, "hand"); /* the study's */
     g_flag.position = 1;
-    return 0;
-}
-
-static int teardown(void **state)
-{
-    (void)state;
-    hol_nav_destroy(g_nav);
     return 0;
 }
 
@@ -183,35 +173,21 @@ static hol_session_desc desc(const hol_sink *log, const char *text, size_t len, 
     return d;
 }
 
-static hol_input head_at(double t, double x, double z, unsigned pressed)
-{
-    hol_input in;
-    memset(&in, 0, sizeof in);
-    in.time_s = t;
-    in.flags = HOL_INPUT_FOCUSED | HOL_INPUT_HEAD_VALID;
-    in.head.pos[0] = (float)x;
-    in.head.pos[1] = 1.6f;
-    in.head.pos[2] = (float)z;
-    in.head.quat[3] = 1;
-    in.pressed = pressed;
-    return in;
-}
-
-/* The walk from cell (1,1), a step every 0.25 s from t0; the last time. */
+/* The walk from cell (1,1): frame i at t0 + i / 4 s where the first i
+ * steps lead; the last frame's time. */
 static double walk(hol_session *s, const char *w, double t0)
 {
     int c = 1, r = 1, over = 0;
-    double t = t0;
-    hol_input in = head_at(t, c + 0.5, r + 0.5, 0);
-    assert_int_equal(hol_session_step(s, &in, &over), HOL_OK);
-    for (const char *p = w; *p; p++) {
-        c += *p == 'E' ? 1 : *p == 'W' ? -1 : 0;
-        r += *p == 'S' ? 1 : *p == 'N' ? -1 : 0;
-        t += 0.25;
-        in = head_at(t, c + 0.5, r + 0.5, 0);
+    size_t n = strlen(w);
+    for (size_t i = 0; i <= n; i++) {
+        hol_input in = tracked_at(t0 + 0.25 * (double)i, c, r);
         assert_int_equal(hol_session_step(s, &in, &over), HOL_OK);
+        if (i < n) {
+            c += w[i] == 'E' ? 1 : w[i] == 'W' ? -1 : 0;
+            r += w[i] == 'S' ? 1 : w[i] == 'N' ? -1 : 0;
+        }
     }
-    return t;
+    return t0 + 0.25 * (double)n;
 }
 
 static int study_files(mem_sink *m)
@@ -249,7 +225,7 @@ static void test_study_kept_once(void **state)
     /* attempt 1 restarted, attempt 2 done, the session finished */
     double t = walk(s, "WE", 0);
     int over = 0;
-    hol_input in = head_at(t + 0.25, 1.5, 1.5, HOL_BTN_RESTART);
+    hol_input in = app_head(t + 0.25, 1, 1, 0, 0, HOL_BTN_RESTART);
     assert_int_equal(hol_session_step(s, &in, &over), HOL_OK);
     walk(s, "WNESWNEE", t + 1);
     assert_int_equal(hol_session_finish(s), HOL_OK);
@@ -373,5 +349,5 @@ int main(void)
         cmocka_unit_test(test_study_hash_checked),
         cmocka_unit_test(test_study_replaced_or_failed),
     };
-    return cmocka_run_group_tests(tests, setup, teardown);
+    return cmocka_run_group_tests(tests, study_setup, teardown);
 }
