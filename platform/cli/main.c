@@ -66,7 +66,7 @@ static void cli_huge_pages(int argc, char **argv)
     for (size_t i = 0; argc >= 2 && i < sizeof big / sizeof big[0]; i++)
         use |= !strcmp(argv[1], big[i]);
     for (int i = 2; i < argc; i++)
-        use &= strcmp(argv[i], "--help") != 0;
+        use &= strcmp(argv[i], "--help") && strcmp(argv[i], "-h");
     const char *old = getenv("GLIBC_TUNABLES");
     if (!use)
         return;
