@@ -140,7 +140,10 @@ hol_err hol_app_create(const hol_app_desc *desc, hol_app **out_app)
     if (!wsize)
         return HOL_EARG;
     size_t head = (sizeof(hol_app) + 63) & ~(size_t)63;
-    uint8_t *mem = hol_alloc_mem(&d.alloc, head + wsize + 64);
+    /* lazy: zero pages (calloc maps them when first written), not cleared */
+    int zeroed = d.lazy_world && !(d.alloc.alloc && d.alloc.free);
+    uint8_t *mem = zeroed ? calloc(1, head + wsize + 64)
+                          : hol_alloc_mem(&d.alloc, head + wsize + 64);
     if (!mem)
         return HOL_ENOMEM;
     hol_app *app = (hol_app *)(void *)mem;
@@ -149,6 +152,7 @@ hol_err hol_app_create(const hol_app_desc *desc, hol_app **out_app)
     uintptr_t w = ((uintptr_t)(mem + head) + 63) & ~(uintptr_t)63;
     app->world_mem = (void *)w;
     app->world_size = wsize;
+    wd.mem_zeroed = zeroed;
     hol_err err = hol_world_init(app->world_mem, wsize, &wd, &app->world);
     int slot = 0;
     if (!err && d.nav) {
@@ -314,7 +318,8 @@ static hol_err hol__begin(hol_app *app)
     hol_world_desc wd = hol__world_desc(app, L->seed, q);
     wd.places = places;
     wd.nplaces = (uint32_t)np;
-    hol_err err = hol_world_init(app->world_mem, app->world_size, &wd, &app->world);
+    /* the store cleared only if it holds tiles (not before the first level) */
+    hol_err err = hol_world_reinit(app->world_mem, app->world_size, &wd, &app->world);
     if (err)
         return err;
     hol_room r;

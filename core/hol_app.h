@@ -279,6 +279,15 @@ typedef struct hol_app_desc {
                                  first keys level's tour (60-140 ms then), not
                                  at create; 0 (a headset): both at create, so
                                  no level start pays. Same answers. */
+    int lazy_world;           /* 1 (tools, headless and desktop runs): the
+                                 world's memory (14 MB) comes from calloc
+                                 and is not cleared at create, so only the
+                                 pages a run writes are mapped (when
+                                 written, in the frame that writes them);
+                                 without allocator hooks only. 0 (a
+                                 headset): cleared at create, so no update
+                                 takes a page fault. A level start clears a
+                                 store only when it holds tiles. */
 } hol_app_desc;
 
 typedef enum hol_app_state {

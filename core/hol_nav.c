@@ -206,17 +206,25 @@ static void hol__nav_init(hol_nav *nav, const hol_nav_desc *d, const hol__plan *
     nav->leg_radius = pl->leg_radius;
     nav->leg_trust = pl->leg_radius - gap[1];
     nav->margin = d->anytime_margin;
-    int t = nav->trust < nav->tab.radius ? nav->trust : nav->tab.radius - 1;
-    t = t < 1 ? 1 : t;
-    nav->far_base16 = nav->tab.mean16_at[t];
-    nav->far_slope16 = nav->tab.mean16_at[t] - nav->tab.mean16_at[t - 1];
     for (int s = 0; s < nav->tab.nst; s++) {
         int cell = s % nav->tab.ncell;
         nav->par[s] = (uint8_t)((s / nav->tab.ncell + cell % nav->tab.cols + cell / nav->tab.cols) & 1);
     }
+    nav->bytes = pl->total;
+}
+
+void hol__nav_complete(hol_nav *nav)
+{
+    if (nav->tabled)
+        return;
+    hol_navtab_finish(&nav->tab);
+    nav->tabled = 1;
+    int t = nav->trust < nav->tab.radius ? nav->trust : nav->tab.radius - 1;
+    t = t < 1 ? 1 : t;
+    nav->far_base16 = nav->tab.mean16_at[t];
+    nav->far_slope16 = nav->tab.mean16_at[t] - nav->tab.mean16_at[t - 1];
     for (size_t i = 0; i < (size_t)nav->tab.per * nav->tab.off[nav->trust + 1]; i++)
         nav->partial |= nav->tab.cost[i] == 255;
-    nav->bytes = pl->total;
 }
 
 hol_err hol_nav_create(const hol_nav_desc *desc, hol_nav **out_nav)
@@ -235,12 +243,18 @@ hol_err hol_nav_create(const hol_nav_desc *desc, hol_nav **out_nav)
     memset(nav, 0, sizeof *nav);
     char *p = block + hol__align(sizeof(hol_nav));
     nav->tab = pl.tab;
-    err = hol_navtab_build(&nav->tab, p, p + pl.table);
+    /* lazy: the table's build by parts (near finds run it as far as they
+     * need; anything else finishes it first) */
+    err = hol_navtab_begin(&nav->tab, p, p + pl.table);
     if (err) {
         d.free_fn(block, d.user);
         return err;
     }
+    if (!d.lazy)
+        hol_navtab_finish(&nav->tab); /* before the arena, its scratch, is cleared */
     hol__nav_init(nav, &d, &pl, p);
+    if (!d.lazy)
+        hol__nav_complete(nav);
     nav->block = block;
     nav->free_fn = d.free_fn;
     nav->user = d.user;
@@ -507,11 +521,14 @@ hol_err hol_nav_find(hol_nav *nav, const hol_room *start, hol_tile target,
         /* farther than a tile word reaches: waypoints only (none in the
          * flat grid, whose rooms reach their own tiles only) */
         hol_room room = *start;
+        if (!flat)
+            hol__nav_complete(nav);
         err = flat ? HOL_EUNREACH : hol__chain(nav, &room, target, &w);
     } else if (!err && hol_tile_dist0(u) <= nav->trust) {
         uint32_t idx = hol_navtab_rank(&nav->tab, u);
         int cell = start->col + nav->tab.cols * start->row;
-        if (hol_navtab_cost(&nav->tab, idx, o, cell) == 255)
+        /* the table as far as this state's cost (all of it, eager) */
+        if (hol_navtab_need(&nav->tab, idx, o, cell) == 255)
             return HOL_EUNREACH; /* {4,4} and {4,8}: no walk in the room reaches it */
         hol__nav_descend(&nav->tab, idx, o, cell, &w);
         res.exact = 1;
@@ -519,6 +536,7 @@ hol_err hol_nav_find(hol_nav *nav, const hol_room *start, hol_tile target,
     } else if (!err && flat) {
         err = HOL_EUNREACH; /* beyond the room's span */
     } else if (!err) {
+        hol__nav_complete(nav);
         if (budget == 0 || budget > nav->ar.cap)
             budget = nav->ar.cap;
         err = hol__anytime(nav, start, u, o, budget, &w, &res);

@@ -77,18 +77,25 @@ typedef struct hol_nav_desc {
     int tiling_q;      /* the tiling {4,Q}, 4..8; 0: 5 */
     int room_cols;     /* the room's columns and rows, 3..5; 0: 3 */
     int room_rows;
-    int lazy;          /* 1 (tools, short runs): the search arena's pages are
+    int lazy;          /* 1 (tools, short runs): the cost table is built
+                        * by parts, as queries need it: a find within the
+                        * trusted radius runs the table's BFS only up to
+                        * its start's cost (a few ms for a target 5 tiles
+                        * away), anything else (far finds, tours) first
+                        * finishes it; and the search arena's pages are
                         * not touched at create (its hash is cleared at the
                         * first search instead; the first far query pays
-                        * its page faults, about 8 ms). 0: touched at
-                        * create. The answers are the same. */
+                        * its page faults, about 8 ms). 0: the table whole
+                        * and the arena touched at create. The answers are
+                        * the same. */
 } hol_nav_desc;
 
 typedef struct hol_nav hol_nav; /* opaque */
 
-/* Build the cost table (about 0.5 s; 30 MB in all at the defaults: table
- * 11 MB, leg table 5 MB, arena 32 bytes a node plus 16 of hash and queue,
- * at least the table's build scratch). Errors:
+/* Build the cost table (about 0.1-0.3 s of CPU; by parts with desc.lazy;
+ * 30 MB in all at the defaults: table 11 MB, leg table 5 MB, arena 32
+ * bytes a node plus 16 of hash and queue, at least the table's build
+ * scratch). Errors:
  * HOL_EARG (radius out of range, a bad tiling or room size, an explicit
  * radius over HOL_NAV_MAX_BYTES), HOL_ENOMEM (the allocation failed). */
 hol_err hol_nav_create(const hol_nav_desc *desc, hol_nav **out_nav);

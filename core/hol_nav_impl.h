@@ -41,6 +41,9 @@ struct hol_nav {
     int far_base16;     /* extrapolation: 16 x mean cost at trust */
     int far_slope16;    /* 16 x mean cost per tile */
     int margin;         /* anytime: explore f up to best + margin */
+    int tabled;         /* the table finished and the fields above set
+                         * (hol__nav_complete): lazy navigators at the
+                         * first query that needs more than a descent */
     hol__arena ar;      /* the search arena (hol_nav_arena.h); its nodes
                          * also serve as the tours' and leg build's scratch */
     uint8_t *leg;       /* tour leg table (state to state), built lazily */
@@ -57,6 +60,12 @@ struct hol_nav {
     void (*free_fn)(void *ptr, void *user);
     void *user;
 };
+
+/* Finish the table (its build's scratch spans the leg table and the
+ * arena) and set the fields that come from it (far_base16, far_slope16,
+ * partial): before any use of those, the arena, the leg table or a table
+ * cost other than through hol_navtab_need. Idempotent. */
+void hol__nav_complete(hol_nav *nav);
 
 /* ---- tour legs (hol_nav_legs.c) ---- */
 

@@ -229,50 +229,98 @@ hol_err hol_navtab_init_index(hol_navtab *tab, int radius)
  * take a hol_tile_step and a rank, and each of those is stepped once: the
  * edge read backwards is the neighbour's edge in turn arrive + 2, arriving
  * in turn + 2. `scratch` holds the tiles and their automaton states
- * (17 bytes a tile: hol_navtab_scratch_bytes). */
+ * (17 bytes a tile: hol_navtab_scratch_bytes).
+ *
+ * A build by parts makes a tile's neighbours when the BFS first expands
+ * one of its states (hol__nb_of: the tile unranked, its unset edges
+ * stepped, the same entries), and the rest in index order at the end
+ * (hol__nb_upto, which skips the edges already made). A level's entries
+ * (nb unset, cost 255) are written before anything can write to them
+ * (hol__levels_upto): a tile's edges lead at most one level down. */
 #define HOL__NB_UNSET (UINT32_MAX - 1)
-static void hol__neighbours(hol_navtab *tab, void *scratch)
+static void hol__levels_upto(hol_navtab *tab, int len)
 {
-    uint32_t n = tab->count, kids = 1;
-    int len = 0;
-    hol_tile *tile = (hol_tile *)scratch;
-    uint8_t *state = (uint8_t *)(tile + n);
-    for (size_t k = 0; k < 4 * (size_t)n; k++)
-        tab->nb[k] = HOL__NB_UNSET;
-    tile[0] = hol_tile_origin_q(tab->q);
-    state[0] = 0;
-    for (uint32_t i = 0; i < n; i++) {
-        if (i == tab->off[len + 1])
-            len++;
-        uint32_t *nb = tab->nb + 4 * (size_t)i;
-        for (int c = 0; c < 4; c++) {
-            int s2 = len == 0 ? 0 : tab->next[state[i]][c];
-            if (s2 < 0)
-                continue;
-            if (len == tab->radius) {
-                nb[c] = HOL_NAVTAB_NONE;
-                continue;
-            }
-            hol_tile_child(tile[i], c, &tile[kids]);
-            state[kids] = (uint8_t)s2;
-            nb[c] = kids << 2;
-            tab->nb[4 * (size_t)kids + HOL_TURN_B] = (i << 2) | (uint32_t)((c + 2) & 3);
-            kids++;
-        }
-        for (int turn = 0; turn < 4; turn++) {
-            if (nb[turn] != HOL__NB_UNSET)
-                continue;
-            hol_tile u;
-            int arr;
-            uint32_t j = HOL_NAVTAB_NONE;
-            if (!hol_tile_step(tile[i], turn, &u, &arr))
-                j = hol_navtab_rank(tab, u);
-            nb[turn] = j == HOL_NAVTAB_NONE ? j : (j << 2) | (uint32_t)arr;
-            if (j != HOL_NAVTAB_NONE)
-                tab->nb[4 * (size_t)j + (size_t)((arr + 2) & 3)] =
-                    (i << 2) | (uint32_t)((turn + 2) & 3);
-        }
+    size_t per = (size_t)tab->per;
+    len = len > tab->radius ? tab->radius : len;
+    for (; tab->init_len < len; tab->init_len++) {
+        size_t a = tab->off[tab->init_len + 1], b = tab->off[tab->init_len + 2];
+        for (size_t k = 4 * a; k < 4 * b; k++)
+            tab->nb[k] = HOL__NB_UNSET;
+        memset(tab->cost + per * a, 255, per * (b - a));
     }
+}
+
+/* The unset edges of tile i (the tile t), each with its edge read
+ * backwards. */
+static void hol__nb_edges(hol_navtab *tab, uint32_t i, hol_tile t)
+{
+    uint32_t *nb = tab->nb + 4 * (size_t)i;
+    for (int turn = 0; turn < 4; turn++) {
+        if (nb[turn] != HOL__NB_UNSET)
+            continue;
+        hol_tile u;
+        int arr;
+        uint32_t j = HOL_NAVTAB_NONE;
+        if (!hol_tile_step(t, turn, &u, &arr))
+            j = hol_navtab_rank(tab, u);
+        nb[turn] = j == HOL_NAVTAB_NONE ? j : (j << 2) | (uint32_t)arr;
+        if (j != HOL_NAVTAB_NONE)
+            tab->nb[4 * (size_t)j + (size_t)((arr + 2) & 3)] =
+                (i << 2) | (uint32_t)((turn + 2) & 3);
+    }
+}
+
+/* The neighbours of tile i (its children made), i the next tile. */
+static void hol__nb_tile(hol_navtab *tab, uint32_t i, int len)
+{
+    hol_tile *tile = tab->nbt;
+    uint8_t *state = tab->nbs;
+    uint32_t *nb = tab->nb + 4 * (size_t)i;
+    for (int c = 0; c < 4; c++) {
+        int s2 = len == 0 ? 0 : tab->next[state[i]][c];
+        if (s2 < 0)
+            continue;
+        if (len == tab->radius) {
+            nb[c] = HOL_NAVTAB_NONE;
+            continue;
+        }
+        uint32_t kid = tab->nb_kids++;
+        hol_tile_child(tile[i], c, &tile[kid]);
+        state[kid] = (uint8_t)s2;
+        nb[c] = kid << 2;
+        tab->nb[4 * (size_t)kid + HOL_TURN_B] = (i << 2) | (uint32_t)((c + 2) & 3);
+    }
+    hol__nb_edges(tab, i, tile[i]);
+}
+
+/* The neighbours of every tile before `end` (at most count). */
+static void hol__nb_upto(hol_navtab *tab, uint32_t end)
+{
+    if (end > tab->count)
+        end = tab->count;
+    for (uint32_t i = tab->nb_done; i < end; i++) {
+        if (i == tab->off[tab->nb_len + 1])
+            tab->nb_len++;
+        hol__levels_upto(tab, tab->nb_len + 1);
+        hol__nb_tile(tab, i, tab->nb_len);
+        tab->nb_done = i + 1;
+    }
+}
+
+/* The neighbours of tile i, made now if any is missing (its level's
+ * entries set first, and the next level's, where its edges write). */
+static inline void hol__nb_of(hol_navtab *tab, uint32_t i)
+{
+    const uint32_t *nb = tab->nb + 4 * (size_t)i;
+    if (i < tab->nb_done)
+        return;
+    if (i >= tab->off[tab->init_len + 1])
+        hol__levels_upto(tab, hol_navtab_len(tab, i) + 1);
+    if (nb[0] != HOL__NB_UNSET && nb[1] != HOL__NB_UNSET && nb[2] != HOL__NB_UNSET &&
+        nb[3] != HOL__NB_UNSET)
+        return;
+    hol__levels_upto(tab, hol_navtab_len(tab, i) + 1);
+    hol__nb_edges(tab, i, hol_navtab_unrank(tab, i));
 }
 
 /* The least and mean costs by distance, and how far the bound proves. */
@@ -310,6 +358,7 @@ static inline void hol__expand(hol_navtab *tab, uint32_t st, int v, size_t *lo, 
 {
     uint32_t per = (uint32_t)tab->per, i = st / per, k = st - i * per;
     int o = tab->so[k], cell = tab->sc[k];
+    hol__nb_of(tab, i);
     for (int d = 0; d < 4; d++) {
         int c2 = tab->cellnb[cell][d];
         if (c2 < 0)
@@ -329,34 +378,83 @@ static inline void hol__expand(hol_navtab *tab, uint32_t st, int v, size_t *lo, 
     }
 }
 
-hol_err hol_navtab_build(hol_navtab *tab, void *mem, void *scratch)
+/* One level of the BFS from the goal (tile O, every room state) over
+ * stored states: the states of cost v are found by scanning the cost
+ * array over the span where the level before wrote them (no queue, and
+ * the neighbour table is read in order); their tiles' neighbours are made
+ * first. 0 when the BFS has ended (no state of cost v). */
+static int hol__bfs_level(hol_navtab *tab)
+{
+    if (tab->bfs_lo >= tab->bfs_hi || tab->bfs_v >= 254)
+        return 0;
+    uint32_t per = (uint32_t)tab->per;
+    int v = tab->bfs_v;
+    size_t nlo = per * (size_t)tab->count, nhi = 0;
+    const uint8_t *p = tab->cost + tab->bfs_lo, *end = tab->cost + tab->bfs_hi;
+    while (p < end && (p = (const uint8_t *)memchr(p, v, (size_t)(end - p))) != NULL) {
+        hol__expand(tab, (uint32_t)(p - tab->cost), v, &nlo, &nhi);
+        p++;
+    }
+    tab->bfs_lo = nlo;
+    tab->bfs_hi = nhi;
+    tab->bfs_v = v + 1;
+    return 1;
+}
+
+hol_err hol_navtab_begin(hol_navtab *tab, void *mem, void *scratch)
 {
     if (tab->radius < 1 || !tab->count)
         return HOL_EARG;
-    uint32_t n = tab->count, per = (uint32_t)tab->per;
     tab->nb = (uint32_t *)mem;
-    tab->cost = (uint8_t *)(tab->nb + 4 * (size_t)n);
-    hol__neighbours(tab, scratch);
-
-    /* BFS from the goal (tile O, every room state) over stored states, a
-     * level at a time: the states of cost v are found by scanning the cost
-     * array over the span where the level before wrote them (no queue, and
-     * the neighbour table is read in order) */
-    size_t total = per * (size_t)n, lo = 0, hi = per;
-    memset(tab->cost, 255, total);
-    memset(tab->cost, 0, per);
-    for (int v = 0; lo < hi && v < 254; v++) {
-        size_t nlo = total, nhi = 0;
-        const uint8_t *p = tab->cost + lo, *end = tab->cost + hi;
-        while (p < end && (p = (const uint8_t *)memchr(p, v, (size_t)(end - p))) != NULL) {
-            hol__expand(tab, (uint32_t)(p - tab->cost), v, &nlo, &nhi);
-            p++;
-        }
-        lo = nlo;
-        hi = nhi;
-    }
-    hol__certify(tab);
+    tab->cost = (uint8_t *)(tab->nb + 4 * (size_t)tab->count);
+    tab->nbt = (hol_tile *)scratch;
+    tab->nbs = (uint8_t *)(tab->nbt + tab->count);
+    tab->nbt[0] = hol_tile_origin_q(tab->q);
+    tab->nbs[0] = 0;
+    tab->nb_done = 0;
+    tab->nb_kids = 1;
+    tab->nb_len = 0;
+    for (size_t k = 0; k < 4; k++)
+        tab->nb[k] = HOL__NB_UNSET; /* level 0; the others when first reached */
+    memset(tab->cost, 0, (size_t)tab->per); /* the goal */
+    tab->init_len = 0;
+    hol__levels_upto(tab, 1);
+    tab->bfs_v = 0;
+    tab->bfs_lo = 0;
+    tab->bfs_hi = (size_t)tab->per;
+    tab->complete = 0;
     return HOL_OK;
+}
+
+int hol_navtab_need(hol_navtab *tab, uint32_t idx, int o, int cell)
+{
+    if (!tab->complete) {
+        hol__nb_of(tab, idx); /* the descent's first step */
+        while (hol_navtab_cost(tab, idx, o, cell) == 255 && hol__bfs_level(tab))
+            ;
+    }
+    return hol_navtab_cost(tab, idx, o, cell);
+}
+
+void hol_navtab_finish(hol_navtab *tab)
+{
+    if (tab->complete)
+        return;
+    hol__nb_upto(tab, tab->count); /* in index order: no tile unranked */
+    while (hol__bfs_level(tab))
+        ;
+    hol__certify(tab);
+    tab->nbt = NULL; /* the scratch is free */
+    tab->nbs = NULL;
+    tab->complete = 1;
+}
+
+hol_err hol_navtab_build(hol_navtab *tab, void *mem, void *scratch)
+{
+    hol_err err = hol_navtab_begin(tab, mem, scratch);
+    if (!err)
+        hol_navtab_finish(tab);
+    return err;
 }
 
 size_t hol_navtab_leg_bytes(const hol_navtab *tab, int leg_radius)

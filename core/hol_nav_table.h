@@ -25,7 +25,12 @@
  *   unreachable inside the radius (in {4,4} every tile off the room's own
  *   C x R; never in the other tilings for r >= 2).
  * - The table is filled once (hol_navtab_build) in caller memory; lookups
- *   are pure and thread safe.
+ *   are pure and thread safe. Or by parts (hol_navtab_begin, then
+ *   hol_navtab_need for each state read, hol_navtab_finish for the rest):
+ *   the BFS a level of cost at a time, the neighbours a tile at a time in
+ *   index order, so a near query pays for the states nearer the goal than
+ *   its own (see hol_navtab_need for what may be read meanwhile). The
+ *   finished table is the same, byte for byte, however it was reached.
  */
 #ifndef HOL_NAV_TABLE_H
 #define HOL_NAV_TABLE_H
@@ -63,6 +68,16 @@ typedef struct hol_navtab {
     int proved_radius; /* costs within it are proved exact by the bound */
     int min_at[HOL_NAVTAB_MAX_RADIUS + 1];  /* least cost at each distance */
     int mean16_at[HOL_NAVTAB_MAX_RADIUS + 1]; /* 16 x mean finite cost */
+    /* the build by parts: min_at_radius .. mean16_at are set at its end */
+    int complete;       /* 1: built whole (hol_navtab_finish) */
+    hol_tile *nbt;      /* scratch: the tiles made so far, and */
+    uint8_t *nbs;       /* their automaton states */
+    uint32_t nb_done;   /* tiles before it have all their neighbours */
+    uint32_t nb_kids;   /* tiles made (nbt) */
+    int nb_len;         /* length of the last tile done */
+    int init_len;       /* levels 0..init_len have their entries set */
+    int bfs_v;          /* the next BFS level to expand */
+    size_t bfs_lo, bfs_hi; /* the span of its states */
 } hol_navtab;
 
 /* Tiles within radius r of a tile of {4,q} (r <= HOL_NAVTAB_MAX_RADIUS);
@@ -85,6 +100,18 @@ size_t hol_navtab_scratch_bytes(const hol_navtab *tab);
 /* Build the initialised tab (radius >= 1) in `mem` (hol_navtab_table_bytes)
  * using `scratch` (overwritten). */
 hol_err hol_navtab_build(hol_navtab *tab, void *mem, void *scratch);
+
+/* The same by parts. hol_navtab_begin: the goal's states only (scratch
+ * must stay the table's until hol_navtab_finish). hol_navtab_need: the
+ * cost of state (idx, o, cell), the BFS run until it is known (255: none
+ * reaches it, the BFS ended); then it, every state of a lower cost and
+ * the neighbours of tile idx and of the tiles of those states are as in
+ * the whole table, so a descent from it (hol__nav_descend) takes the same
+ * steps. Nothing else of the table may be read before hol_navtab_finish
+ * (which completes it and certifies it: min_at_radius .. mean16_at). */
+hol_err hol_navtab_begin(hol_navtab *tab, void *mem, void *scratch);
+int hol_navtab_need(hol_navtab *tab, uint32_t idx, int o, int cell);
+void hol_navtab_finish(hol_navtab *tab);
 
 /* Index of tile t (of the table's tiling), or HOL_NAVTAB_NONE if it lies
  * beyond the radius. */

@@ -19,6 +19,7 @@
 
 void hol_nav_prepare_tours(hol_nav *nav)
 {
+    hol__nav_complete(nav); /* the leg table's build overwrites its scratch */
     if (!nav->leg_ready) {
         hol_navtab_build_legs(&nav->tab, nav->leg_radius, nav->leg, nav->ar.nodes);
         nav->leg_ready = 1;
@@ -481,6 +482,7 @@ hol_err hol_nav_tour(hol_nav *nav, const hol_room *start, const hol_tile *keys,
             return HOL_EARG;
     if (nkeys == 0)
         return hol_nav_find(nav, start, chest, budget, out_walk, cap, out_result);
+    hol__nav_complete(nav);
     hol_err err = nav->partial ? hol__tour_reach(nav, start, keys, nkeys, chest) : HOL_OK;
     if (err)
         return err;

@@ -136,9 +136,11 @@ size_t hol_world_mem_size(const hol_world_desc *desc)
     return l.total;
 }
 
-/* hol_world_init; zeroed: mem is known to hold zeros (calloc), so the
- * store and the table of seen tiles are not cleared (the world command's
- * store is over 100 MB: its clear was nearly all of a short run's time). */
+/* hol_world_init; zeroed: the store and the table of seen tiles hold no
+ * used entry (mem holds zeros: calloc; or an empty world's store), so
+ * they are not cleared (the world command's store is over 100 MB: its
+ * clear was nearly all of a short run's time; the app's 14 MB, a fifth of
+ * a short play's start). The struct itself is always cleared. */
 static hol_err hol__world_init(void *mem, size_t size, const hol_world_desc *desc,
                                hol_world **out_world, int zeroed)
 {
@@ -149,8 +151,7 @@ static hol_err hol__world_init(void *mem, size_t size, const hol_world_desc *des
     if (size < l.total)
         return HOL_ENOMEM;
     char *base = mem;
-    if (!zeroed)
-        memset(base, 0, l.off_slots); /* struct and store */
+    memset(base, 0, zeroed ? l.off_entries : l.off_slots); /* struct (and store) */
     hol_world *w = mem;
     if (desc->nplaces > HOL_WORLD_MAX_PLACES || (desc->nplaces && !desc->places))
         return HOL_EARG;
@@ -204,7 +205,28 @@ static hol_err hol__world_init(void *mem, size_t size, const hol_world_desc *des
 hol_err hol_world_init(void *mem, size_t size, const hol_world_desc *desc,
                        hol_world **out_world)
 {
-    return hol__world_init(mem, size, desc, out_world, 0);
+    return hol__world_init(mem, size, desc, out_world, desc && desc->mem_zeroed);
+}
+
+hol_err hol_world_reinit(void *mem, size_t size, const hol_world_desc *desc,
+                         hol_world **out_world)
+{
+    hol__layout l;
+    if (!mem || !desc || !out_world || ((uintptr_t)mem & 15) || !hol__plan(desc, &l))
+        return HOL_EARG;
+    /* an empty store (every entry removed is zeroed; nothing remembered)
+     * at the same place and size as desc's: no entry is in use (a failed
+     * init left cap 0: cleared then) */
+    hol_world *w = mem;
+    int empty = w->count == 0 && w->kept_count == 0 && w->cap == l.cap &&
+                (size_t)w->kept_mask + 1 == l.kept_size &&
+                (char *)w->kept == (char *)mem + l.off_kept;
+    void (*free_fn)(void *, void *) = w->free_fn;
+    void *free_user = w->free_user;
+    hol_err err = hol__world_init(mem, size, desc, out_world, empty);
+    w->free_fn = free_fn; /* still the caller's to destroy, if made */
+    w->free_user = free_user;
+    return err;
 }
 
 static void *hol__default_alloc(size_t size, void *user)

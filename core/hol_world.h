@@ -45,8 +45,10 @@
  * - Fixed memory: one allocation at hol_world_make (or caller memory with
  *   hol_world_init, which clears the store: its pages are touched then,
  *   so no update takes a page fault; hol_world_make's default allocator is
- *   calloc instead, whose pages are mapped when first written); the store is an open-addressing table keyed by the tile
- *   word. Full-store policy: when an update (or a get that must generate)
+ *   calloc instead, whose pages are mapped when first written, and so is
+ *   caller memory said to hold zeros, desc.mem_zeroed; hol_world_reinit
+ *   clears an empty store not again); the store is an open-addressing
+ *   table keyed by the tile word. Full-store policy: when an update (or a get that must generate)
  *   finds the store over 3/4 full, it evicts, in an incremental sweep of
  *   cap/256 table slots per call (all at once over 7/8), the tiles least
  *   recently used -
@@ -189,6 +191,11 @@ typedef struct hol_world_desc {
      * world must be of it (HOL_EARG otherwise); trees stand on vertices
      * with Q tiles round them. */
     int tiling_q;
+    /* hol_world_init only: 1 when the memory given holds zeros (from
+     * calloc or a fresh mapping, never written): the store is then not
+     * cleared, so its pages are mapped when first written (a short run
+     * touches a few of them) instead of all at init. */
+    int mem_zeroed;
 } hol_world_desc;
 
 typedef struct hol_world hol_world;
@@ -215,6 +222,15 @@ size_t hol_world_mem_size(const hol_world_desc *desc);
 /* A world over caller memory (aligned to 16, mem_size bytes). */
 hol_err hol_world_init(void *mem, size_t size, const hol_world_desc *desc,
                        hol_world **out_world);
+/* hol_world_init again over memory that holds a world (made on it by
+ * hol_world_init or hol_world_make, or whose last init there failed; the
+ * same mem and size): the same result, but a store that holds no tile (no
+ * update since it was made, nothing remembered) and stays where it was
+ * for desc is not cleared again, so a level started before any update
+ * does not touch the pages a zeroed init left unmapped. A world from
+ * hol_world_make stays the caller's to destroy (also after an error). */
+hol_err hol_world_reinit(void *mem, size_t size, const hol_world_desc *desc,
+                         hol_world **out_world);
 /* A world in one allocation through the desc's hooks. */
 hol_err hol_world_make(const hol_world_desc *desc, hol_world **out_world);
 void hol_world_destroy(hol_world *w); /* only for hol_world_make; NULL ok */

@@ -28,12 +28,15 @@
 #define HOL__ROOM_I (1u << 17)
 /* Tile meshes resident at once: a frame shows at most ~40 tiles in the
  * 3 x 3 room and 65 in a 5 x 5 one (test_render_tiles counts them). The
- * static buffers hold HOL__SLOTS_FIRST slots at create and all of them
- * from the first frame that needs more (hol__static_grow): llvmpipe
- * clears a buffer it allocates, 24 MB for all the slots, about 0.1 s of
- * a picture's start-up. */
+ * static buffers hold HOL__SLOTS_FIRST slots at create, HOL__SLOTS_MID
+ * from the first frame that needs more, all of them from the first that
+ * needs more again (hol__static_grow): llvmpipe clears a buffer it
+ * allocates, 24 MB for all the slots, about 0.1 s of a picture's
+ * start-up, 6 MB with the first 16 (a picture from the room's middle cell
+ * builds about 14 tiles). */
 #define HOL__SLOTS 96
-#define HOL__SLOTS_FIRST 48
+#define HOL__SLOTS_FIRST 16
+#define HOL__SLOTS_MID 48
 #define HOL__SLOT_V 8192u
 #define HOL__SLOT_I 16384u
 #define HOL__HUD_V (1u << 14) /* the resident minimap, after the room */
@@ -758,7 +761,7 @@ static int hol__tile_range(hol_render *r, hol_tile t, int bare, int pole, int ki
     if (r->scratch.overflow)
         return 0;
     if (k >= r->slot_cap)
-        hol__static_grow(r, HOL__SLOTS);
+        hol__static_grow(r, k < HOL__SLOTS_MID ? HOL__SLOTS_MID : HOL__SLOTS);
     uint32_t vbase = HOL__SLOT_VBASE(k);
     uint32_t ibase = HOL__SLOT_IBASE(k);
     hol__upload_scratch(r, vbase, ibase);

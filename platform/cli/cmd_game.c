@@ -161,6 +161,7 @@ int cli_cmd_game(int argc, char **argv)
     hol_app_desc d;
     memset(&d, 0, sizeof d);
     d.lazy_nav = 1; /* headless: tables when first needed */
+    d.lazy_world = 1; /* and the world's pages when first written */
     game_ctx g = {NULL, &L.lvl, path, 0};
     hol_err err;
     if ((err = hol_app_create(&d, &g.app))) {

@@ -32,8 +32,9 @@
  *   refused study, a window that failed): no empty folder is left.
  *   play_session_open
  *   then creates the session on them (with po's study_text, which the
- *   session keeps as DIR/study-HASH.txt; its navigator lazy, hol_app_desc's
- *   lazy_nav, except for "xr": a headset's level start never pays); play_session_end finishes it (or
+ *   session keeps as DIR/study-HASH.txt; its navigator and world lazy,
+ *   hol_app_desc's lazy_nav and lazy_world, except for "xr": a headset's
+ *   level start and frames never pay); play_session_end finishes it (or
  *   aborts it: the attempt in play ends `aborted`) and frees it.
  * - play_print_end prints "level NAME STATE steps S optimum O tile A cell
  *   C,R" with NAME escaped for the terminal (core/hol_text.h).
