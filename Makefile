@@ -308,10 +308,12 @@ TIMED := sh tests/timed.sh
 SUITE := sh tests/suite.sh $(BUILD)/suite-logs
 # UNIT_ENV: set for the unit tests only (make san: HOL_TEST_QUICK=1).
 UNIT_ENV ?=
-# The unit and render suites' big blocks on transparent huge pages, as the
-# tool's own (platform/cli/main.c, docs/cli.md): a page fault every 2 MB
-# instead of every 4 KB (test_nav 9.4 -> 7.6 s of CPU, test_world 11.6 ->
-# 9.2, test_app 2.3 -> 1.3); empty to run them without.
+# Every suite (unit, render and CLI) runs with malloc's big blocks advised
+# onto transparent huge pages: a first touch faults every 2 MB instead of
+# every 4 KB, a large part of a short process's CPU in this VM (test_nav
+# 9.4 -> 7.6 s of CPU, test_world 11.6 -> 9.2, a 2-frame play 0.34 ->
+# 0.25 s). Only the tests' environment: the tool does not set it
+# (docs/testing.md). Empty to run without.
 TEST_MALLOC_ENV ?= GLIBC_TUNABLES=glibc.malloc.hugetlb=1
 unit: $(UNIT_BIN) $(patsubst tests/%.c,unit-run-%,$(call slow_first,$(UNIT_SRC)))
 unit-run-%: $(BUILD)/tests/%
@@ -324,7 +326,7 @@ render-run-%: $(BUILD)/tests/%
 cli-test: $(patsubst tests/%.sh,cli-run-%,$(call slow_first,$(CLI_TESTS)))
 cli-run-%: $(BUILD)/holonomy $(BUILD)/tests/x11_close $(BUILD)/tests/x11_shot $(BUILD)/tests/png_probe \
            $(BUILD)/tests/gl_sync_count.so $(BUILD)/tests/wait_for
-	@$(CLI_ENV) HOLONOMY=$(BUILD)/holonomy X11_CLOSE=$(BUILD)/tests/x11_close X11_SHOT=$(BUILD)/tests/x11_shot \
+	@$(TEST_MALLOC_ENV) $(CLI_ENV) HOLONOMY=$(BUILD)/holonomy X11_CLOSE=$(BUILD)/tests/x11_close X11_SHOT=$(BUILD)/tests/x11_shot \
 	  PNG_PROBE=$(BUILD)/tests/png_probe GL_SYNC_SO=$(BUILD)/tests/gl_sync_count.so WAIT_FOR=$(BUILD)/tests/wait_for \
 	  $(SUITE) tests/$*.sh sh tests/$*.sh
 

@@ -1,11 +1,7 @@
 /* main.c - the `holonomy` tool: one binary, subcommands (SPEC section 4). */
-#include <stdlib.h>
 #include <string.h>
 #ifdef __GLIBC__
 #include <malloc.h>
-#endif
-#if defined(__GLIBC__) && defined(__linux__)
-#include <unistd.h>
 #endif
 
 #include "../../core/hol_version.h"
@@ -44,54 +40,8 @@ static void usage(FILE *f)
                "Exit status: 0 ok, 1 failure, 2 bad input or usage.\n");
 }
 
-#if defined(__GLIBC__) && defined(__linux__)
-/* Transparent huge pages for malloc's big blocks: a short run's CPU is
- * largely the first touch of its big blocks (the navigator's tables, the
- * renderer's buffers in Mesa, LLVM's), a page fault every 4 KB, costly in
- * a virtual machine; on 2 MB pages a tour takes 0.13 s of CPU instead of
- * 0.23, a 2-frame play 0.24 instead of 0.35 (docs/performance.md,
- * Start-up). Kernels give them only where madvise asks (the usual
- * default), and glibc asks for its mapped blocks only under the tunable
- * glibc.malloc.hugetlb=1, read when a process starts: so the binary
- * starts itself once more with it (same pid, arguments, files). A
- * GLIBC_TUNABLES that names glibc.malloc.hugetlb already is left as it
- * is (=0 turns this off); if the exec fails, the run goes on as before. */
-static void cli_huge_pages(int argc, char **argv)
-{
-    /* only commands with big blocks (tile, hid, props and --help runs
-     * would pay the second start, about 5 ms, for nothing) */
-    static const char *const big[] = {"world", "nav", "tour", "render", "game",
-                                      "play", "replay", "xr", "report"};
-    int use = 0;
-    for (size_t i = 0; argc >= 2 && i < sizeof big / sizeof big[0]; i++)
-        use |= !strcmp(argv[1], big[i]);
-    for (int i = 2; i < argc; i++)
-        use &= strcmp(argv[i], "--help") && strcmp(argv[i], "-h");
-    const char *old = getenv("GLIBC_TUNABLES");
-    if (!use)
-        return;
-    if (old && strstr(old, "glibc.malloc.hugetlb"))
-        return;
-    char keep[512], want[600];
-    if (old && strlen(old) >= sizeof keep)
-        return;
-    snprintf(keep, sizeof keep, "%s", old ? old : "");
-    snprintf(want, sizeof want, "%s%sglibc.malloc.hugetlb=1", keep, *keep ? ":" : "");
-    if (setenv("GLIBC_TUNABLES", want, 1))
-        return;
-    execv("/proc/self/exe", argv);
-    if (old)
-        setenv("GLIBC_TUNABLES", keep, 1);
-    else
-        unsetenv("GLIBC_TUNABLES");
-}
-#endif
-
 int main(int argc, char **argv)
 {
-#if defined(__GLIBC__) && defined(__linux__)
-    cli_huge_pages(argc, argv);
-#endif
 #ifdef __GLIBC__
     /* Mesa frees and takes again blocks of a few hundred KB every frame;
      * with glibc's defaults each free at the heap's top gave the pages back
