@@ -78,12 +78,15 @@ walk_input() {
 # when it cannot start: a failed check, then DISPLAY names no server and
 # every window check fails). SALT is not used any more (the number was made
 # from the script's pid and SALT, and the readiness polled with a play of 2
-# frames: about 1 s of CPU a start). Returns 1 (nothing started) without Xvfb.
+# frames: about 1 s of CPU a start). -noreset: the server is not reset each
+# time its last client leaves (each play, each xdotool: Xvfb's reset and an
+# xkbcomp, about 1.5 s of CPU in cli_play's 19). Returns 1 (nothing
+# started) without Xvfb.
 start_xvfb() {
     command -v Xvfb >/dev/null 2>&1 || return 1
     rm -f "$T/.xvfb.fd"
     mkfifo "$T/.xvfb.fd" || { bad "Xvfb: no FIFO in $T"; return 0; }
-    Xvfb -displayfd 3 -screen 0 320x240x24 -nolisten tcp 3>"$T/.xvfb.fd" >/dev/null 2>&1 &
+    Xvfb -displayfd 3 -screen 0 320x240x24 -nolisten tcp -noreset 3>"$T/.xvfb.fd" >/dev/null 2>&1 &
     XPID=$!
     trap 'kill $XPID 2>/dev/null; rm -rf "$T"' EXIT
     read -r xvfb_n <"$T/.xvfb.fd" || xvfb_n=
