@@ -83,7 +83,8 @@ CLI_TESTS := $(wildcard tests/cli_*.sh)
 SLOW_FIRST := cli_play cli_docs cli_harden_logs cli_serve cli_session test_world cli_mock_study \
               cli_nav cli_harden test_nav test_render_light cli_level cli_harden_opts cli_replay \
               cli_world cli_meta_summary cli_hostile cli_resume cli_render cli_game cli_sound cli_study \
-              cli_harden_signals cli_report cli_gl_sync cli_track test_tile test_app test_level
+              cli_harden_signals cli_report cli_gl_sync cli_track test_render_golden test_tile test_app \
+              test_level
 slow_first = $(foreach s,$(SLOW_FIRST),$(filter %/$(s).c %/$(s).sh,$(1))) \
              $(filter-out $(foreach s,$(SLOW_FIRST),%/$(s).c %/$(s).sh),$(1))
 # Libraries the renderer needs (headless OSMesa; EGL for the desktop build).
