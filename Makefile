@@ -76,12 +76,15 @@ RENDER_TEST_SRC := $(wildcard tests/test_render*.c)
 UNIT_SRC := $(filter-out $(RENDER_TEST_SRC),$(wildcard tests/test_*.c))
 CLI_TESTS := $(wildcard tests/cli_*.sh)
 # Suites that take long (CPU time measured by tests/timed.sh; cli_serve for
-# its wall time, it waits on servers) run first, longest first, so that
-# make -j2 does not end with one long suite running alone; the others follow
-# in name order (a new suite needs no entry here).
-SLOW_FIRST := cli_play cli_docs cli_harden_logs cli_session cli_mock_study cli_world test_world \
-              cli_nav cli_hostile cli_serve cli_harden_opts test_nav cli_harden cli_level cli_replay \
-              cli_render cli_resume cli_game cli_study cli_gl_sync cli_track test_app test_tile test_level
+# its wall time, it waits on servers and apt's retries) run first, longest
+# first, so that make -j2 does not end with one long suite running alone;
+# the others follow in name order (a new suite needs no entry here). The
+# order: make test's figures of 2026-11-27 (docs/testing.md, Times).
+SLOW_FIRST := cli_play cli_docs cli_harden_logs cli_serve cli_session test_world cli_mock_study \
+              cli_nav cli_harden test_nav test_render_light cli_level cli_harden_opts cli_replay \
+              cli_world cli_meta_summary cli_hostile cli_resume cli_render cli_game cli_sound cli_study \
+              cli_harden_signals cli_report cli_gl_sync cli_track test_render_golden test_tile test_app \
+              test_level
 slow_first = $(foreach s,$(SLOW_FIRST),$(filter %/$(s).c %/$(s).sh,$(1))) \
              $(filter-out $(foreach s,$(SLOW_FIRST),%/$(s).c %/$(s).sh),$(1))
 # Libraries the renderer needs (headless OSMesa; EGL for the desktop build).

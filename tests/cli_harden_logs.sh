@@ -240,7 +240,7 @@ if start_xvfb 317; then
         "$H" play --size 64x48 --mode flag --log "$d/logs" --record "$d/s.rec" >/dev/null 2>&1 &
         pid=$!
         wait_for 60 -e "$d/logs/head-001.csv.live"
-        sleep 0.5
+        sleep 0.2 # the attempt under way (0.5 s before: frames no check reads)
         if [ "${s%:*}" = close ]; then "$X11_CLOSE" holonomy || bad "close: no window"
         else kill -"${s%:*}" $pid; fi
         if gone_within $pid 100; then

@@ -176,11 +176,12 @@ cd logs && ls attempt-*.live *.csv.live 2>/dev/null | grep -q . && bad "live fil
 expect_rows() {
     for p in 1 2 3 4; do
         echo "P$p practice 0 p 1 done"
-        eval "set -- \$order$p"; pl=$(eval echo \$plan$p)
+        eval "set -- \$order$p"; eval "pl=\$plan$p"
         s=0
         for c in "$@"; do
             for l in a b; do
-                a=$(echo $pl | cut -c$((s + 1))); k=$((s / 2 + 1))
+                # the plan's next letter, peeled off in the shell
+                a=${pl%"${pl#?}"}; pl=${pl#?}; k=$((s / 2 + 1))
                 best=1 long=3; [ $l = b ] && best=2 long=4
                 [ $p = 3 ] && [ $s = 4 ] && echo "P3 $c $k $l 1 killed"
                 case $a in
@@ -212,15 +213,14 @@ awk -F, 'NR > 1 && $6 == "start" && $8 != "" && $10 != "" && $11 != "" { print $
 items='general_discomfort fatigue headache eye_strain difficulty_focusing salivation_increasing
 sweating nausea difficulty_concentrating fullness_of_head blurred_vision dizziness_eyes_open
 dizziness_eyes_closed vertigo stomach_awareness burping'
+# (one awk: the conditions of participant p in order, k from 1)
 for p in 1 2 3 4; do
-    eval "set -- \$order$p"
-    k=1
-    for c in "$@"; do
-        echo $items | tr ' ' '\n' |
-            awk -v p=$p -v k=$k -v c=$c '{ i = NR; print "P" p, c, $1, (i * 3 + p * 5 + k * 7 + int(i / 4) * p) % 4 }'
-        k=$((k + 1))
-    done
-done >want.ssq
+    eval "echo $p \$order$p"
+done | awk -v items="$items" '{
+    n = split(items, it, /[ \n]+/); p = $1
+    for (k = 1; k < NF; k++)
+        for (i = 1; i <= n; i++) print "P" p, $(k + 1), it[i], (i * 3 + p * 5 + k * 7 + int(i / 4) * p) % 4
+}' >want.ssq
 # the condition of each answer: its attempt's row in the summary
 awk -F, 'FNR == 1 { next } FILENAME ~ /summary/ { cond[$2 "," $5] = $7; next }
          $4 == "ssq" && $5 == "condition" && $7 == "likert" { print $2, cond[$2 "," $3], $6, $8 }' \

@@ -225,9 +225,12 @@ run "a killed session's recording replays" 0 "$H" replay "$T/kill9/s.rec.live" \
 grep -q ',1,,,,tutorial,.*,killed,,,$' "$T/kill9/logs/summary.csv" && ok ||
     bad "kill -9: $(cat "$T/kill9/logs/summary.csv")"
 
+# (each signal 0.2 s after the attempt's files appear: frames drawn, the
+# attempt under way; it was 1 s, a second of frames each for nothing the
+# checks read)
 for s in INT:130 TERM:143 HUP:129; do
     live "sig$s"
-    sleep 1
+    sleep 0.2
     kill -"${s%:*}" $pid
     ended "sig$s" "${s#*:}"
 done

@@ -43,24 +43,40 @@ static model_mat model_identity(void)
     return r;
 }
 
-/* Rotation by k quarter turns counter-clockwise (x right, y forward). */
+/* Rotation by k quarter turns counter-clockwise (x right, y forward).
+ * Each of the four is computed once and kept (the model's steps and
+ * distances are most of some tests' time; kept values are the same
+ * doubles, so every result is the same too). */
 static model_mat model_rot(int k)
 {
-    double a = (k & 3) * acos(-1.0) / 2.0;
-    double c = round(cos(a)), s = round(sin(a));
-    model_mat r = {{c, -s, 0, s, c, 0, 0, 0, 1}};
-    return r;
+    static model_mat kept[4];
+    static int have[4];
+    if (!have[k & 3]) {
+        double a = (k & 3) * acos(-1.0) / 2.0;
+        double c = round(cos(a)), s = round(sin(a));
+        model_mat r = {{c, -s, 0, s, c, 0, 0, 0, 1}};
+        kept[k & 3] = r;
+        have[k & 3] = 1;
+    }
+    return kept[k & 3];
 }
 
 static int model_q = 5;
 
 static void model_use_tiling(int q) { model_q = q; }
 
+/* The edge length d of model_q's tiling, computed once a tiling and kept
+ * (as model_rot's rotations). */
 static double model_edge(void)
 {
+    static double kept[16];
     if (model_q == 4)
         return 1.0;
-    return 2.0 * acosh(cos(acos(-1.0) / model_q) / sin(acos(-1.0) / 4.0));
+    if (model_q < 0 || model_q >= 16)
+        return 2.0 * acosh(cos(acos(-1.0) / model_q) / sin(acos(-1.0) / 4.0));
+    if (kept[model_q] == 0)
+        kept[model_q] = 2.0 * acosh(cos(acos(-1.0) / model_q) / sin(acos(-1.0) / 4.0));
+    return kept[model_q];
 }
 
 /* Translation along +y by the edge length. */
@@ -70,8 +86,16 @@ static model_mat model_fwd(void)
         model_mat e = {{1, 0, 0, 0, 1, 1, 0, 0, 1}};
         return e;
     }
+    static model_mat kept[16];
+    static int have[16];
+    if (model_q >= 0 && model_q < 16 && have[model_q])
+        return kept[model_q];
     double d = model_edge();
     model_mat r = {{1, 0, 0, 0, cosh(d), sinh(d), 0, sinh(d), cosh(d)}};
+    if (model_q >= 0 && model_q < 16) {
+        kept[model_q] = r;
+        have[model_q] = 1;
+    }
     return r;
 }
 

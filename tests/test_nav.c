@@ -78,22 +78,37 @@ typedef struct bf_state {
     uint8_t stage; /* tour: index of the next key in the order */
 } bf_state;
 
+/* The index of states is an open-addressed table of at most hmax slots
+ * (twice the states' capacity, so never over half full). A search starts
+ * it at BF_HASH0 slots and doubles it as the states grow past half of it,
+ * so a small search clears and probes a small table (the cache's), not
+ * the whole of it (32 MB: clearing it was most of a short search). */
+#define BF_HASH0 4096u
+
+/* A slot: the state's index (-1: empty) and the high half of its hash, so
+ * a probe reads the state itself only when the halves agree. */
+typedef struct bf_slot_ent {
+    int32_t i;
+    uint32_t tag;
+} bf_slot_ent;
+
 typedef struct bf {
     bf_state *st;
     size_t n, cap;
-    int32_t *hash;
-    size_t hmask;
+    bf_slot_ent *hash;
+    size_t hmask, hmax;
 } bf;
 
 static void bf_init(bf *b, size_t cap)
 {
     b->cap = cap;
     b->st = malloc(cap * sizeof *b->st);
-    size_t h = 1;
+    size_t h = BF_HASH0;
     while (h < 2 * cap)
         h <<= 1;
     b->hash = malloc(h * sizeof *b->hash);
-    b->hmask = h - 1;
+    b->hmax = h;
+    b->hmask = BF_HASH0 - 1;
     assert_non_null(b->st);
     assert_non_null(b->hash);
 }
@@ -104,29 +119,55 @@ static void bf_free(bf *b)
     free(b->hash);
 }
 
-static size_t bf_slot(const bf *b, const hol_room *r, int stage)
+static uint64_t bf_hash(const hol_room *r, int stage)
 {
     uint64_t h = hol_tile_hash(r->tile) ^
                  ((uint64_t)(r->orient + 4 * (r->col + 3 * r->row) + 64 * stage) *
                   0x9E3779B97F4A7C15ull);
-    h ^= h >> 31;
-    return (size_t)h & b->hmask;
+    return h ^ (h >> 31);
+}
+
+/* The table twice as large, every state indexed again. */
+static void bf_grow(bf *b)
+{
+    assert_true(2 * (b->hmask + 1) <= b->hmax);
+    b->hmask = 2 * (b->hmask + 1) - 1;
+    memset(b->hash, 0xff, (b->hmask + 1) * sizeof *b->hash);
+    for (size_t i = 0; i < b->n; i++) {
+        uint64_t h = bf_hash(&b->st[i].room, b->st[i].stage);
+        size_t s = (size_t)h & b->hmask;
+        while (b->hash[s].i >= 0)
+            s = (s + 1) & b->hmask;
+        b->hash[s] = (bf_slot_ent){(int32_t)i, (uint32_t)(h >> 32)};
+    }
+}
+
+/* No state, the table at its first size. */
+static void bf_reset(bf *b)
+{
+    b->n = 0;
+    b->hmask = BF_HASH0 - 1;
+    memset(b->hash, 0xff, (b->hmask + 1) * sizeof *b->hash);
 }
 
 /* Index of the state or -1 after inserting it (new). */
 static int bf_add(bf *b, const hol_room *r, int stage, int32_t parent, int dir)
 {
-    size_t s = bf_slot(b, r, stage);
-    while (b->hash[s] >= 0) {
-        const bf_state *o = &b->st[b->hash[s]];
-        if (o->stage == stage && o->room.orient == r->orient &&
+    if (2 * (b->n + 1) > b->hmask + 1)
+        bf_grow(b);
+    uint64_t h = bf_hash(r, stage);
+    uint32_t tag = (uint32_t)(h >> 32);
+    size_t s = (size_t)h & b->hmask;
+    while (b->hash[s].i >= 0) {
+        const bf_state *o = &b->st[b->hash[s].i];
+        if (b->hash[s].tag == tag && o->stage == stage && o->room.orient == r->orient &&
             o->room.col == r->col && o->room.row == r->row &&
             hol_tile_eq(o->room.tile, r->tile))
-            return b->hash[s];
+            return b->hash[s].i;
         s = (s + 1) & b->hmask;
     }
     assert_true(b->n < b->cap);
-    b->hash[s] = (int32_t)b->n;
+    b->hash[s] = (bf_slot_ent){(int32_t)b->n, tag};
     bf_state *n = &b->st[b->n++];
     n->room = *r;
     n->parent = parent;
@@ -143,8 +184,7 @@ typedef int (*bf_next_fn)(const void *ctx, int stage, hol_tile tile);
 static int bf_search(bf *b, const hol_room *start, bf_next_fn next, const void *ctx,
                      int goal, int max_depth)
 {
-    b->n = 0;
-    memset(b->hash, 0xff, (b->hmask + 1) * sizeof *b->hash);
+    bf_reset(b);
     int stage = next(ctx, 0, start->tile);
     if (stage == goal)
         return 0;
@@ -805,8 +845,7 @@ static void test_leg_bounds_vs_bfs(void **state)
         int got[36];
         for (int s2 = 0; s2 < 36; s2++)
             got[s2] = -1;
-        b.n = 0;
-        memset(b.hash, 0xff, (b.hmask + 1) * sizeof *b.hash);
+        bf_reset(&b);
         bf_add(&b, &s, 0, -1, 0);
         if (hol_tile_eq(s.tile, key))
             got[ss] = 0;

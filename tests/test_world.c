@@ -53,13 +53,38 @@ static hol_world *make_world(uint64_t seed, uint32_t cap, uint32_t reject)
     return w;
 }
 
-/* Tiles within r of t (breadth first), at most cap. */
+/* ball's table of the tiles it holds: slot -> index in out, a slot of
+ * an earlier call told apart by its stamp (nothing to clear a call). */
+enum { BALL_MAX = 4096, BALL_SLOTS = 8192 };
+static uint32_t ball_stamp[BALL_SLOTS], ball_now;
+static uint16_t ball_at[BALL_SLOTS];
+
+/* The slot of tile t in ball's table: the one holding it, or the empty
+ * one where it goes. */
+static size_t ball_slot(const hol_tile *out, hol_tile t)
+{
+    size_t s = (size_t)hol_tile_hash(t) & (BALL_SLOTS - 1);
+    while (ball_stamp[s] == ball_now && !hol_tile_eq(out[ball_at[s]], t))
+        s = (s + 1) & (BALL_SLOTS - 1);
+    return s;
+}
+
+/* Tiles within r of t (breadth first), at most cap. A tile found is
+ * looked up in a table of those held (it was compared with every one:
+ * the walks call this at every step). */
 static size_t ball(hol_tile t, int r, hol_tile *out, size_t cap)
 {
     size_t n = 1;
-    int dist[4096];
+    int dist[BALL_MAX];
+    if (++ball_now == 0) {
+        memset(ball_stamp, 0, sizeof ball_stamp);
+        ball_now = 1;
+    }
     out[0] = t;
     dist[0] = 0;
+    size_t s0 = ball_slot(out, t);
+    ball_stamp[s0] = ball_now;
+    ball_at[s0] = 0;
     for (size_t q = 0; q < n; q++) {
         if (dist[q] >= r)
             continue;
@@ -67,12 +92,13 @@ static size_t ball(hol_tile t, int r, hol_tile *out, size_t cap)
             hol_tile nt;
             if (hol_tile_step(out[q], d, &nt, NULL))
                 continue;
-            int seen = 0;
-            for (size_t i = 0; i < n && !seen; i++)
-                seen = hol_tile_eq(out[i], nt);
-            if (!seen && n < cap && n < 4096) {
+            size_t s = ball_slot(out, nt);
+            int seen = ball_stamp[s] == ball_now;
+            if (!seen && n < cap && n < BALL_MAX) {
                 out[n] = nt;
                 dist[n] = dist[q] + 1;
+                ball_stamp[s] = ball_now;
+                ball_at[s] = (uint16_t)n;
                 n++;
             }
         }
