@@ -161,15 +161,14 @@ typedef struct hol_light_frame {
     double rho;                   /* its circumradius */
     double trunk_r;               /* HOL_SHADOW_TRUNK_M */
     double reach;                 /* HOL_LIGHT_RADIUS_M */
-    double s0, s1;                /* the soft edge: sinh (flat: the distance)
-                                     of r - e and r + e */
 } hol_light_frame;
 
-/* A tile's trunk shadows (hol_light_shadows), in the tile's own frame. */
+/* A tile's trunk shadow pairs (hol_light_shadows), in the tile's own
+ * frame: each a trunk and the light that casts its shadow. */
 typedef struct hol_shadow_set {
-    int n;                                /* trunks, 0..HOL_SHADOW_TRUNKS */
-    int slot;                             /* the light casting them: its
-                                             index in lp */
+    int n;                                /* pairs, 0..HOL_SHADOW_TRUNKS */
+    int slot[HOL_SHADOW_TRUNKS];          /* each pair's light: its index
+                                             in lp */
     double trunk[HOL_SHADOW_TRUNKS][3];   /* the trunks' points */
 } hol_shadow_set;
 
@@ -195,11 +194,22 @@ int hol_light_firefly(hol_tile t, const hol_tile_content *c, double cell_m, doub
 int hol_light_tile(const hol_light_frame *lf, hol_tile t, double out_frame[9],
                    int out_idx[HOL_LIGHT_PER_TILE]);
 
-/* The trunk shadow pairs of a tile (see the contract): lp[0..nl-1] its
- * lights' points in its own frame (hyperboloid; flat (x, y, 1)), use[i] 0
- * for a light that casts none (a firefly). Deterministic; no allocation. */
-void hol_light_shadows(const hol_light_frame *lf, const double lp[][3], const uint8_t *use,
-                       int nl, hol_shadow_set *out);
+/* The trunk shadow pairs of a tile (see the contract): fr its frame
+ * (hol_light_tile), lp[0..nl-1] its lights' points in its own frame
+ * (hyperboloid; flat (x, y, 1)), lidx[i] their indices in lf (a firefly
+ * casts none). Deterministic; no allocation. */
+void hol_light_shadows(const hol_light_frame *lf, const double fr[9], const double lp[][3],
+                       const int *lidx, int nl, hol_shadow_set *out);
+
+/* The shadow of trunk t from light l (both in a tile's own frame) as three
+ * affine functions of the tile's Klein point k: out[j] = (a, b, c), value
+ * a k_x + b k_y + c. g value (g = 1/sqrt(1 - |k|^2); flat: 1) is sinh of
+ * the signed floor distance (flat: the distance) from the point to
+ * geodesic j, in metres over 2 HOL_SHADOW_EDGE_M, positive on the
+ * shadow's side: j 0 and 1 the geodesics from l tangent to the trunk's
+ * circle, 2 the one through t perpendicular to lt (beyond t). */
+void hol_light_wedge(const hol_light_frame *lf, const double l[3], const double t[3],
+                     double out[3][3]);
 
 /* The distance (curvature units; flat: tile sides) from point t to the
  * geodesic segment from a to b. */
