@@ -744,12 +744,35 @@ static int shadow_window(const light_case *c, const scene *s, int x, int y, int 
     return any;
 }
 
+/* The lantern nearest a floor pixel's tile centre (ties: the first). */
+static int nearest_of_pixel(const light_case *c, const scene *s, int x, int y)
+{
+    double p[2], h[3];
+    if (!floor_point(c, x + 0.5, y + 0.5, p) || !model_point(c, p, h))
+        return -1;
+    int near = 0;
+    for (int i = 1; i < s->n; i++)
+        if (floor_m(c->cell, model_centre, s->lant[i]) <
+            floor_m(c->cell, model_centre, s->lant[near]) - 1e-6)
+            near = i;
+    return near;
+}
+
+/* Do the tiles on the two sides of the edge after pixel (x, y) (right: d 0,
+ * lower: d 1) have different nearest lanterns (where the old rule, each
+ * tile shadowed by its nearest lantern only, could cut a shadow off)? */
+static int nearest_differs(const light_case *c, const scene *s, int x, int y, int d)
+{
+    int a = nearest_of_pixel(c, s, x, y), b = nearest_of_pixel(c, s, x + !d, y + d);
+    return a >= 0 && b >= 0 && a != b;
+}
+
 static void test_light_continuous_across_edges(void **state)
 {
     (void)state;
     static uint8_t px[W * H * 4];
     static int ids[W * H];
-    int total = 0, total_in = 0;
+    int total = 0, total_in = 0, total_across = 0;
     for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
         const light_case *c = &cases[k];
         scene s;
@@ -757,7 +780,7 @@ static void test_light_continuous_across_edges(void **state)
         branch_ids(&s, ids);
         hol_view v = *hol_render_last_view(fx.rnd);
         render(&s, HOL_RENDER_BARE | HOL_RENDER_LIGHT_ONLY, px);
-        int pairs = 0, lit = 0, in_shadow = 0;
+        int pairs = 0, lit = 0, in_shadow = 0, across = 0;
         for (int y = 0; y + 1 < H; y++)
             for (int x = 0; x + 1 < W; x++) {
                 int a = ids[y * W + x];
@@ -796,6 +819,7 @@ static void test_light_continuous_across_edges(void **state)
                                          255 * want[2]);
                         }
                         in_shadow += seen == 2;
+                        across += seen == 2 && nearest_differs(c, &s, x, y, d);
                     }
                     int bad = 0;
                     for (int ch = 0; ch < 2; ch++) {
@@ -816,14 +840,20 @@ static void test_light_continuous_across_edges(void **state)
                     lit += p[0] > 12;
                 }
             }
-        printf("edges case %zu: %d pixel pairs across cell edges, %d lit\n", k, pairs, lit);
+        printf("edges case %zu: %d pixel pairs across cell edges, %d lit, %d in one shadow on "
+               "both sides where the tiles' nearest lanterns differ\n", k, pairs, lit, across);
         total_in += in_shadow;
+        total_across += across;
         assert_true(pairs > 80); /* pairs on a shadow's soft edge are skipped */
         assert_true(lit > 20);
         total += pairs;
     }
-    printf("edges: %d pairs in all, %d in a trunk's shadow on both sides\n", total, total_in);
+    printf("edges: %d pairs in all, %d in a trunk's shadow on both sides, %d of them where the "
+           "two tiles' nearest lanterns differ\n", total, total_in, total_across);
     assert_true(total_in > 10);
+    /* the old rule (each tile took the shadows of its nearest lantern only)
+     * cut a shadow off at such an edge: these pairs were lit on one side */
+    assert_true(total_across > 10);
 }
 
 /* Tiles two or more cells away (through portals) get a lantern's light,
