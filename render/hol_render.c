@@ -1375,7 +1375,7 @@ static hol__prog *hol__prog_of(hol_render *r, const hol_frame_desc *f, int kind)
 
 /* Compile, if not yet, the programs of the kinds first..last (kinds as in
  * hol__prog_of, last <= first) this frame uses: a command that draws only
- * the day compiles 1 or 2 programs of the 30 (each costs llvmpipe about
+ * the day compiles 1 or 2 programs of the 102 (each costs llvmpipe about
  * 8 ms of CPU). HOL_EUNSUPPORTED if one does not compile. */
 static hol_err hol__use_progs(hol_render *r, const hol_frame_desc *f, int first, int last)
 {
