@@ -73,26 +73,29 @@
  * - Trunk shadows (issue 27): a trunk of radius HOL_SHADOW_TRUNK_M stands on
  *   every vertex of the tiling, taller (2.7 m and more) than any light, so
  *   a point P under its top is in its shadow from light L exactly when the
- *   floor geodesic segment from P to L's foot passes within the radius of
- *   the trunk's axis T (H2 x E is a product: the segment in H2 x E projects
- *   onto the floor geodesic). The distance from T to the geodesic through P
- *   and L: sinh d = |det(T, P, L)| / sinh x (x = d(P, L); flat: |det| /
- *   |P - L|, points (x, y, 1)); T lies between when the angles at P and at L
- *   are acute: cosh PL cosh PT > cosh LT and cosh PL cosh LT > cosh PT
- *   (flat: PL^2 + PT^2 > LT^2 and PL^2 + LT^2 > PT^2). The light is
- *   multiplied by max(0, 1 - sum of the occlusions o) over the trunks the
- *   tile has for it, o = 1 - smoothstep(r - e, r + e, d) (e =
- *   HOL_SHADOW_EDGE_M) when T lies between, 0 otherwise.
- * - Which trunks (the budget: docs/performance.md#lighting):
- *   hol_light_shadows gives a tile the shadows of one light, its nearest
- *   lantern (the first of its slots that is not a firefly; none when that
- *   lantern stands on the tile, whose own corners shadow only other tiles),
- *   up to HOL_SHADOW_TRUNKS trunks: among the corners of the tiles whose
- *   centre lies within 2 rho + r of the segment from the light to the
- *   tile's centre (rho the circumradius), those within r of the convex hull
- *   of the light and the tile and within R + r of the light (only those can
- *   shadow a point of the tile), nearest the light first. The other
- *   lanterns of the tile cast none on it.
+ *   floor geodesic segment from P to L's foot passes within the radius r
+ *   of the trunk's axis T (H2 x E is a product). Outside the trunk's own
+ *   disc that is where P lies beyond the geodesic through T perpendicular
+ *   to LT and between the two geodesics from L tangent to T's circle:
+ *   three half-planes, each affine in the drawing tile's Klein point k
+ *   (geodesics are straight in Klein; hol_light_wedge). With d the signed
+ *   distance from P into each (positive inside), the trunk's occlusion is
+ *   o = clamp(1/2 + min(sinh d) m / (2 e), 0, 1) (m metres per unit, e =
+ *   HOL_SHADOW_EDGE_M; flat: d in sides): a linear soft edge 2 e = 4 cm
+ *   wide across the tangent geodesics, centred on them. The light is
+ *   multiplied by max(0, 1 - the sum of the occlusions of its pairs).
+ * - Which trunks cast (the budget: docs/performance.md#lighting): every
+ *   trunk casts the shadow of its nearest lantern (among the frame's, not
+ *   the fireflies; ties to the first named), when within R of it: a
+ *   property of the trunk, so both sides of a tile edge agree.
+ *   hol_light_shadows gives a tile up to HOL_SHADOW_TRUNKS such pairs
+ *   whose shadow reaches it beyond r + e from the trunk (the tile's Klein
+ *   square clipped by the three half-planes), among the corners of the
+ *   tiles whose centre lies within 2 rho + r of the segment from one of
+ *   its lanterns to its centre (rho the circumradius) that lie within r of
+ *   the convex hull of that lantern and the tile, nearest their light
+ *   first; a pair whose lantern is not among the tile's 4 lights is
+ *   dropped (it reaches the tile only where more than 4 lanterns do).
  */
 #ifndef HOL_LIGHT_H
 #define HOL_LIGHT_H
