@@ -206,11 +206,12 @@ void hol_light_shadows(const hol_light_frame *lf, const double fr[9], const doub
 
 /* The shadow of trunk t from light l (both in a tile's own frame) as three
  * affine functions of the tile's Klein point k: out[j] = (a, b, c), value
- * a k_x + b k_y + c. g value (g = 1/sqrt(1 - |k|^2); flat: 1) is sinh of
- * the signed floor distance (flat: the distance) from the point to
- * geodesic j, in metres over 2 HOL_SHADOW_EDGE_M, positive on the
- * shadow's side: j 0 and 1 the geodesics from l tangent to the trunk's
- * circle, 2 the one through t perpendicular to lt (beyond t). */
+ * a k_x + b k_y + c. g value (g = 1/sqrt(1 - |k|^2); flat: 1) is
+ * sinh d m / (2 HOL_SHADOW_EDGE_M), d the signed floor distance (curvature
+ * units; flat: sides, no sinh) from the point to geodesic j, positive on
+ * the shadow's side, m metres per unit: j 0 and 1 the geodesics from l
+ * tangent to the trunk's circle, 2 the one through t perpendicular to lt
+ * (beyond t). */
 void hol_light_wedge(const hol_light_frame *lf, const double l[3], const double t[3],
                      double out[3][3]);
 
