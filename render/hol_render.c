@@ -97,7 +97,7 @@ struct hol_render {
     hol_gl gl;
     hol_scene *scene;
     GLuint vao[2], vbo[2], ibo[2]; /* [0] static, [1] dynamic */
-    hol__prog progs[192]; /* [0] day (the picture without lights), [1] lit
+    hol__prog progs[144]; /* [0] day (the picture without lights), [1] lit
                             tiles, [2] lit room meshes (no tile code), [3]
                             lit tiles of the flat {4,4}; [4 + k] the same
                             able to discard outside a branch's wedge (the
@@ -108,9 +108,9 @@ struct hol_render {
                             [16 + k] the lit tiles' with fireflies (HOL_FX
                             1: per-light heights and weights), [32 + k] and
                             spots (HOL_FX 2): only frames that have them pay;
-                            [48 v + k] the lit tiles' for tiles with 4
-                            (v 0), none (1), one (2) or two (3) trunk
-                            shadow pairs (HOL_SHD 4, 0, 1, 2) */
+                            [48 v + k] the lit tiles' for tiles with up
+                            to 4 (v 0), none (1) or up to two (2) trunk
+                            shadow pairs (HOL_SHD 4, 0, 2) */
     hol__prog *pg;      /* this frame's */
     hol_light_frame lights; /* this frame's (at dusk and night) */
     hol_mesh dyn;     /* per-frame geometry */
@@ -234,9 +234,7 @@ static const char *hol__vs =
     "#if HOL_SHD\n" \
     "vec4 hol_shadow(float g) {\n" \
     "  HOL_SV occ = clamp(min(min(v_S1, v_S2), v_S3) * g + 0.5, 0.0, 1.0);\n" \
-    "#if HOL_SHD == 1\n" \
-    "  return 1.0 - u_ts[9] * occ;\n" \
-    "#elif HOL_SHD == 2\n" \
+    "#if HOL_SHD == 2\n" \
     "  return 1.0 - min(u_ts[9] * occ.x + u_ts[10] * occ.y, 1.0);\n" \
     "#else\n" \
     "  return 1.0 - min(u_ts[9] * occ.x + u_ts[10] * occ.y + u_ts[11] * occ.z +\n" \
@@ -431,7 +429,7 @@ static GLuint hol__shader(const hol_gl *gl, GLenum type, int n, const char *cons
 static int hol__make_prog(hol_render *r, hol__prog *pg, int k)
 {
     char pre[256];
-    static const int lit[4] = {0, 1, 2, 1}, shd[4] = {4, 0, 1, 2};
+    static const int lit[4] = {0, 1, 2, 1}, shd[3] = {4, 0, 2};
     static const char *const sv[5][2] = {{"float", ""}, {"float", ".x"}, {"vec2", ".xy"},
                                          {"float", ""}, {"vec4", ""}};
     int nsh = shd[k / 48];
@@ -545,7 +543,7 @@ static int hol__prog_exists(int k)
 int hol_render_prepare(hol_render *r)
 {
     int left = 0, made = 0;
-    for (int k = 0; k < 192; k++) {
+    for (int k = 0; k < 144; k++) {
         if (!hol__prog_exists(k) || r->progs[k].prog)
             continue;
         if (!made) {
@@ -594,7 +592,7 @@ hol_err hol_render_create(const hol_render_desc *desc, hol_render **out)
      * others when a frame first uses one (hol__use_progs), or all now
      * (desc.all_programs), or by hol_render_prepare */
     int bad = hol__make_prog(r, &r->progs[0], 0);
-    for (int k = 1; k < 192 && d.all_programs; k++)
+    for (int k = 1; k < 144 && d.all_programs; k++)
         if (hol__prog_exists(k))
             bad = bad || hol__make_prog(r, &r->progs[k], k);
     if (bad) {
@@ -621,7 +619,7 @@ void hol_render_destroy(hol_render *r)
 {
     if (!r)
         return;
-    for (int k = 0; k < 192; k++)
+    for (int k = 0; k < 144; k++)
         if (r->progs[k].prog)
             r->gl.DeleteProgram(r->progs[k].prog);
     if (r->vao[0])
@@ -1356,7 +1354,7 @@ static void hol__frame_lights(hol_render *r, const hol_frame_desc *f)
 }
 
 /* This frame's program of a kind (0 day, 1 lit tiles with up to 4 trunk
- * shadow pairs, 2 lit room, 3, 4, 5 lit tiles with none, one, two): the
+ * shadow pairs, 2 lit room, 3, 4 lit tiles with none, up to two): the
  * lit tiles' hyperbolic or flat, with the wedge's discard when the view
  * has wedges. */
 static hol__prog *hol__prog_of(hol_render *r, const hol_frame_desc *f, int kind)
@@ -1375,7 +1373,7 @@ static hol__prog *hol__prog_of(hol_render *r, const hol_frame_desc *f, int kind)
 
 /* Compile, if not yet, the programs of the kinds first..last (kinds as in
  * hol__prog_of, last <= first) this frame uses: a command that draws only
- * the day compiles 1 or 2 programs of the 102 (each costs llvmpipe about
+ * the day compiles 1 or 2 programs of the 78 (each costs llvmpipe about
  * 8 ms of CPU). HOL_EUNSUPPORTED if one does not compile. */
 static hol_err hol__use_progs(hol_render *r, const hol_frame_desc *f, int first, int last)
 {
@@ -1427,7 +1425,7 @@ static void hol__frame_begin(hol_render *r, const hol_frame_desc *f, float vp[16
         }
     /* the per-frame uniforms of every program the frame uses: day's, or
      * at dusk and night the room's then the tiles' (current at the end) */
-    int first = f->lighting ? 5 : 0, last = f->lighting ? 1 : 0;
+    int first = f->lighting ? 4 : 0, last = f->lighting ? 1 : 0;
     for (int k = first; k >= last; k--) {
         r->pg = hol__prog_of(r, f, k);
         r->gl.UseProgram(r->pg->prog);
@@ -1535,7 +1533,7 @@ static void hol__set_pass_as(hol_render *r, const hol_frame_desc *f, int pass, c
  * programs (with trunk shadows, current at the end, and without). */
 static void hol__set_pass(hol_render *r, const hol_frame_desc *f, int pass, const float vp[16])
 {
-    for (int k = 3; k <= 5 && f->lighting && pass == HOL__PASS_TILE; k++)
+    for (int k = 3; k <= 4 && f->lighting && pass == HOL__PASS_TILE; k++)
         hol__set_pass_as(r, f, pass, vp, hol__prog_of(r, f, k));
     hol__set_pass_as(r, f, pass, vp,
                      f->lighting ? hol__prog_of(r, f, pass == HOL__PASS_ROOM ? 2 : 1) : NULL);
@@ -1549,7 +1547,7 @@ static void hol__item_uniforms(hol_render *r, const hol__item *it)
         return;
     r->gl.Uniform4fv(r->pg->u_tl, 4, &it->tl[0][0]);
     r->gl.Uniform4fv(r->pg->u_tx, 7, &it->tx[0][0]);
-    if (it->nsh) /* the variants with one or two read the first of each */
+    if (it->nsh) /* the variant for two reads the first two of each */
         r->gl.Uniform4fv(r->pg->u_ts, 13, &it->ts[0][0]);
 }
 
@@ -1580,7 +1578,7 @@ static void hol__execute(hol_render *r, const hol_frame_desc *f, const float vp[
             }
             if (f->lighting) { /* a tile with no shadow pair: the program without */
                 int nsh = it->nl >= 0 ? it->nsh : 0;
-                hol__prog *want = hol__prog_of(r, f, nsh > 2 ? 1 : 3 + nsh);
+                hol__prog *want = hol__prog_of(r, f, nsh > 2 ? 1 : nsh ? 4 : 3);
                 if (want != r->pg) {
                     r->pg = want;
                     r->gl.UseProgram(want->prog);
@@ -1639,7 +1637,7 @@ hol_err hol_render_frame(hol_render *r, const hol_frame_desc *f,
     }
     hol_err err = hol__build(r, f);
     if (!err)
-        err = f->lighting ? hol__use_progs(r, f, 5, 1) : hol__use_progs(r, f, 0, 0);
+        err = f->lighting ? hol__use_progs(r, f, 4, 1) : hol__use_progs(r, f, 0, 0);
     if (err)
         return err;
     for (int i = 0; i < r->nitems; i++)
