@@ -153,10 +153,6 @@ static void hol__shadow_frame(hol_light_frame *o)
     o->rho = hol_hyper_dist(c, o->corner[0], o->flat);
     o->trunk_r = HOL_SHADOW_TRUNK_M / o->metres_per_unit;
     o->reach = HOL_LIGHT_RADIUS_M / o->metres_per_unit;
-    double a = (HOL_SHADOW_TRUNK_M - HOL_SHADOW_EDGE_M) / o->metres_per_unit;
-    double b = (HOL_SHADOW_TRUNK_M + HOL_SHADOW_EDGE_M) / o->metres_per_unit;
-    o->s0 = o->flat ? a : sinh(a);
-    o->s1 = o->flat ? b : sinh(b);
 }
 
 static double hol__lor(const double a[3], const double b[3], int flat)
@@ -194,6 +190,12 @@ static void hol__mul3(const double A[9], const double B[9], double out[9])
             out[3 * i + j] = A[3 * i] * B[j] + A[3 * i + 1] * B[3 + j] + A[3 * i + 2] * B[6 + j];
 }
 
+/* The same point (coordinates within eps: a cheap test, no acosh)? */
+static int hol__same(const double a[3], const double b[3], double eps)
+{
+    return fabs(a[0] - b[0]) < eps && fabs(a[1] - b[1]) < eps && fabs(a[2] - b[2]) < eps;
+}
+
 /* Is point c within dmax of the segment from one of the used lights to the
  * tile's centre? */
 static int hol__near_segs(const hol_light_frame *lf, const double c[3], const double lp[][3],
@@ -228,7 +230,7 @@ static int hol__shadow_trunks(const hol_light_frame *lf, const double lp[][3],
                        fr[h][3 * r + 2] * lf->corner[k][2];
             int dup = 0;
             for (int i = 0; i < nv && !dup; i++)
-                dup = hol_hyper_dist(vt[i], v, lf->flat) < eps;
+                dup = hol__same(vt[i], v, eps);
             if (!dup && nv < maxv)
                 memcpy(vt[nv++], v, sizeof v);
         }
@@ -239,7 +241,7 @@ static int hol__shadow_trunks(const hol_light_frame *lf, const double lp[][3],
                 c[r] = fr[n][3 * r + 2];
             int dup = 0;
             for (int i = 0; i < n && !dup; i++)
-                dup = hol_hyper_dist(cen[i], c, lf->flat) < eps;
+                dup = hol__same(cen[i], c, eps);
             if (!dup && hol__near_segs(lf, c, lp, use, nl, wide))
                 n++;
         }
@@ -277,46 +279,153 @@ static int hol__may_shadow(const hol_light_frame *lf, const double t[3], const d
     return 0;
 }
 
-void hol_light_shadows(const hol_light_frame *lf, const double lp[][3], const uint8_t *use,
-                       int nl, hol_shadow_set *out)
+/* The nearest lantern (not a firefly) to point tu (user frame): its index
+ * in lf, ties within a relative 1e-9 to the first named, so that every
+ * tile's frame gives the same answer; -1 for none. */
+static int hol__nearest_lantern(const hol_light_frame *lf, const double tu[3])
 {
-    enum { NV = 96 };
-    double vt[NV][3], key[HOL_SHADOW_TRUNKS];
-    static const double o[3] = {0, 0, 1};
-    out->n = 0;
-    out->slot = 0;
-    int j = 0;
-    while (j < nl && !use[j])
-        j++;
-    if (j == nl)
-        return;
-    out->slot = j;
-    const double *l = lp[j];
-    double A = lf->klein * lf->cell_m / 2;
-    if (fabs(l[0] / l[2]) <= A && fabs(l[1] / l[2]) <= A)
-        return; /* a light on the tile: its trunks shadow only other tiles */
-    uint8_t one[HOL_LIGHT_PER_TILE] = {0};
-    one[j] = 1;
-    int nv = hol__shadow_trunks(lf, lp, one, nl, vt, NV);
-    for (int i = 0; i < nv; i++) {
-        double d = hol_hyper_dist(l, vt[i], lf->flat);
-        if (d >= lf->reach + lf->trunk_r ||
-            hol_light_seg_dist(vt[i], l, o, lf->flat) >= lf->rho + lf->trunk_r ||
-            !hol__may_shadow(lf, vt[i], l))
+    int best = -1;
+    double bk = 0;
+    for (int i = 0; i < lf->n; i++) {
+        if (lf->ff[i])
             continue;
-        /* insert by distance to the light (ties: the one found first) */
-        int k = out->n < HOL_SHADOW_TRUNKS ? out->n++ : HOL_SHADOW_TRUNKS;
-        while (k > 0 && key[k - 1] > d) {
-            if (k < HOL_SHADOW_TRUNKS) {
-                key[k] = key[k - 1];
-                memcpy(out->trunk[k], out->trunk[k - 1], sizeof out->trunk[0]);
+        const double *p = lf->pos[i];
+        double k = lf->flat ? (p[0] - tu[0]) * (p[0] - tu[0]) + (p[1] - tu[1]) * (p[1] - tu[1])
+                            : p[2] * tu[2] - p[0] * tu[0] - p[1] * tu[1];
+        if (best < 0 || k < bk - 1e-9 * (1 + fabs(bk))) {
+            best = i;
+            bk = k;
+        }
+    }
+    return best;
+}
+
+/* Does trunk t's shadow from light l (its half-planes h, hol_light_wedge)
+ * reach a point of the tile farther than r + e from t (nearer, the trunk
+ * hides the floor)? The tile (the Klein square) clipped by the three
+ * half-planes widened by the soft edge (g >= 1, so value >= -0.5 holds
+ * wherever the occlusion is not 0); distance from t is convex along the
+ * clipped polygon's straight (geodesic) edges, so its corners decide. */
+static int hol__wedge_reaches(const hol_light_frame *lf, const double t[3], double h[3][3])
+{
+    enum { NP = 12 };
+    double A = lf->klein * lf->cell_m / 2, poly[2][NP][2];
+    static const double sq[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+    int n = 4, cur = 0;
+    for (int i = 0; i < 4; i++)
+        poly[0][i][0] = sq[i][0] * A, poly[0][i][1] = sq[i][1] * A;
+    for (int j = 0; j < 3 && n > 0; j++) {
+        int m = 0;
+        for (int i = 0; i < n && m < NP - 1; i++) {
+            const double *a = poly[cur][i], *b = poly[cur][(i + 1) % n];
+            double va = h[j][0] * a[0] + h[j][1] * a[1] + h[j][2] + 0.5;
+            double vb = h[j][0] * b[0] + h[j][1] * b[1] + h[j][2] + 0.5;
+            if (va >= 0)
+                memcpy(poly[!cur][m++], a, sizeof poly[0][0]);
+            if ((va >= 0) != (vb >= 0)) {
+                double u = va / (va - vb);
+                poly[!cur][m][0] = a[0] + u * (b[0] - a[0]);
+                poly[!cur][m++][1] = a[1] + u * (b[1] - a[1]);
             }
-            k--;
         }
-        if (k < HOL_SHADOW_TRUNKS) {
-            key[k] = d;
-            memcpy(out->trunk[k], vt[i], sizeof vt[0]);
+        n = m;
+        cur = !cur;
+    }
+    double far = lf->trunk_r + HOL_SHADOW_EDGE_M / lf->metres_per_unit;
+    for (int i = 0; i < n; i++) {
+        const double *k = poly[cur][i];
+        double p[3] = {k[0], k[1], 1}, g = lf->flat ? 1 : 1 / sqrt(1 - k[0] * k[0] - k[1] * k[1]);
+        for (int r = 0; r < 3 && !lf->flat; r++)
+            p[r] *= g;
+        if (hol_hyper_dist(p, t, lf->flat) > far)
+            return 1;
+    }
+    return 0;
+}
+
+void hol_light_shadows(const hol_light_frame *lf, const double fr[9], const double lp[][3],
+                       const int *lidx, int nl, hol_shadow_set *out)
+{
+    enum { NV = 160 };
+    double vt[NV][3], key[HOL_SHADOW_TRUNKS];
+    out->n = 0;
+    uint8_t use[HOL_LIGHT_PER_TILE] = {0};
+    int any = 0;
+    for (int k = 0; k < nl; k++)
+        any |= use[k] = !lf->ff[lidx[k]];
+    if (!any)
+        return;
+    int nv = hol__shadow_trunks(lf, lp, use, nl, vt, NV);
+    for (int i = 0; i < nv; i++) {
+        double tu[3];
+        for (int r = 0; r < 3; r++)
+            tu[r] = fr[3 * r] * vt[i][0] + fr[3 * r + 1] * vt[i][1] + fr[3 * r + 2] * vt[i][2];
+        int near = hol__nearest_lantern(lf, tu), k = 0;
+        while (k < nl && lidx[k] != near)
+            k++;
+        if (k == nl)
+            continue; /* its lantern does not light this tile */
+        double d = hol_hyper_dist(lp[k], vt[i], lf->flat);
+        if (d >= lf->reach || d <= 2 * lf->trunk_r || !hol__may_shadow(lf, vt[i], lp[k]))
+            continue;
+        double h[3][3];
+        hol_light_wedge(lf, lp[k], vt[i], h);
+        if (!hol__wedge_reaches(lf, vt[i], h))
+            continue;
+        /* insert by distance to its light (ties: the one found first) */
+        int j = out->n < HOL_SHADOW_TRUNKS ? out->n++ : HOL_SHADOW_TRUNKS;
+        while (j > 0 && key[j - 1] > d) {
+            if (j < HOL_SHADOW_TRUNKS) {
+                key[j] = key[j - 1];
+                out->slot[j] = out->slot[j - 1];
+                memcpy(out->trunk[j], out->trunk[j - 1], sizeof out->trunk[0]);
+            }
+            j--;
         }
+        if (j < HOL_SHADOW_TRUNKS) {
+            key[j] = d;
+            out->slot[j] = k;
+            memcpy(out->trunk[j], vt[i], sizeof vt[0]);
+        }
+    }
+}
+
+void hol_light_wedge(const hol_light_frame *lf, const double l[3], const double t[3],
+                     double out[3][3])
+{
+    double sc = lf->metres_per_unit / (2 * HOL_SHADOW_EDGE_M), n[3][3];
+    if (lf->flat) {
+        double w[2] = {t[0] - l[0], t[1] - l[1]}, D = hypot(w[0], w[1]);
+        w[0] /= D, w[1] /= D;
+        double m[2] = {-w[1], w[0]}, sa = lf->trunk_r / D, ca = sqrt(1 - sa * sa);
+        for (int i = 0; i < 2; i++) {
+            n[0][i] = sa * w[i] - ca * m[i];
+            n[1][i] = sa * w[i] + ca * m[i];
+            n[2][i] = w[i];
+        }
+        for (int j = 0; j < 3; j++) {
+            const double *at = j == 2 ? t : l;
+            out[j][0] = n[j][0] * sc;
+            out[j][1] = n[j][1] * sc;
+            out[j][2] = -(n[j][0] * at[0] + n[j][1] * at[1]) * sc;
+        }
+        return;
+    }
+    double cD = -hol__lor(l, t, 0), sD = sqrt(cD * cD - 1);
+    double c[3] = {l[1] * t[2] - l[2] * t[1], l[2] * t[0] - l[0] * t[2],
+                   l[0] * t[1] - l[1] * t[0]};
+    double mm[3] = {c[0], c[1], -c[2]}, nm = sqrt(hol__lor(mm, mm, 0));
+    double sa = sinh(lf->trunk_r) / sD, ca = sqrt(1 - sa * sa);
+    for (int i = 0; i < 3; i++) {
+        double w = (t[i] - cD * l[i]) / sD, v = (l[i] - cD * t[i]) / sD, m = mm[i] / nm;
+        n[0][i] = sa * w - ca * m;
+        n[1][i] = sa * w + ca * m;
+        n[2][i] = -v;
+    }
+    for (int j = 0; j < 3; j++) { /* <n, P> = g (n_x k_x + n_y k_y - n_z) */
+        out[j][0] = n[j][0] * sc;
+        out[j][1] = n[j][1] * sc;
+        out[j][2] = -n[j][2] * sc;
     }
 }
 

@@ -73,26 +73,29 @@
  * - Trunk shadows (issue 27): a trunk of radius HOL_SHADOW_TRUNK_M stands on
  *   every vertex of the tiling, taller (2.7 m and more) than any light, so
  *   a point P under its top is in its shadow from light L exactly when the
- *   floor geodesic segment from P to L's foot passes within the radius of
- *   the trunk's axis T (H2 x E is a product: the segment in H2 x E projects
- *   onto the floor geodesic). The distance from T to the geodesic through P
- *   and L: sinh d = |det(T, P, L)| / sinh x (x = d(P, L); flat: |det| /
- *   |P - L|, points (x, y, 1)); T lies between when the angles at P and at L
- *   are acute: cosh PL cosh PT > cosh LT and cosh PL cosh LT > cosh PT
- *   (flat: PL^2 + PT^2 > LT^2 and PL^2 + LT^2 > PT^2). The light is
- *   multiplied by max(0, 1 - sum of the occlusions o) over the trunks the
- *   tile has for it, o = 1 - smoothstep(r - e, r + e, d) (e =
- *   HOL_SHADOW_EDGE_M) when T lies between, 0 otherwise.
- * - Which trunks (the budget: docs/performance.md#lighting):
- *   hol_light_shadows gives a tile the shadows of one light, its nearest
- *   lantern (the first of its slots that is not a firefly; none when that
- *   lantern stands on the tile, whose own corners shadow only other tiles),
- *   up to HOL_SHADOW_TRUNKS trunks: among the corners of the tiles whose
- *   centre lies within 2 rho + r of the segment from the light to the
- *   tile's centre (rho the circumradius), those within r of the convex hull
- *   of the light and the tile and within R + r of the light (only those can
- *   shadow a point of the tile), nearest the light first. The other
- *   lanterns of the tile cast none on it.
+ *   floor geodesic segment from P to L's foot passes within the radius r
+ *   of the trunk's axis T (H2 x E is a product). Outside the trunk's own
+ *   disc that is where P lies beyond the geodesic through T perpendicular
+ *   to LT and between the two geodesics from L tangent to T's circle:
+ *   three half-planes, each affine in the drawing tile's Klein point k
+ *   (geodesics are straight in Klein; hol_light_wedge). With d the signed
+ *   distance from P into each (positive inside), the trunk's occlusion is
+ *   o = clamp(1/2 + min(sinh d) m / (2 e), 0, 1) (m metres per unit, e =
+ *   HOL_SHADOW_EDGE_M; flat: d in sides): a linear soft edge 2 e = 4 cm
+ *   wide across the tangent geodesics, centred on them. The light is
+ *   multiplied by max(0, 1 - the sum of the occlusions of its pairs).
+ * - Which trunks cast (the budget: docs/performance.md#lighting): every
+ *   trunk casts the shadow of its nearest lantern (among the frame's, not
+ *   the fireflies; ties to the first named), when within R of it: a
+ *   property of the trunk, so both sides of a tile edge agree.
+ *   hol_light_shadows gives a tile up to HOL_SHADOW_TRUNKS such pairs
+ *   whose shadow reaches it beyond r + e from the trunk (the tile's Klein
+ *   square clipped by the three half-planes), among the corners of the
+ *   tiles whose centre lies within 2 rho + r of the segment from one of
+ *   its lanterns to its centre (rho the circumradius) that lie within r of
+ *   the convex hull of that lantern and the tile, nearest their light
+ *   first; a pair whose lantern is not among the tile's 4 lights is
+ *   dropped (it reaches the tile only where more than 4 lanterns do).
  */
 #ifndef HOL_LIGHT_H
 #define HOL_LIGHT_H
@@ -161,15 +164,14 @@ typedef struct hol_light_frame {
     double rho;                   /* its circumradius */
     double trunk_r;               /* HOL_SHADOW_TRUNK_M */
     double reach;                 /* HOL_LIGHT_RADIUS_M */
-    double s0, s1;                /* the soft edge: sinh (flat: the distance)
-                                     of r - e and r + e */
 } hol_light_frame;
 
-/* A tile's trunk shadows (hol_light_shadows), in the tile's own frame. */
+/* A tile's trunk shadow pairs (hol_light_shadows), in the tile's own
+ * frame: each a trunk and the light that casts its shadow. */
 typedef struct hol_shadow_set {
-    int n;                                /* trunks, 0..HOL_SHADOW_TRUNKS */
-    int slot;                             /* the light casting them: its
-                                             index in lp */
+    int n;                                /* pairs, 0..HOL_SHADOW_TRUNKS */
+    int slot[HOL_SHADOW_TRUNKS];          /* each pair's light: its index
+                                             in lp */
     double trunk[HOL_SHADOW_TRUNKS][3];   /* the trunks' points */
 } hol_shadow_set;
 
@@ -195,11 +197,23 @@ int hol_light_firefly(hol_tile t, const hol_tile_content *c, double cell_m, doub
 int hol_light_tile(const hol_light_frame *lf, hol_tile t, double out_frame[9],
                    int out_idx[HOL_LIGHT_PER_TILE]);
 
-/* The trunk shadow pairs of a tile (see the contract): lp[0..nl-1] its
- * lights' points in its own frame (hyperboloid; flat (x, y, 1)), use[i] 0
- * for a light that casts none (a firefly). Deterministic; no allocation. */
-void hol_light_shadows(const hol_light_frame *lf, const double lp[][3], const uint8_t *use,
-                       int nl, hol_shadow_set *out);
+/* The trunk shadow pairs of a tile (see the contract): fr its frame
+ * (hol_light_tile), lp[0..nl-1] its lights' points in its own frame
+ * (hyperboloid; flat (x, y, 1)), lidx[i] their indices in lf (a firefly
+ * casts none). Deterministic; no allocation. */
+void hol_light_shadows(const hol_light_frame *lf, const double fr[9], const double lp[][3],
+                       const int *lidx, int nl, hol_shadow_set *out);
+
+/* The shadow of trunk t from light l (both in a tile's own frame) as three
+ * affine functions of the tile's Klein point k: out[j] = (a, b, c), value
+ * a k_x + b k_y + c. g value (g = 1/sqrt(1 - |k|^2); flat: 1) is
+ * sinh d m / (2 HOL_SHADOW_EDGE_M), d the signed floor distance (curvature
+ * units; flat: sides, no sinh) from the point to geodesic j, positive on
+ * the shadow's side, m metres per unit: j 0 and 1 the geodesics from l
+ * tangent to the trunk's circle, 2 the one through t perpendicular to lt
+ * (beyond t). */
+void hol_light_wedge(const hol_light_frame *lf, const double l[3], const double t[3],
+                     double out[3][3]);
 
 /* The distance (curvature units; flat: tile sides) from point t to the
  * geodesic segment from a to b. */

@@ -3,6 +3,7 @@
 
 #include <math.h>
 #include <stdlib.h>
+#include <stdio.h>
 #include <string.h>
 #include <time.h>
 
@@ -81,7 +82,8 @@ typedef struct hol__item {
     float tl[4][4]; /* u_tl: its lights and the eye in the tile's own frame */
     float tx[7][4]; /* u_tx: the spots' tangents (3) and sines, heights,
                        lantern and firefly weights (hol__item_lights) */
-    float ts[8][4]; /* u_ts: its trunk shadow pairs (hol__item_shadows) */
+    float ts[13][4]; /* u_ts: its trunk shadow pairs (hol__item_shadows) */
+    int8_t nsh;      /* how many (0: the programs without shadows) */
     uint32_t first, count; /* index range */
     float model[16];
 } hol__item;
@@ -90,7 +92,7 @@ typedef struct hol__item {
 typedef struct hol__prog {
     GLuint prog;
     GLint u_vp, u_model, u_mode, u_id, u_eye, u_fog, u_fogd, u_lin, u_wedge, u_wmode;
-    GLint u_light, u_klein, u_mpu2, u_tl, u_eyeh, u_lonly, u_tx, u_ts, u_soff;
+    GLint u_light, u_klein, u_mpu2, u_tl, u_eyeh, u_lonly, u_tx, u_ts;
 } hol__prog;
 
 struct hol_render {
@@ -98,7 +100,7 @@ struct hol_render {
     hol_gl gl;
     hol_scene *scene;
     GLuint vao[2], vbo[2], ibo[2]; /* [0] static, [1] dynamic */
-    hol__prog progs[48]; /* [0] day (the picture without lights), [1] lit
+    hol__prog progs[144]; /* [0] day (the picture without lights), [1] lit
                             tiles, [2] lit room meshes (no tile code), [3]
                             lit tiles of the flat {4,4}; [4 + k] the same
                             able to discard outside a branch's wedge (the
@@ -108,7 +110,10 @@ struct hol_render {
                             uniforms cost llvmpipe a load per pixel);
                             [16 + k] the lit tiles' with fireflies (HOL_FX
                             1: per-light heights and weights), [32 + k] and
-                            spots (HOL_FX 2): only frames that have them pay */
+                            spots (HOL_FX 2): only frames that have them pay;
+                            [48 v + k] the lit tiles' for tiles with up
+                            to 4 (v 0), none (1) or up to two (2) trunk
+                            shadow pairs (HOL_SHD 4, 0, 2) */
     hol__prog *pg;      /* this frame's */
     hol_light_frame lights; /* this frame's (at dusk and night) */
     hol_mesh dyn;     /* per-frame geometry */
@@ -157,10 +162,14 @@ static const char *hol__vs =
     "uniform vec4 u_tl[4];\n"
     "out vec4 v_L;\n"
     "out float v_Le;\n"
-    /* the tile's trunk shadows (hol__item_shadows): A and T, affine */
-    "uniform vec4 u_ts[8];\n"
-    "out vec4 v_A;\n"
-    "out vec4 v_T;\n"
+    /* the tile's trunk shadow pairs (hol__item_shadows): three half-planes
+     * each, affine */
+    "#if HOL_SHD\n"
+    "uniform vec4 u_ts[13];\n"
+    "out HOL_SV v_S1;\n"
+    "out HOL_SV v_S2;\n"
+    "out HOL_SV v_S3;\n"
+    "#endif\n"
     "#if HOL_FX == 2\n"
     "uniform vec4 u_tx[7];\n"
     "out vec4 v_U;\n" /* <u, (k, 1)>: a spot's direction, affine too */
@@ -174,8 +183,11 @@ static const char *hol__vs =
     "#if HOL_LIT == 1\n"
     "  v_L = u_tl[2] - v_loc.x * u_tl[0] - v_loc.z * u_tl[1];\n"
     "  v_Le = u_tl[3].z - v_loc.x * u_tl[3].x - v_loc.z * u_tl[3].y;\n"
-    "  v_A = v_loc.x * u_ts[0] + v_loc.z * u_ts[1] + u_ts[2];\n"
-    "  v_T = u_ts[5] - v_loc.x * u_ts[3] - v_loc.z * u_ts[4];\n"
+    "#if HOL_SHD\n"
+    "  v_S1 = HOL_SV((v_loc.x * u_ts[0] + v_loc.z * u_ts[1] + u_ts[2]) HOL_SW);\n"
+    "  v_S2 = HOL_SV((v_loc.x * u_ts[3] + v_loc.z * u_ts[4] + u_ts[5]) HOL_SW);\n"
+    "  v_S3 = HOL_SV((v_loc.x * u_ts[6] + v_loc.z * u_ts[7] + u_ts[8]) HOL_SW);\n"
+    "#endif\n"
     "#if HOL_FX == 2\n"
     "  v_U = v_loc.x * u_tx[0] + v_loc.z * u_tx[1] - u_tx[2];\n"
     "#endif\n"
@@ -213,33 +225,30 @@ static const char *hol__vs =
     "#endif\n" \
     "  vec4 w = max(1.0 - d2 * (1.0 / (" HOL__STR(HOL_LIGHT_RADIUS_M) " * " HOL__STR(HOL_LIGHT_RADIUS_M) ")), 0.0);\n"
 
-/* The trunk shadows of a tile (hol_light.h): up to four trunks t from
- * one of its lights, l (the one-hot u_ts[7] selects it). Per trunk, A =
- * det(t, (k, 1), l) / (the soft edge's width) and T = -<(k, 1), t> from the
- * vertex shader, so sinh d = g |A| / sinh x (flat: d = |A| / |k - l|); the
- * trunk lies between the point and the light when cosh PL cosh PT > cosh
- * LT (flat: PL^2 + PT^2 > LT^2; the light's side holds for every trunk
- * hol_light_shadows picks); the light is multiplied by 1 - the sum of the
- * occlusions (0 at least). sh: sinh x of each light (flat: unused). */
+/* The trunk shadows of a tile (hol_light.h): up to four light-trunk pairs.
+ * Per pair, three affine functions of the Klein point (hol_light_wedge)
+ * interpolated exactly: times g, sinh of the signed distance to the two
+ * geodesics from the light tangent to the trunk and to the one through
+ * the trunk perpendicular to the light, over the soft edge's width 2 e, so
+ * the occlusion is a linear ramp 2 e wide centred on the shadow's edge;
+ * u_ts[9 + p] is pair p's light slot (one-hot), so the sum gathers each
+ * light's occlusions; the light is multiplied by 1 - that (0 at least). */
 #define HOL__SHADOW_GLSL \
-    "#if HOL_FLAT\n" \
-    "#define HOL_SH c2\n" \
+    "#if HOL_SHD\n" \
+    "vec4 hol_shadow(float g) {\n" \
+    "  HOL_SV occ = clamp(min(min(v_S1, v_S2), v_S3) * g + 0.5, 0.0, 1.0);\n" \
+    "#if HOL_SHD == 2\n" \
+    "  return 1.0 - min(u_ts[9] * occ.x + u_ts[10] * occ.y, 1.0);\n" \
     "#else\n" \
-    "#define HOL_SH sh\n" \
+    "  return 1.0 - min(u_ts[9] * occ.x + u_ts[10] * occ.y + u_ts[11] * occ.z +\n" \
+    "                   u_ts[12] * occ.w, 1.0);\n" \
     "#endif\n" \
-    "vec4 hol_shadow(float g, float o, vec4 L, vec4 c2, vec4 sh) {\n" \
-    "  vec4 sel = u_ts[7];\n" \
-    "#if HOL_FLAT\n" \
-    "  float cp = dot(c2, sel), shp = sqrt(cp);\n" \
-    "  vec4 ok = step(u_ts[6], cp + 2.0 * v_T + o);\n" \
+    "}\n" \
     "#else\n" \
-    "  float cp = g * dot(L, sel), shp = dot(sh, sel);\n" \
-    "  vec4 ok = step(u_ts[6], (cp * g) * v_T);\n" \
-    "#endif\n" \
-    "  vec4 e = clamp(abs(v_A) * (g / max(shp, 1e-6)) - u_soff, 0.0, 1.0);\n" \
-    "  float occ = dot(ok, 1.0 - e * e * (3.0 - 2.0 * e));\n" \
-    "  return 1.0 - sel * min(occ, 1.0);\n" \
-    "}\n"
+    "vec4 hol_shadow(float g) {\n" \
+    "  return vec4(1.0);\n" \
+    "}\n" \
+    "#endif\n"
 
 static const char *hol__fs =
     "precision highp float;\n"
@@ -265,10 +274,12 @@ static const char *hol__fs =
     "#if HOL_LIT == 1\n"
     "in vec4 v_L;\n"
     "in float v_Le;\n"
-    "in vec4 v_A;\n"
-    "in vec4 v_T;\n"
-    "uniform vec4 u_ts[8];\n"
-    "uniform float u_soff;\n"
+    "#if HOL_SHD\n"
+    "in HOL_SV v_S1;\n"
+    "in HOL_SV v_S2;\n"
+    "in HOL_SV v_S3;\n"
+    "uniform vec4 u_ts[13];\n"
+    "#endif\n"
     "#if HOL_FX\n"
     "uniform vec4 u_tx[7];\n"
     "#endif\n"
@@ -313,7 +324,7 @@ static const char *hol__fs =
     HOL__FALLOFF_GLSL
     "  vec4 id = inversesqrt(max(d2, 1e-8));\n"
     "  vec4 f = w * w * num / den;\n"
-    "  f *= hol_shadow(g, o, L, c2, HOL_SH);\n"
+    "  f *= hol_shadow(g);\n"
     /* the cone: only the programs of frames with a spot (HOL_FX 2) */
     "#if HOL_FX == 2\n"
     "  {\n"
@@ -335,7 +346,7 @@ static const char *hol__fs =
     "float hol_lights(vec4 L, float g2, float o, float dh, float nup) {\n"
     "  vec4 c2 = max(g2 * L + o, 0.0);\n"
     HOL__FALLOFF_GLSL
-    "  vec4 f = w * w * num / den * hol_shadow(0.5 * g2, o, L, c2, HOL_SH);\n"
+    "  vec4 f = w * w * num / den * hol_shadow(0.5 * g2);\n"
     "  return dot(f, 0.3 + (0.7 * max(nup, 0.0) * max(dh, 0.0)) * inversesqrt(max(d2, 1e-8)));\n"
     "}\n"
     "#endif\n"
@@ -420,15 +431,17 @@ static GLuint hol__shader(const hol_gl *gl, GLenum type, int n, const char *cons
  * picture before lights) or a lit one (dusk and night); 0 ok. */
 static int hol__make_prog(hol_render *r, hol__prog *pg, int k)
 {
-    char pre[] = "#version 300 es\n#define HOL_LIT 0\n#define HOL_FLAT 0\n#define HOL_WEDGE 0\n"
-                 "#define HOL_NIGHT 0\n#define HOL_FX 0\n";
-    static const char lit[4] = {'0', '1', '2', '1'};
-    pre[sizeof "#version 300 es\n#define HOL_LIT " - 1] = lit[k % 4];
-    pre[sizeof "#version 300 es\n#define HOL_LIT 0\n#define HOL_FLAT " - 1] = k % 4 == 3 ? '1' : '0';
-    pre[sizeof "#version 300 es\n#define HOL_LIT 0\n#define HOL_FLAT 0\n#define HOL_WEDGE " - 1] =
-        k % 8 >= 4 ? '1' : '0';
-    pre[sizeof pre - 3 - (sizeof "#define HOL_FX 0\n" - 1)] = k % 16 >= 8 ? '1' : '0';
-    pre[sizeof pre - 3] = (char)('0' + k / 16);
+    char pre[256];
+    static const int lit[4] = {0, 1, 2, 1}, shd[3] = {4, 0, 2};
+    static const char *const sv[5][2] = {{"float", ""}, {"float", ".x"}, {"vec2", ".xy"},
+                                         {"float", ""}, {"vec4", ""}};
+    int nsh = shd[k / 48];
+    snprintf(pre, sizeof pre,
+             "#version 300 es\n#define HOL_LIT %d\n#define HOL_FLAT %d\n#define HOL_WEDGE %d\n"
+             "#define HOL_NIGHT %d\n#define HOL_FX %d\n#define HOL_SHD %d\n"
+             "#define HOL_SV %s\n#define HOL_SW %s\n",
+             lit[k % 4], k % 4 == 3, k % 8 >= 4, k % 16 >= 8, k % 48 / 16, nsh, sv[nsh][0],
+             sv[nsh][1]);
     const char *fsrc[2] = {pre, hol__fs};
     const char *vsrc[2] = {fsrc[0], hol__vs};
     GLuint vs = hol__shader(&r->gl, GL_VERTEX_SHADER, 2, vsrc);
@@ -456,11 +469,11 @@ static int hol__make_prog(hol_render *r, hol__prog *pg, int k)
     static const char *const names[] = {"u_vp", "u_model", "u_mode", "u_id", "u_eye",
                                         "u_fog", "u_fogd", "u_lin", "u_wedge", "u_wmode",
                                         "u_light", "u_klein", "u_mpu2", "u_tl", "u_eyeh",
-                                        "u_lonly", "u_tx", "u_ts", "u_soff"};
+                                        "u_lonly", "u_tx", "u_ts"};
     GLint *loc[] = {&pg->u_vp, &pg->u_model, &pg->u_mode, &pg->u_id, &pg->u_eye,
                     &pg->u_fog, &pg->u_fogd, &pg->u_lin, &pg->u_wedge, &pg->u_wmode,
                     &pg->u_light, &pg->u_klein, &pg->u_mpu2, &pg->u_tl, &pg->u_eyeh,
-                    &pg->u_lonly, &pg->u_tx, &pg->u_ts, &pg->u_soff};
+                    &pg->u_lonly, &pg->u_tx, &pg->u_ts};
     for (size_t i = 0; i < sizeof loc / sizeof loc[0]; i++)
         *loc[i] = r->gl.GetUniformLocation(pg->prog, names[i]);
     return 0;
@@ -522,16 +535,18 @@ static void hol__static_grow(hol_render *r, int cap)
 }
 
 /* Whether program k is one of the renderer's: day has no night variant,
- * FX only the lit tiles'. */
+ * FX and the variants without shadows only the lit tiles'. */
 static int hol__prog_exists(int k)
 {
+    if (k >= 48)
+        return k % 2 && hol__prog_exists(k % 48);
     return k < 16 ? k % 4 || k < 8 : k % 2;
 }
 
 int hol_render_prepare(hol_render *r)
 {
     int left = 0, made = 0;
-    for (int k = 0; k < 48; k++) {
+    for (int k = 0; k < 144; k++) {
         if (!hol__prog_exists(k) || r->progs[k].prog)
             continue;
         if (!made) {
@@ -580,7 +595,7 @@ hol_err hol_render_create(const hol_render_desc *desc, hol_render **out)
      * others when a frame first uses one (hol__use_progs), or all now
      * (desc.all_programs), or by hol_render_prepare */
     int bad = hol__make_prog(r, &r->progs[0], 0);
-    for (int k = 1; k < 48 && d.all_programs; k++)
+    for (int k = 1; k < 144 && d.all_programs; k++)
         if (hol__prog_exists(k))
             bad = bad || hol__make_prog(r, &r->progs[k], k);
     if (bad) {
@@ -607,7 +622,7 @@ void hol_render_destroy(hol_render *r)
 {
     if (!r)
         return;
-    for (int k = 0; k < 48; k++)
+    for (int k = 0; k < 144; k++)
         if (r->progs[k].prog)
             r->gl.DeleteProgram(r->progs[k].prog);
     if (r->vao[0])
@@ -928,44 +943,35 @@ static void hol__tile_tangent(const double inv[9], const double u[3], const doub
     out[2] = (float)(flat ? a[0] * b[0] + a[1] * b[1] : a[2]);
 }
 
-/* A lit tile's trunk shadows (hol_light.h; the shader's hol_shadow), u_ts:
- * [0..2] w = l x t (Euclidean; flat points (x, y, 1)) over the soft edge's
- * width, so that A = (k, 1) . w; [3..5] the trunk as a light slot (T = t.z
- * - k . t.xy); [6] cosh LT (flat: LT^2; 1e30 for no trunk); [7] the light's
- * slot, one-hot. */
-static void hol__item_shadows(const hol_light_frame *lf, hol__item *it, const double inv[9],
-                              const int idx[], int n)
+/* A lit tile's trunk shadow pairs (hol_light.h; the shader's hol_shadow),
+ * u_ts: [3 j + i] coefficient i (k_x, k_y, 1) of half-plane j of each pair
+ * (hol_light_wedge; an empty pair's are 0, 0, -1: no shadow); [9 + p]
+ * pair p's light slot, one-hot. */
+static void hol__item_shadows(const hol_light_frame *lf, hol__item *it, const double fr[9],
+                              const double inv[9], const int idx[], int n)
 {
     double lp[HOL_LIGHT_PER_TILE][3];
-    uint8_t use[HOL_LIGHT_PER_TILE];
     for (int k = 0; k < n; k++) {
         const double *p = lf->pos[idx[k]];
         for (int i = 0; i < 3; i++)
             lp[k][i] = inv[3 * i] * p[0] + inv[3 * i + 1] * p[1] + inv[3 * i + 2] * p[2];
-        use[k] = !lf->ff[idx[k]];
     }
     hol_shadow_set ss;
-    hol_light_shadows(lf, (const double(*)[3])lp, use, n, &ss);
+    hol_light_shadows(lf, fr, (const double(*)[3])lp, idx, n, &ss);
     memset(it->ts, 0, sizeof it->ts);
-    double sc = 1 / (lf->s1 - lf->s0);
+    it->nsh = (int8_t)ss.n;
     for (int m = 0; m < HOL_SHADOW_TRUNKS; m++) {
-        it->ts[6][m] = 1e30f;
-        if (m >= ss.n)
+        if (m >= ss.n) {
+            it->ts[2][m] = it->ts[5][m] = it->ts[8][m] = -1;
             continue;
-        const double *t = ss.trunk[m], *l = lp[ss.slot];
-        double w[3] = {l[1] * t[2] - l[2] * t[1], l[2] * t[0] - l[0] * t[2],
-                       l[0] * t[1] - l[1] * t[0]};
-        float ts[3];
-        hol__tile_slot((const double[9]){1, 0, 0, 0, 1, 0, 0, 0, 1}, t, lf->flat, ts);
-        for (int i = 0; i < 3; i++) {
-            it->ts[i][m] = (float)(w[i] * sc);
-            it->ts[3 + i][m] = ts[i];
         }
-        double d = hol_hyper_dist(l, t, lf->flat);
-        it->ts[6][m] = (float)(lf->flat ? d * d : cosh(d));
+        double h[3][3];
+        hol_light_wedge(lf, lp[ss.slot[m]], ss.trunk[m], h);
+        for (int j = 0; j < 3; j++)
+            for (int i = 0; i < 3; i++)
+                it->ts[3 * j + i][m] = (float)h[j][i];
+        it->ts[9 + m][ss.slot[m]] = 1;
     }
-    if (ss.n > 0)
-        it->ts[7][ss.slot] = 1;
 }
 
 /* A lit tile's lights and the eye in the tile's own frame (u_tl: the
@@ -977,6 +983,7 @@ static void hol__item_lights(hol_render *r, hol__item *it, hol_tile t)
     int idx[HOL_LIGHT_PER_TILE];
     int n = hol_light_tile(&r->lights, t, fr, idx);
     it->nl = (int8_t)n;
+    it->nsh = 0;
     if (n < 0)
         return;
     /* the inverse of the frame: Lorentz J F^T J (flat: the rigid motion's) */
@@ -1009,7 +1016,7 @@ static void hol__item_lights(hol_render *r, hol__item *it, hol_tile t)
     }
     hol__tile_slot(inv, r->lights.eye, flat, it->tl[3]);
     it->tl[3][3] = 0;
-    hol__item_shadows(lf, it, inv, idx, n);
+    hol__item_shadows(lf, it, fr, inv, idx, n);
 }
 
 /* A firefly's sprite (render/hol_light.h): when tile t has one of the
@@ -1347,26 +1354,29 @@ static void hol__frame_lights(hol_render *r, const hol_frame_desc *f)
     r->gl.Uniform1f(r->pg->u_klein, (float)lf->klein);
     r->gl.Uniform1f(r->pg->u_mpu2, (float)(lf->metres_per_unit * lf->metres_per_unit));
     r->gl.Uniform1f(r->pg->u_eyeh, (float)lf->eye_h);
-    r->gl.Uniform1f(r->pg->u_soff, (float)(lf->s0 / (lf->s1 - lf->s0)));
 }
 
-/* This frame's program of a kind (0 day, 1 lit tiles, 2 lit room): the
+/* This frame's program of a kind (0 day, 1 lit tiles with up to 4 trunk
+ * shadow pairs, 2 lit room, 3, 4 lit tiles with none, up to two): the
  * lit tiles' hyperbolic or flat, with the wedge's discard when the view
  * has wedges. */
 static hol__prog *hol__prog_of(hol_render *r, const hol_frame_desc *f, int kind)
 {
+    int var = kind >= 3 ? kind - 2 : 0;
+    if (var)
+        kind = 1;
     if (kind == 1 && r->lights.flat)
         kind = 3;
     if (kind && f->lighting == HOL_RENDER_NIGHT)
         kind += 8;
     if (kind % 2)
         kind += 16 * r->lights.fx;
-    return &r->progs[kind + (r->view.wedges ? 4 : 0)];
+    return &r->progs[kind + (r->view.wedges ? 4 : 0) + 48 * var];
 }
 
 /* Compile, if not yet, the programs of the kinds first..last (kinds as in
  * hol__prog_of, last <= first) this frame uses: a command that draws only
- * the day compiles 1 or 2 programs of the 30 (each costs llvmpipe about
+ * the day compiles 1 or 2 programs of the 78 (each costs llvmpipe about
  * 8 ms of CPU). HOL_EUNSUPPORTED if one does not compile. */
 static hol_err hol__use_progs(hol_render *r, const hol_frame_desc *f, int first, int last)
 {
@@ -1418,7 +1428,7 @@ static void hol__frame_begin(hol_render *r, const hol_frame_desc *f, float vp[16
         }
     /* the per-frame uniforms of every program the frame uses: day's, or
      * at dusk and night the room's then the tiles' (current at the end) */
-    int first = f->lighting ? 2 : 0, last = f->lighting ? 1 : 0;
+    int first = f->lighting ? 4 : 0, last = f->lighting ? 1 : 0;
     for (int k = first; k >= last; k--) {
         r->pg = hol__prog_of(r, f, k);
         r->gl.UseProgram(r->pg->prog);
@@ -1436,13 +1446,13 @@ static void hol__frame_begin(hol_render *r, const hol_frame_desc *f, float vp[16
 
 /* The GL state of a pass (vp: the view-projection, for the passes in the
  * world). */
-static void hol__set_pass(hol_render *r, const hol_frame_desc *f, int pass, const float vp[16])
+static void hol__set_pass_as(hol_render *r, const hol_frame_desc *f, int pass, const float vp[16],
+                             hol__prog *want)
 {
     int ids = (f->flags & HOL_RENDER_IDS) != 0;
     float ident[16];
     hol__identity(ident);
-    if (f->lighting) { /* the room's meshes: the program without tile code */
-        hol__prog *want = hol__prog_of(r, f, pass == HOL__PASS_ROOM ? 2 : 1);
+    if (want) { /* the room's meshes: the program without tile code */
         if (want != r->pg) {
             r->pg = want;
             r->gl.UseProgram(want->prog);
@@ -1521,6 +1531,17 @@ static void hol__set_pass(hol_render *r, const hol_frame_desc *f, int pass, cons
     }
 }
 
+/* The GL state of a pass: at dusk and night the room's meshes take the
+ * program without tile code, and the tile pass's state goes to both tile
+ * programs (with trunk shadows, current at the end, and without). */
+static void hol__set_pass(hol_render *r, const hol_frame_desc *f, int pass, const float vp[16])
+{
+    for (int k = 3; k <= 4 && f->lighting && pass == HOL__PASS_TILE; k++)
+        hol__set_pass_as(r, f, pass, vp, hol__prog_of(r, f, k));
+    hol__set_pass_as(r, f, pass, vp,
+                     f->lighting ? hol__prog_of(r, f, pass == HOL__PASS_ROOM ? 2 : 1) : NULL);
+}
+
 /* A lit tile's frame and lights (a tile without a frame: as the room). */
 static void hol__item_uniforms(hol_render *r, const hol__item *it)
 {
@@ -1529,7 +1550,8 @@ static void hol__item_uniforms(hol_render *r, const hol__item *it)
         return;
     r->gl.Uniform4fv(r->pg->u_tl, 4, &it->tl[0][0]);
     r->gl.Uniform4fv(r->pg->u_tx, 7, &it->tx[0][0]);
-    r->gl.Uniform4fv(r->pg->u_ts, 8, &it->ts[0][0]);
+    if (it->nsh) /* the variant for two reads the first two of each */
+        r->gl.Uniform4fv(r->pg->u_ts, 13, &it->ts[0][0]);
 }
 
 /* Execute the sorted queue, skipping redundant state changes. */
@@ -1556,6 +1578,15 @@ static void hol__execute(hol_render *r, const hol_frame_desc *f, const float vp[
                 cur_ref = it->ref;
                 cur_mask = it->mask;
                 st->state_changes++;
+            }
+            if (f->lighting) { /* a tile with no shadow pair: the program without */
+                int nsh = it->nl >= 0 ? it->nsh : 0;
+                hol__prog *want = hol__prog_of(r, f, nsh > 2 ? 1 : nsh ? 4 : 3);
+                if (want != r->pg) {
+                    r->pg = want;
+                    r->gl.UseProgram(want->prog);
+                    st->state_changes++;
+                }
             }
             r->gl.UniformMatrix4fv(r->pg->u_model, 1, GL_FALSE, it->model);
             if (f->lighting)
@@ -1609,7 +1640,7 @@ hol_err hol_render_frame(hol_render *r, const hol_frame_desc *f,
     }
     hol_err err = hol__build(r, f);
     if (!err)
-        err = f->lighting ? hol__use_progs(r, f, 2, 1) : hol__use_progs(r, f, 0, 0);
+        err = f->lighting ? hol__use_progs(r, f, 4, 1) : hol__use_progs(r, f, 0, 0);
     if (err)
         return err;
     for (int i = 0; i < r->nitems; i++)

@@ -124,12 +124,15 @@ static double thread_ms(void)
 /* The lights of every drawn tile of the last frame's view, chosen n times:
  * ms per frame; *out_mean the mean lights a tile, *out_four the tiles
  * with 4. */
+static int pairs; /* the shadow pairs of the view's tiles (light_choice_ms) */
+
 static double light_choice_ms(hol_render *r, const hol_frame_desc *f, int n, double *out_mean,
                               int *out_four, int *out_tiles)
 {
     const hol_view *v = hol_render_last_view(r);
     static hol_light_frame lf;
     int sum = 0, four = 0, tiles = 0;
+    pairs = 0;
     double t0 = thread_ms();
     for (int k = 0; k < n; k++) {
         hol_light_prepare(f, NULL, &lf);
@@ -141,16 +144,20 @@ static double light_choice_ms(hol_render *r, const hol_frame_desc *f, int n, dou
             if (nl > 0) { /* and its trunk shadows (hol_light_shadows), as the
                              renderer does: the lights in the tile's frame */
                 double lp[HOL_LIGHT_PER_TILE][3];
-                uint8_t use[HOL_LIGHT_PER_TILE];
                 for (int j = 0; j < nl; j++) {
                     const double *p = lf.pos[idx[j]];
                     for (int i = 0; i < 3; i++) /* J F^T J: the inverse (hyperbolic) */
                         lp[j][i] = (i == 2 ? -1 : 1) * (fr[i] * p[0] + fr[3 + i] * p[1] -
                                                         fr[6 + i] * p[2]);
-                    use[j] = !lf.ff[idx[j]];
                 }
                 hol_shadow_set ss;
-                hol_light_shadows(&lf, (const double(*)[3])lp, use, nl, &ss);
+                hol_light_shadows(&lf, fr, (const double(*)[3])lp, idx, nl, &ss);
+                if (k == 0) {
+                    pairs += ss.n;
+                    if (getenv("BENCH_PAIRS"))
+                        printf("    branch %d (%d steps): %d pairs\n", b,
+                               v->branches[b].nsteps, ss.n);
+                }
             }
             if (k == 0 && nl >= 0) {
                 sum += nl;
@@ -256,6 +263,8 @@ static int bench_lighting(hol_render *r)
         char name[16], per[32];
         snprintf(name, sizeof name, "{4,%d}", qs[i]);
         snprintf(per, sizeof per, "%.2f (%d/%d: 4)", mean, four, tiles);
+        printf("  (%s: %d trunk shadow pairs on the %d tiles)\n", qs[i] == 5 ? "{4,5}" : "{4,6}",
+               pairs, tiles);
         double fratio = tf[LFRAMES / 2] / td[LFRAMES / 2];
         double sratio = ts[LFRAMES / 2] / td[LFRAMES / 2];
         printf("  %-8s %8.2f %8.2f %6.3f %10.2f %12s %14.4f %8.2f %6.3f %8.2f %6.3f\n", name,
