@@ -115,7 +115,9 @@ try {
   for (const sky of ['day', 'night'])
     fs.writeFileSync(path.join(tmp, `bench-${sky}.lvl`), `mode explore\nseed 3\nminimap off\nlighting ${sky}\n${lanterns}`);
   const sky = { day: { main: [], all: [] }, night: { main: [], all: [] } };
-  for (const s of ['day', 'night', 'day', 'night']) {
+  // NIGHT_PAIRS (default 2) pairs of a day run then a night run
+  const pairs = Math.max(1, +(process.env.NIGHT_PAIRS || 2));
+  for (const s of Array.from({ length: 2 * pairs }, (_, i) => (i % 2 ? 'night' : 'day'))) {
     const q = await openPage(browser, server.base + `/?level=/test/bench-${s}.lvl`, { iwer: true });
     await enterVR(q);
     await q.page.evaluate(() => xrDevice.quaternion.set(-0.2164, 0, 0, 0.9763)); /* 25 degrees down: the lit floor */
@@ -132,6 +134,8 @@ try {
   for (const [k, label] of [['main', 'main thread per XR frame (median of each run)'], ['all', 'all chromium processes per XR frame (CPU)']])
     console.log(`  night (8 lanterns) against day, ${label}: day ${avg(sky.day[k]).toFixed(2)} ms, night ${avg(sky.night[k]).toFixed(2)} ms, ` +
       `night/day ${(avg(sky.night[k]) / avg(sky.day[k])).toFixed(2)} (runs: day ${sky.day[k].map((v) => v.toFixed(1)).join(', ')}; night ${sky.night[k].map((v) => v.toFixed(1)).join(', ')})`);
+  const ratios = sky.night.all.map((v, i) => v / sky.day.all[i]);
+  console.log(`  night/day of all chromium's CPU, each pair: ${ratios.map((v) => v.toFixed(2)).join(', ')}; median ${median(ratios).toFixed(2)}`);
   console.log(`  (machine: ${os.cpus().length} cores, load average ${os.loadavg()[0].toFixed(1)})`);
 } finally {
   await browser.close();
