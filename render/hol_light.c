@@ -333,10 +333,8 @@ static int hol__wedge_reaches(const hol_light_frame *lf, const double t[3], doub
     }
     double far = lf->trunk_r + HOL_SHADOW_EDGE_M / lf->metres_per_unit;
     for (int i = 0; i < n; i++) {
-        const double *k = poly[cur][i];
-        double p[3] = {k[0], k[1], 1}, g = lf->flat ? 1 : 1 / sqrt(1 - k[0] * k[0] - k[1] * k[1]);
-        for (int r = 0; r < 3 && !lf->flat; r++)
-            p[r] *= g;
+        double p[3];
+        hol_hyper_from_klein(poly[cur][i][0], poly[cur][i][1], lf->flat, p);
         if (hol_hyper_dist(p, t, lf->flat) > far)
             return 1;
     }
