@@ -38,6 +38,8 @@
 #define HOL__SLOTS 96
 #define HOL__SLOTS_FIRST 16
 #define HOL__SLOTS_MID 48
+/* shader program slots: 48 kinds x 3 shadow variants (hol__prog_exists) */
+#define HOL__NPROG 144
 #define HOL__SLOT_V 8192u
 #define HOL__SLOT_I 16384u
 #define HOL__HUD_V (1u << 14) /* the resident minimap, after the room */
@@ -100,7 +102,7 @@ struct hol_render {
     hol_gl gl;
     hol_scene *scene;
     GLuint vao[2], vbo[2], ibo[2]; /* [0] static, [1] dynamic */
-    hol__prog progs[144]; /* [0] day (the picture without lights), [1] lit
+    hol__prog progs[HOL__NPROG]; /* [0] day (the picture without lights), [1] lit
                             tiles, [2] lit room meshes (no tile code), [3]
                             lit tiles of the flat {4,4}; [4 + k] the same
                             able to discard outside a branch's wedge (the
@@ -546,7 +548,7 @@ static int hol__prog_exists(int k)
 int hol_render_prepare(hol_render *r)
 {
     int left = 0, made = 0;
-    for (int k = 0; k < 144; k++) {
+    for (int k = 0; k < HOL__NPROG; k++) {
         if (!hol__prog_exists(k) || r->progs[k].prog)
             continue;
         if (!made) {
@@ -595,7 +597,7 @@ hol_err hol_render_create(const hol_render_desc *desc, hol_render **out)
      * others when a frame first uses one (hol__use_progs), or all now
      * (desc.all_programs), or by hol_render_prepare */
     int bad = hol__make_prog(r, &r->progs[0], 0);
-    for (int k = 1; k < 144 && d.all_programs; k++)
+    for (int k = 1; k < HOL__NPROG && d.all_programs; k++)
         if (hol__prog_exists(k))
             bad = bad || hol__make_prog(r, &r->progs[k], k);
     if (bad) {
@@ -622,7 +624,7 @@ void hol_render_destroy(hol_render *r)
 {
     if (!r)
         return;
-    for (int k = 0; k < 144; k++)
+    for (int k = 0; k < HOL__NPROG; k++)
         if (r->progs[k].prog)
             r->gl.DeleteProgram(r->progs[k].prog);
     if (r->vao[0])
