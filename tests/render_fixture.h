@@ -7,6 +7,9 @@
  * Contract
  * - render_fixture_make / render_fixture_destroy: the context, world and
  *   renderer (0, or -1 said on stderr).
+ * - render_fixture_eager(f, out): a second renderer on f's world that
+ *   compiles every shader program at create (desc.all_programs), as the
+ *   headset's; 0, or -1 (the caller destroys *out).
  * - render_fixture_frame(w, h, pitch_deg): a frame description of w x h
  *   at the start (hol_room_start: the middle cell of {4,5} 3 x 3), the eye
  *   at the cell's centre (1.5, 1.6, 1.5) looking north, pitch_deg up
@@ -63,6 +66,17 @@ static inline int render_fixture_make(render_fixture *f, int w, int h, uint64_t 
         return -1;
     }
     return 0;
+}
+
+static inline int render_fixture_eager(const render_fixture *f, hol_render **out)
+{
+    hol_render_desc rd;
+    memset(&rd, 0, sizeof rd);
+    rd.world = f->world;
+    rd.getproc = hol_osmesa_getproc;
+    rd.debug = 1;
+    rd.all_programs = 1;
+    return hol_render_create(&rd, out) ? -1 : 0;
 }
 
 static inline void render_fixture_destroy(render_fixture *f)

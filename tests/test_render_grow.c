@@ -32,13 +32,7 @@ static int setup(void **state)
     (void)state;
     if (render_fixture_make(&fx, W, H, 11))
         return -1;
-    hol_render_desc rd;
-    memset(&rd, 0, sizeof rd);
-    rd.world = fx.world;
-    rd.getproc = hol_osmesa_getproc;
-    rd.debug = 1;
-    rd.all_programs = 1;
-    return hol_render_create(&rd, &full) ? -1 : 0;
+    return render_fixture_eager(&fx, &full);
 }
 
 static int teardown(void **state)

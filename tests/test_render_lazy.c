@@ -52,13 +52,7 @@ static int setup(void **state)
     /* the fixture's renderer again, compiling every program at create */
     hol_render_destroy(fx.rnd);
     fx.rnd = NULL;
-    hol_render_desc rd;
-    memset(&rd, 0, sizeof rd);
-    rd.world = fx.world;
-    rd.getproc = hol_osmesa_getproc;
-    rd.debug = 1;
-    rd.all_programs = 1;
-    return hol_render_create(&rd, &fx.rnd) ? -1 : 0;
+    return render_fixture_eager(&fx, &fx.rnd);
 }
 
 static int teardown(void **state)
