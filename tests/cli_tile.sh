@@ -77,6 +77,36 @@ for qc in "4:1 4 8 12 16 20" "5:1 4 12 28 64 148" "6:1 4 12 32 84 220" \
   got=$(sort -u "$T/addr" | awk '{ c[$2]++ } END { for (i = 0; i <= 5; i++) printf "%s%d", i ? " " : "", c[i] }')
   [ "$got" = "$want" ] && ok || bad "{4,$q} tiles by distance: $got, want $want"
 done
+# ---- tile count (SPEC 9): the same counts as every walk of up to 5 steps ----
+for qc in "4:1 4 8 12 16 20" "5:1 4 12 28 64 148" "6:1 4 12 32 84 220" \
+          "7:1 4 12 36 100 284" "8:1 4 12 36 104 300"; do
+  q=${qc%%:*} want=${qc#*:}
+  got=$("$H" tile count --radius 5 --tiling "4,$q" </dev/null 2>"$T/err" |
+        awk '$1 == NR - 1 { printf "%s%s", (NR > 1 ? " " : ""), $2 } END { if (NR != 6) print " rows " NR }')
+  [ "$got" = "$want" ] && ok || bad "tile count {4,$q}: $got, want $want"
+done
+: >"$T/in"
+expect "tile count radius 0" 0 '0 1
+' "$H" tile count --radius 0
+expect "tile count --radius=3 before count, {4,4}" 0 '0 1
+1 4
+2 8
+3 12
+' "$H" tile --radius=3 --tiling 4,4 count
+"$H" tile count --radius 12 --tiling 4,8 >"$T/out" 2>"$T/err"; st=$?
+[ $st = 0 ] && [ "$(wc -l <"$T/out")" = 13 ] && [ "$(tail -1 "$T/out")" = "12 505656" ] && ok ||
+  bad "tile count radius 12 in {4,8}: status $st, $(tail -1 "$T/out")"
+for v in 13 -1 x 0x3 "" 1.0 " 3" 3x 012345; do
+  expect "tile count --radius '$v'" 2 '' "$H" tile count --radius "$v"
+  err_line "radius"
+done
+expect "tile count without --radius" 2 '' "$H" tile count
+err_line "required"
+expect "tile count with an argument" 2 '' "$H" tile count --radius 2 extra
+err_line "takes no arguments"
+expect "--radius on tile walk" 2 '' "$H" tile walk --radius 2
+err_line "tile count"
+expect "--radius twice" 2 '' "$H" tile count --radius 2 --radius 3
 # the option's forms and places, and the default
 printf 'NESW\n' >"$T/in"
 expect "flat NESW closes" 0 'O 0

@@ -1,6 +1,8 @@
-/* cmd_tile.c - `holonomy tile walk`, `tile dist` (SPEC 4) and `tile bearing`
- * (SPEC 8). */
+/* cmd_tile.c - `holonomy tile walk`, `tile dist` (SPEC 4), `tile bearing`
+ * (SPEC 8) and `tile count` (SPEC 9). */
 #include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "../../core/hol_bearing.h"
@@ -10,6 +12,7 @@
 
 static const char *const tile_usage =
     "usage: holonomy tile walk|dist|bearing [--tiling 4,Q]\n"
+    "       holonomy tile count --radius N [--tiling 4,Q]\n"
     "\n"
     "  tile walk   read lines of room steps (N, E, S, W; '-' or an empty line\n"
     "              for none), each a free walk from the start, and print per\n"
@@ -24,7 +27,10 @@ static const char *const tile_usage =
     "              when the walk ends on TARGET); FLAT: the direction, in a\n"
     "              flat grid, to where the walk first stood on TARGET ('-'\n"
     "              when it never did or that vector is zero)\n"
+    "  tile count  print N + 1 lines 'D COUNT', D = 0..N: the number of tiles\n"
+    "              at exactly D steps from O (SPEC 9); reads no input\n"
     "\n"
+    "  --radius N     tile count's radius, a whole number from 0 to 12\n"
     "  --tiling 4,Q   the square tiling {4,Q}, Q squares round every vertex,\n"
     "                 Q from 4 (the flat grid) to 8; default 4,5\n"
     "\n"
@@ -171,18 +177,47 @@ static int bearing_line(void *ctx, long lineno, char *s, size_t len)
     return CLI_EXIT_OK;
 }
 
+/* `tile count`: D COUNT for D = 0..radius (radius -1: --radius missing). */
+static int tile_count(int q, int radius)
+{
+    if (radius < 0) {
+        cli_error("tile count", 0, "--radius N is required (N from 0 to 12)");
+        return CLI_EXIT_USAGE;
+    }
+    for (int d = 0; d <= radius; d++)
+        printf("%d %llu\n", d, (unsigned long long)hol_tile_count_at(q, d));
+    return cli_finish_output("tile count");
+}
+
+/* --radius N: a decimal whole number 0..12 (SPEC 9). 0 ok, -1 reported. */
+static int radius_value(const char *v, int *out_radius)
+{
+    size_t n = strlen(v);
+    if (n == 0 || n > 2 || strspn(v, "0123456789") != n || atoi(v) > 12) {
+        cli_error("tile", 0, "--radius '%.40s' is not a whole number from 0 to 12", v);
+        return -1;
+    }
+    *out_radius = atoi(v);
+    return 0;
+}
+
 int cli_cmd_tile(int argc, char **argv)
 {
-    static const char *const valued[] = {"--tiling", NULL};
+    static const char *const valued[] = {"--tiling", "--radius", NULL};
     if (cli_wants_help(argc, argv, valued)) {
         fputs(tile_usage, stdout);
         return cli_finish_output("tile");
     }
-    int q = HOL_TILING_DEFAULT_Q, npos = 0, r;
+    int q = HOL_TILING_DEFAULT_Q, npos = 0, r, radius = -1;
     const char *pos[2] = {NULL, NULL}, *a, *val;
     cli_opts p;
     cli_opts_init(&p, "tile", argc, argv, valued, NULL);
     while ((r = cli_opts_next(&p, &a, &val)) > 0) {
+        if (a && !strcmp(a, "--radius")) {
+            if (radius_value(val, &radius) < 0)
+                return CLI_EXIT_USAGE;
+            continue;
+        }
         if (a && cli_geometry_value("tile", a, val, &q, NULL, NULL) < 0)
             return CLI_EXIT_USAGE;
         if (!a && npos == 2) {
@@ -194,6 +229,17 @@ int cli_cmd_tile(int argc, char **argv)
     }
     if (r < 0)
         return CLI_EXIT_USAGE;
+    int is_count = npos >= 1 && !strcmp(pos[0], "count");
+    if (is_count && npos > 1) {
+        cli_error("tile", 0, "'count' takes no arguments; see --help");
+        return CLI_EXIT_USAGE;
+    }
+    if (radius >= 0 && !is_count) {
+        cli_error("tile", 0, "--radius is an option of 'tile count' only");
+        return CLI_EXIT_USAGE;
+    }
+    if (is_count)
+        return tile_count(q, radius);
     if (npos == 1 && !strcmp(pos[0], "walk"))
         return cli_for_each_line("tile walk", walk_line, &q);
     if (npos == 1 && !strcmp(pos[0], "dist"))
@@ -201,7 +247,7 @@ int cli_cmd_tile(int argc, char **argv)
     if (npos == 1 && !strcmp(pos[0], "bearing"))
         return cli_for_each_line("tile bearing", bearing_line, &q);
     if (npos == 0)
-        cli_error("tile", 0, "missing subcommand (walk, dist or bearing); see --help");
+        cli_error("tile", 0, "missing subcommand (walk, dist, bearing or count); see --help");
     else if (strcmp(pos[0], "walk") && strcmp(pos[0], "dist") && strcmp(pos[0], "bearing"))
         cli_error("tile", 0, "unknown subcommand '%.40s'; see --help", pos[0]);
     else
