@@ -140,7 +140,10 @@ void cli_opts_init(cli_opts *p, const char *cmd, int argc, char **argv,
                    const char *const *valued, const char *const *flags);
 int cli_opts_next(cli_opts *p, const char **opt, const char **val);
 
-/* "WxH" with sides 16..4096 (--size): 0 ok, else reported and 1. */
+/* "WxH" (--size), each side digits only in lo..hi: 0 ok, 1 not (one
+ * parser for every command's --size; each its own range). */
+int cli_size_value(const char *val, long lo, long hi, long *w, long *h);
+/* --size with sides 16..4096 (play, replay): 0 ok, else reported and 1. */
 int cli_parse_size(const char *cmd, const char *val, int *w, int *h);
 
 /* SIGINT, SIGTERM and SIGHUP are caught (not fatal) from the first call of

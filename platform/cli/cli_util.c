@@ -451,13 +451,27 @@ int cli_opts_next(cli_opts *p, const char **opt, const char **val)
     return 1;
 }
 
+int cli_size_value(const char *val, long lo, long hi, long *w, long *h)
+{
+    char buf[64];
+    const char *x = strchr(val, 'x');
+    size_t n = x ? (size_t)(x - val) : 0;
+    if (!x || n == 0 || n >= sizeof buf)
+        return 1;
+    memcpy(buf, val, n);
+    buf[n] = 0;
+    size_t a = cli_parse_count(buf), b = cli_parse_count(x + 1);
+    if (a < (size_t)lo || a > (size_t)hi || b < (size_t)lo || b > (size_t)hi)
+        return 1;
+    *w = (long)a;
+    *h = (long)b;
+    return 0;
+}
+
 int cli_parse_size(const char *cmd, const char *val, int *w, int *h)
 {
-    char *e1, *e2 = NULL;
-    errno = 0;
-    long a = strtol(val, &e1, 10);
-    long b = *e1 == 'x' ? strtol(e1 + 1, &e2, 10) : 0;
-    if (*e1 != 'x' || !e2 || *e2 || errno || a < 16 || a > 4096 || b < 16 || b > 4096) {
+    long a, b;
+    if (cli_size_value(val, 16, 4096, &a, &b)) {
         cli_error(cmd, 0, "--size '%.40s' is not WxH with sides 16..4096", val);
         return 1;
     }

@@ -266,23 +266,17 @@ static int play_options(const char *cmd, int argc, char **argv, play_opts *o)
     }
     if (r < 0)
         return CLI_EXIT_USAGE;
-    const char *clash = !!o->level_path + !!o->mode + !!o->study > 1
-                            ? "give one of a LEVEL file, --mode or --study"
-                        : o->pad_script && !o->use_pad
-                            ? "give --no-gamepad or --gamepad-replay, not both"
-                        : o->append && !o->log_dir ? "--append goes with --log"
-                        : o->restart_participant && !o->study
-                            ? "--restart-participant goes with --study"
-                        : o->resume && o->restart_participant
-                            ? "give --resume or --restart-participant, not both"
-                        : o->resume && !o->study ? "--resume goes with --study"
-                        : o->resume && !o->log_dir ? "--resume goes with --log"
-                        : o->mute && o->volume >= 0 ? "give --mute or --volume, not both"
-                            : NULL;
-    if (clash) {
-        cli_error(cmd, 0, "%s", clash);
+#define G(x) ((x) ? HOL_SHELL_ON : HOL_SHELL_OFF)
+    const unsigned char given[HOL_SHELL_OPT_COUNT] = {
+        [HOL_SHELL_OPT_LEVEL] = G(o->level_path), [HOL_SHELL_OPT_MODE] = G(o->mode),
+        [HOL_SHELL_OPT_STUDY] = G(o->study), [HOL_SHELL_OPT_NO_GAMEPAD] = G(!o->use_pad),
+        [HOL_SHELL_OPT_PAD_REPLAY] = G(o->pad_script), [HOL_SHELL_OPT_APPEND] = G(o->append),
+        [HOL_SHELL_OPT_LOG] = G(o->log_dir), [HOL_SHELL_OPT_RESTART] = G(o->restart_participant),
+        [HOL_SHELL_OPT_RESUME] = G(o->resume), [HOL_SHELL_OPT_MUTE] = G(o->mute),
+        [HOL_SHELL_OPT_VOLUME] = G(o->volume >= 0)};
+#undef G
+    if (play_clash(cmd, given))
         return CLI_EXIT_USAGE;
-    }
     if (play_env_check(cmd, &o->env, o->log_dir) ||
         play_track_check(cmd, o->track_hz, o->log_dir))
         return CLI_EXIT_USAGE;

@@ -346,19 +346,6 @@ static const char *const render_value_opts[] = {
     "--tile-ids", "--fov", "--frames", "--seed", "--target", "--gl", "--stereo", "--keys",
     "--cell", "--tiling", "--room", "--lighting", "--lantern", "--fireflies", NULL};
 
-/* --size WxH: 0 ok, 1 bad. */
-static int parse_size(const char *val, long *w, long *h)
-{
-    char buf[64];
-    const char *x = strchr(val, 'x');
-    size_t n = x ? (size_t)(x - val) : 0;
-    if (!x || n == 0 || n >= sizeof buf)
-        return 1;
-    memcpy(buf, val, n);
-    buf[n] = 0;
-    return parse_int(buf, 1, 8192, w) || parse_int(x + 1, 1, 8192, h);
-}
-
 /* The numeric options: 1 taken, 0 not one of them, -1 bad (reported). */
 static int parse_number_opt(const char *cmd, render_opts *o, const char *a, const char *val)
 {
@@ -375,8 +362,8 @@ static int parse_number_opt(const char *cmd, render_opts *o, const char *a, cons
         o->frames_set = 1;
         bad = parse_int(val, 1, 1000, &o->frames) ? "is not a count in 1..1000" : NULL;
     } else if (!strcmp(a, "--size")) {
-        bad = parse_size(val, &o->w, &o->h) ? "is not WxH with sides 1..8192 (e.g. 640x480)"
-                                            : NULL;
+        bad = cli_size_value(val, 1, 8192, &o->w, &o->h)
+                  ? "is not WxH with sides 1..8192 (e.g. 640x480)" : NULL;
     } else if (!strcmp(a, "--seed")) {
         bad = !cli_parse_u64(val, &o->seed) ? "is not an unsigned 64-bit number" : NULL;
     } else if (!strcmp(a, "--stereo")) {

@@ -8,8 +8,8 @@
 #include <string.h>
 
 #include "../../core/hol_session.h"
-#include "../openxr/hol_xr_pick.h"
-#include "../openxr/hol_xr_quad.h"
+#include "../shell/hol_xr_pick.h"
+#include "../shell/hol_xr_quad.h"
 #include "cli.h"
 #include "play_env.h"
 #include "play_setup.h"
@@ -217,22 +217,18 @@ static int xr_options(const char *cmd, int argc, char **argv, xr_opts *o)
     }
     if (bad || r < 0)
         return CLI_EXIT_USAGE;
-    const char *clash = (o->check_frame >= 0) != (o->check_dir != NULL)
-                            ? "--check-frame and --check-dir go together"
-                        : o->study && o->level_path ? "give a LEVEL file or --study, not both"
-                        : o->append && !o->log_dir ? "--append goes with --log"
-                        : o->mute && o->volume >= 0 ? "give --mute or --volume, not both"
-                        : o->restart_participant && !o->study
-                            ? "--restart-participant goes with --study"
-                        : o->resume && o->restart_participant
-                            ? "give --resume or --restart-participant, not both"
-                        : o->resume && !o->study ? "--resume goes with --study"
-                        : o->resume && !o->log_dir ? "--resume goes with --log"
-                            : NULL;
-    if (clash) {
-        cli_error(cmd, 0, "%s", clash);
+#define G(x) ((x) ? HOL_SHELL_ON : HOL_SHELL_OFF)
+    const unsigned char given[HOL_SHELL_OPT_COUNT] = {
+        [HOL_SHELL_OPT_LEVEL] = G(o->level_path), [HOL_SHELL_OPT_STUDY] = G(o->study),
+        [HOL_SHELL_OPT_APPEND] = G(o->append), [HOL_SHELL_OPT_LOG] = G(o->log_dir),
+        [HOL_SHELL_OPT_RESTART] = G(o->restart_participant),
+        [HOL_SHELL_OPT_RESUME] = G(o->resume), [HOL_SHELL_OPT_MUTE] = G(o->mute),
+        [HOL_SHELL_OPT_VOLUME] = G(o->volume >= 0),
+        [HOL_SHELL_OPT_CHECK_FRAME] = G(o->check_frame >= 0),
+        [HOL_SHELL_OPT_CHECK_DIR] = G(o->check_dir)};
+#undef G
+    if (play_clash(cmd, given))
         return CLI_EXIT_USAGE;
-    }
     if (play_env_check(cmd, &o->env, o->log_dir) ||
         play_track_check(cmd, o->track_hz, o->log_dir))
         return CLI_EXIT_USAGE;
