@@ -169,6 +169,19 @@ typedef struct cli_path {
 int cli_check_distinct(const char *cmd, const cli_path *in, int nin, const cli_path *out,
                        int nout);
 
+/* The options that only store, as a table (the last entry's opt NULL): a
+ * flag sets an int field of the options' struct to its value, a valued
+ * option keeps its value in a const char * field. cli_store_opt: 1 when a
+ * is one of the table's (stored), 0 not. */
+typedef struct cli_store {
+    const char *opt;
+    size_t off;      /* offsetof the field */
+    int is_flag, value;
+} cli_store;
+#define CLI_STORE_STR(opt, type, field) {opt, offsetof(type, field), 0, 0}
+#define CLI_STORE_FLAG(opt, type, field, v) {opt, offsetof(type, field), 1, v}
+int cli_store_opt(const cli_store *t, const char *a, const char *val, void *opts);
+
 /* Flush stdout; on failure report it and return CLI_EXIT_FAIL. */
 int cli_finish_output(const char *cmd);
 
@@ -176,6 +189,10 @@ int cli_finish_output(const char *cmd);
  * any "--" and not as the value of one of the valued options (the
  * command's list, as for cli_opts_init: "--seed -h" is not help). */
 int cli_wants_help(int argc, char **argv, const char *const *valued);
+/* A command's --help: usage printed to stdout when cli_wants_help, and
+ * cli_finish_output's status returned; -1 when no help is asked. */
+int cli_help(const char *cmd, int argc, char **argv, const char *const *valued,
+             const char *usage);
 
 /* Subcommands */
 int cli_cmd_tile(int argc, char **argv);

@@ -154,6 +154,20 @@ int cli_check_distinct(const char *cmd, const cli_path *in, int nin, const cli_p
     return 0;
 }
 
+int cli_store_opt(const cli_store *t, const char *a, const char *val, void *opts)
+{
+    for (; t->opt; t++)
+        if (!strcmp(t->opt, a)) {
+            char *field = (char *)opts + t->off;
+            if (t->is_flag)
+                memcpy(field, &t->value, sizeof t->value);
+            else
+                memcpy(field, &val, sizeof val);
+            return 1;
+        }
+    return 0;
+}
+
 int cli_finish_output(const char *cmd)
 {
     if (fflush(stdout) != 0 || ferror(stdout)) {
@@ -173,6 +187,15 @@ int cli_wants_help(int argc, char **argv, const char *const *valued)
             i++;
     }
     return 0;
+}
+
+int cli_help(const char *cmd, int argc, char **argv, const char *const *valued,
+             const char *usage)
+{
+    if (!cli_wants_help(argc, argv, valued))
+        return -1;
+    fputs(usage, stdout);
+    return cli_finish_output(cmd);
 }
 
 int cli_for_each_line(const char *cmd, cli_line_fn fn, void *ctx)

@@ -129,10 +129,9 @@ int cli_cmd_game(int argc, char **argv)
     const char *cmd = "game";
     static const char *const valued[] = {PLAY_GEOMETRY_OPTIONS, NULL};
     static const char *const flags[] = {NULL};
-    if (cli_wants_help(argc, argv, valued)) {
-        fputs(game_usage, stdout);
-        return cli_finish_output(cmd);
-    }
+    int help = cli_help(cmd, argc, argv, valued, game_usage);
+    if (help >= 0)
+        return help;
     cli_opts p;
     cli_opts_init(&p, cmd, argc, argv, valued, flags);
     const char *a, *val, *path = NULL;

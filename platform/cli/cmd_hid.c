@@ -288,10 +288,9 @@ static int cmd_watch(int argc, char **argv)
 
 int cli_cmd_hid(int argc, char **argv)
 {
-    if (cli_wants_help(argc, argv, hid_valued)) {
-        fputs(hid_usage, stdout);
-        return cli_finish_output("hid");
-    }
+    int help = cli_help("hid", argc, argv, hid_valued, hid_usage);
+    if (help >= 0)
+        return help;
     if (argc >= 2 && !strcmp(argv[1], "parse"))
         return cmd_parse(argc, argv);
     if (argc >= 2 && !strcmp(argv[1], "list"))

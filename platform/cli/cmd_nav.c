@@ -86,10 +86,9 @@ int cli_cmd_nav(int argc, char **argv)
     const char *cmd = "nav";
     static const char *const valued[] = {"--budget", "--tiling", "--room", NULL};
     static const char *const flags[] = {"--stats", NULL};
-    if (cli_wants_help(argc, argv, valued)) {
-        fputs(nav_usage, stdout);
-        return cli_finish_output(cmd);
-    }
+    int help = cli_help(cmd, argc, argv, valued, nav_usage);
+    if (help >= 0)
+        return help;
     size_t budget = 0;
     int stats = 0, q = 0, cols = 0, rows = 0, r;
     cli_opts p;

@@ -177,19 +177,7 @@ static int play_value(const char *cmd, const char *a, const char *val, play_opts
         g = play_env_value(cmd, a, val, &o->env);
     if (g)
         return g < 0;
-    if (!strcmp(a, "--mode"))
-        o->mode = val;
-    else if (!strcmp(a, "--log"))
-        o->log_dir = val;
-    else if (!strcmp(a, "--record"))
-        o->rec = val;
-    else if (!strcmp(a, "--input"))
-        o->input_path = val;
-    else if (!strcmp(a, "--gamepad-replay"))
-        o->pad_script = val;
-    else if (!strcmp(a, "--study"))
-        o->study = val;
-    else if (!strcmp(a, "--participant")) {
+    if (!strcmp(a, "--participant")) {
         if (play_participant(cmd, val))
             return 1;
         o->participant = val;
@@ -227,6 +215,22 @@ static const char *const play_valued[] = {"--mode",  "--seed",  "--log",  "--rec
                                           "--participant", "--snap-turn", "--study",
                                           "--volume", "--track-hz", PLAY_GEOMETRY_OPTIONS, PLAY_ENV_OPTIONS, NULL};
 
+/* The options that only store their value or set a flag. */
+static const cli_store play_store[] = {
+    CLI_STORE_STR("--mode", play_opts, mode),
+    CLI_STORE_STR("--log", play_opts, log_dir),
+    CLI_STORE_STR("--record", play_opts, rec),
+    CLI_STORE_STR("--input", play_opts, input_path),
+    CLI_STORE_STR("--gamepad-replay", play_opts, pad_script),
+    CLI_STORE_STR("--study", play_opts, study),
+    CLI_STORE_FLAG("--no-gamepad", play_opts, use_pad, 0),
+    CLI_STORE_FLAG("--append", play_opts, append, 1),
+    CLI_STORE_FLAG("--stats", play_opts, stats, 1),
+    CLI_STORE_FLAG("--mute", play_opts, mute, 1),
+    CLI_STORE_FLAG("--restart-participant", play_opts, restart_participant, 1),
+    CLI_STORE_FLAG("--resume", play_opts, resume, 1),
+    {NULL, 0, 0, 0}};
+
 static int play_options(const char *cmd, int argc, char **argv, play_opts *o)
 {
     static const char *const flags[] = {"--no-gamepad", "--append", "--stats",
@@ -248,19 +252,7 @@ static int play_options(const char *cmd, int argc, char **argv, play_opts *o)
                 return CLI_EXIT_USAGE;
             }
             o->level_path = val;
-        } else if (!strcmp(a, "--no-gamepad")) {
-            o->use_pad = 0;
-        } else if (!strcmp(a, "--append")) {
-            o->append = 1;
-        } else if (!strcmp(a, "--stats")) {
-            o->stats = 1;
-        } else if (!strcmp(a, "--mute")) {
-            o->mute = 1;
-        } else if (!strcmp(a, "--restart-participant")) {
-            o->restart_participant = 1;
-        } else if (!strcmp(a, "--resume")) {
-            o->resume = 1;
-        } else if (play_value(cmd, a, val, o)) {
+        } else if (!cli_store_opt(play_store, a, val, o) && play_value(cmd, a, val, o)) {
             return CLI_EXIT_USAGE;
         }
     }
@@ -660,10 +652,9 @@ int cli_cmd_play(int argc, char **argv)
     static play_ctx c;
     memset(&c, 0, sizeof c);
     c.cmd = "play";
-    if (cli_wants_help(argc, argv, play_valued)) {
-        fputs(play_usage, stdout);
-        return cli_finish_output(c.cmd);
-    }
+    int help = cli_help(c.cmd, argc, argv, play_valued, play_usage);
+    if (help >= 0)
+        return help;
     int status = play_options(c.cmd, argc, argv, &c.o);
     if (status)
         return status;

@@ -181,10 +181,9 @@ int props_write_svg(FILE *f, const hol_props *p, int q, const char *level_name,
 int cli_cmd_props(int argc, char **argv)
 {
     const char *cmd = "props";
-    if (cli_wants_help(argc, argv, props_valued)) {
-        fputs(props_usage, stdout);
-        return cli_finish_output(cmd);
-    }
+    int help = cli_help(cmd, argc, argv, props_valued, props_usage);
+    if (help >= 0)
+        return help;
     props_args a;
     memset(&a, 0, sizeof a);
     int st = props_parse(cmd, argc, argv, &a);

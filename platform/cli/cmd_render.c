@@ -866,10 +866,9 @@ static int render_tile_ids(const char *cmd, const render_opts *o, hol_frame_desc
 int cli_cmd_render(int argc, char **argv)
 {
     const char *cmd = "render";
-    if (cli_wants_help(argc, argv, render_value_opts)) {
-        fputs(render_usage, stdout);
-        return cli_finish_output(cmd);
-    }
+    int help = cli_help(cmd, argc, argv, render_value_opts, render_usage);
+    if (help >= 0)
+        return help;
     render_opts o;
     hol_frame_desc fd;
     int status = parse_opts(cmd, argc, argv, &o);

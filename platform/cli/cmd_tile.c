@@ -174,10 +174,9 @@ static int bearing_line(void *ctx, long lineno, char *s, size_t len)
 int cli_cmd_tile(int argc, char **argv)
 {
     static const char *const valued[] = {"--tiling", NULL};
-    if (cli_wants_help(argc, argv, valued)) {
-        fputs(tile_usage, stdout);
-        return cli_finish_output("tile");
-    }
+    int help = cli_help("tile", argc, argv, valued, tile_usage);
+    if (help >= 0)
+        return help;
     int q = HOL_TILING_DEFAULT_Q, npos = 0, r;
     const char *pos[2] = {NULL, NULL}, *a, *val;
     cli_opts p;

@@ -139,6 +139,11 @@ static int parse_value(const char *a, const char *v, world_opts *o)
     return 0;
 }
 
+static const cli_store world_store[] = {CLI_STORE_FLAG("--check", world_opts, check, 1),
+                                        CLI_STORE_FLAG("--quiet", world_opts, quiet, 1),
+                                        CLI_STORE_FLAG("--stats", world_opts, stats, 1),
+                                        {NULL, 0, 0, 0}};
+
 static int parse_args(int argc, char **argv, world_opts *o)
 {
     static const char *const flags[] = {"--check", "--quiet", "--stats", NULL};
@@ -157,13 +162,7 @@ static int parse_args(int argc, char **argv, world_opts *o)
         }
         if (!a)
             ops[nops++] = v;
-        else if (!strcmp(a, "--check"))
-            o->check = 1;
-        else if (!strcmp(a, "--quiet"))
-            o->quiet = 1;
-        else if (!strcmp(a, "--stats"))
-            o->stats = 1;
-        else if (parse_value(a, v, o))
+        else if (!cli_store_opt(world_store, a, v, o) && parse_value(a, v, o))
             return 0;
     }
     if (r < 0)
@@ -490,10 +489,9 @@ static int save_world(hol_world *w, const char *path)
 
 int cli_cmd_world(int argc, char **argv)
 {
-    if (cli_wants_help(argc, argv, world_valued)) {
-        fputs(world_usage, stdout);
-        return cli_finish_output(CMD);
-    }
+    int help = cli_help(CMD, argc, argv, world_valued, world_usage);
+    if (help >= 0)
+        return help;
     world_opts o;
     if (!parse_args(argc, argv, &o) || cli_check_output(CMD, "--save", o.save))
         return CLI_EXIT_USAGE;

@@ -149,6 +149,20 @@ static const char *const xr_valued[] = {"--frames",      "--log",       "--recor
                                         PLAY_GEOMETRY_OPTIONS, "--play-area", "--volume",
                                         "--track-hz", PLAY_ENV_OPTIONS, NULL};
 
+/* The options that only store their value or set a flag. */
+static const cli_store xr_store[] = {
+    CLI_STORE_STR("--log", xr_opts, log_dir),
+    CLI_STORE_STR("--record", xr_opts, rec),
+    CLI_STORE_STR("--input", xr_opts, input_path),
+    CLI_STORE_STR("--check-dir", xr_opts, check_dir),
+    CLI_STORE_STR("--study", xr_opts, study),
+    CLI_STORE_FLAG("--append", xr_opts, append, 1),
+    CLI_STORE_FLAG("--no-haptics", xr_opts, no_haptics, 1),
+    CLI_STORE_FLAG("--mute", xr_opts, mute, 1),
+    CLI_STORE_FLAG("--restart-participant", xr_opts, restart_participant, 1),
+    CLI_STORE_FLAG("--resume", xr_opts, resume, 1),
+    {NULL, 0, 0, 0}};
+
 static int xr_options(const char *cmd, int argc, char **argv, xr_opts *o)
 {
     static const char *const flags[] = {"--append", "--no-haptics", "--restart-participant",
@@ -175,30 +189,12 @@ static int xr_options(const char *cmd, int argc, char **argv, xr_opts *o)
             bad = g < 0;
         else if (!strcmp(a, "--frames") || !strcmp(a, "--check-frame"))
             bad = xr_count(cmd, a, val, o);
-        else if (!strcmp(a, "--log"))
-            o->log_dir = val;
-        else if (!strcmp(a, "--record"))
-            o->rec = val;
-        else if (!strcmp(a, "--input"))
-            o->input_path = val;
-        else if (!strcmp(a, "--check-dir"))
-            o->check_dir = val;
-        else if (!strcmp(a, "--study"))
-            o->study = val;
-        else if (!strcmp(a, "--append"))
-            o->append = 1;
-        else if (!strcmp(a, "--no-haptics"))
-            o->no_haptics = 1;
-        else if (!strcmp(a, "--mute"))
-            o->mute = 1;
+        else if (cli_store_opt(xr_store, a, val, o))
+            ;
         else if (!strcmp(a, "--volume"))
             bad = cli_volume_value(cmd, val, &o->volume) != 0;
         else if (!strcmp(a, "--track-hz"))
             bad = play_track_value(cmd, val, &o->track_hz);
-        else if (!strcmp(a, "--restart-participant"))
-            o->restart_participant = 1;
-        else if (!strcmp(a, "--resume"))
-            o->resume = 1;
         else if (!strcmp(a, "--play-area"))
             bad = xr_play_area(cmd, val, o->play_area);
         else if (!strcmp(a, "--panel")) {
@@ -438,10 +434,9 @@ static int xr_run(const xr_opts *o, xr_ctx *c, const hol_input *script, long nsc
 int cli_cmd_xr(int argc, char **argv)
 {
     const char *cmd = "xr";
-    if (cli_wants_help(argc, argv, xr_valued)) {
-        fputs(xr_usage, stdout);
-        return cli_finish_output(cmd);
-    }
+    int help = cli_help(cmd, argc, argv, xr_valued, xr_usage);
+    if (help >= 0)
+        return help;
     xr_opts o;
     int st = xr_options(cmd, argc, argv, &o);
     if (st)
