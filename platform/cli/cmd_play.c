@@ -267,10 +267,7 @@ static int play_options(const char *cmd, int argc, char **argv, play_opts *o)
         [HOL_SHELL_OPT_RESUME] = G(o->resume), [HOL_SHELL_OPT_MUTE] = G(o->mute),
         [HOL_SHELL_OPT_VOLUME] = G(o->volume >= 0)};
 #undef G
-    if (play_clash(cmd, given))
-        return CLI_EXIT_USAGE;
-    if (play_env_check(cmd, &o->env, o->log_dir) ||
-        play_track_check(cmd, o->track_hz, o->log_dir))
+    if (play_opts_check(cmd, given, &o->env, o->log_dir, o->track_hz))
         return CLI_EXIT_USAGE;
     o->append |= o->resume;
     const cli_path in[] = {{"LEVEL", o->level_path}, {"--input", o->input_path},

@@ -223,10 +223,7 @@ static int xr_options(const char *cmd, int argc, char **argv, xr_opts *o)
         [HOL_SHELL_OPT_CHECK_FRAME] = G(o->check_frame >= 0),
         [HOL_SHELL_OPT_CHECK_DIR] = G(o->check_dir)};
 #undef G
-    if (play_clash(cmd, given))
-        return CLI_EXIT_USAGE;
-    if (play_env_check(cmd, &o->env, o->log_dir) ||
-        play_track_check(cmd, o->track_hz, o->log_dir))
+    if (play_opts_check(cmd, given, &o->env, o->log_dir, o->track_hz))
         return CLI_EXIT_USAGE;
     o->append |= o->resume;
     const cli_path in[] = {{"LEVEL", o->level_path}, {"--input", o->input_path},

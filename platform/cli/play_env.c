@@ -18,6 +18,7 @@
 #include "../file/hol_file.h"
 #include "../shell/hol_shell_env.h"
 #include "cli.h"
+#include "play_track.h"
 
 #define PLAY_ENV_ROW_MAX 16384
 
@@ -61,13 +62,15 @@ int play_env_value(const char *cmd, const char *opt, const char *val, play_env *
     return 1;
 }
 
-int play_clash(const char *cmd, const unsigned char given[HOL_SHELL_OPT_COUNT])
+int play_opts_check(const char *cmd, const unsigned char given[HOL_SHELL_OPT_COUNT],
+                    const play_env *e, const char *log_dir, int track_hz)
 {
     char msg[200];
-    if (!hol_shell_clash(given, msg, sizeof msg))
-        return 0;
-    cli_error(cmd, 0, "%s", msg);
-    return 1;
+    if (hol_shell_clash(given, msg, sizeof msg)) {
+        cli_error(cmd, 0, "%s", msg);
+        return 1;
+    }
+    return play_env_check(cmd, e, log_dir) != 0 || play_track_check(cmd, track_hz, log_dir) != 0;
 }
 
 int play_env_check(const char *cmd, const play_env *e, const char *log_dir)

@@ -25,8 +25,9 @@
  *   DIR/study-HASH.txt (hol_session_desc's study_text). 0, or 1 reported
  *   (the study cannot be read again).
  * - Replay writes no environment row: the environment is the live one.
- * - play_clash (play and xr): the first clash of the options given
- *   (platform/shell/hol_shell_opts.h's table) reported; 0 none, else 1.
+ * - play_opts_check (play and xr): the first clash of the options given
+ *   (platform/shell/hol_shell_opts.h's table), then play_env_check and
+ *   play_track_check (play_track.h); 0 none, else 1 (reported).
  */
 #ifndef HOL_PLAY_ENV_H
 #define HOL_PLAY_ENV_H
@@ -65,6 +66,7 @@ int play_env_write(const char *cmd, const char *log_dir, const play_env *e, cons
                    const char *participant, const char *study_sha256, const play_env_host *h,
                    int argc, char **argv);
 
-int play_clash(const char *cmd, const unsigned char given[HOL_SHELL_OPT_COUNT]);
+int play_opts_check(const char *cmd, const unsigned char given[HOL_SHELL_OPT_COUNT],
+                    const play_env *e, const char *log_dir, int track_hz);
 
 #endif

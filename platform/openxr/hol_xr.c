@@ -108,9 +108,9 @@ static int hol__instance(hol__xr *x)
              XR_VERSION_MAJOR(ip.runtimeVersion), XR_VERSION_MINOR(ip.runtimeVersion),
              XR_VERSION_PATCH(ip.runtimeVersion));
     hol__xr_say(x, "xr: runtime %s %u.%u.%u", ip.runtimeName, XR_VERSION_MAJOR(ip.runtimeVersion),
-             XR_VERSION_MINOR(ip.runtimeVersion), XR_VERSION_PATCH(ip.runtimeVersion));
+                XR_VERSION_MINOR(ip.runtimeVersion), XR_VERSION_PATCH(ip.runtimeVersion));
     hol__xr_say(x, "xr: %s %s", HOL_XR_EXT_HAND_INTERACTION,
-             x->hand_interaction ? "enabled: the hands are bound (pinches and grasps)"
+                x->hand_interaction ? "enabled: the hands are bound (pinches and grasps)"
                                  : "not listed by the runtime: no hand bindings");
     XrSystemGetInfo sg = {XR_TYPE_SYSTEM_GET_INFO};
     sg.formFactor = XR_FORM_FACTOR_HEAD_MOUNTED_DISPLAY;
@@ -130,8 +130,8 @@ static void hol__refresh_fb(hol__xr *x)
         get && XR_SUCCEEDED(get(x->session, &hz)) && hz > 0)
         x->refresh_fb = hz;
     hol__xr_say(x, "xr: %s %s", XR_FB_DISPLAY_REFRESH_RATE_EXTENSION_NAME,
-             x->refresh_fb > 0 ? "gives the display's refresh rate"
-             : x->fb_refresh   ? "gave no rate: it is measured (predictedDisplayPeriod)"
+                x->refresh_fb > 0 ? "gives the display's refresh rate"
+                : x->fb_refresh   ? "gave no rate: it is measured (predictedDisplayPeriod)"
                                : "not listed by the runtime: the refresh rate is measured "
                                  "(predictedDisplayPeriod)");
 }
@@ -179,14 +179,14 @@ static int hol__setup(hol__xr *x, const void *binding)
 static void hol__figures(hol__xr *x)
 {
     hol__xr_say(x, "xr: frames submitted %ld, reached FOCUSED %s, faded at the boundary %ld",
-             x->submitted, x->reached_focused ? "yes" : "no", x->faded);
+                x->submitted, x->reached_focused ? "yes" : "no", x->faded);
     if (x->quad_on)
         hol__xr_say(x, "xr: panel quad layer submitted in %ld frames, its image drawn %ld times "
                     "(when its content changed)",
-                 x->quad_frames, x->quad_cache.redraws);
+                    x->quad_frames, x->quad_cache.redraws);
     hol__xr_say(x, "xr: controller pulses %ld (%ld into a hedge or a trunk, %ld room steps)%s",
-             x->pulses, x->pulses_hit, x->pulses - x->pulses_hit,
-             x->fns->haptic ? "" : ": off (--no-haptics)");
+                x->pulses, x->pulses_hit, x->pulses - x->pulses_hit,
+                x->fns->haptic ? "" : ": off (--no-haptics)");
     if (!x->ncpu)
         return;
     qsort(x->cpu_ms, (size_t)x->ncpu, sizeof x->cpu_ms[0], hol__cmp);
@@ -194,10 +194,10 @@ static void hol__figures(hol__xr *x)
     hol__xr_say(x, "xr: app thread CPU per stereo frame (step, both eyes, submit; without "
                 "xrWaitFrame; unfaded frames): median %.2f ms, p99 %.2f ms over %ld frames; "
                 "of it the app step median %.3f ms, p99 %.3f ms",
-             x->cpu_ms[x->ncpu / 2], x->cpu_ms[x->ncpu * 99 / 100], x->ncpu,
-             x->step_ms[x->ncpu / 2], x->step_ms[x->ncpu * 99 / 100]);
+                x->cpu_ms[x->ncpu / 2], x->cpu_ms[x->ncpu * 99 / 100], x->ncpu,
+                x->step_ms[x->ncpu / 2], x->step_ms[x->ncpu * 99 / 100]);
     hol__xr_say(x, "xr: per eye: %ld / %ld draw calls, %ld / %ld triangles (left / right)",
-             x->draws[0], x->draws[1], x->tris[0], x->tris[1]);
+                x->draws[0], x->draws[1], x->tris[0], x->tris[1]);
 }
 
 /* The session on x's instance, system and current GL context (binding: the

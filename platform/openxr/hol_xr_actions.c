@@ -125,7 +125,7 @@ static int hol__room_space(hol__xr *x)
     else
         hol__xr_say(x, "xr: reference space LOCAL (%s): the floor taken %.2f m below the head's "
                     "start",
-                 x->d->space == HOL_XR_SPACE_LOCAL ? "asked for" : "no STAGE", -x->origin_y);
+                    x->d->space == HOL_XR_SPACE_LOCAL ? "asked for" : "no STAGE", -x->origin_y);
     return 0;
 }
 
@@ -166,8 +166,8 @@ int hol__xr_bounds(hol__xr *x)
         return hol__xr_fail(x, "read the play area's bounds", r);
     if (x->d->play_area[0] > 0 && x->d->play_area[1] > 0) { /* given by hand */
         hol__xr_say(x, "xr: play area %.2f x %.2f m given (the runtime's bounds: %s)",
-                 x->d->play_area[0], x->d->play_area[1],
-                 r == XR_SPACE_BOUNDS_UNAVAILABLE || b.width <= 0 ? "none" : "not used");
+                    x->d->play_area[0], x->d->play_area[1],
+                    r == XR_SPACE_BOUNDS_UNAVAILABLE || b.width <= 0 ? "none" : "not used");
         b.width = x->d->play_area[0];
         b.height = x->d->play_area[1];
         r = XR_SUCCESS;
@@ -216,7 +216,7 @@ int hol__xr_haptics(hol__xr *x)
         if (XR_FAILED(r) && !x->haptic_failed) {
             x->haptic_failed = 1;
             hol__xr_say(x, "xr: cannot pulse the %s controller: %s; the run goes on without",
-                     h ? "right" : "left", hol_xr_result_words((int)r));
+                        h ? "right" : "left", hol_xr_result_words((int)r));
         }
     }
     return 0;
@@ -253,7 +253,7 @@ int hol__xr_profiles_now(hol__xr *x)
                 return hol__xr_fail(x, "read the controllers' profile", r);
             hol__xr_say(x, "xr: cannot read the controllers' profile: %s (%s); the prompts keep "
                         "the last one",
-                     hol_xr_result_words((int)r), hol_xr_result_name((int)r)
+                        hol_xr_result_words((int)r), hol_xr_result_name((int)r)
                                                       ? hol_xr_result_name((int)r)
                                                       : "an extension's result");
             return 0;
@@ -261,8 +261,8 @@ int hol__xr_profiles_now(hol__xr *x)
         int p = st.interactionProfile == XR_NULL_PATH ? -1 : hol_xr_profile_find(path);
         if (p != x->profile[h])
             hol__xr_say(x, "xr: %s hand: %s", h ? "right" : "left",
-                     st.interactionProfile == XR_NULL_PATH ? "no controller"
-                     : p >= 0                              ? hol_xr_profiles()[p].name
+                        st.interactionProfile == XR_NULL_PATH ? "no controller"
+                        : p >= 0                              ? hol_xr_profiles()[p].name
                                                            : path);
         x->profile[h] = p;
         any |= st.interactionProfile != XR_NULL_PATH && p < 0;

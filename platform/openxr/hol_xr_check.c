@@ -71,8 +71,8 @@ void hol__xr_check(hol__xr *x, const hol_frame_desc *fd, int w, int h)
         }
         hol__xr_say(x, "xr: check frame %ld eye 0 %dx%d (%s swapchain): %ld pixels differ by more "
                     "than 8/255 (%.3f %%), largest difference %d",
-                 x->d->check_frame, w, h, x->srgb ? "sRGB" : "linear", bad,
-                 100.0 * (double)bad / ((double)w * h), worst);
+                    x->d->check_frame, w, h, x->srgb ? "sRGB" : "linear", bad,
+                    100.0 * (double)bad / ((double)w * h), worst);
     }
     free(ref2);
     free(got);
@@ -141,10 +141,10 @@ static void hol__measure_panel(hol__xr *x, int e, const hol_frame_desc *fd, cons
     x->panel_pred[e] = hol__panel_corner(fd, w);
     hol__xr_say(x, "xr: check panel eye %d: %ld pixels, left edge %d px (predicted %.2f), at most "
                 "%.1f degrees from the eye's axis",
-             e, n, n ? left : -1, x->panel_pred[e], worst * 180 / 3.14159265358979323846);
+                e, n, n ? left : -1, x->panel_pred[e], worst * 180 / 3.14159265358979323846);
     if (e == 1)
         hol__xr_say(x, "xr: check panel disparity %.0f px (predicted %.2f)",
-                 x->panel_left[0] - x->panel_left[1], x->panel_pred[0] - x->panel_pred[1]);
+                    x->panel_left[0] - x->panel_left[1], x->panel_pred[0] - x->panel_pred[1]);
 }
 
 void hol__xr_check_eye(hol__xr *x, int e, const hol_frame_desc *fd, unsigned fbo, int w, int h)
@@ -167,9 +167,9 @@ void hol__xr_check_eye(hol__xr *x, int e, const hol_frame_desc *fd, unsigned fbo
     const hol_camera *c = &b.cam;
     hol__xr_say(x, "xr: check eye %d render --eye %.9g,%.9g,%.9g --orient %.9g,%.9g,%.9g,%.9g "
                 "--tan %.17g,%.17g,%.17g,%.17g --size %dx%d --fireflies %.17g",
-             e, c->eye[0], c->eye[1], c->eye[2], c->orient[0], c->orient[1], c->orient[2],
-             c->orient[3], c->tan_left, c->tan_right, c->tan_down, c->tan_up, w, h,
-             b.fireflies ? b.time_s : 0.0);
+                e, c->eye[0], c->eye[1], c->eye[2], c->orient[0], c->orient[1], c->orient[2],
+                c->orient[3], c->tan_left, c->tan_right, c->tan_down, c->tan_up, w, h,
+                b.fireflies ? b.time_s : 0.0);
     if (e == 0) /* the world against the renders without a HUD */
         hol__xr_check(x, &b, w, h);
     x->gl.BindFramebuffer(HOL__GL_FRAMEBUFFER, fbo);

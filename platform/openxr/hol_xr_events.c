@@ -45,7 +45,7 @@ static void hol__state_changed(hol__xr *x, const XrEventDataSessionStateChanged 
             x->life.done = 1;
         } else {
             hol__xr_say(x, "xr: session ended after STOPPING%s",
-                     x->life.quit_requested ? "" : " (by the runtime: waiting for READY)");
+                        x->life.quit_requested ? "" : " (by the runtime: waiting for READY)");
         }
     }
 }
@@ -61,8 +61,8 @@ static void hol__space_changed(hol__xr *x, const XrEventDataReferenceSpaceChange
     memset(&x->calib, 0, sizeof x->calib);
     hol_xr_life_recentred(&x->life); /* the app re-places the room: the head's jump is no walk */
     hol__xr_say(x, "xr: reference space %s changed (%s): the room is placed on its new origin",
-             x->space_type == HOL_XR_SPACE_STAGE ? "STAGE" : "LOCAL",
-             x->space_type == HOL_XR_SPACE_STAGE ? "recentred, or a new play area"
+                x->space_type == HOL_XR_SPACE_STAGE ? "STAGE" : "LOCAL",
+                x->space_type == HOL_XR_SPACE_STAGE ? "recentred, or a new play area"
                                                  : "recentred");
     if (hol__xr_bounds(x))
         x->life.done = 1;
@@ -92,7 +92,7 @@ static void hol__event(hol__xr *x, const XrEventDataBuffer *ev)
         break;
     case XR_TYPE_EVENT_DATA_EVENTS_LOST:
         hol__xr_say(x, "xr: the runtime lost %u events",
-                 ((const XrEventDataEventsLost *)ev)->lostEventCount);
+                    ((const XrEventDataEventsLost *)ev)->lostEventCount);
         break;
     default:
         break;

@@ -182,14 +182,9 @@ static int hol__draw_eye(hol__xr *x, int e, const hol_app_view *v, const hol_inp
 {
     hol__eye *ey = &x->eye[e];
     const XrView *view = &x->views[e];
-    uint32_t idx = 0;
-    XrSwapchainImageAcquireInfo ai = {XR_TYPE_SWAPCHAIN_IMAGE_ACQUIRE_INFO};
-    HOL__XR(x, "draw the next frame", xrAcquireSwapchainImage(ey->swapchain, &ai, &idx));
-    XrSwapchainImageWaitInfo wi = {XR_TYPE_SWAPCHAIN_IMAGE_WAIT_INFO};
-    wi.timeout = XR_INFINITE_DURATION;
-    HOL__XR(x, "draw the next frame", xrWaitSwapchainImage(ey->swapchain, &wi));
-    if (idx >= ey->nimages)
-        return hol__xr_error(x, "the runtime gave swapchain image %u of %u", idx, ey->nimages);
+    uint32_t idx;
+    if (hol__xr_chain_acquire(x, ey->swapchain, ey->nimages, "draw the next frame", &idx))
+        return 1;
     x->gl.BindFramebuffer(HOL__GL_FRAMEBUFFER, ey->samples > 1 ? ey->msaa_fbo : ey->fbo[idx]);
     x->gl.Viewport(0, 0, ey->w, ey->h);
     hol_frame_desc fd;
@@ -312,7 +307,7 @@ void hol__xr_tell_env(hol__xr *x, int last)
                                        : "";
     if (hz > 0)
         hol__xr_say(x, "xr: display refresh %.3f Hz (%s%s)", hz, how,
-                 x->refresh_fb > 0 ? ": XR_FB_display_refresh_rate"
+                    x->refresh_fb > 0 ? ": XR_FB_display_refresh_rate"
                                    : ": the mean predictedDisplayPeriod of the first frames");
     x->fns->environment(x->fns->user, ctl ? ctl : "", hz, how);
 }

@@ -38,7 +38,7 @@ int hol__xr_graphics(hol__xr *x, hol__binding *b)
     x->esurf = eglCreatePbufferSurface(x->edpy, cfg, sattr);
     if (x->ectx == EGL_NO_CONTEXT || !eglMakeCurrent(x->edpy, x->esurf, x->esurf, x->ectx))
         return hol__xr_error(x, "cannot make an OpenGL ES 3 context current (EGL error 0x%x)",
-                          (unsigned)eglGetError());
+                             (unsigned)eglGetError());
     x->getproc = (hol_render_getproc)eglGetProcAddress;
     b->type = XR_TYPE_GRAPHICS_BINDING_OPENGL_ES_ANDROID_KHR;
     b->next = NULL;
@@ -61,7 +61,7 @@ int hol__xr_graphics(hol__xr *x, hol__binding *b)
     x->dpy = XOpenDisplay(NULL);
     if (!x->dpy) {
         return hol__xr_error(x, "cannot open the X display (DISPLAY=%s)",
-                          getenv("DISPLAY") ? getenv("DISPLAY") : "");
+                             getenv("DISPLAY") ? getenv("DISPLAY") : "");
     }
     const int attr[] = {GLX_X_RENDERABLE, True, GLX_DRAWABLE_TYPE, GLX_WINDOW_BIT,
                         GLX_RENDER_TYPE, GLX_RGBA_BIT, GLX_RED_SIZE, 8, GLX_GREEN_SIZE, 8,

@@ -15,7 +15,7 @@ static int hol__quad_off(hol__xr *x, const char *why, XrResult r)
 {
     const char *name = hol_xr_result_name((int)r);
     hol__xr_say(x, "xr: panel in the scene: the quad layer's %s failed (%s): the fallback", why,
-             name ? name : "an extension's error");
+                name ? name : "an extension's error");
     hol__xr_quad_free(x);
     x->quad_on = 0;
     return 0;
@@ -75,7 +75,7 @@ int hol__xr_quad_setup(hol__xr *x)
     hol__xr_say(x, "xr: panel as a quad layer: %dx%d image, format 0x%llx, %u images, drawn "
                 "once per frame at most (when its content changes), composited over the "
                 "projection layer (no depth: always in front)",
-             x->quad_w, x->quad_h, (unsigned long long)x->format, n);
+                x->quad_w, x->quad_h, (unsigned long long)x->format, n);
     return 0;
 }
 
@@ -96,21 +96,16 @@ static void hol__quad_check(hol__xr *x, const hol_xr_quad *q)
     }
     free(px);
     hol__xr_say(x, "xr: check quad image: %ld opaque, %ld transparent of %dx%d texels", opaque,
-             clear, q->rect[0], q->rect[1]);
+                clear, q->rect[0], q->rect[1]);
 }
 #endif
 
 /* The image drawn again (acquire, draw, release). */
 static int hol__quad_draw(hol__xr *x, const hol_frame_desc *fd, const hol_xr_quad *q)
 {
-    uint32_t idx = 0;
-    XrSwapchainImageAcquireInfo ai = {XR_TYPE_SWAPCHAIN_IMAGE_ACQUIRE_INFO};
-    HOL__XR(x, "draw the panel", xrAcquireSwapchainImage(x->quad_chain, &ai, &idx));
-    XrSwapchainImageWaitInfo wi = {XR_TYPE_SWAPCHAIN_IMAGE_WAIT_INFO};
-    wi.timeout = XR_INFINITE_DURATION;
-    HOL__XR(x, "draw the panel", xrWaitSwapchainImage(x->quad_chain, &wi));
-    if (idx >= x->quad_nimages)
-        return hol__xr_error(x, "the runtime gave swapchain image %u of %u", idx, x->quad_nimages);
+    uint32_t idx;
+    if (hol__xr_chain_acquire(x, x->quad_chain, x->quad_nimages, "draw the panel", &idx))
+        return 1;
     x->gl.BindFramebuffer(HOL__GL_FRAMEBUFFER, x->quad_fbo[idx]);
     /* texels outside the rectangle used are never shown */
     hol_err err = hol_render_panel_image(x->rnd, fd, q->rect[0], q->rect[1]);
@@ -127,7 +122,7 @@ static int hol__quad_draw(hol__xr *x, const hol_frame_desc *fd, const hol_xr_qua
 }
 
 int hol__xr_quad_layer(hol__xr *x, const hol_app_view *v, const float shift[3],
-                    XrCompositionLayerQuad *out, int *out_submit)
+                       XrCompositionLayerQuad *out, int *out_submit)
 {
     *out_submit = 0;
     if (!x->quad_on || !v)
@@ -169,8 +164,8 @@ int hol__xr_quad_layer(hol__xr *x, const hol_app_view *v, const float shift[3],
         hol__xr_say(x, "xr: frame %ld ends with the quad layer after the projection layer: eye "
                     "visibility BOTH, pose (%.3f, %.3f, %.3f) (%.4f, %.4f, %.4f, %.4f), size "
                     "%.3f x %.3f m, image %dx%d of %dx%d",
-                 x->submitted, q.pos[0], q.pos[1], q.pos[2], q.quat[0], q.quat[1], q.quat[2],
-                 q.quat[3], q.size[0], q.size[1], q.rect[0], q.rect[1], x->quad_w, x->quad_h);
+                    x->submitted, q.pos[0], q.pos[1], q.pos[2], q.quat[0], q.quat[1], q.quat[2],
+                    q.quat[3], q.size[0], q.size[1], q.rect[0], q.rect[1], x->quad_w, x->quad_h);
     x->quad_frames++;
     x->quad_last = q;
     *out_submit = 1;
@@ -179,14 +174,6 @@ int hol__xr_quad_layer(hol__xr *x, const hol_app_view *v, const float shift[3],
 
 void hol__xr_quad_free(hol__xr *x)
 {
-    if (x->quad_nimages && x->gl.DeleteFramebuffers)
-        x->gl.DeleteFramebuffers((hol__GLsizei)x->quad_nimages, x->quad_fbo);
-    free(x->quad_images);
-    free(x->quad_fbo);
-    x->quad_images = NULL;
-    x->quad_fbo = NULL;
-    x->quad_nimages = 0;
-    if (x->quad_chain != XR_NULL_HANDLE)
-        hol__xr_gone(x, "destroy the panel's swapchain", xrDestroySwapchain(x->quad_chain));
-    x->quad_chain = XR_NULL_HANDLE;
+    hol__xr_chain_free(x, &x->quad_chain, &x->quad_images, &x->quad_fbo, &x->quad_nimages,
+                       "destroy the panel's swapchain");
 }

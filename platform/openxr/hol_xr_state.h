@@ -234,7 +234,7 @@ void hol__xr_gone(hol__xr *x, const char *doing, XrResult r);
     do {                                                                                      \
         XrResult hol__r = (call);                                                             \
         if (XR_FAILED(hol__r))                                                                \
-            return hol__xr_fail((x), (doing), hol__r);                                           \
+            return hol__xr_fail((x), (doing), hol__r);                                        \
     } while (0)
 
 /* hol_xr_gfx.c: make the GL context current and fill the binding; load
@@ -256,6 +256,14 @@ int hol__xr_profiles_now(hol__xr *x);
 int hol__xr_views(hol__xr *x);
 int hol__xr_swapchains(hol__xr *x);
 void hol__xr_views_free(hol__xr *x);
+/* a swapchain's framebuffers deleted, its image and framebuffer arrays
+ * freed and it destroyed (doing: the teardown's words, hol__xr_gone);
+ * the next image acquired and waited for (*out_idx; 1 reported: a failed
+ * call, an index out of 0..n-1) */
+void hol__xr_chain_free(hol__xr *x, XrSwapchain *chain, hol__image **images, hol__GLuint **fbo,
+                        uint32_t *n, const char *doing);
+int hol__xr_chain_acquire(hol__xr *x, XrSwapchain chain, uint32_t n, const char *doing,
+                          uint32_t *out_idx);
 #ifndef __ANDROID__
 /* hol_xr_check.c: eye 0 read back against an OSMesa render of fd */
 void hol__xr_check(hol__xr *x, const hol_frame_desc *fd, int w, int h);
@@ -272,7 +280,7 @@ void hol__xr_check_eye(hol__xr *x, int e, const hol_frame_desc *fd, unsigned fbo
  * *out_submit 0: no panel this frame), the figures, teardown */
 int hol__xr_quad_setup(hol__xr *x);
 int hol__xr_quad_layer(hol__xr *x, const hol_app_view *v, const float shift[3],
-                    XrCompositionLayerQuad *out, int *out_submit);
+                       XrCompositionLayerQuad *out, int *out_submit);
 void hol__xr_quad_free(hol__xr *x);
 /* hol_xr_frame.c: fns->environment once what it tells is known (last: the
  * run ends, tell what is known now) */

@@ -65,7 +65,7 @@ int hol__xr_views(hol__xr *x)
                                                 vc[e].maxSwapchainSampleCount);
         if (x->eye[e].w <= 0 || x->eye[e].h <= 0 || x->eye[e].w > 4096 || x->eye[e].h > 4096)
             return hol__xr_error(x, "the headset asks for %dx%d images per eye (1 to 4096 each)",
-                              x->eye[e].w, x->eye[e].h);
+                                 x->eye[e].w, x->eye[e].h);
     }
     return 0;
 }
@@ -174,10 +174,39 @@ int hol__xr_swapchains(hol__xr *x)
     }
     hol__xr_say(x, "xr: swapchains %dx%d per eye, format 0x%llx (%s), %u images, two passes, "
                 "%d sample%s per pixel (the runtime's recommendation%s)",
-             x->eye[0].w, x->eye[0].h, (unsigned long long)fmt,
-             x->srgb ? "sRGB" : "linear RGBA8", x->eye[0].nimages, x->eye[0].samples,
-             x->eye[0].samples > 1 ? "s" : "",
-             x->eye[0].samples > 1 ? ": resolved into the swapchain" : "");
+                x->eye[0].w, x->eye[0].h, (unsigned long long)fmt,
+                x->srgb ? "sRGB" : "linear RGBA8", x->eye[0].nimages, x->eye[0].samples,
+                x->eye[0].samples > 1 ? "s" : "",
+                x->eye[0].samples > 1 ? ": resolved into the swapchain" : "");
+    return 0;
+}
+
+void hol__xr_chain_free(hol__xr *x, XrSwapchain *chain, hol__image **images, hol__GLuint **fbo,
+                        uint32_t *n, const char *doing)
+{
+    if (*n && x->gl.DeleteFramebuffers)
+        x->gl.DeleteFramebuffers((hol__GLsizei)*n, *fbo);
+    free(*images);
+    free(*fbo);
+    *images = NULL;
+    *fbo = NULL;
+    *n = 0;
+    if (*chain != XR_NULL_HANDLE)
+        hol__xr_gone(x, doing, xrDestroySwapchain(*chain));
+    *chain = XR_NULL_HANDLE;
+}
+
+int hol__xr_chain_acquire(hol__xr *x, XrSwapchain chain, uint32_t n, const char *doing,
+                          uint32_t *out_idx)
+{
+    *out_idx = 0;
+    XrSwapchainImageAcquireInfo ai = {XR_TYPE_SWAPCHAIN_IMAGE_ACQUIRE_INFO};
+    HOL__XR(x, doing, xrAcquireSwapchainImage(chain, &ai, out_idx));
+    XrSwapchainImageWaitInfo wi = {XR_TYPE_SWAPCHAIN_IMAGE_WAIT_INFO};
+    wi.timeout = XR_INFINITE_DURATION;
+    HOL__XR(x, doing, xrWaitSwapchainImage(chain, &wi));
+    if (*out_idx >= n)
+        return hol__xr_error(x, "the runtime gave swapchain image %u of %u", *out_idx, n);
     return 0;
 }
 
@@ -185,24 +214,16 @@ void hol__xr_views_free(hol__xr *x)
 {
     for (int e = 0; e < 2; e++) {
         hol__eye *ey = &x->eye[e];
-        if (ey->nimages && x->gl.DeleteFramebuffers) {
-            x->gl.DeleteFramebuffers((hol__GLsizei)ey->nimages, ey->fbo);
+        if (ey->nimages && x->gl.DeleteFramebuffers)
             x->gl.DeleteRenderbuffers(1, &ey->depth);
-        }
         if (ey->msaa_fbo && x->gl.DeleteFramebuffers) {
             hol__GLuint rb[2] = {ey->msaa_color, ey->msaa_depth};
             x->gl.DeleteFramebuffers(1, &ey->msaa_fbo);
             x->gl.DeleteRenderbuffers(2, rb);
         }
         ey->msaa_fbo = ey->msaa_color = ey->msaa_depth = 0;
-        free(ey->images);
-        free(ey->fbo);
-        ey->images = NULL;
-        ey->fbo = NULL;
-        ey->nimages = 0;
-        if (ey->swapchain != XR_NULL_HANDLE)
-            hol__xr_gone(x, "destroy an eye's swapchain", xrDestroySwapchain(ey->swapchain));
-        ey->swapchain = XR_NULL_HANDLE;
+        hol__xr_chain_free(x, &ey->swapchain, &ey->images, &ey->fbo, &ey->nimages,
+                           "destroy an eye's swapchain");
     }
     free(x->views);
     x->views = NULL;
