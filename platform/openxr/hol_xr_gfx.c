@@ -13,15 +13,27 @@
 
 /* ---- graphics: the GL context and its binding ---------------------------- */
 
+/* The runtime's requirements for the GL (gl: "OpenGL" or "OpenGL ES"),
+ * read through the extension's function fn (the runtime must be asked
+ * before the session is made): 0, or 1 reported. */
+static int hol__gl_requirements(hol__xr *x, const char *gl, const char *fn, void *req)
+{
+    typedef XrResult (*req_fn)(XrInstance, XrSystemId, void *);
+    PFN_xrVoidFunction f = NULL;
+    char doing[64];
+    snprintf(doing, sizeof doing, "find the runtime's %s support", gl);
+    HOL__XR(x, doing, xrGetInstanceProcAddr(x->instance, fn, &f));
+    snprintf(doing, sizeof doing, "read the runtime's %s requirements", gl);
+    HOL__XR(x, doing, ((req_fn)(void (*)(void))f)(x->instance, x->system, req));
+    return 0;
+}
+
 #ifdef __ANDROID__
 int hol__xr_graphics(hol__xr *x, hol__binding *b)
 {
-    PFN_xrGetOpenGLESGraphicsRequirementsKHR req_fn = NULL;
-    HOL__XR(x, "find the runtime's OpenGL ES support",
-            xrGetInstanceProcAddr(x->instance, "xrGetOpenGLESGraphicsRequirementsKHR",
-                                  (PFN_xrVoidFunction *)&req_fn));
     XrGraphicsRequirementsOpenGLESKHR req = {XR_TYPE_GRAPHICS_REQUIREMENTS_OPENGL_ES_KHR};
-    HOL__XR(x, "read the runtime's OpenGL ES requirements", req_fn(x->instance, x->system, &req));
+    if (hol__gl_requirements(x, "OpenGL ES", "xrGetOpenGLESGraphicsRequirementsKHR", &req))
+        return 1;
     x->edpy = eglGetDisplay(EGL_DEFAULT_DISPLAY);
     if (!eglInitialize(x->edpy, NULL, NULL))
         return hol__xr_error(x, "cannot initialise EGL (error 0x%x)", (unsigned)eglGetError());
@@ -52,12 +64,9 @@ typedef GLXContext (*hol__create_ctx_fn)(Display *, GLXFBConfig, GLXContext, Boo
 
 int hol__xr_graphics(hol__xr *x, hol__binding *b)
 {
-    PFN_xrGetOpenGLGraphicsRequirementsKHR req_fn = NULL;
-    HOL__XR(x, "find the runtime's OpenGL support",
-            xrGetInstanceProcAddr(x->instance, "xrGetOpenGLGraphicsRequirementsKHR",
-                                  (PFN_xrVoidFunction *)&req_fn));
     XrGraphicsRequirementsOpenGLKHR req = {XR_TYPE_GRAPHICS_REQUIREMENTS_OPENGL_KHR};
-    HOL__XR(x, "read the runtime's OpenGL requirements", req_fn(x->instance, x->system, &req));
+    if (hol__gl_requirements(x, "OpenGL", "xrGetOpenGLGraphicsRequirementsKHR", &req))
+        return 1;
     x->dpy = XOpenDisplay(NULL);
     if (!x->dpy) {
         return hol__xr_error(x, "cannot open the X display (DISPLAY=%s)",

@@ -29,16 +29,7 @@ int hol__xr_quad_setup(hol__xr *x)
         return 0;
     }
     hol_xr_quad_image(&x->quad_w, &x->quad_h);
-    XrSwapchainCreateInfo ci = {XR_TYPE_SWAPCHAIN_CREATE_INFO};
-    ci.usageFlags = XR_SWAPCHAIN_USAGE_COLOR_ATTACHMENT_BIT | XR_SWAPCHAIN_USAGE_SAMPLED_BIT;
-    ci.format = x->format;
-    ci.sampleCount = 1;
-    ci.width = (uint32_t)x->quad_w;
-    ci.height = (uint32_t)x->quad_h;
-    ci.faceCount = 1;
-    ci.arraySize = 1;
-    ci.mipCount = 1;
-    XrResult r = xrCreateSwapchain(x->session, &ci, &x->quad_chain);
+    XrResult r = hol__xr_chain_create(x, x->quad_w, x->quad_h, &x->quad_chain);
     if (XR_FAILED(r)) {
         x->quad_chain = XR_NULL_HANDLE;
         return hol__quad_off(x, "swapchain", r);

@@ -256,6 +256,9 @@ int hol__xr_profiles_now(hol__xr *x);
 int hol__xr_views(hol__xr *x);
 int hol__xr_swapchains(hol__xr *x);
 void hol__xr_views_free(hol__xr *x);
+/* a colour swapchain of w x h in x->format, one sample, one layer (the
+ * eyes', the panel's): xrCreateSwapchain's result */
+XrResult hol__xr_chain_create(hol__xr *x, int w, int h, XrSwapchain *out);
 /* a swapchain's framebuffers deleted, its image and framebuffer arrays
  * freed and it destroyed (doing: the teardown's words, hol__xr_gone);
  * the next image acquired and waited for (*out_idx; 1 reported: a failed

@@ -159,16 +159,7 @@ int hol__xr_swapchains(hol__xr *x)
     x->format = fmt;
     for (int e = 0; e < 2; e++) {
         hol__eye *ey = &x->eye[e];
-        XrSwapchainCreateInfo ci = {XR_TYPE_SWAPCHAIN_CREATE_INFO};
-        ci.usageFlags = XR_SWAPCHAIN_USAGE_COLOR_ATTACHMENT_BIT | XR_SWAPCHAIN_USAGE_SAMPLED_BIT;
-        ci.format = fmt;
-        ci.sampleCount = 1;
-        ci.width = (uint32_t)ey->w;
-        ci.height = (uint32_t)ey->h;
-        ci.faceCount = 1;
-        ci.arraySize = 1;
-        ci.mipCount = 1;
-        HOL__XR(x, "create the swapchains", xrCreateSwapchain(x->session, &ci, &ey->swapchain));
+        HOL__XR(x, "create the swapchains", hol__xr_chain_create(x, ey->w, ey->h, &ey->swapchain));
         if (hol__images(x, ey) || (ey->samples > 1 && hol__msaa(x, ey, fmt)))
             return 1;
     }
@@ -179,6 +170,20 @@ int hol__xr_swapchains(hol__xr *x)
                 x->eye[0].samples > 1 ? "s" : "",
                 x->eye[0].samples > 1 ? ": resolved into the swapchain" : "");
     return 0;
+}
+
+XrResult hol__xr_chain_create(hol__xr *x, int w, int h, XrSwapchain *out)
+{
+    XrSwapchainCreateInfo ci = {XR_TYPE_SWAPCHAIN_CREATE_INFO};
+    ci.usageFlags = XR_SWAPCHAIN_USAGE_COLOR_ATTACHMENT_BIT | XR_SWAPCHAIN_USAGE_SAMPLED_BIT;
+    ci.format = x->format;
+    ci.sampleCount = 1;
+    ci.width = (uint32_t)w;
+    ci.height = (uint32_t)h;
+    ci.faceCount = 1;
+    ci.arraySize = 1;
+    ci.mipCount = 1;
+    return xrCreateSwapchain(x->session, &ci, out);
 }
 
 void hol__xr_chain_free(hol__xr *x, XrSwapchain *chain, hol__image **images, hol__GLuint **fbo,
