@@ -194,7 +194,15 @@ int cli_wants_help(int argc, char **argv, const char *const *valued);
 int cli_help(const char *cmd, int argc, char **argv, const char *const *valued,
              const char *usage);
 
-/* Subcommands */
+/* Subcommands. Each but report has its usage text and its valued options
+ * (cli_NAME_usage, cli_NAME_valued): main.c answers its --help from them
+ * (cli_help) before it runs the command. */
+#define CLI__HELP(name) \
+    extern const char *const cli_##name##_usage; \
+    extern const char *const cli_##name##_valued[];
+CLI__HELP(tile) CLI__HELP(world) CLI__HELP(nav) CLI__HELP(tour) CLI__HELP(render) CLI__HELP(play)
+CLI__HELP(game) CLI__HELP(replay) CLI__HELP(hid) CLI__HELP(xr) CLI__HELP(props)
+#undef CLI__HELP
 int cli_cmd_tile(int argc, char **argv);
 int cli_cmd_world(int argc, char **argv);
 int cli_cmd_nav(int argc, char **argv);

@@ -30,7 +30,7 @@
 #include "play_study.h"
 #include "play_track.h"
 
-static const char *const play_usage =
+const char *const cli_play_usage =
     "usage: holonomy play [LEVEL | --mode tutorial|flag|keys|explore | --study FILE]\n"
     "                     [--seed S] [--log DIR [--append [--restart-participant]]] [--participant ID]\n"
     "                     [--resume] [--session N] [--meta KEY=VALUE]...\n"
@@ -210,7 +210,7 @@ static int play_value(const char *cmd, const char *a, const char *val, play_opts
     return 0;
 }
 
-static const char *const play_valued[] = {"--mode",  "--seed",  "--log",  "--record",
+const char *const cli_play_valued[] = {"--mode",  "--seed",  "--log",  "--record",
                                           "--frames", "--input", "--size", "--gamepad-replay",
                                           "--participant", "--snap-turn", "--study",
                                           "--volume", "--track-hz", PLAY_GEOMETRY_OPTIONS, PLAY_ENV_OPTIONS, NULL};
@@ -239,7 +239,7 @@ static int play_options(const char *cmd, int argc, char **argv, play_opts *o)
     o->seed = CLI_SEED_DEFAULT;
     o->w = 960, o->h = 720, o->use_pad = 1, o->volume = -1;
     cli_opts p;
-    cli_opts_init(&p, cmd, argc, argv, play_valued, flags);
+    cli_opts_init(&p, cmd, argc, argv, cli_play_valued, flags);
     static const char *const repeatable[] = {"--meta", NULL};
     p.repeatable = repeatable;
     o->argc = argc, o->argv = argv;
@@ -649,9 +649,6 @@ int cli_cmd_play(int argc, char **argv)
     static play_ctx c;
     memset(&c, 0, sizeof c);
     c.cmd = "play";
-    int help = cli_help(c.cmd, argc, argv, play_valued, play_usage);
-    if (help >= 0)
-        return help;
     int status = play_options(c.cmd, argc, argv, &c.o);
     if (status)
         return status;

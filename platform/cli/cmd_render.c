@@ -23,7 +23,7 @@
 #include "../osmesa/hol_osmesa.h"
 #include "cli.h"
 
-static const char *const render_usage =
+const char *const cli_render_usage =
     "usage: holonomy render [--walk W] [--eye X,Y,Z] [--yaw DEG] [--pitch DEG]\n"
     "                       [--size WxH] [--out FILE.png] [--tile-ids FILE]\n"
     "                       [--stats] [--euclidean] [--bare] [--fov DEG]\n"
@@ -341,7 +341,7 @@ typedef struct render_opts {
     hol_tile targets[HOL_RENDER_MAX_OBJECTIVES];
 } render_opts;
 
-static const char *const render_value_opts[] = {
+const char *const cli_render_valued[] = {
     "--walk", "--eye", "--hand", "--orient", "--tan", "--yaw", "--pitch", "--size", "--out",
     "--tile-ids", "--fov", "--frames", "--seed", "--target", "--gl", "--stereo", "--keys",
     "--cell", "--tiling", "--room", "--lighting", "--lantern", "--fireflies", NULL};
@@ -511,7 +511,7 @@ static int parse_opts(const char *cmd, int argc, char **argv, render_opts *o)
     cli_opts p;
     const char *a, *val;
     int r;
-    cli_opts_init(&p, cmd, argc, argv, render_value_opts, flags);
+    cli_opts_init(&p, cmd, argc, argv, cli_render_valued, flags);
     p.repeatable = repeatable;
     while ((r = cli_opts_next(&p, &a, &val)) > 0) {
         int g = a ? cli_geometry_value(cmd, a, val, &o->q, &o->cols, &o->rows) : 0;
@@ -866,9 +866,6 @@ static int render_tile_ids(const char *cmd, const render_opts *o, hol_frame_desc
 int cli_cmd_render(int argc, char **argv)
 {
     const char *cmd = "render";
-    int help = cli_help(cmd, argc, argv, render_value_opts, render_usage);
-    if (help >= 0)
-        return help;
     render_opts o;
     hol_frame_desc fd;
     int status = parse_opts(cmd, argc, argv, &o);

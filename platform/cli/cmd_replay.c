@@ -19,7 +19,7 @@
 #include "play_setup.h"
 #include "play_track.h"
 
-static const char *const replay_usage =
+const char *const cli_replay_usage =
     "usage: holonomy replay REC [--log DIR [--append]] [--png-frames LIST --out-dir D]\n"
     "                       [--size WxH] [--tiling 4,Q] [--room CxR] [--cell M]\n"
     "                       [--wav FILE] [--track-hz N]\n"
@@ -98,7 +98,7 @@ static int parse_frame_list(const char *s, long *out, int cap, int *out_n)
     return n == 0;
 }
 
-static const char *const replay_valued[] = {"--log",  "--png-frames", "--out-dir", "--size",
+const char *const cli_replay_valued[] = {"--log",  "--png-frames", "--out-dir", "--size",
                                             "--wav",  "--track-hz", PLAY_GEOMETRY_OPTIONS, NULL};
 
 /* The options that only store their value or set a flag. */
@@ -114,7 +114,7 @@ static int replay_options(replay_ctx *c, int argc, char **argv)
 {
     static const char *const flags[] = {"--append", NULL};
     cli_opts p;
-    cli_opts_init(&p, c->cmd, argc, argv, replay_valued, flags);
+    cli_opts_init(&p, c->cmd, argc, argv, cli_replay_valued, flags);
     const char *a, *val;
     int r, g;
     while ((r = cli_opts_next(&p, &a, &val)) > 0) {
@@ -390,9 +390,6 @@ int cli_cmd_replay(int argc, char **argv)
     memset(&c, 0, sizeof c);
     c.cmd = "replay";
     c.w = 640, c.h = 480;
-    int help = cli_help(c.cmd, argc, argv, replay_valued, replay_usage);
-    if (help >= 0)
-        return help;
     int status = replay_options(&c, argc, argv);
     if (status)
         return status;

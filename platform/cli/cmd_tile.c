@@ -8,7 +8,7 @@
 #include "../../core/hol_tile.h"
 #include "cli.h"
 
-static const char *const tile_usage =
+const char *const cli_tile_usage =
     "usage: holonomy tile walk|dist|bearing [--tiling 4,Q]\n"
     "\n"
     "  tile walk   read lines of room steps (N, E, S, W; '-' or an empty line\n"
@@ -171,16 +171,14 @@ static int bearing_line(void *ctx, long lineno, char *s, size_t len)
     return CLI_EXIT_OK;
 }
 
+const char *const cli_tile_valued[] = {"--tiling", NULL};
+
 int cli_cmd_tile(int argc, char **argv)
 {
-    static const char *const valued[] = {"--tiling", NULL};
-    int help = cli_help("tile", argc, argv, valued, tile_usage);
-    if (help >= 0)
-        return help;
     int q = HOL_TILING_DEFAULT_Q, npos = 0, r;
     const char *pos[2] = {NULL, NULL}, *a, *val;
     cli_opts p;
-    cli_opts_init(&p, "tile", argc, argv, valued, NULL);
+    cli_opts_init(&p, "tile", argc, argv, cli_tile_valued, NULL);
     while ((r = cli_opts_next(&p, &a, &val)) > 0) {
         if (a && cli_geometry_value("tile", a, val, &q, NULL, NULL) < 0)
             return CLI_EXIT_USAGE;

@@ -15,7 +15,7 @@
 #include "../file/hol_file.h"
 #include "cli.h"
 
-static const char *const world_usage =
+const char *const cli_world_usage =
     "usage: holonomy world [--seed S] [--walk W] [--radius R] [--check]\n"
     "                      [--load FILE] [--save FILE] [--capacity N] [--quiet]\n"
     "                      [--stats] [--tiling 4,Q] [--room CxR]\n"
@@ -92,7 +92,7 @@ typedef struct world_opts {
     int q, cols, rows, have_geometry;
 } world_opts;
 
-static const char *const world_valued[] = {"--seed", "--walk",     "--radius", "--load",
+const char *const cli_world_valued[] = {"--seed", "--walk",     "--radius", "--load",
                                            "--save", "--capacity", "--tiling", "--room",
                                            NULL};
 
@@ -154,7 +154,7 @@ static int parse_args(int argc, char **argv, world_opts *o)
     cli_opts p;
     const char *a, *v, *ops[2] = {NULL, NULL};
     int r, nops = 0;
-    cli_opts_init(&p, CMD, argc, argv, world_valued, flags);
+    cli_opts_init(&p, CMD, argc, argv, cli_world_valued, flags);
     while ((r = cli_opts_next(&p, &a, &v)) > 0) {
         if (!a && nops == 2) {
             cli_error(CMD, 0, "unknown argument '%.40s'; see --help", v);
@@ -489,9 +489,6 @@ static int save_world(hol_world *w, const char *path)
 
 int cli_cmd_world(int argc, char **argv)
 {
-    int help = cli_help(CMD, argc, argv, world_valued, world_usage);
-    if (help >= 0)
-        return help;
     world_opts o;
     if (!parse_args(argc, argv, &o) || cli_check_output(CMD, "--save", o.save))
         return CLI_EXIT_USAGE;

@@ -20,7 +20,7 @@
 #include "../openxr/hol_xr.h"
 #endif
 
-static const char *const xr_usage =
+const char *const cli_xr_usage =
     "usage: holonomy xr [LEVEL | --study FILE] [--frames N]\n"
     "                   [--log DIR [--append [--restart-participant]] [--resume]]\n"
     "                   [--participant ID] [--session N] [--meta KEY=VALUE]...\n"
@@ -143,7 +143,7 @@ static int xr_count(const char *cmd, const char *a, const char *val, xr_opts *o)
     return 0;
 }
 
-static const char *const xr_valued[] = {"--frames",      "--log",       "--record",
+const char *const cli_xr_valued[] = {"--frames",      "--log",       "--record",
                                         "--input",       "--check-frame", "--check-dir",
                                         "--participant", "--space",    "--study", "--panel",
                                         PLAY_GEOMETRY_OPTIONS, "--play-area", "--volume",
@@ -171,7 +171,7 @@ static int xr_options(const char *cmd, int argc, char **argv, xr_opts *o)
     o->check_frame = -1;
     o->volume = -1;
     cli_opts p;
-    cli_opts_init(&p, cmd, argc, argv, xr_valued, flags);
+    cli_opts_init(&p, cmd, argc, argv, cli_xr_valued, flags);
     static const char *const repeatable[] = {"--meta", NULL};
     p.repeatable = repeatable;
     o->argc = argc, o->argv = argv;
@@ -431,9 +431,6 @@ static int xr_run(const xr_opts *o, xr_ctx *c, const hol_input *script, long nsc
 int cli_cmd_xr(int argc, char **argv)
 {
     const char *cmd = "xr";
-    int help = cli_help(cmd, argc, argv, xr_valued, xr_usage);
-    if (help >= 0)
-        return help;
     xr_opts o;
     int st = xr_options(cmd, argc, argv, &o);
     if (st)
