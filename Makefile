@@ -54,9 +54,12 @@ AUDIO_SRC := $(wildcard platform/audio/*.c)
 # The headset (OpenXR): the pure room/lifecycle part always, the session
 # only with `make XR=1` (CI builds and runs it in the Monado chroot).
 XR      ?= 0
-XR_PURE_SRC := platform/openxr/hol_xr_room.c platform/openxr/hol_xr_bind.c \
-               platform/openxr/hol_xr_pick.c platform/openxr/hol_xr_text.c \
-               platform/openxr/hol_xr_quad.c
+# The platform shell (platform/shell/, docs/hacking.md "Adding a platform"):
+# what every platform shares (the room in a play area, the panel as a quad,
+# picking, environment.csv's row, the options' clashes), pure C over the
+# core, the renderer's headers and the file layer; every platform links it.
+SHELL_SRC := $(wildcard platform/shell/*.c)
+XR_PURE_SRC := $(SHELL_SRC) platform/openxr/hol_xr_bind.c platform/openxr/hol_xr_text.c
 XR_SRC  := $(XR_PURE_SRC) $(if $(filter 1,$(XR)),$(filter-out $(XR_PURE_SRC),$(wildcard platform/openxr/*.c)))
 XR_LIBS := $(if $(filter 1,$(XR)),-lopenxr_loader -lGL -lX11)
 ifeq ($(XR),1)
@@ -171,13 +174,29 @@ $(BUILD)/tests/test_file: tests/test_file.c platform/file/hol_file.c platform/fi
 	$(CC) $(CFLAGS) -o $@ $< platform/file/hol_file.c $(CORE_LIB) $(LDFLAGS) -lcmocka $(LDLIBS)
 
 # The headset layer's pure part (room in the stage, fade, lifecycle, bindings).
-$(BUILD)/tests/test_xr_%: tests/test_xr_%.c $(XR_PURE_SRC) $(wildcard platform/openxr/*.h) $(CORE_LIB)
+$(BUILD)/tests/test_xr_%: tests/test_xr_%.c $(XR_PURE_SRC) $(wildcard platform/openxr/*.h platform/shell/*.h) $(CORE_LIB)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) -o $@ $< $(XR_PURE_SRC) $(CORE_LIB) $(LDFLAGS) -lcmocka $(LDLIBS)
 
+# The shell's pure part (environment.csv's row, the options' clashes).
+$(BUILD)/tests/test_shell: tests/test_shell.c $(SHELL_SRC) $(wildcard platform/shell/*.h) $(CORE_LIB)
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) -o $@ $< $(SHELL_SRC) $(CORE_LIB) $(LDFLAGS) -lcmocka $(LDLIBS)
+
+# A new platform's template (platform/shell/template/, docs/hacking.md
+# "Adding a platform"): built and run headless for a few frames by make
+# test, so that it cannot rot.
+TEMPLATE_SRC := platform/shell/template/hol_template_main.c
+$(BUILD)/tests/hol_template: $(TEMPLATE_SRC) $(SHELL_SRC) $(wildcard platform/shell/*.h) $(RENDER_LIB) $(CORE_LIB)
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) -o $@ $< $(SHELL_SRC) $(RENDER_LIB) $(CORE_LIB) $(LDFLAGS) $(RENDER_LIBS) $(LDLIBS)
+.PHONY: template-run
+template-run: $(BUILD)/tests/hol_template
+	@$(SUITE) "platform template (3 frames, OSMesa)" $< --frames 3
+
 # The web platform's pure part (pancake devices, WebXR frames as records).
-WEB_PURE_SRC := platform/web/hol_web_input.c platform/web/hol_web_xr.c platform/openxr/hol_xr_room.c
-$(BUILD)/tests/test_web_%: tests/test_web_%.c $(WEB_PURE_SRC) $(wildcard platform/web/*.h) $(CORE_LIB)
+WEB_PURE_SRC := platform/web/hol_web_input.c platform/web/hol_web_xr.c $(SHELL_SRC)
+$(BUILD)/tests/test_web_%: tests/test_web_%.c $(WEB_PURE_SRC) $(wildcard platform/web/*.h platform/shell/*.h) $(CORE_LIB)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) -o $@ $< $(WEB_PURE_SRC) $(CORE_LIB) $(LDFLAGS) -lcmocka $(LDLIBS)
 
@@ -276,7 +295,8 @@ TEST_RUNS := $(patsubst tests/%.sh,cli-run-%,$(CLI_TESTS)) \
              $(patsubst tests/%.c,render-run-%,$(RENDER_TEST_SRC))
 slow_first_runs = $(foreach s,$(SLOW_FIRST),$(filter %-run-$(s),$(1))) \
                   $(filter-out $(foreach s,$(SLOW_FIRST),%-run-$(s)),$(1))
-test-suites: test-tools purity fn-length tiling-gen-check $(call slow_first_runs,$(TEST_RUNS)) fuzz-replay
+test-suites: test-tools purity fn-length tiling-gen-check $(call slow_first_runs,$(TEST_RUNS)) fuzz-replay \
+             template-run
 	@echo "make test: all suites passed"
 
 # The automata of canonical addresses (core/hol_tile_dfa.h) are derived from
@@ -528,7 +548,7 @@ EMCC     ?= emcc
 EMCC_ENV := NODE_PATH=/usr/share/nodejs EM_CACHE=/usr/share/emscripten/cache
 WEB      := $(BUILD)/web
 WEB_SRC  := $(CORE_SRC) $(filter-out render/hol_png.c,$(RENDER_SRC)) \
-            $(wildcard platform/web/*.c) platform/openxr/hol_xr_room.c platform/openxr/hol_xr_quad.c \
+            $(wildcard platform/web/*.c) $(SHELL_SRC) \
             platform/audio/hol_audio.c
 WEB_OBJ  := $(WEB_SRC:%.c=$(BUILD)/web-obj/%.o)
 # Size (issue 25: the page's transfer at most 162 KB gzip -9, checked by

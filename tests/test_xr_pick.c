@@ -11,7 +11,7 @@
 #include <cmocka.h>
 #include <openxr/openxr.h>
 
-#include "../platform/openxr/hol_xr_pick.h"
+#include "../platform/shell/hol_xr_pick.h"
 
 static void test_mirrored_values(void **state)
 {

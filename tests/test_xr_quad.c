@@ -15,7 +15,7 @@
 #include <cmocka.h>
 
 #include "../core/hol_panel.h"
-#include "../platform/openxr/hol_xr_quad.h"
+#include "../platform/shell/hol_xr_quad.h"
 #include "quat_model.h"
 
 #define PI 3.14159265358979323846

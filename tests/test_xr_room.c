@@ -13,7 +13,7 @@
 #include <cmocka.h>
 
 #include "../core/hol_nav.h"
-#include "../platform/openxr/hol_xr_room.h"
+#include "../platform/shell/hol_xr_room.h"
 #include "quat_model.h"
 
 static double frand(uint64_t *s)

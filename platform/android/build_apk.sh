@@ -34,7 +34,7 @@ root=$(cd "$here/../.." && pwd)
 # the NativeActivity entry needs the NDK's native_app_glue header, and the
 # glue and the entry are the only users of libandroid (ALooper, AInputQueue,
 # AConfiguration, ANativeActivity_finish).
-APK_SRC="core/*.c render/*.c platform/openxr/*.c platform/file/hol_sink_posix.c
+APK_SRC="core/*.c render/*.c platform/shell/*.c platform/openxr/*.c platform/file/hol_sink_posix.c
   platform/audio/hol_audio.c platform/android/quest_shell.c"
 # with the OpenXR loader; zlib: render/hol_png.c; openal: OpenAL Soft
 # (platform/audio/hol_audio.c links it on Android; built below, packed)

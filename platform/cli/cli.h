@@ -140,7 +140,10 @@ void cli_opts_init(cli_opts *p, const char *cmd, int argc, char **argv,
                    const char *const *valued, const char *const *flags);
 int cli_opts_next(cli_opts *p, const char **opt, const char **val);
 
-/* "WxH" with sides 16..4096 (--size): 0 ok, else reported and 1. */
+/* "WxH" (--size), each side digits only in lo..hi: 0 ok, 1 not (one
+ * parser for every command's --size; each its own range). */
+int cli_size_value(const char *val, long lo, long hi, long *w, long *h);
+/* --size with sides 16..4096 (play, replay): 0 ok, else reported and 1. */
 int cli_parse_size(const char *cmd, const char *val, int *w, int *h);
 
 /* SIGINT, SIGTERM and SIGHUP are caught (not fatal) from the first call of
@@ -166,6 +169,19 @@ typedef struct cli_path {
 int cli_check_distinct(const char *cmd, const cli_path *in, int nin, const cli_path *out,
                        int nout);
 
+/* The options that only store, as a table (the last entry's opt NULL): a
+ * flag sets an int field of the options' struct to its value, a valued
+ * option keeps its value in a const char * field. cli_store_opt: 1 when a
+ * is one of the table's (stored), 0 not. */
+typedef struct cli_store {
+    const char *opt;
+    size_t off;      /* offsetof the field */
+    int is_flag, value;
+} cli_store;
+#define CLI_STORE_STR(opt, type, field) {opt, offsetof(type, field), 0, 0}
+#define CLI_STORE_FLAG(opt, type, field, v) {opt, offsetof(type, field), 1, v}
+int cli_store_opt(const cli_store *t, const char *a, const char *val, void *opts);
+
 /* Flush stdout; on failure report it and return CLI_EXIT_FAIL. */
 int cli_finish_output(const char *cmd);
 
@@ -173,8 +189,20 @@ int cli_finish_output(const char *cmd);
  * any "--" and not as the value of one of the valued options (the
  * command's list, as for cli_opts_init: "--seed -h" is not help). */
 int cli_wants_help(int argc, char **argv, const char *const *valued);
+/* A command's --help: usage printed to stdout when cli_wants_help, and
+ * cli_finish_output's status returned; -1 when no help is asked. */
+int cli_help(const char *cmd, int argc, char **argv, const char *const *valued,
+             const char *usage);
 
-/* Subcommands */
+/* Subcommands. Each but report has its usage text and its valued options
+ * (cli_NAME_usage, cli_NAME_valued): main.c answers its --help from them
+ * (cli_help) before it runs the command. */
+#define CLI__HELP(name) \
+    extern const char *const cli_##name##_usage; \
+    extern const char *const cli_##name##_valued[];
+CLI__HELP(tile) CLI__HELP(world) CLI__HELP(nav) CLI__HELP(tour) CLI__HELP(render) CLI__HELP(play)
+CLI__HELP(game) CLI__HELP(replay) CLI__HELP(hid) CLI__HELP(xr) CLI__HELP(props)
+#undef CLI__HELP
 int cli_cmd_tile(int argc, char **argv);
 int cli_cmd_world(int argc, char **argv);
 int cli_cmd_nav(int argc, char **argv);

@@ -154,6 +154,20 @@ int cli_check_distinct(const char *cmd, const cli_path *in, int nin, const cli_p
     return 0;
 }
 
+int cli_store_opt(const cli_store *t, const char *a, const char *val, void *opts)
+{
+    for (; t->opt; t++)
+        if (!strcmp(t->opt, a)) {
+            char *field = (char *)opts + t->off;
+            if (t->is_flag)
+                memcpy(field, &t->value, sizeof t->value);
+            else
+                memcpy(field, &val, sizeof val);
+            return 1;
+        }
+    return 0;
+}
+
 int cli_finish_output(const char *cmd)
 {
     if (fflush(stdout) != 0 || ferror(stdout)) {
@@ -173,6 +187,15 @@ int cli_wants_help(int argc, char **argv, const char *const *valued)
             i++;
     }
     return 0;
+}
+
+int cli_help(const char *cmd, int argc, char **argv, const char *const *valued,
+             const char *usage)
+{
+    if (!cli_wants_help(argc, argv, valued))
+        return -1;
+    fputs(usage, stdout);
+    return cli_finish_output(cmd);
 }
 
 int cli_for_each_line(const char *cmd, cli_line_fn fn, void *ctx)
@@ -451,13 +474,27 @@ int cli_opts_next(cli_opts *p, const char **opt, const char **val)
     return 1;
 }
 
+int cli_size_value(const char *val, long lo, long hi, long *w, long *h)
+{
+    char buf[64];
+    const char *x = strchr(val, 'x');
+    size_t n = x ? (size_t)(x - val) : 0;
+    if (!x || n == 0 || n >= sizeof buf)
+        return 1;
+    memcpy(buf, val, n);
+    buf[n] = 0;
+    size_t a = cli_parse_count(buf), b = cli_parse_count(x + 1);
+    if (a < (size_t)lo || a > (size_t)hi || b < (size_t)lo || b > (size_t)hi)
+        return 1;
+    *w = (long)a;
+    *h = (long)b;
+    return 0;
+}
+
 int cli_parse_size(const char *cmd, const char *val, int *w, int *h)
 {
-    char *e1, *e2 = NULL;
-    errno = 0;
-    long a = strtol(val, &e1, 10);
-    long b = *e1 == 'x' ? strtol(e1 + 1, &e2, 10) : 0;
-    if (*e1 != 'x' || !e2 || *e2 || errno || a < 16 || a > 4096 || b < 16 || b > 4096) {
+    long a, b;
+    if (cli_size_value(val, 16, 4096, &a, &b)) {
         cli_error(cmd, 0, "--size '%.40s' is not WxH with sides 16..4096", val);
         return 1;
     }

@@ -10,7 +10,7 @@
 #include "cli.h"
 #include "play_setup.h"
 
-static const char *const game_usage =
+const char *const cli_game_usage =
     "usage: holonomy game LEVEL [--tiling 4,Q] [--room CxR] [--cell M] < PLAYS\n"
     "\n"
     "Plays LEVEL (a level file, SPEC section 5) once per line of standard\n"
@@ -124,17 +124,14 @@ static int play_line(void *vctx, long lineno, char *s, size_t len)
     return 0;
 }
 
+const char *const cli_game_valued[] = {PLAY_GEOMETRY_OPTIONS, NULL};
+
 int cli_cmd_game(int argc, char **argv)
 {
     const char *cmd = "game";
-    static const char *const valued[] = {PLAY_GEOMETRY_OPTIONS, NULL};
     static const char *const flags[] = {NULL};
-    if (cli_wants_help(argc, argv, valued)) {
-        fputs(game_usage, stdout);
-        return cli_finish_output(cmd);
-    }
     cli_opts p;
-    cli_opts_init(&p, cmd, argc, argv, valued, flags);
+    cli_opts_init(&p, cmd, argc, argv, cli_game_valued, flags);
     const char *a, *val, *path = NULL;
     play_geometry geo = {0, 0, 0, 0};
     int r, operands = 0;

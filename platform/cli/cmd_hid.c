@@ -14,7 +14,7 @@
 #include "cli.h"
 #include "play_setup.h"
 
-static const char *const hid_usage =
+const char *const cli_hid_usage =
     "usage: holonomy hid parse FILE\n"
     "       holonomy hid list\n"
     "       holonomy hid watch [--frames N] [--replay FILE]\n"
@@ -215,7 +215,7 @@ static double now_s(void)
     return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
 }
 
-static const char *const hid_valued[] = {"--replay", "--frames", NULL};
+const char *const cli_hid_valued[] = {"--replay", "--frames", NULL};
 
 static int cmd_watch(int argc, char **argv)
 {
@@ -224,7 +224,7 @@ static int cmd_watch(int argc, char **argv)
     const char *script_path = NULL, *a, *val;
     cli_opts p;
     int r;
-    cli_opts_init(&p, cmd, argc - 1, argv + 1, hid_valued, NULL);
+    cli_opts_init(&p, cmd, argc - 1, argv + 1, cli_hid_valued, NULL);
     while ((r = cli_opts_next(&p, &a, &val)) > 0) {
         if (!a) {
             cli_error(cmd, 0, "unknown argument '%.40s'; see --help", val);
@@ -288,10 +288,6 @@ static int cmd_watch(int argc, char **argv)
 
 int cli_cmd_hid(int argc, char **argv)
 {
-    if (cli_wants_help(argc, argv, hid_valued)) {
-        fputs(hid_usage, stdout);
-        return cli_finish_output("hid");
-    }
     if (argc >= 2 && !strcmp(argv[1], "parse"))
         return cmd_parse(argc, argv);
     if (argc >= 2 && !strcmp(argv[1], "list"))

@@ -8,7 +8,7 @@
 #include "../../core/hol_nav_line.h"
 #include "cli.h"
 
-static const char *const nav_usage =
+const char *const cli_nav_usage =
     "usage: holonomy nav [--tiling 4,Q] [--room CxR] [--budget N] [--stats]\n"
     "\n"
     "Reads lines 'PREFIX TARGET': PREFIX a walk of room steps (N, E, S, W)\n"
@@ -81,20 +81,17 @@ static int nav_line(void *vctx, long lineno, char *s, size_t len)
     return CLI_EXIT_OK;
 }
 
+const char *const cli_nav_valued[] = {"--budget", "--tiling", "--room", NULL};
+
 int cli_cmd_nav(int argc, char **argv)
 {
     const char *cmd = "nav";
-    static const char *const valued[] = {"--budget", "--tiling", "--room", NULL};
     static const char *const flags[] = {"--stats", NULL};
-    if (cli_wants_help(argc, argv, valued)) {
-        fputs(nav_usage, stdout);
-        return cli_finish_output(cmd);
-    }
     size_t budget = 0;
     int stats = 0, q = 0, cols = 0, rows = 0, r;
     cli_opts p;
     const char *a, *val;
-    cli_opts_init(&p, cmd, argc, argv, valued, flags);
+    cli_opts_init(&p, cmd, argc, argv, cli_nav_valued, flags);
     while ((r = cli_opts_next(&p, &a, &val)) > 0) {
         if (!a) {
             cli_error(cmd, 0, "unknown argument '%.40s'; see --help", val);

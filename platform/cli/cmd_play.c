@@ -30,7 +30,7 @@
 #include "play_study.h"
 #include "play_track.h"
 
-static const char *const play_usage =
+const char *const cli_play_usage =
     "usage: holonomy play [LEVEL | --mode tutorial|flag|keys|explore | --study FILE]\n"
     "                     [--seed S] [--log DIR [--append [--restart-participant]]] [--participant ID]\n"
     "                     [--resume] [--session N] [--meta KEY=VALUE]...\n"
@@ -177,19 +177,7 @@ static int play_value(const char *cmd, const char *a, const char *val, play_opts
         g = play_env_value(cmd, a, val, &o->env);
     if (g)
         return g < 0;
-    if (!strcmp(a, "--mode"))
-        o->mode = val;
-    else if (!strcmp(a, "--log"))
-        o->log_dir = val;
-    else if (!strcmp(a, "--record"))
-        o->rec = val;
-    else if (!strcmp(a, "--input"))
-        o->input_path = val;
-    else if (!strcmp(a, "--gamepad-replay"))
-        o->pad_script = val;
-    else if (!strcmp(a, "--study"))
-        o->study = val;
-    else if (!strcmp(a, "--participant")) {
+    if (!strcmp(a, "--participant")) {
         if (play_participant(cmd, val))
             return 1;
         o->participant = val;
@@ -222,10 +210,26 @@ static int play_value(const char *cmd, const char *a, const char *val, play_opts
     return 0;
 }
 
-static const char *const play_valued[] = {"--mode",  "--seed",  "--log",  "--record",
+const char *const cli_play_valued[] = {"--mode",  "--seed",  "--log",  "--record",
                                           "--frames", "--input", "--size", "--gamepad-replay",
                                           "--participant", "--snap-turn", "--study",
                                           "--volume", "--track-hz", PLAY_GEOMETRY_OPTIONS, PLAY_ENV_OPTIONS, NULL};
+
+/* The options that only store their value or set a flag. */
+static const cli_store play_store[] = {
+    CLI_STORE_STR("--mode", play_opts, mode),
+    CLI_STORE_STR("--log", play_opts, log_dir),
+    CLI_STORE_STR("--record", play_opts, rec),
+    CLI_STORE_STR("--input", play_opts, input_path),
+    CLI_STORE_STR("--gamepad-replay", play_opts, pad_script),
+    CLI_STORE_STR("--study", play_opts, study),
+    CLI_STORE_FLAG("--no-gamepad", play_opts, use_pad, 0),
+    CLI_STORE_FLAG("--append", play_opts, append, 1),
+    CLI_STORE_FLAG("--stats", play_opts, stats, 1),
+    CLI_STORE_FLAG("--mute", play_opts, mute, 1),
+    CLI_STORE_FLAG("--restart-participant", play_opts, restart_participant, 1),
+    CLI_STORE_FLAG("--resume", play_opts, resume, 1),
+    {NULL, 0, 0, 0}};
 
 static int play_options(const char *cmd, int argc, char **argv, play_opts *o)
 {
@@ -235,7 +239,7 @@ static int play_options(const char *cmd, int argc, char **argv, play_opts *o)
     o->seed = CLI_SEED_DEFAULT;
     o->w = 960, o->h = 720, o->use_pad = 1, o->volume = -1;
     cli_opts p;
-    cli_opts_init(&p, cmd, argc, argv, play_valued, flags);
+    cli_opts_init(&p, cmd, argc, argv, cli_play_valued, flags);
     static const char *const repeatable[] = {"--meta", NULL};
     p.repeatable = repeatable;
     o->argc = argc, o->argv = argv;
@@ -248,43 +252,22 @@ static int play_options(const char *cmd, int argc, char **argv, play_opts *o)
                 return CLI_EXIT_USAGE;
             }
             o->level_path = val;
-        } else if (!strcmp(a, "--no-gamepad")) {
-            o->use_pad = 0;
-        } else if (!strcmp(a, "--append")) {
-            o->append = 1;
-        } else if (!strcmp(a, "--stats")) {
-            o->stats = 1;
-        } else if (!strcmp(a, "--mute")) {
-            o->mute = 1;
-        } else if (!strcmp(a, "--restart-participant")) {
-            o->restart_participant = 1;
-        } else if (!strcmp(a, "--resume")) {
-            o->resume = 1;
-        } else if (play_value(cmd, a, val, o)) {
+        } else if (!cli_store_opt(play_store, a, val, o) && play_value(cmd, a, val, o)) {
             return CLI_EXIT_USAGE;
         }
     }
     if (r < 0)
         return CLI_EXIT_USAGE;
-    const char *clash = !!o->level_path + !!o->mode + !!o->study > 1
-                            ? "give one of a LEVEL file, --mode or --study"
-                        : o->pad_script && !o->use_pad
-                            ? "give --no-gamepad or --gamepad-replay, not both"
-                        : o->append && !o->log_dir ? "--append goes with --log"
-                        : o->restart_participant && !o->study
-                            ? "--restart-participant goes with --study"
-                        : o->resume && o->restart_participant
-                            ? "give --resume or --restart-participant, not both"
-                        : o->resume && !o->study ? "--resume goes with --study"
-                        : o->resume && !o->log_dir ? "--resume goes with --log"
-                        : o->mute && o->volume >= 0 ? "give --mute or --volume, not both"
-                            : NULL;
-    if (clash) {
-        cli_error(cmd, 0, "%s", clash);
-        return CLI_EXIT_USAGE;
-    }
-    if (play_env_check(cmd, &o->env, o->log_dir) ||
-        play_track_check(cmd, o->track_hz, o->log_dir))
+#define G(x) ((x) ? HOL_SHELL_ON : HOL_SHELL_OFF)
+    const unsigned char given[HOL_SHELL_OPT_COUNT] = {
+        [HOL_SHELL_OPT_LEVEL] = G(o->level_path), [HOL_SHELL_OPT_MODE] = G(o->mode),
+        [HOL_SHELL_OPT_STUDY] = G(o->study), [HOL_SHELL_OPT_NO_GAMEPAD] = G(!o->use_pad),
+        [HOL_SHELL_OPT_PAD_REPLAY] = G(o->pad_script), [HOL_SHELL_OPT_APPEND] = G(o->append),
+        [HOL_SHELL_OPT_LOG] = G(o->log_dir), [HOL_SHELL_OPT_RESTART] = G(o->restart_participant),
+        [HOL_SHELL_OPT_RESUME] = G(o->resume), [HOL_SHELL_OPT_MUTE] = G(o->mute),
+        [HOL_SHELL_OPT_VOLUME] = G(o->volume >= 0)};
+#undef G
+    if (play_opts_check(cmd, given, &o->env, o->log_dir, o->track_hz))
         return CLI_EXIT_USAGE;
     o->append |= o->resume;
     const cli_path in[] = {{"LEVEL", o->level_path}, {"--input", o->input_path},
@@ -666,10 +649,6 @@ int cli_cmd_play(int argc, char **argv)
     static play_ctx c;
     memset(&c, 0, sizeof c);
     c.cmd = "play";
-    if (cli_wants_help(argc, argv, play_valued)) {
-        fputs(play_usage, stdout);
-        return cli_finish_output(c.cmd);
-    }
     int status = play_options(c.cmd, argc, argv, &c.o);
     if (status)
         return status;

@@ -11,7 +11,7 @@
 #include "cli.h"
 #include "play_setup.h"
 
-static const char *const props_usage =
+const char *const cli_props_usage =
     "usage: holonomy props [--room CxR] [--cell M] [--tiling 4,Q] [--level FILE]\n"
     "                      [--play-area WxD] [--scale 1:N] --out FILE.svg\n"
     "\n"
@@ -81,12 +81,12 @@ static int props_parse_area(const char *cmd, const char *val, double *w, double 
     return CLI_EXIT_USAGE;
 }
 
-static const char *const props_valued[] = {PLAY_GEOMETRY_OPTIONS, "--level", "--play-area",
+const char *const cli_props_valued[] = {PLAY_GEOMETRY_OPTIONS, "--level", "--play-area",
                                            "--scale", "--out", NULL};
 
 static int props_parse(const char *cmd, int argc, char **argv, props_args *a)
 {
-    static const char *const *const valued = props_valued;
+    static const char *const *const valued = cli_props_valued;
     static const char *const flags[] = {NULL};
     cli_opts p;
     cli_opts_init(&p, cmd, argc, argv, valued, flags);
@@ -181,10 +181,6 @@ int props_write_svg(FILE *f, const hol_props *p, int q, const char *level_name,
 int cli_cmd_props(int argc, char **argv)
 {
     const char *cmd = "props";
-    if (cli_wants_help(argc, argv, props_valued)) {
-        fputs(props_usage, stdout);
-        return cli_finish_output(cmd);
-    }
     props_args a;
     memset(&a, 0, sizeof a);
     int st = props_parse(cmd, argc, argv, &a);

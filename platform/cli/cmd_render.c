@@ -23,7 +23,7 @@
 #include "../osmesa/hol_osmesa.h"
 #include "cli.h"
 
-static const char *const render_usage =
+const char *const cli_render_usage =
     "usage: holonomy render [--walk W] [--eye X,Y,Z] [--yaw DEG] [--pitch DEG]\n"
     "                       [--size WxH] [--out FILE.png] [--tile-ids FILE]\n"
     "                       [--stats] [--euclidean] [--bare] [--fov DEG]\n"
@@ -341,23 +341,10 @@ typedef struct render_opts {
     hol_tile targets[HOL_RENDER_MAX_OBJECTIVES];
 } render_opts;
 
-static const char *const render_value_opts[] = {
+const char *const cli_render_valued[] = {
     "--walk", "--eye", "--hand", "--orient", "--tan", "--yaw", "--pitch", "--size", "--out",
     "--tile-ids", "--fov", "--frames", "--seed", "--target", "--gl", "--stereo", "--keys",
     "--cell", "--tiling", "--room", "--lighting", "--lantern", "--fireflies", NULL};
-
-/* --size WxH: 0 ok, 1 bad. */
-static int parse_size(const char *val, long *w, long *h)
-{
-    char buf[64];
-    const char *x = strchr(val, 'x');
-    size_t n = x ? (size_t)(x - val) : 0;
-    if (!x || n == 0 || n >= sizeof buf)
-        return 1;
-    memcpy(buf, val, n);
-    buf[n] = 0;
-    return parse_int(buf, 1, 8192, w) || parse_int(x + 1, 1, 8192, h);
-}
 
 /* The numeric options: 1 taken, 0 not one of them, -1 bad (reported). */
 static int parse_number_opt(const char *cmd, render_opts *o, const char *a, const char *val)
@@ -375,8 +362,8 @@ static int parse_number_opt(const char *cmd, render_opts *o, const char *a, cons
         o->frames_set = 1;
         bad = parse_int(val, 1, 1000, &o->frames) ? "is not a count in 1..1000" : NULL;
     } else if (!strcmp(a, "--size")) {
-        bad = parse_size(val, &o->w, &o->h) ? "is not WxH with sides 1..8192 (e.g. 640x480)"
-                                            : NULL;
+        bad = cli_size_value(val, 1, 8192, &o->w, &o->h)
+                  ? "is not WxH with sides 1..8192 (e.g. 640x480)" : NULL;
     } else if (!strcmp(a, "--seed")) {
         bad = !cli_parse_u64(val, &o->seed) ? "is not an unsigned 64-bit number" : NULL;
     } else if (!strcmp(a, "--stereo")) {
@@ -524,7 +511,7 @@ static int parse_opts(const char *cmd, int argc, char **argv, render_opts *o)
     cli_opts p;
     const char *a, *val;
     int r;
-    cli_opts_init(&p, cmd, argc, argv, render_value_opts, flags);
+    cli_opts_init(&p, cmd, argc, argv, cli_render_valued, flags);
     p.repeatable = repeatable;
     while ((r = cli_opts_next(&p, &a, &val)) > 0) {
         int g = a ? cli_geometry_value(cmd, a, val, &o->q, &o->cols, &o->rows) : 0;
@@ -879,10 +866,6 @@ static int render_tile_ids(const char *cmd, const render_opts *o, hol_frame_desc
 int cli_cmd_render(int argc, char **argv)
 {
     const char *cmd = "render";
-    if (cli_wants_help(argc, argv, render_value_opts)) {
-        fputs(render_usage, stdout);
-        return cli_finish_output(cmd);
-    }
     render_opts o;
     hol_frame_desc fd;
     int status = parse_opts(cmd, argc, argv, &o);

@@ -19,7 +19,7 @@
 #include "play_setup.h"
 #include "play_track.h"
 
-static const char *const replay_usage =
+const char *const cli_replay_usage =
     "usage: holonomy replay REC [--log DIR [--append]] [--png-frames LIST --out-dir D]\n"
     "                       [--size WxH] [--tiling 4,Q] [--room CxR] [--cell M]\n"
     "                       [--wav FILE] [--track-hz N]\n"
@@ -98,14 +98,23 @@ static int parse_frame_list(const char *s, long *out, int cap, int *out_n)
     return n == 0;
 }
 
-static const char *const replay_valued[] = {"--log",  "--png-frames", "--out-dir", "--size",
+const char *const cli_replay_valued[] = {"--log",  "--png-frames", "--out-dir", "--size",
                                             "--wav",  "--track-hz", PLAY_GEOMETRY_OPTIONS, NULL};
+
+/* The options that only store their value or set a flag. */
+static const cli_store replay_store[] = {
+    CLI_STORE_STR("--log", replay_ctx, log_dir),
+    CLI_STORE_STR("--png-frames", replay_ctx, list),
+    CLI_STORE_STR("--out-dir", replay_ctx, out_dir),
+    CLI_STORE_STR("--wav", replay_ctx, wav),
+    CLI_STORE_FLAG("--append", replay_ctx, append, 1),
+    {NULL, 0, 0, 0}};
 
 static int replay_options(replay_ctx *c, int argc, char **argv)
 {
     static const char *const flags[] = {"--append", NULL};
     cli_opts p;
-    cli_opts_init(&p, c->cmd, argc, argv, replay_valued, flags);
+    cli_opts_init(&p, c->cmd, argc, argv, cli_replay_valued, flags);
     const char *a, *val;
     int r, g;
     while ((r = cli_opts_next(&p, &a, &val)) > 0) {
@@ -115,16 +124,8 @@ static int replay_options(replay_ctx *c, int argc, char **argv)
         }
         if (!a)
             c->rec = val;
-        else if (!strcmp(a, "--log"))
-            c->log_dir = val;
-        else if (!strcmp(a, "--png-frames"))
-            c->list = val;
-        else if (!strcmp(a, "--out-dir"))
-            c->out_dir = val;
-        else if (!strcmp(a, "--append"))
-            c->append = 1;
-        else if (!strcmp(a, "--wav"))
-            c->wav = val;
+        else if (cli_store_opt(replay_store, a, val, c))
+            ;
         else if (!strcmp(a, "--track-hz")) {
             if (play_track_value(c->cmd, val, &c->track_hz))
                 return CLI_EXIT_USAGE;
@@ -389,10 +390,6 @@ int cli_cmd_replay(int argc, char **argv)
     memset(&c, 0, sizeof c);
     c.cmd = "replay";
     c.w = 640, c.h = 480;
-    if (cli_wants_help(argc, argv, replay_valued)) {
-        fputs(replay_usage, stdout);
-        return cli_finish_output(c.cmd);
-    }
     int status = replay_options(&c, argc, argv);
     if (status)
         return status;

@@ -10,7 +10,7 @@
 #include "../../core/hol_tile.h"
 #include "cli.h"
 
-static const char *const tile_usage =
+const char *const cli_tile_usage =
     "usage: holonomy tile walk|dist|bearing [--tiling 4,Q]\n"
     "       holonomy tile count --radius N [--tiling 4,Q]\n"
     "\n"
@@ -201,17 +201,14 @@ static int radius_value(const char *v, int *out_radius)
     return 0;
 }
 
+const char *const cli_tile_valued[] = {"--tiling", "--radius", NULL};
+
 int cli_cmd_tile(int argc, char **argv)
 {
-    static const char *const valued[] = {"--tiling", "--radius", NULL};
-    if (cli_wants_help(argc, argv, valued)) {
-        fputs(tile_usage, stdout);
-        return cli_finish_output("tile");
-    }
     int q = HOL_TILING_DEFAULT_Q, npos = 0, r, radius = -1;
     const char *pos[2] = {NULL, NULL}, *a, *val;
     cli_opts p;
-    cli_opts_init(&p, "tile", argc, argv, valued, NULL);
+    cli_opts_init(&p, "tile", argc, argv, cli_tile_valued, NULL);
     while ((r = cli_opts_next(&p, &a, &val)) > 0) {
         if (a && !strcmp(a, "--radius")) {
             if (radius_value(val, &radius) < 0)

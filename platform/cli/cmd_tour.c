@@ -8,7 +8,7 @@
 #include "../../core/hol_nav_line.h"
 #include "cli.h"
 
-static const char *const tour_usage =
+const char *const cli_tour_usage =
     "usage: holonomy tour [--tiling 4,Q] [--room CxR] [--budget N] [--stats]\n"
     "                     PREFIX KEY... CHEST\n"
     "\n"
@@ -37,22 +37,19 @@ static const char *const tour_usage =
     "\n"
     "Exit status: 0 ok, 1 output or memory failure, 2 bad arguments.\n";
 
+const char *const cli_tour_valued[] = {"--budget", "--tiling", "--room", NULL};
+
 int cli_cmd_tour(int argc, char **argv)
 {
     const char *cmd = "tour";
-    static const char *const valued[] = {"--budget", "--tiling", "--room", NULL};
     static const char *const flags[] = {"--stats", NULL};
-    if (cli_wants_help(argc, argv, valued)) {
-        fputs(tour_usage, stdout);
-        return cli_finish_output(cmd);
-    }
     size_t budget = 0;
     int stats = 0, q = 0, cols = 0, rows = 0, r;
     const char *pos[HOL_NAV_TOUR_MAX_KEYS + 2];
     int npos = 0;
     cli_opts po;
     const char *a, *val;
-    cli_opts_init(&po, cmd, argc, argv, valued, flags);
+    cli_opts_init(&po, cmd, argc, argv, cli_tour_valued, flags);
     while ((r = cli_opts_next(&po, &a, &val)) > 0) {
         if (a && !strcmp(a, "--stats")) {
             stats = 1;

@@ -15,7 +15,7 @@
 #include "../file/hol_file.h"
 #include "cli.h"
 
-static const char *const world_usage =
+const char *const cli_world_usage =
     "usage: holonomy world [--seed S] [--walk W] [--radius R] [--check]\n"
     "                      [--load FILE] [--save FILE] [--capacity N] [--quiet]\n"
     "                      [--stats] [--tiling 4,Q] [--room CxR]\n"
@@ -92,7 +92,7 @@ typedef struct world_opts {
     int q, cols, rows, have_geometry;
 } world_opts;
 
-static const char *const world_valued[] = {"--seed", "--walk",     "--radius", "--load",
+const char *const cli_world_valued[] = {"--seed", "--walk",     "--radius", "--load",
                                            "--save", "--capacity", "--tiling", "--room",
                                            NULL};
 
@@ -139,6 +139,11 @@ static int parse_value(const char *a, const char *v, world_opts *o)
     return 0;
 }
 
+static const cli_store world_store[] = {CLI_STORE_FLAG("--check", world_opts, check, 1),
+                                        CLI_STORE_FLAG("--quiet", world_opts, quiet, 1),
+                                        CLI_STORE_FLAG("--stats", world_opts, stats, 1),
+                                        {NULL, 0, 0, 0}};
+
 static int parse_args(int argc, char **argv, world_opts *o)
 {
     static const char *const flags[] = {"--check", "--quiet", "--stats", NULL};
@@ -149,7 +154,7 @@ static int parse_args(int argc, char **argv, world_opts *o)
     cli_opts p;
     const char *a, *v, *ops[2] = {NULL, NULL};
     int r, nops = 0;
-    cli_opts_init(&p, CMD, argc, argv, world_valued, flags);
+    cli_opts_init(&p, CMD, argc, argv, cli_world_valued, flags);
     while ((r = cli_opts_next(&p, &a, &v)) > 0) {
         if (!a && nops == 2) {
             cli_error(CMD, 0, "unknown argument '%.40s'; see --help", v);
@@ -157,13 +162,7 @@ static int parse_args(int argc, char **argv, world_opts *o)
         }
         if (!a)
             ops[nops++] = v;
-        else if (!strcmp(a, "--check"))
-            o->check = 1;
-        else if (!strcmp(a, "--quiet"))
-            o->quiet = 1;
-        else if (!strcmp(a, "--stats"))
-            o->stats = 1;
-        else if (parse_value(a, v, o))
+        else if (!cli_store_opt(world_store, a, v, o) && parse_value(a, v, o))
             return 0;
     }
     if (r < 0)
@@ -490,10 +489,6 @@ static int save_world(hol_world *w, const char *path)
 
 int cli_cmd_world(int argc, char **argv)
 {
-    if (cli_wants_help(argc, argv, world_valued)) {
-        fputs(world_usage, stdout);
-        return cli_finish_output(CMD);
-    }
     world_opts o;
     if (!parse_args(argc, argv, &o) || cli_check_output(CMD, "--save", o.save))
         return CLI_EXIT_USAGE;

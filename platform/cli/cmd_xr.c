@@ -8,8 +8,8 @@
 #include <string.h>
 
 #include "../../core/hol_session.h"
-#include "../openxr/hol_xr_pick.h"
-#include "../openxr/hol_xr_quad.h"
+#include "../shell/hol_xr_pick.h"
+#include "../shell/hol_xr_quad.h"
 #include "cli.h"
 #include "play_env.h"
 #include "play_setup.h"
@@ -20,7 +20,7 @@
 #include "../openxr/hol_xr.h"
 #endif
 
-static const char *const xr_usage =
+const char *const cli_xr_usage =
     "usage: holonomy xr [LEVEL | --study FILE] [--frames N]\n"
     "                   [--log DIR [--append [--restart-participant]] [--resume]]\n"
     "                   [--participant ID] [--session N] [--meta KEY=VALUE]...\n"
@@ -143,11 +143,25 @@ static int xr_count(const char *cmd, const char *a, const char *val, xr_opts *o)
     return 0;
 }
 
-static const char *const xr_valued[] = {"--frames",      "--log",       "--record",
+const char *const cli_xr_valued[] = {"--frames",      "--log",       "--record",
                                         "--input",       "--check-frame", "--check-dir",
                                         "--participant", "--space",    "--study", "--panel",
                                         PLAY_GEOMETRY_OPTIONS, "--play-area", "--volume",
                                         "--track-hz", PLAY_ENV_OPTIONS, NULL};
+
+/* The options that only store their value or set a flag. */
+static const cli_store xr_store[] = {
+    CLI_STORE_STR("--log", xr_opts, log_dir),
+    CLI_STORE_STR("--record", xr_opts, rec),
+    CLI_STORE_STR("--input", xr_opts, input_path),
+    CLI_STORE_STR("--check-dir", xr_opts, check_dir),
+    CLI_STORE_STR("--study", xr_opts, study),
+    CLI_STORE_FLAG("--append", xr_opts, append, 1),
+    CLI_STORE_FLAG("--no-haptics", xr_opts, no_haptics, 1),
+    CLI_STORE_FLAG("--mute", xr_opts, mute, 1),
+    CLI_STORE_FLAG("--restart-participant", xr_opts, restart_participant, 1),
+    CLI_STORE_FLAG("--resume", xr_opts, resume, 1),
+    {NULL, 0, 0, 0}};
 
 static int xr_options(const char *cmd, int argc, char **argv, xr_opts *o)
 {
@@ -157,7 +171,7 @@ static int xr_options(const char *cmd, int argc, char **argv, xr_opts *o)
     o->check_frame = -1;
     o->volume = -1;
     cli_opts p;
-    cli_opts_init(&p, cmd, argc, argv, xr_valued, flags);
+    cli_opts_init(&p, cmd, argc, argv, cli_xr_valued, flags);
     static const char *const repeatable[] = {"--meta", NULL};
     p.repeatable = repeatable;
     o->argc = argc, o->argv = argv;
@@ -175,30 +189,12 @@ static int xr_options(const char *cmd, int argc, char **argv, xr_opts *o)
             bad = g < 0;
         else if (!strcmp(a, "--frames") || !strcmp(a, "--check-frame"))
             bad = xr_count(cmd, a, val, o);
-        else if (!strcmp(a, "--log"))
-            o->log_dir = val;
-        else if (!strcmp(a, "--record"))
-            o->rec = val;
-        else if (!strcmp(a, "--input"))
-            o->input_path = val;
-        else if (!strcmp(a, "--check-dir"))
-            o->check_dir = val;
-        else if (!strcmp(a, "--study"))
-            o->study = val;
-        else if (!strcmp(a, "--append"))
-            o->append = 1;
-        else if (!strcmp(a, "--no-haptics"))
-            o->no_haptics = 1;
-        else if (!strcmp(a, "--mute"))
-            o->mute = 1;
+        else if (cli_store_opt(xr_store, a, val, o))
+            ;
         else if (!strcmp(a, "--volume"))
             bad = cli_volume_value(cmd, val, &o->volume) != 0;
         else if (!strcmp(a, "--track-hz"))
             bad = play_track_value(cmd, val, &o->track_hz);
-        else if (!strcmp(a, "--restart-participant"))
-            o->restart_participant = 1;
-        else if (!strcmp(a, "--resume"))
-            o->resume = 1;
         else if (!strcmp(a, "--play-area"))
             bad = xr_play_area(cmd, val, o->play_area);
         else if (!strcmp(a, "--panel")) {
@@ -217,24 +213,17 @@ static int xr_options(const char *cmd, int argc, char **argv, xr_opts *o)
     }
     if (bad || r < 0)
         return CLI_EXIT_USAGE;
-    const char *clash = (o->check_frame >= 0) != (o->check_dir != NULL)
-                            ? "--check-frame and --check-dir go together"
-                        : o->study && o->level_path ? "give a LEVEL file or --study, not both"
-                        : o->append && !o->log_dir ? "--append goes with --log"
-                        : o->mute && o->volume >= 0 ? "give --mute or --volume, not both"
-                        : o->restart_participant && !o->study
-                            ? "--restart-participant goes with --study"
-                        : o->resume && o->restart_participant
-                            ? "give --resume or --restart-participant, not both"
-                        : o->resume && !o->study ? "--resume goes with --study"
-                        : o->resume && !o->log_dir ? "--resume goes with --log"
-                            : NULL;
-    if (clash) {
-        cli_error(cmd, 0, "%s", clash);
-        return CLI_EXIT_USAGE;
-    }
-    if (play_env_check(cmd, &o->env, o->log_dir) ||
-        play_track_check(cmd, o->track_hz, o->log_dir))
+#define G(x) ((x) ? HOL_SHELL_ON : HOL_SHELL_OFF)
+    const unsigned char given[HOL_SHELL_OPT_COUNT] = {
+        [HOL_SHELL_OPT_LEVEL] = G(o->level_path), [HOL_SHELL_OPT_STUDY] = G(o->study),
+        [HOL_SHELL_OPT_APPEND] = G(o->append), [HOL_SHELL_OPT_LOG] = G(o->log_dir),
+        [HOL_SHELL_OPT_RESTART] = G(o->restart_participant),
+        [HOL_SHELL_OPT_RESUME] = G(o->resume), [HOL_SHELL_OPT_MUTE] = G(o->mute),
+        [HOL_SHELL_OPT_VOLUME] = G(o->volume >= 0),
+        [HOL_SHELL_OPT_CHECK_FRAME] = G(o->check_frame >= 0),
+        [HOL_SHELL_OPT_CHECK_DIR] = G(o->check_dir)};
+#undef G
+    if (play_opts_check(cmd, given, &o->env, o->log_dir, o->track_hz))
         return CLI_EXIT_USAGE;
     o->append |= o->resume;
     const cli_path in[] = {{"LEVEL", o->level_path}, {"--input", o->input_path},
@@ -442,10 +431,6 @@ static int xr_run(const xr_opts *o, xr_ctx *c, const hol_input *script, long nsc
 int cli_cmd_xr(int argc, char **argv)
 {
     const char *cmd = "xr";
-    if (cli_wants_help(argc, argv, xr_valued)) {
-        fputs(xr_usage, stdout);
-        return cli_finish_output(cmd);
-    }
     xr_opts o;
     int st = xr_options(cmd, argc, argv, &o);
     if (st)

@@ -11,22 +11,35 @@ typedef struct cli_command {
     const char *name;
     int (*run)(int argc, char **argv);
     const char *summary;
+    const char *const *usage;   /* its --help (NULL: the command answers it) */
+    const char *const *valued;  /* its options that take a value (cli_help) */
 } cli_command;
 
+#define CLI__CMD(name, summary) {#name, cli_cmd_##name, summary, &cli_##name##_usage, \
+                                 cli_##name##_valued}
 static const cli_command commands[] = {
-    {"tile", cli_cmd_tile, "tile walk|dist: addresses and distances"},
-    {"world", cli_cmd_world, "the seeded forest around a walk; save, load"},
-    {"nav", cli_cmd_nav, "fewest room steps to a target tile"},
-    {"tour", cli_cmd_tour, "fewest room steps to collect keys, then the chest"},
-    {"render", cli_cmd_render, "render a view to PNG (headless OSMesa or EGL) or in a window"},
-    {"game", cli_cmd_game, "play a level headless from lines of room steps: done|open STEPS OPTIMUM"},
-    {"play", cli_cmd_play, "play in a desktop window (EGL/X11); logs, recording"},
-    {"replay", cli_cmd_replay, "run a recording again: the same logs, PNG frames"},
-    {"xr", cli_cmd_xr, "the headset app on this machine's OpenXR runtime (make XR=1)"},
-    {"hid", cli_cmd_hid, "game controllers: descriptor field maps, list, watch"},
-    {"props", cli_cmd_props, "a printable plan of where real hedges and trees stand (SVG)"},
-    {"report", cli_cmd_report, "research logs to a report: attempts CSV, pictures, a page"},
+    CLI__CMD(tile, "tile walk|dist: addresses and distances"),
+    CLI__CMD(world, "the seeded forest around a walk; save, load"),
+    CLI__CMD(nav, "fewest room steps to a target tile"),
+    CLI__CMD(tour, "fewest room steps to collect keys, then the chest"),
+    CLI__CMD(render, "render a view to PNG (headless OSMesa or EGL) or in a window"),
+    CLI__CMD(game, "play a level headless from lines of room steps: done|open STEPS OPTIMUM"),
+    CLI__CMD(play, "play in a desktop window (EGL/X11); logs, recording"),
+    CLI__CMD(replay, "run a recording again: the same logs, PNG frames"),
+    CLI__CMD(xr, "the headset app on this machine's OpenXR runtime (make XR=1)"),
+    CLI__CMD(hid, "game controllers: descriptor field maps, list, watch"),
+    CLI__CMD(props, "a printable plan of where real hedges and trees stand (SVG)"),
+    {"report", cli_cmd_report, "research logs to a report: attempts CSV, pictures, a page",
+     NULL, NULL},
 };
+#undef CLI__CMD
+
+/* The command's --help, else the command. */
+static int run(const cli_command *c, int argc, char **argv)
+{
+    int help = c->usage ? cli_help(c->name, argc, argv, c->valued, *c->usage) : -1;
+    return help >= 0 ? help : c->run(argc, argv);
+}
 
 static void usage(FILE *f)
 {
@@ -68,7 +81,7 @@ int main(int argc, char **argv)
         if (!strcmp(argv[1], commands[i].name))
             /* each command reads its options with cli_opts_next: one
              * grammar, repeated options refused there */
-            return commands[i].run(argc - 1, argv + 1);
+            return run(&commands[i], argc - 1, argv + 1);
     cli_error("", 0, "unknown command '%.40s'; see 'holonomy --help'", argv[1]);
     return CLI_EXIT_USAGE;
 }

@@ -16,7 +16,9 @@
 #include "../../core/hol_sha256.h"
 #include "../../core/hol_text.h"
 #include "../file/hol_file.h"
+#include "../shell/hol_shell_env.h"
 #include "cli.h"
+#include "play_track.h"
 
 #define PLAY_ENV_ROW_MAX 16384
 
@@ -60,6 +62,17 @@ int play_env_value(const char *cmd, const char *opt, const char *val, play_env *
     return 1;
 }
 
+int play_opts_check(const char *cmd, const unsigned char given[HOL_SHELL_OPT_COUNT],
+                    const play_env *e, const char *log_dir, int track_hz)
+{
+    char msg[200];
+    if (hol_shell_clash(given, msg, sizeof msg)) {
+        cli_error(cmd, 0, "%s", msg);
+        return 1;
+    }
+    return play_env_check(cmd, e, log_dir) != 0 || play_track_check(cmd, track_hz, log_dir) != 0;
+}
+
 int play_env_check(const char *cmd, const play_env *e, const char *log_dir)
 {
     if ((e->session_no || e->nmeta) && !log_dir) {
@@ -74,30 +87,6 @@ int play_env_check(const char *cmd, const play_env *e, const char *log_dir)
         return CLI_EXIT_USAGE;
     }
     return 0;
-}
-
-/* A row being built: fields escaped and RFC 4180, comma-separated. */
-typedef struct play_env_row {
-    char buf[PLAY_ENV_ROW_MAX];
-    size_t n;
-    int fields, over;
-} play_env_row;
-
-static void row_field(play_env_row *r, const char *s)
-{
-    char esc[4096], csv[8200];
-    size_t e = hol_text_escape(s ? s : "", s ? strlen(s) : 0, esc, sizeof esc);
-    if (e >= sizeof esc)
-        r->over = 1;
-    size_t c = hol_text_csv(esc, strlen(esc), csv, sizeof csv);
-    if (c >= sizeof csv)
-        r->over = 1;
-    int w = snprintf(r->buf + r->n, sizeof r->buf - r->n, "%s%s", r->fields ? "," : "", csv);
-    if (w < 0 || (size_t)w >= sizeof r->buf - r->n)
-        r->over = 1;
-    else
-        r->n += (size_t)w;
-    r->fields++;
 }
 
 /* KEY=VALUE;... or the command line, joined with sep into out. */
@@ -140,7 +129,7 @@ int play_env_meta(const char *cmd, const play_env *e, const char *study_path, ho
     return 0;
 }
 
-static int play_env_append(const char *cmd, const char *dir, const play_env_row *r)
+static int play_env_append(const char *cmd, const char *dir, const char *row)
 {
     char name[4200];
     snprintf(name, sizeof name, "%s/environment.csv", dir);
@@ -153,8 +142,8 @@ static int play_env_append(const char *cmd, const char *dir, const play_env_row 
         return 1;
     }
     char line[PLAY_ENV_ROW_MAX + 256];
-    int n = snprintf(line, sizeof line, "%s%s\n", ok && st.st_size == 0 ? PLAY_ENV_COLUMNS "\n" : "",
-                     r->buf);
+    int n = snprintf(line, sizeof line, "%s%s\n",
+                     ok && st.st_size == 0 ? HOL_SHELL_ENV_COLUMNS "\n" : "", row);
     ok = ok && n > 0 && (size_t)n < sizeof line && write(fd, line, (size_t)n) == n &&
          fsync(fd) == 0;
     int e = errno;
@@ -173,33 +162,20 @@ int play_env_write(const char *cmd, const char *log_dir, const play_env *e, cons
 {
     if (!log_dir)
         return 0;
-    static play_env_row r;
-    memset(&r, 0, sizeof r);
-    char num[32] = "", os[400] = "", meta[4096], opts[4096];
+    static char row[PLAY_ENV_ROW_MAX];
+    char os[400] = "", meta[4096], opts[4096];
     struct utsname u;
     if (uname(&u) == 0)
         snprintf(os, sizeof os, "%s %s %s", u.sysname, u.release, u.machine);
-    if (e->session_no)
-        snprintf(num, sizeof num, "%d", e->session_no);
     join(meta, sizeof meta, e->meta, e->nmeta, ";");
     join(opts, sizeof opts, (const char *const *)argv, argc, " ");
-    const char *f[] = {session, participant, num, study_sha256, h->platform, os, h->runtime,
-                       h->gl_renderer, h->controller};
-    for (size_t i = 0; i < sizeof f / sizeof f[0]; i++)
-        row_field(&r, f[i]);
-    char v[64] = "";
-    if (h->refresh_hz > 0)
-        snprintf(v, sizeof v, "%.3f", h->refresh_hz);
-    row_field(&r, v);
-    snprintf(v, sizeof v, "%d", h->width);
-    row_field(&r, h->width ? v : "");
-    snprintf(v, sizeof v, "%d", h->height);
-    row_field(&r, h->height ? v : "");
-    row_field(&r, meta);
-    row_field(&r, opts);
-    if (r.over) {
+    const hol_shell_env_fields f = {session, participant, e->session_no, study_sha256,
+                                    h->platform, os, h->runtime, h->gl_renderer, h->controller,
+                                    h->refresh_hz, h->width, h->height, meta, opts};
+    size_t n;
+    if (hol_shell_env_row(&f, 0, row, sizeof row, &n)) {
         cli_error(cmd, 0, "the environment row is too long");
         return 1;
     }
-    return play_env_append(cmd, log_dir, &r);
+    return play_env_append(cmd, log_dir, row);
 }

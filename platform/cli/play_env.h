@@ -12,9 +12,9 @@
  *   without --log, or a DIR/environment.csv there that is not a regular
  *   file (hol_file_check_out: a FIFO, a folder), before anything opens.
  * - play_env_write (after the session opened on DIR): one row appended to
- *   DIR/environment.csv (made with its header PLAY_ENV_COLUMNS; the row
+ *   DIR/environment.csv (made with its header HOL_SHELL_ENV_COLUMNS; the row
  *   written with one write(2) and fsync'ed), study_sha256 its column ("":
- *   none). Every field is RFC 4180 and escaped (core/hol_text.h). Returns 0
+ *   none). The row: platform/shell/hol_shell_env.h. Returns 0
  *   or 1 (reported).
  * - play_env_meta (before the session opens): the session's metadata for
  *   summary.csv and the recording (hol_rec_meta's session_no,
@@ -25,16 +25,18 @@
  *   DIR/study-HASH.txt (hol_session_desc's study_text). 0, or 1 reported
  *   (the study cannot be read again).
  * - Replay writes no environment row: the environment is the live one.
+ * - play_opts_check (play and xr): the first clash of the options given
+ *   (platform/shell/hol_shell_opts.h's table), then play_env_check and
+ *   play_track_check (play_track.h); 0 none, else 1 (reported).
  */
 #ifndef HOL_PLAY_ENV_H
 #define HOL_PLAY_ENV_H
 
 #include <stddef.h>
 
+#include "../shell/hol_shell_opts.h"
+
 #define PLAY_ENV_META_MAX 16
-#define PLAY_ENV_COLUMNS                                                                  \
-    "session,participant,session_no,study_sha256,platform,os,runtime,gl_renderer,"        \
-    "controller,refresh_hz,width,height,meta,options"
 #define PLAY_ENV_OPTIONS "--session", "--meta"
 #define PLAY_ENV_USAGE                                                                   \
     "  --session N     the participant's session number, 1..999 (day 1, day 2),\n"      \
@@ -63,5 +65,8 @@ int play_env_meta(const char *cmd, const play_env *e, const char *study_path,
 int play_env_write(const char *cmd, const char *log_dir, const play_env *e, const char *session,
                    const char *participant, const char *study_sha256, const play_env_host *h,
                    int argc, char **argv);
+
+int play_opts_check(const char *cmd, const unsigned char given[HOL_SHELL_OPT_COUNT],
+                    const play_env *e, const char *log_dir, int track_hz);
 
 #endif

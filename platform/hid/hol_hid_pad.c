@@ -4,6 +4,8 @@
 #include <math.h>
 #include <string.h>
 
+#include "../shell/hol_shell_stick.h"
+
 /* Generic pads: Linux's gamepad button order (south, east, C, north,
  * west, Z, TL, TR, TL2, TR2, select, start, mode, thumbl, thumbr). */
 static const uint32_t generic_roles[HOL_HID_PAD_MAX_BUTTONS] = {
@@ -144,24 +146,11 @@ static float normalise(const hol_hid_field *f, int64_t v)
     return (float)(t < -1.0 ? -1.0 : t > 1.0 ? 1.0 : t);
 }
 
-static void stick(float dead, float x, float y, float out[2])
-{
-    float m = sqrtf(x * x + y * y);
-    if (m <= dead) {
-        out[0] = out[1] = 0.0f;
-        return;
-    }
-    float s = (m > 1.0f ? 1.0f : m);
-    s = (s - dead) / (1.0f - dead) / m;
-    out[0] = x * s;
-    out[1] = y * s;
-}
-
 void hol_hid_pad_state(const hol_hid_pad *pad, hol_input *io)
 {
     float l[2], r[2];
-    stick(pad->dead_zone, pad->raw[HOL_HID_LX], pad->raw[HOL_HID_LY], l);
-    stick(pad->dead_zone, pad->raw[HOL_HID_RX], pad->raw[HOL_HID_RY], r);
+    hol_shell_stick(pad->dead_zone, pad->raw[HOL_HID_LX], pad->raw[HOL_HID_LY], l);
+    hol_shell_stick(pad->dead_zone, pad->raw[HOL_HID_RX], pad->raw[HOL_HID_RY], r);
     io->move[0] = l[0];
     io->move[1] = -l[1];
     io->turn[0] = -r[0];

@@ -33,10 +33,10 @@ static int hol__android_loader(hol__xr *x, int *out_attached)
     JavaVM *vm = x->d->android_vm;
     JNIEnv *env = NULL;
     if (!vm || !x->d->android_activity)
-        return hol__error(x, "no Java VM or activity given for the OpenXR loader");
+        return hol__xr_error(x, "no Java VM or activity given for the OpenXR loader");
     if ((*vm)->GetEnv(vm, (void **)&env, JNI_VERSION_1_6) == JNI_EDETACHED) {
         if ((*vm)->AttachCurrentThread(vm, &env, NULL) != JNI_OK)
-            return hol__error(x, "cannot attach the headset thread to the Java VM");
+            return hol__xr_error(x, "cannot attach the headset thread to the Java VM");
         *out_attached = 1;
     }
     PFN_xrInitializeLoaderKHR init_loader = NULL;
@@ -107,10 +107,10 @@ static int hol__instance(hol__xr *x)
     snprintf(x->runtime, sizeof x->runtime, "%s %u.%u.%u", ip.runtimeName,
              XR_VERSION_MAJOR(ip.runtimeVersion), XR_VERSION_MINOR(ip.runtimeVersion),
              XR_VERSION_PATCH(ip.runtimeVersion));
-    hol__say(x, "xr: runtime %s %u.%u.%u", ip.runtimeName, XR_VERSION_MAJOR(ip.runtimeVersion),
-             XR_VERSION_MINOR(ip.runtimeVersion), XR_VERSION_PATCH(ip.runtimeVersion));
-    hol__say(x, "xr: %s %s", HOL_XR_EXT_HAND_INTERACTION,
-             x->hand_interaction ? "enabled: the hands are bound (pinches and grasps)"
+    hol__xr_say(x, "xr: runtime %s %u.%u.%u", ip.runtimeName, XR_VERSION_MAJOR(ip.runtimeVersion),
+                XR_VERSION_MINOR(ip.runtimeVersion), XR_VERSION_PATCH(ip.runtimeVersion));
+    hol__xr_say(x, "xr: %s %s", HOL_XR_EXT_HAND_INTERACTION,
+                x->hand_interaction ? "enabled: the hands are bound (pinches and grasps)"
                                  : "not listed by the runtime: no hand bindings");
     XrSystemGetInfo sg = {XR_TYPE_SYSTEM_GET_INFO};
     sg.formFactor = XR_FORM_FACTOR_HEAD_MOUNTED_DISPLAY;
@@ -129,9 +129,9 @@ static void hol__refresh_fb(hol__xr *x)
                                            (PFN_xrVoidFunction *)&get)) &&
         get && XR_SUCCEEDED(get(x->session, &hz)) && hz > 0)
         x->refresh_fb = hz;
-    hol__say(x, "xr: %s %s", XR_FB_DISPLAY_REFRESH_RATE_EXTENSION_NAME,
-             x->refresh_fb > 0 ? "gives the display's refresh rate"
-             : x->fb_refresh   ? "gave no rate: it is measured (predictedDisplayPeriod)"
+    hol__xr_say(x, "xr: %s %s", XR_FB_DISPLAY_REFRESH_RATE_EXTENSION_NAME,
+                x->refresh_fb > 0 ? "gives the display's refresh rate"
+                : x->fb_refresh   ? "gave no rate: it is measured (predictedDisplayPeriod)"
                                : "not listed by the runtime: the refresh rate is measured "
                                  "(predictedDisplayPeriod)");
 }
@@ -139,13 +139,13 @@ static void hol__refresh_fb(hol__xr *x)
 /* The session and everything on it, before the first frame. */
 static int hol__setup(hol__xr *x, const void *binding)
 {
-    if (hol__load_gl(x) || hol__actions(x) || hol__views(x))
+    if (hol__xr_load_gl(x) || hol__xr_actions(x) || hol__xr_views(x))
         return 1;
     XrSessionCreateInfo sc = {XR_TYPE_SESSION_CREATE_INFO};
     sc.next = binding;
     sc.systemId = x->system;
     HOL__XR(x, "create the headset session", xrCreateSession(x->instance, &sc, &x->session));
-    if (hol__spaces(x) || hol__swapchains(x) || hol__quad_setup(x))
+    if (hol__xr_spaces(x) || hol__xr_swapchains(x) || hol__xr_quad_setup(x))
         return 1;
     hol__refresh_fb(x);
     if (x->fns->host) {
@@ -172,32 +172,32 @@ static int hol__setup(hol__xr *x, const void *binding)
     rd.srgb = x->srgb;
     rd.all_programs = 1; /* no shader compiled in a frame the headset waits for */
     if (hol_render_create(&rd, &x->rnd))
-        return hol__error(x, "cannot initialise the renderer on this GL context");
+        return hol__xr_error(x, "cannot initialise the renderer on this GL context");
     return 0;
 }
 
 static void hol__figures(hol__xr *x)
 {
-    hol__say(x, "xr: frames submitted %ld, reached FOCUSED %s, faded at the boundary %ld",
-             x->submitted, x->reached_focused ? "yes" : "no", x->faded);
+    hol__xr_say(x, "xr: frames submitted %ld, reached FOCUSED %s, faded at the boundary %ld",
+                x->submitted, x->reached_focused ? "yes" : "no", x->faded);
     if (x->quad_on)
-        hol__say(x, "xr: panel quad layer submitted in %ld frames, its image drawn %ld times "
+        hol__xr_say(x, "xr: panel quad layer submitted in %ld frames, its image drawn %ld times "
                     "(when its content changed)",
-                 x->quad_frames, x->quad_cache.redraws);
-    hol__say(x, "xr: controller pulses %ld (%ld into a hedge or a trunk, %ld room steps)%s",
-             x->pulses, x->pulses_hit, x->pulses - x->pulses_hit,
-             x->fns->haptic ? "" : ": off (--no-haptics)");
+                    x->quad_frames, x->quad_cache.redraws);
+    hol__xr_say(x, "xr: controller pulses %ld (%ld into a hedge or a trunk, %ld room steps)%s",
+                x->pulses, x->pulses_hit, x->pulses - x->pulses_hit,
+                x->fns->haptic ? "" : ": off (--no-haptics)");
     if (!x->ncpu)
         return;
     qsort(x->cpu_ms, (size_t)x->ncpu, sizeof x->cpu_ms[0], hol__cmp);
     qsort(x->step_ms, (size_t)x->ncpu, sizeof x->step_ms[0], hol__cmp);
-    hol__say(x, "xr: app thread CPU per stereo frame (step, both eyes, submit; without "
+    hol__xr_say(x, "xr: app thread CPU per stereo frame (step, both eyes, submit; without "
                 "xrWaitFrame; unfaded frames): median %.2f ms, p99 %.2f ms over %ld frames; "
                 "of it the app step median %.3f ms, p99 %.3f ms",
-             x->cpu_ms[x->ncpu / 2], x->cpu_ms[x->ncpu * 99 / 100], x->ncpu,
-             x->step_ms[x->ncpu / 2], x->step_ms[x->ncpu * 99 / 100]);
-    hol__say(x, "xr: per eye: %ld / %ld draw calls, %ld / %ld triangles (left / right)",
-             x->draws[0], x->draws[1], x->tris[0], x->tris[1]);
+                x->cpu_ms[x->ncpu / 2], x->cpu_ms[x->ncpu * 99 / 100], x->ncpu,
+                x->step_ms[x->ncpu / 2], x->step_ms[x->ncpu * 99 / 100]);
+    hol__xr_say(x, "xr: per eye: %ld / %ld draw calls, %ld / %ld triangles (left / right)",
+                x->draws[0], x->draws[1], x->tris[0], x->tris[1]);
 }
 
 /* The session on x's instance, system and current GL context (binding: the
@@ -209,25 +209,25 @@ static int hol__run(hol__xr *x, const void *binding)
     while (!x->life.done) {
         int leave = x->fns->poll_platform ? x->fns->poll_platform(x->fns->user) : 0;
         if (leave == 2) { /* at once: the platform cannot wait for the runtime */
-            hol__say(x, "xr: leaving at once, without ending the session");
+            hol__xr_say(x, "xr: leaving at once, without ending the session");
             break;
         }
         if (leave && hol_xr_life_quit(&x->life) == HOL_XR_QUIT_REQUEST_EXIT) {
             HOL__XR(x, "end the session", xrRequestExitSession(x->session));
-            hol__say(x, "xr: exit requested by the platform");
+            hol__xr_say(x, "xr: exit requested by the platform");
         }
-        hol__events(x);
+        hol__xr_events(x);
         if (x->life.done)
             break;
         if (x->life.running) {
-            if (hol__frame(x))
+            if (hol__xr_frame(x))
                 return 1;
         } else {
             struct timespec ts = {0, 10 * 1000 * 1000};
             nanosleep(&ts, NULL);
         }
     }
-    hol__tell_env(x, 1);
+    hol__xr_tell_env(x, 1);
     hol__figures(x);
     return x->failed;
 }
@@ -235,23 +235,23 @@ static int hol__run(hol__xr *x, const void *binding)
 static void hol__destroy(hol__xr *x)
 {
     hol_render_destroy(x->rnd);
-    hol__quad_free(x);
-    hol__views_free(x);
+    hol__xr_quad_free(x);
+    hol__xr_views_free(x);
     for (int h = 0; h < 2; h++)
         if (x->grip[h] != XR_NULL_HANDLE)
-            hol__gone(x, "destroy the hands' spaces", xrDestroySpace(x->grip[h]));
+            hol__xr_gone(x, "destroy the hands' spaces", xrDestroySpace(x->grip[h]));
     if (x->view_space != XR_NULL_HANDLE)
-        hol__gone(x, "destroy the head's space", xrDestroySpace(x->view_space));
+        hol__xr_gone(x, "destroy the head's space", xrDestroySpace(x->view_space));
     if (x->stage != XR_NULL_HANDLE)
-        hol__gone(x, "destroy the room's space", xrDestroySpace(x->stage));
+        hol__xr_gone(x, "destroy the room's space", xrDestroySpace(x->stage));
     if (x->session != XR_NULL_HANDLE)
-        hol__gone(x, "destroy the session", xrDestroySession(x->session));
+        hol__xr_gone(x, "destroy the session", xrDestroySession(x->session));
     if (x->set != XR_NULL_HANDLE)
-        hol__gone(x, "destroy the controller actions", xrDestroyActionSet(x->set));
+        hol__xr_gone(x, "destroy the controller actions", xrDestroyActionSet(x->set));
     if (x->external) /* the instance and the GL context are the caller's */
         return;
     if (x->instance != XR_NULL_HANDLE)
-        hol__gone(x, "close the OpenXR instance", xrDestroyInstance(x->instance));
+        hol__xr_gone(x, "close the OpenXR instance", xrDestroyInstance(x->instance));
 #ifdef __ANDROID__
     if (x->edpy != EGL_NO_DISPLAY) {
         eglMakeCurrent(x->edpy, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
@@ -278,7 +278,7 @@ static int hol__main(const hol_xr_desc *desc, const hol_xr_app_fns *fns,
 {
     hol__xr *x = calloc(1, sizeof *x); /* the platform's one allocation */
     if (!x)
-        return hol__error(NULL, "out of memory");
+        return hol__xr_error(NULL, "out of memory");
     x->d = desc;
     x->fns = fns;
     x->profile[0] = x->profile[1] = -1;
@@ -297,7 +297,7 @@ static int hol__main(const hol_xr_desc *desc, const hol_xr_app_fns *fns,
 #ifdef __ANDROID__
         if (!hol__android_loader(x, &attached))
 #endif
-            if (!hol__instance(x) && !hol__graphics(x, &binding))
+            if (!hol__instance(x) && !hol__xr_graphics(x, &binding))
                 hol__run(x, &binding);
     }
     hol__destroy(x);
@@ -322,6 +322,6 @@ int hol_xr_run_session(const hol_xr_desc *desc, const hol_xr_app_fns *fns,
                        const hol_xr_external *ext)
 {
     if (!ext || ext->instance == XR_NULL_HANDLE || !ext->graphics_binding || !ext->getproc)
-        return hol__error(NULL, "no instance, graphics binding or getproc given");
+        return hol__xr_error(NULL, "no instance, graphics binding or getproc given");
     return hol__main(desc, fns, ext);
 }

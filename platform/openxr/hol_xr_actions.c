@@ -65,11 +65,11 @@ static int hol__suggest(hol__xr *x, const hol_xr_profile *p)
     char doing[160];
     snprintf(doing, sizeof doing, "bind the %s controllers", p->name);
     HOL__XR(x, doing, xrSuggestInteractionProfileBindings(x->instance, &ps));
-    hol__say(x, "xr: bindings accepted %s", p->name);
+    hol__xr_say(x, "xr: bindings accepted %s", p->name);
     return 0;
 }
 
-int hol__actions(hol__xr *x)
+int hol__xr_actions(hol__xr *x)
 {
     XrActionSetCreateInfo si = {XR_TYPE_ACTION_SET_CREATE_INFO};
     snprintf(si.actionSetName, sizeof si.actionSetName, "game");
@@ -110,9 +110,9 @@ static int hol__room_space(hol__xr *x)
     free(types);
     free(ints);
     if (XR_FAILED(r))
-        return hol__fail(x, "list the reference spaces", r);
+        return hol__xr_fail(x, "list the reference spaces", r);
     if (!x->space_type)
-        return hol__error(x, "the OpenXR runtime offers neither a STAGE nor a LOCAL "
+        return hol__xr_error(x, "the OpenXR runtime offers neither a STAGE nor a LOCAL "
                              "reference space (OpenXR requires LOCAL): the runtime is broken");
     XrReferenceSpaceCreateInfo ri = {XR_TYPE_REFERENCE_SPACE_CREATE_INFO};
     ri.referenceSpaceType = (XrReferenceSpaceType)x->space_type;
@@ -121,15 +121,15 @@ static int hol__room_space(hol__xr *x)
     HOL__XR(x, "create the room's reference space",
             xrCreateReferenceSpace(x->session, &ri, &x->stage));
     if (x->space_type == HOL_XR_SPACE_STAGE)
-        hol__say(x, "xr: reference space STAGE");
+        hol__xr_say(x, "xr: reference space STAGE");
     else
-        hol__say(x, "xr: reference space LOCAL (%s): the floor taken %.2f m below the head's "
+        hol__xr_say(x, "xr: reference space LOCAL (%s): the floor taken %.2f m below the head's "
                     "start",
-                 x->d->space == HOL_XR_SPACE_LOCAL ? "asked for" : "no STAGE", -x->origin_y);
+                    x->d->space == HOL_XR_SPACE_LOCAL ? "asked for" : "no STAGE", -x->origin_y);
     return 0;
 }
 
-int hol__spaces(hol__xr *x)
+int hol__xr_spaces(hol__xr *x)
 {
     XrSessionActionSetsAttachInfo at = {XR_TYPE_SESSION_ACTION_SETS_ATTACH_INFO};
     at.countActionSets = 1;
@@ -148,13 +148,13 @@ int hol__spaces(hol__xr *x)
     ri.referenceSpaceType = XR_REFERENCE_SPACE_TYPE_VIEW;
     ri.poseInReferenceSpace.orientation.w = 1;
     HOL__XR(x, "create the head's space", xrCreateReferenceSpace(x->session, &ri, &x->view_space));
-    return hol__bounds(x);
+    return hol__xr_bounds(x);
 }
 
 /* The stage bounds (the play area) and the room and cell that fit them
  * (core/hol_fit.h), told in one line; a runtime without them (Monado's
  * null compositor) is not an error. */
-int hol__bounds(hol__xr *x)
+int hol__xr_bounds(hol__xr *x)
 {
     x->have_bounds = x->bounds_small = 0;
     x->fit_text[0] = 0;
@@ -163,18 +163,18 @@ int hol__bounds(hol__xr *x)
     XrExtent2Df b = {0, 0};
     XrResult r = xrGetReferenceSpaceBoundsRect(x->session, XR_REFERENCE_SPACE_TYPE_STAGE, &b);
     if (XR_FAILED(r))
-        return hol__fail(x, "read the play area's bounds", r);
+        return hol__xr_fail(x, "read the play area's bounds", r);
     if (x->d->play_area[0] > 0 && x->d->play_area[1] > 0) { /* given by hand */
-        hol__say(x, "xr: play area %.2f x %.2f m given (the runtime's bounds: %s)",
-                 x->d->play_area[0], x->d->play_area[1],
-                 r == XR_SPACE_BOUNDS_UNAVAILABLE || b.width <= 0 ? "none" : "not used");
+        hol__xr_say(x, "xr: play area %.2f x %.2f m given (the runtime's bounds: %s)",
+                    x->d->play_area[0], x->d->play_area[1],
+                    r == XR_SPACE_BOUNDS_UNAVAILABLE || b.width <= 0 ? "none" : "not used");
         b.width = x->d->play_area[0];
         b.height = x->d->play_area[1];
         r = XR_SUCCESS;
     }
     if (r == XR_SPACE_BOUNDS_UNAVAILABLE || b.width <= 0 || b.height <= 0 ||
         hol_fit_rect(b.width, b.height, -1, &x->fit) != HOL_OK) {
-        hol__say(x, "xr: stage bounds not given by the runtime: the room is not fitted to "
+        hol__xr_say(x, "xr: stage bounds not given by the runtime: the room is not fitted to "
                     "the play area");
         return 0;
     }
@@ -183,8 +183,8 @@ int hol__bounds(hol__xr *x)
     x->bounds_d = b.height;
     x->bounds_small = x->fit.too_small;
     hol_fit_text(&x->fit, -1, x->fit_text, sizeof x->fit_text);
-    hol__say(x, "xr: stage bounds %.2f x %.2f m", b.width, b.height);
-    hol__say(x, "xr: %s", x->fit_text);
+    hol__xr_say(x, "xr: stage bounds %.2f x %.2f m", b.width, b.height);
+    hol__xr_say(x, "xr: %s", x->fit_text);
     return 0;
 }
 
@@ -193,7 +193,7 @@ int hol__bounds(hol__xr *x)
 /* The pulses of the last step (core/hol_haptic.h, through fns->haptic),
  * played on their hands. A failed pulse is said once and never ends the
  * run, unless the session or the instance is gone. */
-int hol__haptics(hol__xr *x)
+int hol__xr_haptics(hol__xr *x)
 {
     const hol_haptic *hp = x->fns->haptic ? x->fns->haptic(x->fns->user) : NULL;
     for (int h = 0; hp && h < 2; h++) {
@@ -208,15 +208,15 @@ int hol__haptics(hol__xr *x)
         hi.subactionPath = x->hand_path[h];
         XrResult r = xrApplyHapticFeedback(x->session, &hi, (const XrHapticBaseHeader *)&v);
         if (XR_FAILED(r) && hol_xr_result_is_loss((int)r))
-            return hol__fail(x, "pulse a controller", r);
+            return hol__xr_fail(x, "pulse a controller", r);
         if (XR_SUCCEEDED(r)) {
             x->pulses++;
             x->pulses_hit += hp->hand[h].why != HOL_HAPTIC_STEP;
         }
         if (XR_FAILED(r) && !x->haptic_failed) {
             x->haptic_failed = 1;
-            hol__say(x, "xr: cannot pulse the %s controller: %s; the run goes on without",
-                     h ? "right" : "left", hol_xr_result_words((int)r));
+            hol__xr_say(x, "xr: cannot pulse the %s controller: %s; the run goes on without",
+                        h ? "right" : "left", hol_xr_result_words((int)r));
         }
     }
     return 0;
@@ -224,7 +224,7 @@ int hol__haptics(hol__xr *x)
 
 /* ---- state ---------------------------------------------------------------- */
 
-int hol__bool(hol__xr *x, int a, int *out_held)
+int hol__xr_bool(hol__xr *x, int a, int *out_held)
 {
     XrActionStateGetInfo gi = {XR_TYPE_ACTION_STATE_GET_INFO};
     gi.action = x->act[a];
@@ -238,7 +238,7 @@ int hol__bool(hol__xr *x, int a, int *out_held)
  * changed event): x->profile[h], one line each that changed. Only for the
  * prompts: a failed read keeps the old ones (one line), unless the session
  * or the instance is gone. */
-int hol__profiles_now(hol__xr *x)
+int hol__xr_profiles_now(hol__xr *x)
 {
     int any = 0;
     for (int h = 0; h < 2; h++) {
@@ -250,19 +250,19 @@ int hol__profiles_now(hol__xr *x)
             r = xrPathToString(x->instance, st.interactionProfile, sizeof path, &len, path);
         if (XR_FAILED(r)) {
             if (hol_xr_result_is_loss((int)r))
-                return hol__fail(x, "read the controllers' profile", r);
-            hol__say(x, "xr: cannot read the controllers' profile: %s (%s); the prompts keep "
+                return hol__xr_fail(x, "read the controllers' profile", r);
+            hol__xr_say(x, "xr: cannot read the controllers' profile: %s (%s); the prompts keep "
                         "the last one",
-                     hol_xr_result_words((int)r), hol_xr_result_name((int)r)
+                        hol_xr_result_words((int)r), hol_xr_result_name((int)r)
                                                       ? hol_xr_result_name((int)r)
                                                       : "an extension's result");
             return 0;
         }
         int p = st.interactionProfile == XR_NULL_PATH ? -1 : hol_xr_profile_find(path);
         if (p != x->profile[h])
-            hol__say(x, "xr: %s hand: %s", h ? "right" : "left",
-                     st.interactionProfile == XR_NULL_PATH ? "no controller"
-                     : p >= 0                              ? hol_xr_profiles()[p].name
+            hol__xr_say(x, "xr: %s hand: %s", h ? "right" : "left",
+                        st.interactionProfile == XR_NULL_PATH ? "no controller"
+                        : p >= 0                              ? hol_xr_profiles()[p].name
                                                            : path);
         x->profile[h] = p;
         any |= st.interactionProfile != XR_NULL_PATH && p < 0;

@@ -20,7 +20,7 @@
 
 /* The OSMesa render of the same eye, in a child process (it must not share
  * this process's GLX state), against the swapchain's read back. */
-void hol__check(hol__xr *x, const hol_frame_desc *fd, int w, int h)
+void hol__xr_check(hol__xr *x, const hol_frame_desc *fd, int w, int h)
 {
     size_t bytes = (size_t)w * (size_t)h * 4;
     uint8_t *got = malloc(bytes), *ref = malloc(bytes);
@@ -56,7 +56,7 @@ void hol__check(hol__xr *x, const hol_frame_desc *fd, int w, int h)
     uint8_t *ref2 = NULL;
     int rw = 0, rh = 0;
     if (pid < 0 || st != 0 || hol_png_read_file(path, &ref2, &rw, &rh) || rw != w || rh != h) {
-        hol__say(x, "xr: check: the OSMesa reference render failed");
+        hol__xr_say(x, "xr: check: the OSMesa reference render failed");
     } else {
         long bad = 0;
         int worst = 0;
@@ -69,10 +69,10 @@ void hol__check(hol__xr *x, const hol_frame_desc *fd, int w, int h)
             worst = dmax > worst ? dmax : worst;
             bad += dmax > 8;
         }
-        hol__say(x, "xr: check frame %ld eye 0 %dx%d (%s swapchain): %ld pixels differ by more "
+        hol__xr_say(x, "xr: check frame %ld eye 0 %dx%d (%s swapchain): %ld pixels differ by more "
                     "than 8/255 (%.3f %%), largest difference %d",
-                 x->d->check_frame, w, h, x->srgb ? "sRGB" : "linear", bad,
-                 100.0 * (double)bad / ((double)w * h), worst);
+                    x->d->check_frame, w, h, x->srgb ? "sRGB" : "linear", bad,
+                    100.0 * (double)bad / ((double)w * h), worst);
     }
     free(ref2);
     free(got);
@@ -139,15 +139,15 @@ static void hol__measure_panel(hol__xr *x, int e, const hol_frame_desc *fd, cons
         }
     x->panel_left[e] = n ? left : -1;
     x->panel_pred[e] = hol__panel_corner(fd, w);
-    hol__say(x, "xr: check panel eye %d: %ld pixels, left edge %d px (predicted %.2f), at most "
+    hol__xr_say(x, "xr: check panel eye %d: %ld pixels, left edge %d px (predicted %.2f), at most "
                 "%.1f degrees from the eye's axis",
-             e, n, n ? left : -1, x->panel_pred[e], worst * 180 / 3.14159265358979323846);
+                e, n, n ? left : -1, x->panel_pred[e], worst * 180 / 3.14159265358979323846);
     if (e == 1)
-        hol__say(x, "xr: check panel disparity %.0f px (predicted %.2f)",
-                 x->panel_left[0] - x->panel_left[1], x->panel_pred[0] - x->panel_pred[1]);
+        hol__xr_say(x, "xr: check panel disparity %.0f px (predicted %.2f)",
+                    x->panel_left[0] - x->panel_left[1], x->panel_pred[0] - x->panel_pred[1]);
 }
 
-void hol__check_eye(hol__xr *x, int e, const hol_frame_desc *fd, unsigned fbo, int w, int h)
+void hol__xr_check_eye(hol__xr *x, int e, const hol_frame_desc *fd, unsigned fbo, int w, int h)
 {
     size_t bytes = (size_t)w * (size_t)h * 4;
     uint8_t *bare = malloc(bytes), *shown = malloc(bytes);
@@ -165,13 +165,13 @@ void hol__check_eye(hol__xr *x, int e, const hol_frame_desc *fd, unsigned fbo, i
     snprintf(path, sizeof path, "%s/xr-world-eye%d.png", x->d->check_dir, e);
     hol_png_write_file(path, bare, w, h, 0);
     const hol_camera *c = &b.cam;
-    hol__say(x, "xr: check eye %d render --eye %.9g,%.9g,%.9g --orient %.9g,%.9g,%.9g,%.9g "
+    hol__xr_say(x, "xr: check eye %d render --eye %.9g,%.9g,%.9g --orient %.9g,%.9g,%.9g,%.9g "
                 "--tan %.17g,%.17g,%.17g,%.17g --size %dx%d --fireflies %.17g",
-             e, c->eye[0], c->eye[1], c->eye[2], c->orient[0], c->orient[1], c->orient[2],
-             c->orient[3], c->tan_left, c->tan_right, c->tan_down, c->tan_up, w, h,
-             b.fireflies ? b.time_s : 0.0);
+                e, c->eye[0], c->eye[1], c->eye[2], c->orient[0], c->orient[1], c->orient[2],
+                c->orient[3], c->tan_left, c->tan_right, c->tan_down, c->tan_up, w, h,
+                b.fireflies ? b.time_s : 0.0);
     if (e == 0) /* the world against the renders without a HUD */
-        hol__check(x, &b, w, h);
+        hol__xr_check(x, &b, w, h);
     x->gl.BindFramebuffer(HOL__GL_FRAMEBUFFER, fbo);
     if (hol_render_frame(x->rnd, fd, NULL) == HOL_OK) {
         hol_render_read_rgba(x->rnd, w, h, shown);

@@ -25,7 +25,7 @@ static int hol__locate(hol__xr *x, XrSpace space, XrTime t, float pos[3], float 
     XrSpaceLocation loc = {XR_TYPE_SPACE_LOCATION};
     XrResult r = xrLocateSpace(space, x->stage, t, &loc);
     if (XR_FAILED(r))
-        return -hol__fail(x, "locate the head and hands", r);
+        return -hol__xr_fail(x, "locate the head and hands", r);
     if (!(loc.locationFlags & XR_SPACE_LOCATION_POSITION_VALID_BIT) ||
         !(loc.locationFlags & XR_SPACE_LOCATION_ORIENTATION_VALID_BIT))
         return 0;
@@ -43,7 +43,7 @@ static int hol__hands(hol__xr *x, XrTime t, hol_input *in)
     HOL__XR(x, "read the controllers", xrSyncActions(x->session, &sy));
     int held[HOL_XR_ACT_COUNT];
     for (int a = 0; a < HOL_XR_ACT_COUNT; a++)
-        if (hol__bool(x, a, &held[a]))
+        if (hol__xr_bool(x, a, &held[a]))
             return 1;
     in->buttons |= hol_xr_buttons(&x->keys, held, x->in_menu);
     for (int h = 0; h < 2; h++) {
@@ -56,7 +56,7 @@ static int hol__hands(hol__xr *x, XrTime t, hol_input *in)
         hol_xr_to_room(&x->calib, gp, gq, &in->hand[h]);
         in->flags |= h ? HOL_INPUT_HAND_R_VALID : HOL_INPUT_HAND_L_VALID;
         if (!x->grips_located[h]++)
-            hol__say(x, "xr: grip %s located", h ? "right" : "left");
+            hol__xr_say(x, "xr: grip %s located", h ? "right" : "left");
     }
     return 0;
 }
@@ -155,21 +155,21 @@ static int hol__step(hol__xr *x, const hol_input *in, const hol_app_view **out_v
     int st = x->fns->step(x->fns->user, in, out_v);
     x->step_now = hol__thread_cpu_ms() - s0;
     if (st < 0)
-        return hol__error(x, "the app step failed");
+        return hol__xr_error(x, "the app step failed");
     x->in_menu = *out_v && (*out_v)->paused && x->life.focused;
     hol__room_size(x, *out_v);
     /* the panel's prompt line, said when it changes (the first seconds
      * name the menu's control: "xr: prompt MENU: menu") */
     if (*out_v && strcmp((*out_v)->hud.hint, x->prompt)) {
         snprintf(x->prompt, sizeof x->prompt, "%s", (*out_v)->hud.hint);
-        hol__say(x, "xr: prompt %s", x->prompt[0] ? x->prompt : "(none)");
+        hol__xr_say(x, "xr: prompt %s", x->prompt[0] ? x->prompt : "(none)");
     }
     if (x->fns->level_started(x->fns->user))
         hol_render_invalidate(x->rnd);
     if ((st > 0 || (x->d->frames > 0 && x->submitted + 1 >= x->d->frames)) &&
         hol_xr_life_quit(&x->life) == HOL_XR_QUIT_REQUEST_EXIT) {
         HOL__XR(x, "end the session", xrRequestExitSession(x->session));
-        hol__say(x, "xr: exit requested after %ld frames", x->submitted + 1);
+        hol__xr_say(x, "xr: exit requested after %ld frames", x->submitted + 1);
     }
     return 0;
 }
@@ -182,14 +182,9 @@ static int hol__draw_eye(hol__xr *x, int e, const hol_app_view *v, const hol_inp
 {
     hol__eye *ey = &x->eye[e];
     const XrView *view = &x->views[e];
-    uint32_t idx = 0;
-    XrSwapchainImageAcquireInfo ai = {XR_TYPE_SWAPCHAIN_IMAGE_ACQUIRE_INFO};
-    HOL__XR(x, "draw the next frame", xrAcquireSwapchainImage(ey->swapchain, &ai, &idx));
-    XrSwapchainImageWaitInfo wi = {XR_TYPE_SWAPCHAIN_IMAGE_WAIT_INFO};
-    wi.timeout = XR_INFINITE_DURATION;
-    HOL__XR(x, "draw the next frame", xrWaitSwapchainImage(ey->swapchain, &wi));
-    if (idx >= ey->nimages)
-        return hol__error(x, "the runtime gave swapchain image %u of %u", idx, ey->nimages);
+    uint32_t idx;
+    if (hol__xr_chain_acquire(x, ey->swapchain, ey->nimages, "draw the next frame", &idx))
+        return 1;
     x->gl.BindFramebuffer(HOL__GL_FRAMEBUFFER, ey->samples > 1 ? ey->msaa_fbo : ey->fbo[idx]);
     x->gl.Viewport(0, 0, ey->w, ey->h);
     hol_frame_desc fd;
@@ -234,7 +229,7 @@ static int hol__draw_eye(hol__xr *x, int e, const hol_app_view *v, const hol_inp
     }
 #ifndef __ANDROID__
     if (x->d->check_dir && x->submitted == x->d->check_frame && inside && fd.fade == 0)
-        hol__check_eye(x, e, &fd, ey->fbo[idx], ey->w, ey->h);
+        hol__xr_check_eye(x, e, &fd, ey->fbo[idx], ey->w, ey->h);
 #endif
     x->gl.BindFramebuffer(HOL__GL_FRAMEBUFFER, 0);
     XrSwapchainImageReleaseInfo ri = {XR_TYPE_SWAPCHAIN_IMAGE_RELEASE_INFO};
@@ -289,12 +284,12 @@ static int hol__locate_views(hol__xr *x, XrTime t)
     }
     XrResult r = xrLocateViews(x->session, &li, &vs, x->nviews, &n, x->views);
     if (XR_FAILED(r))
-        return -hol__fail(x, "locate the eyes", r);
+        return -hol__xr_fail(x, "locate the eyes", r);
     return n == 2 && (vs.viewStateFlags & XR_VIEW_STATE_POSITION_VALID_BIT) &&
            (vs.viewStateFlags & XR_VIEW_STATE_ORIENTATION_VALID_BIT);
 }
 
-void hol__tell_env(hol__xr *x, int last)
+void hol__xr_tell_env(hol__xr *x, int last)
 {
     if (x->env_told || !x->fns->environment)
         return;
@@ -311,13 +306,13 @@ void hol__tell_env(hol__xr *x, int last)
                       : x->any_profile ? "xr"
                                        : "";
     if (hz > 0)
-        hol__say(x, "xr: display refresh %.3f Hz (%s%s)", hz, how,
-                 x->refresh_fb > 0 ? ": XR_FB_display_refresh_rate"
+        hol__xr_say(x, "xr: display refresh %.3f Hz (%s%s)", hz, how,
+                    x->refresh_fb > 0 ? ": XR_FB_display_refresh_rate"
                                    : ": the mean predictedDisplayPeriod of the first frames");
     x->fns->environment(x->fns->user, ctl ? ctl : "", hz, how);
 }
 
-int hol__frame(hol__xr *x)
+int hol__xr_frame(hol__xr *x)
 {
     XrFrameWaitInfo wi = {XR_TYPE_FRAME_WAIT_INFO};
     XrFrameState fs = {XR_TYPE_FRAME_STATE};
@@ -326,7 +321,7 @@ int hol__frame(hol__xr *x)
         x->period_ns += (double)fs.predictedDisplayPeriod;
         x->periods++;
     }
-    hol__tell_env(x, 0);
+    hol__xr_tell_env(x, 0);
     double c0 = hol__thread_cpu_ms();
     XrFrameBeginInfo bi = {XR_TYPE_FRAME_BEGIN_INFO};
     HOL__XR(x, "begin the next frame", xrBeginFrame(x->session, &bi));
@@ -337,7 +332,7 @@ int hol__frame(hol__xr *x)
     float shift[3];
     const hol_app_view *v = NULL;
     if (views_ok < 0 || hol__input(x, &fs, &in, shift) || hol__step(x, &in, &v) ||
-        hol__haptics(x))
+        hol__xr_haptics(x))
         return 1;
     v = hol__noted(x, v, in.time_s);
     XrCompositionLayerProjectionView pv[2];
@@ -353,7 +348,7 @@ int hol__frame(hol__xr *x)
      * view is faded out entirely */
     XrCompositionLayerQuad quad = {XR_TYPE_COMPOSITION_LAYER_QUAD};
     int with_quad = 0;
-    if (rendered && x->fade_now < 1 && hol__quad_layer(x, v, shift, &quad, &with_quad))
+    if (rendered && x->fade_now < 1 && hol__xr_quad_layer(x, v, shift, &quad, &with_quad))
         return 1;
     const XrCompositionLayerBaseHeader *layers[2] = {(const XrCompositionLayerBaseHeader *)&layer,
                                                      (const XrCompositionLayerBaseHeader *)&quad};

@@ -13,32 +13,44 @@
 
 /* ---- graphics: the GL context and its binding ---------------------------- */
 
-#ifdef __ANDROID__
-int hol__graphics(hol__xr *x, hol__binding *b)
+/* The runtime's requirements for the GL (gl: "OpenGL" or "OpenGL ES"),
+ * read through the extension's function fn (the runtime must be asked
+ * before the session is made): 0, or 1 reported. */
+static int hol__gl_requirements(hol__xr *x, const char *gl, const char *fn, void *req)
 {
-    PFN_xrGetOpenGLESGraphicsRequirementsKHR req_fn = NULL;
-    HOL__XR(x, "find the runtime's OpenGL ES support",
-            xrGetInstanceProcAddr(x->instance, "xrGetOpenGLESGraphicsRequirementsKHR",
-                                  (PFN_xrVoidFunction *)&req_fn));
+    typedef XrResult (*req_fn)(XrInstance, XrSystemId, void *);
+    PFN_xrVoidFunction f = NULL;
+    char doing[64];
+    snprintf(doing, sizeof doing, "find the runtime's %s support", gl);
+    HOL__XR(x, doing, xrGetInstanceProcAddr(x->instance, fn, &f));
+    snprintf(doing, sizeof doing, "read the runtime's %s requirements", gl);
+    HOL__XR(x, doing, ((req_fn)(void (*)(void))f)(x->instance, x->system, req));
+    return 0;
+}
+
+#ifdef __ANDROID__
+int hol__xr_graphics(hol__xr *x, hol__binding *b)
+{
     XrGraphicsRequirementsOpenGLESKHR req = {XR_TYPE_GRAPHICS_REQUIREMENTS_OPENGL_ES_KHR};
-    HOL__XR(x, "read the runtime's OpenGL ES requirements", req_fn(x->instance, x->system, &req));
+    if (hol__gl_requirements(x, "OpenGL ES", "xrGetOpenGLESGraphicsRequirementsKHR", &req))
+        return 1;
     x->edpy = eglGetDisplay(EGL_DEFAULT_DISPLAY);
     if (!eglInitialize(x->edpy, NULL, NULL))
-        return hol__error(x, "cannot initialise EGL (error 0x%x)", (unsigned)eglGetError());
+        return hol__xr_error(x, "cannot initialise EGL (error 0x%x)", (unsigned)eglGetError());
     const EGLint attr[] = {EGL_RENDERABLE_TYPE, 0x40 /* EGL_OPENGL_ES3_BIT */, EGL_SURFACE_TYPE,
                            EGL_PBUFFER_BIT, EGL_RED_SIZE, 8, EGL_GREEN_SIZE, 8, EGL_BLUE_SIZE, 8,
                            EGL_ALPHA_SIZE, 8, EGL_DEPTH_SIZE, 24, EGL_STENCIL_SIZE, 8, EGL_NONE};
     EGLConfig cfg;
     EGLint n = 0;
     if (!eglChooseConfig(x->edpy, attr, &cfg, 1, &n) || n < 1)
-        return hol__error(x, "EGL has no OpenGL ES 3 configuration with depth and stencil");
+        return hol__xr_error(x, "EGL has no OpenGL ES 3 configuration with depth and stencil");
     const EGLint cattr[] = {EGL_CONTEXT_CLIENT_VERSION, 3, EGL_NONE};
     x->ectx = eglCreateContext(x->edpy, cfg, EGL_NO_CONTEXT, cattr);
     const EGLint sattr[] = {EGL_WIDTH, 16, EGL_HEIGHT, 16, EGL_NONE};
     x->esurf = eglCreatePbufferSurface(x->edpy, cfg, sattr);
     if (x->ectx == EGL_NO_CONTEXT || !eglMakeCurrent(x->edpy, x->esurf, x->esurf, x->ectx))
-        return hol__error(x, "cannot make an OpenGL ES 3 context current (EGL error 0x%x)",
-                          (unsigned)eglGetError());
+        return hol__xr_error(x, "cannot make an OpenGL ES 3 context current (EGL error 0x%x)",
+                             (unsigned)eglGetError());
     x->getproc = (hol_render_getproc)eglGetProcAddress;
     b->type = XR_TYPE_GRAPHICS_BINDING_OPENGL_ES_ANDROID_KHR;
     b->next = NULL;
@@ -50,18 +62,15 @@ int hol__graphics(hol__xr *x, hol__binding *b)
 #else
 typedef GLXContext (*hol__create_ctx_fn)(Display *, GLXFBConfig, GLXContext, Bool, const int *);
 
-int hol__graphics(hol__xr *x, hol__binding *b)
+int hol__xr_graphics(hol__xr *x, hol__binding *b)
 {
-    PFN_xrGetOpenGLGraphicsRequirementsKHR req_fn = NULL;
-    HOL__XR(x, "find the runtime's OpenGL support",
-            xrGetInstanceProcAddr(x->instance, "xrGetOpenGLGraphicsRequirementsKHR",
-                                  (PFN_xrVoidFunction *)&req_fn));
     XrGraphicsRequirementsOpenGLKHR req = {XR_TYPE_GRAPHICS_REQUIREMENTS_OPENGL_KHR};
-    HOL__XR(x, "read the runtime's OpenGL requirements", req_fn(x->instance, x->system, &req));
+    if (hol__gl_requirements(x, "OpenGL", "xrGetOpenGLGraphicsRequirementsKHR", &req))
+        return 1;
     x->dpy = XOpenDisplay(NULL);
     if (!x->dpy) {
-        return hol__error(x, "cannot open the X display (DISPLAY=%s)",
-                          getenv("DISPLAY") ? getenv("DISPLAY") : "");
+        return hol__xr_error(x, "cannot open the X display (DISPLAY=%s)",
+                             getenv("DISPLAY") ? getenv("DISPLAY") : "");
     }
     const int attr[] = {GLX_X_RENDERABLE, True, GLX_DRAWABLE_TYPE, GLX_WINDOW_BIT,
                         GLX_RENDER_TYPE, GLX_RGBA_BIT, GLX_RED_SIZE, 8, GLX_GREEN_SIZE, 8,
@@ -70,13 +79,13 @@ int hol__graphics(hol__xr *x, hol__binding *b)
     int n = 0;
     GLXFBConfig *cfgs = glXChooseFBConfig(x->dpy, DefaultScreen(x->dpy), attr, &n);
     if (!cfgs || n < 1) {
-        return hol__error(x, "no GLX frame buffer configuration with depth and stencil");
+        return hol__xr_error(x, "no GLX frame buffer configuration with depth and stencil");
     }
     x->cfg = cfgs[0];
     XFree(cfgs);
     XVisualInfo *vi = glXGetVisualFromFBConfig(x->dpy, x->cfg);
     if (!vi) {
-        return hol__error(x, "no X visual for the GLX configuration");
+        return hol__xr_error(x, "no X visual for the GLX configuration");
     }
     XSetWindowAttributes swa;
     memset(&swa, 0, sizeof swa);
@@ -89,7 +98,7 @@ int hol__graphics(hol__xr *x, hol__binding *b)
     hol__create_ctx_fn create = (hol__create_ctx_fn)glXGetProcAddressARB(
         (const GLubyte *)"glXCreateContextAttribsARB");
     if (!create) {
-        return hol__error(x, "GLX has no glXCreateContextAttribsARB");
+        return hol__xr_error(x, "GLX has no glXCreateContextAttribsARB");
     }
     /* a core context at the runtime's minimum or 4.5, whichever is higher */
     int major = (int)XR_VERSION_MAJOR(req.minApiVersionSupported);
@@ -101,7 +110,7 @@ int hol__graphics(hol__xr *x, hol__binding *b)
                          None};
     x->ctx = create(x->dpy, x->cfg, NULL, True, cattr);
     if (!x->ctx || !glXMakeCurrent(x->dpy, x->win, x->ctx)) {
-        return hol__error(x, "cannot make a GL %d.%d core context current", major, minor);
+        return hol__xr_error(x, "cannot make a GL %d.%d core context current", major, minor);
     }
     x->getproc = (hol_render_getproc)glXGetProcAddressARB;
     b->type = XR_TYPE_GRAPHICS_BINDING_OPENGL_XLIB_KHR;
@@ -115,13 +124,13 @@ int hol__graphics(hol__xr *x, hol__binding *b)
 }
 #endif
 
-int hol__load_gl(hol__xr *x)
+int hol__xr_load_gl(hol__xr *x)
 {
 #define HOL__LOAD(f)                                                                          \
     do {                                                                                      \
         hol_render_proc p = x->getproc("gl" #f);                                              \
         if (!p) {                                                                             \
-            return hol__error(x, "GL has no gl%s", #f);                                       \
+            return hol__xr_error(x, "GL has no gl%s", #f);                                       \
         }                                                                                     \
         memcpy(&x->gl.f, &p, sizeof p);                                                       \
     } while (0)

@@ -14,31 +14,22 @@
 static int hol__quad_off(hol__xr *x, const char *why, XrResult r)
 {
     const char *name = hol_xr_result_name((int)r);
-    hol__say(x, "xr: panel in the scene: the quad layer's %s failed (%s): the fallback", why,
-             name ? name : "an extension's error");
-    hol__quad_free(x);
+    hol__xr_say(x, "xr: panel in the scene: the quad layer's %s failed (%s): the fallback", why,
+                name ? name : "an extension's error");
+    hol__xr_quad_free(x);
     x->quad_on = 0;
     return 0;
 }
 
-int hol__quad_setup(hol__xr *x)
+int hol__xr_quad_setup(hol__xr *x)
 {
     x->quad_on = 0;
     if (x->d->panel == HOL_XR_PANEL_SCENE) {
-        hol__say(x, "xr: panel in the scene (--panel scene)");
+        hol__xr_say(x, "xr: panel in the scene (--panel scene)");
         return 0;
     }
     hol_xr_quad_image(&x->quad_w, &x->quad_h);
-    XrSwapchainCreateInfo ci = {XR_TYPE_SWAPCHAIN_CREATE_INFO};
-    ci.usageFlags = XR_SWAPCHAIN_USAGE_COLOR_ATTACHMENT_BIT | XR_SWAPCHAIN_USAGE_SAMPLED_BIT;
-    ci.format = x->format;
-    ci.sampleCount = 1;
-    ci.width = (uint32_t)x->quad_w;
-    ci.height = (uint32_t)x->quad_h;
-    ci.faceCount = 1;
-    ci.arraySize = 1;
-    ci.mipCount = 1;
-    XrResult r = xrCreateSwapchain(x->session, &ci, &x->quad_chain);
+    XrResult r = hol__xr_chain_create(x, x->quad_w, x->quad_h, &x->quad_chain);
     if (XR_FAILED(r)) {
         x->quad_chain = XR_NULL_HANDLE;
         return hol__quad_off(x, "swapchain", r);
@@ -50,7 +41,7 @@ int hol__quad_setup(hol__xr *x)
     x->quad_images = calloc(n, sizeof *x->quad_images);
     x->quad_fbo = calloc(n, sizeof *x->quad_fbo);
     if (!x->quad_images || !x->quad_fbo)
-        return hol__error(x, "out of memory");
+        return hol__xr_error(x, "out of memory");
     for (uint32_t k = 0; k < n; k++)
         x->quad_images[k].type = HOL__XR_TYPE_IMAGE;
     r = xrEnumerateSwapchainImages(x->quad_chain, n, &n,
@@ -72,10 +63,10 @@ int hol__quad_setup(hol__xr *x)
         return hol__quad_off(x, "framebuffer", XR_SUCCESS);
     hol_xr_quad_forget(&x->quad_cache);
     x->quad_on = 1;
-    hol__say(x, "xr: panel as a quad layer: %dx%d image, format 0x%llx, %u images, drawn "
+    hol__xr_say(x, "xr: panel as a quad layer: %dx%d image, format 0x%llx, %u images, drawn "
                 "once per frame at most (when its content changes), composited over the "
                 "projection layer (no depth: always in front)",
-             x->quad_w, x->quad_h, (unsigned long long)x->format, n);
+                x->quad_w, x->quad_h, (unsigned long long)x->format, n);
     return 0;
 }
 
@@ -95,22 +86,17 @@ static void hol__quad_check(hol__xr *x, const hol_xr_quad *q)
         clear += px[i + 3] == 0 && !px[i] && !px[i + 1] && !px[i + 2];
     }
     free(px);
-    hol__say(x, "xr: check quad image: %ld opaque, %ld transparent of %dx%d texels", opaque,
-             clear, q->rect[0], q->rect[1]);
+    hol__xr_say(x, "xr: check quad image: %ld opaque, %ld transparent of %dx%d texels", opaque,
+                clear, q->rect[0], q->rect[1]);
 }
 #endif
 
 /* The image drawn again (acquire, draw, release). */
 static int hol__quad_draw(hol__xr *x, const hol_frame_desc *fd, const hol_xr_quad *q)
 {
-    uint32_t idx = 0;
-    XrSwapchainImageAcquireInfo ai = {XR_TYPE_SWAPCHAIN_IMAGE_ACQUIRE_INFO};
-    HOL__XR(x, "draw the panel", xrAcquireSwapchainImage(x->quad_chain, &ai, &idx));
-    XrSwapchainImageWaitInfo wi = {XR_TYPE_SWAPCHAIN_IMAGE_WAIT_INFO};
-    wi.timeout = XR_INFINITE_DURATION;
-    HOL__XR(x, "draw the panel", xrWaitSwapchainImage(x->quad_chain, &wi));
-    if (idx >= x->quad_nimages)
-        return hol__error(x, "the runtime gave swapchain image %u of %u", idx, x->quad_nimages);
+    uint32_t idx;
+    if (hol__xr_chain_acquire(x, x->quad_chain, x->quad_nimages, "draw the panel", &idx))
+        return 1;
     x->gl.BindFramebuffer(HOL__GL_FRAMEBUFFER, x->quad_fbo[idx]);
     /* texels outside the rectangle used are never shown */
     hol_err err = hol_render_panel_image(x->rnd, fd, q->rect[0], q->rect[1]);
@@ -122,12 +108,12 @@ static int hol__quad_draw(hol__xr *x, const hol_frame_desc *fd, const hol_xr_qua
     XrSwapchainImageReleaseInfo ri = {XR_TYPE_SWAPCHAIN_IMAGE_RELEASE_INFO};
     HOL__XR(x, "draw the panel", xrReleaseSwapchainImage(x->quad_chain, &ri));
     if (err)
-        return hol__error(x, "cannot draw the panel (%s)", hol_err_str(err));
+        return hol__xr_error(x, "cannot draw the panel (%s)", hol_err_str(err));
     return 0;
 }
 
-int hol__quad_layer(hol__xr *x, const hol_app_view *v, const float shift[3],
-                    XrCompositionLayerQuad *out, int *out_submit)
+int hol__xr_quad_layer(hol__xr *x, const hol_app_view *v, const float shift[3],
+                       XrCompositionLayerQuad *out, int *out_submit)
 {
     *out_submit = 0;
     if (!x->quad_on || !v)
@@ -166,27 +152,19 @@ int hol__quad_layer(hol__xr *x, const hol_app_view *v, const float shift[3],
     out->size.width = q.size[0];
     out->size.height = q.size[1];
     if (!x->quad_frames || x->submitted == x->d->check_frame)
-        hol__say(x, "xr: frame %ld ends with the quad layer after the projection layer: eye "
+        hol__xr_say(x, "xr: frame %ld ends with the quad layer after the projection layer: eye "
                     "visibility BOTH, pose (%.3f, %.3f, %.3f) (%.4f, %.4f, %.4f, %.4f), size "
                     "%.3f x %.3f m, image %dx%d of %dx%d",
-                 x->submitted, q.pos[0], q.pos[1], q.pos[2], q.quat[0], q.quat[1], q.quat[2],
-                 q.quat[3], q.size[0], q.size[1], q.rect[0], q.rect[1], x->quad_w, x->quad_h);
+                    x->submitted, q.pos[0], q.pos[1], q.pos[2], q.quat[0], q.quat[1], q.quat[2],
+                    q.quat[3], q.size[0], q.size[1], q.rect[0], q.rect[1], x->quad_w, x->quad_h);
     x->quad_frames++;
     x->quad_last = q;
     *out_submit = 1;
     return 0;
 }
 
-void hol__quad_free(hol__xr *x)
+void hol__xr_quad_free(hol__xr *x)
 {
-    if (x->quad_nimages && x->gl.DeleteFramebuffers)
-        x->gl.DeleteFramebuffers((hol__GLsizei)x->quad_nimages, x->quad_fbo);
-    free(x->quad_images);
-    free(x->quad_fbo);
-    x->quad_images = NULL;
-    x->quad_fbo = NULL;
-    x->quad_nimages = 0;
-    if (x->quad_chain != XR_NULL_HANDLE)
-        hol__gone(x, "destroy the panel's swapchain", xrDestroySwapchain(x->quad_chain));
-    x->quad_chain = XR_NULL_HANDLE;
+    hol__xr_chain_free(x, &x->quad_chain, &x->quad_images, &x->quad_fbo, &x->quad_nimages,
+                       "destroy the panel's swapchain");
 }

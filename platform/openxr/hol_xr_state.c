@@ -9,7 +9,7 @@
 #include <android/log.h>
 #endif
 
-void hol__say(hol__xr *x, const char *fmt, ...)
+void hol__xr_say(hol__xr *x, const char *fmt, ...)
 {
     (void)x;
     va_list ap;
@@ -23,7 +23,7 @@ void hol__say(hol__xr *x, const char *fmt, ...)
     va_end(ap);
 }
 
-int hol__error(hol__xr *x, const char *fmt, ...)
+int hol__xr_error(hol__xr *x, const char *fmt, ...)
 {
     if (x && x->failed) /* the first failure is the one line */
         return 1;
@@ -43,7 +43,7 @@ int hol__error(hol__xr *x, const char *fmt, ...)
     return 1;
 }
 
-int hol__fail(hol__xr *x, const char *doing, XrResult r)
+int hol__xr_fail(hol__xr *x, const char *doing, XrResult r)
 {
     char line[640];
 #ifdef __ANDROID__
@@ -53,11 +53,11 @@ int hol__fail(hol__xr *x, const char *doing, XrResult r)
 #endif
     if (x)
         x->lost |= hol_xr_result_is_loss((int)r);
-    return hol__error(x, "%s", line);
+    return hol__xr_error(x, "%s", line);
 }
 
-void hol__gone(hol__xr *x, const char *doing, XrResult r)
+void hol__xr_gone(hol__xr *x, const char *doing, XrResult r)
 {
     if (XR_FAILED(r) && !x->lost)
-        hol__fail(x, doing, r);
+        hol__xr_fail(x, doing, r);
 }

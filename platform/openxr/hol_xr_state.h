@@ -20,14 +20,14 @@
  *   XR_NULL_HANDLE and every array NULL, so teardown destroys exactly what
  *   exists. Arrays sized by the runtime (views, swapchain images) are
  *   allocated once before the first frame.
- * - Reporting: hol__say prints a progress line ("xr: ...": stdout on the
- *   desktop, logcat on Android). hol__fail reports a failed call as one
+ * - Reporting: hol__xr_say prints a progress line ("xr: ...": stdout on the
+ *   desktop, logcat on Android). hol__xr_fail reports a failed call as one
  *   line in words (hol_xr_text.h; stderr, or logcat's error level on
  *   Android), marks the run failed, and returns 1; only the first failure
  *   of a run is printed, so a run ends with one clear line. A result that
  *   means the session or the instance is gone also sets `lost`.
  * - HOL__XR(x, doing, call): the call, and on failure return
- *   hol__fail(x, doing, result) from the calling function; `doing` says
+ *   hol__xr_fail(x, doing, result) from the calling function; `doing` says
  *   in words what the call was for ("begin the session").
  * - `external` set: the instance, system and GL context are the caller's
  *   (hol_xr_run_session): nothing here creates or destroys them.
@@ -60,9 +60,9 @@
 #include "../../render/hol_render.h"
 #include "hol_xr_app.h"
 #include "hol_xr_bind.h"
-#include "hol_xr_pick.h"
-#include "hol_xr_quad.h"
-#include "hol_xr_room.h"
+#include "../shell/hol_xr_pick.h"
+#include "../shell/hol_xr_quad.h"
+#include "../shell/hol_xr_room.h"
 #include "hol_xr_text.h"
 
 /* GL entry points this layer calls itself (the renderer loads its own) */
@@ -219,68 +219,79 @@ typedef struct hol__xr {
 #if defined(__GNUC__)
 __attribute__((format(printf, 2, 3)))
 #endif
-void hol__say(hol__xr *x, const char *fmt, ...);
+void hol__xr_say(hol__xr *x, const char *fmt, ...);
 #if defined(__GNUC__)
 __attribute__((format(printf, 2, 3)))
 #endif
-int hol__error(hol__xr *x, const char *fmt, ...); /* one failure line; returns 1;
+int hol__xr_error(hol__xr *x, const char *fmt, ...); /* one failure line; returns 1;
                                                    x may be NULL */
-int hol__fail(hol__xr *x, const char *doing, XrResult r);
-/* A destroy call's result at teardown: reported (hol__fail) unless the
+int hol__xr_fail(hol__xr *x, const char *doing, XrResult r);
+/* A destroy call's result at teardown: reported (hol__xr_fail) unless the
  * session or the instance is already gone, when failures are expected. */
-void hol__gone(hol__xr *x, const char *doing, XrResult r);
+void hol__xr_gone(hol__xr *x, const char *doing, XrResult r);
 
 #define HOL__XR(x, doing, call)                                                               \
     do {                                                                                      \
         XrResult hol__r = (call);                                                             \
         if (XR_FAILED(hol__r))                                                                \
-            return hol__fail((x), (doing), hol__r);                                           \
+            return hol__xr_fail((x), (doing), hol__r);                                        \
     } while (0)
 
 /* hol_xr_gfx.c: make the GL context current and fill the binding; load
  * the GL entry points this layer calls itself */
-int hol__graphics(hol__xr *x, hol__binding *b);
-int hol__load_gl(hol__xr *x);
+int hol__xr_graphics(hol__xr *x, hol__binding *b);
+int hol__xr_load_gl(hol__xr *x);
 /* hol_xr_actions.c: the action set and suggested bindings (on the
  * instance); attach, grip and reference spaces (on the session); the
  * stage bounds (read again after a change); a boolean action's state
  * (*out_held); the hands' current interaction profiles */
-int hol__actions(hol__xr *x);
-int hol__spaces(hol__xr *x);
-int hol__bounds(hol__xr *x);
-int hol__bool(hol__xr *x, int act, int *out_held);
-int hol__haptics(hol__xr *x);
-int hol__profiles_now(hol__xr *x);
+int hol__xr_actions(hol__xr *x);
+int hol__xr_spaces(hol__xr *x);
+int hol__xr_bounds(hol__xr *x);
+int hol__xr_bool(hol__xr *x, int act, int *out_held);
+int hol__xr_haptics(hol__xr *x);
+int hol__xr_profiles_now(hol__xr *x);
 /* hol_xr_views.c: the stereo view configuration (x->nviews, x->views) and
  * one swapchain per eye with a framebuffer per image */
-int hol__views(hol__xr *x);
-int hol__swapchains(hol__xr *x);
-void hol__views_free(hol__xr *x);
+int hol__xr_views(hol__xr *x);
+int hol__xr_swapchains(hol__xr *x);
+void hol__xr_views_free(hol__xr *x);
+/* a colour swapchain of w x h in x->format, one sample, one layer (the
+ * eyes', the panel's): xrCreateSwapchain's result */
+XrResult hol__xr_chain_create(hol__xr *x, int w, int h, XrSwapchain *out);
+/* a swapchain's framebuffers deleted, its image and framebuffer arrays
+ * freed and it destroyed (doing: the teardown's words, hol__xr_gone);
+ * the next image acquired and waited for (*out_idx; 1 reported: a failed
+ * call, an index out of 0..n-1) */
+void hol__xr_chain_free(hol__xr *x, XrSwapchain *chain, hol__image **images, hol__GLuint **fbo,
+                        uint32_t *n, const char *doing);
+int hol__xr_chain_acquire(hol__xr *x, XrSwapchain chain, uint32_t n, const char *doing,
+                          uint32_t *out_idx);
 #ifndef __ANDROID__
 /* hol_xr_check.c: eye 0 read back against an OSMesa render of fd */
-void hol__check(hol__xr *x, const hol_frame_desc *fd, int w, int h);
+void hol__xr_check(hol__xr *x, const hol_frame_desc *fd, int w, int h);
 /* The check frame's eye e (bound to fbo): drawn without the HUD and read
- * back (eye 0: hol__check on it), then drawn as shown (the UI panel) and
+ * back (eye 0: hol__xr_check on it), then drawn as shown (the UI panel) and
  * read back; the panel's pixels (where the two differ) measured against a
  * pinhole model of the eye: "xr: check panel ..." lines. */
-void hol__check_eye(hol__xr *x, int e, const hol_frame_desc *fd, unsigned fbo, int w, int h);
+void hol__xr_check_eye(hol__xr *x, int e, const hol_frame_desc *fd, unsigned fbo, int w, int h);
 #endif
 /* hol_xr_panel.c: the world panel's quad layer: its swapchain (made once
  * after the eyes'; a failure falls back to the panel in the scene, said
  * in one line, not a failure of the run), its layer for this frame (the
  * image drawn again only when the panel's content changed;
  * *out_submit 0: no panel this frame), the figures, teardown */
-int hol__quad_setup(hol__xr *x);
-int hol__quad_layer(hol__xr *x, const hol_app_view *v, const float shift[3],
-                    XrCompositionLayerQuad *out, int *out_submit);
-void hol__quad_free(hol__xr *x);
+int hol__xr_quad_setup(hol__xr *x);
+int hol__xr_quad_layer(hol__xr *x, const hol_app_view *v, const float shift[3],
+                       XrCompositionLayerQuad *out, int *out_submit);
+void hol__xr_quad_free(hol__xr *x);
 /* hol_xr_frame.c: fns->environment once what it tells is known (last: the
  * run ends, tell what is known now) */
-void hol__tell_env(hol__xr *x, int last);
+void hol__xr_tell_env(hol__xr *x, int last);
 /* hol_xr_frame.c: one frame (xrWaitFrame to xrEndFrame); 0 ok, 1 failure */
-int hol__frame(hol__xr *x);
+int hol__xr_frame(hol__xr *x);
 /* hol_xr_events.c: every waiting event; sets x->life.done to leave */
-void hol__events(hol__xr *x);
+void hol__xr_events(hol__xr *x);
 
 static inline void hol__pose_in(const XrPosef *p, float pos[3], float quat[4])
 {

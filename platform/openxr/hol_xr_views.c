@@ -20,21 +20,21 @@ static int hol__stereo_offered(hol__xr *x)
             xrEnumerateViewConfigurations(x->instance, x->system, 0, &n, NULL));
     XrViewConfigurationType *t = calloc(n ? n : 1, sizeof *t);
     if (!t)
-        return hol__error(x, "out of memory");
+        return hol__xr_error(x, "out of memory");
     XrResult r = xrEnumerateViewConfigurations(x->instance, x->system, n, &n, t);
     int stereo = 0;
     for (uint32_t i = 0; XR_SUCCEEDED(r) && i < n; i++)
         stereo |= t[i] == XR_VIEW_CONFIGURATION_TYPE_PRIMARY_STEREO;
     free(t);
     if (XR_FAILED(r))
-        return hol__fail(x, "list the view configurations", r);
+        return hol__xr_fail(x, "list the view configurations", r);
     if (!stereo)
-        return hol__error(x, "the OpenXR runtime's device is not a stereo headset (no "
+        return hol__xr_error(x, "the OpenXR runtime's device is not a stereo headset (no "
                              "PRIMARY_STEREO view configuration)");
     return 0;
 }
 
-int hol__views(hol__xr *x)
+int hol__xr_views(hol__xr *x)
 {
     if (hol__stereo_offered(x))
         return 1;
@@ -44,7 +44,7 @@ int hol__views(hol__xr *x)
                                               XR_VIEW_CONFIGURATION_TYPE_PRIMARY_STEREO, 0, &n,
                                               NULL));
     if (n != 2)
-        return hol__error(x, "the headset's stereo configuration has %u views, not 2", n);
+        return hol__xr_error(x, "the headset's stereo configuration has %u views, not 2", n);
     XrViewConfigurationView vc[2] = {{XR_TYPE_VIEW_CONFIGURATION_VIEW},
                                      {XR_TYPE_VIEW_CONFIGURATION_VIEW}};
     HOL__XR(x, "read the headset's views",
@@ -52,10 +52,10 @@ int hol__views(hol__xr *x)
                                               XR_VIEW_CONFIGURATION_TYPE_PRIMARY_STEREO, n, &n,
                                               vc));
     if (n != 2)
-        return hol__error(x, "the headset's stereo configuration has %u views, not 2", n);
+        return hol__xr_error(x, "the headset's stereo configuration has %u views, not 2", n);
     x->views = calloc(n, sizeof *x->views);
     if (!x->views)
-        return hol__error(x, "out of memory");
+        return hol__xr_error(x, "out of memory");
     x->nviews = n;
     for (uint32_t e = 0; e < n; e++) {
         x->views[e].type = XR_TYPE_VIEW;
@@ -64,8 +64,8 @@ int hol__views(hol__xr *x)
         x->eye[e].samples = hol_xr_pick_samples(vc[e].recommendedSwapchainSampleCount,
                                                 vc[e].maxSwapchainSampleCount);
         if (x->eye[e].w <= 0 || x->eye[e].h <= 0 || x->eye[e].w > 4096 || x->eye[e].h > 4096)
-            return hol__error(x, "the headset asks for %dx%d images per eye (1 to 4096 each)",
-                              x->eye[e].w, x->eye[e].h);
+            return hol__xr_error(x, "the headset asks for %dx%d images per eye (1 to 4096 each)",
+                                 x->eye[e].w, x->eye[e].h);
     }
     return 0;
 }
@@ -77,14 +77,14 @@ static int hol__format(hol__xr *x, int64_t *out)
     HOL__XR(x, "list the image formats", xrEnumerateSwapchainFormats(x->session, 0, &n, NULL));
     int64_t *f = calloc(n ? n : 1, sizeof *f);
     if (!f)
-        return hol__error(x, "out of memory");
+        return hol__xr_error(x, "out of memory");
     XrResult r = xrEnumerateSwapchainFormats(x->session, n, &n, f);
     *out = XR_SUCCEEDED(r) ? hol_xr_pick_format(f, n, &x->srgb) : 0;
     free(f);
     if (XR_FAILED(r))
-        return hol__fail(x, "list the image formats", r);
+        return hol__xr_fail(x, "list the image formats", r);
     if (!*out)
-        return hol__error(x, "the OpenXR runtime offers no 8-bit RGBA image format (neither "
+        return hol__xr_error(x, "the OpenXR runtime offers no 8-bit RGBA image format (neither "
                              "GL_SRGB8_ALPHA8 nor GL_RGBA8)");
     return 0;
 }
@@ -113,7 +113,7 @@ static int hol__msaa(hol__xr *x, hol__eye *ey, int64_t fmt)
     int ok = x->gl.CheckFramebufferStatus(HOL__GL_FRAMEBUFFER) == HOL__GL_FRAMEBUFFER_COMPLETE;
     x->gl.BindFramebuffer(HOL__GL_FRAMEBUFFER, 0);
     if (!ok)
-        return hol__error(x, "cannot draw %d samples per pixel (multisampled framebuffer "
+        return hol__xr_error(x, "cannot draw %d samples per pixel (multisampled framebuffer "
                              "incomplete)", ey->samples);
     return 0;
 }
@@ -126,7 +126,7 @@ static int hol__images(hol__xr *x, hol__eye *ey)
     ey->images = calloc(n ? n : 1, sizeof *ey->images);
     ey->fbo = calloc(n ? n : 1, sizeof *ey->fbo);
     if (!ey->images || !ey->fbo)
-        return hol__error(x, "out of memory");
+        return hol__xr_error(x, "out of memory");
     for (uint32_t k = 0; k < n; k++)
         ey->images[k].type = HOL__XR_TYPE_IMAGE;
     HOL__XR(x, "list the swapchain images",
@@ -144,14 +144,14 @@ static int hol__images(hol__xr *x, hol__eye *ey)
         x->gl.FramebufferRenderbuffer(HOL__GL_FRAMEBUFFER, HOL__GL_DEPTH_STENCIL_ATTACHMENT,
                                       HOL__GL_RENDERBUFFER, ey->depth);
         if (x->gl.CheckFramebufferStatus(HOL__GL_FRAMEBUFFER) != HOL__GL_FRAMEBUFFER_COMPLETE)
-            return hol__error(x, "cannot draw into the runtime's swapchain image (framebuffer "
+            return hol__xr_error(x, "cannot draw into the runtime's swapchain image (framebuffer "
                                  "incomplete)");
     }
     x->gl.BindFramebuffer(HOL__GL_FRAMEBUFFER, 0);
     return 0;
 }
 
-int hol__swapchains(hol__xr *x)
+int hol__xr_swapchains(hol__xr *x)
 {
     int64_t fmt = 0;
     if (hol__format(x, &fmt))
@@ -159,50 +159,76 @@ int hol__swapchains(hol__xr *x)
     x->format = fmt;
     for (int e = 0; e < 2; e++) {
         hol__eye *ey = &x->eye[e];
-        XrSwapchainCreateInfo ci = {XR_TYPE_SWAPCHAIN_CREATE_INFO};
-        ci.usageFlags = XR_SWAPCHAIN_USAGE_COLOR_ATTACHMENT_BIT | XR_SWAPCHAIN_USAGE_SAMPLED_BIT;
-        ci.format = fmt;
-        ci.sampleCount = 1;
-        ci.width = (uint32_t)ey->w;
-        ci.height = (uint32_t)ey->h;
-        ci.faceCount = 1;
-        ci.arraySize = 1;
-        ci.mipCount = 1;
-        HOL__XR(x, "create the swapchains", xrCreateSwapchain(x->session, &ci, &ey->swapchain));
+        HOL__XR(x, "create the swapchains", hol__xr_chain_create(x, ey->w, ey->h, &ey->swapchain));
         if (hol__images(x, ey) || (ey->samples > 1 && hol__msaa(x, ey, fmt)))
             return 1;
     }
-    hol__say(x, "xr: swapchains %dx%d per eye, format 0x%llx (%s), %u images, two passes, "
+    hol__xr_say(x, "xr: swapchains %dx%d per eye, format 0x%llx (%s), %u images, two passes, "
                 "%d sample%s per pixel (the runtime's recommendation%s)",
-             x->eye[0].w, x->eye[0].h, (unsigned long long)fmt,
-             x->srgb ? "sRGB" : "linear RGBA8", x->eye[0].nimages, x->eye[0].samples,
-             x->eye[0].samples > 1 ? "s" : "",
-             x->eye[0].samples > 1 ? ": resolved into the swapchain" : "");
+                x->eye[0].w, x->eye[0].h, (unsigned long long)fmt,
+                x->srgb ? "sRGB" : "linear RGBA8", x->eye[0].nimages, x->eye[0].samples,
+                x->eye[0].samples > 1 ? "s" : "",
+                x->eye[0].samples > 1 ? ": resolved into the swapchain" : "");
     return 0;
 }
 
-void hol__views_free(hol__xr *x)
+XrResult hol__xr_chain_create(hol__xr *x, int w, int h, XrSwapchain *out)
+{
+    XrSwapchainCreateInfo ci = {XR_TYPE_SWAPCHAIN_CREATE_INFO};
+    ci.usageFlags = XR_SWAPCHAIN_USAGE_COLOR_ATTACHMENT_BIT | XR_SWAPCHAIN_USAGE_SAMPLED_BIT;
+    ci.format = x->format;
+    ci.sampleCount = 1;
+    ci.width = (uint32_t)w;
+    ci.height = (uint32_t)h;
+    ci.faceCount = 1;
+    ci.arraySize = 1;
+    ci.mipCount = 1;
+    return xrCreateSwapchain(x->session, &ci, out);
+}
+
+void hol__xr_chain_free(hol__xr *x, XrSwapchain *chain, hol__image **images, hol__GLuint **fbo,
+                        uint32_t *n, const char *doing)
+{
+    if (*n && x->gl.DeleteFramebuffers)
+        x->gl.DeleteFramebuffers((hol__GLsizei)*n, *fbo);
+    free(*images);
+    free(*fbo);
+    *images = NULL;
+    *fbo = NULL;
+    *n = 0;
+    if (*chain != XR_NULL_HANDLE)
+        hol__xr_gone(x, doing, xrDestroySwapchain(*chain));
+    *chain = XR_NULL_HANDLE;
+}
+
+int hol__xr_chain_acquire(hol__xr *x, XrSwapchain chain, uint32_t n, const char *doing,
+                          uint32_t *out_idx)
+{
+    *out_idx = 0;
+    XrSwapchainImageAcquireInfo ai = {XR_TYPE_SWAPCHAIN_IMAGE_ACQUIRE_INFO};
+    HOL__XR(x, doing, xrAcquireSwapchainImage(chain, &ai, out_idx));
+    XrSwapchainImageWaitInfo wi = {XR_TYPE_SWAPCHAIN_IMAGE_WAIT_INFO};
+    wi.timeout = XR_INFINITE_DURATION;
+    HOL__XR(x, doing, xrWaitSwapchainImage(chain, &wi));
+    if (*out_idx >= n)
+        return hol__xr_error(x, "the runtime gave swapchain image %u of %u", *out_idx, n);
+    return 0;
+}
+
+void hol__xr_views_free(hol__xr *x)
 {
     for (int e = 0; e < 2; e++) {
         hol__eye *ey = &x->eye[e];
-        if (ey->nimages && x->gl.DeleteFramebuffers) {
-            x->gl.DeleteFramebuffers((hol__GLsizei)ey->nimages, ey->fbo);
+        if (ey->nimages && x->gl.DeleteFramebuffers)
             x->gl.DeleteRenderbuffers(1, &ey->depth);
-        }
         if (ey->msaa_fbo && x->gl.DeleteFramebuffers) {
             hol__GLuint rb[2] = {ey->msaa_color, ey->msaa_depth};
             x->gl.DeleteFramebuffers(1, &ey->msaa_fbo);
             x->gl.DeleteRenderbuffers(2, rb);
         }
         ey->msaa_fbo = ey->msaa_color = ey->msaa_depth = 0;
-        free(ey->images);
-        free(ey->fbo);
-        ey->images = NULL;
-        ey->fbo = NULL;
-        ey->nimages = 0;
-        if (ey->swapchain != XR_NULL_HANDLE)
-            hol__gone(x, "destroy an eye's swapchain", xrDestroySwapchain(ey->swapchain));
-        ey->swapchain = XR_NULL_HANDLE;
+        hol__xr_chain_free(x, &ey->swapchain, &ey->images, &ey->fbo, &ey->nimages,
+                           "destroy an eye's swapchain");
     }
     free(x->views);
     x->views = NULL;

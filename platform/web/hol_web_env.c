@@ -2,8 +2,8 @@
  * "Session metadata"): one row when the page's session starts (platform
  * `web`, once its display rate is measured) and one at every Enter VR
  * (platform `webxr`, once the rate is known, the hands' device with it), in the
- * page's log folder, with the desktop's header (play_env.h) and fields
- * escaped and quoted as play_env.c does (hol_text_escape, hol_text_csv).
+ * page's log folder, the row the desktop writes (platform/shell/hol_shell_env.h:
+ * its header, its fields escaped and quoted).
  */
 #include <emscripten.h>
 #include <emscripten/html5.h>
@@ -13,8 +13,7 @@
 
 #include "../../core/hol_input_io.h"
 #include "../../core/hol_rec.h"
-#include "../../core/hol_text.h"
-#include "../cli/play_env.h"
+#include "../shell/hol_shell_env.h"
 #include "hol_web.h"
 
 /* hol_web_lib.js: 0 os, 1 runtime (the browser), 2 the controller (XR:
@@ -31,6 +30,7 @@ extern int hol_web_js_store_read(const char *name, double off, void *buf, int n)
 #define ENV__SKIP 10   /* frames before the rate's count (the first are slow) */
 #define ENV__COUNT 60  /* frames the rate is measured over */
 #define ENV__ROW 8192
+#define ENV__FIELD 1024 /* one field, escaped */
 
 static struct {
     char gl[256];
@@ -44,48 +44,32 @@ void hol_web_env_init(void)
     hol_web_js_env(4, env.gl, sizeof env.gl);
 }
 
-/* field s, escaped and quoted, after a comma unless first: the row's new
- * length (ENV__ROW when it is over) */
-static size_t env_field(char *row, size_t at, const char *s)
-{
-    char esc[1024];
-    size_t e = hol_text_escape(s, strlen(s), esc, sizeof esc);
-    if (at)
-        row[at++] = ',';
-    if (e >= sizeof esc || at + 2 * e + 4 >= ENV__ROW)
-        return ENV__ROW;
-    return at + hol_text_csv(esc, e, row + at, ENV__ROW - at);
-}
-
 static void env_write(int xr, double hz, int w, int h, uint32_t device)
 {
     const hol_rec_meta *m = hol_web_game_meta();
     if (!m)
         return;
     static char row[ENV__ROW + 64], str[4][1024];
-    char hzs[32] = "", ws[16] = "", hs[16] = ""; /* empty when unknown */
     for (int k = 0; k < 4; k++) /* os, runtime, controller, options */
         hol_web_js_env(k, str[k], sizeof str[k]);
     const char *ctl = device ? hol_input_device_name(device) : str[2];
-    if (hz > 0)
-        snprintf(hzs, sizeof hzs, "%.3f", hz);
-    if (w > 0 && h > 0) {
-        snprintf(ws, sizeof ws, "%d", w);
-        snprintf(hs, sizeof hs, "%d", h);
-    }
-    const char *f[] = {m->session, m->participant, "", m->study_sha256, xr ? "webxr" : "web",
-                       str[0], str[1], env.gl, ctl, hzs, ws, hs, "", str[3]};
+    const hol_shell_env_fields f = {m->session, m->participant, 0, m->study_sha256,
+                                    xr ? "webxr" : "web", str[0], str[1], env.gl, ctl, hz,
+                                    w > 0 && h > 0 ? w : 0, w > 0 && h > 0 ? h : 0, "", str[3]};
     size_t at = 0;
-    for (size_t i = 0; i < sizeof f / sizeof f[0]; i++)
-        at = env_field(row, at, f[i]);
+    int over = hol_shell_env_row(&f, ENV__FIELD, row, ENV__ROW, &at);
     row[at++] = '\n';
     char b; /* the header when the file is new */
     int new_file = hol_web_js_store_read("environment.csv", 0, &b, 1) <= 0;
-    int hd = at > ENV__ROW ? -1 : hol_web_js_store_open("environment.csv", 1);
+    int hd = over ? -1 : hol_web_js_store_open("environment.csv", 1);
     int bad = hd < 0 ||
-              (new_file && hol_web_js_store_write(hd, PLAY_ENV_COLUMNS "\n", sizeof PLAY_ENV_COLUMNS)) ||
+              (new_file && hol_web_js_store_write(hd, HOL_SHELL_ENV_COLUMNS "\n",
+                                                  sizeof HOL_SHELL_ENV_COLUMNS)) ||
               hol_web_js_store_write(hd, row, (int)at) | hol_web_js_store_close(hd);
-    printf("web: environment %s %s Hz%s\n", f[4], hzs, bad ? ": not written" : "");
+    char hzs[32] = "";
+    if (hz > 0)
+        snprintf(hzs, sizeof hzs, "%.3f", hz);
+    printf("web: environment %s %s Hz%s\n", f.platform, hzs, bad ? ": not written" : "");
 }
 
 /* A frame at t_ms; the rate measured over ENV__COUNT frames (unless known).

@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "../../core/hol_motion.h"
+#include "../shell/hol_shell_stick.h"
 
 int hol_web_key_from_code(const char *code)
 {
@@ -45,19 +46,6 @@ static float clamp1(double v)
     return (float)(v < -1 ? -1 : v > 1 ? 1 : v);
 }
 
-static void stick(float x, float y, float out[2])
-{
-    float m = sqrtf(x * x + y * y);
-    if (!(m > HOL_WEB_DEAD_ZONE)) {
-        out[0] = out[1] = 0.0f;
-        return;
-    }
-    float s = (m > 1.0f ? 1.0f : m);
-    s = (s - HOL_WEB_DEAD_ZONE) / (1.0f - HOL_WEB_DEAD_ZONE) / m;
-    out[0] = x * s;
-    out[1] = y * s;
-}
-
 /* The pad's sticks and buttons (standard mapping) into in; 1 if used. */
 static int pad_input(const hol_web_pancake *p, hol_input *in)
 {
@@ -69,8 +57,8 @@ static int pad_input(const hol_web_pancake *p, hol_input *in)
     if (!p->pad_connected || !p->pad_standard)
         return 0;
     float l[2], r[2];
-    stick(p->pad_axes[0], p->pad_axes[1], l);
-    stick(p->pad_axes[2], p->pad_axes[3], r);
+    hol_shell_stick(HOL_WEB_DEAD_ZONE, p->pad_axes[0], p->pad_axes[1], l);
+    hol_shell_stick(HOL_WEB_DEAD_ZONE, p->pad_axes[2], p->pad_axes[3], r);
     in->move[0] = clamp1(in->move[0] + l[0]);
     in->move[1] = clamp1(in->move[1] - l[1]);
     in->turn[0] = clamp1(in->turn[0] - r[0]);

@@ -8,7 +8,7 @@
  *   began, the user looking down -z) or `bounded-floor` (origin near the
  *   middle of the play area): both are OpenXR's STAGE convention, so the
  *   room sits in them exactly as in the headset build
- *   (platform/openxr/hol_xr_room.h: centred on the origin, north along -z;
+ *   (platform/shell/hol_xr_room.h: centred on the origin, north along -z;
  *   recentre places it from the head).
  * - Views: each view's viewport in the layer's framebuffer, its projection
  *   matrix (column-major, as XRView.projectionMatrix) and its transform
@@ -61,7 +61,7 @@
 
 #include "../../core/hol_input.h"
 #include "../../render/hol_view.h"
-#include "../openxr/hol_xr_room.h"
+#include "../shell/hol_xr_room.h"
 
 #define HOL_WEB_XR_BUTTONS 8
 #define HOL_WEB_XR_AXES 4

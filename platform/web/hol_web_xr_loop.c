@@ -15,7 +15,7 @@
 
 #include "../../core/hol_motion.h"
 #include "../../render/hol_app_frame.h"
-#include "../openxr/hol_xr_quad.h"
+#include "../shell/hol_xr_quad.h"
 #include "hol_web.h"
 
 extern void hol_web_js_event(const char *kind, const char *text);
