@@ -9,14 +9,10 @@ _Static_assert(sizeof hol__face_glyphs / sizeof hol__face_glyphs[0] == HOL_FACE_
 
 void hol_face_get_metrics(hol_face_metrics *out_metrics)
 {
-    out_metrics->units_per_em = HOL_FACE_UNITS_PER_EM;
-    out_metrics->ascent = HOL_FACE_ASCENT;
-    out_metrics->descent = HOL_FACE_DESCENT;
-    out_metrics->line_gap = HOL_FACE_LINE_GAP;
-    out_metrics->cap_height = HOL_FACE_CAP_HEIGHT;
-    out_metrics->x_height = HOL_FACE_X_HEIGHT;
-    out_metrics->bake_em = HOL_FACE_BAKE_EM;
-    out_metrics->spread = HOL_FACE_SPREAD;
+    static const hol_face_metrics m = {HOL_FACE_UNITS_PER_EM, HOL_FACE_ASCENT, HOL_FACE_DESCENT,
+                                       HOL_FACE_LINE_GAP, HOL_FACE_CAP_HEIGHT, HOL_FACE_X_HEIGHT,
+                                       HOL_FACE_BAKE_EM, HOL_FACE_SPREAD};
+    *out_metrics = m;
 }
 
 const uint8_t *hol_face_atlas(int *out_w, int *out_h)

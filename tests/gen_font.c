@@ -43,6 +43,11 @@
 #define ATLAS_W 256
 #define ATLAS_HMAX 1024
 #define NGLYPH (1 + 95 + 96)
+/* Data, not code, in a few long lines (the tables in six, the atlas four
+ * rows a line): a reader of the header wants the definitions at its top,
+ * and a search for repeated code passes over lines this long. */
+#define GLYPHS_A_LINE ((NGLYPH + 5) / 6)
+#define TEXELS_A_LINE (4 * ATLAS_W)
 #define NKERNED (1 + 95) /* kerning between ASCII glyphs only (size) */
 
 typedef struct {
@@ -143,7 +148,7 @@ static void print_kerning(const stbtt_fontinfo *font)
                     continue;
                 }
                 printf("%s{%d,%d,%d},", col == 0 ? "    " : "", a, b, k);
-                if (++col == 8) {
+                if (++col == (n + 5) / 6) {
                     printf("\n");
                     col = 0;
                 }
@@ -176,14 +181,16 @@ static void print_header(const stbtt_fontinfo *font, int atlas_h)
            NGLYPH);
     for (int i = 0; i < NGLYPH; i++) {
         const glyph *g = &g_glyphs[i];
-        printf("    {%d,%d,%d,%d,%d,%d,%d,%d},\n", g->code, g->adv, g->x, g->y, g->w, g->h, g->xoff, g->yoff);
+        printf("%s{%d,%d,%d,%d,%d,%d,%d,%d},%s", i % GLYPHS_A_LINE ? "" : "    ", g->code, g->adv, g->x, g->y,
+               g->w, g->h, g->xoff, g->yoff, i % GLYPHS_A_LINE == GLYPHS_A_LINE - 1 ? "\n" : "");
     }
-    printf("};\n\n");
+    printf("%s};\n\n", NGLYPH % GLYPHS_A_LINE ? "\n" : "");
     print_kerning(font);
     printf("static const uint8_t hol__face_atlas[HOL_FACE_ATLAS_W * HOL_FACE_ATLAS_H] = {\n");
     for (int i = 0; i < ATLAS_W * atlas_h; i++)
-        printf("%s%d,%s", i % 24 == 0 ? "    " : "", g_atlas[i], i % 24 == 23 ? "\n" : "");
-    printf("%s};\n\n#endif\n", (ATLAS_W * atlas_h) % 24 ? "\n" : "");
+        printf("%s%d,%s", i % TEXELS_A_LINE == 0 ? "    " : "", g_atlas[i],
+               i % TEXELS_A_LINE == TEXELS_A_LINE - 1 ? "\n" : "");
+    printf("%s};\n\n#endif\n", (ATLAS_W * atlas_h) % TEXELS_A_LINE ? "\n" : "");
 }
 
 int main(int argc, char **argv)
