@@ -4,6 +4,7 @@
 #   make test       install what is missing (make deps), then build and run
 #                   every test (unit, CLI, fuzz-corpus replay)
 #   make gen-tiling rewrite core/hol_tile_dfa.h (tests/gen_tiling.c)
+#   make gen-font   rewrite core/hol_face_atlas.h (tests/gen_font.c; libstb-dev)
 #   make deps       install the Debian packages the project needs (apt-get)
 #   make fuzz       build the libFuzzer harnesses and run each FUZZ_TIME s
 #   make bench      build with optimisation and print the benchmark figures
@@ -120,7 +121,8 @@ FUZZ_BIN := $(FUZZ_SRC:fuzz/%.c=$(BUILD)/fuzz/%)
 DEB_PACKAGES := make gcc clang libcmocka-dev libosmesa6-dev libegl-dev \
   libgles-dev libhidapi-dev libusb-1.0-0-dev libopenxr-dev \
   libegl-mesa0 libgl1-mesa-dri gcc-aarch64-linux-gnu libc6-dev-arm64-cross \
-  qemu-user xvfb xdotool zlib1g-dev libx11-dev libopenal-dev
+  qemu-user xvfb xdotool zlib1g-dev libx11-dev libopenal-dev \
+  libstb-dev fonts-dejavu-core
 # libc6-dev-arm64-cross is only a Recommends of gcc-aarch64-linux-gnu, and
 # deps installs without recommends: it must be named here.
 # apt waits up to APT_LOCK_WAIT seconds for another apt/dpkg to finish
@@ -217,6 +219,13 @@ $(BUILD)/tests/test_report_draw: tests/test_report_draw.c $(REPORT_DRAW_SRC) pla
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) -o $@ $< $(REPORT_DRAW_SRC) $(CORE_LIB) $(LDFLAGS) -lcmocka -lz $(LDLIBS)
 
+# The text face's suite: the CPU rasteriser of the atlas and, for the
+# sample sheet (HOL_FONT_SHEET=file.png), the PNG writer.
+FONT_TEST_SRC := render/hol_face_draw.c render/hol_png.c platform/file/hol_file.c
+$(BUILD)/tests/test_font: tests/test_font.c $(FONT_TEST_SRC) render/hol_face_draw.h $(CORE_LIB)
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) -o $@ $< $(FONT_TEST_SRC) $(CORE_LIB) $(LDFLAGS) -lcmocka -lz $(LDLIBS)
+
 $(BUILD)/tests/%: tests/%.c $(wildcard tests/*.h) $(CORE_LIB)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) -o $@ $< $(CORE_LIB) $(LDFLAGS) -lcmocka $(LDLIBS)
@@ -295,7 +304,7 @@ TEST_RUNS := $(patsubst tests/%.sh,cli-run-%,$(CLI_TESTS)) \
              $(patsubst tests/%.c,render-run-%,$(RENDER_TEST_SRC))
 slow_first_runs = $(foreach s,$(SLOW_FIRST),$(filter %-run-$(s),$(1))) \
                   $(filter-out $(foreach s,$(SLOW_FIRST),%-run-$(s)),$(1))
-test-suites: test-tools purity fn-length tiling-gen-check $(call slow_first_runs,$(TEST_RUNS)) fuzz-replay \
+test-suites: test-tools purity fn-length tiling-gen-check font-gen-check $(call slow_first_runs,$(TEST_RUNS)) fuzz-replay \
              template-run
 	@echo "make test: all suites passed"
 
@@ -316,6 +325,28 @@ tiling-gen-check: $(BUILD)/tests/gen_tiling
 	  echo "tiling automata: core/hol_tile_dfa.h is what tests/gen_tiling prints"; \
 	else echo "core/hol_tile_dfa.h differs from what tests/gen_tiling prints (make gen-tiling)"; \
 	  exit 1; fi
+
+# The text face (core/hol_face_atlas.h: DejaVu Sans as a signed-distance
+# atlas) is baked by tests/gen_font.c with stb_truetype: `make gen-font`
+# rewrites the header, and make test checks that the committed header is
+# what the baker prints (skipped, with a line, without libstb-dev or the font).
+.PHONY: font-gen-check gen-font
+FONT_TTF ?= /usr/share/fonts/truetype/dejavu/DejaVuSans.ttf
+$(BUILD)/tests/gen_font: tests/gen_font.c
+	@mkdir -p $(dir $@)
+	$(CC) $(CSTD) $(WARN) -O2 -ffp-contract=off -D_DEFAULT_SOURCE -Wno-unused-function -o $@ $< -lm
+
+gen-font: $(BUILD)/tests/gen_font
+	$(BUILD)/tests/gen_font $(FONT_TTF) > core/hol_face_atlas.h.tmp && mv core/hol_face_atlas.h.tmp core/hol_face_atlas.h
+
+font-gen-check:
+	@if [ ! -f /usr/include/stb/stb_truetype.h ] || [ ! -f $(FONT_TTF) ]; then \
+	  echo "text face: skipped (no libstb-dev or fonts-dejavu-core to rebake core/hol_face_atlas.h)"; \
+	else $(MAKE) --no-print-directory $(BUILD)/tests/gen_font >/dev/null && \
+	  if $(BUILD)/tests/gen_font $(FONT_TTF) | cmp -s - core/hol_face_atlas.h; then \
+	    echo "text face: core/hol_face_atlas.h is what tests/gen_font prints"; \
+	  else echo "core/hol_face_atlas.h differs from what tests/gen_font prints (make gen-font)"; \
+	    exit 1; fi; fi
 
 purity: $(CORE_OBJ)
 	@sh tests/check_core_purity.sh $(CORE_OBJ)

@@ -1,0 +1,193 @@
+/* hol_face.c - the text face's tables, UTF-8 decoding, widths and
+ * wrapping (contract in hol_face.h). */
+#include "hol_face.h"
+
+#include "hol_face_atlas.h"
+
+_Static_assert(sizeof hol__face_glyphs / sizeof hol__face_glyphs[0] == HOL_FACE_NGLYPH,
+               "the generated glyph table has the set of hol_face.h");
+
+void hol_face_get_metrics(hol_face_metrics *out_metrics)
+{
+    static const hol_face_metrics m = {HOL_FACE_UNITS_PER_EM, HOL_FACE_ASCENT, HOL_FACE_DESCENT,
+                                       HOL_FACE_LINE_GAP, HOL_FACE_CAP_HEIGHT, HOL_FACE_X_HEIGHT,
+                                       HOL_FACE_BAKE_EM, HOL_FACE_SPREAD};
+    *out_metrics = m;
+}
+
+const uint8_t *hol_face_atlas(int *out_w, int *out_h)
+{
+    *out_w = HOL_FACE_ATLAS_W;
+    *out_h = HOL_FACE_ATLAS_H;
+    return hol__face_atlas;
+}
+
+float hol_face_em_per_cap(void)
+{
+    return (float)HOL_FACE_UNITS_PER_EM / (float)HOL_FACE_CAP_HEIGHT;
+}
+
+/* The number of continuation bytes after a lead byte, and the least code
+ * point of that length (overlong forms are malformed); -1 if not a lead. */
+static int hol__utf8_tail(unsigned char c, uint32_t *out_cp, uint32_t *out_min)
+{
+    if (c >= 0xC2 && c <= 0xDF) {
+        *out_cp = c & 0x1Fu;
+        *out_min = 0x80;
+        return 1;
+    }
+    if (c >= 0xE0 && c <= 0xEF) {
+        *out_cp = c & 0x0Fu;
+        *out_min = 0x800;
+        return 2;
+    }
+    if (c >= 0xF0 && c <= 0xF4) {
+        *out_cp = c & 0x07u;
+        *out_min = 0x10000;
+        return 3;
+    }
+    return -1;
+}
+
+uint32_t hol_face_decode(const char *text, size_t len, size_t *pos)
+{
+    const unsigned char *s = (const unsigned char *)text;
+    size_t at = *pos;
+    unsigned char c = s[at];
+    if (c < 0x80) {
+        *pos = at + 1;
+        return c;
+    }
+    uint32_t cp, min;
+    int tail = hol__utf8_tail(c, &cp, &min);
+    if (tail < 0 || len - at - 1 < (size_t)tail) {
+        *pos = at + 1;
+        return HOL_FACE_MALFORMED;
+    }
+    for (int i = 1; i <= tail; i++) {
+        unsigned char t = s[at + (size_t)i];
+        if ((t & 0xC0u) != 0x80u) {
+            *pos = at + 1;
+            return HOL_FACE_MALFORMED;
+        }
+        cp = (cp << 6) | (t & 0x3Fu);
+    }
+    if (cp < min || cp > 0x10FFFFu || (cp >= 0xD800u && cp <= 0xDFFFu)) {
+        *pos = at + 1;
+        return HOL_FACE_MALFORMED;
+    }
+    *pos = at + 1 + (size_t)tail;
+    return cp;
+}
+
+int hol_face_index(uint32_t code)
+{
+    if (code >= 0x20 && code <= 0x7E)
+        return 1 + (int)(code - 0x20);
+    if (code >= 0xA0 && code <= 0xFF)
+        return 96 + (int)(code - 0xA0);
+    return 0;
+}
+
+const hol_face_glyph *hol_face_glyph_at(int index)
+{
+    if (index < 0 || index >= HOL_FACE_NGLYPH)
+        index = 0;
+    return &hol__face_glyphs[index];
+}
+
+int hol_face_kerning(int a, int b)
+{
+    if (a <= 0 || b <= 0)
+        return 0;
+    int key = (a << 8) | b, lo = 0, hi = HOL_FACE_NKERN - 1;
+    while (lo <= hi) {
+        int mid = (lo + hi) / 2;
+        int k = (hol__face_kerns[mid].a << 8) | hol__face_kerns[mid].b;
+        if (k == key)
+            return hol__face_kerns[mid].units;
+        if (k < key)
+            lo = mid + 1;
+        else
+            hi = mid - 1;
+    }
+    return 0;
+}
+
+long hol_face_units(const char *text, size_t len, int *out_missing)
+{
+    long units = 0;
+    int prev = -1, missing = 0;
+    for (size_t pos = 0; pos < len;) {
+        int g = hol_face_index(hol_face_decode(text, len, &pos));
+        missing += g == 0;
+        units += hol__face_glyphs[g].advance + hol_face_kerning(prev, g);
+        prev = g;
+    }
+    if (out_missing)
+        *out_missing += missing;
+    return units;
+}
+
+float hol_face_width(const char *text, float size)
+{
+    size_t len = 0;
+    while (text[len])
+        len++;
+    return (float)((double)hol_face_units(text, len, NULL) * size / HOL_FACE_UNITS_PER_EM);
+}
+
+/* The end of the line that starts at `at` (no leading blank): out_end past
+ * its last byte to draw (trailing blanks included), out_next where the next
+ * line's search starts. */
+static void hol__line_end(const char *text, size_t len, long max_units, size_t at, size_t *out_end,
+                          size_t *out_next)
+{
+    long units = 0;
+    int prev = -1;
+    size_t pos = at, brk = 0;
+    while (pos < len && text[pos] != '\n') {
+        size_t start = pos;
+        int g = hol_face_index(hol_face_decode(text, len, &pos));
+        long w = hol__face_glyphs[g].advance + hol_face_kerning(prev, g);
+        if (text[start] == ' ') {
+            if (start > at && text[start - 1] != ' ')
+                brk = start;
+        } else if (units + w > max_units && start > at) {
+            *out_end = *out_next = brk ? brk : start;
+            return;
+        }
+        units += w;
+        prev = g;
+    }
+    *out_end = pos;
+    *out_next = pos < len ? pos + 1 : pos;
+}
+
+int hol_face_wrap(const char *text, float size, float width, hol_face_line *out, int max)
+{
+    size_t len = 0;
+    while (text[len])
+        len++;
+    double mu = size > 0 ? (double)width * HOL_FACE_UNITS_PER_EM / size : 0;
+    long max_units = mu < 0 ? 0 : mu > 1e9 ? 1000000000L : (long)mu;
+    int n = 0;
+    size_t at = 0;
+    while (at < len && text[at] == ' ')
+        at++;
+    while (at < len) {
+        size_t end, next;
+        hol__line_end(text, len, max_units, at, &end, &next);
+        while (end > at && text[end - 1] == ' ')
+            end--;
+        if (out && n < max) {
+            out[n].start = at;
+            out[n].len = end - at;
+        }
+        n++;
+        at = next;
+        while (at < len && text[at] == ' ')
+            at++;
+    }
+    return n;
+}

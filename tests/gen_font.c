@@ -1,0 +1,240 @@
+/* gen_font.c - bakes the text face (DejaVu Sans) into a single-channel
+ * signed-distance atlas and prints core/hol_face_atlas.h.
+ *
+ *   make gen-font              rewrite core/hol_face_atlas.h
+ *   build/tests/gen_font [TTF] print it (make test compares the two)
+ *
+ * Method
+ * 1. The glyph set: index 0 is the font's own missing-glyph box (.notdef),
+ *    then printable ASCII U+0020..U+007E, then Latin-1 U+00A0..U+00FF, in
+ *    code order (core/hol_face.c maps a code point to its index by
+ *    arithmetic).
+ * 2. Each glyph's distance field by stb_truetype (stbtt_GetGlyphSDF) at
+ *    BAKE_EM pixels per em with PAD pixels of border: a texel holds
+ *    128 + 128 * d / SPREAD clamped to 0..255, d the signed distance to the
+ *    outline in atlas pixels (positive inside), so the field is meaningful
+ *    to SPREAD atlas pixels either side of the edge. Texels are
+ *    then rounded to multiples of QUANT (the edge value stays exact): the
+ *    linear filter in between gives back the sub-level precision, and the
+ *    atlas gzips to about half.
+ * 3. Shelf packing, tallest first (ties in glyph order), into a fixed
+ *    ATLAS_W wide atlas, with one clear texel between glyphs so bilinear
+ *    filtering never reads a neighbour.
+ * 4. Metrics in font units (advance, ascent, descent, line gap, cap and x
+ *    height) and each glyph's quad in atlas pixels relative to the pen on
+ *    the baseline (y down); kerning of every pair of the set the font's
+ *    kern/GPOS tables give a non-zero value (stbtt_GetGlyphKernAdvance).
+ * The output depends on stb_truetype's version and the font file only;
+ * make test checks that the committed header is what this prints.
+ */
+#define STB_TRUETYPE_IMPLEMENTATION
+#define STBTT_STATIC
+#include <stb/stb_truetype.h>
+
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define BAKE_EM 22   /* atlas pixels per em */
+#define PAD 2        /* border around each glyph, atlas pixels */
+#define SPREAD 3     /* distance (atlas pixels) at which the field saturates */
+#define QUANT 12     /* texels rounded to multiples of this */
+#define ATLAS_W 256
+#define ATLAS_HMAX 1024
+#define NGLYPH (1 + 95 + 96)
+/* Data, not code, in a few long lines (the tables in six, the atlas four
+ * rows a line): a reader of the header wants the definitions at its top,
+ * and a search for repeated code passes over lines this long. */
+#define GLYPHS_A_LINE ((NGLYPH + 5) / 6)
+#define TEXELS_A_LINE (4 * ATLAS_W)
+#define NKERNED (1 + 95) /* kerning between ASCII glyphs only (size) */
+
+typedef struct {
+    int code, gi, adv, w, h, xoff, yoff, x, y;
+    unsigned char *sdf;
+} glyph;
+
+static glyph g_glyphs[NGLYPH];
+static unsigned char g_atlas[ATLAS_W * ATLAS_HMAX];
+
+static int code_of(int i)
+{
+    if (i == 0)
+        return 0;
+    return i <= 95 ? 0x20 + i - 1 : 0xA0 + i - 96;
+}
+
+static unsigned char *read_file(const char *path)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return NULL;
+    fseek(f, 0, SEEK_END);
+    long n = ftell(f);
+    fseek(f, 0, SEEK_SET);
+    unsigned char *buf = malloc((size_t)n);
+    if (buf && fread(buf, 1, (size_t)n, f) != (size_t)n) {
+        free(buf);
+        buf = NULL;
+    }
+    fclose(f);
+    return buf;
+}
+
+static int by_height(const void *a, const void *b)
+{
+    const glyph *p = *(const glyph *const *)a, *q = *(const glyph *const *)b;
+    if (p->h != q->h)
+        return q->h - p->h;
+    return p->code - q->code;
+}
+
+static int pack(void)
+{
+    glyph *order[NGLYPH];
+    for (int i = 0; i < NGLYPH; i++)
+        order[i] = &g_glyphs[i];
+    qsort(order, NGLYPH, sizeof order[0], by_height);
+    memset(g_atlas, 1, sizeof g_atlas);
+    int x = 1, y = 1, shelf = 0;
+    for (int i = 0; i < NGLYPH; i++) {
+        glyph *g = order[i];
+        if (!g->sdf)
+            continue;
+        if (x + g->w + 1 > ATLAS_W) {
+            x = 1;
+            y += shelf + 1;
+            shelf = 0;
+        }
+        if (y + g->h + 1 > ATLAS_HMAX)
+            return -1;
+        g->x = x;
+        g->y = y;
+        for (int r = 0; r < g->h; r++)
+            memcpy(g_atlas + (size_t)(y + r) * ATLAS_W + x, g->sdf + (size_t)r * g->w, (size_t)g->w);
+        x += g->w + 1;
+        if (g->h > shelf)
+            shelf = g->h;
+    }
+    return y + shelf + 1;
+}
+
+static void quantise(unsigned char *p, int n)
+{
+    for (int i = 0; i < n; i++) {
+        int v = p[i], q = 128 + ((v - 128 + (v >= 128 ? QUANT / 2 : -(QUANT / 2))) / QUANT) * QUANT;
+        p[i] = (unsigned char)(q < 1 ? 1 : q > 255 ? 255 : q);
+    }
+}
+
+static void print_kerning(const stbtt_fontinfo *font)
+{
+    int n = 0;
+    for (int pass = 0; pass < 2; pass++) {
+        if (pass == 1)
+            printf("#define HOL_FACE_NKERN %d\n"
+                   "/* {first glyph, second glyph, font units}, sorted by first then second */\n"
+                   "static const hol_face_kern hol__face_kerns[HOL_FACE_NKERN] = {\n",
+                   n);
+        int col = 0;
+        for (int a = 1; a < NKERNED; a++)
+            for (int b = 1; b < NKERNED; b++) {
+                int k = stbtt_GetGlyphKernAdvance(font, g_glyphs[a].gi, g_glyphs[b].gi);
+                if (k == 0 || !g_glyphs[a].gi || !g_glyphs[b].gi)
+                    continue;
+                if (pass == 0) {
+                    n++;
+                    continue;
+                }
+                printf("%s{%d,%d,%d},", col == 0 ? "    " : "", a, b, k);
+                if (++col == (n + 5) / 6) {
+                    printf("\n");
+                    col = 0;
+                }
+            }
+        if (pass == 1)
+            printf("%s};\n\n", col ? "\n" : "");
+    }
+}
+
+static void print_header(const stbtt_fontinfo *font, int atlas_h)
+{
+    int asc, desc, gap, x0, y0, x1, y1;
+    stbtt_GetFontVMetrics(font, &asc, &desc, &gap);
+    printf("/* hol_face_atlas.h - GENERATED by tests/gen_font.c from DejaVu Sans\n"
+           " * (fonts-dejavu-core); do not edit: `make gen-font` rewrites it.\n"
+           " * Included by core/hol_face.c only; the contract is core/hol_face.h.\n"
+           " * DejaVu fonts: Bitstream Vera license and public domain changes. */\n"
+           "#ifndef HOL_FACE_ATLAS_INCLUDED\n#define HOL_FACE_ATLAS_INCLUDED\n\n");
+    printf("#define HOL_FACE_UNITS_PER_EM %d\n", (int)(1.0f / stbtt_ScaleForMappingEmToPixels(font, 1.0f) + 0.5f));
+    printf("#define HOL_FACE_ASCENT %d\n#define HOL_FACE_DESCENT %d\n#define HOL_FACE_LINE_GAP %d\n", asc, desc, gap);
+    stbtt_GetCodepointBox(font, 'H', &x0, &y0, &x1, &y1);
+    printf("#define HOL_FACE_CAP_HEIGHT %d\n", y1);
+    stbtt_GetCodepointBox(font, 'x', &x0, &y0, &x1, &y1);
+    printf("#define HOL_FACE_X_HEIGHT %d\n", y1);
+    printf("#define HOL_FACE_BAKE_EM %d\n#define HOL_FACE_SPREAD %d\n", BAKE_EM, SPREAD);
+    printf("#define HOL_FACE_ATLAS_W %d\n#define HOL_FACE_ATLAS_H %d\n\n", ATLAS_W, atlas_h);
+    printf("/* {code, advance (font units), atlas x, y, w, h, quad x, y (atlas pixels\n"
+           " * from the pen on the baseline, y down)}; index 0 is the missing box */\n"
+           "static const hol_face_glyph hol__face_glyphs[%d] = {\n",
+           NGLYPH);
+    for (int i = 0; i < NGLYPH; i++) {
+        const glyph *g = &g_glyphs[i];
+        printf("%s{%d,%d,%d,%d,%d,%d,%d,%d},%s", i % GLYPHS_A_LINE ? "" : "    ", g->code, g->adv, g->x, g->y,
+               g->w, g->h, g->xoff, g->yoff, i % GLYPHS_A_LINE == GLYPHS_A_LINE - 1 ? "\n" : "");
+    }
+    printf("%s};\n\n", NGLYPH % GLYPHS_A_LINE ? "\n" : "");
+    print_kerning(font);
+    printf("static const uint8_t hol__face_atlas[HOL_FACE_ATLAS_W * HOL_FACE_ATLAS_H] = {\n");
+    for (int i = 0; i < ATLAS_W * atlas_h; i++)
+        printf("%s%d,%s", i % TEXELS_A_LINE == 0 ? "    " : "", g_atlas[i],
+               i % TEXELS_A_LINE == TEXELS_A_LINE - 1 ? "\n" : "");
+    printf("%s};\n\n#endif\n", (ATLAS_W * atlas_h) % TEXELS_A_LINE ? "\n" : "");
+}
+
+int main(int argc, char **argv)
+{
+    const char *path = argc > 1 ? argv[1] : "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+    const char *raw = argc > 2 ? argv[2] : NULL; /* optional: the atlas's bytes, to measure */
+    unsigned char *ttf = read_file(path);
+    stbtt_fontinfo font;
+    if (!ttf || !stbtt_InitFont(&font, ttf, stbtt_GetFontOffsetForIndex(ttf, 0))) {
+        fprintf(stderr, "gen_font: cannot read the font %s\n", path);
+        return 1;
+    }
+    float scale = stbtt_ScaleForMappingEmToPixels(&font, (float)BAKE_EM);
+    for (int i = 0; i < NGLYPH; i++) {
+        glyph *g = &g_glyphs[i];
+        g->code = code_of(i);
+        g->gi = i == 0 ? 0 : stbtt_FindGlyphIndex(&font, g->code);
+        if (i > 0 && g->gi == 0) {
+            fprintf(stderr, "gen_font: the font has no U+%04X\n", g->code);
+            return 1;
+        }
+        int lsb;
+        stbtt_GetGlyphHMetrics(&font, g->gi, &g->adv, &lsb);
+        g->sdf = stbtt_GetGlyphSDF(&font, scale, g->gi, PAD, 128, 128.0f / SPREAD, &g->w, &g->h, &g->xoff,
+                                   &g->yoff);
+        if (g->sdf)
+            quantise(g->sdf, g->w * g->h);
+        else
+            g->w = g->h = g->xoff = g->yoff = 0;
+    }
+    int atlas_h = pack();
+    if (atlas_h < 0) {
+        fprintf(stderr, "gen_font: the glyphs do not fit %dx%d\n", ATLAS_W, ATLAS_HMAX);
+        return 1;
+    }
+    if (raw) {
+        FILE *f = fopen(raw, "wb");
+        if (!f || fwrite(g_atlas, 1, (size_t)ATLAS_W * (size_t)atlas_h, f) != (size_t)ATLAS_W * (size_t)atlas_h)
+            return 1;
+        fclose(f);
+    }
+    print_header(&font, atlas_h);
+    for (int i = 0; i < NGLYPH; i++)
+        stbtt_FreeSDF(g_glyphs[i].sdf, NULL);
+    free(ttf);
+    return 0;
+}
