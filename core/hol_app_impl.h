@@ -129,6 +129,9 @@ void hol__ask_lines(const hol_app *app, hol_app_hud *h);
 
 /* hol_app_view.c */
 void hol__fill_view(hol_app *app, const hol_input *in);
+
+/* hol_app_geom.c: a quaternion's yaw and pitch (degrees; left as they
+ * were for a zero quaternion). */
 void hol__yaw_pitch_from_quat(const float qf[4], double *yaw, double *pitch);
 
 #endif
