@@ -1,50 +1,9 @@
-/* hol_ask.c - questionnaire items (see hol_ask.h). */
+/* hol_ask.c - questionnaire items: the question line (see hol_ask.h; the
+ * presets' table is hol_ask_preset.c). */
 #include "hol_ask.h"
 
 #include <stdio.h>
 #include <string.h>
-
-static const char *const hol__ssq[HOL_ASK_SSQ_ITEMS][2] = {
-    {"general_discomfort", "General discomfort"},
-    {"fatigue", "Fatigue"},
-    {"headache", "Headache"},
-    {"eye_strain", "Eye strain"},
-    {"difficulty_focusing", "Difficulty focusing"},
-    {"salivation_increasing", "Salivation increasing"},
-    {"sweating", "Sweating"},
-    {"nausea", "Nausea"},
-    {"difficulty_concentrating", "Difficulty concentrating"},
-    {"fullness_of_head", "Fullness of the head"},
-    {"blurred_vision", "Blurred vision"},
-    {"dizziness_eyes_open", "Dizziness with eyes open"},
-    {"dizziness_eyes_closed", "Dizziness with eyes closed"},
-    {"vertigo", "Vertigo"},
-    {"stomach_awareness", "Stomach awareness"},
-    {"burping", "Burping"},
-};
-
-/* nausea 1, oculomotor 2, disorientation 4 (Kennedy et al. 1993) */
-static const unsigned char hol__ssq_sub[HOL_ASK_SSQ_ITEMS] = {
-    1 | 2, 2, 2, 2, 2 | 4, 1, 1, 1 | 4, 1 | 2, 4, 2 | 4, 4, 4, 4, 1, 1};
-
-static const char *const hol__tlx[HOL_ASK_TLX_ITEMS][4] = {
-    {"mental", "Mental demand: how mentally demanding was the task?", "Very low", "Very high"},
-    {"physical", "Physical demand: how physically demanding was the task?", "Very low",
-     "Very high"},
-    {"temporal", "Temporal demand: how hurried or rushed was the pace of the task?", "Very low",
-     "Very high"},
-    {"performance", "Performance: how successful were you in doing what you were asked to do?",
-     "Perfect", "Failure"},
-    {"effort", "Effort: how hard did you have to work to reach your level of performance?",
-     "Very low", "Very high"},
-    {"frustration", "Frustration: how insecure, discouraged, irritated, stressed and annoyed "
-                    "were you?", "Very low", "Very high"},
-};
-
-unsigned hol_ask_ssq_subscales(int k)
-{
-    return k >= 0 && k < HOL_ASK_SSQ_ITEMS ? hol__ssq_sub[k] : 0;
-}
 
 int hol_ask_id_ok(const char *id, size_t n)
 {
@@ -77,31 +36,6 @@ const char *hol_ask_when_name(int when)
 {
     static const char *const names[3] = {"level", "condition", "study"};
     return when >= 0 && when < 3 ? names[when] : "level";
-}
-
-int hol_ask_preset(const char *name, size_t n, hol_app_question *out, int max)
-{
-    int ssq = hol__is(name, n, "ssq"), tlx = hol__is(name, n, "tlx");
-    int count = ssq ? HOL_ASK_SSQ_ITEMS : tlx ? HOL_ASK_TLX_ITEMS : 0;
-    for (int k = 0; k < count && k < max; k++) {
-        hol_app_question *q = &out[k];
-        memset(q, 0, sizeof *q);
-        q->kind = HOL_APP_LIKERT;
-        if (ssq) {
-            snprintf(q->id, sizeof q->id, "%s", hol__ssq[k][0]);
-            snprintf(q->text, sizeof q->text, "%s", hol__ssq[k][1]);
-            q->lo = 0, q->hi = 3, q->step = 1;
-            snprintf(q->low, sizeof q->low, "none");
-            snprintf(q->high, sizeof q->high, "severe");
-        } else {
-            snprintf(q->id, sizeof q->id, "%s", hol__tlx[k][0]);
-            snprintf(q->text, sizeof q->text, "%s", hol__tlx[k][1]);
-            q->lo = 0, q->hi = 100, q->step = 5;
-            snprintf(q->low, sizeof q->low, "%s", hol__tlx[k][2]);
-            snprintf(q->high, sizeof q->high, "%s", hol__tlx[k][3]);
-        }
-    }
-    return count;
 }
 
 /* The next field of [*s, end): a word, or a quoted string (without its
@@ -174,10 +108,12 @@ hol_err hol_ask_parse_question(const char *line, size_t len, hol_app_question *q
     memset(q, 0, sizeof *q);
     if (nf < 3 || !hol__is(w[0], n[0], "question") || kind[1] != 1)
         return HOL__BAD(HOL_EPARSE, "question needs ID likert|choice ...");
+    char presets[HOL_ASK_NAMES_MAX];
+    hol_ask_preset_names("or", presets, sizeof presets);
     if (!hol_ask_id_ok(w[1], n[1]) || hol_ask_preset(w[1], n[1], NULL, 0))
         return HOL__BAD(HOL_EPARSE, "question: the ID '%.*s' is not 1..31 letters, digits, "
-                                    "'_', '-', '.' (and not ssq or tlx)",
-                        (int)(n[1] < 40 ? n[1] : 40), w[1]);
+                                    "'_', '-', '.' (and not %s)",
+                        (int)(n[1] < 40 ? n[1] : 40), w[1], presets);
     memcpy(q->id, w[1], n[1]);
     if (hol__is(w[2], n[2], "likert")) {
         q->kind = HOL_APP_LIKERT;

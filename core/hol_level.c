@@ -466,7 +466,7 @@ static hol_err hol__key_question(hol__lp *p, char **f, int nf)
     return HOL_OK;
 }
 
-/* An ask's items: the preset's (NAME ssq or tlx, no IDs) or the questions
+/* An ask's items: the preset's (NAME a preset's, no IDs) or the questions
  * named (given before), copied after the level's questions. */
 static hol_err hol__ask_items(hol__lp *p, hol_app_ask *a, const char *ids)
 {
@@ -475,10 +475,12 @@ static hol_err hol__ask_items(hol__lp *p, hol_app_ask *a, const char *ids)
     int room = HOL_APP_MAX_QUESTIONS - L->nquestions;
     if (!*ids) {
         int n = hol_ask_preset(a->name, strlen(a->name), L->questions + L->nquestions, room);
+        char presets[HOL_ASK_NAMES_MAX];
+        hol_ask_preset_names("and", presets, sizeof presets);
         if (!n)
             return hol__lfail(p, HOL_EPARSE, p->line,
-                              "ask %s names no items (IDs of questions; ssq and tlx need none)",
-                              a->name);
+                              "ask %s names no items (IDs of questions; %s need none)", a->name,
+                              presets);
         if (n > room)
             return hol__lfail(p, HOL_ENOMEM, p->line, "more than %d items to ask",
                               HOL_APP_MAX_QUESTIONS);
