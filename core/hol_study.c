@@ -16,16 +16,10 @@ static hol_err hol__fail(hol_level_err *e, hol_err code, long line, long other,
 static hol_err hol__fail(hol_level_err *e, hol_err code, long line, long other,
                          const char *fmt, ...)
 {
-    if (e) {
-        memset(e, 0, sizeof *e);
-        e->code = code;
-        e->line = line;
-        e->other = other;
-        va_list ap;
-        va_start(ap, fmt);
-        vsnprintf(e->msg, sizeof e->msg, fmt, ap);
-        va_end(ap);
-    }
+    va_list ap;
+    va_start(ap, fmt);
+    hol_level_err_vset(e, code, line, other, fmt, ap);
+    va_end(ap);
     return code;
 }
 
