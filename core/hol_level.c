@@ -1,227 +1,159 @@
-/* hol_level.c - level files (see hol_level.h): the table of keys, a line
- * read and dispatched to its key, the two passes over a text, and the
- * API's readers (the parser's files: hol_level_impl.h). */
+/* hol_level.c - level files' ground (see hol_level.h, hol_level_impl.h):
+ * errors set and formatted, names, and the parser's helpers every line
+ * kind uses (its one way to fail, numbers, words and addresses). It calls
+ * no other level file. */
 #include "hol_level_impl.h"
 
+#include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
 
-/* ---- the keys ---------------------------------------------------------------- */
+#include "hol_tile.h"
 
-/* A key's columns: HOL__REPEAT, given on many lines (each other key once:
- * a second line is refused naming both); HOL__GEO, read in a first pass
- * (addresses need the tiling). */
-#define HOL__REPEAT 1u
-#define HOL__GEO 2u
-
-/* Every key, with its least and most fields (the key included), its
- * columns and its function (hol_level_keys.c, hol_level_ask.c). */
-static const struct {
-    const char *key;
-    int min, max;
-    unsigned flags;
-    hol_err (*fn)(hol__lp *p, char **f, int nf);
-} hol__keys[] = {
-    {"mode", 2, 2, 0, hol__key_mode},
-    {"seed", 2, 2, 0, hol__key_seed},
-    {"start", 2, 2, 0, hol__key_start},
-    {"flag", 2, 2, 0, hol__key_tile},
-    {"chest", 2, 2, 0, hol__key_tile},
-    {"keys", 2, 1 + HOL_APP_MAX_KEYS, 0, hol__key_keys},
-    {"flag-distance", 2, 3, 0, hol__key_dist},
-    {"chest-distance", 2, 3, 0, hol__key_dist},
-    {"keys-distance", 3, 4, 0, hol__key_keys_dist},
-    {"time-limit", 2, 2, 0, hol__key_time_limit},
-    {"stages", 2, HOL__FIELDS + 1, 0, hol__key_stages},
-    {"place", 3, 5, HOL__REPEAT, hol__key_place},
-    {"cues", 2, HOL__FIELDS + 1, 0, hol__key_cues},
-    {"minimap", 2, 2, 0, hol__key_minimap},
-    {"fixed", 2, 2, 0, hol__key_fixed},
-    {"lighting", 2, 2, 0, hol__key_lighting},
-    {"sound", 2, 2, 0, hol__key_sound},
-    {"point", 2, 2, 0, hol__key_point},
-    {"instructions", 2, HOL__FIELDS + 1, 0, hol__key_text},
-    {"closing", 2, HOL__FIELDS + 1, 0, hol__key_text},
-    {"question", 3, HOL__FIELDS + 1, HOL__REPEAT, hol__key_question},
-    {"ask", 3, HOL__FIELDS + 1, HOL__REPEAT, hol__key_ask},
-    {"tiling", 3, 3, HOL__GEO, hol__key_tiling},
-    {"room", 3, 3, HOL__GEO, hol__key_room},
-    {"cell", 2, 2, HOL__GEO, hol__key_cell},
-};
-_Static_assert(sizeof hol__keys / sizeof hol__keys[0] <= 32, "hol__lp.key_line holds every key");
-
-/* The columns of the key named key (0: no such key). */
-static unsigned hol__key_flags(const char *key)
+hol_err hol_level_err_vset(hol_level_err *e, hol_err code, long line, long other,
+                           const char *fmt, va_list ap)
 {
-    for (size_t k = 0; k < sizeof hol__keys / sizeof hol__keys[0]; k++)
-        if (!strcmp(key, hol__keys[k].key))
-            return hol__keys[k].flags;
+    if (e) {
+        memset(e, 0, sizeof *e);
+        e->code = code;
+        e->line = line;
+        e->other = other;
+        vsnprintf(e->msg, sizeof e->msg, fmt, ap);
+    }
+    return code;
+}
+
+hol_err hol__lfail(hol__lp *p, hol_err code, long line, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    hol_level_err_vset(p->err, code, line, 0, fmt, ap);
+    va_end(ap);
+    return code;
+}
+
+/* A conflict with another line: "... (line M)", or "... on line M". */
+hol_err hol__lv_conflict(hol__lp *p, long line, long other, int on, const char *what,
+                             const char *addr)
+{
+    if (on)
+        hol__lfail(p, HOL_EARG, line, "%.30s is already placed", addr);
+    else
+        hol__lfail(p, HOL_EARG, line, "the placement on %.30s conflicts with %s", addr, what);
+    if (p->err) {
+        p->err->other = other;
+        p->err->other_on = on;
+    }
+    return HOL_EARG;
+}
+
+/* ---- numbers and words ------------------------------------------------------ */
+
+
+/* A positive decimal count (digits only, at most 2^40); 0 when it is not. */
+uint64_t hol__lv_count(const char *s)
+{
+    uint64_t v = 0;
+    if (!*s)
+        return 0;
+    for (; *s; s++) {
+        if (*s < '0' || *s > '9' || v > (UINT64_C(1) << 40))
+            return 0;
+        v = v * 10 + (uint64_t)(*s - '0');
+    }
+    return v <= (UINT64_C(1) << 40) ? v : 0;
+}
+
+/* An unsigned 64-bit number, decimal or 0x hex (a leading 0 is not octal;
+ * no sign, no blanks): 1 ok. */
+int hol__lv_u64(const char *s, uint64_t *out)
+{
+    int hex = s[0] == '0' && (s[1] == 'x' || s[1] == 'X');
+    const char *d = hex ? s + 2 : s;
+    uint64_t v = 0, base = hex ? 16 : 10;
+    if (!*d)
+        return 0;
+    for (; *d; d++) {
+        int c = *d;
+        int k = c >= '0' && c <= '9' ? c - '0'
+                : hex && c >= 'a' && c <= 'f' ? c - 'a' + 10
+                : hex && c >= 'A' && c <= 'F' ? c - 'A' + 10
+                                              : -1;
+        if (k < 0 || v > (UINT64_MAX - (uint64_t)k) / base)
+            return 0;
+        v = v * base + (uint64_t)k;
+    }
+    *out = v;
+    return 1;
+}
+
+/* Index of word in names[n], or -1. */
+int hol__lv_word(const char *word, const char *const *names, int n)
+{
+    for (int i = 0; i < n; i++)
+        if (!strcmp(word, names[i]))
+            return i;
+    return -1;
+}
+
+/* "MIN [MAX]" of a distance key from field first: 1 <= MIN <= MAX <= 10. */
+int hol__lv_range(char **f, int nf, int first, int *lo, int *hi)
+{
+    uint64_t a = hol__lv_count(f[first]);
+    uint64_t b = nf > first + 1 ? hol__lv_count(f[first + 1]) : a;
+    if (!a || !b || a > HOL_LEVEL_MAX_DIST || b > HOL_LEVEL_MAX_DIST || a > b)
+        return 1;
+    *lo = (int)a;
+    *hi = (int)b;
     return 0;
 }
 
-/* ---- lines -------------------------------------------------------------------- */
-
-/* Split line (NUL-terminated, comment removed) at spaces and tabs into at
- * most HOL__FIELDS NUL-terminated fields; returns the count, or
- * HOL__FIELDS + 1 when there are more. */
-static int hol__split(char *line, char **f)
+hol_err hol__lv_one_of(hol__lp *p, char **f, const char *const *names, int n, const char *list,
+                       int *out)
 {
-    int n = 0;
-    char *s = line;
-    for (;;) {
-        while (*s == ' ' || *s == '\t')
-            s++;
-        if (!*s)
-            return n;
-        if (n == HOL__FIELDS)
-            return n + 1;
-        f[n++] = s;
-        while (*s && *s != ' ' && *s != '\t')
-            s++;
-        if (*s)
-            *s++ = 0;
-    }
-}
-
-/* One line (n bytes at s, without its LF): comment, fields, its key. */
-static hol_err hol__line(hol__lp *p, const char *s, size_t n)
-{
-    char line[HOL_LEVEL_LINE_MAX + 1];
-    while (n && s[n - 1] == '\r')
-        n--;
-    if (n > HOL_LEVEL_LINE_MAX)
-        return hol__lfail(p, HOL_ENOMEM, p->line, "longer than %d bytes", HOL_LEVEL_LINE_MAX);
-    if (memchr(s, 0, n))
-        return hol__lfail(p, HOL_EPARSE, p->line, "a NUL byte");
-    memcpy(line, s, n);
-    line[n] = 0;
-    char *hash = strchr(line, '#');
-    if (hash)
-        *hash = 0;
-    memcpy(p->raw, line, strlen(line) + 1);
-    char *f[HOL__FIELDS];
-    int nf = hol__split(line, f);
-    if (nf == 0)
-        return HOL_OK;
-    if (nf < 2)
-        return hol__lfail(p, HOL_EPARSE, p->line, "'%.20s' needs a value", f[0]);
-    if (p->geo_only && !(hol__key_flags(f[0]) & HOL__GEO))
-        return HOL_OK;
-    for (size_t k = 0; k < sizeof hol__keys / sizeof hol__keys[0]; k++)
-        if (!strcmp(f[0], hol__keys[k].key) && nf >= hol__keys[k].min &&
-            nf <= hol__keys[k].max) {
-            /* a key given twice is refused, naming both lines (no silent
-             * last-wins) unless the table marks it HOL__REPEAT */
-            if (p->key_line[k] && !(hol__keys[k].flags & HOL__REPEAT)) {
-                hol_level_err *quiet = p->err;
-                p->err = p->loud;
-                p->repeated = 1;
-                hol__lfail(p, HOL_EARG, p->line, "'%s' is given twice; give each key once",
-                           f[0]);
-                if (p->err)
-                    p->err->other = p->key_line[k];
-                p->err = quiet;
-                return HOL_EARG;
-            }
-            p->key_line[k] = p->line;
-            return hol__keys[k].fn(p, f, nf);
-        }
-    return hol__lfail(p, HOL_EPARSE, p->line, "unknown key or wrong value count: '%.20s'", f[0]);
-}
-
-/* ---- the API ------------------------------------------------------------------ */
-
-hol_err hol_level_parse(const char *text, size_t len, hol_app_level *out, hol_level_err *err)
-{
-    hol__lv_skip_bom(&text, &len);
-    static const hol__lp zero;
-    hol__lp p = zero;
-    p.L.cues = HOL_CUE_ALL;
-    p.err = err;
-    p.loud = err;
-    /* the bound is on the text as a session keeps it (hol_level_make adds
-     * a last line end), so what parses is kept whole and parses again */
-    size_t kept = len + (len && text[len - 1] != '\n');
-    if (kept > HOL_LEVEL_TEXT_MAX)
-        return hol__lfail(&p, HOL_ENOMEM, 0, "longer than %d bytes (its last line end counted)",
-                          HOL_LEVEL_TEXT_MAX);
-    /* two passes: the geometry lines first (quietly: the second pass
-     * reports every line's error in order), then every line in the
-     * level's tiling */
-    for (int pass = 0; pass < 2; pass++) {
-        p.geo_only = !pass;
-        p.err = pass ? err : NULL;
-        p.line = 0;
-        memset(p.key_line, 0, sizeof p.key_line);
-        const char *s = text, *end = text + len;
-        while (s < end) {
-            const char *nl = memchr(s, '\n', (size_t)(end - s));
-            const char *le = nl ? nl : end;
-            p.line++;
-            hol_err e = hol__line(&p, s, (size_t)(le - s));
-            if (e && pass)
-                return e;
-            /* a repeated geometry line is refused before any address is
-             * read in a tiling that a later line changes */
-            if (e && p.repeated)
-                return e;
-            s = nl ? nl + 1 : end;
-        }
-    }
-    hol_err e = hol__lv_finish(&p);
-    if (e)
-        return e;
-    *out = p.L;
+    int m = hol__lv_word(f[1], names, n);
+    if (m < 0)
+        return hol__lfail(p, HOL_EPARSE, p->line, "%s '%.20s' is not %s", f[0], f[1], list);
+    *out = m;
     return HOL_OK;
 }
 
-hol_err hol_level_line_check(const char *s, size_t n, hol_level_err *err)
+/* ---- addresses -------------------------------------------------------------- */
+
+/* The level's tiling Q (the geometry lines are read first). */
+int hol__lv_q(const hol__lp *p)
 {
-    /* an address may be one of any tiling (the level's own tiling line may
-     * come from elsewhere): the line is good when some tiling reads it;
-     * the error is {4,5}'s */
-    static const int qs[5] = {5, 4, 6, 7, 8};
-    hol_err first = HOL_OK;
-    for (int i = 0; i < 5; i++) {
-        static const hol__lp zero;
-        hol__lp p = zero;
-        p.L.cues = HOL_CUE_ALL;
-        p.L.tiling_q = qs[i];
-        p.err = i ? NULL : err;
-        p.line = 1;
-        hol_err e = hol__line(&p, s, n);
-        if (!e)
-            return HOL_OK;
-        if (!i)
-            first = e;
-    }
-    return first;
+    return p->L.tiling_q ? p->L.tiling_q : HOL_TILING_DEFAULT_Q;
 }
 
-long hol_level_objective_line(const hol_level *lv)
+/* An address of the level's tiling at s into *t: 0, or the failure
+ * reported for what ("'ADDR'", "key 'ADDR'"). A tile must lie inside the
+ * reach of tile words with its neighbours (its distance below
+ * hol_tile_reach: 59 letters in {4,6} and {4,7} was exit 1 at start). */
+hol_err hol__lv_addr(hol__lp *p, const char *s, const char *what, hol_tile *t)
 {
-    static const char *const keys[] = {"flag", "flag-distance", "keys", "keys-distance",
-                                       "chest", "chest-distance"};
-    int mode = lv->lvl.mode, from = mode == HOL_APP_FLAG ? 0 : 2, to = mode == HOL_APP_FLAG ? 2 : 6;
-    if (mode != HOL_APP_FLAG && mode != HOL_APP_KEYS)
-        return 0;
-    long line = 0;
-    for (const char *s = lv->text, *end = lv->text + lv->len; s < end;) {
-        const char *nl = memchr(s, '\n', (size_t)(end - s));
-        const char *le = nl ? nl : end;
-        line++;
-        while (s < le && (*s == ' ' || *s == '\t'))
-            s++;
-        size_t n = 0;
-        while (s + n < le && s[n] != ' ' && s[n] != '\t' && s[n] != '#')
-            n++;
-        for (int k = from; k < to; k++)
-            if (strlen(keys[k]) == n && !memcmp(s, keys[k], n))
-                return line > lv->added ? line - lv->added : 0;
-        s = nl ? nl + 1 : end;
-    }
-    return 0;
+    int q = hol__lv_q(p), reach = hol_tile_reach(q);
+    if (hol_tile_parse_q(q, s, -1, t))
+        return hol__lfail(p, HOL_EPARSE, p->line, "%s'%.30s' is not a canonical address of {4,%d}",
+                          what, s, q);
+    if (hol_tile_dist(hol_tile_origin_q(q), *t) >= reach)
+        return hol__lfail(p, HOL_ERANGE, p->line,
+                          "%s'%.30s...' lies %d steps from O; a level's tile lies at most %d "
+                          "in {4,%d}", what, s, hol_tile_dist(hol_tile_origin_q(q), *t),
+                          reach - 1, q);
+    return HOL_OK;
 }
+
+
+/* A UTF-8 byte order mark at the start of a text (some editors write
+ * one) is skipped: the text begins after it. */
+void hol__lv_skip_bom(const char **text, size_t *len)
+{
+    if (*len >= 3 && !memcmp(*text, "\xef\xbb\xbf", 3))
+        *text += 3, *len -= 3;
+}
+
+/* ---- errors formatted, names ------------------------------------------------ */
 
 char *hol_level_err_format(const hol_level_err *err, long first, char *out, size_t cap)
 {
@@ -237,4 +169,43 @@ int hol_level_name_ok(const char *name, size_t len)
 {
     return len > 0 && len < HOL_LEVEL_NAME_MAX && !memchr(name, 0, len) &&
            !memchr(name, '\n', len) && !memchr(name, '\r', len);
+}
+
+/* ---- cell values read and written ------------------------------------------ */
+
+hol_err hol_level_parse_cell(const char *s, size_t len, double *out_m)
+{
+    long v = 0;
+    size_t i = 0, digits = 0, decimals = 0;
+    for (; i < len && s[i] >= '0' && s[i] <= '9' && digits < 4; i++, digits++)
+        v = v * 10 + (s[i] - '0');
+    if (!digits)
+        return HOL_EPARSE;
+    if (i < len && s[i] == '.') {
+        for (i++; i < len && s[i] >= '0' && s[i] <= '9' && decimals < 3; i++, decimals++)
+            v = v * 10 + (s[i] - '0');
+        if (!decimals)
+            return HOL_EPARSE;
+    }
+    if (i != len)
+        return i < len && s[i] >= '0' && s[i] <= '9' ? HOL_ERANGE : HOL_EPARSE;
+    for (; decimals < 3; decimals++)
+        v *= 10;
+    if (v < 500 || v > 1500)
+        return HOL_ERANGE;
+    *out_m = (double)v / 1000.0; /* the nearest double, as strtod gives */
+    return HOL_OK;
+}
+
+char *hol_level_format_cell(double m, char out[16])
+{
+    if (!(m > 0))
+        m = 1.0;
+    snprintf(out, 16, "%.3f", m);
+    char *e = out + strlen(out);
+    while (e > out && e[-1] == '0')
+        *--e = 0;
+    if (e > out && e[-1] == '.')
+        *--e = 0;
+    return out;
 }

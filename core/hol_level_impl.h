@@ -1,14 +1,15 @@
 /* hol_level_impl.h - the level parser's insides, shared by its files:
- * hol_level.c (the key table, a line read, the API), hol_level_keys.c
- * (each key's line but the questionnaires'), hol_level_ask.c (question
- * and ask lines), hol_level_finish.c (the checks after the last line, the
- * objectives drawn by distance), hol_level_write.c (named levels, the
- * geometry lines a session adds) and hol_level_lex.c (the parser's one way
- * to fail, numbers, words and addresses). Calls go one way, down:
- * hol_level_write.c -> hol_level.c -> hol_level_keys.c, hol_level_ask.c,
- * hol_level_finish.c -> hol_level_lex.c. A new line kind: a function here
- * and in hol_level_keys.c, a row of hol__keys in hol_level.c
- * (docs/hacking.md, "Adding a level line kind"). */
+ * hol_level_parse.c (the key table, a line read, the two passes),
+ * hol_level_keys.c (each key's line but the questionnaires'),
+ * hol_level_ask.c (question and ask lines), hol_level_finish.c (the checks
+ * after the last line, the objectives drawn by distance),
+ * hol_level_write.c (named levels, the geometry lines a session adds) and
+ * hol_level.c (the ground: errors, the parser's one way to fail, numbers,
+ * words and addresses). Calls go one way, down: hol_level_write.c ->
+ * hol_level_parse.c -> hol_level_keys.c, hol_level_ask.c,
+ * hol_level_finish.c -> hol_level.c. A new line kind: a function declared
+ * here and written in hol_level_keys.c, a row of hol__keys in
+ * hol_level_parse.c (docs/hacking.md, "Adding a level line kind"). */
 #ifndef HOL_LEVEL_IMPL_H
 #define HOL_LEVEL_IMPL_H
 
@@ -40,7 +41,7 @@ typedef struct hol__lp {
     hol_level_err *err;
 } hol__lp;
 
-/* ---- hol_level_lex.c: the one way to fail, numbers, words, addresses ---------- */
+/* ---- hol_level.c: the one way to fail, numbers, words, addresses ---------- */
 
 hol_err hol__lfail(hol__lp *p, hol_err code, long line, const char *fmt, ...)
     __attribute__((format(printf, 4, 5)));

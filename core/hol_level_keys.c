@@ -1,5 +1,5 @@
 /* hol_level_keys.c - a level line's key, one function a key (see
- * hol_level_impl.h; the table of keys is hol_level.c's hol__keys; the
+ * hol_level_impl.h; the table of keys is hol_level_parse.c's hol__keys; the
  * questionnaires' lines are hol_level_ask.c's). */
 #include "hol_level_impl.h"
 

@@ -1,6 +1,6 @@
 /* hol_level_write.c - named levels (see hol_level.h): the text as a
  * recording carries it, its hash, and the geometry lines a session adds
- * before the file's first (cell values read and written). */
+ * before the file's first. */
 #include "hol_level_impl.h"
 
 #include <stdio.h>
@@ -49,44 +49,7 @@ hol_err hol_level_make(const char *name, size_t name_len, const char *text, size
     return HOL_OK;
 }
 
-/* ---- geometry values and options ------------------------------------------- */
-
-hol_err hol_level_parse_cell(const char *s, size_t len, double *out_m)
-{
-    long v = 0;
-    size_t i = 0, digits = 0, decimals = 0;
-    for (; i < len && s[i] >= '0' && s[i] <= '9' && digits < 4; i++, digits++)
-        v = v * 10 + (s[i] - '0');
-    if (!digits)
-        return HOL_EPARSE;
-    if (i < len && s[i] == '.') {
-        for (i++; i < len && s[i] >= '0' && s[i] <= '9' && decimals < 3; i++, decimals++)
-            v = v * 10 + (s[i] - '0');
-        if (!decimals)
-            return HOL_EPARSE;
-    }
-    if (i != len)
-        return i < len && s[i] >= '0' && s[i] <= '9' ? HOL_ERANGE : HOL_EPARSE;
-    for (; decimals < 3; decimals++)
-        v *= 10;
-    if (v < 500 || v > 1500)
-        return HOL_ERANGE;
-    *out_m = (double)v / 1000.0; /* the nearest double, as strtod gives */
-    return HOL_OK;
-}
-
-char *hol_level_format_cell(double m, char out[16])
-{
-    if (!(m > 0))
-        m = 1.0;
-    snprintf(out, 16, "%.3f", m);
-    char *e = out + strlen(out);
-    while (e > out && e[-1] == '0')
-        *--e = 0;
-    if (e > out && e[-1] == '.')
-        *--e = 0;
-    return out;
-}
+/* ---- the geometry lines a session adds -------------------------------------- */
 
 hol_err hol_level_set_geometry(hol_level *lv, int q, int cols, int rows, double cell_m,
                                hol_level_err *err)
