@@ -9,6 +9,12 @@
 
 /* ---- the keys ---------------------------------------------------------------- */
 
+/* Keys a build adds after the standard ones (a test's example row,
+ * docs/hacking.md). */
+#ifndef HOL_LEVEL_MORE_KEYS
+#define HOL_LEVEL_MORE_KEYS
+#endif
+
 /* A key's columns: HOL__REPEAT, given on many lines (each other key once:
  * a second line is refused naming both); HOL__GEO, read in a first pass
  * (addresses need the tiling). */
@@ -48,6 +54,7 @@ static const struct {
     {"tiling", 3, 3, HOL__GEO, hol__key_tiling},
     {"room", 3, 3, HOL__GEO, hol__key_room},
     {"cell", 2, 2, HOL__GEO, hol__key_cell},
+    HOL_LEVEL_MORE_KEYS
 };
 _Static_assert(sizeof hol__keys / sizeof hol__keys[0] <= 32, "hol__lp.key_line holds every key");
 
