@@ -1,6 +1,6 @@
-/* hol_ask.h - questionnaire items: the `question` line, the presets ssq and
- * tlx as one table (hol_ask_preset.c: items, scale, anchors, scores) that
- * the level parser, the study and the report read (docs/research.md
+/* hol_ask.h - questionnaire items: the `question` line (hol_ask_question.c),
+ * the presets ssq and tlx as one table (hol_ask.c: items, scale, anchors,
+ * scores) that the level parser, the study and the report read (docs/research.md
  * "Questionnaires"; docs/hacking.md "Adding a questionnaire preset").
  *
  * Contract

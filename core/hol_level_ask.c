@@ -1,6 +1,6 @@
 /* hol_level_ask.c - a level's questionnaire lines (see hol_level_impl.h,
  * core/hol_ask.h): question (an item), ask (a questionnaire after the end
- * screen: a preset of hol_ask_preset.c's table, or questions named). */
+ * screen: a preset of hol_ask.c's table, or questions named). */
 #include "hol_level_impl.h"
 
 #include <stdio.h>

@@ -1,11 +1,11 @@
 /* hol_session_impl.h - the session's insides, shared by its files:
- * hol_session.c (create, the frame, the level sequence, the end),
+ * hol_session_run.c (create, the frame, the level sequence, the end),
  * hol_session_recover.c (a log folder's earlier files: refusal, recovery),
  * hol_session_log.c (rows, attempts begun and ended; it also holds
  * hol_session_cues_visible), hol_session_track.c (the track rows) and
  * hol_session_out.c (the buffered outputs, the end names, the first sink
  * failure, the attempt's file names). Calls go one way, down:
- * hol_session.c -> hol_session_recover.c -> hol_session_log.c ->
+ * hol_session_run.c -> hol_session_recover.c -> hol_session_log.c ->
  * hol_session_track.c -> hol_session_out.c, each file calling only files
  * after it in this list. */
 #ifndef HOL_SESSION_IMPL_H

@@ -1,5 +1,5 @@
 /* hol_session_out.c - the session's lowest output helpers, used by its
- * other files (hol_session.c, hol_session_log.c, hol_session_track.c,
+ * other files (hol_session_run.c, hol_session_log.c, hol_session_track.c,
  * hol_session_recover.c): the end names, the first sink failure, the
  * buffered streams of a sink and the names of an attempt's files. It calls
  * none of them. */

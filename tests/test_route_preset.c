@@ -5,7 +5,7 @@
  * places it parsed, the app asking it after a level's end screen, its
  * answer scored; the standard presets and the SSQ's scores unchanged.
  *
- * The row is added by building core/hol_ask_preset.c into this test with
+ * The row is added by building core/hol_ask.c into this test with
  * HOL_ASK_MORE_PRESETS (the table's hook for a build's own rows): this
  * file then defines every name of that file, so the core library's copy is
  * not linked, and the level parser, the study and the app read this table.
@@ -25,7 +25,7 @@
     {"fms", 0, 20, 1, "no sickness", "frank sickness", 1,                                     \
      {{"fms", "Motion sickness right now: 0 none to 20 frank sickness", NULL, NULL, 1}}, 1,  \
      {{"score", 1, 1, 1}}},
-#include "../core/hol_ask_preset.c"
+#include "../core/hol_ask.c"
 
 #include "../core/hol_app.h"
 #include "../core/hol_level.h"
