@@ -589,7 +589,7 @@ WEB_OBJ  := $(WEB_SRC:%.c=$(BUILD)/web-obj/%.o)
 # (-Os made the wasm step about 40 % slower; the table's builder,
 # hol_nav_table.c, is at -Os since: its first frame the same within the
 # noise); the link at -Oz, emmalloc (docs/web.md, "The transfer size").
-WEB_HOT  := $(addprefix core/,hol_app.c hol_app_view.c hol_hyper.c hol_math.c hol_motion.c \
+WEB_HOT  := $(addprefix core/,hol_app_step.c hol_app_geom.c hol_app_view.c hol_hyper.c hol_math.c hol_motion.c \
   hol_nav.c hol_nav_arena.c hol_nav_field.c hol_nav_line.c hol_room.c \
   hol_tile.c hol_wfc.c hol_world.c hol_world_tree.c)
 WEB_OPT  := -Os

@@ -1,12 +1,16 @@
 /* hol_app_impl.h - internals shared by the hol_app*.c files (not an API).
  *
  * Contract
- * - hol_app.c owns the app: create, levels, the step, motion, planning.
- *   It calls the tutorial (hol_app_tutorial.c: lessons, their targets and
- *   feedback, the search for lesson 2's steps left) and the view
- *   (hol_app_view.c: eyes, HUD text and prompts, minimap model, objects).
- *   Neither of those calls back into hol_app.c, nor each other: the view
- *   only reads the state.
+ * - hol_app_step.c owns the app: create, levels, the step, motion,
+ *   planning. It calls the tutorial (hol_app_tutorial.c: lessons, their
+ *   targets and feedback, the search for lesson 2's steps left), the view
+ *   (hol_app_view.c: eyes, HUD text and prompts, minimap model, objects),
+ *   the questionnaires (hol_app_ask.c) and the pointing question
+ *   (hol_app_point.c). None of those calls back into hol_app_step.c; the
+ *   view calls the questionnaires' HUD lines, the questionnaires the
+ *   pointing question, and all of them the lowest file, hol_app_geom.c
+ *   (yaw and pitch of a quaternion, text wrapping), which calls none. The
+ *   view only reads the state.
  */
 #ifndef HOL_APP_IMPL_H
 #define HOL_APP_IMPL_H
@@ -129,6 +133,9 @@ void hol__ask_lines(const hol_app *app, hol_app_hud *h);
 
 /* hol_app_view.c */
 void hol__fill_view(hol_app *app, const hol_input *in);
+
+/* hol_app_geom.c: a quaternion's yaw and pitch (degrees; left as they
+ * were for a zero quaternion). */
 void hol__yaw_pitch_from_quat(const float qf[4], double *yaw, double *pitch);
 
 #endif

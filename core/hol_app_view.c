@@ -20,20 +20,6 @@ static void hol__quat_from_yaw_pitch(double yaw_deg, double pitch_deg, double q[
     q[3] = cy * cp;
 }
 
-void hol__yaw_pitch_from_quat(const float qf[4], double *yaw, double *pitch)
-{
-    double x = qf[0], y = qf[1], z = qf[2], w = qf[3];
-    double n = sqrt(x * x + y * y + z * z + w * w);
-    if (!(n > 0))
-        return;
-    x /= n, y /= n, z /= n, w /= n;
-    double fx = -2 * (x * z + w * y), fy = -2 * (y * z - w * x),
-           fz = -(1 - 2 * (x * x + y * y));
-    fy = fy < -1 ? -1 : fy > 1 ? 1 : fy;
-    *pitch = hol_asin(fy) * 180 / HOL__PI;
-    *yaw = hol_atan2(-fx, -fz) * 180 / HOL__PI;
-}
-
 /* The head's look and each eye: head +- ipd/2 along the head's right axis,
  * in the floor plane, and the room state it sees from. */
 static void hol__fill_eyes(hol_app *app, const hol_input *in)
@@ -139,39 +125,6 @@ static void hol__menu_hint(const hol_app *app, const hol_input *in, hol_app_hud 
     int k = snprintf(h->hint + len, sizeof h->hint - len, "%s%s: menu", len ? ", " : "", b);
     if (k < 0 || (size_t)k >= sizeof h->hint - len)
         h->hint[len] = 0; /* no room: the prompt alone */
-}
-
-int hol_app_wrap(const char *text, int cols, char (*out)[HOL_APP_TEXT_MAX], int max)
-{
-    if (cols < 1)
-        cols = 1;
-    if (cols > HOL_APP_TEXT_MAX - 1)
-        cols = HOL_APP_TEXT_MAX - 1;
-    int n = 0;
-    size_t len = strlen(text), at = 0;
-    while (at < len && text[at] == ' ')
-        at++;
-    while (at < len) {
-        size_t take = len - at;
-        if (take > (size_t)cols) {
-            size_t sp = (size_t)cols; /* the last space at or before cols */
-            while (sp > 0 && text[at + sp] != ' ')
-                sp--;
-            take = sp > 0 ? sp : (size_t)cols;
-        }
-        size_t keep = take;
-        while (keep > 0 && text[at + keep - 1] == ' ')
-            keep--;
-        if (out && n < max) {
-            memcpy(out[n], text + at, keep);
-            out[n][keep] = 0;
-        }
-        n++;
-        at += take;
-        while (at < len && text[at] == ' ')
-            at++;
-    }
-    return n;
 }
 
 /* A screen of text (state HOL_APP_SCREEN): its prompt. */

@@ -1,50 +1,150 @@
-/* hol_ask.c - questionnaire items (see hol_ask.h). */
+/* hol_ask.c - questionnaires (see hol_ask.h): the presets' one table (each
+ * preset's name, scale, items and scores), which the level parser, the
+ * study, the app (through the level's items), the SSQ scoring and the
+ * report read, and an item's ID and when; a new preset is a row here
+ * (docs/hacking.md, "Adding a questionnaire preset"). The question line is
+ * hol_ask_question.c's. */
 #include "hol_ask.h"
 
 #include <stdio.h>
 #include <string.h>
 
-static const char *const hol__ssq[HOL_ASK_SSQ_ITEMS][2] = {
-    {"general_discomfort", "General discomfort"},
-    {"fatigue", "Fatigue"},
-    {"headache", "Headache"},
-    {"eye_strain", "Eye strain"},
-    {"difficulty_focusing", "Difficulty focusing"},
-    {"salivation_increasing", "Salivation increasing"},
-    {"sweating", "Sweating"},
-    {"nausea", "Nausea"},
-    {"difficulty_concentrating", "Difficulty concentrating"},
-    {"fullness_of_head", "Fullness of the head"},
-    {"blurred_vision", "Blurred vision"},
-    {"dizziness_eyes_open", "Dizziness with eyes open"},
-    {"dizziness_eyes_closed", "Dizziness with eyes closed"},
-    {"vertigo", "Vertigo"},
-    {"stomach_awareness", "Stomach awareness"},
-    {"burping", "Burping"},
+#define HOL__VLO "Very low"
+#define HOL__VHI "Very high"
+
+/* The SSQ's subscales: nausea (bit 0), oculomotor (1), disorientation (2),
+ * Kennedy et al. 1993, table 4; its scores: the subscales' raw sums
+ * weighted, the total their sum x 3.74. The TLX: the six scales' mean. */
+#define HOL__N 1u
+#define HOL__O 2u
+#define HOL__D 4u
+
+/* Presets a build adds after the standard ones (a test's example row). */
+#ifndef HOL_ASK_MORE_PRESETS
+#define HOL_ASK_MORE_PRESETS
+#endif
+
+static const hol_ask_preset_def hol__presets[] = {
+    {"ssq", 0, 3, 1, "none", "severe", 16,
+     {{"general_discomfort", "General discomfort", 0, 0, HOL__N | HOL__O},
+      {"fatigue", "Fatigue", 0, 0, HOL__O},
+      {"headache", "Headache", 0, 0, HOL__O},
+      {"eye_strain", "Eye strain", 0, 0, HOL__O},
+      {"difficulty_focusing", "Difficulty focusing", 0, 0, HOL__O | HOL__D},
+      {"salivation_increasing", "Salivation increasing", 0, 0, HOL__N},
+      {"sweating", "Sweating", 0, 0, HOL__N},
+      {"nausea", "Nausea", 0, 0, HOL__N | HOL__D},
+      {"difficulty_concentrating", "Difficulty concentrating", 0, 0, HOL__N | HOL__O},
+      {"fullness_of_head", "Fullness of the head", 0, 0, HOL__D},
+      {"blurred_vision", "Blurred vision", 0, 0, HOL__O | HOL__D},
+      {"dizziness_eyes_open", "Dizziness with eyes open", 0, 0, HOL__D},
+      {"dizziness_eyes_closed", "Dizziness with eyes closed", 0, 0, HOL__D},
+      {"vertigo", "Vertigo", 0, 0, HOL__D},
+      {"stomach_awareness", "Stomach awareness", 0, 0, HOL__N},
+      {"burping", "Burping", 0, 0, HOL__N}},
+     4,
+     {{"total", HOL__N | HOL__O | HOL__D, 3.74, 1},
+      {"nausea", HOL__N, 9.54, 1},
+      {"oculomotor", HOL__O, 7.58, 1},
+      {"disorientation", HOL__D, 13.92, 1}}},
+    {"tlx", 0, 100, 5, HOL__VLO, HOL__VHI, 6,
+     {{"mental", "Mental demand: how mentally demanding was the task?", 0, 0, 1},
+      {"physical", "Physical demand: how physically demanding was the task?", 0, 0, 1},
+      {"temporal", "Temporal demand: how hurried or rushed was the pace of the task?", 0, 0, 1},
+      {"performance", "Performance: how successful were you in doing what you were asked to do?",
+       "Perfect", "Failure", 1},
+      {"effort", "Effort: how hard did you have to work to reach your level of performance?", 0,
+       0, 1},
+      {"frustration", "Frustration: how insecure, discouraged, irritated, stressed and annoyed "
+                      "were you?", 0, 0, 1}},
+     1,
+     {{"raw", 1, 1, 6}}},
+    HOL_ASK_MORE_PRESETS
 };
 
-/* nausea 1, oculomotor 2, disorientation 4 (Kennedy et al. 1993) */
-static const unsigned char hol__ssq_sub[HOL_ASK_SSQ_ITEMS] = {
-    1 | 2, 2, 2, 2, 2 | 4, 1, 1, 1 | 4, 1 | 2, 4, 2 | 4, 4, 4, 4, 1, 1};
+#define HOL__NPRESETS ((int)(sizeof hol__presets / sizeof hol__presets[0]))
+_Static_assert(sizeof hol__presets / sizeof hol__presets[0] <= HOL_ASK_MAX_PRESETS,
+               "more presets than HOL_ASK_MAX_PRESETS");
 
-static const char *const hol__tlx[HOL_ASK_TLX_ITEMS][4] = {
-    {"mental", "Mental demand: how mentally demanding was the task?", "Very low", "Very high"},
-    {"physical", "Physical demand: how physically demanding was the task?", "Very low",
-     "Very high"},
-    {"temporal", "Temporal demand: how hurried or rushed was the pace of the task?", "Very low",
-     "Very high"},
-    {"performance", "Performance: how successful were you in doing what you were asked to do?",
-     "Perfect", "Failure"},
-    {"effort", "Effort: how hard did you have to work to reach your level of performance?",
-     "Very low", "Very high"},
-    {"frustration", "Frustration: how insecure, discouraged, irritated, stressed and annoyed "
-                    "were you?", "Very low", "Very high"},
-};
+int hol_ask_npresets(void)
+{
+    return HOL__NPRESETS;
+}
+
+const hol_ask_preset_def *hol_ask_preset_at(int i)
+{
+    return i >= 0 && i < HOL__NPRESETS ? &hol__presets[i] : NULL;
+}
+
+int hol_ask_preset_index(const char *name, size_t n)
+{
+    for (int i = 0; i < HOL__NPRESETS; i++)
+        if (strlen(hol__presets[i].name) == n && !memcmp(hol__presets[i].name, name, n))
+            return i;
+    return -1;
+}
+
+int hol_ask_preset_item(const hol_ask_preset_def *p, const char *id)
+{
+    for (int k = 0; p && k < p->nitems; k++)
+        if (!strcmp(p->items[k].id, id))
+            return k;
+    return -1;
+}
+
+int hol_ask_preset(const char *name, size_t n, hol_app_question *out, int max)
+{
+    const hol_ask_preset_def *p = hol_ask_preset_at(hol_ask_preset_index(name, n));
+    int count = p ? p->nitems : 0;
+    for (int k = 0; k < count && k < max; k++) {
+        const hol_ask_item_def *it = &p->items[k];
+        hol_app_question *q = &out[k];
+        memset(q, 0, sizeof *q);
+        q->kind = HOL_APP_LIKERT;
+        snprintf(q->id, sizeof q->id, "%s", it->id);
+        snprintf(q->text, sizeof q->text, "%s", it->text);
+        q->lo = p->lo, q->hi = p->hi, q->step = p->step;
+        snprintf(q->low, sizeof q->low, "%s", it->low ? it->low : p->low);
+        snprintf(q->high, sizeof q->high, "%s", it->high ? it->high : p->high);
+    }
+    return count;
+}
+
+void hol_ask_score(const hol_ask_preset_def *p, const double *v, double *out)
+{
+    double raw[HOL_ASK_PRESET_SCALES] = {0};
+    for (int i = 0; i < p->nitems; i++)
+        for (int j = 0; j < HOL_ASK_PRESET_SCALES; j++)
+            raw[j] += (p->items[i].scales >> j & 1u) ? v[i] : 0;
+    for (int k = 0; k < p->nscores; k++) {
+        const hol_ask_score_def *sc = &p->scores[k];
+        double sum = 0;
+        for (int j = 0; j < HOL_ASK_PRESET_SCALES; j++)
+            sum += (sc->scales >> j & 1u) ? raw[j] : 0;
+        out[k] = sum * sc->weight / sc->div;
+    }
+}
+
+void hol_ask_preset_names(const char *conj, char *out, size_t cap)
+{
+    size_t len = 0;
+    out[0] = 0;
+    for (int i = 0; i < HOL__NPRESETS && len < cap; i++) {
+        const char *sep = i == 0 ? "" : i == HOL__NPRESETS - 1 ? " " : ", ";
+        int k = snprintf(out + len, cap - len, "%s%s%s%s", sep,
+                         i && i == HOL__NPRESETS - 1 ? conj : "",
+                         i && i == HOL__NPRESETS - 1 ? " " : "", hol__presets[i].name);
+        len += k > 0 ? (size_t)k : 0;
+    }
+}
 
 unsigned hol_ask_ssq_subscales(int k)
 {
-    return k >= 0 && k < HOL_ASK_SSQ_ITEMS ? hol__ssq_sub[k] : 0;
+    const hol_ask_preset_def *p = hol_ask_preset_at(hol_ask_preset_index("ssq", 3));
+    return p && k >= 0 && k < p->nitems ? p->items[k].scales : 0;
 }
+
+/* ---- IDs and when -------------------------------------------------------------- */
 
 int hol_ask_id_ok(const char *id, size_t n)
 {
@@ -77,135 +177,4 @@ const char *hol_ask_when_name(int when)
 {
     static const char *const names[3] = {"level", "condition", "study"};
     return when >= 0 && when < 3 ? names[when] : "level";
-}
-
-int hol_ask_preset(const char *name, size_t n, hol_app_question *out, int max)
-{
-    int ssq = hol__is(name, n, "ssq"), tlx = hol__is(name, n, "tlx");
-    int count = ssq ? HOL_ASK_SSQ_ITEMS : tlx ? HOL_ASK_TLX_ITEMS : 0;
-    for (int k = 0; k < count && k < max; k++) {
-        hol_app_question *q = &out[k];
-        memset(q, 0, sizeof *q);
-        q->kind = HOL_APP_LIKERT;
-        if (ssq) {
-            snprintf(q->id, sizeof q->id, "%s", hol__ssq[k][0]);
-            snprintf(q->text, sizeof q->text, "%s", hol__ssq[k][1]);
-            q->lo = 0, q->hi = 3, q->step = 1;
-            snprintf(q->low, sizeof q->low, "none");
-            snprintf(q->high, sizeof q->high, "severe");
-        } else {
-            snprintf(q->id, sizeof q->id, "%s", hol__tlx[k][0]);
-            snprintf(q->text, sizeof q->text, "%s", hol__tlx[k][1]);
-            q->lo = 0, q->hi = 100, q->step = 5;
-            snprintf(q->low, sizeof q->low, "%s", hol__tlx[k][2]);
-            snprintf(q->high, sizeof q->high, "%s", hol__tlx[k][3]);
-        }
-    }
-    return count;
-}
-
-/* The next field of [*s, end): a word, or a quoted string (without its
- * quotes); 0 at the end, -1 for an unclosed quote. */
-static int hol__tok(const char **s, const char *end, const char **out, size_t *n)
-{
-    const char *p = *s;
-    while (p < end && (*p == ' ' || *p == '\t'))
-        p++;
-    if (p == end)
-        return 0;
-    if (*p == '"') {
-        const char *q = memchr(p + 1, '"', (size_t)(end - p - 1));
-        if (!q)
-            return -1;
-        *out = p + 1, *n = (size_t)(q - p - 1), *s = q + 1;
-        if (*s < end && **s != ' ' && **s != '\t')
-            return -1;
-        return 2;
-    }
-    *out = p;
-    while (p < end && *p != ' ' && *p != '\t')
-        p++;
-    *n = (size_t)(p - *out), *s = p;
-    return 1;
-}
-
-/* A quoted field into out (cap with the NUL): 0 ok. */
-static int hol__text(int kind, const char *w, size_t n, char *out, size_t cap)
-{
-    if (kind != 2 || n == 0 || n >= cap)
-        return 1;
-    for (size_t i = 0; i < n; i++)
-        if ((unsigned char)w[i] < 0x20 || (unsigned char)w[i] > 0x7e)
-            return 1;
-    memcpy(out, w, n);
-    out[n] = 0;
-    return 0;
-}
-
-static int hol__int(const char *w, size_t n, int *out)
-{
-    if (n == 0 || n > 3)
-        return 1;
-    int v = 0;
-    for (size_t i = 0; i < n; i++) {
-        if (w[i] < '0' || w[i] > '9')
-            return 1;
-        v = v * 10 + (w[i] - '0');
-    }
-    *out = v;
-    return 0;
-}
-
-#define HOL__BAD(code, ...) (snprintf(msg, cap, __VA_ARGS__), (code))
-
-hol_err hol_ask_parse_question(const char *line, size_t len, hol_app_question *q, char *msg,
-                               size_t cap)
-{
-    const char *s = line, *end = line + len, *w[3 + HOL_APP_MAX_CHOICES + 2];
-    size_t n[3 + HOL_APP_MAX_CHOICES + 2];
-    int kind[3 + HOL_APP_MAX_CHOICES + 2], nf = 0, k;
-    while (nf < (int)(sizeof w / sizeof w[0]) && (k = hol__tok(&s, end, &w[nf], &n[nf])) > 0)
-        kind[nf++] = k;
-    if (k < 0)
-        return HOL__BAD(HOL_EPARSE, "question: a quoted field is not closed, or not followed "
-                                    "by a blank");
-    if (nf == (int)(sizeof w / sizeof w[0]) && hol__tok(&s, end, &w[0], &n[0]))
-        return HOL__BAD(HOL_EPARSE, "question: more than %d choices", HOL_APP_MAX_CHOICES);
-    memset(q, 0, sizeof *q);
-    if (nf < 3 || !hol__is(w[0], n[0], "question") || kind[1] != 1)
-        return HOL__BAD(HOL_EPARSE, "question needs ID likert|choice ...");
-    if (!hol_ask_id_ok(w[1], n[1]) || hol_ask_preset(w[1], n[1], NULL, 0))
-        return HOL__BAD(HOL_EPARSE, "question: the ID '%.*s' is not 1..31 letters, digits, "
-                                    "'_', '-', '.' (and not ssq or tlx)",
-                        (int)(n[1] < 40 ? n[1] : 40), w[1]);
-    memcpy(q->id, w[1], n[1]);
-    if (hol__is(w[2], n[2], "likert")) {
-        q->kind = HOL_APP_LIKERT;
-        q->step = 1;
-        if (nf != 8 || kind[3] != 1 || kind[4] != 1 || hol__int(w[3], n[3], &q->lo) ||
-            hol__int(w[4], n[4], &q->hi) || hol__text(kind[5], w[5], n[5], q->text, sizeof q->text) ||
-            hol__text(kind[6], w[6], n[6], q->low, sizeof q->low) ||
-            hol__text(kind[7], w[7], n[7], q->high, sizeof q->high))
-            return HOL__BAD(HOL_EPARSE, "question %s likert needs LO HI \"TEXT\" \"LOW\" "
-                                        "\"HIGH\" (TEXT 1..95 characters, LOW and HIGH 1..23)",
-                            q->id);
-        if (q->lo >= q->hi || q->hi > 100 || q->hi - q->lo + 1 > HOL_APP_MAX_SCALE)
-            return HOL__BAD(HOL_ERANGE, "question %s: LO below HI, both 0..100, at most %d marks",
-                            q->id, HOL_APP_MAX_SCALE);
-        return HOL_OK;
-    }
-    if (!hol__is(w[2], n[2], "choice"))
-        return HOL__BAD(HOL_EPARSE, "question %s: '%.*s' is not likert or choice", q->id,
-                        (int)(n[2] < 20 ? n[2] : 20), w[2]);
-    q->kind = HOL_APP_CHOICE;
-    if (nf < 6 || nf - 4 > HOL_APP_MAX_CHOICES ||
-        hol__text(kind[3], w[3], n[3], q->text, sizeof q->text))
-        return HOL__BAD(HOL_EPARSE, "question %s choice needs \"TEXT\" and 2..%d \"CHOICE\"s "
-                                    "(TEXT 1..95 characters, a choice 1..23)",
-                        q->id, HOL_APP_MAX_CHOICES);
-    for (int i = 4; i < nf; i++)
-        if (hol__text(kind[i], w[i], n[i], q->choices[q->nchoices++], HOL_APP_LABEL_MAX))
-            return HOL__BAD(HOL_EPARSE, "question %s: choice %d is not a quoted 1..23 "
-                                        "characters", q->id, i - 3);
-    return HOL_OK;
 }

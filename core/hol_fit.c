@@ -32,7 +32,7 @@ static int hol__better(int c, int r, int cm, const int best[3])
     return c > best[0];
 }
 
-static void hol__out(const int best[3], int too_small, double w, double d, hol_fit *out)
+static void hol__fit_out(const int best[3], int too_small, double w, double d, hol_fit *out)
 {
     memset(out, 0, sizeof *out);
     out->cols = best[0];
@@ -58,12 +58,12 @@ static void hol__choose(hol__cm_fn cm_of, const void *ctx, double w, double d, h
                 best[0] = c, best[1] = r, best[2] = cm;
         }
     if (best[0]) {
-        hol__out(best, 0, w, d, out);
+        hol__fit_out(best, 0, w, d, out);
         return;
     }
     int cm = cm_of(ctx, 3, 3);
     int small[3] = {3, 3, cm ? cm : HOL_FIT_MIN_CM};
-    hol__out(small, cm == 0, w, d, out);
+    hol__fit_out(small, cm == 0, w, d, out);
 }
 
 typedef struct hol__rect {

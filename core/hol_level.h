@@ -34,6 +34,7 @@
 #ifndef HOL_LEVEL_H
 #define HOL_LEVEL_H
 
+#include <stdarg.h>
 #include <stddef.h>
 #include <stdint.h>
 
@@ -88,6 +89,11 @@ long hol_level_objective_line(const hol_level *lv);
 /* Writes "line N: MESSAGE..." (N counted from first for line 1; just the
  * message when err->line is 0) into out; returns out. */
 char *hol_level_err_format(const hol_level_err *err, long first, char *out, size_t cap);
+/* *e (when e is not NULL) cleared and set: code, line, other, the message
+ * fmt with ap; returns code (the level's and the study's parsers fail
+ * through it). */
+hol_err hol_level_err_vset(hol_level_err *e, hol_err code, long line, long other,
+                           const char *fmt, va_list ap);
 
 /* 1 when name (len bytes) can be a level's name: see the contract. */
 int hol_level_name_ok(const char *name, size_t len);

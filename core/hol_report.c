@@ -277,53 +277,67 @@ static hol_err split_row(const hol_report_header *h, const char *s, size_t len, 
     return HOL_OK;
 }
 
-hol_err hol_report_summary_row(const hol_report_header *h, const char *s, size_t len,
-                               hol_report_attempt *out, char *err)
+/* A summary row's fields into *out (void: read_row's fill), whole or not
+ * at all: 1 ok. */
+static int fill_summary(const row_ctx *r, void *out)
+{
+    hol_report_attempt tmp;
+    memset(&tmp, 0, sizeof tmp);
+    if (!fill_attempt(r, &tmp))
+        return 0;
+    *(hol_report_attempt *)out = tmp;
+    return 1;
+}
+
+/* A steps row's fields into *out, likewise. */
+static int fill_step(const row_ctx *r, void *out)
+{
+    hol_report_step st;
+    long col, row, orient;
+    memset(&st, 0, sizeof st);
+    if (!copy_text(r, C_SESSION, st.session) || !copy_text(r, S_TILE, st.tile) ||
+        !get_long(r, C_ATTEMPT, 1, 999999999, &st.attempt) ||
+        !get_long(r, S_STEP, 1, 999999999, &st.step) ||
+        !get_long(r, S_COL, 0, HOL_ROOM_MAX_SIDE - 1, &col) ||
+        !get_long(r, S_ROW, 0, HOL_ROOM_MAX_SIDE - 1, &row) ||
+        !get_long(r, S_ORIENT, 0, 3, &orient))
+        return 0;
+    const char *d = field(r, S_DIR);
+    st.dir = d[0] && !d[1] ? hol_dir_from_char(d[0]) : -1;
+    if (st.dir < 0) {
+        set_err(r->err, "not a direction N, E, S or W", "dir");
+        return 0;
+    }
+    st.col = (int)col;
+    st.row = (int)row;
+    st.orient = (int)orient;
+    *(hol_report_step *)out = st;
+    return 1;
+}
+
+/* A row split against the header, then its fields filled into *out. */
+static hol_err read_row(const hol_report_header *h, const char *s, size_t len, char *err,
+                        int (*fill)(const row_ctx *r, void *out), void *out)
 {
     char buf[HOL_REPORT_LINE_MAX + 1]; /* the fields fit: at most len + 1 bytes */
     const char *f[HOL_REPORT_MAX_COLS];
     hol_err e = split_row(h, s, len, buf, sizeof buf, f, err);
     if (e)
         return e;
-    hol_report_attempt tmp;
     row_ctx r = {h, f, err};
-    memset(&tmp, 0, sizeof tmp);
-    if (!fill_attempt(&r, &tmp))
-        return HOL_EPARSE;
-    *out = tmp;
-    return HOL_OK;
+    return fill(&r, out) ? HOL_OK : HOL_EPARSE;
+}
+
+hol_err hol_report_summary_row(const hol_report_header *h, const char *s, size_t len,
+                               hol_report_attempt *out, char *err)
+{
+    return read_row(h, s, len, err, fill_summary, out);
 }
 
 hol_err hol_report_step_row(const hol_report_header *h, const char *s, size_t len,
                             hol_report_step *out, char *err)
 {
-    char buf[HOL_REPORT_LINE_MAX + 1]; /* the fields fit: at most len + 1 bytes */
-    const char *f[HOL_REPORT_MAX_COLS];
-    hol_err e = split_row(h, s, len, buf, sizeof buf, f, err);
-    if (e)
-        return e;
-    row_ctx r = {h, f, err};
-    hol_report_step st;
-    long col, row, orient;
-    memset(&st, 0, sizeof st);
-    if (!copy_text(&r, C_SESSION, st.session) || !copy_text(&r, S_TILE, st.tile) ||
-        !get_long(&r, C_ATTEMPT, 1, 999999999, &st.attempt) ||
-        !get_long(&r, S_STEP, 1, 999999999, &st.step) ||
-        !get_long(&r, S_COL, 0, HOL_ROOM_MAX_SIDE - 1, &col) ||
-        !get_long(&r, S_ROW, 0, HOL_ROOM_MAX_SIDE - 1, &row) ||
-        !get_long(&r, S_ORIENT, 0, 3, &orient))
-        return HOL_EPARSE;
-    const char *d = field(&r, S_DIR);
-    st.dir = d[0] && !d[1] ? hol_dir_from_char(d[0]) : -1;
-    if (st.dir < 0) {
-        set_err(err, "not a direction N, E, S or W", "dir");
-        return HOL_EPARSE;
-    }
-    st.col = (int)col;
-    st.row = (int)row;
-    st.orient = (int)orient;
-    *out = st;
-    return HOL_OK;
+    return read_row(h, s, len, err, fill_step, out);
 }
 
 double hol_report_efficiency(const hol_report_attempt *a)

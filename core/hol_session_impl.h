@@ -1,10 +1,13 @@
-/* hol_session_impl.h - the session's insides, shared by its three files:
- * hol_session.c (create, the frame, the level sequence, the end),
- * hol_session_log.c (buffered outputs, rows, attempts begun and ended) and
- * hol_session_recover.c (a log folder's earlier files: refusal, recovery).
- * Calls go one way: hol_session.c -> hol_session_recover.c ->
- * hol_session_log.c, and hol_session.c -> hol_session_log.c (which also
- * holds hol_session_cues_visible). */
+/* hol_session_impl.h - the session's insides, shared by its files:
+ * hol_session_run.c (create, the frame, the level sequence, the end),
+ * hol_session_recover.c (a log folder's earlier files: refusal, recovery),
+ * hol_session_log.c (rows, attempts begun and ended; it also holds
+ * hol_session_cues_visible), hol_session_track.c (the track rows) and
+ * hol_session_out.c (the buffered outputs, the end names, the first sink
+ * failure, the attempt's file names). Calls go one way, down:
+ * hol_session_run.c -> hol_session_recover.c -> hol_session_log.c ->
+ * hol_session_track.c -> hol_session_out.c, each file calling only files
+ * after it in this list. */
 #ifndef HOL_SESSION_IMPL_H
 #define HOL_SESSION_IMPL_H
 
@@ -78,7 +81,7 @@ struct hol_session {
     char msg[256];
 };
 
-/* hol_session_log.c */
+/* hol_session_out.c */
 extern const char *const hol__end_names[7];
 void hol__out_init(hol__out *o, const hol_sink *sink, char *buf, size_t cap);
 hol_err hol__out_open(hol_session *s, hol__out *o, const char *name, int append);
@@ -90,6 +93,8 @@ void hol__out_close(hol_session *s, hol__out *o);
 hol_err hol__fail_sink(hol_session *s, const hol_sink *k, hol_err e, const char *what,
                        const char *name);
 void hol__attempt_name(char *out, size_t cap, const char *what, int attempt);
+
+/* hol_session_log.c */
 size_t hol__summary_row(const hol_session *s, const hol_app_summary *sum, int end, char *out,
                         size_t cap);
 /* The summary rows' tail from m: ",session_no,study_sha256,meta". */

@@ -1,6 +1,8 @@
 /* hol_stats.c - see hol_stats.h. */
 #include "hol_stats.h"
 
+#include "hol_ask.h"
+
 #include <math.h>
 #include <string.h>
 
@@ -61,38 +63,24 @@ void hol_stats_summarize(const hol_stats *s, hol_stats_summary *out)
     out->hi = s->mean + h;
 }
 
-const char *const HOL_STATS_SSQ_ITEMS[HOL_STATS_SSQ_NITEMS] = {
-    "general_discomfort", "fatigue", "headache", "eye_strain", "difficulty_focusing",
-    "salivation_increasing", "sweating", "nausea", "difficulty_concentrating",
-    "fullness_of_head", "blurred_vision", "dizziness_eyes_open", "dizziness_eyes_closed",
-    "vertigo", "stomach_awareness", "burping"};
-
-/* Kennedy et al. 1993, table: which subscales each item weighs in. */
-static const unsigned char ssq_n[HOL_STATS_SSQ_NITEMS] = {1, 0, 0, 0, 0, 1, 1, 1,
-                                                          1, 0, 0, 0, 0, 0, 1, 1};
-static const unsigned char ssq_o[HOL_STATS_SSQ_NITEMS] = {1, 1, 1, 1, 1, 0, 0, 0,
-                                                          1, 0, 1, 0, 0, 0, 0, 0};
-static const unsigned char ssq_d[HOL_STATS_SSQ_NITEMS] = {0, 0, 0, 0, 1, 0, 0, 1,
-                                                          0, 1, 1, 1, 1, 1, 0, 0};
+/* The SSQ's items and scores are the questionnaire presets' table's row
+ * "ssq" (hol_ask.h): its scores total, nausea, oculomotor, disorientation. */
+static const hol_ask_preset_def *hol__ssq(void)
+{
+    return hol_ask_preset_at(hol_ask_preset_index("ssq", 3));
+}
 
 int hol_stats_ssq_index(const char *id)
 {
-    for (int i = 0; i < HOL_STATS_SSQ_NITEMS; i++)
-        if (!strcmp(id, HOL_STATS_SSQ_ITEMS[i]))
-            return i;
-    return -1;
+    return hol_ask_preset_item(hol__ssq(), id);
 }
 
 void hol_stats_ssq(const double v[HOL_STATS_SSQ_NITEMS], hol_stats_ssq_score *out)
 {
-    double n = 0, o = 0, d = 0;
-    for (int i = 0; i < HOL_STATS_SSQ_NITEMS; i++) {
-        n += ssq_n[i] ? v[i] : 0;
-        o += ssq_o[i] ? v[i] : 0;
-        d += ssq_d[i] ? v[i] : 0;
-    }
-    out->nausea = n * 9.54;
-    out->oculomotor = o * 7.58;
-    out->disorientation = d * 13.92;
-    out->total = (n + o + d) * 3.74;
+    double sc[HOL_ASK_PRESET_SCORES];
+    hol_ask_score(hol__ssq(), v, sc);
+    out->total = sc[0];
+    out->nausea = sc[1];
+    out->oculomotor = sc[2];
+    out->disorientation = sc[3];
 }

@@ -13,7 +13,7 @@
  *   Cornish-Fisher expansion in 1/df to the fourth order (error below
  *   1e-6 for df > 30); only + - * / (core purity: no libm transcendental).
  * - hol_stats_ssq: the 16 items of the Simulator Sickness Questionnaire
- *   (0..3 each, in HOL_STATS_SSQ_ITEMS order) into the raw subscale sums and
+ *   (0..3 each, in the order of hol_ask.h's preset ssq) into the raw subscale sums and
  *   the weighted scores: nausea x 9.54, oculomotor x 7.58, disorientation x
  *   13.92, total = (N + O + D raw sums) x 3.74.
  * - Pure: no I/O, no allocation, no globals written.
@@ -37,9 +37,9 @@ void hol_stats_add(hol_stats *s, double x);
 void hol_stats_summarize(const hol_stats *s, hol_stats_summary *out);
 double hol_stats_t975(long df);
 
+/* The items (answers.csv `item`) are hol_ask.h's preset ssq's, in
+ * Kennedy et al.'s order. */
 #define HOL_STATS_SSQ_NITEMS 16
-/* The item IDs (answers.csv `item`), in Kennedy et al.'s order. */
-extern const char *const HOL_STATS_SSQ_ITEMS[HOL_STATS_SSQ_NITEMS];
 
 typedef struct hol_stats_ssq_score {
     double nausea, oculomotor, disorientation, total;

@@ -16,16 +16,10 @@ static hol_err hol__fail(hol_level_err *e, hol_err code, long line, long other,
 static hol_err hol__fail(hol_level_err *e, hol_err code, long line, long other,
                          const char *fmt, ...)
 {
-    if (e) {
-        memset(e, 0, sizeof *e);
-        e->code = code;
-        e->line = line;
-        e->other = other;
-        va_list ap;
-        va_start(ap, fmt);
-        vsnprintf(e->msg, sizeof e->msg, fmt, ap);
-        va_end(ap);
-    }
+    va_list ap;
+    va_start(ap, fmt);
+    hol_level_err_vset(e, code, line, other, fmt, ap);
+    va_end(ap);
     return code;
 }
 
@@ -397,10 +391,12 @@ static hol_err hol__finish(hol__sp *p)
         int known = hol_ask_preset(nm, strlen(nm), NULL, 0) > 0;
         for (int i = 0; i < s->nquestionnaires && !known; i++)
             known = !strcmp(s->questionnaires[i].name, nm);
+        char presets[HOL_ASK_NAMES_MAX];
+        hol_ask_preset_names("or", presets, sizeof presets);
         if (!known)
             return hol__fail(p->err, HOL_EARG, s->asks[k].line, 0,
                              "questionnaire %s is neither given (questionnaire %s ITEM...) nor "
-                             "ssq or tlx", nm, nm);
+                             "%s", nm, nm, presets);
     }
     /* a condition without a level file plays one level of its set lines:
      * the levels in all, counted in file order, must fit */

@@ -61,6 +61,15 @@ typedef struct hol__layout {
 
 static size_t hol__align(size_t n) { return (n + 15) & ~(size_t)15; }
 
+/* The next part of the block: its offset, *off moved past its bytes
+ * (aligned to 16). */
+static size_t hol__take(size_t *off, size_t bytes)
+{
+    size_t at = *off;
+    *off += hol__align(bytes);
+    return at;
+}
+
 static int hol__plan(const hol_world_desc *desc, hol__layout *l)
 {
     int radius = desc->radius ? desc->radius : HOL_WORLD_DEFAULT_RADIUS;
@@ -87,24 +96,15 @@ static int hol__plan(const hol_world_desc *desc, hol__layout *l)
     l->max_trail = 32 * l->max_slots + 64;
     l->max_reserve = hol__ball_size(q, radius);
     size_t off = hol__align(sizeof(hol_world));
-    l->off_entries = off;
-    off += hol__align((size_t)l->cap * sizeof(hol__entry));
-    l->off_slots = off;
-    off += hol__align((size_t)l->max_slots * sizeof(hol__slot));
-    l->off_map_key = off;
-    off += hol__align((size_t)l->map_size * sizeof(uint32_t));
-    l->off_map_val = off;
-    off += hol__align((size_t)l->map_size * sizeof(uint32_t));
-    l->off_trail = off;
-    off += hol__align((size_t)l->max_trail * sizeof(hol__trail));
-    l->off_dec = off;
-    off += hol__align((size_t)(l->max_slots + 1) * sizeof(hol__decision));
-    l->off_queue = off;
-    off += hol__align((size_t)l->max_trail * sizeof(uint32_t));
-    l->off_open = off;
-    off += hol__align((size_t)l->max_slots * sizeof(uint32_t));
-    l->off_reserve = off;
-    off += hol__align((size_t)l->max_reserve * sizeof(hol_tile));
+    l->off_entries = hol__take(&off, (size_t)l->cap * sizeof(hol__entry));
+    l->off_slots = hol__take(&off, (size_t)l->max_slots * sizeof(hol__slot));
+    l->off_map_key = hol__take(&off, (size_t)l->map_size * sizeof(uint32_t));
+    l->off_map_val = hol__take(&off, (size_t)l->map_size * sizeof(uint32_t));
+    l->off_trail = hol__take(&off, (size_t)l->max_trail * sizeof(hol__trail));
+    l->off_dec = hol__take(&off, (size_t)(l->max_slots + 1) * sizeof(hol__decision));
+    l->off_queue = hol__take(&off, (size_t)l->max_trail * sizeof(uint32_t));
+    l->off_open = hol__take(&off, (size_t)l->max_slots * sizeof(uint32_t));
+    l->off_reserve = hol__take(&off, (size_t)l->max_reserve * sizeof(hol_tile));
     /* the memory of seen tiles: a table at most 3/4 full */
     uint64_t keep = desc->keep_capacity ? desc->keep_capacity : l->cap;
     if (keep > (UINT64_C(1) << 30))
@@ -114,8 +114,7 @@ static int hol__plan(const hol_world_desc *desc, hol__layout *l)
         ks <<= 1;
     l->kept_size = (uint32_t)ks;
     l->kept_max = (uint32_t)keep;
-    l->off_kept = off;
-    off += hol__align((size_t)ks * sizeof(hol__kept));
+    l->off_kept = hol__take(&off, (size_t)ks * sizeof(hol__kept));
     l->total = off;
     return 1;
 }

@@ -277,16 +277,24 @@ static int hol__image_lookup(const void *ctx, hol_tile t, hol__rec *out)
     return 1;
 }
 
+/* An image's reading begun: msg cleared, HOL_EARG without an output
+ * (have 0), else its header parsed into *im. */
+static hol_err hol__image_begin(const void *buf, size_t len, int have, hol__image *im,
+                                char *msg, size_t msg_cap)
+{
+    if (msg && msg_cap)
+        msg[0] = 0;
+    if (!have)
+        return HOL_EARG;
+    return hol__parse_header(buf, len, im, 1, msg, msg_cap);
+}
+
 hol_err hol_world_image_desc(const void *buf, size_t len,
                              hol_world_desc *out_desc, char *msg,
                              size_t msg_cap)
 {
     hol__image im;
-    if (msg && msg_cap)
-        msg[0] = 0;
-    if (!out_desc)
-        return HOL_EARG;
-    hol_err err = hol__parse_header(buf, len, &im, 1, msg, msg_cap);
+    hol_err err = hol__image_begin(buf, len, out_desc != NULL, &im, msg, msg_cap);
     if (err)
         return err;
     memset(out_desc, 0, sizeof *out_desc);
@@ -304,11 +312,7 @@ hol_err hol_world_load(hol_world *w, const void *buf, size_t len, char *msg,
                        size_t msg_cap)
 {
     hol__image im;
-    if (msg && msg_cap)
-        msg[0] = 0;
-    if (!w)
-        return HOL_EARG;
-    hol_err err = hol__parse_header(buf, len, &im, 1, msg, msg_cap);
+    hol_err err = hol__image_begin(buf, len, w != NULL, &im, msg, msg_cap);
     if (err)
         return err;
     if ((int)im.radius != w->radius)

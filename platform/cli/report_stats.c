@@ -9,6 +9,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#include "../../core/hol_ask.h"
 #include "../../core/hol_study.h"
 #include "../../core/hol_text.h"
 #include "../file/hol_file.h"
@@ -182,34 +183,29 @@ static int read_points(report_run *r, int d, rs_csv *c)
 /* ---- answers.csv: questionnaires grouped, scored, likert means ---- */
 
 enum { A_SESSION, A_PART, A_ATTEMPT, A_Q, A_WHEN, A_ITEM, A_KIND, A_VALUE };
-static const char *const tlx_items[6] = {"mental", "physical", "temporal",
-                                          "performance", "effort", "frustration"};
 
 typedef struct rs_group {
     char key[4 * HOL_REPORT_TEXT];
-    int cond, nssq, ntlx;
-    double ssq[HOL_STATS_SSQ_NITEMS], tlx[6];
-    unsigned have_ssq, have_tlx;
+    int cond;
+    double v[HOL_ASK_MAX_PRESETS][HOL_ASK_PRESET_ITEMS]; /* by the presets' table */
+    unsigned have[HOL_ASK_MAX_PRESETS];
 } rs_group;
 
+/* Each preset answered in full: its scores into the measures from RS_SSQ_T
+ * on, in the table's order (ssq's four, tlx's raw). */
 static void flush_group(report_stats *s, rs_group *g)
 {
     hol_stats *f = &s->fix[g->cond * RS_NFIX];
-    if (g->have_ssq == (1u << HOL_STATS_SSQ_NITEMS) - 1) {
-        hol_stats_ssq_score sc;
-        hol_stats_ssq(g->ssq, &sc);
-        hol_stats_add(&f[RS_SSQ_T], sc.total);
-        hol_stats_add(&f[RS_SSQ_N], sc.nausea);
-        hol_stats_add(&f[RS_SSQ_O], sc.oculomotor);
-        hol_stats_add(&f[RS_SSQ_D], sc.disorientation);
+    for (int i = 0, col = RS_SSQ_T; i < hol_ask_npresets(); i++) {
+        const hol_ask_preset_def *p = hol_ask_preset_at(i);
+        double sc[HOL_ASK_PRESET_SCORES];
+        if (g->have[i] == (1u << p->nitems) - 1)
+            hol_ask_score(p, g->v[i], sc);
+        for (int k = 0; k < p->nscores; k++, col++)
+            if (g->have[i] == (1u << p->nitems) - 1 && col < RS_NFIX)
+                hol_stats_add(&f[col], sc[k]);
+        g->have[i] = 0;
     }
-    if (g->have_tlx == 63) {
-        double t = 0;
-        for (int i = 0; i < 6; i++)
-            t += g->tlx[i];
-        hol_stats_add(&f[RS_TLX], t / 6);
-    }
-    g->have_ssq = g->have_tlx = 0;
 }
 
 /* The Likert items by (condition, questionnaire, item): an open-addressed
@@ -264,16 +260,12 @@ static void answer_row(report_run *r, rs_csv *c, rs_group *g, double att, double
         g->cond = find_cond(r, c->dir, field(c, A_SESSION), (long)att);
     }
     add_likert(s, g->cond, q, item, v);
-    int k = hol_stats_ssq_index(item);
-    if (!strcmp(q, "ssq") && k >= 0) {
-        g->ssq[k] = v;
-        g->have_ssq |= 1u << k;
+    int p = hol_ask_preset_index(q, strlen(q));
+    int k = hol_ask_preset_item(hol_ask_preset_at(p), item);
+    if (k >= 0) {
+        g->v[p][k] = v;
+        g->have[p] |= 1u << k;
     }
-    for (k = 0; !strcmp(q, "tlx") && k < 6; k++)
-        if (!strcmp(item, tlx_items[k])) {
-            g->tlx[k] = v;
-            g->have_tlx |= 1u << k;
-        }
 }
 
 static int read_answers(report_run *r, int d, rs_csv *c)

@@ -1,4 +1,5 @@
-/* hol_app.c - the app step (see hol_app.h). */
+/* hol_app_step.c - the app: create, levels, the step, motion, planning
+ * (see hol_app.h; the app's files: hol_app_impl.h). */
 #include "hol_app.h"
 
 #include <math.h>

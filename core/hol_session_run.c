@@ -1,5 +1,5 @@
-/* hol_session.c - the session: create, a frame, the level sequence, the
- * end (see hol_session.h). */
+/* hol_session_run.c - the session: create, a frame, the level sequence,
+ * the end (see hol_session.h; its files: hol_session_impl.h). */
 #include "hol_session_impl.h"
 
 #include <stdio.h>
