@@ -198,6 +198,11 @@ $(BUILD)/tests/test_report_draw: tests/test_report_draw.c $(REPORT_DRAW_SRC) pla
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) -o $@ $< $(REPORT_DRAW_SRC) $(CORE_LIB) $(LDFLAGS) -lcmocka -lz $(LDLIBS)
 
+# The report's CSV field and HTML text (platform/cli/report_escape.c).
+$(BUILD)/tests/test_report_escape: tests/test_report_escape.c platform/cli/report_escape.c platform/cli/report_escape.h $(CORE_LIB)
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) -o $@ $< platform/cli/report_escape.c $(CORE_LIB) $(LDFLAGS) -lcmocka $(LDLIBS)
+
 $(BUILD)/tests/%: tests/%.c $(wildcard tests/*.h) $(CORE_LIB)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) -o $@ $< $(CORE_LIB) $(LDFLAGS) -lcmocka $(LDLIBS)

@@ -8,17 +8,8 @@
 #include "../file/hol_file.h"
 #include "cli.h"
 #include "cmd_report.h"
+#include "report_escape.h"
 #include "report_stats.h"
-
-/* A text from the logs, cleaned (hol_report_clean), as a CSV field. */
-static void csv(FILE *f, const char *s, int last)
-{
-    char clean[4 * HOL_REPORT_TEXT + 8], buf[8 * HOL_REPORT_TEXT + 16];
-    hol_report_clean(s, clean, sizeof clean);
-    hol_text_csv(clean, strlen(clean), buf, sizeof buf);
-    fputs(buf, f);
-    fputc(last ? '\n' : ',', f);
-}
 
 /* A path from the command line as it may stand in a CSV or on a page. */
 static const char *safe_path(const char *p, char *buf, size_t cap)
@@ -74,7 +65,7 @@ static void factor_columns(FILE *f, const report_run *r, int i, const char *rel)
     if (t->a.cues >= 0)
         fprintf(f, "%ld", t->a.cues);
     fprintf(f, ",%s,", t->minimap >= 0 && t->minimap <= 2 ? place[t->minimap] : "");
-    csv(f, rel, 0);
+    report_csv(f, rel, 0);
     if (t->a.session_no > 0) /* the summary's session_no (empty: none) */
         fprintf(f, "%ld", t->a.session_no);
     fputc('\n', f);
@@ -106,20 +97,20 @@ int report_write_csv(const report_run *r)
         num_or_empty(pos, sizeof pos, (double)t->position, "%.0f");
         num_or_empty(eff, sizeof eff, hol_report_efficiency(t), "%.4f");
         geometry_text(t, tiling, room, cell);
-        csv(a.f, t->participant, 0);
-        csv(a.f, t->session, 0);
+        report_csv(a.f, t->participant, 0);
+        report_csv(a.f, t->session, 0);
         fprintf(a.f, "%ld,", t->attempt);
-        csv(a.f, t->study, 0);
-        csv(a.f, t->condition, 0);
+        report_csv(a.f, t->study, 0);
+        report_csv(a.f, t->condition, 0);
         fprintf(a.f, "%s,", pos);
-        csv(a.f, t->level, 0);
-        csv(a.f, t->mode, 0);
+        report_csv(a.f, t->level, 0);
+        report_csv(a.f, t->mode, 0);
         fprintf(a.f, "%ld,%ld,%s,%.4f,", t->steps, t->optimum, eff, t->time_s);
-        csv(a.f, t->end, 0);
-        csv(a.f, tiling, 0);
+        report_csv(a.f, t->end, 0);
+        report_csv(a.f, tiling, 0);
         fprintf(a.f, "%s,%s,", room, cell);
-        csv(a.f, safe_path(r->dirs[r->att[i].dir], dir, sizeof dir), 0);
-        csv(a.f, r->att[i].png, 0);
+        report_csv(a.f, safe_path(r->dirs[r->att[i].dir], dir, sizeof dir), 0);
+        report_csv(a.f, r->att[i].png, 0);
         factor_columns(a.f, r, i, rels[r->att[i].dir]);
     }
     if (rels != rel)
@@ -139,35 +130,18 @@ int report_write_conditions(const report_run *r, const hol_report_agg *g)
         const hol_report_cond *c = &g->c[i];
         char eff[24];
         num_or_empty(eff, sizeof eff, c->neff ? c->eff / (double)c->neff : -1, "%.4f");
-        csv(a.f, c->study, 0);
-        csv(a.f, c->condition, 0);
+        report_csv(a.f, c->study, 0);
+        report_csv(a.f, c->condition, 0);
         fprintf(a.f, "%ld,%ld,%.2f,%s,%.4f\n", c->n, c->done, c->steps / (double)c->n, eff,
                 c->time_s / (double)c->n);
     }
     return commit(r, &a, path);
 }
 
-/* Text for HTML: cleaned (hol_report_clean: no control byte, valid
- * UTF-8), then & < > " ' as entities (the names come from outside). */
-static void html(FILE *f, const char *text)
-{
-    char clean[4 * 1024 + 8];
-    hol_report_clean(text, clean, sizeof clean);
-    for (const char *s = clean; *s; s++)
-        switch (*s) {
-        case '&': fputs("&amp;", f); break;
-        case '<': fputs("&lt;", f); break;
-        case '>': fputs("&gt;", f); break;
-        case '"': fputs("&quot;", f); break;
-        case '\'': fputs("&#39;", f); break;
-        default: fputc(*s, f);
-        }
-}
-
 static void html_cell(FILE *f, const char *s)
 {
     fputs("<td>", f);
-    html(f, s);
+    report_html(f, s);
     fputs("</td>", f);
 }
 
@@ -185,7 +159,7 @@ static void html_head(FILE *f, const report_run *r, const hol_report_agg *g)
     for (int d = 0; d < r->ndirs; d++) {
         char dir[1024];
         fputs(d ? ", <code>" : " <code>", f);
-        html(f, safe_path(r->dirs[d], dir, sizeof dir));
+        report_html(f, safe_path(r->dirs[d], dir, sizeof dir));
         fputs("</code>", f);
     }
     fputs(". Data: <a href=\"attempts.csv\">attempts.csv</a> (one row per attempt), "
@@ -226,7 +200,7 @@ static void html_row(FILE *f, const report_run *r, int i)
     num_or_empty(eff, sizeof eff, hol_report_efficiency(a), "%.4f");
     geometry_text(a, tiling, room, cell);
     fputs("<tr class=\"", f);
-    html(f, a->end);
+    report_html(f, a->end);
     fprintf(f, "\"><td class=\"n\">%d</td>", i + 1);
     if (t->png[0]) /* the picture first: the table may be wider than the window */
         fprintf(f, "<td><a href=\"%s\"><img src=\"%s\" width=\"240\" height=\"240\" "

@@ -14,6 +14,7 @@
 #include "../file/hol_file.h"
 #include "../file/hol_lines.h"
 #include "cli.h"
+#include "report_escape.h"
 #include "report_stats_impl.h"
 
 const char *const rs_measure[RS_NFIX] = {
@@ -673,15 +674,6 @@ void report_stats_free(report_run *r)
 
 /* ---- the CSV files ---- */
 
-static void csv(FILE *f, const char *s, int last)
-{
-    char clean[4 * HOL_REPORT_TEXT + 8], buf[8 * HOL_REPORT_TEXT + 16];
-    hol_report_clean(s, clean, sizeof clean);
-    hol_text_csv(clean, strlen(clean), buf, sizeof buf);
-    fputs(buf, f);
-    fputc(last ? '\n' : ',', f);
-}
-
 /* n,mean,sd,ci_low,ci_high (empty where not defined) */
 static void summary(FILE *f, const hol_stats *st)
 {
@@ -731,8 +723,8 @@ static int write_stats(const report_run *r, rs_out *o)
         for (int m = 0; m < RS_NFIX; m++) {
             if (!s->fix[c * RS_NFIX + m].n)
                 continue;
-            csv(o->a.f, s->cond[c].study, 0);
-            csv(o->a.f, s->cond[c].condition, 0);
+            report_csv(o->a.f, s->cond[c].study, 0);
+            report_csv(o->a.f, s->cond[c].condition, 0);
             fprintf(o->a.f, "%s,,", rs_measure[m]);
             summary(o->a.f, &s->fix[c * RS_NFIX + m]);
         }
@@ -741,10 +733,10 @@ static int write_stats(const report_run *r, rs_out *o)
             if (s->lik[i].cond != c)
                 continue;
             snprintf(item, sizeof item, "%s/%s", s->lik[i].q, s->lik[i].item);
-            csv(o->a.f, s->cond[c].study, 0);
-            csv(o->a.f, s->cond[c].condition, 0);
+            report_csv(o->a.f, s->cond[c].study, 0);
+            report_csv(o->a.f, s->cond[c].condition, 0);
             fputs("likert,", o->a.f);
-            csv(o->a.f, item, 0);
+            report_csv(o->a.f, item, 0);
             summary(o->a.f, &s->lik[i].s);
         }
     }
@@ -760,8 +752,8 @@ static int write_learning(const report_run *r, rs_out *o)
     fputs("study,condition,position,n,mean_efficiency,sd,ci_low,ci_high\n", o->a.f);
     for (int i = 0; i < s->nlearn; i++) {
         const rs_learn *l = &s->learn[i];
-        csv(o->a.f, s->cond[l->cond].study, 0);
-        csv(o->a.f, s->cond[l->cond].condition, 0);
+        report_csv(o->a.f, s->cond[l->cond].study, 0);
+        report_csv(o->a.f, s->cond[l->cond].condition, 0);
         fprintf(o->a.f, "%ld,%ld,%.4f,", l->pos, l->m.n, l->m.mean);
         if (l->m.has_sd)
             fprintf(o->a.f, "%.4f,%.4f,%.4f\n", l->m.sd, l->m.lo, l->m.hi);
@@ -788,9 +780,9 @@ static int write_participants(const report_run *r, rs_out *o)
           o->a.f);
     for (int i = 0; i < s->nprow; i++) {
         const rs_prow *p = &s->prow[i];
-        csv(o->a.f, r->att[p->att].a.participant, 0);
-        csv(o->a.f, s->cond[p->cond].study, 0);
-        csv(o->a.f, s->cond[p->cond].condition, 0);
+        report_csv(o->a.f, r->att[p->att].a.participant, 0);
+        report_csv(o->a.f, s->cond[p->cond].study, 0);
+        report_csv(o->a.f, s->cond[p->cond].condition, 0);
         fprintf(o->a.f, "%ld,%ld,", p->n, p->done);
         mean_or_empty(o->a.f, &p->steps, 0);
         mean_or_empty(o->a.f, &p->eff, 0);

@@ -5,33 +5,19 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "report_escape.h"
 #include "report_stats_impl.h"
 
 static const char *const palette[8] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd",
                                        "#ff7f0e", "#8c564b", "#e377c2", "#17becf"};
 
-static void html(FILE *f, const char *text)
-{
-    char clean[4 * HOL_REPORT_TEXT + 8];
-    hol_report_clean(text, clean, sizeof clean);
-    for (const char *s = clean; *s; s++)
-        switch (*s) {
-        case '&': fputs("&amp;", f); break;
-        case '<': fputs("&lt;", f); break;
-        case '>': fputs("&gt;", f); break;
-        case '"': fputs("&quot;", f); break;
-        case '\'': fputs("&#39;", f); break;
-        default: fputc(*s, f);
-        }
-}
-
 static void cond_name(FILE *f, const rs_cond *c)
 {
     if (c->study[0]) {
-        html(f, c->study);
+        report_html(f, c->study);
         fputs(" / ", f);
     }
-    html(f, c->condition);
+    report_html(f, c->condition);
 }
 
 static void stat_cells(FILE *f, const hol_stats *st)
@@ -75,9 +61,9 @@ static void means_table(FILE *f, const report_run *r)
             fputs("<tr><td>", f);
             cond_name(f, &s->cond[c]);
             fputs("</td><td>likert ", f);
-            html(f, s->lik[i].q);
+            report_html(f, s->lik[i].q);
             fputc('/', f);
-            html(f, s->lik[i].item);
+            report_html(f, s->lik[i].item);
             fputs("</td>", f);
             stat_cells(f, &s->lik[i].s);
         }
@@ -368,7 +354,7 @@ static void participants_table(FILE *f, const report_run *r)
         const rs_prow *p = &s->prow[i];
         const hol_stats *m[3] = {&p->steps, &p->eff, &p->time};
         fputs("<tr><td>", f);
-        html(f, r->att[p->att].a.participant);
+        report_html(f, r->att[p->att].a.participant);
         fputs("</td><td>", f);
         cond_name(f, &s->cond[p->cond]);
         fprintf(f, "</td><td class=\"n\">%ld</td><td class=\"n\">%ld</td>", p->n, p->done);
