@@ -40,17 +40,34 @@ static int cond_of(report_stats *s, const hol_report_attempt *a)
     return s->ncond++;
 }
 
-static const report_run *sort_run; /* qsort has no context argument */
-
+/* Attempts (pointers into r->att) by (dir, session, attempt), then where
+ * they stand: a total order that needs no context. */
 static int by_key(const void *pa, const void *pb)
 {
-    const report_att *a = &sort_run->att[*(const int *)pa], *b = &sort_run->att[*(const int *)pb];
+    const report_att *a = *(const report_att *const *)pa, *b = *(const report_att *const *)pb;
     if (a->dir != b->dir)
         return a->dir < b->dir ? -1 : 1;
     int c = strcmp(a->a.session, b->a.session);
     if (c)
         return c;
-    return a->a.attempt < b->a.attempt ? -1 : a->a.attempt > b->a.attempt;
+    if (a->a.attempt != b->a.attempt)
+        return a->a.attempt < b->a.attempt ? -1 : 1;
+    return (a > b) - (a < b);
+}
+
+/* s->order: the attempts by by_key. 0, or -1 out of memory. */
+static int order_attempts(const report_run *r, report_stats *s)
+{
+    const report_att **p = malloc(sizeof *p * (size_t)(r->natt + 1));
+    if (!p)
+        return -1;
+    for (int i = 0; i < r->natt; i++)
+        p[i] = &r->att[i];
+    qsort(p, (size_t)r->natt, sizeof *p, by_key);
+    for (int i = 0; i < r->natt; i++)
+        s->order[i] = (int)(p[i] - r->att);
+    free(p);
+    return 0;
 }
 
 /* The condition of (dir, session, attempt): its attempt's, else "none". */
@@ -355,28 +372,36 @@ static int learning(const report_run *r, report_stats *s)
     return 0;
 }
 
+typedef struct rs_pkey { /* an attempt as participants() sorts it */
+    const char *participant;
+    int cond, i;
+} rs_pkey;
+
 static int by_part_cond(const void *pa, const void *pb)
 {
-    int ia = *(const int *)pa, ib = *(const int *)pb;
-    int c = strcmp(sort_run->att[ia].a.participant, sort_run->att[ib].a.participant);
-    const int *ac = sort_run->stats->att_cond;
+    const rs_pkey *a = pa, *b = pb;
+    int c = strcmp(a->participant, b->participant);
     if (!c)
-        c = ac[ia] < ac[ib] ? -1 : ac[ia] > ac[ib];
-    return c ? c : (ia < ib ? -1 : ia > ib);
+        c = a->cond < b->cond ? -1 : a->cond > b->cond;
+    return c ? c : (a->i < b->i ? -1 : a->i > b->i);
 }
 
 static int participants(const report_run *r, report_stats *s)
 {
     int *ix = malloc(sizeof *ix * (size_t)(r->natt + 1));
+    rs_pkey *k = malloc(sizeof *k * (size_t)(r->natt + 1));
     s->prow = malloc(sizeof *s->prow * (size_t)(r->natt + 1));
-    if (!ix || !s->prow) {
+    if (!ix || !k || !s->prow) {
         free(ix);
+        free(k);
         return -1;
     }
     for (int i = 0; i < r->natt; i++)
-        ix[i] = i;
-    sort_run = r;
-    qsort(ix, (size_t)r->natt, sizeof *ix, by_part_cond);
+        k[i] = (rs_pkey){r->att[i].a.participant, s->att_cond[i], i};
+    qsort(k, (size_t)r->natt, sizeof *k, by_part_cond);
+    for (int i = 0; i < r->natt; i++)
+        ix[i] = k[i].i;
+    free(k);
     for (int i = 0; i < r->natt;) {
         rs_prow *p = &s->prow[s->nprow++];
         memset(p, 0, sizeof *p);
@@ -408,10 +433,9 @@ typedef struct rs_rank {
     int group;  /* the study's first condition in first-seen order */
     int klass;  /* 0 practice, 1 in a study file, 2 not in one */
     int index;  /* in the study file; outside a study: first seen */
+    int cond;   /* the condition (first seen) */
+    const char *name; /* its name */
 } rs_rank;
-
-static rs_rank *sort_rank; /* qsort has no context argument */
-static const report_stats *sort_stats;
 
 /* Each LOGDIR's study-HASH.txt files (by name) give their study's
  * conditions in the file's order; the first file naming a condition wins. */
@@ -478,18 +502,17 @@ static int name_cmp(const char *a, const char *b)
 
 static int by_rank(const void *pa, const void *pb)
 {
-    int a = *(const int *)pa, b = *(const int *)pb;
-    const rs_rank *x = &sort_rank[a], *y = &sort_rank[b];
+    const rs_rank *x = pa, *y = pb;
     if (x->group != y->group)
         return x->group < y->group ? -1 : 1;
     if (x->klass != y->klass)
         return x->klass < y->klass ? -1 : 1;
     if (x->klass != 2 && x->index != y->index)
         return x->index < y->index ? -1 : 1;
-    int c = name_cmp(sort_stats->cond[a].condition, sort_stats->cond[b].condition);
+    int c = name_cmp(x->name, y->name);
     if (!c)
-        c = strcmp(sort_stats->cond[a].condition, sort_stats->cond[b].condition);
-    return c ? c : (a < b ? -1 : a > b);
+        c = strcmp(x->name, y->name);
+    return c ? c : (x->cond < y->cond ? -1 : x->cond > y->cond);
 }
 
 /* Conditions (not yet "none") reordered: by study in first-seen order;
@@ -505,7 +528,6 @@ static int order_conditions(report_run *r)
     hol_study *st = malloc(sizeof *st);
     int ok = k && ix && to && old && st;
     for (int c = 0; ok && c < n; c++) {
-        ix[c] = c;
         k[c].group = c;
         for (int g = 0; g < c; g++)
             if (!strcmp(s->cond[g].study, s->cond[c].study)) {
@@ -514,12 +536,14 @@ static int order_conditions(report_run *r)
             }
         k[c].klass = !s->cond[c].study[0] ? 0 : s->cond[c].practice ? 0 : 2;
         k[c].index = c;
+        k[c].cond = c;
+        k[c].name = s->cond[c].condition;
     }
     if (ok) {
         rank_from_files(r, k, st);
-        sort_rank = k;
-        sort_stats = s;
-        qsort(ix, (size_t)n, sizeof *ix, by_rank);
+        qsort(k, (size_t)n, sizeof *k, by_rank);
+        for (int c = 0; c < n; c++)
+            ix[c] = k[c].cond;
         memcpy(old, s->cond, sizeof *old * (size_t)n);
         for (int c = 0; c < n; c++) {
             s->cond[c] = old[ix[c]];
@@ -624,8 +648,10 @@ int report_stats_read(report_run *r)
     s->none = s->ncond++;
     memset(&s->cond[s->none], 0, sizeof s->cond[0]);
     snprintf(s->cond[s->none].condition, sizeof s->cond[0].condition, "none");
-    sort_run = r;
-    qsort(s->order, (size_t)r->natt, sizeof *s->order, by_key);
+    if (order_attempts(r, s)) {
+        cli_error(r->cmd, 0, "out of memory");
+        return CLI_EXIT_FAIL;
+    }
     for (int i = 0; i < r->natt; i++) {
         hol_stats *f = &s->fix[s->att_cond[i] * RS_NFIX];
         double eff = hol_report_efficiency(&r->att[i].a);
