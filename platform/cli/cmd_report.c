@@ -194,6 +194,7 @@ typedef struct report_buf {
     uint8_t plte[768];
     int npal;
     uint8_t *background[9][REPORT_ZOOM_MAX + 1]; /* by q (5..8) and zoom, drawn on first use */
+    report_edges edges; /* report_draw's, kept from picture to picture */
 } report_buf;
 
 /* A picture's bytes into DIR: a temporary file renamed over the name, not
@@ -252,6 +253,7 @@ static int picture(report_run *r, report_buf *b, int i, int write)
     p.walked = b->walked;
     p.optimal = b->optimal;
     p.goals = b->goals;
+    p.edges = &b->edges;
     report_view v;
     if (!report_view_fit(&p, &v))
         p.view = &v;
