@@ -358,11 +358,11 @@ int cli_cmd_report(int argc, char **argv)
     mallopt(M_MMAP_THRESHOLD, 4 << 20);
     mallopt(M_TRIM_THRESHOLD, 16 << 20);
 #endif
-    static report_run r;
-    memset(&r, 0, sizeof r);
-    r.cmd = cmd;
+    report_run *r = calloc(1, sizeof *r); /* its scratch level is large */
     report_buf *b = calloc(1, sizeof *b);
-    int st = b ? 0 : CLI_EXIT_FAIL;
+    int st = r && b ? 0 : CLI_EXIT_FAIL;
+    if (r)
+        r->cmd = cmd;
     if (!st && !(b->walked = malloc(sizeof *b->walked * REPORT_MAX_STEPS)))
         st = CLI_EXIT_FAIL;
     if (!st)
@@ -370,16 +370,19 @@ int cli_cmd_report(int argc, char **argv)
     if (st)
         cli_error(cmd, 0, "out of memory");
     if (!st)
-        st = parse_args(&r, argc, argv);
+        st = parse_args(r, argc, argv);
     if (!st)
         cli_catch_signals();
     if (!st)
-        st = run(&r, b);
+        st = run(r, b);
     if (!st)
         st = cli_finish_output(cmd);
-    report_stats_free(&r);
-    report_free(&r);
-    free(r.dirs);
+    if (r) {
+        report_stats_free(r);
+        report_free(r);
+        free(r->dirs);
+    }
+    free(r);
     if (b) {
         free(b->walked);
         for (int q = 0; q < 9; q++)

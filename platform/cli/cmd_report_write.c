@@ -78,8 +78,7 @@ int report_write_csv(const report_run *r)
     int st = open_out(r, "attempts.csv", &a, path, sizeof path);
     if (st)
         return st;
-    static char rel[64][1024];
-    char(*rels)[1024] = r->ndirs <= 64 ? rel : calloc((size_t)r->ndirs, sizeof *rels);
+    char(*rels)[1024] = calloc((size_t)r->ndirs + 1, sizeof *rels);
     if (!rels) {
         hol_file_atomic_abort(&a);
         cli_error(r->cmd, 0, "out of memory");
@@ -113,8 +112,7 @@ int report_write_csv(const report_run *r)
         report_csv(a.f, r->att[i].png, 0);
         factor_columns(a.f, r, i, rels[r->att[i].dir]);
     }
-    if (rels != rel)
-        free(rels);
+    free(rels);
     return commit(r, &a, path);
 }
 

@@ -298,7 +298,7 @@ static int read_answers(report_run *r, int d, rs_csv *c)
 {
     static const char *const names[] = {"session", "participant", "attempt", "questionnaire",
                                         "when", "item", "kind", "value"};
-    static rs_group g;
+    rs_group g;
     int o = open_csv(c, r, d, "answers.csv"), got;
     if (o)
         return o > 0 ? 0 : CLI_EXIT_USAGE;
@@ -621,7 +621,9 @@ static int alloc_stats(report_run *r)
         !(s->order = malloc(sizeof *s->order * n)) ||
         !(s->fix = calloc(n * RS_NFIX, sizeof *s->fix)) ||
         !(s->lik = malloc(sizeof *s->lik * RS_LIK_MAX)) ||
-        !(s->slot = malloc(sizeof *s->slot * RS_LIK_SLOTS))) {
+        !(s->slot = malloc(sizeof *s->slot * RS_LIK_SLOTS)) ||
+        !(s->pts = malloc(sizeof *s->pts * n)) || !(s->used = calloc(n, sizeof *s->used)) ||
+        !(s->nrange = calloc(2 * n, sizeof *s->nrange))) {
         cli_error(r->cmd, 0, "out of memory");
         return CLI_EXIT_FAIL;
     }
@@ -694,6 +696,9 @@ void report_stats_free(report_run *r)
     free(s->learn);
     free(s->prow);
     free(s->seen);
+    free(s->pts);
+    free(s->used);
+    free(s->nrange);
     free(s);
     r->stats = NULL;
 }

@@ -196,13 +196,6 @@ static void learning_svg(FILE *f, const report_run *r, int *used, long *nrange)
     fputs("</svg>\n", f);
 }
 
-/* A point of the steps-against-optimum plot: the attempts of one condition
- * with the same optimum and steps (n of them). */
-typedef struct rs_pt {
-    long opt, steps;
-    int cond, n;
-} rs_pt;
-
 static int by_point(const void *pa, const void *pb)
 {
     const rs_pt *a = pa, *b = pb;
@@ -304,8 +297,8 @@ static void size_key(FILE *f, int x, int y, double r1, int nmax)
 
 static void scatter_svg(FILE *f, const report_run *r, int *used, long *nrange)
 {
-    static rs_pt pts[REPORT_MAX_ATTEMPTS + 2];
     const report_stats *s = r->stats;
+    rs_pt *pts = s->pts;
     double maxv = 1;
     for (int i = 0; i < r->natt; i++)
         if (rs_included(r, i) && r->att[i].a.optimum >= 0) {
@@ -371,14 +364,12 @@ static void participants_table(FILE *f, const report_run *r)
 void report_stats_html(FILE *f, const report_run *r)
 {
     const report_stats *s = r->stats;
-    static int used_buf[REPORT_MAX_ATTEMPTS + 2];
-    static long n_buf[2 * (REPORT_MAX_ATTEMPTS + 2)];
     if (!s)
         return;
-    memset(used_buf, 0, sizeof used_buf);
-    memset(n_buf, 0, sizeof n_buf);
+    memset(s->used, 0, sizeof *s->used * (size_t)s->ncond);
+    memset(s->nrange, 0, sizeof *s->nrange * 2 * (size_t)s->ncond);
     means_table(f, r);
-    learning_svg(f, r, used_buf, n_buf);
-    scatter_svg(f, r, used_buf, n_buf);
+    learning_svg(f, r, s->used, s->nrange);
+    scatter_svg(f, r, s->used, s->nrange);
     participants_table(f, r);
 }
