@@ -26,26 +26,23 @@ static void num_or_empty(char *out, size_t cap, double v, const char *fmt)
         snprintf(out, cap, fmt, v);
 }
 
-static int open_out(const report_run *r, const char *name, hol_file_atomic *a, char *path,
-                    size_t cap)
+int report_out_open(const report_run *r, report_out *o, const char *name)
 {
-    snprintf(path, cap, "%s/%s", r->out, name);
-    if (hol_file_atomic_open(a, path)) {
-        cli_error(r->cmd, 0, "cannot write '%.300s'", path);
-        return CLI_EXIT_FAIL;
-    }
-    return 0;
+    snprintf(o->path, sizeof o->path, "%s/%s", r->out, name);
+    if (!hol_file_atomic_open(&o->a, o->path))
+        return 0;
+    cli_error(r->cmd, 0, "cannot write '%.300s'", o->path);
+    return CLI_EXIT_FAIL;
 }
 
-static int commit(const report_run *r, hol_file_atomic *a, const char *path)
+int report_out_close(const report_run *r, report_out *o)
 {
-    if (ferror(a->f) || hol_file_atomic_commit(a)) {
-        if (a->f)
-            hol_file_atomic_abort(a);
-        cli_error(r->cmd, 0, "cannot write '%.300s'", path);
-        return CLI_EXIT_FAIL;
-    }
-    return 0;
+    if (!ferror(o->a.f) && !hol_file_atomic_commit(&o->a))
+        return 0;
+    if (o->a.f)
+        hol_file_atomic_abort(&o->a);
+    cli_error(r->cmd, 0, "cannot write '%.300s'", o->path);
+    return CLI_EXIT_FAIL;
 }
 
 static void geometry_text(const hol_report_attempt *a, char *tiling, char *room, char *cell)
@@ -73,14 +70,14 @@ static void factor_columns(FILE *f, const report_run *r, int i, const char *rel)
 
 int report_write_csv(const report_run *r)
 {
-    hol_file_atomic a;
-    char path[4200];
-    int st = open_out(r, "attempts.csv", &a, path, sizeof path);
+    report_out o;
+    int st = report_out_open(r, &o, "attempts.csv");
     if (st)
         return st;
+    FILE *f = o.a.f;
     char(*rels)[1024] = calloc((size_t)r->ndirs + 1, sizeof *rels);
     if (!rels) {
-        hol_file_atomic_abort(&a);
+        hol_file_atomic_abort(&o.a);
         cli_error(r->cmd, 0, "out of memory");
         return CLI_EXIT_FAIL;
     }
@@ -89,51 +86,51 @@ int report_write_csv(const report_run *r)
     fputs("participant,session,attempt,study,condition,position,level,mode,steps,optimum,"
           "efficiency,time,end,tiling,room,cell,logdir,picture,q,cues,minimap,logdir_relative,"
           "session_no\n",
-          a.f);
+          f);
     for (int i = 0; i < r->natt; i++) {
         const hol_report_attempt *t = &r->att[i].a;
         char pos[24], eff[24], tiling[16], room[16], cell[16], dir[1024];
         num_or_empty(pos, sizeof pos, (double)t->position, "%.0f");
         num_or_empty(eff, sizeof eff, hol_report_efficiency(t), "%.4f");
         geometry_text(t, tiling, room, cell);
-        report_csv(a.f, t->participant, 0);
-        report_csv(a.f, t->session, 0);
-        fprintf(a.f, "%ld,", t->attempt);
-        report_csv(a.f, t->study, 0);
-        report_csv(a.f, t->condition, 0);
-        fprintf(a.f, "%s,", pos);
-        report_csv(a.f, t->level, 0);
-        report_csv(a.f, t->mode, 0);
-        fprintf(a.f, "%ld,%ld,%s,%.4f,", t->steps, t->optimum, eff, t->time_s);
-        report_csv(a.f, t->end, 0);
-        report_csv(a.f, tiling, 0);
-        fprintf(a.f, "%s,%s,", room, cell);
-        report_csv(a.f, safe_path(r->dirs[r->att[i].dir], dir, sizeof dir), 0);
-        report_csv(a.f, r->att[i].png, 0);
-        factor_columns(a.f, r, i, rels[r->att[i].dir]);
+        report_csv(f, t->participant, 0);
+        report_csv(f, t->session, 0);
+        fprintf(f, "%ld,", t->attempt);
+        report_csv(f, t->study, 0);
+        report_csv(f, t->condition, 0);
+        fprintf(f, "%s,", pos);
+        report_csv(f, t->level, 0);
+        report_csv(f, t->mode, 0);
+        fprintf(f, "%ld,%ld,%s,%.4f,", t->steps, t->optimum, eff, t->time_s);
+        report_csv(f, t->end, 0);
+        report_csv(f, tiling, 0);
+        fprintf(f, "%s,%s,", room, cell);
+        report_csv(f, safe_path(r->dirs[r->att[i].dir], dir, sizeof dir), 0);
+        report_csv(f, r->att[i].png, 0);
+        factor_columns(f, r, i, rels[r->att[i].dir]);
     }
     free(rels);
-    return commit(r, &a, path);
+    return report_out_close(r, &o);
 }
 
 int report_write_conditions(const report_run *r, const hol_report_agg *g)
 {
-    hol_file_atomic a;
-    char path[4200];
-    int st = open_out(r, "conditions.csv", &a, path, sizeof path);
+    report_out o;
+    int st = report_out_open(r, &o, "conditions.csv");
     if (st)
         return st;
-    fputs("study,condition,attempts,done,mean_steps,mean_efficiency,mean_time\n", a.f);
+    FILE *f = o.a.f;
+    fputs("study,condition,attempts,done,mean_steps,mean_efficiency,mean_time\n", f);
     for (int i = 0; i < g->n; i++) {
         const hol_report_cond *c = &g->c[i];
         char eff[24];
         num_or_empty(eff, sizeof eff, c->neff ? c->eff / (double)c->neff : -1, "%.4f");
-        report_csv(a.f, c->study, 0);
-        report_csv(a.f, c->condition, 0);
-        fprintf(a.f, "%ld,%ld,%.2f,%s,%.4f\n", c->n, c->done, c->steps / (double)c->n, eff,
+        report_csv(f, c->study, 0);
+        report_csv(f, c->condition, 0);
+        fprintf(f, "%ld,%ld,%.2f,%s,%.4f\n", c->n, c->done, c->steps / (double)c->n, eff,
                 c->time_s / (double)c->n);
     }
-    return commit(r, &a, path);
+    return report_out_close(r, &o);
 }
 
 static void html_cell(FILE *f, const char *s)
@@ -225,21 +222,21 @@ static void html_row(FILE *f, const report_run *r, int i)
 
 int report_write_html(const report_run *r, const hol_report_agg *g)
 {
-    hol_file_atomic a;
-    char path[4200];
-    int st = open_out(r, "index.html", &a, path, sizeof path);
+    report_out o;
+    int st = report_out_open(r, &o, "index.html");
     if (st)
         return st;
-    html_head(a.f, r, g);
-    report_stats_html(a.f, r);
-    fputs("<h2>Attempts</h2>\n", a.f);
-    fputs(pictures_note, a.f);
+    FILE *f = o.a.f;
+    html_head(f, r, g);
+    report_stats_html(f, r);
+    fputs("<h2>Attempts</h2>\n", f);
+    fputs(pictures_note, f);
     fputs("<table>\n<tr><th>#</th><th>path</th><th>participant</th><th>session</th><th>attempt</th>"
           "<th>study</th><th>condition</th><th>position</th><th>level</th><th>mode</th>"
           "<th>steps</th><th>optimum</th><th>efficiency</th><th>time (s)</th><th>end</th>"
-          "<th>geometry</th></tr>\n", a.f);
+          "<th>geometry</th></tr>\n", f);
     for (int i = 0; i < r->natt; i++)
-        html_row(a.f, r, i);
-    fputs("</table>\n</body>\n</html>\n", a.f);
-    return commit(r, &a, path);
+        html_row(f, r, i);
+    fputs("</table>\n</body>\n</html>\n", f);
+    return report_out_close(r, &o);
 }

@@ -45,14 +45,12 @@ static int cond_of(report_stats *s, const hol_report_attempt *a)
 static int by_key(const void *pa, const void *pb)
 {
     const report_att *a = *(const report_att *const *)pa, *b = *(const report_att *const *)pb;
-    if (a->dir != b->dir)
-        return a->dir < b->dir ? -1 : 1;
-    int c = strcmp(a->a.session, b->a.session);
-    if (c)
-        return c;
-    if (a->a.attempt != b->a.attempt)
-        return a->a.attempt < b->a.attempt ? -1 : 1;
-    return (a > b) - (a < b);
+    int c = rs_cmp(a->dir, b->dir);
+    if (!c)
+        c = strcmp(a->a.session, b->a.session);
+    if (!c)
+        c = rs_cmp(a->a.attempt, b->a.attempt);
+    return c ? c : (a > b) - (a < b);
 }
 
 /* s->order: the attempts by by_key. 0, or -1 out of memory. */
@@ -330,9 +328,8 @@ typedef struct rs_lentry {
 static int by_cond_pos(const void *pa, const void *pb)
 {
     const rs_lentry *a = pa, *b = pb;
-    if (a->cond != b->cond)
-        return a->cond < b->cond ? -1 : 1;
-    return a->pos < b->pos ? -1 : a->pos > b->pos;
+    int c = rs_cmp(a->cond, b->cond);
+    return c ? c : rs_cmp(a->pos, b->pos);
 }
 
 /* Position in the participant's order; outside a study the attempt. */
@@ -382,8 +379,8 @@ static int by_part_cond(const void *pa, const void *pb)
     const rs_pkey *a = pa, *b = pb;
     int c = strcmp(a->participant, b->participant);
     if (!c)
-        c = a->cond < b->cond ? -1 : a->cond > b->cond;
-    return c ? c : (a->i < b->i ? -1 : a->i > b->i);
+        c = rs_cmp(a->cond, b->cond);
+    return c ? c : rs_cmp(a->i, b->i);
 }
 
 static int participants(const report_run *r, report_stats *s)
@@ -503,16 +500,16 @@ static int name_cmp(const char *a, const char *b)
 static int by_rank(const void *pa, const void *pb)
 {
     const rs_rank *x = pa, *y = pb;
-    if (x->group != y->group)
-        return x->group < y->group ? -1 : 1;
-    if (x->klass != y->klass)
-        return x->klass < y->klass ? -1 : 1;
-    if (x->klass != 2 && x->index != y->index)
-        return x->index < y->index ? -1 : 1;
-    int c = name_cmp(x->name, y->name);
+    int c = rs_cmp(x->group, y->group);
+    if (!c)
+        c = rs_cmp(x->klass, y->klass);
+    if (!c && x->klass != 2)
+        c = rs_cmp(x->index, y->index);
+    if (!c)
+        c = name_cmp(x->name, y->name);
     if (!c)
         c = strcmp(x->name, y->name);
-    return c ? c : (x->cond < y->cond ? -1 : x->cond > y->cond);
+    return c ? c : rs_cmp(x->cond, y->cond);
 }
 
 /* Conditions (not yet "none") reordered: by study in first-seen order;
@@ -570,9 +567,8 @@ typedef struct rs_aggkey {
 static int by_aggkey(const void *pa, const void *pb)
 {
     const rs_aggkey *a = pa, *b = pb;
-    if (a->rank != b->rank)
-        return a->rank < b->rank ? -1 : 1;
-    return a->i < b->i ? -1 : a->i > b->i;
+    int c = rs_cmp(a->rank, b->rank);
+    return c ? c : rs_cmp(a->i, b->i);
 }
 
 /* The conditions of g (first seen, as report_stats_read's were) in the
@@ -719,34 +715,10 @@ static void summary(FILE *f, const hol_stats *st)
         fputs(",,,\n", f);
 }
 
-typedef struct rs_out {
-    hol_file_atomic a;
-    char path[4200];
-} rs_out;
-
-static int open_out(const report_run *r, rs_out *o, const char *name)
-{
-    snprintf(o->path, sizeof o->path, "%s/%s", r->out, name);
-    if (!hol_file_atomic_open(&o->a, o->path))
-        return 0;
-    cli_error(r->cmd, 0, "cannot write '%.300s'", o->path);
-    return CLI_EXIT_FAIL;
-}
-
-static int close_out(const report_run *r, rs_out *o)
-{
-    if (!ferror(o->a.f) && !hol_file_atomic_commit(&o->a))
-        return 0;
-    if (o->a.f)
-        hol_file_atomic_abort(&o->a);
-    cli_error(r->cmd, 0, "cannot write '%.300s'", o->path);
-    return CLI_EXIT_FAIL;
-}
-
-static int write_stats(const report_run *r, rs_out *o)
+static int write_stats(const report_run *r, report_out *o)
 {
     const report_stats *s = r->stats;
-    int st = open_out(r, o, "stats.csv");
+    int st = report_out_open(r, o, "stats.csv");
     if (st)
         return st;
     fputs("study,condition,measure,item,n,mean,sd,ci_low,ci_high\n", o->a.f);
@@ -771,13 +743,13 @@ static int write_stats(const report_run *r, rs_out *o)
             summary(o->a.f, &s->lik[i].s);
         }
     }
-    return close_out(r, o);
+    return report_out_close(r, o);
 }
 
-static int write_learning(const report_run *r, rs_out *o)
+static int write_learning(const report_run *r, report_out *o)
 {
     const report_stats *s = r->stats;
-    int st = open_out(r, o, "learning.csv");
+    int st = report_out_open(r, o, "learning.csv");
     if (st)
         return st;
     fputs("study,condition,position,n,mean_efficiency,sd,ci_low,ci_high\n", o->a.f);
@@ -791,7 +763,7 @@ static int write_learning(const report_run *r, rs_out *o)
         else
             fputs(",,\n", o->a.f);
     }
-    return close_out(r, o);
+    return report_out_close(r, o);
 }
 
 static void mean_or_empty(FILE *f, const hol_stats *st, int last)
@@ -801,10 +773,10 @@ static void mean_or_empty(FILE *f, const hol_stats *st, int last)
     fputc(last ? '\n' : ',', f);
 }
 
-static int write_participants(const report_run *r, rs_out *o)
+static int write_participants(const report_run *r, report_out *o)
 {
     const report_stats *s = r->stats;
-    int st = open_out(r, o, "participants.csv");
+    int st = report_out_open(r, o, "participants.csv");
     if (st)
         return st;
     fputs("participant,study,condition,attempts,done,mean_steps,mean_efficiency,mean_time\n",
@@ -819,12 +791,12 @@ static int write_participants(const report_run *r, rs_out *o)
         mean_or_empty(o->a.f, &p->eff, 0);
         mean_or_empty(o->a.f, &p->time, 1);
     }
-    return close_out(r, o);
+    return report_out_close(r, o);
 }
 
 int report_stats_write(const report_run *r)
 {
-    rs_out *o = malloc(sizeof *o);
+    report_out *o = malloc(sizeof *o);
     int st = o ? write_stats(r, o) : CLI_EXIT_FAIL;
     if (!st)
         st = write_learning(r, o);

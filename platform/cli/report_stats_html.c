@@ -199,11 +199,10 @@ static void learning_svg(FILE *f, const report_run *r, int *used, long *nrange)
 static int by_point(const void *pa, const void *pb)
 {
     const rs_pt *a = pa, *b = pb;
-    if (a->opt != b->opt)
-        return a->opt < b->opt ? -1 : 1;
-    if (a->steps != b->steps)
-        return a->steps < b->steps ? -1 : 1;
-    return (a->cond > b->cond) - (a->cond < b->cond);
+    int c = rs_cmp(a->opt, b->opt);
+    if (!c)
+        c = rs_cmp(a->steps, b->steps);
+    return c ? c : rs_cmp(a->cond, b->cond);
 }
 
 #define RS_R1 4.0    /* the radius of a point of one attempt (px) */

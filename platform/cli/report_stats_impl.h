@@ -66,4 +66,10 @@ typedef struct report_stats {
 
 int rs_included(const report_run *r, int i); /* done, not practice */
 
+/* -1, 0 or 1 as a is below, equal to or above b (the sorts' comparators). */
+static inline int rs_cmp(long a, long b)
+{
+    return (a > b) - (a < b);
+}
+
 #endif
