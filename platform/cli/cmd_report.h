@@ -11,16 +11,15 @@
  *   file and line (bad input 2, failure 1); a missing steps or level file
  *   is not an error: a warning line, and the attempt has no walk (has_* 0).
  * - report_write_* write DIR's files atomically (platform/file), each
- *   through a report_out: report_out_open opens DIR/name (0, or
- *   CLI_EXIT_FAIL after one line), report_out_close commits it (0), or
- *   after a write error removes it (CLI_EXIT_FAIL after one line).
+ *   through report_write_file: DIR/name written by body (its 0, or an exit
+ *   status after one line: the file is then left out), committed; 0, or
+ *   CLI_EXIT_FAIL after one line when it cannot be opened or written.
  */
 #ifndef CMD_REPORT_H
 #define CMD_REPORT_H
 
 #include <stddef.h>
-
-#include "../file/hol_file.h"
+#include <stdio.h>
 
 #include "../../core/hol_level.h"
 #include "../../core/hol_nav.h"
@@ -87,13 +86,8 @@ int report_optimal(report_run *r, report_att *t, hol_room *out_start, hol_tile *
                    int *ngoals, int *chest_last, hol_tile *walk, int *nwalk);
 void report_free(report_run *r);
 
-typedef struct report_out { /* a file of the report being written */
-    hol_file_atomic a;
-    char path[4200];
-} report_out;
-
-int report_out_open(const report_run *r, report_out *o, const char *name);
-int report_out_close(const report_run *r, report_out *o);
+typedef int (*report_body)(FILE *f, const report_run *r, const void *ctx);
+int report_write_file(const report_run *r, const char *name, report_body body, const void *ctx);
 
 int report_write_csv(const report_run *r);
 int report_write_conditions(const report_run *r, const hol_report_agg *g);

@@ -26,23 +26,23 @@ static void num_or_empty(char *out, size_t cap, double v, const char *fmt)
         snprintf(out, cap, fmt, v);
 }
 
-int report_out_open(const report_run *r, report_out *o, const char *name)
+int report_write_file(const report_run *r, const char *name, report_body body, const void *ctx)
 {
-    snprintf(o->path, sizeof o->path, "%s/%s", r->out, name);
-    if (!hol_file_atomic_open(&o->a, o->path))
+    hol_file_atomic a;
+    char path[4200];
+    snprintf(path, sizeof path, "%s/%s", r->out, name);
+    if (hol_file_atomic_open(&a, path)) {
+        cli_error(r->cmd, 0, "cannot write '%.300s'", path);
+        return CLI_EXIT_FAIL;
+    }
+    int st = body(a.f, r, ctx);
+    if (!st && !ferror(a.f) && !hol_file_atomic_commit(&a))
         return 0;
-    cli_error(r->cmd, 0, "cannot write '%.300s'", o->path);
-    return CLI_EXIT_FAIL;
-}
-
-int report_out_close(const report_run *r, report_out *o)
-{
-    if (!ferror(o->a.f) && !hol_file_atomic_commit(&o->a))
-        return 0;
-    if (o->a.f)
-        hol_file_atomic_abort(&o->a);
-    cli_error(r->cmd, 0, "cannot write '%.300s'", o->path);
-    return CLI_EXIT_FAIL;
+    if (a.f)
+        hol_file_atomic_abort(&a);
+    if (!st)
+        cli_error(r->cmd, 0, "cannot write '%.300s'", path);
+    return st ? st : CLI_EXIT_FAIL;
 }
 
 static void geometry_text(const hol_report_attempt *a, char *tiling, char *room, char *cell)
@@ -68,16 +68,11 @@ static void factor_columns(FILE *f, const report_run *r, int i, const char *rel)
     fputc('\n', f);
 }
 
-int report_write_csv(const report_run *r)
+static int attempts_csv(FILE *f, const report_run *r, const void *ctx)
 {
-    report_out o;
-    int st = report_out_open(r, &o, "attempts.csv");
-    if (st)
-        return st;
-    FILE *f = o.a.f;
+    (void)ctx;
     char(*rels)[1024] = calloc((size_t)r->ndirs + 1, sizeof *rels);
     if (!rels) {
-        hol_file_atomic_abort(&o.a);
         cli_error(r->cmd, 0, "out of memory");
         return CLI_EXIT_FAIL;
     }
@@ -110,16 +105,17 @@ int report_write_csv(const report_run *r)
         factor_columns(f, r, i, rels[r->att[i].dir]);
     }
     free(rels);
-    return report_out_close(r, &o);
+    return 0;
 }
 
-int report_write_conditions(const report_run *r, const hol_report_agg *g)
+int report_write_csv(const report_run *r)
 {
-    report_out o;
-    int st = report_out_open(r, &o, "conditions.csv");
-    if (st)
-        return st;
-    FILE *f = o.a.f;
+    return report_write_file(r, "attempts.csv", attempts_csv, NULL);
+}
+
+static int conditions_csv(FILE *f, const report_run *r, const void *ctx)
+{
+    const hol_report_agg *g = ctx;
     fputs("study,condition,attempts,done,mean_steps,mean_efficiency,mean_time\n", f);
     for (int i = 0; i < g->n; i++) {
         const hol_report_cond *c = &g->c[i];
@@ -130,7 +126,13 @@ int report_write_conditions(const report_run *r, const hol_report_agg *g)
         fprintf(f, "%ld,%ld,%.2f,%s,%.4f\n", c->n, c->done, c->steps / (double)c->n, eff,
                 c->time_s / (double)c->n);
     }
-    return report_out_close(r, &o);
+    (void)r;
+    return 0;
+}
+
+int report_write_conditions(const report_run *r, const hol_report_agg *g)
+{
+    return report_write_file(r, "conditions.csv", conditions_csv, g);
 }
 
 static void html_cell(FILE *f, const char *s)
@@ -220,13 +222,9 @@ static void html_row(FILE *f, const report_run *r, int i)
     fputs("</tr>\n", f);
 }
 
-int report_write_html(const report_run *r, const hol_report_agg *g)
+static int index_html(FILE *f, const report_run *r, const void *ctx)
 {
-    report_out o;
-    int st = report_out_open(r, &o, "index.html");
-    if (st)
-        return st;
-    FILE *f = o.a.f;
+    const hol_report_agg *g = ctx;
     html_head(f, r, g);
     report_stats_html(f, r);
     fputs("<h2>Attempts</h2>\n", f);
@@ -238,5 +236,10 @@ int report_write_html(const report_run *r, const hol_report_agg *g)
     for (int i = 0; i < r->natt; i++)
         html_row(f, r, i);
     fputs("</table>\n</body>\n</html>\n", f);
-    return report_out_close(r, &o);
+    return 0;
+}
+
+int report_write_html(const report_run *r, const hol_report_agg *g)
+{
+    return report_write_file(r, "index.html", index_html, g);
 }

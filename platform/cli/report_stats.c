@@ -715,55 +715,51 @@ static void summary(FILE *f, const hol_stats *st)
         fputs(",,,\n", f);
 }
 
-static int write_stats(const report_run *r, report_out *o)
+static int stats_csv(FILE *f, const report_run *r, const void *ctx)
 {
     const report_stats *s = r->stats;
-    int st = report_out_open(r, o, "stats.csv");
-    if (st)
-        return st;
-    fputs("study,condition,measure,item,n,mean,sd,ci_low,ci_high\n", o->a.f);
+    (void)ctx;
+    fputs("study,condition,measure,item,n,mean,sd,ci_low,ci_high\n", f);
     for (int c = 0; c < s->ncond; c++) {
         for (int m = 0; m < RS_NFIX; m++) {
             if (!s->fix[c * RS_NFIX + m].n)
                 continue;
-            report_csv(o->a.f, s->cond[c].study, 0);
-            report_csv(o->a.f, s->cond[c].condition, 0);
-            fprintf(o->a.f, "%s,,", rs_measure[m]);
-            summary(o->a.f, &s->fix[c * RS_NFIX + m]);
+            report_csv(f, s->cond[c].study, 0);
+            report_csv(f, s->cond[c].condition, 0);
+            fprintf(f, "%s,,", rs_measure[m]);
+            summary(f, &s->fix[c * RS_NFIX + m]);
         }
         for (int i = 0; i < s->nlik; i++) {
             char item[160];
             if (s->lik[i].cond != c)
                 continue;
             snprintf(item, sizeof item, "%s/%s", s->lik[i].q, s->lik[i].item);
-            report_csv(o->a.f, s->cond[c].study, 0);
-            report_csv(o->a.f, s->cond[c].condition, 0);
-            fputs("likert,", o->a.f);
-            report_csv(o->a.f, item, 0);
-            summary(o->a.f, &s->lik[i].s);
+            report_csv(f, s->cond[c].study, 0);
+            report_csv(f, s->cond[c].condition, 0);
+            fputs("likert,", f);
+            report_csv(f, item, 0);
+            summary(f, &s->lik[i].s);
         }
     }
-    return report_out_close(r, o);
+    return 0;
 }
 
-static int write_learning(const report_run *r, report_out *o)
+static int learning_csv(FILE *f, const report_run *r, const void *ctx)
 {
     const report_stats *s = r->stats;
-    int st = report_out_open(r, o, "learning.csv");
-    if (st)
-        return st;
-    fputs("study,condition,position,n,mean_efficiency,sd,ci_low,ci_high\n", o->a.f);
+    (void)ctx;
+    fputs("study,condition,position,n,mean_efficiency,sd,ci_low,ci_high\n", f);
     for (int i = 0; i < s->nlearn; i++) {
         const rs_learn *l = &s->learn[i];
-        report_csv(o->a.f, s->cond[l->cond].study, 0);
-        report_csv(o->a.f, s->cond[l->cond].condition, 0);
-        fprintf(o->a.f, "%ld,%ld,%.4f,", l->pos, l->m.n, l->m.mean);
+        report_csv(f, s->cond[l->cond].study, 0);
+        report_csv(f, s->cond[l->cond].condition, 0);
+        fprintf(f, "%ld,%ld,%.4f,", l->pos, l->m.n, l->m.mean);
         if (l->m.has_sd)
-            fprintf(o->a.f, "%.4f,%.4f,%.4f\n", l->m.sd, l->m.lo, l->m.hi);
+            fprintf(f, "%.4f,%.4f,%.4f\n", l->m.sd, l->m.lo, l->m.hi);
         else
-            fputs(",,\n", o->a.f);
+            fputs(",,\n", f);
     }
-    return report_out_close(r, o);
+    return 0;
 }
 
 static void mean_or_empty(FILE *f, const hol_stats *st, int last)
@@ -773,38 +769,32 @@ static void mean_or_empty(FILE *f, const hol_stats *st, int last)
     fputc(last ? '\n' : ',', f);
 }
 
-static int write_participants(const report_run *r, report_out *o)
+static int participants_csv(FILE *f, const report_run *r, const void *ctx)
 {
     const report_stats *s = r->stats;
-    int st = report_out_open(r, o, "participants.csv");
-    if (st)
-        return st;
+    (void)ctx;
     fputs("participant,study,condition,attempts,done,mean_steps,mean_efficiency,mean_time\n",
-          o->a.f);
+          f);
     for (int i = 0; i < s->nprow; i++) {
         const rs_prow *p = &s->prow[i];
-        report_csv(o->a.f, r->att[p->att].a.participant, 0);
-        report_csv(o->a.f, s->cond[p->cond].study, 0);
-        report_csv(o->a.f, s->cond[p->cond].condition, 0);
-        fprintf(o->a.f, "%ld,%ld,", p->n, p->done);
-        mean_or_empty(o->a.f, &p->steps, 0);
-        mean_or_empty(o->a.f, &p->eff, 0);
-        mean_or_empty(o->a.f, &p->time, 1);
+        report_csv(f, r->att[p->att].a.participant, 0);
+        report_csv(f, s->cond[p->cond].study, 0);
+        report_csv(f, s->cond[p->cond].condition, 0);
+        fprintf(f, "%ld,%ld,", p->n, p->done);
+        mean_or_empty(f, &p->steps, 0);
+        mean_or_empty(f, &p->eff, 0);
+        mean_or_empty(f, &p->time, 1);
     }
-    return report_out_close(r, o);
+    return 0;
 }
 
 int report_stats_write(const report_run *r)
 {
-    report_out *o = malloc(sizeof *o);
-    int st = o ? write_stats(r, o) : CLI_EXIT_FAIL;
+    int st = report_write_file(r, "stats.csv", stats_csv, NULL);
     if (!st)
-        st = write_learning(r, o);
+        st = report_write_file(r, "learning.csv", learning_csv, NULL);
     if (!st)
-        st = write_participants(r, o);
-    if (!o)
-        cli_error(r->cmd, 0, "out of memory");
-    free(o);
+        st = report_write_file(r, "participants.csv", participants_csv, NULL);
     return st;
 }
 
