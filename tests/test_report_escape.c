@@ -22,27 +22,29 @@
 
 #include "../platform/cli/report_escape.h"
 
-/* What fn writes for s (with last, for report_csv), as a string. */
-static char *csv_of(const char *s, int last)
+/* What report_csv (last 0 or 1) or report_html (last -1) writes for s. */
+static char *written(const char *s, int last)
 {
     char *buf = NULL;
     size_t n = 0;
     FILE *f = open_memstream(&buf, &n);
     assert_non_null(f);
-    report_csv(f, s, last);
+    if (last < 0)
+        report_html(f, s);
+    else
+        report_csv(f, s, last);
     assert_int_equal(fclose(f), 0);
     return buf;
 }
 
+static char *csv_of(const char *s, int last)
+{
+    return written(s, last);
+}
+
 static char *html_of(const char *s)
 {
-    char *buf = NULL;
-    size_t n = 0;
-    FILE *f = open_memstream(&buf, &n);
-    assert_non_null(f);
-    report_html(f, s);
-    assert_int_equal(fclose(f), 0);
-    return buf;
+    return written(s, -1);
 }
 
 static void csv_is(const char *s, int last, const char *want)

@@ -683,19 +683,10 @@ void report_stats_free(report_run *r)
     report_stats *s = r->stats;
     if (!s)
         return;
-    free(s->cond);
-    free(s->att_cond);
-    free(s->order);
-    free(s->fix);
-    free(s->lik);
-    free(s->slot);
-    free(s->learn);
-    free(s->prow);
-    free(s->seen);
-    free(s->pts);
-    free(s->used);
-    free(s->nrange);
-    free(s);
+    void *own[] = {s->cond, s->att_cond, s->order, s->fix, s->lik, s->slot, s->learn,
+                   s->prow, s->seen, s->pts, s->used, s->nrange, s};
+    for (size_t i = 0; i < sizeof own / sizeof own[0]; i++)
+        free(own[i]);
     r->stats = NULL;
 }
 
