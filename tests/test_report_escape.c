@@ -1,5 +1,5 @@
 /* test_report_escape.c - the report's one CSV field writer and one HTML
- * text writer (platform/cli/report_escape.h), against their rules written
+ * text writer (platform/cli/report/report_escape.h), against their rules written
  * out by hand:
  * - CSV: a plain field as it is; a comma, a double quote, CR, LF, a leading
  *   or trailing space quoted, the quote doubled; ',' after, '\n' when last;
@@ -20,7 +20,7 @@
 
 #include <cmocka.h>
 
-#include "../platform/cli/report_escape.h"
+#include "../platform/cli/report/report_escape.h"
 
 /* What report_csv (last 0 or 1) or report_html (last -1) writes for s. */
 static char *written(const char *s, int last)

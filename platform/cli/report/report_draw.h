@@ -60,8 +60,8 @@
 
 #include <stdint.h>
 
-#include "../../core/hol_err.h"
-#include "../../core/hol_room.h"
+#include "../../../core/hol_err.h"
+#include "../../../core/hol_room.h"
 
 #define REPORT_RGB_RAMP0 0x3c28b4u   /* the first step: indigo */
 #define REPORT_RGB_RAMP1 0xdc5014u   /* the last step: orange */

@@ -24,7 +24,7 @@
 
 #include <stdio.h>
 
-#include "../../core/hol_report.h"
+#include "../../../core/hol_report.h"
 
 #define REPORT_ESCAPE_MAX (4 * HOL_REPORT_TEXT + 7) /* cleaned bytes kept */
 

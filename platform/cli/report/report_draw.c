@@ -6,9 +6,9 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "../../core/hol_hyper.h"
-#include "../../render/hol_font.h"
-#include "cli.h"
+#include "../../../core/hol_hyper.h"
+#include "../../../render/hol_font.h"
+#include "../cli.h"
 
 #define RGB_WHITE 0xffffffu
 #define RGB_TEXT 0x202020u

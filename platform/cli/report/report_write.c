@@ -1,13 +1,13 @@
-/* cmd_report_write.c - the report's files (cmd_report.h): attempts.csv,
+/* report_write.c - the report's files (report.h): attempts.csv,
  * conditions.csv and index.html, each written atomically. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "../../core/hol_text.h"
-#include "../file/hol_file.h"
-#include "cli.h"
-#include "cmd_report.h"
+#include "../../../core/hol_text.h"
+#include "../../file/hol_file.h"
+#include "../cli.h"
+#include "report.h"
 #include "report_escape.h"
 #include "report_stats.h"
 

@@ -14,9 +14,9 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "../../render/hol_png.h"
-#include "cli.h"
-#include "cmd_report.h"
+#include "../../../render/hol_png.h"
+#include "../cli.h"
+#include "report.h"
 #include "report_draw.h"
 #include "report_stats.h"
 

@@ -3,7 +3,7 @@
 #ifndef REPORT_STATS_IMPL_H
 #define REPORT_STATS_IMPL_H
 
-#include "../../core/hol_stats.h"
+#include "../../../core/hol_stats.h"
 #include "report_stats.h"
 
 enum { RS_STEPS, RS_EFF, RS_TIME, RS_ERR_TRUE, RS_ERR_FLAT, RS_SSQ_T, RS_SSQ_N, RS_SSQ_O,

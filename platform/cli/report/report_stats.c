@@ -9,11 +9,11 @@
 #include <string.h>
 #include <sys/stat.h>
 
-#include "../../core/hol_study.h"
-#include "../../core/hol_text.h"
-#include "../file/hol_file.h"
-#include "../file/hol_lines.h"
-#include "cli.h"
+#include "../../../core/hol_study.h"
+#include "../../../core/hol_text.h"
+#include "../../file/hol_file.h"
+#include "../../file/hol_lines.h"
+#include "../cli.h"
 #include "report_escape.h"
 #include "report_stats_impl.h"
 

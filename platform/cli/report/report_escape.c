@@ -3,7 +3,7 @@
 
 #include <string.h>
 
-#include "../../core/hol_text.h"
+#include "../../../core/hol_text.h"
 
 void report_csv(FILE *f, const char *s, int last)
 {
