@@ -2,7 +2,9 @@
  * (this folder; cmd_report.c, the command, runs them). Each file has one job:
  *   report_read.c        log folders read back (summaries, steps, levels)
  *   report_write.c       the report's files: attempts.csv, conditions.csv,
- *                        index.html, each through report_write_file
+ *                        index.html
+ *   report_file.c        report_write_file: every file of the report
+ *                        written atomically (the writers are its bodies)
  *   report_stats*.c      the statistics (report_stats.h): stats.csv,
  *                        learning.csv, participants.csv, the page's section
  *   report_draw.c        an attempt's picture (report_draw.h)

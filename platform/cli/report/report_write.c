@@ -5,7 +5,6 @@
 #include <string.h>
 
 #include "../../../core/hol_text.h"
-#include "../../file/hol_file.h"
 #include "../cli.h"
 #include "report.h"
 #include "report_escape.h"
@@ -24,25 +23,6 @@ static void num_or_empty(char *out, size_t cap, double v, const char *fmt)
         out[0] = 0;
     else
         snprintf(out, cap, fmt, v);
-}
-
-int report_write_file(const report_run *r, const char *name, report_body body, const void *ctx)
-{
-    hol_file_atomic a;
-    char path[4200];
-    snprintf(path, sizeof path, "%s/%s", r->out, name);
-    if (hol_file_atomic_open(&a, path)) {
-        cli_error(r->cmd, 0, "cannot write '%.300s'", path);
-        return CLI_EXIT_FAIL;
-    }
-    int st = body(a.f, r, ctx);
-    if (!st && !ferror(a.f) && !hol_file_atomic_commit(&a))
-        return 0;
-    if (a.f)
-        hol_file_atomic_abort(&a);
-    if (!st)
-        cli_error(r->cmd, 0, "cannot write '%.300s'", path);
-    return st ? st : CLI_EXIT_FAIL;
 }
 
 static void geometry_text(const hol_report_attempt *a, char *tiling, char *room, char *cell)
