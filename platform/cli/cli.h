@@ -76,7 +76,10 @@ void cli_trim(char **s, size_t *len);
 const char *cli_escape(const char *s, char *buf, size_t cap);
 
 /* Print "holonomy CMD: line N: MESSAGE" (or without the line when
- * lineno <= 0) to stderr. */
+ * lineno <= 0) to stderr. One line per failure: only the first call of a
+ * run prints; later ones (the same failure said again on the way out: the
+ * session's error at its end, a log that cannot be written once the disk is
+ * full) are dropped, so a failing command says one line, its first cause. */
 void cli_error(const char *cmd, long lineno, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
 

@@ -25,6 +25,9 @@ const char *cli_escape(const char *s, char *buf, size_t cap)
 
 void cli_error(const char *cmd, long lineno, const char *fmt, ...)
 {
+    static int said; /* one line per failure (cli.h) */
+    if (said++)
+        return;
     char msg[512];
     va_list ap;
     va_start(ap, fmt);
