@@ -76,12 +76,14 @@ void cli_trim(char **s, size_t *len);
 const char *cli_escape(const char *s, char *buf, size_t cap);
 
 /* Print "holonomy CMD: line N: MESSAGE" (or without the line when
- * lineno <= 0) to stderr. One line per failure: only the first call of a
- * run prints; later ones (the same failure said again on the way out: the
- * session's error at its end, a log that cannot be written once the disk is
- * full) are dropped, so a failing command says one line, its first cause. */
+ * lineno <= 0) to stderr. */
 void cli_error(const char *cmd, long lineno, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
+/* The same, for an error on a command's way out (the session's end, the
+ * environment row after the session), which may be the failure already
+ * said once more (the disk still full): printed only when no cli_error or
+ * cli_error_end line came before in this run. One line per failure. */
+void cli_error_end(const char *cmd, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 
 /* Split s (length len) at runs of spaces and tabs; up to max fields.
  * Returns the number of fields found (max + 1 means "more than max"). */

@@ -426,8 +426,8 @@ int play_session_end(const char *cmd, hol_session *s, int abort)
     hol_err e = abort == PLAY_END_KILLED ? hol_session_end_killed(s)
                 : abort                    ? hol_session_abort(s)
                                            : hol_session_finish(s);
-    if (e)
-        cli_error(cmd, 0, "%s", hol_session_message(s));
+    if (e) /* the step's failure is not said twice */
+        cli_error_end(cmd, "%s", hol_session_message(s));
     hol_session_destroy(s);
     return e ? CLI_EXIT_FAIL : 0;
 }
