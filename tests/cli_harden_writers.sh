@@ -120,4 +120,10 @@ ls -A W | tr '\n' ' ' >got
 run "a session into the folder" 0 "$H" replay a.rec --log L --append &&
     one_line "a session into the folder" "removed 1 temporary file(s) left in 'L'"
 ls -A L | grep -q holonomy-tmp && bad "a session left: $(ls -A L)" || ok
+# a report killed mid-write (kill -9): its next run into --out removes them
+: >R/.attempts.csv.holonomy-tmp.$dead.AbCdEf
+: >R/.attempt-0001.png.holonomy-tmp.$dead.AbCdEf
+run "report again" 0 "$H" report L --out R &&
+    one_line "report again" "removed 2 temporary file(s) left in 'R'"
+ls -A R | grep -q holonomy-tmp && bad "report left: $(ls -A R)" || ok
 finish cli_harden_writers
