@@ -725,6 +725,126 @@ await check('the world panel on the Quest 3 (iwer has no XRQuadLayer): in the sc
     'panel line: ' + line);
 });
 
+// The world panel as a WebXR quad layer (issue 36): iwer's headset with the
+// 'layers' feature and Meta's layers polyfill (lib.mjs, layers), as the
+// Quest Browser offers them. Every draw of the panel (the C side's, when
+// its content changed) is read back from the layer's texture (the
+// polyfill's getSubImage colorTexture, through a framebuffer) and compared
+// with the same panel drawn into a texture of the test's own: equal, and
+// not the image before it. A static layer (isStatic: true) may be drawn
+// only while needsRedraw is set: there getSubImage throws at each change
+// after the first, and the panel froze.
+await check('the world panel as a WebXR quad layer (iwer with the layers polyfill): >= 20 content changes (menu, steps, prompts), each drawn into the layer\'s texture (read back: the panel\'s current image), 0 exceptions', async () => {
+  const p = await openPage('?mode=explore&seed=2', { iwer: true, layers: true });
+  try {
+    await p.page.evaluate(() => {
+      const Q = window.__quad = { calls: 0, throws: [], draws: 0, same: 0, stale: 0, repeats: 0, last: null };
+      const B = XRWebGLBinding.prototype, get = B.getSubImage;
+      B.getSubImage = function (layer, frame, eye) {
+        Q.calls++;
+        try {
+          const sub = get.call(this, layer, frame, eye);
+          Q.tex = sub.colorTexture;
+          Q.w = sub.viewport.width;
+          Q.h = sub.viewport.height;
+          return sub;
+        } catch (e) {
+          Q.throws.push(e.message);
+          throw e;
+        }
+      };
+      // a texture's pixels through a framebuffer of the test's own
+      const gl = GLctx;
+      Q.read = (tex) => {
+        const prev = gl.getParameter(gl.FRAMEBUFFER_BINDING), fb = gl.createFramebuffer();
+        gl.bindFramebuffer(gl.FRAMEBUFFER, fb);
+        gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D, tex, 0);
+        const px = new Uint8Array(Q.w * Q.h * 4);
+        gl.readPixels(0, 0, Q.w, Q.h, gl.RGBA, gl.UNSIGNED_BYTE, px);
+        gl.bindFramebuffer(gl.FRAMEBUFFER, prev);
+        gl.deleteFramebuffer(fb);
+        return px;
+      };
+      // (emscripten's first call of an export replaces Module's function
+      // with the wasm's: the wrapper stays, the new function goes under it)
+      let inner = Module._hol_web_xr_panel_draw;
+      const draw = (fb, w, h) => inner(fb, w, h);
+      // the panel of the last step drawn into the test's own texture
+      Q.reference = () => {
+        if (!Q.ref) {
+          Q.ref = gl.createTexture();
+          gl.bindTexture(gl.TEXTURE_2D, Q.ref);
+          gl.texStorage2D(gl.TEXTURE_2D, 1, gl.RGBA8, Q.w, Q.h);
+          Q.refFb = gl.createFramebuffer();
+          Q.refName = GL.getNewId(GL.framebuffers);
+          Q.refFb.name = Q.refName;
+          GL.framebuffers[Q.refName] = Q.refFb;
+          gl.bindFramebuffer(gl.FRAMEBUFFER, Q.refFb);
+          gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D, Q.ref, 0);
+        }
+        draw(Q.refName, Q.w, Q.h);
+        return Q.read(Q.ref);
+      };
+      const eq = (a, b) => a && b && a.length === b.length && a.every((v, i) => v === b[i]);
+      // the layer's texture right after each of the page's draws
+      const wrapper = function (fb, w, h) {
+        const r = draw(fb, w, h);
+        Q.draws++;
+        const got = Q.read(Q.tex);
+        if (eq(got, Q.reference())) Q.same++;
+        else Q.stale++;
+        if (eq(got, Q.last)) Q.repeats++;
+        Q.last = got;
+        return r;
+      };
+      Object.defineProperty(Module, '_hol_web_xr_panel_draw', { configurable: true,
+        get: () => wrapper, set: (f) => { inner = f; } });
+      // the layer's texture now (between frames) against the panel now
+      Q.now = () => eq(Q.read(Q.tex), Q.reference());
+    });
+    await enterVR(p);
+    const frames = async (n) => {
+      const f0 = await p.state(S.XR_FRAMES);
+      await p.until(async () => (await p.state(S.XR_FRAMES)) >= f0 + n, n + ' XR frames', 120000);
+    };
+    const press = async (hand, id) => {
+      await p.page.evaluate((h, b) => xrDevice.controllers[h].updateButtonValue(b, 1), hand, id);
+      await frames(3);
+      await p.page.evaluate((h, b) => xrDevice.controllers[h].updateButtonValue(b, 0), hand, id);
+      await frames(3);
+    };
+    await frames(5);
+    const line = p.log.find((l) => l.startsWith('web: panel '));
+    assert(/^web: panel as a WebXR quad layer/.test(line || ''), 'panel line: ' + line);
+    // the menu opened and closed: two changes each
+    for (let i = 0; i < 8; i++) await press('left', 'y-button');
+    // walks: 0.8 m north and back, each a room step
+    for (const z of [-0.8, 0, -0.8, 0]) {
+      const n = await p.state(S.STEPS);
+      await p.page.evaluate((zz) => xrDevice.position.set(0, 1.6, zz), z);
+      await p.until(async () => (await p.state(S.STEPS)) > n, 'a room step', 30000);
+      await frames(3);
+    }
+    for (let i = 0; i < 6; i++) await press('left', 'y-button');
+    await frames(3);
+    const r = await p.page.evaluate(() => {
+      const Q = window.__quad;
+      return { calls: Q.calls, throws: Q.throws, draws: Q.draws, same: Q.same, stale: Q.stale,
+        repeats: Q.repeats, now: Q.now(), redraws: Module._hol_web_xr_panel_redraws() };
+    });
+    console.log('# ' + JSON.stringify(r));
+    if (p.errors.length) console.log('# errors: ' + p.errors.slice(0, 3).join('; '));
+    assert(!r.throws.length, `${r.throws.length} getSubImage exceptions: ${r.throws[0]}`);
+    assert(r.redraws >= 20, `${r.redraws} content changes`);
+    assert(r.draws === r.redraws && r.same === r.draws && !r.stale && !r.repeats,
+      `${r.redraws} changes, ${r.draws} draws: ${r.same} the panel's image, ${r.stale} not, ${r.repeats} the image before`);
+    assert(r.now, 'the layer\'s texture is not the panel\'s current image');
+    assert(!p.errors.length, 'errors: ' + p.errors.join('; '));
+  } finally {
+    await p.ctx.close();
+  }
+});
+
 // The tolerance of the eyes against OSMesa: SwiftShader (the browser) and
 // llvmpipe (OSMesa) rasterise the same triangles with other rounding; a
 // pixel differs when a colour channel is off by more than 12 of 255, and at
