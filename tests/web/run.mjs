@@ -593,6 +593,57 @@ await check('the page in every state: why VR is unavailable (no headset; plain h
   await p.ctx.close();
 });
 
+await check('a failed Enter VR: the status says why while the pancake game plays on, and says Playing again at the game\'s restart (R)', async () => {
+  const p = await openPage('?mode=explore&seed=2', { iwer: true });
+  try {
+    await p.page.evaluate(() => {
+      navigator.xr.requestSession = () => Promise.reject(new Error('refused by the test'));
+    });
+    await p.page.waitForSelector('#vr:not([hidden])', { timeout: 10000 });
+    await p.page.click('#vr');
+    await p.until(async () => (await statusOf(p)) === 'VR failed: refused by the test', 'the failure told');
+    const f0 = await p.state(S.FRAMES);
+    await p.until(async () => (await p.state(S.FRAMES)) > f0 + 10, 'pancake frames after the failure');
+    assert((await statusOf(p)) === 'VR failed: refused by the test', 'status: ' + (await statusOf(p)));
+    await p.page.keyboard.press('KeyR');
+    await p.until(async () => (await statusOf(p)) === 'Playing', 'Playing after the restart (status: ' +
+      (await statusOf(p)) + ')', 10000);
+    assert(!p.errors.length, 'errors: ' + p.errors.join('; '));
+  } finally {
+    await p.ctx.close();
+  }
+});
+
+await check('at 320 px wide the Logs overlay (shown when the session is over) covers no button of the bar (Play again)', async () => {
+  const p = await openPage('?mode=explore&seed=2');
+  try {
+    await p.page.setViewport({ width: 320, height: 480 });
+    await p.until(async () => (await p.state(S.FRAMES)) > 5, 'frames');
+    await p.page.keyboard.press('KeyQ');
+    await p.until(async () => /^Session over/.test(await statusOf(p)), 'the session over');
+    await p.until(() => p.page.evaluate(() => !document.getElementById('logs').hidden), 'the logs shown');
+    await sleep(300); /* the bar's reflow */
+    const r = await p.page.evaluate(() => {
+      const box = (e) => { const b = e.getBoundingClientRect(); return [b.left, b.top, b.right, b.bottom]; };
+      const logs = box(document.getElementById('logs'));
+      const under = [];
+      for (const e of document.querySelectorAll('#bar button, #bar label, #bar a')) {
+        if (!e.offsetParent && getComputedStyle(e).position !== 'fixed') continue; /* hidden */
+        const b = box(e);
+        if (b[2] > logs[0] && b[0] < logs[2] && b[3] > logs[1] && b[1] < logs[3])
+          under.push((e.id || e.textContent.trim()) + ' ' + b.map(Math.round).join(','));
+      }
+      return { logs: logs.map(Math.round), under, again: !document.getElementById('again').hidden };
+    });
+    await p.page.screenshot({ path: path.join(OUT, 'page-320-logs.png') });
+    console.log('# ' + JSON.stringify(r));
+    assert(r.again && !r.under.length, 'under the Logs overlay ' + r.logs.join(',') + ': ' + r.under.join('; '));
+    assert(!p.errors.length, 'errors: ' + p.errors.join('; '));
+  } finally {
+    await p.ctx.close();
+  }
+});
+
 await check('hands without controllers (iwer\'s hand mode): two hand input sources; the panel names the menu\'s gesture; a left pinch opens the menu, a right pinch restarts there, a long pinch quits', async () => {
   const p = await openPage('?mode=explore&seed=2', { iwer: true });
   await p.page.evaluate(() => { xrDevice.primaryInputMode = 'hand'; });
