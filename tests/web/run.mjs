@@ -729,53 +729,6 @@ await check('haptics on the web: a controller into the hedge gets one short puls
   assert(off.length === 0, 'pulses with haptics=0: ' + JSON.stringify(off));
 });
 
-// ---- WebXR on iwer's Quest 3 -------------------------------------------------
-// explore, no minimap: the eyes are the world alone (as `holonomy render` draws it)
-const XR_SEED = 11;
-fs.writeFileSync(path.join(testDir, 'xr.lvl'), `mode explore\nseed ${XR_SEED}\nminimap off\n`);
-const xrOn = !ONLY || ONLY.test('Quest 3');
-const xr = xrOn ? await openPage('?level=/test/xr.lvl', { iwer: true }) : {};
-const xrState = xr.state, xrPage = xr.page;
-const xrFrames = () => xrState(S.XR_FRAMES);
-// n more XR frames, or the session's end
-async function waitFrames(n) {
-  const f0 = await xrFrames();
-  await xr.until(() => xrPage.evaluate((f) => !Module.holXR.session ||
-    Module._hol_web_state(1) >= f, f0 + n), `${n} XR frames`, 60000);
-}
-// press an iwer controller button for a few frames (fewer when the press
-// ends the session)
-async function press(hand, id) {
-  await xrPage.evaluate((h, b) => xrDevice.controllers[h].updateButtonValue(b, 1), hand, id);
-  await waitFrames(3);
-  await xrPage.evaluate((h, b) => xrDevice.controllers[h].updateButtonValue(b, 0), hand, id);
-  await waitFrames(2);
-}
-const xrCounts = () => xrPage.evaluate(() => [1, 2, 3].map((w) => Module._hol_web_state(w)));
-
-await check('Enter VR on a Quest 3 (iwer, stereo): visible and focused, >= 120 XR frames drawn in two viewports', async () => {
-  await enterVR(xr);
-  await xr.until(async () => (await xrFrames()) >= 120, '120 XR frames', 150000);
-  const vis = await xrPage.evaluate(() => Module.holXR.session.visibilityState);
-  const [frames, two, focused] = await xrCounts();
-  assert(vis === 'visible', 'visibility ' + vis);
-  assert(two === frames && focused === frames, `${frames} frames, ${two} with two views, ${focused} focused`);
-  assert((await xrState(S.PAUSED)) === 0, 'the game is paused');
-  const space = xr.log.find((l) => l.startsWith('web: xr reference space'));
-  assert(/bounded-floor|local-floor/.test(space || ''), 'reference space: ' + space);
-  await xrPage.screenshot({ path: path.join(OUT, 'xr-stereo.png') });
-});
-
-// The world panel (issue 25): iwer 2.5.0 has no WebXR layers, so the page
-// falls back to the panel in the scene and says why (the quad path:
-// tests/web/quad_check.mjs on stubs; no real browser here).
-await check('the world panel on the Quest 3 (iwer has no XRQuadLayer): in the scene, said on the console', async () => {
-  const line = xr.log.find((l) => l.startsWith('web: panel '));
-  console.log('# ' + line);
-  assert(/^web: panel in the scene: (the browser has no XRWebGLBinding.createQuadLayer|the session was not granted the layers feature)$/.test(line || ''),
-    'panel line: ' + line);
-});
-
 // The world panel as a WebXR quad layer (issue 36): iwer's headset with the
 // 'layers' feature and Meta's layers polyfill (lib.mjs, layers), as the
 // Quest Browser offers them. Every draw of the panel (the C side's, when
@@ -894,6 +847,54 @@ await check('the world panel as a WebXR quad layer (iwer with the layers polyfil
   } finally {
     await p.ctx.close();
   }
+});
+
+// ---- WebXR on iwer's Quest 3 -------------------------------------------------
+// explore, no minimap: the eyes are the world alone (as `holonomy render` draws it)
+const XR_SEED = 11;
+fs.writeFileSync(path.join(testDir, 'xr.lvl'), `mode explore\nseed ${XR_SEED}\nminimap off\n`);
+const xrOn = !ONLY || ONLY.test('Quest 3');
+const xr = xrOn ? await openPage('?level=/test/xr.lvl', { iwer: true }) : {};
+const xrState = xr.state, xrPage = xr.page;
+const xrFrames = () => xrState(S.XR_FRAMES);
+// n more XR frames, or the session's end
+async function waitFrames(n) {
+  const f0 = await xrFrames();
+  await xr.until(() => xrPage.evaluate((f) => !Module.holXR.session ||
+    Module._hol_web_state(1) >= f, f0 + n), `${n} XR frames`, 60000);
+}
+// press an iwer controller button for a few frames (fewer when the press
+// ends the session)
+async function press(hand, id) {
+  await xrPage.evaluate((h, b) => xrDevice.controllers[h].updateButtonValue(b, 1), hand, id);
+  await waitFrames(3);
+  await xrPage.evaluate((h, b) => xrDevice.controllers[h].updateButtonValue(b, 0), hand, id);
+  await waitFrames(2);
+}
+const xrCounts = () => xrPage.evaluate(() => [1, 2, 3].map((w) => Module._hol_web_state(w)));
+
+await check('Enter VR on a Quest 3 (iwer, stereo): visible and focused, >= 120 XR frames drawn in two viewports', async () => {
+  await enterVR(xr);
+  await xr.until(async () => (await xrFrames()) >= 120, '120 XR frames', 150000);
+  const vis = await xrPage.evaluate(() => Module.holXR.session.visibilityState);
+  const [frames, two, focused] = await xrCounts();
+  assert(vis === 'visible', 'visibility ' + vis);
+  assert(two === frames && focused === frames, `${frames} frames, ${two} with two views, ${focused} focused`);
+  assert((await xrState(S.PAUSED)) === 0, 'the game is paused');
+  const space = xr.log.find((l) => l.startsWith('web: xr reference space'));
+  assert(/bounded-floor|local-floor/.test(space || ''), 'reference space: ' + space);
+  await xrPage.screenshot({ path: path.join(OUT, 'xr-stereo.png') });
+});
+
+// The world panel (issue 25): iwer 2.5.0's Quest 3 grants no 'layers' (and
+// without its polyfill its XRWebGLBinding has no createQuadLayer), so the
+// page falls back to the panel in the scene and says why (the quad path:
+// the polyfill's check below, and tests/web/quad_check.mjs on stubs).
+await check('the world panel on the Quest 3 (iwer has no XRQuadLayer): in the scene, said on the console', async () => {
+  const line = xr.log.find((l) => l.startsWith('web: panel '));
+  console.log('# ' + line);
+  assert(/^web: panel in the scene: (the browser has no XRWebGLBinding.createQuadLayer|the session was not granted the layers feature)$/.test(line || ''),
+    'panel line: ' + line);
 });
 
 // The tolerance of the eyes against OSMesa: SwiftShader (the browser) and
