@@ -65,7 +65,7 @@ var HolWebLib = {
           if ('blendTextureSourceAlpha' in layer) layer.blendTextureSourceAlpha = true;
           s.updateRenderState({ layers: [base, layer] }); // back to front
           HolXR.quad = { binding: binding, layer: layer, fb: gl.createFramebuffer(), fbName: 0,
-            retry: 0, failed: 0 };
+            retry: 0, failed: 0, shown: 0 };
         } catch (e) {
           m = { mode: 'scene', why: 'the quad layer failed (' + e.message + ')' };
           HolXR.quad = null;
@@ -79,17 +79,21 @@ var HolWebLib = {
     },
 
     // After the step: the quad placed, and drawn when its content changed
-    // (or the browser lost its texture, or the last draw failed).
+    // (or the browser lost its texture, or the last draw failed); no panel
+    // this frame (none, or the view faded out): its texture cleared once
+    // (transparent), and drawn anew when the panel is back.
     quadFrame: function (xrf) {
       var q = HolXR.quad;
       var r = Module['_hol_web_xr_panel_place'](q.layer.needsRedraw || q.retry ? 1 : 0);
-      if (!r) return;
-      var o = Module['_hol_web_xr_panel_buffer']() >> 2, f = HEAPF32;
-      q.layer.transform = new XRRigidTransform(
-        { x: f[o], y: f[o + 1], z: f[o + 2] }, { x: f[o + 3], y: f[o + 4], z: f[o + 5], w: f[o + 6] });
-      q.layer.width = f[o + 7];
-      q.layer.height = f[o + 8];
-      if (r !== 2) return;
+      if (!r && !q.shown) return;
+      if (r) {
+        var o = Module['_hol_web_xr_panel_buffer']() >> 2, f = HEAPF32;
+        q.layer.transform = new XRRigidTransform(
+          { x: f[o], y: f[o + 1], z: f[o + 2] }, { x: f[o + 3], y: f[o + 4], z: f[o + 5], w: f[o + 6] });
+        q.layer.width = f[o + 7];
+        q.layer.height = f[o + 8];
+      }
+      if (r === 1) return;
       q.retry = 1; // until the draw is done
       var gl = GLctx, sub;
       try {
@@ -106,7 +110,15 @@ var HolWebLib = {
       gl.bindFramebuffer(gl.FRAMEBUFFER, q.fb);
       gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D,
         sub.colorTexture, 0);
+      if (!r) {
+        gl.clearColor(0, 0, 0, 0);
+        gl.clear(gl.COLOR_BUFFER_BIT);
+        gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+        q.shown = 0; // q.retry stays: the panel drawn again when back
+        return;
+      }
       q.retry = Module['_hol_web_xr_panel_draw'](q.fbName, sub.viewport.width, sub.viewport.height);
+      q.shown = 1;
     },
 
     scale: 1.0,       // XRWebGLLayer framebufferScaleFactor: the recommended size

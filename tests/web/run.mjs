@@ -738,7 +738,7 @@ await check('haptics on the web: a controller into the hedge gets one short puls
 // not the image before it. A static layer (isStatic: true) may be drawn
 // only while needsRedraw is set: there getSubImage throws at each change
 // after the first, and the panel froze.
-await check('the world panel as a WebXR quad layer (iwer with the layers polyfill): >= 20 content changes (menu, steps, prompts), each drawn into the layer\'s texture (read back: the panel\'s current image), 0 exceptions', async () => {
+await check('the world panel as a WebXR quad layer (iwer with the layers polyfill): >= 20 content changes (menu, steps, prompts), each drawn into the layer\'s texture (read back: the panel\'s current image), 0 exceptions; transparent while the view is faded out (out of the room), the panel again back in', async () => {
   const p = await openPage('?mode=explore&seed=2', { iwer: true, layers: true });
   try {
     await p.page.evaluate(() => {
@@ -843,6 +843,22 @@ await check('the world panel as a WebXR quad layer (iwer with the layers polyfil
     assert(r.draws === r.redraws && r.same === r.draws && !r.stale && !r.repeats,
       `${r.redraws} changes, ${r.draws} draws: ${r.same} the panel's image, ${r.stale} not, ${r.repeats} the image before`);
     assert(r.now, 'the layer\'s texture is not the panel\'s current image');
+    // out of the room (the view faded out: no panel this frame, as the eyes
+    // without the layer would show none) the quad is transparent, and back
+    // in, the panel again
+    await p.page.evaluate(() => xrDevice.position.set(2.6, 1.6, 0));
+    await frames(5);
+    const alpha = await p.page.evaluate(() => {
+      const px = window.__quad.read(window.__quad.tex);
+      let a = 0;
+      for (let i = 3; i < px.length; i += 4) a = Math.max(a, px[i]);
+      return a;
+    });
+    await p.page.evaluate(() => xrDevice.position.set(0, 1.6, 0));
+    await frames(5);
+    const back = await p.page.evaluate(() => window.__quad.now());
+    console.log(`# out of the room: the quad's largest alpha ${alpha}; back in, the panel's image: ${back}`);
+    assert(alpha === 0 && back, `out of the room: alpha ${alpha}; back in, the panel: ${back}`);
     assert(!p.errors.length, 'errors: ' + p.errors.join('; '));
   } finally {
     await p.ctx.close();
