@@ -738,8 +738,10 @@ await check('haptics on the web: a controller into the hedge gets one short puls
 // not the image before it. A static layer (isStatic: true) may be drawn
 // only while needsRedraw is set: there getSubImage throws at each change
 // after the first, and the panel froze.
-await check('the world panel as a WebXR quad layer (iwer with the layers polyfill): >= 20 content changes (menu, steps, prompts), each drawn into the layer\'s texture (read back: the panel\'s current image), 0 exceptions; transparent while the view is faded out (out of the room), the panel again back in', async () => {
-  const p = await openPage('?mode=explore&seed=2', { iwer: true, layers: true });
+await check('the world panel as a WebXR quad layer (iwer with the layers polyfill): >= 20 content changes (steps, menu, end screen), each drawn into the layer\'s texture (read back: the panel\'s current image), 0 exceptions; transparent while the view is faded out (out of the room), the panel again back in', async () => {
+  // a level of 25 s: its end screen ("Time up") is the last change
+  fs.writeFileSync(path.join(testDir, 'quad.lvl'), 'mode explore\nseed 2\ntime-limit 25\n');
+  const p = await openPage('?level=/test/quad.lvl', { iwer: true, layers: true });
   try {
     await p.page.evaluate(() => {
       const Q = window.__quad = { calls: 0, throws: [], draws: 0, same: 0, stale: 0, repeats: 0, last: null };
@@ -820,8 +822,6 @@ await check('the world panel as a WebXR quad layer (iwer with the layers polyfil
     await frames(5);
     const line = p.log.find((l) => l.startsWith('web: panel '));
     assert(/^web: panel as a WebXR quad layer/.test(line || ''), 'panel line: ' + line);
-    // the menu opened and closed: two changes each
-    for (let i = 0; i < 8; i++) await press('left', 'y-button');
     // walks: 0.8 m north and back, each a room step
     for (const z of [-0.8, 0, -0.8, 0]) {
       const n = await p.state(S.STEPS);
@@ -829,7 +829,10 @@ await check('the world panel as a WebXR quad layer (iwer with the layers polyfil
       await p.until(async () => (await p.state(S.STEPS)) > n, 'a room step', 30000);
       await frames(3);
     }
-    for (let i = 0; i < 6; i++) await press('left', 'y-button');
+    // the menu opened and closed: two changes each
+    for (let i = 0; i < 12; i++) await press('left', 'y-button');
+    // the level's end screen
+    await p.until(async () => (await p.state(S.APP_STATE)) === 2, 'the end screen (time up)', 60000);
     await frames(3);
     const r = await p.page.evaluate(() => {
       const Q = window.__quad;
