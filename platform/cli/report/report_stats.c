@@ -69,8 +69,8 @@ static int order_attempts(const report_run *r, report_stats *s)
     return 0;
 }
 
-/* The condition of (dir, session, attempt): its attempt's, else "none". */
-static int find_cond(const report_run *r, int dir, const char *session, long attempt)
+/* The attempt (dir, session, attempt): its index in r->att, else -1. */
+static int find_att(const report_run *r, int dir, const char *session, long attempt)
 {
     const report_stats *s = r->stats;
     int lo = 0, hi = r->natt;
@@ -81,13 +81,20 @@ static int find_cond(const report_run *r, int dir, const char *session, long att
         if (!c)
             c = t->a.attempt < attempt ? -1 : t->a.attempt > attempt;
         if (!c)
-            return s->att_cond[s->order[m]];
+            return s->order[m];
         if (c < 0)
             lo = m + 1;
         else
             hi = m;
     }
-    return s->none;
+    return -1;
+}
+
+/* The condition of (dir, session, attempt): its attempt's, else "none". */
+static int find_cond(const report_run *r, int dir, const char *session, long attempt)
+{
+    int i = find_att(r, dir, session, attempt);
+    return i < 0 ? r->stats->none : r->stats->att_cond[i];
 }
 
 /* ---- CSV files of the instruments, read by column name ---- */
@@ -187,10 +194,14 @@ static int read_points(report_run *r, int d, rs_csv *c)
             got = -bad(c, k0 != 1 ? "attempt is not a number" : "an error is not a number");
             break;
         }
-        int ci = find_cond(r, d, field(c, P_SESSION), (long)att);
+        int ai = find_att(r, d, field(c, P_SESSION), (long)att);
+        int ci = ai < 0 ? s->none : s->att_cond[ai];
         for (int k = 0; k < 2; k++)
-            if ((k ? k2 : k1) == 1)
+            if ((k ? k2 : k1) == 1) {
                 hol_stats_add(&s->fix[ci * RS_NFIX + RS_ERR_TRUE + k], e[k] < 0 ? -e[k] : e[k]);
+                if (ai >= 0) /* the attempt's answers (report_pstats.c) */
+                    hol_stats_add(&s->tpt[2 * ai + k], e[k] < 0 ? -e[k] : e[k]);
+            }
     }
     hol_lines_close(&c->l);
     return got < 0 ? -got : 0;
@@ -607,6 +618,7 @@ static int alloc_stats(report_run *r)
     if (!s || !(s->cond = malloc(sizeof *s->cond * n)) ||
         !(s->att_cond = malloc(sizeof *s->att_cond * n)) ||
         !(s->order = malloc(sizeof *s->order * n)) ||
+        !(s->tpt = calloc(2 * n, sizeof *s->tpt)) ||
         !(s->fix = calloc(n * RS_NFIX, sizeof *s->fix)) ||
         !(s->lik = malloc(sizeof *s->lik * RS_LIK_MAX)) ||
         !(s->slot = malloc(sizeof *s->slot * RS_LIK_SLOTS)) ||
@@ -675,7 +687,7 @@ void report_stats_free(report_run *r)
     report_stats *s = r->stats;
     if (!s)
         return;
-    void *own[] = {s->cond, s->att_cond, s->order, s->fix, s->lik, s->slot, s->learn,
+    void *own[] = {s->cond, s->att_cond, s->order, s->tpt, s->fix, s->lik, s->slot, s->learn,
                    s->prow, s->seen, s->pts, s->used, s->nrange, s};
     for (size_t i = 0; i < sizeof own / sizeof own[0]; i++)
         free(own[i]);
