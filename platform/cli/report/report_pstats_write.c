@@ -85,53 +85,81 @@ static void summary(FILE *f, const hol_stats *st, double k, int with_sd, int las
     }
 }
 
+/* Each condition and measure of participants_stats.csv, in its order. */
+typedef void (*row_fn)(FILE *f, const report_run *r, int c, int m, const ps_row *w);
+static void each_row(FILE *f, const report_run *r, row_fn fn)
+{
+    const report_pstats *p = r->pstats;
+    for (int c = 0; c < r->stats->ncond; c++)
+        for (int m = 0; m < PS_NM; m++)
+            if (p->group[c] >= 0 && p->row[c * PS_NM + m].between.n)
+                fn(f, r, c, m, &p->row[c * PS_NM + m]);
+}
+
+/* Each pair of paired.csv (conditions ca before cb), in its order. */
+typedef void (*pair_fn)(FILE *f, const report_run *r, int m, int ca, int cb, const hol_stats *d);
+static void each_pair(FILE *f, const report_run *r, pair_fn fn)
+{
+    const report_pstats *p = r->pstats;
+    for (int g = 0; g < p->npg; g++)
+        for (int m = 0; m < PS_NM; m++)
+            for (int a = 0; a < p->pg[g].n; a++)
+                for (int b = a + 1; b < p->pg[g].n; b++) {
+                    const ps_pairs *pg = &p->pg[g];
+                    const hol_stats *d = &p->pair[pg->off + ((size_t)a * pg->n + b) * PS_NM + m];
+                    if (d->n)
+                        fn(f, r, m, pg->first + a, pg->first + b, d);
+                }
+}
+
+static void stats_row(FILE *f, const report_run *r, int c, int m, const ps_row *w)
+{
+    report_csv(f, r->stats->cond[c].study, 0);
+    report_csv(f, r->stats->cond[c].condition, 0);
+    fprintf(f, "%s,%ld,%ld,", ps_measure[m], w->between.n, w->trials);
+    summary(f, &w->between, 1, 1, 0);
+    fprintf(f, "%d,%ld,", w->J, w->within.n);
+    summary(f, &w->within, w->J >= 2 ? sqrt((double)w->J / (w->J - 1)) : 0, 0, 1);
+}
+
 static int participants_stats_csv(FILE *f, const report_run *r, const void *ctx)
 {
-    const report_stats *s = r->stats;
-    const report_pstats *p = r->pstats;
     (void)ctx;
     fputs("study,condition,measure,participants,trials,mean,sd,ci_low,ci_high,conditions,"
           "n_within,mean_within,ci_within_low,ci_within_high\n", f);
-    for (int c = 0; c < s->ncond; c++)
-        for (int m = 0; m < PS_NM; m++) {
-            const ps_row *w = &p->row[c * PS_NM + m];
-            if (p->group[c] < 0 || !w->between.n)
-                continue;
-            report_csv(f, s->cond[c].study, 0);
-            report_csv(f, s->cond[c].condition, 0);
-            fprintf(f, "%s,%ld,%ld,", ps_measure[m], w->between.n, w->trials);
-            summary(f, &w->between, 1, 1, 0);
-            fprintf(f, "%d,%ld,", w->J, w->within.n);
-            summary(f, &w->within, w->J >= 2 ? sqrt((double)w->J / (w->J - 1)) : 0, 0, 1);
-        }
+    each_row(f, r, stats_row);
     return 0;
+}
+
+/* d_z: the mean difference over the SD of the differences: 1 and *out,
+ * 0 when it is not defined (n under 2, no spread). */
+static int dz(const hol_stats *d, double *out)
+{
+    if (d->n < 2 || d->m2 <= 0)
+        return 0;
+    *out = d->mean / sqrt(d->m2 / (double)(d->n - 1));
+    return 1;
+}
+
+static void pair_row(FILE *f, const report_run *r, int m, int ca, int cb, const hol_stats *d)
+{
+    double z;
+    report_csv(f, r->stats->cond[ca].study, 0);
+    fprintf(f, "%s,", ps_measure[m]);
+    report_csv(f, r->stats->cond[ca].condition, 0);
+    report_csv(f, r->stats->cond[cb].condition, 0);
+    fprintf(f, "%ld,", d->n);
+    summary(f, d, 1, 1, 0);
+    if (dz(d, &z))
+        fprintf(f, "%.15g", z);
+    fputc('\n', f);
 }
 
 static int paired_csv(FILE *f, const report_run *r, const void *ctx)
 {
-    const report_stats *s = r->stats;
-    const report_pstats *p = r->pstats;
     (void)ctx;
     fputs("study,measure,condition_a,condition_b,n,mean_diff,sd_diff,ci_low,ci_high,dz\n", f);
-    for (int g = 0; g < p->npg; g++) {
-        const ps_pairs *pg = &p->pg[g];
-        for (int m = 0; m < PS_NM; m++)
-            for (int a = 0; a < pg->n; a++)
-                for (int b = a + 1; b < pg->n; b++) {
-                    const hol_stats *d = &p->pair[pg->off + ((size_t)a * pg->n + b) * PS_NM + m];
-                    if (!d->n)
-                        continue;
-                    report_csv(f, s->cond[pg->first].study, 0);
-                    fprintf(f, "%s,", ps_measure[m]);
-                    report_csv(f, s->cond[pg->first + a].condition, 0);
-                    report_csv(f, s->cond[pg->first + b].condition, 0);
-                    fprintf(f, "%ld,", d->n);
-                    summary(f, d, 1, 1, 0);
-                    if (d->n >= 2 && d->m2 > 0)
-                        fprintf(f, "%.15g", d->mean / sqrt(d->m2 / (double)(d->n - 1)));
-                    fputc('\n', f);
-                }
-    }
+    each_pair(f, r, pair_row);
     return 0;
 }
 
@@ -162,10 +190,41 @@ static void cell_interval(FILE *f, const hol_stats *st, double k, int show_n)
     fputs("</td>", f);
 }
 
-static void pstats_table(FILE *f, const report_run *r)
+static void html_row(FILE *f, const report_run *r, int c, int m, const ps_row *w)
 {
-    const report_stats *s = r->stats;
-    const report_pstats *p = r->pstats;
+    fputs("<tr><td>", f);
+    rs_cond_name(f, &r->stats->cond[c]);
+    fprintf(f, "</td><td>%s</td><td class=\"n\">%ld (%ld)</td><td class=\"n\">%.3f</td>",
+            ps_measure[m], w->between.n, w->trials, w->between.mean);
+    if (w->between.n >= 2)
+        fprintf(f, "<td class=\"n\">%.3f</td>", sqrt(w->between.m2 / (double)(w->between.n - 1)));
+    else
+        fputs("<td></td>", f);
+    cell_interval(f, &w->between, 1, 0);
+    cell_interval(f, &w->within, w->J >= 2 ? sqrt((double)w->J / (w->J - 1)) : 0, 1);
+    fputs("</tr>\n", f);
+}
+
+static void html_pair(FILE *f, const report_run *r, int m, int ca, int cb, const hol_stats *d)
+{
+    double z;
+    fprintf(f, "<tr><td>%s</td><td>", ps_measure[m]);
+    rs_cond_name(f, &r->stats->cond[ca]);
+    fputs("</td><td>", f);
+    rs_cond_name(f, &r->stats->cond[cb]);
+    fprintf(f, "</td><td class=\"n\">%ld</td><td class=\"n\">%.3f</td>", d->n, d->mean);
+    cell_interval(f, d, 1, 0);
+    if (dz(d, &z))
+        fprintf(f, "<td class=\"n\">%.3f</td>", z);
+    else
+        fputs("<td></td>", f);
+    fputs("</tr>\n", f);
+}
+
+void report_pstats_html(FILE *f, const report_run *r)
+{
+    if (!r->stats || !r->pstats)
+        return;
     fputs("<h3>Participant-level statistics</h3>\n<p>Each participant's mean per condition "
           "(over their completed trials outside practice, duplicates and restarted runs: "
           "<a href=\"trials.csv\">trials.csv</a>'s <code>excluded</code>), then over the "
@@ -177,66 +236,15 @@ static void pstats_table(FILE *f, const report_run *r)
           "participants_stats.csv</a>, <a href=\"paired.csv\">paired.csv</a>.</p>\n<table>\n"
           "<tr><th>condition</th><th>measure</th><th>participants (trials)</th><th>mean</th>"
           "<th>SD</th><th>95 % CI between</th><th>95 % CI within (n)</th></tr>\n", f);
-    for (int c = 0; c < s->ncond; c++)
-        for (int m = 0; m < PS_NM; m++) {
-            const ps_row *w = &p->row[c * PS_NM + m];
-            if (p->group[c] < 0 || !w->between.n)
-                continue;
-            fputs("<tr><td>", f);
-            rs_cond_name(f, &s->cond[c]);
-            fprintf(f, "</td><td>%s</td><td class=\"n\">%ld (%ld)</td><td class=\"n\">%.3f</td>",
-                    ps_measure[m], w->between.n, w->trials, w->between.mean);
-            if (w->between.n >= 2)
-                fprintf(f, "<td class=\"n\">%.3f</td>",
-                        sqrt(w->between.m2 / (double)(w->between.n - 1)));
-            else
-                fputs("<td></td>", f);
-            cell_interval(f, &w->between, 1, 0);
-            cell_interval(f, &w->within, w->J >= 2 ? sqrt((double)w->J / (w->J - 1)) : 0, 1);
-            fputs("</tr>\n", f);
-        }
+    each_row(f, r, html_row);
     fputs("</table>\n", f);
-}
-
-static void paired_table(FILE *f, const report_run *r)
-{
-    const report_stats *s = r->stats;
-    const report_pstats *p = r->pstats;
+    if (!r->pstats->npg)
+        return;
     fputs("<h3>Paired differences</h3>\n<p>For each pair of a study's conditions, A &minus; B "
           "over the participants with a mean in both: n, the mean difference, its 95 % CI "
           "(Student's t) and Cohen's d<sub>z</sub> (the mean difference over the SD of the "
           "differences).</p>\n<table>\n<tr><th>measure</th><th>A</th><th>B</th><th>n</th>"
           "<th>A &minus; B</th><th>95 % CI</th><th>d<sub>z</sub></th></tr>\n", f);
-    for (int g = 0; g < p->npg; g++)
-        for (int m = 0; m < PS_NM; m++)
-            for (int a = 0; a < p->pg[g].n; a++)
-                for (int b = a + 1; b < p->pg[g].n; b++) {
-                    const ps_pairs *pg = &p->pg[g];
-                    const hol_stats *d = &p->pair[pg->off + ((size_t)a * pg->n + b) * PS_NM + m];
-                    if (!d->n)
-                        continue;
-                    fprintf(f, "<tr><td>%s</td><td>", ps_measure[m]);
-                    rs_cond_name(f, &s->cond[pg->first + a]);
-                    fputs("</td><td>", f);
-                    rs_cond_name(f, &s->cond[pg->first + b]);
-                    fprintf(f, "</td><td class=\"n\">%ld</td><td class=\"n\">%.3f</td>", d->n,
-                            d->mean);
-                    cell_interval(f, d, 1, 0);
-                    if (d->n >= 2 && d->m2 > 0)
-                        fprintf(f, "<td class=\"n\">%.3f</td>",
-                                d->mean / sqrt(d->m2 / (double)(d->n - 1)));
-                    else
-                        fputs("<td></td>", f);
-                    fputs("</tr>\n", f);
-                }
+    each_pair(f, r, html_pair);
     fputs("</table>\n", f);
-}
-
-void report_pstats_html(FILE *f, const report_run *r)
-{
-    if (!r->stats || !r->pstats)
-        return;
-    pstats_table(f, r);
-    if (r->pstats->npg)
-        paired_table(f, r);
 }
