@@ -14,8 +14,9 @@
  *   participant's value in a condition is the mean over their included
  *   trials; the statistics are over participants. 0, or CLI_EXIT_FAIL out
  *   of memory (one line said).
- * - The 95 % intervals use report_t975 (Student's t quantile computed to
- *   about 1e-14 with the C library, so R's qt agrees to 1e-9).
+ * - The 95 % intervals use report_t975 (Student's t quantile computed
+ *   with the C library to 1e-12 relative, 1e-15 below 50 degrees of
+ *   freedom, so R's qt agrees to 1e-9).
  * - report_pstats_write writes the three CSVs atomically (numbers with
  *   15 significant digits); report_pstats_html the page's section into f.
  *   O(n log n) in the attempts, plus the pairs of a study's conditions
