@@ -15,7 +15,8 @@ HERE=$(dirname "$0")
 S='session,participant,session_start,version,attempt,study,condition,position,level,level_sha256,mode,seed,cues,tiling,room,cell,started,steps,optimum,time,end'
 P='session,participant,attempt,level,t,target,pointed,true,flat,error_true,error_flat,time'
 # study: practice at position 0; conditions map-q5, map-q6, nomap-q5,
-# nomap-q6 (their factors: minimap on/off x {4,5}/{4,6}) in the order
+# nomap-q6 (their factors: the cues bits 3/1 standing for the minimap
+# on/off, no level files here, x {4,5}/{4,6}) in the order
 # the participant's number gives (a rotation here), two levels each.
 # gen DIR SESSION PARTICIPANT ROT [SKIP_COND] [ENDS]: rows of one session;
 # ENDS "k:END" makes the k-th row (1-based, practice first) end so.
@@ -45,8 +46,9 @@ gen() {
                 steps = opt + int(seed / 7) % 5 + (cond ~ /nomap/ ? 2 : 0)
                 t = 8 + steps * 1.37 + (seed % 1000) / 250
                 end = (n == e[1]) ? e[2] : "done"
-                printf "%s,%s,2026-01-31T14:05:09Z,0.1.0,%d,s2x2,%s,%d,%s%d,sha%s%d,flag,5,,\"4,%d\",3x3,1,0,%d,%d,%.3f,%s\n", \
-                    ses, p, att, cond, k, cond, l, cond, l, q, steps, opt, t, end >> sum
+                cues = cond ~ /nomap/ ? 1 : 3
+                printf "%s,%s,2026-01-31T14:05:09Z,0.1.0,%d,s2x2,%s,%d,%s%d,sha%s%d,flag,5,%d,\"4,%d\",3x3,1,0,%d,%d,%.3f,%s\n", \
+                    ses, p, att, cond, k, cond, l, cond, l, cues, q, steps, opt, t, end >> sum
                 err = ((seed % 900) - 450) / 10 + (cond ~ /nomap/ ? 12.5 : 0)
                 flat = (seed % 3 == 0) ? "" : sprintf("%.1f", err / 2 - 3)
                 printf "%s,%s,%d,%s%d,%.3f,start,10,0,0,%.1f,%s,2.5\n", ses, p, att, cond, l, \
@@ -89,6 +91,10 @@ grep -q '^s2x2,map-q5,steps,6,11,' "$T/r/participants_stats.csv" && ok ||
     bad "map-q5 steps: $(grep '^s2x2,map-q5,steps' "$T/r/participants_stats.csv")"
 grep -q '^s2x2,map-q5,steps,.*,4,5,' "$T/r/participants_stats.csv" && ok ||
     bad "map-q5 steps within: $(grep '^s2x2,map-q5,steps' "$T/r/participants_stats.csv")"
+# the factors a pair differs in
+grep -q '^s2x2,steps,map-q5,map-q6,q,6,' "$T/r/paired.csv" && grep -q '^s2x2,steps,map-q5,nomap-q5,cues,6,' "$T/r/paired.csv" &&
+    grep -q '^s2x2,steps,map-q5,nomap-q6,q cues,5,' "$T/r/paired.csv" && ok ||
+    bad "paired.csv differ: $(sed -n 2,4p "$T/r/paired.csv")"
 grep -q 'Participant-level statistics' "$T/r/index.html" && grep -q 'within-subjects' "$T/r/index.html" &&
     grep -q 'Paired differences' "$T/r/index.html" && ok || bad "the page has no participant-level section"
 
@@ -110,7 +116,7 @@ if Rscript "$HERE/report_referee.R" "$T/w" >"$T/rout" 2>&1; then bad "a wrong me
     grep -q 'mean' "$T/rout" && ok || bad "R's failure names no figure: $(cat "$T/rout")"
 fi
 cp "$T/r/participants_stats.csv" "$T/w/"
-awk -F, 'BEGIN { OFS = "," } NR == 2 { $10 = sprintf("%.15g", $10 * 1.000001) } { print }' "$T/r/paired.csv" \
+awk -F, 'BEGIN { OFS = "," } NR == 2 { $11 = sprintf("%.15g", $11 * 1.000001) } { print }' "$T/r/paired.csv" \
     >"$T/w/paired.csv"
 if Rscript "$HERE/report_referee.R" "$T/w" >"$T/rout" 2>&1; then bad "a wrong d_z passed"; else ok; fi
 finish cli_report_r

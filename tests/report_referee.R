@@ -21,7 +21,7 @@ tr <- read.csv(file.path(dir, "trials.csv"), stringsAsFactors = FALSE, na.string
 ps <- rd("participants_stats.csv")
 pd <- read.csv(file.path(dir, "paired.csv"), stringsAsFactors = FALSE, na.strings = "",
                colClasses = c(study = "character", condition_a = "character",
-                              condition_b = "character"))
+                              condition_b = "character", differ = "character"))
 tr$study[is.na(tr$study)] <- ""
 ps$study[is.na(ps$study)] <- ""
 pd$study[is.na(pd$study)] <- ""
@@ -102,6 +102,14 @@ for (st in unique(inc$study)) {
                 next
             }
             seen_pairs <- seen_pairs + 1
+            fa <- d[d$condition == cm[a], ][1, ]
+            fb <- d[d$condition == cm[b], ][1, ]
+            f <- c("q", "room", "cell", "cues", "minimap")
+            df <- f[!mapply(function(k) identical(fa[[k]], fb[[k]]), f)]
+            want <- if (length(df)) paste(df, collapse = " ") else NA
+            checked <- checked + 1
+            if (!identical(row$differ, want))
+                wrong <- c(wrong, sprintf("%s differ: report %s, R %s", what, row$differ, want))
             same(paste(what, "n"), row$n, length(dd))
             same(paste(what, "mean_diff"), row$mean_diff, mean(dd))
             same(paste(what, "sd_diff"), row$sd_diff, if (length(dd) > 1) sd(dd) else NA)

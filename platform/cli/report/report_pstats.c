@@ -169,6 +169,11 @@ static int make_cells(const report_run *r, report_pstats *p)
         return -1;
     }
     int n = 0;
+    for (int c = 0; c < s->ncond; c++)
+        p->first[c] = -1;
+    for (int i = 0; i < r->natt; i++)
+        if (!p->excl[i] && p->first[s->att_cond[i]] < 0)
+            p->first[s->att_cond[i]] = i;
     for (int i = 0; i < r->natt; i++)
         if (!p->excl[i])
             k[n++] = (ps_key){NULL, r->att[i].a.participant, i, s->att_cond[i],
@@ -337,6 +342,7 @@ int report_pstats_compute(report_run *r)
     int ok = p && (p->excl = calloc(n, sizeof *p->excl)) &&
              (p->trial = calloc(n, sizeof *p->trial)) &&
              (p->group = calloc(nc, sizeof *p->group)) &&
+             (p->first = calloc(nc, sizeof *p->first)) &&
              (p->row = calloc(nc * PS_NM, sizeof *p->row)) &&
              (p->pg = calloc(nc, sizeof *p->pg)) && !exclusions(r, p);
     if (ok)
@@ -357,7 +363,7 @@ void report_pstats_free(report_run *r)
     report_pstats *p = r->pstats;
     if (!p)
         return;
-    void *own[] = {p->excl, p->trial, p->group, p->row, p->pg, p->cell, p->pair, p};
+    void *own[] = {p->excl, p->trial, p->group, p->first, p->row, p->pg, p->cell, p->pair, p};
     for (size_t i = 0; i < sizeof own / sizeof own[0]; i++)
         free(own[i]);
     r->pstats = NULL;

@@ -43,6 +43,7 @@ typedef struct report_pstats {
     int *excl;   /* per attempt: PX_* */
     int *trial;  /* per attempt: its number within the study's participant */
     int *group;  /* per condition: its study's first condition; -1 none */
+    int *first;  /* per condition: its first included attempt, -1 none */
     ps_row *row; /* ncond x PS_NM */
     ps_cell *cell;
     int ncell;

@@ -141,6 +141,27 @@ static int dz(const hol_stats *d, double *out)
     return 1;
 }
 
+/* The factor columns of trials.csv in which conditions ca and cb differ
+ * (their first included trials'), space-separated, then end (',' in the
+ * CSV, "" on the page). */
+static void differ(FILE *f, const report_run *r, int ca, int cb, const char *end)
+{
+    const int ia = r->pstats->first[ca], ib = r->pstats->first[cb];
+    const report_att *x = &r->att[ia < 0 ? 0 : ia], *y = &r->att[ib < 0 ? 0 : ib];
+    const int d[5] = {x->a.tiling_q != y->a.tiling_q,
+                      x->a.room_cols != y->a.room_cols || x->a.room_rows != y->a.room_rows,
+                      x->a.cell_m != y->a.cell_m, x->a.cues != y->a.cues,
+                      x->minimap != y->minimap};
+    static const char *const name[5] = {"q", "room", "cell", "cues", "minimap"};
+    const char *sep = "";
+    for (int k = 0; ia >= 0 && ib >= 0 && k < 5; k++)
+        if (d[k]) {
+            fprintf(f, "%s%s", sep, name[k]);
+            sep = " ";
+        }
+    fputs(end, f);
+}
+
 static void pair_row(FILE *f, const report_run *r, int m, int ca, int cb, const hol_stats *d)
 {
     double z;
@@ -148,6 +169,7 @@ static void pair_row(FILE *f, const report_run *r, int m, int ca, int cb, const 
     fprintf(f, "%s,", ps_measure[m]);
     report_csv(f, r->stats->cond[ca].condition, 0);
     report_csv(f, r->stats->cond[cb].condition, 0);
+    differ(f, r, ca, cb, ",");
     fprintf(f, "%ld,", d->n);
     summary(f, d, 1, 1, 0);
     if (dz(d, &z))
@@ -158,7 +180,8 @@ static void pair_row(FILE *f, const report_run *r, int m, int ca, int cb, const 
 static int paired_csv(FILE *f, const report_run *r, const void *ctx)
 {
     (void)ctx;
-    fputs("study,measure,condition_a,condition_b,n,mean_diff,sd_diff,ci_low,ci_high,dz\n", f);
+    fputs("study,measure,condition_a,condition_b,differ,n,mean_diff,sd_diff,ci_low,ci_high,dz\n",
+          f);
     each_pair(f, r, pair_row);
     return 0;
 }
@@ -212,6 +235,8 @@ static void html_pair(FILE *f, const report_run *r, int m, int ca, int cb, const
     rs_cond_name(f, &r->stats->cond[ca]);
     fputs("</td><td>", f);
     rs_cond_name(f, &r->stats->cond[cb]);
+    fputs("</td><td>", f);
+    differ(f, r, ca, cb, "");
     fprintf(f, "</td><td class=\"n\">%ld</td><td class=\"n\">%.3f</td>", d->n, d->mean);
     cell_interval(f, d, 1, 0);
     if (dz(d, &z))
@@ -241,9 +266,10 @@ void report_pstats_html(FILE *f, const report_run *r)
     if (!r->pstats->npg)
         return;
     fputs("<h3>Paired differences</h3>\n<p>For each pair of a study's conditions, A &minus; B "
-          "over the participants with a mean in both: n, the mean difference, its 95 % CI "
-          "(Student's t) and Cohen's d<sub>z</sub> (the mean difference over the SD of the "
-          "differences).</p>\n<table>\n<tr><th>measure</th><th>A</th><th>B</th><th>n</th>"
+          "over the participants with a mean in both: the factors in which A and B differ "
+          "(one factor: a simple effect), n, the mean difference, its 95 % CI (Student's t) "
+          "and Cohen's d<sub>z</sub> (the mean difference over the SD of the differences)."
+          "</p>\n<table>\n<tr><th>measure</th><th>A</th><th>B</th><th>differ in</th><th>n</th>"
           "<th>A &minus; B</th><th>95 % CI</th><th>d<sub>z</sub></th></tr>\n", f);
     each_pair(f, r, html_pair);
     fputs("</table>\n", f);
