@@ -6,9 +6,9 @@
 # trial, one participant restarted, one run again into a second folder,
 # one without a condition), reported; tests/report_referee.R (Rscript,
 # base R only) recomputes the participants' means, both intervals, the
-# paired differences and d_z from trials.csv and checks every figure of
-# participants_stats.csv and paired.csv to 1e-9; then a figure made wrong
-# by 1e-6 must fail it. Skipped in one line without Rscript (make deps-r).
+# paired differences, the main effects and d_z from trials.csv and checks
+# every figure of participants_stats.csv, paired.csv and effects.csv to
+# 1e-9; then a figure made wrong by 1e-6 must fail it. Skipped in one line without Rscript (make deps-r).
 . "$(dirname "$0")/lib.sh"
 HERE=$(dirname "$0")
 
@@ -91,6 +91,9 @@ grep -q '^s2x2,map-q5,steps,6,11,' "$T/r/participants_stats.csv" && ok ||
     bad "map-q5 steps: $(grep '^s2x2,map-q5,steps' "$T/r/participants_stats.csv")"
 grep -q '^s2x2,map-q5,steps,.*,4,5,' "$T/r/participants_stats.csv" && ok ||
     bad "map-q5 steps within: $(grep '^s2x2,map-q5,steps' "$T/r/participants_stats.csv")"
+# the main effects: q (5, 6) and cues (3, 1) over the five complete participants
+grep -q '^s2x2,steps,q,5,6,5,' "$T/r/effects.csv" && grep -q '^s2x2,steps,cues,3,1,5,' "$T/r/effects.csv" &&
+    ok || bad "effects.csv: $(sed -n 2,3p "$T/r/effects.csv")"
 # the factors a pair differs in
 grep -q '^s2x2,steps,map-q5,map-q6,q,6,' "$T/r/paired.csv" && grep -q '^s2x2,steps,map-q5,nomap-q5,cues,6,' "$T/r/paired.csv" &&
     grep -q '^s2x2,steps,map-q5,nomap-q6,q cues,5,' "$T/r/paired.csv" && ok ||
@@ -109,7 +112,7 @@ fi
 grep -q '^R referee: [0-9]* figures agree' "$T/rout" && ok || bad "R said: $(cat "$T/rout")"
 # a figure made wrong by 1e-6 fails it
 mkdir "$T/w"
-cp "$T/r/trials.csv" "$T/r/paired.csv" "$T/w/"
+cp "$T/r/trials.csv" "$T/r/paired.csv" "$T/r/effects.csv" "$T/w/"
 awk -F, 'BEGIN { OFS = "," } NR == 3 { $6 = sprintf("%.15g", $6 + 1e-6) } { print }' "$T/r/participants_stats.csv" \
     >"$T/w/participants_stats.csv"
 if Rscript "$HERE/report_referee.R" "$T/w" >"$T/rout" 2>&1; then bad "a wrong mean passed"; else
@@ -119,4 +122,10 @@ cp "$T/r/participants_stats.csv" "$T/w/"
 awk -F, 'BEGIN { OFS = "," } NR == 2 { $11 = sprintf("%.15g", $11 * 1.000001) } { print }' "$T/r/paired.csv" \
     >"$T/w/paired.csv"
 if Rscript "$HERE/report_referee.R" "$T/w" >"$T/rout" 2>&1; then bad "a wrong d_z passed"; else ok; fi
+cp "$T/r/paired.csv" "$T/w/"
+awk -F, 'BEGIN { OFS = "," } NR == 2 { $7 = sprintf("%.15g", $7 + 1e-6) } { print }' "$T/r/effects.csv" \
+    >"$T/w/effects.csv"
+if Rscript "$HERE/report_referee.R" "$T/w" >"$T/rout" 2>&1; then bad "a wrong main effect passed"; else
+    grep -q 'q=5 - 6 mean_diff' "$T/rout" && ok || bad "R's failure: $(cat "$T/rout")"
+fi
 finish cli_report_r

@@ -6,10 +6,12 @@
 # the between-subjects 95 % CI (qt on the participants' means) and the
 # within-subjects one (Cousineau 2005, Morey 2008: each complete
 # participant's value less their mean plus the grand mean, the half width
-# times sqrt(J / (J - 1))), and for each pair of a study's conditions the
-# paired difference, its CI and d_z; every figure of participants_stats.csv
-# and paired.csv must agree to 1e-9, every row R expects must be there and
-# no other. Usage: Rscript report_referee.R REPORT_DIR. Exit 0 when all
+# times sqrt(J / (J - 1))); for each pair of a study's conditions the
+# paired difference, its CI, d_z and the factors the two differ in; for
+# each pair of a factor's levels (main effects: a level's value the mean
+# of its conditions) the same. Every figure of participants_stats.csv,
+# paired.csv and effects.csv must agree to 1e-9, every row R expects must
+# be there and no other. Usage: Rscript report_referee.R REPORT_DIR. Exit 0 when all
 # agree ("R referee: N figures agree"), else 1 naming each disagreement.
 args <- commandArgs(trailingOnly = TRUE)
 dir <- args[1]
@@ -22,6 +24,9 @@ ps <- rd("participants_stats.csv")
 pd <- read.csv(file.path(dir, "paired.csv"), stringsAsFactors = FALSE, na.strings = "",
                colClasses = c(study = "character", condition_a = "character",
                               condition_b = "character", differ = "character"))
+ef <- read.csv(file.path(dir, "effects.csv"), stringsAsFactors = FALSE, na.strings = NULL,
+               colClasses = c(study = "character", level_a = "character",
+                              level_b = "character"))
 tr$study[is.na(tr$study)] <- ""
 ps$study[is.na(ps$study)] <- ""
 pd$study[is.na(pd$study)] <- ""
@@ -45,6 +50,10 @@ ci <- function(x, k = 1) {
 }
 seen <- 0
 seen_pairs <- 0
+seen_effects <- 0
+factors <- c("q", "room", "cell", "cues", "minimap")
+# a factor's value as trials.csv writes it ("" for none)
+level_text <- function(x) ifelse(is.na(x), "", as.character(x))
 for (st in unique(inc$study)) {
     d <- inc[inc$study == st, ]
     conds <- ps$condition[ps$study == st & ps$measure == "steps"]
@@ -88,8 +97,37 @@ for (st in unique(inc$study)) {
             same(paste(what, "ci_within_low"), row$ci_within_low, wc[1])
             same(paste(what, "ci_within_high"), row$ci_within_high, wc[2])
         }
-        # each pair of the study's conditions: A - B over participants with both
         if (J < 2) next
+        # main effects: each factor's levels (the conditions' first trials),
+        # a level's value the mean of its conditions for the complete
+        # participants, each pair of levels A - B
+        if (length(conds) <= 32 && nrow(complete)) for (k in factors) {
+            lv <- sapply(cm, function(cc) level_text(d[d$condition == cc, k][1]))
+            L <- unique(lv)
+            if (length(L) < 2) next
+            val <- sapply(L, function(l) rowMeans(complete[, lv == l, drop = FALSE]))
+            val <- matrix(val, nrow = nrow(complete))
+            for (a in 1:(length(L) - 1)) for (b in (a + 1):length(L)) {
+                dd <- val[, a] - val[, b]
+                row <- ef[ef$study == st & ef$measure == m & ef$factor == k &
+                          ef$level_a == L[a] & ef$level_b == L[b], ]
+                what <- sprintf("%s %s %s=%s - %s", st, m, k, L[a], L[b])
+                if (nrow(row) != 1) {
+                    wrong <- c(wrong, sprintf("%s: %d rows in effects.csv", what, nrow(row)))
+                    next
+                }
+                seen_effects <- seen_effects + 1
+                same(paste(what, "n"), row$n, length(dd))
+                same(paste(what, "mean_diff"), row$mean_diff, mean(dd))
+                same(paste(what, "sd_diff"), row$sd_diff, if (length(dd) > 1) sd(dd) else NA)
+                b2 <- ci(dd)
+                same(paste(what, "ci_low"), row$ci_low, b2[1])
+                same(paste(what, "ci_high"), row$ci_high, b2[2])
+                same(paste(what, "dz"), row$dz,
+                     if (length(dd) > 1 && sd(dd) > 0) mean(dd) / sd(dd) else NA)
+            }
+        }
+        # each pair of the study's conditions: A - B over participants with both
         for (a in 1:(J - 1)) for (b in (a + 1):J) {
             dd <- pm[, a] - pm[, b]
             dd <- dd[!is.na(dd)]
@@ -121,6 +159,8 @@ for (st in unique(inc$study)) {
         }
     }
 }
+if (seen_effects != nrow(ef))
+    wrong <- c(wrong, sprintf("effects.csv has %d rows, R expects %d", nrow(ef), seen_effects))
 if (seen != nrow(ps))
     wrong <- c(wrong, sprintf("participants_stats.csv has %d rows, R expects %d", nrow(ps), seen))
 if (seen_pairs != nrow(pd))
@@ -129,5 +169,5 @@ if (length(wrong)) {
     cat("R referee: disagrees:\n", paste0("  ", wrong, "\n"), sep = "")
     quit(status = 1)
 }
-cat(sprintf("R referee: %d figures agree (%d rows, %d pairs; tolerance 1e-9)\n", checked,
-            seen, seen_pairs))
+cat(sprintf("R referee: %d figures agree (%d rows, %d pairs, %d effects; tolerance 1e-9)\n",
+            checked, seen, seen_pairs, seen_effects))

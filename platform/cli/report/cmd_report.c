@@ -51,6 +51,8 @@ static const char *const report_usage =
     "                   means: n, mean, SD, between- and within-subjects 95 % CI\n"
     "  paired.csv       each pair of a study's conditions: paired difference, its\n"
     "                   95 % CI, Cohen's d_z\n"
+    "  effects.csv      each pair of a factor's levels (main effects): paired\n"
+    "                   difference, its 95 % CI, d_z\n"
     "  index.html       a page with the tables, the statistics and the pictures\n"
     "DIR is made when it does not exist (its parent must); an existing DIR must\n"
     "be empty or hold only a report's files (they are replaced). A malformed log\n"
@@ -68,7 +70,7 @@ static int own_name(const char *n)
         !strcmp(n, "attempts.csv") || !strcmp(n, "conditions.csv") ||
         !strcmp(n, "stats.csv") || !strcmp(n, "learning.csv") || !strcmp(n, "participants.csv") ||
         !strcmp(n, "trials.csv") || !strcmp(n, "participants_stats.csv") ||
-        !strcmp(n, "paired.csv"))
+        !strcmp(n, "paired.csv") || !strcmp(n, "effects.csv"))
         return 1;
     if (n[0] == '.' && strstr(n, ".holonomy-tmp."))
         return 1;

@@ -216,8 +216,7 @@ static void between(report_pstats *p)
         }
 }
 
-/* The study's conditions (a group) of measure m that have values: J. */
-static int group_conds(const report_pstats *p, int g, int m, int ncond)
+int ps_group_conds(const report_pstats *p, int g, int m, int ncond)
 {
     int j = 0;
     for (int c = 0; c < ncond; c++)
@@ -226,9 +225,7 @@ static int group_conds(const report_pstats *p, int g, int m, int ncond)
     return j;
 }
 
-/* The end of the participant's cells from cell i (one group's), and the
- * number and sum of their values of measure m. */
-static int part_end(const report_pstats *p, int i, int m, int *have, double *sum)
+int ps_part_end(const report_pstats *p, int i, int m, int *have, double *sum)
 {
     int j = i;
     *have = 0;
@@ -247,13 +244,13 @@ static int part_end(const report_pstats *p, int i, int m, int *have, double *sum
  * sqrt(J / (J - 1)) when written). */
 static void within(report_pstats *p, int g, int m, int ncond)
 {
-    int J = group_conds(p, g, m, ncond), have;
+    int J = ps_group_conds(p, g, m, ncond), have;
     double grand = 0, sum;
     long np = 0;
     if (J < 2)
         return;
     for (int i = 0, j; i < p->ncell; i = j) {
-        j = part_end(p, i, m, &have, &sum);
+        j = ps_part_end(p, i, m, &have, &sum);
         if (p->cell[i].group == g && have == J)
             grand += sum, np++;
     }
@@ -261,7 +258,7 @@ static void within(report_pstats *p, int g, int m, int ncond)
         return;
     grand /= (double)np * J;
     for (int i = 0, j; i < p->ncell; i = j) {
-        j = part_end(p, i, m, &have, &sum);
+        j = ps_part_end(p, i, m, &have, &sum);
         for (int l = i; p->cell[i].group == g && have == J && l < j; l++)
             if (p->cell[l].n[m])
                 hol_stats_add(&p->row[p->cell[l].cond * PS_NM + m].within,
@@ -279,7 +276,7 @@ static void pairs(report_pstats *p, const ps_pairs *pg)
     int have;
     double sum;
     for (int i = 0, j; i < p->ncell; i = j) {
-        j = part_end(p, i, 0, &have, &sum);
+        j = ps_part_end(p, i, 0, &have, &sum);
         for (int a = i; p->cell[i].group == pg->group && a < j; a++)
             for (int b = a + 1; b < j; b++)
                 for (int m = 0; m < PS_NM; m++) {

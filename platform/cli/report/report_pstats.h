@@ -17,8 +17,9 @@
  * - The 95 % intervals use report_t975 (Student's t quantile computed
  *   with the C library to 1e-12 relative, 1e-15 below 50 degrees of
  *   freedom, so R's qt agrees to 1e-9).
- * - report_pstats_write writes the three CSVs atomically (numbers with
- *   15 significant digits); report_pstats_html the page's section into f.
+ * - report_pstats_write writes the three CSVs and effects.csv (the main
+ *   effects of a study's factors, report_effects.c) atomically (numbers
+ *   with 15 significant digits); report_pstats_html the page's section.
  *   O(n log n) in the attempts, plus the pairs of a study's conditions
  *   (at most REPORT_PAIR_MAX conditions a study have pairs).
  */

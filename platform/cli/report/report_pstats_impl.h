@@ -4,6 +4,7 @@
 #define REPORT_PSTATS_IMPL_H
 
 #include <stddef.h>
+#include <stdio.h>
 
 #include "report_pstats.h"
 #include "report_stats_impl.h"
@@ -54,5 +55,19 @@ typedef struct report_pstats {
 } report_pstats;
 
 int ps_value(const report_run *r, int i, int m, double *v);
+/* The end of the participant's cells from cell i (one group's), and the
+ * number and sum of their values of measure m. */
+int ps_part_end(const report_pstats *p, int i, int m, int *have, double *sum);
+/* The study's conditions (a group) of measure m that have values: J. */
+int ps_group_conds(const report_pstats *p, int g, int m, int ncond);
+/* mean[,sd],ci_low,ci_high of st (with_sd: the sd too; the t interval's
+ * half widened by k), each followed by ',' (the last by '\n' when last);
+ * what is not defined empty. */
+void ps_summary(FILE *f, const hol_stats *st, double k, int with_sd, int last);
+/* d_z: the mean difference over the SD of the differences: 1 and *out,
+ * 0 when it is not defined (n under 2, no spread). */
+int ps_dz(const hol_stats *d, double *out);
+/* effects.csv (report_effects.c) */
+int report_effects_write(const report_run *r);
 
 #endif

@@ -67,10 +67,7 @@ static int trials_csv(FILE *f, const report_run *r, const void *ctx)
     return 0;
 }
 
-/* mean[,sd],ci_low,ci_high of st (with_sd: the sd too; the t interval's
- * half widened by k), each followed by ',' (the last by '\n' when last);
- * what is not defined empty. */
-static void summary(FILE *f, const hol_stats *st, double k, int with_sd, int last)
+void ps_summary(FILE *f, const hol_stats *st, double k, int with_sd, int last)
 {
     double sd = st->n > 1 ? sqrt(st->m2 / (double)(st->n - 1)) : 0;
     double h = st->n > 1 ? report_t975(st->n - 1) * k * sd / sqrt((double)st->n) : 0;
@@ -117,9 +114,9 @@ static void stats_row(FILE *f, const report_run *r, int c, int m, const ps_row *
     report_csv(f, r->stats->cond[c].study, 0);
     report_csv(f, r->stats->cond[c].condition, 0);
     fprintf(f, "%s,%ld,%ld,", ps_measure[m], w->between.n, w->trials);
-    summary(f, &w->between, 1, 1, 0);
+    ps_summary(f, &w->between, 1, 1, 0);
     fprintf(f, "%d,%ld,", w->J, w->within.n);
-    summary(f, &w->within, w->J >= 2 ? sqrt((double)w->J / (w->J - 1)) : 0, 0, 1);
+    ps_summary(f, &w->within, w->J >= 2 ? sqrt((double)w->J / (w->J - 1)) : 0, 0, 1);
 }
 
 static int participants_stats_csv(FILE *f, const report_run *r, const void *ctx)
@@ -131,9 +128,7 @@ static int participants_stats_csv(FILE *f, const report_run *r, const void *ctx)
     return 0;
 }
 
-/* d_z: the mean difference over the SD of the differences: 1 and *out,
- * 0 when it is not defined (n under 2, no spread). */
-static int dz(const hol_stats *d, double *out)
+int ps_dz(const hol_stats *d, double *out)
 {
     if (d->n < 2 || d->m2 <= 0)
         return 0;
@@ -171,8 +166,8 @@ static void pair_row(FILE *f, const report_run *r, int m, int ca, int cb, const 
     report_csv(f, r->stats->cond[cb].condition, 0);
     differ(f, r, ca, cb, ",");
     fprintf(f, "%ld,", d->n);
-    summary(f, d, 1, 1, 0);
-    if (dz(d, &z))
+    ps_summary(f, d, 1, 1, 0);
+    if (ps_dz(d, &z))
         fprintf(f, "%.15g", z);
     fputc('\n', f);
 }
@@ -193,6 +188,8 @@ int report_pstats_write(const report_run *r)
         st = report_write_file(r, "participants_stats.csv", participants_stats_csv, NULL);
     if (!st)
         st = report_write_file(r, "paired.csv", paired_csv, NULL);
+    if (!st)
+        st = report_effects_write(r);
     return st;
 }
 
@@ -239,7 +236,7 @@ static void html_pair(FILE *f, const report_run *r, int m, int ca, int cb, const
     differ(f, r, ca, cb, "");
     fprintf(f, "</td><td class=\"n\">%ld</td><td class=\"n\">%.3f</td>", d->n, d->mean);
     cell_interval(f, d, 1, 0);
-    if (dz(d, &z))
+    if (ps_dz(d, &z))
         fprintf(f, "<td class=\"n\">%.3f</td>", z);
     else
         fputs("<td></td>", f);
@@ -268,8 +265,9 @@ void report_pstats_html(FILE *f, const report_run *r)
     fputs("<h3>Paired differences</h3>\n<p>For each pair of a study's conditions, A &minus; B "
           "over the participants with a mean in both: the factors in which A and B differ "
           "(one factor: a simple effect), n, the mean difference, its 95 % CI (Student's t) "
-          "and Cohen's d<sub>z</sub> (the mean difference over the SD of the differences)."
-          "</p>\n<table>\n<tr><th>measure</th><th>A</th><th>B</th><th>differ in</th><th>n</th>"
+          "and Cohen's d<sub>z</sub> (the mean difference over the SD of the differences). "
+          "The main effects (each pair of a factor's levels): <a href=\"effects.csv\">"
+          "effects.csv</a>.</p>\n<table>\n<tr><th>measure</th><th>A</th><th>B</th><th>differ in</th><th>n</th>"
           "<th>A &minus; B</th><th>95 % CI</th><th>d<sub>z</sub></th></tr>\n", f);
     each_pair(f, r, html_pair);
     fputs("</table>\n", f);
