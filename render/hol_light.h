@@ -103,7 +103,7 @@
 #include "../core/hol_err.h"
 #include "../core/hol_room.h"
 #include "../core/hol_world.h"
-#include "hol_render.h"
+#include "hol_render_types.h"
 
 #define HOL_LIGHT_PER_TILE 4
 #define HOL_LIGHT_RADIUS_M 3.0
