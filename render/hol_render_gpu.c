@@ -255,6 +255,22 @@ void hol__frame_begin(hol_render *r, const hol_frame_desc *f, float vp[16])
     }
 }
 
+/* The passes over the scene (the panel, the fade, the HUD): no depth test
+ * or writes, no stencil; vp the view-projection (NULL: the identity, and
+ * the model's too). */
+static void hol__set_overlay(hol_render *r, const float vp[16], int mode)
+{
+    float ident[16];
+    hol__identity(ident);
+    r->gl.Disable(GL_DEPTH_TEST);
+    r->gl.DepthMask(GL_FALSE);
+    r->gl.Disable(GL_STENCIL_TEST);
+    r->gl.UniformMatrix4fv(r->pg->u_vp, 1, GL_FALSE, vp ? vp : ident);
+    if (!vp)
+        r->gl.UniformMatrix4fv(r->pg->u_model, 1, GL_FALSE, ident);
+    r->gl.Uniform1i(r->pg->u_mode, mode);
+}
+
 /* The GL state of a pass (vp: the view-projection, for the passes in the
  * world). */
 static void hol__set_pass_as(hol_render *r, const hol_frame_desc *f, int pass, const float vp[16],
@@ -313,31 +329,17 @@ static void hol__set_pass_as(hol_render *r, const hol_frame_desc *f, int pass, c
         /* in the world, drawn last over everything (no depth test): the
          * text is never hidden by a hedge or a trunk nearer than it */
         r->gl.Disable(GL_BLEND);
-        r->gl.Disable(GL_DEPTH_TEST);
-        r->gl.DepthMask(GL_FALSE);
-        r->gl.Disable(GL_STENCIL_TEST);
-        r->gl.UniformMatrix4fv(r->pg->u_vp, 1, GL_FALSE, vp);
-        r->gl.Uniform1i(r->pg->u_mode, ids ? HOL__MODE_ID : HOL__MODE_FLAT);
+        hol__set_overlay(r, vp, ids ? HOL__MODE_ID : HOL__MODE_FLAT);
         break;
     case HOL__PASS_FADE:
-        r->gl.Disable(GL_DEPTH_TEST);
-        r->gl.DepthMask(GL_FALSE);
-        r->gl.Disable(GL_STENCIL_TEST);
-        r->gl.UniformMatrix4fv(r->pg->u_vp, 1, GL_FALSE, ident);
-        r->gl.UniformMatrix4fv(r->pg->u_model, 1, GL_FALSE, ident);
-        r->gl.Uniform1i(r->pg->u_mode, HOL__MODE_FLAT);
+        hol__set_overlay(r, NULL, HOL__MODE_FLAT);
         r->gl.Enable(GL_BLEND);
         r->gl.BlendColor(0, 0, 0, (float)f->fade);
         r->gl.BlendFunc(GL_CONSTANT_ALPHA, GL_ONE_MINUS_CONSTANT_ALPHA);
         break;
     default:
         r->gl.Disable(GL_BLEND);
-        r->gl.Disable(GL_DEPTH_TEST);
-        r->gl.DepthMask(GL_FALSE);
-        r->gl.Disable(GL_STENCIL_TEST);
-        r->gl.UniformMatrix4fv(r->pg->u_vp, 1, GL_FALSE, ident);
-        r->gl.UniformMatrix4fv(r->pg->u_model, 1, GL_FALSE, ident);
-        r->gl.Uniform1i(r->pg->u_mode, ids ? HOL__MODE_ID : HOL__MODE_FLAT);
+        hol__set_overlay(r, NULL, ids ? HOL__MODE_ID : HOL__MODE_FLAT);
         break;
     }
 }

@@ -64,6 +64,20 @@ hol__item *hol__push(hol_render *r, int pass, uint32_t first, uint32_t count)
     return it;
 }
 
+/* An item of this frame's dynamic geometry, from index i0 to the end: in
+ * pass, its key's low bits sub, model (NULL: the identity). */
+static void hol__push_dyn(hol_render *r, int pass, uint32_t i0, uint32_t sub,
+                          const float model[16])
+{
+    hol__item *it = hol__push(r, pass, i0, r->dyn.ni - i0);
+    if (!it)
+        return;
+    it->key = (uint32_t)pass << 24 | sub;
+    it->dyn = 1;
+    if (model)
+        memcpy(it->model, model, sizeof it->model);
+}
+
 /* Pass 0 of the queue: one stencil polygon per leaf, in NDC. */
 static hol_err hol__queue_leaves(hol_render *r, const hol_frame_desc *f)
 {
@@ -198,13 +212,10 @@ static hol_err hol__queue_panel(hol_render *r, const hol_frame_desc *f)
     uint32_t i0 = r->dyn.ni;
     float wh[2];
     hol_hud_build_panel_text(&r->dyn, f, wh);
-    hol__item *it = hol__push(r, HOL__PASS_PANEL, i0, r->dyn.ni - i0);
-    if (it) {
-        it->key = (uint32_t)HOL__PASS_PANEL << 24 | 2;
-        it->dyn = 1;
-        hol__quad_matrix(f->panel_pos, f->panel_orient, wh[0] / 2 * px, wh[1] / 2 * px,
-                         (left + wh[0] / 2) * px, (top - wh[1] / 2) * px, it->model);
-    }
+    float tm[16];
+    hol__quad_matrix(f->panel_pos, f->panel_orient, wh[0] / 2 * px, wh[1] / 2 * px,
+                     (left + wh[0] / 2) * px, (top - wh[1] / 2) * px, tm);
+    hol__push_dyn(r, HOL__PASS_PANEL, i0, 2, tm);
     if (!map)
         return HOL_OK;
     float m[16];
@@ -218,12 +229,16 @@ static hol_err hol__queue_panel(hol_render *r, const hol_frame_desc *f)
     }
     i0 = r->dyn.ni;
     hol_hud_build_hand_arrow(&r->dyn, f);
-    hol__item *ai = hol__push(r, HOL__PASS_PANEL, i0, r->dyn.ni - i0);
-    if (ai) {
-        ai->key = (uint32_t)HOL__PASS_PANEL << 24 | 1;
-        ai->dyn = 1;
-        memcpy(ai->model, m, sizeof m);
-    }
+    hol__push_dyn(r, HOL__PASS_PANEL, i0, 1, m);
+    return HOL_OK;
+}
+
+/* The HUD text alone (the minimap off). */
+static hol_err hol__queue_text(hol_render *r, const hol_frame_desc *f)
+{
+    uint32_t i0 = r->dyn.ni;
+    hol_hud_build_text(&r->dyn, f, f->cam.width, f->cam.height);
+    hol__push_dyn(r, HOL__PASS_HUD, i0, 1, NULL);
     return HOL_OK;
 }
 
@@ -267,37 +282,13 @@ hol_err hol__queue_hud(hol_render *r, const hol_frame_desc *f)
     uint32_t i0 = r->dyn.ni;
     if (hand) {
         hol_hud_build_hand_arrow(&r->dyn, f);
-        hol__item *it = hol__push(r, HOL__PASS_HAND, i0, r->dyn.ni - i0);
-        if (it) {
-            it->key = (uint32_t)HOL__PASS_HAND << 24 | 1;
-            it->dyn = 1;
-            memcpy(it->model, hand_m, sizeof hand_m);
-        }
+        hol__push_dyn(r, HOL__PASS_HAND, i0, 1, hand_m);
         if (panel) /* the map in the hand, the text on the panel */
             return hol__queue_panel(r, f);
-        i0 = r->dyn.ni;
-        hol_hud_build_text(&r->dyn, f, f->cam.width, f->cam.height);
-    } else {
-        hol_hud_build_live(&r->dyn, f, f->cam.width, f->cam.height);
+        return hol__queue_text(r, f);
     }
-    hol__item *it = hol__push(r, HOL__PASS_HUD, i0, r->dyn.ni - i0);
-    if (it) {
-        it->key = (uint32_t)HOL__PASS_HUD << 24 | 1;
-        it->dyn = 1;
-    }
-    return HOL_OK;
-}
-
-/* The HUD text alone (the minimap off). */
-static hol_err hol__queue_text(hol_render *r, const hol_frame_desc *f)
-{
-    uint32_t i0 = r->dyn.ni;
-    hol_hud_build_text(&r->dyn, f, f->cam.width, f->cam.height);
-    hol__item *it = hol__push(r, HOL__PASS_HUD, i0, r->dyn.ni - i0);
-    if (it) {
-        it->key = (uint32_t)HOL__PASS_HUD << 24 | 1;
-        it->dyn = 1;
-    }
+    hol_hud_build_live(&r->dyn, f, f->cam.width, f->cam.height);
+    hol__push_dyn(r, HOL__PASS_HUD, i0, 1, NULL);
     return HOL_OK;
 }
 
