@@ -16,7 +16,8 @@ _Static_assert(HOL_LIGHT_DAY == 0 && HOL_LIGHT_DUSK == 1 && HOL_LIGHT_NIGHT == 2
                "core's hol_app_lighting: day 0, dusk 1, night 2");
 
 /* Slots: [0, 2) day by wedge; [2, 6) the lit room by (lighting, wedge);
- * [6, 78) the lit tiles by (lighting, flat, wedge, fx, shadow pairs / 2). */
+ * [6, HOL_PROG_SLOTS) the lit tiles by (lighting, flat, wedge, fx, shadow
+ * pairs / 2), the last varying fastest. */
 enum { HOL__DAY0 = 0, HOL__ROOM0 = 2, HOL__TILES0 = 6 };
 
 static int hol__bit(int v)
@@ -36,11 +37,11 @@ int hol_prog_slot(const hol_prog_key *k)
     int night = k->lighting == HOL_LIGHT_NIGHT;
     if (k->room)
         return tiles_only ? -1 : HOL__ROOM0 + 2 * night + k->wedge;
-    if (k->fx < 0 || k->fx > 2 || k->shadow_pairs < 0 || k->shadow_pairs > 4 ||
+    if (k->fx < 0 || k->fx >= HOL_PROG_FX_COUNT || k->shadow_pairs < 0 || k->shadow_pairs > 4 ||
         k->shadow_pairs % 2)
         return -1;
-    return HOL__TILES0 + (((night * 2 + k->flat) * 2 + k->wedge) * 3 + k->fx) * 3 +
-           k->shadow_pairs / 2;
+    int i = ((night * 2 + k->flat) * 2 + k->wedge) * HOL_PROG_FX_COUNT + k->fx;
+    return HOL__TILES0 + i * 3 + k->shadow_pairs / 2;
 }
 
 hol_prog_key hol_prog_key_of_slot(int slot)
@@ -60,10 +61,12 @@ hol_prog_key hol_prog_key_of_slot(int slot)
     }
     int i = slot - HOL__TILES0;
     k.shadow_pairs = i % 3 * 2;
-    k.fx = i / 3 % 3;
-    k.wedge = i / 9 % 2;
-    k.flat = i / 18 % 2;
-    k.lighting = i / 36 ? HOL_LIGHT_NIGHT : HOL_LIGHT_DUSK;
+    i /= 3;
+    k.fx = i % HOL_PROG_FX_COUNT;
+    i /= HOL_PROG_FX_COUNT;
+    k.wedge = i % 2;
+    k.flat = i / 2 % 2;
+    k.lighting = i / 4 ? HOL_LIGHT_NIGHT : HOL_LIGHT_DUSK;
     return k;
 }
 

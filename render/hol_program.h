@@ -29,8 +29,15 @@
 #include "hol_gl.h"
 
 /* hol_prog_key.fx: what the lit tiles' lights do beyond lanterns (the
- * frame's hol_light_frame.fx). */
-enum { HOL_PROG_FX_NONE = 0, HOL_PROG_FX_FIREFLIES = 1, HOL_PROG_FX_SPOTS = 2 };
+ * frame's hol_light_frame.fx, the shaders' HOL_FX). A new kind of light
+ * that needs code of its own takes the next value before
+ * HOL_PROG_FX_COUNT (docs/hacking.md#adding-a-light-type). */
+enum {
+    HOL_PROG_FX_NONE = 0,
+    HOL_PROG_FX_FIREFLIES = 1, /* per-light heights and weights */
+    HOL_PROG_FX_SPOTS = 2,     /* and the spots' cones */
+    HOL_PROG_FX_COUNT
+};
 
 typedef struct hol_prog_key {
     int lighting;     /* HOL_LIGHT_DAY, _DUSK, _NIGHT (core/hol_app.h) */
@@ -41,8 +48,9 @@ typedef struct hol_prog_key {
     int shadow_pairs; /* lit tiles: trunk shadow pairs read: 0, 2 or 4 */
 } hol_prog_key;
 
-/* day 2 (wedge), lit room 2 x 2, lit tiles 2 x 2 x 2 x 3 x 3 */
-#define HOL_PROG_SLOTS 78
+/* day 2 (wedge), lit room 2 x 2 (lighting, wedge), lit tiles 2 x 2 x 2
+ * (lighting, flat, wedge) x HOL_PROG_FX_COUNT x 3 (shadow pairs): 78 */
+#define HOL_PROG_SLOTS (2 + 4 + 8 * HOL_PROG_FX_COUNT * 3)
 
 /* The slot of key, or -1 when no program has that key. */
 int hol_prog_slot(const hol_prog_key *key);

@@ -56,7 +56,7 @@ static void test_every_key(void **state)
         for (k.room = -1; k.room <= 2; k.room++)
             for (k.flat = -1; k.flat <= 2; k.flat++)
                 for (k.wedge = -1; k.wedge <= 2; k.wedge++)
-                    for (k.fx = -1; k.fx <= 3; k.fx++)
+                    for (k.fx = -1; k.fx <= HOL_PROG_FX_COUNT; k.fx++)
                         for (k.shadow_pairs = -1; k.shadow_pairs <= 5; k.shadow_pairs++) {
                             int s = hol_prog_slot(&k);
                             if (s < 0)
@@ -68,6 +68,7 @@ static void test_every_key(void **state)
                             valid++;
                         }
     assert_int_equal(valid, HOL_PROG_SLOTS);
+    assert_int_equal(HOL_PROG_SLOTS, 2 + 4 + 8 * HOL_PROG_FX_COUNT * 3);
     for (int s = 0; s < HOL_PROG_SLOTS; s++)
         assert_int_equal(seen[s], 1);
     /* what cannot be */
