@@ -81,6 +81,7 @@ int hol_prog_preamble(const hol_prog_key *k, char *out, size_t n)
                        "#version 300 es\n#define HOL_LIT %d\n#define HOL_FLAT %d\n"
                        "#define HOL_WEDGE %d\n#define HOL_NIGHT %d\n#define HOL_FX %d\n"
                        "#define HOL_SHD %d\n#define HOL_SV %s\n#define HOL_SW %s\n"
+                       "#define HOL_TX_ROWS " HOL__STR(HOL_PROG_TX_ROWS) "\n"
                        "#define HOL_LIGHT_D0_M " HOL__STR(HOL_LIGHT_D0_M) "\n"
                        "#define HOL_LIGHT_PHYS " HOL__STR(HOL_LIGHT_PHYS) "\n"
                        "#define HOL_LIGHT_RADIUS_M " HOL__STR(HOL_LIGHT_RADIUS_M) "\n"

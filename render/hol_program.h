@@ -48,6 +48,11 @@ typedef struct hol_prog_key {
     int shadow_pairs; /* lit tiles: trunk shadow pairs read: 0, 2 or 4 */
 } hol_prog_key;
 
+/* Rows of per-light values a lit tile gives its shaders (u_tx, four
+ * lights a row: render/hol_render_tiles.c's hol__item_lights; the shaders'
+ * HOL_TX_ROWS). */
+#define HOL_PROG_TX_ROWS 7
+
 /* day 2 (wedge), lit room 2 x 2 (lighting, wedge), lit tiles 2 x 2 x 2
  * (lighting, flat, wedge) x HOL_PROG_FX_COUNT x 3 (shadow pairs): 78 */
 #define HOL_PROG_SLOTS (2 + 4 + 8 * HOL_PROG_FX_COUNT * 3)

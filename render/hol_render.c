@@ -154,7 +154,8 @@ hol_err hol_render_frame(hol_render *r, const hol_frame_desc *f,
     hol_render_stats st;
     memset(&st, 0, sizeof st);
     if (f->fade >= 1 && !(f->flags & HOL_RENDER_IDS)) {
-        hol_err err = hol__frame_faded(r, f);
+        hol__frame_faded(r, f);
+        hol_err err = r->desc.debug ? hol_render_check(r) : HOL_OK;
         if (f->flags & HOL_RENDER_WAIT)
             r->gl.Finish();
         st.cpu_ms = hol__now(CLOCK_PROCESS_CPUTIME_ID) - c0;
@@ -273,15 +274,6 @@ hol_err hol_render_panel_image(hol_render *r, const hol_frame_desc *f, int w, in
     return r->desc.debug ? hol_render_check(r) : HOL_OK;
 }
 
-hol_err hol_render_check(hol_render *r)
-{
-    int bad = 0;
-    /* every error flag the GL holds (at most a few: one per kind) */
-    for (int i = 0; i < 8 && r->gl.GetError() != GL_NO_ERROR; i++)
-        bad = 1;
-    return bad ? HOL_EUNSUPPORTED : HOL_OK;
-}
-
 void hol_render_read_rgba(hol_render *r, int w, int h, uint8_t *out_rgba)
 {
     r->gl.PixelStorei(GL_PACK_ALIGNMENT, 1);
@@ -302,4 +294,13 @@ void hol_render_read_rgba(hol_render *r, int w, int h, uint8_t *out_rgba)
 int hol_render_decode_id(const uint8_t rgba[4])
 {
     return (int)rgba[0] + 256 * (int)rgba[1] - 1;
+}
+
+hol_err hol_render_check(hol_render *r)
+{
+    int bad = 0;
+    /* every error flag the GL holds (at most a few: one per kind) */
+    for (int i = 0; i < 8 && r->gl.GetError() != GL_NO_ERROR; i++)
+        bad = 1;
+    return bad ? HOL_EUNSUPPORTED : HOL_OK;
 }

@@ -60,49 +60,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "../core/hol_alloc.h"
 #include "hol_render_types.h"
-
-struct hol_world;
-
-/* The platform's get-proc-address (OSMesaGetProcAddress,
- * eglGetProcAddress, ...), cast to this type. */
-typedef void (*hol_render_proc)(void);
-typedef hol_render_proc (*hol_render_getproc)(const char *name);
-
-typedef struct hol_render_desc {
-    hol_render_getproc getproc; /* required: GL is loaded through it */
-    int max_width, max_height;  /* 0: 4096 */
-    struct hol_world *world;   /* optional; not owned */
-    hol_alloc alloc;           /* hooks for the CPU stores (core/hol_alloc.h);
-                                  zero: malloc/free */
-    int srgb;                  /* the colour buffer is sRGB and the GL encodes
-                                  what is written (GLES always; desktop GL with
-                                  GL_FRAMEBUFFER_SRGB enabled by the caller):
-                                  colours (authored in sRGB) are written as
-                                  linear values, so the stored bytes are those
-                                  of a plain RGBA8 buffer. 0: written as they
-                                  are (OSMesa, EGL, a linear swapchain) */
-    int debug;                 /* 1: hol_render_frame asks the GL for errors
-                                  after every frame (glGetError: a round trip
-                                  that waits for the GL's queue; a WebGL
-                                  frame spent 284 of 285 ms in it). 0 (normal
-                                  running): no glGet*, glGetError, glFinish or
-                                  glReadPixels in a frame; errors are checked
-                                  at create and by hol_render_check (after a
-                                  resize). Tools and tests set it. */
-    int all_programs;          /* 1: compile every shader program at create
-                                  and size the tile meshes' buffers for all
-                                  their slots (a headset: no compile and no
-                                  buffer growth in a frame). 0:
-                                  the day program at create, each other
-                                  the first time a frame uses it (that
-                                  frame's CPU time includes it; one that
-                                  does not compile fails the frame with
-                                  HOL_EUNSUPPORTED) */
-} hol_render_desc;
-
-typedef struct hol_render hol_render;
 
 /* Errors: HOL_EARG (no getproc), HOL_EUNSUPPORTED (a GL function or the
  * shaders are missing), HOL_ENOMEM. */

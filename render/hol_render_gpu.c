@@ -60,12 +60,6 @@ void hol__static_grow(hol_render *r, int cap)
     r->gl.BindVertexArray(0);
 }
 
-void hol__identity(float m[16])
-{
-    memset(m, 0, 16 * sizeof(float));
-    m[0] = m[5] = m[10] = m[15] = 1;
-}
-
 /* Upload the scratch mesh to the static buffers at (vbase, ibase), its
  * indices shifted by vbase. */
 void hol__upload_scratch(hol_render *r, uint32_t vbase, uint32_t ibase)
@@ -109,7 +103,7 @@ static void hol__viewport(hol_render *r, const hol_frame_desc *f)
 }
 
 /* Fully faded: the boundary colour alone, no view. */
-hol_err hol__frame_faded(hol_render *r, const hol_frame_desc *f)
+void hol__frame_faded(hol_render *r, const hol_frame_desc *f)
 {
     uint8_t rgb[3];
     hol__fade_rgb(f, rgb);
@@ -122,7 +116,6 @@ hol_err hol__frame_faded(hol_render *r, const hol_frame_desc *f)
     r->gl.ClearStencil(HOL_VIEW_STENCIL_CLEAR);
     r->gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
     r->gl.Disable(GL_SCISSOR_TEST);
-    return r->desc.debug ? hol_render_check(r) : HOL_OK;
 }
 
 /* The sky of a frame's lighting (day: hol_scene_sky) and its fog density
@@ -363,7 +356,7 @@ static void hol__item_uniforms(hol_render *r, const hol__item *it)
     if (it->nl < 0)
         return;
     r->gl.Uniform4fv(r->pg->u_tl, 4, &it->tl[0][0]);
-    r->gl.Uniform4fv(r->pg->u_tx, 7, &it->tx[0][0]);
+    r->gl.Uniform4fv(r->pg->u_tx, HOL_PROG_TX_ROWS, &it->tx[0][0]);
     if (it->nsh) /* the variant for two reads the first two of each */
         r->gl.Uniform4fv(r->pg->u_ts, 13, &it->ts[0][0]);
 }

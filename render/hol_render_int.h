@@ -15,12 +15,13 @@
 #define HOL_RENDER_INT_H
 
 #include <stdint.h>
+#include <string.h>
 
 #include "hol_gl.h"
 #include "hol_light.h"
 #include "hol_mesh.h"
 #include "hol_program.h"
-#include "hol_render.h"
+#include "hol_render_types.h"
 #include "hol_scene.h"
 
 /* GPU memory layout. The static buffers hold the room meshes and a pool of
@@ -81,8 +82,9 @@ typedef struct hol__item {
     float wedge[4]; /* w0, w1 (x, z) when the view has wedges */
     int8_t nl;      /* lit tiles: lights (-1: no hyperbolic frame) */
     float tl[4][4]; /* u_tl: its lights and the eye in the tile's own frame */
-    float tx[7][4]; /* u_tx: the spots' tangents (3) and sines, heights,
-                       lantern and firefly weights (hol__item_lights) */
+    /* u_tx: the spots' tangents (3) and sines, heights, lantern and
+     * firefly weights (hol__item_lights) */
+    float tx[HOL_PROG_TX_ROWS][4];
     float ts[13][4]; /* u_ts: its trunk shadow pairs (hol__item_shadows) */
     int8_t nsh;      /* how many (0: the programs without shadows) */
     uint32_t first, count; /* index range */
@@ -138,11 +140,34 @@ enum {
     HOL__USE_TILES4  /* up to four */
 };
 
+/* m = the identity (column-major). */
+static inline void hol__identity(float m[16])
+{
+    memset(m, 0, 16 * sizeof(float));
+    m[0] = m[5] = m[10] = m[15] = 1;
+}
+
+/* A new item of the queue in pass over the index range (first, count),
+ * no branch, the identity for its model; NULL when the queue is full or
+ * count is 0. */
+static inline hol__item *hol__queue_push(hol_render *r, int pass, uint32_t first, uint32_t count)
+{
+    if (r->nitems >= HOL__MAX_ITEMS || count == 0)
+        return NULL;
+    hol__item *it = &r->items[r->nitems++];
+    memset(it, 0, sizeof *it);
+    it->pass = (uint8_t)pass;
+    it->first = first;
+    it->count = count;
+    it->branch = -1;
+    hol__identity(it->model);
+    return it;
+}
+
 /* hol_render_queue.c */
 uint64_t hol__fnv(uint64_t h, const void *p, size_t n);
 void hol__quad_matrix(const double pos[3], const double q[4], double sx, double sy,
                       double ox, double oy, float m[16]);
-hol__item *hol__push(hol_render *r, int pass, uint32_t first, uint32_t count);
 hol_err hol__queue_hud(hol_render *r, const hol_frame_desc *f);
 hol_err hol__build(hol_render *r, const hol_frame_desc *f);
 
@@ -152,12 +177,11 @@ hol_err hol__queue_tiles(hol_render *r, const hol_frame_desc *f, int bare, doubl
 /* hol_render_gpu.c */
 void hol__vao_attribs(hol_render *r, int k);
 void hol__static_grow(hol_render *r, int cap);
-void hol__identity(float m[16]);
 void hol__upload_scratch(hol_render *r, uint32_t vbase, uint32_t ibase);
 void hol__fade_rgb(const hol_frame_desc *f, uint8_t out[3]);
 hol_prog *hol__frame_prog(hol_render *r, const hol_frame_desc *f, int use);
 hol_err hol__use_progs(hol_render *r, const hol_frame_desc *f);
-hol_err hol__frame_faded(hol_render *r, const hol_frame_desc *f);
+void hol__frame_faded(hol_render *r, const hol_frame_desc *f);
 void hol__frame_begin(hol_render *r, const hol_frame_desc *f, float vp[16]);
 void hol__execute(hol_render *r, const hol_frame_desc *f, const float vp[16],
                   hol_render_stats *st);

@@ -50,26 +50,12 @@ static void hol__hand_matrix(const hol_frame_desc *f, float m[16])
     hol__quad_matrix(f->hand_pos, f->hand_orient, half, half, 0, 0, m);
 }
 
-hol__item *hol__push(hol_render *r, int pass, uint32_t first, uint32_t count)
-{
-    if (r->nitems >= HOL__MAX_ITEMS || count == 0)
-        return NULL;
-    hol__item *it = &r->items[r->nitems++];
-    memset(it, 0, sizeof *it);
-    it->pass = (uint8_t)pass;
-    it->first = first;
-    it->count = count;
-    it->branch = -1;
-    hol__identity(it->model);
-    return it;
-}
-
 /* An item of this frame's dynamic geometry, from index i0 to the end: in
  * pass, its key's low bits sub, model (NULL: the identity). */
-static void hol__push_dyn(hol_render *r, int pass, uint32_t i0, uint32_t sub,
-                          const float model[16])
+static void hol__queue_push_dyn(hol_render *r, int pass, uint32_t i0, uint32_t sub,
+                                const float model[16])
 {
-    hol__item *it = hol__push(r, pass, i0, r->dyn.ni - i0);
+    hol__item *it = hol__queue_push(r, pass, i0, r->dyn.ni - i0);
     if (!it)
         return;
     it->key = (uint32_t)pass << 24 | sub;
@@ -102,7 +88,7 @@ static hol_err hol__queue_leaves(hol_render *r, const hol_frame_desc *f)
             r->dyn.idx[r->dyn.ni++] = (uint32_t)b + (uint32_t)i;
             r->dyn.idx[r->dyn.ni++] = (uint32_t)b + (uint32_t)i + 1;
         }
-        hol__item *it = hol__push(r, HOL__PASS_STENCIL, i0, r->dyn.ni - i0);
+        hol__item *it = hol__queue_push(r, HOL__PASS_STENCIL, i0, r->dyn.ni - i0);
         if (!it)
             return HOL_ENOMEM;
         it->dyn = 1;
@@ -135,7 +121,7 @@ static hol_err hol__queue_room(hol_render *r, const hol_frame_desc *f, double ce
         r->room_world = r->desc.world;
         r->room_valid = 1;
     }
-    hol__item *it = hol__push(r, HOL__PASS_ROOM, 0, r->room_nidx);
+    hol__item *it = hol__queue_push(r, HOL__PASS_ROOM, 0, r->room_nidx);
     if (it)
         it->key = 1u << 24;
     return HOL_OK;
@@ -162,7 +148,7 @@ static hol_err hol__queue_fade(hol_render *r, const hol_frame_desc *f)
     static const uint32_t tri[6] = {0, 1, 2, 0, 2, 3};
     for (int i = 0; i < 6; i++)
         r->dyn.idx[r->dyn.ni++] = (uint32_t)b + tri[i];
-    hol__item *it = hol__push(r, HOL__PASS_FADE, i0, 6);
+    hol__item *it = hol__queue_push(r, HOL__PASS_FADE, i0, 6);
     if (!it)
         return HOL_ENOMEM;
     it->key = (uint32_t)HOL__PASS_FADE << 24;
@@ -215,21 +201,21 @@ static hol_err hol__queue_panel(hol_render *r, const hol_frame_desc *f)
     float tm[16];
     hol__quad_matrix(f->panel_pos, f->panel_orient, wh[0] / 2 * px, wh[1] / 2 * px,
                      (left + wh[0] / 2) * px, (top - wh[1] / 2) * px, tm);
-    hol__push_dyn(r, HOL__PASS_PANEL, i0, 2, tm);
+    hol__queue_push_dyn(r, HOL__PASS_PANEL, i0, 2, tm);
     if (!map)
         return HOL_OK;
     float m[16];
     double half = HOL_HUD_PANEL_MAP / 2;
     hol__quad_matrix(f->panel_pos, f->panel_orient, half * px, half * px,
                      (left + HOL_HUD_PANEL_W + HOL_HUD_PANEL_GAP + half) * px, 0, m);
-    hol__item *mi = hol__push(r, HOL__PASS_PANEL, HOL__HUD_IBASE, r->hud_nidx);
+    hol__item *mi = hol__queue_push(r, HOL__PASS_PANEL, HOL__HUD_IBASE, r->hud_nidx);
     if (mi) {
         mi->key = (uint32_t)HOL__PASS_PANEL << 24;
         memcpy(mi->model, m, sizeof m);
     }
     i0 = r->dyn.ni;
     hol_hud_build_hand_arrow(&r->dyn, f);
-    hol__push_dyn(r, HOL__PASS_PANEL, i0, 1, m);
+    hol__queue_push_dyn(r, HOL__PASS_PANEL, i0, 1, m);
     return HOL_OK;
 }
 
@@ -238,7 +224,7 @@ static hol_err hol__queue_text(hol_render *r, const hol_frame_desc *f)
 {
     uint32_t i0 = r->dyn.ni;
     hol_hud_build_text(&r->dyn, f, f->cam.width, f->cam.height);
-    hol__push_dyn(r, HOL__PASS_HUD, i0, 1, NULL);
+    hol__queue_push_dyn(r, HOL__PASS_HUD, i0, 1, NULL);
     return HOL_OK;
 }
 
@@ -273,7 +259,7 @@ hol_err hol__queue_hud(hol_render *r, const hol_frame_desc *f)
     float hand_m[16];
     if (hand)
         hol__hand_matrix(f, hand_m);
-    hol__item *map = hol__push(r, map_pass, HOL__HUD_IBASE, r->hud_nidx);
+    hol__item *map = hol__queue_push(r, map_pass, HOL__HUD_IBASE, r->hud_nidx);
     if (map) {
         map->key = (uint32_t)map_pass << 24;
         if (hand)
@@ -282,13 +268,13 @@ hol_err hol__queue_hud(hol_render *r, const hol_frame_desc *f)
     uint32_t i0 = r->dyn.ni;
     if (hand) {
         hol_hud_build_hand_arrow(&r->dyn, f);
-        hol__push_dyn(r, HOL__PASS_HAND, i0, 1, hand_m);
+        hol__queue_push_dyn(r, HOL__PASS_HAND, i0, 1, hand_m);
         if (panel) /* the map in the hand, the text on the panel */
             return hol__queue_panel(r, f);
         return hol__queue_text(r, f);
     }
     hol_hud_build_live(&r->dyn, f, f->cam.width, f->cam.height);
-    hol__push_dyn(r, HOL__PASS_HUD, i0, 1, NULL);
+    hol__queue_push_dyn(r, HOL__PASS_HUD, i0, 1, NULL);
     return HOL_OK;
 }
 

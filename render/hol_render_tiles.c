@@ -217,7 +217,7 @@ static int hol__queue_firefly(hol_render *r, const hol__item *tile_it, hol_tile 
         return 1;
     for (uint32_t v = v0; v < r->dyn.nv; v++)
         r->dyn.v[v].rgba[3] = HOL_MESH_GLOW; /* unlit, as a lantern's glass */
-    hol__item *it = hol__push(r, HOL__PASS_TILE, i0, r->dyn.ni - i0);
+    hol__item *it = hol__queue_push(r, HOL__PASS_TILE, i0, r->dyn.ni - i0);
     if (!it)
         return 1;
     *it = *tile_it;
@@ -243,7 +243,7 @@ hol_err hol__queue_tiles(hol_render *r, const hol_frame_desc *f, int bare,
         hol__tile_marks(f, br->state.tile, &pole, &kind);
         if (!hol__tile_range(r, br->state.tile, bare, pole, kind, cell_m, &first, &count))
             return HOL_ENOMEM;
-        hol__item *it = hol__push(r, HOL__PASS_TILE, first, count);
+        hol__item *it = hol__queue_push(r, HOL__PASS_TILE, first, count);
         if (!it)
             return HOL_ENOMEM;
         it->ref = br->ref;

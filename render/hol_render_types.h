@@ -2,10 +2,12 @@
  * description (hol_frame_desc), its flags and limits, the frame's figures.
  *
  * Contract
- * - Plain data, no functions: render/hol_render.h (the renderer) and the
- *   parts it calls (hol_hud.h, hol_scene.h, hol_light.h) include this
- *   header, so the renderer's arrows run one way: hol_render.c down to its
- *   parts, every part down to these types.
+ * - Plain data, no functions: render/hol_render.h (the renderer's API)
+ *   and the parts it calls (hol_hud.h, hol_scene.h, hol_light.h, the
+ *   renderer's own files through hol_render_int.h) include this header, so
+ *   the renderer's arrows run one way: hol_render.c down to its parts,
+ *   every part down to these types. The renderer's desc and its opaque
+ *   handle are here too (its files below hol_render.c use them).
  * - Lighting is core's enum (hol_app_lighting in core/hol_app.h:
  *   HOL_LIGHT_DAY, _DUSK, _NIGHT); render has no copy of it.
  * - What the fields mean for the picture: render/hol_render.h's contract.
@@ -15,9 +17,51 @@
 
 #include <stdint.h>
 
+#include "../core/hol_alloc.h"
 #include "../core/hol_app.h"
 #include "../core/hol_room.h"
 #include "hol_view.h"
+
+struct hol_world;
+
+/* The platform's get-proc-address (OSMesaGetProcAddress,
+ * eglGetProcAddress, ...), cast to this type. */
+typedef void (*hol_render_proc)(void);
+typedef hol_render_proc (*hol_render_getproc)(const char *name);
+
+typedef struct hol_render_desc {
+    hol_render_getproc getproc; /* required: GL is loaded through it */
+    int max_width, max_height;  /* 0: 4096 */
+    struct hol_world *world;   /* optional; not owned */
+    hol_alloc alloc;           /* hooks for the CPU stores (core/hol_alloc.h);
+                                  zero: malloc/free */
+    int srgb;                  /* the colour buffer is sRGB and the GL encodes
+                                  what is written (GLES always; desktop GL with
+                                  GL_FRAMEBUFFER_SRGB enabled by the caller):
+                                  colours (authored in sRGB) are written as
+                                  linear values, so the stored bytes are those
+                                  of a plain RGBA8 buffer. 0: written as they
+                                  are (OSMesa, EGL, a linear swapchain) */
+    int debug;                 /* 1: hol_render_frame asks the GL for errors
+                                  after every frame (glGetError: a round trip
+                                  that waits for the GL's queue; a WebGL
+                                  frame spent 284 of 285 ms in it). 0 (normal
+                                  running): no glGet*, glGetError, glFinish or
+                                  glReadPixels in a frame; errors are checked
+                                  at create and by hol_render_check (after a
+                                  resize). Tools and tests set it. */
+    int all_programs;          /* 1: compile every shader program at create
+                                  and size the tile meshes' buffers for all
+                                  their slots (a headset: no compile and no
+                                  buffer growth in a frame). 0:
+                                  the day program at create, each other
+                                  the first time a frame uses it (that
+                                  frame's CPU time includes it; one that
+                                  does not compile fails the frame with
+                                  HOL_EUNSUPPORTED) */
+} hol_render_desc;
+
+typedef struct hol_render hol_render;
 
 enum {
     HOL_RENDER_EUCLIDEAN = 1, /* flat room baseline: no portals */

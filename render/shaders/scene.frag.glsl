@@ -2,9 +2,11 @@
 // lit room). The preamble render/hol_program.c builds from a program's key
 // comes first: HOL_LIT (0 day, 1 lit tiles, 2 lit room), HOL_FLAT (the
 // {4,4} grid), HOL_WEDGE (discard outside a branch's wedge), HOL_NIGHT,
-// HOL_FX (0 lanterns, 1 fireflies, 2 spots), HOL_SHD (trunk shadow pairs:
-// 0, 2, 4), HOL_SV and HOL_SW (their vector type and swizzle), and the
-// lights' constants of render/hol_light.h (HOL_LIGHT_D0_M, ...).
+// HOL_FX (HOL_PROG_FX_*: 0 lanterns, 1 fireflies, 2 spots; a value has
+// the code of those below it: test with >=), HOL_TX_ROWS (u_tx's rows of
+// per-light values), HOL_SHD (trunk shadow pairs: 0, 2, 4), HOL_SV and
+// HOL_SW (their vector type and swizzle), and the lights' constants of
+// render/hol_light.h (HOL_LIGHT_D0_M, ...).
 // Whole-line // comments and blank lines are left out of the C string the
 // build makes (render/shaders/glsl_c.sh); "@include F" inserts F there.
 //
@@ -41,9 +43,10 @@ in HOL_SV v_S3;
 uniform vec4 u_ts[13];
 #endif
 #if HOL_FX
-uniform vec4 u_tx[7];
+uniform vec4 u_tx[HOL_TX_ROWS];
 #endif
-#if HOL_FX == 2
+// spots (HOL_PROG_FX_SPOTS) and up
+#if HOL_FX >= 2
 in vec4 v_U;
 #else
 const vec4 v_U = vec4(0.0);
@@ -107,8 +110,9 @@ float hol_lights(vec4 L, vec4 U, float g, float o, float y, float nup, out float
   vec4 id = inversesqrt(max(d2, 1e-8));
   vec4 f = w * w * num / den;
   f *= hol_shadow(g);
-// the cone: only the programs of frames with a spot (HOL_FX 2)
-#if HOL_FX == 2
+// the cone: only the programs of frames with a spot (HOL_FX 2 and up)
+// spots (HOL_PROG_FX_SPOTS) and up
+#if HOL_FX >= 2
   {
 #if HOL_FLAT
     vec4 hz = U;

@@ -28,8 +28,9 @@ out HOL_SV v_S1;
 out HOL_SV v_S2;
 out HOL_SV v_S3;
 #endif
-#if HOL_FX == 2
-uniform vec4 u_tx[7];
+// spots (HOL_PROG_FX_SPOTS) and up
+#if HOL_FX >= 2
+uniform vec4 u_tx[HOL_TX_ROWS];
 // <u, (k, 1)>: a spot's direction, affine too
 out vec4 v_U;
 #endif
@@ -47,7 +48,8 @@ void main() {
   v_S2 = HOL_SV((v_loc.x * u_ts[3] + v_loc.z * u_ts[4] + u_ts[5]) HOL_SW);
   v_S3 = HOL_SV((v_loc.x * u_ts[6] + v_loc.z * u_ts[7] + u_ts[8]) HOL_SW);
 #endif
-#if HOL_FX == 2
+// spots (HOL_PROG_FX_SPOTS) and up
+#if HOL_FX >= 2
   v_U = v_loc.x * u_tx[0] + v_loc.z * u_tx[1] - u_tx[2];
 #endif
 #endif
