@@ -14,6 +14,7 @@ set -eu
 dir=$(dirname "$0")
 out=$1
 mkdir -p "$(dirname "$out")"
+trap 'rm -f "$out.tmp"' EXIT
 {
     echo "/* Made by render/shaders/glsl_c.sh from the .glsl files of render/shaders: not to edit. */"
     for f in "$dir"/*.vert.glsl "$dir"/*.frag.glsl; do
