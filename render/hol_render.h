@@ -24,8 +24,9 @@
  *   branch's cell and tested against the branch's stencil ref/mask (pass 2,
  *   nearest cells first for early depth rejection), the HUD (pass 3: the
  *   resident minimap and the live arrow and text; for a headset's eye a
- *   panel in the world instead, the last pass: HOL_RENDER_PANEL). One program for all;
- *   the queue is sorted by (pass, buffer, depth) and executed with
+ *   panel in the world instead, the last pass: HOL_RENDER_PANEL). One pair
+ *   of shaders for all, its variants keyed (render/hol_program.h); the
+ *   queue is sorted by (pass, buffer, depth) and executed with
  *   redundant state changes skipped. No scene pass per portal, no
  *   render-to-texture.
  * - Geometry: the tiling is the user's tile word's (hol_tile_q: {4,4} the

@@ -9,7 +9,9 @@
  *   meshes, a lit tile's lights and shadows, fireflies), hol_render_gpu.c
  *   the GL side (buffers, the frame's programs and uniforms, the passes'
  *   state, executing the sorted queue). Programs: render/hol_program.h.
- * - Single-threaded, as the renderer: every function takes the renderer.
+ * - Calls run one way: hol_render.c -> hol_render_queue.c ->
+ *   hol_render_tiles.c -> hol_render_gpu.c (and hol_render.c to the last
+ *   two); none calls back up. Single-threaded, as the renderer.
  */
 #ifndef HOL_RENDER_INT_H
 #define HOL_RENDER_INT_H
