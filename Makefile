@@ -151,6 +151,16 @@ $(CORE_LIB): $(CORE_OBJ)
 	@rm -f $@
 	$(AR) rcs $@ $^
 
+# The renderer's GLSL (render/shaders/*.glsl) as C strings, made in the
+# build folder by render/shaders/glsl_c.sh (never committed) for
+# render/hol_program.c, the only file that includes it (every build of
+# render/: this one, the web's, build_apk.sh and quest_link_check.sh).
+GLSL_H := $(BUILD)/gen/hol_glsl.h
+$(GLSL_H): render/shaders/glsl_c.sh $(wildcard render/shaders/*.glsl)
+	sh render/shaders/glsl_c.sh $@
+$(BUILD)/render/hol_program.o: $(GLSL_H)
+$(BUILD)/render/hol_program.o: override CFLAGS += -I$(BUILD)/gen
+
 $(RENDER_LIB): $(RENDER_OBJ)
 	@rm -f $@
 	$(AR) rcs $@ $^
@@ -637,6 +647,9 @@ $(WEB_STAMP): FORCE
 	@echo '$(WEB_FLAGS_TEXT)' | cmp -s - $@ || echo '$(WEB_FLAGS_TEXT)' >$@
 
 FORCE:
+
+$(BUILD)/web-obj/render/hol_program.o: $(GLSL_H)
+$(BUILD)/web-obj/render/hol_program.o: WEB_CFLAGS += -I$(BUILD)/gen
 
 $(BUILD)/web-obj/%.o: %.c $(WEB_STAMP)
 	@mkdir -p $(dir $@)
