@@ -102,6 +102,20 @@ done
     refused "pointed 360" points.csv "column pointed: '360.0' is not a bearing in"
 { echo "$PH"; echo "$S,P01,1,flag-a,1.2,start,10.0,nan,20.0,10.0,10.0,2.5"; } >"$T/f"
     refused "true nan" points.csv "column true: 'nan' is not a bearing in"
+# a questionnaire of the study's own: its marks and kind are those of the
+# question its attempt's level asks (level-HASH.txt), when that file is there
+lq="$T/lq"; mkdir "$lq"
+printf 'mode flag\nseed 5\nflag Nf\nquestion fun likert 1 7 "Fun?" "no" "yes"\nquestion hand choice "Hand?" "left" "right"\nask mine level fun hand\n' >"$lq/level-abc.txt"
+printf 'session,participant,attempt,level,level_sha256,mode,steps,optimum,time,end\n%s,P01,1,lv,abc,flag,5,5,1.0,done\n' "$S" >"$lq/summary.csv"
+for a in 'fun,likert,9:2:is not one of fun'"'"'s marks 1..7' 'fun,likert,0:2:marks 1..7' \
+    'hand,likert,1:2:its level asks mine'"'"'s hand as a choice' 'fun,choice,x:2:asks mine'"'"'s fun as a likert' \
+    'fun,likert,7:0:' 'hand,choice,left:0:' 'other,likert,50:0:'; do
+    printf '%s\n%s,P01,1,mine,level,%s,1.0\n' "$AH" "$S" "${a%%:*}" >"$lq/answers.csv"
+    rest=${a#*:}; rm -rf "$T/oq"
+    run "level's question ${a%%:*}" "${rest%%:*}" "$H" report "$lq" --out "$T/oq" &&
+        { [ -z "${rest#*:}" ] || one_line "level's question ${a%%:*}" "answers.csv: line 2: .*${rest#*:}"; }
+done
+
 # the ranges' ends and empty values are taken: SSQ 0 and 3, TLX 0 and 100,
 # Likert 0 and 100, errors 180 and -179.9, bearings 0 and 359.9, an
 # undefined bearing and error empty; a file without the bearings' columns

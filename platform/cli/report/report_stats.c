@@ -70,8 +70,8 @@ static int order_attempts(const report_run *r, report_stats *s)
     return 0;
 }
 
-/* The condition of (dir, session, attempt): its attempt's, else "none". */
-static int find_cond(const report_run *r, int dir, const char *session, long attempt)
+/* The attempt (an index in r->att) of (dir, session, attempt), -1 none. */
+static int find_att(const report_run *r, int dir, const char *session, long attempt)
 {
     const report_stats *s = r->stats;
     int lo = 0, hi = r->natt;
@@ -82,13 +82,20 @@ static int find_cond(const report_run *r, int dir, const char *session, long att
         if (!c)
             c = t->a.attempt < attempt ? -1 : t->a.attempt > attempt;
         if (!c)
-            return s->att_cond[s->order[m]];
+            return s->order[m];
         if (c < 0)
             lo = m + 1;
         else
             hi = m;
     }
-    return s->none;
+    return -1;
+}
+
+/* The condition of (dir, session, attempt): its attempt's, else "none". */
+static int find_cond(const report_run *r, int dir, const char *session, long attempt)
+{
+    int i = find_att(r, dir, session, attempt);
+    return i < 0 ? r->stats->none : r->stats->att_cond[i];
 }
 
 /* ---- CSV files of the instruments, read by column name ---- */
@@ -222,6 +229,9 @@ typedef struct rs_group {
     double v[HOL_ASK_MAX_PRESETS][HOL_ASK_PRESET_ITEMS]; /* by the presets' table */
     unsigned have[HOL_ASK_MAX_PRESETS];
     report_instr_items items; /* the questionnaire's so far: none twice */
+    int att;                  /* its attempt (r->att), -1 none */
+    int level_dir, level_ok;  /* the level in r->level: its folder, parsed */
+    char level_sha[HOL_REPORT_TEXT]; /* and name ("" none read) */
 } rs_group;
 
 /* Each preset answered in full: its scores into the measures from RS_SSQ_T
@@ -280,8 +290,64 @@ static void add_likert(report_stats *s, int cond, const char *q, const char *ite
     hol_stats_add(&s->lik[i].s, v);
 }
 
+/* The item of questionnaire q its attempt's level asks (level-HASH.txt
+ * in the row's folder, read once for the rows that follow), NULL when
+ * that level or the item is not at hand. */
+static const hol_app_question *asked(report_run *r, rs_group *g, int dir, const char *q,
+                                     const char *item)
+{
+    const char *sha = g->att >= 0 ? r->att[g->att].a.level_sha256 : "";
+    if (!sha[0] || strchr(sha, '/') || !r->dirs)
+        return NULL;
+    if (g->level_dir != dir || strcmp(g->level_sha, sha)) {
+        char path[4400];
+        struct stat sb;
+        uint8_t *data = NULL;
+        size_t size = 0;
+        hol_level_err le;
+        g->level_dir = dir;
+        snprintf(g->level_sha, sizeof g->level_sha, "%s", sha);
+        snprintf(path, sizeof path, "%s/level-%s.txt", r->dirs[dir], sha);
+        g->level_ok = !lstat(path, &sb) && S_ISREG(sb.st_mode) &&
+                      !hol_file_read_all(path, HOL_LEVEL_TEXT_MAX + 1, &data, &size) &&
+                      !hol_level_parse((const char *)data, size, &r->level.lvl, &le);
+        free(data);
+    }
+    const hol_app_level *L = &r->level.lvl;
+    for (int k = 0; g->level_ok && k < L->nasks; k++)
+        for (int i = L->asks[k].first; !strcmp(L->asks[k].name, q) &&
+                                        i < L->asks[k].first + L->asks[k].n; i++)
+            if (i >= 0 && i < L->nquestions && !strcmp(L->questions[i].id, item))
+                return &L->questions[i];
+    return NULL;
+}
+
+/* A row of a questionnaire of the study's own against the item its level
+ * asks (when at hand): the same kind, a Likert value on its marks. 0, or
+ * -1 and c->err. */
+static int level_item(report_run *r, rs_csv *c, rs_group *g, int likert, double v)
+{
+    const char *q = field(c, A_Q), *item = field(c, A_ITEM);
+    if (hol_ask_preset_index(q, strlen(q)) >= 0)
+        return 0; /* a preset's marks are its table's (report_instr_answer) */
+    const hol_app_question *it = asked(r, g, c->dir, q, item);
+    if (!it)
+        return 0;
+    if (likert != (it->kind == HOL_APP_LIKERT)) {
+        snprintf(c->err, sizeof c->err, "column kind: its level asks %.40s's %.40s as a %s", q,
+                 item, likert ? "choice" : "likert");
+        return -1;
+    }
+    if (!likert || (v >= it->lo && v <= it->hi && ((long)v - it->lo) % it->step == 0))
+        return 0;
+    snprintf(c->err, sizeof c->err, "column value: '%.0f' is not one of %.40s's marks %d..%d "
+             "(its level's question)", v, item, it->lo, it->hi);
+    return -1;
+}
+
 /* A checked row (report_instr_answer) into its questionnaire: 0, or -1
- * and c->err when the questionnaire has its item already. */
+ * and c->err when the questionnaire has its item already or its level
+ * asks the item otherwise. */
 static int answer_row(report_run *r, rs_csv *c, rs_group *g, long att, int likert, double v)
 {
     report_stats *s = r->stats;
@@ -292,10 +358,11 @@ static int answer_row(report_run *r, rs_csv *c, rs_group *g, long att, int liker
     if (strcmp(key, g->key)) {
         flush_group(s, g);
         memcpy(g->key, key, sizeof key);
-        g->cond = find_cond(r, c->dir, field(c, A_SESSION), att);
+        g->att = find_att(r, c->dir, field(c, A_SESSION), att);
+        g->cond = g->att < 0 ? s->none : s->att_cond[g->att];
         g->items.n = 0;
     }
-    if (report_instr_item_new(&g->items, q, item, c->err))
+    if (report_instr_item_new(&g->items, q, item, c->err) || level_item(r, c, g, likert, v))
         return -1;
     if (!likert)
         return 0;
@@ -317,6 +384,7 @@ static int answers_rows(report_run *r, rs_csv *c)
     rs_group g;
     int got;
     memset(&g, 0, sizeof g);
+    g.level_dir = -1;
     while ((got = next_row(c, names, 8, 8)) > 0) {
         long att;
         double v;

@@ -13,7 +13,9 @@
  *   or an attempt not in the summary: the condition "none". A row has
  *   the header's field count, and its values their documented ranges
  *   (report_instr.h); a questionnaire (its consecutive rows of one
- *   session, participant, attempt, name and when) no item twice.
+ *   session, participant, attempt, name and when) no item twice; an item
+ *   of the study's own as its attempt's level (level-HASH.txt, when
+ *   there) asks it: the same kind, a Likert value on its marks.
  * - Means are over COMPLETED attempts (end "done") outside practice only
  *   (core/hol_stats.h: SD, 95 % t interval, n). Pointing errors: |error|
  *   in degrees, every answer with a bearing. SSQ and TLX: one score per
