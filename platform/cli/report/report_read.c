@@ -10,6 +10,7 @@
 #include "../cli.h"
 #include "report.h"
 #include "../play_setup.h"
+#include "../summary_read.h"
 
 static void path_of(char *out, size_t cap, const char *dir, const char *name)
 {
@@ -38,45 +39,45 @@ static int csv_line(const hol_lines *l, char **s, size_t *n)
     return 0;
 }
 
+typedef struct summary_into {
+    report_run *r;
+    int d;
+    const char *path;
+} summary_into;
+
+/* A summary row into r->att (summary_read's fn). */
+static int summary_row(void *ctx, const hol_report_attempt *a, long line)
+{
+    summary_into *in = ctx;
+    report_run *r = in->r;
+    if (r->natt == REPORT_MAX_ATTEMPTS) {
+        char msg[64];
+        snprintf(msg, sizeof msg, "more than %d attempts in all", REPORT_MAX_ATTEMPTS);
+        return bad_line(r->cmd, in->path, line, msg);
+    }
+    report_att *t = &r->att[r->natt++];
+    memset(t, 0, sizeof *t);
+    t->dir = in->d;
+    t->a = *a;
+    return 0;
+}
+
+static int warn(const report_run *r, const char *path, const char *what);
+
+/* DIR's summary.csv, read as --resume reads it (summary_read.h). */
 static int read_summary(report_run *r, int d)
 {
     char path[4200];
     path_of(path, sizeof path, r->dirs[d], "summary.csv");
-    hol_lines l;
-    int st = cli_open_lines(r->cmd, "summary", path, REPORT_LINE_MAX, &l);
-    if (st)
-        return st;
-    hol_report_header h;
-    char err[HOL_REPORT_ERR];
-    char *s;
-    size_t n;
-    int got, header = 0;
-    while ((got = hol_lines_next(&l, &s, &n)) > 0) {
-        hol_err e;
-        if (!csv_line(&l, &s, &n))
-            continue;
-        if (!header++) {
-            e = hol_report_summary_header(s, n, &h, err);
-        } else if (r->natt == REPORT_MAX_ATTEMPTS) {
-            snprintf(err, sizeof err, "more than %d attempts in all", REPORT_MAX_ATTEMPTS);
-            e = HOL_ENOMEM;
-        } else {
-            report_att *t = &r->att[r->natt];
-            memset(t, 0, sizeof *t);
-            t->dir = d;
-            if (!(e = hol_report_summary_row(&h, s, n, &t->a, err)))
-                r->natt++;
-        }
-        if (e) {
-            long line = l.lineno;
-            hol_lines_close(&l);
-            return bad_line(r->cmd, path, line, err);
-        }
+    summary_into in = {r, d, path};
+    long cut = 0;
+    int st = summary_read(r->cmd, path, 0, summary_row, &in, &cut);
+    if (!st && cut) {
+        char what[160];
+        snprintf(what, sizeof what, "line %ld: a row a kill cut (no newline at the file's "
+                 "end): left out (the next --append session removes it)", cut);
+        warn(r, path, what);
     }
-    st = got < 0 ? cli_lines_failed(r->cmd, "summary", path, &l) : 0;
-    if (!st && !header)
-        st = bad_line(r->cmd, path, 1, "empty: no header");
-    hol_lines_close(&l);
     return st;
 }
 
