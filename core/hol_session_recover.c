@@ -1,7 +1,8 @@
 /* hol_session_recover.c - a log folder's earlier files: a folder with logs
- * is refused without append; with append, attempts a killed session left
- * unfinished get their summary row (end killed) and their files, and the
- * new attempts are numbered on (see hol_session.h). */
+ * is refused without append; with append, every append-only log is cut to
+ * its whole rows (a cut summary row's files removed with it), attempts a
+ * killed session left unfinished get their summary row (end killed) and
+ * their files, and the new attempts are numbered on (see hol_session.h). */
 #include "hol_session_impl.h"
 
 #include <stdio.h>
