@@ -6,19 +6,16 @@
 #include <string.h>
 #include <sys/stat.h>
 
-#include "../file/hol_lines.h"
 #include "cli.h"
 
-static int summary_bad(const char *cmd, const char *path, long line, const char *msg)
+int summary_bad_line(const char *cmd, const char *path, long line, const char *msg)
 {
     /* cli_error escapes the whole message once (the path is raw here) */
     cli_error(cmd, 0, "%.300s: line %ld: %s", path, line, msg);
     return CLI_EXIT_USAGE;
 }
 
-/* 0 for a blank line (empty or only spaces and tabs); a byte order mark at
- * the file's start dropped from *s. */
-static int summary_line(const hol_lines *l, char **s, size_t *n)
+int summary_csv_line(const hol_lines *l, char **s, size_t *n)
 {
     if (l->lineno == 1 && *n >= 3 && !memcmp(*s, "\xef\xbb\xbf", 3)) {
         *s += 3;
@@ -64,19 +61,19 @@ int summary_read(const char *cmd, const char *path, int flags, summary_row_fn fn
             *out_cut = l.lineno;
             break;
         }
-        if (!summary_line(&l, &s, &n))
+        if (!summary_csv_line(&l, &s, &n))
             continue;
         hol_err e = header++ ? hol_report_summary_row(&h, s, n, &a, err)
                              : hol_report_summary_header(s, n, &h, err);
         if (e)
-            st = summary_bad(cmd, path, l.lineno, err);
+            st = summary_bad_line(cmd, path, l.lineno, err);
         else if (header > 1)
             st = fn(ctx, &a, l.lineno);
     }
     if (!st && got < 0)
         st = cli_lines_failed(cmd, "summary", path, &l);
     if (!st && !header && !(flags & SUMMARY_NONE_OK))
-        st = summary_bad(cmd, path, 1, "empty: no header");
+        st = summary_bad_line(cmd, path, 1, "empty: no header");
     hol_lines_close(&l);
     return st;
 }

@@ -32,11 +32,19 @@
 #define HOL_SUMMARY_READ_H
 
 #include "../../core/hol_report.h"
+#include "../file/hol_lines.h"
 
 #define SUMMARY_LINE_MAX 65536
 #define SUMMARY_NONE_OK 1
 
 typedef int (*summary_row_fn)(void *ctx, const hol_report_attempt *row, long line);
+
+/* The log readers' line rules, for the report's other CSV readers too:
+ * summary_csv_line drops a byte order mark at the file's start from *s
+ * and returns 0 for a blank line (empty or only spaces and tabs);
+ * summary_bad_line says "PATH: line N: MSG" in one line and returns 2. */
+int summary_csv_line(const hol_lines *l, char **s, size_t *n);
+int summary_bad_line(const char *cmd, const char *path, long line, const char *msg);
 
 int summary_read(const char *cmd, const char *path, int flags, summary_row_fn fn, void *ctx,
                  long *out_cut);

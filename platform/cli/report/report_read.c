@@ -17,28 +17,6 @@ static void path_of(char *out, size_t cap, const char *dir, const char *name)
     snprintf(out, cap, "%s/%s", dir, name);
 }
 
-static int bad_line(const char *cmd, const char *path, long line, const char *msg)
-{
-    /* cli_error escapes the whole message once (the path is raw here) */
-    cli_error(cmd, 0, "%.300s: line %ld: %s", path, line, msg);
-    return CLI_EXIT_USAGE;
-}
-
-/* A CSV line as the report reads it: a UTF-8 byte order mark at the start
- * of the file is dropped (spreadsheets write one); 0 for a blank line
- * (empty or only spaces and tabs), which is skipped wherever it stands. */
-static int csv_line(const hol_lines *l, char **s, size_t *n)
-{
-    if (l->lineno == 1 && *n >= 3 && !memcmp(*s, "\xef\xbb\xbf", 3)) {
-        *s += 3;
-        *n -= 3;
-    }
-    for (size_t i = 0; i < *n; i++)
-        if ((*s)[i] != ' ' && (*s)[i] != '\t')
-            return 1;
-    return 0;
-}
-
 typedef struct summary_into {
     report_run *r;
     int d;
@@ -53,7 +31,7 @@ static int summary_row(void *ctx, const hol_report_attempt *a, long line)
     if (r->natt == REPORT_MAX_ATTEMPTS) {
         char msg[64];
         snprintf(msg, sizeof msg, "more than %d attempts in all", REPORT_MAX_ATTEMPTS);
-        return bad_line(r->cmd, in->path, line, msg);
+        return summary_bad_line(r->cmd, in->path, line, msg);
     }
     report_att *t = &r->att[r->natt++];
     memset(t, 0, sizeof *t);
@@ -170,7 +148,7 @@ int report_walk(report_run *r, report_att *t, hol_tile *tiles, int *out_n)
         hol_tile tile;
         if (!(l.lineno & 4095) && (st = report_stopped(r)))
             break;
-        if (!csv_line(&l, &line, &n))
+        if (!summary_csv_line(&l, &line, &n))
             continue;
         if (!header++) {
             ok = !hol_report_steps_header(line, n, &h, err);
@@ -187,11 +165,11 @@ int report_walk(report_run *r, report_att *t, hol_tile *tiles, int *out_n)
     if (st)
         ;
     else if (!ok)
-        st = bad_line(r->cmd, path, l.lineno, err);
+        st = summary_bad_line(r->cmd, path, l.lineno, err);
     else if (got < 0)
         st = cli_lines_failed(r->cmd, "steps", path, &l);
     else if (!header)
-        st = bad_line(r->cmd, path, 1, "empty: no header");
+        st = summary_bad_line(r->cmd, path, 1, "empty: no header");
     hol_lines_close(&l);
     *out_n = (int)count;
     t->has_walk = !st;
