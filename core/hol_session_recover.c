@@ -440,7 +440,7 @@ static void hol__note(char *list, size_t cap, const char *name)
     size_t n = strlen(list);
     if (n + strlen(name) + 8 < cap)
         snprintf(list + n, cap - n, "%s%s", n ? ", " : "", name);
-    else if (n + 5 < cap && strcmp(list + n - 3, "..."))
+    else if (n >= 3 && n + 5 < cap && strcmp(list + n - 3, "..."))
         snprintf(list + n, cap - n, ", ...");
 }
 

@@ -7,11 +7,8 @@
 
 #include "../../core/hol_report.h"
 #include "../../core/hol_study.h"
-#include "../file/hol_lines.h"
 #include "cli.h"
 #include "summary_read.h"
-
-#include <sys/stat.h>
 
 /* The participant's number, or 0 after the message. */
 static uint64_t study_number(const char *cmd, const char *participant)
