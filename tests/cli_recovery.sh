@@ -146,6 +146,13 @@ for v in bom crlf; do
     [ "$(grep -c '' "$v/summary.csv")" = 5 ] && ok || bad "$v: rows $(cat "$v/summary.csv")"
     run "$v: report" 0 "$H" report "$v" --out "rep-$v-2"
 done
+# a live play's environment row is not glued onto a torn one
+cp -r logs env
+printf 'S,desk' >>env/environment.csv
+run "environment: resumed" 0 $PL --log env --resume
+grep -q "rows a kill cut removed (environment.csv)" err && ok || bad "environment: $(cat err)"
+[ "$(grep -c '' env/environment.csv)" = 3 ] && ! grep -q '^S,desk' env/environment.csv && ok ||
+    bad "the environment row was glued on: $(cut -c1-40 env/environment.csv)"
 cp -r logs nul
 sed '2s/practice/pr\x00ctice/' logs/summary.csv >nul/summary.csv
 run "a NUL byte: resumed" 2 $PL --log nul --resume
