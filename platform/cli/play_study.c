@@ -7,10 +7,8 @@
 
 #include "../../core/hol_report.h"
 #include "../../core/hol_study.h"
-#include "../file/hol_lines.h"
 #include "cli.h"
-
-#include <sys/stat.h>
+#include "summary_read.h"
 
 /* The participant's number, or 0 after the message. */
 static uint64_t study_number(const char *cmd, const char *participant)
@@ -137,36 +135,34 @@ int play_study_levels(const char *cmd, const char *path, const char *participant
     return 0;
 }
 
+/* A row of the study and participant counted (summary_read's fn). */
+typedef struct study_rows {
+    const char *study, *participant;
+    long rows;
+} study_rows;
+
+static int study_row(void *ctx, const hol_report_attempt *a, long line)
+{
+    study_rows *c = ctx;
+    (void)line;
+    c->rows += !strcmp(a->study, c->study) && !strcmp(a->participant, c->participant);
+    return 0;
+}
+
 int play_study_participant_new(const char *cmd, const char *log_dir, const char *study_name,
                                const char *participant)
 {
     char path[4096];
-    struct stat st;
     if (!log_dir || !participant ||
-        snprintf(path, sizeof path, "%s/summary.csv", log_dir) >= (int)sizeof path ||
-        stat(path, &st) != 0)
-        return 0; /* no summary yet: nobody has data */
-    hol_lines l;
-    int rc = cli_open_lines(cmd, "summary", path, 65536, &l);
+        snprintf(path, sizeof path, "%s/summary.csv", log_dir) >= (int)sizeof path)
+        return 0;
+    /* read as `report` and --resume read it (summary_read.h) */
+    study_rows c = {study_name, participant, 0};
+    long cut = 0;
+    int rc = summary_read(cmd, path, SUMMARY_NONE_OK, study_row, &c, &cut);
     if (rc)
         return rc;
-    hol_report_header h;
-    static hol_report_attempt a; /* 2.5 KB of text fields */
-    char err[HOL_REPORT_ERR];
-    long rows = 0, line = 0;
-    char *s;
-    size_t n;
-    while (hol_lines_next(&l, &s, &n) > 0) {
-        if (++line == 1) {
-            if (hol_report_summary_header(s, n, &h, err))
-                break; /* not this version's: the session says so */
-            continue;
-        }
-        if (!hol_report_summary_row(&h, s, n, &a, err) && !strcmp(a.study, study_name) &&
-            !strcmp(a.participant, participant))
-            rows++;
-    }
-    hol_lines_close(&l);
+    long rows = c.rows;
     if (!rows)
         return 0;
     cli_error(cmd, 0,

@@ -37,8 +37,8 @@ void play_study_announce(void);
  * and participant, one line on stderr ("participant P07 already has data
  * for study four in 'DIR' (3 attempts); --restart-participant plays their
  * order again from the start, --resume continues it") and 2. 0 when the folder has no
- * summary.csv or no such row; a summary.csv that cannot be read is
- * reported as cli_open_lines does (the session would refuse it too). */
+ * summary.csv or no such row; summary.csv is read as `report` and --resume
+ * read it (summary_read.h: a damaged one refused alike, one line). */
 int play_study_participant_new(const char *cmd, const char *log_dir, const char *study_name,
                                const char *participant);
 
@@ -57,8 +57,11 @@ int play_study_participant_new(const char *cmd, const char *log_dir, const char 
  * and 2: no rows of theirs (nothing to resume), every level finished, or
  * a row the study given cannot have played (its condition, position and
  * level text are in none of the order's levels: another study file, or
- * another version of it). 0 ok; a summary that cannot be read: as
- * cli_open_lines says. play_study_announce then adds where it resumed. */
+ * another version of it). 0 ok; summary.csv is read as `report` reads it
+ * (summary_read.h: a symbolic link, a NUL byte, a row that is not the
+ * logs', a line too long refused alike, one line; a byte order mark and
+ * CR LF read; a last row without its newline left out).
+ * play_study_announce then adds where it resumed. */
 int play_study_resume(const char *cmd, const char *log_dir, const char *study,
                       const char *participant, hol_level *levels, int *nlevels);
 const char *play_study_resume_note(void);
