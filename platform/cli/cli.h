@@ -169,6 +169,22 @@ typedef struct cli_path {
 int cli_check_distinct(const char *cmd, const cli_path *in, int nin, const cli_path *out,
                        int nout);
 
+/* Every file a command reads is never one it writes (issue 39): the
+ * outputs out[0..nout-1] as cli_check_distinct compares them, and the
+ * files a session writes in its --log folder log_dir (NULL: none): each
+ * entry of log_dir that is a log file (hol_session_is_log_name),
+ * environment.csv or a study-HASH.txt is compared (device and inode) with
+ * each input, so that `--input DIR/summary.csv`, or a level linked to one,
+ * is refused. cli_check_reads: 0, or one line "OPT 'PATH' is ..., which
+ * this command writes" and CLI_EXIT_USAGE. play and xr call it on their
+ * options, and play_study_levels on every level file a study names. */
+typedef struct cli_outs {
+    const cli_path *out;
+    int nout;
+    const char *log_dir;
+} cli_outs;
+int cli_check_reads(const char *cmd, const cli_path *in, int nin, const cli_outs *outs);
+
 /* The options that only store, as a table (the last entry's opt NULL): a
  * flag sets an int field of the options' struct to its value, a valued
  * option keeps its value in a const char * field. cli_store_opt: 1 when a

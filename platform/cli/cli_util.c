@@ -1,5 +1,6 @@
 #define _POSIX_C_SOURCE 200809L
 #include "../../core/hol_room.h"
+#include "../../core/hol_session.h"
 #include "cli.h"
 
 #include "../../core/hol_text.h"
@@ -7,6 +8,7 @@
 #include "../file/hol_lines.h"
 
 #include <ctype.h>
+#include <dirent.h>
 #include <errno.h>
 #include <math.h>
 #include <signal.h>
@@ -152,6 +154,39 @@ int cli_check_distinct(const char *cmd, const cli_path *in, int nin, const cli_p
             }
     }
     return 0;
+}
+
+/* 1 when a --log folder's entry name is a file the session writes there. */
+static int cli__written_in_log(const char *name)
+{
+    size_t n = strlen(name);
+    return hol_session_is_log_name(name) || !strcmp(name, "environment.csv") ||
+           (!strncmp(name, "study-", 6) && n > 10 && !strcmp(name + n - 4, ".txt"));
+}
+
+int cli_check_reads(const char *cmd, const cli_path *in, int nin, const cli_outs *outs)
+{
+    if (cli_check_distinct(cmd, in, nin, outs->out, outs->nout))
+        return CLI_EXIT_USAGE;
+    DIR *d = outs->log_dir ? opendir(outs->log_dir) : NULL;
+    struct dirent *e;
+    int st = 0;
+    while (d && !st && (e = readdir(d)) != NULL) {
+        struct stat sl, si;
+        if (!cli__written_in_log(e->d_name) || fstatat(dirfd(d), e->d_name, &sl, 0))
+            continue;
+        for (int i = 0; i < nin && !st; i++)
+            if (in[i].path && !stat(in[i].path, &si) && si.st_dev == sl.st_dev &&
+                si.st_ino == sl.st_ino) {
+                cli_error(cmd, 0, "%s '%.200s' is '%.60s' of --log '%.200s', which this command "
+                                  "writes; read a copy from another folder",
+                          in[i].opt, in[i].path, e->d_name, outs->log_dir);
+                st = CLI_EXIT_USAGE;
+            }
+    }
+    if (d)
+        closedir(d);
+    return st;
 }
 
 int cli_store_opt(const cli_store *t, const char *a, const char *val, void *opts)

@@ -230,7 +230,8 @@ static int xr_options(const char *cmd, int argc, char **argv, xr_opts *o)
                            {"--study", o->study}};
     const cli_path out[] = {{"--record", o->rec}, {"--log", o->log_dir},
                             {"--check-dir", o->check_dir}};
-    if (cli_check_distinct(cmd, in, 3, out, 3))
+    const cli_outs outs = {out, 3, o->log_dir};
+    if (cli_check_reads(cmd, in, 3, &outs))
         return CLI_EXIT_USAGE;
     return cli_require_folder(cmd, "--check-dir", o->check_dir);
 }
@@ -442,10 +443,13 @@ int cli_cmd_xr(int argc, char **argv)
     hol_input *script = NULL;
     long nscript = 0;
     char study[HOL_REC_ID_MAX] = "";
+    const cli_path outp[] = {{"--record", o.rec}, {"--log", o.log_dir},
+                             {"--check-dir", o.check_dir}};
+    const cli_outs outs = {outp, 3, o.log_dir};
     st = o.study ? play_study_levels(cmd, o.study, o.participant,
                                      o.append && !o.restart_participant && !o.resume
                                          ? o.log_dir : NULL,
-                                     levels, &nlevels, study)
+                                     &outs, levels, &nlevels, study)
                  : play_levels(cmd, o.level_path, NULL, CLI_SEED_DEFAULT, &o.geo, levels,
                                &nlevels);
     if (!st)
