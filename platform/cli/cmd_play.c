@@ -243,6 +243,7 @@ static int play_options(const char *cmd, int argc, char **argv, play_opts *o)
     static const char *const repeatable[] = {"--meta", NULL};
     p.repeatable = repeatable;
     o->argc = argc, o->argv = argv;
+    o->env.argc = argc, o->env.argv = argv;
     const char *a, *val;
     int r;
     while ((r = cli_opts_next(&p, &a, &val)) > 0) {

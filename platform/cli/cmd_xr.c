@@ -175,6 +175,7 @@ static int xr_options(const char *cmd, int argc, char **argv, xr_opts *o)
     static const char *const repeatable[] = {"--meta", NULL};
     p.repeatable = repeatable;
     o->argc = argc, o->argv = argv;
+    o->env.argc = argc, o->env.argv = argv;
     const char *a, *val;
     int r, bad = 0, g;
     while (!bad && (r = cli_opts_next(&p, &a, &val)) > 0) {
