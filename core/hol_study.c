@@ -633,6 +633,7 @@ typedef struct hol__compose {
     size_t n, cap;
     long *origin;
     long nlines, max_lines;
+    const char *stage; /* what is being added: the overflow's cause */
 } hol__compose;
 
 static int hol__put_line(hol__compose *c, const char *s, size_t n, long origin)
@@ -735,11 +736,14 @@ static int hol__put_asks(const hol_study *s, int c, int i, int position, hol__co
 /* The screen lines of level i after its text. 1 when they do not fit. */
 static int hol__put_screens(const hol_study *s, int c, int i, int position, hol__compose *cp)
 {
+    cp->stage = "questions asked after it";
     if (hol__put_asks(s, c, i, position, cp))
         return 1;
     const hol_study_span *a = hol__instr_of(s, c, i), *b = hol__closing_of(s, c, i, position);
+    cp->stage = "instructions";
     if (a && hol__put_line(cp, s->text + a->off, a->len, -a->line))
         return 1;
+    cp->stage = "closing";
     return b && hol__put_line(cp, s->text + b->off, b->len, -b->line);
 }
 
@@ -768,6 +772,7 @@ static int hol__compose_text(const hol_study *s, int c, int i, int position, con
     if (c < 0)
         return hol__put_screens(s, c, i, position, cp);
     int used = 0;
+    cp->stage = "set lines";
     for (int j = 0; j < s->nsets; j++)
         used += hol__in_force(s, c, j);
     if (used) {
@@ -803,9 +808,9 @@ static void hol__map_err(const hol__compose *cp, long cond_line, hol_level_err *
     }
 }
 
-hol_err hol_study_make_level(const hol_study *s, int i, int position, const char *file,
-                             size_t len, const char *name, hol_level *out, hol_level_err *err,
-                             int *out_in_study)
+static hol_err hol__make_at(const hol_study *s, int i, int position, const char *file,
+                           size_t len, const char *name, hol_level *out, hol_level_err *err,
+                           int *out_in_study)
 {
     char buf[HOL_LEVEL_TEXT_MAX + 1];
     long origin[HOL_LEVEL_TEXT_MAX / 2 + 2];
@@ -816,7 +821,8 @@ hol_err hol_study_make_level(const hol_study *s, int i, int position, const char
     const char *cname = c < 0 ? HOL_STUDY_PRACTICE : s->conditions[c].name;
     if (!name)
         name = cname;
-    hol__compose cp = {buf, 0, sizeof buf, origin, 0, (long)(sizeof origin / sizeof origin[0])};
+    hol__compose cp = {buf, 0, sizeof buf, origin, 0, (long)(sizeof origin / sizeof origin[0]),
+                       "level file's lines"};
     /* a practice level is the file as it is, unless it carries the
      * practice's instructions */
     int composed = c >= 0 || hol__instr_of(s, c, i);
@@ -825,8 +831,7 @@ hol_err hol_study_make_level(const hol_study *s, int i, int position, const char
         *out_in_study = 1;
         return hol__fail(err, HOL_ENOMEM, at, 0,
                          "%s %s: its level with the %s is longer than %d bytes",
-                         c >= 0 ? "condition" : "the", cname,
-                         c >= 0 ? "set lines" : "instructions", HOL_LEVEL_TEXT_MAX);
+                         c >= 0 ? "condition" : "the", cname, cp.stage, HOL_LEVEL_TEXT_MAX);
     }
     const char *t = composed ? buf : file ? file : "";
     size_t tl = composed ? cp.n : file ? len : 0;
@@ -839,4 +844,47 @@ hol_err hol_study_make_level(const hol_study *s, int i, int position, const char
     snprintf(out->condition, sizeof out->condition, "%s", cname);
     out->position = c < 0 ? 0 : position;
     return HOL_OK;
+}
+
+/* What a condition's level carries depends on its position only through
+ * being the last (the closing, the asks `after study`): the positions
+ * condition c can take, one not the last and the last (fixed: its own). */
+static int hol__positions(const hol_study *s, int c, int out[2])
+{
+    int n = s->nconditions;
+    if (s->rule == HOL_STUDY_FIXED || n < 2) {
+        out[0] = s->rule == HOL_STUDY_FIXED ? c + 1 : n;
+        return 1;
+    }
+    out[0] = 1, out[1] = n;
+    return 2;
+}
+
+hol_err hol_study_make_level(const hol_study *s, int i, int position, const char *file,
+                             size_t len, const char *name, hol_level *out, hol_level_err *err,
+                             int *out_in_study)
+{
+    int c = i >= 0 && i < s->nlevels ? hol_study_level_condition(s, i) : -1, at[2];
+    int n = c >= 0 ? hol__positions(s, c, at) : 0, last = s->nconditions;
+    for (int k = 0; k < n; k++) {
+        if ((at[k] == last) == (position == last))
+            continue; /* the participant's own position is made last, below */
+        hol_err e = hol__make_at(s, i, at[k], file, len, name, out, err, out_in_study);
+        hol_level_err mine;
+        int mine_in = 0;
+        /* an error at the position given too is its own, unmarked */
+        hol_err e2 = e ? hol__make_at(s, i, position, file, len, name, out, &mine, &mine_in)
+                       : HOL_OK;
+        if (e2) {
+            *err = mine, *out_in_study = mine_in;
+            return e2;
+        }
+        if (e) {
+            size_t m = strlen(err->msg);
+            snprintf(err->msg + m, sizeof err->msg - m, " (at position %d of %d, %s)", at[k],
+                     last, at[k] == last ? "the last" : "not the last");
+            return e;
+        }
+    }
+    return hol__make_at(s, i, position, file, len, name, out, err, out_in_study);
 }
