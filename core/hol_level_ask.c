@@ -59,6 +59,10 @@ static hol_err hol__ask_items(hol__lp *p, hol_app_ask *a, const char *ids)
         if (k == p->ndefs)
             return hol__lfail(p, HOL_EARG, p->line, "ask %s: no question '%.*s' before it",
                               a->name, (int)(n < 32 ? n : 32), s);
+        for (int j = a->first; j < L->nquestions; j++)
+            if (!strcmp(L->questions[j].id, p->defs[k].id))
+                return hol__lfail(p, HOL_EARG, p->line, "ask %s lists '%s' twice", a->name,
+                                  p->defs[k].id);
         if (L->nquestions >= HOL_APP_MAX_QUESTIONS)
             return hol__lfail(p, HOL_ENOMEM, p->line, "more than %d items to ask",
                               HOL_APP_MAX_QUESTIONS);

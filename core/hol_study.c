@@ -32,6 +32,7 @@ typedef struct hol__sp {
     hol_study *s;
     hol_level_err *err;
     long line, study_line, rule_line;
+    long allow_line; /* `allow minimap-toggle`'s line, 0: none yet */
     int cur; /* the condition being read, -1 before the first */
 } hol__sp;
 
@@ -209,6 +210,10 @@ static hol_err hol__allow(hol__sp *p, const char *w, size_t n)
     if (!hol__is(w, n, "minimap-toggle"))
         return hol__fail(p->err, HOL_EPARSE, p->line, 0, "allow '%.*s' is not minimap-toggle",
                          (int)(n < 30 ? n : 30), w);
+    if (p->allow_line)
+        return hol__fail(p->err, HOL_EARG, p->line, p->allow_line,
+                         "allow minimap-toggle is given twice");
+    p->allow_line = p->line;
     p->s->allow_minimap_toggle = 1;
     return HOL_OK;
 }
@@ -303,6 +308,11 @@ static hol_err hol__questionnaire(hol__sp *p, const char *rest, const char *end)
         a->line = p->line;
         return HOL_OK;
     }
+    if (n3 && !n4 && hol_ask_when(w3, n3) >= 0)
+        return hol__fail(p->err, HOL_EPARSE, p->line, 0,
+                         "questionnaire %s %.*s %.*s: a questionnaire is placed with 'after "
+                         "level|condition|study'", name, (int)(n2 < 20 ? n2 : 20), w2,
+                         (int)n3, w3);
     if (hol_ask_preset(w, n, NULL, 0))
         return hol__fail(p->err, HOL_EARG, p->line, 0, "questionnaire %s is a preset: it has its "
                          "items", name);
@@ -328,6 +338,13 @@ static hol_err hol__questionnaire(hol__sp *p, const char *rest, const char *end)
             return hol__fail(p->err, HOL_EARG, p->line, 0,
                              "questionnaire %s: no question '%.*s' before it", name,
                              (int)(k < 32 ? k : 32), id);
+        const char *q2 = it, *id2;
+        size_t k2;
+        while ((k2 = hol__field(&q2, end, &id2)) > 0 && id2 < id)
+            if (k2 == k && !memcmp(id2, id, k))
+                return hol__fail(p->err, HOL_EARG, p->line, 0,
+                                 "questionnaire %s lists '%.*s' twice", name,
+                                 (int)(k < 32 ? k : 32), id);
     }
     (void)items;
     hol_study_questionnaire *d = &s->questionnaires[s->nquestionnaires++];
@@ -436,7 +453,7 @@ hol_err hol_study_parse(const char *text, size_t len, hol_study *out, hol_level_
         return hol__fail(err, HOL_ENOMEM, 0, 0, "longer than %d bytes", HOL_STUDY_TEXT_MAX);
     *out = zero;
     memcpy(out->text, text, len);
-    hol__sp p = {out, err, 0, 0, 0, -1};
+    hol__sp p = {out, err, 0, 0, 0, 0, -1};
     const char *s = out->text, *end = out->text + len;
     hol_err e = HOL_OK;
     if (len >= 3 && !memcmp(s, "\xef\xbb\xbf", 3))
@@ -808,6 +825,23 @@ static void hol__map_err(const hol__compose *cp, long cond_line, hol_level_err *
     }
 }
 
+/* An error on a study's set line says "set: " as the line's own check
+ * does (issue 39: `set place lantern` errors found once composed). */
+static void hol__set_prefix(const hol_study *s, int in_study, hol_level_err *err)
+{
+    int on_set = 0;
+    for (int j = 0; in_study && j < s->nsets; j++)
+        on_set |= s->sets[j].line == err->line;
+    if (!on_set || !strncmp(err->msg, "set", 3))
+        return;
+    size_t n = strlen(err->msg);
+    if (n > sizeof err->msg - 6)
+        n = sizeof err->msg - 6;
+    memmove(err->msg + 5, err->msg, n);
+    memcpy(err->msg, "set: ", 5);
+    err->msg[n + 5] = 0;
+}
+
 static hol_err hol__make_at(const hol_study *s, int i, int position, const char *file,
                            size_t len, const char *name, hol_level *out, hol_level_err *err,
                            int *out_in_study)
@@ -839,6 +873,7 @@ static hol_err hol__make_at(const hol_study *s, int i, int position, const char 
     if (e) {
         if (composed)
             hol__map_err(&cp, at, err, out_in_study);
+        hol__set_prefix(s, *out_in_study, err);
         return e;
     }
     snprintf(out->condition, sizeof out->condition, "%s", cname);

@@ -472,7 +472,7 @@ static void test_levels(void **state)
     assert_int_equal(in_study, 0);
     assert_int_equal(parse("study s\ncondition a\nlevel f.lvl\nset place rock Nf\n", msg), 0);
     assert_int_equal(make(0, 1, "mode flag\nflag Nf\n", &L, msg, &in_study), 1);
-    assert_string_equal(msg, "line 4: the placement on Nf conflicts with the flag");
+    assert_string_equal(msg, "line 4: set: the placement on Nf conflicts with the flag");
     assert_int_equal(in_study, 1);
     /* a condition of set lines without a mode: its condition line */
     assert_int_equal(parse("study s\ncondition a\nset seed 3\ncondition b\nset mode explore\n", msg),
@@ -483,7 +483,7 @@ static void test_levels(void **state)
     /* a conflict the level finds after its last line: the set line */
     assert_int_equal(parse("study s\ncondition a\nset mode flag\n", msg), 0);
     assert_int_equal(make(0, 1, NULL, &L, msg, &in_study), 1);
-    assert_string_equal(msg, "line 3: mode flag needs a 'flag' or 'flag-distance' line");
+    assert_string_equal(msg, "line 3: set: mode flag needs a 'flag' or 'flag-distance' line");
     assert_int_equal(in_study, 1);
     /* without set lines the file is unchanged: the same SHA-256 */
     assert_int_equal(parse("study s\ncondition a\nlevel f.lvl\n", msg), 0);

@@ -60,10 +60,21 @@ int cli_geometry_value(const char *cmd, const char *opt, const char *v, int *q, 
 #define CLI_SEED_DEFAULT 1
 int cli_parse_u64(const char *s, uint64_t *out);
 
-/* "A,B,..." of exactly n finite plain decimal numbers ([-+]D[.D][e[-+]D];
- * no blanks, hex, inf or nan) into out[0..n-1] (n 1..16): option values
- * such as --eye X,Y,Z and --yaw. 1 ok, 0 bad. */
+/* One number grammar for every option (issue 39; docs/cli.md):
+ * - cli_parse_doubles: "A,B,..." of exactly n finite plain decimal numbers
+ *   (-D[.D][e[-+]D]: no blanks, plus, hex, inf, nan, ".5" or "5.", and
+ *   none that under- or overflows: 1e-400) into out[0..n-1] (n 1..16):
+ *   option values such as --eye X,Y,Z and --orient.
+ * - cli_parse_real: one such number in lo..hi; where lo >= 0 no minus is
+ *   taken ("-0" is not a volume).
+ * - cli_parse_wxd: "WxD" (or "WXD") of two such numbers, each in lo..hi.
+ * - cli_parse_decimal: an unsigned 64-bit number of decimal digits only
+ *   (counts, radii, scales: only seeds take 0x hex, SPEC 7).
+ * Each: 1 ok, 0 bad (the caller reports it). */
 int cli_parse_doubles(const char *s, double *out, int n);
+int cli_parse_real(const char *s, double lo, double hi, double *out);
+int cli_parse_wxd(const char *s, double lo, double hi, double *w, double *d);
+int cli_parse_decimal(const char *s, uint64_t *out);
 
 /* Strip spaces and tabs at both ends. */
 void cli_trim(char **s, size_t *len);

@@ -290,9 +290,8 @@ size_t cli_parse_count(const char *s)
 
 int cli_volume_value(const char *cmd, const char *v, double *out_volume)
 {
-    char *end = NULL;
-    double x = strtod(v, &end);
-    if (!v[0] || *end || !(x >= 0 && x <= 1)) {
+    double x;
+    if (!cli_parse_real(v, 0, 1, &x)) {
         cli_error(cmd, 0, "--volume '%.40s' is not a number in 0..1", v);
         return -1;
     }
@@ -309,19 +308,23 @@ int cli_budget_value(const char *cmd, const char *v, size_t *out_budget)
     return 0;
 }
 
-/* The length of the plain decimal number at p ([-+]digits[.digits][e[-+]digits],
- * digits on at least one side of the point), 0 if there is none: strtod
- * would also take blanks, hex, inf and nan. */
+/* The length of the plain decimal number at p (-D[.D][e[-+]D]: an
+ * optional minus, digits, a point only between digits, an exponent), 0 if
+ * there is none: strtod would also take blanks, a plus, hex, inf, nan, ".5"
+ * and "5." (issue 39: one number grammar for every option). */
 static size_t cli__decimal_len(const char *p)
 {
-    size_t i = (p[0] == '-' || p[0] == '+'), d = 0;
+    size_t i = p[0] == '-', d = 0;
     while (isdigit((unsigned char)p[i]))
         i++, d++;
-    if (p[i] == '.')
-        for (i++; isdigit((unsigned char)p[i]); i++)
-            d++;
     if (d == 0)
         return 0;
+    if (p[i] == '.') {
+        if (!isdigit((unsigned char)p[i + 1]))
+            return 0;
+        for (i++; isdigit((unsigned char)p[i]); i++)
+            ;
+    }
     if (p[i] == 'e' || p[i] == 'E') {
         size_t j = i + 1 + (p[i + 1] == '-' || p[i + 1] == '+'), e = j;
         while (isdigit((unsigned char)p[j]))
@@ -330,6 +333,35 @@ static size_t cli__decimal_len(const char *p)
             i = j;
     }
     return i;
+}
+
+int cli_parse_real(const char *s, double lo, double hi, double *out)
+{
+    double x;
+    if (!cli_parse_doubles(s, &x, 1) || (lo >= 0 && s[0] == '-') || !(x >= lo && x <= hi))
+        return 0;
+    *out = x;
+    return 1;
+}
+
+int cli_parse_wxd(const char *s, double lo, double hi, double *w, double *d)
+{
+    char buf[64];
+    size_t n = strlen(s);
+    const char *x = strpbrk(s, "xX");
+    if (n >= sizeof buf || !x)
+        return 0;
+    memcpy(buf, s, n + 1);
+    buf[x - s] = 0;
+    return cli_parse_real(buf, lo, hi, w) && cli_parse_real(buf + (x - s) + 1, lo, hi, d);
+}
+
+int cli_parse_decimal(const char *s, uint64_t *out)
+{
+    for (const char *p = s; *p; p++)
+        if (*p < '0' || *p > '9')
+            return 0;
+    return cli_parse_u64(s, out);
 }
 
 int cli_geometry_value(const char *cmd, const char *opt, const char *v, int *q, int *cols,

@@ -86,8 +86,8 @@ static int parse_frame_list(const char *s, long *out, int cap, int *out_n)
     while (*p) {
         char *e;
         errno = 0;
-        long v = strtol(p, &e, 10);
-        if (e == p || errno || v < 0 || n >= cap || (*e && *e != ','))
+        long v = *p >= '0' && *p <= '9' ? strtol(p, &e, 10) : -1; /* digits: no sign, blank */
+        if (v < 0 || errno || n >= cap || (*e && *e != ','))
             return 1;
         out[n++] = v;
         p = *e ? e + 1 : e;

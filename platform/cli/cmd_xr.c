@@ -109,16 +109,8 @@ typedef struct xr_opts {
 /* --play-area WxD: two sizes in metres, 0.5 to 100 each, "2.6x2.6". 0 ok. */
 static int xr_play_area(const char *cmd, const char *val, float out[2])
 {
-    char *end = NULL;
-    double w = strtod(val, &end), d = 0;
-    int ok = end != val && (*end == 'x' || *end == 'X') && end[1] >= '0' && end[1] <= '9';
-    if (ok) {
-        const char *p = end + 1;
-        d = strtod(p, &end);
-        ok = end != p && !*end && w >= 0.5 && w <= 100 && d >= 0.5 && d <= 100 && val[0] >= '0' &&
-             val[0] <= '9';
-    }
-    if (!ok) {
+    double w, d;
+    if (!cli_parse_wxd(val, 0.5, 100, &w, &d)) {
         cli_error(cmd, 0, "--play-area '%.40s' is not WxD in metres, 0.5 to 100 each (2.6x2.6)",
                   val);
         return 1;
