@@ -90,6 +90,11 @@ const char *cli_escape(const char *s, char *buf, size_t cap);
  * lineno <= 0) to stderr. */
 void cli_error(const char *cmd, long lineno, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
+/* The same, for an error on a command's way out (the session's end, the
+ * environment row after the session), which may be the failure already
+ * said once more (the disk still full): printed only when no cli_error or
+ * cli_error_end line came before in this run. One line per failure. */
+void cli_error_end(const char *cmd, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 
 /* Split s (length len) at runs of spaces and tabs; up to max fields.
  * Returns the number of fields found (max + 1 means "more than max"). */
@@ -184,7 +189,7 @@ int cli_check_distinct(const char *cmd, const cli_path *in, int nin, const cli_p
  * outputs out[0..nout-1] as cli_check_distinct compares them, and the
  * files a session writes in its --log folder log_dir (NULL: none): each
  * entry of log_dir that is a log file (hol_session_is_log_name),
- * environment.csv or a study-HASH.txt is compared (device and inode) with
+ * environment.csv, a study-HASH.txt or the folder's lock is compared (device and inode) with
  * each input, so that `--input DIR/summary.csv`, or a level linked to one,
  * is refused. cli_check_reads: 0, or one line "OPT 'PATH' is ..., which
  * this command writes" and CLI_EXIT_USAGE. play and xr call it on their
