@@ -49,6 +49,15 @@ printf 'study s\ncondition c\nlevel logs/summary.csv\n' >t.study
 run "a study's level in the log folder" 2 env DISPLAY= "$H" play --study t.study \
     --participant P1 --log logs --append --input in.txt
 one_line "a study's level in the log folder" "the study's level 'logs/summary.csv' is 'summary.csv' of --log 'logs'"
+# replay: a recording under a log file's name in its --log folder (the
+# folder's recovery removed it)
+printf '%s\n' "holonomy-rec 2" "session 20260131T140509Z-5f3a9c01" "participant P01" \
+    "start 2026-01-31T14:05:09Z" "version 0.1.0" "level f" "L mode flag" "L seed 5" \
+    "L flag Nf" "end" "0 f=9" >logs/attempt-009.live
+run "replay: the recording is a live log file" 2 "$H" replay logs/attempt-009.live --log logs --append
+one_line "replay live" "the recording 'logs/attempt-009.live' is 'attempt-009.live' of --log 'logs'"
+[ -f logs/attempt-009.live ] && ok || bad "replay removed its own recording"
+rm -f logs/attempt-009.live
 # a level beside the logs, under another name, is no log file
 cp a.lvl logs/mine.lvl
 "$H" play logs/mine.lvl --log logs --append --input in.txt >"$T/out" 2>"$T/err"

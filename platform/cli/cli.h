@@ -192,8 +192,8 @@ int cli_check_distinct(const char *cmd, const cli_path *in, int nin, const cli_p
  * environment.csv, a study-HASH.txt or the folder's lock is compared (device and inode) with
  * each input, so that `--input DIR/summary.csv`, or a level linked to one,
  * is refused. cli_check_reads: 0, or one line "OPT 'PATH' is ..., which
- * this command writes" and CLI_EXIT_USAGE. play and xr call it on their
- * options, and play_study_levels on every level file a study names. */
+ * this command writes" and CLI_EXIT_USAGE. play, xr and replay call it on
+ * their options, and play_study_levels on every level file a study names. */
 typedef struct cli_outs {
     const cli_path *out;
     int nout;

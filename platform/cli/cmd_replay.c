@@ -148,7 +148,8 @@ static int replay_options(replay_ctx *c, int argc, char **argv)
         return CLI_EXIT_USAGE;
     const cli_path in[] = {{"the recording", c->rec}};
     const cli_path out[] = {{"--log", c->log_dir}, {"--out-dir", c->out_dir}, {"--wav", c->wav}};
-    return cli_check_distinct(c->cmd, in, 1, out, 3);
+    const cli_outs outs = {out, 3, c->log_dir};
+    return cli_check_reads(c->cmd, in, 1, &outs);
 }
 
 /* ---- setup ------------------------------------------------------------------------ */
