@@ -92,6 +92,10 @@ hol_err hol__key_ask(hol__lp *p, char **f, int nf)
     if (a->when < 0)
         return hol__lfail(p, HOL_EPARSE, p->line, "ask %s: '%.20s' is not level, condition or "
                           "study", a->name, f[2]);
+    for (int k = 0; k < L->nasks; k++) /* asked once a time (issue 39) */
+        if (L->asks[k].when == a->when && !strcmp(L->asks[k].name, a->name))
+            return hol__lfail(p, HOL_EARG, p->line, "ask %s %s is given twice", a->name,
+                              hol_ask_when_name(a->when));
     /* the IDs: the raw line after the key, NAME and WHEN */
     const char *r = p->raw;
     for (int k = 0; k < 3; k++) {

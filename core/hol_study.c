@@ -299,6 +299,11 @@ static hol_err hol__questionnaire(hol__sp *p, const char *rest, const char *end)
             return hol__fail(p->err, HOL_EPARSE, p->line, 0,
                              "questionnaire %s after '%.*s': level, condition or study", name,
                              (int)(n3 < 20 ? n3 : 20), w3);
+        for (int k = 0; k < s->nasks; k++)
+            if (s->asks[k].when == when && !strcmp(s->asks[k].name, name))
+                return hol__fail(p->err, HOL_EARG, p->line, s->asks[k].line,
+                                 "questionnaire %s after %s is given twice", name,
+                                 hol_ask_when_name(when));
         if (s->nasks >= HOL_APP_MAX_ASKS)
             return hol__fail(p->err, HOL_ENOMEM, p->line, 0, "more than %d questionnaires asked",
                              HOL_APP_MAX_ASKS);

@@ -115,6 +115,11 @@ study_refused "set place lantern: not canonical" "line 3: set: 'Nrr' is not a ca
     "set lighting night" "set place lantern Nrr"
 study_refused "set place lantern twice" "line 4: set: a lantern on Nf is already placed on line 3" \
     "set lighting night" "set place lantern Nf" "set place lantern Nf"
+study_refused "a placement twice" "line 3: questionnaire ssq after level is given twice (line 2)" \
+    "questionnaire ssq after level" "questionnaire ssq after level"
+printf 'mode explore\nask ssq level\nask ssq level\n' >q2.lvl
+run "a level's ask twice" 2 "$H" game q2.lvl </dev/null
+one_line "a level's ask twice" "line 3: ask ssq level is given twice"
 printf 'mode explore\nquestion fun likert 1 7 "Fun?" "a" "b"\nask mine level fun fun\n' >q.lvl
 run "a level's ask lists an item twice" 2 "$H" game q.lvl </dev/null
 one_line "a level's ask twice" "line 3: ask mine lists 'fun' twice"
