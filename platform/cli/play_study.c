@@ -32,7 +32,7 @@ static int study_path(const char *study, const char *level, char *out, size_t ca
 
 /* Level i of the study, labelled with position pos, into *out. */
 static int study_level(const char *cmd, const char *spath, const hol_study *s, int i, int pos,
-                       hol_level *out)
+                       const cli_outs *outs, hol_level *out)
 {
     char rel[HOL_STUDY_PATH_MAX], path[4096], name[64] = "", msg[256];
     uint8_t *data = NULL;
@@ -44,7 +44,10 @@ static int study_level(const char *cmd, const char *spath, const hol_study *s, i
                       s->levels[i].line);
             return CLI_EXIT_USAGE;
         }
-        int rs = cli_read_file(cmd, "level", path, HOL_LEVEL_TEXT_MAX, &data, &size);
+        const cli_path in = {"the study's level", path};
+        int rs = cli_check_reads(cmd, &in, 1, outs);
+        if (!rs)
+            rs = cli_read_file(cmd, "level", path, HOL_LEVEL_TEXT_MAX, &data, &size);
         if (rs)
             return rs;
         const char *base = strrchr(path, '/');
@@ -98,8 +101,8 @@ void play_study_announce(void)
 }
 
 int play_study_levels(const char *cmd, const char *path, const char *participant,
-                      const char *fresh_in, hol_level *levels, int *nlevels,
-                      char study_name[HOL_REC_ID_MAX])
+                      const char *fresh_in, const cli_outs *outs, hol_level *levels,
+                      int *nlevels, char study_name[HOL_REC_ID_MAX])
 {
     static hol_study s;
     *nlevels = 0;
@@ -125,7 +128,7 @@ int play_study_levels(const char *cmd, const char *path, const char *participant
     hol_study_order(&s, p, order);
     int n = hol_study_session(&s, order, lv, cond, pos);
     for (int i = 0; i < n; i++)
-        if ((st = study_level(cmd, path, &s, lv[i], pos[i], &levels[i])))
+        if ((st = study_level(cmd, path, &s, lv[i], pos[i], outs, &levels[i])))
             return st;
     if (fresh_in && (st = play_study_participant_new(cmd, fresh_in, s.name, participant)))
         return st;

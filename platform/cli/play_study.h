@@ -17,6 +17,9 @@
  *   passed (its session open), so that a refusal is its one line alone.
  *   fresh_in (NULL: no check): a log folder the session appends to; a
  *   participant with data there is refused (play_study_participant_new).
+ *   outs: the command's outputs; a level file that is one of them (or a
+ *   file of its --log folder) is refused before it is read
+ *   (cli_check_reads, issue 39): "the study's level 'PATH' is ...".
  * - Every problem is one line on stderr naming the file and line (a bad
  *   study line, a level file's bad line with the condition it serves), and
  *   the exit status is returned: 2 bad input, 1 failure; 0 ok.
@@ -26,9 +29,10 @@
 
 #include "../../core/hol_level.h"
 #include "../../core/hol_rec.h"
+#include "cli.h"
 
 int play_study_levels(const char *cmd, const char *path, const char *participant,
-                      const char *fresh_in, hol_level *levels, int *nlevels,
+                      const char *fresh_in, const cli_outs *outs, hol_level *levels, int *nlevels,
                       char study_name[HOL_REC_ID_MAX]);
 void play_study_announce(void);
 
