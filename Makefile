@@ -153,6 +153,16 @@ $(CORE_LIB): $(CORE_OBJ)
 	@rm -f $@
 	$(AR) rcs $@ $^
 
+# The renderer's GLSL (render/shaders/*.glsl) as C strings, made in the
+# build folder by render/shaders/glsl_c.sh (never committed) for
+# render/hol_program.c, the only file that includes it (every build of
+# render/: this one, the web's, build_apk.sh and quest_link_check.sh).
+GLSL_H := $(BUILD)/gen/hol_glsl.h
+$(GLSL_H): render/shaders/glsl_c.sh $(wildcard render/shaders/*.glsl)
+	sh render/shaders/glsl_c.sh $@
+$(BUILD)/render/hol_program.o: $(GLSL_H)
+$(BUILD)/render/hol_program.o: override CFLAGS += -I$(BUILD)/gen
+
 $(RENDER_LIB): $(RENDER_OBJ)
 	@rm -f $@
 	$(AR) rcs $@ $^
@@ -257,6 +267,9 @@ $(BUILD)/bench/%: tests/%.c $(CORE_SRC)
 FUZZ_EXTRA_fuzz_png := render/hol_png.c -lz
 FUZZ_EXTRA_fuzz_cli := platform/cli/cli_util.c platform/file/hol_file.c platform/file/hol_lines.c
 FUZZ_EXTRA_fuzz_lines := platform/cli/cli_util.c platform/file/hol_file.c platform/file/hol_lines.c
+FUZZ_EXTRA_fuzz_report_instr := $(addprefix platform/cli/report/,report_stats.c report_instr.c \
+  report_file.c report_escape.c) platform/cli/cli_util.c platform/file/hol_file.c \
+  platform/file/hol_lines.c
 FUZZ_EXTRA_fuzz_hid_desc := $(HID_SRC)
 FUZZ_EXTRA_fuzz_hid_report := $(HID_SRC)
 FUZZ_EXTRA_fuzz_hid_script := $(HID_SRC) $(HID_DEV_SRC) $(HID_LIBS)
@@ -644,6 +657,9 @@ $(WEB_STAMP): FORCE
 	@echo '$(WEB_FLAGS_TEXT)' | cmp -s - $@ || echo '$(WEB_FLAGS_TEXT)' >$@
 
 FORCE:
+
+$(BUILD)/web-obj/render/hol_program.o: $(GLSL_H)
+$(BUILD)/web-obj/render/hol_program.o: WEB_CFLAGS += -I$(BUILD)/gen
 
 $(BUILD)/web-obj/%.o: %.c $(WEB_STAMP)
 	@mkdir -p $(dir $@)
