@@ -12,11 +12,11 @@
 #define HOL__PI 3.14159265358979323846
 
 /* The HUD's em in pixels on a screen h pixels high: 24 at 720p, at
- * least 10. */
+ * least 8 (a line of 9.3 pixels, the 5x7 font's 9 at 1x). */
 static float hol__hud_size(int h)
 {
     float s = (float)h / 30.0f;
-    return s < 10 ? 10 : s;
+    return s < 8 ? 8 : s;
 }
 
 

@@ -37,7 +37,7 @@
 
 #define HOL_HUD_MAP_RADIUS HOL_APP_MINIMAP_RADIUS
 /* The caption over the flat grid's map (Q = 4): a plain top view. */
-#define HOL_HUD_FLAT_CAPTION "MAP: FLAT TOP VIEW (4,4)"
+#define HOL_HUD_FLAT_CAPTION "Map: flat top view {4,4}"
 
 /* Append the HUD of frame f (viewport w x h pixels) to out: the map part
  * (disk, tiles, path, objectives, rim arrows: a function of the user's

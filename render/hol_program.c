@@ -113,12 +113,6 @@ static GLuint hol__shader(const hol_gl *gl, GLenum type, const char *pre, const 
     GLint ok = 0;
     gl->GetShaderiv(s, GL_COMPILE_STATUS, &ok);
     if (!ok) {
-#ifdef HOL_DEBUG_GLSL
-        char log[2048];
-        extern void glGetShaderInfoLog(GLuint, GLsizei, GLsizei *, char *);
-        glGetShaderInfoLog(s, sizeof log, NULL, log);
-        fprintf(stderr, "%s\n", log);
-#endif
         gl->DeleteShader(s);
         return 0;
     }
