@@ -35,6 +35,7 @@
 #include "../platform/image/hol_png_file.h"
 #include "../render/hol_app_frame.h"
 #include "panel_view.h"
+#include "../core/hol_face.h"
 #include "render_fixture.h"
 
 static int W = 480, H = 480; /* HOL_PANEL_SIZE=N: N x N an eye */
@@ -177,10 +178,14 @@ static int central(const eye_shot *s, double deg)
 /* The text block's rectangle in font pixels: map beside it or not, n lines. */
 static void text_rect(int map, int n, double r[4])
 {
+    /* a line of the text face at a cap height of 7 font pixels */
+    hol_face_metrics m;
+    hol_face_get_metrics(&m);
+    double lh = (double)(m.ascent - m.descent) / m.units_per_em * 7 * hol_face_em_per_cap();
     double wide = 136 + (map ? 6 + 64 : 0);
     r[0] = -wide / 2;
     r[1] = -wide / 2 + 136;
-    r[2] = 32 - (9.0 * n + 4);
+    r[2] = 32 - (lh * n + 4);
     r[3] = 32;
 }
 
