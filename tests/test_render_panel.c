@@ -54,8 +54,8 @@ typedef struct eye_shot {
     box all, text, map;
 } eye_shot;
 
-static const char *const lines[] = {"FIND THE FLAG", "STEPS 3", "TIME 0:42"};
-static const char *hint = "TRIGGER: NEXT LEVEL, B: AGAIN";
+static const char *const lines[] = {"Find the flag", "STEPS 3", "TIME 0:42"};
+static const char *hint = "Trigger: the next level, B: this one again";
 
 /* The shared view (tests/panel_view.h), the eyes 64 mm apart, and a flag
  * two tiles ahead, on the map and in the world, with its cues. */
@@ -295,7 +295,7 @@ static void test_panel_stereo(void **state)
     eye_shot s[2];
     for (int e = 0; e < 2; e++)
         shoot(&fx, &v, e, 1, &s[e]);
-    /* 3 lines + the prompt, which wraps: 29 characters, 22 a line */
+    /* 3 lines + the prompt, which wraps (wider than the block) */
     assert_int_equal(check_pair(&v, s, 1, 5, 0), 0);
     print_message("text block: left eye x %d..%d, right eye x %d..%d (disparity %d px); "
                   "y %d..%d; map x %d..%d / %d..%d\n",
