@@ -125,7 +125,7 @@ static void test_preamble(void **state)
     hol_prog_key text = {HOL_LIGHT_DAY, 0, 0, 0, 0, 0, 1};
     assert_true(hol_prog_preamble(&text, pre, sizeof pre) > 0);
     assert_non_null(strstr(pre, "#define HOL_TEXT 1\n"));
-    assert_non_null(strstr(pre, "#define HOL_SPREAD 3.0\n"));
+    assert_non_null(strstr(pre, "#define HOL_SPREAD 2.0\n"));
 }
 
 int main(void)

@@ -463,12 +463,6 @@ var HolWebLib = {
     if (Module['holEvent']) Module['holEvent'](k, t);
   },
 
-  // glTexImage2D of the text face's atlas (hol_web_main.c): one R8
-  // texture whose w * h bytes start at px (UNPACK_ALIGNMENT 1)
-  hol_web_js_tex_image_2d: function (target, level, ifmt, w, h, border, fmt, type, px) {
-    GLctx.texImage2D(target, level, ifmt, w, h, border, fmt, type, HEAPU8, px);
-  },
-
   // a User Timing mark (performance.mark): the start's phases and the
   // first frame, for the bench (tests/web/first_frame.mjs)
   hol_web_js_mark: function (name) {

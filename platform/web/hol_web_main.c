@@ -395,13 +395,6 @@ static EM_BOOL pancake_frame(double t_ms, void *user)
     return EM_TRUE;
 }
 
-/* glTexImage2D for the renderer's one texture, the text face's R8 atlas
- * (render/hol_render.c): its bytes straight from the heap
- * (hol_web_lib.js), not emscripten's glue for every pixel format. */
-extern void hol_web_js_tex_image_2d(GLenum target, GLint level, GLint ifmt, GLsizei w, GLsizei h,
-                                    GLint border, GLenum fmt, GLenum type, const void *px);
-#define glTexImage2D hol_web_js_tex_image_2d
-
 /* The renderer's GL functions (render/hol_gl.h's list), linked by name:
  * emscripten_webgl_get_proc_address would link every WebGL function
  * emscripten has (57 KB of JS, a 4 KB table in the wasm; docs/web.md). */
