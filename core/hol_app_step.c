@@ -479,6 +479,49 @@ static hol_err hol__replace(hol_app *app, const hol_input *in)
     return err;
 }
 
+/* 1 when the record's head may walk (hol_input.h): not a headset's, or a
+ * worn, focused headset with a tracked position. */
+static int hol__may_walk(const hol_input *in)
+{
+    const uint32_t want = HOL_INPUT_HEAD_VALID | HOL_INPUT_FOCUSED;
+    const uint32_t mask = want | HOL_INPUT_HEADSET_OFF | HOL_INPUT_POS_EMULATED;
+    return !(in->flags & HOL_INPUT_HEADSET) || (in->flags & mask) == want;
+}
+
+/* 1 when the record pauses the game: no focus (a system menu, the window
+ * in the background), the controller gone, the headset off. */
+static int hol__unfocused(const hol_input *in)
+{
+    return !(in->flags & HOL_INPUT_FOCUSED) ||
+           (in->flags & (HOL_INPUT_DEVICE_LOST | HOL_INPUT_HEADSET_OFF));
+}
+
+/* The first record that may walk after one that might not (app->rebase):
+ * the room is re-based around the head with no room step and no turn (the
+ * tile kept, the cell the head's); another cell than the user's is the
+ * `relocated` event, with the head's floor distance from where it last
+ * walked. A head still in the user's cell changes nothing a walk there
+ * would not. */
+static hol_err hol__relocate(hol_app *app, const hol_input *in)
+{
+    double pos[3] = {in->head.pos[0], in->head.pos[1], in->head.pos[2]};
+    double dx = pos[0] - app->mo.head[0], dz = pos[2] - app->mo.head[2];
+    hol_room was = app->mo.user;
+    app->rebase = 0;
+    hol_motion_replace(&app->mo, pos, app->mo.yaw_deg);
+    if (was.col == app->mo.user.col && was.row == app->mo.user.row)
+        return HOL_OK;
+    app->ev.relocated = 1;
+    app->ev.relocated_m = sqrt(dx * dx + dz * dz);
+    app->place_panel = 1;
+    hol__point_sync(app);
+    hol_err err = hol_world_update(app->world, &app->mo.user);
+    int exact;
+    if (!err && !app->done && (app->optimum >= 0 || app->level.mode == HOL_APP_TUTORIAL))
+        (void)hol__plan(app, &app->mo.user, &app->remaining, &exact);
+    return err;
+}
+
 /* A level begins where a tracked head stands: at the level's first frame
  * (a start or a restart) the room is placed around the head as a recentre
  * places it, with no turn (the look is the head's own), so a player who is
@@ -523,6 +566,10 @@ static hol_err hol__move(hol_app *app, const hol_input *in, double t0, double dt
     if (in->flags & HOL_INPUT_HEAD_VALID) {
         double pos[3] = {in->head.pos[0], in->head.pos[1], in->head.pos[2]};
         hol__yaw_pitch_from_quat(in->head.quat, &app->mo.yaw_deg, &app->mo.pitch_deg);
+        if (!hol__may_walk(in)) /* the look follows; the head walks nothing */
+            return HOL_OK;
+        if (app->rebase)
+            return hol__relocate(app, in);
         err = hol_motion_move_to(&app->mo, pos, &st);
         if (err && err != HOL_ERANGE)
             return err;
@@ -552,7 +599,7 @@ static void hol__screen_frame(hol_app *app, const hol_input *in, uint32_t presse
 {
     hol_app_view *v = &app->view;
     app->device = in->device;
-    v->paused = !(in->flags & HOL_INPUT_FOCUSED) || (in->flags & HOL_INPUT_DEVICE_LOST);
+    v->paused = hol__unfocused(in);
     if (pressed & HOL_BTN_DEBUG)
         app->debug = !app->debug;
     if (pressed & HOL_BTN_QUIT) {
@@ -576,7 +623,7 @@ static void hol__ask_step(hol_app *app, const hol_input *in, uint32_t pressed)
 {
     hol_app_view *v = &app->view;
     app->device = in->device;
-    v->paused = !(in->flags & HOL_INPUT_FOCUSED) || (in->flags & HOL_INPUT_DEVICE_LOST);
+    v->paused = hol__unfocused(in);
     if (pressed & HOL_BTN_QUIT)
         v->state = HOL_APP_QUIT;
     else
@@ -632,6 +679,8 @@ hol_err hol_app_step(hol_app *app, const hol_input *in)
     app->prev = *in;
     app->have_prev = 1;
     app->view.frame++;
+    if (!hol__may_walk(in))
+        app->rebase = 1;
     hol_app_view *v = &app->view;
     if (!app->have_level) {
         v->state = (pressed & HOL_BTN_QUIT) ? HOL_APP_QUIT : HOL_APP_IDLE;
@@ -698,14 +747,21 @@ hol_err hol_app_step(hol_app *app, const hol_input *in)
         app->ev.level_started = 1;
         v->state = HOL_APP_PLAYING;
     }
-    v->paused = !(in->flags & HOL_INPUT_FOCUSED) || (in->flags & HOL_INPUT_DEVICE_LOST) ||
-                app->menu;
-    if (app->ev.level_started && (in->flags & HOL_INPUT_HEAD_VALID) &&
-        (err = hol__place_at_start(app, in)))
-        return err;
+    v->paused = hol__unfocused(in) || app->menu;
+    int placed = 0; /* the room placed around the head in this step */
+    if (app->ev.level_started && (in->flags & HOL_INPUT_HEAD_VALID)) {
+        if ((err = hol__place_at_start(app, in)))
+            return err;
+        placed = 1;
+    }
     if (((pressed & HOL_BTN_RECENTRE) || (in->flags & HOL_INPUT_RECENTRED)) &&
-        (in->flags & HOL_INPUT_HEAD_VALID) && (err = hol__replace(app, in)))
-        return err;
+        (in->flags & HOL_INPUT_HEAD_VALID)) {
+        if ((err = hol__replace(app, in)))
+            return err;
+        placed = 1;
+    }
+    if (placed && hol__may_walk(in))
+        app->rebase = 0; /* placed where a walking head stands */
     if (v->state == HOL_APP_POINT && !restarted) {
         if ((err = hol__point_frame(app, in, pressed, dt)))
             return err;
