@@ -554,6 +554,25 @@ static hol_err hol__place_at_start(hol_app *app, const hol_input *in)
     return HOL_OK;
 }
 
+/* The room placed around a tracked head in this step: at a level's first
+ * frame, and by a recentre (the button's edge, the runtime's flag). Placed
+ * where a head that may walk stands, nothing is left to re-base. */
+static hol_err hol__place(hol_app *app, const hol_input *in, uint32_t pressed)
+{
+    hol_err err;
+    if (!(in->flags & HOL_INPUT_HEAD_VALID))
+        return HOL_OK;
+    int start = app->ev.level_started;
+    if (start && (err = hol__place_at_start(app, in)))
+        return err;
+    int re = (pressed & HOL_BTN_RECENTRE) || (in->flags & HOL_INPUT_RECENTRED);
+    if (re && (err = hol__replace(app, in)))
+        return err;
+    if ((start || re) && hol__may_walk(in))
+        app->rebase = 0;
+    return HOL_OK;
+}
+
 /* The user's motion over a frame of dt seconds that began at level time
  * t0: a tracked head moves to its pose; the pancake axes are integrated in
  * sub-steps of at most HOL__SUBSTEP, so the distance walked and the angle
@@ -748,20 +767,8 @@ hol_err hol_app_step(hol_app *app, const hol_input *in)
         v->state = HOL_APP_PLAYING;
     }
     v->paused = hol__unfocused(in) || app->menu;
-    int placed = 0; /* the room placed around the head in this step */
-    if (app->ev.level_started && (in->flags & HOL_INPUT_HEAD_VALID)) {
-        if ((err = hol__place_at_start(app, in)))
-            return err;
-        placed = 1;
-    }
-    if (((pressed & HOL_BTN_RECENTRE) || (in->flags & HOL_INPUT_RECENTRED)) &&
-        (in->flags & HOL_INPUT_HEAD_VALID)) {
-        if ((err = hol__replace(app, in)))
-            return err;
-        placed = 1;
-    }
-    if (placed && hol__may_walk(in))
-        app->rebase = 0; /* placed where a walking head stands */
+    if ((err = hol__place(app, in, pressed)))
+        return err;
     if (v->state == HOL_APP_POINT && !restarted) {
         if ((err = hol__point_frame(app, in, pressed, dt)))
             return err;
