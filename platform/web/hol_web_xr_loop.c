@@ -367,6 +367,9 @@ EMSCRIPTEN_KEEPALIVE int hol_web_xr_step(double t_ms, int fb)
     w->xr.room_d = hol_room_rows(&now->user) * m;
     hol_web_xr_input(&w->xr, &w->xf, t > w->last_t ? t : w->last_t, &in);
     w->last_t = in.time_s;
+    if (w->xr_off) /* hidden since the last frame (hol_web_pause_retell) */
+        in.flags |= HOL_INPUT_HEADSET_OFF;
+    w->xr_off = 0;
     if (w->xr_recentred && (in.flags & HOL_INPUT_HEAD_VALID)) {
         in.flags |= HOL_INPUT_RECENTRED;
         w->xr_recentred = 0;
