@@ -461,6 +461,18 @@ static hol_err hol__room_steps(hol_app *app, const hol_motion_steps *st, double 
     return HOL_OK;
 }
 
+/* The room was placed anew around the head (a recentre, a re-basing): the
+ * pointing walk, the world and the guidance follow the new room state. */
+static hol_err hol__replaced(hol_app *app)
+{
+    hol__point_sync(app);
+    hol_err err = hol_world_update(app->world, &app->mo.user);
+    int exact;
+    if (!err && !app->done && (app->optimum >= 0 || app->level.mode == HOL_APP_TUTORIAL))
+        (void)hol__plan(app, &app->mo.user, &app->remaining, &exact);
+    return err;
+}
+
 /* A recentre (HOL_BTN_RECENTRE, or the runtime's HOL_INPUT_RECENTRED) with
  * a tracked head: the room is placed anew around the head with no room
  * step (hol_motion_replace); the world and the guidance follow the new
@@ -471,12 +483,7 @@ static hol_err hol__replace(hol_app *app, const hol_input *in)
     double yaw_was = app->mo.yaw_deg;
     hol__yaw_pitch_from_quat(in->head.quat, &app->mo.yaw_deg, &app->mo.pitch_deg);
     hol_motion_replace(&app->mo, pos, yaw_was);
-    hol__point_sync(app);
-    hol_err err = hol_world_update(app->world, &app->mo.user);
-    int exact;
-    if (!err && !app->done && (app->optimum >= 0 || app->level.mode == HOL_APP_TUTORIAL))
-        (void)hol__plan(app, &app->mo.user, &app->remaining, &exact);
-    return err;
+    return hol__replaced(app);
 }
 
 /* 1 when the record's head may walk (hol_input.h): not a headset's, or a
@@ -514,12 +521,7 @@ static hol_err hol__relocate(hol_app *app, const hol_input *in)
     app->ev.relocated = 1;
     app->ev.relocated_m = sqrt(dx * dx + dz * dz);
     app->place_panel = 1;
-    hol__point_sync(app);
-    hol_err err = hol_world_update(app->world, &app->mo.user);
-    int exact;
-    if (!err && !app->done && (app->optimum >= 0 || app->level.mode == HOL_APP_TUTORIAL))
-        (void)hol__plan(app, &app->mo.user, &app->remaining, &exact);
-    return err;
+    return hol__replaced(app);
 }
 
 /* A level begins where a tracked head stands: at the level's first frame

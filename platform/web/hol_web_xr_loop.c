@@ -83,6 +83,7 @@ EMSCRIPTEN_KEEPALIVE void hol_web_xr_active(int on)
      * as a recentre does: the head's place in the new reference space is
      * not a walk from where the pancake view (or the last session) stood */
     w->xr_recentred = on;
+    w->xr_off = 0; /* a hidden of the last session is not this one's */
     if (on) {
         memset(&w->xr, 0, sizeof w->xr);
         w->xr.last_t = w->last_t;
