@@ -615,10 +615,12 @@ WEB_OBJ  := $(WEB_SRC:%.c=$(BUILD)/web-obj/%.o)
 # frame or build the navigator's table before the first frame, at -O3
 # (-Os made the wasm step about 40 % slower; the table's builder,
 # hol_nav_table.c, is at -Os since: its first frame the same within the
-# noise); the link at -Oz, emmalloc (docs/web.md, "The transfer size").
+# noise; hol_room.c and hol_wfc.c, which run on room steps and new tiles,
+# likewise since issue 36); the link at -Oz, emmalloc (docs/web.md, "The
+# transfer size").
 WEB_HOT  := $(addprefix core/,hol_app_step.c hol_app_geom.c hol_app_view.c hol_hyper.c hol_math.c hol_motion.c \
-  hol_nav.c hol_nav_arena.c hol_nav_field.c hol_nav_line.c hol_room.c \
-  hol_tile.c hol_wfc.c hol_world.c hol_world_tree.c)
+  hol_nav.c hol_nav_arena.c hol_nav_field.c hol_nav_line.c \
+  hol_tile.c hol_world.c hol_world_tree.c)
 WEB_OPT  := -Os
 WEB_OPT_HOT := -O2
 WEB_CFLAGS = $(CSTD) $(WARN) $(if $(filter $(WEB_HOT),$<),$(WEB_OPT_HOT),$(WEB_OPT)) -ffp-contract=off \

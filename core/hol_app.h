@@ -521,6 +521,12 @@ typedef struct hol_app_events {
     hol_app_point point;
     int answered;          /* a questionnaire's item was answered (answer) */
     hol_app_answer answer;
+    int relocated;         /* the room was re-based around the head into
+                              another cell, with no room step: the head
+                              moved while the headset was off, unfocused or
+                              untracked (core/hol_input.h) */
+    double relocated_m;    /* with relocated: the head's floor distance
+                              from where it last walked, metres */
 } hol_app_events;
 
 typedef struct hol_app hol_app;

@@ -53,6 +53,8 @@ struct hol_app {
     int have_prev;
     hol_haptic_state haptic; /* the hands' contacts (core/hol_haptic.h) */
     int menu;
+    int rebase;          /* a headset record did not walk: the next that
+                            may re-bases the room (hol_input.h) */
     int pending_start;
     int debug;           /* the HUD's debug text (HOL_BTN_DEBUG toggles) */
     uint32_t device;     /* HOL_DEVICE_* of the last record: the prompts' words */

@@ -461,6 +461,18 @@ static hol_err hol__room_steps(hol_app *app, const hol_motion_steps *st, double 
     return HOL_OK;
 }
 
+/* The room was placed anew around the head (a recentre, a re-basing): the
+ * pointing walk, the world and the guidance follow the new room state. */
+static hol_err hol__replaced(hol_app *app)
+{
+    hol__point_sync(app);
+    hol_err err = hol_world_update(app->world, &app->mo.user);
+    int exact;
+    if (!err && !app->done && (app->optimum >= 0 || app->level.mode == HOL_APP_TUTORIAL))
+        (void)hol__plan(app, &app->mo.user, &app->remaining, &exact);
+    return err;
+}
+
 /* A recentre (HOL_BTN_RECENTRE, or the runtime's HOL_INPUT_RECENTRED) with
  * a tracked head: the room is placed anew around the head with no room
  * step (hol_motion_replace); the world and the guidance follow the new
@@ -471,12 +483,45 @@ static hol_err hol__replace(hol_app *app, const hol_input *in)
     double yaw_was = app->mo.yaw_deg;
     hol__yaw_pitch_from_quat(in->head.quat, &app->mo.yaw_deg, &app->mo.pitch_deg);
     hol_motion_replace(&app->mo, pos, yaw_was);
-    hol__point_sync(app);
-    hol_err err = hol_world_update(app->world, &app->mo.user);
-    int exact;
-    if (!err && !app->done && (app->optimum >= 0 || app->level.mode == HOL_APP_TUTORIAL))
-        (void)hol__plan(app, &app->mo.user, &app->remaining, &exact);
-    return err;
+    return hol__replaced(app);
+}
+
+/* 1 when the record's head may walk (hol_input.h): not a headset's, or a
+ * worn, focused headset with a tracked position. */
+static int hol__may_walk(const hol_input *in)
+{
+    const uint32_t want = HOL_INPUT_HEAD_VALID | HOL_INPUT_FOCUSED;
+    const uint32_t mask = want | HOL_INPUT_HEADSET_OFF | HOL_INPUT_POS_EMULATED;
+    return !(in->flags & HOL_INPUT_HEADSET) || (in->flags & mask) == want;
+}
+
+/* 1 when the record pauses the game: no focus (a system menu, the window
+ * in the background), the controller gone, the headset off. */
+static int hol__unfocused(const hol_input *in)
+{
+    return !(in->flags & HOL_INPUT_FOCUSED) ||
+           (in->flags & (HOL_INPUT_DEVICE_LOST | HOL_INPUT_HEADSET_OFF));
+}
+
+/* The first record that may walk after one that might not (app->rebase):
+ * the room is re-based around the head with no room step and no turn (the
+ * tile kept, the cell the head's); another cell than the user's is the
+ * `relocated` event, with the head's floor distance from where it last
+ * walked. A head still in the user's cell changes nothing a walk there
+ * would not. */
+static hol_err hol__relocate(hol_app *app, const hol_input *in)
+{
+    double pos[3] = {in->head.pos[0], in->head.pos[1], in->head.pos[2]};
+    double dx = pos[0] - app->mo.head[0], dz = pos[2] - app->mo.head[2];
+    hol_room was = app->mo.user;
+    app->rebase = 0;
+    hol_motion_replace(&app->mo, pos, app->mo.yaw_deg);
+    if (was.col == app->mo.user.col && was.row == app->mo.user.row)
+        return HOL_OK;
+    app->ev.relocated = 1;
+    app->ev.relocated_m = sqrt(dx * dx + dz * dz);
+    app->place_panel = 1;
+    return hol__replaced(app);
 }
 
 /* A level begins where a tracked head stands: at the level's first frame
@@ -511,6 +556,25 @@ static hol_err hol__place_at_start(hol_app *app, const hol_input *in)
     return HOL_OK;
 }
 
+/* The room placed around a tracked head in this step: at a level's first
+ * frame, and by a recentre (the button's edge, the runtime's flag). Placed
+ * where a head that may walk stands, nothing is left to re-base. */
+static hol_err hol__place(hol_app *app, const hol_input *in, uint32_t pressed)
+{
+    hol_err err;
+    if (!(in->flags & HOL_INPUT_HEAD_VALID))
+        return HOL_OK;
+    int start = app->ev.level_started;
+    if (start && (err = hol__place_at_start(app, in)))
+        return err;
+    int re = (pressed & HOL_BTN_RECENTRE) || (in->flags & HOL_INPUT_RECENTRED);
+    if (re && (err = hol__replace(app, in)))
+        return err;
+    if ((start || re) && hol__may_walk(in))
+        app->rebase = 0;
+    return HOL_OK;
+}
+
 /* The user's motion over a frame of dt seconds that began at level time
  * t0: a tracked head moves to its pose; the pancake axes are integrated in
  * sub-steps of at most HOL__SUBSTEP, so the distance walked and the angle
@@ -523,6 +587,10 @@ static hol_err hol__move(hol_app *app, const hol_input *in, double t0, double dt
     if (in->flags & HOL_INPUT_HEAD_VALID) {
         double pos[3] = {in->head.pos[0], in->head.pos[1], in->head.pos[2]};
         hol__yaw_pitch_from_quat(in->head.quat, &app->mo.yaw_deg, &app->mo.pitch_deg);
+        if (!hol__may_walk(in)) /* the look follows; the head walks nothing */
+            return HOL_OK;
+        if (app->rebase)
+            return hol__relocate(app, in);
         err = hol_motion_move_to(&app->mo, pos, &st);
         if (err && err != HOL_ERANGE)
             return err;
@@ -552,7 +620,7 @@ static void hol__screen_frame(hol_app *app, const hol_input *in, uint32_t presse
 {
     hol_app_view *v = &app->view;
     app->device = in->device;
-    v->paused = !(in->flags & HOL_INPUT_FOCUSED) || (in->flags & HOL_INPUT_DEVICE_LOST);
+    v->paused = hol__unfocused(in);
     if (pressed & HOL_BTN_DEBUG)
         app->debug = !app->debug;
     if (pressed & HOL_BTN_QUIT) {
@@ -576,7 +644,7 @@ static void hol__ask_step(hol_app *app, const hol_input *in, uint32_t pressed)
 {
     hol_app_view *v = &app->view;
     app->device = in->device;
-    v->paused = !(in->flags & HOL_INPUT_FOCUSED) || (in->flags & HOL_INPUT_DEVICE_LOST);
+    v->paused = hol__unfocused(in);
     if (pressed & HOL_BTN_QUIT)
         v->state = HOL_APP_QUIT;
     else
@@ -632,6 +700,8 @@ hol_err hol_app_step(hol_app *app, const hol_input *in)
     app->prev = *in;
     app->have_prev = 1;
     app->view.frame++;
+    if (!hol__may_walk(in))
+        app->rebase = 1;
     hol_app_view *v = &app->view;
     if (!app->have_level) {
         v->state = (pressed & HOL_BTN_QUIT) ? HOL_APP_QUIT : HOL_APP_IDLE;
@@ -698,13 +768,8 @@ hol_err hol_app_step(hol_app *app, const hol_input *in)
         app->ev.level_started = 1;
         v->state = HOL_APP_PLAYING;
     }
-    v->paused = !(in->flags & HOL_INPUT_FOCUSED) || (in->flags & HOL_INPUT_DEVICE_LOST) ||
-                app->menu;
-    if (app->ev.level_started && (in->flags & HOL_INPUT_HEAD_VALID) &&
-        (err = hol__place_at_start(app, in)))
-        return err;
-    if (((pressed & HOL_BTN_RECENTRE) || (in->flags & HOL_INPUT_RECENTRED)) &&
-        (in->flags & HOL_INPUT_HEAD_VALID) && (err = hol__replace(app, in)))
+    v->paused = hol__unfocused(in) || app->menu;
+    if ((err = hol__place(app, in, pressed)))
         return err;
     if (v->state == HOL_APP_POINT && !restarted) {
         if ((err = hol__point_frame(app, in, pressed, dt)))

@@ -32,6 +32,23 @@
  *   coordinates is not walked, no room step is taken or logged, the user
  *   keeps the tile and (within 45 degrees) the look's direction in the
  *   world (hol_motion_replace).
+ * - Steps only from a worn, tracked, focused headset: a record with
+ *   HOL_INPUT_HEADSET (every OpenXR and WebXR frame) carries the headset's
+ *   state, and the head walks (room steps) only while that state is worn
+ *   (no HOL_INPUT_HEADSET_OFF), focused (HOL_INPUT_FOCUSED: no system menu
+ *   over the app; WebXR `visible`, OpenXR FOCUSED) and tracked
+ *   (HOL_INPUT_HEAD_VALID without HOL_INPUT_POS_EMULATED). While it is
+ *   not, the head does not move the user (the look follows a tracked
+ *   orientation); at the first record that is again, the room is re-based
+ *   around the head (hol_motion_replace with no turn: the user keeps the
+ *   tile and the room its north, the cell becomes the one under the head)
+ *   instead of walking the head's jump, and when that changed the cell
+ *   the step's events say `relocated` with the floor distance (core/
+ *   hol_app.h). Records without HOL_INPUT_HEADSET (pancake, scripts,
+ *   recordings made before the bit) walk every tracked head as before.
+ *   A platform that missed frames while the headset was off (a stopped
+ *   OpenXR session, a hidden WebXR session) sets HOL_INPUT_HEADSET_OFF on
+ *   the first record after them.
  * - Axes are in [-1, 1] after the platform's dead zone; zero is at rest.
  *   The app step turns them into motion (pancake mode); a headset sends
  *   zero axes and a tracked head.
@@ -55,7 +72,16 @@
                                             since the previous record (its
                                             recentre): the head's jump is
                                             no walk (see below) */
-#define HOL_INPUT_FLAGS_ALL    0xffu
+#define HOL_INPUT_HEADSET      (1u << 8) /* a headset's record: its state is in
+                                            HOL_INPUT_FOCUSED and the two
+                                            bits below (see above) */
+#define HOL_INPUT_HEADSET_OFF  (1u << 9) /* the headset is off (not worn, its
+                                            view hidden), or was since the
+                                            previous record */
+#define HOL_INPUT_POS_EMULATED (1u << 10) /* the head's position is not
+                                             tracked (emulated, or lost):
+                                             its orientation is */
+#define HOL_INPUT_FLAGS_ALL    0x7ffu
 
 /* buttons (held) */
 #define HOL_BTN_CONFIRM  (1u << 0) /* confirm / next level */

@@ -6,7 +6,8 @@
 #include "hol_math.h"
 
 #define HOL__PI 3.14159265358979323846
-#define HOL__GAP_S 1.0 /* a longer gap between updates: a new session */
+#define HOL__CATCH_S 0.1 /* the longest step of time the glide takes at
+                            once: after a long frame it glides on */
 
 /* a - b in (-180, 180] */
 static double hol__ddeg(double a, double b)
@@ -53,7 +54,7 @@ void hol_panel_place(hol_panel *p, const double head[3], double yaw_deg, double 
 void hol_panel_follow(hol_panel *p, const double head[3], double yaw_deg, double t_s)
 {
     double dt = t_s - p->t;
-    if (!p->placed || !(dt >= 0) || dt > HOL__GAP_S) {
+    if (!p->placed || !(dt >= 0)) {
         hol_panel_place(p, head, yaw_deg, t_s);
         return;
     }
@@ -74,7 +75,8 @@ void hol_panel_follow(hol_panel *p, const double head[3], double yaw_deg, double
         p->moving = 0;
     } else {
         /* implicit Euler of d/dt x = (target - x) / tau: never overshoots */
-        double k = dt / (HOL_PANEL_EASE_S + dt);
+        double c = dt < HOL__CATCH_S ? dt : HOL__CATCH_S;
+        double k = c / (HOL_PANEL_EASE_S + c);
         p->yaw_deg = hol__ddeg(p->yaw_deg + k * dyaw, 0);
         for (int i = 0; i < 3; i++)
             p->anchor[i] += k * (head[i] - p->anchor[i]);

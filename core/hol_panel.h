@@ -16,7 +16,10 @@
  *   eases to the head (time constant HOL_PANEL_EASE_S, the head followed
  *   while it moves) and stops when it has reached it (within 0.5 degrees
  *   and 1 cm). The first update places it at once; so does a time that
- *   goes backwards or jumps (a new session).
+ *   goes backwards. A long frame (a stall, a gap of seconds) glides too:
+ *   the ease takes at most 0.1 s of time per update (a bounded catch-up,
+ *   about 45 % of the way), so the panel never jumps. A new session or a
+ *   re-placed room places it at once (hol_panel_place, the app's view).
  */
 #ifndef HOL_PANEL_H
 #define HOL_PANEL_H

@@ -85,7 +85,9 @@
  *   summary.csv HOL_SESSION_SUMMARY_COLUMNS, steps HOL_SESSION_STEP_COLUMNS,
  *   head HOL_SESSION_HEAD_COLUMNS; events.csv HOL_SESSION_EVENT_COLUMNS (a
  *   row, appended durably as it happens, for each change of the minimap's
- *   place during play, `minimap`, and each refused one, `minimap-fixed`;
+ *   place during play, `minimap`, each refused one, `minimap-fixed`, and
+ *   each re-basing of the room into another cell, `relocated` (value the
+ *   distance in metres, 3 decimals: hol_app_events.relocated);
  *   the header when the file is new; a folder holding it holds logs);
  *   points.csv HOL_SESSION_POINT_COLUMNS and answers.csv
  *   HOL_SESSION_ANSWER_COLUMNS (likewise); the README ("Research logs") documents

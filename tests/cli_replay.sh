@@ -153,4 +153,27 @@ sed 's/^L tiling 4 6$/L tiling 4 8/; s/^L flag Wrf$/L flag Nf/; /^L room/d' "$T/
 run "replay {4,8} out of reach" 2 "$H" replay "$T/geo8.rec" &&
     one_line "out of reach" "level 'g' cannot start: line 5: no walk inside its room reaches an objective"
 
+# steps only from a worn headset (core/hol_input.h): a headset's head walks
+# 1.2 m east with the headset off (flag 200) and stands there worn again:
+# no room step, one relocated row; the same lines without the state walk one
+# step east; the state is in the records, so the replay reproduces it
+worn_rec() {
+    printf 'holonomy-rec 2\nsession 20260131T140509Z-5f3a9c01\nstart 2026-01-31T14:05:09Z\n'
+    printf 'version 0.1.0\nlevel e\nL mode explore\nL seed 3\nL minimap off\nend\n'
+    awk -v off="$1" 'BEGIN { for (k = 0; k < 150; k++) { x = 1.5 + (k < 30 ? 0 : k > 90 ? 1.2 : (k - 30) * 0.02);
+        printf "%.4f f=%s h=%.4f,1.6,1.5,0,0,0,1\n", k / 72.0, (k >= 30 && k <= 90) ? off : "109", x } }'
+}
+worn_rec 309 >"$T/off.rec"
+worn_rec 109 >"$T/on.rec"
+mkdir "$T/off1" "$T/off2" "$T/on1"
+run "headset off: replay" 0 "$H" replay "$T/off.rec" --log "$T/off1"
+[ "$(wc -l <"$T/off1/steps-001.csv")" = 1 ] && ok || bad "headset off: steps $(cat "$T/off1/steps-001.csv")"
+[ "$(grep -c ',relocated,1.200$' "$T/off1/events.csv")" = 1 ] && ok ||
+    bad "headset off: events $(cat "$T/off1/events.csv" 2>&1)"
+run "headset off: replay again" 0 "$H" replay "$T/off.rec" --log "$T/off2"
+diff -r "$T/off1" "$T/off2" >/dev/null && ok || bad "headset off: the replays differ"
+run "headset worn: replay" 0 "$H" replay "$T/on.rec" --log "$T/on1"
+[ "$(grep -c ',E,' "$T/on1/steps-001.csv")" = 1 ] && [ ! -e "$T/on1/events.csv" ] && ok ||
+    bad "headset worn: steps $(cat "$T/on1/steps-001.csv")"
+
 finish cli_replay

@@ -579,6 +579,71 @@ static void test_recentre_no_steps(void **state)
     hol_app_destroy(app);
 }
 
+/* Steps only from a worn, focused, tracked headset (core/hol_input.h): a
+ * headset's head that moved 1.2 m while the headset was off, under a system
+ * menu (unfocused) or with its position emulated is re-based, not walked:
+ * no room step, the tile kept, the cell the head's, the `relocated` event
+ * with the distance; the same walk in view is walked. A record without
+ * HOL_INPUT_HEADSET (an old recording) walks as it always did. */
+static hol_input worn_at(double t, double x, uint32_t state)
+{
+    hol_input in = tracked_pose(t, x, 1.5, 0);
+    in.flags |= HOL_INPUT_HEADSET;
+    in.flags ^= state & HOL_INPUT_FOCUSED; /* FOCUSED given: not focused */
+    in.flags |= state & ~(uint32_t)HOL_INPUT_FOCUSED;
+    return in;
+}
+
+static void test_steps_only_worn(void **state)
+{
+    (void)state;
+    static const uint32_t away[3] = {HOL_INPUT_HEADSET_OFF, HOL_INPUT_FOCUSED,
+                                     HOL_INPUT_POS_EMULATED};
+    for (int k = 0; k < 4; k++) {
+        hol_app *app = make_app();
+        hol_app_level L = flag_level("Wrfl");
+        assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+        const hol_app_view *v = hol_app_get_view(app);
+        const hol_app_events *ev = hol_app_get_events(app);
+        hol_input in = worn_at(0, 1.5, 0);
+        if (k == 3) /* an old recording's records: no headset state */
+            in.flags &= ~(uint32_t)HOL_INPUT_HEADSET;
+        assert_int_equal(step_count(app, &in), 0);
+        hol_room was = v->user;
+        double t = 0.1;
+        /* 1.2 m east, 2 cm a frame, the headset away (k < 3) */
+        for (int i = 1; i <= 60; i++, t += 0.1) {
+            in = worn_at(t, 1.5 + 0.02 * i, k < 3 ? away[k] : 0);
+            if (k == 3)
+                in.flags &= ~(uint32_t)HOL_INPUT_HEADSET;
+            int n = step_count(app, &in);
+            assert_int_equal(n, k < 3 ? 0 : i == 25);
+            assert_false(ev->relocated);
+        }
+        /* back in view where it stands: re-based, or (k 3) walked */
+        in = worn_at(t, 2.7, 0);
+        if (k == 3)
+            in.flags &= ~(uint32_t)HOL_INPUT_HEADSET;
+        assert_int_equal(step_count(app, &in), 0);
+        assert_int_equal(v->user.col, 2);
+        assert_int_equal(v->user.row, 1);
+        assert_int_equal(v->hud.steps, k < 3 ? 0 : 1);
+        if (k < 3) {
+            assert_true(hol_tile_eq(v->user.tile, was.tile) && v->user.orient == was.orient);
+            assert_true(ev->relocated);
+            assert_true(fabs(ev->relocated_m - 1.2) < 1e-3);
+            assert_false(v->paused);
+            /* walking on in view walks: one step back west */
+            in = worn_at(t + 0.1, 1.5, 0);
+            assert_int_equal(step_count(app, &in), 1);
+            assert_false(ev->relocated);
+        } else {
+            assert_false(hol_tile_eq(v->user.tile, was.tile));
+        }
+        hol_app_destroy(app);
+    }
+}
+
 /* A tap between two frames (pressed, no longer held) acts once; a button
  * held over frames acts once, at its press; a record without `pressed`
  * (as recordings before the field) still acts on its held edge. */
@@ -1704,6 +1769,7 @@ int main(void)
         cmocka_unit_test(test_debug_text),
         cmocka_unit_test(test_pause_quit),
         cmocka_unit_test(test_recentre_no_steps),
+        cmocka_unit_test(test_steps_only_worn),
         cmocka_unit_test(test_tap_between_frames),
         cmocka_unit_test(test_motion_frame_rate),
         cmocka_unit_test(test_turn_back),

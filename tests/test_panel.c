@@ -135,10 +135,25 @@ static void test_lazy(void **state)
         hol_panel_follow(&p, far, 0, t += 1.0 / 72);
     assert_int_equal(p.moving, 0);
     assert_at(&p, far, 0);
-    /* a gap in time (a new session) places it at once */
-    hol_panel_follow(&p, h, 90, t + 5);
-    assert_int_equal(p.moving, 0);
+    /* a frame 5 s after the last (a stall) glides: the bounded catch-up
+     * moves it part of the way, never all of it, then on to the head */
+    double y0 = p.yaw_deg;
+    hol_panel_follow(&p, h, 90, t += 5);
+    assert_int_equal(p.moving, 1);
+    assert_true(p.yaw_deg > y0 + 20 && p.yaw_deg < y0 + 60);
+    frames = 0;
+    while (p.moving && frames < 200) {
+        double was = p.yaw_deg;
+        hol_panel_follow(&p, h, 90, t += 1.0 / 72);
+        assert_true(p.yaw_deg >= was && p.yaw_deg <= 90); /* no overshoot */
+        frames++;
+    }
+    assert_true(frames > 10 && frames < 72);
     assert_at(&p, h, 90);
+    /* time going backwards (a new session) places it at once */
+    hol_panel_follow(&p, h, 0, t - 1);
+    assert_int_equal(p.moving, 0);
+    assert_at(&p, h, 0);
 }
 
 /* a tracked head at (x, 1.6, z) turned yaw degrees */

@@ -147,7 +147,8 @@ static void test_input(void **state)
     hol_input in;
     hol_web_xr_input(&st, &f, 2.0, &in);
     assert_true(in.time_s == 2.0);
-    assert_int_equal(in.flags, HOL_INPUT_FOCUSED | HOL_INPUT_HEAD_VALID | HOL_INPUT_HAND_L_VALID);
+    assert_int_equal(in.flags, HOL_INPUT_HEADSET | HOL_INPUT_FOCUSED | HOL_INPUT_HEAD_VALID |
+                                   HOL_INPUT_HAND_L_VALID);
     assert_true(fabsf(in.head.pos[0] - 1.75f) < 1e-6f && fabsf(in.head.pos[2] - 1.0f) < 1e-6f);
     assert_true(fabsf(in.hand[0].pos[0] - 1.5f) < 1e-6f && fabsf(in.hand[0].pos[1] - 1.0f) < 1e-6f);
     assert_int_equal(in.buttons, HOL_BTN_CONFIRM);
@@ -161,8 +162,12 @@ static void test_input(void **state)
     /* blurred (a system menu over the session): not focused, no buttons */
     f.visibility = HOL_WEB_XR_BLURRED;
     hol_web_xr_input(&st, &f, 2.1, &in);
-    assert_int_equal(in.flags & HOL_INPUT_FOCUSED, 0);
+    assert_int_equal(in.flags & (HOL_INPUT_FOCUSED | HOL_INPUT_HEADSET_OFF), 0);
     assert_int_equal(in.buttons, 0);
+    /* hidden (the headset off): not focused, off */
+    f.visibility = HOL_WEB_XR_HIDDEN;
+    hol_web_xr_input(&st, &f, 2.15, &in);
+    assert_int_equal(in.flags & (HOL_INPUT_FOCUSED | HOL_INPUT_HEADSET_OFF), HOL_INPUT_HEADSET_OFF);
     f.visibility = HOL_WEB_XR_VISIBLE;
     hol_web_xr_input(&st, &f, 2.2, &in); /* back: held, but no new press */
     assert_int_equal(in.buttons, HOL_BTN_CONFIRM);
@@ -177,6 +182,11 @@ static void test_input(void **state)
     assert_int_equal(in.pressed, HOL_BTN_RECENTRE);
     assert_true(fabsf(in.head.pos[0] - 1.5f) < 1e-5f && fabsf(in.head.pos[2] - 1.5f) < 1e-5f);
     assert_true(fabsf(in.head.quat[1]) < 1e-5f && fabsf(in.head.quat[3] - 1) < 1e-5f);
+    /* an emulated position (tracking lost): the head, its position untracked */
+    f.head_valid = 2;
+    hol_web_xr_input(&st, &f, 2.35, &in);
+    assert_int_equal(in.flags & (HOL_INPUT_HEAD_VALID | HOL_INPUT_POS_EMULATED),
+                     HOL_INPUT_HEAD_VALID | HOL_INPUT_POS_EMULATED);
     /* no viewer pose: no head */
     f.head_valid = 0;
     hol_web_xr_input(&st, &f, 2.4, &in);

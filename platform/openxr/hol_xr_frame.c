@@ -19,7 +19,9 @@ static double hol__thread_cpu_ms(void)
 }
 
 /* A space's pose in the room's space at time t: 1 located (position and
- * orientation valid), 0 not tracked now, -1 a failure (reported). */
+ * orientation valid), 2 located with the position not tracked (emulated:
+ * XR_SPACE_LOCATION_POSITION_TRACKED_BIT clear), 0 not located now, -1 a
+ * failure (reported). */
 static int hol__locate(hol__xr *x, XrSpace space, XrTime t, float pos[3], float quat[4])
 {
     XrSpaceLocation loc = {XR_TYPE_SPACE_LOCATION};
@@ -30,7 +32,7 @@ static int hol__locate(hol__xr *x, XrSpace space, XrTime t, float pos[3], float 
         !(loc.locationFlags & XR_SPACE_LOCATION_ORIENTATION_VALID_BIT))
         return 0;
     hol__pose_in(&loc.pose, pos, quat);
-    return 1;
+    return loc.locationFlags & XR_SPACE_LOCATION_POSITION_TRACKED_BIT ? 1 : 2;
 }
 
 /* The buttons (hol_xr_buttons: the layer of the app's menu) and both grips. */
@@ -108,8 +110,9 @@ static int hol__input(hol__xr *x, const XrFrameState *fs, hol_input *in, float s
     double t = (double)(fs->predictedDisplayTime - x->t0) * 1e-9;
     in->time_s = t > x->last_t ? t : x->last_t;
     x->last_t = in->time_s;
-    if (x->life.focused)
-        in->flags |= HOL_INPUT_FOCUSED;
+    /* the headset's state (worn, focused), the session's: the core
+     * decides from it whether the head walks (core/hol_input.h) */
+    in->flags |= hol_xr_life_state(&x->life);
     hol__room_size(x, x->fns->view ? x->fns->view(x->fns->user) : NULL);
     if (x->bounds_small)
         in->flags |= HOL_INPUT_BOUNDS_SMALL;
@@ -119,8 +122,8 @@ static int hol__input(hol__xr *x, const XrFrameState *fs, hol_input *in, float s
     if (head < 0)
         return 1;
     if (head)
-        in->flags |= HOL_INPUT_HEAD_VALID;
-    /* the runtime's recentre, or the session begun again: told once with a head */
+        in->flags |= HOL_INPUT_HEAD_VALID | (head == 2 ? HOL_INPUT_POS_EMULATED : 0u);
+    /* the runtime's recentre: told once with a head */
     in->flags |= hol_xr_life_take(&x->life, head);
     if (x->life.focused && hol__hands(x, fs->predictedDisplayTime, in))
         return 1;
@@ -139,8 +142,10 @@ static int hol__input(hol__xr *x, const XrFrameState *fs, hol_input *in, float s
             for (int k = 0; k < 3; k++)
                 shift[k] = s->head.pos[k] - in->head.pos[k];
             in->head = s->head;
-            in->flags |= HOL_INPUT_HEAD_VALID;
+            in->flags = (in->flags & ~(uint32_t)HOL_INPUT_POS_EMULATED) | HOL_INPUT_HEAD_VALID;
         }
+        /* and the headset's state the line gives (off, untracked) */
+        in->flags |= s->flags & (HOL_INPUT_HEADSET_OFF | HOL_INPUT_POS_EMULATED);
         in->buttons |= s->buttons;
         in->pressed |= s->pressed;
     }

@@ -177,7 +177,7 @@ hol_xr_do hol_xr_life_event(hol_xr_life *l, int state)
     if (d == HOL_XR_DO_TEAR_DOWN)
         l->done = 1;
     if (d == HOL_XR_DO_BEGIN && ++l->begins > 1)
-        l->recentre = 1; /* begun again: the head's jump is no walk */
+        l->off = 1; /* begun again: the frames it missed were the headset off */
     return d;
 }
 
@@ -192,6 +192,14 @@ uint32_t hol_xr_life_take(hol_xr_life *l, int head_valid)
         return 0;
     l->recentre = 0;
     return HOL_INPUT_RECENTRED;
+}
+
+uint32_t hol_xr_life_state(hol_xr_life *l)
+{
+    int worn = !l->off && (l->state == HOL_XR_STATE_VISIBLE || l->state == HOL_XR_STATE_FOCUSED);
+    l->off = 0;
+    return HOL_INPUT_HEADSET | (l->focused ? HOL_INPUT_FOCUSED : 0u) |
+           (worn ? 0u : HOL_INPUT_HEADSET_OFF);
 }
 
 hol_xr_quit hol_xr_life_quit(hol_xr_life *l)

@@ -110,15 +110,23 @@ hol_xr_do hol_xr_lifecycle(int state, int *out_running, int *out_focused);
  *   EXITING come as events) while the session runs, HOL_XR_QUIT_LEAVE
  *   (l->done: destroy it now) while it does not, HOL_XR_QUIT_NONE when
  *   already asked.
+ * - The headset's state in every record (core/hol_input.h: steps only
+ *   from a worn, focused, tracked headset; the rule is the core's):
+ *   hol_xr_life_state(l) gives HOL_INPUT_HEADSET, HOL_INPUT_FOCUSED while
+ *   FOCUSED, and HOL_INPUT_HEADSET_OFF unless the session is VISIBLE or
+ *   FOCUSED (SYNCHRONIZED: the headset is off, its view hidden).
  * - Re-entering walks nothing: a session begun again (READY after a
  *   STOPPING: the headset taken off and put on, the app sent to the
- *   background and back) sets l->recentre, as the runtime's own recentre
- *   does (hol_xr_life_recentred: the platform sets it on
- *   XrEventDataReferenceSpaceChangePending); hol_xr_life_take(l, head)
- *   gives HOL_INPUT_RECENTRED for the first record with a tracked head
- *   after it (and clears it), so the app re-places the room around the
- *   head where it is now: where the head went while the session was
- *   stopped is no walk, no room step is logged. */
+ *   background and back) sets l->off, and the next hol_xr_life_state
+ *   gives HOL_INPUT_HEADSET_OFF (and clears it): the frames the stopped
+ *   session never ran were the headset off, so the app re-bases the room
+ *   around the head where it is now (the `relocated` event when it is in
+ *   another cell) and where it went is no walk, no room step is logged.
+ * - The runtime's own recentre (hol_xr_life_recentred: the platform calls
+ *   it on XrEventDataReferenceSpaceChangePending) sets l->recentre;
+ *   hol_xr_life_take(l, head) gives HOL_INPUT_RECENTRED for the first
+ *   record with a tracked head after it (and clears it), so the app
+ *   re-places the room around the head (a recentre: no walk, no event). */
 typedef struct hol_xr_life {
     int state;          /* the last session state (0: none yet) */
     int running;        /* frames run */
@@ -127,6 +135,8 @@ typedef struct hol_xr_life {
     int done;           /* destroy the session and leave */
     int begins;         /* sessions begun (READY) so far */
     int recentre;       /* the next record with a head re-places the room */
+    int off;            /* begun again: the next record says the headset
+                           was off */
 } hol_xr_life;
 
 typedef enum hol_xr_quit {
@@ -139,5 +149,6 @@ hol_xr_do hol_xr_life_event(hol_xr_life *l, int state);
 hol_xr_quit hol_xr_life_quit(hol_xr_life *l);
 void hol_xr_life_recentred(hol_xr_life *l);
 uint32_t hol_xr_life_take(hol_xr_life *l, int head_valid);
+uint32_t hol_xr_life_state(hol_xr_life *l);
 
 #endif

@@ -57,6 +57,8 @@ typedef struct hol_web {
     int xr_ncpu;
     int xr_recentred;        /* the reference space was reset (the browser's
                                 recentre): told on the next record with a head */
+    int xr_off;              /* the session was hidden (the headset off):
+                                told on the next record */
     /* read-back check of both eyes at one XR frame (make web-test) */
     long check_frame;        /* -1: none */
     uint8_t *check_px[4]; /* the check frame's eyes: 0, 1 without the HUD;

@@ -221,7 +221,7 @@ var HolWebLib = {
       s.addEventListener('visibilitychange', function () {
         var v = s.visibilityState;
         console.log('web: xr visibility ' + v);
-        Module['_hol_web_pause_retell']();
+        Module['_hol_web_pause_retell'](v == 'hidden');
         if (Module['holEvent'] && v !== 'visible')
           Module['holEvent']('pause', v === 'hidden' ? 'the headset is off' :
             'a system menu is over the game');
@@ -365,7 +365,7 @@ var HolWebLib = {
       var layer = HolXR.base || s.renderState.baseLayer; // with layers, baseLayer is null
       if (pose) {
         var tr = pose.transform;
-        f[base + o.head_valid] = pose.emulatedPosition ? 0 : 1;
+        f[base + o.head_valid] = pose.emulatedPosition ? 2 : 1;
         HolXR.put(f, base + o.head_pos, [tr.position.x, tr.position.y, tr.position.z], 3);
         HolXR.put(f, base + o.head_quat,
           [tr.orientation.x, tr.orientation.y, tr.orientation.z, tr.orientation.w], 4);

@@ -272,20 +272,25 @@ static const char *pause_reason(const hol_input *in, const hol_app_view *v)
     hol_web *w = &hol_web_g;
     if (!v->paused)
         return NULL;
-    if (!(in->flags & HOL_INPUT_FOCUSED)) {
+    if (!(in->flags & HOL_INPUT_FOCUSED) || (in->flags & HOL_INPUT_HEADSET_OFF)) {
         if (!w->xr_active)
             return "the window is not focused";
-        return w->xf.visibility < 0.5f ? "the headset is off" : "a system menu is over the game";
+        return w->xf.visibility < 0.5f || (in->flags & HOL_INPUT_HEADSET_OFF)
+                   ? "the headset is off"
+                   : "a system menu is over the game";
     }
     if (in->flags & HOL_INPUT_DEVICE_LOST)
         return "the game controller went away";
     return "the menu is open";
 }
 
-/* The page's visibilitychange (XR): the next step tells its reason anew. */
-EMSCRIPTEN_KEEPALIVE void hol_web_pause_retell(void)
+/* The page's visibilitychange (XR): the next step tells its reason anew;
+ * hidden (off: the headset taken off, a session that runs no frames then),
+ * the next XR record says the headset was off (core/hol_input.h). */
+EMSCRIPTEN_KEEPALIVE void hol_web_pause_retell(int off)
 {
     hol_web_g.pause_told = HOL_WEB_UNTOLD;
+    hol_web_g.xr_off |= off;
 }
 
 static void tell_pause(const hol_input *in)

@@ -94,8 +94,12 @@ void hol_web_xr_input(hol_web_xr_state *st, const hol_web_xr_frame *f, double t,
     memset(&in, 0, sizeof in);
     in.time_s = t > st->last_t ? t : st->last_t;
     st->last_t = in.time_s;
+    /* the headset's state: the core decides whether the head walks */
+    in.flags |= HOL_INPUT_HEADSET;
     if (f->visibility == HOL_WEB_XR_VISIBLE)
         in.flags |= HOL_INPUT_FOCUSED;
+    if (f->visibility < HOL_WEB_XR_BLURRED)
+        in.flags |= HOL_INPUT_HEADSET_OFF;
     double rw = st->room_w > 0 ? st->room_w : 3.0, rd = st->room_d > 0 ? st->room_d : 3.0;
     st->calib.half_w = rw / 2;
     st->calib.half_d = rd / 2;
@@ -124,7 +128,7 @@ void hol_web_xr_input(hol_web_xr_state *st, const hol_web_xr_frame *f, double t,
         if (in.pressed & HOL_BTN_RECENTRE)
             hol_xr_recentre(&st->calib, f->head_pos, f->head_quat);
         hol_xr_to_room(&st->calib, f->head_pos, f->head_quat, &in.head);
-        in.flags |= HOL_INPUT_HEAD_VALID;
+        in.flags |= HOL_INPUT_HEAD_VALID | (f->head_valid > 1.5f ? HOL_INPUT_POS_EMULATED : 0u);
     }
     for (int h = 0; h < 2; h++) {
         const hol_web_xr_pad *p = &f->pad[h];

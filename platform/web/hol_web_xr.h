@@ -43,9 +43,12 @@
  *   menu back quits: hands alone open the menu, resume, restart and
  *   quit). A pinch going on while the session is not focused counts
  *   neither then nor at its end. A hand's squeeze does nothing.
- * - hol_web_xr_input fills the frame's record: time, HOL_INPUT_FOCUSED
- *   while the session is `visible` (not `visible-blurred` or `hidden`), the
- *   head (the viewer pose) and both grips in room coordinates, buttons,
+ * - hol_web_xr_input fills the frame's record: time, the headset's state
+ *   (core/hol_input.h: HOL_INPUT_HEADSET; HOL_INPUT_FOCUSED while the
+ *   session is `visible`, not `visible-blurred` or `hidden`;
+ *   HOL_INPUT_HEADSET_OFF while `hidden`; HOL_INPUT_POS_EMULATED for a
+ *   viewer pose with emulatedPosition, head_valid 2), the head (the viewer
+ *   pose) and both grips in room coordinates, buttons,
  *   pressed (held now, not at the previous frame; nothing is held or
  *   pressed while the session is not focused, and an input held through
  *   that is not pressed when focus comes back), device, and
@@ -91,7 +94,7 @@ typedef struct hol_web_xr_pad {
 typedef struct hol_web_xr_frame {
     float nviews;
     float visibility;                   /* HOL_WEB_XR_* */
-    float head_valid;
+    float head_valid;                   /* 0 none, 1 tracked, 2 position emulated */
     float head_pos[3], head_quat[4];
     float bounds[2];                    /* bounded-floor width, depth (0: none) */
     hol_web_xr_view view[2];

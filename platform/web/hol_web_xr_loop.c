@@ -83,6 +83,7 @@ EMSCRIPTEN_KEEPALIVE void hol_web_xr_active(int on)
      * as a recentre does: the head's place in the new reference space is
      * not a walk from where the pancake view (or the last session) stood */
     w->xr_recentred = on;
+    w->xr_off = 0; /* a hidden of the last session is not this one's */
     if (on) {
         memset(&w->xr, 0, sizeof w->xr);
         w->xr.last_t = w->last_t;
@@ -367,6 +368,9 @@ EMSCRIPTEN_KEEPALIVE int hol_web_xr_step(double t_ms, int fb)
     w->xr.room_d = hol_room_rows(&now->user) * m;
     hol_web_xr_input(&w->xr, &w->xf, t > w->last_t ? t : w->last_t, &in);
     w->last_t = in.time_s;
+    if (w->xr_off) /* hidden since the last frame (hol_web_pause_retell) */
+        in.flags |= HOL_INPUT_HEADSET_OFF;
+    w->xr_off = 0;
     if (w->xr_recentred && (in.flags & HOL_INPUT_HEAD_VALID)) {
         in.flags |= HOL_INPUT_RECENTRED;
         w->xr_recentred = 0;

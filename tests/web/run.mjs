@@ -1079,6 +1079,60 @@ await check('the reference space\'s reset (the browser\'s recentre) re-places th
   await xr.until(async () => steps(xr.log).length > before, 'steps of the jump without a reset', 20000);
 });
 
+// Steps only from a worn, focused, tracked headset (issue 36): a 1.2 m walk
+// east with the headset off (hidden), under a system menu (visible-blurred)
+// or with the position emulated (tracking lost: the viewer pose's
+// emulatedPosition) takes no room step; back in view the room is re-based
+// (events.csv: relocated 1.200); the walk back in view is one step west.
+await check('Quest 3: a walk while the headset is off, under a system menu or untracked walks no step; the room is re-based and events.csv says relocated 1.200; the walk back in view walks one step', async () => {
+  const relocated = async () => ((await stored(xrPage, 'events.csv')) || '').toString()
+    .split('\n').filter((l) => /,relocated,/.test(l));
+  const walkEast = async () => {
+    for (let i = 1; i <= 12; i++) {
+      await xrPage.evaluate((x) => xrDevice.position.set(x, 1.6, 0), i / 10);
+      await sleep(40);
+    }
+  };
+  const set = {
+    hidden: (on) => xrDevice.updateVisibilityState(on ? 'hidden' : 'visible'),
+    blurred: (on) => xrDevice.updateVisibilityState(on ? 'visible-blurred' : 'visible'),
+    emulated: (on) => {
+      const P = XRFrame.prototype;
+      if (on) {
+        const g = window.__getViewerPose = P.getViewerPose;
+        P.getViewerPose = function (sp) {
+          const p = g.call(this, sp);
+          return p && new Proxy(p, { get: (t, k) => k === 'emulatedPosition' ? true : Reflect.get(t, k) });
+        };
+      } else {
+        P.getViewerPose = window.__getViewerPose;
+      }
+    },
+  };
+  await xrPage.evaluate(() => { xrDevice.quaternion.set(0, 0, 0, 1); xrDevice.position.set(0, 1.6, 0); });
+  await waitFrames(10);
+  for (const how of Object.keys(set)) {
+    const before = steps(xr.log).length, ev0 = (await relocated()).length;
+    await xrPage.evaluate(`(${set[how].toString()})(true)`);
+    await sleep(200);
+    await walkEast();
+    await sleep(200);
+    await xrPage.evaluate(`(${set[how].toString()})(false)`);
+    await waitFrames(10);
+    const st = steps(xr.log).slice(before), ev = (await relocated()).slice(ev0);
+    console.log(`# ${how}: ${st.length} steps, events ${JSON.stringify(ev)}`);
+    assert(st.length === 0, `${how}: steps ${JSON.stringify(st)}`);
+    assert(ev.length === 1 && /,relocated,1\.200$/.test(ev[0]), `${how}: relocated rows ${JSON.stringify(ev)}`);
+    assert((await xrState(S.COL)) === 2, `${how}: the cell's column ${await xrState(S.COL)}`);
+    await xrPage.evaluate(() => xrDevice.position.set(0, 1.6, 0)); /* back west, in view */
+    await xr.until(async () => steps(xr.log).length > before, `${how}: the walk back's step`, 20000);
+    await waitFrames(5);
+    const back = steps(xr.log).slice(before);
+    assert(back.length === 1 && back[0].dir === 'W', `${how}: back: ${JSON.stringify(back)}`);
+  }
+  assert(!xr.errors || !xr.errors.length, 'errors: ' + (xr.errors || []).join('; '));
+});
+
 await check('controllers reach the app: left stick press recentres, Y opens the menu, the trigger restarts there', async () => {
   await press('left', 'thumbstick');
   const hx = await xrState(S.HEAD_X), hz = await xrState(S.HEAD_Z);

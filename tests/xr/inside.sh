@@ -269,6 +269,30 @@ check "the same jump without the change walks one step north (the control)" \
 check "space change: the layers loaded, no VALID_ERROR or VALID_WARNING" \
     'grep -q "Core Validation" $sp && ! grep -q "VALID_ERROR\|VALID_WARNING" $sp'
 
+# Steps only from a worn headset (issue 36): the scripted head walks 1.2 m
+# east (frames 30..90) with the headset off (its lines' flag 200), then
+# stands there worn: the core re-bases the room, no room step, one
+# relocated event with the distance; the recording carries the state, so
+# its replay writes the same events. The same walk worn: one step east.
+awk 'BEGIN { for (k = 0; k < 150; k++) { x = 1.5 + (k < 30 ? 0 : k > 90 ? 1.2 : (k - 30) * 0.02);
+     printf "%.4f f=%s h=%.4f,1.6,1.5,0,0,0,1\n", k / 72.0, (k >= 30 && k <= 90) ? "209" : "9", x } }' >"$out/off.txt"
+sed 's/ f=209 / f=9 /' "$out/off.txt" >"$out/on.txt"
+mkdir -p "$out/off-logs" "$out/on-logs" "$out/off-replay"
+env DISPLAY=:77 XR_ENABLE_API_LAYERS=XR_APILAYER_LUNARG_core_validation \
+    "$BIN" xr "$out/space.txt" --frames 150 --input "$out/off.txt" --log "$out/off-logs" \
+    --record "$out/off.rec" >"$out/off.out" 2>&1
+rc=$?
+env DISPLAY=:77 "$BIN" xr "$out/space.txt" --frames 150 --input "$out/on.txt" \
+    --log "$out/on-logs" >"$out/on.out" 2>&1
+check "headset off: exit 0 ($rc), the 1.2 m walk east walks no room step (steps log)" \
+    '[ "$rc" = 0 ] && [ -s "$out/off-logs/summary.csv" ] && [ "$(wc -l <"$out/off-logs/steps-001.csv")" = 1 ]'
+check "headset off: events.csv says relocated 1.200 once ($(grep -c relocated "$out/off-logs/events.csv" 2>/dev/null))" \
+    '[ "$(grep -c ",relocated,1.200$" "$out/off-logs/events.csv")" = 1 ]'
+check "headset off: the recording carries the state (f=3..) and replays to the same events.csv" \
+    'grep -q " f=3" "$out/off.rec" && "$BIN" replay "$out/off.rec" --log "$out/off-replay" >/dev/null 2>&1 && cmp -s "$out/off-logs/events.csv" "$out/off-replay/events.csv"'
+check "the same walk worn walks one step east (the control)" \
+    '[ "$(grep -c ",E," "$out/on-logs/steps-001.csv")" = 1 ]'
+
 # The runtime's service dies in the middle of a session: exit 1 with one
 # line in words (the instance is lost), and the session's logs and
 # recording are still written (issue 19: not exit 0).
