@@ -10,6 +10,8 @@
  *   report_draw.c        an attempt's picture (report_draw.h)
  *   report_escape.c      the one CSV field and HTML text writer
  *                        (report_escape.h; test_report_escape)
+ *   report_bids.c        --bids DIR: the tracks as BIDS-Motion
+ *                        (report_bids.h; tests/cli_report_bids.sh)
  * The module keeps no file-scope mutable state: what a run holds is in its
  * report_run (and the command's buffers), passed down. Internal to the
  * command.
@@ -73,6 +75,7 @@ typedef struct report_run {
     char **dirs;
     int ndirs;
     const char *out;
+    const char *bids;  /* --bids DIR, NULL without */
     report_att *att;
     int natt;
     /* navigators by geometry, made on first use */
