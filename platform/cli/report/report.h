@@ -103,6 +103,9 @@ void report_free(report_run *r);
 
 typedef int (*report_body)(FILE *f, const report_run *r, const void *ctx);
 int report_write_file(const report_run *r, const char *name, report_body body, const void *ctx);
+/* The same into dir/name (name may hold folders that exist: --bids). */
+int report_write_in(const report_run *r, const char *dir, const char *name, report_body body,
+                    const void *ctx);
 
 int report_write_csv(const report_run *r);
 int report_write_conditions(const report_run *r, const hol_report_agg *g);

@@ -142,32 +142,9 @@ static void json_str(FILE *f, const char *s)
     fputc('"', f);
 }
 
-typedef int (*bids_body)(FILE *f, const void *ctx);
-
-/* DIR/name written atomically by body. */
-static int bids_file(const report_run *r, const char *dir, const char *name, bids_body body,
-                     const void *ctx)
+static int description_json(FILE *f, const report_run *run, const void *ctx)
 {
-    hol_file_atomic a;
-    char path[4600];
-    snprintf(path, sizeof path, "%s/%s", dir, name);
-    if (hol_file_atomic_open(&a, path)) {
-        cli_error(r->cmd, 0, "cannot write '%.300s'", path);
-        return CLI_EXIT_FAIL;
-    }
-    int st = body(a.f, ctx);
-    if (!st && !ferror(a.f) && !hol_file_atomic_commit(&a))
-        return 0;
-    if (a.f)
-        hol_file_atomic_abort(&a);
-    if (!st)
-        cli_error(r->cmd, 0, "cannot write '%.300s'", path);
-    return st ? st : CLI_EXIT_FAIL;
-}
-
-static int description_json(FILE *f, const void *ctx)
-{
-    (void)ctx;
+    (void)run, (void)ctx;
     fputs("{\n  \"Name\": \"Holonomy head and hand tracks\",\n  \"BIDSVersion\": \"1.9.0\",\n"
           "  \"DatasetType\": \"raw\",\n  \"GeneratedBy\": [\n    {\n"
           "      \"Name\": \"holonomy report --bids\",\n      \"Version\": \"" HOL_VERSION "\",\n"
@@ -176,9 +153,9 @@ static int description_json(FILE *f, const void *ctx)
     return 0;
 }
 
-static int readme(FILE *f, const void *ctx)
+static int readme(FILE *f, const report_run *run, const void *ctx)
 {
-    (void)ctx;
+    (void)run, (void)ctx;
     fputs("Head and hand tracks of Holonomy attempts, written by `holonomy report --bids`\n"
           "from each attempt's track-NNN.csv. One run per attempt, two tracking systems:\n"
           "tracksys-room (poses in room metres, x east, y up, z south, as logged) and\n"
@@ -188,10 +165,10 @@ static int readme(FILE *f, const void *ctx)
     return 0;
 }
 
-static int participants_tsv(FILE *f, const void *ctx)
+static int participants_tsv(FILE *f, const report_run *run, const void *ctx)
 {
     const bids_att *b = ctx;
-    const report_run *r = b->r;
+    const report_run *r = run;
     const bids_ids *ids = b->id;
     fputs("participant_id\tholonomy_id\n", f);
     for (int i = 0; i < r->natt; i++) {
@@ -205,9 +182,9 @@ static int participants_tsv(FILE *f, const void *ctx)
     return 0;
 }
 
-static int participants_json(FILE *f, const void *ctx)
+static int participants_json(FILE *f, const report_run *run, const void *ctx)
 {
-    (void)ctx;
+    (void)run, (void)ctx;
     fputs("{\n  \"participant_id\": {\"Description\": \"sub- and the letters and digits of the "
           "participant id (n2, n3, ... after it when two ids give one label)\"},\n"
           "  \"holonomy_id\": {\"Description\": \"the participant id as logged "
@@ -215,9 +192,9 @@ static int participants_json(FILE *f, const void *ctx)
     return 0;
 }
 
-static int channels_tsv(FILE *f, const void *ctx)
+static int channels_tsv(FILE *f, const report_run *run, const void *ctx)
 {
-    (void)ctx;
+    (void)run, (void)ctx;
     fputs("name\tcomponent\ttype\ttracked_point\tunits\n", f);
     for (int p = 0; p < 3; p++)
         for (int c = 0; c < 7; c++)
@@ -226,8 +203,9 @@ static int channels_tsv(FILE *f, const void *ctx)
     return 0;
 }
 
-static int motion_json(FILE *f, const void *ctx)
+static int motion_json(FILE *f, const report_run *run, const void *ctx)
 {
+    (void)run;
     const bids_att *b = ctx;
     const hol_report_attempt *a = &b->t->a;
     int tile = !strcmp(b->sys, "tile");
@@ -535,10 +513,10 @@ static int export_attempt(bids_att *b, bids_ids *ids, int i)
     for (int k = 0; !st && k < 2; k++) {
         b->sys = k ? "tile" : "room";
         run_name(b, b->sys, "channels.tsv", name, sizeof name);
-        st = bids_file(r, b->dir, name, channels_tsv, b);
+        st = report_write_in(r, b->dir, name, channels_tsv, b);
         run_name(b, b->sys, "motion.json", name, sizeof name);
         if (!st)
-            st = bids_file(r, b->dir, name, motion_json, b);
+            st = report_write_in(r, b->dir, name, motion_json, b);
     }
     if (st)
         ids[i].run = 0;
@@ -567,13 +545,13 @@ int report_bids_write(report_run *r, const char *dir)
             runs += ids[i].run > 0;
     b.id = ids;
     if (!st)
-        st = bids_file(r, dir, "dataset_description.json", description_json, NULL);
+        st = report_write_in(r, dir, "dataset_description.json", description_json, NULL);
     if (!st)
-        st = bids_file(r, dir, "README", readme, NULL);
+        st = report_write_in(r, dir, "README", readme, NULL);
     if (!st)
-        st = bids_file(r, dir, "participants.tsv", participants_tsv, &b);
+        st = report_write_in(r, dir, "participants.tsv", participants_tsv, &b);
     if (!st)
-        st = bids_file(r, dir, "participants.json", participants_json, NULL);
+        st = report_write_in(r, dir, "participants.json", participants_json, NULL);
     if (!st)
         printf("report: %d run%s of head and hand tracks into --bids\n", runs,
                runs == 1 ? "" : "s");
