@@ -2,8 +2,9 @@
 # cli_report_bids.sh - `holonomy report --bids DIR` (issue 35): each
 # attempt's head and hand tracks as BIDS-Motion (BIDS 1.9, BEP029). From a
 # log folder replayed here (two participants, hands tracked in part, a gap):
-# - the option's refusals (an input, --out itself, a folder not empty): one
-#   line, exit 2, nothing written;
+# - the option's refusals (an input, --out itself, a folder not empty, a
+#   malformed track file): one line, exit 2, nothing written; --out's files
+#   the same with --bids beside it;
 # - the dataset against the BIDS-Motion rules this test names (bids_rules,
 #   below), and by npm's bids-validator (tests/bids, `make deps-web`) with
 #   0 errors when it is installed (else one line says it is skipped);
@@ -102,6 +103,8 @@ run "report --out --bids" 0 "$H" report logs --out rep --bids ds &&
     grep -q '^report: 2 runs of head and hand tracks into --bids$' "$T/out" && ok ||
     bad "report --bids said: $(cat "$T/out")"
 [ -f rep/attempts.csv ] && ok || bad "--out without its tables beside --bids"
+run "report --out alone" 0 "$H" report logs --out rep0 && diff -r rep rep0 >/dev/null && ok ||
+    bad "--out's files differ with --bids beside it"
 run "report --bids alone" 0 "$H" report logs --bids ds2 && diff -r ds ds2 >/dev/null && ok ||
     bad "--bids alone differs from --bids with --out"
 out=$(bids_rules ds) && ok || bad "the export breaks $out"
@@ -135,6 +138,12 @@ run "report --bids orient 1" 0 "$H" report logs1 --bids ds1 &&
         $3 != "0.0000" || $5 != "0.70711" || $7 != "0.70711") { f = 1 } END { exit f }' "$m" \
         ds1/sub-P01/ses-*/motion/*tracksys-tile_run-1_motion.tsv && ok ||
     bad "tile frame at orient 1: $(head -1 ds1/sub-P01/ses-*/motion/*tracksys-tile_run-1_motion.tsv)"
+
+# ---- a malformed track file: one line naming it and its line, exit 2 ------------
+cp -r logs logs2
+sed -i '5s/,f,3,/,f,x3,/' logs2/track-001.csv
+run "a malformed track row" 2 "$H" report logs2 --bids ds3 && one_line "bad track" "track-001.csv: line 5"
+[ ! -e ds3 ] && ok || bad "a malformed track file made --bids"
 
 # ---- a broken copy fails the rules -----------------------------------------------
 cp -r ds broken

@@ -172,9 +172,9 @@ static int participants_tsv(FILE *f, const report_run *run, const void *ctx)
     const bids_ids *ids = b->id;
     fputs("participant_id\tholonomy_id\n", f);
     for (int i = 0; i < r->natt; i++) {
-        int seen = !ids[i].run;
+        int seen = ids[i].run <= 0;
         for (int j = 0; j < i && !seen; j++)
-            seen = ids[j].run && !strcmp(ids[j].sub, ids[i].sub);
+            seen = ids[j].run > 0 && !strcmp(ids[j].sub, ids[i].sub);
         if (!seen)
             fprintf(f, "sub-%s\t%s\n", ids[i].sub,
                     r->att[i].a.participant[0] ? r->att[i].a.participant : "n/a");
@@ -463,19 +463,17 @@ static void warn(const report_run *r, const char *path, const char *what)
             what);
 }
 
-/* One attempt's run: its two tracking systems' three files each. */
-static int export_attempt(bids_att *b, bids_ids *ids, int i)
+/* The attempt read up to its track file (named in track): its room's
+ * centre, start orient and steps. 0, -1 no track file, or an exit status. */
+static int prepare(bids_att *b, bids_ids *ids, int i, char *track, size_t cap)
 {
     report_run *r = b->r;
-    char track[4600], name[600];
     b->t = &r->att[i];
     b->id = &ids[i];
-    snprintf(track, sizeof track, "%s/track-%03ld.csv", r->dirs[b->t->dir], b->t->a.attempt);
+    snprintf(track, cap, "%s/track-%03ld.csv", r->dirs[b->t->dir], b->t->a.attempt);
     struct stat sb;
-    if (lstat(track, &sb)) {
-        warn(r, track, "missing: the attempt has no run in --bids");
-        return 0;
-    }
+    if (lstat(track, &sb))
+        return -1;
     const hol_report_attempt *a = &b->t->a;
     b->cx = a->room_cols * a->cell_m / 2, b->cz = a->room_rows * a->cell_m / 2;
     b->hz = 0, b->nsamples = 0;
@@ -489,27 +487,48 @@ static int export_attempt(bids_att *b, bids_ids *ids, int i)
     if (!walk)
         cli_error(r->cmd, 0, "out of memory");
     b->start_orient = start.orient;
-    if (!st)
-        st = read_steps(b);
+    return st ? st : read_steps(b);
+}
+
+/* Every attempt's track read before anything is written: a malformed one
+ * refused; an attempt without a track or a rate gets run -1 (a warning). */
+static int check_all(bids_att *b, bids_ids *ids)
+{
+    report_run *r = b->r;
+    char track[4600];
+    FILE *nul = fopen("/dev/null", "w");
+    int st = nul ? 0 : CLI_EXIT_FAIL;
+    if (!nul)
+        cli_error(r->cmd, 0, "cannot open /dev/null");
+    for (int i = 0; !st && i < r->natt; i++) {
+        if (!(st = report_stopped(r)) && (st = prepare(b, ids, i, track, sizeof track)) < 0)
+            warn(r, track, "missing: the attempt has no run in --bids");
+        if (!st && !(st = read_track(b, track, nul, nul)) && !b->hz)
+            warn(r, track, "fewer than two samples: the attempt has no run in --bids");
+        ids[i].run = st < 0 || (!st && !b->hz) ? -1 : 0;
+        st = st < 0 ? 0 : st;
+    }
+    if (nul)
+        fclose(nul);
+    return st;
+}
+
+/* One attempt's run: its two tracking systems' three files each. */
+static int export_attempt(bids_att *b, bids_ids *ids, int i)
+{
+    report_run *r = b->r;
+    char track[4600], name[600];
+    if (ids[i].run < 0)
+        return 0;
+    int st = prepare(b, ids, i, track, sizeof track);
     ids[i].run = 1;
     for (int j = 0; j < i; j++)
-        ids[i].run += ids[j].run && !strcmp(ids[j].sub, ids[i].sub) &&
+        ids[i].run += ids[j].run > 0 && !strcmp(ids[j].sub, ids[i].sub) &&
                       !strcmp(ids[j].ses, ids[i].ses) && !strcmp(ids[j].task, ids[i].task);
     if (!st)
         st = make_dirs(b);
     if (!st)
         st = write_motion(b, track);
-    if (st < 0) {
-        warn(r, track, "fewer than two samples: the attempt has no run in --bids");
-        ids[i].run = 0;
-        const char *parts[3] = {"sub-%s/ses-%s/motion", "sub-%s/ses-%s", "sub-%s"};
-        for (int k = 0; k < 3; k++) { /* left when they hold other runs */
-            int o = snprintf(track, sizeof track, "%s/", b->dir);
-            snprintf(track + o, sizeof track - (size_t)o, parts[k], ids[i].sub, ids[i].ses);
-            rmdir(track);
-        }
-        return 0;
-    }
     for (int k = 0; !st && k < 2; k++) {
         b->sys = k ? "tile" : "room";
         run_name(b, b->sys, "channels.tsv", name, sizeof name);
@@ -518,9 +537,11 @@ static int export_attempt(bids_att *b, bids_ids *ids, int i)
         if (!st)
             st = report_write_in(r, b->dir, name, motion_json, b);
     }
+    if (st < 0) /* the file changed since check_all */
+        cli_error(r->cmd, 0, "'%.300s' changed while the report ran", track);
     if (st)
         ids[i].run = 0;
-    return st;
+    return st < 0 ? CLI_EXIT_FAIL : st;
 }
 
 int report_bids_write(report_run *r, const char *dir)
@@ -534,8 +555,9 @@ int report_bids_write(report_run *r, const char *dir)
         return CLI_EXIT_FAIL;
     }
     label_all(r, ids);
-    int st = 0;
-    if (mkdir(dir, 0777) && errno != EEXIST) {
+    int st = check_all(&b, ids), quiet = r->quiet;
+    r->quiet = 1; /* the level's warnings were given */
+    if (!st && mkdir(dir, 0777) && errno != EEXIST) {
         cli_error(r->cmd, 0, "--bids '%.300s' cannot be made: %s", dir, strerror(errno));
         st = CLI_EXIT_FAIL;
     }
@@ -555,6 +577,7 @@ int report_bids_write(report_run *r, const char *dir)
     if (!st)
         printf("report: %d run%s of head and hand tracks into --bids\n", runs,
                runs == 1 ? "" : "s");
+    r->quiet = quiet;
     free(b.step_t);
     free(b.step_o);
     free(ids);
