@@ -25,7 +25,8 @@
 #   make web-test   deps-web, the web build, then headless chromium on an
 #                   emulated Quest 3
 #   make deps-web   Debian's emscripten, chromium, terser, brotli and openssl; npm's
-#                   puppeteer-core and iwer
+#                   puppeteer-core and iwer, and bids-validator (tests/bids: the
+#                   check of report --bids in tests/cli_report_bids.sh)
 #   make quest-link-check  the APK's sources compiled and linked for this machine
 #   make clean      remove build outputs
 #
@@ -719,6 +720,8 @@ WEB_DEB_PACKAGES := emscripten chromium brotli openssl python3 curl terser
 deps-web:
 	@$(MAKE) -s deps DEB_PACKAGES="$(WEB_DEB_PACKAGES)"
 	@cd tests/web && if npm ls --depth=0 >/dev/null 2>&1; then echo "make deps-web: npm packages present"; \
+	  else npm ci --no-audit --no-fund; fi
+	@cd tests/bids && if npm ls --depth=0 >/dev/null 2>&1; then echo "make deps-web: bids-validator present"; \
 	  else npm ci --no-audit --no-fund; fi
 
 # Programs for node (wasm embedded: no fetch of a .wasm file under node).

@@ -17,12 +17,14 @@
 #include "../../../render/hol_png.h"
 #include "../cli.h"
 #include "report.h"
+#include "report_bids.h"
 #include "report_draw.h"
 #include "report_pstats.h"
 #include "report_stats.h"
 
 static const char *const report_usage =
-    "usage: holonomy report LOGDIR... --out DIR\n"
+    "usage: holonomy report LOGDIR... --out DIR [--bids DIR2]\n"
+    "       holonomy report LOGDIR... --bids DIR2\n"
     "\n"
     "Reads the research logs of one or more log folders (play/replay/xr --log:\n"
     "summary.csv, steps-NNN.csv, level-HASH.txt) and writes into DIR:\n"
@@ -59,6 +61,9 @@ static const char *const report_usage =
     "is refused naming its file and line; a missing steps or level file is a\n"
     "warning (no picture, or no optimal walk in it). Killed and aborted attempts\n"
     "are listed with that end.\n"
+    "--bids DIR2 writes each attempt's head and hand tracks (track-NNN.csv) as a\n"
+    "BIDS-Motion dataset (BIDS 1.9): one run per attempt, tracking systems room and\n"
+    "tile; DIR2 must be new or empty.\n"
     "\n"
     "Exit status: 0 ok, 1 failure (writing), 2 bad input or usage.\n";
 
@@ -154,7 +159,7 @@ static int check_out_dir(const char *cmd, const char *dir)
     return st;
 }
 
-static const char *const report_valued[] = {"--out", NULL};
+static const char *const report_valued[] = {"--out", "--bids", NULL};
 
 static int parse_args(report_run *r, int argc, char **argv)
 {
@@ -167,7 +172,9 @@ static int parse_args(report_run *r, int argc, char **argv)
     if (!r->dirs)
         return CLI_EXIT_FAIL;
     while ((got = cli_opts_next(&p, &opt, &val)) > 0) {
-        if (opt)
+        if (opt && !strcmp(opt, "--bids"))
+            r->bids = val;
+        else if (opt)
             r->out = val;
         else
             r->dirs[r->ndirs++] = (char *)val;
@@ -175,7 +182,10 @@ static int parse_args(report_run *r, int argc, char **argv)
     if (got < 0)
         return CLI_EXIT_USAGE;
     const char *bad = !r->ndirs ? "no log folder given; see 'holonomy report --help'"
-                      : !r->out ? "--out DIR is required; see 'holonomy report --help'"
+                      : !r->out && !r->bids
+                          ? "--out DIR is required; see 'holonomy report --help'"
+                      : r->out && r->bids && !strcmp(r->out, r->bids)
+                          ? "--bids must name another folder than --out"
                                 : NULL;
     if (bad) {
         cli_error(r->cmd, 0, "%s", bad);
@@ -183,13 +193,15 @@ static int parse_args(report_run *r, int argc, char **argv)
     }
     for (int i = 0; i < r->ndirs; i++) {
         int st = cli_require_folder(r->cmd, NULL, r->dirs[i]);
-        const cli_path in = {"the log folder", r->dirs[i]}, out = {"--out", r->out};
+        const cli_path in = {"the log folder", r->dirs[i]};
+        const cli_path out[2] = {{"--out", r->out}, {"--bids", r->bids}};
         if (!st)
-            st = cli_check_distinct(r->cmd, &in, 1, &out, 1);
+            st = cli_check_distinct(r->cmd, &in, 1, out, 2);
         if (st)
             return st;
     }
-    return check_out_dir(r->cmd, r->out);
+    int st = r->bids ? report_bids_check(r->cmd, r->bids) : 0;
+    return st || !r->out ? st : check_out_dir(r->cmd, r->out);
 }
 
 static int make_out(const report_run *r)
@@ -312,6 +324,10 @@ static void remove_stale(const report_run *r)
 
 static int run(report_run *r, report_buf *b)
 {
+    if (!r->out) { /* --bids only */
+        int st = report_read_summaries(r);
+        return st ? st : report_bids_write(r, r->bids);
+    }
     int st = report_read_summaries(r);
     if (!st)
         st = report_stats_read(r);
@@ -360,6 +376,8 @@ static int run(report_run *r, report_buf *b)
         printf("report: %d attempts from %d log folder%s\n", r->natt, r->ndirs,
                r->ndirs == 1 ? "" : "s");
     }
+    if (!st && r->bids)
+        st = report_bids_write(r, r->bids);
     free(conds);
     return st;
 }

@@ -10,6 +10,8 @@
  *   report_draw.c        an attempt's picture (report_draw.h)
  *   report_escape.c      the one CSV field and HTML text writer
  *                        (report_escape.h; test_report_escape)
+ *   report_bids.c        --bids DIR: the tracks as BIDS-Motion
+ *                        (report_bids.h; tests/cli_report_bids.sh)
  * The module keeps no file-scope mutable state: what a run holds is in its
  * report_run (and the command's buffers), passed down. Internal to the
  * command.
@@ -73,6 +75,7 @@ typedef struct report_run {
     char **dirs;
     int ndirs;
     const char *out;
+    const char *bids;  /* --bids DIR, NULL without */
     report_att *att;
     int natt;
     /* navigators by geometry, made on first use */
@@ -101,6 +104,9 @@ void report_free(report_run *r);
 
 typedef int (*report_body)(FILE *f, const report_run *r, const void *ctx);
 int report_write_file(const report_run *r, const char *name, report_body body, const void *ctx);
+/* The same into dir/name (name may hold folders that exist: --bids). */
+int report_write_in(const report_run *r, const char *dir, const char *name, report_body body,
+                    const void *ctx);
 
 int report_write_csv(const report_run *r);
 int report_write_conditions(const report_run *r, const hol_report_agg *g);

@@ -9,9 +9,15 @@
 
 int report_write_file(const report_run *r, const char *name, report_body body, const void *ctx)
 {
+    return report_write_in(r, r->out, name, body, ctx);
+}
+
+int report_write_in(const report_run *r, const char *dir, const char *name, report_body body,
+                    const void *ctx)
+{
     hol_file_atomic a;
-    char path[4200];
-    snprintf(path, sizeof path, "%s/%s", r->out, name);
+    char path[4700];
+    snprintf(path, sizeof path, "%s/%s", dir, name);
     if (hol_file_atomic_open(&a, path)) {
         cli_error(r->cmd, 0, "cannot write '%.300s'", path);
         return CLI_EXIT_FAIL;
