@@ -62,5 +62,9 @@ int play_study_participant_new(const char *cmd, const char *log_dir, const char 
 int play_study_resume(const char *cmd, const char *log_dir, const char *study,
                       const char *participant, hol_level *levels, int *nlevels);
 const char *play_study_resume_note(void);
+/* The last play_study_resume's questions to ask (issue 39) into m's
+ * ask_session, ask_attempt, ask_item (0, "" when it plays its first level:
+ * see core/hol_rec.h). */
+void play_study_resume_meta(hol_rec_meta *m);
 
 #endif

@@ -1,0 +1,114 @@
+#!/bin/sh
+# cli_kills.sh - random kills in a study with pointing and the SSQ (issue
+# 39 item 3): participants of a two-condition study (a pointing question
+# after every level, the SSQ after each condition, instructions and a
+# closing screen) are killed with SIGKILL at random moments and resumed
+# with --resume until their study is over; then every answer is either kept
+# or asked again: every level has a `done` attempt with its points.csv
+# row, every condition all 16 SSQ items, no item answered twice, and
+# `report` accepts the folder. Before the fix a kill in a questionnaire or
+# the pointing question lost the answers for good (--resume went on to the
+# next level, or refused after the last).
+# HOL_KILLS: the kills (default 12; make kill-test runs 60); HOL_KILL_SEED:
+# the delays' seed (default: this shell's pid; printed on a failure).
+# The play is scripted (--input): a cycle of frames that, whatever the
+# state, walks the level's one step, answers the pointing question, the end
+# screen, a screen or an item (the middle mark), so a resumed session takes
+# the same input whatever it resumes at.
+. "$(dirname "$0")/lib.sh"
+
+if ! command -v Xvfb >/dev/null 2>&1; then
+    echo "note: no Xvfb here: no study is killed"
+    finish cli_kills
+    exit $?
+fi
+start_xvfb 61 || { bad "Xvfb did not start"; finish cli_kills; exit $?; }
+case $H in /*) ;; *) H=$PWD/$H ;; esac
+KILLS=${HOL_KILLS:-12}
+SEED=${HOL_KILL_SEED:-$$}
+cd "$T" || exit 1
+
+printf 'mode flag\nseed 3\nflag N\n' >a.lvl
+cat >k.study <<'S'
+study kills
+counterbalance williams
+closing Thank you.
+set point start
+questionnaire ssq after condition
+condition one
+instructions First block.
+level a.lvl
+level a.lvl
+condition two
+instructions Second block.
+level a.lvl
+set minimap hand
+S
+# the cycle: standing in cell (1,1), a step north (the flag), back, confirm,
+# confirm; every press in (1,1), so a level begins there
+awk 'function line(extra, c, r) { printf "%.3f f=9%s h=%.1f,1.6,%.1f,0,0,0,1\n", t, extra, c + 0.5, r + 0.5; t += 0.05 }
+     function hold(c, r,   k) { for (k = 0; k < 12; k++) line("", c, r) }
+     BEGIN { for (n = 0; n < 30; n++) {
+         hold(1, 1); hold(1, 0); line(" p=1", 1, 1); hold(1, 1); line(" p=1", 1, 1); hold(1, 1) } }' >in.txt
+awk -v s="$SEED" -v n=$((KILLS * 3)) 'BEGIN { srand(s); for (i = 0; i < n; i++) printf "%.2f\n", 0.15 + rand() * 1.1 }' >delays
+P="$H play --study k.study --size 64x48 --log logs --input in.txt"
+
+kills=0 asked=0 d=0 p=0
+# one run of participant $1 (--resume unless $2 is "fresh"), killed after the
+# next delay unless $3 is "last"; sets st
+one_run() {
+    how=--resume
+    [ "$2" = fresh ] && how=--append
+    $P --participant "$1" $how >out 2>err &
+    pid=$!
+    if [ "$3" != last ]; then
+        d=$((d + 1))
+        wait_for "$(sed -n ${d}p delays)" -p $pid
+        kill -9 $pid 2>/dev/null
+    fi
+    wait $pid 2>/dev/null; st=$?
+    grep -q "its questions from item" err && asked=$((asked + 1))
+    [ $st = 137 ] && kills=$((kills + 1))
+    return 0
+}
+while [ $kills -lt "$KILLS" ]; do
+    p=$((p + 1)); fresh=fresh
+    for k in 1 2 3 4 last; do
+        one_run "P$p" "$fresh" "$k"
+        fresh=
+        if [ $st = 2 ] && grep -q "nothing to resume (start them" err; then
+            one_run "P$p" fresh "$k" # killed before a row reached the disk
+        fi
+        [ $st = 0 ] && break
+        [ $st = 2 ] && grep -q "has finished study" err && break
+        [ $st = 137 ] || { bad "P$p: status $st: $(cat err)"; break; }
+    done
+    [ $st = 0 ] || { [ $st = 2 ] && grep -q "has finished study" err; } ||
+        bad "P$p did not finish: status $st: $(cat err)"
+done
+[ $kills -ge "$KILLS" ] && ok || bad "$kills kills, want $KILLS"
+# a run of kills that never fell in a question would test nothing
+[ $asked -gt 0 ] && ok || bad "no kill fell in a questionnaire (seed $SEED)"
+echo "cli_kills: $kills kills of $p participants, $asked resumed in a questionnaire"
+
+# ---- every answer kept or asked again ------------------------------------------------
+# levels with a done attempt and its pointing answer, per participant and
+# condition: one 2, two 1
+awk -F, 'FNR == 1 { next }
+         FILENAME ~ /points/ { pt[$1 "," $3] = 1; next }
+         $(NF-3) == "done" && pt[$1 "," $5] { n[$2 " " $7]++ }
+         END { for (k in n) print k, n[k] }' logs/points.csv logs/summary.csv | sort >got.levels
+for i in $(seq 1 $p); do printf 'P%s one 2\nP%s two 1\n' $i $i; done | sort >want.levels
+cmp -s want.levels got.levels && ok || { bad "levels with their pointing answer:"; diff want.levels got.levels | head -5; }
+# the SSQ's 16 items per participant and condition (by the attempt's row),
+# none answered twice for one attempt
+awk -F, 'FNR == 1 { next }
+         FILENAME ~ /summary/ { cond[$1 "," $5] = $7; next }
+         { k = $1 "," $3 "," $6; if (seen[k]++) print "twice", k
+           items[$2 " " cond[$1 "," $3]]++ }
+         END { for (k in items) print k, items[k] }' logs/summary.csv logs/answers.csv | sort >got.ssq
+for i in $(seq 1 $p); do printf 'P%s one 16\nP%s two 16\n' $i $i; done | sort >want.ssq
+cmp -s want.ssq got.ssq && ok || { bad "SSQ answers (seed $SEED):"; diff want.ssq got.ssq | head -8; }
+run "report" 0 "$H" report logs --out rep
+cd logs && ls attempt-*.live *.csv.live 2>/dev/null | grep -q . && bad "live files left: $(ls)"; cd ..
+finish cli_kills
