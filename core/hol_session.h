@@ -244,6 +244,12 @@ const hol_level *hol_session_level(const hol_session *s);
  * for its instructions. What a platform prints at the end is this, not
  * the app's state: a quit in a questionnaire leaves an attempt `done`. */
 int hol_session_level_end(const hol_session *s);
+/* The word a platform prints for the level in play at the end ("level NAME
+ * WORD steps ..."): timeout when its time ran out, else the end its
+ * attempt was logged with once it ended (done, restart, quit), else the
+ * app's state: idle, playing (instructions too), quit, done (a closing
+ * screen). */
+const char *hol_session_end_name(hol_session *s);
 long hol_session_frames(const hol_session *s);
 /* Attempts of a killed session finished by recovery at create; those it
  * dropped (killed before their attempt-NNN.live reached the disk). */

@@ -44,12 +44,83 @@ instructions Second block.
 level a.lvl
 set minimap hand
 S
-# the cycle: standing in cell (1,1), a step north (the flag), back, confirm,
-# confirm; every press in (1,1), so a level begins there
-awk 'function line(extra, c, r) { printf "%.3f f=9%s h=%.1f,1.6,%.1f,0,0,0,1\n", t, extra, c + 0.5, r + 0.5; t += 0.05 }
+# gen CYCLES [LAST]: the cycle CYCLES times: standing in cell (1,1), a step
+# north (the flag), back, confirm, confirm; every press in (1,1), so a
+# level begins there. Then the line LAST (its flags) if given.
+gen() {
+    awk -v cycles="$1" -v last="${2:-}" '
+     function line(extra, c, r) { printf "%.5f f=9%s h=%.1f,1.6,%.1f,0,0,0,1\n", t, extra, c + 0.5, r + 0.5; t += 0.05 }
      function hold(c, r,   k) { for (k = 0; k < 12; k++) line("", c, r) }
-     BEGIN { for (n = 0; n < 30; n++) {
-         hold(1, 1); hold(1, 0); line(" p=1", 1, 1); hold(1, 1); line(" p=1", 1, 1); hold(1, 1) } }' >in.txt
+     BEGIN { for (n = 0; n < cycles; n++) {
+         hold(1, 1); hold(1, 0); line(" p=1", 1, 1); hold(1, 1); line(" p=1", 1, 1); hold(1, 1) }
+       if (last != "") line(last, 1, 1) }'
+}
+gen 30 >in.txt
+# held: cycle 1 confirms the instructions (level 1 begins), cycle 2 walks
+# it, points and confirms its end screen; cycle 3 the same for level 2,
+# whose end brings the SSQ (two items a cycle); cycles 4..11 its 16 items,
+# 12 the next instructions, 13 level 3 and its end, 14.. its SSQ.
+# held CYCLES FILE LINES WHAT: P1 into folder held/, its input CYCLES
+# cycles, a step north and back, then 30,000 frames 30 us apart standing,
+# killed once held/FILE has LINES lines (WHAT names the moment)
+held() {
+    rm -rf held
+    gen "$1" >h.in
+    awk 'END { t = $1 + 0.05
+               for (k = 0; k < 12; k++) printf "%.5f f=9 h=1.5,1.6,1.5,0,0,0,1\n", t + k * 0.05
+               for (k = 0; k < 12; k++) printf "%.5f f=9 h=1.5,1.6,0.5,0,0,0,1\n", t + 0.6 + k * 0.05
+               for (k = 1; k <= 30000; k++) printf "%.5f f=9 h=1.5,1.6,0.5,0,0,0,1\n", t + 1.2 + k * 0.00003 }' \
+        h.in >h.tail
+    cat h.tail >>h.in
+    $H play --study k.study --size 64x48 --log held --input h.in --participant P1 >/dev/null 2>&1 &
+    pid=$!
+    wait_for 60 -l "held/$2" "$3"
+    kill -9 $pid 2>/dev/null; wait $pid 2>/dev/null
+    [ "$(wc -l <"held/$2")" = "$3" ] && ok || bad "$4: not held there: $(wc -l <"held/$2") lines in $2"
+}
+# ---- kills at chosen moments -------------------------------------------------------------
+# resumed NAME WANT: P1 resumed in held/ with the whole input, to the end;
+# stderr's order line ends with WANT
+resumed() {
+    run "$1" 0 $H play --study k.study --size 64x48 --log held --input in.txt --participant P1 \
+        --resume && { grep -q "$2\$" err && ok || bad "$1: $(cat err), want '$2'"; }
+}
+# answered ATTEMPT N: held/answers.csv has N rows of attempt ATTEMPT, each
+# item once
+answered() {
+    got=$(awk -F, -v a="$1" 'NR > 1 && $3 == a && !seen[$6]++ { n++ } NR > 1 && $3 == a { all++ }
+                             END { print n + 0, all + 0 }' held/answers.csv)
+    [ "$got" = "$2 $2" ] && ok || bad "attempt $1's answers: $got (distinct, all), want $2"
+}
+# the pointing question of level 1: its attempt is `done`, its answer lost;
+# the level is played again (the question is about the walk just made)
+held 1 summary.csv 2 "level 1's pointing question"
+resumed "pointing lost" "resumed at one (position 1), level 1 of 3"
+[ "$(awk -F, 'NR > 1 { print $3 }' held/points.csv | tr '\n' ' ')" = "2 3 4 " ] && ok ||
+    bad "points after the resume: $(cat held/points.csv)"
+# the first SSQ, 10 items answered: asked from item 11 on attempt 2
+held 8 answers.csv 11 "the first SSQ's item 11"
+resumed "SSQ cut" "resumed at one (position 1), level 2 of 3, its questions from item 11 (attempt 2)"
+answered 2 16
+answered 3 16
+# the last level's SSQ (6 answered): asked again, not "nothing to resume"
+held 16 answers.csv 23 "the last SSQ's item 7"
+resumed "last SSQ cut" "resumed at two (position 2), level 3 of 3, its questions from item 7 (attempt 3)"
+answered 3 16
+run "report of the resumed" 0 "$H" report held --out rep-held
+# a quit in a questionnaire ends the line as the attempt was logged: done
+rm -rf held
+gen 8 " p=40" >q.in
+run "quit in the SSQ" 0 $H play --study k.study --size 64x48 --log held --input q.in --participant P1
+grep -q "^level a done steps 1 " out && ok || bad "quit in the SSQ printed: $(cat out)"
+[ "$(awk -F, 'NR > 1 { print $(NF-3) }' held/summary.csv | tr '\n' ' ')" = "done done " ] && ok ||
+    bad "quit in the SSQ: $(cat held/summary.csv)"
+# input that ends with an item on screen: done, not garbage
+gen 5 >e.in
+run "ends in the SSQ" 0 $H play --study k.study --size 64x48 --input e.in --participant P2
+grep -q "^level a done steps 1 " out && ok || bad "ended in the SSQ printed: $(cat out)"
+
+# ---- random kills --------------------------------------------------------------------------
 awk -v s="$SEED" -v n=$((KILLS * 3)) 'BEGIN { srand(s); for (i = 0; i < n; i++) printf "%.2f\n", 0.15 + rand() * 1.1 }' >delays
 P="$H play --study k.study --size 64x48 --log logs --input in.txt"
 

@@ -404,20 +404,11 @@ int play_session_end(const char *cmd, hol_session *s, int abort)
 void play_print_end(hol_session *s)
 {
     const hol_app_view *v = hol_app_get_view(hol_session_app(s));
-    /* once the level's attempt has ended (its pointing question, end
-     * screen, questionnaires and closing screen come after) the end it was
-     * logged with; before, the app's state (instructions: playing) */
-    static const char *const ends[] = {"playing", "done", "restart", "quit", "timeout"};
-    static const char *const st[] = {"idle", "playing", "done", "quit", "done", "playing",
-                                     "done"};
-    int end = hol_session_level_end(s), state = (int)v->state;
-    const char *what = end > 0 && end < 5 ? ends[end]
-                       : state >= 0 && state < 7 ? st[state] : "playing";
     char name[4 * HOL_LEVEL_NAME_MAX];
     cli_escape(hol_session_level(s)->name, name, sizeof name);
     printf("level %s %s steps %d optimum %d tile %s cell %d,%d\n", name,
-           v->hud.timed_out ? "timeout" : what, v->hud.steps, v->hud.optimum,
-           v->hud.address, v->user.col, v->user.row);
+           hol_session_end_name(s), v->hud.steps, v->hud.optimum, v->hud.address, v->user.col,
+           v->user.row);
 }
 
 int play_load_pad_script(const char *cmd, const char *path, hol_hid_script *sc)

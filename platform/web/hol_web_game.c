@@ -343,13 +343,7 @@ EMSCRIPTEN_KEEPALIVE void hol_web_abort(void)
 void hol_web_game_print_end(void)
 {
     const hol_app_view *v = hol_app_get_view(hol_session_app(sess));
-    /* a pointing question and a closing screen come after the level is over,
-     * instructions before it begins */
-    static const char *const st[] = {"idle", "playing", "done", "quit", "done", "playing"};
-    int state = v->state == HOL_APP_SCREEN && v->hud.screen == HOL_APP_SCREEN_CLOSING
-                    ? HOL_APP_DONE
-                    : (int)v->state;
     printf("level %s %s steps %d optimum %d tile %s cell %d,%d\n", hol_session_level(sess)->name,
-           v->hud.timed_out ? "timeout" : st[state], v->hud.steps, v->hud.optimum,
-           v->hud.address, v->user.col, v->user.row);
+           hol_session_end_name(sess), v->hud.steps, v->hud.optimum, v->hud.address, v->user.col,
+           v->user.row);
 }
