@@ -102,6 +102,8 @@ BENCH_RENDER_SRC := $(wildcard tests/bench_render*.c)
 BENCH_SRC := $(filter-out $(BENCH_RENDER_SRC) tests/bench_web.c tests/bench_ratio.c,$(wildcard tests/bench_*.c))
 BENCH_BASE_COMMIT ?= 609d0070eb51369e8de0939d12cbe940bcc0cbf5
 FUZZ_SRC := $(wildcard fuzz/fuzz_*.c)
+# The report module of the tool (`holonomy report`): its own folder.
+CLI_SRC += $(wildcard platform/cli/report/*.c)
 
 CORE_OBJ := $(CORE_SRC:%.c=$(BUILD)/%.o)
 CLI_OBJ  := $(CLI_SRC:%.c=$(BUILD)/%.o) $(PLAT_SRC:%.c=$(BUILD)/%.o) $(AUDIO_SRC:%.c=$(BUILD)/%.o) \
@@ -149,6 +151,16 @@ $(BUILD)/%.o: %.c
 $(CORE_LIB): $(CORE_OBJ)
 	@rm -f $@
 	$(AR) rcs $@ $^
+
+# The renderer's GLSL (render/shaders/*.glsl) as C strings, made in the
+# build folder by render/shaders/glsl_c.sh (never committed) for
+# render/hol_program.c, the only file that includes it (every build of
+# render/: this one, the web's, build_apk.sh and quest_link_check.sh).
+GLSL_H := $(BUILD)/gen/hol_glsl.h
+$(GLSL_H): render/shaders/glsl_c.sh $(wildcard render/shaders/*.glsl)
+	sh render/shaders/glsl_c.sh $@
+$(BUILD)/render/hol_program.o: $(GLSL_H)
+$(BUILD)/render/hol_program.o: override CFLAGS += -I$(BUILD)/gen
 
 $(RENDER_LIB): $(RENDER_OBJ)
 	@rm -f $@
@@ -214,9 +226,9 @@ $(BUILD)/tests/test_audio: tests/test_audio.c $(AUDIO_SRC) platform/audio/hol_au
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) -o $@ $< $(AUDIO_SRC) $(CORE_LIB) $(LDFLAGS) -lcmocka $(LDLIBS)
 
-# The report's pictures (platform/cli/report_draw.c) and their PNG writer.
-REPORT_DRAW_SRC := platform/cli/report_draw.c render/hol_font.c render/hol_png.c
-$(BUILD)/tests/test_report_draw: tests/test_report_draw.c $(REPORT_DRAW_SRC) platform/cli/report_draw.h $(CORE_LIB)
+# The report's pictures (platform/cli/report/report_draw.c) and their PNG writer.
+REPORT_DRAW_SRC := platform/cli/report/report_draw.c render/hol_font.c render/hol_png.c
+$(BUILD)/tests/test_report_draw: tests/test_report_draw.c $(REPORT_DRAW_SRC) platform/cli/report/report_draw.h $(CORE_LIB)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) -o $@ $< $(REPORT_DRAW_SRC) $(CORE_LIB) $(LDFLAGS) -lcmocka -lz $(LDLIBS)
 
@@ -226,6 +238,11 @@ FONT_TEST_SRC := render/hol_face_draw.c render/hol_png.c platform/file/hol_file.
 $(BUILD)/tests/test_font: tests/test_font.c $(FONT_TEST_SRC) render/hol_face_draw.h $(CORE_LIB)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) -o $@ $< $(FONT_TEST_SRC) $(CORE_LIB) $(LDFLAGS) -lcmocka -lz $(LDLIBS)
+
+# The report's CSV field and HTML text (platform/cli/report/report_escape.c).
+$(BUILD)/tests/test_report_escape: tests/test_report_escape.c platform/cli/report/report_escape.c platform/cli/report/report_escape.h $(CORE_LIB)
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) -o $@ $< platform/cli/report/report_escape.c $(CORE_LIB) $(LDFLAGS) -lcmocka $(LDLIBS)
 
 $(BUILD)/tests/%: tests/%.c $(wildcard tests/*.h) $(CORE_LIB)
 	@mkdir -p $(dir $@)
@@ -636,6 +653,9 @@ $(WEB_STAMP): FORCE
 	@echo '$(WEB_FLAGS_TEXT)' | cmp -s - $@ || echo '$(WEB_FLAGS_TEXT)' >$@
 
 FORCE:
+
+$(BUILD)/web-obj/render/hol_program.o: $(GLSL_H)
+$(BUILD)/web-obj/render/hol_program.o: WEB_CFLAGS += -I$(BUILD)/gen
 
 $(BUILD)/web-obj/%.o: %.c $(WEB_STAMP)
 	@mkdir -p $(dir $@)

@@ -310,6 +310,9 @@ typedef enum hol_app_state {
                                  hud.lines, confirm goes on, quit quits;
                                  nothing else acts, no clock runs */
 } hol_app_state;
+/* How many states there are (0..HOL_APP_STATE_COUNT-1): tables of them are
+ * sized by it. */
+#define HOL_APP_STATE_COUNT 7
 
 /* The HUD model: filled at the step, drawn as is. */
 typedef struct hol_app_hud {
@@ -566,6 +569,12 @@ hol_err hol_app_prepare(hol_app *app, int q, int cols, int rows);
 hol_err hol_app_step(hol_app *app, const hol_input *in);
 
 const hol_app_view *hol_app_get_view(const hol_app *app);
+/* The word the platforms print for how a run ended ("level NAME WORD steps
+ * ..."): "timeout" when the level's time ran out, else by state: idle,
+ * playing (also the instructions before a level), done (also the pointing
+ * question, a questionnaire's item and the closing screen, which come after
+ * the level is over), quit. Never NULL. */
+const char *hol_app_end_word(const hol_app_view *v);
 const hol_app_events *hol_app_get_events(const hol_app *app);
 /* The world the view shows (for the renderer's content). */
 struct hol_world *hol_app_world(hol_app *app);

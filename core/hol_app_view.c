@@ -127,6 +127,21 @@ static void hol__menu_hint(const hol_app *app, const hol_input *in, hol_app_hud 
         h->hint[len] = 0; /* no room: the prompt alone */
 }
 
+const char *hol_app_end_word(const hol_app_view *v)
+{
+    static const char *const word[] = {
+        [HOL_APP_IDLE] = "idle", [HOL_APP_PLAYING] = "playing", [HOL_APP_DONE] = "done",
+        [HOL_APP_QUIT] = "quit", [HOL_APP_POINT] = "done",      [HOL_APP_SCREEN] = "playing",
+        [HOL_APP_ASK] = "done"};
+    _Static_assert(sizeof word / sizeof word[0] == HOL_APP_STATE_COUNT, "one word per state");
+    if (v->hud.timed_out)
+        return "timeout";
+    if (v->state == HOL_APP_SCREEN && v->hud.screen == HOL_APP_SCREEN_CLOSING)
+        return "done";
+    unsigned s = (unsigned)v->state;
+    return s < HOL_APP_STATE_COUNT && word[s] ? word[s] : "playing";
+}
+
 /* A screen of text (state HOL_APP_SCREEN): its prompt. */
 static void hol__screen_status(const hol_app *app, hol_app_hud *h)
 {

@@ -246,9 +246,9 @@ const hol_level *hol_session_level(const hol_session *s);
 int hol_session_level_end(const hol_session *s);
 /* The word a platform prints for the level in play at the end ("level NAME
  * WORD steps ..."): timeout when its time ran out, else the end its
- * attempt was logged with once it ended (done, restart, quit), else the
- * app's state: idle, playing (instructions too), quit, done (a closing
- * screen). */
+ * attempt was logged with once it ended (done, restart, quit: a quit in its
+ * pointing question, end screen or questionnaire leaves it done), else the
+ * app's (hol_app_end_word). */
 const char *hol_session_end_name(hol_session *s);
 long hol_session_frames(const hol_session *s);
 /* Attempts of a killed session finished by recovery at create; those it

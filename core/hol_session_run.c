@@ -413,18 +413,9 @@ const char *hol_session_end_name(hol_session *s)
 {
     static const char *const ends[] = {"playing", "done", "restart", "quit", "timeout"};
     const hol_app_view *v = hol_app_get_view(s->app);
-    if (v->hud.timed_out)
-        return "timeout";
-    if (s->level_end > 0 && s->level_end < 5)
+    if (!v->hud.timed_out && s->level_end > 0 && s->level_end < 5)
         return ends[s->level_end];
-    switch (v->state) {
-    case HOL_APP_IDLE: return "idle";
-    case HOL_APP_QUIT: return "quit";
-    case HOL_APP_SCREEN: /* instructions: before the level begins */
-        return v->hud.screen == HOL_APP_SCREEN_CLOSING ? "done" : "playing";
-    case HOL_APP_PLAYING: return "playing";
-    default: return "done"; /* the end screen, its question, its items */
-    }
+    return hol_app_end_word(v);
 }
 
 long hol_session_frames(const hol_session *s)

@@ -30,7 +30,7 @@
 
 #include "../core/hol_app.h"
 #include "hol_mesh.h"
-#include "hol_render.h"
+#include "hol_render_types.h"
 
 #define HOL_HUD_MAP_RADIUS HOL_APP_MINIMAP_RADIUS
 /* The caption over the flat grid's map (Q = 4): a plain top view. */

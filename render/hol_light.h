@@ -33,7 +33,7 @@
  *   square of the ray-marchers' default, so the forest stays readable.
  * - A surface at height h with normal n lit by a lantern at height L gets
  *   F(d) (0.3 + 0.7 max(n_y, 0) max(L - h, 0) / d); the shader sums the
- *   tile's lights (render/hol_render.c). It gets them in the tile's own
+ *   tile's lights (render/hol_render_tiles.c). It gets them in the tile's own
  *   frame (the renderer applies the inverse of hol_light_tile's frame), so
  *   for the fragment's Klein point K, cosh x = (l_z - K.l_xy) /
  *   sqrt(1 - |K|^2), the first factor affine in the mesh (the vertex
@@ -103,7 +103,7 @@
 #include "../core/hol_err.h"
 #include "../core/hol_room.h"
 #include "../core/hol_world.h"
-#include "hol_render.h"
+#include "hol_render_types.h"
 
 #define HOL_LIGHT_PER_TILE 4
 #define HOL_LIGHT_RADIUS_M 3.0

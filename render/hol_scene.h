@@ -22,7 +22,7 @@
 #include "../core/hol_alloc.h"
 #include "../core/hol_tile.h"
 #include "hol_mesh.h"
-#include "hol_render.h"
+#include "hol_render_types.h"
 #include "hol_view.h"
 
 struct hol_world;

@@ -225,19 +225,19 @@ static int bench_lighting(hol_render *r)
                 hol_render_frame(r, &f, &st);
             }
         for (int k = 0; k < LFRAMES; k++) {
-            f.lighting = HOL_RENDER_DAY;
+            f.lighting = HOL_LIGHT_DAY;
             if (hol_render_frame(r, &f, &st))
                 return 1;
             td[k] = st.cpu_ms;
-            f.lighting = HOL_RENDER_NIGHT;
+            f.lighting = HOL_LIGHT_NIGHT;
             if (hol_render_frame(r, &f, &st))
                 return 1;
             tn[k] = st.cpu_ms;
-            f.lighting = HOL_RENDER_DUSK;
+            f.lighting = HOL_LIGHT_DUSK;
             if (hol_render_frame(r, &f, &st))
                 return 1;
             tk[k] = st.cpu_ms;
-            f.lighting = HOL_RENDER_NIGHT;
+            f.lighting = HOL_LIGHT_NIGHT;
             f.fireflies = 1;
             if (hol_render_frame(r, &f, &st))
                 return 1;

@@ -50,6 +50,15 @@ mkdir "$T/l2"
 run "replay" 0 "$H" replay "$T/r.rec" --log "$T/l2"
 logs_diff "$T/l" "$T/l2" >/dev/null && ok || bad "the replay's logs differ"
 
+# a play whose input ends with a questionnaire's item on screen: its end
+# line says done (it printed bytes past the end of the state names' table:
+# issue 39; tests/hostile/replay-ends-on-question replays one)
+{ f 1 0; f 0 0.5; f 0 1 1; f 0 1.5; } >"$T/in-ask"
+run "play ends on a question" 0 "$H" play --study "$T/s.study" --participant P4 \
+    --input "$T/in-ask" --size 64x48
+grep -qx 'level a done steps 1 optimum 1 tile N cell 1,0' "$T/out" && ok ||
+    bad "play ends on a question: $(cat "$T/out")"
+
 mkdir "$T/l3" && cp "$T/l/answers.csv" "$T/l3/"
 run "folder with answers" 2 "$H" play "$T/a.lvl" --frames 1 --size 64x48 --log "$T/l3" &&
   one_line "folder with answers" "l3"

@@ -31,7 +31,11 @@ fail() { echo "quest-link-check: FAIL: $*" >&2; exit 1; }
 list=$(sh "$apk_sh" --link-list) || fail "build_apk.sh --link-list"
 srcs=$(echo "$list" | sed -n 's/^src //p')
 libs=$(echo "$list" | sed -n 's/^libs //p')
+gen=$(echo "$list" | sed -n 's/^gen //p')
 [ -n "$srcs" ] && [ -n "$libs" ] || fail "build_apk.sh --link-list printed no sources or libraries"
+# the shaders as C (render/hol_program.c includes hol_glsl.h), as build_apk.sh makes them
+[ -n "$gen" ] || fail "build_apk.sh --link-list names no generator of the shaders' C"
+sh "$root/$gen" "$tmp/gen/hol_glsl.h" || fail "$gen"
 
 # Debian's builds of the named libraries (liblog lives in its own folder)
 ma=$($CC -print-multiarch)
@@ -50,7 +54,7 @@ done
 
 flags="-std=c11 -O2 -g -fPIC -D_DEFAULT_SOURCE -DHOL_GLES=1 -D__ANDROID__
   -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes -Wvla
-  -isystem /usr/include/android -isystem /usr/include/android/nativehelper -I$root"
+  -isystem /usr/include/android -isystem /usr/include/android/nativehelper -I$root -I$tmp/gen"
 n=0
 objs=""
 # objects in QUEST_LINK_OBJS when given (kept and reused: a source whose

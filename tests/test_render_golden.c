@@ -90,24 +90,24 @@ static const golden_view views[] = {
     /* dusk and night with lanterns: on the user's tile, and on the two
      * tiles of the middle cell (reached west-then-south and south-then-
      * west: two tiles in {4,5} and {4,6}, holonomy), one more south */
-    {"q5_dusk", "NE", {2.4, 1.6, 0.6}, 135, -25, 90, 0, 5, 0, 0, 0, HOL_RENDER_DUSK,
+    {"q5_dusk", "NE", {2.4, 1.6, 0.6}, 135, -25, 90, 0, 5, 0, 0, 0, HOL_LIGHT_DUSK,
      {"-", "WS", "SW", "SSW"}},
-    {"q5_night", "NE", {2.4, 1.6, 0.6}, 135, -25, 90, 0, 5, 0, 0, 0, HOL_RENDER_NIGHT,
+    {"q5_night", "NE", {2.4, 1.6, 0.6}, 135, -25, 90, 0, 5, 0, 0, 0, HOL_LIGHT_NIGHT,
      {"-", "WS", "SW", "SSW"}},
-    {"q6_dusk", "NE", {2.4, 1.6, 0.6}, 135, -25, 90, 0, 6, 0, 0, 0, HOL_RENDER_DUSK,
+    {"q6_dusk", "NE", {2.4, 1.6, 0.6}, 135, -25, 90, 0, 6, 0, 0, 0, HOL_LIGHT_DUSK,
      {"-", "WS", "SW", "SSW"}},
-    {"q6_night", "NE", {2.4, 1.6, 0.6}, 135, -25, 90, 0, 6, 0, 0, 0, HOL_RENDER_NIGHT,
+    {"q6_night", "NE", {2.4, 1.6, 0.6}, 135, -25, 90, 0, 6, 0, 0, 0, HOL_LIGHT_NIGHT,
      {"-", "WS", "SW", "SSW"}},
     /* the same with fireflies, the middle cell's lanterns spots (straight
      * down; towards their tiles' heading turned a quarter) and the far one
      * a spot towards its heading */
-    {"q5_dusk_fx", "NE", {2.4, 1.6, 0.6}, 135, -25, 90, 0, 5, 0, 0, 0, HOL_RENDER_DUSK,
+    {"q5_dusk_fx", "NE", {2.4, 1.6, 0.6}, 135, -25, 90, 0, 5, 0, 0, 0, HOL_LIGHT_DUSK,
      {"-", "WS", "SW", "SSW"}, 1, {0, 5, 2, 1}},
-    {"q5_night_fx", "NE", {2.4, 1.6, 0.6}, 135, -25, 90, 0, 5, 0, 0, 0, HOL_RENDER_NIGHT,
+    {"q5_night_fx", "NE", {2.4, 1.6, 0.6}, 135, -25, 90, 0, 5, 0, 0, 0, HOL_LIGHT_NIGHT,
      {"-", "WS", "SW", "SSW"}, 1, {0, 5, 2, 1}},
-    {"q6_dusk_fx", "NE", {2.4, 1.6, 0.6}, 135, -25, 90, 0, 6, 0, 0, 0, HOL_RENDER_DUSK,
+    {"q6_dusk_fx", "NE", {2.4, 1.6, 0.6}, 135, -25, 90, 0, 6, 0, 0, 0, HOL_LIGHT_DUSK,
      {"-", "WS", "SW", "SSW"}, 1, {0, 5, 2, 1}},
-    {"q6_night_fx", "NE", {2.4, 1.6, 0.6}, 135, -25, 90, 0, 6, 0, 0, 0, HOL_RENDER_NIGHT,
+    {"q6_night_fx", "NE", {2.4, 1.6, 0.6}, 135, -25, 90, 0, 6, 0, 0, 0, HOL_LIGHT_NIGHT,
      {"-", "WS", "SW", "SSW"}, 1, {0, 5, 2, 1}},
 };
 

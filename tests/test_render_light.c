@@ -418,7 +418,7 @@ static void make_scene(const light_case *c, scene *s)
     s->f.cam.fovy_deg = 90;
     s->f.cam.width = W;
     s->f.cam.height = H;
-    s->f.lighting = c->dusk ? HOL_RENDER_DUSK : HOL_RENDER_NIGHT;
+    s->f.lighting = c->dusk ? HOL_LIGHT_DUSK : HOL_LIGHT_NIGHT;
     for (int i = 0; i < 4 && c->lanterns[i]; i++) {
         hol_room u = s->f.user;
         model_mat f = model_identity();
@@ -911,7 +911,7 @@ static void test_day_unchanged_without_lighting(void **state)
     static uint8_t a[W * H * 4], b[W * H * 4];
     scene s;
     make_scene(&cases[0], &s);
-    s.f.lighting = HOL_RENDER_DAY;
+    s.f.lighting = HOL_LIGHT_DAY;
     render(&s, 0, a);
     s.f.nlanterns = 0;
     render(&s, 0, b);
@@ -936,7 +936,7 @@ static void test_app_frame_carries_lights(void **state)
     assert_int_equal(hol_tile_parse("Wr", -1, &v.lanterns[1]), HOL_OK);
     hol_frame_desc f;
     hol_app_frame_desc(&v, -1, W, H, 90, &f);
-    assert_int_equal(f.lighting, HOL_RENDER_DUSK);
+    assert_int_equal(f.lighting, HOL_LIGHT_DUSK);
     assert_int_equal(f.nlanterns, 2);
     assert_true(hol_tile_eq(f.lanterns[1], v.lanterns[1]));
     assert_int_equal(f.lantern_spot[0], 0);

@@ -540,7 +540,7 @@ static void test_stencil_codes_are_prefix_codes(void **state)
 /* Larger rooms: branches are told apart by wedges. Over many eye
  * positions in 5 x 5 rooms ({4,5} and {4,8}): the branches fit
  * HOL_VIEW_MAX_BRANCHES with room to spare, the distinct tiles fit the
- * renderer's 96 resident meshes (hol_render.c), and a branch's wedge holds exactly the
+ * renderer's 96 resident meshes (hol_render_tiles.c), and a branch's wedge holds exactly the
  * leaves its steps are a prefix of (each leaf's middle direction). */
 static void test_wedges_in_large_rooms(void **state)
 {

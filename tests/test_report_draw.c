@@ -1,5 +1,5 @@
 /* test_report_draw.c - the report's per-attempt pictures
- * (platform/cli/report_draw.h) and their PNG writer (hol_png_encode_indexed):
+ * (platform/cli/report/report_draw.h) and their PNG writer (hol_png_encode_indexed):
  * - the view's map against an independent model: the Poincare disk's Mobius
  *   maps z -> e^{ia} (z - t) / (1 - conj(t) z) in complex numbers, and
  *   hyperbolic distances 2 atanh |(z - w) / (1 - conj(w) z)| kept;
@@ -30,7 +30,7 @@
 #include "../core/hol_hyper.h"
 #include "../core/hol_room.h"
 #include "../core/hol_tile.h"
-#include "../platform/cli/report_draw.h"
+#include "../platform/cli/report/report_draw.h"
 #include "../render/hol_png.h"
 
 int cli_caught_signal(void); /* report_draw's one use of the CLI: no signal here */

@@ -36,6 +36,9 @@ root=$(cd "$here/../.." && pwd)
 # AConfiguration, ANativeActivity_finish).
 APK_SRC="core/*.c render/*.c platform/shell/*.c platform/openxr/*.c platform/file/hol_sink_posix.c
   platform/audio/hol_audio.c platform/android/quest_shell.c"
+# render/hol_program.c includes hol_glsl.h, the shaders as C strings that
+# this script makes (render/shaders/glsl_c.sh) in a folder it adds to -I
+APK_GEN="render/shaders/glsl_c.sh"
 # with the OpenXR loader; zlib: render/hol_png.c; openal: OpenAL Soft
 # (platform/audio/hol_audio.c links it on Android; built below, packed)
 APK_LIBS="-lopenal -llog -lEGL -lz -lm"
@@ -69,6 +72,7 @@ case "${1:-}" in
     # for tests/quest_link_check.sh: the sources (relative to the top of the
     # tree) and the libraries, the OpenXR loader first
     (cd "$root" && echo "src" $APK_SRC)
+    echo "gen $APK_GEN"
     echo "libs -lopenxr_loader $APK_LIBS"
     exit 0 ;;
 --openal)
@@ -155,13 +159,14 @@ cmake --build "$oal/build" --target OpenAL -j 2 >"$oal/build.log"
 # shell (all compiled and linked for this machine by `make
 # quest-link-check`) and the NativeActivity entry with the NDK's glue.
 glue="$NDK/sources/android/native_app_glue"
+sh "$root/$APK_GEN" "$stage/gen/hol_glsl.h"
 srcs=$(cd "$root" && ls $APK_SRC $NDK_SRC | sed "s|^|$root/|")
 # -ffp-contract=off: no fused multiply-add where the desktop has none, so
 # the core's results (and a recording's replay) are the same bits as on the
 # desktop and the web (README: "The same results on every platform").
 # shellcheck disable=SC2086
 "$cc" -std=c11 -O2 -g -ffp-contract=off -fPIC -shared -D_DEFAULT_SOURCE -DHOL_GLES=1 \
-    -I"$OPENXR_INCLUDE" -I"$root" -I"$glue" -I"$oal/src/include" -L"$oal/build" \
+    -I"$OPENXR_INCLUDE" -I"$root" -I"$stage/gen" -I"$glue" -I"$oal/src/include" -L"$oal/build" \
     -Wl,--no-undefined -Wl,-z,max-page-size=16384 -u ANativeActivity_onCreate \
     -o "$stage/apk/lib/arm64-v8a/libholonomy.so" $srcs "$glue"/android_native_app_glue.c \
     "$OPENXR_LOADER" $NDK_LIBS $APK_LIBS

@@ -79,6 +79,11 @@ const char *cli_escape(const char *s, char *buf, size_t cap);
  * lineno <= 0) to stderr. */
 void cli_error(const char *cmd, long lineno, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
+/* The same, for an error on a command's way out (the session's end, the
+ * environment row after the session), which may be the failure already
+ * said once more (the disk still full): printed only when no cli_error or
+ * cli_error_end line came before in this run. One line per failure. */
+void cli_error_end(const char *cmd, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 
 /* Split s (length len) at runs of spaces and tabs; up to max fields.
  * Returns the number of fields found (max + 1 means "more than max"). */

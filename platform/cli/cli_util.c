@@ -23,13 +23,12 @@ const char *cli_escape(const char *s, char *buf, size_t cap)
     return buf;
 }
 
-void cli_error(const char *cmd, long lineno, const char *fmt, ...)
+static int cli__said; /* error lines said in this run (cli_error_end) */
+
+static void cli__verror(const char *cmd, long lineno, const char *fmt, va_list ap)
 {
     char msg[512];
-    va_list ap;
-    va_start(ap, fmt);
     vsnprintf(msg, sizeof msg, fmt, ap);
-    va_end(ap);
     /* one line, whatever the message holds: control bytes (from option
      * values, file names, input) are shown escaped, never sent raw */
     char safe[4 * sizeof msg];
@@ -39,6 +38,25 @@ void cli_error(const char *cmd, long lineno, const char *fmt, ...)
         fprintf(stderr, "holonomy%s%s: line %ld: %s\n", sep, cmd, lineno, safe);
     else
         fprintf(stderr, "holonomy%s%s: %s\n", sep, cmd, safe);
+    cli__said = 1;
+}
+
+void cli_error(const char *cmd, long lineno, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    cli__verror(cmd, lineno, fmt, ap);
+    va_end(ap);
+}
+
+void cli_error_end(const char *cmd, const char *fmt, ...)
+{
+    if (cli__said)
+        return;
+    va_list ap;
+    va_start(ap, fmt);
+    cli__verror(cmd, 0, fmt, ap);
+    va_end(ap);
 }
 
 int cli_split(char *s, size_t len, char **fields, size_t *lens, int max)

@@ -1,6 +1,7 @@
 /* cmd_props.c - `holonomy props --out FILE.svg`: a printable plan of the
  * room that shows where real hedges and trees stand (core/hol_props.h;
  * docs/headset.md, "Props"). */
+#include <errno.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -209,12 +210,14 @@ int cli_cmd_props(int argc, char **argv)
     hol_file_atomic w;
     char esc[256];
     if (hol_file_atomic_open(&w, a.out)) {
-        cli_error(cmd, 0, "cannot write '%s'", cli_escape(a.out, esc, sizeof esc));
+        cli_error(cmd, 0, "cannot write '%s': %s", cli_escape(a.out, esc, sizeof esc),
+                  strerror(errno));
         return CLI_EXIT_FAIL;
     }
     if (props_write_svg(w.f, &plan, q, name, &d) || hol_file_atomic_commit(&w)) {
         hol_file_atomic_abort(&w);
-        cli_error(cmd, 0, "cannot write '%s'", cli_escape(a.out, esc, sizeof esc));
+        cli_error(cmd, 0, "cannot write '%s': %s", cli_escape(a.out, esc, sizeof esc),
+                  strerror(errno));
         return CLI_EXIT_FAIL;
     }
     return 0;

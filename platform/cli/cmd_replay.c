@@ -314,9 +314,11 @@ static int replay_write_wav(replay_ctx *c)
     for (long i = 0; i < 2 * c->nframes; i++)
         replay_le(f + 44 + 2 * i, (uint16_t)c->pcm[i], 2);
     hol_err e = hol_file_write_atomic(c->wav, f, 44 + data);
+    int en = errno; /* the cause in errno's own words, not "input/output error" */
     free(f);
     if (e) {
-        cli_error(c->cmd, 0, "cannot write '%.200s': %s", c->wav, hol_err_str(e));
+        cli_error(c->cmd, 0, "cannot write '%.200s': %s", c->wav,
+                  e == HOL_EIO ? strerror(en) : hol_err_str(e));
         return CLI_EXIT_FAIL;
     }
     return 0;
@@ -333,8 +335,13 @@ static int replay_png(replay_ctx *c, long frame)
     snprintf(path, sizeof path, "%s/frame-%06ld.png", c->out_dir, frame);
     if (!e)
         hol_render_read_rgba(c->r, c->w, c->h, c->rgba);
-    if (e || hol_png_write_file(path, c->rgba, c->w, c->h, 0)) {
+    if (e) {
         cli_error(c->cmd, 0, "cannot render frame %ld to '%.200s'", frame, path);
+        return CLI_EXIT_FAIL;
+    }
+    if (hol_png_write_file(path, c->rgba, c->w, c->h, 0)) {
+        cli_error(c->cmd, 0, "cannot write frame %ld to '%.200s': %s", frame, path,
+                  strerror(errno));
         return CLI_EXIT_FAIL;
     }
     return 0;

@@ -1,4 +1,5 @@
 /* main.c - the `holonomy` tool: one binary, subcommands (SPEC section 4). */
+#include <signal.h>
 #include <string.h>
 #ifdef __GLIBC__
 #include <malloc.h>
@@ -64,6 +65,11 @@ int main(int argc, char **argv)
     mallopt(M_MMAP_THRESHOLD, 4 << 20);
     mallopt(M_TRIM_THRESHOLD, 32 << 20);
 #endif
+    /* A file size limit (ulimit -f) reached: write(2) fails with EFBIG and
+     * the command takes its usual failure path (one line, exit 1, its
+     * temporary files removed) instead of dying by SIGXFSZ with its
+     * temporaries left behind (docs/cli.md, Exit status). */
+    signal(SIGXFSZ, SIG_IGN);
     if (argc < 2) {
         cli_error("", 0, "no command given; see 'holonomy --help'");
         return CLI_EXIT_USAGE;

@@ -150,7 +150,7 @@ static int play_env_append(const char *cmd, const char *dir, const char *row)
     if (fd >= 0)
         close(fd);
     if (!ok) {
-        cli_error(cmd, 0, "cannot write '%.200s': %s", name, strerror(e));
+        cli_error_end(cmd, "cannot write '%.200s': %s", name, strerror(e));
         return 1;
     }
     return 0;

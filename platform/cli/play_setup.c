@@ -17,6 +17,7 @@
 #include "../../core/hol_campaign.h"
 #include "../../core/hol_input_io.h"
 #include "../../core/hol_text.h"
+#include "../file/hol_file.h"
 #include "cli.h"
 
 /* ---- levels ---------------------------------------------------------------- */
@@ -253,6 +254,33 @@ static const char *play_not_regular(DIR *d, const char *name)
                                   : "a socket or device";
 }
 
+/* One writer per log folder (hol_sink_posix_lock): taken before the
+ * folder is read; a second session is refused naming the holder; a lock a
+ * killed writer left is taken over, said in one line; then the temporary
+ * files of killed writers are removed (hol_file_clean_dir). */
+static int play_log_lock(const char *cmd, const char *dir, play_out *po)
+{
+    char holder[256];
+    int took = 0;
+    hol_err e = hol_sink_posix_lock(&po->log, holder, sizeof holder, &took);
+    if (e == HOL_EARG) {
+        cli_error(cmd, 0, "--log '%.200s' is in use by another session (%.200s): one session "
+                  "writes a log folder at a time; wait for it to end or choose another folder",
+                  dir, holder[0] ? holder : "its holder is starting");
+        return CLI_EXIT_USAGE;
+    }
+    if (e) {
+        cli_error(cmd, 0, "--log '%.200s': cannot lock it (%s): %s", dir, HOL_SINK_POSIX_LOCK,
+                  strerror(errno));
+        return CLI_EXIT_FAIL;
+    }
+    if (took)
+        fprintf(stderr, "holonomy %s: --log '%.200s': took over the lock of a session that "
+                        "no longer runs (%.200s)\n", cmd, dir, holder);
+    (void)hol_file_clean_dir(dir);
+    return 0;
+}
+
 /* --log DIR: made when missing (its parent exists; removed again by
  * play_out_close when no session opened on it); holding logs, refused
  * unless append; with append each log file in it must be a regular file. */
@@ -268,6 +296,9 @@ static int play_log_dir(const char *cmd, const char *dir, int append, play_out *
     po->has_log = 1;
     if (missing && strlen(dir) < sizeof po->made_dir)
         snprintf(po->made_dir, sizeof po->made_dir, "%s", dir);
+    int locked = play_log_lock(cmd, dir, po);
+    if (locked)
+        return locked;
     DIR *d = opendir(dir);
     struct dirent *e;
     const char *what = NULL;
@@ -395,8 +426,8 @@ int play_session_end(const char *cmd, hol_session *s, int abort)
     hol_err e = abort == PLAY_END_KILLED ? hol_session_end_killed(s)
                 : abort                    ? hol_session_abort(s)
                                            : hol_session_finish(s);
-    if (e)
-        cli_error(cmd, 0, "%s", hol_session_message(s));
+    if (e) /* the step's failure is not said twice */
+        cli_error_end(cmd, "%s", hol_session_message(s));
     hol_session_destroy(s);
     return e ? CLI_EXIT_FAIL : 0;
 }

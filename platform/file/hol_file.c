@@ -18,12 +18,50 @@
  * can tell its own leftovers (the writer is gone) from anything else. */
 #define HOL__TMP_TAG ".holonomy-tmp."
 
-/* Remove leftovers of interrupted saves of path: temporary files of this
- * target whose writing process no longer runs. Best effort. */
+/* A leftover's name: ".BASE" HOL__TMP_TAG "PID.XXXXXX"; its PID, 0 when
+ * the name is no temporary file's. */
+static long hol__tmp_pid(const char *name)
+{
+    const char *tag = name[0] == '.' ? strstr(name + 1, HOL__TMP_TAG) : NULL;
+    if (!tag || tag == name + 1)
+        return 0;
+    const char *last;
+    while ((last = strstr(tag + 1, HOL__TMP_TAG)) != NULL) /* BASE may hold the tag */
+        tag = last;
+    char *end = NULL;
+    long pid = strtol(tag + strlen(HOL__TMP_TAG), &end, 10);
+    return pid > 0 && end && *end == '.' && strlen(end) == 7 ? pid : 0;
+}
+
+int hol_file_clean_dir(const char *dir)
+{
+    DIR *d = opendir(dir);
+    if (!d)
+        return 0;
+    int e0 = errno, n = 0;
+    struct dirent *e;
+    while ((e = readdir(d)) != NULL) {
+        long pid = hol__tmp_pid(e->d_name);
+        if (!pid || kill((pid_t)pid, 0) == 0 || errno != ESRCH)
+            continue; /* no temporary file, or its writer may still be at work */
+        char full[4608];
+        if (snprintf(full, sizeof full, "%s/%s", dir, e->d_name) < (int)sizeof full &&
+            unlink(full) == 0)
+            n++;
+    }
+    closedir(d);
+    if (n)
+        fprintf(stderr, "holonomy: removed %d temporary file(s) left in '%.200s' by writers "
+                        "that no longer run\n", n, dir);
+    errno = e0;
+    return n;
+}
+
+/* Remove the leftovers of interrupted saves in path's folder (see
+ * hol_file_clean_dir). Best effort. */
 static void hol__clean_leftovers(const char *path)
 {
     const char *slash = strrchr(path, '/');
-    const char *base = slash ? slash + 1 : path;
     char dir[4096];
     size_t dl = slash ? (size_t)(slash - path) : 0;
     if (dl >= sizeof dir)
@@ -36,28 +74,7 @@ static void hol__clean_leftovers(const char *path)
     } else {
         strcpy(dir, ".");
     }
-    char prefix[512];
-    int pn = snprintf(prefix, sizeof prefix, ".%s" HOL__TMP_TAG, base);
-    if (pn < 0 || (size_t)pn >= sizeof prefix)
-        return;
-    DIR *d = opendir(dir);
-    if (!d)
-        return;
-    struct dirent *e;
-    while ((e = readdir(d)) != NULL) {
-        if (strncmp(e->d_name, prefix, (size_t)pn))
-            continue;
-        char *end = NULL;
-        long pid = strtol(e->d_name + pn, &end, 10);
-        if (pid <= 0 || !end || *end != '.' || strlen(end) != 7)
-            continue;
-        if (kill((pid_t)pid, 0) == 0 || errno != ESRCH)
-            continue; /* its writer may still be at work */
-        char full[4608];
-        if (snprintf(full, sizeof full, "%s/%s", dir, e->d_name) < (int)sizeof full)
-            (void)unlink(full);
-    }
-    closedir(d);
+    (void)hol_file_clean_dir(dir);
 }
 
 static const char *hol__kind(mode_t m)

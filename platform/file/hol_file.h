@@ -7,9 +7,14 @@
  *   writer's process id), is flushed, fsync'ed and closed, gets the usual
  *   0666 & ~umask mode, is renamed over PATH, and the folder is fsync'ed
  *   (best effort). On any failure the temporary file is removed and PATH is
- *   left as it was. A save killed mid-write leaves its temporary file; the
- *   next save of the same PATH removes every such file whose writer no
- *   longer runs (and nothing else).
+ *   left as it was. A save killed mid-write (kill -9) leaves its temporary
+ *   file; the next save into the same folder removes every such file there
+ *   whose writer no longer runs on this machine (and nothing else), and
+ *   says so in one line on stderr (hol_file_clean_dir).
+ * - hol_file_clean_dir(DIR) is that cleaning on its own (`play`, `replay`
+ *   and `xr` run it on their --log folder): it returns how many files it
+ *   removed and prints "holonomy: removed N temporary file(s) left in
+ *   'DIR' by writers that no longer run" when N > 0.
  * - Output targets (every save, recording, log file, PNG, id list):
  *   hol_file_check_out accepts an existing regular file (also through a
  *   symbolic link) or a name that does not exist yet in an existing folder
@@ -47,6 +52,7 @@
 hol_err hol_file_check_out(const char *path, char *msg, size_t cap);
 
 hol_err hol_file_write_atomic(const char *path, const void *data, size_t size);
+int hol_file_clean_dir(const char *dir);
 
 /* Streaming form: open, write to a->f, then commit (or abort). */
 typedef struct hol_file_atomic {

@@ -10,6 +10,7 @@
 #include <fcntl.h>
 #include <stdio.h>
 #include <string.h>
+#include <sys/file.h>
 #include <sys/random.h>
 #include <sys/stat.h>
 #include <time.h>
@@ -201,6 +202,7 @@ hol_err hol_sink_posix_init(hol_sink_posix *p, const char *dir)
         return HOL_EOPEN;
     }
     snprintf(p->dir, sizeof p->dir, "%s", dir);
+    p->lock_fd = -1;
     p->sink = (hol_sink){p, hol__open, hol__write, hol__flush, hol__close, hol__rename,
                          hol__remove, hol__read, hol__list, hol__whyfn};
     return HOL_OK;
@@ -213,6 +215,92 @@ void hol_sink_posix_fini(hol_sink_posix *p)
             close(p->fd[i]);
             p->fd[i] = -1;
         }
+    if (p->lock_fd >= 0) {
+        /* removed while still held: a writer that opened it meanwhile sees
+         * another file at the name and opens again */
+        char path[4096 + sizeof HOL_SINK_POSIX_LOCK];
+        if (!hol__path(p, HOL_SINK_POSIX_LOCK, path, sizeof path))
+            (void)unlink(path);
+        close(p->lock_fd);
+        p->lock_fd = -1;
+    }
+}
+
+/* The lock file's text, "pid PID on HOST", into holder (empty when none). */
+static void hol__lock_holder(int fd, char *holder, size_t cap)
+{
+    char buf[256];
+    ssize_t n = pread(fd, buf, sizeof buf - 1, 0);
+    n = n < 0 ? 0 : n;
+    while (n > 0 && (buf[n - 1] == '\n' || buf[n - 1] == ' '))
+        n--;
+    buf[n] = 0;
+    if (cap)
+        snprintf(holder, cap, "%s", buf);
+}
+
+/* Open and lock DIR/.holonomy-lock: 1 held, 0 held by another, -1 failed;
+ * the file locked is the one at the name (a holder that removed it as this
+ * opened it: open again). */
+static int hol__lock_take(const char *path, int *out_fd)
+{
+    for (int tries = 0; tries < 8; tries++) {
+        int fd = hol__open_regular(path, O_RDWR | O_CREAT | O_NOFOLLOW);
+        if (fd < 0)
+            return -1;
+        if (flock(fd, LOCK_EX | LOCK_NB)) {
+            int e = errno;
+            *out_fd = fd;
+            errno = e;
+            return e == EWOULDBLOCK ? 0 : -1;
+        }
+        struct stat a, b;
+        if (!fstat(fd, &a) && !stat(path, &b) && a.st_dev == b.st_dev && a.st_ino == b.st_ino) {
+            *out_fd = fd;
+            return 1;
+        }
+        close(fd);
+    }
+    errno = EAGAIN;
+    return -1;
+}
+
+hol_err hol_sink_posix_lock(hol_sink_posix *p, char *holder, size_t cap, int *out_took)
+{
+    char path[4096 + sizeof HOL_SINK_POSIX_LOCK];
+    *out_took = 0;
+    if (cap)
+        holder[0] = 0;
+    if (hol__path(p, HOL_SINK_POSIX_LOCK, path, sizeof path))
+        return HOL_EOPEN;
+    int fd = -1;
+    int r = hol__lock_take(path, &fd);
+    if (r <= 0) {
+        int e = errno;
+        if (fd >= 0) {
+            if (r == 0)
+                hol__lock_holder(fd, holder, cap);
+            close(fd);
+        }
+        errno = e;
+        return r == 0 ? HOL_EARG : HOL_EOPEN;
+    }
+    hol__lock_holder(fd, holder, cap);
+    *out_took = cap && holder[0];
+    char me[300], host[256];
+    if (gethostname(host, sizeof host))
+        snprintf(host, sizeof host, "?");
+    host[sizeof host - 1] = 0;
+    int n = snprintf(me, sizeof me, "pid %ld on %s\n", (long)getpid(), host);
+    if (pwrite(fd, me, (size_t)n, 0) != n || ftruncate(fd, n)) {
+        int e = errno;
+        close(fd);
+        (void)unlink(path);
+        errno = e;
+        return HOL_EOPEN;
+    }
+    p->lock_fd = fd;
+    return HOL_OK;
 }
 
 hol_err hol_sink_posix_make_dir(const char *dir)

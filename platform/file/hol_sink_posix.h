@@ -25,6 +25,17 @@
  *   this machine: the start from the clock, in UTC, the id
  *   YYYYMMDDTHHMMSSZ-XXXXXXXX (8 random hex digits: sessions started in
  *   the same second differ), the participant given (NULL: none).
+ * - hol_sink_posix_lock makes this sink the folder's one writer (`play`,
+ *   `replay` and `xr` with --log take it before they read or write the
+ *   folder): an flock(2) held on DIR/.holonomy-lock (HOL_SINK_POSIX_LOCK),
+ *   which holds "pid PID on HOST" of its holder. HOL_OK: held until fini,
+ *   which removes the file; *out_took is 1 when the file was there without
+ *   a holder (its writer was killed: the kernel dropped its flock; holder
+ *   then names that writer). HOL_EARG: another process holds it (holder
+ *   names it, "pid PID on HOST"; the caller refuses to start). HOL_EOPEN:
+ *   the file cannot be made or locked (errno says why). The file is hidden
+ *   and is no log: the log readers (recovery, --resume, report) pass over
+ *   it. A folder on a file system without locks is refused (HOL_EOPEN).
  * - hol_sink_posix_make_dir makes the folder DIR when it is missing and its
  *   parent exists (`--log DIR`): HOL_OK when DIR is a folder afterwards,
  *   HOL_EOPEN (errno says why) when it is something else or cannot be
@@ -42,10 +53,14 @@ typedef struct hol_sink_posix {
     int fd[HOL_SINK_MAX_OPEN];
     char why[128];
     int (*stop)(void);
+    int lock_fd; /* hol_sink_posix_lock's, -1 without */
 } hol_sink_posix;
+
+#define HOL_SINK_POSIX_LOCK ".holonomy-lock"
 
 hol_err hol_sink_posix_init(hol_sink_posix *p, const char *dir);
 void hol_sink_posix_fini(hol_sink_posix *p);
+hol_err hol_sink_posix_lock(hol_sink_posix *p, char *holder, size_t cap, int *out_took);
 hol_err hol_sink_posix_make_dir(const char *dir);
 void hol_sink_posix_meta(hol_rec_meta *m, const char *participant);
 

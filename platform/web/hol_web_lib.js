@@ -16,10 +16,13 @@
 // WebXR Layers API (the session granted the optional 'layers' feature and
 // XRWebGLBinding has createQuadLayer), an XRQuadLayer in front of the
 // projection layer (renderState.layers [projection, quad]: back to front),
-// drawn by the C side only when its content changes (a static layer; again
-// when the browser says needsRedraw); else, or with ?panel=scene, the
-// panel in each eye (the fallback; iwer has no layers). A console line
-// 'web: panel ...' says which.
+// drawn by the C side only when its content changes or the browser says
+// needsRedraw. The layer is not static (isStatic false): the Layers spec
+// lets a static layer be drawn only while needsRedraw is set, once after
+// its creation, so its text could never change. A draw that fails (its
+// getSubImage throws) is told once on the console and tried again the
+// next frame. Else, or with ?panel=scene, the panel in each eye (the
+// fallback). A console line 'web: panel ...' says which.
 
 var HolWebLib = {
   $HolXR: {
@@ -57,11 +60,12 @@ var HolWebLib = {
           var binding = new Binding(s, gl);
           var layer = binding.createQuadLayer({
             space: HolXR.space, viewPixelWidth: HolXR.quadW, viewPixelHeight: HolXR.quadH,
-            layout: 'mono', isStatic: true, width: 0.3, height: 0.2
+            layout: 'mono', isStatic: false, width: 0.3, height: 0.2
           });
           if ('blendTextureSourceAlpha' in layer) layer.blendTextureSourceAlpha = true;
           s.updateRenderState({ layers: [base, layer] }); // back to front
-          HolXR.quad = { binding: binding, layer: layer, fb: gl.createFramebuffer(), fbName: 0 };
+          HolXR.quad = { binding: binding, layer: layer, fb: gl.createFramebuffer(), fbName: 0,
+            retry: 0, failed: 0, shown: 0 };
         } catch (e) {
           m = { mode: 'scene', why: 'the quad layer failed (' + e.message + ')' };
           HolXR.quad = null;
@@ -74,18 +78,30 @@ var HolWebLib = {
       return m.mode;
     },
 
-    // After the step: the quad placed, and drawn when its content changed.
+    // After the step: the quad placed, and drawn when its content changed
+    // (or the browser lost its texture, or the last draw failed); no panel
+    // this frame (none, or the view faded out): its texture cleared once
+    // (transparent), and drawn anew when the panel is back.
     quadFrame: function (xrf) {
       var q = HolXR.quad;
-      var r = Module['_hol_web_xr_panel_place'](q.layer.needsRedraw ? 1 : 0);
-      if (!r) return;
-      var o = Module['_hol_web_xr_panel_buffer']() >> 2, f = HEAPF32;
-      q.layer.transform = new XRRigidTransform(
-        { x: f[o], y: f[o + 1], z: f[o + 2] }, { x: f[o + 3], y: f[o + 4], z: f[o + 5], w: f[o + 6] });
-      q.layer.width = f[o + 7];
-      q.layer.height = f[o + 8];
-      if (r !== 2) return;
-      var gl = GLctx, sub = q.binding.getSubImage(q.layer, xrf);
+      var r = Module['_hol_web_xr_panel_place'](q.layer.needsRedraw || q.retry ? 1 : 0);
+      if (!r && !q.shown) return;
+      if (r) {
+        var o = Module['_hol_web_xr_panel_buffer']() >> 2, f = HEAPF32;
+        q.layer.transform = new XRRigidTransform(
+          { x: f[o], y: f[o + 1], z: f[o + 2] }, { x: f[o + 3], y: f[o + 4], z: f[o + 5], w: f[o + 6] });
+        q.layer.width = f[o + 7];
+        q.layer.height = f[o + 8];
+      }
+      if (r === 1) return;
+      q.retry = 1; // until the draw is done
+      var gl = GLctx, sub;
+      try {
+        sub = q.binding.getSubImage(q.layer, xrf);
+      } catch (e) {
+        if (!q.failed++) console.log('web: the panel layer refused a draw (' + e.message + '): tried again');
+        return;
+      }
       if (!q.fbName) {
         q.fbName = GL.getNewId(GL.framebuffers);
         q.fb.name = q.fbName;
@@ -94,7 +110,15 @@ var HolWebLib = {
       gl.bindFramebuffer(gl.FRAMEBUFFER, q.fb);
       gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D,
         sub.colorTexture, 0);
-      Module['_hol_web_xr_panel_draw'](q.fbName, sub.viewport.width, sub.viewport.height);
+      if (!r) {
+        gl.clearColor(0, 0, 0, 0);
+        gl.clear(gl.COLOR_BUFFER_BIT);
+        gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+        q.shown = 0; // q.retry stays: the panel drawn again when back
+        return;
+      }
+      q.retry = Module['_hol_web_xr_panel_draw'](q.fbName, sub.viewport.width, sub.viewport.height);
+      q.shown = 1;
     },
 
     scale: 1.0,       // XRWebGLLayer framebufferScaleFactor: the recommended size

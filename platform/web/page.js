@@ -26,8 +26,10 @@
   var $ = function (id) { return document.getElementById(id); };
   var status = function (s) { $('status').textContent = s; };
   // the page's state: playing (in VR or not), paused (and why), over
-  var playing = 'Playing', inVR = false, over = false;
-  var resumeStatus = function () { status(inVR ? 'In VR' : playing); };
+  // (vrFailed: the status says why Enter VR failed, until the game's next
+  // level or restart, when it says Playing again)
+  var playing = 'Playing', inVR = false, over = false, vrFailed = false;
+  var resumeStatus = function () { vrFailed = false; status(inVR ? 'In VR' : playing); };
 
   // ---- the VR button: Enter VR, Exit VR, or why VR is not offered ----
   function vrButton(text, enabled, why) {
@@ -131,8 +133,18 @@
     $('logsbtn').textContent = 'Logs (' + names.length + ')';
   }
   window.holonomyRefreshLogs = refreshLogs;
+  // the overlay opens below the bar, which wraps on a narrow window: it
+  // never covers a button
+  function placeLogs() {
+    var top = Math.ceil($('bar').getBoundingClientRect().bottom + 4);
+    $('logs').style.top = top + 'px';
+    $('logs').style.maxHeight = Math.max(80, window.innerHeight - top - 8) + 'px';
+  }
+  if (window.ResizeObserver) new ResizeObserver(placeLogs).observe($('bar'));
+  window.addEventListener('resize', placeLogs);
   $('logsbtn').addEventListener('click', function () {
     refreshLogs();
+    placeLogs();
     $('logs').hidden = !$('logs').hidden;
   });
   $('clear').addEventListener('click', function () {
@@ -201,6 +213,7 @@
         vrAvailability();
         $('again').hidden = false;
         refreshLogs();
+        placeLogs();
         $('logs').hidden = false;
       } else if (kind === 'failed') {
         over = true;
@@ -209,6 +222,7 @@
         console.error('holonomy: ' + text);
       } else if (kind === 'saved') {
         refreshLogs();
+        if (vrFailed && !over) resumeStatus(); // a level ended: a restart or the next
       } else if (kind === 'warning') {
         status('Warning: ' + text);
         console.warn('holonomy: ' + text);
@@ -231,7 +245,10 @@
   });
   $('vr').addEventListener('click', function () {
     if (inVR) { Module.holXR.leave(); return; }
-    Module.holXR.enter().catch(function (e) { status('VR failed: ' + e.message); });
+    Module.holXR.enter().catch(function (e) {
+      status('VR failed: ' + e.message);
+      vrFailed = true;
+    });
   });
   // after the session: the same page afresh (its level, its parameters)
   $('again').addEventListener('click', function () { location.reload(); });

@@ -54,11 +54,18 @@ export function launch(chromium, dir, w, h) {
 }
 
 const iwerSource = fs.readFileSync(path.join(here, 'node_modules/iwer/build/iwer.min.js'), 'utf8');
+// Meta's WebXR Layers polyfill (npm's webxr-layers-polyfill: XRWebGLBinding
+// with createQuadLayer and getSubImage, the layers drawn into the session's
+// WebGL layer), as a Quest Browser's layers stand-in on iwer
+const layersSource = fs.readFileSync(path.join(here,
+  'node_modules/webxr-layers-polyfill/build/webxr-layers-polyfill.js'), 'utf8');
 
 // A page in its own browser context (its own IndexedDB), loaded and
-// playing. Collects the console, page errors and failed requests.
+// playing. Collects the console, page errors and failed requests. layers
+// (with iwer): the Quest 3 grants the 'layers' feature, as the Quest
+// Browser does, and the layers polyfill gives the page its XRWebGLBinding.
 export async function openPage(browser, url, { iwer = false, gamepad = false, touch = false,
-  fail = false, bounds = null, syncCount = false } = {}) {
+  fail = false, bounds = null, syncCount = false, layers = false } = {}) {
   const ctx = await browser.createBrowserContext();
   const page = await ctx.newPage();
   if (touch) {
@@ -75,10 +82,17 @@ export async function openPage(browser, url, { iwer = false, gamepad = false, to
   page.on('pageerror', (e) => errors.push('page: ' + e.message));
   page.on('requestfailed', (r) => errors.push('request: ' + r.url() + ' ' + r.failure().errorText));
   page.on('response', (r) => { if (r.status() >= 400) errors.push(`response: ${r.status()} ${r.url()}`); });
-  if (iwer)
+  if (iwer && !layers)
     await page.evaluateOnNewDocument(iwerSource + `;
       window.xrDevice = new IWER.XRDevice(IWER.metaQuest3, { stereoEnabled: true });
       xrDevice.installRuntime({ forceInstall: true });`);
+  if (iwer && layers)
+    await page.evaluateOnNewDocument(iwerSource + `;
+      window.xrDevice = new IWER.XRDevice(Object.assign({}, IWER.metaQuest3,
+        { supportedFeatures: IWER.metaQuest3.supportedFeatures.concat(['layers']) }), { stereoEnabled: true });
+      xrDevice.installRuntime({ forceInstall: true });
+      ` + layersSource + `;
+      new WebXRLayersPolyfill();`);
   // iwer 2.5 gives bounded-floor no boundsGeometry (its own TO-DO): a shim
   // with the polygon (x, z pairs, metres) the test names
   if (iwer && bounds)

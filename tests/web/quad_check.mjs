@@ -3,9 +3,9 @@
 // without a browser: the fallback (the panel in the scene) where the
 // binding lacks createQuadLayer (iwer 2.5.0, most browsers today) or the
 // session was not granted 'layers'; and, on a stub binding that has it, the
-// quad layer made as asked (its space, texture size, a static mono layer)
+// quad layer made as asked (its space, texture size, a mono layer that is not static)
 // and put after the projection layer in renderState.layers (back to
-// front). The quad path on a real browser and headset is NOT tested here.
+// front). The quad path in a browser: make web-test (iwer with the layers polyfill).
 // Run: node tests/web/quad_check.mjs (exit 0: every check passed).
 import fs from 'node:fs';
 import path from 'node:path';
@@ -74,9 +74,9 @@ s = session(['local-floor', 'layers']);
 const mode = HolXR.quadSetup(s, gl, base, WithQuad);
 const q = made[0];
 check('createQuadLayer offered and layers granted: the quad layer', mode === 'quad' && made.length === 1);
-check('the quad: in the session\'s reference space, 824x372 texels (the widest panel box), mono, static',
+check('the quad: in the session\'s reference space, 824x372 texels (the widest panel box), mono, not static (redrawn on each change)',
   q && q.init.space === HolXR.space && q.init.viewPixelWidth === 824 &&
-  q.init.viewPixelHeight === 372 && q.init.layout === 'mono' && q.init.isStatic === true);
+  q.init.viewPixelHeight === 372 && q.init.layout === 'mono' && q.init.isStatic === false);
 const st = s.states.at(-1);
 check('renderState.layers [projection, quad]: the quad in front (back to front)',
   st && st.layers && st.layers.length === 2 && st.layers[0] === base && st.layers[1] === q &&

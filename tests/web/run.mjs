@@ -593,6 +593,57 @@ await check('the page in every state: why VR is unavailable (no headset; plain h
   await p.ctx.close();
 });
 
+await check('a failed Enter VR: the status says why while the pancake game plays on, and says Playing again at the game\'s restart (R)', async () => {
+  const p = await openPage('?mode=explore&seed=2', { iwer: true });
+  try {
+    await p.page.evaluate(() => {
+      navigator.xr.requestSession = () => Promise.reject(new Error('refused by the test'));
+    });
+    await p.page.waitForSelector('#vr:not([hidden])', { timeout: 10000 });
+    await p.page.click('#vr');
+    await p.until(async () => (await statusOf(p)) === 'VR failed: refused by the test', 'the failure told');
+    const f0 = await p.state(S.FRAMES);
+    await p.until(async () => (await p.state(S.FRAMES)) > f0 + 10, 'pancake frames after the failure');
+    assert((await statusOf(p)) === 'VR failed: refused by the test', 'status: ' + (await statusOf(p)));
+    await p.page.keyboard.press('KeyR');
+    await p.until(async () => (await statusOf(p)) === 'Playing', 'Playing after the restart (status: ' +
+      (await statusOf(p)) + ')', 10000);
+    assert(!p.errors.length, 'errors: ' + p.errors.join('; '));
+  } finally {
+    await p.ctx.close();
+  }
+});
+
+await check('at 320 px wide the Logs overlay (shown when the session is over) covers no button of the bar (Play again)', async () => {
+  const p = await openPage('?mode=explore&seed=2');
+  try {
+    await p.page.setViewport({ width: 320, height: 480 });
+    await p.until(async () => (await p.state(S.FRAMES)) > 5, 'frames');
+    await p.page.keyboard.press('KeyQ');
+    await p.until(async () => /^Session over/.test(await statusOf(p)), 'the session over');
+    await p.until(() => p.page.evaluate(() => !document.getElementById('logs').hidden), 'the logs shown');
+    await sleep(300); /* the bar's reflow */
+    const r = await p.page.evaluate(() => {
+      const box = (e) => { const b = e.getBoundingClientRect(); return [b.left, b.top, b.right, b.bottom]; };
+      const logs = box(document.getElementById('logs'));
+      const under = [];
+      for (const e of document.querySelectorAll('#bar button, #bar label, #bar a')) {
+        if (!e.offsetParent && getComputedStyle(e).position !== 'fixed') continue; /* hidden */
+        const b = box(e);
+        if (b[2] > logs[0] && b[0] < logs[2] && b[3] > logs[1] && b[1] < logs[3])
+          under.push((e.id || e.textContent.trim()) + ' ' + b.map(Math.round).join(','));
+      }
+      return { logs: logs.map(Math.round), under, again: !document.getElementById('again').hidden };
+    });
+    await p.page.screenshot({ path: path.join(OUT, 'page-320-logs.png') });
+    console.log('# ' + JSON.stringify(r));
+    assert(r.again && !r.under.length, 'under the Logs overlay ' + r.logs.join(',') + ': ' + r.under.join('; '));
+    assert(!p.errors.length, 'errors: ' + p.errors.join('; '));
+  } finally {
+    await p.ctx.close();
+  }
+});
+
 await check('hands without controllers (iwer\'s hand mode): two hand input sources; the panel names the menu\'s gesture; a left pinch opens the menu, a right pinch restarts there, a long pinch quits', async () => {
   const p = await openPage('?mode=explore&seed=2', { iwer: true });
   await p.page.evaluate(() => { xrDevice.primaryInputMode = 'hand'; });
@@ -678,6 +729,145 @@ await check('haptics on the web: a controller into the hedge gets one short puls
   assert(off.length === 0, 'pulses with haptics=0: ' + JSON.stringify(off));
 });
 
+// The world panel as a WebXR quad layer (issue 36): iwer's headset with the
+// 'layers' feature and Meta's layers polyfill (lib.mjs, layers), as the
+// Quest Browser offers them. Every draw of the panel (the C side's, when
+// its content changed) is read back from the layer's texture (the
+// polyfill's getSubImage colorTexture, through a framebuffer) and compared
+// with the same panel drawn into a texture of the test's own: equal, and
+// not the image before it. A static layer (isStatic: true) may be drawn
+// only while needsRedraw is set: there getSubImage throws at each change
+// after the first, and the panel froze.
+await check('the world panel as a WebXR quad layer (iwer with the layers polyfill): >= 20 content changes (steps, menu, end screen), each drawn into the layer\'s texture (read back: the panel\'s current image), 0 exceptions; transparent while the view is faded out (out of the room), the panel again back in', async () => {
+  // a level of 25 s: its end screen ("Time up") is the last change
+  fs.writeFileSync(path.join(testDir, 'quad.lvl'), 'mode explore\nseed 2\ntime-limit 25\n');
+  const p = await openPage('?level=/test/quad.lvl', { iwer: true, layers: true });
+  try {
+    await p.page.evaluate(() => {
+      const Q = window.__quad = { calls: 0, throws: [], draws: 0, same: 0, stale: 0, repeats: 0, last: null };
+      const B = XRWebGLBinding.prototype, get = B.getSubImage;
+      B.getSubImage = function (layer, frame, eye) {
+        Q.calls++;
+        try {
+          const sub = get.call(this, layer, frame, eye);
+          Q.tex = sub.colorTexture;
+          Q.w = sub.viewport.width;
+          Q.h = sub.viewport.height;
+          return sub;
+        } catch (e) {
+          Q.throws.push(e.message);
+          throw e;
+        }
+      };
+      // a texture's pixels through a framebuffer of the test's own
+      const gl = GLctx;
+      Q.read = (tex) => {
+        const prev = gl.getParameter(gl.FRAMEBUFFER_BINDING), fb = gl.createFramebuffer();
+        gl.bindFramebuffer(gl.FRAMEBUFFER, fb);
+        gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D, tex, 0);
+        const px = new Uint8Array(Q.w * Q.h * 4);
+        gl.readPixels(0, 0, Q.w, Q.h, gl.RGBA, gl.UNSIGNED_BYTE, px);
+        gl.bindFramebuffer(gl.FRAMEBUFFER, prev);
+        gl.deleteFramebuffer(fb);
+        return px;
+      };
+      // (emscripten's first call of an export replaces Module's function
+      // with the wasm's: the wrapper stays, the new function goes under it)
+      let inner = Module._hol_web_xr_panel_draw;
+      const draw = (fb, w, h) => inner(fb, w, h);
+      // the panel of the last step drawn into the test's own texture
+      Q.reference = () => {
+        if (!Q.ref) {
+          Q.ref = gl.createTexture();
+          gl.bindTexture(gl.TEXTURE_2D, Q.ref);
+          gl.texStorage2D(gl.TEXTURE_2D, 1, gl.RGBA8, Q.w, Q.h);
+          Q.refFb = gl.createFramebuffer();
+          Q.refName = GL.getNewId(GL.framebuffers);
+          Q.refFb.name = Q.refName;
+          GL.framebuffers[Q.refName] = Q.refFb;
+          gl.bindFramebuffer(gl.FRAMEBUFFER, Q.refFb);
+          gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D, Q.ref, 0);
+        }
+        draw(Q.refName, Q.w, Q.h);
+        return Q.read(Q.ref);
+      };
+      const eq = (a, b) => a && b && a.length === b.length && a.every((v, i) => v === b[i]);
+      // the layer's texture right after each of the page's draws
+      const wrapper = function (fb, w, h) {
+        const r = draw(fb, w, h);
+        Q.draws++;
+        const got = Q.read(Q.tex);
+        if (eq(got, Q.reference())) Q.same++;
+        else Q.stale++;
+        if (eq(got, Q.last)) Q.repeats++;
+        Q.last = got;
+        return r;
+      };
+      Object.defineProperty(Module, '_hol_web_xr_panel_draw', { configurable: true,
+        get: () => wrapper, set: (f) => { inner = f; } });
+      // the layer's texture now (between frames) against the panel now
+      Q.now = () => eq(Q.read(Q.tex), Q.reference());
+    });
+    await enterVR(p);
+    const frames = async (n) => {
+      const f0 = await p.state(S.XR_FRAMES);
+      await p.until(async () => (await p.state(S.XR_FRAMES)) >= f0 + n, n + ' XR frames', 120000);
+    };
+    const press = async (hand, id) => {
+      await p.page.evaluate((h, b) => xrDevice.controllers[h].updateButtonValue(b, 1), hand, id);
+      await frames(3);
+      await p.page.evaluate((h, b) => xrDevice.controllers[h].updateButtonValue(b, 0), hand, id);
+      await frames(3);
+    };
+    await frames(5);
+    const line = p.log.find((l) => l.startsWith('web: panel '));
+    assert(/^web: panel as a WebXR quad layer/.test(line || ''), 'panel line: ' + line);
+    // walks: 0.8 m north and back, each a room step
+    for (const z of [-0.8, 0, -0.8, 0]) {
+      const n = await p.state(S.STEPS);
+      await p.page.evaluate((zz) => xrDevice.position.set(0, 1.6, zz), z);
+      await p.until(async () => (await p.state(S.STEPS)) > n, 'a room step', 30000);
+      await frames(3);
+    }
+    // the menu opened and closed: two changes each
+    for (let i = 0; i < 12; i++) await press('left', 'y-button');
+    // the level's end screen
+    await p.until(async () => (await p.state(S.APP_STATE)) === 2, 'the end screen (time up)', 60000);
+    await frames(3);
+    const r = await p.page.evaluate(() => {
+      const Q = window.__quad;
+      return { calls: Q.calls, throws: Q.throws, draws: Q.draws, same: Q.same, stale: Q.stale,
+        repeats: Q.repeats, now: Q.now(), redraws: Module._hol_web_xr_panel_redraws() };
+    });
+    console.log('# ' + JSON.stringify(r));
+    if (p.errors.length) console.log('# errors: ' + p.errors.slice(0, 3).join('; '));
+    assert(!r.throws.length, `${r.throws.length} getSubImage exceptions: ${r.throws[0]}`);
+    assert(r.redraws >= 20, `${r.redraws} content changes`);
+    assert(r.draws === r.redraws && r.same === r.draws && !r.stale && !r.repeats,
+      `${r.redraws} changes, ${r.draws} draws: ${r.same} the panel's image, ${r.stale} not, ${r.repeats} the image before`);
+    assert(r.now, 'the layer\'s texture is not the panel\'s current image');
+    // out of the room (the view faded out: no panel this frame, as the eyes
+    // without the layer would show none) the quad is transparent, and back
+    // in, the panel again
+    await p.page.evaluate(() => xrDevice.position.set(2.6, 1.6, 0));
+    await frames(5);
+    const alpha = await p.page.evaluate(() => {
+      const px = window.__quad.read(window.__quad.tex);
+      let a = 0;
+      for (let i = 3; i < px.length; i += 4) a = Math.max(a, px[i]);
+      return a;
+    });
+    await p.page.evaluate(() => xrDevice.position.set(0, 1.6, 0));
+    await frames(5);
+    const back = await p.page.evaluate(() => window.__quad.now());
+    console.log(`# out of the room: the quad's largest alpha ${alpha}; back in, the panel's image: ${back}`);
+    assert(alpha === 0 && back, `out of the room: alpha ${alpha}; back in, the panel: ${back}`);
+    assert(!p.errors.length, 'errors: ' + p.errors.join('; '));
+  } finally {
+    await p.ctx.close();
+  }
+});
+
 // ---- WebXR on iwer's Quest 3 -------------------------------------------------
 // explore, no minimap: the eyes are the world alone (as `holonomy render` draws it)
 const XR_SEED = 11;
@@ -715,9 +905,10 @@ await check('Enter VR on a Quest 3 (iwer, stereo): visible and focused, >= 120 X
   await xrPage.screenshot({ path: path.join(OUT, 'xr-stereo.png') });
 });
 
-// The world panel (issue 25): iwer 2.5.0 has no WebXR layers, so the page
-// falls back to the panel in the scene and says why (the quad path:
-// tests/web/quad_check.mjs on stubs; no real browser here).
+// The world panel (issue 25): iwer 2.5.0's Quest 3 grants no 'layers' (and
+// without its polyfill its XRWebGLBinding has no createQuadLayer), so the
+// page falls back to the panel in the scene and says why (the quad path:
+// the polyfill's check below, and tests/web/quad_check.mjs on stubs).
 await check('the world panel on the Quest 3 (iwer has no XRQuadLayer): in the scene, said on the console', async () => {
   const line = xr.log.find((l) => l.startsWith('web: panel '));
   console.log('# ' + line);

@@ -33,7 +33,9 @@
  *   and last step numbers, and the marks and lines named. Colours are exact
  *   (no blending) so tests can count them.
  * - Tiles are of one tiling (the start's); others are HOL_EARG. size is
- *   64..2048. No allocation. After a signal (cli_caught_signal) a path
+ *   64..2048. No allocation, no globals: the walk's edges are counted in
+ *   p->edges (the caller's, kept between pictures) or, NULL, in a table on
+ *   report_draw's stack. After a signal (cli_caught_signal) a path
  *   stops within 1,024 tiles and report_draw gives HOL_EBUDGET (a walk of a
  *   million steps takes seconds to draw).
  * - report_step_labels places the step numbers (dark, in a white halo): the
@@ -58,8 +60,8 @@
 
 #include <stdint.h>
 
-#include "../../core/hol_err.h"
-#include "../../core/hol_room.h"
+#include "../../../core/hol_err.h"
+#include "../../../core/hol_room.h"
 
 #define REPORT_RGB_RAMP0 0x3c28b4u   /* the first step: indigo */
 #define REPORT_RGB_RAMP1 0xdc5014u   /* the last step: orange */
@@ -68,6 +70,21 @@
 #define REPORT_RAMP_LEVELS 24
 #define REPORT_ZOOM_MAX 12
 #define REPORT_EDGE_SLOTS 4096
+
+/* The edges of the walk being drawn (unordered pairs of tiles) and how
+ * often each was walked: report_draw's work space, kept by a caller that
+ * draws many pictures (a stamp empties it for each, not a clear of its
+ * 320 KB). Zero is ready. */
+typedef struct report_edge_slot {
+    uint64_t k[4];
+    uint32_t stamp, count;
+} report_edge_slot;
+
+typedef struct report_edges {
+    report_edge_slot tab[2 * REPORT_EDGE_SLOTS];
+    uint32_t stamp;
+    int used;
+} report_edges;
 
 typedef struct report_picture {
     hol_room start;           /* the level's beginning */
@@ -80,6 +97,7 @@ typedef struct report_picture {
     int chest_last;           /* 1: the last goal is the chest (keys level) */
     const uint8_t *background; /* NULL, or report_draw_background's of this q and zoom */
     const struct report_view *view; /* NULL, or report_view_fit's of this picture */
+    report_edges *edges;      /* NULL: report_draw's own (zeroed on its stack) */
 } report_picture;
 
 typedef struct report_view {

@@ -6,9 +6,9 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "../../core/hol_hyper.h"
-#include "../../render/hol_font.h"
-#include "cli.h"
+#include "../../../core/hol_hyper.h"
+#include "../../../render/hol_font.h"
+#include "../cli.h"
 
 #define RGB_WHITE 0xffffffu
 #define RGB_TEXT 0x202020u
@@ -40,22 +40,16 @@ static const uint32_t fixed_rgb[] = {RGB_WHITE, RGB_DISK, RGB_RIM, RGB_EDGE, REP
 #define NFIXED (int)(sizeof fixed_rgb / sizeof fixed_rgb[0])
 
 /* The ramp's colour at level l of REPORT_RAMP_LEVELS (0: the first step):
- * indigo to magenta to orange, computed once. */
+ * indigo to magenta to orange. */
 static uint32_t ramp_level(int l)
 {
-    static uint32_t tab[REPORT_RAMP_LEVELS];
-    static int made;
-    for (int k = 0; !made && k < REPORT_RAMP_LEVELS; k++) {
-        double t = k / (double)(REPORT_RAMP_LEVELS - 1) * 2;
-        uint32_t a = t <= 1 ? REPORT_RGB_RAMP0 : RGB_RAMP_MID;
-        uint32_t b = t <= 1 ? RGB_RAMP_MID : REPORT_RGB_RAMP1;
-        t = t <= 1 ? t : t - 1;
-        tab[k] = 0;
-        for (int s = 16; s >= 0; s -= 8)
-            tab[k] |= (uint32_t)lround(((a >> s) & 255) * (1 - t) + ((b >> s) & 255) * t) << s;
-    }
-    made = 1;
-    return tab[l];
+    double t = l / (double)(REPORT_RAMP_LEVELS - 1) * 2;
+    uint32_t a = t <= 1 ? REPORT_RGB_RAMP0 : RGB_RAMP_MID;
+    uint32_t b = t <= 1 ? RGB_RAMP_MID : REPORT_RGB_RAMP1, rgb = 0;
+    t = t <= 1 ? t : t - 1;
+    for (int s = 16; s >= 0; s -= 8)
+        rgb |= (uint32_t)lround(((a >> s) & 255) * (1 - t) + ((b >> s) & 255) * t) << s;
+    return rgb;
 }
 
 int report_palette(uint8_t plte[3 * 256])
@@ -511,23 +505,13 @@ static uint32_t ramp(long i, long n)
     return ramp_level(n > 1 ? (int)(i * (REPORT_RAMP_LEVELS - 1) / (n - 1)) : REPORT_RAMP_LEVELS - 1);
 }
 
-/* Edges walked (unordered pairs of tiles) and how often, for the current
- * picture (a stamp empties the table). */
-typedef struct edge_slot {
-    uint64_t k[4];
-    uint32_t stamp, count;
-} edge_slot;
-static edge_slot edge_tab[2 * REPORT_EDGE_SLOTS];
-static uint32_t edge_stamp;
-static int edge_used;
-
 static int tile_less(hol_tile a, hol_tile b)
 {
     return a.bits[1] != b.bits[1] ? a.bits[1] < b.bits[1] : a.bits[0] < b.bits[0];
 }
 
 /* Earlier passes of the edge a-b (0 when untracked), counting this one. */
-static int edge_pass(hol_tile a, hol_tile b)
+static int edge_pass(report_edges *tab, hol_tile a, hol_tile b)
 {
     if (tile_less(b, a)) {
         hol_tile t = a;
@@ -538,28 +522,29 @@ static int edge_pass(hol_tile a, hol_tile b)
     for (int i = 0; i < 4; i++)
         h = (h ^ k[i]) * 0x100000001b3u, h ^= h >> 29;
     for (uint32_t i = (uint32_t)h % (2 * REPORT_EDGE_SLOTS);; i = (i + 1) % (2 * REPORT_EDGE_SLOTS)) {
-        edge_slot *e = &edge_tab[i];
-        if (e->stamp == edge_stamp && !memcmp(e->k, k, sizeof k))
+        report_edge_slot *e = &tab->tab[i];
+        if (e->stamp == tab->stamp && !memcmp(e->k, k, sizeof k))
             return (int)e->count++;
-        if (e->stamp != edge_stamp) {
-            if (edge_used >= REPORT_EDGE_SLOTS)
+        if (e->stamp != tab->stamp) {
+            if (tab->used >= REPORT_EDGE_SLOTS)
                 return 0;
-            edge_used++;
+            tab->used++;
             memcpy(e->k, k, sizeof k);
-            e->stamp = edge_stamp;
+            e->stamp = tab->stamp;
             e->count = 1;
             return 0;
         }
     }
 }
 
-static void edges_reset(void)
+/* The table emptied for a new picture (a stamp marks this picture's slots). */
+static void edges_reset(report_edges *t)
 {
-    if (++edge_stamp == 0) { /* wrapped: every slot is old */
-        memset(edge_tab, 0, sizeof edge_tab);
-        edge_stamp = 1;
+    if (++t->stamp == 0) { /* wrapped: every slot is old */
+        memset(t->tab, 0, sizeof t->tab);
+        t->stamp = 1;
     }
-    edge_used = 0;
+    t->used = 0;
 }
 
 static double walked_width(int size)
@@ -584,18 +569,18 @@ static hol_err optimal_path(canvas *c, const report_picture *p)
 /* The walked path: each step in its ramp colour, an edge walked again
  * beside its earlier passes (at most 3 widths out, and a third of the
  * step's length on the screen). */
-static hol_err walked_path(canvas *c, const report_picture *p)
+static hol_err walked_path(canvas *c, const report_picture *p, report_edges *edges)
 {
     double a[3], b[3], w = walked_width(c->size);
     hol_tile prev = c->start.tile;
     hol_err err = centre(c, prev, a);
-    edges_reset();
+    edges_reset(edges);
     for (long i = 0; !err && i < p->nwalked; i++) {
         if (!(i & 1023) && cli_caught_signal())
             return HOL_EBUDGET; /* a walk of a million steps: stopped (report_draw.h) */
         if ((err = centre(c, p->walked[i], b)))
             break;
-        int pass = edge_pass(prev, p->walked[i]);
+        int pass = edge_pass(edges, prev, p->walked[i]);
         geodesic(c, a, b, w, ramp(i, p->nwalked), (pass > 3 ? 3 : pass) * (w + 2));
         memcpy(a, b, sizeof a);
         prev = p->walked[i];
@@ -844,10 +829,22 @@ static void legend(canvas *c, const report_picture *p)
         legend_item(c, x, y, k, 2, REPORT_RGB_RAMP1, "END");
 }
 
+/* report_draw without the caller's edge table: one of its own, zeroed. */
+static hol_err draw_own_edges(const report_picture *p, uint8_t *px, int size)
+{
+    report_edges edges;
+    memset(&edges, 0, sizeof edges);
+    report_picture own = *p;
+    own.edges = &edges;
+    return report_draw(&own, px, size);
+}
+
 hol_err report_draw(const report_picture *p, uint8_t *px, int size)
 {
     if (size < 64 || size > 2048 || !hol_room_ok(&p->start))
         return HOL_EARG;
+    if (!p->edges)
+        return draw_own_edges(p, px, size);
     report_view fit;
     const report_view *v = p->view;
     hol_err err = HOL_OK;
@@ -861,7 +858,7 @@ hol_err report_draw(const report_picture *p, uint8_t *px, int size)
         memcpy(px, p->background, (size_t)size * (size_t)size);
     else
         background(&c, q);
-    if (!(err = optimal_path(&c, p)) && !(err = walked_path(&c, p))) {
+    if (!(err = optimal_path(&c, p)) && !(err = walked_path(&c, p, p->edges))) {
         marks(&c, p);
         step_numbers(&c, p);
         legend(&c, p);

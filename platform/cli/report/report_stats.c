@@ -9,12 +9,13 @@
 #include <string.h>
 #include <sys/stat.h>
 
-#include "../../core/hol_ask.h"
-#include "../../core/hol_study.h"
-#include "../../core/hol_text.h"
-#include "../file/hol_file.h"
-#include "../file/hol_lines.h"
-#include "cli.h"
+#include "../../../core/hol_ask.h"
+#include "../../../core/hol_study.h"
+#include "../../../core/hol_text.h"
+#include "../../file/hol_file.h"
+#include "../../file/hol_lines.h"
+#include "../cli.h"
+#include "report_escape.h"
 #include "report_stats_impl.h"
 
 const char *const rs_measure[RS_NFIX] = {
@@ -40,17 +41,32 @@ static int cond_of(report_stats *s, const hol_report_attempt *a)
     return s->ncond++;
 }
 
-static const report_run *sort_run; /* qsort has no context argument */
-
+/* Attempts (pointers into r->att) by (dir, session, attempt), then where
+ * they stand: a total order that needs no context. */
 static int by_key(const void *pa, const void *pb)
 {
-    const report_att *a = &sort_run->att[*(const int *)pa], *b = &sort_run->att[*(const int *)pb];
-    if (a->dir != b->dir)
-        return a->dir < b->dir ? -1 : 1;
-    int c = strcmp(a->a.session, b->a.session);
-    if (c)
-        return c;
-    return a->a.attempt < b->a.attempt ? -1 : a->a.attempt > b->a.attempt;
+    const report_att *a = *(const report_att *const *)pa, *b = *(const report_att *const *)pb;
+    int c = rs_cmp(a->dir, b->dir);
+    if (!c)
+        c = strcmp(a->a.session, b->a.session);
+    if (!c)
+        c = rs_cmp(a->a.attempt, b->a.attempt);
+    return c ? c : (a > b) - (a < b);
+}
+
+/* s->order: the attempts by by_key. 0, or -1 out of memory. */
+static int order_attempts(const report_run *r, report_stats *s)
+{
+    const report_att **p = malloc(sizeof *p * (size_t)(r->natt + 1));
+    if (!p)
+        return -1;
+    for (int i = 0; i < r->natt; i++)
+        p[i] = &r->att[i];
+    qsort(p, (size_t)r->natt, sizeof *p, by_key);
+    for (int i = 0; i < r->natt; i++)
+        s->order[i] = (int)(p[i] - r->att);
+    free(p);
+    return 0;
 }
 
 /* The condition of (dir, session, attempt): its attempt's, else "none". */
@@ -272,7 +288,7 @@ static int read_answers(report_run *r, int d, rs_csv *c)
 {
     static const char *const names[] = {"session", "participant", "attempt", "questionnaire",
                                         "when", "item", "kind", "value"};
-    static rs_group g;
+    rs_group g;
     int o = open_csv(c, r, d, "answers.csv"), got;
     if (o)
         return o > 0 ? 0 : CLI_EXIT_USAGE;
@@ -304,9 +320,8 @@ typedef struct rs_lentry {
 static int by_cond_pos(const void *pa, const void *pb)
 {
     const rs_lentry *a = pa, *b = pb;
-    if (a->cond != b->cond)
-        return a->cond < b->cond ? -1 : 1;
-    return a->pos < b->pos ? -1 : a->pos > b->pos;
+    int c = rs_cmp(a->cond, b->cond);
+    return c ? c : rs_cmp(a->pos, b->pos);
 }
 
 /* Position in the participant's order; outside a study the attempt. */
@@ -346,28 +361,36 @@ static int learning(const report_run *r, report_stats *s)
     return 0;
 }
 
+typedef struct rs_pkey { /* an attempt as participants() sorts it */
+    const char *participant;
+    int cond, i;
+} rs_pkey;
+
 static int by_part_cond(const void *pa, const void *pb)
 {
-    int ia = *(const int *)pa, ib = *(const int *)pb;
-    int c = strcmp(sort_run->att[ia].a.participant, sort_run->att[ib].a.participant);
-    const int *ac = sort_run->stats->att_cond;
+    const rs_pkey *a = pa, *b = pb;
+    int c = strcmp(a->participant, b->participant);
     if (!c)
-        c = ac[ia] < ac[ib] ? -1 : ac[ia] > ac[ib];
-    return c ? c : (ia < ib ? -1 : ia > ib);
+        c = rs_cmp(a->cond, b->cond);
+    return c ? c : rs_cmp(a->i, b->i);
 }
 
 static int participants(const report_run *r, report_stats *s)
 {
     int *ix = malloc(sizeof *ix * (size_t)(r->natt + 1));
+    rs_pkey *k = malloc(sizeof *k * (size_t)(r->natt + 1));
     s->prow = malloc(sizeof *s->prow * (size_t)(r->natt + 1));
-    if (!ix || !s->prow) {
+    if (!ix || !k || !s->prow) {
         free(ix);
+        free(k);
         return -1;
     }
     for (int i = 0; i < r->natt; i++)
-        ix[i] = i;
-    sort_run = r;
-    qsort(ix, (size_t)r->natt, sizeof *ix, by_part_cond);
+        k[i] = (rs_pkey){r->att[i].a.participant, s->att_cond[i], i};
+    qsort(k, (size_t)r->natt, sizeof *k, by_part_cond);
+    for (int i = 0; i < r->natt; i++)
+        ix[i] = k[i].i;
+    free(k);
     for (int i = 0; i < r->natt;) {
         rs_prow *p = &s->prow[s->nprow++];
         memset(p, 0, sizeof *p);
@@ -399,10 +422,9 @@ typedef struct rs_rank {
     int group;  /* the study's first condition in first-seen order */
     int klass;  /* 0 practice, 1 in a study file, 2 not in one */
     int index;  /* in the study file; outside a study: first seen */
+    int cond;   /* the condition (first seen) */
+    const char *name; /* its name */
 } rs_rank;
-
-static rs_rank *sort_rank; /* qsort has no context argument */
-static const report_stats *sort_stats;
 
 /* Each LOGDIR's study-HASH.txt files (by name) give their study's
  * conditions in the file's order; the first file naming a condition wins. */
@@ -469,18 +491,17 @@ static int name_cmp(const char *a, const char *b)
 
 static int by_rank(const void *pa, const void *pb)
 {
-    int a = *(const int *)pa, b = *(const int *)pb;
-    const rs_rank *x = &sort_rank[a], *y = &sort_rank[b];
-    if (x->group != y->group)
-        return x->group < y->group ? -1 : 1;
-    if (x->klass != y->klass)
-        return x->klass < y->klass ? -1 : 1;
-    if (x->klass != 2 && x->index != y->index)
-        return x->index < y->index ? -1 : 1;
-    int c = name_cmp(sort_stats->cond[a].condition, sort_stats->cond[b].condition);
+    const rs_rank *x = pa, *y = pb;
+    int c = rs_cmp(x->group, y->group);
     if (!c)
-        c = strcmp(sort_stats->cond[a].condition, sort_stats->cond[b].condition);
-    return c ? c : (a < b ? -1 : a > b);
+        c = rs_cmp(x->klass, y->klass);
+    if (!c && x->klass != 2)
+        c = rs_cmp(x->index, y->index);
+    if (!c)
+        c = name_cmp(x->name, y->name);
+    if (!c)
+        c = strcmp(x->name, y->name);
+    return c ? c : rs_cmp(x->cond, y->cond);
 }
 
 /* Conditions (not yet "none") reordered: by study in first-seen order;
@@ -496,7 +517,6 @@ static int order_conditions(report_run *r)
     hol_study *st = malloc(sizeof *st);
     int ok = k && ix && to && old && st;
     for (int c = 0; ok && c < n; c++) {
-        ix[c] = c;
         k[c].group = c;
         for (int g = 0; g < c; g++)
             if (!strcmp(s->cond[g].study, s->cond[c].study)) {
@@ -505,12 +525,14 @@ static int order_conditions(report_run *r)
             }
         k[c].klass = !s->cond[c].study[0] ? 0 : s->cond[c].practice ? 0 : 2;
         k[c].index = c;
+        k[c].cond = c;
+        k[c].name = s->cond[c].condition;
     }
     if (ok) {
         rank_from_files(r, k, st);
-        sort_rank = k;
-        sort_stats = s;
-        qsort(ix, (size_t)n, sizeof *ix, by_rank);
+        qsort(k, (size_t)n, sizeof *k, by_rank);
+        for (int c = 0; c < n; c++)
+            ix[c] = k[c].cond;
         memcpy(old, s->cond, sizeof *old * (size_t)n);
         for (int c = 0; c < n; c++) {
             s->cond[c] = old[ix[c]];
@@ -537,9 +559,8 @@ typedef struct rs_aggkey {
 static int by_aggkey(const void *pa, const void *pb)
 {
     const rs_aggkey *a = pa, *b = pb;
-    if (a->rank != b->rank)
-        return a->rank < b->rank ? -1 : 1;
-    return a->i < b->i ? -1 : a->i > b->i;
+    int c = rs_cmp(a->rank, b->rank);
+    return c ? c : rs_cmp(a->i, b->i);
 }
 
 /* The conditions of g (first seen, as report_stats_read's were) in the
@@ -588,7 +609,9 @@ static int alloc_stats(report_run *r)
         !(s->order = malloc(sizeof *s->order * n)) ||
         !(s->fix = calloc(n * RS_NFIX, sizeof *s->fix)) ||
         !(s->lik = malloc(sizeof *s->lik * RS_LIK_MAX)) ||
-        !(s->slot = malloc(sizeof *s->slot * RS_LIK_SLOTS))) {
+        !(s->slot = malloc(sizeof *s->slot * RS_LIK_SLOTS)) ||
+        !(s->pts = malloc(sizeof *s->pts * n)) || !(s->used = calloc(n, sizeof *s->used)) ||
+        !(s->nrange = calloc(2 * n, sizeof *s->nrange))) {
         cli_error(r->cmd, 0, "out of memory");
         return CLI_EXIT_FAIL;
     }
@@ -615,8 +638,10 @@ int report_stats_read(report_run *r)
     s->none = s->ncond++;
     memset(&s->cond[s->none], 0, sizeof s->cond[0]);
     snprintf(s->cond[s->none].condition, sizeof s->cond[0].condition, "none");
-    sort_run = r;
-    qsort(s->order, (size_t)r->natt, sizeof *s->order, by_key);
+    if (order_attempts(r, s)) {
+        cli_error(r->cmd, 0, "out of memory");
+        return CLI_EXIT_FAIL;
+    }
     for (int i = 0; i < r->natt; i++) {
         hol_stats *f = &s->fix[s->att_cond[i] * RS_NFIX];
         double eff = hol_report_efficiency(&r->att[i].a);
@@ -650,29 +675,14 @@ void report_stats_free(report_run *r)
     report_stats *s = r->stats;
     if (!s)
         return;
-    free(s->cond);
-    free(s->att_cond);
-    free(s->order);
-    free(s->fix);
-    free(s->lik);
-    free(s->slot);
-    free(s->learn);
-    free(s->prow);
-    free(s->seen);
-    free(s);
+    void *own[] = {s->cond, s->att_cond, s->order, s->fix, s->lik, s->slot, s->learn,
+                   s->prow, s->seen, s->pts, s->used, s->nrange, s};
+    for (size_t i = 0; i < sizeof own / sizeof own[0]; i++)
+        free(own[i]);
     r->stats = NULL;
 }
 
 /* ---- the CSV files ---- */
-
-static void csv(FILE *f, const char *s, int last)
-{
-    char clean[4 * HOL_REPORT_TEXT + 8], buf[8 * HOL_REPORT_TEXT + 16];
-    hol_report_clean(s, clean, sizeof clean);
-    hol_text_csv(clean, strlen(clean), buf, sizeof buf);
-    fputs(buf, f);
-    fputc(last ? '\n' : ',', f);
-}
 
 /* n,mean,sd,ci_low,ci_high (empty where not defined) */
 static void summary(FILE *f, const hol_stats *st)
@@ -688,79 +698,51 @@ static void summary(FILE *f, const hol_stats *st)
         fputs(",,,\n", f);
 }
 
-typedef struct rs_out {
-    hol_file_atomic a;
-    char path[4200];
-} rs_out;
-
-static int open_out(const report_run *r, rs_out *o, const char *name)
-{
-    snprintf(o->path, sizeof o->path, "%s/%s", r->out, name);
-    if (!hol_file_atomic_open(&o->a, o->path))
-        return 0;
-    cli_error(r->cmd, 0, "cannot write '%.300s'", o->path);
-    return CLI_EXIT_FAIL;
-}
-
-static int close_out(const report_run *r, rs_out *o)
-{
-    if (!ferror(o->a.f) && !hol_file_atomic_commit(&o->a))
-        return 0;
-    if (o->a.f)
-        hol_file_atomic_abort(&o->a);
-    cli_error(r->cmd, 0, "cannot write '%.300s'", o->path);
-    return CLI_EXIT_FAIL;
-}
-
-static int write_stats(const report_run *r, rs_out *o)
+static int stats_csv(FILE *f, const report_run *r, const void *ctx)
 {
     const report_stats *s = r->stats;
-    int st = open_out(r, o, "stats.csv");
-    if (st)
-        return st;
-    fputs("study,condition,measure,item,n,mean,sd,ci_low,ci_high\n", o->a.f);
+    (void)ctx;
+    fputs("study,condition,measure,item,n,mean,sd,ci_low,ci_high\n", f);
     for (int c = 0; c < s->ncond; c++) {
         for (int m = 0; m < RS_NFIX; m++) {
             if (!s->fix[c * RS_NFIX + m].n)
                 continue;
-            csv(o->a.f, s->cond[c].study, 0);
-            csv(o->a.f, s->cond[c].condition, 0);
-            fprintf(o->a.f, "%s,,", rs_measure[m]);
-            summary(o->a.f, &s->fix[c * RS_NFIX + m]);
+            report_csv(f, s->cond[c].study, 0);
+            report_csv(f, s->cond[c].condition, 0);
+            fprintf(f, "%s,,", rs_measure[m]);
+            summary(f, &s->fix[c * RS_NFIX + m]);
         }
         for (int i = 0; i < s->nlik; i++) {
             char item[160];
             if (s->lik[i].cond != c)
                 continue;
             snprintf(item, sizeof item, "%s/%s", s->lik[i].q, s->lik[i].item);
-            csv(o->a.f, s->cond[c].study, 0);
-            csv(o->a.f, s->cond[c].condition, 0);
-            fputs("likert,", o->a.f);
-            csv(o->a.f, item, 0);
-            summary(o->a.f, &s->lik[i].s);
+            report_csv(f, s->cond[c].study, 0);
+            report_csv(f, s->cond[c].condition, 0);
+            fputs("likert,", f);
+            report_csv(f, item, 0);
+            summary(f, &s->lik[i].s);
         }
     }
-    return close_out(r, o);
+    return 0;
 }
 
-static int write_learning(const report_run *r, rs_out *o)
+static int learning_csv(FILE *f, const report_run *r, const void *ctx)
 {
     const report_stats *s = r->stats;
-    int st = open_out(r, o, "learning.csv");
-    if (st)
-        return st;
-    fputs("study,condition,position,n,mean_efficiency,sd,ci_low,ci_high\n", o->a.f);
+    (void)ctx;
+    fputs("study,condition,position,n,mean_efficiency,sd,ci_low,ci_high\n", f);
     for (int i = 0; i < s->nlearn; i++) {
         const rs_learn *l = &s->learn[i];
-        csv(o->a.f, s->cond[l->cond].study, 0);
-        csv(o->a.f, s->cond[l->cond].condition, 0);
-        fprintf(o->a.f, "%ld,%ld,%.4f,", l->pos, l->m.n, l->m.mean);
+        report_csv(f, s->cond[l->cond].study, 0);
+        report_csv(f, s->cond[l->cond].condition, 0);
+        fprintf(f, "%ld,%ld,%.4f,", l->pos, l->m.n, l->m.mean);
         if (l->m.has_sd)
-            fprintf(o->a.f, "%.4f,%.4f,%.4f\n", l->m.sd, l->m.lo, l->m.hi);
+            fprintf(f, "%.4f,%.4f,%.4f\n", l->m.sd, l->m.lo, l->m.hi);
         else
-            fputs(",,\n", o->a.f);
+            fputs(",,\n", f);
     }
-    return close_out(r, o);
+    return 0;
 }
 
 static void mean_or_empty(FILE *f, const hol_stats *st, int last)
@@ -770,38 +752,32 @@ static void mean_or_empty(FILE *f, const hol_stats *st, int last)
     fputc(last ? '\n' : ',', f);
 }
 
-static int write_participants(const report_run *r, rs_out *o)
+static int participants_csv(FILE *f, const report_run *r, const void *ctx)
 {
     const report_stats *s = r->stats;
-    int st = open_out(r, o, "participants.csv");
-    if (st)
-        return st;
+    (void)ctx;
     fputs("participant,study,condition,attempts,done,mean_steps,mean_efficiency,mean_time\n",
-          o->a.f);
+          f);
     for (int i = 0; i < s->nprow; i++) {
         const rs_prow *p = &s->prow[i];
-        csv(o->a.f, r->att[p->att].a.participant, 0);
-        csv(o->a.f, s->cond[p->cond].study, 0);
-        csv(o->a.f, s->cond[p->cond].condition, 0);
-        fprintf(o->a.f, "%ld,%ld,", p->n, p->done);
-        mean_or_empty(o->a.f, &p->steps, 0);
-        mean_or_empty(o->a.f, &p->eff, 0);
-        mean_or_empty(o->a.f, &p->time, 1);
+        report_csv(f, r->att[p->att].a.participant, 0);
+        report_csv(f, s->cond[p->cond].study, 0);
+        report_csv(f, s->cond[p->cond].condition, 0);
+        fprintf(f, "%ld,%ld,", p->n, p->done);
+        mean_or_empty(f, &p->steps, 0);
+        mean_or_empty(f, &p->eff, 0);
+        mean_or_empty(f, &p->time, 1);
     }
-    return close_out(r, o);
+    return 0;
 }
 
 int report_stats_write(const report_run *r)
 {
-    rs_out *o = malloc(sizeof *o);
-    int st = o ? write_stats(r, o) : CLI_EXIT_FAIL;
+    int st = report_write_file(r, "stats.csv", stats_csv, NULL);
     if (!st)
-        st = write_learning(r, o);
+        st = report_write_file(r, "learning.csv", learning_csv, NULL);
     if (!st)
-        st = write_participants(r, o);
-    if (!o)
-        cli_error(r->cmd, 0, "out of memory");
-    free(o);
+        st = report_write_file(r, "participants.csv", participants_csv, NULL);
     return st;
 }
 

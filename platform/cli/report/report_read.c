@@ -1,15 +1,15 @@
-/* cmd_report_read.c - log folders read back for `holonomy report`
- * (cmd_report.h): summaries, steps files, levels and their optimal walks. */
+/* report_read.c - log folders read back for `holonomy report`
+ * (report.h): summaries, steps files, levels and their optimal walks. */
 #include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 
-#include "../file/hol_lines.h"
-#include "cli.h"
-#include "cmd_report.h"
-#include "play_setup.h"
+#include "../../file/hol_lines.h"
+#include "../cli.h"
+#include "report.h"
+#include "../play_setup.h"
 
 static void path_of(char *out, size_t cap, const char *dir, const char *name)
 {

@@ -28,7 +28,7 @@
 #include <stddef.h>
 #include <stdio.h>
 
-#include "cmd_report.h"
+#include "report.h"
 
 int report_stats_read(report_run *r);
 int report_stats_write(const report_run *r);

@@ -14,9 +14,9 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "../../render/hol_png.h"
-#include "cli.h"
-#include "cmd_report.h"
+#include "../../../render/hol_png.h"
+#include "../cli.h"
+#include "report.h"
 #include "report_draw.h"
 #include "report_stats.h"
 
@@ -194,6 +194,7 @@ typedef struct report_buf {
     uint8_t plte[768];
     int npal;
     uint8_t *background[9][REPORT_ZOOM_MAX + 1]; /* by q (5..8) and zoom, drawn on first use */
+    report_edges edges; /* report_draw's, kept from picture to picture */
 } report_buf;
 
 /* A picture's bytes into DIR: a temporary file renamed over the name, not
@@ -252,6 +253,7 @@ static int picture(report_run *r, report_buf *b, int i, int write)
     p.walked = b->walked;
     p.optimal = b->optimal;
     p.goals = b->goals;
+    p.edges = &b->edges;
     report_view v;
     if (!report_view_fit(&p, &v))
         p.view = &v;
@@ -356,11 +358,11 @@ int cli_cmd_report(int argc, char **argv)
     mallopt(M_MMAP_THRESHOLD, 4 << 20);
     mallopt(M_TRIM_THRESHOLD, 16 << 20);
 #endif
-    static report_run r;
-    memset(&r, 0, sizeof r);
-    r.cmd = cmd;
+    report_run *r = calloc(1, sizeof *r); /* its scratch level is large */
     report_buf *b = calloc(1, sizeof *b);
-    int st = b ? 0 : CLI_EXIT_FAIL;
+    int st = r && b ? 0 : CLI_EXIT_FAIL;
+    if (r)
+        r->cmd = cmd;
     if (!st && !(b->walked = malloc(sizeof *b->walked * REPORT_MAX_STEPS)))
         st = CLI_EXIT_FAIL;
     if (!st)
@@ -368,16 +370,19 @@ int cli_cmd_report(int argc, char **argv)
     if (st)
         cli_error(cmd, 0, "out of memory");
     if (!st)
-        st = parse_args(&r, argc, argv);
+        st = parse_args(r, argc, argv);
     if (!st)
         cli_catch_signals();
     if (!st)
-        st = run(&r, b);
+        st = run(r, b);
     if (!st)
         st = cli_finish_output(cmd);
-    report_stats_free(&r);
-    report_free(&r);
-    free(r.dirs);
+    if (r) {
+        report_stats_free(r);
+        report_free(r);
+        free(r->dirs);
+    }
+    free(r);
     if (b) {
         free(b->walked);
         for (int q = 0; q < 9; q++)

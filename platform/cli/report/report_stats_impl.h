@@ -3,7 +3,7 @@
 #ifndef REPORT_STATS_IMPL_H
 #define REPORT_STATS_IMPL_H
 
-#include "../../core/hol_stats.h"
+#include "../../../core/hol_stats.h"
 #include "report_stats.h"
 
 enum { RS_STEPS, RS_EFF, RS_TIME, RS_ERR_TRUE, RS_ERR_FLAT, RS_SSQ_T, RS_SSQ_N, RS_SSQ_O,
@@ -36,6 +36,13 @@ typedef struct rs_prow { /* one participant x condition */
     hol_stats steps, eff, time;
 } rs_prow;
 
+/* A point of the steps-against-optimum plot: the attempts of one condition
+ * with the same optimum and steps (n of them). */
+typedef struct rs_pt {
+    long opt, steps;
+    int cond, n;
+} rs_pt;
+
 typedef struct report_stats {
     int ncond, none; /* none: the condition "none" */
     rs_cond *cond;  /* natt + 1 */
@@ -52,8 +59,17 @@ typedef struct report_stats {
     int nprow;
     int *seen; /* a condition first seen i-th is listed seen[i]-th */
     int nseen;
+    rs_pt *pts;    /* natt + 1: the plot's points (report_stats_html) */
+    int *used;     /* per condition: in a plot (report_stats_html) */
+    long *nrange;  /* per condition: its n's range in a plot (2 each) */
 } report_stats;
 
 int rs_included(const report_run *r, int i); /* done, not practice */
+
+/* -1, 0 or 1 as a is below, equal to or above b (the sorts' comparators). */
+static inline int rs_cmp(long a, long b)
+{
+    return (a > b) - (a < b);
+}
 
 #endif

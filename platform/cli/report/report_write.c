@@ -1,24 +1,14 @@
-/* cmd_report_write.c - the report's files (cmd_report.h): attempts.csv,
+/* report_write.c - the report's files (report.h): attempts.csv,
  * conditions.csv and index.html, each written atomically. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "../../core/hol_text.h"
-#include "../file/hol_file.h"
-#include "cli.h"
-#include "cmd_report.h"
+#include "../../../core/hol_text.h"
+#include "../cli.h"
+#include "report.h"
+#include "report_escape.h"
 #include "report_stats.h"
-
-/* A text from the logs, cleaned (hol_report_clean), as a CSV field. */
-static void csv(FILE *f, const char *s, int last)
-{
-    char clean[4 * HOL_REPORT_TEXT + 8], buf[8 * HOL_REPORT_TEXT + 16];
-    hol_report_clean(s, clean, sizeof clean);
-    hol_text_csv(clean, strlen(clean), buf, sizeof buf);
-    fputs(buf, f);
-    fputc(last ? '\n' : ',', f);
-}
 
 /* A path from the command line as it may stand in a CSV or on a page. */
 static const char *safe_path(const char *p, char *buf, size_t cap)
@@ -33,28 +23,6 @@ static void num_or_empty(char *out, size_t cap, double v, const char *fmt)
         out[0] = 0;
     else
         snprintf(out, cap, fmt, v);
-}
-
-static int open_out(const report_run *r, const char *name, hol_file_atomic *a, char *path,
-                    size_t cap)
-{
-    snprintf(path, cap, "%s/%s", r->out, name);
-    if (hol_file_atomic_open(a, path)) {
-        cli_error(r->cmd, 0, "cannot write '%.300s'", path);
-        return CLI_EXIT_FAIL;
-    }
-    return 0;
-}
-
-static int commit(const report_run *r, hol_file_atomic *a, const char *path)
-{
-    if (ferror(a->f) || hol_file_atomic_commit(a)) {
-        if (a->f)
-            hol_file_atomic_abort(a);
-        cli_error(r->cmd, 0, "cannot write '%.300s'", path);
-        return CLI_EXIT_FAIL;
-    }
-    return 0;
 }
 
 static void geometry_text(const hol_report_attempt *a, char *tiling, char *room, char *cell)
@@ -74,23 +42,17 @@ static void factor_columns(FILE *f, const report_run *r, int i, const char *rel)
     if (t->a.cues >= 0)
         fprintf(f, "%ld", t->a.cues);
     fprintf(f, ",%s,", t->minimap >= 0 && t->minimap <= 2 ? place[t->minimap] : "");
-    csv(f, rel, 0);
+    report_csv(f, rel, 0);
     if (t->a.session_no > 0) /* the summary's session_no (empty: none) */
         fprintf(f, "%ld", t->a.session_no);
     fputc('\n', f);
 }
 
-int report_write_csv(const report_run *r)
+static int attempts_csv(FILE *f, const report_run *r, const void *ctx)
 {
-    hol_file_atomic a;
-    char path[4200];
-    int st = open_out(r, "attempts.csv", &a, path, sizeof path);
-    if (st)
-        return st;
-    static char rel[64][1024];
-    char(*rels)[1024] = r->ndirs <= 64 ? rel : calloc((size_t)r->ndirs, sizeof *rels);
+    (void)ctx;
+    char(*rels)[1024] = calloc((size_t)r->ndirs + 1, sizeof *rels);
     if (!rels) {
-        hol_file_atomic_abort(&a);
         cli_error(r->cmd, 0, "out of memory");
         return CLI_EXIT_FAIL;
     }
@@ -99,75 +61,64 @@ int report_write_csv(const report_run *r)
     fputs("participant,session,attempt,study,condition,position,level,mode,steps,optimum,"
           "efficiency,time,end,tiling,room,cell,logdir,picture,q,cues,minimap,logdir_relative,"
           "session_no\n",
-          a.f);
+          f);
     for (int i = 0; i < r->natt; i++) {
         const hol_report_attempt *t = &r->att[i].a;
         char pos[24], eff[24], tiling[16], room[16], cell[16], dir[1024];
         num_or_empty(pos, sizeof pos, (double)t->position, "%.0f");
         num_or_empty(eff, sizeof eff, hol_report_efficiency(t), "%.4f");
         geometry_text(t, tiling, room, cell);
-        csv(a.f, t->participant, 0);
-        csv(a.f, t->session, 0);
-        fprintf(a.f, "%ld,", t->attempt);
-        csv(a.f, t->study, 0);
-        csv(a.f, t->condition, 0);
-        fprintf(a.f, "%s,", pos);
-        csv(a.f, t->level, 0);
-        csv(a.f, t->mode, 0);
-        fprintf(a.f, "%ld,%ld,%s,%.4f,", t->steps, t->optimum, eff, t->time_s);
-        csv(a.f, t->end, 0);
-        csv(a.f, tiling, 0);
-        fprintf(a.f, "%s,%s,", room, cell);
-        csv(a.f, safe_path(r->dirs[r->att[i].dir], dir, sizeof dir), 0);
-        csv(a.f, r->att[i].png, 0);
-        factor_columns(a.f, r, i, rels[r->att[i].dir]);
+        report_csv(f, t->participant, 0);
+        report_csv(f, t->session, 0);
+        fprintf(f, "%ld,", t->attempt);
+        report_csv(f, t->study, 0);
+        report_csv(f, t->condition, 0);
+        fprintf(f, "%s,", pos);
+        report_csv(f, t->level, 0);
+        report_csv(f, t->mode, 0);
+        fprintf(f, "%ld,%ld,%s,%.4f,", t->steps, t->optimum, eff, t->time_s);
+        report_csv(f, t->end, 0);
+        report_csv(f, tiling, 0);
+        fprintf(f, "%s,%s,", room, cell);
+        report_csv(f, safe_path(r->dirs[r->att[i].dir], dir, sizeof dir), 0);
+        report_csv(f, r->att[i].png, 0);
+        factor_columns(f, r, i, rels[r->att[i].dir]);
     }
-    if (rels != rel)
-        free(rels);
-    return commit(r, &a, path);
+    free(rels);
+    return 0;
 }
 
-int report_write_conditions(const report_run *r, const hol_report_agg *g)
+int report_write_csv(const report_run *r)
 {
-    hol_file_atomic a;
-    char path[4200];
-    int st = open_out(r, "conditions.csv", &a, path, sizeof path);
-    if (st)
-        return st;
-    fputs("study,condition,attempts,done,mean_steps,mean_efficiency,mean_time\n", a.f);
+    return report_write_file(r, "attempts.csv", attempts_csv, NULL);
+}
+
+static int conditions_csv(FILE *f, const report_run *r, const void *ctx)
+{
+    const hol_report_agg *g = ctx;
+    fputs("study,condition,attempts,done,mean_steps,mean_efficiency,mean_time\n", f);
     for (int i = 0; i < g->n; i++) {
         const hol_report_cond *c = &g->c[i];
         char eff[24];
         num_or_empty(eff, sizeof eff, c->neff ? c->eff / (double)c->neff : -1, "%.4f");
-        csv(a.f, c->study, 0);
-        csv(a.f, c->condition, 0);
-        fprintf(a.f, "%ld,%ld,%.2f,%s,%.4f\n", c->n, c->done, c->steps / (double)c->n, eff,
+        report_csv(f, c->study, 0);
+        report_csv(f, c->condition, 0);
+        fprintf(f, "%ld,%ld,%.2f,%s,%.4f\n", c->n, c->done, c->steps / (double)c->n, eff,
                 c->time_s / (double)c->n);
     }
-    return commit(r, &a, path);
+    (void)r;
+    return 0;
 }
 
-/* Text for HTML: cleaned (hol_report_clean: no control byte, valid
- * UTF-8), then & < > " ' as entities (the names come from outside). */
-static void html(FILE *f, const char *text)
+int report_write_conditions(const report_run *r, const hol_report_agg *g)
 {
-    char clean[4 * 1024 + 8];
-    hol_report_clean(text, clean, sizeof clean);
-    for (const char *s = clean; *s; s++)
-        switch (*s) {
-        case '&': fputs("&amp;", f); break;
-        case '<': fputs("&lt;", f); break;
-        case '>': fputs("&gt;", f); break;
-        case '"': fputs("&quot;", f); break;
-        case '\'': fputs("&#39;", f); break;
-        default: fputc(*s, f);
-        }
+    return report_write_file(r, "conditions.csv", conditions_csv, g);
 }
 
 static void html_cell(FILE *f, const char *s)
 {
     fputs("<td>", f);
-    html(f, s);
+    report_html(f, s);
     fputs("</td>", f);
 }
 
@@ -185,7 +136,7 @@ static void html_head(FILE *f, const report_run *r, const hol_report_agg *g)
     for (int d = 0; d < r->ndirs; d++) {
         char dir[1024];
         fputs(d ? ", <code>" : " <code>", f);
-        html(f, safe_path(r->dirs[d], dir, sizeof dir));
+        report_html(f, safe_path(r->dirs[d], dir, sizeof dir));
         fputs("</code>", f);
     }
     fputs(". Data: <a href=\"attempts.csv\">attempts.csv</a> (one row per attempt), "
@@ -226,7 +177,7 @@ static void html_row(FILE *f, const report_run *r, int i)
     num_or_empty(eff, sizeof eff, hol_report_efficiency(a), "%.4f");
     geometry_text(a, tiling, room, cell);
     fputs("<tr class=\"", f);
-    html(f, a->end);
+    report_html(f, a->end);
     fprintf(f, "\"><td class=\"n\">%d</td>", i + 1);
     if (t->png[0]) /* the picture first: the table may be wider than the window */
         fprintf(f, "<td><a href=\"%s\"><img src=\"%s\" width=\"240\" height=\"240\" "
@@ -251,23 +202,24 @@ static void html_row(FILE *f, const report_run *r, int i)
     fputs("</tr>\n", f);
 }
 
-int report_write_html(const report_run *r, const hol_report_agg *g)
+static int index_html(FILE *f, const report_run *r, const void *ctx)
 {
-    hol_file_atomic a;
-    char path[4200];
-    int st = open_out(r, "index.html", &a, path, sizeof path);
-    if (st)
-        return st;
-    html_head(a.f, r, g);
-    report_stats_html(a.f, r);
-    fputs("<h2>Attempts</h2>\n", a.f);
-    fputs(pictures_note, a.f);
+    const hol_report_agg *g = ctx;
+    html_head(f, r, g);
+    report_stats_html(f, r);
+    fputs("<h2>Attempts</h2>\n", f);
+    fputs(pictures_note, f);
     fputs("<table>\n<tr><th>#</th><th>path</th><th>participant</th><th>session</th><th>attempt</th>"
           "<th>study</th><th>condition</th><th>position</th><th>level</th><th>mode</th>"
           "<th>steps</th><th>optimum</th><th>efficiency</th><th>time (s)</th><th>end</th>"
-          "<th>geometry</th></tr>\n", a.f);
+          "<th>geometry</th></tr>\n", f);
     for (int i = 0; i < r->natt; i++)
-        html_row(a.f, r, i);
-    fputs("</table>\n</body>\n</html>\n", a.f);
-    return commit(r, &a, path);
+        html_row(f, r, i);
+    fputs("</table>\n</body>\n</html>\n", f);
+    return 0;
+}
+
+int report_write_html(const report_run *r, const hol_report_agg *g)
+{
+    return report_write_file(r, "index.html", index_html, g);
 }

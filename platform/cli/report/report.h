@@ -1,6 +1,18 @@
-/* cmd_report.h - the parts of `holonomy report` (cmd_report.c runs them):
- * reading log folders (cmd_report_read.c) and writing the report's files
- * (cmd_report_write.c). Internal to the command.
+/* report.h - the parts of `holonomy report`, the report module of the tool
+ * (this folder; cmd_report.c, the command, runs them). Each file has one job:
+ *   report_read.c        log folders read back (summaries, steps, levels)
+ *   report_write.c       the report's files: attempts.csv, conditions.csv,
+ *                        index.html
+ *   report_file.c        report_write_file: every file of the report
+ *                        written atomically (the writers are its bodies)
+ *   report_stats*.c      the statistics (report_stats.h): stats.csv,
+ *                        learning.csv, participants.csv, the page's section
+ *   report_draw.c        an attempt's picture (report_draw.h)
+ *   report_escape.c      the one CSV field and HTML text writer
+ *                        (report_escape.h; test_report_escape)
+ * The module keeps no file-scope mutable state: what a run holds is in its
+ * report_run (and the command's buffers), passed down. Internal to the
+ * command.
  *
  * Contract
  * - report_read_summaries reads every LOGDIR's summary.csv (streamed,
@@ -10,17 +22,21 @@
  *   Each returns 0 or the exit status after one line on stderr naming the
  *   file and line (bad input 2, failure 1); a missing steps or level file
  *   is not an error: a warning line, and the attempt has no walk (has_* 0).
- * - report_write_* write DIR's files atomically (platform/file).
+ * - report_write_* write DIR's files atomically (platform/file), each
+ *   through report_write_file: DIR/name written by body (its 0, or an exit
+ *   status after one line: the file is then left out), committed; 0, or
+ *   CLI_EXIT_FAIL after one line when it cannot be opened or written.
  */
-#ifndef CMD_REPORT_H
-#define CMD_REPORT_H
+#ifndef REPORT_H
+#define REPORT_H
 
 #include <stddef.h>
+#include <stdio.h>
 
-#include "../../core/hol_level.h"
-#include "../../core/hol_nav.h"
-#include "../../core/hol_report.h"
-#include "../../core/hol_room.h"
+#include "../../../core/hol_level.h"
+#include "../../../core/hol_nav.h"
+#include "../../../core/hol_report.h"
+#include "../../../core/hol_room.h"
 
 #define REPORT_MAX_ATTEMPTS 10000
 #define REPORT_MAX_STEPS 1000000 /* rows of one steps file */
@@ -81,6 +97,9 @@ int report_stopped(const report_run *r);
 int report_optimal(report_run *r, report_att *t, hol_room *out_start, hol_tile *goals,
                    int *ngoals, int *chest_last, hol_tile *walk, int *nwalk);
 void report_free(report_run *r);
+
+typedef int (*report_body)(FILE *f, const report_run *r, const void *ctx);
+int report_write_file(const report_run *r, const char *name, report_body body, const void *ctx);
 
 int report_write_csv(const report_run *r);
 int report_write_conditions(const report_run *r, const hol_report_agg *g);

@@ -5,33 +5,19 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "report_escape.h"
 #include "report_stats_impl.h"
 
 static const char *const palette[8] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd",
                                        "#ff7f0e", "#8c564b", "#e377c2", "#17becf"};
 
-static void html(FILE *f, const char *text)
-{
-    char clean[4 * HOL_REPORT_TEXT + 8];
-    hol_report_clean(text, clean, sizeof clean);
-    for (const char *s = clean; *s; s++)
-        switch (*s) {
-        case '&': fputs("&amp;", f); break;
-        case '<': fputs("&lt;", f); break;
-        case '>': fputs("&gt;", f); break;
-        case '"': fputs("&quot;", f); break;
-        case '\'': fputs("&#39;", f); break;
-        default: fputc(*s, f);
-        }
-}
-
 static void cond_name(FILE *f, const rs_cond *c)
 {
     if (c->study[0]) {
-        html(f, c->study);
+        report_html(f, c->study);
         fputs(" / ", f);
     }
-    html(f, c->condition);
+    report_html(f, c->condition);
 }
 
 static void stat_cells(FILE *f, const hol_stats *st)
@@ -75,9 +61,9 @@ static void means_table(FILE *f, const report_run *r)
             fputs("<tr><td>", f);
             cond_name(f, &s->cond[c]);
             fputs("</td><td>likert ", f);
-            html(f, s->lik[i].q);
+            report_html(f, s->lik[i].q);
             fputc('/', f);
-            html(f, s->lik[i].item);
+            report_html(f, s->lik[i].item);
             fputs("</td>", f);
             stat_cells(f, &s->lik[i].s);
         }
@@ -210,21 +196,13 @@ static void learning_svg(FILE *f, const report_run *r, int *used, long *nrange)
     fputs("</svg>\n", f);
 }
 
-/* A point of the steps-against-optimum plot: the attempts of one condition
- * with the same optimum and steps (n of them). */
-typedef struct rs_pt {
-    long opt, steps;
-    int cond, n;
-} rs_pt;
-
 static int by_point(const void *pa, const void *pb)
 {
     const rs_pt *a = pa, *b = pb;
-    if (a->opt != b->opt)
-        return a->opt < b->opt ? -1 : 1;
-    if (a->steps != b->steps)
-        return a->steps < b->steps ? -1 : 1;
-    return (a->cond > b->cond) - (a->cond < b->cond);
+    int c = rs_cmp(a->opt, b->opt);
+    if (!c)
+        c = rs_cmp(a->steps, b->steps);
+    return c ? c : rs_cmp(a->cond, b->cond);
 }
 
 #define RS_R1 4.0    /* the radius of a point of one attempt (px) */
@@ -318,8 +296,8 @@ static void size_key(FILE *f, int x, int y, double r1, int nmax)
 
 static void scatter_svg(FILE *f, const report_run *r, int *used, long *nrange)
 {
-    static rs_pt pts[REPORT_MAX_ATTEMPTS + 2];
     const report_stats *s = r->stats;
+    rs_pt *pts = s->pts;
     double maxv = 1;
     for (int i = 0; i < r->natt; i++)
         if (rs_included(r, i) && r->att[i].a.optimum >= 0) {
@@ -368,7 +346,7 @@ static void participants_table(FILE *f, const report_run *r)
         const rs_prow *p = &s->prow[i];
         const hol_stats *m[3] = {&p->steps, &p->eff, &p->time};
         fputs("<tr><td>", f);
-        html(f, r->att[p->att].a.participant);
+        report_html(f, r->att[p->att].a.participant);
         fputs("</td><td>", f);
         cond_name(f, &s->cond[p->cond]);
         fprintf(f, "</td><td class=\"n\">%ld</td><td class=\"n\">%ld</td>", p->n, p->done);
@@ -385,14 +363,12 @@ static void participants_table(FILE *f, const report_run *r)
 void report_stats_html(FILE *f, const report_run *r)
 {
     const report_stats *s = r->stats;
-    static int used_buf[REPORT_MAX_ATTEMPTS + 2];
-    static long n_buf[2 * (REPORT_MAX_ATTEMPTS + 2)];
     if (!s)
         return;
-    memset(used_buf, 0, sizeof used_buf);
-    memset(n_buf, 0, sizeof n_buf);
+    memset(s->used, 0, sizeof *s->used * (size_t)s->ncond);
+    memset(s->nrange, 0, sizeof *s->nrange * 2 * (size_t)s->ncond);
     means_table(f, r);
-    learning_svg(f, r, used_buf, n_buf);
-    scatter_svg(f, r, used_buf, n_buf);
+    learning_svg(f, r, s->used, s->nrange);
+    scatter_svg(f, r, s->used, s->nrange);
     participants_table(f, r);
 }

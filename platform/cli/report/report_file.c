@@ -1,0 +1,27 @@
+/* report_file.c - a file of the report written atomically (report.h:
+ * report_write_file); the writers of report_write.c and report_stats.c
+ * call it, it calls none of them. */
+#include <stdio.h>
+
+#include "../../file/hol_file.h"
+#include "../cli.h"
+#include "report.h"
+
+int report_write_file(const report_run *r, const char *name, report_body body, const void *ctx)
+{
+    hol_file_atomic a;
+    char path[4200];
+    snprintf(path, sizeof path, "%s/%s", r->out, name);
+    if (hol_file_atomic_open(&a, path)) {
+        cli_error(r->cmd, 0, "cannot write '%.300s'", path);
+        return CLI_EXIT_FAIL;
+    }
+    int st = body(a.f, r, ctx);
+    if (!st && !ferror(a.f) && !hol_file_atomic_commit(&a))
+        return 0;
+    if (a.f)
+        hol_file_atomic_abort(&a);
+    if (!st)
+        cli_error(r->cmd, 0, "cannot write '%.300s'", path);
+    return st ? st : CLI_EXIT_FAIL;
+}

@@ -1,0 +1,80 @@
+/* hol_program.h - the renderer's shader programs as data: a key names a
+ * variant, one slot holds it.
+ *
+ * Contract
+ * - Every program is the same two shaders (render/shaders/scene.vert.glsl
+ *   and scene.frag.glsl, made into C strings at build time by
+ *   render/shaders/glsl_c.sh) after a preamble of defines written from its
+ *   key (hol_prog_preamble), as sokol-shdc's variants are: no shader text
+ *   is chosen by arithmetic.
+ * - A key (hol_prog_key) says what varies: the lighting (core's
+ *   hol_app_lighting), the lit room's meshes or the lit tiles, the flat
+ *   {4,4} grid, the wedge's discard, the lights' effects (fireflies,
+ *   spots) and the trunk shadow pairs read. The day program has only the
+ *   wedge; the lit room's the lighting and the wedge; the lit tiles' all.
+ * - hol_prog_slot and hol_prog_key_of_slot are the one encoding between
+ *   keys and the HOL_PROG_SLOTS slots of a program table (dense: every
+ *   slot is a program): slot -> key -> slot is the identity, and a key no
+ *   program has (day at night, a room with spots, ...) has slot -1.
+ *   Nothing else computes with slot numbers.
+ * - hol_prog_make compiles and links a key's program through the loaded
+ *   GL (render/hol_gl.h) and finds its uniforms (-1: not in it). It waits
+ *   for the GL (compile and link status).
+ */
+#ifndef HOL_PROGRAM_H
+#define HOL_PROGRAM_H
+
+#include <stddef.h>
+
+#include "hol_gl.h"
+
+/* hol_prog_key.fx: what the lit tiles' lights do beyond lanterns (the
+ * frame's hol_light_frame.fx, the shaders' HOL_FX). A new kind of light
+ * that needs code of its own takes the next value before
+ * HOL_PROG_FX_COUNT (docs/hacking.md#adding-a-light-type). */
+enum {
+    HOL_PROG_FX_NONE = 0,
+    HOL_PROG_FX_FIREFLIES = 1, /* per-light heights and weights */
+    HOL_PROG_FX_SPOTS = 2,     /* and the spots' cones */
+    HOL_PROG_FX_COUNT
+};
+
+typedef struct hol_prog_key {
+    int lighting;     /* HOL_LIGHT_DAY, _DUSK, _NIGHT (core/hol_app.h) */
+    int room;         /* lit: 1 the room's own meshes (no tile code) */
+    int flat;         /* lit tiles: the flat {4,4} grid */
+    int wedge;        /* discard outside a branch's wedge (hol_view.h) */
+    int fx;           /* lit tiles: HOL_PROG_FX_* */
+    int shadow_pairs; /* lit tiles: trunk shadow pairs read: 0, 2 or 4 */
+} hol_prog_key;
+
+/* Rows of per-light values a lit tile gives its shaders (u_tx, four
+ * lights a row: render/hol_render_tiles.c's hol__item_lights; the shaders'
+ * HOL_TX_ROWS). */
+#define HOL_PROG_TX_ROWS 7
+
+/* day 2 (wedge), lit room 2 x 2 (lighting, wedge), lit tiles 2 x 2 x 2
+ * (lighting, flat, wedge) x HOL_PROG_FX_COUNT x 3 (shadow pairs): 78 */
+#define HOL_PROG_SLOTS (2 + 4 + 8 * HOL_PROG_FX_COUNT * 3)
+
+/* The slot of key, or -1 when no program has that key. */
+int hol_prog_slot(const hol_prog_key *key);
+/* The key of slot (0 <= slot < HOL_PROG_SLOTS). */
+hol_prog_key hol_prog_key_of_slot(int slot);
+
+/* The preamble of key's shaders ("#version 300 es" and the defines) into
+ * out (n bytes, NUL-terminated); the length, or -1 when it did not fit. */
+int hol_prog_preamble(const hol_prog_key *key, char *out, size_t n);
+
+/* A program and its uniforms (-1: not in this program). */
+typedef struct hol_prog {
+    GLuint prog;
+    GLint u_vp, u_model, u_mode, u_id, u_eye, u_fog, u_fogd, u_lin, u_wedge, u_wmode;
+    GLint u_light, u_klein, u_mpu2, u_tl, u_eyeh, u_lonly, u_tx, u_ts;
+} hol_prog;
+
+/* Compile and link key's program into out: 0, or 1 when the GL refused it
+ * (nothing left half-made: out->prog stays 0). */
+int hol_prog_make(const hol_gl *gl, const hol_prog_key *key, hol_prog *out);
+
+#endif

@@ -1,0 +1,427 @@
+/* hol_render_gpu.c - the renderer's GL side: buffers, a frame's programs,
+ * clear and uniforms, the passes' state, the sorted queue executed. */
+#include "hol_render_int.h"
+
+#include <math.h>
+#include <string.h>
+
+/* The vertex layout of vao[k] (bound), read from vbo[k]. */
+void hol__vao_attribs(hol_render *r, int k)
+{
+    r->gl.BindBuffer(GL_ARRAY_BUFFER, r->vbo[k]);
+    r->gl.EnableVertexAttribArray(0);
+    r->gl.EnableVertexAttribArray(1);
+    r->gl.EnableVertexAttribArray(2);
+    r->gl.VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(hol_vertex),
+                              (const void *)offsetof(hol_vertex, pos));
+    r->gl.VertexAttribPointer(1, 3, GL_BYTE, GL_TRUE, sizeof(hol_vertex),
+                              (const void *)offsetof(hol_vertex, nrm));
+    r->gl.VertexAttribPointer(2, 4, GL_UNSIGNED_BYTE, GL_TRUE, sizeof(hol_vertex),
+                              (const void *)offsetof(hol_vertex, rgba));
+}
+
+/* A new buffer of new_bytes for target (bound first to it: WebGL 2 fixes a
+ * buffer's type at its first binding, and one first bound to a copy
+ * target can never be an element array), old's first old_bytes copied in
+ * (old 0: none), old deleted. Leaves target unbound. */
+static GLuint hol__buffer_grown(hol_render *r, GLenum target, GLuint old, size_t old_bytes,
+                                size_t new_bytes)
+{
+    GLuint b = 0;
+    r->gl.GenBuffers(1, &b);
+    r->gl.BindBuffer(target, b);
+    r->gl.BufferData(target, (GLsizeiptr)new_bytes, NULL, GL_DYNAMIC_DRAW);
+    if (old) {
+        r->gl.BindBuffer(GL_COPY_READ_BUFFER, old);
+        r->gl.CopyBufferSubData(GL_COPY_READ_BUFFER, target, 0, 0, (GLsizeiptr)old_bytes);
+        r->gl.BindBuffer(GL_COPY_READ_BUFFER, 0);
+        r->gl.DeleteBuffers(1, &old);
+    }
+    r->gl.BindBuffer(target, 0);
+    return b;
+}
+
+/* The static buffers (the room, the minimap, then the tile slots) made
+ * for cap slots: new ones, what the old ones held copied in, vao[0]
+ * pointed at them. Leaves no vertex array bound. */
+void hol__static_grow(hol_render *r, int cap)
+{
+    r->gl.BindVertexArray(0); /* the element binding below is vertex array 0's */
+    r->vbo[0] = hol__buffer_grown(r, GL_ARRAY_BUFFER, r->vbo[0],
+                                  HOL__SLOT_VBASE(r->slot_cap) * sizeof(hol_vertex),
+                                  HOL__SLOT_VBASE(cap) * sizeof(hol_vertex));
+    r->ibo[0] = hol__buffer_grown(r, GL_ELEMENT_ARRAY_BUFFER, r->ibo[0],
+                                  HOL__SLOT_IBASE(r->slot_cap) * sizeof(uint32_t),
+                                  HOL__SLOT_IBASE(cap) * sizeof(uint32_t));
+    r->slot_cap = cap;
+    r->gl.BindVertexArray(r->vao[0]);
+    r->gl.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, r->ibo[0]);
+    hol__vao_attribs(r, 0);
+    r->gl.BindVertexArray(0);
+}
+
+/* Upload the scratch mesh to the static buffers at (vbase, ibase), its
+ * indices shifted by vbase. */
+void hol__upload_scratch(hol_render *r, uint32_t vbase, uint32_t ibase)
+{
+    hol_mesh *m = &r->scratch;
+    for (uint32_t i = 0; i < m->ni; i++)
+        m->idx[i] += vbase;
+    r->gl.BindBuffer(GL_ARRAY_BUFFER, r->vbo[0]);
+    r->gl.BufferSubData(GL_ARRAY_BUFFER, (GLintptr)(vbase * sizeof(hol_vertex)),
+                        (GLsizeiptr)(m->nv * sizeof(hol_vertex)), m->v);
+    r->gl.BindVertexArray(r->vao[0]);
+    r->gl.BufferSubData(GL_ELEMENT_ARRAY_BUFFER, (GLintptr)(ibase * sizeof(uint32_t)),
+                        (GLsizeiptr)(m->ni * sizeof(uint32_t)), m->idx);
+    r->gl.BindVertexArray(0);
+    r->uploaded += (long)(m->nv * sizeof(hol_vertex) + m->ni * sizeof(uint32_t));
+}
+
+/* glClearColor of an sRGB-authored colour: with desc.srgb the GL encodes
+ * what is written, so the colour is given linear (as the shader does). */
+static void hol__clear_colour(hol_render *r, float red, float green, float blue)
+{
+    float c[3] = {red, green, blue};
+    for (int k = 0; k < 3 && r->desc.srgb; k++)
+        c[k] = c[k] <= 0.04045f ? c[k] / 12.92f : powf((c[k] + 0.055f) / 1.055f, 2.4f);
+    r->gl.ClearColor(c[0], c[1], c[2], 1);
+}
+
+void hol__fade_rgb(const hol_frame_desc *f, uint8_t out[3])
+{
+    static const uint8_t def[3] = HOL_RENDER_FADE_RGB;
+    int set = f->fade_rgb[0] || f->fade_rgb[1] || f->fade_rgb[2];
+    memcpy(out, set ? f->fade_rgb : def, 3);
+}
+
+/* The frame's rectangle: viewport, and the scissor its clear keeps to. */
+static void hol__viewport(hol_render *r, const hol_frame_desc *f)
+{
+    r->gl.Viewport(f->vp_x, f->vp_y, f->cam.width, f->cam.height);
+    r->gl.Enable(GL_SCISSOR_TEST);
+    r->gl.Scissor(f->vp_x, f->vp_y, f->cam.width, f->cam.height);
+}
+
+/* Fully faded: the boundary colour alone, no view. */
+void hol__frame_faded(hol_render *r, const hol_frame_desc *f)
+{
+    uint8_t rgb[3];
+    hol__fade_rgb(f, rgb);
+    hol__viewport(r, f);
+    r->gl.DepthMask(GL_TRUE);
+    r->gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    r->gl.StencilMask(0xff);
+    hol__clear_colour(r, rgb[0] / 255.0f, rgb[1] / 255.0f, rgb[2] / 255.0f);
+    r->gl.ClearDepthf(1.0f);
+    r->gl.ClearStencil(HOL_VIEW_STENCIL_CLEAR);
+    r->gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    r->gl.Disable(GL_SCISSOR_TEST);
+}
+
+/* The sky of a frame's lighting (day: hol_scene_sky) and its fog density
+ * per metre. */
+static float hol__sky(const hol_frame_desc *f, float rgb[3])
+{
+    static const float skies[3][3] = {{0, 0, 0}, {0.46f, 0.36f, 0.44f}, {0.03f, 0.04f, 0.08f}};
+    if (f->lighting == HOL_LIGHT_DUSK || f->lighting == HOL_LIGHT_NIGHT) {
+        memcpy(rgb, skies[f->lighting], sizeof skies[0]);
+        return f->lighting == HOL_LIGHT_DUSK ? 0.10f : 0.15f;
+    }
+    hol_scene_sky(rgb);
+    return 0.06f;
+}
+
+/* The per-frame uniforms of dusk and night (hol_light.h). */
+static void hol__frame_lights(hol_render *r, const hol_frame_desc *f)
+{
+    const hol_light_frame *lf = &r->lights;
+    r->gl.Uniform1i(r->pg->u_lonly, (f->flags & HOL_RENDER_LIGHT_ONLY) != 0);
+    r->gl.Uniform1f(r->pg->u_klein, (float)lf->klein);
+    r->gl.Uniform1f(r->pg->u_mpu2, (float)(lf->metres_per_unit * lf->metres_per_unit));
+    r->gl.Uniform1f(r->pg->u_eyeh, (float)lf->eye_h);
+}
+
+/* The programs a lit frame uses, in the order their per-frame uniforms
+ * are set (the tiles' with up to four shadow pairs current at the end). */
+static const int hol__lit_uses[4] = {HOL__USE_TILES2, HOL__USE_TILES0, HOL__USE_ROOM,
+                                     HOL__USE_TILES4};
+
+/* The programs frame f uses, n of them (day: one). */
+static const int *hol__frame_uses(const hol_frame_desc *f, int *n)
+{
+    static const int day[1] = {HOL__USE_DAY};
+    *n = f->lighting ? 4 : 1;
+    return f->lighting ? hol__lit_uses : day;
+}
+
+/* This frame's program for a use (HOL__USE_*): its key from the frame (the
+ * lighting, the tiling's flatness, the lights' effects, the view's wedges). */
+hol_prog *hol__frame_prog(hol_render *r, const hol_frame_desc *f, int use)
+{
+    static const int pairs[] = {[HOL__USE_TILES0] = 0, [HOL__USE_TILES2] = 2,
+                                [HOL__USE_TILES4] = 4};
+    hol_prog_key k;
+    memset(&k, 0, sizeof k);
+    k.wedge = r->view.wedges != 0;
+    if (use != HOL__USE_DAY) {
+        k.lighting = f->lighting;
+        k.room = use == HOL__USE_ROOM;
+    }
+    if (use >= HOL__USE_TILES0) {
+        k.flat = r->lights.flat != 0;
+        k.fx = r->lights.fx;
+        k.shadow_pairs = pairs[use];
+    }
+    return &r->progs[hol_prog_slot(&k)];
+}
+
+/* Compile, if not yet, the programs this frame uses: a command that draws
+ * only the day compiles 1 or 2 programs of the HOL_PROG_SLOTS (each costs
+ * llvmpipe about 8 ms of CPU). HOL_EUNSUPPORTED if one does not compile. */
+hol_err hol__use_progs(hol_render *r, const hol_frame_desc *f)
+{
+    int n;
+    const int *uses = hol__frame_uses(f, &n);
+    for (int i = 0; i < n; i++) {
+        hol_prog *pg = hol__frame_prog(r, f, uses[i]);
+        hol_prog_key k = hol_prog_key_of_slot((int)(pg - r->progs));
+        if (!pg->prog && hol_prog_make(&r->gl, &k, pg))
+            return HOL_EUNSUPPORTED;
+    }
+    return HOL_OK;
+}
+
+/* Clear the frame (sky, or black for IDs), upload this frame's dynamic
+ * geometry, and set the program's per-frame uniforms; vp receives the
+ * view-projection matrix. */
+void hol__frame_begin(hol_render *r, const hol_frame_desc *f, float vp[16])
+{
+    int ids = (f->flags & HOL_RENDER_IDS) != 0;
+    float sky[3];
+    float fogd = hol__sky(f, sky);
+    hol__viewport(r, f);
+    r->gl.Disable(GL_CULL_FACE);
+    r->gl.Disable(GL_BLEND);
+    r->gl.Disable(GL_DITHER);
+    r->gl.DepthMask(GL_TRUE);
+    r->gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    r->gl.StencilMask(0xff);
+    if (ids)
+        r->gl.ClearColor(0, 0, 0, 1);
+    else
+        hol__clear_colour(r, sky[0], sky[1], sky[2]);
+    r->gl.ClearDepthf(1.0f);
+    r->gl.ClearStencil(HOL_VIEW_STENCIL_CLEAR);
+    r->gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    r->gl.BindVertexArray(r->vao[1]);
+    r->gl.BindBuffer(GL_ARRAY_BUFFER, r->vbo[1]);
+    r->gl.BufferData(GL_ARRAY_BUFFER, (GLsizeiptr)(r->dyn.nv * sizeof(hol_vertex)), r->dyn.v,
+                     GL_STREAM_DRAW);
+    r->gl.BufferData(GL_ELEMENT_ARRAY_BUFFER, (GLsizeiptr)(r->dyn.ni * sizeof(uint32_t)),
+                     r->dyn.idx, GL_STREAM_DRAW);
+    r->uploaded += (long)(r->dyn.nv * sizeof(hol_vertex) + r->dyn.ni * sizeof(uint32_t));
+    float view[16], proj[16];
+    hol_camera_matrices(&f->cam, view, proj);
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j < 4; j++) {
+            float s = 0;
+            for (int k = 0; k < 4; k++)
+                s += proj[4 * k + j] * view[4 * i + k];
+            vp[4 * i + j] = s;
+        }
+    /* the per-frame uniforms of every program the frame uses: day's, or
+     * at dusk and night the room's then the tiles' (current at the end) */
+    int n;
+    const int *uses = hol__frame_uses(f, &n);
+    for (int i = 0; i < n; i++) {
+        r->pg = hol__frame_prog(r, f, uses[i]);
+        r->gl.UseProgram(r->pg->prog);
+        r->gl.Uniform3f(r->pg->u_eye, (float)f->cam.eye[0], (float)f->cam.eye[1],
+                        (float)f->cam.eye[2]);
+        r->gl.Uniform3f(r->pg->u_fog, sky[0], sky[1], sky[2]);
+        r->gl.Uniform1f(r->pg->u_fogd, fogd);
+        r->gl.Uniform1i(r->pg->u_lin, r->desc.srgb != 0);
+        r->gl.Uniform1i(r->pg->u_wmode, 0);
+        r->gl.Uniform1i(r->pg->u_light, uses[i] == HOL__USE_ROOM ? 2 : 0);
+        if (f->lighting)
+            hol__frame_lights(r, f);
+    }
+}
+
+/* The passes over the scene (the panel, the fade, the HUD): no depth test
+ * or writes, no stencil; vp the view-projection (NULL: the identity, and
+ * the model's too). */
+static void hol__set_overlay(hol_render *r, const float vp[16], int mode)
+{
+    float ident[16];
+    hol__identity(ident);
+    r->gl.Disable(GL_DEPTH_TEST);
+    r->gl.DepthMask(GL_FALSE);
+    r->gl.Disable(GL_STENCIL_TEST);
+    r->gl.UniformMatrix4fv(r->pg->u_vp, 1, GL_FALSE, vp ? vp : ident);
+    if (!vp)
+        r->gl.UniformMatrix4fv(r->pg->u_model, 1, GL_FALSE, ident);
+    r->gl.Uniform1i(r->pg->u_mode, mode);
+}
+
+/* The GL state of a pass (vp: the view-projection, for the passes in the
+ * world). */
+static void hol__set_pass_as(hol_render *r, const hol_frame_desc *f, int pass, const float vp[16],
+                             hol_prog *want)
+{
+    int ids = (f->flags & HOL_RENDER_IDS) != 0;
+    float ident[16];
+    hol__identity(ident);
+    if (want) { /* the room's meshes: the program without tile code */
+        if (want != r->pg) {
+            r->pg = want;
+            r->gl.UseProgram(want->prog);
+        }
+    }
+    r->gl.Uniform1i(r->pg->u_wmode, 0); /* the tile pass sets it per branch */
+    switch (pass) {
+    case HOL__PASS_STENCIL:
+        r->gl.ColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+        r->gl.Disable(GL_DEPTH_TEST);
+        r->gl.DepthMask(GL_FALSE);
+        r->gl.Enable(GL_STENCIL_TEST);
+        r->gl.StencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+        r->gl.UniformMatrix4fv(r->pg->u_vp, 1, GL_FALSE, ident);
+        r->gl.UniformMatrix4fv(r->pg->u_model, 1, GL_FALSE, ident);
+        break;
+    case HOL__PASS_ROOM:
+    case HOL__PASS_TILE:
+        r->gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        r->gl.Enable(GL_DEPTH_TEST);
+        r->gl.DepthFunc(GL_LESS);
+        r->gl.DepthMask(GL_TRUE);
+        r->gl.StencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+        if (pass == HOL__PASS_ROOM)
+            r->gl.Disable(GL_STENCIL_TEST);
+        else
+            r->gl.Enable(GL_STENCIL_TEST);
+        r->gl.UniformMatrix4fv(r->pg->u_vp, 1, GL_FALSE, vp);
+        r->gl.Uniform1i(r->pg->u_mode, ids ? HOL__MODE_ID : HOL__MODE_LIT);
+        r->gl.Uniform4f(r->pg->u_id, 0, 0, 0, 1);
+        if (pass == HOL__PASS_ROOM)
+            r->gl.UniformMatrix4fv(r->pg->u_model, 1, GL_FALSE, ident);
+        if (f->lighting) /* the tile pass sets it per tile */
+            r->gl.Uniform1i(r->pg->u_light, 2);
+        break;
+    case HOL__PASS_HAND:
+        /* in the world: hidden where the scene is nearer; its coplanar
+         * layers are painted in order (no depth writes) */
+        r->gl.Enable(GL_DEPTH_TEST);
+        r->gl.DepthFunc(GL_LEQUAL);
+        r->gl.DepthMask(GL_FALSE);
+        r->gl.Disable(GL_STENCIL_TEST);
+        r->gl.UniformMatrix4fv(r->pg->u_vp, 1, GL_FALSE, vp);
+        r->gl.Uniform1i(r->pg->u_mode, ids ? HOL__MODE_ID : HOL__MODE_FLAT);
+        break;
+    case HOL__PASS_PANEL:
+        /* in the world, drawn last over everything (no depth test): the
+         * text is never hidden by a hedge or a trunk nearer than it */
+        r->gl.Disable(GL_BLEND);
+        hol__set_overlay(r, vp, ids ? HOL__MODE_ID : HOL__MODE_FLAT);
+        break;
+    case HOL__PASS_FADE:
+        hol__set_overlay(r, NULL, HOL__MODE_FLAT);
+        r->gl.Enable(GL_BLEND);
+        r->gl.BlendColor(0, 0, 0, (float)f->fade);
+        r->gl.BlendFunc(GL_CONSTANT_ALPHA, GL_ONE_MINUS_CONSTANT_ALPHA);
+        break;
+    default:
+        r->gl.Disable(GL_BLEND);
+        hol__set_overlay(r, NULL, ids ? HOL__MODE_ID : HOL__MODE_FLAT);
+        break;
+    }
+}
+
+/* The GL state of a pass: at dusk and night the room's meshes take the
+ * program without tile code, and the tile pass's state goes to both tile
+ * programs (with trunk shadows, current at the end, and without). */
+static void hol__set_pass(hol_render *r, const hol_frame_desc *f, int pass, const float vp[16])
+{
+    static const int tiles[2] = {HOL__USE_TILES0, HOL__USE_TILES2};
+    for (int k = 0; k < 2 && f->lighting && pass == HOL__PASS_TILE; k++)
+        hol__set_pass_as(r, f, pass, vp, hol__frame_prog(r, f, tiles[k]));
+    int last = pass == HOL__PASS_ROOM ? HOL__USE_ROOM : HOL__USE_TILES4;
+    hol__set_pass_as(r, f, pass, vp, f->lighting ? hol__frame_prog(r, f, last) : NULL);
+}
+
+/* A lit tile's frame and lights (a tile without a frame: as the room). */
+static void hol__item_uniforms(hol_render *r, const hol__item *it)
+{
+    r->gl.Uniform1i(r->pg->u_light, it->nl < 0 ? 2 : 1);
+    if (it->nl < 0)
+        return;
+    r->gl.Uniform4fv(r->pg->u_tl, 4, &it->tl[0][0]);
+    r->gl.Uniform4fv(r->pg->u_tx, HOL_PROG_TX_ROWS, &it->tx[0][0]);
+    if (it->nsh) /* the variant for two reads the first two of each */
+        r->gl.Uniform4fv(r->pg->u_ts, 13, &it->ts[0][0]);
+}
+
+/* Execute the sorted queue, skipping redundant state changes. */
+void hol__execute(hol_render *r, const hol_frame_desc *f, const float vp[16],
+                         hol_render_stats *st)
+{
+    int ids = (f->flags & HOL_RENDER_IDS) != 0;
+    int cur_vao = 1, cur_pass = -1, cur_ref = -1, cur_mask = -1;
+    for (int i = 0; i < r->nitems; i++) {
+        const hol__item *it = r->sorted[i];
+        if (it->pass != cur_pass) {
+            cur_pass = it->pass;
+            cur_ref = cur_mask = -1;
+            st->state_changes++;
+            hol__set_pass(r, f, cur_pass, vp);
+        }
+        if (cur_pass == HOL__PASS_STENCIL) {
+            r->gl.StencilFunc(GL_ALWAYS, it->ref, 0xff);
+            st->state_changes++;
+            st->stencil_passes++;
+        } else if (cur_pass == HOL__PASS_TILE) {
+            if (it->ref != cur_ref || it->mask != cur_mask) {
+                r->gl.StencilFunc(GL_EQUAL, it->ref, it->mask);
+                cur_ref = it->ref;
+                cur_mask = it->mask;
+                st->state_changes++;
+            }
+            if (f->lighting) { /* a tile with no shadow pair: the program without */
+                int nsh = it->nl >= 0 ? it->nsh : 0;
+                hol_prog *want = hol__frame_prog(r, f, nsh > 2   ? HOL__USE_TILES4
+                                                       : nsh ? HOL__USE_TILES2
+                                                             : HOL__USE_TILES0);
+                if (want != r->pg) {
+                    r->pg = want;
+                    r->gl.UseProgram(want->prog);
+                    st->state_changes++;
+                }
+            }
+            r->gl.UniformMatrix4fv(r->pg->u_model, 1, GL_FALSE, it->model);
+            if (f->lighting)
+                hol__item_uniforms(r, it);
+            if (r->view.wedges) {
+                r->gl.Uniform1i(r->pg->u_wmode, it->branch > 0);
+                r->gl.Uniform4f(r->pg->u_wedge, it->wedge[0], it->wedge[1], it->wedge[2],
+                                it->wedge[3]);
+            }
+            if (ids) {
+                int id = it->branch + 1;
+                r->gl.Uniform4f(r->pg->u_id, (float)(id & 255) / 255.0f, (float)(id >> 8) / 255.0f,
+                                0, 1);
+            }
+            st->branches += !it->dyn; /* a firefly's sprite is no branch */
+        } else if (cur_pass == HOL__PASS_HAND || cur_pass == HOL__PASS_PANEL) {
+            r->gl.UniformMatrix4fv(r->pg->u_model, 1, GL_FALSE, it->model);
+        }
+        if (it->dyn != cur_vao) {
+            cur_vao = it->dyn;
+            r->gl.BindVertexArray(r->vao[cur_vao]);
+            st->state_changes++;
+        }
+        r->gl.DrawElements(GL_TRIANGLES, (GLsizei)it->count, GL_UNSIGNED_INT,
+                           (const void *)(uintptr_t)(it->first * sizeof(uint32_t)));
+        st->draw_calls++;
+        st->triangles += it->count / 3;
+    }
+}

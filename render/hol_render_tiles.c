@@ -1,0 +1,277 @@
+/* hol_render_tiles.c - the tile pass: one draw per branch of its tile's
+ * resident mesh, a lit tile's lights and trunk shadows in its own frame,
+ * the fireflies' sprites. */
+#include "hol_render_int.h"
+
+#include <math.h>
+#include <string.h>
+
+#include "../core/hol_world.h"
+
+/* The resident mesh of tile t: reused while the tile's content is the
+ * same, else (re)built into the least recently used slot. */
+int hol__tile_range(hol_render *r, hol_tile t, int bare, int pole, int kind,
+                           double cell_m, uint32_t *first, uint32_t *count)
+{
+    hol_tile_content c;
+    memset(&c, 0, sizeof c);
+    int have = r->desc.world && hol_world_get(r->desc.world, t, &c) == HOL_OK;
+    int free_slot = -1, lru = -1;
+    for (int i = 0; i < HOL__SLOTS; i++) {
+        hol__slot *sl = &r->slots[i];
+        if (!sl->used) {
+            if (free_slot < 0)
+                free_slot = i;
+            continue;
+        }
+        if (hol_tile_eq(sl->tile, t) && sl->bare == bare && sl->pole == pole && sl->kind == kind &&
+            sl->have == have && sl->cell_m == cell_m &&
+            (!have || !memcmp(&sl->content, &c, sizeof c))) {
+            sl->last_frame = r->frame;
+            *first = HOL__SLOT_IBASE(i);
+            *count = sl->nidx;
+            return 1;
+        }
+        if (sl->last_frame != r->frame &&
+            (lru < 0 || sl->last_frame < r->slots[lru].last_frame))
+            lru = i;
+    }
+    int k = free_slot >= 0 ? free_slot : lru;
+    if (k < 0)
+        return 0;
+    hol_mesh_clear(&r->scratch);
+    r->scratch.cap_v = HOL__SLOT_V;
+    r->scratch.cap_i = HOL__SLOT_I;
+    hol_scene_tile(r->scene, &r->scratch, t, r->desc.world, bare, pole, kind, cell_m);
+    r->scratch.cap_v = HOL__ROOM_V;
+    r->scratch.cap_i = HOL__ROOM_I;
+    if (r->scratch.overflow)
+        return 0;
+    if (k >= r->slot_cap)
+        hol__static_grow(r, k < HOL__SLOTS_MID ? HOL__SLOTS_MID : HOL__SLOTS);
+    uint32_t vbase = HOL__SLOT_VBASE(k);
+    uint32_t ibase = HOL__SLOT_IBASE(k);
+    hol__upload_scratch(r, vbase, ibase);
+    hol__slot *sl = &r->slots[k];
+    sl->used = 1;
+    sl->tile = t;
+    sl->bare = bare;
+    sl->pole = pole;
+    sl->kind = kind;
+    sl->have = have;
+    sl->cell_m = cell_m;
+    sl->content = c;
+    sl->last_frame = r->frame;
+    sl->nidx = r->scratch.ni;
+    r->tiles_built++;
+    *first = ibase;
+    *count = sl->nidx;
+    return 1;
+}
+
+/* The guide pole (objective index, or -1) and the game object kind on
+ * tile t. */
+static void hol__tile_marks(const hol_frame_desc *f, hol_tile t, int *pole, int *kind)
+{
+    *pole = -1;
+    *kind = 0;
+    for (int o = 0; o < f->nobjectives && o < HOL_RENDER_MAX_OBJECTIVES &&
+                    !(f->flags & HOL_RENDER_NO_POLES); o++)
+        if (hol_tile_eq(f->objectives[o], t)) {
+            *pole = o;
+            break;
+        }
+    for (int o = 0; o < f->nobjects && o < HOL_RENDER_MAX_OBJECTIVES; o++)
+        if (hol_tile_eq(f->object_tiles[o], t)) {
+            *kind = f->object_kinds[o];
+            break;
+        }
+    for (int o = 0; f->lighting && o < f->nlanterns && o < HOL_RENDER_MAX_LANTERNS; o++)
+        if (hol_tile_eq(f->lanterns[o], t)) {
+            *kind |= HOL_SCENE_LANTERN; /* shown at dusk and night */
+            break;
+        }
+}
+
+/* A point of the user's frame in the tile's own frame (inv: the inverse of
+ * the tile's frame), as the shader's slot takes it: x, y and z (hyperbolic)
+ * or |p|^2/2 (flat, where z is 1). */
+static void hol__tile_slot(const double inv[9], const double p[3], int flat, float out[3])
+{
+    double q[3];
+    for (int i = 0; i < 3; i++)
+        q[i] = inv[3 * i] * p[0] + inv[3 * i + 1] * p[1] + inv[3 * i + 2] * p[2];
+    out[0] = (float)q[0];
+    out[1] = (float)q[1];
+    out[2] = (float)(flat ? (q[0] * q[0] + q[1] * q[1]) / 2 : q[2]);
+}
+
+/* A spot's tangent u at light point l (user frame) in the tile's own frame
+ * (the vertex shader's U = u.xy k - u.z): u itself (its z the Lorentz
+ * part) on the hyperboloid; flat, u.z = u.xy . l, so U = u . (k - l). */
+static void hol__tile_tangent(const double inv[9], const double u[3], const double l[3],
+                              int flat, float out[3])
+{
+    double a[3], b[3];
+    for (int i = 0; i < 3; i++) {
+        a[i] = inv[3 * i] * u[0] + inv[3 * i + 1] * u[1] + (flat ? 0 : inv[3 * i + 2] * u[2]);
+        b[i] = inv[3 * i] * l[0] + inv[3 * i + 1] * l[1] + inv[3 * i + 2] * l[2];
+    }
+    out[0] = (float)a[0];
+    out[1] = (float)a[1];
+    out[2] = (float)(flat ? a[0] * b[0] + a[1] * b[1] : a[2]);
+}
+
+/* A lit tile's trunk shadow pairs (hol_light.h; the shader's hol_shadow),
+ * u_ts: [3 j + i] coefficient i (k_x, k_y, 1) of half-plane j of each pair
+ * (hol_light_wedge; an empty pair's are 0, 0, -1: no shadow); [9 + p]
+ * pair p's light slot, one-hot. */
+static void hol__item_shadows(const hol_light_frame *lf, hol__item *it, const double fr[9],
+                              const double inv[9], const int idx[], int n)
+{
+    double lp[HOL_LIGHT_PER_TILE][3];
+    for (int k = 0; k < n; k++) {
+        const double *p = lf->pos[idx[k]];
+        for (int i = 0; i < 3; i++)
+            lp[k][i] = inv[3 * i] * p[0] + inv[3 * i + 1] * p[1] + inv[3 * i + 2] * p[2];
+    }
+    hol_shadow_set ss;
+    hol_light_shadows(lf, fr, (const double(*)[3])lp, idx, n, &ss);
+    memset(it->ts, 0, sizeof it->ts);
+    it->nsh = (int8_t)ss.n;
+    for (int m = 0; m < HOL_SHADOW_TRUNKS; m++) {
+        if (m >= ss.n) {
+            it->ts[2][m] = it->ts[5][m] = it->ts[8][m] = -1;
+            continue;
+        }
+        double h[3][3];
+        hol_light_wedge(lf, lp[ss.slot[m]], ss.trunk[m], h);
+        for (int j = 0; j < 3; j++)
+            for (int i = 0; i < 3; i++)
+                it->ts[3 * j + i][m] = (float)h[j][i];
+        it->ts[9 + m][ss.slot[m]] = 1;
+    }
+}
+
+/* A lit tile's lights and the eye in the tile's own frame (u_tl: the
+ * lights' x, y, z as four-slot vectors, then the eye's point; an empty
+ * slot lies far beyond the radius), so the shader needs no matrix. */
+static void hol__item_lights(hol_render *r, hol__item *it, hol_tile t)
+{
+    double fr[9], inv[9];
+    int idx[HOL_LIGHT_PER_TILE];
+    int n = hol_light_tile(&r->lights, t, fr, idx);
+    it->nl = (int8_t)n;
+    it->nsh = 0;
+    if (n < 0)
+        return;
+    /* the inverse of the frame: Lorentz J F^T J (flat: the rigid motion's) */
+    int flat = r->lights.flat;
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            inv[3 * i + j] = fr[3 * j + i] * (!flat && (i == 2) != (j == 2) ? -1 : 1);
+    if (flat) {
+        for (int i = 0; i < 2; i++)
+            inv[3 * i + 2] = -(fr[i] * fr[2] + fr[3 + i] * fr[5]);
+        inv[6] = inv[7] = 0;
+        inv[8] = 1;
+    }
+    const hol_light_frame *lf = &r->lights;
+    for (int k = 0; k < HOL_LIGHT_PER_TILE; k++) {
+        float v[3] = {0, 0, 1e4f}, u[3] = {0, 0, 0};
+        int i = k < n ? idx[k] : -1;
+        if (i >= 0) {
+            hol__tile_slot(inv, lf->pos[i], flat, v);
+            hol__tile_tangent(inv, lf->sd[i], lf->pos[i], flat, u);
+        }
+        for (int j = 0; j < 3; j++) {
+            it->tl[j][k] = v[j];
+            it->tx[j][k] = u[j];
+        }
+        it->tx[3][k] = i >= 0 ? (float)lf->ssin[i] : -2.0f;
+        it->tx[4][k] = i >= 0 ? (float)lf->h[i] : (float)HOL_LIGHT_HEIGHT_M;
+        it->tx[5][k] = i >= 0 && !lf->ff[i] ? 1.0f : 0.0f;
+        it->tx[6][k] = i >= 0 && lf->ff[i] ? (float)HOL_LIGHT_FF_WEIGHT : 0.0f;
+    }
+    hol__tile_slot(inv, r->lights.eye, flat, it->tl[3]);
+    it->tl[3][3] = 0;
+    hol__item_shadows(lf, it, fr, inv, idx, n);
+}
+
+/* A firefly's sprite (render/hol_light.h): when tile t has one of the
+ * frame's fireflies, a small glowing blob at its place in the tile's own
+ * frame, drawn like the tile's item (its stencil, wedge, matrix and
+ * lights) from the dynamic buffer after every tile; nonzero: out of
+ * room. */
+static int hol__queue_firefly(hol_render *r, const hol__item *tile_it, hol_tile t)
+{
+    int i = hol_light_ff_of(&r->lights, t);
+    if (i < 0)
+        return 0;
+    static const uint8_t glow[3] = {HOL_FF_SPRITE_RGB};
+    const double *p = r->lights.ff_xzh[i];
+    float c[3] = {(float)p[0], (float)p[2], (float)p[1]};
+    uint32_t v0 = r->dyn.nv, i0 = r->dyn.ni;
+    hol_mesh_blob(&r->dyn, c, HOL_FF_SPRITE_M, HOL_FF_SPRITE_M, HOL_FF_SPRITE_M, glow);
+    if (r->dyn.overflow)
+        return 1;
+    for (uint32_t v = v0; v < r->dyn.nv; v++)
+        r->dyn.v[v].rgba[3] = HOL_MESH_GLOW; /* unlit, as a lantern's glass */
+    hol__item *it = hol__queue_push(r, HOL__PASS_TILE, i0, r->dyn.ni - i0);
+    if (!it)
+        return 1;
+    *it = *tile_it;
+    it->first = i0;
+    it->count = r->dyn.ni - i0;
+    it->dyn = 1;
+    it->key = 2u << 24 | 0xffu << 16 | (uint32_t)(uint16_t)tile_it->branch;
+    return 0;
+}
+
+/* Pass 2: one draw per branch of its tile's resident mesh, placed in the
+ * branch's cell, nearest cells first. */
+hol_err hol__queue_tiles(hol_render *r, const hol_frame_desc *f, int bare,
+                                double cell_m)
+{
+    const hol_view *v = &r->view;
+    for (int k = 0; k < v->nbranches; k++) {
+        const hol_view_branch *br = &v->branches[k];
+        if (br->err)
+            continue;
+        uint32_t first, count;
+        int pole, kind;
+        hol__tile_marks(f, br->state.tile, &pole, &kind);
+        if (!hol__tile_range(r, br->state.tile, bare, pole, kind, cell_m, &first, &count))
+            return HOL_ENOMEM;
+        hol__item *it = hol__queue_push(r, HOL__PASS_TILE, first, count);
+        if (!it)
+            return HOL_ENOMEM;
+        it->ref = br->ref;
+        it->mask = br->mask;
+        it->branch = (int16_t)k;
+        for (int j = 0; j < 2; j++) {
+            it->wedge[j] = (float)br->w0[j];
+            it->wedge[2 + j] = (float)br->w1[j];
+        }
+        it->key = 2u << 24 | (uint32_t)br->nsteps << 16 | (uint32_t)k;
+        if (f->lighting)
+            hol__item_lights(r, it, br->state.tile);
+        /* tile frame -> room: the tile's heading is room north turned
+         * clockwise by orient quarter turns */
+        double a = -(double)br->state.orient * 1.5707963267948966;
+        float c = (float)cos(a), s = (float)sin(a);
+        c = fabsf(c) < 1e-6f ? 0.0f : c;
+        s = fabsf(s) < 1e-6f ? 0.0f : s;
+        /* x' = x c + z s, z' = -x s + z c (counter-clockwise by a) */
+        float *m = it->model;
+        m[0] = c;
+        m[2] = -s;
+        m[8] = s;
+        m[10] = c;
+        m[12] = (float)((br->state.col + 0.5) * cell_m);
+        m[14] = (float)((br->state.row + 0.5) * cell_m);
+        if (f->lighting && !bare && hol__queue_firefly(r, it, br->state.tile))
+            return HOL_ENOMEM;
+    }
+    return HOL_OK;
+}

@@ -1,0 +1,201 @@
+// scene.frag.glsl - the fragment shader of every program (day, lit tiles,
+// lit room). The preamble render/hol_program.c builds from a program's key
+// comes first: HOL_LIT (0 day, 1 lit tiles, 2 lit room), HOL_FLAT (the
+// {4,4} grid), HOL_WEDGE (discard outside a branch's wedge), HOL_NIGHT,
+// HOL_FX (HOL_PROG_FX_*: 0 lanterns, 1 fireflies, 2 spots; a value has
+// the code of those below it: test with >=), HOL_TX_ROWS (u_tx's rows of
+// per-light values), HOL_SHD (trunk shadow pairs: 0, 2, 4), HOL_SV and
+// HOL_SW (their vector type and swizzle), and the lights' constants of
+// render/hol_light.h (HOL_LIGHT_D0_M, ...).
+// Whole-line // comments and blank lines are left out of the C string the
+// build makes (render/shaders/glsl_c.sh); "@include F" inserts F there.
+//
+// cos of HOL_LIGHT_SPOT_OUTER_DEG and _INNER_DEG (35 and 25 degrees)
+#define HOL_SPOT_COS_O 0.8191520443
+#define HOL_SPOT_COS_I 0.9063077870
+precision highp float;
+in vec3 v_nrm;
+in vec4 v_col;
+in vec3 v_wpos;
+uniform int u_mode;
+uniform vec4 u_id;
+uniform vec3 u_eye;
+uniform vec3 u_fog;
+uniform float u_fogd;
+uniform int u_lin;
+uniform vec4 u_wedge;
+uniform int u_wmode;
+#if HOL_LIT
+// lighting (hol_light.h): 1 a tile with its hyperbolic frame; 2 the
+// room's own meshes (no tile: ambient, fog by room distance)
+in vec3 v_loc;
+uniform int u_light;
+uniform int u_lonly;
+uniform float u_mpu2;
+uniform float u_eyeh;
+#if HOL_LIT == 1
+in vec4 v_L;
+in float v_Le;
+#if HOL_SHD
+in HOL_SV v_S1;
+in HOL_SV v_S2;
+in HOL_SV v_S3;
+uniform vec4 u_ts[13];
+#endif
+#if HOL_FX
+uniform vec4 u_tx[HOL_TX_ROWS];
+#endif
+// spots (HOL_PROG_FX_SPOTS) and up
+#if HOL_FX >= 2
+in vec4 v_U;
+#else
+const vec4 v_U = vec4(0.0);
+#endif
+#endif
+// the sky (docs/rendering.md#lighting): ambient, sun and lantern colours
+#if HOL_NIGHT
+const vec3 u_amb = vec3(0.07, 0.08, 0.13), u_sun = vec3(0.05, 0.06, 0.10);
+#else
+const vec3 u_amb = vec3(0.30, 0.26, 0.28), u_sun = vec3(0.28, 0.17, 0.11);
+#endif
+const vec3 u_lcol = vec3(3.0, 2.25, 1.25), u_fcol = vec3(1.4, 2.0, 0.6);
+#endif
+out vec4 o_col;
+vec4 hol_out(vec3 c) {
+  if (u_lin == 0) return vec4(c, 1.0);
+  c = clamp(c, 0.0, 1.0);
+  return vec4(mix(c / 12.92, pow((c + 0.055) / 1.055, vec3(2.4)),
+                  step(vec3(0.04045), c)), 1.0);
+}
+#if HOL_LIT == 1
+// The trunk shadows of a tile (hol_light.h): up to four light-trunk pairs.
+// Per pair, three affine functions of the Klein point (hol_light_wedge)
+// interpolated exactly: times g, sinh of the signed distance to the two
+// geodesics from the light tangent to the trunk and to the one through
+// the trunk perpendicular to the light, over the soft edge's width 2 e, so
+// the occlusion is a linear ramp 2 e wide centred on the shadow's edge;
+// u_ts[9 + p] is pair p's light slot (one-hot), so the sum gathers each
+// light's occlusions; the light is multiplied by 1 - that (0 at least).
+#if HOL_SHD
+vec4 hol_shadow(float g) {
+  HOL_SV occ = clamp(min(min(v_S1, v_S2), v_S3) * g + 0.5, 0.0, 1.0);
+#if HOL_SHD == 2
+  return 1.0 - min(u_ts[9] * occ.x + u_ts[10] * occ.y, 1.0);
+#else
+  return 1.0 - min(u_ts[9] * occ.x + u_ts[10] * occ.y + u_ts[11] * occ.z +
+                   u_ts[12] * occ.w, 1.0);
+#endif
+}
+#else
+vec4 hol_shadow(float g) {
+  return vec4(1.0);
+}
+#endif
+// all four slots at once (an empty slot lies far beyond the radius).
+// k the fragment's Klein point; hyperbolic: g = 1/sqrt(1 - |k|^2) and
+// cosh x = g L, L = -<(k, 1), l>_L = l.z - k.l.xy, so the squared chord
+// c^2 = 2 (cosh x - 1) = 2 g L - 2, sinh x = sqrt(c^2 (1 + c^2/4)),
+// x = log(cosh x + sinh x); flat: the slot's z is |l|^2/2 and
+// c^2 = |k - l|^2 = 2 L + |k|^2, x = c
+#if HOL_FX
+// per slot: u_tx[4] the light's height, [5] a lantern's weight, [6] a
+// firefly's (the second sum, ff); a spot (u_tx[3] its sin(tilt), -2:
+// none) multiplies by its cone: cos(angle) = (x <u,t> + sin(tilt) dh)
+// / d, x <u,t> = x <u,p> / sinh x = g x U / sh (flat: U), metres per
+// unit folded into u (render/hol_light.h)
+float hol_lights(vec4 L, vec4 U, float g, float o, float y, float nup, out float ff) {
+  vec4 c2 = max(2.0 * g * L + o, 0.0);
+  vec4 dh = u_tx[4] - y;
+@include falloff.glsl
+  vec4 id = inversesqrt(max(d2, 1e-8));
+  vec4 f = w * w * num / den;
+  f *= hol_shadow(g);
+// the cone: only the programs of frames with a spot (HOL_FX 2 and up)
+// spots (HOL_PROG_FX_SPOTS) and up
+#if HOL_FX >= 2
+  {
+#if HOL_FLAT
+    vec4 hz = U;
+#else
+    vec4 hz = g * x * U / sh;
+#endif
+    vec4 cone = smoothstep(vec4(HOL_SPOT_COS_O), vec4(HOL_SPOT_COS_I),
+                           (hz + u_tx[3] * dh) * id);
+    f *= mix(cone, vec4(1.0), step(u_tx[3], vec4(-1.5)));
+  }
+#endif
+  f *= 0.3 + (0.7 * max(nup, 0.0)) * max(dh, 0.0) * id;
+  ff = dot(f, u_tx[6]);
+  return dot(f, u_tx[5]);
+}
+#else
+float hol_lights(vec4 L, float g2, float o, float dh, float nup) {
+  vec4 c2 = max(g2 * L + o, 0.0);
+@include falloff.glsl
+  vec4 f = w * w * num / den * hol_shadow(0.5 * g2);
+  return dot(f, 0.3 + (0.7 * max(nup, 0.0) * max(dh, 0.0)) * inversesqrt(max(d2, 1e-8)));
+}
+#endif
+#endif
+void main() {
+#if HOL_WEDGE
+  if (u_wmode == 1) {
+    vec2 d = v_wpos.xz - u_eye.xz;
+    float e = -1e-4 * length(d);
+    if (u_wedge.x * d.y - u_wedge.y * d.x < e ||
+        d.x * u_wedge.w - d.y * u_wedge.z < e) discard;
+  }
+#endif
+  if (u_mode == 1) {
+    o_col = v_col.a > 0.5 ? u_id : vec4(0.0, 0.0, 0.0, 1.0);
+    return;
+  }
+  if (u_mode == 2) {
+    o_col = hol_out(v_col.rgb);
+    return;
+  }
+  vec3 toeye = u_eye - v_wpos;
+  vec3 n = v_nrm;
+  if (dot(n, n) < 1e-6) n = vec3(0.0, 1.0, 0.0);
+  n = normalize(n);
+  if (dot(n, toeye) < 0.0) n = -n;
+  float d = max(dot(n, normalize(vec3(0.35, 0.85, 0.40))), 0.0);
+#if HOL_LIT == 0
+  vec3 c = v_col.rgb * (0.50 + 0.60 * d);
+  float dist = length(toeye) * u_fogd;
+  float f = exp(-dist * dist);
+  o_col = hol_out(mix(u_fog, c, f));
+#else
+  float lam = 0.0, lamf = 0.0, de2 = dot(toeye, toeye);
+#if HOL_LIT == 1
+  if (u_light == 1) {
+    vec2 k = v_loc.xz;
+    float kk = dot(k, k);
+#if HOL_FLAT
+    float g = 1.0, o = kk;
+#else
+    float g = inversesqrt(max(1.0 - kk, 1e-6)), o = -2.0;
+#endif
+#if HOL_FX
+    lam = hol_lights(v_L, v_U, g, o, v_loc.y, n.y, lamf);
+#else
+    lam = hol_lights(v_L, 2.0 * g, o, HOL_LIGHT_HEIGHT_M - v_loc.y, n.y);
+#endif
+// fog: the chord 2 sinh(x/2) of the floor distance x (a function of
+// the true distance, within 4 % of it to 3 m; no log per pixel)
+    float ce2 = max(2.0 * g * v_Le + o, 0.0);
+    float dh = u_eyeh - v_loc.y;
+    de2 = ce2 * u_mpu2 + dh * dh;
+  }
+#endif
+  float f = exp(-de2 * (u_fogd * u_fogd));
+  if (u_lonly == 1) {
+    o_col = vec4(min(lam, 1.0), f, min(lamf, 1.0), 1.0);
+    return;
+  }
+  vec3 c = v_col.rgb * (u_amb + u_sun * d + u_lcol * lam + u_fcol * lamf);
+  // a lantern's glass: unlit
+  if (abs(v_col.a - 100.0 / 255.0) < 0.01) c = v_col.rgb * 1.2;
+  o_col = hol_out(mix(u_fog, c, f));
+#endif
+}
