@@ -108,6 +108,15 @@ held 16 answers.csv 23 "the last SSQ's item 7"
 resumed "last SSQ cut" "resumed at two (position 2), level 3 of 3, its questions from item 7 (attempt 3)"
 answered 3 16
 run "report of the resumed" 0 "$H" report held --out rep-held
+# P1 killed in the first SSQ, P2 plays to the end, P1 resumed: P1's SSQ is
+# in two runs of rows with P2's between, and scored whole
+held 8 answers.csv 11 "the first SSQ's item 11, again"
+run "P2 between" 0 $H play --study k.study --size 64x48 --log held --input in.txt --participant P2 --append
+resumed "SSQ cut, P2 between" "its questions from item 11 (attempt 2)"
+run "report: SSQ in two runs" 0 "$H" report held --out rep-held2
+grep -q "answered in part" err && bad "report: $(cat err)" || ok
+[ "$(grep -c '^kills,[a-z]*,ssq_total,,2,' rep-held2/stats.csv)" = 2 ] && ok ||
+    bad "SSQ scores: $(grep ssq_total rep-held2/stats.csv)"
 # a quit in a questionnaire ends the line as the attempt was logged: done
 rm -rf held
 gen 8 " p=40" >q.in
@@ -181,5 +190,9 @@ awk -F, 'FNR == 1 { next }
 for i in $(seq 1 $p); do printf 'P%s one 16\nP%s two 16\n' $i $i; done | sort >want.ssq
 cmp -s want.ssq got.ssq && ok || { bad "SSQ answers (seed $SEED):"; diff want.ssq got.ssq | head -8; }
 run "report" 0 "$H" report logs --out rep
+# every participant's SSQ scored under both conditions, none left in part
+grep -q "answered in part" err && bad "report: $(cat err)" || ok
+[ "$(grep -c "^kills,[a-z]*,ssq_total,,$p," rep/stats.csv)" = 2 ] && ok ||
+    bad "SSQ scores of $p participants: $(grep ssq_total rep/stats.csv)"
 cd logs && ls attempt-*.live *.csv.live 2>/dev/null | grep -q . && bad "live files left: $(ls)"; cd ..
 finish cli_kills

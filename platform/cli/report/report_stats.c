@@ -207,10 +207,56 @@ typedef struct rs_group {
     unsigned have[HOL_ASK_MAX_PRESETS];
 } rs_group;
 
-/* Each preset answered in full: its scores into the measures from RS_SSQ_T
- * on, in the table's order (ssq's four, tlx's raw). */
-static void flush_group(report_stats *s, rs_group *g)
+/* A preset's answers seen in part so far (a session killed in it, the rest
+ * asked by a resumed session, maybe after other participants' rows: issue
+ * 39), kept until the rest come: RS_PARTS of them in a folder. */
+#define RS_PARTS 64
+typedef struct rs_parts {
+    rs_group g[RS_PARTS];
+    int n;
+    long lost;          /* partial at the end (or beyond RS_PARTS): not scored */
+    char first[160];    /* the first of them, for the warning */
+} rs_parts;
+
+/* 1 when the group holds a preset answered in part. */
+static int group_partial(const rs_group *g)
 {
+    for (int i = 0; i < hol_ask_npresets(); i++)
+        if (g->have[i] && g->have[i] != (1u << hol_ask_preset_at(i)->nitems) - 1)
+            return 1;
+    return 0;
+}
+
+/* A group answered in part is kept in pt (its scores wait for the rest);
+ * told in pt->lost when there is no room. */
+static void keep_partial(rs_parts *pt, const rs_group *g)
+{
+    if (pt->n < RS_PARTS) {
+        pt->g[pt->n++] = *g;
+        return;
+    }
+    pt->lost++;
+}
+
+/* The rest of a group kept in part: its answers back into g. */
+static void take_partial(rs_parts *pt, rs_group *g)
+{
+    for (int i = 0; i < pt->n; i++)
+        if (!strcmp(pt->g[i].key, g->key)) {
+            memcpy(g->v, pt->g[i].v, sizeof g->v);
+            memcpy(g->have, pt->g[i].have, sizeof g->have);
+            pt->g[i] = pt->g[--pt->n];
+            return;
+        }
+}
+
+/* Each preset answered in full: its scores into the measures from RS_SSQ_T
+ * on, in the table's order (ssq's four, tlx's raw); one answered in part
+ * waits in pt. */
+static void flush_group(report_stats *s, rs_group *g, rs_parts *pt)
+{
+    if (g->key[0] && group_partial(g))
+        keep_partial(pt, g);
     hol_stats *f = &s->fix[g->cond * RS_NFIX];
     for (int i = 0, col = RS_SSQ_T; i < hol_ask_npresets(); i++) {
         const hol_ask_preset_def *p = hol_ask_preset_at(i);
@@ -222,6 +268,23 @@ static void flush_group(report_stats *s, rs_group *g)
                 hol_stats_add(&f[col], sc[k]);
         g->have[i] = 0;
     }
+}
+
+/* The groups still in part at a folder's end: counted, the first named. */
+static void parts_end(report_stats *s, const char *dir, rs_parts *pt)
+{
+    for (int i = 0; i < pt->n; i++) {
+        if (!s->partial++) {
+            char k[sizeof pt->g[i].key];
+            memcpy(k, pt->g[i].key, sizeof k);
+            for (char *c = k; *c; c++)
+                *c = *c == '\x1f' ? ' ' : *c;
+            snprintf(s->partial_first, sizeof s->partial_first, "%.60s: %.90s", dir, k);
+        }
+    }
+    s->partial += pt->lost;
+    pt->n = 0;
+    pt->lost = 0;
 }
 
 /* The Likert items by (condition, questionnaire, item): an open-addressed
@@ -263,7 +326,8 @@ static void add_likert(report_stats *s, int cond, const char *q, const char *ite
     hol_stats_add(&s->lik[i].s, v);
 }
 
-static void answer_row(report_run *r, rs_csv *c, rs_group *g, double att, double v)
+static void answer_row(report_run *r, rs_csv *c, rs_group *g, rs_parts *pt, double att,
+                       double v)
 {
     report_stats *s = r->stats;
     char key[sizeof g->key];
@@ -271,9 +335,10 @@ static void answer_row(report_run *r, rs_csv *c, rs_group *g, double att, double
     snprintf(key, sizeof key, "%s\x1f%s\x1f%.0f\x1f%s\x1f%s", field(c, A_SESSION),
              field(c, A_PART), att, q, field(c, A_WHEN));
     if (strcmp(key, g->key)) {
-        flush_group(s, g);
+        flush_group(s, g, pt);
         memcpy(g->key, key, sizeof key);
         g->cond = find_cond(r, c->dir, field(c, A_SESSION), (long)att);
+        take_partial(pt, g);
     }
     add_likert(s, g->cond, q, item, v);
     int p = hol_ask_preset_index(q, strlen(q));
@@ -292,6 +357,11 @@ static int read_answers(report_run *r, int d, rs_csv *c)
     int o = open_csv(c, r, d, "answers.csv"), got;
     if (o)
         return o > 0 ? 0 : CLI_EXIT_USAGE;
+    rs_parts *pt = calloc(1, sizeof *pt);
+    if (!pt) {
+        hol_lines_close(&c->l);
+        return CLI_EXIT_FAIL;
+    }
     memset(&g, 0, sizeof g);
     while ((got = next_row(c, names, 8)) > 0) {
         double att = 0, v = 0;
@@ -302,9 +372,11 @@ static int read_answers(report_run *r, int d, rs_csv *c)
             break;
         }
         if (likert)
-            answer_row(r, c, &g, att, v);
+            answer_row(r, c, &g, pt, att, v);
     }
-    flush_group(r->stats, &g);
+    flush_group(r->stats, &g, pt);
+    parts_end(r->stats, r->dirs[d], pt);
+    free(pt);
     hol_lines_close(&c->l);
     return got < 0 ? -got : 0;
 }
@@ -663,6 +735,9 @@ int report_stats_read(report_run *r)
     if (!st && s->lik_dropped)
         fprintf(stderr, "holonomy %s: warning: more than %d Likert items and conditions: "
                         "%ld answers not in stats.csv\n", r->cmd, RS_LIK_MAX, s->lik_dropped);
+    if (!st && s->partial)
+        fprintf(stderr, "holonomy %s: warning: %ld questionnaire(s) answered in part, not "
+                        "scored (the first: %s)\n", r->cmd, s->partial, s->partial_first);
     if (!st && (learning(r, s) || participants(r, s)))
         st = CLI_EXIT_FAIL;
     if (st == CLI_EXIT_FAIL)
