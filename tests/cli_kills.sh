@@ -111,7 +111,9 @@ run "report of the resumed" 0 "$H" report held --out rep-held
 # P1 killed in the first SSQ, P2 plays to the end, P1 resumed: P1's SSQ is
 # in two runs of rows with P2's between, and scored whole
 held 8 answers.csv 11 "the first SSQ's item 11, again"
+t0=$(date +%s%N)
 run "P2 between" 0 $H play --study k.study --size 64x48 --log held --input in.txt --participant P2 --append
+full=$(( ($(date +%s%N) - t0) / 1000000 )) # ms: a whole play on this machine, now
 resumed "SSQ cut, P2 between" "its questions from item 11 (attempt 2)"
 run "report: SSQ in two runs" 0 "$H" report held --out rep-held2
 grep -q "answered in part" err && bad "report: $(cat err)" || ok
@@ -130,7 +132,11 @@ run "ends in the SSQ" 0 $H play --study k.study --size 64x48 --input e.in --part
 grep -q "^level a done steps 1 " out && ok || bad "ended in the SSQ printed: $(cat out)"
 
 # ---- random kills --------------------------------------------------------------------------
-awk -v s="$SEED" -v n=$((KILLS * 3)) 'BEGIN { srand(s); for (i = 0; i < n; i++) printf "%.2f\n", 0.15 + rand() * 1.1 }' >delays
+# the delays: uniform over 5 % to 60 % of a whole play's time (as measured
+# above: a sanitizer build or a loaded machine is slower), so that a
+# resumed session, which has less to play, is killed again too
+awk -v s="$SEED" -v n=$((KILLS * 3)) -v f="$full" \
+    'BEGIN { srand(s); for (i = 0; i < n; i++) printf "%.3f\n", f / 1000 * (0.05 + 0.55 * rand()) }' >delays
 P="$H play --study k.study --size 64x48 --log logs --input in.txt"
 
 kills=0 asked=0 d=0 p=0
