@@ -172,7 +172,9 @@
  * theirs; time: seconds taken to answer. */
 /* answers.csv: a row per questionnaire item answered (hol_app_answer),
  * appended durably as it happens, the header when the file is new.
- * attempt: the last attempt before the questionnaire; questionnaire its
+ * attempt: the last attempt before the questionnaire (a resumed level's
+ * questions, meta.ask_item: session and attempt are meta.ask_session's
+ * and meta.ask_attempt, the attempt that played it); questionnaire its
  * name, when level|condition|study, item the item's ID, kind
  * likert|choice, value the number (likert) or the choice's text (CSV
  * quoted when it needs it), time the seconds taken. */
