@@ -1,16 +1,25 @@
 #!/bin/sh
-# cli_kills.sh - random kills in a study with pointing and the SSQ (issue
-# 39 item 3): participants of a two-condition study (a pointing question
-# after every level, the SSQ after each condition, instructions and a
-# closing screen) are killed with SIGKILL at random moments and resumed
-# with --resume until their study is over; then every answer is either kept
-# or asked again: every level has a `done` attempt with its points.csv
-# row, every condition all 16 SSQ items, no item answered twice, and
-# `report` accepts the folder. Before the fix a kill in a questionnaire or
-# the pointing question lost the answers for good (--resume went on to the
-# next level, or refused after the last).
-# HOL_KILLS: the kills (default 12; make kill-test runs 60); HOL_KILL_SEED:
-# the delays' seed (default: this shell's pid; printed on a failure).
+# cli_kills.sh - kills in a study with pointing and the SSQ (issue 39 item
+# 3): a two-condition study (a pointing question after every level, the
+# SSQ after each condition, instructions and a closing screen). Before the
+# fix a kill, quit or close in a questionnaire or the pointing question
+# lost the answers for good (--resume went on to the next level, or
+# refused after the last), `report` dropped a cut SSQ silently, and a quit
+# there printed `quit` for an attempt logged `done`.
+# - At chosen moments (the session held there by frames 30 us apart, killed
+#   once the file that shows it has its rows): the pointing question (the
+#   level is played again), an SSQ's item 11 (asked from item 11 on the same
+#   attempt, none twice; the resumed session's recording replays to the
+#   same rows), the last SSQ, an SSQ with another participant's whole study
+#   between the kill and the resume (scored whole by `report`); a quit in
+#   an SSQ (printed `done`; asked again on resume).
+# - At random moments: participants killed with SIGKILL after random
+#   delays and resumed with --resume until their study is over; then every
+#   level has its pointing answer, every condition its 16 SSQ items (none
+#   twice), `report` takes the folder and scores every SSQ.
+# HOL_KILLS: the random kills (default 12, as make test and make san-cli
+# run it; make kill-test runs 60); HOL_KILL_SEED: the delays' seed
+# (default: this shell's pid; printed with a failure).
 # The play is scripted (--input): a cycle of frames that, whatever the
 # state, walks the level's one step, answers the pointing question, the end
 # screen, a screen or an item (the middle mark), so a resumed session takes
@@ -79,11 +88,11 @@ held() {
     [ "$(wc -l <"held/$2")" = "$3" ] && ok || bad "$4: not held there: $(wc -l <"held/$2") lines in $2"
 }
 # ---- kills at chosen moments -------------------------------------------------------------
-# resumed NAME WANT: P1 resumed in held/ with the whole input, to the end;
-# stderr's order line ends with WANT
+# resumed NAME WANT [REC]: P1 resumed in held/ with the whole input, to the
+# end (recorded to REC if given); stderr's order line ends with WANT
 resumed() {
     run "$1" 0 $H play --study k.study --size 64x48 --log held --input in.txt --participant P1 \
-        --resume && { grep -q "$2\$" err && ok || bad "$1: $(cat err), want '$2'"; }
+        --resume ${3:+--record "$3"} && { grep -q "$2\$" err && ok || bad "$1: $(cat err), want '$2'"; }
 }
 # answered ATTEMPT N: held/answers.csv has N rows of attempt ATTEMPT, each
 # item once
@@ -100,9 +109,18 @@ resumed "pointing lost" "resumed at one (position 1), level 1 of 3"
     bad "points after the resume: $(cat held/points.csv)"
 # the first SSQ, 10 items answered: asked from item 11 on attempt 2
 held 8 answers.csv 11 "the first SSQ's item 11"
-resumed "SSQ cut" "resumed at one (position 1), level 2 of 3, its questions from item 11 (attempt 2)"
+cp -R held pre
+resumed "SSQ cut" "resumed at one (position 1), level 2 of 3, its questions from item 11 (attempt 2)" r.rec
 answered 2 16
 answered 3 16
+# its recording (an `ask` line) replayed into the folder as it was: the
+# same answers and rows, byte for byte
+grep -q "^ask [^ ]* 2 11\$" r.rec && ok || bad "the recording's ask line: $(grep -v '^[0-9L]' r.rec)"
+run "replay of the resumed" 0 "$H" replay r.rec --log pre --append
+for f in answers.csv points.csv summary.csv; do
+    cmp -s held/$f pre/$f && ok || bad "the replay's $f differs"
+done
+rm -rf pre r.rec
 # the last level's SSQ (6 answered): asked again, not "nothing to resume"
 held 16 answers.csv 23 "the last SSQ's item 7"
 resumed "last SSQ cut" "resumed at two (position 2), level 3 of 3, its questions from item 7 (attempt 3)"
@@ -126,6 +144,9 @@ run "quit in the SSQ" 0 $H play --study k.study --size 64x48 --log held --input 
 grep -q "^level a done steps 1 " out && ok || bad "quit in the SSQ printed: $(cat out)"
 [ "$(awk -F, 'NR > 1 { print $(NF-3) }' held/summary.csv | tr '\n' ' ')" = "done done " ] && ok ||
     bad "quit in the SSQ: $(cat held/summary.csv)"
+# and the level is not finished: --resume asks the rest
+resumed "resumed after a quit" "its questions from item 11 (attempt 2)"
+answered 2 16
 # input that ends with an item on screen: done, not garbage
 gen 5 >e.in
 run "ends in the SSQ" 0 $H play --study k.study --size 64x48 --input e.in --participant P2
