@@ -55,7 +55,7 @@ int hol_light_ff_of(const hol_light_frame *lf, hol_tile t)
 }
 
 /* Light i at the point of (x, z) metres, h up, in the frame fr of a tile. */
-static void hol__put(hol_light_frame *o, const double fr[9], double x, double z, double h)
+static void hol__light_put(hol_light_frame *o, const double fr[9], double x, double z, double h)
 {
     double p[3];
     hol_light_point(o, x, z, p);
@@ -113,7 +113,7 @@ static void hol__fireflies(const hol_frame_desc *f, const struct hol_world *w,
         if (hol_world_peek(w, t, &c) || !hol_light_firefly(t, &c, o->cell_m, f->time_s, xzh) ||
             hol_hyper_frame(f->user.tile, f->user.orient, t, fr))
             continue;
-        hol__put(o, fr, xzh[0], xzh[1], xzh[2]);
+        hol__light_put(o, fr, xzh[0], xzh[1], xzh[2]);
         o->ff_tile[o->nff] = t;
         memcpy(o->ff_xzh[o->nff++], xzh, sizeof xzh);
         o->ff[o->n++] = 1;
@@ -459,7 +459,7 @@ hol_err hol_light_prepare(const hol_frame_desc *f, const struct hol_world *w,
         double fr[9];
         if (hol_hyper_frame(f->user.tile, f->user.orient, f->lanterns[i], fr))
             continue;
-        hol__put(out, fr, 0, 0, HOL_LIGHT_HEIGHT_M);
+        hol__light_put(out, fr, 0, 0, HOL_LIGHT_HEIGHT_M);
         hol__spot(out, fr, f->lantern_spot[i]);
         if (out->ssin[out->n] > -1.5)
             out->fx = 2;

@@ -8,7 +8,11 @@
  *   bad UTF-8 as \xHH per byte, a backslash kept, valid UTF-8 kept;
  * - a field of the logs (HOL_REPORT_TEXT - 1 bytes, all control bytes) is
  *   not cut; a longer text is cut at REPORT_ESCAPE_MAX bytes cleaned,
- *   never inside an escape.
+ *   never inside an escape;
+ * - spreadsheet safety (issue 39 finding 13): a text that starts with
+ *   = + - @ (a tab or CR are \x09, \x0d once cleaned) and is no number is
+ *   written quoted with a ' before it; a number (-12.5) as it is; the page
+ *   never gets the quote.
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -135,6 +139,33 @@ static void test_cut(void **state)
     free(big);
 }
 
+static void test_csv_formula(void **state)
+{
+    (void)state;
+    csv_is("=1+1.lvl", 0, "\"'=1+1.lvl\",");
+    csv_is("@SUM(A1).lvl", 0, "\"'@SUM(A1).lvl\",");
+    csv_is("-h.lvl", 1, "\"'-h.lvl\"\n");
+    csv_is("-A1", 0, "\"'-A1\",");
+    csv_is("+x", 0, "\"'+x\",");
+    csv_is("-", 0, "\"'-\",");
+    csv_is("=cmd|' /C calc'!A0", 0, "\"'=cmd|' /C calc'!A0\",");
+    csv_is("=a\"b,c", 0, "\"'=a\"\"b,c\",");
+    csv_is("-12.5", 0, "-12.5,");
+    csv_is("+3", 0, "+3,");
+    csv_is("-.5", 0, "-.5,");
+    csv_is("-1e-3", 0, "-1e-3,");
+    csv_is("-1e", 0, "\"'-1e\",");
+    csv_is("-inf", 0, "\"'-inf\",");
+    csv_is("-0x10", 0, "\"'-0x10\",");
+    csv_is("\t=x", 0, "\\x09=x,"); /* cleaned first: no longer a formula */
+    csv_is("a=b", 0, "a=b,");
+    csv_is("P-1", 0, "P-1,");
+    html_is("=1+1", "=1+1");
+    assert_true(report_csv_number("12") && report_csv_number("-12.5") && report_csv_number("5."));
+    assert_false(report_csv_number("") || report_csv_number("-") || report_csv_number(".") ||
+                 report_csv_number("1.2.3") || report_csv_number("1 "));
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -142,6 +173,7 @@ int main(void)
         cmocka_unit_test(test_html_entities),
         cmocka_unit_test(test_both_clean_first),
         cmocka_unit_test(test_cut),
+        cmocka_unit_test(test_csv_formula),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

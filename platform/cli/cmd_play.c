@@ -86,8 +86,8 @@ const char *const cli_play_usage =
     "                  appending to DIR; positions keep their numbers\n"
     PLAY_ENV_USAGE
     PLAY_TRACK_USAGE
-    "  --participant ID  the participant (1..63 letters, digits, '.', '_', '-'),\n"
-    "                  in the summary and the recording\n"
+    "  --participant ID  the participant (1..63 letters, digits, '.', '_', '-';\n"
+    "                  not first '-'), in the summary and the recording\n"
     "  --record FILE   record the session (replay with 'holonomy replay'),\n"
     "                  written as FILE.live and renamed to FILE at the end\n"
     "  --frames N      stop after N frames\n"

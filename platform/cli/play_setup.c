@@ -371,9 +371,13 @@ void play_out_close(play_out *po)
 
 int play_participant(const char *cmd, const char *id)
 {
-    if (hol_rec_id_ok(id))
+    if (hol_rec_id_ok(id) && id[0] != '-')
         return 0;
-    cli_error(cmd, 0, "--participant '%.40s' is not 1..63 letters, digits, '.', '_', '-'", id);
+    if (id[0] == '-')
+        cli_error(cmd, 0, "--participant '%.40s' starts with '-' (a spreadsheet reads it as a "
+                  "formula)", id);
+    else
+        cli_error(cmd, 0, "--participant '%.40s' is not 1..63 letters, digits, '.', '_', '-'", id);
     return 1;
 }
 

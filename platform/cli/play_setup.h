@@ -119,7 +119,8 @@ typedef struct play_out {
 int play_out_open(const char *cmd, const char *log_dir, int append, const char *rec_path,
                   play_out *po);
 void play_out_close(play_out *po);
-/* --participant ID: 0 when ID is one (hol_rec_id_ok), else reported, 1. */
+/* --participant ID: 0 when ID is one (hol_rec_id_ok) that does not start
+ * with '-' (a spreadsheet's formula: docs/report.md), else reported, 1. */
 int play_participant(const char *cmd, const char *id);
 int play_session_open(const char *cmd, play_out *po, const hol_level *levels, int nlevels,
                       const hol_rec_meta *meta, int append, hol_session **out);

@@ -62,8 +62,11 @@ static int own_name(const char *n)
         return 1;
     if (n[0] == '.' && strstr(n, ".holonomy-tmp."))
         return 1;
-    return l == 16 && !strncmp(n, "attempt-", 8) && strspn(n + 8, "0123456789") == 4 &&
-           !strcmp(n + 12, ".png");
+    /* attempt-NNNN.png: four digits, or the five of the last number a
+     * report writes (attempt-10000.png) */
+    size_t digits = l > 12 ? strspn(n + 8, "0123456789") : 0;
+    return !strncmp(n, "attempt-", 8) && l == 12 + digits && !strcmp(n + 8 + digits, ".png") &&
+           (digits == 4 || (digits == 5 && n[8] != '0' && atoi(n + 8) <= REPORT_MAX_ATTEMPTS));
 }
 
 /* An entry of DIR with a report's name must be a regular file: a folder,

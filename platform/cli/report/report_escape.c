@@ -5,12 +5,45 @@
 
 #include "../../../core/hol_text.h"
 
+int report_csv_number(const char *s)
+{
+    static const char dig[] = "0123456789";
+    const char *p = s + (*s == '-' || *s == '+');
+    size_t a = strspn(p, dig), b = 0;
+    p += a;
+    if (*p == '.') {
+        b = strspn(p + 1, dig);
+        p += 1 + b;
+    }
+    if (!a && !b)
+        return 0;
+    if (*p == 'e' || *p == 'E') {
+        p += 1 + (p[1] == '-' || p[1] == '+');
+        size_t k = strspn(p, dig);
+        if (!k)
+            return 0;
+        p += k;
+    }
+    return !*p;
+}
+
 void report_csv(FILE *f, const char *s, int last)
 {
     char clean[REPORT_ESCAPE_MAX + 1], buf[2 * REPORT_ESCAPE_MAX + 3];
     hol_report_clean(s, clean, sizeof clean);
-    hol_text_csv(clean, strlen(clean), buf, sizeof buf);
-    fputs(buf, f);
+    if (clean[0] && strchr("=+-@\t\r", clean[0]) && !report_csv_number(clean)) {
+        /* a formula to a spreadsheet: quoted, a ' before it (OWASP) */
+        fputs("\"'", f);
+        for (const char *c = clean; *c; c++) {
+            if (*c == '"')
+                fputc('"', f);
+            fputc(*c, f);
+        }
+        fputc('"', f);
+    } else {
+        hol_text_csv(clean, strlen(clean), buf, sizeof buf);
+        fputs(buf, f);
+    }
     fputc(last ? '\n' : ',', f);
 }
 

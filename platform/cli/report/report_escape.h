@@ -14,6 +14,14 @@
  *   when it holds a comma, a double quote, CR or LF or a leading or
  *   trailing space, each double quote doubled), then ',' or, when last is
  *   not 0, '\n'.
+ * - Spreadsheet safety (OWASP's CSV injection rule): a text whose cleaned
+ *   form starts with '=', '+', '-', '@', a tab or CR and is not a number
+ *   (report_csv_number) would be a formula to a spreadsheet; report_csv
+ *   writes it quoted with a single quote before it ("'=1+1.lvl"), so a
+ *   spreadsheet shows it as text. A number ("-12.5", "+3", "1e-3") stays
+ *   as it is.
+ * - report_csv_number: 1 when s is a decimal number as a spreadsheet reads
+ *   one: [+-]D[.D][e[+-]D] (digits before or after the point), else 0.
  * - report_html writes it as HTML text (in an element or an attribute
  *   value): & < > " ' as &amp; &lt; &gt; &quot; &#39;, every other byte
  *   as it is.
@@ -29,6 +37,7 @@
 #define REPORT_ESCAPE_MAX (4 * HOL_REPORT_TEXT + 7) /* cleaned bytes kept */
 
 void report_csv(FILE *f, const char *s, int last);
+int report_csv_number(const char *s);
 void report_html(FILE *f, const char *s);
 
 #endif

@@ -16,6 +16,7 @@
 #include "../../file/hol_lines.h"
 #include "../cli.h"
 #include "report_escape.h"
+#include "report_instr.h"
 #include "report_stats_impl.h"
 
 const char *const rs_measure[RS_NFIX] = {
@@ -69,8 +70,8 @@ static int order_attempts(const report_run *r, report_stats *s)
     return 0;
 }
 
-/* The condition of (dir, session, attempt): its attempt's, else "none". */
-static int find_cond(const report_run *r, int dir, const char *session, long attempt)
+/* The attempt (an index in r->att) of (dir, session, attempt), -1 none. */
+static int find_att(const report_run *r, int dir, const char *session, long attempt)
 {
     const report_stats *s = r->stats;
     int lo = 0, hi = r->natt;
@@ -81,13 +82,20 @@ static int find_cond(const report_run *r, int dir, const char *session, long att
         if (!c)
             c = t->a.attempt < attempt ? -1 : t->a.attempt > attempt;
         if (!c)
-            return s->att_cond[s->order[m]];
+            return s->order[m];
         if (c < 0)
             lo = m + 1;
         else
             hi = m;
     }
-    return s->none;
+    return -1;
+}
+
+/* The condition of (dir, session, attempt): its attempt's, else "none". */
+static int find_cond(const report_run *r, int dir, const char *session, long attempt)
+{
+    int i = find_att(r, dir, session, attempt);
+    return i < 0 ? r->stats->none : r->stats->att_cond[i];
 }
 
 /* ---- CSV files of the instruments, read by column name ---- */
@@ -99,6 +107,7 @@ typedef struct rs_csv {
     hol_lines l;
     int col[16];
     int ncol;
+    int nhead; /* the header's fields: every row has as many */
     const char *f[HOL_REPORT_MAX_COLS];
     int nf;
     char buf[REPORT_LINE_MAX + 8];
@@ -112,8 +121,10 @@ static int bad(rs_csv *c, const char *msg)
 }
 
 /* Next data row into c->f (0 at the end, 1 a row, else -exit status);
- * the header's columns (names) found first. */
-static int next_row(rs_csv *c, const char *const *names, int nnames)
+ * the header's columns (names; the first nreq required, the rest -1 when
+ * absent) found first; a row of another field count than the header's
+ * (a torn row, the next one glued on) is refused. */
+static int next_row(rs_csv *c, const char *const *names, int nnames, int nreq)
 {
     char *s;
     size_t n;
@@ -126,14 +137,19 @@ static int next_row(rs_csv *c, const char *const *names, int nnames)
         if (hol_report_csv_split(s, n, c->buf, sizeof c->buf, c->f, HOL_REPORT_MAX_COLS, &c->nf,
                                  c->err))
             return -bad(c, c->err);
+        if (c->ncol && c->nf != c->nhead) {
+            snprintf(c->err, sizeof c->err, "%d fields where the header has %d", c->nf, c->nhead);
+            return -bad(c, c->err);
+        }
         if (c->ncol)
             return 1;
+        c->nhead = c->nf;
         for (int k = 0; k < nnames; k++) {
             c->col[k] = -1;
             for (int i = 0; i < c->nf; i++)
                 if (!strcmp(c->f[i], names[k]))
                     c->col[k] = i;
-            if (c->col[k] < 0) {
+            if (c->col[k] < 0 && k < nreq) {
                 snprintf(c->err, sizeof c->err, "no column '%s'", names[k]);
                 return -bad(c, c->err);
             }
@@ -145,17 +161,19 @@ static int next_row(rs_csv *c, const char *const *names, int nnames)
 
 static const char *field(const rs_csv *c, int k)
 {
-    return c->col[k] < c->nf ? c->f[c->col[k]] : "";
+    return c->col[k] >= 0 && c->col[k] < c->nf ? c->f[c->col[k]] : "";
 }
 
-/* A number field: 1 and *v, 0 empty; -1 not a number. */
-static int num(const char *s, double *v)
+/* An optional column's field, NULL when the file lacks the column. */
+static const char *field_or_null(const rs_csv *c, int k)
 {
-    if (!*s)
-        return 0;
-    char *end;
-    *v = strtod(s, &end);
-    return *end || *v != *v ? -1 : 1;
+    return c->col[k] >= 0 ? field(c, k) : NULL;
+}
+
+/* The attempt column: a whole number, 0 (before any) or more. */
+static int attempt_of(rs_csv *c, int k, long *out)
+{
+    return report_instr_whole(field(c, k), 0, LONG_MAX, out);
 }
 
 static int open_csv(rs_csv *c, const report_run *r, int d, const char *name)
@@ -170,29 +188,34 @@ static int open_csv(rs_csv *c, const report_run *r, int d, const char *name)
     return cli_open_lines(r->cmd, "log", c->path, REPORT_LINE_MAX, &c->l) ? -1 : 0;
 }
 
-enum { P_SESSION, P_ATTEMPT, P_ETRUE, P_EFLAT };
+enum { P_SESSION, P_ATTEMPT, P_ETRUE, P_EFLAT, P_POINTED, P_TRUE, P_FLAT };
 
-static int read_points(report_run *r, int d, rs_csv *c)
+/* points.csv's rows (the file open in c->l): 0, or the exit status. */
+static int points_rows(report_run *r, rs_csv *c)
 {
-    static const char *const names[] = {"session", "attempt", "error_true", "error_flat"};
+    static const char *const names[] = {"session", "attempt", "error_true", "error_flat",
+                                        "pointed", "true", "flat"}; /* the last 3 optional */
     report_stats *s = r->stats;
-    int o = open_csv(c, r, d, "points.csv"), got;
-    if (o)
-        return o > 0 ? 0 : CLI_EXIT_USAGE;
-    while ((got = next_row(c, names, 4)) > 0) {
-        double att = 0, e[2] = {0, 0};
-        int k0 = num(field(c, P_ATTEMPT), &att), k1 = num(field(c, P_ETRUE), &e[0]),
-            k2 = num(field(c, P_EFLAT), &e[1]);
-        if (k0 != 1 || k1 < 0 || k2 < 0) {
-            got = -bad(c, k0 != 1 ? "attempt is not a number" : "an error is not a number");
+    int got;
+    while ((got = next_row(c, names, 7, 4)) > 0) {
+        long att;
+        int has[2];
+        double e[2];
+        const char *bear[3] = {field_or_null(c, P_POINTED), field_or_null(c, P_TRUE),
+                               field_or_null(c, P_FLAT)};
+        if (!attempt_of(c, P_ATTEMPT, &att)) {
+            got = -bad(c, "attempt is not a whole number (0 or more)");
             break;
         }
-        int ci = find_cond(r, d, field(c, P_SESSION), (long)att);
+        if (report_instr_point(field(c, P_ETRUE), field(c, P_EFLAT), bear, has, e, c->err)) {
+            got = -bad(c, c->err);
+            break;
+        }
+        int ci = find_cond(r, c->dir, field(c, P_SESSION), att);
         for (int k = 0; k < 2; k++)
-            if ((k ? k2 : k1) == 1)
+            if (has[k])
                 hol_stats_add(&s->fix[ci * RS_NFIX + RS_ERR_TRUE + k], e[k] < 0 ? -e[k] : e[k]);
     }
-    hol_lines_close(&c->l);
     return got < 0 ? -got : 0;
 }
 
@@ -205,17 +228,25 @@ typedef struct rs_group {
     int cond;
     double v[HOL_ASK_MAX_PRESETS][HOL_ASK_PRESET_ITEMS]; /* by the presets' table */
     unsigned have[HOL_ASK_MAX_PRESETS];
+    report_instr_items items; /* the questionnaire's so far: none twice */
+    int att;                  /* its attempt (r->att), -1 none */
+    int level_dir, level_ok;  /* the level in r->level: its folder, parsed */
+    char level_sha[HOL_REPORT_TEXT]; /* and name ("" none read) */
 } rs_group;
 
 /* A preset's answers seen in part so far (a session killed in it, the rest
  * asked by a resumed session, maybe after other participants' rows: issue
  * 39), kept until the rest come: RS_PARTS of them in a folder. */
 #define RS_PARTS 64
+typedef struct rs_part {
+    char key[4 * HOL_REPORT_TEXT];
+    double v[HOL_ASK_MAX_PRESETS][HOL_ASK_PRESET_ITEMS];
+    unsigned have[HOL_ASK_MAX_PRESETS];
+} rs_part;
 typedef struct rs_parts {
-    rs_group g[RS_PARTS];
+    rs_part g[RS_PARTS];
     int n;
-    long lost;          /* partial at the end (or beyond RS_PARTS): not scored */
-    char first[160];    /* the first of them, for the warning */
+    long lost; /* partial beyond RS_PARTS: not scored */
 } rs_parts;
 
 /* 1 when the group holds a preset answered in part. */
@@ -231,11 +262,14 @@ static int group_partial(const rs_group *g)
  * told in pt->lost when there is no room. */
 static void keep_partial(rs_parts *pt, const rs_group *g)
 {
-    if (pt->n < RS_PARTS) {
-        pt->g[pt->n++] = *g;
+    if (pt->n == RS_PARTS) {
+        pt->lost++;
         return;
     }
-    pt->lost++;
+    rs_part *k = &pt->g[pt->n++];
+    memcpy(k->key, g->key, sizeof k->key);
+    memcpy(k->v, g->v, sizeof k->v);
+    memcpy(k->have, g->have, sizeof k->have);
 }
 
 /* The rest of a group kept in part: its answers back into g. */
@@ -326,20 +360,84 @@ static void add_likert(report_stats *s, int cond, const char *q, const char *ite
     hol_stats_add(&s->lik[i].s, v);
 }
 
-static void answer_row(report_run *r, rs_csv *c, rs_group *g, rs_parts *pt, double att,
-                       double v)
+/* The item of questionnaire q its attempt's level asks (level-HASH.txt
+ * in the row's folder, read once for the rows that follow), NULL when
+ * that level or the item is not at hand. */
+static const hol_app_question *asked(report_run *r, rs_group *g, int dir, const char *q,
+                                     const char *item)
+{
+    const char *sha = g->att >= 0 ? r->att[g->att].a.level_sha256 : "";
+    if (!sha[0] || strchr(sha, '/') || !r->dirs)
+        return NULL;
+    if (g->level_dir != dir || strcmp(g->level_sha, sha)) {
+        char path[4400];
+        struct stat sb;
+        uint8_t *data = NULL;
+        size_t size = 0;
+        hol_level_err le;
+        g->level_dir = dir;
+        snprintf(g->level_sha, sizeof g->level_sha, "%s", sha);
+        snprintf(path, sizeof path, "%s/level-%s.txt", r->dirs[dir], sha);
+        g->level_ok = !lstat(path, &sb) && S_ISREG(sb.st_mode) &&
+                      !hol_file_read_all(path, HOL_LEVEL_TEXT_MAX + 1, &data, &size) &&
+                      !hol_level_parse((const char *)data, size, &r->level.lvl, &le);
+        free(data);
+    }
+    const hol_app_level *L = &r->level.lvl;
+    for (int k = 0; g->level_ok && k < L->nasks; k++)
+        for (int i = L->asks[k].first; !strcmp(L->asks[k].name, q) &&
+                                        i < L->asks[k].first + L->asks[k].n; i++)
+            if (i >= 0 && i < L->nquestions && !strcmp(L->questions[i].id, item))
+                return &L->questions[i];
+    return NULL;
+}
+
+/* A row of a questionnaire of the study's own against the item its level
+ * asks (when at hand): the same kind, a Likert value on its marks. 0, or
+ * -1 and c->err. */
+static int level_item(report_run *r, rs_csv *c, rs_group *g, int likert, double v)
+{
+    const char *q = field(c, A_Q), *item = field(c, A_ITEM);
+    if (hol_ask_preset_index(q, strlen(q)) >= 0)
+        return 0; /* a preset's marks are its table's (report_instr_answer) */
+    const hol_app_question *it = asked(r, g, c->dir, q, item);
+    if (!it)
+        return 0;
+    if (likert != (it->kind == HOL_APP_LIKERT)) {
+        snprintf(c->err, sizeof c->err, "column kind: its level asks %.40s's %.40s as a %s", q,
+                 item, likert ? "choice" : "likert");
+        return -1;
+    }
+    if (!likert || (v >= it->lo && v <= it->hi && ((long)v - it->lo) % it->step == 0))
+        return 0;
+    snprintf(c->err, sizeof c->err, "column value: '%.0f' is not one of %.40s's marks %d..%d "
+             "(its level's question)", v, item, it->lo, it->hi);
+    return -1;
+}
+
+/* A checked row (report_instr_answer) into its questionnaire: 0, or -1
+ * and c->err when the questionnaire has its item already or its level
+ * asks the item otherwise. */
+static int answer_row(report_run *r, rs_csv *c, rs_group *g, rs_parts *pt, long att, int likert,
+                      double v)
 {
     report_stats *s = r->stats;
     char key[sizeof g->key];
     const char *q = field(c, A_Q), *item = field(c, A_ITEM);
-    snprintf(key, sizeof key, "%s\x1f%s\x1f%.0f\x1f%s\x1f%s", field(c, A_SESSION),
+    snprintf(key, sizeof key, "%s\x1f%s\x1f%ld\x1f%s\x1f%s", field(c, A_SESSION),
              field(c, A_PART), att, q, field(c, A_WHEN));
     if (strcmp(key, g->key)) {
         flush_group(s, g, pt);
         memcpy(g->key, key, sizeof key);
-        g->cond = find_cond(r, c->dir, field(c, A_SESSION), (long)att);
+        g->att = find_att(r, c->dir, field(c, A_SESSION), att);
+        g->cond = g->att < 0 ? s->none : s->att_cond[g->att];
+        g->items.n = 0;
         take_partial(pt, g);
     }
+    if (report_instr_item_new(&g->items, q, item, c->err) || level_item(r, c, g, likert, v))
+        return -1;
+    if (!likert)
+        return 0;
     add_likert(s, g->cond, q, item, v);
     int p = hol_ask_preset_index(q, strlen(q));
     int k = hol_ask_preset_item(hol_ask_preset_at(p), item);
@@ -347,38 +445,74 @@ static void answer_row(report_run *r, rs_csv *c, rs_group *g, rs_parts *pt, doub
         g->v[p][k] = v;
         g->have[p] |= 1u << k;
     }
+    return 0;
 }
 
-static int read_answers(report_run *r, int d, rs_csv *c)
+/* answers.csv's rows (the file open in c->l): 0, or the exit status;
+ * questionnaires answered in part wait in pt (parts_end). */
+static int answers_rows(report_run *r, rs_csv *c, rs_parts *pt)
 {
     static const char *const names[] = {"session", "participant", "attempt", "questionnaire",
                                         "when", "item", "kind", "value"};
     rs_group g;
-    int o = open_csv(c, r, d, "answers.csv"), got;
-    if (o)
-        return o > 0 ? 0 : CLI_EXIT_USAGE;
-    rs_parts *pt = calloc(1, sizeof *pt);
-    if (!pt) {
-        hol_lines_close(&c->l);
-        return CLI_EXIT_FAIL;
-    }
+    int got;
     memset(&g, 0, sizeof g);
-    while ((got = next_row(c, names, 8)) > 0) {
-        double att = 0, v = 0;
-        int likert = !strcmp(field(c, A_KIND), "likert");
-        int k0 = num(field(c, A_ATTEMPT), &att), k1 = likert ? num(field(c, A_VALUE), &v) : 0;
-        if (k0 != 1 || k1 < 0 || (likert && k1 == 0)) {
-            got = -bad(c, k0 != 1 ? "attempt is not a number" : "a likert value is not a number");
+    g.level_dir = -1;
+    while ((got = next_row(c, names, 8, 8)) > 0) {
+        long att;
+        double v;
+        if (!attempt_of(c, A_ATTEMPT, &att)) {
+            got = -bad(c, "attempt is not a whole number (0 or more)");
             break;
         }
-        if (likert)
-            answer_row(r, c, &g, pt, att, v);
+        if (report_instr_answer(field(c, A_Q), field(c, A_WHEN), field(c, A_ITEM),
+                                field(c, A_KIND), field(c, A_VALUE), &v, c->err) ||
+            answer_row(r, c, &g, pt, att, !strcmp(field(c, A_KIND), "likert"), v)) {
+            got = -bad(c, c->err);
+            break;
+        }
     }
     flush_group(r->stats, &g, pt);
-    parts_end(r->stats, r->dirs[d], pt);
+    parts_end(r->stats, r->dirs ? r->dirs[c->dir] : c->path, pt);
+    return got < 0 ? -got : 0;
+}
+
+/* An instrument file open in c->l read (answers 1: answers.csv, else
+ * points.csv), then closed. */
+static int instrument(report_run *r, rs_csv *c, int answers)
+{
+    rs_parts *pt = answers ? calloc(1, sizeof *pt) : NULL;
+    int st = !answers ? points_rows(r, c) : pt ? answers_rows(r, c, pt) : CLI_EXIT_FAIL;
     free(pt);
     hol_lines_close(&c->l);
-    return got < 0 ? -got : 0;
+    return st;
+}
+
+static int read_instrument(report_run *r, int d, rs_csv *c, const char *name)
+{
+    int o = open_csv(c, r, d, name);
+    if (o)
+        return o > 0 ? 0 : CLI_EXIT_USAGE;
+    return instrument(r, c, !strcmp(name, "answers.csv"));
+}
+
+int report_stats_instrument(report_run *r, int d, const char *path, hol_lines *l)
+{
+    rs_csv *c = malloc(sizeof *c);
+    if (!c) {
+        hol_lines_close(l);
+        cli_error(r->cmd, 0, "out of memory");
+        return CLI_EXIT_FAIL;
+    }
+    memset(c, 0, sizeof *c - sizeof c->buf);
+    c->r = r;
+    c->dir = d;
+    c->l = *l;
+    snprintf(c->path, sizeof c->path, "%s", path);
+    const char *base = strrchr(path, '/');
+    int st = instrument(r, c, !strcmp(base ? base + 1 : path, "answers.csv"));
+    free(c);
+    return st;
 }
 
 /* ---- learning curves and the per-participant table ---- */
@@ -727,9 +861,9 @@ int report_stats_read(report_run *r)
     rs_csv *c = malloc(sizeof *c);
     st = c ? 0 : CLI_EXIT_FAIL;
     for (int d = 0; !st && d < r->ndirs; d++) {
-        st = read_points(r, d, c);
+        st = read_instrument(r, d, c, "points.csv");
         if (!st)
-            st = read_answers(r, d, c);
+            st = read_instrument(r, d, c, "answers.csv");
     }
     free(c);
     if (!st && s->lik_dropped)

@@ -10,7 +10,12 @@
  *   present (a missing one is no error; a malformed one is refused naming
  *   its file and line: exit 2, one line). The row's condition is its
  *   attempt's (session, attempt) in that folder's summary.csv; attempt 0
- *   or an attempt not in the summary: the condition "none".
+ *   or an attempt not in the summary: the condition "none". A row has
+ *   the header's field count, and its values their documented ranges
+ *   (report_instr.h); a questionnaire (its consecutive rows of one
+ *   session, participant, attempt, name and when) no item twice; an item
+ *   of the study's own as its attempt's level (level-HASH.txt, when
+ *   there) asks it: the same kind, a Likert value on its marks.
  * - Means are over COMPLETED attempts (end "done") outside practice only
  *   (core/hol_stats.h: SD, 95 % t interval, n). Pointing errors: |error|
  *   in degrees, every answer with a bearing. SSQ and TLX: one score per
@@ -28,9 +33,15 @@
 #include <stddef.h>
 #include <stdio.h>
 
+#include "../../file/hol_lines.h"
 #include "report.h"
 
 int report_stats_read(report_run *r);
+/* One instrument file (path ending in answers.csv, else points.csv),
+ * open in *l, read into r->stats as report_stats_read reads LOGDIR d's
+ * (report_stats_read has made r->stats); *l is closed. 0, or the exit
+ * status after one line (fuzz/fuzz_report_instr.c). */
+int report_stats_instrument(report_run *r, int d, const char *path, hol_lines *l);
 int report_stats_write(const report_run *r);
 void report_stats_html(FILE *f, const report_run *r);
 void report_stats_free(report_run *r);
