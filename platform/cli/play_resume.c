@@ -208,7 +208,7 @@ static int resume_answers(const char *cmd, const char *dir, int answers, const c
     size_t len;
     while (hol_lines_next(&l, &s, &len) > 0) {
         if (hol_report_csv_split(s, len, buf, sizeof buf, f, 64, &nf, err))
-            continue;
+            nf = 0; /* a row that cannot be read is none (report names it) */
         if (++line == 1) {
             for (int c = 0; c < ncol; c++) {
                 col[c] = -1;
