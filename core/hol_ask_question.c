@@ -111,9 +111,14 @@ hol_err hol_ask_parse_question(const char *line, size_t len, hol_app_question *q
         return HOL__BAD(HOL_EPARSE, "question %s choice needs \"TEXT\" and 2..%d \"CHOICE\"s "
                                     "(TEXT 1..95 characters, a choice 1..23)",
                         q->id, HOL_APP_MAX_CHOICES);
-    for (int i = 4; i < nf; i++)
+    for (int i = 4; i < nf; i++) {
         if (hol__text(kind[i], w[i], n[i], q->choices[q->nchoices++], HOL_APP_LABEL_MAX))
             return HOL__BAD(HOL_EPARSE, "question %s: choice %d is not a quoted 1..23 "
                                         "characters", q->id, i - 3);
+        for (int j = 0; j + 1 < q->nchoices; j++)
+            if (!strcmp(q->choices[j], q->choices[q->nchoices - 1]))
+                return HOL__BAD(HOL_EARG, "question %s: choice %d is choice %d again ('%s')",
+                                q->id, i - 3, j + 1, q->choices[j]);
+    }
     return HOL_OK;
 }

@@ -59,6 +59,10 @@ static hol_err hol__ask_items(hol__lp *p, hol_app_ask *a, const char *ids)
         if (k == p->ndefs)
             return hol__lfail(p, HOL_EARG, p->line, "ask %s: no question '%.*s' before it",
                               a->name, (int)(n < 32 ? n : 32), s);
+        for (int j = a->first; j < L->nquestions; j++)
+            if (!strcmp(L->questions[j].id, p->defs[k].id))
+                return hol__lfail(p, HOL_EARG, p->line, "ask %s lists '%s' twice", a->name,
+                                  p->defs[k].id);
         if (L->nquestions >= HOL_APP_MAX_QUESTIONS)
             return hol__lfail(p, HOL_ENOMEM, p->line, "more than %d items to ask",
                               HOL_APP_MAX_QUESTIONS);
@@ -88,6 +92,10 @@ hol_err hol__key_ask(hol__lp *p, char **f, int nf)
     if (a->when < 0)
         return hol__lfail(p, HOL_EPARSE, p->line, "ask %s: '%.20s' is not level, condition or "
                           "study", a->name, f[2]);
+    for (int k = 0; k < L->nasks; k++) /* asked once a time (issue 39) */
+        if (L->asks[k].when == a->when && !strcmp(L->asks[k].name, a->name))
+            return hol__lfail(p, HOL_EARG, p->line, "ask %s %s is given twice", a->name,
+                              hol_ask_when_name(a->when));
     /* the IDs: the raw line after the key, NAME and WHEN */
     const char *r = p->raw;
     for (int k = 0; k < 3; k++) {

@@ -42,7 +42,15 @@
  *   attempt-NNN.live (killed before it reached the disk) is dropped: its
  *   files removed (hol_session_dropped). A summary.csv holding only a first
  *   part of its header is made again; one whose last row the kill cut is
- *   cut to its whole rows. So recovery always leaves a folder `report`
+ *   cut to its whole rows, and the files of the attempts that row would
+ *   have kept (finished files above the highest attempt of its whole rows,
+ *   with no live file) are removed: an attempt's files stay only with its
+ *   row. Every other append-only log (events.csv, points.csv, answers.csv,
+ *   the platform's environment.csv, each finished steps-NNN.csv) is cut
+ *   to its whole rows too, before anything is added to it
+ *   (hol_session_repaired says what). A summary.csv another program saved
+ *   (a UTF-8 byte order mark, CR LF line ends) is read as the logs' own.
+ *   So recovery always leaves a folder `report`
  *   and `replay --append` accept. Without desc.append a folder that holds any
  *   log file (summary.csv, steps-*, head-*, attempt-*.live) is refused
  *   (HOL_EARG): a session never mixes its files into another's unasked.
@@ -257,6 +265,11 @@ long hol_session_frames(const hol_session *s);
  * dropped (killed before their attempt-NNN.live reached the disk). */
 int hol_session_recovered(const hol_session *s);
 int hol_session_dropped(const hol_session *s);
+/* What recovery repaired at create, as one line's text ("" nothing): the
+ * logs it cut to their whole rows (summary.csv, events.csv, points.csv,
+ * answers.csv, environment.csv, finished steps-NNN.csv) and the files it
+ * removed with a summary row it cut. The platform prints it. */
+const char *hol_session_repaired(hol_session *s);
 const char *hol_session_message(const hol_session *s);
 
 /* 1 when name is one of a log folder's files (summary.csv, steps-NNN.csv,

@@ -80,6 +80,9 @@ struct hol_session {
     char *tail;              /* the summary rows' last three fields */
     size_t tail_len;
     int old_cols;            /* summary.csv has HOL_SESSION_SUMMARY_COLUMNS_OLD */
+    char cut[160];           /* recovery: the logs cut to whole rows ("a, b") */
+    char gone[160];          /* recovery: the files of a cut row removed */
+    char repaired[512];      /* hol_session_repaired's line */
     hol_err failed;          /* the first sink failure (sticky) */
     int failed_told;
     char msg[256];

@@ -1,7 +1,8 @@
 /* hol_session_recover.c - a log folder's earlier files: a folder with logs
- * is refused without append; with append, attempts a killed session left
- * unfinished get their summary row (end killed) and their files, and the
- * new attempts are numbered on (see hol_session.h). */
+ * is refused without append; with append, every append-only log is cut to
+ * its whole rows (a cut summary row's files removed with it), attempts a
+ * killed session left unfinished get their summary row (end killed) and
+ * their files, and the new attempts are numbered on (see hol_session.h). */
 #include "hol_session_impl.h"
 
 #include <stdio.h>
@@ -78,28 +79,49 @@ static void hol__scan_name(void *ctx, const char *name)
 typedef struct hol__lines {
     long complete;      /* complete lines (ending in LF) */
     uint64_t good;      /* bytes up to the end of the last complete line */
+    uint64_t size;      /* bytes in all */
     char last[1024];    /* the last complete line (cut at 1023 bytes) */
     size_t last_len;
-    int first_is;       /* the first line equals `want` */
-    const char *want;
+    int first_is;       /* the first line is `want` (1) or `want_old` (2) */
+    const char *want, *want_old;
     long has_field;     /* a line whose 5th field is `field` (0: none asked) */
     const char *field;
+    long max_attempt;   /* the highest 5th field of the lines after the first */
 } hol__lines;
+
+/* 1 when line is want, after a UTF-8 byte order mark and before a CR
+ * (a summary.csv another program saved: read as the logs' own). */
+static int hol__is_line(const char *line, size_t n, const char *want)
+{
+    if (n >= 3 && !memcmp(line, "\xef\xbb\xbf", 3))
+        line += 3, n -= 3;
+    if (n && line[n - 1] == '\r')
+        n--;
+    return n == strlen(want) && !memcmp(line, want, n);
+}
 
 static void hol__line_done(hol__lines *l, const char *line, size_t n)
 {
     if (l->complete == 0 && l->want)
-        l->first_is = n == strlen(l->want) && !memcmp(line, l->want, n);
-    if (l->field && !l->has_field) {
+        l->first_is = hol__is_line(line, n, l->want)           ? 1
+                      : l->want_old && hol__is_line(line, n, l->want_old) ? 2
+                                                                          : 0;
+    if (l->complete > 0) {
         /* the fifth field: the first four (ids, a time) hold no comma */
         const char *p = line, *end = line + n;
         for (int c = 0; c < 4 && p; c++) {
             p = memchr(p, ',', (size_t)(end - p));
             p = p ? p + 1 : NULL;
         }
-        size_t fl = strlen(l->field);
-        if (p && (size_t)(end - p) > fl && !memcmp(p, l->field, fl) && p[fl] == ',')
+        size_t fl = l->field ? strlen(l->field) : 0;
+        if (l->field && !l->has_field && p && (size_t)(end - p) > fl &&
+            !memcmp(p, l->field, fl) && p[fl] == ',')
             l->has_field = l->complete + 1;
+        long v = 0;
+        for (; p && p < end && *p >= '0' && *p <= '9' && v < 99999999; p++)
+            v = v * 10 + (*p - '0');
+        if (v > l->max_attempt)
+            l->max_attempt = v;
     }
     l->complete++;
     l->last_len = n < sizeof l->last ? n : sizeof l->last - 1;
@@ -129,6 +151,7 @@ static hol_err hol__read_lines(const hol_sink *k, const char *name, hol__lines *
             }
         }
         off += got;
+        l->size = off;
         if (got < sizeof chunk)
             return HOL_OK;
     }
@@ -411,18 +434,103 @@ static int hol__header_part(hol_session *s)
     return got < sizeof buf && !memcmp(buf, HOL_SESSION_SUMMARY_COLUMNS, got);
 }
 
-/* 1 when summary.csv's first line is HOL_SESSION_SUMMARY_COLUMNS_OLD
- * (sets old_cols: the rows are written in those columns). */
-static int hol__old_header(hol_session *s)
+/* name added to the list of what recovery repaired (s->cut: "a, b"). */
+static void hol__note(char *list, size_t cap, const char *name)
 {
-    static const char want[] = HOL_SESSION_SUMMARY_COLUMNS_OLD "\n";
-    char buf[sizeof want];
-    size_t got = 0;
-    if (s->log->read(s->log->user, "summary.csv", 0, buf, sizeof want - 1, &got) ||
-        got != sizeof want - 1 || memcmp(buf, want, got))
+    size_t n = strlen(list);
+    if (n + strlen(name) + 8 < cap)
+        snprintf(list + n, cap - n, "%s%s", n ? ", " : "", name);
+    else if (n >= 3 && n + 5 < cap && strcmp(list + n - 3, "..."))
+        snprintf(list + n, cap - n, ", ...");
+}
+
+/* name cut to its whole lines when a kill cut its last row (bytes after
+ * its last LF); 1 when it was cut. */
+static int hol__cut_torn(hol_session *s, const char *name, hol__lines *l)
+{
+    hol_err e = hol__read_lines(s->log, name, l);
+    if (e && e != HOL_EOPEN)
+        hol__fail_sink(s, s->log, e, "read", name);
+    if (e || l->size == l->good)
         return 0;
-    s->old_cols = 1;
+    hol__cut(s, name, l->good);
+    if (s->failed)
+        return 0;
+    hol__note(s->cut, sizeof s->cut, name);
     return 1;
+}
+
+/* Finished attempt files (steps-, head-, track-NNN.csv): a steps file
+ * whose last row a kill cut, and the files of an attempt above `above`
+ * (the highest attempt of summary.csv's whole rows, when recovery cut its
+ * last row; -1: none) that has no live file: its row was the cut one. */
+typedef struct hol__fin {
+    hol_session *s;
+    const hol__scan *sc;
+    int above;
+    char torn[8][64], gone[8][64];
+    int ntorn, ngone, more;
+} hol__fin;
+
+static void hol__fin_name(void *ctx, const char *name)
+{
+    hol__fin *f = ctx;
+    for (int k = 0; k < HOL__PAT_DONE; k++) {
+        long a = hol__numbered(name, hol__pat[k][0], hol__pat[k][1]);
+        int live = 0;
+        for (int i = 0; a >= 0 && i < f->sc->nlive; i++)
+            live |= f->sc->live[i] == a;
+        if (a < 0 || live || f->more)
+            continue;
+        if (f->above >= 0 && a > f->above) {
+            if (f->ngone == 8)
+                f->more = 1;
+            else
+                snprintf(f->gone[f->ngone++], 64, "%s", name);
+        } else if (k == 0) {
+            hol__lines l;
+            memset(&l, 0, sizeof l);
+            if (hol__read_lines(f->s->log, name, &l) || l.size == l.good)
+                continue;
+            if (f->ntorn == 8)
+                f->more = 1;
+            else
+                snprintf(f->torn[f->ntorn++], 64, "%s", name);
+        }
+    }
+}
+
+/* Every append-only log cut to its whole rows before rows are added to
+ * it (the names in s->cut), and an attempt's files kept only with its
+ * row: those of the row recovery cut from summary.csv removed (in
+ * s->gone). */
+static void hol__cut_logs(hol_session *s, const hol__scan *sc, int above)
+{
+    static const char *const logs[4] = {"events.csv", "points.csv", "answers.csv",
+                                        "environment.csv"};
+    for (int k = 0; k < 4 && !s->failed; k++) {
+        hol__lines l;
+        memset(&l, 0, sizeof l);
+        hol__cut_torn(s, logs[k], &l);
+    }
+    hol__fin f;
+    do {
+        memset(&f, 0, sizeof f);
+        f.s = s, f.sc = sc, f.above = above;
+        hol_err e = s->failed ? HOL_OK : s->log->list(s->log->user, hol__fin_name, &f);
+        if (e)
+            hol__fail_sink(s, s->log, e, "list", "the log folder");
+        for (int i = 0; i < f.ntorn && !s->failed; i++) {
+            hol__lines l;
+            memset(&l, 0, sizeof l);
+            hol__cut_torn(s, f.torn[i], &l);
+        }
+        for (int i = 0; i < f.ngone && !s->failed; i++) {
+            if (s->log->remove(s->log->user, f.gone[i]))
+                hol__fail_sink(s, s->log, HOL_EIO, "remove", f.gone[i]);
+            hol__note(s->gone, sizeof s->gone, f.gone[i]);
+        }
+    } while (f.more && !s->failed);
 }
 
 static int hol__cmp_int(const void *a, const void *b)
@@ -451,22 +559,25 @@ hol_err hol__log_open(hol_session *s, int append)
     hol__lines l;
     memset(&l, 0, sizeof l);
     l.want = HOL_SESSION_SUMMARY_COLUMNS;
+    l.want_old = HOL_SESSION_SUMMARY_COLUMNS_OLD;
     e = hol__read_lines(s->log, "summary.csv", &l);
     if (e && e != HOL_EOPEN)
         return hol__fail_sink(s, s->log, e, "read", "summary.csv");
-    s->old_cols = 0;
+    s->old_cols = l.first_is == 2;
+    int above = -1; /* the attempts above it lost their row to the cut */
     if (e == HOL_OK && l.complete == 0 && hol__header_part(s)) {
         e = HOL_EOPEN; /* a kill before its header reached the disk: made again */
-    } else if (e == HOL_OK && !l.first_is && !hol__old_header(s)) {
+    } else if (e == HOL_OK && !l.first_is) {
         snprintf(s->msg, sizeof s->msg, "the log folder's summary.csv has other columns "
                  "(another version's logs): choose another folder");
         return HOL_EVERSION;
-    } else if (e == HOL_OK) {
-        char probe[1];
-        size_t got = 0;
-        if (!s->log->read(s->log->user, "summary.csv", l.good, probe, 1, &got) && got)
-            hol__cut(s, "summary.csv", l.good); /* a row cut by the kill */
+    } else if (e == HOL_OK && l.size > l.good) {
+        hol__cut(s, "summary.csv", l.good); /* a row cut by the kill */
+        hol__note(s->cut, sizeof s->cut, "summary.csv");
+        above = (int)l.max_attempt;
     }
+    if (!s->failed)
+        hol__cut_logs(s, &sc, above);
     if (e == HOL_EOPEN) {
         /* a new summary.csv: its header first */
         hol__out o;

@@ -433,6 +433,19 @@ int hol_session_dropped(const hol_session *s)
     return s->dropped;
 }
 
+const char *hol_session_repaired(hol_session *s)
+{
+    if (!s->cut[0] && !s->gone[0])
+        return "";
+    snprintf(s->repaired, sizeof s->repaired, "%s%s%s%s%s%s",
+             s->cut[0] ? "the log folder's rows a kill cut removed (" : "", s->cut,
+             s->cut[0] ? ")" : "", s->cut[0] && s->gone[0] ? "; " : "",
+             s->gone[0] ? "the files of the attempt whose summary row was cut removed with it: "
+                        : "",
+             s->gone);
+    return s->repaired;
+}
+
 const char *hol_session_message(const hol_session *s)
 {
     return s->msg;

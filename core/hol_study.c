@@ -32,6 +32,7 @@ typedef struct hol__sp {
     hol_study *s;
     hol_level_err *err;
     long line, study_line, rule_line;
+    long allow_line; /* `allow minimap-toggle`'s line, 0: none yet */
     int cur; /* the condition being read, -1 before the first */
 } hol__sp;
 
@@ -209,6 +210,10 @@ static hol_err hol__allow(hol__sp *p, const char *w, size_t n)
     if (!hol__is(w, n, "minimap-toggle"))
         return hol__fail(p->err, HOL_EPARSE, p->line, 0, "allow '%.*s' is not minimap-toggle",
                          (int)(n < 30 ? n : 30), w);
+    if (p->allow_line)
+        return hol__fail(p->err, HOL_EARG, p->line, p->allow_line,
+                         "allow minimap-toggle is given twice");
+    p->allow_line = p->line;
     p->s->allow_minimap_toggle = 1;
     return HOL_OK;
 }
@@ -294,6 +299,11 @@ static hol_err hol__questionnaire(hol__sp *p, const char *rest, const char *end)
             return hol__fail(p->err, HOL_EPARSE, p->line, 0,
                              "questionnaire %s after '%.*s': level, condition or study", name,
                              (int)(n3 < 20 ? n3 : 20), w3);
+        for (int k = 0; k < s->nasks; k++)
+            if (s->asks[k].when == when && !strcmp(s->asks[k].name, name))
+                return hol__fail(p->err, HOL_EARG, p->line, s->asks[k].line,
+                                 "questionnaire %s after %s is given twice", name,
+                                 hol_ask_when_name(when));
         if (s->nasks >= HOL_APP_MAX_ASKS)
             return hol__fail(p->err, HOL_ENOMEM, p->line, 0, "more than %d questionnaires asked",
                              HOL_APP_MAX_ASKS);
@@ -303,6 +313,11 @@ static hol_err hol__questionnaire(hol__sp *p, const char *rest, const char *end)
         a->line = p->line;
         return HOL_OK;
     }
+    if (n3 && !n4 && hol_ask_when(w3, n3) >= 0)
+        return hol__fail(p->err, HOL_EPARSE, p->line, 0,
+                         "questionnaire %s %.*s %.*s: a questionnaire is placed with 'after "
+                         "level|condition|study'", name, (int)(n2 < 20 ? n2 : 20), w2,
+                         (int)n3, w3);
     if (hol_ask_preset(w, n, NULL, 0))
         return hol__fail(p->err, HOL_EARG, p->line, 0, "questionnaire %s is a preset: it has its "
                          "items", name);
@@ -328,6 +343,13 @@ static hol_err hol__questionnaire(hol__sp *p, const char *rest, const char *end)
             return hol__fail(p->err, HOL_EARG, p->line, 0,
                              "questionnaire %s: no question '%.*s' before it", name,
                              (int)(k < 32 ? k : 32), id);
+        const char *q2 = it, *id2;
+        size_t k2;
+        while ((k2 = hol__field(&q2, end, &id2)) > 0 && id2 < id)
+            if (k2 == k && !memcmp(id2, id, k))
+                return hol__fail(p->err, HOL_EARG, p->line, 0,
+                                 "questionnaire %s lists '%.*s' twice", name,
+                                 (int)(k < 32 ? k : 32), id);
     }
     (void)items;
     hol_study_questionnaire *d = &s->questionnaires[s->nquestionnaires++];
@@ -436,7 +458,7 @@ hol_err hol_study_parse(const char *text, size_t len, hol_study *out, hol_level_
         return hol__fail(err, HOL_ENOMEM, 0, 0, "longer than %d bytes", HOL_STUDY_TEXT_MAX);
     *out = zero;
     memcpy(out->text, text, len);
-    hol__sp p = {out, err, 0, 0, 0, -1};
+    hol__sp p = {out, err, 0, 0, 0, 0, -1};
     const char *s = out->text, *end = out->text + len;
     hol_err e = HOL_OK;
     if (len >= 3 && !memcmp(s, "\xef\xbb\xbf", 3))
@@ -633,6 +655,7 @@ typedef struct hol__compose {
     size_t n, cap;
     long *origin;
     long nlines, max_lines;
+    const char *stage; /* what is being added: the overflow's cause */
 } hol__compose;
 
 static int hol__put_line(hol__compose *c, const char *s, size_t n, long origin)
@@ -735,11 +758,14 @@ static int hol__put_asks(const hol_study *s, int c, int i, int position, hol__co
 /* The screen lines of level i after its text. 1 when they do not fit. */
 static int hol__put_screens(const hol_study *s, int c, int i, int position, hol__compose *cp)
 {
+    cp->stage = "questions asked after it";
     if (hol__put_asks(s, c, i, position, cp))
         return 1;
     const hol_study_span *a = hol__instr_of(s, c, i), *b = hol__closing_of(s, c, i, position);
+    cp->stage = "instructions";
     if (a && hol__put_line(cp, s->text + a->off, a->len, -a->line))
         return 1;
+    cp->stage = "closing";
     return b && hol__put_line(cp, s->text + b->off, b->len, -b->line);
 }
 
@@ -768,6 +794,7 @@ static int hol__compose_text(const hol_study *s, int c, int i, int position, con
     if (c < 0)
         return hol__put_screens(s, c, i, position, cp);
     int used = 0;
+    cp->stage = "set lines";
     for (int j = 0; j < s->nsets; j++)
         used += hol__in_force(s, c, j);
     if (used) {
@@ -803,9 +830,26 @@ static void hol__map_err(const hol__compose *cp, long cond_line, hol_level_err *
     }
 }
 
-hol_err hol_study_make_level(const hol_study *s, int i, int position, const char *file,
-                             size_t len, const char *name, hol_level *out, hol_level_err *err,
-                             int *out_in_study)
+/* An error on a study's set line says "set: " as the line's own check
+ * does (issue 39: `set place lantern` errors found once composed). */
+static void hol__set_prefix(const hol_study *s, int in_study, hol_level_err *err)
+{
+    int on_set = 0;
+    for (int j = 0; in_study && j < s->nsets; j++)
+        on_set |= s->sets[j].line == err->line;
+    if (!on_set || !strncmp(err->msg, "set", 3))
+        return;
+    size_t n = strlen(err->msg);
+    if (n > sizeof err->msg - 6)
+        n = sizeof err->msg - 6;
+    memmove(err->msg + 5, err->msg, n);
+    memcpy(err->msg, "set: ", 5);
+    err->msg[n + 5] = 0;
+}
+
+static hol_err hol__make_at(const hol_study *s, int i, int position, const char *file,
+                           size_t len, const char *name, hol_level *out, hol_level_err *err,
+                           int *out_in_study)
 {
     char buf[HOL_LEVEL_TEXT_MAX + 1];
     long origin[HOL_LEVEL_TEXT_MAX / 2 + 2];
@@ -816,7 +860,8 @@ hol_err hol_study_make_level(const hol_study *s, int i, int position, const char
     const char *cname = c < 0 ? HOL_STUDY_PRACTICE : s->conditions[c].name;
     if (!name)
         name = cname;
-    hol__compose cp = {buf, 0, sizeof buf, origin, 0, (long)(sizeof origin / sizeof origin[0])};
+    hol__compose cp = {buf, 0, sizeof buf, origin, 0, (long)(sizeof origin / sizeof origin[0]),
+                       "level file's lines"};
     /* a practice level is the file as it is, unless it carries the
      * practice's instructions */
     int composed = c >= 0 || hol__instr_of(s, c, i);
@@ -825,8 +870,7 @@ hol_err hol_study_make_level(const hol_study *s, int i, int position, const char
         *out_in_study = 1;
         return hol__fail(err, HOL_ENOMEM, at, 0,
                          "%s %s: its level with the %s is longer than %d bytes",
-                         c >= 0 ? "condition" : "the", cname,
-                         c >= 0 ? "set lines" : "instructions", HOL_LEVEL_TEXT_MAX);
+                         c >= 0 ? "condition" : "the", cname, cp.stage, HOL_LEVEL_TEXT_MAX);
     }
     const char *t = composed ? buf : file ? file : "";
     size_t tl = composed ? cp.n : file ? len : 0;
@@ -834,9 +878,53 @@ hol_err hol_study_make_level(const hol_study *s, int i, int position, const char
     if (e) {
         if (composed)
             hol__map_err(&cp, at, err, out_in_study);
+        hol__set_prefix(s, *out_in_study, err);
         return e;
     }
     snprintf(out->condition, sizeof out->condition, "%s", cname);
     out->position = c < 0 ? 0 : position;
     return HOL_OK;
+}
+
+/* What a condition's level carries depends on its position only through
+ * being the last (the closing, the asks `after study`): the positions
+ * condition c can take, one not the last and the last (fixed: its own). */
+static int hol__positions(const hol_study *s, int c, int out[2])
+{
+    int n = s->nconditions;
+    if (s->rule == HOL_STUDY_FIXED || n < 2) {
+        out[0] = s->rule == HOL_STUDY_FIXED ? c + 1 : n;
+        return 1;
+    }
+    out[0] = 1, out[1] = n;
+    return 2;
+}
+
+hol_err hol_study_make_level(const hol_study *s, int i, int position, const char *file,
+                             size_t len, const char *name, hol_level *out, hol_level_err *err,
+                             int *out_in_study)
+{
+    int c = i >= 0 && i < s->nlevels ? hol_study_level_condition(s, i) : -1, at[2];
+    int n = c >= 0 ? hol__positions(s, c, at) : 0, last = s->nconditions;
+    for (int k = 0; k < n; k++) {
+        if ((at[k] == last) == (position == last))
+            continue; /* the participant's own position is made last, below */
+        hol_err e = hol__make_at(s, i, at[k], file, len, name, out, err, out_in_study);
+        hol_level_err mine;
+        int mine_in = 0;
+        /* an error at the position given too is its own, unmarked */
+        hol_err e2 = e ? hol__make_at(s, i, position, file, len, name, out, &mine, &mine_in)
+                       : HOL_OK;
+        if (e2) {
+            *err = mine, *out_in_study = mine_in;
+            return e2;
+        }
+        if (e) {
+            size_t m = strlen(err->msg);
+            snprintf(err->msg + m, sizeof err->msg - m, " (at position %d of %d, %s)", at[k],
+                     last, at[k] == last ? "the last" : "not the last");
+            return e;
+        }
+    }
+    return hol__make_at(s, i, position, file, len, name, out, err, out_in_study);
 }

@@ -212,7 +212,14 @@ uint64_t hol_study_participant_number(const char *id);
  * HOL_STUDY_PRACTICE, and position 0 whatever is given). On error *err names a
  * line of the level file (*out_in_study 0) or of the study (1: a set line,
  * or the condition's line when the composed level is too long or
- * lacks a line), as hol_level_make's errors do. */
+ * lacks a line), as hol_level_make's errors do; a level too long names
+ * what made it so (its set lines, the questions asked after it, the
+ * instructions or the closing). A condition's level is checked at every
+ * position its condition can take (issue 39: what it carries, the closing
+ * and the asks `after study`, depends on being the last), so a study is
+ * refused for every participant or for none: an error at another position
+ * than the one given ends " (at position P of N, the last)" or "(..., not
+ * the last)". out is the level at the position given. */
 hol_err hol_study_make_level(const hol_study *s, int i, int position, const char *file,
                              size_t len, const char *name, hol_level *out, hol_level_err *err,
                              int *out_in_study);

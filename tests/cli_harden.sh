@@ -229,7 +229,7 @@ for v in "--size|+8x8" "--size| 8x8" "--frames| 2" "--frames|+2" "--yaw|0x1p3" "
   run "render ${v%%|*} '${v#*|}'" 2 "$H" render --bare --stats "${v%%|*}" "${v#*|}"
   one_line "render ${v%%|*} '${v#*|}'" "${v%%|*} '"
 done
-run "render --yaw -.5e-1 --eye 1.5,1e0,1.5" 0 "$H" render --bare --stats --yaw -.5e-1 --eye 1.5,1e0,1.5
+run "render --yaw -0.5e-1 --eye 1.5,1e0,1.5" 0 "$H" render --bare --stats --yaw -0.5e-1 --eye 1.5,1e0,1.5
 run "seed with a leading blank" 2 "$H" world --seed " 5" --quiet
 run "seed with a second 0x" 2 "$H" world --seed 0x0x5 --quiet
 run "count with a newline" 2 "$H" world --capacity "$(printf '\n8192')" --quiet

@@ -30,7 +30,7 @@ run "bad sky" 2 "$H" render $V --lighting noon --out "$T/x.png" &&
 run "sky twice" 2 "$H" render $V --lighting dusk --lighting=night --out "$T/x.png" &&
     one_line "sky twice" "--lighting is given twice"
 run "bad lantern" 2 "$H" render $V --lantern Nx --out "$T/x.png" &&
-    one_line "bad lantern" "--lantern 'Nx' is not a tile address"
+    one_line "bad lantern" "--lantern 'Nx' is not a canonical address of {4,5}"
 run "lantern in {4,8}" 0 "$H" render --tiling 4,8 --lighting night --lantern Nrr --size 32x24 \
     --out "$T/q8.png"
 set -- render $V --lighting night

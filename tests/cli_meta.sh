@@ -69,4 +69,20 @@ sed -n 2p l2/environment.csv | grep -q "^[^,]*,,,,desktop," && ok || bad "level 
 # replay: no environment row (the environment is the live one)
 run "replay" 0 "$H" replay r.rec --log rl
 [ ! -e rl/environment.csv ] && ok || bad "replay wrote environment.csv"
+# issue 39 finding 5: 16 valid values of 200 bytes that escaping makes
+# 4 times longer keep their row (the row is sized for the worst case), and
+# the options column holds the whole command line (13,000 bytes escaped)
+B=$(printf '%200s' '' | tr ' ' '\\'); C=$(printf '%200s' '' | tr ' ' '\001')
+set --
+for i in 0 1 2 3 4 5 6 7; do set -- "$@" --meta "b$i=$B" --meta "c$i=$C"; done
+run "16 escaped metas" 0 "$H" play s/f.lvl --size 64x48 --log l3 --input in1 "$@"
+[ "$(wc -l <l3/environment.csv 2>/dev/null)" = 2 ] &&
+    sed -n 2p l3/environment.csv | grep -q 'c7=\(\\x01\)\{200\}$' &&
+    ok || bad "16 escaped metas: no whole environment row ($(cat "$T/err"))"
+# a command line the options column cannot hold is refused before play,
+# never cut: exit 2, one line
+run "long command line" 2 "$H" play "$(printf '%8500s' '' | sed 's| |./|g')s/f.lvl" \
+    --size 64x48 --log l4 --input in1
+one_line "long command line" "environment.csv's options column holds at most"
+[ ! -e l4 ] && ok || bad "a refused play made l4"
 finish cli_meta

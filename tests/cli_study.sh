@@ -65,7 +65,7 @@ run "missing level" 2 "$H" play --study "$T/s/bad4.study" --participant 1 &&
 # a set line in conflict with the level file: the study's line
 printf 'study c\ncondition a\nlevel lv/flag.lvl\nset place rock Wrf\n' >"$T/s/bad5.study"
 run "set conflict" 2 "$H" play --study "$T/s/bad5.study" --participant 1 &&
-    one_line "set conflict" "bad5.study: line 4: the placement on Wrf conflicts with the flag"
+    one_line "set conflict" "bad5.study: line 4: set: the placement on Wrf conflicts with the flag"
 
 if ! command -v Xvfb >/dev/null 2>&1; then
     echo "note: no Xvfb here: the study's sessions are not played"

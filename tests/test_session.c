@@ -8,7 +8,8 @@
  * Checked: a folder holding logs is refused without append, numbered on
  * with it; rows reach a flush within a second of input time; a killed
  * attempt is finished by the next session as `killed` (rows cut to whole
- * lines, no duplicate row when the kill came after its summary row); an
+ * lines, no duplicate row when the kill came after its summary row); torn
+ * append-only logs cut, a cut summary row's files removed with it; an
  * attempt's files appear with its row; head rows fall on exact 10 Hz
  * times, interpolated between frames against a linear walk; visible cues;
  * aborted; the recording reads back to the same levels and replays to the
@@ -290,6 +291,52 @@ static void test_killed_at_begin(void **state)
     assert_string_equal(mem_text(&m, "steps-005.csv"), HOL_SESSION_STEP_COLUMNS "\n");
     assert_string_equal(mem_text(&m, "head-005.csv"), HOL_SESSION_HEAD_COLUMNS "\n");
     assert_null(mem_find(&m, "attempt-005.live"));
+    mem_free(&m);
+}
+
+/* A torn last row in every append-only log (issue 39, findings 7 and 14):
+ * each cut to its whole rows before the next session appends, and the
+ * files of the attempt whose summary row was cut removed with it; said in
+ * hol_session_repaired. */
+static void test_torn_logs_cut(void **state)
+{
+    (void)state;
+    static mem_sink m;
+    mem_init(&m);
+    for (int k = 0; k < 2; k++) {
+        hol_session *s = make(&g_flag, 1, &m, NULL, k);
+        assert_string_equal(hol_session_repaired(s), "");
+        walk(s, "W", 0, NULL, NULL);
+        assert_int_equal(hol_session_finish(s), HOL_OK);
+        hol_session_destroy(s);
+    }
+    assert_non_null(mem_find(&m, "steps-002.csv"));
+    mem_stream *sum = mem_find(&m, "summary.csv");
+    sum->len -= 20; /* attempt 2's row cut */
+    sum->kept = sum->len;
+    static const char torn[] = HOL_SESSION_ANSWER_COLUMNS "\nS,P1,1,q,level,a,likert,3,1.0\nS,P1";
+    int h;
+    mem_open(&m, "answers.csv", 0, &h);
+    mem_write(&m, h, torn, sizeof torn - 1);
+    mem_flush(&m, h, 1);
+    mem_close(&m, h);
+    hol_session *s = make(&g_flag, 1, &m, NULL, 1);
+    assert_non_null(s);
+    const char *said = hol_session_repaired(s);
+    assert_non_null(strstr(said, "(summary.csv, answers.csv)"));
+    assert_non_null(strstr(said, "steps-002.csv"));
+    assert_null(mem_find(&m, "steps-002.csv"));
+    assert_null(mem_find(&m, "head-002.csv"));
+    assert_null(mem_find(&m, "track-002.csv"));
+    assert_non_null(mem_find(&m, "steps-001.csv"));
+    assert_int_equal(count_lines(mem_text(&m, "summary.csv")), 2);
+    assert_int_equal(count_lines(mem_text(&m, "answers.csv")), 2);
+    const char *a = mem_text(&m, "answers.csv");
+    assert_int_equal(a[strlen(a) - 1], '\n');
+    walk(s, "W", 0, NULL, NULL); /* numbered on past the removed attempt */
+    assert_int_equal(hol_session_finish(s), HOL_OK);
+    hol_session_destroy(s);
+    assert_non_null(mem_find(&m, "steps-003.csv"));
     mem_free(&m);
 }
 
@@ -820,6 +867,7 @@ int main(void)
         cmocka_unit_test(test_killed_attempt_recovered),
         cmocka_unit_test(test_killed_at_begin),
         cmocka_unit_test(test_no_double_row),
+        cmocka_unit_test(test_torn_logs_cut),
         cmocka_unit_test(test_head_rows_interpolated),
         cmocka_unit_test(test_visible_cues),
         cmocka_unit_test(test_abort),

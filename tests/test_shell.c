@@ -80,6 +80,10 @@ static void test_clash(void **state)
     assert_null(clash(g));
     g[HOL_SHELL_OPT_RESTART] = HOL_SHELL_ON;
     assert_string_equal(clash(g), "--restart-participant goes with --study");
+    /* issue 39: and with --append (it starts a participant again in DIR) */
+    g[HOL_SHELL_OPT_STUDY] = HOL_SHELL_ON, g[HOL_SHELL_OPT_APPEND] = HOL_SHELL_OFF;
+    assert_string_equal(clash(g), "--restart-participant goes with --append");
+    g[HOL_SHELL_OPT_STUDY] = HOL_SHELL_OFF, g[HOL_SHELL_OPT_APPEND] = HOL_SHELL_ON;
     g[HOL_SHELL_OPT_STUDY] = g[HOL_SHELL_OPT_RESUME] = HOL_SHELL_ON;
     assert_string_equal(clash(g), "give --resume or --restart-participant, not both");
     g[HOL_SHELL_OPT_RESTART] = g[HOL_SHELL_OPT_STUDY] = HOL_SHELL_OFF;

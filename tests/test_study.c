@@ -472,7 +472,7 @@ static void test_levels(void **state)
     assert_int_equal(in_study, 0);
     assert_int_equal(parse("study s\ncondition a\nlevel f.lvl\nset place rock Nf\n", msg), 0);
     assert_int_equal(make(0, 1, "mode flag\nflag Nf\n", &L, msg, &in_study), 1);
-    assert_string_equal(msg, "line 4: the placement on Nf conflicts with the flag");
+    assert_string_equal(msg, "line 4: set: the placement on Nf conflicts with the flag");
     assert_int_equal(in_study, 1);
     /* a condition of set lines without a mode: its condition line */
     assert_int_equal(parse("study s\ncondition a\nset seed 3\ncondition b\nset mode explore\n", msg),
@@ -483,7 +483,7 @@ static void test_levels(void **state)
     /* a conflict the level finds after its last line: the set line */
     assert_int_equal(parse("study s\ncondition a\nset mode flag\n", msg), 0);
     assert_int_equal(make(0, 1, NULL, &L, msg, &in_study), 1);
-    assert_string_equal(msg, "line 3: mode flag needs a 'flag' or 'flag-distance' line");
+    assert_string_equal(msg, "line 3: set: mode flag needs a 'flag' or 'flag-distance' line");
     assert_int_equal(in_study, 1);
     /* without set lines the file is unchanged: the same SHA-256 */
     assert_int_equal(parse("study s\ncondition a\nlevel f.lvl\n", msg), 0);
@@ -502,6 +502,33 @@ static void test_levels(void **state)
     assert_string_equal(msg, "line 2: condition a: its level with the set lines is longer than "
                              "4095 bytes");
     assert_int_equal(in_study, 1);
+    /* issue 39: the closing makes a's level too long only where a is the
+     * last; the participant playing it first is refused as well (the bounds
+     * are every participant's), naming the closing and the position */
+    for (int k = 99; k < HOL_LEVEL_TEXT_MAX - 150; k += 100)
+        text[k] = '\n'; /* comment lines of 99 bytes */
+    text[HOL_LEVEL_TEXT_MAX - 150] = '\n';
+    text[HOL_LEVEL_TEXT_MAX - 149] = 0;
+    assert_int_equal(parse("study s\ncounterbalance latin\nclosing Thank you, this is a "
+                           "closing line long enough to be over the level's bound when it is "
+                           "added to the level text of condition a, which is nearly full by "
+                           "itself.\ncondition a\nlevel f\ncondition b\nset mode explore\n",
+                           msg), 0);
+    assert_int_equal(make(0, 1, text, &L, msg, &in_study), 1);
+    assert_string_equal(msg, "line 4: condition a: its level with the closing is longer than "
+                             "4095 bytes (at position 2 of 2, the last)");
+    assert_int_equal(make(0, 2, text, &L, msg, &in_study), 1);
+    assert_string_equal(msg, "line 4: condition a: its level with the closing is longer than "
+                             "4095 bytes");
+    assert_int_equal(make(1, 1, NULL, &L, msg, &in_study), 0);
+    /* fixed: a is always first and never carries the closing */
+    assert_int_equal(parse("study s\ncounterbalance fixed\nclosing Thank you, this is a "
+                           "closing line long enough to be over the level's bound when it is "
+                           "added to the level text of condition a, which is nearly full by "
+                           "itself.\ncondition a\nlevel f\ncondition b\nset mode explore\n",
+                           msg), 0);
+    assert_int_equal(make(0, 1, text, &L, msg, &in_study), 0);
+    assert_int_equal(L.position, 1);
 }
 
 int main(void)

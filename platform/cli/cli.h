@@ -60,10 +60,21 @@ int cli_geometry_value(const char *cmd, const char *opt, const char *v, int *q, 
 #define CLI_SEED_DEFAULT 1
 int cli_parse_u64(const char *s, uint64_t *out);
 
-/* "A,B,..." of exactly n finite plain decimal numbers ([-+]D[.D][e[-+]D];
- * no blanks, hex, inf or nan) into out[0..n-1] (n 1..16): option values
- * such as --eye X,Y,Z and --yaw. 1 ok, 0 bad. */
+/* One number grammar for every option (issue 39; docs/cli.md):
+ * - cli_parse_doubles: "A,B,..." of exactly n finite plain decimal numbers
+ *   (-D[.D][e[-+]D]: no blanks, plus, hex, inf, nan, ".5" or "5.", and
+ *   none that under- or overflows: 1e-400) into out[0..n-1] (n 1..16):
+ *   option values such as --eye X,Y,Z and --orient.
+ * - cli_parse_real: one such number in lo..hi; where lo >= 0 no minus is
+ *   taken ("-0" is not a volume).
+ * - cli_parse_wxd: "WxD" (or "WXD") of two such numbers, each in lo..hi.
+ * - cli_parse_decimal: an unsigned 64-bit number of decimal digits only
+ *   (counts, radii, scales: only seeds take 0x hex, SPEC 7).
+ * Each: 1 ok, 0 bad (the caller reports it). */
 int cli_parse_doubles(const char *s, double *out, int n);
+int cli_parse_real(const char *s, double lo, double hi, double *out);
+int cli_parse_wxd(const char *s, double lo, double hi, double *w, double *d);
+int cli_parse_decimal(const char *s, uint64_t *out);
 
 /* Strip spaces and tabs at both ends. */
 void cli_trim(char **s, size_t *len);
@@ -173,6 +184,22 @@ typedef struct cli_path {
 } cli_path;
 int cli_check_distinct(const char *cmd, const cli_path *in, int nin, const cli_path *out,
                        int nout);
+
+/* Every file a command reads is never one it writes (issue 39): the
+ * outputs out[0..nout-1] as cli_check_distinct compares them, and the
+ * files a session writes in its --log folder log_dir (NULL: none): each
+ * entry of log_dir that is a log file (hol_session_is_log_name),
+ * environment.csv, a study-HASH.txt or the folder's lock is compared (device and inode) with
+ * each input, so that `--input DIR/summary.csv`, or a level linked to one,
+ * is refused. cli_check_reads: 0, or one line "OPT 'PATH' is ..., which
+ * this command writes" and CLI_EXIT_USAGE. play, xr and replay call it on
+ * their options, and play_study_levels on every level file a study names. */
+typedef struct cli_outs {
+    const cli_path *out;
+    int nout;
+    const char *log_dir;
+} cli_outs;
+int cli_check_reads(const char *cmd, const cli_path *in, int nin, const cli_outs *outs);
 
 /* The options that only store, as a table (the last entry's opt NULL): a
  * flag sets an int field of the options' struct to its value, a valued

@@ -1,12 +1,15 @@
 #define _POSIX_C_SOURCE 200809L
 #include "../../core/hol_room.h"
+#include "../../core/hol_session.h"
 #include "cli.h"
 
 #include "../../core/hol_text.h"
 #include "../file/hol_file.h"
 #include "../file/hol_lines.h"
+#include "../file/hol_sink_posix.h"
 
 #include <ctype.h>
+#include <dirent.h>
 #include <errno.h>
 #include <math.h>
 #include <signal.h>
@@ -172,6 +175,40 @@ int cli_check_distinct(const char *cmd, const cli_path *in, int nin, const cli_p
     return 0;
 }
 
+/* 1 when a --log folder's entry name is a file the session writes there. */
+static int cli__written_in_log(const char *name)
+{
+    size_t n = strlen(name);
+    return hol_session_is_log_name(name) || !strcmp(name, "environment.csv") ||
+           !strcmp(name, HOL_SINK_POSIX_LOCK) ||
+           (!strncmp(name, "study-", 6) && n > 10 && !strcmp(name + n - 4, ".txt"));
+}
+
+int cli_check_reads(const char *cmd, const cli_path *in, int nin, const cli_outs *outs)
+{
+    if (cli_check_distinct(cmd, in, nin, outs->out, outs->nout))
+        return CLI_EXIT_USAGE;
+    DIR *d = outs->log_dir ? opendir(outs->log_dir) : NULL;
+    struct dirent *e;
+    int st = 0;
+    while (d && !st && (e = readdir(d)) != NULL) {
+        struct stat sl, si;
+        if (!cli__written_in_log(e->d_name) || fstatat(dirfd(d), e->d_name, &sl, 0))
+            continue;
+        for (int i = 0; i < nin && !st; i++)
+            if (in[i].path && !stat(in[i].path, &si) && si.st_dev == sl.st_dev &&
+                si.st_ino == sl.st_ino) {
+                cli_error(cmd, 0, "%s '%.200s' is '%.60s' of --log '%.200s', which this command "
+                                  "writes; read a copy from another folder",
+                          in[i].opt, in[i].path, e->d_name, outs->log_dir);
+                st = CLI_EXIT_USAGE;
+            }
+    }
+    if (d)
+        closedir(d);
+    return st;
+}
+
 int cli_store_opt(const cli_store *t, const char *a, const char *val, void *opts)
 {
     for (; t->opt; t++)
@@ -273,9 +310,8 @@ size_t cli_parse_count(const char *s)
 
 int cli_volume_value(const char *cmd, const char *v, double *out_volume)
 {
-    char *end = NULL;
-    double x = strtod(v, &end);
-    if (!v[0] || *end || !(x >= 0 && x <= 1)) {
+    double x;
+    if (!cli_parse_real(v, 0, 1, &x)) {
         cli_error(cmd, 0, "--volume '%.40s' is not a number in 0..1", v);
         return -1;
     }
@@ -292,19 +328,23 @@ int cli_budget_value(const char *cmd, const char *v, size_t *out_budget)
     return 0;
 }
 
-/* The length of the plain decimal number at p ([-+]digits[.digits][e[-+]digits],
- * digits on at least one side of the point), 0 if there is none: strtod
- * would also take blanks, hex, inf and nan. */
+/* The length of the plain decimal number at p (-D[.D][e[-+]D]: an
+ * optional minus, digits, a point only between digits, an exponent), 0 if
+ * there is none: strtod would also take blanks, a plus, hex, inf, nan, ".5"
+ * and "5." (issue 39: one number grammar for every option). */
 static size_t cli__decimal_len(const char *p)
 {
-    size_t i = (p[0] == '-' || p[0] == '+'), d = 0;
+    size_t i = p[0] == '-', d = 0;
     while (isdigit((unsigned char)p[i]))
         i++, d++;
-    if (p[i] == '.')
-        for (i++; isdigit((unsigned char)p[i]); i++)
-            d++;
     if (d == 0)
         return 0;
+    if (p[i] == '.') {
+        if (!isdigit((unsigned char)p[i + 1]))
+            return 0;
+        for (i++; isdigit((unsigned char)p[i]); i++)
+            ;
+    }
     if (p[i] == 'e' || p[i] == 'E') {
         size_t j = i + 1 + (p[i + 1] == '-' || p[i + 1] == '+'), e = j;
         while (isdigit((unsigned char)p[j]))
@@ -313,6 +353,35 @@ static size_t cli__decimal_len(const char *p)
             i = j;
     }
     return i;
+}
+
+int cli_parse_real(const char *s, double lo, double hi, double *out)
+{
+    double x;
+    if (!cli_parse_doubles(s, &x, 1) || (lo >= 0 && s[0] == '-') || !(x >= lo && x <= hi))
+        return 0;
+    *out = x;
+    return 1;
+}
+
+int cli_parse_wxd(const char *s, double lo, double hi, double *w, double *d)
+{
+    char buf[64];
+    size_t n = strlen(s);
+    const char *x = strpbrk(s, "xX");
+    if (n >= sizeof buf || !x)
+        return 0;
+    memcpy(buf, s, n + 1);
+    buf[x - s] = 0;
+    return cli_parse_real(buf, lo, hi, w) && cli_parse_real(buf + (x - s) + 1, lo, hi, d);
+}
+
+int cli_parse_decimal(const char *s, uint64_t *out)
+{
+    for (const char *p = s; *p; p++)
+        if (*p < '0' || *p > '9')
+            return 0;
+    return cli_parse_u64(s, out);
 }
 
 int cli_geometry_value(const char *cmd, const char *opt, const char *v, int *q, int *cols,

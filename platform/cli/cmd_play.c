@@ -243,6 +243,7 @@ static int play_options(const char *cmd, int argc, char **argv, play_opts *o)
     static const char *const repeatable[] = {"--meta", NULL};
     p.repeatable = repeatable;
     o->argc = argc, o->argv = argv;
+    o->env.argc = argc, o->env.argv = argv;
     const char *a, *val;
     int r;
     while ((r = cli_opts_next(&p, &a, &val)) > 0) {
@@ -273,7 +274,8 @@ static int play_options(const char *cmd, int argc, char **argv, play_opts *o)
     const cli_path in[] = {{"LEVEL", o->level_path}, {"--input", o->input_path},
                            {"--gamepad-replay", o->pad_script}, {"--study", o->study}};
     const cli_path out[] = {{"--record", o->rec}, {"--log", o->log_dir}};
-    return cli_check_distinct(cmd, in, 4, out, 2);
+    const cli_outs outs = {out, 2, o->log_dir};
+    return cli_check_reads(cmd, in, 4, &outs);
 }
 
 /* ---- setup ---------------------------------------------------------------------- */
@@ -286,11 +288,13 @@ static int play_prepare_files(play_ctx *c)
     if (!st)
         st = play_out_open(c->cmd, o->log_dir, o->append, o->rec, &c->out);
     c->out.track_hz = o->track_hz;
+    const cli_path out[] = {{"--record", o->rec}, {"--log", o->log_dir}};
+    const cli_outs outs = {out, 2, o->log_dir};
     if (!st && o->study)
         st = play_study_levels(c->cmd, o->study, o->participant,
                                o->append && !o->restart_participant && !o->resume
                                    ? o->log_dir : NULL,
-                               c->levels, &c->nlevels, c->study);
+                               &outs, c->levels, &c->nlevels, c->study);
     else if (!st)
         st = play_levels(c->cmd, o->level_path, o->mode, o->seed, &o->geo, c->levels,
                              &c->nlevels);

@@ -55,7 +55,7 @@ typedef struct props_args {
 static int props_parse_scale(const char *cmd, const char *val, int *out)
 {
     uint64_t n = 0;
-    if (!strncmp(val, "1:", 2) && val[2] >= '0' && val[2] <= '9' && cli_parse_u64(val + 2, &n) &&
+    if (!strncmp(val, "1:", 2) && val[2] >= '0' && val[2] <= '9' && cli_parse_decimal(val + 2, &n) &&
         n >= HOL_PROPS_SCALE_MIN && n <= HOL_PROPS_SCALE_MAX) {
         *out = (int)n;
         return 0;
@@ -65,19 +65,11 @@ static int props_parse_scale(const char *cmd, const char *val, int *out)
     return CLI_EXIT_USAGE;
 }
 
-/* "WxD" metres, each in (0.5..20): 0 ok, else reported and 2. */
+/* "WxD" metres, each in 0.5..20: 0 ok, else reported and 2. */
 static int props_parse_area(const char *cmd, const char *val, double *w, double *d)
 {
-    char buf[64];
-    size_t n = strlen(val);
-    const char *x = strpbrk(val, "xX");
-    if (n < sizeof buf && x) {
-        memcpy(buf, val, n + 1);
-        buf[x - val] = '\0';
-        if (cli_parse_doubles(buf, w, 1) && cli_parse_doubles(buf + (x - val) + 1, d, 1) &&
-            *w >= 0.5 && *w <= HOL_PROPS_AREA_MAX && *d >= 0.5 && *d <= HOL_PROPS_AREA_MAX)
-            return 0;
-    }
+    if (cli_parse_wxd(val, 0.5, HOL_PROPS_AREA_MAX, w, d))
+        return 0;
     cli_error(cmd, 0, "--play-area needs WxD in metres, 0.5 to 20 each, not '%.40s'", val);
     return CLI_EXIT_USAGE;
 }

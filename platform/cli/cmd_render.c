@@ -353,10 +353,10 @@ static int parse_number_opt(const char *cmd, render_opts *o, const char *a, cons
     if (!strcmp(a, "--yaw")) {
         bad = parse_double(val, &o->yaw) ? "is not a number of degrees" : NULL;
     } else if (!strcmp(a, "--pitch")) {
-        if (parse_double(val, &o->pitch) || o->pitch < -90 || o->pitch > 90)
+        if (!cli_parse_real(val, -90, 90, &o->pitch))
             bad = "is not a number of degrees in -90..90";
     } else if (!strcmp(a, "--fov")) {
-        if (parse_double(val, &o->fov) || o->fov < 10 || o->fov > 170)
+        if (!cli_parse_real(val, 10, 170, &o->fov))
             bad = "is not a number of degrees in 10..170";
     } else if (!strcmp(a, "--frames")) {
         o->frames_set = 1;
@@ -367,11 +367,11 @@ static int parse_number_opt(const char *cmd, render_opts *o, const char *a, cons
     } else if (!strcmp(a, "--seed")) {
         bad = !cli_parse_u64(val, &o->seed) ? "is not an unsigned 64-bit number" : NULL;
     } else if (!strcmp(a, "--stereo")) {
-        if (parse_double(val, &o->ipd) || o->ipd <= 0 || o->ipd > 0.2)
+        if (!cli_parse_real(val, 0, 0.2, &o->ipd) || o->ipd <= 0)
             bad = "is not an eye distance in (0, 0.2] m";
     } else if (!strcmp(a, "--fireflies")) {
         o->ff_off = !strcmp(val, "off");
-        if (!o->ff_off && (parse_double(val, &o->ff_time) || o->ff_time < 0 || o->ff_time > 1e9))
+        if (!o->ff_off && !cli_parse_real(val, 0, 1e9, &o->ff_time))
             bad = "is not a time in seconds in 0..1e9 (or off)";
     } else if (!strcmp(a, "--cell")) {
         /* the parser of play's --cell and the level line `cell M` */
@@ -538,11 +538,20 @@ static int parse_opts(const char *cmd, int argc, char **argv, render_opts *o)
             cli_error(cmd, 0, "--target '%.40s' is not a tile address", o->target_s[k]);
             return CLI_EXIT_USAGE;
         }
-    for (int k = 0; k < o->nlanterns; k++)
-        if (hol_tile_resolve_q(o->q ? o->q : 5, o->lantern_s[k], -1, &o->lanterns[k])) {
-            cli_error(cmd, 0, "--lantern '%.40s' is not a tile address", o->lantern_s[k]);
+    /* a lantern as a level's `place lantern` takes it: a canonical
+     * address, one a tile (issue 39) */
+    for (int k = 0; k < o->nlanterns; k++) {
+        if (hol_tile_parse_q(o->q ? o->q : 5, o->lantern_s[k], -1, &o->lanterns[k])) {
+            cli_error(cmd, 0, "--lantern '%.40s' is not a canonical address of {4,%d}",
+                      o->lantern_s[k], o->q ? o->q : 5);
             return CLI_EXIT_USAGE;
         }
+        for (int j = 0; j < k; j++)
+            if (hol_tile_eq(o->lanterns[j], o->lanterns[k])) {
+                cli_error(cmd, 0, "--lantern '%.40s' is given twice", o->lantern_s[k]);
+                return CLI_EXIT_USAGE;
+            }
+    }
     return check_opts(cmd, o);
 }
 

@@ -86,8 +86,8 @@ static int parse_frame_list(const char *s, long *out, int cap, int *out_n)
     while (*p) {
         char *e;
         errno = 0;
-        long v = strtol(p, &e, 10);
-        if (e == p || errno || v < 0 || n >= cap || (*e && *e != ','))
+        long v = *p >= '0' && *p <= '9' ? strtol(p, &e, 10) : -1; /* digits: no sign, blank */
+        if (v < 0 || errno || n >= cap || (*e && *e != ','))
             return 1;
         out[n++] = v;
         p = *e ? e + 1 : e;
@@ -148,7 +148,8 @@ static int replay_options(replay_ctx *c, int argc, char **argv)
         return CLI_EXIT_USAGE;
     const cli_path in[] = {{"the recording", c->rec}};
     const cli_path out[] = {{"--log", c->log_dir}, {"--out-dir", c->out_dir}, {"--wav", c->wav}};
-    return cli_check_distinct(c->cmd, in, 1, out, 3);
+    const cli_outs outs = {out, 3, c->log_dir};
+    return cli_check_reads(c->cmd, in, 1, &outs);
 }
 
 /* ---- setup ------------------------------------------------------------------------ */

@@ -114,14 +114,14 @@ static int parse_value(const char *a, const char *v, world_opts *o)
         o->walk = v;
     } else if (!strcmp(a, "--radius")) {
         uint64_t r;
-        if (!cli_parse_u64(v, &r) || r > HOL_WORLD_MAX_RADIUS) {
+        if (!cli_parse_decimal(v, &r) || r > HOL_WORLD_MAX_RADIUS) {
             cli_error(CMD, 0, "--radius '%.40s' is not a number 0..%d", v, HOL_WORLD_MAX_RADIUS);
             return 1;
         }
         o->radius = (int)r;
     } else if (!strcmp(a, "--capacity")) {
         uint64_t c;
-        if (!cli_parse_u64(v, &c) || c < 1 || c > WORLD_MAX_CAPACITY) {
+        if (!cli_parse_decimal(v, &c) || c < 1 || c > WORLD_MAX_CAPACITY) {
             cli_error(CMD, 0, "--capacity '%.40s' is not a number of tiles 1..%u", v,
                       (unsigned)WORLD_MAX_CAPACITY);
             return 1;

@@ -109,16 +109,8 @@ typedef struct xr_opts {
 /* --play-area WxD: two sizes in metres, 0.5 to 100 each, "2.6x2.6". 0 ok. */
 static int xr_play_area(const char *cmd, const char *val, float out[2])
 {
-    char *end = NULL;
-    double w = strtod(val, &end), d = 0;
-    int ok = end != val && (*end == 'x' || *end == 'X') && end[1] >= '0' && end[1] <= '9';
-    if (ok) {
-        const char *p = end + 1;
-        d = strtod(p, &end);
-        ok = end != p && !*end && w >= 0.5 && w <= 100 && d >= 0.5 && d <= 100 && val[0] >= '0' &&
-             val[0] <= '9';
-    }
-    if (!ok) {
+    double w, d;
+    if (!cli_parse_wxd(val, 0.5, 100, &w, &d)) {
         cli_error(cmd, 0, "--play-area '%.40s' is not WxD in metres, 0.5 to 100 each (2.6x2.6)",
                   val);
         return 1;
@@ -175,6 +167,7 @@ static int xr_options(const char *cmd, int argc, char **argv, xr_opts *o)
     static const char *const repeatable[] = {"--meta", NULL};
     p.repeatable = repeatable;
     o->argc = argc, o->argv = argv;
+    o->env.argc = argc, o->env.argv = argv;
     const char *a, *val;
     int r, bad = 0, g;
     while (!bad && (r = cli_opts_next(&p, &a, &val)) > 0) {
@@ -230,7 +223,8 @@ static int xr_options(const char *cmd, int argc, char **argv, xr_opts *o)
                            {"--study", o->study}};
     const cli_path out[] = {{"--record", o->rec}, {"--log", o->log_dir},
                             {"--check-dir", o->check_dir}};
-    if (cli_check_distinct(cmd, in, 3, out, 3))
+    const cli_outs outs = {out, 3, o->log_dir};
+    if (cli_check_reads(cmd, in, 3, &outs))
         return CLI_EXIT_USAGE;
     return cli_require_folder(cmd, "--check-dir", o->check_dir);
 }
@@ -442,10 +436,13 @@ int cli_cmd_xr(int argc, char **argv)
     hol_input *script = NULL;
     long nscript = 0;
     char study[HOL_REC_ID_MAX] = "";
+    const cli_path outp[] = {{"--record", o.rec}, {"--log", o.log_dir},
+                             {"--check-dir", o.check_dir}};
+    const cli_outs outs = {outp, 3, o.log_dir};
     st = o.study ? play_study_levels(cmd, o.study, o.participant,
                                      o.append && !o.restart_participant && !o.resume
                                          ? o.log_dir : NULL,
-                                     levels, &nlevels, study)
+                                     &outs, levels, &nlevels, study)
                  : play_levels(cmd, o.level_path, NULL, CLI_SEED_DEFAULT, &o.geo, levels,
                                &nlevels);
     if (!st)

@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <sys/uio.h>
 #include <sys/utsname.h>
 #include <unistd.h>
 
@@ -19,8 +20,6 @@
 #include "../shell/hol_shell_env.h"
 #include "cli.h"
 #include "play_track.h"
-
-#define PLAY_ENV_ROW_MAX 16384
 
 static int play_env__meta(const char *cmd, const char *val, play_env *e)
 {
@@ -77,6 +76,14 @@ int play_env_check(const char *cmd, const play_env *e, const char *log_dir)
 {
     if ((e->session_no || e->nmeta) && !log_dir) {
         cli_error(cmd, 0, "%s goes with --log", e->session_no ? "--session" : "--meta");
+        return CLI_EXIT_USAGE;
+    }
+    size_t esc = 0;
+    for (int i = 0; log_dir && i < e->argc; i++)
+        esc += (i > 0) + hol_text_escape(e->argv[i], strlen(e->argv[i]), NULL, 0);
+    if (esc >= HOL_SHELL_ENV_FIELD_MAX) {
+        cli_error(cmd, 0, "the command line is %zu bytes once escaped; environment.csv's options "
+                          "column holds at most %d: shorten it", esc, HOL_SHELL_ENV_FIELD_MAX - 1);
         return CLI_EXIT_USAGE;
     }
     char name[4200], msg[200];
@@ -141,11 +148,12 @@ static int play_env_append(const char *cmd, const char *dir, const char *row)
         cli_error(cmd, 0, "'%.200s' is not a regular file", name);
         return 1;
     }
-    char line[PLAY_ENV_ROW_MAX + 256];
-    int n = snprintf(line, sizeof line, "%s%s\n",
-                     ok && st.st_size == 0 ? HOL_SHELL_ENV_COLUMNS "\n" : "", row);
-    ok = ok && n > 0 && (size_t)n < sizeof line && write(fd, line, (size_t)n) == n &&
-         fsync(fd) == 0;
+    /* the header (a new file), the row and its newline: one writev */
+    static const char head[] = HOL_SHELL_ENV_COLUMNS "\n";
+    struct iovec v[3] = {{(void *)head, ok && st.st_size == 0 ? sizeof head - 1 : 0},
+                         {(void *)row, strlen(row)}, {(void *)"\n", 1}};
+    ssize_t want = (ssize_t)(v[0].iov_len + v[1].iov_len + 1);
+    ok = ok && writev(fd, v, 3) == want && fsync(fd) == 0;
     int e = errno;
     if (fd >= 0)
         close(fd);
@@ -162,8 +170,8 @@ int play_env_write(const char *cmd, const char *log_dir, const play_env *e, cons
 {
     if (!log_dir)
         return 0;
-    static char row[PLAY_ENV_ROW_MAX];
-    char os[400] = "", meta[4096], opts[4096];
+    static char row[HOL_SHELL_ENV_ROW_MAX], opts[HOL_SHELL_ENV_FIELD_MAX];
+    char os[400] = "", meta[HOL_REC_META_TEXT];
     struct utsname u;
     if (uname(&u) == 0)
         snprintf(os, sizeof os, "%s %s %s", u.sysname, u.release, u.machine);

@@ -10,7 +10,11 @@
  *   given twice refused.
  * - play_env_check: exit status 0, or 2 after reporting --session/--meta
  *   without --log, or a DIR/environment.csv there that is not a regular
- *   file (hol_file_check_out: a FIFO, a folder), before anything opens.
+ *   file (hol_file_check_out: a FIFO, a folder), before anything opens;
+ *   with --log, a command line (e->argv) over HOL_SHELL_ENV_FIELD_MAX - 1
+ *   bytes once escaped is refused too (environment.csv's options column
+ *   would not hold it: never cut). A row of valid options always fits
+ *   (HOL_SHELL_ENV_ROW_MAX), so play_env_write fails only on the disk.
  * - play_env_write (after the session opened on DIR): one row appended to
  *   DIR/environment.csv (made with its header HOL_SHELL_ENV_COLUMNS; the row
  *   written with one write(2) and fsync'ed), study_sha256 its column ("":
@@ -45,6 +49,8 @@
     "                  repeatable, up to 16; KEY 1..32 of a-z, 0-9, '_')\n"
 
 typedef struct play_env {
+    int argc;       /* the command line, for the options column */
+    char **argv;
     int session_no; /* 0: not given */
     int nmeta;
     const char *meta[PLAY_ENV_META_MAX];

@@ -13,6 +13,7 @@
 #include "../../core/hol_sha256.h"
 #include "../file/hol_lines.h"
 #include "cli.h"
+#include "summary_read.h"
 
 #define RESUME_MAX_DONE 1024 /* done or timeout attempts of one participant */
 
@@ -85,49 +86,59 @@ static void resume_add(resume_rows *r, const hol_level *levels, int n,
     }
 }
 
-/* The rows of one CSV file (summary.csv: header then rows; an
- * attempt-NNN.live: the summary header is given, then its one row). */
-static int resume_file(const char *cmd, const char *path, int is_summary, const char *study,
-                       const char *participant, const hol_level *levels, int n,
-                       resume_rows *r)
+/* What one reader of the rows looks for. */
+typedef struct resume_ctx {
+    const char *study, *participant;
+    const hol_level *levels;
+    int n, is_summary;
+    resume_rows *r;
+} resume_ctx;
+
+/* A row of theirs added (summary_read's fn). */
+static int resume_row(void *ctx, const hol_report_attempt *a, long line)
+{
+    resume_ctx *c = ctx;
+    (void)line;
+    if (!strcmp(a->study, c->study) && !strcmp(a->participant, c->participant))
+        resume_add(c->r, c->levels, c->n, a, c->is_summary);
+    return 0;
+}
+
+/* An attempt-NNN.live: the summary header is given, then its one row (a
+ * file the session wrote; one it could not finish is the recovery's). */
+static int resume_live(const char *cmd, const char *path, resume_ctx *c)
 {
     static const char header[] = HOL_SESSION_SUMMARY_COLUMNS;
     hol_lines l;
-    int rc = cli_open_lines(cmd, is_summary ? "summary" : "attempt", path, 65536, &l);
+    int rc = cli_open_lines(cmd, "attempt", path, 65536, &l);
     if (rc)
         return rc;
     hol_report_header h;
     static hol_report_attempt a; /* 2.5 KB of text fields */
     char err[HOL_REPORT_ERR];
-    int have_h = !is_summary && !hol_report_summary_header(header, sizeof header - 1, &h, err);
+    int have_h = !hol_report_summary_header(header, sizeof header - 1, &h, err);
     char *s;
     size_t len;
-    while (hol_lines_next(&l, &s, &len) > 0) {
-        if (!have_h) {
-            if (hol_report_summary_header(s, len, &h, err))
-                break; /* not this version's: the session says so */
-            have_h = 1;
-            continue;
-        }
-        if (!hol_report_summary_row(&h, s, len, &a, err) && !strcmp(a.study, study) &&
-            !strcmp(a.participant, participant))
-            resume_add(r, levels, n, &a, is_summary);
-    }
+    while (have_h && hol_lines_next(&l, &s, &len) > 0)
+        if (!hol_report_summary_row(&h, s, len, &a, err))
+            resume_row(c, &a, l.lineno);
     hol_lines_close(&l);
     return 0;
 }
 
-/* summary.csv, then the attempts a killed session left (attempt-NNN.live:
- * unfinished, whatever the recovery will call them). */
+/* summary.csv (read as `report` reads it: summary_read.h), then the
+ * attempts a killed session left (attempt-NNN.live: unfinished, whatever
+ * the recovery will call them). */
 static int resume_scan(const char *cmd, const char *dir, const char *study,
                        const char *participant, const hol_level *levels, int n, resume_rows *r)
 {
     char path[4096];
-    struct stat st;
-    int rc = 0;
-    if (snprintf(path, sizeof path, "%s/summary.csv", dir) < (int)sizeof path &&
-        stat(path, &st) == 0)
-        rc = resume_file(cmd, path, 1, study, participant, levels, n, r);
+    resume_ctx c = {study, participant, levels, n, 1, r};
+    long cut = 0;
+    int rc = snprintf(path, sizeof path, "%s/summary.csv", dir) < (int)sizeof path
+                 ? summary_read(cmd, path, SUMMARY_NONE_OK, resume_row, &c, &cut)
+                 : 0;
+    c.is_summary = 0;
     DIR *d = rc ? NULL : opendir(dir);
     struct dirent *e;
     while (d && !rc && (e = readdir(d)) != NULL) {
@@ -135,7 +146,7 @@ static int resume_scan(const char *cmd, const char *dir, const char *study,
         if (strncmp(e->d_name, "attempt-", 8) || k < 13 || strcmp(e->d_name + k - 5, ".live") ||
             snprintf(path, sizeof path, "%s/%s", dir, e->d_name) >= (int)sizeof path)
             continue;
-        rc = resume_file(cmd, path, 0, study, participant, levels, n, r);
+        rc = resume_live(cmd, path, &c);
     }
     if (d)
         closedir(d);
@@ -207,6 +218,10 @@ static int resume_answers(const char *cmd, const char *dir, int answers, const c
     char err[HOL_REPORT_ERR], *s;
     size_t len;
     while (hol_lines_next(&l, &s, &len) > 0) {
+        if (!line && len >= 3 && !memcmp(s, "\xef\xbb\xbf", 3)) { /* a byte order mark */
+            s += 3;
+            len -= 3;
+        }
         if (hol_report_csv_split(s, len, buf, sizeof buf, f, 64, &nf, err))
             nf = 0; /* a row that cannot be read is none (report names it) */
         if (++line == 1) {

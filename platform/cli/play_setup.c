@@ -7,6 +7,7 @@
 
 #include <dirent.h>
 #include <errno.h>
+#include <fcntl.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -242,13 +243,16 @@ void play_input_close(play_input *pi)
 
 /* ---- outputs -------------------------------------------------------------------- */
 
-/* What a log folder's entry is, when it is not a regular file (NULL). */
+/* What a log folder's entry is, when it is not a regular file (NULL): a
+ * symbolic link is not followed (nor written through), even to a regular
+ * file, as `report` and --resume refuse it (summary_read.h). */
 static const char *play_not_regular(DIR *d, const char *name)
 {
     struct stat st;
-    if (fstatat(dirfd(d), name, &st, 0))
-        return "a dangling link";
+    if (fstatat(dirfd(d), name, &st, AT_SYMLINK_NOFOLLOW))
+        return "gone while read";
     return S_ISREG(st.st_mode)    ? NULL
+           : S_ISLNK(st.st_mode)  ? "a symbolic link"
            : S_ISDIR(st.st_mode)  ? "a folder"
            : S_ISFIFO(st.st_mode) ? "a FIFO"
                                   : "a socket or device";
@@ -420,6 +424,8 @@ int play_session_open(const char *cmd, play_out *po, const hol_level *levels, in
         fprintf(stderr, "holonomy %s: %d attempt(s) of a killed session dropped from the log "
                         "folder (killed before their first row reached the disk)\n",
                 cmd, hol_session_dropped(*out));
+    if (hol_session_repaired(*out)[0])
+        fprintf(stderr, "holonomy %s: %s\n", cmd, hol_session_repaired(*out));
     return 0;
 }
 

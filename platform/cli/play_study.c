@@ -7,10 +7,8 @@
 
 #include "../../core/hol_report.h"
 #include "../../core/hol_study.h"
-#include "../file/hol_lines.h"
 #include "cli.h"
-
-#include <sys/stat.h>
+#include "summary_read.h"
 
 /* The participant's number, or 0 after the message. */
 static uint64_t study_number(const char *cmd, const char *participant)
@@ -34,7 +32,7 @@ static int study_path(const char *study, const char *level, char *out, size_t ca
 
 /* Level i of the study, labelled with position pos, into *out. */
 static int study_level(const char *cmd, const char *spath, const hol_study *s, int i, int pos,
-                       hol_level *out)
+                       const cli_outs *outs, hol_level *out)
 {
     char rel[HOL_STUDY_PATH_MAX], path[4096], name[64] = "", msg[256];
     uint8_t *data = NULL;
@@ -46,7 +44,10 @@ static int study_level(const char *cmd, const char *spath, const hol_study *s, i
                       s->levels[i].line);
             return CLI_EXIT_USAGE;
         }
-        int rs = cli_read_file(cmd, "level", path, HOL_LEVEL_TEXT_MAX, &data, &size);
+        const cli_path in = {"the study's level", path};
+        int rs = cli_check_reads(cmd, &in, 1, outs);
+        if (!rs)
+            rs = cli_read_file(cmd, "level", path, HOL_LEVEL_TEXT_MAX, &data, &size);
         if (rs)
             return rs;
         const char *base = strrchr(path, '/');
@@ -100,8 +101,8 @@ void play_study_announce(void)
 }
 
 int play_study_levels(const char *cmd, const char *path, const char *participant,
-                      const char *fresh_in, hol_level *levels, int *nlevels,
-                      char study_name[HOL_REC_ID_MAX])
+                      const char *fresh_in, const cli_outs *outs, hol_level *levels,
+                      int *nlevels, char study_name[HOL_REC_ID_MAX])
 {
     static hol_study s;
     *nlevels = 0;
@@ -127,7 +128,7 @@ int play_study_levels(const char *cmd, const char *path, const char *participant
     hol_study_order(&s, p, order);
     int n = hol_study_session(&s, order, lv, cond, pos);
     for (int i = 0; i < n; i++)
-        if ((st = study_level(cmd, path, &s, lv[i], pos[i], &levels[i])))
+        if ((st = study_level(cmd, path, &s, lv[i], pos[i], outs, &levels[i])))
             return st;
     if (fresh_in && (st = play_study_participant_new(cmd, fresh_in, s.name, participant)))
         return st;
@@ -137,36 +138,34 @@ int play_study_levels(const char *cmd, const char *path, const char *participant
     return 0;
 }
 
+/* A row of the study and participant counted (summary_read's fn). */
+typedef struct study_rows {
+    const char *study, *participant;
+    long rows;
+} study_rows;
+
+static int study_row(void *ctx, const hol_report_attempt *a, long line)
+{
+    study_rows *c = ctx;
+    (void)line;
+    c->rows += !strcmp(a->study, c->study) && !strcmp(a->participant, c->participant);
+    return 0;
+}
+
 int play_study_participant_new(const char *cmd, const char *log_dir, const char *study_name,
                                const char *participant)
 {
     char path[4096];
-    struct stat st;
     if (!log_dir || !participant ||
-        snprintf(path, sizeof path, "%s/summary.csv", log_dir) >= (int)sizeof path ||
-        stat(path, &st) != 0)
-        return 0; /* no summary yet: nobody has data */
-    hol_lines l;
-    int rc = cli_open_lines(cmd, "summary", path, 65536, &l);
+        snprintf(path, sizeof path, "%s/summary.csv", log_dir) >= (int)sizeof path)
+        return 0;
+    /* read as `report` and --resume read it (summary_read.h) */
+    study_rows c = {study_name, participant, 0};
+    long cut = 0;
+    int rc = summary_read(cmd, path, SUMMARY_NONE_OK, study_row, &c, &cut);
     if (rc)
         return rc;
-    hol_report_header h;
-    static hol_report_attempt a; /* 2.5 KB of text fields */
-    char err[HOL_REPORT_ERR];
-    long rows = 0, line = 0;
-    char *s;
-    size_t n;
-    while (hol_lines_next(&l, &s, &n) > 0) {
-        if (++line == 1) {
-            if (hol_report_summary_header(s, n, &h, err))
-                break; /* not this version's: the session says so */
-            continue;
-        }
-        if (!hol_report_summary_row(&h, s, n, &a, err) && !strcmp(a.study, study_name) &&
-            !strcmp(a.participant, participant))
-            rows++;
-    }
-    hol_lines_close(&l);
+    long rows = c.rows;
     if (!rows)
         return 0;
     cli_error(cmd, 0,

@@ -17,6 +17,9 @@
  *   passed (its session open), so that a refusal is its one line alone.
  *   fresh_in (NULL: no check): a log folder the session appends to; a
  *   participant with data there is refused (play_study_participant_new).
+ *   outs: the command's outputs; a level file that is one of them (or a
+ *   file of its --log folder) is refused before it is read
+ *   (cli_check_reads, issue 39): "the study's level 'PATH' is ...".
  * - Every problem is one line on stderr naming the file and line (a bad
  *   study line, a level file's bad line with the condition it serves), and
  *   the exit status is returned: 2 bad input, 1 failure; 0 ok.
@@ -26,9 +29,10 @@
 
 #include "../../core/hol_level.h"
 #include "../../core/hol_rec.h"
+#include "cli.h"
 
 int play_study_levels(const char *cmd, const char *path, const char *participant,
-                      const char *fresh_in, hol_level *levels, int *nlevels,
+                      const char *fresh_in, const cli_outs *outs, hol_level *levels, int *nlevels,
                       char study_name[HOL_REC_ID_MAX]);
 void play_study_announce(void);
 
@@ -37,8 +41,8 @@ void play_study_announce(void);
  * and participant, one line on stderr ("participant P07 already has data
  * for study four in 'DIR' (3 attempts); --restart-participant plays their
  * order again from the start, --resume continues it") and 2. 0 when the folder has no
- * summary.csv or no such row; a summary.csv that cannot be read is
- * reported as cli_open_lines does (the session would refuse it too). */
+ * summary.csv or no such row; summary.csv is read as `report` and --resume
+ * read it (summary_read.h: a damaged one refused alike, one line). */
 int play_study_participant_new(const char *cmd, const char *log_dir, const char *study_name,
                                const char *participant);
 
@@ -64,8 +68,12 @@ int play_study_participant_new(const char *cmd, const char *log_dir, const char 
  * a row the study given cannot have played (its condition, position and
  * level text are in none of the order's levels: another study file, or
  * another version of it), or more than 1024 `done`/`timeout` attempts of
- * theirs. 0 ok; a summary, points.csv or answers.csv that cannot be read: as
- * cli_open_lines says. play_study_announce then adds where it resumed. */
+ * theirs. 0 ok; summary.csv is read as `report` reads it (summary_read.h:
+ * a symbolic link, a NUL byte, a row that is not the logs', a line too
+ * long refused alike, one line; a byte order mark and CR LF read; a last
+ * row without its newline left out); points.csv and answers.csv that
+ * cannot be opened as cli_open_lines says (a row that cannot be read is
+ * none: report names it). play_study_announce then adds where it resumed. */
 int play_study_resume(const char *cmd, const char *log_dir, const char *study,
                       const char *participant, hol_level *levels, int *nlevels);
 const char *play_study_resume_note(void);

@@ -24,7 +24,13 @@
 #define HOL_SHELL_ENV_COLUMNS                                                             \
     "session,participant,session_no,study_sha256,platform,os,runtime,gl_renderer,"        \
     "controller,refresh_hz,width,height,meta,options"
-#define HOL_SHELL_ENV_FIELD_MAX 4096
+/* A field's bound once escaped: above a recording's whole meta text (16
+ * values of 200 bytes, each escaped to at most 800: HOL_REC_META_TEXT), so
+ * that valid --meta always has its row (issue 39). */
+#define HOL_SHELL_ENV_FIELD_MAX 16384
+/* The longest row (with its NUL): every field escaped just under the
+ * bound, then quoted with each byte a doubled quote, and the commas. */
+#define HOL_SHELL_ENV_ROW_MAX (14 * (2 * HOL_SHELL_ENV_FIELD_MAX + 3))
 
 typedef struct hol_shell_env_fields {
     const char *session, *participant;

@@ -287,6 +287,8 @@ int hol_web_game_open(char *msg, size_t cap)
     if (hol_session_recovered(sess))
         printf("web: %d unfinished attempt(s) of an earlier visit finished (end 'killed')\n",
                hol_session_recovered(sess));
+    if (hol_session_repaired(sess)[0])
+        printf("web: %s\n", hol_session_repaired(sess));
     return 0;
 }
 

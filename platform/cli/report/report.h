@@ -16,7 +16,7 @@
  *
  * Contract
  * - report_read_summaries reads every LOGDIR's summary.csv (streamed,
- *   bounded lines) into r->att; report_walk reads one attempt's
+ *   bounded lines; the reader --resume uses, ../summary_read.h) into r->att; report_walk reads one attempt's
  *   steps-NNN.csv into tiles; report_optimal re-parses the attempt's level
  *   (level-HASH.txt) and gives the optimal walk's tiles from its start.
  *   Each returns 0 or the exit status after one line on stderr naming the

@@ -10,73 +10,52 @@
 #include "../cli.h"
 #include "report.h"
 #include "../play_setup.h"
+#include "../summary_read.h"
 
 static void path_of(char *out, size_t cap, const char *dir, const char *name)
 {
     snprintf(out, cap, "%s/%s", dir, name);
 }
 
-static int bad_line(const char *cmd, const char *path, long line, const char *msg)
-{
-    /* cli_error escapes the whole message once (the path is raw here) */
-    cli_error(cmd, 0, "%.300s: line %ld: %s", path, line, msg);
-    return CLI_EXIT_USAGE;
-}
+typedef struct summary_into {
+    report_run *r;
+    int d;
+    const char *path;
+} summary_into;
 
-/* A CSV line as the report reads it: a UTF-8 byte order mark at the start
- * of the file is dropped (spreadsheets write one); 0 for a blank line
- * (empty or only spaces and tabs), which is skipped wherever it stands. */
-static int csv_line(const hol_lines *l, char **s, size_t *n)
+/* A summary row into r->att (summary_read's fn). */
+static int summary_row(void *ctx, const hol_report_attempt *a, long line)
 {
-    if (l->lineno == 1 && *n >= 3 && !memcmp(*s, "\xef\xbb\xbf", 3)) {
-        *s += 3;
-        *n -= 3;
+    summary_into *in = ctx;
+    report_run *r = in->r;
+    if (r->natt == REPORT_MAX_ATTEMPTS) {
+        char msg[64];
+        snprintf(msg, sizeof msg, "more than %d attempts in all", REPORT_MAX_ATTEMPTS);
+        return summary_bad_line(r->cmd, in->path, line, msg);
     }
-    for (size_t i = 0; i < *n; i++)
-        if ((*s)[i] != ' ' && (*s)[i] != '\t')
-            return 1;
+    report_att *t = &r->att[r->natt++];
+    memset(t, 0, sizeof *t);
+    t->dir = in->d;
+    t->a = *a;
     return 0;
 }
 
+static int warn(const report_run *r, const char *path, const char *what);
+
+/* DIR's summary.csv, read as --resume reads it (summary_read.h). */
 static int read_summary(report_run *r, int d)
 {
     char path[4200];
     path_of(path, sizeof path, r->dirs[d], "summary.csv");
-    hol_lines l;
-    int st = cli_open_lines(r->cmd, "summary", path, REPORT_LINE_MAX, &l);
-    if (st)
-        return st;
-    hol_report_header h;
-    char err[HOL_REPORT_ERR];
-    char *s;
-    size_t n;
-    int got, header = 0;
-    while ((got = hol_lines_next(&l, &s, &n)) > 0) {
-        hol_err e;
-        if (!csv_line(&l, &s, &n))
-            continue;
-        if (!header++) {
-            e = hol_report_summary_header(s, n, &h, err);
-        } else if (r->natt == REPORT_MAX_ATTEMPTS) {
-            snprintf(err, sizeof err, "more than %d attempts in all", REPORT_MAX_ATTEMPTS);
-            e = HOL_ENOMEM;
-        } else {
-            report_att *t = &r->att[r->natt];
-            memset(t, 0, sizeof *t);
-            t->dir = d;
-            if (!(e = hol_report_summary_row(&h, s, n, &t->a, err)))
-                r->natt++;
-        }
-        if (e) {
-            long line = l.lineno;
-            hol_lines_close(&l);
-            return bad_line(r->cmd, path, line, err);
-        }
+    summary_into in = {r, d, path};
+    long cut = 0;
+    int st = summary_read(r->cmd, path, 0, summary_row, &in, &cut);
+    if (!st && cut) {
+        char what[160];
+        snprintf(what, sizeof what, "line %ld: a row a kill cut (no newline at the file's "
+                 "end): left out (the next --append session removes it)", cut);
+        warn(r, path, what);
     }
-    st = got < 0 ? cli_lines_failed(r->cmd, "summary", path, &l) : 0;
-    if (!st && !header)
-        st = bad_line(r->cmd, path, 1, "empty: no header");
-    hol_lines_close(&l);
     return st;
 }
 
@@ -169,7 +148,7 @@ int report_walk(report_run *r, report_att *t, hol_tile *tiles, int *out_n)
         hol_tile tile;
         if (!(l.lineno & 4095) && (st = report_stopped(r)))
             break;
-        if (!csv_line(&l, &line, &n))
+        if (!summary_csv_line(&l, &line, &n))
             continue;
         if (!header++) {
             ok = !hol_report_steps_header(line, n, &h, err);
@@ -186,11 +165,11 @@ int report_walk(report_run *r, report_att *t, hol_tile *tiles, int *out_n)
     if (st)
         ;
     else if (!ok)
-        st = bad_line(r->cmd, path, l.lineno, err);
+        st = summary_bad_line(r->cmd, path, l.lineno, err);
     else if (got < 0)
         st = cli_lines_failed(r->cmd, "steps", path, &l);
     else if (!header)
-        st = bad_line(r->cmd, path, 1, "empty: no header");
+        st = summary_bad_line(r->cmd, path, 1, "empty: no header");
     hol_lines_close(&l);
     *out_n = (int)count;
     t->has_walk = !st;
