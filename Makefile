@@ -6,6 +6,8 @@
 #   make gen-tiling rewrite core/hol_tile_dfa.h (tests/gen_tiling.c)
 #   make gen-font   rewrite core/hol_face_atlas.h (tests/gen_font.c; libstb-dev)
 #   make deps       install the Debian packages the project needs (apt-get)
+#   make deps-r     Debian's r-base-core: R referees the report's statistics
+#                   in make test (tests/cli_report_r.sh; skipped without it)
 #   make fuzz       build the libFuzzer harnesses and run each FUZZ_TIME s
 #   make bench      build with optimisation and print the benchmark figures
 #   make san        run the unit tests under AddressSanitizer + UBSan
@@ -137,7 +139,7 @@ APT_GET_CMD ?= apt-get
 APT_GET = $$SUDO env DEBIAN_FRONTEND=noninteractive APT_GET_CMD=$(APT_GET_CMD) \
   sh platform/debian/apt_get.sh $(APT_LOCK_WAIT)
 
-.PHONY: web web-serve web-serve-https web-test deps-web bench-web test-suites test-tools FORCE
+.PHONY: web web-serve web-serve-https web-test deps-web deps-r bench-web test-suites test-tools FORCE
 .PHONY: all test purity fn-length unit render-test cli-test fuzz-replay fuzz bench san san-cli san-all kill-test clean deps xr \
         deps-cross check-clang cross-test run quest quest-help deps-quest quest-check check-hid-libusb deps-xr xr-test soak \
         deps-quest-link quest-link-check
@@ -523,6 +525,11 @@ deps:
 	  echo "make deps: installing$$missing"; \
 	  $(APT_GET) update -qq && \
 	  $(APT_GET) install -y -qq --no-install-recommends $$missing; fi
+
+# R (Rscript, base R) for tests/cli_report_r.sh: not in deps (about 40 MB
+# and more on a bare system); CI installs it before make test.
+deps-r:
+	@$(MAKE) -s deps DEB_PACKAGES="r-base-core"
 
 # cmocka for arm64 comes from Debian's multiarch archive.
 deps-cross: deps

@@ -15,6 +15,7 @@
 # cell). Participant 1's recording replays to the same logs.
 # KEEP=DIR keeps the logs and the report in DIR (made; printed) to look at.
 . "$(dirname "$0")/lib.sh"
+REFEREE=$(cd "$(dirname "$0")" && pwd)/report_referee.R
 
 if ! command -v Xvfb >/dev/null 2>&1; then
     echo "note: no Xvfb here: the mock study is not played"
@@ -285,6 +286,13 @@ cmp -s want.part got.part && ok || { bad "participants.csv:"; diff want.part got
     bad "participants: $(cut -d, -f1 rep/participants.csv | sort -u | tr '\n' ' ')"
 grep -qx 'P3,mock,q5-hand,3,2,2.5000,0.6667,0.6250' rep/participants.csv && ok ||
     bad "P3's q5-hand: $(grep '^P3,mock,q5-hand' rep/participants.csv)"
+# the participant-level statistics: the killed attempt excluded as killed,
+# and R (when installed) recomputes every figure from trials.csv
+[ "$(awk -F, '$NF != "" && $(NF - 1) == "killed"' rep/trials.csv | wc -l)" = 1 ] && ok ||
+    bad "trials.csv: killed rows: $(grep -c killed rep/trials.csv)"
+if command -v Rscript >/dev/null 2>&1; then
+    Rscript "$REFEREE" rep >rout 2>&1 && ok || bad "R disagrees: $(cat rout)"
+fi
 # the factor columns of attempts.csv (the quoted tiling is two fields here)
 awk -F, 'NR > 1 && $5 != "practice" {
         q = substr($5, 2, 1); m = substr($5, 4)

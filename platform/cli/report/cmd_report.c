@@ -18,6 +18,7 @@
 #include "../cli.h"
 #include "report.h"
 #include "report_draw.h"
+#include "report_pstats.h"
 #include "report_stats.h"
 
 static const char *const report_usage =
@@ -43,6 +44,15 @@ static const char *const report_usage =
     "                   Likert items from answers.csv): n, mean, SD, 95 % CI (t)\n"
     "  learning.csv     efficiency by position per condition (learning curves)\n"
     "  participants.csv per participant and condition: attempts, done, means\n"
+    "  trials.csv       one row per attempt: participant, block, trial, factors,\n"
+    "                   outcome, pointing errors, excluded (the reason it is left\n"
+    "                   out of the participant-level statistics)\n"
+    "  participants_stats.csv  per condition and measure over the participants'\n"
+    "                   means: n, mean, SD, between- and within-subjects 95 % CI\n"
+    "  paired.csv       each pair of a study's conditions: paired difference, its\n"
+    "                   95 % CI, Cohen's d_z\n"
+    "  effects.csv      each pair of a factor's levels (main effects): paired\n"
+    "                   difference, its 95 % CI, d_z\n"
     "  index.html       a page with the tables, the statistics and the pictures\n"
     "DIR is made when it does not exist (its parent must); an existing DIR must\n"
     "be empty or hold only a report's files (they are replaced). A malformed log\n"
@@ -58,7 +68,9 @@ static int own_name(const char *n)
     size_t l = strlen(n);
     if (!strcmp(n, ".") || !strcmp(n, "..") || !strcmp(n, "index.html") ||
         !strcmp(n, "attempts.csv") || !strcmp(n, "conditions.csv") ||
-        !strcmp(n, "stats.csv") || !strcmp(n, "learning.csv") || !strcmp(n, "participants.csv"))
+        !strcmp(n, "stats.csv") || !strcmp(n, "learning.csv") || !strcmp(n, "participants.csv") ||
+        !strcmp(n, "trials.csv") || !strcmp(n, "participants_stats.csv") ||
+        !strcmp(n, "paired.csv") || !strcmp(n, "effects.csv"))
         return 1;
     if (n[0] == '.' && strstr(n, ".holonomy-tmp."))
         return 1;
@@ -303,6 +315,8 @@ static int run(report_run *r, report_buf *b)
     int st = report_read_summaries(r);
     if (!st)
         st = report_stats_read(r);
+    if (!st)
+        st = report_pstats_compute(r);
     /* first every steps file and level is checked, then anything written */
     for (int i = 0; !st && i < r->natt; i++)
         if (!(st = report_stopped(r)))
@@ -337,6 +351,8 @@ static int run(report_run *r, report_buf *b)
         st = report_write_conditions(r, &g);
     if (!st)
         st = report_stats_write(r);
+    if (!st)
+        st = report_pstats_write(r);
     if (!st)
         st = report_write_html(r, &g);
     if (!st) {
@@ -381,6 +397,7 @@ int cli_cmd_report(int argc, char **argv)
     if (!st)
         st = cli_finish_output(cmd);
     if (r) {
+        report_pstats_free(r);
         report_stats_free(r);
         report_free(r);
         free(r->dirs);

@@ -84,6 +84,7 @@ typedef struct report_run {
     int nopt, nopt_next;
     int quiet;         /* 1: warnings were given (the second pass) */
     struct report_stats *stats; /* report_stats.h */
+    struct report_pstats *pstats; /* report_pstats.h */
 } report_run;
 
 int report_read_summaries(report_run *r);

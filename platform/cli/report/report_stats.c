@@ -91,13 +91,6 @@ static int find_att(const report_run *r, int dir, const char *session, long atte
     return -1;
 }
 
-/* The condition of (dir, session, attempt): its attempt's, else "none". */
-static int find_cond(const report_run *r, int dir, const char *session, long attempt)
-{
-    int i = find_att(r, dir, session, attempt);
-    return i < 0 ? r->stats->none : r->stats->att_cond[i];
-}
-
 /* ---- CSV files of the instruments, read by column name ---- */
 
 typedef struct rs_csv {
@@ -211,10 +204,14 @@ static int points_rows(report_run *r, rs_csv *c)
             got = -bad(c, c->err);
             break;
         }
-        int ci = find_cond(r, c->dir, field(c, P_SESSION), att);
+        int ai = find_att(r, c->dir, field(c, P_SESSION), att);
+        int ci = ai < 0 ? s->none : s->att_cond[ai];
         for (int k = 0; k < 2; k++)
-            if (has[k])
+            if (has[k]) {
                 hol_stats_add(&s->fix[ci * RS_NFIX + RS_ERR_TRUE + k], e[k] < 0 ? -e[k] : e[k]);
+                if (ai >= 0) /* the attempt's answers (report_pstats.c) */
+                    hol_stats_add(&s->tpt[2 * ai + k], e[k] < 0 ? -e[k] : e[k]);
+            }
     }
     return got < 0 ? -got : 0;
 }
@@ -813,6 +810,7 @@ static int alloc_stats(report_run *r)
     if (!s || !(s->cond = malloc(sizeof *s->cond * n)) ||
         !(s->att_cond = malloc(sizeof *s->att_cond * n)) ||
         !(s->order = malloc(sizeof *s->order * n)) ||
+        !(s->tpt = calloc(2 * n, sizeof *s->tpt)) ||
         !(s->fix = calloc(n * RS_NFIX, sizeof *s->fix)) ||
         !(s->lik = malloc(sizeof *s->lik * RS_LIK_MAX)) ||
         !(s->slot = malloc(sizeof *s->slot * RS_LIK_SLOTS)) ||
@@ -884,7 +882,7 @@ void report_stats_free(report_run *r)
     report_stats *s = r->stats;
     if (!s)
         return;
-    void *own[] = {s->cond, s->att_cond, s->order, s->fix, s->lik, s->slot, s->learn,
+    void *own[] = {s->cond, s->att_cond, s->order, s->tpt, s->fix, s->lik, s->slot, s->learn,
                    s->prow, s->seen, s->pts, s->used, s->nrange, s};
     for (size_t i = 0; i < sizeof own / sizeof own[0]; i++)
         free(own[i]);

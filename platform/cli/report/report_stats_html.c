@@ -6,12 +6,13 @@
 #include <string.h>
 
 #include "report_escape.h"
+#include "report_pstats.h"
 #include "report_stats_impl.h"
 
 static const char *const palette[8] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd",
                                        "#ff7f0e", "#8c564b", "#e377c2", "#17becf"};
 
-static void cond_name(FILE *f, const rs_cond *c)
+void rs_cond_name(FILE *f, const rs_cond *c)
 {
     if (c->study[0]) {
         report_html(f, c->study);
@@ -50,7 +51,7 @@ static void means_table(FILE *f, const report_run *r)
             if (!s->fix[c * RS_NFIX + m].n)
                 continue;
             fputs("<tr><td>", f);
-            cond_name(f, &s->cond[c]);
+            rs_cond_name(f, &s->cond[c]);
             fprintf(f, "</td><td>%s</td>", rs_measure[m]);
             stat_cells(f, &s->fix[c * RS_NFIX + m]);
         }
@@ -59,7 +60,7 @@ static void means_table(FILE *f, const report_run *r)
                 !strcmp(s->lik[i].q, "tlx"))
                 continue; /* their scores stand above; each item in stats.csv */
             fputs("<tr><td>", f);
-            cond_name(f, &s->cond[c]);
+            rs_cond_name(f, &s->cond[c]);
             fputs("</td><td>likert ", f);
             report_html(f, s->lik[i].q);
             fputc('/', f);
@@ -82,7 +83,7 @@ static int legend(FILE *f, const report_run *r, int x, int y, const int *used, c
             continue;
         fprintf(f, "<rect x=\"%d\" y=\"%d\" width=\"12\" height=\"12\" fill=\"%s\"/>"
                    "<text x=\"%d\" y=\"%d\">", x, y + 16 * k, palette[c % 8], x + 16, y + 16 * k + 11);
-        cond_name(f, &s->cond[c]);
+        rs_cond_name(f, &s->cond[c]);
         if (n && n[2 * c] == n[2 * c + 1])
             fprintf(f, " (n = %ld)", n[2 * c]);
         else if (n)
@@ -267,7 +268,7 @@ static void place_points(FILE *f, const report_run *r, const rs_pt *pts, int k, 
         const char *col = palette[pts[j].cond % 8];
         fprintf(f, "<g class=\"pt\"><circle cx=\"%.1f\" cy=\"%.1f\" r=\"%.2f\" fill=\"%s\" "
                    "fill-opacity=\"0.6\" stroke=\"%s\"><title>", at + rad, y, rad, col, col);
-        cond_name(f, &r->stats->cond[pts[j].cond]);
+        rs_cond_name(f, &r->stats->cond[pts[j].cond]);
         fprintf(f, ": optimum %ld, steps %ld, %d attempt%s</title></circle>", pts[j].opt,
                 pts[j].steps, pts[j].n, pts[j].n == 1 ? "" : "s");
         if (pts[j].n > 1)
@@ -348,7 +349,7 @@ static void participants_table(FILE *f, const report_run *r)
         fputs("<tr><td>", f);
         report_html(f, r->att[p->att].a.participant);
         fputs("</td><td>", f);
-        cond_name(f, &s->cond[p->cond]);
+        rs_cond_name(f, &s->cond[p->cond]);
         fprintf(f, "</td><td class=\"n\">%ld</td><td class=\"n\">%ld</td>", p->n, p->done);
         for (int k = 0; k < 3; k++)
             if (m[k]->n)
@@ -371,4 +372,5 @@ void report_stats_html(FILE *f, const report_run *r)
     learning_svg(f, r, s->used, s->nrange);
     scatter_svg(f, r, s->used, s->nrange);
     participants_table(f, r);
+    report_pstats_html(f, r);
 }

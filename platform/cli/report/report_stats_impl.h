@@ -48,6 +48,7 @@ typedef struct report_stats {
     rs_cond *cond;  /* natt + 1 */
     int *att_cond;  /* per attempt */
     int *order;     /* attempts by (dir, session, attempt) */
+    hol_stats *tpt; /* per attempt: its |error_true|, |error_flat| (2 each) */
     hol_stats *fix; /* ncond x RS_NFIX */
     rs_likert *lik;
     int nlik, caplik;
@@ -67,6 +68,8 @@ typedef struct report_stats {
 } report_stats;
 
 int rs_included(const report_run *r, int i); /* done, not practice */
+/* The condition as the page names it ("study / condition"), HTML. */
+void rs_cond_name(FILE *f, const rs_cond *c);
 
 /* -1, 0 or 1 as a is below, equal to or above b (the sorts' comparators). */
 static inline int rs_cmp(long a, long b)

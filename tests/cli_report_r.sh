@@ -1,0 +1,131 @@
+#!/bin/sh
+# cli_report_r.sh - R as the referee of the report's participant-level
+# statistics (docs/report.md "Participant-level statistics"): a mock 2x2
+# study written as log folders (six participants, a practice level, two
+# trials a condition, pointing after each; one aborted and one killed
+# trial, one participant restarted, one run again into a second folder,
+# one without a condition), reported; tests/report_referee.R (Rscript,
+# base R only) recomputes the participants' means, both intervals, the
+# paired differences, the main effects and d_z from trials.csv and checks
+# every figure of participants_stats.csv, paired.csv and effects.csv to
+# 1e-9; then a figure made wrong by 1e-6 must fail it. Skipped in one line without Rscript (make deps-r).
+. "$(dirname "$0")/lib.sh"
+HERE=$(dirname "$0")
+
+S='session,participant,session_start,version,attempt,study,condition,position,level,level_sha256,mode,seed,cues,tiling,room,cell,started,steps,optimum,time,end'
+P='session,participant,attempt,level,t,target,pointed,true,flat,error_true,error_flat,time'
+# study: practice at position 0; conditions map-q5, map-q6, nomap-q5,
+# nomap-q6 (their factors: the cues bits 3/1 standing for the minimap
+# on/off, no level files here, x {4,5}/{4,6}) in the order
+# the participant's number gives (a rotation here), two levels each.
+# gen DIR SESSION PARTICIPANT ROT [SKIP_COND] [ENDS]: rows of one session;
+# ENDS "k:END" makes the k-th row (1-based, practice first) end so.
+gen() {
+    awk -v dir="$1" -v ses="$2" -v p="$3" -v rot="$4" -v skip="${5:-}" -v ends="${6:-}" \
+        -v S="$S" -v P="$P" 'BEGIN {
+        split("map-q5 map-q6 nomap-q5 nomap-q6", c, " ")
+        split(ends, e, ":")
+        seed = 0
+        for (i = 1; i <= length(p); i++) seed = seed * 31 + index("0123456789P", substr(p, i, 1))
+        seed += length(ses) * 7 + rot
+        sum = dir "/summary.csv"; pts = dir "/points.csv"
+        if ((getline x < sum) <= 0) { print S >> sum; print P >> pts }
+        close(sum)
+        n = 0; att = 0
+        while ((getline x < sum) > 0) att++
+        close(sum)
+        att = att > 0 ? att - 1 : 0
+        for (k = 0; k <= 4; k++) {
+            cond = k == 0 ? "practice" : c[(k - 1 + rot) % 4 + 1]
+            if (cond == skip) continue
+            for (l = 1; l <= (k == 0 ? 1 : 2); l++) {
+                n++; att++
+                seed = (seed * 1103515245 + 12345) % 2147483648
+                q = cond ~ /q6/ ? 6 : 5
+                opt = 4 + l + (q == 6)
+                steps = opt + int(seed / 7) % 5 + (cond ~ /nomap/ ? 2 : 0)
+                t = 8 + steps * 1.37 + (seed % 1000) / 250
+                end = (n == e[1]) ? e[2] : "done"
+                cues = cond ~ /nomap/ ? 1 : 3
+                printf "%s,%s,2026-01-31T14:05:09Z,0.1.0,%d,s2x2,%s,%d,%s%d,sha%s%d,flag,5,%d,\"4,%d\",3x3,1,0,%d,%d,%.3f,%s\n", \
+                    ses, p, att, cond, k, cond, l, cond, l, cues, q, steps, opt, t, end >> sum
+                err = ((seed % 900) - 450) / 10 + (cond ~ /nomap/ ? 12.5 : 0)
+                flat = (seed % 3 == 0) ? "" : sprintf("%.1f", err / 2 - 3)
+                printf "%s,%s,%d,%s%d,%.3f,start,10,0,0,%.1f,%s,2.5\n", ses, p, att, cond, l, \
+                    t, err, flat >> pts
+            }
+        }
+    }'
+}
+mkdir "$T/l1" "$T/l2"
+gen "$T/l1" sa1 P01 0
+gen "$T/l1" sa2 P02 1 "" "4:aborted"
+gen "$T/l1" sa3 P03 2
+gen "$T/l1" sa3b P03 2 "" "7:killed"      # restarted: sa3's rows played again
+gen "$T/l1" sa4 P04 3 nomap-q6            # no nomap-q6: not in the within CI
+gen "$T/l1" sa5 P05 0
+gen "$T/l2" sb2 P02 1                     # P02 again in another folder: duplicate
+gen "$T/l2" sb6 P06 1
+
+run "report" 0 "$H" report "$T/l1" "$T/l2" --out "$T/r"
+for f in trials.csv participants_stats.csv paired.csv; do
+    [ -f "$T/r/$f" ] && ok || bad "no $f"
+done
+# the exclusions: practice, the aborted and killed rows by their end, P03's
+# first session restarted, P02's second folder a duplicate
+ex() { awk -F, -v s="$1" -v a="$2" '$2 == s && $4 == a { print $(NF - 1) }' "$T/r/trials.csv"; }
+[ "$(ex sa1 1)" = practice ] && ok || bad "practice: '$(ex sa1 1)'"
+[ "$(ex sa1 2)" = "" ] && ok || bad "included: '$(ex sa1 2)'"
+[ "$(ex sa2 13)" = aborted ] && ok || bad "aborted: '$(ex sa2 13)'"
+[ "$(ex sa3 20)" = restarted ] && ok || bad "restarted: '$(ex sa3 20)'"
+[ "$(ex sa3b 34)" = killed ] && ok || bad "killed: '$(ex sa3b 34)'"
+[ "$(ex sa3b 35)" = "" ] && ok || bad "after the restart: '$(ex sa3b 35)'"
+[ "$(ex sb2 2)" = duplicate ] && ok || bad "duplicate: '$(ex sb2 2)'"
+# trial numbers run on within the participant (P03: 1..18 over two sessions)
+[ "$(awk -F, '$1 == "P03" { t = $8 } END { print t }' "$T/r/trials.csv")" = 18 ] && ok ||
+    bad "P03's last trial is not 18"
+# six participants in map-q5 (P02's second folder left out; 11 trials: P03's
+# second is killed), five within
+# (P04 has no nomap-q6) of the study's four conditions
+grep -q '^s2x2,map-q5,steps,6,11,' "$T/r/participants_stats.csv" && ok ||
+    bad "map-q5 steps: $(grep '^s2x2,map-q5,steps' "$T/r/participants_stats.csv")"
+grep -q '^s2x2,map-q5,steps,.*,4,5,' "$T/r/participants_stats.csv" && ok ||
+    bad "map-q5 steps within: $(grep '^s2x2,map-q5,steps' "$T/r/participants_stats.csv")"
+# the main effects: q (5, 6) and cues (3, 1) over the five complete participants
+grep -q '^s2x2,steps,q,5,6,5,' "$T/r/effects.csv" && grep -q '^s2x2,steps,cues,3,1,5,' "$T/r/effects.csv" &&
+    ok || bad "effects.csv: $(sed -n 2,3p "$T/r/effects.csv")"
+# the factors a pair differs in
+grep -q '^s2x2,steps,map-q5,map-q6,q,6,' "$T/r/paired.csv" && grep -q '^s2x2,steps,map-q5,nomap-q5,cues,6,' "$T/r/paired.csv" &&
+    grep -q '^s2x2,steps,map-q5,nomap-q6,q cues,5,' "$T/r/paired.csv" && ok ||
+    bad "paired.csv differ: $(sed -n 2,4p "$T/r/paired.csv")"
+grep -q 'Participant-level statistics' "$T/r/index.html" && grep -q 'within-subjects' "$T/r/index.html" &&
+    grep -q 'Paired differences' "$T/r/index.html" && ok || bad "the page has no participant-level section"
+
+if ! command -v Rscript >/dev/null 2>&1; then
+    echo "cli_report_r: Rscript not found (make deps-r): R referee skipped"
+    finish cli_report_r
+    exit $?
+fi
+if Rscript "$HERE/report_referee.R" "$T/r" >"$T/rout" 2>&1; then ok; else
+    bad "R disagrees: $(cat "$T/rout")"
+fi
+grep -q '^R referee: [0-9]* figures agree' "$T/rout" && ok || bad "R said: $(cat "$T/rout")"
+# a figure made wrong by 1e-6 fails it
+mkdir "$T/w"
+cp "$T/r/trials.csv" "$T/r/paired.csv" "$T/r/effects.csv" "$T/w/"
+awk -F, 'BEGIN { OFS = "," } NR == 3 { $6 = sprintf("%.15g", $6 + 1e-6) } { print }' "$T/r/participants_stats.csv" \
+    >"$T/w/participants_stats.csv"
+if Rscript "$HERE/report_referee.R" "$T/w" >"$T/rout" 2>&1; then bad "a wrong mean passed"; else
+    grep -q 'mean' "$T/rout" && ok || bad "R's failure names no figure: $(cat "$T/rout")"
+fi
+cp "$T/r/participants_stats.csv" "$T/w/"
+awk -F, 'BEGIN { OFS = "," } NR == 2 { $11 = sprintf("%.15g", $11 * 1.000001) } { print }' "$T/r/paired.csv" \
+    >"$T/w/paired.csv"
+if Rscript "$HERE/report_referee.R" "$T/w" >"$T/rout" 2>&1; then bad "a wrong d_z passed"; else ok; fi
+cp "$T/r/paired.csv" "$T/w/"
+awk -F, 'BEGIN { OFS = "," } NR == 2 { $7 = sprintf("%.15g", $7 + 1e-6) } { print }' "$T/r/effects.csv" \
+    >"$T/w/effects.csv"
+if Rscript "$HERE/report_referee.R" "$T/w" >"$T/rout" 2>&1; then bad "a wrong main effect passed"; else
+    grep -q 'q=5 - 6 mean_diff' "$T/rout" && ok || bad "R's failure: $(cat "$T/rout")"
+fi
+finish cli_report_r

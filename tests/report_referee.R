@@ -1,0 +1,173 @@
+# report_referee.R - R (base only, no packages) as the referee of a
+# report's participant-level statistics (docs/report.md "Participant-level
+# statistics"; tests/cli_report_r.sh runs it): from trials.csv alone it
+# recomputes every participant's mean per condition (the trials whose
+# `excluded` is empty), then per condition and measure n, trials, mean, SD,
+# the between-subjects 95 % CI (qt on the participants' means) and the
+# within-subjects one (Cousineau 2005, Morey 2008: each complete
+# participant's value less their mean plus the grand mean, the half width
+# times sqrt(J / (J - 1))); for each pair of a study's conditions the
+# paired difference, its CI, d_z and the factors the two differ in; for
+# each pair of a factor's levels (main effects: a level's value the mean
+# of its conditions) the same. Every figure of participants_stats.csv,
+# paired.csv and effects.csv must agree to 1e-9, every row R expects must
+# be there and no other. Usage: Rscript report_referee.R REPORT_DIR. Exit 0 when all
+# agree ("R referee: N figures agree"), else 1 naming each disagreement.
+args <- commandArgs(trailingOnly = TRUE)
+dir <- args[1]
+rd <- function(f) read.csv(file.path(dir, f), stringsAsFactors = FALSE, na.strings = "",
+                           colClasses = c(study = "character", condition = "character"))
+tr <- read.csv(file.path(dir, "trials.csv"), stringsAsFactors = FALSE, na.strings = "",
+               colClasses = c(study = "character", condition = "character",
+                              participant = "character", excluded = "character"))
+ps <- rd("participants_stats.csv")
+pd <- read.csv(file.path(dir, "paired.csv"), stringsAsFactors = FALSE, na.strings = "",
+               colClasses = c(study = "character", condition_a = "character",
+                              condition_b = "character", differ = "character"))
+ef <- read.csv(file.path(dir, "effects.csv"), stringsAsFactors = FALSE, na.strings = NULL,
+               colClasses = c(study = "character", level_a = "character",
+                              level_b = "character"))
+tr$study[is.na(tr$study)] <- ""
+ps$study[is.na(ps$study)] <- ""
+pd$study[is.na(pd$study)] <- ""
+inc <- tr[is.na(tr$excluded), ]
+measures <- c("steps", "efficiency", "time", "error_true", "error_flat")
+tol <- 1e-9
+checked <- 0
+wrong <- character(0)
+same <- function(what, got, want) {
+    ok <- (is.na(got) && is.na(want)) ||
+        (!is.na(got) && !is.na(want) && abs(got - want) <= tol)
+    checked <<- checked + 1
+    if (!ok) wrong <<- c(wrong, sprintf("%s: report %s, R %s", what, format(got, digits = 17),
+                                        format(want, digits = 17)))
+}
+ci <- function(x, k = 1) {
+    n <- length(x)
+    if (n < 2) return(c(NA, NA))
+    h <- qt(0.975, n - 1) * k * sd(x) / sqrt(n)
+    c(mean(x) - h, mean(x) + h)
+}
+seen <- 0
+seen_pairs <- 0
+seen_effects <- 0
+factors <- c("q", "room", "cell", "cues", "minimap")
+# a factor's value as trials.csv writes it ("" for none)
+level_text <- function(x) ifelse(is.na(x), "", as.character(x))
+for (st in unique(inc$study)) {
+    d <- inc[inc$study == st, ]
+    conds <- ps$condition[ps$study == st & ps$measure == "steps"]
+    conds <- unique(c(conds, ps$condition[ps$study == st]))
+    for (m in measures) {
+        v <- d[!is.na(d[[m]]), ]
+        if (!nrow(v)) next
+        # the participants' means: participant x condition
+        pm <- tapply(v[[m]], list(v$participant, v$condition), mean)
+        nt <- tapply(v[[m]], list(v$participant, v$condition), length)
+        cm <- conds[conds %in% colnames(pm)]
+        if (length(setdiff(colnames(pm), cm)))
+            wrong <- c(wrong, sprintf("%s %s: conditions %s not in participants_stats.csv", st, m,
+                                      paste(setdiff(colnames(pm), cm), collapse = " ")))
+        pm <- pm[, cm, drop = FALSE]
+        nt <- nt[, cm, drop = FALSE]
+        J <- length(cm)
+        complete <- pm[rowSums(is.na(pm)) == 0, , drop = FALSE]
+        norm <- complete - rowMeans(complete) + mean(complete)
+        for (j in seq_along(cm)) {
+            x <- pm[!is.na(pm[, j]), j]
+            row <- ps[ps$study == st & ps$condition == cm[j] & ps$measure == m, ]
+            what <- sprintf("%s/%s %s", st, cm[j], m)
+            if (nrow(row) != 1) {
+                wrong <- c(wrong, sprintf("%s: %d rows in participants_stats.csv", what, nrow(row)))
+                next
+            }
+            seen <- seen + 1
+            same(paste(what, "participants"), row$participants, length(x))
+            same(paste(what, "trials"), row$trials, sum(nt[, j], na.rm = TRUE))
+            same(paste(what, "mean"), row$mean, mean(x))
+            same(paste(what, "sd"), row$sd, if (length(x) > 1) sd(x) else NA)
+            b <- ci(x)
+            same(paste(what, "ci_low"), row$ci_low, b[1])
+            same(paste(what, "ci_high"), row$ci_high, b[2])
+            same(paste(what, "conditions"), row$conditions, J)
+            same(paste(what, "n_within"), row$n_within, if (J >= 2) nrow(complete) else 0)
+            w <- if (J >= 2 && nrow(complete) >= 1) norm[, j] else numeric(0)
+            same(paste(what, "mean_within"), row$mean_within, if (length(w)) mean(w) else NA)
+            wc <- if (length(w)) ci(w, sqrt(J / (J - 1))) else c(NA, NA)
+            same(paste(what, "ci_within_low"), row$ci_within_low, wc[1])
+            same(paste(what, "ci_within_high"), row$ci_within_high, wc[2])
+        }
+        if (J < 2) next
+        # main effects: each factor's levels (the conditions' first trials),
+        # a level's value the mean of its conditions for the complete
+        # participants, each pair of levels A - B
+        if (length(conds) <= 32 && nrow(complete)) for (k in factors) {
+            lv <- sapply(cm, function(cc) level_text(d[d$condition == cc, k][1]))
+            L <- unique(lv)
+            if (length(L) < 2) next
+            val <- sapply(L, function(l) rowMeans(complete[, lv == l, drop = FALSE]))
+            val <- matrix(val, nrow = nrow(complete))
+            for (a in 1:(length(L) - 1)) for (b in (a + 1):length(L)) {
+                dd <- val[, a] - val[, b]
+                row <- ef[ef$study == st & ef$measure == m & ef$factor == k &
+                          ef$level_a == L[a] & ef$level_b == L[b], ]
+                what <- sprintf("%s %s %s=%s - %s", st, m, k, L[a], L[b])
+                if (nrow(row) != 1) {
+                    wrong <- c(wrong, sprintf("%s: %d rows in effects.csv", what, nrow(row)))
+                    next
+                }
+                seen_effects <- seen_effects + 1
+                same(paste(what, "n"), row$n, length(dd))
+                same(paste(what, "mean_diff"), row$mean_diff, mean(dd))
+                same(paste(what, "sd_diff"), row$sd_diff, if (length(dd) > 1) sd(dd) else NA)
+                b2 <- ci(dd)
+                same(paste(what, "ci_low"), row$ci_low, b2[1])
+                same(paste(what, "ci_high"), row$ci_high, b2[2])
+                same(paste(what, "dz"), row$dz,
+                     if (length(dd) > 1 && sd(dd) > 0) mean(dd) / sd(dd) else NA)
+            }
+        }
+        # each pair of the study's conditions: A - B over participants with both
+        for (a in 1:(J - 1)) for (b in (a + 1):J) {
+            dd <- pm[, a] - pm[, b]
+            dd <- dd[!is.na(dd)]
+            if (!length(dd)) next
+            row <- pd[pd$study == st & pd$measure == m & pd$condition_a == cm[a] &
+                      pd$condition_b == cm[b], ]
+            what <- sprintf("%s %s %s - %s", st, m, cm[a], cm[b])
+            if (nrow(row) != 1) {
+                wrong <- c(wrong, sprintf("%s: %d rows in paired.csv", what, nrow(row)))
+                next
+            }
+            seen_pairs <- seen_pairs + 1
+            fa <- d[d$condition == cm[a], ][1, ]
+            fb <- d[d$condition == cm[b], ][1, ]
+            f <- c("q", "room", "cell", "cues", "minimap")
+            df <- f[!mapply(function(k) identical(fa[[k]], fb[[k]]), f)]
+            want <- if (length(df)) paste(df, collapse = " ") else NA
+            checked <- checked + 1
+            if (!identical(row$differ, want))
+                wrong <- c(wrong, sprintf("%s differ: report %s, R %s", what, row$differ, want))
+            same(paste(what, "n"), row$n, length(dd))
+            same(paste(what, "mean_diff"), row$mean_diff, mean(dd))
+            same(paste(what, "sd_diff"), row$sd_diff, if (length(dd) > 1) sd(dd) else NA)
+            b2 <- ci(dd)
+            same(paste(what, "ci_low"), row$ci_low, b2[1])
+            same(paste(what, "ci_high"), row$ci_high, b2[2])
+            dz <- if (length(dd) > 1 && sd(dd) > 0) mean(dd) / sd(dd) else NA
+            same(paste(what, "dz"), row$dz, dz)
+        }
+    }
+}
+if (seen_effects != nrow(ef))
+    wrong <- c(wrong, sprintf("effects.csv has %d rows, R expects %d", nrow(ef), seen_effects))
+if (seen != nrow(ps))
+    wrong <- c(wrong, sprintf("participants_stats.csv has %d rows, R expects %d", nrow(ps), seen))
+if (seen_pairs != nrow(pd))
+    wrong <- c(wrong, sprintf("paired.csv has %d rows, R expects %d", nrow(pd), seen_pairs))
+if (length(wrong)) {
+    cat("R referee: disagrees:\n", paste0("  ", wrong, "\n"), sep = "")
+    quit(status = 1)
+}
+cat(sprintf("R referee: %d figures agree (%d rows, %d pairs, %d effects; tolerance 1e-9)\n",
+            checked, seen, seen_pairs, seen_effects))
