@@ -229,7 +229,7 @@ $(BUILD)/tests/test_audio: tests/test_audio.c $(AUDIO_SRC) platform/audio/hol_au
 	$(CC) $(CFLAGS) -o $@ $< $(AUDIO_SRC) $(CORE_LIB) $(LDFLAGS) -lcmocka $(LDLIBS)
 
 # The report's pictures (platform/cli/report/report_draw.c) and their PNG writer.
-REPORT_DRAW_SRC := platform/cli/report/report_draw.c render/hol_font.c render/hol_png.c
+REPORT_DRAW_SRC := platform/cli/report/report_draw.c render/hol_face_draw.c render/hol_png.c
 $(BUILD)/tests/test_report_draw: tests/test_report_draw.c $(REPORT_DRAW_SRC) platform/cli/report/report_draw.h $(CORE_LIB)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) -o $@ $< $(REPORT_DRAW_SRC) $(CORE_LIB) $(LDFLAGS) -lcmocka -lz $(LDLIBS)

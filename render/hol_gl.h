@@ -24,11 +24,14 @@ typedef void (*hol_gl_proc)(void);
 typedef hol_gl_proc (*hol_gl_getproc)(const char *name);
 
 #define HOL_GL_FUNCS(X) \
+    X(PFNGLACTIVETEXTUREPROC, ActiveTexture, "glActiveTexture") \
     X(PFNGLATTACHSHADERPROC, AttachShader, "glAttachShader") \
     X(PFNGLBINDBUFFERPROC, BindBuffer, "glBindBuffer") \
+    X(PFNGLBINDTEXTUREPROC, BindTexture, "glBindTexture") \
     X(PFNGLBINDVERTEXARRAYPROC, BindVertexArray, "glBindVertexArray") \
     X(PFNGLBLENDCOLORPROC, BlendColor, "glBlendColor") \
     X(PFNGLBLENDFUNCPROC, BlendFunc, "glBlendFunc") \
+    X(PFNGLBLENDFUNCSEPARATEPROC, BlendFuncSeparate, "glBlendFuncSeparate") \
     X(PFNGLBUFFERDATAPROC, BufferData, "glBufferData") \
     X(PFNGLBUFFERSUBDATAPROC, BufferSubData, "glBufferSubData") \
     X(PFNGLCLEARPROC, Clear, "glClear") \
@@ -43,6 +46,7 @@ typedef hol_gl_proc (*hol_gl_getproc)(const char *name);
     X(PFNGLDELETEBUFFERSPROC, DeleteBuffers, "glDeleteBuffers") \
     X(PFNGLDELETEPROGRAMPROC, DeleteProgram, "glDeleteProgram") \
     X(PFNGLDELETESHADERPROC, DeleteShader, "glDeleteShader") \
+    X(PFNGLDELETETEXTURESPROC, DeleteTextures, "glDeleteTextures") \
     X(PFNGLDELETEVERTEXARRAYSPROC, DeleteVertexArrays, "glDeleteVertexArrays") \
     X(PFNGLDEPTHFUNCPROC, DepthFunc, "glDepthFunc") \
     X(PFNGLDEPTHMASKPROC, DepthMask, "glDepthMask") \
@@ -52,6 +56,7 @@ typedef hol_gl_proc (*hol_gl_getproc)(const char *name);
     X(PFNGLENABLEVERTEXATTRIBARRAYPROC, EnableVertexAttribArray, "glEnableVertexAttribArray") \
     X(PFNGLFINISHPROC, Finish, "glFinish") \
     X(PFNGLGENBUFFERSPROC, GenBuffers, "glGenBuffers") \
+    X(PFNGLGENTEXTURESPROC, GenTextures, "glGenTextures") \
     X(PFNGLGENVERTEXARRAYSPROC, GenVertexArrays, "glGenVertexArrays") \
     X(PFNGLGETERRORPROC, GetError, "glGetError") \
     X(PFNGLGETPROGRAMIVPROC, GetProgramiv, "glGetProgramiv") \
@@ -65,6 +70,8 @@ typedef hol_gl_proc (*hol_gl_getproc)(const char *name);
     X(PFNGLSTENCILFUNCPROC, StencilFunc, "glStencilFunc") \
     X(PFNGLSTENCILMASKPROC, StencilMask, "glStencilMask") \
     X(PFNGLSTENCILOPPROC, StencilOp, "glStencilOp") \
+    X(PFNGLTEXIMAGE2DPROC, TexImage2D, "glTexImage2D") \
+    X(PFNGLTEXPARAMETERIPROC, TexParameteri, "glTexParameteri") \
     X(PFNGLUNIFORM1FPROC, Uniform1f, "glUniform1f") \
     X(PFNGLUNIFORM1IPROC, Uniform1i, "glUniform1i") \
     X(PFNGLUNIFORM3FPROC, Uniform3f, "glUniform3f") \

@@ -1,15 +1,23 @@
 /* hol_hud.c - HUD text and the Poincare minimap. */
 #include "hol_hud.h"
-#include "hol_font.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
 
+#include "../core/hol_face.h"
 #include "../core/hol_hyper.h"
 #include "../core/hol_nav.h"
 
 #define HOL__PI 3.14159265358979323846
+
+/* The HUD's em in pixels on a screen h pixels high: 24 at 720p, at
+ * least 8 (a line of 9.3 pixels, the 5x7 font's 9 at 1x). */
+static float hol__hud_size(int h)
+{
+    float s = (float)h / 30.0f;
+    return s < 8 ? 8 : s;
+}
 
 
 typedef struct hol__px {
@@ -74,27 +82,88 @@ static void hol__segment(hol__px *p, float x0, float y0, float x1, float y1, flo
     hol__poly(p, (const float(*)[2])q, 4, rgb);
 }
 
-int hol_hud_text(hol_mesh *out, const char *s, float x, float y, float scale,
-                 const uint8_t rgb[3], int w, int h)
+/* The text face's scale: font units and atlas pixels to the caller's. */
+typedef struct hol__face {
+    hol_face_metrics m;
+    float aw, ah; /* the atlas's size */
+} hol__face;
+
+static hol__face hol__face_get(void)
+{
+    hol__face f;
+    int w, h;
+    hol_face_get_metrics(&f.m);
+    hol_face_atlas(&w, &h);
+    f.aw = (float)w;
+    f.ah = (float)h;
+    return f;
+}
+
+/* One glyph's quad: its atlas rectangle scaled by k from the pen (x, y). */
+static void hol__glyph(hol__px *p, const hol__face *fc, const hol_face_glyph *g, float x, float y,
+                       float k, const uint8_t rgb[3])
+{
+    int64_t b = hol_mesh_reserve(p->m, 4, 6);
+    if (b < 0)
+        return;
+    float x0 = x + (float)g->qx * k, y0 = y + (float)g->qy * k;
+    float x1 = x0 + (float)g->w * k, y1 = y0 + (float)g->h * k;
+    float u0 = (float)g->x / fc->aw, v0 = (float)g->y / fc->ah;
+    float u1 = (float)(g->x + g->w) / fc->aw, v1 = (float)(g->y + g->h) / fc->ah;
+    const float c[4][4] = {{x0, y0, u0, v0}, {x1, y0, u1, v0}, {x1, y1, u1, v1}, {x0, y1, u0, v1}};
+    for (int i = 0; i < 4; i++) {
+        hol__v(p, c[i][0], c[i][1], rgb);
+        hol_vertex *v = &p->m->v[p->m->nv - 1];
+        v->rgba[3] = HOL_MESH_GLYPH;
+        hol_mesh_set_uv(v, c[i][2], c[i][3]);
+    }
+    uint32_t u = (uint32_t)b, t[6] = {u, u + 1, u + 2, u, u + 2, u + 3};
+    memcpy(p->m->idx + p->m->ni, t, sizeof t);
+    p->m->ni += 6;
+}
+
+/* The first len bytes of s from the pen (x, y on the baseline) at size;
+ * the advance. */
+static float hol__text(hol__px *p, const char *s, size_t len, float x, float y, float size,
+                       const uint8_t rgb[3])
+{
+    hol__face fc = hol__face_get();
+    float k = size / (float)fc.m.bake_em, per = size / (float)fc.m.units_per_em;
+    long pen = 0;
+    int prev = -1;
+    for (size_t at = 0; at < len;) {
+        int gi = hol_face_index(hol_face_decode(s, len, &at));
+        if (prev >= 0)
+            pen += hol_face_kerning(prev, gi);
+        const hol_face_glyph *g = hol_face_glyph_at(gi);
+        if (g->w && g->h)
+            hol__glyph(p, &fc, g, x + (float)pen * per, y, k, rgb);
+        pen += g->advance;
+        prev = gi;
+    }
+    return (float)pen * per;
+}
+
+float hol_hud_text(hol_mesh *out, const char *s, float x, float y, float size,
+                   const uint8_t rgb[3], int w, int h)
 {
     hol__px p = {out, w, h, 0};
-    float x0 = x;
-    for (; *s; s++) {
-        const uint8_t *g = hol_font_glyph((unsigned char)*s);
-        /* one quad per horizontal run of set pixels */
-        for (int r = 0; r < 7; r++)
-            for (int k = 0; k < 5; k++) {
-                if (!(g[r] & (0x10 >> k)) || (k > 0 && (g[r] & (0x10 >> (k - 1)))))
-                    continue;
-                int e = k;
-                while (e + 1 < 5 && (g[r] & (0x10 >> (e + 1))))
-                    e++;
-                hol__rect(&p, x + k * scale, y + r * scale, x + (e + 1) * scale,
-                          y + (r + 1) * scale, rgb);
-            }
-        x += 6 * scale;
-    }
-    return (int)(x - x0);
+    return hol__text(&p, s, strlen(s), x, y, size, rgb);
+}
+
+/* A size's ascent and line height (pixels). */
+static float hol__ascent(float size)
+{
+    hol_face_metrics m;
+    hol_face_get_metrics(&m);
+    return (float)m.ascent * size / (float)m.units_per_em;
+}
+
+static float hol__line_h(float size)
+{
+    hol_face_metrics m;
+    hol_face_get_metrics(&m);
+    return (float)(m.ascent - m.descent) * size / (float)m.units_per_em;
 }
 
 /* Hot-cold colour: red at the objective, through yellow, to blue far. */
@@ -344,18 +413,18 @@ static void hol__map_caption(hol__px *p, float rad, float cx, float cy)
 {
     static const char text[] = HOL_HUD_FLAT_CAPTION;
     static const uint8_t panel[3] = {24, 28, 34}, ink[3] = {240, 240, 230};
-    float sc = p->hand ? 3 : (float)(p->h >= 480 ? p->h / 240 : 1);
-    float tw = 6 * (float)(sizeof text - 1) * sc, x, y;
+    float size = p->hand ? 24 : hol__hud_size(p->h), pad = 0.25f * size;
+    float tw = hol_face_width(text, size), lh = hol__line_h(size), x, y;
     if (p->hand) {
         x = cx - tw / 2;
-        y = 2 * sc;
+        y = pad;
     } else {
         x = cx + 1.1f * rad - tw;
-        x = x < 3 * sc ? 3 * sc : x;
-        y = cy - 1.1f * rad - 11 * sc;
+        x = x < 2 * pad ? 2 * pad : x;
+        y = cy - 1.1f * rad - lh - 2 * pad;
     }
-    hol__rect(p, x - 2 * sc, y - 2 * sc, x + tw + sc, y + 9 * sc, panel);
-    hol_hud_text(p->m, text, x, y, sc, ink, p->w, p->h);
+    hol__rect(p, x - pad, y - pad / 2, x + tw + pad, y + lh + pad / 2, panel);
+    hol__text(p, text, sizeof text - 1, x, y + hol__ascent(size), size, ink);
 }
 
 static void hol__minimap(hol__px *p, const hol_frame_desc *f)
@@ -465,74 +534,49 @@ static int hol__text_lines(const hol_frame_desc *f, char lines[][96])
     }
     if (f->prompt && f->prompt[0])
         snprintf(lines[nl++], 96, "%.60s", f->prompt);
-    for (int i = 0; i < nl; i++) /* prose in capitals: f, l, r are for addresses */
-        if (strncmp(lines[i], "TILE ", 5) != 0)
-            for (char *c = lines[i]; *c; c++)
-                if (*c >= 'a' && *c <= 'z')
-                    *c = (char)(*c - 32);
     return nl;
 }
 
 /* The text: a panel at the top left (over the sky: the view's top is sky
- * at the usual pitch), the lines in white and the prompt last in yellow;
- * a glyph is 6 x 9 font pixels of h / 240 screen pixels (at least 1). The
- * overlay is at the top right, a size smaller. */
+ * at the usual pitch), the lines in white and the prompt last in yellow,
+ * in the text face at hol__hud_size. The overlay is at the top right, a
+ * size smaller. */
 void hol_hud_build_text(hol_mesh *out, const hol_frame_desc *f, int w, int h)
 {
     hol__px p = {out, w, h, 0};
-    float sc = (float)(h >= 480 ? h / 240 : 1);
+    float size = hol__hud_size(h), lh = hol__line_h(size), pad = 0.25f * size;
     char lines[HOL_RENDER_HUD_LINES + 1][96];
     int nl = hol__text_lines(f, lines);
     int prompt = f->prompt && f->prompt[0];
-    size_t longest = 0;
-    for (int i = 0; i < nl; i++)
-        longest = strlen(lines[i]) > longest ? strlen(lines[i]) : longest;
+    float longest = 0;
+    for (int i = 0; i < nl; i++) {
+        float lw = hol_face_width(lines[i], size);
+        longest = lw > longest ? lw : longest;
+    }
     static const uint8_t panel[3] = {24, 28, 34}, text[3] = {240, 240, 230},
                          yellow[3] = {255, 215, 60};
-    float m = 3 * sc;
+    float m = 1.5f * pad;
     if (nl > 0)
-        hol__rect(&p, m, m, m + (6 * (float)longest + 3) * sc, m + (9 * nl + 2) * sc, panel);
+        hol__rect(&p, m, m, m + longest + 2 * pad, m + lh * (float)nl + pad, panel);
     for (int i = 0; i < nl; i++)
-        hol_hud_text(out, lines[i], m + 2 * sc, m + (2 + 9 * i) * sc, sc,
-                     prompt && i == nl - 1 ? yellow : text, w, h);
+        hol__text(&p, lines[i], strlen(lines[i]), m + pad,
+                  m + pad / 2 + hol__ascent(size) + lh * (float)i, size,
+                  prompt && i == nl - 1 ? yellow : text);
     if (f->overlay && f->overlay[0]) {
         char o[64];
         snprintf(o, sizeof o, "%.60s", f->overlay);
-        float so = sc > 1 ? sc - 1 : 1, ow = (6 * (float)strlen(o) + 3) * so;
-        hol__rect(&p, (float)w - m - ow, m, (float)w - m, m + 11 * so, panel);
-        hol_hud_text(out, o, (float)w - m - ow + 2 * so, m + 2 * so, so, text, w, h);
+        float so = 0.8f * size, po = 0.25f * so, ow = hol_face_width(o, so) + 2 * po;
+        hol__rect(&p, (float)w - m - ow, m, (float)w - m, m + hol__line_h(so) + po, panel);
+        hol__text(&p, o, strlen(o), (float)w - m - ow + po, m + po / 2 + hol__ascent(so), so,
+                  text);
     }
 }
 
-/* Wrap src into lines of at most cols characters at spaces (a word longer
- * than a line is cut at the line's end and goes on); returns the number of
- * lines written into out (at most max). */
-static int hol__wrap(const char *src, int cols, char out[][96], int max)
+/* The panel's em at glyph scale k (font pixels): a cap height of 7 font
+ * pixels at k = 1 (the 5x7 font's, 1.15 degrees at the usual distance). */
+static float hol__panel_size(float k)
 {
-    int n = 0;
-    size_t len = strlen(src), at = 0;
-    while (at < len && n < max) {
-        while (at < len && src[at] == ' ' && n > 0)
-            at++; /* a wrapped line does not start with a blank */
-        size_t take = len - at;
-        if ((int)take > cols) {
-            take = (size_t)cols;
-            size_t sp = take;
-            while (sp > 0 && src[at + sp] != ' ')
-                sp--;
-            if (sp > 0)
-                take = sp;
-        }
-        if (take > 95)
-            take = 95;
-        memcpy(out[n], src + at, take);
-        out[n][take] = 0;
-        n++;
-        at += take;
-        if (at >= len)
-            break;
-    }
-    return n;
+    return 7.0f * k * hol_face_em_per_cap();
 }
 
 /* The wrapped lines of the panel at glyph scale k: one entry a screen
@@ -545,12 +589,17 @@ static int hol__panel_lines(const hol_frame_desc *f, float k, char out[][96], ui
     int last = prompt ? nl - 1 : -1; /* the prompt's line */
     if (f->overlay && f->overlay[0] && nl < HOL_RENDER_HUD_LINES + 2)
         snprintf(lines[nl++], 96, "%.60s", f->overlay);
-    int cols = (int)((HOL_HUD_PANEL_W - 4) / (6 * k));
+    float size = hol__panel_size(k);
     for (int i = 0; i < nl && n < max; i++) {
-        int m = hol__wrap(lines[i], cols, out + n, max - n);
-        int is_prompt = i == last;
-        for (int j = 0; j < m; j++)
-            kind[n + j] = (uint8_t)is_prompt;
+        hol_face_line fl[48];
+        int m = hol_face_wrap(lines[i], size, HOL_HUD_PANEL_W - 4, fl, max - n);
+        m = m < max - n ? m : max - n;
+        for (int j = 0; j < m; j++) {
+            size_t len = fl[j].len < 95 ? fl[j].len : 95;
+            memcpy(out[n + j], lines[i] + fl[j].start, len);
+            out[n + j][len] = 0;
+            kind[n + j] = (uint8_t)(i == last);
+        }
         n += m;
     }
     return n;
@@ -563,11 +612,12 @@ void hol_hud_build_panel_text(hol_mesh *out, const hol_frame_desc *f, float out_
     float k = 1;
     int n = hol__panel_lines(f, k, lines, kind, 48);
     /* shrink until every line fits the block's height (nothing is cut) */
-    while (k > 0.3f && 9 * k * (float)n + 4 > HOL_HUD_PANEL_HMAX) {
+    while (k > 0.3f && hol__line_h(hol__panel_size(k)) * (float)n + 4 > HOL_HUD_PANEL_HMAX) {
         k *= 0.9f;
         n = hol__panel_lines(f, k, lines, kind, 48);
     }
-    float wpx = HOL_HUD_PANEL_W, hpx = 9 * k * (float)n + 4;
+    float size = hol__panel_size(k), lh = hol__line_h(size);
+    float wpx = HOL_HUD_PANEL_W, hpx = lh * (float)n + 4;
     if (n == 0) {
         out_wh[0] = out_wh[1] = 0;
         return;
@@ -578,10 +628,10 @@ void hol_hud_build_panel_text(hol_mesh *out, const hol_frame_desc *f, float out_
     static const uint8_t panel[3] = {24, 28, 34}, text[3] = {240, 240, 230},
                          yellow[3] = {255, 215, 60};
     hol__rect(&p, 0, 0, (float)p.w, (float)p.h, panel);
-    float sc = 8 * k;
     for (int i = 0; i < n; i++)
-        hol_hud_text(out, lines[i], 2 * 8, 2 * 8 + 9 * sc * (float)i, sc,
-                     kind[i] ? yellow : text, p.w, p.h);
+        hol__text(&p, lines[i], strlen(lines[i]), 2 * 8,
+                  8 * (2 + hol__ascent(size) + lh * (float)i), 8 * size,
+                  kind[i] ? yellow : text);
     out_wh[0] = wpx;
     out_wh[1] = hpx;
 }

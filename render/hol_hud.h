@@ -1,9 +1,12 @@
-/* hol_hud.h - HUD text (built-in 5x7 bitmap font) and the Poincare minimap.
+/* hol_hud.h - HUD text (the text face, core/hol_face.h) and the Poincare
+ * minimap.
  *
  * Contract
  * - Builds flat 2D geometry straight in normalized device coordinates
- *   (z = 0) into a hol_mesh, for one draw with the renderer's flat mode.
- *   Vertices are HOL_MESH_PROP (never floor). Nothing allocates.
+ *   (z = 0) into a hol_mesh, for one draw with the renderer's text
+ *   program (render/hol_program.h). Vertices are HOL_MESH_PROP (never
+ *   floor), a glyph's HOL_MESH_GLYPH with its atlas point (hol_mesh.h):
+ *   one quad a glyph. Nothing allocates.
  * - Minimap: a Poincare disk centred on the user's tile (room north up,
  *   room east right) showing every tile within HOL_HUD_MAP_RADIUS steps as
  *   its geodesic square (the tiling is the user's tile's, {4,5}..{4,8});
@@ -34,7 +37,7 @@
 
 #define HOL_HUD_MAP_RADIUS HOL_APP_MINIMAP_RADIUS
 /* The caption over the flat grid's map (Q = 4): a plain top view. */
-#define HOL_HUD_FLAT_CAPTION "MAP: FLAT TOP VIEW (4,4)"
+#define HOL_HUD_FLAT_CAPTION "Map: flat top view {4,4}"
 
 /* Append the HUD of frame f (viewport w x h pixels) to out: the map part
  * (disk, tiles, path, objectives, rim arrows: a function of the user's
@@ -87,10 +90,11 @@ static inline void hol_hud_panel_box(int map, double px, double out[4])
  * out = x0, y0, x1, y1 in pixels (y down). */
 void hol_hud_map_rect(int w, int h, float out[4]);
 
-/* Text at pixel (x, y) (top-left of the first glyph), each font pixel a
- * scale x scale square; returns the advance in pixels. Unknown characters
- * draw as a box; lowercase other than f, l, r draws as uppercase. */
-int hol_hud_text(hol_mesh *out, const char *s, float x, float y, float scale,
-                 const uint8_t rgb[3], int w, int h);
+/* UTF-8 text in the text face from the pen at pixel (x, y) on the
+ * baseline (y down), size pixels to the em, on a w x h screen; returns the
+ * advance in pixels (hol_face_width's). A code point the face lacks, or a
+ * malformed byte, draws the missing box (core/hol_face.h). */
+float hol_hud_text(hol_mesh *out, const char *s, float x, float y, float size,
+                   const uint8_t rgb[3], int w, int h);
 
 #endif

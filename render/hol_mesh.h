@@ -8,6 +8,11 @@
  *   RGBA8. Alpha marks the surface kind: HOL_MESH_FLOOR (255) for the ground
  *   of a tile (what --tile-ids calls floor), HOL_MESH_PROP (0) for anything
  *   else. Indices are 32-bit triangles, counter-clockwise seen from outside.
+ * - A glyph of the text face (the overlays: render/hol_hud.c) has alpha
+ *   HOL_MESH_GLYPH and no normal: its four normal bytes hold its atlas
+ *   point (u, v in 0..1 of the atlas) as two unsigned 16-bit numbers
+ *   (u * 65535, native byte order; hol_mesh_set_uv), which the renderer
+ *   reads as attribute 3 for the text program (render/hol_program.h).
  * - Primitives take a placement: translation (x, y, z), a yaw (radians,
  *   counter-clockwise seen from above) and a scale.
  */
@@ -15,9 +20,11 @@
 #define HOL_MESH_H
 
 #include <stdint.h>
+#include <string.h>
 
 #define HOL_MESH_FLOOR 255
 #define HOL_MESH_PROP 0
+#define HOL_MESH_GLYPH 64
 
 typedef struct hol_vertex {
     float pos[3];
@@ -35,6 +42,13 @@ typedef struct hol_mesh {
 typedef struct hol_place {
     float x, y, z, yaw, scale;
 } hol_place;
+
+/* A glyph vertex's atlas point (u, v in 0..1) into its normal bytes. */
+static inline void hol_mesh_set_uv(hol_vertex *v, float u, float w)
+{
+    uint16_t uv[2] = {(uint16_t)(u * 65535.0f + 0.5f), (uint16_t)(w * 65535.0f + 0.5f)};
+    memcpy(v->nrm, uv, sizeof uv);
+}
 
 void hol_mesh_init(hol_mesh *m, hol_vertex *v, uint32_t cap_v, uint32_t *idx,
                    uint32_t cap_i);

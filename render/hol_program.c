@@ -4,6 +4,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "../core/hol_face.h"
 #include "hol_light.h"
 
 #include "hol_glsl.h" /* made by render/shaders/glsl_c.sh (the build folder) */
@@ -16,8 +17,8 @@ _Static_assert(HOL_LIGHT_DAY == 0 && HOL_LIGHT_DUSK == 1 && HOL_LIGHT_NIGHT == 2
                "core's hol_app_lighting: day 0, dusk 1, night 2");
 
 /* Slots: [0, 2) day by wedge; [2, 6) the lit room by (lighting, wedge);
- * [6, HOL_PROG_SLOTS) the lit tiles by (lighting, flat, wedge, fx, shadow
- * pairs / 2), the last varying fastest. */
+ * [6, HOL_PROG_TEXT_SLOT) the lit tiles by (lighting, flat, wedge, fx,
+ * shadow pairs / 2), the last varying fastest; then the text program. */
 enum { HOL__DAY0 = 0, HOL__ROOM0 = 2, HOL__TILES0 = 6 };
 
 static int hol__bit(int v)
@@ -27,8 +28,12 @@ static int hol__bit(int v)
 
 int hol_prog_slot(const hol_prog_key *k)
 {
-    if (!hol__bit(k->room) || !hol__bit(k->flat) || !hol__bit(k->wedge))
+    if (!hol__bit(k->room) || !hol__bit(k->flat) || !hol__bit(k->wedge) || !hol__bit(k->text))
         return -1;
+    if (k->text)
+        return k->lighting || k->room || k->flat || k->wedge || k->fx || k->shadow_pairs
+                   ? -1
+                   : HOL_PROG_TEXT_SLOT;
     int tiles_only = k->flat || k->fx || k->shadow_pairs;
     if (k->lighting == HOL_LIGHT_DAY)
         return k->room || tiles_only ? -1 : HOL__DAY0 + k->wedge;
@@ -48,6 +53,10 @@ hol_prog_key hol_prog_key_of_slot(int slot)
 {
     hol_prog_key k;
     memset(&k, 0, sizeof k);
+    if (slot == HOL_PROG_TEXT_SLOT) {
+        k.text = 1;
+        return k;
+    }
     if (slot < HOL__ROOM0) {
         k.wedge = slot - HOL__DAY0;
         return k;
@@ -77,16 +86,20 @@ int hol_prog_preamble(const hol_prog_key *k, char *out, size_t n)
                                          {"float", ""}, {"vec4", ""}};
     int lit = k->lighting == HOL_LIGHT_DAY ? 0 : k->room ? 2 : 1;
     int nsh = k->shadow_pairs >= 0 && k->shadow_pairs <= 4 ? k->shadow_pairs : 0;
+    hol_face_metrics m; /* the atlas's field reach (HOL_SPREAD) */
+    hol_face_get_metrics(&m);
     int len = snprintf(out, n,
                        "#version 300 es\n#define HOL_LIT %d\n#define HOL_FLAT %d\n"
                        "#define HOL_WEDGE %d\n#define HOL_NIGHT %d\n#define HOL_FX %d\n"
+                       "#define HOL_TEXT %d\n#define HOL_SPREAD %d.0\n"
                        "#define HOL_SHD %d\n#define HOL_SV %s\n#define HOL_SW %s\n"
                        "#define HOL_TX_ROWS " HOL__STR(HOL_PROG_TX_ROWS) "\n"
                        "#define HOL_LIGHT_D0_M " HOL__STR(HOL_LIGHT_D0_M) "\n"
                        "#define HOL_LIGHT_PHYS " HOL__STR(HOL_LIGHT_PHYS) "\n"
                        "#define HOL_LIGHT_RADIUS_M " HOL__STR(HOL_LIGHT_RADIUS_M) "\n"
                        "#define HOL_LIGHT_HEIGHT_M " HOL__STR(HOL_LIGHT_HEIGHT_M) "\n",
-                       lit, k->flat, k->wedge, k->lighting == HOL_LIGHT_NIGHT, k->fx, nsh,
+                       lit, k->flat, k->wedge, k->lighting == HOL_LIGHT_NIGHT, k->fx, k->text != 0,
+                       m.spread, nsh,
                        sv[nsh][0], sv[nsh][1]);
     return len < 0 || (size_t)len >= n ? -1 : len;
 }
@@ -111,11 +124,11 @@ static void hol__uniforms(const hol_gl *gl, hol_prog *pg)
     static const char *const names[] = {"u_vp", "u_model", "u_mode", "u_id", "u_eye",
                                         "u_fog", "u_fogd", "u_lin", "u_wedge", "u_wmode",
                                         "u_light", "u_klein", "u_mpu2", "u_tl", "u_eyeh",
-                                        "u_lonly", "u_tx", "u_ts"};
+                                        "u_lonly", "u_tx", "u_ts", "u_atlas"};
     GLint *loc[] = {&pg->u_vp, &pg->u_model, &pg->u_mode, &pg->u_id, &pg->u_eye,
                     &pg->u_fog, &pg->u_fogd, &pg->u_lin, &pg->u_wedge, &pg->u_wmode,
                     &pg->u_light, &pg->u_klein, &pg->u_mpu2, &pg->u_tl, &pg->u_eyeh,
-                    &pg->u_lonly, &pg->u_tx, &pg->u_ts};
+                    &pg->u_lonly, &pg->u_tx, &pg->u_ts, &pg->u_atlas};
     _Static_assert(sizeof names / sizeof names[0] == sizeof loc / sizeof loc[0],
                    "a name per uniform");
     for (size_t i = 0; i < sizeof loc / sizeof loc[0]; i++)

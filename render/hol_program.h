@@ -12,6 +12,11 @@
  *   {4,4} grid, the wedge's discard, the lights' effects (fireflies,
  *   spots) and the trunk shadow pairs read. The day program has only the
  *   wedge; the lit room's the lighting and the wedge; the lit tiles' all.
+ *   The text program (text = 1, every other field 0) draws the overlays
+ *   (the HUD, the hand's map, the headset's panel): flat colours and the
+ *   text face's glyphs from its signed-distance atlas (core/hol_face.h),
+ *   read from attribute 3 (render/hol_mesh.h's HOL_MESH_GLYPH), with an
+ *   alpha for blending.
  * - hol_prog_slot and hol_prog_key_of_slot are the one encoding between
  *   keys and the HOL_PROG_SLOTS slots of a program table (dense: every
  *   slot is a program): slot -> key -> slot is the identity, and a key no
@@ -46,6 +51,7 @@ typedef struct hol_prog_key {
     int wedge;        /* discard outside a branch's wedge (hol_view.h) */
     int fx;           /* lit tiles: HOL_PROG_FX_* */
     int shadow_pairs; /* lit tiles: trunk shadow pairs read: 0, 2 or 4 */
+    int text;         /* the overlays' program (every other field 0) */
 } hol_prog_key;
 
 /* Rows of per-light values a lit tile gives its shaders (u_tx, four
@@ -54,8 +60,11 @@ typedef struct hol_prog_key {
 #define HOL_PROG_TX_ROWS 7
 
 /* day 2 (wedge), lit room 2 x 2 (lighting, wedge), lit tiles 2 x 2 x 2
- * (lighting, flat, wedge) x HOL_PROG_FX_COUNT x 3 (shadow pairs): 78 */
-#define HOL_PROG_SLOTS (2 + 4 + 8 * HOL_PROG_FX_COUNT * 3)
+ * (lighting, flat, wedge) x HOL_PROG_FX_COUNT x 3 (shadow pairs), text 1:
+ * 79 */
+#define HOL_PROG_SLOTS (2 + 4 + 8 * HOL_PROG_FX_COUNT * 3 + 1)
+/* The text program's slot (the last). */
+#define HOL_PROG_TEXT_SLOT (HOL_PROG_SLOTS - 1)
 
 /* The slot of key, or -1 when no program has that key. */
 int hol_prog_slot(const hol_prog_key *key);
@@ -70,7 +79,7 @@ int hol_prog_preamble(const hol_prog_key *key, char *out, size_t n);
 typedef struct hol_prog {
     GLuint prog;
     GLint u_vp, u_model, u_mode, u_id, u_eye, u_fog, u_fogd, u_lin, u_wedge, u_wmode;
-    GLint u_light, u_klein, u_mpu2, u_tl, u_eyeh, u_lonly, u_tx, u_ts;
+    GLint u_light, u_klein, u_mpu2, u_tl, u_eyeh, u_lonly, u_tx, u_ts, u_atlas;
 } hol_prog;
 
 /* Compile and link key's program into out: 0, or 1 when the GL refused it

@@ -6,8 +6,27 @@
 #include <string.h>
 #include <time.h>
 
+#include "../core/hol_face.h"
 #include "hol_hud.h"
 #include "hol_render_int.h"
+
+/* The text face's atlas (core/hol_face.h) as one R8 texture: linear,
+ * clamped, rows of one byte aligned to 1 (WebGL 2's default is 4). */
+static void hol__make_atlas(hol_render *r)
+{
+    int w, h;
+    const uint8_t *px = hol_face_atlas(&w, &h);
+    r->gl.GenTextures(1, &r->atlas);
+    r->gl.ActiveTexture(GL_TEXTURE0);
+    r->gl.BindTexture(GL_TEXTURE_2D, r->atlas);
+    r->gl.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    r->gl.TexImage2D(GL_TEXTURE_2D, 0, GL_R8, w, h, 0, GL_RED, GL_UNSIGNED_BYTE, px);
+    r->gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    r->gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    r->gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    r->gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    r->gl.BindTexture(GL_TEXTURE_2D, 0);
+}
 
 /* Compile the program of slot k (render/hol_program.h); 0 ok. */
 static int hol__make_slot(hol_render *r, int k)
@@ -82,6 +101,7 @@ hol_err hol_render_create(const hol_render_desc *desc, hol_render **out)
     r->gl.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, r->ibo[1]);
     hol__vao_attribs(r, 1);
     hol__static_grow(r, d.all_programs ? HOL__SLOTS : HOL__SLOTS_FIRST);
+    hol__make_atlas(r);
     if (r->gl.GetError() != GL_NO_ERROR) {
         hol_render_destroy(r);
         return HOL_EUNSUPPORTED;
@@ -99,6 +119,8 @@ void hol_render_destroy(hol_render *r)
             r->gl.DeleteProgram(r->progs[k].prog);
     if (r->vao[0])
         r->gl.DeleteVertexArrays(2, r->vao);
+    if (r->atlas)
+        r->gl.DeleteTextures(1, &r->atlas);
     if (r->vbo[0])
         r->gl.DeleteBuffers(2, r->vbo);
     if (r->ibo[0])

@@ -18,6 +18,10 @@ void hol__vao_attribs(hol_render *r, int k)
                               (const void *)offsetof(hol_vertex, nrm));
     r->gl.VertexAttribPointer(2, 4, GL_UNSIGNED_BYTE, GL_TRUE, sizeof(hol_vertex),
                               (const void *)offsetof(hol_vertex, rgba));
+    /* a glyph's atlas point in the normal's bytes (the text program's) */
+    r->gl.EnableVertexAttribArray(3);
+    r->gl.VertexAttribPointer(3, 2, GL_UNSIGNED_SHORT, GL_TRUE, sizeof(hol_vertex),
+                              (const void *)offsetof(hol_vertex, nrm));
 }
 
 /* A new buffer of new_bytes for target (bound first to it: WebGL 2 fixes a
@@ -162,6 +166,8 @@ hol_prog *hol__frame_prog(hol_render *r, const hol_frame_desc *f, int use)
                                 [HOL__USE_TILES4] = 4};
     hol_prog_key k;
     memset(&k, 0, sizeof k);
+    if (use == HOL__USE_TEXT)
+        return &r->progs[HOL_PROG_TEXT_SLOT];
     k.wedge = r->view.wedges != 0;
     if (use != HOL__USE_DAY) {
         k.lighting = f->lighting;
@@ -180,7 +186,13 @@ hol_prog *hol__frame_prog(hol_render *r, const hol_frame_desc *f, int use)
  * llvmpipe about 8 ms of CPU). HOL_EUNSUPPORTED if one does not compile. */
 hol_err hol__use_progs(hol_render *r, const hol_frame_desc *f)
 {
-    int n;
+    int n, over = 0;
+    for (int i = 0; i < r->nitems && !over; i++)
+        over = r->items[i].pass >= HOL__PASS_HAND;
+    hol_prog *tp = &r->progs[HOL_PROG_TEXT_SLOT];
+    hol_prog_key tk = hol_prog_key_of_slot(HOL_PROG_TEXT_SLOT);
+    if (over && !tp->prog && hol_prog_make(&r->gl, &tk, tp))
+        return HOL_EUNSUPPORTED;
     const int *uses = hol__frame_uses(f, &n);
     for (int i = 0; i < n; i++) {
         hol_prog *pg = hol__frame_prog(r, f, uses[i]);
@@ -321,7 +333,6 @@ static void hol__set_pass_as(hol_render *r, const hol_frame_desc *f, int pass, c
     case HOL__PASS_PANEL:
         /* in the world, drawn last over everything (no depth test): the
          * text is never hidden by a hedge or a trunk nearer than it */
-        r->gl.Disable(GL_BLEND);
         hol__set_overlay(r, vp, ids ? HOL__MODE_ID : HOL__MODE_FLAT);
         break;
     case HOL__PASS_FADE:
@@ -330,18 +341,43 @@ static void hol__set_pass_as(hol_render *r, const hol_frame_desc *f, int pass, c
         r->gl.BlendColor(0, 0, 0, (float)f->fade);
         r->gl.BlendFunc(GL_CONSTANT_ALPHA, GL_ONE_MINUS_CONSTANT_ALPHA);
         break;
-    default:
-        r->gl.Disable(GL_BLEND);
+    default: /* the HUD */
         hol__set_overlay(r, NULL, ids ? HOL__MODE_ID : HOL__MODE_FLAT);
         break;
     }
 }
 
+/* The overlays' program current, its texture bound and the blending of
+ * its glyphs' edges (straight alpha; the destination's alpha kept opaque
+ * over opaque, for a panel's layer image); not for IDs. */
+static void hol__text_prog(hol_render *r, const hol_frame_desc *f)
+{
+    hol_prog *tp = &r->progs[HOL_PROG_TEXT_SLOT];
+    if (r->pg != tp) {
+        r->pg = tp;
+        r->gl.UseProgram(tp->prog);
+        r->gl.Uniform1i(tp->u_lin, r->desc.srgb != 0);
+        r->gl.Uniform1i(tp->u_atlas, 0);
+        r->gl.ActiveTexture(GL_TEXTURE0);
+        r->gl.BindTexture(GL_TEXTURE_2D, r->atlas);
+    }
+    if (f->flags & HOL_RENDER_IDS)
+        return;
+    r->gl.Enable(GL_BLEND);
+    r->gl.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+}
+
 /* The GL state of a pass: at dusk and night the room's meshes take the
  * program without tile code, and the tile pass's state goes to both tile
- * programs (with trunk shadows, current at the end, and without). */
+ * programs (with trunk shadows, current at the end, and without); the
+ * overlays take the text program. */
 static void hol__set_pass(hol_render *r, const hol_frame_desc *f, int pass, const float vp[16])
 {
+    if (pass >= HOL__PASS_HAND && r->progs[HOL_PROG_TEXT_SLOT].prog) {
+        hol__text_prog(r, f);
+        hol__set_pass_as(r, f, pass, vp, NULL);
+        return;
+    }
     static const int tiles[2] = {HOL__USE_TILES0, HOL__USE_TILES2};
     for (int k = 0; k < 2 && f->lighting && pass == HOL__PASS_TILE; k++)
         hol__set_pass_as(r, f, pass, vp, hol__frame_prog(r, f, tiles[k]));

@@ -98,6 +98,7 @@ struct hol_render {
     hol_gl gl;
     hol_scene *scene;
     GLuint vao[2], vbo[2], ibo[2]; /* [0] static, [1] dynamic */
+    GLuint atlas;                  /* the text face's (core/hol_face.h) */
     /* the programs by slot (render/hol_program.h), each compiled when
      * first used: variants, not uniforms, since a uniform costs llvmpipe
      * a load per pixel and a discard makes it shade before the depth test
@@ -139,7 +140,8 @@ enum {
     HOL__USE_ROOM,
     HOL__USE_TILES0, /* lit tiles without shadow pairs */
     HOL__USE_TILES2, /* up to two */
-    HOL__USE_TILES4  /* up to four */
+    HOL__USE_TILES4, /* up to four */
+    HOL__USE_TEXT    /* the overlays (hand, fade, HUD, panel): text's */
 };
 
 /* m = the identity (column-major). */

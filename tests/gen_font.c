@@ -36,10 +36,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define BAKE_EM 22   /* atlas pixels per em */
+#define BAKE_EM 19   /* atlas pixels per em */
 #define PAD 2        /* border around each glyph, atlas pixels */
-#define SPREAD 3     /* distance (atlas pixels) at which the field saturates */
-#define QUANT 12     /* texels rounded to multiples of this */
+#define SPREAD 2     /* distance (atlas pixels) at which the field saturates */
+#define QUANT 16     /* texels rounded to multiples of this */
 #define ATLAS_W 256
 #define ATLAS_HMAX 1024
 #define NGLYPH (1 + 95 + 96)

@@ -57,6 +57,10 @@ typedef struct golden_view {
      * and each lantern's lantern_spot */
     int fireflies;
     int spot[4];
+    /* the HUD's text instead of the frame's fields (a questionnaire
+     * item: the text face's lower case and punctuation), and its prompt */
+    const char *hud[3];
+    const char *prompt;
 } golden_view;
 
 /* the day views leave lighting and lanterns out (zero: day, none) */
@@ -109,6 +113,12 @@ static const golden_view views[] = {
      {"-", "WS", "SW", "SSW"}, 1, {0, 5, 2, 1}},
     {"q6_night_fx", "NE", {2.4, 1.6, 0.6}, 135, -25, 90, 0, 6, 0, 0, 0, HOL_LIGHT_NIGHT,
      {"-", "WS", "SW", "SSW"}, 1, {0, 5, 2, 1}},
+    /* a questionnaire item on the HUD (the map off): ? % < " ' and lower
+     * case in the text face */
+    {"ask_item", "-", {1.5, 1.6, 1.5}, 0, -30, 90, HOL_RENDER_HUD_TEXT, 0, 0, 0, 0, 0, {0}, 0,
+     {0},
+     {"How \"hurried\" was the pace?", "0 % = very low, 100 % =", "very high; < 50 % is 'low'"},
+     "Left/right: -5 %, enter: OK"},
 };
 
 static render_fixture fx;
@@ -174,8 +184,11 @@ static void render_with(hol_render *rr, const golden_view *g, uint8_t *rgba)
     f.cam.width = W;
     f.cam.height = H;
     f.flags = g->flags;
-    if (!(g->flags & HOL_RENDER_MINIMAP))
+    if (!(g->flags & (HOL_RENDER_MINIMAP | HOL_RENDER_HUD_TEXT)))
         f.flags |= HOL_RENDER_NO_HUD;
+    for (int k = 0; k < 3 && g->hud[k]; k++)
+        f.hud_lines[f.nhud_lines++] = g->hud[k];
+    f.prompt = g->prompt;
     if (g->flags & HOL_RENDER_MINIMAP_HAND) {
         /* held low in front of the eye, turned 135 degrees about the
          * vertical so that it faces the eye (north-east of it) */

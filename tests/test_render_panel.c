@@ -35,6 +35,7 @@
 #include "../platform/image/hol_png_file.h"
 #include "../render/hol_app_frame.h"
 #include "panel_view.h"
+#include "../core/hol_face.h"
 #include "render_fixture.h"
 
 static int W = 480, H = 480; /* HOL_PANEL_SIZE=N: N x N an eye */
@@ -53,8 +54,8 @@ typedef struct eye_shot {
     box all, text, map;
 } eye_shot;
 
-static const char *const lines[] = {"FIND THE FLAG", "STEPS 3", "TIME 0:42"};
-static const char *hint = "TRIGGER: NEXT LEVEL, B: AGAIN";
+static const char *const lines[] = {"Find the flag", "STEPS 3", "TIME 0:42"};
+static const char *hint = "Trigger: the next level, B: this one again";
 
 /* The shared view (tests/panel_view.h), the eyes 64 mm apart, and a flag
  * two tiles ahead, on the map and in the world, with its cues. */
@@ -177,10 +178,14 @@ static int central(const eye_shot *s, double deg)
 /* The text block's rectangle in font pixels: map beside it or not, n lines. */
 static void text_rect(int map, int n, double r[4])
 {
+    /* a line of the text face at a cap height of 7 font pixels */
+    hol_face_metrics m;
+    hol_face_get_metrics(&m);
+    double lh = (double)(m.ascent - m.descent) / m.units_per_em * 7 * hol_face_em_per_cap();
     double wide = 136 + (map ? 6 + 64 : 0);
     r[0] = -wide / 2;
     r[1] = -wide / 2 + 136;
-    r[2] = 32 - (9.0 * n + 4);
+    r[2] = 32 - (lh * n + 4);
     r[3] = 32;
 }
 
@@ -290,7 +295,7 @@ static void test_panel_stereo(void **state)
     eye_shot s[2];
     for (int e = 0; e < 2; e++)
         shoot(&fx, &v, e, 1, &s[e]);
-    /* 3 lines + the prompt, which wraps: 29 characters, 22 a line */
+    /* 3 lines + the prompt, which wraps (wider than the block) */
     assert_int_equal(check_pair(&v, s, 1, 5, 0), 0);
     print_message("text block: left eye x %d..%d, right eye x %d..%d (disparity %d px); "
                   "y %d..%d; map x %d..%d / %d..%d\n",

@@ -8,7 +8,8 @@
  *   (bad values too), exactly HOL_PROG_SLOTS keys have a slot, each key
  *   with a slot decodes back to itself (key -> slot -> key), and the
  *   programs that cannot be are refused: day with a room, flat, effects
- *   or shadows; a lit room with tile fields; odd shadow pairs.
+ *   or shadows; a lit room with tile fields; odd shadow pairs; the text
+ *   program with any other field.
  * - test_preamble: a key's preamble names its variant (HOL_LIT, HOL_NIGHT,
  *   HOL_SHD and its vector type, ...) and the lights' constants, and a
  *   buffer too small is refused.
@@ -28,7 +29,8 @@
 static int key_eq(const hol_prog_key *a, const hol_prog_key *b)
 {
     return a->lighting == b->lighting && a->room == b->room && a->flat == b->flat &&
-           a->wedge == b->wedge && a->fx == b->fx && a->shadow_pairs == b->shadow_pairs;
+           a->wedge == b->wedge && a->fx == b->fx && a->shadow_pairs == b->shadow_pairs &&
+           a->text == b->text;
 }
 
 static void test_slot_round_trip(void **state)
@@ -52,6 +54,7 @@ static void test_every_key(void **state)
     (void)state;
     int valid = 0, seen[HOL_PROG_SLOTS] = {0};
     hol_prog_key k;
+    for (k.text = -1; k.text <= 2; k.text++)
     for (k.lighting = -1; k.lighting <= 3; k.lighting++)
         for (k.room = -1; k.room <= 2; k.room++)
             for (k.flat = -1; k.flat <= 2; k.flat++)
@@ -68,11 +71,16 @@ static void test_every_key(void **state)
                             valid++;
                         }
     assert_int_equal(valid, HOL_PROG_SLOTS);
-    assert_int_equal(HOL_PROG_SLOTS, 2 + 4 + 8 * HOL_PROG_FX_COUNT * 3);
+    assert_int_equal(HOL_PROG_SLOTS, 2 + 4 + 8 * HOL_PROG_FX_COUNT * 3 + 1);
+    /* the text program: text alone */
+    hol_prog_key text = {HOL_LIGHT_DAY, 0, 0, 0, 0, 0, 1};
+    assert_int_equal(hol_prog_slot(&text), HOL_PROG_TEXT_SLOT);
+    text.wedge = 1;
+    assert_int_equal(hol_prog_slot(&text), -1);
     for (int s = 0; s < HOL_PROG_SLOTS; s++)
         assert_int_equal(seen[s], 1);
     /* what cannot be */
-    hol_prog_key day = {HOL_LIGHT_DAY, 0, 0, 1, 0, 0};
+    hol_prog_key day = {HOL_LIGHT_DAY, 0, 0, 1, 0, 0, 0};
     assert_int_equal(hol_prog_slot(&day), 1);
     hol_prog_key bad = day;
     bad.room = 1;
@@ -80,11 +88,11 @@ static void test_every_key(void **state)
     bad = day;
     bad.shadow_pairs = 2;
     assert_int_equal(hol_prog_slot(&bad), -1);
-    hol_prog_key room = {HOL_LIGHT_NIGHT, 1, 0, 0, 0, 0};
+    hol_prog_key room = {HOL_LIGHT_NIGHT, 1, 0, 0, 0, 0, 0};
     assert_true(hol_prog_slot(&room) >= 0);
     room.fx = HOL_PROG_FX_SPOTS;
     assert_int_equal(hol_prog_slot(&room), -1);
-    hol_prog_key tiles = {HOL_LIGHT_DUSK, 0, 1, 1, HOL_PROG_FX_SPOTS, 4};
+    hol_prog_key tiles = {HOL_LIGHT_DUSK, 0, 1, 1, HOL_PROG_FX_SPOTS, 4, 0};
     assert_true(hol_prog_slot(&tiles) >= 0);
     tiles.shadow_pairs = 3;
     assert_int_equal(hol_prog_slot(&tiles), -1);
@@ -94,7 +102,7 @@ static void test_preamble(void **state)
 {
     (void)state;
     char pre[512];
-    hol_prog_key k = {HOL_LIGHT_NIGHT, 0, 0, 1, HOL_PROG_FX_FIREFLIES, 2};
+    hol_prog_key k = {HOL_LIGHT_NIGHT, 0, 0, 1, HOL_PROG_FX_FIREFLIES, 2, 0};
     int n = hol_prog_preamble(&k, pre, sizeof pre);
     assert_true(n > 0 && (size_t)n == strlen(pre));
     assert_true(strncmp(pre, "#version 300 es\n", 16) == 0);
@@ -105,14 +113,19 @@ static void test_preamble(void **state)
     for (size_t i = 0; i < sizeof want / sizeof want[0]; i++)
         if (!strstr(pre, want[i]))
             fail_msg("the preamble lacks %s:\n%s", want[i], pre);
-    hol_prog_key room = {HOL_LIGHT_DUSK, 1, 0, 0, 0, 0};
+    hol_prog_key room = {HOL_LIGHT_DUSK, 1, 0, 0, 0, 0, 0};
     assert_true(hol_prog_preamble(&room, pre, sizeof pre) > 0);
     assert_non_null(strstr(pre, "#define HOL_LIT 2\n"));
     assert_non_null(strstr(pre, "#define HOL_NIGHT 0\n"));
-    hol_prog_key day = {HOL_LIGHT_DAY, 0, 0, 0, 0, 0};
+    hol_prog_key day = {HOL_LIGHT_DAY, 0, 0, 0, 0, 0, 0};
     assert_true(hol_prog_preamble(&day, pre, sizeof pre) > 0);
     assert_non_null(strstr(pre, "#define HOL_LIT 0\n"));
+    assert_non_null(strstr(pre, "#define HOL_TEXT 0\n"));
     assert_int_equal(hol_prog_preamble(&day, pre, 40), -1);
+    hol_prog_key text = {HOL_LIGHT_DAY, 0, 0, 0, 0, 0, 1};
+    assert_true(hol_prog_preamble(&text, pre, sizeof pre) > 0);
+    assert_non_null(strstr(pre, "#define HOL_TEXT 1\n"));
+    assert_non_null(strstr(pre, "#define HOL_SPREAD 2.0\n"));
 }
 
 int main(void)

@@ -5,7 +5,9 @@
 // HOL_FX (HOL_PROG_FX_*: 0 lanterns, 1 fireflies, 2 spots; a value has
 // the code of those below it: test with >=), HOL_TX_ROWS (u_tx's rows of
 // per-light values), HOL_SHD (trunk shadow pairs: 0, 2, 4), HOL_SV and
-// HOL_SW (their vector type and swizzle), and the lights' constants of
+// HOL_SW (their vector type and swizzle), HOL_TEXT (the overlays' program:
+// flat colours and glyphs, with alpha), HOL_SPREAD (the atlas's field
+// reach, core/hol_face.h), and the lights' constants of
 // render/hol_light.h (HOL_LIGHT_D0_M, ...).
 // Whole-line // comments and blank lines are left out of the C string the
 // build makes (render/shaders/glsl_c.sh); "@include F" inserts F there.
@@ -25,6 +27,10 @@ uniform float u_fogd;
 uniform int u_lin;
 uniform vec4 u_wedge;
 uniform int u_wmode;
+#if HOL_TEXT
+in vec2 v_uv;
+uniform sampler2D u_atlas;
+#endif
 #if HOL_LIT
 // lighting (hol_light.h): 1 a tile with its hyperbolic frame; 2 the
 // room's own meshes (no tile: ambient, fog by room distance)
@@ -138,6 +144,20 @@ float hol_lights(vec4 L, float g2, float o, float dh, float nup) {
 #endif
 #endif
 void main() {
+#if HOL_TEXT
+// a glyph (alpha HOL_MESH_GLYPH): the signed distance d in atlas pixels,
+// an edge of one screen pixel (half on each side); anything else is opaque
+  float td = (texture(u_atlas, v_uv).r * 255.0 - 128.0) * (HOL_SPREAD / 128.0);
+  float tw = max(0.5 * length(fwidth(v_uv * vec2(textureSize(u_atlas, 0)))), 1e-3);
+  float ta = v_col.a > 0.1 ? smoothstep(-tw, tw, td) : 1.0;
+  if (u_mode == 1) {
+    if (ta < 0.5) discard;
+    o_col = vec4(0.0, 0.0, 0.0, 1.0);
+    return;
+  }
+  o_col = vec4(hol_out(v_col.rgb).rgb, ta);
+  return;
+#endif
 #if HOL_WEDGE
   if (u_wmode == 1) {
     vec2 d = v_wpos.xz - u_eye.xz;

@@ -3,6 +3,11 @@
 layout(location = 0) in vec3 a_pos;
 layout(location = 1) in vec3 a_nrm;
 layout(location = 2) in vec4 a_col;
+#if HOL_TEXT
+// a glyph's atlas point (render/hol_mesh.h's HOL_MESH_GLYPH)
+layout(location = 3) in vec2 a_uv;
+out vec2 v_uv;
+#endif
 uniform mat4 u_vp;
 uniform mat4 u_model;
 out vec3 v_nrm;
@@ -52,6 +57,9 @@ void main() {
 #if HOL_FX >= 2
   v_U = v_loc.x * u_tx[0] + v_loc.z * u_tx[1] - u_tx[2];
 #endif
+#endif
+#if HOL_TEXT
+  v_uv = a_uv;
 #endif
   v_wpos = w.xyz;
   v_nrm = mat3(u_model) * a_nrm;

@@ -7,7 +7,8 @@
 #include <string.h>
 
 #include "../../../core/hol_hyper.h"
-#include "../../../render/hol_font.h"
+#include "../../../core/hol_face.h"
+#include "../../../render/hol_face_draw.h"
 #include "../cli.h"
 
 #define RGB_WHITE 0xffffffu
@@ -588,18 +589,45 @@ static hol_err walked_path(canvas *c, const report_picture *p, report_edges *edg
     return err;
 }
 
-/* Text at (x, y) (the first glyph's top-left), font pixels k x k. */
+/* The text face's em for a cap height of 7 k pixels (the old 5x7 font's
+ * at k). */
+static float text_size(int k)
+{
+    return 7.0f * (float)k * hol_face_em_per_cap();
+}
+
+/* The width of s at k (pixels, rounded up). */
+static int text_width(const char *s, int k)
+{
+    return (int)ceilf(hol_face_width(s, text_size(k)));
+}
+
+/* Text at (x, y) (the top of its capitals; the baseline 7 k below) in the
+ * text face (render/hol_face_draw.h), drawn into an RGBA strip and its
+ * pixels of coverage at least a half put in rgb (the picture is
+ * paletted: no blending); the advance. */
 static int text(canvas *c, const char *s, int x, int y, int k, uint32_t rgb)
 {
-    int x0 = x;
-    for (; *s; s++, x += 6 * k) {
-        const uint8_t *g = hol_font_glyph((unsigned char)*s);
-        for (int r = 0; r < 7; r++)
-            for (int col = 0; col < 5; col++)
-                if (g[r] & (0x10 >> col))
-                    rect(c, x + col * k, y + r * k, x + (col + 1) * k, y + (r + 1) * k, rgb);
-    }
-    return x - x0;
+    enum { TW = 768, TH = 64 };
+    static const uint8_t none[4] = {0, 0, 0, 0};
+    uint8_t strip[TW * TH * 4];
+    hol_face_metrics m;
+    hol_face_get_metrics(&m);
+    float size = text_size(k);
+    int asc = (int)ceilf((float)m.ascent * size / (float)m.units_per_em) + 1;
+    int h = asc + (int)ceilf((float)-m.descent * size / (float)m.units_per_em) + 1;
+    h = h < TH ? h : TH;
+    for (size_t i = 0; i < (size_t)TW * (size_t)h * 4; i += 4)
+        memcpy(strip + i, none, 4);
+    hol_face_canvas fc = {strip, TW, h, 0};
+    hol_face_draw_desc d = {1, (float)asc, size, 0xffffffffu, 1};
+    float adv = hol_face_draw(&fc, &d, s, strlen(s), NULL);
+    int top = y + 7 * k - asc;
+    for (int j = 0; j < h; j++)
+        for (int i = 0; i < TW && i < (int)adv + 3; i++)
+            if (strip[4 * (j * TW + i) + 3] >= 128)
+                put(c, x - 1 + i, top + j, rgb);
+    return (int)ceilf(adv);
 }
 
 /* Text with a white outline (readable over the lines). */
@@ -746,7 +774,7 @@ static int layout(const canvas *c, const report_picture *p, report_label out[REP
         to_px(c, q, x);
         l->step = steps[i];
         snprintf(l->text, sizeof l->text, "%ld", steps[i]);
-        int w = 6 * k * (int)strlen(l->text) + k, h = 9 * k; /* the glyphs and the halo */
+        int w = text_width(l->text, k) + 2 * k, h = 9 * k; /* the glyphs and the halo */
         m += label_place(c, p, x[0], x[1], w, h, out, m, &l->box);
     }
     return m;
