@@ -12,6 +12,7 @@
 #   make bench      build with optimisation and print the benchmark figures
 #   make san        run the unit tests under AddressSanitizer + UBSan
 #   make san-cli    run the command-line tests against an ASan + UBSan build
+#   make kill-test  60 random kills of a study (tests/cli_kills.sh; KILL_TEST_KILLS)
 #   make run        install what is missing, build and play in a desktop window
 #                   (RUN_ARGS: play's options)
 #   make xr         build/xr/holonomy with `holonomy xr` (XR=1 in its own folder)
@@ -87,7 +88,7 @@ CLI_TESTS := $(wildcard tests/cli_*.sh)
 # first, so that make -j2 does not end with one long suite running alone;
 # the others follow in name order (a new suite needs no entry here). The
 # order: make test's figures of 2026-11-27 (docs/testing.md, Times).
-SLOW_FIRST := cli_play cli_docs cli_harden_logs cli_serve cli_session test_world cli_mock_study \
+SLOW_FIRST := cli_play cli_docs cli_harden_logs cli_serve cli_session test_world cli_mock_study cli_kills \
               cli_nav cli_harden test_nav test_render_light cli_level cli_harden_opts cli_replay \
               cli_world cli_meta_summary cli_hostile cli_resume cli_render cli_game cli_sound cli_study \
               cli_harden_signals cli_report cli_gl_sync cli_track test_render_golden test_tile test_app \
@@ -140,7 +141,7 @@ APT_GET = $$SUDO env DEBIAN_FRONTEND=noninteractive APT_GET_CMD=$(APT_GET_CMD) \
   sh platform/debian/apt_get.sh $(APT_LOCK_WAIT)
 
 .PHONY: web web-serve web-serve-https web-test deps-web deps-r bench-web test-suites test-tools FORCE
-.PHONY: all test purity fn-length unit render-test cli-test fuzz-replay fuzz bench san san-cli san-all clean deps xr \
+.PHONY: all test purity fn-length unit render-test cli-test fuzz-replay fuzz bench san san-cli san-all kill-test clean deps xr \
         deps-cross check-clang cross-test run quest quest-help deps-quest quest-check check-hid-libusb deps-xr xr-test soak \
         deps-quest-link quest-link-check
 
@@ -483,6 +484,11 @@ CLI_ENV ?=
 SAN_CLI_ENV := ASAN_OPTIONS=detect_leaks=0:abort_on_error=0 UBSAN_OPTIONS=print_stacktrace=1
 san-cli:
 	+$(SAN_MAKE) CLI_ENV="$(SAN_CLI_ENV)" cli-test
+# tests/cli_kills.sh with KILL_TEST_KILLS random kills (CI; make test and
+# make san-cli run it with its own 12).
+KILL_TEST_KILLS ?= 60
+kill-test:
+	+$(MAKE) --no-print-directory CLI_ENV="HOL_KILLS=$(KILL_TEST_KILLS)" cli-run-cli_kills
 # make san and make san-cli as one make (CI): the unit tests fill the two
 # slots of make -j2 while the long CLI suites run, with no idle end between.
 san-all:

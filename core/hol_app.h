@@ -554,6 +554,15 @@ void hol_app_destroy(hol_app *app); /* NULL ok */
  * is playing. */
 hol_err hol_app_start_level(hol_app *app, const hol_app_level *level);
 
+/* Right after hol_app_start_level: the level is not played; its questions
+ * are asked from item (0-based, counted over level.asks in order: a
+ * resumed participant's unanswered ones, issue 39), then it goes on as
+ * after the last item (the closing screen, or events.next_level). No
+ * events.level_started, no clock; the first item's time counts from the
+ * next frame. Errors: HOL_EARG (no level, or item not one of its items:
+ * nothing changed). */
+hol_err hol_app_ask_from(hol_app *app, int item);
+
 /* Make (or find) the navigator of the tiling {4,q} and a room of cols x
  * rows cells (0: 5, 3, 3), so that no level start pays for it: platforms
  * call it at init for the geometries of the session's levels. Errors:

@@ -57,6 +57,27 @@ void hol__after_end(hol_app *app, const hol_input *in, int from_ask)
     }
 }
 
+hol_err hol_app_ask_from(hol_app *app, int item)
+{
+    if (!app->have_level || item < 0)
+        return HOL_EARG;
+    int k = 0;
+    while (k < app->level.nasks && item >= app->level.asks[k].n)
+        item -= app->level.asks[k++].n;
+    if (k >= app->level.nasks)
+        return HOL_EARG;
+    app->ask_k = k;
+    app->ask_i = item;
+    app->pending_start = 0; /* the level is not played again */
+    app->screen = HOL_APP_SCREEN_NONE;
+    app->view.state = HOL_APP_ASK;
+    app->ask_mark = (hol__marks(hol__item(app)) - 1) / 2;
+    app->ask_fresh = 1;
+    app->place_panel = 1;
+    hol__fill_view(app, NULL);
+    return HOL_OK;
+}
+
 /* Left (-1) or right (+1) pressed in this record: an axis crossing 0.5
  * (the turn axis, positive left; the move axis, positive right), or a snap
  * turn (its new yaw to the left or the right of the look). */
@@ -88,6 +109,12 @@ static int hol__ray_mark(const hol_app *app, const hol_input *in, int marks)
 void hol__ask_frame(hol_app *app, const hol_input *in, uint32_t pressed)
 {
     hol_app_view *v = &app->view;
+    if (app->ask_fresh) { /* hol_app_ask_from's item comes up now */
+        app->ask_fresh = 0;
+        if (in->flags & HOL_INPUT_HEAD_VALID)
+            hol__yaw_pitch_from_quat(in->head.quat, &app->mo.yaw_deg, &app->mo.pitch_deg);
+        hol__item_begin(app, in);
+    }
     const hol_app_question *q = hol__item(app);
     int marks = hol__marks(q);
     int ray = (in->flags & HOL_INPUT_HEAD_VALID) &&

@@ -98,6 +98,8 @@ struct hol_app {
     int ask_axis;            /* the left/right axis's side at the last record */
     double ask_t0;           /* input time the item came up */
     double ask_ref_yaw;      /* the look then (a controller points from it) */
+    int ask_fresh;           /* hol_app_ask_from: the item comes up at the
+                                next frame (its time, its look) */
     uint8_t walk[HOL_NAV_WALK_MAX]; /* replan scratch */
     int nwalk;
 };

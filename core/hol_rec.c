@@ -139,8 +139,8 @@ void hol_rec_write_header(const hol_rec_meta *m, const hol_level *levels, int nl
     int study = m->study[0] != 0;
     for (int i = 0; i < nlevels; i++)
         study |= levels[i].condition[0] != 0;
-    /* version 4 only with a session number, a study's hash or meta */
-    int four = m->session_no > 0 || m->study_sha256[0] || m->meta[0];
+    /* version 4 only with a session number, a study's hash, meta or ask */
+    int four = m->session_no > 0 || m->study_sha256[0] || m->meta[0] || m->ask_item > 0;
     hol__emitf(fn, ctx, "holonomy-rec %d\n", four ? 4 : study ? 3 : 2);
     hol__emitf(fn, ctx, "session %s\n", m->session);
     if (m->participant[0])
@@ -159,6 +159,8 @@ void hol_rec_write_header(const hol_rec_meta *m, const hol_level *levels, int nl
         hol__emitf(fn, ctx, "meta %.*s\n", (int)n, p);
         p += n + (semi != NULL);
     }
+    if (m->ask_item > 0)
+        hol__emitf(fn, ctx, "ask %s %d %d\n", m->ask_session, m->ask_attempt, m->ask_item);
     for (int i = 0; i < nlevels; i++) {
         hol__emitf(fn, ctx, "level %s\n", levels[i].name);
         if (levels[i].condition[0])
@@ -297,6 +299,48 @@ static int hol__meta4_line(hol_rec_reader *r, const char *s, size_t len, hol_err
     return 1;
 }
 
+/* A whole number of 1..max digits, no leading zero, in s[*i..len) up to a
+ * space or the end; -1 when none. */
+static long hol__rec_num(const char *s, size_t len, size_t *i, long max)
+{
+    long n = 0;
+    size_t b = *i;
+    while (*i < len && s[*i] >= '0' && s[*i] <= '9' && n <= max)
+        n = n * 10 + (s[(*i)++] - '0');
+    return *i == b || s[b] == '0' || n > max ? -1 : n;
+}
+
+/* "ask ID ATTEMPT ITEM" (version 4, once, before the first level). 1 when
+ * the line was one. */
+static int hol__ask_line(hol_rec_reader *r, const char *s, size_t len, hol_err *err)
+{
+    if (len < 4 || memcmp(s, "ask ", 4) || r->version < 4)
+        return 0;
+    const char *sp = memchr(s + 4, ' ', len - 4);
+    size_t i = sp ? (size_t)(sp - s) : len, idn = i - 4;
+    char id[HOL_REC_ID_MAX] = "";
+    if (idn < sizeof id) {
+        memcpy(id, s + 4, idn);
+        id[idn] = 0;
+    }
+    i += i < len;
+    long a = hol_rec_id_ok(id) ? hol__rec_num(s, len, &i, 999999) : -1, k = -1;
+    if (a > 0 && i < len && s[i] == ' ') {
+        i++;
+        k = hol__rec_num(s, len, &i, 255);
+    }
+    int ok = r->state == HOL__META && !r->meta.ask_item && a > 0 && k > 0 && i == len;
+    if (ok) {
+        memcpy(r->meta.ask_session, id, sizeof id);
+        r->meta.ask_attempt = (int)a;
+        r->meta.ask_item = (int)k;
+    }
+    *err = ok ? HOL_OK
+              : hol__bad(r, HOL_EPARSE, "not a valid 'ask SESSION ATTEMPT ITEM' line (once, "
+                                        "before the levels)");
+    return 1;
+}
+
 static hol_err hol__level_begin(hol_rec_reader *r, const char *s, size_t len)
 {
     if (r->state == HOL__META && (r->seen & 0xd) != 0xd)
@@ -399,7 +443,8 @@ hol_err hol_rec_read_line(hol_rec_reader *r, const char *s, size_t len, int *out
         return hol__bad(r, HOL_EPARSE, "level '%.40s' not closed by 'end'", r->name);
     }
     hol_err err;
-    if (hol__meta_line(r, s, len, &err) || hol__meta4_line(r, s, len, &err))
+    if (hol__meta_line(r, s, len, &err) || hol__meta4_line(r, s, len, &err) ||
+        hol__ask_line(r, s, len, &err))
         return err;
     if (len >= 6 && !memcmp(s, "level ", 6))
         return hol__level_begin(r, s, len);

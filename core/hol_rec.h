@@ -18,6 +18,11 @@
  *                           up to HOL_REC_META_MAX; KEY 1..32 of a-z 0-9 _,
  *                           VALUE as hol_text_escape writes it: no ';',
  *                           no control byte, at most 800 bytes)
+ *     ask ID ATTEMPT ITEM   a resumed participant's unanswered questions:
+ *                           the first level is not played, its questions
+ *                           are asked from ITEM (1..255), the answers on
+ *                           attempt ATTEMPT (1..999999) of session ID
+ *                           (version 4, optional; meta.ask_*)
  *     level NAME            each level of the session, in order:
  *     condition NAME POS    its study condition and position (version 3)
  *     L LINE                its text's lines (hol_level.h), then
@@ -85,6 +90,13 @@ typedef struct hol_rec_meta {
     /* the --meta options, KEY=VALUE joined with ';', each VALUE escaped
      * (hol_text_escape: no control byte); "": none */
     char meta[HOL_REC_META_TEXT];
+    /* a resumed participant's questions (issue 39): ask_item > 0 when the
+     * session's first level is not played but its questions are asked,
+     * from its item ask_item (1-based, counted over the level's
+     * questionnaires in order), the answers on the attempt that played it:
+     * ask_attempt (1..999999) of session ask_session; 0, 0, "": none */
+    char ask_session[HOL_REC_ID_MAX];
+    int ask_attempt, ask_item;
 } hol_rec_meta;
 
 /* 1 when k (n bytes) is a meta KEY: 1..32 of a-z, 0-9, '_'. */

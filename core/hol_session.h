@@ -68,6 +68,13 @@
  *   a log folder holds every level its rows name (`holonomy report` draws
  *   the optimal walks from them). Another session's file of the same hash
  *   holds the same bytes and is replaced by them.
+ * - Resumed questions (meta.ask_item > 0, issue 39): the first level is
+ *   started but not played (hol_app_ask_from): no attempt, no steps; its
+ *   questions are asked from item meta.ask_item, their answers.csv rows
+ *   on the attempt that played it (session meta.ask_session, attempt
+ *   meta.ask_attempt: the rows a report groups with the first answers);
+ *   then the session goes on as after its last item. The recording says
+ *   so (hol_rec.h `ask`), so a replay does the same.
  * - Studies: a level's labels (hol_level: condition, position) and the
  *   study's name (meta.study) fill the summary's study, condition and
  *   position; all three are empty for a level without a condition.
@@ -175,7 +182,9 @@
  * theirs; time: seconds taken to answer. */
 /* answers.csv: a row per questionnaire item answered (hol_app_answer),
  * appended durably as it happens, the header when the file is new.
- * attempt: the last attempt before the questionnaire; questionnaire its
+ * attempt: the last attempt before the questionnaire (a resumed level's
+ * questions, meta.ask_item: session and attempt are meta.ask_session's
+ * and meta.ask_attempt, the attempt that played it); questionnaire its
  * name, when level|condition|study, item the item's ID, kind
  * likert|choice, value the number (likert) or the choice's text (CSV
  * quoted when it needs it), time the seconds taken. */
@@ -240,6 +249,19 @@ hol_app *hol_session_app(hol_session *s);
 /* The level in play (index into the desc's levels) and its level. */
 int hol_session_level_index(const hol_session *s);
 const hol_level *hol_session_level(const hol_session *s);
+/* How the level in play's attempt ended (hol_app_end: done, timeout,
+ * restart, quit) once it has, while its pointing question, end screen,
+ * questionnaires or closing screen follow; HOL_APP_END_DONE for a
+ * resumed level's questions (meta.ask_item); 0 while it plays or waits
+ * for its instructions. What a platform prints at the end is this, not
+ * the app's state: a quit in a questionnaire leaves an attempt `done`. */
+int hol_session_level_end(const hol_session *s);
+/* The word a platform prints for the level in play at the end ("level NAME
+ * WORD steps ..."): timeout when its time ran out, else the end its
+ * attempt was logged with once it ended (done, restart, quit: a quit in its
+ * pointing question, end screen or questionnaire leaves it done), else the
+ * app's (hol_app_end_word). */
+const char *hol_session_end_name(hol_session *s);
 long hol_session_frames(const hol_session *s);
 /* Attempts of a killed session finished by recovery at create; those it
  * dropped (killed before their attempt-NNN.live reached the disk). */

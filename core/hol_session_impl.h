@@ -59,6 +59,10 @@ struct hol_session {
     char rec_name[HOL_SINK_NAME_MAX];
     hol__out rec_out, steps, head, track;
     int attempt, attempt_open;
+    int ask_pending;     /* meta.ask_item: answers go on meta.ask_attempt
+                            until this session's first attempt begins */
+    int level_end;       /* hol_app_end of the level in play's attempt once
+                            it ended (its questions may follow); 0 */
     double attempt_started;  /* session time at the attempt's start */
     double next_sample;      /* the next head row's time, in 0.1 s (whole) */
     hol__head_frame prev;

@@ -218,6 +218,7 @@ static void hol__head_rows(hol_session *s, const hol_app_view *v)
 
 static void hol__attempt_begin(hol_session *s, const hol_app_view *v)
 {
+    s->ask_pending = 0;
     s->attempt++;
     s->attempt_open = 1;
     s->attempt_started = s->now;
@@ -376,8 +377,11 @@ static void hol__answer_row(hol_session *s, const hol_app_answer *a)
     else
         snprintf(value, sizeof value, "%d", a->value);
     static const char *const whens[3] = {"level", "condition", "study"};
-    int n = snprintf(row, sizeof row, "%s,%s,%d,%s,%s,%s,%s,%s,%.4f\n", s->meta.session,
-                     s->meta.participant, s->attempt, a->questionnaire,
+    /* a resumed level's answers go with the attempt that played it */
+    int n = snprintf(row, sizeof row, "%s,%s,%d,%s,%s,%s,%s,%s,%.4f\n",
+                     s->ask_pending ? s->meta.ask_session : s->meta.session,
+                     s->meta.participant, s->ask_pending ? s->meta.ask_attempt : s->attempt,
+                     a->questionnaire,
                      whens[a->when >= 0 && a->when < 3 ? a->when : 0], a->item,
                      a->kind == HOL_APP_CHOICE ? "choice" : "likert", value, a->time_s);
     if (n > 0 && (size_t)n < sizeof row)

@@ -78,6 +78,7 @@ static hol_err hol__start_level(hol_session *s)
      * this) */
     if (L.last && s->levels[s->cur].condition[0] && !L.closing[0])
         snprintf(L.closing, sizeof L.closing, "%s", HOL_SESSION_CLOSING);
+    s->level_end = HOL_APP_END_NONE;
     hol_err e = hol_app_start_level(s->app, &L);
     long at = e == HOL_EBUDGET || e == HOL_EUNREACH ? hol_level_objective_line(&s->levels[s->cur]) : 0;
     char line[32] = "";
@@ -196,6 +197,16 @@ static hol_err hol__create(hol_session *s, const hol_session_desc *d)
     }
     if ((e = hol__prepare_levels(s)) || (e = hol__start_level(s)))
         return e;
+    if (s->meta.ask_item > 0) { /* a resumed level's questions alone */
+        if (s->meta.ask_attempt < 1 || !hol_rec_id_ok(s->meta.ask_session) ||
+            hol_app_ask_from(s->app, s->meta.ask_item - 1)) {
+            snprintf(s->msg, sizeof s->msg, "level '%.60s' has no question %d to ask",
+                     s->levels[0].name, s->meta.ask_item);
+            return HOL_EARG;
+        }
+        s->ask_pending = 1;
+        s->level_end = HOL_APP_END_DONE;
+    }
     if (s->log && (e = hol__log_open(s, d->append)))
         return e;
     if (s->log)
@@ -273,6 +284,10 @@ hol_err hol_session_step(hol_session *s, const hol_input *in, int *out_over)
     const hol_app_view *v = hol_app_get_view(s->app);
     if (s->log)
         hol__log_frame(s, ev, v, in);
+    if (ev->level_started)
+        s->level_end = HOL_APP_END_NONE;
+    else if (ev->level_ended)
+        s->level_end = ev->level_ended;
     if (v->state == HOL_APP_QUIT) {
         s->over = 1;
     } else if (ev->next_level) {
@@ -387,6 +402,20 @@ int hol_session_level_index(const hol_session *s)
 const hol_level *hol_session_level(const hol_session *s)
 {
     return &s->levels[s->cur];
+}
+
+int hol_session_level_end(const hol_session *s)
+{
+    return s->level_end;
+}
+
+const char *hol_session_end_name(hol_session *s)
+{
+    static const char *const ends[] = {"playing", "done", "restart", "quit", "timeout"};
+    const hol_app_view *v = hol_app_get_view(s->app);
+    if (!v->hud.timed_out && s->level_end > 0 && s->level_end < 5)
+        return ends[s->level_end];
+    return hol_app_end_word(v);
 }
 
 long hol_session_frames(const hol_session *s)

@@ -13,7 +13,9 @@
  * attempt's files appear with its row; head rows fall on exact 10 Hz
  * times, interpolated between frames against a linear walk; visible cues;
  * aborted; the recording reads back to the same levels and replays to the
- * same logs byte for byte; no allocation after create.
+ * same logs byte for byte; no allocation after create. A resumed level's
+ * questions alone (issue 39): no attempt, answers on the attempt named,
+ * from the item named, then the next level; the recording says so.
  */
 #include <math.h>
 #include <setjmp.h>
@@ -685,6 +687,99 @@ static void test_study_labels(void **state)
 
 /* Every allocation at create (the session's and the app's hooks); none in
  * a thousand frames with logs and a recording. */
+/* meta.ask_item: the first level is not played; its questions are asked
+ * from item 3 (ssq's second: item 1 is `mine`'s), the rows on session
+ * OLD's attempt 7; then level 2 plays as attempt 1; the recording's header
+ * carries the ask line and reads back to it. */
+static void test_resumed_questions(void **state)
+{
+    (void)state;
+    static mem_sink log, r;
+    static hol_level lv[2], back[HOL_REC_MAX_LEVELS];
+    mem_init(&log);
+    mem_init(&r);
+    const char *t = "mode flag\nseed 5\nflag Wrf\n"
+                    "question h choice \"Which hand?\" \"left\" \"right\"\n"
+                    "ask mine level h\nask ssq condition\n";
+    assert_int_equal(hol_level_make("q", 1, t, strlen(t), &lv[0], NULL), HOL_OK);
+    lv[1] = g_flag;
+    hol_session_desc d;
+    memset(&d, 0, sizeof d);
+    d.levels = lv;
+    d.nlevels = 2;
+    d.app.nav = g_nav;
+    d.log = &log.sink;
+    d.rec = &r.sink;
+    d.rec_name = "s.rec";
+    snprintf(d.meta.session, sizeof d.meta.session, "20260102T000000Z-00000002");
+    snprintf(d.meta.start, sizeof d.meta.start, "2026-01-02T00:00:00Z");
+    snprintf(d.meta.participant, sizeof d.meta.participant, "P1");
+    snprintf(d.meta.ask_session, sizeof d.meta.ask_session, "OLD");
+    d.meta.ask_attempt = 7;
+    d.meta.ask_item = 18; /* 17 items: none */
+    hol_session *s = NULL;
+    char msg[256];
+    assert_int_equal(hol_session_create(&d, &s, msg, sizeof msg), HOL_EARG);
+    assert_non_null(strstr(msg, "has no question 18"));
+    d.meta.ask_item = 3;
+    assert_int_equal(hol_session_create(&d, &s, msg, sizeof msg), HOL_OK);
+    assert_string_equal(hol_session_end_name(s), "done");
+    int over = 0;
+    double tt = 0;
+    hol_input in = head_at(tt, 1.5, 1.5);
+    assert_int_equal(hol_session_step(s, &in, &over), HOL_OK);
+    const hol_app_view *v = hol_app_get_view(hol_session_app(s));
+    assert_int_equal(v->state, HOL_APP_ASK);
+    assert_int_equal(v->hud.ask_item, 1);
+    for (int k = 1; k < 16; k++) {
+        in = head_at(tt += 0.5, 1.5, 1.5);
+        in.pressed = HOL_BTN_CONFIRM;
+        assert_int_equal(hol_session_step(s, &in, &over), HOL_OK);
+        assert_int_equal(hol_app_get_events(hol_session_app(s))->answered, 1);
+        assert_true(fabs(hol_app_get_events(hol_session_app(s))->answer.time_s - 0.5) < 1e-9);
+    }
+    assert_int_equal(hol_session_level_index(s), 1); /* the last answer goes on */
+    walk(s, g_walk, tt + 0.5, NULL, NULL);
+    assert_int_equal(hol_session_finish(s), HOL_OK);
+    hol_session_destroy(s);
+    const char *a = mem_text(&log, "answers.csv");
+    assert_non_null(a);
+    assert_int_equal(strncmp(a, HOL_SESSION_ANSWER_COLUMNS "\nOLD,P1,7,ssq,condition,fatigue,"
+                                "likert,1,0.5000\n", sizeof HOL_SESSION_ANSWER_COLUMNS + 47),
+                     0);
+    int rows = 0;
+    for (const char *p = a; (p = strchr(p, '\n')); p++)
+        rows++;
+    assert_int_equal(rows, 16); /* the header and ssq's items 2..16 */
+    const char *sum = mem_text(&log, "summary.csv");
+    assert_non_null(sum);
+    assert_non_null(strstr(sum, ",P1,2026-01-02T00:00:00Z,"));
+    assert_null(strstr(sum, ",q,")); /* no attempt of the asked level */
+    assert_non_null(strstr(sum, ",1,,,,lv,"));
+    /* the recording's header */
+    static char copy[1 << 16];
+    snprintf(copy, sizeof copy, "%s", mem_text(&r, "s.rec"));
+    assert_non_null(strstr(copy, "\nask OLD 7 3\nlevel q\n"));
+    static hol_rec_reader rd;
+    hol_rec_reader_init(&rd, back);
+    int done = 0;
+    for (char *line = copy, *nl; !done && (nl = strchr(line, '\n')); line = nl + 1) {
+        *nl = 0;
+        assert_int_equal(hol_rec_read_line(&rd, line, strlen(line), &done), HOL_OK);
+    }
+    assert_string_equal(rd.meta.ask_session, "OLD");
+    assert_int_equal(rd.meta.ask_attempt, 7);
+    assert_int_equal(rd.meta.ask_item, 3);
+    /* a bad ask line is refused */
+    hol_rec_reader_init(&rd, back);
+    const char *bad[] = {"holonomy-rec 4", "session S", "start 2026-01-02T00:00:00Z",
+                         "version 1", "ask OLD 0 3"};
+    hol_err e = HOL_OK;
+    for (int i = 0; i < 5 && !e; i++)
+        e = hol_rec_read_line(&rd, bad[i], strlen(bad[i]), &done);
+    assert_int_equal(e, HOL_EPARSE);
+}
+
 static void test_no_allocation_after_create(void **state)
 {
     (void)state;
@@ -778,6 +873,7 @@ int main(void)
         cmocka_unit_test(test_abort),
         cmocka_unit_test(test_recording_replays),
         cmocka_unit_test(test_study_labels),
+        cmocka_unit_test(test_resumed_questions),
         cmocka_unit_test(test_no_allocation_after_create),
         cmocka_unit_test(test_posix_sink),
     };

@@ -448,7 +448,7 @@ void play_print_end(hol_session *s)
     char name[4 * HOL_LEVEL_NAME_MAX];
     cli_escape(hol_session_level(s)->name, name, sizeof name);
     printf("level %s %s steps %d optimum %d tile %s cell %d,%d\n", name,
-           hol_app_end_word(v), v->hud.steps, v->hud.optimum, v->hud.address, v->user.col,
+           hol_session_end_name(s), v->hud.steps, v->hud.optimum, v->hud.address, v->user.col,
            v->user.row);
 }
 

@@ -52,22 +52,34 @@ int play_study_participant_new(const char *cmd, const char *log_dir, const char 
  * of this study and participant in log_dir (summary.csv, and the
  * attempt-NNN.live files a killed session left) say which levels are
  * finished: a level is finished when one of its attempts ended `done` or
- * `timeout` (its own rules ended it); `restart`, `quit`, `open`,
- * `aborted`, `killed` leave it unfinished. Finished attempts are matched
- * to the order's levels by condition, position and level_sha256 (one
- * attempt per level, in order); the list is cut to start at the first
- * level without one (a practice block already done is not played again),
- * the levels keeping their condition and position. Refused with one line
+ * `timeout` (its own rules ended it) and its questions are answered (issue
+ * 39): its pointing answer in points.csv (a level with `point`; without
+ * it the attempt does not count and the level is played again), every
+ * item of its questionnaires in answers.csv (by that attempt's session
+ * and attempt); `restart`, `quit`, `open`, `aborted`, `killed` leave it
+ * unfinished. Attempts are matched to the order's levels by condition,
+ * position and level_sha256 (one attempt per level, in order); the list
+ * is cut to start at the first level not finished (a practice block
+ * already done is not played again), the levels keeping their condition
+ * and position. When that level's attempt counts but items are missing,
+ * play_study_resume_meta gives the questions to ask (from the first
+ * unanswered item) instead of its play. Refused with one line
  * and 2: no rows of theirs (nothing to resume), every level finished, or
  * a row the study given cannot have played (its condition, position and
  * level text are in none of the order's levels: another study file, or
- * another version of it). 0 ok; summary.csv is read as `report` reads it
- * (summary_read.h: a symbolic link, a NUL byte, a row that is not the
- * logs', a line too long refused alike, one line; a byte order mark and
- * CR LF read; a last row without its newline left out).
- * play_study_announce then adds where it resumed. */
+ * another version of it), or more than 1024 `done`/`timeout` attempts of
+ * theirs. 0 ok; summary.csv is read as `report` reads it (summary_read.h:
+ * a symbolic link, a NUL byte, a row that is not the logs', a line too
+ * long refused alike, one line; a byte order mark and CR LF read; a last
+ * row without its newline left out); points.csv and answers.csv that
+ * cannot be opened as cli_open_lines says (a row that cannot be read is
+ * none: report names it). play_study_announce then adds where it resumed. */
 int play_study_resume(const char *cmd, const char *log_dir, const char *study,
                       const char *participant, hol_level *levels, int *nlevels);
 const char *play_study_resume_note(void);
+/* The last play_study_resume's questions to ask (issue 39) into m's
+ * ask_session, ask_attempt, ask_item (0, "" when it plays its first level:
+ * see core/hol_rec.h). */
+void play_study_resume_meta(hol_rec_meta *m);
 
 #endif

@@ -346,6 +346,6 @@ void hol_web_game_print_end(void)
 {
     const hol_app_view *v = hol_app_get_view(hol_session_app(sess));
     printf("level %s %s steps %d optimum %d tile %s cell %d,%d\n", hol_session_level(sess)->name,
-           hol_app_end_word(v), v->hud.steps, v->hud.optimum,
-           v->hud.address, v->user.col, v->user.row);
+           hol_session_end_name(sess), v->hud.steps, v->hud.optimum, v->hud.address, v->user.col,
+           v->user.row);
 }

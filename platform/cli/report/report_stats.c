@@ -231,10 +231,63 @@ typedef struct rs_group {
     char level_sha[HOL_REPORT_TEXT]; /* and name ("" none read) */
 } rs_group;
 
-/* Each preset answered in full: its scores into the measures from RS_SSQ_T
- * on, in the table's order (ssq's four, tlx's raw). */
-static void flush_group(report_stats *s, rs_group *g)
+/* A preset's answers seen in part so far (a session killed in it, the rest
+ * asked by a resumed session, maybe after other participants' rows: issue
+ * 39), kept until the rest come: RS_PARTS of them in a folder. */
+#define RS_PARTS 64
+typedef struct rs_part {
+    char key[4 * HOL_REPORT_TEXT];
+    double v[HOL_ASK_MAX_PRESETS][HOL_ASK_PRESET_ITEMS];
+    unsigned have[HOL_ASK_MAX_PRESETS];
+} rs_part;
+typedef struct rs_parts {
+    rs_part g[RS_PARTS];
+    int n;
+    long lost; /* partial beyond RS_PARTS: not scored */
+} rs_parts;
+
+/* 1 when the group holds a preset answered in part. */
+static int group_partial(const rs_group *g)
 {
+    for (int i = 0; i < hol_ask_npresets(); i++)
+        if (g->have[i] && g->have[i] != (1u << hol_ask_preset_at(i)->nitems) - 1)
+            return 1;
+    return 0;
+}
+
+/* A group answered in part is kept in pt (its scores wait for the rest);
+ * told in pt->lost when there is no room. */
+static void keep_partial(rs_parts *pt, const rs_group *g)
+{
+    if (pt->n == RS_PARTS) {
+        pt->lost++;
+        return;
+    }
+    rs_part *k = &pt->g[pt->n++];
+    memcpy(k->key, g->key, sizeof k->key);
+    memcpy(k->v, g->v, sizeof k->v);
+    memcpy(k->have, g->have, sizeof k->have);
+}
+
+/* The rest of a group kept in part: its answers back into g. */
+static void take_partial(rs_parts *pt, rs_group *g)
+{
+    for (int i = 0; i < pt->n; i++)
+        if (!strcmp(pt->g[i].key, g->key)) {
+            memcpy(g->v, pt->g[i].v, sizeof g->v);
+            memcpy(g->have, pt->g[i].have, sizeof g->have);
+            pt->g[i] = pt->g[--pt->n];
+            return;
+        }
+}
+
+/* Each preset answered in full: its scores into the measures from RS_SSQ_T
+ * on, in the table's order (ssq's four, tlx's raw); one answered in part
+ * waits in pt. */
+static void flush_group(report_stats *s, rs_group *g, rs_parts *pt)
+{
+    if (g->key[0] && group_partial(g))
+        keep_partial(pt, g);
     hol_stats *f = &s->fix[g->cond * RS_NFIX];
     for (int i = 0, col = RS_SSQ_T; i < hol_ask_npresets(); i++) {
         const hol_ask_preset_def *p = hol_ask_preset_at(i);
@@ -246,6 +299,23 @@ static void flush_group(report_stats *s, rs_group *g)
                 hol_stats_add(&f[col], sc[k]);
         g->have[i] = 0;
     }
+}
+
+/* The groups still in part at a folder's end: counted, the first named. */
+static void parts_end(report_stats *s, const char *dir, rs_parts *pt)
+{
+    for (int i = 0; i < pt->n; i++) {
+        if (!s->partial++) {
+            char k[sizeof pt->g[i].key];
+            memcpy(k, pt->g[i].key, sizeof k);
+            for (char *c = k; *c; c++)
+                *c = *c == '\x1f' ? ' ' : *c;
+            snprintf(s->partial_first, sizeof s->partial_first, "%.60s: %.90s", dir, k);
+        }
+    }
+    s->partial += pt->lost;
+    pt->n = 0;
+    pt->lost = 0;
 }
 
 /* The Likert items by (condition, questionnaire, item): an open-addressed
@@ -345,7 +415,8 @@ static int level_item(report_run *r, rs_csv *c, rs_group *g, int likert, double 
 /* A checked row (report_instr_answer) into its questionnaire: 0, or -1
  * and c->err when the questionnaire has its item already or its level
  * asks the item otherwise. */
-static int answer_row(report_run *r, rs_csv *c, rs_group *g, long att, int likert, double v)
+static int answer_row(report_run *r, rs_csv *c, rs_group *g, rs_parts *pt, long att, int likert,
+                      double v)
 {
     report_stats *s = r->stats;
     char key[sizeof g->key];
@@ -353,11 +424,12 @@ static int answer_row(report_run *r, rs_csv *c, rs_group *g, long att, int liker
     snprintf(key, sizeof key, "%s\x1f%s\x1f%ld\x1f%s\x1f%s", field(c, A_SESSION),
              field(c, A_PART), att, q, field(c, A_WHEN));
     if (strcmp(key, g->key)) {
-        flush_group(s, g);
+        flush_group(s, g, pt);
         memcpy(g->key, key, sizeof key);
         g->att = find_att(r, c->dir, field(c, A_SESSION), att);
         g->cond = g->att < 0 ? s->none : s->att_cond[g->att];
         g->items.n = 0;
+        take_partial(pt, g);
     }
     if (report_instr_item_new(&g->items, q, item, c->err) || level_item(r, c, g, likert, v))
         return -1;
@@ -373,8 +445,9 @@ static int answer_row(report_run *r, rs_csv *c, rs_group *g, long att, int liker
     return 0;
 }
 
-/* answers.csv's rows (the file open in c->l): 0, or the exit status. */
-static int answers_rows(report_run *r, rs_csv *c)
+/* answers.csv's rows (the file open in c->l): 0, or the exit status;
+ * questionnaires answered in part wait in pt (parts_end). */
+static int answers_rows(report_run *r, rs_csv *c, rs_parts *pt)
 {
     static const char *const names[] = {"session", "participant", "attempt", "questionnaire",
                                         "when", "item", "kind", "value"};
@@ -391,12 +464,13 @@ static int answers_rows(report_run *r, rs_csv *c)
         }
         if (report_instr_answer(field(c, A_Q), field(c, A_WHEN), field(c, A_ITEM),
                                 field(c, A_KIND), field(c, A_VALUE), &v, c->err) ||
-            answer_row(r, c, &g, att, !strcmp(field(c, A_KIND), "likert"), v)) {
+            answer_row(r, c, &g, pt, att, !strcmp(field(c, A_KIND), "likert"), v)) {
             got = -bad(c, c->err);
             break;
         }
     }
-    flush_group(r->stats, &g);
+    flush_group(r->stats, &g, pt);
+    parts_end(r->stats, r->dirs ? r->dirs[c->dir] : c->path, pt);
     return got < 0 ? -got : 0;
 }
 
@@ -404,7 +478,9 @@ static int answers_rows(report_run *r, rs_csv *c)
  * points.csv), then closed. */
 static int instrument(report_run *r, rs_csv *c, int answers)
 {
-    int st = answers ? answers_rows(r, c) : points_rows(r, c);
+    rs_parts *pt = answers ? calloc(1, sizeof *pt) : NULL;
+    int st = !answers ? points_rows(r, c) : pt ? answers_rows(r, c, pt) : CLI_EXIT_FAIL;
+    free(pt);
     hol_lines_close(&c->l);
     return st;
 }
@@ -791,6 +867,9 @@ int report_stats_read(report_run *r)
     if (!st && s->lik_dropped)
         fprintf(stderr, "holonomy %s: warning: more than %d Likert items and conditions: "
                         "%ld answers not in stats.csv\n", r->cmd, RS_LIK_MAX, s->lik_dropped);
+    if (!st && s->partial)
+        fprintf(stderr, "holonomy %s: warning: %ld questionnaire(s) answered in part, not "
+                        "scored (the first: %s)\n", r->cmd, s->partial, s->partial_first);
     if (!st && (learning(r, s) || participants(r, s)))
         st = CLI_EXIT_FAIL;
     if (st == CLI_EXIT_FAIL)

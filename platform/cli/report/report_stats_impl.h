@@ -54,6 +54,8 @@ typedef struct report_stats {
     int nlik, caplik;
     int *slot; /* RS_LIK_SLOTS: an index in lik, -1 empty */
     long lik_dropped; /* answers beyond RS_LIK_MAX items */
+    long partial;     /* questionnaires (presets) answered in part: unscored */
+    char partial_first[160]; /* the first: its folder and group */
     rs_learn *learn;
     int nlearn;
     rs_prow *prow;
