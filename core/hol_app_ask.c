@@ -18,7 +18,7 @@ static int hol__marks(const hol_app_question *q)
     return (q->hi - q->lo) / step + 1;
 }
 
-static const hol_app_question *hol__item(const hol_app *app)
+static const hol_app_question *hol__ask_item(const hol_app *app)
 {
     const hol_app_ask *a = &app->level.asks[app->ask_k];
     return &app->level.questions[a->first + app->ask_i];
@@ -26,7 +26,7 @@ static const hol_app_question *hol__item(const hol_app *app)
 
 static void hol__item_begin(hol_app *app, const hol_input *in)
 {
-    app->ask_mark = (hol__marks(hol__item(app)) - 1) / 2; /* the middle */
+    app->ask_mark = (hol__marks(hol__ask_item(app)) - 1) / 2; /* the middle */
     app->ask_t0 = in->time_s;
     app->ask_ref_yaw = app->mo.yaw_deg;
     app->place_panel = 1;
@@ -71,7 +71,7 @@ hol_err hol_app_ask_from(hol_app *app, int item)
     app->pending_start = 0; /* the level is not played again */
     app->screen = HOL_APP_SCREEN_NONE;
     app->view.state = HOL_APP_ASK;
-    app->ask_mark = (hol__marks(hol__item(app)) - 1) / 2;
+    app->ask_mark = (hol__marks(hol__ask_item(app)) - 1) / 2;
     app->ask_fresh = 1;
     app->place_panel = 1;
     hol__fill_view(app, NULL);
@@ -115,7 +115,7 @@ void hol__ask_frame(hol_app *app, const hol_input *in, uint32_t pressed)
             hol__yaw_pitch_from_quat(in->head.quat, &app->mo.yaw_deg, &app->mo.pitch_deg);
         hol__item_begin(app, in);
     }
-    const hol_app_question *q = hol__item(app);
+    const hol_app_question *q = hol__ask_item(app);
     int marks = hol__marks(q);
     int ray = (in->flags & HOL_INPUT_HEAD_VALID) &&
               (in->flags & (HOL_INPUT_HAND_R_VALID | HOL_INPUT_HAND_L_VALID));
@@ -161,7 +161,7 @@ void hol__ask_frame(hol_app *app, const hol_input *in, uint32_t pressed)
  * ends, on one line or two): never more than the HUD's 6 lines, none cut. */
 void hol__ask_lines(const hol_app *app, hol_app_hud *h)
 {
-    const hol_app_question *q = hol__item(app);
+    const hol_app_question *q = hol__ask_item(app);
     const hol_app_ask *a = &app->level.asks[app->ask_k];
     int marks = hol__marks(q), m = app->ask_mark, step = q->step > 0 ? q->step : 1;
     h->nlines = 0;
