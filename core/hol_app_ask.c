@@ -57,7 +57,7 @@ void hol__after_end(hol_app *app, const hol_input *in, int from_ask)
     }
 }
 
-hol_err hol_app_ask_from(hol_app *app, int item)
+hol_err hol__ask_begin_from(hol_app *app, int item)
 {
     if (!app->have_level || item < 0)
         return HOL_EARG;
@@ -74,7 +74,6 @@ hol_err hol_app_ask_from(hol_app *app, int item)
     app->ask_mark = (hol__marks(hol__ask_item(app)) - 1) / 2;
     app->ask_fresh = 1;
     app->place_panel = 1;
-    hol__fill_view(app, NULL);
     return HOL_OK;
 }
 

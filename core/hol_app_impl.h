@@ -134,6 +134,10 @@ void hol__point_answer(hol_app *app, const hol_input *in);
 void hol__after_end(hol_app *app, const hol_input *in, int from_ask);
 void hol__ask_frame(hol_app *app, const hol_input *in, uint32_t pressed);
 void hol__ask_lines(const hol_app *app, hol_app_hud *h);
+/* hol_app_ask_from's state change: the level's questions from item ITEM
+ * (its view is filled by the caller). HOL_EARG for no level or no such
+ * item, app untouched. */
+hol_err hol__ask_begin_from(hol_app *app, int item);
 
 /* hol_app_view.c */
 void hol__fill_view(hol_app *app, const hol_input *in);

@@ -803,3 +803,11 @@ hol_err hol_app_step(hol_app *app, const hol_input *in)
     hol__fill_view(app, in);
     return HOL_OK;
 }
+
+hol_err hol_app_ask_from(hol_app *app, int item)
+{
+    hol_err err = hol__ask_begin_from(app, item);
+    if (!err)
+        hol__fill_view(app, NULL);
+    return err;
+}

@@ -67,20 +67,6 @@ static int trials_csv(FILE *f, const report_run *r, const void *ctx)
     return 0;
 }
 
-void ps_summary(FILE *f, const hol_stats *st, double k, int with_sd, int last)
-{
-    double sd = st->n > 1 ? sqrt(st->m2 / (double)(st->n - 1)) : 0;
-    double h = st->n > 1 ? report_t975(st->n - 1) * k * sd / sqrt((double)st->n) : 0;
-    double v[4] = {st->mean, sd, st->mean - h, st->mean + h};
-    int have[4] = {st->n > 0, st->n > 1, st->n > 1, st->n > 1};
-    for (int i = 0; i < 4; i++) {
-        if (i == 1 && !with_sd)
-            continue;
-        if (have[i])
-            fprintf(f, "%.15g", v[i] == 0 ? 0 : v[i]);
-        fputc(i == 3 && last ? '\n' : ',', f);
-    }
-}
 
 /* Each condition and measure of participants_stats.csv, in its order. */
 typedef void (*row_fn)(FILE *f, const report_run *r, int c, int m, const ps_row *w);
@@ -128,13 +114,6 @@ static int participants_stats_csv(FILE *f, const report_run *r, const void *ctx)
     return 0;
 }
 
-int ps_dz(const hol_stats *d, double *out)
-{
-    if (d->n < 2 || d->m2 <= 0)
-        return 0;
-    *out = d->mean / sqrt(d->m2 / (double)(d->n - 1));
-    return 1;
-}
 
 /* The factor columns of trials.csv in which conditions ca and cb differ
  * (their first included trials'), space-separated, then end (',' in the

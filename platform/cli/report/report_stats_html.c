@@ -12,14 +12,6 @@
 static const char *const palette[8] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd",
                                        "#ff7f0e", "#8c564b", "#e377c2", "#17becf"};
 
-void rs_cond_name(FILE *f, const rs_cond *c)
-{
-    if (c->study[0]) {
-        report_html(f, c->study);
-        fputs(" / ", f);
-    }
-    report_html(f, c->condition);
-}
 
 static void stat_cells(FILE *f, const hol_stats *st)
 {

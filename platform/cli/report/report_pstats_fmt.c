@@ -1,0 +1,43 @@
+/* report_pstats_fmt.c - the pieces the report's statistics writers share
+ * (report_pstats_impl.h, report_stats_impl.h): a condition's name, a
+ * summary's cells and d_z. Below the CSV, effects and page writers, which
+ * all call down into it. */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "report_escape.h"
+#include "report_pstats_impl.h"
+#include "report_stats_impl.h"
+
+void rs_cond_name(FILE *f, const rs_cond *c)
+{
+    if (c->study[0]) {
+        report_html(f, c->study);
+        fputs(" / ", f);
+    }
+    report_html(f, c->condition);
+}
+
+void ps_summary(FILE *f, const hol_stats *st, double k, int with_sd, int last)
+{
+    double sd = st->n > 1 ? sqrt(st->m2 / (double)(st->n - 1)) : 0;
+    double h = st->n > 1 ? report_t975(st->n - 1) * k * sd / sqrt((double)st->n) : 0;
+    double v[4] = {st->mean, sd, st->mean - h, st->mean + h};
+    int have[4] = {st->n > 0, st->n > 1, st->n > 1, st->n > 1};
+    for (int i = 0; i < 4; i++) {
+        if (i == 1 && !with_sd)
+            continue;
+        if (have[i])
+            fprintf(f, "%.15g", v[i] == 0 ? 0 : v[i]);
+        fputc(i == 3 && last ? '\n' : ',', f);
+    }
+}
+
+int ps_dz(const hol_stats *d, double *out)
+{
+    if (d->n < 2 || d->m2 <= 0)
+        return 0;
+    *out = d->mean / sqrt(d->m2 / (double)(d->n - 1));
+    return 1;
+}
