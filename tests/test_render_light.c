@@ -258,14 +258,19 @@ static int same_point(double m, const double a[3], const double b[3])
     return floor_m(m, a, b) < 1e-6;
 }
 
-/* The fog's distance on the floor: the chord 2 sinh(x/2) of the floor
- * distance x (its Lorentz norm), in metres; the distance in {4,4}. */
-static double chord_m(double m, const double a[3], const double b[3])
+/* The documented fog (docs/rendering.md#lighting): exp(-(k D)^2), D the
+ * true distance in H^2 x E from the eye (model point eye, height
+ * c->eye[1]) to the floor point h: its floor distance by the acosh of the
+ * Lorentz product (floor_m), not the chord the shader once took. */
+static double fog_true_m(const light_case *c, const double h[3], const double eye[3])
 {
-    if (model_q == 4)
-        return hypot(a[0] - b[0], a[1] - b[1]) * m;
-    double ip = a[2] * b[2] - a[0] * b[0] - a[1] * b[1];
-    return sqrt(ip > 1 ? 2 * (ip - 1) : 0) * m / model_edge();
+    return hypot(floor_m(c->cell, h, eye), c->eye[1]);
+}
+
+static double fog_model(const light_case *c, const double h[3], const double eye[3])
+{
+    double fd = fog_true_m(c, h, eye) * (c->dusk ? FOG_DUSK : FOG_NIGHT);
+    return exp(-fd * fd);
 }
 
 /* The documented falloff and incidence of a lantern over a floor point:
@@ -460,6 +465,13 @@ static void render(scene *s, int flags, uint8_t *px)
     render_fixture_draw(fx.rnd, &s->f, W, H, px);
 }
 
+/* A case's scene drawn bare with HOL_RENDER_LIGHT_ONLY into px. */
+static void draw_light_only(const light_case *c, scene *s, uint8_t *px)
+{
+    make_scene(c, s);
+    render(s, HOL_RENDER_BARE | HOL_RENDER_LIGHT_ONLY, px);
+}
+
 static double smooth(double a, double b, double x)
 {
     double t = (x - a) / (b - a);
@@ -516,10 +528,8 @@ static int model_pixel_sf(const light_case *c, const scene *s, int x, int y, dou
         if (sf)
             sf[i] = sh;
     }
-    double fe = chord_m(c->cell, h, s->eye), de = hypot(fe, c->eye[1]);
-    double fd = de * (c->dusk ? FOG_DUSK : FOG_NIGHT);
     out[0] = lam < 1 ? lam : 1;
-    out[1] = exp(-fd * fd);
+    out[1] = fog_model(c, h, s->eye);
     out[2] = lam0 < 1 ? lam0 : 1;
     return 1;
 }
@@ -586,8 +596,7 @@ static void test_light_matches_model(void **state)
     for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
         const light_case *c = &cases[k];
         scene s;
-        make_scene(c, &s);
-        render(&s, HOL_RENDER_BARE | HOL_RENDER_LIGHT_ONLY, px);
+        draw_light_only(c, &s, px);
         int checked = 0, lit = 0;
         shadow_count sc = {0, 0, 0};
         double worst = 0;
@@ -661,8 +670,7 @@ static void test_flat_equals_euclid(void **state)
     for (size_t k = 0; k < sizeof flat / sizeof flat[0]; k++) {
         const light_case *c = &flat[k];
         scene s;
-        make_scene(c, &s);
-        render(&s, HOL_RENDER_BARE | HOL_RENDER_LIGHT_ONLY, px);
+        draw_light_only(c, &s, px);
         int checked = 0, lit = 0;
         shadow_count sc = {0, 0, 0};
         for (int y = 0; y < H; y++)
@@ -707,6 +715,99 @@ static void test_flat_equals_euclid(void **state)
         total_sh += sc.shadowed;
     }
     assert_true(total_sh > 300);
+}
+
+/* Fog by the true distance (issue 38): views across 5 x 5 rooms from the
+ * centre cell towards a far corner, in {4,5}, {4,6} and {4,8}; every floor
+ * pixel whose true distance D from the eye lies in 1..6 m has the fog
+ * factor (green) of the model within 3 of 255, and every metre of 1..6 has
+ * pixels in every tiling (a pixel at a seam behind a vertex may match a
+ * neighbour's model instead: at most 1 %). The fog of the chord
+ * 2 sinh(x/2) (what the shader took before) is printed beside it: at 3 m
+ * the chord is 48 % ({4,5}) to 114 % ({4,8}) longer than the distance. */
+static const light_case fog_cases[] = {
+    {"-", {2.1, 1.6, 2.9}, -45, -20, 5, 5, 5, 1, {NULL}, 1},
+    {"-", {3.1, 1.6, 4.4}, -40, -18, 5, 5, 5, 1.5, {NULL}, 0},
+    {"-", {2.2, 1.6, 2.8}, -50, -20, 6, 5, 5, 1, {NULL}, 0},
+    {"-", {3.2, 1.6, 4.3}, 30, -14, 6, 5, 5, 1.5, {NULL}, 1},
+    {"-", {3.1, 1.6, 4.4}, -45, -14, 8, 5, 5, 1.5, {NULL}, 0},
+    {"-", {3.5, 1.6, 2.5}, 135, -20, 8, 5, 5, 1.2, {NULL}, 1},
+};
+
+/* The fog of the chord of the floor distance (the old shader's). */
+static double fog_chord(const light_case *c, const double h[3], const double eye[3])
+{
+    double ip = h[2] * eye[2] - h[0] * eye[0] - h[1] * eye[1];
+    double ch = sqrt(ip > 1 ? 2 * (ip - 1) : 0) * c->cell / model_edge();
+    double fd = hypot(ch, c->eye[1]) * (c->dusk ? FOG_DUSK : FOG_NIGHT);
+    return exp(-fd * fd);
+}
+
+/* Behind a vertex neighbouring pixels show different places (the model's
+ * fog jumps there) and the raster may take either side of that seam: the
+ * least error of pixel (x, y) against the model at its 4-neighbours. */
+static double fog_off_neighbours(const light_case *c, const scene *s, const uint8_t *px, int x,
+                                 int y)
+{
+    static const int dx[4] = {1, -1, 0, 0}, dy[4] = {0, 0, 1, -1};
+    double best = 255;
+    for (int k = 0; k < 4; k++) {
+        double p[2], h[3];
+        if (floor_point(c, x + dx[k] + 0.5, y + dy[k] + 0.5, p) && model_point(c, p, h))
+            best = fmin(best, fabs(px[4 * (y * W + x) + 1] - 255 * fog_model(c, h, s->eye)));
+    }
+    return best;
+}
+
+static void test_fog_true_distance(void **state)
+{
+    (void)state;
+    static uint8_t px[W * H * 4];
+    int per_metre[9][6] = {{0}}, total_bad = 0, total_seam = 0, total = 0;
+    for (size_t k = 0; k < sizeof fog_cases / sizeof fog_cases[0]; k++) {
+        const light_case *c = &fog_cases[k];
+        scene s;
+        draw_light_only(c, &s, px);
+        int checked = 0, bad = 0, seam = 0;
+        double worst = 0, chord_worst = 0, dmax = 0;
+        for (int y = 0; y < H; y++)
+            for (int x = 0; x < W; x++) {
+                double p[2], h[3];
+                if (!floor_point(c, x + 0.5, y + 0.5, p) || !model_point(c, p, h))
+                    continue;
+                double d = fog_true_m(c, h, s.eye);
+                if (d < 1 || d > 6)
+                    continue;
+                double e = fabs(px[4 * (y * W + x) + 1] - 255 * fog_model(c, h, s.eye));
+                if (e > TOL && fog_off_neighbours(c, &s, px, x, y) <= TOL) {
+                    seam++; /* a seam: the raster took the neighbour's side */
+                    e = 0;
+                }
+                if (e > TOL && getenv("FOG_DEBUG"))
+                    printf("  off (%d,%d) at %.2f m: %d against %.1f\n", x, y, d,
+                           px[4 * (y * W + x) + 1], 255 * fog_model(c, h, s.eye));
+                bad += e > TOL;
+                worst = fmax(worst, e);
+                chord_worst = fmax(chord_worst, 255 * fabs(fog_chord(c, h, s.eye) -
+                                                           fog_model(c, h, s.eye)));
+                dmax = fmax(dmax, d);
+                per_metre[c->q][d < 6 ? (int)d : 5]++;
+                checked++;
+            }
+        printf("fog case %zu ({4,%d}, %s): %d floor pixels at 1..%.1f m, %d off, worst %.1f/255, "
+               "%d at a seam (the chord's fog: %.0f/255 off)\n",
+               k, c->q, c->dusk ? "dusk" : "night", checked, dmax, bad, worst, seam, chord_worst);
+        total_bad += bad;
+        total_seam += seam;
+        total += checked;
+    }
+    assert_int_equal(total_bad, 0);
+    assert_true(total_seam * 100 <= total);
+    for (int q = 5; q <= 8; q++)
+        for (int m = 1; m <= 5 && q != 7; m++) {
+            printf("  {4,%d} %d..%d m: %d pixels\n", q, m, m + 1, per_metre[q][m]);
+            assert_true(per_metre[q][m] >= 50);
+        }
 }
 
 /* The branch's tile under every pixel (ID mode), -1 for none. */
@@ -1222,6 +1323,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_light_matches_model),
         cmocka_unit_test(test_flat_equals_euclid),
+        cmocka_unit_test(test_fog_true_distance),
         cmocka_unit_test(test_light_continuous_across_edges),
         cmocka_unit_test(test_lantern_through_portal),
         cmocka_unit_test(test_day_unchanged_without_lighting),

@@ -201,11 +201,19 @@ void main() {
 #else
     lam = hol_lights(v_L, 2.0 * g, o, HOL_LIGHT_HEIGHT_M - v_loc.y, n.y);
 #endif
-// fog: the chord 2 sinh(x/2) of the floor distance x (a function of
-// the true distance, within 4 % of it to 3 m; no log per pixel)
+// fog by the true distance from the eye: the floor distance x from the
+// squared chord c^2 to the eye as for a light (falloff.glsl: x = log(cosh
+// x + sinh x), cosh x = 1 + c^2/2, sinh x = sqrt(c^2 (1 + c^2/4))); flat:
+// x^2 = c^2. Then D^2 = x^2 (metres) + dh^2.
     float ce2 = max(2.0 * g * v_Le + o, 0.0);
+#if HOL_FLAT
+    float xe2 = ce2;
+#else
+    float xe = log(1.0 + 0.5 * ce2 + sqrt(ce2 + 0.25 * ce2 * ce2));
+    float xe2 = xe * xe;
+#endif
     float dh = u_eyeh - v_loc.y;
-    de2 = ce2 * u_mpu2 + dh * dh;
+    de2 = xe2 * u_mpu2 + dh * dh;
   }
 #endif
   float f = exp(-de2 * (u_fogd * u_fogd));
