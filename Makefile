@@ -269,7 +269,7 @@ $(BUILD)/bench/%: tests/%.c $(CORE_SRC)
 FUZZ_EXTRA_fuzz_png := render/hol_png.c -lz
 FUZZ_EXTRA_fuzz_cli := platform/cli/cli_util.c platform/file/hol_file.c platform/file/hol_lines.c
 FUZZ_EXTRA_fuzz_lines := platform/cli/cli_util.c platform/file/hol_file.c platform/file/hol_lines.c
-FUZZ_EXTRA_fuzz_report_instr := $(addprefix platform/cli/report/,report_stats.c report_instr.c \
+FUZZ_EXTRA_fuzz_report_instr := $(addprefix platform/cli/report/,report_stats.c report_answers.c report_instr.c \
   report_file.c report_escape.c) platform/cli/cli_util.c platform/file/hol_file.c \
   platform/file/hol_lines.c
 FUZZ_EXTRA_fuzz_hid_desc := $(HID_SRC)

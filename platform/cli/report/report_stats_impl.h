@@ -77,4 +77,8 @@ static inline int rs_cmp(long a, long b)
     return (a > b) - (a < b);
 }
 
+/* report_answers.c: every LOGDIR's points.csv and answers.csv read into
+ * r->stats (0, or an exit status after one line). */
+int rs_read_instruments(report_run *r);
+
 #endif
