@@ -104,6 +104,12 @@ void report_free(report_run *r);
 
 typedef int (*report_body)(FILE *f, const report_run *r, const void *ctx);
 int report_write_file(const report_run *r, const char *name, report_body body, const void *ctx);
+/* Files written in turn by report_write_file (no ctx) until one fails. */
+typedef struct report_file_job {
+    const char *name;
+    report_body body;
+} report_file_job;
+int report_write_files(const report_run *r, const report_file_job *jobs, int n);
 /* The same into dir/name (name may hold folders that exist: --bids). */
 int report_write_in(const report_run *r, const char *dir, const char *name, report_body body,
                     const void *ctx);

@@ -130,10 +130,8 @@ typedef struct rs_pkey { /* an attempt as participants() sorts it */
 static int by_part_cond(const void *pa, const void *pb)
 {
     const rs_pkey *a = pa, *b = pb;
-    int c = strcmp(a->participant, b->participant);
-    if (!c)
-        c = rs_cmp(a->cond, b->cond);
-    return c ? c : rs_cmp(a->i, b->i);
+    return rs_first(strcmp(a->participant, b->participant), rs_cmp(a->cond, b->cond),
+                    rs_cmp(a->i, b->i));
 }
 
 static int participants(const report_run *r, report_stats *s)
@@ -531,12 +529,10 @@ static int participants_csv(FILE *f, const report_run *r, const void *ctx)
 
 int report_stats_write(const report_run *r)
 {
-    int st = report_write_file(r, "stats.csv", stats_csv, NULL);
-    if (!st)
-        st = report_write_file(r, "learning.csv", learning_csv, NULL);
-    if (!st)
-        st = report_write_file(r, "participants.csv", participants_csv, NULL);
-    return st;
+    static const report_file_job jobs[] = {
+        {"stats.csv", stats_csv}, {"learning.csv", learning_csv},
+        {"participants.csv", participants_csv}};
+    return report_write_files(r, jobs, (int)(sizeof jobs / sizeof jobs[0]));
 }
 
 /* ---- a log folder named from the report's folder ---- */

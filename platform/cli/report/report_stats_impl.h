@@ -77,6 +77,12 @@ static inline int rs_cmp(long a, long b)
     return (a > b) - (a < b);
 }
 
+/* The first of three comparisons that is not 0: a sort by three keys. */
+static inline int rs_first(int c1, int c2, int c3)
+{
+    return c1 ? c1 : c2 ? c2 : c3;
+}
+
 /* report_answers.c: every LOGDIR's points.csv and answers.csv read into
  * r->stats (0, or an exit status after one line). */
 int rs_read_instruments(report_run *r);
