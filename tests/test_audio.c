@@ -7,6 +7,7 @@
  * again. Skipped where libopenal.so.1 cannot be loaded (the arm64 run under
  * qemu has none).
  */
+#include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -128,11 +129,52 @@ static void test_feed_holds(void **state)
     hol_app_destroy(app);
 }
 
+/* The WAV's pan with HRTF off (the loopback device) no harder than the
+ * equal-power law (issue 38): a source at azimuth a (right of ahead)
+ * gives the right ear sin^2(pi/4 + a/2) of the power, within 0.01, and
+ * the total power does not change with a (within 2 %). */
+static void test_pan_equal_power(void **state)
+{
+    (void)state;
+    double total0 = 0;
+    for (int az = 0; az <= 90; az += 15) {
+        hol_audio *a = open_loopback();
+        if (!a)
+            skip();
+        hol_sound_list l;
+        memset(&l, 0, sizeof l);
+        l.n = 1;
+        l.src[0].kind = HOL_SND_WATER;
+        l.src[0].id = 7;
+        l.src[0].gain = 0.5;
+        double t = az * 3.14159265358979 / 180;
+        l.src[0].dir[0] = sin(t);
+        l.src[0].dir[2] = -cos(t);
+        hol_audio_apply(a, &l);
+        assert_int_equal(hol_audio_render(a, g_pcm, N), 0); /* settle */
+        assert_int_equal(hol_audio_render(a, g_pcm, N), 0);
+        double L = 0, R = 0;
+        for (int i = 0; i < N; i++) {
+            L += (double)g_pcm[2 * i] * g_pcm[2 * i];
+            R += (double)g_pcm[2 * i + 1] * g_pcm[2 * i + 1];
+        }
+        double want = pow(sin(3.14159265358979 / 4 + t / 2), 2), got = R / (L + R);
+        if (fabs(got - want) > 0.01)
+            print_message("azimuth %d: right share %.4f, equal power %.4f\n", az, got, want);
+        assert_true(fabs(got - want) <= 0.01);
+        if (az == 0)
+            total0 = L + R;
+        assert_true(fabs((L + R) / total0 - 1) < 0.02);
+        hol_audio_close(a);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_pause_stops_and_resumes),
         cmocka_unit_test(test_feed_holds),
+        cmocka_unit_test(test_pan_equal_power),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }
