@@ -288,7 +288,7 @@ static void test_level_line(void **state)
  * and the loudest such gain. A loop that enters or leaves the list must do
  * so at (near) zero gain: anything else is a pop. Also the mean CPU time
  * of hol_sound_update per frame (out_ms; a figure, not checked here). */
-static int walk_pops(int q, double *out_loudest, double *out_ms, double *out_n)
+static int walk_pops(int q, double *out_loudest, double *out_ms, double *out_n, double *out_r)
 {
     hol_app *app = make_app_q(q, "Nrrf", HOL_CUE_POLES, HOL_SOUND_ALL);
     hol_sound snd;
@@ -328,6 +328,7 @@ static int walk_pops(int q, double *out_loudest, double *out_ms, double *out_n)
     *out_loudest = loud;
     *out_ms = ns / 5401 / 1e6;
     *out_n = nsrc / 5401;
+    *out_r = snd.radius;
     return pops;
 }
 
@@ -336,8 +337,8 @@ static void test_no_pops(void **state)
 {
     (void)state;
     for (int q = 4; q <= 8; q++) {
-        double loud, ms, n;
-        int pops = walk_pops(q, &loud, &ms, &n);
+        double loud, ms, n, r;
+        int pops = walk_pops(q, &loud, &ms, &n, &r);
         if (pops)
             print_message("{4,%d}: %d pops, the loudest %.4f\n", q, pops, loud);
         assert_int_equal(pops, 0);
@@ -349,10 +350,10 @@ int main(int argc, char **argv)
     if (argc > 1 && !strcmp(argv[1], "--bench")) { /* make bench: the choice's cost */
         setup(NULL);
         for (int q = 4; q <= 8; q++) {
-            double loud, ms, n;
-            int pops = walk_pops(q, &loud, &ms, &n);
+            double loud, ms, n, r;
+            int pops = walk_pops(q, &loud, &ms, &n, &r);
             printf("sound: {4,%d}: hol_sound_update %.4f ms a frame (target 0.05), %.1f sources, "
-                   "%d pops\n", q, ms, n, pops);
+                   "R %.2f m, %d pops\n", q, ms, n, r, pops);
         }
         teardown(NULL);
         return 0;
