@@ -285,7 +285,8 @@ static int hol__ambience(hol_sound *st, const hol__sg *g, const hol_app_view *v,
 {
     hol_world_stats ws;
     hol_world_get_stats(w, &ws);
-    uint64_t key[4] = {ws.tiles_collapsed, ws.backtracks, ws.evicted, ws.count};
+    uint64_t key[5] = {ws.tiles_collapsed, ws.backtracks, ws.evicted, ws.count,
+                       hol_world_seed(w)};
     if (!st->valid || st->world != w || !hol_tile_eq(st->user.tile, v->user.tile) ||
         st->user.orient != v->user.orient || st->cell_m != v->cell_m ||
         memcmp(st->world_key, key, sizeof key)) {

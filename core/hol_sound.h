@@ -132,7 +132,8 @@ typedef struct hol_sound {
     hol_room user;
     double cell_m;
     const struct hol_world *world;
-    uint64_t world_key[4];     /* collapses, backtracks, evictions, count */
+    uint64_t world_key[5];     /* collapses, backtracks, evictions, count,
+                                  seed */
     double radius;             /* the ambience's window R, metres */
     int namb;
     hol_sound_amb amb[HOL_SOUND_MAX_AMB];

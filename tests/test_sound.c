@@ -307,6 +307,18 @@ static int walk_pops(int q, double *out_loudest, double *out_ms, double *out_n, 
         clock_gettime(CLOCK_MONOTONIC, &b);
         ns += (b.tv_sec - a.tv_sec) * 1e9 + (b.tv_nsec - a.tv_nsec);
         nsrc += l.n;
+        if (f % 97 == 0) { /* the cache changes nothing: a fresh listener hears the same */
+            static hol_sound fresh;
+            static hol_sound_list l2;
+            hol_sound_init(&fresh);
+            hol_sound_update(&fresh, hol_app_get_view(app), hol_app_get_events(app),
+                             hol_app_world(app), &l2);
+            assert_int_equal(l2.n, l.n);
+            for (int i = 0; i < l.n; i++) {
+                assert_int_equal(l2.src[i].id, l.src[i].id);
+                assert_true(l2.src[i].gain == l.src[i].gain);
+            }
+        }
         for (int pass = 0; pass < 2; pass++) { /* 0: appeared, 1: vanished */
             const hol_sound_list *x = pass ? &prev : &l, *y = pass ? &l : &prev;
             for (int i = 0; f > 0 && i < x->n; i++) {
