@@ -47,6 +47,19 @@ static int peak(hol_audio *a)
     return m;
 }
 
+/* a list of one water loop (noise: never silent for 0.1 s) at gain g,
+ * azimuth az radians right of ahead */
+static void water(hol_sound_list *l, double g, double az)
+{
+    memset(l, 0, sizeof *l);
+    l->n = 1;
+    l->src[0].kind = HOL_SND_WATER;
+    l->src[0].id = 7;
+    l->src[0].gain = g;
+    l->src[0].dir[0] = sin(az);
+    l->src[0].dir[2] = -cos(az);
+}
+
 static void test_pause_stops_and_resumes(void **state)
 {
     (void)state;
@@ -54,12 +67,7 @@ static void test_pause_stops_and_resumes(void **state)
     if (!a)
         skip();
     hol_sound_list l;
-    memset(&l, 0, sizeof l);
-    l.n = 1;
-    l.src[0].kind = HOL_SND_WATER; /* noise: never silent for 0.1 s */
-    l.src[0].id = 7;
-    l.src[0].gain = 1.0;
-    l.src[0].dir[2] = -1; /* ahead */
+    water(&l, 1.0, 0); /* ahead */
     hol_audio_apply(a, &l);
     assert_int_equal(hol_audio_active(a), 1);
     assert_true(peak(a) > 100);
@@ -142,14 +150,8 @@ static void test_pan_equal_power(void **state)
         if (!a)
             skip();
         hol_sound_list l;
-        memset(&l, 0, sizeof l);
-        l.n = 1;
-        l.src[0].kind = HOL_SND_WATER;
-        l.src[0].id = 7;
-        l.src[0].gain = 0.5;
         double t = az * 3.14159265358979 / 180;
-        l.src[0].dir[0] = sin(t);
-        l.src[0].dir[2] = -cos(t);
+        water(&l, 0.5, t);
         hol_audio_apply(a, &l);
         assert_int_equal(hol_audio_render(a, g_pcm, N), 0); /* settle */
         assert_int_equal(hol_audio_render(a, g_pcm, N), 0);
