@@ -33,10 +33,14 @@
  *   D0 = 1 m (1 / (1 + d) for 1 / d: the one departure from the physics,
  *   so that a source at the ear is not infinitely loud), and
  *   W(d) = (1 - (d/R)^2)^2 below R, 0 beyond, for ambience (so a source
- *   fades in and out without a pop); R = hol_sound_radius_m:
- *   HOL_SOUND_RADIUS_M, or less in {4,q>4}: HOL_SOUND_HORIZON curvature
- *   radii (the tiles within a radius grow as e^r: the horizon bounds the
- *   work); the hedges' wind has R = HOL_SOUND_RADIUS_M (room space).
+ *   fades in and out without a pop); R = hol_sound_radius_m
+ *   (HOL_SOUND_RADIUS_M, or less in {4,q>4}: HOL_SOUND_HORIZON curvature
+ *   radii; the tiles within a radius grow as e^r: the horizon bounds the
+ *   work), cut to the world's generated radius (no nearer than the
+ *   nearest tile more than hol_world_radius steps from the user's, less a
+ *   tile's circumradius: no source appears as a tile collapses; the
+ *   listener's hol_sound.radius); the hedges' wind has
+ *   R = HOL_SOUND_RADIUS_M (room space).
  *   Beacons have no window (W = 1) and are heard from any distance a frame
  *   reaches. Effects at the listener have gain 1 (footsteps 0.6).
  * - Direction: the initial direction of the geodesic from the listener to
