@@ -451,10 +451,11 @@ fuzz-run-%: $(BUILD)/fuzz/%
 	@$(SUITE) "$* for $(FUZZ_TIME) s" $< -max_total_time=$(FUZZ_TIME) -print_final_stats=1 \
 	  -artifact_prefix=$(BUILD)/fuzz/ $(BUILD)/fuzz/new-$* fuzz/corpus/$*
 
-bench: $(BENCH_BIN) $(BENCH_RENDER_BIN) $(BUILD)/holonomy
+bench: $(BENCH_BIN) $(BENCH_RENDER_BIN) $(BUILD)/holonomy $(BUILD)/tests/test_sound
 	@set -e; for b in $(BENCH_BIN) $(BENCH_RENDER_BIN); do $$b; done
 	@sh tests/bench_report.sh $(BUILD)/holonomy
 	@sh tests/bench_sound.sh $(BUILD)/holonomy
+	@$(BUILD)/tests/test_sound --bench
 	@CC="$(CC)" sh tests/bench_ratio.sh $(BUILD) $(BENCH_BASE_COMMIT)
 	@if command -v $(EMCC) >/dev/null && [ -x /usr/bin/chromium ] && [ -d tests/web/node_modules ]; \
 	then $(MAKE) -s bench-web; \
