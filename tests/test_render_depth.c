@@ -1,23 +1,26 @@
 /* test_render_depth.c - the headset's panel is never drawn over geometry
  * nearer than itself (issue 36, item 2).
  *
- * The panel is drawn over the scene (no depth test), so wherever it is drawn
- * it must be nearer than what it covers, or stereo says far while
- * occlusion says near. A sweep of SWEEP positions and headings in the
- * 3 x 3 room of 1 m cells ({4,5}, from its start): the head at 1.6 m
- * anywhere the motion lets it stand (0.15 m from a hedge), looking
- * anywhere; the app's panel placed for it by core/hol_panel.h's rule (in
- * front of the nearest hedge or trunk in its direction, down to 0.5 m, the
- * same angular size); both eyes 64 mm apart drawn by the desktop renderer at
- * 64 x 64 with the panel (hol_app_frame_panel, as OpenXR and WebXR). The
- * panel's pixels are those the HUD changes; the scene's depth is read back
- * from the frame drawn without it. For every panel pixel, the panel's depth
- * along the pixel's ray (the ray met with the panel's plane) must be at most
- * the scene's there (1 cm of slack). Positions where the rule's floor binds
- * (a hedge or trunk nearer than 0.55 m ahead: there the panel stays at 0.5 m,
- * documented) are counted, not judged; they must stay a small part.
- * The same sweep with today's placement (no room given: 1.5 m always) finds
- * conflicts in most positions (what this test catches).
+ * A sweep of SWEEP positions and headings in the 3 x 3 room of 1 m cells
+ * ({4,5}, from its start): the head at 1.6 m anywhere the motion lets it
+ * stand (0.15 m from a hedge), looking anywhere; the app's panel placed for
+ * it by core/hol_panel.h's rule (in front of the nearest hedge or trunk in
+ * its direction, down to 0.5 m, the same angular size); both eyes 64 mm
+ * apart drawn by the desktop renderer at 64 x 64 with the panel
+ * (hol_app_frame_panel, as OpenXR and WebXR). The scene's depth is read
+ * back from the frame drawn without the panel. Two checks, in both eyes:
+ * - the placement: every pixel of the panel's box (hol_hud_panel_box: what
+ *   a quad layer shows, composited over the scene without depth) has the
+ *   panel's depth along its ray (the ray met with the panel's plane) at
+ *   most the scene's there (1 cm of slack), wherever the rule is above its
+ *   0.5 m floor (a hedge or trunk 0.55 m ahead or nearer: counted, and
+ *   there the in-scene panel is hidden by it);
+ * - the drawing: every pixel the panel changes in the scene, anywhere, has
+ *   the panel's depth at most the scene's (it is never painted over nearer
+ *   geometry).
+ * The same sweep with the placement before the rule (no room given: 1.5 m
+ * always) fails the first check in most positions (and, drawn without the
+ * depth test as before, the second).
  */
 #include <math.h>
 #include <setjmp.h>
