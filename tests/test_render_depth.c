@@ -20,7 +20,8 @@
  *   geometry).
  * The same sweep with the placement before the rule (no room given: 1.5 m
  * always) fails the first check in most positions (and, drawn without the
- * depth test as before, the second).
+ * depth test as before, the second). With HOL_DEPTH_SHOT=FILE.png both
+ * eyes near a hedge are written side by side (docs/headset.md).
  */
 #include <math.h>
 #include <setjmp.h>
@@ -39,6 +40,7 @@
 #include "../render/hol_gl.h"
 #include "../render/hol_hud.h"
 #include "../render/hol_view.h"
+#include "../platform/image/hol_png_file.h"
 #include "panel_view.h"
 #include "render_fixture.h"
 
@@ -189,7 +191,7 @@ static void test_panel_in_front(void **state)
     (void)state;
     sweep_out o;
     sweep(1, SWEEP, &o);
-    printf("rule: %d positions judged, %d at the 0.5 m floor (%d of them with a trunk over "
+    printf("rule: %d positions judged, %d at the 0.5 m floor (%d of them with the scene over "
            "part of the box), %ld panel pixels drawn, %ld box pixels behind the scene, %ld drawn "
            "pixels behind it\n",
            o.judged, o.floored, o.floor_bad, o.panel_px, o.bad_px, o.bad_drawn);
@@ -213,11 +215,47 @@ static void test_fixed_distance_fails(void **state)
     assert_true(o.bad_pos * 2 > o.judged); /* half and more */
 }
 
+/* HOL_DEPTH_SHOT=FILE.png: both eyes (400 px each, side by side) 0.9 m
+ * from the north hedge looking at it, the panel in front of it (the
+ * screenshot in docs/headset.md); else nothing. */
+static void test_shot(void **state)
+{
+    (void)state;
+    const char *path = getenv("HOL_DEPTH_SHOT");
+    if (!path || !path[0])
+        return;
+    enum { W = 400, GAP = 8 };
+    render_fixture fx;
+    assert_int_equal(render_fixture_make(&fx, W, W, 7), 0);
+    static hol_app_view v;
+    place(&v, 1.5, 0.9, 0, 1);
+    uint8_t *eye = malloc((size_t)W * W * 4), *both = calloc((size_t)(2 * W + GAP) * W * 4, 1);
+    assert_non_null(eye);
+    assert_non_null(both);
+    for (int e = 0; e < 2; e++) {
+        hol_frame_desc fd;
+        hol_app_frame_desc(&v, e, W, W, 90, &fd);
+        hol_app_frame_panel(&v, &fd);
+        render_fixture_draw(fx.rnd, &fd, W, W, eye);
+        for (int y = 0; y < W; y++)
+            memcpy(both + 4 * ((size_t)y * (2 * W + GAP) + (size_t)e * (W + GAP)),
+                   eye + 4 * (size_t)y * W, 4 * (size_t)W);
+    }
+    for (size_t i = 0; i < (size_t)(2 * W + GAP) * W; i++)
+        both[4 * i + 3] = 255;
+    assert_int_equal(hol_png_write_file(path, both, 2 * W + GAP, W, 0), HOL_OK);
+    printf("the panel %.3f m ahead (scale %.3f)\n", v.panel.dist, v.panel.scale);
+    free(eye);
+    free(both);
+    render_fixture_destroy(&fx);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_panel_in_front),
         cmocka_unit_test(test_fixed_distance_fails),
+        cmocka_unit_test(test_shot),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
