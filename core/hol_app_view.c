@@ -53,6 +53,7 @@ static void hol__fill_eyes(hol_app *app, const hol_input *in)
     /* the headset's UI panel: placed ahead at once when a level starts or
      * the room is re-placed around the head, else lazily following */
     double t = in ? in->time_s : v->panel.t;
+    hol_panel_room(&v->panel, hol_room_cols(&v->user), hol_room_rows(&v->user), app->mo.d.cell_m);
     if (app->ev.level_started || app->place_panel || (in && (in->flags & HOL_INPUT_RECENTRED)))
         hol_panel_place(&v->panel, v->head, v->yaw_deg, t);
     else
