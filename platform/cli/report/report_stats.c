@@ -237,6 +237,7 @@ typedef struct rs_group {
 #define RS_PARTS 64
 typedef struct rs_part {
     char key[4 * HOL_REPORT_TEXT];
+    int cond;
     double v[HOL_ASK_MAX_PRESETS][HOL_ASK_PRESET_ITEMS];
     unsigned have[HOL_ASK_MAX_PRESETS];
 } rs_part;
@@ -265,6 +266,7 @@ static void keep_partial(rs_parts *pt, const rs_group *g)
     }
     rs_part *k = &pt->g[pt->n++];
     memcpy(k->key, g->key, sizeof k->key);
+    k->cond = g->cond;
     memcpy(k->v, g->v, sizeof k->v);
     memcpy(k->have, g->have, sizeof k->have);
 }
@@ -281,6 +283,45 @@ static void take_partial(rs_parts *pt, rs_group *g)
         }
 }
 
+/* A row of scores.csv (s->score grown as needed; s->score_oom when it
+ * cannot be). */
+static void add_score(report_stats *s, const char *key, int cond, const char *sub, double v,
+                      int has, int complete)
+{
+    if (s->nscore == s->capscore) {
+        long cap = s->capscore ? 2 * s->capscore : 256;
+        rs_score *n = realloc(s->score, sizeof *n * (size_t)cap);
+        if (!n) {
+            s->score_oom = 1;
+            return;
+        }
+        s->score = n;
+        s->capscore = cap;
+    }
+    rs_score *o = &s->score[s->nscore++];
+    snprintf(o->key, sizeof o->key, "%s", key);
+    o->cond = cond;
+    snprintf(o->sub, sizeof o->sub, "%s", sub);
+    o->v = v;
+    o->has = has;
+    o->complete = complete;
+}
+
+/* Preset p's rows of scores.csv: its scores (empty when answered in
+ * part), and for a preset of one score (tlx: raw) each item's answer. */
+static void preset_scores(report_stats *s, const char *key, int cond,
+                          const hol_ask_preset_def *p, const double *v, unsigned have)
+{
+    int complete = have == (1u << p->nitems) - 1;
+    double sc[HOL_ASK_PRESET_SCORES] = {0};
+    if (complete)
+        hol_ask_score(p, v, sc);
+    for (int k = 0; k < p->nscores; k++)
+        add_score(s, key, cond, p->scores[k].name, sc[k], complete, complete);
+    for (int j = 0; p->nscores == 1 && j < p->nitems; j++)
+        add_score(s, key, cond, p->items[j].id, v[j], (have >> j) & 1, complete);
+}
+
 /* Each preset answered in full: its scores into the measures from RS_SSQ_T
  * on, in the table's order (ssq's four, tlx's raw); one answered in part
  * waits in pt. */
@@ -292,8 +333,10 @@ static void flush_group(report_stats *s, rs_group *g, rs_parts *pt)
     for (int i = 0, col = RS_SSQ_T; i < hol_ask_npresets(); i++) {
         const hol_ask_preset_def *p = hol_ask_preset_at(i);
         double sc[HOL_ASK_PRESET_SCORES];
-        if (g->have[i] == (1u << p->nitems) - 1)
+        if (g->have[i] == (1u << p->nitems) - 1) {
             hol_ask_score(p, g->v[i], sc);
+            preset_scores(s, g->key, g->cond, p, g->v[i], g->have[i]);
+        }
         for (int k = 0; k < p->nscores; k++, col++)
             if (g->have[i] == (1u << p->nitems) - 1 && col < RS_NFIX)
                 hol_stats_add(&f[col], sc[k]);
@@ -305,6 +348,10 @@ static void flush_group(report_stats *s, rs_group *g, rs_parts *pt)
 static void parts_end(report_stats *s, const char *dir, rs_parts *pt)
 {
     for (int i = 0; i < pt->n; i++) {
+        for (int p = 0; p < hol_ask_npresets(); p++)
+            if (pt->g[i].have[p])
+                preset_scores(s, pt->g[i].key, pt->g[i].cond, hol_ask_preset_at(p),
+                              pt->g[i].v[p], pt->g[i].have[p]);
         if (!s->partial++) {
             char k[sizeof pt->g[i].key];
             memcpy(k, pt->g[i].key, sizeof k);
@@ -437,6 +484,8 @@ static int answer_row(report_run *r, rs_csv *c, rs_group *g, rs_parts *pt, long 
         return 0;
     add_likert(s, g->cond, q, item, v);
     int p = hol_ask_preset_index(q, strlen(q));
+    if (p < 0)
+        add_score(s, g->key, g->cond, item, v, 1, 1);
     int k = hol_ask_preset_item(hol_ask_preset_at(p), item);
     if (k >= 0) {
         g->v[p][k] = v;
@@ -870,7 +919,7 @@ int report_stats_read(report_run *r)
     if (!st && s->partial)
         fprintf(stderr, "holonomy %s: warning: %ld questionnaire(s) answered in part, not "
                         "scored (the first: %s)\n", r->cmd, s->partial, s->partial_first);
-    if (!st && (learning(r, s) || participants(r, s)))
+    if (!st && (s->score_oom || learning(r, s) || participants(r, s)))
         st = CLI_EXIT_FAIL;
     if (st == CLI_EXIT_FAIL)
         cli_error(r->cmd, 0, "out of memory");
@@ -883,7 +932,7 @@ void report_stats_free(report_run *r)
     if (!s)
         return;
     void *own[] = {s->cond, s->att_cond, s->order, s->tpt, s->fix, s->lik, s->slot, s->learn,
-                   s->prow, s->seen, s->pts, s->used, s->nrange, s};
+                   s->prow, s->seen, s->pts, s->used, s->nrange, s->score, s};
     for (size_t i = 0; i < sizeof own / sizeof own[0]; i++)
         free(own[i]);
     r->stats = NULL;
@@ -978,9 +1027,49 @@ static int participants_csv(FILE *f, const report_run *r, const void *ctx)
     return 0;
 }
 
+/* scores.csv: a row's key split (session, participant, attempt,
+ * questionnaire, when); `after study` and `before study` under the
+ * condition `study`. */
+static int scores_csv(FILE *f, const report_run *r, const void *ctx)
+{
+    const report_stats *s = r->stats;
+    (void)ctx;
+    fputs("participant,session,attempt,study,condition,placement,scope,instrument,subscale,"
+          "score,complete\n", f);
+    for (long i = 0; i < s->nscore; i++) {
+        const rs_score *o = &s->score[i];
+        char k[sizeof o->key], *part[5] = {k, "", "", "", ""};
+        memcpy(k, o->key, sizeof k);
+        for (int j = 1; j < 5; j++) {
+            char *sep = strchr(part[j - 1], '\x1f');
+            if (!sep)
+                break;
+            *sep = 0;
+            part[j] = sep + 1;
+        }
+        const char *when = part[4], *scope = strchr(when, '_') ? strchr(when, '_') + 1 : when;
+        int before = !strncmp(when, "before_", 7);
+        report_csv(f, part[1], 0);
+        report_csv(f, part[0], 0);
+        report_csv(f, part[2], 0);
+        report_csv(f, s->cond[o->cond].study, 0);
+        report_csv(f, !strcmp(scope, "study") ? "study" : s->cond[o->cond].condition, 0);
+        fprintf(f, "%s,", before ? "before" : "after");
+        report_csv(f, scope, 0);
+        report_csv(f, part[3], 0);
+        report_csv(f, o->sub, 0);
+        if (o->has)
+            fprintf(f, "%.4f", o->v);
+        fprintf(f, ",%d\n", o->complete);
+    }
+    return 0;
+}
+
 int report_stats_write(const report_run *r)
 {
     int st = report_write_file(r, "stats.csv", stats_csv, NULL);
+    if (!st)
+        st = report_write_file(r, "scores.csv", scores_csv, NULL);
     if (!st)
         st = report_write_file(r, "learning.csv", learning_csv, NULL);
     if (!st)
