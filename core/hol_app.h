@@ -182,8 +182,12 @@ enum hol_app_screen {
 #define HOL_APP_MAX_SCALE 21     /* a likert scale's marks at most */
 
 enum hol_app_question_kind { HOL_APP_LIKERT = 0, HOL_APP_CHOICE = 1 };
+/* after: asked after the level's end screen; before (issue 35, a baseline):
+ * asked when the level starts, before its instructions and its clock. */
 enum hol_app_ask_when { HOL_APP_AFTER_LEVEL = 0, HOL_APP_AFTER_CONDITION = 1,
-                        HOL_APP_AFTER_STUDY = 2 };
+                        HOL_APP_AFTER_STUDY = 2, HOL_APP_BEFORE_LEVEL = 3,
+                        HOL_APP_BEFORE_CONDITION = 4, HOL_APP_BEFORE_STUDY = 5 };
+#define HOL_APP_ASK_WHENS 6
 
 typedef struct hol_app_question {
     char id[HOL_APP_ID_MAX];

@@ -8,6 +8,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#include "../../core/hol_ask.h"
 #include "../../core/hol_report.h"
 #include "../../core/hol_session.h"
 #include "../../core/hol_sha256.h"
@@ -176,7 +177,6 @@ static int resume_find(const resume_rows *r, const char *session, const char *at
 static void resume_answer(resume_rows *r, const hol_level *levels, int n, int k,
                           const char *const *f)
 {
-    static const char *const whens[3] = {"level", "condition", "study"};
     for (int i = 0; i < n; i++) {
         if (r->by[i] != k)
             continue;
@@ -185,7 +185,7 @@ static void resume_answer(resume_rows *r, const hol_level *levels, int n, int k,
             for (int j = 0; j < L->asks[q].n; j++, item++) {
                 int w = L->asks[q].when;
                 if (!strcmp(L->asks[q].name, f[RC_Q]) &&
-                    !strcmp(whens[w >= 0 && w < 3 ? w : 0], f[RC_WHEN]) &&
+                    !strcmp(hol_ask_when_name(w), f[RC_WHEN]) &&
                     !strcmp(L->questions[L->asks[q].first + j].id, f[RC_ITEM]) &&
                     item < HOL_APP_MAX_QUESTIONS)
                     r->answered[i][item] = 1;
