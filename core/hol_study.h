@@ -35,6 +35,12 @@
  *                             item (core/hol_ask.h: likert or choice)
  *     questionnaire NAME ITEM...  before the first condition: a
  *                             questionnaire of those items (question IDs)
+ *     questionnaire NAME before level|condition|study  before the first
+ *                             condition: asked when every level of the
+ *                             conditions starts, a condition's first
+ *                             level, or the participant's first level (the
+ *                             first practice level, if any), before its
+ *                             instructions: `ask NAME before_WHEN` lines
  *     questionnaire NAME after level|condition|study  before the first
  *                             condition: asked after every level of the
  *                             conditions, after each condition's last
