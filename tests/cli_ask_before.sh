@@ -70,6 +70,19 @@ run "report of a partial baseline" 0 "$H" report "$T/l3" --out "$T/rep3"
 grep -q '^P2,[^,]*,1,,study,before,study,ssq,total,,0$' "$T/rep3/scores.csv" && ok ||
     bad "partial baseline: $(cat "$T/rep3/scores.csv")"
 
+# started again (--resume: nothing to resume, no attempt began): the level
+# starts with its baseline asked whole (a new session, the same attempt
+# number); the partial one stays in scores.csv beside the complete one
+run "started again" 0 "$H" play --study "$T/s.study" --participant P2 --input "$T/in" --size 64x48 \
+    --log "$T/l3" --append
+[ "$(grep -c ',P2,1,ssq,before_study,' "$T/l3/answers.csv")" = 20 ] && ok ||
+    bad "baseline again: $(cat "$T/l3/answers.csv")"
+run "report of a baseline again" 0 "$H" report "$T/l3" --out "$T/rep4"
+[ "$(grep -c '^P2,[^,]*,1,base,study,before,study,ssq,total,78.5400,1$' "$T/rep4/scores.csv")" = 1 ] &&
+    ok || bad "baseline again scores: $(cat "$T/rep4/scores.csv")"
+grep -q '^P2,[^,]*,1,,study,before,study,ssq,total,,0$' "$T/rep4/scores.csv" && ok ||
+    bad "the partial baseline dropped: $(cat "$T/rep4/scores.csv")"
+
 # the study file: before level|condition|study only
 printf 'study s\nquestionnaire ssq before session\ncondition a\nlevel a.lvl\n' >"$T/b.study"
 run "before session" 2 "$H" play --study "$T/b.study" --participant 1 --frames 1 --size 64x48 &&

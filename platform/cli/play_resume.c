@@ -273,16 +273,16 @@ static void resume_mark(const hol_level *levels, int n, resume_rows *r)
 }
 
 /* The first unanswered item of level i (0-based over its
- * questionnaires), or -1 when every one is answered. */
+ * questionnaires) but a `before` one's (its level is played: too late
+ * for a baseline), or -1 when every one is answered. */
 static int resume_unanswered(const hol_level *levels, int i, const resume_rows *r)
 {
     const hol_app_level *L = &levels[i].lvl;
-    int items = 0;
-    for (int q = 0; q < L->nasks; q++)
-        items += L->asks[q].n;
-    for (int item = 0; item < items && item < HOL_APP_MAX_QUESTIONS; item++)
-        if (!r->answered[i][item])
-            return item;
+    for (int q = 0, item = 0; q < L->nasks; q++)
+        for (int j = 0; j < L->asks[q].n; j++, item++)
+            if (item < HOL_APP_MAX_QUESTIONS && !r->answered[i][item] &&
+                !hol_ask_before(L->asks[q].when)) /* a baseline is not asked after its level */
+                return item;
     return -1;
 }
 
