@@ -234,5 +234,6 @@ void hol__ask_lines(const hol_app *app, hol_app_hud *h)
     }
     h->ask_item = app->ask_i;
     h->ask_items = a->n;
+    h->ask_before = app->ask_before;
     h->ask_value = q->kind == HOL_APP_CHOICE ? m : q->lo + m * step;
 }

@@ -59,11 +59,13 @@ for want in "P1,$s,1,base,study,before,study,ssq,total,78.5400,1" \
     grep -qx "$want" "$T/rep/scores.csv" && ok || bad "scores.csv: no $want: $(cat "$T/rep/scores.csv")"
 done
 
-# killed in the baseline: its answers so far are a partial questionnaire,
-# in scores.csv with complete 0, never dropped
+# cut in the baseline: its end line says the level was not played (not
+# `done`); its answers so far are a partial questionnaire, in scores.csv
+# with complete 0, never dropped
 head -5 "$T/in" >"$T/in-cut"
 run "play cut in the baseline" 0 "$H" play --study "$T/s.study" --participant P2 \
     --input "$T/in-cut" --size 64x48 --log "$T/l3"
+grep -q '^level a playing steps 0 ' "$T/out" && ok || bad "cut in the baseline: $(cat "$T/out")"
 [ "$(grep -c ',P2,1,ssq,before_study,' "$T/l3/answers.csv")" = 4 ] && ok ||
     bad "cut baseline: $(cat "$T/l3/answers.csv")"
 run "report of a partial baseline" 0 "$H" report "$T/l3" --out "$T/rep3"
