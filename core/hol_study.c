@@ -879,8 +879,10 @@ static hol_err hol__make_at(const hol_study *s, int i, int position, const char 
     hol__compose cp = {buf, 0, sizeof buf, origin, 0, (long)(sizeof origin / sizeof origin[0]),
                        "level file's lines"};
     /* a practice level is the file as it is, unless it carries the
-     * practice's instructions */
+     * practice's instructions or a questionnaire before the study */
     int composed = c >= 0 || hol__instr_of(s, c, i);
+    for (int k = 0; k < s->nasks && !composed; k++)
+        composed = hol__ask_due(s, k, c, i, position);
     long at = c >= 0 ? s->conditions[c].line : s->practice_instructions.line;
     if (composed && hol__compose_text(s, c, i, position, file, len, &cp)) {
         *out_in_study = 1;
