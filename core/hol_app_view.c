@@ -139,6 +139,8 @@ const char *hol_app_end_word(const hol_app_view *v)
         return "timeout";
     if (v->state == HOL_APP_SCREEN && v->hud.screen == HOL_APP_SCREEN_CLOSING)
         return "done";
+    if (v->state == HOL_APP_ASK && v->hud.ask_before)
+        return "playing"; /* a baseline: the level has not begun */
     unsigned s = (unsigned)v->state;
     return s < HOL_APP_STATE_COUNT && word[s] ? word[s] : "playing";
 }
@@ -289,7 +291,7 @@ static void hol__fill_hud(hol_app *app, const hol_input *in)
     h->debug = app->debug;
     h->screen = app->view.state == HOL_APP_SCREEN ? app->screen : 0;
     if (app->view.state != HOL_APP_ASK)
-        h->ask_item = h->ask_items = h->ask_value = 0;
+        h->ask_item = h->ask_items = h->ask_value = h->ask_before = 0;
     h->device = app->device;
     for (int k = 0; k < h->keys_total; k++)
         h->keys_held += (int)(app->keys_held >> k & 1);

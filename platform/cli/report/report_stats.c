@@ -419,7 +419,7 @@ int report_stats_read(report_run *r)
     if (!st && s->partial)
         fprintf(stderr, "holonomy %s: warning: %ld questionnaire(s) answered in part, not "
                         "scored (the first: %s)\n", r->cmd, s->partial, s->partial_first);
-    if (!st && (learning(r, s) || participants(r, s)))
+    if (!st && (s->score_oom || learning(r, s) || participants(r, s)))
         st = CLI_EXIT_FAIL;
     if (st == CLI_EXIT_FAIL)
         cli_error(r->cmd, 0, "out of memory");
@@ -432,7 +432,7 @@ void report_stats_free(report_run *r)
     if (!s)
         return;
     void *own[] = {s->cond, s->att_cond, s->order, s->tpt, s->fix, s->lik, s->slot, s->learn,
-                   s->prow, s->seen, s->pts, s->used, s->nrange, s};
+                   s->prow, s->seen, s->pts, s->used, s->nrange, s->score, s};
     for (size_t i = 0; i < sizeof own / sizeof own[0]; i++)
         free(own[i]);
     r->stats = NULL;
@@ -527,10 +527,48 @@ static int participants_csv(FILE *f, const report_run *r, const void *ctx)
     return 0;
 }
 
+/* scores.csv: a row's key split (session, participant, attempt,
+ * questionnaire, when); `after study` and `before study` under the
+ * condition `study`. */
+static int scores_csv(FILE *f, const report_run *r, const void *ctx)
+{
+    const report_stats *s = r->stats;
+    (void)ctx;
+    fputs("participant,session,attempt,study,condition,placement,scope,instrument,subscale,"
+          "score,complete\n", f);
+    for (long i = 0; i < s->nscore; i++) {
+        const rs_score *o = &s->score[i];
+        char k[sizeof o->key], *part[5] = {k, "", "", "", ""};
+        memcpy(k, o->key, sizeof k);
+        for (int j = 1; j < 5; j++) {
+            char *sep = strchr(part[j - 1], '\x1f');
+            if (!sep)
+                break;
+            *sep = 0;
+            part[j] = sep + 1;
+        }
+        const char *when = part[4], *scope = strchr(when, '_') ? strchr(when, '_') + 1 : when;
+        int before = !strncmp(when, "before_", 7);
+        report_csv(f, part[1], 0);
+        report_csv(f, part[0], 0);
+        report_csv(f, part[2], 0);
+        report_csv(f, s->cond[o->cond].study, 0);
+        report_csv(f, !strcmp(scope, "study") ? "study" : s->cond[o->cond].condition, 0);
+        fprintf(f, "%s,", before ? "before" : "after");
+        report_csv(f, scope, 0);
+        report_csv(f, part[3], 0);
+        report_csv(f, o->sub, 0);
+        if (o->has)
+            fprintf(f, "%.4f", o->v);
+        fprintf(f, ",%d\n", o->complete);
+    }
+    return 0;
+}
+
 int report_stats_write(const report_run *r)
 {
     static const report_file_job jobs[] = {
-        {"stats.csv", stats_csv}, {"learning.csv", learning_csv},
+        {"stats.csv", stats_csv}, {"scores.csv", scores_csv}, {"learning.csv", learning_csv},
         {"participants.csv", participants_csv}};
     return report_write_files(r, jobs, (int)(sizeof jobs / sizeof jobs[0]));
 }
