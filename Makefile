@@ -161,6 +161,15 @@ $(GLSL_H): render/shaders/glsl_c.sh $(wildcard render/shaders/*.glsl)
 $(BUILD)/render/hol_program.o: $(GLSL_H)
 $(BUILD)/render/hol_program.o: override CFLAGS += -I$(BUILD)/gen
 
+# The build's commit and date (platform/cli/build_info.h): a header in the
+# build folder, remade at every make but rewritten only when its text
+# changes, so a new commit recompiles build_info.c alone.
+BUILD_ID_H := $(BUILD)/gen/hol_build_id.h
+$(BUILD_ID_H): FORCE
+	@sh platform/cli/build_id.sh $@
+$(BUILD)/platform/cli/build_info.o: $(BUILD_ID_H)
+$(BUILD)/platform/cli/build_info.o: override CFLAGS += -I$(BUILD)/gen
+
 $(RENDER_LIB): $(RENDER_OBJ)
 	@rm -f $@
 	$(AR) rcs $@ $^
