@@ -58,7 +58,8 @@ static int own_name(const char *n)
     size_t l = strlen(n);
     if (!strcmp(n, ".") || !strcmp(n, "..") || !strcmp(n, "index.html") ||
         !strcmp(n, "attempts.csv") || !strcmp(n, "conditions.csv") ||
-        !strcmp(n, "stats.csv") || !strcmp(n, "learning.csv") || !strcmp(n, "participants.csv"))
+        !strcmp(n, "stats.csv") || !strcmp(n, "learning.csv") || !strcmp(n, "participants.csv") ||
+        !strcmp(n, "codebook.csv") || !strcmp(n, "build.csv"))
         return 1;
     if (n[0] == '.' && strstr(n, ".holonomy-tmp."))
         return 1;
@@ -339,6 +340,8 @@ static int run(report_run *r, report_buf *b)
         st = report_stats_write(r);
     if (!st)
         st = report_write_html(r, &g);
+    if (!st)
+        st = report_write_provenance(r);
     if (!st) {
         remove_stale(r);
         printf("report: %d attempts from %d log folder%s\n", r->natt, r->ndirs,

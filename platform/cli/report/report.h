@@ -102,6 +102,10 @@ typedef int (*report_body)(FILE *f, const report_run *r, const void *ctx);
 int report_write_file(const report_run *r, const char *name, report_body body, const void *ctx);
 
 int report_write_csv(const report_run *r);
+/* build.csv (which build wrote the report: REPORT_BUILD_COLUMNS) and
+ * codebook.csv (every column of the report's files: ../codebook.h). */
+#define REPORT_BUILD_COLUMNS "program,version,commit,build_date"
+int report_write_provenance(const report_run *r);
 int report_write_conditions(const report_run *r, const hol_report_agg *g);
 int report_write_html(const report_run *r, const hol_report_agg *g);
 
