@@ -247,6 +247,11 @@ $(BUILD)/tests/test_font: tests/test_font.c $(FONT_TEST_SRC) render/hol_face_dra
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) -o $@ $< $(FONT_TEST_SRC) $(CORE_LIB) $(LDFLAGS) -lcmocka -lz $(LDLIBS)
 
+# The codebook's table against the writers' headers (platform/cli/codebook.c).
+$(BUILD)/tests/test_codebook: tests/test_codebook.c platform/cli/codebook.c $(wildcard platform/cli/*.h) $(CORE_LIB)
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) -o $@ $< platform/cli/codebook.c $(CORE_LIB) $(LDFLAGS) -lcmocka $(LDLIBS)
+
 # The report's CSV field and HTML text (platform/cli/report/report_escape.c).
 $(BUILD)/tests/test_report_escape: tests/test_report_escape.c platform/cli/report/report_escape.c platform/cli/report/report_escape.h $(CORE_LIB)
 	@mkdir -p $(dir $@)
