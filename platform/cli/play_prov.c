@@ -12,6 +12,7 @@
 
 static char held_rows[64 * 1024], held_order[64 * 1024 + 64 * 66];
 static const hol_level *held_levels;
+static char held_fail[300]; /* play_prov_write's failure, said at the end */
 static int held_n;
 
 void play_prov_hold_order(const char *rows, const hol_level *levels, int n)
@@ -111,7 +112,7 @@ static int prov_order(const hol_sink *k, const char *session)
     return text[0] ? prov_append(k, "order.csv", PLAY_ORDER_COLUMNS, text) : 0;
 }
 
-int play_prov_write(const char *cmd, const hol_sink *log, const hol_rec_meta *meta)
+int play_prov_write(const hol_sink *log, const hol_rec_meta *meta)
 {
     if (!log)
         return 0;
@@ -130,7 +131,20 @@ int play_prov_write(const char *cmd, const hol_sink *log, const hol_rec_meta *me
                        : prov_order(log, meta->session) ? "order.csv"
                        : prov_codebook(log)             ? "codebook.csv"
                                                         : NULL;
-    if (what)
-        cli_error(cmd, 0, "cannot write the log folder's %s (the session goes on)", what);
+    held_fail[0] = 0;
+    if (what) {
+        const char *why = log->why ? log->why(log->user) : NULL;
+        snprintf(held_fail, sizeof held_fail, "cannot write the log folder's %s%s%s", what,
+                 why && why[0] ? ": " : "", why ? why : "");
+    }
     return what != NULL;
+}
+
+int play_prov_failed(const char *cmd)
+{
+    if (!held_fail[0])
+        return 0;
+    cli_error_end(cmd, "%s", held_fail);
+    held_fail[0] = 0;
+    return 1;
 }

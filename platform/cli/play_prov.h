@@ -11,8 +11,12 @@
  *   (PLAY_ORDER_COLUMNS, each prefixed with the session; the header when
  *   new) and writes codebook.csv (codebook.h) whole, as codebook.csv.new
  *   renamed. Every write goes through the folder's sink and is flushed
- *   durably. Returns 0, or 1 after a one-line message (the session goes
- *   on: these files are never a reason to lose a participant's play).
+ *   durably. Returns 0, or 1 when one failed (the session goes on: these
+ *   files are never a reason to lose a participant's play).
+ * - play_prov_failed(cmd), at the session's end (play_session_end, after
+ *   the session's own failure if any): 0 when play_prov_write wrote all,
+ *   else 1 after one line naming the file and why (cli_error_end: not
+ *   said when a failure was said before, the disk full twice).
  * - play_prov_hold_order(rows, levels, n) keeps rows (CSV lines after the
  *   session column and before level_sha256, one per level of levels, each
  *   ending in LF) for the next play_prov_write, which writes and forgets
@@ -37,7 +41,8 @@
 #define PLAY_ORDER_COLUMNS \
     "session,participant,study,position,condition,level,level_file,level_sha256"
 
-int play_prov_write(const char *cmd, const hol_sink *log, const hol_rec_meta *meta);
+int play_prov_write(const hol_sink *log, const hol_rec_meta *meta);
+int play_prov_failed(const char *cmd);
 void play_prov_hold_order(const char *rows, const hol_level *levels, int n);
 void play_prov_order_hash(const hol_level *levels, int n);
 /* Appends ",FIELD" (first: "FIELD") to out (cap bytes); 1 when it does
