@@ -165,6 +165,15 @@ $(GLSL_H): render/shaders/glsl_c.sh $(wildcard render/shaders/*.glsl)
 $(BUILD)/render/hol_program.o: $(GLSL_H)
 $(BUILD)/render/hol_program.o: override CFLAGS += -I$(BUILD)/gen
 
+# The build's commit and date (platform/cli/build_info.h): a header in the
+# build folder, remade at every make but rewritten only when its text
+# changes, so a new commit recompiles build_info.c alone.
+BUILD_ID_H := $(BUILD)/gen/hol_build_id.h
+$(BUILD_ID_H): FORCE
+	@sh platform/cli/build_id.sh $@
+$(BUILD)/platform/cli/build_info.o: $(BUILD_ID_H)
+$(BUILD)/platform/cli/build_info.o: override CFLAGS += -I$(BUILD)/gen
+
 $(RENDER_LIB): $(RENDER_OBJ)
 	@rm -f $@
 	$(AR) rcs $@ $^
@@ -241,6 +250,11 @@ FONT_TEST_SRC := render/hol_face_draw.c render/hol_png.c platform/file/hol_file.
 $(BUILD)/tests/test_font: tests/test_font.c $(FONT_TEST_SRC) render/hol_face_draw.h $(CORE_LIB)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) -o $@ $< $(FONT_TEST_SRC) $(CORE_LIB) $(LDFLAGS) -lcmocka -lz $(LDLIBS)
+
+# The codebook's table against the writers' headers (platform/cli/codebook.c).
+$(BUILD)/tests/test_codebook: tests/test_codebook.c platform/cli/codebook.c $(wildcard platform/cli/*.h) $(CORE_LIB)
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) -o $@ $< platform/cli/codebook.c $(CORE_LIB) $(LDFLAGS) -lcmocka $(LDLIBS)
 
 # The report's CSV field and HTML text (platform/cli/report/report_escape.c).
 $(BUILD)/tests/test_report_escape: tests/test_report_escape.c platform/cli/report/report_escape.c platform/cli/report/report_escape.h $(CORE_LIB)

@@ -115,6 +115,10 @@ int report_write_in(const report_run *r, const char *dir, const char *name, repo
                     const void *ctx);
 
 int report_write_csv(const report_run *r);
+/* build.csv (which build wrote the report: REPORT_BUILD_COLUMNS) and
+ * codebook.csv (every column of the report's files: ../codebook.h). */
+#define REPORT_BUILD_COLUMNS "program,version,commit,build_date"
+int report_write_provenance(const report_run *r);
 int report_write_conditions(const report_run *r, const hol_report_agg *g);
 int report_write_html(const report_run *r, const hol_report_agg *g);
 
