@@ -128,4 +128,5 @@ awk -F, 'BEGIN { OFS = "," } NR == 2 { $7 = sprintf("%.15g", $7 + 1e-6) } { prin
 if Rscript "$HERE/report_referee.R" "$T/w" >"$T/rout" 2>&1; then bad "a wrong main effect passed"; else
     grep -q 'q=5 - 6 mean_diff' "$T/rout" && ok || bad "R's failure: $(cat "$T/rout")"
 fi
+[ -n "${KEEP:-}" ] && cp -r "$T" "$KEEP"
 finish cli_report_r

@@ -130,6 +130,7 @@ typedef struct play_opts {
     int track_hz; /* --track-hz; 0: not given (10) */
     double volume;
     play_env env; /* --session, --meta */
+    char participant_id[HOL_REC_ID_MAX]; /* --participant in its spelling */
     int argc;
     char **argv;
 } play_opts;
@@ -178,9 +179,9 @@ static int play_value(const char *cmd, const char *a, const char *val, play_opts
     if (g)
         return g < 0;
     if (!strcmp(a, "--participant")) {
-        if (play_participant(cmd, val))
+        if (play_participant(cmd, val, o->participant_id))
             return 1;
-        o->participant = val;
+        o->participant = o->participant_id;
     } else if (!strcmp(a, "--seed")) {
         if (!cli_parse_u64(val, &o->seed)) {
             cli_error(cmd, 0, "--seed '%.40s' is not an unsigned 64-bit number", val);
