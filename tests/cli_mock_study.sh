@@ -149,26 +149,26 @@ awk -v plan=$plan3 -v p=3 -v from=4 -f gen.awk >p3b.in
 P="$H play --study mock.study --size 64x48 --log logs"
 order_ok() { # P: the order line on stderr names the Williams row
     want="practice, $(eval echo \$order$1 | sed 's/ /, /g')"
-    grep -q "participant P$1 (number $1, order $1 of 4): $want" err && ok ||
+    grep -q "participant P0$1 (number $1, order $1 of 4): $want" err && ok ||
         bad "P$1's order: $(cat err), want $want"
 }
 
-run "P1" 0 $P --participant P1 --input p1.in --record p1.rec && order_ok 1
+run "P1" 0 $P --participant P01 --input p1.in --record p1.rec && order_ok 1
 cp -r logs p1logs
-run "P2" 0 $P --participant P2 --input p2.in --append && order_ok 2
+run "P2" 0 $P --participant P02 --input p2.in --append && order_ok 2
 # P3 killed 2 s into the fifth level (position 3, level a; attempt NNN,
 # the practice and four levels after the summary's rows): its steps row
 # and the attempt's live file on the disk, then SIGKILL
 nnn=$(printf %03d $(($(wc -l <logs/summary.csv) + 5)))
-$P --participant P3 --input p3a.in --append >/dev/null 2>&1 &
+$P --participant P03 --input p3a.in --append >/dev/null 2>&1 &
 pid=$!
 wait_for 120 -l logs/steps-$nnn.csv.live 2 && wait_for 120 -e logs/attempt-$nnn.live
 kill -9 $pid 2>/dev/null; wait $pid 2>/dev/null
 [ -f logs/attempt-$nnn.live ] && ok || bad "P3 was not killed in attempt $nnn: $(ls logs | grep live)"
-run "P3 resumed" 0 $P --participant P3 --input p3b.in --resume
+run "P3 resumed" 0 $P --participant P03 --input p3b.in --resume
 grep -q "1 unfinished attempt(s) of a killed session finished" err && ok || bad "P3's recovery: $(cat err)"
 grep -q "resumed at q5-hand (position 3), level 6 of 9\$" err && ok || bad "P3's resume: $(cat err)"
-run "P4" 0 $P --participant P4 --input p4.in --append && order_ok 4
+run "P4" 0 $P --participant P04 --input p4.in --append && order_ok 4
 cd logs && ls attempt-*.live *.csv.live 2>/dev/null | grep -q . && bad "live files left: $(ls)"; cd ..
 
 # ---- the summary against the plans --------------------------------------------------------
@@ -176,7 +176,7 @@ cd logs && ls attempt-*.live *.csv.live 2>/dev/null | grep -q . && bad "live fil
 # killed attempt and the restarts included, from the plans and the orders
 expect_rows() {
     for p in 1 2 3 4; do
-        echo "P$p practice 0 p 1 done"
+        echo "P0$p practice 0 p 1 done"
         eval "set -- \$order$p"; eval "pl=\$plan$p"
         s=0
         for c in "$@"; do
@@ -184,12 +184,12 @@ expect_rows() {
                 # the plan's next letter, peeled off in the shell
                 a=${pl%"${pl#?}"}; pl=${pl#?}; k=$((s / 2 + 1))
                 best=1 long=3; [ $l = b ] && best=2 long=4
-                [ $p = 3 ] && [ $s = 4 ] && echo "P3 $c $k $l 1 killed"
+                [ $p = 3 ] && [ $s = 4 ] && echo "P03 $c $k $l 1 killed"
                 case $a in
-                D) echo "P$p $c $k $l $best done" ;;
-                L) echo "P$p $c $k $l $long done" ;;
-                T) echo "P$p $c $k $l 1 timeout" ;;
-                R) echo "P$p $c $k $l 1 restart"; echo "P$p $c $k $l $best done" ;;
+                D) echo "P0$p $c $k $l $best done" ;;
+                L) echo "P0$p $c $k $l $long done" ;;
+                T) echo "P0$p $c $k $l 1 timeout" ;;
+                R) echo "P0$p $c $k $l 1 restart"; echo "P0$p $c $k $l $best done" ;;
                 esac
                 s=$((s + 1))
             done
@@ -220,7 +220,7 @@ for p in 1 2 3 4; do
 done | awk -v items="$items" '{
     n = split(items, it, /[ \n]+/); p = $1
     for (k = 1; k < NF; k++)
-        for (i = 1; i <= n; i++) print "P" p, $(k + 1), it[i], (i * 3 + p * 5 + k * 7 + int(i / 4) * p) % 4
+        for (i = 1; i <= n; i++) print "P0" p, $(k + 1), it[i], (i * 3 + p * 5 + k * 7 + int(i / 4) * p) % 4
 }' >want.ssq
 # the condition of each answer: its attempt's row in the summary
 awk -F, 'FNR == 1 { next } FILENAME ~ /summary/ { cond[$2 "," $5] = $7; next }
@@ -282,10 +282,10 @@ awk '{ k = $1 " " $2; a[k]++; if ($6 == "done") d[k]++ } END { for (k in a) prin
     want.rows | sort >want.part
 awk -F, 'NR > 1 { print $1, $3, $4, $5 }' rep/participants.csv | sort >got.part
 cmp -s want.part got.part && ok || { bad "participants.csv:"; diff want.part got.part | head -10; }
-[ "$(cut -d, -f1 rep/participants.csv | sed 1d | sort -u | tr '\n' ' ')" = "P1 P2 P3 P4 " ] && ok ||
+[ "$(cut -d, -f1 rep/participants.csv | sed 1d | sort -u | tr '\n' ' ')" = "P01 P02 P03 P04 " ] && ok ||
     bad "participants: $(cut -d, -f1 rep/participants.csv | sort -u | tr '\n' ' ')"
-grep -qx 'P3,mock,q5-hand,3,2,2.5000,0.6667,0.6250' rep/participants.csv && ok ||
-    bad "P3's q5-hand: $(grep '^P3,mock,q5-hand' rep/participants.csv)"
+grep -qx 'P03,mock,q5-hand,3,2,2.5000,0.6667,0.6250' rep/participants.csv && ok ||
+    bad "P3's q5-hand: $(grep '^P03,mock,q5-hand' rep/participants.csv)"
 # the participant-level statistics: the killed attempt excluded as killed,
 # and R (when installed) recomputes every figure from trials.csv
 [ "$(awk -F, '$NF != "" && $(NF - 1) == "killed"' rep/trials.csv | wc -l)" = 1 ] && ok ||
@@ -315,7 +315,7 @@ sed -n '/aria-label="learning curves"/,/<\/svg>/p' rep/index.html | grep -o '<po
     bad "conditions' order: $(cut -d, -f2 rep/conditions.csv | tr '\n' ' ')"
 # participant 1 alone (the replay's folder): the SSQ scores are theirs
 run "report P1" 0 "$H" report re1 --out rep1
-grep '^P1 ' ssq.scores | while read -r pp c na oc di tot; do
+grep '^P01 ' ssq.scores | while read -r pp c na oc di tot; do
     printf '%s ssq_nausea 1 %.4f\n%s ssq_oculomotor 1 %.4f\n%s ssq_disorientation 1 %.4f\n%s ssq_total 1 %.4f\n' \
         "$c" "$na" "$c" "$oc" "$c" "$di" "$c" "$tot"
 done | sort >want.p1
