@@ -87,7 +87,9 @@ const char *const cli_play_usage =
     PLAY_ENV_USAGE
     PLAY_TRACK_USAGE
     "  --participant ID  the participant (1..63 letters, digits, '.', '_', '-';\n"
-    "                  not first '-'), in the summary and the recording\n"
+    "                  not first '-'), in the summary and the recording; a\n"
+    "                  number is written P and two digits or more: 2, 002\n"
+    "                  and p2 are P02 (P-02 is refused as ambiguous)\n"
     "  --record FILE   record the session (replay with 'holonomy replay'),\n"
     "                  written as FILE.live and renamed to FILE at the end\n"
     "  --frames N      stop after N frames\n"
