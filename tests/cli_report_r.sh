@@ -11,7 +11,7 @@
 # 1e-9; then a figure made wrong by 1e-6 must fail it. Logs written before
 # ids had one spelling (007 and p7 in one folder, 5): read as P07 and P05,
 # a line for the merge and one for the rename, p7's run a duplicate named
-# in one line; --include-restarted counts the duplicate and restarted
+# in one line; 2, then P02 (the one spelling) a restart; --include-restarted counts the duplicate and restarted
 # trials (R agrees). The R parts are skipped in one line without Rscript
 # (make deps-r).
 . "$(dirname "$0")/lib.sh"
@@ -127,6 +127,15 @@ ex3() { awk -F, -v s="$1" -v a="$2" '$2 == s && $4 == a { print $(NF - 1) }' "$T
     bad "the second spelling's run: '$(ex3 sc7 2)' '$(ex3 sc7b 11)'"
 grep -q '^s2x2,map-q5,steps,2,4,' "$T/r3/participants_stats.csv" && ok ||
     bad "old ids' participants: $(grep '^s2x2,map-q5,steps' "$T/r3/participants_stats.csv")"
+# 2 in old logs, then P02 (its one spelling: a build with the rule starts
+# them again only with --restart-participant): restarted, not a duplicate
+mkdir "$T/l4"
+gen "$T/l4" sd2 2 1
+gen "$T/l4" sd2b P02 1
+run "report of a restart in the new spelling" 0 "$H" report "$T/l4" --out "$T/r4"
+ex4() { awk -F, -v s="$1" -v a="$2" '$2 == s && $4 == a { print $(NF - 1) }' "$T/r4/trials.csv"; }
+[ "$(ex4 sd2 2)" = restarted ] && [ "$(ex4 sd2b 11)" = "" ] && ! grep -q "ran twice" "$T/err" && ok ||
+    bad "2, then P02: '$(ex4 sd2 2)' '$(ex4 sd2b 11)': $(cat "$T/err")"
 # --include-restarted counts the second run (and P03's restarted one)
 run "report --include-restarted" 0 "$H" report "$T/l3" --out "$T/r3i" --include-restarted
 grep -q '^s2x2,map-q5,steps,2,6,' "$T/r3i/participants_stats.csv" && ok ||

@@ -84,10 +84,20 @@ static int same_level(const report_att *t, const report_att *u)
            u->a.position == t->a.position && !strcmp(u->a.level_sha256, t->a.level_sha256);
 }
 
+/* 1 when a later session (its attempt t) of the participant whose earlier
+ * session logged u may have been started as theirs: the same spelling of
+ * the id, or its one spelling, which a build that has the rule logs, and
+ * which such a build starts again only with --restart-participant or
+ * --resume (a session that logged "2", then one that logged "P02"). */
+static int same_person(const report_att *u, const report_att *t)
+{
+    return !t->spelled[0] || !strcmp(report_id_logged(u), report_id_logged(t));
+}
+
 /* Attempt k[j] of a second run of the participant (k[lo, j) before it):
- * in another folder than their first, or in theirs under another spelling
- * of their id (logs made before ids had one: "002" and "p2") replaying a
- * level an earlier session of the other spelling completed. */
+ * in another folder than their first, or in theirs under another old
+ * spelling of their id (logs made before ids had one: "002", then "p2")
+ * replaying a level an earlier session completed. */
 static int second_run(const report_run *r, const ps_key *k, int lo, int j)
 {
     const report_att *t = &r->att[k[j].i];
@@ -95,8 +105,7 @@ static int second_run(const report_run *r, const ps_key *k, int lo, int j)
         return 1;
     for (int l = lo; l < j; l++) {
         const report_att *u = &r->att[k[l].i];
-        if (same_level(t, u) && !strcmp(u->a.end, "done") &&
-            strcmp(report_id_logged(u), report_id_logged(t)))
+        if (same_level(t, u) && !strcmp(u->a.end, "done") && !same_person(u, t))
             return 1;
     }
     return 0;
@@ -136,8 +145,7 @@ static void one_participant(const report_run *r, report_pstats *p, const ps_key 
             p->excl[i] = PX_DUPLICATE;
         for (int l = j + 1; !p->excl[i] && a->study[0] && l < hi; l++) {
             const report_att *b = &r->att[k[l].i];
-            if (same_level(&r->att[i], b) &&
-                !strcmp(report_id_logged(b), report_id_logged(&r->att[i])))
+            if (same_level(&r->att[i], b) && same_person(&r->att[i], b))
                 p->excl[i] = PX_RESTARTED; /* played again by a later session */
         }
         if (p->excl[i] == PX_DUPLICATE && !ndup++)
