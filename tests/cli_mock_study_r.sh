@@ -134,6 +134,8 @@ run "report --include-restarted" 0 "$H" report logs logs2 --out repi --include-r
 grep -q "ran twice" err && ok || bad "--include-restarted: the line: $(cat err)"
 cmp -s rep/trials.csv repi/trials.csv && ok || bad "--include-restarted changed trials.csv"
 cmp -s rep/participants_stats.csv repi/participants_stats.csv && bad "--include-restarted counted nothing" || ok
+grep -q 'duplicate and restarted runs counted (--include-restarted)' repi/index.html &&
+    ! grep -q 'counted (--include-restarted)' rep/index.html && ok || bad "the page does not say what it counts"
 grep -q "^mock2,q5-hud,steps,6,1[0-9]," repi/participants_stats.csv && ok ||
     bad "--include-restarted: $(grep '^mock2,q5-hud,steps' repi/participants_stats.csv)"
 if command -v Rscript >/dev/null 2>&1; then
