@@ -211,6 +211,21 @@ void hol_study_level_path(const hol_study *s, int i, char path[HOL_STUDY_PATH_MA
  * ("-1", "1e3", "0x10": 0, refused, not 1, 3 and 10). */
 uint64_t hol_study_participant_number(const char *id);
 
+/* A participant id in its one spelling (docs/studies.md "Participant
+ * ids"), so that "P02", "002" and "p2" are not three people: an id that is
+ * a number, alone or after one 'P' or 'p', is written 'P' and the number
+ * without leading zeros, at least two digits ("2", "002", "p2", "P002":
+ * "P02"; "P123" stays); any other id stays as given. Writes at most cap
+ * bytes with the NUL into out (out may be id) and returns
+ * HOL_STUDY_ID_SAME (the id is in its spelling), HOL_STUDY_ID_RENAMED (out
+ * differs from id), or HOL_STUDY_ID_AMBIGUOUS when the id is a number in
+ * another spelling that a reader might take for that participant (out:
+ * the spelling it might mean): with its case ignored and its '.', '_' and
+ * '-' left out it is such a number ("P-02", "p_2", "0.2"), or its
+ * spelling is longer than cap - 1 bytes. Pure; O(length). */
+enum { HOL_STUDY_ID_SAME, HOL_STUDY_ID_RENAMED, HOL_STUDY_ID_AMBIGUOUS };
+int hol_study_participant_id(const char *id, char *out, size_t cap);
+
 /* Level i of the study made for a session (hol_level_make): from the level
  * file's text (file, len; NULL for a condition without a file), its set
  * lines as in the contract, named name (NULL: the condition's name),

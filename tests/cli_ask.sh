@@ -30,16 +30,16 @@ f() { printf '%s f=9%s h=1.5,1.6,%s.5,0,0,0,1%s\n' "$2" "${3:+ p=$3}" "$1" "${4:
     f 0 $t "" t=1,0; f 0 $t.5 1; t=$((t + 1)); i=$((i + 1))
   done
   f 0 $t 1; f 0 $((t + 1)); } >"$T/in"            # the closing screen; the end
-run "play" 0 "$H" play --study "$T/s.study" --participant P3 --input "$T/in" --size 64x48 \
+run "play" 0 "$H" play --study "$T/s.study" --participant P03 --input "$T/in" --size 64x48 \
     --log "$T/l" --record "$T/r.rec"
 head -1 "$T/l/answers.csv" | grep -qx 'session,participant,attempt,questionnaire,when,item,kind,value,time' &&
   ok || bad "answers.csv header: $(head -1 "$T/l/answers.csv")"
 cut -d, -f2- "$T/l/answers.csv" | sed -n '2,5p' >"$T/got"
 cat >"$T/want" <<'W'
-P3,1,mine,level,fun,likert,6,2.5000
-P3,1,mine,level,hand,choice,left,1.0000
-P3,1,ssq,study,general_discomfort,likert,0,1.0000
-P3,1,ssq,study,fatigue,likert,0,1.0000
+P03,1,mine,level,fun,likert,6,2.5000
+P03,1,mine,level,hand,choice,left,1.0000
+P03,1,ssq,study,general_discomfort,likert,0,1.0000
+P03,1,ssq,study,fatigue,likert,0,1.0000
 W
 cmp -s "$T/got" "$T/want" && ok || { bad "answers.csv rows:"; diff "$T/want" "$T/got"; }
 [ "$(wc -l <"$T/l/answers.csv")" = 19 ] && ok || bad "answers.csv: $(wc -l <"$T/l/answers.csv") lines, want 19"
@@ -54,7 +54,7 @@ logs_diff "$T/l" "$T/l2" >/dev/null && ok || bad "the replay's logs differ"
 # line says done (it printed bytes past the end of the state names' table:
 # issue 39; tests/hostile/replay-ends-on-question replays one)
 { f 1 0; f 0 0.5; f 0 1 1; f 0 1.5; } >"$T/in-ask"
-run "play ends on a question" 0 "$H" play --study "$T/s.study" --participant P4 \
+run "play ends on a question" 0 "$H" play --study "$T/s.study" --participant P04 \
     --input "$T/in-ask" --size 64x48
 grep -qx 'level a done steps 1 optimum 1 tile N cell 1,0' "$T/out" && ok ||
     bad "play ends on a question: $(cat "$T/out")"

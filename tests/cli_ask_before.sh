@@ -31,11 +31,11 @@ f() { printf '%s f=9%s h=1.5,1.6,%s.5,0,0,0,1\n' "$2" "${3:+ p=$3}" "$1"; }
     f 0 $t 1; t=$((t + 1))
   done
   f 0 25; } >"$T/in"
-run "play" 0 "$H" play --study "$T/s.study" --participant P1 --input "$T/in" --size 64x48 \
+run "play" 0 "$H" play --study "$T/s.study" --participant P01 --input "$T/in" --size 64x48 \
     --log "$T/l" --record "$T/r.rec"
 a="$T/l/answers.csv"
 [ "$(grep -c ',ssq,before_study,' "$a")" = 16 ] && ok || bad "baseline rows: $(cat "$a")"
-sed -n 2p "$a" | cut -d, -f2-8 | grep -qx 'P1,1,ssq,before_study,general_discomfort,likert,1' &&
+sed -n 2p "$a" | cut -d, -f2-8 | grep -qx 'P01,1,ssq,before_study,general_discomfort,likert,1' &&
     ok || bad "first answer: $(sed -n 2p "$a")"
 [ "$(grep -c ',1,tlx,study,[a-z]*,likert,50,' "$a")" = 6 ] && ok || bad "tlx rows: $(cat "$a")"
 # the level's clock starts after the baseline: its attempt starts at 17 s
@@ -50,39 +50,45 @@ logs_diff "$T/l" "$T/l2" >/dev/null && ok || bad "the replay's logs differ"
 # raw TLX 50
 run "report" 0 "$H" report "$T/l" --out "$T/rep"
 s=$(sed -n 2p "$T/l/summary.csv" | cut -d, -f1)
-for want in "P1,$s,1,base,study,before,study,ssq,total,78.5400,1" \
-    "P1,$s,1,base,study,before,study,ssq,nausea,66.7800,1" \
-    "P1,$s,1,base,study,before,study,ssq,oculomotor,53.0600,1" \
-    "P1,$s,1,base,study,before,study,ssq,disorientation,97.4400,1" \
-    "P1,$s,1,base,study,after,study,tlx,raw,50.0000,1" \
-    "P1,$s,1,base,study,after,study,tlx,mental,50.0000,1"; do
+for want in "P01,$s,1,base,study,before,study,ssq,total,78.5400,1" \
+    "P01,$s,1,base,study,before,study,ssq,nausea,66.7800,1" \
+    "P01,$s,1,base,study,before,study,ssq,oculomotor,53.0600,1" \
+    "P01,$s,1,base,study,before,study,ssq,disorientation,97.4400,1" \
+    "P01,$s,1,base,study,after,study,tlx,raw,50.0000,1" \
+    "P01,$s,1,base,study,after,study,tlx,mental,50.0000,1"; do
     grep -qx "$want" "$T/rep/scores.csv" && ok || bad "scores.csv: no $want: $(cat "$T/rep/scores.csv")"
 done
+# stats.csv: the TLX asked `after study` under the condition `study` (not
+# the participant's last condition), listed after the study's conditions
+grep -qx 'base,study,tlx_raw,,1,50.0000,,,' "$T/rep/stats.csv" && ok ||
+    bad "stats.csv: after-study TLX: $(grep tlx_raw "$T/rep/stats.csv")"
+[ "$(grep -c ',tlx_raw,' "$T/rep/stats.csv")" = 1 ] && [ "$(tail -1 "$T/rep/stats.csv" | cut -d, -f2)" = study ] &&
+    ok || bad "stats.csv: $(cat "$T/rep/stats.csv")"
 
 # cut in the baseline: its end line says the level was not played (not
 # `done`); its answers so far are a partial questionnaire, in scores.csv
 # with complete 0, never dropped
 head -5 "$T/in" >"$T/in-cut"
-run "play cut in the baseline" 0 "$H" play --study "$T/s.study" --participant P2 \
+run "play cut in the baseline" 0 "$H" play --study "$T/s.study" --participant P02 \
     --input "$T/in-cut" --size 64x48 --log "$T/l3"
 grep -q '^level a playing steps 0 ' "$T/out" && ok || bad "cut in the baseline: $(cat "$T/out")"
-[ "$(grep -c ',P2,1,ssq,before_study,' "$T/l3/answers.csv")" = 4 ] && ok ||
+[ "$(grep -c ',P02,1,ssq,before_study,' "$T/l3/answers.csv")" = 4 ] && ok ||
     bad "cut baseline: $(cat "$T/l3/answers.csv")"
 run "report of a partial baseline" 0 "$H" report "$T/l3" --out "$T/rep3"
-grep -q '^P2,[^,]*,1,,study,before,study,ssq,total,,0$' "$T/rep3/scores.csv" && ok ||
+grep -q '^P02,[^,]*,1,,study,before,study,ssq,total,,0$' "$T/rep3/scores.csv" && ok ||
     bad "partial baseline: $(cat "$T/rep3/scores.csv")"
 
 # started again (--resume: nothing to resume, no attempt began): the level
 # starts with its baseline asked whole (a new session, the same attempt
 # number); the partial one stays in scores.csv beside the complete one
-run "started again" 0 "$H" play --study "$T/s.study" --participant P2 --input "$T/in" --size 64x48 \
+run "started again" 0 "$H" play --study "$T/s.study" --participant P02 --input "$T/in" --size 64x48 \
     --log "$T/l3" --append
-[ "$(grep -c ',P2,1,ssq,before_study,' "$T/l3/answers.csv")" = 20 ] && ok ||
+[ "$(grep -c ',P02,1,ssq,before_study,' "$T/l3/answers.csv")" = 20 ] && ok ||
     bad "baseline again: $(cat "$T/l3/answers.csv")"
 run "report of a baseline again" 0 "$H" report "$T/l3" --out "$T/rep4"
-[ "$(grep -c '^P2,[^,]*,1,base,study,before,study,ssq,total,78.5400,1$' "$T/rep4/scores.csv")" = 1 ] &&
+[ "$(grep -c '^P02,[^,]*,1,base,study,before,study,ssq,total,78.5400,1$' "$T/rep4/scores.csv")" = 1 ] &&
     ok || bad "baseline again scores: $(cat "$T/rep4/scores.csv")"
-grep -q '^P2,[^,]*,1,,study,before,study,ssq,total,,0$' "$T/rep4/scores.csv" && ok ||
+grep -q '^P02,[^,]*,1,,study,before,study,ssq,total,,0$' "$T/rep4/scores.csv" && ok ||
     bad "the partial baseline dropped: $(cat "$T/rep4/scores.csv")"
 
 # the study file: before level|condition|study only

@@ -124,7 +124,7 @@ done
   for i in mental physical temporal performance effort frustration; do
       echo "$S,P01,1,tlx,study,$i,likert,100,1.0"; done; } >"$T/f"
 taken "answers at the ends" answers.csv
-grep -q '^s1,map,ssq_total,,1,' "$T/o$n/stats.csv" && grep -qx 's1,map,tlx_raw,,1,100.0000,,,' "$T/o$n/stats.csv" &&
+grep -q '^s1,map,ssq_total,,1,' "$T/o$n/stats.csv" && grep -qx 's1,study,tlx_raw,,1,100.0000,,,' "$T/o$n/stats.csv" &&
     ok || bad "answers at the ends: $(cat "$T/o$n/stats.csv")"
 { echo "$PH"; echo "$S,P01,1,flag-a,1.2,start,0.0,359.9,,180.0,,2.5"
   echo "$S,P01,1,flag-a,1.2,start,0,0.1,0.0,-179.9,-0.1,2.5"; } >"$T/f"

@@ -181,10 +181,10 @@ one_run() {
 while [ $kills -lt "$KILLS" ]; do
     p=$((p + 1)); fresh=fresh
     for k in 1 2 3 4 last; do
-        one_run "P$p" "$fresh" "$k"
+        one_run "$(printf P%02d $p)" "$fresh" "$k"
         fresh=
         if [ $st = 2 ] && grep -q "nothing to resume (start them" err; then
-            one_run "P$p" fresh "$k" # killed before a row reached the disk
+            one_run "$(printf P%02d $p)" fresh "$k" # killed before a row reached the disk
         fi
         [ $st = 0 ] && break
         [ $st = 2 ] && grep -q "has finished study" err && break
@@ -205,7 +205,7 @@ awk -F, 'FNR == 1 { next }
          FILENAME ~ /points/ { pt[$1 "," $3] = 1; next }
          $(NF-3) == "done" && pt[$1 "," $5] { n[$2 " " $7]++ }
          END { for (k in n) print k, n[k] }' logs/points.csv logs/summary.csv | sort >got.levels
-for i in $(seq 1 $p); do printf 'P%s one 2\nP%s two 1\n' $i $i; done | sort >want.levels
+for i in $(seq 1 $p); do printf 'P%02d one 2\nP%02d two 1\n' $i $i; done | sort >want.levels
 cmp -s want.levels got.levels && ok || { bad "levels with their pointing answer:"; diff want.levels got.levels | head -5; }
 # the SSQ's 16 items per participant and condition (by the attempt's row),
 # none answered twice for one attempt
@@ -214,7 +214,7 @@ awk -F, 'FNR == 1 { next }
          { k = $1 "," $3 "," $6; if (seen[k]++) print "twice", k
            items[$2 " " cond[$1 "," $3]]++ }
          END { for (k in items) print k, items[k] }' logs/summary.csv logs/answers.csv | sort >got.ssq
-for i in $(seq 1 $p); do printf 'P%s one 16\nP%s two 16\n' $i $i; done | sort >want.ssq
+for i in $(seq 1 $p); do printf 'P%02d one 16\nP%02d two 16\n' $i $i; done | sort >want.ssq
 cmp -s want.ssq got.ssq && ok || { bad "SSQ answers (seed $SEED):"; diff want.ssq got.ssq | head -8; }
 run "report" 0 "$H" report logs --out rep
 # every participant's SSQ scored under both conditions, none left in part

@@ -16,6 +16,7 @@
 # KEEP=DIR keeps the logs and the report in DIR (made; printed) to look at.
 . "$(dirname "$0")/lib.sh"
 REFEREE=$(cd "$(dirname "$0")" && pwd)/report_referee.R
+GEN=$(cd "$(dirname "$0")" && pwd)/mock_study_gen.awk # the participants' --input lines
 
 if ! command -v Xvfb >/dev/null 2>&1; then
     echo "note: no Xvfb here: the mock study is not played"
@@ -63,76 +64,6 @@ set tiling 4 6
 set minimap hand
 S
 
-# One participant's --input lines. plan: a letter per condition level in
-# play order: D the optimal walk (done), L a longer walk (done), T a wrong
-# step then the time limit (3 s), R a wrong step, restart, the optimal
-# walk. Lines 0.25 s apart (a line a second while standing); after a
-# level, the head back in cell (1,1) turned to a yaw of its own, confirm
-# (the pointing), confirm (the end screen). SSQ item i of the condition at
-# position k answered (3i + 5p + 7k + p int(i/4)) mod 4: the middle mark
-# is 1, t= moves one mark down, m= one up, confirm answers. -v kill=K:
-# the lines end 2 s into slot K (a step east, then 30,000 frames 30 us
-# apart, so that the session is killed there); -v from=K starts at slot K
-# (a resumed session: no practice).
-cat >gen.awk <<'A'
-function line(extra, c, r) {
-    printf "%.2f f=9%s h=%.1f,1.6,%.1f,%s\n", t, extra, c + 0.5, r + 0.5, q
-    t += 0.25
-}
-function quat(y,   h) { h = y * 3.14159265358979 / 360; return sprintf("0,%.7f,0,%.7f", sin(h), cos(h)) }
-function level(w, c0, r0, y, point,   i, c, r, d, L) {
-    L = t; c = c0; r = r0; q = quat(0)
-    line("", c, r)
-    for (i = 1; i <= length(w); i++) {
-        d = substr(w, i, 1)
-        if (d == "N") r--; if (d == "S") r++; if (d == "E") c++; if (d == "W") c--
-        line("", c, r)
-    }
-    if (t < L + 1) t = L + 1
-    while (t <= L + 3.01) { line("", c, r); t += 0.75 }
-    t = L + 3.25; q = quat(y)
-    line("", 1, 1)
-    if (point) { line(" p=1", 1, 1); line("", 1, 1) }  # the pointing's confirm
-    line(" p=1", 1, 1)                                  # the end screen's
-}
-function screen() { q = quat(0); line("", 1, 1); line(" p=1", 1, 1) }
-function ssq(k,   i, v) {
-    q = quat(0)
-    for (i = 1; i <= 16; i++) {
-        v = (i * 3 + p * 5 + k * 7 + int(i / 4) * p) % 4
-        if (v == 0) line(" t=1,0", 1, 1)
-        if (v >= 2) line(" m=1,0", 1, 1)
-        if (v == 3) { line("", 1, 1); line(" m=1,0", 1, 1) }
-        line(" p=1", 1, 1)
-    }
-}
-BEGIN {
-    t = 0; if (kill == "") kill = -1; if (from == "") from = 0
-    if (from == 0) { screen(); q = quat(0); level("N", 1, 1, 0, 0) }
-    for (s = from; s < 8; s++) {
-        if (s % 2 == 0) screen()            # the condition's instructions
-        a = substr(plan, s + 1, 1); y = (37 * s + 61 * p) % 360
-        if (s == kill) {
-            q = quat(0); line("", 1, 1); line("", 2, 1); t += 0.5; line("", 2, 1)
-            t += 0.75; line("", 2, 1)
-            for (i = 1; i <= 30000; i++)
-                printf "%.5f f=9 h=2.5,1.6,1.5,%s\n", t - 0.25 + i * 0.00003, q
-            exit
-        }
-        best = s % 2 ? "WS" : "N"; long = s % 2 ? "EWWS" : "EWN"
-        if (a == "D") level(best, 1, 1, y, 1)
-        if (a == "L") level(long, 1, 1, y, 1)
-        if (a == "T") level("E", 1, 1, y, 1)
-        if (a == "R") {
-            q = quat(0); line("", 1, 1); line("", 2, 1); line(" p=20", 2, 1)
-            level(best, 2, 1, y, 1)
-        }
-        if (s % 2 == 1) ssq(int(s / 2) + 1)
-    }
-    screen(); line("", 1, 1)                # the closing screen
-}
-A
-
 # the plans (slots 0..7: two levels a condition, in the participant's
 # order) and the Williams orders of the four conditions (1 q5-hud,
 # 2 q5-hand, 3 q6-hud, 4 q6-hand: rows 1, 2, 4, 3 and +1, +2, +3)
@@ -142,33 +73,33 @@ order2='q5-hand q6-hud q5-hud q6-hand'
 order3='q6-hud q6-hand q5-hand q5-hud'
 order4='q6-hand q5-hud q6-hud q5-hand'
 for p in 1 2 4; do
-    awk -v plan="$(eval echo \$plan$p)" -v p=$p -f gen.awk >p$p.in
+    awk -v plan="$(eval echo \$plan$p)" -v p=$p -f "$GEN" >p$p.in
 done
-awk -v plan=$plan3 -v p=3 -v kill=4 -f gen.awk >p3a.in
-awk -v plan=$plan3 -v p=3 -v from=4 -f gen.awk >p3b.in
+awk -v plan=$plan3 -v p=3 -v kill=4 -f "$GEN" >p3a.in
+awk -v plan=$plan3 -v p=3 -v from=4 -f "$GEN" >p3b.in
 P="$H play --study mock.study --size 64x48 --log logs"
 order_ok() { # P: the order line on stderr names the Williams row
     want="practice, $(eval echo \$order$1 | sed 's/ /, /g')"
-    grep -q "participant P$1 (number $1, order $1 of 4): $want" err && ok ||
+    grep -q "participant P0$1 (number $1, order $1 of 4): $want" err && ok ||
         bad "P$1's order: $(cat err), want $want"
 }
 
-run "P1" 0 $P --participant P1 --input p1.in --record p1.rec && order_ok 1
+run "P1" 0 $P --participant P01 --input p1.in --record p1.rec && order_ok 1
 cp -r logs p1logs
-run "P2" 0 $P --participant P2 --input p2.in --append && order_ok 2
+run "P2" 0 $P --participant P02 --input p2.in --append && order_ok 2
 # P3 killed 2 s into the fifth level (position 3, level a; attempt NNN,
 # the practice and four levels after the summary's rows): its steps row
 # and the attempt's live file on the disk, then SIGKILL
 nnn=$(printf %03d $(($(wc -l <logs/summary.csv) + 5)))
-$P --participant P3 --input p3a.in --append >/dev/null 2>&1 &
+$P --participant P03 --input p3a.in --append >/dev/null 2>&1 &
 pid=$!
 wait_for 120 -l logs/steps-$nnn.csv.live 2 && wait_for 120 -e logs/attempt-$nnn.live
 kill -9 $pid 2>/dev/null; wait $pid 2>/dev/null
 [ -f logs/attempt-$nnn.live ] && ok || bad "P3 was not killed in attempt $nnn: $(ls logs | grep live)"
-run "P3 resumed" 0 $P --participant P3 --input p3b.in --resume
+run "P3 resumed" 0 $P --participant P03 --input p3b.in --resume
 grep -q "1 unfinished attempt(s) of a killed session finished" err && ok || bad "P3's recovery: $(cat err)"
 grep -q "resumed at q5-hand (position 3), level 6 of 9\$" err && ok || bad "P3's resume: $(cat err)"
-run "P4" 0 $P --participant P4 --input p4.in --append && order_ok 4
+run "P4" 0 $P --participant P04 --input p4.in --append && order_ok 4
 cd logs && ls attempt-*.live *.csv.live 2>/dev/null | grep -q . && bad "live files left: $(ls)"; cd ..
 
 # ---- the summary against the plans --------------------------------------------------------
@@ -176,7 +107,7 @@ cd logs && ls attempt-*.live *.csv.live 2>/dev/null | grep -q . && bad "live fil
 # killed attempt and the restarts included, from the plans and the orders
 expect_rows() {
     for p in 1 2 3 4; do
-        echo "P$p practice 0 p 1 done"
+        echo "P0$p practice 0 p 1 done"
         eval "set -- \$order$p"; eval "pl=\$plan$p"
         s=0
         for c in "$@"; do
@@ -184,12 +115,12 @@ expect_rows() {
                 # the plan's next letter, peeled off in the shell
                 a=${pl%"${pl#?}"}; pl=${pl#?}; k=$((s / 2 + 1))
                 best=1 long=3; [ $l = b ] && best=2 long=4
-                [ $p = 3 ] && [ $s = 4 ] && echo "P3 $c $k $l 1 killed"
+                [ $p = 3 ] && [ $s = 4 ] && echo "P03 $c $k $l 1 killed"
                 case $a in
-                D) echo "P$p $c $k $l $best done" ;;
-                L) echo "P$p $c $k $l $long done" ;;
-                T) echo "P$p $c $k $l 1 timeout" ;;
-                R) echo "P$p $c $k $l 1 restart"; echo "P$p $c $k $l $best done" ;;
+                D) echo "P0$p $c $k $l $best done" ;;
+                L) echo "P0$p $c $k $l $long done" ;;
+                T) echo "P0$p $c $k $l 1 timeout" ;;
+                R) echo "P0$p $c $k $l 1 restart"; echo "P0$p $c $k $l $best done" ;;
                 esac
                 s=$((s + 1))
             done
@@ -220,7 +151,7 @@ for p in 1 2 3 4; do
 done | awk -v items="$items" '{
     n = split(items, it, /[ \n]+/); p = $1
     for (k = 1; k < NF; k++)
-        for (i = 1; i <= n; i++) print "P" p, $(k + 1), it[i], (i * 3 + p * 5 + k * 7 + int(i / 4) * p) % 4
+        for (i = 1; i <= n; i++) print "P0" p, $(k + 1), it[i], (i * 3 + p * 5 + k * 7 + int(i / 4) * p) % 4
 }' >want.ssq
 # the condition of each answer: its attempt's row in the summary
 awk -F, 'FNR == 1 { next } FILENAME ~ /summary/ { cond[$2 "," $5] = $7; next }
@@ -282,10 +213,10 @@ awk '{ k = $1 " " $2; a[k]++; if ($6 == "done") d[k]++ } END { for (k in a) prin
     want.rows | sort >want.part
 awk -F, 'NR > 1 { print $1, $3, $4, $5 }' rep/participants.csv | sort >got.part
 cmp -s want.part got.part && ok || { bad "participants.csv:"; diff want.part got.part | head -10; }
-[ "$(cut -d, -f1 rep/participants.csv | sed 1d | sort -u | tr '\n' ' ')" = "P1 P2 P3 P4 " ] && ok ||
+[ "$(cut -d, -f1 rep/participants.csv | sed 1d | sort -u | tr '\n' ' ')" = "P01 P02 P03 P04 " ] && ok ||
     bad "participants: $(cut -d, -f1 rep/participants.csv | sort -u | tr '\n' ' ')"
-grep -qx 'P3,mock,q5-hand,3,2,2.5000,0.6667,0.6250' rep/participants.csv && ok ||
-    bad "P3's q5-hand: $(grep '^P3,mock,q5-hand' rep/participants.csv)"
+grep -qx 'P03,mock,q5-hand,3,2,2.5000,0.6667,0.6250' rep/participants.csv && ok ||
+    bad "P3's q5-hand: $(grep '^P03,mock,q5-hand' rep/participants.csv)"
 # the participant-level statistics: the killed attempt excluded as killed,
 # and R (when installed) recomputes every figure from trials.csv
 [ "$(awk -F, '$NF != "" && $(NF - 1) == "killed"' rep/trials.csv | wc -l)" = 1 ] && ok ||
@@ -315,7 +246,7 @@ sed -n '/aria-label="learning curves"/,/<\/svg>/p' rep/index.html | grep -o '<po
     bad "conditions' order: $(cut -d, -f2 rep/conditions.csv | tr '\n' ' ')"
 # participant 1 alone (the replay's folder): the SSQ scores are theirs
 run "report P1" 0 "$H" report re1 --out rep1
-grep '^P1 ' ssq.scores | while read -r pp c na oc di tot; do
+grep '^P01 ' ssq.scores | while read -r pp c na oc di tot; do
     printf '%s ssq_nausea 1 %.4f\n%s ssq_oculomotor 1 %.4f\n%s ssq_disorientation 1 %.4f\n%s ssq_total 1 %.4f\n' \
         "$c" "$na" "$c" "$oc" "$c" "$di" "$c" "$tot"
 done | sort >want.p1

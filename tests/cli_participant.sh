@@ -4,7 +4,9 @@
 # log folder whose summary.csv has rows of that study and participant are
 # refused with one line (exit 2) before anything opens, unless
 # --restart-participant; other participants, other studies and a folder
-# without a summary pass the check. Runs without a display (the refusal
+# without a summary pass the check; ids in their one spelling (1, 001, p1
+# are P01, also against logs that spell it 3 for P03; P-01 is refused as
+# ambiguous). Runs without a display (the refusal
 # comes before the window; the other cases get past it and stop there).
 . "$(dirname "$0")/lib.sh"
 unset DISPLAY
@@ -36,6 +38,29 @@ done
 if grep -q "already has data" "$T/err"; then bad "another study: refused"; else ok; fi
 "$H" play --study "$T/s/four.study" --participant P01 --log "$T/empty" --append --frames 1 >"$T/out" 2>"$T/err"
 if grep -q "already has data" "$T/err"; then bad "no summary: refused"; else ok; fi
+# ids in their one spelling (issue 35): 1, 001 and p1 are P01, who has data
+for id in 1 001 p1 P001; do
+  run "$id has data" 2 "$H" play --study "$T/s/four.study" --participant $id --log "$T/logs" --append
+  one_line "$id has data" "participant P01 already has data for study four"
+done
+# logs written before the rule name P03 "3": P03 and p3 have data there
+echo 'S0,3,2026-01-01T00:00:00Z,1.0,3,four,hud,1,flag,00,flag,5,15,"4,5",3x3,1,0.0000,8,8,9.5000,done' \
+  >>"$T/logs/summary.csv"
+run "3 logged, P03 has data" 2 "$H" play --study "$T/s/four.study" --participant p3 --log "$T/logs" --append
+one_line "3 logged, P03 has data" "participant P03 already has data for study four in '.*logs' (1 attempt)"
+# a number spelled otherwise is refused, naming its spelling
+for id in P-01 p_1 0.1 P.0.1; do
+  run "ambiguous $id" 2 "$H" play --study "$T/s/four.study" --participant $id --log "$T/logs" --append
+  one_line "ambiguous $id" "--participant '$id' is ambiguous: participant 1 is written P01 (1 and p1 are read as P01)"
+  run "xr: ambiguous $id" 2 "$H" xr --participant $id --frames 1
+  one_line "xr: ambiguous $id" "--participant '$id' is ambiguous"
+done
+# other ids stay as given
+for args in "--participant s2-p031" "--participant Pam" ; do
+  # shellcheck disable=SC2086
+  "$H" play --study "$T/s/four.study" $args --log "$T/logs" --append --frames 1 >"$T/out" 2>"$T/err"
+  if grep -q "ambiguous\|already has data" "$T/err"; then bad "$args: refused"; else ok; fi
+done
 # the option's own rules
 run "restart without study" 2 "$H" play --restart-participant --log "$T/logs" --append
 one_line "restart without study" "--restart-participant goes with --study"

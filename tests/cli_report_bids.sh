@@ -108,7 +108,7 @@ run "report --out alone" 0 "$H" report logs --out rep0 && diff -r rep rep0 >/dev
 run "report --bids alone" 0 "$H" report logs --bids ds2 && diff -r ds ds2 >/dev/null && ok ||
     bad "--bids alone differs from --bids with --out"
 out=$(bids_rules ds) && ok || bad "the export breaks $out"
-[ "$(cat ds/participants.tsv)" = "$(printf 'participant_id\tholonomy_id\nsub-P01\tP-01\nsub-7\t7')" ] &&
+[ "$(cat ds/participants.tsv)" = "$(printf 'participant_id\tholonomy_id\nsub-P01\tP-01\nsub-P07\tP07')" ] &&
     ok || bad "participants.tsv: $(cat ds/participants.tsv)"
 m=$(ls ds/sub-P01/ses-*/motion/*tracksys-room_run-1_motion.tsv)
 t=$(ls ds/sub-P01/ses-*/motion/*tracksys-tile_run-1_motion.tsv)

@@ -8,7 +8,12 @@
 # base R only) recomputes the participants' means, both intervals, the
 # paired differences, the main effects and d_z from trials.csv and checks
 # every figure of participants_stats.csv, paired.csv and effects.csv to
-# 1e-9; then a figure made wrong by 1e-6 must fail it. Skipped in one line without Rscript (make deps-r).
+# 1e-9; then a figure made wrong by 1e-6 must fail it. Logs written before
+# ids had one spelling (007 and p7 in one folder, 5): read as P07 and P05,
+# a line for the merge and one for the rename, p7's run a duplicate named
+# in one line; 2, then P02 (the one spelling) a restart; --include-restarted counts the duplicate and restarted
+# trials (R agrees). The R parts are skipped in one line without Rscript
+# (make deps-r).
 . "$(dirname "$0")/lib.sh"
 HERE=$(dirname "$0")
 
@@ -100,6 +105,49 @@ grep -q '^s2x2,steps,map-q5,map-q6,q,6,' "$T/r/paired.csv" && grep -q '^s2x2,ste
     bad "paired.csv differ: $(sed -n 2,4p "$T/r/paired.csv")"
 grep -q 'Participant-level statistics' "$T/r/index.html" && grep -q 'within-subjects' "$T/r/index.html" &&
     grep -q 'Paired differences' "$T/r/index.html" && ok || bad "the page has no participant-level section"
+
+# ---- ids of logs written before ids had one spelling ----------------------------------------
+# P07 logged as 007, then run again in the same folder as p7 (no
+# --restart-participant: the app took them for two people); 5 alone
+mkdir "$T/l3"
+gen "$T/l3" sc7 007 2
+gen "$T/l3" sc7b p7 2
+gen "$T/l3" sc5 5 0
+run "report of old ids" 0 "$H" report "$T/l3" --out "$T/r3"
+grep -qx "holonomy report: participant P07 is spelled '007', 'p7' in the logs: read as one participant, P07" \
+    "$T/err" && ok || bad "the merge's line: $(cat "$T/err")"
+grep -qx "holonomy report: 1 participant id(s) read in their one spelling: '5' as P05" "$T/err" && ok ||
+    bad "the rename's line: $(cat "$T/err")"
+grep -q "^holonomy report: participant P07 of study s2x2 ran twice ('$T/l3' session sc7 as 007, then '$T/l3' session sc7b as p7): 8 trial(s)" \
+    "$T/err" && ok || bad "the duplicate's line: $(cat "$T/err")"
+[ "$(sed 1d "$T/r3/trials.csv" | cut -d, -f1 | sort -u | tr '\n' ' ')" = "P05 P07 " ] && ok ||
+    bad "ids in trials.csv: $(cut -d, -f1 "$T/r3/trials.csv" | sort -u | tr '\n' ' ')"
+ex3() { awk -F, -v s="$1" -v a="$2" '$2 == s && $4 == a { print $(NF - 1) }' "$T/r3/trials.csv"; }
+[ "$(ex3 sc7 2)" = "" ] && [ "$(ex3 sc7b 11)" = duplicate ] && ok ||
+    bad "the second spelling's run: '$(ex3 sc7 2)' '$(ex3 sc7b 11)'"
+grep -q '^s2x2,map-q5,steps,2,4,' "$T/r3/participants_stats.csv" && ok ||
+    bad "old ids' participants: $(grep '^s2x2,map-q5,steps' "$T/r3/participants_stats.csv")"
+# 2 in old logs, then P02 (its one spelling: a build with the rule starts
+# them again only with --restart-participant): restarted, not a duplicate
+mkdir "$T/l4"
+gen "$T/l4" sd2 2 1
+gen "$T/l4" sd2b P02 1
+run "report of a restart in the new spelling" 0 "$H" report "$T/l4" --out "$T/r4"
+ex4() { awk -F, -v s="$1" -v a="$2" '$2 == s && $4 == a { print $(NF - 1) }' "$T/r4/trials.csv"; }
+[ "$(ex4 sd2 2)" = restarted ] && [ "$(ex4 sd2b 11)" = "" ] && ! grep -q "ran twice" "$T/err" && ok ||
+    bad "2, then P02: '$(ex4 sd2 2)' '$(ex4 sd2b 11)': $(cat "$T/err")"
+# --include-restarted counts the second run (and P03's restarted one)
+run "report --include-restarted" 0 "$H" report "$T/l3" --out "$T/r3i" --include-restarted
+grep -q '^s2x2,map-q5,steps,2,6,' "$T/r3i/participants_stats.csv" && ok ||
+    bad "--include-restarted: $(grep '^s2x2,map-q5,steps' "$T/r3i/participants_stats.csv")"
+run "report l1 --include-restarted" 0 "$H" report "$T/l1" --out "$T/r1i" --include-restarted
+grep -q '^s2x2,map-q5,steps,5,11,' "$T/r1i/participants_stats.csv" && ok ||
+    bad "--include-restarted, P03: $(grep '^s2x2,map-q5,steps' "$T/r1i/participants_stats.csv")"
+if command -v Rscript >/dev/null 2>&1; then
+    Rscript "$HERE/report_referee.R" "$T/r3" >"$T/rout" 2>&1 && ok || bad "R on old ids: $(cat "$T/rout")"
+    Rscript "$HERE/report_referee.R" "$T/r1i" --include-restarted >"$T/rout" 2>&1 && ok ||
+        bad "R under --include-restarted: $(cat "$T/rout")"
+fi
 
 if ! command -v Rscript >/dev/null 2>&1; then
     echo "cli_report_r: Rscript not found (make deps-r): R referee skipped"

@@ -11,8 +11,10 @@
 # each pair of a factor's levels (main effects: a level's value the mean
 # of its conditions) the same. Every figure of participants_stats.csv,
 # paired.csv and effects.csv must agree to 1e-9, every row R expects must
-# be there and no other. Usage: Rscript report_referee.R REPORT_DIR. Exit 0 when all
-# agree ("R referee: N figures agree"), else 1 naming each disagreement.
+# be there and no other. Usage: Rscript report_referee.R REPORT_DIR
+# [--include-restarted] (the report's option: trials excluded as duplicate
+# or restarted count too). Exit 0 when all agree ("R referee: N figures
+# agree"), else 1 naming each disagreement.
 args <- commandArgs(trailingOnly = TRUE)
 dir <- args[1]
 rd <- function(f) read.csv(file.path(dir, f), stringsAsFactors = FALSE, na.strings = "",
@@ -30,7 +32,8 @@ ef <- read.csv(file.path(dir, "effects.csv"), stringsAsFactors = FALSE, na.strin
 tr$study[is.na(tr$study)] <- ""
 ps$study[is.na(ps$study)] <- ""
 pd$study[is.na(pd$study)] <- ""
-inc <- tr[is.na(tr$excluded), ]
+counted <- if ("--include-restarted" %in% args) c("duplicate", "restarted") else character(0)
+inc <- tr[is.na(tr$excluded) | tr$excluded %in% counted, ]
 measures <- c("steps", "efficiency", "time", "error_true", "error_flat")
 tol <- 1e-9
 checked <- 0

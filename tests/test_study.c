@@ -169,6 +169,53 @@ static void test_participants(void **state)
     assert_int_equal(hol_study_participant_number("P99999999999999999999999"), 0);
 }
 
+/* Participant ids in their one spelling (issue 35): P02, 002 and p2 are
+ * one participant; a number spelled otherwise is refused, not guessed. */
+static void test_participant_ids(void **state)
+{
+    (void)state;
+    static const struct {
+        const char *id, *want;
+        int kind;
+    } cases[] = {
+        {"P02", "P02", HOL_STUDY_ID_SAME},      {"002", "P02", HOL_STUDY_ID_RENAMED},
+        {"p2", "P02", HOL_STUDY_ID_RENAMED},    {"2", "P02", HOL_STUDY_ID_RENAMED},
+        {"P2", "P02", HOL_STUDY_ID_RENAMED},    {"P0002", "P02", HOL_STUDY_ID_RENAMED},
+        {"P123", "P123", HOL_STUDY_ID_SAME},    {"0123", "P123", HOL_STUDY_ID_RENAMED},
+        {"P10", "P10", HOL_STUDY_ID_SAME},      {"P0", "P00", HOL_STUDY_ID_RENAMED},
+        {"s2-p031", "s2-p031", HOL_STUDY_ID_SAME}, {"Pam", "Pam", HOL_STUDY_ID_SAME},
+        {"KM07", "KM07", HOL_STUDY_ID_SAME},    {"", "", HOL_STUDY_ID_SAME},
+        {"P-02", "P02", HOL_STUDY_ID_AMBIGUOUS}, {"p_2", "P02", HOL_STUDY_ID_AMBIGUOUS},
+        {"0.2", "P02", HOL_STUDY_ID_AMBIGUOUS}, {"P.1.2", "P12", HOL_STUDY_ID_AMBIGUOUS},
+        {"-A1", "-A1", HOL_STUDY_ID_SAME},      {"PP2", "PP2", HOL_STUDY_ID_SAME},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        char out[HOL_REC_ID_MAX];
+        assert_int_equal(hol_study_participant_id(cases[i].id, out, sizeof out), cases[i].kind);
+        assert_string_equal(out, cases[i].want);
+        /* its spelling is a fixed point, and the number is kept */
+        char again[HOL_REC_ID_MAX];
+        if (cases[i].kind != HOL_STUDY_ID_AMBIGUOUS) {
+            assert_int_equal(hol_study_participant_id(out, again, sizeof again),
+                             HOL_STUDY_ID_SAME);
+            assert_int_equal(hol_study_participant_number(out),
+                             hol_study_participant_number(cases[i].id));
+        }
+    }
+    /* in place, and a spelling that does not fit is no spelling */
+    char buf[HOL_REC_ID_MAX] = "p7";
+    assert_int_equal(hol_study_participant_id(buf, buf, sizeof buf), HOL_STUDY_ID_RENAMED);
+    assert_string_equal(buf, "P07");
+    char small[3];
+    assert_int_equal(hol_study_participant_id("7", small, sizeof small), HOL_STUDY_ID_AMBIGUOUS);
+    char digits[HOL_REC_ID_MAX];
+    memset(digits, '9', 63);
+    digits[63] = 0;
+    char out[HOL_REC_ID_MAX];
+    assert_int_equal(hol_study_participant_id(digits, out, sizeof out), HOL_STUDY_ID_AMBIGUOUS);
+    assert_string_equal(out, digits);
+}
+
 static const char full[] =
     "# a study of the minimap's place\n"
     "study minimap-place\n"
@@ -535,7 +582,8 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_williams),   cmocka_unit_test(test_other_rules),
-        cmocka_unit_test(test_participants), cmocka_unit_test(test_grammar),
+        cmocka_unit_test(test_participants), cmocka_unit_test(test_participant_ids),
+        cmocka_unit_test(test_grammar),
         cmocka_unit_test(test_refusals),   cmocka_unit_test(test_levels),
         cmocka_unit_test(test_geometry_conditions),
         cmocka_unit_test(test_lighting_conditions),

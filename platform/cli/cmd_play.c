@@ -87,7 +87,9 @@ const char *const cli_play_usage =
     PLAY_ENV_USAGE
     PLAY_TRACK_USAGE
     "  --participant ID  the participant (1..63 letters, digits, '.', '_', '-';\n"
-    "                  not first '-'), in the summary and the recording\n"
+    "                  not first '-'), in the summary and the recording; a\n"
+    "                  number is written P and two digits or more: 2, 002\n"
+    "                  and p2 are P02 (P-02 is refused as ambiguous)\n"
     "  --record FILE   record the session (replay with 'holonomy replay'),\n"
     "                  written as FILE.live and renamed to FILE at the end\n"
     "  --frames N      stop after N frames\n"
@@ -130,6 +132,7 @@ typedef struct play_opts {
     int track_hz; /* --track-hz; 0: not given (10) */
     double volume;
     play_env env; /* --session, --meta */
+    char participant_id[HOL_REC_ID_MAX]; /* --participant in its spelling */
     int argc;
     char **argv;
 } play_opts;
@@ -178,9 +181,9 @@ static int play_value(const char *cmd, const char *a, const char *val, play_opts
     if (g)
         return g < 0;
     if (!strcmp(a, "--participant")) {
-        if (play_participant(cmd, val))
+        if (play_participant(cmd, val, o->participant_id))
             return 1;
-        o->participant = val;
+        o->participant = o->participant_id;
     } else if (!strcmp(a, "--seed")) {
         if (!cli_parse_u64(val, &o->seed)) {
             cli_error(cmd, 0, "--seed '%.40s' is not an unsigned 64-bit number", val);

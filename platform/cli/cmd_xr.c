@@ -95,6 +95,7 @@ typedef struct xr_opts {
     const char *level_path, *log_dir, *rec, *input_path, *check_dir, *participant, *study;
     long frames, check_frame;
     int append, restart_participant, resume;
+    char participant_id[HOL_REC_ID_MAX]; /* --participant in its spelling */
     int space; /* 0 or HOL_XR_SPACE_LOCAL (hol_xr_desc.space) */
     int panel; /* HOL_XR_PANEL_QUAD (0) or _SCENE (hol_xr_desc.panel) */
     play_geometry geo;
@@ -203,8 +204,8 @@ static int xr_options(const char *cmd, int argc, char **argv, xr_opts *o)
                 cli_error(cmd, 0, "--space '%.40s' is neither stage nor local", val);
             o->space = !strcmp(val, "local") ? HOL_XR_SPACE_LOCAL : 0;
         }
-        else if (!(bad = play_participant(cmd, val)))
-            o->participant = val;
+        else if (!(bad = play_participant(cmd, val, o->participant_id)))
+            o->participant = o->participant_id;
     }
     if (bad || r < 0)
         return CLI_EXIT_USAGE;

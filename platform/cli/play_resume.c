@@ -100,7 +100,7 @@ static int resume_row(void *ctx, const hol_report_attempt *a, long line)
 {
     resume_ctx *c = ctx;
     (void)line;
-    if (!strcmp(a->study, c->study) && !strcmp(a->participant, c->participant))
+    if (!strcmp(a->study, c->study) && play_study_same_participant(a->participant, c->participant))
         resume_add(c->r, c->levels, c->n, a, c->is_summary);
     return 0;
 }
@@ -238,8 +238,9 @@ static int resume_answers(const char *cmd, const char *dir, int answers, const c
             ok &= col[c] >= 0 && col[c] < nf;
             g[c] = ok ? f[col[c]] : "";
         }
-        int k = ok && !strcmp(g[RC_PART], participant) ? resume_find(r, g[RC_SESSION], g[RC_ATTEMPT])
-                                                      : -1;
+        int k = ok && play_study_same_participant(g[RC_PART], participant)
+                    ? resume_find(r, g[RC_SESSION], g[RC_ATTEMPT])
+                    : -1;
         if (k >= 0 && !answers)
             r->d[k].pointed = 1;
         else if (k >= 0)

@@ -17,6 +17,7 @@
 
 #include "../../core/hol_campaign.h"
 #include "../../core/hol_input_io.h"
+#include "../../core/hol_study.h"
 #include "../../core/hol_text.h"
 #include "../file/hol_file.h"
 #include "cli.h"
@@ -375,10 +376,20 @@ void play_out_close(play_out *po)
     po->study_text = NULL;
 }
 
-int play_participant(const char *cmd, const char *id)
+int play_participant(const char *cmd, const char *id, char out[HOL_REC_ID_MAX])
 {
-    if (hol_rec_id_ok(id) && id[0] != '-')
+    char spelled[HOL_REC_ID_MAX];
+    int ok = hol_rec_id_ok(id) && id[0] != '-';
+    if (ok && hol_study_participant_id(id, spelled, sizeof spelled) == HOL_STUDY_ID_AMBIGUOUS) {
+        const char *num = spelled + 1 + (spelled[1] == '0' && spelled[2]);
+        cli_error(cmd, 0, "--participant '%.40s' is ambiguous: participant %s is written %s "
+                  "(%s and p%s are read as %s)", id, num, spelled, num, num, spelled);
+        return 1;
+    }
+    if (ok) {
+        memcpy(out, spelled, sizeof spelled);
         return 0;
+    }
     if (id[0] == '-')
         cli_error(cmd, 0, "--participant '%.40s' starts with '-' (a spreadsheet reads it as a "
                   "formula)", id);

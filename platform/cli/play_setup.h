@@ -120,8 +120,10 @@ int play_out_open(const char *cmd, const char *log_dir, int append, const char *
                   play_out *po);
 void play_out_close(play_out *po);
 /* --participant ID: 0 when ID is one (hol_rec_id_ok) that does not start
- * with '-' (a spreadsheet's formula: docs/report.md), else reported, 1. */
-int play_participant(const char *cmd, const char *id);
+ * with '-' (a spreadsheet's formula: docs/report.md) and is no participant
+ * number in an ambiguous spelling, with its one spelling in out
+ * (hol_study_participant_id: "p2" and "002" are "P02"); else reported, 1. */
+int play_participant(const char *cmd, const char *id, char out[HOL_REC_ID_MAX]);
 int play_session_open(const char *cmd, play_out *po, const hol_level *levels, int nlevels,
                       const hol_rec_meta *meta, int append, hol_session **out);
 /* abort: 0 finish, 1 abort, PLAY_END_KILLED as a kill and its recovery

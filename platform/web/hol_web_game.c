@@ -51,6 +51,27 @@ static int parse_seed(const char *s, uint64_t *out)
     return 0;
 }
 
+/* The page's participant= (config "participant") in its one spelling
+ * (hol_study_participant_id: "p2" and "002" are "P02") into part, "" for
+ * none; 0, or 1 with msg when it is no id or an ambiguous one. */
+static int page_participant(char part[HOL_REC_ID_MAX + 8], char *msg, size_t cap)
+{
+    char spelled[HOL_REC_ID_MAX];
+    part[0] = 0;
+    hol_web_js_config("participant", part, HOL_REC_ID_MAX + 8);
+    if (part[0] && !hol_rec_id_ok(part)) {
+        snprintf(msg, cap, "participant '%.40s' is not 1..63 letters, digits, '.', '_' or '-'",
+                 part);
+        return 1;
+    }
+    if (hol_study_participant_id(part, spelled, sizeof spelled) == HOL_STUDY_ID_AMBIGUOUS) {
+        snprintf(msg, cap, "participant '%.40s' is ambiguous: write it %s", part, spelled);
+        return 1;
+    }
+    memcpy(part, spelled, sizeof spelled);
+    return 0;
+}
+
 /* A study's levels (core/hol_study.h): the study file's text and each
  * level file it names, which the page fetched (config "level:PATH"), in
  * the order of the participant's number; 0, or 1 with msg. */
@@ -179,8 +200,7 @@ static int page_levels(int *n, char *msg, size_t cap)
     hol_web_js_config("study", study, sizeof study);
     if (study[0]) {
         char part[HOL_REC_ID_MAX + 8] = "";
-        hol_web_js_config("participant", part, sizeof part);
-        if (study_levels(study, part, n, study_name, msg, cap))
+        if (page_participant(part, msg, cap) || study_levels(study, part, n, study_name, msg, cap))
             return 1;
         uint8_t dig[32];
         hol_sha256(study, strlen(study), dig);
@@ -256,12 +276,8 @@ int hol_web_game_open(char *msg, size_t cap)
     if (track_hz < 0)
         return 1;
     char part[HOL_REC_ID_MAX + 8] = "";
-    hol_web_js_config("participant", part, sizeof part);
-    if (part[0] && !hol_rec_id_ok(part)) {
-        snprintf(msg, cap, "participant '%.40s' is not 1..63 letters, digits, '.', '_' or '-'",
-                 part);
+    if (page_participant(part, msg, cap))
         return 1;
-    }
     hol_session_desc d;
     memset(&d, 0, sizeof d);
     d.levels = levels;

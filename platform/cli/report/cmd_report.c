@@ -23,7 +23,7 @@
 #include "report_stats.h"
 
 static const char *const report_usage =
-    "usage: holonomy report LOGDIR... --out DIR [--bids DIR2]\n"
+    "usage: holonomy report LOGDIR... --out DIR [--bids DIR2] [--include-restarted]\n"
     "       holonomy report LOGDIR... --bids DIR2\n"
     "\n"
     "Reads the research logs of one or more log folders (play/replay/xr --log:\n"
@@ -63,6 +63,13 @@ static const char *const report_usage =
     "is refused naming its file and line; a missing steps or level file is a\n"
     "warning (no picture, or no optimal walk in it). Killed and aborted attempts\n"
     "are listed with that end.\n"
+    "Participant ids are read in their one spelling: '2', '002' and 'p2' are P02\n"
+    "(one line on stderr names every id so read). In a study, a participant's\n"
+    "second run (in another folder, or in one folder under another spelling) is\n"
+    "excluded as 'duplicate' (one line on stderr names it), a run replaced by\n"
+    "--restart-participant as 'restarted'.\n"
+    "--include-restarted keeps duplicate and restarted trials in the\n"
+    "participant-level statistics (trials.csv's excluded still names them).\n"
     "--bids DIR2 writes each attempt's head and hand tracks (track-NNN.csv) as a\n"
     "BIDS-Motion dataset (BIDS 1.9): one run per attempt, tracking systems room and\n"
     "tile; DIR2 must be new or empty.\n"
@@ -166,7 +173,7 @@ static const char *const report_valued[] = {"--out", "--bids", NULL};
 
 static int parse_args(report_run *r, int argc, char **argv)
 {
-    static const char *const flags[] = {NULL};
+    static const char *const flags[] = {"--include-restarted", NULL};
     cli_opts p;
     cli_opts_init(&p, r->cmd, argc, argv, report_valued, flags);
     const char *opt, *val;
@@ -175,7 +182,9 @@ static int parse_args(report_run *r, int argc, char **argv)
     if (!r->dirs)
         return CLI_EXIT_FAIL;
     while ((got = cli_opts_next(&p, &opt, &val)) > 0) {
-        if (opt && !strcmp(opt, "--bids"))
+        if (opt && !strcmp(opt, "--include-restarted"))
+            r->include_restarted = 1;
+        else if (opt && !strcmp(opt, "--bids"))
             r->bids = val;
         else if (opt)
             r->out = val;
@@ -327,19 +336,24 @@ static void remove_stale(const report_run *r)
 
 static int run(report_run *r, report_buf *b)
 {
-    if (!r->out) { /* --bids only */
-        int st = report_read_summaries(r);
-        return st ? st : report_bids_write(r, r->bids);
-    }
     int st = report_read_summaries(r);
     if (!st)
-        st = report_stats_read(r);
+        report_ids_read(r);
+    if (!r->out) { /* --bids only */
+        if (!st)
+            st = report_bids_write(r, r->bids);
+        return st ? st : report_ids_tell(r);
+    }
     if (!st)
-        st = report_pstats_compute(r);
+        st = report_stats_read(r);
     /* first every steps file and level is checked, then anything written */
     for (int i = 0; !st && i < r->natt; i++)
         if (!(st = report_stopped(r)))
             st = picture(r, b, i, 0);
+    if (!st)
+        st = report_ids_tell(r);
+    if (!st) /* its line on duplicates after those of the logs */
+        st = report_pstats_compute(r);
     if (!st)
         st = make_out(r);
     r->quiet = 1;

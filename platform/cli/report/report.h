@@ -12,6 +12,7 @@
  *                        (report_escape.h; test_report_escape)
  *   report_bids.c        --bids DIR: the tracks as BIDS-Motion
  *                        (report_bids.h; tests/cli_report_bids.sh)
+ *   report_ids.c         participant ids read in their one spelling
  * The module keeps no file-scope mutable state: what a run holds is in its
  * report_run (and the command's buffers), passed down. Internal to the
  * command.
@@ -28,6 +29,12 @@
  *   through report_write_file: DIR/name written by body (its 0, or an exit
  *   status after one line: the file is then left out), committed; 0, or
  *   CLI_EXIT_FAIL after one line when it cannot be opened or written.
+ * - report_ids_read (after report_read_summaries): every attempt's
+ *   participant in its one spelling (hol_study_participant_id: "2", "002"
+ *   and "p2" are "P02"), the logs' spelling kept (report_id_logged).
+ *   report_ids_tell (once every log file is checked) says one line on
+ *   stderr for each participant spelled two or more ways (a merge) and one
+ *   for the ids only respelled; 0, or CLI_EXIT_FAIL.
  */
 #ifndef REPORT_H
 #define REPORT_H
@@ -37,6 +44,7 @@
 
 #include "../../../core/hol_level.h"
 #include "../../../core/hol_nav.h"
+#include "../../../core/hol_rec.h"
 #include "../../../core/hol_report.h"
 #include "../../../core/hol_room.h"
 
@@ -53,6 +61,8 @@ typedef struct report_att {
     int optimal_len;
     int minimap;      /* its level's minimap place (hol_app_minimap_place), -1: unknown */
     char png[32];     /* its picture's name in DIR, "" for none */
+    char spelled[HOL_REC_ID_MAX]; /* the participant as logged when a.participant
+                                     is its respelling (report_ids_read), else "" */
 } report_att;
 
 /* A level's objectives and optimal walk in one geometry, computed once
@@ -86,6 +96,8 @@ typedef struct report_run {
     report_opt *opt;   /* REPORT_OPT_CACHE entries, made on first use */
     int nopt, nopt_next;
     int quiet;         /* 1: warnings were given (the second pass) */
+    int include_restarted; /* --include-restarted: duplicate and restarted
+                              trials count in the participant-level statistics */
     struct report_stats *stats; /* report_stats.h */
     struct report_pstats *pstats; /* report_pstats.h */
 } report_run;
@@ -101,6 +113,10 @@ int report_stopped(const report_run *r);
 int report_optimal(report_run *r, report_att *t, hol_room *out_start, hol_tile *goals,
                    int *ngoals, int *chest_last, hol_tile *walk, int *nwalk);
 void report_free(report_run *r);
+void report_ids_read(report_run *r);
+int report_ids_tell(const report_run *r);
+/* The participant of attempt t as its log spells it. */
+const char *report_id_logged(const report_att *t);
 
 typedef int (*report_body)(FILE *f, const report_run *r, const void *ctx);
 int report_write_file(const report_run *r, const char *name, report_body body, const void *ctx);

@@ -414,15 +414,17 @@ static int answer_row(report_run *r, rs_csv *c, rs_group *g, rs_parts *pt, long 
                       double v)
 {
     report_stats *s = r->stats;
-    char key[sizeof g->key];
-    const char *q = field(c, A_Q), *item = field(c, A_ITEM);
-    snprintf(key, sizeof key, "%s\x1f%s\x1f%ld\x1f%s\x1f%s", field(c, A_SESSION),
-             field(c, A_PART), att, q, field(c, A_WHEN));
+    char key[sizeof g->key], part[HOL_REC_ID_MAX];
+    const char *q = field(c, A_Q), *item = field(c, A_ITEM), *who = field(c, A_PART);
+    if (hol_study_participant_id(who, part, sizeof part) == HOL_STUDY_ID_RENAMED)
+        who = part; /* in its one spelling, as the summary's (report_ids_read) */
+    snprintf(key, sizeof key, "%s\x1f%s\x1f%ld\x1f%s\x1f%s", field(c, A_SESSION), who, att, q,
+             field(c, A_WHEN));
     if (strcmp(key, g->key)) {
         flush_group(s, g, pt);
         memcpy(g->key, key, sizeof key);
         g->att = find_att(r, c->dir, field(c, A_SESSION), att);
-        g->cond = g->att < 0 ? s->none : s->att_cond[g->att];
+        g->cond = rs_when_cond(s, g->att < 0 ? s->none : s->att_cond[g->att], field(c, A_WHEN));
         g->items.n = 0;
         take_partial(pt, g);
     }

@@ -187,8 +187,9 @@ static int participants_json(FILE *f, const report_run *run, const void *ctx)
     (void)run, (void)ctx;
     fputs("{\n  \"participant_id\": {\"Description\": \"sub- and the letters and digits of the "
           "participant id (n2, n3, ... after it when two ids give one label)\"},\n"
-          "  \"holonomy_id\": {\"Description\": \"the participant id as logged "
-          "(summary.csv's participant; n/a: none given)\"}\n}\n", f);
+          "  \"holonomy_id\": {\"Description\": \"the participant id as logged, in its one "
+          "spelling (summary.csv's participant; 2, 002 and p2 are P02; n/a: none "
+          "given)\"}\n}\n", f);
     return 0;
 }
 

@@ -76,12 +76,63 @@ static int by_part(const void *pa, const void *pb)
                     rs_cmp(a->i, b->i));
 }
 
+/* 1 when attempts t and u are one level of the order played by two
+ * sessions of one folder (u the other). */
+static int same_level(const report_att *t, const report_att *u)
+{
+    return u->dir == t->dir && strcmp(u->a.session, t->a.session) &&
+           u->a.position == t->a.position && !strcmp(u->a.level_sha256, t->a.level_sha256);
+}
+
+/* 1 when a later session (its attempt t) of the participant whose earlier
+ * session logged u may have been started as theirs: the same spelling of
+ * the id, or its one spelling, which a build that has the rule logs, and
+ * which such a build starts again only with --restart-participant or
+ * --resume (a session that logged "2", then one that logged "P02"). */
+static int same_person(const report_att *u, const report_att *t)
+{
+    return !t->spelled[0] || !strcmp(report_id_logged(u), report_id_logged(t));
+}
+
+/* Attempt k[j] of a second run of the participant (k[lo, j) before it):
+ * in another folder than their first, or in theirs under another old
+ * spelling of their id (logs made before ids had one: "002", then "p2")
+ * replaying a level an earlier session completed. */
+static int second_run(const report_run *r, const ps_key *k, int lo, int j)
+{
+    const report_att *t = &r->att[k[j].i];
+    if (t->dir != r->att[k[lo].i].dir)
+        return 1;
+    for (int l = lo; l < j; l++) {
+        const report_att *u = &r->att[k[l].i];
+        if (same_level(t, u) && !strcmp(u->a.end, "done") && !same_person(u, t))
+            return 1;
+    }
+    return 0;
+}
+
+/* The line naming a participant's second run: its first trial k[j]. */
+static void tell_duplicate(const report_run *r, const ps_key *k, int lo, int j, long n)
+{
+    const report_att *a = &r->att[k[lo].i], *b = &r->att[k[j].i];
+    const char *in[8] = {a->a.participant, a->a.study, r->dirs[a->dir], a->a.session,
+                         report_id_logged(a), r->dirs[b->dir], b->a.session, report_id_logged(b)};
+    char e[8][160];
+    for (int x = 0; x < 8; x++)
+        cli_escape(in[x], e[x], sizeof e[x]);
+    fprintf(stderr, "holonomy %s: participant %s of study %s ran twice ('%s' session %s as %s, "
+                    "then '%s' session %s as %s): %ld trial(s) of the second run are excluded "
+                    "as duplicate (--include-restarted counts them)\n", r->cmd, e[0], e[1], e[2],
+            e[3], e[4], e[5], e[6], e[7], n);
+}
+
 /* Attempts [lo, hi) of k: one study's participant, in the order read. */
 static void one_participant(const report_run *r, report_pstats *p, const ps_key *k, int lo,
                             int hi)
 {
     const report_stats *s = r->stats;
-    int first_dir = r->att[k[lo].i].dir;
+    int first_dup = -1;
+    long ndup = 0;
     for (int j = lo; j < hi; j++) {
         int i = k[j].i;
         const hol_report_attempt *a = &r->att[i].a;
@@ -90,15 +141,18 @@ static void one_participant(const report_run *r, report_pstats *p, const ps_key 
             p->excl[i] = PX_PRACTICE;
         else if (strcmp(a->end, "done"))
             p->excl[i] = PX_END;
-        else if (a->study[0] && r->att[i].dir != first_dir)
+        else if (a->study[0] && second_run(r, k, lo, j))
             p->excl[i] = PX_DUPLICATE;
         for (int l = j + 1; !p->excl[i] && a->study[0] && l < hi; l++) {
             const report_att *b = &r->att[k[l].i];
-            if (b->dir == r->att[i].dir && strcmp(b->a.session, a->session) &&
-                b->a.position == a->position && !strcmp(b->a.level_sha256, a->level_sha256))
+            if (same_level(&r->att[i], b) && same_person(&r->att[i], b))
                 p->excl[i] = PX_RESTARTED; /* played again by a later session */
         }
+        if (p->excl[i] == PX_DUPLICATE && !ndup++)
+            first_dup = j;
     }
+    if (ndup && !r->quiet)
+        tell_duplicate(r, k, lo, first_dup, ndup);
 }
 
 static int exclusions(const report_run *r, report_pstats *p)
@@ -128,6 +182,12 @@ const char *report_pstats_excluded(const report_run *r, int i)
     if (!p)
         return "";
     return p->excl[i] == PX_END ? r->att[i].a.end : why[p->excl[i]];
+}
+
+int ps_counts(const report_run *r, const report_pstats *p, int i)
+{
+    return !p->excl[i] || (r->include_restarted &&
+                           (p->excl[i] == PX_DUPLICATE || p->excl[i] == PX_RESTARTED));
 }
 
 /* Attempt i's value of measure m: 1 and *v, 0 when it has none. */
@@ -170,10 +230,10 @@ static int make_cells(const report_run *r, report_pstats *p)
     for (int c = 0; c < s->ncond; c++)
         p->first[c] = -1;
     for (int i = 0; i < r->natt; i++)
-        if (!p->excl[i] && p->first[s->att_cond[i]] < 0)
+        if (ps_counts(r, p, i) && p->first[s->att_cond[i]] < 0)
             p->first[s->att_cond[i]] = i;
     for (int i = 0; i < r->natt; i++)
-        if (!p->excl[i])
+        if (ps_counts(r, p, i))
             k[n++] = (ps_key){NULL, r->att[i].a.participant, i, s->att_cond[i],
                               p->group[s->att_cond[i]]};
     qsort(k, (size_t)n, sizeof *k, by_cell);
@@ -299,7 +359,7 @@ static void assign_groups(const report_run *r, report_pstats *p)
                 p->group[c] = p->group[d];
                 break;
             }
-        if (s->cond[c].practice || c == s->none)
+        if (s->cond[c].practice || s->cond[c].whole || c == s->none)
             p->group[c] = -1;
     }
 }

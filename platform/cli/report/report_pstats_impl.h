@@ -55,6 +55,9 @@ typedef struct report_pstats {
 } report_pstats;
 
 int ps_value(const report_run *r, int i, int m, double *v);
+/* 1 when attempt i counts in the statistics: not excluded, or excluded as
+ * duplicate or restarted under --include-restarted. */
+int ps_counts(const report_run *r, const report_pstats *p, int i);
 /* The end of the participant's cells from cell i (one group's), and the
  * number and sum of their values of measure m. */
 int ps_part_end(const report_pstats *p, int i, int m, int *have, double *sum);

@@ -219,8 +219,10 @@ void report_pstats_html(FILE *f, const report_run *r)
     if (!r->stats || !r->pstats)
         return;
     fputs("<h3>Participant-level statistics</h3>\n<p>Each participant's mean per condition "
-          "(over their completed trials outside practice, duplicates and restarted runs: "
-          "<a href=\"trials.csv\">trials.csv</a>'s <code>excluded</code>), then over the "
+          "(over their completed trials outside practice, ", f);
+    fputs(r->include_restarted ? "duplicate and restarted runs counted (--include-restarted): "
+                               : "duplicates and restarted runs: ", f);
+    fputs("<a href=\"trials.csv\">trials.csv</a>'s <code>excluded</code>), then over the "
           "participants: n participants (trials), mean, SD. The <b>between-subjects</b> 95 % "
           "CI is Student's t on the participants' means; the <b>within-subjects</b> 95 % CI "
           "(Cousineau 2005 with Morey's 2008 correction sqrt(J/(J&minus;1)), J the study's "

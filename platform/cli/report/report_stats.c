@@ -39,7 +39,37 @@ static int cond_of(report_stats *s, const hol_report_attempt *a)
     memcpy(n->study, a->study, sizeof n->study);
     snprintf(n->condition, sizeof n->condition, "%s", c);
     n->practice = a->study[0] && (!strcmp(c, HOL_STUDY_PRACTICE) || a->position == 0);
+    n->whole = 0;
     return s->ncond++;
+}
+
+/* Each study's "study" (rs_cond.whole), after the conditions of the
+ * attempts (so that the first-seen order of those stays s->seen's). */
+static void add_wholes(report_stats *s)
+{
+    int n = s->ncond;
+    for (int c = 0; c < n; c++) {
+        int first = s->cond[c].study[0] != 0;
+        for (int d = 0; first && d < c; d++)
+            first = strcmp(s->cond[d].study, s->cond[c].study) != 0;
+        if (!first)
+            continue;
+        rs_cond *w = &s->cond[s->ncond++];
+        memset(w, 0, sizeof *w);
+        memcpy(w->study, s->cond[c].study, sizeof w->study);
+        snprintf(w->condition, sizeof w->condition, "study");
+        w->whole = 1;
+    }
+}
+
+int rs_when_cond(const report_stats *s, int c, const char *when)
+{
+    if (strcmp(when, "study") || c == s->none)
+        return c;
+    for (int w = 0; w < s->ncond; w++)
+        if (s->cond[w].whole && !strcmp(s->cond[w].study, s->cond[c].study))
+            return w;
+    return c;
 }
 
 /* Attempts (pointers into r->att) by (dir, session, attempt), then where
@@ -282,7 +312,10 @@ static int order_conditions(report_run *r)
                 k[c].group = k[g].group;
                 break;
             }
-        k[c].klass = !s->cond[c].study[0] ? 0 : s->cond[c].practice ? 0 : 2;
+        k[c].klass = !s->cond[c].study[0]   ? 0
+                     : s->cond[c].practice ? 0
+                     : s->cond[c].whole    ? 3
+                                           : 2;
         k[c].index = c;
         k[c].cond = c;
         k[c].name = s->cond[c].condition;
@@ -362,16 +395,16 @@ int report_stats_order_agg(const report_run *r, hol_report_agg *g)
 static int alloc_stats(report_run *r)
 {
     report_stats *s = r->stats = calloc(1, sizeof *r->stats);
-    size_t n = (size_t)r->natt + 1;
-    if (!s || !(s->cond = malloc(sizeof *s->cond * n)) ||
+    size_t n = (size_t)r->natt + 1, nc = 2 * n; /* conditions: rs_cond */
+    if (!s || !(s->cond = malloc(sizeof *s->cond * nc)) ||
         !(s->att_cond = malloc(sizeof *s->att_cond * n)) ||
         !(s->order = malloc(sizeof *s->order * n)) ||
         !(s->tpt = calloc(2 * n, sizeof *s->tpt)) ||
-        !(s->fix = calloc(n * RS_NFIX, sizeof *s->fix)) ||
+        !(s->fix = calloc(nc * RS_NFIX, sizeof *s->fix)) ||
         !(s->lik = malloc(sizeof *s->lik * RS_LIK_MAX)) ||
         !(s->slot = malloc(sizeof *s->slot * RS_LIK_SLOTS)) ||
-        !(s->pts = malloc(sizeof *s->pts * n)) || !(s->used = calloc(n, sizeof *s->used)) ||
-        !(s->nrange = calloc(2 * n, sizeof *s->nrange))) {
+        !(s->pts = malloc(sizeof *s->pts * n)) || !(s->used = calloc(nc, sizeof *s->used)) ||
+        !(s->nrange = calloc(2 * nc, sizeof *s->nrange))) {
         cli_error(r->cmd, 0, "out of memory");
         return CLI_EXIT_FAIL;
     }
@@ -389,6 +422,8 @@ int report_stats_read(report_run *r)
         s->att_cond[i] = cond_of(s, &r->att[i].a);
         s->order[i] = i;
     }
+    if (!st)
+        add_wholes(s);
     if (!st && order_conditions(r)) {
         cli_error(r->cmd, 0, "out of memory");
         st = CLI_EXIT_FAIL;

@@ -13,6 +13,8 @@ extern const char *const rs_measure[RS_NFIX];
 typedef struct rs_cond {
     char study[HOL_REPORT_TEXT], condition[HOL_REPORT_TEXT];
     int practice;
+    int whole; /* 1: the study as a whole ("study"): its `after study`
+                  questionnaires, no attempt (listed after its conditions) */
 } rs_cond;
 
 #define RS_LIK_MAX 4096   /* Likert items x conditions counted */
@@ -55,7 +57,7 @@ typedef struct rs_score {
 
 typedef struct report_stats {
     int ncond, none; /* none: the condition "none" */
-    rs_cond *cond;  /* natt + 1 */
+    rs_cond *cond;  /* 2 natt + 1: the attempts', a "study" a study, "none" */
     int *att_cond;  /* per attempt */
     int *order;     /* attempts by (dir, session, attempt) */
     hol_stats *tpt; /* per attempt: its |error_true|, |error_flat| (2 each) */
@@ -81,6 +83,9 @@ typedef struct report_stats {
 } report_stats;
 
 int rs_included(const report_run *r, int i); /* done, not practice */
+/* The condition a questionnaire of when (answers.csv's) at an attempt of
+ * condition c is counted in: its study's "study" for `after study`, else c. */
+int rs_when_cond(const report_stats *s, int c, const char *when);
 /* The condition as the page names it ("study / condition"), HTML. */
 void rs_cond_name(FILE *f, const rs_cond *c);
 
