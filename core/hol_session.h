@@ -135,7 +135,7 @@
 #include "hol_err.h"
 #include "hol_level.h"
 #include "hol_rec.h"
-#include "hol_session_cols.h"
+#include "hol_log_cols.h"
 #include "hol_sink.h"
 
 #define HOL_SESSION_MAX_LEVELS HOL_REC_MAX_LEVELS
@@ -157,7 +157,7 @@
 #define HOL_SESSION_TRACK_HZ_MIN 10
 #define HOL_SESSION_TRACK_HZ_MAX 90
 
-/* The files' columns (hol_session_cols.h): HOL_SESSION_SUMMARY_COLUMNS;
+/* The files' columns (hol_log_cols.h): HOL_SESSION_SUMMARY_COLUMNS;
  * a folder whose summary.csv has the columns of the build before
  * session_no, study_sha256 and meta (HOL_SESSION_SUMMARY_COLUMNS_OLD) is
  * appended to in those columns. */

@@ -320,12 +320,12 @@ static void hol__events(hol_session *s, const hol_app_events *ev, const hol_app_
 /* Creates name with its header when the file is new or empty (*known
  * keeps that it is done); *known is 2 when the file's first line is old,
  * the header of the build before its timestamps (its rows then keep
- * those columns). */
-static void hol__header_once(hol_session *s, int *known, const char *name, const char *header,
-                             const char *old)
+ * those columns). Returns 1 when the session writes nothing more. */
+static int hol__header_once(hol_session *s, int *known, const char *name, const char *header,
+                            const char *old)
 {
     if (*known || s->failed)
-        return;
+        return s->failed != 0;
     char c[HOL__CSV_NAME];
     size_t got = 0, n = strlen(old);
     hol_err e = s->log->read(s->log->user, name, 0, c, n + 1 < sizeof c ? n + 1 : sizeof c, &got);
@@ -336,10 +336,18 @@ static void hol__header_once(hol_session *s, int *known, const char *name, const
         hol__fail_sink(s, s->log, e, "read", name);
     else if (got == n + 1 && !memcmp(c, old, n) && (c[n] == '\n' || c[n] == '\r'))
         *known = 2;
+    return s->failed != 0;
 }
 
-/* Input time in whole milliseconds (the answers' timestamps). */
-static long long hol__ms(double t) { return (long long)floor(t * 1000.0 + 0.5); }
+/* The timestamps' fields (",SHOWN,ANSWERED": input times in whole
+ * milliseconds) into ts, or "" when the file has the old header (known 2). */
+static void hol__stamps(char ts[48], int known, double shown_s, double at_s)
+{
+    ts[0] = 0;
+    if (known != 2)
+        snprintf(ts, 48, ",%lld,%lld", (long long)floor(shown_s * 1000.0 + 0.5),
+                 (long long)floor(at_s * 1000.0 + 0.5));
+}
 
 /* An angle with one decimal, never "-0.0"; "" when absent. */
 static void hol__deg(char out[16], int has, double d)
@@ -352,9 +360,8 @@ static void hol__deg(char out[16], int has, double d)
 /* A row of points.csv (see hol_session.h). */
 static void hol__point_row(hol_session *s, const hol_app_point *p)
 {
-    hol__header_once(s, &s->points_known, "points.csv", HOL_SESSION_POINT_COLUMNS "\n",
-                     HOL_SESSION_POINT_COLUMNS_OLD);
-    if (s->failed)
+    if (hol__header_once(s, &s->points_known, "points.csv", HOL_SESSION_POINT_COLUMNS "\n",
+                         HOL_SESSION_POINT_COLUMNS_OLD))
         return;
     char name[HOL__CSV_NAME], row[HOL__CSV_NAME + 512];
     char pointed[HOL_BEARING_TEXT], tru[HOL_BEARING_TEXT] = "", flat[HOL_BEARING_TEXT] = "";
@@ -367,9 +374,8 @@ static void hol__point_row(hol_session *s, const hol_app_point *p)
         hol_bearing_format(p->flat_deg, flat);
     hol__deg(et, p->has_true, p->error_true);
     hol__deg(ef, p->has_flat, p->error_flat);
-    char ts[48] = ""; /* the timestamps, unless the file has the old header */
-    if (s->points_known != 2)
-        snprintf(ts, sizeof ts, ",%lld,%lld", hol__ms(p->asked_s), hol__ms(p->at_s));
+    char ts[48];
+    hol__stamps(ts, s->points_known, p->asked_s, p->at_s);
     int n = snprintf(row, sizeof row, "%s,%s,%d,%s,%.4f,%s,%s,%s,%s,%s,%s,%.4f%s\n",
                      s->meta.session, s->meta.participant, s->attempt, name, p->t,
                      p->target == HOL_APP_POINT_START ? "start" : "objective", pointed, tru,
@@ -381,9 +387,8 @@ static void hol__point_row(hol_session *s, const hol_app_point *p)
 /* A row of answers.csv (see hol_session.h). */
 static void hol__answer_row(hol_session *s, const hol_app_answer *a)
 {
-    hol__header_once(s, &s->answers_known, "answers.csv", HOL_SESSION_ANSWER_COLUMNS "\n",
-                     HOL_SESSION_ANSWER_COLUMNS_OLD);
-    if (s->failed)
+    if (hol__header_once(s, &s->answers_known, "answers.csv", HOL_SESSION_ANSWER_COLUMNS "\n",
+                         HOL_SESSION_ANSWER_COLUMNS_OLD))
         return;
     char value[HOL__CSV_NAME], row[HOL__CSV_NAME + 512];
     if (a->kind == HOL_APP_CHOICE)
@@ -395,9 +400,8 @@ static void hol__answer_row(hol_session *s, const hol_app_answer *a)
     int attempt = s->ask_pending ? s->meta.ask_attempt : s->attempt;
     if (!s->ask_pending && hol_ask_before(a->when))
         attempt = s->attempt + 1;
-    char ts[48] = ""; /* the timestamps, unless the file has the old header */
-    if (s->answers_known != 2)
-        snprintf(ts, sizeof ts, ",%lld,%lld", hol__ms(a->shown_s), hol__ms(a->at_s));
+    char ts[48];
+    hol__stamps(ts, s->answers_known, a->shown_s, a->at_s);
     int n = snprintf(row, sizeof row, "%s,%s,%d,%s,%s,%s,%s,%s,%.4f%s\n",
                      s->ask_pending ? s->meta.ask_session : s->meta.session,
                      s->meta.participant, attempt, a->questionnaire,

@@ -115,6 +115,20 @@ static int row_bad(const char *file, const hol_codebook_col *r)
     return 0;
 }
 
+/* No double quote or line break in a field, no comma in the unquoted ones
+ * (codebook.csv's text is made by the preprocessor: hol_shell_codebook.h);
+ * 1 when so. */
+static int csv_safe(const char *file, const hol_codebook_col *r)
+{
+    const char *f[6] = {file, r->column, r->type, r->unit, r->allowed, r->meaning};
+    for (int k = 0; k < 6; k++)
+        if (strpbrk(f[k], k < 4 ? "\",\r\n" : "\"\r\n")) {
+            print_error("%s %s: a quote, line break or comma in field %d\n", file, r->column, k);
+            return 0;
+        }
+    return 1;
+}
+
 static void rows_complete(void **state)
 {
     (void)state;
@@ -122,7 +136,7 @@ static void rows_complete(void **state)
     for (size_t i = 0; i < n; i++) {
         const codebook_row *r = &codebook_rows[i];
         const hol_codebook_col c = {r->column, r->type, r->unit, r->allowed, r->meaning};
-        if (row_bad(r->file, &c))
+        if (row_bad(r->file, &c) || !csv_safe(r->file, &c))
             fail();
         for (size_t j = 0; j < i; j++)
             if (!strcmp(codebook_rows[j].file, r->file) &&
@@ -135,7 +149,8 @@ static void rows_complete(void **state)
     const hol_codebook_file *f = hol_shell_codebook_logs(&nf);
     for (int i = 0; i < nf; i++)
         for (int c = 0; c < f[i].n; c++) {
-            if (row_bad(f[i].name, &f[i].cols[c]) || !f[i].cols[c].meaning[0])
+            if (row_bad(f[i].name, &f[i].cols[c]) || !csv_safe(f[i].name, &f[i].cols[c]) ||
+                !f[i].cols[c].meaning[0])
                 fail();
             for (int d = 0; d < c; d++)
                 if (!strcmp(f[i].cols[d].column, f[i].cols[c].column)) {
@@ -155,9 +170,23 @@ static void texts(void **state)
         assert_memory_equal(text, CODEBOOK_COLUMNS "\n", sizeof CODEBOOK_COLUMNS);
         assert_null(strstr(text, "report:"));
         /* every meaning filled (a report's from the log column's) */
-        assert_null(strstr(text, ",\n"));
+        assert_null(strstr(text, ",\"\"\n"));
     }
     assert_non_null(strstr(text, "\nattempts.csv,steps,"));
+    /* the log folder's text (made by the preprocessor) is the rows as
+     * hol_shell_codebook_put writes them from the tables */
+    static char rows[CODEBOOK_TEXT_MAX];
+    size_t at = 0;
+    int nf;
+    const hol_codebook_file *f = hol_shell_codebook_logs(&nf);
+    at = (size_t)snprintf(rows, sizeof rows, "%s\n", CODEBOOK_COLUMNS);
+    for (int i = 0; i < nf; i++)
+        for (int c = 0; c < f[i].n; c++)
+            assert_int_equal(hol_shell_codebook_put(f[i].name, &f[i].cols[c], rows, sizeof rows, &at),
+                             0);
+    assert_int_equal(codebook_csv(CODEBOOK_LOGS, text, sizeof text), at);
+    assert_string_equal(text, rows);
+    assert_non_null(strstr(text, "\nanswers.csv,answered_ms,integer,ms,\"0..\",\"the session's"));
     assert_int_equal(codebook_csv(CODEBOOK_LOGS, text, 100), 0);
 }
 

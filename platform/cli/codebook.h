@@ -4,8 +4,8 @@
  *
  * Contract
  * - The log folder's files are the writers' own tables (core/
- *   hol_session_cols.h, platform/shell/hol_shell_env.h, hol_shell_prov.h,
- *   hol_shell_codebook.h: each writer's header is made from its table);
+ *   hol_log_cols.h: each writer's header is made from its table, the
+ *   codebook's text by platform/shell/hol_shell_codebook.h);
  *   the report's are a table of rows here (codebook_table.h), in each
  *   file's column order. tests/test_codebook.c checks that the report's
  *   build.csv's and codebook.csv's columns are their headers, and every

@@ -4,33 +4,21 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "../../core/hol_text.h"
 #include "hol_shell_env.h"
 #include "hol_shell_prov.h"
 
-#define COLS(name, table) static const hol_codebook_col name[] = {table(HOL_CODEBOOK_COL, )}
-COLS(summary_cols, HOL_SESSION_SUMMARY_TABLE);
-COLS(step_cols, HOL_SESSION_STEP_TABLE);
-COLS(head_cols, HOL_SESSION_HEAD_TABLE);
-COLS(track_cols, HOL_SESSION_TRACK_TABLE);
-COLS(event_cols, HOL_SESSION_EVENT_TABLE);
-COLS(point_cols, HOL_SESSION_POINT_TABLE);
-COLS(answer_cols, HOL_SESSION_ANSWER_TABLE);
-COLS(env_cols, HOL_SHELL_ENV_TABLE);
-COLS(prov_cols, HOL_SHELL_PROV_TABLE);
-COLS(order_cols, HOL_SHELL_ORDER_TABLE);
-COLS(codebook_cols, HOL_SHELL_CODEBOOK_TABLE);
-
-#define FILE_OF(name, cols) {name, cols, (int)(sizeof cols / sizeof cols[0])}
-static const hol_codebook_file files[] = {
-    FILE_OF("summary.csv", summary_cols),         FILE_OF("steps-NNN.csv", step_cols),
-    FILE_OF("head-NNN.csv", head_cols),           FILE_OF("track-NNN.csv", track_cols),
-    FILE_OF("events.csv", event_cols),            FILE_OF("points.csv", point_cols),
-    FILE_OF("answers.csv", answer_cols),          FILE_OF("environment.csv", env_cols),
-    FILE_OF("provenance.csv", prov_cols),         FILE_OF("order.csv", order_cols),
-    FILE_OF("codebook.csv", codebook_cols),
-};
+/* The tables as arrays (for the report's codebook and the tests). */
+#define COLS_OF(TABLE) ((const hol_codebook_col[]){TABLE(HOL_CODEBOOK_COL, )})
+#define FILE_OF(name, TABLE) \
+    {name, COLS_OF(TABLE), (int)(sizeof COLS_OF(TABLE) / sizeof(hol_codebook_col))},
+static const hol_codebook_file files[] = {HOL_LOG_FILES(FILE_OF)};
 #define NFILES ((int)(sizeof files / sizeof files[0]))
+
+/* The tables as codebook.csv's text: a row's fields after its file, then
+ * (the separator between two rows) the file again. */
+#define ROW_TAIL(c, t, u, a, m) "," c "," t "," u ",\"" a "\",\"" m "\"\n"
+#define FILE_TEXT(name, TABLE) name TABLE(ROW_TAIL, name)
+static const char text[] = HOL_SHELL_CODEBOOK_COLUMNS "\n" HOL_LOG_FILES(FILE_TEXT);
 
 const hol_codebook_file *hol_shell_codebook_logs(int *out_n)
 {
@@ -38,13 +26,21 @@ const hol_codebook_file *hol_shell_codebook_logs(int *out_n)
     return files;
 }
 
-/* Appends s (quoted per RFC 4180 when it needs it) and sep at *at. */
-static int put(char *out, size_t cap, size_t *at, const char *s, char sep)
+/* Appends s (quoted: in double quotes, a quote in it doubled) and sep at
+ * *at. */
+static int put(char *out, size_t cap, size_t *at, const char *s, int quoted, char sep)
 {
-    size_t n = hol_text_csv(s, strlen(s), out + *at, cap - *at);
-    if (n + 2 > cap - *at)
+    if (*at + 2 * strlen(s) + 4 > cap)
         return 1;
-    *at += n;
+    if (quoted)
+        out[(*at)++] = '"';
+    for (; *s; s++) {
+        if (quoted && *s == '"')
+            out[(*at)++] = '"';
+        out[(*at)++] = *s;
+    }
+    if (quoted)
+        out[(*at)++] = '"';
     out[(*at)++] = sep;
     out[*at] = 0;
     return 0;
@@ -55,23 +51,17 @@ int hol_shell_codebook_put(const char *file, const hol_codebook_col *col, char *
 {
     const char *f[6] = {file, col->column, col->type, col->unit, col->allowed, col->meaning};
     for (int k = 0; k < 6; k++)
-        if (*at >= cap || put(out, cap, at, f[k], k < 5 ? ',' : '\n'))
+        if (put(out, cap, at, f[k], k >= 4, k < 5 ? ',' : '\n'))
             return 1;
     return 0;
 }
 
 size_t hol_shell_codebook_csv(char *out, size_t cap)
 {
-    static const char head[] = HOL_SHELL_CODEBOOK_COLUMNS "\n";
-    if (cap < sizeof head)
+    if (cap < sizeof text)
         return 0;
-    memcpy(out, head, sizeof head);
-    size_t at = sizeof head - 1;
-    for (int i = 0; i < NFILES; i++)
-        for (int c = 0; c < files[i].n; c++)
-            if (hol_shell_codebook_put(files[i].name, &files[i].cols[c], out, cap, &at))
-                return 0;
-    return at;
+    memcpy(out, text, sizeof text);
+    return sizeof text - 1;
 }
 
 int hol_shell_codebook_header(const char *file, char *out, size_t cap)

@@ -1,8 +1,8 @@
 /* hol_shell_codebook.h - codebook.csv: every column of every file a log
  * folder holds, with its type, unit, allowed values and meaning, made from
- * the tables the writers make their headers from (core/hol_session_cols.h,
- * hol_shell_env.h, hol_shell_prov.h), so no column is written that the
- * codebook lacks (docs/logs.md, "Provenance and codebook").
+ * the tables the writers make their headers from (core/hol_log_cols.h:
+ * the session's HOL_SESSION_*_COLUMNS, hol_shell_env.h's and
+ * hol_shell_prov.h's), so no column is written that the codebook lacks (docs/logs.md, "Provenance and codebook").
  *
  * Contract
  * - hol_codebook_col: a table's row; HOL_CODEBOOK_COL(...) makes one (X of
@@ -11,11 +11,17 @@
  *   order, each its name ("steps-NNN.csv" for an attempt's) and table; n
  *   their count.
  * - hol_shell_codebook_put(file, col, out, cap, &at) appends one row of
- *   codebook.csv (file, then the column's five fields, quoted per RFC
- *   4180 where they need it, LF) at out + at; 1 when it does not fit.
+ *   codebook.csv at out + at: file, column, type and unit as they are,
+ *   allowed and meaning always in double quotes (a quote in them doubled),
+ *   LF; 1 when it does not fit.
  * - hol_shell_codebook_csv(out, cap): the log folder's codebook.csv (its
- *   header HOL_SHELL_CODEBOOK_COLUMNS, then every file's rows); its
- *   length, or 0 when cap is too small.
+ *   header HOL_SHELL_CODEBOOK_COLUMNS, then every file's rows, as
+ *   hol_shell_codebook_put writes them); its length, or 0 when cap is too
+ *   small. The text is one string literal the preprocessor makes from the
+ *   tables (HOL_LOG_FILES): no table of pointers in a build
+ *   that only writes it (the web's transfer size). So no field of a table
+ *   holds a double quote, a comma in file, column, type or unit, or a line
+ *   break (tests/test_codebook.c).
  * - hol_shell_codebook_header(file, out, cap): a log file's columns
  *   joined with commas; the number of columns, 0 for a file not listed.
  * - Pure: no I/O, no allocation, no mutable state.
@@ -25,7 +31,7 @@
 
 #include <stddef.h>
 
-#include "../../core/hol_session_cols.h"
+#include "../../core/hol_log_cols.h"
 
 typedef struct hol_codebook_col {
     const char *column, *type, *unit, *allowed, *meaning;
@@ -39,15 +45,8 @@ typedef struct hol_codebook_file {
 
 #define HOL_CODEBOOK_COL(name, type, unit, allowed, meaning) {name, type, unit, allowed, meaning},
 
-/* codebook.csv's own columns */
-#define HOL_SHELL_CODEBOOK_TABLE(X, S) \
-    X("file", "string", "", "a file name, NNN for an attempt's number", "the file the column is in") S \
-    X("column", "string", "", "", "the column's name in the file's header") S \
-    X("type", "string", "", "string, integer, number, hex, id, timestamp", "the column's type") S \
-    X("unit", "string", "", "empty: none", "the unit of a number") S \
-    X("allowed", "string", "", "", "the values allowed; empty: any of the type") S \
-    X("meaning", "string", "", "", "what the column holds")
-#define HOL_SHELL_CODEBOOK_COLUMNS HOL_SHELL_CODEBOOK_TABLE(HOL_COL_NAME, ",")
+#define HOL_SHELL_CODEBOOK_COLUMNS HOL_LOG_CODEBOOK_TABLE(HOL_COL_NAME, ",")
+
 #define HOL_SHELL_CODEBOOK_TEXT_MAX (64 * 1024)
 
 const hol_codebook_file *hol_shell_codebook_logs(int *out_n);

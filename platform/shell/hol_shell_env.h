@@ -3,11 +3,10 @@
  * fields' formatting (docs/research.md, "Session metadata").
  *
  * Contract
- * - HOL_SHELL_ENV_TABLE: the file's columns (name, type, unit, allowed
- *   values, meaning), from which HOL_SHELL_ENV_COLUMNS, the file's header
- *   line (without its newline), and its rows of codebook.csv are made
- *   (hol_shell_codebook.h); every platform writes the header when it makes
- *   the file.
+ * - HOL_SHELL_ENV_COLUMNS: the file's header line (without its newline),
+ *   made from its table of columns (HOL_LOG_ENV_TABLE, core/hol_log_cols.h:
+ *   codebook.csv's rows are made from it too); every platform writes it
+ *   when it makes the file.
  * - hol_shell_env_row writes one row, without its newline, into out (cap
  *   bytes, NUL-terminated): the fourteen fields in the header's order, each
  *   escaped for a terminal (hol_text_escape) and then quoted as one RFC
@@ -24,25 +23,9 @@
 
 #include <stddef.h>
 
-#include "../../core/hol_session_cols.h"
+#include "../../core/hol_log_cols.h"
 
-/* environment.csv's columns (a table as core/hol_session_cols.h's) */
-#define HOL_SHELL_ENV_TABLE(X, S) \
-    HOL_COL_SESSION(X) S \
-    HOL_COL_PARTICIPANT(X) S \
-    X("session_no", "integer", "", "1..999; empty: none", "the session number (--session N)") S \
-    X("study_sha256", "hex", "", "64 lowercase hex digits; empty outside a study", "SHA-256 of the study file") S \
-    X("platform", "string", "", "desktop, openxr, web, webxr", "the platform") S \
-    X("os", "string", "", "", "uname -srm") S \
-    X("runtime", "string", "", "empty on the desktop", "the OpenXR runtime's name and version") S \
-    X("gl_renderer", "string", "", "", "GL_RENDERER") S \
-    X("controller", "string", "", "", "the game controller or interaction profile") S \
-    X("refresh_hz", "number", "Hz", "empty: unknown", "the display's refresh rate") S \
-    X("width", "integer", "px", "", "the window's or eye image's width") S \
-    X("height", "integer", "px", "", "the window's or eye image's height") S \
-    X("meta", "string", "", "KEY=VALUE joined with ;", "the --meta options") S \
-    X("options", "string", "", "", "the command line as given")
-#define HOL_SHELL_ENV_COLUMNS HOL_SHELL_ENV_TABLE(HOL_COL_NAME, ",")
+#define HOL_SHELL_ENV_COLUMNS HOL_LOG_ENV_TABLE(HOL_COL_NAME, ",")
 /* A field's bound once escaped: above a recording's whole meta text (16
  * values of 200 bytes, each escaped to at most 800: HOL_REC_META_TEXT), so
  * that valid --meta always has its row (issue 39). */

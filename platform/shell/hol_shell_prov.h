@@ -5,9 +5,9 @@
  * file; docs/logs.md, "Provenance and codebook").
  *
  * Contract
- * - HOL_SHELL_PROV_TABLE, HOL_SHELL_ORDER_TABLE: the files' columns (a
- *   table as core/hol_session_cols.h's), HOL_SHELL_PROV_COLUMNS and
- *   HOL_SHELL_ORDER_COLUMNS their headers.
+ * - HOL_SHELL_PROV_COLUMNS and HOL_SHELL_ORDER_COLUMNS: the files'
+ *   headers, made from their tables (HOL_LOG_PROV_TABLE,
+ *   HOL_LOG_ORDER_TABLE: core/hol_log_cols.h).
  * - hol_shell_prov_write(log, meta, order) is called once the session is
  *   open on a log folder: it appends provenance.csv's row (the session,
  *   its participant, this build's version, commit and date:
@@ -38,28 +38,12 @@
 
 #include "../../core/hol_level.h"
 #include "../../core/hol_rec.h"
-#include "../../core/hol_session_cols.h"
+#include "../../core/hol_log_cols.h"
 #include "../../core/hol_sink.h"
 #include "../../core/hol_study.h"
 
-#define HOL_SHELL_PROV_TABLE(X, S) \
-    HOL_COL_SESSION(X) S \
-    HOL_COL_PARTICIPANT(X) S \
-    X("version", "string", "", "", "the release version (core/hol_version.h)") S \
-    X("commit", "string", "", "git describe --always --dirty, or unknown", "the source commit built") S \
-    X("build_date", "timestamp", "", "ISO 8601 UTC, or unknown", "the build's date (SOURCE_DATE_EPOCH, else the commit's)")
-#define HOL_SHELL_PROV_COLUMNS HOL_SHELL_PROV_TABLE(HOL_COL_NAME, ",")
-
-#define HOL_SHELL_ORDER_TABLE(X, S) \
-    HOL_COL_SESSION(X) S \
-    HOL_COL_PARTICIPANT(X) S \
-    X("study", "string", "", "", "the study's name") S \
-    X("position", "integer", "", "0 practice, 1..", "the position in the participant's order") S \
-    X("condition", "string", "", "a condition's name, practice", "the condition") S \
-    HOL_COL_LEVEL(X) S \
-    X("level_file", "string", "", "a path relative to the study file; empty: a generated level", "the level file the study names") S \
-    X("level_sha256", "hex", "", "64 lowercase hex digits", "SHA-256 of the level's text as the session plays it")
-#define HOL_SHELL_ORDER_COLUMNS HOL_SHELL_ORDER_TABLE(HOL_COL_NAME, ",")
+#define HOL_SHELL_PROV_COLUMNS HOL_LOG_PROV_TABLE(HOL_COL_NAME, ",")
+#define HOL_SHELL_ORDER_COLUMNS HOL_LOG_ORDER_TABLE(HOL_COL_NAME, ",")
 
 const char *hol_shell_prov_write(const hol_sink *log, const hol_rec_meta *meta, const char *order);
 int hol_shell_order_rows(const hol_study *study, const char *participant, const int *lv,
