@@ -165,14 +165,15 @@ $(GLSL_H): render/shaders/glsl_c.sh $(wildcard render/shaders/*.glsl)
 $(BUILD)/render/hol_program.o: $(GLSL_H)
 $(BUILD)/render/hol_program.o: override CFLAGS += -I$(BUILD)/gen
 
-# The build's commit and date (platform/cli/build_info.h): a header in the
-# build folder, remade at every make but rewritten only when its text
-# changes, so a new commit recompiles build_info.c alone.
+# The build's commit and date (platform/shell/hol_shell_build.h): a header
+# in the build folder, remade at every make but rewritten only when its
+# text changes, so a new commit recompiles hol_shell_build.c alone (here
+# and in the web's build; build_apk.sh and quest_link_check.sh make their own).
 BUILD_ID_H := $(BUILD)/gen/hol_build_id.h
 $(BUILD_ID_H): FORCE
-	@sh platform/cli/build_id.sh $@
-$(BUILD)/platform/cli/build_info.o: $(BUILD_ID_H)
-$(BUILD)/platform/cli/build_info.o: override CFLAGS += -I$(BUILD)/gen
+	@sh platform/shell/build_id.sh $@
+$(BUILD)/platform/shell/hol_shell_build.o: $(BUILD_ID_H)
+$(BUILD)/platform/shell/hol_shell_build.o: override CFLAGS += -I$(BUILD)/gen
 
 $(RENDER_LIB): $(RENDER_OBJ)
 	@rm -f $@
@@ -251,10 +252,11 @@ $(BUILD)/tests/test_font: tests/test_font.c $(FONT_TEST_SRC) render/hol_face_dra
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) -o $@ $< $(FONT_TEST_SRC) $(CORE_LIB) $(LDFLAGS) -lcmocka -lz $(LDLIBS)
 
-# The codebook's table against the writers' headers (platform/cli/codebook.c).
-$(BUILD)/tests/test_codebook: tests/test_codebook.c platform/cli/codebook.c $(wildcard platform/cli/*.h) $(CORE_LIB)
+# The codebook's tables against the writers' headers (platform/cli/codebook.c,
+# platform/shell/hol_shell_codebook.c).
+$(BUILD)/tests/test_codebook: tests/test_codebook.c platform/cli/codebook.c $(SHELL_SRC) $(wildcard platform/cli/*.h platform/shell/*.h) $(CORE_LIB)
 	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS) -o $@ $< platform/cli/codebook.c $(CORE_LIB) $(LDFLAGS) -lcmocka $(LDLIBS)
+	$(CC) $(CFLAGS) -o $@ $< platform/cli/codebook.c $(SHELL_SRC) $(CORE_LIB) $(LDFLAGS) -lcmocka $(LDLIBS)
 
 # The report's CSV field and HTML text (platform/cli/report/report_escape.c).
 $(BUILD)/tests/test_report_escape: tests/test_report_escape.c platform/cli/report/report_escape.c platform/cli/report/report_escape.h $(CORE_LIB)
@@ -684,6 +686,8 @@ FORCE:
 
 $(BUILD)/web-obj/render/hol_program.o: $(GLSL_H)
 $(BUILD)/web-obj/render/hol_program.o: WEB_CFLAGS += -I$(BUILD)/gen
+$(BUILD)/web-obj/platform/shell/hol_shell_build.o: $(BUILD_ID_H)
+$(BUILD)/web-obj/platform/shell/hol_shell_build.o: WEB_CFLAGS += -I$(BUILD)/gen
 
 $(BUILD)/web-obj/%.o: %.c $(WEB_STAMP)
 	@mkdir -p $(dir $@)

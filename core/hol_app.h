@@ -486,6 +486,7 @@ typedef struct hol_app_point {
     double t;              /* the level clock when it was asked (the end) */
     double asked_s;        /* the input time it was asked */
     double time_s;         /* seconds taken to answer */
+    double at_s;           /* the input time of the answer's confirm */
     double pointed_deg;
     int has_true, has_flat;
     double true_deg, flat_deg;
@@ -502,6 +503,8 @@ typedef struct hol_app_answer {
     char choice[HOL_APP_LABEL_MAX];   /* choice: its text */
     double time_s;                    /* seconds from the item's screen to
                                          its confirm */
+    double shown_s, at_s;             /* the input times of the item's
+                                         screen and of its confirm */
 } hol_app_answer;
 
 typedef struct hol_app_events {

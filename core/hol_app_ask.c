@@ -182,6 +182,8 @@ void hol__ask_frame(hol_app *app, const hol_input *in, uint32_t pressed)
     else
         r->value = q->lo + app->ask_mark * (q->step > 0 ? q->step : 1);
     r->time_s = in->time_s - app->ask_t0;
+    r->shown_s = app->ask_t0;
+    r->at_s = in->time_s;
     app->ev.answered = 1;
     if (++app->ask_i >= a->n) {
         app->ask_i = 0;
