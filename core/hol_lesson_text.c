@@ -79,7 +79,7 @@ static const hol__lesson_row hol__lessons[HOL_LESSONS] = {
       "trees. Then think how you would walk home.",
       "Answer: {home}. You walked {steps} steps and stand {flat} cells from your start cell, "
       "yet the fewest steps home are {home} (tile {end}): a flat map's {flat} is wrong here.",
-      "A flat map would say {flat}."},
+      "Count the tiles between your end and the start on the picture, not the cells."},
      "Answer: {home}. In the flat grid the way home is what the map says: {home} steps, the "
      "cells between you and the start.",
      {"fewer", "more"}},

@@ -100,4 +100,34 @@ grep -q "\-\-lesson '0' is not a lesson 1..6" "$T/err" && ok || bad "--lesson 0:
 run "--lesson with a level" 2 "$H" play --lesson 1 "$T/l6.lvl" --frames 1
 grep -q "give no LEVEL" "$T/err" && ok || bad "--lesson with a level: $(cat "$T/err")"
 
+# worksheets and keys: every lesson in {4,4} and {4,5}, SVG and HTML; the
+# sheet asks and never answers, the key answers with the core's number
+for q in 4 5; do
+    for n in 1 2 3 4 5 6; do
+        run "sheet $n {4,$q}" 0 "$H" lesson sheet $n --tiling 4,$q --out "$T/s$n-$q.svg"
+        run "key $n {4,$q}" 0 "$H" lesson sheet $n --tiling 4,$q --key --out "$T/k$n-$q.html"
+        grep -q '^<svg .*width="210mm" height="297mm"' "$T/s$n-$q.svg" && ok || bad "sheet $n: no A4 svg"
+        grep -q 'href="data:image/png;base64,iVBORw0KGgo' "$T/s$n-$q.svg" && ok || bad "sheet $n: no picture"
+        grep -q 'Answer' "$T/s$n-$q.svg" && bad "sheet $n answers" || ok
+        grep -q "^<!doctype html>" "$T/k$n-$q.html" && grep -q '>Answer: ' "$T/k$n-$q.html" && ok ||
+            bad "key $n {4,$q}: $(head -c 300 "$T/k$n-$q.html")"
+    done
+done
+tr -d '\n' <"$T/k4-5.html" | sed 's/<[^>]*>/ /g; s/  */ /g' >"$T/k4.txt"
+grep -q 'Answer: 28. At 1, 2 and 3 steps from the start lie 4, 12 and 28 tiles; in the flat grid only 4, 8 and 12.' "$T/k4.txt" &&
+    ok || bad "key 4 {4,5}: $(cat "$T/k4.txt")"
+tr -d '\n' <"$T/k5-5.html" | sed 's/<[^>]*>/ /g; s/  */ /g' >"$T/k5.txt"
+grep -q 'Answer: 4. You walked 8 steps and stand 2 cells from your start cell, yet the fewest steps home are 4 (tile Erlr)' "$T/k5.txt" &&
+    ok || bad "key 5 {4,5}: $(cat "$T/k5.txt")"
+if command -v xmllint >/dev/null 2>&1; then
+    for f in "$T"/s*-*.svg; do xmllint --noout "$f" && ok || bad "$f is not well-formed"; done
+fi
+run "sheet --help" 0 "$H" lesson --help
+grep -q '^usage: holonomy lesson sheet N --out' "$T/out" && ok || bad "lesson --help: $(cat "$T/out")"
+run "sheet 7" 2 "$H" lesson sheet 7 --out "$T/x.svg"
+run "sheet .png" 2 "$H" lesson sheet 1 --out "$T/x.png"
+grep -q 'ending in .svg or .html' "$T/err" && ok || bad "sheet .png: $(cat "$T/err")"
+run "sheet without --out" 2 "$H" lesson sheet 1
+run "lesson list" 2 "$H" lesson list --out "$T/x.svg"
+
 finish cli_lesson
