@@ -76,8 +76,11 @@ static void base64(FILE *f, const uint8_t *p, size_t n)
     }
 }
 
-/* The route on the disk (report_draw's picture), as a PNG: 0 ok. */
-static int sheet_picture(const hol_lesson_facts *lf, uint8_t **png, size_t *npng)
+/* The route on the disk (report_draw's picture, the view fitted to the
+ * whole route), as a PNG: the key's whole route; the sheet's first step
+ * only (the rest is the pupil's to draw: the picture must not answer the
+ * question). 0 ok. */
+static int sheet_picture(const hol_lesson_facts *lf, int key, uint8_t **png, size_t *npng)
 {
     hol_room r;
     hol_tile walked[HOL_APP_ROUTE_MAX];
@@ -93,6 +96,11 @@ static int sheet_picture(const hol_lesson_facts *lf, uint8_t **png, size_t *npng
     }
     p.walked = walked;
     p.nwalked = lf->nroute;
+    report_view view;
+    if (report_view_fit(&p, &view))
+        return -1;
+    p.view = &view;
+    p.nwalked = key ? lf->nroute : 1;
     static uint8_t px[SHEET_PX * SHEET_PX];
     uint8_t plte[3 * 256];
     int npal = report_palette(plte);
@@ -163,6 +171,9 @@ static int sheet_svg(FILE *f, const hol_lesson_facts *lf, int key, const uint8_t
     hol_lesson_text(lf, HOL_LESSON_WALK, buf, sizeof buf);
     y = sheet_para(f, "2. Walk:", y + 6, 4.5, "bold");
     y = sheet_para(f, buf, y, 4.5, "normal");
+    y = sheet_para(f, key ? "The route on the Poincare disk:"
+                          : "Your first step on the Poincare disk; draw the rest of your walk:",
+                   y + 1, 4, "normal");
     fprintf(f, "<image x=\"62\" y=\"%.1f\" width=\"86\" height=\"86\" "
                "href=\"data:image/png;base64,", y + 1);
     base64(f, png, npng);
@@ -233,7 +244,7 @@ int cli_cmd_lesson(int argc, char **argv)
     hol_lesson_facts lf;
     uint8_t *png = NULL;
     size_t npng = 0;
-    if (hol_lesson_facts_of(n, geo.q ? geo.q : 5, &lf) || sheet_picture(&lf, &png, &npng)) {
+    if (hol_lesson_facts_of(n, geo.q ? geo.q : 5, &lf) || sheet_picture(&lf, key, &png, &npng)) {
         cli_error(cmd, 0, "cannot make lesson %d's sheet", n);
         return CLI_EXIT_FAIL;
     }
