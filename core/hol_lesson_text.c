@@ -3,152 +3,117 @@
  * work (issue 37) moves this table into the string table.
  *
  * A text names facts as {name}; every number comes from the core
- * (hol_lesson_facts), none is typed here:
- *   {q} squares at a corner; {deg} a corner's degrees; {sum} a square's
- *   four; {end} the route's last
- *   tile; {home} its fewest steps home; {flat} the flat grid's steps home;
- *   {steps} the route's steps; {bearing} the true bearing to the start;
- *   {dir} the right choice of lesson 3; {yesno} lesson 1's; {c1} {c2} {c3}
- *   tiles at 1, 2, 3 steps here, {f1}.. in {4,4}, {h1}.. in {4,5};
- *   {times} the squares walked until home, {walked} their steps. */
+ * (hol_lesson_facts), none is typed here: {q} squares at a corner, {deg} a
+ * corner's degrees, {sum} a square's four, {end} the route's last tile,
+ * {home} its fewest steps home, {flat} the flat grid's steps home (the
+ * cells), {bearing} where the start lies from the end ("at B degrees",
+ * or "under you"), {dir} lesson 3's right choice, {yesno} lesson 1's,
+ * {close} "close" in {4,4} and "do not close" else, {steps} the route's steps, {c1} {c2} {c3} the
+ * tiles at 1, 2, 3 steps here, {f1}.. in {4,4}, {h1}.. in {4,5}, {times}
+ * the squares walked until home and {walked} their steps. Kept short: the
+ * web page carries them (docs/web.md, the transfer size). */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
 
 #include "hol_lesson.h"
 
-typedef struct hol__lesson_row {
-    const char *part[HOL_LESSON_PARTS];
-    const char *flat_check; /* the check in {4,4}, NULL: the same */
-    const char *labels[HOL_APP_MAX_CHOICES]; /* choices, or the scale's two anchors */
-} hol__lesson_row;
+/* The worksheet's texts (title, goal, hint): left out of a build that
+ * defines HOL_LESSON_APP_ONLY (the web page: its transfer size), where the
+ * app shows none of them. */
+#ifdef HOL_LESSON_APP_ONLY
+#define HOL__SHEET(s) ""
+#else
+#define HOL__SHEET(s) s
+#endif
 
-static const hol__lesson_row hol__lessons[HOL_LESSONS] = {
-    {{"One step, one tile",
-      "A square walk N, E, S, W closes on flat paper; in the hyperbolic plane it does not.",
-      "You walk N, E, S, W, one tile a step. Are you back on your start tile?",
-      "Lesson 1: walk N, E, S, W. A marker shows each next tile: step onto it. Watch where you "
-      "end.",
-      "Answer: {yesno}. N, E, S, W ended on tile {end}, {home} step(s) from the start tile O. "
-      "{q} squares meet at each corner here, so four right turns do not close a square.",
-      "Count the squares that meet at one corner of your cell."},
-     "Answer: {yesno}. In the flat grid four squares meet at each corner, so N, E, S, W closes "
-     "a square: you are on O again. In {4,5} it does not close.",
-     {"Yes", "No"}},
-    {{"Corners",
-      "{q} squares meet at every corner, so a corner is {deg} degrees and a square's angles sum "
-      "to {sum}, not 360.",
-      "How many squares meet at one corner (round one tree)?",
-      "Lesson 2: walk round the tree at the north-west corner of your cell, following the "
-      "markers, until you stand on your start tile again. Count the tiles.",
-      "Answer: {q}. {q} squares meet at every corner, so a square's corner is 360/{q} = {deg} "
-      "degrees and its four corners add up to {sum} degrees (360 on flat paper).",
-      "The walk ends on the tile where it began: count the steps."},
-     NULL,
-     {"fewer", "more"}},
-    {{"Holonomy",
-      "A walk round one tree brings you back to your cell, but onto another tile "
-      "(holonomy): the start is not where a flat map puts it.",
-      "You walk N, W, S, E round a tree, back to your cell. Where is the start tile then?",
-      "Lesson 3: walk N, W, S, E round the tree, following the markers, back to your own "
-      "cell. Then point to the start tile.",
-      "Answer: {dir}. You are back in your cell but on tile {end}, not O: {q} squares stand "
-      "round the tree and you passed four. The start lies at {bearing} degrees; a flat map "
-      "says you are home.",
-      "A tree has {q} squares round it, and you walked past four."},
-     "Answer: {dir}. In the flat grid a walk round a tree brings you back to the very tile you "
-     "left: no holonomy. In {4,5} you land on another tile.",
-     {"Under my feet", "North", "East", "South", "West"}},
-    {{"Growth",
-      "Tiles at 1, 2, 3 steps: {c1}, {c2}, {c3} here, against {f1}, {f2}, {f3} in the flat "
-      "grid: the plane grows faster than any flat map.",
-      "How many tiles lie exactly 3 steps from the start tile?",
-      "Lesson 4: walk the ring of cells round your start: N, E, S, S, W, W, N, N, following "
-      "the markers. Watch how far from the start each tile is.",
-      "Answer: {c3}. At 1, 2 and 3 steps from the start lie {c1}, {c2} and {c3} tiles; in the "
-      "flat grid only {f1}, {f2} and {f3}. The ring you walked ended on {end}, {home} steps "
-      "out.",
-      "In the flat grid there are {f3}. Here each tile has more neighbours farther out."},
-     "Answer: {c3}. At 1, 2 and 3 steps lie {c1}, {c2} and {c3} tiles: four more each step. In "
-     "{4,5} it is {h1}, {h2} and {h3}.",
-     {"fewer", "more"}},
-    {{"No way back",
-      "The fewest steps home after a walk are not what a flat map says: {home}, not {flat}.",
-      "After N, E, S, W, S, W, N, N, how few steps take you back to the start tile?",
-      "Lesson 5: walk N, E, S, W, S, W, N, N, following the markers: a figure eight round two "
-      "trees. Then think how you would walk home.",
-      "Answer: {home}. You walked {steps} steps and stand {flat} cells from your start cell, "
-      "yet the fewest steps home are {home} (tile {end}): a flat map's {flat} is wrong here.",
-      "Count the tiles between your end and the start on the picture, not the cells."},
-     "Answer: {home}. In the flat grid the way home is what the map says: {home} steps, the "
-     "cells between you and the start.",
-     {"fewer", "more"}},
-    {{"Puzzle: the square walk",
-      "A square walk goes round one tree; {q} squares stand round it, so you are home after "
-      "{times} squares.",
-      "How many times must you walk N, E, S, W to stand on your start tile again?",
-      "Lesson 6: walk N, E, S, W again and again, following the markers, until they bring you "
-      "home. Count the squares. Hint: every step goes round the same tree.",
-      "Answer: {times}. Each step of N, E, S, W goes round the same tree, and {q} squares "
-      "stand round it: after {times} square(s), {walked} steps, you are on O again.",
-      "Every step of the square goes round the same tree."},
-     NULL,
-     {"fewer", "more"}},
+/* Per lesson: title, goal, question, walk, check, hint (the columns of
+ * enum hol_lesson_part), then the choices or the scale's two anchors. */
+static const char *const hol__lessons[HOL_LESSONS][HOL_LESSON_PARTS + HOL_APP_MAX_CHOICES] = {
+    {HOL__SHEET("One step, one tile"),
+     HOL__SHEET("A square walk N, E, S, W closes on paper, not in the hyperbolic plane."),
+     "Walk N, E, S, W. Are you back on your start tile?",
+     "Walk N, E, S, W: step onto each marker and watch where you end.",
+     "Answer: {yesno}. You ended on tile {end}, {home} step(s) from the start O: {q} squares "
+     "meet at each corner, so four right turns {close} a square.",
+     HOL__SHEET("Count the squares that meet at one corner of your cell."), "Yes", "No"},
+    {HOL__SHEET("Corners"),
+     HOL__SHEET("{q} squares meet at a corner: a corner is {deg} degrees, a square's four "
+                "sum to {sum}."),
+     "How many squares meet at a corner (round one tree)?",
+     "Walk round the tree at your cell's north-west corner, following the markers, back to "
+     "your start tile. Count the tiles.",
+     "Answer: {q}. So a square's corner is 360/{q} = {deg} degrees, and its four corners sum "
+     "to {sum} (360 on paper).",
+     HOL__SHEET("The walk ends on the tile where it began: count its steps."), "fewer", "more"},
+    {HOL__SHEET("Holonomy"),
+     HOL__SHEET("A walk round one tree brings you back to your cell but onto another tile "
+                "(holonomy)."),
+     "You walk N, W, S, E round a tree, back to your cell. Where is the start tile?",
+     "Walk N, W, S, E round the tree, following the markers, then point to the start tile.",
+     "Answer: {dir}. Back in your cell, you are on tile {end}: {q} squares stand round the "
+     "tree and you passed {steps}, so the start lies {bearing}.",
+     HOL__SHEET("A tree has {q} squares round it, and you walk past four."), "Under my feet",
+     "North", "East", "South", "West"},
+    {HOL__SHEET("Growth"),
+     HOL__SHEET("Tiles at 1, 2, 3 steps: {c1}, {c2}, {c3}; on a flat grid {f1}, {f2}, {f3}."),
+     "How many tiles lie exactly 3 steps from the start tile?",
+     "Walk the ring of cells round your start, following the markers.",
+     "Answer: {c3}. At 1, 2, 3 steps lie {c1}, {c2}, {c3} tiles; on a flat grid {f1}, {f2}, "
+     "{f3}; in {4,5} {h1}, {h2}, {h3}.",
+     HOL__SHEET("On a flat grid there are {f3}; here each tile has more neighbours."), "fewer",
+     "more"},
+    {HOL__SHEET("No way back"),
+     HOL__SHEET("The fewest steps home are not what a flat map says: {home}, not {flat}."),
+     "After N, E, S, W, S, W, N, N, how few steps take you to the start tile?",
+     "Walk N, E, S, W, S, W, N, N, following the markers. Then think how you would walk home.",
+     "Answer: {home}. You stand {flat} cells from your start cell but {home} steps from the "
+     "start tile (you are on {end}).",
+     HOL__SHEET("Count the tiles on the picture, not the cells."), "fewer", "more"},
+    {HOL__SHEET("Puzzle: the square walk"),
+     HOL__SHEET("A square walk goes round one tree of {q} squares: home after {times}."),
+     "How many times must you walk N, E, S, W to stand on your start tile again?",
+     "Walk N, E, S, W again and again, following the markers, until you are home. Hint: each "
+     "step goes round the same tree.",
+     "Answer: {times}. Each step goes round the same tree, which has {q} squares round it: "
+     "after {times} square(s), {walked} steps, you are home.",
+     HOL__SHEET("Every step of the square goes round the same tree."), "fewer", "more"},
 };
 
-/* A number of degrees: whole when it is, else one decimal. */
-static void hol__deg(double d, char *buf, size_t cap)
-{
-    if (fabs(d - floor(d + 0.5)) < 1e-9)
-        snprintf(buf, cap, "%.0f", d);
-    else
-        snprintf(buf, cap, "%.1f", d);
-}
+/* The facts' names, in the order hol__fact numbers them. */
+static const char *const hol__names[] = {
+    "q",  "deg", "sum", "home", "flat", "times", "walked", "steps", "c1",    "c2",    "c3",
+    "f1", "f2",  "f3",  "h1",   "h2",   "h3",    "end",    "dir",   "yesno", "close", "bearing"};
+#define HOL__NUMBERS 17 /* the names before "end" are numbers */
 
-/* The fact named by name (n bytes) as text into buf: 0, or -1 for no
- * such fact. */
-static int hol__fact(const hol_lesson_facts *f, const char *name, size_t n, char *buf,
-                     size_t cap)
+/* The fact named by name (n bytes) as text into buf (at least 32 bytes):
+ * 0, or -1 for no such fact. */
+static int hol__fact(const hol_lesson_facts *f, const char *name, size_t n, char *buf)
 {
-    static const char *const counts[3] = {"c", "f", "h"};
     static const char *const dirs[5] = {"under your feet", "north", "east", "south", "west"};
-#define HOL__IS(s) (n == strlen(s) && !memcmp(name, s, n))
-    if (HOL__IS("q"))
-        snprintf(buf, cap, "%d", f->q);
-    else if (HOL__IS("deg"))
-        hol__deg(f->corner_deg, buf, cap);
-    else if (HOL__IS("sum"))
-        hol__deg(f->square_deg, buf, cap);
-    else if (HOL__IS("end"))
+    int k = 0, nn = (int)(sizeof hol__names / sizeof hol__names[0]);
+    while (k < nn && !(strlen(hol__names[k]) == n && !memcmp(hol__names[k], name, n)))
+        k++;
+    double v[HOL__NUMBERS] = {f->q,       f->corner_deg, f->square_deg, f->home,
+                              f->flat_home, f->repeats,  4 * f->repeats, f->nroute};
+    for (int d = 1; d <= 3; d++) {
+        v[7 + d] = (double)f->count[d];
+        v[10 + d] = (double)f->flat_count[d];
+        v[13 + d] = (double)f->curved_count[d];
+    }
+    if (k < HOL__NUMBERS) /* a number: whole when it is, else one decimal */
+        snprintf(buf, 32, fabs(v[k] - floor(v[k] + 0.5)) < 1e-9 ? "%.0f" : "%.1f", v[k]);
+    else if (k == HOL__NUMBERS)
         hol_tile_print(f->end, buf);
-    else if (HOL__IS("home"))
-        snprintf(buf, cap, "%d", f->home);
-    else if (HOL__IS("flat"))
-        snprintf(buf, cap, "%d", f->flat_home);
-    else if (HOL__IS("steps"))
-        snprintf(buf, cap, "%d", f->nroute);
-    else if (HOL__IS("bearing"))
-        snprintf(buf, cap, "%.0f", f->has_bearing ? f->bearing_deg : 0.0);
-    else if (HOL__IS("dir"))
-        snprintf(buf, cap, "%s", dirs[f->lesson == 3 ? f->answer : 0]);
-    else if (HOL__IS("yesno"))
-        snprintf(buf, cap, "%s", f->lesson == 1 && !f->answer ? "yes" : "no");
-    else if (HOL__IS("times"))
-        snprintf(buf, cap, "%d", f->repeats);
-    else if (HOL__IS("walked"))
-        snprintf(buf, cap, "%d", 4 * f->repeats);
-    else if (n == 2 && name[1] >= '1' && name[1] <= '3') {
-        int d = name[1] - '0', k = 0;
-        while (k < 3 && name[0] != counts[k][0])
-            k++;
-        if (k == 3)
-            return -1;
-        const uint64_t *c = k == 0 ? f->count : k == 1 ? f->flat_count : f->curved_count;
-        snprintf(buf, cap, "%llu", (unsigned long long)c[d]);
-    } else
-        return -1;
-#undef HOL__IS
-    return 0;
+    else if (k == HOL__NUMBERS + 4 && f->has_bearing)
+        snprintf(buf, 32, "at %.0f degrees", f->bearing_deg);
+    else if (k < nn)
+        snprintf(buf, 32, "%s",
+                 k == HOL__NUMBERS + 1   ? dirs[f->lesson == 3 ? f->answer : 0]
+                 : k == HOL__NUMBERS + 2 ? (f->lesson == 1 && !f->answer ? "yes" : "no")
+                 : k == HOL__NUMBERS + 3 ? (f->q == 4 ? "close" : "do not close")
+                                         : "under you");
+    return k < nn ? 0 : -1;
 }
 
 int hol_lesson_text(const hol_lesson_facts *f, int part, char *out, size_t cap)
@@ -156,9 +121,7 @@ int hol_lesson_text(const hol_lesson_facts *f, int part, char *out, size_t cap)
     if (!f || f->lesson < 1 || f->lesson > HOL_LESSONS || part < 0 || part >= HOL_LESSON_PARTS ||
         !cap)
         return -1;
-    const hol__lesson_row *row = &hol__lessons[f->lesson - 1];
-    const char *s = part == HOL_LESSON_CHECK && f->q == 4 && row->flat_check ? row->flat_check
-                                                                             : row->part[part];
+    const char *s = hol__lessons[f->lesson - 1][part];
     size_t len = 0;
     out[0] = 0;
     while (*s) {
@@ -166,7 +129,7 @@ int hol_lesson_text(const hol_lesson_facts *f, int part, char *out, size_t cap)
         const char *piece = s, *close = *s == '{' ? strchr(s, '}') : NULL;
         size_t n = 1;
         /* "{4,5}" is no fact: only {name} of a fact is replaced */
-        if (close && !hol__fact(f, s + 1, (size_t)(close - s - 1), fact, sizeof fact)) {
+        if (close && !hol__fact(f, s + 1, (size_t)(close - s - 1), fact)) {
             piece = fact;
             n = strlen(fact);
             s = close + 1;
@@ -186,5 +149,5 @@ const char *hol_lesson_label(const hol_lesson_facts *f, int k)
 {
     if (!f || f->lesson < 1 || f->lesson > HOL_LESSONS || k < 0 || k >= HOL_APP_MAX_CHOICES)
         return NULL;
-    return hol__lessons[f->lesson - 1].labels[k];
+    return hol__lessons[f->lesson - 1][HOL_LESSON_PARTS + k];
 }
