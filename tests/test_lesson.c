@@ -137,8 +137,8 @@ static void test_facts_against_model(void **state)
                 assert_int_equal(hol_room_step(&r, f.route[i]), HOL_OK);
             uint8_t walk[64];
             hol_nav_result res;
-            assert_int_equal(hol_nav_find(nav, &r, hol_tile_origin_q(q), 0, walk, sizeof walk, &res),
-                             HOL_OK);
+            assert_int_equal(
+                hol_nav_find(nav, &r, hol_tile_origin_q(q), 0, walk, sizeof walk, &res), HOL_OK);
             assert_true(res.exact);
             if (n == 5) /* the lesson that states it: the room takes no more */
                 assert_int_equal(res.len, f.home);

@@ -108,7 +108,8 @@ int play_lesson_level(const char *cmd, int n, hol_level *levels, int *nlevels)
     *nlevels = 0;
     if (hol_level_make(name, strlen(name), text, strlen(text), &levels[0], &le)) {
         char msg[300];
-        cli_error(cmd, 0, "cannot make lesson %d: %s", n, hol_level_err_format(&le, 1, msg, sizeof msg));
+        cli_error(cmd, 0, "cannot make lesson %d: %s", n,
+                  hol_level_err_format(&le, 1, msg, sizeof msg));
         return CLI_EXIT_FAIL;
     }
     *nlevels = 1;
