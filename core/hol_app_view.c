@@ -393,4 +393,5 @@ void hol__fill_view(hol_app *app, const hol_input *in)
     hol__fill_hud(app, in);
     hol__fill_map(app);
     hol__fill_lights(app);
+    hol_body_from_input(in, app->view.state == HOL_APP_POINT, &app->view.body);
 }

@@ -6,6 +6,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "hol_body_draw.h"
 #include "hol_hud.h"
 
 uint64_t hol__fnv(uint64_t h, const void *p, size_t n)
@@ -124,6 +125,18 @@ static hol_err hol__queue_room(hol_render *r, const hol_frame_desc *f, double ce
     hol__item *it = hol__queue_push(r, HOL__PASS_ROOM, 0, r->room_nidx);
     if (it)
         it->key = 1u << 24;
+    return HOL_OK;
+}
+
+/* The body (hol_frame_desc.body): built in room coordinates into the
+ * frame's dynamic geometry, drawn in the room's pass after its meshes. */
+static hol_err hol__queue_body(hol_render *r, const hol_frame_desc *f)
+{
+    uint32_t i0 = r->dyn.ni;
+    hol_body_build(&r->dyn, f->body);
+    if (r->dyn.overflow)
+        return HOL_ENOMEM;
+    hol__queue_push_dyn(r, HOL__PASS_ROOM, i0, 1, NULL);
     return HOL_OK;
 }
 
@@ -299,6 +312,8 @@ hol_err hol__build(hol_render *r, const hol_frame_desc *f)
     if (!r->view.wedges && (err = hol__queue_leaves(r, f)))
         return err;
     if (!bare && (err = hol__queue_room(r, f, m)))
+        return err;
+    if (!bare && f->body && (err = hol__queue_body(r, f)))
         return err;
     if ((err = hol__queue_tiles(r, f, bare, m)))
         return err;

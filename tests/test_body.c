@@ -1,0 +1,239 @@
+/* test_body.c - the body a headset shows (core/hol_body.h): which hands
+ * are drawn as what, the pointing ray, and the hands-only recentre
+ * gesture with scripted joints, down to the app's recentre (issue 36).
+ */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "../core/hol_app.h"
+#include "../core/hol_body.h"
+#include "../core/hol_input_io.h"
+#include "app_fixture.h"
+
+/* A scripted hand h (HOL_HAND_*) with its wrist at c: fingers ahead (-z),
+ * its palm up or down, the thumb's tip on the index's (a pinch) or apart. */
+static hol_hand_joints hand(int h, const float c[3], int up, int pinch)
+{
+    hol_hand_joints j;
+    memset(&j, 0, sizeof j);
+    j.tracked = 1;
+    /* the right palm up has the index on +x (index x pinky = +y) */
+    float s = (h == HOL_HAND_RIGHT ? 1.0f : -1.0f) * (up ? 1.0f : -1.0f);
+    for (int i = 0; i < HOL_HAND_JOINTS; i++) {
+        float x = 0, z = 0;
+        if (i >= HOL_JOINT_THUMB_METACARPAL && i <= HOL_JOINT_THUMB_TIP) {
+            int k = i - HOL_JOINT_THUMB_METACARPAL;
+            x = s * (0.03f + 0.01f * (float)k);
+            z = -0.01f * (float)(k + 1);
+        } else if (i >= HOL_JOINT_INDEX_METACARPAL) {
+            int f = (i - HOL_JOINT_INDEX_METACARPAL) / 5, k = (i - HOL_JOINT_INDEX_METACARPAL) % 5;
+            x = s * (0.03f - 0.02f * (float)f);
+            z = -0.03f - 0.02f * (float)k;
+        }
+        j.pos[i][0] = c[0] + x;
+        j.pos[i][1] = c[1];
+        j.pos[i][2] = c[2] + z;
+        j.radius[i] = 0.008f;
+    }
+    if (pinch)
+        for (int k = 0; k < 3; k++)
+            j.pos[HOL_JOINT_THUMB_TIP][k] = j.pos[HOL_JOINT_INDEX_TIP][k] + (k == 1 ? 0.01f : 0);
+    return j;
+}
+
+static void both(hol_hand_joints j[2], int up_l, int up_r, int pinch)
+{
+    const float cl[3] = {1.3f, 1.0f, 1.2f}, cr[3] = {1.7f, 1.0f, 1.2f};
+    j[0] = hand(HOL_HAND_LEFT, cl, up_l, pinch);
+    j[1] = hand(HOL_HAND_RIGHT, cr, up_r, pinch);
+}
+
+/* Controllers by profile, tracked hands by their joints, poses bit for
+ * bit; nothing untracked; the ray only while pointing with a head. */
+static void test_body_from_input(void **state)
+{
+    (void)state;
+    hol_body b;
+    hol_body_from_input(NULL, 1, &b);
+    assert_int_equal(b.hand[0].kind, HOL_BODY_NONE);
+    assert_int_equal(b.ray_hand, -1);
+    hol_input in = app_head(1, 1, 1, 0, HOL_DEVICE_XR_TOUCH, 0);
+    in.flags |= HOL_INPUT_HAND_R_VALID;
+    in.hand[1].pos[0] = 1.234567f;
+    in.hand[1].quat[1] = 0.6f;
+    in.hand[1].quat[3] = 0.8f;
+    hol_body_from_input(&in, 0, &b);
+    assert_int_equal(b.hand[0].kind, HOL_BODY_NONE);
+    assert_int_equal(b.hand[1].kind, HOL_BODY_CONTROLLER);
+    assert_int_equal(b.hand[1].model, HOL_BODY_MODEL_TOUCH);
+    assert_memory_equal(&b.hand[1].pose, &in.hand[1], sizeof in.hand[1]);
+    assert_int_equal(b.ray_hand, -1);
+    hol_body_from_input(&in, 1, &b);
+    assert_int_equal(b.ray_hand, HOL_HAND_RIGHT);
+    assert_true(b.ray_m == HOL_BODY_RAY_M);
+    in.flags &= ~(uint32_t)HOL_INPUT_HEAD_VALID; /* pancake: no ray */
+    hol_body_from_input(&in, 1, &b);
+    assert_int_equal(b.ray_hand, -1);
+    assert_int_equal(hol_body_model_of(HOL_DEVICE_XR_VIVE), HOL_BODY_MODEL_WAND);
+    assert_int_equal(hol_body_model_of(HOL_DEVICE_XR_INDEX), HOL_BODY_MODEL_INDEX);
+    assert_int_equal(hol_body_model_of(HOL_DEVICE_XR_SIMPLE), HOL_BODY_MODEL_PLAIN);
+    /* a tracked hand: its joints, the grip as its pose (or the wrist) */
+    in = app_head(1, 1, 1, 0, HOL_DEVICE_WEBXR_HAND, 0);
+    both(in.joints, 1, 0, 0);
+    hol_body_from_input(&in, 1, &b);
+    assert_int_equal(b.hand[0].kind, HOL_BODY_HAND);
+    assert_int_equal(b.hand[1].kind, HOL_BODY_HAND);
+    assert_memory_equal(&b.hand[0].joints, &in.joints[0], sizeof in.joints[0]);
+    assert_true(b.hand[0].pose.pos[0] == in.joints[0].pos[HOL_JOINT_WRIST][0]);
+    assert_true(b.hand[0].pose.quat[3] == 1);
+    assert_int_equal(b.ray_hand, -1); /* no grip to point with */
+    assert_int_equal(hol_input_valid(&in), 1);
+    in.joints[1].pos[3][1] = NAN; /* a tracked joint must be finite */
+    assert_int_equal(hol_input_valid(&in), 0);
+}
+
+/* Palms: up and open, down, pinching; one hand alone never fires. */
+static void test_palm_up(void **state)
+{
+    (void)state;
+    hol_hand_joints j[2];
+    both(j, 1, 1, 0);
+    assert_true(hol_gesture_palm_up(&j[0], HOL_HAND_LEFT));
+    assert_true(hol_gesture_palm_up(&j[1], HOL_HAND_RIGHT));
+    /* the other hand's rule: a left hand read as a right is palm down */
+    assert_false(hol_gesture_palm_up(&j[0], HOL_HAND_RIGHT));
+    both(j, 0, 0, 0);
+    assert_false(hol_gesture_palm_up(&j[0], HOL_HAND_LEFT));
+    assert_false(hol_gesture_palm_up(&j[1], HOL_HAND_RIGHT));
+    both(j, 1, 1, 1); /* a pinch is not an open hand */
+    assert_false(hol_gesture_palm_up(&j[1], HOL_HAND_RIGHT));
+    j[1].tracked = 0;
+    assert_false(hol_gesture_palm_up(&j[1], HOL_HAND_RIGHT));
+}
+
+/* Held 1 s: one recentre at the record that reaches it, none after while
+ * held, none for one palm or a pinch, again after a palm went down. */
+static void test_gesture_hold(void **state)
+{
+    (void)state;
+    hol_gesture g;
+    memset(&g, 0, sizeof g);
+    hol_hand_joints up[2], down[2], one[2], pinch[2];
+    both(up, 1, 1, 0);
+    both(down, 0, 0, 0);
+    both(one, 1, 0, 0);
+    both(pinch, 1, 1, 1);
+    int fired = 0;
+    double at = -1;
+    for (int i = 0; i <= 40; i++) { /* 2 s at 20 Hz */
+        double t = 10 + i * 0.05;
+        uint32_t b = hol_gesture_step(&g, up, t);
+        if (b) {
+            assert_int_equal(b, HOL_BTN_RECENTRE);
+            fired++;
+            at = t;
+        }
+    }
+    assert_int_equal(fired, 1);
+    assert_true(fabs(at - 11.0) < 1e-9);
+    assert_int_equal(hol_gesture_step(&g, down, 12.1), 0);
+    for (int i = 0; i < 30; i++) {
+        assert_int_equal(hol_gesture_step(&g, one, 13 + i * 0.1), 0);
+    }
+    for (int i = 0; i < 30; i++)
+        assert_int_equal(hol_gesture_step(&g, pinch, 17 + i * 0.1), 0);
+    /* a hold broken at 0.9 s starts again */
+    for (int i = 0; i <= 9; i++)
+        assert_int_equal(hol_gesture_step(&g, up, 21 + i * 0.1), 0);
+    assert_int_equal(hol_gesture_step(&g, down, 22.0), 0);
+    assert_int_equal(hol_gesture_step(&g, up, 22.1), 0);
+    assert_int_equal(hol_gesture_step(&g, up, 23.05), 0);
+    assert_int_equal(hol_gesture_step(&g, up, 23.1), HOL_BTN_RECENTRE);
+}
+
+/* The hands-only recentre does what the controller's does: two apps get
+ * the same headset records (a walk west turned west, then the platform's
+ * room placed from the head), one with the recentre button pressed, the
+ * other with scripted hands held palms up, the button coming only from
+ * hol_gesture_step as a platform puts it in. Their rooms, heads, panels
+ * and steps agree at every record, and the recentre happened (no step,
+ * the cell the head's, the panel re-centred). */
+static void test_hands_recentre(void **state)
+{
+    (void)state;
+    hol_app *a = make_app(), *b = make_app();
+    hol_app_level L;
+    memset(&L, 0, sizeof L);
+    L.mode = HOL_APP_FLAG;
+    L.seed = 5;
+    assert_int_equal(hol_tile_parse("Wrfl", -1, &L.flag), HOL_OK);
+    L.cues = HOL_CUE_ALL;
+    assert_int_equal(hol_app_start_level(a, &L), HOL_OK);
+    assert_int_equal(hol_app_start_level(b, &L), HOL_OK);
+    const hol_app_view *va = hol_app_get_view(a), *vb = hol_app_get_view(b);
+    hol_gesture g;
+    memset(&g, 0, sizeof g);
+    int pressed_at = -1, recentres0 = 0;
+    hol_room walked;
+    memset(&walked, 0, sizeof walked);
+    for (int i = 0; i < 50; i++) {
+        double t = i * 0.05;
+        /* 0..0.5 s in the middle; then west, turned west; from the press
+         * (2.0 s: palms up from 1.0 s) the platform's room placed from
+         * the head: the middle, north */
+        int west = i >= 10 && i < 40;
+        hol_input in = app_head(t, west ? 0 : 1, 1, west ? 90 : 0, HOL_DEVICE_WEBXR_HAND, 0);
+        in.flags |= HOL_INPUT_HEADSET;
+        hol_input hb = in;
+        both(hb.joints, i >= 20, i >= 20, 0); /* palms down, then up from 1.0 s */
+        uint32_t gest = (hb.flags & HOL_INPUT_FOCUSED) ? hol_gesture_step(&g, hb.joints, t) : 0;
+        hb.pressed |= gest;
+        hb.buttons |= gest;
+        if (gest) {
+            assert_int_equal(pressed_at, -1);
+            pressed_at = i;
+            in.pressed = in.buttons = HOL_BTN_RECENTRE;
+            walked = va->user;
+            recentres0 = va->panel.recentres;
+        }
+        const hol_app_events *ea = step(a, in);
+        int na = ea->nsteps;
+        const hol_app_events *eb = step(b, hb);
+        assert_int_equal(na, eb->nsteps);
+        assert_memory_equal(&va->user, &vb->user, sizeof va->user);
+        assert_memory_equal(va->head, vb->head, sizeof va->head);
+        assert_true(va->yaw_deg == vb->yaw_deg);
+        assert_memory_equal(&va->panel, &vb->panel, sizeof va->panel);
+        assert_int_equal(va->hud.steps, vb->hud.steps);
+        assert_int_equal(vb->body.hand[0].kind, HOL_BODY_HAND);
+        assert_int_equal(va->body.hand[0].kind, HOL_BODY_NONE);
+        if (i == pressed_at) {
+            assert_int_equal(eb->nsteps, 0);
+            assert_true(hol_tile_eq(vb->user.tile, walked.tile));
+            assert_int_equal(vb->user.col, 1);
+            assert_int_equal(vb->user.orient, (walked.orient + 1) & 3);
+            assert_true(vb->panel.recentres > recentres0);
+        }
+    }
+    assert_int_equal(pressed_at, 40);
+    assert_int_equal(vb->hud.steps, 1);
+    hol_app_destroy(a);
+    hol_app_destroy(b);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_body_from_input),
+        cmocka_unit_test(test_palm_up),
+        cmocka_unit_test(test_gesture_hold),
+        cmocka_unit_test(test_hands_recentre),
+    };
+    return cmocka_run_group_tests(tests, setup, teardown);
+}
