@@ -94,10 +94,11 @@ static void hol__controller(hol_mesh *m, int k, const hol_pose *p)
     hol__place(m, v0, rot, t);
 }
 
-/* A sphere of radius r at c (8 slices, 6 stacks). */
+/* A sphere of radius r at c (10 slices, 8 stacks: its facets lie at most
+ * 5 % of r inside it). */
 static void hol__sphere(hol_mesh *m, const float c[3], float r, const uint8_t rgb[3])
 {
-    enum { SL = 8, ST = 6 };
+    enum { SL = 10, ST = 8 };
     int64_t b = hol_mesh_reserve(m, (SL + 1) * (ST + 1), 6 * SL * ST);
     if (b < 0)
         return;

@@ -15,43 +15,13 @@
 #include "../core/hol_body.h"
 #include "../core/hol_input_io.h"
 #include "app_fixture.h"
-
-/* A scripted hand h (HOL_HAND_*) with its wrist at c: fingers ahead (-z),
- * its palm up or down, the thumb's tip on the index's (a pinch) or apart. */
-static hol_hand_joints hand(int h, const float c[3], int up, int pinch)
-{
-    hol_hand_joints j;
-    memset(&j, 0, sizeof j);
-    j.tracked = 1;
-    /* the right palm up has the index on +x (index x pinky = +y) */
-    float s = (h == HOL_HAND_RIGHT ? 1.0f : -1.0f) * (up ? 1.0f : -1.0f);
-    for (int i = 0; i < HOL_HAND_JOINTS; i++) {
-        float x = 0, z = 0;
-        if (i >= HOL_JOINT_THUMB_METACARPAL && i <= HOL_JOINT_THUMB_TIP) {
-            int k = i - HOL_JOINT_THUMB_METACARPAL;
-            x = s * (0.03f + 0.01f * (float)k);
-            z = -0.01f * (float)(k + 1);
-        } else if (i >= HOL_JOINT_INDEX_METACARPAL) {
-            int f = (i - HOL_JOINT_INDEX_METACARPAL) / 5, k = (i - HOL_JOINT_INDEX_METACARPAL) % 5;
-            x = s * (0.03f - 0.02f * (float)f);
-            z = -0.03f - 0.02f * (float)k;
-        }
-        j.pos[i][0] = c[0] + x;
-        j.pos[i][1] = c[1];
-        j.pos[i][2] = c[2] + z;
-        j.radius[i] = 0.008f;
-    }
-    if (pinch)
-        for (int k = 0; k < 3; k++)
-            j.pos[HOL_JOINT_THUMB_TIP][k] = j.pos[HOL_JOINT_INDEX_TIP][k] + (k == 1 ? 0.01f : 0);
-    return j;
-}
+#include "hand_fixture.h"
 
 static void both(hol_hand_joints j[2], int up_l, int up_r, int pinch)
 {
-    const float cl[3] = {1.3f, 1.0f, 1.2f}, cr[3] = {1.7f, 1.0f, 1.2f};
-    j[0] = hand(HOL_HAND_LEFT, cl, up_l, pinch);
-    j[1] = hand(HOL_HAND_RIGHT, cr, up_r, pinch);
+    const double cl[3] = {1.3, 1.0, 1.2}, cr[3] = {1.7, 1.0, 1.2};
+    hand_fixture(HOL_HAND_LEFT, cl, 0, up_l, pinch, &j[0]);
+    hand_fixture(HOL_HAND_RIGHT, cr, 0, up_r, pinch, &j[1]);
 }
 
 /* Controllers by profile, tracked hands by their joints, poses bit for
