@@ -156,7 +156,8 @@ var HolWebLib = {
       if (HolXR.off) return HolXR.off;
       var names = ['frame', 'nviews', 'visibility', 'head_valid', 'head_pos', 'head_quat',
         'bounds', 'view', 'view_size', 'vp', 'proj', 'pos', 'quat', 'pad', 'pad_size',
-        'present', 'touch_layout', 'grip_valid', 'grip_pos', 'grip_quat', 'button', 'axes', 'hand'];
+        'present', 'touch_layout', 'grip_valid', 'grip_pos', 'grip_quat', 'button', 'axes', 'hand',
+        'joints_valid', 'joint'];
       var o = {};
       for (var i = 0; i < names.length; i++) o[names[i]] = Module['_hol_web_xr_offset'](i);
       HolXR.off = o;
@@ -304,6 +305,7 @@ var HolWebLib = {
         if (src.hand) {
           f[p + o.present] = 1;
           f[p + o.hand] = 1;
+          HolXR.joints(xrf, src.hand, f, p + o.joints_valid, p + o.joint);
         }
         var ev = HolXR.held && HolXR.held[src.handedness];
         if (ev && (ev[0] || ev[1])) {
@@ -320,6 +322,48 @@ var HolWebLib = {
         var ax = gp.axes || [];
         for (var k = 0; k < 4; k++) f[p + o.axes + k] = typeof ax[k] === 'number' ? ax[k] : 0;
       }
+    },
+
+    // A tracked hand's 25 joints (XRHand's order): x, y, z in the reference
+    // space and the radius each, and 1 at `valid` when every joint has a
+    // pose (drawn, and the hands-only recentre: hol_web_xr.h). fillPoses
+    // and fillJointRadii where the browser has them (no object a joint).
+    joints: function (xrf, hand, f, valid, at) {
+      var sp = hand.holSpaces;
+      if (!sp) {
+        sp = [];
+        var it = hand.values(), r;
+        while (!(r = it.next()).done) sp.push(r.value);
+        hand.holSpaces = sp;
+      }
+      if (sp.length !== 25) return;
+      var m = HolXR.jointBuf || (HolXR.jointBuf = new Float32Array(16 * 25));
+      var rad = HolXR.jointRad || (HolXR.jointRad = new Float32Array(25));
+      var ok = false;
+      try {
+        if (xrf.fillPoses && xrf.fillJointRadii) {
+          ok = xrf.fillPoses(sp, HolXR.space, m) && xrf.fillJointRadii(sp, rad);
+        } else {
+          ok = true;
+          for (var i = 0; i < 25 && ok; i++) {
+            var jp = xrf.getJointPose(sp[i], HolXR.space);
+            if (!jp) { ok = false; break; }
+            var q = jp.transform.position;
+            m[16 * i + 12] = q.x; m[16 * i + 13] = q.y; m[16 * i + 14] = q.z;
+            rad[i] = jp.radius;
+          }
+        }
+      } catch (e) {
+        ok = false;
+      }
+      if (!ok) return;
+      for (var i = 0; i < 25; i++) {
+        f[at + 4 * i] = m[16 * i + 12];
+        f[at + 4 * i + 1] = m[16 * i + 13];
+        f[at + 4 * i + 2] = m[16 * i + 14];
+        f[at + 4 * i + 3] = rad[i];
+      }
+      f[valid] = 1;
     },
 
     // Bounded-floor: the polygon handed to the C side's fit (hol_web_xr_fit:

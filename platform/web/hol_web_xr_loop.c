@@ -32,7 +32,7 @@ enum {
     HOL__OFF_VIEW_VP, HOL__OFF_VIEW_PROJ, HOL__OFF_VIEW_POS, HOL__OFF_VIEW_QUAT, HOL__OFF_PAD,
     HOL__OFF_PAD_FLOATS, HOL__OFF_PAD_PRESENT, HOL__OFF_PAD_TOUCH, HOL__OFF_PAD_GRIP_VALID,
     HOL__OFF_PAD_GRIP_POS, HOL__OFF_PAD_GRIP_QUAT, HOL__OFF_PAD_BUTTON, HOL__OFF_PAD_AXES,
-    HOL__OFF_PAD_HAND
+    HOL__OFF_PAD_HAND, HOL__OFF_PAD_JOINTS_VALID, HOL__OFF_PAD_JOINT
 };
 
 EMSCRIPTEN_KEEPALIVE int hol_web_xr_offset(int what)
@@ -62,6 +62,8 @@ EMSCRIPTEN_KEEPALIVE int hol_web_xr_offset(int what)
         F(offsetof(hol_web_xr_pad, button)),
         F(offsetof(hol_web_xr_pad, axes)),
         F(offsetof(hol_web_xr_pad, hand)),
+        F(offsetof(hol_web_xr_pad, joints_valid)),
+        F(offsetof(hol_web_xr_pad, joint)),
     };
 #undef F
     return what >= 0 && what < (int)(sizeof off / sizeof off[0]) ? off[what] : -1;
