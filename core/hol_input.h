@@ -141,17 +141,9 @@ enum { HOL_HAND_LEFT = 0, HOL_HAND_RIGHT = 1 };
  * four of the thumb (metacarpal, proximal, distal, tip) and five of each
  * finger (metacarpal, proximal, intermediate, distal, tip). */
 #define HOL_HAND_JOINTS 25
-enum {
-    HOL_JOINT_WRIST = 0,
-    HOL_JOINT_THUMB_METACARPAL = 1,
-    HOL_JOINT_THUMB_TIP = 4,
-    HOL_JOINT_INDEX_METACARPAL = 5,
-    HOL_JOINT_INDEX_TIP = 9,
-    HOL_JOINT_MIDDLE_METACARPAL = 10,
-    HOL_JOINT_MIDDLE_TIP = 14,
-    HOL_JOINT_RING_METACARPAL = 15,
-    HOL_JOINT_PINKY_METACARPAL = 20,
-    HOL_JOINT_PINKY_TIP = 24
+enum { /* the joints the app reads (a finger's: its metacarpal + 0..4) */
+    HOL_JOINT_WRIST = 0, HOL_JOINT_THUMB_METACARPAL = 1, HOL_JOINT_THUMB_TIP = 4,
+    HOL_JOINT_INDEX_METACARPAL = 5, HOL_JOINT_INDEX_TIP = 9, HOL_JOINT_PINKY_METACARPAL = 20
 };
 
 typedef struct hol_hand_joints {
