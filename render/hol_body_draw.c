@@ -94,39 +94,64 @@ static void hol__controller(hol_mesh *m, int k, const hol_pose *p)
     hol__place(m, v0, rot, t);
 }
 
-/* A sphere of radius r at c (10 slices, 8 stacks: its facets lie at most
- * 5 % of r inside it). */
-static void hol__sphere(hol_mesh *m, const float c[3], float r, const uint8_t rgb[3])
+/* The unit sphere of the joints (10 slices, 8 stacks: its facets lie at
+ * most 5 % of the radius inside it), made once per body: its points, which
+ * are its normals, and those as the vertices' bytes. */
+enum { HOL__SL = 10, HOL__ST = 8, HOL__SV = (HOL__SL + 1) * (HOL__ST + 1) };
+typedef struct hol__unit_sphere {
+    float p[HOL__SV][3];
+    int8_t n[HOL__SV][3];
+} hol__unit_sphere;
+
+static void hol__unit(hol__unit_sphere *u)
 {
-    enum { SL = 10, ST = 8 };
-    int64_t b = hol_mesh_reserve(m, (SL + 1) * (ST + 1), 6 * SL * ST);
+    double st[HOL__ST + 1], ct[HOL__ST + 1], sp[HOL__SL + 1], cp[HOL__SL + 1];
+    for (int i = 0; i <= HOL__ST; i++) {
+        st[i] = sin(3.14159265358979 * i / HOL__ST);
+        ct[i] = cos(3.14159265358979 * i / HOL__ST);
+    }
+    for (int j = 0; j <= HOL__SL; j++) {
+        sp[j] = sin(6.28318530717959 * j / HOL__SL);
+        cp[j] = cos(6.28318530717959 * j / HOL__SL);
+    }
+    for (int i = 0, k = 0; i <= HOL__ST; i++)
+        for (int j = 0; j <= HOL__SL; j++, k++) {
+            double n[3] = {st[i] * cp[j], ct[i], -st[i] * sp[j]};
+            for (int c = 0; c < 3; c++) {
+                u->p[k][c] = (float)n[c];
+                u->n[k][c] = hol__snorm(n[c]);
+            }
+        }
+}
+
+/* A sphere of radius r at c (the unit sphere u scaled and moved). */
+static void hol__sphere(hol_mesh *m, const hol__unit_sphere *u, const float c[3], float r,
+                        const uint8_t rgb[3])
+{
+    int64_t b = hol_mesh_reserve(m, HOL__SV, 6 * HOL__SL * HOL__ST);
     if (b < 0)
         return;
-    for (int i = 0; i <= ST; i++) {
-        double th = 3.14159265358979 * i / ST;
-        for (int j = 0; j <= SL; j++) {
-            double ph = 6.28318530717959 * j / SL;
-            double n[3] = {sin(th) * cos(ph), cos(th), -sin(th) * sin(ph)};
-            hol_vertex *v = &m->v[m->nv++];
-            for (int k = 0; k < 3; k++) {
-                v->pos[k] = c[k] + (float)(r * n[k]);
-                v->nrm[k] = hol__snorm(n[k]);
-            }
-            v->nrm[3] = 0;
-            memcpy(v->rgba, rgb, 3);
-            v->rgba[3] = HOL_MESH_PROP;
+    for (int k = 0; k < HOL__SV; k++) {
+        hol_vertex *v = &m->v[m->nv++];
+        for (int i = 0; i < 3; i++) {
+            v->pos[i] = c[i] + r * u->p[k][i];
+            v->nrm[i] = u->n[k][i];
         }
+        v->nrm[3] = 0;
+        memcpy(v->rgba, rgb, 3);
+        v->rgba[3] = HOL_MESH_PROP;
     }
-    for (int i = 0; i < ST; i++)
-        for (int j = 0; j < SL; j++) {
-            uint32_t a = (uint32_t)b + (uint32_t)(i * (SL + 1) + j), d = a + SL + 1;
+    for (int i = 0; i < HOL__ST; i++)
+        for (int j = 0; j < HOL__SL; j++) {
+            uint32_t a = (uint32_t)b + (uint32_t)(i * (HOL__SL + 1) + j), d = a + HOL__SL + 1;
             uint32_t tri[6] = {a, d, a + 1, a + 1, d, d + 1};
             for (int k = 0; k < 6; k++)
                 m->idx[m->ni++] = tri[k];
         }
 }
 
-/* A cylinder of radius r from a to b (6 sides). */
+/* A cylinder of radius r from a to b: 6 sides, smooth, no caps (the
+ * joints' spheres cover its ends). */
 static void hol__bone(hol_mesh *m, const float a[3], const float b[3], float r,
                       const uint8_t rgb[3])
 {
@@ -136,7 +161,7 @@ static void hol__bone(hol_mesh *m, const float a[3], const float b[3], float r,
         return;
     for (int k = 0; k < 3; k++)
         d[k] /= len;
-    /* u, w across the bone: rot's columns (u, d, w) */
+    /* u, w across the bone */
     double u[3] = {d[1], -d[0], 0};
     if (fabs(d[2]) > 0.9)
         u[0] = 0, u[1] = d[2], u[2] = -d[1];
@@ -144,21 +169,39 @@ static void hol__bone(hol_mesh *m, const float a[3], const float b[3], float r,
     for (int k = 0; k < 3; k++)
         u[k] /= un;
     double w[3] = {u[1] * d[2] - u[2] * d[1], u[2] * d[0] - u[0] * d[2], u[0] * d[1] - u[1] * d[0]};
-    double rot[9] = {u[0], d[0], w[0], u[1], d[1], w[1], u[2], d[2], w[2]};
-    double t[3] = {a[0], a[1], a[2]};
-    uint32_t v0 = m->nv;
-    hol_mesh_frustum(m, 6, r, 0, r, (float)len, rgb);
-    hol__place(m, v0, rot, t);
+    int64_t base = hol_mesh_reserve(m, 12, 36);
+    if (base < 0)
+        return;
+    static const double cs[6][2] = {{1, 0}, {0.5, 0.8660254037844386}, {-0.5, 0.8660254037844386},
+                                    {-1, 0}, {-0.5, -0.8660254037844386}, {0.5, -0.8660254037844386}};
+    for (int end = 0; end < 2; end++)
+        for (int i = 0; i < 6; i++) {
+            hol_vertex *v = &m->v[m->nv++];
+            for (int k = 0; k < 3; k++) {
+                double n = cs[i][0] * u[k] + cs[i][1] * w[k];
+                v->pos[k] = (end ? b[k] : a[k]) + (float)(r * n);
+                v->nrm[k] = hol__snorm(n);
+            }
+            v->nrm[3] = 0;
+            memcpy(v->rgba, rgb, 3);
+            v->rgba[3] = HOL_MESH_PROP;
+        }
+    for (uint32_t i = 0; i < 6; i++) {
+        uint32_t j = (i + 1) % 6, a0 = (uint32_t)base + i, a1 = (uint32_t)base + j;
+        uint32_t tri[6] = {a0, a1, a1 + 6, a0, a1 + 6, a0 + 6};
+        for (int k = 0; k < 6; k++)
+            m->idx[m->ni++] = tri[k];
+    }
 }
 
 /* A tracked hand: its joints' spheres and the bones between them (each
  * joint after the wrist joins the one before it in its finger; each
  * finger's first joins the wrist). */
-static void hol__hand(hol_mesh *m, const hol_hand_joints *j)
+static void hol__hand(hol_mesh *m, const hol__unit_sphere *u, const hol_hand_joints *j)
 {
     for (int i = 0; i < HOL_HAND_JOINTS; i++) {
         float r = j->radius[i] > 0 ? j->radius[i] : HOL__JOINT_R;
-        hol__sphere(m, j->pos[i], r, hol__skin_rgb);
+        hol__sphere(m, u, j->pos[i], r, hol__skin_rgb);
     }
     for (int i = 1; i < HOL_HAND_JOINTS; i++) {
         int first = i == HOL_JOINT_THUMB_METACARPAL || (i >= HOL_JOINT_INDEX_METACARPAL &&
@@ -172,12 +215,15 @@ static void hol__hand(hol_mesh *m, const hol_hand_joints *j)
 
 void hol_body_build(hol_mesh *m, const hol_body *b)
 {
+    hol__unit_sphere u;
+    if (b->hand[0].kind == HOL_BODY_HAND || b->hand[1].kind == HOL_BODY_HAND)
+        hol__unit(&u);
     for (int h = 0; h < 2; h++) {
         const hol_body_part *p = &b->hand[h];
         if (p->kind == HOL_BODY_CONTROLLER)
             hol__controller(m, p->model, &p->pose);
         else if (p->kind == HOL_BODY_HAND)
-            hol__hand(m, &p->joints);
+            hol__hand(m, &u, &p->joints);
     }
     if (b->ray_hand < 0 || b->ray_hand > 1 || !(b->ray_m > 0))
         return;

@@ -128,14 +128,28 @@ static hol_err hol__queue_room(hol_render *r, const hol_frame_desc *f, double ce
     return HOL_OK;
 }
 
-/* The body (hol_frame_desc.body): built in room coordinates into the
+/* The body (hol_frame_desc.body): built in room coordinates (once while
+ * it stays the same: both eyes of a frame share it), copied into the
  * frame's dynamic geometry, drawn in the room's pass after its meshes. */
 static hol_err hol__queue_body(hol_render *r, const hol_frame_desc *f)
 {
-    uint32_t i0 = r->dyn.ni;
-    hol_body_build(&r->dyn, f->body);
-    if (r->dyn.overflow)
+    uint64_t key = hol__fnv(0xcbf29ce484222325ull, f->body, sizeof *f->body);
+    if (!r->body_valid || r->body_key != key) {
+        hol_mesh_clear(&r->body);
+        hol_body_build(&r->body, f->body);
+        r->body_valid = !r->body.overflow;
+        r->body_key = key;
+        if (r->body.overflow)
+            return HOL_ENOMEM;
+    }
+    int64_t b = hol_mesh_reserve(&r->dyn, r->body.nv, r->body.ni);
+    if (b < 0)
         return HOL_ENOMEM;
+    uint32_t i0 = r->dyn.ni;
+    memcpy(r->dyn.v + b, r->body.v, r->body.nv * sizeof r->body.v[0]);
+    r->dyn.nv += r->body.nv;
+    for (uint32_t i = 0; i < r->body.ni; i++)
+        r->dyn.idx[r->dyn.ni++] = (uint32_t)b + r->body.idx[i];
     hol__queue_push_dyn(r, HOL__PASS_ROOM, i0, 1, NULL);
     return HOL_OK;
 }
