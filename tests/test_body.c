@@ -64,6 +64,17 @@ static void test_body_from_input(void **state)
     assert_true(b.hand[0].pose.quat[3] == 1);
     assert_int_equal(b.ray_hand, -1); /* no grip to point with */
     assert_int_equal(hol_input_valid(&in), 1);
+    /* the line format keeps no joints: a line read back has none, the
+     * rest bit for bit */
+    char line[HOL_INPUT_LINE_MAX + 1];
+    size_t n = hol_input_format(&in, line, sizeof line);
+    assert_true(n > 0);
+    hol_input back;
+    assert_int_equal(hol_input_parse(line, n, &back, NULL), HOL_OK);
+    assert_int_equal(back.joints[0].tracked, 0);
+    hol_input want = in;
+    memset(want.joints, 0, sizeof want.joints);
+    assert_memory_equal(&back, &want, sizeof want);
     in.joints[1].pos[3][1] = NAN; /* a tracked joint must be finite */
     assert_int_equal(hol_input_valid(&in), 0);
 }

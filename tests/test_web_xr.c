@@ -13,6 +13,7 @@
 
 #include <cmocka.h>
 
+#include "../core/hol_input_io.h"
 #include "../platform/web/hol_web_xr.h"
 #include "hand_fixture.h"
 
@@ -348,6 +349,13 @@ static void test_hands_recentre(void **state)
         hol_web_xr_input(&st, &f, 10 + k / 72.0, &in);
         assert_int_equal(in.pressed & HOL_BTN_RECENTRE, 0);
     }
+    /* a joint the browser lost (NaN): that hand has none, the record stays
+     * valid */
+    f.pad[1].joint[12][1] = NAN;
+    hol_web_xr_input(&st, &f, 20, &in);
+    assert_int_equal(in.joints[0].tracked, 1);
+    assert_int_equal(in.joints[1].tracked, 0);
+    assert_true(hol_input_valid(&in));
 }
 
 static void test_bounds(void **state)
