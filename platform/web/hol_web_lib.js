@@ -326,42 +326,22 @@ var HolWebLib = {
 
     // A tracked hand's 25 joints (XRHand's order): x, y, z in the reference
     // space and the radius each, and 1 at `valid` when every joint has a
-    // pose (drawn, and the hands-only recentre: hol_web_xr.h). fillPoses
-    // and fillJointRadii where the browser has them (no object a joint).
+    // pose (drawn, and the hands-only recentre: hol_web_xr.h), read with
+    // fillPoses and fillJointRadii (the Hand Input module's; no object a
+    // joint); none where the browser lacks them.
     joints: function (xrf, hand, f, valid, at) {
-      var sp = hand.holSpaces;
-      if (!sp) {
-        sp = [];
-        var it = hand.values(), r;
-        while (!(r = it.next()).done) sp.push(r.value);
-        hand.holSpaces = sp;
-      }
-      if (sp.length !== 25) return;
-      var m = HolXR.jointBuf || (HolXR.jointBuf = new Float32Array(16 * 25));
-      var rad = HolXR.jointRad || (HolXR.jointRad = new Float32Array(25));
-      var ok = false;
+      var sp = hand.holSpaces || (hand.holSpaces = Array.from(hand.values()));
+      var m = HolXR.jm || (HolXR.jm = new Float32Array(400)), r = HolXR.jr || (HolXR.jr = new Float32Array(25));
       try {
-        if (xrf.fillPoses && xrf.fillJointRadii) {
-          ok = xrf.fillPoses(sp, HolXR.space, m) && xrf.fillJointRadii(sp, rad);
-        } else {
-          ok = true;
-          for (var i = 0; i < 25 && ok; i++) {
-            var jp = xrf.getJointPose(sp[i], HolXR.space);
-            if (!jp) { ok = false; break; }
-            var q = jp.transform.position;
-            m[16 * i + 12] = q.x; m[16 * i + 13] = q.y; m[16 * i + 14] = q.z;
-            rad[i] = jp.radius;
-          }
-        }
+        if (sp.length !== 25 || !xrf.fillPoses(sp, HolXR.space, m) || !xrf.fillJointRadii(sp, r)) return;
       } catch (e) {
-        ok = false;
+        return;
       }
-      if (!ok) return;
       for (var i = 0; i < 25; i++) {
         f[at + 4 * i] = m[16 * i + 12];
         f[at + 4 * i + 1] = m[16 * i + 13];
         f[at + 4 * i + 2] = m[16 * i + 14];
-        f[at + 4 * i + 3] = rad[i];
+        f[at + 4 * i + 3] = r[i];
       }
       f[valid] = 1;
     },
