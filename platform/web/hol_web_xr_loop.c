@@ -256,16 +256,19 @@ static void xr_render(const hol_app_view *v, const hol_input *in, int fb)
         }
         if (checking) {
             /* the check compares the world with `holonomy render` (no
-             * HUD): it reads back a draw without the UI panel, then the
-             * eye is drawn again as shown */
-            hol_frame_desc bare = fd;
+             * HUD, no body: it draws none): it reads back a draw without
+             * the UI panel, then one with it (the panel's pixels differ),
+             * then the eye is drawn again as shown */
+            hol_frame_desc bare = fd, shown = fd;
             bare.flags |= HOL_RENDER_NO_HUD;
+            bare.body = shown.body = NULL;
             hol_render_frame(w->rnd, &bare, NULL);
             w->check_user[e] = fd.user;
             w->check_cam[e] = fd.cam;
             check_eye(e, &bare);
+            hol_render_frame(w->rnd, &shown, NULL);
+            check_read(2 + e, &shown);
             hol_render_frame(w->rnd, &fd, NULL);
-            check_read(2 + e, &fd); /* as shown: the panel's pixels differ */
             printf("web: check panel eye %d frame %ld pos %.9g,%.9g,%.9g orient "
                    "%.9g,%.9g,%.9g,%.9g px %.9g map %d\n",
                    e, w->xr_frames, fd.panel_pos[0], fd.panel_pos[1], fd.panel_pos[2],
