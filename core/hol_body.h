@@ -12,6 +12,9 @@
  *   body is drawn in the room (the eye's frame), never moved by a tile's
  *   transform, so after any loop of room steps the hands are drawn where
  *   the real hands are (holonomy turns the world, not the room).
+ * - The app (hol_app_view.body) leaves the left controller out while the
+ *   minimap is in the hand (HOL_MINIMAP_HAND): the platforms draw the map
+ *   at that grip, so the map is what it holds (a tracked hand stays).
  * - The ray: while the pointing question is asked with a tracked head
  *   (state HOL_APP_POINT) from the hand that points (hol_app_point: the
  *   right grip when tracked, else the left), along the grip's -z axis,

@@ -208,6 +208,43 @@ static void test_hands_recentre(void **state)
     hol_app_destroy(b);
 }
 
+/* With the minimap in the hand the left controller is not drawn (the map
+ * is drawn at its grip); the right one is, and a tracked left hand too. */
+static void test_map_in_hand(void **state)
+{
+    (void)state;
+    hol_app *app = make_app();
+    hol_app_level L;
+    memset(&L, 0, sizeof L);
+    L.mode = HOL_APP_EXPLORE;
+    L.minimap = HOL_MINIMAP_HAND;
+    assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    const hol_app_view *v = hol_app_get_view(app);
+    hol_input in = app_head(0, 1, 1, 0, HOL_DEVICE_XR_TOUCH, 0);
+    in.flags |= HOL_INPUT_HAND_L_VALID | HOL_INPUT_HAND_R_VALID;
+    in.hand[0].quat[3] = in.hand[1].quat[3] = 1;
+    step(app, in);
+    assert_int_equal(v->map.place, HOL_MINIMAP_HAND);
+    assert_int_equal(v->body.hand[0].kind, HOL_BODY_NONE);
+    assert_int_equal(v->body.hand[1].kind, HOL_BODY_CONTROLLER);
+    in = app_head(0.1, 1, 1, 0, HOL_DEVICE_XR_TOUCH, HOL_BTN_MINIMAP); /* the map off */
+    in.flags |= HOL_INPUT_HAND_L_VALID | HOL_INPUT_HAND_R_VALID;
+    in.hand[0].quat[3] = in.hand[1].quat[3] = 1;
+    step(app, in);
+    assert_int_equal(v->map.place, HOL_MINIMAP_OFF);
+    assert_int_equal(v->body.hand[0].kind, HOL_BODY_CONTROLLER);
+    in = app_head(0.2, 1, 1, 0, HOL_DEVICE_WEBXR_HAND, HOL_BTN_MINIMAP); /* hands, the map back */
+    both(in.joints, 0, 0, 0);
+    step(app, in);
+    assert_int_equal(v->map.place, HOL_MINIMAP_HUD);
+    in = app_head(0.3, 1, 1, 0, HOL_DEVICE_WEBXR_HAND, HOL_BTN_MINIMAP);
+    both(in.joints, 0, 0, 0);
+    step(app, in);
+    assert_int_equal(v->map.place, HOL_MINIMAP_HAND);
+    assert_int_equal(v->body.hand[0].kind, HOL_BODY_HAND);
+    hol_app_destroy(app);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -215,6 +252,7 @@ int main(void)
         cmocka_unit_test(test_palm_up),
         cmocka_unit_test(test_gesture_hold),
         cmocka_unit_test(test_hands_recentre),
+        cmocka_unit_test(test_map_in_hand),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }
