@@ -49,6 +49,7 @@
 #include <stdint.h>
 
 #include "hol_alloc.h"
+#include "hol_body.h"
 #include "hol_err.h"
 #include "hol_haptic.h"
 #include "hol_input.h"
@@ -454,6 +455,11 @@ typedef struct hol_app_view {
                                          level's spots; 0: round */
     int sound;                        /* the level's hol_app_sound (the
                                          sources: core/hol_sound.h) */
+    hol_body body;                    /* the controllers and tracked hands
+                                         at the record's room poses, and
+                                         the pointing question's ray
+                                         (core/hol_body.h); drawn in the
+                                         room, for every eye */
 } hol_app_view;
 
 /* One room step, for the per-step log. */

@@ -404,4 +404,10 @@ void hol__fill_view(hol_app *app, const hol_input *in)
     hol__fill_hud(app, in);
     hol__fill_map(app);
     hol__fill_lights(app);
+    hol_body *b = &app->view.body;
+    hol_body_from_input(in, app->view.state == HOL_APP_POINT, b);
+    /* the minimap in the hand is what the left controller holds: drawn
+     * instead of it (core/hol_body.h) */
+    if (app->view.map.place == HOL_MINIMAP_HAND && b->hand[HOL_HAND_LEFT].kind == HOL_BODY_CONTROLLER)
+        b->hand[HOL_HAND_LEFT].kind = HOL_BODY_NONE;
 }

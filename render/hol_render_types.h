@@ -202,6 +202,12 @@ typedef struct hol_frame_desc {
     double panel_pos[3];
     double panel_orient[4];
     double panel_px;
+    /* The body (core/hol_body.h: controllers, tracked hands, the pointing
+     * ray; NULL: none): drawn in room coordinates in the room's pass
+     * (render/hol_body_draw.h), depth-tested and written, with the room's
+     * light, in every tile the same: never moved by a tile's transform.
+     * Not with HOL_RENDER_BARE. */
+    const hol_body *body;
 } hol_frame_desc;
 
 /* 4.3 mm: a capital (7 font pixels) 30 mm high, 1.15 degrees at 1.5 m */

@@ -62,7 +62,8 @@ typedef struct hol_web {
     /* read-back check of both eyes at one XR frame (make web-test) */
     long check_frame;        /* -1: none */
     uint8_t *check_px[4]; /* the check frame's eyes: 0, 1 without the HUD;
-                             2, 3 as shown (with the UI panel) */
+                             2, 3 with the UI panel (neither with the
+                             body: holonomy render draws none) */
     int check_w[4], check_h[4];
     hol_camera check_cam[2];
     hol_room check_user[2];

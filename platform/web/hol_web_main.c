@@ -179,7 +179,10 @@ static void poll_gamepad(hol_web_pancake *p)
  * level, 7 the session is over, 8 failed, 9 head x, 10 head z, 11 cell
  * column, 12 cell row, 13 the level clock, 14 yaw, 15 the device the
  * prompts name (HOL_DEVICE_*), 16 the looping sound sources playing
- * (0 before the first gesture, with ?sound=0, or without WebAudio). */
+ * (0 before the first gesture, with ?sound=0, or without WebAudio), 17
+ * the tracked hands at the last XR frame (bits: 1, 2 the left's and the
+ * right's joints; 4, 8 their palms up and open: hol_web_xr.h), 18 the
+ * body parts drawn (controllers and hands: hol_app_view.body). */
 EMSCRIPTEN_KEEPALIVE double hol_web_state(int what)
 {
     hol_web *w = &hol_web_g;
@@ -192,6 +195,7 @@ EMSCRIPTEN_KEEPALIVE double hol_web_state(int what)
     case 7: return w->over;
     case 8: return w->failed;
     case 16: return hol_web_sound_active();
+    case 17: return w->xr.hands;
     default: break;
     }
     if (!v)
@@ -207,6 +211,7 @@ EMSCRIPTEN_KEEPALIVE double hol_web_state(int what)
     case 13: return v->hud.elapsed_s;
     case 14: return v->yaw_deg;
     case 15: return v->hud.device;
+    case 18: return (v->body.hand[0].kind != 0) + (v->body.hand[1].kind != 0);
     default: return -1;
     }
 }
