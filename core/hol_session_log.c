@@ -79,7 +79,7 @@ void hol__log_levels(hol_session *s)
             seen |= !memcmp(s->levels[j].sha256, s->levels[i].sha256, 32);
         if (seen)
             continue;
-        hol__put_file(s, live, 0, s->levels[i].text, s->levels[i].len);
+        hol__put_file(s, live, 0, s->levels[i].text, s->levels[i].hashed);
         hol__rename(s, live, name);
     }
 }

@@ -1,0 +1,50 @@
+#!/bin/sh
+# cli_onset.sh - a trial's onset (issue 35 item 6): one level_sha256 per
+# level of a condition, whether or not it is the participant's last level
+# (its closing and questionnaires `after study` are outside the hash), the
+# level-HASH.txt of that hash holding the text its name is the sha256sum
+# of; a resumed session begins on the ready screen (the clock waits for a
+# confirm). Under Xvfb (when installed).
+. "$(dirname "$0")/lib.sh"
+
+mkdir "$T/s"
+printf 'mode flag\nseed 5\nflag Nf\n' >"$T/s/f.lvl"
+printf 'study on\nclosing Thank you.\nquestionnaire ssq after study\ncondition a\nlevel f.lvl\nset minimap hud\ncondition b\nlevel f.lvl\nset minimap hand\n' >"$T/s/on.study"
+S=$T/s/on.study
+
+if ! command -v Xvfb >/dev/null 2>&1; then
+    echo "note: no Xvfb here: the onset is not played"
+    finish cli_onset
+    exit $?
+fi
+start_xvfb 37 || { bad "Xvfb did not start"; finish cli_onset; exit $?; }
+case $H in /*) ;; *) H=$PWD/$H ;; esac
+cd "$T" || exit 1
+
+# the first level done (5 steps), confirm: the second (the last) starts
+# and the input ends (its attempt open)
+{ walk_input WNESE; printf '1.5 f=9 p=1 h=2.5,1.6,1.5,0,0,0,1\n1.75 f=9 h=2.5,1.6,1.5,0,0,0,1\n'; } >in1
+# "condition position level_sha256" of each row
+rows() { awk -F, 'NR > 1 { print $7, $8, $10 }' "$1/summary.csv"; }
+run "P01 (a, b)" 0 "$H" play --study "$S" --participant P01 --size 64x48 --log l1 --input in1 --record r1.rec
+run "P02 (b, a)" 0 "$H" play --study "$S" --participant P02 --size 64x48 --log l2 --input in1
+[ "$(rows l1 | awk '{ print $1, $2 }' | tr '\n' ';')" = "a 1;b 2;" ] && ok || bad "P01: $(rows l1)"
+[ "$(rows l2 | awk '{ print $1, $2 }' | tr '\n' ';')" = "b 1;a 2;" ] && ok || bad "P02: $(rows l2)"
+# condition b: P01's last level, P02's first; a: the other way round
+for c in a b; do
+    h1=$(rows l1 | awk -v c=$c '$1 == c { print $3 }')
+    h2=$(rows l2 | awk -v c=$c '$1 == c { print $3 }')
+    [ -n "$h1" ] && [ "$h1" = "$h2" ] && ok || bad "condition $c: two level_sha256, $h1 and $h2"
+done
+# each level file's name is its sha256sum
+for f in l1/level-*.txt l2/level-*.txt; do
+    [ "$(sha256sum <"$f" | cut -c1-64)" = "$(basename "$f" .txt | cut -c7-)" ] && ok ||
+        bad "$f: its sha256sum is not its name"
+done
+[ "$(ls l1/level-*.txt | wc -l)" = 2 ] && ok || bad "l1: $(ls l1)"
+# the recording (the last level's text with its closing) replays to the
+# same rows and level files
+run "replay P01" 0 "$H" replay r1.rec --log l1r
+cmp -s l1/summary.csv l1r/summary.csv && ok || bad "replay: $(cat l1r/summary.csv)"
+[ "$(cd l1 && ls level-*)" = "$(cd l1r && ls level-*)" ] && ok || bad "replay's levels: $(ls l1r)"
+finish cli_onset
