@@ -165,9 +165,17 @@ enum hol_app_minimap_place { HOL_MINIMAP_HUD = 0, HOL_MINIMAP_HAND = 1, HOL_MINI
 
 enum hol_app_screen {
     HOL_APP_SCREEN_NONE = 0,
-    HOL_APP_SCREEN_INSTRUCTIONS = 1, /* before the level: confirm begins it */
-    HOL_APP_SCREEN_CLOSING = 2       /* after the last level: confirm ends */
+    HOL_APP_SCREEN_INSTRUCTIONS = 1, /* before the level: confirm shows the ready screen */
+    HOL_APP_SCREEN_CLOSING = 2,      /* after the last level: confirm ends */
+    HOL_APP_SCREEN_READY = 3         /* HOL_APP_READY_TEXT, after the instructions
+                                        and on a resume (hol_app_ready): confirm
+                                        begins the level, and its clock */
 };
+/* Before the clock starts (the instructions, the ready screen) nothing of
+ * the level shows but the world around: no minimap (view.map.place
+ * HOL_MINIMAP_OFF), no objective on it, no game object (issue 35). */
+#define HOL_APP_READY_TEXT "Ready? The clock starts when you begin."
+
 
 /* Questionnaires (issue 26 item 7; docs/research.md "Questionnaires"):
  * items (`question` level lines, or the presets ssq and tlx: core/hol_ask.h)
@@ -562,6 +570,12 @@ hol_err hol_app_start_level(hol_app *app, const hol_app_level *level);
  * next frame. Errors: HOL_EARG (no level, or item not one of its items:
  * nothing changed). */
 hol_err hol_app_ask_from(hol_app *app, int item);
+
+/* Right after hol_app_start_level: the level begins on the ready screen
+ * (HOL_APP_SCREEN_READY; a resumed session's first level), after its
+ * instructions if it has them. Errors: HOL_EARG (no level: nothing
+ * changed). */
+hol_err hol_app_ready(hol_app *app);
 
 /* Make (or find) the navigator of the tiling {4,q} and a room of cols x
  * rows cells (0: 5, 3, 3), so that no level start pays for it: platforms

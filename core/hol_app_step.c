@@ -424,6 +424,19 @@ hol_err hol_app_start_level(hol_app *app, const hol_app_level *level)
     return HOL_OK;
 }
 
+hol_err hol_app_ready(hol_app *app)
+{
+    if (!app->have_level)
+        return HOL_EARG;
+    if (app->screen != HOL_APP_SCREEN_INSTRUCTIONS) {
+        app->screen = HOL_APP_SCREEN_READY;
+        app->view.state = HOL_APP_SCREEN;
+        app->place_panel = 1;
+        hol__fill_view(app, NULL);
+    }
+    return HOL_OK;
+}
+
 /* ---- the step ------------------------------------------------------------ */
 
 /* The room steps of one motion, st->n of them, taken at level time t. */
@@ -614,8 +627,9 @@ static hol_err hol__move(hol_app *app, const hol_input *in, double t0, double dt
 }
 
 /* A frame of a screen of text (state HOL_APP_SCREEN): quit quits, confirm
- * goes on (the instructions: the level begins at the next frame; the
- * closing screen: the session ends); nothing else acts. */
+ * goes on (the instructions: the ready screen; the ready screen: the level
+ * begins at the next frame, its minimap shown; the closing screen: the
+ * session ends); nothing else acts. */
 static void hol__screen_frame(hol_app *app, const hol_input *in, uint32_t pressed)
 {
     hol_app_view *v = &app->view;
@@ -628,9 +642,12 @@ static void hol__screen_frame(hol_app *app, const hol_input *in, uint32_t presse
     } else if ((pressed & HOL_BTN_CONFIRM) && !v->paused) {
         if (app->screen == HOL_APP_SCREEN_CLOSING) {
             app->ev.next_level = 1;
+        } else if (app->screen == HOL_APP_SCREEN_INSTRUCTIONS) {
+            app->screen = HOL_APP_SCREEN_READY;
         } else {
             app->screen = HOL_APP_SCREEN_NONE;
             v->state = HOL_APP_PLAYING; /* pending_start: the next frame */
+            v->map.place = app->level.minimap;
         }
     }
     if (in->flags & HOL_INPUT_HEAD_VALID) /* the look follows the head */

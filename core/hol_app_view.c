@@ -243,6 +243,7 @@ static void hol__fill_lines(const hol_app *app, hol_app_hud *h)
     }
     if (v->state == HOL_APP_SCREEN) { /* the screen's text, whole */
         const char *text = app->screen == HOL_APP_SCREEN_CLOSING ? app->level.closing
+                           : app->screen == HOL_APP_SCREEN_READY ? HOL_APP_READY_TEXT
                                                                  : app->level.instructions;
         int n = hol_app_wrap(text, HOL_APP_SCREEN_COLS, h->lines, HOL_APP_HUD_LINES);
         h->nlines = n < HOL_APP_HUD_LINES ? n : HOL_APP_HUD_LINES;
@@ -349,6 +350,13 @@ static void hol__fill_map(hol_app *app)
     int tut = L->mode == HOL_APP_TUTORIAL;
     int opt = tut ? app->stage_optimum : app->optimum, taken = tut ? app->stage_steps : app->steps;
     m->npath = 0;
+    if (v->state == HOL_APP_SCREEN && app->screen != HOL_APP_SCREEN_CLOSING) {
+        /* before the clock starts: no minimap, no objective (issue 35) */
+        m->place = HOL_MINIMAP_OFF;
+        m->nobjectives = m->nmarks = v->nobjects = 0;
+        v->tree_marked = 0;
+        return;
+    }
     if ((L->cues & HOL_CUE_PATH) && !app->done && opt >= 0 && app->remaining >= 0 &&
         taken + app->remaining > opt + app->d.stray_steps) {
         m->npath = app->nwalk < HOL_APP_PATH_MAX ? app->nwalk : HOL_APP_PATH_MAX;

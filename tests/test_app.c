@@ -1679,6 +1679,67 @@ static void test_time_limit(void **state)
     hol_app_destroy(app);
 }
 
+/* A trial's onset (issue 35): an instruction screen's view has no
+ * minimap, no objective on it and no flag in the world; the ready screen
+ * (after the instructions, or hol_app_ready: a resume) keeps the clock at
+ * 0 and counts no step, however long it is read; its confirm begins the
+ * level, minimap and flag shown. */
+static void test_onset_ready(void **state)
+{
+    (void)state;
+    hol_app *app = make_app();
+    hol_app_level L = flag_level("N");
+    L.minimap = HOL_MINIMAP_HAND;
+    snprintf(L.instructions, sizeof L.instructions, "Find the flag.");
+    assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    const hol_app_view *v = hol_app_get_view(app);
+    assert_int_equal(v->hud.screen, HOL_APP_SCREEN_INSTRUCTIONS);
+    assert_int_equal(v->map.place, HOL_MINIMAP_OFF);
+    assert_int_equal(v->map.nobjectives, 0);
+    assert_int_equal(v->nobjects, 0);
+    step(app, app_head(0, 1, 1, 0, HOL_DEVICE_KEYBOARD, 0));
+    assert_int_equal(v->map.place, HOL_MINIMAP_OFF);
+    step(app, app_head(1, 1, 1, 0, HOL_DEVICE_KEYBOARD, HOL_BTN_CONFIRM));
+    assert_int_equal(v->hud.screen, HOL_APP_SCREEN_READY);
+    assert_int_equal(v->map.place, HOL_MINIMAP_OFF);
+    assert_int_equal(v->nobjects, 0);
+    /* read for a minute, walking onto the flag: no step, no clock */
+    const hol_app_events *ev = step(app, app_head(30, 1, 0, 0, HOL_DEVICE_KEYBOARD, 0));
+    assert_int_equal(ev->nsteps, 0);
+    ev = step(app, app_head(61, 1, 1, 0, HOL_DEVICE_KEYBOARD, 0));
+    assert_int_equal(ev->level_started, 0);
+    assert_true(v->hud.elapsed_s == 0);
+    assert_int_equal(v->state, HOL_APP_SCREEN);
+    step(app, app_head(62, 1, 1, 0, HOL_DEVICE_KEYBOARD, HOL_BTN_CONFIRM));
+    ev = step(app, app_head(63, 1, 1, 0, HOL_DEVICE_KEYBOARD, 0));
+    assert_int_equal(ev->level_started, 1);
+    assert_true(v->hud.elapsed_s == 0);
+    assert_int_equal(v->map.place, HOL_MINIMAP_HAND);
+    assert_int_equal(v->map.nobjectives, 1);
+    assert_int_equal(v->nobjects, 1);
+    ev = step(app, app_head(63.5, 1, 0, 0, HOL_DEVICE_KEYBOARD, 0));
+    assert_int_equal(ev->level_ended, HOL_APP_END_DONE);
+    assert_true(ev->summary.time_s > 0.49 && ev->summary.time_s < 0.51);
+    /* a resumed level without instructions: the ready screen alone */
+    L.instructions[0] = 0;
+    assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    assert_int_equal(hol_app_ready(app), HOL_OK);
+    assert_int_equal(v->hud.screen, HOL_APP_SCREEN_READY);
+    assert_int_equal(v->map.place, HOL_MINIMAP_OFF);
+    ev = step(app, app_head(70, 1, 1, 0, HOL_DEVICE_KEYBOARD, 0));
+    assert_int_equal(ev->level_started, 0);
+    ev = step(app, app_head(90, 1, 0, 0, HOL_DEVICE_KEYBOARD, 0));
+    assert_int_equal(ev->nsteps, 0);
+    step(app, app_head(91, 1, 1, 0, HOL_DEVICE_KEYBOARD, HOL_BTN_CONFIRM));
+    ev = step(app, app_head(92, 1, 1, 0, HOL_DEVICE_KEYBOARD, 0));
+    assert_int_equal(ev->level_started, 1);
+    assert_true(v->hud.elapsed_s == 0);
+    hol_app_destroy(app);
+    app = make_app(); /* no level: refused */
+    assert_int_equal(hol_app_ready(app), HOL_EARG);
+    hol_app_destroy(app);
+}
+
 /* A tutorial of lessons 2 and 4 only: it begins with lesson 2 (round a
  * tree) and goes on to lesson 4. */
 static void test_tutorial_stages(void **state)
@@ -1754,6 +1815,7 @@ int main(void)
         cmocka_unit_test(test_objectives_on_free_tiles),
         cmocka_unit_test(test_tutorial),
         cmocka_unit_test(test_time_limit),
+        cmocka_unit_test(test_onset_ready),
         cmocka_unit_test(test_safety_hud),
         cmocka_unit_test(test_tutorial_stages),
         cmocka_unit_test(test_tutorial_feedback),
