@@ -140,7 +140,7 @@ void hol_rec_write_header(const hol_rec_meta *m, const hol_level *levels, int nl
     for (int i = 0; i < nlevels; i++)
         study |= levels[i].condition[0] != 0;
     /* version 4 only with a session number, a study's hash, meta or ask */
-    int four = m->session_no > 0 || m->study_sha256[0] || m->meta[0] || m->ask_item > 0;
+    int four = m->session_no > 0 || m->study_sha256[0] || m->meta[0] || m->ask_item > 0 || m->ready;
     hol__emitf(fn, ctx, "holonomy-rec %d\n", four ? 4 : study ? 3 : 2);
     hol__emitf(fn, ctx, "session %s\n", m->session);
     if (m->participant[0])
@@ -161,6 +161,8 @@ void hol_rec_write_header(const hol_rec_meta *m, const hol_level *levels, int nl
     }
     if (m->ask_item > 0)
         hol__emitf(fn, ctx, "ask %s %d %d\n", m->ask_session, m->ask_attempt, m->ask_item);
+    if (m->ready)
+        hol__emitf(fn, ctx, "ready\n");
     for (int i = 0; i < nlevels; i++) {
         hol__emitf(fn, ctx, "level %s\n", levels[i].name);
         if (levels[i].condition[0])
@@ -310,10 +312,16 @@ static long hol__rec_num(const char *s, size_t len, size_t *i, long max)
     return *i == b || s[b] == '0' || n > max ? -1 : n;
 }
 
-/* "ask ID ATTEMPT ITEM" (version 4, once, before the first level). 1 when
- * the line was one. */
+/* "ask ID ATTEMPT ITEM" or "ready" (version 4, once each, before the
+ * first level). 1 when the line was one. */
 static int hol__ask_line(hol_rec_reader *r, const char *s, size_t len, hol_err *err)
 {
+    if (len == 5 && !memcmp(s, "ready", 5) && r->version >= 4) { /* "ready", once */
+        int ok = r->state == HOL__META && !r->meta.ready;
+        r->meta.ready = 1;
+        *err = ok ? HOL_OK : hol__bad(r, HOL_EPARSE, "not a valid 'ready' line (once, before the levels)");
+        return 1;
+    }
     if (len < 4 || memcmp(s, "ask ", 4) || r->version < 4)
         return 0;
     const char *sp = memchr(s + 4, ' ', len - 4);

@@ -23,6 +23,9 @@
  *                           are asked from ITEM (1..255), the answers on
  *                           attempt ATTEMPT (1..999999) of session ID
  *                           (version 4, optional; meta.ask_*)
+ *     ready                 a resumed session: its first level begins on
+ *                           the ready screen (version 4, optional, once;
+ *                           meta.ready)
  *     level NAME            each level of the session, in order:
  *     condition NAME POS    its study condition and position (version 3)
  *     L LINE                its text's lines (hol_level.h), then
@@ -97,6 +100,9 @@ typedef struct hol_rec_meta {
      * ask_attempt (1..999999) of session ask_session; 0, 0, "": none */
     char ask_session[HOL_REC_ID_MAX];
     int ask_attempt, ask_item;
+    /* 1: a resumed session: its first level begins on the ready screen
+     * (hol_app_ready; issue 35); 0: none */
+    int ready;
 } hol_rec_meta;
 
 /* 1 when k (n bytes) is a meta KEY: 1..32 of a-z, 0-9, '_'. */

@@ -75,6 +75,9 @@
  *   meta.ask_attempt: the rows a report groups with the first answers);
  *   then the session goes on as after its last item. The recording says
  *   so (hol_rec.h `ask`), so a replay does the same.
+ * - A resumed session's first level (meta.ready, issue 35) begins on the
+ *   ready screen (hol_app_ready): its clock starts at the confirm. The
+ *   recording says so (hol_rec.h `ready`).
  * - Studies: a level's labels (hol_level: condition, position) and the
  *   study's name (meta.study) fill the summary's study, condition and
  *   position; all three are empty for a level without a condition.

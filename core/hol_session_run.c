@@ -206,6 +206,8 @@ static hol_err hol__create(hol_session *s, const hol_session_desc *d)
         }
         s->ask_pending = 1;
         s->level_end = HOL_APP_END_DONE;
+    } else if (s->meta.ready && (e = hol_app_ready(s->app))) {
+        return e;
     }
     if (s->log && (e = hol__log_open(s, d->append)))
         return e;

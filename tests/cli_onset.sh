@@ -47,4 +47,17 @@ done
 run "replay P01" 0 "$H" replay r1.rec --log l1r
 cmp -s l1/summary.csv l1r/summary.csv && ok || bad "replay: $(cat l1r/summary.csv)"
 [ "$(cd l1 && ls level-*)" = "$(cd l1r && ls level-*)" ] && ok || bad "replay's levels: $(ls l1r)"
+
+# a resume (P01 at b, position 2) begins on the ready screen: the walk
+# before its confirm is no step, the clock starts at the confirm (4.0 s)
+{ walk_input WNESE; printf '2 f=9 p=1 h=1.5,1.6,1.5,0,0,0,1\n'; walk_input WNESE 4; } >in2
+cp -r l1 l1s
+run "P01 resumed" 0 "$H" play --study "$S" --participant P01 --size 64x48 --log l1 --input in2 \
+    --resume --record r2.rec
+grep -q '^ready$' r2.rec && ok || bad "the resumed recording has no ready line"
+last=$(tail -n 1 l1/summary.csv | cut -d, -f7,8,18-22)
+case $last in "b,2,4.0000,5,5,1.2500,done") ok ;; *) bad "the resumed attempt: $last" ;; esac
+# its replay begins on the ready screen too
+run "replay resumed" 0 "$H" replay r2.rec --log l1s --append
+cmp -s l1/summary.csv l1s/summary.csv && ok || bad "the resumed replay: $(diff l1/summary.csv l1s/summary.csv)"
 finish cli_onset
