@@ -165,6 +165,15 @@ $(GLSL_H): render/shaders/glsl_c.sh $(wildcard render/shaders/*.glsl)
 $(BUILD)/render/hol_program.o: $(GLSL_H)
 $(BUILD)/render/hol_program.o: override CFLAGS += -I$(BUILD)/gen
 
+# The build's commit and date (platform/cli/build_info.h): a header in the
+# build folder, remade at every make but rewritten only when its text
+# changes, so a new commit recompiles build_info.c alone.
+BUILD_ID_H := $(BUILD)/gen/hol_build_id.h
+$(BUILD_ID_H): FORCE
+	@sh platform/cli/build_id.sh $@
+$(BUILD)/platform/cli/build_info.o: $(BUILD_ID_H)
+$(BUILD)/platform/cli/build_info.o: override CFLAGS += -I$(BUILD)/gen
+
 $(RENDER_LIB): $(RENDER_OBJ)
 	@rm -f $@
 	$(AR) rcs $@ $^
@@ -242,6 +251,11 @@ $(BUILD)/tests/test_font: tests/test_font.c $(FONT_TEST_SRC) render/hol_face_dra
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) -o $@ $< $(FONT_TEST_SRC) $(CORE_LIB) $(LDFLAGS) -lcmocka -lz $(LDLIBS)
 
+# The codebook's table against the writers' headers (platform/cli/codebook.c).
+$(BUILD)/tests/test_codebook: tests/test_codebook.c platform/cli/codebook.c $(wildcard platform/cli/*.h) $(CORE_LIB)
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) -o $@ $< platform/cli/codebook.c $(CORE_LIB) $(LDFLAGS) -lcmocka $(LDLIBS)
+
 # The report's CSV field and HTML text (platform/cli/report/report_escape.c).
 $(BUILD)/tests/test_report_escape: tests/test_report_escape.c platform/cli/report/report_escape.c platform/cli/report/report_escape.h $(CORE_LIB)
 	@mkdir -p $(dir $@)
@@ -269,7 +283,7 @@ $(BUILD)/bench/%: tests/%.c $(CORE_SRC)
 FUZZ_EXTRA_fuzz_png := render/hol_png.c -lz
 FUZZ_EXTRA_fuzz_cli := platform/cli/cli_util.c platform/file/hol_file.c platform/file/hol_lines.c
 FUZZ_EXTRA_fuzz_lines := platform/cli/cli_util.c platform/file/hol_file.c platform/file/hol_lines.c
-FUZZ_EXTRA_fuzz_report_instr := $(addprefix platform/cli/report/,report_stats.c report_instr.c \
+FUZZ_EXTRA_fuzz_report_instr := $(addprefix platform/cli/report/,report_stats.c report_answers.c report_instr.c \
   report_file.c report_escape.c) platform/cli/cli_util.c platform/file/hol_file.c \
   platform/file/hol_lines.c
 FUZZ_EXTRA_fuzz_hid_desc := $(HID_SRC)
@@ -451,10 +465,11 @@ fuzz-run-%: $(BUILD)/fuzz/%
 	@$(SUITE) "$* for $(FUZZ_TIME) s" $< -max_total_time=$(FUZZ_TIME) -print_final_stats=1 \
 	  -artifact_prefix=$(BUILD)/fuzz/ $(BUILD)/fuzz/new-$* fuzz/corpus/$*
 
-bench: $(BENCH_BIN) $(BENCH_RENDER_BIN) $(BUILD)/holonomy
+bench: $(BENCH_BIN) $(BENCH_RENDER_BIN) $(BUILD)/holonomy $(BUILD)/tests/test_sound
 	@set -e; for b in $(BENCH_BIN) $(BENCH_RENDER_BIN); do $$b; done
 	@sh tests/bench_report.sh $(BUILD)/holonomy
 	@sh tests/bench_sound.sh $(BUILD)/holonomy
+	@$(BUILD)/tests/test_sound --bench
 	@CC="$(CC)" sh tests/bench_ratio.sh $(BUILD) $(BENCH_BASE_COMMIT)
 	@if command -v $(EMCC) >/dev/null && [ -x /usr/bin/chromium ] && [ -d tests/web/node_modules ]; \
 	then $(MAKE) -s bench-web; \

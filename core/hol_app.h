@@ -190,8 +190,12 @@ enum hol_app_screen {
 #define HOL_APP_MAX_SCALE 21     /* a likert scale's marks at most */
 
 enum hol_app_question_kind { HOL_APP_LIKERT = 0, HOL_APP_CHOICE = 1 };
+/* after: asked after the level's end screen; before (issue 35, a baseline):
+ * asked when the level starts, before its instructions and its clock. */
 enum hol_app_ask_when { HOL_APP_AFTER_LEVEL = 0, HOL_APP_AFTER_CONDITION = 1,
-                        HOL_APP_AFTER_STUDY = 2 };
+                        HOL_APP_AFTER_STUDY = 2, HOL_APP_BEFORE_LEVEL = 3,
+                        HOL_APP_BEFORE_CONDITION = 4, HOL_APP_BEFORE_STUDY = 5 };
+#define HOL_APP_ASK_WHENS 6
 
 typedef struct hol_app_question {
     char id[HOL_APP_ID_MAX];
@@ -361,6 +365,8 @@ typedef struct hol_app_hud {
                                          HOL_APP_SCREEN), else 0 */
     int ask_item, ask_items;          /* state HOL_APP_ASK: the item (0-based)
                                          of the questionnaire and its count */
+    int ask_before;                   /* and 1: a `before` one (the level
+                                         not begun) */
     int ask_value;                    /* the value chosen now (likert: the
                                          number; choice: its index) */
     /* the text as drawn, one line each: the feedback if any, the note
@@ -591,9 +597,10 @@ hol_err hol_app_step(hol_app *app, const hol_input *in);
 const hol_app_view *hol_app_get_view(const hol_app *app);
 /* The word the platforms print for how a run ended ("level NAME WORD steps
  * ..."): "timeout" when the level's time ran out, else by state: idle,
- * playing (also the instructions before a level), done (also the pointing
- * question, a questionnaire's item and the closing screen, which come after
- * the level is over), quit. Never NULL. */
+ * playing (also the instructions and a `before` questionnaire's item
+ * before a level), done (also the pointing question, a questionnaire's
+ * item and the closing screen, which come after the level is over), quit.
+ * Never NULL. */
 const char *hol_app_end_word(const hol_app_view *v);
 const hol_app_events *hol_app_get_events(const hol_app *app);
 /* The world the view shows (for the renderer's content). */

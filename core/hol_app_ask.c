@@ -32,15 +32,55 @@ static void hol__item_begin(hol_app *app, const hol_input *in)
     app->place_panel = 1;
 }
 
+/* The first ask from k on with items and of the phase asked now (before
+ * the level or after it); nasks when none. */
+static int hol__next_ask(const hol_app *app, int k)
+{
+    const hol_app_level *L = &app->level;
+    while (k < L->nasks && (L->asks[k].n == 0 || hol_ask_before(L->asks[k].when) != app->ask_before))
+        k++;
+    return k;
+}
+
+int hol__ask_before_start(hol_app *app)
+{
+    app->ask_before = 1;
+    app->ask_k = hol__next_ask(app, 0);
+    if (app->ask_k >= app->level.nasks) {
+        app->ask_before = 0;
+        return 0;
+    }
+    app->ask_i = 0;
+    app->view.state = HOL_APP_ASK;
+    app->ask_mark = (hol__marks(hol__ask_item(app)) - 1) / 2;
+    app->ask_fresh = 1; /* its time and look at the next frame */
+    app->place_panel = 1;
+    return 1;
+}
+
+/* The `before` asks answered: the instructions, else the level begins
+ * (pending_start: at the next frame). */
+static void hol__before_end(hol_app *app)
+{
+    app->ask_before = 0;
+    if (app->level.instructions[0]) {
+        app->screen = HOL_APP_SCREEN_INSTRUCTIONS;
+        app->view.state = HOL_APP_SCREEN;
+        app->place_panel = 1;
+    } else {
+        app->view.state = HOL_APP_PLAYING;
+    }
+}
+
 /* After the level's end screen: its questionnaires, then the closing
  * screen (the last level), then the next level. */
 void hol__after_end(hol_app *app, const hol_input *in, int from_ask)
 {
     hol_app_view *v = &app->view;
     if (!from_ask && app->level.nasks > 0) {
-        app->ask_k = app->ask_i = 0;
-        while (app->ask_k < app->level.nasks && app->level.asks[app->ask_k].n == 0)
-            app->ask_k++;
+        app->ask_i = 0;
+        app->ask_before = 0;
+        app->ask_k = hol__next_ask(app, 0);
         if (app->ask_k < app->level.nasks) {
             v->state = HOL_APP_ASK;
             hol__item_begin(app, in);
@@ -68,6 +108,7 @@ hol_err hol__ask_begin_from(hol_app *app, int item)
         return HOL_EARG;
     app->ask_k = k;
     app->ask_i = item;
+    app->ask_before = 0; /* what is left of the level's asks, after it */
     app->pending_start = 0; /* the level is not played again */
     app->screen = HOL_APP_SCREEN_NONE;
     app->view.state = HOL_APP_ASK;
@@ -144,9 +185,11 @@ void hol__ask_frame(hol_app *app, const hol_input *in, uint32_t pressed)
     app->ev.answered = 1;
     if (++app->ask_i >= a->n) {
         app->ask_i = 0;
-        app->ask_k++;
-        while (app->ask_k < app->level.nasks && app->level.asks[app->ask_k].n == 0)
-            app->ask_k++;
+        app->ask_k = hol__next_ask(app, app->ask_k + 1);
+        if (app->ask_k >= app->level.nasks && app->ask_before) {
+            hol__before_end(app);
+            return;
+        }
         if (app->ask_k >= app->level.nasks) {
             hol__after_end(app, in, 1);
             return;
@@ -191,5 +234,6 @@ void hol__ask_lines(const hol_app *app, hol_app_hud *h)
     }
     h->ask_item = app->ask_i;
     h->ask_items = a->n;
+    h->ask_before = app->ask_before;
     h->ask_value = q->kind == HOL_APP_CHOICE ? m : q->lo + m * step;
 }

@@ -100,6 +100,7 @@ struct hol_app {
     double ask_ref_yaw;      /* the look then (a controller points from it) */
     int ask_fresh;           /* hol_app_ask_from: the item comes up at the
                                 next frame (its time, its look) */
+    int ask_before;          /* the `before` asks (the level not begun) */
     uint8_t walk[HOL_NAV_WALK_MAX]; /* replan scratch */
     int nwalk;
 };
@@ -138,6 +139,9 @@ void hol__ask_lines(const hol_app *app, hol_app_hud *h);
  * (its view is filled by the caller). HOL_EARG for no level or no such
  * item, app untouched. */
 hol_err hol__ask_begin_from(hol_app *app, int item);
+/* hol_app_start_level: the level's `before` asks first (state ASK), its
+ * instructions and its clock after them; 0 when it has none. */
+int hol__ask_before_start(hol_app *app);
 
 /* hol_app_view.c */
 void hol__fill_view(hol_app *app, const hol_input *in);

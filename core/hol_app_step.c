@@ -415,7 +415,10 @@ hol_err hol_app_start_level(hol_app *app, const hol_app_level *level)
         app->have_level = 0;
         return err;
     }
-    if (level->instructions[0]) { /* the level begins after them */
+    app->ask_before = 0;
+    if (hol__ask_before_start(app)) { /* a baseline: its instructions after */
+        hol__fill_view(app, NULL);
+    } else if (level->instructions[0]) { /* the level begins after them */
         app->screen = HOL_APP_SCREEN_INSTRUCTIONS;
         app->view.state = HOL_APP_SCREEN;
         app->place_panel = 1;

@@ -53,6 +53,7 @@ static void hol__fill_eyes(hol_app *app, const hol_input *in)
     /* the headset's UI panel: placed ahead at once when a level starts or
      * the room is re-placed around the head, else lazily following */
     double t = in ? in->time_s : v->panel.t;
+    hol_panel_room(&v->panel, hol_room_cols(&v->user), hol_room_rows(&v->user), app->mo.d.cell_m);
     if (app->ev.level_started || app->place_panel || (in && (in->flags & HOL_INPUT_RECENTRED)))
         hol_panel_place(&v->panel, v->head, v->yaw_deg, t);
     else
@@ -138,6 +139,8 @@ const char *hol_app_end_word(const hol_app_view *v)
         return "timeout";
     if (v->state == HOL_APP_SCREEN && v->hud.screen == HOL_APP_SCREEN_CLOSING)
         return "done";
+    if (v->state == HOL_APP_ASK && v->hud.ask_before)
+        return "playing"; /* a baseline: the level has not begun */
     unsigned s = (unsigned)v->state;
     return s < HOL_APP_STATE_COUNT && word[s] ? word[s] : "playing";
 }
@@ -289,7 +292,7 @@ static void hol__fill_hud(hol_app *app, const hol_input *in)
     h->debug = app->debug;
     h->screen = app->view.state == HOL_APP_SCREEN ? app->screen : 0;
     if (app->view.state != HOL_APP_ASK)
-        h->ask_item = h->ask_items = h->ask_value = 0;
+        h->ask_item = h->ask_items = h->ask_value = h->ask_before = 0;
     h->device = app->device;
     for (int k = 0; k < h->keys_total; k++)
         h->keys_held += (int)(app->keys_held >> k & 1);

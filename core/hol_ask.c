@@ -164,17 +164,23 @@ static int hol__is(const char *w, size_t n, const char *word)
     return strlen(word) == n && !memcmp(w, word, n);
 }
 
+static const char *const hol__whens[HOL_APP_ASK_WHENS] = {
+    "level", "condition", "study", "before_level", "before_condition", "before_study"};
+
 int hol_ask_when(const char *w, size_t n)
 {
-    static const char *const names[3] = {"level", "condition", "study"};
-    for (int k = 0; k < 3; k++)
-        if (hol__is(w, n, names[k]))
+    for (int k = 0; k < HOL_APP_ASK_WHENS; k++)
+        if (hol__is(w, n, hol__whens[k]))
             return k;
     return -1;
 }
 
 const char *hol_ask_when_name(int when)
 {
-    static const char *const names[3] = {"level", "condition", "study"};
-    return when >= 0 && when < 3 ? names[when] : "level";
+    return when >= 0 && when < HOL_APP_ASK_WHENS ? hol__whens[when] : "level";
+}
+
+int hol_ask_before(int when)
+{
+    return when >= HOL_APP_BEFORE_LEVEL && when < HOL_APP_ASK_WHENS;
 }

@@ -88,9 +88,12 @@ hol_err hol_ask_parse_question(const char *line, size_t n, hol_app_question *q, 
 /* The preset's items into out (max of them): their count, 0 for a name
  * that is no preset. */
 int hol_ask_preset(const char *name, size_t n, hol_app_question *out, int max);
-/* "level", "condition", "study": the hol_app_ask_when; -1 for another. */
+/* "level", "condition", "study", "before_level", "before_condition",
+ * "before_study": the hol_app_ask_when; -1 for another. hol_ask_when_name:
+ * its name ("level" outside them); hol_ask_before: 1 for a before one. */
 int hol_ask_when(const char *w, size_t n);
 const char *hol_ask_when_name(int when);
+int hol_ask_before(int when);
 /* The subscales of SSQ item k (0..15): bit 0 nausea, 1 oculomotor, 2
  * disorientation (Kennedy et al. 1993, table 4). */
 unsigned hol_ask_ssq_subscales(int k);

@@ -71,6 +71,18 @@ hol_err hol_hyper_frame(hol_tile a, int a_north, hol_tile b, double out_m[9])
     return HOL_OK;
 }
 
+void hol_hyper_frame_step(int q, const double m[9], int turn, int arrive, double out_m[9])
+{
+    double t[4], id[4] = {1, 0, 0, 1}, r[9];
+    hol__edge_move(q, t);
+    for (int i = 0; i < 9; i++)
+        r[i] = m[i];
+    hol__apply(r, turn, t);
+    hol__apply(r, -arrive, id);
+    for (int i = 0; i < 9; i++)
+        out_m[i] = r[i];
+}
+
 hol_err hol_hyper_pos(hol_tile a, int a_north, hol_tile b, double out_p[3],
                       double *out_angle, double *out_dist)
 {

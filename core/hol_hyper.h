@@ -31,6 +31,13 @@ double hol_hyper_edge_q(int q);
  * HOL_EARG for invalid tiles or tiles of two tilings. */
 hol_err hol_hyper_frame(hol_tile a, int a_north, hol_tile b, double out_m[9]);
 
+/* The frame of t's neighbour across the edge in direction turn (as
+ * hol_tile_step, which gives arrive) from t's frame m, in {4,q}: m times
+ * the quarter turns, one edge, and the arrival undone (what
+ * hol_hyper_frame gives for the neighbour, to rounding; for walks that
+ * visit many tiles: one matrix product a step, no address). */
+void hol_hyper_frame_step(int q, const double m[9], int turn, int arrive, double out_m[9]);
+
 /* Centre of b in a's frame, and its direction and distance as seen from a's
  * centre: angle in radians counter-clockwise from +y (a_north), distance in
  * units of the plane's curvature radius (tile sides in {4,4}). Either

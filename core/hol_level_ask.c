@@ -74,8 +74,9 @@ static hol_err hol__ask_items(hol__lp *p, hol_app_ask *a, const char *ids)
     return HOL_OK;
 }
 
-/* ask NAME level|condition|study [ID...]: a questionnaire after the end
- * screen (in the order of the lines). */
+/* ask NAME WHEN [ID...]: a questionnaire after the end screen (WHEN
+ * level|condition|study) or when the level starts, before its instructions
+ * (before_level|before_condition|before_study), in the order of the lines. */
 hol_err hol__key_ask(hol__lp *p, char **f, int nf)
 {
     (void)nf;
@@ -90,8 +91,8 @@ hol_err hol__key_ask(hol__lp *p, char **f, int nf)
     snprintf(a->name, sizeof a->name, "%s", f[1]);
     a->when = hol_ask_when(f[2], strlen(f[2]));
     if (a->when < 0)
-        return hol__lfail(p, HOL_EPARSE, p->line, "ask %s: '%.20s' is not level, condition or "
-                          "study", a->name, f[2]);
+        return hol__lfail(p, HOL_EPARSE, p->line, "ask %s: '%.20s' is not level, condition, "
+                          "study, before_level, before_condition or before_study", a->name, f[2]);
     for (int k = 0; k < L->nasks; k++) /* asked once a time (issue 39) */
         if (L->asks[k].when == a->when && !strcmp(L->asks[k].name, a->name))
             return hol__lfail(p, HOL_EARG, p->line, "ask %s %s is given twice", a->name,

@@ -40,6 +40,9 @@ hol_err hol_level_make(const char *name, size_t name_len, const char *text, size
     hol_err e = hol_level_parse(text, len, &out->lvl, err);
     if (e)
         return e;
+    /* the parse skips a BOM of its own: keep what it read, so that the kept
+     * text parses and hashes the same when a recording carries it again */
+    hol__lv_skip_bom(&text, &len);
     /* the text as a recording carries it: LF line ends (CRs before them
      * dropped), the last line's too */
     size_t o = 0;

@@ -20,6 +20,22 @@
  *   the ease takes at most 0.1 s of time per update (a bounded catch-up,
  *   about 45 % of the way), so the panel never jumps. A new session or a
  *   re-placed room places it at once (hol_panel_place, the app's view).
+ * - Never through a hedge or a trunk (once it knows the room:
+ *   hol_panel_room). Drawn over the scene, it must be nearer than whatever
+ *   it covers, so it comes in front of the nearest hedge or trunk in its
+ *   direction: over the directions within HOL_PANEL_HALF_DEG of its yaw
+ *   (the panel's whole width, 16.4 degrees each way with the map, and
+ *   the eyes' offset), the nearest point of the
+ *   room's four hedges (the room's sides, 0..C*M x 0..R*M) or of a trunk
+ *   (a vertex of the grid, radius HOL_PANEL_TRUNK_M) from the anchor, along
+ *   the panel's yaw, less HOL_PANEL_CLEAR_M, sets its depth, down to
+ *   HOL_PANEL_NEAR_M and up to HOL_PANEL_DISTANCE (dist). It keeps its
+ *   angular size: it is scaled by dist / HOL_PANEL_DISTANCE (scale; the
+ *   renderer's font pixel is scaled alike, render/hol_app_frame.c). Nearer
+ *   than HOL_PANEL_NEAR_M + HOL_PANEL_CLEAR_M to a hedge or trunk (the
+ *   motion keeps the head 0.15 m from a hedge; a trunk can be touched) the
+ *   panel stays at HOL_PANEL_NEAR_M and may be covered. An anchor outside
+ *   the room keeps HOL_PANEL_DISTANCE.
  */
 #ifndef HOL_PANEL_H
 #define HOL_PANEL_H
@@ -29,6 +45,10 @@
 #define HOL_PANEL_TURN_DEG 20.0 /* the head's turn that re-centres it */
 #define HOL_PANEL_MOVE_M 0.5 /* the head's move that re-centres it */
 #define HOL_PANEL_EASE_S 0.12 /* the re-centring's time constant */
+#define HOL_PANEL_NEAR_M 0.5 /* the nearest it comes, in front of a hedge */
+#define HOL_PANEL_CLEAR_M 0.05 /* kept from the hedge or trunk behind it */
+#define HOL_PANEL_HALF_DEG 18.0 /* the directions looked along, each way */
+#define HOL_PANEL_TRUNK_M 0.12 /* a trunk's radius (the widest is 0.11) */
 
 typedef struct hol_panel {
     int placed;         /* 0: never updated */
@@ -39,7 +59,22 @@ typedef struct hol_panel {
     double pos[3];      /* the panel's centre, room coordinates */
     double orient[4];   /* x, y, z, w: unturned the panel faces +z, up +y */
     int recentres;      /* re-centrings so far (placing included) */
+    int cols, rows;     /* the room in cells (hol_panel_room); 0: none */
+    double cell_m;      /* a cell's side, metres */
+    double dist;        /* its distance from the anchor, metres */
+    double scale;       /* dist / HOL_PANEL_DISTANCE: its size's factor */
 } hol_panel;
+
+/* The room it stands in: cols x rows cells of cell_m metres, hedges on its
+ * sides, trunks on its grid's vertices (room coordinates, 0..cols*cell_m x
+ * 0..rows*cell_m). 0 cols: no room (always HOL_PANEL_DISTANCE). Takes
+ * effect at the next placement or follow. */
+void hol_panel_room(hol_panel *p, int cols, int rows, double cell_m);
+
+/* The depth (metres, along yaw_deg, horizontal) of the nearest hedge or
+ * trunk within HOL_PANEL_HALF_DEG of yaw_deg from head in that room; a
+ * large number when none or when head is outside the room. */
+double hol_panel_clear_depth(const hol_panel *p, const double head[3], double yaw_deg);
 
 /* Update the panel for a head at head[3] looking along yaw_deg at time
  * t_s (seconds, the frame's). */

@@ -188,7 +188,9 @@
  * attempt: the last attempt before the questionnaire (a resumed level's
  * questions, meta.ask_item: session and attempt are meta.ask_session's
  * and meta.ask_attempt, the attempt that played it); questionnaire its
- * name, when level|condition|study, item the item's ID, kind
+ * name, when level|condition|study (after the level) or before_level|
+ * before_condition|before_study (before it: attempt the one its level
+ * begins next), item the item's ID, kind
  * likert|choice, value the number (likert) or the choice's text (CSV
  * quoted when it needs it), time the seconds taken. */
 #define HOL_SESSION_ANSWER_COLUMNS \

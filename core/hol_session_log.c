@@ -8,6 +8,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "hol_ask.h"
 #include "hol_bearing.h"
 #include "hol_sha256.h"
 #include "hol_text.h"
@@ -376,13 +377,15 @@ static void hol__answer_row(hol_session *s, const hol_app_answer *a)
         hol__csv_name(a->choice, value);
     else
         snprintf(value, sizeof value, "%d", a->value);
-    static const char *const whens[3] = {"level", "condition", "study"};
-    /* a resumed level's answers go with the attempt that played it */
+    /* a resumed level's answers go with the attempt that played it; a
+     * `before` one's with the attempt its level begins next */
+    int attempt = s->ask_pending ? s->meta.ask_attempt : s->attempt;
+    if (!s->ask_pending && hol_ask_before(a->when))
+        attempt = s->attempt + 1;
     int n = snprintf(row, sizeof row, "%s,%s,%d,%s,%s,%s,%s,%s,%.4f\n",
                      s->ask_pending ? s->meta.ask_session : s->meta.session,
-                     s->meta.participant, s->ask_pending ? s->meta.ask_attempt : s->attempt,
-                     a->questionnaire,
-                     whens[a->when >= 0 && a->when < 3 ? a->when : 0], a->item,
+                     s->meta.participant, attempt, a->questionnaire,
+                     hol_ask_when_name(a->when), a->item,
                      a->kind == HOL_APP_CHOICE ? "choice" : "likert", value, a->time_s);
     if (n > 0 && (size_t)n < sizeof row)
         hol__put_file(s, "answers.csv", 1, row, (size_t)n);

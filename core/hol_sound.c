@@ -11,6 +11,7 @@
 
 #define HOL__PI 3.14159265358979323846
 #define HOL__SND_TILES 1024 /* tiles a frame visits at most */
+#define HOL__SND_CAND HOL_SOUND_MAX_AMB   /* ambient sources a frame weighs at most */
 
 /* ---- geometry ----------------------------------------------------------------- */
 
@@ -20,6 +21,9 @@ typedef struct hol__sg {
     double p[3];         /* the listener's point (user frame) */
     double boost[9];     /* takes p to the origin */
     double head_h;
+    double radius;       /* the ambience's window, metres */
+    double reach;        /* R in curvature units (tile sides flat) plus rho */
+    double rho;          /* a tile's circumradius (the same units) */
     double q[4];         /* head quaternion x, y, z, w */
     hol_room user;
 } hol__sg;
@@ -49,6 +53,9 @@ static void hol__sg_init(hol__sg *g, const hol_app_view *v)
                    -px, -py, pw};
     memcpy(g->boost, b, sizeof b);
     g->head_h = v->head[1];
+    g->radius = hol_sound_radius_m(q, m);
+    g->rho = g->flat ? 0.7072 : hol_acosh(hol_cos(HOL__PI / q) / hol_sin(HOL__PI / q));
+    g->reach = g->radius / g->mpu + g->rho;
     for (int i = 0; i < 4; i++)
         g->q[i] = v->head_quat[i];
 }
@@ -65,19 +72,29 @@ static void hol__to_head(const double q[4], const double a[3], double out[3])
     out[2] = a[2] + w * t2 + (x * t1 - y * t0);
 }
 
-double hol_sound_falloff(double d_m, double chord, int flat, int windowed)
+double hol_sound_radius_m(int q, double cell_m)
+{
+    double m = cell_m > 0 ? cell_m : 1.0, r = HOL_SOUND_RADIUS_M;
+    if (q > 4 && q <= 8) { /* the horizon: HOL_SOUND_HORIZON curvature radii */
+        double h = HOL_SOUND_HORIZON * m / hol_hyper_edge_q(q);
+        r = h < r ? h : r;
+    }
+    return r;
+}
+
+double hol_sound_falloff(double d_m, double chord, int flat, double radius_m)
 {
     double w = 1;
-    if (windowed) {
-        if (d_m >= HOL_SOUND_RADIUS_M)
+    if (radius_m > 0) {
+        if (d_m >= radius_m)
             return 0;
-        double u = d_m / HOL_SOUND_RADIUS_M;
+        double u = d_m / radius_m;
         w = (1 - u * u) * (1 - u * u);
     }
     double s = 1;
     if (!flat && chord > 1e-6) /* x = 2 asinh(c/2), sinh x = c sqrt(1 + c^2/4) */
         s = 2 * hol_asinh(chord / 2) / (chord * sqrt(1 + chord * chord / 4));
-    return w * (1 - HOL_SOUND_PHYS + HOL_SOUND_PHYS * s) / (1 + d_m / HOL_SOUND_D0_M);
+    return w * sqrt(s) / (1 + d_m / HOL_SOUND_D0_M);
 }
 
 /* The source at point S (user frame) h metres up: its true distance, the
@@ -141,81 +158,205 @@ static void hol__add(hol_sound_list *o, int first, const hol_sound_src *s)
         o->src[k] = *s;
 }
 
-static void hol__tile_src(const hol__sg *g, hol_tile t, int kind, double h, int windowed,
-                          hol_sound_list *o, int first)
+/* The source of kind on tile t (frame fr) h metres up, its gain windowed
+ * by radius_m (0: none). */
+static void hol__tile_src(const hol__sg *g, hol_tile t, const double fr[9], int kind, double h,
+                          double radius_m, hol_sound_src *out)
+{
+    double S[3] = {fr[2], fr[5], fr[8]}, x;
+    out->kind = kind;
+    out->id = hol__tile_hash(t, kind);
+    hol__place(g, S, h, &out->dist_m, &x, out->dir);
+    out->gain = hol_sound_falloff(out->dist_m, x, g->flat, radius_m);
+}
+
+static void hol__beacon(const hol__sg *g, hol_tile t, hol_sound_list *o)
 {
     double fr[9];
+    hol_sound_src s;
     if (hol_hyper_frame(g->user.tile, g->user.orient, t, fr))
         return;
-    double S[3] = {fr[2], fr[5], fr[8]}, x;
-    hol_sound_src s;
-    s.kind = kind;
-    s.id = hol__tile_hash(t, kind);
-    hol__place(g, S, h, &s.dist_m, &x, s.dir);
-    s.gain = hol_sound_falloff(s.dist_m, x, g->flat, windowed);
-    hol__add(o, first, &s);
+    hol__tile_src(g, t, fr, HOL_SND_BEACON, 1.5, 0, &s);
+    hol__add(o, 0, &s);
 }
 
-static int hol__seen(const hol_tile *seen, int n, hol_tile t)
-{
-    for (int i = 0; i < n; i++)
-        if (hol_tile_eq(seen[i], t))
-            return 1;
-    return 0;
-}
+/* The tiles met so far, with their frames: an open-addressed set of
+ * indices into tiles[]. */
+typedef struct hol__tset {
+    hol_tile tiles[HOL__SND_TILES];
+    double fr[HOL__SND_TILES][9];
+    int8_t depth[HOL__SND_TILES];     /* room steps from the first */
+    int16_t slot[2 * HOL__SND_TILES]; /* index + 1; 0 empty */
+    int n;
+} hol__tset;
 
-/* Ambience: the tiles within HOL_SOUND_STEPS steps (breadth first). */
-static void hol__ambience(const hol__sg *g, const struct hol_world *w, hol_sound_list *o,
-                          int first)
+/* 1: t added (new), 0: met before or the set is full. */
+static int hol__tset_add(hol__tset *ts, hol_tile t)
 {
-    hol_tile seen[HOL__SND_TILES];
-    int n = 0, head = 0, level_end = 1, depth = 0;
-    seen[n++] = g->user.tile;
-    while (head < n) {
-        if (head == level_end) {
-            if (++depth >= HOL_SOUND_STEPS)
-                break;
-            level_end = n;
-        }
-        hol_tile t = seen[head++];
-        for (int e = 0; e < 4 && depth < HOL_SOUND_STEPS; e++) {
-            hol_tile nb;
-            if (hol_tile_step(t, e, &nb, NULL) || n >= HOL__SND_TILES || hol__seen(seen, n, nb))
-                continue;
-            seen[n++] = nb;
-        }
+    uint32_t k = (uint32_t)hol_tile_hash(t) & (2 * HOL__SND_TILES - 1);
+    while (ts->slot[k]) {
+        if (hol_tile_eq(ts->tiles[ts->slot[k] - 1], t))
+            return 0;
+        k = (k + 1) & (2 * HOL__SND_TILES - 1);
     }
-    for (int i = 0; i < n; i++) {
-        hol_tile_content c;
-        if (hol_world_peek(w, seen[i], &c))
+    if (ts->n >= HOL__SND_TILES)
+        return 0;
+    ts->tiles[ts->n++] = t;
+    ts->slot[k] = (int16_t)ts->n;
+    return 1;
+}
+
+static void hol__amb_add(hol_sound *st, const double fr[9], hol_tile t, int kind, double h)
+{
+    if (st->namb >= HOL_SOUND_MAX_AMB)
+        return;
+    hol_sound_amb *a = &st->amb[st->namb++];
+    a->S[0] = fr[2], a->S[1] = fr[5], a->S[2] = fr[8];
+    a->h = h;
+    a->kind = kind;
+    a->id = hol__tile_hash(t, kind);
+}
+
+/* The ambience of one tile (its frame fr) into the cache. */
+static void hol__tile_ambience(hol_sound *st, const struct hol_world *w, hol_tile t,
+                               const double fr[9])
+{
+    hol_tile_content c;
+    if (hol_world_peek(w, t, &c))
+        return;
+    if (c.object == HOL_OBJ_CREEK || c.object == HOL_OBJ_SPRING || c.object == HOL_OBJ_POOL)
+        hol__amb_add(st, fr, t, HOL_SND_WATER, 0);
+    int big = 0;
+    for (int k = 0; k < 4; k++)
+        big |= c.tree[k].size >= 2;
+    if (big && (hol__tile_hash(t, 0) >> 8) % 3 == 0)
+        hol__amb_add(st, fr, t, HOL_SND_BIRDS, 3.0);
+}
+
+/* The cache: every ambient source whose tile's centre may come within R
+ * of a listener in the user's tile (centre within R + rho of the user's
+ * tile's centre, rho a tile's circumradius), found breadth first through
+ * the tiles whose centre is within R + 2 rho (so none is missed); frames
+ * carried along the walk (hol_hyper_frame_step). R is cut to the world's
+ * generated radius: no nearer than a tile more steps away than the world
+ * collapses (minus rho), so that no source appears when a tile collapses. */
+static void hol__amb_build(hol_sound *st, const hol__sg *g, const struct hol_world *w)
+{
+    hol__tset ts;
+    ts.n = 0;
+    memset(ts.slot, 0, sizeof ts.slot);
+    int q = hol_tile_q(g->user.tile), wr = hol_world_radius(w);
+    double o[3] = {0, 0, 1}, reach = g->reach, beyond = 1e9;
+    st->namb = 0;
+    hol__tset_add(&ts, g->user.tile);
+    ts.depth[0] = 0;
+    if (hol_hyper_frame(g->user.tile, g->user.orient, g->user.tile, ts.fr[0]))
+        return;
+    for (int head = 0; head < ts.n; head++) {
+        const double *fr = ts.fr[head];
+        double S[3] = {fr[2], fr[5], fr[8]};
+        double x = hol_hyper_dist(S, o, g->flat);
+        if (ts.depth[head] > wr) { /* not generated: R ends before it */
+            beyond = x < beyond ? x : beyond;
             continue;
-        if (c.object == HOL_OBJ_CREEK || c.object == HOL_OBJ_SPRING || c.object == HOL_OBJ_POOL)
-            hol__tile_src(g, seen[i], HOL_SND_WATER, 0, 1, o, first);
-        int big = 0;
-        for (int k = 0; k < 4; k++)
-            big |= c.tree[k].size >= 2;
-        if (big && (hol__tile_hash(seen[i], 0) >> 8) % 3 == 0)
-            hol__tile_src(g, seen[i], HOL_SND_BIRDS, 3.0, 1, o, first);
+        }
+        if (x > reach + g->rho)
+            continue;
+        if (x <= reach)
+            hol__tile_ambience(st, w, ts.tiles[head], fr);
+        for (int e = 0; e < 4; e++) {
+            hol_tile nb;
+            int arrive;
+            if (!hol_tile_step(ts.tiles[head], e, &nb, &arrive) && hol__tset_add(&ts, nb)) {
+                hol_hyper_frame_step(q, fr, e, arrive, ts.fr[ts.n - 1]);
+                ts.depth[ts.n - 1] = (int8_t)(ts.depth[head] + 1);
+            }
+        }
     }
+    double rc = beyond - g->rho; /* R in curvature units (tile sides flat) */
+    rc = rc < g->radius / g->mpu ? rc : g->radius / g->mpu;
+    st->radius = rc > 0 ? rc * g->mpu : 0;
+}
+
+/* The ambient sources of this frame into cand[] (the cache rebuilt when
+ * stale). */
+static int hol__ambience(hol_sound *st, const hol__sg *g, const hol_app_view *v,
+                         const struct hol_world *w, hol_sound_src *cand)
+{
+    hol_world_stats ws;
+    hol_world_get_stats(w, &ws);
+    uint64_t key[5] = {ws.tiles_collapsed, ws.backtracks, ws.evicted, ws.count,
+                       hol_world_seed(w)};
+    if (!st->valid || st->world != w || !hol_tile_eq(st->user.tile, v->user.tile) ||
+        st->user.orient != v->user.orient || st->cell_m != v->cell_m ||
+        memcmp(st->world_key, key, sizeof key)) {
+        hol__amb_build(st, g, w);
+        st->valid = 1, st->world = w, st->user = v->user, st->cell_m = v->cell_m;
+        memcpy(st->world_key, key, sizeof key);
+    }
+    int nc = 0;
+    for (int i = 0; i < st->namb && nc < HOL__SND_CAND; i++) {
+        const hol_sound_amb *a = &st->amb[i];
+        double x;
+        hol_sound_src *s = &cand[nc];
+        s->kind = a->kind;
+        s->id = a->id;
+        hol__place(g, a->S, a->h, &s->dist_m, &x, s->dir);
+        s->gain = hol_sound_falloff(s->dist_m, x, g->flat, st->radius);
+        nc += s->gain > 0;
+    }
+    return nc;
 }
 
 /* Wind in the room's four hedges: room points, the room is flat. */
-static void hol__wind(const hol__sg *g, const hol_app_view *v, hol_sound_list *o, int first)
+static int hol__wind(const hol__sg *g, const hol_app_view *v, hol_sound_src *cand, int nc)
 {
     double m = v->cell_m > 0 ? v->cell_m : 1.0;
     double W = hol_room_cols(&v->user) * m, D = hol_room_rows(&v->user) * m;
     const double pts[4][2] = {{W / 2, 0}, {W, D / 2}, {W / 2, D}, {0, D / 2}};
-    for (int i = 0; i < 4; i++) {
+    for (int i = 0; i < 4 && nc < HOL__SND_CAND; i++) {
         double a[3] = {pts[i][0] - v->head[0], 1.0 - v->head[1], pts[i][1] - v->head[2]};
         double d = sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
-        hol_sound_src s;
-        s.kind = HOL_SND_WIND;
-        s.id = (uint32_t)(0x57494e00u + (uint32_t)(i << 8)) | HOL_SND_WIND;
-        s.dist_m = d;
+        hol_sound_src *s = &cand[nc];
+        s->kind = HOL_SND_WIND;
+        s->id = (uint32_t)(0x57494e00u + (uint32_t)(i << 8)) | HOL_SND_WIND;
+        s->dist_m = d;
         for (int k = 0; k < 3; k++)
             a[k] = d > 1e-9 ? a[k] / d : (k == 2 ? -1 : 0);
-        hol__to_head(g->q, a, s.dir);
-        s.gain = 0.5 * hol_sound_falloff(d, 0, 1, 1);
+        hol__to_head(g->q, a, s->dir);
+        s->gain = 0.5 * hol_sound_falloff(d, 0, 1, HOL_SOUND_RADIUS_M);
+        nc += s->gain > 0;
+    }
+    return nc;
+}
+
+/* The candidates into the list after its beacons: all of them when they
+ * fit; else the loudest that fit, each less the gain of the first left
+ * out, so that a source enters or leaves the list at gain 0 (no pop). */
+static void hol__choose(hol_sound_list *o, const hol_sound_src *cand, int nc)
+{
+    int room = HOL_SOUND_MAX_SOURCES - o->n, first = o->n;
+    if (nc <= room) {
+        for (int i = 0; i < nc; i++)
+            hol__add(o, first, &cand[i]);
+        return;
+    }
+    /* the room + 1 loudest, by insertion (ties: the one found first) */
+    int top[HOL_SOUND_MAX_SOURCES + 1], nt = 0;
+    for (int i = 0; i < nc; i++) {
+        int k = nt < room + 1 ? nt++ : room + 1;
+        while (k > 0 && cand[top[k - 1]].gain < cand[i].gain) {
+            if (k < room + 1)
+                top[k] = top[k - 1];
+            k--;
+        }
+        if (k < room + 1)
+            top[k] = i;
+    }
+    double cut = cand[top[room]].gain;
+    for (int i = 0; i < room; i++) {
+        hol_sound_src s = cand[top[i]];
+        s.gain -= cut;
         hol__add(o, first, &s);
     }
 }
@@ -282,12 +423,13 @@ hol_err hol_sound_update(hol_sound *s, const hol_app_view *v, const hol_app_even
         hol__effects(s, v, ev, w, out);
     if (v->state == HOL_APP_PLAYING && (v->map.cues & HOL_CUE_SOUND)) {
         for (int i = 0; i < v->map.nobjectives && out->n < HOL_SOUND_MAX_SOURCES; i++)
-            hol__tile_src(&g, v->map.objectives[i], HOL_SND_BEACON, 1.5, 0, out, 0);
+            hol__beacon(&g, v->map.objectives[i], out);
         out->beacons = out->n;
     }
     if (v->sound == HOL_SOUND_ALL) {
-        hol__ambience(&g, w, out, out->beacons);
-        hol__wind(&g, v, out, out->beacons);
+        hol_sound_src cand[HOL__SND_CAND];
+        int nc = hol__ambience(s, &g, v, w, cand);
+        hol__choose(out, cand, hol__wind(&g, v, cand, nc));
     }
     s->keys_held = v->hud.keys_held;
     s->state = v->state;

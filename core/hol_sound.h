@@ -26,14 +26,23 @@
  *   Lorentz norm of the chord) in curvature units, times M / e metres
  *   (e = hol_hyper_edge_q: a step is one cell); |chord| in {4,4}. The
  *   true distance is d = sqrt(floor^2 + dh^2).
- * - Falloff: G(d) = W(d) (1 - B + B s) / (1 + d / D0), with s = x / sinh x
- *   (x the floor distance in curvature units; 1 in {4,4}) the physical
- *   spreading of H^2 blended by B = HOL_SOUND_PHYS, an inverse distance
- *   softened within D0 = 1 m, and W(d) = (1 - (d/R)^2)^2 below
- *   R = HOL_SOUND_RADIUS_M, 0 beyond, for ambience (so a source fades in
- *   without a pop); beacons have no window (W = 1) and are heard from any
- *   distance a frame reaches. Effects at the listener have gain 1
- *   (footsteps 0.6).
+ * - Falloff: G(d) = W(d) sqrt(s) / (1 + d / D0), with s = x / sinh x
+ *   (x the floor distance in curvature units; 1 in {4,4}) the spreading of
+ *   H^2 (a circle's length grows as sinh: the intensity falls as s / d^2,
+ *   so the amplitude as sqrt(s) / d), an inverse distance softened within
+ *   D0 = 1 m (1 / (1 + d) for 1 / d: the one departure from the physics,
+ *   so that a source at the ear is not infinitely loud), and
+ *   W(d) = (1 - (d/R)^2)^2 below R, 0 beyond, for ambience (so a source
+ *   fades in and out without a pop); R = hol_sound_radius_m
+ *   (HOL_SOUND_RADIUS_M, or less in {4,q>4}: HOL_SOUND_HORIZON curvature
+ *   radii; the tiles within a radius grow as e^r: the horizon bounds the
+ *   work), cut to the world's generated radius (no nearer than the
+ *   nearest tile more than hol_world_radius steps from the user's, less a
+ *   tile's circumradius: no source appears as a tile collapses; the
+ *   listener's hol_sound.radius); the hedges' wind has
+ *   R = HOL_SOUND_RADIUS_M (room space).
+ *   Beacons have no window (W = 1) and are heard from any distance a frame
+ *   reaches. Effects at the listener have gain 1 (footsteps 0.6).
  * - Direction: the initial direction of the geodesic from the listener to
  *   the source: the tangent S + <P,S> P at the listener's point P, boosted
  *   to the origin (the floor part, room east and north), the height
@@ -43,11 +52,16 @@
  *   follows the world's geodesics, not the room's portals: a source seen
  *   through a portal in one cell may be heard from another direction (that
  *   is holonomy made audible; docs/sound.md).
- * - Which: the HOL_SOUND_MAX_SOURCES loudest (nearest) sources of the
- *   tiles within HOL_SOUND_STEPS room steps of the user's tile, beacons
- *   first; each with a stable id (kind and tile) so a platform keeps the
- *   same voice playing from frame to frame. Effects of the step come as
- *   shots (played once).
+ * - Which: by true distance, not by steps: beacons first, then every
+ *   ambient source whose gain is above 0 (every tile whose centre is
+ *   within R, found breadth first through the tiles whose centre lies
+ *   within R plus a tile's circumradius) and the wind. When more than fit
+ *   (HOL_SOUND_MAX_SOURCES), the loudest that fit play, each less the gain
+ *   of the loudest left out: a source enters and leaves the list at gain 0
+ *   (a continuous cross-fade at the cap; the window is the cross-fade at
+ *   the radius). Each with a stable id (kind and tile) so a platform keeps
+ *   the same voice playing from frame to frame. Effects of the step come
+ *   as shots (played once).
  * - Pure: no allocation, no OS, no libm (core/hol_math.h); the same view,
  *   events and world give the same list, bit for bit.
  * - Synthesis (hol_sound_synth): every kind's buffer, mono 16-bit at the
@@ -67,8 +81,7 @@
 #define HOL_SOUND_MAX_SHOTS 8
 #define HOL_SOUND_RADIUS_M 4.0
 #define HOL_SOUND_D0_M 1.0
-#define HOL_SOUND_PHYS 0.5
-#define HOL_SOUND_STEPS 3
+#define HOL_SOUND_HORIZON 3.5
 #define HOL_SOUND_RATE 48000
 
 typedef enum hol_sound_kind {
@@ -102,10 +115,32 @@ typedef struct hol_sound_list {
     int beacons;                             /* beacons in src[] */
 } hol_sound_list;
 
-/* What one listener remembers between frames (to see a key collected). */
+/* One ambient source of the cache: its tile's centre (user frame). */
+typedef struct hol_sound_amb {
+    double S[3];
+    double h;          /* metres up */
+    int kind;
+    uint32_t id;
+} hol_sound_amb;
+
+#define HOL_SOUND_MAX_AMB 256
+
+/* What one listener remembers between frames: to see a key collected, and
+ * the ambient sources around the user's tile (a cache: rebuilt whenever
+ * the user's tile, its orientation, the cell size or the world's tiles
+ * change, so the list is the same as without it). */
 typedef struct hol_sound {
     int keys_held;
     int state;
+    int valid;                 /* 1: the cache below holds */
+    hol_room user;
+    double cell_m;
+    const struct hol_world *world;
+    uint64_t world_key[5];     /* collapses, backtracks, evictions, count,
+                                  seed */
+    double radius;             /* the ambience's window R, metres */
+    int namb;
+    hol_sound_amb amb[HOL_SOUND_MAX_AMB];
 } hol_sound;
 
 void hol_sound_init(hol_sound *s);
@@ -120,8 +155,10 @@ hol_err hol_sound_update(hol_sound *s, const hol_app_view *v, const hol_app_even
 /* The documented falloff: d_m the true distance in metres, chord the
  * Lorentz norm of the floor chord (the floor distance in curvature units is
  * x = 2 asinh(chord/2), and sinh x = chord sqrt(1 + chord^2/4): no exp in
- * core), flat 1 in {4,4} (s = 1), windowed 1 for ambience. */
-double hol_sound_falloff(double d_m, double chord, int flat, int windowed);
+ * core), flat 1 in {4,4} (s = 1), radius_m the window's R (0: none). */
+double hol_sound_falloff(double d_m, double chord, int flat, double radius_m);
+/* The ambience's window R in metres in {4,q} with cells of cell_m (0: 1). */
+double hol_sound_radius_m(int q, double cell_m);
 
 /* Samples of a kind's buffer at `rate` Hz (0 for a bad kind). */
 int hol_sound_length(int kind, int rate);

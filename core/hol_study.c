@@ -275,7 +275,7 @@ static hol_err hol__question(hol__sp *p, const char *b, const char *end)
     return HOL_OK;
 }
 
-/* questionnaire NAME ITEM... | questionnaire NAME after WHEN. */
+/* questionnaire NAME ITEM... | questionnaire NAME after|before WHEN. */
 static hol_err hol__questionnaire(hol__sp *p, const char *rest, const char *end)
 {
     hol_study *s = p->s;
@@ -288,22 +288,26 @@ static hol_err hol__questionnaire(hol__sp *p, const char *rest, const char *end)
                          "'questionnaire' comes before the first condition");
     if (!hol_ask_id_ok(w, n) || n2 == 0)
         return hol__fail(p->err, HOL_EPARSE, p->line, 0,
-                         "questionnaire needs NAME ITEM... or NAME after level|condition|study "
+                         "questionnaire needs NAME ITEM... or NAME after|before "
+                         "level|condition|study "
                          "(NAME 1..31 letters, digits, '_', '-', '.')");
     char name[HOL_APP_ID_MAX];
     memcpy(name, w, n);
     name[n] = 0;
-    if (hol__is(w2, n2, "after") && n3 && !n4) {
+    int before = hol__is(w2, n2, "before");
+    if ((before || hol__is(w2, n2, "after")) && n3 && !n4) {
         int when = hol_ask_when(w3, n3);
-        if (when < 0)
+        if (when < 0 || hol_ask_before(when))
             return hol__fail(p->err, HOL_EPARSE, p->line, 0,
-                             "questionnaire %s after '%.*s': level, condition or study", name,
-                             (int)(n3 < 20 ? n3 : 20), w3);
+                             "questionnaire %s %s '%.*s': level, condition or study", name,
+                             before ? "before" : "after", (int)(n3 < 20 ? n3 : 20), w3);
+        when += before ? HOL_APP_BEFORE_LEVEL : 0;
         for (int k = 0; k < s->nasks; k++)
             if (s->asks[k].when == when && !strcmp(s->asks[k].name, name))
                 return hol__fail(p->err, HOL_EARG, p->line, s->asks[k].line,
-                                 "questionnaire %s after %s is given twice", name,
-                                 hol_ask_when_name(when));
+                                 "questionnaire %s %s %s is given twice", name,
+                                 before ? "before" : "after",
+                                 hol_ask_when_name(when - (before ? HOL_APP_BEFORE_LEVEL : 0)));
         if (s->nasks >= HOL_APP_MAX_ASKS)
             return hol__fail(p->err, HOL_ENOMEM, p->line, 0, "more than %d questionnaires asked",
                              HOL_APP_MAX_ASKS);
@@ -315,8 +319,8 @@ static hol_err hol__questionnaire(hol__sp *p, const char *rest, const char *end)
     }
     if (n3 && !n4 && hol_ask_when(w3, n3) >= 0)
         return hol__fail(p->err, HOL_EPARSE, p->line, 0,
-                         "questionnaire %s %.*s %.*s: a questionnaire is placed with 'after "
-                         "level|condition|study'", name, (int)(n2 < 20 ? n2 : 20), w2,
+                         "questionnaire %s %.*s %.*s: a questionnaire is placed with "
+                         "'after|before level|condition|study'", name, (int)(n2 < 20 ? n2 : 20), w2,
                          (int)n3, w3);
     if (hol_ask_preset(w, n, NULL, 0))
         return hol__fail(p->err, HOL_EARG, p->line, 0, "questionnaire %s is a preset: it has its "
@@ -696,16 +700,23 @@ static int hol__screen_key(const hol_study *s, int c, int i, int position, const
            (kn == 7 && !memcmp(k, "closing", 7) && hol__closing_of(s, c, i, position));
 }
 
-/* Is the study's ask k due after level i (condition c, position)? */
+/* Is the study's ask k due with level i (condition c, position): after
+ * it, or before it (a baseline: `before study` before the participant's
+ * first level, the practice's when there is one)? */
 static int hol__ask_due(const hol_study *s, int k, int c, int i, int position)
 {
+    if (s->asks[k].when == HOL_APP_BEFORE_STUDY)
+        return s->npractice > 0 ? c < 0 && i == 0
+                                : c >= 0 && position == 1 && i == s->conditions[c].first_level;
     if (c < 0)
-        return 0; /* practice levels ask nothing */
+        return 0; /* practice levels ask nothing else */
     const hol_study_condition *cd = &s->conditions[c];
     int last_of_cond = i == cd->first_level + cd->nlevels - 1;
     switch (s->asks[k].when) {
-    case HOL_APP_AFTER_LEVEL: return 1;
+    case HOL_APP_AFTER_LEVEL:
+    case HOL_APP_BEFORE_LEVEL: return 1;
     case HOL_APP_AFTER_CONDITION: return last_of_cond;
+    case HOL_APP_BEFORE_CONDITION: return i == cd->first_level;
     default: return last_of_cond && position == s->nconditions;
     }
 }
@@ -724,14 +735,22 @@ static int hol__put_question(const hol_study *s, const char *id, size_t n, hol__
     return 0;
 }
 
-/* The questionnaires due after level i: their questions, then `ask NAME
- * WHEN ID...`, by when (level, condition, study), in the file's order. */
+/* The order questionnaires are put in: before study, condition, level;
+ * then after level, condition, study. */
+static const int hol__whens[HOL_APP_ASK_WHENS] = {
+    HOL_APP_BEFORE_STUDY, HOL_APP_BEFORE_CONDITION, HOL_APP_BEFORE_LEVEL,
+    HOL_APP_AFTER_LEVEL,  HOL_APP_AFTER_CONDITION,  HOL_APP_AFTER_STUDY};
+
+/* The questionnaires due with level i whose when is hol__whens[from..to):
+ * their questions (each once: put), then `ask NAME WHEN ID...`, by when,
+ * in the file's order. */
 static int hol__put_asks(const hol_study *s, int c, int i, int position, hol__compose *cp,
                          int from, int to, unsigned char *put)
 {
-    for (int when = from; when < to; when++)
+    for (int w = from; w < to; w++)
         for (int k = 0; k < s->nasks; k++) {
             const hol_study_ask *a = &s->asks[k];
+            int when = hol__whens[w];
             if (a->when != when || !hol__ask_due(s, k, c, i, position))
                 continue;
             const hol_study_questionnaire *d = NULL;
@@ -764,8 +783,8 @@ static int hol__study_ask_due(const hol_study *s, int c, int i, int position)
     return 0;
 }
 
-/* The screen lines of level i after its text: its questionnaires after
- * the level and the condition, its instructions, then what only the
+/* The screen lines of level i after its text: its questionnaires (but
+ * those after the study), its instructions, then what only the
  * participant's last level carries (the questionnaires `after study`, the
  * closing) after HOL_LEVEL_LAST_MARK, outside the level's hash. 1 when
  * they do not fit. */
@@ -773,7 +792,7 @@ static int hol__put_screens(const hol_study *s, int c, int i, int position, hol_
 {
     unsigned char put[HOL_STUDY_MAX_QUESTIONS] = {0};
     cp->stage = "questions asked after it";
-    if (hol__put_asks(s, c, i, position, cp, HOL_APP_AFTER_LEVEL, HOL_APP_AFTER_STUDY, put))
+    if (hol__put_asks(s, c, i, position, cp, 0, HOL_APP_ASK_WHENS - 1, put))
         return 1;
     const hol_study_span *a = hol__instr_of(s, c, i), *b = hol__closing_of(s, c, i, position);
     cp->stage = "instructions";
@@ -784,7 +803,7 @@ static int hol__put_screens(const hol_study *s, int c, int i, int position, hol_
                               c >= 0 ? -s->conditions[c].line : 0))
         return 1;
     cp->stage = "questions asked after it";
-    if (hol__put_asks(s, c, i, position, cp, HOL_APP_AFTER_STUDY, HOL_APP_AFTER_STUDY + 1, put))
+    if (hol__put_asks(s, c, i, position, cp, HOL_APP_ASK_WHENS - 1, HOL_APP_ASK_WHENS, put))
         return 1;
     cp->stage = "closing";
     return b && hol__put_line(cp, s->text + b->off, b->len, -b->line);
@@ -884,8 +903,10 @@ static hol_err hol__make_at(const hol_study *s, int i, int position, const char 
     hol__compose cp = {buf, 0, sizeof buf, origin, 0, (long)(sizeof origin / sizeof origin[0]),
                        "level file's lines"};
     /* a practice level is the file as it is, unless it carries the
-     * practice's instructions */
+     * practice's instructions or a questionnaire before the study */
     int composed = c >= 0 || hol__instr_of(s, c, i);
+    for (int k = 0; k < s->nasks && !composed; k++)
+        composed = hol__ask_due(s, k, c, i, position);
     long at = c >= 0 ? s->conditions[c].line : s->practice_instructions.line;
     if (composed && hol__compose_text(s, c, i, position, file, len, &cp)) {
         *out_in_study = 1;

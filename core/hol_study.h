@@ -35,6 +35,12 @@
  *                             item (core/hol_ask.h: likert or choice)
  *     questionnaire NAME ITEM...  before the first condition: a
  *                             questionnaire of those items (question IDs)
+ *     questionnaire NAME before level|condition|study  before the first
+ *                             condition: asked when every level of the
+ *                             conditions starts, a condition's first
+ *                             level, or the participant's first level (the
+ *                             first practice level, if any), before its
+ *                             instructions: `ask NAME before_WHEN` lines
  *     questionnaire NAME after level|condition|study  before the first
  *                             condition: asked after every level of the
  *                             conditions, after each condition's last
@@ -71,7 +77,7 @@
  *   file's own left out): the level's hash stops at the mark, so a level
  *   has one SHA-256 at every position (issue 35). With none of these the text is the file's, unchanged (the same
  *   SHA-256); practice levels are the files as they are but for their
- *   instructions.
+ *   instructions and the first one's `before study` questionnaires.
  * - Counterbalancing (hol_study_order, hol_study_square): participant
  *   number P (1, 2, ...) plays row (P - 1) mod R of the rule's square of
  *   the n conditions, R = hol_study_rows:

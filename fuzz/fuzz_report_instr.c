@@ -1,5 +1,5 @@
 /* fuzz_report_instr.c - libFuzzer harness for the report's readers of
- * points.csv and answers.csv (platform/cli/report/report_stats.c through
+ * points.csv and answers.csv (platform/cli/report/report_answers.c through
  * report_stats_instrument, their values checked by report_instr.h; issue
  * 39 findings 7, 12 and 17).
  *

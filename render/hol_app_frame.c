@@ -97,5 +97,8 @@ void hol_app_frame_panel(const hol_app_view *v, hol_frame_desc *out)
     out->flags |= HOL_RENDER_PANEL;
     memcpy(out->panel_pos, v->panel.pos, sizeof out->panel_pos);
     memcpy(out->panel_orient, v->panel.orient, sizeof out->panel_orient);
-    out->panel_px = 0;
+    /* nearer than HOL_PANEL_DISTANCE in front of a hedge: smaller alike,
+     * the same angular size (core/hol_panel.h) */
+    double k = v->panel.scale;
+    out->panel_px = k > 0 && k != 1 ? HOL_RENDER_PANEL_PX * k : 0;
 }

@@ -19,7 +19,8 @@
  *   hand_pos and hand_orient with the hand's pose.
  * - A headset's eyes: hol_app_frame_panel moves the HUD text (and the
  *   minimap, unless it is in the hand) onto the panel in the world where
- *   the app step placed it (hol_app_view.panel, core/hol_panel.h). Every
+ *   the app step placed it (hol_app_view.panel, core/hol_panel.h), its
+ *   font pixel scaled by the panel's scale (nearer: smaller alike). Every
  *   platform that draws for a headset (OpenXR, WebXR) calls it for each
  *   eye; desktop, pancake and replays keep the screen layout.
  */

@@ -226,6 +226,9 @@ static hol_err hol__queue_panel_only(hol_render *r, const hol_frame_desc *f, hol
     if (f->flags & HOL_RENDER_MINIMAP_HAND)
         g->flags &= ~(uint32_t)HOL_RENDER_MINIMAP;
     memset(g->panel_pos, 0, sizeof g->panel_pos);
+    /* the image is the box whatever its size in metres: a panel nearer in
+     * front of a hedge (scaled, core/hol_panel.h) keeps its key and image */
+    g->panel_px = 0;
     static const double unturned[4] = {0, 0, 0, 1};
     memcpy(g->panel_orient, unturned, sizeof unturned);
     g->lighting = 0;

@@ -331,9 +331,14 @@ static void hol__set_pass_as(hol_render *r, const hol_frame_desc *f, int pass, c
         r->gl.Uniform1i(r->pg->u_mode, ids ? HOL__MODE_ID : HOL__MODE_FLAT);
         break;
     case HOL__PASS_PANEL:
-        /* in the world, drawn last over everything (no depth test): the
-         * text is never hidden by a hedge or a trunk nearer than it */
+        /* in the world, drawn last, hidden where the scene is nearer (no
+         * depth writes: its layers painted in order). The app places it in
+         * front of the nearest hedge or trunk in its direction, down to
+         * 0.5 m (core/hol_panel.h); a trunk nearer than that covers it as
+         * it would cover a real sign, never the other way round. */
         hol__set_overlay(r, vp, ids ? HOL__MODE_ID : HOL__MODE_FLAT);
+        r->gl.Enable(GL_DEPTH_TEST);
+        r->gl.DepthFunc(GL_LEQUAL);
         break;
     case HOL__PASS_FADE:
         hol__set_overlay(r, NULL, HOL__MODE_FLAT);

@@ -196,8 +196,9 @@ typedef struct hol_frame_desc {
      * unturned it faces +z, up +y), one font pixel panel_px metres (0:
      * HOL_RENDER_PANEL_PX). The text block and the map square beside it
      * (render/hol_hud.h) are drawn with the eye's view and projection,
-     * after the scene and over it (no depth test): always readable, even
-     * where a hedge or a trunk comes nearer than the panel. */
+     * after the scene, depth-tested (no depth writes): hidden where the
+     * scene is nearer, never drawn over it. The app places it in front of
+     * the nearest hedge or trunk (core/hol_panel.h), scaled by panel_px. */
     double panel_pos[3];
     double panel_orient[4];
     double panel_px;

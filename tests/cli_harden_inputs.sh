@@ -108,9 +108,12 @@ study_refused "an item twice" "line 3: questionnaire mine lists 'fun' twice" \
     'question fun likert 1 7 "Fun?" "a" "b"' "questionnaire mine fun fun"
 study_refused "a choice twice" "line 2: question hand: choice 3 is choice 1 again ('left')" \
     'question hand choice "Which?" "left" "right" "left"'
-study_refused "ssq before level" \
-    "line 2: questionnaire ssq before level: a questionnaire is placed with 'after level|condition|study'" \
-    "questionnaire ssq before level"
+study_refused "ssq during level" \
+    "line 2: questionnaire ssq during level: a questionnaire is placed with 'after|before level|condition|study'" \
+    "questionnaire ssq during level"
+study_refused "ssq before before_level" \
+    "line 2: questionnaire ssq before 'before_level': level, condition or study" \
+    "questionnaire ssq before before_level"
 study_refused "set place lantern: not canonical" "line 3: set: 'Nrr' is not a canonical address" \
     "set lighting night" "set place lantern Nrr"
 study_refused "set place lantern twice" "line 4: set: a lantern on Nf is already placed on line 3" \

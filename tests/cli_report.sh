@@ -40,7 +40,7 @@ run "report" 0 "$H" report "$T/la" "$T/lb" "$T/lc" --out "$T/out1"
 [ "$(cat "$T/out")" = "report: 3 attempts from 3 log folders" ] && ok || bad "stdout: $(cat "$T/out")"
 [ ! -s "$T/err" ] && ok || bad "warnings on good logs: $(cat "$T/err")"
 ls "$T/out1" | tr '\n' ' ' >"$T/ls"
-[ "$(cat "$T/ls")" = "attempt-0001.png attempt-0002.png attempt-0003.png attempts.csv conditions.csv effects.csv index.html learning.csv paired.csv participants.csv participants_stats.csv stats.csv trials.csv " ] &&
+[ "$(cat "$T/ls")" = "attempt-0001.png attempt-0002.png attempt-0003.png attempts.csv build.csv codebook.csv conditions.csv effects.csv index.html learning.csv paired.csv participants.csv participants_stats.csv scores.csv stats.csv trials.csv " ] &&
     ok || bad "files: $(cat "$T/ls")"
 
 # the CSV: one row per attempt, values from the summaries

@@ -92,6 +92,42 @@ want='s1,map,likert,fun/enjoy,2,4.5000,0.7071,-1.8531,10.8531'
 grep -qx "$want" "$T/r/stats.csv" && ok || bad "likert fun/enjoy: $(grep enjoy "$T/r/stats.csv")"
 grep -q colour "$T/r/stats.csv" && bad "a choice item has a mean" || ok
 
+# scores.csv (issue 35): one row per score, subscale or Likert item, by hand:
+# the SSQ after map (N 4 x 9.54, O 2 x 7.58, D 5 x 13.92, T 11 x 3.74), the
+# TLX after nomap (raw and items), a Likert item its value, the partial SSQ
+# after study (attempt 0) under `study` with no scores and complete 0, and
+# P02's TLX after study (10..60: raw 35) under `study`
+{
+    echo 'session,participant,attempt,questionnaire,when,item,kind,value,time'
+    v=10
+    for i in mental physical temporal performance effort frustration; do
+        echo "sb,P02,0,tlx,study,$i,likert,$v,1.0"
+        v=$((v + 10))
+    done
+} >"$T/l2/answers.csv"
+run "report with a TLX after study" 0 "$H" report "$T/l1" "$T/l2" --out "$T/rs"
+sc="$T/rs/scores.csv"
+head -1 "$sc" | grep -qx 'participant,session,attempt,study,condition,placement,scope,instrument,subscale,score,complete' &&
+    ok || bad "scores.csv header: $(head -1 "$sc")"
+for want in P01,sa,3,s1,map,after,condition,ssq,total,41.1400,1 \
+    P01,sa,3,s1,map,after,condition,ssq,nausea,38.1600,1 \
+    P01,sa,3,s1,map,after,condition,ssq,oculomotor,15.1600,1 \
+    P01,sa,3,s1,map,after,condition,ssq,disorientation,69.6000,1 \
+    P01,sa,4,s1,nomap,after,condition,tlx,raw,60.0000,1 \
+    P01,sa,4,s1,nomap,after,condition,tlx,effort,60.0000,1 \
+    P01,sa,2,s1,map,after,level,fun,enjoy,4.0000,1 \
+    P01,sa,3,s1,map,after,level,fun,enjoy,5.0000,1 \
+    P01,sa,0,,study,after,study,ssq,total,,0 \
+    P01,sa,0,,study,after,study,ssq,nausea,,0 \
+    P02,sb,0,,study,after,study,tlx,raw,35.0000,1 \
+    P02,sb,0,,study,after,study,tlx,mental,10.0000,1 \
+    P02,sb,0,,study,after,study,tlx,frustration,60.0000,1; do
+    grep -qx "$want" "$sc" && ok || bad "scores.csv: no $want"
+done
+[ "$(grep -c ',ssq,' "$sc")" = 8 ] && ok || bad "ssq rows: $(grep ',ssq,' "$sc")"
+[ "$(grep -c ',tlx,' "$sc")" = 14 ] && ok || bad "tlx rows: $(grep -c ',tlx,' "$sc")"
+grep -q colour "$sc" && bad "a choice item scored" || ok
+
 # learning curve: map at positions 1 (P01 1.0, P02 0.8333) and 2 (0.5)
 grep -qx 's1,map,1,2,0.9167,0.1179,-0.1422,1.9755' "$T/r/learning.csv" && ok ||
     bad "learning map 1: $(cat "$T/r/learning.csv")"

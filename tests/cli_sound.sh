@@ -80,7 +80,7 @@ cmp -s "$T/east.wav" "$T/east2.wav" && ok || bad "the same recording gave other 
 
 # the level falls with the true distance: the beacon 1, 2 and 3 tiles east
 # (floor k m: centres on one geodesic, a step is a cell), 0.1 m below the
-# ear; model G(d) = (0.5 + 0.5 x/sinh x) / (1 + d), x = k e the floor
+# ear; model G(d) = sqrt(x/sinh x) / (1 + d), x = k e the floor
 # distance in curvature units, e = 2 acosh(cos(pi/5)/sin(pi/4)).
 # The power ratio is the square of the gain ratio (the same direction, so
 # the same pan law), within 3 %.
@@ -95,8 +95,8 @@ for f in Ef Eff; do
         split(a, A, " "); split(b, B, " ")
         pi = 3.14159265358979; c = cos(pi / 5) / sin(pi / 4); e = 2 * log(c + sqrt(c * c - 1))
         x1 = e; xk = k * e; d1 = sqrt(1 + 0.01); dk = sqrt(k * k + 0.01)
-        g1 = (0.5 + 0.5 * x1 / ((exp(x1) - exp(-x1)) / 2)) / (1 + d1)
-        gk = (0.5 + 0.5 * xk / ((exp(xk) - exp(-xk)) / 2)) / (1 + dk)
+        g1 = sqrt(x1 / ((exp(x1) - exp(-x1)) / 2)) / (1 + d1)
+        gk = sqrt(xk / ((exp(xk) - exp(-xk)) / 2)) / (1 + dk)
         want = (gk / g1) ^ 2; got = (B[1] + B[2]) / (A[1] + A[2])
         if (got < want * 0.97 || got > want * 1.03) { print want, got; exit 1 }
     }' >"$T/ratio" && ok || bad "beacon $k tiles east: power ratio (want, got) $(cat "$T/ratio")"

@@ -113,9 +113,12 @@ wait_for() {
 }
 
 # A replay's logs against the play's: every file byte for byte, but
-# environment.csv and study-HASH.txt, which only a live session writes
-# (docs/research.md: Session metadata).
-logs_diff() { diff -r -x environment.csv -x 'study-*.txt' "$@"; }
+# environment.csv, study-HASH.txt and order.csv, which only a live session
+# writes (docs/research.md: Session metadata; docs/logs.md: Provenance and
+# codebook), and provenance.csv, which names the build that wrote the folder
+# (a replay by another build, or of one session of an appended folder,
+# has other rows). codebook.csv is compared: one build writes one.
+logs_diff() { diff -r -x environment.csv -x 'study-*.txt' -x order.csv -x provenance.csv "$@"; }
 
 finish() {
   echo "$1: $passes passed, $fails failed"

@@ -331,12 +331,77 @@ static void test_study_placement(void **state)
     }
 }
 
+/* Level i's asks as NAME:WHEN, in order. */
+static void whens_of(int i, int position, char *names)
+{
+    static const char file[] = "mode flag\nflag N\n";
+    hol_level lv;
+    hol_level_err e;
+    int in_study;
+    assert_int_equal(hol_study_make_level(&g_study, i, position, file, sizeof file - 1, NULL, &lv,
+                                          &e, &in_study),
+                     HOL_OK);
+    names[0] = 0;
+    for (int k = 0; k < lv.lvl.nasks; k++)
+        sprintf(names + strlen(names), "%s%s:%s", k ? " " : "", lv.lvl.asks[k].name,
+                hol_ask_when_name(lv.lvl.asks[k].when));
+}
+
+/* `before` placements (issue 35): before study on the participant's first
+ * level (the practice's when there is one), before condition on each
+ * condition's first, before level on each; before ones ahead of after
+ * ones; a level line `ask NAME during` refused. */
+static void test_study_before(void **state)
+{
+    (void)state;
+    static const char text[] =
+        "study s\ncounterbalance fixed\npractice p.lvl\n"
+        "question fun likert 1 7 \"Fun?\" \"no\" \"yes\"\n"
+        "questionnaire mine fun\n"
+        "questionnaire tlx after condition\nquestionnaire mine before level\n"
+        "questionnaire tlx before condition\nquestionnaire ssq before study\n"
+        "condition a\nlevel x.lvl\nlevel x.lvl\ncondition b\nlevel x.lvl\n";
+    hol_level_err e;
+    assert_int_equal(hol_study_parse(text, sizeof text - 1, &g_study, &e), HOL_OK);
+    char names[256];
+    whens_of(0, 0, names);
+    assert_string_equal(names, "ssq:before_study");
+    whens_of(1, 1, names);
+    assert_string_equal(names, "tlx:before_condition mine:before_level");
+    whens_of(2, 1, names);
+    assert_string_equal(names, "mine:before_level tlx:condition");
+    whens_of(3, 2, names);
+    assert_string_equal(names, "tlx:before_condition mine:before_level tlx:condition");
+    static const char plain[] = "study s\ncounterbalance fixed\nquestionnaire ssq before study\n"
+                                "condition a\nlevel x.lvl\nlevel x.lvl\ncondition b\nlevel x.lvl\n";
+    assert_int_equal(hol_study_parse(plain, sizeof plain - 1, &g_study, &e), HOL_OK);
+    whens_of(0, 1, names);
+    assert_string_equal(names, "ssq:before_study");
+    whens_of(1, 1, names);
+    assert_string_equal(names, "");
+    whens_of(2, 1, names); /* b played first */
+    assert_string_equal(names, "ssq:before_study");
+    whens_of(2, 2, names);
+    assert_string_equal(names, "");
+    hol_level lv;
+    static const char bad[] = "mode flag\nflag N\nask ssq during\n";
+    assert_int_not_equal(hol_level_parse(bad, sizeof bad - 1, &lv.lvl, &e), HOL_OK);
+    char msg[256];
+    hol_level_err_format(&e, 1, msg, sizeof msg);
+    assert_non_null(strstr(msg, "ask ssq: 'during' is not level, condition, study, before_level, "
+                                "before_condition or before_study"));
+    static const char good[] = "mode flag\nflag N\nask ssq before_level\n";
+    assert_int_equal(hol_level_parse(good, sizeof good - 1, &lv.lvl, &e), HOL_OK);
+    assert_int_equal(lv.lvl.asks[0].when, HOL_APP_BEFORE_LEVEL);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_presets),       cmocka_unit_test(test_question_line),
         cmocka_unit_test(test_app_ssq),       cmocka_unit_test(test_app_choice_time),
         cmocka_unit_test(test_app_ray),       cmocka_unit_test(test_study_placement),
+        cmocka_unit_test(test_study_before),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }

@@ -3,7 +3,9 @@
  * ahead along the anchor's yaw, 10 degrees below eye level, facing the
  * eyes; it stays while the head turns up to 20 degrees or moves up to
  * 0.5 m, re-centres (easing, not in one frame) beyond, and then stops. The
- * app step drives it: a level start places it before the head.
+ * app step drives it: a level start places it before the head. In a room
+ * it comes in front of the nearest hedge or trunk ahead, down to 0.5 m,
+ * scaled alike (the distances worked out by hand here).
  */
 #include <math.h>
 #include <setjmp.h>
@@ -20,13 +22,15 @@
 
 #define PI 3.14159265358979323846
 
+static double g_dist = 1.5; /* the distance the panel must stand at */
+
 /* where the panel must stand for a head at h looking along yaw (degrees) */
 static void expect_place(const double h[3], double yaw, double out[3])
 {
     double y = yaw * PI / 180, d = 10 * PI / 180;
-    out[0] = h[0] - 1.5 * cos(d) * sin(y);
-    out[1] = h[1] - 1.5 * sin(d);
-    out[2] = h[2] - 1.5 * cos(d) * cos(y);
+    out[0] = h[0] - g_dist * cos(d) * sin(y);
+    out[1] = h[1] - g_dist * sin(d);
+    out[2] = h[2] - g_dist * cos(d) * cos(y);
 }
 
 /* v turned by the unit quaternion q (x, y, z, w) */
@@ -57,7 +61,8 @@ static void assert_at(const hol_panel *p, const double h[3], double yaw)
         len += to[i] * to[i];
     }
     len = sqrt(len);
-    assert_true(fabs(len - 1.5) < 1e-9);
+    assert_true(fabs(len - g_dist) < 1e-9);
+    assert_true(fabs(p->scale - g_dist / 1.5) < 1e-12);
     for (int i = 0; i < 3; i++)
         assert_true(fabs(n[i] - to[i] / len) < 1e-9);
     assert_true(fabs(r[1]) < 1e-9);
@@ -194,6 +199,14 @@ static void test_app_drives_it(void **state)
     assert_int_equal(hol_app_step(app, &in), HOL_OK);
     const hol_app_view *v = hol_app_get_view(app);
     assert_int_equal(v->panel.placed, 1);
+    /* the middle of the 3 x 3 room looking north: the trunks at (1, 0) and
+     * (2, 0) stand 18.43 degrees aside, just beyond the 18 degrees looked
+     * along: the edge ray meets the trunk (radius 0.12) at t; 5 cm before
+     * that depth, 10 degrees down */
+    double e18 = 18 * PI / 180, cx = 0.5, cz = 1.5, c2 = cx * cx + cz * cz;
+    double b = cx * sin(e18) + cz * cos(e18);
+    double t18 = b - sqrt(0.12 * 0.12 - (c2 - b * b));
+    g_dist = (t18 * cos(e18) - 0.05) / cos(10 * PI / 180);
     assert_at(&v->panel, v->head, 0);
     double h0[3] = {v->head[0], v->head[1], v->head[2]};
     for (int f = 1; f <= 30; f++) { /* a 15 degree look aside */
@@ -210,10 +223,51 @@ static void test_app_drives_it(void **state)
     }
     assert_int_equal(v->panel.moving, 0);
     assert_true(fabs(v->yaw_deg - 40) < 1e-3);
+    g_dist = v->panel.dist; /* the rule's own: test_room has it */
+    assert_true(g_dist >= 0.5 && g_dist <= 1.5);
     assert_at(&v->panel, v->head, v->panel.yaw_deg);
     assert_true(fabs(v->panel.yaw_deg - v->yaw_deg) < 0.5);
+    g_dist = 1.5;
     hol_app_destroy(app);
     hol_nav_destroy(nav);
+}
+
+/* In front of the nearest hedge or trunk, down to 0.5 m, the same angular
+ * size; outside the room or without one, 1.5 m. */
+static void test_room(void **state)
+{
+    (void)state;
+    hol_panel p;
+    memset(&p, 0, sizeof p);
+    hol_panel_room(&p, 3, 3, 1);
+    double far[3] = {1.5, 1.6, 2.2}, near[3] = {1.5, 1.6, 0.7}, wall[3] = {1.5, 1.6, 0.4};
+    /* looking south from z 2.2: the hedge at z 3 is 0.8 m ahead, the
+     * trunks at (1, 3) and (2, 3) 32 degrees aside (beyond 18 + 8.6) */
+    hol_panel_place(&p, far, 180, 0);
+    g_dist = (0.8 - 0.05) / cos(10 * PI / 180);
+    assert_at(&p, far, 180);
+    /* north from z 0.7: the hedge 0.7 m ahead, the trunks at (1, 0) and
+     * (2, 0) 35.5 degrees aside (their edge rays pass 0.27 m off them) */
+    hol_panel_place(&p, near, 0, 0);
+    g_dist = (0.7 - 0.05) / cos(10 * PI / 180);
+    assert_at(&p, near, 0);
+    hol_panel_place(&p, wall, 0, 0); /* 0.4 m from the hedge: the floor */
+    g_dist = 0.5;
+    assert_at(&p, wall, 0);
+    double out[3] = {1.5, 1.6, -0.5}; /* outside the room: as ever */
+    hol_panel_place(&p, out, 0, 0);
+    g_dist = 1.5;
+    assert_at(&p, out, 0);
+    hol_panel_room(&p, 0, 0, 0); /* no room: as ever */
+    hol_panel_place(&p, near, 0, 0);
+    assert_at(&p, near, 0);
+    /* a trunk straight ahead: (1, 1) from (1, 1.6 m, 1.7), 0.7 - 0.12 */
+    hol_panel_room(&p, 3, 3, 1);
+    double tr[3] = {1, 1.6, 1.7};
+    hol_panel_place(&p, tr, 0, 0);
+    g_dist = (0.7 - 0.12 - 0.05) / cos(10 * PI / 180);
+    assert_at(&p, tr, 0);
+    g_dist = 1.5;
 }
 
 int main(void)
@@ -222,6 +276,7 @@ int main(void)
         cmocka_unit_test(test_place),
         cmocka_unit_test(test_lazy),
         cmocka_unit_test(test_app_drives_it),
+        cmocka_unit_test(test_room),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -143,6 +143,10 @@ static void test_key(void **state)
     hol_panel_place(&v.panel, head, 75, 1);
     eye_desc(&v, &fd);
     assert_true(hol_render_panel_key(fx->rnd, &fd) == k0);
+    /* nearer in front of a hedge, scaled (core/hol_panel.h): the same image */
+    fd.panel_px = HOL_RENDER_PANEL_PX * 0.4;
+    assert_true(hol_render_panel_key(fx->rnd, &fd) == k0);
+    eye_desc(&v, &fd);
     /* a drawn frame between (the eye's queue) changes nothing */
     assert_int_equal(hol_render_frame(fx->rnd, &fd, NULL), HOL_OK);
     assert_true(hol_render_panel_key(fx->rnd, &fd) == k0);

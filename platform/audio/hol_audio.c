@@ -13,6 +13,7 @@
 #include <dlfcn.h>
 #endif
 #include <fcntl.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -81,8 +82,14 @@ typedef void (*LPALCDEVICEPAUSESOFT)(ALCdevice *); /* ALC_SOFT_pause_device */
 
 #define AUD_PTR(ret, name, args) ret(*name) args;
 
+/* One voice: one OpenAL source, or (a->pair: HRTF off, the loopback
+ * device) two, placed hard left and hard right with equal-power gains. */
+typedef struct aud_chan {
+    ALuint s[2];
+} aud_chan;
+
 typedef struct aud_voice {
-    ALuint src;
+    aud_chan src;
     uint32_t id;
     int used;
 } aud_voice;
@@ -99,11 +106,12 @@ struct hol_audio {
     ALCdevice *dev;
     ALCcontext *ctx;
     int loopback, hrtf, paused;
+    int pair;      /* 1: each voice two sources, panned here (equal power) */
     double volume;
     ALuint buf[HOL_SND_KINDS];
     int nbuf;
     aud_voice loops[HOL_SOUND_MAX_SOURCES];
-    ALuint shots[HOL_SOUND_MAX_SHOTS];
+    aud_chan shots[HOL_SOUND_MAX_SHOTS];
     int nsrc, next_shot;
 };
 
@@ -226,19 +234,21 @@ static int aud_buffers(hol_audio *a, char *msg, size_t cap)
         a->f.alBufferData(a->buf[k], AL_FORMAT_MONO16, pcm, n * 2, HOL_SOUND_RATE);
         free(pcm);
     }
-    ALuint s[HOL_SOUND_MAX_SOURCES + HOL_SOUND_MAX_SHOTS];
-    a->f.alGenSources(HOL_SOUND_MAX_SOURCES + HOL_SOUND_MAX_SHOTS, s);
+    ALuint s[2 * (HOL_SOUND_MAX_SOURCES + HOL_SOUND_MAX_SHOTS)];
+    int per = a->pair ? 2 : 1, n = per * (HOL_SOUND_MAX_SOURCES + HOL_SOUND_MAX_SHOTS);
+    a->f.alGenSources(n, s);
     if (a->f.alGetError() != AL_NO_ERROR)
         return aud_fail(msg, cap, "cannot make the OpenAL sources");
-    a->nsrc = HOL_SOUND_MAX_SOURCES + HOL_SOUND_MAX_SHOTS;
+    a->nsrc = n;
     a->f.alDistanceModel(AL_NONE);
-    for (int i = 0; i < a->nsrc; i++) {
+    for (int i = 0; i < n; i++) {
         a->f.alSourcei(s[i], AL_SOURCE_RELATIVE, AL_TRUE);
         a->f.alSourcef(s[i], AL_ROLLOFF_FACTOR, 0);
-        if (i < HOL_SOUND_MAX_SOURCES)
-            a->loops[i].src = s[i];
+        int v = i / per;
+        if (v < HOL_SOUND_MAX_SOURCES)
+            a->loops[v].src.s[i % per] = s[i];
         else
-            a->shots[i - HOL_SOUND_MAX_SOURCES] = s[i];
+            a->shots[v - HOL_SOUND_MAX_SOURCES].s[i % per] = s[i];
     }
     return 0;
 }
@@ -250,6 +260,7 @@ int hol_audio_open(int loopback, double volume, hol_audio **out, char *msg, size
     if (!a)
         return aud_fail(msg, cap, "out of memory");
     a->loopback = loopback;
+    a->pair = loopback; /* HRTF off there: OpenAL Soft's stereo pan is hard */
     a->volume = volume < 0 ? 0 : volume > 1 ? 1 : volume;
     if (aud_load(a, msg, cap) || aud_device(a, msg, cap) || aud_buffers(a, msg, cap)) {
         hol_audio_close(a);
@@ -259,17 +270,50 @@ int hol_audio_open(int loopback, double volume, hol_audio **out, char *msg, size
     return 0;
 }
 
-static void aud_place(hol_audio *a, ALuint s, const hol_sound_src *src)
+/* The voice at core's direction with core's gain. A pair: the left
+ * source hard left, the right one hard right, with the gains of the
+ * equal-power law on the lateral angle t = asin(x) (x the direction's
+ * part to the right): cos and sin of pi/4 + t/2, so a source ahead (or
+ * behind) gives each ear half the power and one at the side all of it to
+ * that ear; no harder than that (OpenAL Soft's own stereo pan puts 95 %
+ * of the power in one ear at 30 degrees). */
+static void aud_place(hol_audio *a, const aud_chan *c, const hol_sound_src *src)
 {
-    a->f.alSource3f(s, AL_POSITION, (float)src->dir[0], (float)src->dir[1], (float)src->dir[2]);
-    a->f.alSourcef(s, AL_GAIN, (float)(src->gain * a->volume));
+    double g = src->gain * a->volume;
+    if (!a->pair) {
+        a->f.alSource3f(c->s[0], AL_POSITION, (float)src->dir[0], (float)src->dir[1],
+                        (float)src->dir[2]);
+        a->f.alSourcef(c->s[0], AL_GAIN, (float)g);
+        return;
+    }
+    double x = src->dir[0] > 1 ? 1 : src->dir[0] < -1 ? -1 : src->dir[0];
+    /* cos and sin of pi/4 + t/2 from x = sin t: sqrt((1 -+ x) / 2) */
+    double gl = sqrt((1 - x) / 2), gr = sqrt((1 + x) / 2);
+    a->f.alSource3f(c->s[0], AL_POSITION, -1, 0, 0);
+    a->f.alSource3f(c->s[1], AL_POSITION, 1, 0, 0);
+    a->f.alSourcef(c->s[0], AL_GAIN, (float)(g * gl));
+    a->f.alSourcef(c->s[1], AL_GAIN, (float)(g * gr));
+}
+
+static void aud_each(hol_audio *a, const aud_chan *c, void (*fn)(ALuint))
+{
+    for (int k = 0; k < (a->pair ? 2 : 1); k++)
+        fn(c->s[k]);
+}
+
+static void aud_load_buf(hol_audio *a, const aud_chan *c, int kind, int loop)
+{
+    for (int k = 0; k < (a->pair ? 2 : 1); k++) {
+        a->f.alSourcei(c->s[k], AL_BUFFER, kind < 0 ? 0 : (ALint)a->buf[kind]);
+        a->f.alSourcei(c->s[k], AL_LOOPING, loop ? AL_TRUE : AL_FALSE);
+    }
 }
 
 /* loop voice v stops and is free again */
 static void aud_release(hol_audio *a, int v)
 {
-    a->f.alSourceStop(a->loops[v].src);
-    a->f.alSourcei(a->loops[v].src, AL_BUFFER, 0);
+    aud_each(a, &a->loops[v].src, a->f.alSourceStop);
+    aud_load_buf(a, &a->loops[v].src, -1, 0);
     a->loops[v].used = 0;
 }
 
@@ -282,7 +326,7 @@ void hol_audio_apply(hol_audio *a, const hol_sound_list *l)
         for (int v = 0; v < HOL_SOUND_MAX_SOURCES; v++)
             if (a->loops[v].used && !keep[v] && a->loops[v].id == l->src[i].id) {
                 keep[v] = 1, placed[i] = 1;
-                aud_place(a, a->loops[v].src, &l->src[i]);
+                aud_place(a, &a->loops[v].src, &l->src[i]);
                 break;
             }
     for (int v = 0; v < HOL_SOUND_MAX_SOURCES; v++)
@@ -297,19 +341,17 @@ void hol_audio_apply(hol_audio *a, const hol_sound_list *l)
             break;
         aud_voice *vo = &a->loops[v];
         vo->used = 1, vo->id = l->src[i].id;
-        a->f.alSourcei(vo->src, AL_BUFFER, (ALint)a->buf[l->src[i].kind]);
-        a->f.alSourcei(vo->src, AL_LOOPING, AL_TRUE);
-        aud_place(a, vo->src, &l->src[i]);
-        a->f.alSourcePlay(vo->src);
+        aud_load_buf(a, &vo->src, l->src[i].kind, 1);
+        aud_place(a, &vo->src, &l->src[i]);
+        aud_each(a, &vo->src, a->f.alSourcePlay);
     }
     for (int i = 0; i < l->nshots; i++) {
-        ALuint s = a->shots[a->next_shot];
+        const aud_chan *c = &a->shots[a->next_shot];
         a->next_shot = (a->next_shot + 1) % HOL_SOUND_MAX_SHOTS;
-        a->f.alSourceStop(s);
-        a->f.alSourcei(s, AL_BUFFER, (ALint)a->buf[l->shot[i].kind]);
-        a->f.alSourcei(s, AL_LOOPING, AL_FALSE);
-        aud_place(a, s, &l->shot[i]);
-        a->f.alSourcePlay(s);
+        aud_each(a, c, a->f.alSourceStop);
+        aud_load_buf(a, c, l->shot[i].kind, 0);
+        aud_place(a, c, &l->shot[i]);
+        aud_each(a, c, a->f.alSourcePlay);
     }
 }
 
@@ -327,7 +369,7 @@ void hol_audio_pause(hol_audio *a, int on)
         if (a->loops[v].used)
             aud_release(a, v);
     for (int i = 0; i < HOL_SOUND_MAX_SHOTS && a->nsrc; i++)
-        a->f.alSourceStop(a->shots[i]);
+        aud_each(a, &a->shots[i], a->f.alSourceStop);
     if (a->dev_pause)
         a->dev_pause(a->dev);
 }
@@ -373,9 +415,13 @@ void hol_audio_close(hol_audio *a)
     if (!a)
         return;
     if (a->ctx) {
-        ALuint s[HOL_SOUND_MAX_SOURCES + HOL_SOUND_MAX_SHOTS];
-        for (int i = 0; i < a->nsrc; i++)
-            s[i] = i < HOL_SOUND_MAX_SOURCES ? a->loops[i].src : a->shots[i - HOL_SOUND_MAX_SOURCES];
+        ALuint s[2 * (HOL_SOUND_MAX_SOURCES + HOL_SOUND_MAX_SHOTS)];
+        int per = a->pair ? 2 : 1;
+        for (int i = 0; i < a->nsrc; i++) {
+            int v = i / per;
+            s[i] = (v < HOL_SOUND_MAX_SOURCES ? a->loops[v].src
+                                              : a->shots[v - HOL_SOUND_MAX_SOURCES]).s[i % per];
+        }
         if (a->nsrc)
             a->f.alDeleteSources(a->nsrc, s);
         if (a->nbuf)

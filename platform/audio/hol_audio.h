@@ -22,9 +22,13 @@
  *   ALC_SOFT_HRTF is offered. Loopback (replay --wav): ALC_SOFT_loopback,
  *   stereo at 48 kHz rendered as float and rounded here to 16-bit PCM
  *   (OpenAL Soft's own 16-bit output is dithered: silence would not be
- *   zeros), HRTF off (plain stereo panning, so the
- *   channels are the left and right of the head); rendering only when
- *   asked (hol_audio_render), so the same calls give the same samples.
+ *   zeros), HRTF off, so the channels are the left and right of the
+ *   head, panned here by the equal-power law: each voice is two sources,
+ *   hard left and hard right, with gains cos and sin of pi/4 + t/2 (t the
+ *   lateral angle, asin of the direction's part to the right; OpenAL
+ *   Soft's own stereo pan is far harder: 95 % of the power in one ear at
+ *   30 degrees); rendering only when asked (hol_audio_render), so the same
+ *   calls give the same samples.
  * - The web build (__EMSCRIPTEN__): the same player linked against
  *   emscripten's OpenAL (-lopenal, on WebAudio): a device is an
  *   AudioContext; its ALC_SOFT_HRTF sets the panners' model to WebAudio's

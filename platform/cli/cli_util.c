@@ -180,6 +180,8 @@ static int cli__written_in_log(const char *name)
 {
     size_t n = strlen(name);
     return hol_session_is_log_name(name) || !strcmp(name, "environment.csv") ||
+           !strcmp(name, "provenance.csv") || !strcmp(name, "order.csv") ||
+           !strcmp(name, "codebook.csv") || !strcmp(name, "codebook.csv.new") ||
            !strcmp(name, HOL_SINK_POSIX_LOCK) ||
            (!strncmp(name, "study-", 6) && n > 10 && !strcmp(name + n - 4, ".txt"));
 }

@@ -2,7 +2,6 @@
  * (SPEC 8) and `tile count` (SPEC 9). */
 #include <stdint.h>
 #include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
 
 #include "../../core/hol_bearing.h"
@@ -189,15 +188,16 @@ static int tile_count(int q, int radius)
     return cli_finish_output("tile count");
 }
 
-/* --radius N: a decimal whole number 0..12 (SPEC 9). 0 ok, -1 reported. */
+/* --radius N: a decimal whole number 0..12 (SPEC 9; cli_parse_decimal, the
+ * options' one grammar). 0 ok, -1 reported. */
 static int radius_value(const char *v, int *out_radius)
 {
-    size_t n = strlen(v);
-    if (n == 0 || n > 2 || strspn(v, "0123456789") != n || atoi(v) > 12) {
+    uint64_t n;
+    if (!cli_parse_decimal(v, &n) || n > 12) {
         cli_error("tile", 0, "--radius '%.40s' is not a whole number from 0 to 12", v);
         return -1;
     }
-    *out_radius = atoi(v);
+    *out_radius = (int)n;
     return 0;
 }
 

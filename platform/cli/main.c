@@ -5,7 +5,7 @@
 #include <malloc.h>
 #endif
 
-#include "../../core/hol_version.h"
+#include "build_info.h"
 #include "cli.h"
 
 typedef struct cli_command {
@@ -80,7 +80,8 @@ int main(int argc, char **argv)
         return cli_finish_output("--help");
     }
     if (!strcmp(argv[1], "--version")) {
-        printf("holonomy %s\n", HOL_VERSION);
+        printf("holonomy %s (commit %s, built %s)\n", build_version(), build_commit(),
+               build_date());
         return cli_finish_output("--version");
     }
     for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++)

@@ -8,6 +8,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#include "../../core/hol_ask.h"
 #include "../../core/hol_report.h"
 #include "../../core/hol_session.h"
 #include "../../core/hol_sha256.h"
@@ -176,7 +177,6 @@ static int resume_find(const resume_rows *r, const char *session, const char *at
 static void resume_answer(resume_rows *r, const hol_level *levels, int n, int k,
                           const char *const *f)
 {
-    static const char *const whens[3] = {"level", "condition", "study"};
     for (int i = 0; i < n; i++) {
         if (r->by[i] != k)
             continue;
@@ -185,7 +185,7 @@ static void resume_answer(resume_rows *r, const hol_level *levels, int n, int k,
             for (int j = 0; j < L->asks[q].n; j++, item++) {
                 int w = L->asks[q].when;
                 if (!strcmp(L->asks[q].name, f[RC_Q]) &&
-                    !strcmp(whens[w >= 0 && w < 3 ? w : 0], f[RC_WHEN]) &&
+                    !strcmp(hol_ask_when_name(w), f[RC_WHEN]) &&
                     !strcmp(L->questions[L->asks[q].first + j].id, f[RC_ITEM]) &&
                     item < HOL_APP_MAX_QUESTIONS)
                     r->answered[i][item] = 1;
@@ -273,16 +273,16 @@ static void resume_mark(const hol_level *levels, int n, resume_rows *r)
 }
 
 /* The first unanswered item of level i (0-based over its
- * questionnaires), or -1 when every one is answered. */
+ * questionnaires) but a `before` one's (its level is played: too late
+ * for a baseline), or -1 when every one is answered. */
 static int resume_unanswered(const hol_level *levels, int i, const resume_rows *r)
 {
     const hol_app_level *L = &levels[i].lvl;
-    int items = 0;
-    for (int q = 0; q < L->nasks; q++)
-        items += L->asks[q].n;
-    for (int item = 0; item < items && item < HOL_APP_MAX_QUESTIONS; item++)
-        if (!r->answered[i][item])
-            return item;
+    for (int q = 0, item = 0; q < L->nasks; q++)
+        for (int j = 0; j < L->asks[q].n; j++, item++)
+            if (item < HOL_APP_MAX_QUESTIONS && !r->answered[i][item] &&
+                !hol_ask_before(L->asks[q].when)) /* a baseline is not asked after its level */
+                return item;
     return -1;
 }
 

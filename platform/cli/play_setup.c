@@ -20,6 +20,7 @@
 #include "../../core/hol_text.h"
 #include "../file/hol_file.h"
 #include "cli.h"
+#include "play_prov.h"
 
 /* ---- levels ---------------------------------------------------------------- */
 
@@ -82,6 +83,7 @@ int play_geometry_apply(const char *cmd, const play_geometry *g, hol_level *leve
             return CLI_EXIT_USAGE;
         }
     }
+    play_prov_order_hash(levels, n); /* order.csv's hashes: the texts are final */
     return 0;
 }
 
@@ -416,6 +418,7 @@ int play_session_open(const char *cmd, play_out *po, const hol_level *levels, in
                    : CLI_EXIT_FAIL;
     }
     po->opened = 1;
+    play_prov_write(d.log, meta); /* provenance.csv, order.csv, codebook.csv */
     if (hol_session_recovered(*out))
         fprintf(stderr, "holonomy %s: %d unfinished attempt(s) of a killed session finished "
                         "in the log folder (end 'killed')\n",
@@ -439,7 +442,8 @@ int play_session_end(const char *cmd, hol_session *s, int abort)
     if (e) /* the step's failure is not said twice */
         cli_error_end(cmd, "%s", hol_session_message(s));
     hol_session_destroy(s);
-    return e ? CLI_EXIT_FAIL : 0;
+    int pf = play_prov_failed(cmd); /* provenance.csv, order.csv, codebook.csv */
+    return e || pf ? CLI_EXIT_FAIL : 0;
 }
 
 void play_print_end(hol_session *s)

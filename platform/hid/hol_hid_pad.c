@@ -37,17 +37,18 @@ static const uint8_t switch_start[] = {
     0x01, 0x00, 0x00, 0x01, 0x40, 0x40, 0x00, 0x01, 0x40, 0x40, 0x03, 0x30,
 };
 
+/* A Sony pad after the DualShock 3: its descriptor's layout, no start
+ * report, the Sony roles. */
+#define HOL__SONY_PAD(pid, name)                                                           \
+    {0x054c, pid, name, HOL_HID_LAYOUT_DESCRIPTOR, HOL_HID_START_NONE, 0, 0, NULL, sony_roles}
+
 static const hol_hid_known known_pads[] = {
     {0x054c, 0x0268, "Sony Sixaxis / DualShock 3", HOL_HID_LAYOUT_DESCRIPTOR,
      HOL_HID_START_FEATURE, 17, 1, ps3_start, ps3_roles},
-    {0x054c, 0x05c4, "Sony DualShock 4", HOL_HID_LAYOUT_DESCRIPTOR,
-     HOL_HID_START_NONE, 0, 0, NULL, sony_roles},
-    {0x054c, 0x09cc, "Sony DualShock 4 (2nd gen)", HOL_HID_LAYOUT_DESCRIPTOR,
-     HOL_HID_START_NONE, 0, 0, NULL, sony_roles},
-    {0x054c, 0x0ce6, "Sony DualSense", HOL_HID_LAYOUT_DESCRIPTOR,
-     HOL_HID_START_NONE, 0, 0, NULL, sony_roles},
-    {0x054c, 0x0df2, "Sony DualSense Edge", HOL_HID_LAYOUT_DESCRIPTOR,
-     HOL_HID_START_NONE, 0, 0, NULL, sony_roles},
+    HOL__SONY_PAD(0x05c4, "Sony DualShock 4"),
+    HOL__SONY_PAD(0x09cc, "Sony DualShock 4 (2nd gen)"),
+    HOL__SONY_PAD(0x0ce6, "Sony DualSense"),
+    HOL__SONY_PAD(0x0df2, "Sony DualSense Edge"),
     {0x057e, 0x2009, "Nintendo Switch Pro Controller", HOL_HID_LAYOUT_SWITCH_PRO,
      HOL_HID_START_OUTPUT, 12, 3, switch_start, NULL},
 };

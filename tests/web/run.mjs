@@ -106,9 +106,9 @@ if (process.env.MATH_CHECK)
 
 // ---- the transfer size (issue 25) ------------------------------------------
 // Every file of build/web (the page loads them all), each gzipped at level
-// 9 as a server sends it: at most 162 KB in all, the size before the web
-// had sound (docs/performance.md). A regression fails here, not in a bench.
-const BUDGET = 180 * 1024;
+// 9 as a server sends it: at most 184 KB in all (docs/web.md, "The
+// transfer size"). A regression fails here, not in a bench.
+const BUDGET = 184 * 1024;
 await check(`the transfer size: build/web's files gzip -9 at most ${BUDGET / 1024} KB in all`, async () => {
   const sizes = fs.readdirSync(WEB).map((f) => [f, zlib.gzipSync(fs.readFileSync(path.join(WEB, f)), { level: 9 }).length]);
   const total = sizes.reduce((a, [, n]) => a + n, 0);
@@ -1163,8 +1163,12 @@ await check('quitting from a controller (Y, then B) ends the session and the log
   assert(/^Session over/.test(st) && vb.hidden && vb.again, `over in VR: status '${st}', ` + JSON.stringify(vb));
   const rec = offered.names.find((n) => /\.rec$/.test(n));
   assert(rec, 'no recording among ' + offered.names.join(', '));
-  recording = Buffer.from(await xrPage.evaluate((n) => btoa(String.fromCharCode.apply(null,
-    window.holonomyStore.bytes(n))), rec), 'base64');
+  recording = Buffer.from(await xrPage.evaluate((n) => {
+    const b = window.holonomyStore.bytes(n); /* by parts: apply() takes no 100 KB array */
+    let s = '';
+    for (let i = 0; i < b.length; i += 32768) s += String.fromCharCode.apply(null, b.subarray(i, i + 32768));
+    return btoa(s);
+  }, rec), 'base64');
   fs.writeFileSync(path.join(OUT, 'browser.rec'), recording);
   // iwer leaves its (empty) full-page container over the page
   await xrPage.evaluate(() => document.querySelector('[data-webxr_runtime]')?.remove());
@@ -1200,7 +1204,11 @@ await check('the browser recording replays on the desktop to the same step rows 
     { encoding: 'utf8' });
   assert(r.status === 0, 'replay: ' + r.stderr);
   assert(r.stdout.trim() === end, `replay says '${r.stdout.trim()}', the browser '${end}'`);
-  const names = fs.readdirSync(logs).filter((n) => /\.csv$/.test(n)).sort();
+  // the desktop's own provenance files (docs/logs.md: codebook.csv,
+  // provenance.csv, order.csv) are not the session's logs; the page does not
+  // write them yet (docs/web.md), so they are not compared
+  const own = new Set(['codebook.csv', 'provenance.csv', 'order.csv']);
+  const names = fs.readdirSync(logs).filter((n) => /\.csv$/.test(n) && !own.has(n)).sort();
   assert(names.includes('summary.csv') && names.includes('steps-001.csv') &&
     names.includes('steps-002.csv'), 'replay logs: ' + names.join(' '));
   const dir = path.join(OUT, 'browser-logs');

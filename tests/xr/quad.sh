@@ -6,7 +6,7 @@
 # clean under the core validation layer; the quad layer reaches the
 # runtime as submitted (the test's API layer, tests/xr/inject_layer.c,
 # prints the layers of one xrEndFrame): after the projection layer, both
-# eyes, the panel's size and a pose 1.5 m ahead; the eyes' own swapchains
+# eyes, the panel's size and a pose up to 1.5 m ahead (nearer scenery); the eyes' own swapchains
 # no longer contain the panel (the check frame drawn with and without the
 # HUD is the same); the quad's image holds the panel (read back); it is
 # drawn again only when the panel's content changes; and where the quad's
@@ -43,15 +43,23 @@ check "quad: its swapchain made once (824x372, the eyes' format)" \
     '[ "$(grep -c "^xr: panel as a quad layer: 824x372 image, format" "$out/xr.out")" = 1 ]'
 # as the runtime receives it: projection first, then the quad over it
 l=$(grep "^inject: frame 60:" "$out/xr.err")
-check "quad: the runtime receives projection then quad: both eyes, 0.585 x 0.400 m (136 x 93 font pixels of 4.3 mm), 544x372 texels, source alpha" \
-    'echo "$l" | grep -q "2 layers: projection(2 views) quad(eyes both, size 0.585 0.400, position .*, rect 544x372, source alpha yes)$"'
+# The panel stands 1.5 m ahead, or in front of the nearest hedge or trunk
+# in its direction (down to 0.5 m), scaled with its distance so that its
+# angular size is kept (docs/headset.md, "Nearer scenery"): at 1.5 m it is
+# 0.585 x 0.400 m (136 x 93 font pixels of 4.3 mm).
+size=$(echo "$l" | sed -n 's/.*quad(eyes both, size \([0-9.]*\) \([0-9.]*\), position .*, rect 544x372, source alpha yes)$/\1 \2/p')
+check "quad: the runtime receives projection then quad: both eyes, 0.585 x 0.400 m at 1.5 m scaled by one factor ($size), 544x372 texels, source alpha" \
+    'echo "$l" | grep -q "2 layers: projection(2 views) quad(" &&
+     echo "$size" | awk "{ a = \$1 / 0.585; b = \$2 / 0.400; exit !(NF == 2 && a <= 1.001 && a >= 0.33 && a - b < 0.005 && b - a < 0.005) }"'
 # Monado's simulated head stands near the stage origin looking along -z:
-# the panel 1.5 m ahead, below the eyes (the box's centre a little lower)
+# the panel 0.5 to 1.5 m ahead, below the eyes (the box's centre a little
+# lower), its size in proportion to its distance
 pos=$(echo "$l" | sed -n 's/.*position \([-0-9.]*\) \([-0-9.]*\) \([-0-9.]*\),.*/\1 \2 \3/p')
-check "quad: its centre 1.3 to 1.6 m ahead of the stage origin (-z), within 0.3 m of the middle ($pos)" \
-    'echo "$pos" | awk "{ exit !(NF == 3 && \$3 <= -1.3 && \$3 >= -1.6 && \$1 <= 0.3 && \$1 >= -0.3) }"'
-check "quad: the frame-end line of the check frame names the same submission" \
-    'grep -q "^xr: frame 60 ends with the quad layer after the projection layer: eye visibility BOTH, pose .*, size 0.585 x 0.400 m, image 544x372 of 824x372$" "$out/xr.out"'
+check "quad: its centre 0.5 to 1.6 m ahead of the stage origin (-z), within 0.3 m of the middle, its scale its distance / 1.5 within 0.06 ($pos; $size)" \
+    'echo "$pos $size" | awk "{ d = -\$3 / 1.5; a = \$4 / 0.585; exit !(NF == 5 && \$3 <= -0.5 && \$3 >= -1.6 && \$1 <= 0.3 && \$1 >= -0.3 && d - a < 0.06 && a - d < 0.06) }"'
+fe=$(echo "$size" | awk '{ printf "%.3f x %.3f", $1, $2 }')
+check "quad: the frame-end line of the check frame names the same submission ($fe m)" \
+    'grep -q "^xr: frame 60 ends with the quad layer after the projection layer: eye visibility BOTH, pose .*, size $fe m, image 544x372 of 824x372$" "$out/xr.out"'
 for e in 0 1; do
     check "quad: eye $e's swapchain no longer contains the panel (drawn with and without the HUD: 0 pixels differ)" \
         'grep -q "^xr: check panel eye '$e': 0 pixels" "$out/xr.out"'

@@ -46,6 +46,8 @@ static const char *const report_usage =
     "                   Likert items from answers.csv): n, mean, SD, 95 % CI (t)\n"
     "  learning.csv     efficiency by position per condition (learning curves)\n"
     "  participants.csv per participant and condition: attempts, done, means\n"
+    "  scores.csv       one row per questionnaire score, subscale or Likert item\n"
+    "                   (a partial questionnaire with complete 0)\n"
     "  trials.csv       one row per attempt: participant, block, trial, factors,\n"
     "                   outcome, pointing errors, excluded (the reason it is left\n"
     "                   out of the participant-level statistics)\n"
@@ -75,7 +77,8 @@ static int own_name(const char *n)
         !strcmp(n, "attempts.csv") || !strcmp(n, "conditions.csv") ||
         !strcmp(n, "stats.csv") || !strcmp(n, "learning.csv") || !strcmp(n, "participants.csv") ||
         !strcmp(n, "trials.csv") || !strcmp(n, "participants_stats.csv") ||
-        !strcmp(n, "paired.csv") || !strcmp(n, "effects.csv"))
+        !strcmp(n, "paired.csv") || !strcmp(n, "effects.csv") || !strcmp(n, "scores.csv") ||
+        !strcmp(n, "codebook.csv") || !strcmp(n, "build.csv"))
         return 1;
     if (n[0] == '.' && strstr(n, ".holonomy-tmp."))
         return 1;
@@ -371,6 +374,8 @@ static int run(report_run *r, report_buf *b)
         st = report_pstats_write(r);
     if (!st)
         st = report_write_html(r, &g);
+    if (!st)
+        st = report_write_provenance(r);
     if (!st) {
         remove_stale(r);
         printf("report: %d attempts from %d log folder%s\n", r->natt, r->ndirs,

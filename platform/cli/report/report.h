@@ -104,11 +104,21 @@ void report_free(report_run *r);
 
 typedef int (*report_body)(FILE *f, const report_run *r, const void *ctx);
 int report_write_file(const report_run *r, const char *name, report_body body, const void *ctx);
+/* Files written in turn by report_write_file (no ctx) until one fails. */
+typedef struct report_file_job {
+    const char *name;
+    report_body body;
+} report_file_job;
+int report_write_files(const report_run *r, const report_file_job *jobs, int n);
 /* The same into dir/name (name may hold folders that exist: --bids). */
 int report_write_in(const report_run *r, const char *dir, const char *name, report_body body,
                     const void *ctx);
 
 int report_write_csv(const report_run *r);
+/* build.csv (which build wrote the report: REPORT_BUILD_COLUMNS) and
+ * codebook.csv (every column of the report's files: ../codebook.h). */
+#define REPORT_BUILD_COLUMNS "program,version,commit,build_date"
+int report_write_provenance(const report_run *r);
 int report_write_conditions(const report_run *r, const hol_report_agg *g);
 int report_write_html(const report_run *r, const hol_report_agg *g);
 

@@ -107,7 +107,7 @@ static void label_all(const report_run *r, bids_ids *ids)
             if (!strcmp(r->att[j].a.participant, a->participant))
                 same = j;
         if (same >= 0) {
-            snprintf(ids[i].sub, BIDS_LABEL, "%s", ids[same].sub);
+            memcpy(ids[i].sub, ids[same].sub, sizeof ids[i].sub); /* same < i */
         } else {
             char base[BIDS_LABEL];
             label_of(a->participant, "anon", base);

@@ -96,18 +96,13 @@ static void effect_rows(FILE *f, const report_run *r, const ps_pairs *pg, int m,
     for (int a = 0; a < lv->n; a++)
         for (int b = a + 1; b < lv->n; b++) {
             const hol_stats *s = &d[a * lv->n + b];
-            double z;
             if (!s->n)
                 continue;
             report_csv(f, r->stats->cond[pg->first].study, 0);
             fprintf(f, "%s,%s,", ps_measure[m], ef_name[k]);
             report_csv(f, lv->text[a], 0);
             report_csv(f, lv->text[b], 0);
-            fprintf(f, "%ld,", s->n);
-            ps_summary(f, s, 1, 1, 0);
-            if (ps_dz(s, &z))
-                fprintf(f, "%.15g", z);
-            fputc('\n', f);
+            ps_diff_cells(f, s);
         }
 }
 

@@ -12,6 +12,14 @@ int report_write_file(const report_run *r, const char *name, report_body body, c
     return report_write_in(r, r->out, name, body, ctx);
 }
 
+int report_write_files(const report_run *r, const report_file_job *jobs, int n)
+{
+    int st = 0;
+    for (int i = 0; !st && i < n; i++)
+        st = report_write_file(r, jobs[i].name, jobs[i].body, NULL);
+    return st;
+}
+
 int report_write_in(const report_run *r, const char *dir, const char *name, report_body body,
                     const void *ctx)
 {

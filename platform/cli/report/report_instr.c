@@ -104,7 +104,8 @@ int report_instr_answer(const char *q, const char *when, const char *item, const
     if (!hol_ask_id_ok(q, strlen(q)))
         snprintf(err, HOL_REPORT_ERR, "column questionnaire: '%.40s' is not a name", q);
     else if (hol_ask_when(when, strlen(when)) < 0)
-        snprintf(err, HOL_REPORT_ERR, "column when: '%.40s' is not level, condition or study",
+        snprintf(err, HOL_REPORT_ERR, "column when: '%.40s' is not level, condition, study, "
+                 "before_level, before_condition or before_study",
                  when);
     else if (!hol_ask_id_ok(item, strlen(item)))
         snprintf(err, HOL_REPORT_ERR, "column item: '%.40s' is not an item's ID", item);

@@ -12,7 +12,8 @@
  *   the file lacks, empty, or a decimal number in [0, 360)): 0, else -1
  *   with a message naming the column in err (HOL_REPORT_ERR bytes).
  * - report_instr_answer: an answers.csv row: questionnaire and item IDs
- *   (hol_ask_id_ok), when `level`, `condition` or `study`, kind `likert`
+ *   (hol_ask_id_ok), when `level`, `condition`, `study` or one of them
+ *   with `before_` (hol_ask_when), kind `likert`
  *   or `choice`; a preset's (ssq, tlx: core/hol_ask.h) item is one of its
  *   own and a likert whose value is one of its marks (lo..hi in its
  *   step); another likert's value a whole number in 0..100 (where every

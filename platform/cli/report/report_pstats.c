@@ -72,10 +72,8 @@ double report_t975(long df)
 static int by_part(const void *pa, const void *pb)
 {
     const ps_key *a = pa, *b = pb;
-    int c = strcmp(a->study, b->study);
-    if (!c)
-        c = strcmp(a->participant, b->participant);
-    return c ? c : rs_cmp(a->i, b->i);
+    return rs_first(strcmp(a->study, b->study), strcmp(a->participant, b->participant),
+                    rs_cmp(a->i, b->i));
 }
 
 /* Attempts [lo, hi) of k: one study's participant, in the order read. */

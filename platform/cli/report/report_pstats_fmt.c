@@ -41,3 +41,13 @@ int ps_dz(const hol_stats *d, double *out)
     *out = d->mean / sqrt(d->m2 / (double)(d->n - 1));
     return 1;
 }
+
+void ps_diff_cells(FILE *f, const hol_stats *d)
+{
+    double z;
+    fprintf(f, "%ld,", d->n);
+    ps_summary(f, d, 1, 1, 0);
+    if (ps_dz(d, &z))
+        fprintf(f, "%.15g", z);
+    fputc('\n', f);
+}

@@ -67,6 +67,9 @@ void ps_summary(FILE *f, const hol_stats *st, double k, int with_sd, int last);
 /* d_z: the mean difference over the SD of the differences: 1 and *out,
  * 0 when it is not defined (n under 2, no spread). */
 int ps_dz(const hol_stats *d, double *out);
+/* A difference's last cells: n, its summary (ps_summary, with SD), d_z and
+ * the row's newline. */
+void ps_diff_cells(FILE *f, const hol_stats *d);
 /* effects.csv (report_effects.c) */
 int report_effects_write(const report_run *r);
 

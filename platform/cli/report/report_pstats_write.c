@@ -138,17 +138,12 @@ static void differ(FILE *f, const report_run *r, int ca, int cb, const char *end
 
 static void pair_row(FILE *f, const report_run *r, int m, int ca, int cb, const hol_stats *d)
 {
-    double z;
     report_csv(f, r->stats->cond[ca].study, 0);
     fprintf(f, "%s,", ps_measure[m]);
     report_csv(f, r->stats->cond[ca].condition, 0);
     report_csv(f, r->stats->cond[cb].condition, 0);
     differ(f, r, ca, cb, ",");
-    fprintf(f, "%ld,", d->n);
-    ps_summary(f, d, 1, 1, 0);
-    if (ps_dz(d, &z))
-        fprintf(f, "%.15g", z);
-    fputc('\n', f);
+    ps_diff_cells(f, d);
 }
 
 static int paired_csv(FILE *f, const report_run *r, const void *ctx)
@@ -162,14 +157,11 @@ static int paired_csv(FILE *f, const report_run *r, const void *ctx)
 
 int report_pstats_write(const report_run *r)
 {
-    int st = report_write_file(r, "trials.csv", trials_csv, NULL);
-    if (!st)
-        st = report_write_file(r, "participants_stats.csv", participants_stats_csv, NULL);
-    if (!st)
-        st = report_write_file(r, "paired.csv", paired_csv, NULL);
-    if (!st)
-        st = report_effects_write(r);
-    return st;
+    static const report_file_job jobs[] = {{"trials.csv", trials_csv},
+                                           {"participants_stats.csv", participants_stats_csv},
+                                           {"paired.csv", paired_csv}};
+    int st = report_write_files(r, jobs, (int)(sizeof jobs / sizeof jobs[0]));
+    return st ? st : report_effects_write(r);
 }
 
 /* ---- the page ---- */

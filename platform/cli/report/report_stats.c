@@ -1,5 +1,5 @@
 /* report_stats.c - the report's statistics (report_stats.h): conditions,
- * points.csv and answers.csv read back, learning curves and the
+ * learning curves and the
  * per-participant table computed, stats.csv, learning.csv and
  * participants.csv written. */
 #include <dirent.h>
@@ -70,448 +70,6 @@ static int order_attempts(const report_run *r, report_stats *s)
     return 0;
 }
 
-/* The attempt (an index in r->att) of (dir, session, attempt), -1 none. */
-static int find_att(const report_run *r, int dir, const char *session, long attempt)
-{
-    const report_stats *s = r->stats;
-    int lo = 0, hi = r->natt;
-    while (lo < hi) {
-        int m = (lo + hi) / 2;
-        const report_att *t = &r->att[s->order[m]];
-        int c = t->dir != dir ? (t->dir < dir ? -1 : 1) : strcmp(t->a.session, session);
-        if (!c)
-            c = t->a.attempt < attempt ? -1 : t->a.attempt > attempt;
-        if (!c)
-            return s->order[m];
-        if (c < 0)
-            lo = m + 1;
-        else
-            hi = m;
-    }
-    return -1;
-}
-
-/* ---- CSV files of the instruments, read by column name ---- */
-
-typedef struct rs_csv {
-    const report_run *r;
-    int dir;
-    char path[4200];
-    hol_lines l;
-    int col[16];
-    int ncol;
-    int nhead; /* the header's fields: every row has as many */
-    const char *f[HOL_REPORT_MAX_COLS];
-    int nf;
-    char buf[REPORT_LINE_MAX + 8];
-    char err[HOL_REPORT_ERR];
-} rs_csv;
-
-static int bad(rs_csv *c, const char *msg)
-{
-    cli_error(c->r->cmd, 0, "%.300s: line %ld: %s", c->path, c->l.lineno, msg);
-    return CLI_EXIT_USAGE;
-}
-
-/* Next data row into c->f (0 at the end, 1 a row, else -exit status);
- * the header's columns (names; the first nreq required, the rest -1 when
- * absent) found first; a row of another field count than the header's
- * (a torn row, the next one glued on) is refused. */
-static int next_row(rs_csv *c, const char *const *names, int nnames, int nreq)
-{
-    char *s;
-    size_t n;
-    int got;
-    while ((got = hol_lines_next(&c->l, &s, &n)) > 0) {
-        if (c->l.lineno == 1 && n >= 3 && !memcmp(s, "\xef\xbb\xbf", 3))
-            s += 3, n -= 3;
-        if (n == strspn(s, " \t"))
-            continue;
-        if (hol_report_csv_split(s, n, c->buf, sizeof c->buf, c->f, HOL_REPORT_MAX_COLS, &c->nf,
-                                 c->err))
-            return -bad(c, c->err);
-        if (c->ncol && c->nf != c->nhead) {
-            snprintf(c->err, sizeof c->err, "%d fields where the header has %d", c->nf, c->nhead);
-            return -bad(c, c->err);
-        }
-        if (c->ncol)
-            return 1;
-        c->nhead = c->nf;
-        for (int k = 0; k < nnames; k++) {
-            c->col[k] = -1;
-            for (int i = 0; i < c->nf; i++)
-                if (!strcmp(c->f[i], names[k]))
-                    c->col[k] = i;
-            if (c->col[k] < 0 && k < nreq) {
-                snprintf(c->err, sizeof c->err, "no column '%s'", names[k]);
-                return -bad(c, c->err);
-            }
-        }
-        c->ncol = nnames;
-    }
-    return got < 0 ? -cli_lines_failed(c->r->cmd, "log", c->path, &c->l) : 0;
-}
-
-static const char *field(const rs_csv *c, int k)
-{
-    return c->col[k] >= 0 && c->col[k] < c->nf ? c->f[c->col[k]] : "";
-}
-
-/* An optional column's field, NULL when the file lacks the column. */
-static const char *field_or_null(const rs_csv *c, int k)
-{
-    return c->col[k] >= 0 ? field(c, k) : NULL;
-}
-
-/* The attempt column: a whole number, 0 (before any) or more. */
-static int attempt_of(rs_csv *c, int k, long *out)
-{
-    return report_instr_whole(field(c, k), 0, LONG_MAX, out);
-}
-
-static int open_csv(rs_csv *c, const report_run *r, int d, const char *name)
-{
-    struct stat sb;
-    memset(c, 0, sizeof *c - sizeof c->buf);
-    c->r = r;
-    c->dir = d;
-    snprintf(c->path, sizeof c->path, "%s/%s", r->dirs[d], name);
-    if (lstat(c->path, &sb))
-        return 1; /* not there: nothing to read */
-    return cli_open_lines(r->cmd, "log", c->path, REPORT_LINE_MAX, &c->l) ? -1 : 0;
-}
-
-enum { P_SESSION, P_ATTEMPT, P_ETRUE, P_EFLAT, P_POINTED, P_TRUE, P_FLAT };
-
-/* points.csv's rows (the file open in c->l): 0, or the exit status. */
-static int points_rows(report_run *r, rs_csv *c)
-{
-    static const char *const names[] = {"session", "attempt", "error_true", "error_flat",
-                                        "pointed", "true", "flat"}; /* the last 3 optional */
-    report_stats *s = r->stats;
-    int got;
-    while ((got = next_row(c, names, 7, 4)) > 0) {
-        long att;
-        int has[2];
-        double e[2];
-        const char *bear[3] = {field_or_null(c, P_POINTED), field_or_null(c, P_TRUE),
-                               field_or_null(c, P_FLAT)};
-        if (!attempt_of(c, P_ATTEMPT, &att)) {
-            got = -bad(c, "attempt is not a whole number (0 or more)");
-            break;
-        }
-        if (report_instr_point(field(c, P_ETRUE), field(c, P_EFLAT), bear, has, e, c->err)) {
-            got = -bad(c, c->err);
-            break;
-        }
-        int ai = find_att(r, c->dir, field(c, P_SESSION), att);
-        int ci = ai < 0 ? s->none : s->att_cond[ai];
-        for (int k = 0; k < 2; k++)
-            if (has[k]) {
-                hol_stats_add(&s->fix[ci * RS_NFIX + RS_ERR_TRUE + k], e[k] < 0 ? -e[k] : e[k]);
-                if (ai >= 0) /* the attempt's answers (report_pstats.c) */
-                    hol_stats_add(&s->tpt[2 * ai + k], e[k] < 0 ? -e[k] : e[k]);
-            }
-    }
-    return got < 0 ? -got : 0;
-}
-
-/* ---- answers.csv: questionnaires grouped, scored, likert means ---- */
-
-enum { A_SESSION, A_PART, A_ATTEMPT, A_Q, A_WHEN, A_ITEM, A_KIND, A_VALUE };
-
-typedef struct rs_group {
-    char key[4 * HOL_REPORT_TEXT];
-    int cond;
-    double v[HOL_ASK_MAX_PRESETS][HOL_ASK_PRESET_ITEMS]; /* by the presets' table */
-    unsigned have[HOL_ASK_MAX_PRESETS];
-    report_instr_items items; /* the questionnaire's so far: none twice */
-    int att;                  /* its attempt (r->att), -1 none */
-    int level_dir, level_ok;  /* the level in r->level: its folder, parsed */
-    char level_sha[HOL_REPORT_TEXT]; /* and name ("" none read) */
-} rs_group;
-
-/* A preset's answers seen in part so far (a session killed in it, the rest
- * asked by a resumed session, maybe after other participants' rows: issue
- * 39), kept until the rest come: RS_PARTS of them in a folder. */
-#define RS_PARTS 64
-typedef struct rs_part {
-    char key[4 * HOL_REPORT_TEXT];
-    double v[HOL_ASK_MAX_PRESETS][HOL_ASK_PRESET_ITEMS];
-    unsigned have[HOL_ASK_MAX_PRESETS];
-} rs_part;
-typedef struct rs_parts {
-    rs_part g[RS_PARTS];
-    int n;
-    long lost; /* partial beyond RS_PARTS: not scored */
-} rs_parts;
-
-/* 1 when the group holds a preset answered in part. */
-static int group_partial(const rs_group *g)
-{
-    for (int i = 0; i < hol_ask_npresets(); i++)
-        if (g->have[i] && g->have[i] != (1u << hol_ask_preset_at(i)->nitems) - 1)
-            return 1;
-    return 0;
-}
-
-/* A group answered in part is kept in pt (its scores wait for the rest);
- * told in pt->lost when there is no room. */
-static void keep_partial(rs_parts *pt, const rs_group *g)
-{
-    if (pt->n == RS_PARTS) {
-        pt->lost++;
-        return;
-    }
-    rs_part *k = &pt->g[pt->n++];
-    memcpy(k->key, g->key, sizeof k->key);
-    memcpy(k->v, g->v, sizeof k->v);
-    memcpy(k->have, g->have, sizeof k->have);
-}
-
-/* The rest of a group kept in part: its answers back into g. */
-static void take_partial(rs_parts *pt, rs_group *g)
-{
-    for (int i = 0; i < pt->n; i++)
-        if (!strcmp(pt->g[i].key, g->key)) {
-            memcpy(g->v, pt->g[i].v, sizeof g->v);
-            memcpy(g->have, pt->g[i].have, sizeof g->have);
-            pt->g[i] = pt->g[--pt->n];
-            return;
-        }
-}
-
-/* Each preset answered in full: its scores into the measures from RS_SSQ_T
- * on, in the table's order (ssq's four, tlx's raw); one answered in part
- * waits in pt. */
-static void flush_group(report_stats *s, rs_group *g, rs_parts *pt)
-{
-    if (g->key[0] && group_partial(g))
-        keep_partial(pt, g);
-    hol_stats *f = &s->fix[g->cond * RS_NFIX];
-    for (int i = 0, col = RS_SSQ_T; i < hol_ask_npresets(); i++) {
-        const hol_ask_preset_def *p = hol_ask_preset_at(i);
-        double sc[HOL_ASK_PRESET_SCORES];
-        if (g->have[i] == (1u << p->nitems) - 1)
-            hol_ask_score(p, g->v[i], sc);
-        for (int k = 0; k < p->nscores; k++, col++)
-            if (g->have[i] == (1u << p->nitems) - 1 && col < RS_NFIX)
-                hol_stats_add(&f[col], sc[k]);
-        g->have[i] = 0;
-    }
-}
-
-/* The groups still in part at a folder's end: counted, the first named. */
-static void parts_end(report_stats *s, const char *dir, rs_parts *pt)
-{
-    for (int i = 0; i < pt->n; i++) {
-        if (!s->partial++) {
-            char k[sizeof pt->g[i].key];
-            memcpy(k, pt->g[i].key, sizeof k);
-            for (char *c = k; *c; c++)
-                *c = *c == '\x1f' ? ' ' : *c;
-            snprintf(s->partial_first, sizeof s->partial_first, "%.60s: %.90s", dir, k);
-        }
-    }
-    s->partial += pt->lost;
-    pt->n = 0;
-    pt->lost = 0;
-}
-
-/* The Likert items by (condition, questionnaire, item): an open-addressed
- * table of RS_LIK_SLOTS (twice the items it may hold), O(1) a row. */
-static unsigned lik_hash(int cond, const char *q, const char *item)
-{
-    unsigned h = 2166136261u ^ (unsigned)cond;
-    for (const char *p = q; *p; p++)
-        h = (h ^ (unsigned char)*p) * 16777619u;
-    h = (h ^ 0x1f) * 16777619u;
-    for (const char *p = item; *p; p++)
-        h = (h ^ (unsigned char)*p) * 16777619u;
-    return h;
-}
-
-static void add_likert(report_stats *s, int cond, const char *q, const char *item, double v)
-{
-    unsigned h = lik_hash(cond, q, item) % RS_LIK_SLOTS;
-    int i;
-    while ((i = s->slot[h]) >= 0) {
-        const rs_likert *l = &s->lik[i];
-        if (l->cond == cond && !strncmp(l->q, q, sizeof l->q - 1) &&
-            !strncmp(l->item, item, sizeof l->item - 1))
-            break;
-        h = (h + 1) % RS_LIK_SLOTS;
-    }
-    if (i < 0) {
-        if (s->nlik == s->caplik) {
-            s->lik_dropped++; /* bounded: a warning names it */
-            return;
-        }
-        i = s->slot[h] = s->nlik++;
-        rs_likert *l = &s->lik[i];
-        l->cond = cond;
-        snprintf(l->q, sizeof l->q, "%s", q);
-        snprintf(l->item, sizeof l->item, "%s", item);
-        hol_stats_init(&l->s);
-    }
-    hol_stats_add(&s->lik[i].s, v);
-}
-
-/* The item of questionnaire q its attempt's level asks (level-HASH.txt
- * in the row's folder, read once for the rows that follow), NULL when
- * that level or the item is not at hand. */
-static const hol_app_question *asked(report_run *r, rs_group *g, int dir, const char *q,
-                                     const char *item)
-{
-    const char *sha = g->att >= 0 ? r->att[g->att].a.level_sha256 : "";
-    if (!sha[0] || strchr(sha, '/') || !r->dirs)
-        return NULL;
-    if (g->level_dir != dir || strcmp(g->level_sha, sha)) {
-        char path[4400];
-        struct stat sb;
-        uint8_t *data = NULL;
-        size_t size = 0;
-        hol_level_err le;
-        g->level_dir = dir;
-        snprintf(g->level_sha, sizeof g->level_sha, "%s", sha);
-        snprintf(path, sizeof path, "%s/level-%s.txt", r->dirs[dir], sha);
-        g->level_ok = !lstat(path, &sb) && S_ISREG(sb.st_mode) &&
-                      !hol_file_read_all(path, HOL_LEVEL_TEXT_MAX + 1, &data, &size) &&
-                      !hol_level_parse((const char *)data, size, &r->level.lvl, &le);
-        free(data);
-    }
-    const hol_app_level *L = &r->level.lvl;
-    for (int k = 0; g->level_ok && k < L->nasks; k++)
-        for (int i = L->asks[k].first; !strcmp(L->asks[k].name, q) &&
-                                        i < L->asks[k].first + L->asks[k].n; i++)
-            if (i >= 0 && i < L->nquestions && !strcmp(L->questions[i].id, item))
-                return &L->questions[i];
-    return NULL;
-}
-
-/* A row of a questionnaire of the study's own against the item its level
- * asks (when at hand): the same kind, a Likert value on its marks. 0, or
- * -1 and c->err. */
-static int level_item(report_run *r, rs_csv *c, rs_group *g, int likert, double v)
-{
-    const char *q = field(c, A_Q), *item = field(c, A_ITEM);
-    if (hol_ask_preset_index(q, strlen(q)) >= 0)
-        return 0; /* a preset's marks are its table's (report_instr_answer) */
-    const hol_app_question *it = asked(r, g, c->dir, q, item);
-    if (!it)
-        return 0;
-    if (likert != (it->kind == HOL_APP_LIKERT)) {
-        snprintf(c->err, sizeof c->err, "column kind: its level asks %.40s's %.40s as a %s", q,
-                 item, likert ? "choice" : "likert");
-        return -1;
-    }
-    if (!likert || (v >= it->lo && v <= it->hi && ((long)v - it->lo) % it->step == 0))
-        return 0;
-    snprintf(c->err, sizeof c->err, "column value: '%.0f' is not one of %.40s's marks %d..%d "
-             "(its level's question)", v, item, it->lo, it->hi);
-    return -1;
-}
-
-/* A checked row (report_instr_answer) into its questionnaire: 0, or -1
- * and c->err when the questionnaire has its item already or its level
- * asks the item otherwise. */
-static int answer_row(report_run *r, rs_csv *c, rs_group *g, rs_parts *pt, long att, int likert,
-                      double v)
-{
-    report_stats *s = r->stats;
-    char key[sizeof g->key];
-    const char *q = field(c, A_Q), *item = field(c, A_ITEM);
-    snprintf(key, sizeof key, "%s\x1f%s\x1f%ld\x1f%s\x1f%s", field(c, A_SESSION),
-             field(c, A_PART), att, q, field(c, A_WHEN));
-    if (strcmp(key, g->key)) {
-        flush_group(s, g, pt);
-        memcpy(g->key, key, sizeof key);
-        g->att = find_att(r, c->dir, field(c, A_SESSION), att);
-        g->cond = g->att < 0 ? s->none : s->att_cond[g->att];
-        g->items.n = 0;
-        take_partial(pt, g);
-    }
-    if (report_instr_item_new(&g->items, q, item, c->err) || level_item(r, c, g, likert, v))
-        return -1;
-    if (!likert)
-        return 0;
-    add_likert(s, g->cond, q, item, v);
-    int p = hol_ask_preset_index(q, strlen(q));
-    int k = hol_ask_preset_item(hol_ask_preset_at(p), item);
-    if (k >= 0) {
-        g->v[p][k] = v;
-        g->have[p] |= 1u << k;
-    }
-    return 0;
-}
-
-/* answers.csv's rows (the file open in c->l): 0, or the exit status;
- * questionnaires answered in part wait in pt (parts_end). */
-static int answers_rows(report_run *r, rs_csv *c, rs_parts *pt)
-{
-    static const char *const names[] = {"session", "participant", "attempt", "questionnaire",
-                                        "when", "item", "kind", "value"};
-    rs_group g;
-    int got;
-    memset(&g, 0, sizeof g);
-    g.level_dir = -1;
-    while ((got = next_row(c, names, 8, 8)) > 0) {
-        long att;
-        double v;
-        if (!attempt_of(c, A_ATTEMPT, &att)) {
-            got = -bad(c, "attempt is not a whole number (0 or more)");
-            break;
-        }
-        if (report_instr_answer(field(c, A_Q), field(c, A_WHEN), field(c, A_ITEM),
-                                field(c, A_KIND), field(c, A_VALUE), &v, c->err) ||
-            answer_row(r, c, &g, pt, att, !strcmp(field(c, A_KIND), "likert"), v)) {
-            got = -bad(c, c->err);
-            break;
-        }
-    }
-    flush_group(r->stats, &g, pt);
-    parts_end(r->stats, r->dirs ? r->dirs[c->dir] : c->path, pt);
-    return got < 0 ? -got : 0;
-}
-
-/* An instrument file open in c->l read (answers 1: answers.csv, else
- * points.csv), then closed. */
-static int instrument(report_run *r, rs_csv *c, int answers)
-{
-    rs_parts *pt = answers ? calloc(1, sizeof *pt) : NULL;
-    int st = !answers ? points_rows(r, c) : pt ? answers_rows(r, c, pt) : CLI_EXIT_FAIL;
-    free(pt);
-    hol_lines_close(&c->l);
-    return st;
-}
-
-static int read_instrument(report_run *r, int d, rs_csv *c, const char *name)
-{
-    int o = open_csv(c, r, d, name);
-    if (o)
-        return o > 0 ? 0 : CLI_EXIT_USAGE;
-    return instrument(r, c, !strcmp(name, "answers.csv"));
-}
-
-int report_stats_instrument(report_run *r, int d, const char *path, hol_lines *l)
-{
-    rs_csv *c = malloc(sizeof *c);
-    if (!c) {
-        hol_lines_close(l);
-        cli_error(r->cmd, 0, "out of memory");
-        return CLI_EXIT_FAIL;
-    }
-    memset(c, 0, sizeof *c - sizeof c->buf);
-    c->r = r;
-    c->dir = d;
-    c->l = *l;
-    snprintf(c->path, sizeof c->path, "%s", path);
-    const char *base = strrchr(path, '/');
-    int st = instrument(r, c, !strcmp(base ? base + 1 : path, "answers.csv"));
-    free(c);
-    return st;
-}
-
 /* ---- learning curves and the per-participant table ---- */
 
 typedef struct rs_lentry {
@@ -572,10 +130,8 @@ typedef struct rs_pkey { /* an attempt as participants() sorts it */
 static int by_part_cond(const void *pa, const void *pb)
 {
     const rs_pkey *a = pa, *b = pb;
-    int c = strcmp(a->participant, b->participant);
-    if (!c)
-        c = rs_cmp(a->cond, b->cond);
-    return c ? c : rs_cmp(a->i, b->i);
+    return rs_first(strcmp(a->participant, b->participant), rs_cmp(a->cond, b->cond),
+                    rs_cmp(a->i, b->i));
 }
 
 static int participants(const report_run *r, report_stats *s)
@@ -856,21 +412,14 @@ int report_stats_read(report_run *r)
         if (eff >= 0)
             hol_stats_add(&f[RS_EFF], eff);
     }
-    rs_csv *c = malloc(sizeof *c);
-    st = c ? 0 : CLI_EXIT_FAIL;
-    for (int d = 0; !st && d < r->ndirs; d++) {
-        st = read_instrument(r, d, c, "points.csv");
-        if (!st)
-            st = read_instrument(r, d, c, "answers.csv");
-    }
-    free(c);
+    st = rs_read_instruments(r);
     if (!st && s->lik_dropped)
         fprintf(stderr, "holonomy %s: warning: more than %d Likert items and conditions: "
                         "%ld answers not in stats.csv\n", r->cmd, RS_LIK_MAX, s->lik_dropped);
     if (!st && s->partial)
         fprintf(stderr, "holonomy %s: warning: %ld questionnaire(s) answered in part, not "
                         "scored (the first: %s)\n", r->cmd, s->partial, s->partial_first);
-    if (!st && (learning(r, s) || participants(r, s)))
+    if (!st && (s->score_oom || learning(r, s) || participants(r, s)))
         st = CLI_EXIT_FAIL;
     if (st == CLI_EXIT_FAIL)
         cli_error(r->cmd, 0, "out of memory");
@@ -883,7 +432,7 @@ void report_stats_free(report_run *r)
     if (!s)
         return;
     void *own[] = {s->cond, s->att_cond, s->order, s->tpt, s->fix, s->lik, s->slot, s->learn,
-                   s->prow, s->seen, s->pts, s->used, s->nrange, s};
+                   s->prow, s->seen, s->pts, s->used, s->nrange, s->score, s};
     for (size_t i = 0; i < sizeof own / sizeof own[0]; i++)
         free(own[i]);
     r->stats = NULL;
@@ -978,14 +527,50 @@ static int participants_csv(FILE *f, const report_run *r, const void *ctx)
     return 0;
 }
 
+/* scores.csv: a row's key split (session, participant, attempt,
+ * questionnaire, when); `after study` and `before study` under the
+ * condition `study`. */
+static int scores_csv(FILE *f, const report_run *r, const void *ctx)
+{
+    const report_stats *s = r->stats;
+    (void)ctx;
+    fputs("participant,session,attempt,study,condition,placement,scope,instrument,subscale,"
+          "score,complete\n", f);
+    for (long i = 0; i < s->nscore; i++) {
+        const rs_score *o = &s->score[i];
+        char k[sizeof o->key], *part[5] = {k, "", "", "", ""};
+        memcpy(k, o->key, sizeof k);
+        for (int j = 1; j < 5; j++) {
+            char *sep = strchr(part[j - 1], '\x1f');
+            if (!sep)
+                break;
+            *sep = 0;
+            part[j] = sep + 1;
+        }
+        const char *when = part[4], *scope = strchr(when, '_') ? strchr(when, '_') + 1 : when;
+        int before = !strncmp(when, "before_", 7);
+        report_csv(f, part[1], 0);
+        report_csv(f, part[0], 0);
+        report_csv(f, part[2], 0);
+        report_csv(f, s->cond[o->cond].study, 0);
+        report_csv(f, !strcmp(scope, "study") ? "study" : s->cond[o->cond].condition, 0);
+        fprintf(f, "%s,", before ? "before" : "after");
+        report_csv(f, scope, 0);
+        report_csv(f, part[3], 0);
+        report_csv(f, o->sub, 0);
+        if (o->has)
+            fprintf(f, "%.4f", o->v);
+        fprintf(f, ",%d\n", o->complete);
+    }
+    return 0;
+}
+
 int report_stats_write(const report_run *r)
 {
-    int st = report_write_file(r, "stats.csv", stats_csv, NULL);
-    if (!st)
-        st = report_write_file(r, "learning.csv", learning_csv, NULL);
-    if (!st)
-        st = report_write_file(r, "participants.csv", participants_csv, NULL);
-    return st;
+    static const report_file_job jobs[] = {
+        {"stats.csv", stats_csv}, {"scores.csv", scores_csv}, {"learning.csv", learning_csv},
+        {"participants.csv", participants_csv}};
+    return report_write_files(r, jobs, (int)(sizeof jobs / sizeof jobs[0]));
 }
 
 /* ---- a log folder named from the report's folder ---- */

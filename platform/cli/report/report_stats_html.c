@@ -192,10 +192,7 @@ static void learning_svg(FILE *f, const report_run *r, int *used, long *nrange)
 static int by_point(const void *pa, const void *pb)
 {
     const rs_pt *a = pa, *b = pb;
-    int c = rs_cmp(a->opt, b->opt);
-    if (!c)
-        c = rs_cmp(a->steps, b->steps);
-    return c ? c : rs_cmp(a->cond, b->cond);
+    return rs_first(rs_cmp(a->opt, b->opt), rs_cmp(a->steps, b->steps), rs_cmp(a->cond, b->cond));
 }
 
 #define RS_R1 4.0    /* the radius of a point of one attempt (px) */

@@ -43,6 +43,16 @@ typedef struct rs_pt {
     int cond, n;
 } rs_pt;
 
+/* A row of scores.csv: a questionnaire's score, subscale or item (key:
+ * session, participant, attempt, questionnaire, when; \x1f between). */
+typedef struct rs_score {
+    char key[4 * HOL_REPORT_TEXT];
+    int cond;
+    char sub[64];
+    double v;
+    int has, complete; /* has: v is a value (a partial's scores have none) */
+} rs_score;
+
 typedef struct report_stats {
     int ncond, none; /* none: the condition "none" */
     rs_cond *cond;  /* natt + 1 */
@@ -56,6 +66,9 @@ typedef struct report_stats {
     long lik_dropped; /* answers beyond RS_LIK_MAX items */
     long partial;     /* questionnaires (presets) answered in part: unscored */
     char partial_first[160]; /* the first: its folder and group */
+    rs_score *score; /* scores.csv's rows, as read */
+    long nscore, capscore;
+    int score_oom;
     rs_learn *learn;
     int nlearn;
     rs_prow *prow;
@@ -76,5 +89,15 @@ static inline int rs_cmp(long a, long b)
 {
     return (a > b) - (a < b);
 }
+
+/* The first of three comparisons that is not 0: a sort by three keys. */
+static inline int rs_first(int c1, int c2, int c3)
+{
+    return c1 ? c1 : c2 ? c2 : c3;
+}
+
+/* report_answers.c: every LOGDIR's points.csv and answers.csv read into
+ * r->stats (0, or an exit status after one line). */
+int rs_read_instruments(report_run *r);
 
 #endif

@@ -5,7 +5,9 @@
 #include <string.h>
 
 #include "../../../core/hol_text.h"
+#include "../build_info.h"
 #include "../cli.h"
+#include "../codebook.h"
 #include "report.h"
 #include "report_escape.h"
 #include "report_stats.h"
@@ -215,11 +217,43 @@ static int index_html(FILE *f, const report_run *r, const void *ctx)
           "<th>geometry</th></tr>\n", f);
     for (int i = 0; i < r->natt; i++)
         html_row(f, r, i);
-    fputs("</table>\n</body>\n</html>\n", f);
+    fputs("</table>\n", f);
+    fprintf(f, "<footer><p>Made by holonomy %s (commit %s, built %s): <a href=\"build.csv\">"
+               "build.csv</a>; every column of these files: <a href=\"codebook.csv\">"
+               "codebook.csv</a>.</p></footer>\n</body>\n</html>\n",
+            build_version(), build_commit(), build_date());
     return 0;
 }
 
 int report_write_html(const report_run *r, const hol_report_agg *g)
 {
     return report_write_file(r, "index.html", index_html, g);
+}
+
+static int build_csv(FILE *f, const report_run *r, const void *ctx)
+{
+    (void)r;
+    (void)ctx;
+    fprintf(f, "%s\nholonomy,%s,%s,%s\n", REPORT_BUILD_COLUMNS, build_version(), build_commit(),
+            build_date());
+    return 0;
+}
+
+static int codebook_file(FILE *f, const report_run *r, const void *ctx)
+{
+    static char text[CODEBOOK_TEXT_MAX];
+    size_t n = codebook_csv(CODEBOOK_REPORT, text, sizeof text);
+    (void)ctx;
+    if (!n) {
+        cli_error(r->cmd, 0, "the codebook does not fit its buffer");
+        return CLI_EXIT_FAIL;
+    }
+    fwrite(text, 1, n, f);
+    return 0;
+}
+
+int report_write_provenance(const report_run *r)
+{
+    int st = report_write_file(r, "build.csv", build_csv, NULL);
+    return st ? st : report_write_file(r, "codebook.csv", codebook_file, NULL);
 }
