@@ -300,6 +300,11 @@ typedef struct hol_app_desc {
                                  headset): cleared at create, so no update
                                  takes a page fault. A level start clears a
                                  store only when it holds tiles. */
+    int no_ready;             /* 1: no ready screen after the instructions
+                                 (their confirm begins the level): a
+                                 recording made before it (version 1 to 4,
+                                 hol_rec.h meta.no_ready) replays as it was
+                                 played; 0 (live play): the ready screen */
 } hol_app_desc;
 
 typedef enum hol_app_state {

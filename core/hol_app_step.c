@@ -630,8 +630,9 @@ static hol_err hol__move(hol_app *app, const hol_input *in, double t0, double dt
 }
 
 /* A frame of a screen of text (state HOL_APP_SCREEN): quit quits, confirm
- * goes on (the instructions: the ready screen; the ready screen: the level
- * begins at the next frame, its minimap shown; the closing screen: the
+ * goes on (the instructions: the ready screen, or with desc.no_ready the
+ * level; the ready screen: the level begins at the next frame, its minimap
+ * shown; the closing screen: the
  * session ends); nothing else acts. */
 static void hol__screen_frame(hol_app *app, const hol_input *in, uint32_t pressed)
 {
@@ -645,7 +646,7 @@ static void hol__screen_frame(hol_app *app, const hol_input *in, uint32_t presse
     } else if ((pressed & HOL_BTN_CONFIRM) && !v->paused) {
         if (app->screen == HOL_APP_SCREEN_CLOSING) {
             app->ev.next_level = 1;
-        } else if (app->screen == HOL_APP_SCREEN_INSTRUCTIONS) {
+        } else if (app->screen == HOL_APP_SCREEN_INSTRUCTIONS && !app->d.no_ready) {
             app->screen = HOL_APP_SCREEN_READY;
         } else {
             app->screen = HOL_APP_SCREEN_NONE;

@@ -12,6 +12,30 @@ printf 'mode flag\nseed 5\nflag Nf\n' >"$T/s/f.lvl"
 printf 'study on\nclosing Thank you.\nquestionnaire ssq after study\ncondition a\nlevel f.lvl\nset minimap hud\ncondition b\nlevel f.lvl\nset minimap hand\n' >"$T/s/on.study"
 S=$T/s/on.study
 
+# Recordings made before the ready screen (version 4; kept in
+# tests/onset/, played by the build before it, 7378889: flow.study's P1
+# whole, and P2 quitting at condition one's instructions, then resumed
+# with --resume) replay as they were played: no ready screen after the
+# instructions, the play's logs byte for byte (whole/, resumed/)
+K=$(cd "$(dirname "$0")" && pwd)/onset
+same() { # same DIR WANT: every file of WANT, byte for byte in DIR
+    for f in "$2"/*; do
+        cmp -s "$f" "$1/${f##*/}" || { bad "$1/${f##*/} differs from the play's"; return; }
+    done
+    ok
+}
+run "replay a version 4 recording" 0 "$H" replay "$K/whole.rec" --log "$T/o1"
+same "$T/o1" "$K/whole"
+run "replay a version 4 quit" 0 "$H" replay "$K/quit.rec" --log "$T/o2"
+run "replay a version 4 resume" 0 "$H" replay "$K/resume.rec" --log "$T/o2" --append
+same "$T/o2" "$K/resumed"
+# the gate is the version: the same input as version 5 waits on the ready
+# screen (condition one's attempt starts a confirm later, at 4.0, not 3.5)
+sed '1s/.*/holonomy-rec 5/' "$K/whole.rec" >"$T/five.rec"
+run "replay it as version 5" 0 "$H" replay "$T/five.rec" --log "$T/o5"
+awk -F, 'NR == 3 { print $17 }' "$T/o5/summary.csv" >"$T/got5"
+[ "$(cat "$T/got5")" != "3.5000" ] && ok || bad "version 5 replayed without the ready screen"
+
 if ! command -v Xvfb >/dev/null 2>&1; then
     echo "note: no Xvfb here: the onset is not played"
     finish cli_onset
