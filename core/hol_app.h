@@ -300,11 +300,13 @@ typedef struct hol_app_desc {
                                  headset): cleared at create, so no update
                                  takes a page fault. A level start clears a
                                  store only when it holds tiles. */
-    int no_ready;             /* 1: no ready screen after the instructions
-                                 (their confirm begins the level): a
-                                 recording made before it (version 1 to 4,
-                                 hol_rec.h meta.no_ready) replays as it was
-                                 played; 0 (live play): the ready screen */
+    int flow_v4;              /* 1: the flow recordings of version 1 to 4
+                                 were played in (hol_rec.h meta.flow_v4),
+                                 so they replay as they were played: no
+                                 ready screen after the instructions (their
+                                 confirm begins the level), the tutorial's
+                                 lessons as they were (hol_app_tutorial.c);
+                                 0 (live play): issue 35's flow */
 } hol_app_desc;
 
 typedef enum hol_app_state {
@@ -517,6 +519,14 @@ typedef struct hol_app_answer {
                                          its confirm */
 } hol_app_answer;
 
+/* A tutorial lesson done (issue 35; not with desc.flow_v4): a row of
+ * lessons.csv (hol_session.h). */
+typedef struct hol_app_lesson {
+    int lesson;         /* 1..HOL_APP_TUTORIAL_STAGES */
+    double started, t;  /* the level times it began and was done */
+    int steps, optimum; /* its room steps; its fewest from where it began */
+} hol_app_lesson;
+
 typedef struct hol_app_events {
     int nsteps;
     hol_app_step_event steps[HOL_APP_MAX_STEP_EVENTS];
@@ -546,6 +556,8 @@ typedef struct hol_app_events {
                               untracked (core/hol_input.h) */
     double relocated_m;    /* with relocated: the head's floor distance
                               from where it last walked, metres */
+    int nlessons;          /* tutorial lessons done in this step */
+    hol_app_lesson lessons[HOL_APP_TUTORIAL_STAGES];
 } hol_app_events;
 
 typedef struct hol_app hol_app;

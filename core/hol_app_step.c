@@ -355,6 +355,9 @@ static hol_err hol__begin(hol_app *app)
     app->rings_note = 0;
     app->has_tree = 0;
     app->nmarks = 0;
+    app->face_pending = 0;
+    app->stage_t0 = 0;
+    app->mo.yaw_deg = 0; /* the look a level begins with (hol_motion_init's) */
     if (L->mode == HOL_APP_TUTORIAL)
         hol__stage(app, hol__next_stage(app, 0), &r);
     hol__point_begin(app);
@@ -454,6 +457,8 @@ static hol_err hol__room_steps(hol_app *app, const hol_motion_steps *st, double 
         app->steps++;
         hol__point_step(app, st->dir[i]);
         int stage = app->stage;
+        hol_app_lesson lesson = {stage + 1, app->stage_t0, t, app->stage_steps + 1,
+                                 app->stage_optimum};
         hol__enter(app, &st->after[i]);
         int exact;
         if (app->done) {
@@ -463,8 +468,8 @@ static hol_err hol__room_steps(hol_app *app, const hol_motion_steps *st, double 
                    !hol__plan(app, &st->after[i], &app->remaining, &exact)) {
             /* remaining and the walk are set */
         }
-        if (app->level.mode == HOL_APP_TUTORIAL && app->stage != stage)
-            app->stage_optimum = app->remaining; /* a lesson begins here */
+        if (app->level.mode == HOL_APP_TUTORIAL && (app->stage != stage || app->done))
+            hol__lesson_done(app, stage, lesson, t);
         hol_app_step_event *e = &app->ev.steps[app->ev.nsteps++];
         e->t = t;
         e->index = app->steps;
@@ -554,11 +559,19 @@ static hol_err hol__place_at_start(hol_app *app, const hol_input *in)
     hol_room was = app->mo.user;
     hol_motion_replace(&app->mo, pos, app->mo.yaw_deg);
     hol__point_sync(app);
-    if (was.col == app->mo.user.col && was.row == app->mo.user.row)
+    int moved = was.col != app->mo.user.col || was.row != app->mo.user.row;
+    /* the lesson begun again where the head stands (the loop: back to
+     * this cell) and, but with desc.flow_v4, looks (issue 35) */
+    int again = app->level.mode == HOL_APP_TUTORIAL &&
+                (app->d.flow_v4 ? moved && !app->has_target : 1);
+    if (!moved && !again)
         return HOL_OK;
-    hol_err err = hol_world_update(app->world, &app->mo.user);
-    if (app->level.mode == HOL_APP_TUTORIAL && !app->has_target)
-        hol__stage(app, app->stage, &app->mo.user); /* the loop: back to this cell */
+    hol_err err = moved ? hol_world_update(app->world, &app->mo.user) : HOL_OK;
+    if (!err && again) {
+        if (app->has_target)
+            (void)hol_world_release(app->world, app->target);
+        hol__stage(app, app->stage, &app->mo.user);
+    }
     int exact = 1, opt = -1;
     if (err || (err = hol__plan(app, &app->mo.user, &opt, &exact)))
         return err;
@@ -603,6 +616,7 @@ static hol_err hol__move(hol_app *app, const hol_input *in, double t0, double dt
     if (in->flags & HOL_INPUT_HEAD_VALID) {
         double pos[3] = {in->head.pos[0], in->head.pos[1], in->head.pos[2]};
         hol__yaw_pitch_from_quat(in->head.quat, &app->mo.yaw_deg, &app->mo.pitch_deg);
+        app->face_pending = 0; /* a head is turned by the player alone */
         if (!hol__may_walk(in)) /* the look follows; the head walks nothing */
             return HOL_OK;
         if (app->rebase)
@@ -614,6 +628,9 @@ static hol_err hol__move(hol_app *app, const hol_input *in, double t0, double dt
     }
     if (in->flags & HOL_INPUT_SNAP_YAW)
         app->mo.yaw_deg = in->snap_yaw_deg;
+    if (app->face_pending) /* a lesson began: face what it names */
+        app->mo.yaw_deg = app->face_yaw;
+    app->face_pending = 0;
     if (dt > HOL__STALL_S)
         return HOL_OK;
     int n = (int)ceil(dt / HOL__SUBSTEP - 1e-9);
@@ -630,7 +647,7 @@ static hol_err hol__move(hol_app *app, const hol_input *in, double t0, double dt
 }
 
 /* A frame of a screen of text (state HOL_APP_SCREEN): quit quits, confirm
- * goes on (the instructions: the ready screen, or with desc.no_ready the
+ * goes on (the instructions: the ready screen, or with desc.flow_v4 the
  * level; the ready screen: the level begins at the next frame, its minimap
  * shown; the closing screen: the
  * session ends); nothing else acts. */
@@ -646,7 +663,7 @@ static void hol__screen_frame(hol_app *app, const hol_input *in, uint32_t presse
     } else if ((pressed & HOL_BTN_CONFIRM) && !v->paused) {
         if (app->screen == HOL_APP_SCREEN_CLOSING) {
             app->ev.next_level = 1;
-        } else if (app->screen == HOL_APP_SCREEN_INSTRUCTIONS && !app->d.no_ready) {
+        } else if (app->screen == HOL_APP_SCREEN_INSTRUCTIONS && !app->d.flow_v4) {
             app->screen = HOL_APP_SCREEN_READY;
         } else {
             app->screen = HOL_APP_SCREEN_NONE;

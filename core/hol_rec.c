@@ -141,11 +141,11 @@ void hol_rec_write_header(const hol_rec_meta *m, const hol_level *levels, int nl
         study |= levels[i].condition[0] != 0;
     /* version 4 only with a session number, a study's hash, meta or ask */
     int four = m->session_no > 0 || m->study_sha256[0] || m->meta[0] || m->ask_item > 0;
-    /* version 5 only where a ready screen can show (issue 35) */
+    /* version 5 only where issue 35's flow shows: a ready screen, a tutorial */
     int five = m->ready;
     for (int i = 0; i < nlevels; i++)
-        five |= levels[i].lvl.instructions[0] != 0;
-    five &= !m->no_ready;
+        five |= levels[i].lvl.instructions[0] != 0 || levels[i].lvl.mode == HOL_APP_TUTORIAL;
+    five &= !m->flow_v4;
     hol__emitf(fn, ctx, "holonomy-rec %d\n", five ? 5 : four ? 4 : study ? 3 : 2);
     hol__emitf(fn, ctx, "session %s\n", m->session);
     if (m->participant[0])
@@ -213,7 +213,7 @@ static hol_err hol__first_line(hol_rec_reader *r, const char *s, size_t len)
     if (len == 14 && s[13] >= '1' && s[13] <= '0' + HOL_REC_VERSION) {
         r->version = s[13] - '0';
         r->state = r->version == 1 ? HOL__LEVELS : HOL__META;
-        r->meta.no_ready = r->version < 5; /* played before the ready screen */
+        r->meta.flow_v4 = r->version < 5; /* played before issue 35's flow */
         return HOL_OK;
     }
     return hol__bad(r, HOL_EVERSION, "recording format '%.30s' is not version 1 to %d",

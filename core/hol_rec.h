@@ -40,13 +40,13 @@
  *   writer writes version 2 unless the session is a study's (3) or has a
  *   session number, a study hash or meta (4), so a recording without them
  *   reads in a build that knows only version 2 (or 3); it writes 5 when a
- *   level has instructions or the line `ready` is written, the sessions
- *   the ready screen (issue 35) shows in. A recording of version 1 to 4
- *   was played without the ready screen after the instructions: its
- *   reader sets meta.no_ready, the session then gives the app
- *   hol_app_desc.no_ready, so it replays as it was played; the writer
- *   writes no version 5 for such a meta (a replay's recording keeps its
- *   version).
+ *   level has instructions or is a tutorial, or the line `ready` is
+ *   written: the sessions issue 35's flow (the ready screen, the
+ *   tutorial's lessons) changed. A recording of version 1 to 4 was played
+ *   before that flow: its reader sets meta.flow_v4, the session then
+ *   gives the app hol_app_desc.flow_v4, so it replays as it was played;
+ *   the writer writes no version 5 for such a meta (a replay's recording
+ *   keeps its version).
  *   The metadata lines come before the first level, each at most once
  *   (meta: once per KEY, up to HOL_REC_META_MAX);
  *   session, start and version are required from version 2, study in
@@ -111,10 +111,10 @@ typedef struct hol_rec_meta {
     /* 1: a resumed session: its first level begins on the ready screen
      * (hol_app_ready; issue 35); 0: none */
     int ready;
-    /* 1: read from a recording of version 1 to 4, played before the ready
-     * screen: its session's app has no ready screen (hol_app_desc.no_ready);
+    /* 1: read from a recording of version 1 to 4, played before issue
+     * 35's flow: its session's app plays that flow (hol_app_desc.flow_v4);
      * 0 (live play, version 5) */
-    int no_ready;
+    int flow_v4;
 } hol_rec_meta;
 
 /* 1 when k (n bytes) is a meta KEY: 1..32 of a-z, 0-9, '_'. */

@@ -99,8 +99,9 @@
  *   each re-basing of the room into another cell, `relocated` (value the
  *   distance in metres, 3 decimals: hol_app_events.relocated);
  *   the header when the file is new; a folder holding it holds logs);
- *   points.csv HOL_SESSION_POINT_COLUMNS and answers.csv
- *   HOL_SESSION_ANSWER_COLUMNS (likewise); the README ("Research logs") documents
+ *   points.csv HOL_SESSION_POINT_COLUMNS, answers.csv
+ *   HOL_SESSION_ANSWER_COLUMNS and lessons.csv HOL_SESSION_LESSON_COLUMNS
+ *   (likewise); docs/logs.md documents
  *   each. Head rows fall on exact 10 Hz level times, interpolated between
  *   the frames around them (position linear, yaw the short way round;
  *   cell and tile from the nearer frame), frame_t the later frame's time.
@@ -197,6 +198,13 @@
     "session,participant,attempt,questionnaire,when,item,kind,value,time"
 #define HOL_SESSION_POINT_COLUMNS \
     "session,participant,attempt,level,t,target,pointed,true,flat,error_true,error_flat,time"
+/* lessons.csv: a row per tutorial lesson done (issue 35; hol_app_lesson,
+ * not in a replay of a recording of version 1 to 4), appended durably as
+ * it happens, the header when the file is new. lesson 1..4; started and
+ * t the level times it began and was done; steps its room steps, optimum
+ * its fewest from where it began; time t - started. */
+#define HOL_SESSION_LESSON_COLUMNS \
+    "session,participant,attempt,level,lesson,started,steps,optimum,time"
 
 typedef struct hol_session_desc {
     const hol_level *levels; /* 1..HOL_SESSION_MAX_LEVELS, copied */

@@ -191,9 +191,9 @@ static hol_err hol__create(hol_session *s, const hol_session_desc *d)
         snprintf(s->msg, sizeof s->msg, "out of memory");
         return e;
     }
-    hol_app_desc ad = d->app; /* a recording made before the ready screen
-                                 replays without it (hol_rec.h) */
-    ad.no_ready |= d->meta.no_ready;
+    hol_app_desc ad = d->app; /* a recording made before issue 35's flow
+                                 replays in the flow it was played in */
+    ad.flow_v4 |= d->meta.flow_v4;
     if ((e = hol_app_create(&ad, &s->app))) {
         snprintf(s->msg, sizeof s->msg, "cannot create the app: %s", hol_err_str(e));
         return e;

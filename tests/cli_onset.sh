@@ -12,11 +12,13 @@ printf 'mode flag\nseed 5\nflag Nf\n' >"$T/s/f.lvl"
 printf 'study on\nclosing Thank you.\nquestionnaire ssq after study\ncondition a\nlevel f.lvl\nset minimap hud\ncondition b\nlevel f.lvl\nset minimap hand\n' >"$T/s/on.study"
 S=$T/s/on.study
 
-# Recordings made before the ready screen (version 4; kept in
-# tests/onset/, played by the build before it, 7378889: flow.study's P1
-# whole, and P2 quitting at condition one's instructions, then resumed
-# with --resume) replay as they were played: no ready screen after the
-# instructions, the play's logs byte for byte (whole/, resumed/)
+# Recordings made before the ready screen and the tutorial's new lessons
+# (versions 4 and 2; kept in tests/onset/, played by the build before
+# them, 7378889: flow.study's P1 whole, P2 quitting at condition one's
+# instructions, then resumed with --resume; a tutorial walked with the
+# pancake keys, tut.rec) replay as they were played: no ready screen after
+# the instructions, the lessons as they were, the play's logs byte for
+# byte (whole/, resumed/, tutorial/)
 K=$(cd "$(dirname "$0")" && pwd)/onset
 same() { # same DIR WANT: every file of WANT, byte for byte in DIR
     for f in "$2"/*; do
@@ -29,6 +31,15 @@ same "$T/o1" "$K/whole"
 run "replay a version 4 quit" 0 "$H" replay "$K/quit.rec" --log "$T/o2"
 run "replay a version 4 resume" 0 "$H" replay "$K/resume.rec" --log "$T/o2" --append
 same "$T/o2" "$K/resumed"
+# a pancake tutorial (version 2, the same build): its lessons as they were
+# (no turn to face a lesson's thing, no lessons.csv)
+run "replay a version 2 tutorial" 0 "$H" replay "$K/tut.rec" --log "$T/o3"
+same "$T/o3" "$K/tutorial"
+[ ! -e "$T/o3/lessons.csv" ] && ok || bad "a version 2 tutorial's replay wrote lessons.csv"
+sed '1s/.*/holonomy-rec 5/' "$K/tut.rec" >"$T/tut5.rec"
+run "replay it as version 5" 0 "$H" replay "$T/tut5.rec" --log "$T/o4"
+cmp -s "$K/tutorial/steps-001.csv" "$T/o4/steps-001.csv" && bad "version 5 replayed the old lessons" || ok
+[ -s "$T/o4/lessons.csv" ] && ok || bad "version 5's tutorial wrote no lessons.csv"
 # the gate is the version: the same input as version 5 waits on the ready
 # screen (condition one's attempt starts a confirm later, at 4.0, not 3.5)
 sed '1s/.*/holonomy-rec 5/' "$K/whole.rec" >"$T/five.rec"
