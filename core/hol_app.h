@@ -596,8 +596,8 @@ hol_err hol_app_ask_from(hol_app *app, int item);
 
 /* Right after hol_app_start_level: the level begins on the ready screen
  * (HOL_APP_SCREEN_READY; a resumed session's first level), after its
- * instructions if it has them. Errors: HOL_EARG (no level: nothing
- * changed). */
+ * `before` questionnaires and its instructions if it has them. Errors:
+ * HOL_EARG (no level: nothing changed). */
 hol_err hol_app_ready(hol_app *app);
 
 /* Make (or find) the navigator of the tiling {4,q} and a room of cols x

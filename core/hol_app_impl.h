@@ -95,6 +95,8 @@ struct hol_app {
     /* screens (hol_app_level.instructions, .closing) */
     int screen;              /* hol_app_screen up (state HOL_APP_SCREEN) */
     int place_panel;         /* a screen came up: the panel goes ahead now */
+    int ready_after;         /* hol_app_ready during the `before` asks: the
+                                ready screen after them */
     /* questionnaires (hol_app_level.asks) */
     int ask_k, ask_i;        /* the ask and its item on screen (state ASK) */
     int ask_mark;            /* the mark chosen (0 .. marks - 1) */

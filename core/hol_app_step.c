@@ -419,6 +419,7 @@ hol_err hol_app_start_level(hol_app *app, const hol_app_level *level)
         return err;
     }
     app->ask_before = 0;
+    app->ready_after = 0;
     if (hol__ask_before_start(app)) { /* a baseline: its instructions after */
         hol__fill_view(app, NULL);
     } else if (level->instructions[0]) { /* the level begins after them */
@@ -434,7 +435,9 @@ hol_err hol_app_ready(hol_app *app)
 {
     if (!app->have_level)
         return HOL_EARG;
-    if (app->screen != HOL_APP_SCREEN_INSTRUCTIONS) {
+    if (app->view.state == HOL_APP_ASK && app->ask_before) {
+        app->ready_after = 1; /* the baseline first: the ready screen after it */
+    } else if (app->screen != HOL_APP_SCREEN_INSTRUCTIONS) {
         app->screen = HOL_APP_SCREEN_READY;
         app->view.state = HOL_APP_SCREEN;
         app->place_panel = 1;

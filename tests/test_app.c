@@ -1741,6 +1741,52 @@ static void test_onset_ready(void **state)
     hol_app_destroy(app);
 }
 
+/* A resumed level with a baseline (`ask NAME before_level`) and no
+ * instructions: its questions first, then the ready screen, then the
+ * level; desc.flow_v4 (a recording of version 1 to 4): the instructions'
+ * confirm begins the level, no ready screen. */
+static void test_onset_ready_after_baseline(void **state)
+{
+    (void)state;
+    hol_app *app = make_app();
+    hol_app_level L;
+    hol_level_err e;
+    assert_int_equal(parse_level("mode flag\nseed 5\nflag N\n"
+                                 "question q likert 1 5 \"How?\" \"low\" \"high\"\n"
+                                 "ask mine before_level q\n",
+                                 &L, &e), HOL_OK);
+    assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    assert_int_equal(hol_app_ready(app), HOL_OK);
+    const hol_app_view *v = hol_app_get_view(app);
+    assert_int_equal(v->state, HOL_APP_ASK);
+    step(app, app_head(0, 1, 1, 0, HOL_DEVICE_KEYBOARD, 0));
+    const hol_app_events *ev = step(app, app_head(1, 1, 1, 0, HOL_DEVICE_KEYBOARD, HOL_BTN_CONFIRM));
+    assert_int_equal(ev->answered, 1);
+    assert_int_equal(v->state, HOL_APP_SCREEN);
+    assert_int_equal(v->hud.screen, HOL_APP_SCREEN_READY);
+    ev = step(app, app_head(5, 1, 0, 0, HOL_DEVICE_KEYBOARD, 0));
+    assert_int_equal(ev->nsteps, 0);
+    step(app, app_head(6, 1, 1, 0, HOL_DEVICE_KEYBOARD, HOL_BTN_CONFIRM));
+    ev = step(app, app_head(7, 1, 1, 0, HOL_DEVICE_KEYBOARD, 0));
+    assert_int_equal(ev->level_started, 1);
+    hol_app_destroy(app);
+    hol_app_desc d;
+    memset(&d, 0, sizeof d);
+    d.nav = g_nav;
+    d.flow_v4 = 1;
+    assert_int_equal(hol_app_create(&d, &app), HOL_OK);
+    L = flag_level("N");
+    snprintf(L.instructions, sizeof L.instructions, "Find the flag.");
+    assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    v = hol_app_get_view(app);
+    step(app, app_head(0, 1, 1, 0, HOL_DEVICE_KEYBOARD, 0));
+    step(app, app_head(1, 1, 1, 0, HOL_DEVICE_KEYBOARD, HOL_BTN_CONFIRM));
+    assert_int_equal(v->state, HOL_APP_PLAYING);
+    ev = step(app, app_head(2, 1, 1, 0, HOL_DEVICE_KEYBOARD, 0));
+    assert_int_equal(ev->level_started, 1);
+    hol_app_destroy(app);
+}
+
 /* A tutorial of lessons 2 and 4 only: it begins with lesson 2 (round a
  * tree) and goes on to lesson 4. */
 static void test_tutorial_stages(void **state)
@@ -1817,6 +1863,7 @@ int main(void)
         cmocka_unit_test(test_tutorial),
         cmocka_unit_test(test_time_limit),
         cmocka_unit_test(test_onset_ready),
+        cmocka_unit_test(test_onset_ready_after_baseline),
         cmocka_unit_test(test_safety_hud),
         cmocka_unit_test(test_tutorial_stages),
         cmocka_unit_test(test_tutorial_feedback),
