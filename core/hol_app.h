@@ -170,9 +170,17 @@ enum hol_app_minimap_place { HOL_MINIMAP_HUD = 0, HOL_MINIMAP_HAND = 1, HOL_MINI
 
 enum hol_app_screen {
     HOL_APP_SCREEN_NONE = 0,
-    HOL_APP_SCREEN_INSTRUCTIONS = 1, /* before the level: confirm begins it */
-    HOL_APP_SCREEN_CLOSING = 2       /* after the last level: confirm ends */
+    HOL_APP_SCREEN_INSTRUCTIONS = 1, /* before the level: confirm shows the ready screen */
+    HOL_APP_SCREEN_CLOSING = 2,      /* after the last level: confirm ends */
+    HOL_APP_SCREEN_READY = 3         /* HOL_APP_READY_TEXT, after the instructions
+                                        and on a resume (hol_app_ready): confirm
+                                        begins the level, and its clock */
 };
+/* Before the clock starts (the instructions, the ready screen) nothing of
+ * the level shows but the world around: no minimap (view.map.place
+ * HOL_MINIMAP_OFF), no objective on it, no game object (issue 35). */
+#define HOL_APP_READY_TEXT "Ready? The clock starts when you begin."
+
 
 /* Questionnaires (issue 26 item 7; docs/research.md "Questionnaires"):
  * items (`question` level lines, or the presets ssq and tlx: core/hol_ask.h)
@@ -307,6 +315,13 @@ typedef struct hol_app_desc {
                                  headset): cleared at create, so no update
                                  takes a page fault. A level start clears a
                                  store only when it holds tiles. */
+    int flow_v4;              /* 1: the flow recordings of version 1 to 4
+                                 were played in (hol_rec.h meta.flow_v4),
+                                 so they replay as they were played: no
+                                 ready screen after the instructions (their
+                                 confirm begins the level), the tutorial's
+                                 lessons as they were (hol_app_tutorial.c);
+                                 0 (live play): issue 35's flow */
 } hol_app_desc;
 
 typedef enum hol_app_state {
@@ -527,6 +542,14 @@ typedef struct hol_app_answer {
                                          screen and of its confirm */
 } hol_app_answer;
 
+/* A tutorial lesson done (issue 35; not with desc.flow_v4): a row of
+ * tutorial.csv (hol_session.h). */
+typedef struct hol_app_lesson {
+    int lesson;         /* 1..HOL_APP_TUTORIAL_STAGES */
+    double started, t;  /* the level times it began and was done */
+    int steps, optimum; /* its room steps; its fewest from where it began */
+} hol_app_lesson;
+
 typedef struct hol_app_events {
     int nsteps;
     hol_app_step_event steps[HOL_APP_MAX_STEP_EVENTS];
@@ -556,6 +579,8 @@ typedef struct hol_app_events {
                               untracked (core/hol_input.h) */
     double relocated_m;    /* with relocated: the head's floor distance
                               from where it last walked, metres */
+    int nlessons;          /* tutorial lessons done in this step */
+    hol_app_lesson lessons[HOL_APP_TUTORIAL_STAGES];
 } hol_app_events;
 
 typedef struct hol_app hol_app;
@@ -591,6 +616,12 @@ hol_err hol_app_start_level(hol_app *app, const hol_app_level *level);
  * next frame. Errors: HOL_EARG (no level, or item not one of its items:
  * nothing changed). */
 hol_err hol_app_ask_from(hol_app *app, int item);
+
+/* Right after hol_app_start_level: the level begins on the ready screen
+ * (HOL_APP_SCREEN_READY; a resumed session's first level), after its
+ * `before` questionnaires and its instructions if it has them. Errors:
+ * HOL_EARG (no level: nothing changed). */
+hol_err hol_app_ready(hol_app *app);
 
 /* Make (or find) the navigator of the tiling {4,q} and a room of cols x
  * rows cells (0: 5, 3, 3), so that no level start pays for it: platforms

@@ -58,13 +58,15 @@ int hol__ask_before_start(hol_app *app)
     return 1;
 }
 
-/* The `before` asks answered: the instructions, else the level begins
- * (pending_start: at the next frame). */
+/* The `before` asks answered: the instructions, else the ready screen (a
+ * resume's, hol_app_ready), else the level begins (pending_start: at the
+ * next frame). */
 static void hol__before_end(hol_app *app)
 {
     app->ask_before = 0;
-    if (app->level.instructions[0]) {
-        app->screen = HOL_APP_SCREEN_INSTRUCTIONS;
+    if (app->level.instructions[0] || app->ready_after) {
+        app->screen = app->level.instructions[0] ? HOL_APP_SCREEN_INSTRUCTIONS
+                                                 : HOL_APP_SCREEN_READY;
         app->view.state = HOL_APP_SCREEN;
         app->place_panel = 1;
     } else {

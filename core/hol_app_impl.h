@@ -72,6 +72,9 @@ struct hol_app {
     hol_room stage_start;
     int stage_steps;
     int stage_optimum;       /* the lesson's fewest steps from its start */
+    double stage_t0;         /* the level time it began */
+    int face_pending;        /* a lesson began: a pancake view turns ... */
+    double face_yaw;         /* ... to this yaw, facing what it names */
     int has_target;          /* the stage has a target tile */
     hol_tile target;
     char feedback[HOL_APP_TEXT_MAX]; /* the last lesson done says so */
@@ -92,6 +95,8 @@ struct hol_app {
     /* screens (hol_app_level.instructions, .closing) */
     int screen;              /* hol_app_screen up (state HOL_APP_SCREEN) */
     int place_panel;         /* a screen came up: the panel goes ahead now */
+    int ready_after;         /* hol_app_ready during the `before` asks: the
+                                ready screen after them */
     /* questionnaires (hol_app_level.asks) */
     int ask_k, ask_i;        /* the ask and its item on screen (state ASK) */
     int ask_mark;            /* the mark chosen (0 .. marks - 1) */
@@ -112,6 +117,11 @@ struct hol_app {
 /* hol_app_tutorial.c */
 int hol__next_stage(const hol_app *app, int k);
 void hol__stage(hol_app *app, int k, const hol_room *r);
+/* After a room step at level time t that ended the lesson `stage` (the
+ * tutorial done, or another lesson begun): the new lesson's optimum and
+ * start time; the lesson's row (issue 35, lesson: its number, start,
+ * steps and optimum) in the step's events, but with desc.flow_v4. */
+void hol__lesson_done(hol_app *app, int stage, hol_app_lesson lesson, double t);
 /* A room step of a tutorial entered r: the lesson done (feedback, marks,
  * the next lesson or the level's end). */
 void hol__tutorial_enter(hol_app *app, const hol_room *r);

@@ -62,11 +62,33 @@ static void hol__fill_eyes(hol_app *app, const hol_input *in)
         app->place_panel = 0;
 }
 
+/* The map held off by a study (`fixed minimap` with the map off), but
+ * with desc.flow_v4: the tutorial does not send the player to it. */
+static int hol__map_held_off(const hol_app *app)
+{
+    return !app->d.flow_v4 && app->level.minimap_fixed && app->level.minimap == HOL_MINIMAP_OFF;
+}
+
+/* The tutorial's prompt for a lesson (the move keys, M): not while a
+ * lesson's feedback shows (one idea at a time), and M not on a level
+ * whose minimap a study holds; with desc.flow_v4 as before (issue 35). */
+static int hol__lesson_prompt(const hol_app *app, const hol_app_hud *h, int stage)
+{
+    if (app->level.mode != HOL_APP_TUTORIAL || app->stage != stage)
+        return 0;
+    if (app->d.flow_v4)
+        return 1;
+    return !h->feedback[0] && !(stage == 2 && app->level.minimap_fixed);
+}
+
 static void hol__fill_objective(const hol_app *app, hol_app_hud *h)
 {
-    static const char *const lesson[HOL_APP_TUTORIAL_STAGES] = {
+    /* the lessons' objectives, then lesson 3's when its map is held off
+     * (a study's `fixed minimap`, issue 35: the map is not taught) */
+    static const char *const lesson[HOL_APP_TUTORIAL_STAGES + 1] = {
         "1/4 Step onto the marked tile ahead", "2/4 Walk round the marked tree to this cell",
-        "3/4 Use the map: reach the marker", "4/4 Find the flag, every cue on"};
+        "3/4 Use the map: reach the marker", "4/4 Find the flag, every cue on",
+        "3/4 Reach the marker"};
     switch (app->level.mode) {
     case HOL_APP_FLAG: snprintf(h->objective, sizeof h->objective, "Find the flag"); break;
     case HOL_APP_KEYS:
@@ -77,7 +99,9 @@ static void hol__fill_objective(const hol_app *app, hol_app_hud *h)
             snprintf(h->objective, sizeof h->objective, "Bring the keys to the chest");
         break;
     case HOL_APP_TUTORIAL:
-        snprintf(h->objective, sizeof h->objective, "%s", lesson[app->stage]);
+        snprintf(h->objective, sizeof h->objective, "%s",
+                 lesson[hol__map_held_off(app) && app->stage == 2 ? HOL_APP_TUTORIAL_STAGES
+                                                                  : app->stage]);
         break;
     default:
         if (app->level.nroute)
@@ -217,9 +241,9 @@ static void hol__fill_status(hol_app *app, const hol_input *in, hol_app_hud *h)
         snprintf(h->hint, sizeof h->hint, "Plug it back in, or press a key");
     } else if (v->paused) {
         snprintf(h->status, sizeof h->status, "Paused");
-    } else if (app->level.mode == HOL_APP_TUTORIAL && app->stage == 0 && hol_prompt_move(dev)) {
+    } else if (hol__lesson_prompt(app, h, 0) && hol_prompt_move(dev)) {
         snprintf(h->hint, sizeof h->hint, "%s", hol_prompt_move(dev));
-    } else if (app->level.mode == HOL_APP_TUTORIAL && app->stage == 2) {
+    } else if (hol__lesson_prompt(app, h, 2)) {
         const hol__ask ask[1] = {{HOL_BTN_MINIMAP, 0, "map on the HUD, in the hand, off"}};
         hol__prompt(h, dev, ask, 1);
     }
@@ -252,6 +276,7 @@ static void hol__fill_lines(const hol_app *app, hol_app_hud *h)
     }
     if (v->state == HOL_APP_SCREEN) { /* the screen's text, whole */
         const char *text = app->screen == HOL_APP_SCREEN_CLOSING ? app->level.closing
+                           : app->screen == HOL_APP_SCREEN_READY ? HOL_APP_READY_TEXT
                                                                  : app->level.instructions;
         int n = hol_app_wrap(text, HOL_APP_SCREEN_COLS, h->lines, HOL_APP_HUD_LINES);
         h->nlines = n < HOL_APP_HUD_LINES ? n : HOL_APP_HUD_LINES;
@@ -265,6 +290,13 @@ static void hol__fill_lines(const hol_app *app, hol_app_hud *h)
         HOL__LINE("%s", h->feedback);
     if (h->note[0] && v->state != HOL_APP_DONE)
         HOL__LINE("%s", h->note);
+    /* one idea at a time (issue 35): a lesson's feedback, and its note,
+     * alone; the next lesson's objective after it */
+    int alone = !app->d.flow_v4 && app->level.mode == HOL_APP_TUTORIAL &&
+                v->state == HOL_APP_PLAYING && h->feedback[0] && !h->status[0] &&
+                strcmp(h->feedback, HOL__FIXED_TEXT);
+    if (alone && !h->debug)
+        return;
     HOL__LINE("%s", h->status[0] ? h->status : h->objective);
     HOL__LINE("STEPS %d", h->steps);
     if (lim > 0)
@@ -363,6 +395,13 @@ static void hol__fill_map(hol_app *app)
     int tut = L->mode == HOL_APP_TUTORIAL;
     int opt = tut ? app->stage_optimum : app->optimum, taken = tut ? app->stage_steps : app->steps;
     m->npath = 0;
+    if (v->state == HOL_APP_SCREEN && app->screen != HOL_APP_SCREEN_CLOSING) {
+        /* before the clock starts: no minimap, no objective (issue 35) */
+        m->place = HOL_MINIMAP_OFF;
+        m->nobjectives = m->nmarks = v->nobjects = 0;
+        v->tree_marked = 0;
+        return;
+    }
     if ((L->cues & HOL_CUE_PATH) && !app->done && opt >= 0 && app->remaining >= 0 &&
         taken + app->remaining > opt + app->d.stray_steps) {
         m->npath = app->nwalk < HOL_APP_PATH_MAX ? app->nwalk : HOL_APP_PATH_MAX;

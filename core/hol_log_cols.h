@@ -1,5 +1,5 @@
 /* hol_log_cols.h - the columns of every CSV file of a log folder: the
- * session's (summary, steps, head, track, events, points, answers;
+ * session's (summary, steps, head, track, events, points, answers, tutorial;
  * hol_session.h) and the platform shell's (environment, provenance, order,
  * codebook; platform/shell/): one table a file, each column's name, type,
  * unit, allowed values and meaning.
@@ -204,6 +204,18 @@
     X("level_file", "string", "", "a path relative to the study file; empty: a generated level", "the level file the study names") S \
     X("level_sha256", "hex", "", "64 lowercase hex digits", "SHA-256 of the level's text as the session plays it")
 
+/* tutorial.csv (a row per tutorial lesson done) */
+#define HOL_SESSION_LESSON_TABLE(X, S) \
+    X("session", "id", "", "YYYYMMDDTHHMMSSZ-XXXXXXXX", "the session's id: its start (UTC) and 8 random hex digits") S \
+    X("participant", "string", "", "1..63 of A-Z a-z 0-9 . _ -; empty: none", "the participant's id (--participant ID)") S \
+    X("attempt", "integer", "", "1..9999", "the attempt's number NNN in the log folder") S \
+    X("level", "string", "", "", "the level's name (a tutorial)") S \
+    X("lesson", "integer", "", "1..4", "the tutorial's lesson done") S \
+    X("started", "number", "s", "0..", "the attempt's level time the lesson began") S \
+    X("steps", "integer", "", "1..", "the room steps the lesson took") S \
+    X("optimum", "integer", "", "1..", "the fewest room steps from where the lesson began") S \
+    X("time", "number", "s", "0..", "the lesson's time: from started to its last step")
+
 /* codebook.csv (hol_shell_codebook.h) */
 #define HOL_LOG_CODEBOOK_TABLE(X, S) \
     X("file", "string", "", "a file name, NNN for an attempt's number", "the file the column is in") S \
@@ -218,7 +230,8 @@
     F("summary.csv", HOL_SESSION_SUMMARY_TABLE) F("steps-NNN.csv", HOL_SESSION_STEP_TABLE)  \
     F("head-NNN.csv", HOL_SESSION_HEAD_TABLE) F("track-NNN.csv", HOL_SESSION_TRACK_TABLE)   \
     F("events.csv", HOL_SESSION_EVENT_TABLE) F("points.csv", HOL_SESSION_POINT_TABLE)       \
-    F("answers.csv", HOL_SESSION_ANSWER_TABLE) F("environment.csv", HOL_LOG_ENV_TABLE)      \
+    F("answers.csv", HOL_SESSION_ANSWER_TABLE) F("tutorial.csv", HOL_SESSION_LESSON_TABLE)  \
+    F("environment.csv", HOL_LOG_ENV_TABLE)                                              \
     F("provenance.csv", HOL_LOG_PROV_TABLE) F("order.csv", HOL_LOG_ORDER_TABLE)             \
     F("codebook.csv", HOL_LOG_CODEBOOK_TABLE)
 
@@ -233,5 +246,6 @@
 #define HOL_SESSION_POINT_COLUMNS HOL_SESSION_POINT_TABLE(HOL_COL_NAME, ",")
 #define HOL_SESSION_ANSWER_COLUMNS_OLD HOL_SESSION_ANSWER_OLD_TABLE(HOL_COL_NAME, ",")
 #define HOL_SESSION_ANSWER_COLUMNS HOL_SESSION_ANSWER_TABLE(HOL_COL_NAME, ",")
+#define HOL_SESSION_LESSON_COLUMNS HOL_SESSION_LESSON_TABLE(HOL_COL_NAME, ",")
 
 #endif

@@ -75,6 +75,9 @@
  *   meta.ask_attempt: the rows a report groups with the first answers);
  *   then the session goes on as after its last item. The recording says
  *   so (hol_rec.h `ask`), so a replay does the same.
+ * - A resumed session's first level (meta.ready, issue 35) begins on the
+ *   ready screen (hol_app_ready): its clock starts at the confirm. The
+ *   recording says so (hol_rec.h `ready`).
  * - Studies: a level's labels (hol_level: condition, position) and the
  *   study's name (meta.study) fill the summary's study, condition and
  *   position; all three are empty for a level without a condition.
@@ -96,8 +99,9 @@
  *   each re-basing of the room into another cell, `relocated` (value the
  *   distance in metres, 3 decimals: hol_app_events.relocated);
  *   the header when the file is new; a folder holding it holds logs);
- *   points.csv HOL_SESSION_POINT_COLUMNS and answers.csv
- *   HOL_SESSION_ANSWER_COLUMNS (likewise); the README ("Research logs") documents
+ *   points.csv HOL_SESSION_POINT_COLUMNS, answers.csv
+ *   HOL_SESSION_ANSWER_COLUMNS and tutorial.csv HOL_SESSION_LESSON_COLUMNS
+ *   (likewise); docs/logs.md documents
  *   each. Head rows fall on exact 10 Hz level times, interpolated between
  *   the frames around them (position linear, yaw the short way round;
  *   cell and tile from the nearer frame), frame_t the later frame's time.
@@ -184,6 +188,12 @@
  * quoted when it needs it), time the seconds taken, shown_ms and
  * answered_ms the input time in whole milliseconds when the item appeared
  * and at its confirm (likewise; HOL_SESSION_ANSWER_COLUMNS_OLD). */
+/* tutorial.csv: a row per tutorial lesson done (issue 35; hol_app_lesson,
+ * not in a replay of a recording of version 1 to 4), appended durably as
+ * it happens, the header when the file is new. lesson 1..4; started and
+ * t the level times it began and was done; steps its room steps, optimum
+ * its fewest from where it began; time t - started (the columns:
+ * core/hol_log_cols.h). */
 
 typedef struct hol_session_desc {
     const hol_level *levels; /* 1..HOL_SESSION_MAX_LEVELS, copied */

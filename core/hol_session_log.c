@@ -80,7 +80,7 @@ void hol__log_levels(hol_session *s)
             seen |= !memcmp(s->levels[j].sha256, s->levels[i].sha256, 32);
         if (seen)
             continue;
-        hol__put_file(s, live, 0, s->levels[i].text, s->levels[i].len);
+        hol__put_file(s, live, 0, s->levels[i].text, s->levels[i].hashed);
         hol__rename(s, live, name);
     }
 }
@@ -384,6 +384,23 @@ static void hol__point_row(hol_session *s, const hol_app_point *p)
         hol__put_file(s, "points.csv", 1, row, (size_t)n);
 }
 
+/* The rows of tutorial.csv (see hol_session.h) of a step's lessons done. */
+static void hol__lesson_rows(hol_session *s, const hol_app_events *ev)
+{
+    for (int i = 0; i < ev->nlessons && !s->failed; i++) {
+        hol__header_once(s, &s->lessons_known, "tutorial.csv", HOL_SESSION_LESSON_COLUMNS "\n",
+                         HOL_SESSION_LESSON_COLUMNS); /* no older header */
+        const hol_app_lesson *l = &ev->lessons[i];
+        char name[HOL__CSV_NAME], row[HOL__CSV_NAME + 256];
+        hol__csv_name(s->levels[s->cur].name, name);
+        int n = snprintf(row, sizeof row, "%s,%s,%d,%s,%d,%.4f,%d,%d,%.4f\n", s->meta.session,
+                         s->meta.participant, s->attempt, name, l->lesson, l->started, l->steps,
+                         l->optimum, l->t - l->started);
+        if (!s->failed && n > 0 && (size_t)n < sizeof row)
+            hol__put_file(s, "tutorial.csv", 1, row, (size_t)n);
+    }
+}
+
 /* A row of answers.csv (see hol_session.h). */
 static void hol__answer_row(hol_session *s, const hol_app_answer *a)
 {
@@ -428,6 +445,7 @@ void hol__log_frame(hol_session *s, const hol_app_events *ev, const hol_app_view
     if (!s->attempt_open)
         return;
     hol__step_rows(s, ev, v);
+    hol__lesson_rows(s, ev);
     hol__head_rows(s, v);
     char name[HOL__CSV_NAME];
     hol__csv_name(s->levels[s->cur].name, name);

@@ -114,8 +114,8 @@ grep -q "^level tut playing " "$T/out" && ok || bad "lessons out of order: $(cat
 # bad recordings: exit 2, one line naming the line
 printf 'hello\n' >"$T/bad1"
 run "no header" 2 "$H" replay "$T/bad1" && one_line "no header" "line 1"
-printf 'holonomy-rec 5\n' >"$T/bad2"
-run "version" 2 "$H" replay "$T/bad2" && one_line "version" "version 1 to 4"
+printf 'holonomy-rec 6\n' >"$T/bad2"
+run "version" 2 "$H" replay "$T/bad2" && one_line "version" "version 1 to 5"
 { rec "$LEVEL" "N"; printf '9 m=4,0\n'; } >"$T/bad3"
 run "bad input line" 2 "$H" replay "$T/bad3" && one_line "bad input line" "line 10"
 printf 'holonomy-rec 1\nlevel x\nL mode flag\nL flug Nf\nend\n0\n' >"$T/bad4"

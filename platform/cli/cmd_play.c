@@ -432,7 +432,7 @@ static int play_prepare(play_ctx *c)
     hol_rec_meta meta;
     hol_sink_posix_meta(&meta, c->o.participant);
     snprintf(meta.study, sizeof meta.study, "%s", c->study);
-    if (c->o.resume) /* a level's unanswered questions first (issue 39) */
+    if (c->o.resume) /* unanswered questions first (issue 39), else the ready screen */
         play_study_resume_meta(&meta);
     if (play_env_meta(c->cmd, &c->o.env, c->o.study, &meta, &c->out.study_text,
                       &c->out.study_len))

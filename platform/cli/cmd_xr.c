@@ -466,7 +466,7 @@ int cli_cmd_xr(int argc, char **argv)
     if (!st) {
         hol_sink_posix_meta(&c.meta, o.participant);
         snprintf(c.meta.study, sizeof c.meta.study, "%s", study);
-        if (o.resume) /* a level's unanswered questions first (issue 39) */
+        if (o.resume) /* unanswered questions first (issue 39), else the ready screen */
             play_study_resume_meta(&c.meta);
         st = play_env_meta(cmd, &o.env, o.study, &c.meta, &out.study_text, &out.study_len)
                  ? CLI_EXIT_FAIL
