@@ -110,12 +110,10 @@ enum hol_app_minimap_place { HOL_MINIMAP_HUD = 0, HOL_MINIMAP_HAND = 1, HOL_MINI
 /* Seconds a headset's device shows which control opens the menu, from the
  * moment it is in use (hol_app_hud.hint: "Y: menu", "LEFT PINCH: menu"). */
 #define HOL_APP_MENU_HINT_S 10.0
-/* The tutorial's feedback line the first time the path cue shows. */
-#define HOL_APP_PATH_TEXT "Map line: the fewest steps to the marker"
-/* The tutorial's line (hol_app_hud.note) the first time the minimap's
- * rings show (lesson 2's two tiles of one cell, map.marks), beside the
- * lesson's feedback, as long as the rings. */
-#define HOL_APP_RINGS_TEXT "Rings on the map: the two tiles of this cell"
+/* The tutorial's feedback line the first time the path cue shows is
+ * core/hol_str.h's HOL_S_PATH; its line (hol_app_hud.note) the first time
+ * the minimap's rings show (lesson 2's two tiles of one cell, map.marks),
+ * beside the lesson's feedback, as long as the rings, is HOL_S_RINGS. */
 #define HOL_APP_HUD_LINES 6
 #define HOL_APP_MAX_MARKS 2
 /* Most room steps one app step reports (a frame's motion in sub-steps). */
@@ -283,6 +281,10 @@ typedef struct hol_app_desc {
                                  first keys level's tour (60-140 ms then), not
                                  at create; 0 (a headset): both at create, so
                                  no level start pays. Same answers. */
+    int lang;                 /* hol_lang (core/hol_str.h): the language of
+                                 every text the view holds (HUD, prompts,
+                                 tutorial); 0: English. Logs, events and
+                                 recordings do not depend on it. */
     int lazy_world;           /* 1 (tools, headless and desktop runs): the
                                  world's memory (14 MB) comes from calloc
                                  and is not cleared at create, so only the
@@ -337,7 +339,7 @@ typedef struct hol_app_hud {
                                          shown); or "" */
     char address[HOL_TILE_ADDR_MAX];  /* the current tile */
     char feedback[HOL_APP_TEXT_MAX];  /* tutorial: the lesson just done, or "" */
-    char note[HOL_APP_TEXT_MAX];      /* tutorial: HOL_APP_RINGS_TEXT while the
+    char note[HOL_APP_TEXT_MAX];      /* tutorial: HOL_S_RINGS while the
                                          minimap's rings show the first time
                                          in the level (a line after the
                                          feedback), or "" */

@@ -22,7 +22,6 @@
 /* "Minimap fixed in this study" stays on the HUD this long (input clock,
  * seconds: it shows on a paused or finished level too). */
 #define HOL__FIXED_S 3.0
-#define HOL__FIXED_TEXT "Minimap fixed in this study"
 /* Tutorial feedback stays on the HUD this long (level clock, seconds). */
 #define HOL__FEEDBACK_S 6.0
 

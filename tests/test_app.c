@@ -20,6 +20,7 @@
 #include "../core/hol_nav.h"
 #include "../core/hol_prompt.h"
 #include "../core/hol_room.h"
+#include "../core/hol_str.h"
 #include "../core/hol_tile.h"
 #include "../core/hol_world.h"
 #include "app_fixture.h"
@@ -1027,14 +1028,14 @@ static void test_tutorial_marker_and_rings(void **state)
     play_walk(app, walk, 4, &t);
     assert_int_equal(v->hud.stage, 2);
     assert_int_equal(v->map.nmarks, 2);
-    assert_string_equal(v->hud.note, HOL_APP_RINGS_TEXT);
+    assert_string_equal(v->hud.note, hol_str(HOL_LANG_EN, HOL_S_RINGS));
     assert_string_equal(v->hud.lines[0], "Same cell, another tile: that is holonomy");
-    assert_string_equal(v->hud.lines[1], HOL_APP_RINGS_TEXT);
+    assert_string_equal(v->hud.lines[1], hol_str(HOL_LANG_EN, HOL_S_RINGS));
     assert_true(strstr(v->hud.lines[2], "3/4") != NULL);
     assert_int_equal(v->objects[0].kind, HOL_APP_OBJ_MARKER);
     hol_input in = tracked_at(t + 5.9, v->user.col, v->user.row);
     assert_int_equal(hol_app_step(app, &in), HOL_OK);
-    assert_string_equal(v->hud.note, HOL_APP_RINGS_TEXT);
+    assert_string_equal(v->hud.note, hol_str(HOL_LANG_EN, HOL_S_RINGS));
     in = tracked_at(t + 6.1, v->user.col, v->user.row);
     assert_int_equal(hol_app_step(app, &in), HOL_OK);
     assert_int_equal(v->map.nmarks, 0);
@@ -1156,7 +1157,7 @@ static void test_tutorial_strayed(void **state)
     }
     assert_true(shown > 0);
     /* the first time the path shows, one line says what it means */
-    assert_string_equal(v->hud.feedback, HOL_APP_PATH_TEXT);
+    assert_string_equal(v->hud.feedback, hol_str(HOL_LANG_EN, HOL_S_PATH));
     hol_app_destroy(app);
 }
 

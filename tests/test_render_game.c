@@ -23,6 +23,7 @@
 #include <cmocka.h>
 
 #include "../core/hol_app.h"
+#include "../core/hol_str.h"
 #include "../core/hol_tile.h"
 #include "../platform/osmesa/hol_osmesa.h"
 #include "../render/hol_app_frame.h"
@@ -373,7 +374,7 @@ static void test_tutorial_rings(void **state)
     }
     assert_int_equal(v->hud.stage, 2);
     assert_int_equal(v->map.nmarks, 2);
-    assert_string_equal(v->hud.note, HOL_APP_RINGS_TEXT);
+    assert_string_equal(v->hud.note, hol_str(HOL_LANG_EN, HOL_S_RINGS));
     assert_int_equal(shot("game_tutorial_rings", 1, img), 0);
 }
 

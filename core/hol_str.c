@@ -1,0 +1,218 @@
+/* hol_str.c - the string table (hol_str.h): English, German, Dutch. */
+#include "hol_str.h"
+
+#include <stddef.h>
+
+/* English: the app's words before the table, byte for byte. */
+static const char *const hol__en[HOL_S_COUNT] = {
+    [HOL_S_OBJ_FLAG] = "Find the flag",
+    [HOL_S_OBJ_KEYS_FMT] = "Keys %d/%d",
+    [HOL_S_OBJ_CHEST] = "Bring the keys to the chest",
+    [HOL_S_OBJ_EXPLORE] = "Explore",
+    [HOL_S_LESSON_1] = "1/4 Step onto the marked tile ahead",
+    [HOL_S_LESSON_2] = "2/4 Walk round the marked tree to this cell",
+    [HOL_S_LESSON_3] = "3/4 Use the map: reach the marker",
+    [HOL_S_LESSON_4] = "4/4 Find the flag, every cue on",
+    [HOL_S_LESSON_1_DONE] = "Well done: one step, one new tile",
+    [HOL_S_LESSON_2_DONE] = "Same cell, another tile: that is holonomy",
+    [HOL_S_LESSON_3_DONE] = "Found it: the map knows the way",
+    [HOL_S_LESSON_4_DONE] = "Flag found: you can play",
+    [HOL_S_PATH] = "Map line: the fewest steps to the marker",
+    [HOL_S_RINGS] = "Rings on the map: the two tiles of this cell",
+    [HOL_S_FIXED] = "Minimap fixed in this study",
+    [HOL_S_PAUSED] = "Paused",
+    [HOL_S_POINT_CTRL_START] = "Point the controller at the start",
+    [HOL_S_POINT_CTRL_CHEST] = "Point the controller at the chest",
+    [HOL_S_POINT_CTRL_FLAG] = "Point the controller at the flag",
+    [HOL_S_POINT_FACE_START] = "Turn to face the start",
+    [HOL_S_POINT_FACE_CHEST] = "Turn to face the chest",
+    [HOL_S_POINT_FACE_FLAG] = "Turn to face the flag",
+    [HOL_S_TIME_UP_FMT] = "Time up: %d steps, best %d, %ld:%02ld",
+    [HOL_S_TUTORIAL_DONE_FMT] = "Tutorial done: %d steps, %ld:%02ld",
+    [HOL_S_DONE_FMT] = "Done: %d steps, best %d, %ld:%02ld",
+    [HOL_S_DEVICE_LOST] = "Controller lost",
+    [HOL_S_OUTSIDE] = "Outside the room: step back in",
+    [HOL_S_DEVICE_BACK] = "Plug it back in, or press a key",
+    [HOL_S_SMALL_AREA_FMT] = "Play area under %.12s m: mind the edges",
+    [HOL_S_MOVE_KEYBOARD] = "W/S/A/D: WALK, ARROWS: TURN",
+    [HOL_S_MOVE_GAMEPAD] = "LEFT STICK: WALK, RIGHT STICK: TURN",
+    [HOL_S_MOVE_ROOM] = "WALK IN YOUR ROOM",
+    [HOL_S_DO_FINISH] = "finish",
+    [HOL_S_DO_BEGIN] = "begin",
+    [HOL_S_DO_QUIT] = "quit",
+    [HOL_S_DO_CONFIRM] = "confirm",
+    [HOL_S_DO_RESUME] = "resume",
+    [HOL_S_DO_RESTART] = "restart",
+    [HOL_S_DO_ANSWER] = "answer",
+    [HOL_S_DO_NEXT_LEVEL] = "next level",
+    [HOL_S_DO_AGAIN] = "again",
+    [HOL_S_DO_MENU] = "menu",
+    [HOL_S_DO_MAP] = "map on the HUD, in the hand, off",
+    [HOL_S_STEPS_FMT] = "STEPS %d",
+    [HOL_S_TIME_OF_FMT] = "TIME %ld:%02ld OF %ld:%02ld",
+    [HOL_S_TIME_FMT] = "TIME %ld:%02ld",
+    [HOL_S_TILE_FMT] = "TILE %.40s",
+    [HOL_S_CELL_FMT] = "CELL %d,%d NORTH %d",
+    [HOL_S_CAP_START] = "[Sound: chime, the level begins]",
+    [HOL_S_CAP_KEY] = "[Sound: chime, a key collected]",
+    [HOL_S_CAP_CHEST] = "[Sound: chime, the chest opens]",
+    [HOL_S_CAP_FLAG] = "[Sound: chime, the flag reached]",
+    [HOL_S_CAP_BEACON_FMT] = "[Sound: %d beacon pips at the goals]",
+};
+
+/* German (du, as a class is spoken to). The controls keep the names
+ * printed on them (ENTER, A, TRIGGER: core/hol_prompt.c). */
+static const char *const hol__de[HOL_S_COUNT] = {
+    [HOL_S_OBJ_FLAG] = "Finde die Fahne",
+    [HOL_S_OBJ_KEYS_FMT] = "Schlüssel %d/%d",
+    [HOL_S_OBJ_CHEST] = "Bring die Schlüssel zur Truhe",
+    [HOL_S_OBJ_EXPLORE] = "Erkunde den Wald",
+    [HOL_S_LESSON_1] = "1/4 Tritt auf die markierte Kachel vor dir",
+    [HOL_S_LESSON_2] = "2/4 Um den markierten Baum in diese Zelle",
+    [HOL_S_LESSON_3] = "3/4 Nutze die Karte: zur Markierung",
+    [HOL_S_LESSON_4] = "4/4 Finde die Fahne, alle Hilfen an",
+    [HOL_S_LESSON_1_DONE] = "Gut: ein Schritt, eine neue Kachel",
+    [HOL_S_LESSON_2_DONE] = "Dieselbe Zelle, andere Kachel: Holonomie",
+    [HOL_S_LESSON_3_DONE] = "Gefunden: die Karte kennt den Weg",
+    [HOL_S_LESSON_4_DONE] = "Fahne gefunden: du kannst spielen",
+    [HOL_S_PATH] = "Kartenlinie: der kürzeste Weg zur Markierung",
+    [HOL_S_RINGS] = "Ringe: die zwei Kacheln dieser Zelle",
+    [HOL_S_FIXED] = "Karte in dieser Studie fest",
+    [HOL_S_PAUSED] = "Pause",
+    [HOL_S_POINT_CTRL_START] = "Zeig mit dem Controller auf den Start",
+    [HOL_S_POINT_CTRL_CHEST] = "Zeig mit dem Controller auf die Truhe",
+    [HOL_S_POINT_CTRL_FLAG] = "Zeig mit dem Controller auf die Fahne",
+    [HOL_S_POINT_FACE_START] = "Dreh dich zum Start",
+    [HOL_S_POINT_FACE_CHEST] = "Dreh dich zur Truhe",
+    [HOL_S_POINT_FACE_FLAG] = "Dreh dich zur Fahne",
+    [HOL_S_TIME_UP_FMT] = "Zeit um: %d Schritte, best %d, %ld:%02ld",
+    [HOL_S_TUTORIAL_DONE_FMT] = "Einführung fertig: %d Schritte, %ld:%02ld",
+    [HOL_S_DONE_FMT] = "Fertig: %d Schritte, best %d, %ld:%02ld",
+    [HOL_S_DEVICE_LOST] = "Controller getrennt",
+    [HOL_S_OUTSIDE] = "Außerhalb des Raums: tritt zurück",
+    [HOL_S_DEVICE_BACK] = "Wieder anstecken oder eine Taste drücken",
+    [HOL_S_SMALL_AREA_FMT] = "Spielfläche unter %.12s m: Vorsicht am Rand",
+    [HOL_S_MOVE_KEYBOARD] = "W/S/A/D: GEHEN, PFEILE: DREHEN",
+    [HOL_S_MOVE_GAMEPAD] = "LINKER STICK: GEHEN, RECHTER: DREHEN",
+    [HOL_S_MOVE_ROOM] = "GEH IN DEINEM RAUM",
+    [HOL_S_DO_FINISH] = "beenden",
+    [HOL_S_DO_BEGIN] = "anfangen",
+    [HOL_S_DO_QUIT] = "aufhören",
+    [HOL_S_DO_CONFIRM] = "bestätigen",
+    [HOL_S_DO_RESUME] = "weiter",
+    [HOL_S_DO_RESTART] = "neu starten",
+    [HOL_S_DO_ANSWER] = "antworten",
+    [HOL_S_DO_NEXT_LEVEL] = "nächstes Level",
+    [HOL_S_DO_AGAIN] = "nochmal",
+    [HOL_S_DO_MENU] = "Menü",
+    [HOL_S_DO_MAP] = "Karte im HUD, in der Hand, aus",
+    [HOL_S_STEPS_FMT] = "SCHRITTE %d",
+    [HOL_S_TIME_OF_FMT] = "ZEIT %ld:%02ld VON %ld:%02ld",
+    [HOL_S_TIME_FMT] = "ZEIT %ld:%02ld",
+    [HOL_S_TILE_FMT] = "KACHEL %.40s",
+    [HOL_S_CELL_FMT] = "ZELLE %d,%d NORD %d",
+    [HOL_S_CAP_START] = "[Ton: Glocke, das Level beginnt]",
+    [HOL_S_CAP_KEY] = "[Ton: Glocke, ein Schlüssel gefunden]",
+    [HOL_S_CAP_CHEST] = "[Ton: Glocke, die Truhe geht auf]",
+    [HOL_S_CAP_FLAG] = "[Ton: Glocke, die Fahne erreicht]",
+    [HOL_S_CAP_BEACON_FMT] = "[Ton: %d Signale piepen an den Zielen]",
+};
+
+/* Dutch (je, as a class is spoken to). */
+static const char *const hol__nl[HOL_S_COUNT] = {
+    [HOL_S_OBJ_FLAG] = "Vind de vlag",
+    [HOL_S_OBJ_KEYS_FMT] = "Sleutels %d/%d",
+    [HOL_S_OBJ_CHEST] = "Breng de sleutels naar de kist",
+    [HOL_S_OBJ_EXPLORE] = "Verken het bos",
+    [HOL_S_LESSON_1] = "1/4 Stap op de gemarkeerde tegel voor je",
+    [HOL_S_LESSON_2] = "2/4 Loop om de gemarkeerde boom naar deze cel",
+    [HOL_S_LESSON_3] = "3/4 Gebruik de kaart: naar de marker",
+    [HOL_S_LESSON_4] = "4/4 Vind de vlag, alle hulp aan",
+    [HOL_S_LESSON_1_DONE] = "Goed: één stap, één nieuwe tegel",
+    [HOL_S_LESSON_2_DONE] = "Zelfde cel, andere tegel: dat is holonomie",
+    [HOL_S_LESSON_3_DONE] = "Gevonden: de kaart kent de weg",
+    [HOL_S_LESSON_4_DONE] = "Vlag gevonden: je kunt spelen",
+    [HOL_S_PATH] = "Lijn op de kaart: de kortste weg naar de marker",
+    [HOL_S_RINGS] = "Ringen: de twee tegels van deze cel",
+    [HOL_S_FIXED] = "Kaart staat vast in dit onderzoek",
+    [HOL_S_PAUSED] = "Pauze",
+    [HOL_S_POINT_CTRL_START] = "Wijs met de controller naar de start",
+    [HOL_S_POINT_CTRL_CHEST] = "Wijs met de controller naar de kist",
+    [HOL_S_POINT_CTRL_FLAG] = "Wijs met de controller naar de vlag",
+    [HOL_S_POINT_FACE_START] = "Draai je naar de start",
+    [HOL_S_POINT_FACE_CHEST] = "Draai je naar de kist",
+    [HOL_S_POINT_FACE_FLAG] = "Draai je naar de vlag",
+    [HOL_S_TIME_UP_FMT] = "Tijd op: %d stappen, best %d, %ld:%02ld",
+    [HOL_S_TUTORIAL_DONE_FMT] = "Uitleg klaar: %d stappen, %ld:%02ld",
+    [HOL_S_DONE_FMT] = "Klaar: %d stappen, best %d, %ld:%02ld",
+    [HOL_S_DEVICE_LOST] = "Controller kwijt",
+    [HOL_S_OUTSIDE] = "Buiten de kamer: stap terug",
+    [HOL_S_DEVICE_BACK] = "Sluit hem weer aan, of druk op een toets",
+    [HOL_S_SMALL_AREA_FMT] = "Speelruimte onder %.12s m: let op de randen",
+    [HOL_S_MOVE_KEYBOARD] = "W/S/A/D: LOPEN, PIJLEN: DRAAIEN",
+    [HOL_S_MOVE_GAMEPAD] = "LINKER STICK: LOPEN, RECHTER: DRAAIEN",
+    [HOL_S_MOVE_ROOM] = "LOOP IN JE KAMER",
+    [HOL_S_DO_FINISH] = "afsluiten",
+    [HOL_S_DO_BEGIN] = "beginnen",
+    [HOL_S_DO_QUIT] = "stoppen",
+    [HOL_S_DO_CONFIRM] = "bevestigen",
+    [HOL_S_DO_RESUME] = "verder",
+    [HOL_S_DO_RESTART] = "opnieuw beginnen",
+    [HOL_S_DO_ANSWER] = "antwoorden",
+    [HOL_S_DO_NEXT_LEVEL] = "volgend level",
+    [HOL_S_DO_AGAIN] = "nog eens",
+    [HOL_S_DO_MENU] = "menu",
+    [HOL_S_DO_MAP] = "kaart in de HUD, in de hand, uit",
+    [HOL_S_STEPS_FMT] = "STAPPEN %d",
+    [HOL_S_TIME_OF_FMT] = "TIJD %ld:%02ld VAN %ld:%02ld",
+    [HOL_S_TIME_FMT] = "TIJD %ld:%02ld",
+    [HOL_S_TILE_FMT] = "TEGEL %.40s",
+    [HOL_S_CELL_FMT] = "CEL %d,%d NOORD %d",
+    [HOL_S_CAP_START] = "[Geluid: bel, het level begint]",
+    [HOL_S_CAP_KEY] = "[Geluid: bel, een sleutel gevonden]",
+    [HOL_S_CAP_CHEST] = "[Geluid: bel, de kist gaat open]",
+    [HOL_S_CAP_FLAG] = "[Geluid: bel, de vlag bereikt]",
+    [HOL_S_CAP_BEACON_FMT] = "[Geluid: %d bakens piepen bij de doelen]",
+};
+
+static const char *const *const hol__lang[HOL_LANG_COUNT] = {hol__en, hol__de, hol__nl};
+static const char hol__code[HOL_LANG_COUNT][3] = {"en", "de", "nl"};
+
+const char *hol_str(int lang, hol_str_id id)
+{
+    if (lang < 0 || lang >= HOL_LANG_COUNT)
+        lang = HOL_LANG_EN;
+    if ((int)id < 0 || id >= HOL_S_COUNT)
+        return "";
+    const char *s = hol__lang[lang][id];
+    return s ? s : ""; /* a missing entry (tests/test_str.c finds none) */
+}
+
+int hol_str_cap(hol_str_id id)
+{
+    if (id >= HOL_S_DEVICE_BACK && id <= HOL_S_DO_MAP)
+        return 60; /* HOL_APP_HINT_MAX: the prompt's line */
+    return 48;     /* HOL_APP_TEXT_MAX */
+}
+
+static int hol__lower(int c)
+{
+    return c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c;
+}
+
+int hol_lang_parse(const char *tag)
+{
+    if (!tag)
+        return -1;
+    for (int l = 0; l < HOL_LANG_COUNT; l++)
+        if (hol__lower(tag[0]) == hol__code[l][0] && tag[0] &&
+            hol__lower(tag[1]) == hol__code[l][1] && tag[1] &&
+            (tag[2] == 0 || tag[2] == '-' || tag[2] == '_'))
+            return l;
+    return -1;
+}
+
+const char *hol_lang_code(int lang)
+{
+    return hol__code[lang >= 0 && lang < HOL_LANG_COUNT ? lang : HOL_LANG_EN];
+}
