@@ -593,5 +593,9 @@ const char *hol_app_end_word(const hol_app_view *v);
 const hol_app_events *hol_app_get_events(const hol_app *app);
 /* The world the view shows (for the renderer's content). */
 struct hol_world *hol_app_world(hol_app *app);
+/* The language of the view's texts from the next step on (hol_lang,
+ * core/hol_str.h; out of range: English), as desc.lang at create: a page
+ * that changes its language changes nothing else. */
+void hol_app_set_lang(hol_app *app, int lang);
 
 #endif

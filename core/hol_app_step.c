@@ -204,6 +204,12 @@ hol_world *hol_app_world(hol_app *app)
     return app->world;
 }
 
+void hol_app_set_lang(hol_app *app, int lang)
+{
+    if (app)
+        app->d.lang = lang;
+}
+
 /* ---- the game ------------------------------------------------------------ */
 
 /* Optimal steps left from room r (the walk in app->walk), or -1. *exact
