@@ -34,6 +34,7 @@ typedef enum hol_str_id {
     HOL_S_OBJ_KEYS_FMT,   /* %d %d: keys held, keys in all */
     HOL_S_OBJ_CHEST,
     HOL_S_OBJ_EXPLORE,
+    HOL_S_GUIDE_POLE,     /* holonomy render --hud --target's objective */
     HOL_S_LESSON_1,       /* the tutorial's four lessons */
     HOL_S_LESSON_2,
     HOL_S_LESSON_3,
