@@ -115,6 +115,8 @@ enum hol_app_minimap_place { HOL_MINIMAP_HUD = 0, HOL_MINIMAP_HAND = 1, HOL_MINI
  * the minimap's rings show (lesson 2's two tiles of one cell, map.marks),
  * beside the lesson's feedback, as long as the rings, is HOL_S_RINGS. */
 #define HOL_APP_HUD_LINES 6
+/* Seconds (input clock) a chime's caption stays (hol_app_hud.caption). */
+#define HOL_APP_CAPTION_S 3.0
 #define HOL_APP_MAX_MARKS 2
 /* Most room steps one app step reports (a frame's motion in sub-steps). */
 #define HOL_APP_MAX_STEP_EVENTS 16
@@ -370,6 +372,17 @@ typedef struct hol_app_hud {
      * shown in capitals. The hint (the prompt) is drawn on its own. */
     char lines[HOL_APP_HUD_LINES][HOL_APP_TEXT_MAX];
     int nlines;
+    /* The sound's caption (issue 37; W3C XR Accessibility: captions for
+     * sound), or "": with captions on (hol_app_set_captions: the platform
+     * plays sound) and the level's sound not off, the cue the sound plays
+     * now named in the language, the last line of `lines` (when one is
+     * free): a chime (hol_sound.h: the level begins, a key is collected,
+     * the chest opens, the flag is reached) for HOL_APP_CAPTION_S of input
+     * time from its step, else, while beacons sound (cue `sound`, the
+     * level in play, objectives left), the beacons' line. Footsteps (every
+     * room step, counted on the HUD) and the forest's ambience are not
+     * captioned. The same steps as core/hol_sound.h's shots (test_app). */
+    char caption[HOL_APP_TEXT_MAX];
 } hol_app_hud;
 
 /* The minimap model. */
@@ -593,6 +606,9 @@ const char *hol_app_end_word(const hol_app_view *v);
 const hol_app_events *hol_app_get_events(const hol_app *app);
 /* The world the view shows (for the renderer's content). */
 struct hol_world *hol_app_world(hol_app *app);
+/* Captions of the sound on (1) or off (0, the default): a platform that
+ * plays the app's sound turns them on (hol_app_hud.caption). */
+void hol_app_set_captions(hol_app *app, int on);
 /* The language of the view's texts from the next step on (hol_lang,
  * core/hol_str.h; out of range: English), as desc.lang at create: a page
  * that changes its language changes nothing else. */

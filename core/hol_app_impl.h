@@ -100,6 +100,12 @@ struct hol_app {
     int ask_fresh;           /* hol_app_ask_from: the item comes up at the
                                 next frame (its time, its look) */
     int ask_before;          /* the `before` asks (the level not begun) */
+    /* captions (hol_app_hud.caption): on, the chime's text until when,
+     * and the keys and state the last step ended with (as hol_sound's) */
+    int captions;
+    int cap_id;              /* hol_str_id of the chime, or -1 */
+    double cap_until;
+    int cap_keys, cap_state;
     uint8_t walk[HOL_NAV_WALK_MAX]; /* replan scratch */
     int nwalk;
 };

@@ -394,10 +394,47 @@ static void hol__fill_lights(hol_app *app)
     }
 }
 
+/* The sound's caption (hol_app.h: hol_app_hud.caption): a chime seen
+ * where core/hol_sound.c plays one (the step's level start; more keys held
+ * than the last step ended with; the level done from play, not timed
+ * out), not while paused; then the beacons while they sound. */
+static void hol__caption(hol_app *app, const hol_input *in)
+{
+    hol_app_view *v = &app->view;
+    hol_app_hud *h = &v->hud;
+    /* the chimes are followed with captions off too: a platform that turns
+     * them on after its first step (its sound opens then) shows the
+     * level's first chime from its next frame */
+    int sound = v->state != HOL_APP_IDLE && v->sound != HOL_SOUND_OFF;
+    if (in && sound && !v->paused) {
+        int id = -1;
+        if (app->ev.level_started)
+            id = HOL_S_CAP_START;
+        else if (v->state == HOL_APP_DONE && app->cap_state == HOL_APP_PLAYING && !h->timed_out)
+            id = h->keys_total > 0 ? HOL_S_CAP_CHEST : HOL_S_CAP_FLAG;
+        else if (h->keys_held > app->cap_keys)
+            id = HOL_S_CAP_KEY;
+        if (id >= 0)
+            app->cap_id = id, app->cap_until = in->time_s + HOL_APP_CAPTION_S;
+    }
+    if (in)
+        app->cap_keys = h->keys_held, app->cap_state = v->state;
+    h->caption[0] = 0;
+    if (!sound || !app->captions)
+        return;
+    if (app->cap_id >= 0 && in && in->time_s < app->cap_until)
+        HOL__PUT(h->caption, app->d.lang, (hol_str_id)app->cap_id);
+    else if (v->state == HOL_APP_PLAYING && (v->map.cues & HOL_CUE_SOUND) && v->map.nobjectives)
+        HOL__PUT(h->caption, app->d.lang, HOL_S_CAP_BEACON);
+    if (h->caption[0] && h->nlines < HOL_APP_HUD_LINES)
+        snprintf(h->lines[h->nlines++], HOL_APP_TEXT_MAX, "%s", h->caption);
+}
+
 void hol__fill_view(hol_app *app, const hol_input *in)
 {
     hol__fill_eyes(app, in);
     hol__fill_hud(app, in);
     hol__fill_map(app);
     hol__fill_lights(app);
+    hol__caption(app, in);
 }

@@ -58,7 +58,7 @@ static const char *const hol__en[HOL_S_COUNT] = {
     [HOL_S_CAP_KEY] = "[Sound: chime, a key collected]",
     [HOL_S_CAP_CHEST] = "[Sound: chime, the chest opens]",
     [HOL_S_CAP_FLAG] = "[Sound: chime, the flag reached]",
-    [HOL_S_CAP_BEACON_FMT] = "[Sound: %d beacon pips at the goals]",
+    [HOL_S_CAP_BEACON] = "[Sound: beacons pip at the goals]",
 };
 
 /* German (du, as a class is spoken to). The controls keep the names
@@ -117,7 +117,7 @@ static const char *const hol__de[HOL_S_COUNT] = {
     [HOL_S_CAP_KEY] = "[Ton: Glocke, ein Schlüssel gefunden]",
     [HOL_S_CAP_CHEST] = "[Ton: Glocke, die Truhe geht auf]",
     [HOL_S_CAP_FLAG] = "[Ton: Glocke, die Fahne erreicht]",
-    [HOL_S_CAP_BEACON_FMT] = "[Ton: %d Signale piepen an den Zielen]",
+    [HOL_S_CAP_BEACON] = "[Ton: Signale piepen an den Zielen]",
 };
 
 /* Dutch (je, as a class is spoken to). */
@@ -175,7 +175,7 @@ static const char *const hol__nl[HOL_S_COUNT] = {
     [HOL_S_CAP_KEY] = "[Geluid: bel, een sleutel gevonden]",
     [HOL_S_CAP_CHEST] = "[Geluid: bel, de kist gaat open]",
     [HOL_S_CAP_FLAG] = "[Geluid: bel, de vlag bereikt]",
-    [HOL_S_CAP_BEACON_FMT] = "[Geluid: %d bakens piepen bij de doelen]",
+    [HOL_S_CAP_BEACON] = "[Geluid: bakens piepen bij de doelen]",
 };
 
 static const char *const *const hol__lang[HOL_LANG_COUNT] = {hol__en, hol__de, hol__nl};

@@ -89,7 +89,7 @@ typedef enum hol_str_id {
     HOL_S_CAP_KEY,
     HOL_S_CAP_CHEST,
     HOL_S_CAP_FLAG,
-    HOL_S_CAP_BEACON_FMT, /* %d: beacons playing */
+    HOL_S_CAP_BEACON,     /* beacons sound at the objectives */
     HOL_S_COUNT
 } hol_str_id;
 
