@@ -653,9 +653,12 @@ WEB_LDFLAGS := -Oz -sMALLOC=emmalloc -sENVIRONMENT=web -sMIN_WEBGL_VERSION=2 -sM
 # the objects are made again when these flags change (an -O3 object of an
 # older build would otherwise stay): the file holds them, and is written
 # only when they differ (no shell at parse time: every make would run it)
+# The languages of the web build (core/hol_str.h; en always): Dutch costs
+# 1.2 KB of the transfer (docs/web.md, "The transfer size").
+WEB_LANGS ?= en de
 WEB_STAMP := $(BUILD)/web-obj/flags.txt
-WEB_FLAGS_TEXT := $(CSTD) $(WARN) $(WEB_OPT) $(WEB_OPT_HOT) $(WEB_HOT)
-WEB_PAGE := $(addprefix $(WEB)/,index.html page.js store.js)
+WEB_FLAGS_TEXT := $(CSTD) $(WARN) $(WEB_OPT) $(WEB_OPT_HOT) $(WEB_HOT) $(WEB_LANGS)
+WEB_PAGE := $(addprefix $(WEB)/,index.html page.js store.js text.js)
 WEB_PORT ?= 8080
 WEB_HTTPS_PORT ?= 8443
 # precompressed copies for web-serve: beside build/web, which stays the
@@ -682,6 +685,9 @@ $(WEB_STAMP): FORCE
 
 FORCE:
 
+# the string table without the page's words, which text.js carries (1.5 KB),
+# in the languages of WEB_LANGS
+$(BUILD)/web-obj/core/hol_str.o: WEB_CFLAGS += -DHOL_STR_NO_PAGE $(if $(filter nl,$(WEB_LANGS)),,-DHOL_STR_NO_NL)
 $(BUILD)/web-obj/render/hol_program.o: $(GLSL_H)
 $(BUILD)/web-obj/render/hol_program.o: WEB_CFLAGS += -I$(BUILD)/gen
 
@@ -699,12 +705,17 @@ $(WEB)/holonomy.js: $(WEB_OBJ) platform/web/hol_web_lib.js platform/web/hol_web_
 	@$(EMCC_ENV) $(EMCC) $(WEB_LDFLAGS) $(WEB_OBJ) -o $@
 	@NODE_PATH=/usr/share/nodejs node platform/web/minify.mjs $@ $@ || { rm -f $@; exit 1; }
 
-# the page's scripts without their comment lines and indentation (about 2 KB
-# of the gzip'ed transfer; the sources keep them): a line whose first
-# characters are // is a comment (no string spans lines in these files)
-$(WEB)/%.js: platform/web/%.js
+# the page's words in every language, from core's string table (issue 37)
+$(WEB)/text.js: $(BUILD)/tests/gen_page_text $(WEB_STAMP)
 	@mkdir -p $(dir $@)
-	sed -e '/^[[:space:]]*\/\//d' -e 's/^[[:space:]]*//' $< >$@
+	$(BUILD)/tests/gen_page_text $(WEB_LANGS) >$@.tmp && mv $@.tmp $@ || { rm -f $@.tmp; exit 1; }
+
+# the page's scripts minified by terser as the glue is (platform/web/minify.mjs:
+# local names only; about 1 KB of the gzip'ed transfer against stripping
+# their comment lines and indentation alone; the sources keep them)
+$(WEB)/%.js: platform/web/%.js platform/web/minify.mjs
+	@mkdir -p $(dir $@)
+	@NODE_PATH=/usr/share/nodejs node platform/web/minify.mjs $< $@
 
 $(WEB)/%: platform/web/%
 	@mkdir -p $(dir $@)

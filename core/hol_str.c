@@ -59,6 +59,48 @@ static const char *const hol__en[HOL_S_COUNT] = {
     [HOL_S_CAP_CHEST] = "[Sound: chime, the chest opens]",
     [HOL_S_CAP_FLAG] = "[Sound: chime, the flag reached]",
     [HOL_S_CAP_BEACON] = "[Sound: beacons pip at the goals]",
+    [HOL_S_PAUSE_UNFOCUSED] = "the window is not focused",
+    [HOL_S_PAUSE_HEADSET_OFF] = "the headset is off",
+    [HOL_S_PAUSE_SYSTEM_MENU] = "a system menu is over the game",
+    [HOL_S_PAUSE_PAD_GONE] = "the game controller went away",
+    [HOL_S_PAUSE_MENU] = "the menu is open",
+#ifndef HOL_STR_NO_PAGE /* the web build: text.js carries them */
+    [HOL_S_PAGE_LOADING] = "Loading…",
+    [HOL_S_PAGE_OK] = "OK",
+    [HOL_S_PAGE_BACK] = "Back",
+    [HOL_S_PAGE_MENU] = "Menu",
+    [HOL_S_PAGE_MAP] = "Map",
+    [HOL_S_PAGE_VR_ENTER] = "Enter VR",
+    [HOL_S_PAGE_VR_EXIT] = "Exit VR",
+    [HOL_S_PAGE_VR_HTTPS] = "VR needs https:// or localhost",
+    [HOL_S_PAGE_VR_HTTPS_WHY] = "WebXR runs only on a secure page: open it with https://, or from localhost (docs/web.md)",
+    [HOL_S_PAGE_VR_NONE] = "No VR in this browser",
+    [HOL_S_PAGE_VR_NONE_WHY] = "this browser has no WebXR",
+    [HOL_S_PAGE_VR_NO_HEADSET] = "No VR headset found",
+    [HOL_S_PAGE_VR_NO_HEADSET_WHY] = "connect a headset (or open the page in its browser) and reload",
+    [HOL_S_PAGE_AGAIN] = "Play again",
+    [HOL_S_PAGE_FIT] = "Play the room that fits your play area",
+    [HOL_S_PAGE_FILE] = "Level file…",
+    [HOL_S_PAGE_FILE_WHY] = "Play a level file (SPEC section 5)",
+    [HOL_S_PAGE_LOGS] = "Logs",
+    [HOL_S_PAGE_HELP] = "Click the view to look with the mouse · W/S/A/D walk · arrows turn · P menu · M map · R restart · Enter next · F2 frame time · Q quit",
+    [HOL_S_PAGE_NO_LOGS] = "No logs yet.",
+    [HOL_S_PAGE_CLEAR] = "Delete all logs",
+    [HOL_S_PAGE_CLEAR_ASK] = "Delete every log and recording kept in this browser?",
+    [HOL_S_PAGE_BYTES] = "bytes",
+    [HOL_S_PAGE_PLAYING] = "Playing",
+    [HOL_S_PAGE_PLAYING_LEVEL] = "Playing %s",
+    [HOL_S_PAGE_IN_VR] = "In VR",
+    [HOL_S_PAGE_PAUSED] = "Paused: %s",
+    [HOL_S_PAGE_OVER] = "Session over: the logs are kept in this browser (Logs).",
+    [HOL_S_PAGE_FAILED] = "Failed: %s",
+    [HOL_S_PAGE_WARNING] = "Warning: %s",
+    [HOL_S_PAGE_VR_FAILED] = "VR failed: %s",
+    [HOL_S_PAGE_NO_STUDY] = "Cannot load the study: %s",
+    [HOL_S_PAGE_NO_LEVEL] = "Cannot load the level: %s",
+    [HOL_S_PAGE_NO_GAME] = "cannot load the game",
+    [HOL_S_PAGE_NO_START] = "cannot start the game",
+#endif
 };
 
 /* German (du, as a class is spoken to). The controls keep the names
@@ -118,8 +160,51 @@ static const char *const hol__de[HOL_S_COUNT] = {
     [HOL_S_CAP_CHEST] = "[Ton: Glocke, die Truhe geht auf]",
     [HOL_S_CAP_FLAG] = "[Ton: Glocke, die Fahne erreicht]",
     [HOL_S_CAP_BEACON] = "[Ton: Signale piepen an den Zielen]",
+    [HOL_S_PAUSE_UNFOCUSED] = "das Fenster ist nicht im Fokus",
+    [HOL_S_PAUSE_HEADSET_OFF] = "die Brille ist abgesetzt",
+    [HOL_S_PAUSE_SYSTEM_MENU] = "ein Systemmenü liegt über dem Spiel",
+    [HOL_S_PAUSE_PAD_GONE] = "der Controller ist weg",
+    [HOL_S_PAUSE_MENU] = "das Menü ist offen",
+#ifndef HOL_STR_NO_PAGE /* the web build: text.js carries them */
+    [HOL_S_PAGE_LOADING] = "Lädt…",
+    [HOL_S_PAGE_OK] = "OK",
+    [HOL_S_PAGE_BACK] = "Zurück",
+    [HOL_S_PAGE_MENU] = "Menü",
+    [HOL_S_PAGE_MAP] = "Karte",
+    [HOL_S_PAGE_VR_ENTER] = "VR starten",
+    [HOL_S_PAGE_VR_EXIT] = "VR beenden",
+    [HOL_S_PAGE_VR_HTTPS] = "VR braucht https:// oder localhost",
+    [HOL_S_PAGE_VR_HTTPS_WHY] = "WebXR läuft nur auf einer sicheren Seite: öffne sie mit https:// oder von localhost (docs/web.md)",
+    [HOL_S_PAGE_VR_NONE] = "Kein VR in diesem Browser",
+    [HOL_S_PAGE_VR_NONE_WHY] = "dieser Browser hat kein WebXR",
+    [HOL_S_PAGE_VR_NO_HEADSET] = "Keine VR-Brille gefunden",
+    [HOL_S_PAGE_VR_NO_HEADSET_WHY] = "schließe eine Brille an (oder öffne die Seite in ihrem Browser) und lade neu",
+    [HOL_S_PAGE_AGAIN] = "Nochmal spielen",
+    [HOL_S_PAGE_FIT] = "Den Raum spielen, der in deine Spielfläche passt",
+    [HOL_S_PAGE_FILE] = "Level-Datei…",
+    [HOL_S_PAGE_FILE_WHY] = "Eine Level-Datei spielen (SPEC Abschnitt 5)",
+    [HOL_S_PAGE_LOGS] = "Protokolle",
+    [HOL_S_PAGE_HELP] = "Klick ins Bild, um mit der Maus zu schauen · W/S/A/D gehen · Pfeile drehen · P Menü · M Karte · R neu starten · Enter weiter · F2 Bildzeit · Q beenden",
+    [HOL_S_PAGE_NO_LOGS] = "Noch keine Protokolle.",
+    [HOL_S_PAGE_CLEAR] = "Alle Protokolle löschen",
+    [HOL_S_PAGE_CLEAR_ASK] = "Alle Protokolle und Aufnahmen in diesem Browser löschen?",
+    [HOL_S_PAGE_BYTES] = "Bytes",
+    [HOL_S_PAGE_PLAYING] = "Im Spiel",
+    [HOL_S_PAGE_PLAYING_LEVEL] = "Im Spiel: %s",
+    [HOL_S_PAGE_IN_VR] = "In VR",
+    [HOL_S_PAGE_PAUSED] = "Pause: %s",
+    [HOL_S_PAGE_OVER] = "Sitzung beendet: die Protokolle bleiben in diesem Browser (Protokolle).",
+    [HOL_S_PAGE_FAILED] = "Fehler: %s",
+    [HOL_S_PAGE_WARNING] = "Warnung: %s",
+    [HOL_S_PAGE_VR_FAILED] = "VR fehlgeschlagen: %s",
+    [HOL_S_PAGE_NO_STUDY] = "Die Studie lädt nicht: %s",
+    [HOL_S_PAGE_NO_LEVEL] = "Das Level lädt nicht: %s",
+    [HOL_S_PAGE_NO_GAME] = "das Spiel lädt nicht",
+    [HOL_S_PAGE_NO_START] = "das Spiel startet nicht",
+#endif
 };
 
+#ifndef HOL_STR_NO_NL /* a build without Dutch (the web's: Makefile WEB_LANGS) */
 /* Dutch (je, as a class is spoken to). */
 static const char *const hol__nl[HOL_S_COUNT] = {
     [HOL_S_OBJ_FLAG] = "Vind de vlag",
@@ -176,15 +261,61 @@ static const char *const hol__nl[HOL_S_COUNT] = {
     [HOL_S_CAP_CHEST] = "[Geluid: bel, de kist gaat open]",
     [HOL_S_CAP_FLAG] = "[Geluid: bel, de vlag bereikt]",
     [HOL_S_CAP_BEACON] = "[Geluid: bakens piepen bij de doelen]",
+    [HOL_S_PAUSE_UNFOCUSED] = "het venster heeft geen focus",
+    [HOL_S_PAUSE_HEADSET_OFF] = "de bril is af",
+    [HOL_S_PAUSE_SYSTEM_MENU] = "een systeemmenu ligt over het spel",
+    [HOL_S_PAUSE_PAD_GONE] = "de controller is weg",
+    [HOL_S_PAUSE_MENU] = "het menu is open",
+#ifndef HOL_STR_NO_PAGE /* the web build: text.js carries them */
+    [HOL_S_PAGE_LOADING] = "Laden…",
+    [HOL_S_PAGE_OK] = "OK",
+    [HOL_S_PAGE_BACK] = "Terug",
+    [HOL_S_PAGE_MENU] = "Menu",
+    [HOL_S_PAGE_MAP] = "Kaart",
+    [HOL_S_PAGE_VR_ENTER] = "VR starten",
+    [HOL_S_PAGE_VR_EXIT] = "VR verlaten",
+    [HOL_S_PAGE_VR_HTTPS] = "VR heeft https:// of localhost nodig",
+    [HOL_S_PAGE_VR_HTTPS_WHY] = "WebXR werkt alleen op een veilige pagina: open hem met https://, of vanaf localhost (docs/web.md)",
+    [HOL_S_PAGE_VR_NONE] = "Geen VR in deze browser",
+    [HOL_S_PAGE_VR_NONE_WHY] = "deze browser heeft geen WebXR",
+    [HOL_S_PAGE_VR_NO_HEADSET] = "Geen VR-bril gevonden",
+    [HOL_S_PAGE_VR_NO_HEADSET_WHY] = "sluit een bril aan (of open de pagina in zijn browser) en laad opnieuw",
+    [HOL_S_PAGE_AGAIN] = "Nog eens spelen",
+    [HOL_S_PAGE_FIT] = "Speel de kamer die in je speelruimte past",
+    [HOL_S_PAGE_FILE] = "Levelbestand…",
+    [HOL_S_PAGE_FILE_WHY] = "Een levelbestand spelen (SPEC paragraaf 5)",
+    [HOL_S_PAGE_LOGS] = "Logs",
+    [HOL_S_PAGE_HELP] = "Klik in het beeld om met de muis te kijken · W/S/A/D lopen · pijlen draaien · P menu · M kaart · R opnieuw · Enter verder · F2 beeldtijd · Q stoppen",
+    [HOL_S_PAGE_NO_LOGS] = "Nog geen logs.",
+    [HOL_S_PAGE_CLEAR] = "Alle logs wissen",
+    [HOL_S_PAGE_CLEAR_ASK] = "Alle logs en opnamen in deze browser wissen?",
+    [HOL_S_PAGE_BYTES] = "bytes",
+    [HOL_S_PAGE_PLAYING] = "Aan het spelen",
+    [HOL_S_PAGE_PLAYING_LEVEL] = "Aan het spelen: %s",
+    [HOL_S_PAGE_IN_VR] = "In VR",
+    [HOL_S_PAGE_PAUSED] = "Pauze: %s",
+    [HOL_S_PAGE_OVER] = "Sessie voorbij: de logs blijven in deze browser (Logs).",
+    [HOL_S_PAGE_FAILED] = "Mislukt: %s",
+    [HOL_S_PAGE_WARNING] = "Waarschuwing: %s",
+    [HOL_S_PAGE_VR_FAILED] = "VR mislukt: %s",
+    [HOL_S_PAGE_NO_STUDY] = "Het onderzoek laadt niet: %s",
+    [HOL_S_PAGE_NO_LEVEL] = "Het level laadt niet: %s",
+    [HOL_S_PAGE_NO_GAME] = "het spel laadt niet",
+    [HOL_S_PAGE_NO_START] = "het spel start niet",
+#endif
 };
+#define HOL__NL hol__nl
+#else
+#define HOL__NL NULL
+#endif
 
-static const char *const *const hol__lang[HOL_LANG_COUNT] = {hol__en, hol__de, hol__nl};
+static const char *const *const hol__lang[HOL_LANG_COUNT] = {hol__en, hol__de, HOL__NL};
 static const char hol__code[HOL_LANG_COUNT][3] = {"en", "de", "nl"};
 
 const char *hol_str(int lang, hol_str_id id)
 {
-    if (lang < 0 || lang >= HOL_LANG_COUNT)
-        lang = HOL_LANG_EN;
+    if (lang < 0 || lang >= HOL_LANG_COUNT || !hol__lang[lang])
+        lang = HOL_LANG_EN; /* and a language this build leaves out */
     if ((int)id < 0 || id >= HOL_S_COUNT)
         return "";
     const char *s = hol__lang[lang][id];
@@ -195,6 +326,8 @@ int hol_str_cap(hol_str_id id)
 {
     if (id >= HOL_S_DEVICE_BACK && id <= HOL_S_DO_MAP)
         return 60; /* HOL_APP_HINT_MAX: the prompt's line */
+    if (id >= HOL_S_PAGE_FIRST)
+        return 256; /* the page's: no buffer of the app's */
     return 48;     /* HOL_APP_TEXT_MAX */
 }
 
@@ -208,7 +341,7 @@ int hol_lang_parse(const char *tag)
     if (!tag)
         return -1;
     for (int l = 0; l < HOL_LANG_COUNT; l++)
-        if (hol__lower(tag[0]) == hol__code[l][0] && tag[0] &&
+        if (hol__lang[l] && hol__lower(tag[0]) == hol__code[l][0] && tag[0] &&
             hol__lower(tag[1]) == hol__code[l][1] && tag[1] &&
             (tag[2] == 0 || tag[2] == '-' || tag[2] == '_'))
             return l;

@@ -4,11 +4,16 @@
  *
  * Contract
  * - hol_str(lang, id) is the text of id in lang (HOL_LANG_*): a static,
- *   NUL-terminated UTF-8 string whose code points are all in the text
- *   face (core/hol_face.h: ASCII and Latin-1; tests/test_str.c draws none
- *   as the missing-glyph box). A lang out of range reads English; an id
+ *   NUL-terminated UTF-8 string; below HOL_S_PAGE_FIRST (what the app's
+ *   HUD and panel draw) its code points are all in the text face
+ *   (core/hol_face.h: ASCII and Latin-1; tests/test_str.c draws none as
+ *   the missing-glyph box); the page's strings (from HOL_S_PAGE_FIRST on)
+ *   are drawn by the browser. A lang out of range reads English; an id
  *   out of range, or an entry a language lacks, reads "". Pure data: no
  *   state, no allocation.
+ * - A build may leave a language out (-DHOL_STR_NO_NL: the web's, whose
+ *   transfer budget it keeps; Makefile WEB_LANGS): it reads as English and
+ *   hol_lang_parse does not take its tag.
  * - English is the reference: its strings are the ones the app showed
  *   before the table, byte for byte (goldens and tests compare them).
  *   Every language is complete (no NULL entry: tests/test_str.c); the
@@ -90,8 +95,54 @@ typedef enum hol_str_id {
     HOL_S_CAP_CHEST,
     HOL_S_CAP_FLAG,
     HOL_S_CAP_BEACON,     /* beacons sound at the objectives */
+    /* the web page's (platform/web/page.js; its copy made by
+     * tests/gen_page_text.c) and its pauses' reasons, after "Paused: " */
+    HOL_S_PAUSE_UNFOCUSED,
+    HOL_S_PAUSE_HEADSET_OFF,
+    HOL_S_PAUSE_SYSTEM_MENU,
+    HOL_S_PAUSE_PAD_GONE,
+    HOL_S_PAUSE_MENU,
+    HOL_S_PAGE_LOADING,
+    HOL_S_PAGE_OK,
+    HOL_S_PAGE_BACK,
+    HOL_S_PAGE_MENU,
+    HOL_S_PAGE_MAP,
+    HOL_S_PAGE_VR_ENTER,
+    HOL_S_PAGE_VR_EXIT,
+    HOL_S_PAGE_VR_HTTPS,
+    HOL_S_PAGE_VR_HTTPS_WHY,
+    HOL_S_PAGE_VR_NONE,
+    HOL_S_PAGE_VR_NONE_WHY,
+    HOL_S_PAGE_VR_NO_HEADSET,
+    HOL_S_PAGE_VR_NO_HEADSET_WHY,
+    HOL_S_PAGE_AGAIN,
+    HOL_S_PAGE_FIT,
+    HOL_S_PAGE_FILE,
+    HOL_S_PAGE_FILE_WHY,
+    HOL_S_PAGE_LOGS,
+    HOL_S_PAGE_HELP,
+    HOL_S_PAGE_NO_LOGS,
+    HOL_S_PAGE_CLEAR,
+    HOL_S_PAGE_CLEAR_ASK,
+    HOL_S_PAGE_BYTES,
+    HOL_S_PAGE_PLAYING,
+    HOL_S_PAGE_PLAYING_LEVEL,
+    HOL_S_PAGE_IN_VR,
+    HOL_S_PAGE_PAUSED,
+    HOL_S_PAGE_OVER,
+    HOL_S_PAGE_FAILED,
+    HOL_S_PAGE_WARNING,
+    HOL_S_PAGE_VR_FAILED,
+    HOL_S_PAGE_NO_STUDY,
+    HOL_S_PAGE_NO_LEVEL,
+    HOL_S_PAGE_NO_GAME,
+    HOL_S_PAGE_NO_START,
     HOL_S_COUNT
 } hol_str_id;
+
+/* The first of the page's ids: from it on the browser draws the text (in
+ * its own fonts: not limited to the face's glyphs, nor to a buffer). */
+#define HOL_S_PAGE_FIRST HOL_S_PAUSE_UNFOCUSED
 
 const char *hol_str(int lang, hol_str_id id);
 /* The buffer (bytes with the NUL) the id's text is written into. */

@@ -25,7 +25,8 @@ static void test_complete_and_drawn(void **state)
             if (!s[0])
                 fail_msg("%s: string %d is missing", hol_lang_code(l), id);
             int missing = 0;
-            hol_face_units(s, strlen(s), &missing);
+            if (id < HOL_S_PAGE_FIRST) /* the page's are the browser's to draw */
+                hol_face_units(s, strlen(s), &missing);
             if (missing)
                 fail_msg("%s: '%s' draws %d missing-glyph boxes", hol_lang_code(l), s, missing);
         }
@@ -97,6 +98,8 @@ static void test_fits(void **state)
                 n = snprintf(buf, sizeof buf, f, addr);
             else if (!strcmp(conv, "%.12s"))
                 n = snprintf(buf, sizeof buf, f, "3 x 3.75");
+            else if (!strcmp(conv, "%s") && id >= HOL_S_PAGE_FIRST)
+                n = (int)strlen(f); /* the page fills it in (page.js) */
             else {
                 assert_string_equal(conv, "");
                 n = (int)strlen(f);
