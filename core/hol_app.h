@@ -251,6 +251,10 @@ typedef struct hol_app_level {
     int sound;                /* hol_app_sound; 0: all */
     int point;                /* hol_app_point_target: the question asked
                                  at the level's end; 0: none */
+    int lang;                 /* level line `lang en|de|nl`: 1 + hol_lang
+                                 (core/hol_str.h), the language of the
+                                 view's texts in this level whatever the
+                                 app's (desc.lang); 0: the app's */
     /* Screens (issue 26, session flow): "" none. instructions: shown when
      * the level is started (hol_app_start_level; not on a restart) until
      * confirm; the level (its clock, its attempt: events.level_started)
@@ -285,7 +289,8 @@ typedef struct hol_app_desc {
                                  no level start pays. Same answers. */
     int lang;                 /* hol_lang (core/hol_str.h): the language of
                                  every text the view holds (HUD, prompts,
-                                 tutorial); 0: English. Logs, events and
+                                 tutorial) unless the level's `lang` line
+                                 names one; 0: English. Logs, events and
                                  recordings do not depend on it. */
     int lazy_world;           /* 1 (tools, headless and desktop runs): the
                                  world's memory (14 MB) comes from calloc

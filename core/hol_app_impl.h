@@ -110,6 +110,13 @@ struct hol_app {
     int nwalk;
 };
 
+/* The language of the view's texts (core/hol_str.h): the level's `lang`
+ * line, else the desc's (hol_app_set_lang). */
+static inline int hol__lang(const hol_app *app)
+{
+    return app->level.lang > 0 ? app->level.lang - 1 : app->d.lang;
+}
+
 /* hol_app_tutorial.c */
 int hol__next_stage(const hol_app *app, int k);
 void hol__stage(hol_app *app, int k, const hol_room *r);

@@ -108,7 +108,7 @@ void hol__tutorial_enter(hol_app *app, const hol_room *r)
     /* feedback: what was learnt, and for the loop both tiles of the cell */
     /* what the lesson's end says (lesson 4's end is the level's end screen) */
     snprintf(app->feedback, sizeof app->feedback, "%s",
-             hol_str(app->d.lang, (hol_str_id)(HOL_S_LESSON_1_DONE + app->stage)));
+             hol_str(hol__lang(app), (hol_str_id)(HOL_S_LESSON_1_DONE + app->stage)));
     app->feedback_until = app->level_t + HOL__FEEDBACK_S;
     app->nmarks = 0;
     app->rings_note = 0;

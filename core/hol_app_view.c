@@ -68,7 +68,7 @@ static void hol__fill_eyes(hol_app *app, const hol_input *in)
 
 static void hol__fill_objective(const hol_app *app, hol_app_hud *h)
 {
-    int lang = app->d.lang;
+    int lang = hol__lang(app);
     switch (app->level.mode) {
     case HOL_APP_FLAG: HOL__PUT(h->objective, lang, HOL_S_OBJ_FLAG); break;
     case HOL_APP_KEYS:
@@ -105,7 +105,7 @@ static void hol__prompt(const hol_app *app, hol_app_hud *h, const hol__ask *ask,
         if (!b)
             continue;
         int k = snprintf(h->hint + len, sizeof h->hint - len, "%s%s: %s", len ? ", " : "", b,
-                         hol_str(app->d.lang, ask[i].what));
+                         hol_str(hol__lang(app), ask[i].what));
         if (k < 0 || (size_t)k >= sizeof h->hint - len) {
             h->hint[len] = 0; /* what does not fit is left out */
             break;
@@ -127,7 +127,7 @@ static void hol__menu_hint(const hol_app *app, const hol_input *in, hol_app_hud 
         return;
     size_t len = strlen(h->hint);
     int k = snprintf(h->hint + len, sizeof h->hint - len, "%s%s: %s", len ? ", " : "", b,
-                     hol_str(app->d.lang, HOL_S_DO_MENU));
+                     hol_str(hol__lang(app), HOL_S_DO_MENU));
     if (k < 0 || (size_t)k >= sizeof h->hint - len)
         h->hint[len] = 0; /* no room: the prompt alone */
 }
@@ -167,7 +167,7 @@ static void hol__point_status(const hol_app *app, const hol_input *in, hol_app_h
     int what = L->point == HOL_APP_POINT_START ? 0 : L->mode == HOL_APP_KEYS ? 1 : 2;
     int ctrl = in && (in->flags & HOL_INPUT_HEAD_VALID) &&
                (in->flags & (HOL_INPUT_HAND_R_VALID | HOL_INPUT_HAND_L_VALID));
-    HOL__PUT(h->status, app->d.lang,
+    HOL__PUT(h->status, hol__lang(app),
              (hol_str_id)((ctrl ? HOL_S_POINT_CTRL_START : HOL_S_POINT_FACE_START) + what));
     const hol__ask ask[1] = {{HOL_BTN_CONFIRM, 0, HOL_S_DO_CONFIRM}};
     hol__prompt(app, h, ask, 1);
@@ -179,7 +179,7 @@ static void hol__fill_status(hol_app *app, const hol_input *in, hol_app_hud *h)
 {
     const hol_app_view *v = &app->view;
     uint32_t dev = app->device;
-    int lang = app->d.lang;
+    int lang = hol__lang(app);
     long secs = (long)app->level_t;
     h->hint[0] = 0;
     h->status[0] = 0;
@@ -242,7 +242,7 @@ static void hol__fill_lines(const hol_app *app, hol_app_hud *h)
 {
     const hol_app_view *v = &app->view;
     long secs = (long)app->level_t, lim = (long)app->level.time_limit_s;
-    int lang = app->d.lang;
+    int lang = hol__lang(app);
     h->nlines = 0;
     if (v->state == HOL_APP_ASK) {
         hol__ask_lines(app, h);
@@ -304,9 +304,9 @@ static void hol__fill_hud(hol_app *app, const hol_input *in)
     int fb = tut && app->feedback[0] && app->level_t < app->feedback_until;
     int fixed = app->fixed_shown && in && in->time_s < app->fixed_until;
     snprintf(h->feedback, sizeof h->feedback, "%s",
-             fixed ? hol_str(app->d.lang, HOL_S_FIXED) : fb ? app->feedback : "");
+             fixed ? hol_str(hol__lang(app), HOL_S_FIXED) : fb ? app->feedback : "");
     snprintf(h->note, sizeof h->note, "%s",
-             fb && !fixed && app->nmarks && app->rings_note ? hol_str(app->d.lang, HOL_S_RINGS)
+             fb && !fixed && app->nmarks && app->rings_note ? hol_str(hol__lang(app), HOL_S_RINGS)
                                                             : "");
     hol__fill_objective(app, h);
     hol__fill_status(app, in, h);
@@ -338,7 +338,7 @@ static void hol__fill_map(hol_app *app)
     }
     /* the lesson's marks go with its feedback (not with "Minimap fixed") */
     m->nmarks =
-        h->feedback[0] && strcmp(h->feedback, hol_str(app->d.lang, HOL_S_FIXED)) ? app->nmarks : 0;
+        h->feedback[0] && strcmp(h->feedback, hol_str(hol__lang(app), HOL_S_FIXED)) ? app->nmarks : 0;
     memcpy(m->marks, app->marks, sizeof m->marks);
     v->nobjects = 0;
     if (L->mode == HOL_APP_FLAG)
@@ -366,12 +366,12 @@ static void hol__fill_map(hol_app *app)
     }
     if (tut && m->npath && !app->path_told) { /* the first time: what it means */
         app->path_told = 1;
-        HOL__PUT(app->feedback, app->d.lang, HOL_S_PATH);
+        HOL__PUT(app->feedback, hol__lang(app), HOL_S_PATH);
         app->feedback_until = app->level_t + HOL__FEEDBACK_S;
         app->nmarks = 0;
         app->rings_note = 0;
         v->hud.note[0] = 0;
-        HOL__PUT(v->hud.feedback, app->d.lang, HOL_S_PATH);
+        HOL__PUT(v->hud.feedback, hol__lang(app), HOL_S_PATH);
     }
 }
 
@@ -423,9 +423,9 @@ static void hol__caption(hol_app *app, const hol_input *in)
     if (!sound || !app->captions)
         return;
     if (app->cap_id >= 0 && in && in->time_s < app->cap_until)
-        HOL__PUT(h->caption, app->d.lang, (hol_str_id)app->cap_id);
+        HOL__PUT(h->caption, hol__lang(app), (hol_str_id)app->cap_id);
     else if (v->state == HOL_APP_PLAYING && (v->map.cues & HOL_CUE_SOUND) && v->map.nobjectives)
-        HOL__PUT(h->caption, app->d.lang, HOL_S_CAP_BEACON);
+        HOL__PUT(h->caption, hol__lang(app), HOL_S_CAP_BEACON);
     if (h->caption[0] && h->nlines < HOL_APP_HUD_LINES)
         snprintf(h->lines[h->nlines++], HOL_APP_TEXT_MAX, "%s", h->caption);
 }

@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "hol_room.h"
+#include "hol_str.h"
 #include "hol_tile.h"
 
 hol_err hol__key_mode(hol__lp *p, char **f, int nf)
@@ -231,6 +232,19 @@ hol_err hol__key_sound(hol__lp *p, char **f, int nf)
     static const char *const modes[3] = {"all", "cues", "off"};
     (void)nf;
     return hol__lv_one_of(p, f, modes, 3, "all, cues or off", &p->L.sound);
+}
+
+/* lang en|de|nl: the language of the level's texts (core/hol_str.h) */
+hol_err hol__key_lang(hol__lp *p, char **f, int nf)
+{
+    static const char *const codes[3] = {"en", "de", "nl"};
+    _Static_assert(HOL_LANG_COUNT == 3, "one code per language");
+    (void)nf;
+    int l;
+    hol_err e = hol__lv_one_of(p, f, codes, 3, "en, de or nl", &l);
+    if (!e)
+        p->L.lang = 1 + l;
+    return e;
 }
 
 /* point start|objective (SPEC 8): the pointing question at the level's end */

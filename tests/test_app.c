@@ -372,6 +372,38 @@ static void test_captions(void **state)
     hol_app_destroy(app);
 }
 
+/* Issue 37: the view's language is the level's `lang` line when it has
+ * one, else the app's (desc.lang, hol_app_set_lang); the English texts are
+ * the ones the app always showed. */
+static void test_level_lang(void **state)
+{
+    (void)state;
+    hol_app *app = make_app();
+    const hol_app_view *v = hol_app_get_view(app);
+    hol_app_level L;
+    hol_level_err e;
+    double t = 0;
+    assert_int_equal(parse_level("mode flag\nflag N\n", &L, &e), HOL_OK);
+    assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    step(app, tracked_at(t += 0.1, 1, 1));
+    assert_string_equal(v->hud.objective, "Find the flag");
+    assert_string_equal(v->hud.lines[1], "STEPS 0");
+    hol_app_set_lang(app, HOL_LANG_DE);
+    step(app, tracked_at(t += 0.1, 1, 1));
+    assert_string_equal(v->hud.objective, "Finde die Fahne");
+    assert_string_equal(v->hud.lines[1], "SCHRITTE 0");
+    assert_int_equal(parse_level("mode flag\nflag N\nlang en\n", &L, &e), HOL_OK);
+    assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    step(app, tracked_at(t += 0.1, 1, 1));
+    assert_string_equal(v->hud.objective, "Find the flag");
+    hol_app_set_lang(app, HOL_LANG_EN);
+    assert_int_equal(parse_level("mode flag\nflag N\nlang nl\n", &L, &e), HOL_OK);
+    assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    step(app, tracked_at(t += 0.1, 1, 1));
+    assert_string_equal(v->hud.objective, "Vind de vlag");
+    hol_app_destroy(app);
+}
+
 /* The level's sky and lanterns reach the view (so every platform's
  * renderer gets them): the placed lanterns, then with the cue lantern one
  * on each game object drawn; a collected key's lantern goes with it. */
@@ -1870,6 +1902,7 @@ int main(void)
         cmocka_unit_test(test_path_when_strayed),
         cmocka_unit_test(test_keys_level),
         cmocka_unit_test(test_captions),
+        cmocka_unit_test(test_level_lang),
         cmocka_unit_test(test_lighting_in_view),
         cmocka_unit_test(test_objectives_on_free_tiles),
         cmocka_unit_test(test_tutorial),
