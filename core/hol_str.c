@@ -64,6 +64,10 @@ static const char *const hol__en[HOL_S_COUNT] = {
     [HOL_S_PAUSE_SYSTEM_MENU] = "a system menu is over the game",
     [HOL_S_PAUSE_PAD_GONE] = "the game controller went away",
     [HOL_S_PAUSE_MENU] = "the menu is open",
+    [HOL_S_FIT_FMT] = "Room %d x %d cells of %s m fits your %s x %s m play area",
+    [HOL_S_FIT_SMALL_FMT] = "Your %s x %s m play area is smaller than the smallest room (3 x 3 "
+                            "cells of 0.5 m and %s m clear): playing 3 x 3 cells of 0.5 m, keep "
+                            "to the middle",
 #ifndef HOL_STR_NO_PAGE /* the web build: text.js carries them */
     [HOL_S_PAGE_LOADING] = "Loading…",
     [HOL_S_PAGE_OK] = "OK",
@@ -165,6 +169,10 @@ static const char *const hol__de[HOL_S_COUNT] = {
     [HOL_S_PAUSE_SYSTEM_MENU] = "ein Systemmenü liegt über dem Spiel",
     [HOL_S_PAUSE_PAD_GONE] = "der Controller ist weg",
     [HOL_S_PAUSE_MENU] = "das Menü ist offen",
+    [HOL_S_FIT_FMT] = "Raum %d x %d Zellen zu %s m passt in deine %s x %s m Spielfläche",
+    [HOL_S_FIT_SMALL_FMT] = "Deine %s x %s m Spielfläche ist kleiner als der kleinste Raum (3 x 3 "
+                            "Zellen zu 0.5 m und %s m frei): gespielt werden 3 x 3 Zellen zu "
+                            "0.5 m, bleib in der Mitte",
 #ifndef HOL_STR_NO_PAGE /* the web build: text.js carries them */
     [HOL_S_PAGE_LOADING] = "Lädt…",
     [HOL_S_PAGE_OK] = "OK",
@@ -266,6 +274,10 @@ static const char *const hol__nl[HOL_S_COUNT] = {
     [HOL_S_PAUSE_SYSTEM_MENU] = "een systeemmenu ligt over het spel",
     [HOL_S_PAUSE_PAD_GONE] = "de controller is weg",
     [HOL_S_PAUSE_MENU] = "het menu is open",
+    [HOL_S_FIT_FMT] = "Kamer van %d x %d cellen van %s m past in je speelruimte van %s x %s m",
+    [HOL_S_FIT_SMALL_FMT] = "Je speelruimte van %s x %s m is kleiner dan de kleinste kamer (3 x 3 "
+                            "cellen van 0.5 m en %s m vrij): je speelt 3 x 3 cellen van 0.5 m, "
+                            "blijf in het midden",
 #ifndef HOL_STR_NO_PAGE /* the web build: text.js carries them */
     [HOL_S_PAGE_LOADING] = "Laden…",
     [HOL_S_PAGE_OK] = "OK",

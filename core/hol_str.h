@@ -102,6 +102,8 @@ typedef enum hol_str_id {
     HOL_S_PAUSE_SYSTEM_MENU,
     HOL_S_PAUSE_PAD_GONE,
     HOL_S_PAUSE_MENU,
+    HOL_S_FIT_FMT,        /* %d %d %s %s %s: the play area's fit (hol_fit_say) */
+    HOL_S_FIT_SMALL_FMT,  /* %s %s %s: a play area under the smallest room */
     HOL_S_PAGE_LOADING,
     HOL_S_PAGE_OK,
     HOL_S_PAGE_BACK,

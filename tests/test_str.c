@@ -78,6 +78,8 @@ static void test_fits(void **state)
         for (int id = 0; id < HOL_S_COUNT; id++) {
             const char *f = hol_str(l, (hol_str_id)id);
             char buf[256], conv[64];
+            if (id >= HOL_S_PAGE_FIRST)
+                continue; /* the page's: no buffer (the browser draws them) */
             conversions(f, conv, sizeof conv);
             int n;
             if (!strcmp(conv, "%d%d%ld%02ld"))
@@ -98,8 +100,6 @@ static void test_fits(void **state)
                 n = snprintf(buf, sizeof buf, f, addr);
             else if (!strcmp(conv, "%.12s"))
                 n = snprintf(buf, sizeof buf, f, "3 x 3.75");
-            else if (!strcmp(conv, "%s") && id >= HOL_S_PAGE_FIRST)
-                n = (int)strlen(f); /* the page fills it in (page.js) */
             else {
                 assert_string_equal(conv, "");
                 n = (int)strlen(f);
