@@ -717,6 +717,11 @@ $(WEB)/%.js: platform/web/%.js platform/web/minify.mjs
 	@mkdir -p $(dir $@)
 	@NODE_PATH=/usr/share/nodejs node platform/web/minify.mjs $< $@
 
+# the page without its indentation and its style's comment lines (0.1 KB)
+$(WEB)/index.html: platform/web/index.html
+	@mkdir -p $(dir $@)
+	sed -e 's/^[[:space:]]*//' -e '/^\/\*/,/\*\/$$/d' $< >$@
+
 $(WEB)/%: platform/web/%
 	@mkdir -p $(dir $@)
 	cp $< $@

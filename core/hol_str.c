@@ -4,12 +4,22 @@
 #include <stddef.h>
 
 /* English: the app's words before the table, byte for byte. */
-static const char *const hol__en[HOL_S_COUNT] = {
+/* The entries a build holds: the web's (HOL_STR_NO_PAGE) ends before the
+ * page's words (text.js carries them), so its arrays hold no NULLs for them. */
+#ifdef HOL_STR_NO_PAGE
+#define HOL__NSTR HOL_S_PAGE_LOADING
+#else
+#define HOL__NSTR HOL_S_COUNT
+#endif
+
+static const char *const hol__en[HOL__NSTR] = {
     [HOL_S_OBJ_FLAG] = "Find the flag",
     [HOL_S_OBJ_KEYS_FMT] = "Keys %d/%d",
     [HOL_S_OBJ_CHEST] = "Bring the keys to the chest",
     [HOL_S_OBJ_EXPLORE] = "Explore",
+#ifndef HOL_STR_NO_PAGE /* holonomy render's alone */
     [HOL_S_GUIDE_POLE] = "reach the guide pole",
+#endif
     [HOL_S_LESSON_1] = "1/4 Step onto the marked tile ahead",
     [HOL_S_LESSON_2] = "2/4 Walk round the marked tree to this cell",
     [HOL_S_LESSON_3] = "3/4 Use the map: reach the marker",
@@ -109,12 +119,14 @@ static const char *const hol__en[HOL_S_COUNT] = {
 
 /* German (du, as a class is spoken to). The controls keep the names
  * printed on them (ENTER, A, TRIGGER: core/hol_prompt.c). */
-static const char *const hol__de[HOL_S_COUNT] = {
+static const char *const hol__de[HOL__NSTR] = {
     [HOL_S_OBJ_FLAG] = "Finde die Fahne",
     [HOL_S_OBJ_KEYS_FMT] = "Schlüssel %d/%d",
     [HOL_S_OBJ_CHEST] = "Bring die Schlüssel zur Truhe",
     [HOL_S_OBJ_EXPLORE] = "Erkunde den Wald",
+#ifndef HOL_STR_NO_PAGE /* holonomy render's alone */
     [HOL_S_GUIDE_POLE] = "geh zum Leitpfosten",
+#endif
     [HOL_S_LESSON_1] = "1/4 Tritt auf die markierte Kachel vor dir",
     [HOL_S_LESSON_2] = "2/4 Um den markierten Baum in diese Zelle",
     [HOL_S_LESSON_3] = "3/4 Nutze die Karte: zur Markierung",
@@ -166,13 +178,12 @@ static const char *const hol__de[HOL_S_COUNT] = {
     [HOL_S_CAP_BEACON] = "[Ton: Signale piepen an den Zielen]",
     [HOL_S_PAUSE_UNFOCUSED] = "das Fenster ist nicht im Fokus",
     [HOL_S_PAUSE_HEADSET_OFF] = "die Brille ist abgesetzt",
-    [HOL_S_PAUSE_SYSTEM_MENU] = "ein Systemmenü liegt über dem Spiel",
+    [HOL_S_PAUSE_SYSTEM_MENU] = "ein Systemmenü ist offen",
     [HOL_S_PAUSE_PAD_GONE] = "der Controller ist weg",
     [HOL_S_PAUSE_MENU] = "das Menü ist offen",
     [HOL_S_FIT_FMT] = "Raum %d x %d Zellen zu %s m passt in deine %s x %s m Spielfläche",
-    [HOL_S_FIT_SMALL_FMT] = "Deine %s x %s m Spielfläche ist kleiner als der kleinste Raum (3 x 3 "
-                            "Zellen zu 0.5 m und %s m frei): gespielt werden 3 x 3 Zellen zu "
-                            "0.5 m, bleib in der Mitte",
+    [HOL_S_FIT_SMALL_FMT] = ("Deine %s x %s m Spielfläche ist zu klein für 3 x 3 Zellen zu "
+                             "0.5 m und %s m Rand: bleib in der Mitte"),
 #ifndef HOL_STR_NO_PAGE /* the web build: text.js carries them */
     [HOL_S_PAGE_LOADING] = "Lädt…",
     [HOL_S_PAGE_OK] = "OK",
@@ -214,12 +225,14 @@ static const char *const hol__de[HOL_S_COUNT] = {
 
 #ifndef HOL_STR_NO_NL /* a build without Dutch (the web's: Makefile WEB_LANGS) */
 /* Dutch (je, as a class is spoken to). */
-static const char *const hol__nl[HOL_S_COUNT] = {
+static const char *const hol__nl[HOL__NSTR] = {
     [HOL_S_OBJ_FLAG] = "Vind de vlag",
     [HOL_S_OBJ_KEYS_FMT] = "Sleutels %d/%d",
     [HOL_S_OBJ_CHEST] = "Breng de sleutels naar de kist",
     [HOL_S_OBJ_EXPLORE] = "Verken het bos",
+#ifndef HOL_STR_NO_PAGE /* holonomy render's alone */
     [HOL_S_GUIDE_POLE] = "loop naar de paal",
+#endif
     [HOL_S_LESSON_1] = "1/4 Stap op de gemarkeerde tegel voor je",
     [HOL_S_LESSON_2] = "2/4 Loop om de gemarkeerde boom naar deze cel",
     [HOL_S_LESSON_3] = "3/4 Gebruik de kaart: naar de marker",
@@ -328,7 +341,7 @@ const char *hol_str(int lang, hol_str_id id)
 {
     if (lang < 0 || lang >= HOL_LANG_COUNT || !hol__lang[lang])
         lang = HOL_LANG_EN; /* and a language this build leaves out */
-    if ((int)id < 0 || id >= HOL_S_COUNT)
+    if ((int)id < 0 || id >= HOL__NSTR)
         return "";
     const char *s = hol__lang[lang][id];
     return s ? s : ""; /* a missing entry (tests/test_str.c finds none) */
