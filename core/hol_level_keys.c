@@ -237,13 +237,10 @@ hol_err hol__key_sound(hol__lp *p, char **f, int nf)
 /* lang en|de|nl: the language of the level's texts (core/hol_str.h) */
 hol_err hol__key_lang(hol__lp *p, char **f, int nf)
 {
-    static const char *const codes[3] = {"en", "de", "nl"};
-    _Static_assert(HOL_LANG_COUNT == 3, "one code per language");
+    static const char *const codes[HOL_LANG_COUNT] = {"en", "de", "nl"};
     (void)nf;
-    int l;
-    hol_err e = hol__lv_one_of(p, f, codes, 3, "en, de or nl", &l);
-    if (!e)
-        p->L.lang = 1 + l;
+    hol_err e = hol__lv_one_of(p, f, codes, HOL_LANG_COUNT, "en, de or nl", &p->L.lang);
+    p->L.lang += !e; /* 1 + the language: 0 is the app's */
     return e;
 }
 
