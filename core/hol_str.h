@@ -1,6 +1,6 @@
 /* hol_str.h - the string table: every word the player sees (HUD, panel,
- * prompts, menus, end screens, tutorial, sound captions), one array per
- * language (issue 37).
+ * prompts, menus, end screens, tutorial, sound captions, the web page's
+ * own), one row an id with its text in every language (issue 37).
  *
  * Contract
  * - hol_str(lang, id) is the text of id in lang (HOL_LANG_*): a static,
