@@ -286,7 +286,7 @@ static void test_german(void **state)
     in.pressed = HOL_BTN_MENU;
     assert_int_equal(hol_app_step(app, &in), HOL_OK);
     now += 1.0 / 60;
-    assert_string_equal(v->hud.hint, "P: weiter, ENTER: neu starten, ESC: aufhören");
+    assert_string_equal(v->hud.hint, "P: weiter, ENTER: von vorn, ESC: aufhören");
     assert_int_equal(shot("game_menu_de", 1, img), 0);
     L = level(HOL_APP_FLAG);
     L.flag = tile("N");

@@ -14,6 +14,8 @@
 #include <cmocka.h>
 
 #include "../core/hol_face.h"
+#include "../core/hol_input.h"
+#include "../core/hol_prompt.h"
 #include "../core/hol_str.h"
 
 static void test_complete_and_drawn(void **state)
@@ -110,6 +112,41 @@ static void test_fits(void **state)
         }
 }
 
+/* The prompts as core/hol_app_view.c composes them ("BUTTON: WHAT, ..."),
+ * for every device and language: the pause menu's three pairs, the end
+ * screen's and a screen's two, each whole within the prompt's line
+ * (HOL_APP_HINT_MAX: a pair that does not fit would be left out). */
+static void test_prompts_fit(void **state)
+{
+    (void)state;
+    static const struct {
+        uint32_t btn, alt;
+        hol_str_id what;
+    } sets[4][3] = {{{HOL_BTN_MENU, 0, HOL_S_DO_RESUME},
+                     {HOL_BTN_CONFIRM, 0, HOL_S_DO_RESTART},
+                     {HOL_BTN_QUIT, HOL_BTN_BACK, HOL_S_DO_QUIT}},
+                    {{HOL_BTN_CONFIRM, 0, HOL_S_DO_NEXT_LEVEL}, {HOL_BTN_RESTART, 0, HOL_S_DO_AGAIN}},
+                    {{HOL_BTN_CONFIRM, 0, HOL_S_DO_FINISH}, {HOL_BTN_RESTART, 0, HOL_S_DO_AGAIN}},
+                    {{HOL_BTN_CONFIRM, 0, HOL_S_DO_BEGIN}, {HOL_BTN_QUIT, 0, HOL_S_DO_QUIT}}};
+    for (int l = 0; l < HOL_LANG_COUNT; l++)
+        for (uint32_t d = 1; d < HOL_DEVICE_COUNT; d++)
+            for (int s = 0; s < 4; s++) {
+                char buf[256] = "";
+                for (int i = 0; i < 3 && sets[s][i].btn; i++) {
+                    const char *b = hol_prompt_button(d, sets[s][i].btn);
+                    if (!b && sets[s][i].alt)
+                        b = hol_prompt_button(d, sets[s][i].alt);
+                    size_t n = strlen(buf);
+                    if (b)
+                        snprintf(buf + n, sizeof buf - n, "%s%s: %s", n ? ", " : "", b,
+                                 hol_str(l, sets[s][i].what));
+                }
+                if (strlen(buf) >= 60)
+                    fail_msg("%s: device %u: '%s' is over the prompt's 59 bytes", hol_lang_code(l),
+                             d, buf);
+            }
+}
+
 static void test_tags(void **state)
 {
     (void)state;
@@ -135,6 +172,7 @@ int main(void)
         cmocka_unit_test(test_complete_and_drawn),
         cmocka_unit_test(test_formats_match),
         cmocka_unit_test(test_fits),
+        cmocka_unit_test(test_prompts_fit),
         cmocka_unit_test(test_tags),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
