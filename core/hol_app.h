@@ -111,13 +111,13 @@ enum hol_app_minimap_place { HOL_MINIMAP_HUD = 0, HOL_MINIMAP_HAND = 1, HOL_MINI
 /* Seconds a headset's device shows which control opens the menu, from the
  * moment it is in use (hol_app_hud.hint: "Y: menu", "LEFT PINCH: menu"). */
 #define HOL_APP_MENU_HINT_S 10.0
-/* The tutorial's feedback line the first time the path cue shows. */
-#define HOL_APP_PATH_TEXT "Map line: the fewest steps to the marker"
-/* The tutorial's line (hol_app_hud.note) the first time the minimap's
- * rings show (lesson 2's two tiles of one cell, map.marks), beside the
- * lesson's feedback, as long as the rings. */
-#define HOL_APP_RINGS_TEXT "Rings on the map: the two tiles of this cell"
+/* The tutorial's feedback line the first time the path cue shows is
+ * core/hol_str.h's HOL_S_PATH; its line (hol_app_hud.note) the first time
+ * the minimap's rings show (lesson 2's two tiles of one cell, map.marks),
+ * beside the lesson's feedback, as long as the rings, is HOL_S_RINGS. */
 #define HOL_APP_HUD_LINES 6
+/* Seconds (input clock) a chime's caption stays (hol_app_hud.caption). */
+#define HOL_APP_CAPTION_S 3.0
 #define HOL_APP_MAX_MARKS 2
 /* Most room steps one app step reports (a frame's motion in sub-steps). */
 #define HOL_APP_MAX_STEP_EVENTS 16
@@ -264,6 +264,10 @@ typedef struct hol_app_level {
     int sound;                /* hol_app_sound; 0: all */
     int point;                /* hol_app_point_target: the question asked
                                  at the level's end; 0: none */
+    int lang;                 /* level line `lang en|de|nl`: 1 + hol_lang
+                                 (core/hol_str.h), the language of the
+                                 view's texts in this level whatever the
+                                 app's (desc.lang); 0: the app's */
     /* Screens (issue 26, session flow): "" none. instructions: shown when
      * the level is started (hol_app_start_level; not on a restart) until
      * confirm; the level (its clock, its attempt: events.level_started)
@@ -306,6 +310,11 @@ typedef struct hol_app_desc {
                                  first keys level's tour (60-140 ms then), not
                                  at create; 0 (a headset): both at create, so
                                  no level start pays. Same answers. */
+    int lang;                 /* hol_lang (core/hol_str.h): the language of
+                                 every text the view holds (HUD, prompts,
+                                 tutorial) unless the level's `lang` line
+                                 names one; 0: English. Logs, events and
+                                 recordings do not depend on it. */
     int lazy_world;           /* 1 (tools, headless and desktop runs): the
                                  world's memory (14 MB) comes from calloc
                                  and is not cleared at create, so only the
@@ -367,7 +376,7 @@ typedef struct hol_app_hud {
                                          shown); or "" */
     char address[HOL_TILE_ADDR_MAX];  /* the current tile */
     char feedback[HOL_APP_TEXT_MAX];  /* tutorial: the lesson just done, or "" */
-    char note[HOL_APP_TEXT_MAX];      /* tutorial: HOL_APP_RINGS_TEXT while the
+    char note[HOL_APP_TEXT_MAX];      /* tutorial: HOL_S_RINGS while the
                                          minimap's rings show the first time
                                          in the level (a line after the
                                          feedback), or "" */
@@ -398,6 +407,17 @@ typedef struct hol_app_hud {
      * shown in capitals. The hint (the prompt) is drawn on its own. */
     char lines[HOL_APP_HUD_LINES][HOL_APP_TEXT_MAX];
     int nlines;
+    /* The sound's caption (issue 37; W3C XR Accessibility: captions for
+     * sound), or "": with captions on (hol_app_set_captions: the platform
+     * plays sound) and the level's sound not off, the cue the sound plays
+     * now named in the language, the last line of `lines` (when one is
+     * free): a chime (hol_sound.h: the level begins, a key is collected,
+     * the chest opens, the flag is reached) for HOL_APP_CAPTION_S of input
+     * time from its step, else, while beacons sound (cue `sound`, the
+     * level in play, objectives left), the beacons' line. Footsteps (every
+     * room step, counted on the HUD) and the forest's ambience are not
+     * captioned. The same steps as core/hol_sound.h's shots (test_app). */
+    char caption[HOL_APP_TEXT_MAX];
 } hol_app_hud;
 
 /* The minimap model. */
@@ -645,5 +665,12 @@ const char *hol_app_end_word(const hol_app_view *v);
 const hol_app_events *hol_app_get_events(const hol_app *app);
 /* The world the view shows (for the renderer's content). */
 struct hol_world *hol_app_world(hol_app *app);
+/* Captions of the sound on (1) or off (0, the default): a platform that
+ * plays the app's sound turns them on (hol_app_hud.caption). */
+void hol_app_set_captions(hol_app *app, int on);
+/* The language of the view's texts from the next step on (hol_lang,
+ * core/hol_str.h; out of range: English), as desc.lang at create: a page
+ * that changes its language changes nothing else. */
+void hol_app_set_lang(hol_app *app, int lang);
 
 #endif

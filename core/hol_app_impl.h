@@ -22,7 +22,6 @@
 /* "Minimap fixed in this study" stays on the HUD this long (input clock,
  * seconds: it shows on a paused or finished level too). */
 #define HOL__FIXED_S 3.0
-#define HOL__FIXED_TEXT "Minimap fixed in this study"
 /* Tutorial feedback stays on the HUD this long (level clock, seconds). */
 #define HOL__FEEDBACK_S 6.0
 
@@ -110,9 +109,22 @@ struct hol_app {
      * and the next one to enter (route_k == level.nroute: done) */
     hol_tile route_tiles[HOL_APP_ROUTE_MAX];
     int route_k;
+    /* captions (hol_app_hud.caption): on, the chime's text until when,
+     * and the keys and state the last step ended with (as hol_sound's) */
+    int captions;
+    int cap_id;              /* hol_str_id of the chime, or -1 */
+    double cap_until;
+    int cap_keys, cap_state;
     uint8_t walk[HOL_NAV_WALK_MAX]; /* replan scratch */
     int nwalk;
 };
+
+/* The language of the view's texts (core/hol_str.h): the level's `lang`
+ * line, else the desc's (hol_app_set_lang). */
+static inline int hol__lang(const hol_app *app)
+{
+    return app->level.lang > 0 ? app->level.lang - 1 : app->d.lang;
+}
 
 /* hol_app_tutorial.c */
 int hol__next_stage(const hol_app *app, int k);

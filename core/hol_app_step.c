@@ -150,6 +150,7 @@ hol_err hol_app_create(const hol_app_desc *desc, hol_app **out_app)
     hol_app *app = (hol_app *)(void *)mem;
     memset(app, 0, sizeof *app);
     app->d = d;
+    app->cap_id = -1;
     uintptr_t w = ((uintptr_t)(mem + head) + 63) & ~(uintptr_t)63;
     app->world_mem = (void *)w;
     app->world_size = wsize;
@@ -202,6 +203,18 @@ const hol_app_events *hol_app_get_events(const hol_app *app)
 hol_world *hol_app_world(hol_app *app)
 {
     return app->world;
+}
+
+void hol_app_set_captions(hol_app *app, int on)
+{
+    if (app)
+        app->captions = on != 0;
+}
+
+void hol_app_set_lang(hol_app *app, int lang)
+{
+    if (app)
+        app->d.lang = lang;
 }
 
 /* ---- the game ------------------------------------------------------------ */

@@ -9,14 +9,7 @@
 #include <string.h>
 
 #include "hol_app_impl.h"
-
-/* What each lesson's end says (lesson 4's end is the level's end screen). */
-static const char *const hol__lesson_said[HOL_APP_TUTORIAL_STAGES] = {
-    "Well done: one step, one new tile",
-    "Same cell, another tile: that is holonomy",
-    "Found it: the map knows the way",
-    "Flag found: you can play",
-};
+#include "hol_str.h"
 
 /* The tile reached from room state r by steps given as turns relative to
  * the room's north (0 ahead, 1 left, ...), turning as one walks. */
@@ -240,7 +233,9 @@ void hol__tutorial_enter(hol_app *app, const hol_room *r)
     if (!passed)
         return;
     /* feedback: what was learnt, and for the loop both tiles of the cell */
-    snprintf(app->feedback, sizeof app->feedback, "%s", hol__lesson_said[app->stage]);
+    /* what the lesson's end says (lesson 4's end is the level's end screen) */
+    snprintf(app->feedback, sizeof app->feedback, "%s",
+             hol_str(hol__lang(app), (hol_str_id)(HOL_S_LESSON_1_DONE + app->stage)));
     app->feedback_until = app->level_t + HOL__FEEDBACK_S;
     app->nmarks = 0;
     app->rings_note = 0;

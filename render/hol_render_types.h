@@ -145,6 +145,9 @@ typedef struct hol_frame_desc {
      * objective/steps/tile/time lines composed from the fields above. */
     const char *hud_lines[HOL_RENDER_HUD_LINES];
     int nhud_lines;
+    /* The language of the lines composed from the fields (hol_lang,
+     * core/hol_str.h; 0: English); the app's lines come in its own. */
+    int lang;
     /* The prompt (what the buttons do now, hol_app_hud.hint): drawn under
      * the text in yellow; NULL or "": none. */
     const char *prompt;

@@ -43,6 +43,13 @@ diff -r "$T/l1" "$T/l2" >/dev/null && ok || bad "replay logs differ between runs
 for f in 000000 000003; do
     head -c 8 "$T/png/frame-$f.png" | od -An -c | grep -q 'P   N   G' && ok || bad "frame $f is not a PNG"
 done
+# --lang (issue 37): the frames' text in German, the logs byte for byte the same
+mkdir "$T/l2de" "$T/pngde"
+run "german" 0 "$H" replay "$T/opt.rec" --log "$T/l2de" --png-frames 0,3 --out-dir "$T/pngde" \
+    --size 64x48 --lang de
+diff -r "$T/l1" "$T/l2de" >/dev/null && ok || bad "replay --lang de: the logs differ"
+cmp -s "$T/png/frame-000003.png" "$T/pngde/frame-000003.png" && bad "--lang de: the same frame" || ok
+run "lang bad" 2 "$H" replay "$T/opt.rec" --lang xx && one_line "lang bad" "not en, de or nl"
 # a frame the recording never reaches: one line, exit 2, the others written
 run "frame beyond" 2 "$H" replay "$T/opt.rec" --png-frames 2,99999 --out-dir "$T/png2" \
     --size 64x48

@@ -23,6 +23,7 @@
 #include <cmocka.h>
 
 #include "../core/hol_app.h"
+#include "../core/hol_str.h"
 #include "../core/hol_tile.h"
 #include "../platform/osmesa/hol_osmesa.h"
 #include "../render/hol_app_frame.h"
@@ -262,6 +263,42 @@ static void test_level_end(void **state)
     assert_int_equal(shot("game_level_end", 1, img), 0);
 }
 
+/* Issue 37: the same screens in German (the app's language set, nothing
+ * else changed): the tutorial's first prompt, the pause menu and a level's
+ * end, each with umlauts on the HUD; every glyph is the face's own
+ * (tests/test_str.c), and the English goldens above stay as they were. */
+static void test_german(void **state)
+{
+    (void)state;
+    static uint8_t img[W * H * 4];
+    hol_app_set_lang(app, HOL_LANG_DE);
+    hol_app_level L = level(HOL_APP_TUTORIAL);
+    start(&L);
+    step(1, 0, 0, 0, 0);
+    const hol_app_view *v = hol_app_get_view(app);
+    assert_string_equal(v->hud.lines[0], "1/4 Tritt auf die markierte Kachel vor dir");
+    assert_int_equal(shot("game_tutorial_prompt_de", 1, img), 0);
+    hol_input in;
+    memset(&in, 0, sizeof in);
+    in.time_s = now;
+    in.flags = HOL_INPUT_FOCUSED;
+    in.device = HOL_DEVICE_KEYBOARD;
+    in.pressed = HOL_BTN_MENU;
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    now += 1.0 / 60;
+    assert_string_equal(v->hud.hint, "P: weiter, ENTER: von vorn, ESC: aufhören");
+    assert_int_equal(shot("game_menu_de", 1, img), 0);
+    L = level(HOL_APP_FLAG);
+    L.flag = tile("N");
+    start(&L);
+    step(1, 0, 0, 0, 0);
+    step(40, 0, 1, 0, 0); /* 0.93 m north: across z = 1 */
+    assert_int_equal(v->state, HOL_APP_DONE);
+    assert_string_equal(v->hud.hint, "ENTER: nächstes Level, R: nochmal");
+    assert_int_equal(shot("game_level_end_de", 1, img), 0);
+    hol_app_set_lang(app, HOL_LANG_EN);
+}
+
 /* Pixels of img that differ from other and are red like the flag's
  * cloth: red well over green and blue. */
 static int red_pixels(const uint8_t *img, const uint8_t *other)
@@ -371,7 +408,7 @@ static void test_tutorial_rings(void **state)
     }
     assert_int_equal(v->hud.stage, 2);
     assert_int_equal(v->map.nmarks, 2);
-    assert_string_equal(v->hud.note, HOL_APP_RINGS_TEXT);
+    assert_string_equal(v->hud.note, hol_str(HOL_LANG_EN, HOL_S_RINGS));
     assert_int_equal(shot("game_tutorial_rings", 1, img), 0);
 }
 
@@ -492,6 +529,7 @@ int main(int argc, char **argv)
         cmocka_unit_test(test_tutorial_rings),
         cmocka_unit_test(test_map_corner),
         cmocka_unit_test(test_hand_map_low),
+        cmocka_unit_test(test_german),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }

@@ -17,6 +17,7 @@
 
 #include <cmocka.h>
 
+#include "../core/hol_str.h"
 #include "../core/hol_app.h"
 #include "../core/hol_bearing.h"
 #include "../core/hol_nav.h"
@@ -198,7 +199,7 @@ static void test_one_idea_and_a_row_per_lesson(void **state)
     walk(app, loop, 4, &t, rows, &nrows);
     assert_int_equal(v->hud.stage, 2);
     assert_int_equal(v->hud.nlines, 2);
-    assert_string_equal(v->hud.lines[1], HOL_APP_RINGS_TEXT);
+    assert_string_equal(v->hud.lines[1], hol_str(HOL_LANG_EN, HOL_S_RINGS));
     assert_string_equal(v->hud.hint, "");
     t += 6.1;
     step(app, app_head(t, v->user.col, v->user.row, 0, HOL_DEVICE_KEYBOARD, 0));

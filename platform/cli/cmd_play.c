@@ -39,7 +39,7 @@ const char *const cli_play_usage =
     "                     [--frames N] [--input FILE] [--size WxH]\n"
     "                     [--no-gamepad | --gamepad-replay FILE] [--snap-turn DEG]\n"
     "                     [--stats] [--tiling 4,Q] [--room CxR] [--cell M]\n"
-    "                     [--mute | --volume V] [--track-hz N]\n"
+    "                     [--mute | --volume V] [--track-hz N] [--lang en|de|nl]\n"
     "\n"
     "Play in a desktop window (EGL on X11; also under Xvfb). LEVEL is a level\n"
     "file (SPEC section 5); --mode plays a level of that mode made from the seed\n"
@@ -107,6 +107,7 @@ const char *const cli_play_usage =
     "                  every second and at the end (CPU: the whole process,\n"
     "                  the software rasterizer's threads included)\n"
     PLAY_GEOMETRY_USAGE
+    CLI_LANG_USAGE
     "  --no-gamepad    do not use game controllers\n"
     "  --mute          no sound; --volume V: 0..1 (default 1) times the\n"
     "                  forest's and the cues' gain (OpenAL Soft, HRTF where\n"
@@ -135,6 +136,7 @@ typedef struct play_opts {
     int w, h, use_pad, append, snap_deg, stats, restart_participant, resume, mute;
     int track_hz; /* --track-hz; 0: not given (10) */
     int lesson;   /* --lesson N; 0: none */
+    int lang;     /* --lang (core/hol_str.h); 0: English */
     double volume;
     play_env env; /* --session, --meta */
     char participant_id[HOL_REC_ID_MAX]; /* --participant in its spelling */
@@ -216,6 +218,8 @@ static int play_value(const char *cmd, const char *a, const char *val, play_opts
         return play_track_value(cmd, val, &o->track_hz);
     } else if (!strcmp(a, "--lesson")) {
         return play_lesson_value(cmd, val, &o->lesson);
+    } else if (!strcmp(a, "--lang")) {
+        return cli_lang_value(cmd, val, &o->lang) ? 1 : 0;
     }
     return 0;
 }
@@ -223,7 +227,7 @@ static int play_value(const char *cmd, const char *a, const char *val, play_opts
 const char *const cli_play_valued[] = {"--mode",  "--seed",  "--log",  "--record",
                                           "--frames", "--input", "--size", "--gamepad-replay",
                                           "--participant", "--snap-turn", "--study",
-                                          "--volume", "--track-hz", "--lesson", PLAY_GEOMETRY_OPTIONS, PLAY_ENV_OPTIONS, NULL};
+                                          "--volume", "--track-hz", "--lesson", "--lang", PLAY_GEOMETRY_OPTIONS, PLAY_ENV_OPTIONS, NULL};
 
 /* The options that only store their value or set a flag. */
 static const cli_store play_store[] = {
@@ -302,6 +306,7 @@ static int play_prepare_files(play_ctx *c)
     if (!st)
         st = play_out_open(c->cmd, o->log_dir, o->append, o->rec, &c->out);
     c->out.track_hz = o->track_hz;
+    c->out.lang = o->lang;
     const cli_path out[] = {{"--record", o->rec}, {"--log", o->log_dir}};
     const cli_outs outs = {out, 2, o->log_dir};
     if (!st && o->study)

@@ -76,6 +76,8 @@ int hol_web_game_open(char *msg, size_t cap);
 /* 0 go on, 1 over, -1 failure (reported). */
 int hol_web_game_step(const hol_input *in);
 hol_app *hol_web_game_app(void);
+/* the page's language (hol_lang, core/hol_str.h: config "lang") */
+int hol_web_game_lang(void);
 void hol_web_game_finish(void);
 /* the session's metadata (id, participant), NULL before it opened */
 const struct hol_rec_meta *hol_web_game_meta(void);

@@ -15,6 +15,7 @@
 #include "../../core/hol_campaign.h"
 #include "../../core/hol_session.h"
 #include "../../core/hol_sha256.h"
+#include "../../core/hol_str.h"
 #include "../../core/hol_study.h"
 #include "../shell/hol_shell_prov.h"
 #include "hol_web.h"
@@ -24,6 +25,7 @@ extern void hol_web_js_config(const char *key, char *buf, int cap);
 extern void hol_web_js_event(const char *kind, const char *text);
 
 static hol_session *sess;
+static int lang; /* hol_lang: the page's (config "lang") */
 static hol_rec_meta meta; /* the session's (environment.csv) */
 static hol_level levels[HOL_SESSION_MAX_LEVELS];
 static char study_name[64]; /* a study's, or "" */
@@ -271,6 +273,11 @@ static int page_track_hz(char *msg, size_t cap)
     return hz;
 }
 
+int hol_web_game_lang(void)
+{
+    return lang;
+}
+
 int hol_web_game_open(char *msg, size_t cap)
 {
     int n = 0;
@@ -282,8 +289,12 @@ int hol_web_game_open(char *msg, size_t cap)
     char part[HOL_REC_ID_MAX + 8] = "";
     if (page_participant(part, msg, cap))
         return 1;
+    char tag[16];
+    hol_web_js_config("lang", tag, sizeof tag); /* page.js: ?lang=, else the browser's */
+    lang = hol_lang_parse(tag) < 0 ? HOL_LANG_EN : hol_lang_parse(tag);
     hol_session_desc d;
     memset(&d, 0, sizeof d);
+    d.app.lang = lang;
     d.levels = levels;
     d.nlevels = n;
     d.log = hol_web_sink();

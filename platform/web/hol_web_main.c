@@ -16,6 +16,7 @@
 
 #include "../../render/hol_app_frame.h"
 #include "../../render/hol_gl.h"
+#include "../../core/hol_str.h"
 #include "hol_web.h"
 
 hol_web hol_web_g;
@@ -275,18 +276,19 @@ static double boot_ms[4];
 static const char *pause_reason(const hol_input *in, const hol_app_view *v)
 {
     hol_web *w = &hol_web_g;
+    int l = hol_web_game_lang();
     if (!v->paused)
         return NULL;
     if (!(in->flags & HOL_INPUT_FOCUSED) || (in->flags & HOL_INPUT_HEADSET_OFF)) {
         if (!w->xr_active)
-            return "the window is not focused";
+            return hol_str(l, HOL_S_PAUSE_UNFOCUSED);
         return w->xf.visibility < 0.5f || (in->flags & HOL_INPUT_HEADSET_OFF)
-                   ? "the headset is off"
-                   : "a system menu is over the game";
+                   ? hol_str(l, HOL_S_PAUSE_HEADSET_OFF)
+                   : hol_str(l, HOL_S_PAUSE_SYSTEM_MENU);
     }
     if (in->flags & HOL_INPUT_DEVICE_LOST)
-        return "the game controller went away";
-    return "the menu is open";
+        return hol_str(l, HOL_S_PAUSE_PAD_GONE);
+    return hol_str(l, HOL_S_PAUSE_MENU);
 }
 
 /* The page's visibilitychange (XR): the next step tells its reason anew;

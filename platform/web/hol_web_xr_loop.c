@@ -302,9 +302,10 @@ EMSCRIPTEN_KEEPALIVE void hol_web_xr_fit(int n)
     }
     w->have_fit = 1;
     w->fit_t = w->last_t;
-    char line[200], offer[64];
+    char line[256], offer[64];
     hol_fit_text(&w->fit, -1, line, sizeof line);
     printf("web: %s\n", line);
+    hol_fit_say(&w->fit, -1, hol_web_game_lang(), line, sizeof line); /* the page's status */
     const hol_app_view *v = hol_app_get_view(hol_web_game_app());
     double m = v->cell_m > 0 ? v->cell_m : 1.0;
     int same = hol_room_cols(&v->user) == w->fit.cols && hol_room_rows(&v->user) == w->fit.rows &&
