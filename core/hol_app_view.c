@@ -276,7 +276,7 @@ static void hol__fill_lines(const hol_app *app, hol_app_hud *h)
     }
     if (v->state == HOL_APP_SCREEN) { /* the screen's text, whole */
         const char *text = app->screen == HOL_APP_SCREEN_CLOSING ? app->level.closing
-                           : app->screen == HOL_APP_SCREEN_READY ? HOL_APP_READY_TEXT
+                           : app->screen == HOL_APP_SCREEN_READY ? hol_str(lang, HOL_S_READY)
                                                                  : app->level.instructions;
         int n = hol_app_wrap(text, HOL_APP_SCREEN_COLS, h->lines, HOL_APP_HUD_LINES);
         h->nlines = n < HOL_APP_HUD_LINES ? n : HOL_APP_HUD_LINES;

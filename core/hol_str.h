@@ -67,6 +67,7 @@ typedef enum hol_str_id {
     HOL_S_DONE_FMT,       /* %d %d %ld %02ld: steps, best, minutes, seconds */
     HOL_S_DEVICE_LOST,
     HOL_S_OUTSIDE,
+    HOL_S_READY,          /* the ready screen (HOL_APP_SCREEN_READY) */
     /* prompts (hol_app_hud.hint; 59 bytes) */
     HOL_S_DEVICE_BACK,
     HOL_S_SMALL_AREA_FMT, /* %.12s: the room's size in metres, "3 x 3" */
