@@ -170,9 +170,10 @@ enum hol_app_minimap_place { HOL_MINIMAP_HUD = 0, HOL_MINIMAP_HAND = 1, HOL_MINI
 
 enum hol_app_screen {
     HOL_APP_SCREEN_NONE = 0,
-    HOL_APP_SCREEN_INSTRUCTIONS = 1, /* before the level: confirm shows the ready screen */
+    HOL_APP_SCREEN_INSTRUCTIONS = 1, /* before the level: confirm shows the ready screen
+                                        (not in a lesson: no clock to start) */
     HOL_APP_SCREEN_CLOSING = 2,      /* after the last level: confirm ends */
-    HOL_APP_SCREEN_READY = 3         /* HOL_APP_READY_TEXT, after the instructions
+    HOL_APP_SCREEN_READY = 3         /* HOL_S_READY's text, after the instructions
                                         and on a resume (hol_app_ready): confirm
                                         begins the level, and its clock */
 };

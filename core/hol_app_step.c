@@ -710,7 +710,9 @@ static void hol__screen_frame(hol_app *app, const hol_input *in, uint32_t presse
     } else if ((pressed & HOL_BTN_CONFIRM) && !v->paused) {
         if (app->screen == HOL_APP_SCREEN_CLOSING) {
             app->ev.next_level = 1;
-        } else if (app->screen == HOL_APP_SCREEN_INSTRUCTIONS && !app->d.flow_v4) {
+        } else if (app->screen == HOL_APP_SCREEN_INSTRUCTIONS && !app->d.flow_v4 &&
+                   !app->level.lesson) { /* a lesson has no clock to start (its walk line
+                                          * is its instructions) */
             app->screen = HOL_APP_SCREEN_READY;
         } else {
             app->screen = HOL_APP_SCREEN_NONE;
