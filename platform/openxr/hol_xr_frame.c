@@ -195,7 +195,7 @@ static int hol__draw_eye(hol__xr *x, int e, const hol_app_view *v, const hol_inp
     hol_frame_desc fd;
     hol_app_frame_desc(v, e, ey->w, ey->h, 0, &fd);
     hol_app_frame_panel(v, &fd); /* the HUD on a panel in the world */
-    if (x->quad_on) /* the panel is the quad layer's */
+    if (x->quad_on && !x->quad_covered) /* the panel is the quad layer's */
         fd.flags |= HOL_RENDER_PANEL_LAYER;
     for (int k = 0; k < 3; k++)
         fd.cam.eye[k] = eroom->pos[k];
@@ -265,6 +265,7 @@ static int hol__eyes(hol__xr *x, const hol_app_view *v, const hol_input *in,
             eyes[e][k] = eroom[e].pos[k] += shift[k];
     }
     double fade = hol_xr_fade_room(eyes, HOL__MARGIN, x->room_w, x->room_d);
+    hol__xr_quad_covered(x, v); /* scenery nearer than the panel: in the eyes */
     for (int e = 0; e < 2; e++)
         if (hol__draw_eye(x, e, v, in, &eroom[e], fade, &pv[e]))
             return 1;

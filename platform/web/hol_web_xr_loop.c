@@ -146,6 +146,7 @@ static struct {
     float out[10]; /* pos 3, quat 4, width, height, map */
     const hol_app_view *v;
     float fade;
+    int covered; /* the last frame's panel.covered */
 } quad;
 
 EMSCRIPTEN_KEEPALIVE void hol_web_xr_panel_quad(int on)
@@ -160,12 +161,14 @@ EMSCRIPTEN_KEEPALIVE float *hol_web_xr_panel_buffer(void)
 }
 
 /* The panel of the last step, in the reference space (out): 0 none this
- * frame (no panel, or the view faded out), 1 unchanged, 2 its content
- * changed (draw it). force: a new texture (the layer's needsRedraw). */
+ * frame (no panel, the view faded out, or scenery nearer than the panel
+ * can come: the eyes draw it, depth-tested, core/hol_panel.h), 1
+ * unchanged, 2 its content changed (draw it). force: a new texture (the
+ * layer's needsRedraw). */
 EMSCRIPTEN_KEEPALIVE int hol_web_xr_panel_place(int force)
 {
     const hol_app_view *v = quad.v;
-    if (!quad.on || !v || quad.fade >= 1)
+    if (!quad.on || !v || quad.fade >= 1 || v->panel.covered)
         return 0;
     hol_frame_desc fd;
     hol_app_frame_desc(v, 0, 16, 16, 0, &fd);
@@ -219,6 +222,12 @@ static void xr_render(const hol_app_view *v, const hol_input *in, int fb)
     double fade = hol_xr_fade_room(eyes, HOL__MARGIN, w->xr.room_w, w->xr.room_d);
     quad.v = v;
     quad.fade = (float)fade;
+    if (quad.on && v->panel.covered != quad.covered)
+        printf("web: xr frame %ld: %s\n", w->xr_frames,
+               v->panel.covered ? "panel in the scene (depth-tested): a hedge or trunk is "
+                                  "nearer than the panel can come, and the quad layer has no depth"
+                                : "panel as the quad layer again");
+    quad.covered = v->panel.covered;
     glBindFramebuffer(GL_FRAMEBUFFER, (GLuint)fb);
     int checking = w->check_frame == w->xr_frames;
     for (int e = 0; e < n; e++) {
@@ -229,7 +238,7 @@ static void xr_render(const hol_app_view *v, const hol_input *in, int fb)
         hol_app_frame_desc(v, n == 2 ? e : -1, cam[e].width, cam[e].height, 0, &fd);
         fd.overlay = hol_web_overlay();
         hol_app_frame_panel(v, &fd); /* the HUD on a panel in the world */
-        if (quad.on) /* the quad layer's */
+        if (quad.on && !v->panel.covered) /* the quad layer's; else depth-tested here */
             fd.flags |= HOL_RENDER_PANEL_LAYER;
         fd.cam = cam[e];
         fd.vp_x = (int)vw->vp[0];

@@ -738,7 +738,7 @@ await check('haptics on the web: a controller into the hedge gets one short puls
 // not the image before it. A static layer (isStatic: true) may be drawn
 // only while needsRedraw is set: there getSubImage throws at each change
 // after the first, and the panel froze.
-await check('the world panel as a WebXR quad layer (iwer with the layers polyfill): >= 20 content changes (steps, menu, end screen), each drawn into the layer\'s texture (read back: the panel\'s current image), 0 exceptions; transparent while the view is faded out (out of the room), the panel again back in', async () => {
+await check('the world panel as a WebXR quad layer (iwer with the layers polyfill): >= 20 content changes (steps, menu, end screen), each drawn into the layer\'s texture (read back: the panel\'s current image), 0 exceptions; transparent while the view is faded out (out of the room), the panel again back in; transparent in front of a trunk nearer than the panel can come (the panel in the eyes, depth-tested), the quad again back in the middle', async () => {
   // a level of 25 s: its end screen ("Time up") is the last change
   fs.writeFileSync(path.join(testDir, 'quad.lvl'), 'mode explore\nseed 2\ntime-limit 25\n');
   const p = await openPage('?level=/test/quad.lvl', { iwer: true, layers: true });
@@ -862,6 +862,28 @@ await check('the world panel as a WebXR quad layer (iwer with the layers polyfil
     const back = await p.page.evaluate(() => window.__quad.now());
     console.log(`# out of the room: the quad's largest alpha ${alpha}; back in, the panel's image: ${back}`);
     assert(alpha === 0 && back, `out of the room: alpha ${alpha}; back in, the panel: ${back}`);
+    // a trunk nearer than the panel can come (issue 36): 0.2 m south of the
+    // trunk at the middle cell's north-west corner, looking north, the
+    // panel stays at 0.5 m with bark 0.08 m away; the quad (no depth) is
+    // transparent and the eyes draw the panel, depth-tested (said once);
+    // back at the middle, the quad again
+    const alphaNow = () => p.page.evaluate(() => {
+      const px = window.__quad.read(window.__quad.tex);
+      let a = 0;
+      for (let i = 3; i < px.length; i += 4) a = Math.max(a, px[i]);
+      return a;
+    });
+    await p.page.evaluate(() => xrDevice.position.set(-0.45, 1.6, -0.3));
+    await frames(40); // the panel's re-centring eases in
+    const tAlpha = await alphaNow();
+    const said = p.log.filter((l) => /^web: xr frame \d+: panel in the scene \(depth-tested\)/.test(l)).length;
+    await p.page.evaluate(() => xrDevice.position.set(0, 1.6, 0));
+    await frames(40);
+    const tBack = await p.page.evaluate(() => window.__quad.now());
+    const again = p.log.some((l) => /^web: xr frame \d+: panel as the quad layer again/.test(l));
+    console.log(`# behind a trunk: the quad's largest alpha ${tAlpha}, said ${said}; back: the panel's image ${tBack}, said ${again}`);
+    assert(tAlpha === 0 && said === 1 && tBack && again,
+      `behind a trunk: alpha ${tAlpha}, said ${said}; back: ${tBack}, said ${again}`);
     assert(!p.errors.length, 'errors: ' + p.errors.join('; '));
   } finally {
     await p.ctx.close();
