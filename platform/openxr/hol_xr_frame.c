@@ -265,6 +265,12 @@ static int hol__eyes(hol__xr *x, const hol_app_view *v, const hol_input *in,
             eyes[e][k] = eroom[e].pos[k] += shift[k];
     }
     double fade = hol_xr_fade_room(eyes, HOL__MARGIN, x->room_w, x->room_d);
+    if (hol_xr_outside_eyes(v, in, eyes)) { /* outside: from the room's edge, dimmed */
+        for (int e = 0; e < 2; e++)
+            for (int k = 0; k < 3; k++)
+                eroom[e].pos[k] = (float)eyes[e][k];
+        fade = 0;
+    }
     hol__xr_quad_covered(x, v); /* scenery nearer than the panel: in the eyes */
     for (int e = 0; e < 2; e++)
         if (hol__draw_eye(x, e, v, in, &eroom[e], fade, &pv[e]))

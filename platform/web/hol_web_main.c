@@ -179,7 +179,11 @@ static void poll_gamepad(hol_web_pancake *p)
  * level, 7 the session is over, 8 failed, 9 head x, 10 head z, 11 cell
  * column, 12 cell row, 13 the level clock, 14 yaw, 15 the device the
  * prompts name (HOL_DEVICE_*), 16 the looping sound sources playing
- * (0 before the first gesture, with ?sound=0, or without WebAudio). */
+ * (0 before the first gesture, with ?sound=0, or without WebAudio), 17
+ * the head outside the room (hol_app_view.outside.on), 18 the floor
+ * arrow's yaw, 19 and 20 the room's columns and rows, 21 its cell (m),
+ * 22 the next room step of the walk to the objective (hol_app_walk:
+ * 'N', 'E', 'S', 'W' as a number; 0 none). */
 EMSCRIPTEN_KEEPALIVE double hol_web_state(int what)
 {
     hol_web *w = &hol_web_g;
@@ -207,6 +211,15 @@ EMSCRIPTEN_KEEPALIVE double hol_web_state(int what)
     case 13: return v->hud.elapsed_s;
     case 14: return v->yaw_deg;
     case 15: return v->hud.device;
+    case 17: return v->outside.on;
+    case 18: return v->outside.arrow_yaw_deg;
+    case 19: return hol_room_cols(&v->user);
+    case 20: return hol_room_rows(&v->user);
+    case 21: return v->cell_m;
+    case 22: {
+        uint8_t walk[1];
+        return hol_app_walk(hol_web_game_app(), walk, 1) > 0 ? hol_dir_to_char(walk[0]) : 0;
+    }
     default: return -1;
     }
 }

@@ -220,6 +220,11 @@ static void xr_render(const hol_app_view *v, const hol_input *in, int fb)
         memcpy(eyes[e], cam[e].eye, sizeof eyes[e]);
     }
     double fade = hol_xr_fade_room(eyes, HOL__MARGIN, w->xr.room_w, w->xr.room_d);
+    if (hol_xr_outside_eyes(v, in, eyes)) { /* outside: from the room's edge, dimmed */
+        for (int e = 0; e < 2; e++)
+            memcpy(cam[e].eye, eyes[e], sizeof eyes[e]);
+        fade = 0;
+    }
     quad.v = v;
     quad.fade = (float)fade;
     if (quad.on && v->panel.covered != quad.covered)
@@ -286,10 +291,12 @@ static void xr_render(const hol_app_view *v, const hol_input *in, int fb)
 
 /* The bounded-floor polygon (n points x, z in fit_xz; the glue's boundsGeometry, at
  * the session's start and when the space is reset): the room and cell
- * that fit it (core/hol_fit.h), told on the console, to the page (which
- * offers it as a link: the session in play keeps its room, as the
- * headset does after a new play area) and on the HUD for 12 s. The page's
- * ?room= or ?cell= win: the fit is then only told. */
+ * that fit it (core/hol_fit.h), told on the console, to the page and on
+ * the panel for 12 s, and played at once (fit on entry:
+ * hol_web_game_refit, a new session in the fitted room while the first
+ * level is in play and no study runs); else offered as a link (the page
+ * again with it). The page's ?room= or ?cell= win: the fit is then only
+ * told. */
 static float fit_xz[2 * HOL_FIT_MAX_POINTS]; /* the glue writes the polygon here */
 
 EMSCRIPTEN_KEEPALIVE float *hol_web_xr_fit_buffer(void)
@@ -319,7 +326,24 @@ EMSCRIPTEN_KEEPALIVE void hol_web_xr_fit(int n)
     snprintf(offer, sizeof offer, "room=%dx%d&cell=%s", w->fit.cols, w->fit.rows,
              hol_level_format_cell(w->fit.cell_m, cm));
     hol_web_js_event("fit", line);
-    if (!w->geo_named && !same && !w->fit.too_small)
+    if (same || w->fit.too_small)
+        return;
+    /* fit on entry: the room fitted at once where the page allows it, else
+     * offered as a link (the page again with it) */
+    char msg[256];
+    char room[16];
+    snprintf(room, sizeof room, "%dx%d", w->fit.cols, w->fit.rows);
+    int r = hol_web_game_refit(room, cm, msg, sizeof msg);
+    if (r > 0) {
+        hol_render_set_world(w->rnd, hol_app_world(hol_web_game_app()));
+        hol_render_invalidate(w->rnd);
+        quad.v = NULL; /* the old session's view: gone */
+        printf("web: the room fitted to the play area (%dx%d of %s m): a new session plays it, "
+               "the attempt in play ended aborted\n", w->fit.cols, w->fit.rows, cm);
+    } else if (r < 0) {
+        printf("web: the fitted room could not be played: %s\n", msg);
+    }
+    if (r <= 0 && !w->geo_named)
         hol_web_js_event("fit-offer", offer);
 }
 

@@ -614,7 +614,7 @@ await check('a failed Enter VR: the status says why while the pancake game plays
   }
 });
 
-await check('at 320 px wide the Logs overlay (shown when the session is over) covers no button of the bar (Play again)', async () => {
+await check('at every width from 280 to 1280 px, with and without the touch buttons, the Logs overlay (shown when the session is over) covers no button of the bar (Play again)', async () => {
   const p = await openPage('?mode=explore&seed=2');
   try {
     await p.page.setViewport({ width: 320, height: 480 });
@@ -622,22 +622,31 @@ await check('at 320 px wide the Logs overlay (shown when the session is over) co
     await p.page.keyboard.press('KeyQ');
     await p.until(async () => /^Session over/.test(await statusOf(p)), 'the session over');
     await p.until(() => p.page.evaluate(() => !document.getElementById('logs').hidden), 'the logs shown');
-    await sleep(300); /* the bar's reflow */
-    const r = await p.page.evaluate(() => {
-      const box = (e) => { const b = e.getBoundingClientRect(); return [b.left, b.top, b.right, b.bottom]; };
-      const logs = box(document.getElementById('logs'));
-      const under = [];
-      for (const e of document.querySelectorAll('#bar button, #bar label, #bar a')) {
-        if (!e.offsetParent && getComputedStyle(e).position !== 'fixed') continue; /* hidden */
-        const b = box(e);
-        if (b[2] > logs[0] && b[0] < logs[2] && b[3] > logs[1] && b[1] < logs[3])
-          under.push((e.id || e.textContent.trim()) + ' ' + b.map(Math.round).join(','));
+    const covered = [];
+    for (const touch of [false, true]) {
+      await p.page.evaluate((t) => document.body.classList.toggle('touch', t), touch);
+      for (const [w, h] of [[280, 420], [320, 480], [360, 640], [414, 736], [600, 400], [768, 1024], [1024, 600], [1280, 720]]) {
+        await p.page.setViewport({ width: w, height: h });
+        await sleep(200); /* the bar's reflow */
+        const r = await p.page.evaluate(() => {
+          const box = (e) => { const b = e.getBoundingClientRect(); return [b.left, b.top, b.right, b.bottom]; };
+          const logs = box(document.getElementById('logs'));
+          const under = [];
+          for (const e of document.querySelectorAll('#bar button, #bar label, #bar a')) {
+            if (!e.offsetParent && getComputedStyle(e).position !== 'fixed') continue; /* hidden */
+            const b = box(e);
+            if (b[2] > logs[0] && b[0] < logs[2] && b[3] > logs[1] && b[1] < logs[3])
+              under.push((e.id || e.textContent.trim()) + ' ' + b.map(Math.round).join(','));
+          }
+          return { logs: logs.map(Math.round), under, again: !document.getElementById('again').hidden };
+        });
+        if (w === 320 && !touch) await p.page.screenshot({ path: path.join(OUT, 'page-320-logs.png') });
+        if (!r.again || r.under.length)
+          covered.push(`${w}x${h}${touch ? ' touch' : ''}: logs ${r.logs.join(',')} over ${r.under.join('; ') || '(Play again hidden)'}`);
       }
-      return { logs: logs.map(Math.round), under, again: !document.getElementById('again').hidden };
-    });
-    await p.page.screenshot({ path: path.join(OUT, 'page-320-logs.png') });
-    console.log('# ' + JSON.stringify(r));
-    assert(r.again && !r.under.length, 'under the Logs overlay ' + r.logs.join(',') + ': ' + r.under.join('; '));
+    }
+    console.log('# ' + (covered.length ? covered.join(' | ') : '16 sizes: no button under the overlay'));
+    assert(!covered.length, covered.join(' | '));
     assert(!p.errors.length, 'errors: ' + p.errors.join('; '));
   } finally {
     await p.ctx.close();
