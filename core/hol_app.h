@@ -404,14 +404,16 @@ typedef struct hol_app_object {
  * room's edge (the view's head and eyes, which the motion keeps
  * HOL_MOTION's margin inside the hedges), dimmed, the panel over it
  * (readable), and an arrow on the floor pointing to the nearest cell. */
-#define HOL_APP_ARROW_AHEAD_M 1.2 /* the arrow's centre ahead of the head, on the floor */
+#define HOL_APP_ARROW_AHEAD_M 1.8 /* the arrow's centre ahead of the head, on the floor
+                                    (40 degrees below eye level) */
 typedef struct hol_app_outside {
     int on;               /* the tracked head is outside the room */
     double dist_m;        /* its floor distance beyond the hedges */
     int col, row;         /* the nearest cell (the view's head stands in it) */
     double arrow[3];      /* the arrow's centre on the floor (y 0), room
                              coordinates: HOL_APP_ARROW_AHEAD_M ahead of the
-                             view's head along its yaw, kept in the room */
+                             view's head along its yaw (in view, drawn over
+                             all, even beyond a hedge) */
     double arrow_yaw_deg; /* where it points: from the tracked head to the
                              nearest cell's centre (SPEC 1's yaw: 0 north,
                              towards -z; positive turns west) */

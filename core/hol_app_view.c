@@ -409,8 +409,8 @@ static void hol__fill_outside(hol_app *app, const hol_input *in)
         double cx = (o->col + 0.5) * m, cz = (o->row + 0.5) * m, y = v->yaw_deg * HOL__PI / 180;
         double ax = v->head[0] - HOL_APP_ARROW_AHEAD_M * hol_sin(y);
         double az = v->head[2] - HOL_APP_ARROW_AHEAD_M * hol_cos(y);
-        o->arrow[0] = ax < 0.2 ? 0.2 : ax > w - 0.2 ? w - 0.2 : ax;
-        o->arrow[2] = az < 0.2 ? 0.2 : az > d - 0.2 ? d - 0.2 : az;
+        o->arrow[0] = ax; /* in view wherever it lies: drawn over all */
+        o->arrow[2] = az;
         /* forward at yaw y is (-sin y, 0, -cos y) */
         o->arrow_yaw_deg = hol_atan2(-(cx - h[0]), -(cz - h[2])) * 180 / HOL__PI;
     }

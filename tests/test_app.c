@@ -668,10 +668,10 @@ static void test_steps_only_worn(void **state)
     }
 }
 
-/* Outside the room (issue 36): a tracked head 0.4 m beyond the north
+/* Outside the room (issue 36): a tracked head 0.5 m beyond the north
  * hedge, looking north (away), of the middle column: the view says so
- * (outside.on, 0.4 m, the nearest cell the middle north one, the view's
- * head kept inside the hedges), the arrow on the floor in the room points
+ * (outside.on, 0.5 m, the nearest cell the middle north one, the view's
+ * head kept inside the hedges), the arrow on the floor ahead points
  * from the head to that cell's centre (south, yaw 180); the `outside`
  * event once with the distance, `inside` once back in with the seconds
  * out. A record without HOL_INPUT_WAY_BACK (made before it) logs none. */
@@ -702,7 +702,8 @@ static void test_outside_the_room(void **state)
         assert_int_equal(v->outside.col, 1);
         assert_int_equal(v->outside.row, 0);
         assert_true(v->head[2] >= 0.1); /* the view's head: inside the hedges */
-        assert_true(v->outside.arrow[2] >= 0.2 - 1e-9 && v->outside.arrow[1] == 0);
+        assert_true(fabs(v->outside.arrow[2] - (v->head[2] - HOL_APP_ARROW_AHEAD_M)) < 1e-9 &&
+                    v->outside.arrow[1] == 0); /* ahead, north */
         assert_true(fabs(fabs(v->outside.arrow_yaw_deg) - 180) < 1e-6);
         /* turned east (yaw -90) 0.5 m west of the column: the arrow points
          * south-east to (1.5, 0.5) */
@@ -711,7 +712,7 @@ static void test_outside_the_room(void **state)
         assert_int_equal(hol_app_step(app, &in), HOL_OK);
         double want = atan2(-(1.5 - 1.0), -(0.5 + 0.5)) * 180 / M_PI;
         assert_true(fabs(v->outside.arrow_yaw_deg - want) < 1e-6);
-        assert_true(v->outside.arrow[0] > v->head[0] + 1.0); /* ahead, east */
+        assert_true(fabs(v->outside.arrow[0] - v->head[0] - HOL_APP_ARROW_AHEAD_M) < 1e-9); /* east */
         assert_false(ev->outside || ev->inside);
         t += 0.05;
         /* back in after 1 s out */

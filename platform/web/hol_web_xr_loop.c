@@ -204,6 +204,14 @@ EMSCRIPTEN_KEEPALIVE int hol_web_xr_panel_draw(int fb, int w, int h)
     return r;
 }
 
+/* Line i of the panel as the last XR frame drew it (the fit's note
+ * included), "" past its last: for tests. */
+EMSCRIPTEN_KEEPALIVE const char *hol_web_xr_panel_line(int i)
+{
+    const hol_app_view *v = quad.v;
+    return v && i >= 0 && i < v->hud.nlines ? v->hud.lines[i] : "";
+}
+
 EMSCRIPTEN_KEEPALIVE long hol_web_xr_panel_redraws(void)
 {
     return quad.cache.redraws;
