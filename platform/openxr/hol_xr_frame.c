@@ -221,7 +221,7 @@ static int hol__draw_eye(hol__xr *x, int e, const hol_app_view *v, const hol_inp
         fd.fade = 1; /* never a stale image */
         hol_render_frame(x->rnd, &fd, &rs);
     }
-    x->faded += fd.fade > 0 && e == 0;
+    x->faded += (fd.fade > 0 || fd.outside) && e == 0; /* faded, or dimmed outside */
     if (fade == 0) { /* the figures of a full view */
         x->draws[e] = rs.draw_calls;
         x->tris[e] = rs.triangles;
