@@ -158,11 +158,9 @@ static int page_geometry(int n, char *msg, size_t cap)
             return 1;
         }
     }
-    if (fit_room[0])
-        printf("web: geometry fitted to the play area: tiling %s, room %s, cell %s\n",
-               t[0] ? t : "-", r, c);
-    else if (q || cols || cell > 0)
-        printf("web: geometry from the page: tiling %s, room %s, cell %s\n", t[0] ? t : "-",
+    if (fit_room[0] || q || cols || cell > 0)
+        printf("web: geometry %s: tiling %s, room %s, cell %s\n",
+               fit_room[0] ? "fitted to the play area" : "from the page", t[0] ? t : "-",
                r[0] ? r : "-", c[0] ? c : "-");
     return 0;
 }

@@ -236,10 +236,9 @@ static void xr_render(const hol_app_view *v, const hol_input *in, int fb)
     quad.v = v;
     quad.fade = (float)fade;
     if (quad.on && v->panel.covered != quad.covered)
-        printf("web: xr frame %ld: %s\n", w->xr_frames,
-               v->panel.covered ? "panel in the scene (depth-tested): a hedge or trunk is "
-                                  "nearer than the panel can come, and the quad layer has no depth"
-                                : "panel as the quad layer again");
+        printf("web: xr frame %ld: panel %s\n", w->xr_frames,
+               v->panel.covered ? "in the scene (depth-tested): scenery too near for the quad"
+                                : "as the quad layer again");
     quad.covered = v->panel.covered;
     glBindFramebuffer(GL_FRAMEBUFFER, (GLuint)fb);
     int checking = w->check_frame == w->xr_frames;
@@ -346,10 +345,10 @@ EMSCRIPTEN_KEEPALIVE void hol_web_xr_fit(int n)
         hol_render_set_world(w->rnd, hol_app_world(hol_web_game_app()));
         hol_render_invalidate(w->rnd);
         quad.v = NULL; /* the old session's view: gone */
-        printf("web: the room fitted to the play area (%dx%d of %s m): a new session plays it, "
-               "the attempt in play ended aborted\n", w->fit.cols, w->fit.rows, cm);
+        printf("web: the room fitted to the play area (%s of %s m): a new session plays it\n",
+               room, cm);
     } else if (r < 0) {
-        printf("web: the fitted room could not be played: %s\n", msg);
+        printf("web: %s\n", msg);
     }
     if (r <= 0 && !w->geo_named)
         hol_web_js_event("fit-offer", offer);
