@@ -91,7 +91,13 @@
 #define HOL_INPUT_POS_EMULATED (1u << 10) /* the head's position is not
                                              tracked (emulated, or lost):
                                              its orientation is */
-#define HOL_INPUT_FLAGS_ALL    0x7ffu
+#define HOL_INPUT_WAY_BACK     (1u << 11) /* the platform shows the way back
+                                             in when the head is outside
+                                             the room (hol_app_view.outside):
+                                             the step logs `outside` and
+                                             `inside` events (recordings
+                                             made before it have none) */
+#define HOL_INPUT_FLAGS_ALL    0xfffu
 
 /* buttons (held) */
 #define HOL_BTN_CONFIRM  (1u << 0) /* confirm / next level */

@@ -93,9 +93,9 @@ static void hol__clear_colour(hol_render *r, float red, float green, float blue)
 
 void hol__fade_rgb(const hol_frame_desc *f, uint8_t out[3])
 {
-    static const uint8_t def[3] = HOL_RENDER_FADE_RGB;
+    static const uint8_t def[3] = HOL_RENDER_FADE_RGB, dim[3] = HOL_RENDER_OUTSIDE_RGB;
     int set = f->fade_rgb[0] || f->fade_rgb[1] || f->fade_rgb[2];
-    memcpy(out, set ? f->fade_rgb : def, 3);
+    memcpy(out, f->outside ? dim : set ? f->fade_rgb : def, 3);
 }
 
 /* The frame's rectangle: viewport, and the scissor its clear keeps to. */
@@ -337,13 +337,17 @@ static void hol__set_pass_as(hol_render *r, const hol_frame_desc *f, int pass, c
          * 0.5 m (core/hol_panel.h); a trunk nearer than that covers it as
          * it would cover a real sign, never the other way round. */
         hol__set_overlay(r, vp, ids ? HOL__MODE_ID : HOL__MODE_FLAT);
-        r->gl.Enable(GL_DEPTH_TEST);
-        r->gl.DepthFunc(GL_LEQUAL);
+        if (!f->outside) { /* outside the room: over all, readable */
+            r->gl.Enable(GL_DEPTH_TEST);
+            r->gl.DepthFunc(GL_LEQUAL);
+        }
         break;
     case HOL__PASS_FADE:
         hol__set_overlay(r, NULL, HOL__MODE_FLAT);
         r->gl.Enable(GL_BLEND);
-        r->gl.BlendColor(0, 0, 0, (float)f->fade);
+        r->gl.BlendColor(0, 0, 0, (float)(f->outside && f->fade < HOL_RENDER_OUTSIDE_DIM
+                                              ? HOL_RENDER_OUTSIDE_DIM
+                                              : f->fade));
         r->gl.BlendFunc(GL_CONSTANT_ALPHA, GL_ONE_MINUS_CONSTANT_ALPHA);
         break;
     default: /* the HUD */

@@ -183,6 +183,36 @@ static hol_err hol__queue_fade(hol_render *r, const hol_frame_desc *f)
     return HOL_OK;
 }
 
+/* Outside the room: a flat arrow on the floor (hol_frame_desc.outside),
+ * in the panel's pass (over all): a shaft and a head, in room metres. */
+static hol_err hol__queue_floor_arrow(hol_render *r, const hol_frame_desc *f)
+{
+    static const uint8_t rgb[3] = HOL_RENDER_ARROW_RGB;
+    /* along the arrow (a) and across it (c), from its centre */
+    static const float pts[7][2] = {{-0.5f, -0.09f}, {0.1f, -0.09f}, {0.1f, -0.25f},
+                                    {0.5f, 0},       {0.1f, 0.25f},  {0.1f, 0.09f},
+                                    {-0.5f, 0.09f}};
+    static const uint32_t tri[9] = {0, 1, 5, 0, 5, 6, 2, 3, 4};
+    int64_t b = hol_mesh_reserve(&r->dyn, 7, 9);
+    if (b < 0)
+        return HOL_ENOMEM;
+    uint32_t i0 = r->dyn.ni;
+    double y = f->outside_yaw_deg * 3.14159265358979323846 / 180, len = HOL_RENDER_ARROW_M;
+    double ax = -sin(y), az = -cos(y), cx = -az, cz = ax; /* forward, right */
+    for (int i = 0; i < 7; i++) {
+        hol_vertex *vx = &r->dyn.v[r->dyn.nv++];
+        memset(vx, 0, sizeof *vx);
+        vx->pos[0] = (float)(f->outside_arrow[0] + len * (pts[i][0] * ax + pts[i][1] * cx));
+        vx->pos[1] = (float)(f->outside_arrow[1] + 0.02);
+        vx->pos[2] = (float)(f->outside_arrow[2] + len * (pts[i][0] * az + pts[i][1] * cz));
+        memcpy(vx->rgba, rgb, 3); /* alpha 0: opaque, no glyph (HOL_MESH_GLYPH) */
+    }
+    for (int i = 0; i < 9; i++)
+        r->dyn.idx[r->dyn.ni++] = (uint32_t)b + tri[i];
+    hol__queue_push_dyn(r, HOL__PASS_PANEL, i0, 0, NULL);
+    return HOL_OK;
+}
+
 /* What the resident minimap is a function of: the user's state, the
  * objectives, the path, the marks, where it is (hand or HUD) and the HUD's
  * size. */
@@ -331,7 +361,10 @@ hol_err hol__build(hol_render *r, const hol_frame_desc *f)
         return err;
     if ((err = hol__queue_tiles(r, f, bare, m)))
         return err;
-    if (f->fade > 0 && !(f->flags & HOL_RENDER_IDS) && (err = hol__queue_fade(r, f)))
+    int ids = (f->flags & HOL_RENDER_IDS) != 0;
+    if ((f->fade > 0 || f->outside) && !ids && (err = hol__queue_fade(r, f)))
+        return err;
+    if (f->outside && !ids && (err = hol__queue_floor_arrow(r, f)))
         return err;
     if (!(f->flags & HOL_RENDER_NO_HUD)) {
         if (f->flags & (HOL_RENDER_MINIMAP | HOL_RENDER_PANEL))
