@@ -25,6 +25,8 @@ out vec3 v_loc;
 uniform vec4 u_tl[4];
 out vec4 v_L;
 out float v_Le;
+// the vertex's normal in the tile's own frame (the lights' Lambert term)
+out vec3 v_nl;
 // the tile's trunk shadow pairs (hol__item_shadows): three half-planes
 // each, affine
 #if HOL_SHD
@@ -48,6 +50,7 @@ void main() {
 #if HOL_LIT == 1
   v_L = u_tl[2] - v_loc.x * u_tl[0] - v_loc.z * u_tl[1];
   v_Le = u_tl[3].z - v_loc.x * u_tl[3].x - v_loc.z * u_tl[3].y;
+  v_nl = a_nrm;
 #if HOL_SHD
   v_S1 = HOL_SV((v_loc.x * u_ts[0] + v_loc.z * u_ts[1] + u_ts[2]) HOL_SW);
   v_S2 = HOL_SV((v_loc.x * u_ts[3] + v_loc.z * u_ts[4] + u_ts[5]) HOL_SW);
