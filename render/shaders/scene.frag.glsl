@@ -35,7 +35,7 @@ uniform sampler2D u_atlas;
 // lighting (hol_light.h): 1 a tile with its hyperbolic frame; 2 the
 // room's own meshes (no tile: ambient, fog by room distance)
 in vec3 v_loc;
-uniform int u_light;
+uniform highp int u_light;
 uniform int u_lonly;
 uniform float u_mpu2;
 uniform float u_eyeh;
@@ -166,30 +166,20 @@ float hol_lights(vec4 L, float g2, float o, float dh, float nup, vec2 nh) {
 #endif
 #endif
 #if HOL_LIT == 2
-uniform float u_klein;
 // The room's meshes (trees, hedges: render/hol_render_gpu.c's
-// hol__room_lights): a point's Klein point k in the frame of each
-// lantern's cell (its centre the light's foot), so cosh x = g = 1 /
-// sqrt(1 - |k|^2), c^2 = 2 g - 2 (flat, u_light 3: c^2 = |k|^2, x = c);
-// the same falloff and Lambert term as the tiles, the floor direction to
-// the light -k / |k|.
-float hol_room_lights(vec3 n, float fl) {
-  vec4 kx = (v_wpos.x - u_tl[0]) * u_klein, kz = (u_tl[1] - v_wpos.z) * u_klein;
-  vec4 kk = kx * kx + kz * kz;
-  vec4 g = inversesqrt(max(1.0 - kk, 1e-6));
-  vec4 c2 = mix(2.0 * g - 2.0, kk, fl);
-  vec4 sh = mix(sqrt(c2 + 0.25 * c2 * c2), sqrt(kk), fl) + 1e-6;
-  vec4 x = mix(log(1.0 + 0.5 * c2 + sh), sh, fl);
+// hol__room_lights): the floor parts of each lantern's light come per
+// vertex (scene.vert.glsl's hol_room_floor), the height's per fragment:
+// the same falloff and Lambert term as the tiles.
+in vec4 v_rx;
+in vec4 v_rq;
+in vec4 v_rh;
+float hol_room_lights(vec3 n, float sgn) {
   vec4 dh = u_tl[2] - v_wpos.y;
-  vec4 d2 = x * x * u_mpu2 + dh * dh;
-  vec4 num = mix((1.0 - HOL_LIGHT_PHYS) * sh + HOL_LIGHT_PHYS * x, sh, fl);
-  vec4 den = sh * (1.0 + d2 * (1.0 / (HOL_LIGHT_D0_M * HOL_LIGHT_D0_M)));
+  vec4 d2 = v_rx + dh * dh;
   vec4 w = max(1.0 - d2 * (1.0 / (HOL_LIGHT_RADIUS_M * HOL_LIGHT_RADIUS_M)), 0.0);
   vec4 id = inversesqrt(max(d2, 1e-8));
-  vec4 th = -(n.x * kx - n.z * kz) * inversesqrt(max(kk, 1e-20));
-  vec4 xm = sqrt(max(d2 - dh * dh, 0.0));
-  vec4 lb = 0.3 + 0.7 * max(max(n.y, 0.0) * max(dh, 0.0) * id + th * xm * id, 0.0);
-  return dot(w * w * num / den * lb, u_tl[3]);
+  vec4 lb = 0.3 + 0.7 * max((max(n.y, 0.0) * max(dh, 0.0) + sgn * v_rh) * id, 0.0);
+  return dot(w * w * v_rq / (1.0 + d2 * (1.0 / (HOL_LIGHT_D0_M * HOL_LIGHT_D0_M))) * lb, u_tl[3]);
 }
 #endif
 void main() {
@@ -271,7 +261,7 @@ void main() {
   }
 #endif
 #if HOL_LIT == 2
-  if (u_light >= 2) lam = hol_room_lights(n, u_light == 3 ? 1.0 : 0.0);
+  if (u_light >= 2) lam = hol_room_lights(n, sgn);
 #endif
   float f = exp(-de2 * (u_fogd * u_fogd));
   if (u_lonly == 1) {
