@@ -39,6 +39,8 @@
  *   them on at the level's clock.
  * - test_firefly_sprites: each firefly's sprite where the test's camera
  *   projects its place, in both eyes of a pair.
+ * - test_trunk_lambert: a trunk 0.71 m from a lantern in {4,4} takes its
+ *   light with a Lambert term, face by face as the model's prism says.
  */
 #include <math.h>
 #include <setjmp.h>
