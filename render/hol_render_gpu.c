@@ -145,6 +145,37 @@ static void hol__frame_lights(hol_render *r, const hol_frame_desc *f)
     r->gl.Uniform1f(r->pg->u_eyeh, (float)lf->eye_h);
 }
 
+/* The room's meshes (trees, hedges) take the lanterns of the room's cells
+ * (u_tl: the cells' centres' x, z in room metres, the lights' heights,
+ * their weights; up to four): a lantern's cell is the one whose tile, by
+ * the room walk columns first then rows (as the vertex trees are chosen:
+ * render/hol_scene.c), is the lantern's tile. The shader measures a point
+ * in the Klein frame of that cell's tile (docs/rendering.md#lighting). */
+static void hol__room_lights(hol_render *r, const hol_frame_desc *f)
+{
+    float tl[4][4] = {{1e4f, 1e4f, 1e4f, 1e4f}, {1e4f, 1e4f, 1e4f, 1e4f}, {0}, {0}};
+    double m = f->cell_m > 0 ? f->cell_m : 1.0;
+    int n = 0, cols = hol_room_cols(&f->user), rows = hol_room_rows(&f->user);
+    for (int c = 0; c < cols && n < 4; c++)
+        for (int w = 0; w < rows && n < 4; w++) {
+            hol_room st = f->user;
+            int ok = 1;
+            while (ok && st.col != c)
+                ok = hol_room_step(&st, st.col < c ? HOL_DIR_E : HOL_DIR_W) == HOL_OK;
+            while (ok && st.row != w)
+                ok = hol_room_step(&st, st.row < w ? HOL_DIR_S : HOL_DIR_N) == HOL_OK;
+            for (int o = 0; ok && o < f->nlanterns && o < HOL_RENDER_MAX_LANTERNS && n < 4; o++)
+                if (hol_tile_eq(f->lanterns[o], st.tile)) {
+                    tl[0][n] = (float)((c + 0.5) * m);
+                    tl[1][n] = (float)((w + 0.5) * m);
+                    tl[2][n] = (float)HOL_LIGHT_HEIGHT_M;
+                    tl[3][n++] = 1;
+                    break;
+                }
+        }
+    r->gl.Uniform4fv(r->pg->u_tl, 4, &tl[0][0]);
+}
+
 /* The programs a lit frame uses, in the order their per-frame uniforms
  * are set (the tiles' with up to four shadow pairs current at the end). */
 static const int hol__lit_uses[4] = {HOL__USE_TILES2, HOL__USE_TILES0, HOL__USE_ROOM,
@@ -254,9 +285,11 @@ void hol__frame_begin(hol_render *r, const hol_frame_desc *f, float vp[16])
         r->gl.Uniform1f(r->pg->u_fogd, fogd);
         r->gl.Uniform1i(r->pg->u_lin, r->desc.srgb != 0);
         r->gl.Uniform1i(r->pg->u_wmode, 0);
-        r->gl.Uniform1i(r->pg->u_light, uses[i] == HOL__USE_ROOM ? 2 : 0);
+        r->gl.Uniform1i(r->pg->u_light, uses[i] == HOL__USE_ROOM ? 2 + r->lights.flat : 0);
         if (f->lighting)
             hol__frame_lights(r, f);
+        if (uses[i] == HOL__USE_ROOM)
+            hol__room_lights(r, f);
     }
 }
 
@@ -317,8 +350,8 @@ static void hol__set_pass_as(hol_render *r, const hol_frame_desc *f, int pass, c
         r->gl.Uniform4f(r->pg->u_id, 0, 0, 0, 1);
         if (pass == HOL__PASS_ROOM)
             r->gl.UniformMatrix4fv(r->pg->u_model, 1, GL_FALSE, ident);
-        if (f->lighting) /* the tile pass sets it per tile */
-            r->gl.Uniform1i(r->pg->u_light, 2);
+        if (f->lighting) /* the tile pass sets it per tile; 3: a flat room */
+            r->gl.Uniform1i(r->pg->u_light, 2 + (pass == HOL__PASS_ROOM && r->lights.flat));
         break;
     case HOL__PASS_HAND:
         /* in the world: hidden where the scene is nearer; its coplanar

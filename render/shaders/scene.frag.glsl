@@ -35,13 +35,17 @@ uniform sampler2D u_atlas;
 // lighting (hol_light.h): 1 a tile with its hyperbolic frame; 2 the
 // room's own meshes (no tile: ambient, fog by room distance)
 in vec3 v_loc;
-uniform int u_light;
+uniform highp int u_light;
 uniform int u_lonly;
 uniform float u_mpu2;
 uniform float u_eyeh;
+// lit tiles: the four light slots and the eye (scene.vert.glsl); the lit
+// room: its lanterns' cells (x, z in room metres), heights and weights
+uniform vec4 u_tl[4];
 #if HOL_LIT == 1
 in vec4 v_L;
 in float v_Le;
+in vec3 v_nl;
 #if HOL_SHD
 in HOL_SV v_S1;
 in HOL_SV v_S2;
@@ -103,13 +107,31 @@ vec4 hol_shadow(float g) {
 // c^2 = 2 (cosh x - 1) = 2 g L - 2, sinh x = sqrt(c^2 (1 + c^2/4)),
 // x = log(cosh x + sinh x); flat: the slot's z is |l|^2/2 and
 // c^2 = |k - l|^2 = 2 L + |k|^2, x = c
+// The Lambert term of every surface (trunks, posts, props and the floor):
+// max(n_up, 0) max(dh, 0) / d plus the horizontal part <n_h, t> x / d,
+// t the unit floor direction from the point to each light's foot in the
+// tile's Klein frame: minus the gradient of cosh x = g L (g^2 L k - l.xy
+// up to g; flat: k - l.xy), x / d = sqrt(d^2 - dh^2) / d. The floor's n_h
+// is 0, so its term is the floor's law unchanged.
+vec4 hol_lambert(vec4 L, float g, vec4 d2, vec4 dh, vec4 id, float nup, vec2 nh) {
+  vec2 k = v_loc.xz;
+#if HOL_FLAT
+  float a = 1.0;
+#else
+  float a = g * g;
+#endif
+  vec4 gx = a * k.x * L - u_tl[0], gy = a * k.y * L - u_tl[1];
+  vec4 th = -(gx * nh.x + gy * nh.y) * inversesqrt(max(gx * gx + gy * gy, 1e-20));
+  vec4 xm = sqrt(max(d2 - dh * dh, 0.0));
+  return 0.3 + 0.7 * max(max(nup, 0.0) * max(dh, 0.0) * id + th * xm * id, 0.0);
+}
 #if HOL_FX
 // per slot: u_tx[4] the light's height, [5] a lantern's weight, [6] a
 // firefly's (the second sum, ff); a spot (u_tx[3] its sin(tilt), -2:
 // none) multiplies by its cone: cos(angle) = (x <u,t> + sin(tilt) dh)
 // / d, x <u,t> = x <u,p> / sinh x = g x U / sh (flat: U), metres per
 // unit folded into u (render/hol_light.h)
-float hol_lights(vec4 L, vec4 U, float g, float o, float y, float nup, out float ff) {
+float hol_lights(vec4 L, vec4 U, float g, float o, float y, float nup, vec2 nh, out float ff) {
   vec4 c2 = max(2.0 * g * L + o, 0.0);
   vec4 dh = u_tx[4] - y;
 @include falloff.glsl
@@ -130,18 +152,35 @@ float hol_lights(vec4 L, vec4 U, float g, float o, float y, float nup, out float
     f *= mix(cone, vec4(1.0), step(u_tx[3], vec4(-1.5)));
   }
 #endif
-  f *= 0.3 + (0.7 * max(nup, 0.0)) * max(dh, 0.0) * id;
+  f *= hol_lambert(L, g, d2, dh, id, nup, nh);
   ff = dot(f, u_tx[6]);
   return dot(f, u_tx[5]);
 }
 #else
-float hol_lights(vec4 L, float g2, float o, float dh, float nup) {
+float hol_lights(vec4 L, float g2, float o, float dh, float nup, vec2 nh) {
   vec4 c2 = max(g2 * L + o, 0.0);
 @include falloff.glsl
   vec4 f = w * w * num / den * hol_shadow(0.5 * g2);
-  return dot(f, 0.3 + (0.7 * max(nup, 0.0) * max(dh, 0.0)) * inversesqrt(max(d2, 1e-8)));
+  return dot(f, hol_lambert(L, 0.5 * g2, d2, vec4(dh), inversesqrt(max(d2, 1e-8)), nup, nh));
 }
 #endif
+#endif
+#if HOL_LIT == 2
+// The room's meshes (trees, hedges: render/hol_render_gpu.c's
+// hol__room_lights): the floor parts of each lantern's light come per
+// vertex (scene.vert.glsl's hol_room_floor), the height's per fragment:
+// the same falloff and Lambert term as the tiles.
+in vec4 v_rx;
+in vec4 v_rq;
+in vec4 v_rh;
+float hol_room_lights(vec3 n, float sgn) {
+  vec4 dh = u_tl[2] - v_wpos.y;
+  vec4 d2 = v_rx + dh * dh;
+  vec4 w = max(1.0 - d2 * (1.0 / (HOL_LIGHT_RADIUS_M * HOL_LIGHT_RADIUS_M)), 0.0);
+  vec4 id = inversesqrt(max(d2, 1e-8));
+  vec4 lb = 0.3 + 0.7 * max((max(n.y, 0.0) * max(dh, 0.0) + sgn * v_rh) * id, 0.0);
+  return dot(w * w * v_rq / (1.0 + d2 * (1.0 / (HOL_LIGHT_D0_M * HOL_LIGHT_D0_M))) * lb, u_tl[3]);
+}
 #endif
 void main() {
 #if HOL_TEXT
@@ -178,7 +217,8 @@ void main() {
   vec3 n = v_nrm;
   if (dot(n, n) < 1e-6) n = vec3(0.0, 1.0, 0.0);
   n = normalize(n);
-  if (dot(n, toeye) < 0.0) n = -n;
+  float sgn = dot(n, toeye) < 0.0 ? -1.0 : 1.0;
+  n *= sgn;
   float d = max(dot(n, normalize(vec3(0.35, 0.85, 0.40))), 0.0);
 #if HOL_LIT == 0
   vec3 c = v_col.rgb * (0.50 + 0.60 * d);
@@ -190,6 +230,10 @@ void main() {
 #if HOL_LIT == 1
   if (u_light == 1) {
     vec2 k = v_loc.xz;
+// the normal's floor part in the tile's Klein frame (v_loc's z is -z),
+// turned to the eye as n is
+    vec3 nl = dot(v_nl, v_nl) < 1e-6 ? vec3(0.0, 1.0, 0.0) : normalize(v_nl);
+    vec2 nh = sgn * vec2(nl.x, -nl.z);
     float kk = dot(k, k);
 #if HOL_FLAT
     float g = 1.0, o = kk;
@@ -197,9 +241,9 @@ void main() {
     float g = inversesqrt(max(1.0 - kk, 1e-6)), o = -2.0;
 #endif
 #if HOL_FX
-    lam = hol_lights(v_L, v_U, g, o, v_loc.y, n.y, lamf);
+    lam = hol_lights(v_L, v_U, g, o, v_loc.y, n.y, nh, lamf);
 #else
-    lam = hol_lights(v_L, 2.0 * g, o, HOL_LIGHT_HEIGHT_M - v_loc.y, n.y);
+    lam = hol_lights(v_L, 2.0 * g, o, HOL_LIGHT_HEIGHT_M - v_loc.y, n.y, nh);
 #endif
 // fog by the true distance from the eye: the floor distance x from the
 // squared chord c^2 to the eye as for a light (falloff.glsl: x = log(cosh
@@ -215,6 +259,9 @@ void main() {
     float dh = u_eyeh - v_loc.y;
     de2 = xe2 * u_mpu2 + dh * dh;
   }
+#endif
+#if HOL_LIT == 2
+  if (u_light >= 2) lam = hol_room_lights(n, sgn);
 #endif
   float f = exp(-de2 * (u_fogd * u_fogd));
   if (u_lonly == 1) {
