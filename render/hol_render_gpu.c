@@ -178,14 +178,14 @@ static void hol__room_lights(hol_render *r, const hol_frame_desc *f)
 
 /* The programs a lit frame uses, in the order their per-frame uniforms
  * are set (the tiles' with up to four shadow pairs current at the end). */
-static const int hol__lit_uses[4] = {HOL__USE_TILES2, HOL__USE_TILES0, HOL__USE_ROOM,
-                                     HOL__USE_TILES4};
+static const int hol__lit_uses[5] = {HOL__USE_TILES2, HOL__USE_TILES0, HOL__USE_BACK,
+                                     HOL__USE_ROOM, HOL__USE_TILES4};
 
 /* The programs frame f uses, n of them (day: one). */
 static const int *hol__frame_uses(const hol_frame_desc *f, int *n)
 {
     static const int day[1] = {HOL__USE_DAY};
-    *n = f->lighting ? 4 : 1;
+    *n = f->lighting ? 5 : 1;
     return f->lighting ? hol__lit_uses : day;
 }
 
@@ -202,7 +202,8 @@ hol_prog *hol__frame_prog(hol_render *r, const hol_frame_desc *f, int use)
     k.wedge = r->view.wedges != 0;
     if (use != HOL__USE_DAY) {
         k.lighting = f->lighting;
-        k.room = use == HOL__USE_ROOM;
+        k.room = use == HOL__USE_ROOM || use == HOL__USE_BACK;
+        k.lamps = use == HOL__USE_ROOM;
     }
     if (use >= HOL__USE_TILES0) {
         k.flat = r->lights.flat != 0;
@@ -285,7 +286,8 @@ void hol__frame_begin(hol_render *r, const hol_frame_desc *f, float vp[16])
         r->gl.Uniform1f(r->pg->u_fogd, fogd);
         r->gl.Uniform1i(r->pg->u_lin, r->desc.srgb != 0);
         r->gl.Uniform1i(r->pg->u_wmode, 0);
-        r->gl.Uniform1i(r->pg->u_light, uses[i] == HOL__USE_ROOM ? 2 + r->lights.flat : 0);
+        int room = uses[i] == HOL__USE_ROOM || uses[i] == HOL__USE_BACK;
+        r->gl.Uniform1i(r->pg->u_light, room ? 2 + r->lights.flat : 0);
         if (f->lighting)
             hol__frame_lights(r, f);
         if (uses[i] == HOL__USE_ROOM)
@@ -406,9 +408,10 @@ static void hol__text_prog(hol_render *r, const hol_frame_desc *f)
 }
 
 /* The GL state of a pass: at dusk and night the room's meshes take the
- * program without tile code, and the tile pass's state goes to both tile
- * programs (with trunk shadows, current at the end, and without); the
- * overlays take the text program. */
+ * programs without tile code (its trees and hedges lantern-lit, its
+ * backdrop on the cheaper path: both get the pass's state), and the tile
+ * pass's state goes to both tile programs (with trunk shadows, current at
+ * the end, and without); the overlays take the text program. */
 static void hol__set_pass(hol_render *r, const hol_frame_desc *f, int pass, const float vp[16])
 {
     if (pass >= HOL__PASS_HAND && r->progs[HOL_PROG_TEXT_SLOT].prog) {
@@ -419,6 +422,8 @@ static void hol__set_pass(hol_render *r, const hol_frame_desc *f, int pass, cons
     static const int tiles[2] = {HOL__USE_TILES0, HOL__USE_TILES2};
     for (int k = 0; k < 2 && f->lighting && pass == HOL__PASS_TILE; k++)
         hol__set_pass_as(r, f, pass, vp, hol__frame_prog(r, f, tiles[k]));
+    if (f->lighting && pass == HOL__PASS_ROOM)
+        hol__set_pass_as(r, f, pass, vp, hol__frame_prog(r, f, HOL__USE_BACK));
     int last = pass == HOL__PASS_ROOM ? HOL__USE_ROOM : HOL__USE_TILES4;
     hol__set_pass_as(r, f, pass, vp, f->lighting ? hol__frame_prog(r, f, last) : NULL);
 }
@@ -485,6 +490,13 @@ void hol__execute(hol_render *r, const hol_frame_desc *f, const float vp[16],
                                 0, 1);
             }
             st->branches += !it->dyn; /* a firefly's sprite is no branch */
+        } else if (cur_pass == HOL__PASS_ROOM && f->lighting) {
+            hol_prog *want = hol__frame_prog(r, f, it->lamps ? HOL__USE_ROOM : HOL__USE_BACK);
+            if (want != r->pg) {
+                r->pg = want;
+                r->gl.UseProgram(want->prog);
+                st->state_changes++;
+            }
         } else if (cur_pass == HOL__PASS_HAND || cur_pass == HOL__PASS_PANEL) {
             r->gl.UniformMatrix4fv(r->pg->u_model, 1, GL_FALSE, it->model);
         }

@@ -5,7 +5,9 @@
 // HOL_FX (HOL_PROG_FX_*: 0 lanterns, 1 fireflies, 2 spots; a value has
 // the code of those below it: test with >=), HOL_TX_ROWS (u_tx's rows of
 // per-light values), HOL_SHD (trunk shadow pairs: 0, 2, 4), HOL_SV and
-// HOL_SW (their vector type and swizzle), HOL_TEXT (the overlays' program:
+// HOL_SW (their vector type and swizzle), HOL_LAMPS (the lit room's
+// trees and hedges take the lanterns' light; 0: its backdrop and outer
+// ground, ambient and sun only), HOL_TEXT (the overlays' program:
 // flat colours and glyphs, with alpha), HOL_SPREAD (the atlas's field
 // reach, core/hol_face.h), and the lights' constants of
 // render/hol_light.h (HOL_LIGHT_D0_M, ...).
@@ -45,7 +47,7 @@ uniform vec4 u_tl[4];
 #if HOL_LIT == 1
 in vec4 v_L;
 in float v_Le;
-in vec3 v_nl;
+in vec4 v_th;
 #if HOL_SHD
 in HOL_SV v_S1;
 in HOL_SV v_S2;
@@ -110,18 +112,10 @@ vec4 hol_shadow(float g) {
 // The Lambert term of every surface (trunks, posts, props and the floor):
 // max(n_up, 0) max(dh, 0) / d plus the horizontal part <n_h, t> x / d,
 // t the unit floor direction from the point to each light's foot in the
-// tile's Klein frame: minus the gradient of cosh x = g L (g^2 L k - l.xy
-// up to g; flat: k - l.xy), x / d = sqrt(d^2 - dh^2) / d. The floor's n_h
-// is 0, so its term is the floor's law unchanged.
-vec4 hol_lambert(vec4 L, float g, vec4 d2, vec4 dh, vec4 id, float nup, vec2 nh) {
-  vec2 k = v_loc.xz;
-#if HOL_FLAT
-  float a = 1.0;
-#else
-  float a = g * g;
-#endif
-  vec4 gx = a * k.x * L - u_tl[0], gy = a * k.y * L - u_tl[1];
-  vec4 th = -(gx * nh.x + gy * nh.y) * inversesqrt(max(gx * gx + gy * gy, 1e-20));
+// tile's Klein frame (th = <n_h, t> per vertex: scene.vert.glsl; the
+// floor's n_h is 0, so its term is the floor's law unchanged), x / d =
+// sqrt(d^2 - dh^2) / d.
+vec4 hol_lambert(vec4 th, vec4 d2, vec4 dh, vec4 id, float nup) {
   vec4 xm = sqrt(max(d2 - dh * dh, 0.0));
   return 0.3 + 0.7 * max(max(nup, 0.0) * max(dh, 0.0) * id + th * xm * id, 0.0);
 }
@@ -131,7 +125,7 @@ vec4 hol_lambert(vec4 L, float g, vec4 d2, vec4 dh, vec4 id, float nup, vec2 nh)
 // none) multiplies by its cone: cos(angle) = (x <u,t> + sin(tilt) dh)
 // / d, x <u,t> = x <u,p> / sinh x = g x U / sh (flat: U), metres per
 // unit folded into u (render/hol_light.h)
-float hol_lights(vec4 L, vec4 U, float g, float o, float y, float nup, vec2 nh, out float ff) {
+float hol_lights(vec4 L, vec4 U, float g, float o, float y, float nup, vec4 th, out float ff) {
   vec4 c2 = max(2.0 * g * L + o, 0.0);
   vec4 dh = u_tx[4] - y;
 @include falloff.glsl
@@ -152,35 +146,25 @@ float hol_lights(vec4 L, vec4 U, float g, float o, float y, float nup, vec2 nh, 
     f *= mix(cone, vec4(1.0), step(u_tx[3], vec4(-1.5)));
   }
 #endif
-  f *= hol_lambert(L, g, d2, dh, id, nup, nh);
+  f *= hol_lambert(th, d2, dh, id, nup);
   ff = dot(f, u_tx[6]);
   return dot(f, u_tx[5]);
 }
 #else
-float hol_lights(vec4 L, float g2, float o, float dh, float nup, vec2 nh) {
+float hol_lights(vec4 L, float g2, float o, float dh, float nup, vec4 th) {
   vec4 c2 = max(g2 * L + o, 0.0);
 @include falloff.glsl
   vec4 f = w * w * num / den * hol_shadow(0.5 * g2);
-  return dot(f, hol_lambert(L, 0.5 * g2, d2, vec4(dh), inversesqrt(max(d2, 1e-8)), nup, nh));
+  return dot(f, hol_lambert(th, d2, vec4(dh), inversesqrt(max(d2, 1e-8)), nup));
 }
 #endif
 #endif
-#if HOL_LIT == 2
-// The room's meshes (trees, hedges: render/hol_render_gpu.c's
-// hol__room_lights): the floor parts of each lantern's light come per
-// vertex (scene.vert.glsl's hol_room_floor), the height's per fragment:
-// the same falloff and Lambert term as the tiles.
-in vec4 v_rx;
-in vec4 v_rq;
-in vec4 v_rh;
-float hol_room_lights(vec3 n, float sgn) {
-  vec4 dh = u_tl[2] - v_wpos.y;
-  vec4 d2 = v_rx + dh * dh;
-  vec4 w = max(1.0 - d2 * (1.0 / (HOL_LIGHT_RADIUS_M * HOL_LIGHT_RADIUS_M)), 0.0);
-  vec4 id = inversesqrt(max(d2, 1e-8));
-  vec4 lb = 0.3 + 0.7 * max((max(n.y, 0.0) * max(dh, 0.0) + sgn * v_rh) * id, 0.0);
-  return dot(w * w * v_rq / (1.0 + d2 * (1.0 / (HOL_LIGHT_D0_M * HOL_LIGHT_D0_M))) * lb, u_tl[3]);
-}
+#if HOL_LIT == 2 && HOL_LAMPS
+// The room's trees and hedges (HOL_LAMPS: render/hol_render_gpu.c's
+// hol__room_lights): lit per vertex by the tiles' law (scene.vert.glsl's
+// hol_room_light), their meshes cut in bands of height
+// (docs/rendering.md#lighting says where that departs)
+in float v_rl;
 #endif
 void main() {
 #if HOL_TEXT
@@ -230,10 +214,8 @@ void main() {
 #if HOL_LIT == 1
   if (u_light == 1) {
     vec2 k = v_loc.xz;
-// the normal's floor part in the tile's Klein frame (v_loc's z is -z),
-// turned to the eye as n is
-    vec3 nl = dot(v_nl, v_nl) < 1e-6 ? vec3(0.0, 1.0, 0.0) : normalize(v_nl);
-    vec2 nh = sgn * vec2(nl.x, -nl.z);
+// the Lambert term's horizontal part, the normal turned to the eye as n is
+    vec4 th = sgn * v_th;
     float kk = dot(k, k);
 #if HOL_FLAT
     float g = 1.0, o = kk;
@@ -241,9 +223,9 @@ void main() {
     float g = inversesqrt(max(1.0 - kk, 1e-6)), o = -2.0;
 #endif
 #if HOL_FX
-    lam = hol_lights(v_L, v_U, g, o, v_loc.y, n.y, nh, lamf);
+    lam = hol_lights(v_L, v_U, g, o, v_loc.y, n.y, th, lamf);
 #else
-    lam = hol_lights(v_L, 2.0 * g, o, HOL_LIGHT_HEIGHT_M - v_loc.y, n.y, nh);
+    lam = hol_lights(v_L, 2.0 * g, o, HOL_LIGHT_HEIGHT_M - v_loc.y, n.y, th);
 #endif
 // fog by the true distance from the eye: the floor distance x from the
 // squared chord c^2 to the eye as for a light (falloff.glsl: x = log(cosh
@@ -260,8 +242,8 @@ void main() {
     de2 = xe2 * u_mpu2 + dh * dh;
   }
 #endif
-#if HOL_LIT == 2
-  if (u_light >= 2) lam = hol_room_lights(n, sgn);
+#if HOL_LIT == 2 && HOL_LAMPS
+  if (u_light >= 2) lam = v_rl;
 #endif
   float f = exp(-de2 * (u_fogd * u_fogd));
   if (u_lonly == 1) {
