@@ -127,7 +127,7 @@ struct hol_render {
     struct hol_world *room_world;
     uint32_t room_nidx;
     uint32_t room_back[2]; /* its backdrop's index range (hol_scene_room) */
-    uint32_t room_lit[3];  /* its lit copies (hol__room_slices) */
+    uint32_t room_lit[4];  /* its lit copies' ranges (hol__room_slices) */
     int hud_valid;
     uint64_t hud_key;
     uint32_t hud_nidx;
