@@ -649,7 +649,7 @@ WEB_OPT  := -Os
 WEB_OPT_HOT := -O2
 WEB_CFLAGS = $(CSTD) $(WARN) $(if $(filter $(WEB_HOT),$<),$(WEB_OPT_HOT),$(WEB_OPT)) -ffp-contract=off \
   -D_DEFAULT_SOURCE -MMD -MP
-WEB_LDFLAGS := -Oz -sMALLOC=emmalloc -sENVIRONMENT=web -sMIN_WEBGL_VERSION=2 -sMAX_WEBGL_VERSION=2 \
+WEB_LDFLAGS := -Oz -sBINARYEN_EXTRA_PASSES=-Oz -sMALLOC=emmalloc -sENVIRONMENT=web -sMIN_WEBGL_VERSION=2 -sMAX_WEBGL_VERSION=2 \
   -sALLOW_MEMORY_GROWTH=1 -sINITIAL_MEMORY=67108864 -sTOTAL_STACK=1048576 \
   --js-library platform/web/hol_web_al.js --js-library platform/web/hol_web_lib.js
 # the objects are made again when these flags change (an -O3 object of an
@@ -706,12 +706,13 @@ $(WEB)/holonomy.js: $(WEB_OBJ) platform/web/hol_web_lib.js platform/web/hol_web_
 	@$(EMCC_ENV) $(EMCC) $(WEB_LDFLAGS) $(WEB_OBJ) -o $@
 	@NODE_PATH=/usr/share/nodejs node platform/web/minify.mjs $@ $@ || { rm -f $@; exit 1; }
 
-# the page's scripts without their comment lines and indentation (about 2 KB
-# of the gzip'ed transfer; the sources keep them): a line whose first
-# characters are // is a comment (no string spans lines in these files)
-$(WEB)/%.js: platform/web/%.js
+# the page's scripts minified by terser as holonomy.js is (about 3 KB of
+# the gzip'ed transfer; the sources keep their comments): top-level names
+# stay, so index.html's scripts still share them
+$(WEB)/%.js: platform/web/%.js platform/web/minify.mjs
 	@mkdir -p $(dir $@)
-	sed -e '/^[[:space:]]*\/\//d' -e 's/^[[:space:]]*//' $< >$@
+	@echo "terser $<"
+	@NODE_PATH=/usr/share/nodejs node platform/web/minify.mjs $< $@
 
 $(WEB)/%: platform/web/%
 	@mkdir -p $(dir $@)
