@@ -640,17 +640,20 @@ WEB_OBJ  := $(WEB_SRC:%.c=$(BUILD)/web-obj/%.o)
 # (-Os made the wasm step about 40 % slower; the table's builder,
 # hol_nav_table.c, is at -Os since: its first frame the same within the
 # noise; hol_room.c and hol_wfc.c, which run on room steps and new tiles,
-# likewise since issue 36); the link at -Oz, emmalloc (docs/web.md, "The
-# transfer size").
+# likewise since issue 36), without unrolled loops (issue 37: 0.9 KB; the
+# step 5 % slower, the table the same); the link at -Oz with binaryen's
+# -Oz once more, emmalloc, and Module read only for what page.js gives it
+# (docs/web.md, "The transfer size").
 WEB_HOT  := $(addprefix core/,hol_app_step.c hol_app_geom.c hol_app_view.c hol_hyper.c hol_math.c hol_motion.c \
   hol_nav.c hol_nav_arena.c hol_nav_field.c hol_nav_line.c \
   hol_tile.c hol_world.c hol_world_tree.c)
 WEB_OPT  := -Os
-WEB_OPT_HOT := -O2
+WEB_OPT_HOT := -O2 -fno-unroll-loops
 WEB_CFLAGS = $(CSTD) $(WARN) $(if $(filter $(WEB_HOT),$<),$(WEB_OPT_HOT),$(WEB_OPT)) -ffp-contract=off \
   -D_DEFAULT_SOURCE -MMD -MP
-WEB_LDFLAGS := -Oz -sMALLOC=emmalloc -sENVIRONMENT=web -sMIN_WEBGL_VERSION=2 -sMAX_WEBGL_VERSION=2 \
+WEB_LDFLAGS := -Oz -sBINARYEN_EXTRA_PASSES=-Oz -sMALLOC=emmalloc -sENVIRONMENT=web -sMIN_WEBGL_VERSION=2 -sMAX_WEBGL_VERSION=2 \
   -sALLOW_MEMORY_GROWTH=1 -sINITIAL_MEMORY=67108864 -sTOTAL_STACK=1048576 \
+  '-sINCOMING_MODULE_JS_API=[instantiateWasm,canvas,print,printErr]' \
   --js-library platform/web/hol_web_al.js --js-library platform/web/hol_web_lib.js
 # The languages of the web build (core/hol_str.h; en always): Dutch costs
 # 1.3 KB of the transfer (docs/web.md, "The transfer size").

@@ -25,7 +25,10 @@
  *   the top; a texel is 128 + 128 * d / HOL_FACE_SPREAD clamped to 0..255,
  *   d the signed distance (atlas pixels, positive inside) to the outline
  *   at HOL_FACE_BAKE_EM atlas pixels per em. Each glyph's rectangle has a
- *   clear texel around it (bilinear filtering stays inside).
+ *   clear texel around it (bilinear filtering stays inside); the texels
+ *   outside every rectangle are 1 (far outside). The tables
+ *   hold only the rectangles' texels (hol_face_texels): hol_face_atlas
+ *   writes the whole atlas into the caller's memory.
  * - Wrapping (hol_face_wrap) breaks at spaces: a line holds as many words
  *   as fit the width; the spaces at a break are dropped; a word wider than
  *   the width alone is split between code points (at least one per line);
@@ -68,8 +71,12 @@ typedef struct hol_face_line {
 } hol_face_line;
 
 void hol_face_get_metrics(hol_face_metrics *out_metrics);
-/* The atlas's bytes (see the contract); its size in out_w, out_h. */
-const uint8_t *hol_face_atlas(int *out_w, int *out_h);
+/* The atlas's size in out_w, out_h; when out_px is not NULL, its
+ * out_w * out_h bytes (see the contract) written there. */
+void hol_face_atlas(uint8_t *out_px, int *out_w, int *out_h);
+/* Glyph index's texels: the atlas's bytes of its rectangle, w * h, rows
+ * top to bottom (an index outside the set: the box's). */
+const uint8_t *hol_face_texels(int index);
 /* Ems per cap height: size = cap height * this. */
 float hol_face_em_per_cap(void);
 
