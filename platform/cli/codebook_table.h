@@ -1,6 +1,9 @@
 /* codebook_table.h - the report's rows of the codebook (codebook.h): file,
  * column, type, unit, allowed values, meaning. A file "report:NAME" is the
- * report's NAME; an empty meaning is the log column of the same name's
+ * report's NAME, its rows in its columns' order: the report's writers
+ * print NAME's header from them (report/report.h: report_header), so the
+ * codebook and the file cannot differ; an empty meaning is the log column
+ * of the same name's
  * (the log files' columns are the writers' own tables:
  * platform/shell/hol_shell_codebook.h). */
 #ifndef CODEBOOK_TABLE_H

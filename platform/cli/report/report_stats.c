@@ -493,7 +493,7 @@ static int stats_csv(FILE *f, const report_run *r, const void *ctx)
 {
     const report_stats *s = r->stats;
     (void)ctx;
-    fputs("study,condition,measure,item,n,mean,sd,ci_low,ci_high\n", f);
+    report_header(f, "stats.csv");
     for (int c = 0; c < s->ncond; c++) {
         for (int m = 0; m < RS_NFIX; m++) {
             if (!s->fix[c * RS_NFIX + m].n)
@@ -522,7 +522,7 @@ static int learning_csv(FILE *f, const report_run *r, const void *ctx)
 {
     const report_stats *s = r->stats;
     (void)ctx;
-    fputs("study,condition,position,n,mean_efficiency,sd,ci_low,ci_high\n", f);
+    report_header(f, "learning.csv");
     for (int i = 0; i < s->nlearn; i++) {
         const rs_learn *l = &s->learn[i];
         report_csv(f, s->cond[l->cond].study, 0);
@@ -547,8 +547,7 @@ static int participants_csv(FILE *f, const report_run *r, const void *ctx)
 {
     const report_stats *s = r->stats;
     (void)ctx;
-    fputs("participant,study,condition,attempts,done,mean_steps,mean_efficiency,mean_time\n",
-          f);
+    report_header(f, "participants.csv");
     for (int i = 0; i < s->nprow; i++) {
         const rs_prow *p = &s->prow[i];
         report_csv(f, r->att[p->att].a.participant, 0);
@@ -569,8 +568,7 @@ static int scores_csv(FILE *f, const report_run *r, const void *ctx)
 {
     const report_stats *s = r->stats;
     (void)ctx;
-    fputs("participant,session,attempt,study,condition,placement,scope,instrument,subscale,"
-          "score,complete\n", f);
+    report_header(f, "scores.csv");
     for (long i = 0; i < s->nscore; i++) {
         const rs_score *o = &s->score[i];
         char k[sizeof o->key], *part[5] = {k, "", "", "", ""};
