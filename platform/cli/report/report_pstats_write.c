@@ -108,6 +108,10 @@ static int participants_stats_csv(FILE *f, const report_run *r, const void *ctx)
     (void)ctx;
     report_header(f, "participants_stats.csv");
     each_row(f, r, stats_row);
+    if (report_pstats_q_rows(f, r)) {
+        cli_error(r->cmd, 0, "out of memory");
+        return CLI_EXIT_FAIL;
+    }
     return 0;
 }
 
