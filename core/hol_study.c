@@ -782,6 +782,15 @@ static int hol__put_question(const hol_study *s, const char *id, size_t n, hol__
     return 0;
 }
 
+/* The study's questionnaire NAME (its items), NULL for a preset. */
+static const hol_study_questionnaire *hol__qn(const hol_study *s, const char *name)
+{
+    for (int j = 0; j < s->nquestionnaires; j++)
+        if (!strcmp(s->questionnaires[j].name, name))
+            return &s->questionnaires[j];
+    return NULL;
+}
+
 /* The order questionnaires are put in: before study, condition, level;
  * then after level, condition, study. */
 static const int hol__whens[HOL_APP_ASK_WHENS] = {
@@ -800,10 +809,7 @@ static int hol__put_asks(const hol_study *s, int c, int i, int position, hol__co
             int when = hol__whens[w];
             if (a->when != when || !hol__ask_due(s, k, c, i, position))
                 continue;
-            const hol_study_questionnaire *d = NULL;
-            for (int j = 0; j < s->nquestionnaires; j++)
-                if (!strcmp(s->questionnaires[j].name, a->name))
-                    d = &s->questionnaires[j];
+            const hol_study_questionnaire *d = hol__qn(s, a->name);
             char line[HOL_STUDY_LINE_MAX + 64];
             int n = snprintf(line, sizeof line, "ask %s %s", a->name, hol_ask_when_name(when));
             if (d) {
@@ -825,18 +831,12 @@ static int hol__put_asks(const hol_study *s, int c, int i, int position, hol__co
 static int hol__baseline_item(const hol_study *s, const char *id, size_t n)
 {
     for (int k = 0; k < s->nasks; k++) {
-        if (s->asks[k].when != HOL_APP_BEFORE_STUDY)
-            continue;
-        for (int j = 0; j < s->nquestionnaires; j++) {
-            const hol_study_questionnaire *d = &s->questionnaires[j];
-            if (strcmp(d->name, s->asks[k].name))
-                continue;
-            const char *q = s->text + d->items.off, *end = q + d->items.len, *f;
-            size_t kn;
-            while ((kn = hol__field(&q, end, &f)) > 0)
-                if (kn == n && !memcmp(f, id, n))
-                    return 1;
-        }
+        const hol_study_questionnaire *d = hol__qn(s, s->asks[k].name);
+        const char *q = d ? s->text + d->items.off : NULL, *end = d ? q + d->items.len : NULL, *f;
+        size_t kn;
+        while (d && s->asks[k].when == HOL_APP_BEFORE_STUDY && (kn = hol__field(&q, end, &f)) > 0)
+            if (kn == n && !memcmp(f, id, n))
+                return 1;
     }
     return 0;
 }
@@ -852,18 +852,14 @@ static int hol__put_shared(const hol_study *s, int c, int i, int position, hol__
 {
     for (int w = 1; w < HOL_APP_ASK_WHENS - 1 && c >= 0 && !s->npractice; w++)
         for (int k = 0; k < s->nasks; k++) {
-            if (s->asks[k].when != hol__whens[w] || !hol__ask_due(s, k, c, i, position))
+            const hol_study_questionnaire *d = hol__qn(s, s->asks[k].name);
+            if (!d || s->asks[k].when != hol__whens[w] || !hol__ask_due(s, k, c, i, position))
                 continue;
-            for (int j = 0; j < s->nquestionnaires; j++) {
-                const hol_study_questionnaire *d = &s->questionnaires[j];
-                if (strcmp(d->name, s->asks[k].name))
-                    continue;
-                const char *q = s->text + d->items.off, *end = q + d->items.len, *id;
-                size_t kn;
-                while ((kn = hol__field(&q, end, &id)) > 0)
-                    if (hol__baseline_item(s, id, kn) && hol__put_question(s, id, kn, cp, put))
-                        return 1;
-            }
+            const char *q = s->text + d->items.off, *end = q + d->items.len, *id;
+            size_t kn;
+            while ((kn = hol__field(&q, end, &id)) > 0)
+                if (hol__baseline_item(s, id, kn) && hol__put_question(s, id, kn, cp, put))
+                    return 1;
         }
     return 0;
 }

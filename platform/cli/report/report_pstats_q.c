@@ -35,16 +35,9 @@ static int by_q(const void *pa, const void *pb)
 /* Score o as a key: 1, 0 when it is no preset's complete score. */
 static int q_key(const report_stats *s, const rs_score *o, pq_key *k)
 {
-    char key[sizeof o->key], *part[5] = {key, "", "", "", ""};
-    memcpy(key, o->key, sizeof key);
-    for (int j = 1; j < 5; j++) {
-        char *sep = strchr(part[j - 1], '\x1f');
-        if (!sep)
-            return 0;
-        *sep = 0;
-        part[j] = sep + 1;
-    }
-    int p = hol_ask_preset_index(part[3], strlen(part[3]));
+    char key[sizeof o->key], *part[5];
+    int p = rs_score_fields(o, key, part) == 5 ? hol_ask_preset_index(part[3], strlen(part[3]))
+                                               : -1;
     if (!o->has || !o->complete || p < 0 || o->cond == s->none)
         return 0;
     const hol_ask_preset_def *d = hol_ask_preset_at(p);

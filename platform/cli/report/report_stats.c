@@ -520,13 +520,13 @@ static int stats_csv(FILE *f, const report_run *r, const void *ctx)
 
 static int learning_csv(FILE *f, const report_run *r, const void *ctx)
 {
-    const report_stats *s = r->stats;
     (void)ctx;
     report_header(f, "learning.csv");
-    for (int i = 0; i < s->nlearn; i++) {
-        const rs_learn *l = &s->learn[i];
-        report_csv(f, s->cond[l->cond].study, 0);
-        report_csv(f, s->cond[l->cond].condition, 0);
+    for (int i = 0; i < r->stats->nlearn; i++) {
+        const rs_learn *l = &r->stats->learn[i];
+        const rs_cond *c = &r->stats->cond[l->cond];
+        report_csv(f, c->study, 0);
+        report_csv(f, c->condition, 0);
         fprintf(f, "%ld,%ld,%.4f,", l->pos, l->m.n, l->m.mean);
         if (l->m.has_sd)
             fprintf(f, "%.4f,%.4f,%.4f\n", l->m.sd, l->m.lo, l->m.hi);
@@ -561,25 +561,34 @@ static int participants_csv(FILE *f, const report_run *r, const void *ctx)
     return 0;
 }
 
+int rs_score_fields(const rs_score *o, char k[sizeof o->key], char *part[5])
+{
+    memcpy(k, o->key, sizeof o->key);
+    part[0] = k;
+    for (int j = 1; j < 5; j++) {
+        char *sep = strchr(part[j - 1], '\x1f');
+        for (int l = j; !sep && l < 5; l++)
+            part[l] = "";
+        if (!sep)
+            return j;
+        *sep = 0;
+        part[j] = sep + 1;
+    }
+    return 5;
+}
+
 /* scores.csv: a row's key split (session, participant, attempt,
  * questionnaire, when); `after study` and `before study` under the
  * condition `study`. */
 static int scores_csv(FILE *f, const report_run *r, const void *ctx)
 {
     const report_stats *s = r->stats;
+    char k[sizeof s->score->key], *part[5];
     (void)ctx;
     report_header(f, "scores.csv");
     for (long i = 0; i < s->nscore; i++) {
         const rs_score *o = &s->score[i];
-        char k[sizeof o->key], *part[5] = {k, "", "", "", ""};
-        memcpy(k, o->key, sizeof k);
-        for (int j = 1; j < 5; j++) {
-            char *sep = strchr(part[j - 1], '\x1f');
-            if (!sep)
-                break;
-            *sep = 0;
-            part[j] = sep + 1;
-        }
+        rs_score_fields(o, k, part);
         const char *when = part[4], *scope = strchr(when, '_') ? strchr(when, '_') + 1 : when;
         int before = !strncmp(when, "before_", 7);
         report_csv(f, part[1], 0);
