@@ -287,7 +287,7 @@ FUZZ_EXTRA_fuzz_cli := platform/cli/cli_util.c platform/file/hol_file.c platform
 FUZZ_EXTRA_fuzz_lines := platform/cli/cli_util.c platform/file/hol_file.c platform/file/hol_lines.c
 FUZZ_EXTRA_fuzz_report_instr := $(addprefix platform/cli/report/,report_stats.c report_answers.c report_instr.c \
   report_file.c report_escape.c) platform/cli/cli_util.c platform/file/hol_file.c \
-  platform/file/hol_lines.c
+  platform/file/hol_lines.c platform/cli/codebook.c platform/shell/hol_shell_codebook.c
 FUZZ_EXTRA_fuzz_hid_desc := $(HID_SRC)
 FUZZ_EXTRA_fuzz_hid_report := $(HID_SRC)
 FUZZ_EXTRA_fuzz_hid_script := $(HID_SRC) $(HID_DEV_SRC) $(HID_LIBS)

@@ -67,7 +67,8 @@ static void hol__fill_eyes(hol_app *app, const hol_input *in)
 }
 
 /* The map held off by a study (`fixed minimap` with the map off), but
- * with desc.flow_v4: the tutorial does not send the player to it. */
+ * with desc.flow_v4: the tutorial does not send the player to it, nor
+ * says what its rings mean. */
 static int hol__map_held_off(const hol_app *app)
 {
     return !app->d.flow_v4 && app->level.minimap_fixed && app->level.minimap == HOL_MINIMAP_OFF;
@@ -340,8 +341,9 @@ static void hol__fill_hud(hol_app *app, const hol_input *in)
     snprintf(h->feedback, sizeof h->feedback, "%s",
              fixed ? hol_str(hol__lang(app), HOL_S_FIXED) : fb ? app->feedback : "");
     snprintf(h->note, sizeof h->note, "%s",
-             fb && !fixed && app->nmarks && app->rings_note ? hol_str(hol__lang(app), HOL_S_RINGS)
-                                                            : "");
+             fb && !fixed && app->nmarks && app->rings_note && !hol__map_held_off(app)
+                 ? hol_str(hol__lang(app), HOL_S_RINGS)
+                 : "");
     hol__fill_objective(app, h);
     hol__fill_status(app, in, h);
     hol__fill_lines(app, h);

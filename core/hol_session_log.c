@@ -80,7 +80,8 @@ void hol__log_levels(hol_session *s)
             seen |= !memcmp(s->levels[j].sha256, s->levels[i].sha256, 32);
         if (seen)
             continue;
-        hol__put_file(s, live, 0, s->levels[i].text, s->levels[i].hashed);
+        char text[HOL_LEVEL_TEXT_MAX + 2];
+        hol__put_file(s, live, 0, text, hol_level_hashed_text(&s->levels[i], text));
         hol__rename(s, live, name);
     }
 }

@@ -126,14 +126,17 @@ typedef struct report_file_job {
     report_body body;
 } report_file_job;
 int report_write_files(const report_run *r, const report_file_job *jobs, int n);
+/* The header of the report's file NAME (its codebook rows' columns,
+ * codebook_table.h: the codebook and the file say the same columns). */
+void report_header(FILE *f, const char *name);
 /* The same into dir/name (name may hold folders that exist: --bids). */
 int report_write_in(const report_run *r, const char *dir, const char *name, report_body body,
                     const void *ctx);
 
 int report_write_csv(const report_run *r);
-/* build.csv (which build wrote the report: REPORT_BUILD_COLUMNS) and
- * codebook.csv (every column of the report's files: ../codebook.h). */
-#define REPORT_BUILD_COLUMNS "program,version,commit,build_date"
+/* build.csv (which build wrote the report: program, version, commit,
+ * build_date) and codebook.csv (every column of the report's files:
+ * ../codebook.h). */
 int report_write_provenance(const report_run *r);
 int report_write_conditions(const report_run *r, const hol_report_agg *g);
 int report_write_html(const report_run *r, const hol_report_agg *g);
