@@ -36,12 +36,23 @@ int hol_app_wrap(const char *text, int cols, char (*out)[HOL_APP_TEXT_MAX], int 
     while (at < len && text[at] == ' ')
         at++;
     while (at < len) {
+        /* fit: the bytes of the first cols characters (a UTF-8 sequence
+         * whole) within a line's bytes; ASCII: cols bytes */
+        size_t fit = 0;
+        for (int c = 0; c < cols && at + fit < len; c++) {
+            size_t k = 1;
+            while (at + fit + k < len && ((unsigned char)text[at + fit + k] & 0xc0) == 0x80)
+                k++;
+            if (fit + k > HOL_APP_TEXT_MAX - 1)
+                break;
+            fit += k;
+        }
         size_t take = len - at;
-        if (take > (size_t)cols) {
-            size_t sp = (size_t)cols; /* the last space at or before cols */
+        if (take > fit) {
+            size_t sp = fit; /* the last space at or before the fit's end */
             while (sp > 0 && text[at + sp] != ' ')
                 sp--;
-            take = sp > 0 ? sp : (size_t)cols;
+            take = sp > 0 ? sp : fit;
         }
         size_t keep = take;
         while (keep > 0 && text[at + keep - 1] == ' ')
