@@ -162,9 +162,9 @@ enum hol_app_minimap_place { HOL_MINIMAP_HUD = 0, HOL_MINIMAP_HAND = 1, HOL_MINI
 #define HOL_APP_ROUTE_TEXT "Follow the markers %d/%d"
 
 /* A screen of text (hol_app_level.instructions, .closing): printable
- * ASCII (the HUD's font), at most HOL_APP_SCREEN_TEXT - 1 bytes, wrapped
- * at spaces into lines of at most HOL_APP_SCREEN_COLS characters
- * (hol_app_wrap), at most HOL_APP_SCREEN_LINES of them (the HUD's lines:
+ * ASCII and Latin-1 in UTF-8 (the HUD's font: hol_face_text_bad), at
+ * most HOL_APP_SCREEN_TEXT - 1 bytes, wrapped at spaces into lines of at
+ * most HOL_APP_SCREEN_COLS characters (hol_app_wrap), at most HOL_APP_SCREEN_LINES of them (the HUD's lines:
  * the text is shown whole, never cut; the level parser refuses more). */
 #define HOL_APP_SCREEN_TEXT 288
 #define HOL_APP_SCREEN_COLS 46

@@ -223,10 +223,12 @@ void hol__ask_lines(const hol_app *app, hol_app_hud *h)
         snprintf(val, sizeof val, "%s", q->choices[m]);
     else
         snprintf(val, sizeof val, "%d", q->lo + m * step);
+    hol__utf8_cut(val, 20);
     char line[128]; /* at most 45 characters: a value of 20, a name of 12 */
-    snprintf(line, sizeof line, "%s %.20s %s   %.12s %d/%d", m > 0 ? "<" : " ", val,
+    snprintf(line, sizeof line, "%s %s %s   %.12s %d/%d", m > 0 ? "<" : " ", val,
              m < marks - 1 ? ">" : " ", name, app->ask_i + 1, a->n);
-    snprintf(h->lines[h->nlines++], HOL_APP_TEXT_MAX, "%.47s", line);
+    hol__utf8_cut(line, HOL_APP_TEXT_MAX - 1);
+    memcpy(h->lines[h->nlines++], line, strlen(line) + 1);
     if (q->kind == HOL_APP_LIKERT) {
         char both[2 * HOL_APP_TEXT_MAX];
         int len = snprintf(both, sizeof both, "%d %s, %d %s", q->lo, q->low, q->hi, q->high);

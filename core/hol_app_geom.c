@@ -25,6 +25,15 @@ void hol__yaw_pitch_from_quat(const float qf[4], double *yaw, double *pitch)
     *yaw = hol_atan2(-fx, -fz) * 180 / HOL__PI;
 }
 
+void hol__utf8_cut(char *s, size_t max)
+{
+    if (strlen(s) <= max)
+        return;
+    while (max > 0 && ((unsigned char)s[max] & 0xc0) == 0x80)
+        max--;
+    s[max] = 0;
+}
+
 int hol_app_wrap(const char *text, int cols, char (*out)[HOL_APP_TEXT_MAX], int max)
 {
     if (cols < 1)

@@ -185,6 +185,8 @@ void hol__fill_view(hol_app *app, const hol_input *in);
 
 /* hol_app_geom.c: a quaternion's yaw and pitch (degrees; left as they
  * were for a zero quaternion). */
+/* s cut to at most max bytes, never inside a UTF-8 sequence. */
+void hol__utf8_cut(char *s, size_t max);
 void hol__yaw_pitch_from_quat(const float qf[4], double *yaw, double *pitch);
 
 #endif
