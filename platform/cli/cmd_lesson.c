@@ -45,7 +45,7 @@ static const char *const sheet_words[SW_COUNT][HOL_LANG_COUNT] = {
     {"Lesson %d: %s {4,%d}%s", "Lektion %d: %s {4,%d}%s", "Les %d: %s {4,%d}%s"},
     {" - answer key", " - Lösung", " - antwoorden"},
     {"Name: ______________________   Class: ________",
-     "Name: ______________________   Klasse: ________",
+     "Name: ____________________   Klasse: ________",
      "Naam: ______________________   Klas: ________"},
     {"1. Predict, before you walk:", "1. Sag voraus, bevor du gehst:",
      "1. Voorspel, voordat je loopt:"},
