@@ -33,11 +33,7 @@
 #define HOL__SHEET(s) s
 #endif
 /* A build without Dutch (the web's, as core/hol_str.c's) reads English. */
-#ifdef HOL_STR_NO_NL
-#define HOL__NL(s) NULL
-#else
-#define HOL__NL(s) s
-#endif
+#define HOL__NL(s) HOL_STR_NL(s)
 #define HOL__ROW(en, de, nl) {en, de, HOL__NL(nl)}
 #define HOL__SROW(en, de, nl) {HOL__SHEET(en), HOL__SHEET(de), HOL__NL(HOL__SHEET(nl))}
 

@@ -13,11 +13,7 @@
 #endif
 /* A build without Dutch (the web's: Makefile WEB_LANGS) keeps no Dutch
  * text: hol_str reads English for it, hol_lang_parse does not take "nl". */
-#ifdef HOL_STR_NO_NL
-#define HOL__NL(s) NULL
-#else
-#define HOL__NL(s) s
-#endif
+#define HOL__NL(s) HOL_STR_NL(s)
 
 /* One row an id, in the order of enum hol_lang: English (the app's words
  * before the table, byte for byte), German (du, as a class is spoken to),

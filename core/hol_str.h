@@ -153,6 +153,14 @@ typedef enum hol_str_id {
  * its own fonts: not limited to the face's glyphs, nor to a buffer). */
 #define HOL_S_PAGE_FIRST HOL_S_PAUSE_UNFOCUSED
 
+/* A Dutch entry of a table of the languages (this one, the lessons'):
+ * NULL in a build without Dutch (see the contract). */
+#ifdef HOL_STR_NO_NL
+#define HOL_STR_NL(s) NULL
+#else
+#define HOL_STR_NL(s) s
+#endif
+
 const char *hol_str(int lang, hol_str_id id);
 /* The buffer (bytes with the NUL) the id's text is written into. */
 int hol_str_cap(hol_str_id id);
