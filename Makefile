@@ -698,8 +698,9 @@ $(BUILD)/web-obj/render/hol_program.o: WEB_CFLAGS += -I$(BUILD)/gen
 $(BUILD)/web-obj/platform/shell/hol_shell_build.o: $(BUILD_ID_H)
 $(BUILD)/web-obj/platform/shell/hol_shell_build.o: WEB_CFLAGS += -I$(BUILD)/gen
 # the page shows no worksheet: the lessons' worksheet texts are left out
-# (core/hol_lesson_text.c; the transfer size, docs/web.md)
-$(BUILD)/web-obj/core/hol_lesson_text.o: WEB_CFLAGS += -DHOL_LESSON_APP_ONLY
+# (core/hol_lesson_text.c; the transfer size, docs/web.md), and their
+# languages are WEB_LANGS's, as the string table's
+$(BUILD)/web-obj/core/hol_lesson_text.o: WEB_CFLAGS += -DHOL_LESSON_APP_ONLY $(if $(filter nl,$(WEB_LANGS)),,-DHOL_STR_NO_NL)
 
 $(BUILD)/web-obj/%.o: %.c $(WEB_STAMP)
 	@mkdir -p $(dir $@)

@@ -99,6 +99,21 @@ uint32_t hol_face_decode(const char *text, size_t len, size_t *pos)
     return cp;
 }
 
+size_t hol_face_text_bad(const char *s, size_t n, uint32_t *out_code)
+{
+    size_t pos = 0;
+    while (pos < n) {
+        size_t at = pos;
+        uint32_t c = hol_face_decode(s, n, &pos);
+        if (!((c >= 0x20 && c <= 0x7e) || (c >= 0xa0 && c <= 0xff))) {
+            if (out_code)
+                *out_code = c;
+            return at;
+        }
+    }
+    return n;
+}
+
 int hol_face_index(uint32_t code)
 {
     if (code >= 0x20 && code <= 0x7E)

@@ -34,6 +34,12 @@
  *   the width alone is split between code points (at least one per line);
  *   '\n' ends a line. Lines are byte ranges of the input. A prompt's
  *   pairs are kept whole where they fit (hol_face_wrap_pairs).
+ * - hol_face_text_bad(s, n, &code) checks a designer's text (a level's or
+ *   a study's instructions, closing and questions: docs/levels.md): the
+ *   offset of its first code point that is neither printable ASCII
+ *   (U+0020..U+007E) nor a Latin-1 letter or sign (U+00A0..U+00FF), with
+ *   that code point (HOL_FACE_MALFORMED for a malformed byte) in *code;
+ *   n when every one is: the text draws with no box and no control.
  */
 #ifndef HOL_FACE_H
 #define HOL_FACE_H
@@ -82,6 +88,9 @@ float hol_face_em_per_cap(void);
 
 /* Reads the code point at text[*pos] (pos < len), advances *pos past it. */
 uint32_t hol_face_decode(const char *text, size_t len, size_t *pos);
+/* The first code point of s (n bytes) the face does not print (see the
+ * contract): its offset, or n. */
+size_t hol_face_text_bad(const char *s, size_t n, uint32_t *out_code);
 /* The glyph index of a code point (0, the box, when it has none). */
 int hol_face_index(uint32_t code);
 const hol_face_glyph *hol_face_glyph_at(int index);

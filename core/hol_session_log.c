@@ -311,6 +311,8 @@ static void hol__events(hol_session *s, const hol_app_events *ev, const hol_app_
         hol__event_row(s, "minimap", place, v->hud.elapsed_s);
     if (ev->minimap_refused)
         hol__event_row(s, "minimap-fixed", place, v->hud.elapsed_s);
+    if (ev->hint)
+        hol__event_row(s, "hint", "lesson6", v->hud.elapsed_s);
     if (ev->relocated) {
         char m[32];
         snprintf(m, sizeof m, "%.3f", ev->relocated_m);

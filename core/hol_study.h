@@ -28,7 +28,8 @@
  *                             shown before the first level of the practice
  *                             or the condition until confirm (a level line,
  *                             hol_app_level.instructions: the rest of the
- *                             line, printable ASCII, at most 6 lines of 46
+ *                             line, printable ASCII and Latin-1 in UTF-8,
+ *                             at most 6 lines of 46
  *                             characters when wrapped; checked as a level
  *                             line)
  *     question ID ...         before the first condition: a questionnaire
