@@ -1081,3 +1081,12 @@ hol_err hol_study_make_level(const hol_study *s, int i, int position, const char
     }
     return hol__make_at(s, i, position, file, len, name, out, err, out_in_study);
 }
+
+int hol_study_participant_same(const char *logged, const char *id)
+{
+    char spelled[HOL_REC_ID_MAX];
+    if (!strcmp(logged, id))
+        return 1;
+    return hol_study_participant_id(logged, spelled, sizeof spelled) == HOL_STUDY_ID_RENAMED &&
+           !strcmp(spelled, id);
+}

@@ -233,6 +233,10 @@ uint64_t hol_study_participant_number(const char *id);
  * spelling is longer than cap - 1 bytes. Pure; O(length). */
 enum { HOL_STUDY_ID_SAME, HOL_STUDY_ID_RENAMED, HOL_STUDY_ID_AMBIGUOUS };
 int hol_study_participant_id(const char *id, char *out, size_t cap);
+/* 1 when a participant id read from logs (logged) names the participant
+ * id (in its one spelling): equal once logged is in its spelling (logs
+ * written before the rule may hold "2" or "p2" for "P02"); else 0. */
+int hol_study_participant_same(const char *logged, const char *id);
 
 /* Level i of the study made for a session (hol_level_make): from the level
  * file's text (file, len; NULL for a condition without a file), its set

@@ -12,6 +12,7 @@
 #include "../../core/hol_report.h"
 #include "../../core/hol_session.h"
 #include "../../core/hol_sha256.h"
+#include "../../core/hol_study.h"
 #include "../file/hol_lines.h"
 #include "cli.h"
 #include "summary_read.h"
@@ -100,7 +101,7 @@ static int resume_row(void *ctx, const hol_report_attempt *a, long line)
 {
     resume_ctx *c = ctx;
     (void)line;
-    if (!strcmp(a->study, c->study) && play_study_same_participant(a->participant, c->participant))
+    if (!strcmp(a->study, c->study) && hol_study_participant_same(a->participant, c->participant))
         resume_add(c->r, c->levels, c->n, a, c->is_summary);
     return 0;
 }
@@ -238,7 +239,7 @@ static int resume_answers(const char *cmd, const char *dir, int answers, const c
             ok &= col[c] >= 0 && col[c] < nf;
             g[c] = ok ? f[col[c]] : "";
         }
-        int k = ok && play_study_same_participant(g[RC_PART], participant)
+        int k = ok && hol_study_participant_same(g[RC_PART], participant)
                     ? resume_find(r, g[RC_SESSION], g[RC_ATTEMPT])
                     : -1;
         if (k >= 0 && !answers)

@@ -152,15 +152,6 @@ int play_study_levels(const char *cmd, const char *path, const char *participant
     return 0;
 }
 
-int play_study_same_participant(const char *logged, const char *id)
-{
-    char spelled[HOL_REC_ID_MAX];
-    if (!strcmp(logged, id))
-        return 1;
-    return hol_study_participant_id(logged, spelled, sizeof spelled) == HOL_STUDY_ID_RENAMED &&
-           !strcmp(spelled, id);
-}
-
 /* A row of the study and participant counted (summary_read's fn). */
 typedef struct study_rows {
     const char *study, *participant;
@@ -171,7 +162,7 @@ static int study_row(void *ctx, const hol_report_attempt *a, long line)
 {
     study_rows *c = ctx;
     (void)line;
-    c->rows += !strcmp(a->study, c->study) && play_study_same_participant(a->participant, c->participant);
+    c->rows += !strcmp(a->study, c->study) && hol_study_participant_same(a->participant, c->participant);
     return 0;
 }
 

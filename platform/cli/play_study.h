@@ -36,11 +36,6 @@ int play_study_levels(const char *cmd, const char *path, const char *participant
                       char study_name[HOL_REC_ID_MAX]);
 void play_study_announce(void);
 
-/* 1 when a participant id read from the logs (logged) names the participant
- * id (--participant in its spelling): equal once logged is in its spelling
- * (hol_study_participant_id; logs written before the rule may hold "2" or
- * "p2" for "P02"). */
-int play_study_same_participant(const char *logged, const char *id);
 
 /* A participant who already has data is not started again unasked (issue
  * 26): with --append, when log_dir's summary.csv has a row of this study

@@ -524,3 +524,9 @@ int rs_read_instruments(report_run *r)
     free(c);
     return st;
 }
+
+int report_stats_read(report_run *r)
+{
+    int st = rs_read_trials(r);
+    return st ? st : rs_read_done(r, rs_read_instruments(r));
+}

@@ -414,7 +414,9 @@ static int alloc_stats(report_run *r)
     return 0;
 }
 
-int report_stats_read(report_run *r)
+/* report_stats_read's first part (report_answers.c runs the three): the
+ * trials' figures. */
+int rs_read_trials(report_run *r)
 {
     int st = alloc_stats(r);
     report_stats *s = r->stats;
@@ -447,7 +449,14 @@ int report_stats_read(report_run *r)
         if (eff >= 0)
             hol_stats_add(&f[RS_EFF], eff);
     }
-    st = rs_read_instruments(r);
+    return 0;
+}
+
+/* report_stats_read's last part, after the questionnaires and pointing
+ * were read with status st: the warnings, learning and participants. */
+int rs_read_done(report_run *r, int st)
+{
+    report_stats *s = r->stats;
     if (!st && s->lik_dropped)
         fprintf(stderr, "holonomy %s: warning: more than %d Likert items and conditions: "
                         "%ld answers not in stats.csv\n", r->cmd, RS_LIK_MAX, s->lik_dropped);

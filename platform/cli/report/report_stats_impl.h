@@ -108,5 +108,9 @@ static inline int rs_first(int c1, int c2, int c3)
 /* report_answers.c: every LOGDIR's points.csv and answers.csv read into
  * r->stats (0, or an exit status after one line). */
 int rs_read_instruments(report_run *r);
+/* report_stats_read in parts (report_stats.c): the trials' figures, then,
+ * after rs_read_instruments, the rest with its status. */
+int rs_read_trials(report_run *r);
+int rs_read_done(report_run *r, int st);
 
 #endif
