@@ -74,7 +74,8 @@ struct hol_app {
     int stage_steps;
     int stage_optimum;       /* the lesson's fewest steps from its start */
     double stage_t0;         /* the level time it began */
-    int face_pending;        /* a lesson began: a pancake view turns ... */
+    int face_pending;        /* a lesson began: a pancake view turns, once the
+                              * walk axes are zero, ... */
     double face_yaw;         /* ... to this yaw, facing what it names */
     int has_target;          /* the stage has a target tile */
     hol_tile target;

@@ -684,9 +684,13 @@ static hol_err hol__move(hol_app *app, const hol_input *in, double t0, double dt
     }
     if (in->flags & HOL_INPUT_SNAP_YAW)
         app->mo.yaw_deg = in->snap_yaw_deg;
-    if (app->face_pending) /* a lesson began: face what it names */
+    /* a lesson began: face what it names, once the walk keys are let go
+     * (a key still held from the last lesson's step would walk on along
+     * the new look) */
+    if (app->face_pending && in->move[0] == 0 && in->move[1] == 0) {
         app->mo.yaw_deg = app->face_yaw;
-    app->face_pending = 0;
+        app->face_pending = 0;
+    }
     if (dt > HOL__STALL_S)
         return HOL_OK;
     int n = (int)ceil(dt / HOL__SUBSTEP - 1e-9);
