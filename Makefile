@@ -684,6 +684,9 @@ FORCE:
 
 $(BUILD)/web-obj/render/hol_program.o: $(GLSL_H)
 $(BUILD)/web-obj/render/hol_program.o: WEB_CFLAGS += -I$(BUILD)/gen
+# the page shows no worksheet: the lessons' worksheet texts are left out
+# (core/hol_lesson_text.c; the transfer size, docs/web.md)
+$(BUILD)/web-obj/core/hol_lesson_text.o: WEB_CFLAGS += -DHOL_LESSON_APP_ONLY
 
 $(BUILD)/web-obj/%.o: %.c $(WEB_STAMP)
 	@mkdir -p $(dir $@)

@@ -153,6 +153,10 @@ enum hol_app_minimap_place { HOL_MINIMAP_HUD = 0, HOL_MINIMAP_HAND = 1, HOL_MINI
  * more than desc.stray_steps. The level as a whole is not scored (optimum
  * -1: its lessons begin where the player ends the one before). */
 #define HOL_APP_TUTORIAL_STAGES 4
+/* Most room steps of a lesson's route (hol_app_level.route), and the HUD's
+ * objective while one is walked (the marker K of N). */
+#define HOL_APP_ROUTE_MAX 32
+#define HOL_APP_ROUTE_TEXT "Follow the markers %d/%d"
 
 /* A screen of text (hol_app_level.instructions, .closing): printable
  * ASCII (the HUD's font), at most HOL_APP_SCREEN_TEXT - 1 bytes, wrapped
@@ -265,6 +269,16 @@ typedef struct hol_app_level {
     hol_app_question questions[HOL_APP_MAX_QUESTIONS];
     int nasks;
     hol_app_ask asks[HOL_APP_MAX_ASKS];
+    /* A lesson (level line `lesson N`, core/hol_lesson.h; 0: none). Its
+     * walk is the route: room steps from the level's start, inside the
+     * room. In mode explore a route (nroute > 0) is the level's task: a
+     * marker (HOL_APP_OBJ_MARKER) stands on the tile its next step reaches
+     * and the HUD says "Follow the markers K/N"; a room step onto that
+     * tile (by any way) moves the marker on, and the last one completes
+     * the level (not scored: optimum -1). nroute 0 plays as before. */
+    int lesson;
+    uint8_t route[HOL_APP_ROUTE_MAX];
+    int nroute;
 } hol_app_level;
 
 typedef struct hol_app_desc {

@@ -101,6 +101,10 @@ struct hol_app {
     int ask_fresh;           /* hol_app_ask_from: the item comes up at the
                                 next frame (its time, its look) */
     int ask_before;          /* the `before` asks (the level not begun) */
+    /* a lesson's route (level.route): its tiles from the level's start,
+     * and the next one to enter (route_k == level.nroute: done) */
+    hol_tile route_tiles[HOL_APP_ROUTE_MAX];
+    int route_k;
     uint8_t walk[HOL_NAV_WALK_MAX]; /* replan scratch */
     int nwalk;
 };

@@ -249,6 +249,15 @@ static void hol__enter(hol_app *app, const hol_room *r)
     const hol_app_level *L = &app->level;
     if (L->mode == HOL_APP_TUTORIAL)
         hol__tutorial_enter(app, r);
+    if (L->mode == HOL_APP_EXPLORE && app->route_k < L->nroute &&
+        hol_tile_eq(r->tile, app->route_tiles[app->route_k])) {
+        hol_tile placed; /* the next marker on a free tile, as the tutorial's */
+        if (++app->route_k == L->nroute)
+            app->done = 1;
+        else
+            (void)hol_world_reserve(app->world, app->route_tiles[app->route_k], 0, HOL_OBJ_FLAG,
+                                    &placed);
+    }
     if (L->mode == HOL_APP_FLAG && hol_tile_eq(r->tile, L->flag))
         app->done = 1;
     if (L->mode == HOL_APP_KEYS) {
@@ -273,6 +282,26 @@ static void hol__summary(hol_app *app, hol_app_end end)
     s->time_s = app->level_t;
     s->end = end;
     app->ev.level_ended = end;
+}
+
+/* A lesson's route from r: its tiles (a step leaving the room is a bad
+ * level), the first marker reserved. */
+static hol_err hol__route_begin(hol_app *app, const hol_room *r)
+{
+    const hol_app_level *L = &app->level;
+    hol_room at = *r;
+    app->route_k = 0;
+    if (L->nroute < 0 || L->nroute > HOL_APP_ROUTE_MAX || (L->nroute && L->mode != HOL_APP_EXPLORE))
+        return HOL_EARG;
+    for (int i = 0; i < L->nroute; i++) {
+        if (hol_room_step(&at, L->route[i]))
+            return HOL_EARG;
+        app->route_tiles[i] = at.tile;
+    }
+    hol_tile placed;
+    if (L->nroute)
+        (void)hol_world_reserve(app->world, app->route_tiles[0], 0, HOL_OBJ_FLAG, &placed);
+    return HOL_OK;
 }
 
 static hol_err hol__begin(hol_app *app)
@@ -355,6 +384,8 @@ static hol_err hol__begin(hol_app *app)
     app->rings_note = 0;
     app->has_tree = 0;
     app->nmarks = 0;
+    if ((err = hol__route_begin(app, &r)))
+        return err;
     if (L->mode == HOL_APP_TUTORIAL)
         hol__stage(app, hol__next_stage(app, 0), &r);
     hol__point_begin(app);

@@ -79,7 +79,13 @@ static void hol__fill_objective(const hol_app *app, hol_app_hud *h)
     case HOL_APP_TUTORIAL:
         snprintf(h->objective, sizeof h->objective, "%s", lesson[app->stage]);
         break;
-    default: snprintf(h->objective, sizeof h->objective, "Explore"); break;
+    default:
+        if (app->level.nroute)
+            snprintf(h->objective, sizeof h->objective, HOL_APP_ROUTE_TEXT,
+                     app->route_k + (app->route_k < app->level.nroute), app->level.nroute);
+        else
+            snprintf(h->objective, sizeof h->objective, "Explore");
+        break;
     }
 }
 
@@ -323,6 +329,8 @@ static void hol__fill_map(hol_app *app)
         m->objectives[m->nobjectives++] = L->flag;
     if (L->mode == HOL_APP_TUTORIAL && !app->done && app->has_target)
         m->objectives[m->nobjectives++] = app->target;
+    if (app->route_k < L->nroute && !app->done)
+        m->objectives[m->nobjectives++] = app->route_tiles[app->route_k];
     if (L->mode == HOL_APP_KEYS && !app->done) {
         for (int k = 0; k < L->nkeys; k++)
             if (!(app->keys_held >> k & 1))
@@ -339,6 +347,9 @@ static void hol__fill_map(hol_app *app)
     if (L->mode == HOL_APP_TUTORIAL && app->has_target && !app->done)
         v->objects[v->nobjects++] = (hol_app_object){
             app->target, app->stage == 3 ? HOL_APP_OBJ_FLAG : HOL_APP_OBJ_MARKER};
+    if (app->route_k < L->nroute && !app->done)
+        v->objects[v->nobjects++] =
+            (hol_app_object){app->route_tiles[app->route_k], HOL_APP_OBJ_MARKER};
     v->tree_marked = L->mode == HOL_APP_TUTORIAL && app->stage == 1 && app->has_tree && !app->done;
     v->tree_vertex[0] = v->tree_marked ? app->tree[0] : 0;
     v->tree_vertex[1] = v->tree_marked ? app->tree[1] : 0;

@@ -5,6 +5,7 @@
 
 #include <string.h>
 
+#include "hol_lesson.h"
 #include "hol_room.h"
 #include "hol_tile.h"
 
@@ -321,5 +322,22 @@ hol_err hol__key_cell(hol__lp *p, char **f, int nf)
         return hol__lfail(p, e, p->line,
                           "cell needs metres from 0.5 to 1.5 (at most 3 decimals), not '%.20s'",
                           f[1]);
+    return HOL_OK;
+}
+
+/* lesson N: lesson N of core/hol_lesson.h in the level's tiling (its mode,
+ * route, predict question, instructions, pointing and check); the lines
+ * it sets are refused beside it (hol_level_parse.c). */
+hol_err hol__key_lesson(hol__lp *p, char **f, int nf)
+{
+    (void)nf;
+    uint64_t n = hol__lv_count(f[1]);
+    if (!n || n > HOL_LESSONS)
+        return hol__lfail(p, HOL_ERANGE, p->line, "lesson '%.20s' is not a lesson 1..%d", f[1],
+                          HOL_LESSONS);
+    if (hol_lesson_fill((int)n, hol__lv_q(p), &p->L))
+        return hol__lfail(p, HOL_ERANGE, p->line, "lesson %d does not fit its screens",
+                          (int)n);
+    p->have_mode = p->line;
     return HOL_OK;
 }

@@ -54,6 +54,7 @@ static const struct {
     {"tiling", 3, 3, HOL__GEO, hol__key_tiling},
     {"room", 3, 3, HOL__GEO, hol__key_room},
     {"cell", 2, 2, HOL__GEO, hol__key_cell},
+    {"lesson", 2, 2, 0, hol__key_lesson},
     HOL_LEVEL_MORE_KEYS
 };
 _Static_assert(sizeof hol__keys / sizeof hol__keys[0] <= 32, "hol__lp.key_line holds every key");
@@ -137,6 +138,33 @@ static hol_err hol__line(hol__lp *p, const char *s, size_t n)
     return hol__lfail(p, HOL_EPARSE, p->line, "unknown key or wrong value count: '%.20s'", f[0]);
 }
 
+/* A lesson level (`lesson N`) sets its mode, route, questions, screens and
+ * pointing itself: a line that would set them too is refused, naming the
+ * lesson's line. */
+static hol_err hol__lesson_alone(hol__lp *p)
+{
+    static const char *const own[] = {"mode",         "start",         "flag",     "chest",
+                                      "keys",         "flag-distance", "keys-distance",
+                                      "chest-distance", "stages",      "point",    "instructions",
+                                      "closing",      "question",      "ask"};
+    long lesson = 0;
+    for (size_t k = 0; k < sizeof hol__keys / sizeof hol__keys[0]; k++)
+        if (!strcmp(hol__keys[k].key, "lesson"))
+            lesson = p->key_line[k];
+    if (!lesson)
+        return HOL_OK;
+    for (size_t k = 0; k < sizeof hol__keys / sizeof hol__keys[0]; k++)
+        for (size_t j = 0; j < sizeof own / sizeof own[0]; j++)
+            if (p->key_line[k] && !strcmp(hol__keys[k].key, own[j])) {
+                hol__lfail(p, HOL_EARG, p->key_line[k],
+                           "a lesson level sets its own '%s': drop this line", own[j]);
+                if (p->err)
+                    p->err->other = lesson;
+                return HOL_EARG;
+            }
+    return HOL_OK;
+}
+
 /* ---- the API ------------------------------------------------------------------ */
 
 hol_err hol_level_parse(const char *text, size_t len, hol_app_level *out, hol_level_err *err)
@@ -176,7 +204,9 @@ hol_err hol_level_parse(const char *text, size_t len, hol_app_level *out, hol_le
             s = nl ? nl + 1 : end;
         }
     }
-    hol_err e = hol__lv_finish(&p);
+    hol_err e = hol__lesson_alone(&p);
+    if (!e)
+        e = hol__lv_finish(&p);
     if (e)
         return e;
     *out = p.L;

@@ -234,6 +234,7 @@ int cli_help(const char *cmd, int argc, char **argv, const char *const *valued,
     extern const char *const cli_##name##_valued[];
 CLI__HELP(tile) CLI__HELP(world) CLI__HELP(nav) CLI__HELP(tour) CLI__HELP(render) CLI__HELP(play)
 CLI__HELP(game) CLI__HELP(replay) CLI__HELP(hid) CLI__HELP(xr) CLI__HELP(props)
+CLI__HELP(lesson)
 #undef CLI__HELP
 int cli_cmd_tile(int argc, char **argv);
 int cli_cmd_world(int argc, char **argv);
@@ -247,5 +248,6 @@ int cli_cmd_hid(int argc, char **argv);
 int cli_cmd_xr(int argc, char **argv);
 int cli_cmd_report(int argc, char **argv);
 int cli_cmd_props(int argc, char **argv);
+int cli_cmd_lesson(int argc, char **argv);
 
 #endif

@@ -19,9 +19,9 @@ const char *const cli_game_usage =
     "tracked head at the cell centres). Prints per line\n"
     "  done STEPS OPTIMUM   the steps until the level was complete\n"
     "  open STEPS OPTIMUM   all of the line's steps; not complete\n"
-    "OPTIMUM is the fewest room steps that complete the level (-1 for explore\n"
-    "and the tutorial, which are not scored). Steps after completion are\n"
-    "ignored. A step that leaves the room is bad input.\n"
+    "OPTIMUM is the fewest room steps that complete the level (-1 for explore,\n"
+    "the tutorial and lessons, which are not scored; a lesson plays its walk,\n"
+    "not its question and screens). Steps after completion are ignored. A step that leaves the room is bad input.\n"
     "\n"
     PLAY_GEOMETRY_USAGE
     "\n"
@@ -155,6 +155,11 @@ int cli_cmd_game(int argc, char **argv)
         rs = play_geometry_apply(cmd, &geo, &L, 1);
     if (rs)
         return rs;
+    if (L.lvl.lesson) { /* a lesson's walk alone: its question and screens are play's */
+        L.lvl.instructions[0] = L.lvl.closing[0] = 0;
+        L.lvl.nasks = 0;
+        L.lvl.point = HOL_APP_POINT_NONE;
+    }
     hol_app_desc d;
     memset(&d, 0, sizeof d);
     d.lazy_nav = 1; /* headless: tables when first needed */

@@ -31,7 +31,8 @@
 #include "play_track.h"
 
 const char *const cli_play_usage =
-    "usage: holonomy play [LEVEL | --mode tutorial|flag|keys|explore | --study FILE]\n"
+    "usage: holonomy play [LEVEL | --mode tutorial|flag|keys|explore | --lesson N |\n"
+    "                      --study FILE]\n"
     "                     [--seed S] [--log DIR [--append [--restart-participant]]] [--participant ID]\n"
     "                     [--resume] [--session N] [--meta KEY=VALUE]...\n"
     "                     [--record FILE]\n"
@@ -64,6 +65,9 @@ const char *const cli_play_usage =
     "or a key is used. Prompts name the buttons of what was used last.\n"
     "\n"
     "  --mode M        tutorial (four lessons), flag, keys or explore\n"
+    "  --lesson N      a lesson for a class, 1..6 (docs/teaching.md): predict,\n"
+    "                  walk, check; the level 'lesson N' (with --tiling 4,4 the\n"
+    "                  flat comparison)\n"
     "  --study FILE    play a study's conditions in the order of the participant's\n"
     "                  number (--participant P07: 7; README: Study designs):\n"
     "                  its practice levels, then each condition's levels; the\n"
@@ -130,6 +134,7 @@ typedef struct play_opts {
     long frames;
     int w, h, use_pad, append, snap_deg, stats, restart_participant, resume, mute;
     int track_hz; /* --track-hz; 0: not given (10) */
+    int lesson;   /* --lesson N; 0: none */
     double volume;
     play_env env; /* --session, --meta */
     char participant_id[HOL_REC_ID_MAX]; /* --participant in its spelling */
@@ -209,6 +214,8 @@ static int play_value(const char *cmd, const char *a, const char *val, play_opts
         return cli_volume_value(cmd, val, &o->volume) ? 1 : 0;
     } else if (!strcmp(a, "--track-hz")) {
         return play_track_value(cmd, val, &o->track_hz);
+    } else if (!strcmp(a, "--lesson")) {
+        return play_lesson_value(cmd, val, &o->lesson);
     }
     return 0;
 }
@@ -216,7 +223,7 @@ static int play_value(const char *cmd, const char *a, const char *val, play_opts
 const char *const cli_play_valued[] = {"--mode",  "--seed",  "--log",  "--record",
                                           "--frames", "--input", "--size", "--gamepad-replay",
                                           "--participant", "--snap-turn", "--study",
-                                          "--volume", "--track-hz", PLAY_GEOMETRY_OPTIONS, PLAY_ENV_OPTIONS, NULL};
+                                          "--volume", "--track-hz", "--lesson", PLAY_GEOMETRY_OPTIONS, PLAY_ENV_OPTIONS, NULL};
 
 /* The options that only store their value or set a flag. */
 static const cli_store play_store[] = {
@@ -273,6 +280,10 @@ static int play_options(const char *cmd, int argc, char **argv, play_opts *o)
 #undef G
     if (play_opts_check(cmd, given, &o->env, o->log_dir, o->track_hz))
         return CLI_EXIT_USAGE;
+    if (o->lesson && (o->level_path || o->mode || o->study)) {
+        cli_error(cmd, 0, "--lesson plays one lesson: give no LEVEL, --mode or --study with it");
+        return CLI_EXIT_USAGE;
+    }
     o->append |= o->resume;
     const cli_path in[] = {{"LEVEL", o->level_path}, {"--input", o->input_path},
                            {"--gamepad-replay", o->pad_script}, {"--study", o->study}};
@@ -298,6 +309,8 @@ static int play_prepare_files(play_ctx *c)
                                o->append && !o->restart_participant && !o->resume
                                    ? o->log_dir : NULL,
                                &outs, c->levels, &c->nlevels, c->study);
+    else if (!st && o->lesson)
+        st = play_lesson_level(c->cmd, o->lesson, c->levels, &c->nlevels);
     else if (!st)
         st = play_levels(c->cmd, o->level_path, o->mode, o->seed, &o->geo, c->levels,
                              &c->nlevels);

@@ -30,6 +30,7 @@ static const cli_command commands[] = {
     CLI__CMD(xr, "the headset app on this machine's OpenXR runtime (make XR=1)"),
     CLI__CMD(hid, "game controllers: descriptor field maps, list, watch"),
     CLI__CMD(props, "a printable plan of where real hedges and trees stand (SVG)"),
+    CLI__CMD(lesson, "a lesson's A4 worksheet or answer key (SVG or HTML)"),
     {"report", cli_cmd_report, "research logs to a report: attempts CSV, pictures, a page",
      NULL, NULL},
 };

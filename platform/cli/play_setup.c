@@ -17,6 +17,7 @@
 
 #include "../../core/hol_campaign.h"
 #include "../../core/hol_input_io.h"
+#include "../../core/hol_lesson.h"
 #include "../../core/hol_study.h"
 #include "../../core/hol_text.h"
 #include "../file/hol_file.h"
@@ -85,6 +86,34 @@ int play_geometry_apply(const char *cmd, const play_geometry *g, hol_level *leve
         }
     }
     play_prov_order_hash(levels, n); /* order.csv's hashes: the texts are final */
+    return 0;
+}
+
+int play_lesson_value(const char *cmd, const char *val, int *out)
+{
+    size_t n = cli_parse_count(val);
+    if (!n || n > HOL_LESSONS) {
+        cli_error(cmd, 0, "--lesson '%.40s' is not a lesson 1..%d", val, HOL_LESSONS);
+        return 1;
+    }
+    *out = (int)n;
+    return 0;
+}
+
+int play_lesson_level(const char *cmd, int n, hol_level *levels, int *nlevels)
+{
+    char name[32], text[32];
+    snprintf(name, sizeof name, "lesson-%d", n);
+    snprintf(text, sizeof text, "lesson %d\n", n);
+    hol_level_err le;
+    *nlevels = 0;
+    if (hol_level_make(name, strlen(name), text, strlen(text), &levels[0], &le)) {
+        char msg[300];
+        cli_error(cmd, 0, "cannot make lesson %d: %s", n,
+                  hol_level_err_format(&le, 1, msg, sizeof msg));
+        return CLI_EXIT_FAIL;
+    }
+    *nlevels = 1;
     return 0;
 }
 

@@ -82,6 +82,10 @@ typedef struct play_geometry {
     "                  otherwise\n"
 int play_geometry_value(const char *cmd, const char *opt, const char *val, play_geometry *g);
 int play_geometry_apply(const char *cmd, const play_geometry *g, hol_level *levels, int n);
+/* --lesson N (1..HOL_LESSONS): 0 ok, else 1 with one line. */
+int play_lesson_value(const char *cmd, const char *val, int *out);
+/* The level 'lesson N' named lesson-N (core/hol_lesson.h). */
+int play_lesson_level(const char *cmd, int n, hol_level *levels, int *nlevels);
 int play_levels(const char *cmd, const char *level_path, const char *mode, uint64_t seed,
                 const play_geometry *g, hol_level *levels, int *nlevels);
 

@@ -8,7 +8,8 @@
 // beside the page), study=URL (a study file: its level files are fetched
 // from beside it, and the participant's number, from participant=P07,
 // gives the order of its conditions: README, Study designs),
-// participant=ID (the logs' participant), snap=DEG (snap turn on the
+// lesson=N (lesson N for a class, 1..6, as `holonomy play --lesson N`; the
+// bar's lesson list loads it), participant=ID (the logs' participant), snap=DEG (snap turn on the
 // Left/Right keys), tiling=4,Q room=CxR cell=M (every level's geometry, as
 // play's --tiling/--room/--cell), haptics=0 (no controller pulses in VR, as
 // holonomy xr --no-haptics), track_hz=N (the logs' track rows N times a
@@ -294,6 +295,13 @@
       }));
     });
   }
+  // the lesson list: the chosen lesson on the next load (its geometry kept)
+  $('lessons').onchange = function () {
+    var u = new URL(location.href);
+    ['mode', 'seed', 'level', 'levelfile', 'study'].forEach(function (k) { u.searchParams.delete(k); });
+    u.searchParams.set('lesson', this.value);
+    location.href = u.href;
+  };
   var saved = params.has('levelfile') && sessionStorage.getItem('holonomy-level');
   if (params.has('study')) {
     loadStudy(params.get('study')).then(start).catch(function (e) {
@@ -304,6 +312,10 @@
     var lv = JSON.parse(saved);
     config.level = lv.text;
     config.levelName = levelName(lv.name);
+    start();
+  } else if (/^[1-6]$/.test(params.get('lesson') || '')) {
+    config.level = 'lesson ' + params.get('lesson') + '\n';
+    config.levelName = 'lesson-' + params.get('lesson');
     start();
   } else if (params.has('level')) {
     var url = params.get('level');
