@@ -16,7 +16,8 @@
  *   device.
  *   HOL_DEVICE_NONE names the action itself ("CONFIRM", "MENU", ...).
  * - hol_prompt_move(device) says how one walks with it ("W/S/A/D: WALK");
- *   NULL for HOL_DEVICE_NONE.
+ *   NULL for HOL_DEVICE_NONE. hol_prompt_seated(device) names seated play
+ *   and its step controls.
  * - The tables must follow the bindings: tests/test_xr_bind.c derives each
  *   XR word from the profile's binding path and compares.
  * - Pure data: static strings, no state.
@@ -28,5 +29,9 @@
 
 const char *hol_prompt_button(uint32_t device, uint32_t btn);
 const char *hol_prompt_move(uint32_t device);
+/* Seated play (HOL_INPUT_SEATED): the panel's line naming the mode and
+ * how one steps with the device ("SEATED: W/S/A/D OR ARROWS: ONE STEP");
+ * never NULL. */
+const char *hol_prompt_seated(uint32_t device);
 
 #endif
