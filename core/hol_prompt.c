@@ -65,7 +65,7 @@ const char *hol_prompt_move(uint32_t device)
 const char *hol_prompt_seated(uint32_t device)
 {
     switch (device) {
-    case HOL_DEVICE_KEYBOARD: return "SEATED: W/S/A/D OR ARROWS: ONE STEP";
+    case HOL_DEVICE_KEYBOARD: return "SEATED: W/A/S/D OR UP/DOWN: ONE STEP";
     case HOL_DEVICE_GAMEPAD: return "SEATED: LEFT STICK OR D-PAD: ONE STEP";
     case HOL_DEVICE_NONE: return "SEATED: SWIPE OR ARROWS: ONE STEP";
     case HOL_DEVICE_WEBXR_HAND:

@@ -30,7 +30,7 @@
 const char *hol_prompt_button(uint32_t device, uint32_t btn);
 const char *hol_prompt_move(uint32_t device);
 /* Seated play (HOL_INPUT_SEATED): the panel's line naming the mode and
- * how one steps with the device ("SEATED: W/S/A/D OR ARROWS: ONE STEP");
+ * how one steps with the device ("SEATED: W/A/S/D OR UP/DOWN: ONE STEP");
  * never NULL. */
 const char *hol_prompt_seated(uint32_t device);
 
