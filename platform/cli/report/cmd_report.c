@@ -404,6 +404,8 @@ static int run(report_run *r, report_buf *b)
 int cli_cmd_report(int argc, char **argv)
 {
     const char *cmd = "report";
+    if (argc > 1 && !strcmp(argv[1], "--class"))
+        return report_class_main(cmd, argc, argv);
     if (cli_wants_help(argc, argv, report_valued)) {
         fputs(report_usage, stdout);
         return cli_finish_output(cmd);
