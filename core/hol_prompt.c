@@ -69,7 +69,7 @@ const char *hol_prompt_seated(uint32_t device)
     case HOL_DEVICE_GAMEPAD: return "SEATED: LEFT STICK OR D-PAD: ONE STEP";
     case HOL_DEVICE_NONE: return "SEATED: SWIPE OR ARROWS: ONE STEP";
     case HOL_DEVICE_WEBXR_HAND:
-    case HOL_DEVICE_XR_HAND: return "SEATED: PINCH AND SWIPE: ONE STEP";
+    case HOL_DEVICE_XR_HAND: return "SEATED: A THUMBSTICK: ONE STEP";
     default: return "SEATED: THUMBSTICK: ONE STEP";
     }
 }
