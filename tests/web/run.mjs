@@ -268,6 +268,80 @@ await check('lessons: a pupil with keys completes every lesson on the page, in {
   }
 });
 
+// ---- seated play and a class's tests (issue 37; docs/teaching.md) ---------
+// Lesson 1 {4,5} seated: one push of W, D, S, A a step (held keys take one
+// step each); then with touch, the on-screen arrows; the panel names the
+// mode, the recording replays on the desktop to the same summary and steps.
+// The pre-test and post-test with keys; the stored answers, read by
+// `holonomy report --class`, give the rates of what was entered.
+await check('seated: lesson 1 with keys and with the on-screen arrows, one room step a push; the recording replays on the desktop; the class tests with keys, report --class over the stored answers', async () => {
+  for (const how of ['keys', 'touch']) {
+    const what = `seated lesson 1 (${how})`;
+    const p = await openPage('?lesson=1&seated=1');
+    if (how === 'touch') await p.page.evaluate(() => document.body.classList.add('touch'));
+    assert(await p.page.evaluate(() => document.getElementById('seated').checked), what + ': the box');
+    await p.until(async () => (await p.state(S.APP_STATE)) === 6, what + ': the predict item');
+    await hold(p, 'ArrowRight');
+    await hold(p, 'Enter');
+    await p.until(async () => (await p.state(S.APP_STATE)) === 5, what + ': the instructions');
+    await hold(p, 'Enter');
+    await p.until(async () => (await p.state(S.APP_STATE)) === 1, what + ': playing');
+    const keys = { N: 'KeyW', E: 'KeyD', S: 'KeyS', W: 'KeyA' }, bits = { N: 256, E: 2048, S: 512, W: 1024 };
+    for (const [i, d] of ['N', 'E', 'S', 'W'].entries()) {
+      if (how === 'keys') await hold(p, keys[d], 400); /* held 0.4 s: still one step */
+      else await p.page.click(`#steps button[data-btn="${bits[d]}"]`);
+      await p.until(async () => (await p.state(S.STEPS)) >= i + 1, `${what}: step ${i + 1}`);
+      await sleep(300);
+      assert((await p.state(S.STEPS)) === i + 1, `${what}: more than one step a push`);
+    }
+    for (const st of [2, 5]) {
+      await p.until(async () => (await p.state(S.APP_STATE)) === st, `${what}: state ${st}`);
+      await hold(p, 'Enter');
+    }
+    await p.until(async () => (await p.state(S.OVER)) === 1, what + ': the session over');
+    const names = await p.page.evaluate(() => window.holonomyStore.names());
+    const rec = names.find((n) => /\.rec$/.test(n));
+    const dir = path.join(OUT, 'seated-' + how);
+    fs.rmSync(dir, { recursive: true, force: true });
+    fs.mkdirSync(dir);
+    const recText = await stored(p.page, rec);
+    assert(/ f=80[0-9a-f] /.test(recText.toString('utf8')), what + ': no seated record');
+    fs.writeFileSync(path.join(dir, 'browser.rec'), recText);
+    const r = spawnSync(HOLONOMY, ['replay', path.join(dir, 'browser.rec'), '--log', path.join(dir, 'logs')],
+      { encoding: 'utf8' });
+    assert(r.status === 0 && /^level lesson-1 done steps 4 /m.test(r.stdout), what + ': replay: ' + r.stdout + r.stderr);
+    for (const n of ['summary.csv', 'steps-001.csv', 'answers.csv']) {
+      const b = await stored(p.page, n);
+      assert(b.equals(fs.readFileSync(path.join(dir, 'logs', n))), `${what}: ${n} differs from the replay's`);
+    }
+    assert(!p.errors.length, what + ': errors: ' + p.errors.join('; '));
+    await p.ctx.close();
+  }
+  const cls = path.join(OUT, 'class');
+  fs.rmSync(cls, { recursive: true, force: true });
+  fs.mkdirSync(cls);
+  let i = 0;
+  for (const [quiz, presses] of [['pre', [1, -1, 2, 0]], ['post', [1, 0, 1, -2]]]) {
+    const what = `quiz ${quiz}`;
+    const p = await openPage(`?quiz=${quiz}&participant=P01`);
+    for (const n of presses) {
+      await p.until(async () => (await p.state(S.APP_STATE)) === 6, what + ': an item');
+      for (let k = 0; k < Math.abs(n); k++) await hold(p, n > 0 ? 'ArrowRight' : 'ArrowLeft');
+      await hold(p, 'Enter');
+    }
+    await p.until(async () => (await p.state(S.APP_STATE)) === 5, what + ': the screen');
+    await hold(p, 'Enter');
+    await p.until(async () => (await p.state(S.APP_STATE)) === 2, what + ': the end');
+    fs.writeFileSync(path.join(cls, `p01-${++i}.csv`), await stored(p.page, 'answers.csv'));
+    assert(!p.errors.length, what + ': errors: ' + p.errors.join('; '));
+    await p.ctx.close();
+  }
+  const r = spawnSync(HOLONOMY, ['report', '--class', cls, '--out', path.join(OUT, 'class-report')], { encoding: 'utf8' });
+  assert(r.status === 0 && /^report --class: 1 pupils, 1 with both tests/.test(r.stdout), 'report --class: ' + r.stdout + r.stderr);
+  const pupils = fs.readFileSync(path.join(OUT, 'class-report', 'class_pupils.csv'), 'utf8');
+  assert(pupils.includes('P01,0.7500000000,1.0000000000,0.2500000000'), 'class_pupils.csv: ' + pupils);
+});
+
 await check('a level file chosen on the page plays at the next load, the participant in the logs', async () => {
   const lv = path.join(testDir, 'my-flag.lvl');
   fs.writeFileSync(lv, 'mode flag\nseed 9\nflag-distance 3\n');
