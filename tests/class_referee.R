@@ -2,7 +2,9 @@
 # --class` (docs/teaching.md "A class's results"; tests/cli_class.sh runs
 # it): from the pupils' answer files alone (PUPILS/NAME.csv, or
 # PUPILS/NAME/answers.csv) and the keys the report names (class_items.csv's
-# right_answer; test_quiz checks the keys against the model) it recomputes
+# right_answer; test_quiz and test_lesson check the keys against the
+# model; a lesson's prediction is judged in its attempt's tiling from the
+# pupil folder's summary.csv, else {4,5}) it recomputes
 # each item's answered, right and rate, each pupil's pre and post score
 # (the share of the four items right, an item's last answer counting), the
 # gain's mean, SD and 95 % CI (qt), d_z, g_av = J * gain / mean(SD pre, SD
@@ -28,9 +30,12 @@ names <- sort(list.files(pupils_dir), method = "radix")
 rows <- NULL
 for (n in names) {
     p <- file.path(pupils_dir, n)
+    q <- NULL
     if (dir.exists(p)) {
         f <- file.path(p, "answers.csv")
         name <- n
+        sf <- file.path(p, "summary.csv")
+        if (file.exists(sf)) q <- rd(sf)
     } else if (grepl("\\.csv$", n)) {
         f <- p
         name <- sub("\\.csv$", "", n)
@@ -38,14 +43,22 @@ for (n in names) {
     if (!file.exists(f)) next
     a <- rd(f)
     a$pupil <- ifelse(a$participant == "", name, a$participant)
+    # a lesson's tiling: its attempt's in summary.csv, else {4,5}
+    a$q <- "5"
+    if (!is.null(q)) {
+        m <- match(paste(a$session, a$attempt), paste(q$session, q$attempt))
+        a$q[!is.na(m)] <- sub("^4,", "", q$tiling[m[!is.na(m)]])
+    }
     rows <- rbind(rows, a)
 }
-rows <- rows[rows$questionnaire %in% c("pretest", "posttest"), ]
+lesson <- rows$questionnaire == "predict" & grepl("^lesson[1-6]$", rows$item)
+rows$concept <- ifelse(lesson, rows$item, sub("_q[4-8]$", "", rows$item))
+rows$item[lesson] <- paste0(rows$item[lesson], "_q", rows$q[lesson])
+rows <- rows[rows$questionnaire %in% c("pretest", "posttest") | lesson, ]
 items <- rd(file.path(out, "class_items.csv"))
 rows$key <- paste(rows$questionnaire, rows$item)
 keys <- setNames(items$right_answer, paste(items$phase, items$item))
 rows <- rows[rows$key %in% names(keys), ]
-rows$concept <- sub("_q[4-8]$", "", rows$item)
 rows$right <- rows$value == keys[rows$key]
 # an item's last answer: the last row of a pupil, phase and concept
 last <- rows[!duplicated(paste(rows$pupil, rows$questionnaire, rows$concept), fromLast = TRUE), ]

@@ -4,10 +4,11 @@
 # (`quiz pre`, `quiz post`, one log folder each, --append), their answers
 # logged under pretest and posttest; twelve more pupils' files as the web
 # page downloads them (NAME.csv, some without a participant), one pupil who
-# answered an item twice, one with the pre-test only, a lesson's answer
-# (not a test's: left out); `holonomy report --class` writes the items'
-# rates, the pupils' scores, the gain and the wrong answers, with the keys
-# in {4,5} the core gives; tests/class_referee.R (R, base only) recomputes
+# answered an item twice, one with the pre-test only, lessons' predictions
+# (judged in {4,5} without a summary.csv, in {4,4} where a pupil's folder
+# says so), a questionnaire's answer (left out); `holonomy report --class`
+# writes the items' rates, the pupils' scores, the gain and the wrong
+# answers, with the keys in {4,5} the core gives; tests/class_referee.R (R, base only) recomputes
 # every figure to 1e-9, and a figure made wrong by 1e-6 fails it.
 # Refusals: no folder, a file that is not an answers file, no test answers.
 . "$(dirname "$0")/lib.sh"
@@ -76,14 +77,26 @@ awk -v A="$A" -v dir="$T/class" 'BEGIN {
         }
         if (k == 5) printf "s5,P05,3,posttest,before_level,home_q5,likert,3,9.0000\n" >> f
         if (k == 6) printf "s6,P06,3,predict,before_level,lesson1,choice,No,1.0000\n" >> f
+        if (k == 7) printf "s7,P07,3,predict,before_level,lesson4,likert,28,1.0000\n" >> f
+        if (k == 8) printf "s8,,3,predict,before_level,lesson2,likert,6,1.0000\n" >> f
+        if (k == 9) printf "s9,P09,3,ssq,after_level,nausea,likert,2,1.0000\n" >> f
         close(f)
     }
 }'
+# a pupil's log folder whose lessons were played in {4,4} (summary.csv says
+# so): lesson 1's Yes and lesson 4's 12 are right there
+mkdir "$T/class/p20"
+printf '%s\ns20,P20,1,predict,before_level,lesson1,choice,Yes,1.0\ns20,P20,2,predict,before_level,lesson4,likert,12,1.0\n' "$A" >"$T/class/p20/answers.csv"
+printf 'session,participant,attempt,tiling\ns20,P20,1,"4,4"\ns20,P20,2,"4,4"\n' >"$T/class/p20/summary.csv"
 run "report --class" 0 "$H" report --class "$T/class" --out "$T/rep"
-grep -q "^report --class: 14 pupils, 13 with both tests; gain " "$T/out" && ok ||
+grep -q "^report --class: 15 pupils, 13 with both tests; gain " "$T/out" && ok ||
     bad "report --class: $(cat "$T/out")"
+grep -q "w06.csv: 1 lesson answer(s) of attempts without a known tiling (no summary.csv beside it) judged in {4,5}" "$T/err" &&
+    ok || bad "the lessons' tiling: $(cat "$T/err")"
+[ "$(grep '^predict,' "$T/rep/class_items.csv" | cut -d, -f1-7 | tr '\n' ' ')" = "predict,lesson1_q4,lesson 1,Yes,1,1,1.0000000000 predict,lesson4_q4,lesson 4,12,1,1,1.0000000000 predict,lesson1_q5,lesson 1,No,1,1,1.0000000000 predict,lesson4_q5,lesson 4,28,1,1,1.0000000000 predict,lesson2_q5,lesson 2,5,1,0,0.0000000000 " ] &&
+    ok || bad "the lessons' items: $(grep '^predict' "$T/rep/class_items.csv")"
 # the keys in {4,5} (docs/teaching.md names them)
-[ "$(cut -d, -f1,2,4 "$T/rep/class_items.csv" | tr '\n' ' ')" = "phase,item,right_answer pretest,square_q5,No pretest,corner_q5,5 pretest,growth_q5,12 pretest,home_q5,3 posttest,square_q5,No posttest,corner_q5,less than 360 posttest,growth_q5,28 posttest,home_q5,3 " ] &&
+[ "$(grep -v "^predict," "$T/rep/class_items.csv" | cut -d, -f1,2,4 | tr '\n' ' ')" = "phase,item,right_answer pretest,square_q5,No pretest,corner_q5,5 pretest,growth_q5,12 pretest,home_q5,3 posttest,square_q5,No posttest,corner_q5,less than 360 posttest,growth_q5,28 posttest,home_q5,3 " ] &&
     ok || bad "the keys: $(cat "$T/rep/class_items.csv")"
 grep -q '^P05,' "$T/rep/class_pupils.csv" && grep -q '^w04,' "$T/rep/class_pupils.csv" &&
     grep -q '^P14,[0-9.]*,,$' "$T/rep/class_pupils.csv" && ok ||
@@ -107,6 +120,6 @@ run "--class, not answers" 2 "$H" report --class "$T/empty" --out "$T/o4"
 grep -q "is not an answers file" "$T/err" && ok || bad "not answers: $(cat "$T/err")"
 rm "$T/empty/x.csv"
 run "--class, no test answers" 2 "$H" report --class "$T/empty" --out "$T/o5"
-grep -q "holds no pre-test or post-test answers" "$T/err" && ok || bad "no answers: $(cat "$T/err")"
+grep -q "holds no pre-test, post-test or lesson answers" "$T/err" && ok || bad "no answers: $(cat "$T/err")"
 
 finish cli_class

@@ -4,8 +4,11 @@
  * web page's download), or a folder NAME holding answers.csv (a pupil's log
  * folder on the desktop). The pre-test's and post-test's items
  * (core/hol_quiz.h, questionnaires pretest and posttest) are judged by the
- * core's key; a pupil is the answers' participant (the file's NAME when
- * empty), an item answered twice counts its last answer.
+ * core's key, and so are the lessons' predictions (questionnaire predict,
+ * item lessonN: core/hol_lesson.h) in the tiling their attempt played
+ * (summary.csv beside answers.csv; {4,5} without it, one stderr line); a
+ * pupil is the answers' participant (the file's NAME when empty), an item
+ * answered twice counts its last answer.
  * Writes OUT/class_items.csv (per item: answered, right, rate),
  * class_pupils.csv (per pupil: pre and post score, the share of the four
  * items right, and the gain), class_gain.csv (the pupils with both tests:
@@ -22,6 +25,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#include "../../../core/hol_lesson.h"
 #include "../../../core/hol_quiz.h"
 #include "../../../core/hol_stats.h"
 #include "../cli.h"
@@ -33,12 +37,17 @@
 #define RC_WRONG 1024
 #define RC_TEXT 96
 #define RC_FIELDS 9
+#define RC_PHASES 3 /* pretest, posttest, predict (the lessons) */
+#define RC_K 6      /* items of a phase: HOL_QUIZ_ITEMS, HOL_LESSONS */
+#define RC_TILINGS 256 /* a pupil's attempts whose tiling is known */
 
 typedef struct rc_pupil {
     char id[RC_TEXT];
-    signed char got[2][HOL_QUIZ_ITEMS]; /* -1 unanswered, 0 wrong, 1 right */
-    short item[2][HOL_QUIZ_ITEMS];      /* the answer's item (rc_class.items) */
-    char val[2][HOL_QUIZ_ITEMS][RC_TEXT]; /* the answer given last */
+    /* per phase (pretest, posttest, the lessons' predictions) and item
+     * (a test's concept, a lesson's number - 1) */
+    signed char got[RC_PHASES][RC_K];  /* -1 unanswered, 0 wrong, 1 right */
+    short item[RC_PHASES][RC_K];       /* the answer's item (rc_class.items) */
+    char val[RC_PHASES][RC_K][RC_TEXT]; /* the answer given last */
 } rc_pupil;
 
 typedef struct rc_item {
@@ -53,6 +62,14 @@ typedef struct rc_wrong {
     long count;
 } rc_wrong;
 
+/* The tilings of a pupil's attempts (summary.csv beside answers.csv). */
+typedef struct rc_tilings {
+    char session[RC_TILINGS][RC_TEXT];
+    long attempt[RC_TILINGS];
+    int q[RC_TILINGS];
+    int n;
+} rc_tilings;
+
 typedef struct rc_class {
     rc_pupil pupils[RC_PUPILS];
     int npupils;
@@ -61,6 +78,7 @@ typedef struct rc_class {
     rc_wrong wrong[RC_WRONG];
     int nwrong;
     long rows;
+    rc_tilings tl; /* the pupil's being read */
 } rc_class;
 
 static const char *const rc_header = "session,participant,attempt,questionnaire,when,item,kind,"
@@ -92,6 +110,11 @@ static int rc_split(const char *s, char (*out)[RC_TEXT], int max)
         s++;
     }
     return n;
+}
+
+static const char *rc_phase_name(int ph)
+{
+    return ph < 2 ? hol_quiz_name(ph) : "predict";
 }
 
 static rc_pupil *rc_pupil_of(rc_class *c, const char *id)
@@ -136,22 +159,82 @@ static void rc_wrong_add(rc_class *c, int item, const char *value)
     snprintf(w->value, sizeof w->value, "%s", value);
 }
 
-/* One answers file of the pupil named `name` when its rows name none. */
-static int rc_read(const char *cmd, rc_class *c, const char *path, const char *name)
+static void rc_read_tilings(const char *path, rc_tilings *t)
 {
+    t->n = 0;
+    FILE *f = fopen(path, "r");
+    if (!f)
+        return;
+    char line[4096], fld[32][RC_TEXT];
+    int cs = -1, ca = -1, ct = -1;
+    for (long ln = 1; fgets(line, sizeof line, f) && t->n < RC_TILINGS; ln++) {
+        int n = rc_split(line, fld, 32);
+        for (int k = 0; ln == 1 && k < n; k++) {
+            cs = strcmp(fld[k], "session") ? cs : k;
+            ca = strcmp(fld[k], "attempt") ? ca : k;
+            ct = strcmp(fld[k], "tiling") ? ct : k;
+        }
+        if (ln == 1 || cs < 0 || ca < 0 || ct < 0 || n <= ct || n <= ca || n <= cs)
+            continue;
+        if (strncmp(fld[ct], "4,", 2) || fld[ct][2] < '4' || fld[ct][2] > '8' || fld[ct][3])
+            continue;
+        snprintf(t->session[t->n], RC_TEXT, "%s", fld[cs]);
+        t->attempt[t->n] = atol(fld[ca]);
+        t->q[t->n++] = fld[ct][2] - '0';
+    }
+    fclose(f);
+}
+
+/* A lesson's prediction (questionnaire predict, item lessonN): its key in
+ * the tiling its attempt played (summary.csv), {4,5} when unknown. The
+ * item's id becomes lessonN_qQ; -1 when it is no lesson's. */
+static int rc_lesson_key(const rc_tilings *t, char (*fld)[RC_TEXT], int *unknown,
+                         char *id, char *right, size_t cap)
+{
+    const char *it = fld[5];
+    if (strcmp(fld[3], "predict") || strncmp(it, "lesson", 6) || it[6] < '1' ||
+        it[6] > '0' + HOL_LESSONS || it[7])
+        return -1;
+    int n = it[6] - '0', q = 0;
+    for (int i = 0; i < t->n && !q; i++)
+        if (!strcmp(t->session[i], fld[0]) && t->attempt[i] == atol(fld[2]))
+            q = t->q[i];
+    *unknown += !q;
+    q = q ? q : 5;
+    hol_lesson_facts f;
+    if (hol_lesson_facts_of(n, q, &f))
+        return -1;
+    const char *label = f.choice ? hol_lesson_label(&f, f.answer) : NULL;
+    if (f.choice)
+        snprintf(right, cap, "%s", label ? label : "");
+    else
+        snprintf(right, cap, "%d", f.answer);
+    snprintf(id, RC_TEXT, "lesson%d_q%d", n, q);
+    return n - 1;
+}
+
+/* One answers file of the pupil named `name` when its rows name none;
+ * summary: its summary.csv (the lessons' tilings), or NULL. */
+static int rc_read(const char *cmd, rc_class *c, const char *path, const char *name,
+                   const char *summary)
+{
+    rc_tilings *tl = &c->tl;
+    tl->n = 0;
+    if (summary)
+        rc_read_tilings(summary, tl);
     FILE *f = fopen(path, "r");
     if (!f) {
         cli_error(cmd, 0, "cannot read '%.300s': %s", path, strerror(errno));
         return CLI_EXIT_FAIL;
     }
-    char line[2048], fld[RC_FIELDS][RC_TEXT], right[HOL_APP_LABEL_MAX];
+    char line[2048], fld[RC_FIELDS][RC_TEXT], right[RC_TEXT], id[RC_TEXT];
     long ln = 0;
-    int st = 0;
+    int st = 0, unknown = 0;
     while (!st && fgets(line, sizeof line, f)) {
         ln++;
         line[strcspn(line, "\r\n")] = 0;
         if (ln == 1) {
-            if (strcmp(line, rc_header) && strncmp(line, "\xef\xbb\xbf", 3)) {
+            if (strcmp(line, rc_header)) {
                 cli_error(cmd, 0, "'%.300s' is not an answers file (its header is not '%s')",
                           path, rc_header);
                 st = CLI_EXIT_USAGE;
@@ -163,12 +246,14 @@ static int rc_read(const char *cmd, rc_class *c, const char *path, const char *n
             st = CLI_EXIT_USAGE;
             break;
         }
-        int phase = !strcmp(fld[3], "pretest") ? 0 : !strcmp(fld[3], "posttest") ? 1 : -1;
-        int k = phase < 0 ? -1 : hol_quiz_key(fld[3], fld[5], right, sizeof right);
+        int phase = !strcmp(fld[3], "pretest") ? 0 : !strcmp(fld[3], "posttest") ? 1 : 2;
+        snprintf(id, sizeof id, "%s", fld[5]);
+        int k = phase < 2 ? hol_quiz_key(fld[3], fld[5], right, sizeof right)
+                          : rc_lesson_key(tl, fld, &unknown, id, right, sizeof right);
         if (k < 0)
-            continue; /* a lesson's or a questionnaire's answer */
+            continue; /* a questionnaire's answer */
         rc_pupil *p = rc_pupil_of(c, fld[1][0] ? fld[1] : name);
-        int it = rc_item_of(c, phase, k, fld[5], right);
+        int it = rc_item_of(c, phase, k, id, right);
         if (!p || it < 0) {
             cli_error(cmd, 0, "more than %d pupils or %d items", RC_PUPILS, RC_ITEMS);
             st = CLI_EXIT_USAGE;
@@ -180,6 +265,9 @@ static int rc_read(const char *cmd, rc_class *c, const char *path, const char *n
         c->rows++;
     }
     fclose(f);
+    if (!st && unknown)
+        fprintf(stderr, "report: %.300s: %d lesson answer(s) of attempts without a known "
+                        "tiling (no summary.csv beside it) judged in {4,5}\n", path, unknown);
     return st;
 }
 
@@ -187,8 +275,8 @@ static int rc_read(const char *cmd, rc_class *c, const char *path, const char *n
 static void rc_tally(rc_class *c)
 {
     for (int i = 0; i < c->npupils; i++)
-        for (int ph = 0; ph < 2; ph++)
-            for (int k = 0; k < HOL_QUIZ_ITEMS; k++) {
+        for (int ph = 0; ph < RC_PHASES; ph++)
+            for (int k = 0; k < RC_K; k++) {
                 const rc_pupil *p = &c->pupils[i];
                 if (p->got[ph][k] < 0)
                     continue;
@@ -281,14 +369,17 @@ static int rc_items_csv(FILE *f, const report_run *r, const void *ctx)
     (void)r;
     const rc_class *c = ((const rc_out *)ctx)->c;
     fputs("phase,item,concept,right_answer,answered,right,rate\n", f);
-    for (int ph = 0; ph < 2; ph++)
+    for (int ph = 0; ph < RC_PHASES; ph++)
         for (int i = 0; i < c->nitems; i++) {
             const rc_item *it = &c->items[i];
             if (it->phase != ph)
                 continue;
-            fprintf(f, "%s,", hol_quiz_name(ph));
+            fprintf(f, "%s,", rc_phase_name(ph));
             report_csv(f, it->id, 0);
-            fprintf(f, "%s,", hol_quiz_concept(it->concept));
+            if (ph < 2)
+                fprintf(f, "%s,", hol_quiz_concept(it->concept));
+            else
+                fprintf(f, "lesson %d,", it->concept + 1);
             report_csv(f, it->right, 0);
             fprintf(f, "%ld,%ld,", it->answered, it->nright);
             rc_num(f, it->answered ? (double)it->nright / (double)it->answered : NAN, 1);
@@ -347,7 +438,7 @@ static int rc_wrong_csv(FILE *f, const report_run *r, const void *ctx)
     for (int i = 0; i < c->nwrong; i++) {
         const rc_wrong *w = &c->wrong[i];
         const rc_item *it = &c->items[w->item];
-        fprintf(f, "%s,", hol_quiz_name(it->phase));
+        fprintf(f, "%s,", rc_phase_name(it->phase));
         report_csv(f, it->id, 0);
         report_csv(f, w->value, 0);
         fprintf(f, "%ld,", w->count);
@@ -375,12 +466,14 @@ static int rc_read_dir(const char *cmd, rc_class *c, const char *dir)
         if (!st && e[0] != '.' && !stat(path, &sb)) {
             snprintf(name, sizeof name, "%.*s", (int)(len > 4 ? len - 4 : len), e);
             if (S_ISREG(sb.st_mode) && len > 4 && !strcmp(e + len - 4, ".csv")) {
-                st = rc_read(cmd, c, path, name);
+                st = rc_read(cmd, c, path, name, NULL);
             } else if (S_ISDIR(sb.st_mode)) {
+                char sum[4200];
                 snprintf(path, sizeof path, "%s/%s/answers.csv", dir, e);
+                snprintf(sum, sizeof sum, "%s/%s/summary.csv", dir, e);
                 snprintf(name, sizeof name, "%s", e);
                 if (!stat(path, &sb))
-                    st = rc_read(cmd, c, path, name);
+                    st = rc_read(cmd, c, path, name, sum);
             }
         }
         free(names[i]);
@@ -448,7 +541,7 @@ int report_class_main(const char *cmd, int argc, char **argv)
     }
     int st = rc_read_dir(cmd, c, dir);
     if (!st && !c->rows) {
-        cli_error(cmd, 0, "'%.300s' holds no pre-test or post-test answers", dir);
+        cli_error(cmd, 0, "'%.300s' holds no pre-test, post-test or lesson answers", dir);
         st = CLI_EXIT_USAGE;
     }
     if (!st)
