@@ -165,14 +165,15 @@ $(GLSL_H): render/shaders/glsl_c.sh $(wildcard render/shaders/*.glsl)
 $(BUILD)/render/hol_program.o: $(GLSL_H)
 $(BUILD)/render/hol_program.o: override CFLAGS += -I$(BUILD)/gen
 
-# The build's commit and date (platform/cli/build_info.h): a header in the
-# build folder, remade at every make but rewritten only when its text
-# changes, so a new commit recompiles build_info.c alone.
+# The build's commit and date (platform/shell/hol_shell_build.h): a header
+# in the build folder, remade at every make but rewritten only when its
+# text changes, so a new commit recompiles hol_shell_build.c alone (here
+# and in the web's build; build_apk.sh and quest_link_check.sh make their own).
 BUILD_ID_H := $(BUILD)/gen/hol_build_id.h
 $(BUILD_ID_H): FORCE
-	@sh platform/cli/build_id.sh $@
-$(BUILD)/platform/cli/build_info.o: $(BUILD_ID_H)
-$(BUILD)/platform/cli/build_info.o: override CFLAGS += -I$(BUILD)/gen
+	@sh platform/shell/build_id.sh $@
+$(BUILD)/platform/shell/hol_shell_build.o: $(BUILD_ID_H)
+$(BUILD)/platform/shell/hol_shell_build.o: override CFLAGS += -I$(BUILD)/gen
 
 $(RENDER_LIB): $(RENDER_OBJ)
 	@rm -f $@
@@ -251,10 +252,11 @@ $(BUILD)/tests/test_font: tests/test_font.c $(FONT_TEST_SRC) render/hol_face_dra
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) -o $@ $< $(FONT_TEST_SRC) $(CORE_LIB) $(LDFLAGS) -lcmocka -lz $(LDLIBS)
 
-# The codebook's table against the writers' headers (platform/cli/codebook.c).
-$(BUILD)/tests/test_codebook: tests/test_codebook.c platform/cli/codebook.c $(wildcard platform/cli/*.h) $(CORE_LIB)
+# The codebook's tables against the writers' headers (platform/cli/codebook.c,
+# platform/shell/hol_shell_codebook.c).
+$(BUILD)/tests/test_codebook: tests/test_codebook.c platform/cli/codebook.c $(SHELL_SRC) $(wildcard platform/cli/*.h platform/shell/*.h) $(CORE_LIB)
 	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS) -o $@ $< platform/cli/codebook.c $(CORE_LIB) $(LDFLAGS) -lcmocka $(LDLIBS)
+	$(CC) $(CFLAGS) -o $@ $< platform/cli/codebook.c $(SHELL_SRC) $(CORE_LIB) $(LDFLAGS) -lcmocka $(LDLIBS)
 
 # The report's CSV field and HTML text (platform/cli/report/report_escape.c).
 $(BUILD)/tests/test_report_escape: tests/test_report_escape.c platform/cli/report/report_escape.c platform/cli/report/report_escape.h $(CORE_LIB)
@@ -650,12 +652,15 @@ WEB_CFLAGS = $(CSTD) $(WARN) $(if $(filter $(WEB_HOT),$<),$(WEB_OPT_HOT),$(WEB_O
 WEB_LDFLAGS := -Oz -sMALLOC=emmalloc -sENVIRONMENT=web -sMIN_WEBGL_VERSION=2 -sMAX_WEBGL_VERSION=2 \
   -sALLOW_MEMORY_GROWTH=1 -sINITIAL_MEMORY=67108864 -sTOTAL_STACK=1048576 \
   --js-library platform/web/hol_web_al.js --js-library platform/web/hol_web_lib.js
+# The languages of the web build (core/hol_str.h; en always): Dutch costs
+# 1.3 KB of the transfer (docs/web.md, "The transfer size").
+WEB_LANGS ?= en de
 # the objects are made again when these flags change (an -O3 object of an
 # older build would otherwise stay): the file holds them, and is written
 # only when they differ (no shell at parse time: every make would run it)
 WEB_STAMP := $(BUILD)/web-obj/flags.txt
-WEB_FLAGS_TEXT := $(CSTD) $(WARN) $(WEB_OPT) $(WEB_OPT_HOT) $(WEB_HOT)
-WEB_PAGE := $(addprefix $(WEB)/,index.html page.js store.js)
+WEB_FLAGS_TEXT := $(CSTD) $(WARN) $(WEB_OPT) $(WEB_OPT_HOT) $(WEB_HOT) $(WEB_LANGS)
+WEB_PAGE := $(addprefix $(WEB)/,index.html page.js store.js text.js)
 WEB_PORT ?= 8080
 WEB_HTTPS_PORT ?= 8443
 # precompressed copies for web-serve: beside build/web, which stays the
@@ -682,8 +687,13 @@ $(WEB_STAMP): FORCE
 
 FORCE:
 
+# the string table without the page's words, which text.js carries (1.5 KB),
+# in the languages of WEB_LANGS
+$(BUILD)/web-obj/core/hol_str.o: WEB_CFLAGS += -DHOL_STR_NO_PAGE $(if $(filter nl,$(WEB_LANGS)),,-DHOL_STR_NO_NL)
 $(BUILD)/web-obj/render/hol_program.o: $(GLSL_H)
 $(BUILD)/web-obj/render/hol_program.o: WEB_CFLAGS += -I$(BUILD)/gen
+$(BUILD)/web-obj/platform/shell/hol_shell_build.o: $(BUILD_ID_H)
+$(BUILD)/web-obj/platform/shell/hol_shell_build.o: WEB_CFLAGS += -I$(BUILD)/gen
 # the page shows no worksheet: the lessons' worksheet texts are left out
 # (core/hol_lesson_text.c; the transfer size, docs/web.md)
 $(BUILD)/web-obj/core/hol_lesson_text.o: WEB_CFLAGS += -DHOL_LESSON_APP_ONLY
@@ -702,12 +712,26 @@ $(WEB)/holonomy.js: $(WEB_OBJ) platform/web/hol_web_lib.js platform/web/hol_web_
 	@$(EMCC_ENV) $(EMCC) $(WEB_LDFLAGS) $(WEB_OBJ) -o $@
 	@NODE_PATH=/usr/share/nodejs node platform/web/minify.mjs $@ $@ || { rm -f $@; exit 1; }
 
-# the page's scripts without their comment lines and indentation (about 2 KB
-# of the gzip'ed transfer; the sources keep them): a line whose first
-# characters are // is a comment (no string spans lines in these files)
-$(WEB)/%.js: platform/web/%.js
+# the page's words in the languages of WEB_LANGS, from core's string table
+# (issue 37), by a native tool of tests/ (no test library)
+$(BUILD)/tests/gen_page_text: tests/gen_page_text.c $(CORE_LIB)
 	@mkdir -p $(dir $@)
-	sed -e '/^[[:space:]]*\/\//d' -e 's/^[[:space:]]*//' $< >$@
+	$(CC) $(CFLAGS) -o $@ $< $(CORE_LIB) $(LDFLAGS) $(LDLIBS)
+$(WEB)/text.js: $(BUILD)/tests/gen_page_text $(WEB_STAMP)
+	@mkdir -p $(dir $@)
+	$(BUILD)/tests/gen_page_text $(WEB_LANGS) >$@.tmp && mv $@.tmp $@ || { rm -f $@.tmp; exit 1; }
+
+# the page's scripts minified by terser as the glue is (platform/web/minify.mjs:
+# local names only; about 1 KB of the gzip'ed transfer against stripping
+# their comment lines and indentation alone; the sources keep them)
+$(WEB)/%.js: platform/web/%.js platform/web/minify.mjs
+	@mkdir -p $(dir $@)
+	@NODE_PATH=/usr/share/nodejs node platform/web/minify.mjs $< $@
+
+# the page without its indentation and its style's comment lines (0.1 KB)
+$(WEB)/index.html: platform/web/index.html
+	@mkdir -p $(dir $@)
+	sed -e 's/^[[:space:]]*//' -e '/^\/\*/,/\*\/$$/d' $< >$@
 
 $(WEB)/%: platform/web/%
 	@mkdir -p $(dir $@)

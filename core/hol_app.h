@@ -49,6 +49,7 @@
 #include <stdint.h>
 
 #include "hol_alloc.h"
+#include "hol_body.h"
 #include "hol_err.h"
 #include "hol_haptic.h"
 #include "hol_input.h"
@@ -110,13 +111,13 @@ enum hol_app_minimap_place { HOL_MINIMAP_HUD = 0, HOL_MINIMAP_HAND = 1, HOL_MINI
 /* Seconds a headset's device shows which control opens the menu, from the
  * moment it is in use (hol_app_hud.hint: "Y: menu", "LEFT PINCH: menu"). */
 #define HOL_APP_MENU_HINT_S 10.0
-/* The tutorial's feedback line the first time the path cue shows. */
-#define HOL_APP_PATH_TEXT "Map line: the fewest steps to the marker"
-/* The tutorial's line (hol_app_hud.note) the first time the minimap's
- * rings show (lesson 2's two tiles of one cell, map.marks), beside the
- * lesson's feedback, as long as the rings. */
-#define HOL_APP_RINGS_TEXT "Rings on the map: the two tiles of this cell"
+/* The tutorial's feedback line the first time the path cue shows is
+ * core/hol_str.h's HOL_S_PATH; its line (hol_app_hud.note) the first time
+ * the minimap's rings show (lesson 2's two tiles of one cell, map.marks),
+ * beside the lesson's feedback, as long as the rings, is HOL_S_RINGS. */
 #define HOL_APP_HUD_LINES 6
+/* Seconds (input clock) a chime's caption stays (hol_app_hud.caption). */
+#define HOL_APP_CAPTION_S 3.0
 #define HOL_APP_MAX_MARKS 2
 /* Most room steps one app step reports (a frame's motion in sub-steps). */
 #define HOL_APP_MAX_STEP_EVENTS 16
@@ -169,9 +170,18 @@ enum hol_app_minimap_place { HOL_MINIMAP_HUD = 0, HOL_MINIMAP_HAND = 1, HOL_MINI
 
 enum hol_app_screen {
     HOL_APP_SCREEN_NONE = 0,
-    HOL_APP_SCREEN_INSTRUCTIONS = 1, /* before the level: confirm begins it */
-    HOL_APP_SCREEN_CLOSING = 2       /* after the last level: confirm ends */
+    HOL_APP_SCREEN_INSTRUCTIONS = 1, /* before the level: confirm shows the ready screen
+                                        (not in a lesson: no clock to start) */
+    HOL_APP_SCREEN_CLOSING = 2,      /* after the last level: confirm ends */
+    HOL_APP_SCREEN_READY = 3         /* HOL_S_READY's text, after the instructions
+                                        and on a resume (hol_app_ready): confirm
+                                        begins the level, and its clock */
 };
+/* Before the clock starts (the instructions, the ready screen) nothing of
+ * the level shows but the world around: no minimap (view.map.place
+ * HOL_MINIMAP_OFF), no objective on it, no game object (issue 35). */
+#define HOL_APP_READY_TEXT "Ready? The clock starts when you begin."
+
 
 /* Questionnaires (issue 26 item 7; docs/research.md "Questionnaires"):
  * items (`question` level lines, or the presets ssq and tlx: core/hol_ask.h)
@@ -255,6 +265,10 @@ typedef struct hol_app_level {
     int sound;                /* hol_app_sound; 0: all */
     int point;                /* hol_app_point_target: the question asked
                                  at the level's end; 0: none */
+    int lang;                 /* level line `lang en|de|nl`: 1 + hol_lang
+                                 (core/hol_str.h), the language of the
+                                 view's texts in this level whatever the
+                                 app's (desc.lang); 0: the app's */
     /* Screens (issue 26, session flow): "" none. instructions: shown when
      * the level is started (hol_app_start_level; not on a restart) until
      * confirm; the level (its clock, its attempt: events.level_started)
@@ -297,6 +311,11 @@ typedef struct hol_app_desc {
                                  first keys level's tour (60-140 ms then), not
                                  at create; 0 (a headset): both at create, so
                                  no level start pays. Same answers. */
+    int lang;                 /* hol_lang (core/hol_str.h): the language of
+                                 every text the view holds (HUD, prompts,
+                                 tutorial) unless the level's `lang` line
+                                 names one; 0: English. Logs, events and
+                                 recordings do not depend on it. */
     int lazy_world;           /* 1 (tools, headless and desktop runs): the
                                  world's memory (14 MB) comes from calloc
                                  and is not cleared at create, so only the
@@ -306,6 +325,13 @@ typedef struct hol_app_desc {
                                  headset): cleared at create, so no update
                                  takes a page fault. A level start clears a
                                  store only when it holds tiles. */
+    int flow_v4;              /* 1: the flow recordings of version 1 to 4
+                                 were played in (hol_rec.h meta.flow_v4),
+                                 so they replay as they were played: no
+                                 ready screen after the instructions (their
+                                 confirm begins the level), the tutorial's
+                                 lessons as they were (hol_app_tutorial.c);
+                                 0 (live play): issue 35's flow */
 } hol_app_desc;
 
 typedef enum hol_app_state {
@@ -351,7 +377,7 @@ typedef struct hol_app_hud {
                                          shown); or "" */
     char address[HOL_TILE_ADDR_MAX];  /* the current tile */
     char feedback[HOL_APP_TEXT_MAX];  /* tutorial: the lesson just done, or "" */
-    char note[HOL_APP_TEXT_MAX];      /* tutorial: HOL_APP_RINGS_TEXT while the
+    char note[HOL_APP_TEXT_MAX];      /* tutorial: HOL_S_RINGS while the
                                          minimap's rings show the first time
                                          in the level (a line after the
                                          feedback), or "" */
@@ -382,6 +408,17 @@ typedef struct hol_app_hud {
      * shown in capitals. The hint (the prompt) is drawn on its own. */
     char lines[HOL_APP_HUD_LINES][HOL_APP_TEXT_MAX];
     int nlines;
+    /* The sound's caption (issue 37; W3C XR Accessibility: captions for
+     * sound), or "": with captions on (hol_app_set_captions: the platform
+     * plays sound) and the level's sound not off, the cue the sound plays
+     * now named in the language, the last line of `lines` (when one is
+     * free): a chime (hol_sound.h: the level begins, a key is collected,
+     * the chest opens, the flag is reached) for HOL_APP_CAPTION_S of input
+     * time from its step, else, while beacons sound (cue `sound`, the
+     * level in play, objectives left), the beacons' line. Footsteps (every
+     * room step, counted on the HUD) and the forest's ambience are not
+     * captioned. The same steps as core/hol_sound.h's shots (test_app). */
+    char caption[HOL_APP_TEXT_MAX];
 } hol_app_hud;
 
 /* The minimap model. */
@@ -461,6 +498,11 @@ typedef struct hol_app_view {
                                          level's spots; 0: round */
     int sound;                        /* the level's hol_app_sound (the
                                          sources: core/hol_sound.h) */
+    hol_body body;                    /* the controllers and tracked hands
+                                         at the record's room poses, and
+                                         the pointing question's ray
+                                         (core/hol_body.h); drawn in the
+                                         room, for every eye */
 } hol_app_view;
 
 /* One room step, for the per-step log. */
@@ -507,6 +549,7 @@ typedef struct hol_app_point {
     double t;              /* the level clock when it was asked (the end) */
     double asked_s;        /* the input time it was asked */
     double time_s;         /* seconds taken to answer */
+    double at_s;           /* the input time of the answer's confirm */
     double pointed_deg;
     int has_true, has_flat;
     double true_deg, flat_deg;
@@ -523,7 +566,17 @@ typedef struct hol_app_answer {
     char choice[HOL_APP_LABEL_MAX];   /* choice: its text */
     double time_s;                    /* seconds from the item's screen to
                                          its confirm */
+    double shown_s, at_s;             /* the input times of the item's
+                                         screen and of its confirm */
 } hol_app_answer;
+
+/* A tutorial lesson done (issue 35; not with desc.flow_v4): a row of
+ * tutorial.csv (hol_session.h). */
+typedef struct hol_app_lesson {
+    int lesson;         /* 1..HOL_APP_TUTORIAL_STAGES */
+    double started, t;  /* the level times it began and was done */
+    int steps, optimum; /* its room steps; its fewest from where it began */
+} hol_app_lesson;
 
 typedef struct hol_app_events {
     int nsteps;
@@ -554,6 +607,8 @@ typedef struct hol_app_events {
                               untracked (core/hol_input.h) */
     double relocated_m;    /* with relocated: the head's floor distance
                               from where it last walked, metres */
+    int nlessons;          /* tutorial lessons done in this step */
+    hol_app_lesson lessons[HOL_APP_TUTORIAL_STAGES];
 } hol_app_events;
 
 typedef struct hol_app hol_app;
@@ -590,6 +645,12 @@ hol_err hol_app_start_level(hol_app *app, const hol_app_level *level);
  * nothing changed). */
 hol_err hol_app_ask_from(hol_app *app, int item);
 
+/* Right after hol_app_start_level: the level begins on the ready screen
+ * (HOL_APP_SCREEN_READY; a resumed session's first level), after its
+ * `before` questionnaires and its instructions if it has them. Errors:
+ * HOL_EARG (no level: nothing changed). */
+hol_err hol_app_ready(hol_app *app);
+
 /* Make (or find) the navigator of the tiling {4,q} and a room of cols x
  * rows cells (0: 5, 3, 3), so that no level start pays for it: platforms
  * call it at init for the geometries of the session's levels. Errors:
@@ -612,5 +673,12 @@ const char *hol_app_end_word(const hol_app_view *v);
 const hol_app_events *hol_app_get_events(const hol_app *app);
 /* The world the view shows (for the renderer's content). */
 struct hol_world *hol_app_world(hol_app *app);
+/* Captions of the sound on (1) or off (0, the default): a platform that
+ * plays the app's sound turns them on (hol_app_hud.caption). */
+void hol_app_set_captions(hol_app *app, int on);
+/* The language of the view's texts from the next step on (hol_lang,
+ * core/hol_str.h; out of range: English), as desc.lang at create: a page
+ * that changes its language changes nothing else. */
+void hol_app_set_lang(hol_app *app, int lang);
 
 #endif

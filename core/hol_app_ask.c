@@ -58,13 +58,15 @@ int hol__ask_before_start(hol_app *app)
     return 1;
 }
 
-/* The `before` asks answered: the instructions, else the level begins
- * (pending_start: at the next frame). */
+/* The `before` asks answered: the instructions, else the ready screen (a
+ * resume's, hol_app_ready), else the level begins (pending_start: at the
+ * next frame). */
 static void hol__before_end(hol_app *app)
 {
     app->ask_before = 0;
-    if (app->level.instructions[0]) {
-        app->screen = HOL_APP_SCREEN_INSTRUCTIONS;
+    if (app->level.instructions[0] || app->ready_after) {
+        app->screen = app->level.instructions[0] ? HOL_APP_SCREEN_INSTRUCTIONS
+                                                 : HOL_APP_SCREEN_READY;
         app->view.state = HOL_APP_SCREEN;
         app->place_panel = 1;
     } else {
@@ -182,6 +184,8 @@ void hol__ask_frame(hol_app *app, const hol_input *in, uint32_t pressed)
     else
         r->value = q->lo + app->ask_mark * (q->step > 0 ? q->step : 1);
     r->time_s = in->time_s - app->ask_t0;
+    r->shown_s = app->ask_t0;
+    r->at_s = in->time_s;
     app->ev.answered = 1;
     if (++app->ask_i >= a->n) {
         app->ask_i = 0;

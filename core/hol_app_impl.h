@@ -22,7 +22,6 @@
 /* "Minimap fixed in this study" stays on the HUD this long (input clock,
  * seconds: it shows on a paused or finished level too). */
 #define HOL__FIXED_S 3.0
-#define HOL__FIXED_TEXT "Minimap fixed in this study"
 /* Tutorial feedback stays on the HUD this long (level clock, seconds). */
 #define HOL__FEEDBACK_S 6.0
 
@@ -75,6 +74,9 @@ struct hol_app {
     hol_room stage_start;
     int stage_steps;
     int stage_optimum;       /* the lesson's fewest steps from its start */
+    double stage_t0;         /* the level time it began */
+    int face_pending;        /* a lesson began: a pancake view turns ... */
+    double face_yaw;         /* ... to this yaw, facing what it names */
     int has_target;          /* the stage has a target tile */
     hol_tile target;
     char feedback[HOL_APP_TEXT_MAX]; /* the last lesson done says so */
@@ -95,6 +97,8 @@ struct hol_app {
     /* screens (hol_app_level.instructions, .closing) */
     int screen;              /* hol_app_screen up (state HOL_APP_SCREEN) */
     int place_panel;         /* a screen came up: the panel goes ahead now */
+    int ready_after;         /* hol_app_ready during the `before` asks: the
+                                ready screen after them */
     /* questionnaires (hol_app_level.asks) */
     int ask_k, ask_i;        /* the ask and its item on screen (state ASK) */
     int ask_mark;            /* the mark chosen (0 .. marks - 1) */
@@ -108,13 +112,31 @@ struct hol_app {
      * and the next one to enter (route_k == level.nroute: done) */
     hol_tile route_tiles[HOL_APP_ROUTE_MAX];
     int route_k;
+    /* captions (hol_app_hud.caption): on, the chime's text until when,
+     * and the keys and state the last step ended with (as hol_sound's) */
+    int captions;
+    int cap_id;              /* hol_str_id of the chime, or -1 */
+    double cap_until;
+    int cap_keys, cap_state;
     uint8_t walk[HOL_NAV_WALK_MAX]; /* replan scratch */
     int nwalk;
 };
 
+/* The language of the view's texts (core/hol_str.h): the level's `lang`
+ * line, else the desc's (hol_app_set_lang). */
+static inline int hol__lang(const hol_app *app)
+{
+    return app->level.lang > 0 ? app->level.lang - 1 : app->d.lang;
+}
+
 /* hol_app_tutorial.c */
 int hol__next_stage(const hol_app *app, int k);
 void hol__stage(hol_app *app, int k, const hol_room *r);
+/* After a room step at level time t that ended the lesson `stage` (the
+ * tutorial done, or another lesson begun): the new lesson's optimum and
+ * start time; the lesson's row (issue 35, lesson: its number, start,
+ * steps and optimum) in the step's events, but with desc.flow_v4. */
+void hol__lesson_done(hol_app *app, int stage, hol_app_lesson lesson, double t);
 /* A room step of a tutorial entered r: the lesson done (feedback, marks,
  * the next lesson or the level's end). */
 void hol__tutorial_enter(hol_app *app, const hol_room *r);

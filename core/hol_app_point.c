@@ -102,6 +102,7 @@ void hol__point_answer(hol_app *app, const hol_input *in)
     p->t = app->level_t;
     p->asked_s = app->asked_s;
     p->time_s = in->time_s - app->asked_s;
+    p->at_s = in->time_s;
     p->pointed_deg = hol__bearing_of_yaw(hol__pointed_yaw(app, in));
     hol_bearing b;
     if (!hol_bearing_end(&app->bw, &b)) {

@@ -150,6 +150,7 @@ hol_err hol_app_create(const hol_app_desc *desc, hol_app **out_app)
     hol_app *app = (hol_app *)(void *)mem;
     memset(app, 0, sizeof *app);
     app->d = d;
+    app->cap_id = -1;
     uintptr_t w = ((uintptr_t)(mem + head) + 63) & ~(uintptr_t)63;
     app->world_mem = (void *)w;
     app->world_size = wsize;
@@ -202,6 +203,18 @@ const hol_app_events *hol_app_get_events(const hol_app *app)
 hol_world *hol_app_world(hol_app *app)
 {
     return app->world;
+}
+
+void hol_app_set_captions(hol_app *app, int on)
+{
+    if (app)
+        app->captions = on != 0;
+}
+
+void hol_app_set_lang(hol_app *app, int lang)
+{
+    if (app)
+        app->d.lang = lang;
 }
 
 /* ---- the game ------------------------------------------------------------ */
@@ -384,6 +397,9 @@ static hol_err hol__begin(hol_app *app)
     app->rings_note = 0;
     app->has_tree = 0;
     app->nmarks = 0;
+    app->face_pending = 0;
+    app->stage_t0 = 0;
+    app->mo.yaw_deg = 0; /* the look a level begins with (hol_motion_init's) */
     if ((err = hol__route_begin(app, &r)))
         return err;
     if (L->mode == HOL_APP_TUTORIAL)
@@ -447,10 +463,26 @@ hol_err hol_app_start_level(hol_app *app, const hol_app_level *level)
         return err;
     }
     app->ask_before = 0;
+    app->ready_after = 0;
     if (hol__ask_before_start(app)) { /* a baseline: its instructions after */
         hol__fill_view(app, NULL);
     } else if (level->instructions[0]) { /* the level begins after them */
         app->screen = HOL_APP_SCREEN_INSTRUCTIONS;
+        app->view.state = HOL_APP_SCREEN;
+        app->place_panel = 1;
+        hol__fill_view(app, NULL);
+    }
+    return HOL_OK;
+}
+
+hol_err hol_app_ready(hol_app *app)
+{
+    if (!app->have_level)
+        return HOL_EARG;
+    if (app->view.state == HOL_APP_ASK && app->ask_before) {
+        app->ready_after = 1; /* the baseline first: the ready screen after it */
+    } else if (app->screen != HOL_APP_SCREEN_INSTRUCTIONS) {
+        app->screen = HOL_APP_SCREEN_READY;
         app->view.state = HOL_APP_SCREEN;
         app->place_panel = 1;
         hol__fill_view(app, NULL);
@@ -472,6 +504,8 @@ static hol_err hol__room_steps(hol_app *app, const hol_motion_steps *st, double 
         app->steps++;
         hol__point_step(app, st->dir[i]);
         int stage = app->stage;
+        hol_app_lesson lesson = {stage + 1, app->stage_t0, t, app->stage_steps + 1,
+                                 app->stage_optimum};
         hol__enter(app, &st->after[i]);
         int exact;
         if (app->done) {
@@ -481,8 +515,8 @@ static hol_err hol__room_steps(hol_app *app, const hol_motion_steps *st, double 
                    !hol__plan(app, &st->after[i], &app->remaining, &exact)) {
             /* remaining and the walk are set */
         }
-        if (app->level.mode == HOL_APP_TUTORIAL && app->stage != stage)
-            app->stage_optimum = app->remaining; /* a lesson begins here */
+        if (app->level.mode == HOL_APP_TUTORIAL && (app->stage != stage || app->done))
+            hol__lesson_done(app, stage, lesson, t);
         hol_app_step_event *e = &app->ev.steps[app->ev.nsteps++];
         e->t = t;
         e->index = app->steps;
@@ -572,11 +606,19 @@ static hol_err hol__place_at_start(hol_app *app, const hol_input *in)
     hol_room was = app->mo.user;
     hol_motion_replace(&app->mo, pos, app->mo.yaw_deg);
     hol__point_sync(app);
-    if (was.col == app->mo.user.col && was.row == app->mo.user.row)
+    int moved = was.col != app->mo.user.col || was.row != app->mo.user.row;
+    /* the lesson begun again where the head stands (the loop: back to
+     * this cell) and, but with desc.flow_v4, looks (issue 35) */
+    int again = app->level.mode == HOL_APP_TUTORIAL &&
+                (app->d.flow_v4 ? moved && !app->has_target : 1);
+    if (!moved && !again)
         return HOL_OK;
-    hol_err err = hol_world_update(app->world, &app->mo.user);
-    if (app->level.mode == HOL_APP_TUTORIAL && !app->has_target)
-        hol__stage(app, app->stage, &app->mo.user); /* the loop: back to this cell */
+    hol_err err = moved ? hol_world_update(app->world, &app->mo.user) : HOL_OK;
+    if (!err && again) {
+        if (app->has_target)
+            (void)hol_world_release(app->world, app->target);
+        hol__stage(app, app->stage, &app->mo.user);
+    }
     int exact = 1, opt = -1;
     if (err || (err = hol__plan(app, &app->mo.user, &opt, &exact)))
         return err;
@@ -672,6 +714,7 @@ static hol_err hol__move(hol_app *app, const hol_input *in, double t0, double dt
     if (in->flags & HOL_INPUT_HEAD_VALID) {
         double pos[3] = {in->head.pos[0], in->head.pos[1], in->head.pos[2]};
         hol__yaw_pitch_from_quat(in->head.quat, &app->mo.yaw_deg, &app->mo.pitch_deg);
+        app->face_pending = 0; /* a head is turned by the player alone */
         if (!hol__may_walk(in)) /* the look follows; the head walks nothing */
             return HOL_OK;
         if (app->rebase)
@@ -683,6 +726,9 @@ static hol_err hol__move(hol_app *app, const hol_input *in, double t0, double dt
     }
     if (in->flags & HOL_INPUT_SNAP_YAW)
         app->mo.yaw_deg = in->snap_yaw_deg;
+    if (app->face_pending) /* a lesson began: face what it names */
+        app->mo.yaw_deg = app->face_yaw;
+    app->face_pending = 0;
     if (dt > HOL__STALL_S)
         return HOL_OK;
     int n = (int)ceil(dt / HOL__SUBSTEP - 1e-9);
@@ -699,8 +745,10 @@ static hol_err hol__move(hol_app *app, const hol_input *in, double t0, double dt
 }
 
 /* A frame of a screen of text (state HOL_APP_SCREEN): quit quits, confirm
- * goes on (the instructions: the level begins at the next frame; the
- * closing screen: the session ends); nothing else acts. */
+ * goes on (the instructions: the ready screen, or with desc.flow_v4 the
+ * level; the ready screen: the level begins at the next frame, its minimap
+ * shown; the closing screen: the
+ * session ends); nothing else acts. */
 static void hol__screen_frame(hol_app *app, const hol_input *in, uint32_t pressed)
 {
     hol_app_view *v = &app->view;
@@ -713,9 +761,14 @@ static void hol__screen_frame(hol_app *app, const hol_input *in, uint32_t presse
     } else if ((pressed & HOL_BTN_CONFIRM) && !v->paused) {
         if (app->screen == HOL_APP_SCREEN_CLOSING) {
             app->ev.next_level = 1;
+        } else if (app->screen == HOL_APP_SCREEN_INSTRUCTIONS && !app->d.flow_v4 &&
+                   !app->level.lesson) { /* a lesson has no clock to start (its walk line
+                                          * is its instructions) */
+            app->screen = HOL_APP_SCREEN_READY;
         } else {
             app->screen = HOL_APP_SCREEN_NONE;
             v->state = HOL_APP_PLAYING; /* pending_start: the next frame */
+            v->map.place = app->level.minimap;
         }
     }
     if (in->flags & HOL_INPUT_HEAD_VALID) /* the look follows the head */

@@ -7,6 +7,10 @@
 #include "hol_app_impl.h"
 #include "hol_math.h"
 #include "hol_prompt.h"
+#include "hol_str.h"
+
+/* buf (an array) gets the table's text of id in lang. */
+#define HOL__PUT(buf, lang, id) snprintf((buf), sizeof(buf), "%s", hol_str((lang), (id)))
 
 #define HOL__PI 3.14159265358979323846
 
@@ -62,29 +66,48 @@ static void hol__fill_eyes(hol_app *app, const hol_input *in)
         app->place_panel = 0;
 }
 
+/* The map held off by a study (`fixed minimap` with the map off), but
+ * with desc.flow_v4: the tutorial does not send the player to it. */
+static int hol__map_held_off(const hol_app *app)
+{
+    return !app->d.flow_v4 && app->level.minimap_fixed && app->level.minimap == HOL_MINIMAP_OFF;
+}
+
+/* The tutorial's prompt for a lesson (the move keys, M): not while a
+ * lesson's feedback shows (one idea at a time), and M not on a level
+ * whose minimap a study holds; with desc.flow_v4 as before (issue 35). */
+static int hol__lesson_prompt(const hol_app *app, const hol_app_hud *h, int stage)
+{
+    if (app->level.mode != HOL_APP_TUTORIAL || app->stage != stage)
+        return 0;
+    if (app->d.flow_v4)
+        return 1;
+    return !h->feedback[0] && !(stage == 2 && app->level.minimap_fixed);
+}
+
 static void hol__fill_objective(const hol_app *app, hol_app_hud *h)
 {
-    static const char *const lesson[HOL_APP_TUTORIAL_STAGES] = {
-        "1/4 Step onto the marked tile ahead", "2/4 Walk round the marked tree to this cell",
-        "3/4 Use the map: reach the marker", "4/4 Find the flag, every cue on"};
+    int lang = hol__lang(app);
     switch (app->level.mode) {
-    case HOL_APP_FLAG: snprintf(h->objective, sizeof h->objective, "Find the flag"); break;
+    case HOL_APP_FLAG: HOL__PUT(h->objective, lang, HOL_S_OBJ_FLAG); break;
     case HOL_APP_KEYS:
         if (h->keys_held < h->keys_total)
-            snprintf(h->objective, sizeof h->objective, "Keys %d/%d", h->keys_held,
-                     h->keys_total);
+            snprintf(h->objective, sizeof h->objective, hol_str(lang, HOL_S_OBJ_KEYS_FMT),
+                     h->keys_held, h->keys_total);
         else
-            snprintf(h->objective, sizeof h->objective, "Bring the keys to the chest");
+            HOL__PUT(h->objective, lang, HOL_S_OBJ_CHEST);
         break;
     case HOL_APP_TUTORIAL:
-        snprintf(h->objective, sizeof h->objective, "%s", lesson[app->stage]);
+        HOL__PUT(h->objective, lang,
+                 hol__map_held_off(app) && app->stage == 2 ? HOL_S_LESSON_3_NOMAP
+                                                           : (hol_str_id)(HOL_S_LESSON_1 + app->stage));
         break;
     default:
         if (app->level.nroute)
-            snprintf(h->objective, sizeof h->objective, HOL_APP_ROUTE_TEXT,
+            snprintf(h->objective, sizeof h->objective, hol_str(lang, HOL_S_ROUTE_FMT),
                      app->route_k + (app->route_k < app->level.nroute), app->level.nroute);
         else
-            snprintf(h->objective, sizeof h->objective, "Explore");
+            HOL__PUT(h->objective, lang, HOL_S_OBJ_EXPLORE);
         break;
     }
 }
@@ -94,11 +117,12 @@ static void hol__fill_objective(const hol_app *app, hol_app_hud *h)
  * separated. */
 typedef struct hol__ask {
     uint32_t btn, alt; /* HOL_BTN_*; alt: the control to name when btn has none */
-    const char *what;
+    hol_str_id what;
 } hol__ask;
 
-static void hol__prompt(hol_app_hud *h, uint32_t device, const hol__ask *ask, int n)
+static void hol__prompt(const hol_app *app, hol_app_hud *h, const hol__ask *ask, int n)
 {
+    uint32_t device = app->device;
     size_t len = 0;
     h->hint[0] = 0;
     for (int i = 0; i < n; i++) {
@@ -108,7 +132,7 @@ static void hol__prompt(hol_app_hud *h, uint32_t device, const hol__ask *ask, in
         if (!b)
             continue;
         int k = snprintf(h->hint + len, sizeof h->hint - len, "%s%s: %s", len ? ", " : "", b,
-                         ask[i].what);
+                         hol_str(hol__lang(app), ask[i].what));
         if (k < 0 || (size_t)k >= sizeof h->hint - len) {
             h->hint[len] = 0; /* what does not fit is left out */
             break;
@@ -129,7 +153,8 @@ static void hol__menu_hint(const hol_app *app, const hol_input *in, hol_app_hud 
         app->view.state != HOL_APP_PLAYING || !(in->time_s - app->device_t < HOL_APP_MENU_HINT_S))
         return;
     size_t len = strlen(h->hint);
-    int k = snprintf(h->hint + len, sizeof h->hint - len, "%s%s: menu", len ? ", " : "", b);
+    int k = snprintf(h->hint + len, sizeof h->hint - len, "%s%s: %s", len ? ", " : "", b,
+                     hol_str(hol__lang(app), HOL_S_DO_MENU));
     if (k < 0 || (size_t)k >= sizeof h->hint - len)
         h->hint[len] = 0; /* no room: the prompt alone */
 }
@@ -154,10 +179,11 @@ const char *hol_app_end_word(const hol_app_view *v)
 /* A screen of text (state HOL_APP_SCREEN): its prompt. */
 static void hol__screen_status(const hol_app *app, hol_app_hud *h)
 {
-    const hol__ask ask[2] = {{HOL_BTN_CONFIRM, 0,
-                              app->screen == HOL_APP_SCREEN_CLOSING ? "finish" : "begin"},
-                             {HOL_BTN_QUIT, 0, "quit"}};
-    hol__prompt(h, app->device, ask, app->screen == HOL_APP_SCREEN_CLOSING ? 1 : 2);
+    const hol__ask ask[2] = {
+        {HOL_BTN_CONFIRM, 0,
+         app->screen == HOL_APP_SCREEN_CLOSING ? HOL_S_DO_FINISH : HOL_S_DO_BEGIN},
+        {HOL_BTN_QUIT, 0, HOL_S_DO_QUIT}};
+    hol__prompt(app, h, ask, app->screen == HOL_APP_SCREEN_CLOSING ? 1 : 2);
 }
 
 /* The pointing question (state HOL_APP_POINT): what to point at, and how
@@ -165,16 +191,13 @@ static void hol__screen_status(const hol_app *app, hol_app_hud *h)
 static void hol__point_status(const hol_app *app, const hol_input *in, hol_app_hud *h)
 {
     const hol_app_level *L = &app->level;
-    const char *what = L->point == HOL_APP_POINT_START ? "the start"
-                       : L->mode == HOL_APP_KEYS       ? "the chest"
-                                                       : "the flag";
-    if (in && (in->flags & HOL_INPUT_HEAD_VALID) &&
-        (in->flags & (HOL_INPUT_HAND_R_VALID | HOL_INPUT_HAND_L_VALID)))
-        snprintf(h->status, sizeof h->status, "Point the controller at %s", what);
-    else
-        snprintf(h->status, sizeof h->status, "Turn to face %s", what);
-    const hol__ask ask[1] = {{HOL_BTN_CONFIRM, 0, "confirm"}};
-    hol__prompt(h, app->device, ask, 1);
+    int what = L->point == HOL_APP_POINT_START ? 0 : L->mode == HOL_APP_KEYS ? 1 : 2;
+    int ctrl = in && (in->flags & HOL_INPUT_HEAD_VALID) &&
+               (in->flags & (HOL_INPUT_HAND_R_VALID | HOL_INPUT_HAND_L_VALID));
+    HOL__PUT(h->status, hol__lang(app),
+             (hol_str_id)((ctrl ? HOL_S_POINT_CTRL_START : HOL_S_POINT_FACE_START) + what));
+    const hol__ask ask[1] = {{HOL_BTN_CONFIRM, 0, HOL_S_DO_CONFIRM}};
+    hol__prompt(app, h, ask, 1);
 }
 
 /* Status (end screen, pause, safety) and the prompt of what the buttons do
@@ -183,45 +206,45 @@ static void hol__fill_status(hol_app *app, const hol_input *in, hol_app_hud *h)
 {
     const hol_app_view *v = &app->view;
     uint32_t dev = app->device;
+    int lang = hol__lang(app);
     long secs = (long)app->level_t;
     h->hint[0] = 0;
     h->status[0] = 0;
     if (app->menu) {
-        snprintf(h->status, sizeof h->status, "Paused");
-        const hol__ask ask[3] = {{HOL_BTN_MENU, 0, "resume"},
-                                 {HOL_BTN_CONFIRM, 0, "restart"},
-                                 {HOL_BTN_QUIT, HOL_BTN_BACK, "quit"}};
-        hol__prompt(h, dev, ask, 3);
+        HOL__PUT(h->status, lang, HOL_S_PAUSED);
+        const hol__ask ask[3] = {{HOL_BTN_MENU, 0, HOL_S_DO_RESUME},
+                                 {HOL_BTN_CONFIRM, 0, HOL_S_DO_RESTART},
+                                 {HOL_BTN_QUIT, HOL_BTN_BACK, HOL_S_DO_QUIT}};
+        hol__prompt(app, h, ask, 3);
     } else if (v->state == HOL_APP_SCREEN) {
         hol__screen_status(app, h);
     } else if (v->state == HOL_APP_ASK) {
-        const hol__ask ask[2] = {{HOL_BTN_CONFIRM, 0, "answer"}, {HOL_BTN_QUIT, 0, "quit"}};
-        hol__prompt(h, dev, ask, 2);
+        const hol__ask ask[2] = {{HOL_BTN_CONFIRM, 0, HOL_S_DO_ANSWER},
+                                 {HOL_BTN_QUIT, 0, HOL_S_DO_QUIT}};
+        hol__prompt(app, h, ask, 2);
     } else if (v->state == HOL_APP_POINT) {
         hol__point_status(app, in, h);
     } else if (v->state == HOL_APP_DONE) {
         if (app->timed_out)
-            snprintf(h->status, sizeof h->status, "Time up: %d steps, best %d, %ld:%02ld",
-                     app->steps, app->optimum, secs / 60 % 100000, secs % 60);
+            snprintf(h->status, sizeof h->status, hol_str(lang, HOL_S_TIME_UP_FMT), app->steps, app->optimum, secs / 60 % 100000, secs % 60);
         else if (app->level.mode == HOL_APP_TUTORIAL)
-            snprintf(h->status, sizeof h->status, "Tutorial done: %d steps, %ld:%02ld",
-                     app->steps, secs / 60 % 100000, secs % 60);
+            snprintf(h->status, sizeof h->status, hol_str(lang, HOL_S_TUTORIAL_DONE_FMT), app->steps, secs / 60 % 100000, secs % 60);
         else
-            snprintf(h->status, sizeof h->status, "Done: %d steps, best %d, %ld:%02ld",
-                     app->steps, app->optimum, secs / 60 % 100000, secs % 60);
-        const hol__ask ask[2] = {{HOL_BTN_CONFIRM, 0, app->level.last ? "finish" : "next level"},
-                                 {HOL_BTN_RESTART, 0, "again"}};
-        hol__prompt(h, dev, ask, 2);
+            snprintf(h->status, sizeof h->status, hol_str(lang, HOL_S_DONE_FMT), app->steps, app->optimum, secs / 60 % 100000, secs % 60);
+        const hol__ask ask[2] = {
+            {HOL_BTN_CONFIRM, 0, app->level.last ? HOL_S_DO_FINISH : HOL_S_DO_NEXT_LEVEL},
+            {HOL_BTN_RESTART, 0, HOL_S_DO_AGAIN}};
+        hol__prompt(app, h, ask, 2);
     } else if (v->paused && in && (in->flags & HOL_INPUT_DEVICE_LOST)) {
-        snprintf(h->status, sizeof h->status, "Controller lost");
-        snprintf(h->hint, sizeof h->hint, "Plug it back in, or press a key");
+        HOL__PUT(h->status, lang, HOL_S_DEVICE_LOST);
+        HOL__PUT(h->hint, lang, HOL_S_DEVICE_BACK);
     } else if (v->paused) {
-        snprintf(h->status, sizeof h->status, "Paused");
-    } else if (app->level.mode == HOL_APP_TUTORIAL && app->stage == 0 && hol_prompt_move(dev)) {
-        snprintf(h->hint, sizeof h->hint, "%s", hol_prompt_move(dev));
-    } else if (app->level.mode == HOL_APP_TUTORIAL && app->stage == 2) {
-        const hol__ask ask[1] = {{HOL_BTN_MINIMAP, 0, "map on the HUD, in the hand, off"}};
-        hol__prompt(h, dev, ask, 1);
+        HOL__PUT(h->status, lang, HOL_S_PAUSED);
+    } else if (hol__lesson_prompt(app, h, 0) && hol_prompt_move(dev, lang)) {
+        snprintf(h->hint, sizeof h->hint, "%s", hol_prompt_move(dev, lang));
+    } else if (hol__lesson_prompt(app, h, 2)) {
+        const hol__ask ask[1] = {{HOL_BTN_MINIMAP, 0, HOL_S_DO_MAP}};
+        hol__prompt(app, h, ask, 1);
     }
     hol__menu_hint(app, in, h);
     /* safety: a tracked head beyond the hedges; a play area too small */
@@ -230,11 +253,11 @@ static void hol__fill_status(hol_app *app, const hol_input *in, hol_app_hud *h)
     if (in && (in->flags & HOL_INPUT_HEAD_VALID) &&
         (in->head.pos[0] < 0 || in->head.pos[0] > w || in->head.pos[2] < 0 ||
          in->head.pos[2] > d))
-        snprintf(h->status, sizeof h->status, "Outside the room: step back in");
+        HOL__PUT(h->status, lang, HOL_S_OUTSIDE);
     if (in && (in->flags & HOL_INPUT_BOUNDS_SMALL) && !h->hint[0]) {
         char size[32]; /* the room in metres: "3 x 3", "2.5 x 3.75" */
         snprintf(size, sizeof size, "%.3g x %.3g", w, d);
-        snprintf(h->hint, sizeof h->hint, "Play area under %.12s m: mind the edges", size);
+        snprintf(h->hint, sizeof h->hint, hol_str(lang, HOL_S_SMALL_AREA_FMT), size);
     }
 }
 
@@ -245,6 +268,7 @@ static void hol__fill_lines(const hol_app *app, hol_app_hud *h)
 {
     const hol_app_view *v = &app->view;
     long secs = (long)app->level_t, lim = (long)app->level.time_limit_s;
+    int lang = hol__lang(app);
     h->nlines = 0;
     if (v->state == HOL_APP_ASK) {
         hol__ask_lines(app, h);
@@ -252,6 +276,7 @@ static void hol__fill_lines(const hol_app *app, hol_app_hud *h)
     }
     if (v->state == HOL_APP_SCREEN) { /* the screen's text, whole */
         const char *text = app->screen == HOL_APP_SCREEN_CLOSING ? app->level.closing
+                           : app->screen == HOL_APP_SCREEN_READY ? hol_str(lang, HOL_S_READY)
                                                                  : app->level.instructions;
         int n = hol_app_wrap(text, HOL_APP_SCREEN_COLS, h->lines, HOL_APP_HUD_LINES);
         h->nlines = n < HOL_APP_HUD_LINES ? n : HOL_APP_HUD_LINES;
@@ -261,22 +286,30 @@ static void hol__fill_lines(const hol_app *app, hol_app_hud *h)
     (h->nlines < HOL_APP_HUD_LINES                                                         \
          ? (void)snprintf(h->lines[h->nlines++], HOL_APP_TEXT_MAX, __VA_ARGS__)            \
          : (void)0)
-    if (h->feedback[0] && (v->state != HOL_APP_DONE || !strcmp(h->feedback, HOL__FIXED_TEXT)))
+    if (h->feedback[0] &&
+        (v->state != HOL_APP_DONE || !strcmp(h->feedback, hol_str(lang, HOL_S_FIXED))))
         HOL__LINE("%s", h->feedback);
     if (h->note[0] && v->state != HOL_APP_DONE)
         HOL__LINE("%s", h->note);
+    /* one idea at a time (issue 35): a lesson's feedback, and its note,
+     * alone; the next lesson's objective after it */
+    int alone = !app->d.flow_v4 && app->level.mode == HOL_APP_TUTORIAL &&
+                v->state == HOL_APP_PLAYING && h->feedback[0] && !h->status[0] &&
+                strcmp(h->feedback, hol_str(lang, HOL_S_FIXED));
+    if (alone && !h->debug)
+        return;
     HOL__LINE("%s", h->status[0] ? h->status : h->objective);
     if (v->seated) /* the panel names the mode */
         HOL__LINE("%s", hol_prompt_seated(h->device));
-    HOL__LINE("STEPS %d", h->steps);
+    HOL__LINE(hol_str(lang, HOL_S_STEPS_FMT), h->steps);
     if (lim > 0)
-        HOL__LINE("TIME %ld:%02ld OF %ld:%02ld", secs / 60 % 100000, secs % 60, lim / 60 % 100000,
+        HOL__LINE(hol_str(lang, HOL_S_TIME_OF_FMT), secs / 60 % 100000, secs % 60, lim / 60 % 100000,
                   lim % 60);
     if (h->debug) {
-        HOL__LINE("TILE %.40s", h->address);
-        HOL__LINE("CELL %d,%d NORTH %d", v->user.col, v->user.row, v->user.orient);
+        HOL__LINE(hol_str(lang, HOL_S_TILE_FMT), h->address);
+        HOL__LINE(hol_str(lang, HOL_S_CELL_FMT), v->user.col, v->user.row, v->user.orient);
         if (lim <= 0)
-            HOL__LINE("TIME %ld:%02ld", secs / 60 % 100000, secs % 60);
+            HOL__LINE(hol_str(lang, HOL_S_TIME_FMT), secs / 60 % 100000, secs % 60);
     }
 #undef HOL__LINE
 }
@@ -307,9 +340,10 @@ static void hol__fill_hud(hol_app *app, const hol_input *in)
     int fb = tut && app->feedback[0] && app->level_t < app->feedback_until;
     int fixed = app->fixed_shown && in && in->time_s < app->fixed_until;
     snprintf(h->feedback, sizeof h->feedback, "%s",
-             fixed ? HOL__FIXED_TEXT : fb ? app->feedback : "");
+             fixed ? hol_str(hol__lang(app), HOL_S_FIXED) : fb ? app->feedback : "");
     snprintf(h->note, sizeof h->note, "%s",
-             fb && !fixed && app->nmarks && app->rings_note ? HOL_APP_RINGS_TEXT : "");
+             fb && !fixed && app->nmarks && app->rings_note ? hol_str(hol__lang(app), HOL_S_RINGS)
+                                                            : "");
     hol__fill_objective(app, h);
     hol__fill_status(app, in, h);
     hol__fill_lines(app, h);
@@ -341,7 +375,8 @@ static void hol__fill_map(hol_app *app)
             m->objectives[m->nobjectives++] = L->chest;
     }
     /* the lesson's marks go with its feedback (not with "Minimap fixed") */
-    m->nmarks = h->feedback[0] && strcmp(h->feedback, HOL__FIXED_TEXT) ? app->nmarks : 0;
+    m->nmarks =
+        h->feedback[0] && strcmp(h->feedback, hol_str(hol__lang(app), HOL_S_FIXED)) ? app->nmarks : 0;
     memcpy(m->marks, app->marks, sizeof m->marks);
     v->nobjects = 0;
     if (L->mode == HOL_APP_FLAG)
@@ -365,6 +400,13 @@ static void hol__fill_map(hol_app *app)
     int tut = L->mode == HOL_APP_TUTORIAL;
     int opt = tut ? app->stage_optimum : app->optimum, taken = tut ? app->stage_steps : app->steps;
     m->npath = 0;
+    if (v->state == HOL_APP_SCREEN && app->screen != HOL_APP_SCREEN_CLOSING) {
+        /* before the clock starts: no minimap, no objective (issue 35) */
+        m->place = HOL_MINIMAP_OFF;
+        m->nobjectives = m->nmarks = v->nobjects = 0;
+        v->tree_marked = 0;
+        return;
+    }
     if ((L->cues & HOL_CUE_PATH) && !app->done && opt >= 0 && app->remaining >= 0 &&
         taken + app->remaining > opt + app->d.stray_steps) {
         m->npath = app->nwalk < HOL_APP_PATH_MAX ? app->nwalk : HOL_APP_PATH_MAX;
@@ -372,12 +414,12 @@ static void hol__fill_map(hol_app *app)
     }
     if (tut && m->npath && !app->path_told) { /* the first time: what it means */
         app->path_told = 1;
-        snprintf(app->feedback, sizeof app->feedback, "%s", HOL_APP_PATH_TEXT);
+        HOL__PUT(app->feedback, hol__lang(app), HOL_S_PATH);
         app->feedback_until = app->level_t + HOL__FEEDBACK_S;
         app->nmarks = 0;
         app->rings_note = 0;
         v->hud.note[0] = 0;
-        snprintf(v->hud.feedback, sizeof v->hud.feedback, "%s", HOL_APP_PATH_TEXT);
+        HOL__PUT(v->hud.feedback, hol__lang(app), HOL_S_PATH);
     }
 }
 
@@ -400,6 +442,42 @@ static void hol__fill_lights(hol_app *app)
     }
 }
 
+/* The sound's caption (hol_app.h: hol_app_hud.caption): a chime seen
+ * where core/hol_sound.c plays one (the step's level start; more keys held
+ * than the last step ended with; the level done from play, not timed
+ * out), not while paused; then the beacons while they sound. */
+static void hol__caption(hol_app *app, const hol_input *in)
+{
+    hol_app_view *v = &app->view;
+    hol_app_hud *h = &v->hud;
+    /* the chimes are followed with captions off too: a platform that turns
+     * them on after its first step (its sound opens then) shows the
+     * level's first chime from its next frame */
+    int sound = v->state != HOL_APP_IDLE && v->sound != HOL_SOUND_OFF;
+    if (in && sound && !v->paused) {
+        int id = -1;
+        if (app->ev.level_started)
+            id = HOL_S_CAP_START;
+        else if (v->state == HOL_APP_DONE && app->cap_state == HOL_APP_PLAYING && !h->timed_out)
+            id = h->keys_total > 0 ? HOL_S_CAP_CHEST : HOL_S_CAP_FLAG;
+        else if (h->keys_held > app->cap_keys)
+            id = HOL_S_CAP_KEY;
+        if (id >= 0)
+            app->cap_id = id, app->cap_until = in->time_s + HOL_APP_CAPTION_S;
+    }
+    if (in)
+        app->cap_keys = h->keys_held, app->cap_state = v->state;
+    h->caption[0] = 0;
+    if (!sound || !app->captions)
+        return;
+    if (app->cap_id >= 0 && in && in->time_s < app->cap_until)
+        HOL__PUT(h->caption, hol__lang(app), (hol_str_id)app->cap_id);
+    else if (v->state == HOL_APP_PLAYING && (v->map.cues & HOL_CUE_SOUND) && v->map.nobjectives)
+        HOL__PUT(h->caption, hol__lang(app), HOL_S_CAP_BEACON);
+    if (h->caption[0] && h->nlines < HOL_APP_HUD_LINES)
+        snprintf(h->lines[h->nlines++], HOL_APP_TEXT_MAX, "%s", h->caption);
+}
+
 void hol__fill_view(hol_app *app, const hol_input *in)
 {
     hol_app_view *v = &app->view;
@@ -411,4 +489,11 @@ void hol__fill_view(hol_app *app, const hol_input *in)
     hol__fill_hud(app, in);
     hol__fill_map(app);
     hol__fill_lights(app);
+    hol_body *b = &app->view.body;
+    hol_body_from_input(in, app->view.state == HOL_APP_POINT, b);
+    /* the minimap in the hand is what the left controller holds: drawn
+     * instead of it (core/hol_body.h) */
+    if (app->view.map.place == HOL_MINIMAP_HAND && b->hand[HOL_HAND_LEFT].kind == HOL_BODY_CONTROLLER)
+        b->hand[HOL_HAND_LEFT].kind = HOL_BODY_NONE;
+    hol__caption(app, in);
 }

@@ -5,6 +5,8 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "hol_str.h"
+
 #define HOL__EPS 1e-6 /* metres: touching the boundary still fits */
 
 /* The largest cell (cm, a multiple of the step, at most the maximum) of a
@@ -214,17 +216,17 @@ hol_err hol_fit_level(hol_level *lv, const hol_fit *f, int *out_changed)
 
 int hol_fit_text(const hol_fit *f, double margin, char *buf, size_t cap)
 {
+    return hol_fit_say(f, margin, HOL_LANG_EN, buf, cap);
+}
+
+int hol_fit_say(const hol_fit *f, double margin, int lang, char *buf, size_t cap)
+{
     char w[32], d[32], c[32], m[32];
     hol__metres(f->area_w, w, sizeof w);
     hol__metres(f->area_d, d, sizeof d);
     hol__metres(f->cell_m, c, sizeof c);
     hol__metres(hol__margin(margin), m, sizeof m);
     if (f->too_small)
-        return snprintf(buf, cap,
-                        "Your %s x %s m play area is smaller than the smallest room (3 x 3 "
-                        "cells of 0.5 m and %s m clear): playing 3 x 3 cells of 0.5 m, keep to "
-                        "the middle",
-                        w, d, m);
-    return snprintf(buf, cap, "Room %d x %d cells of %s m fits your %s x %s m play area",
-                    f->cols, f->rows, c, w, d);
+        return snprintf(buf, cap, hol_str(lang, HOL_S_FIT_SMALL_FMT), w, d, m);
+    return snprintf(buf, cap, hol_str(lang, HOL_S_FIT_FMT), f->cols, f->rows, c, w, d);
 }

@@ -74,6 +74,9 @@ int hol_fit_polygon_holds(const float *xz, int n, double margin, int cols, int r
  * playing 3 x 3 cells of 0.5 m, keep to the middle". Returns the length
  * (snprintf's). */
 int hol_fit_text(const hol_fit *f, double margin, char *buf, size_t cap);
+/* The same line in lang (hol_lang, core/hol_str.h) for the player (the web
+ * page's status); hol_fit_text is its English, for the tools' lines. */
+int hol_fit_say(const hol_fit *f, double margin, int lang, char *buf, size_t cap);
 
 /* Plays the fit in a level that names neither a room nor a cell (its
  * lvl.room_cols and lvl.cell_m are 0): hol_level_set_geometry, the

@@ -62,6 +62,16 @@
  * - Axes are in [-1, 1] after the platform's dead zone; zero is at rest.
  *   The app step turns them into motion (pancake mode); a headset sends
  *   zero axes and a tracked head.
+ * - Tracked hands (WebXR's XRHand, OpenXR's hand tracking): `joints[h]`
+ *   holds the 25 joints of hand h in room coordinates (WebXR's order:
+ *   HOL_JOINT_*), each a position and a radius, when joints[h].tracked is
+ *   1. They are drawn (the view's body, core/hol_body.h) and the platform
+ *   may read a gesture from them (hol_gesture_step: the hands-only
+ *   recentre, which it gives the app as HOL_BTN_RECENTRE); the app step
+ *   decides nothing else from them. They are not in the line format
+ *   (core/hol_input_io.h): a recording keeps the grips and the buttons
+ *   the joints gave, and its replay draws a tracked hand as its grip's
+ *   controller model.
  * - Plain data with fixed-size fields; no pointers, no allocation.
  */
 #ifndef HOL_INPUT_H
@@ -145,6 +155,21 @@ enum hol_input_device {
 
 enum { HOL_HAND_LEFT = 0, HOL_HAND_RIGHT = 1 };
 
+/* A tracked hand's joints, in WebXR's order (XRHand): the wrist, then
+ * four of the thumb (metacarpal, proximal, distal, tip) and five of each
+ * finger (metacarpal, proximal, intermediate, distal, tip). */
+#define HOL_HAND_JOINTS 25
+enum { /* the joints the app reads (a finger's: its metacarpal + 0..4) */
+    HOL_JOINT_WRIST = 0, HOL_JOINT_THUMB_METACARPAL = 1, HOL_JOINT_THUMB_TIP = 4,
+    HOL_JOINT_INDEX_METACARPAL = 5, HOL_JOINT_INDEX_TIP = 9, HOL_JOINT_PINKY_METACARPAL = 20
+};
+
+typedef struct hol_hand_joints {
+    uint32_t tracked;                 /* 1: every joint below is tracked */
+    float pos[HOL_HAND_JOINTS][3];    /* metres, room coordinates */
+    float radius[HOL_HAND_JOINTS];    /* metres (WebXR's radius; 0: 8 mm) */
+} hol_hand_joints;
+
 typedef struct hol_pose {
     float pos[3];  /* metres, room coordinates */
     float quat[4]; /* x, y, z, w; identity: looking north, up +y */
@@ -161,6 +186,7 @@ typedef struct hol_input {
     uint32_t pressed;  /* HOL_BTN_* pressed since the previous record */
     uint32_t device;   /* HOL_DEVICE_* in use */
     float snap_yaw_deg; /* with HOL_INPUT_SNAP_YAW: the look's new yaw */
+    hol_hand_joints joints[2]; /* tracked hands (see above; not recorded) */
 } hol_input;
 
 #endif

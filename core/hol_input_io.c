@@ -17,6 +17,23 @@ static int hol__pose_valid(const hol_pose *p)
     return 1;
 }
 
+/* A tracked hand's joints: finite, radii >= 0 (untracked: not read). */
+static int hol__joints_valid(const hol_hand_joints *j)
+{
+    if (!j->tracked)
+        return 1;
+    if (j->tracked != 1)
+        return 0;
+    for (int i = 0; i < HOL_HAND_JOINTS; i++) {
+        for (int k = 0; k < 3; k++)
+            if (!isfinite(j->pos[i][k]))
+                return 0;
+        if (!(j->radius[i] >= 0 && j->radius[i] < 1))
+            return 0;
+    }
+    return 1;
+}
+
 static int hol__axis_ok(float v)
 {
     return v >= -1.0f && v <= 1.0f;
@@ -44,7 +61,8 @@ int hol_input_valid(const hol_input *in)
         if (!hol__axis_ok(in->move[i]) || !hol__axis_ok(in->turn[i]))
             return 0;
     return hol__pose_valid(&in->head) && hol__pose_valid(&in->hand[0]) &&
-           hol__pose_valid(&in->hand[1]);
+           hol__pose_valid(&in->hand[1]) && hol__joints_valid(&in->joints[0]) &&
+           hol__joints_valid(&in->joints[1]);
 }
 
 static int hol__all_zero(const void *p, size_t n)

@@ -30,7 +30,9 @@
  *   fields whose bytes are all zero left out (a -0 is written), floats with 9
  *   significant digits and the time with 17, so parsing the line gives back
  *   the record bit for bit. A recording of lines therefore
- *   replays exactly the records that were stepped.
+ *   replays exactly the records that were stepped. A tracked hand's
+ *   joints (hol_input.joints) are not written (core/hol_input.h): a line
+ *   read back has none.
  * - Pure: no allocation, no globals, no OS; the caller gives the buffers.
  */
 #ifndef HOL_INPUT_IO_H
@@ -57,7 +59,8 @@ size_t hol_input_format(const hol_input *in, char *out, size_t cap);
 hol_err hol_input_parse(const char *s, size_t len, hol_input *out, size_t *out_bad);
 
 /* 1 when every number is finite, time >= 0, axes in [-1, 1], the snap yaw
- * in [0, 360), the device known and no unknown flag or button bit is set. */
+ * in [0, 360), the device known, no unknown flag or button bit is set and
+ * a tracked hand's joints are finite with radii in [0, 1). */
 int hol_input_valid(const hol_input *in);
 
 /* The line format's name of a HOL_DEVICE_* value ("" for NONE, NULL for an

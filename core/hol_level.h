@@ -28,7 +28,10 @@
  *   line 0); the text is kept with LF line ends (CR LF read as LF, a last
  *   line without its newline given one), which is exactly what a recording
  *   carries and replays, and its SHA-256 (hol_sha256.h) is kept: the
- *   `sha256sum` of a file with LF line ends. A study's labels start empty.
+ *   `sha256sum` of a file with LF line ends. The hash covers the text up
+ *   to a line HOL_LEVEL_LAST_MARK (hashed bytes; all without one), so a
+ *   study's level has one hash whether or not it is the participant's
+ *   last (issue 35). A study's labels start empty.
  * - Pure: no allocation, no I/O, no globals.
  */
 #ifndef HOL_LEVEL_H
@@ -45,6 +48,9 @@
 #define HOL_LEVEL_LINE_MAX 511  /* bytes of one line, without its newline */
 #define HOL_LEVEL_NAME_MAX 64   /* with the NUL */
 #define HOL_LEVEL_MAX_DIST 10   /* objectives by distance: 1..10 tiles */
+/* The line before a study's lines for a participant's last level (its
+ * closing, its questionnaires `after study`): the hash stops there. */
+#define HOL_LEVEL_LAST_MARK "# the participant's last level (not in level_sha256):"
 
 typedef struct hol_level_err {
     hol_err code;
@@ -59,6 +65,7 @@ typedef struct hol_level {
     char text[HOL_LEVEL_TEXT_MAX + 2]; /* LF line ends, NUL-terminated */
     size_t len;
     uint8_t sha256[32];
+    size_t hashed; /* the bytes of text sha256 covers (see above) */
     hol_app_level lvl;
     /* a study's labels (core/hol_study.h): the condition it is played
      * under and its position in the participant's order; "" and 0 outside

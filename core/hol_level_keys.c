@@ -8,6 +8,7 @@
 #include "hol_lesson.h"
 #include "hol_quiz.h"
 #include "hol_room.h"
+#include "hol_str.h"
 #include "hol_tile.h"
 
 hol_err hol__key_mode(hol__lp *p, char **f, int nf)
@@ -233,6 +234,16 @@ hol_err hol__key_sound(hol__lp *p, char **f, int nf)
     static const char *const modes[3] = {"all", "cues", "off"};
     (void)nf;
     return hol__lv_one_of(p, f, modes, 3, "all, cues or off", &p->L.sound);
+}
+
+/* lang en|de|nl: the language of the level's texts (core/hol_str.h) */
+hol_err hol__key_lang(hol__lp *p, char **f, int nf)
+{
+    static const char *const codes[HOL_LANG_COUNT] = {"en", "de", "nl"};
+    (void)nf;
+    hol_err e = hol__lv_one_of(p, f, codes, HOL_LANG_COUNT, "en, de or nl", &p->L.lang);
+    p->L.lang += !e; /* 1 + the language: 0 is the app's */
+    return e;
 }
 
 /* point start|objective (SPEC 8): the pointing question at the level's end */

@@ -46,6 +46,7 @@ static const struct {
     {"fixed", 2, 2, 0, hol__key_fixed},
     {"lighting", 2, 2, 0, hol__key_lighting},
     {"sound", 2, 2, 0, hol__key_sound},
+    {"lang", 2, 2, 0, hol__key_lang},
     {"point", 2, 2, 0, hol__key_point},
     {"instructions", 2, HOL__FIELDS + 1, 0, hol__key_text},
     {"closing", 2, HOL__FIELDS + 1, 0, hol__key_text},

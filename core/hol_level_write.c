@@ -8,6 +8,21 @@
 
 #include "hol_sha256.h"
 
+/* The bytes of text the hash covers: up to the line HOL_LEVEL_LAST_MARK
+ * (a study's lines for a participant's last level), else all. */
+static size_t hol__level_hashed(const char *text, size_t len)
+{
+    size_t m = sizeof HOL_LEVEL_LAST_MARK - 1;
+    for (size_t o = 0; o < len;) {
+        const char *nl = memchr(text + o, '\n', len - o);
+        size_t n = (size_t)((nl ? nl : text + len) - (text + o));
+        if (n == m && !memcmp(text + o, HOL_LEVEL_LAST_MARK, m))
+            return o;
+        o += n + 1;
+    }
+    return len;
+}
+
 hol_err hol_level_make(const char *name, size_t name_len, const char *text, size_t len,
                        hol_level *out, hol_level_err *err)
 {
@@ -48,7 +63,8 @@ hol_err hol_level_make(const char *name, size_t name_len, const char *text, size
     out->condition[0] = 0;
     out->position = 0;
     out->added = 0;
-    hol_sha256(out->text, out->len, out->sha256);
+    out->hashed = hol__level_hashed(out->text, out->len);
+    hol_sha256(out->text, out->hashed, out->sha256);
     return HOL_OK;
 }
 

@@ -4,6 +4,7 @@
 #include <stddef.h>
 
 #include "hol_input.h"
+#include "hol_str.h"
 
 #define HOL__NBTN 8 /* HOL_BTN_* bits 0..7 */
 
@@ -52,13 +53,13 @@ const char *hol_prompt_button(uint32_t device, uint32_t btn)
     return NULL;
 }
 
-const char *hol_prompt_move(uint32_t device)
+const char *hol_prompt_move(uint32_t device, int lang)
 {
     switch (device) {
     case HOL_DEVICE_NONE: return NULL;
-    case HOL_DEVICE_KEYBOARD: return "W/S/A/D: WALK, ARROWS: TURN";
-    case HOL_DEVICE_GAMEPAD: return "LEFT STICK: WALK, RIGHT STICK: TURN";
-    default: return "WALK IN YOUR ROOM";
+    case HOL_DEVICE_KEYBOARD: return hol_str(lang, HOL_S_MOVE_KEYBOARD);
+    case HOL_DEVICE_GAMEPAD: return hol_str(lang, HOL_S_MOVE_GAMEPAD);
+    default: return hol_str(lang, HOL_S_MOVE_ROOM);
     }
 }
 

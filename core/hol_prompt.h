@@ -15,9 +15,11 @@
  *   restarts, as on every device). NULL: no control gives it on that
  *   device.
  *   HOL_DEVICE_NONE names the action itself ("CONFIRM", "MENU", ...).
- * - hol_prompt_move(device) says how one walks with it ("W/S/A/D: WALK");
- *   NULL for HOL_DEVICE_NONE. hol_prompt_seated(device) names seated play
- *   and its step controls.
+ * - hol_prompt_move(device, lang) says how one walks with it ("W/S/A/D:
+ *   WALK"), in lang (core/hol_str.h); NULL for HOL_DEVICE_NONE. The
+ *   controls' names above are the names printed on them, in every
+ *   language. hol_prompt_seated(device) names seated play and its step
+ *   controls (English only, one table here, for the string table to take).
  * - The tables must follow the bindings: tests/test_xr_bind.c derives each
  *   XR word from the profile's binding path and compares.
  * - Pure data: static strings, no state.
@@ -28,7 +30,7 @@
 #include <stdint.h>
 
 const char *hol_prompt_button(uint32_t device, uint32_t btn);
-const char *hol_prompt_move(uint32_t device);
+const char *hol_prompt_move(uint32_t device, int lang);
 /* Seated play (HOL_INPUT_SEATED): the panel's line naming the mode and
  * how one steps with the device ("SEATED: W/A/S/D OR UP/DOWN: ONE STEP");
  * never NULL. */

@@ -31,7 +31,7 @@ static const struct {
 static const char *const hol__concepts[HOL_QUIZ_ITEMS] = {"square", "corner", "growth", "home"};
 static const char *const hol__names[2] = {"pretest", "posttest"};
 
-#define HOL__DONE_TEXT "The test is done: your answers are kept. Confirm to go on."
+#define HOL__DONE_TEXT "The test is done: your answers are kept."
 
 const char *hol_quiz_concept(int k)
 {
@@ -128,7 +128,7 @@ hol_err hol_quiz_fill(int phase, int q, hol_app_level *L)
     snprintf(L->asks[0].name, sizeof L->asks[0].name, "%s", hol__names[phase]);
     L->asks[0].when = HOL_APP_BEFORE_LEVEL;
     L->asks[0].n = HOL_QUIZ_ITEMS;
-    snprintf(L->instructions, sizeof L->instructions, "%s", HOL__DONE_TEXT);
+    snprintf(L->closing, sizeof L->closing, "%s", HOL__DONE_TEXT);
     L->time_limit_s = HOL_QUIZ_LEVEL_S;
     return HOL_OK;
 }

@@ -14,9 +14,9 @@
  *   counts of SPEC 9), never typed into a text.
  * - hol_quiz_fill makes the test a level (the level line `quiz pre|post`,
  *   docs/levels.md): mode explore, its four items asked before the level
- *   as questionnaire "pretest" or "posttest" (answers.csv), then a screen
- *   saying it is done and a level of HOL_QUIZ_LEVEL_S seconds (it ends at
- *   its time limit: the test takes no walk).
+ *   as questionnaire "pretest" or "posttest" (answers.csv), then a level
+ *   of HOL_QUIZ_LEVEL_S seconds (it ends at its time limit: the test takes
+ *   no walk) and a closing screen saying it is done.
  * - hol_quiz_key(questionnaire, item, right, cap): the right answer's text
  *   (a choice's label or a number in decimal) of an answer logged under
  *   that questionnaire and item id, and its concept's index; -1 when the

@@ -141,7 +141,12 @@ void hol_rec_write_header(const hol_rec_meta *m, const hol_level *levels, int nl
         study |= levels[i].condition[0] != 0;
     /* version 4 only with a session number, a study's hash, meta or ask */
     int four = m->session_no > 0 || m->study_sha256[0] || m->meta[0] || m->ask_item > 0;
-    hol__emitf(fn, ctx, "holonomy-rec %d\n", four ? 4 : study ? 3 : 2);
+    /* version 5 only where issue 35's flow shows: a ready screen, a tutorial */
+    int five = m->ready;
+    for (int i = 0; i < nlevels; i++)
+        five |= levels[i].lvl.instructions[0] != 0 || levels[i].lvl.mode == HOL_APP_TUTORIAL;
+    five &= !m->flow_v4;
+    hol__emitf(fn, ctx, "holonomy-rec %d\n", five ? 5 : four ? 4 : study ? 3 : 2);
     hol__emitf(fn, ctx, "session %s\n", m->session);
     if (m->participant[0])
         hol__emitf(fn, ctx, "participant %s\n", m->participant);
@@ -161,6 +166,8 @@ void hol_rec_write_header(const hol_rec_meta *m, const hol_level *levels, int nl
     }
     if (m->ask_item > 0)
         hol__emitf(fn, ctx, "ask %s %d %d\n", m->ask_session, m->ask_attempt, m->ask_item);
+    if (m->ready)
+        hol__emitf(fn, ctx, "ready\n");
     for (int i = 0; i < nlevels; i++) {
         hol__emitf(fn, ctx, "level %s\n", levels[i].name);
         if (levels[i].condition[0])
@@ -206,6 +213,7 @@ static hol_err hol__first_line(hol_rec_reader *r, const char *s, size_t len)
     if (len == 14 && s[13] >= '1' && s[13] <= '0' + HOL_REC_VERSION) {
         r->version = s[13] - '0';
         r->state = r->version == 1 ? HOL__LEVELS : HOL__META;
+        r->meta.flow_v4 = r->version < 5; /* played before issue 35's flow */
         return HOL_OK;
     }
     return hol__bad(r, HOL_EVERSION, "recording format '%.30s' is not version 1 to %d",
@@ -310,10 +318,16 @@ static long hol__rec_num(const char *s, size_t len, size_t *i, long max)
     return *i == b || s[b] == '0' || n > max ? -1 : n;
 }
 
-/* "ask ID ATTEMPT ITEM" (version 4, once, before the first level). 1 when
- * the line was one. */
+/* "ask ID ATTEMPT ITEM" (version 4) or "ready" (version 5), once each,
+ * before the first level. 1 when the line was one. */
 static int hol__ask_line(hol_rec_reader *r, const char *s, size_t len, hol_err *err)
 {
+    if (len == 5 && !memcmp(s, "ready", 5) && r->version >= 5) { /* "ready", once */
+        int ok = r->state == HOL__META && !r->meta.ready;
+        r->meta.ready = 1;
+        *err = ok ? HOL_OK : hol__bad(r, HOL_EPARSE, "not a valid 'ready' line (once, before the levels)");
+        return 1;
+    }
     if (len < 4 || memcmp(s, "ask ", 4) || r->version < 4)
         return 0;
     const char *sp = memchr(s + 4, ' ', len - 4);

@@ -5,7 +5,8 @@
  * Contract
  * - Text, one item per line (LF; a CR before the LF is ignored on reading):
  *
- *     holonomy-rec 2        (3 for a study's session, 4 with the lines below)
+ *     holonomy-rec 2        (3 for a study's session, 4 with the lines below,
+ *                           5 when a ready screen can show: below)
  *     session ID            the session's id          (version 2)
  *     participant ID        optional                  (version 2)
  *     start ISO             start, UTC: 2025-01-31T12:00:00Z (version 2)
@@ -23,6 +24,9 @@
  *                           are asked from ITEM (1..255), the answers on
  *                           attempt ATTEMPT (1..999999) of session ID
  *                           (version 4, optional; meta.ask_*)
+ *     ready                 a resumed session: its first level begins on
+ *                           the ready screen (version 5, optional, once;
+ *                           meta.ready)
  *     level NAME            each level of the session, in order:
  *     condition NAME POS    its study condition and position (version 3)
  *     L LINE                its text's lines (hol_level.h), then
@@ -32,10 +36,17 @@
  *                           the window closed: HOL_REC_ABORTED_LINE), so a
  *                           replay ends it the same way
  *
- *   Versions 1 (no metadata lines), 2 (no study) and 3 are read too; the
+ *   Versions 1 (no metadata lines), 2 (no study), 3 and 4 are read too; the
  *   writer writes version 2 unless the session is a study's (3) or has a
  *   session number, a study hash or meta (4), so a recording without them
- *   reads in a build that knows only version 2 (or 3).
+ *   reads in a build that knows only version 2 (or 3); it writes 5 when a
+ *   level has instructions or is a tutorial, or the line `ready` is
+ *   written: the sessions issue 35's flow (the ready screen, the
+ *   tutorial's lessons) changed. A recording of version 1 to 4 was played
+ *   before that flow: its reader sets meta.flow_v4, the session then
+ *   gives the app hol_app_desc.flow_v4, so it replays as it was played;
+ *   the writer writes no version 5 for such a meta (a replay's recording
+ *   keeps its version).
  *   The metadata lines come before the first level, each at most once
  *   (meta: once per KEY, up to HOL_REC_META_MAX);
  *   session, start and version are required from version 2, study in
@@ -70,7 +81,7 @@
 #define HOL_REC_ABORTED_LINE "end aborted"
 #include "hol_level.h"
 
-#define HOL_REC_VERSION 4
+#define HOL_REC_VERSION 5
 #define HOL_REC_MAX_LEVELS 16
 #define HOL_REC_LINE_MAX 1024
 #define HOL_REC_ID_MAX 64 /* with the NUL */
@@ -97,6 +108,13 @@ typedef struct hol_rec_meta {
      * ask_attempt (1..999999) of session ask_session; 0, 0, "": none */
     char ask_session[HOL_REC_ID_MAX];
     int ask_attempt, ask_item;
+    /* 1: a resumed session: its first level begins on the ready screen
+     * (hol_app_ready; issue 35); 0: none */
+    int ready;
+    /* 1: read from a recording of version 1 to 4, played before issue
+     * 35's flow: its session's app plays that flow (hol_app_desc.flow_v4);
+     * 0 (live play, version 5) */
+    int flow_v4;
 } hol_rec_meta;
 
 /* 1 when k (n bytes) is a meta KEY: 1..32 of a-z, 0-9, '_'. */

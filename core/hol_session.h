@@ -75,6 +75,9 @@
  *   meta.ask_attempt: the rows a report groups with the first answers);
  *   then the session goes on as after its last item. The recording says
  *   so (hol_rec.h `ask`), so a replay does the same.
+ * - A resumed session's first level (meta.ready, issue 35) begins on the
+ *   ready screen (hol_app_ready): its clock starts at the confirm. The
+ *   recording says so (hol_rec.h `ready`).
  * - Studies: a level's labels (hol_level: condition, position) and the
  *   study's name (meta.study) fill the summary's study, condition and
  *   position; all three are empty for a level without a condition.
@@ -96,8 +99,9 @@
  *   each re-basing of the room into another cell, `relocated` (value the
  *   distance in metres, 3 decimals: hol_app_events.relocated);
  *   the header when the file is new; a folder holding it holds logs);
- *   points.csv HOL_SESSION_POINT_COLUMNS and answers.csv
- *   HOL_SESSION_ANSWER_COLUMNS (likewise); the README ("Research logs") documents
+ *   points.csv HOL_SESSION_POINT_COLUMNS, answers.csv
+ *   HOL_SESSION_ANSWER_COLUMNS and tutorial.csv HOL_SESSION_LESSON_COLUMNS
+ *   (likewise); docs/logs.md documents
  *   each. Head rows fall on exact 10 Hz level times, interpolated between
  *   the frames around them (position linear, yaw the short way round;
  *   cell and tile from the nearer frame), frame_t the later frame's time.
@@ -135,6 +139,7 @@
 #include "hol_err.h"
 #include "hol_level.h"
 #include "hol_rec.h"
+#include "hol_log_cols.h"
 #include "hol_sink.h"
 
 #define HOL_SESSION_MAX_LEVELS HOL_REC_MAX_LEVELS
@@ -156,30 +161,21 @@
 #define HOL_SESSION_TRACK_HZ_MIN 10
 #define HOL_SESSION_TRACK_HZ_MAX 90
 
-/* summary.csv's columns; a folder whose summary.csv has the columns of
- * the build before session_no, study_sha256 and meta
- * (HOL_SESSION_SUMMARY_COLUMNS_OLD) is appended to in those columns. */
-#define HOL_SESSION_SUMMARY_COLUMNS_OLD                                                   \
-    "session,participant,session_start,version,attempt,study,condition,position,level,"    \
-    "level_sha256,mode,seed,cues,tiling,room,cell,started,steps,optimum,time,end"
-#define HOL_SESSION_SUMMARY_COLUMNS HOL_SESSION_SUMMARY_COLUMNS_OLD ",session_no,study_sha256,meta"
-#define HOL_SESSION_STEP_COLUMNS \
-    "session,attempt,level,t,step,col,row,dir,yaw,tile,orient,remaining,cues,visible"
-#define HOL_SESSION_HEAD_COLUMNS \
-    "session,attempt,level,t,frame_t,x,y,z,yaw,pitch,col,row,tile"
-#define HOL_SESSION_TRACK_COLUMNS                                                   \
-    "session,attempt,level,sample,t,frame_t,device,"                                   \
-    "head_x,head_y,head_z,head_qx,head_qy,head_qz,head_qw,"                          \
-    "left_x,left_y,left_z,left_qx,left_qy,left_qz,left_qw,"                          \
-    "right_x,right_y,right_z,right_qx,right_qy,right_qz,right_qw"
-#define HOL_SESSION_EVENT_COLUMNS "session,attempt,level,t,event,value"
+/* The files' columns (hol_log_cols.h): HOL_SESSION_SUMMARY_COLUMNS;
+ * a folder whose summary.csv has the columns of the build before
+ * session_no, study_sha256 and meta (HOL_SESSION_SUMMARY_COLUMNS_OLD) is
+ * appended to in those columns. */
 /* points.csv: a row per pointing answer (level line `point`, SPEC 8;
  * hol_app_point), appended durably as it happens, the header when the file
  * is new. attempt: the attempt just ended (the level asked about); t its
  * level time at the question; pointed, true, flat: bearings with one
  * decimal (true, flat empty when undefined); error_true, error_flat:
  * pointed minus them wrapped to (-180, 180], one decimal, empty with
- * theirs; time: seconds taken to answer. */
+ * theirs; time: seconds taken to answer; shown_ms, answered_ms: the input
+ * time (the session's clock, in the recording) in whole milliseconds when
+ * it was asked and at its confirm. A points.csv whose header is an earlier
+ * build's, without those two (HOL_SESSION_POINT_COLUMNS_OLD), is appended
+ * to in its columns. */
 /* answers.csv: a row per questionnaire item answered (hol_app_answer),
  * appended durably as it happens, the header when the file is new.
  * attempt: the last attempt before the questionnaire (a resumed level's
@@ -189,11 +185,15 @@
  * before_condition|before_study (before it: attempt the one its level
  * begins next), item the item's ID, kind
  * likert|choice, value the number (likert) or the choice's text (CSV
- * quoted when it needs it), time the seconds taken. */
-#define HOL_SESSION_ANSWER_COLUMNS \
-    "session,participant,attempt,questionnaire,when,item,kind,value,time"
-#define HOL_SESSION_POINT_COLUMNS \
-    "session,participant,attempt,level,t,target,pointed,true,flat,error_true,error_flat,time"
+ * quoted when it needs it), time the seconds taken, shown_ms and
+ * answered_ms the input time in whole milliseconds when the item appeared
+ * and at its confirm (likewise; HOL_SESSION_ANSWER_COLUMNS_OLD). */
+/* tutorial.csv: a row per tutorial lesson done (issue 35; hol_app_lesson,
+ * not in a replay of a recording of version 1 to 4), appended durably as
+ * it happens, the header when the file is new. lesson 1..4; started and
+ * t the level times it began and was done; steps its room steps, optimum
+ * its fewest from where it began; time t - started (the columns:
+ * core/hol_log_cols.h). */
 
 typedef struct hol_session_desc {
     const hol_level *levels; /* 1..HOL_SESSION_MAX_LEVELS, copied */

@@ -74,6 +74,7 @@ struct hol_session {
     int over, finished, recovered, dropped;
     int events_known;        /* events.csv is known to have its header */
     int points_known;        /* points.csv likewise */
+    int lessons_known;       /* tutorial.csv likewise */
     int answers_known;       /* answers.csv likewise */
     char *row;               /* a summary row being made (HOL__ROW_MAX) */
     char *scratch;           /* recovery's copy of a row (HOL__ROW_MAX) */

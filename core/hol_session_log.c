@@ -80,7 +80,7 @@ void hol__log_levels(hol_session *s)
             seen |= !memcmp(s->levels[j].sha256, s->levels[i].sha256, 32);
         if (seen)
             continue;
-        hol__put_file(s, live, 0, s->levels[i].text, s->levels[i].len);
+        hol__put_file(s, live, 0, s->levels[i].text, s->levels[i].hashed);
         hol__rename(s, live, name);
     }
 }
@@ -318,19 +318,35 @@ static void hol__events(hol_session *s, const hol_app_events *ev, const hol_app_
 }
 
 /* Creates name with its header when the file is new or empty (*known
- * keeps that it is done). */
-static void hol__header_once(hol_session *s, int *known, const char *name, const char *header)
+ * keeps that it is done); *known is 2 when the file's first line is old,
+ * the header of the build before its timestamps (its rows then keep
+ * those columns). Returns 1 when the session writes nothing more. */
+static int hol__header_once(hol_session *s, int *known, const char *name, const char *header,
+                            const char *old)
 {
     if (*known || s->failed)
-        return;
-    char c;
-    size_t got = 0;
-    hol_err e = s->log->read(s->log->user, name, 0, &c, 1, &got);
+        return s->failed != 0;
+    char c[HOL__CSV_NAME];
+    size_t got = 0, n = strlen(old);
+    hol_err e = s->log->read(s->log->user, name, 0, c, n + 1 < sizeof c ? n + 1 : sizeof c, &got);
+    *known = 1;
     if (e == HOL_EOPEN || (!e && got == 0))
         hol__put_file(s, name, 1, header, strlen(header));
     else if (e)
         hol__fail_sink(s, s->log, e, "read", name);
-    *known = 1;
+    else if (got == n + 1 && !memcmp(c, old, n) && (c[n] == '\n' || c[n] == '\r'))
+        *known = 2;
+    return s->failed != 0;
+}
+
+/* The timestamps' fields (",SHOWN,ANSWERED": input times in whole
+ * milliseconds) into ts, or "" when the file has the old header (known 2). */
+static void hol__stamps(char ts[48], int known, double shown_s, double at_s)
+{
+    ts[0] = 0;
+    if (known != 2)
+        snprintf(ts, 48, ",%lld,%lld", (long long)floor(shown_s * 1000.0 + 0.5),
+                 (long long)floor(at_s * 1000.0 + 0.5));
 }
 
 /* An angle with one decimal, never "-0.0"; "" when absent. */
@@ -344,8 +360,8 @@ static void hol__deg(char out[16], int has, double d)
 /* A row of points.csv (see hol_session.h). */
 static void hol__point_row(hol_session *s, const hol_app_point *p)
 {
-    hol__header_once(s, &s->points_known, "points.csv", HOL_SESSION_POINT_COLUMNS "\n");
-    if (s->failed)
+    if (hol__header_once(s, &s->points_known, "points.csv", HOL_SESSION_POINT_COLUMNS "\n",
+                         HOL_SESSION_POINT_COLUMNS_OLD))
         return;
     char name[HOL__CSV_NAME], row[HOL__CSV_NAME + 512];
     char pointed[HOL_BEARING_TEXT], tru[HOL_BEARING_TEXT] = "", flat[HOL_BEARING_TEXT] = "";
@@ -358,19 +374,38 @@ static void hol__point_row(hol_session *s, const hol_app_point *p)
         hol_bearing_format(p->flat_deg, flat);
     hol__deg(et, p->has_true, p->error_true);
     hol__deg(ef, p->has_flat, p->error_flat);
-    int n = snprintf(row, sizeof row, "%s,%s,%d,%s,%.4f,%s,%s,%s,%s,%s,%s,%.4f\n",
+    char ts[48];
+    hol__stamps(ts, s->points_known, p->asked_s, p->at_s);
+    int n = snprintf(row, sizeof row, "%s,%s,%d,%s,%.4f,%s,%s,%s,%s,%s,%s,%.4f%s\n",
                      s->meta.session, s->meta.participant, s->attempt, name, p->t,
                      p->target == HOL_APP_POINT_START ? "start" : "objective", pointed, tru,
-                     flat, et, ef, p->time_s);
+                     flat, et, ef, p->time_s, ts);
     if (n > 0 && (size_t)n < sizeof row)
         hol__put_file(s, "points.csv", 1, row, (size_t)n);
+}
+
+/* The rows of tutorial.csv (see hol_session.h) of a step's lessons done. */
+static void hol__lesson_rows(hol_session *s, const hol_app_events *ev)
+{
+    for (int i = 0; i < ev->nlessons && !s->failed; i++) {
+        hol__header_once(s, &s->lessons_known, "tutorial.csv", HOL_SESSION_LESSON_COLUMNS "\n",
+                         HOL_SESSION_LESSON_COLUMNS); /* no older header */
+        const hol_app_lesson *l = &ev->lessons[i];
+        char name[HOL__CSV_NAME], row[HOL__CSV_NAME + 256];
+        hol__csv_name(s->levels[s->cur].name, name);
+        int n = snprintf(row, sizeof row, "%s,%s,%d,%s,%d,%.4f,%d,%d,%.4f\n", s->meta.session,
+                         s->meta.participant, s->attempt, name, l->lesson, l->started, l->steps,
+                         l->optimum, l->t - l->started);
+        if (!s->failed && n > 0 && (size_t)n < sizeof row)
+            hol__put_file(s, "tutorial.csv", 1, row, (size_t)n);
+    }
 }
 
 /* A row of answers.csv (see hol_session.h). */
 static void hol__answer_row(hol_session *s, const hol_app_answer *a)
 {
-    hol__header_once(s, &s->answers_known, "answers.csv", HOL_SESSION_ANSWER_COLUMNS "\n");
-    if (s->failed)
+    if (hol__header_once(s, &s->answers_known, "answers.csv", HOL_SESSION_ANSWER_COLUMNS "\n",
+                         HOL_SESSION_ANSWER_COLUMNS_OLD))
         return;
     char value[HOL__CSV_NAME], row[HOL__CSV_NAME + 512];
     if (a->kind == HOL_APP_CHOICE)
@@ -382,11 +417,13 @@ static void hol__answer_row(hol_session *s, const hol_app_answer *a)
     int attempt = s->ask_pending ? s->meta.ask_attempt : s->attempt;
     if (!s->ask_pending && hol_ask_before(a->when))
         attempt = s->attempt + 1;
-    int n = snprintf(row, sizeof row, "%s,%s,%d,%s,%s,%s,%s,%s,%.4f\n",
+    char ts[48];
+    hol__stamps(ts, s->answers_known, a->shown_s, a->at_s);
+    int n = snprintf(row, sizeof row, "%s,%s,%d,%s,%s,%s,%s,%s,%.4f%s\n",
                      s->ask_pending ? s->meta.ask_session : s->meta.session,
                      s->meta.participant, attempt, a->questionnaire,
                      hol_ask_when_name(a->when), a->item,
-                     a->kind == HOL_APP_CHOICE ? "choice" : "likert", value, a->time_s);
+                     a->kind == HOL_APP_CHOICE ? "choice" : "likert", value, a->time_s, ts);
     if (n > 0 && (size_t)n < sizeof row)
         hol__put_file(s, "answers.csv", 1, row, (size_t)n);
 }
@@ -408,6 +445,7 @@ void hol__log_frame(hol_session *s, const hol_app_events *ev, const hol_app_view
     if (!s->attempt_open)
         return;
     hol__step_rows(s, ev, v);
+    hol__lesson_rows(s, ev);
     hol__head_rows(s, v);
     char name[HOL__CSV_NAME];
     hol__csv_name(s->levels[s->cur].name, name);

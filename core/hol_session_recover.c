@@ -43,7 +43,8 @@ static const char *const hol__pat[HOL__PAT_N][2] = {
 int hol_session_is_log_name(const char *name)
 {
     int hit = !strcmp(name, "summary.csv") || !strcmp(name, "events.csv") ||
-              !strcmp(name, "points.csv") || !strcmp(name, "answers.csv");
+              !strcmp(name, "points.csv") || !strcmp(name, "answers.csv") ||
+              !strcmp(name, "tutorial.csv");
     for (int k = 0; k < HOL__PAT_N && !hit; k++)
         hit = hol__numbered(name, hol__pat[k][0], hol__pat[k][1]) >= 0;
     return hit;
@@ -506,9 +507,9 @@ static void hol__fin_name(void *ctx, const char *name)
  * s->gone). */
 static void hol__cut_logs(hol_session *s, const hol__scan *sc, int above)
 {
-    static const char *const logs[4] = {"events.csv", "points.csv", "answers.csv",
-                                        "environment.csv"};
-    for (int k = 0; k < 4 && !s->failed; k++) {
+    static const char *const logs[5] = {"events.csv", "points.csv", "answers.csv",
+                                        "environment.csv", "tutorial.csv"};
+    for (int k = 0; k < 5 && !s->failed; k++) {
         hol__lines l;
         memset(&l, 0, sizeof l);
         hol__cut_torn(s, logs[k], &l);

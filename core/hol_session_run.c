@@ -191,7 +191,10 @@ static hol_err hol__create(hol_session *s, const hol_session_desc *d)
         snprintf(s->msg, sizeof s->msg, "out of memory");
         return e;
     }
-    if ((e = hol_app_create(&d->app, &s->app))) {
+    hol_app_desc ad = d->app; /* a recording made before issue 35's flow
+                                 replays in the flow it was played in */
+    ad.flow_v4 |= d->meta.flow_v4;
+    if ((e = hol_app_create(&ad, &s->app))) {
         snprintf(s->msg, sizeof s->msg, "cannot create the app: %s", hol_err_str(e));
         return e;
     }
@@ -206,6 +209,8 @@ static hol_err hol__create(hol_session *s, const hol_session_desc *d)
         }
         s->ask_pending = 1;
         s->level_end = HOL_APP_END_DONE;
+    } else if (s->meta.ready && (e = hol_app_ready(s->app))) {
+        return e;
     }
     if (s->log && (e = hol__log_open(s, d->append)))
         return e;

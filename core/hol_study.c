@@ -782,19 +782,22 @@ static int hol__put_question(const hol_study *s, const char *id, size_t n, hol__
     return 0;
 }
 
-/* The questionnaires due with level i: their questions, then `ask NAME
- * WHEN ID...`, by when (before study, condition, level; then after level,
- * condition, study), in the file's order. */
-static int hol__put_asks(const hol_study *s, int c, int i, int position, hol__compose *cp)
+/* The order questionnaires are put in: before study, condition, level;
+ * then after level, condition, study. */
+static const int hol__whens[HOL_APP_ASK_WHENS] = {
+    HOL_APP_BEFORE_STUDY, HOL_APP_BEFORE_CONDITION, HOL_APP_BEFORE_LEVEL,
+    HOL_APP_AFTER_LEVEL,  HOL_APP_AFTER_CONDITION,  HOL_APP_AFTER_STUDY};
+
+/* The questionnaires due with level i whose when is hol__whens[from..to):
+ * their questions (each once: put), then `ask NAME WHEN ID...`, by when,
+ * in the file's order. */
+static int hol__put_asks(const hol_study *s, int c, int i, int position, hol__compose *cp,
+                         int from, int to, unsigned char *put)
 {
-    unsigned char put[HOL_STUDY_MAX_QUESTIONS] = {0};
-    static const int whens[HOL_APP_ASK_WHENS] = {
-        HOL_APP_BEFORE_STUDY, HOL_APP_BEFORE_CONDITION, HOL_APP_BEFORE_LEVEL,
-        HOL_APP_AFTER_LEVEL,  HOL_APP_AFTER_CONDITION,  HOL_APP_AFTER_STUDY};
-    for (int w = 0; w < HOL_APP_ASK_WHENS; w++)
+    for (int w = from; w < to; w++)
         for (int k = 0; k < s->nasks; k++) {
             const hol_study_ask *a = &s->asks[k];
-            int when = whens[w];
+            int when = hol__whens[w];
             if (a->when != when || !hol__ask_due(s, k, c, i, position))
                 continue;
             const hol_study_questionnaire *d = NULL;
@@ -818,15 +821,36 @@ static int hol__put_asks(const hol_study *s, int c, int i, int position, hol__co
     return 0;
 }
 
-/* The screen lines of level i after its text. 1 when they do not fit. */
+/* Is a questionnaire `after study` due after level i? */
+static int hol__study_ask_due(const hol_study *s, int c, int i, int position)
+{
+    for (int k = 0; k < s->nasks; k++)
+        if (s->asks[k].when == HOL_APP_AFTER_STUDY && hol__ask_due(s, k, c, i, position))
+            return 1;
+    return 0;
+}
+
+/* The screen lines of level i after its text: its questionnaires (but
+ * those after the study), its instructions, then what only the
+ * participant's last level carries (the questionnaires `after study`, the
+ * closing) after HOL_LEVEL_LAST_MARK, outside the level's hash. 1 when
+ * they do not fit. */
 static int hol__put_screens(const hol_study *s, int c, int i, int position, hol__compose *cp)
 {
+    unsigned char put[HOL_STUDY_MAX_QUESTIONS] = {0};
     cp->stage = "questions asked after it";
-    if (hol__put_asks(s, c, i, position, cp))
+    if (hol__put_asks(s, c, i, position, cp, 0, HOL_APP_ASK_WHENS - 1, put))
         return 1;
     const hol_study_span *a = hol__instr_of(s, c, i), *b = hol__closing_of(s, c, i, position);
     cp->stage = "instructions";
     if (a && hol__put_line(cp, s->text + a->off, a->len, -a->line))
+        return 1;
+    int last = b || hol__study_ask_due(s, c, i, position);
+    if (last && hol__put_line(cp, HOL_LEVEL_LAST_MARK, sizeof HOL_LEVEL_LAST_MARK - 1,
+                              c >= 0 ? -s->conditions[c].line : 0))
+        return 1;
+    cp->stage = "questions asked after it";
+    if (hol__put_asks(s, c, i, position, cp, HOL_APP_ASK_WHENS - 1, HOL_APP_ASK_WHENS, put))
         return 1;
     cp->stage = "closing";
     return b && hol__put_line(cp, s->text + b->off, b->len, -b->line);

@@ -72,8 +72,10 @@
  *   first level of the practice or of a condition with an `instructions`
  *   line, that line (the file's own `instructions` lines left out), and on
  *   the participant's last level (position = the number of conditions, the
- *   condition's last level) the study's `closing` line (the file's own left
- *   out). With none of these the text is the file's, unchanged (the same
+ *   condition's last level) the line HOL_LEVEL_LAST_MARK, then the
+ *   questionnaires `after study` and the study's `closing` line (the
+ *   file's own left out): the level's hash stops at the mark, so a level
+ *   has one SHA-256 at every position (issue 35). With none of these the text is the file's, unchanged (the same
  *   SHA-256); practice levels are the files as they are but for their
  *   instructions and the first one's `before study` questionnaires.
  * - Counterbalancing (hol_study_order, hol_study_square): participant

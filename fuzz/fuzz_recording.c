@@ -102,6 +102,8 @@ static void check_round_trip(void)
     CHECK(r2.meta.session_no == m.session_no);
     CHECK(!strcmp(r2.meta.study_sha256, m.study_sha256));
     CHECK(!strcmp(r2.meta.meta, m.meta) && hol_rec_meta_ok(m.meta));
+    /* version 5: a resumed session's ready screen */
+    CHECK(r2.meta.ready == m.ready);
 }
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)

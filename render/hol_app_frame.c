@@ -95,6 +95,10 @@ void hol_app_frame_desc(const hol_app_view *v, int eye, int w, int h, double fov
     memcpy(fd->lanterns, v->lanterns, (size_t)fd->nlanterns * sizeof fd->lanterns[0]);
     memcpy(fd->lantern_spot, v->lantern_spot, (size_t)fd->nlanterns);
     fd->npath = v->map.npath;
+    /* the controllers and hands at their room poses (core/hol_body.h) */
+    const hol_body *b = &v->body;
+    if (b->hand[0].kind || b->hand[1].kind || b->ray_hand >= 0)
+        fd->body = b;
 }
 
 void hol_app_frame_panel(const hol_app_view *v, hol_frame_desc *out)

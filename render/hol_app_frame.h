@@ -17,6 +17,9 @@
  *   degrees down) it sits in the lower part of the view, out of its middle,
  *   where a glance down finds it. A platform with tracked hands overwrites
  *   hand_pos and hand_orient with the hand's pose.
+ * - The body (hol_app_view.body: controllers, tracked hands, the pointing
+ *   ray) goes to every eye's frame as the view has it (fd->body points
+ *   into v; NULL when it has none): the renderer draws it in the room.
  * - A headset's eyes: hol_app_frame_panel moves the HUD text (and the
  *   minimap, unless it is in the hand) onto the panel in the world where
  *   the app step placed it (hol_app_view.panel, core/hol_panel.h), its

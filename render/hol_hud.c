@@ -8,6 +8,7 @@
 #include "../core/hol_face.h"
 #include "../core/hol_hyper.h"
 #include "../core/hol_nav.h"
+#include "../core/hol_str.h"
 
 #define HOL__PI 3.14159265358979323846
 
@@ -527,10 +528,10 @@ static int hol__text_lines(const hol_frame_desc *f, char lines[][96])
         if (f->objective_text)
             snprintf(lines[nl++], 96, "%.40s", f->objective_text);
         hol_tile_print(f->user.tile, addr);
-        snprintf(lines[nl++], 96, "STEPS %d", f->steps_taken);
-        snprintf(lines[nl++], 96, "TILE %.40s", addr);
+        snprintf(lines[nl++], 96, hol_str(f->lang, HOL_S_STEPS_FMT), f->steps_taken);
+        snprintf(lines[nl++], 96, hol_str(f->lang, HOL_S_TILE_FMT), addr);
         long t = (long)(f->time_s > 0 ? f->time_s : 0);
-        snprintf(lines[nl++], 96, "TIME %ld:%02ld", t / 60 % 100000, t % 60);
+        snprintf(lines[nl++], 96, hol_str(f->lang, HOL_S_TIME_FMT), t / 60 % 100000, t % 60);
     }
     if (f->prompt && f->prompt[0])
         snprintf(lines[nl++], 96, "%.60s", f->prompt);

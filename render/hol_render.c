@@ -75,6 +75,7 @@ hol_err hol_render_create(const hol_render_desc *desc, hol_render **out)
     hol_mesh_init(&r->dyn, r->verts, HOL__DYN_V, r->idx, HOL__DYN_I);
     hol_mesh_init(&r->scratch, r->verts + HOL__DYN_V, HOL__ROOM_V, r->idx + HOL__DYN_I,
                   HOL__ROOM_I);
+    hol_mesh_init(&r->body, r->body_v, HOL__BODY_V, r->body_i, HOL__BODY_I);
     hol_err gerr = hol_gl_load(&r->gl, r->desc.getproc);
     if (gerr) {
         hol_alloc_release(&d.alloc, r->verts);
@@ -144,6 +145,7 @@ void hol_render_invalidate(hol_render *r)
         r->slots[i].used = 0;
     r->room_valid = 0;
     r->hud_valid = 0;
+    r->body_valid = 0;
 }
 
 const hol_view *hol_render_last_view(const hol_render *r)

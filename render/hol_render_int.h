@@ -53,6 +53,10 @@
 #define HOL__DYN_V (1u << 16)
 #define HOL__DYN_I (1u << 17)
 #define HOL__MAX_ITEMS 1024
+/* The body's mesh (render/hol_body_draw.h: two tracked hands are 5,526
+ * vertices and 25,728 indices), built once for both eyes. */
+#define HOL__BODY_V 6144u
+#define HOL__BODY_I 27648u
 
 typedef struct hol__slot {
     int used;
@@ -128,6 +132,14 @@ struct hol_render {
     int hud_valid;
     uint64_t hud_key;
     uint32_t hud_nidx;
+    /* the body (hol_frame_desc.body) as built, in room coordinates: kept
+     * while the body is the same (body_key), so a frame's second eye
+     * copies it into the dynamic buffer instead of building it again */
+    hol_mesh body;
+    hol_vertex body_v[HOL__BODY_V];
+    uint32_t body_i[HOL__BODY_I];
+    int body_valid;
+    uint64_t body_key;
     /* this frame's counters */
     long uploaded;
     int tiles_built;

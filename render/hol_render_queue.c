@@ -6,6 +6,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "hol_body_draw.h"
 #include "hol_hud.h"
 
 uint64_t hol__fnv(uint64_t h, const void *p, size_t n)
@@ -124,6 +125,32 @@ static hol_err hol__queue_room(hol_render *r, const hol_frame_desc *f, double ce
     hol__item *it = hol__queue_push(r, HOL__PASS_ROOM, 0, r->room_nidx);
     if (it)
         it->key = 1u << 24;
+    return HOL_OK;
+}
+
+/* The body (hol_frame_desc.body): built in room coordinates (once while
+ * it stays the same: both eyes of a frame share it), copied into the
+ * frame's dynamic geometry, drawn in the room's pass after its meshes. */
+static hol_err hol__queue_body(hol_render *r, const hol_frame_desc *f)
+{
+    uint64_t key = hol__fnv(0xcbf29ce484222325ull, f->body, sizeof *f->body);
+    if (!r->body_valid || r->body_key != key) {
+        hol_mesh_clear(&r->body);
+        hol_body_build(&r->body, f->body);
+        r->body_valid = !r->body.overflow;
+        r->body_key = key;
+        if (r->body.overflow)
+            return HOL_ENOMEM;
+    }
+    int64_t b = hol_mesh_reserve(&r->dyn, r->body.nv, r->body.ni);
+    if (b < 0)
+        return HOL_ENOMEM;
+    uint32_t i0 = r->dyn.ni;
+    memcpy(r->dyn.v + b, r->body.v, r->body.nv * sizeof r->body.v[0]);
+    r->dyn.nv += r->body.nv;
+    for (uint32_t i = 0; i < r->body.ni; i++)
+        r->dyn.idx[r->dyn.ni++] = (uint32_t)b + r->body.idx[i];
+    hol__queue_push_dyn(r, HOL__PASS_ROOM, i0, 1, NULL);
     return HOL_OK;
 }
 
@@ -299,6 +326,8 @@ hol_err hol__build(hol_render *r, const hol_frame_desc *f)
     if (!r->view.wedges && (err = hol__queue_leaves(r, f)))
         return err;
     if (!bare && (err = hol__queue_room(r, f, m)))
+        return err;
+    if (!bare && f->body && (err = hol__queue_body(r, f)))
         return err;
     if ((err = hol__queue_tiles(r, f, bare, m)))
         return err;

@@ -145,6 +145,9 @@ typedef struct hol_frame_desc {
      * objective/steps/tile/time lines composed from the fields above. */
     const char *hud_lines[HOL_RENDER_HUD_LINES];
     int nhud_lines;
+    /* The language of the lines composed from the fields (hol_lang,
+     * core/hol_str.h; 0: English); the app's lines come in its own. */
+    int lang;
     /* The prompt (what the buttons do now, hol_app_hud.hint): drawn under
      * the text in yellow; NULL or "": none. */
     const char *prompt;
@@ -202,6 +205,12 @@ typedef struct hol_frame_desc {
     double panel_pos[3];
     double panel_orient[4];
     double panel_px;
+    /* The body (core/hol_body.h: controllers, tracked hands, the pointing
+     * ray; NULL: none): drawn in room coordinates in the room's pass
+     * (render/hol_body_draw.h), depth-tested and written, with the room's
+     * light, in every tile the same: never moved by a tile's transform.
+     * Not with HOL_RENDER_BARE. */
+    const hol_body *body;
 } hol_frame_desc;
 
 /* 4.3 mm: a capital (7 font pixels) 30 mm high, 1.15 degrees at 1.5 m */

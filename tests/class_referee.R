@@ -41,7 +41,8 @@ for (n in names) {
         name <- sub("\\.csv$", "", n)
     } else next
     if (!file.exists(f)) next
-    a <- rd(f)
+    a <- rd(f)[, c("session", "participant", "attempt", "questionnaire", "when", "item",
+                   "kind", "value", "time")] # the timestamps' columns or not
     a$pupil <- ifelse(a$participant == "", name, a$participant)
     # a lesson's tiling: its attempt's in summary.csv, else {4,5}
     a$q <- "5"

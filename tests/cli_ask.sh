@@ -32,14 +32,14 @@ f() { printf '%s f=9%s h=1.5,1.6,%s.5,0,0,0,1%s\n' "$2" "${3:+ p=$3}" "$1" "${4:
   f 0 $t 1; f 0 $((t + 1)); } >"$T/in"            # the closing screen; the end
 run "play" 0 "$H" play --study "$T/s.study" --participant P03 --input "$T/in" --size 64x48 \
     --log "$T/l" --record "$T/r.rec"
-head -1 "$T/l/answers.csv" | grep -qx 'session,participant,attempt,questionnaire,when,item,kind,value,time' &&
+head -1 "$T/l/answers.csv" | grep -qx 'session,participant,attempt,questionnaire,when,item,kind,value,time,shown_ms,answered_ms' &&
   ok || bad "answers.csv header: $(head -1 "$T/l/answers.csv")"
 cut -d, -f2- "$T/l/answers.csv" | sed -n '2,5p' >"$T/got"
 cat >"$T/want" <<'W'
-P03,1,mine,level,fun,likert,6,2.5000
-P03,1,mine,level,hand,choice,left,1.0000
-P03,1,ssq,study,general_discomfort,likert,0,1.0000
-P03,1,ssq,study,fatigue,likert,0,1.0000
+P03,1,mine,level,fun,likert,6,2.5000,1000,3500
+P03,1,mine,level,hand,choice,left,1.0000,3500,4500
+P03,1,ssq,study,general_discomfort,likert,0,1.0000,4500,5500
+P03,1,ssq,study,fatigue,likert,0,1.0000,5500,6500
 W
 cmp -s "$T/got" "$T/want" && ok || { bad "answers.csv rows:"; diff "$T/want" "$T/got"; }
 [ "$(wc -l <"$T/l/answers.csv")" = 19 ] && ok || bad "answers.csv: $(wc -l <"$T/l/answers.csv") lines, want 19"
@@ -49,6 +49,13 @@ tail -1 "$T/r.rec" | grep -q "^21 " && ok || bad "the session ended at $(tail -1
 mkdir "$T/l2"
 run "replay" 0 "$H" replay "$T/r.rec" --log "$T/l2"
 logs_diff "$T/l" "$T/l2" >/dev/null && ok || bad "the replay's logs differ"
+# a folder whose answers.csv has the header of the build before the
+# timestamps (shown_ms, answered_ms) is appended to in its own columns
+mkdir "$T/l4"
+printf 'session,participant,attempt,questionnaire,when,item,kind,value,time\n' >"$T/l4/answers.csv"
+run "replay into an old answers.csv" 0 "$H" replay "$T/r.rec" --log "$T/l4" --append
+[ "$(cut -d, -f1-9 "$T/l/answers.csv")" = "$(cat "$T/l4/answers.csv")" ] && ok ||
+    bad "old answers.csv: $(head -3 "$T/l4/answers.csv")"
 
 # a play whose input ends with a questionnaire's item on screen: its end
 # line says done (it printed bytes past the end of the state names' table:

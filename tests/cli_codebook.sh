@@ -53,6 +53,11 @@ check_folder L1 summary.csv steps-001.csv head-001.csv track-001.csv answers.csv
 grep -q "^20261128T164958Z-3850947c,P1,0\.1\.0,$commit," L1/provenance.csv &&
     ok || bad "provenance row: $(cat L1/provenance.csv)"
 
+# ---- a tutorial's replay (version 5): tutorial.csv ----------------------------------
+sed '1s/.*/holonomy-rec 5/' "$SRC/onset/tut.rec" >tut.rec
+run "replay a tutorial" 0 "$H" replay tut.rec --log Lt
+check_folder Lt summary.csv steps-001.csv tutorial.csv provenance.csv
+
 # ---- the check fails when a column is missing from the codebook ------------------
 cp -r L1 L1x
 grep -v '^answers.csv,kind,' L1/codebook.csv >L1x/codebook.csv

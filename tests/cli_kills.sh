@@ -65,7 +65,8 @@ gen() {
        if (last != "") line(last, 1, 1) }'
 }
 gen 30 >in.txt
-# held: cycle 1 confirms the instructions (level 1 begins), cycle 2 walks
+# held: cycle 1 confirms the instructions and the ready screen (level 1
+# begins; a resumed session: the ready screen), cycle 2 walks
 # it, points and confirms its end screen; cycle 3 the same for level 2,
 # whose end brings the SSQ (two items a cycle); cycles 4..11 its 16 items,
 # 12 the next instructions, 13 level 3 and its end, 14.. its SSQ.

@@ -98,8 +98,10 @@ case "$(sed -n 2p logs/summary.csv)" in *",$E") ok ;; *) bad "environment's meta
 # resume: the resumed session's rows carry its own metadata
 run "play stops" 0 "$H" play --study s/mt.study --participant P02 --size 64x48 --log logs \
     --frames 1 --append --session 1 --meta day=one
+# (a resumed session begins on the ready screen: confirmed first)
+{ printf '0 f=9 p=1 h=1.5,1.6,1.5,0,0,0,1\n'; awk '{ $1 += 0.25; print }' in1; } >in1r
 run "resume" 0 "$H" play --study s/mt.study --participant P02 --size 64x48 --log logs \
-    --input in1 --resume --session 2 --meta day=two
+    --input in1r --resume --session 2 --meta day=two
 grep ',P02,' logs/summary.csv | tail -1 | grep -q ",2,$SUM,day=two$" && ok ||
   bad "resumed row: $(grep ',P02,' logs/summary.csv)"
 

@@ -24,11 +24,11 @@ grep -q "^level start done steps 2 " "$T/out" && ok || bad "play start: $(cat "$
 want=$(printf 'EN O\n' | "$H" tile bearing)  # "211.7 225.0"
 [ "$want" = "211.7 225.0" ] && ok || bad "tile bearing EN O: $want"
 head -1 "$T/l1/points.csv" | grep -qx \
-  'session,participant,attempt,level,t,target,pointed,true,flat,error_true,error_flat,time' \
+  'session,participant,attempt,level,t,target,pointed,true,flat,error_true,error_flat,time,shown_ms,answered_ms' \
   && ok || bad "points.csv header: $(head -1 "$T/l1/points.csv")"
 # the row less its session id: pointed 225, true 211.7 (13.3 off), flat 225 (0 off)
 row=$(sed -n 2p "$T/l1/points.csv" | cut -d, -f2-)
-[ "$row" = "P01,1,start,0.5000,start,225.0,211.7,225.0,13.3,0.0,0.7500" ] && ok || bad "points row: $row"
+[ "$row" = "P01,1,start,0.5000,start,225.0,211.7,225.0,13.3,0.0,0.7500,500,1250" ] && ok || bad "points row: $row"
 [ "$(wc -l <"$T/l1/points.csv")" -eq 2 ] && ok || bad "points.csv rows: $(wc -l <"$T/l1/points.csv")"
 
 # the recording replays the answer: the same logs byte for byte
@@ -50,7 +50,7 @@ grep -q "^level obj timeout " "$T/out" && ok || bad "play objective: $(cat "$T/o
 tb=$(printf -- '- Nfl\n' | "$H" tile bearing | cut -d' ' -f1)
 row=$(sed -n 2p "$T/l3/points.csv" | cut -d, -f3-)
 err=$(awk -v p=90 -v t="$tb" 'BEGIN { e = p - t; while (e > 180) e -= 360; while (e <= -180) e += 360; printf "%.1f", e }')
-[ "$row" = "1,obj,1.0000,objective,90.0,$tb,,$err,,0.5000" ] && ok || bad "objective row: $row (true $tb)"
+[ "$row" = "1,obj,1.0000,objective,90.0,$tb,,$err,,0.5000,1000,1500" ] && ok || bad "objective row: $row (true $tb)"
 
 # a log folder holding points.csv holds logs: refused without --append
 mkdir "$T/l4" && cp "$T/l1/points.csv" "$T/l4/"

@@ -134,6 +134,9 @@ fi
 walk_input WNESE >in1
 printf '1.5 f=9 p=1 h=2.5,1.6,1.5,0,0,0,1\n1.75 f=9 h=2.5,1.6,1.5,0,0,0,1\n' >>in1
 PL="$H play --study $S --participant P01 --size 64x48 --input in1"
+# a resume: the ready screen confirmed first (issue 35)
+{ printf '0 f=9 p=1 h=1.5,1.6,1.5,0,0,0,1\n'; awk '{ $1 += 0.25; print }' in1; } >in1r
+PR="$H play --study $S --participant P01 --size 64x48 --input in1r"
 run "session 1" 0 $PL --log logs
 for v in bom crlf; do
     cp -r logs "$v"
@@ -141,7 +144,7 @@ for v in bom crlf; do
     bom) { printf '\357\273\277'; cat logs/summary.csv; } >"$v/summary.csv" ;;
     crlf) sed 's/$/\r/' logs/summary.csv >"$v/summary.csv" ;;
     esac
-    run "$v: resumed" 0 $PL --log "$v" --resume
+    run "$v: resumed" 0 $PR --log "$v" --resume
     grep -q "resumed at a (position 1), level 2 of 3\$" err && ok || bad "$v: $(cat err)"
     [ "$(grep -c '' "$v/summary.csv")" = 5 ] && ok || bad "$v: rows $(cat "$v/summary.csv")"
     run "$v: report" 0 "$H" report "$v" --out "rep-$v-2"
@@ -149,12 +152,12 @@ done
 # a live play's environment row is not glued onto a torn one
 cp -r logs env
 printf 'S,desk' >>env/environment.csv
-run "environment: resumed" 0 $PL --log env --resume
+run "environment: resumed" 0 $PR --log env --resume
 grep -q "rows a kill cut removed (environment.csv)" err && ok || bad "environment: $(cat err)"
 [ "$(grep -c '' env/environment.csv)" = 3 ] && ! grep -q '^S,desk' env/environment.csv && ok ||
     bad "the environment row was glued on: $(cut -c1-40 env/environment.csv)"
 cp -r logs nul
 sed '2s/practice/pr\x00ctice/' logs/summary.csv >nul/summary.csv
-run "a NUL byte: resumed" 2 $PL --log nul --resume
+run "a NUL byte: resumed" 2 $PR --log nul --resume
 one_line "a NUL byte: resumed" "summary.csv: line 2: a NUL byte"
 finish cli_recovery

@@ -43,6 +43,13 @@ diff -r "$T/l1" "$T/l2" >/dev/null && ok || bad "replay logs differ between runs
 for f in 000000 000003; do
     head -c 8 "$T/png/frame-$f.png" | od -An -c | grep -q 'P   N   G' && ok || bad "frame $f is not a PNG"
 done
+# --lang (issue 37): the frames' text in German, the logs byte for byte the same
+mkdir "$T/l2de" "$T/pngde"
+run "german" 0 "$H" replay "$T/opt.rec" --log "$T/l2de" --png-frames 0,3 --out-dir "$T/pngde" \
+    --size 64x48 --lang de
+diff -r "$T/l1" "$T/l2de" >/dev/null && ok || bad "replay --lang de: the logs differ"
+cmp -s "$T/png/frame-000003.png" "$T/pngde/frame-000003.png" && bad "--lang de: the same frame" || ok
+run "lang bad" 2 "$H" replay "$T/opt.rec" --lang xx && one_line "lang bad" "not en, de or nl"
 # a frame the recording never reaches: one line, exit 2, the others written
 run "frame beyond" 2 "$H" replay "$T/opt.rec" --png-frames 2,99999 --out-dir "$T/png2" \
     --size 64x48
@@ -114,8 +121,8 @@ grep -q "^level tut playing " "$T/out" && ok || bad "lessons out of order: $(cat
 # bad recordings: exit 2, one line naming the line
 printf 'hello\n' >"$T/bad1"
 run "no header" 2 "$H" replay "$T/bad1" && one_line "no header" "line 1"
-printf 'holonomy-rec 5\n' >"$T/bad2"
-run "version" 2 "$H" replay "$T/bad2" && one_line "version" "version 1 to 4"
+printf 'holonomy-rec 6\n' >"$T/bad2"
+run "version" 2 "$H" replay "$T/bad2" && one_line "version" "version 1 to 5"
 { rec "$LEVEL" "N"; printf '9 m=4,0\n'; } >"$T/bad3"
 run "bad input line" 2 "$H" replay "$T/bad3" && one_line "bad input line" "line 10"
 printf 'holonomy-rec 1\nlevel x\nL mode flag\nL flug Nf\nend\n0\n' >"$T/bad4"

@@ -158,7 +158,7 @@ if ! command -v node >/dev/null 2>&1 || [ ! -x "$V" ]; then
 else
     [ "$(validate ds)" = 0 ] && ok || bad "bids-validator: $(grep -A3 ERR val.out | head -8)"
     cp -r ds broken2
-    j=$(ls broken2/sub-7/ses-*/motion/*tracksys-tile_run-1_motion.json)
+    j=$(ls broken2/sub-P07/ses-*/motion/*tracksys-tile_run-1_motion.json)
     sed -i 's/^{$/{\n  "NotABidsKey": 1,/' "$j"
     [ "$(validate broken2)" -gt 0 ] && ok || bad "bids-validator took a motion.json with an unknown key"
 fi

@@ -68,6 +68,9 @@ cd "$T" || exit 1
 # in1: the level done (5 steps, optimal), confirm (the next level starts),
 # and the input ends: that next attempt ends `open`, unfinished
 { walk_input WNESE; printf '1.5 f=9 p=1 h=2.5,1.6,1.5,0,0,0,1\n1.75 f=9 h=2.5,1.6,1.5,0,0,0,1\n'; } >in1
+# in1r: in1 after a resumed session's ready screen, confirmed at once
+{ printf '0 f=9 p=1 h=1.5,1.6,1.5,0,0,0,1\n'; walk_input WNESE 0.25
+  printf '1.75 f=9 p=1 h=2.5,1.6,1.5,0,0,0,1\n2 f=9 h=2.5,1.6,1.5,0,0,0,1\n'; } >in1r
 P="$H play --study $S --participant P01 --size 64x48 --log logs"
 # rows: "attempt condition position end" of the summary
 rows() { awk -F, 'NR > 1 { print $5, $7, $8, $(NF-3) }' logs/summary.csv | tr '\n' ';'; } # end: before session_no, study_sha256, meta
@@ -77,7 +80,7 @@ run "session 1" 0 $P --input in1
 [ "$(rows)" = "1 practice 0 done;2 a 1 open;" ] && ok || bad "session 1: $(rows)"
 cp -r logs pre2
 # session 2 resumes at position 1 (the practice done is not played again)
-run "session 2" 0 $P --input in1 --resume --record s2.rec
+run "session 2" 0 $P --input in1r --resume --record s2.rec
 grep -q "practice, a, b; resumed at a (position 1), level 2 of 3\$" err && ok ||
     bad "session 2's order line: $(cat err)"
 [ "$(rows)" = "1 practice 0 done;2 a 1 open;3 a 1 done;4 b 2 open;" ] && ok || bad "session 2: $(rows)"
@@ -88,11 +91,11 @@ cmp -s logs/summary.csv pre2/summary.csv && ok ||
 # a study whose condition a has another set line: its rows were not played with it
 sed 's/set minimap hud/set minimap off/' "$S" >s/changed.study
 run "changed study" 2 "$H" play --study s/changed.study --participant P01 --size 64x48 --log logs \
-    --input in1 --resume
+    --input in1r --resume
 one_line "changed study" "is not the one participant P01 played in 'logs': their attempt 2 (condition a, position 1"
 
 # session 3 killed (SIGKILL) in condition b: that attempt is unfinished
-awk 'BEGIN { for (k = 0; k < 400; k++) printf "%.2f f=9 h=1.5,1.6,1.5,0,0,0,1\n", k * 0.05 }' >slow.in
+awk 'BEGIN { for (k = 0; k < 400; k++) printf "%.2f f=9%s h=1.5,1.6,1.5,0,0,0,1\n", k * 0.05, k ? "" : " p=1" }' >slow.in
 $P --input slow.in --resume >/dev/null 2>&1 &
 pid=$!
 wait_for 60 -e logs/attempt-005.live
@@ -100,13 +103,13 @@ sleep 0.3
 kill -9 $pid 2>/dev/null; wait $pid 2>/dev/null
 [ -f logs/attempt-005.live ] && ok || bad "session 3 left no attempt-005.live: $(ls logs)"
 # session 4 resumes at b (position 2) again and finishes the study
-run "session 4" 0 $P --input in1 --resume
+run "session 4" 0 $P --input in1r --resume
 grep -q "resumed at b (position 2), level 3 of 3\$" err && ok || bad "session 4's order line: $(cat err)"
 [ "$(rows)" = "1 practice 0 done;2 a 1 open;3 a 1 done;4 b 2 open;5 b 2 killed;6 b 2 done;" ] && ok ||
     bad "session 4: $(rows)"
 # every level finished: nothing to resume, nothing written
 cp logs/summary.csv before.csv
-run "finished" 2 $P --input in1 --resume
+run "finished" 2 $P --input in1r --resume
 one_line "finished" "participant P01 has finished study rs in 'logs': nothing to resume"
 cmp -s before.csv logs/summary.csv && ok || bad "a refused resume changed the summary"
 # a timeout finishes a level too: participant 2 (order b, a) times out in practice
@@ -114,12 +117,12 @@ printf 'study rs\npractice t.lvl\ncondition a\nlevel f.lvl\nset minimap hud\ncon
 printf 'mode flag\nseed 5\nflag Nf\ntime-limit 1\n' >"$T/s/t.lvl"
 walk_input WNESWNEE >tl.in
 run "P02 timeout" 0 "$H" play --study "$T/s/t.study" --participant P02 --size 64x48 --log tlogs --input tl.in
-run "P02 resumes" 0 "$H" play --study "$T/s/t.study" --participant P02 --size 64x48 --log tlogs --input in1 --resume
+run "P02 resumes" 0 "$H" play --study "$T/s/t.study" --participant P02 --size 64x48 --log tlogs --input in1r --resume
 grep -q "practice, b, a; resumed at b (position 1), level 2 of 3\$" err && ok ||
     bad "a practice ended by its time limit is played again: $(cat err) $(cat tlogs/summary.csv)"
 # one level file twice in a condition: the one attempt done finishes the first only
 printf 'study tw\ncondition a\nlevel f.lvl\nlevel f.lvl\nset minimap hud\ncondition b\nlevel f.lvl\n' >"$T/s/tw.study"
 run "twice: session 1" 0 "$H" play --study "$T/s/tw.study" --participant P01 --size 64x48 --log twl --input in1
-run "twice: resumed" 0 "$H" play --study "$T/s/tw.study" --participant P01 --size 64x48 --log twl --input in1 --resume
+run "twice: resumed" 0 "$H" play --study "$T/s/tw.study" --participant P01 --size 64x48 --log twl --input in1r --resume
 grep -q "a, b; resumed at a (position 1), level 2 of 3\$" err && ok || bad "twice: $(cat err)"
 finish cli_resume

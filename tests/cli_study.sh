@@ -92,7 +92,8 @@ awk '{ if ($1 != "practice:0") bad = 1
            m = 0; for (x in pair) { m++; if (pair[x] != 1) bad = 1 }
            exit !(n == 16 && m == 12 && !bad) }' "$T/orders" && ok ||
     bad "participants 1..4 do not get a balanced Latin square: $(cat "$T/orders")"
-grep -q '^holonomy-rec 4$' "$T/p1.rec" && grep -q '^study four$' "$T/p1.rec" && ok ||
+# version 5: its practice is a tutorial (issue 35's lessons; docs/logs.md)
+grep -q '^holonomy-rec 5$' "$T/p1.rec" && grep -q '^study four$' "$T/p1.rec" && ok ||
     bad "the recording names no study: $(head -8 "$T/p1.rec")"
 # participant 5 plays participant 1's order
 run "participant 5" 0 "$H" play --study "$S" --participant 5 --frames 3 --size 64x48 \

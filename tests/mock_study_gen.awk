@@ -7,11 +7,12 @@
 # (3 s), R a wrong step, restart, the optimal walk. Lines 0.25 s apart (a
 # line a second while standing); after a level, the head back in cell
 # (1,1) turned to a yaw of its own, confirm (the pointing), confirm (the
-# end screen). SSQ item i of the condition at position k answered
+# end screen); instructions: confirm, then confirm (the ready screen). SSQ item i of the condition at position k answered
 # (3i + 5p + 7k + p int(i/4)) mod 4: the middle mark is 1, t= moves one
 # mark down, m= one up, confirm answers. -v kill=K: the lines end 2 s
 # into slot K (a step east, then 30,000 frames 30 us apart, so that the
-# session is killed there); -v from=K starts at slot K (a resumed session:
+# session is killed there); -v from=K starts at slot K (a resumed session,
+# whose first level mid-condition begins on the ready screen:
 # no practice).
 # -v tlx=1: the TLX after the last SSQ (the study's `after study`), item i
 # answered 50 + 5 ((3i + p) mod 5 - 2). -v killq=K (K odd): the lines end
@@ -38,7 +39,7 @@ function level(w, c0, r0, y, point,   i, c, r, d, L) {
     if (point) { line(" p=1", 1, 1); line("", 1, 1) }  # the pointing's confirm
     line(" p=1", 1, 1)                                  # the end screen's
 }
-function screen() { q = quat(0); line("", 1, 1); line(" p=1", 1, 1) }
+function screen(ready) { q = quat(0); line("", 1, 1); line(" p=1", 1, 1); if (ready) line(" p=1", 1, 1) }
 function ssq(k, lo, hi,   i, v) {
     q = quat(0)
     for (i = lo; i <= hi; i++) {
@@ -66,10 +67,11 @@ function stall(   i) {
 }
 BEGIN {
     t = 0; if (kill == "") kill = -1; if (killq == "") killq = -1; if (from == "") from = 0
-    if (from == 0) { screen(); q = quat(0); level("N", 1, 1, 0, 0) }
+    if (from == 0) { screen(1); q = quat(0); level("N", 1, 1, 0, 0) }
     if (ssqfrom != "") ssq(int((from - 1) / 2) + 1, ssqfrom, 16)
+    if (from % 2 == 1) { q = quat(0); line("", 1, 1); line(" p=1", 1, 1) } # a resume's ready screen
     for (s = from; s < 8; s++) {
-        if (s % 2 == 0) screen()            # the condition's instructions
+        if (s % 2 == 0) screen(1)           # the condition's instructions, the ready screen
         a = substr(plan, s + 1, 1); y = (37 * s + 61 * p) % 360
         if (s == kill) {
             q = quat(0); line("", 1, 1); line("", 2, 1); t += 0.5; line("", 2, 1)

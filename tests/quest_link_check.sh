@@ -36,6 +36,8 @@ gen=$(echo "$list" | sed -n 's/^gen //p')
 # the shaders as C (render/hol_program.c includes hol_glsl.h), as build_apk.sh makes them
 [ -n "$gen" ] || fail "build_apk.sh --link-list names no generator of the shaders' C"
 sh "$root/$gen" "$tmp/gen/hol_glsl.h" || fail "$gen"
+# the build's commit and date (platform/shell/hol_shell_build.h), as build_apk.sh makes them
+(cd "$root" && sh platform/shell/build_id.sh "$tmp/gen/hol_build_id.h") || fail "build_id.sh"
 
 # Debian's builds of the named libraries (liblog lives in its own folder)
 ma=$($CC -print-multiarch)

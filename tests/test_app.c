@@ -20,6 +20,8 @@
 #include "../core/hol_nav.h"
 #include "../core/hol_prompt.h"
 #include "../core/hol_room.h"
+#include "../core/hol_sound.h"
+#include "../core/hol_str.h"
 #include "../core/hol_tile.h"
 #include "../core/hol_world.h"
 #include "app_fixture.h"
@@ -325,6 +327,155 @@ static void test_keys_level(void **state)
     /* an objective on the start tile is refused */
     L.chest = hol_tile_origin();
     assert_int_equal(hol_app_start_level(app, &L), HOL_EARG);
+    hol_app_destroy(app);
+}
+
+/* The chime (hol_sound_kind) a caption names, or -1. */
+static int caption_chime(const char *caption, int lang)
+{
+    static const int ids[4] = {HOL_S_CAP_START, HOL_S_CAP_KEY, HOL_S_CAP_CHEST, HOL_S_CAP_FLAG};
+    static const int kinds[4] = {HOL_SND_CHIME_START, HOL_SND_CHIME_KEY, HOL_SND_CHIME_CHEST,
+                                 HOL_SND_CHIME_FLAG};
+    for (int i = 0; i < 4; i++)
+        if (!strcmp(caption, hol_str(lang, (hol_str_id)ids[i])))
+            return kinds[i];
+    return -1;
+}
+
+/* Walks the room steps as play_walk does, at 10 frames a step, with the
+ * sound made every frame as a platform makes it (core/hol_sound.h): every
+ * chime the sound plays is named by the caption at that frame (the HUD's
+ * last line), in lang, and stays for HOL_APP_CAPTION_S; the chimes played
+ * go into kinds. Returns how many. */
+static int walk_captioned(hol_app *app, const uint8_t *walk, int n, double *t, int lang,
+                          int *kinds, int cap)
+{
+    static hol_sound snd;
+    static hol_sound_list sl;
+    hol_sound_init(&snd);
+    const hol_app_view *v = hol_app_get_view(app);
+    int col = v->user.col, row = v->user.row, nk = 0;
+    double chimed = -1;
+    for (int i = 0; i <= n * 10; i++) {
+        if (i && i % 10 == 0) {
+            int dc, dr;
+            hol_dir_delta(walk[i / 10 - 1], &dc, &dr);
+            col += dc;
+            row += dr;
+        }
+        hol_input in = tracked_at(*t, col, row);
+        assert_int_equal(hol_app_step(app, &in), HOL_OK);
+        assert_int_equal(hol_sound_update(&snd, v, hol_app_get_events(app),
+                                          hol_app_world(app), &sl), HOL_OK);
+        for (int k = 0; k < sl.nshots; k++) {
+            int kind = sl.shot[k].kind;
+            if (kind < HOL_SND_CHIME_KEY)
+                continue; /* footsteps are not captioned */
+            assert_int_equal(caption_chime(v->hud.caption, lang), kind);
+            assert_true(nk < cap);
+            kinds[nk++] = kind;
+            chimed = *t;
+        }
+        if (chimed >= 0 && *t < chimed + HOL_APP_CAPTION_S - 1e-9) {
+            assert_true(caption_chime(v->hud.caption, lang) >= 0);
+            assert_string_equal(v->hud.lines[v->hud.nlines - 1], v->hud.caption);
+        }
+        *t += 0.025;
+    }
+    return nk;
+}
+
+/* Issue 37: captions for the sound. A keys level with a beacon on each
+ * objective: the level's start, each key and the chest are named as the
+ * sound chimes them (English, then German); between chimes the beacons'
+ * line; captions off (the default: no platform sound) or the level's
+ * sound off: no caption and the HUD's lines as before. */
+static void test_captions(void **state)
+{
+    (void)state;
+    hol_app *app = make_app();
+    hol_app_level L;
+    memset(&L, 0, sizeof L);
+    L.mode = HOL_APP_KEYS;
+    L.seed = 3;
+    L.keys[0] = tile("Nf");
+    L.keys[1] = tile("Wr");
+    L.nkeys = 2;
+    L.chest = tile("Sf");
+    L.cues = HOL_CUE_ALL | HOL_CUE_SOUND;
+    uint8_t walk[HOL_NAV_WALK_MAX];
+    hol_nav_result res;
+    hol_room start = hol_room_start();
+    assert_int_equal(hol_nav_tour(g_nav, &start, L.keys, 2, L.chest, 0, walk, sizeof walk, &res),
+                     HOL_OK);
+    const hol_app_view *v = hol_app_get_view(app);
+    double t = 0;
+    for (int lang = 0; lang < 2; lang++) {
+        hol_app_set_captions(app, 1);
+        hol_app_set_lang(app, lang);
+        assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+        int kinds[8];
+        int nk = walk_captioned(app, walk, res.len, &t, lang, kinds, 8);
+        assert_int_equal(v->state, HOL_APP_DONE);
+        assert_int_equal(nk, 4);
+        assert_int_equal(kinds[0], HOL_SND_CHIME_START);
+        assert_int_equal(kinds[1], HOL_SND_CHIME_KEY);
+        assert_int_equal(kinds[2], HOL_SND_CHIME_KEY);
+        assert_int_equal(kinds[3], HOL_SND_CHIME_CHEST);
+    }
+    /* the beacons' line while they sound and no chime is new */
+    hol_app_set_lang(app, HOL_LANG_EN);
+    assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    hol_input in = tracked_at(t += 0.1, 1, 1);
+    step(app, in);
+    assert_string_equal(v->hud.caption, "[Sound: chime, the level begins]");
+    step(app, tracked_at(t += HOL_APP_CAPTION_S, 1, 1));
+    assert_string_equal(v->hud.caption, "[Sound: beacons pip at the goals]");
+    assert_string_equal(v->hud.lines[v->hud.nlines - 1], v->hud.caption);
+    int with = v->hud.nlines;
+    /* off: no caption, one line fewer */
+    hol_app_set_captions(app, 0);
+    step(app, tracked_at(t += 0.1, 1, 1));
+    assert_string_equal(v->hud.caption, "");
+    assert_int_equal(v->hud.nlines, with - 1);
+    /* the level's sound off: nothing plays, nothing is captioned */
+    hol_app_set_captions(app, 1);
+    L.sound = HOL_SOUND_OFF;
+    assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    step(app, tracked_at(t += 0.1, 1, 1));
+    assert_string_equal(v->hud.caption, "");
+    hol_app_destroy(app);
+}
+
+/* Issue 37: the view's language is the level's `lang` line when it has
+ * one, else the app's (desc.lang, hol_app_set_lang); the English texts are
+ * the ones the app always showed. */
+static void test_level_lang(void **state)
+{
+    (void)state;
+    hol_app *app = make_app();
+    const hol_app_view *v = hol_app_get_view(app);
+    hol_app_level L;
+    hol_level_err e;
+    double t = 0;
+    assert_int_equal(parse_level("mode flag\nflag N\n", &L, &e), HOL_OK);
+    assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    step(app, tracked_at(t += 0.1, 1, 1));
+    assert_string_equal(v->hud.objective, "Find the flag");
+    assert_string_equal(v->hud.lines[1], "STEPS 0");
+    hol_app_set_lang(app, HOL_LANG_DE);
+    step(app, tracked_at(t += 0.1, 1, 1));
+    assert_string_equal(v->hud.objective, "Finde die Fahne");
+    assert_string_equal(v->hud.lines[1], "SCHRITTE 0");
+    assert_int_equal(parse_level("mode flag\nflag N\nlang en\n", &L, &e), HOL_OK);
+    assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    step(app, tracked_at(t += 0.1, 1, 1));
+    assert_string_equal(v->hud.objective, "Find the flag");
+    hol_app_set_lang(app, HOL_LANG_EN);
+    assert_int_equal(parse_level("mode flag\nflag N\nlang nl\n", &L, &e), HOL_OK);
+    assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    step(app, tracked_at(t += 0.1, 1, 1));
+    assert_string_equal(v->hud.objective, "Vind de vlag");
     hol_app_destroy(app);
 }
 
@@ -946,7 +1097,7 @@ static void test_tutorial_feedback(void **state)
     assert_int_equal(v->hud.stage, 1);
     assert_string_equal(v->hud.feedback, "Well done: one step, one new tile");
     assert_string_equal(v->hud.lines[0], v->hud.feedback);
-    assert_true(strstr(v->hud.lines[1], "2/4") != NULL);
+    assert_int_equal(v->hud.nlines, 1); /* one idea at a time: the next lesson after it */
     assert_int_equal(v->map.nmarks, 0);
     /* round the tree: the fourth step names holonomy and marks both tiles */
     hol_room before = v->user;
@@ -1102,14 +1253,15 @@ static void test_tutorial_marker_and_rings(void **state)
     play_walk(app, walk, 4, &t);
     assert_int_equal(v->hud.stage, 2);
     assert_int_equal(v->map.nmarks, 2);
-    assert_string_equal(v->hud.note, HOL_APP_RINGS_TEXT);
+    assert_string_equal(v->hud.note, hol_str(HOL_LANG_EN, HOL_S_RINGS));
     assert_string_equal(v->hud.lines[0], "Same cell, another tile: that is holonomy");
-    assert_string_equal(v->hud.lines[1], HOL_APP_RINGS_TEXT);
-    assert_true(strstr(v->hud.lines[2], "3/4") != NULL);
+    assert_string_equal(v->hud.lines[1], hol_str(HOL_LANG_EN, HOL_S_RINGS));
+    assert_int_equal(v->hud.nlines, 2); /* the idea alone: no objective, no prompt */
+    assert_string_equal(v->hud.hint, "");
     assert_int_equal(v->objects[0].kind, HOL_APP_OBJ_MARKER);
     hol_input in = tracked_at(t + 5.9, v->user.col, v->user.row);
     assert_int_equal(hol_app_step(app, &in), HOL_OK);
-    assert_string_equal(v->hud.note, HOL_APP_RINGS_TEXT);
+    assert_string_equal(v->hud.note, hol_str(HOL_LANG_EN, HOL_S_RINGS));
     in = tracked_at(t + 6.1, v->user.col, v->user.row);
     assert_int_equal(hol_app_step(app, &in), HOL_OK);
     assert_int_equal(v->map.nmarks, 0);
@@ -1231,7 +1383,7 @@ static void test_tutorial_strayed(void **state)
     }
     assert_true(shown > 0);
     /* the first time the path shows, one line says what it means */
-    assert_string_equal(v->hud.feedback, HOL_APP_PATH_TEXT);
+    assert_string_equal(v->hud.feedback, hol_str(HOL_LANG_EN, HOL_S_PATH));
     hol_app_destroy(app);
 }
 
@@ -1754,6 +1906,113 @@ static void test_time_limit(void **state)
     hol_app_destroy(app);
 }
 
+/* A trial's onset (issue 35): an instruction screen's view has no
+ * minimap, no objective on it and no flag in the world; the ready screen
+ * (after the instructions, or hol_app_ready: a resume) keeps the clock at
+ * 0 and counts no step, however long it is read; its confirm begins the
+ * level, minimap and flag shown. */
+static void test_onset_ready(void **state)
+{
+    (void)state;
+    hol_app *app = make_app();
+    hol_app_level L = flag_level("N");
+    L.minimap = HOL_MINIMAP_HAND;
+    snprintf(L.instructions, sizeof L.instructions, "Find the flag.");
+    assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    const hol_app_view *v = hol_app_get_view(app);
+    assert_int_equal(v->hud.screen, HOL_APP_SCREEN_INSTRUCTIONS);
+    assert_int_equal(v->map.place, HOL_MINIMAP_OFF);
+    assert_int_equal(v->map.nobjectives, 0);
+    assert_int_equal(v->nobjects, 0);
+    step(app, app_head(0, 1, 1, 0, HOL_DEVICE_KEYBOARD, 0));
+    assert_int_equal(v->map.place, HOL_MINIMAP_OFF);
+    step(app, app_head(1, 1, 1, 0, HOL_DEVICE_KEYBOARD, HOL_BTN_CONFIRM));
+    assert_int_equal(v->hud.screen, HOL_APP_SCREEN_READY);
+    assert_int_equal(v->map.place, HOL_MINIMAP_OFF);
+    assert_int_equal(v->nobjects, 0);
+    /* read for a minute, walking onto the flag: no step, no clock */
+    const hol_app_events *ev = step(app, app_head(30, 1, 0, 0, HOL_DEVICE_KEYBOARD, 0));
+    assert_int_equal(ev->nsteps, 0);
+    ev = step(app, app_head(61, 1, 1, 0, HOL_DEVICE_KEYBOARD, 0));
+    assert_int_equal(ev->level_started, 0);
+    assert_true(v->hud.elapsed_s == 0);
+    assert_int_equal(v->state, HOL_APP_SCREEN);
+    step(app, app_head(62, 1, 1, 0, HOL_DEVICE_KEYBOARD, HOL_BTN_CONFIRM));
+    ev = step(app, app_head(63, 1, 1, 0, HOL_DEVICE_KEYBOARD, 0));
+    assert_int_equal(ev->level_started, 1);
+    assert_true(v->hud.elapsed_s == 0);
+    assert_int_equal(v->map.place, HOL_MINIMAP_HAND);
+    assert_int_equal(v->map.nobjectives, 1);
+    assert_int_equal(v->nobjects, 1);
+    ev = step(app, app_head(63.5, 1, 0, 0, HOL_DEVICE_KEYBOARD, 0));
+    assert_int_equal(ev->level_ended, HOL_APP_END_DONE);
+    assert_true(ev->summary.time_s > 0.49 && ev->summary.time_s < 0.51);
+    /* a resumed level without instructions: the ready screen alone */
+    L.instructions[0] = 0;
+    assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    assert_int_equal(hol_app_ready(app), HOL_OK);
+    assert_int_equal(v->hud.screen, HOL_APP_SCREEN_READY);
+    assert_int_equal(v->map.place, HOL_MINIMAP_OFF);
+    ev = step(app, app_head(70, 1, 1, 0, HOL_DEVICE_KEYBOARD, 0));
+    assert_int_equal(ev->level_started, 0);
+    ev = step(app, app_head(90, 1, 0, 0, HOL_DEVICE_KEYBOARD, 0));
+    assert_int_equal(ev->nsteps, 0);
+    step(app, app_head(91, 1, 1, 0, HOL_DEVICE_KEYBOARD, HOL_BTN_CONFIRM));
+    ev = step(app, app_head(92, 1, 1, 0, HOL_DEVICE_KEYBOARD, 0));
+    assert_int_equal(ev->level_started, 1);
+    assert_true(v->hud.elapsed_s == 0);
+    hol_app_destroy(app);
+    app = make_app(); /* no level: refused */
+    assert_int_equal(hol_app_ready(app), HOL_EARG);
+    hol_app_destroy(app);
+}
+
+/* A resumed level with a baseline (`ask NAME before_level`) and no
+ * instructions: its questions first, then the ready screen, then the
+ * level; desc.flow_v4 (a recording of version 1 to 4): the instructions'
+ * confirm begins the level, no ready screen. */
+static void test_onset_ready_after_baseline(void **state)
+{
+    (void)state;
+    hol_app *app = make_app();
+    hol_app_level L;
+    hol_level_err e;
+    assert_int_equal(parse_level("mode flag\nseed 5\nflag N\n"
+                                 "question q likert 1 5 \"How?\" \"low\" \"high\"\n"
+                                 "ask mine before_level q\n",
+                                 &L, &e), HOL_OK);
+    assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    assert_int_equal(hol_app_ready(app), HOL_OK);
+    const hol_app_view *v = hol_app_get_view(app);
+    assert_int_equal(v->state, HOL_APP_ASK);
+    step(app, app_head(0, 1, 1, 0, HOL_DEVICE_KEYBOARD, 0));
+    const hol_app_events *ev = step(app, app_head(1, 1, 1, 0, HOL_DEVICE_KEYBOARD, HOL_BTN_CONFIRM));
+    assert_int_equal(ev->answered, 1);
+    assert_int_equal(v->state, HOL_APP_SCREEN);
+    assert_int_equal(v->hud.screen, HOL_APP_SCREEN_READY);
+    ev = step(app, app_head(5, 1, 0, 0, HOL_DEVICE_KEYBOARD, 0));
+    assert_int_equal(ev->nsteps, 0);
+    step(app, app_head(6, 1, 1, 0, HOL_DEVICE_KEYBOARD, HOL_BTN_CONFIRM));
+    ev = step(app, app_head(7, 1, 1, 0, HOL_DEVICE_KEYBOARD, 0));
+    assert_int_equal(ev->level_started, 1);
+    hol_app_destroy(app);
+    hol_app_desc d;
+    memset(&d, 0, sizeof d);
+    d.nav = g_nav;
+    d.flow_v4 = 1;
+    assert_int_equal(hol_app_create(&d, &app), HOL_OK);
+    L = flag_level("N");
+    snprintf(L.instructions, sizeof L.instructions, "Find the flag.");
+    assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    v = hol_app_get_view(app);
+    step(app, app_head(0, 1, 1, 0, HOL_DEVICE_KEYBOARD, 0));
+    step(app, app_head(1, 1, 1, 0, HOL_DEVICE_KEYBOARD, HOL_BTN_CONFIRM));
+    assert_int_equal(v->state, HOL_APP_PLAYING);
+    ev = step(app, app_head(2, 1, 1, 0, HOL_DEVICE_KEYBOARD, 0));
+    assert_int_equal(ev->level_started, 1);
+    hol_app_destroy(app);
+}
+
 /* A tutorial of lessons 2 and 4 only: it begins with lesson 2 (round a
  * tree) and goes on to lesson 4. */
 static void test_tutorial_stages(void **state)
@@ -1826,10 +2085,14 @@ int main(void)
         cmocka_unit_test(test_start_where_the_head_stands),
         cmocka_unit_test(test_path_when_strayed),
         cmocka_unit_test(test_keys_level),
+        cmocka_unit_test(test_captions),
+        cmocka_unit_test(test_level_lang),
         cmocka_unit_test(test_lighting_in_view),
         cmocka_unit_test(test_objectives_on_free_tiles),
         cmocka_unit_test(test_tutorial),
         cmocka_unit_test(test_time_limit),
+        cmocka_unit_test(test_onset_ready),
+        cmocka_unit_test(test_onset_ready_after_baseline),
         cmocka_unit_test(test_safety_hud),
         cmocka_unit_test(test_tutorial_stages),
         cmocka_unit_test(test_tutorial_feedback),

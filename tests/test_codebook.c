@@ -1,15 +1,19 @@
-/* test_codebook.c - the codebook's table (platform/cli/codebook.h) against
- * the headers the writers write:
- * - each log file's columns in the table, joined with commas, are its
- *   writer's header byte for byte: the session's HOL_SESSION_*_COLUMNS
- *   (summary, steps, head, track, events, points, answers), the shell's
- *   HOL_SHELL_ENV_COLUMNS (environment.csv), PLAY_PROV_COLUMNS,
- *   PLAY_ORDER_COLUMNS, CODEBOOK_COLUMNS; the report's build.csv and
- *   codebook.csv likewise (its other files' headers are string literals in
- *   its writers: tests/cli_codebook.sh parses them from the files);
- * - every row has a type of the listed ones and a meaning, no column is
- *   listed twice for a file, and no field starts with = + - @ (a
- *   spreadsheet's formula);
+/* test_codebook.c - the codebook's tables (platform/cli/codebook.h,
+ * platform/shell/hol_shell_codebook.h) against the headers the writers
+ * write:
+ * - each log file's columns, joined with commas, are its writer's header
+ *   byte for byte (both are made from one table: this checks the making):
+ *   the session's HOL_SESSION_*_COLUMNS (summary, steps, head, track,
+ *   events, points, answers), the shell's HOL_SHELL_ENV_COLUMNS
+ *   (environment.csv), HOL_SHELL_PROV_COLUMNS, HOL_SHELL_ORDER_COLUMNS,
+ *   CODEBOOK_COLUMNS; the headers are those of the build before the tables
+ *   (the literals here), and points.csv and answers.csv the earlier ones
+ *   and the two timestamps; the report's build.csv and codebook.csv
+ *   likewise (its other files' headers are string literals in its writers:
+ *   tests/cli_codebook.sh parses them from the files);
+ * - every row of every table has a type of the listed ones and a meaning,
+ *   no column is listed twice for a file, and no field starts with = + - @
+ *   (a spreadsheet's formula);
  * - both codebooks fit CODEBOOK_TEXT_MAX, start with their header, and a
  *   report's names no "report:" file.
  */
@@ -25,9 +29,9 @@
 #include "../core/hol_session.h"
 #include "../platform/cli/codebook.h"
 #include "../platform/cli/codebook_table.h"
-#include "../platform/cli/play_prov.h"
 #include "../platform/cli/report/report.h"
 #include "../platform/shell/hol_shell_env.h"
+#include "../platform/shell/hol_shell_prov.h"
 
 static void header_is(const char *file, const char *want)
 {
@@ -50,32 +54,90 @@ static void headers_match(void **state)
     header_is("points.csv", HOL_SESSION_POINT_COLUMNS);
     header_is("answers.csv", HOL_SESSION_ANSWER_COLUMNS);
     header_is("environment.csv", HOL_SHELL_ENV_COLUMNS);
-    header_is("provenance.csv", PLAY_PROV_COLUMNS);
-    header_is("order.csv", PLAY_ORDER_COLUMNS);
+    header_is("provenance.csv", HOL_SHELL_PROV_COLUMNS);
+    header_is("order.csv", HOL_SHELL_ORDER_COLUMNS);
     header_is("codebook.csv", CODEBOOK_COLUMNS);
     header_is("report:codebook.csv", CODEBOOK_COLUMNS);
     header_is("report:build.csv", REPORT_BUILD_COLUMNS);
+    /* the headers as the build before the tables wrote them */
+    assert_string_equal(HOL_SESSION_SUMMARY_COLUMNS,
+                        "session,participant,session_start,version,attempt,study,condition,"
+                        "position,level,level_sha256,mode,seed,cues,tiling,room,cell,started,"
+                        "steps,optimum,time,end,session_no,study_sha256,meta");
+    assert_string_equal(HOL_SESSION_SUMMARY_COLUMNS_OLD,
+                        "session,participant,session_start,version,attempt,study,condition,"
+                        "position,level,level_sha256,mode,seed,cues,tiling,room,cell,started,"
+                        "steps,optimum,time,end");
+    assert_string_equal(HOL_SESSION_STEP_COLUMNS, "session,attempt,level,t,step,col,row,dir,yaw,"
+                                                  "tile,orient,remaining,cues,visible");
+    assert_string_equal(HOL_SESSION_HEAD_COLUMNS,
+                        "session,attempt,level,t,frame_t,x,y,z,yaw,pitch,col,row,tile");
+    assert_string_equal(HOL_SESSION_TRACK_COLUMNS,
+                        "session,attempt,level,sample,t,frame_t,device,"
+                        "head_x,head_y,head_z,head_qx,head_qy,head_qz,head_qw,"
+                        "left_x,left_y,left_z,left_qx,left_qy,left_qz,left_qw,"
+                        "right_x,right_y,right_z,right_qx,right_qy,right_qz,right_qw");
+    assert_string_equal(HOL_SESSION_EVENT_COLUMNS, "session,attempt,level,t,event,value");
+    assert_string_equal(HOL_SESSION_POINT_COLUMNS_OLD,
+                        "session,participant,attempt,level,t,target,pointed,true,flat,"
+                        "error_true,error_flat,time");
+    assert_string_equal(HOL_SESSION_POINT_COLUMNS,
+                        HOL_SESSION_POINT_COLUMNS_OLD ",shown_ms,answered_ms");
+    assert_string_equal(HOL_SESSION_ANSWER_COLUMNS_OLD,
+                        "session,participant,attempt,questionnaire,when,item,kind,value,time");
+    assert_string_equal(HOL_SESSION_ANSWER_COLUMNS,
+                        HOL_SESSION_ANSWER_COLUMNS_OLD ",shown_ms,answered_ms");
+    assert_string_equal(HOL_SHELL_ENV_COLUMNS,
+                        "session,participant,session_no,study_sha256,platform,os,runtime,"
+                        "gl_renderer,controller,refresh_hz,width,height,meta,options");
+    assert_string_equal(HOL_SHELL_PROV_COLUMNS, "session,participant,version,commit,build_date");
+    assert_string_equal(HOL_SHELL_ORDER_COLUMNS, "session,participant,study,position,condition,"
+                                                 "level,level_file,level_sha256");
+    assert_string_equal(CODEBOOK_COLUMNS, "file,column,type,unit,allowed,meaning");
     char none[8];
     assert_int_equal(codebook_header("nothing.csv", none, sizeof none), 0);
 }
 
 static int formula(const char *s) { return s[0] && strchr("=+-@", s[0]) != NULL; }
 
+/* A row complete and no formula; 0 or 1 after a message. */
+static int row_bad(const char *file, const hol_codebook_col *r)
+{
+    static const char *const types[] = {"string", "integer", "number", "hex", "id", "timestamp"};
+    int typed = 0;
+    for (size_t k = 0; k < sizeof types / sizeof types[0]; k++)
+        typed |= !strcmp(r->type, types[k]);
+    if (!typed || !r->column[0] || formula(r->unit) || formula(r->allowed) ||
+        formula(r->meaning) || formula(r->column)) {
+        print_error("%s %s incomplete or a formula\n", file, r->column);
+        return 1;
+    }
+    return 0;
+}
+
+/* No double quote or line break in a field, no comma in the unquoted ones
+ * (codebook.csv's text is made by the preprocessor: hol_shell_codebook.h);
+ * 1 when so. */
+static int csv_safe(const char *file, const hol_codebook_col *r)
+{
+    const char *f[6] = {file, r->column, r->type, r->unit, r->allowed, r->meaning};
+    for (int k = 0; k < 6; k++)
+        if (strpbrk(f[k], k < 4 ? "\",\r\n" : "\"\r\n")) {
+            print_error("%s %s: a quote, line break or comma in field %d\n", file, r->column, k);
+            return 0;
+        }
+    return 1;
+}
+
 static void rows_complete(void **state)
 {
     (void)state;
-    static const char *const types[] = {"string", "integer", "number", "hex", "id", "timestamp"};
     size_t n = sizeof codebook_rows / sizeof codebook_rows[0];
     for (size_t i = 0; i < n; i++) {
         const codebook_row *r = &codebook_rows[i];
-        int typed = 0;
-        for (size_t k = 0; k < sizeof types / sizeof types[0]; k++)
-            typed |= !strcmp(r->type, types[k]);
-        if (!typed || !r->column[0] || formula(r->unit) || formula(r->allowed) ||
-            formula(r->meaning)) {
-            print_error("row %zu (%s %s) incomplete or a formula\n", i, r->file, r->column);
+        const hol_codebook_col c = {r->column, r->type, r->unit, r->allowed, r->meaning};
+        if (row_bad(r->file, &c) || !csv_safe(r->file, &c))
             fail();
-        }
         for (size_t j = 0; j < i; j++)
             if (!strcmp(codebook_rows[j].file, r->file) &&
                 !strcmp(codebook_rows[j].column, r->column)) {
@@ -83,6 +145,19 @@ static void rows_complete(void **state)
                 fail();
             }
     }
+    int nf;
+    const hol_codebook_file *f = hol_shell_codebook_logs(&nf);
+    for (int i = 0; i < nf; i++)
+        for (int c = 0; c < f[i].n; c++) {
+            if (row_bad(f[i].name, &f[i].cols[c]) || !csv_safe(f[i].name, &f[i].cols[c]) ||
+                !f[i].cols[c].meaning[0])
+                fail();
+            for (int d = 0; d < c; d++)
+                if (!strcmp(f[i].cols[d].column, f[i].cols[c].column)) {
+                    print_error("%s %s listed twice\n", f[i].name, f[i].cols[c].column);
+                    fail();
+                }
+        }
 }
 
 static void texts(void **state)
@@ -95,9 +170,23 @@ static void texts(void **state)
         assert_memory_equal(text, CODEBOOK_COLUMNS "\n", sizeof CODEBOOK_COLUMNS);
         assert_null(strstr(text, "report:"));
         /* every meaning filled (a report's from the log column's) */
-        assert_null(strstr(text, ",\n"));
+        assert_null(strstr(text, ",\"\"\n"));
     }
     assert_non_null(strstr(text, "\nattempts.csv,steps,"));
+    /* the log folder's text (made by the preprocessor) is the rows as
+     * hol_shell_codebook_put writes them from the tables */
+    static char rows[CODEBOOK_TEXT_MAX];
+    size_t at = 0;
+    int nf;
+    const hol_codebook_file *f = hol_shell_codebook_logs(&nf);
+    at = (size_t)snprintf(rows, sizeof rows, "%s\n", CODEBOOK_COLUMNS);
+    for (int i = 0; i < nf; i++)
+        for (int c = 0; c < f[i].n; c++)
+            assert_int_equal(hol_shell_codebook_put(f[i].name, &f[i].cols[c], rows, sizeof rows, &at),
+                             0);
+    assert_int_equal(codebook_csv(CODEBOOK_LOGS, text, sizeof text), at);
+    assert_string_equal(text, rows);
+    assert_non_null(strstr(text, "\nanswers.csv,answered_ms,integer,ms,\"0..\",\"the session's"));
     assert_int_equal(codebook_csv(CODEBOOK_LOGS, text, 100), 0);
 }
 

@@ -15,6 +15,7 @@
 #include <cmocka.h>
 
 #include "../core/hol_fit.h"
+#include "../core/hol_str.h"
 
 static double frand(uint64_t *s)
 {
@@ -241,6 +242,10 @@ static void test_text(void **state)
     assert_string_equal(buf, "Your 1.2 x 1.4 m play area is smaller than the smallest room "
                              "(3 x 3 cells of 0.5 m and 0.1 m clear): playing 3 x 3 cells "
                              "of 0.5 m, keep to the middle");
+    /* the player's line in German (issue 37: the web page's status) */
+    hol_fit_say(&f, -1, HOL_LANG_DE, buf, sizeof buf);
+    assert_string_equal(buf, "Deine 1.2 x 1.4 m Spielfläche ist zu klein für 3 x 3 Zellen zu "
+                             "0.5 m und 0.1 m Rand: bleib in der Mitte");
     hol_fit_rect(10, 12, -1, &f);
     hol_fit_text(&f, -1, buf, sizeof buf);
     assert_string_equal(buf, "Room 5 x 5 cells of 1.5 m fits your 10.0 x 12.0 m play area");

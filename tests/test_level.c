@@ -22,6 +22,7 @@
 #include "../core/hol_tile.h"
 #include "../core/hol_campaign.h"
 #include "../core/hol_level.h"
+#include "../core/hol_str.h"
 #include "../core/hol_sha256.h"
 
 static int parse(const char *text, hol_app_level *L, char *err)
@@ -127,6 +128,13 @@ static void test_lighting_lines(void **state)
     assert_int_equal(L.lantern_spot[1], 0);
     assert_int_equal(L.lantern_spot[2], 1);
     assert_int_equal(L.lantern_spot[3], 4);
+    /* lang en|de|nl (issue 37): 1 + the language; none: 0, the app's */
+    assert_int_equal(parse("mode explore\n", &L, err), 0);
+    assert_int_equal(L.lang, 0);
+    assert_int_equal(parse("mode explore\nlang de\n", &L, err), 0);
+    assert_int_equal(L.lang, 1 + HOL_LANG_DE);
+    assert_int_equal(parse("mode explore\nlang en\n", &L, err), 0);
+    assert_int_equal(L.lang, 1 + HOL_LANG_EN);
     static const struct {
         const char *text, *want;
         hol_err code;
@@ -134,6 +142,9 @@ static void test_lighting_lines(void **state)
         {"mode explore\nlighting noon\n", "line 2: lighting 'noon' is not day, dusk or night",
          HOL_EPARSE},
         {"mode explore\nlighting\n", "line 2: 'lighting' needs a value", HOL_EPARSE},
+        {"mode explore\nlang fr\n", "line 2: lang 'fr' is not en, de or nl", HOL_EPARSE},
+        {"mode explore\nlang DE\n", "line 2: lang 'DE' is not en, de or nl", HOL_EPARSE},
+        {"mode explore\nlang de\nlang en\n", "line 3: 'lang' is given twice", HOL_EARG},
         {"mode explore\nlighting day night\n", "line 2: unknown key or wrong value count",
          HOL_EPARSE},
         {"mode explore\nplace lantern Nx\n", "line 2: 'Nx' is not a canonical address",

@@ -35,6 +35,7 @@
 #include "../render/hol_png.h"
 #include "../render/hol_render.h"
 #include "golden_compare.h"
+#include "hand_fixture.h"
 #include "render_fixture.h"
 
 #define W 160
@@ -61,6 +62,10 @@ typedef struct golden_view {
      * item: the text face's lower case and punctuation), and its prompt */
     const char *hud[3];
     const char *prompt;
+    /* the body (core/hol_body.h): 1 two Touch controllers and the
+     * pointing ray from the right, 2 two tracked hands (tests/
+     * hand_fixture.h), held below the eye (golden_body) */
+    int body;
 } golden_view;
 
 /* the day views leave lighting and lanterns out (zero: day, none) */
@@ -119,6 +124,12 @@ static const golden_view views[] = {
      {0},
      {"How \"hurried\" was the pace?", "0 % = very low, 100 % =", "very high; < 50 % is 'low'"},
      "Left/right: -5 %, enter: OK"},
+    /* the body, in a tile two steps away (its poses are the room's: the
+     * walk does not move them) */
+    {.name = "body_controllers", .walk = "WS", .eye = {0.5, 1.6, 2.4}, .yaw = -30, .pitch = -35,
+     .fov = 90, .body = 1},
+    {.name = "body_hands", .walk = "WS", .eye = {0.5, 1.6, 2.4}, .yaw = -40, .pitch = -35,
+     .fov = 90, .body = 2},
 };
 
 static render_fixture fx;
@@ -155,6 +166,37 @@ static int teardown(void **state)
         hol_world_destroy(qworlds[q]);
     render_fixture_destroy(&fx);
     return 0;
+}
+
+/* The view's body (g->body): the hands 0.3 m ahead of the eye along its
+ * yaw, 0.3 m below it and 0.15 m to each side; the controllers' tips up
+ * 15 degrees. */
+static void golden_body(const golden_view *g, hol_body *out)
+{
+    hol_input in;
+    memset(&in, 0, sizeof in);
+    in.flags = HOL_INPUT_HEAD_VALID;
+    in.device = g->body == 1 ? HOL_DEVICE_XR_TOUCH : HOL_DEVICE_WEBXR_HAND;
+    double y = g->yaw * 3.14159265358979323846 / 180;
+    for (int h = 0; h < 2; h++) {
+        double side = h ? 0.15 : -0.15, w[3];
+        w[0] = g->eye[0] + side * cos(y) - 0.3 * sin(y);
+        w[1] = g->eye[1] - 0.3;
+        w[2] = g->eye[2] - side * sin(y) - 0.3 * cos(y);
+        if (g->body == 2) {
+            hand_fixture(h, w, g->yaw + (h ? 15 : -15), 0, h == 0, &in.joints[h]);
+            continue;
+        }
+        in.flags |= h ? HOL_INPUT_HAND_R_VALID : HOL_INPUT_HAND_L_VALID;
+        double a = 7.5 * 3.14159265358979323846 / 180, b = y / 2; /* yaw * tip up */
+        in.hand[h].quat[0] = (float)(cos(b) * sin(a));
+        in.hand[h].quat[1] = (float)(sin(b) * cos(a));
+        in.hand[h].quat[2] = (float)(-sin(b) * sin(a));
+        in.hand[h].quat[3] = (float)(cos(b) * cos(a));
+        for (int k = 0; k < 3; k++)
+            in.hand[h].pos[k] = (float)w[k];
+    }
+    hol_body_from_input(&in, g->body == 1, out);
 }
 
 static void render_with(hol_render *rr, const golden_view *g, uint8_t *rgba)
@@ -209,6 +251,11 @@ static void render_with(hol_render *rr, const golden_view *g, uint8_t *rgba)
     assert_int_equal(hol_world_update(world, &f.user), HOL_OK);
     f.steps_taken = 2;
     f.time_s = 83;
+    static hol_body body;
+    if (g->body) {
+        golden_body(g, &body);
+        f.body = &body;
+    }
     render_fixture_draw(rr, &f, W, H, rgba);
     hol_render_set_world(rr, fx.world);
 }

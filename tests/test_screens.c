@@ -116,14 +116,28 @@ static void test_app_instructions(void **state)
     ev = step(app, head_at(1, 1, 0, 0));
     assert_int_equal(ev->nsteps, 0);
     assert_int_equal(v->state, HOL_APP_SCREEN);
+    /* no minimap, no objective, no flag before the clock starts */
+    assert_int_equal(v->map.place, HOL_MINIMAP_OFF);
+    assert_int_equal(v->map.nobjectives, 0);
+    assert_int_equal(v->nobjects, 0);
     ev = step(app, head_at(2, 1, 1, HOL_BTN_CONFIRM));
     assert_int_equal(ev->level_started, 0);
     assert_int_equal(ev->next_level, 0);
+    /* then the ready screen: the clock waits for its confirm */
+    assert_int_equal(v->state, HOL_APP_SCREEN);
+    assert_int_equal(v->hud.screen, HOL_APP_SCREEN_READY);
+    assert_string_equal(v->hud.lines[0], HOL_APP_READY_TEXT);
+    assert_int_equal(v->map.place, HOL_MINIMAP_OFF);
+    ev = step(app, head_at(2.5, 1, 1, HOL_BTN_CONFIRM));
+    assert_int_equal(ev->level_started, 0);
     ev = step(app, head_at(3, 1, 1, 0)); /* the level begins here, its clock at 0 */
     assert_int_equal(ev->level_started, 1);
     assert_int_equal(v->state, HOL_APP_PLAYING);
     assert_int_equal(v->hud.screen, 0);
     assert_true(v->hud.elapsed_s == 0);
+    assert_int_equal(v->map.place, HOL_MINIMAP_HUD);
+    assert_int_equal(v->map.nobjectives, 1);
+    assert_int_equal(v->nobjects, 1);
     ev = step(app, head_at(3.5, 1, 0, 0));
     assert_int_equal(ev->nsteps, 1);
     assert_int_equal(ev->level_ended, HOL_APP_END_DONE);
@@ -162,6 +176,9 @@ static void test_app_instructions_menu_hint(void **state)
     assert_int_equal(v->state, HOL_APP_SCREEN);
     assert_null(strstr(v->hud.hint, "Y: menu"));
     in = head_at(20, 1, 1, HOL_BTN_CONFIRM);
+    in.device = HOL_DEVICE_XR_TOUCH;
+    step(app, in);
+    in = head_at(20.5, 1, 1, HOL_BTN_CONFIRM); /* the ready screen */
     in.device = HOL_DEVICE_XR_TOUCH;
     step(app, in);
     in = head_at(21, 1, 1, 0);

@@ -745,7 +745,7 @@ static void test_resumed_questions(void **state)
     const char *a = mem_text(&log, "answers.csv");
     assert_non_null(a);
     assert_int_equal(strncmp(a, HOL_SESSION_ANSWER_COLUMNS "\nOLD,P1,7,ssq,condition,fatigue,"
-                                "likert,1,0.5000\n", sizeof HOL_SESSION_ANSWER_COLUMNS + 47),
+                                "likert,1,0.5000,0,500\n", sizeof HOL_SESSION_ANSWER_COLUMNS + 53),
                      0);
     int rows = 0;
     for (const char *p = a; (p = strchr(p, '\n')); p++)

@@ -13,7 +13,9 @@
 
 #include <cmocka.h>
 
+#include "../core/hol_input_io.h"
 #include "../platform/web/hol_web_xr.h"
+#include "hand_fixture.h"
 
 /* A perspective matrix from the four half-angle tangents (left and down
  * negative), near n and far f, column-major: what XRView.projectionMatrix
@@ -271,6 +273,91 @@ static void test_hands(void **state)
     assert_int_equal(in.pressed, HOL_BTN_CONFIRM);
 }
 
+/* The glue's joints (reference space) reach the record in room
+ * coordinates; both palms up and open for 1 s, focused, press the
+ * recentre once, which places the room from the head (the head, a metre
+ * east of the origin and turned west, is then in the middle looking
+ * north); under a system menu nothing. */
+static void test_hands_recentre(void **state)
+{
+    (void)state;
+    hol_web_xr_state st;
+    memset(&st, 0, sizeof st);
+    hol_web_xr_frame f;
+    memset(&f, 0, sizeof f);
+    f.visibility = HOL_WEB_XR_VISIBLE;
+    f.head_valid = 1;
+    f.head_pos[0] = 1.0f;
+    f.head_pos[1] = 1.6f;
+    f.head_quat[1] = (float)sin(M_PI / 4);
+    f.head_quat[3] = (float)cos(M_PI / 4);
+    for (int h = 0; h < 2; h++) {
+        double w[3] = {h ? 1.15 : 0.85, 1.2, -0.3};
+        hol_hand_joints j;
+        hand_fixture(h, w, 0, 1, 0, &j);
+        f.pad[h].present = 1;
+        f.pad[h].hand = 1;
+        f.pad[h].joints_valid = 1;
+        for (int i = 0; i < HOL_HAND_JOINTS; i++) {
+            memcpy(f.pad[h].joint[i], j.pos[i], 3 * sizeof(float));
+            f.pad[h].joint[i][3] = j.radius[i];
+        }
+    }
+    hol_input in;
+    hol_web_xr_input(&st, &f, 1.0, &in);
+    assert_int_equal(in.device, HOL_DEVICE_WEBXR_HAND);
+    for (int h = 0; h < 2; h++) {
+        assert_int_equal(in.joints[h].tracked, 1);
+        hol_pose room;
+        static const float one[4] = {0, 0, 0, 1};
+        hol_xr_to_room(&st.calib, f.pad[h].joint[7], one, &room);
+        assert_memory_equal(in.joints[h].pos[7], room.pos, sizeof room.pos);
+        assert_true(in.joints[h].radius[7] == f.pad[h].joint[7][3]);
+    }
+    assert_true(fabs(in.head.pos[0] - 2.5) < 1e-6); /* not placed yet */
+    /* under a system menu: nothing, and the hold starts again after it */
+    f.visibility = HOL_WEB_XR_BLURRED;
+    for (int k = 1; k <= 100; k++) {
+        hol_web_xr_input(&st, &f, 1.0 + k / 72.0, &in);
+        assert_int_equal(in.pressed, 0);
+    }
+    f.visibility = HOL_WEB_XR_VISIBLE;
+    int presses = 0;
+    double t0 = 1.0 + 101 / 72.0, at = -1;
+    for (int k = 0; k < 144; k++) { /* 2 s at 72 Hz */
+        hol_web_xr_input(&st, &f, t0 + k / 72.0, &in);
+        if (in.pressed & HOL_BTN_RECENTRE) {
+            presses++;
+            at = k / 72.0;
+            /* placed from the head: in the middle, looking north */
+            assert_true(fabs(in.head.pos[0] - 1.5) < 1e-5 && fabs(in.head.pos[2] - 1.5) < 1e-5);
+            assert_true(fabs(fabs(in.head.quat[3]) - 1) < 1e-5);
+        }
+    }
+    assert_int_equal(presses, 1);
+    assert_true(at >= HOL_GESTURE_HOLD_S && at < HOL_GESTURE_HOLD_S + 1.5 / 72);
+    /* palms down: no press however long */
+    memset(&st.gesture, 0, sizeof st.gesture);
+    for (int h = 0; h < 2; h++) {
+        double w[3] = {h ? 1.15 : 0.85, 1.2, -0.3};
+        hol_hand_joints j;
+        hand_fixture(h, w, 0, 0, 0, &j);
+        for (int i = 0; i < HOL_HAND_JOINTS; i++)
+            memcpy(f.pad[h].joint[i], j.pos[i], 3 * sizeof(float));
+    }
+    for (int k = 0; k < 144; k++) {
+        hol_web_xr_input(&st, &f, 10 + k / 72.0, &in);
+        assert_int_equal(in.pressed & HOL_BTN_RECENTRE, 0);
+    }
+    /* a joint the browser lost (NaN): that hand has none, the record stays
+     * valid */
+    f.pad[1].joint[12][1] = NAN;
+    hol_web_xr_input(&st, &f, 20, &in);
+    assert_int_equal(in.joints[0].tracked, 1);
+    assert_int_equal(in.joints[1].tracked, 0);
+    assert_true(hol_input_valid(&in));
+}
+
 static void test_bounds(void **state)
 {
     (void)state;
@@ -325,6 +412,7 @@ int main(void)
         cmocka_unit_test(test_buttons),
         cmocka_unit_test(test_input),
         cmocka_unit_test(test_hands),
+        cmocka_unit_test(test_hands_recentre),
         cmocka_unit_test(test_bounds),
         cmocka_unit_test(test_room_of_another_size),
     };

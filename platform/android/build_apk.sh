@@ -160,6 +160,8 @@ cmake --build "$oal/build" --target OpenAL -j 2 >"$oal/build.log"
 # quest-link-check`) and the NativeActivity entry with the NDK's glue.
 glue="$NDK/sources/android/native_app_glue"
 sh "$root/$APK_GEN" "$stage/gen/hol_glsl.h"
+# the build's commit and date (platform/shell/hol_shell_build.h: provenance.csv)
+(cd "$root" && sh platform/shell/build_id.sh "$stage/gen/hol_build_id.h")
 srcs=$(cd "$root" && ls $APK_SRC $NDK_SRC | sed "s|^|$root/|")
 # -ffp-contract=off: no fused multiply-add where the desktop has none, so
 # the core's results (and a recording's replay) are the same bits as on the

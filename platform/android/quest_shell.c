@@ -16,6 +16,7 @@
 #include "../audio/hol_audio.h"
 #include "../file/hol_sink_posix.h"
 #include "../openxr/hol_xr.h"
+#include "../shell/hol_shell_prov.h"
 
 typedef struct quest {
     const quest_host *host;
@@ -172,6 +173,10 @@ static int quest_fit(void *user, const hol_fit *f)
         quest_log(ANDROID_LOG_ERROR, "%s", msg);
         return 1;
     }
+    /* provenance.csv and codebook.csv, as every platform's log folder */
+    const char *bad = hol_shell_prov_write(d.log, &d.meta, NULL);
+    if (bad)
+        quest_log(ANDROID_LOG_WARN, "cannot write the log folder's %s", bad);
     return 0;
 }
 

@@ -449,6 +449,8 @@ int hol_audio_feed_open(hol_audio_feed *f, double volume, char *msg, size_t cap)
 
 void hol_audio_feed_step(hol_audio_feed *f, hol_app *app)
 {
+    if (app) /* what the sound plays is captioned on the HUD (hol_app.h) */
+        hol_app_set_captions(app, f->au != NULL);
     if (!f->au || !app)
         return;
     /* held too, the list is made (the listener's memory stays true);

@@ -80,7 +80,9 @@ typedef struct hol_audio_feed {
 int hol_audio_feed_open(hol_audio_feed *f, double volume, char *msg, size_t cap);
 /* This frame: core's list (hol_sound_update) from app's view, events and
  * world, carried out (hol_audio_apply; nothing plays while held). Silent
- * feed or NULL app: nothing. */
+ * feed or NULL app: nothing. The app's captions of the sound
+ * (hol_app_set_captions) are on while the feed is open, off while it is
+ * silent: from the next step on, the HUD names the cue the sound plays. */
 void hol_audio_feed_step(hol_audio_feed *f, hol_app *app);
 /* Hold (1) or go on (0): hol_audio_pause, remembered for a later open. */
 void hol_audio_feed_hold(hol_audio_feed *f, int held);

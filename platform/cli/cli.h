@@ -45,6 +45,13 @@ int cli_budget_value(const char *cmd, const char *v, size_t *out_budget);
 /* The value of --volume (play, xr): a number in 0..1 into *out_volume: 0,
  * or -1 after reporting it for cmd. */
 int cli_volume_value(const char *cmd, const char *v, double *out_volume);
+/* --lang L (core/hol_str.h: en, de or nl, exactly): 0 taken into
+ * *out_lang; -1 a bad value, reported as one line. */
+int cli_lang_value(const char *cmd, const char *v, int *out_lang);
+#define CLI_LANG_USAGE                                                                   \
+    "  --lang L        the language the player reads: en (the default), de or nl\n"      \
+    "                  (the HUD, prompts, end screens and tutorial; logs, recordings\n" \
+    "                  and this tool's messages stay in English)\n"
 
 /* The geometry options (SPEC 7): opt "--tiling" with the value "4,Q" into
  * *q and, when cols is not NULL, "--room" with "CxR" into *cols and *rows

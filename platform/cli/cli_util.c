@@ -1,6 +1,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include "../../core/hol_room.h"
 #include "../../core/hol_session.h"
+#include "../../core/hol_str.h"
 #include "cli.h"
 
 #include "../../core/hol_text.h"
@@ -318,6 +319,17 @@ int cli_volume_value(const char *cmd, const char *v, double *out_volume)
         return -1;
     }
     *out_volume = x;
+    return 0;
+}
+
+int cli_lang_value(const char *cmd, const char *v, int *out_lang)
+{
+    int l = strlen(v) == 2 ? hol_lang_parse(v) : -1;
+    if (l < 0 || strcmp(v, hol_lang_code(l))) {
+        cli_error(cmd, 0, "--lang '%.40s' is not en, de or nl", v);
+        return -1;
+    }
+    *out_lang = l;
     return 0;
 }
 

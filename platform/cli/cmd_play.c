@@ -40,7 +40,7 @@ const char *const cli_play_usage =
     "                     [--frames N] [--input FILE] [--size WxH]\n"
     "                     [--no-gamepad | --gamepad-replay FILE] [--snap-turn DEG]\n"
     "                     [--seated] [--stats] [--tiling 4,Q] [--room CxR] [--cell M]\n"
-    "                     [--mute | --volume V] [--track-hz N]\n"
+    "                     [--mute | --volume V] [--track-hz N] [--lang en|de|nl]\n"
     "\n"
     "Play in a desktop window (EGL on X11; also under Xvfb). LEVEL is a level\n"
     "file (SPEC section 5); --mode plays a level of that mode made from the seed\n"
@@ -112,6 +112,7 @@ const char *const cli_play_usage =
     "                  every second and at the end (CPU: the whole process,\n"
     "                  the software rasterizer's threads included)\n"
     PLAY_GEOMETRY_USAGE
+    CLI_LANG_USAGE
     "  --no-gamepad    do not use game controllers\n"
     "  --mute          no sound; --volume V: 0..1 (default 1) times the\n"
     "                  forest's and the cues' gain (OpenAL Soft, HRTF where\n"
@@ -140,6 +141,7 @@ typedef struct play_opts {
     int w, h, use_pad, append, snap_deg, stats, restart_participant, resume, mute, seated;
     int track_hz; /* --track-hz; 0: not given (10) */
     int lesson;   /* --lesson N; 0: none */
+    int lang;     /* --lang (core/hol_str.h); 0: English */
     double volume;
     play_env env; /* --session, --meta */
     char participant_id[HOL_REC_ID_MAX]; /* --participant in its spelling */
@@ -222,6 +224,8 @@ static int play_value(const char *cmd, const char *a, const char *val, play_opts
         return play_track_value(cmd, val, &o->track_hz);
     } else if (!strcmp(a, "--lesson")) {
         return play_lesson_value(cmd, val, &o->lesson);
+    } else if (!strcmp(a, "--lang")) {
+        return cli_lang_value(cmd, val, &o->lang) ? 1 : 0;
     }
     return 0;
 }
@@ -229,7 +233,7 @@ static int play_value(const char *cmd, const char *a, const char *val, play_opts
 const char *const cli_play_valued[] = {"--mode",  "--seed",  "--log",  "--record",
                                           "--frames", "--input", "--size", "--gamepad-replay",
                                           "--participant", "--snap-turn", "--study",
-                                          "--volume", "--track-hz", "--lesson", PLAY_GEOMETRY_OPTIONS, PLAY_ENV_OPTIONS, NULL};
+                                          "--volume", "--track-hz", "--lesson", "--lang", PLAY_GEOMETRY_OPTIONS, PLAY_ENV_OPTIONS, NULL};
 
 /* The options that only store their value or set a flag. */
 static const cli_store play_store[] = {
@@ -310,6 +314,7 @@ static int play_prepare_files(play_ctx *c)
     if (!st)
         st = play_out_open(c->cmd, o->log_dir, o->append, o->rec, &c->out);
     c->out.track_hz = o->track_hz;
+    c->out.lang = o->lang;
     const cli_path out[] = {{"--record", o->rec}, {"--log", o->log_dir}};
     const cli_outs outs = {out, 2, o->log_dir};
     if (!st && o->study)
@@ -440,7 +445,7 @@ static int play_prepare(play_ctx *c)
     hol_rec_meta meta;
     hol_sink_posix_meta(&meta, c->o.participant);
     snprintf(meta.study, sizeof meta.study, "%s", c->study);
-    if (c->o.resume) /* a level's unanswered questions first (issue 39) */
+    if (c->o.resume) /* unanswered questions first (issue 39), else the ready screen */
         play_study_resume_meta(&meta);
     if (play_env_meta(c->cmd, &c->o.env, c->o.study, &meta, &c->out.study_text,
                       &c->out.study_len))

@@ -21,6 +21,7 @@
 #include "../egl/hol_egl.h"
 #include "../egl/hol_egl_x11.h"
 #include "../osmesa/hol_osmesa.h"
+#include "../../core/hol_str.h"
 #include "cli.h"
 
 const char *const cli_render_usage =
@@ -33,6 +34,7 @@ const char *const cli_render_usage =
     "                       [--keys SCRIPT] [--tiling 4,Q] [--room CxR]\n"
     "                       [--cell M] [--lighting day|dusk|night]\n"
     "                       [--lantern ADDR] [--fireflies SECONDS|off]\n"
+    "                       [--lang en|de|nl]\n"
     "\n"
     "Render what the user sees and write a PNG: headless (OSMesa, or EGL\n"
     "surfaceless), or live in a window (--window).\n"
@@ -66,6 +68,8 @@ const char *const cli_render_usage =
     "                  content\n"
     "  --hud           draw the HUD text and the Poincare minimap (in {4,4}\n"
     "                  a plain top view, captioned so)\n"
+    CLI_LANG_USAGE
+    "                  (here: the --hud text)\n"
     "  --hand X,Y,Z    the minimap in the hand instead: a 25 cm square at\n"
     "                  X,Y,Z (room coordinates, 0.05..2 m from the eye across\n"
     "                  the floor) facing the eye; implies --hud\n"
@@ -336,6 +340,7 @@ typedef struct render_opts {
     long w, h, frames;
     int frames_set, stats, flags, ntargets, gl;
     int q, cols, rows;  /* --tiling, --room (0: the defaults) */
+    int lang;           /* --lang (core/hol_str.h; 0: English) */
     double cell_m;      /* --cell (default 1) */
     uint64_t seed;
     hol_tile targets[HOL_RENDER_MAX_OBJECTIVES];
@@ -344,7 +349,7 @@ typedef struct render_opts {
 const char *const cli_render_valued[] = {
     "--walk", "--eye", "--hand", "--orient", "--tan", "--yaw", "--pitch", "--size", "--out",
     "--tile-ids", "--fov", "--frames", "--seed", "--target", "--gl", "--stereo", "--keys",
-    "--cell", "--tiling", "--room", "--lighting", "--lantern", "--fireflies", NULL};
+    "--cell", "--tiling", "--room", "--lighting", "--lantern", "--fireflies", "--lang", NULL};
 
 /* The numeric options: 1 taken, 0 not one of them, -1 bad (reported). */
 static int parse_number_opt(const char *cmd, render_opts *o, const char *a, const char *val)
@@ -404,7 +409,9 @@ static int parse_value_opt(const char *cmd, render_opts *o, const char *a, const
     int n = parse_number_opt(cmd, o, a, val);
     if (n)
         return n < 0 ? CLI_EXIT_USAGE : 0;
-    if (!strcmp(a, "--target")) {
+    if (!strcmp(a, "--lang")) {
+        return cli_lang_value(cmd, val, &o->lang) ? CLI_EXIT_USAGE : 0;
+    } else if (!strcmp(a, "--target")) {
         if (o->ntargets >= HOL_RENDER_MAX_OBJECTIVES) {
             cli_error(cmd, 0, "more than %d --target options", HOL_RENDER_MAX_OBJECTIVES);
             return CLI_EXIT_USAGE;
@@ -646,7 +653,8 @@ static int setup_frame(const char *cmd, const render_opts *o, hol_frame_desc *fd
         return hf;
     fd->nobjectives = o->ntargets;
     memcpy(fd->objectives, o->targets, sizeof o->targets);
-    fd->objective_text = o->ntargets ? "reach the guide pole" : NULL;
+    fd->objective_text = o->ntargets ? hol_str(o->lang, HOL_S_GUIDE_POLE) : NULL;
+    fd->lang = o->lang;
     fd->lighting = o->lighting;
     fd->fireflies = !o->ff_off; /* drawn at dusk and night, as in the app */
     fd->time_s = o->ff_time;

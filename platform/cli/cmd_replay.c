@@ -22,7 +22,7 @@
 const char *const cli_replay_usage =
     "usage: holonomy replay REC [--log DIR [--append]] [--png-frames LIST --out-dir D]\n"
     "                       [--size WxH] [--tiling 4,Q] [--room CxR] [--cell M]\n"
-    "                       [--wav FILE] [--track-hz N]\n"
+    "                       [--wav FILE] [--track-hz N] [--lang en|de|nl]\n"
     "\n"
     "Run a recording (holonomy play --record) through the same session: the\n"
     "logs come out byte for byte as in the play (the recording names the\n"
@@ -44,6 +44,9 @@ const char *const cli_replay_usage =
     PLAY_GEOMETRY_USAGE
     PLAY_TRACK_USAGE
     "                  the play's --track-hz gives its track rows byte for byte\n"
+    CLI_LANG_USAGE
+    "                  (--png-frames draws the frames' text in it; the logs are\n"
+    "                  the same in every language)\n"
     "\n"
     "SIGINT, SIGTERM or SIGHUP end it cleanly (the attempt in play is logged\n"
     "with end 'aborted'). A killed session's recording (REC.live) ends its\n"
@@ -55,6 +58,7 @@ typedef struct replay_ctx {
     const char *cmd, *rec, *log_dir, *out_dir, *list;
     int w, h, append;
     int track_hz; /* --track-hz; 0: not given (10) */
+    int lang;     /* --lang (core/hol_str.h); 0: English */
     play_geometry geo;
     long pngs[4096];
     int npng;
@@ -99,7 +103,7 @@ static int parse_frame_list(const char *s, long *out, int cap, int *out_n)
 }
 
 const char *const cli_replay_valued[] = {"--log",  "--png-frames", "--out-dir", "--size",
-                                            "--wav",  "--track-hz", PLAY_GEOMETRY_OPTIONS, NULL};
+                                            "--wav",  "--track-hz", "--lang", PLAY_GEOMETRY_OPTIONS, NULL};
 
 /* The options that only store their value or set a flag. */
 static const cli_store replay_store[] = {
@@ -128,6 +132,9 @@ static int replay_options(replay_ctx *c, int argc, char **argv)
             ;
         else if (!strcmp(a, "--track-hz")) {
             if (play_track_value(c->cmd, val, &c->track_hz))
+                return CLI_EXIT_USAGE;
+        } else if (!strcmp(a, "--lang")) {
+            if (cli_lang_value(c->cmd, val, &c->lang))
                 return CLI_EXIT_USAGE;
         } else if ((g = play_geometry_value(c->cmd, a, val, &c->geo)) != 0) {
             if (g < 0)
@@ -223,6 +230,7 @@ static int replay_prepare(replay_ctx *c)
         return CLI_EXIT_USAGE;
     int st = play_out_open(c->cmd, c->log_dir, c->append, NULL, &c->out);
     c->out.track_hz = c->track_hz;
+    c->out.lang = c->lang;
     if (!st) {
         st = play_input_open(c->cmd, c->rec, 1, &c->input);
         c->has_input = !st;

@@ -26,7 +26,7 @@ const char *const cli_xr_usage =
     "                   [--participant ID] [--session N] [--meta KEY=VALUE]...\n"
     "                   [--record FILE] [--input FILE] [--space stage|local]\n"
     "                   [--play-area WxD] [--no-haptics] [--mute | --volume V]\n"
-    "                   [--track-hz N] [--panel quad|scene]\n"
+    "                   [--track-hz N] [--panel quad|scene] [--lang en|de|nl]\n"
     "                   [--check-frame K --check-dir DIR]\n"
     "                   [--tiling 4,Q] [--room CxR] [--cell M]\n"
     "\n"
@@ -73,6 +73,7 @@ const char *const cli_xr_usage =
     "                  'xr: sound ...' says whether it plays; without a device\n"
     "                  or libopenal.so.1 it goes on silent; --input is silent;\n"
     "                  docs/sound.md)\n"
+    CLI_LANG_USAGE
     "  --no-haptics    no controller pulses (by default a short one when a\n"
     "                  controller goes into a hedge or a tree trunk, a gentle\n"
     "                  one on both at each room step: docs/headset.md)\n"
@@ -104,6 +105,7 @@ typedef struct xr_opts {
     int mute;           /* --mute */
     double volume;      /* --volume; -1: not given (1) */
     int track_hz;       /* --track-hz; 0: not given (10) */
+    int lang;           /* --lang (core/hol_str.h); 0: English */
     play_env env;       /* --session, --meta */
     int argc;
     char **argv;
@@ -142,7 +144,7 @@ const char *const cli_xr_valued[] = {"--frames",      "--log",       "--record",
                                         "--input",       "--check-frame", "--check-dir",
                                         "--participant", "--space",    "--study", "--panel",
                                         PLAY_GEOMETRY_OPTIONS, "--play-area", "--volume",
-                                        "--track-hz", PLAY_ENV_OPTIONS, NULL};
+                                        "--track-hz", "--lang", PLAY_ENV_OPTIONS, NULL};
 
 /* The options that only store their value or set a flag. */
 static const cli_store xr_store[] = {
@@ -191,6 +193,8 @@ static int xr_options(const char *cmd, int argc, char **argv, xr_opts *o)
             bad = cli_volume_value(cmd, val, &o->volume) != 0;
         else if (!strcmp(a, "--track-hz"))
             bad = play_track_value(cmd, val, &o->track_hz);
+        else if (!strcmp(a, "--lang"))
+            bad = cli_lang_value(cmd, val, &o->lang) != 0;
         else if (!strcmp(a, "--play-area"))
             bad = xr_play_area(cmd, val, o->play_area);
         else if (!strcmp(a, "--panel")) {
@@ -463,10 +467,11 @@ int cli_cmd_xr(int argc, char **argv)
     if (!st)
         st = play_out_open(cmd, o.log_dir, o.append, o.rec, &out);
     out.track_hz = o.track_hz;
+    out.lang = o.lang;
     if (!st) {
         hol_sink_posix_meta(&c.meta, o.participant);
         snprintf(c.meta.study, sizeof c.meta.study, "%s", study);
-        if (o.resume) /* a level's unanswered questions first (issue 39) */
+        if (o.resume) /* unanswered questions first (issue 39), else the ready screen */
             play_study_resume_meta(&c.meta);
         st = play_env_meta(cmd, &o.env, o.study, &c.meta, &out.study_text, &out.study_len)
                  ? CLI_EXIT_FAIL

@@ -1,10 +1,10 @@
-/* codebook.c - codebook.csv's text from the codebook's table (codebook.h). */
+/* codebook.c - codebook.csv's text: the log folder's from the writers'
+ * tables (the shell's), the report's from its table (codebook.h). */
 #include "codebook.h"
 
 #include <stdio.h>
 #include <string.h>
 
-#include "../../core/hol_text.h"
 #include "codebook_table.h"
 
 #define NROWS (sizeof codebook_rows / sizeof codebook_rows[0])
@@ -13,41 +13,29 @@ static const char report_prefix[] = "report:";
 /* The meaning of a report column left empty: the log column's of that name. */
 static const char *meaning_of(const codebook_row *r)
 {
-    for (size_t i = 0; !r->meaning[0] && i < NROWS; i++)
-        if (strncmp(codebook_rows[i].file, report_prefix, sizeof report_prefix - 1) &&
-            !strcmp(codebook_rows[i].column, r->column) && codebook_rows[i].meaning[0])
-            return codebook_rows[i].meaning;
+    int nf;
+    const hol_codebook_file *f = hol_shell_codebook_logs(&nf);
+    for (int i = 0; !r->meaning[0] && i < nf; i++)
+        for (int c = 0; c < f[i].n; c++)
+            if (!strcmp(f[i].cols[c].column, r->column) && f[i].cols[c].meaning[0])
+                return f[i].cols[c].meaning;
     return r->meaning;
-}
-
-/* Appends s (quoted per RFC 4180 when it needs it) and sep at *at. */
-static int put(char *out, size_t cap, size_t *at, const char *s, char sep)
-{
-    size_t n = hol_text_csv(s, strlen(s), out + *at, cap - *at);
-    if (n + 2 > cap - *at)
-        return 1;
-    *at += n;
-    out[(*at)++] = sep;
-    out[*at] = 0;
-    return 0;
 }
 
 size_t codebook_csv(int which, char *out, size_t cap)
 {
-    size_t at = 0;
+    if (which == CODEBOOK_LOGS)
+        return hol_shell_codebook_csv(out, cap);
     if (cap < sizeof CODEBOOK_COLUMNS + 1)
         return 0;
-    at = (size_t)snprintf(out, cap, "%s\n", CODEBOOK_COLUMNS);
+    size_t at = (size_t)snprintf(out, cap, "%s\n", CODEBOOK_COLUMNS);
     for (size_t i = 0; i < NROWS; i++) {
         const codebook_row *r = &codebook_rows[i];
-        int rep = !strncmp(r->file, report_prefix, sizeof report_prefix - 1);
-        if (rep != (which == CODEBOOK_REPORT))
+        if (strncmp(r->file, report_prefix, sizeof report_prefix - 1))
             continue;
-        const char *f[6] = {rep ? r->file + sizeof report_prefix - 1 : r->file, r->column,
-                            r->type, r->unit, r->allowed, meaning_of(r)};
-        for (int k = 0; k < 6; k++)
-            if (put(out, cap, &at, f[k], k < 5 ? ',' : '\n'))
-                return 0;
+        const hol_codebook_col c = {r->column, r->type, r->unit, r->allowed, meaning_of(r)};
+        if (hol_shell_codebook_put(r->file + sizeof report_prefix - 1, &c, out, cap, &at))
+            return 0;
     }
     return at;
 }
@@ -56,6 +44,8 @@ int codebook_header(const char *file, char *out, size_t cap)
 {
     int n = 0;
     size_t at = 0;
+    if (strncmp(file, report_prefix, sizeof report_prefix - 1))
+        return hol_shell_codebook_header(file, out, cap);
     out[0] = 0;
     for (size_t i = 0; i < NROWS; i++) {
         if (strcmp(codebook_rows[i].file, file))

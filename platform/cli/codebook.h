@@ -3,21 +3,25 @@
  * "Provenance"; docs/report.md).
  *
  * Contract
- * - The rows are one table (codebook_table.h), in each file's column order.
- *   tests/test_codebook.c checks that each file's columns, joined with
- *   commas, are that file's header as its writer writes it (the session's
- *   HOL_SESSION_*_COLUMNS, HOL_SHELL_ENV_COLUMNS, PLAY_PROV_COLUMNS, ...);
- *   tests/cli_codebook.sh that every column of every file written in a log
- *   folder and a report is in the codebook.csv written there.
+ * - The log folder's files are the writers' own tables (core/
+ *   hol_log_cols.h: each writer's header is made from its table, the
+ *   codebook's text by platform/shell/hol_shell_codebook.h);
+ *   the report's are a table of rows here (codebook_table.h), in each
+ *   file's column order. tests/test_codebook.c checks that the report's
+ *   build.csv's and codebook.csv's columns are their headers, and every
+ *   table's rows complete; tests/cli_codebook.sh that every column of
+ *   every file written in a log folder and a report is in the
+ *   codebook.csv written there.
  * - codebook_csv(which, out, cap) writes the codebook's text (its header
  *   CODEBOOK_COLUMNS, then one row per column; fields quoted per RFC 4180
  *   where they need it) into out: which CODEBOOK_LOGS the log folder's
- *   files, CODEBOOK_REPORT the report's (named without "report:"). A
- *   report column with an empty meaning takes the log column of the same
- *   name's. Returns its length, or 0 when cap is too small.
+ *   files (hol_shell_codebook_csv), CODEBOOK_REPORT the report's (named
+ *   without "report:"). A report column with an empty meaning takes the
+ *   log column of the same name's. Returns its length, or 0 when cap is
+ *   too small.
  * - codebook_header(file, out, cap): the file's columns joined with commas
- *   (file as in the table: "steps-NNN.csv", "report:stats.csv"); returns
- *   the number of columns, 0 for a file not in the table.
+ *   (file as in the tables: "steps-NNN.csv", "report:stats.csv"); returns
+ *   the number of columns, 0 for a file not in them.
  * - Pure: no I/O, no allocation.
  */
 #ifndef CODEBOOK_H
@@ -25,12 +29,14 @@
 
 #include <stddef.h>
 
+#include "../shell/hol_shell_codebook.h"
+
 typedef struct codebook_row {
     const char *file, *column, *type, *unit, *allowed, *meaning;
 } codebook_row;
 
-#define CODEBOOK_COLUMNS "file,column,type,unit,allowed,meaning"
-#define CODEBOOK_TEXT_MAX (64 * 1024)
+#define CODEBOOK_COLUMNS HOL_SHELL_CODEBOOK_COLUMNS
+#define CODEBOOK_TEXT_MAX HOL_SHELL_CODEBOOK_TEXT_MAX
 enum { CODEBOOK_LOGS, CODEBOOK_REPORT };
 
 size_t codebook_csv(int which, char *out, size_t cap);

@@ -5,7 +5,7 @@
 #include <malloc.h>
 #endif
 
-#include "build_info.h"
+#include "../shell/hol_shell_build.h"
 #include "cli.h"
 
 typedef struct cli_command {
@@ -81,8 +81,8 @@ int main(int argc, char **argv)
         return cli_finish_output("--help");
     }
     if (!strcmp(argv[1], "--version")) {
-        printf("holonomy %s (commit %s, built %s)\n", build_version(), build_commit(),
-               build_date());
+        printf("holonomy %s (commit %s, built %s)\n", hol_shell_build_version(),
+               hol_shell_build_commit(), hol_shell_build_date());
         return cli_finish_output("--version");
     }
     for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++)

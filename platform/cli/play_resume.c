@@ -381,4 +381,5 @@ void play_study_resume_meta(hol_rec_meta *m)
     snprintf(m->ask_session, sizeof m->ask_session, "%s", resume_ask.ask_session);
     m->ask_attempt = resume_ask.ask_attempt;
     m->ask_item = resume_ask.ask_item;
+    m->ready = resume_ask.ask_item == 0; /* a level played: the ready screen first */
 }

@@ -444,6 +444,7 @@ int play_session_open(const char *cmd, play_out *po, const hol_level *levels, in
     d.study_len = po->study_len;
     d.app.lazy_nav = strcmp(cmd, "xr") != 0;
     d.app.lazy_world = d.app.lazy_nav;
+    d.app.lang = po->lang;
     char msg[256];
     /* recovery of a killed session's huge live files ends on a signal */
     if (po->has_log)

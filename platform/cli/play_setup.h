@@ -114,6 +114,8 @@ typedef struct play_out {
     char made_dir[4096]; /* --log DIR when play_out_open made it */
     int opened;          /* a session opened on them */
     int track_hz;        /* --track-hz, set after play_out_open; 0: 10 */
+    int lang;            /* --lang, set after play_out_open: the app's
+                            (hol_app_desc.lang); 0: English */
     char *study_text;    /* --study's text for the session to keep (set
                             after play_out_open, play_env_meta; freed by
                             play_out_close); NULL: none */

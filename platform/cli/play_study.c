@@ -7,6 +7,7 @@
 
 #include "../../core/hol_report.h"
 #include "../../core/hol_study.h"
+#include "../shell/hol_shell_prov.h"
 #include "cli.h"
 #include "play_prov.h"
 #include "summary_read.h"
@@ -108,26 +109,8 @@ static void study_hold_order(const hol_study *s, const char *participant, const 
                              const hol_level *levels, int n)
 {
     static char rows[64 * 1024];
-    size_t at = 0;
-    rows[0] = 0;
-    for (int i = 0; i < n; i++) {
-        char row[2048] = "", pos[16], rel[HOL_STUDY_PATH_MAX];
-        int c = hol_study_level_condition(s, lv[i]);
-        snprintf(pos, sizeof pos, "%d", c < 0 ? 0 : levels[i].position);
-        hol_study_level_path(s, lv[i], rel);
-        if (play_prov_field(row, sizeof row, participant, 1) ||
-            play_prov_field(row, sizeof row, s->name, 0) ||
-            play_prov_field(row, sizeof row, pos, 0) ||
-            play_prov_field(row, sizeof row, c < 0 ? HOL_STUDY_PRACTICE : s->conditions[c].name, 0) ||
-            play_prov_field(row, sizeof row, levels[i].name, 0) ||
-            play_prov_field(row, sizeof row, rel, 0))
-            return;
-        int w = snprintf(rows + at, sizeof rows - at, "%s\n", row);
-        if (w < 0 || (size_t)w >= sizeof rows - at)
-            return;
-        at += (size_t)w;
-    }
-    play_prov_hold_order(rows, levels, n);
+    if (!hol_shell_order_rows(s, participant, lv, levels, n, rows, sizeof rows))
+        play_prov_hold_order(rows, levels, n);
 }
 
 int play_study_levels(const char *cmd, const char *path, const char *participant,

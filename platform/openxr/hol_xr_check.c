@@ -151,8 +151,11 @@ void hol__xr_check_eye(hol__xr *x, int e, const hol_frame_desc *fd, unsigned fbo
 {
     size_t bytes = (size_t)w * (size_t)h * 4;
     uint8_t *bare = malloc(bytes), *shown = malloc(bytes);
+    /* the world: no HUD, and no body (the controllers are not the world's:
+     * `holonomy render` draws none) */
     hol_frame_desc b = *fd;
     b.flags |= HOL_RENDER_NO_HUD;
+    b.body = NULL;
     if (!bare || !shown || hol_render_frame(x->rnd, &b, NULL) != HOL_OK) {
         free(bare);
         free(shown);
@@ -173,6 +176,11 @@ void hol__xr_check_eye(hol__xr *x, int e, const hol_frame_desc *fd, unsigned fbo
     if (e == 0) /* the world against the renders without a HUD */
         hol__xr_check(x, &b, w, h);
     x->gl.BindFramebuffer(HOL__GL_FRAMEBUFFER, fbo);
+    if (fd->body) { /* the panel's pixels: as shown against the same without the HUD */
+        b.body = fd->body;
+        if (hol_render_frame(x->rnd, &b, NULL) == HOL_OK)
+            hol_render_read_rgba(x->rnd, w, h, bare);
+    }
     if (hol_render_frame(x->rnd, fd, NULL) == HOL_OK) {
         hol_render_read_rgba(x->rnd, w, h, shown);
         snprintf(path, sizeof path, "%s/xr-shown-eye%d.png", x->d->check_dir, e);

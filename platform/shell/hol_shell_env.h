@@ -3,8 +3,10 @@
  * fields' formatting (docs/research.md, "Session metadata").
  *
  * Contract
- * - HOL_SHELL_ENV_COLUMNS: the file's header line (without its newline);
- *   every platform writes it when it makes the file.
+ * - HOL_SHELL_ENV_COLUMNS: the file's header line (without its newline),
+ *   made from its table of columns (HOL_LOG_ENV_TABLE, core/hol_log_cols.h:
+ *   codebook.csv's rows are made from it too); every platform writes it
+ *   when it makes the file.
  * - hol_shell_env_row writes one row, without its newline, into out (cap
  *   bytes, NUL-terminated): the fourteen fields in the header's order, each
  *   escaped for a terminal (hol_text_escape) and then quoted as one RFC
@@ -21,9 +23,9 @@
 
 #include <stddef.h>
 
-#define HOL_SHELL_ENV_COLUMNS                                                             \
-    "session,participant,session_no,study_sha256,platform,os,runtime,gl_renderer,"        \
-    "controller,refresh_hz,width,height,meta,options"
+#include "../../core/hol_log_cols.h"
+
+#define HOL_SHELL_ENV_COLUMNS HOL_LOG_ENV_TABLE(HOL_COL_NAME, ",")
 /* A field's bound once escaped: above a recording's whole meta text (16
  * values of 200 bytes, each escaped to at most 800: HOL_REC_META_TEXT), so
  * that valid --meta always has its row (issue 39). */

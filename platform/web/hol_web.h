@@ -64,7 +64,8 @@ typedef struct hol_web {
     /* read-back check of both eyes at one XR frame (make web-test) */
     long check_frame;        /* -1: none */
     uint8_t *check_px[4]; /* the check frame's eyes: 0, 1 without the HUD;
-                             2, 3 as shown (with the UI panel) */
+                             2, 3 with the UI panel (neither with the
+                             body: holonomy render draws none) */
     int check_w[4], check_h[4];
     hol_camera check_cam[2];
     hol_room check_user[2];
@@ -77,6 +78,8 @@ int hol_web_game_open(char *msg, size_t cap);
 /* 0 go on, 1 over, -1 failure (reported). */
 int hol_web_game_step(const hol_input *in);
 hol_app *hol_web_game_app(void);
+/* the page's language (hol_lang, core/hol_str.h: config "lang") */
+int hol_web_game_lang(void);
 void hol_web_game_finish(void);
 /* the session's metadata (id, participant), NULL before it opened */
 const struct hol_rec_meta *hol_web_game_meta(void);

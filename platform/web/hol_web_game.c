@@ -15,7 +15,9 @@
 #include "../../core/hol_campaign.h"
 #include "../../core/hol_session.h"
 #include "../../core/hol_sha256.h"
+#include "../../core/hol_str.h"
 #include "../../core/hol_study.h"
+#include "../shell/hol_shell_prov.h"
 #include "hol_web.h"
 #include "hol_web_sink.h"
 
@@ -23,11 +25,13 @@ extern void hol_web_js_config(const char *key, char *buf, int cap);
 extern void hol_web_js_event(const char *kind, const char *text);
 
 static hol_session *sess;
+static int lang; /* hol_lang: the page's (config "lang") */
 static hol_rec_meta meta; /* the session's (environment.csv) */
 static hol_level levels[HOL_SESSION_MAX_LEVELS];
 static char study_name[64]; /* a study's, or "" */
 static const char *study_text;             /* its text as the page fetched it */
 static char study_hex[HOL_SHA256_HEX];     /* its SHA-256, or "" */
+static char order_rows[64 * 1024];         /* order.csv's (hol_shell_order_rows), or "" */
 static int finished;
 
 /* decimal or 0x hex, nothing else (as the desktop's --seed) */
@@ -124,6 +128,8 @@ static int study_levels(const char *text, const char *part, int *n, char out_nam
         }
     }
     snprintf(out_name, 64, "%s", st.name);
+    if (hol_shell_order_rows(&st, part, lv, levels, *n, order_rows, sizeof order_rows))
+        printf("web: the study's order does not fit order.csv's buffer: not written\n");
     printf("web: study %s, participant %s (number %llu):", st.name, part, (unsigned long long)p);
     for (int k = 0; k < st.nconditions; k++)
         printf(" %s", st.conditions[order[k]].name);
@@ -267,6 +273,11 @@ static int page_track_hz(char *msg, size_t cap)
     return hz;
 }
 
+int hol_web_game_lang(void)
+{
+    return lang;
+}
+
 int hol_web_game_open(char *msg, size_t cap)
 {
     int n = 0;
@@ -278,8 +289,12 @@ int hol_web_game_open(char *msg, size_t cap)
     char part[HOL_REC_ID_MAX + 8] = "";
     if (page_participant(part, msg, cap))
         return 1;
+    char tag[16];
+    hol_web_js_config("lang", tag, sizeof tag); /* page.js: ?lang=, else the browser's */
+    lang = hol_lang_parse(tag) < 0 ? HOL_LANG_EN : hol_lang_parse(tag);
     hol_session_desc d;
     memset(&d, 0, sizeof d);
+    d.app.lang = lang;
     d.levels = levels;
     d.nlevels = n;
     d.log = hol_web_sink();
@@ -299,6 +314,14 @@ int hol_web_game_open(char *msg, size_t cap)
     if (e)
         return 1;
     meta = d.meta;
+    /* provenance.csv, order.csv (the levels' texts final) and codebook.csv
+     * in the store, as the desktop's log folder has them */
+    static char order[sizeof order_rows + HOL_SESSION_MAX_LEVELS * HOL_SHA256_HEX];
+    const char *bad = hol_shell_order_hash(order_rows, levels, n, order, sizeof order)
+                          ? "order.csv"
+                          : hol_shell_prov_write(d.log, &d.meta, order);
+    if (bad)
+        printf("web: cannot write the log folder's %s\n", bad);
     printf("web: session %s, %d level(s), recording %s\n", d.meta.session, n, rec_name);
     if (hol_session_recovered(sess))
         printf("web: %d unfinished attempt(s) of an earlier visit finished (end 'killed')\n",

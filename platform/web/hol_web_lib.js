@@ -156,7 +156,8 @@ var HolWebLib = {
       if (HolXR.off) return HolXR.off;
       var names = ['frame', 'nviews', 'visibility', 'head_valid', 'head_pos', 'head_quat',
         'bounds', 'view', 'view_size', 'vp', 'proj', 'pos', 'quat', 'pad', 'pad_size',
-        'present', 'touch_layout', 'grip_valid', 'grip_pos', 'grip_quat', 'button', 'axes', 'hand'];
+        'present', 'touch_layout', 'grip_valid', 'grip_pos', 'grip_quat', 'button', 'axes', 'hand',
+        'joints_valid', 'joint'];
       var o = {};
       for (var i = 0; i < names.length; i++) o[names[i]] = Module['_hol_web_xr_offset'](i);
       HolXR.off = o;
@@ -304,6 +305,7 @@ var HolWebLib = {
         if (src.hand) {
           f[p + o.present] = 1;
           f[p + o.hand] = 1;
+          HolXR.joints(xrf, src.hand, f, p + o.joints_valid, p + o.joint);
         }
         var ev = HolXR.held && HolXR.held[src.handedness];
         if (ev && (ev[0] || ev[1])) {
@@ -320,6 +322,28 @@ var HolWebLib = {
         var ax = gp.axes || [];
         for (var k = 0; k < 4; k++) f[p + o.axes + k] = typeof ax[k] === 'number' ? ax[k] : 0;
       }
+    },
+
+    // A tracked hand's 25 joints (XRHand's order): x, y, z in the reference
+    // space and the radius each, and 1 at `valid` when every joint has a
+    // pose (drawn, and the hands-only recentre: hol_web_xr.h), read with
+    // fillPoses and fillJointRadii (the Hand Input module's; no object a
+    // joint); none where the browser lacks them.
+    joints: function (xrf, hand, f, valid, at) {
+      var sp = hand.holSpaces || (hand.holSpaces = Array.from(hand.values()));
+      var m = HolXR.jm || (HolXR.jm = new Float32Array(400)), r = HolXR.jr || (HolXR.jr = new Float32Array(25));
+      try {
+        if (sp.length !== 25 || !xrf.fillPoses(sp, HolXR.space, m) || !xrf.fillJointRadii(sp, r)) return;
+      } catch (e) {
+        return;
+      }
+      for (var i = 0; i < 25; i++) {
+        f[at + 4 * i] = m[16 * i + 12];
+        f[at + 4 * i + 1] = m[16 * i + 13];
+        f[at + 4 * i + 2] = m[16 * i + 14];
+        f[at + 4 * i + 3] = r[i];
+      }
+      f[valid] = 1;
     },
 
     // Bounded-floor: the polygon handed to the C side's fit (hol_web_xr_fit:

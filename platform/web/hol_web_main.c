@@ -16,6 +16,7 @@
 
 #include "../../render/hol_app_frame.h"
 #include "../../render/hol_gl.h"
+#include "../../core/hol_str.h"
 #include "hol_web.h"
 
 hol_web hol_web_g;
@@ -179,7 +180,10 @@ static void poll_gamepad(hol_web_pancake *p)
  * level, 7 the session is over, 8 failed, 9 head x, 10 head z, 11 cell
  * column, 12 cell row, 13 the level clock, 14 yaw, 15 the device the
  * prompts name (HOL_DEVICE_*), 16 the looping sound sources playing
- * (0 before the first gesture, with ?sound=0, or without WebAudio). */
+ * (0 before the first gesture, with ?sound=0, or without WebAudio), 17
+ * the tracked hands at the last XR frame (bits: 1, 2 the left's and the
+ * right's joints; 4, 8 their palms up and open: hol_web_xr.h), 18 the
+ * body parts drawn (controllers and hands: hol_app_view.body). */
 EMSCRIPTEN_KEEPALIVE double hol_web_state(int what)
 {
     hol_web *w = &hol_web_g;
@@ -192,6 +196,7 @@ EMSCRIPTEN_KEEPALIVE double hol_web_state(int what)
     case 7: return w->over;
     case 8: return w->failed;
     case 16: return hol_web_sound_active();
+    case 17: return w->xr.hands;
     default: break;
     }
     if (!v)
@@ -207,6 +212,7 @@ EMSCRIPTEN_KEEPALIVE double hol_web_state(int what)
     case 13: return v->hud.elapsed_s;
     case 14: return v->yaw_deg;
     case 15: return v->hud.device;
+    case 18: return (v->body.hand[0].kind != 0) + (v->body.hand[1].kind != 0);
     default: return -1;
     }
 }
@@ -270,18 +276,19 @@ static double boot_ms[4];
 static const char *pause_reason(const hol_input *in, const hol_app_view *v)
 {
     hol_web *w = &hol_web_g;
+    int l = hol_web_game_lang();
     if (!v->paused)
         return NULL;
     if (!(in->flags & HOL_INPUT_FOCUSED) || (in->flags & HOL_INPUT_HEADSET_OFF)) {
         if (!w->xr_active)
-            return "the window is not focused";
+            return hol_str(l, HOL_S_PAUSE_UNFOCUSED);
         return w->xf.visibility < 0.5f || (in->flags & HOL_INPUT_HEADSET_OFF)
-                   ? "the headset is off"
-                   : "a system menu is over the game";
+                   ? hol_str(l, HOL_S_PAUSE_HEADSET_OFF)
+                   : hol_str(l, HOL_S_PAUSE_SYSTEM_MENU);
     }
     if (in->flags & HOL_INPUT_DEVICE_LOST)
-        return "the game controller went away";
-    return "the menu is open";
+        return hol_str(l, HOL_S_PAUSE_PAD_GONE);
+    return hol_str(l, HOL_S_PAUSE_MENU);
 }
 
 /* The page's visibilitychange (XR): the next step tells its reason anew;

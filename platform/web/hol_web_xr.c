@@ -2,6 +2,7 @@
  * hol_web_xr.h). */
 #include "hol_web_xr.h"
 
+#include <math.h>
 #include <string.h>
 
 void hol_web_xr_camera(const hol_xr_calib *c, const hol_web_xr_view *v, hol_camera *out)
@@ -87,6 +88,26 @@ static void hand_pinches(hol_web_xr_state *st, hol_web_xr_pad pad[2], double t, 
     }
 }
 
+/* The glue's joints of each hand (reference space) into raw; none for a
+ * hand without all of them. */
+static void hand_joints(const hol_web_xr_frame *f, hol_hand_joints raw[2])
+{
+    memset(raw, 0, 2 * sizeof raw[0]);
+    for (int h = 0; h < 2; h++) {
+        const hol_web_xr_pad *p = &f->pad[h];
+        if (!(p->present > 0 && p->hand > 0 && p->joints_valid > 0))
+            continue;
+        int finite = 1;
+        for (int i = 0; i < HOL_HAND_JOINTS; i++) {
+            memcpy(raw[h].pos[i], p->joint[i], sizeof raw[h].pos[i]);
+            raw[h].radius[i] = p->joint[i][3] >= 0 && p->joint[i][3] < 1 ? p->joint[i][3] : 0;
+            for (int k = 0; k < 3; k++)
+                finite &= isfinite(p->joint[i][k]) && fabsf(p->joint[i][k]) < 1e4f;
+        }
+        raw[h].tracked = (uint32_t)finite; /* a hand the browser lost: none */
+    }
+}
+
 void hol_web_xr_input(hol_web_xr_state *st, const hol_web_xr_frame *f, double t,
                       hol_input *out)
 {
@@ -118,10 +139,19 @@ void hol_web_xr_input(hol_web_xr_state *st, const hol_web_xr_frame *f, double t,
         if (dev != HOL_DEVICE_WEBXR_TOUCH && pad[h].present > 0 && pad[h].hand > 0)
             dev = HOL_DEVICE_WEBXR_HAND;
     in.device = dev;
+    /* the hands-only recentre: palms up is the same in the reference space
+     * as in the room (the room only turns about the vertical) */
+    hol_hand_joints raw[2], none[2];
+    hand_joints(f, raw);
+    st->hands = 0;
+    for (int h = 0; h < 2; h++)
+        st->hands |= (raw[h].tracked ? 1 << h : 0) | (hol_gesture_palm_up(&raw[h], h) ? 4 << h : 0);
+    memset(none, 0, sizeof none);
+    uint32_t gesture = hol_gesture_step(&st->gesture, focused ? raw : none, in.time_s);
     uint32_t held = hol_web_xr_buttons(pad, NULL) | hand_held;
     if (focused) {
         in.buttons = held;
-        in.pressed = (held & ~st->prev_buttons) | hand_taps;
+        in.pressed = (held & ~st->prev_buttons) | hand_taps | gesture;
     }
     st->prev_buttons = held;
     if (f->head_valid > 0) {
@@ -135,6 +165,15 @@ void hol_web_xr_input(hol_web_xr_state *st, const hol_web_xr_frame *f, double t,
         if (p->present > 0 && p->grip_valid > 0) {
             hol_xr_to_room(&st->calib, p->grip_pos, p->grip_quat, &in.hand[h]);
             in.flags |= h ? HOL_INPUT_HAND_R_VALID : HOL_INPUT_HAND_L_VALID;
+        }
+        if (!raw[h].tracked)
+            continue;
+        in.joints[h] = raw[h]; /* into the room (after a recentre's placing) */
+        for (int i = 0; i < HOL_HAND_JOINTS; i++) {
+            static const float one[4] = {0, 0, 0, 1};
+            hol_pose j;
+            hol_xr_to_room(&st->calib, raw[h].pos[i], one, &j);
+            memcpy(in.joints[h].pos[i], j.pos, sizeof j.pos);
         }
     }
     *out = in;

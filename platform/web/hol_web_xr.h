@@ -43,6 +43,14 @@
  *   menu back quits: hands alone open the menu, resume, restart and
  *   quit). A pinch going on while the session is not focused counts
  *   neither then nor at its end. A hand's squeeze does nothing.
+ * - A tracked hand's joints (the glue fills `joint` from XRHand's 25
+ *   joint spaces, positions in the reference space and radii, and sets
+ *   joints_valid when every one has a pose) go to the record in room
+ *   coordinates (hol_input.joints: drawn, core/hol_body.h), and both
+ *   hands' make the hands-only recentre: both palms up and open, held
+ *   HOL_GESTURE_HOLD_S while focused (hol_gesture_step) press
+ *   HOL_BTN_RECENTRE, which places the room from the head as the
+ *   thumbstick's press does.
  * - hol_web_xr_input fills the frame's record: time, the headset's state
  *   (core/hol_input.h: HOL_INPUT_HEADSET; HOL_INPUT_FOCUSED while the
  *   session is `visible`, not `visible-blurred` or `hidden`;
@@ -62,6 +70,7 @@
 
 #include <stdint.h>
 
+#include "../../core/hol_body.h"
 #include "../../core/hol_input.h"
 #include "../../render/hol_view.h"
 #include "../shell/hol_xr_room.h"
@@ -87,6 +96,8 @@ typedef struct hol_web_xr_pad {
     float button[HOL_WEB_XR_BUTTONS];   /* 1 pressed, 0 not (or missing) */
     float axes[HOL_WEB_XR_AXES];
     float hand;                         /* 1: a tracked hand (XRInputSource.hand) */
+    float joints_valid;                 /* 1: joint below holds all 25 */
+    float joint[HOL_HAND_JOINTS][4];    /* x, y, z (reference space), radius */
 } hol_web_xr_pad;
 
 /* Everything the glue copies per XRFrame: floats only, so the page writes
@@ -112,6 +123,9 @@ typedef struct hol_web_xr_state {
      * begun unfocused: its end presses nothing) */
     int pinch_on[2], pinch_spent[2];
     double pinch_t0[2];
+    hol_gesture gesture;    /* the hands-only recentre (core/hol_body.h) */
+    int hands;              /* the last frame's hands (bits: 1, 2 joints of
+                               the left, right; 4, 8 their palms up, open) */
 } hol_web_xr_state;
 
 /* The room camera of one view (viewport size as the camera's size). */

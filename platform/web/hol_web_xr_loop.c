@@ -33,7 +33,7 @@ enum {
     HOL__OFF_VIEW_VP, HOL__OFF_VIEW_PROJ, HOL__OFF_VIEW_POS, HOL__OFF_VIEW_QUAT, HOL__OFF_PAD,
     HOL__OFF_PAD_FLOATS, HOL__OFF_PAD_PRESENT, HOL__OFF_PAD_TOUCH, HOL__OFF_PAD_GRIP_VALID,
     HOL__OFF_PAD_GRIP_POS, HOL__OFF_PAD_GRIP_QUAT, HOL__OFF_PAD_BUTTON, HOL__OFF_PAD_AXES,
-    HOL__OFF_PAD_HAND
+    HOL__OFF_PAD_HAND, HOL__OFF_PAD_JOINTS_VALID, HOL__OFF_PAD_JOINT
 };
 
 EMSCRIPTEN_KEEPALIVE int hol_web_xr_offset(int what)
@@ -63,6 +63,8 @@ EMSCRIPTEN_KEEPALIVE int hol_web_xr_offset(int what)
         F(offsetof(hol_web_xr_pad, button)),
         F(offsetof(hol_web_xr_pad, axes)),
         F(offsetof(hol_web_xr_pad, hand)),
+        F(offsetof(hol_web_xr_pad, joints_valid)),
+        F(offsetof(hol_web_xr_pad, joint)),
     };
 #undef F
     return what >= 0 && what < (int)(sizeof off / sizeof off[0]) ? off[what] : -1;
@@ -255,16 +257,19 @@ static void xr_render(const hol_app_view *v, const hol_input *in, int fb)
         }
         if (checking) {
             /* the check compares the world with `holonomy render` (no
-             * HUD): it reads back a draw without the UI panel, then the
-             * eye is drawn again as shown */
-            hol_frame_desc bare = fd;
+             * HUD, no body: it draws none): it reads back a draw without
+             * the UI panel, then one with it (the panel's pixels differ),
+             * then the eye is drawn again as shown */
+            hol_frame_desc bare = fd, shown = fd;
             bare.flags |= HOL_RENDER_NO_HUD;
+            bare.body = shown.body = NULL;
             hol_render_frame(w->rnd, &bare, NULL);
             w->check_user[e] = fd.user;
             w->check_cam[e] = fd.cam;
             check_eye(e, &bare);
+            hol_render_frame(w->rnd, &shown, NULL);
+            check_read(2 + e, &shown);
             hol_render_frame(w->rnd, &fd, NULL);
-            check_read(2 + e, &fd); /* as shown: the panel's pixels differ */
             printf("web: check panel eye %d frame %ld pos %.9g,%.9g,%.9g orient "
                    "%.9g,%.9g,%.9g,%.9g px %.9g map %d\n",
                    e, w->xr_frames, fd.panel_pos[0], fd.panel_pos[1], fd.panel_pos[2],
@@ -298,9 +303,10 @@ EMSCRIPTEN_KEEPALIVE void hol_web_xr_fit(int n)
     }
     w->have_fit = 1;
     w->fit_t = w->last_t;
-    char line[200], offer[64];
+    char line[256], offer[64];
     hol_fit_text(&w->fit, -1, line, sizeof line);
     printf("web: %s\n", line);
+    hol_fit_say(&w->fit, -1, hol_web_game_lang(), line, sizeof line); /* the page's status */
     const hol_app_view *v = hol_app_get_view(hol_web_game_app());
     double m = v->cell_m > 0 ? v->cell_m : 1.0;
     int same = hol_room_cols(&v->user) == w->fit.cols && hol_room_rows(&v->user) == w->fit.rows &&

@@ -13,7 +13,9 @@
 // Left/Right keys), tiling=4,Q room=CxR cell=M (every level's geometry, as
 // play's --tiling/--room/--cell), haptics=0 (no controller pulses in VR, as
 // holonomy xr --no-haptics), track_hz=N (the logs' track rows N times a
-// second, 10..90, as --track-hz), seated=1 (seated play, as play --seated:
+// second, 10..90, as --track-hz), lang=en|de|nl (the language of the page
+// and the game's text, as --lang; without it the browser's language when
+// it is one of them, else English), seated=1 (seated play, as play --seated:
 // one room step a push of W/S/A/D, the touch stick or the on-screen arrows;
 // the bar's Seated box sets it), quiz=pre|post (a class's pre-test or
 // post-test: docs/teaching.md). None: the default campaign. A level file
@@ -28,12 +30,31 @@
     if (params.has(k)) config[k] = params.get(k);
   });
   var $ = function (id) { return document.getElementById(id); };
+  // ---- the language: the page's words from text.js (core/hol_str.c's
+  // table, made by tests/gen_page_text.c in the build's languages), the
+  // game's from the same table in the wasm (config.lang) ----
+  var TEXT = window.holonomyText || {};
+  var langOf = function (tag) { // "de", "de-DE", "de_AT" -> "de"; else ""
+    tag = String(tag || '');
+    var c = tag.slice(0, 2).toLowerCase();
+    return TEXT[c] && (tag.length === 2 || /^..[-_]/.test(tag)) ? c : '';
+  };
+  var lang = langOf(params.get('lang')) ||
+    (navigator.languages || [navigator.language]).map(langOf).filter(Boolean)[0] || 'en';
+  config.lang = lang;
+  document.documentElement.lang = lang;
+  var T = function (key, arg) {
+    var s = (TEXT[lang] || {})[key] || (TEXT.en || {})[key] || key;
+    return arg === undefined ? s : s.replace('%s', function () { return arg; });
+  };
+  document.querySelectorAll('[data-t]').forEach(function (e) { e.textContent = T(e.dataset.t); });
+  document.querySelectorAll('[data-title]').forEach(function (e) { e.title = T(e.dataset.title); });
   var status = function (s) { $('status').textContent = s; };
   // the page's state: playing (in VR or not), paused (and why), over
   // (vrFailed: the status says why Enter VR failed, until the game's next
   // level or restart, when it says Playing again)
-  var playing = 'Playing', inVR = false, over = false, vrFailed = false;
-  var resumeStatus = function () { vrFailed = false; status(inVR ? 'In VR' : playing); };
+  var playing = T('playing'), inVR = false, over = false, vrFailed = false;
+  var resumeStatus = function () { vrFailed = false; status(inVR ? T('inVR') : playing); };
 
   // ---- the VR button: Enter VR, Exit VR, or why VR is not offered ----
   function vrButton(text, enabled, why) {
@@ -45,20 +66,19 @@
   }
   function vrAvailability() {
     if (over) { $('vr').hidden = true; return; }
-    if (inVR) { vrButton('Exit VR', true); return; }
+    if (inVR) { vrButton(T('vrExit'), true); return; }
     if (!window.isSecureContext) {
-      vrButton('VR needs https:// or localhost', false,
-        'WebXR runs only on a secure page: open it with https://, or from localhost (docs/web.md)');
+      vrButton(T('vrHttps'), false, T('vrHttpsWhy'));
       return;
     }
     if (!navigator.xr) {
-      vrButton('No VR in this browser', false, 'this browser has no WebXR');
+      vrButton(T('vrNone'), false, T('vrNoneWhy'));
       return;
     }
     Module.holXR.supported().then(function (ok) {
       if (over || inVR) return;
-      if (ok) vrButton('Enter VR', true);
-      else vrButton('No VR headset found', false, 'connect a headset (or open the page in its browser) and reload');
+      if (ok) vrButton(T('vrEnter'), true);
+      else vrButton(T('vrNoHeadset'), false, T('vrNoHeadsetWhy'));
     });
   }
 
@@ -112,12 +132,12 @@
     var names = store.names().sort();
     var list = $('loglist');
     list.textContent = '';
-    if (!names.length) { list.textContent = 'No logs yet.'; return; }
+    if (!names.length) { list.textContent = T('noLogs'); return; }
     var ul = document.createElement('ul');
     names.forEach(function (n) {
       var li = document.createElement('li');
       var a = document.createElement('a');
-      a.textContent = n + ' (' + store.size(n) + ' bytes)';
+      a.textContent = n + ' (' + store.size(n) + ' ' + T('bytes') + ')';
       a.href = '#';
       a.addEventListener('click', function (e) {
         e.preventDefault();
@@ -134,7 +154,7 @@
       ul.appendChild(li);
     });
     list.appendChild(ul);
-    $('logsbtn').textContent = 'Logs (' + names.length + ')';
+    $('logsbtn').textContent = T('logs') + ' (' + names.length + ')';
   }
   window.holonomyRefreshLogs = refreshLogs;
   // the overlay opens below the bar, which wraps on a narrow window: it
@@ -152,7 +172,7 @@
     $('logs').hidden = !$('logs').hidden;
   });
   $('clear').addEventListener('click', function () {
-    if (window.holonomyStore && confirm('Delete every log and recording kept in this browser?')) {
+    if (window.holonomyStore && confirm(T('clearAsk'))) {
       window.holonomyStore.clear();
       refreshLogs();
     }
@@ -162,7 +182,7 @@
   // opening, and holonomy.js instantiates the compiled module (a server
   // without application/wasm: compiled from the bytes instead) ----
   var fail = function (what, e) {
-    status('Failed: ' + what + ': ' + e);
+    status(T('failed', what + ': ' + e));
     console.error('holonomy: ' + what + ': ' + e);
   };
   var wasm = (WebAssembly.compileStreaming ? WebAssembly.compileStreaming(fetch('holonomy.wasm'))
@@ -173,14 +193,14 @@
     }).then(function (b) { return WebAssembly.compile(b); });
   });
   wasm.then(function () { performance.mark('holonomy-wasm'); }, function (e) {
-    fail('cannot load the game', e);
+    fail(T('noGame'), e);
   });
 
   // ---- the module ----
   window.Module = {
     instantiateWasm: function (imports, done) {
       wasm.then(function (m) { return WebAssembly.instantiate(m, imports); })
-        .then(function (i) { done(i); }, function (e) { fail('cannot start the game', e); });
+        .then(function (i) { done(i); }, function (e) { fail(T('noStart'), e); });
       return {};
     },
     canvas: canvas,
@@ -189,14 +209,14 @@
     printErr: function (s) { console.warn(s); },
     holEvent: function (kind, text) {
       if (kind === 'ready') {
-        playing = config.levelName ? 'Playing ' + config.levelName : 'Playing';
+        playing = config.levelName ? T('playingLevel', config.levelName) : T('playing');
         status(playing);
         canvas.focus();
         vrAvailability();
         if (navigator.xr && navigator.xr.addEventListener)
           navigator.xr.addEventListener('devicechange', vrAvailability);
       } else if (kind === 'pause') {
-        if (!over) status('Paused: ' + text);
+        if (!over) status(T('paused', text));
       } else if (kind === 'resume') {
         if (!over) resumeStatus();
       } else if (kind === 'fit') {
@@ -213,7 +233,7 @@
         vrAvailability();
       } else if (kind === 'over') {
         over = true;
-        status('Session over: the logs are kept in this browser (Logs).');
+        status(T('over'));
         vrAvailability();
         $('again').hidden = false;
         refreshLogs();
@@ -222,13 +242,13 @@
       } else if (kind === 'failed') {
         over = true;
         vrAvailability();
-        status('Failed: ' + text);
+        status(T('failed', text));
         console.error('holonomy: ' + text);
       } else if (kind === 'saved') {
         refreshLogs();
         if (vrFailed && !over) resumeStatus(); // a level ended: a restart or the next
       } else if (kind === 'warning') {
-        status('Warning: ' + text);
+        status(T('warning', text));
         console.warn('holonomy: ' + text);
       }
     }
@@ -250,7 +270,7 @@
   $('vr').addEventListener('click', function () {
     if (inVR) { Module.holXR.leave(); return; }
     Module.holXR.enter().catch(function (e) {
-      status('VR failed: ' + e.message);
+      status(T('vrFailed', e.message));
       vrFailed = true;
     });
   });
@@ -316,7 +336,7 @@
   var saved = params.has('levelfile') && sessionStorage.getItem('holonomy-level');
   if (params.has('study')) {
     loadStudy(params.get('study')).then(start).catch(function (e) {
-      status('Cannot load the study: ' + e.message);
+      status(T('noStudy', e.message));
       console.error('holonomy: cannot load the study ' + e.message);
     });
   } else if (saved) {
@@ -342,7 +362,7 @@
       config.levelName = levelName(url.split('/').pop());
       start();
     }).catch(function (e) {
-      status('Cannot load the level: ' + e.message);
+      status(T('noLevel', e.message));
       console.error('holonomy: cannot load the level ' + e.message);
     });
   } else {

@@ -1,6 +1,7 @@
 /* report_class.c - `holonomy report --class DIR --out OUT`: a class's
  * results (issue 37; docs/teaching.md "A class's results") from the pupils'
- * answer files in DIR: each a file NAME.csv with answers.csv's header (the
+ * answer files in DIR: each a file NAME.csv with answers.csv's header (with
+ * or without the answer timestamps' two columns; the
  * web page's download), or a folder NAME holding answers.csv (a pupil's log
  * folder on the desktop). The pre-test's and post-test's items
  * (core/hol_quiz.h, questionnaires pretest and posttest) are judged by the
@@ -36,7 +37,7 @@
 #define RC_ITEMS 64
 #define RC_WRONG 1024
 #define RC_TEXT 96
-#define RC_FIELDS 9
+#define RC_FIELDS 11 /* with the answer timestamps (shown_ms, answered_ms); 9 before */
 #define RC_PHASES 3 /* pretest, posttest, predict (the lessons) */
 #define RC_K 6      /* items of a phase: HOL_QUIZ_ITEMS, HOL_LESSONS */
 #define RC_TILINGS 256 /* a pupil's attempts whose tiling is known */
@@ -83,6 +84,7 @@ typedef struct rc_class {
 
 static const char *const rc_header = "session,participant,attempt,questionnaire,when,item,kind,"
                                      "value,time";
+static const char *const rc_header_ms = ",shown_ms,answered_ms"; /* the timestamps' */
 
 /* One CSV line (RFC 4180: quoted fields, "" a quote) into fields of buf. */
 static int rc_split(const char *s, char (*out)[RC_TEXT], int max)
@@ -229,20 +231,23 @@ static int rc_read(const char *cmd, rc_class *c, const char *path, const char *n
     }
     char line[2048], fld[RC_FIELDS][RC_TEXT], right[RC_TEXT], id[RC_TEXT];
     long ln = 0;
-    int st = 0, unknown = 0;
+    int st = 0, unknown = 0, nf = RC_FIELDS - 2;
+    size_t hl = strlen(rc_header);
     while (!st && fgets(line, sizeof line, f)) {
         ln++;
         line[strcspn(line, "\r\n")] = 0;
         if (ln == 1) {
-            if (strcmp(line, rc_header)) {
+            if (!strncmp(line, rc_header, hl) && !strcmp(line + hl, rc_header_ms))
+                nf = RC_FIELDS;
+            else if (strcmp(line, rc_header)) {
                 cli_error(cmd, 0, "'%.300s' is not an answers file (its header is not '%s')",
                           path, rc_header);
                 st = CLI_EXIT_USAGE;
             }
             continue;
         }
-        if (rc_split(line, fld, RC_FIELDS) != RC_FIELDS) {
-            cli_error(cmd, ln, "'%.300s': not %d fields", path, RC_FIELDS);
+        if (rc_split(line, fld, RC_FIELDS) != nf) {
+            cli_error(cmd, ln, "'%.300s': not %d fields", path, nf);
             st = CLI_EXIT_USAGE;
             break;
         }

@@ -5,7 +5,7 @@
 #include <string.h>
 
 #include "../../../core/hol_text.h"
-#include "../build_info.h"
+#include "../../shell/hol_shell_build.h"
 #include "../cli.h"
 #include "../codebook.h"
 #include "report.h"
@@ -221,7 +221,7 @@ static int index_html(FILE *f, const report_run *r, const void *ctx)
     fprintf(f, "<footer><p>Made by holonomy %s (commit %s, built %s): <a href=\"build.csv\">"
                "build.csv</a>; every column of these files: <a href=\"codebook.csv\">"
                "codebook.csv</a>.</p></footer>\n</body>\n</html>\n",
-            build_version(), build_commit(), build_date());
+            hol_shell_build_version(), hol_shell_build_commit(), hol_shell_build_date());
     return 0;
 }
 
@@ -234,8 +234,8 @@ static int build_csv(FILE *f, const report_run *r, const void *ctx)
 {
     (void)r;
     (void)ctx;
-    fprintf(f, "%s\nholonomy,%s,%s,%s\n", REPORT_BUILD_COLUMNS, build_version(), build_commit(),
-            build_date());
+    fprintf(f, "%s\nholonomy,%s,%s,%s\n", REPORT_BUILD_COLUMNS, hol_shell_build_version(),
+            hol_shell_build_commit(), hol_shell_build_date());
     return 0;
 }
 

@@ -4,7 +4,7 @@
 # "unknown") and HOL_BUILD_DATE (ISO 8601 UTC: SOURCE_DATE_EPOCH when set,
 # else the commit's date, else "unknown"; never the clock, so that a build
 # is reproducible). OUT is rewritten only when its text changes, so the one
-# file that includes it (platform/cli/build_info.c) is recompiled only then.
+# file that includes it (platform/shell/hol_shell_build.c) is recompiled only then.
 set -eu
 out=$1
 commit=unknown
@@ -21,6 +21,6 @@ fi
 commit=$(printf '%s' "$commit" | tr -c 'A-Za-z0-9._+:-' '_')
 mkdir -p "$(dirname "$out")"
 tmp=$out.tmp.$$
-printf '/* made by platform/cli/build_id.sh: do not edit */\n#define HOL_BUILD_COMMIT "%s"\n#define HOL_BUILD_DATE "%s"\n' \
+printf '/* made by platform/shell/build_id.sh: do not edit */\n#define HOL_BUILD_COMMIT "%s"\n#define HOL_BUILD_DATE "%s"\n' \
     "$commit" "$date" >"$tmp"
 if cmp -s "$tmp" "$out"; then rm -f "$tmp"; else mv "$tmp" "$out"; fi

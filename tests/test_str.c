@@ -1,0 +1,179 @@
+/* test_str.c - core/hol_str.h, the string table: every language complete,
+ * every string drawn without the missing-glyph box (core/hol_face.h), the
+ * printf formats' conversions the same in every language, every text
+ * fitting its buffer with its numbers at their widest, and the language
+ * tags a command line or a browser gives.
+ */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "../core/hol_face.h"
+#include "../core/hol_input.h"
+#include "../core/hol_prompt.h"
+#include "../core/hol_str.h"
+
+static void test_complete_and_drawn(void **state)
+{
+    (void)state;
+    for (int l = 0; l < HOL_LANG_COUNT; l++)
+        for (int id = 0; id < HOL_S_COUNT; id++) {
+            const char *s = hol_str(l, (hol_str_id)id);
+            if (!s[0])
+                fail_msg("%s: string %d is missing", hol_lang_code(l), id);
+            int missing = 0;
+            if (id < HOL_S_PAGE_FIRST) /* the page's are the browser's to draw */
+                hol_face_units(s, strlen(s), &missing);
+            if (missing)
+                fail_msg("%s: '%s' draws %d missing-glyph boxes", hol_lang_code(l), s, missing);
+        }
+    int boxes = 0; /* the check sees a box: the euro sign is not Latin-1 */
+    hol_face_units("\xe2\x82\xac", 3, &boxes);
+    assert_int_equal(boxes, 1);
+    assert_string_equal(hol_str(-1, HOL_S_PAUSED), "Paused");
+    assert_string_equal(hol_str(HOL_LANG_COUNT, HOL_S_PAUSED), "Paused");
+    assert_string_equal(hol_str(HOL_LANG_DE, HOL_S_COUNT), "");
+}
+
+/* The conversions of a printf format, "%d%ld%02ld...", into out. */
+static void conversions(const char *f, char *out, size_t cap)
+{
+    size_t n = 0;
+    for (const char *p = strchr(f, '%'); p; p = strchr(p, '%')) {
+        size_t k = strspn(p + 1, "0123456789.-+ #lhz") + 2;
+        assert_true(n + k < cap);
+        memcpy(out + n, p, k);
+        n += k;
+        p += k;
+    }
+    out[n] = 0;
+}
+
+static void test_formats_match(void **state)
+{
+    (void)state;
+    for (int id = 0; id < HOL_S_COUNT; id++) {
+        char en[64], other[64];
+        conversions(hol_str(HOL_LANG_EN, (hol_str_id)id), en, sizeof en);
+        for (int l = 1; l < HOL_LANG_COUNT; l++) {
+            conversions(hol_str(l, (hol_str_id)id), other, sizeof other);
+            if (strcmp(en, other))
+                fail_msg("%s: string %d has '%s', English '%s'", hol_lang_code(l), id, other,
+                         en);
+        }
+    }
+}
+
+/* Each text with its numbers at their widest as the app gives them
+ * (steps and best up to 999, a clock up to 99:59, 5 keys, a 40-character
+ * address, a 3 x 3.75 room, 8 beacons) fits its buffer. */
+static void test_fits(void **state)
+{
+    (void)state;
+    const char *addr = "LRLRLRLRLRLRLRLRLRLRLRLRLRLRLRLRLRLRLRLR";
+    for (int l = 0; l < HOL_LANG_COUNT; l++)
+        for (int id = 0; id < HOL_S_COUNT; id++) {
+            const char *f = hol_str(l, (hol_str_id)id);
+            char buf[256], conv[64];
+            if (id >= HOL_S_PAGE_FIRST)
+                continue; /* the page's: no buffer (the browser draws them) */
+            conversions(f, conv, sizeof conv);
+            int n;
+            if (!strcmp(conv, "%d%d%ld%02ld"))
+                n = snprintf(buf, sizeof buf, f, 999, 999, 99L, 59L);
+            else if (!strcmp(conv, "%d%ld%02ld"))
+                n = snprintf(buf, sizeof buf, f, 999, 99L, 59L);
+            else if (!strcmp(conv, "%ld%02ld%ld%02ld"))
+                n = snprintf(buf, sizeof buf, f, 99L, 59L, 99L, 59L);
+            else if (!strcmp(conv, "%ld%02ld"))
+                n = snprintf(buf, sizeof buf, f, 99L, 59L);
+            else if (!strcmp(conv, "%d%d%d"))
+                n = snprintf(buf, sizeof buf, f, 4, 4, 3);
+            else if (!strcmp(conv, "%d%d"))
+                n = snprintf(buf, sizeof buf, f, 5, 5);
+            else if (!strcmp(conv, "%d"))
+                n = snprintf(buf, sizeof buf, f, id == HOL_S_STEPS_FMT ? 999 : 8);
+            else if (!strcmp(conv, "%.40s"))
+                n = snprintf(buf, sizeof buf, f, addr);
+            else if (!strcmp(conv, "%.12s"))
+                n = snprintf(buf, sizeof buf, f, "3 x 3.75");
+            else {
+                assert_string_equal(conv, "");
+                n = (int)strlen(f);
+            }
+            if (n >= hol_str_cap((hol_str_id)id))
+                fail_msg("%s: '%s' takes %d bytes of %d", hol_lang_code(l), buf, n + 1,
+                         hol_str_cap((hol_str_id)id));
+        }
+}
+
+/* The prompts as core/hol_app_view.c composes them ("BUTTON: WHAT, ..."),
+ * for every device and language: the pause menu's three pairs, the end
+ * screen's and a screen's two, each whole within the prompt's line
+ * (HOL_APP_HINT_MAX: a pair that does not fit would be left out). */
+static void test_prompts_fit(void **state)
+{
+    (void)state;
+    static const struct {
+        uint32_t btn, alt;
+        hol_str_id what;
+    } sets[4][3] = {{{HOL_BTN_MENU, 0, HOL_S_DO_RESUME},
+                     {HOL_BTN_CONFIRM, 0, HOL_S_DO_RESTART},
+                     {HOL_BTN_QUIT, HOL_BTN_BACK, HOL_S_DO_QUIT}},
+                    {{HOL_BTN_CONFIRM, 0, HOL_S_DO_NEXT_LEVEL}, {HOL_BTN_RESTART, 0, HOL_S_DO_AGAIN}},
+                    {{HOL_BTN_CONFIRM, 0, HOL_S_DO_FINISH}, {HOL_BTN_RESTART, 0, HOL_S_DO_AGAIN}},
+                    {{HOL_BTN_CONFIRM, 0, HOL_S_DO_BEGIN}, {HOL_BTN_QUIT, 0, HOL_S_DO_QUIT}}};
+    for (int l = 0; l < HOL_LANG_COUNT; l++)
+        for (uint32_t d = 1; d < HOL_DEVICE_COUNT; d++)
+            for (int s = 0; s < 4; s++) {
+                char buf[256] = "";
+                for (int i = 0; i < 3 && sets[s][i].btn; i++) {
+                    const char *b = hol_prompt_button(d, sets[s][i].btn);
+                    if (!b && sets[s][i].alt)
+                        b = hol_prompt_button(d, sets[s][i].alt);
+                    size_t n = strlen(buf);
+                    if (b)
+                        snprintf(buf + n, sizeof buf - n, "%s%s: %s", n ? ", " : "", b,
+                                 hol_str(l, sets[s][i].what));
+                }
+                if (strlen(buf) >= 60)
+                    fail_msg("%s: device %u: '%s' is over the prompt's 59 bytes", hol_lang_code(l),
+                             d, buf);
+            }
+}
+
+static void test_tags(void **state)
+{
+    (void)state;
+    assert_int_equal(hol_lang_parse("en"), HOL_LANG_EN);
+    assert_int_equal(hol_lang_parse("de"), HOL_LANG_DE);
+    assert_int_equal(hol_lang_parse("nl"), HOL_LANG_NL);
+    assert_int_equal(hol_lang_parse("de-DE"), HOL_LANG_DE);
+    assert_int_equal(hol_lang_parse("DE_at"), HOL_LANG_DE);
+    assert_int_equal(hol_lang_parse("en-GB"), HOL_LANG_EN);
+    assert_int_equal(hol_lang_parse("nl-BE"), HOL_LANG_NL);
+    assert_int_equal(hol_lang_parse("fr"), -1);
+    assert_int_equal(hol_lang_parse("d"), -1);
+    assert_int_equal(hol_lang_parse(""), -1);
+    assert_int_equal(hol_lang_parse("deu"), -1);
+    assert_int_equal(hol_lang_parse(NULL), -1);
+    assert_string_equal(hol_lang_code(HOL_LANG_DE), "de");
+    assert_string_equal(hol_lang_code(99), "en");
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_complete_and_drawn),
+        cmocka_unit_test(test_formats_match),
+        cmocka_unit_test(test_fits),
+        cmocka_unit_test(test_prompts_fit),
+        cmocka_unit_test(test_tags),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
