@@ -449,6 +449,27 @@ typedef struct hol_app_object {
     int kind;                /* hol_app_object_kind */
 } hol_app_object;
 
+/* Outside the room (a tracked head beyond the hedges; core/hol_app.h's
+ * view.outside): the way back in. Core decides, the platform draws
+ * (render/hol_render_types.h, hol_frame_desc.outside): the view from the
+ * room's edge (the view's head and eyes, which the motion keeps
+ * HOL_MOTION's margin inside the hedges), dimmed, the panel over it
+ * (readable), and an arrow on the floor pointing to the nearest cell. */
+#define HOL_APP_ARROW_AHEAD_M 1.8 /* the arrow's centre ahead of the head, on the floor
+                                    (40 degrees below eye level) */
+typedef struct hol_app_outside {
+    int on;               /* the tracked head is outside the room */
+    double dist_m;        /* its floor distance beyond the hedges */
+    int col, row;         /* the nearest cell (the view's head stands in it) */
+    double arrow[3];      /* the arrow's centre on the floor (y 0), room
+                             coordinates: HOL_APP_ARROW_AHEAD_M ahead of the
+                             view's head along its yaw (in view, drawn over
+                             all, even beyond a hedge) */
+    double arrow_yaw_deg; /* where it points: from the tracked head to the
+                             nearest cell's centre (SPEC 1's yaw: 0 north,
+                             towards -z; positive turns west) */
+} hol_app_outside;
+
 /* What every platform draws. */
 #define HOL_APP_SEAT_FADE_S 0.2 /* seated: a step's fade, seconds */
 
@@ -472,6 +493,7 @@ typedef struct hol_app_view {
                                          lazily following the head
                                          (core/hol_panel.h); drawn there
                                          only for a headset's eyes */
+    hol_app_outside outside;          /* the way back in (above) */
     hol_app_hud hud;
     int seated;                       /* 1: seated play (HOL_INPUT_SEATED) */
     double seat_fade;                 /* seated: the short fade of a step,
@@ -609,6 +631,11 @@ typedef struct hol_app_events {
                               from where it last walked, metres */
     int nlessons;          /* tutorial lessons done in this step */
     hol_app_lesson lessons[HOL_APP_TUTORIAL_STAGES];
+    int outside;           /* the tracked head left the room (view.outside;
+                              only from records with HOL_INPUT_WAY_BACK) */
+    double outside_m;      /* with outside: how far beyond the hedges */
+    int inside;            /* it came back in */
+    double inside_s;       /* with inside: the seconds it was outside */
 } hol_app_events;
 
 typedef struct hol_app hol_app;
@@ -671,6 +698,11 @@ const hol_app_view *hol_app_get_view(const hol_app *app);
  * Never NULL. */
 const char *hol_app_end_word(const hol_app_view *v);
 const hol_app_events *hol_app_get_events(const hol_app *app);
+/* The fewest room steps from the user to the objective in play (the
+ * flag, the keys and chest, the tutorial lesson's target) as the last step
+ * computed them (HOL_DIR_*), at most cap into out; returns how many (0:
+ * none known, or no objective). For scripted players and tests. */
+int hol_app_walk(const hol_app *app, uint8_t *out, int cap);
 /* The world the view shows (for the renderer's content). */
 struct hol_world *hol_app_world(hol_app *app);
 /* Captions of the sound on (1) or off (0, the default): a platform that

@@ -52,6 +52,8 @@ struct hol_app {
     int have_prev;
     hol_haptic_state haptic; /* the hands' contacts (core/hol_haptic.h) */
     int menu;
+    int out;             /* the head is outside the room (an event said so) */
+    double out_t;        /* the input time it left */
     int rebase;          /* a headset record did not walk: the next that
                             may re-bases the room (hol_input.h) */
     int pending_start;

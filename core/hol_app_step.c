@@ -200,6 +200,15 @@ const hol_app_events *hol_app_get_events(const hol_app *app)
     return &app->ev;
 }
 
+int hol_app_walk(const hol_app *app, uint8_t *out, int cap)
+{
+    if (!app || !app->have_level || app->done || app->nwalk <= 0 || cap <= 0)
+        return 0;
+    int n = app->nwalk < cap ? app->nwalk : cap;
+    memcpy(out, app->walk, (size_t)n);
+    return n;
+}
+
 hol_world *hol_app_world(hol_app *app)
 {
     return app->world;

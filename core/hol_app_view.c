@@ -478,6 +478,46 @@ static void hol__caption(hol_app *app, const hol_input *in)
         snprintf(h->lines[h->nlines++], HOL_APP_TEXT_MAX, "%s", h->caption);
 }
 
+/* Outside the room: the way back in (hol_app_outside), and its events
+ * (from records of platforms that show it: HOL_INPUT_WAY_BACK). */
+static void hol__fill_outside(hol_app *app, const hol_input *in)
+{
+    hol_app_view *v = &app->view;
+    hol_app_outside *o = &v->outside;
+    if (!in)
+        return;
+    double m = app->mo.d.cell_m, w = hol_room_cols(&v->user) * m, d = hol_room_rows(&v->user) * m;
+    const float *h = in->head.pos;
+    double ox = h[0] < 0 ? -h[0] : h[0] > w ? h[0] - w : 0;
+    double oz = h[2] < 0 ? -h[2] : h[2] > d ? h[2] - d : 0;
+    int on = (in->flags & HOL_INPUT_HEAD_VALID) && (ox > 0 || oz > 0);
+    memset(o, 0, sizeof *o);
+    if (on) {
+        o->on = 1;
+        o->dist_m = sqrt(ox * ox + oz * oz);
+        o->col = v->user.col;
+        o->row = v->user.row;
+        double cx = (o->col + 0.5) * m, cz = (o->row + 0.5) * m, y = v->yaw_deg * HOL__PI / 180;
+        double ax = v->head[0] - HOL_APP_ARROW_AHEAD_M * hol_sin(y);
+        double az = v->head[2] - HOL_APP_ARROW_AHEAD_M * hol_cos(y);
+        o->arrow[0] = ax; /* in view wherever it lies: drawn over all */
+        o->arrow[2] = az;
+        /* forward at yaw y is (-sin y, 0, -cos y) */
+        o->arrow_yaw_deg = hol_atan2(-(cx - h[0]), -(cz - h[2])) * 180 / HOL__PI;
+    }
+    if (!(in->flags & HOL_INPUT_WAY_BACK) || on == app->out)
+        return;
+    app->out = on;
+    if (on) {
+        app->ev.outside = 1;
+        app->ev.outside_m = o->dist_m;
+        app->out_t = in->time_s;
+    } else {
+        app->ev.inside = 1;
+        app->ev.inside_s = in->time_s - app->out_t;
+    }
+}
+
 void hol__fill_view(hol_app *app, const hol_input *in)
 {
     hol_app_view *v = &app->view;
@@ -486,6 +526,7 @@ void hol__fill_view(hol_app *app, const hol_input *in)
     double since = in && app->seat_stepped ? in->time_s - app->seat_step_t : HOL_APP_SEAT_FADE_S;
     v->seat_fade = v->seated && since < HOL_APP_SEAT_FADE_S ? 1 - since / HOL_APP_SEAT_FADE_S : 0;
     hol__fill_eyes(app, in);
+    hol__fill_outside(app, in);
     hol__fill_hud(app, in);
     hol__fill_map(app);
     hol__fill_lights(app);

@@ -137,22 +137,50 @@ float hol_face_width(const char *text, float size)
     return (float)((double)hol_face_units(text, len, NULL) * size / HOL_FACE_UNITS_PER_EM);
 }
 
+/* A space's rank as a break (the higher, the better) in a prompt of
+ * "KEY: action" pairs joined by ", " (hol_face_wrap_pairs): between pairs
+ * 3, inside an action 2, inside a key 1, between a key and its action or
+ * after a number (a number with its unit: "3 x 3 m") 0. Without pairs
+ * every space ranks 1. */
+static int hol__break_rank(const char *text, size_t at, size_t start, int pairs)
+{
+    if (!pairs)
+        return 1;
+    if (text[start - 1] == ',')
+        return 3;
+    char b = text[start - 1], a = text[start + 1];
+    int times = b == 'x' && start - 1 > at && text[start - 2] == ' ' && a >= '0' && a <= '9';
+    if (b == ':' || (b >= '0' && b <= '9') || times) /* "3 x 3 m" whole */
+        return 0;
+    for (size_t i = start; i > at; i--) { /* a ':' since the pair began */
+        if (text[i - 1] == ',')
+            return 1;
+        if (text[i - 1] == ':')
+            return 2;
+    }
+    return 1;
+}
+
 /* The end of the line that starts at `at` (no leading blank): out_end past
  * its last byte to draw (trailing blanks included), out_next where the next
- * line's search starts. */
-static void hol__line_end(const char *text, size_t len, long max_units, size_t at, size_t *out_end,
-                          size_t *out_next)
+ * line's search starts. The break: the last space of the best rank. */
+static void hol__line_end(const char *text, size_t len, long max_units, size_t at, int pairs,
+                          size_t *out_end, size_t *out_next)
 {
     long units = 0;
-    int prev = -1;
+    int prev = -1, rank = -1;
     size_t pos = at, brk = 0;
     while (pos < len && text[pos] != '\n') {
         size_t start = pos;
         int g = hol_face_index(hol_face_decode(text, len, &pos));
         long w = hol__face_glyphs[g].advance + hol_face_kerning(prev, g);
         if (text[start] == ' ') {
-            if (start > at && text[start - 1] != ' ')
+            int r = start > at && text[start - 1] != ' ' ? hol__break_rank(text, at, start, pairs)
+                                                         : -1;
+            if (r >= 0 && r >= rank) {
                 brk = start;
+                rank = r;
+            }
         } else if (units + w > max_units && start > at) {
             *out_end = *out_next = brk ? brk : start;
             return;
@@ -164,7 +192,8 @@ static void hol__line_end(const char *text, size_t len, long max_units, size_t a
     *out_next = pos < len ? pos + 1 : pos;
 }
 
-int hol_face_wrap(const char *text, float size, float width, hol_face_line *out, int max)
+static int hol__wrap(const char *text, float size, float width, int pairs, hol_face_line *out,
+                     int max)
 {
     size_t len = 0;
     while (text[len])
@@ -177,7 +206,7 @@ int hol_face_wrap(const char *text, float size, float width, hol_face_line *out,
         at++;
     while (at < len) {
         size_t end, next;
-        hol__line_end(text, len, max_units, at, &end, &next);
+        hol__line_end(text, len, max_units, at, pairs, &end, &next);
         while (end > at && text[end - 1] == ' ')
             end--;
         if (out && n < max) {
@@ -190,4 +219,14 @@ int hol_face_wrap(const char *text, float size, float width, hol_face_line *out,
             at++;
     }
     return n;
+}
+
+int hol_face_wrap(const char *text, float size, float width, hol_face_line *out, int max)
+{
+    return hol__wrap(text, size, width, 0, out, max);
+}
+
+int hol_face_wrap_pairs(const char *text, float size, float width, hol_face_line *out, int max)
+{
+    return hol__wrap(text, size, width, 1, out, max);
 }

@@ -29,7 +29,8 @@
  * - Wrapping (hol_face_wrap) breaks at spaces: a line holds as many words
  *   as fit the width; the spaces at a break are dropped; a word wider than
  *   the width alone is split between code points (at least one per line);
- *   '\n' ends a line. Lines are byte ranges of the input.
+ *   '\n' ends a line. Lines are byte ranges of the input. A prompt's
+ *   pairs are kept whole where they fit (hol_face_wrap_pairs).
  */
 #ifndef HOL_FACE_H
 #define HOL_FACE_H
@@ -90,5 +91,13 @@ float hol_face_width(const char *text, float size);
 /* Wraps the NUL-terminated text to width at size; writes at most max lines
  * into out (out may be NULL); returns the number of lines it needs. */
 int hol_face_wrap(const char *text, float size, float width, hol_face_line *out, int max);
+/* The same for a prompt of "KEY: action" pairs joined by ", " (the
+ * panel's prompt line: "A: confirm, Y / MENU: menu"): a line breaks at the
+ * last space of the best kind that fits: between pairs, else inside an
+ * action, else inside a key, and only then between a key and its action
+ * or after a number (so "Y:" never ends a line while "menu" starts the
+ * next, nor "3 x 3" one while "m: mind the edges" starts the next, unless
+ * the pair alone is wider than the line). */
+int hol_face_wrap_pairs(const char *text, float size, float width, hol_face_line *out, int max);
 
 #endif

@@ -101,10 +101,16 @@
 #define HOL_INPUT_POS_EMULATED (1u << 10) /* the head's position is not
                                              tracked (emulated, or lost):
                                              its orientation is */
-#define HOL_INPUT_SEATED       (1u << 11) /* seated play: the head's position
+#define HOL_INPUT_WAY_BACK     (1u << 11) /* the platform shows the way back
+                                             in when the head is outside
+                                             the room (hol_app_view.outside):
+                                             the step logs `outside` and
+                                             `inside` events (recordings
+                                             made before it have none) */
+#define HOL_INPUT_SEATED       (1u << 12) /* seated play: the head's position
                                              walks nothing, the step buttons
                                              take one room step each (below) */
-#define HOL_INPUT_FLAGS_ALL    0xfffu
+#define HOL_INPUT_FLAGS_ALL    0x1fffu
 
 /* buttons (held) */
 #define HOL_BTN_CONFIRM  (1u << 0) /* confirm / next level */

@@ -93,10 +93,12 @@ static void hol__pose(hol_panel *p)
     double y = p->yaw_deg * HOL__PI / 180, a = HOL_PANEL_DROP_DEG * HOL__PI / 180;
     double sy = hol_sin(y), cy = hol_cos(y), ca = hol_cos(a), sa = hol_sin(a);
     double dist = HOL_PANEL_DISTANCE;
+    p->covered = 0;
     if (p->cols) {
         double h = (hol_panel_clear_depth(p, p->anchor, p->yaw_deg) - HOL_PANEL_CLEAR_M) / ca;
         dist = h < dist ? h : dist;
-        dist = dist > HOL_PANEL_NEAR_M ? dist : HOL_PANEL_NEAR_M;
+        p->covered = dist < HOL_PANEL_NEAR_M;
+        dist = p->covered ? HOL_PANEL_NEAR_M : dist;
     }
     p->dist = dist;
     p->scale = dist / HOL_PANEL_DISTANCE;

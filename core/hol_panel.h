@@ -34,8 +34,12 @@
  *   renderer's font pixel is scaled alike, render/hol_app_frame.c). Nearer
  *   than HOL_PANEL_NEAR_M + HOL_PANEL_CLEAR_M to a hedge or trunk (the
  *   motion keeps the head 0.15 m from a hedge; a trunk can be touched) the
- *   panel stays at HOL_PANEL_NEAR_M and may be covered. An anchor outside
- *   the room keeps HOL_PANEL_DISTANCE.
+ *   panel stays at HOL_PANEL_NEAR_M and may be covered: `covered` says so
+ *   (1 while the nearest hedge or trunk is nearer than that), and a
+ *   platform that composites the panel over the scene without depth (a
+ *   quad layer) draws it in the scene, depth-tested, for those frames
+ *   instead (platform/openxr/hol_xr_panel.c, platform/web). An anchor
+ *   outside the room keeps HOL_PANEL_DISTANCE.
  */
 #ifndef HOL_PANEL_H
 #define HOL_PANEL_H
@@ -63,6 +67,7 @@ typedef struct hol_panel {
     double cell_m;      /* a cell's side, metres */
     double dist;        /* its distance from the anchor, metres */
     double scale;       /* dist / HOL_PANEL_DISTANCE: its size's factor */
+    int covered;        /* 1: at HOL_PANEL_NEAR_M with scenery nearer still */
 } hol_panel;
 
 /* The room it stands in: cols x rows cells of cell_m metres, hedges on its

@@ -97,7 +97,10 @@
  *   row, appended durably as it happens, for each change of the minimap's
  *   place during play, `minimap`, each refused one, `minimap-fixed`, and
  *   each re-basing of the room into another cell, `relocated` (value the
- *   distance in metres, 3 decimals: hol_app_events.relocated);
+ *   distance in metres, 3 decimals: hol_app_events.relocated), and a
+ *   tracked head leaving the room, `outside` (value its distance beyond
+ *   the hedges), and coming back, `inside` (value the seconds it was
+ *   out), from records with HOL_INPUT_WAY_BACK;
  *   the header when the file is new; a folder holding it holds logs);
  *   points.csv HOL_SESSION_POINT_COLUMNS, answers.csv
  *   HOL_SESSION_ANSWER_COLUMNS and tutorial.csv HOL_SESSION_LESSON_COLUMNS

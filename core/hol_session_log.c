@@ -315,6 +315,11 @@ static void hol__events(hol_session *s, const hol_app_events *ev, const hol_app_
         snprintf(m, sizeof m, "%.3f", ev->relocated_m);
         hol__event_row(s, "relocated", m, v->hud.elapsed_s);
     }
+    if (ev->outside || ev->inside) {
+        char m[32];
+        snprintf(m, sizeof m, "%.3f", ev->outside ? ev->outside_m : ev->inside_s);
+        hol__event_row(s, ev->outside ? "outside" : "inside", m, v->hud.elapsed_s);
+    }
 }
 
 /* Creates name with its header when the file is new or empty (*known

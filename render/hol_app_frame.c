@@ -110,4 +110,9 @@ void hol_app_frame_panel(const hol_app_view *v, hol_frame_desc *out)
      * the same angular size (core/hol_panel.h) */
     double k = v->panel.scale;
     out->panel_px = k > 0 && k != 1 ? HOL_RENDER_PANEL_PX * k : 0;
+    if (v->outside.on) { /* the way back in (core/hol_app.h) */
+        out->outside = 1;
+        memcpy(out->outside_arrow, v->outside.arrow, sizeof out->outside_arrow);
+        out->outside_yaw_deg = v->outside.arrow_yaw_deg;
+    }
 }

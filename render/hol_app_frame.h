@@ -25,7 +25,10 @@
  *   the app step placed it (hol_app_view.panel, core/hol_panel.h), its
  *   font pixel scaled by the panel's scale (nearer: smaller alike). Every
  *   platform that draws for a headset (OpenXR, WebXR) calls it for each
- *   eye; desktop, pancake and replays keep the screen layout.
+ *   eye; desktop, pancake and replays keep the screen layout. Outside the
+ *   room (hol_app_view.outside) it also sets the frame's `outside` and its
+ *   floor arrow: the view dimmed, the panel over all, the arrow (the
+ *   platform draws the eyes from the room's edge: the view's head).
  */
 #ifndef HOL_APP_FRAME_H
 #define HOL_APP_FRAME_H

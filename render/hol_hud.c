@@ -593,7 +593,8 @@ static int hol__panel_lines(const hol_frame_desc *f, float k, char out[][96], ui
     float size = hol__panel_size(k);
     for (int i = 0; i < nl && n < max; i++) {
         hol_face_line fl[48];
-        int m = hol_face_wrap(lines[i], size, HOL_HUD_PANEL_W - 4, fl, max - n);
+        int m = (i == last ? hol_face_wrap_pairs : hol_face_wrap)(lines[i], size,
+                                                                  HOL_HUD_PANEL_W - 4, fl, max - n);
         m = m < max - n ? m : max - n;
         for (int j = 0; j < m; j++) {
             size_t len = fl[j].len < 95 ? fl[j].len : 95;

@@ -100,6 +100,36 @@ static hol_err hol__queue_leaves(hol_render *r, const hol_frame_desc *f)
     return HOL_OK;
 }
 
+/* The lit room's trees and hedges (render/hol_render_gpu.c's lamps
+ * program, lit per vertex): copies of the day mesh's ranges before and
+ * after its backdrop, cut by planes at these heights (metres) so that the
+ * light's change with height is followed: closer round the lanterns'
+ * height (HOL_LIGHT_HEIGHT_M, where the light peaks on an upright face),
+ * none where the crowns start (2.2 m: the light there is faint and
+ * smooth). room_lit: the copies' two index ranges [0, 1) and [2, 3)
+ * (the day's own ranges when the copies do not fit). Each cut adds triangles, which llvmpipe pays for in
+ * setup (docs/rendering.md#lighting). */
+static void hol__room_slices(hol_render *r)
+{
+    static const float ys[] = {0.65f, (float)HOL_LIGHT_HEIGHT_M, 1.95f};
+    hol_mesh *m = &r->scratch;
+    uint32_t day = m->ni, nv = m->nv;
+    if (m->overflow)
+        return;
+    r->room_lit[0] = day;
+    hol_mesh_slice_y(m, 0, r->room_back[0], ys, 3);
+    r->room_lit[1] = r->room_lit[2] = m->ni;
+    hol_mesh_slice_y(m, r->room_back[1], day, ys, 3);
+    r->room_lit[3] = m->ni;
+    if (m->overflow) { /* no room for the copies: the day's meshes, uncut */
+        m->overflow = 0;
+        m->ni = day;
+        m->nv = nv;
+        const uint32_t whole[4] = {0, r->room_back[0], r->room_back[1], day};
+        memcpy(r->room_lit, whole, sizeof whole);
+    }
+}
+
 /* Pass 1: the room's own meshes, resident while the user's state and the
  * world stay the same. */
 static hol_err hol__queue_room(hol_render *r, const hol_frame_desc *f, double cell_m)
@@ -109,22 +139,40 @@ static hol_err hol__queue_room(hol_render *r, const hol_frame_desc *f, double ce
     if (!r->room_valid || r->room_world != r->desc.world || r->room_cell != cell_m ||
         memcmp(&r->room_user, &f->user, sizeof f->user) || memcmp(r->room_tree, tree, sizeof tree)) {
         hol_mesh_clear(&r->scratch);
-        hol_scene_room(r->scene, &r->scratch, &f->user, r->desc.world, cell_m);
+        hol_scene_room(r->scene, &r->scratch, &f->user, r->desc.world, cell_m, r->room_back);
         if (tree[0])
             hol_scene_tree_mark(r->scene, &r->scratch, tree[1], tree[2], cell_m);
+        uint32_t day = r->scratch.ni;
+        hol__room_slices(r);
         memcpy(r->room_tree, tree, sizeof tree);
         if (r->scratch.overflow)
             return HOL_ENOMEM;
         hol__upload_scratch(r, 0, 0);
-        r->room_nidx = r->scratch.ni;
+        r->room_nidx = day;
         r->room_user = f->user;
         r->room_cell = cell_m;
         r->room_world = r->desc.world;
         r->room_valid = 1;
     }
-    hol__item *it = hol__queue_push(r, HOL__PASS_ROOM, 0, r->room_nidx);
-    if (it)
-        it->key = 1u << 24;
+    if (!f->lighting) { /* day: one draw */
+        hol__item *it = hol__queue_push(r, HOL__PASS_ROOM, 0, r->room_nidx);
+        if (it)
+            it->key = 1u << 24;
+        return HOL_OK;
+    }
+    /* dusk and night: the trees and hedges lantern-lit (their copies cut
+     * in bands), the backdrop and outer ground between them on the cheaper
+     * program, in the day's order */
+    const uint32_t cut[3][2] = {{r->room_lit[0], r->room_lit[1]},
+                                {r->room_back[0], r->room_back[1]},
+                                {r->room_lit[2], r->room_lit[3]}};
+    for (int k = 0; k < 3; k++) {
+        hol__item *it = hol__queue_push(r, HOL__PASS_ROOM, cut[k][0], cut[k][1] - cut[k][0]);
+        if (it) {
+            it->key = 1u << 24 | (uint32_t)k;
+            it->lamps = k != 1;
+        }
+    }
     return HOL_OK;
 }
 
@@ -180,6 +228,36 @@ static hol_err hol__queue_fade(hol_render *r, const hol_frame_desc *f)
         return HOL_ENOMEM;
     it->key = (uint32_t)HOL__PASS_FADE << 24;
     it->dyn = 1;
+    return HOL_OK;
+}
+
+/* Outside the room: a flat arrow on the floor (hol_frame_desc.outside),
+ * in the panel's pass (over all): a shaft and a head, in room metres. */
+static hol_err hol__queue_floor_arrow(hol_render *r, const hol_frame_desc *f)
+{
+    static const uint8_t rgb[3] = HOL_RENDER_ARROW_RGB;
+    /* along the arrow (a) and across it (c), from its centre */
+    static const float pts[7][2] = {{-0.5f, -0.09f}, {0.1f, -0.09f}, {0.1f, -0.25f},
+                                    {0.5f, 0},       {0.1f, 0.25f},  {0.1f, 0.09f},
+                                    {-0.5f, 0.09f}};
+    static const uint32_t tri[9] = {0, 1, 5, 0, 5, 6, 2, 3, 4};
+    int64_t b = hol_mesh_reserve(&r->dyn, 7, 9);
+    if (b < 0)
+        return HOL_ENOMEM;
+    uint32_t i0 = r->dyn.ni;
+    double y = f->outside_yaw_deg * 3.14159265358979323846 / 180, len = HOL_RENDER_ARROW_M;
+    double ax = -sin(y), az = -cos(y), cx = -az, cz = ax; /* forward, right */
+    for (int i = 0; i < 7; i++) {
+        hol_vertex *vx = &r->dyn.v[r->dyn.nv++];
+        memset(vx, 0, sizeof *vx);
+        vx->pos[0] = (float)(f->outside_arrow[0] + len * (pts[i][0] * ax + pts[i][1] * cx));
+        vx->pos[1] = (float)(f->outside_arrow[1] + 0.02);
+        vx->pos[2] = (float)(f->outside_arrow[2] + len * (pts[i][0] * az + pts[i][1] * cz));
+        memcpy(vx->rgba, rgb, 3); /* alpha 0: opaque, no glyph (HOL_MESH_GLYPH) */
+    }
+    for (int i = 0; i < 9; i++)
+        r->dyn.idx[r->dyn.ni++] = (uint32_t)b + tri[i];
+    hol__queue_push_dyn(r, HOL__PASS_PANEL, i0, 0, NULL);
     return HOL_OK;
 }
 
@@ -331,7 +409,10 @@ hol_err hol__build(hol_render *r, const hol_frame_desc *f)
         return err;
     if ((err = hol__queue_tiles(r, f, bare, m)))
         return err;
-    if (f->fade > 0 && !(f->flags & HOL_RENDER_IDS) && (err = hol__queue_fade(r, f)))
+    int ids = (f->flags & HOL_RENDER_IDS) != 0;
+    if ((f->fade > 0 || f->outside) && !ids && (err = hol__queue_fade(r, f)))
+        return err;
+    if (f->outside && !ids && (err = hol__queue_floor_arrow(r, f)))
         return err;
     if (!(f->flags & HOL_RENDER_NO_HUD)) {
         if (f->flags & (HOL_RENDER_MINIMAP | HOL_RENDER_PANEL))

@@ -211,7 +211,23 @@ typedef struct hol_frame_desc {
      * light, in every tile the same: never moved by a tile's transform.
      * Not with HOL_RENDER_BARE. */
     const hol_body *body;
+    /* Outside the room (core's hol_app_view.outside; a headset's eyes,
+     * which the platform draws from the room's edge): the view dimmed
+     * towards HOL_RENDER_OUTSIDE_RGB by at least HOL_RENDER_OUTSIDE_DIM
+     * (the fade pass; a larger `fade` wins), the panel over everything (no
+     * depth test: readable wherever it stands), and a flat arrow on the
+     * floor, HOL_RENDER_ARROW_M long, its centre at outside_arrow (room
+     * coordinates), pointing along outside_yaw_deg (SPEC 1's yaw), drawn
+     * over everything. 0: none. */
+    int outside;
+    double outside_arrow[3];
+    double outside_yaw_deg;
 } hol_frame_desc;
+
+#define HOL_RENDER_OUTSIDE_DIM 0.6
+#define HOL_RENDER_OUTSIDE_RGB {4, 8, 5}
+#define HOL_RENDER_ARROW_M 0.6
+#define HOL_RENDER_ARROW_RGB {255, 215, 60} /* the prompt's yellow */
 
 /* 4.3 mm: a capital (7 font pixels) 30 mm high, 1.15 degrees at 1.5 m */
 #define HOL_RENDER_PANEL_PX 0.0043

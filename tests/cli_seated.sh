@@ -45,9 +45,9 @@ for c in steps optimum; do
 done
 grep -q ",predict,before_level,lesson1,choice,No," "$T/s/answers.csv" && ok ||
     bad "seated answer: $(cat "$T/s/answers.csv")"
-# the record holds the seated flag (800) and the step buttons (100..800)
-grep -q ' f=808 ' "$T/s.rec" && grep -q ' p=100 ' "$T/s.rec" && grep -q ' p=800 ' "$T/s.rec" && ok ||
-    bad "seated recording: $(grep -c f=808 "$T/s.rec") seated records"
+# the record holds the seated flag (1000) and the step buttons (100..800)
+grep -q ' f=1008 ' "$T/s.rec" && grep -q ' p=100 ' "$T/s.rec" && grep -q ' p=800 ' "$T/s.rec" && ok ||
+    bad "seated recording: $(grep -c f=1008 "$T/s.rec") seated records"
 mkdir "$T/s-replay"
 run "replay seated" 0 "$H" replay "$T/s.rec" --log "$T/s-replay"
 logs_diff "$T/s" "$T/s-replay" >/dev/null && ok || bad "seated replay's logs differ"

@@ -192,6 +192,30 @@ static int play_walk(hol_app *app, const uint8_t *walk, int n, double *t)
     return -1;
 }
 
+/* hol_app_walk (a scripted player's next steps): following its first step
+ * each time, one room step at a time, completes a flag level in its
+ * optimum; none once done. */
+static void test_walk_to_the_objective(void **state)
+{
+    (void)state;
+    hol_app *app = make_app();
+    hol_app_level L = flag_level("Wrfl");
+    assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    double t = 0;
+    hol_input in = tracked_at(t, 1, 1);
+    assert_int_equal(hol_app_step(app, &in), HOL_OK);
+    uint8_t w[8];
+    int n0 = hol_app_walk(app, w, 8), steps = -1;
+    assert_true(n0 > 0);
+    for (int i = 0; i < 20 && steps < 0; i++) {
+        assert_int_equal(hol_app_walk(app, w, 1), 1);
+        steps = play_walk(app, w, 1, &t);
+    }
+    assert_int_equal(steps, hol_app_get_view(app)->hud.optimum);
+    assert_int_equal(hol_app_walk(app, w, 8), 0);
+    hol_app_destroy(app);
+}
+
 static void test_flag_optimum_and_detour(void **state)
 {
     (void)state;
@@ -866,6 +890,68 @@ static void test_steps_only_worn(void **state)
         } else {
             assert_false(hol_tile_eq(v->user.tile, was.tile));
         }
+        hol_app_destroy(app);
+    }
+}
+
+/* Outside the room (issue 36): a tracked head 0.5 m beyond the north
+ * hedge, looking north (away), of the middle column: the view says so
+ * (outside.on, 0.5 m, the nearest cell the middle north one, the view's
+ * head kept inside the hedges), the arrow on the floor ahead points
+ * from the head to that cell's centre (south, yaw 180); the `outside`
+ * event once with the distance, `inside` once back in with the seconds
+ * out. A record without HOL_INPUT_WAY_BACK (made before it) logs none. */
+static void test_outside_the_room(void **state)
+{
+    (void)state;
+    for (int gated = 0; gated < 2; gated++) {
+        hol_app *app = make_app();
+        hol_app_level L = flag_level("Wrfl");
+        assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+        const hol_app_view *v = hol_app_get_view(app);
+        const hol_app_events *ev = hol_app_get_events(app);
+        uint32_t way = gated ? 0 : HOL_INPUT_WAY_BACK;
+        int outs = 0, ins = 0;
+        double t = 0;
+        for (int i = 0; i <= 40; i++, t += 0.05) { /* z 1.5 to -0.5, 5 cm a frame */
+            hol_input in = worn_at(t, 1.5, 0);
+            in.head.pos[2] = (float)(1.5 - 0.05 * i);
+            in.flags |= way;
+            assert_int_equal(hol_app_step(app, &in), HOL_OK);
+            assert_int_equal(v->outside.on, in.head.pos[2] < 0);
+            outs += ev->outside;
+            if (ev->outside)
+                assert_true(ev->outside_m > 0 && ev->outside_m <= 0.05 + 1e-6);
+        }
+        assert_true(v->outside.on);
+        assert_true(fabs(v->outside.dist_m - 0.5) < 1e-6);
+        assert_int_equal(v->outside.col, 1);
+        assert_int_equal(v->outside.row, 0);
+        assert_true(v->head[2] >= 0.1); /* the view's head: inside the hedges */
+        assert_true(fabs(v->outside.arrow[2] - (v->head[2] - HOL_APP_ARROW_AHEAD_M)) < 1e-9 &&
+                    v->outside.arrow[1] == 0); /* ahead, north */
+        assert_true(fabs(fabs(v->outside.arrow_yaw_deg) - 180) < 1e-6);
+        /* turned east (yaw -90) 0.5 m west of the column: the arrow points
+         * south-east to (1.5, 0.5) */
+        hol_input in = tracked_pose(t, 1.0, -0.5, -90);
+        in.flags |= HOL_INPUT_HEADSET | way;
+        assert_int_equal(hol_app_step(app, &in), HOL_OK);
+        double want = atan2(-(1.5 - 1.0), -(0.5 + 0.5)) * 180 / M_PI;
+        assert_true(fabs(v->outside.arrow_yaw_deg - want) < 1e-6);
+        assert_true(fabs(v->outside.arrow[0] - v->head[0] - HOL_APP_ARROW_AHEAD_M) < 1e-9); /* east */
+        assert_false(ev->outside || ev->inside);
+        t += 0.05;
+        /* back in after 1 s out */
+        in = worn_at(t + 1, 1.5, 0);
+        in.head.pos[2] = 0.3f;
+        in.flags |= way;
+        assert_int_equal(hol_app_step(app, &in), HOL_OK);
+        assert_false(v->outside.on);
+        ins += ev->inside;
+        assert_int_equal(outs, gated ? 0 : 1);
+        assert_int_equal(ins, gated ? 0 : 1);
+        if (!gated)
+            assert_true(ev->inside_s > 1.0 && ev->inside_s < 3.1);
         hol_app_destroy(app);
     }
 }
@@ -2119,6 +2205,8 @@ int main(void)
         cmocka_unit_test(test_flat_nine_tiles),
         cmocka_unit_test(test_hyperbolic_small_cells),
         cmocka_unit_test(test_nav_cache),
+        cmocka_unit_test(test_outside_the_room),
+        cmocka_unit_test(test_walk_to_the_objective),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }

@@ -291,6 +291,50 @@ static void test_wrap(void **state)
     assert_int_equal(hol_face_wrap(t, 10, width, lines, 2), n);
 }
 
+/* The lines of hol_face_wrap_pairs (pairs 1) or hol_face_wrap (0) as one
+ * string, " / " between lines. */
+static const char *wrapped(const char *text, float width, int pairs)
+{
+    static char out[256];
+    hol_face_line lines[16];
+    int n = (pairs ? hol_face_wrap_pairs : hol_face_wrap)(text, 10, width, lines, 16);
+    size_t k = 0;
+    for (int i = 0; i < n && i < 16; i++) {
+        k += (size_t)snprintf(out + k, sizeof out - k, "%s%.*s", i ? " / " : "",
+                              (int)lines[i].len, text + lines[i].start);
+    }
+    out[k] = 0;
+    return out;
+}
+
+/* A prompt's "KEY: action" pairs stay whole (issue 36: the panel showed
+ * "Y:" at a line's end and "menu" on the next, and "3 x 3" / "m: mind the
+ * edges"), where plain wrapping split them. */
+static void test_wrap_pairs(void **state)
+{
+    (void)state;
+    const char *p = "A: confirm, Y / MENU: menu";
+    float w = hol_face_width("A: confirm, Y / MENU: men", 10);
+    assert_string_equal(wrapped(p, w, 0), "A: confirm, Y / MENU: / menu");
+    assert_string_equal(wrapped(p, w, 1), "A: confirm, / Y / MENU: menu");
+    /* inside an action before inside a key or between key and action */
+    const char *q = "B: back to the menu";
+    w = hol_face_width("B: back to the", 10);
+    assert_string_equal(wrapped(q, w, 1), "B: back to the / menu");
+    w = hol_face_width("B: bac", 10);
+    assert_string_equal(wrapped(q, w, 1), "B: / back / to the / menu"); /* no other choice */
+    /* a number with its unit, the key with its action */
+    const char *e = "Play area under 3 x 3 m: mind the edges";
+    w = hol_face_width("Play area under 3 x 3 m: mi", 10);
+    assert_string_equal(wrapped(e, w, 0), "Play area under 3 x 3 m: / mind the edges");
+    w = hol_face_width("Play area under 3 x 3 m", 10);
+    assert_string_equal(wrapped(e, w, 0), "Play area under 3 x 3 / m: mind the edges");
+    assert_string_equal(wrapped(e, w, 1), "Play area under / 3 x 3 m: mind the / edges");
+    /* a text without pairs wraps as plain text would where it has no comma */
+    w = hol_face_width("the quick brown", 10) - 1;
+    assert_string_equal(wrapped("the quick brown fox", w, 1), "the quick / brown fox");
+}
+
 /* The sample sheet: every glyph at three sizes, and a sentence. */
 static void write_sheet(const char *path)
 {
@@ -352,6 +396,7 @@ int main(void)
         cmocka_unit_test(test_cases_and_accents_differ),
         cmocka_unit_test(test_widths_and_kerning),
         cmocka_unit_test(test_wrap),
+        cmocka_unit_test(test_wrap_pairs),
         cmocka_unit_test(test_sheet),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -251,9 +251,11 @@ static void test_room(void **state)
     hol_panel_place(&p, near, 0, 0);
     g_dist = (0.7 - 0.05) / cos(10 * PI / 180);
     assert_at(&p, near, 0);
+    assert_false(p.covered);
     hol_panel_place(&p, wall, 0, 0); /* 0.4 m from the hedge: the floor */
     g_dist = 0.5;
     assert_at(&p, wall, 0);
+    assert_true(p.covered); /* a quad layer would show over the hedge */
     double out[3] = {1.5, 1.6, -0.5}; /* outside the room: as ever */
     hol_panel_place(&p, out, 0, 0);
     g_dist = 1.5;
@@ -267,6 +269,14 @@ static void test_room(void **state)
     hol_panel_place(&p, tr, 0, 0);
     g_dist = (0.7 - 0.12 - 0.05) / cos(10 * PI / 180);
     assert_at(&p, tr, 0);
+    assert_false(p.covered);
+    double touch[3] = {1, 1.6, 1.3}; /* 0.18 m from the trunk's bark */
+    hol_panel_place(&p, touch, 0, 0);
+    g_dist = 0.5;
+    assert_at(&p, touch, 0);
+    assert_true(p.covered);
+    hol_panel_place(&p, tr, 0, 0); /* back: uncovered */
+    assert_false(p.covered);
     g_dist = 1.5;
 }
 

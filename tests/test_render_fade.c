@@ -12,6 +12,7 @@
 
 #include <cmocka.h>
 
+#include "golden_compare.h"
 #include "render_fixture.h"
 
 #define W 96
@@ -117,12 +118,77 @@ static void test_hud_text_stays_over_the_fade(void **state)
     assert_true(text > 20);
 }
 
+/* Outside the room (issue 36; hol_frame_desc.outside): every pixel of the
+ * view blended towards HOL_RENDER_OUTSIDE_RGB by HOL_RENDER_OUTSIDE_DIM
+ * (the forest dimmed, not hidden), but the arrow's, which are its yellow;
+ * the panel drawn over a hedge that stands between it and the eye (inside
+ * the room the hedge hides it); and the picture as reviewed
+ * (tests/golden/outside_way_back.png). */
+static void test_outside_dims_shows_arrow_and_panel(void **state)
+{
+    (void)state;
+    static const uint8_t dim[3] = HOL_RENDER_OUTSIDE_RGB, arrow[3] = HOL_RENDER_ARROW_RGB;
+    hol_frame_desc f0 = frame(0, HOL_RENDER_NO_HUD);
+    render(&f0, img_a);
+    hol_frame_desc f = f0;
+    f.outside = 1;
+    f.outside_arrow[0] = 1.5; /* 1.1 m ahead on the floor, pointing south-east */
+    f.outside_arrow[2] = 0.4;
+    f.outside_yaw_deg = -135;
+    render(&f, img_b);
+    long yellow = 0, off = 0;
+    for (int p = 0; p < W * H; p++) {
+        int ay = 1, ok = 1;
+        for (int ch = 0; ch < 3; ch++) {
+            double want = img_a[4 * p + ch] * (1 - HOL_RENDER_OUTSIDE_DIM) +
+                          dim[ch] * HOL_RENDER_OUTSIDE_DIM;
+            ok &= abs(img_b[4 * p + ch] - (int)(want + 0.5)) <= 1;
+            ay &= abs(img_b[4 * p + ch] - arrow[ch]) <= 2;
+        }
+        yellow += ay;
+        off += !ok && !ay;
+    }
+    assert_true(yellow > 40);
+    assert_int_equal(off, 0);
+    /* the panel 2.5 m ahead, beyond the north hedge (z 0), facing the eye */
+    hol_frame_desc g = frame(0, HOL_RENDER_PANEL | HOL_RENDER_HUD_TEXT);
+    g.cam.pitch_deg = -25; /* the panel and the arrow in view */
+    g.hud_lines[0] = "OUTSIDE THE ROOM";
+    g.nhud_lines = 1;
+    g.panel_pos[0] = 1.5;
+    g.panel_pos[1] = 1.5;
+    g.panel_pos[2] = -1.0;
+    g.panel_orient[3] = 1;
+    g.panel_px = 0.02;
+    long shown[2];
+    for (int out = 0; out < 2; out++) {
+        g.outside = out;
+        g.outside_yaw_deg = 180;
+        g.outside_arrow[0] = 1.5;
+        g.outside_arrow[2] = 0.4;
+        render_fixture_draw_hud(fx.rnd, &g, W, H, img_a, img_b);
+        shown[out] = 0;
+        for (int p = 0; p < 4 * W * H; p++)
+            shown[out] += img_a[p] != img_b[p];
+    }
+    assert_int_equal(shown[0], 0); /* behind the hedge: hidden */
+    assert_true(shown[1] > 400);   /* outside: over it */
+    char dir[512];
+    golden_out_dir(dir, sizeof dir, NULL);
+    if (golden_update_requested())
+        assert_int_equal(hol_png_write_file("tests/golden/outside_way_back.png", img_a, W, H, 0),
+                         HOL_OK);
+    else
+        assert_int_equal(golden_compare("outside_way_back", img_a, W, H, "", dir), 0);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_partial_fade_blends_every_pixel),
         cmocka_unit_test(test_full_fade_is_the_colour_anywhere),
         cmocka_unit_test(test_hud_text_stays_over_the_fade),
+        cmocka_unit_test(test_outside_dims_shows_arrow_and_panel),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }

@@ -149,7 +149,7 @@ static void test_input(void **state)
     hol_input in;
     hol_web_xr_input(&st, &f, 2.0, &in);
     assert_true(in.time_s == 2.0);
-    assert_int_equal(in.flags, HOL_INPUT_HEADSET | HOL_INPUT_FOCUSED | HOL_INPUT_HEAD_VALID |
+    assert_int_equal(in.flags, HOL_INPUT_HEADSET | HOL_INPUT_WAY_BACK | HOL_INPUT_FOCUSED | HOL_INPUT_HEAD_VALID |
                                    HOL_INPUT_HAND_L_VALID);
     assert_true(fabsf(in.head.pos[0] - 1.75f) < 1e-6f && fabsf(in.head.pos[2] - 1.0f) < 1e-6f);
     assert_true(fabsf(in.hand[0].pos[0] - 1.5f) < 1e-6f && fabsf(in.hand[0].pos[1] - 1.0f) < 1e-6f);

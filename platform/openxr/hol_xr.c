@@ -182,8 +182,8 @@ static void hol__figures(hol__xr *x)
                 x->submitted, x->reached_focused ? "yes" : "no", x->faded);
     if (x->quad_on)
         hol__xr_say(x, "xr: panel quad layer submitted in %ld frames, its image drawn %ld times "
-                    "(when its content changed)",
-                    x->quad_frames, x->quad_cache.redraws);
+                    "(when its content changed); in the scene behind nearer scenery in %ld",
+                    x->quad_frames, x->quad_cache.redraws, x->quad_covered_frames);
     hol__xr_say(x, "xr: controller pulses %ld (%ld into a hedge or a trunk, %ld room steps)%s",
                 x->pulses, x->pulses_hit, x->pulses - x->pulses_hit,
                 x->fns->haptic ? "" : ": off (--no-haptics)");

@@ -195,7 +195,7 @@ static int hol__draw_eye(hol__xr *x, int e, const hol_app_view *v, const hol_inp
     hol_frame_desc fd;
     hol_app_frame_desc(v, e, ey->w, ey->h, 0, &fd);
     hol_app_frame_panel(v, &fd); /* the HUD on a panel in the world */
-    if (x->quad_on) /* the panel is the quad layer's */
+    if (x->quad_on && !x->quad_covered) /* the panel is the quad layer's */
         fd.flags |= HOL_RENDER_PANEL_LAYER;
     for (int k = 0; k < 3; k++)
         fd.cam.eye[k] = eroom->pos[k];
@@ -221,7 +221,7 @@ static int hol__draw_eye(hol__xr *x, int e, const hol_app_view *v, const hol_inp
         fd.fade = 1; /* never a stale image */
         hol_render_frame(x->rnd, &fd, &rs);
     }
-    x->faded += fd.fade > 0 && e == 0;
+    x->faded += (fd.fade > 0 || fd.outside) && e == 0; /* faded, or dimmed outside */
     if (fade == 0) { /* the figures of a full view */
         x->draws[e] = rs.draw_calls;
         x->tris[e] = rs.triangles;
@@ -265,6 +265,13 @@ static int hol__eyes(hol__xr *x, const hol_app_view *v, const hol_input *in,
             eyes[e][k] = eroom[e].pos[k] += shift[k];
     }
     double fade = hol_xr_fade_room(eyes, HOL__MARGIN, x->room_w, x->room_d);
+    if (hol_xr_outside_eyes(v, in, eyes)) { /* outside: from the room's edge, dimmed */
+        for (int e = 0; e < 2; e++)
+            for (int k = 0; k < 3; k++)
+                eroom[e].pos[k] = (float)eyes[e][k];
+        fade = 0;
+    }
+    hol__xr_quad_covered(x, v); /* scenery nearer than the panel: in the eyes */
     for (int e = 0; e < 2; e++)
         if (hol__draw_eye(x, e, v, in, &eroom[e], fade, &pv[e]))
             return 1;

@@ -2,7 +2,10 @@
  * questionnaires) as an OpenXR quad layer (XrCompositionLayerQuad; see
  * hol_xr_state.h and the pure part, hol_xr_quad.h): drawn once per frame
  * at most, not per eye, into its own swapchain, and only when its content
- * changed; the runtime composites it over the projection layer. */
+ * changed; the runtime composites it over the projection layer. The quad
+ * has no depth: while a hedge or trunk is nearer than the panel can come
+ * (core/hol_panel.h, `covered`) it is not submitted and the eyes draw the
+ * panel in the scene, depth-tested (hol__xr_quad_covered). */
 #define _GNU_SOURCE
 #include "hol_xr_state.h"
 
@@ -112,11 +115,23 @@ static int hol__quad_draw(hol__xr *x, const hol_frame_desc *fd, const hol_xr_qua
     return 0;
 }
 
+int hol__xr_quad_covered(hol__xr *x, const hol_app_view *v)
+{
+    int c = x->quad_on && v && v->panel.covered;
+    if (c != x->quad_covered)
+        hol__xr_say(x, "xr: frame %ld: %s", x->submitted,
+                    c ? "panel in the scene (depth-tested): a hedge or trunk is nearer than "
+                        "the panel can come, and the quad layer has no depth"
+                      : "panel as the quad layer again");
+    x->quad_covered_frames += c;
+    return x->quad_covered = c;
+}
+
 int hol__xr_quad_layer(hol__xr *x, const hol_app_view *v, const float shift[3],
                        XrCompositionLayerQuad *out, int *out_submit)
 {
     *out_submit = 0;
-    if (!x->quad_on || !v)
+    if (!x->quad_on || !v || x->quad_covered)
         return 0;
     hol_frame_desc fd;
     hol_app_frame_desc(v, 0, x->quad_w, x->quad_h, 0, &fd);

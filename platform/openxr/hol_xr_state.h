@@ -201,6 +201,8 @@ typedef struct hol__xr {
     int quad_w, quad_h;      /* the image (hol_xr_quad_image) */
     hol_xr_quad_cache quad_cache;
     long quad_frames;        /* frames that submitted it */
+    int quad_covered;        /* this frame: the panel in the eyes instead */
+    long quad_covered_frames; /* frames it was */
     hol_xr_quad quad_last;   /* the last submitted */
 #ifdef __ANDROID__
     EGLDisplay edpy;
@@ -280,8 +282,12 @@ void hol__xr_check_eye(hol__xr *x, int e, const hol_frame_desc *fd, unsigned fbo
  * after the eyes'; a failure falls back to the panel in the scene, said
  * in one line, not a failure of the run), its layer for this frame (the
  * image drawn again only when the panel's content changed;
- * *out_submit 0: no panel this frame), the figures, teardown */
+ * *out_submit 0: no panel this frame), the figures, teardown;
+ * hol__xr_quad_covered: 1 when this frame's panel goes in the eyes,
+ * depth-tested, instead of the quad (scenery nearer than it can come:
+ * core/hol_panel.h), said when it changes */
 int hol__xr_quad_setup(hol__xr *x);
+int hol__xr_quad_covered(hol__xr *x, const hol_app_view *v);
 int hol__xr_quad_layer(hol__xr *x, const hol_app_view *v, const float shift[3],
                        XrCompositionLayerQuad *out, int *out_submit);
 void hol__xr_quad_free(hol__xr *x);

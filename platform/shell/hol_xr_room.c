@@ -103,6 +103,16 @@ double hol_xr_fade_room(const double eye[2][3], double margin, double room_w, do
     return f > 1 ? 1 : f;
 }
 
+int hol_xr_outside_eyes(const hol_app_view *v, const hol_input *in, double eye[2][3])
+{
+    if (!v || !in || !v->outside.on)
+        return 0;
+    for (int e = 0; e < 2; e++)
+        for (int k = 0; k <= 2; k += 2)
+            eye[e][k] += v->head[k] - in->head.pos[k];
+    return 1;
+}
+
 /* "0.6", "1.0", "0.55": metres from centimetres */
 static void hol__m(int cm, char out[16])
 {
@@ -198,7 +208,7 @@ uint32_t hol_xr_life_state(hol_xr_life *l)
 {
     int worn = !l->off && (l->state == HOL_XR_STATE_VISIBLE || l->state == HOL_XR_STATE_FOCUSED);
     l->off = 0;
-    return HOL_INPUT_HEADSET | (l->focused ? HOL_INPUT_FOCUSED : 0u) |
+    return HOL_INPUT_HEADSET | HOL_INPUT_WAY_BACK | (l->focused ? HOL_INPUT_FOCUSED : 0u) |
            (worn ? 0u : HOL_INPUT_HEADSET_OFF);
 }
 

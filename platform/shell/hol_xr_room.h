@@ -64,6 +64,12 @@ int hol_xr_bounds_hold(float width, float depth, double room_w, double room_d);
 double hol_xr_fade(const double eye[2][3], double margin);
 /* The same in a room of room_w x room_d metres (hol_xr_fade: 3 x 3). */
 double hol_xr_fade_room(const double eye[2][3], double margin, double room_w, double room_d);
+/* Outside the room (v->outside.on, core/hol_app.h): the eyes drawn from
+ * the room's edge, moved by the view's head less the tracked head (in's,
+ * on the floor; the motion keeps the view's inside the hedges) into eye;
+ * the fade then 0 (the renderer dims the view: hol_frame_desc.outside).
+ * Returns 1 when it moved them, 0 (nothing done) inside the room. */
+int hol_xr_outside_eyes(const hol_app_view *v, const hol_input *in, double eye[2][3]);
 
 /* The fit told on the HUD (the headset and the web, for their first
  * seconds): *out = *v with two more short lines, in capitals: "ROOM C X R
@@ -112,7 +118,8 @@ hol_xr_do hol_xr_lifecycle(int state, int *out_running, int *out_focused);
  *   already asked.
  * - The headset's state in every record (core/hol_input.h: steps only
  *   from a worn, focused, tracked headset; the rule is the core's):
- *   hol_xr_life_state(l) gives HOL_INPUT_HEADSET, HOL_INPUT_FOCUSED while
+ *   hol_xr_life_state(l) gives HOL_INPUT_HEADSET, HOL_INPUT_WAY_BACK (it
+ *   shows the way back into the room), HOL_INPUT_FOCUSED while
  *   FOCUSED, and HOL_INPUT_HEADSET_OFF unless the session is VISIBLE or
  *   FOCUSED (SYNCHRONIZED: the headset is off, its view hidden).
  * - Re-entering walks nothing: a session begun again (READY after a

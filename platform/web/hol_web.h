@@ -83,6 +83,13 @@ int hol_web_game_lang(void);
 void hol_web_game_finish(void);
 /* the session's metadata (id, participant), NULL before it opened */
 const struct hol_rec_meta *hol_web_game_meta(void);
+/* The play area's fit applied (fit on entry, issue 36): where the page
+ * names no room or cell, plays no study and the session is still in its
+ * first level, the session in play ends as a reload ends it (its attempt
+ * aborted, every file committed) and a new one plays the same levels in
+ * the room of cols x rows cells of cell (the format of ?room= and ?cell=).
+ * 1 applied, 0 not (told only), -1 failure (msg). */
+int hol_web_game_refit(const char *room, const char *cell, char *msg, size_t cap);
 
 /* hol_web_env.c: environment.csv (docs/research.md, Session metadata).
  * init: the GL renderer asked once, at setup (no GL call in the frames);

@@ -137,6 +137,17 @@ static int study_levels(const char *text, const char *part, int *n, char out_nam
     return 0;
 }
 
+static char fit_room[16], fit_cell[16]; /* the play area's fit applied, or "" */
+
+/* The page's room or cell, else the play area's fit applied. */
+static void page_room_cell(const char *key, char *buf, int cap)
+{
+    hol_web_js_config(key, buf, cap);
+    const char *fit = !strcmp(key, "room") ? fit_room : fit_cell;
+    if (!buf[0] && fit[0])
+        snprintf(buf, (size_t)cap, "%s", fit);
+}
+
 /* The geometry the page names: ?tiling=4,Q ?room=CxR ?cell=M, every level
  * played in it (as play's --tiling, --room, --cell: hol_level_set_geometry
  * adds the lines to each level's text; a level whose own line differs is
@@ -148,6 +159,9 @@ static int page_geometry(int n, char *msg, size_t cap)
     hol_web_js_config("tiling", t, sizeof t);
     hol_web_js_config("room", r, sizeof r);
     hol_web_js_config("cell", c, sizeof c);
+    hol_web_g.geo_named = (r[0] ? 1 : 0) | (c[0] ? 2 : 0);
+    page_room_cell("room", r, sizeof r);
+    page_room_cell("cell", c, sizeof c);
     int q = 0, cols = 0, rows = 0;
     double cell = 0;
     if (t[0] && hol_room_parse_tiling(t, strlen(t), &q)) {
@@ -162,7 +176,6 @@ static int page_geometry(int n, char *msg, size_t cap)
         snprintf(msg, cap, "cell '%.12s' is not a size in metres from 0.5 to 1.5", c);
         return 1;
     }
-    hol_web_g.geo_named = (r[0] ? 1 : 0) | (c[0] ? 2 : 0);
     for (int i = 0; i < n; i++) {
         hol_level_err le;
         char m[256];
@@ -172,8 +185,9 @@ static int page_geometry(int n, char *msg, size_t cap)
             return 1;
         }
     }
-    if (q || cols || cell > 0)
-        printf("web: geometry from the page: tiling %s, room %s, cell %s\n", t[0] ? t : "-",
+    if (fit_room[0] || q || cols || cell > 0)
+        printf("web: geometry %s: tiling %s, room %s, cell %s\n",
+               fit_room[0] ? "fitted to the play area" : "from the page", t[0] ? t : "-",
                r[0] ? r : "-", c[0] ? c : "-");
     return 0;
 }
@@ -185,7 +199,7 @@ static hol_campaign_geo page_campaign_geo(void)
     char t[16], r[16];
     hol_campaign_geo g = {0, 0, 0};
     hol_web_js_config("tiling", t, sizeof t);
-    hol_web_js_config("room", r, sizeof r);
+    page_room_cell("room", r, sizeof r);
     if (t[0] && hol_room_parse_tiling(t, strlen(t), &g.q))
         g.q = 0;
     if (r[0] && hol_room_parse_size(r, strlen(r), &g.cols, &g.rows))
@@ -369,6 +383,31 @@ void hol_web_game_finish(void)
     if (hol_session_finish(sess))
         printf("web: %s\n", hol_session_message(sess));
     hol_web_js_event("saved", "");
+}
+
+int hol_web_game_refit(const char *room, const char *cell, char *msg, size_t cap)
+{
+    if (!sess || finished || hol_web_g.geo_named || study_name[0] ||
+        hol_session_level_index(sess) > 0)
+        return 0;
+    char was_room[16], was_cell[16];
+    snprintf(was_room, sizeof was_room, "%s", fit_room);
+    snprintf(was_cell, sizeof was_cell, "%s", fit_cell);
+    snprintf(fit_room, sizeof fit_room, "%s", room);
+    snprintf(fit_cell, sizeof fit_cell, "%s", cell);
+    hol_session_abort(sess); /* as a reload: the attempt aborted, files kept */
+    hol_session_destroy(sess);
+    sess = NULL;
+    if (!hol_web_game_open(msg, cap)) {
+        hol_web_js_event("saved", "");
+        return 1;
+    }
+    snprintf(fit_room, sizeof fit_room, "%s", was_room); /* as before, then */
+    snprintf(fit_cell, sizeof fit_cell, "%s", was_cell);
+    char m2[256];
+    if (hol_web_game_open(m2, sizeof m2))
+        finished = 1;
+    return -1;
 }
 
 /* The page is going away (pagehide): the attempt in play ends `aborted`

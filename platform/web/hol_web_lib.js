@@ -166,6 +166,8 @@ var HolWebLib = {
 
     enter: async function () {
       if (HolXR.session) return;
+      HolXR.enterT = performance.now(); // the store's rule: tracked within 4 s
+      HolXR.tracked = false;
       var s = await navigator.xr.requestSession('immersive-vr', {
         requiredFeatures: ['local-floor'],
         optionalFeatures: ['bounded-floor', 'hand-tracking', 'layers']
@@ -387,6 +389,11 @@ var HolWebLib = {
       HolXR.put(f, base + o.bounds, HolXR.bounds(), 2);
       var pose = xrf.getViewerPose(HolXR.space);
       var layer = HolXR.base || s.renderState.baseLayer; // with layers, baseLayer is null
+      if (pose && !pose.emulatedPosition && !HolXR.tracked) {
+        HolXR.tracked = true;
+        console.log('web: xr first head-tracked frame ' +
+          Math.round(performance.now() - HolXR.enterT) + ' ms after Enter VR');
+      }
       if (pose) {
         var tr = pose.transform;
         f[base + o.head_valid] = pose.emulatedPosition ? 2 : 1;

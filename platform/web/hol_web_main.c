@@ -181,8 +181,12 @@ static void poll_gamepad(hol_web_pancake *p)
  * column, 12 cell row, 13 the level clock, 14 yaw, 15 the device the
  * prompts name (HOL_DEVICE_*), 16 the looping sound sources playing
  * (0 before the first gesture, with ?sound=0, or without WebAudio), 17
+ * the head outside the room (hol_app_view.outside.on), 18 the floor
+ * arrow's yaw, 19 and 20 the room's columns and rows, 21 its cell (m),
+ * 22 the next room step of the walk to the objective (hol_app_walk:
+ * 'N', 'E', 'S', 'W' as a number; 0 none), 23
  * the tracked hands at the last XR frame (bits: 1, 2 the left's and the
- * right's joints; 4, 8 their palms up and open: hol_web_xr.h), 18 the
+ * right's joints; 4, 8 their palms up and open: hol_web_xr.h), 24 the
  * body parts drawn (controllers and hands: hol_app_view.body). */
 EMSCRIPTEN_KEEPALIVE double hol_web_state(int what)
 {
@@ -196,7 +200,7 @@ EMSCRIPTEN_KEEPALIVE double hol_web_state(int what)
     case 7: return w->over;
     case 8: return w->failed;
     case 16: return hol_web_sound_active();
-    case 17: return w->xr.hands;
+    case 23: return w->xr.hands;
     default: break;
     }
     if (!v)
@@ -212,7 +216,16 @@ EMSCRIPTEN_KEEPALIVE double hol_web_state(int what)
     case 13: return v->hud.elapsed_s;
     case 14: return v->yaw_deg;
     case 15: return v->hud.device;
-    case 18: return (v->body.hand[0].kind != 0) + (v->body.hand[1].kind != 0);
+    case 17: return v->outside.on;
+    case 18: return v->outside.arrow_yaw_deg;
+    case 19: return hol_room_cols(&v->user);
+    case 20: return hol_room_rows(&v->user);
+    case 21: return v->cell_m;
+    case 22: {
+        uint8_t walk[1];
+        return hol_app_walk(hol_web_game_app(), walk, 1) > 0 ? hol_dir_to_char(walk[0]) : 0;
+    }
+    case 24: return (v->body.hand[0].kind != 0) + (v->body.hand[1].kind != 0);
     default: return -1;
     }
 }

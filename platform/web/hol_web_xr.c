@@ -116,7 +116,7 @@ void hol_web_xr_input(hol_web_xr_state *st, const hol_web_xr_frame *f, double t,
     in.time_s = t > st->last_t ? t : st->last_t;
     st->last_t = in.time_s;
     /* the headset's state: the core decides whether the head walks */
-    in.flags |= HOL_INPUT_HEADSET;
+    in.flags |= HOL_INPUT_HEADSET | HOL_INPUT_WAY_BACK; /* and it shows the way back in */
     if (f->visibility == HOL_WEB_XR_VISIBLE)
         in.flags |= HOL_INPUT_FOCUSED;
     if (f->visibility < HOL_WEB_XR_BLURRED)

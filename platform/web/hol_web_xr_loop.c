@@ -149,6 +149,7 @@ static struct {
     float out[10]; /* pos 3, quat 4, width, height, map */
     const hol_app_view *v;
     float fade;
+    int covered; /* the last frame's panel.covered */
 } quad;
 
 EMSCRIPTEN_KEEPALIVE void hol_web_xr_panel_quad(int on)
@@ -163,12 +164,14 @@ EMSCRIPTEN_KEEPALIVE float *hol_web_xr_panel_buffer(void)
 }
 
 /* The panel of the last step, in the reference space (out): 0 none this
- * frame (no panel, or the view faded out), 1 unchanged, 2 its content
- * changed (draw it). force: a new texture (the layer's needsRedraw). */
+ * frame (no panel, the view faded out, or scenery nearer than the panel
+ * can come: the eyes draw it, depth-tested, core/hol_panel.h), 1
+ * unchanged, 2 its content changed (draw it). force: a new texture (the
+ * layer's needsRedraw). */
 EMSCRIPTEN_KEEPALIVE int hol_web_xr_panel_place(int force)
 {
     const hol_app_view *v = quad.v;
-    if (!quad.on || !v || quad.fade >= 1)
+    if (!quad.on || !v || quad.fade >= 1 || v->panel.covered)
         return 0;
     hol_frame_desc fd;
     hol_app_frame_desc(v, 0, 16, 16, 0, &fd);
@@ -204,6 +207,14 @@ EMSCRIPTEN_KEEPALIVE int hol_web_xr_panel_draw(int fb, int w, int h)
     return r;
 }
 
+/* Line i of the panel as the last XR frame drew it (the fit's note
+ * included), "" past its last: for tests. */
+EMSCRIPTEN_KEEPALIVE const char *hol_web_xr_panel_line(int i)
+{
+    const hol_app_view *v = quad.v;
+    return v && i >= 0 && i < v->hud.nlines ? v->hud.lines[i] : "";
+}
+
 EMSCRIPTEN_KEEPALIVE long hol_web_xr_panel_redraws(void)
 {
     return quad.cache.redraws;
@@ -220,8 +231,18 @@ static void xr_render(const hol_app_view *v, const hol_input *in, int fb)
         memcpy(eyes[e], cam[e].eye, sizeof eyes[e]);
     }
     double fade = hol_xr_fade_room(eyes, HOL__MARGIN, w->xr.room_w, w->xr.room_d);
+    if (hol_xr_outside_eyes(v, in, eyes)) { /* outside: from the room's edge, dimmed */
+        for (int e = 0; e < 2; e++)
+            memcpy(cam[e].eye, eyes[e], sizeof eyes[e]);
+        fade = 0;
+    }
     quad.v = v;
     quad.fade = (float)fade;
+    if (quad.on && v->panel.covered != quad.covered)
+        printf("web: xr frame %ld: panel %s\n", w->xr_frames,
+               v->panel.covered ? "in the scene (depth-tested): scenery too near for the quad"
+                                : "as the quad layer again");
+    quad.covered = v->panel.covered;
     glBindFramebuffer(GL_FRAMEBUFFER, (GLuint)fb);
     int checking = w->check_frame == w->xr_frames;
     for (int e = 0; e < n; e++) {
@@ -232,7 +253,7 @@ static void xr_render(const hol_app_view *v, const hol_input *in, int fb)
         hol_app_frame_desc(v, n == 2 ? e : -1, cam[e].width, cam[e].height, 0, &fd);
         fd.overlay = hol_web_overlay();
         hol_app_frame_panel(v, &fd); /* the HUD on a panel in the world */
-        if (quad.on) /* the quad layer's */
+        if (quad.on && !v->panel.covered) /* the quad layer's; else depth-tested here */
             fd.flags |= HOL_RENDER_PANEL_LAYER;
         fd.cam = cam[e];
         fd.vp_x = (int)vw->vp[0];
@@ -283,10 +304,12 @@ static void xr_render(const hol_app_view *v, const hol_input *in, int fb)
 
 /* The bounded-floor polygon (n points x, z in fit_xz; the glue's boundsGeometry, at
  * the session's start and when the space is reset): the room and cell
- * that fit it (core/hol_fit.h), told on the console, to the page (which
- * offers it as a link: the session in play keeps its room, as the
- * headset does after a new play area) and on the HUD for 12 s. The page's
- * ?room= or ?cell= win: the fit is then only told. */
+ * that fit it (core/hol_fit.h), told on the console, to the page and on
+ * the panel for 12 s, and played at once (fit on entry:
+ * hol_web_game_refit, a new session in the fitted room while the first
+ * level is in play and no study runs); else offered as a link (the page
+ * again with it). The page's ?room= or ?cell= win: the fit is then only
+ * told. */
 static float fit_xz[2 * HOL_FIT_MAX_POINTS]; /* the glue writes the polygon here */
 
 EMSCRIPTEN_KEEPALIVE float *hol_web_xr_fit_buffer(void)
@@ -317,7 +340,24 @@ EMSCRIPTEN_KEEPALIVE void hol_web_xr_fit(int n)
     snprintf(offer, sizeof offer, "room=%dx%d&cell=%s", w->fit.cols, w->fit.rows,
              hol_level_format_cell(w->fit.cell_m, cm));
     hol_web_js_event("fit", line);
-    if (!w->geo_named && !same && !w->fit.too_small)
+    if (same || w->fit.too_small)
+        return;
+    /* fit on entry: the room fitted at once where the page allows it, else
+     * offered as a link (the page again with it) */
+    char msg[256];
+    char room[16];
+    snprintf(room, sizeof room, "%dx%d", w->fit.cols, w->fit.rows);
+    int r = hol_web_game_refit(room, cm, msg, sizeof msg);
+    if (r > 0) {
+        hol_render_set_world(w->rnd, hol_app_world(hol_web_game_app()));
+        hol_render_invalidate(w->rnd);
+        quad.v = NULL; /* the old session's view: gone */
+        printf("web: the room fitted to the play area (%s of %s m): a new session plays it\n",
+               room, cm);
+    } else if (r < 0) {
+        printf("web: %s\n", msg);
+    }
+    if (r <= 0 && !w->geo_named)
         hol_web_js_event("fit-offer", offer);
 }
 

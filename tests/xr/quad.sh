@@ -11,7 +11,9 @@
 # HUD is the same); the quad's image holds the panel (read back); it is
 # drawn again only when the panel's content changes; and where the quad's
 # swapchain cannot be made (the layer fails it) the run goes on with the
-# panel in the scene. Prints one line per check; exit 0 when all pass.
+# panel in the scene; and with a trunk nearer than the panel can come, the
+# panel in the scene for those frames. Prints one line per check; exit 0
+# when all pass.
 set -u
 BIN=${1:-build/xr/holonomy}
 LAYER=${2:-build/xr/libhol_inject_layer.so}
@@ -70,6 +72,32 @@ check "quad: its image read back holds the panel: opaque texels and a transparen
 sub=$(sed -n 's/^xr: panel quad layer submitted in \([0-9]*\) frames, its image drawn \([0-9]*\) times.*/\1 \2/p' "$out/xr.out")
 check "quad: submitted every frame, its image drawn again only when the panel changed (frames, draws: ${sub:-none})" \
     'echo "$sub" | awk "{ exit !(NF == 2 && \$1 >= 100 && \$2 >= 1 && \$2 * 4 <= \$1) }"'
+
+# Nearer scenery than the panel can come (issue 36): the scripted head
+# 0.3 m south of the trunk at (1, 1) and 0.15 m west of it, looking north:
+# the panel stays at 0.5 m with the trunk's bark nearer, so the quad (no
+# depth) would show over it. The quad is not submitted and the eyes draw
+# the panel, depth-tested (its left part shows, the trunk hides its right:
+# straight behind the trunk it would hide it all), said when it changes;
+# the figures count those frames.
+awk 'BEGIN { for (k = 0; k < 60; k++) printf "%.4f f=9 h=0.85,1.6,1.3,0,0,0,1\n", k / 72.0 }' \
+    >"$out/trunk.txt"
+env DISPLAY=:77 HOL_INJECT_AT=1000000 HOL_INJECT_LAYERS_AT=40 XR_API_LAYER_PATH="$xrl" \
+    XR_ENABLE_API_LAYERS="$xre" \
+    "$BIN" xr "$out/level.txt" --frames 60 --check-frame 40 --check-dir "$out/check" \
+    --input "$out/trunk.txt" >"$out/trunk.out" 2>"$out/trunk.err"
+rc=$?
+grep "panel\|check panel" "$out/trunk.out" | sed 's/^/  | /'
+grep "^inject:" "$out/trunk.err" | sed 's/^/  | /'
+check "quad behind a trunk nearer than 0.55 m: exit 0 ($rc), said once: the panel in the scene, depth-tested" \
+    '[ "$rc" = 0 ] && [ "$(grep -c "^xr: frame [0-9]*: panel in the scene (depth-tested): a hedge or trunk is nearer than the panel can come" "$out/trunk.out")" = 1 ]'
+tf=$(sed -n 's/^xr: panel quad layer submitted in \([0-9]*\) frames, .*in the scene behind nearer scenery in \([0-9]*\)$/\1 \2/p' "$out/trunk.out")
+check "quad behind a trunk: the projection layer alone, the panel in the eyes; the quad in at most the first 2 frames (quad, in the scene: ${tf:-none})" \
+    'grep -q "^inject: frame 40: 1 layers: projection(2 views)$" "$out/trunk.err" &&
+     grep "^xr: check panel eye 0:" "$out/trunk.out" | awk "{ exit !(\$6 > 100) }" &&
+     echo "$tf" | awk "{ exit !(NF == 2 && \$1 <= 2 && \$2 >= 55) }"'
+check "quad behind a trunk: no VALID_ERROR or VALID_WARNING" \
+    'grep -q "Core Validation" "$out/trunk.out" "$out/trunk.err" && ! grep -q "VALID_ERROR\|VALID_WARNING" "$out/trunk.out" "$out/trunk.err"'
 
 # no quad swapchain (the third xrCreateSwapchain fails: after both eyes'):
 # the panel in the scene, said in one line, and the run goes on (exit 0)
