@@ -287,7 +287,7 @@ FUZZ_EXTRA_fuzz_cli := platform/cli/cli_util.c platform/file/hol_file.c platform
 FUZZ_EXTRA_fuzz_lines := platform/cli/cli_util.c platform/file/hol_file.c platform/file/hol_lines.c
 FUZZ_EXTRA_fuzz_report_instr := $(addprefix platform/cli/report/,report_stats.c report_answers.c report_instr.c \
   report_file.c report_escape.c) platform/cli/cli_util.c platform/file/hol_file.c \
-  platform/file/hol_lines.c
+  platform/file/hol_lines.c platform/cli/codebook.c platform/shell/hol_shell_codebook.c
 FUZZ_EXTRA_fuzz_hid_desc := $(HID_SRC)
 FUZZ_EXTRA_fuzz_hid_report := $(HID_SRC)
 FUZZ_EXTRA_fuzz_hid_script := $(HID_SRC) $(HID_DEV_SRC) $(HID_LIBS)
@@ -640,17 +640,20 @@ WEB_OBJ  := $(WEB_SRC:%.c=$(BUILD)/web-obj/%.o)
 # (-Os made the wasm step about 40 % slower; the table's builder,
 # hol_nav_table.c, is at -Os since: its first frame the same within the
 # noise; hol_room.c and hol_wfc.c, which run on room steps and new tiles,
-# likewise since issue 36); the link at -Oz, emmalloc (docs/web.md, "The
-# transfer size").
+# likewise since issue 36), without unrolled loops (issue 37: 0.9 KB; the
+# step 5 % slower, the table the same); the link at -Oz with binaryen's
+# -Oz once more, emmalloc, and Module read only for what page.js gives it
+# (docs/web.md, "The transfer size").
 WEB_HOT  := $(addprefix core/,hol_app_step.c hol_app_geom.c hol_app_view.c hol_hyper.c hol_math.c hol_motion.c \
   hol_nav.c hol_nav_arena.c hol_nav_field.c hol_nav_line.c \
   hol_tile.c hol_world.c hol_world_tree.c)
 WEB_OPT  := -Os
-WEB_OPT_HOT := -O2
+WEB_OPT_HOT := -O2 -fno-unroll-loops
 WEB_CFLAGS = $(CSTD) $(WARN) $(if $(filter $(WEB_HOT),$<),$(WEB_OPT_HOT),$(WEB_OPT)) -ffp-contract=off \
   -D_DEFAULT_SOURCE -MMD -MP
-WEB_LDFLAGS := -Oz -sMALLOC=emmalloc -sENVIRONMENT=web -sMIN_WEBGL_VERSION=2 -sMAX_WEBGL_VERSION=2 \
+WEB_LDFLAGS := -Oz -sBINARYEN_EXTRA_PASSES=-Oz -sMALLOC=emmalloc -sENVIRONMENT=web -sMIN_WEBGL_VERSION=2 -sMAX_WEBGL_VERSION=2 \
   -sALLOW_MEMORY_GROWTH=1 -sINITIAL_MEMORY=67108864 -sTOTAL_STACK=1048576 \
+  '-sINCOMING_MODULE_JS_API=[instantiateWasm,canvas,print,printErr]' \
   --js-library platform/web/hol_web_al.js --js-library platform/web/hol_web_lib.js
 # The languages of the web build (core/hol_str.h; en always): Dutch costs
 # 1.3 KB of the transfer (docs/web.md, "The transfer size").
@@ -695,8 +698,9 @@ $(BUILD)/web-obj/render/hol_program.o: WEB_CFLAGS += -I$(BUILD)/gen
 $(BUILD)/web-obj/platform/shell/hol_shell_build.o: $(BUILD_ID_H)
 $(BUILD)/web-obj/platform/shell/hol_shell_build.o: WEB_CFLAGS += -I$(BUILD)/gen
 # the page shows no worksheet: the lessons' worksheet texts are left out
-# (core/hol_lesson_text.c; the transfer size, docs/web.md)
-$(BUILD)/web-obj/core/hol_lesson_text.o: WEB_CFLAGS += -DHOL_LESSON_APP_ONLY
+# (core/hol_lesson_text.c; the transfer size, docs/web.md), and their
+# languages are WEB_LANGS's, as the string table's
+$(BUILD)/web-obj/core/hol_lesson_text.o: WEB_CFLAGS += -DHOL_LESSON_APP_ONLY $(if $(filter nl,$(WEB_LANGS)),,-DHOL_STR_NO_NL)
 
 $(BUILD)/web-obj/%.o: %.c $(WEB_STAMP)
 	@mkdir -p $(dir $@)

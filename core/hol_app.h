@@ -111,6 +111,8 @@ enum hol_app_minimap_place { HOL_MINIMAP_HUD = 0, HOL_MINIMAP_HAND = 1, HOL_MINI
 /* Seconds a headset's device shows which control opens the menu, from the
  * moment it is in use (hol_app_hud.hint: "Y: menu", "LEFT PINCH: menu"). */
 #define HOL_APP_MENU_HINT_S 10.0
+/* The lesson whose hint the app gives on request (core/hol_lesson.h). */
+#define HOL_APP_HINT_LESSON 6
 /* The tutorial's feedback line the first time the path cue shows is
  * core/hol_str.h's HOL_S_PATH; its line (hol_app_hud.note) the first time
  * the minimap's rings show (lesson 2's two tiles of one cell, map.marks),
@@ -160,9 +162,9 @@ enum hol_app_minimap_place { HOL_MINIMAP_HUD = 0, HOL_MINIMAP_HAND = 1, HOL_MINI
 #define HOL_APP_ROUTE_TEXT "Follow the markers %d/%d"
 
 /* A screen of text (hol_app_level.instructions, .closing): printable
- * ASCII (the HUD's font), at most HOL_APP_SCREEN_TEXT - 1 bytes, wrapped
- * at spaces into lines of at most HOL_APP_SCREEN_COLS characters
- * (hol_app_wrap), at most HOL_APP_SCREEN_LINES of them (the HUD's lines:
+ * ASCII and Latin-1 in UTF-8 (the HUD's font: hol_face_text_bad), at
+ * most HOL_APP_SCREEN_TEXT - 1 bytes, wrapped at spaces into lines of at
+ * most HOL_APP_SCREEN_COLS characters (hol_app_wrap), at most HOL_APP_SCREEN_LINES of them (the HUD's lines:
  * the text is shown whole, never cut; the level parser refuses more). */
 #define HOL_APP_SCREEN_TEXT 288
 #define HOL_APP_SCREEN_COLS 46
@@ -290,7 +292,9 @@ typedef struct hol_app_level {
      * and the HUD says "Follow the markers K/N"; a room step onto that
      * tile (by any way) moves the marker on, and the last one completes
      * the level (not scored: optimum -1). nroute 0 plays as before. */
-    int lesson;
+    int lesson;               /* HOL_APP_HINT_LESSON: its hint on request
+                                 (the menu's button: the menu shows it; the
+                                 prompt names it; events.hint) */
     uint8_t route[HOL_APP_ROUTE_MAX];
     int nroute;
 } hol_app_level;
@@ -629,6 +633,8 @@ typedef struct hol_app_events {
                               untracked (core/hol_input.h) */
     double relocated_m;    /* with relocated: the head's floor distance
                               from where it last walked, metres */
+    int hint;              /* the menu opened on a lesson's walk that has a
+                              hint (HOL_APP_HINT_LESSON): the hint shown */
     int nlessons;          /* tutorial lessons done in this step */
     hol_app_lesson lessons[HOL_APP_TUTORIAL_STAGES];
     int outside;           /* the tracked head left the room (view.outside;
@@ -641,8 +647,10 @@ typedef struct hol_app_events {
 typedef struct hol_app hol_app;
 
 /* Wraps text at spaces into lines of at most cols (1..HOL_APP_TEXT_MAX-1)
- * characters (a word longer than a line is cut at the line's end and goes
- * on; runs of blanks at a wrap are dropped); writes at most max lines into
+ * characters (UTF-8: a character is a whole sequence, never cut, and a
+ * line also holds at most HOL_APP_TEXT_MAX-1 bytes; a word longer than a
+ * line is cut at the line's end and goes on; runs of blanks at a wrap are
+ * dropped); writes at most max lines into
  * out (NULL: none) and returns how many lines the whole text needs. */
 int hol_app_wrap(const char *text, int cols, char (*out)[HOL_APP_TEXT_MAX], int max);
 

@@ -8,6 +8,7 @@
 
 #include "hol_app_impl.h"
 #include "hol_ask.h"
+#include "hol_str.h"
 
 /* The marks of an item: likert (hi - lo) / step + 1, choice its count. */
 static int hol__marks(const hol_app_question *q)
@@ -207,8 +208,10 @@ void hol__ask_frame(hol_app *app, const hol_input *in, uint32_t pressed)
  * ends, on one line or two): never more than the HUD's 6 lines, none cut. */
 void hol__ask_lines(const hol_app *app, hol_app_hud *h)
 {
-    const hol_app_question *q = hol__ask_item(app);
+    hol_app_question said; /* a lesson's question in the view's language */
+    const hol_app_question *q = hol__lesson_item(app, hol__ask_item(app), &said);
     const hol_app_ask *a = &app->level.asks[app->ask_k];
+    const char *name = q == &said ? hol_str(hol__lang(app), HOL_S_PREDICT) : a->name;
     int marks = hol__marks(q), m = app->ask_mark, step = q->step > 0 ? q->step : 1;
     h->nlines = 0;
     char wrapped[3][HOL_APP_TEXT_MAX];
@@ -220,10 +223,12 @@ void hol__ask_lines(const hol_app *app, hol_app_hud *h)
         snprintf(val, sizeof val, "%s", q->choices[m]);
     else
         snprintf(val, sizeof val, "%d", q->lo + m * step);
+    hol__utf8_cut(val, 20);
     char line[128]; /* at most 45 characters: a value of 20, a name of 12 */
-    snprintf(line, sizeof line, "%s %.20s %s   %.12s %d/%d", m > 0 ? "<" : " ", val,
-             m < marks - 1 ? ">" : " ", a->name, app->ask_i + 1, a->n);
-    snprintf(h->lines[h->nlines++], HOL_APP_TEXT_MAX, "%.47s", line);
+    snprintf(line, sizeof line, "%s %s %s   %.12s %d/%d", m > 0 ? "<" : " ", val,
+             m < marks - 1 ? ">" : " ", name, app->ask_i + 1, a->n);
+    hol__utf8_cut(line, HOL_APP_TEXT_MAX - 1);
+    memcpy(h->lines[h->nlines++], line, strlen(line) + 1);
     if (q->kind == HOL_APP_LIKERT) {
         char both[2 * HOL_APP_TEXT_MAX];
         int len = snprintf(both, sizeof both, "%d %s, %d %s", q->lo, q->low, q->hi, q->high);

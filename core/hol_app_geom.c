@@ -25,6 +25,15 @@ void hol__yaw_pitch_from_quat(const float qf[4], double *yaw, double *pitch)
     *yaw = hol_atan2(-fx, -fz) * 180 / HOL__PI;
 }
 
+void hol__utf8_cut(char *s, size_t max)
+{
+    if (strlen(s) <= max)
+        return;
+    while (max > 0 && ((unsigned char)s[max] & 0xc0) == 0x80)
+        max--;
+    s[max] = 0;
+}
+
 int hol_app_wrap(const char *text, int cols, char (*out)[HOL_APP_TEXT_MAX], int max)
 {
     if (cols < 1)
@@ -36,12 +45,23 @@ int hol_app_wrap(const char *text, int cols, char (*out)[HOL_APP_TEXT_MAX], int 
     while (at < len && text[at] == ' ')
         at++;
     while (at < len) {
+        /* fit: the bytes of the first cols characters (a UTF-8 sequence
+         * whole) within a line's bytes; ASCII: cols bytes */
+        size_t fit = 0;
+        for (int c = 0; c < cols && at + fit < len; c++) {
+            size_t k = 1;
+            while (at + fit + k < len && ((unsigned char)text[at + fit + k] & 0xc0) == 0x80)
+                k++;
+            if (fit + k > HOL_APP_TEXT_MAX - 1)
+                break;
+            fit += k;
+        }
         size_t take = len - at;
-        if (take > (size_t)cols) {
-            size_t sp = (size_t)cols; /* the last space at or before cols */
+        if (take > fit) {
+            size_t sp = fit; /* the last space at or before the fit's end */
             while (sp > 0 && text[at + sp] != ' ')
                 sp--;
-            take = sp > 0 ? sp : (size_t)cols;
+            take = sp > 0 ? sp : fit;
         }
         size_t keep = take;
         while (keep > 0 && text[at + keep - 1] == ' ')

@@ -131,6 +131,17 @@ static inline int hol__lang(const hol_app *app)
     return app->level.lang > 0 ? app->level.lang - 1 : app->d.lang;
 }
 
+/* hol_app_lesson.c: a lesson level's text (its instructions, closing:
+ * part HOL_LESSON_WALK, _CHECK) in the view's language into out when text
+ * is the lesson's English one, else text; the predict item q likewise
+ * (into tmp); lesson HOL_APP_HINT_LESSON's hint into out (1; 0 for a
+ * level without). */
+const char *hol__lesson_say(const hol_app *app, const char *text, int part, char *out,
+                            size_t cap);
+const hol_app_question *hol__lesson_item(const hol_app *app, const hol_app_question *q,
+                                         hol_app_question *tmp);
+int hol__lesson_hint(const hol_app *app, char *out, size_t cap);
+
 /* hol_app_tutorial.c */
 int hol__next_stage(const hol_app *app, int k);
 void hol__stage(hol_app *app, int k, const hol_room *r);
@@ -179,6 +190,8 @@ void hol__fill_view(hol_app *app, const hol_input *in);
 
 /* hol_app_geom.c: a quaternion's yaw and pitch (degrees; left as they
  * were for a zero quaternion). */
+/* s cut to at most max bytes, never inside a UTF-8 sequence. */
+void hol__utf8_cut(char *s, size_t max);
 void hol__yaw_pitch_from_quat(const float qf[4], double *yaw, double *pitch);
 
 #endif

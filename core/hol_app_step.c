@@ -896,8 +896,11 @@ hol_err hol_app_step(hol_app *app, const hol_input *in)
         hol__fill_view(app, in);
         return HOL_OK;
     }
-    if (pressed & HOL_BTN_MENU)
+    if (pressed & HOL_BTN_MENU) {
         app->menu = !app->menu;
+        app->ev.hint = app->menu && v->state == HOL_APP_PLAYING &&
+                       app->level.lesson == HOL_APP_HINT_LESSON;
+    }
     if ((pressed & HOL_BTN_MINIMAP) && app->level.minimap_fixed) {
         app->ev.minimap_refused = 1; /* a condition's minimap holds */
         app->fixed_shown = 1;

@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "hol_app_impl.h"
+#include "hol_lesson.h"
 #include "hol_math.h"
 #include "hol_prompt.h"
 #include "hol_str.h"
@@ -67,7 +68,8 @@ static void hol__fill_eyes(hol_app *app, const hol_input *in)
 }
 
 /* The map held off by a study (`fixed minimap` with the map off), but
- * with desc.flow_v4: the tutorial does not send the player to it. */
+ * with desc.flow_v4: the tutorial does not send the player to it, nor
+ * says what its rings mean. */
 static int hol__map_held_off(const hol_app *app)
 {
     return !app->d.flow_v4 && app->level.minimap_fixed && app->level.minimap == HOL_MINIMAP_OFF;
@@ -150,6 +152,7 @@ static void hol__menu_hint(const hol_app *app, const hol_input *in, hol_app_hud 
 {
     const char *b = hol_prompt_button(app->device, HOL_BTN_MENU);
     if (!in || !b || app->device < HOL_DEVICE_XR_SIMPLE || app->menu ||
+        app->level.lesson == HOL_APP_HINT_LESSON || /* its prompt names the button */
         app->view.state != HOL_APP_PLAYING || !(in->time_s - app->device_t < HOL_APP_MENU_HINT_S))
         return;
     size_t len = strlen(h->hint);
@@ -245,6 +248,9 @@ static void hol__fill_status(hol_app *app, const hol_input *in, hol_app_hud *h)
     } else if (hol__lesson_prompt(app, h, 2)) {
         const hol__ask ask[1] = {{HOL_BTN_MINIMAP, 0, HOL_S_DO_MAP}};
         hol__prompt(app, h, ask, 1);
+    } else if (app->level.lesson == HOL_APP_HINT_LESSON && v->state == HOL_APP_PLAYING) {
+        const hol__ask ask[1] = {{HOL_BTN_MENU, 0, HOL_S_DO_HINT}}; /* the menu shows it */
+        hol__prompt(app, h, ask, 1);
     }
     hol__menu_hint(app, in, h);
     /* safety: a tracked head beyond the hedges; a play area too small */
@@ -274,10 +280,16 @@ static void hol__fill_lines(const hol_app *app, hol_app_hud *h)
         hol__ask_lines(app, h);
         return;
     }
+    char said[HOL_APP_SCREEN_TEXT];
     if (v->state == HOL_APP_SCREEN) { /* the screen's text, whole */
         const char *text = app->screen == HOL_APP_SCREEN_CLOSING ? app->level.closing
                            : app->screen == HOL_APP_SCREEN_READY ? hol_str(lang, HOL_S_READY)
                                                                  : app->level.instructions;
+        if (app->screen != HOL_APP_SCREEN_READY)
+            text = hol__lesson_say(app, text,
+                                   app->screen == HOL_APP_SCREEN_CLOSING ? HOL_LESSON_CHECK
+                                                                         : HOL_LESSON_WALK,
+                                   said, sizeof said);
         int n = hol_app_wrap(text, HOL_APP_SCREEN_COLS, h->lines, HOL_APP_HUD_LINES);
         h->nlines = n < HOL_APP_HUD_LINES ? n : HOL_APP_HUD_LINES;
         return;
@@ -286,6 +298,10 @@ static void hol__fill_lines(const hol_app *app, hol_app_hud *h)
     (h->nlines < HOL_APP_HUD_LINES                                                         \
          ? (void)snprintf(h->lines[h->nlines++], HOL_APP_TEXT_MAX, __VA_ARGS__)            \
          : (void)0)
+    if (app->menu && v->state == HOL_APP_PLAYING && hol__lesson_hint(app, said, sizeof said)) {
+        int n = hol_app_wrap(said, HOL_APP_SCREEN_COLS, h->lines, 3); /* the hint asked for */
+        h->nlines = n < 3 ? n : 3;
+    }
     if (h->feedback[0] &&
         (v->state != HOL_APP_DONE || !strcmp(h->feedback, hol_str(lang, HOL_S_FIXED))))
         HOL__LINE("%s", h->feedback);
@@ -342,8 +358,9 @@ static void hol__fill_hud(hol_app *app, const hol_input *in)
     snprintf(h->feedback, sizeof h->feedback, "%s",
              fixed ? hol_str(hol__lang(app), HOL_S_FIXED) : fb ? app->feedback : "");
     snprintf(h->note, sizeof h->note, "%s",
-             fb && !fixed && app->nmarks && app->rings_note ? hol_str(hol__lang(app), HOL_S_RINGS)
-                                                            : "");
+             fb && !fixed && app->nmarks && app->rings_note && !hol__map_held_off(app)
+                 ? hol_str(hol__lang(app), HOL_S_RINGS)
+                 : "");
     hol__fill_objective(app, h);
     hol__fill_status(app, in, h);
     hol__fill_lines(app, h);

@@ -10,7 +10,8 @@
  *   ID: 1..31 letters, digits, '_', '-', '.' (hol_ask_id_ok), not a preset's
  *   name; likert: integers LO < HI in 0..100, at most HOL_APP_MAX_SCALE marks
  *   (step 1); choice: 2..HOL_APP_MAX_CHOICES choices. Quoted fields: any
- *   printable ASCII but '"' (no escapes), TEXT 1..95 bytes, an anchor or a
+ *   printable ASCII but '"' and Latin-1 in UTF-8 (hol_face_text_bad; no
+ *   escapes), TEXT 1..95 bytes, an anchor or a
  *   choice 1..23; fields separated by blanks. hol_ask_parse_question fills
  *   *q or returns HOL_EPARSE / HOL_ERANGE with a message (msg, cap).
  * - Presets (hol_ask_preset): `ssq`, the 16 items of the Simulator Sickness

@@ -5,6 +5,8 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "hol_face.h"
+
 static int hol__word_is(const char *w, size_t n, const char *word)
 {
     return strlen(word) == n && !memcmp(w, word, n);
@@ -40,9 +42,8 @@ static int hol__text(int kind, const char *w, size_t n, char *out, size_t cap)
 {
     if (kind != 2 || n == 0 || n >= cap)
         return 1;
-    for (size_t i = 0; i < n; i++)
-        if ((unsigned char)w[i] < 0x20 || (unsigned char)w[i] > 0x7e)
-            return 1;
+    if (hol_face_text_bad(w, n, NULL) < n) /* printable ASCII and Latin-1 only */
+        return 1;
     memcpy(out, w, n);
     out[n] = 0;
     return 0;

@@ -2,6 +2,8 @@
  * wrapping (contract in hol_face.h). */
 #include "hol_face.h"
 
+#include <string.h>
+
 #include "hol_face_atlas.h"
 
 _Static_assert(sizeof hol__face_glyphs / sizeof hol__face_glyphs[0] == HOL_FACE_NGLYPH,
@@ -15,11 +17,28 @@ void hol_face_get_metrics(hol_face_metrics *out_metrics)
     *out_metrics = m;
 }
 
-const uint8_t *hol_face_atlas(int *out_w, int *out_h)
+_Static_assert(HOL_FACE_NTEXEL <= UINT16_MAX, "the glyphs' starts fit hol__face_texel_at");
+
+void hol_face_atlas(uint8_t *out_px, int *out_w, int *out_h)
 {
     *out_w = HOL_FACE_ATLAS_W;
     *out_h = HOL_FACE_ATLAS_H;
-    return hol__face_atlas;
+    if (!out_px)
+        return;
+    memset(out_px, HOL_FACE_CLEAR, (size_t)HOL_FACE_ATLAS_W * HOL_FACE_ATLAS_H);
+    for (int i = 0; i < HOL_FACE_NGLYPH; i++) {
+        const hol_face_glyph *g = &hol__face_glyphs[i];
+        for (int r = 0; r < g->h; r++)
+            memcpy(out_px + (size_t)(g->y + r) * HOL_FACE_ATLAS_W + g->x,
+                   hol__face_texels + hol__face_texel_at[i] + (size_t)r * g->w, g->w);
+    }
+}
+
+const uint8_t *hol_face_texels(int index)
+{
+    if (index < 0 || index >= HOL_FACE_NGLYPH)
+        index = 0;
+    return hol__face_texels + hol__face_texel_at[index];
 }
 
 float hol_face_em_per_cap(void)
@@ -78,6 +97,21 @@ uint32_t hol_face_decode(const char *text, size_t len, size_t *pos)
     }
     *pos = at + 1 + (size_t)tail;
     return cp;
+}
+
+size_t hol_face_text_bad(const char *s, size_t n, uint32_t *out_code)
+{
+    size_t pos = 0;
+    while (pos < n) {
+        size_t at = pos;
+        uint32_t c = hol_face_decode(s, n, &pos);
+        if (!((c >= 0x20 && c <= 0x7e) || (c >= 0xa0 && c <= 0xff))) {
+            if (out_code)
+                *out_code = c;
+            return at;
+        }
+    }
+    return n;
 }
 
 int hol_face_index(uint32_t code)

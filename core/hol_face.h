@@ -25,12 +25,21 @@
  *   the top; a texel is 128 + 128 * d / HOL_FACE_SPREAD clamped to 0..255,
  *   d the signed distance (atlas pixels, positive inside) to the outline
  *   at HOL_FACE_BAKE_EM atlas pixels per em. Each glyph's rectangle has a
- *   clear texel around it (bilinear filtering stays inside).
+ *   clear texel around it (bilinear filtering stays inside); the texels
+ *   outside every rectangle are 1 (far outside). The tables
+ *   hold only the rectangles' texels (hol_face_texels): hol_face_atlas
+ *   writes the whole atlas into the caller's memory.
  * - Wrapping (hol_face_wrap) breaks at spaces: a line holds as many words
  *   as fit the width; the spaces at a break are dropped; a word wider than
  *   the width alone is split between code points (at least one per line);
  *   '\n' ends a line. Lines are byte ranges of the input. A prompt's
  *   pairs are kept whole where they fit (hol_face_wrap_pairs).
+ * - hol_face_text_bad(s, n, &code) checks a designer's text (a level's or
+ *   a study's instructions, closing and questions: docs/levels.md): the
+ *   offset of its first code point that is neither printable ASCII
+ *   (U+0020..U+007E) nor a Latin-1 letter or sign (U+00A0..U+00FF), with
+ *   that code point (HOL_FACE_MALFORMED for a malformed byte) in *code;
+ *   n when every one is: the text draws with no box and no control.
  */
 #ifndef HOL_FACE_H
 #define HOL_FACE_H
@@ -68,13 +77,20 @@ typedef struct hol_face_line {
 } hol_face_line;
 
 void hol_face_get_metrics(hol_face_metrics *out_metrics);
-/* The atlas's bytes (see the contract); its size in out_w, out_h. */
-const uint8_t *hol_face_atlas(int *out_w, int *out_h);
+/* The atlas's size in out_w, out_h; when out_px is not NULL, its
+ * out_w * out_h bytes (see the contract) written there. */
+void hol_face_atlas(uint8_t *out_px, int *out_w, int *out_h);
+/* Glyph index's texels: the atlas's bytes of its rectangle, w * h, rows
+ * top to bottom (an index outside the set: the box's). */
+const uint8_t *hol_face_texels(int index);
 /* Ems per cap height: size = cap height * this. */
 float hol_face_em_per_cap(void);
 
 /* Reads the code point at text[*pos] (pos < len), advances *pos past it. */
 uint32_t hol_face_decode(const char *text, size_t len, size_t *pos);
+/* The first code point of s (n bytes) the face does not print (see the
+ * contract): its offset, or n. */
+size_t hol_face_text_bad(const char *s, size_t n, uint32_t *out_code);
 /* The glyph index of a code point (0, the box, when it has none). */
 int hol_face_index(uint32_t code);
 const hol_face_glyph *hol_face_glyph_at(int index);

@@ -9,6 +9,7 @@
 
 #include "hol_bearing.h"
 #include "hol_room.h"
+#include "hol_str.h"
 
 /* The lessons' routes as room steps (lesson 2's and 6's made per tiling). */
 static const char *const hol__routes[HOL_LESSONS] = {"NESW", "NWSE", "NWSE", "NESSWWNN",
@@ -111,24 +112,23 @@ void hol_lesson_scale(const hol_lesson_facts *f, int *lo, int *hi, int *step)
     *step = hol__scale[k][2];
 }
 
-/* The predict question as a level's item (questionnaire "predict"). */
-static hol_err hol__question(const hol_lesson_facts *f, hol_app_question *qn)
+hol_err hol_lesson_question(const hol_lesson_facts *f, int lang, hol_app_question *qn)
 {
     memset(qn, 0, sizeof *qn);
     snprintf(qn->id, sizeof qn->id, "lesson%d", f->lesson);
-    if (hol_lesson_text(f, HOL_LESSON_QUESTION, qn->text, sizeof qn->text) < 0)
+    if (hol_lesson_text(f, lang, HOL_LESSON_QUESTION, qn->text, sizeof qn->text) < 0)
         return HOL_ERANGE;
     if (f->choice) {
         qn->kind = HOL_APP_CHOICE;
         const char *c;
-        while (qn->nchoices < HOL_APP_MAX_CHOICES && (c = hol_lesson_label(f, qn->nchoices)))
+        while (qn->nchoices < HOL_APP_MAX_CHOICES && (c = hol_lesson_label(f, lang, qn->nchoices)))
             snprintf(qn->choices[qn->nchoices++], HOL_APP_LABEL_MAX, "%s", c);
         return HOL_OK;
     }
     qn->kind = HOL_APP_LIKERT;
     hol_lesson_scale(f, &qn->lo, &qn->hi, &qn->step);
-    snprintf(qn->low, sizeof qn->low, "%s", hol_lesson_label(f, 0));
-    snprintf(qn->high, sizeof qn->high, "%s", hol_lesson_label(f, 1));
+    snprintf(qn->low, sizeof qn->low, "%s", hol_lesson_label(f, lang, 0));
+    snprintf(qn->high, sizeof qn->high, "%s", hol_lesson_label(f, lang, 1));
     return HOL_OK;
 }
 
@@ -138,9 +138,10 @@ hol_err hol_lesson_fill(int n, int q, hol_app_level *L)
     hol_err e = L ? hol_lesson_facts_of(n, q, &f) : HOL_EARG;
     if (e)
         return e;
-    if (hol__question(&f, &L->questions[0]) ||
-        hol_lesson_text(&f, HOL_LESSON_WALK, L->instructions, sizeof L->instructions) < 0 ||
-        hol_lesson_text(&f, HOL_LESSON_CHECK, L->closing, sizeof L->closing) < 0)
+    if (hol_lesson_question(&f, HOL_LANG_EN, &L->questions[0]) ||
+        hol_lesson_text(&f, HOL_LANG_EN, HOL_LESSON_WALK, L->instructions,
+                        sizeof L->instructions) < 0 ||
+        hol_lesson_text(&f, HOL_LANG_EN, HOL_LESSON_CHECK, L->closing, sizeof L->closing) < 0)
         return HOL_ERANGE;
     L->mode = HOL_APP_EXPLORE;
     L->lesson = n;

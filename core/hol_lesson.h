@@ -25,9 +25,15 @@
  *   the walk's instructions, lesson 3's pointing question (point start),
  *   and the check as the closing screen. Every text fits its screen
  *   (HOL_APP_SCREEN_LINES lines of HOL_APP_SCREEN_COLS).
- * - hol_lesson_text expands a lesson's text of the string table
- *   (hol_lesson_text.c: every text a lesson shows, one table) with its
- *   facts: {name} places a fact (hol_lesson_text.c lists them).
+ *   The level holds the English texts (the logged choice is the English
+ *   label, as every log is English); the app shows them in its language
+ *   (hol_lesson_question, hol_lesson_text with hol_app's language).
+ * - hol_lesson_text expands a lesson's text in a language (HOL_LANG_*,
+ *   core/hol_str.h; hol_lesson_text.c: every text a lesson shows, one
+ *   table with English, German and Dutch side by side; a build without
+ *   Dutch and a lang out of range read English) with its facts: {name}
+ *   places a fact (hol_lesson_text.c lists them). Every language's text
+ *   fits where the English one does (tests/test_str.c).
  * - Pure: no allocation, no I/O, no globals but constant tables.
  */
 #ifndef HOL_LESSON_H
@@ -78,16 +84,25 @@ enum hol_lesson_part {
 
 /* Part `part` of lesson f->lesson, expanded with f into out (cap bytes,
  * NUL-terminated): its length, or -1 when it does not fit. */
-int hol_lesson_text(const hol_lesson_facts *f, int part, char *out, size_t cap);
-/* The predict question's choices (f->choice) or the scale's anchors: the
- * k-th label (k from 0), or NULL past the last. */
-const char *hol_lesson_label(const hol_lesson_facts *f, int k);
+int hol_lesson_text(const hol_lesson_facts *f, int lang, int part, char *out, size_t cap);
+/* The predict question's choices (f->choice) or the scale's anchors in
+ * lang: the k-th label (k from 0), or NULL past the last. */
+const char *hol_lesson_label(const hol_lesson_facts *f, int lang, int k);
+/* The table's raw entry k of lesson n in lang, for tests/test_str.c: k
+ * below HOL_LESSON_PARTS + HOL_APP_MAX_CHOICES a part or a label, then
+ * (with n 1) the words facts are said in; NULL for none (or a language
+ * the build leaves out). */
+const char *hol_lesson_entry(int n, int lang, int k);
+/* The predict question of f's lesson in lang as a level's item (id
+ * "lessonN", its text, choices or scale). Errors: HOL_ERANGE (a text does
+ * not fit the item). */
+hol_err hol_lesson_question(const hol_lesson_facts *f, int lang, hol_app_question *qn);
 /* The scale of a number question: lo, hi, step. */
 void hol_lesson_scale(const hol_lesson_facts *f, int *lo, int *hi, int *step);
 
-/* Lesson n in {4,q} as a level's fields (see the contract): writes mode,
- * route, questions, asks, instructions, closing and point of *L, nothing
- * else. Errors: HOL_EARG. */
+/* Lesson n in {4,q} as a level's fields (see the contract), in English:
+ * writes mode, route, questions, asks, instructions, closing and point of
+ * *L, nothing else. Errors: HOL_EARG. */
 hol_err hol_lesson_fill(int n, int q, hol_app_level *L);
 
 #endif

@@ -31,7 +31,11 @@
  *   `sha256sum` of a file with LF line ends. The hash covers the text up
  *   to a line HOL_LEVEL_LAST_MARK (hashed bytes; all without one), so a
  *   study's level has one hash whether or not it is the participant's
- *   last (issue 35). A study's labels start empty.
+ *   last (issue 35), and skips the lines from HOL_LEVEL_FIRST_MARK to
+ *   HOL_LEVEL_FIRST_END (both included: the participant's first level's),
+ *   so it has one hash at every position too. hol_level_hashed_text writes
+ *   the hashed bytes (what `sha256sum` of level-HASH.txt reads). A study's
+ *   labels start empty.
  * - Pure: no allocation, no I/O, no globals.
  */
 #ifndef HOL_LEVEL_H
@@ -51,6 +55,11 @@
 /* The line before a study's lines for a participant's last level (its
  * closing, its questionnaires `after study`): the hash stops there. */
 #define HOL_LEVEL_LAST_MARK "# the participant's last level (not in level_sha256):"
+/* The lines around a study's lines for a participant's first level (its
+ * questionnaires `before study`, when it has no practice): the hash skips
+ * them, marks included. */
+#define HOL_LEVEL_FIRST_MARK "# the participant's first level (not in level_sha256):"
+#define HOL_LEVEL_FIRST_END "# the participant's first level: end"
 
 typedef struct hol_level_err {
     hol_err code;
@@ -65,7 +74,9 @@ typedef struct hol_level {
     char text[HOL_LEVEL_TEXT_MAX + 2]; /* LF line ends, NUL-terminated */
     size_t len;
     uint8_t sha256[32];
-    size_t hashed; /* the bytes of text sha256 covers (see above) */
+    size_t hashed; /* text's bytes up to the last level's mark (see above) */
+    size_t cut_from, cut_to; /* text's bytes [cut_from, cut_to) the hash
+                                skips (the first level's lines); 0, 0 */
     hol_app_level lvl;
     /* a study's labels (core/hol_study.h): the condition it is played
      * under and its position in the participant's order; "" and 0 outside
@@ -137,6 +148,9 @@ hol_err hol_level_make(const char *name, size_t name_len, const char *text, size
  * otherwise (q, cols and rows are ignored for it), on every platform. */
 hol_err hol_level_parse_cell(const char *s, size_t len, double *out_m);
 char *hol_level_format_cell(double m, char out[16]);
+/* The bytes lv's SHA-256 covers (see above) into out; their count. */
+size_t hol_level_hashed_text(const hol_level *lv, char out[HOL_LEVEL_TEXT_MAX + 2]);
+
 hol_err hol_level_set_geometry(hol_level *lv, int q, int cols, int rows, double cell_m,
                                hol_level_err *err);
 

@@ -5,6 +5,7 @@
 
 #include <string.h>
 
+#include "hol_face.h"
 #include "hol_lesson.h"
 #include "hol_quiz.h"
 #include "hol_room.h"
@@ -261,7 +262,8 @@ hol_err hol__key_point(hol__lp *p, char **f, int nf)
 }
 
 /* instructions TEXT, closing TEXT: the rest of the line (hol_app.h:
- * screens), checked: printable ASCII, wrapped whole on the HUD. */
+ * screens), checked: printable ASCII and Latin-1 in UTF-8 (the face's:
+ * hol_face_text_bad), wrapped whole on the HUD. */
 hol_err hol__key_text(hol__lp *p, char **f, int nf)
 {
     (void)nf;
@@ -279,11 +281,16 @@ hol_err hol__key_text(hol__lp *p, char **f, int nf)
     if (n > HOL_APP_SCREEN_TEXT - 1)
         return hol__lfail(p, HOL_ERANGE, p->line, "%s: longer than %d characters", f[0],
                           HOL_APP_SCREEN_TEXT - 1);
-    for (size_t i = 0; i < n; i++)
-        if ((unsigned char)r[i] < 0x20 || (unsigned char)r[i] > 0x7e || r[i] == '\t')
-            return hol__lfail(p, HOL_EPARSE, p->line,
-                              "%s: only printable ASCII and spaces (the HUD's font), not byte "
-                              "0x%02x", f[0], (unsigned char)r[i]);
+    uint32_t c;
+    size_t bad = hol_face_text_bad(r, n, &c);
+    if (bad < n && (c < 0x80 || c == HOL_FACE_MALFORMED))
+        return hol__lfail(p, HOL_EPARSE, p->line,
+                          "%s: only printable ASCII, spaces and Latin-1 letters in UTF-8 (the "
+                          "HUD's font), not byte 0x%02x", f[0], (unsigned char)r[bad]);
+    if (bad < n)
+        return hol__lfail(p, HOL_EPARSE, p->line,
+                          "%s: only printable ASCII, spaces and Latin-1 letters in UTF-8 (the "
+                          "HUD's font), not U+%04X", f[0], (unsigned)c);
     memcpy(out, r, n);
     out[n] = 0;
     int lines = hol_app_wrap(out, HOL_APP_SCREEN_COLS, NULL, 0);

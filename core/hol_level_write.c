@@ -8,19 +8,50 @@
 
 #include "hol_sha256.h"
 
-/* The bytes of text the hash covers: up to the line HOL_LEVEL_LAST_MARK
- * (a study's lines for a participant's last level), else all. */
-static size_t hol__level_hashed(const char *text, size_t len)
+/* The start of text's line that is exactly mark m (from byte from on),
+ * its end in *out_end; len when none. */
+static size_t hol__level_line(const char *text, size_t len, size_t from, const char *m,
+                              size_t *out_end)
 {
-    size_t m = sizeof HOL_LEVEL_LAST_MARK - 1;
-    for (size_t o = 0; o < len;) {
+    size_t mn = strlen(m);
+    for (size_t o = from; o < len;) {
         const char *nl = memchr(text + o, '\n', len - o);
         size_t n = (size_t)((nl ? nl : text + len) - (text + o));
-        if (n == m && !memcmp(text + o, HOL_LEVEL_LAST_MARK, m))
+        if (n == mn && !memcmp(text + o, m, mn)) {
+            *out_end = o + n + (nl != NULL);
             return o;
+        }
         o += n + 1;
     }
+    *out_end = len;
     return len;
+}
+
+/* The bytes of text the hash covers: up to the line HOL_LEVEL_LAST_MARK
+ * (a study's lines for a participant's last level), else all, but the
+ * lines from HOL_LEVEL_FIRST_MARK to HOL_LEVEL_FIRST_END (a participant's
+ * first level's) before it. */
+static void hol__level_hashed(hol_level *lv)
+{
+    size_t e;
+    lv->hashed = hol__level_line(lv->text, lv->len, 0, HOL_LEVEL_LAST_MARK, &e);
+    size_t a = hol__level_line(lv->text, lv->hashed, 0, HOL_LEVEL_FIRST_MARK, &e);
+    size_t b = a < lv->hashed ? hol__level_line(lv->text, lv->hashed, e, HOL_LEVEL_FIRST_END, &e)
+                              : lv->hashed;
+    lv->cut_from = lv->cut_to = 0;
+    if (b < lv->hashed)
+        lv->cut_from = a, lv->cut_to = e;
+}
+
+size_t hol_level_hashed_text(const hol_level *lv, char out[HOL_LEVEL_TEXT_MAX + 2])
+{
+    size_t n = lv->cut_to > lv->cut_from ? lv->cut_from : lv->hashed;
+    memcpy(out, lv->text, n);
+    if (lv->cut_to > lv->cut_from) {
+        memcpy(out + n, lv->text + lv->cut_to, lv->hashed - lv->cut_to);
+        n += lv->hashed - lv->cut_to;
+    }
+    return n;
 }
 
 hol_err hol_level_make(const char *name, size_t name_len, const char *text, size_t len,
@@ -63,8 +94,9 @@ hol_err hol_level_make(const char *name, size_t name_len, const char *text, size
     out->condition[0] = 0;
     out->position = 0;
     out->added = 0;
-    out->hashed = hol__level_hashed(out->text, out->len);
-    hol_sha256(out->text, out->hashed, out->sha256);
+    hol__level_hashed(out);
+    char hashed[HOL_LEVEL_TEXT_MAX + 2];
+    hol_sha256(hashed, hol_level_hashed_text(out, hashed), out->sha256);
     return HOL_OK;
 }
 

@@ -80,7 +80,8 @@ void hol__log_levels(hol_session *s)
             seen |= !memcmp(s->levels[j].sha256, s->levels[i].sha256, 32);
         if (seen)
             continue;
-        hol__put_file(s, live, 0, s->levels[i].text, s->levels[i].hashed);
+        char text[HOL_LEVEL_TEXT_MAX + 2];
+        hol__put_file(s, live, 0, text, hol_level_hashed_text(&s->levels[i], text));
         hol__rename(s, live, name);
     }
 }
@@ -310,6 +311,8 @@ static void hol__events(hol_session *s, const hol_app_events *ev, const hol_app_
         hol__event_row(s, "minimap", place, v->hud.elapsed_s);
     if (ev->minimap_refused)
         hol__event_row(s, "minimap-fixed", place, v->hud.elapsed_s);
+    if (ev->hint)
+        hol__event_row(s, "hint", "lesson6", v->hud.elapsed_s);
     if (ev->relocated) {
         char m[32];
         snprintf(m, sizeof m, "%.3f", ev->relocated_m);

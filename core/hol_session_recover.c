@@ -158,6 +158,36 @@ static hol_err hol__read_lines(const hol_sink *k, const char *name, hol__lines *
     }
 }
 
+/* A time field [-]D[.D] as written by the logs (%.4f, %.1f): its digits
+ * as an integer (below 2^53, so exact) divided by a power of ten (at most 10^22),
+ * both exact, so the result is the double nearest the text, as strtod
+ * gives it; any other text (an exponent, more digits, none) reads as 0
+ * (no strtod: on the web its long double scanner is 5 KB of the
+ * transfer). */
+static double hol__decimal(const char *p, size_t n)
+{
+    size_t i = n > 0 && p[0] == '-';
+    int digits = 0, frac = -1;
+    double v = 0, scale = 1;
+    for (; i < n; i++) {
+        if (p[i] == '.' && frac < 0) {
+            frac = 0;
+            continue;
+        }
+        if (p[i] < '0' || p[i] > '9' || v > 9e14 || frac >= 22)
+            return 0;
+        v = v * 10 + (p[i] - '0');
+        digits++;
+        if (frac >= 0) {
+            frac++;
+            scale *= 10;
+        }
+    }
+    if (!digits)
+        return 0;
+    return p[0] == '-' ? -(v / scale) : v / scale;
+}
+
 /* The k-th comma-separated field counted from the line's end (0: the
  * last), as a number; the fields after a level name hold no comma. */
 static double hol__field_right(const char *line, size_t n, int k)
@@ -172,11 +202,7 @@ static double hol__field_right(const char *line, size_t n, int k)
     const char *b = end;
     while (b > line && b[-1] != ',')
         b--;
-    char num[64];
-    size_t fl = (size_t)(end - b) < sizeof num ? (size_t)(end - b) : sizeof num - 1;
-    memcpy(num, b, fl);
-    num[fl] = 0;
-    return strtod(num, NULL);
+    return hol__decimal(b, (size_t)(end - b));
 }
 
 /* ---- recovery of one attempt ------------------------------------------------------ */

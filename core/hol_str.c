@@ -13,11 +13,7 @@
 #endif
 /* A build without Dutch (the web's: Makefile WEB_LANGS) keeps no Dutch
  * text: hol_str reads English for it, hol_lang_parse does not take "nl". */
-#ifdef HOL_STR_NO_NL
-#define HOL__NL(s) NULL
-#else
-#define HOL__NL(s) s
-#endif
+#define HOL__NL(s) HOL_STR_NL(s)
 
 /* One row an id, in the order of enum hol_lang: English (the app's words
  * before the table, byte for byte), German (du, as a class is spoken to),
@@ -164,6 +160,9 @@ static const char *const hol__rows[HOL__NSTR][HOL_LANG_COUNT] = {
     [HOL_S_DO_MENU] = {"menu",
                        "Menü",
                        HOL__NL("menu")},
+    [HOL_S_DO_HINT] = {"hint",
+                       "Tipp",
+                       HOL__NL("tip")},
     [HOL_S_DO_MAP] = {"map on the HUD, in the hand, off",
                       "Karte im HUD, in der Hand, aus",
                       HOL__NL("kaart in de HUD, in de hand, uit")},
@@ -197,6 +196,9 @@ static const char *const hol__rows[HOL__NSTR][HOL_LANG_COUNT] = {
     [HOL_S_CAP_BEACON] = {"[Sound: beacons pip at the goals]",
                           "[Ton: Signale piepen an den Zielen]",
                           HOL__NL("[Geluid: bakens piepen bij de doelen]")},
+    [HOL_S_PREDICT] = {"predict",
+                       "Vorhersage",
+                       HOL__NL("voorspelling")},
     [HOL_S_PAUSE_UNFOCUSED] = {"the window is not focused",
                                "das Fenster ist nicht im Fokus",
                                HOL__NL("het venster heeft geen focus")},
@@ -324,6 +326,12 @@ static const char *const hol__rows[HOL__NSTR][HOL_LANG_COUNT] = {
     [HOL_S_PAGE_NO_START] = {"cannot start the game",
                              "das Spiel startet nicht",
                              HOL__NL("het spel start niet")},
+    [HOL_S_PAGE_LESSONS] = {"Lessons…",
+                            "Lektionen…",
+                            HOL__NL("Lessen…")},
+    [HOL_S_PAGE_LESSONS_WHY] = {"Lessons for a class (docs/teaching.md)",
+                                "Lektionen für eine Klasse (docs/teaching.md)",
+                                HOL__NL("Lessen voor een klas (docs/teaching.md)")},
 #endif
 };
 

@@ -84,6 +84,7 @@ typedef enum hol_str_id {
     HOL_S_DO_ANSWER,
     HOL_S_DO_NEXT_LEVEL,
     HOL_S_DO_AGAIN,
+    HOL_S_DO_HINT,        /* lesson 6's hint on request (the menu's button) */
     HOL_S_DO_MENU,
     HOL_S_DO_MAP,
     /* the HUD's lines (hol_app_hud.lines; 47 bytes) */
@@ -98,6 +99,8 @@ typedef enum hol_str_id {
     HOL_S_CAP_CHEST,
     HOL_S_CAP_FLAG,
     HOL_S_CAP_BEACON,     /* beacons sound at the objectives */
+    /* a lesson's predict question's questionnaire name (12 bytes) */
+    HOL_S_PREDICT,
     /* the web page's (platform/web/page.js; its copy made by
      * tests/gen_page_text.c) and its pauses' reasons, after "Paused: " */
     HOL_S_PAUSE_UNFOCUSED,
@@ -142,12 +145,22 @@ typedef enum hol_str_id {
     HOL_S_PAGE_NO_LEVEL,
     HOL_S_PAGE_NO_GAME,
     HOL_S_PAGE_NO_START,
+    HOL_S_PAGE_LESSONS,   /* the bar's lesson list (docs/teaching.md) */
+    HOL_S_PAGE_LESSONS_WHY,
     HOL_S_COUNT
 } hol_str_id;
 
 /* The first of the page's ids: from it on the browser draws the text (in
  * its own fonts: not limited to the face's glyphs, nor to a buffer). */
 #define HOL_S_PAGE_FIRST HOL_S_PAUSE_UNFOCUSED
+
+/* A Dutch entry of a table of the languages (this one, the lessons'):
+ * NULL in a build without Dutch (see the contract). */
+#ifdef HOL_STR_NO_NL
+#define HOL_STR_NL(s) NULL
+#else
+#define HOL_STR_NL(s) s
+#endif
 
 const char *hol_str(int lang, hol_str_id id);
 /* The buffer (bytes with the NUL) the id's text is written into. */

@@ -782,6 +782,15 @@ static int hol__put_question(const hol_study *s, const char *id, size_t n, hol__
     return 0;
 }
 
+/* The study's questionnaire NAME (its items), NULL for a preset. */
+static const hol_study_questionnaire *hol__qn(const hol_study *s, const char *name)
+{
+    for (int j = 0; j < s->nquestionnaires; j++)
+        if (!strcmp(s->questionnaires[j].name, name))
+            return &s->questionnaires[j];
+    return NULL;
+}
+
 /* The order questionnaires are put in: before study, condition, level;
  * then after level, condition, study. */
 static const int hol__whens[HOL_APP_ASK_WHENS] = {
@@ -800,10 +809,7 @@ static int hol__put_asks(const hol_study *s, int c, int i, int position, hol__co
             int when = hol__whens[w];
             if (a->when != when || !hol__ask_due(s, k, c, i, position))
                 continue;
-            const hol_study_questionnaire *d = NULL;
-            for (int j = 0; j < s->nquestionnaires; j++)
-                if (!strcmp(s->questionnaires[j].name, a->name))
-                    d = &s->questionnaires[j];
+            const hol_study_questionnaire *d = hol__qn(s, a->name);
             char line[HOL_STUDY_LINE_MAX + 64];
             int n = snprintf(line, sizeof line, "ask %s %s", a->name, hol_ask_when_name(when));
             if (d) {
@@ -821,6 +827,61 @@ static int hol__put_asks(const hol_study *s, int c, int i, int position, hol__co
     return 0;
 }
 
+/* Is question ID [id, id+n) an item of a questionnaire `before study`? */
+static int hol__baseline_item(const hol_study *s, const char *id, size_t n)
+{
+    for (int k = 0; k < s->nasks; k++) {
+        const hol_study_questionnaire *d = hol__qn(s, s->asks[k].name);
+        const char *q = d ? s->text + d->items.off : NULL, *end = d ? q + d->items.len : NULL, *f;
+        size_t kn;
+        while (d && s->asks[k].when == HOL_APP_BEFORE_STUDY && (kn = hol__field(&q, end, &f)) > 0)
+            if (kn == n && !memcmp(f, id, n))
+                return 1;
+    }
+    return 0;
+}
+
+/* A condition's level without a practice: the questions the questionnaires
+ * `before study` share with those due with level i but at the study's
+ * ends (before or after its condition or itself), put before the first
+ * level's own lines at every position, so that what follows the first
+ * level's mark adds only lines (its hash the other positions'). 1 when
+ * they do not fit. */
+static int hol__put_shared(const hol_study *s, int c, int i, int position, hol__compose *cp,
+                           unsigned char *put)
+{
+    for (int w = 1; w < HOL_APP_ASK_WHENS - 1 && c >= 0 && !s->npractice; w++)
+        for (int k = 0; k < s->nasks; k++) {
+            const hol_study_questionnaire *d = hol__qn(s, s->asks[k].name);
+            if (!d || s->asks[k].when != hol__whens[w] || !hol__ask_due(s, k, c, i, position))
+                continue;
+            const char *q = s->text + d->items.off, *end = q + d->items.len, *id;
+            size_t kn;
+            while ((kn = hol__field(&q, end, &id)) > 0)
+                if (hol__baseline_item(s, id, kn) && hol__put_question(s, id, kn, cp, put))
+                    return 1;
+        }
+    return 0;
+}
+
+/* The questionnaires `before study` due with a condition's level i
+ * between HOL_LEVEL_FIRST_MARK and HOL_LEVEL_FIRST_END (outside the
+ * level's hash); a practice's level has them as they are (every
+ * participant's first). 1 when they do not fit. */
+static int hol__put_baseline(const hol_study *s, int c, int i, int position, hol__compose *cp,
+                             unsigned char *put)
+{
+    int due = 0;
+    for (int k = 0; k < s->nasks; k++)
+        due |= s->asks[k].when == HOL_APP_BEFORE_STUDY && hol__ask_due(s, k, c, i, position);
+    long at = c >= 0 ? -s->conditions[c].line : 0;
+    if (due && c >= 0 && hol__put_line(cp, HOL_LEVEL_FIRST_MARK, sizeof HOL_LEVEL_FIRST_MARK - 1, at))
+        return 1;
+    if (hol__put_asks(s, c, i, position, cp, 0, 1, put))
+        return 1;
+    return due && c >= 0 && hol__put_line(cp, HOL_LEVEL_FIRST_END, sizeof HOL_LEVEL_FIRST_END - 1, at);
+}
+
 /* Is a questionnaire `after study` due after level i? */
 static int hol__study_ask_due(const hol_study *s, int c, int i, int position)
 {
@@ -831,7 +892,8 @@ static int hol__study_ask_due(const hol_study *s, int c, int i, int position)
 }
 
 /* The screen lines of level i after its text: its questionnaires (but
- * those after the study), its instructions, then what only the
+ * those after the study; those before it, on a condition's level, between
+ * the first level's marks), its instructions, then what only the
  * participant's last level carries (the questionnaires `after study`, the
  * closing) after HOL_LEVEL_LAST_MARK, outside the level's hash. 1 when
  * they do not fit. */
@@ -839,7 +901,9 @@ static int hol__put_screens(const hol_study *s, int c, int i, int position, hol_
 {
     unsigned char put[HOL_STUDY_MAX_QUESTIONS] = {0};
     cp->stage = "questions asked after it";
-    if (hol__put_asks(s, c, i, position, cp, 0, HOL_APP_ASK_WHENS - 1, put))
+    if (hol__put_shared(s, c, i, position, cp, put) ||
+        hol__put_baseline(s, c, i, position, cp, put) ||
+        hol__put_asks(s, c, i, position, cp, 1, HOL_APP_ASK_WHENS - 1, put))
         return 1;
     const hol_study_span *a = hol__instr_of(s, c, i), *b = hol__closing_of(s, c, i, position);
     cp->stage = "instructions";

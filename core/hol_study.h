@@ -28,7 +28,8 @@
  *                             shown before the first level of the practice
  *                             or the condition until confirm (a level line,
  *                             hol_app_level.instructions: the rest of the
- *                             line, printable ASCII, at most 6 lines of 46
+ *                             line, printable ASCII and Latin-1 in UTF-8,
+ *                             at most 6 lines of 46
  *                             characters when wrapped; checked as a level
  *                             line)
  *     question ID ...         before the first condition: a questionnaire
@@ -75,7 +76,12 @@
  *   condition's last level) the line HOL_LEVEL_LAST_MARK, then the
  *   questionnaires `after study` and the study's `closing` line (the
  *   file's own left out): the level's hash stops at the mark, so a level
- *   has one SHA-256 at every position (issue 35). With none of these the text is the file's, unchanged (the same
+ *   has one SHA-256 at every position (issue 35). The questionnaires
+ *   `before study` on a condition's level (the participant's first, no
+ *   practice) are between HOL_LEVEL_FIRST_MARK and HOL_LEVEL_FIRST_END,
+ *   which the hash skips, where they were (before the other
+ *   questionnaires); a question they share with another questionnaire of
+ *   the level comes before the first mark at every position. With none of these the text is the file's, unchanged (the same
  *   SHA-256); practice levels are the files as they are but for their
  *   instructions and the first one's `before study` questionnaires.
  * - Counterbalancing (hol_study_order, hol_study_square): participant

@@ -6,12 +6,15 @@
  * condition; every participant's order (the first rows and a far one) is a
  * permutation and their session holds every level once; each level made
  * from a fixed level file either succeeds, labelled with its condition and
- * position, or is refused naming a line of the file it blames. Parsing
- * again gives the same study.
+ * position, or is refused naming a line of the file it blames; a made
+ * level's screens and questions hold only what the text face draws
+ * (printable ASCII and Latin-1 in UTF-8: hol_face_text_bad) and its
+ * screens wrap within the HUD's lines. Parsing again gives the same study.
  */
 #include <stdint.h>
 #include <string.h>
 
+#include "../core/hol_face.h"
 #include "../core/hol_study.h"
 
 #include "fuzz_check.h"
@@ -42,6 +45,18 @@ static void check_levels(void)
         }
         CHECK(!strcmp(L.condition, c < 0 ? HOL_STUDY_PRACTICE : s.conditions[c].name));
         CHECK(L.position == (c < 0 ? 0 : 3));
+        const char *texts[2] = {L.lvl.instructions, L.lvl.closing};
+        for (int k = 0; k < 2; k++) {
+            CHECK(hol_face_text_bad(texts[k], strlen(texts[k]), NULL) == strlen(texts[k]));
+            CHECK(hol_app_wrap(texts[k], HOL_APP_SCREEN_COLS, NULL, 0) <= HOL_APP_SCREEN_LINES);
+        }
+        for (int q = 0; q < L.lvl.nquestions; q++) {
+            const hol_app_question *qn = &L.lvl.questions[q];
+            CHECK(hol_face_text_bad(qn->text, strlen(qn->text), NULL) == strlen(qn->text));
+            for (int j = 0; j < qn->nchoices; j++)
+                CHECK(hol_face_text_bad(qn->choices[j], strlen(qn->choices[j]), NULL) ==
+                      strlen(qn->choices[j]));
+        }
     }
 }
 

@@ -10,20 +10,18 @@ static float hol__clampf(float v, float lo, float hi)
     return v < lo ? lo : v > hi ? hi : v;
 }
 
-/* The atlas's value at (u, v) inside glyph g's rectangle, bilinear, texel
- * centres at half pixels, clamped to the rectangle. */
-static float hol__sample(const hol_face_glyph *g, float u, float v)
+/* The atlas's value at (u, v) inside glyph index gi's rectangle g,
+ * bilinear, texel centres at half pixels, clamped to the rectangle. */
+static float hol__sample(int gi, const hol_face_glyph *g, float u, float v)
 {
-    int aw, ah;
-    const uint8_t *atlas = hol_face_atlas(&aw, &ah);
-    (void)ah;
+    const uint8_t *texels = hol_face_texels(gi);
     float fx = hol__clampf(u - 0.5f, 0.0f, (float)(g->w - 1));
     float fy = hol__clampf(v - 0.5f, 0.0f, (float)(g->h - 1));
     int x0 = (int)fx, y0 = (int)fy;
     int x1 = x0 + 1 < g->w ? x0 + 1 : x0, y1 = y0 + 1 < g->h ? y0 + 1 : y0;
     float tx = fx - (float)x0, ty = fy - (float)y0;
-    const uint8_t *r0 = atlas + (size_t)(g->y + y0) * (size_t)aw + g->x;
-    const uint8_t *r1 = atlas + (size_t)(g->y + y1) * (size_t)aw + g->x;
+    const uint8_t *r0 = texels + (size_t)y0 * g->w;
+    const uint8_t *r1 = texels + (size_t)y1 * g->w;
     float top = r0[x0] + (r0[x1] - r0[x0]) * tx;
     float bot = r1[x0] + (r1[x1] - r1[x0]) * tx;
     return top + (bot - top) * ty;
@@ -36,7 +34,7 @@ float hol_face_coverage(int g, float u, float v, float edge)
         return 0.0f;
     hol_face_metrics m;
     hol_face_get_metrics(&m);
-    float d = (hol__sample(gl, u, v) - 128.0f) * (float)m.spread / 128.0f;
+    float d = (hol__sample(g, gl, u, v) - 128.0f) * (float)m.spread / 128.0f;
     float e = edge > 1e-6f ? edge : 1e-6f;
     float t = hol__clampf(d / e + 0.5f, 0.0f, 1.0f);
     return t * t * (3.0f - 2.0f * t);

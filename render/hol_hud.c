@@ -94,7 +94,7 @@ static hol__face hol__face_get(void)
     hol__face f;
     int w, h;
     hol_face_get_metrics(&f.m);
-    hol_face_atlas(&w, &h);
+    hol_face_atlas(NULL, &w, &h);
     f.aw = (float)w;
     f.ah = (float)h;
     return f;

@@ -11,11 +11,17 @@
 #include "hol_render_int.h"
 
 /* The text face's atlas (core/hol_face.h) as one R8 texture: linear,
- * clamped, rows of one byte aligned to 1 (WebGL 2's default is 4). */
+ * clamped, rows of one byte aligned to 1 (WebGL 2's default is 4). Its
+ * bytes are written into the vertex store, which holds nothing yet (every
+ * mesh is written before it is drawn). */
 static void hol__make_atlas(hol_render *r)
 {
     int w, h;
-    const uint8_t *px = hol_face_atlas(&w, &h);
+    uint8_t *px = (uint8_t *)r->verts;
+    hol_face_atlas(NULL, &w, &h);
+    if ((size_t)w * (size_t)h > (HOL__DYN_V + HOL__ROOM_V) * sizeof *r->verts)
+        return; /* never: the atlas is 60 KB, the store megabytes */
+    hol_face_atlas(px, &w, &h);
     r->gl.GenTextures(1, &r->atlas);
     r->gl.ActiveTexture(GL_TEXTURE0);
     r->gl.BindTexture(GL_TEXTURE_2D, r->atlas);

@@ -8,7 +8,9 @@
 #   every report codebook.csv, build.csv and a footer naming the build;
 # - every column of every CSV written in those folders (parsed from each
 #   file's header line) is in the codebook.csv written beside it, and the
-#   check fails when one row is taken out of a codebook.
+#   check fails when one row is taken out of a codebook; each report CSV's
+#   header is its codebook rows' columns in order, from the writers' table
+#   (no writer has its header as a literal).
 . "$(dirname "$0")/lib.sh"
 SRC=$(cd "$(dirname "$0")" && pwd)
 H=$(cd "$(dirname "$H")" && pwd)/$(basename "$H")
@@ -106,5 +108,16 @@ check_folder R attempts.csv conditions.csv stats.csv learning.csv participants.c
 [ "$(sed -n 2p R/build.csv)" = "holonomy,$(sed 's/^holonomy \([^ ]*\) (commit \([^,]*\), built \(.*\))$/\1,\2,\3/' v)" ] &&
     ok || bad "build.csv: $(cat R/build.csv)"
 grep -q "<footer><p>Made by holonomy .*commit $commit" R/index.html && ok || bad "index.html has no footer"
+# each of the report's CSVs has its codebook rows' columns as its header,
+# in their order (the writers print the header from the codebook's table,
+# platform/cli/codebook_table.h), and no writer has it as a literal of its own
+for f in R/*.csv; do
+    n=${f#R/}
+    [ "$n" = codebook.csv ] && continue
+    want=$(awk -F, -v n="$n" 'NR > 1 && $1 == n { printf "%s%s", c, $2; c = "," }' R/codebook.csv)
+    [ "$(head -n 1 "$f")" = "$want" ] && ok || bad "$n: header $(head -n 1 "$f"), codebook $want"
+    lit=$(printf '%s' "$want" | cut -c1-40)
+    grep -rqF "\"$lit" "$SRC/../platform/cli/report" && bad "$n: its header a literal in the writers" || ok
+done
 
 finish cli_codebook

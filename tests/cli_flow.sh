@@ -69,7 +69,7 @@ tail -1 "$T/n.rec" | grep -q '^1 ' && ok || bad "no study: the session ended at 
 printf 'study s\ncondition a\nset mode explore\nclosing bye\n' >"$T/b1.study"
 run "closing in a condition" 2 "$H" play --study "$T/b1.study" --participant 1 --frames 1 --size 64x48 &&
   one_line "closing in a condition" "line 4: 'closing' comes before the first condition"
-printf 'study s\ncondition a\nset mode explore\ninstructions caf\303\251\n' >"$T/b2.study"
+printf 'study s\ncondition a\nset mode explore\ninstructions 5 \342\202\254\n' >"$T/b2.study"
 run "not ASCII" 2 "$H" play --study "$T/b2.study" --participant 1 --frames 1 --size 64x48 &&
   one_line "not ASCII" "printable ASCII"
 finish cli_flow

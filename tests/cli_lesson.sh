@@ -10,15 +10,17 @@
 
 # lesson_input ROUTE PRESSES POINT: frames of a pupil: the predict item
 # (PRESSES right, or left when negative, from the middle mark; confirm), the
-# instructions' confirm, the route's room steps, the pointing's confirm
+# instructions' and the ready screen's confirms, the hint asked for (HINT 1:
+# the menu's button, twice), the route's room steps, the pointing's confirm
 # (POINT 1), the end screen's and the closing screen's confirms
 lesson_input() {
-    awk -v route="$1" -v presses="$2" -v point="$3" 'BEGIN {
+    awk -v route="$1" -v presses="$2" -v point="$3" -v hint="${4:-0}" 'BEGIN {
         t = 0; c = 1; r = 1
         f(""); f("")
         n = presses < 0 ? -presses : presses; m = presses < 0 ? -1 : 1
         for (i = 0; i < n; i++) { f(" m=" m ",0"); f("") }
-        f(" p=1"); f(""); f(" p=1"); f("")
+        f(" p=1"); f(""); f(" p=1"); f(""); f(" p=1"); f("")
+        if (hint) { f(" p=4"); f(""); f(" p=4"); f("") }
         for (i = 1; i <= length(route); i++) {
             s = substr(route, i, 1)
             if (s == "N") r--; else if (s == "S") r++; else if (s == "E") c++; else c--
@@ -80,6 +82,18 @@ for q in 4 5; do
     done
 done
 
+# in German: the same logs (the choice logged is the English one), and
+# lesson 6's hint on request (the menu's button) is an event
+lesson_input NESW 1 0 >"$T/in"
+run "lesson 1 de" 0 "$H" play --lesson 1 --lang de --input "$T/in" --size 64x48 --log "$T/de1"
+[ "$(grep ',predict,before_level,lesson1,' "$T/de1/answers.csv" | cut -d, -f7-8)" = "choice,No" ] &&
+    ok || bad "lesson 1 de: $(cat "$T/de1/answers.csv")"
+lesson_input NESWNESWNESWNESWNESW 0 0 1 >"$T/in"
+run "lesson 6 de hint" 0 "$H" play --lesson 6 --lang de --input "$T/in" --size 64x48 --log "$T/de6"
+grep -q "^level lesson-6 done steps 20 optimum -1 " "$T/out" && ok || bad "lesson 6 de: $(cat "$T/out")"
+[ "$(grep -c ',hint,lesson6$' "$T/de6/events.csv")" = 1 ] && ok ||
+    bad "lesson 6 hint: $(cat "$T/de6/events.csv")"
+
 # the headless game plays a lesson's walk (its route's steps done, not scored)
 printf 'tiling 4 5\nlesson 6\n' >"$T/l6.lvl"
 printf 'NESWNESWNESWNESWNESW\nNESW\n' >"$T/plays"
@@ -113,6 +127,17 @@ for q in 4 5; do
             bad "key $n {4,$q}: $(head -c 300 "$T/k$n-$q.html")"
     done
 done
+# the German sheet and key: the sheet's words and the lesson's, the same numbers
+run "sheet 4 de" 0 "$H" lesson sheet 4 --lang de --out "$T/s4-de.svg"
+grep -q '1. Sag voraus, bevor du gehst:' "$T/s4-de.svg" && grep -q 'Wie viele Kacheln liegen genau 3' "$T/s4-de.svg" &&
+    ok || bad "sheet 4 de: $(head -c 600 "$T/s4-de.svg")"
+grep -q 'Antwort' "$T/s4-de.svg" && bad "sheet 4 de answers" || ok
+run "key 4 de" 0 "$H" lesson sheet 4 --lang de --key --out "$T/k4-de.html"
+tr -d '\n' <"$T/k4-de.html" | sed 's/<[^>]*>/ /g; s/  */ /g' >"$T/k4de.txt"
+grep -q 'Antwort: 28. In 1, 2, 3 Schritten liegen 4, 12, 28 Kacheln; im flachen Gitter 4, 8, 12' "$T/k4de.txt" &&
+    grep -q '<title>Lektion 4</title>' "$T/k4-de.html" && ok || bad "key 4 de: $(cat "$T/k4de.txt")"
+run "sheet --lang fr" 2 "$H" lesson sheet 4 --lang fr --out "$T/s4-fr.svg"
+[ ! -e "$T/s4-fr.svg" ] && ok || bad "sheet --lang fr wrote a file"
 tr -d '\n' <"$T/k4-5.html" | sed 's/<[^>]*>/ /g; s/  */ /g' >"$T/k4.txt"
 grep -q 'Answer: 28. At 1, 2, 3 steps lie 4, 12, 28 tiles; on a flat grid 4, 8, 12; in {4,5} 4, 12, 28.' "$T/k4.txt" &&
     ok || bad "key 4 {4,5}: $(cat "$T/k4.txt")"

@@ -4,7 +4,8 @@
 # (its closing and questionnaires `after study` are outside the hash), the
 # level-HASH.txt of that hash holding the text its name is the sha256sum
 # of; a resumed session begins on the ready screen (the clock waits for a
-# confirm). Under Xvfb (when installed).
+# confirm); a baseline questionnaire (`before study`, no practice) outside
+# the first level's hash too. Under Xvfb (when installed).
 . "$(dirname "$0")/lib.sh"
 
 mkdir "$T/s"
@@ -95,4 +96,25 @@ case $last in "b,2,4.0000,5,5,1.2500,done") ok ;; *) bad "the resumed attempt: $
 # its replay begins on the ready screen too
 run "replay resumed" 0 "$H" replay r2.rec --log l1s --append
 cmp -s l1/summary.csv l1s/summary.csv && ok || bad "the resumed replay: $(diff l1/summary.csv l1s/summary.csv)"
+
+# a questionnaire `before study` (a baseline) with no practice is asked on
+# the participant's first level: its lines are between the first level's
+# marks, outside the hash, so two participants in two orders get one
+# level file a condition (the shared question `calm` before the marks)
+printf 'study base\nquestion calm likert 1 5 "How calm are you?" "not" "very"\nquestionnaire mood calm\nquestionnaire mood before study\nquestionnaire mood after condition\nquestionnaire ssq before study\ncondition a\nlevel f.lvl\nset minimap hud\ncondition b\nlevel f.lvl\nset minimap hand\n' >s/base.study
+printf '0 f=9 h=1.5,1.6,1.5,0,0,0,1\n0.25 f=9 h=1.5,1.6,1.5,0,0,0,1\n' >in3
+run "base P01 (a, b)" 0 "$H" play --study s/base.study --participant P01 --size 64x48 --log b1 \
+    --input in3 --record b1.rec
+run "base P02 (b, a)" 0 "$H" play --study s/base.study --participant P02 --size 64x48 --log b2 \
+    --input in3
+[ "$(cd b1 && ls level-*)" = "$(cd b2 && ls level-*)" ] && ok || bad "two orders' levels: $(ls b1 b2)"
+[ "$(ls b1/level-*.txt | wc -l)" = 2 ] && ok || bad "b1: $(ls b1)"
+for f in b1/level-*.txt; do
+    [ "$(sha256sum <"$f" | cut -c1-64)" = "$(basename "$f" .txt | cut -c7-)" ] && ok ||
+        bad "$f: its sha256sum is not its name"
+done
+# the recording carries them, in the order asked; its replay the same files
+grep -c 'before_study' b1.rec | grep -qx 2 && ok || bad "the recording's baseline: $(grep before b1.rec)"
+run "replay base P01" 0 "$H" replay b1.rec --log b1r
+[ "$(cd b1 && ls level-*)" = "$(cd b1r && ls level-*)" ] && ok || bad "replay's levels: $(ls b1r)"
 finish cli_onset

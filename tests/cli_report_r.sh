@@ -8,7 +8,9 @@
 # base R only) recomputes the participants' means, both intervals, the
 # paired differences, the main effects and d_z from trials.csv and checks
 # every figure of participants_stats.csv, paired.csv and effects.csv to
-# 1e-9; then a figure made wrong by 1e-6 must fail it. Logs written before
+# 1e-9, and from scores.csv the questionnaires' rows of
+# participants_stats.csv (an SSQ before the study and after each
+# condition, a TLX after it); then a figure made wrong by 1e-6 must fail it. Logs written before
 # ids had one spelling (007 and p7 in one folder, 5): read as P07 and P05,
 # a line for the merge and one for the rename, p7's run a duplicate named
 # in one line; 2, then P02 (the one spelling) a restart; --include-restarted counts the duplicate and restarted
@@ -58,7 +60,28 @@ gen() {
                 flat = (seed % 3 == 0) ? "" : sprintf("%.1f", err / 2 - 3)
                 printf "%s,%s,%d,%s%d,%.3f,start,10,0,0,%.1f,%s,2.5\n", ses, p, att, cond, l, \
                     t, err, flat >> pts
+                if (k == 0) ask("ssq", "before_study")
+                if (k > 0 && l == 2) ask("ssq", "condition")
             }
+        }
+        ask("tlx", "study")
+    }
+    # the answers of questionnaire q at attempt att (SSQ 0..3, TLX 0..100 in 5s)
+    function ask(q, when,    items, n, i, v) {
+        if (q == "ssq")
+            n = split("general_discomfort fatigue headache eye_strain difficulty_focusing " \
+                      "salivation_increasing sweating nausea difficulty_concentrating " \
+                      "fullness_of_head blurred_vision dizziness_eyes_open " \
+                      "dizziness_eyes_closed vertigo stomach_awareness burping", items, " ")
+        else
+            n = split("mental physical temporal performance effort frustration", items, " ")
+        ans = dir "/answers.csv"
+        if (!answered++ && (getline x < ans) <= 0)
+            print "session,participant,attempt,questionnaire,when,item,kind,value,time" >> ans
+        for (i = 1; i <= n; i++) {
+            seed = (seed * 1103515245 + 12345) % 2147483648
+            v = q == "ssq" ? int(seed / 13) % 4 : 5 * (int(seed / 13) % 21)
+            printf "%s,%s,%d,%s,%s,%s,likert,%d,1.0\n", ses, p, att, q, when, items[i], v >> ans
         }
     }'
 }
@@ -160,11 +183,17 @@ fi
 grep -q '^R referee: [0-9]* figures agree' "$T/rout" && ok || bad "R said: $(cat "$T/rout")"
 # a figure made wrong by 1e-6 fails it
 mkdir "$T/w"
-cp "$T/r/trials.csv" "$T/r/paired.csv" "$T/r/effects.csv" "$T/w/"
+cp "$T/r/trials.csv" "$T/r/paired.csv" "$T/r/effects.csv" "$T/r/scores.csv" "$T/w/"
 awk -F, 'BEGIN { OFS = "," } NR == 3 { $6 = sprintf("%.15g", $6 + 1e-6) } { print }' "$T/r/participants_stats.csv" \
     >"$T/w/participants_stats.csv"
 if Rscript "$HERE/report_referee.R" "$T/w" >"$T/rout" 2>&1; then bad "a wrong mean passed"; else
     grep -q 'mean' "$T/rout" && ok || bad "R's failure names no figure: $(cat "$T/rout")"
+fi
+# so does a questionnaire's figure (the TLX after the study's mean)
+awk -F, 'BEGIN { OFS = "," } $3 == "tlx_raw" { $6 = sprintf("%.15g", $6 + 1e-6) } { print }' \
+    "$T/r/participants_stats.csv" >"$T/w/participants_stats.csv"
+if Rscript "$HERE/report_referee.R" "$T/w" >"$T/rout" 2>&1; then bad "a wrong TLX mean passed"; else
+    grep -q 'study tlx_raw mean' "$T/rout" && ok || bad "R's failure: $(cat "$T/rout")"
 fi
 cp "$T/r/participants_stats.csv" "$T/w/"
 awk -F, 'BEGIN { OFS = "," } NR == 2 { $11 = sprintf("%.15g", $11 * 1.000001) } { print }' "$T/r/paired.csv" \

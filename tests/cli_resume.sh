@@ -95,7 +95,7 @@ run "changed study" 2 "$H" play --study s/changed.study --participant P01 --size
 one_line "changed study" "is not the one participant P01 played in 'logs': their attempt 2 (condition a, position 1"
 
 # session 3 killed (SIGKILL) in condition b: that attempt is unfinished
-awk 'BEGIN { for (k = 0; k < 400; k++) printf "%.2f f=9%s h=1.5,1.6,1.5,0,0,0,1\n", k * 0.05, k ? "" : " p=1" }' >slow.in
+awk 'BEGIN { for (k = 0; k < 20000; k++) printf "%.2f f=9%s h=1.5,1.6,1.5,0,0,0,1\n", k * 0.05, k ? "" : " p=1" }' >slow.in # far more than 0.3 s of frames
 $P --input slow.in --resume >/dev/null 2>&1 &
 pid=$!
 wait_for 60 -e logs/attempt-005.live

@@ -36,7 +36,8 @@ static const struct {
     {"failed", HOL_S_PAGE_FAILED},         {"warning", HOL_S_PAGE_WARNING},
     {"vrFailed", HOL_S_PAGE_VR_FAILED},    {"noStudy", HOL_S_PAGE_NO_STUDY},
     {"noLevel", HOL_S_PAGE_NO_LEVEL},      {"noGame", HOL_S_PAGE_NO_GAME},
-    {"noStart", HOL_S_PAGE_NO_START},
+    {"noStart", HOL_S_PAGE_NO_START},      {"lessons", HOL_S_PAGE_LESSONS},
+    {"lessonsWhy", HOL_S_PAGE_LESSONS_WHY},
 };
 
 _Static_assert(sizeof page / sizeof page[0] == HOL_S_COUNT - HOL_S_PAGE_LOADING,

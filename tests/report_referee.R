@@ -11,7 +11,9 @@
 # each pair of a factor's levels (main effects: a level's value the mean
 # of its conditions) the same. Every figure of participants_stats.csv,
 # paired.csv and effects.csv must agree to 1e-9, every row R expects must
-# be there and no other. Usage: Rscript report_referee.R REPORT_DIR
+# be there and no other; the questionnaires' rows of participants_stats.csv
+# (SSQ and TLX scores per condition and `study`) from scores.csv alike.
+# Usage: Rscript report_referee.R REPORT_DIR
 # [--include-restarted] (the report's option: trials excluded as duplicate
 # or restarted count too). Exit 0 when all agree ("R referee: N figures
 # agree"), else 1 naming each disagreement.
@@ -160,6 +162,56 @@ for (st in unique(inc$study)) {
             dz <- if (length(dd) > 1 && sd(dd) > 0) mean(dd) / sd(dd) else NA
             same(paste(what, "dz"), row$dz, dz)
         }
+    }
+}
+# the questionnaires' scores (scores.csv's complete scores of the presets,
+# a `before` placement's measure with "_before"): per study, measure and
+# condition (or "study") the participants' means, as for the trials; the
+# within-subjects interval over the study's conditions (not "study")
+sc <- read.csv(file.path(dir, "scores.csv"), stringsAsFactors = FALSE, na.strings = "",
+               colClasses = c(participant = "character", study = "character",
+                              condition = "character", instrument = "character",
+                              subscale = "character", placement = "character"))
+sc$study[is.na(sc$study)] <- ""
+scored <- list(ssq = c("total", "nausea", "oculomotor", "disorientation"), tlx = "raw")
+is_score <- mapply(function(i, s) !is.null(scored[[i]]) && s %in% scored[[i]],
+                   sc$instrument, sc$subscale)
+q <- sc[sc$complete == 1 & !is.na(sc$score) & is_score &
+        !(sc$study == "" & sc$condition == "none"), ]
+q$measure <- paste0(q$instrument, "_", q$subscale, ifelse(q$placement == "before", "_before", ""))
+for (st in unique(q$study)) for (m in unique(q$measure[q$study == st])) {
+    d <- q[q$study == st & q$measure == m, ]
+    pm <- tapply(d$score, list(d$participant, d$condition), mean)
+    nt <- tapply(d$score, list(d$participant, d$condition), length)
+    cm <- setdiff(colnames(pm), "study")
+    J <- length(cm)
+    cc <- pm[, cm, drop = FALSE]
+    complete <- cc[rowSums(is.na(cc)) == 0, , drop = FALSE]
+    norm <- if (J >= 2 && nrow(complete)) complete - rowMeans(complete) + mean(complete) else NULL
+    for (cn in colnames(pm)) {
+        whole <- cn == "study"
+        x <- pm[!is.na(pm[, cn]), cn]
+        row <- ps[ps$study == st & ps$condition == cn & ps$measure == m, ]
+        what <- sprintf("%s/%s %s", st, cn, m)
+        if (nrow(row) != 1) {
+            wrong <- c(wrong, sprintf("%s: %d rows in participants_stats.csv", what, nrow(row)))
+            next
+        }
+        seen <- seen + 1
+        same(paste(what, "participants"), row$participants, length(x))
+        same(paste(what, "trials"), row$trials, sum(nt[, cn], na.rm = TRUE))
+        same(paste(what, "mean"), row$mean, mean(x))
+        same(paste(what, "sd"), row$sd, if (length(x) > 1) sd(x) else NA)
+        b <- ci(x)
+        same(paste(what, "ci_low"), row$ci_low, b[1])
+        same(paste(what, "ci_high"), row$ci_high, b[2])
+        same(paste(what, "conditions"), row$conditions, if (whole) 0 else J)
+        w <- if (!whole && !is.null(norm)) norm[, cn] else numeric(0)
+        same(paste(what, "n_within"), row$n_within, length(w))
+        same(paste(what, "mean_within"), row$mean_within, if (length(w)) mean(w) else NA)
+        wc <- if (length(w)) ci(w, sqrt(J / (J - 1))) else c(NA, NA)
+        same(paste(what, "ci_within_low"), row$ci_within_low, wc[1])
+        same(paste(what, "ci_within_high"), row$ci_within_high, wc[2])
     }
 }
 if (seen_effects != nrow(ef))

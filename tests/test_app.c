@@ -503,6 +503,57 @@ static void test_level_lang(void **state)
     hol_app_destroy(app);
 }
 
+/* Issue 37: a lesson in German: its question, choices, walk and check in
+ * the view's language, the logged choice the English one; lesson 6's hint
+ * on request: the walk's prompt names the menu's button, the menu shows
+ * the hint and the event says so. */
+static void test_lesson_lang(void **state)
+{
+    (void)state;
+    hol_app *app = make_app();
+    const hol_app_view *v = hol_app_get_view(app);
+    hol_app_level L;
+    hol_level_err e;
+    double t = 0;
+    const uint32_t kb = HOL_DEVICE_KEYBOARD;
+    hol_app_set_lang(app, HOL_LANG_DE);
+    assert_int_equal(parse_level("lesson 1\n", &L, &e), HOL_OK);
+    assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    step(app, app_head(t += 0.5, 1, 1, 0, kb, 0));
+    assert_int_equal(v->state, HOL_APP_ASK);
+    assert_string_equal(v->hud.lines[0], "Geh N, O, S, W. Stehst du wieder auf deiner");
+    assert_non_null(strstr(v->hud.lines[2], "Ja"));
+    assert_non_null(strstr(v->hud.lines[2], "Vorhersage"));
+    const hol_app_events *ev = step(app, app_head(t += 0.5, 1, 1, 0, kb, HOL_BTN_CONFIRM));
+    assert_int_equal(ev->answered, 1);
+    assert_string_equal(ev->answer.choice, "Yes"); /* the logs' English */
+    assert_int_equal(v->hud.screen, HOL_APP_SCREEN_INSTRUCTIONS);
+    assert_string_equal(v->hud.lines[0], "Geh N, O, S, W: tritt auf jede Markierung und");
+    hol_app_set_lang(app, HOL_LANG_EN); /* a language changed on the way */
+    step(app, app_head(t += 0.5, 1, 1, 0, kb, 0));
+    assert_string_equal(v->hud.lines[0], "Walk N, E, S, W: step onto each marker and");
+    hol_app_set_lang(app, HOL_LANG_DE);
+    assert_int_equal(parse_level("lesson 6\n", &L, &e), HOL_OK);
+    assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    for (int i = 0; i < 3 && v->state != HOL_APP_PLAYING; i++) /* predict, walk, ready */
+        step(app, app_head(t += 0.5, 1, 1, 0, kb, HOL_BTN_CONFIRM));
+    step(app, app_head(t += 0.5, 1, 1, 0, kb, 0));
+    assert_int_equal(v->state, HOL_APP_PLAYING);
+    assert_string_equal(v->hud.hint, "P: Tipp");
+    ev = step(app, app_head(t += 0.5, 1, 1, 0, kb, HOL_BTN_MENU));
+    assert_int_equal(ev->hint, 1);
+    assert_string_equal(v->hud.lines[0], "Jeder Schritt des Quadrats geht um denselben");
+    assert_string_equal(v->hud.lines[1], "Baum.");
+    ev = step(app, app_head(t += 0.5, 1, 1, 0, kb, HOL_BTN_MENU));
+    assert_int_equal(ev->hint, 0); /* closed */
+    assert_int_equal(parse_level("mode flag\nflag N\n", &L, &e), HOL_OK);
+    assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    step(app, app_head(t += 0.5, 1, 1, 0, kb, 0));
+    ev = step(app, app_head(t += 0.5, 1, 1, 0, kb, HOL_BTN_MENU));
+    assert_int_equal(ev->hint, 0); /* no lesson, no hint */
+    hol_app_destroy(app);
+}
+
 /* The level's sky and lanterns reach the view (so every platform's
  * renderer gets them): the placed lanterns, then with the cue lantern one
  * on each game object drawn; a collected key's lantern goes with it. */
@@ -2173,6 +2224,7 @@ int main(void)
         cmocka_unit_test(test_keys_level),
         cmocka_unit_test(test_captions),
         cmocka_unit_test(test_level_lang),
+        cmocka_unit_test(test_lesson_lang),
         cmocka_unit_test(test_lighting_in_view),
         cmocka_unit_test(test_objectives_on_free_tiles),
         cmocka_unit_test(test_tutorial),

@@ -21,6 +21,7 @@
 
 #include "../core/hol_lesson.h"
 #include "../core/hol_level.h"
+#include "../core/hol_str.h"
 #include "../core/hol_nav.h"
 #include "../core/hol_room.h"
 #include "../core/hol_tile.h"
@@ -197,7 +198,7 @@ static void test_texts_fit(void **state)
             assert_int_equal(hol_lesson_facts_of(n, q, &f), HOL_OK);
             for (int part = 0; part < HOL_LESSON_PARTS; part++) {
                 char s[HOL_LESSON_TEXT_MAX];
-                int len = hol_lesson_text(&f, part, s, sizeof s);
+                int len = hol_lesson_text(&f, HOL_LANG_EN, part, s, sizeof s);
                 assert_true(len > 0);
                 for (const char *b = strchr(s, '{'); b; b = strchr(b + 1, '{'))
                     assert_true(b[1] == '4' && b[2] == ',');

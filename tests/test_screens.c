@@ -18,6 +18,7 @@
 #include <cmocka.h>
 
 #include "../core/hol_app.h"
+#include "../core/hol_face.h"
 #include "../core/hol_level.h"
 #include "../core/hol_nav.h"
 #include "../core/hol_study.h"
@@ -39,9 +40,49 @@ static void test_level_lines(void **state)
     assert_string_equal(L.instructions, "");
     assert_string_equal(L.closing, "");
     assert_int_equal(parse_level("mode flag\nflag N\ninstructions\n", &L, &e), HOL_EPARSE);
-    assert_int_equal(parse_level("mode flag\nflag N\ninstructions caf\xc3\xa9\n", &L, &e), HOL_EPARSE);
+    /* Latin-1 letters in UTF-8 (the face's); nothing else */
+    assert_int_equal(parse_level("mode flag\nflag N\ninstructions Gr\xc3\xbc\xc3\x9f dich, caf\xc3\xa9\n",
+                                 &L, &e),
+                     HOL_OK);
+    assert_string_equal(L.instructions, "Gr\xc3\xbc\xc3\x9f dich, caf\xc3\xa9");
+    assert_int_equal(parse_level("mode flag\nflag N\ninstructions 5 \xe2\x82\xac\n", &L, &e), HOL_EPARSE);
     assert_int_equal(e.line, 3);
     assert_non_null(strstr(e.msg, "printable ASCII"));
+    assert_non_null(strstr(e.msg, "not U+20AC"));
+    static const char *const bad[] = {"caf\xe9", "a\xc2\x85" "b", "\xc3", "a\tb", "\xc0\xa9",
+                                      "\xf0\x9f\x98\x80"};
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        char t[64];
+        snprintf(t, sizeof t, "mode flag\nflag N\nclosing %s\n", bad[i]);
+        assert_int_equal(parse_level(t, &L, &e), HOL_EPARSE);
+        assert_non_null(strstr(e.msg, "Latin-1"));
+    }
+    /* a question's quoted fields likewise */
+    assert_int_equal(parse_level("mode flag\nflag N\nquestion q1 choice \"Gef\xc3\xa4llt es dir?\" "
+                                 "\"Ja\" \"Nein, \xc3\xbc" "berhaupt nicht\"\nask a level q1\n",
+                                 &L, &e),
+                     HOL_OK);
+    assert_string_equal(L.questions[0].choices[1], "Nein, \xc3\xbc" "berhaupt nicht");
+    assert_int_equal(parse_level("mode flag\nflag N\nquestion q1 choice \"caf\xe9\" \"a\" \"b\"\n", &L, &e),
+                     HOL_EPARSE);
+    /* wrapped by characters, never inside one, and a line within its bytes */
+    char w[8][HOL_APP_TEXT_MAX], t[400] = "";
+    for (int i = 0; i < 30; i++)
+        strcat(t, "\xc3\xa4\xc3\xb6\xc3\xbc\xc3\x9f ");
+    /* five words a line: 24 characters, 44 bytes (a sixth: 53) */
+    assert_int_equal(hol_app_wrap(t, HOL_APP_SCREEN_COLS, w, 8), 6);
+    for (int i = 0; i < 6; i++) {
+        assert_true(strlen(w[i]) <= HOL_APP_TEXT_MAX - 1);
+        int missing = 0;
+        hol_face_units(w[i], strlen(w[i]), &missing);
+        assert_int_equal(missing, 0);
+    }
+    assert_string_equal(w[0], "\xc3\xa4\xc3\xb6\xc3\xbc\xc3\x9f \xc3\xa4\xc3\xb6\xc3\xbc\xc3\x9f \xc3\xa4\xc3\xb6\xc3\xbc\xc3\x9f \xc3\xa4\xc3\xb6\xc3\xbc\xc3\x9f \xc3\xa4\xc3\xb6\xc3\xbc\xc3\x9f");
+    char one[HOL_APP_SCREEN_COLS * 2 + 1] = ""; /* one word of 46 umlauts: cut at 23 */
+    for (int i = 0; i < HOL_APP_SCREEN_COLS; i++)
+        strcat(one, "\xc3\xbc");
+    assert_int_equal(hol_app_wrap(one, HOL_APP_SCREEN_COLS, w, 8), 2);
+    assert_int_equal(strlen(w[0]), 46);
     assert_int_equal(parse_level("mode flag\nflag N\ninstructions a\ninstructions b\n", &L, &e),
                      HOL_EARG);
     /* six lines of 46 fit; a seventh is refused, naming the count */

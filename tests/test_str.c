@@ -2,7 +2,9 @@
  * every string drawn without the missing-glyph box (core/hol_face.h), the
  * printf formats' conversions the same in every language, every text
  * fitting its buffer with its numbers at their widest, and the language
- * tags a command line or a browser gives.
+ * tags a command line or a browser gives. The lessons' table
+ * (core/hol_lesson_text.c) likewise: complete, drawn, the same facts
+ * named, and every text fitting its screen in every tiling.
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -14,7 +16,9 @@
 #include <cmocka.h>
 
 #include "../core/hol_face.h"
+#include "../core/hol_app.h"
 #include "../core/hol_input.h"
+#include "../core/hol_lesson.h"
 #include "../core/hol_prompt.h"
 #include "../core/hol_str.h"
 
@@ -147,6 +151,99 @@ static void test_prompts_fit(void **state)
             }
 }
 
+
+/* The {name}s of a lesson's text, sorted, into out ("{4,5}" is no fact). */
+static void facts_named(const char *s, char *out, size_t cap)
+{
+    char names[16][16];
+    int n = 0;
+    for (const char *b = strchr(s, '{'); b; b = strchr(b + 1, '{')) {
+        const char *e = strchr(b, '}');
+        if (!e || (b[1] >= '0' && b[1] <= '9'))
+            continue;
+        assert_true(n < 16 && e - b < 16);
+        snprintf(names[n++], 16, "%.*s", (int)(e - b + 1), b);
+    }
+    for (int i = 1; i < n; i++) /* sort: a language may order them otherwise */
+        for (int j = i; j > 0 && strcmp(names[j - 1], names[j]) > 0; j--) {
+            char t[16];
+            memcpy(t, names[j], 16), memcpy(names[j], names[j - 1], 16), memcpy(names[j - 1], t, 16);
+        }
+    out[0] = 0;
+    for (int i = 0; i < n; i++)
+        snprintf(out + strlen(out), cap - strlen(out), "%s", names[i]);
+}
+
+/* Every entry of the lessons' table in every language when English has
+ * one (and none when it has none), drawn by the face, naming the English
+ * entry's facts (its conversions, for the words' formats). */
+static void test_lessons_complete(void **state)
+{
+    (void)state;
+    for (int n = 1; n <= HOL_LESSONS; n++)
+        for (int k = 0; k < HOL_LESSON_PARTS + HOL_APP_MAX_CHOICES + 16; k++) {
+            const char *en = hol_lesson_entry(n, HOL_LANG_EN, k);
+            for (int l = 1; l < HOL_LANG_COUNT; l++) {
+                const char *s = hol_lesson_entry(n, l, k);
+                if (!en != !s)
+                    fail_msg("%s: lesson %d entry %d is %s", hol_lang_code(l), n, k,
+                             s ? "extra" : "missing");
+                if (!s)
+                    continue;
+                char a[256], b[256];
+                int missing = 0;
+                hol_face_units(s, strlen(s), &missing);
+                if (missing)
+                    fail_msg("%s: '%s' draws %d missing-glyph boxes", hol_lang_code(l), s, missing);
+                facts_named(en, a, sizeof a), facts_named(s, b, sizeof b);
+                if (strcmp(a, b))
+                    fail_msg("%s: lesson %d entry %d names %s, English %s", hol_lang_code(l), n, k,
+                             b, a);
+                conversions(en, a, sizeof a), conversions(s, b, sizeof b);
+                if (strcmp(a, b))
+                    fail_msg("%s: lesson %d entry %d has '%s', English '%s'", hol_lang_code(l), n,
+                             k, b, a);
+            }
+        }
+}
+
+/* Every lesson's texts expanded in every tiling and language fit where
+ * the app and the sheet put them: the walk and the check a screen
+ * (HOL_APP_SCREEN_LINES wrapped lines), the question an item's text in
+ * its 3 lines, a choice or an anchor the item's value (20 bytes), the
+ * hint 3 lines of the paused HUD, the predict name 12 bytes. */
+static void test_lessons_fit(void **state)
+{
+    (void)state;
+    static const int lines[HOL_LESSON_PARTS] = {1, 12, 3, HOL_APP_SCREEN_LINES,
+                                                HOL_APP_SCREEN_LINES, 3};
+    for (int l = 0; l < HOL_LANG_COUNT; l++) {
+        assert_true(strlen(hol_str(l, HOL_S_PREDICT)) <= 12);
+        for (int q = 4; q <= 8; q++)
+            for (int n = 1; n <= HOL_LESSONS; n++) {
+                hol_lesson_facts f;
+                assert_int_equal(hol_lesson_facts_of(n, q, &f), HOL_OK);
+                for (int part = 0; part < HOL_LESSON_PARTS; part++) {
+                    char s[HOL_LESSON_TEXT_MAX];
+                    int len = hol_lesson_text(&f, l, part, s, sizeof s);
+                    if (len <= 0 || hol_app_wrap(s, HOL_APP_SCREEN_COLS, NULL, 0) > lines[part])
+                        fail_msg("%s: lesson %d {4,%d} part %d does not fit: '%s'",
+                                 hol_lang_code(l), n, q, part, len > 0 ? s : "");
+                    int missing = 0;
+                    hol_face_units(s, strlen(s), &missing);
+                    assert_int_equal(missing, 0);
+                }
+                hol_app_question qn;
+                assert_int_equal(hol_lesson_question(&f, l, &qn), HOL_OK);
+                const char *c;
+                for (int k = 0; (c = hol_lesson_label(&f, l, k)); k++)
+                    if (strlen(c) > 20)
+                        fail_msg("%s: lesson %d's label '%s' is over 20 bytes", hol_lang_code(l),
+                                 n, c);
+            }
+    }
+}
+
 static void test_tags(void **state)
 {
     (void)state;
@@ -173,6 +270,8 @@ int main(void)
         cmocka_unit_test(test_formats_match),
         cmocka_unit_test(test_fits),
         cmocka_unit_test(test_prompts_fit),
+        cmocka_unit_test(test_lessons_complete),
+        cmocka_unit_test(test_lessons_fit),
         cmocka_unit_test(test_tags),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

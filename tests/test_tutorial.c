@@ -251,6 +251,38 @@ static void test_held_map_not_taught(void **state)
     }
 }
 
+/* Lesson 2's end where a study holds the map off: its feedback without
+ * the rings' line (no map shows them); with the map, the line. */
+static void test_held_off_map_no_rings_line(void **state)
+{
+    (void)state;
+    for (int held = 0; held < 2; held++) {
+        hol_app *app = make_app();
+        hol_app_level L = tutorial(0);
+        L.minimap_fixed = held;
+        L.minimap = held ? HOL_MINIMAP_OFF : HOL_MINIMAP_HUD;
+        assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+        const hol_app_view *v = hol_app_get_view(app);
+        hol_app_lesson rows[4];
+        int nrows = 0;
+        double t = 0;
+        step(app, app_head(t, 1, 1, 0, HOL_DEVICE_KEYBOARD, 0));
+        uint8_t north = HOL_DIR_N;
+        walk(app, &north, 1, &t, rows, &nrows);
+        uint8_t loop[4];
+        int east = v->tree_vertex[0] > v->user.col;
+        loop[0] = east ? HOL_DIR_E : HOL_DIR_W;
+        loop[1] = HOL_DIR_S, loop[2] = (uint8_t)((loop[0] + 2) % 4), loop[3] = HOL_DIR_N;
+        walk(app, loop, 4, &t, rows, &nrows);
+        assert_int_equal(v->hud.stage, 2);
+        assert_int_equal(v->hud.nlines, held ? 1 : 2);
+        assert_string_equal(v->hud.note, held ? "" : hol_str(HOL_LANG_EN, HOL_S_RINGS));
+        for (int k = 0; k < v->hud.nlines && held; k++)
+            assert_null(strstr(v->hud.lines[k], "Rings"));
+        hol_app_destroy(app);
+    }
+}
+
 /* desc.flow_v4: the lessons as before: the feedback over the next
  * objective, no rows, a pancake view not turned. */
 static void test_flow_v4(void **state)
@@ -280,6 +312,7 @@ int main(void)
         cmocka_unit_test(test_pancake_faces_each_lesson),
         cmocka_unit_test(test_one_idea_and_a_row_per_lesson),
         cmocka_unit_test(test_held_map_not_taught),
+        cmocka_unit_test(test_held_off_map_no_rings_line),
         cmocka_unit_test(test_flow_v4),
     };
     return cmocka_run_group_tests(tests, setup, teardown);

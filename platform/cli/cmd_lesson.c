@@ -10,6 +10,7 @@
 
 #include "../../core/hol_lesson.h"
 #include "../../core/hol_room.h"
+#include "../../core/hol_str.h"
 #include "../../render/hol_png.h"
 #include "../file/hol_file.h"
 #include "cli.h"
@@ -18,6 +19,7 @@
 
 const char *const cli_lesson_usage =
     "usage: holonomy lesson sheet N --out FILE.svg|FILE.html [--key] [--tiling 4,Q]\n"
+    "                                 [--lang en|de|nl]\n"
     "\n"
     "Writes lesson N's (1..6; docs/teaching.md) worksheet for one A4 page: the\n"
     "question to answer before walking, with room for the answer and why,\n"
@@ -28,10 +30,42 @@ const char *const cli_lesson_usage =
     "                 written atomically\n"
     "  --key          the answer key instead: the right answer, why, the hint\n"
     "  --tiling 4,Q   the tiling {4,Q}, Q from 4 (the flat grid) to 8; default 4,5\n"
+    "  --lang L       the sheet's language: en (default), de or nl\n"
     "\n"
     "Exit status: 0 ok, 1 failure, 2 bad input (one line).\n";
 
-const char *const cli_lesson_valued[] = {"--out", PLAY_GEOMETRY_OPTIONS, NULL};
+const char *const cli_lesson_valued[] = {"--out", "--lang", PLAY_GEOMETRY_OPTIONS, NULL};
+
+/* The sheet's own words, one row a language each (the lesson's texts are
+ * core/hol_lesson_text.c's): English, German, Dutch. */
+enum { SW_TITLE, SW_HEAD, SW_KEY, SW_NAME, SW_PREDICT, SW_WHY, SW_NUMBER, SW_NUMBER_KEY,
+       SW_GOAL, SW_WALK, SW_ROUTE, SW_FIRST, SW_HINT, SW_CHECK, SW_COUNT };
+static const char *const sheet_words[SW_COUNT][HOL_LANG_COUNT] = {
+    {"Lesson %d", "Lektion %d", "Les %d"},
+    {"Lesson %d: %s {4,%d}%s", "Lektion %d: %s {4,%d}%s", "Les %d: %s {4,%d}%s"},
+    {" - answer key", " - Lösung", " - antwoorden"},
+    {"Name: ______________________   Class: ________",
+     "Name: ____________________   Klasse: ________",
+     "Naam: ______________________   Klas: ________"},
+    {"1. Predict, before you walk:", "1. Sag voraus, bevor du gehst:",
+     "1. Voorspel, voordat je loopt:"},
+    {"Why do you think so?", "Warum denkst du das?", "Waarom denk je dat?"},
+    {"A number from %d to %d: ______", "Eine Zahl von %d bis %d: ______",
+     "Een getal van %d tot %d: ______"},
+    {"A number from %d to %d: %d", "Eine Zahl von %d bis %d: %d", "Een getal van %d tot %d: %d"},
+    {"Goal:", "Ziel:", "Doel:"},
+    {"2. Walk:", "2. Geh:", "2. Loop:"},
+    {"The route on the Poincare disk:", "Der Weg auf der Poincaré-Scheibe:",
+     "De route op de schijf van Poincaré:"},
+    {"Your first step on the Poincare disk; draw the rest of your walk:",
+     "Dein erster Schritt auf der Poincaré-Scheibe; zeichne den Rest deines Wegs:",
+     "Je eerste stap op de schijf van Poincaré; teken de rest van je wandeling:"},
+    {"Hint:", "Tipp:", "Tip:"},
+    {"3. Check: were you right? What surprised you?",
+     "3. Prüfe: Hattest du recht? Was hat dich überrascht?",
+     "3. Controleer: had je gelijk? Wat verraste je?"},
+};
+#define SW(lang, k) sheet_words[k][(lang) >= 0 && (lang) < HOL_LANG_COUNT ? (lang) : 0]
 
 #define SHEET_PX 360 /* the picture's pixels */
 
@@ -120,12 +154,12 @@ static double sheet_lines(FILE *f, double y, int n)
 
 /* The question's choices, or its scale, with boxes to tick (the key: the
  * right one ticked, the right number written). */
-static double sheet_choices(FILE *f, const hol_lesson_facts *lf, int key, double y)
+static double sheet_choices(FILE *f, const hol_lesson_facts *lf, int lang, int key, double y)
 {
     char buf[HOL_LESSON_TEXT_MAX];
     if (lf->choice) {
         const char *c;
-        for (int k = 0; (c = hol_lesson_label(lf, k)); k++, y += 7) {
+        for (int k = 0; (c = hol_lesson_label(lf, lang, k)); k++, y += 7) {
             fprintf(f, "<rect x=\"24\" y=\"%.1f\" width=\"4\" height=\"4\" fill=\"%s\" "
                        "stroke=\"black\" stroke-width=\"0.3\"/>\n", y - 3.5,
                     key && k == lf->answer ? "black" : "none");
@@ -138,61 +172,59 @@ static double sheet_choices(FILE *f, const hol_lesson_facts *lf, int key, double
     int lo, hi, step;
     hol_lesson_scale(lf, &lo, &hi, &step);
     if (key)
-        snprintf(buf, sizeof buf, "A number from %d to %d: %d", lo, hi, lf->answer);
+        snprintf(buf, sizeof buf, SW(lang, SW_NUMBER_KEY), lo, hi, lf->answer);
     else
-        snprintf(buf, sizeof buf, "A number from %d to %d: ______", lo, hi);
+        snprintf(buf, sizeof buf, SW(lang, SW_NUMBER), lo, hi);
     return sheet_para(f, buf, y, 4, "normal") + 3;
 }
 
-static int sheet_svg(FILE *f, const hol_lesson_facts *lf, int key, const uint8_t *png, size_t npng)
+static int sheet_svg(FILE *f, const hol_lesson_facts *lf, int lang, int key, const uint8_t *png,
+                     size_t npng)
 {
     char buf[HOL_LESSON_TEXT_MAX], head[HOL_LESSON_TEXT_MAX + 48];
     fputs("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"210mm\" height=\"297mm\" "
           "viewBox=\"0 0 210 297\" font-family=\"DejaVu Sans, sans-serif\">\n"
           "<rect width=\"210\" height=\"297\" fill=\"white\"/>\n", f);
-    hol_lesson_text(lf, HOL_LESSON_TITLE, buf, sizeof buf);
-    snprintf(head, sizeof head, "Lesson %d: %s {4,%d}%s", lf->lesson, buf, lf->q,
-             key ? " - answer key" : "");
+    hol_lesson_text(lf, lang, HOL_LESSON_TITLE, buf, sizeof buf);
+    snprintf(head, sizeof head, SW(lang, SW_HEAD), lf->lesson, buf, lf->q,
+             key ? SW(lang, SW_KEY) : "");
     double y = sheet_para(f, head, 22, 7, "bold");
     if (!key)
-        y = sheet_para(f, "Name: ______________________   Class: ________", y + 2, 4, "normal");
-    hol_lesson_text(lf, HOL_LESSON_QUESTION, buf, sizeof buf);
-    y = sheet_para(f, "1. Predict, before you walk:", y + 6, 4.5, "bold");
-    y = sheet_choices(f, lf, key, sheet_para(f, buf, y, 4.5, "normal") + 2);
+        y = sheet_para(f, SW(lang, SW_NAME), y + 2, 4, "normal");
+    hol_lesson_text(lf, lang, HOL_LESSON_QUESTION, buf, sizeof buf);
+    y = sheet_para(f, SW(lang, SW_PREDICT), y + 6, 4.5, "bold");
+    y = sheet_choices(f, lf, lang, key, sheet_para(f, buf, y, 4.5, "normal") + 2);
     if (key) {
-        hol_lesson_text(lf, HOL_LESSON_CHECK, buf, sizeof buf);
+        hol_lesson_text(lf, lang, HOL_LESSON_CHECK, buf, sizeof buf);
         y = sheet_para(f, buf, y + 2, 4.5, "normal");
-        hol_lesson_text(lf, HOL_LESSON_GOAL, buf, sizeof buf);
-        y = sheet_para(f, "Goal:", y + 4, 4, "bold");
+        hol_lesson_text(lf, lang, HOL_LESSON_GOAL, buf, sizeof buf);
+        y = sheet_para(f, SW(lang, SW_GOAL), y + 4, 4, "bold");
         y = sheet_para(f, buf, y, 4, "normal");
     } else {
-        y = sheet_lines(f, sheet_para(f, "Why do you think so?", y + 2, 4, "normal"), 2);
+        y = sheet_lines(f, sheet_para(f, SW(lang, SW_WHY), y + 2, 4, "normal"), 2);
     }
-    hol_lesson_text(lf, HOL_LESSON_WALK, buf, sizeof buf);
-    y = sheet_para(f, "2. Walk:", y + 6, 4.5, "bold");
+    hol_lesson_text(lf, lang, HOL_LESSON_WALK, buf, sizeof buf);
+    y = sheet_para(f, SW(lang, SW_WALK), y + 6, 4.5, "bold");
     y = sheet_para(f, buf, y, 4.5, "normal");
-    y = sheet_para(f, key ? "The route on the Poincare disk:"
-                          : "Your first step on the Poincare disk; draw the rest of your walk:",
-                   y + 1, 4, "normal");
+    y = sheet_para(f, SW(lang, key ? SW_ROUTE : SW_FIRST), y + 1, 4, "normal");
     fprintf(f, "<image x=\"62\" y=\"%.1f\" width=\"86\" height=\"86\" "
                "href=\"data:image/png;base64,", y + 1);
     base64(f, png, npng);
     fputs("\"/>\n", f);
     y += 90;
-    hol_lesson_text(lf, HOL_LESSON_HINT, buf, sizeof buf);
+    hol_lesson_text(lf, lang, HOL_LESSON_HINT, buf, sizeof buf);
     if (key) {
-        y = sheet_para(f, "Hint:", y + 2, 4, "bold");
+        y = sheet_para(f, SW(lang, SW_HINT), y + 2, 4, "bold");
         sheet_para(f, buf, y, 4, "normal");
     } else {
-        sheet_lines(f, sheet_para(f, "3. Check: were you right? What surprised you?", y + 2, 4,
-                                  "bold"), 2);
+        sheet_lines(f, sheet_para(f, SW(lang, SW_CHECK), y + 2, 4, "bold"), 2);
     }
     fputs("</svg>\n", f);
     return ferror(f) ? -1 : 0;
 }
 
 static int sheet_args(const char *cmd, int argc, char **argv, int *n, const char **out, int *key,
-                      play_geometry *geo)
+                      int *lang, play_geometry *geo)
 {
     static const char *const flags[] = {"--key", NULL};
     cli_opts p;
@@ -211,8 +243,11 @@ static int sheet_args(const char *cmd, int argc, char **argv, int *n, const char
             *out = val;
         } else if (!strcmp(a, "--key")) {
             *key = 1;
+        } else if (!strcmp(a, "--lang")) {
+            if (cli_lang_value(cmd, val, lang))
+                return CLI_EXIT_USAGE;
         } else if (play_geometry_value(cmd, a, val, geo) <= 0) {
-            cli_error(cmd, 0, "lesson sheet takes --out, --key and --tiling, not %.40s", a);
+            cli_error(cmd, 0, "lesson sheet takes --out, --key, --tiling and --lang, not %.40s", a);
             return CLI_EXIT_USAGE;
         }
     }
@@ -234,9 +269,9 @@ static int sheet_args(const char *cmd, int argc, char **argv, int *n, const char
 int cli_cmd_lesson(int argc, char **argv)
 {
     const char *cmd = "lesson", *out = NULL;
-    int n = 0, key = 0;
+    int n = 0, key = 0, lang = HOL_LANG_EN;
     play_geometry geo = {0, 0, 0, 0};
-    int st = sheet_args(cmd, argc, argv, &n, &out, &key, &geo);
+    int st = sheet_args(cmd, argc, argv, &n, &out, &key, &lang, &geo);
     if (!st)
         st = cli_check_output(cmd, "--out", out);
     if (st)
@@ -257,11 +292,12 @@ int cli_cmd_lesson(int argc, char **argv)
                   strerror(errno));
         return CLI_EXIT_FAIL;
     }
-    if (html)
-        fprintf(w.f, "<!doctype html>\n<html><head><meta charset=\"utf-8\"><title>Lesson %d"
-                     "</title><style>@page{size:A4;margin:0}body{margin:0}</style></head><body>\n",
-                n);
-    int bad = sheet_svg(w.f, &lf, key, png, npng);
+    if (html) {
+        fputs("<!doctype html>\n<html><head><meta charset=\"utf-8\"><title>", w.f);
+        fprintf(w.f, SW(lang, SW_TITLE), n);
+        fputs("</title><style>@page{size:A4;margin:0}body{margin:0}</style></head><body>\n", w.f);
+    }
+    int bad = sheet_svg(w.f, &lf, lang, key, png, npng);
     if (html)
         fputs("</body></html>\n", w.f);
     free(png);

@@ -7,7 +7,8 @@
  *   hol_log_cols.h: each writer's header is made from its table, the
  *   codebook's text by platform/shell/hol_shell_codebook.h);
  *   the report's are a table of rows here (codebook_table.h), in each
- *   file's column order. tests/test_codebook.c checks that the report's
+ *   file's column order, from which the report's writers print their
+ *   headers (codebook_header, report_header). tests/test_codebook.c checks that the report's
  *   build.csv's and codebook.csv's columns are their headers, and every
  *   table's rows complete; tests/cli_codebook.sh that every column of
  *   every file written in a log folder and a report is in the

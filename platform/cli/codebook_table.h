@@ -1,6 +1,9 @@
 /* codebook_table.h - the report's rows of the codebook (codebook.h): file,
  * column, type, unit, allowed values, meaning. A file "report:NAME" is the
- * report's NAME; an empty meaning is the log column of the same name's
+ * report's NAME, its rows in its columns' order: the report's writers
+ * print NAME's header from them (report/report.h: report_header), so the
+ * codebook and the file cannot differ; an empty meaning is the log column
+ * of the same name's
  * (the log files' columns are the writers' own tables:
  * platform/shell/hol_shell_codebook.h). */
 #ifndef CODEBOOK_TABLE_H
@@ -95,9 +98,9 @@ static const codebook_row codebook_rows[] = {
     {"report:trials.csv", "logdir", "string", "", "", "the log folder read"},
     {"report:participants_stats.csv", "study", "string", "", "", ""},
     {"report:participants_stats.csv", "condition", "string", "", "", ""},
-    {"report:participants_stats.csv", "measure", "string", "", "", "the measure"},
+    {"report:participants_stats.csv", "measure", "string", "", "steps, efficiency, time, error_true, error_flat, ssq_total, ssq_nausea, ssq_oculomotor, ssq_disorientation, tlx_raw; a questionnaire asked before: _before after it", "the measure"},
     {"report:participants_stats.csv", "participants", "integer", "count", "", "participants with a value (n)"},
-    {"report:participants_stats.csv", "trials", "integer", "count", "", "trials counted"},
+    {"report:participants_stats.csv", "trials", "integer", "count", "", "trials counted (a questionnaire's measure: its scores)"},
     {"report:participants_stats.csv", "mean", "number", "", "", "the mean of participant means"},
     {"report:participants_stats.csv", "sd", "number", "", "", "their standard deviation (n - 1)"},
     {"report:participants_stats.csv", "ci_low", "number", "", "", "between-subjects 95 % CI (t), lower"},

@@ -126,6 +126,9 @@ typedef struct report_file_job {
     report_body body;
 } report_file_job;
 int report_write_files(const report_run *r, const report_file_job *jobs, int n);
+/* The header of the report's file NAME (its codebook rows' columns,
+ * codebook_table.h: the codebook and the file say the same columns). */
+void report_header(FILE *f, const char *name);
 /* The same into dir/name (name may hold folders that exist: --bids). */
 int report_write_in(const report_run *r, const char *dir, const char *name, report_body body,
                     const void *ctx);
@@ -134,9 +137,9 @@ int report_write_csv(const report_run *r);
 /* `holonomy report --class DIR --out OUT` (report_class.c): argv[1] is
  * "--class". */
 int report_class_main(const char *cmd, int argc, char **argv);
-/* build.csv (which build wrote the report: REPORT_BUILD_COLUMNS) and
- * codebook.csv (every column of the report's files: ../codebook.h). */
-#define REPORT_BUILD_COLUMNS "program,version,commit,build_date"
+/* build.csv (which build wrote the report: program, version, commit,
+ * build_date) and codebook.csv (every column of the report's files:
+ * ../codebook.h). */
 int report_write_provenance(const report_run *r);
 int report_write_conditions(const report_run *r, const hol_report_agg *g);
 int report_write_html(const report_run *r, const hol_report_agg *g);

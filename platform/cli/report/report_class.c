@@ -29,6 +29,7 @@
 #include "../../../core/hol_lesson.h"
 #include "../../../core/hol_quiz.h"
 #include "../../../core/hol_stats.h"
+#include "../../../core/hol_str.h"
 #include "../cli.h"
 #include "report.h"
 #include "report_escape.h"
@@ -206,7 +207,7 @@ static int rc_lesson_key(const rc_tilings *t, char (*fld)[RC_TEXT], int *unknown
     hol_lesson_facts f;
     if (hol_lesson_facts_of(n, q, &f))
         return -1;
-    const char *label = f.choice ? hol_lesson_label(&f, f.answer) : NULL;
+    const char *label = f.choice ? hol_lesson_label(&f, HOL_LANG_EN, f.answer) : NULL;
     if (f.choice)
         snprintf(right, cap, "%s", label ? label : "");
     else

@@ -112,7 +112,7 @@ static int effects_csv(FILE *f, const report_run *r, const void *ctx)
     hol_stats d[REPORT_PAIR_MAX * REPORT_PAIR_MAX];
     ef_levels lv;
     (void)ctx;
-    fputs("study,measure,factor,level_a,level_b,n,mean_diff,sd_diff,ci_low,ci_high,dz\n", f);
+    report_header(f, "effects.csv");
     for (int g = 0; g < p->npg; g++)
         for (int m = 0; m < PS_NM; m++) {
             const ps_pairs *pg = &p->pg[g];

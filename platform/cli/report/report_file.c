@@ -5,7 +5,16 @@
 
 #include "../../file/hol_file.h"
 #include "../cli.h"
+#include "../codebook.h"
 #include "report.h"
+
+void report_header(FILE *f, const char *name)
+{
+    char key[96], line[1024];
+    snprintf(key, sizeof key, "report:%s", name);
+    if (codebook_header(key, line, sizeof line) > 0)
+        fprintf(f, "%s\n", line);
+}
 
 int report_write_file(const report_run *r, const char *name, report_body body, const void *ctx)
 {

@@ -73,6 +73,9 @@ int ps_dz(const hol_stats *d, double *out);
 /* A difference's last cells: n, its summary (ps_summary, with SD), d_z and
  * the row's newline. */
 void ps_diff_cells(FILE *f, const hol_stats *d);
+/* participants_stats.csv's rows of the questionnaires' scores
+ * (report_pstats_q.c), after the trials' measures: 0, -1 out of memory. */
+int report_pstats_q_rows(FILE *f, const report_run *r);
 /* effects.csv (report_effects.c) */
 int report_effects_write(const report_run *r);
 

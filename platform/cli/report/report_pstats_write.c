@@ -26,9 +26,7 @@ static int trials_csv(FILE *f, const report_run *r, const void *ctx)
     const report_stats *s = r->stats;
     const report_pstats *p = r->pstats;
     (void)ctx;
-    fputs("participant,session,session_no,attempt,study,condition,block,trial,practice,level,"
-          "level_sha256,mode,tiling,q,room,cell,cues,minimap,end,steps,optimum,efficiency,time,"
-          "points_true,error_true,points_flat,error_flat,excluded,logdir\n", f);
+    report_header(f, "trials.csv");
     for (int i = 0; i < r->natt; i++) {
         const report_att *t = &r->att[i];
         const hol_report_attempt *a = &t->a;
@@ -108,9 +106,12 @@ static void stats_row(FILE *f, const report_run *r, int c, int m, const ps_row *
 static int participants_stats_csv(FILE *f, const report_run *r, const void *ctx)
 {
     (void)ctx;
-    fputs("study,condition,measure,participants,trials,mean,sd,ci_low,ci_high,conditions,"
-          "n_within,mean_within,ci_within_low,ci_within_high\n", f);
+    report_header(f, "participants_stats.csv");
     each_row(f, r, stats_row);
+    if (report_pstats_q_rows(f, r)) {
+        cli_error(r->cmd, 0, "out of memory");
+        return CLI_EXIT_FAIL;
+    }
     return 0;
 }
 
@@ -149,8 +150,7 @@ static void pair_row(FILE *f, const report_run *r, int m, int ca, int cb, const 
 static int paired_csv(FILE *f, const report_run *r, const void *ctx)
 {
     (void)ctx;
-    fputs("study,measure,condition_a,condition_b,differ,n,mean_diff,sd_diff,ci_low,ci_high,dz\n",
-          f);
+    report_header(f, "paired.csv");
     each_pair(f, r, pair_row);
     return 0;
 }

@@ -493,7 +493,7 @@ static int stats_csv(FILE *f, const report_run *r, const void *ctx)
 {
     const report_stats *s = r->stats;
     (void)ctx;
-    fputs("study,condition,measure,item,n,mean,sd,ci_low,ci_high\n", f);
+    report_header(f, "stats.csv");
     for (int c = 0; c < s->ncond; c++) {
         for (int m = 0; m < RS_NFIX; m++) {
             if (!s->fix[c * RS_NFIX + m].n)
@@ -520,13 +520,13 @@ static int stats_csv(FILE *f, const report_run *r, const void *ctx)
 
 static int learning_csv(FILE *f, const report_run *r, const void *ctx)
 {
-    const report_stats *s = r->stats;
     (void)ctx;
-    fputs("study,condition,position,n,mean_efficiency,sd,ci_low,ci_high\n", f);
-    for (int i = 0; i < s->nlearn; i++) {
-        const rs_learn *l = &s->learn[i];
-        report_csv(f, s->cond[l->cond].study, 0);
-        report_csv(f, s->cond[l->cond].condition, 0);
+    report_header(f, "learning.csv");
+    for (int i = 0; i < r->stats->nlearn; i++) {
+        const rs_learn *l = &r->stats->learn[i];
+        const rs_cond *c = &r->stats->cond[l->cond];
+        report_csv(f, c->study, 0);
+        report_csv(f, c->condition, 0);
         fprintf(f, "%ld,%ld,%.4f,", l->pos, l->m.n, l->m.mean);
         if (l->m.has_sd)
             fprintf(f, "%.4f,%.4f,%.4f\n", l->m.sd, l->m.lo, l->m.hi);
@@ -547,8 +547,7 @@ static int participants_csv(FILE *f, const report_run *r, const void *ctx)
 {
     const report_stats *s = r->stats;
     (void)ctx;
-    fputs("participant,study,condition,attempts,done,mean_steps,mean_efficiency,mean_time\n",
-          f);
+    report_header(f, "participants.csv");
     for (int i = 0; i < s->nprow; i++) {
         const rs_prow *p = &s->prow[i];
         report_csv(f, r->att[p->att].a.participant, 0);
@@ -562,26 +561,34 @@ static int participants_csv(FILE *f, const report_run *r, const void *ctx)
     return 0;
 }
 
+int rs_score_fields(const rs_score *o, char k[sizeof o->key], char *part[5])
+{
+    memcpy(k, o->key, sizeof o->key);
+    part[0] = k;
+    for (int j = 1; j < 5; j++) {
+        char *sep = strchr(part[j - 1], '\x1f');
+        for (int l = j; !sep && l < 5; l++)
+            part[l] = "";
+        if (!sep)
+            return j;
+        *sep = 0;
+        part[j] = sep + 1;
+    }
+    return 5;
+}
+
 /* scores.csv: a row's key split (session, participant, attempt,
  * questionnaire, when); `after study` and `before study` under the
  * condition `study`. */
 static int scores_csv(FILE *f, const report_run *r, const void *ctx)
 {
     const report_stats *s = r->stats;
+    char k[sizeof s->score->key], *part[5];
     (void)ctx;
-    fputs("participant,session,attempt,study,condition,placement,scope,instrument,subscale,"
-          "score,complete\n", f);
+    report_header(f, "scores.csv");
     for (long i = 0; i < s->nscore; i++) {
         const rs_score *o = &s->score[i];
-        char k[sizeof o->key], *part[5] = {k, "", "", "", ""};
-        memcpy(k, o->key, sizeof k);
-        for (int j = 1; j < 5; j++) {
-            char *sep = strchr(part[j - 1], '\x1f');
-            if (!sep)
-                break;
-            *sep = 0;
-            part[j] = sep + 1;
-        }
+        rs_score_fields(o, k, part);
         const char *when = part[4], *scope = strchr(when, '_') ? strchr(when, '_') + 1 : when;
         int before = !strncmp(when, "before_", 7);
         report_csv(f, part[1], 0);

@@ -83,6 +83,10 @@ typedef struct report_stats {
 } report_stats;
 
 int rs_included(const report_run *r, int i); /* done, not practice */
+/* Score o's key split into part[0..4] (session, participant, attempt,
+ * questionnaire, when; "" for those missing) in k, a copy of it: the
+ * number of fields it has. */
+int rs_score_fields(const rs_score *o, char k[sizeof o->key], char *part[5]);
 /* The condition a questionnaire of when (answers.csv's) at an attempt of
  * condition c is counted in: its study's "study" for `after study`, else c. */
 int rs_when_cond(const report_stats *s, int c, const char *when);

@@ -60,10 +60,7 @@ static int attempts_csv(FILE *f, const report_run *r, const void *ctx)
     }
     for (int d = 0; d < r->ndirs; d++)
         report_rel_dir(r, d, rels[d], sizeof rels[d]);
-    fputs("participant,session,attempt,study,condition,position,level,mode,steps,optimum,"
-          "efficiency,time,end,tiling,room,cell,logdir,picture,q,cues,minimap,logdir_relative,"
-          "session_no\n",
-          f);
+    report_header(f, "attempts.csv");
     for (int i = 0; i < r->natt; i++) {
         const hol_report_attempt *t = &r->att[i].a;
         char pos[24], eff[24], tiling[16], room[16], cell[16], dir[1024];
@@ -98,7 +95,7 @@ int report_write_csv(const report_run *r)
 static int conditions_csv(FILE *f, const report_run *r, const void *ctx)
 {
     const hol_report_agg *g = ctx;
-    fputs("study,condition,attempts,done,mean_steps,mean_efficiency,mean_time\n", f);
+    report_header(f, "conditions.csv");
     for (int i = 0; i < g->n; i++) {
         const hol_report_cond *c = &g->c[i];
         char eff[24];
@@ -234,7 +231,8 @@ static int build_csv(FILE *f, const report_run *r, const void *ctx)
 {
     (void)r;
     (void)ctx;
-    fprintf(f, "%s\nholonomy,%s,%s,%s\n", REPORT_BUILD_COLUMNS, hol_shell_build_version(),
+    report_header(f, "build.csv");
+    fprintf(f, "holonomy,%s,%s,%s\n", hol_shell_build_version(),
             hol_shell_build_commit(), hol_shell_build_date());
     return 0;
 }
