@@ -475,6 +475,8 @@ typedef struct hol_app_outside {
 } hol_app_outside;
 
 /* What every platform draws. */
+#define HOL_APP_SEAT_FADE_S 0.2 /* seated: a step's fade, seconds */
+
 typedef struct hol_app_view {
     hol_app_state state;
     int paused;
@@ -497,6 +499,11 @@ typedef struct hol_app_view {
                                          only for a headset's eyes */
     hol_app_outside outside;          /* the way back in (above) */
     hol_app_hud hud;
+    int seated;                       /* 1: seated play (HOL_INPUT_SEATED) */
+    double seat_fade;                 /* seated: the short fade of a step,
+                                         1 at the step down to 0 after
+                                         HOL_APP_SEAT_FADE_S (a renderer
+                                         blends the frame to black by it) */
     hol_app_minimap map;
     int tree_marked;                  /* 1: the tree on room vertex
                                          tree_vertex is marked (tutorial

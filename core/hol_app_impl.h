@@ -57,6 +57,9 @@ struct hol_app {
     int rebase;          /* a headset record did not walk: the next that
                             may re-bases the room (hol_input.h) */
     int pending_start;
+    uint32_t seat_edges; /* seated: the step buttons pressed this record */
+    double seat_step_t;  /* seated: the time of the last step (the fade) */
+    int seat_stepped;    /* seated: 1 once a step was taken */
     int debug;           /* the HUD's debug text (HOL_BTN_DEBUG toggles) */
     uint32_t device;     /* HOL_DEVICE_* of the last record: the prompts' words */
     double device_t;     /* the time the device in use became that device */

@@ -647,8 +647,8 @@ static hol_err hol__place_at_start(hol_app *app, const hol_input *in)
 static hol_err hol__place(hol_app *app, const hol_input *in, uint32_t pressed)
 {
     hol_err err;
-    if (!(in->flags & HOL_INPUT_HEAD_VALID))
-        return HOL_OK;
+    if (!(in->flags & HOL_INPUT_HEAD_VALID) || (in->flags & HOL_INPUT_SEATED))
+        return HOL_OK; /* seated: the head's position places nothing */
     int start = app->ev.level_started;
     if (start && (err = hol__place_at_start(app, in)))
         return err;
@@ -657,6 +657,55 @@ static hol_err hol__place(hol_app *app, const hol_input *in, uint32_t pressed)
         return err;
     if ((start || re) && hol__may_walk(in))
         app->rebase = 0;
+    return HOL_OK;
+}
+
+/* Seated play (hol_input.h): the look follows a tracked head or the
+ * pancake's turn axes and snap turns, the head's position walks nothing,
+ * and the first step button pressed (app->seat_edges) moves the head from
+ * its cell's centre to the centre of the neighbouring cell in the room
+ * direction nearest the look's: one cell edge crossed, the room step a
+ * walk across it takes. A step into the hedge is not taken. */
+static hol_err hol__seated_move(hol_app *app, const hol_input *in, double t, double dt)
+{
+    /* the room directions in yaw order (yaw 0 north, 90 west): dx, dz */
+    static const int d[4][2] = {{0, -1}, {-1, 0}, {0, 1}, {1, 0}};
+    static const uint32_t btn[4] = {HOL_BTN_STEP_FWD, HOL_BTN_STEP_LEFT, HOL_BTN_STEP_BACK,
+                                    HOL_BTN_STEP_RIGHT};
+    static const int order[4] = {0, 2, 1, 3}; /* ahead, back, left, right */
+    hol_motion_steps st;
+    if (in->flags & HOL_INPUT_HEAD_VALID) {
+        hol__yaw_pitch_from_quat(in->head.quat, &app->mo.yaw_deg, &app->mo.pitch_deg);
+    } else {
+        static const float still[2] = {0, 0};
+        if (in->flags & HOL_INPUT_SNAP_YAW)
+            app->mo.yaw_deg = in->snap_yaw_deg;
+        hol_err err = dt > HOL__STALL_S ? HOL_OK
+                                        : hol_motion_pancake(&app->mo, still, in->turn, dt, &st);
+        if (err && err != HOL_ERANGE)
+            return err;
+    }
+    uint32_t edges = app->seat_edges;
+    app->seat_edges = 0;
+    double yaw = fmod(app->mo.yaw_deg, 360.0);
+    int k = (int)floor((yaw < 0 ? yaw + 360 : yaw) / 90 + 0.5) & 3; /* the look's quarter */
+    for (int i = 0; i < 4; i++) {
+        int rel = order[i], dir = (k + rel) & 3;
+        if (!(edges & btn[rel]))
+            continue;
+        double m = app->mo.d.cell_m;
+        int c = app->mo.user.col + d[dir][0], r = app->mo.user.row + d[dir][1];
+        if (c < 0 || r < 0 || c >= hol_room_cols(&app->mo.user) ||
+            r >= hol_room_rows(&app->mo.user))
+            return HOL_OK; /* the hedge */
+        double pos[3] = {(c + 0.5) * m, app->mo.head[1], (r + 0.5) * m};
+        hol_err err = hol_motion_move_to(&app->mo, pos, &st);
+        if (err && err != HOL_ERANGE)
+            return err;
+        app->seat_step_t = in->time_s;
+        app->seat_stepped = 1;
+        return hol__room_steps(app, &st, t);
+    }
     return HOL_OK;
 }
 
@@ -669,6 +718,8 @@ static hol_err hol__move(hol_app *app, const hol_input *in, double t0, double dt
 {
     hol_motion_steps st;
     hol_err err;
+    if (in->flags & HOL_INPUT_SEATED)
+        return hol__seated_move(app, in, t0 + dt, dt);
     if (in->flags & HOL_INPUT_HEAD_VALID) {
         double pos[3] = {in->head.pos[0], in->head.pos[1], in->head.pos[2]};
         hol__yaw_pitch_from_quat(in->head.quat, &app->mo.yaw_deg, &app->mo.pitch_deg);
@@ -770,6 +821,7 @@ static hol_err hol__point_frame(hol_app *app, const hol_input *in, uint32_t pres
 {
     if (app->view.paused)
         return HOL_OK;
+    app->seat_edges = 0; /* seated: no step while pointing */
     if (in->flags & HOL_INPUT_HEAD_VALID) {
         hol__yaw_pitch_from_quat(in->head.quat, &app->mo.yaw_deg, &app->mo.pitch_deg);
     } else {
@@ -799,6 +851,7 @@ hol_err hol_app_step(hol_app *app, const hol_input *in)
     uint32_t pressed = in->pressed | (in->buttons & ~(app->have_prev ? app->prev.buttons : 0u));
     app->prev = *in;
     app->have_prev = 1;
+    app->seat_edges = pressed & HOL_BTN_STEPS; /* seated: hol__seated_move */
     app->view.frame++;
     if (!hol__may_walk(in))
         app->rebase = 1;

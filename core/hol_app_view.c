@@ -315,6 +315,8 @@ static void hol__fill_lines(const hol_app *app, hol_app_hud *h)
     if (alone && !h->debug)
         return;
     HOL__LINE("%s", h->status[0] ? h->status : h->objective);
+    if (v->seated) /* the panel names the mode */
+        HOL__LINE("%s", hol_prompt_seated(h->device));
     HOL__LINE(hol_str(lang, HOL_S_STEPS_FMT), h->steps);
     if (lim > 0)
         HOL__LINE(hol_str(lang, HOL_S_TIME_OF_FMT), secs / 60 % 100000, secs % 60, lim / 60 % 100000,
@@ -535,6 +537,11 @@ static void hol__fill_outside(hol_app *app, const hol_input *in)
 
 void hol__fill_view(hol_app *app, const hol_input *in)
 {
+    hol_app_view *v = &app->view;
+    if (in)
+        v->seated = (in->flags & HOL_INPUT_SEATED) != 0;
+    double since = in && app->seat_stepped ? in->time_s - app->seat_step_t : HOL_APP_SEAT_FADE_S;
+    v->seat_fade = v->seated && since < HOL_APP_SEAT_FADE_S ? 1 - since / HOL_APP_SEAT_FADE_S : 0;
     hol__fill_eyes(app, in);
     hol__fill_outside(app, in);
     hol__fill_hud(app, in);

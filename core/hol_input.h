@@ -49,6 +49,16 @@
  *   A platform that missed frames while the headset was off (a stopped
  *   OpenXR session, a hidden WebXR session) sets HOL_INPUT_HEADSET_OFF on
  *   the first record after them.
+ * - Seated play (HOL_INPUT_SEATED, issue 37: a desk or a chair, no room
+ *   walking): the head's position walks nothing (a tracked head gives the
+ *   look only; the pancake move axes are ignored, its turn axes and snap
+ *   turns still turn); an edge of a HOL_BTN_STEP_* button moves the user
+ *   from the centre of the cell to the centre of its neighbour in the room
+ *   direction nearest the look's (ahead, back, left or right), which
+ *   crosses one cell edge: the same room step a walk across that edge
+ *   takes (hol_motion_move_to). One step a record (the first of ahead,
+ *   back, left, right); a step into the hedge is not taken. Records
+ *   without the flag (every recording made before it) play as before.
  * - Axes are in [-1, 1] after the platform's dead zone; zero is at rest.
  *   The app step turns them into motion (pancake mode); a headset sends
  *   zero axes and a tracked head.
@@ -97,7 +107,10 @@
                                              the step logs `outside` and
                                              `inside` events (recordings
                                              made before it have none) */
-#define HOL_INPUT_FLAGS_ALL    0xfffu
+#define HOL_INPUT_SEATED       (1u << 12) /* seated play: the head's position
+                                             walks nothing, the step buttons
+                                             take one room step each (below) */
+#define HOL_INPUT_FLAGS_ALL    0x1fffu
 
 /* buttons (held) */
 #define HOL_BTN_CONFIRM  (1u << 0) /* confirm / next level */
@@ -108,7 +121,12 @@
 #define HOL_BTN_RESTART  (1u << 5) /* restart the level */
 #define HOL_BTN_QUIT     (1u << 6) /* leave the app */
 #define HOL_BTN_DEBUG    (1u << 7) /* show or hide the debug text (tile, cell) */
-#define HOL_BTN_ALL      0xffu
+#define HOL_BTN_STEP_FWD   (1u << 8)  /* seated: one room step ahead */
+#define HOL_BTN_STEP_BACK  (1u << 9)  /* seated: one room step back */
+#define HOL_BTN_STEP_LEFT  (1u << 10) /* seated: one room step to the left */
+#define HOL_BTN_STEP_RIGHT (1u << 11) /* seated: one room step to the right */
+#define HOL_BTN_STEPS      0xf00u
+#define HOL_BTN_ALL        0xfffu
 
 /* The device in use (hol_input.device). The XR values are the OpenXR
  * interaction profiles the headset binds (platform/openxr/hol_xr_bind.h);

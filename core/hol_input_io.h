@@ -23,8 +23,10 @@
  *   HOL_INPUT_SNAP_YAW bits); every version 1 line parses as it did. The
  *   HOL_INPUT_RECENTRED bit (80) joined version 2 later, and so did the
  *   headset's state (HOL_INPUT_HEADSET 100, HOL_INPUT_HEADSET_OFF 200,
- *   HOL_INPUT_POS_EMULATED 400): builds before them refuse a line that has
- *   one; a line without them reads and replays as it always did.
+ *   HOL_INPUT_POS_EMULATED 400), the way back (HOL_INPUT_WAY_BACK 800),
+ *   and seated play (HOL_INPUT_SEATED 1000, the buttons HOL_BTN_STEP_*
+ *   100..800): builds before them refuse a line
+ *   that has one; a line without them reads and replays as it always did.
  * - hol_input_format writes the canonical line: fields in the order above,
  *   fields whose bytes are all zero left out (a -0 is written), floats with 9
  *   significant digits and the time with 17, so parsing the line gives back

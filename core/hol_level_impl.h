@@ -91,6 +91,7 @@ hol_err hol__key_tiling(hol__lp *p, char **f, int nf);
 hol_err hol__key_room(hol__lp *p, char **f, int nf);
 hol_err hol__key_cell(hol__lp *p, char **f, int nf);
 hol_err hol__key_lesson(hol__lp *p, char **f, int nf);
+hol_err hol__key_quiz(hol__lp *p, char **f, int nf);
 hol_err hol__key_question(hol__lp *p, char **f, int nf);
 hol_err hol__key_ask(hol__lp *p, char **f, int nf);
 

@@ -7,6 +7,7 @@
 
 #include "hol_face.h"
 #include "hol_lesson.h"
+#include "hol_quiz.h"
 #include "hol_room.h"
 #include "hol_str.h"
 #include "hol_tile.h"
@@ -356,6 +357,20 @@ hol_err hol__key_lesson(hol__lp *p, char **f, int nf)
     if (hol_lesson_fill((int)n, hol__lv_q(p), &p->L))
         return hol__lfail(p, HOL_ERANGE, p->line, "lesson %d does not fit its screens",
                           (int)n);
+    p->have_mode = p->line;
+    return HOL_OK;
+}
+
+/* quiz pre|post: the class's pre-test or post-test of core/hol_quiz.h in
+ * the level's tiling (its mode, questions, screen and time limit). */
+hol_err hol__key_quiz(hol__lp *p, char **f, int nf)
+{
+    (void)nf;
+    int phase = !strcmp(f[1], "pre") ? HOL_QUIZ_PRE : !strcmp(f[1], "post") ? HOL_QUIZ_POST : -1;
+    if (phase < 0)
+        return hol__lfail(p, HOL_EPARSE, p->line, "quiz '%.20s' is not pre or post", f[1]);
+    if (hol_quiz_fill(phase, hol__lv_q(p), &p->L))
+        return hol__lfail(p, HOL_ERANGE, p->line, "the %s-test does not fit its screens", f[1]);
     p->have_mode = p->line;
     return HOL_OK;
 }

@@ -56,6 +56,7 @@ static const struct {
     {"room", 3, 3, HOL__GEO, hol__key_room},
     {"cell", 2, 2, HOL__GEO, hol__key_cell},
     {"lesson", 2, 2, 0, hol__key_lesson},
+    {"quiz", 2, 2, 0, hol__key_quiz},
     HOL_LEVEL_MORE_KEYS
 };
 _Static_assert(sizeof hol__keys / sizeof hol__keys[0] <= 32, "hol__lp.key_line holds every key");

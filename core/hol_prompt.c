@@ -62,3 +62,15 @@ const char *hol_prompt_move(uint32_t device, int lang)
     default: return hol_str(lang, HOL_S_MOVE_ROOM);
     }
 }
+
+const char *hol_prompt_seated(uint32_t device)
+{
+    switch (device) {
+    case HOL_DEVICE_KEYBOARD: return "SEATED: W/A/S/D OR UP/DOWN: ONE STEP";
+    case HOL_DEVICE_GAMEPAD: return "SEATED: LEFT STICK OR D-PAD: ONE STEP";
+    case HOL_DEVICE_NONE: return "SEATED: SWIPE OR ARROWS: ONE STEP";
+    case HOL_DEVICE_WEBXR_HAND:
+    case HOL_DEVICE_XR_HAND: return "SEATED: A THUMBSTICK: ONE STEP";
+    default: return "SEATED: THUMBSTICK: ONE STEP";
+    }
+}

@@ -18,7 +18,8 @@
  * - hol_prompt_move(device, lang) says how one walks with it ("W/S/A/D:
  *   WALK"), in lang (core/hol_str.h); NULL for HOL_DEVICE_NONE. The
  *   controls' names above are the names printed on them, in every
- *   language.
+ *   language. hol_prompt_seated(device) names seated play and its step
+ *   controls (English only, one table here, for the string table to take).
  * - The tables must follow the bindings: tests/test_xr_bind.c derives each
  *   XR word from the profile's binding path and compares.
  * - Pure data: static strings, no state.
@@ -30,5 +31,9 @@
 
 const char *hol_prompt_button(uint32_t device, uint32_t btn);
 const char *hol_prompt_move(uint32_t device, int lang);
+/* Seated play (HOL_INPUT_SEATED): the panel's line naming the mode and
+ * how one steps with the device ("SEATED: W/A/S/D OR UP/DOWN: ONE STEP");
+ * never NULL. */
+const char *hol_prompt_seated(uint32_t device);
 
 #endif

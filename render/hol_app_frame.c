@@ -32,6 +32,11 @@ void hol_app_frame_desc(const hol_app_view *v, int eye, int w, int h, double fov
         memcpy(fd->cam.eye, v->head, sizeof fd->cam.eye);
     }
     fd->cell_m = v->cell_m; /* the room's cells, for the view and the map */
+    if (v->seat_fade > 0) { /* seated: a step's short fade to near black */
+        static const uint8_t dark[3] = {1, 1, 1};
+        fd->fade = 0.9 * v->seat_fade;
+        memcpy(fd->fade_rgb, dark, sizeof dark);
+    }
     fd->cam.yaw_deg = v->yaw_deg;
     fd->cam.pitch_deg = v->pitch_deg;
     fd->cam.fovy_deg = fovy_deg > 0 ? fovy_deg : 90;

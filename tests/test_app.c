@@ -92,6 +92,81 @@ static void test_scripted_room_step(void **state)
     hol_app_destroy(app);
 }
 
+/* Seated play (issue 37): one step button's edge per record takes one room
+ * step, the same the walk across that cell edge takes. Random routes of
+ * room directions inside the 3 x 3 room, walked by a tracked head and
+ * stepped seated (pancake looking north, west, south or east: the button
+ * is the route's direction relative to the look; and a tracked head
+ * looking so, whose position does not walk), give the same tiles, cells
+ * and step events, step for step; a step into the hedge is not taken, a
+ * record without a step button and a moving head take none. */
+static void test_seated_steps_are_walked_steps(void **state)
+{
+    (void)state;
+    static const uint32_t rel_btn[4] = {HOL_BTN_STEP_FWD, HOL_BTN_STEP_LEFT, HOL_BTN_STEP_BACK,
+                                        HOL_BTN_STEP_RIGHT};
+    uint64_t seed = 12345;
+    for (int trial = 0; trial < 40; trial++) {
+        hol_app *walk = make_app(), *seat = make_app();
+        hol_app_level L;
+        memset(&L, 0, sizeof L);
+        L.seed = 9; /* explore: no end */
+        assert_int_equal(hol_app_start_level(walk, &L), HOL_OK);
+        assert_int_equal(hol_app_start_level(seat, &L), HOL_OK);
+        int look = trial & 3, tracked = (trial >> 2) & 1;
+        hol_room r = hol_app_get_view(walk)->user;
+        int col = r.col, row = r.row;
+        double t = 0;
+        hol_input in = tracked_at(t, col, row);
+        step(walk, in);
+        hol_input s0 = tracked ? app_head(t, col, row, 90.0 * look, 0, 0) : pancake(t, 0, 0);
+        s0.flags |= HOL_INPUT_SEATED | (tracked ? 0 : HOL_INPUT_SNAP_YAW);
+        s0.snap_yaw_deg = (float)(90 * look);
+        step(seat, s0);
+        for (int i = 0; i < 12; i++) {
+            seed = seed * 6364136223846793005ull + 1442695040888963407ull;
+            int dir = (int)(seed >> 33) & 3, dc, dr;
+            hol_dir_delta(dir, &dc, &dr);
+            int inside = col + dc >= 0 && col + dc < 3 && row + dr >= 0 && row + dr < 3;
+            t += 0.25;
+            if (inside) {
+                col += dc;
+                row += dr;
+                in = tracked_at(t, col, row);
+                step(walk, in);
+            }
+            hol_input si = tracked ? app_head(t, 2 - col, row, 90.0 * look, 0, 0) : pancake(t, 1, 0);
+            si.flags |= HOL_INPUT_SEATED;
+            si.pressed = rel_btn[(dir - look) & 3];
+            const hol_app_events *es = step(seat, si);
+            assert_int_equal(es->nsteps, inside);
+            if (inside) {
+                const hol_app_events *ew = hol_app_get_events(walk);
+                assert_int_equal(ew->nsteps, 1);
+                assert_int_equal(es->steps[0].dir, ew->steps[0].dir);
+                assert_true(hol_tile_eq(es->steps[0].room.tile, ew->steps[0].room.tile));
+            }
+            const hol_app_view *vw = hol_app_get_view(walk), *vs = hol_app_get_view(seat);
+            assert_true(hol_tile_eq(vs->user.tile, vw->user.tile));
+            assert_int_equal(vs->user.col, vw->user.col);
+            assert_int_equal(vs->user.row, vw->user.row);
+            assert_int_equal(vs->user.orient, vw->user.orient);
+            assert_int_equal(vs->hud.steps, vw->hud.steps);
+            assert_int_equal(vs->seated, 1);
+            assert_true(!inside || vs->seat_fade == 1.0);
+            /* no button: no step, the fade runs out */
+            si.pressed = 0;
+            si.time_s = t += 0.25;
+            assert_int_equal(step(seat, si)->nsteps, 0);
+            assert_true(hol_app_get_view(seat)->seat_fade == 0);
+            in.time_s = t;
+            step(walk, in);
+        }
+        hol_app_destroy(walk);
+        hol_app_destroy(seat);
+    }
+}
+
 /* Play walk (room directions) through tracked head positions from the
  * level's start; returns the steps counted when the level ended (or -1). */
 static int play_walk(hol_app *app, const uint8_t *walk, int n, double *t)
@@ -2142,6 +2217,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_scripted_room_step),
+        cmocka_unit_test(test_seated_steps_are_walked_steps),
         cmocka_unit_test(test_flag_optimum_and_detour),
         cmocka_unit_test(test_start_where_the_head_stands),
         cmocka_unit_test(test_path_when_strayed),

@@ -231,12 +231,52 @@ static void test_touch_and_snap(void **state)
     assert_true(fabsf(in.snap_yaw_deg - 0.0f) < 1e-6f);
 }
 
+/* Seated play (?seated=1): a key held is one step, released and pressed
+ * again the next; the touch stick's swipe steps too; the record is
+ * seated; Left snaps by 90 degrees though no snap was asked. */
+static void test_seated(void **state)
+{
+    (void)state;
+    hol_web_pancake p;
+    memset(&p, 0, sizeof p);
+    p.seated = 1;
+    hol_web_key(&p, HOL_WEB_K_FORWARD, 1, 0);
+    hol_input in = frame(&p);
+    assert_int_equal(in.flags & HOL_INPUT_SEATED, HOL_INPUT_SEATED);
+    assert_int_equal(in.pressed & HOL_BTN_STEPS, HOL_BTN_STEP_FWD);
+    in = frame(&p); /* held: no second step */
+    assert_int_equal(in.pressed & HOL_BTN_STEPS, 0);
+    hol_web_key(&p, HOL_WEB_K_FORWARD, 0, 0);
+    in = frame(&p);
+    assert_int_equal(in.pressed & HOL_BTN_STEPS, 0);
+    hol_web_key(&p, HOL_WEB_K_STRAFE_L, 1, 0);
+    assert_int_equal(frame(&p).pressed & HOL_BTN_STEPS, HOL_BTN_STEP_LEFT);
+    hol_web_key(&p, HOL_WEB_K_STRAFE_L, 0, 0);
+    frame(&p);
+    p.touch_move[1] = -0.9f; /* a swipe down on the left half */
+    p.touch_used = 1;
+    assert_int_equal(frame(&p).pressed & HOL_BTN_STEPS, HOL_BTN_STEP_BACK);
+    p.touch_move[1] = 0;
+    frame(&p);
+    /* the on-screen arrows hold the step buttons themselves */
+    p.touch_buttons = p.touch_taps = HOL_BTN_STEP_RIGHT;
+    in = frame(&p);
+    assert_int_equal(in.pressed & HOL_BTN_STEPS, HOL_BTN_STEP_RIGHT);
+    p.touch_buttons = 0;
+    hol_web_key(&p, HOL_WEB_K_TURN_L, 1, 0);
+    hol_web_pancake_input(&p, 2.0, 1.0 / 60, 0.0, &in);
+    assert_int_equal(in.flags & HOL_INPUT_SNAP_YAW, HOL_INPUT_SNAP_YAW);
+    assert_true(fabsf(in.snap_yaw_deg - 90.0f) < 1e-6f);
+    assert_true(in.turn[0] == 0.0f);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_key_codes),     cmocka_unit_test(test_held_and_tapped),
         cmocka_unit_test(test_escape_and_pointer_lock), cmocka_unit_test(test_mouse_turns),
         cmocka_unit_test(test_gamepad),       cmocka_unit_test(test_touch_and_snap),
+        cmocka_unit_test(test_seated),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

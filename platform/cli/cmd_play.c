@@ -29,6 +29,7 @@
 #include "play_stats.h"
 #include "play_study.h"
 #include "play_track.h"
+#include "../shell/hol_shell_seat.h"
 
 const char *const cli_play_usage =
     "usage: holonomy play [LEVEL | --mode tutorial|flag|keys|explore | --lesson N |\n"
@@ -38,7 +39,7 @@ const char *const cli_play_usage =
     "                     [--record FILE]\n"
     "                     [--frames N] [--input FILE] [--size WxH]\n"
     "                     [--no-gamepad | --gamepad-replay FILE] [--snap-turn DEG]\n"
-    "                     [--stats] [--tiling 4,Q] [--room CxR] [--cell M]\n"
+    "                     [--seated] [--stats] [--tiling 4,Q] [--room CxR] [--cell M]\n"
     "                     [--mute | --volume V] [--track-hz N] [--lang en|de|nl]\n"
     "\n"
     "Play in a desktop window (EGL on X11; also under Xvfb). LEVEL is a level\n"
@@ -56,6 +57,10 @@ const char *const cli_play_usage =
     "                   in the menu: restart\n"
     "  F3               debug text (tile, cell)  F2        frame time (fps, CPU)\n"
     "  Esc/Q            quit\n"
+    "  --seated         seated play: no walking; W/S, Up/Down, A/D (or the\n"
+    "                   controller's stick) take one room step a press, with\n"
+    "                   a short fade; Left/Right snap turn (90 degrees unless\n"
+    "                   --snap-turn); recorded, so replay plays it again\n"
     "\n"
     "A game controller (the first found; plugged in later, it joins) plays too:\n"
     "left stick walks, right stick turns and looks, south button confirms,\n"
@@ -133,7 +138,7 @@ typedef struct play_opts {
     play_geometry geo;
     uint64_t seed;
     long frames;
-    int w, h, use_pad, append, snap_deg, stats, restart_participant, resume, mute;
+    int w, h, use_pad, append, snap_deg, stats, restart_participant, resume, mute, seated;
     int track_hz; /* --track-hz; 0: not given (10) */
     int lesson;   /* --lesson N; 0: none */
     int lang;     /* --lang (core/hol_str.h); 0: English */
@@ -163,6 +168,7 @@ typedef struct play_ctx {
     hol_hid_dev pad;
     hol_hid_link link;
     int use_pad;
+    int seat_latch; /* --seated: hol_shell_seat's */
     double t0, last_t;
     frame_stats fs;
     int overlay; /* F2: the frame time drawn */
@@ -243,12 +249,14 @@ static const cli_store play_store[] = {
     CLI_STORE_FLAG("--mute", play_opts, mute, 1),
     CLI_STORE_FLAG("--restart-participant", play_opts, restart_participant, 1),
     CLI_STORE_FLAG("--resume", play_opts, resume, 1),
+    CLI_STORE_FLAG("--seated", play_opts, seated, 1),
     {NULL, 0, 0, 0}};
 
 static int play_options(const char *cmd, int argc, char **argv, play_opts *o)
 {
     static const char *const flags[] = {"--no-gamepad", "--append", "--stats",
-                                        "--restart-participant", "--resume", "--mute", NULL};
+                                        "--restart-participant", "--resume", "--mute",
+                                        "--seated", NULL};
     memset(o, 0, sizeof *o);
     o->seed = CLI_SEED_DEFAULT;
     o->w = 960, o->h = 720, o->use_pad = 1, o->volume = -1;
@@ -543,8 +551,9 @@ static int play_keys_input(play_ctx *c, int open, hol_input *in)
         t = c->last_t;
     double dt = t - c->last_t > 1e-3 ? t - c->last_t : 1e-3;
     c->last_t = t;
-    int used = keys_input(&c->keys, t, dt, open, c->o.snap_deg > 0, in);
-    keys_snap(&c->keys, c->o.snap_deg, hol_app_get_view(hol_session_app(c->s))->yaw_deg, in);
+    int snap = c->o.snap_deg > 0 ? c->o.snap_deg : c->o.seated ? 90 : 0;
+    int used = keys_input(&c->keys, t, dt, open, snap > 0, in);
+    keys_snap(&c->keys, snap, hol_app_get_view(hol_session_app(c->s))->yaw_deg, in);
     return used;
 }
 
@@ -574,6 +583,8 @@ static int play_frame_input(play_ctx *c, int open, hol_input *in)
         hol_err pe = hol_hid_dev_poll(&c->pad, &pad);
         hol_hid_link_merge(&c->link, pe, c->pad.lost, &pad, activity, in);
     }
+    if (c->o.seated) /* the move axes (keys, stick, a script's) step */
+        hol_shell_seat(&c->seat_latch, in);
     return 1;
 }
 

@@ -51,6 +51,8 @@ typedef struct hol_web {
     /* WebXR */
     int xr_active;
     hol_web_xr_state xr;
+    int xr_seat_latch;       /* ?seated=1 in the headset: the thumbsticks'
+                                push, one room step (hol_shell_seat.h) */
     hol_web_xr_frame xf;     /* written by the glue each XR frame */
     long xr_frames, xr_two_views, xr_focused;
     double xr_cpu_ms[4096];  /* per XR frame: step and both eyes (ms) */

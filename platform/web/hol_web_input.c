@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "../../core/hol_motion.h"
+#include "../shell/hol_shell_seat.h"
 #include "../shell/hol_shell_stick.h"
 
 int hol_web_key_from_code(const char *code)
@@ -91,7 +92,8 @@ void hol_web_pancake_input(hol_web_pancake *p, double t, double dt, double yaw_d
     double rate = dt > 1e-3 ? dt : 1e-3;
     in.move[0] = (float)(on(p, HOL_WEB_K_STRAFE_R) - on(p, HOL_WEB_K_STRAFE_L));
     in.move[1] = (float)(on(p, HOL_WEB_K_FORWARD) - on(p, HOL_WEB_K_BACK));
-    int turn_keys = p->snap_deg > 0 ? 0 : on(p, HOL_WEB_K_TURN_L) - on(p, HOL_WEB_K_TURN_R);
+    int snap = p->snap_deg > 0 ? p->snap_deg : p->seated ? 90 : 0;
+    int turn_keys = snap > 0 ? 0 : on(p, HOL_WEB_K_TURN_L) - on(p, HOL_WEB_K_TURN_R);
     /* mouse 0.2 and touch drag 0.3 degrees a pixel, as turn rates over
      * this frame (120 deg/s turn, 90 deg/s look at full deflection) */
     double dx = p->mouse_dx * 0.2 + p->touch_dx * 0.3, dy = p->mouse_dy * 0.2 + p->touch_dy * 0.3;
@@ -119,10 +121,12 @@ void hol_web_pancake_input(hol_web_pancake *p, double t, double dt, double yaw_d
     in.device = (uint32_t)p->device;
     /* snap turn: Left and Right turn by snaps, one a press */
     int turns = p->taps[HOL_WEB_K_TURN_L] - p->taps[HOL_WEB_K_TURN_R];
-    if (p->snap_deg > 0 && turns) {
+    if (snap > 0 && turns) {
         in.flags |= HOL_INPUT_SNAP_YAW;
-        in.snap_yaw_deg = (float)hol_motion_snap_yaw(yaw_deg, p->snap_deg, turns);
+        in.snap_yaw_deg = (float)hol_motion_snap_yaw(yaw_deg, snap, turns);
     }
+    if (p->seated) /* one room step a push */
+        hol_shell_seat(&p->seat_latch, &in);
     memset(p->taps, 0, sizeof p->taps);
     p->mouse_dx = p->mouse_dy = p->touch_dx = p->touch_dy = 0;
     p->touch_taps = 0;

@@ -30,6 +30,11 @@
  *   sets HOL_INPUT_DEVICE_LOST (the game pauses) until it is back or a key,
  *   the mouse or a touch is used.
  * - HOL_INPUT_FOCUSED while the page is visible and has the focus.
+ * - Seated play (`seated`, the page's ?seated=1): the move axes the keys,
+ *   the touch stick (a swipe on the left half) and the pad give take one
+ *   room step a push (platform/shell/hol_shell_seat.h), the on-screen
+ *   arrows hold HOL_BTN_STEP_* bits, Left/Right snap by 90 degrees unless
+ *   snap_deg says otherwise.
  */
 #ifndef HOL_WEB_INPUT_H
 #define HOL_WEB_INPUT_H
@@ -81,6 +86,8 @@ typedef struct hol_web_pancake {
     /* the page */
     int focused;
     int snap_deg;                   /* > 0: Left/Right snap by this many degrees */
+    int seated;                     /* seated play (see the contract) */
+    int seat_latch;                 /* hol_shell_seat's, kept between frames */
     /* kept between frames */
     int device;                     /* HOL_DEVICE_* used last */
 } hol_web_pancake;

@@ -496,6 +496,9 @@ int main(void)
     boot_ms[1] = emscripten_performance_now();
     hol_web_js_mark("holonomy-gl");
     w->pan.snap_deg = config_snap();
+    char seated[4];
+    hol_web_js_config("seated", seated, sizeof seated);
+    w->pan.seated = !strcmp(seated, "1"); /* ?seated=1 */
     if (w->pan.snap_deg < 0) {
         hol_web_js_event("failed", "snap is not a divisor of 360 in 1..180");
         return 1;

@@ -15,6 +15,7 @@
 
 #include "../../core/hol_motion.h"
 #include "../../render/hol_app_frame.h"
+#include "../shell/hol_shell_seat.h"
 #include "../shell/hol_xr_quad.h"
 #include "hol_web.h"
 
@@ -420,6 +421,16 @@ EMSCRIPTEN_KEEPALIVE int hol_web_xr_step(double t_ms, int fb)
     if (w->xr_recentred && (in.flags & HOL_INPUT_HEAD_VALID)) {
         in.flags |= HOL_INPUT_RECENTRED;
         w->xr_recentred = 0;
+    }
+    if (w->pan.seated) { /* seated: either thumbstick's push is one step */
+        for (int h = 0; h < 2; h++) {
+            float x = w->xf.pad[h].axes[2], y = w->xf.pad[h].axes[3];
+            in.move[0] += isfinite(x) ? x : 0;
+            in.move[1] -= isfinite(y) ? y : 0;
+        }
+        for (int a = 0; a < 2; a++)
+            in.move[a] = in.move[a] > 1 ? 1 : in.move[a] < -1 ? -1 : in.move[a];
+        hol_shell_seat(&w->xr_seat_latch, &in);
     }
     w->xr_focused += (in.flags & HOL_INPUT_FOCUSED) != 0;
     hol_web_env_xr_frame(t_ms, in.device);

@@ -15,7 +15,10 @@
 // holonomy xr --no-haptics), track_hz=N (the logs' track rows N times a
 // second, 10..90, as --track-hz), lang=en|de|nl (the language of the page
 // and the game's text, as --lang; without it the browser's language when
-// it is one of them, else English). None: the default campaign. A level file
+// it is one of them, else English), seated=1 (seated play, as play --seated:
+// one room step a push of W/S/A/D, the touch stick or the on-screen arrows;
+// the bar's Seated box sets it), quiz=pre|post (a class's pre-test or
+// post-test: docs/teaching.md). None: the default campaign. A level file
 // chosen with "Level file..." plays on the next load (kept in
 // sessionStorage for this tab).
 'use strict';
@@ -23,7 +26,7 @@
 (function () {
   var params = new URLSearchParams(location.search);
   var config = {};
-  ['mode', 'seed', 'participant', 'snap', 'tiling', 'room', 'cell', 'gldebug', 'haptics', 'sound', 'track_hz', 'panel'].forEach(function (k) {
+  ['mode', 'seed', 'participant', 'snap', 'tiling', 'room', 'cell', 'gldebug', 'haptics', 'sound', 'track_hz', 'panel', 'seated'].forEach(function (k) {
     if (params.has(k)) config[k] = params.get(k);
   });
   var $ = function (id) { return document.getElementById(id); };
@@ -315,6 +318,14 @@
       }));
     });
   }
+  // seated play: the box reloads with seated=1 (or without); the arrows show
+  $('seated').checked = config.seated === '1';
+  if (config.seated === '1') document.body.classList.add('seated');
+  $('seated').onchange = function () {
+    var u = new URL(location.href);
+    if (this.checked) u.searchParams.set('seated', '1'); else u.searchParams.delete('seated');
+    location.href = u.href;
+  };
   // the lesson list: the chosen lesson on the next load (its geometry kept)
   $('lessons').onchange = function () {
     var u = new URL(location.href);
@@ -336,6 +347,10 @@
   } else if (/^[1-6]$/.test(params.get('lesson') || '')) {
     config.level = 'lesson ' + params.get('lesson') + '\n';
     config.levelName = 'lesson-' + params.get('lesson');
+    start();
+  } else if (/^(pre|post)$/.test(params.get('quiz') || '')) {
+    config.level = 'quiz ' + params.get('quiz') + '\n';
+    config.levelName = params.get('quiz') + 'test';
     start();
   } else if (params.has('level')) {
     var url = params.get('level');

@@ -25,6 +25,7 @@
 static const char *const report_usage =
     "usage: holonomy report LOGDIR... --out DIR [--bids DIR2] [--include-restarted]\n"
     "       holonomy report LOGDIR... --bids DIR2\n"
+    "       holonomy report --class PUPILS --out DIR\n"
     "\n"
     "Reads the research logs of one or more log folders (play/replay/xr --log:\n"
     "summary.csv, steps-NNN.csv, level-HASH.txt) and writes into DIR:\n"
@@ -73,6 +74,15 @@ static const char *const report_usage =
     "--bids DIR2 writes each attempt's head and hand tracks (track-NNN.csv) as a\n"
     "BIDS-Motion dataset (BIDS 1.9): one run per attempt, tracking systems room and\n"
     "tile; DIR2 must be new or empty.\n"
+    "--class PUPILS: a class's results from the pupils' answer files in PUPILS\n"
+    "(NAME.csv as the web page downloads it, or NAME/answers.csv of a log folder):\n"
+    "the pre-test's and post-test's items (level lines 'quiz pre', 'quiz post')\n"
+    "and the lessons' predictions judged by the core's key, into DIR:\n"
+    "class_items.csv (per item: answered, right, rate), class_pupils.csv (each\n"
+    "pupil's pre and post score, gain),\n"
+    "class_gain.csv (the mean gain, its 95 % CI, d_z, g_av beside Wu et al. 2020's\n"
+    "0.24 and Coban et al. 2022's g = 0.38) and class_wrong.csv (the wrong answers\n"
+    "given, how often).\n"
     "\n"
     "Exit status: 0 ok, 1 failure (writing), 2 bad input or usage.\n";
 
@@ -404,6 +414,8 @@ static int run(report_run *r, report_buf *b)
 int cli_cmd_report(int argc, char **argv)
 {
     const char *cmd = "report";
+    if (argc > 1 && !strcmp(argv[1], "--class"))
+        return report_class_main(cmd, argc, argv);
     if (cli_wants_help(argc, argv, report_valued)) {
         fputs(report_usage, stdout);
         return cli_finish_output(cmd);

@@ -134,6 +134,9 @@ int report_write_in(const report_run *r, const char *dir, const char *name, repo
                     const void *ctx);
 
 int report_write_csv(const report_run *r);
+/* `holonomy report --class DIR --out OUT` (report_class.c): argv[1] is
+ * "--class". */
+int report_class_main(const char *cmd, int argc, char **argv);
 /* build.csv (which build wrote the report: program, version, commit,
  * build_date) and codebook.csv (every column of the report's files:
  * ../codebook.h). */
