@@ -76,6 +76,18 @@ void ps_diff_cells(FILE *f, const hol_stats *d);
 /* participants_stats.csv's rows of the questionnaires' scores
  * (report_pstats_q.c), after the trials' measures: 0, -1 out of memory. */
 int report_pstats_q_rows(FILE *f, const report_run *r);
+/* paired.csv's and effects.csv's rows of the questionnaires' scores
+ * (report_pstats_q.c), after the trials' measures: 0, -1 out of memory. */
+int report_pstats_q_pairs(FILE *f, const report_run *r);
+int report_pstats_q_effects(FILE *f, const report_run *r);
+/* The factor columns of trials.csv (report_effects.c). */
+enum { PS_NF = 5 };
+extern const char *const ps_factor[PS_NF];
+/* Factor k of attempt t as trials.csv writes it ("" when it has none). */
+void ps_factor_text(const report_att *t, int k, char *out, size_t cap);
+/* The factors in which conditions ca and cb differ (their first included
+ * trials'), space-separated, then end (report_pstats_write.c). */
+void ps_differ(FILE *f, const report_run *r, int ca, int cb, const char *end);
 /* effects.csv (report_effects.c) */
 int report_effects_write(const report_run *r);
 
