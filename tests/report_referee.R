@@ -12,7 +12,9 @@
 # of its conditions) the same. Every figure of participants_stats.csv,
 # paired.csv and effects.csv must agree to 1e-9, every row R expects must
 # be there and no other; the questionnaires' rows of participants_stats.csv
-# (SSQ and TLX scores per condition and `study`) from scores.csv alike.
+# (SSQ and TLX scores per condition and `study`; their pairs and main
+# effects, of those asked per condition) from scores.csv alike, its
+# `excluded` scores (of a duplicate or restarted run) left out.
 # Usage: Rscript report_referee.R REPORT_DIR
 # [--include-restarted] (the report's option: trials excluded as duplicate
 # or restarted count too). Exit 0 when all agree ("R referee: N figures
@@ -52,6 +54,12 @@ ci <- function(x, k = 1) {
     if (n < 2) return(c(NA, NA))
     h <- qt(0.975, n - 1) * k * sd(x) / sqrt(n)
     c(mean(x) - h, mean(x) + h)
+}
+# d_z: empty for n under 2 or no spread (an SD of 0 or under 1e-9 of the
+# mean's magnitude: equal differences but for rounding)
+dz_of <- function(dd) {
+    s <- if (length(dd) > 1) sd(dd) else 0
+    if (s <= 0 || s <= 1e-9 * abs(mean(dd))) NA else mean(dd) / s
 }
 seen <- 0
 seen_pairs <- 0
@@ -93,7 +101,7 @@ effects_and_pairs <- function(st, m, cm, pm, complete, d, small) {
             same(paste(what, "ci_low"), row$ci_low, b2[1])
             same(paste(what, "ci_high"), row$ci_high, b2[2])
             same(paste(what, "dz"), row$dz,
-                 if (length(dd) > 1 && sd(dd) > 0) mean(dd) / sd(dd) else NA)
+                 dz_of(dd))
         }
     }
     # each pair of the study's conditions: A - B over participants with both
@@ -123,7 +131,7 @@ effects_and_pairs <- function(st, m, cm, pm, complete, d, small) {
         b2 <- ci(dd)
         same(paste(what, "ci_low"), row$ci_low, b2[1])
         same(paste(what, "ci_high"), row$ci_high, b2[2])
-        dz <- if (length(dd) > 1 && sd(dd) > 0) mean(dd) / sd(dd) else NA
+        dz <- dz_of(dd)
         same(paste(what, "dz"), row$dz, dz)
     }
 }
@@ -181,13 +189,17 @@ for (st in unique(inc$study)) {
 sc <- read.csv(file.path(dir, "scores.csv"), stringsAsFactors = FALSE, na.strings = "",
                colClasses = c(participant = "character", study = "character",
                               condition = "character", instrument = "character",
-                              subscale = "character", placement = "character"))
+                              subscale = "character", placement = "character",
+                              excluded = "character"))
 sc$study[is.na(sc$study)] <- ""
 scored <- list(ssq = c("total", "nausea", "oculomotor", "disorientation"), tlx = "raw")
 is_score <- mapply(function(i, s) !is.null(scored[[i]]) && s %in% scored[[i]],
                    sc$instrument, sc$subscale)
+# the scores of a duplicate or restarted run (`excluded`) left out, as
+# the trials are, unless --include-restarted
 q <- sc[sc$complete == 1 & !is.na(sc$score) & is_score &
-        !(sc$study == "" & sc$condition == "none"), ]
+        !(sc$study == "" & sc$condition == "none") &
+        (is.na(sc$excluded) | sc$excluded %in% counted), ]
 q$measure <- paste0(q$instrument, "_", q$subscale, ifelse(q$placement == "before", "_before", ""))
 for (st in unique(q$study)) for (m in unique(q$measure[q$study == st])) {
     d <- q[q$study == st & q$measure == m, ]

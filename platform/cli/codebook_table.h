@@ -121,6 +121,7 @@ static const codebook_row codebook_rows[] = {
     {"report:scores.csv", "subscale", "string", "", "", "SSQ: total, nausea, oculomotor, disorientation; TLX: raw and each item; a Likert item: its name"},
     {"report:scores.csv", "score", "number", "", "", "the score (4 decimals); empty when partial"},
     {"report:scores.csv", "complete", "integer", "", "0, 1", "1 when every item was answered"},
+    {"report:scores.csv", "excluded", "string", "", "duplicate, restarted; empty: counted", "why the score is left out of participants_stats.csv, paired.csv and effects.csv (its attempt's run, as trials.csv's excluded; --include-restarted counts it)"},
     {"report:paired.csv", "study", "string", "", "", ""},
     {"report:paired.csv", "measure", "string", "", "as participants_stats.csv (a questionnaire's: asked per condition)", "the measure"},
     {"report:paired.csv", "condition_a", "string", "", "", "the first condition"},

@@ -42,6 +42,8 @@ typedef struct ps_pairs { /* the pairs of one study's conditions */
 
 typedef struct report_pstats {
     int *excl;   /* per attempt: PX_* */
+    int *run;    /* per attempt: PX_DUPLICATE, PX_RESTARTED or PX_IN (its run's,
+                    whatever the attempt's own end: its questionnaires') */
     int *trial;  /* per attempt: its number within the study's participant */
     int *group;  /* per condition: its study's first condition; -1 none */
     int *first;  /* per condition: its first included attempt, -1 none */
@@ -68,7 +70,8 @@ int ps_group_conds(const report_pstats *p, int g, int m, int ncond);
  * what is not defined empty. */
 void ps_summary(FILE *f, const hol_stats *st, double k, int with_sd, int last);
 /* d_z: the mean difference over the SD of the differences: 1 and *out,
- * 0 when it is not defined (n under 2, no spread). */
+ * 0 when it is not defined (n under 2, no spread: an SD of 0 or under
+ * 1e-9 of the mean's magnitude, equal differences but for rounding). */
 int ps_dz(const hol_stats *d, double *out);
 /* A difference's last cells: n, its summary (ps_summary, with SD), d_z and
  * the row's newline. */

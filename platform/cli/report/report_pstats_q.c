@@ -33,8 +33,11 @@ static int by_q(const void *pa, const void *pb)
 }
 
 /* Score o as a key: 1, 0 when it is no preset's complete score. */
-static int q_key(const report_stats *s, const rs_score *o, pq_key *k)
+static int q_key(const report_run *r, const rs_score *o, pq_key *k)
 {
+    const report_stats *s = r->stats;
+    if (*report_pstats_run_excluded(r, o->att) && !r->include_restarted)
+        return 0; /* scores.csv's excluded */
     char key[sizeof o->key], *part[5];
     int p = rs_score_fields(o, key, part) == 5 ? hol_ask_preset_index(part[3], strlen(part[3]))
                                                : -1;
@@ -165,7 +168,7 @@ static int q_each(FILE *f, const report_run *r, q_fn fn)
         return -1;
     int n = 0;
     for (long i = 0; i < s->nscore; i++)
-        n += q_key(s, &s->score[i], &k[n]);
+        n += q_key(r, &s->score[i], &k[n]);
     qsort(k, (size_t)n, sizeof *k, by_q);
     int st = 0;
     for (int i = 0, j; i < n && !st; i = j) {

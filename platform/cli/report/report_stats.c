@@ -17,6 +17,7 @@
 #include "../cli.h"
 #include "report_escape.h"
 #include "report_instr.h"
+#include "report_pstats.h"
 #include "report_stats_impl.h"
 
 const char *const rs_measure[RS_NFIX] = {
@@ -602,7 +603,8 @@ static int scores_csv(FILE *f, const report_run *r, const void *ctx)
         report_csv(f, o->sub, 0);
         if (o->has)
             fprintf(f, "%.4f", o->v);
-        fprintf(f, ",%d\n", o->complete);
+        fprintf(f, ",%d,", o->complete);
+        report_csv(f, report_pstats_run_excluded(r, o->att), 1);
     }
     return 0;
 }

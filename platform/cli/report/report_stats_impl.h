@@ -53,6 +53,7 @@ typedef struct rs_score {
     char sub[64];
     double v;
     int has, complete; /* has: v is a value (a partial's scores have none) */
+    int att;           /* the attempt answered at (r->att), -1 none */
 } rs_score;
 
 typedef struct report_stats {
