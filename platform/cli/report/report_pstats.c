@@ -183,14 +183,6 @@ const char *report_pstats_excluded(const report_run *r, int i)
     return p->excl[i] == PX_END ? r->att[i].a.end : why[p->excl[i]];
 }
 
-const char *report_pstats_run_excluded(const report_run *r, int i)
-{
-    const report_pstats *p = r->pstats;
-    if (!p || i < 0 || i >= r->natt)
-        return "";
-    return p->run[i] == PX_DUPLICATE ? "duplicate" : p->run[i] == PX_RESTARTED ? "restarted" : "";
-}
-
 int ps_counts(const report_run *r, const report_pstats *p, int i)
 {
     return !p->excl[i] || (r->include_restarted &&

@@ -39,11 +39,6 @@ void report_pstats_free(report_run *r);
 /* The reason attempt i is left out of the participant-level statistics
  * ("practice", its end, "duplicate", "restarted"), "" when it is in. */
 const char *report_pstats_excluded(const report_run *r, int i);
-/* The reason the questionnaires answered at attempt i (-1: none) are left
- * out of the participant-level statistics: "duplicate" or "restarted"
- * when its run is (whether the attempt itself is practice, or ended
- * otherwise than done), "" else. */
-const char *report_pstats_run_excluded(const report_run *r, int i);
 /* The 0.975 quantile of Student's t with df >= 1 degrees of freedom. */
 double report_t975(long df);
 

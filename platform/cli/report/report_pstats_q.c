@@ -36,7 +36,7 @@ static int by_q(const void *pa, const void *pb)
 static int q_key(const report_run *r, const rs_score *o, pq_key *k)
 {
     const report_stats *s = r->stats;
-    if (*report_pstats_run_excluded(r, o->att) && !r->include_restarted)
+    if (*rs_score_excluded(r, o) && !r->include_restarted)
         return 0; /* scores.csv's excluded */
     char key[sizeof o->key], *part[5];
     int p = rs_score_fields(o, key, part) == 5 ? hol_ask_preset_index(part[3], strlen(part[3]))
