@@ -10,7 +10,6 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "../cli.h"
 #include "report_escape.h"
 #include "report_pstats_impl.h"
 
@@ -125,7 +124,7 @@ static int effects_csv(FILE *f, const report_run *r, const void *ctx)
                 effect_rows(f, r, pg, m, k, &lv, d);
             }
         }
-    return report_pstats_q_effects(f, r) ? CLI_EXIT_FAIL : 0;
+    return report_pstats_q_effects(f, r);
 }
 
 int report_effects_write(const report_run *r)

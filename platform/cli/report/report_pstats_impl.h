@@ -77,10 +77,11 @@ int ps_dz(const hol_stats *d, double *out);
  * the row's newline. */
 void ps_diff_cells(FILE *f, const hol_stats *d);
 /* participants_stats.csv's rows of the questionnaires' scores
- * (report_pstats_q.c), after the trials' measures: 0, -1 out of memory. */
+ * (report_pstats_q.c), after the trials' measures: 0, CLI_EXIT_FAIL out of
+ * memory (one line said). */
 int report_pstats_q_rows(FILE *f, const report_run *r);
 /* paired.csv's and effects.csv's rows of the questionnaires' scores
- * (report_pstats_q.c), after the trials' measures: 0, -1 out of memory. */
+ * (report_pstats_q.c), after the trials' measures: as report_pstats_q_rows. */
 int report_pstats_q_pairs(FILE *f, const report_run *r);
 int report_pstats_q_effects(FILE *f, const report_run *r);
 /* The factor columns of trials.csv (report_effects.c). */

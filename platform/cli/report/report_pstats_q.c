@@ -13,6 +13,7 @@
 #include <string.h>
 
 #include "../../../core/hol_ask.h"
+#include "../cli.h"
 #include "report_escape.h"
 #include "report_pstats_impl.h"
 
@@ -158,26 +159,27 @@ static int q_rows(FILE *f, const pq_key *k, int lo, int hi, int whole_order)
 }
 
 /* Each study's measure of the complete scores (keys [lo, hi) of k, by
- * condition, "study" last) through fn: 0, -1 out of memory. */
+ * condition, "study" last) through fn (0, -1 out of memory): 0, or
+ * CLI_EXIT_FAIL out of memory (one line said). */
 typedef int (*q_fn)(FILE *f, const report_run *r, const pq_key *k, int lo, int hi);
 static int q_each(FILE *f, const report_run *r, q_fn fn)
 {
     const report_stats *s = r->stats;
     pq_key *k = malloc(sizeof *k * (size_t)(s->nscore + 1));
-    if (!k)
-        return -1;
-    int n = 0;
-    for (long i = 0; i < s->nscore; i++)
+    int n = 0, st = !k;
+    for (long i = 0; k && i < s->nscore; i++)
         n += q_key(r, &s->score[i], &k[n]);
-    qsort(k, (size_t)n, sizeof *k, by_q);
-    int st = 0;
+    if (k)
+        qsort(k, (size_t)n, sizeof *k, by_q);
     for (int i = 0, j; i < n && !st; i = j) {
         for (j = i; j < n && k[j].sorder == k[i].sorder && k[j].m == k[i].m; j++)
             ;
         st = fn(f, r, k, i, j);
     }
     free(k);
-    return st;
+    if (st)
+        cli_error(r->cmd, 0, "out of memory");
+    return st ? CLI_EXIT_FAIL : 0;
 }
 
 static int q_rows_of(FILE *f, const report_run *r, const pq_key *k, int lo, int hi)

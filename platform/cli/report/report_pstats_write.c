@@ -108,11 +108,7 @@ static int participants_stats_csv(FILE *f, const report_run *r, const void *ctx)
     (void)ctx;
     report_header(f, "participants_stats.csv");
     each_row(f, r, stats_row);
-    if (report_pstats_q_rows(f, r)) {
-        cli_error(r->cmd, 0, "out of memory");
-        return CLI_EXIT_FAIL;
-    }
-    return 0;
+    return report_pstats_q_rows(f, r);
 }
 
 
@@ -151,11 +147,7 @@ static int paired_csv(FILE *f, const report_run *r, const void *ctx)
     (void)ctx;
     report_header(f, "paired.csv");
     each_pair(f, r, pair_row);
-    if (report_pstats_q_pairs(f, r)) {
-        cli_error(r->cmd, 0, "out of memory");
-        return CLI_EXIT_FAIL;
-    }
-    return 0;
+    return report_pstats_q_pairs(f, r);
 }
 
 int report_pstats_write(const report_run *r)
