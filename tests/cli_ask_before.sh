@@ -50,12 +50,12 @@ logs_diff "$T/l" "$T/l2" >/dev/null && ok || bad "the replay's logs differ"
 # raw TLX 50
 run "report" 0 "$H" report "$T/l" --out "$T/rep"
 s=$(sed -n 2p "$T/l/summary.csv" | cut -d, -f1)
-for want in "P01,$s,1,base,study,before,study,ssq,total,78.5400,1" \
-    "P01,$s,1,base,study,before,study,ssq,nausea,66.7800,1" \
-    "P01,$s,1,base,study,before,study,ssq,oculomotor,53.0600,1" \
-    "P01,$s,1,base,study,before,study,ssq,disorientation,97.4400,1" \
-    "P01,$s,1,base,study,after,study,tlx,raw,50.0000,1" \
-    "P01,$s,1,base,study,after,study,tlx,mental,50.0000,1"; do
+for want in "P01,$s,1,base,study,before,study,ssq,total,78.5400,1," \
+    "P01,$s,1,base,study,before,study,ssq,nausea,66.7800,1," \
+    "P01,$s,1,base,study,before,study,ssq,oculomotor,53.0600,1," \
+    "P01,$s,1,base,study,before,study,ssq,disorientation,97.4400,1," \
+    "P01,$s,1,base,study,after,study,tlx,raw,50.0000,1," \
+    "P01,$s,1,base,study,after,study,tlx,mental,50.0000,1,"; do
     grep -qx "$want" "$T/rep/scores.csv" && ok || bad "scores.csv: no $want: $(cat "$T/rep/scores.csv")"
 done
 # stats.csv: the TLX asked `after study` under the condition `study` (not
@@ -75,7 +75,7 @@ grep -q '^level a playing steps 0 ' "$T/out" && ok || bad "cut in the baseline: 
 [ "$(grep -c ',P02,1,ssq,before_study,' "$T/l3/answers.csv")" = 4 ] && ok ||
     bad "cut baseline: $(cat "$T/l3/answers.csv")"
 run "report of a partial baseline" 0 "$H" report "$T/l3" --out "$T/rep3"
-grep -q '^P02,[^,]*,1,,study,before,study,ssq,total,,0$' "$T/rep3/scores.csv" && ok ||
+grep -q '^P02,[^,]*,1,,study,before,study,ssq,total,,0,$' "$T/rep3/scores.csv" && ok ||
     bad "partial baseline: $(cat "$T/rep3/scores.csv")"
 
 # started again (--resume: nothing to resume, no attempt began): the level
@@ -86,9 +86,9 @@ run "started again" 0 "$H" play --study "$T/s.study" --participant P02 --input "
 [ "$(grep -c ',P02,1,ssq,before_study,' "$T/l3/answers.csv")" = 20 ] && ok ||
     bad "baseline again: $(cat "$T/l3/answers.csv")"
 run "report of a baseline again" 0 "$H" report "$T/l3" --out "$T/rep4"
-[ "$(grep -c '^P02,[^,]*,1,base,study,before,study,ssq,total,78.5400,1$' "$T/rep4/scores.csv")" = 1 ] &&
+[ "$(grep -c '^P02,[^,]*,1,base,study,before,study,ssq,total,78.5400,1,$' "$T/rep4/scores.csv")" = 1 ] &&
     ok || bad "baseline again scores: $(cat "$T/rep4/scores.csv")"
-grep -q '^P02,[^,]*,1,,study,before,study,ssq,total,,0$' "$T/rep4/scores.csv" && ok ||
+grep -q '^P02,[^,]*,1,,study,before,study,ssq,total,,0,$' "$T/rep4/scores.csv" && ok ||
     bad "the partial baseline dropped: $(cat "$T/rep4/scores.csv")"
 
 # the study file: before level|condition|study only

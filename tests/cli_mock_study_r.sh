@@ -120,7 +120,7 @@ ex() { awk -F, -v w="$1" 'NR > 1 && $NF ~ w { print $1, $(NF - 1) }' rep/trials.
 grep -q '^mock2,study,tlx_raw,,7,' rep/stats.csv && [ "$(grep -c ',tlx_raw,' rep/stats.csv)" = 1 ] &&
     ok || bad "stats.csv's TLX: $(grep tlx rep/stats.csv)"
 grep -q "answered in part" err && bad "report: $(cat err)" || ok
-[ "$(grep -c '^P03,.*,ssq,total,[0-9.]*,1$' rep/scores.csv)" = 4 ] && ok ||
+[ "$(grep -c '^P03,.*,ssq,total,[0-9.]*,1,$' rep/scores.csv)" = 4 ] && ok ||
     bad "P03's SSQ scores: $(grep '^P03,.*,ssq,total' rep/scores.csv)"
 # six participants in each condition, their trials
 for c in q5-hud q5-hand q6-hud q6-hand; do

@@ -9,11 +9,11 @@
 # paired differences, the main effects and d_z from trials.csv and checks
 # every figure of participants_stats.csv, paired.csv and effects.csv to
 # 1e-9, and from scores.csv the questionnaires' rows of
-# participants_stats.csv (an SSQ before the study and after each
-# condition, a TLX after it); then a figure made wrong by 1e-6 must fail it. Logs written before
+# participants_stats.csv, paired.csv and effects.csv (an SSQ before the
+# study and after each condition, a TLX after it); then a figure made wrong by 1e-6 must fail it. Logs written before
 # ids had one spelling (007 and p7 in one folder, 5): read as P07 and P05,
 # a line for the merge and one for the rename, p7's run a duplicate named
-# in one line; 2, then P02 (the one spelling) a restart; --include-restarted counts the duplicate and restarted
+# in one line (its questionnaires' scores excluded in scores.csv too); 2, then P02 (the one spelling) a restart; --include-restarted counts the duplicate and restarted
 # trials (R agrees). The R parts are skipped in one line without Rscript
 # (make deps-r).
 . "$(dirname "$0")/lib.sh"
@@ -126,6 +126,22 @@ grep -q '^s2x2,steps,q,5,6,5,' "$T/r/effects.csv" && grep -q '^s2x2,steps,cues,3
 grep -q '^s2x2,steps,map-q5,map-q6,q,6,' "$T/r/paired.csv" && grep -q '^s2x2,steps,map-q5,nomap-q5,cues,6,' "$T/r/paired.csv" &&
     grep -q '^s2x2,steps,map-q5,nomap-q6,q cues,5,' "$T/r/paired.csv" && ok ||
     bad "paired.csv differ: $(sed -n 2,4p "$T/r/paired.csv")"
+# scores.csv's excluded: the scores of P02's second folder and of P03's
+# restarted session (its baseline at the practice level too), as their
+# trials; they are left out of the participant-level rows (the baseline:
+# six participants, one score each)
+sx() { awk -F, -v s="$1" 'NR > 1 && $2 == s { print $NF }' "$T/r/scores.csv" | sort -u | tr '\n' ' '; }
+[ "$(head -1 "$T/r/scores.csv" | awk -F, '{ print $NF }')" = excluded ] && [ "$(sx sb2)" = "duplicate " ] &&
+    [ "$(sx sa3)" = "restarted " ] && [ "$(sx sa3b)" = " " ] && [ "$(sx sa1)" = " " ] && ok ||
+    bad "scores.csv's excluded: '$(sx sb2)' '$(sx sa3)' '$(sx sa3b)' '$(sx sa1)'"
+grep -q '^s2x2,study,ssq_total_before,6,6,' "$T/r/participants_stats.csv" && ok ||
+    bad "the baseline's counts: $(grep ssq_total_before "$T/r/participants_stats.csv")"
+# the questionnaires' pairs and main effects too (the SSQ after each
+# condition; the baseline and the TLX, once a study, have none)
+grep -q '^s2x2,ssq_total,map-q5,map-q6,q,' "$T/r/paired.csv" &&
+    grep -q '^s2x2,ssq_nausea,q,5,6,' "$T/r/effects.csv" &&
+    ! grep -q '^s2x2,\(tlx_raw\|ssq_total_before\),' "$T/r/paired.csv" "$T/r/effects.csv" && ok ||
+    bad "the questionnaires' pairs: $(grep ssq "$T/r/paired.csv" "$T/r/effects.csv" | head -3)"
 grep -q 'Participant-level statistics' "$T/r/index.html" && grep -q 'within-subjects' "$T/r/index.html" &&
     grep -q 'Paired differences' "$T/r/index.html" && ok || bad "the page has no participant-level section"
 
@@ -166,6 +182,9 @@ grep -q '^s2x2,map-q5,steps,2,6,' "$T/r3i/participants_stats.csv" && ok ||
 run "report l1 --include-restarted" 0 "$H" report "$T/l1" --out "$T/r1i" --include-restarted
 grep -q '^s2x2,map-q5,steps,5,11,' "$T/r1i/participants_stats.csv" && ok ||
     bad "--include-restarted, P03: $(grep '^s2x2,map-q5,steps' "$T/r1i/participants_stats.csv")"
+# ... and counted under --include-restarted (P03's two baselines)
+grep -q '^s2x2,study,ssq_total_before,5,6,' "$T/r1i/participants_stats.csv" && ok ||
+    bad "--include-restarted, the baseline: $(grep ssq_total_before "$T/r1i/participants_stats.csv")"
 if command -v Rscript >/dev/null 2>&1; then
     Rscript "$HERE/report_referee.R" "$T/r3" >"$T/rout" 2>&1 && ok || bad "R on old ids: $(cat "$T/rout")"
     Rscript "$HERE/report_referee.R" "$T/r1i" --include-restarted >"$T/rout" 2>&1 && ok ||
@@ -199,6 +218,12 @@ cp "$T/r/participants_stats.csv" "$T/w/"
 awk -F, 'BEGIN { OFS = "," } NR == 2 { $11 = sprintf("%.15g", $11 * 1.000001) } { print }' "$T/r/paired.csv" \
     >"$T/w/paired.csv"
 if Rscript "$HERE/report_referee.R" "$T/w" >"$T/rout" 2>&1; then bad "a wrong d_z passed"; else ok; fi
+# so does a questionnaire's pair's (their rows follow the trials')
+awk -F, 'BEGIN { OFS = "," } $2 == "ssq_oculomotor" { $7 = sprintf("%.15g", $7 + 1e-6) } { print }' \
+    "$T/r/paired.csv" >"$T/w/paired.csv"
+if Rscript "$HERE/report_referee.R" "$T/w" >"$T/rout" 2>&1; then bad "a wrong SSQ pair passed"; else
+    grep -q 'ssq_oculomotor .* mean_diff' "$T/rout" && ok || bad "R's failure: $(cat "$T/rout")"
+fi
 cp "$T/r/paired.csv" "$T/w/"
 awk -F, 'BEGIN { OFS = "," } NR == 2 { $7 = sprintf("%.15g", $7 + 1e-6) } { print }' "$T/r/effects.csv" \
     >"$T/w/effects.csv"

@@ -107,21 +107,21 @@ grep -q colour "$T/r/stats.csv" && bad "a choice item has a mean" || ok
 } >"$T/l2/answers.csv"
 run "report with a TLX after study" 0 "$H" report "$T/l1" "$T/l2" --out "$T/rs"
 sc="$T/rs/scores.csv"
-head -1 "$sc" | grep -qx 'participant,session,attempt,study,condition,placement,scope,instrument,subscale,score,complete' &&
+head -1 "$sc" | grep -qx 'participant,session,attempt,study,condition,placement,scope,instrument,subscale,score,complete,excluded' &&
     ok || bad "scores.csv header: $(head -1 "$sc")"
-for want in P01,sa,3,s1,map,after,condition,ssq,total,41.1400,1 \
-    P01,sa,3,s1,map,after,condition,ssq,nausea,38.1600,1 \
-    P01,sa,3,s1,map,after,condition,ssq,oculomotor,15.1600,1 \
-    P01,sa,3,s1,map,after,condition,ssq,disorientation,69.6000,1 \
-    P01,sa,4,s1,nomap,after,condition,tlx,raw,60.0000,1 \
-    P01,sa,4,s1,nomap,after,condition,tlx,effort,60.0000,1 \
-    P01,sa,2,s1,map,after,level,fun,enjoy,4.0000,1 \
-    P01,sa,3,s1,map,after,level,fun,enjoy,5.0000,1 \
-    P01,sa,0,,study,after,study,ssq,total,,0 \
-    P01,sa,0,,study,after,study,ssq,nausea,,0 \
-    P02,sb,0,,study,after,study,tlx,raw,35.0000,1 \
-    P02,sb,0,,study,after,study,tlx,mental,10.0000,1 \
-    P02,sb,0,,study,after,study,tlx,frustration,60.0000,1; do
+for want in P01,sa,3,s1,map,after,condition,ssq,total,41.1400,1, \
+    P01,sa,3,s1,map,after,condition,ssq,nausea,38.1600,1, \
+    P01,sa,3,s1,map,after,condition,ssq,oculomotor,15.1600,1, \
+    P01,sa,3,s1,map,after,condition,ssq,disorientation,69.6000,1, \
+    P01,sa,4,s1,nomap,after,condition,tlx,raw,60.0000,1, \
+    P01,sa,4,s1,nomap,after,condition,tlx,effort,60.0000,1, \
+    P01,sa,2,s1,map,after,level,fun,enjoy,4.0000,1, \
+    P01,sa,3,s1,map,after,level,fun,enjoy,5.0000,1, \
+    P01,sa,0,,study,after,study,ssq,total,,0, \
+    P01,sa,0,,study,after,study,ssq,nausea,,0, \
+    P02,sb,0,,study,after,study,tlx,raw,35.0000,1, \
+    P02,sb,0,,study,after,study,tlx,mental,10.0000,1, \
+    P02,sb,0,,study,after,study,tlx,frustration,60.0000,1,; do
     grep -qx "$want" "$sc" && ok || bad "scores.csv: no $want"
 done
 [ "$(grep -c ',ssq,' "$sc")" = 8 ] && ok || bad "ssq rows: $(grep ',ssq,' "$sc")"

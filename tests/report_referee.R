@@ -12,7 +12,9 @@
 # of its conditions) the same. Every figure of participants_stats.csv,
 # paired.csv and effects.csv must agree to 1e-9, every row R expects must
 # be there and no other; the questionnaires' rows of participants_stats.csv
-# (SSQ and TLX scores per condition and `study`) from scores.csv alike.
+# (SSQ and TLX scores per condition and `study`; their pairs and main
+# effects, of those asked per condition) from scores.csv alike, its
+# `excluded` scores (of a duplicate or restarted run) left out.
 # Usage: Rscript report_referee.R REPORT_DIR
 # [--include-restarted] (the report's option: trials excluded as duplicate
 # or restarted count too). Exit 0 when all agree ("R referee: N figures
@@ -53,12 +55,86 @@ ci <- function(x, k = 1) {
     h <- qt(0.975, n - 1) * k * sd(x) / sqrt(n)
     c(mean(x) - h, mean(x) + h)
 }
+# d_z: empty for n under 2 or no spread (an SD of 0 or under 1e-9 of the
+# mean's magnitude: equal differences but for rounding)
+dz_of <- function(dd) {
+    s <- if (length(dd) > 1) sd(dd) else 0
+    if (s <= 0 || s <= 1e-9 * abs(mean(dd))) NA else mean(dd) / s
+}
 seen <- 0
 seen_pairs <- 0
 seen_effects <- 0
 factors <- c("q", "room", "cell", "cues", "minimap")
 # a factor's value as trials.csv writes it ("" for none)
 level_text <- function(x) ifelse(is.na(x), "", as.character(x))
+# the main effects and the paired differences of one study's measure m:
+# pm the participants' means (participant x condition, the conditions cm in
+# the report's order), complete its rows with a mean in each, d the
+# study's included trials (a condition's factors its first trial's),
+# small the study of at most 32 conditions (main effects)
+effects_and_pairs <- function(st, m, cm, pm, complete, d, small) {
+    J <- length(cm)
+    if (J < 2) return(invisible())
+    # main effects: each factor's levels (the conditions' first trials),
+    # a level's value the mean of its conditions for the complete
+    # participants, each pair of levels A - B
+    if (small && nrow(complete)) for (k in factors) {
+        lv <- sapply(cm, function(cc) level_text(d[d$condition == cc, k][1]))
+        L <- unique(lv)
+        if (length(L) < 2) next
+        val <- sapply(L, function(l) rowMeans(complete[, lv == l, drop = FALSE]))
+        val <- matrix(val, nrow = nrow(complete))
+        for (a in 1:(length(L) - 1)) for (b in (a + 1):length(L)) {
+            dd <- val[, a] - val[, b]
+            row <- ef[ef$study == st & ef$measure == m & ef$factor == k &
+                      ef$level_a == L[a] & ef$level_b == L[b], ]
+            what <- sprintf("%s %s %s=%s - %s", st, m, k, L[a], L[b])
+            if (nrow(row) != 1) {
+                wrong <<- c(wrong, sprintf("%s: %d rows in effects.csv", what, nrow(row)))
+                next
+            }
+            seen_effects <<- seen_effects + 1
+            same(paste(what, "n"), row$n, length(dd))
+            same(paste(what, "mean_diff"), row$mean_diff, mean(dd))
+            same(paste(what, "sd_diff"), row$sd_diff, if (length(dd) > 1) sd(dd) else NA)
+            b2 <- ci(dd)
+            same(paste(what, "ci_low"), row$ci_low, b2[1])
+            same(paste(what, "ci_high"), row$ci_high, b2[2])
+            same(paste(what, "dz"), row$dz,
+                 dz_of(dd))
+        }
+    }
+    # each pair of the study's conditions: A - B over participants with both
+    for (a in 1:(J - 1)) for (b in (a + 1):J) {
+        dd <- pm[, a] - pm[, b]
+        dd <- dd[!is.na(dd)]
+        if (!length(dd)) next
+        row <- pd[pd$study == st & pd$measure == m & pd$condition_a == cm[a] &
+                  pd$condition_b == cm[b], ]
+        what <- sprintf("%s %s %s - %s", st, m, cm[a], cm[b])
+        if (nrow(row) != 1) {
+            wrong <<- c(wrong, sprintf("%s: %d rows in paired.csv", what, nrow(row)))
+            next
+        }
+        seen_pairs <<- seen_pairs + 1
+        fa <- d[d$condition == cm[a], ][1, ]
+        fb <- d[d$condition == cm[b], ][1, ]
+        f <- c("q", "room", "cell", "cues", "minimap")
+        df <- f[!mapply(function(k) identical(fa[[k]], fb[[k]]), f)]
+        want <- if (length(df)) paste(df, collapse = " ") else NA
+        checked <<- checked + 1
+        if (!identical(row$differ, want))
+            wrong <<- c(wrong, sprintf("%s differ: report %s, R %s", what, row$differ, want))
+        same(paste(what, "n"), row$n, length(dd))
+        same(paste(what, "mean_diff"), row$mean_diff, mean(dd))
+        same(paste(what, "sd_diff"), row$sd_diff, if (length(dd) > 1) sd(dd) else NA)
+        b2 <- ci(dd)
+        same(paste(what, "ci_low"), row$ci_low, b2[1])
+        same(paste(what, "ci_high"), row$ci_high, b2[2])
+        dz <- dz_of(dd)
+        same(paste(what, "dz"), row$dz, dz)
+    }
+}
 for (st in unique(inc$study)) {
     d <- inc[inc$study == st, ]
     conds <- ps$condition[ps$study == st & ps$measure == "steps"]
@@ -103,65 +179,7 @@ for (st in unique(inc$study)) {
             same(paste(what, "ci_within_high"), row$ci_within_high, wc[2])
         }
         if (J < 2) next
-        # main effects: each factor's levels (the conditions' first trials),
-        # a level's value the mean of its conditions for the complete
-        # participants, each pair of levels A - B
-        if (length(conds) <= 32 && nrow(complete)) for (k in factors) {
-            lv <- sapply(cm, function(cc) level_text(d[d$condition == cc, k][1]))
-            L <- unique(lv)
-            if (length(L) < 2) next
-            val <- sapply(L, function(l) rowMeans(complete[, lv == l, drop = FALSE]))
-            val <- matrix(val, nrow = nrow(complete))
-            for (a in 1:(length(L) - 1)) for (b in (a + 1):length(L)) {
-                dd <- val[, a] - val[, b]
-                row <- ef[ef$study == st & ef$measure == m & ef$factor == k &
-                          ef$level_a == L[a] & ef$level_b == L[b], ]
-                what <- sprintf("%s %s %s=%s - %s", st, m, k, L[a], L[b])
-                if (nrow(row) != 1) {
-                    wrong <- c(wrong, sprintf("%s: %d rows in effects.csv", what, nrow(row)))
-                    next
-                }
-                seen_effects <- seen_effects + 1
-                same(paste(what, "n"), row$n, length(dd))
-                same(paste(what, "mean_diff"), row$mean_diff, mean(dd))
-                same(paste(what, "sd_diff"), row$sd_diff, if (length(dd) > 1) sd(dd) else NA)
-                b2 <- ci(dd)
-                same(paste(what, "ci_low"), row$ci_low, b2[1])
-                same(paste(what, "ci_high"), row$ci_high, b2[2])
-                same(paste(what, "dz"), row$dz,
-                     if (length(dd) > 1 && sd(dd) > 0) mean(dd) / sd(dd) else NA)
-            }
-        }
-        # each pair of the study's conditions: A - B over participants with both
-        for (a in 1:(J - 1)) for (b in (a + 1):J) {
-            dd <- pm[, a] - pm[, b]
-            dd <- dd[!is.na(dd)]
-            if (!length(dd)) next
-            row <- pd[pd$study == st & pd$measure == m & pd$condition_a == cm[a] &
-                      pd$condition_b == cm[b], ]
-            what <- sprintf("%s %s %s - %s", st, m, cm[a], cm[b])
-            if (nrow(row) != 1) {
-                wrong <- c(wrong, sprintf("%s: %d rows in paired.csv", what, nrow(row)))
-                next
-            }
-            seen_pairs <- seen_pairs + 1
-            fa <- d[d$condition == cm[a], ][1, ]
-            fb <- d[d$condition == cm[b], ][1, ]
-            f <- c("q", "room", "cell", "cues", "minimap")
-            df <- f[!mapply(function(k) identical(fa[[k]], fb[[k]]), f)]
-            want <- if (length(df)) paste(df, collapse = " ") else NA
-            checked <- checked + 1
-            if (!identical(row$differ, want))
-                wrong <- c(wrong, sprintf("%s differ: report %s, R %s", what, row$differ, want))
-            same(paste(what, "n"), row$n, length(dd))
-            same(paste(what, "mean_diff"), row$mean_diff, mean(dd))
-            same(paste(what, "sd_diff"), row$sd_diff, if (length(dd) > 1) sd(dd) else NA)
-            b2 <- ci(dd)
-            same(paste(what, "ci_low"), row$ci_low, b2[1])
-            same(paste(what, "ci_high"), row$ci_high, b2[2])
-            dz <- if (length(dd) > 1 && sd(dd) > 0) mean(dd) / sd(dd) else NA
-            same(paste(what, "dz"), row$dz, dz)
-        }
+        effects_and_pairs(st, m, cm, pm, complete, d, length(conds) <= 32)
     }
 }
 # the questionnaires' scores (scores.csv's complete scores of the presets,
@@ -171,19 +189,25 @@ for (st in unique(inc$study)) {
 sc <- read.csv(file.path(dir, "scores.csv"), stringsAsFactors = FALSE, na.strings = "",
                colClasses = c(participant = "character", study = "character",
                               condition = "character", instrument = "character",
-                              subscale = "character", placement = "character"))
+                              subscale = "character", placement = "character",
+                              excluded = "character"))
 sc$study[is.na(sc$study)] <- ""
 scored <- list(ssq = c("total", "nausea", "oculomotor", "disorientation"), tlx = "raw")
 is_score <- mapply(function(i, s) !is.null(scored[[i]]) && s %in% scored[[i]],
                    sc$instrument, sc$subscale)
+# the scores of a duplicate or restarted run (`excluded`) left out, as
+# the trials are, unless --include-restarted
 q <- sc[sc$complete == 1 & !is.na(sc$score) & is_score &
-        !(sc$study == "" & sc$condition == "none"), ]
+        !(sc$study == "" & sc$condition == "none") &
+        (is.na(sc$excluded) | sc$excluded %in% counted), ]
 q$measure <- paste0(q$instrument, "_", q$subscale, ifelse(q$placement == "before", "_before", ""))
 for (st in unique(q$study)) for (m in unique(q$measure[q$study == st])) {
     d <- q[q$study == st & q$measure == m, ]
     pm <- tapply(d$score, list(d$participant, d$condition), mean)
     nt <- tapply(d$score, list(d$participant, d$condition), length)
-    cm <- setdiff(colnames(pm), "study")
+    # the conditions in the report's order (participants_stats.csv's rows)
+    order_c <- unique(ps$condition[ps$study == st])
+    cm <- order_c[order_c %in% setdiff(colnames(pm), "study")]
     J <- length(cm)
     cc <- pm[, cm, drop = FALSE]
     complete <- cc[rowSums(is.na(cc)) == 0, , drop = FALSE]
@@ -213,6 +237,10 @@ for (st in unique(q$study)) for (m in unique(q$measure[q$study == st])) {
         same(paste(what, "ci_within_low"), row$ci_within_low, wc[1])
         same(paste(what, "ci_within_high"), row$ci_within_high, wc[2])
     }
+    # the paired differences and main effects of the conditions (not
+    # `study`), their factors those of their first included trials
+    if (J >= 2 && J <= 32)
+        effects_and_pairs(st, m, cm, cc, complete, inc[inc$study == st, ], TRUE)
 }
 if (seen_effects != nrow(ef))
     wrong <- c(wrong, sprintf("effects.csv has %d rows, R expects %d", nrow(ef), seen_effects))

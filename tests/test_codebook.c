@@ -73,7 +73,7 @@ static void headers_match(void **state)
     header_is("report:participants.csv",
               "participant,study,condition,attempts,done,mean_steps,mean_efficiency,mean_time");
     header_is("report:scores.csv", "participant,session,attempt,study,condition,placement,"
-                                   "scope,instrument,subscale,score,complete");
+                                   "scope,instrument,subscale,score,complete,excluded");
     header_is("report:trials.csv",
               "participant,session,session_no,attempt,study,condition,block,trial,practice,"
               "level,level_sha256,mode,tiling,q,room,cell,cues,minimap,end,steps,optimum,"

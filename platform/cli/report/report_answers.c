@@ -185,7 +185,7 @@ typedef struct rs_group {
 #define RS_PARTS 64
 typedef struct rs_part {
     char key[4 * HOL_REPORT_TEXT];
-    int cond;
+    int cond, att;
     double v[HOL_ASK_MAX_PRESETS][HOL_ASK_PRESET_ITEMS];
     unsigned have[HOL_ASK_MAX_PRESETS];
 } rs_part;
@@ -215,6 +215,7 @@ static void keep_partial(rs_parts *pt, const rs_group *g)
     rs_part *k = &pt->g[pt->n++];
     memcpy(k->key, g->key, sizeof k->key);
     k->cond = g->cond;
+    k->att = g->att;
     memcpy(k->v, g->v, sizeof k->v);
     memcpy(k->have, g->have, sizeof k->have);
 }
@@ -233,8 +234,11 @@ static void take_partial(rs_parts *pt, rs_group *g)
 
 /* A row of scores.csv (s->score grown as needed; s->score_oom when it
  * cannot be). */
-static void add_score(report_stats *s, const char *key, int cond, const char *sub, double v,
-                      int has, int complete)
+typedef struct rs_at { /* what a score is of */
+    const char *key;
+    int cond, att;
+} rs_at;
+static void add_score(report_stats *s, rs_at g, const char *sub, double v, int has, int complete)
 {
     if (s->nscore == s->capscore) {
         long cap = s->capscore ? 2 * s->capscore : 256;
@@ -247,8 +251,9 @@ static void add_score(report_stats *s, const char *key, int cond, const char *su
         s->capscore = cap;
     }
     rs_score *o = &s->score[s->nscore++];
-    snprintf(o->key, sizeof o->key, "%s", key);
-    o->cond = cond;
+    snprintf(o->key, sizeof o->key, "%s", g.key);
+    o->cond = g.cond;
+    o->att = g.att;
     snprintf(o->sub, sizeof o->sub, "%s", sub);
     o->v = v;
     o->has = has;
@@ -257,17 +262,17 @@ static void add_score(report_stats *s, const char *key, int cond, const char *su
 
 /* Preset p's rows of scores.csv: its scores (empty when answered in
  * part), and for a preset of one score (tlx: raw) each item's answer. */
-static void preset_scores(report_stats *s, const char *key, int cond,
-                          const hol_ask_preset_def *p, const double *v, unsigned have)
+static void preset_scores(report_stats *s, rs_at g, const hol_ask_preset_def *p,
+                          const double *v, unsigned have)
 {
     int complete = have == (1u << p->nitems) - 1;
     double sc[HOL_ASK_PRESET_SCORES] = {0};
     if (complete)
         hol_ask_score(p, v, sc);
     for (int k = 0; k < p->nscores; k++)
-        add_score(s, key, cond, p->scores[k].name, sc[k], complete, complete);
+        add_score(s, g, p->scores[k].name, sc[k], complete, complete);
     for (int j = 0; p->nscores == 1 && j < p->nitems; j++)
-        add_score(s, key, cond, p->items[j].id, v[j], (have >> j) & 1, complete);
+        add_score(s, g, p->items[j].id, v[j], (have >> j) & 1, complete);
 }
 
 /* Each preset answered in full: its scores into the measures from RS_SSQ_T
@@ -283,7 +288,7 @@ static void flush_group(report_stats *s, rs_group *g, rs_parts *pt)
         double sc[HOL_ASK_PRESET_SCORES];
         if (g->have[i] == (1u << p->nitems) - 1) {
             hol_ask_score(p, g->v[i], sc);
-            preset_scores(s, g->key, g->cond, p, g->v[i], g->have[i]);
+            preset_scores(s, (rs_at){g->key, g->cond, g->att}, p, g->v[i], g->have[i]);
         }
         for (int k = 0; k < p->nscores; k++, col++)
             if (g->have[i] == (1u << p->nitems) - 1 && col < RS_NFIX)
@@ -298,8 +303,8 @@ static void parts_end(report_stats *s, const char *dir, rs_parts *pt)
     for (int i = 0; i < pt->n; i++) {
         for (int p = 0; p < hol_ask_npresets(); p++)
             if (pt->g[i].have[p])
-                preset_scores(s, pt->g[i].key, pt->g[i].cond, hol_ask_preset_at(p),
-                              pt->g[i].v[p], pt->g[i].have[p]);
+                preset_scores(s, (rs_at){pt->g[i].key, pt->g[i].cond, pt->g[i].att},
+                              hol_ask_preset_at(p), pt->g[i].v[p], pt->g[i].have[p]);
         if (!s->partial++) {
             char k[sizeof pt->g[i].key];
             memcpy(k, pt->g[i].key, sizeof k);
@@ -435,7 +440,7 @@ static int answer_row(report_run *r, rs_csv *c, rs_group *g, rs_parts *pt, long 
     add_likert(s, g->cond, q, item, v);
     int p = hol_ask_preset_index(q, strlen(q));
     if (p < 0)
-        add_score(s, g->key, g->cond, item, v, 1, 1);
+        add_score(s, (rs_at){g->key, g->cond, g->att}, item, v, 1, 1);
     int k = hol_ask_preset_item(hol_ask_preset_at(p), item);
     if (k >= 0) {
         g->v[p][k] = v;

@@ -13,11 +13,9 @@
 #include "report_escape.h"
 #include "report_pstats_impl.h"
 
-enum { EF_NF = 5 };
-static const char *const ef_name[EF_NF] = {"q", "room", "cell", "cues", "minimap"};
+const char *const ps_factor[PS_NF] = {"q", "room", "cell", "cues", "minimap"};
 
-/* Factor k of attempt t as trials.csv writes it ("" when it has none). */
-static void factor_text(const report_att *t, int k, char *out, size_t cap)
+void ps_factor_text(const report_att *t, int k, char *out, size_t cap)
 {
     static const char *const place[] = {"hud", "hand", "off"};
     const hol_report_attempt *a = &t->a;
@@ -52,7 +50,7 @@ static void levels(const report_run *r, const ps_pairs *pg, int m, int k, ef_lev
         lv->of[c] = -1;
         if (i < 0 || !p->row[cond * PS_NM + m].between.n)
             continue;
-        factor_text(&r->att[i], k, t, sizeof t);
+        ps_factor_text(&r->att[i], k, t, sizeof t);
         int l = 0;
         while (l < lv->n && strcmp(lv->text[l], t))
             l++;
@@ -99,7 +97,7 @@ static void effect_rows(FILE *f, const report_run *r, const ps_pairs *pg, int m,
             if (!s->n)
                 continue;
             report_csv(f, r->stats->cond[pg->first].study, 0);
-            fprintf(f, "%s,%s,", ps_measure[m], ef_name[k]);
+            fprintf(f, "%s,%s,", ps_measure[m], ps_factor[k]);
             report_csv(f, lv->text[a], 0);
             report_csv(f, lv->text[b], 0);
             ps_diff_cells(f, s);
@@ -117,7 +115,7 @@ static int effects_csv(FILE *f, const report_run *r, const void *ctx)
         for (int m = 0; m < PS_NM; m++) {
             const ps_pairs *pg = &p->pg[g];
             int J = ps_group_conds(p, pg->group, m, r->stats->ncond);
-            for (int k = 0; J >= 2 && k < EF_NF; k++) {
+            for (int k = 0; J >= 2 && k < PS_NF; k++) {
                 levels(r, pg, m, k, &lv);
                 if (lv.n < 2)
                     continue;
@@ -126,7 +124,7 @@ static int effects_csv(FILE *f, const report_run *r, const void *ctx)
                 effect_rows(f, r, pg, m, k, &lv, d);
             }
         }
-    return 0;
+    return report_pstats_q_effects(f, r);
 }
 
 int report_effects_write(const report_run *r)

@@ -136,18 +136,17 @@ static void one_participant(const report_run *r, report_pstats *p, const ps_key 
     for (int j = lo; j < hi; j++) {
         int i = k[j].i;
         const hol_report_attempt *a = &r->att[i].a;
+        int run = a->study[0] && second_run(r, k, lo, j) ? PX_DUPLICATE : PX_IN;
         p->trial[i] = j - lo + 1;
-        if (s->cond[s->att_cond[i]].practice)
-            p->excl[i] = PX_PRACTICE;
-        else if (strcmp(a->end, "done"))
-            p->excl[i] = PX_END;
-        else if (a->study[0] && second_run(r, k, lo, j))
-            p->excl[i] = PX_DUPLICATE;
-        for (int l = j + 1; !p->excl[i] && a->study[0] && l < hi; l++) {
+        for (int l = j + 1; !run && a->study[0] && l < hi; l++) {
             const report_att *b = &r->att[k[l].i];
             if (same_level(&r->att[i], b) && same_person(&r->att[i], b))
-                p->excl[i] = PX_RESTARTED; /* played again by a later session */
+                run = PX_RESTARTED; /* played again by a later session */
         }
+        p->run[i] = run;
+        p->excl[i] = s->cond[s->att_cond[i]].practice ? PX_PRACTICE
+                     : strcmp(a->end, "done")         ? PX_END
+                                                      : run;
         if (p->excl[i] == PX_DUPLICATE && !ndup++)
             first_dup = j;
     }
@@ -395,6 +394,7 @@ int report_pstats_compute(report_run *r)
     report_pstats *p = r->pstats = calloc(1, sizeof *p);
     size_t n = (size_t)r->natt + 1, nc = (size_t)s->ncond + 1;
     int ok = p && (p->excl = calloc(n, sizeof *p->excl)) &&
+             (p->run = calloc(n, sizeof *p->run)) &&
              (p->trial = calloc(n, sizeof *p->trial)) &&
              (p->group = calloc(nc, sizeof *p->group)) &&
              (p->first = calloc(nc, sizeof *p->first)) &&
@@ -418,7 +418,7 @@ void report_pstats_free(report_run *r)
     report_pstats *p = r->pstats;
     if (!p)
         return;
-    void *own[] = {p->excl, p->trial, p->group, p->first, p->row, p->pg, p->cell, p->pair, p};
+    void *own[] = {p->excl, p->run, p->trial, p->group, p->first, p->row, p->pg, p->cell, p->pair, p};
     for (size_t i = 0; i < sizeof own / sizeof own[0]; i++)
         free(own[i]);
     r->pstats = NULL;

@@ -36,9 +36,10 @@ void ps_summary(FILE *f, const hol_stats *st, double k, int with_sd, int last)
 
 int ps_dz(const hol_stats *d, double *out)
 {
-    if (d->n < 2 || d->m2 <= 0)
+    double sd = d->n < 2 ? 0 : sqrt(d->m2 / (double)(d->n - 1));
+    if (sd <= 0 || sd <= 1e-9 * fabs(d->mean)) /* equal differences but for rounding */
         return 0;
-    *out = d->mean / sqrt(d->m2 / (double)(d->n - 1));
+    *out = d->mean / sd;
     return 1;
 }
 

@@ -42,6 +42,8 @@ typedef struct ps_pairs { /* the pairs of one study's conditions */
 
 typedef struct report_pstats {
     int *excl;   /* per attempt: PX_* */
+    int *run;    /* per attempt: PX_DUPLICATE, PX_RESTARTED or PX_IN (its run's,
+                    whatever the attempt's own end: its questionnaires') */
     int *trial;  /* per attempt: its number within the study's participant */
     int *group;  /* per condition: its study's first condition; -1 none */
     int *first;  /* per condition: its first included attempt, -1 none */
@@ -68,14 +70,28 @@ int ps_group_conds(const report_pstats *p, int g, int m, int ncond);
  * what is not defined empty. */
 void ps_summary(FILE *f, const hol_stats *st, double k, int with_sd, int last);
 /* d_z: the mean difference over the SD of the differences: 1 and *out,
- * 0 when it is not defined (n under 2, no spread). */
+ * 0 when it is not defined (n under 2, no spread: an SD of 0 or under
+ * 1e-9 of the mean's magnitude, equal differences but for rounding). */
 int ps_dz(const hol_stats *d, double *out);
 /* A difference's last cells: n, its summary (ps_summary, with SD), d_z and
  * the row's newline. */
 void ps_diff_cells(FILE *f, const hol_stats *d);
 /* participants_stats.csv's rows of the questionnaires' scores
- * (report_pstats_q.c), after the trials' measures: 0, -1 out of memory. */
+ * (report_pstats_q.c), after the trials' measures: 0, CLI_EXIT_FAIL out of
+ * memory (one line said). */
 int report_pstats_q_rows(FILE *f, const report_run *r);
+/* paired.csv's and effects.csv's rows of the questionnaires' scores
+ * (report_pstats_q.c), after the trials' measures: as report_pstats_q_rows. */
+int report_pstats_q_pairs(FILE *f, const report_run *r);
+int report_pstats_q_effects(FILE *f, const report_run *r);
+/* The factor columns of trials.csv (report_effects.c). */
+enum { PS_NF = 5 };
+extern const char *const ps_factor[PS_NF];
+/* Factor k of attempt t as trials.csv writes it ("" when it has none). */
+void ps_factor_text(const report_att *t, int k, char *out, size_t cap);
+/* The factors in which conditions ca and cb differ (their first included
+ * trials'), space-separated, then end (report_pstats_write.c). */
+void ps_differ(FILE *f, const report_run *r, int ca, int cb, const char *end);
 /* effects.csv (report_effects.c) */
 int report_effects_write(const report_run *r);
 

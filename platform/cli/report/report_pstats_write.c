@@ -108,30 +108,25 @@ static int participants_stats_csv(FILE *f, const report_run *r, const void *ctx)
     (void)ctx;
     report_header(f, "participants_stats.csv");
     each_row(f, r, stats_row);
-    if (report_pstats_q_rows(f, r)) {
-        cli_error(r->cmd, 0, "out of memory");
-        return CLI_EXIT_FAIL;
-    }
-    return 0;
+    return report_pstats_q_rows(f, r);
 }
 
 
 /* The factor columns of trials.csv in which conditions ca and cb differ
  * (their first included trials'), space-separated, then end (',' in the
  * CSV, "" on the page). */
-static void differ(FILE *f, const report_run *r, int ca, int cb, const char *end)
+void ps_differ(FILE *f, const report_run *r, int ca, int cb, const char *end)
 {
     const int ia = r->pstats->first[ca], ib = r->pstats->first[cb];
     const report_att *x = &r->att[ia < 0 ? 0 : ia], *y = &r->att[ib < 0 ? 0 : ib];
-    const int d[5] = {x->a.tiling_q != y->a.tiling_q,
+    const int d[PS_NF] = {x->a.tiling_q != y->a.tiling_q,
                       x->a.room_cols != y->a.room_cols || x->a.room_rows != y->a.room_rows,
                       x->a.cell_m != y->a.cell_m, x->a.cues != y->a.cues,
                       x->minimap != y->minimap};
-    static const char *const name[5] = {"q", "room", "cell", "cues", "minimap"};
     const char *sep = "";
-    for (int k = 0; ia >= 0 && ib >= 0 && k < 5; k++)
+    for (int k = 0; ia >= 0 && ib >= 0 && k < PS_NF; k++)
         if (d[k]) {
-            fprintf(f, "%s%s", sep, name[k]);
+            fprintf(f, "%s%s", sep, ps_factor[k]);
             sep = " ";
         }
     fputs(end, f);
@@ -143,7 +138,7 @@ static void pair_row(FILE *f, const report_run *r, int m, int ca, int cb, const 
     fprintf(f, "%s,", ps_measure[m]);
     report_csv(f, r->stats->cond[ca].condition, 0);
     report_csv(f, r->stats->cond[cb].condition, 0);
-    differ(f, r, ca, cb, ",");
+    ps_differ(f, r, ca, cb, ",");
     ps_diff_cells(f, d);
 }
 
@@ -152,7 +147,7 @@ static int paired_csv(FILE *f, const report_run *r, const void *ctx)
     (void)ctx;
     report_header(f, "paired.csv");
     each_pair(f, r, pair_row);
-    return 0;
+    return report_pstats_q_pairs(f, r);
 }
 
 int report_pstats_write(const report_run *r)
@@ -204,7 +199,7 @@ static void html_pair(FILE *f, const report_run *r, int m, int ca, int cb, const
     fputs("</td><td>", f);
     rs_cond_name(f, &r->stats->cond[cb]);
     fputs("</td><td>", f);
-    differ(f, r, ca, cb, "");
+    ps_differ(f, r, ca, cb, "");
     fprintf(f, "</td><td class=\"n\">%ld</td><td class=\"n\">%.3f</td>", d->n, d->mean);
     cell_interval(f, d, 1, 0);
     if (ps_dz(d, &z))

@@ -17,6 +17,7 @@
 #include "../cli.h"
 #include "report_escape.h"
 #include "report_instr.h"
+#include "report_pstats_impl.h"
 #include "report_stats_impl.h"
 
 const char *const rs_measure[RS_NFIX] = {
@@ -570,6 +571,15 @@ static int participants_csv(FILE *f, const report_run *r, const void *ctx)
     return 0;
 }
 
+const char *rs_score_excluded(const report_run *r, const rs_score *o)
+{
+    const report_pstats *p = r->pstats;
+    if (!p || o->att < 0 || o->att >= r->natt)
+        return "";
+    int run = p->run[o->att];
+    return run == PX_DUPLICATE ? "duplicate" : run == PX_RESTARTED ? "restarted" : "";
+}
+
 int rs_score_fields(const rs_score *o, char k[sizeof o->key], char *part[5])
 {
     memcpy(k, o->key, sizeof o->key);
@@ -611,7 +621,8 @@ static int scores_csv(FILE *f, const report_run *r, const void *ctx)
         report_csv(f, o->sub, 0);
         if (o->has)
             fprintf(f, "%.4f", o->v);
-        fprintf(f, ",%d\n", o->complete);
+        fprintf(f, ",%d,", o->complete);
+        report_csv(f, rs_score_excluded(r, o), 1);
     }
     return 0;
 }

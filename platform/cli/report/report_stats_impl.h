@@ -53,6 +53,7 @@ typedef struct rs_score {
     char sub[64];
     double v;
     int has, complete; /* has: v is a value (a partial's scores have none) */
+    int att;           /* the attempt answered at (r->att), -1 none */
 } rs_score;
 
 typedef struct report_stats {
@@ -86,6 +87,11 @@ int rs_included(const report_run *r, int i); /* done, not practice */
 /* Score o's key split into part[0..4] (session, participant, attempt,
  * questionnaire, when; "" for those missing) in k, a copy of it: the
  * number of fields it has. */
+/* scores.csv's excluded of score o: "duplicate" or "restarted" when the
+ * run of the attempt it was answered at is (trials.csv's reason, whether
+ * that attempt itself is practice or ended otherwise than done; from
+ * r->pstats: report_stats.c), "" else (none, or no pstats). */
+const char *rs_score_excluded(const report_run *r, const rs_score *o);
 int rs_score_fields(const rs_score *o, char k[sizeof o->key], char *part[5]);
 /* The condition a questionnaire of when (answers.csv's) at an attempt of
  * condition c is counted in: its study's "study" for `after study`, else c. */
