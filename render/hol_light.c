@@ -465,6 +465,14 @@ hol_err hol_light_prepare(const hol_frame_desc *f, const struct hol_world *w,
             out->fx = 2;
         out->n++;
     }
+    if (f->carried) { /* in the user's tile: the user frame itself */
+        static const double id[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+        hol__light_put(out, id, f->carried_pos[0] - (f->user.col + 0.5) * m,
+                       f->carried_pos[2] - (f->user.row + 0.5) * m, f->carried_pos[1]);
+        out->n++;
+        if (f->carried_pos[1] != HOL_LIGHT_HEIGHT_M && !out->fx)
+            out->fx = 1; /* a height of its own: the programs with heights */
+    }
     if (f->fireflies && w)
         hol__fireflies(f, w, out);
     return HOL_OK;

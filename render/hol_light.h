@@ -39,7 +39,13 @@
  *   sqrt(1 - |K|^2), the first factor affine in the mesh (the vertex
  *   shader's); sinh x = sqrt(cosh^2 x - 1) by the chord, x = log(cosh x +
  *   sinh x), the window and inverse square from d^2: the same numbers.
- * - A lantern hangs HOL_LIGHT_HEIGHT_M over its tile's centre.
+ * - A lantern hangs HOL_LIGHT_HEIGHT_M over its tile's centre. A carried
+ *   lantern (f->carried) is a round lantern at f->carried_pos: its room
+ *   offset from the user's cell centre is a point of the user's tile (as
+ *   the eye's), at that height; it follows the lanterns (before the
+ *   fireflies), so every tile within reach takes it, through portals;
+ *   at a height other than HOL_LIGHT_HEIGHT_M, fx is at least 1 (the
+ *   programs that take each light's height).
  * - Which lights: hol_light_tile gives a tile up to HOL_LIGHT_PER_TILE
  *   lights, the nearest to its centre among those whose floor distance to
  *   the centre is under R plus the tile's circumradius (so every light
@@ -111,7 +117,7 @@
 #define HOL_LIGHT_D0_M 1.0
 #define HOL_LIGHT_PHYS 0.5
 #define HOL_LIGHT_MAX_FF 16
-#define HOL_LIGHT_MAX (HOL_RENDER_MAX_LANTERNS + HOL_LIGHT_MAX_FF)
+#define HOL_LIGHT_MAX (HOL_RENDER_MAX_LANTERNS + 1 + HOL_LIGHT_MAX_FF)
 #define HOL_LIGHT_FF_STEPS 3
 #define HOL_LIGHT_FF_WEIGHT 0.15
 /* A firefly's sprite: an octahedron of this radius (metres) at its place,

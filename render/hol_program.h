@@ -86,7 +86,7 @@ int hol_prog_preamble(const hol_prog_key *key, char *out, size_t n);
 typedef struct hol_prog {
     GLuint prog;
     GLint u_vp, u_model, u_mode, u_id, u_eye, u_fog, u_fogd, u_lin, u_wedge, u_wmode;
-    GLint u_light, u_klein, u_mpu2, u_tl, u_eyeh, u_lonly, u_tx, u_ts, u_atlas;
+    GLint u_light, u_klein, u_mpu2, u_tl, u_eyeh, u_lonly, u_tx, u_ts, u_atlas, u_night;
 } hol_prog;
 
 /* Compile and link key's program into out: 0, or 1 when the GL refused it

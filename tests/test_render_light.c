@@ -58,6 +58,7 @@
 #include "../core/hol_room.h"
 #include "../core/hol_tile.h"
 #include "../core/hol_world.h"
+#include "../core/hol_app.h"
 #pragma GCC diagnostic ignored "-Wunused-function" /* model.h helpers not used here */
 #include "model.h"
 #include "render_fixture.h"
@@ -1007,6 +1008,98 @@ static void test_lantern_through_portal(void **state)
     assert_true(abs(far_lit - far_model) < far_model / 50 + 5);
 }
 
+/* Issue 38: a carried lantern (hol_frame_desc.carried, room metres) is a
+ * light at its offset from the user's cell centre in the user's tile, at
+ * its height: the model puts a lantern there by its own Klein map, and
+ * every floor pixel (the user's tile and the tiles through the portals)
+ * is the model's light, trunk shadows and all, in {4,4}, {4,5} and {4,8}. */
+static void test_carried_lantern(void **state)
+{
+    (void)state;
+    static const light_case cs[] = {
+        {"-", {1.5, 1.6, 1.9}, 0, -30, 5, 3, 3, 1, {"", NULL, NULL, NULL}, 0},
+        {"-", {1.5, 1.6, 1.9}, 0, -30, 4, 3, 3, 1, {"", NULL, NULL, NULL}, 0},
+        {"NE", {2.4, 1.6, 0.6}, 135, -35, 8, 3, 3, 1, {"", NULL, NULL, NULL}, 1},
+    };
+    static uint8_t px[W * H * 4];
+    static int ids[W * H];
+    for (size_t k = 0; k < sizeof cs / sizeof cs[0]; k++) {
+        const light_case *c = &cs[k];
+        scene s;
+        make_scene(c, &s);
+        /* carried at the eye's x and z, 0.3 m below it */
+        int col = (int)floor(c->eye[0] / c->cell), row = (int)floor(c->eye[2] / c->cell);
+        klein_point(c->cell, c->eye[0] - (col + 0.5) * c->cell,
+                    c->eye[2] - (row + 0.5) * c->cell, s.lant[0]);
+        make_trunks(c, &s);
+        s.f.nlanterns = 0;
+        s.f.carried = 1;
+        s.f.carried_pos[0] = c->eye[0];
+        s.f.carried_pos[1] = c->eye[1] - HOL_APP_CARRIED_DROP_M;
+        s.f.carried_pos[2] = c->eye[2];
+        assert_true(fabs(s.f.carried_pos[1] - HEIGHT) < 1e-9);
+        hol_light_frame lf;
+        assert_int_equal(hol_light_prepare(&s.f, NULL, &lf), HOL_OK);
+        assert_int_equal(lf.n, 1);
+        for (int r = 0; r < 3; r++) /* the eye's point: the same x and z */
+            assert_true(fabs(lf.pos[0][r] - lf.eye[r]) < 1e-9);
+        branch_ids(&s, ids);
+        hol_view v = *hol_render_last_view(fx.rnd);
+        render(&s, HOL_RENDER_BARE | HOL_RENDER_LIGHT_ONLY, px);
+        int near = 0, far = 0, bad = 0, n = 0;
+        for (int y = 0; y < H; y++)
+            for (int x = 0; x < W; x++) {
+                int b = ids[y * W + x];
+                double want[3];
+                if (b < 0 || on_cell_edge(c, x, y) || !model_pixel(c, &s, x, y, want))
+                    continue;
+                int got = px[4 * (y * W + x)];
+                n++;
+                bad += fabs(got - 255 * want[0]) > TOL;
+                if (got > 0.05 * 255)
+                    *(v.branches[b].nsteps ? &far : &near) += 1;
+            }
+        printf("carried case %zu: %d floor pixels, %d lit on the user's tile, %d through the "
+               "portals, %d off the model\n", k, n, near, far, bad);
+        assert_true(near > 100 && far > 100);
+        assert_true(bad <= n / 200); /* shadow edges the raster rounds */
+    }
+}
+
+/* A lighting cycle (hol_frame_desc.cycle, night 0..1) is dusk's frame at
+ * 0 and night's at 1, byte for byte, and between them on the way: every
+ * pixel of the half-way frame lies between the two (within rounding). */
+static void test_cycle_between(void **state)
+{
+    (void)state;
+    static uint8_t dusk[W * H * 4], night[W * H * 4], px[W * H * 4];
+    scene s;
+    make_scene(&cases[0], &s);
+    s.f.lighting = HOL_LIGHT_DUSK;
+    render(&s, 0, dusk);
+    s.f.lighting = HOL_LIGHT_NIGHT;
+    render(&s, 0, night);
+    s.f.lighting = HOL_LIGHT_DUSK;
+    s.f.cycle = 1;
+    s.f.night = 0;
+    render(&s, 0, px);
+    assert_memory_equal(px, dusk, sizeof px);
+    s.f.night = 1;
+    render(&s, 0, px);
+    assert_memory_equal(px, night, sizeof px);
+    s.f.night = 0.5;
+    render(&s, 0, px);
+    int strictly = 0;
+    for (size_t i = 0; i < sizeof px; i++) {
+        int lo = dusk[i] < night[i] ? dusk[i] : night[i];
+        int hi = dusk[i] < night[i] ? night[i] : dusk[i];
+        assert_true(px[i] >= lo - 1 && px[i] <= hi + 1);
+        strictly += px[i] > lo + 1 && px[i] < hi - 1;
+    }
+    printf("cycle: %d of %zu channels strictly between dusk and night\n", strictly, sizeof px);
+    assert_true(strictly > (int)(sizeof px / 4));
+}
+
 /* Lanterns at day change nothing: the same pixels as without them. */
 static void test_day_unchanged_without_lighting(void **state)
 {
@@ -1392,6 +1485,8 @@ int main(void)
         cmocka_unit_test(test_fog_true_distance),
         cmocka_unit_test(test_light_continuous_across_edges),
         cmocka_unit_test(test_lantern_through_portal),
+        cmocka_unit_test(test_carried_lantern),
+        cmocka_unit_test(test_cycle_between),
         cmocka_unit_test(test_day_unchanged_without_lighting),
         cmocka_unit_test(test_app_frame_carries_lights),
         cmocka_unit_test(test_fireflies),

@@ -65,11 +65,13 @@ const vec4 v_U = vec4(0.0);
 #endif
 #endif
 // the sky (docs/rendering.md#lighting): ambient, sun and lantern colours
-#if HOL_NIGHT
-const vec3 u_amb = vec3(0.07, 0.08, 0.13), u_sun = vec3(0.05, 0.06, 0.10);
-#else
-const vec3 u_amb = vec3(0.30, 0.26, 0.28), u_sun = vec3(0.28, 0.17, 0.11);
-#endif
+// between dusk and night by u_night (0 dusk, 1 night: a lighting cycle
+// moves it; a * (1 - u) + b * u is exactly a at 0 and b at 1)
+uniform float u_night;
+const vec3 u_ambd = vec3(0.30, 0.26, 0.28), u_sund = vec3(0.28, 0.17, 0.11);
+const vec3 u_ambn = vec3(0.07, 0.08, 0.13), u_sunn = vec3(0.05, 0.06, 0.10);
+#define u_amb (u_ambd * (1.0 - u_night) + u_ambn * u_night)
+#define u_sun (u_sund * (1.0 - u_night) + u_sunn * u_night)
 const vec3 u_lcol = vec3(3.0, 2.25, 1.25), u_fcol = vec3(1.4, 2.0, 0.6);
 #endif
 out vec4 o_col;
