@@ -159,7 +159,9 @@ static void rc_wrong_add(rc_class *c, int item, const char *value)
         return;
     rc_wrong *w = &c->wrong[c->nwrong++];
     w->item = item, w->count = 1;
-    snprintf(w->value, sizeof w->value, "%s", value);
+    size_t n = strnlen(value, sizeof w->value - 1); /* (value may be a pupil's row) */
+    memcpy(w->value, value, n);
+    w->value[n] = 0;
 }
 
 static void rc_read_tilings(const char *path, rc_tilings *t)
@@ -477,7 +479,7 @@ static int rc_read_dir(const char *cmd, rc_class *c, const char *dir)
                 char sum[4200];
                 snprintf(path, sizeof path, "%s/%s/answers.csv", dir, e);
                 snprintf(sum, sizeof sum, "%s/%s/summary.csv", dir, e);
-                snprintf(name, sizeof name, "%s", e);
+                snprintf(name, sizeof name, "%.*s", (int)(sizeof name - 1), e);
                 if (!stat(path, &sb))
                     st = rc_read(cmd, c, path, name, sum);
             }
