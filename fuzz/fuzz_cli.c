@@ -117,7 +117,7 @@ static void check_level(const char *text, size_t len)
         for (int k = 0; k < L.nasks; k++)
             CHECK(L.asks[k].n > 0 && L.asks[k].first >= 0 &&
                   L.asks[k].first + L.asks[k].n <= L.nquestions && L.asks[k].when >= 0 &&
-                  L.asks[k].when <= 2);
+                  L.asks[k].when < HOL_APP_ASK_WHENS);
         for (int k = 0; k < L.nquestions; k++) {
             const hol_app_question *q = &L.questions[k];
             CHECK(q->id[0] && q->text[0]);
