@@ -13,25 +13,6 @@
 #include "report_escape.h"
 #include "report_pstats_impl.h"
 
-const char *const ps_factor[PS_NF] = {"q", "room", "cell", "cues", "minimap"};
-
-void ps_factor_text(const report_att *t, int k, char *out, size_t cap)
-{
-    static const char *const place[] = {"hud", "hand", "off"};
-    const hol_report_attempt *a = &t->a;
-    out[0] = 0;
-    if (k == 0)
-        snprintf(out, cap, "%d", a->tiling_q);
-    else if (k == 1)
-        snprintf(out, cap, "%dx%d", a->room_cols, a->room_rows);
-    else if (k == 2)
-        snprintf(out, cap, "%g", a->cell_m);
-    else if (k == 3 && a->cues >= 0)
-        snprintf(out, cap, "%ld", a->cues);
-    else if (k == 4 && t->minimap >= 0 && t->minimap <= 2)
-        snprintf(out, cap, "%s", place[t->minimap]);
-}
-
 typedef struct ef_levels {
     int n;                             /* levels */
     int of[REPORT_PAIR_MAX];           /* per condition of the group: its level, -1 */

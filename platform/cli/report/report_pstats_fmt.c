@@ -52,3 +52,44 @@ void ps_diff_cells(FILE *f, const hol_stats *d)
         fprintf(f, "%.15g", z);
     fputc('\n', f);
 }
+
+/* The condition factors' names and a trial's level of each (report_pstats_impl.h;
+ * the effects', the pairs' and the questionnaires' writers read them). */
+const char *const ps_factor[PS_NF] = {"q", "room", "cell", "cues", "minimap"};
+
+void ps_factor_text(const report_att *t, int k, char *out, size_t cap)
+{
+    static const char *const place[] = {"hud", "hand", "off"};
+    const hol_report_attempt *a = &t->a;
+    out[0] = 0;
+    if (k == 0)
+        snprintf(out, cap, "%d", a->tiling_q);
+    else if (k == 1)
+        snprintf(out, cap, "%dx%d", a->room_cols, a->room_rows);
+    else if (k == 2)
+        snprintf(out, cap, "%g", a->cell_m);
+    else if (k == 3 && a->cues >= 0)
+        snprintf(out, cap, "%ld", a->cues);
+    else if (k == 4 && t->minimap >= 0 && t->minimap <= 2)
+        snprintf(out, cap, "%s", place[t->minimap]);
+}
+
+/* The factor columns of trials.csv in which conditions ca and cb differ
+ * (their first included trials'), space-separated, then end (',' in the
+ * CSV, "" on the page). */
+void ps_differ(FILE *f, const report_run *r, int ca, int cb, const char *end)
+{
+    const int ia = r->pstats->first[ca], ib = r->pstats->first[cb];
+    const report_att *x = &r->att[ia < 0 ? 0 : ia], *y = &r->att[ib < 0 ? 0 : ib];
+    const int d[PS_NF] = {x->a.tiling_q != y->a.tiling_q,
+                      x->a.room_cols != y->a.room_cols || x->a.room_rows != y->a.room_rows,
+                      x->a.cell_m != y->a.cell_m, x->a.cues != y->a.cues,
+                      x->minimap != y->minimap};
+    const char *sep = "";
+    for (int k = 0; ia >= 0 && ib >= 0 && k < PS_NF; k++)
+        if (d[k]) {
+            fprintf(f, "%s%s", sep, ps_factor[k]);
+            sep = " ";
+        }
+    fputs(end, f);
+}

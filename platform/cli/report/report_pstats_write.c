@@ -112,26 +112,6 @@ static int participants_stats_csv(FILE *f, const report_run *r, const void *ctx)
 }
 
 
-/* The factor columns of trials.csv in which conditions ca and cb differ
- * (their first included trials'), space-separated, then end (',' in the
- * CSV, "" on the page). */
-void ps_differ(FILE *f, const report_run *r, int ca, int cb, const char *end)
-{
-    const int ia = r->pstats->first[ca], ib = r->pstats->first[cb];
-    const report_att *x = &r->att[ia < 0 ? 0 : ia], *y = &r->att[ib < 0 ? 0 : ib];
-    const int d[PS_NF] = {x->a.tiling_q != y->a.tiling_q,
-                      x->a.room_cols != y->a.room_cols || x->a.room_rows != y->a.room_rows,
-                      x->a.cell_m != y->a.cell_m, x->a.cues != y->a.cues,
-                      x->minimap != y->minimap};
-    const char *sep = "";
-    for (int k = 0; ia >= 0 && ib >= 0 && k < PS_NF; k++)
-        if (d[k]) {
-            fprintf(f, "%s%s", sep, ps_factor[k]);
-            sep = " ";
-        }
-    fputs(end, f);
-}
-
 static void pair_row(FILE *f, const report_run *r, int m, int ca, int cb, const hol_stats *d)
 {
     report_csv(f, r->stats->cond[ca].study, 0);
