@@ -1,6 +1,8 @@
-/* hol_study.c - study files, counterbalancing squares and a condition's
- * levels (see hol_study.h). */
+/* hol_study.c - study files and counterbalancing squares (see hol_study.h);
+ * a condition's level is composed in hol_study_level.c, from the helpers
+ * on a level line's key here (hol_study_impl.h). */
 #include "hol_study.h"
+#include "hol_study_impl.h"
 
 #include "hol_ask.h"
 
@@ -10,10 +12,7 @@
 
 /* ---- errors ------------------------------------------------------------------ */
 
-static hol_err hol__fail(hol_level_err *e, hol_err code, long line, long other,
-                         const char *fmt, ...) __attribute__((format(printf, 5, 6)));
-
-static hol_err hol__fail(hol_level_err *e, hol_err code, long line, long other,
+hol_err hol__study_fail(hol_level_err *e, hol_err code, long line, long other,
                          const char *fmt, ...)
 {
     va_list ap;
@@ -24,8 +23,6 @@ static hol_err hol__fail(hol_level_err *e, hol_err code, long line, long other,
 }
 
 /* ---- lines ------------------------------------------------------------------- */
-
-static int hol__set_key(const hol_study *s, int c, const char *k, size_t kn);
 
 /* The parser's state. */
 typedef struct hol__sp {
@@ -42,7 +39,7 @@ static int hol__blank(char c)
 }
 
 /* The next field of [*p, end): its start and length (0 at the end). */
-static size_t hol__field(const char **p, const char *end, const char **out)
+size_t hol__study_field(const char **p, const char *end, const char **out)
 {
     const char *s = *p;
     while (s < end && hol__blank(*s))
@@ -54,7 +51,7 @@ static size_t hol__field(const char **p, const char *end, const char **out)
     return (size_t)(s - *out);
 }
 
-static int hol__is(const char *w, size_t n, const char *word)
+int hol__study_is(const char *w, size_t n, const char *word)
 {
     return strlen(word) == n && !memcmp(w, word, n);
 }
@@ -74,12 +71,12 @@ static int hol__name(const char *w, size_t n, char out[HOL_REC_ID_MAX])
 static long hol__one(hol__sp *p, const char *key, const char *rest, const char *end,
                      const char **out)
 {
-    size_t n = hol__field(&rest, end, out);
+    size_t n = hol__study_field(&rest, end, out);
     const char *more;
     if (n == 0)
-        return hol__fail(p->err, HOL_EPARSE, p->line, 0, "'%s' needs a value", key), -1;
-    if (hol__field(&rest, end, &more))
-        return hol__fail(p->err, HOL_EPARSE, p->line, 0, "'%s' takes one value", key), -1;
+        return hol__study_fail(p->err, HOL_EPARSE, p->line, 0, "'%s' needs a value", key), -1;
+    if (hol__study_field(&rest, end, &more))
+        return hol__study_fail(p->err, HOL_EPARSE, p->line, 0, "'%s' takes one value", key), -1;
     return (long)n;
 }
 
@@ -87,11 +84,11 @@ static hol_err hol__add_level(hol__sp *p, const char *w, size_t n)
 {
     hol_study *s = p->s;
     if (s->nlevels >= HOL_STUDY_MAX_LEVELS)
-        return hol__fail(p->err, HOL_ENOMEM, p->line, 0,
+        return hol__study_fail(p->err, HOL_ENOMEM, p->line, 0,
                          "more than %d levels in all (a recording holds %d)",
                          HOL_STUDY_MAX_LEVELS, HOL_STUDY_MAX_LEVELS);
     if (n >= HOL_STUDY_PATH_MAX)
-        return hol__fail(p->err, HOL_ENOMEM, p->line, 0, "a level's path is longer than %d bytes",
+        return hol__study_fail(p->err, HOL_ENOMEM, p->line, 0, "a level's path is longer than %d bytes",
                          HOL_STUDY_PATH_MAX - 1);
     hol_study_span *sp = &s->levels[s->nlevels++];
     sp->off = (uint16_t)(w - s->text);
@@ -104,7 +101,6 @@ static hol_err hol__add_level(hol__sp *p, const char *w, size_t n)
     return HOL_OK;
 }
 
-static size_t hol__key(const char *b, const char *e, const char **out);
 static int hol__same_key(const hol_study *s, int a, int b);
 
 /* set KEY VALUE...: checked as a level line. */
@@ -116,12 +112,12 @@ static hol_err hol__add_set(hol__sp *p, const char *rest, const char *end)
     while (end > rest && hol__blank(end[-1]))
         end--;
     if (rest == end)
-        return hol__fail(p->err, HOL_EPARSE, p->line, 0, "'set' needs a level line (KEY VALUE...)");
+        return hol__study_fail(p->err, HOL_EPARSE, p->line, 0, "'set' needs a level line (KEY VALUE...)");
     hol_level_err le;
     if (hol_level_line_check(rest, (size_t)(end - rest), &le))
-        return hol__fail(p->err, le.code, p->line, 0, "set: %s", le.msg);
+        return hol__study_fail(p->err, le.code, p->line, 0, "set: %s", le.msg);
     if (s->nsets >= HOL_STUDY_MAX_SETS)
-        return hol__fail(p->err, HOL_ENOMEM, p->line, 0, "more than %d set lines",
+        return hol__study_fail(p->err, HOL_ENOMEM, p->line, 0, "more than %d set lines",
                          HOL_STUDY_MAX_SETS);
     hol_study_span *sp = &s->sets[s->nsets++];
     sp->off = (uint16_t)(rest - s->text);
@@ -131,11 +127,11 @@ static hol_err hol__add_set(hol__sp *p, const char *rest, const char *end)
      * refused naming both lines, as a level's repeated key is */
     int first = p->cur >= 0 ? s->conditions[p->cur].first_set : 0;
     const char *key;
-    size_t kn = hol__key(rest, end, &key);
+    size_t kn = hol__study_key(rest, end, &key);
     for (int i = first; i < s->nsets - 1; i++)
         if (hol__same_key(s, i, s->nsets - 1) && !(kn == 5 && !memcmp(key, "place", 5))) {
             s->nsets--;
-            return hol__fail(p->err, HOL_EARG, p->line, s->sets[i].line,
+            return hol__study_fail(p->err, HOL_EARG, p->line, s->sets[i].line,
                              "set %.*s is given twice in %s", (int)(kn < 20 ? kn : 20), key,
                              p->cur >= 0 ? "this condition" : "the study");
         }
@@ -150,20 +146,20 @@ static hol_err hol__condition(hol__sp *p, const char *w, size_t n)
 {
     hol_study *s = p->s;
     if (s->nconditions >= HOL_STUDY_MAX_CONDITIONS)
-        return hol__fail(p->err, HOL_ENOMEM, p->line, 0, "more than %d conditions",
+        return hol__study_fail(p->err, HOL_ENOMEM, p->line, 0, "more than %d conditions",
                          HOL_STUDY_MAX_CONDITIONS);
     hol_study_condition *c = &s->conditions[s->nconditions];
     memset(c, 0, sizeof *c);
     if (!hol__name(w, n, c->name))
-        return hol__fail(p->err, HOL_EPARSE, p->line, 0,
+        return hol__study_fail(p->err, HOL_EPARSE, p->line, 0,
                          "condition '%.*s' is not 1..63 letters, digits, '.', '_', '-'",
                          (int)(n < 40 ? n : 40), w);
     if (!strcmp(c->name, HOL_STUDY_PRACTICE))
-        return hol__fail(p->err, HOL_EARG, p->line, 0,
+        return hol__study_fail(p->err, HOL_EARG, p->line, 0,
                          "'practice' names the practice levels, not a condition");
     for (int k = 0; k < s->nconditions; k++)
         if (!strcmp(s->conditions[k].name, c->name))
-            return hol__fail(p->err, HOL_EARG, p->line, s->conditions[k].line,
+            return hol__study_fail(p->err, HOL_EARG, p->line, s->conditions[k].line,
                              "condition '%s' is given twice", c->name);
     c->line = p->line;
     c->first_level = s->nlevels;
@@ -179,24 +175,24 @@ static hol_err hol__header(hol__sp *p, int is_study, const char *w, size_t n)
     const char *key = is_study ? "study" : "counterbalance";
     long *seen = is_study ? &p->study_line : &p->rule_line;
     if (p->cur >= 0)
-        return hol__fail(p->err, HOL_EARG, p->line, 0, "'%s' comes before the first condition",
+        return hol__study_fail(p->err, HOL_EARG, p->line, 0, "'%s' comes before the first condition",
                          key);
     if (*seen)
-        return hol__fail(p->err, HOL_EARG, p->line, *seen, "a second '%s' line", key);
+        return hol__study_fail(p->err, HOL_EARG, p->line, *seen, "a second '%s' line", key);
     *seen = p->line;
     if (is_study) {
         if (!hol__name(w, n, p->s->name))
-            return hol__fail(p->err, HOL_EPARSE, p->line, 0,
+            return hol__study_fail(p->err, HOL_EPARSE, p->line, 0,
                              "study '%.*s' is not 1..63 letters, digits, '.', '_', '-'",
                              (int)(n < 40 ? n : 40), w);
         return HOL_OK;
     }
     for (int r = 0; r < 4; r++)
-        if (hol__is(w, n, rules[r])) {
+        if (hol__study_is(w, n, rules[r])) {
             p->s->rule = (hol_study_rule)r;
             return HOL_OK;
         }
-    return hol__fail(p->err, HOL_EPARSE, p->line, 0,
+    return hol__study_fail(p->err, HOL_EPARSE, p->line, 0,
                      "counterbalance '%.*s' is not williams, latin, complete or fixed",
                      (int)(n < 30 ? n : 30), w);
 }
@@ -206,12 +202,12 @@ static hol_err hol__header(hol__sp *p, int is_study, const char *w, size_t n)
 static hol_err hol__allow(hol__sp *p, const char *w, size_t n)
 {
     if (p->cur >= 0)
-        return hol__fail(p->err, HOL_EARG, p->line, 0, "'allow' comes before the first condition");
-    if (!hol__is(w, n, "minimap-toggle"))
-        return hol__fail(p->err, HOL_EPARSE, p->line, 0, "allow '%.*s' is not minimap-toggle",
+        return hol__study_fail(p->err, HOL_EARG, p->line, 0, "'allow' comes before the first condition");
+    if (!hol__study_is(w, n, "minimap-toggle"))
+        return hol__study_fail(p->err, HOL_EPARSE, p->line, 0, "allow '%.*s' is not minimap-toggle",
                          (int)(n < 30 ? n : 30), w);
     if (p->allow_line)
-        return hol__fail(p->err, HOL_EARG, p->line, p->allow_line,
+        return hol__study_fail(p->err, HOL_EARG, p->line, p->allow_line,
                          "allow minimap-toggle is given twice");
     p->allow_line = p->line;
     p->s->allow_minimap_toggle = 1;
@@ -230,17 +226,17 @@ static hol_err hol__screen(hol__sp *p, int closing, const char *b, const char *e
     while (end > b && hol__blank(end[-1]))
         end--;
     if (closing && p->cur >= 0)
-        return hol__fail(p->err, HOL_EARG, p->line, 0, "'closing' comes before the first condition");
+        return hol__study_fail(p->err, HOL_EARG, p->line, 0, "'closing' comes before the first condition");
     hol_study_span *sp = closing ? &s->closing
                          : p->cur >= 0 ? &s->conditions[p->cur].instructions
                                        : &s->practice_instructions;
     if (sp->len)
-        return hol__fail(p->err, HOL_EARG, p->line, sp->line, "a second '%s' line %s", key,
+        return hol__study_fail(p->err, HOL_EARG, p->line, sp->line, "a second '%s' line %s", key,
                          closing ? "in the study" : p->cur >= 0 ? "in this condition"
                                                                 : "for the practice");
     hol_level_err le;
     if (hol_level_line_check(b, (size_t)(end - b), &le))
-        return hol__fail(p->err, le.code, p->line, 0, "%s", le.msg);
+        return hol__study_fail(p->err, le.code, p->line, 0, "%s", le.msg);
     sp->off = (uint16_t)(b - s->text);
     sp->len = (uint16_t)(end - b);
     sp->line = p->line;
@@ -256,18 +252,18 @@ static hol_err hol__question(hol__sp *p, const char *b, const char *end)
     while (b < end && hol__blank(*b))
         b++;
     if (p->cur >= 0)
-        return hol__fail(p->err, HOL_EARG, p->line, 0, "'question' comes before the first condition");
+        return hol__study_fail(p->err, HOL_EARG, p->line, 0, "'question' comes before the first condition");
     if (s->nquestions >= HOL_STUDY_MAX_QUESTIONS)
-        return hol__fail(p->err, HOL_ENOMEM, p->line, 0, "more than %d questions",
+        return hol__study_fail(p->err, HOL_ENOMEM, p->line, 0, "more than %d questions",
                          HOL_STUDY_MAX_QUESTIONS);
     hol_app_question q;
     char msg[160];
     hol_err e = hol_ask_parse_question(b, (size_t)(end - b), &q, msg, sizeof msg);
     if (e)
-        return hol__fail(p->err, e, p->line, 0, "%s", msg);
+        return hol__study_fail(p->err, e, p->line, 0, "%s", msg);
     for (int i = 0; i < s->nquestions; i++)
         if (!strcmp(s->question_ids[i], q.id))
-            return hol__fail(p->err, HOL_EARG, p->line, s->questions[i].line,
+            return hol__study_fail(p->err, HOL_EARG, p->line, s->questions[i].line,
                              "question %s is given twice", q.id);
     snprintf(s->question_ids[s->nquestions], HOL_APP_ID_MAX, "%s", q.id);
     s->questions[s->nquestions++] = (hol_study_span){(uint16_t)(b - s->text),
@@ -280,36 +276,36 @@ static hol_err hol__questionnaire(hol__sp *p, const char *rest, const char *end)
 {
     hol_study *s = p->s;
     const char *w, *w2, *w3, *more;
-    size_t n = hol__field(&rest, end, &w), n2 = hol__field(&rest, end, &w2);
+    size_t n = hol__study_field(&rest, end, &w), n2 = hol__study_field(&rest, end, &w2);
     const char *items = rest;
-    size_t n3 = hol__field(&rest, end, &w3), n4 = hol__field(&rest, end, &more);
+    size_t n3 = hol__study_field(&rest, end, &w3), n4 = hol__study_field(&rest, end, &more);
     if (p->cur >= 0)
-        return hol__fail(p->err, HOL_EARG, p->line, 0,
+        return hol__study_fail(p->err, HOL_EARG, p->line, 0,
                          "'questionnaire' comes before the first condition");
     if (!hol_ask_id_ok(w, n) || n2 == 0)
-        return hol__fail(p->err, HOL_EPARSE, p->line, 0,
+        return hol__study_fail(p->err, HOL_EPARSE, p->line, 0,
                          "questionnaire needs NAME ITEM... or NAME after|before "
                          "level|condition|study "
                          "(NAME 1..31 letters, digits, '_', '-', '.')");
     char name[HOL_APP_ID_MAX];
     memcpy(name, w, n);
     name[n] = 0;
-    int before = hol__is(w2, n2, "before");
-    if ((before || hol__is(w2, n2, "after")) && n3 && !n4) {
+    int before = hol__study_is(w2, n2, "before");
+    if ((before || hol__study_is(w2, n2, "after")) && n3 && !n4) {
         int when = hol_ask_when(w3, n3);
         if (when < 0 || hol_ask_before(when))
-            return hol__fail(p->err, HOL_EPARSE, p->line, 0,
+            return hol__study_fail(p->err, HOL_EPARSE, p->line, 0,
                              "questionnaire %s %s '%.*s': level, condition or study", name,
                              before ? "before" : "after", (int)(n3 < 20 ? n3 : 20), w3);
         when += before ? HOL_APP_BEFORE_LEVEL : 0;
         for (int k = 0; k < s->nasks; k++)
             if (s->asks[k].when == when && !strcmp(s->asks[k].name, name))
-                return hol__fail(p->err, HOL_EARG, p->line, s->asks[k].line,
+                return hol__study_fail(p->err, HOL_EARG, p->line, s->asks[k].line,
                                  "questionnaire %s %s %s is given twice", name,
                                  before ? "before" : "after",
                                  hol_ask_when_name(when - (before ? HOL_APP_BEFORE_LEVEL : 0)));
         if (s->nasks >= HOL_APP_MAX_ASKS)
-            return hol__fail(p->err, HOL_ENOMEM, p->line, 0, "more than %d questionnaires asked",
+            return hol__study_fail(p->err, HOL_ENOMEM, p->line, 0, "more than %d questionnaires asked",
                              HOL_APP_MAX_ASKS);
         hol_study_ask *a = &s->asks[s->nasks++];
         snprintf(a->name, sizeof a->name, "%s", name);
@@ -318,19 +314,19 @@ static hol_err hol__questionnaire(hol__sp *p, const char *rest, const char *end)
         return HOL_OK;
     }
     if (n3 && !n4 && hol_ask_when(w3, n3) >= 0)
-        return hol__fail(p->err, HOL_EPARSE, p->line, 0,
+        return hol__study_fail(p->err, HOL_EPARSE, p->line, 0,
                          "questionnaire %s %.*s %.*s: a questionnaire is placed with "
                          "'after|before level|condition|study'", name, (int)(n2 < 20 ? n2 : 20), w2,
                          (int)n3, w3);
     if (hol_ask_preset(w, n, NULL, 0))
-        return hol__fail(p->err, HOL_EARG, p->line, 0, "questionnaire %s is a preset: it has its "
+        return hol__study_fail(p->err, HOL_EARG, p->line, 0, "questionnaire %s is a preset: it has its "
                          "items", name);
     for (int i = 0; i < s->nquestionnaires; i++)
         if (!strcmp(s->questionnaires[i].name, name))
-            return hol__fail(p->err, HOL_EARG, p->line, 0, "questionnaire %s is given twice",
+            return hol__study_fail(p->err, HOL_EARG, p->line, 0, "questionnaire %s is given twice",
                              name);
     if (s->nquestionnaires >= HOL_STUDY_MAX_QUESTIONNAIRES)
-        return hol__fail(p->err, HOL_ENOMEM, p->line, 0, "more than %d questionnaires",
+        return hol__study_fail(p->err, HOL_ENOMEM, p->line, 0, "more than %d questionnaires",
                          HOL_STUDY_MAX_QUESTIONNAIRES);
     /* every item a question given before */
     const char *it = w2;
@@ -338,20 +334,20 @@ static hol_err hol__questionnaire(hol__sp *p, const char *rest, const char *end)
         end--;
     for (const char *q = it; q < end;) {
         const char *id;
-        size_t k = hol__field(&q, end, &id), j = 0;
+        size_t k = hol__study_field(&q, end, &id), j = 0;
         if (!k)
             break;
-        while (j < (size_t)s->nquestions && !hol__is(id, k, s->question_ids[j]))
+        while (j < (size_t)s->nquestions && !hol__study_is(id, k, s->question_ids[j]))
             j++;
         if (j == (size_t)s->nquestions)
-            return hol__fail(p->err, HOL_EARG, p->line, 0,
+            return hol__study_fail(p->err, HOL_EARG, p->line, 0,
                              "questionnaire %s: no question '%.*s' before it", name,
                              (int)(k < 32 ? k : 32), id);
         const char *q2 = it, *id2;
         size_t k2;
-        while ((k2 = hol__field(&q2, end, &id2)) > 0 && id2 < id)
+        while ((k2 = hol__study_field(&q2, end, &id2)) > 0 && id2 < id)
             if (k2 == k && !memcmp(id2, id, k))
-                return hol__fail(p->err, HOL_EARG, p->line, 0,
+                return hol__study_fail(p->err, HOL_EARG, p->line, 0,
                                  "questionnaire %s lists '%.*s' twice", name,
                                  (int)(k < 32 ? k : 32), id);
     }
@@ -366,24 +362,24 @@ static hol_err hol__questionnaire(hol__sp *p, const char *rest, const char *end)
 static hol_err hol__line(hol__sp *p, const char *b, const char *end)
 {
     const char *rest = b, *key, *w;
-    size_t kn = hol__field(&rest, end, &key);
+    size_t kn = hol__study_field(&rest, end, &key);
     if (kn == 0)
         return HOL_OK;
-    if (hol__is(key, kn, "set"))
+    if (hol__study_is(key, kn, "set"))
         return hol__add_set(p, rest, end);
-    if (hol__is(key, kn, "instructions") || hol__is(key, kn, "closing"))
-        return hol__screen(p, hol__is(key, kn, "closing"), b, end);
-    if (hol__is(key, kn, "question"))
+    if (hol__study_is(key, kn, "instructions") || hol__study_is(key, kn, "closing"))
+        return hol__screen(p, hol__study_is(key, kn, "closing"), b, end);
+    if (hol__study_is(key, kn, "question"))
         return hol__question(p, b, end);
-    if (hol__is(key, kn, "questionnaire"))
+    if (hol__study_is(key, kn, "questionnaire"))
         return hol__questionnaire(p, rest, end);
     static const char *const keys[6] = {"study", "counterbalance", "practice", "condition",
                                         "level", "allow"};
     int k = 0;
-    while (k < 6 && !hol__is(key, kn, keys[k]))
+    while (k < 6 && !hol__study_is(key, kn, keys[k]))
         k++;
     if (k == 6)
-        return hol__fail(p->err, HOL_EPARSE, p->line, 0,
+        return hol__study_fail(p->err, HOL_EPARSE, p->line, 0,
                          "unknown key '%.*s' (study, counterbalance, practice, condition, level, "
                          "set, allow, instructions, closing, question, questionnaire)", (int)(kn < 20 ? kn : 20), key);
     long n = hol__one(p, keys[k], rest, end, &w);
@@ -396,10 +392,10 @@ static hol_err hol__line(hol__sp *p, const char *b, const char *end)
     if (k == 3)
         return hol__condition(p, w, (size_t)n);
     if (k == 2 && p->cur >= 0)
-        return hol__fail(p->err, HOL_EARG, p->line, 0,
+        return hol__study_fail(p->err, HOL_EARG, p->line, 0,
                          "'practice' comes before the first condition");
     if (k == 4 && p->cur < 0)
-        return hol__fail(p->err, HOL_EARG, p->line, 0,
+        return hol__study_fail(p->err, HOL_EARG, p->line, 0,
                          "'level' belongs to a condition (before the first: 'practice')");
     return hol__add_level(p, w, (size_t)n);
 }
@@ -409,9 +405,9 @@ static hol_err hol__finish(hol__sp *p)
 {
     hol_study *s = p->s;
     if (!p->study_line)
-        return hol__fail(p->err, HOL_EARG, 0, 0, "no 'study NAME' line");
+        return hol__study_fail(p->err, HOL_EARG, 0, 0, "no 'study NAME' line");
     if (s->nconditions == 0)
-        return hol__fail(p->err, HOL_EARG, 0, 0, "no 'condition NAME' line");
+        return hol__study_fail(p->err, HOL_EARG, 0, 0, "no 'condition NAME' line");
     for (int k = 0; k < s->nasks; k++) {
         const char *nm = s->asks[k].name;
         int known = hol_ask_preset(nm, strlen(nm), NULL, 0) > 0;
@@ -420,7 +416,7 @@ static hol_err hol__finish(hol__sp *p)
         char presets[HOL_ASK_NAMES_MAX];
         hol_ask_preset_names("or", presets, sizeof presets);
         if (!known)
-            return hol__fail(p->err, HOL_EARG, s->asks[k].line, 0,
+            return hol__study_fail(p->err, HOL_EARG, s->asks[k].line, 0,
                              "questionnaire %s is neither given (questionnaire %s ITEM...) nor "
                              "%s", nm, nm, presets);
     }
@@ -431,10 +427,10 @@ static hol_err hol__finish(hol__sp *p)
         if (s->conditions[c].nlevels)
             continue;
         if (++total > HOL_STUDY_MAX_LEVELS)
-            return hol__fail(p->err, HOL_ENOMEM, s->conditions[c].line, 0,
+            return hol__study_fail(p->err, HOL_ENOMEM, s->conditions[c].line, 0,
                              "more than %d levels in all", HOL_STUDY_MAX_LEVELS);
-        if (!hol__set_key(s, c, "mode", 4))
-            return hol__fail(p->err, HOL_EARG, s->conditions[c].line, 0,
+        if (!hol__study_set_key(s, c, "mode", 4))
+            return hol__study_fail(p->err, HOL_EARG, s->conditions[c].line, 0,
                              "condition %s has neither a 'level' nor a 'set mode' line",
                              s->conditions[c].name);
     }
@@ -459,7 +455,7 @@ hol_err hol_study_parse(const char *text, size_t len, hol_study *out, hol_level_
 {
     static const hol_study zero;
     if (len > HOL_STUDY_TEXT_MAX)
-        return hol__fail(err, HOL_ENOMEM, 0, 0, "longer than %d bytes", HOL_STUDY_TEXT_MAX);
+        return hol__study_fail(err, HOL_ENOMEM, 0, 0, "longer than %d bytes", HOL_STUDY_TEXT_MAX);
     *out = zero;
     memcpy(out->text, text, len);
     hol__sp p = {out, err, 0, 0, 0, 0, -1};
@@ -475,9 +471,9 @@ hol_err hol_study_parse(const char *text, size_t len, hol_study *out, hol_level_
             le--;
         const char *hash = memchr(s, '#', (size_t)(le - s));
         if ((size_t)(le - s) > HOL_STUDY_LINE_MAX)
-            e = hol__fail(err, HOL_ENOMEM, p.line, 0, "longer than %d bytes", HOL_STUDY_LINE_MAX);
+            e = hol__study_fail(err, HOL_ENOMEM, p.line, 0, "longer than %d bytes", HOL_STUDY_LINE_MAX);
         else if (memchr(s, 0, (size_t)(le - s)))
-            e = hol__fail(err, HOL_EPARSE, p.line, 0, "a NUL byte");
+            e = hol__study_fail(err, HOL_EPARSE, p.line, 0, "a NUL byte");
         else
             e = hol__line(&p, s, hash ? hash : le);
         s = nl ? nl + 1 : end;
@@ -587,27 +583,27 @@ int hol_study_level_condition(const hol_study *s, int i)
     return -1;
 }
 
-/* ---- a condition's level ---------------------------------------------------------- */
+/* ---- a level line's key ---------------------------------------------------- */
 
 /* The key of a level line [b, e): its first field before any comment. */
-static size_t hol__key(const char *b, const char *e, const char **out)
+size_t hol__study_key(const char *b, const char *e, const char **out)
 {
     const char *hash = memchr(b, '#', (size_t)(e - b));
-    return hol__field(&b, hash ? hash : e, out);
+    return hol__study_field(&b, hash ? hash : e, out);
 }
 
 static int hol__same_key(const hol_study *s, int a, int b)
 {
     const char *k, *k2;
     const hol_study_span *x = &s->sets[a], *y = &s->sets[b];
-    size_t n = hol__key(s->text + x->off, s->text + x->off + x->len, &k);
-    size_t n2 = hol__key(s->text + y->off, s->text + y->off + y->len, &k2);
+    size_t n = hol__study_key(s->text + x->off, s->text + x->off + x->len, &k);
+    size_t n2 = hol__study_key(s->text + y->off, s->text + y->off + y->len, &k2);
     return n == n2 && !memcmp(k, k2, n);
 }
 
 /* Is set line j in force for condition c: the condition's own, or the
  * study's when the condition does not set the same key? */
-static int hol__in_force(const hol_study *s, int c, int j)
+int hol__study_in_force(const hol_study *s, int c, int j)
 {
     const hol_study_condition *cd = &s->conditions[c];
     if (j >= cd->first_set && j < cd->first_set + cd->nsets)
@@ -621,398 +617,14 @@ static int hol__in_force(const hol_study *s, int c, int j)
 }
 
 /* Does a set line in force for condition c give key [k, k+kn)? */
-static int hol__set_key(const hol_study *s, int c, const char *k, size_t kn)
+int hol__study_set_key(const hol_study *s, int c, const char *k, size_t kn)
 {
     for (int j = 0; j < s->nsets; j++) {
         const char *k2;
         const hol_study_span *o = &s->sets[j];
-        size_t n = hol__key(s->text + o->off, s->text + o->off + o->len, &k2);
-        if (hol__in_force(s, c, j) && n == kn && !memcmp(k, k2, n))
+        size_t n = hol__study_key(s->text + o->off, s->text + o->off + o->len, &k2);
+        if (hol__study_in_force(s, c, j) && n == kn && !memcmp(k, k2, n))
             return 1;
     }
     return 0;
-}
-
-/* A condition's level text being composed: out (cap bytes), origin[k] the
- * line that composed line k + 1 came from (> 0 the file's, < 0 the
- * study's). */
-typedef struct hol__compose {
-    char *out;
-    size_t n, cap;
-    long *origin;
-    long nlines, max_lines;
-    const char *stage; /* what is being added: the overflow's cause */
-} hol__compose;
-
-static int hol__put_line(hol__compose *c, const char *s, size_t n, long origin)
-{
-    if (c->n + n + 1 > c->cap || c->nlines >= c->max_lines)
-        return 1;
-    memcpy(c->out + c->n, s, n);
-    c->n += n;
-    c->out[c->n++] = '\n';
-    c->origin[c->nlines++] = origin;
-    return 0;
-}
-
-/* The study's screen lines level i carries (see hol_study.h): its
- * instructions (the first level of the practice or of its condition) and
- * the closing (the participant's last level); NULL when none. */
-static const hol_study_span *hol__instr_of(const hol_study *s, int c, int i)
-{
-    const hol_study_span *sp = c < 0 ? &s->practice_instructions : &s->conditions[c].instructions;
-    int first = c < 0 ? 0 : s->conditions[c].first_level;
-    return sp->len && i == first ? sp : NULL;
-}
-
-static const hol_study_span *hol__closing_of(const hol_study *s, int c, int i, int position)
-{
-    const hol_study_condition *cd = c >= 0 ? &s->conditions[c] : NULL;
-    return s->closing.len && cd && position == s->nconditions &&
-                   i == cd->first_level + cd->nlevels - 1
-               ? &s->closing
-               : NULL;
-}
-
-/* Does the study give level i's line of key [k, k+kn) (a screen line)? */
-static int hol__screen_key(const hol_study *s, int c, int i, int position, const char *k,
-                           size_t kn)
-{
-    return (kn == 12 && !memcmp(k, "instructions", 12) && hol__instr_of(s, c, i)) ||
-           (kn == 7 && !memcmp(k, "closing", 7) && hol__closing_of(s, c, i, position));
-}
-
-/* Is the study's ask k due with level i (condition c, position): after
- * it, or before it (a baseline: `before study` before the participant's
- * first level, the practice's when there is one)? */
-static int hol__ask_due(const hol_study *s, int k, int c, int i, int position)
-{
-    if (s->asks[k].when == HOL_APP_BEFORE_STUDY)
-        return s->npractice > 0 ? c < 0 && i == 0
-                                : c >= 0 && position == 1 && i == s->conditions[c].first_level;
-    if (c < 0)
-        return 0; /* practice levels ask nothing else */
-    const hol_study_condition *cd = &s->conditions[c];
-    int last_of_cond = i == cd->first_level + cd->nlevels - 1;
-    switch (s->asks[k].when) {
-    case HOL_APP_AFTER_LEVEL:
-    case HOL_APP_BEFORE_LEVEL: return 1;
-    case HOL_APP_AFTER_CONDITION: return last_of_cond;
-    case HOL_APP_BEFORE_CONDITION: return i == cd->first_level;
-    default: return last_of_cond && position == s->nconditions;
-    }
-}
-
-/* The question line of ID [id, id+n) once into the level. 1 when it does
- * not fit. */
-static int hol__put_question(const hol_study *s, const char *id, size_t n, hol__compose *cp,
-                             unsigned char *put)
-{
-    for (int j = 0; j < s->nquestions; j++)
-        if (hol__is(id, n, s->question_ids[j]) && !put[j]) {
-            put[j] = 1;
-            return hol__put_line(cp, s->text + s->questions[j].off, s->questions[j].len,
-                                 -s->questions[j].line);
-        }
-    return 0;
-}
-
-/* The study's questionnaire NAME (its items), NULL for a preset. */
-static const hol_study_questionnaire *hol__qn(const hol_study *s, const char *name)
-{
-    for (int j = 0; j < s->nquestionnaires; j++)
-        if (!strcmp(s->questionnaires[j].name, name))
-            return &s->questionnaires[j];
-    return NULL;
-}
-
-/* The order questionnaires are put in: before study, condition, level;
- * then after level, condition, study. */
-static const int hol__whens[HOL_APP_ASK_WHENS] = {
-    HOL_APP_BEFORE_STUDY, HOL_APP_BEFORE_CONDITION, HOL_APP_BEFORE_LEVEL,
-    HOL_APP_AFTER_LEVEL,  HOL_APP_AFTER_CONDITION,  HOL_APP_AFTER_STUDY};
-
-/* The questionnaires due with level i whose when is hol__whens[from..to):
- * their questions (each once: put), then `ask NAME WHEN ID...`, by when,
- * in the file's order. */
-static int hol__put_asks(const hol_study *s, int c, int i, int position, hol__compose *cp,
-                         int from, int to, unsigned char *put)
-{
-    for (int w = from; w < to; w++)
-        for (int k = 0; k < s->nasks; k++) {
-            const hol_study_ask *a = &s->asks[k];
-            int when = hol__whens[w];
-            if (a->when != when || !hol__ask_due(s, k, c, i, position))
-                continue;
-            const hol_study_questionnaire *d = hol__qn(s, a->name);
-            char line[HOL_STUDY_LINE_MAX + 64];
-            int n = snprintf(line, sizeof line, "ask %s %s", a->name, hol_ask_when_name(when));
-            if (d) {
-                const char *q = s->text + d->items.off, *end = q + d->items.len, *id;
-                size_t kn;
-                while ((kn = hol__field(&q, end, &id)) > 0)
-                    if (hol__put_question(s, id, kn, cp, put))
-                        return 1;
-                n += snprintf(line + n, sizeof line - (size_t)n, " %.*s", (int)d->items.len,
-                              s->text + d->items.off);
-            }
-            if (n < 0 || (size_t)n >= sizeof line || hol__put_line(cp, line, (size_t)n, -a->line))
-                return 1;
-        }
-    return 0;
-}
-
-/* Is question ID [id, id+n) an item of a questionnaire `before study`? */
-static int hol__baseline_item(const hol_study *s, const char *id, size_t n)
-{
-    for (int k = 0; k < s->nasks; k++) {
-        const hol_study_questionnaire *d = hol__qn(s, s->asks[k].name);
-        const char *q = d ? s->text + d->items.off : NULL, *end = d ? q + d->items.len : NULL, *f;
-        size_t kn;
-        while (d && s->asks[k].when == HOL_APP_BEFORE_STUDY && (kn = hol__field(&q, end, &f)) > 0)
-            if (kn == n && !memcmp(f, id, n))
-                return 1;
-    }
-    return 0;
-}
-
-/* A condition's level without a practice: the questions the questionnaires
- * `before study` share with those due with level i but at the study's
- * ends (before or after its condition or itself), put before the first
- * level's own lines at every position, so that what follows the first
- * level's mark adds only lines (its hash the other positions'). 1 when
- * they do not fit. */
-static int hol__put_shared(const hol_study *s, int c, int i, int position, hol__compose *cp,
-                           unsigned char *put)
-{
-    for (int w = 1; w < HOL_APP_ASK_WHENS - 1 && c >= 0 && !s->npractice; w++)
-        for (int k = 0; k < s->nasks; k++) {
-            const hol_study_questionnaire *d = hol__qn(s, s->asks[k].name);
-            if (!d || s->asks[k].when != hol__whens[w] || !hol__ask_due(s, k, c, i, position))
-                continue;
-            const char *q = s->text + d->items.off, *end = q + d->items.len, *id;
-            size_t kn;
-            while ((kn = hol__field(&q, end, &id)) > 0)
-                if (hol__baseline_item(s, id, kn) && hol__put_question(s, id, kn, cp, put))
-                    return 1;
-        }
-    return 0;
-}
-
-/* The questionnaires `before study` due with a condition's level i
- * between HOL_LEVEL_FIRST_MARK and HOL_LEVEL_FIRST_END (outside the
- * level's hash); a practice's level has them as they are (every
- * participant's first). 1 when they do not fit. */
-static int hol__put_baseline(const hol_study *s, int c, int i, int position, hol__compose *cp,
-                             unsigned char *put)
-{
-    int due = 0;
-    for (int k = 0; k < s->nasks; k++)
-        due |= s->asks[k].when == HOL_APP_BEFORE_STUDY && hol__ask_due(s, k, c, i, position);
-    long at = c >= 0 ? -s->conditions[c].line : 0;
-    if (due && c >= 0 && hol__put_line(cp, HOL_LEVEL_FIRST_MARK, sizeof HOL_LEVEL_FIRST_MARK - 1, at))
-        return 1;
-    if (hol__put_asks(s, c, i, position, cp, 0, 1, put))
-        return 1;
-    return due && c >= 0 && hol__put_line(cp, HOL_LEVEL_FIRST_END, sizeof HOL_LEVEL_FIRST_END - 1, at);
-}
-
-/* Is a questionnaire `after study` due after level i? */
-static int hol__study_ask_due(const hol_study *s, int c, int i, int position)
-{
-    for (int k = 0; k < s->nasks; k++)
-        if (s->asks[k].when == HOL_APP_AFTER_STUDY && hol__ask_due(s, k, c, i, position))
-            return 1;
-    return 0;
-}
-
-/* The screen lines of level i after its text: its questionnaires (but
- * those after the study; those before it, on a condition's level, between
- * the first level's marks), its instructions, then what only the
- * participant's last level carries (the questionnaires `after study`, the
- * closing) after HOL_LEVEL_LAST_MARK, outside the level's hash. 1 when
- * they do not fit. */
-static int hol__put_screens(const hol_study *s, int c, int i, int position, hol__compose *cp)
-{
-    unsigned char put[HOL_STUDY_MAX_QUESTIONS] = {0};
-    cp->stage = "questions asked after it";
-    if (hol__put_shared(s, c, i, position, cp, put) ||
-        hol__put_baseline(s, c, i, position, cp, put) ||
-        hol__put_asks(s, c, i, position, cp, 1, HOL_APP_ASK_WHENS - 1, put))
-        return 1;
-    const hol_study_span *a = hol__instr_of(s, c, i), *b = hol__closing_of(s, c, i, position);
-    cp->stage = "instructions";
-    if (a && hol__put_line(cp, s->text + a->off, a->len, -a->line))
-        return 1;
-    int last = b || hol__study_ask_due(s, c, i, position);
-    if (last && hol__put_line(cp, HOL_LEVEL_LAST_MARK, sizeof HOL_LEVEL_LAST_MARK - 1,
-                              c >= 0 ? -s->conditions[c].line : 0))
-        return 1;
-    cp->stage = "questions asked after it";
-    if (hol__put_asks(s, c, i, position, cp, HOL_APP_ASK_WHENS - 1, HOL_APP_ASK_WHENS, put))
-        return 1;
-    cp->stage = "closing";
-    return b && hol__put_line(cp, s->text + b->off, b->len, -b->line);
-}
-
-/* The level file's lines but those a set line (or a screen line of the
- * study's) replaces, the note, the set lines in force, the screens. 1 when
- * it does not fit. c -1: a practice level (no set lines). */
-static int hol__compose_text(const hol_study *s, int c, int i, int position, const char *file,
-                             size_t len, hol__compose *cp)
-{
-    const hol_study_condition *cd = c >= 0 ? &s->conditions[c] : NULL;
-    long fl = 0;
-    for (const char *p = file, *end = file ? file + len : NULL; p && p < end;) {
-        const char *nl = memchr(p, '\n', (size_t)(end - p));
-        const char *le = nl ? nl : end, *k;
-        fl++;
-        size_t n = (size_t)(le - p);
-        while (n && p[n - 1] == '\r')
-            n--;
-        size_t kn = hol__key(p, p + n, &k);
-        int replaced = kn && ((c >= 0 && hol__set_key(s, c, k, kn)) ||
-                              hol__screen_key(s, c, i, position, k, kn));
-        if (!replaced && hol__put_line(cp, p, n, fl))
-            return 1;
-        p = nl ? nl + 1 : end;
-    }
-    if (c < 0)
-        return hol__put_screens(s, c, i, position, cp);
-    int used = 0;
-    cp->stage = "set lines";
-    for (int j = 0; j < s->nsets; j++)
-        used += hol__in_force(s, c, j);
-    if (used) {
-        char note[160];
-        int n = snprintf(note, sizeof note, "# study %s, condition %s:", s->name, cd->name);
-        if (hol__put_line(cp, note, (size_t)n, -cd->line))
-            return 1;
-    }
-    for (int j = 0; j < s->nsets; j++)
-        if (hol__in_force(s, c, j) &&
-            hol__put_line(cp, s->text + s->sets[j].off, s->sets[j].len, -s->sets[j].line))
-            return 1;
-    /* a condition's minimap holds during its levels (issue 26) */
-    if (hol__set_key(s, c, "minimap", 7) && !s->allow_minimap_toggle &&
-        hol__put_line(cp, "fixed minimap", 13, -cd->line))
-        return 1;
-    return hol__put_screens(s, c, i, position, cp);
-}
-
-/* A level error's lines, of the composed text, as the file's or the
- * study's. */
-static void hol__map_err(const hol__compose *cp, long cond_line, hol_level_err *err,
-                         int *in_study)
-{
-    long o = err->line > 0 && err->line <= cp->nlines ? cp->origin[err->line - 1]
-             : err->line > 0                           ? -cond_line
-                                                       : 0;
-    *in_study = o < 0;
-    err->line = o < 0 ? -o : o;
-    if (err->other > 0 && err->other <= cp->nlines) {
-        long m = cp->origin[err->other - 1];
-        err->other = (m < 0) == *in_study ? (m < 0 ? -m : m) : 0;
-    }
-}
-
-/* An error on a study's set line says "set: " as the line's own check
- * does (issue 39: `set place lantern` errors found once composed). */
-static void hol__set_prefix(const hol_study *s, int in_study, hol_level_err *err)
-{
-    int on_set = 0;
-    for (int j = 0; in_study && j < s->nsets; j++)
-        on_set |= s->sets[j].line == err->line;
-    if (!on_set || !strncmp(err->msg, "set", 3))
-        return;
-    size_t n = strlen(err->msg);
-    if (n > sizeof err->msg - 6)
-        n = sizeof err->msg - 6;
-    memmove(err->msg + 5, err->msg, n);
-    memcpy(err->msg, "set: ", 5);
-    err->msg[n + 5] = 0;
-}
-
-static hol_err hol__make_at(const hol_study *s, int i, int position, const char *file,
-                           size_t len, const char *name, hol_level *out, hol_level_err *err,
-                           int *out_in_study)
-{
-    char buf[HOL_LEVEL_TEXT_MAX + 1];
-    long origin[HOL_LEVEL_TEXT_MAX / 2 + 2];
-    *out_in_study = 0;
-    if (i < 0 || i >= s->nlevels)
-        return hol__fail(err, HOL_EARG, 0, 0, "no level %d in the study", i);
-    int c = hol_study_level_condition(s, i);
-    const char *cname = c < 0 ? HOL_STUDY_PRACTICE : s->conditions[c].name;
-    if (!name)
-        name = cname;
-    hol__compose cp = {buf, 0, sizeof buf, origin, 0, (long)(sizeof origin / sizeof origin[0]),
-                       "level file's lines"};
-    /* a practice level is the file as it is, unless it carries the
-     * practice's instructions or a questionnaire before the study */
-    int composed = c >= 0 || hol__instr_of(s, c, i);
-    for (int k = 0; k < s->nasks && !composed; k++)
-        composed = hol__ask_due(s, k, c, i, position);
-    long at = c >= 0 ? s->conditions[c].line : s->practice_instructions.line;
-    if (composed && hol__compose_text(s, c, i, position, file, len, &cp)) {
-        *out_in_study = 1;
-        return hol__fail(err, HOL_ENOMEM, at, 0,
-                         "%s %s: its level with the %s is longer than %d bytes",
-                         c >= 0 ? "condition" : "the", cname, cp.stage, HOL_LEVEL_TEXT_MAX);
-    }
-    const char *t = composed ? buf : file ? file : "";
-    size_t tl = composed ? cp.n : file ? len : 0;
-    hol_err e = hol_level_make(name, strlen(name), t, tl, out, err);
-    if (e) {
-        if (composed)
-            hol__map_err(&cp, at, err, out_in_study);
-        hol__set_prefix(s, *out_in_study, err);
-        return e;
-    }
-    snprintf(out->condition, sizeof out->condition, "%s", cname);
-    out->position = c < 0 ? 0 : position;
-    return HOL_OK;
-}
-
-/* What a condition's level carries depends on its position only through
- * being the last (the closing, the asks `after study`): the positions
- * condition c can take, one not the last and the last (fixed: its own). */
-static int hol__positions(const hol_study *s, int c, int out[2])
-{
-    int n = s->nconditions;
-    if (s->rule == HOL_STUDY_FIXED || n < 2) {
-        out[0] = s->rule == HOL_STUDY_FIXED ? c + 1 : n;
-        return 1;
-    }
-    out[0] = 1, out[1] = n;
-    return 2;
-}
-
-hol_err hol_study_make_level(const hol_study *s, int i, int position, const char *file,
-                             size_t len, const char *name, hol_level *out, hol_level_err *err,
-                             int *out_in_study)
-{
-    int c = i >= 0 && i < s->nlevels ? hol_study_level_condition(s, i) : -1, at[2];
-    int n = c >= 0 ? hol__positions(s, c, at) : 0, last = s->nconditions;
-    for (int k = 0; k < n; k++) {
-        if ((at[k] == last) == (position == last))
-            continue; /* the participant's own position is made last, below */
-        hol_err e = hol__make_at(s, i, at[k], file, len, name, out, err, out_in_study);
-        hol_level_err mine;
-        int mine_in = 0;
-        /* an error at the position given too is its own, unmarked */
-        hol_err e2 = e ? hol__make_at(s, i, position, file, len, name, out, &mine, &mine_in)
-                       : HOL_OK;
-        if (e2) {
-            *err = mine, *out_in_study = mine_in;
-            return e2;
-        }
-        if (e) {
-            size_t m = strlen(err->msg);
-            snprintf(err->msg + m, sizeof err->msg - m, " (at position %d of %d, %s)", at[k],
-                     last, at[k] == last ? "the last" : "not the last");
-            return e;
-        }
-    }
-    return hol__make_at(s, i, position, file, len, name, out, err, out_in_study);
 }
