@@ -208,10 +208,10 @@ void hol__ask_frame(hol_app *app, const hol_input *in, uint32_t pressed)
  * ends, on one line or two): never more than the HUD's 6 lines, none cut. */
 void hol__ask_lines(const hol_app *app, hol_app_hud *h)
 {
-    hol_app_question said; /* a lesson's question in the view's language */
-    const hol_app_question *q = hol__lesson_item(app, hol__ask_item(app), &said);
+    hol_app_question said; /* the item in the view's language */
     const hol_app_ask *a = &app->level.asks[app->ask_k];
-    const char *name = q == &said ? hol_str(hol__lang(app), HOL_S_PREDICT) : a->name;
+    const char *name;
+    const hol_app_question *q = hol__item_said(app, a, hol__ask_item(app), &said, &name);
     int marks = hol__marks(q), m = app->ask_mark, step = q->step > 0 ? q->step : 1;
     h->nlines = 0;
     char wrapped[3][HOL_APP_TEXT_MAX];

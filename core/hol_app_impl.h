@@ -134,13 +134,17 @@ static inline int hol__lang(const hol_app *app)
 
 /* hol_app_lesson.c: a lesson level's text (its instructions, closing:
  * part HOL_LESSON_WALK, _CHECK) in the view's language into out when text
- * is the lesson's English one, else text; the predict item q likewise
- * (into tmp); lesson HOL_APP_HINT_LESSON's hint into out (1; 0 for a
- * level without). */
+ * is the lesson's English one, else text (the class test's closing too);
+ * item q of ask a as shown: in the view's language (into tmp) when it is
+ * a lesson's predict question, a class test's item (core/hol_quiz.h) or
+ * a preset's (core/hol_ask.h) as the level holds it in English, else q,
+ * with the questionnaire's name shown (*name); lesson
+ * HOL_APP_HINT_LESSON's hint into out (1; 0 for a level without). */
 const char *hol__lesson_say(const hol_app *app, const char *text, int part, char *out,
                             size_t cap);
-const hol_app_question *hol__lesson_item(const hol_app *app, const hol_app_question *q,
-                                         hol_app_question *tmp);
+const hol_app_question *hol__item_said(const hol_app *app, const hol_app_ask *a,
+                                       const hol_app_question *q, hol_app_question *tmp,
+                                       const char **name);
 int hol__lesson_hint(const hol_app *app, char *out, size_t cap);
 
 /* hol_app_tutorial.c */

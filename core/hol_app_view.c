@@ -128,9 +128,9 @@ static void hol__prompt(const hol_app *app, hol_app_hud *h, const hol__ask *ask,
     size_t len = 0;
     h->hint[0] = 0;
     for (int i = 0; i < n; i++) {
-        const char *b = hol_prompt_button(device, ask[i].btn);
+        const char *b = hol_prompt_button_in(device, ask[i].btn, hol__lang(app));
         if (!b && ask[i].alt)
-            b = hol_prompt_button(device, ask[i].alt);
+            b = hol_prompt_button_in(device, ask[i].alt, hol__lang(app));
         if (!b)
             continue;
         int k = snprintf(h->hint + len, sizeof h->hint - len, "%s%s: %s", len ? ", " : "", b,
@@ -150,7 +150,7 @@ static void hol__prompt(const hol_app *app, hol_app_hud *h, const hol__ask *ask,
  * of text, whose prompts name what acts there. */
 static void hol__menu_hint(const hol_app *app, const hol_input *in, hol_app_hud *h)
 {
-    const char *b = hol_prompt_button(app->device, HOL_BTN_MENU);
+    const char *b = hol_prompt_button_in(app->device, HOL_BTN_MENU, hol__lang(app));
     if (!in || !b || app->device < HOL_DEVICE_XR_SIMPLE || app->menu ||
         app->level.lesson == HOL_APP_HINT_LESSON || /* its prompt names the button */
         app->view.state != HOL_APP_PLAYING || !(in->time_s - app->device_t < HOL_APP_MENU_HINT_S))
@@ -316,7 +316,7 @@ static void hol__fill_lines(const hol_app *app, hol_app_hud *h)
         return;
     HOL__LINE("%s", h->status[0] ? h->status : h->objective);
     if (v->seated) /* the panel names the mode */
-        HOL__LINE("%s", hol_prompt_seated(h->device));
+        HOL__LINE("%s", hol_prompt_seated(h->device, lang));
     HOL__LINE(hol_str(lang, HOL_S_STEPS_FMT), h->steps);
     if (lim > 0)
         HOL__LINE(hol_str(lang, HOL_S_TIME_OF_FMT), secs / 60 % 100000, secs % 60, lim / 60 % 100000,

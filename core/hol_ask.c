@@ -9,8 +9,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#define HOL__VLO "Very low"
-#define HOL__VHI "Very high"
+#include "hol_str.h"
 
 /* The SSQ's subscales: nausea (bit 0), oculomotor (1), disorientation (2),
  * Kennedy et al. 1993, table 4; its scores: the subscales' raw sums
@@ -25,42 +24,56 @@
 #endif
 
 static const hol_ask_preset_def hol__presets[] = {
-    {"ssq", 0, 3, 1, "none", "severe", 16,
-     {{"general_discomfort", "General discomfort", 0, 0, HOL__N | HOL__O},
-      {"fatigue", "Fatigue", 0, 0, HOL__O},
-      {"headache", "Headache", 0, 0, HOL__O},
-      {"eye_strain", "Eye strain", 0, 0, HOL__O},
-      {"difficulty_focusing", "Difficulty focusing", 0, 0, HOL__O | HOL__D},
-      {"salivation_increasing", "Salivation increasing", 0, 0, HOL__N},
-      {"sweating", "Sweating", 0, 0, HOL__N},
-      {"nausea", "Nausea", 0, 0, HOL__N | HOL__D},
-      {"difficulty_concentrating", "Difficulty concentrating", 0, 0, HOL__N | HOL__O},
-      {"fullness_of_head", "Fullness of the head", 0, 0, HOL__D},
-      {"blurred_vision", "Blurred vision", 0, 0, HOL__O | HOL__D},
-      {"dizziness_eyes_open", "Dizziness with eyes open", 0, 0, HOL__D},
-      {"dizziness_eyes_closed", "Dizziness with eyes closed", 0, 0, HOL__D},
-      {"vertigo", "Vertigo", 0, 0, HOL__D},
-      {"stomach_awareness", "Stomach awareness", 0, 0, HOL__N},
-      {"burping", "Burping", 0, 0, HOL__N}},
+    {"ssq", 0, 3, 1, NULL, NULL, 16,
+     {{"general_discomfort", NULL, NULL, NULL, HOL__N | HOL__O},
+      {"fatigue", NULL, NULL, NULL, HOL__O},
+      {"headache", NULL, NULL, NULL, HOL__O},
+      {"eye_strain", NULL, NULL, NULL, HOL__O},
+      {"difficulty_focusing", NULL, NULL, NULL, HOL__O | HOL__D},
+      {"salivation_increasing", NULL, NULL, NULL, HOL__N},
+      {"sweating", NULL, NULL, NULL, HOL__N},
+      {"nausea", NULL, NULL, NULL, HOL__N | HOL__D},
+      {"difficulty_concentrating", NULL, NULL, NULL, HOL__N | HOL__O},
+      {"fullness_of_head", NULL, NULL, NULL, HOL__D},
+      {"blurred_vision", NULL, NULL, NULL, HOL__O | HOL__D},
+      {"dizziness_eyes_open", NULL, NULL, NULL, HOL__D},
+      {"dizziness_eyes_closed", NULL, NULL, NULL, HOL__D},
+      {"vertigo", NULL, NULL, NULL, HOL__D},
+      {"stomach_awareness", NULL, NULL, NULL, HOL__N},
+      {"burping", NULL, NULL, NULL, HOL__N}},
      4,
      {{"total", HOL__N | HOL__O | HOL__D, 3.74, 1},
       {"nausea", HOL__N, 9.54, 1},
       {"oculomotor", HOL__O, 7.58, 1},
       {"disorientation", HOL__D, 13.92, 1}}},
-    {"tlx", 0, 100, 5, HOL__VLO, HOL__VHI, 6,
-     {{"mental", "Mental demand: how mentally demanding was the task?", 0, 0, 1},
-      {"physical", "Physical demand: how physically demanding was the task?", 0, 0, 1},
-      {"temporal", "Temporal demand: how hurried or rushed was the pace of the task?", 0, 0, 1},
-      {"performance", "Performance: how successful were you in doing what you were asked to do?",
-       "Perfect", "Failure", 1},
-      {"effort", "Effort: how hard did you have to work to reach your level of performance?", 0,
-       0, 1},
-      {"frustration", "Frustration: how insecure, discouraged, irritated, stressed and annoyed "
-                      "were you?", 0, 0, 1}},
+    {"tlx", 0, 100, 5, NULL, NULL, 6,
+     {{"mental", NULL, NULL, NULL, 1},
+      {"physical", NULL, NULL, NULL, 1},
+      {"temporal", NULL, NULL, NULL, 1},
+      {"performance", NULL, NULL, NULL, 1},
+      {"effort", NULL, NULL, NULL, 1},
+      {"frustration", NULL, NULL, NULL, 1}},
      1,
      {{"raw", 1, 1, 6}}},
     HOL_ASK_MORE_PRESETS
 };
+
+/* The standard rows' words (their strings NULL above), ids of the string
+ * table in its order: row i's item k says first + k; its anchors low,
+ * high; item own (-1: none) its own anchors. */
+static const struct {
+    hol_str_id first, low, high;
+    int own;
+    hol_str_id own_low, own_high;
+} hol__says[] = {
+    {HOL_S_SSQ_GENERAL_DISCOMFORT, HOL_S_SSQ_NONE, HOL_S_SSQ_SEVERE, -1, 0, 0},
+    {HOL_S_TLX_MENTAL, HOL_S_TLX_VERY_LOW, HOL_S_TLX_VERY_HIGH, 3, HOL_S_TLX_PERFECT,
+     HOL_S_TLX_FAILURE},
+};
+_Static_assert(HOL_S_SSQ_BURPING - HOL_S_SSQ_GENERAL_DISCOMFORT + 1 == HOL_ASK_SSQ_ITEMS &&
+                   HOL_S_TLX_FRUSTRATION - HOL_S_TLX_MENTAL + 1 == HOL_ASK_TLX_ITEMS,
+               "the string table holds each standard row's items in its order");
+#define HOL__NSAYS ((int)(sizeof hol__says / sizeof hol__says[0]))
 
 #define HOL__NPRESETS ((int)(sizeof hol__presets / sizeof hol__presets[0]))
 _Static_assert(sizeof hol__presets / sizeof hol__presets[0] <= HOL_ASK_MAX_PRESETS,
@@ -92,21 +105,39 @@ int hol_ask_preset_item(const hol_ask_preset_def *p, const char *id)
     return -1;
 }
 
+hol_err hol_ask_preset_item_in(const hol_ask_preset_def *p, int k, int lang,
+                               hol_app_question *out)
+{
+    if (!p || k < 0 || k >= p->nitems || !out)
+        return HOL_EARG;
+    int i = 0;
+    while (i < HOL__NSAYS && p != &hol__presets[i])
+        i++;
+    const hol_ask_item_def *it = &p->items[k];
+    const char *text = it->text, *low = it->low ? it->low : p->low;
+    const char *high = it->high ? it->high : p->high;
+    if (i >= 0 && i < HOL__NSAYS) { /* a standard row: the string table's */
+        int own = k == hol__says[i].own;
+        text = hol_str(lang, (hol_str_id)(hol__says[i].first + k));
+        low = hol_str(lang, own ? hol__says[i].own_low : hol__says[i].low);
+        high = hol_str(lang, own ? hol__says[i].own_high : hol__says[i].high);
+    }
+    memset(out, 0, sizeof *out);
+    out->kind = HOL_APP_LIKERT;
+    snprintf(out->id, sizeof out->id, "%s", it->id);
+    snprintf(out->text, sizeof out->text, "%s", text);
+    out->lo = p->lo, out->hi = p->hi, out->step = p->step;
+    snprintf(out->low, sizeof out->low, "%s", low);
+    snprintf(out->high, sizeof out->high, "%s", high);
+    return HOL_OK;
+}
+
 int hol_ask_preset(const char *name, size_t n, hol_app_question *out, int max)
 {
     const hol_ask_preset_def *p = hol_ask_preset_at(hol_ask_preset_index(name, n));
     int count = p ? p->nitems : 0;
-    for (int k = 0; k < count && k < max; k++) {
-        const hol_ask_item_def *it = &p->items[k];
-        hol_app_question *q = &out[k];
-        memset(q, 0, sizeof *q);
-        q->kind = HOL_APP_LIKERT;
-        snprintf(q->id, sizeof q->id, "%s", it->id);
-        snprintf(q->text, sizeof q->text, "%s", it->text);
-        q->lo = p->lo, q->hi = p->hi, q->step = p->step;
-        snprintf(q->low, sizeof q->low, "%s", it->low ? it->low : p->low);
-        snprintf(q->high, sizeof q->high, "%s", it->high ? it->high : p->high);
-    }
+    for (int k = 0; k < count && k < max; k++)
+        hol_ask_preset_item_in(p, k, HOL_LANG_EN, &out[k]);
     return count;
 }
 

@@ -21,6 +21,10 @@
  *   temporal, performance, effort, frustration, 0..100 in steps of 5 (21
  *   marks). hol_ask_ssq_weight gives an SSQ item's subscales (bit 0 nausea,
  *   1 oculomotor, 2 disorientation).
+ * - The standard rows' words (items' texts, anchors) are the string
+ *   table's (core/hol_str.h: HOL_S_SSQ_*, HOL_S_TLX_*, every language),
+ *   and their strings in the row are NULL; a row a build adds writes its
+ *   English in place.
  * - The table (hol_ask_preset_at, 0..hol_ask_npresets() - 1): a preset's
  *   NAME (an ask names it, a question ID may not), its items' scale LO..HI
  *   in STEP, anchors (an item's own, else the preset's), and scores: score
@@ -87,8 +91,12 @@ int hol_ask_id_ok(const char *id, size_t n);
 hol_err hol_ask_parse_question(const char *line, size_t n, hol_app_question *q, char *msg,
                                size_t cap);
 /* The preset's items into out (max of them): their count, 0 for a name
- * that is no preset. */
+ * that is no preset. In English (the level's and the logs' words). */
 int hol_ask_preset(const char *name, size_t n, hol_app_question *out, int max);
+/* Item k of p as a question in lang (core/hol_str.h; a row a build adds
+ * with its own English words stays English); HOL_EARG for no such item. */
+hol_err hol_ask_preset_item_in(const hol_ask_preset_def *p, int k, int lang,
+                               hol_app_question *out);
 /* "level", "condition", "study", "before_level", "before_condition",
  * "before_study": the hol_app_ask_when; -1 for another. hol_ask_when_name:
  * its name ("level" outside them); hol_ask_before: 1 for a before one. */

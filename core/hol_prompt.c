@@ -53,6 +53,15 @@ const char *hol_prompt_button(uint32_t device, uint32_t btn)
     return NULL;
 }
 
+const char *hol_prompt_button_in(uint32_t device, uint32_t btn, int lang)
+{
+    const char *w = hol_prompt_button(device, btn);
+    for (int k = 0; w && device == HOL_DEVICE_NONE && k < HOL__NBTN; k++)
+        if (btn == 1u << k)
+            return hol_str(lang, (hol_str_id)(HOL_S_BTN_CONFIRM + k));
+    return w;
+}
+
 const char *hol_prompt_move(uint32_t device, int lang)
 {
     switch (device) {
@@ -63,14 +72,14 @@ const char *hol_prompt_move(uint32_t device, int lang)
     }
 }
 
-const char *hol_prompt_seated(uint32_t device)
+const char *hol_prompt_seated(uint32_t device, int lang)
 {
     switch (device) {
-    case HOL_DEVICE_KEYBOARD: return "SEATED: W/A/S/D OR UP/DOWN: ONE STEP";
-    case HOL_DEVICE_GAMEPAD: return "SEATED: LEFT STICK OR D-PAD: ONE STEP";
-    case HOL_DEVICE_NONE: return "SEATED: SWIPE OR ARROWS: ONE STEP";
+    case HOL_DEVICE_KEYBOARD: return hol_str(lang, HOL_S_SEATED_KEYBOARD);
+    case HOL_DEVICE_GAMEPAD: return hol_str(lang, HOL_S_SEATED_GAMEPAD);
+    case HOL_DEVICE_NONE: return hol_str(lang, HOL_S_SEATED_TOUCH);
     case HOL_DEVICE_WEBXR_HAND:
-    case HOL_DEVICE_XR_HAND: return "SEATED: A THUMBSTICK: ONE STEP";
-    default: return "SEATED: THUMBSTICK: ONE STEP";
+    case HOL_DEVICE_XR_HAND: return hol_str(lang, HOL_S_SEATED_HANDS);
+    default: return hol_str(lang, HOL_S_SEATED_STICK);
     }
 }

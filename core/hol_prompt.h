@@ -14,12 +14,14 @@
  *   restart has no control of its own: in the menu the confirm control
  *   restarts, as on every device). NULL: no control gives it on that
  *   device.
- *   HOL_DEVICE_NONE names the action itself ("CONFIRM", "MENU", ...).
+ *   HOL_DEVICE_NONE names the action itself ("CONFIRM", "MENU", ...);
+ *   hol_prompt_button_in(device, btn, lang) says those in lang (the
+ *   string table's HOL_S_BTN_*; a device's controls as above).
  * - hol_prompt_move(device, lang) says how one walks with it ("W/S/A/D:
  *   WALK"), in lang (core/hol_str.h); NULL for HOL_DEVICE_NONE. The
  *   controls' names above are the names printed on them, in every
- *   language. hol_prompt_seated(device) names seated play and its step
- *   controls (English only, one table here, for the string table to take).
+ *   language. hol_prompt_seated(device, lang) names seated play and its
+ *   step controls in lang (the string table's HOL_S_SEATED_*).
  * - The tables must follow the bindings: tests/test_xr_bind.c derives each
  *   XR word from the profile's binding path and compares.
  * - Pure data: static strings, no state.
@@ -30,10 +32,11 @@
 #include <stdint.h>
 
 const char *hol_prompt_button(uint32_t device, uint32_t btn);
+const char *hol_prompt_button_in(uint32_t device, uint32_t btn, int lang);
 const char *hol_prompt_move(uint32_t device, int lang);
 /* Seated play (HOL_INPUT_SEATED): the panel's line naming the mode and
  * how one steps with the device ("SEATED: W/A/S/D OR UP/DOWN: ONE STEP");
  * never NULL. */
-const char *hol_prompt_seated(uint32_t device);
+const char *hol_prompt_seated(uint32_t device, int lang);
 
 #endif

@@ -5,33 +5,30 @@
 #include <string.h>
 
 #include "hol_room.h"
+#include "hol_str.h"
 #include "hol_tile.h"
 
 /* Per phase and concept: the question, the route it walks ("" none), the
- * scale lo, hi, step (0, 0, 0: a choice), then the choices or anchors. */
+ * scale lo, hi, step (0, 0, 0: a choice), then the choices or anchors
+ * (0: none); the words are the string table's (core/hol_str.h), the
+ * level's and the logs' in English. */
 static const struct {
-    const char *text, *route;
+    hol_str_id text;
+    const char *route;
     int lo, hi, step;
-    const char *label[3];
+    hol_str_id label[3];
 } hol__items[2][HOL_QUIZ_ITEMS] = {
-    {{"Walk N, E, S, W. Are you back on your start tile?", "NESW", 0, 0, 0, {"Yes", "No", NULL}},
-     {"How many squares meet at a corner?", "", 3, 9, 1, {"fewer", "more", NULL}},
-     {"How many tiles lie exactly 2 steps from the start tile?", "", 0, 20, 1,
-      {"fewer", "more", NULL}},
-     {"You walk N, E, S, S. How many steps at the fewest back to the start tile?", "NESS", 0,
-      10, 1, {"fewer", "more", NULL}}},
-    {{"Walk E, N, W, S. Are you back on your start tile?", "ENWS", 0, 0, 0, {"Yes", "No", NULL}},
-     {"A square's four corners add up to", "", 0, 0, 0,
-      {"360 degrees", "less than 360", "more than 360"}},
-     {"How many tiles lie exactly 3 steps from the start tile?", "", 4, 44, 4,
-      {"fewer", "more", NULL}},
-     {"You walk W, S, E, E. How many steps at the fewest back to the start tile?", "WSEE", 0,
-      10, 1, {"fewer", "more", NULL}}}};
+    {{HOL_S_QUIZ_PRE_SQUARE, "NESW", 0, 0, 0, {HOL_S_YES, HOL_S_NO}},
+     {HOL_S_QUIZ_PRE_CORNER, "", 3, 9, 1, {HOL_S_FEWER, HOL_S_MORE}},
+     {HOL_S_QUIZ_PRE_GROWTH, "", 0, 20, 1, {HOL_S_FEWER, HOL_S_MORE}},
+     {HOL_S_QUIZ_PRE_HOME, "NESS", 0, 10, 1, {HOL_S_FEWER, HOL_S_MORE}}},
+    {{HOL_S_QUIZ_POST_SQUARE, "ENWS", 0, 0, 0, {HOL_S_YES, HOL_S_NO}},
+     {HOL_S_QUIZ_POST_CORNER, "", 0, 0, 0, {HOL_S_DEG_360, HOL_S_LESS_360, HOL_S_MORE_360}},
+     {HOL_S_QUIZ_POST_GROWTH, "", 4, 44, 4, {HOL_S_FEWER, HOL_S_MORE}},
+     {HOL_S_QUIZ_POST_HOME, "WSEE", 0, 10, 1, {HOL_S_FEWER, HOL_S_MORE}}}};
 
 static const char *const hol__concepts[HOL_QUIZ_ITEMS] = {"square", "corner", "growth", "home"};
 static const char *const hol__names[2] = {"pretest", "posttest"};
-
-#define HOL__DONE_TEXT "The test is done: your answers are kept."
 
 const char *hol_quiz_concept(int k)
 {
@@ -62,13 +59,15 @@ static hol_err hol__right(int phase, int k, int q, char *out, size_t cap)
     switch (k) {
     case 0: /* the square closes only on the flat grid */
         if (!(e = hol__walk(q, hol__items[phase][k].route, &end)))
-            snprintf(out, cap, "%s", hol__items[phase][k].label[hol_tile_dist0(end) ? 1 : 0]);
+            snprintf(out, cap, "%s",
+                     hol_str(HOL_LANG_EN, hol__items[phase][k].label[hol_tile_dist0(end) ? 1 : 0]));
         break;
     case 1: /* q squares at a corner; their angles sum to 4 x 360 / q */
         if (phase == HOL_QUIZ_PRE)
             snprintf(out, cap, "%d", q);
         else
-            snprintf(out, cap, "%s", hol__items[phase][k].label[4 * 360 == 360 * q ? 0 : 1]);
+            snprintf(out, cap, "%s",
+                     hol_str(HOL_LANG_EN, hol__items[phase][k].label[4 * 360 == 360 * q ? 0 : 1]));
         break;
     case 2: snprintf(out, cap, "%llu", (unsigned long long)hol_tile_count_at(q, 2 + phase)); break;
     default:
@@ -79,7 +78,7 @@ static hol_err hol__right(int phase, int k, int q, char *out, size_t cap)
     return e;
 }
 
-hol_err hol_quiz_item_of(int phase, int k, int q, hol_quiz_item *out)
+hol_err hol_quiz_item_in(int phase, int k, int q, int lang, hol_quiz_item *out)
 {
     if (!out || !hol_quiz_name(phase) || !hol_quiz_concept(k) || q < HOL_TILING_MIN_Q ||
         q > HOL_TILING_MAX_Q)
@@ -88,26 +87,31 @@ hol_err hol_quiz_item_of(int phase, int k, int q, hol_quiz_item *out)
     memset(&it, 0, sizeof it);
     it.concept = k;
     hol_app_question *qn = &it.question;
+    const hol_str_id *label = hol__items[phase][k].label;
     snprintf(qn->id, sizeof qn->id, "%s_q%d", hol__concepts[k], q);
-    snprintf(qn->text, sizeof qn->text, "%s", hol__items[phase][k].text);
+    snprintf(qn->text, sizeof qn->text, "%s", hol_str(lang, hol__items[phase][k].text));
     if (hol__items[phase][k].step) {
         qn->kind = HOL_APP_LIKERT;
         qn->lo = hol__items[phase][k].lo;
         qn->hi = hol__items[phase][k].hi;
         qn->step = hol__items[phase][k].step;
-        snprintf(qn->low, sizeof qn->low, "%s", hol__items[phase][k].label[0]);
-        snprintf(qn->high, sizeof qn->high, "%s", hol__items[phase][k].label[1]);
+        snprintf(qn->low, sizeof qn->low, "%s", hol_str(lang, label[0]));
+        snprintf(qn->high, sizeof qn->high, "%s", hol_str(lang, label[1]));
     } else {
         qn->kind = HOL_APP_CHOICE;
-        for (int c = 0; c < 3 && hol__items[phase][k].label[c]; c++)
-            snprintf(qn->choices[qn->nchoices++], HOL_APP_LABEL_MAX, "%s",
-                     hol__items[phase][k].label[c]);
+        for (int c = 0; c < 3 && label[c]; c++)
+            snprintf(qn->choices[qn->nchoices++], HOL_APP_LABEL_MAX, "%s", hol_str(lang, label[c]));
     }
     hol_err e = hol__right(phase, k, q, it.right, sizeof it.right);
     if (e)
         return e;
     *out = it;
     return HOL_OK;
+}
+
+hol_err hol_quiz_item_of(int phase, int k, int q, hol_quiz_item *out)
+{
+    return hol_quiz_item_in(phase, k, q, HOL_LANG_EN, out);
 }
 
 hol_err hol_quiz_fill(int phase, int q, hol_app_level *L)
@@ -128,7 +132,7 @@ hol_err hol_quiz_fill(int phase, int q, hol_app_level *L)
     snprintf(L->asks[0].name, sizeof L->asks[0].name, "%s", hol__names[phase]);
     L->asks[0].when = HOL_APP_BEFORE_LEVEL;
     L->asks[0].n = HOL_QUIZ_ITEMS;
-    snprintf(L->closing, sizeof L->closing, "%s", HOL__DONE_TEXT);
+    snprintf(L->closing, sizeof L->closing, "%s", hol_str(HOL_LANG_EN, HOL_S_QUIZ_DONE));
     L->time_limit_s = HOL_QUIZ_LEVEL_S;
     return HOL_OK;
 }

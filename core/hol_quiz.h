@@ -12,6 +12,9 @@
  *   right answer (a choice's label, or a number) computed from the core
  *   alone (room steps walked from the start of a 3 x 3 room, the tiles'
  *   counts of SPEC 9), never typed into a text.
+ * - hol_quiz_item_in: the same item with its words (text, choices,
+ *   anchors) in lang (core/hol_str.h), as the app shows it; its id and
+ *   right answer are the English item's (the logs keep English).
  * - hol_quiz_fill makes the test a level (the level line `quiz pre|post`,
  *   docs/levels.md): mode explore, its four items asked before the level
  *   as questionnaire "pretest" or "posttest" (answers.csv), then a level
@@ -22,7 +25,7 @@
  *   that questionnaire and item id, and its concept's index; -1 when the
  *   pair is not a quiz's item. A value is right when it equals that text.
  * - Pure: no allocation, no I/O, no globals but constant tables; the
- *   texts are in one table (hol_quiz.c).
+ *   items in one table (hol_quiz.c), their words the string table's.
  */
 #ifndef HOL_QUIZ_H
 #define HOL_QUIZ_H
@@ -47,6 +50,7 @@ const char *hol_quiz_concept(int k);
 /* The questionnaire's name of a phase: "pretest", "posttest"; NULL else. */
 const char *hol_quiz_name(int phase);
 /* Errors: HOL_EARG (phase, k or q out of range). */
+hol_err hol_quiz_item_in(int phase, int k, int q, int lang, hol_quiz_item *out);
 hol_err hol_quiz_item_of(int phase, int k, int q, hol_quiz_item *out);
 /* Errors: HOL_EARG, HOL_ERANGE (a text does not fit). */
 hol_err hol_quiz_fill(int phase, int q, hol_app_level *L);

@@ -99,8 +99,79 @@ typedef enum hol_str_id {
     HOL_S_CAP_CHEST,
     HOL_S_CAP_FLAG,
     HOL_S_CAP_BEACON,     /* beacons sound at the objectives */
-    /* a lesson's predict question's questionnaire name (12 bytes) */
+    /* a lesson's predict question's questionnaire name, and the class
+     * test's (core/hol_quiz.h) shown for "pretest", "posttest" (12 bytes) */
     HOL_S_PREDICT,
+    HOL_S_PRETEST,
+    HOL_S_POSTTEST,
+    /* the seated mode's panel line (hol_prompt_seated; 47 bytes) */
+    HOL_S_SEATED_KEYBOARD,
+    HOL_S_SEATED_GAMEPAD,
+    HOL_S_SEATED_TOUCH,   /* HOL_DEVICE_NONE: a swipe or the on-screen arrows */
+    HOL_S_SEATED_HANDS,
+    HOL_S_SEATED_STICK,
+    /* HOL_DEVICE_NONE's buttons, named by their action (hol_prompt_button_in;
+     * in the prompt's line), in the order of the HOL_BTN_* bits 0..7 */
+    HOL_S_BTN_CONFIRM,
+    HOL_S_BTN_BACK,
+    HOL_S_BTN_MENU,
+    HOL_S_BTN_RECENTRE,
+    HOL_S_BTN_MINIMAP,
+    HOL_S_BTN_RESTART,
+    HOL_S_BTN_QUIT,
+    HOL_S_BTN_DEBUG,
+    /* item texts (hol_app_question.text; 95 bytes, at most 3 lines of
+     * HOL_APP_SCREEN_COLS): the class test's (pre, post; its concepts in
+     * order), the SSQ's 16 and the raw TLX's 6 (core/hol_ask.c's rows, in
+     * their order). The level and the logs keep the English (ids, codes,
+     * choices); the app shows them in its language. */
+    HOL_S_QUIZ_PRE_SQUARE,
+    HOL_S_QUIZ_PRE_CORNER,
+    HOL_S_QUIZ_PRE_GROWTH,
+    HOL_S_QUIZ_PRE_HOME,
+    HOL_S_QUIZ_POST_SQUARE,
+    HOL_S_QUIZ_POST_CORNER,
+    HOL_S_QUIZ_POST_GROWTH,
+    HOL_S_QUIZ_POST_HOME,
+    HOL_S_SSQ_GENERAL_DISCOMFORT,
+    HOL_S_SSQ_FATIGUE,
+    HOL_S_SSQ_HEADACHE,
+    HOL_S_SSQ_EYE_STRAIN,
+    HOL_S_SSQ_DIFFICULTY_FOCUSING,
+    HOL_S_SSQ_SALIVATION_INCREASING,
+    HOL_S_SSQ_SWEATING,
+    HOL_S_SSQ_NAUSEA,
+    HOL_S_SSQ_DIFFICULTY_CONCENTRATING,
+    HOL_S_SSQ_FULLNESS_OF_HEAD,
+    HOL_S_SSQ_BLURRED_VISION,
+    HOL_S_SSQ_DIZZINESS_EYES_OPEN,
+    HOL_S_SSQ_DIZZINESS_EYES_CLOSED,
+    HOL_S_SSQ_VERTIGO,
+    HOL_S_SSQ_STOMACH_AWARENESS,
+    HOL_S_SSQ_BURPING,
+    HOL_S_TLX_MENTAL,
+    HOL_S_TLX_PHYSICAL,
+    HOL_S_TLX_TEMPORAL,
+    HOL_S_TLX_PERFORMANCE,
+    HOL_S_TLX_EFFORT,
+    HOL_S_TLX_FRUSTRATION,
+    /* choices and anchors (hol_app_question's labels; 20 bytes, as an
+     * item's value shows them) */
+    HOL_S_YES,
+    HOL_S_NO,
+    HOL_S_FEWER,
+    HOL_S_MORE,
+    HOL_S_DEG_360,
+    HOL_S_LESS_360,
+    HOL_S_MORE_360,
+    HOL_S_SSQ_NONE,
+    HOL_S_SSQ_SEVERE,
+    HOL_S_TLX_VERY_LOW,
+    HOL_S_TLX_VERY_HIGH,
+    HOL_S_TLX_PERFECT,
+    HOL_S_TLX_FAILURE,
+    /* the class test's closing screen (HOL_APP_SCREEN_TEXT) */
+    HOL_S_QUIZ_DONE,
     /* the web page's (platform/web/page.js; its copy made by
      * tests/gen_page_text.c) and its pauses' reasons, after "Paused: " */
     HOL_S_PAUSE_UNFOCUSED,
@@ -163,7 +234,8 @@ typedef enum hol_str_id {
 #endif
 
 const char *hol_str(int lang, hol_str_id id);
-/* The buffer (bytes with the NUL) the id's text is written into. */
+/* The buffer (bytes with the NUL) the id's text is written into (a
+ * label's: the 20 bytes an item's value shows, and its NUL). */
 int hol_str_cap(hol_str_id id);
 int hol_lang_parse(const char *tag);
 const char *hol_lang_code(int lang);

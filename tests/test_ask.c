@@ -143,6 +143,44 @@ static hol_app *ended_level(const char *text)
     return app;
 }
 
+/* The presets and the class test in German (issue 37): the items shown in
+ * the view's language (the level's `lang`), the answers logged as before
+ * (item ids, English choices). */
+static void test_app_said(void **state)
+{
+    (void)state;
+    hol_app *app = ended_level("lang de\nmode flag\nflag N\ntime-limit 1\nask tlx condition\n");
+    const hol_app_view *v = hol_app_get_view(app);
+    const hol_app_events *ev = step(app, key_in(1.5, HOL_BTN_CONFIRM, 0, 0));
+    assert_int_equal(v->state, HOL_APP_ASK);
+    assert_string_equal(v->hud.lines[0], "Geistige Anforderung: Wie geistig");
+    assert_string_equal(v->hud.lines[1], "anspruchsvoll war die Aufgabe?");
+    assert_string_equal(v->hud.lines[3], "0 Sehr gering, 100 Sehr hoch");
+    assert_string_equal(v->hud.hint, "ENTER: antworten, ESC: aufhören");
+    ev = step(app, key_in(2.0, HOL_BTN_CONFIRM, 0, 0));
+    assert_int_equal(ev->answered, 1);
+    assert_string_equal(ev->answer.questionnaire, "tlx");
+    assert_string_equal(ev->answer.item, "mental");
+    hol_app_destroy(app);
+    app = make_app();
+    hol_app_level L;
+    hol_level_err e;
+    static const char quiz[] = "lang de\nquiz pre\n";
+    assert_int_equal(hol_level_parse(quiz, sizeof quiz - 1, &L, &e), HOL_OK);
+    assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    v = hol_app_get_view(app);
+    step(app, key_in(0, 0, 0, 0));
+    assert_int_equal(v->state, HOL_APP_ASK);
+    assert_string_equal(v->hud.lines[0], "Geh N, O, S, W. Stehst du wieder auf deiner");
+    assert_string_equal(v->hud.lines[2], "  Ja >   Vortest 1/4");
+    ev = step(app, key_in(0.5, HOL_BTN_CONFIRM, 0, 0));
+    assert_int_equal(ev->answered, 1);
+    assert_string_equal(ev->answer.questionnaire, "pretest");
+    assert_string_equal(ev->answer.item, "square_q5");
+    assert_string_equal(ev->answer.choice, "Yes");
+    hol_app_destroy(app);
+}
+
 /* The SSQ with keys: item k answered k mod 4 (from the middle, 1: right
  * presses raise, left lower, a held key counts once, a snap turn counts). */
 static void test_app_ssq(void **state)
@@ -399,6 +437,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_presets),       cmocka_unit_test(test_question_line),
+        cmocka_unit_test(test_app_said),
         cmocka_unit_test(test_app_ssq),       cmocka_unit_test(test_app_choice_time),
         cmocka_unit_test(test_app_ray),       cmocka_unit_test(test_study_placement),
         cmocka_unit_test(test_study_before),

@@ -4,7 +4,9 @@
  * fitting its buffer with its numbers at their widest, and the language
  * tags a command line or a browser gives. The lessons' table
  * (core/hol_lesson_text.c) likewise: complete, drawn, the same facts
- * named, and every text fitting its screen in every tiling.
+ * named, and every text fitting its screen in every tiling. The seated
+ * line, a device's buttons, the class test's and the presets' items
+ * (SSQ, TLX) in every language, fitting where the app shows them.
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -17,9 +19,11 @@
 
 #include "../core/hol_face.h"
 #include "../core/hol_app.h"
+#include "../core/hol_ask.h"
 #include "../core/hol_input.h"
 #include "../core/hol_lesson.h"
 #include "../core/hol_prompt.h"
+#include "../core/hol_quiz.h"
 #include "../core/hol_str.h"
 
 static void test_complete_and_drawn(void **state)
@@ -133,13 +137,13 @@ static void test_prompts_fit(void **state)
                     {{HOL_BTN_CONFIRM, 0, HOL_S_DO_FINISH}, {HOL_BTN_RESTART, 0, HOL_S_DO_AGAIN}},
                     {{HOL_BTN_CONFIRM, 0, HOL_S_DO_BEGIN}, {HOL_BTN_QUIT, 0, HOL_S_DO_QUIT}}};
     for (int l = 0; l < HOL_LANG_COUNT; l++)
-        for (uint32_t d = 1; d < HOL_DEVICE_COUNT; d++)
+        for (uint32_t d = 0; d < HOL_DEVICE_COUNT; d++)
             for (int s = 0; s < 4; s++) {
                 char buf[256] = "";
                 for (int i = 0; i < 3 && sets[s][i].btn; i++) {
-                    const char *b = hol_prompt_button(d, sets[s][i].btn);
+                    const char *b = hol_prompt_button_in(d, sets[s][i].btn, l);
                     if (!b && sets[s][i].alt)
-                        b = hol_prompt_button(d, sets[s][i].alt);
+                        b = hol_prompt_button_in(d, sets[s][i].alt, l);
                     size_t n = strlen(buf);
                     if (b)
                         snprintf(buf + n, sizeof buf - n, "%s%s: %s", n ? ", " : "", b,
@@ -244,6 +248,107 @@ static void test_lessons_fit(void **state)
     }
 }
 
+/* The seated line and a device's buttons in every language: a device
+ * with named controls keeps their names; HOL_DEVICE_NONE's actions and
+ * the seated line are the table's, English as before the table. */
+static void test_seated_and_buttons(void **state)
+{
+    (void)state;
+    assert_string_equal(hol_prompt_seated(HOL_DEVICE_KEYBOARD, HOL_LANG_EN),
+                        "SEATED: W/A/S/D OR UP/DOWN: ONE STEP");
+    assert_string_equal(hol_prompt_seated(HOL_DEVICE_XR_HAND, HOL_LANG_EN),
+                        "SEATED: A THUMBSTICK: ONE STEP");
+    assert_string_equal(hol_prompt_seated(HOL_DEVICE_NONE, HOL_LANG_DE),
+                        "SITZEND: WISCHEN ODER PFEILE: EIN SCHRITT");
+    for (int l = 0; l < HOL_LANG_COUNT; l++)
+        for (uint32_t d = 0; d < HOL_DEVICE_COUNT; d++) {
+            const char *s = hol_prompt_seated(d, l);
+            assert_true(s[0] && strlen(s) < HOL_APP_TEXT_MAX);
+            for (int k = 0; k < 8; k++) {
+                const char *en = hol_prompt_button(d, 1u << k), *w = hol_prompt_button_in(d, 1u << k, l);
+                assert_true(!en == !w);
+                if (en && (d != HOL_DEVICE_NONE || l == HOL_LANG_EN))
+                    assert_string_equal(en, w);
+            }
+        }
+    assert_string_equal(hol_prompt_button_in(HOL_DEVICE_NONE, HOL_BTN_CONFIRM, HOL_LANG_DE),
+                        "BESTÄTIGEN");
+}
+
+/* A label of an item (a choice, an anchor) within the 20 bytes its value
+ * shows; an item's text within its 3 lines. */
+static void item_fits(const hol_app_question *q, int l)
+{
+    if (strlen(q->text) >= HOL_APP_QTEXT_MAX - 1 ||
+        hol_app_wrap(q->text, HOL_APP_SCREEN_COLS, NULL, 0) > 3)
+        fail_msg("%s: '%s' is over its 3 lines", hol_lang_code(l), q->text);
+    int missing = 0;
+    hol_face_units(q->text, strlen(q->text), &missing);
+    assert_int_equal(missing, 0);
+    const char *label[2 + HOL_APP_MAX_CHOICES] = {q->low, q->high};
+    for (int c = 0; c < q->nchoices; c++)
+        label[2 + c] = q->choices[c];
+    for (int c = 0; c < 2 + q->nchoices; c++)
+        if (label[c] && strlen(label[c]) > 20)
+            fail_msg("%s: label '%s' is over 20 bytes", hol_lang_code(l), label[c]);
+}
+
+/* The class test's items and the presets' (SSQ, TLX) in every language:
+ * the English item as the level has always held it, the others its
+ * translation (the same id, kind, scale, choices' count and right
+ * answer), each fitting where the app shows it; the names shown. */
+static void test_items_said(void **state)
+{
+    (void)state;
+    hol_quiz_item en, it;
+    assert_int_equal(hol_quiz_item_of(HOL_QUIZ_PRE, 0, 5, &en), HOL_OK);
+    assert_string_equal(en.question.text, "Walk N, E, S, W. Are you back on your start tile?");
+    assert_string_equal(en.question.choices[1], "No");
+    assert_string_equal(en.right, "No");
+    assert_int_equal(hol_quiz_item_in(HOL_QUIZ_PRE, 0, 5, HOL_LANG_DE, &it), HOL_OK);
+    assert_string_equal(it.question.text, "Geh N, O, S, W. Stehst du wieder auf deiner Startkachel?");
+    assert_string_equal(it.question.choices[1], "Nein");
+    assert_string_equal(it.right, "No"); /* the logs' */
+    for (int l = 0; l < HOL_LANG_COUNT; l++) {
+        assert_true(strlen(hol_str(l, HOL_S_PRETEST)) <= 12);
+        assert_true(strlen(hol_str(l, HOL_S_POSTTEST)) <= 12);
+        for (int ph = 0; ph < 2; ph++)
+            for (int k = 0; k < HOL_QUIZ_ITEMS; k++)
+                for (int q = 4; q <= 8; q++) {
+                    assert_int_equal(hol_quiz_item_of(ph, k, q, &en), HOL_OK);
+                    assert_int_equal(hol_quiz_item_in(ph, k, q, l, &it), HOL_OK);
+                    assert_string_equal(it.question.id, en.question.id);
+                    assert_string_equal(it.right, en.right);
+                    assert_int_equal(it.question.kind, en.question.kind);
+                    assert_int_equal(it.question.nchoices, en.question.nchoices);
+                    assert_int_equal(it.question.hi, en.question.hi);
+                    item_fits(&it.question, l);
+                }
+        for (int i = 0; i < hol_ask_npresets(); i++) {
+            const hol_ask_preset_def *p = hol_ask_preset_at(i);
+            hol_app_question a[HOL_ASK_PRESET_ITEMS], b;
+            assert_int_equal(hol_ask_preset(p->name, strlen(p->name), a, HOL_ASK_PRESET_ITEMS),
+                             p->nitems);
+            for (int k = 0; k < p->nitems; k++) {
+                assert_int_equal(hol_ask_preset_item_in(p, k, l, &b), HOL_OK);
+                assert_string_equal(b.id, a[k].id);
+                assert_int_equal(b.lo, a[k].lo);
+                assert_int_equal(b.hi, a[k].hi);
+                assert_int_equal(b.step, a[k].step);
+                if (l == HOL_LANG_EN)
+                    assert_memory_equal(&a[k], &b, sizeof b);
+                else if (!strcmp(b.text, a[k].text))
+                    fail_msg("%s: %s's %s is not said", hol_lang_code(l), p->name, b.id);
+                item_fits(&b, l);
+            }
+        }
+    }
+    hol_app_question b;
+    assert_int_equal(hol_ask_preset_item_in(hol_ask_preset_at(1), 3, HOL_LANG_DE, &b), HOL_OK);
+    assert_string_equal(b.low, "Perfekt");
+    assert_int_equal(hol_ask_preset_item_in(hol_ask_preset_at(1), 6, HOL_LANG_DE, &b), HOL_EARG);
+}
+
 static void test_tags(void **state)
 {
     (void)state;
@@ -272,6 +377,8 @@ int main(void)
         cmocka_unit_test(test_prompts_fit),
         cmocka_unit_test(test_lessons_complete),
         cmocka_unit_test(test_lessons_fit),
+        cmocka_unit_test(test_seated_and_buttons),
+        cmocka_unit_test(test_items_said),
         cmocka_unit_test(test_tags),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
