@@ -25,6 +25,23 @@ Contract
 - --https CERT KEY serves TLS (make web-serve-https makes a self-signed
   certificate for the computer's LAN address; docs/web.md says how the
   headset trusts it).
+- --collect CDIR (issue 37, docs/teaching.md "Collecting a class's
+  answers"): GET /collect answers 200 "collecting" (404 without
+  --collect: the page shows its "send to teacher" button only on 200);
+  POST /collect?class=CODE with a pupil's answers file as the body
+  (answers.csv's header first, text, at most --collect-file bytes,
+  Content-Length given) stores it as CDIR/CODE/HASH.csv, HASH the first
+  16 hex digits of the body's SHA-256 (no name from the client is ever
+  used as a path; the same file sent twice is kept once, 200), written
+  to a temporary file, flushed and renamed (atomic). CODE: a letter or
+  digit, then up to 31 letters, digits, '-' or '_' (400 else). A folder
+  holds at most --collect-files files and --collect-folder bytes, CDIR
+  at most --collect-classes folders: past them 507 "full" and nothing
+  written. A body that stalls --collect-timeout seconds is dropped.
+  411 without Content-Length, 413 over the file's bound (the
+  body not read), 400 for a body that ends early, is not an answers
+  file or is not UTF-8 text; 201 "saved CODE/HASH.csv". Every answer is
+  text/plain, one line.
 - Prints one line "serving DIR on http(s)://HOST:PORT/" once listening
   (--port 0: a free port, the line names it), then serves until SIGINT or
   SIGTERM (exit 0). Bad arguments: exit 2 with one line on stderr.
@@ -83,6 +100,61 @@ def gzip_of(path, st):
         GZ_CACHE.clear() if len(GZ_CACHE) > 64 else None
         GZ_CACHE[key] = data
     return data
+
+
+ANSWERS_HEADER = b"session,participant,attempt,questionnaire,when,item,kind,value,time"
+COLLECT_LOCK = threading.Lock()
+
+
+def class_ok(code):
+    """1 for a class code: a letter or digit, then up to 31 of [A-Za-z0-9_-]."""
+    return 1 <= len(code) <= 32 and code[0].isascii() and code[0].isalnum() and \
+        all(c.isascii() and (c.isalnum() or c in "-_") for c in code)
+
+
+def answers_ok(body):
+    """1 for a pupil's answers file: UTF-8 text opening with the header."""
+    if not body.startswith(ANSWERS_HEADER) or b"\0" in body:
+        return False
+    try:
+        body.decode("utf-8")
+    except UnicodeDecodeError:
+        return False
+    return True
+
+
+def collect_store(cfg, code, body):
+    """(status, message) of storing body in CDIR/code (under COLLECT_LOCK)."""
+    name = hashlib.sha256(body).hexdigest()[:16] + ".csv"
+    folder = os.path.join(cfg["dir"], code)
+    with COLLECT_LOCK:
+        if not os.path.isdir(folder):
+            classes = [d for d in os.listdir(cfg["dir"])
+                       if os.path.isdir(os.path.join(cfg["dir"], d))]
+            if len(classes) >= cfg["classes"]:
+                return 507, "full: %d class folders already" % len(classes)
+            os.mkdir(folder)
+        final = os.path.join(folder, name)
+        if os.path.exists(final):
+            return 200, "already received %s/%s" % (code, name)
+        files = [f for f in os.listdir(folder) if f.endswith(".csv") and f[0] != "."]
+        used = sum(os.path.getsize(os.path.join(folder, f)) for f in files)
+        if len(files) + 1 > cfg["files"] or used + len(body) > cfg["folder"]:
+            return 507, "full: class %s holds %d files, %d bytes" % (code, len(files), used)
+        tmp = os.path.join(folder, ".tmp-%d-%s" % (os.getpid(), name[:-4]))
+        try:
+            with open(tmp, "wb") as f:
+                f.write(body)
+                f.flush()
+                os.fsync(f.fileno())
+            os.replace(tmp, final)
+        except OSError as e:
+            try:
+                os.unlink(tmp)
+            except OSError:
+                pass
+            return 500, "cannot write: %s" % e.strerror
+    return 201, "saved %s/%s" % (code, name)
 
 
 class Handler(http.server.BaseHTTPRequestHandler):
@@ -146,8 +218,53 @@ class Handler(http.server.BaseHTTPRequestHandler):
         if status == 200 and not head:
             self.wfile.write(body)
 
+    def say(self, status, text):
+        body = (text + "\n").encode()
+        self.send_response(status)
+        self.send_header("Content-Type", "text/plain; charset=utf-8")
+        self.send_header("Cache-Control", "no-store")
+        self.send_header("Content-Length", str(len(body)))
+        if status >= 400:
+            self.send_header("Connection", "close")
+            self.close_connection = True
+        self.end_headers()
+        self.wfile.write(body)
+
     def do_GET(self):
+        if urllib.parse.urlsplit(self.path).path == "/collect" and self.server.collect:
+            self.say(200, "collecting")
+            return
         self.answer(False)
+
+    def do_POST(self):
+        cfg = self.server.collect
+        url = urllib.parse.urlsplit(self.path)
+        if url.path != "/collect" or not cfg:
+            self.say(404, "not collecting")
+            return
+        codes = urllib.parse.parse_qs(url.query).get("class", [])
+        if len(codes) != 1 or not class_ok(codes[0]):
+            self.say(400, "bad class code: a letter or digit, then up to 31 of A-Z a-z 0-9 - _")
+            return
+        n = self.headers.get("Content-Length")
+        if n is None or not n.isascii() or not n.isdigit() or len(n) > 12:
+            self.say(411, "Content-Length needed")
+            return
+        if int(n) > cfg["file"]:
+            self.say(413, "too large: a file holds at most %d bytes" % cfg["file"])
+            return
+        try:
+            body = self.rfile.read(int(n))
+        except OSError:
+            body = b""
+        if len(body) != int(n):
+            self.say(400, "the body ended early (%d of %s bytes)" % (len(body), n))
+            return
+        if not answers_ok(body):
+            self.say(400, "not an answers file (answers.csv's header, UTF-8 text)")
+            return
+        status, text = collect_store(cfg, codes[0], body)
+        self.say(status, text)
 
     def do_HEAD(self):
         self.answer(True)
@@ -171,6 +288,18 @@ def main():
     p.add_argument("--precompressed", metavar="ZDIR",
                    help="folder of FILE.br and FILE.gz copies (default: DIR)")
     p.add_argument("--https", nargs=2, metavar=("CERT", "KEY"), help="serve TLS with these PEM files")
+    p.add_argument("--collect", metavar="CDIR",
+                   help="receive pupils' answer files into CDIR/CLASS/ (docs/teaching.md)")
+    p.add_argument("--collect-file", type=int, default=256 * 1024, metavar="BYTES",
+                   help="a file's bound (default 262144)")
+    p.add_argument("--collect-folder", type=int, default=16 << 20, metavar="BYTES",
+                   help="a class folder's bound (default 16 MB)")
+    p.add_argument("--collect-files", type=int, default=500, metavar="N",
+                   help="files in a class folder, at most (default 500)")
+    p.add_argument("--collect-timeout", type=float, default=10, metavar="S",
+                   help="seconds a body may stall before it is dropped (default 10)")
+    p.add_argument("--collect-classes", type=int, default=100, metavar="N",
+                   help="class folders, at most (default 100)")
     a = p.parse_args()
     if not os.path.isdir(a.dir):
         usage_error("'%s' is not a folder (make web builds build/web)" % a.dir)
@@ -181,6 +310,18 @@ def main():
     except OSError as e:
         usage_error("cannot listen on %s:%d: %s" % (a.bind, a.port, e.strerror))
     srv.daemon_threads = True
+    srv.collect = None
+    if a.collect:
+        if min(a.collect_file, a.collect_folder, a.collect_files, a.collect_classes) < 1:
+            usage_error("the --collect bounds must be at least 1")
+        try:
+            os.makedirs(a.collect, exist_ok=True)
+        except OSError as e:
+            usage_error("cannot make --collect '%s': %s" % (a.collect, e.strerror))
+        Handler.timeout = a.collect_timeout  # a stalled body is dropped
+        srv.collect = {"dir": os.path.realpath(a.collect), "file": a.collect_file,
+                       "folder": a.collect_folder, "files": a.collect_files,
+                       "classes": a.collect_classes}
     srv.root = os.path.realpath(a.dir)
     srv.z = os.path.realpath(a.precompressed or a.dir)
     scheme = "http"
@@ -195,6 +336,8 @@ def main():
     signal.signal(signal.SIGTERM, lambda *_: threading.Thread(target=srv.shutdown).start())
     host, port = srv.server_address[:2]
     print("serving %s on %s://%s:%d/ (Ctrl-C stops)" % (a.dir, scheme, host, port), flush=True)
+    if srv.collect:
+        print("collecting answers into %s" % srv.collect["dir"], flush=True)
     try:
         srv.serve_forever()
     except KeyboardInterrupt:
