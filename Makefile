@@ -20,7 +20,9 @@
 #   make quest      the Quest APK (needs NDK= and OPENXR_LOADER=; see README)
 #   make web        build/web/: the game for browsers (WebGL 2, WebXR), emscripten
 #   make web-serve  serve build/web on http://127.0.0.1:8080/ (WEB_PORT), gzip
-#                   and brotli precompressed, with cache headers
+#                   and brotli precompressed, with cache headers; COLLECT=DIR
+#                   receives pupils' answers (WEB_BIND=0.0.0.0 for the LAN;
+#                   docs/teaching.md), on web-serve-https too
 #   make web-serve-https  serve it over HTTPS on the LAN address (WEB_HTTPS_PORT,
 #                   a self-signed certificate; docs/web.md)
 #   make web-test   deps-web, the web build, then headless chromium on an
@@ -666,6 +668,9 @@ WEB_FLAGS_TEXT := $(CSTD) $(WARN) $(WEB_OPT) $(WEB_OPT_HOT) $(WEB_HOT) $(WEB_LAN
 WEB_PAGE := $(addprefix $(WEB)/,index.html page.js store.js text.js)
 WEB_PORT ?= 8080
 WEB_HTTPS_PORT ?= 8443
+WEB_BIND ?= 127.0.0.1
+# COLLECT=DIR: serve.py --collect DIR (pupils' answer files, docs/teaching.md)
+WEB_COLLECT = $(if $(COLLECT),--collect $(COLLECT))
 # precompressed copies for web-serve: beside build/web, which stays the
 # build's own (make bench-web measures its files)
 WEB_Z    := $(BUILD)/web-z
@@ -756,7 +761,8 @@ $(WEB_Z)/%.br: $(WEB)/%
 # platform/web/serve.py: brotli or gzip when the browser takes it, ETag and
 # Cache-Control: no-cache (docs/web.md, "Serving").
 web-serve: web $(WEB_ZIPPED)
-	python3 platform/web/serve.py $(WEB) --precompressed $(WEB_Z) --bind 127.0.0.1 --port $(WEB_PORT)
+	python3 platform/web/serve.py $(WEB) --precompressed $(WEB_Z) --bind $(WEB_BIND) --port $(WEB_PORT) \
+	  $(WEB_COLLECT)
 
 # HTTPS for a headset on the same network: a self-signed certificate for
 # the LAN address (WEB_LAN: give one by hand), made once in build/web-cert.
@@ -766,7 +772,7 @@ web-serve-https: web $(WEB_ZIPPED)
 	echo "on the headset: https://$$lan:$(WEB_HTTPS_PORT)/ (accept the certificate once: docs/web.md)"; \
 	openssl x509 -noout -fingerprint -sha256 -in $(BUILD)/web-cert/cert.pem; \
 	python3 platform/web/serve.py $(WEB) --precompressed $(WEB_Z) --bind 0.0.0.0 \
-	  --port $(WEB_HTTPS_PORT) --https $(BUILD)/web-cert/cert.pem $(BUILD)/web-cert/key.pem
+	  --port $(WEB_HTTPS_PORT) --https $(BUILD)/web-cert/cert.pem $(BUILD)/web-cert/key.pem $(WEB_COLLECT)
 
 WEB_DEB_PACKAGES := emscripten chromium brotli openssl python3 curl terser
 deps-web:

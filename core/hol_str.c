@@ -509,6 +509,21 @@ static const char *const hol__rows[HOL__NSTR][HOL_LANG_COUNT] = {
     [HOL_S_PAGE_LESSONS_WHY] = {"Lessons for a class (docs/teaching.md)",
                                 "Lektionen für eine Klasse (docs/teaching.md)",
                                 HOL__NL("Lessen voor een klas (docs/teaching.md)")},
+    [HOL_S_PAGE_SEATED] = {"Seated",
+                           "Sitzend",
+                           HOL__NL("Zittend")},
+    [HOL_S_PAGE_SEATED_WHY] = {"Seated play: one room step a push (docs/teaching.md)",
+                               "Sitzend spielen: ein Raumschritt pro Druck (docs/teaching.md)",
+                               HOL__NL("Zittend spelen: één kamerstap per druk (docs/teaching.md)")},
+    [HOL_S_PAGE_SEND] = {"Send to teacher",
+                         "An die Lehrkraft senden",
+                         HOL__NL("Naar de leraar sturen")},
+    [HOL_S_PAGE_SENT] = {"Sent to the teacher: %s file(s).",
+                         "An die Lehrkraft gesendet: %s Datei(en).",
+                         HOL__NL("Naar de leraar gestuurd: %s bestand(en).")},
+    [HOL_S_PAGE_SEND_FAILED] = {"Not sent: %s",
+                                "Nicht gesendet: %s",
+                                HOL__NL("Niet verstuurd: %s")},
 #endif
 };
 

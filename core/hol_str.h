@@ -218,6 +218,11 @@ typedef enum hol_str_id {
     HOL_S_PAGE_NO_START,
     HOL_S_PAGE_LESSONS,   /* the bar's lesson list (docs/teaching.md) */
     HOL_S_PAGE_LESSONS_WHY,
+    HOL_S_PAGE_SEATED,    /* the bar's Seated box and its title */
+    HOL_S_PAGE_SEATED_WHY,
+    HOL_S_PAGE_SEND,      /* the Logs' "send to teacher" (class=CODE) */
+    HOL_S_PAGE_SENT,      /* %s: the files sent */
+    HOL_S_PAGE_SEND_FAILED, /* %s: the server's answer */
     HOL_S_COUNT
 } hol_str_id;
 

@@ -37,7 +37,9 @@ static const struct {
     {"vrFailed", HOL_S_PAGE_VR_FAILED},    {"noStudy", HOL_S_PAGE_NO_STUDY},
     {"noLevel", HOL_S_PAGE_NO_LEVEL},      {"noGame", HOL_S_PAGE_NO_GAME},
     {"noStart", HOL_S_PAGE_NO_START},      {"lessons", HOL_S_PAGE_LESSONS},
-    {"lessonsWhy", HOL_S_PAGE_LESSONS_WHY},
+    {"lessonsWhy", HOL_S_PAGE_LESSONS_WHY}, {"seated", HOL_S_PAGE_SEATED},
+    {"seatedWhy", HOL_S_PAGE_SEATED_WHY},  {"send", HOL_S_PAGE_SEND},
+    {"sent", HOL_S_PAGE_SENT},             {"sendFailed", HOL_S_PAGE_SEND_FAILED},
 };
 
 _Static_assert(sizeof page / sizeof page[0] == HOL_S_COUNT - HOL_S_PAGE_LOADING,

@@ -18,7 +18,8 @@
 // it is one of them, else English), seated=1 (seated play, as play --seated:
 // one room step a push of W/S/A/D, the touch stick or the on-screen arrows;
 // the bar's Seated box sets it), quiz=pre|post (a class's pre-test or
-// post-test: docs/teaching.md). None: the default campaign. A level file
+// post-test: docs/teaching.md), class=CODE (the Logs' "send to teacher",
+// shown when the server collects: docs/teaching.md). None: the default campaign. A level file
 // chosen with "Level file..." plays on the next load (kept in
 // sessionStorage for this tab).
 'use strict';
@@ -157,6 +158,22 @@
     $('logsbtn').textContent = T('logs') + ' (' + names.length + ')';
   }
   window.holonomyRefreshLogs = refreshLogs;
+  // ---- class=CODE: the answers sent to the teacher's machine when its
+  // server collects them (make web-serve COLLECT=DIR: docs/teaching.md) ----
+  var klass = params.get('class');
+  if (klass && window.fetch) fetch('collect', { cache: 'no-store' }).then(function (r) {
+    if (r.ok) $('send').hidden = false;
+  }, function () {});
+  $('send').addEventListener('click', function () {
+    var store = window.holonomyStore, said = $('sent');
+    var names = store ? store.names().filter(function (n) { return /(^|\/)answers\.csv$/.test(n); }) : [];
+    if (!names.length) { said.textContent = T('noLogs'); return; }
+    Promise.all(names.map(function (n) {
+      return fetch('collect?class=' + encodeURIComponent(klass), { method: 'POST', body: store.bytes(n) })
+        .then(function (r) { return r.text().then(function (t) { if (!r.ok) throw new Error(t.trim()); }); });
+    })).then(function () { said.textContent = T('sent', names.length); },
+      function (e) { said.textContent = T('sendFailed', e.message); });
+  });
   // the overlay opens below the bar, which wraps on a narrow window: it
   // never covers a button
   function placeLogs() {

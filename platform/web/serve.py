@@ -26,7 +26,7 @@ Contract
   certificate for the computer's LAN address; docs/web.md says how the
   headset trusts it).
 - --collect CDIR (issue 37, docs/teaching.md "Collecting a class's
-  answers"): GET /collect answers 200 "collecting" (404 without
+  answers"; make web-serve COLLECT=CDIR): GET /collect answers 200 "collecting" (404 without
   --collect: the page shows its "send to teacher" button only on 200);
   POST /collect?class=CODE with a pupil's answers file as the body
   (answers.csv's header first, text, at most --collect-file bytes,
