@@ -45,7 +45,9 @@ stop_server() {
 # The client: `send PORT METHOD TARGET BODYFILE [LENGTH [STALL]]` sends a
 # raw request (Content-Length LENGTH, "none" for none; default the body's
 # size), only the body's bytes, then waits STALL seconds before closing
-# (or reading); prints the status and the answer's line.
+# (or reading); prints the status and the answer's line. (A request the
+# server refuses unread, 411 and 413, is sent with no body: the server's
+# close would reset the connection before the answer is read.)
 cat >"$T/send.py" <<'PYEOF'
 import socket, sys, time
 port, method, target, path = int(sys.argv[1]), sys.argv[2], sys.argv[3], sys.argv[4]
@@ -97,7 +99,7 @@ printf '<!doctype html><title>t</title>\n' >"$T/web/index.html"
 if start_server "$T/s0.log" "$T/web" --bind 127.0.0.1 --port 0; then
     ok
     want "no collect: GET" 404 GET /collect -
-    want "no collect: POST" 404 POST "/collect?class=4b" "$T/p01.csv"
+    want "no collect: POST" 404 POST "/collect?class=4b" -
     stop_server
 else
     bad "the server did not start: $(cat "$T/s0.log.err")"
@@ -124,12 +126,12 @@ if start_server "$T/s1.log" "$T/web" --bind 127.0.0.1 --port 0 --collect "$C" \
     done
     want "two class codes" 400 POST "/collect?class=4b&class=4c" "$T/p03.csv"
     want "no class code" 400 POST "/collect" "$T/p03.csv"
-    want "a path after collect" 404 POST "/collect/../x?class=4b" "$T/p03.csv"
+    want "a path after collect" 404 POST "/collect/../x?class=4b" -
     # bodies
-    want "no Content-Length" 411 POST "/collect?class=4b" "$T/p03.csv" none
-    want "a bad Content-Length" 411 POST "/collect?class=4b" "$T/p03.csv" -5
+    want "no Content-Length" 411 POST "/collect?class=4b" - none
+    want "a bad Content-Length" 411 POST "/collect?class=4b" - -5
     t0=$(date +%s)
-    want "a huge body, not read" 413 POST "/collect?class=4b" "$T/p03.csv" 1000000000
+    want "a huge body, not read" 413 POST "/collect?class=4b" - 1000000000
     [ $(($(date +%s) - t0)) -le 3 ] && ok || bad "a huge body took long"
     want "a body that ends early" 400 POST "/collect?class=4b" "$T/p03.csv" 400 0.1
     want "a body that stalls" 400 POST "/collect?class=4b" "$T/p03.csv" 300 3

@@ -242,10 +242,8 @@ class Handler(http.server.BaseHTTPRequestHandler):
         if url.path != "/collect" or not cfg:
             self.say(404, "not collecting")
             return
-        codes = urllib.parse.parse_qs(url.query).get("class", [])
-        if len(codes) != 1 or not class_ok(codes[0]):
-            self.say(400, "bad class code: a letter or digit, then up to 31 of A-Z a-z 0-9 - _")
-            return
+        # the length first and the body read (within the bound) before any
+        # other refusal, so that the answer is not lost to a reset
         n = self.headers.get("Content-Length")
         if n is None or not n.isascii() or not n.isdigit() or len(n) > 12:
             self.say(411, "Content-Length needed")
@@ -259,6 +257,10 @@ class Handler(http.server.BaseHTTPRequestHandler):
             body = b""
         if len(body) != int(n):
             self.say(400, "the body ended early (%d of %s bytes)" % (len(body), n))
+            return
+        codes = urllib.parse.parse_qs(url.query).get("class", [])
+        if len(codes) != 1 or not class_ok(codes[0]):
+            self.say(400, "bad class code: a letter or digit, then up to 31 of A-Z a-z 0-9 - _")
             return
         if not answers_ok(body):
             self.say(400, "not an answers file (answers.csv's header, UTF-8 text)")
