@@ -420,7 +420,7 @@ await check('sound: after a click, an AudioContext runs and a level with sound a
   await r.ctx.close();
 });
 
-await check('a night level with lanterns draws on WebGL 2 (the lit shader compiles, no console error), much darker than the same level at day', async () => {
+await check('a night level with lanterns draws on WebGL 2 (the lit shader compiles, no console error), darker than the same level at day', async () => {
   const mean = async (name, text) => {
     fs.writeFileSync(path.join(testDir, name), text);
     const p = await openPage('?level=/test/' + name);
@@ -437,7 +437,10 @@ await check('a night level with lanterns draws on WebGL 2 (the lit shader compil
   };
   const day = await mean('day.lvl', 'mode explore\nseed 3\nminimap off\n');
   const night = await mean('night.lvl', 'mode explore\nseed 3\nminimap off\nlighting night\nplace lantern O\nplace lantern N\n');
-  assert(night < 0.6 * day && night > 2, `mean brightness: day ${day.toFixed(1)}, night ${night.toFixed(1)}`);
+  /* the trunks beside the two lanterns take their light by the floor's law
+   * (issue 38) and fill much of this view: 0.87 of day measured, 0.5 when
+   * only the floor was lit */
+  assert(night < 0.93 * day && night > 2, `mean brightness: day ${day.toFixed(1)}, night ${night.toFixed(1)}`);
 });
 
 await check('snap turn (?snap=90): a tap of Left turns the look by 90 degrees; ?snap=7 is refused', async () => {
