@@ -10,8 +10,10 @@
  * - A key (hol_prog_key) says what varies: the lighting (core's
  *   hol_app_lighting), the lit room's meshes or the lit tiles, the flat
  *   {4,4} grid, the wedge's discard, the lights' effects (fireflies,
- *   spots) and the trunk shadow pairs read. The day program has only the
- *   wedge; the lit room's the lighting and the wedge; the lit tiles' all.
+ *   spots), the trunk shadow pairs read and the lit room's lamps (its
+ *   trees and hedges lantern-lit, or its backdrop on the cheaper path).
+ *   The day program has only the wedge; the lit room's the lighting, the
+ *   lamps and the wedge; the lit tiles' the rest but the lamps.
  *   The text program (text = 1, every other field 0) draws the overlays
  *   (the HUD, the hand's map, the headset's panel): flat colours and the
  *   text face's glyphs from its signed-distance atlas (core/hol_face.h),
@@ -21,7 +23,9 @@
  *   keys and the HOL_PROG_SLOTS slots of a program table (dense: every
  *   slot is a program): slot -> key -> slot is the identity, and a key no
  *   program has (day at night, a room with spots, ...) has slot -1.
- *   Nothing else computes with slot numbers.
+ *   Nothing else computes with slot numbers. The encoding is a table
+ *   (hol_program.c): the families of programs, each a base key and the
+ *   dimensions it varies; a new dimension is a row, not arithmetic.
  * - hol_prog_make compiles and links a key's program through the loaded
  *   GL (render/hol_gl.h) and finds its uniforms (-1: not in it). It waits
  *   for the GL (compile and link status).
@@ -52,6 +56,9 @@ typedef struct hol_prog_key {
     int fx;           /* lit tiles: HOL_PROG_FX_* */
     int shadow_pairs; /* lit tiles: trunk shadow pairs read: 0, 2 or 4 */
     int text;         /* the overlays' program (every other field 0) */
+    int lamps;        /* lit room: 1 its trees and hedges, lantern-lit with
+                       * a Lambert term; 0 its backdrop and outer ground
+                       * (ambient and sun only, the cheaper path) */
 } hol_prog_key;
 
 /* Rows of per-light values a lit tile gives its shaders (u_tx, four
@@ -59,10 +66,10 @@ typedef struct hol_prog_key {
  * HOL_TX_ROWS). */
 #define HOL_PROG_TX_ROWS 7
 
-/* day 2 (wedge), lit room 2 x 2 (lighting, wedge), lit tiles 2 x 2 x 2
- * (lighting, flat, wedge) x HOL_PROG_FX_COUNT x 3 (shadow pairs), text 1:
- * 79 */
-#define HOL_PROG_SLOTS (2 + 4 + 8 * HOL_PROG_FX_COUNT * 3 + 1)
+/* day 2 (wedge), lit room 2 x 2 x 2 (lighting, lamps, wedge), lit tiles
+ * 2 x 2 x 2 (lighting, flat, wedge) x HOL_PROG_FX_COUNT x 3 (shadow
+ * pairs), text 1: 83 (render/hol_program.c's table of families) */
+#define HOL_PROG_SLOTS (2 + 8 + 8 * HOL_PROG_FX_COUNT * 3 + 1)
 /* The text program's slot (the last). */
 #define HOL_PROG_TEXT_SLOT (HOL_PROG_SLOTS - 1)
 

@@ -145,16 +145,47 @@ static void hol__frame_lights(hol_render *r, const hol_frame_desc *f)
     r->gl.Uniform1f(r->pg->u_eyeh, (float)lf->eye_h);
 }
 
+/* The room's meshes (trees, hedges) take the lanterns of the room's cells
+ * (u_tl: the cells' centres' x, z in room metres, the lights' heights,
+ * their weights; up to four): a lantern's cell is the one whose tile, by
+ * the room walk columns first then rows (as the vertex trees are chosen:
+ * render/hol_scene.c), is the lantern's tile. The shader measures a point
+ * in the Klein frame of that cell's tile (docs/rendering.md#lighting). */
+static void hol__room_lights(hol_render *r, const hol_frame_desc *f)
+{
+    float tl[4][4] = {{1e4f, 1e4f, 1e4f, 1e4f}, {1e4f, 1e4f, 1e4f, 1e4f}, {0}, {0}};
+    double m = f->cell_m > 0 ? f->cell_m : 1.0;
+    int n = 0, cols = hol_room_cols(&f->user), rows = hol_room_rows(&f->user);
+    for (int c = 0; c < cols && n < 4; c++)
+        for (int w = 0; w < rows && n < 4; w++) {
+            hol_room st = f->user;
+            int ok = 1;
+            while (ok && st.col != c)
+                ok = hol_room_step(&st, st.col < c ? HOL_DIR_E : HOL_DIR_W) == HOL_OK;
+            while (ok && st.row != w)
+                ok = hol_room_step(&st, st.row < w ? HOL_DIR_S : HOL_DIR_N) == HOL_OK;
+            for (int o = 0; ok && o < f->nlanterns && o < HOL_RENDER_MAX_LANTERNS && n < 4; o++)
+                if (hol_tile_eq(f->lanterns[o], st.tile)) {
+                    tl[0][n] = (float)((c + 0.5) * m);
+                    tl[1][n] = (float)((w + 0.5) * m);
+                    tl[2][n] = (float)HOL_LIGHT_HEIGHT_M;
+                    tl[3][n++] = 1;
+                    break;
+                }
+        }
+    r->gl.Uniform4fv(r->pg->u_tl, 4, &tl[0][0]);
+}
+
 /* The programs a lit frame uses, in the order their per-frame uniforms
  * are set (the tiles' with up to four shadow pairs current at the end). */
-static const int hol__lit_uses[4] = {HOL__USE_TILES2, HOL__USE_TILES0, HOL__USE_ROOM,
-                                     HOL__USE_TILES4};
+static const int hol__lit_uses[5] = {HOL__USE_TILES2, HOL__USE_TILES0, HOL__USE_BACK,
+                                     HOL__USE_ROOM, HOL__USE_TILES4};
 
 /* The programs frame f uses, n of them (day: one). */
 static const int *hol__frame_uses(const hol_frame_desc *f, int *n)
 {
     static const int day[1] = {HOL__USE_DAY};
-    *n = f->lighting ? 4 : 1;
+    *n = f->lighting ? 5 : 1;
     return f->lighting ? hol__lit_uses : day;
 }
 
@@ -171,7 +202,8 @@ hol_prog *hol__frame_prog(hol_render *r, const hol_frame_desc *f, int use)
     k.wedge = r->view.wedges != 0;
     if (use != HOL__USE_DAY) {
         k.lighting = f->lighting;
-        k.room = use == HOL__USE_ROOM;
+        k.room = use == HOL__USE_ROOM || use == HOL__USE_BACK;
+        k.lamps = use == HOL__USE_ROOM;
     }
     if (use >= HOL__USE_TILES0) {
         k.flat = r->lights.flat != 0;
@@ -254,9 +286,12 @@ void hol__frame_begin(hol_render *r, const hol_frame_desc *f, float vp[16])
         r->gl.Uniform1f(r->pg->u_fogd, fogd);
         r->gl.Uniform1i(r->pg->u_lin, r->desc.srgb != 0);
         r->gl.Uniform1i(r->pg->u_wmode, 0);
-        r->gl.Uniform1i(r->pg->u_light, uses[i] == HOL__USE_ROOM ? 2 : 0);
+        int room = uses[i] == HOL__USE_ROOM || uses[i] == HOL__USE_BACK;
+        r->gl.Uniform1i(r->pg->u_light, room ? 2 + r->lights.flat : 0);
         if (f->lighting)
             hol__frame_lights(r, f);
+        if (uses[i] == HOL__USE_ROOM)
+            hol__room_lights(r, f);
     }
 }
 
@@ -317,8 +352,8 @@ static void hol__set_pass_as(hol_render *r, const hol_frame_desc *f, int pass, c
         r->gl.Uniform4f(r->pg->u_id, 0, 0, 0, 1);
         if (pass == HOL__PASS_ROOM)
             r->gl.UniformMatrix4fv(r->pg->u_model, 1, GL_FALSE, ident);
-        if (f->lighting) /* the tile pass sets it per tile */
-            r->gl.Uniform1i(r->pg->u_light, 2);
+        if (f->lighting) /* the tile pass sets it per tile; 3: a flat room */
+            r->gl.Uniform1i(r->pg->u_light, 2 + (pass == HOL__PASS_ROOM && r->lights.flat));
         break;
     case HOL__PASS_HAND:
         /* in the world: hidden where the scene is nearer; its coplanar
@@ -377,9 +412,10 @@ static void hol__text_prog(hol_render *r, const hol_frame_desc *f)
 }
 
 /* The GL state of a pass: at dusk and night the room's meshes take the
- * program without tile code, and the tile pass's state goes to both tile
- * programs (with trunk shadows, current at the end, and without); the
- * overlays take the text program. */
+ * programs without tile code (its trees and hedges lantern-lit, its
+ * backdrop on the cheaper path: both get the pass's state), and the tile
+ * pass's state goes to both tile programs (with trunk shadows, current at
+ * the end, and without); the overlays take the text program. */
 static void hol__set_pass(hol_render *r, const hol_frame_desc *f, int pass, const float vp[16])
 {
     if (pass >= HOL__PASS_HAND && r->progs[HOL_PROG_TEXT_SLOT].prog) {
@@ -390,6 +426,8 @@ static void hol__set_pass(hol_render *r, const hol_frame_desc *f, int pass, cons
     static const int tiles[2] = {HOL__USE_TILES0, HOL__USE_TILES2};
     for (int k = 0; k < 2 && f->lighting && pass == HOL__PASS_TILE; k++)
         hol__set_pass_as(r, f, pass, vp, hol__frame_prog(r, f, tiles[k]));
+    if (f->lighting && pass == HOL__PASS_ROOM)
+        hol__set_pass_as(r, f, pass, vp, hol__frame_prog(r, f, HOL__USE_BACK));
     int last = pass == HOL__PASS_ROOM ? HOL__USE_ROOM : HOL__USE_TILES4;
     hol__set_pass_as(r, f, pass, vp, f->lighting ? hol__frame_prog(r, f, last) : NULL);
 }
@@ -456,6 +494,13 @@ void hol__execute(hol_render *r, const hol_frame_desc *f, const float vp[16],
                                 0, 1);
             }
             st->branches += !it->dyn; /* a firefly's sprite is no branch */
+        } else if (cur_pass == HOL__PASS_ROOM && f->lighting) {
+            hol_prog *want = hol__frame_prog(r, f, it->lamps ? HOL__USE_ROOM : HOL__USE_BACK);
+            if (want != r->pg) {
+                r->pg = want;
+                r->gl.UseProgram(want->prog);
+                st->state_changes++;
+            }
         } else if (cur_pass == HOL__PASS_HAND || cur_pass == HOL__PASS_PANEL) {
             r->gl.UniformMatrix4fv(r->pg->u_model, 1, GL_FALSE, it->model);
         }

@@ -39,6 +39,8 @@
  *   them on at the level's clock.
  * - test_firefly_sprites: each firefly's sprite where the test's camera
  *   projects its place, in both eyes of a pair.
+ * - test_trunk_lambert: a trunk 0.71 m from a lantern in {4,4} takes its
+ *   light with a Lambert term, face by face as the model's prism says.
  */
 #include <math.h>
 #include <setjmp.h>
@@ -1318,6 +1320,70 @@ static void test_firefly_sprites(void **state)
     assert_true(found >= 8);
 }
 
+/* Trunks take lantern light by the same law as the floor, with a Lambert
+ * term from their own normal (docs/rendering.md#lighting): in {4,4} (flat,
+ * so the model is Euclidean) a lantern on the middle cell, 0.71 m from the
+ * trunk on its north-west corner (room vertex (1, 1)), the eye 1.2 m from
+ * that trunk looking across the line from the trunk to the lantern. The
+ * trunk is an 8-sided prism turned by 0.7 (4 i + j) radians
+ * (render/hol_scene.c): the model lights each face it shows the eye by
+ * its normal, F (0.3 + 0.7 max(cos, 0)) at the face's middle 0.9 m up. In
+ * the picture's row of that height, over the trunk's pixels: the brightest
+ * within LTOL of the model's brightest face, the darkest no brighter than
+ * the model's darkest (plus LTOL), and the ratio of the two at least 0.85
+ * of the model's; the full picture's trunk is not near-black on the
+ * lantern side. */
+#define RT 0.08
+#define LTOL 20
+static void test_trunk_lambert(void **state)
+{
+    (void)state;
+    static uint8_t px[W * H * 4], full[W * H * 4];
+    static const light_case c = {"N", {1.85, 1.6, 0.15}, 135, -25, 4, 3, 3, 1, {"S", NULL}, 0};
+    scene s;
+    make_scene(&c, &s);
+    render(&s, HOL_RENDER_LIGHT_ONLY, px);
+    render(&s, 0, full);
+    const double tr[3] = {1, 0.9, 1}, L[3] = {1.5, HEIGHT, 1.5}, yaw = 0.7 * (4 + 1);
+    double hi = 0, lo = 1e9;
+    for (int k = 0; k < 8; k++) {
+        double a = 2 * PI * (k + 0.5) / 8 + yaw, n[2] = {cos(a), -sin(a)};
+        double p[3] = {tr[0] + RT * n[0], tr[1], tr[2] + RT * n[1]};
+        if (n[0] * (c.eye[0] - p[0]) + n[1] * (c.eye[2] - p[2]) <= 0)
+            continue;
+        double dx = L[0] - p[0], dy = L[1] - p[1], dz = L[2] - p[2];
+        double d = sqrt(dx * dx + dy * dy + dz * dz), cs = (n[0] * dx + n[1] * dz) / d;
+        double uu = d / RADIUS, w = (1 - uu * uu) * (1 - uu * uu), e = d / D0;
+        double v = 255 * w / (1 + e * e) * (0.3 + 0.7 * (cs > 0 ? cs : 0));
+        print_message("face %d: cos %.2f, model %.1f\n", k, cs, v);
+        hi = fmax(hi, v);
+        lo = fmin(lo, v);
+    }
+    /* the trunk's pixels in the row: within its radius of the axis (but a
+     * pixel at each end) */
+    double q0[2], q1[2], o = RT * sqrt(0.5);
+    double ax[3] = {tr[0] - o, tr[1], tr[2] - o}, bx[3] = {tr[0] + o, tr[1], tr[2] + o};
+    assert_true(project(c.eye, c.yaw, c.pitch, ax, q0));
+    assert_true(project(c.eye, c.yaw, c.pitch, bx, q1));
+    int y = (int)q0[1], x0 = (int)fmin(q0[0], q1[0]) + 1, x1 = (int)fmax(q0[0], q1[0]) - 1;
+    double got_hi = 0, got_lo = 255, fullmax = 0;
+    for (int x = x0; x <= x1; x++) {
+        const uint8_t *v = &px[4 * (y * W + x)], *g = &full[4 * (y * W + x)];
+        got_hi = fmax(got_hi, v[0]);
+        got_lo = fmin(got_lo, v[0]);
+        for (int k = 0; k < 3; k++)
+            fullmax = fmax(fullmax, g[k]);
+    }
+    print_message("trunk pixels %d..%d of row %d: brightest %.0f (model %.1f), darkest %.0f "
+                  "(model %.1f), ratio %.2f (model %.2f); full picture's brightest %.0f\n",
+                  x0, x1, y, got_hi, hi, got_lo, lo, got_hi / fmax(got_lo, 1), hi / lo, fullmax);
+    assert_true(x1 - x0 >= 3);
+    assert_true(fabs(got_hi - hi) <= LTOL);
+    assert_true(got_lo <= lo + LTOL);
+    assert_true(got_hi >= 0.85 * (hi / lo) * got_lo);
+    assert_true(fullmax >= 100);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -1330,6 +1396,7 @@ int main(void)
         cmocka_unit_test(test_app_frame_carries_lights),
         cmocka_unit_test(test_fireflies),
         cmocka_unit_test(test_firefly_sprites),
+        cmocka_unit_test(test_trunk_lambert),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }
