@@ -13,8 +13,9 @@
 #define HOL__STR(x) HOL__STR2(x)
 
 /* The encoding below and the shader's HOL_NIGHT count on these values. */
-_Static_assert(HOL_LIGHT_DAY == 0 && HOL_LIGHT_DUSK == 1 && HOL_LIGHT_NIGHT == 2,
-               "core's hol_app_lighting: day 0, dusk 1, night 2");
+_Static_assert(HOL_LIGHT_DAY == 0 && HOL_LIGHT_DUSK == 1 && HOL_LIGHT_NIGHT == 2 &&
+                   HOL_PROG_CYCLE == 3,
+               "core's hol_app_lighting: day 0, dusk 1, night 2; then the cycle's 3");
 
 /* The key's dimensions: a field, its first value, step and count (a
  * dimension's index i is the value first + i * step). */
@@ -26,7 +27,7 @@ typedef struct hol__dim {
 enum { HOL__D_LIGHTING, HOL__D_LAMPS, HOL__D_FLAT, HOL__D_WEDGE, HOL__D_FX, HOL__D_SHADOW };
 
 static const hol__dim hol__dims[] = {
-    [HOL__D_LIGHTING] = {offsetof(hol_prog_key, lighting), HOL_LIGHT_DUSK, 1, 2},
+    [HOL__D_LIGHTING] = {offsetof(hol_prog_key, lighting), HOL_LIGHT_DUSK, 1, 3},
     [HOL__D_LAMPS] = {offsetof(hol_prog_key, lamps), 0, 1, 2},
     [HOL__D_FLAT] = {offsetof(hol_prog_key, flat), 0, 1, 2},
     [HOL__D_WEDGE] = {offsetof(hol_prog_key, wedge), 0, 1, 2},
@@ -146,7 +147,8 @@ int hol_prog_preamble(const hol_prog_key *k, char *out, size_t n)
                        "#define HOL_LIGHT_PHYS " HOL__STR(HOL_LIGHT_PHYS) "\n"
                        "#define HOL_LIGHT_RADIUS_M " HOL__STR(HOL_LIGHT_RADIUS_M) "\n"
                        "#define HOL_LIGHT_HEIGHT_M " HOL__STR(HOL_LIGHT_HEIGHT_M) "\n",
-                       lit, k->flat, k->wedge, k->lighting == HOL_LIGHT_NIGHT, k->fx, k->text != 0,
+                       lit, k->flat, k->wedge,
+                       k->lighting == HOL_PROG_CYCLE ? 2 : k->lighting == HOL_LIGHT_NIGHT, k->fx, k->text != 0,
                        k->lamps != 0, m.spread, nsh,
                        sv[nsh][0], sv[nsh][1]);
     return len < 0 || (size_t)len >= n ? -1 : len;
@@ -172,11 +174,11 @@ static void hol__uniforms(const hol_gl *gl, hol_prog *pg)
     static const char *const names[] = {"u_vp", "u_model", "u_mode", "u_id", "u_eye",
                                         "u_fog", "u_fogd", "u_lin", "u_wedge", "u_wmode",
                                         "u_light", "u_klein", "u_mpu2", "u_tl", "u_eyeh",
-                                        "u_lonly", "u_tx", "u_ts", "u_atlas"};
+                                        "u_lonly", "u_tx", "u_ts", "u_atlas", "u_amb", "u_sun"};
     GLint *loc[] = {&pg->u_vp, &pg->u_model, &pg->u_mode, &pg->u_id, &pg->u_eye,
                     &pg->u_fog, &pg->u_fogd, &pg->u_lin, &pg->u_wedge, &pg->u_wmode,
                     &pg->u_light, &pg->u_klein, &pg->u_mpu2, &pg->u_tl, &pg->u_eyeh,
-                    &pg->u_lonly, &pg->u_tx, &pg->u_ts, &pg->u_atlas};
+                    &pg->u_lonly, &pg->u_tx, &pg->u_ts, &pg->u_atlas, &pg->u_amb, &pg->u_sun};
     _Static_assert(sizeof names / sizeof names[0] == sizeof loc / sizeof loc[0],
                    "a name per uniform");
     for (size_t i = 0; i < sizeof loc / sizeof loc[0]; i++)

@@ -49,7 +49,9 @@ enum {
 };
 
 typedef struct hol_prog_key {
-    int lighting;     /* HOL_LIGHT_DAY, _DUSK, _NIGHT (core/hol_app.h) */
+    int lighting;     /* HOL_LIGHT_DAY, _DUSK, _NIGHT (core/hol_app.h), or
+                       * HOL_PROG_CYCLE: a sky between dusk and night, its
+                       * ambient and sun light uniforms (a lighting cycle) */
     int room;         /* lit: 1 the room's own meshes (no tile code) */
     int flat;         /* lit tiles: the flat {4,4} grid */
     int wedge;        /* discard outside a branch's wedge (hol_view.h) */
@@ -66,10 +68,13 @@ typedef struct hol_prog_key {
  * HOL_TX_ROWS). */
 #define HOL_PROG_TX_ROWS 7
 
-/* day 2 (wedge), lit room 2 x 2 x 2 (lighting, lamps, wedge), lit tiles
- * 2 x 2 x 2 (lighting, flat, wedge) x HOL_PROG_FX_COUNT x 3 (shadow
- * pairs), text 1: 83 (render/hol_program.c's table of families) */
-#define HOL_PROG_SLOTS (2 + 8 + 8 * HOL_PROG_FX_COUNT * 3 + 1)
+/* The key's lighting between dusk and night (after HOL_LIGHT_NIGHT). */
+#define HOL_PROG_CYCLE 3
+
+/* day 2 (wedge), lit room 3 x 2 x 2 (lighting, lamps, wedge), lit tiles
+ * 3 x 2 x 2 (lighting, flat, wedge) x HOL_PROG_FX_COUNT x 3 (shadow
+ * pairs), text 1: 123 (render/hol_program.c's table of families) */
+#define HOL_PROG_SLOTS (2 + 12 + 12 * HOL_PROG_FX_COUNT * 3 + 1)
 /* The text program's slot (the last). */
 #define HOL_PROG_TEXT_SLOT (HOL_PROG_SLOTS - 1)
 
@@ -86,7 +91,7 @@ int hol_prog_preamble(const hol_prog_key *key, char *out, size_t n);
 typedef struct hol_prog {
     GLuint prog;
     GLint u_vp, u_model, u_mode, u_id, u_eye, u_fog, u_fogd, u_lin, u_wedge, u_wmode;
-    GLint u_light, u_klein, u_mpu2, u_tl, u_eyeh, u_lonly, u_tx, u_ts, u_atlas;
+    GLint u_light, u_klein, u_mpu2, u_tl, u_eyeh, u_lonly, u_tx, u_ts, u_atlas, u_amb, u_sun;
 } hol_prog;
 
 /* Compile and link key's program into out: 0, or 1 when the GL refused it

@@ -122,14 +122,35 @@ void hol__frame_faded(hol_render *r, const hol_frame_desc *f)
     r->gl.Disable(GL_SCISSOR_TEST);
 }
 
+/* A lit frame's sky between dusk (0) and night (1). */
+static float hol__night(const hol_frame_desc *f)
+{
+    if (!f->cycle)
+        return f->lighting == HOL_LIGHT_NIGHT ? 1.0f : 0.0f;
+    return f->night <= 0 ? 0.0f : f->night >= 1 ? 1.0f : (float)f->night;
+}
+
+/* The programs' lighting: day, dusk or night, or between them (a cycle's
+ * 0 and 1 take dusk's and night's own programs). */
+static int hol__sky_key(const hol_frame_desc *f)
+{
+    if (!f->lighting || !f->cycle)
+        return f->lighting;
+    float u = hol__night(f);
+    return u <= 0 ? HOL_LIGHT_DUSK : u >= 1 ? HOL_LIGHT_NIGHT : HOL_PROG_CYCLE;
+}
+
 /* The sky of a frame's lighting (day: hol_scene_sky) and its fog density
  * per metre. */
 static float hol__sky(const hol_frame_desc *f, float rgb[3])
 {
     static const float skies[3][3] = {{0, 0, 0}, {0.46f, 0.36f, 0.44f}, {0.03f, 0.04f, 0.08f}};
     if (f->lighting == HOL_LIGHT_DUSK || f->lighting == HOL_LIGHT_NIGHT) {
-        memcpy(rgb, skies[f->lighting], sizeof skies[0]);
-        return f->lighting == HOL_LIGHT_DUSK ? 0.10f : 0.15f;
+        /* a * (1 - u) + b * u: exactly a at 0 and b at 1 */
+        float u = hol__night(f);
+        for (int i = 0; i < 3; i++)
+            rgb[i] = skies[1][i] * (1 - u) + skies[2][i] * u;
+        return 0.10f * (1 - u) + 0.15f * u;
     }
     hol_scene_sky(rgb);
     return 0.06f;
@@ -143,6 +164,16 @@ static void hol__frame_lights(hol_render *r, const hol_frame_desc *f)
     r->gl.Uniform1f(r->pg->u_klein, (float)lf->klein);
     r->gl.Uniform1f(r->pg->u_mpu2, (float)(lf->metres_per_unit * lf->metres_per_unit));
     r->gl.Uniform1f(r->pg->u_eyeh, (float)lf->eye_h);
+    /* the sky's ambient and sun light, dusk's and night's mixed */
+    static const float amb[2][3] = {{0.30f, 0.26f, 0.28f}, {0.07f, 0.08f, 0.13f}};
+    static const float sun[2][3] = {{0.28f, 0.17f, 0.11f}, {0.05f, 0.06f, 0.10f}};
+    float u = hol__night(f), a[3], s[3];
+    for (int i = 0; i < 3; i++) {
+        a[i] = amb[0][i] * (1 - u) + amb[1][i] * u;
+        s[i] = sun[0][i] * (1 - u) + sun[1][i] * u;
+    }
+    r->gl.Uniform3f(r->pg->u_amb, a[0], a[1], a[2]);
+    r->gl.Uniform3f(r->pg->u_sun, s[0], s[1], s[2]);
 }
 
 /* The room's meshes (trees, hedges) take the lanterns of the room's cells
@@ -173,6 +204,12 @@ static void hol__room_lights(hol_render *r, const hol_frame_desc *f)
                     break;
                 }
         }
+    if (f->carried && n < 4) { /* the carried lantern, where it is */
+        tl[0][n] = (float)f->carried_pos[0];
+        tl[1][n] = (float)f->carried_pos[2];
+        tl[2][n] = (float)f->carried_pos[1];
+        tl[3][n++] = 1;
+    }
     r->gl.Uniform4fv(r->pg->u_tl, 4, &tl[0][0]);
 }
 
@@ -201,7 +238,7 @@ hol_prog *hol__frame_prog(hol_render *r, const hol_frame_desc *f, int use)
         return &r->progs[HOL_PROG_TEXT_SLOT];
     k.wedge = r->view.wedges != 0;
     if (use != HOL__USE_DAY) {
-        k.lighting = f->lighting;
+        k.lighting = hol__sky_key(f);
         k.room = use == HOL__USE_ROOM || use == HOL__USE_BACK;
         k.lamps = use == HOL__USE_ROOM;
     }

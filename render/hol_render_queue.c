@@ -396,6 +396,8 @@ hol_err hol__build(hol_render *r, const hol_frame_desc *f)
         return err;
     if (f->lighting && (err = hol_light_prepare(f, r->desc.world, &r->lights)))
         return err;
+    if (f->lighting)
+        hol_light_budget(&r->lights, &r->view);
     hol_mesh_clear(&r->dyn);
     r->nitems = 0;
     r->frame++;

@@ -58,6 +58,7 @@
 #include "../core/hol_room.h"
 #include "../core/hol_tile.h"
 #include "../core/hol_world.h"
+#include "../core/hol_app.h"
 #pragma GCC diagnostic ignored "-Wunused-function" /* model.h helpers not used here */
 #include "model.h"
 #include "render_fixture.h"
@@ -1007,6 +1008,184 @@ static void test_lantern_through_portal(void **state)
     assert_true(abs(far_lit - far_model) < far_model / 50 + 5);
 }
 
+/* Issue 38: a carried lantern (hol_frame_desc.carried, room metres) is a
+ * light at its offset from the user's cell centre in the user's tile, at
+ * its height: the model puts a lantern there by its own Klein map, and
+ * every floor pixel (the user's tile and the tiles through the portals)
+ * is the model's light, trunk shadows and all, in {4,4}, {4,5} and {4,8}. */
+static void test_carried_lantern(void **state)
+{
+    (void)state;
+    static const light_case cs[] = {
+        {"-", {1.5, 1.6, 1.9}, 0, -30, 5, 3, 3, 1, {"", NULL, NULL, NULL}, 0},
+        {"-", {1.5, 1.6, 1.9}, 0, -30, 4, 3, 3, 1, {"", NULL, NULL, NULL}, 0},
+        {"NE", {2.4, 1.6, 0.6}, 135, -35, 8, 3, 3, 1, {"", NULL, NULL, NULL}, 1},
+    };
+    static uint8_t px[W * H * 4];
+    static int ids[W * H];
+    for (size_t k = 0; k < sizeof cs / sizeof cs[0]; k++) {
+        const light_case *c = &cs[k];
+        scene s;
+        make_scene(c, &s);
+        /* carried at the eye's x and z, 0.3 m below it */
+        int col = (int)floor(c->eye[0] / c->cell), row = (int)floor(c->eye[2] / c->cell);
+        klein_point(c->cell, c->eye[0] - (col + 0.5) * c->cell,
+                    c->eye[2] - (row + 0.5) * c->cell, s.lant[0]);
+        make_trunks(c, &s);
+        s.f.nlanterns = 0;
+        s.f.carried = 1;
+        s.f.carried_pos[0] = c->eye[0];
+        s.f.carried_pos[1] = c->eye[1] - HOL_APP_CARRIED_DROP_M;
+        s.f.carried_pos[2] = c->eye[2];
+        assert_true(fabs(s.f.carried_pos[1] - HEIGHT) < 1e-9);
+        hol_light_frame lf;
+        assert_int_equal(hol_light_prepare(&s.f, NULL, &lf), HOL_OK);
+        assert_int_equal(lf.n, 1);
+        for (int r = 0; r < 3; r++) /* the eye's point: the same x and z */
+            assert_true(fabs(lf.pos[0][r] - lf.eye[r]) < 1e-9);
+        branch_ids(&s, ids);
+        hol_view v = *hol_render_last_view(fx.rnd);
+        render(&s, HOL_RENDER_BARE | HOL_RENDER_LIGHT_ONLY, px);
+        int near = 0, far = 0, bad = 0, n = 0;
+        for (int y = 0; y < H; y++)
+            for (int x = 0; x < W; x++) {
+                int b = ids[y * W + x];
+                double want[3];
+                if (b < 0 || on_cell_edge(c, x, y) || !model_pixel(c, &s, x, y, want))
+                    continue;
+                int got = px[4 * (y * W + x)];
+                n++;
+                bad += fabs(got - 255 * want[0]) > TOL;
+                if (got > 0.05 * 255)
+                    *(v.branches[b].nsteps ? &far : &near) += 1;
+            }
+        printf("carried case %zu: %d floor pixels, %d lit on the user's tile, %d through the "
+               "portals, %d off the model\n", k, n, near, far, bad);
+        assert_true(near > 100 && far > 100);
+        assert_true(bad <= n / 200); /* shadow edges the raster rounds */
+    }
+}
+
+/* Issue 38: eight lanterns round one vertex (more than a tile's four
+ * light slots reach the tiles there) leave no seam: over every pixel pair
+ * across a cell edge (one branch the other plus the step across it) the
+ * step is no larger than the light's own steps just before and after it
+ * inside each tile (a kink is allowed, a jump is not), and the largest
+ * step across the edges is no larger than the largest inside a tile
+ * (pixels within 0.15 m of a vertex left out: the trunk's foot, hidden
+ * by the trunk in a frame that is not bare). In {4,5} (five tiles at the
+ * vertex), {4,4} and {4,6}, at night. */
+/* Does pixel (x, y) see the floor within 0.15 m of a vertex (its trunk's
+ * foot, hidden by the trunk when not bare: r + e is 0.11 m)? */
+static int near_vertex(const light_case *c, int x, int y)
+{
+    double p[2];
+    if (!floor_point(c, x + 0.5, y + 0.5, p))
+        return 1;
+    double dx = p[0] - c->cell * floor(p[0] / c->cell + 0.5);
+    double dz = p[1] - c->cell * floor(p[1] / c->cell + 0.5);
+    return hypot(dx, dz) < 0.15;
+}
+
+static void test_eight_lanterns_no_seams(void **state)
+{
+    (void)state;
+    static const char *const walks[8] = {"", "N", "W", "NW", "WN", "E", "S", "NE"};
+    static const int qs[3] = {5, 4, 6};
+    static uint8_t px[W * H * 4];
+    static int ids[W * H];
+    for (int k = 0; k < 3; k++) {
+        light_case c = {"-", {1.9, 1.6, 1.9}, 45, -40, qs[k], 3, 3, 1, {NULL}, 0};
+        scene s;
+        make_scene(&c, &s);
+        s.f.nlanterns = 0;
+        for (int i = 0; i < 8; i++) {
+            hol_room u = s.f.user;
+            for (const char *p = walks[i]; *p; p++)
+                assert_int_equal(hol_room_step(&u, hol_dir_from_char(*p)), HOL_OK);
+            int dup = 0;
+            for (int j = 0; j < s.f.nlanterns; j++)
+                dup |= hol_tile_eq(s.f.lanterns[j], u.tile);
+            if (!dup)
+                s.f.lanterns[s.f.nlanterns++] = u.tile;
+        }
+        assert_true(s.f.nlanterns >= 7);
+        branch_ids(&s, ids);
+        hol_view v = *hol_render_last_view(fx.rnd);
+        render(&s, HOL_RENDER_BARE | HOL_RENDER_LIGHT_ONLY, px);
+        int pairs = 0, worst_jump = 0, max_across = 0, max_inside = 0, lit = 0;
+        for (int y = 1; y + 2 < H; y++)
+            for (int x = 1; x + 2 < W; x++)
+                for (int d = 0; d < 2; d++) {
+                    int st = d ? W : 1, i0 = y * W + x, a = ids[i0], b = ids[i0 + st];
+                    if (a < 0 || b < 0)
+                        continue;
+                    int v1 = px[4 * i0], v2 = px[4 * (i0 + st)];
+                    if (a == b && !near_vertex(&c, x, y) && !near_vertex(&c, x + !d, y + d)) {
+                        max_inside = abs(v2 - v1) > max_inside ? abs(v2 - v1) : max_inside;
+                        continue;
+                    }
+                    if (a == b)
+                        continue;
+                    if (!one_step_apart(&v, a, b) || ids[i0 - st] != a || ids[i0 + 2 * st] != b)
+                        continue;
+                    int xs = x - (d ? 0 : 1), ys = y - (d ? 1 : 0), near = 0;
+                    for (int e = 0; e < 4; e++)
+                        near |= near_vertex(&c, xs + (d ? 0 : e), ys + (d ? e : 0));
+                    if (near)
+                        continue;
+                    int v0 = px[4 * (i0 - st)], v3 = px[4 * (i0 + 2 * st)];
+                    int jump = v2 - v1, lo = v1 - v0 < v3 - v2 ? v1 - v0 : v3 - v2;
+                    int hi = v1 - v0 > v3 - v2 ? v1 - v0 : v3 - v2;
+                    int over = jump > hi ? jump - hi : jump < lo ? lo - jump : 0;
+                    worst_jump = over > worst_jump ? over : worst_jump;
+                    max_across = abs(jump) > max_across ? abs(jump) : max_across;
+                    pairs++;
+                    lit += v1 > 12;
+                }
+        printf("eight lanterns {4,%d}: %d lanterns, %d pairs across cell edges (%d lit): largest "
+               "step across %d, inside a tile %d; worst jump beyond the slopes %d\n", qs[k],
+               s.f.nlanterns, pairs, lit, max_across, max_inside, worst_jump);
+        assert_true(pairs > 100 && lit > 50);
+        assert_true(worst_jump <= TOL);
+        assert_true(max_across <= max_inside);
+    }
+}
+
+/* A lighting cycle (hol_frame_desc.cycle, night 0..1) is dusk's frame at
+ * 0 and night's at 1, byte for byte, and between them on the way: every
+ * pixel of the half-way frame lies between the two (within rounding). */
+static void test_cycle_between(void **state)
+{
+    (void)state;
+    static uint8_t dusk[W * H * 4], night[W * H * 4], px[W * H * 4];
+    scene s;
+    make_scene(&cases[0], &s);
+    s.f.lighting = HOL_LIGHT_DUSK;
+    render(&s, 0, dusk);
+    s.f.lighting = HOL_LIGHT_NIGHT;
+    render(&s, 0, night);
+    s.f.lighting = HOL_LIGHT_DUSK;
+    s.f.cycle = 1;
+    s.f.night = 0;
+    render(&s, 0, px);
+    assert_memory_equal(px, dusk, sizeof px);
+    s.f.night = 1;
+    render(&s, 0, px);
+    assert_memory_equal(px, night, sizeof px);
+    s.f.night = 0.5;
+    render(&s, 0, px);
+    int strictly = 0;
+    for (size_t i = 0; i < sizeof px; i++) {
+        int lo = dusk[i] < night[i] ? dusk[i] : night[i];
+        int hi = dusk[i] < night[i] ? night[i] : dusk[i];
+        assert_true(px[i] >= lo - 1 && px[i] <= hi + 1);
+        strictly += px[i] > lo + 1 && px[i] < hi - 1;
+    }
+    printf("cycle: %d of %zu channels strictly between dusk and night\n", strictly, sizeof px);
+    assert_true(strictly > (int)(sizeof px / 4));
+}
+
 /* Lanterns at day change nothing: the same pixels as without them. */
 static void test_day_unchanged_without_lighting(void **state)
 {
@@ -1392,6 +1571,9 @@ int main(void)
         cmocka_unit_test(test_fog_true_distance),
         cmocka_unit_test(test_light_continuous_across_edges),
         cmocka_unit_test(test_lantern_through_portal),
+        cmocka_unit_test(test_carried_lantern),
+        cmocka_unit_test(test_cycle_between),
+        cmocka_unit_test(test_eight_lanterns_no_seams),
         cmocka_unit_test(test_day_unchanged_without_lighting),
         cmocka_unit_test(test_app_frame_carries_lights),
         cmocka_unit_test(test_fireflies),

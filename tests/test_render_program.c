@@ -58,7 +58,7 @@ static void test_every_key(void **state)
     hol_prog_key k;
     for (k.lamps = -1; k.lamps <= 2; k.lamps++)
     for (k.text = -1; k.text <= 2; k.text++)
-    for (k.lighting = -1; k.lighting <= 3; k.lighting++)
+    for (k.lighting = -1; k.lighting <= 4; k.lighting++)
         for (k.room = -1; k.room <= 2; k.room++)
             for (k.flat = -1; k.flat <= 2; k.flat++)
                 for (k.wedge = -1; k.wedge <= 2; k.wedge++)
@@ -74,7 +74,7 @@ static void test_every_key(void **state)
                             valid++;
                         }
     assert_int_equal(valid, HOL_PROG_SLOTS);
-    assert_int_equal(HOL_PROG_SLOTS, 2 + 8 + 8 * HOL_PROG_FX_COUNT * 3 + 1);
+    assert_int_equal(HOL_PROG_SLOTS, 2 + 12 + 12 * HOL_PROG_FX_COUNT * 3 + 1);
     /* the text program: text alone */
     hol_prog_key text = {HOL_LIGHT_DAY, 0, 0, 0, 0, 0, 1, 0};
     assert_int_equal(hol_prog_slot(&text), HOL_PROG_TEXT_SLOT);

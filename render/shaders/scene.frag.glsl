@@ -1,7 +1,8 @@
 // scene.frag.glsl - the fragment shader of every program (day, lit tiles,
 // lit room). The preamble render/hol_program.c builds from a program's key
 // comes first: HOL_LIT (0 day, 1 lit tiles, 2 lit room), HOL_FLAT (the
-// {4,4} grid), HOL_WEDGE (discard outside a branch's wedge), HOL_NIGHT,
+// {4,4} grid), HOL_WEDGE (discard outside a branch's wedge), HOL_NIGHT (1
+// night, 2 between dusk and night),
 // HOL_FX (HOL_PROG_FX_*: 0 lanterns, 1 fireflies, 2 spots; a value has
 // the code of those below it: test with >=), HOL_TX_ROWS (u_tx's rows of
 // per-light values), HOL_SHD (trunk shadow pairs: 0, 2, 4), HOL_SV and
@@ -54,9 +55,9 @@ in HOL_SV v_S2;
 in HOL_SV v_S3;
 uniform vec4 u_ts[13];
 #endif
-#if HOL_FX
+// per-light values (u_tx[5]: a lantern's weight, in every lit tile's
+// program: lanterns merged by the budget weigh more than 1)
 uniform vec4 u_tx[HOL_TX_ROWS];
-#endif
 // spots (HOL_PROG_FX_SPOTS) and up
 #if HOL_FX >= 2
 in vec4 v_U;
@@ -65,7 +66,11 @@ const vec4 v_U = vec4(0.0);
 #endif
 #endif
 // the sky (docs/rendering.md#lighting): ambient, sun and lantern colours
-#if HOL_NIGHT
+// HOL_NIGHT 2: a sky between dusk and night (a lighting cycle), the
+// frame's mix of the two (render/hol_render_gpu.c's hol__frame_lights)
+#if HOL_NIGHT == 2
+uniform vec3 u_amb, u_sun;
+#elif HOL_NIGHT
 const vec3 u_amb = vec3(0.07, 0.08, 0.13), u_sun = vec3(0.05, 0.06, 0.10);
 #else
 const vec3 u_amb = vec3(0.30, 0.26, 0.28), u_sun = vec3(0.28, 0.17, 0.11);
@@ -154,7 +159,7 @@ float hol_lights(vec4 L, vec4 U, float g, float o, float y, float nup, vec4 th, 
 float hol_lights(vec4 L, float g2, float o, float dh, float nup, vec4 th) {
   vec4 c2 = max(g2 * L + o, 0.0);
 @include falloff.glsl
-  vec4 f = w * w * num / den * hol_shadow(0.5 * g2);
+  vec4 f = w * w * num / den * hol_shadow(0.5 * g2) * u_tx[5];
   return dot(f, hol_lambert(th, d2, vec4(dh), inversesqrt(max(d2, 1e-8)), nup));
 }
 #endif
