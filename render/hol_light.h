@@ -33,7 +33,10 @@
  *   square of the ray-marchers' default, so the forest stays readable.
  * - A surface at height h with normal n lit by a lantern at height L gets
  *   F(d) (0.3 + 0.7 max(n_y, 0) max(L - h, 0) / d); the shader sums the
- *   tile's lights (render/hol_render_tiles.c). It gets them in the tile's own
+ *   tile's lights (render/hol_render_tiles.c), and maps the lanterns'
+ *   sum S by the tone curve T(S) = S K / (K + S) (Reinhard's, white level
+ *   K = HOL_LIGHT_TONE_K = 1/3: the lanterns' red 3.0 times K is 1, so the
+ *   lanterns light a surface at most to its own colour). It gets them in the tile's own
  *   frame (the renderer applies the inverse of hol_light_tile's frame), so
  *   for the fragment's Klein point K, cosh x = (l_z - K.l_xy) /
  *   sqrt(1 - |K|^2), the first factor affine in the mesh (the vertex
@@ -118,6 +121,7 @@
 #define HOL_LIGHT_HEIGHT_M 1.3
 #define HOL_LIGHT_D0_M 1.0
 #define HOL_LIGHT_PHYS 0.5
+#define HOL_LIGHT_TONE_K (1.0 / 3.0) /* the lanterns' sum's white level */
 #define HOL_LIGHT_MAX_FF 16
 #define HOL_LIGHT_MAX (HOL_RENDER_MAX_LANTERNS + 1 + HOL_LIGHT_MAX_FF)
 #define HOL_LIGHT_FF_STEPS 3

@@ -146,7 +146,8 @@ int hol_prog_preamble(const hol_prog_key *k, char *out, size_t n)
                        "#define HOL_LIGHT_D0_M " HOL__STR(HOL_LIGHT_D0_M) "\n"
                        "#define HOL_LIGHT_PHYS " HOL__STR(HOL_LIGHT_PHYS) "\n"
                        "#define HOL_LIGHT_RADIUS_M " HOL__STR(HOL_LIGHT_RADIUS_M) "\n"
-                       "#define HOL_LIGHT_HEIGHT_M " HOL__STR(HOL_LIGHT_HEIGHT_M) "\n",
+                       "#define HOL_LIGHT_HEIGHT_M " HOL__STR(HOL_LIGHT_HEIGHT_M) "\n"
+                       "#define HOL_LIGHT_TONE_K " HOL__STR(HOL_LIGHT_TONE_K) "\n",
                        lit, k->flat, k->wedge,
                        k->lighting == HOL_PROG_CYCLE ? 2 : k->lighting == HOL_LIGHT_NIGHT, k->fx, k->text != 0,
                        k->lamps != 0, m.spread, nsh,

@@ -84,6 +84,17 @@ vec4 hol_out(vec3 c) {
   return vec4(mix(c / 12.92, pow((c + 0.055) / 1.055, vec3(2.4)),
                   step(vec3(0.04045), c)), 1.0);
 }
+#if HOL_LIT
+// The tone map of the lanterns' sum l (render/hol_light.h,
+// docs/rendering.md#tone-map): Reinhard's curve with the white level K =
+// HOL_LIGHT_TONE_K, l K / (K + l): slope 1 at 0 (a faint pool keeps its
+// value), never above K, so K times the lanterns' colour (1.0 in red) is
+// the most light the lanterns give a surface: a trunk beside one glows in
+// its own colour, not clipped white.
+float hol_tone(float l) {
+  return l * HOL_LIGHT_TONE_K / (HOL_LIGHT_TONE_K + l);
+}
+#endif
 #if HOL_LIT == 1
 // The trunk shadows of a tile (hol_light.h): up to four light-trunk pairs.
 // Per pair, three affine functions of the Klein point (hol_light_wedge)
@@ -250,6 +261,8 @@ void main() {
 #if HOL_LIT == 2 && HOL_LAMPS
   if (u_light >= 2) lam = v_rl;
 #endif
+// the lanterns' sum mapped back (fireflies' lamf as it is: faint)
+  lam = hol_tone(lam);
   float f = exp(-de2 * (u_fogd * u_fogd));
   if (u_lonly == 1) {
     o_col = vec4(min(lam, 1.0), f, min(lamf, 1.0), 1.0);
