@@ -130,10 +130,10 @@ vec4 hol_shadow(float g) {
 // t the unit floor direction from the point to each light's foot in the
 // tile's Klein frame (th = <n_h, t> per vertex: scene.vert.glsl; the
 // floor's n_h is 0, so its term is the floor's law unchanged), x / d =
-// sqrt(d^2 - dh^2) / d.
-vec4 hol_lambert(vec4 th, vec4 d2, vec4 dh, vec4 id, float nup) {
-  vec4 xm = sqrt(max(d2 - dh * dh, 0.0));
-  return 0.3 + 0.7 * max(max(nup, 0.0) * max(dh, 0.0) * id + th * xm * id, 0.0);
+// xm / d with xm the floor distance in metres (falloff.glsl's: x times
+// the metres per unit, no square root of its own).
+vec4 hol_lambert(vec4 th, vec4 xm, vec4 dh, vec4 id, float nup) {
+  return 0.3 + 0.7 * max((max(nup, 0.0) * max(dh, 0.0) + th * xm) * id, 0.0);
 }
 #if HOL_FX
 // per slot: u_tx[4] the light's height, [5] a lantern's weight, [6] a
@@ -162,7 +162,7 @@ float hol_lights(vec4 L, vec4 U, float g, float o, float y, float nup, vec4 th, 
     f *= mix(cone, vec4(1.0), step(u_tx[3], vec4(-1.5)));
   }
 #endif
-  f *= hol_lambert(th, d2, dh, id, nup);
+  f *= hol_lambert(th, xm, dh, id, nup);
   ff = dot(f, u_tx[6]);
   return dot(f, u_tx[5]);
 }
@@ -171,7 +171,7 @@ float hol_lights(vec4 L, float g2, float o, float dh, float nup, vec4 th) {
   vec4 c2 = max(g2 * L + o, 0.0);
 @include falloff.glsl
   vec4 f = w * w * num / den * hol_shadow(0.5 * g2) * u_tx[5];
-  return dot(f, hol_lambert(th, d2, vec4(dh), inversesqrt(max(d2, 1e-8)), nup));
+  return dot(f, hol_lambert(th, xm, vec4(dh), inversesqrt(max(d2, 1e-8)), nup));
 }
 #endif
 #endif

@@ -420,13 +420,14 @@ await check('sound: after a click, an AudioContext runs and a level with sound a
   await r.ctx.close();
 });
 
-await check('a night level with lanterns draws on WebGL 2 (the lit shader compiles, no console error), darker than the same level at day', async () => {
+await check('a night level with lanterns draws on WebGL 2 (the lit shader compiles, no console error), much darker than the same level at day', async () => {
   const mean = async (name, text) => {
     fs.writeFileSync(path.join(testDir, name), text);
     const p = await openPage('?level=/test/' + name);
     await p.until(async () => (await p.state(S.FRAMES)) > 5, 'frames');
     const shot = path.join(OUT, name + '.png');
-    await p.page.screenshot({ path: shot });
+    /* the view alone: the page's header above it is the same at night */
+    await p.page.locator('#canvas').screenshot({ path: shot });
     assert(!p.errors.length, 'errors: ' + p.errors.join('; '));
     await p.ctx.close();
     const img = decodePNG(fs.readFileSync(shot));
@@ -438,9 +439,12 @@ await check('a night level with lanterns draws on WebGL 2 (the lit shader compil
   const day = await mean('day.lvl', 'mode explore\nseed 3\nminimap off\n');
   const night = await mean('night.lvl', 'mode explore\nseed 3\nminimap off\nlighting night\nplace lantern O\nplace lantern N\n');
   /* the trunks beside the two lanterns take their light by the floor's law
-   * (issue 38) and fill much of this view: 0.87 of day measured, 0.5 when
-   * only the floor was lit */
-  assert(night < 0.93 * day && night > 2, `mean brightness: day ${day.toFixed(1)}, night ${night.toFixed(1)}`);
+   * (issue 38) and fill much of this view; the lanterns' sum is tone-mapped
+   * (docs/rendering.md#tone-map), so they glow but stay under their colour:
+   * the view's mean 0.51 of day's (39.2 against 77.4; of the whole page
+   * with its header, as this check measured before: 0.64 now, 0.87 with the
+   * sum unbounded, 0.5 when only the floor was lit) */
+  assert(night < 0.6 * day && night > 2, `mean brightness: day ${day.toFixed(1)}, night ${night.toFixed(1)}`);
 });
 
 await check('snap turn (?snap=90): a tap of Left turns the look by 90 degrees; ?snap=7 is refused', async () => {

@@ -10,18 +10,20 @@
 # build folder) gets the pictures, the host's renders and lighting.txt.
 # Per tiling and eye it checks, with tests/xr/light_probe.c (a pinhole of
 # the printed pose and tangents, independent of the renderer):
-# - night darker than dusk darker than day (night's mean luma below 0.65
+# - night darker than dusk darker than day (night's mean luma below half
 #   of day's: the trunks, hedges and crowns take the lantern's light by the
-#   floor's law since issue 38, so a night frame among near trunks is
-#   brighter than when only the floor was lit: 0.54 to 0.57 of day, was
-#   0.2);
+#   floor's law since issue 38, tone-mapped (docs/rendering.md#tone-map):
+#   0.38 to 0.39 of day; 0.2 when only the floor was lit, 0.54 to 0.57 with the
+#   lanterns' sum unbounded);
 # - at dusk and night the lantern's glass glows where the pinhole puts it
 #   (pixels of luma 200 or more within 16 px, their mean x within 2 px of
 #   the projection), and at day there is no glass;
 # - at night the floor by the lantern's foot (0.15 m beyond it, under the
-#   glass) is more than 1.1 times the frame's mean (a lit region in the
-#   dark: 1.2 to 1.37 with the lit trunks in the frame's mean, more than 3
-#   before), and at day not above twice it (the control: no glare);
+#   glass) is more than 1.2 times the frame's mean (a lit region in the
+#   dark: 1.35 to 1.68; more than 3 when only the floor was lit: the trunks
+#   0.7 m from the lantern take more light than the floor 1.3 m under
+#   it, so they raise the mean), and at day not above twice it (the
+#   control: no glare);
 # - the glass's offset between the eyes: eye 0 (the left) sees it further
 #   right, by the projections' difference within 1 px;
 # - each eye equals the host's `holonomy render` of the same pose, tiling,
@@ -60,16 +62,16 @@ for q in 5 6; do
     for e in 0 1; do
         eval "gd=\$g_${q}_day_$e gu=\$g_${q}_dusk_$e gn=\$g_${q}_night_$e fn=\$ft_${q}_night_$e fd=\$ft_${q}_day_$e"
         md=$(f "$gd" mean) mu=$(f "$gu" mean) mn=$(f "$gn" mean)
-        check "lighting {4,$q} eye $e: night darker than dusk darker than day, night below 0.65 of day (mean luma $mn, $mu, $md)" \
-            'awk "BEGIN { exit !($mn < $mu && $mu < $md && $mn < 0.65 * $md) }"'
+        check "lighting {4,$q} eye $e: night darker than dusk darker than day, night below half of day (mean luma $mn, $mu, $md)" \
+            'awk "BEGIN { exit !($mn < $mu && $mu < $md && $mn < 0.5 * $md) }"'
         for s in dusk night; do
             eval "gs=\$g_${q}_${s}_$e"
             check "lighting {4,$q} $s eye $e: the lantern's glass glows where its pose projects ($(f "$gs" bright) bright pixels at x $(f "$gs" cx), projected $(f "$gs" px))" \
                 'awk "BEGIN { exit !($(f "$gs" bright) >= 5 && $(f "$gs" cx) - $(f "$gs" px) <= 2 && $(f "$gs" px) - $(f "$gs" cx) <= 2) }"'
         done
         check "lighting {4,$q} day eye $e: no glass ($(f "$gd" bright) bright pixels)" '[ "$(f "$gd" bright)" = 0 ]'
-        check "lighting {4,$q} night eye $e: the floor by the lantern's foot lit (luma $(f "$fn" disc)) above 1.1 times the frame's mean ($mn)" \
-            'awk "BEGIN { exit !($(f "$fn" disc) > 1.1 * $mn) }"'
+        check "lighting {4,$q} night eye $e: the floor by the lantern's foot lit (luma $(f "$fn" disc)) above 1.2 times the frame's mean ($mn)" \
+            'awk "BEGIN { exit !($(f "$fn" disc) > 1.2 * $mn) }"'
         check "lighting {4,$q} day eye $e: the same floor not above twice the frame's mean (luma $(f "$fd" disc), mean $md)" \
             'awk "BEGIN { exit !($(f "$fd" disc) <= 2 * $md) }"'
     done
