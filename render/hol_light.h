@@ -35,8 +35,9 @@
  *   F(d) (0.3 + 0.7 max(n_y, 0) max(L - h, 0) / d); the shader sums the
  *   tile's lights (render/hol_render_tiles.c), and maps the lanterns'
  *   sum S by the tone curve T(S) = S K / (K + S) (Reinhard's, white level
- *   K = HOL_LIGHT_TONE_K = 1/3: the lanterns' red 3.0 times K is 1, so the
- *   lanterns light a surface at most to its own colour). It gets them in the tile's own
+ *   K = HOL_LIGHT_TONE_K = 1/4: the lanterns' colour times K is (0.75,
+ *   0.56, 0.31), so they light a surface to at most 3/4 of its colour).
+ *   It gets them in the tile's own
  *   frame (the renderer applies the inverse of hol_light_tile's frame), so
  *   for the fragment's Klein point K, cosh x = (l_z - K.l_xy) /
  *   sqrt(1 - |K|^2), the first factor affine in the mesh (the vertex
@@ -121,7 +122,7 @@
 #define HOL_LIGHT_HEIGHT_M 1.3
 #define HOL_LIGHT_D0_M 1.0
 #define HOL_LIGHT_PHYS 0.5
-#define HOL_LIGHT_TONE_K (1.0 / 3.0) /* the lanterns' sum's white level */
+#define HOL_LIGHT_TONE_K 0.25 /* the lanterns' sum's white level */
 #define HOL_LIGHT_MAX_FF 16
 #define HOL_LIGHT_MAX (HOL_RENDER_MAX_LANTERNS + 1 + HOL_LIGHT_MAX_FF)
 #define HOL_LIGHT_FF_STEPS 3

@@ -88,9 +88,9 @@ vec4 hol_out(vec3 c) {
 // The tone map of the lanterns' sum l (render/hol_light.h,
 // docs/rendering.md#tone-map): Reinhard's curve with the white level K =
 // HOL_LIGHT_TONE_K, l K / (K + l): slope 1 at 0 (a faint pool keeps its
-// value), never above K, so K times the lanterns' colour (1.0 in red) is
-// the most light the lanterns give a surface: a trunk beside one glows in
-// its own colour, not clipped white.
+// value), never above K, so K times the lanterns' colour (0.75 in red) is
+// the most light the lanterns give a surface: a trunk beside one glows
+// below its own colour, not clipped white.
 float hol_tone(float l) {
   return l * HOL_LIGHT_TONE_K / (HOL_LIGHT_TONE_K + l);
 }
