@@ -40,7 +40,11 @@
  * - test_firefly_sprites: each firefly's sprite where the test's camera
  *   projects its place, in both eyes of a pair.
  * - test_trunk_lambert: a trunk 0.71 m from a lantern in {4,4} takes its
- *   light with a Lambert term, face by face as the model's prism says.
+ *   light with a Lambert term, face by face as the model's prism says,
+ *   lit but not clipped white.
+ * - test_night_darker_than_day: with the lanterns' sum tone-mapped
+ *   (docs/rendering.md#tone-map; the model's tone()), dusk and night
+ *   views among lit trunks are darker than day.
  */
 #include <math.h>
 #include <setjmp.h>
