@@ -90,6 +90,12 @@ enum hol_app_sound { HOL_SOUND_ALL = 0, HOL_SOUND_CUES = 1, HOL_SOUND_OFF = 2 };
 /* A level's sky (`lighting day|dusk|night`): day is the picture without
  * lights; at dusk and night lanterns light the forest (render/hol_render.h). */
 enum hol_app_lighting { HOL_LIGHT_DAY = 0, HOL_LIGHT_DUSK = 1, HOL_LIGHT_NIGHT = 2 };
+/* A carried lantern (`lantern carried`) hangs this far below the head,
+ * at the head's x and z: it moves with the head in every tile (at the
+ * 1.6 m eye, the placed lanterns' 1.3 m). */
+#define HOL_APP_CARRIED_DROP_M 0.3
+/* The longest dusk-to-night cycle (`lighting cycle SECONDS`). */
+#define HOL_APP_CYCLE_MAX_S 86400
 
 /* A level's pointing question (`point start|objective`, SPEC 8): at the
  * level's end (done or time up) the app asks for the direction to the
@@ -264,6 +270,11 @@ typedef struct hol_app_level {
                                  1..4 ahead/right/back/left of the tile's
                                  heading (tilted down), 5 down */
     int nlanterns;
+    double lighting_cycle_s;  /* `lighting cycle SECONDS`: dusk to night
+                                 over that much of the level's clock
+                                 (lighting is then dusk); 0: none */
+    int lantern_carried;      /* `lantern carried`: the player carries a
+                                 lantern (at dusk and night) */
     int sound;                /* hol_app_sound; 0: all */
     int point;                /* hol_app_point_target: the question asked
                                  at the level's end; 0: none */
@@ -522,6 +533,15 @@ typedef struct hol_app_view {
     hol_tile lanterns[HOL_APP_MAX_LANTERNS + HOL_APP_MAX_OBJECTIVES];
     uint8_t lantern_spot[HOL_APP_MAX_LANTERNS + HOL_APP_MAX_OBJECTIVES]; /* the
                                          level's spots; 0: round */
+    double night;                     /* the sky between dusk (0) and
+                                         night (1): lighting's own (night 1,
+                                         else 0), or with a cycle the level
+                                         clock over its seconds (at most
+                                         1) */
+    int carried;                      /* 1: a carried lantern at carried_pos
+                                         (lit at dusk and night) */
+    double carried_pos[3];            /* room metres: the head's x and z,
+                                         HOL_APP_CARRIED_DROP_M below it */
     int sound;                        /* the level's hol_app_sound (the
                                          sources: core/hol_sound.h) */
     hol_body body;                    /* the controllers and tracked hands

@@ -440,13 +440,23 @@ static void hol__fill_map(hol_app *app)
     }
 }
 
-/* The level's sky and lights: its placed lanterns, then (cue lantern) one
- * on every game object drawn. */
+/* The level's sky and lights: the sky between dusk and night, its placed
+ * lanterns, then (cue lantern) one on every game object drawn, and the
+ * carried lantern under the head. */
 static void hol__fill_lights(hol_app *app)
 {
     hol_app_view *v = &app->view;
     const hol_app_level *L = &app->level;
     v->lighting = L->lighting;
+    v->night = L->lighting == HOL_LIGHT_NIGHT ? 1 : 0;
+    if (L->lighting_cycle_s > 0) {
+        double u = app->level_t / L->lighting_cycle_s;
+        v->night = u < 0 ? 0 : u > 1 ? 1 : u;
+    }
+    v->carried = L->lantern_carried != 0;
+    v->carried_pos[0] = v->head[0];
+    v->carried_pos[1] = v->head[1] - HOL_APP_CARRIED_DROP_M;
+    v->carried_pos[2] = v->head[2];
     v->sound = L->sound;
     v->nlanterns = 0;
     for (int k = 0; k < L->nlanterns && k < HOL_APP_MAX_LANTERNS; k++) {

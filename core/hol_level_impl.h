@@ -83,6 +83,7 @@ hol_err hol__key_cues(hol__lp *p, char **f, int nf);
 hol_err hol__key_fixed(hol__lp *p, char **f, int nf);
 hol_err hol__key_minimap(hol__lp *p, char **f, int nf);
 hol_err hol__key_lighting(hol__lp *p, char **f, int nf);
+hol_err hol__key_carried(hol__lp *p, char **f, int nf);
 hol_err hol__key_sound(hol__lp *p, char **f, int nf);
 hol_err hol__key_lang(hol__lp *p, char **f, int nf);
 hol_err hol__key_point(hol__lp *p, char **f, int nf);

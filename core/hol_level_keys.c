@@ -221,12 +221,33 @@ hol_err hol__key_minimap(hol__lp *p, char **f, int nf)
     return hol__lv_one_of(p, f, places, 3, "hud, hand or off", &p->L.minimap);
 }
 
-/* lighting day|dusk|night */
+/* lighting day|dusk|night, or lighting cycle SECONDS (dusk to night) */
 hol_err hol__key_lighting(hol__lp *p, char **f, int nf)
 {
     static const char *const skies[3] = {"day", "dusk", "night"};
-    (void)nf;
+    if (!strcmp(f[1], "cycle")) {
+        uint64_t secs = nf == 3 ? hol__lv_count(f[2]) : 0;
+        if (!secs || secs > HOL_APP_CYCLE_MAX_S)
+            return hol__lfail(p, secs ? HOL_ERANGE : HOL_EPARSE, p->line,
+                              "lighting cycle takes SECONDS in 1..%d", HOL_APP_CYCLE_MAX_S);
+        p->L.lighting = HOL_LIGHT_DUSK;
+        p->L.lighting_cycle_s = (double)secs;
+        return HOL_OK;
+    }
+    if (nf != 2) /* as the parser says of any key with too many values */
+        return hol__lfail(p, HOL_EPARSE, p->line, "unknown key or wrong value count: '%.20s'",
+                          f[0]);
     return hol__lv_one_of(p, f, skies, 3, "day, dusk or night", &p->L.lighting);
+}
+
+/* lantern carried */
+hol_err hol__key_carried(hol__lp *p, char **f, int nf)
+{
+    (void)nf;
+    if (strcmp(f[1], "carried"))
+        return hol__lfail(p, HOL_EPARSE, p->line, "lantern '%.20s' is not carried", f[1]);
+    p->L.lantern_carried = 1;
+    return HOL_OK;
 }
 
 /* sound all|cues|off */

@@ -94,6 +94,10 @@ void hol_app_frame_desc(const hol_app_view *v, int eye, int w, int h, double fov
     fd->nlanterns = nlan > 0 ? nlan : 0;
     memcpy(fd->lanterns, v->lanterns, (size_t)fd->nlanterns * sizeof fd->lanterns[0]);
     memcpy(fd->lantern_spot, v->lantern_spot, (size_t)fd->nlanterns);
+    fd->cycle = 1;
+    fd->night = v->night;
+    fd->carried = v->carried;
+    memcpy(fd->carried_pos, v->carried_pos, sizeof fd->carried_pos);
     fd->npath = v->map.npath;
     /* the controllers and hands at their room poses (core/hol_body.h) */
     const hol_body *b = &v->body;

@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "../core/hol_hyper.h"
+#include "hol_view.h"
 
 #define HOL__PI 3.14159265358979323846
 
@@ -62,6 +63,7 @@ static void hol__light_put(hol_light_frame *o, const double fr[9], double x, dou
     for (int r = 0; r < 3; r++)
         o->pos[o->n][r] = fr[3 * r] * p[0] + fr[3 * r + 1] * p[1] + fr[3 * r + 2] * p[2];
     o->h[o->n] = h;
+    o->wt[o->n] = 1;
     o->ssin[o->n] = -2;
     memset(o->sd[o->n], 0, sizeof o->sd[0]);
 }
@@ -465,6 +467,14 @@ hol_err hol_light_prepare(const hol_frame_desc *f, const struct hol_world *w,
             out->fx = 2;
         out->n++;
     }
+    if (f->carried) { /* in the user's tile: the user frame itself */
+        static const double id[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+        hol__light_put(out, id, f->carried_pos[0] - (f->user.col + 0.5) * m,
+                       f->carried_pos[2] - (f->user.row + 0.5) * m, f->carried_pos[1]);
+        out->n++;
+        if (f->carried_pos[1] != HOL_LIGHT_HEIGHT_M && !out->fx)
+            out->fx = 1; /* a height of its own: the programs with heights */
+    }
     if (f->fireflies && w)
         hol__fireflies(f, w, out);
     return HOL_OK;
@@ -482,6 +492,8 @@ int hol_light_tile(const hol_light_frame *lf, hol_tile t, double out_frame[9],
         double d = hol_light_floor_m(lf, c, lf->pos[i]);
         if (d >= HOL_LIGHT_RADIUS_M + lf->circum_m)
             continue;
+        if (lf->ff[i]) /* the lanterns first (hol_light_budget), then fireflies */
+            d += 1e6;
         /* insert by distance (ties: the lantern named first) */
         int k = n < HOL_LIGHT_PER_TILE ? n++ : HOL_LIGHT_PER_TILE;
         while (k > 0 && dist[k - 1] > d) {
@@ -497,4 +509,102 @@ int hol_light_tile(const hol_light_frame *lf, hol_tile t, double out_frame[9],
         }
     }
     return n;
+}
+
+/* Light i out of the frame (the later ones move down one). */
+static void hol__light_drop(hol_light_frame *lf, int i)
+{
+    for (int j = i; j + 1 < lf->n; j++) {
+        memcpy(lf->pos[j], lf->pos[j + 1], sizeof lf->pos[0]);
+        memcpy(lf->sd[j], lf->sd[j + 1], sizeof lf->sd[0]);
+        lf->h[j] = lf->h[j + 1];
+        lf->wt[j] = lf->wt[j + 1];
+        lf->ff[j] = lf->ff[j + 1];
+        lf->ssin[j] = lf->ssin[j + 1];
+    }
+    lf->n--;
+}
+
+/* Lights a and b (round lanterns, a < b) as one at their weighted mean
+ * (on the hyperboloid: the weighted sum of the points scaled back onto it;
+ * flat: the mean), its height the weighted mean, its weight the sum. */
+static void hol__light_merge(hol_light_frame *lf, int a, int b)
+{
+    double wa = lf->wt[a], wb = lf->wt[b], p[3];
+    for (int r = 0; r < 3; r++)
+        p[r] = (wa * lf->pos[a][r] + wb * lf->pos[b][r]) / (wa + wb);
+    double k = lf->flat ? 1 / p[2] : 1 / sqrt(-hol__lor(p, p, 0));
+    for (int r = 0; r < 3; r++)
+        lf->pos[a][r] = p[r] * k;
+    lf->h[a] = (wa * lf->h[a] + wb * lf->h[b]) / (wa + wb);
+    lf->wt[a] = wa + wb;
+    hol__light_drop(lf, b);
+}
+
+/* The lanterns of the first drawn tile (centres c[0..nt-1]) that more
+ * than HOL_LIGHT_PER_TILE reach (into idx; their count), or 0: none. A light
+ * reaches a tile when its floor distance to the centre is under R plus the
+ * circumradius (hol_light_tile's rule), here by the Lorentz product. */
+static int hol__over_full(const hol_light_frame *lf, const double (*c)[3], int nt,
+                          int idx[HOL_LIGHT_MAX])
+{
+    double u = (HOL_LIGHT_RADIUS_M + lf->circum_m) / lf->metres_per_unit;
+    double lim = lf->flat ? u * u : cosh(u);
+    for (int t = 0; t < nt; t++) {
+        int n = 0;
+        for (int i = 0; i < lf->n; i++) {
+            if (lf->ff[i])
+                continue;
+            double dx = c[t][0] - lf->pos[i][0], dy = c[t][1] - lf->pos[i][1];
+            double v = lf->flat ? dx * dx + dy * dy : -hol__lor(c[t], lf->pos[i], 0);
+            if (v < lim)
+                idx[n++] = i;
+        }
+        if (n > HOL_LIGHT_PER_TILE)
+            return n;
+    }
+    return 0;
+}
+
+/* One step towards the budget on an over-full tile's lanterns
+ * idx[0..n-1]: merge its two nearest round lanterns, else (spots) drop its
+ * lantern farthest from the user. */
+static void hol__budget_step(hol_light_frame *lf, const int *idx, int n)
+{
+    int ba = -1, bb = -1;
+    double best = 0;
+    for (int i = 0; i < n; i++)
+        for (int j = i + 1; j < n; j++) {
+            int a = idx[i], b = idx[j];
+            if (lf->ssin[a] > -1.5 || lf->ssin[b] > -1.5)
+                continue;
+            double d = hol_hyper_dist(lf->pos[a], lf->pos[b], lf->flat);
+            if (ba < 0 || d < best)
+                ba = a, bb = b, best = d;
+        }
+    if (ba >= 0) {
+        hol__light_merge(lf, ba, bb);
+        return;
+    }
+    static const double o[3] = {0, 0, 1};
+    int far = idx[0];
+    for (int k = 1; k < n; k++)
+        if (hol_hyper_dist(lf->pos[idx[k]], o, lf->flat) > hol_hyper_dist(lf->pos[far], o, lf->flat))
+            far = idx[k];
+    hol__light_drop(lf, far);
+}
+
+void hol_light_budget(hol_light_frame *lf, const hol_view *v)
+{
+    if (lf->n <= HOL_LIGHT_PER_TILE)
+        return;
+    double c[HOL_VIEW_MAX_BRANCHES][3], fr[9];
+    int nt = 0, idx[HOL_LIGHT_MAX], n;
+    for (int k = 0; k < v->nbranches; k++) {
+        if (hol_hyper_frame(lf->user.tile, lf->user.orient, v->branches[k].state.tile, fr))
+            continue;
+        c[nt][0] = fr[2], c[nt][1] = fr[5], c[nt++][2] = fr[8];
+    }
+    while ((n = hol__over_full(lf, (const double(*)[3])c, nt, idx)) > 0)
+        hol__budget_step(lf, idx, n);
 }

@@ -33,17 +33,29 @@
  *   square of the ray-marchers' default, so the forest stays readable.
  * - A surface at height h with normal n lit by a lantern at height L gets
  *   F(d) (0.3 + 0.7 max(n_y, 0) max(L - h, 0) / d); the shader sums the
- *   tile's lights (render/hol_render_tiles.c). It gets them in the tile's own
+ *   tile's lights (render/hol_render_tiles.c), and maps the lanterns'
+ *   sum S by the tone curve T(S) = S K / (K + S) (Reinhard's, white level
+ *   K = HOL_LIGHT_TONE_K = 1/4: the lanterns' colour times K is (0.75,
+ *   0.56, 0.31), so they light a surface to at most 3/4 of its colour).
+ *   It gets them in the tile's own
  *   frame (the renderer applies the inverse of hol_light_tile's frame), so
  *   for the fragment's Klein point K, cosh x = (l_z - K.l_xy) /
  *   sqrt(1 - |K|^2), the first factor affine in the mesh (the vertex
  *   shader's); sinh x = sqrt(cosh^2 x - 1) by the chord, x = log(cosh x +
  *   sinh x), the window and inverse square from d^2: the same numbers.
- * - A lantern hangs HOL_LIGHT_HEIGHT_M over its tile's centre.
+ * - A lantern hangs HOL_LIGHT_HEIGHT_M over its tile's centre. A carried
+ *   lantern (f->carried) is a round lantern at f->carried_pos: its room
+ *   offset from the user's cell centre is a point of the user's tile (as
+ *   the eye's), at that height; it follows the lanterns (before the
+ *   fireflies), so every tile within reach takes it, through portals;
+ *   at a height other than HOL_LIGHT_HEIGHT_M, fx is at least 1 (the
+ *   programs that take each light's height).
  * - Which lights: hol_light_tile gives a tile up to HOL_LIGHT_PER_TILE
- *   lights, the nearest to its centre among those whose floor distance to
- *   the centre is under R plus the tile's circumradius (so every light
- *   that reaches some point of the tile is chosen while at most 4 do).
+ *   lights, among those whose floor distance to its centre is under R plus
+ *   the tile's circumradius, the lanterns first, then the fireflies, each
+ *   nearest to its centre first (so every light that reaches some point of
+ *   the tile is chosen while at most 4 do; hol_light_budget keeps every
+ *   drawn tile to at most 4 lanterns).
  * - Fireflies (f->fireflies, at dusk and night): over every creek, spring,
  *   pool and flower tile within HOL_LIGHT_FF_STEPS steps of the user's
  *   (the nearest HOL_LIGHT_MAX_FF), one small light; its place in the
@@ -110,8 +122,9 @@
 #define HOL_LIGHT_HEIGHT_M 1.3
 #define HOL_LIGHT_D0_M 1.0
 #define HOL_LIGHT_PHYS 0.5
+#define HOL_LIGHT_TONE_K 0.25 /* the lanterns' sum's white level */
 #define HOL_LIGHT_MAX_FF 16
-#define HOL_LIGHT_MAX (HOL_RENDER_MAX_LANTERNS + HOL_LIGHT_MAX_FF)
+#define HOL_LIGHT_MAX (HOL_RENDER_MAX_LANTERNS + 1 + HOL_LIGHT_MAX_FF)
 #define HOL_LIGHT_FF_STEPS 3
 #define HOL_LIGHT_FF_WEIGHT 0.15
 /* A firefly's sprite: an octahedron of this radius (metres) at its place,
@@ -127,6 +140,7 @@
 #define HOL_SHADOW_EDGE_M 0.02
 
 struct hol_world;
+struct hol_view;
 
 typedef struct hol_light_frame {
     int flat;                 /* {4,4} */
@@ -142,6 +156,8 @@ typedef struct hol_light_frame {
     int n;                    /* lights placed (lanterns, then fireflies) */
     double pos[HOL_LIGHT_MAX][3]; /* their points, user frame */
     double h[HOL_LIGHT_MAX];      /* their heights, metres */
+    double wt[HOL_LIGHT_MAX];     /* their weights: 1, or lanterns merged
+                                     into one (hol_light_budget) */
     uint8_t ff[HOL_LIGHT_MAX];    /* 1: a firefly */
     int nff;                      /* the fireflies' tiles and places (x, z,
                                      height in metres in the tile's own
@@ -181,6 +197,19 @@ typedef struct hol_shadow_set {
  * (hol_hyper_frame fails) is dropped. HOL_EARG: a cell outside 0.5..1.5. */
 hol_err hol_light_prepare(const hol_frame_desc *f, const struct hol_world *w,
                           hol_light_frame *out);
+
+/* The budget (no seams past four lanterns): while some tile of view v has
+ * more than HOL_LIGHT_PER_TILE of lf's lanterns (not fireflies) within
+ * reach (hol_light_tile's rule), one step on the first such tile: its two
+ * nearest round lanterns become one (the weighted mean of the two points
+ * on the hyperboloid, the mean height, the summed weight: every lit
+ * tile's program takes the weights), else (spots) its lantern farthest from
+ * the user leaves. A decision for the whole frame, so every tile takes
+ * every lantern that reaches it (hol_light_tile takes lanterns before
+ * fireflies) and the lanterns' light is continuous across every tile edge;
+ * fireflies fill the slots left, nearest first, so theirs may still step
+ * where lanterns fill a tile (docs/rendering.md#lighting). */
+void hol_light_budget(hol_light_frame *lf, const struct hol_view *v);
 
 /* The index into lf->ff_tile of tile t's firefly, or -1 (none placed). */
 int hol_light_ff_of(const hol_light_frame *lf, hol_tile t);

@@ -214,3 +214,67 @@ void hol_mesh_blob(hol_mesh *m, const float c[3], float sx, float sy, float sz,
             hol__tri(m, base, base + 2, base + 1);
     }
 }
+
+/* The point of edge (a, b) at height y, measured from its lower end (so
+ * two triangles sharing the edge cut it at the same bits); the lower
+ * end's colour and kind, the normal interpolated. */
+static hol_vertex hol__cut(const hol_vertex *a, const hol_vertex *b, float y)
+{
+    const hol_vertex *p = a->pos[1] <= b->pos[1] ? a : b, *q = p == a ? b : a;
+    float t = (y - p->pos[1]) / (q->pos[1] - p->pos[1]);
+    hol_vertex v = *p;
+    for (int k = 0; k < 3; k++) {
+        v.pos[k] = p->pos[k] + t * (q->pos[k] - p->pos[k]);
+        v.nrm[k] = (int8_t)lroundf((float)p->nrm[k] + t * (float)(q->nrm[k] - p->nrm[k]));
+    }
+    v.pos[1] = y;
+    return v;
+}
+
+/* The polygon in (n vertices) clipped to the side of y = c where s (y - c)
+ * >= 0, into out; its vertex count. */
+static int hol__clip_y(const hol_vertex *in, int n, float c, float s, hol_vertex *out)
+{
+    int m = 0;
+    for (int i = 0; i < n; i++) {
+        const hol_vertex *a = &in[i], *b = &in[(i + 1) % n];
+        int ina = s * (a->pos[1] - c) >= 0, inb = s * (b->pos[1] - c) >= 0;
+        if (ina)
+            out[m++] = *a;
+        if (ina != inb)
+            out[m++] = hol__cut(a, b, c);
+    }
+    return m;
+}
+
+void hol_mesh_slice_y(hol_mesh *m, uint32_t first, uint32_t end, const float *ys, int n)
+{
+    for (uint32_t t = first; t + 3 <= end && !m->overflow; t += 3) {
+        hol_vertex tri[3] = {m->v[m->idx[t]], m->v[m->idx[t + 1]], m->v[m->idx[t + 2]]};
+        float lo = fminf(tri[0].pos[1], fminf(tri[1].pos[1], tri[2].pos[1]));
+        float hi = fmaxf(tri[0].pos[1], fmaxf(tri[1].pos[1], tri[2].pos[1]));
+        /* band k lies between ys[k - 1] and ys[k] (none below the first
+         * plane, none above the last); a flat triangle is one band's */
+        for (int k = 0; k <= n; k++) {
+            float b0 = k > 0 ? ys[k - 1] : -INFINITY, b1 = k < n ? ys[k] : INFINITY;
+            if (lo < hi ? hi <= b0 || lo >= b1 : lo < b0 || lo >= b1)
+                continue;
+            hol_vertex mid[4], poly[5];
+            int np = k > 0 ? hol__clip_y(tri, 3, b0, 1, mid) : 3;
+            if (k == 0)
+                memcpy(mid, tri, sizeof tri);
+            np = np < 3 ? 0 : k < n ? hol__clip_y(mid, np, b1, -1, poly) : np;
+            if (k == n && np >= 3)
+                memcpy(poly, mid, (size_t)np * sizeof mid[0]);
+            if (np < 3)
+                continue;
+            int64_t b = hol_mesh_reserve(m, (uint32_t)np, 3u * (uint32_t)(np - 2));
+            if (b < 0)
+                return;
+            memcpy(&m->v[m->nv], poly, (size_t)np * sizeof poly[0]);
+            m->nv += (uint32_t)np;
+            for (int i = 1; i + 1 < np; i++)
+                hol__tri(m, (uint32_t)b, (uint32_t)b + (uint32_t)i, (uint32_t)b + (uint32_t)i + 1);
+        }
+    }
+}

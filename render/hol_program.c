@@ -13,69 +13,118 @@
 #define HOL__STR(x) HOL__STR2(x)
 
 /* The encoding below and the shader's HOL_NIGHT count on these values. */
-_Static_assert(HOL_LIGHT_DAY == 0 && HOL_LIGHT_DUSK == 1 && HOL_LIGHT_NIGHT == 2,
-               "core's hol_app_lighting: day 0, dusk 1, night 2");
+_Static_assert(HOL_LIGHT_DAY == 0 && HOL_LIGHT_DUSK == 1 && HOL_LIGHT_NIGHT == 2 &&
+                   HOL_PROG_CYCLE == 3,
+               "core's hol_app_lighting: day 0, dusk 1, night 2; then the cycle's 3");
 
-/* Slots: [0, 2) day by wedge; [2, 6) the lit room by (lighting, wedge);
- * [6, HOL_PROG_TEXT_SLOT) the lit tiles by (lighting, flat, wedge, fx,
- * shadow pairs / 2), the last varying fastest; then the text program. */
-enum { HOL__DAY0 = 0, HOL__ROOM0 = 2, HOL__TILES0 = 6 };
+/* The key's dimensions: a field, its first value, step and count (a
+ * dimension's index i is the value first + i * step). */
+typedef struct hol__dim {
+    size_t off;
+    int first, step, count;
+} hol__dim;
 
-static int hol__bit(int v)
+enum { HOL__D_LIGHTING, HOL__D_LAMPS, HOL__D_FLAT, HOL__D_WEDGE, HOL__D_FX, HOL__D_SHADOW };
+
+static const hol__dim hol__dims[] = {
+    [HOL__D_LIGHTING] = {offsetof(hol_prog_key, lighting), HOL_LIGHT_DUSK, 1, 3},
+    [HOL__D_LAMPS] = {offsetof(hol_prog_key, lamps), 0, 1, 2},
+    [HOL__D_FLAT] = {offsetof(hol_prog_key, flat), 0, 1, 2},
+    [HOL__D_WEDGE] = {offsetof(hol_prog_key, wedge), 0, 1, 2},
+    [HOL__D_FX] = {offsetof(hol_prog_key, fx), 0, 1, HOL_PROG_FX_COUNT},
+    [HOL__D_SHADOW] = {offsetof(hol_prog_key, shadow_pairs), 0, 2, 3},
+};
+
+/* The program families, in slot order: the fields a family fixes (its
+ * base key; every field not varied must equal the base's) and the
+ * dimensions it varies, the last fastest. A new dimension is a row of
+ * hol__dims and a column of the families that vary it. */
+typedef struct hol__family {
+    hol_prog_key base;
+    int ndim, dim[6];
+} hol__family;
+
+static const hol__family hol__families[] = {
+    {{.lighting = HOL_LIGHT_DAY}, 1, {HOL__D_WEDGE}},                        /* day */
+    {{.room = 1}, 3, {HOL__D_LIGHTING, HOL__D_LAMPS, HOL__D_WEDGE}},         /* the lit room */
+    {{.room = 0},
+     5,
+     {HOL__D_LIGHTING, HOL__D_FLAT, HOL__D_WEDGE, HOL__D_FX, HOL__D_SHADOW}}, /* lit tiles */
+    {{.text = 1}, 0, {0}},                                                   /* the overlays */
+};
+#define HOL__NFAM (int)(sizeof hol__families / sizeof hol__families[0])
+
+static int *hol__field(hol_prog_key *k, size_t off)
 {
-    return v == 0 || v == 1;
+    return (int *)(void *)((char *)k + off);
+}
+
+/* The number of programs in family f. */
+static int hol__family_size(const hol__family *f)
+{
+    int n = 1;
+    for (int d = 0; d < f->ndim; d++)
+        n *= hol__dims[f->dim[d]].count;
+    return n;
+}
+
+/* Whether field off is one family f varies. */
+static int hol__varies(const hol__family *f, size_t off)
+{
+    for (int d = 0; d < f->ndim; d++)
+        if (hol__dims[f->dim[d]].off == off)
+            return 1;
+    return 0;
+}
+
+/* The index of k in family f, or -1 when k is not one of its keys. */
+static int hol__family_index(const hol__family *f, const hol_prog_key *k)
+{
+    static const size_t fields[] = {offsetof(hol_prog_key, lighting), offsetof(hol_prog_key, room),
+                                    offsetof(hol_prog_key, flat), offsetof(hol_prog_key, wedge),
+                                    offsetof(hol_prog_key, fx), offsetof(hol_prog_key, shadow_pairs),
+                                    offsetof(hol_prog_key, text), offsetof(hol_prog_key, lamps)};
+    _Static_assert(sizeof fields / sizeof fields[0] * sizeof(int) == sizeof(hol_prog_key),
+                   "every field of the key");
+    hol_prog_key kc = *k, base = f->base;
+    for (size_t i = 0; i < sizeof fields / sizeof fields[0]; i++)
+        if (!hol__varies(f, fields[i]) && *hol__field(&kc, fields[i]) != *hol__field(&base, fields[i]))
+            return -1;
+    int idx = 0;
+    for (int d = 0; d < f->ndim; d++) {
+        const hol__dim *dm = &hol__dims[f->dim[d]];
+        int v = *hol__field(&kc, dm->off) - dm->first;
+        if (v < 0 || v % dm->step || v / dm->step >= dm->count)
+            return -1;
+        idx = idx * dm->count + v / dm->step;
+    }
+    return idx;
 }
 
 int hol_prog_slot(const hol_prog_key *k)
 {
-    if (!hol__bit(k->room) || !hol__bit(k->flat) || !hol__bit(k->wedge) || !hol__bit(k->text))
-        return -1;
-    if (k->text)
-        return k->lighting || k->room || k->flat || k->wedge || k->fx || k->shadow_pairs
-                   ? -1
-                   : HOL_PROG_TEXT_SLOT;
-    int tiles_only = k->flat || k->fx || k->shadow_pairs;
-    if (k->lighting == HOL_LIGHT_DAY)
-        return k->room || tiles_only ? -1 : HOL__DAY0 + k->wedge;
-    if (k->lighting != HOL_LIGHT_DUSK && k->lighting != HOL_LIGHT_NIGHT)
-        return -1;
-    int night = k->lighting == HOL_LIGHT_NIGHT;
-    if (k->room)
-        return tiles_only ? -1 : HOL__ROOM0 + 2 * night + k->wedge;
-    if (k->fx < 0 || k->fx >= HOL_PROG_FX_COUNT || k->shadow_pairs < 0 || k->shadow_pairs > 4 ||
-        k->shadow_pairs % 2)
-        return -1;
-    int i = ((night * 2 + k->flat) * 2 + k->wedge) * HOL_PROG_FX_COUNT + k->fx;
-    return HOL__TILES0 + i * 3 + k->shadow_pairs / 2;
+    int first = 0;
+    for (int i = 0; i < HOL__NFAM; i++) {
+        int idx = hol__family_index(&hol__families[i], k);
+        if (idx >= 0)
+            return first + idx;
+        first += hol__family_size(&hol__families[i]);
+    }
+    return -1;
 }
 
 hol_prog_key hol_prog_key_of_slot(int slot)
 {
-    hol_prog_key k;
-    memset(&k, 0, sizeof k);
-    if (slot == HOL_PROG_TEXT_SLOT) {
-        k.text = 1;
-        return k;
+    int i = 0;
+    while (i < HOL__NFAM - 1 && slot >= hol__family_size(&hol__families[i]))
+        slot -= hol__family_size(&hol__families[i++]);
+    const hol__family *f = &hol__families[i];
+    hol_prog_key k = f->base;
+    for (int d = f->ndim - 1; d >= 0; d--) {
+        const hol__dim *dm = &hol__dims[f->dim[d]];
+        *hol__field(&k, dm->off) = dm->first + slot % dm->count * dm->step;
+        slot /= dm->count;
     }
-    if (slot < HOL__ROOM0) {
-        k.wedge = slot - HOL__DAY0;
-        return k;
-    }
-    if (slot < HOL__TILES0) {
-        int i = slot - HOL__ROOM0;
-        k.lighting = i / 2 ? HOL_LIGHT_NIGHT : HOL_LIGHT_DUSK;
-        k.room = 1;
-        k.wedge = i % 2;
-        return k;
-    }
-    int i = slot - HOL__TILES0;
-    k.shadow_pairs = i % 3 * 2;
-    i /= 3;
-    k.fx = i % HOL_PROG_FX_COUNT;
-    i /= HOL_PROG_FX_COUNT;
-    k.wedge = i % 2;
-    k.flat = i / 2 % 2;
-    k.lighting = i / 4 ? HOL_LIGHT_NIGHT : HOL_LIGHT_DUSK;
     return k;
 }
 
@@ -91,15 +140,17 @@ int hol_prog_preamble(const hol_prog_key *k, char *out, size_t n)
     int len = snprintf(out, n,
                        "#version 300 es\n#define HOL_LIT %d\n#define HOL_FLAT %d\n"
                        "#define HOL_WEDGE %d\n#define HOL_NIGHT %d\n#define HOL_FX %d\n"
-                       "#define HOL_TEXT %d\n#define HOL_SPREAD %d.0\n"
+                       "#define HOL_TEXT %d\n#define HOL_LAMPS %d\n#define HOL_SPREAD %d.0\n"
                        "#define HOL_SHD %d\n#define HOL_SV %s\n#define HOL_SW %s\n"
                        "#define HOL_TX_ROWS " HOL__STR(HOL_PROG_TX_ROWS) "\n"
                        "#define HOL_LIGHT_D0_M " HOL__STR(HOL_LIGHT_D0_M) "\n"
                        "#define HOL_LIGHT_PHYS " HOL__STR(HOL_LIGHT_PHYS) "\n"
                        "#define HOL_LIGHT_RADIUS_M " HOL__STR(HOL_LIGHT_RADIUS_M) "\n"
-                       "#define HOL_LIGHT_HEIGHT_M " HOL__STR(HOL_LIGHT_HEIGHT_M) "\n",
-                       lit, k->flat, k->wedge, k->lighting == HOL_LIGHT_NIGHT, k->fx, k->text != 0,
-                       m.spread, nsh,
+                       "#define HOL_LIGHT_HEIGHT_M " HOL__STR(HOL_LIGHT_HEIGHT_M) "\n"
+                       "#define HOL_LIGHT_TONE_K " HOL__STR(HOL_LIGHT_TONE_K) "\n",
+                       lit, k->flat, k->wedge,
+                       k->lighting == HOL_PROG_CYCLE ? 2 : k->lighting == HOL_LIGHT_NIGHT, k->fx, k->text != 0,
+                       k->lamps != 0, m.spread, nsh,
                        sv[nsh][0], sv[nsh][1]);
     return len < 0 || (size_t)len >= n ? -1 : len;
 }
@@ -124,11 +175,11 @@ static void hol__uniforms(const hol_gl *gl, hol_prog *pg)
     static const char *const names[] = {"u_vp", "u_model", "u_mode", "u_id", "u_eye",
                                         "u_fog", "u_fogd", "u_lin", "u_wedge", "u_wmode",
                                         "u_light", "u_klein", "u_mpu2", "u_tl", "u_eyeh",
-                                        "u_lonly", "u_tx", "u_ts", "u_atlas"};
+                                        "u_lonly", "u_tx", "u_ts", "u_atlas", "u_amb", "u_sun"};
     GLint *loc[] = {&pg->u_vp, &pg->u_model, &pg->u_mode, &pg->u_id, &pg->u_eye,
                     &pg->u_fog, &pg->u_fogd, &pg->u_lin, &pg->u_wedge, &pg->u_wmode,
                     &pg->u_light, &pg->u_klein, &pg->u_mpu2, &pg->u_tl, &pg->u_eyeh,
-                    &pg->u_lonly, &pg->u_tx, &pg->u_ts, &pg->u_atlas};
+                    &pg->u_lonly, &pg->u_tx, &pg->u_ts, &pg->u_atlas, &pg->u_amb, &pg->u_sun};
     _Static_assert(sizeof names / sizeof names[0] == sizeof loc / sizeof loc[0],
                    "a name per uniform");
     for (size_t i = 0; i < sizeof loc / sizeof loc[0]; i++)

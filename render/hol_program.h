@@ -10,8 +10,10 @@
  * - A key (hol_prog_key) says what varies: the lighting (core's
  *   hol_app_lighting), the lit room's meshes or the lit tiles, the flat
  *   {4,4} grid, the wedge's discard, the lights' effects (fireflies,
- *   spots) and the trunk shadow pairs read. The day program has only the
- *   wedge; the lit room's the lighting and the wedge; the lit tiles' all.
+ *   spots), the trunk shadow pairs read and the lit room's lamps (its
+ *   trees and hedges lantern-lit, or its backdrop on the cheaper path).
+ *   The day program has only the wedge; the lit room's the lighting, the
+ *   lamps and the wedge; the lit tiles' the rest but the lamps.
  *   The text program (text = 1, every other field 0) draws the overlays
  *   (the HUD, the hand's map, the headset's panel): flat colours and the
  *   text face's glyphs from its signed-distance atlas (core/hol_face.h),
@@ -21,7 +23,9 @@
  *   keys and the HOL_PROG_SLOTS slots of a program table (dense: every
  *   slot is a program): slot -> key -> slot is the identity, and a key no
  *   program has (day at night, a room with spots, ...) has slot -1.
- *   Nothing else computes with slot numbers.
+ *   Nothing else computes with slot numbers. The encoding is a table
+ *   (hol_program.c): the families of programs, each a base key and the
+ *   dimensions it varies; a new dimension is a row, not arithmetic.
  * - hol_prog_make compiles and links a key's program through the loaded
  *   GL (render/hol_gl.h) and finds its uniforms (-1: not in it). It waits
  *   for the GL (compile and link status).
@@ -45,13 +49,18 @@ enum {
 };
 
 typedef struct hol_prog_key {
-    int lighting;     /* HOL_LIGHT_DAY, _DUSK, _NIGHT (core/hol_app.h) */
+    int lighting;     /* HOL_LIGHT_DAY, _DUSK, _NIGHT (core/hol_app.h), or
+                       * HOL_PROG_CYCLE: a sky between dusk and night, its
+                       * ambient and sun light uniforms (a lighting cycle) */
     int room;         /* lit: 1 the room's own meshes (no tile code) */
     int flat;         /* lit tiles: the flat {4,4} grid */
     int wedge;        /* discard outside a branch's wedge (hol_view.h) */
     int fx;           /* lit tiles: HOL_PROG_FX_* */
     int shadow_pairs; /* lit tiles: trunk shadow pairs read: 0, 2 or 4 */
     int text;         /* the overlays' program (every other field 0) */
+    int lamps;        /* lit room: 1 its trees and hedges, lantern-lit with
+                       * a Lambert term; 0 its backdrop and outer ground
+                       * (ambient and sun only, the cheaper path) */
 } hol_prog_key;
 
 /* Rows of per-light values a lit tile gives its shaders (u_tx, four
@@ -59,10 +68,13 @@ typedef struct hol_prog_key {
  * HOL_TX_ROWS). */
 #define HOL_PROG_TX_ROWS 7
 
-/* day 2 (wedge), lit room 2 x 2 (lighting, wedge), lit tiles 2 x 2 x 2
- * (lighting, flat, wedge) x HOL_PROG_FX_COUNT x 3 (shadow pairs), text 1:
- * 79 */
-#define HOL_PROG_SLOTS (2 + 4 + 8 * HOL_PROG_FX_COUNT * 3 + 1)
+/* The key's lighting between dusk and night (after HOL_LIGHT_NIGHT). */
+#define HOL_PROG_CYCLE 3
+
+/* day 2 (wedge), lit room 3 x 2 x 2 (lighting, lamps, wedge), lit tiles
+ * 3 x 2 x 2 (lighting, flat, wedge) x HOL_PROG_FX_COUNT x 3 (shadow
+ * pairs), text 1: 123 (render/hol_program.c's table of families) */
+#define HOL_PROG_SLOTS (2 + 12 + 12 * HOL_PROG_FX_COUNT * 3 + 1)
 /* The text program's slot (the last). */
 #define HOL_PROG_TEXT_SLOT (HOL_PROG_SLOTS - 1)
 
@@ -79,7 +91,7 @@ int hol_prog_preamble(const hol_prog_key *key, char *out, size_t n);
 typedef struct hol_prog {
     GLuint prog;
     GLint u_vp, u_model, u_mode, u_id, u_eye, u_fog, u_fogd, u_lin, u_wedge, u_wmode;
-    GLint u_light, u_klein, u_mpu2, u_tl, u_eyeh, u_lonly, u_tx, u_ts, u_atlas;
+    GLint u_light, u_klein, u_mpu2, u_tl, u_eyeh, u_lonly, u_tx, u_ts, u_atlas, u_amb, u_sun;
 } hol_prog;
 
 /* Compile and link key's program into out: 0, or 1 when the GL refused it

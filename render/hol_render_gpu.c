@@ -122,14 +122,35 @@ void hol__frame_faded(hol_render *r, const hol_frame_desc *f)
     r->gl.Disable(GL_SCISSOR_TEST);
 }
 
+/* A lit frame's sky between dusk (0) and night (1). */
+static float hol__night(const hol_frame_desc *f)
+{
+    if (!f->cycle)
+        return f->lighting == HOL_LIGHT_NIGHT ? 1.0f : 0.0f;
+    return f->night <= 0 ? 0.0f : f->night >= 1 ? 1.0f : (float)f->night;
+}
+
+/* The programs' lighting: day, dusk or night, or between them (a cycle's
+ * 0 and 1 take dusk's and night's own programs). */
+static int hol__sky_key(const hol_frame_desc *f)
+{
+    if (!f->lighting || !f->cycle)
+        return f->lighting;
+    float u = hol__night(f);
+    return u <= 0 ? HOL_LIGHT_DUSK : u >= 1 ? HOL_LIGHT_NIGHT : HOL_PROG_CYCLE;
+}
+
 /* The sky of a frame's lighting (day: hol_scene_sky) and its fog density
  * per metre. */
 static float hol__sky(const hol_frame_desc *f, float rgb[3])
 {
     static const float skies[3][3] = {{0, 0, 0}, {0.46f, 0.36f, 0.44f}, {0.03f, 0.04f, 0.08f}};
     if (f->lighting == HOL_LIGHT_DUSK || f->lighting == HOL_LIGHT_NIGHT) {
-        memcpy(rgb, skies[f->lighting], sizeof skies[0]);
-        return f->lighting == HOL_LIGHT_DUSK ? 0.10f : 0.15f;
+        /* a * (1 - u) + b * u: exactly a at 0 and b at 1 */
+        float u = hol__night(f);
+        for (int i = 0; i < 3; i++)
+            rgb[i] = skies[1][i] * (1 - u) + skies[2][i] * u;
+        return 0.10f * (1 - u) + 0.15f * u;
     }
     hol_scene_sky(rgb);
     return 0.06f;
@@ -143,18 +164,65 @@ static void hol__frame_lights(hol_render *r, const hol_frame_desc *f)
     r->gl.Uniform1f(r->pg->u_klein, (float)lf->klein);
     r->gl.Uniform1f(r->pg->u_mpu2, (float)(lf->metres_per_unit * lf->metres_per_unit));
     r->gl.Uniform1f(r->pg->u_eyeh, (float)lf->eye_h);
+    /* the sky's ambient and sun light, dusk's and night's mixed */
+    static const float amb[2][3] = {{0.30f, 0.26f, 0.28f}, {0.07f, 0.08f, 0.13f}};
+    static const float sun[2][3] = {{0.28f, 0.17f, 0.11f}, {0.05f, 0.06f, 0.10f}};
+    float u = hol__night(f), a[3], s[3];
+    for (int i = 0; i < 3; i++) {
+        a[i] = amb[0][i] * (1 - u) + amb[1][i] * u;
+        s[i] = sun[0][i] * (1 - u) + sun[1][i] * u;
+    }
+    r->gl.Uniform3f(r->pg->u_amb, a[0], a[1], a[2]);
+    r->gl.Uniform3f(r->pg->u_sun, s[0], s[1], s[2]);
+}
+
+/* The room's meshes (trees, hedges) take the lanterns of the room's cells
+ * (u_tl: the cells' centres' x, z in room metres, the lights' heights,
+ * their weights; up to four): a lantern's cell is the one whose tile, by
+ * the room walk columns first then rows (as the vertex trees are chosen:
+ * render/hol_scene.c), is the lantern's tile. The shader measures a point
+ * in the Klein frame of that cell's tile (docs/rendering.md#lighting). */
+static void hol__room_lights(hol_render *r, const hol_frame_desc *f)
+{
+    float tl[4][4] = {{1e4f, 1e4f, 1e4f, 1e4f}, {1e4f, 1e4f, 1e4f, 1e4f}, {0}, {0}};
+    double m = f->cell_m > 0 ? f->cell_m : 1.0;
+    int n = 0, cols = hol_room_cols(&f->user), rows = hol_room_rows(&f->user);
+    for (int c = 0; c < cols && n < 4; c++)
+        for (int w = 0; w < rows && n < 4; w++) {
+            hol_room st = f->user;
+            int ok = 1;
+            while (ok && st.col != c)
+                ok = hol_room_step(&st, st.col < c ? HOL_DIR_E : HOL_DIR_W) == HOL_OK;
+            while (ok && st.row != w)
+                ok = hol_room_step(&st, st.row < w ? HOL_DIR_S : HOL_DIR_N) == HOL_OK;
+            for (int o = 0; ok && o < f->nlanterns && o < HOL_RENDER_MAX_LANTERNS && n < 4; o++)
+                if (hol_tile_eq(f->lanterns[o], st.tile)) {
+                    tl[0][n] = (float)((c + 0.5) * m);
+                    tl[1][n] = (float)((w + 0.5) * m);
+                    tl[2][n] = (float)HOL_LIGHT_HEIGHT_M;
+                    tl[3][n++] = 1;
+                    break;
+                }
+        }
+    if (f->carried && n < 4) { /* the carried lantern, where it is */
+        tl[0][n] = (float)f->carried_pos[0];
+        tl[1][n] = (float)f->carried_pos[2];
+        tl[2][n] = (float)f->carried_pos[1];
+        tl[3][n++] = 1;
+    }
+    r->gl.Uniform4fv(r->pg->u_tl, 4, &tl[0][0]);
 }
 
 /* The programs a lit frame uses, in the order their per-frame uniforms
  * are set (the tiles' with up to four shadow pairs current at the end). */
-static const int hol__lit_uses[4] = {HOL__USE_TILES2, HOL__USE_TILES0, HOL__USE_ROOM,
-                                     HOL__USE_TILES4};
+static const int hol__lit_uses[5] = {HOL__USE_TILES2, HOL__USE_TILES0, HOL__USE_BACK,
+                                     HOL__USE_ROOM, HOL__USE_TILES4};
 
 /* The programs frame f uses, n of them (day: one). */
 static const int *hol__frame_uses(const hol_frame_desc *f, int *n)
 {
     static const int day[1] = {HOL__USE_DAY};
-    *n = f->lighting ? 4 : 1;
+    *n = f->lighting ? 5 : 1;
     return f->lighting ? hol__lit_uses : day;
 }
 
@@ -170,8 +238,9 @@ hol_prog *hol__frame_prog(hol_render *r, const hol_frame_desc *f, int use)
         return &r->progs[HOL_PROG_TEXT_SLOT];
     k.wedge = r->view.wedges != 0;
     if (use != HOL__USE_DAY) {
-        k.lighting = f->lighting;
-        k.room = use == HOL__USE_ROOM;
+        k.lighting = hol__sky_key(f);
+        k.room = use == HOL__USE_ROOM || use == HOL__USE_BACK;
+        k.lamps = use == HOL__USE_ROOM;
     }
     if (use >= HOL__USE_TILES0) {
         k.flat = r->lights.flat != 0;
@@ -254,9 +323,12 @@ void hol__frame_begin(hol_render *r, const hol_frame_desc *f, float vp[16])
         r->gl.Uniform1f(r->pg->u_fogd, fogd);
         r->gl.Uniform1i(r->pg->u_lin, r->desc.srgb != 0);
         r->gl.Uniform1i(r->pg->u_wmode, 0);
-        r->gl.Uniform1i(r->pg->u_light, uses[i] == HOL__USE_ROOM ? 2 : 0);
+        int room = uses[i] == HOL__USE_ROOM || uses[i] == HOL__USE_BACK;
+        r->gl.Uniform1i(r->pg->u_light, room ? 2 + r->lights.flat : 0);
         if (f->lighting)
             hol__frame_lights(r, f);
+        if (uses[i] == HOL__USE_ROOM)
+            hol__room_lights(r, f);
     }
 }
 
@@ -317,8 +389,8 @@ static void hol__set_pass_as(hol_render *r, const hol_frame_desc *f, int pass, c
         r->gl.Uniform4f(r->pg->u_id, 0, 0, 0, 1);
         if (pass == HOL__PASS_ROOM)
             r->gl.UniformMatrix4fv(r->pg->u_model, 1, GL_FALSE, ident);
-        if (f->lighting) /* the tile pass sets it per tile */
-            r->gl.Uniform1i(r->pg->u_light, 2);
+        if (f->lighting) /* the tile pass sets it per tile; 3: a flat room */
+            r->gl.Uniform1i(r->pg->u_light, 2 + (pass == HOL__PASS_ROOM && r->lights.flat));
         break;
     case HOL__PASS_HAND:
         /* in the world: hidden where the scene is nearer; its coplanar
@@ -377,9 +449,10 @@ static void hol__text_prog(hol_render *r, const hol_frame_desc *f)
 }
 
 /* The GL state of a pass: at dusk and night the room's meshes take the
- * program without tile code, and the tile pass's state goes to both tile
- * programs (with trunk shadows, current at the end, and without); the
- * overlays take the text program. */
+ * programs without tile code (its trees and hedges lantern-lit, its
+ * backdrop on the cheaper path: both get the pass's state), and the tile
+ * pass's state goes to both tile programs (with trunk shadows, current at
+ * the end, and without); the overlays take the text program. */
 static void hol__set_pass(hol_render *r, const hol_frame_desc *f, int pass, const float vp[16])
 {
     if (pass >= HOL__PASS_HAND && r->progs[HOL_PROG_TEXT_SLOT].prog) {
@@ -390,6 +463,8 @@ static void hol__set_pass(hol_render *r, const hol_frame_desc *f, int pass, cons
     static const int tiles[2] = {HOL__USE_TILES0, HOL__USE_TILES2};
     for (int k = 0; k < 2 && f->lighting && pass == HOL__PASS_TILE; k++)
         hol__set_pass_as(r, f, pass, vp, hol__frame_prog(r, f, tiles[k]));
+    if (f->lighting && pass == HOL__PASS_ROOM)
+        hol__set_pass_as(r, f, pass, vp, hol__frame_prog(r, f, HOL__USE_BACK));
     int last = pass == HOL__PASS_ROOM ? HOL__USE_ROOM : HOL__USE_TILES4;
     hol__set_pass_as(r, f, pass, vp, f->lighting ? hol__frame_prog(r, f, last) : NULL);
 }
@@ -456,6 +531,13 @@ void hol__execute(hol_render *r, const hol_frame_desc *f, const float vp[16],
                                 0, 1);
             }
             st->branches += !it->dyn; /* a firefly's sprite is no branch */
+        } else if (cur_pass == HOL__PASS_ROOM && f->lighting) {
+            hol_prog *want = hol__frame_prog(r, f, it->lamps ? HOL__USE_ROOM : HOL__USE_BACK);
+            if (want != r->pg) {
+                r->pg = want;
+                r->gl.UseProgram(want->prog);
+                st->state_changes++;
+            }
         } else if (cur_pass == HOL__PASS_HAND || cur_pass == HOL__PASS_PANEL) {
             r->gl.UniformMatrix4fv(r->pg->u_model, 1, GL_FALSE, it->model);
         }

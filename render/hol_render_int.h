@@ -93,6 +93,7 @@ typedef struct hol__item {
     float tx[HOL_PROG_TX_ROWS][4];
     float ts[13][4]; /* u_ts: its trunk shadow pairs (hol__item_shadows) */
     int8_t nsh;      /* how many (0: the programs without shadows) */
+    uint8_t lamps;   /* the lit room: 1 trees and hedges, 0 the backdrop */
     uint32_t first, count; /* index range */
     float model[16];
 } hol__item;
@@ -129,6 +130,8 @@ struct hol_render {
     double room_cell;
     struct hol_world *room_world;
     uint32_t room_nidx;
+    uint32_t room_back[2]; /* its backdrop's index range (hol_scene_room) */
+    uint32_t room_lit[4];  /* its lit copies' ranges (hol__room_slices) */
     int hud_valid;
     uint64_t hud_key;
     uint32_t hud_nidx;
@@ -149,7 +152,8 @@ struct hol_render {
  * night the room's and the tiles' by the shadow pairs they read. */
 enum {
     HOL__USE_DAY = 0,
-    HOL__USE_ROOM,
+    HOL__USE_ROOM,   /* the room's trees and hedges, lantern-lit */
+    HOL__USE_BACK,   /* its backdrop and outer ground: ambient and sun */
     HOL__USE_TILES0, /* lit tiles without shadow pairs */
     HOL__USE_TILES2, /* up to two */
     HOL__USE_TILES4, /* up to four */

@@ -190,8 +190,8 @@ static void hol__item_lights(hol_render *r, hol__item *it, hol_tile t)
         }
         it->tx[3][k] = i >= 0 ? (float)lf->ssin[i] : -2.0f;
         it->tx[4][k] = i >= 0 ? (float)lf->h[i] : (float)HOL_LIGHT_HEIGHT_M;
-        it->tx[5][k] = i >= 0 && !lf->ff[i] ? 1.0f : 0.0f;
-        it->tx[6][k] = i >= 0 && lf->ff[i] ? (float)HOL_LIGHT_FF_WEIGHT : 0.0f;
+        it->tx[5][k] = i >= 0 && !lf->ff[i] ? (float)lf->wt[i] : 0.0f;
+        it->tx[6][k] = i >= 0 && lf->ff[i] ? (float)(HOL_LIGHT_FF_WEIGHT * lf->wt[i]) : 0.0f;
     }
     hol__tile_slot(inv, r->lights.eye, flat, it->tl[3]);
     it->tl[3][3] = 0;

@@ -194,6 +194,17 @@ typedef struct hol_frame_desc {
      * and night (with desc.world; they circle with time_s), each a light
      * and a small glowing sprite at its place (not with HOL_RENDER_BARE). */
     int fireflies;
+    /* The sky between dusk and night (core's hol_app_view.night): with
+     * cycle 1, night in 0..1 (0 dusk, 1 night) mixes the two skies (their
+     * colour, fog, ambient and sun; lighting a lit one); cycle 0: the
+     * lighting's own sky. */
+    int cycle;
+    double night;
+    /* 1: a carried lantern at carried_pos (room metres: its x, height and
+     * z), lit at dusk and night like a placed one, in the room and every
+     * tile through the portals (render/hol_light.h). */
+    int carried;
+    double carried_pos[3];
     /* The headset's panel (HOL_RENDER_PANEL): its centre panel_pos (room
      * coordinates), turned by the unit quaternion panel_orient (x, y, z, w;
      * unturned it faces +z, up +y), one font pixel panel_px metres (0:

@@ -332,7 +332,7 @@ static void hol__hedges(hol_mesh *out, float W, float D)
 }
 
 void hol_scene_room(const hol_scene *s, hol_mesh *out, const hol_room *user,
-                    struct hol_world *world, double cell_m)
+                    struct hol_world *world, double cell_m, uint32_t out_backdrop[2])
 {
     int cols = hol_room_cols(user), rows = hol_room_rows(user);
     float m = cell_m > 0 ? (float)cell_m : 1.0f;
@@ -345,8 +345,13 @@ void hol_scene_room(const hol_scene *s, hol_mesh *out, const hol_room *user,
             hol_mesh_append(out, &s->tpl[tr.kind & 3], p);
         }
     float W = (float)cols * m, D = (float)rows * m;
+    uint32_t back0 = out->ni;
     hol__outer_ground(out, W, D);
     hol__backdrop(s, out, W, D);
+    if (out_backdrop) {
+        out_backdrop[0] = back0;
+        out_backdrop[1] = out->ni;
+    }
     hol__hedges(out, W, D);
 }
 

@@ -35,9 +35,12 @@ void hol_scene_destroy(const hol_alloc *a, hol_scene *s);
 /* Trees on the (C+1)(R+1) room vertices, the boundary hedges and the
  * backdrop forest, for the user's C x R room of cell_m metres (0: 1). The tree kinds come from the world when given: each room vertex
  * as a corner of the adjacent cell nearest the user's cell, reached by the
- * room walk columns first (a function of the user's state only). */
+ * room walk columns first (a function of the user's state only).
+ * out_backdrop (NULL: not wanted) receives the index range [first, end)
+ * of the outer ground and the backdrop forest (lit by no lantern: the
+ * renderer draws it on the cheaper path at dusk and night). */
 void hol_scene_room(const hol_scene *s, hol_mesh *out, const hol_room *user,
-                    struct hol_world *world, double cell_m);
+                    struct hol_world *world, double cell_m, uint32_t out_backdrop[2]);
 
 /* The mark of the tree on room vertex (vx, vz) (hol_frame_desc.tree_marked):
  * two glowing bands round its trunk and a glowing ring round its foot, in

@@ -503,6 +503,72 @@ static void test_level_lang(void **state)
     hol_app_destroy(app);
 }
 
+/* Issue 38: the carried lantern (`lantern carried`) hangs
+ * HOL_APP_CARRIED_DROP_M under the head at its x and z, in the room's
+ * frame every frame; in the tile's frame (its offset from the user's cell
+ * centre, which the renderer maps into the user's tile) it follows the
+ * head across a room step into the next tile. `lighting cycle 10`: the sky
+ * goes from dusk (0) to night (1) over the level's first 10 s, then stays
+ * night; without a cycle night is the lighting's own. */
+static void test_carried_lantern_and_cycle(void **state)
+{
+    (void)state;
+    hol_app *app = make_app();
+    const hol_app_view *v = hol_app_get_view(app);
+    hol_app_level L;
+    hol_level_err e;
+    assert_int_equal(parse_level("mode explore\nlighting cycle 10\nlantern carried\n", &L, &e),
+                     HOL_OK);
+    assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    /* the head walks north from the middle cell's centre into the next
+     * cell (a room step: the tile north of the start) */
+    double t = 0;
+    hol_tile start = v->user.tile, north;
+    assert_int_equal(hol_tile_step(start, HOL_DIR_N, &north, NULL), HOL_OK);
+    int stepped = 0;
+    for (int i = 0; i <= 20; i++) {
+        hol_input in = tracked_at(t, 1, 1);
+        in.head.pos[0] = 1.5f + 0.01f * (float)i;
+        in.head.pos[2] = 1.5f - 0.05f * (float)i;
+        step(app, in);
+        assert_int_equal(v->lighting, HOL_LIGHT_DUSK);
+        assert_true(v->carried);
+        assert_true(fabs(v->carried_pos[0] - in.head.pos[0]) < 1e-6);
+        assert_true(fabs(v->carried_pos[1] - (1.6 - HOL_APP_CARRIED_DROP_M)) < 1e-6);
+        assert_true(fabs(v->carried_pos[2] - in.head.pos[2]) < 1e-6);
+        /* the tile's frame: the offset from the user's cell centre */
+        double m = v->cell_m > 0 ? v->cell_m : 1;
+        double ox = v->carried_pos[0] - (v->user.col + 0.5) * m;
+        double oz = v->carried_pos[2] - (v->user.row + 0.5) * m;
+        assert_true(fabs(ox) <= 0.5 * m + 1e-9 && fabs(oz) <= 0.5 * m + 1e-9);
+        if (in.head.pos[2] > 1.0f + 1e-4f) {
+            assert_true(hol_tile_eq(v->user.tile, start));
+            assert_true(fabs(oz - (in.head.pos[2] - 1.5)) < 1e-6);
+        } else if (in.head.pos[2] < 1.0f - 1e-4f) {
+            stepped = 1;
+            assert_true(hol_tile_eq(v->user.tile, north));
+            assert_true(fabs(oz - (in.head.pos[2] - 0.5)) < 1e-6);
+        }
+        assert_true(fabs(ox - (in.head.pos[0] - 1.5)) < 1e-6);
+        /* the sky: the level's clock over the cycle's seconds */
+        double want = v->hud.elapsed_s / 10;
+        assert_true(fabs(v->night - (want > 1 ? 1 : want)) < 1e-9);
+        t += 0.75;
+    }
+    assert_true(stepped);
+    assert_true(v->night == 1); /* 15 s: night, and it stays */
+    assert_int_equal(parse_level("mode explore\nlighting night\n", &L, &e), HOL_OK);
+    assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    step(app, tracked_at(t += 0.1, 1, 1));
+    assert_true(v->night == 1);
+    assert_false(v->carried);
+    assert_int_equal(parse_level("mode explore\nlighting dusk\n", &L, &e), HOL_OK);
+    assert_int_equal(hol_app_start_level(app, &L), HOL_OK);
+    step(app, tracked_at(t += 0.1, 1, 1));
+    assert_true(v->night == 0);
+    hol_app_destroy(app);
+}
+
 /* Issue 37: a lesson in German: its question, choices, walk and check in
  * the view's language, the logged choice the English one; lesson 6's hint
  * on request: the walk's prompt names the menu's button, the menu shows
@@ -2225,6 +2291,7 @@ int main(void)
         cmocka_unit_test(test_captions),
         cmocka_unit_test(test_level_lang),
         cmocka_unit_test(test_lesson_lang),
+        cmocka_unit_test(test_carried_lantern_and_cycle),
         cmocka_unit_test(test_lighting_in_view),
         cmocka_unit_test(test_objectives_on_free_tiles),
         cmocka_unit_test(test_tutorial),

@@ -128,6 +128,14 @@ static void test_lighting_lines(void **state)
     assert_int_equal(L.lantern_spot[1], 0);
     assert_int_equal(L.lantern_spot[2], 1);
     assert_int_equal(L.lantern_spot[3], 4);
+    /* lighting cycle SECONDS: dusk, turning to night over that time; a
+     * carried lantern (issue 38) */
+    assert_int_equal(L.lighting_cycle_s, 0);
+    assert_int_equal(L.lantern_carried, 0);
+    assert_int_equal(parse("mode explore\nlighting cycle 90\nlantern carried\n", &L, err), 0);
+    assert_int_equal(L.lighting, HOL_LIGHT_DUSK);
+    assert_true(L.lighting_cycle_s == 90);
+    assert_int_equal(L.lantern_carried, 1);
     /* lang en|de|nl (issue 37): 1 + the language; none: 0, the app's */
     assert_int_equal(parse("mode explore\n", &L, err), 0);
     assert_int_equal(L.lang, 0);
@@ -147,6 +155,14 @@ static void test_lighting_lines(void **state)
         {"mode explore\nlang de\nlang en\n", "line 3: 'lang' is given twice", HOL_EARG},
         {"mode explore\nlighting day night\n", "line 2: unknown key or wrong value count",
          HOL_EPARSE},
+        {"mode explore\nlighting cycle\n", "line 2: lighting cycle takes SECONDS in 1..86400",
+         HOL_EPARSE},
+        {"mode explore\nlighting cycle 0\n", "line 2: lighting cycle takes SECONDS", HOL_EPARSE},
+        {"mode explore\nlighting cycle 86401\n", "line 2: lighting cycle takes SECONDS",
+         HOL_ERANGE},
+        {"mode explore\nlantern held\n", "line 2: lantern 'held' is not carried", HOL_EPARSE},
+        {"mode explore\nlantern carried\nlantern carried\n", "line 3: 'lantern' is given twice",
+         HOL_EARG},
         {"mode explore\nplace lantern Nx\n", "line 2: 'Nx' is not a canonical address",
          HOL_EPARSE},
         {"mode explore\nplace lantern N spot up\n",

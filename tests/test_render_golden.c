@@ -25,6 +25,7 @@
 
 #include <cmocka.h>
 
+#include "../core/hol_app.h"
 #include "../core/hol_room.h"
 #include "../core/hol_tile.h"
 #include "../core/hol_world.h"
@@ -66,6 +67,11 @@ typedef struct golden_view {
      * pointing ray from the right, 2 two tracked hands (tests/
      * hand_fixture.h), held below the eye (golden_body) */
     int body;
+    /* the carried lantern (render/hol_light.h): 1 at the eye's x and z,
+     * HOL_APP_CARRIED_DROP_M below it; a lighting cycle: cycle 1 and
+     * night the sky between dusk (0) and night (1) */
+    int carried, cycle;
+    double night;
 } golden_view;
 
 /* the day views leave lighting and lanterns out (zero: day, none) */
@@ -118,6 +124,17 @@ static const golden_view views[] = {
      {"-", "WS", "SW", "SSW"}, 1, {0, 5, 2, 1}},
     {"q6_night_fx", "NE", {2.4, 1.6, 0.6}, 135, -25, 90, 0, 6, 0, 0, 0, HOL_LIGHT_NIGHT,
      {"-", "WS", "SW", "SSW"}, 1, {0, 5, 2, 1}},
+    /* a carried lantern at night (no lantern placed): its light on the
+     * user's tile and through the portals on the tiles beyond; the same
+     * in {4,4}; a lighting cycle half-way from dusk to night, the lanterns
+     * of q5_dusk */
+    {.name = "q5_night_carried", .walk = "NE", .eye = {2.4, 1.6, 0.6}, .yaw = 135, .pitch = -50,
+     .fov = 90, .q = 5, .lighting = HOL_LIGHT_NIGHT, .carried = 1},
+    {.name = "q4_night_carried", .walk = "NE", .eye = {2.4, 1.6, 0.6}, .yaw = 135, .pitch = -50,
+     .fov = 90, .q = 4, .lighting = HOL_LIGHT_NIGHT, .carried = 1},
+    {.name = "q5_cycle_half", .walk = "NE", .eye = {2.4, 1.6, 0.6}, .yaw = 135, .pitch = -25,
+     .fov = 90, .q = 5, .lighting = HOL_LIGHT_DUSK, .lanterns = {"-", "WS", "SW", "SSW"},
+     .cycle = 1, .night = 0.5},
     /* a questionnaire item on the HUD (the map off): ? % < " ' and lower
      * case in the text face */
     {"ask_item", "-", {1.5, 1.6, 1.5}, 0, -30, 90, HOL_RENDER_HUD_TEXT, 0, 0, 0, 0, 0, {0}, 0,
@@ -219,6 +236,12 @@ static void render_with(hol_render *rr, const golden_view *g, uint8_t *rgba)
         f.lanterns[f.nlanterns++] = u.tile;
     }
     f.fireflies = g->fireflies;
+    f.cycle = g->cycle;
+    f.night = g->night;
+    f.carried = g->carried;
+    f.carried_pos[0] = g->eye[0];
+    f.carried_pos[1] = g->eye[1] - HOL_APP_CARRIED_DROP_M;
+    f.carried_pos[2] = g->eye[2];
     memcpy(f.cam.eye, g->eye, sizeof f.cam.eye);
     f.cam.yaw_deg = g->yaw;
     f.cam.pitch_deg = g->pitch;

@@ -39,6 +39,12 @@
  *   them on at the level's clock.
  * - test_firefly_sprites: each firefly's sprite where the test's camera
  *   projects its place, in both eyes of a pair.
+ * - test_trunk_lambert: a trunk 0.71 m from a lantern in {4,4} takes its
+ *   light with a Lambert term, face by face as the model's prism says,
+ *   lit but not clipped white.
+ * - test_night_darker_than_day: with the lanterns' sum tone-mapped
+ *   (docs/rendering.md#tone-map; the model's tone()), dusk and night
+ *   views among lit trunks are darker than day.
  */
 #include <math.h>
 #include <setjmp.h>
@@ -56,6 +62,7 @@
 #include "../core/hol_room.h"
 #include "../core/hol_tile.h"
 #include "../core/hol_world.h"
+#include "../core/hol_app.h"
 #pragma GCC diagnostic ignored "-Wunused-function" /* model.h helpers not used here */
 #include "model.h"
 #include "render_fixture.h"
@@ -71,6 +78,7 @@
 #define HEIGHT 1.3
 #define D0 1.0
 #define PHYS 0.5
+#define TONE_K 0.25 /* the lanterns' sum's white level */
 #define FOG_NIGHT 0.15
 #define FOG_DUSK 0.10
 #define SPOT_TILT 45.0
@@ -284,6 +292,13 @@ static double lantern_term(double floor_metres, double x_units)
     double s = model_q == 4 || x_units < 1e-9 ? 1 : x_units / sinh(x_units);
     double e = d / D0;
     return w * (1 - PHYS + PHYS * s) / (1 + e * e) * (0.3 + 0.7 * HEIGHT / d);
+}
+
+/* The tone curve of the lanterns' sum (docs/rendering.md#tone-map):
+ * Reinhard's, l K / (K + l), slope 1 at 0 and never above K. */
+static double tone(double l)
+{
+    return l * TONE_K / (TONE_K + l);
 }
 
 typedef struct scene {
@@ -528,9 +543,9 @@ static int model_pixel_sf(const light_case *c, const scene *s, int x, int y, dou
         if (sf)
             sf[i] = sh;
     }
-    out[0] = lam < 1 ? lam : 1;
+    out[0] = tone(lam);
     out[1] = fog_model(c, h, s->eye);
-    out[2] = lam0 < 1 ? lam0 : 1;
+    out[2] = tone(lam0);
     return 1;
 }
 
@@ -703,7 +718,7 @@ static void test_flat_equals_euclid(void **state)
                 double de = hypot(hypot(p[0] - c->eye[0], p[1] - c->eye[2]), c->eye[1]);
                 double fd = de * (c->dusk ? FOG_DUSK : FOG_NIGHT);
                 const uint8_t *q = px + 4 * (y * W + x);
-                double want[3] = {fmin(lam, 1), exp(-fd * fd), fmin(lam0, 1)};
+                double want[3] = {tone(lam), exp(-fd * fd), tone(lam0)};
                 shadow_check(&sc, q, want, on_cell_edge(c, x, y));
                 lit += lam > 0.05;
                 checked++;
@@ -1003,6 +1018,184 @@ static void test_lantern_through_portal(void **state)
            far_lit, far_model);
     assert_true(far_lit > 100);
     assert_true(abs(far_lit - far_model) < far_model / 50 + 5);
+}
+
+/* Issue 38: a carried lantern (hol_frame_desc.carried, room metres) is a
+ * light at its offset from the user's cell centre in the user's tile, at
+ * its height: the model puts a lantern there by its own Klein map, and
+ * every floor pixel (the user's tile and the tiles through the portals)
+ * is the model's light, trunk shadows and all, in {4,4}, {4,5} and {4,8}. */
+static void test_carried_lantern(void **state)
+{
+    (void)state;
+    static const light_case cs[] = {
+        {"-", {1.5, 1.6, 1.9}, 0, -30, 5, 3, 3, 1, {"", NULL, NULL, NULL}, 0},
+        {"-", {1.5, 1.6, 1.9}, 0, -30, 4, 3, 3, 1, {"", NULL, NULL, NULL}, 0},
+        {"NE", {2.4, 1.6, 0.6}, 135, -35, 8, 3, 3, 1, {"", NULL, NULL, NULL}, 1},
+    };
+    static uint8_t px[W * H * 4];
+    static int ids[W * H];
+    for (size_t k = 0; k < sizeof cs / sizeof cs[0]; k++) {
+        const light_case *c = &cs[k];
+        scene s;
+        make_scene(c, &s);
+        /* carried at the eye's x and z, 0.3 m below it */
+        int col = (int)floor(c->eye[0] / c->cell), row = (int)floor(c->eye[2] / c->cell);
+        klein_point(c->cell, c->eye[0] - (col + 0.5) * c->cell,
+                    c->eye[2] - (row + 0.5) * c->cell, s.lant[0]);
+        make_trunks(c, &s);
+        s.f.nlanterns = 0;
+        s.f.carried = 1;
+        s.f.carried_pos[0] = c->eye[0];
+        s.f.carried_pos[1] = c->eye[1] - HOL_APP_CARRIED_DROP_M;
+        s.f.carried_pos[2] = c->eye[2];
+        assert_true(fabs(s.f.carried_pos[1] - HEIGHT) < 1e-9);
+        hol_light_frame lf;
+        assert_int_equal(hol_light_prepare(&s.f, NULL, &lf), HOL_OK);
+        assert_int_equal(lf.n, 1);
+        for (int r = 0; r < 3; r++) /* the eye's point: the same x and z */
+            assert_true(fabs(lf.pos[0][r] - lf.eye[r]) < 1e-9);
+        branch_ids(&s, ids);
+        hol_view v = *hol_render_last_view(fx.rnd);
+        render(&s, HOL_RENDER_BARE | HOL_RENDER_LIGHT_ONLY, px);
+        int near = 0, far = 0, bad = 0, n = 0;
+        for (int y = 0; y < H; y++)
+            for (int x = 0; x < W; x++) {
+                int b = ids[y * W + x];
+                double want[3];
+                if (b < 0 || on_cell_edge(c, x, y) || !model_pixel(c, &s, x, y, want))
+                    continue;
+                int got = px[4 * (y * W + x)];
+                n++;
+                bad += fabs(got - 255 * want[0]) > TOL;
+                if (got > 0.05 * 255)
+                    *(v.branches[b].nsteps ? &far : &near) += 1;
+            }
+        printf("carried case %zu: %d floor pixels, %d lit on the user's tile, %d through the "
+               "portals, %d off the model\n", k, n, near, far, bad);
+        assert_true(near > 100 && far > 100);
+        assert_true(bad <= n / 200); /* shadow edges the raster rounds */
+    }
+}
+
+/* Issue 38: eight lanterns round one vertex (more than a tile's four
+ * light slots reach the tiles there) leave no seam: over every pixel pair
+ * across a cell edge (one branch the other plus the step across it) the
+ * step is no larger than the light's own steps just before and after it
+ * inside each tile (a kink is allowed, a jump is not), and the largest
+ * step across the edges is no larger than the largest inside a tile
+ * (pixels within 0.15 m of a vertex left out: the trunk's foot, hidden
+ * by the trunk in a frame that is not bare). In {4,5} (five tiles at the
+ * vertex), {4,4} and {4,6}, at night. */
+/* Does pixel (x, y) see the floor within 0.15 m of a vertex (its trunk's
+ * foot, hidden by the trunk when not bare: r + e is 0.11 m)? */
+static int near_vertex(const light_case *c, int x, int y)
+{
+    double p[2];
+    if (!floor_point(c, x + 0.5, y + 0.5, p))
+        return 1;
+    double dx = p[0] - c->cell * floor(p[0] / c->cell + 0.5);
+    double dz = p[1] - c->cell * floor(p[1] / c->cell + 0.5);
+    return hypot(dx, dz) < 0.15;
+}
+
+static void test_eight_lanterns_no_seams(void **state)
+{
+    (void)state;
+    static const char *const walks[8] = {"", "N", "W", "NW", "WN", "E", "S", "NE"};
+    static const int qs[3] = {5, 4, 6};
+    static uint8_t px[W * H * 4];
+    static int ids[W * H];
+    for (int k = 0; k < 3; k++) {
+        light_case c = {"-", {1.9, 1.6, 1.9}, 45, -40, qs[k], 3, 3, 1, {NULL}, 0};
+        scene s;
+        make_scene(&c, &s);
+        s.f.nlanterns = 0;
+        for (int i = 0; i < 8; i++) {
+            hol_room u = s.f.user;
+            for (const char *p = walks[i]; *p; p++)
+                assert_int_equal(hol_room_step(&u, hol_dir_from_char(*p)), HOL_OK);
+            int dup = 0;
+            for (int j = 0; j < s.f.nlanterns; j++)
+                dup |= hol_tile_eq(s.f.lanterns[j], u.tile);
+            if (!dup)
+                s.f.lanterns[s.f.nlanterns++] = u.tile;
+        }
+        assert_true(s.f.nlanterns >= 7);
+        branch_ids(&s, ids);
+        hol_view v = *hol_render_last_view(fx.rnd);
+        render(&s, HOL_RENDER_BARE | HOL_RENDER_LIGHT_ONLY, px);
+        int pairs = 0, worst_jump = 0, max_across = 0, max_inside = 0, lit = 0;
+        for (int y = 1; y + 2 < H; y++)
+            for (int x = 1; x + 2 < W; x++)
+                for (int d = 0; d < 2; d++) {
+                    int st = d ? W : 1, i0 = y * W + x, a = ids[i0], b = ids[i0 + st];
+                    if (a < 0 || b < 0)
+                        continue;
+                    int v1 = px[4 * i0], v2 = px[4 * (i0 + st)];
+                    if (a == b && !near_vertex(&c, x, y) && !near_vertex(&c, x + !d, y + d)) {
+                        max_inside = abs(v2 - v1) > max_inside ? abs(v2 - v1) : max_inside;
+                        continue;
+                    }
+                    if (a == b)
+                        continue;
+                    if (!one_step_apart(&v, a, b) || ids[i0 - st] != a || ids[i0 + 2 * st] != b)
+                        continue;
+                    int xs = x - (d ? 0 : 1), ys = y - (d ? 1 : 0), near = 0;
+                    for (int e = 0; e < 4; e++)
+                        near |= near_vertex(&c, xs + (d ? 0 : e), ys + (d ? e : 0));
+                    if (near)
+                        continue;
+                    int v0 = px[4 * (i0 - st)], v3 = px[4 * (i0 + 2 * st)];
+                    int jump = v2 - v1, lo = v1 - v0 < v3 - v2 ? v1 - v0 : v3 - v2;
+                    int hi = v1 - v0 > v3 - v2 ? v1 - v0 : v3 - v2;
+                    int over = jump > hi ? jump - hi : jump < lo ? lo - jump : 0;
+                    worst_jump = over > worst_jump ? over : worst_jump;
+                    max_across = abs(jump) > max_across ? abs(jump) : max_across;
+                    pairs++;
+                    lit += v1 > 12;
+                }
+        printf("eight lanterns {4,%d}: %d lanterns, %d pairs across cell edges (%d lit): largest "
+               "step across %d, inside a tile %d; worst jump beyond the slopes %d\n", qs[k],
+               s.f.nlanterns, pairs, lit, max_across, max_inside, worst_jump);
+        assert_true(pairs > 100 && lit > 50);
+        assert_true(worst_jump <= TOL);
+        assert_true(max_across <= max_inside);
+    }
+}
+
+/* A lighting cycle (hol_frame_desc.cycle, night 0..1) is dusk's frame at
+ * 0 and night's at 1, byte for byte, and between them on the way: every
+ * pixel of the half-way frame lies between the two (within rounding). */
+static void test_cycle_between(void **state)
+{
+    (void)state;
+    static uint8_t dusk[W * H * 4], night[W * H * 4], px[W * H * 4];
+    scene s;
+    make_scene(&cases[0], &s);
+    s.f.lighting = HOL_LIGHT_DUSK;
+    render(&s, 0, dusk);
+    s.f.lighting = HOL_LIGHT_NIGHT;
+    render(&s, 0, night);
+    s.f.lighting = HOL_LIGHT_DUSK;
+    s.f.cycle = 1;
+    s.f.night = 0;
+    render(&s, 0, px);
+    assert_memory_equal(px, dusk, sizeof px);
+    s.f.night = 1;
+    render(&s, 0, px);
+    assert_memory_equal(px, night, sizeof px);
+    s.f.night = 0.5;
+    render(&s, 0, px);
+    int strictly = 0;
+    for (size_t i = 0; i < sizeof px; i++) {
+        int lo = dusk[i] < night[i] ? dusk[i] : night[i];
+        int hi = dusk[i] < night[i] ? night[i] : dusk[i];
+        assert_true(px[i] >= lo - 1 && px[i] <= hi + 1);
+        strictly += px[i] > lo + 1 && px[i] < hi - 1;
+    }
+    printf("cycle: %d of %zu channels strictly between dusk and night\n", strictly, sizeof px);
+    assert_true(strictly > (int)(sizeof px / 4));
 }
 
 /* Lanterns at day change nothing: the same pixels as without them. */
@@ -1318,6 +1511,110 @@ static void test_firefly_sprites(void **state)
     assert_true(found >= 8);
 }
 
+/* Trunks take lantern light by the same law as the floor, with a Lambert
+ * term from their own normal (docs/rendering.md#lighting): in {4,4} (flat,
+ * so the model is Euclidean) a lantern on the middle cell, 0.71 m from the
+ * trunk on its north-west corner (room vertex (1, 1)), the eye 1.2 m from
+ * that trunk looking across the line from the trunk to the lantern. The
+ * trunk is an 8-sided prism turned by 0.7 (4 i + j) radians
+ * (render/hol_scene.c): the model lights each face it shows the eye by
+ * its normal, F (0.3 + 0.7 max(cos, 0)) at the face's middle 0.9 m up. In
+ * the picture's row of that height, over the trunk's pixels: the brightest
+ * within LTOL of the model's brightest face, the darkest no brighter than
+ * the model's darkest (plus LTOL), and the ratio of the two at least 0.85
+ * of the model's; the full picture's trunk is not near-black on the
+ * lantern side. */
+#define RT 0.08
+#define LTOL 20
+static void test_trunk_lambert(void **state)
+{
+    (void)state;
+    static uint8_t px[W * H * 4], full[W * H * 4];
+    static const light_case c = {"N", {1.85, 1.6, 0.15}, 135, -25, 4, 3, 3, 1, {"S", NULL}, 0};
+    scene s;
+    make_scene(&c, &s);
+    render(&s, HOL_RENDER_LIGHT_ONLY, px);
+    render(&s, 0, full);
+    const double tr[3] = {1, 0.9, 1}, L[3] = {1.5, HEIGHT, 1.5}, yaw = 0.7 * (4 + 1);
+    double hi = 0, lo = 1e9;
+    for (int k = 0; k < 8; k++) {
+        double a = 2 * PI * (k + 0.5) / 8 + yaw, n[2] = {cos(a), -sin(a)};
+        double p[3] = {tr[0] + RT * n[0], tr[1], tr[2] + RT * n[1]};
+        if (n[0] * (c.eye[0] - p[0]) + n[1] * (c.eye[2] - p[2]) <= 0)
+            continue;
+        double dx = L[0] - p[0], dy = L[1] - p[1], dz = L[2] - p[2];
+        double d = sqrt(dx * dx + dy * dy + dz * dz), cs = (n[0] * dx + n[1] * dz) / d;
+        double uu = d / RADIUS, w = (1 - uu * uu) * (1 - uu * uu), e = d / D0;
+        double v = 255 * tone(w / (1 + e * e) * (0.3 + 0.7 * (cs > 0 ? cs : 0)));
+        print_message("face %d: cos %.2f, model %.1f\n", k, cs, v);
+        hi = fmax(hi, v);
+        lo = fmin(lo, v);
+    }
+    /* the trunk's pixels in the row: within its radius of the axis (but a
+     * pixel at each end) */
+    double q0[2], q1[2], o = RT * sqrt(0.5);
+    double ax[3] = {tr[0] - o, tr[1], tr[2] - o}, bx[3] = {tr[0] + o, tr[1], tr[2] + o};
+    assert_true(project(c.eye, c.yaw, c.pitch, ax, q0));
+    assert_true(project(c.eye, c.yaw, c.pitch, bx, q1));
+    int y = (int)q0[1], x0 = (int)fmin(q0[0], q1[0]) + 1, x1 = (int)fmax(q0[0], q1[0]) - 1;
+    double got_hi = 0, got_lo = 255, fullmax = 0;
+    for (int x = x0; x <= x1; x++) {
+        const uint8_t *v = &px[4 * (y * W + x)], *g = &full[4 * (y * W + x)];
+        got_hi = fmax(got_hi, v[0]);
+        got_lo = fmin(got_lo, v[0]);
+        for (int k = 0; k < 3; k++)
+            fullmax = fmax(fullmax, g[k]);
+    }
+    print_message("trunk pixels %d..%d of row %d: brightest %.0f (model %.1f), darkest %.0f "
+                  "(model %.1f), ratio %.2f (model %.2f); full picture's brightest %.0f\n",
+                  x0, x1, y, got_hi, hi, got_lo, lo, got_hi / fmax(got_lo, 1), hi / lo, fullmax);
+    assert_true(x1 - x0 >= 3);
+    assert_true(fabs(got_hi - hi) <= LTOL);
+    assert_true(got_lo <= lo + LTOL);
+    assert_true(got_hi >= 0.85 * (hi / lo) * got_lo);
+    /* lit, but not clipped white: the lanterns' sum is at most TONE_K,
+     * their red 0.75 of a surface's colour */
+    assert_true(fullmax >= 50 && fullmax <= 200);
+}
+
+/* Issue 38: dusk and night are darker than day. The web-test's view (the
+ * lanterns on the user's cell and the one north of it, trunks 0.71 m from
+ * each: the lit trunks fill much of the view) and xr-test's (one lantern
+ * north) in {4,5} and {4,6}: the mean of the picture's channels at dusk
+ * below 0.9 of day's, at night below half of day's. Without the tone map
+ * (the lanterns' sum unbounded) dusk was 1.26 of day and night 0.98 in
+ * the first view. */
+static double mean_of(scene *s, int lighting, uint8_t *px)
+{
+    s->f.lighting = lighting;
+    render(s, 0, px);
+    double sum = 0;
+    for (int i = 0; i < W * H; i++)
+        sum += px[4 * i] + px[4 * i + 1] + px[4 * i + 2];
+    return sum / (3.0 * W * H);
+}
+
+static void test_night_darker_than_day(void **state)
+{
+    (void)state;
+    static const light_case cs[] = {
+        {"-", {1.5, 1.6, 1.5}, 0, -30, 5, 3, 3, 1, {"", "N", NULL, NULL}, 0},
+        {"-", {1.5, 1.6, 1.5}, 0, -30, 5, 3, 3, 1, {"N", NULL, NULL, NULL}, 0},
+        {"-", {1.5, 1.6, 1.5}, 0, -30, 6, 3, 3, 1, {"N", NULL, NULL, NULL}, 0},
+    };
+    static uint8_t px[W * H * 4];
+    for (size_t k = 0; k < sizeof cs / sizeof cs[0]; k++) {
+        scene s;
+        make_scene(&cs[k], &s);
+        double day = mean_of(&s, HOL_LIGHT_DAY, px), dusk = mean_of(&s, HOL_LIGHT_DUSK, px);
+        double night = mean_of(&s, HOL_LIGHT_NIGHT, px);
+        printf("view %zu ({4,%d}, %d lanterns): mean day %.1f, dusk %.1f (%.2f), night %.1f "
+               "(%.2f)\n", k, cs[k].q, s.n, day, dusk, dusk / day, night, night / day);
+        assert_true(dusk < 0.95 * day);
+        assert_true(night < (s.n > 1 ? 0.6 : 0.5) * day);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -1326,10 +1623,15 @@ int main(void)
         cmocka_unit_test(test_fog_true_distance),
         cmocka_unit_test(test_light_continuous_across_edges),
         cmocka_unit_test(test_lantern_through_portal),
+        cmocka_unit_test(test_carried_lantern),
+        cmocka_unit_test(test_cycle_between),
+        cmocka_unit_test(test_eight_lanterns_no_seams),
         cmocka_unit_test(test_day_unchanged_without_lighting),
         cmocka_unit_test(test_app_frame_carries_lights),
         cmocka_unit_test(test_fireflies),
         cmocka_unit_test(test_firefly_sprites),
+        cmocka_unit_test(test_trunk_lambert),
+        cmocka_unit_test(test_night_darker_than_day),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }

@@ -4,9 +4,10 @@
 // (the squared chord to each light) and dh (the height above the point) to
 // d2 (the squared H2 x E distance, metres), num / den (the blended falloff)
 // and w (the fade to 0 at HOL_LIGHT_RADIUS_M); sh and x (sinh and the floor
-// distance) in hyperbolic programs.
+// distance) in hyperbolic programs, xm the floor distance in metres.
 #if HOL_FLAT
   vec4 d2 = c2 * u_mpu2 + dh * dh;
+  vec4 xm = sqrt(c2 * u_mpu2);
   vec4 den = 1.0 + d2 * (1.0 / (HOL_LIGHT_D0_M * HOL_LIGHT_D0_M));
   vec4 num = vec4(1.0);
 #else
@@ -16,6 +17,7 @@
   vec4 sh = sqrt(c2 + 0.25 * c2 * c2) + 1e-6;
   vec4 x = log(1.0 + 0.5 * c2 + sh);
   vec4 d2 = x * x * u_mpu2 + dh * dh;
+  vec4 xm = x * sqrt(u_mpu2);
   vec4 num = (1.0 - HOL_LIGHT_PHYS) * sh + HOL_LIGHT_PHYS * x;
   vec4 den = sh * (1.0 + d2 * (1.0 / (HOL_LIGHT_D0_M * HOL_LIGHT_D0_M)));
 #endif

@@ -1,11 +1,14 @@
 // scene.frag.glsl - the fragment shader of every program (day, lit tiles,
 // lit room). The preamble render/hol_program.c builds from a program's key
 // comes first: HOL_LIT (0 day, 1 lit tiles, 2 lit room), HOL_FLAT (the
-// {4,4} grid), HOL_WEDGE (discard outside a branch's wedge), HOL_NIGHT,
+// {4,4} grid), HOL_WEDGE (discard outside a branch's wedge), HOL_NIGHT (1
+// night, 2 between dusk and night),
 // HOL_FX (HOL_PROG_FX_*: 0 lanterns, 1 fireflies, 2 spots; a value has
 // the code of those below it: test with >=), HOL_TX_ROWS (u_tx's rows of
 // per-light values), HOL_SHD (trunk shadow pairs: 0, 2, 4), HOL_SV and
-// HOL_SW (their vector type and swizzle), HOL_TEXT (the overlays' program:
+// HOL_SW (their vector type and swizzle), HOL_LAMPS (the lit room's
+// trees and hedges take the lanterns' light; 0: its backdrop and outer
+// ground, ambient and sun only), HOL_TEXT (the overlays' program:
 // flat colours and glyphs, with alpha), HOL_SPREAD (the atlas's field
 // reach, core/hol_face.h), and the lights' constants of
 // render/hol_light.h (HOL_LIGHT_D0_M, ...).
@@ -35,22 +38,26 @@ uniform sampler2D u_atlas;
 // lighting (hol_light.h): 1 a tile with its hyperbolic frame; 2 the
 // room's own meshes (no tile: ambient, fog by room distance)
 in vec3 v_loc;
-uniform int u_light;
+uniform highp int u_light;
 uniform int u_lonly;
 uniform float u_mpu2;
 uniform float u_eyeh;
+// lit tiles: the four light slots and the eye (scene.vert.glsl); the lit
+// room: its lanterns' cells (x, z in room metres), heights and weights
+uniform vec4 u_tl[4];
 #if HOL_LIT == 1
 in vec4 v_L;
 in float v_Le;
+in vec4 v_th;
 #if HOL_SHD
 in HOL_SV v_S1;
 in HOL_SV v_S2;
 in HOL_SV v_S3;
 uniform vec4 u_ts[13];
 #endif
-#if HOL_FX
+// per-light values (u_tx[5]: a lantern's weight, in every lit tile's
+// program: lanterns merged by the budget weigh more than 1)
 uniform vec4 u_tx[HOL_TX_ROWS];
-#endif
 // spots (HOL_PROG_FX_SPOTS) and up
 #if HOL_FX >= 2
 in vec4 v_U;
@@ -59,7 +66,11 @@ const vec4 v_U = vec4(0.0);
 #endif
 #endif
 // the sky (docs/rendering.md#lighting): ambient, sun and lantern colours
-#if HOL_NIGHT
+// HOL_NIGHT 2: a sky between dusk and night (a lighting cycle), the
+// frame's mix of the two (render/hol_render_gpu.c's hol__frame_lights)
+#if HOL_NIGHT == 2
+uniform vec3 u_amb, u_sun;
+#elif HOL_NIGHT
 const vec3 u_amb = vec3(0.07, 0.08, 0.13), u_sun = vec3(0.05, 0.06, 0.10);
 #else
 const vec3 u_amb = vec3(0.30, 0.26, 0.28), u_sun = vec3(0.28, 0.17, 0.11);
@@ -73,6 +84,17 @@ vec4 hol_out(vec3 c) {
   return vec4(mix(c / 12.92, pow((c + 0.055) / 1.055, vec3(2.4)),
                   step(vec3(0.04045), c)), 1.0);
 }
+#if HOL_LIT
+// The tone map of the lanterns' sum l (render/hol_light.h,
+// docs/rendering.md#tone-map): Reinhard's curve with the white level K =
+// HOL_LIGHT_TONE_K, l K / (K + l): slope 1 at 0 (a faint pool keeps its
+// value), never above K, so K times the lanterns' colour (0.75 in red) is
+// the most light the lanterns give a surface: a trunk beside one glows
+// below its own colour, not clipped white.
+float hol_tone(float l) {
+  return l * HOL_LIGHT_TONE_K / (HOL_LIGHT_TONE_K + l);
+}
+#endif
 #if HOL_LIT == 1
 // The trunk shadows of a tile (hol_light.h): up to four light-trunk pairs.
 // Per pair, three affine functions of the Klein point (hol_light_wedge)
@@ -103,13 +125,23 @@ vec4 hol_shadow(float g) {
 // c^2 = 2 (cosh x - 1) = 2 g L - 2, sinh x = sqrt(c^2 (1 + c^2/4)),
 // x = log(cosh x + sinh x); flat: the slot's z is |l|^2/2 and
 // c^2 = |k - l|^2 = 2 L + |k|^2, x = c
+// The Lambert term of every surface (trunks, posts, props and the floor):
+// max(n_up, 0) max(dh, 0) / d plus the horizontal part <n_h, t> x / d,
+// t the unit floor direction from the point to each light's foot in the
+// tile's Klein frame (th = <n_h, t> per vertex: scene.vert.glsl; the
+// floor's n_h is 0, so its term is the floor's law unchanged), x / d =
+// xm / d with xm the floor distance in metres (falloff.glsl's: x times
+// the metres per unit, no square root of its own).
+vec4 hol_lambert(vec4 th, vec4 xm, vec4 dh, vec4 id, float nup) {
+  return 0.3 + 0.7 * max((max(nup, 0.0) * max(dh, 0.0) + th * xm) * id, 0.0);
+}
 #if HOL_FX
 // per slot: u_tx[4] the light's height, [5] a lantern's weight, [6] a
 // firefly's (the second sum, ff); a spot (u_tx[3] its sin(tilt), -2:
 // none) multiplies by its cone: cos(angle) = (x <u,t> + sin(tilt) dh)
 // / d, x <u,t> = x <u,p> / sinh x = g x U / sh (flat: U), metres per
 // unit folded into u (render/hol_light.h)
-float hol_lights(vec4 L, vec4 U, float g, float o, float y, float nup, out float ff) {
+float hol_lights(vec4 L, vec4 U, float g, float o, float y, float nup, vec4 th, out float ff) {
   vec4 c2 = max(2.0 * g * L + o, 0.0);
   vec4 dh = u_tx[4] - y;
 @include falloff.glsl
@@ -130,18 +162,25 @@ float hol_lights(vec4 L, vec4 U, float g, float o, float y, float nup, out float
     f *= mix(cone, vec4(1.0), step(u_tx[3], vec4(-1.5)));
   }
 #endif
-  f *= 0.3 + (0.7 * max(nup, 0.0)) * max(dh, 0.0) * id;
+  f *= hol_lambert(th, xm, dh, id, nup);
   ff = dot(f, u_tx[6]);
   return dot(f, u_tx[5]);
 }
 #else
-float hol_lights(vec4 L, float g2, float o, float dh, float nup) {
+float hol_lights(vec4 L, float g2, float o, float dh, float nup, vec4 th) {
   vec4 c2 = max(g2 * L + o, 0.0);
 @include falloff.glsl
-  vec4 f = w * w * num / den * hol_shadow(0.5 * g2);
-  return dot(f, 0.3 + (0.7 * max(nup, 0.0) * max(dh, 0.0)) * inversesqrt(max(d2, 1e-8)));
+  vec4 f = w * w * num / den * hol_shadow(0.5 * g2) * u_tx[5];
+  return dot(f, hol_lambert(th, xm, vec4(dh), inversesqrt(max(d2, 1e-8)), nup));
 }
 #endif
+#endif
+#if HOL_LIT == 2 && HOL_LAMPS
+// The room's trees and hedges (HOL_LAMPS: render/hol_render_gpu.c's
+// hol__room_lights): lit per vertex by the tiles' law (scene.vert.glsl's
+// hol_room_light), their meshes cut in bands of height
+// (docs/rendering.md#lighting says where that departs)
+in float v_rl;
 #endif
 void main() {
 #if HOL_TEXT
@@ -178,7 +217,8 @@ void main() {
   vec3 n = v_nrm;
   if (dot(n, n) < 1e-6) n = vec3(0.0, 1.0, 0.0);
   n = normalize(n);
-  if (dot(n, toeye) < 0.0) n = -n;
+  float sgn = dot(n, toeye) < 0.0 ? -1.0 : 1.0;
+  n *= sgn;
   float d = max(dot(n, normalize(vec3(0.35, 0.85, 0.40))), 0.0);
 #if HOL_LIT == 0
   vec3 c = v_col.rgb * (0.50 + 0.60 * d);
@@ -190,6 +230,8 @@ void main() {
 #if HOL_LIT == 1
   if (u_light == 1) {
     vec2 k = v_loc.xz;
+// the Lambert term's horizontal part, the normal turned to the eye as n is
+    vec4 th = sgn * v_th;
     float kk = dot(k, k);
 #if HOL_FLAT
     float g = 1.0, o = kk;
@@ -197,9 +239,9 @@ void main() {
     float g = inversesqrt(max(1.0 - kk, 1e-6)), o = -2.0;
 #endif
 #if HOL_FX
-    lam = hol_lights(v_L, v_U, g, o, v_loc.y, n.y, lamf);
+    lam = hol_lights(v_L, v_U, g, o, v_loc.y, n.y, th, lamf);
 #else
-    lam = hol_lights(v_L, 2.0 * g, o, HOL_LIGHT_HEIGHT_M - v_loc.y, n.y);
+    lam = hol_lights(v_L, 2.0 * g, o, HOL_LIGHT_HEIGHT_M - v_loc.y, n.y, th);
 #endif
 // fog by the true distance from the eye: the floor distance x from the
 // squared chord c^2 to the eye as for a light (falloff.glsl: x = log(cosh
@@ -216,6 +258,11 @@ void main() {
     de2 = xe2 * u_mpu2 + dh * dh;
   }
 #endif
+#if HOL_LIT == 2 && HOL_LAMPS
+  if (u_light >= 2) lam = v_rl;
+#endif
+// the lanterns' sum mapped back (fireflies' lamf as it is: faint)
+  lam = hol_tone(lam);
   float f = exp(-de2 * (u_fogd * u_fogd));
   if (u_lonly == 1) {
     o_col = vec4(min(lam, 1.0), f, min(lamf, 1.0), 1.0);

@@ -21,10 +21,60 @@ out vec3 v_loc;
 // the tile's four light slots and the eye, in the tile's own frame
 // (hol__item_lights): the x, y, z of lights 0..3, then the eye's; L =
 // l.z - k.l.xy is affine in the vertex, so interpolation is exact
+#if HOL_LIT == 2 && HOL_LAMPS
+// the room's trees and hedges (HOL_LAMPS), lit per vertex: their lanterns'
+// cells (u_tl, as in scene.frag.glsl), 3 in u_light a flat room; the
+// meshes come cut in bands (render/hol_render_queue.c's
+// hol__room_slices), so the light's change with height is followed
+uniform vec4 u_tl[4];
+uniform highp int u_light;
+uniform float u_mpu2;
+uniform vec3 u_eye;
+out float v_rl;
+// A point's Klein point k in the frame of each lantern's cell (its centre
+// the light's foot): cosh x = g = 1 / sqrt(1 - |k|^2), c^2 = 2 g - 2
+// (flat: c^2 = |k|^2, x = c); the floor direction to the light -k / |k|.
+// Then the tiles' law (falloff.glsl, hol_lambert): every room lantern
+// hangs at HOL_LIGHT_HEIGHT_M; the normal turned to the eye.
+float hol_room_light(vec3 p, vec3 n) {
+  float fl = u_light == 3 ? 1.0 : 0.0;
+  vec4 kx = (p.x - u_tl[0]) * u_klein, kz = (u_tl[1] - p.z) * u_klein;
+  vec4 kk = kx * kx + kz * kz;
+  vec4 g = inversesqrt(max(1.0 - kk, 1e-6));
+  vec4 c2 = mix(2.0 * g - 2.0, kk, fl);
+  vec4 sh = mix(sqrt(c2 + 0.25 * c2 * c2), sqrt(kk), fl) + 1e-6;
+  vec4 x = mix(log(1.0 + 0.5 * c2 + sh), sh, fl);
+  vec4 q = mix(((1.0 - HOL_LIGHT_PHYS) * sh + HOL_LIGHT_PHYS * x) / sh, vec4(1.0), fl);
+  vec3 nn = dot(n, n) < 1e-6 ? vec3(0.0, 1.0, 0.0) : normalize(n);
+  nn *= dot(nn, u_eye - p) < 0.0 ? -1.0 : 1.0;
+  vec4 h = -(nn.x * kx - nn.z * kz) * inversesqrt(max(kk, 1e-20)) * x * sqrt(u_mpu2);
+  float dh = HOL_LIGHT_HEIGHT_M - p.y;
+  vec4 d2 = x * x * u_mpu2 + dh * dh;
+  vec4 w = max(1.0 - d2 * (1.0 / (HOL_LIGHT_RADIUS_M * HOL_LIGHT_RADIUS_M)), 0.0);
+  vec4 lb = 0.3 + 0.7 * max((max(nn.y, 0.0) * max(dh, 0.0) + h) * inversesqrt(max(d2, 1e-8)), 0.0);
+  return dot(w * w * q / (1.0 + d2 * (1.0 / (HOL_LIGHT_D0_M * HOL_LIGHT_D0_M))) * lb, u_tl[3]);
+}
+#endif
 #if HOL_LIT == 1
 uniform vec4 u_tl[4];
 out vec4 v_L;
 out float v_Le;
+// the Lambert term's horizontal part per light: <n_h, t>, n_h the
+// normal's floor part in the tile's Klein frame (v_loc's z is -z), t the
+// unit floor direction to the light's foot: minus the gradient of cosh x
+// = g L (g^2 L k - l.xy up to g; flat: k - l.xy). Per vertex: t turns
+// little over a prop's face, and the floor's n_h is 0.
+out vec4 v_th;
+vec4 hol_th(vec3 nrm, vec2 k) {
+  vec3 nl = dot(nrm, nrm) < 1e-6 ? vec3(0.0, 1.0, 0.0) : normalize(nrm);
+#if HOL_FLAT
+  float a = 1.0;
+#else
+  float a = 1.0 / max(1.0 - dot(k, k), 1e-6);
+#endif
+  vec4 gx = a * k.x * v_L - u_tl[0], gy = a * k.y * v_L - u_tl[1];
+  return -(gx * nl.x - gy * nl.z) * inversesqrt(max(gx * gx + gy * gy, 1e-20));
+}
 // the tile's trunk shadow pairs (hol__item_shadows): three half-planes
 // each, affine
 #if HOL_SHD
@@ -48,6 +98,7 @@ void main() {
 #if HOL_LIT == 1
   v_L = u_tl[2] - v_loc.x * u_tl[0] - v_loc.z * u_tl[1];
   v_Le = u_tl[3].z - v_loc.x * u_tl[3].x - v_loc.z * u_tl[3].y;
+  v_th = hol_th(a_nrm, v_loc.xz);
 #if HOL_SHD
   v_S1 = HOL_SV((v_loc.x * u_ts[0] + v_loc.z * u_ts[1] + u_ts[2]) HOL_SW);
   v_S2 = HOL_SV((v_loc.x * u_ts[3] + v_loc.z * u_ts[4] + u_ts[5]) HOL_SW);
@@ -63,6 +114,9 @@ void main() {
 #endif
   v_wpos = w.xyz;
   v_nrm = mat3(u_model) * a_nrm;
+#if HOL_LIT == 2 && HOL_LAMPS
+  v_rl = hol_room_light(w.xyz, v_nrm);
+#endif
   v_col = a_col;
   gl_Position = u_vp * w;
 }

@@ -11,13 +11,19 @@
 # Per tiling and eye it checks, with tests/xr/light_probe.c (a pinhole of
 # the printed pose and tangents, independent of the renderer):
 # - night darker than dusk darker than day (night's mean luma below half
-#   of day's);
+#   of day's: the trunks, hedges and crowns take the lantern's light by the
+#   floor's law since issue 38, tone-mapped (docs/rendering.md#tone-map):
+#   0.37 to 0.38 of day; 0.2 when only the floor was lit, 0.54 to 0.57 with the
+#   lanterns' sum unbounded);
 # - at dusk and night the lantern's glass glows where the pinhole puts it
 #   (pixels of luma 200 or more within 16 px, their mean x within 2 px of
 #   the projection), and at day there is no glass;
 # - at night the floor by the lantern's foot (0.15 m beyond it, under the
-#   glass) is more than twice the frame's mean (a lit region in the dark),
-#   and at day it is not (the control: the light, not the floor's colour);
+#   glass) is more than 1.2 times the frame's mean (a lit region in the
+#   dark: 1.37 to 1.64; more than 3 when only the floor was lit: the trunks
+#   0.7 m from the lantern take more light than the floor 1.3 m under
+#   it, so they raise the mean), and at day not above twice it (the
+#   control: no glare);
 # - the glass's offset between the eyes: eye 0 (the left) sees it further
 #   right, by the projections' difference within 1 px;
 # - each eye equals the host's `holonomy render` of the same pose, tiling,
@@ -64,8 +70,8 @@ for q in 5 6; do
                 'awk "BEGIN { exit !($(f "$gs" bright) >= 5 && $(f "$gs" cx) - $(f "$gs" px) <= 2 && $(f "$gs" px) - $(f "$gs" cx) <= 2) }"'
         done
         check "lighting {4,$q} day eye $e: no glass ($(f "$gd" bright) bright pixels)" '[ "$(f "$gd" bright)" = 0 ]'
-        check "lighting {4,$q} night eye $e: the floor by the lantern's foot lit (luma $(f "$fn" disc)) above twice the frame's mean ($mn)" \
-            'awk "BEGIN { exit !($(f "$fn" disc) > 2 * $mn) }"'
+        check "lighting {4,$q} night eye $e: the floor by the lantern's foot lit (luma $(f "$fn" disc)) above 1.2 times the frame's mean ($mn)" \
+            'awk "BEGIN { exit !($(f "$fn" disc) > 1.2 * $mn) }"'
         check "lighting {4,$q} day eye $e: the same floor not above twice the frame's mean (luma $(f "$fd" disc), mean $md)" \
             'awk "BEGIN { exit !($(f "$fd" disc) <= 2 * $md) }"'
     done
