@@ -130,7 +130,10 @@
 #define HOL_LIGHT_SPOT_TILT_DEG 45.0
 #define HOL_LIGHT_SPOT_OUTER_DEG 35.0
 #define HOL_LIGHT_SPOT_INNER_DEG 25.0
-#define HOL_SHADOW_TRUNKS 4
+#define HOL_SHADOW_PAIRS 32
+/* the renderer's texture of shadow masks: columns and rows of masks */
+#define HOL_SHADOW_ATLAS_COLS 16
+#define HOL_SHADOW_ATLAS_ROWS 8
 #define HOL_SHADOW_TRUNK_M 0.09
 #define HOL_SHADOW_EDGE_M 0.02
 
@@ -180,10 +183,10 @@ typedef struct hol_light_frame {
 /* A tile's trunk shadow pairs (hol_light_shadows), in the tile's own
  * frame: each a trunk and the light that casts its shadow. */
 typedef struct hol_shadow_set {
-    int n;                                /* pairs, 0..HOL_SHADOW_TRUNKS */
-    int slot[HOL_SHADOW_TRUNKS];          /* each pair's light: its index
+    int n;                                /* pairs, 0..HOL_SHADOW_PAIRS */
+    int slot[HOL_SHADOW_PAIRS];           /* each pair's light: its index
                                              in lp */
-    double trunk[HOL_SHADOW_TRUNKS][3];   /* the trunks' points */
+    double trunk[HOL_SHADOW_PAIRS][3];    /* the trunks' points */
 } hol_shadow_set;
 
 /* The frame's lights from f (the user, the cell, the eye, the lanterns and
