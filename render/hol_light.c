@@ -569,17 +569,47 @@ static void hol__budget_step(hol_light_frame *lf, const int *idx, int n)
     hol__light_drop(lf, far);
 }
 
+/* Does the foot of point p (user frame) lie in the tile of frame fr (its
+ * Klein square, with a margin of 1e-9)? */
+static int hol__in_tile(const hol_light_frame *lf, const double fr[9], const double p[3])
+{
+    double q[3];
+    if (lf->flat) {
+        double dx = p[0] - fr[2], dy = p[1] - fr[5];
+        q[0] = fr[0] * dx + fr[3] * dy;
+        q[1] = fr[1] * dx + fr[4] * dy;
+        q[2] = 1;
+    } else /* the inverse: Lorentz J F^T J */
+        for (int i = 0; i < 3; i++)
+            q[i] = fr[i] * p[0] * (i == 2 ? -1 : 1) + fr[3 + i] * p[1] * (i == 2 ? -1 : 1) +
+                   fr[6 + i] * p[2] * (i == 2 ? 1 : -1);
+    double a = lf->klein * lf->cell_m / 2 + 1e-9;
+    return fabs(q[0]) <= a * q[2] && fabs(q[1]) <= a * q[2];
+}
+
 void hol_light_budget(hol_light_frame *lf, const hol_view *v)
 {
-    if (lf->n <= HOL_LIGHT_PER_TILE)
-        return;
-    double c[HOL_VIEW_MAX_BRANCHES][3], fr[9];
+    double c[HOL_VIEW_MAX_BRANCHES][3], fr[HOL_VIEW_MAX_BRANCHES][9];
     int nt = 0, idx[HOL_LIGHT_MAX], n;
     for (int k = 0; k < v->nbranches; k++) {
-        if (hol_hyper_frame(lf->user.tile, lf->user.orient, v->branches[k].state.tile, fr))
+        if (v->branches[k].err ||
+            hol_hyper_frame(lf->user.tile, lf->user.orient, v->branches[k].state.tile, fr[nt]))
             continue;
-        c[nt][0] = fr[2], c[nt][1] = fr[5], c[nt++][2] = fr[8];
+        c[nt][0] = fr[nt][2], c[nt][1] = fr[nt][5], c[nt][2] = fr[nt][8];
+        nt++;
     }
+    /* the hedges: a lantern whose foot lies in no drawn tile is outside
+     * them, and they stand between it and every floor point of the room
+     * (fireflies are left: docs/rendering.md#lighting) */
+    for (int i = lf->n - 1; i >= 0 && nt > 0; i--) {
+        int in = lf->ff[i];
+        for (int t = 0; t < nt && !in; t++)
+            in = hol__in_tile(lf, fr[t], lf->pos[i]);
+        if (!in)
+            hol__light_drop(lf, i);
+    }
+    if (lf->n <= HOL_LIGHT_PER_TILE)
+        return;
     while ((n = hol__over_full(lf, (const double(*)[3])c, nt, idx)) > 0)
         hol__budget_step(lf, idx, n);
 }

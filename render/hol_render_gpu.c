@@ -230,16 +230,17 @@ static void hol__shm_texture(hol_render *r)
 }
 
 /* The slot of the shadow mask with key (nonzero): kept from an earlier
- * frame, else rastered (core/hol_shadow.h) into a free slot or the least
- * recently used one not used by this frame; -1: every slot is this
- * frame's. */
+ * frame; else, with d, rastered (core/hol_shadow.h) into a free slot or
+ * the least recently used one not used by this frame. -1: not kept (d
+ * NULL) or every slot is this frame's; -2: d has no wedge (kept so, no
+ * texture: the tile takes the program without shadows). */
 int hol__shadow_mask(hol_render *r, uint64_t key, const hol_shadow_mask_desc *d)
 {
     int lru = -1;
     for (int k = 0; k < HOL__SHM_SLOTS; k++) {
         if (r->shm_slot[k].key == key) {
             r->shm_slot[k].last_frame = r->frame;
-            return k;
+            return r->shm_slot[k].empty ? -2 : k;
         }
         if (!r->shm_slot[k].key) {
             if (lru < 0 || r->shm_slot[lru].key)
@@ -249,8 +250,13 @@ int hol__shadow_mask(hol_render *r, uint64_t key, const hol_shadow_mask_desc *d)
                                 r->shm_slot[k].last_frame < r->shm_slot[lru].last_frame)))
             lru = k;
     }
-    if (lru < 0)
+    if (!d || lru < 0)
         return -1;
+    r->shm_slot[lru].key = key;
+    r->shm_slot[lru].last_frame = r->frame;
+    r->shm_slot[lru].empty = d->n == 0;
+    if (d->n == 0)
+        return -2;
     if (!r->shm)
         hol__shm_texture(r);
     hol_shadow_mask(d, r->shm_px);
@@ -262,8 +268,6 @@ int hol__shadow_mask(hol_render *r, uint64_t key, const hol_shadow_mask_desc *d)
                         lru / HOL__SHM_COLS * HOL_SHADOW_MASK_N, HOL_SHADOW_MASK_N,
                         HOL_SHADOW_MASK_N, GL_RGBA, GL_UNSIGNED_BYTE, r->shm_px);
     r->gl.ActiveTexture(GL_TEXTURE0);
-    r->shm_slot[lru].key = key;
-    r->shm_slot[lru].last_frame = r->frame;
     return lru;
 }
 

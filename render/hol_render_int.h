@@ -114,8 +114,9 @@ struct hol_render {
     GLuint atlas;                  /* the text face's (core/hol_face.h) */
     GLuint shm;                    /* the shadow masks' (made when first used) */
     struct {
-        uint64_t key;              /* its tile and wedges (0: free) */
+        uint64_t key;              /* its tile, geometry and lights (0: free) */
         uint64_t last_frame;
+        int empty;                 /* 1: no shadow falls on that tile */
     } shm_slot[HOL__SHM_SLOTS];
     uint8_t shm_px[HOL_SHADOW_MASK_BYTES]; /* one mask before upload */
     long shm_made;                 /* masks rastered (tests, the bench) */

@@ -123,39 +123,44 @@ static void hol__tile_tangent(const double inv[9], const double u[3], const doub
 }
 
 /* A lit tile's shadows (hol_light.h; the shader's hol_shadow): its pairs'
- * wedges (hol_light_wedge) rastered into its shadow mask (core/hol_shadow.h,
- * kept while the tile and the wedges are the same: hol__shadow_mask);
- * u_shr: 1 / (2 A) (A the tile's Klein half side) and the mask's first
- * texel in the masks' texture. */
+ * wedges (hol_light_wedge) rastered into its shadow mask (core/hol_shadow.h),
+ * kept while the tile, the frame's geometry and its lights in its own
+ * frame are the same (hol__shadow_mask), so a still scene chooses no pairs
+ * and rasters nothing; u_shr: 1 / (2 A) (A the tile's Klein half side)
+ * and the mask's first texel in the masks' texture. */
 static void hol__item_shadows(hol_render *r, hol__item *it, hol_tile t, const double fr[9],
                               const double inv[9], const int idx[], int n)
 {
     const hol_light_frame *lf = &r->lights;
     double lp[HOL_LIGHT_PER_TILE][3];
+    uint8_t ff[HOL_LIGHT_PER_TILE];
     for (int k = 0; k < n; k++) {
         const double *p = lf->pos[idx[k]];
         for (int i = 0; i < 3; i++)
             lp[k][i] = inv[3 * i] * p[0] + inv[3 * i + 1] * p[1] + inv[3 * i + 2] * p[2];
+        ff[k] = lf->ff[idx[k]];
     }
-    hol_shadow_set ss;
-    hol_light_shadows(lf, fr, (const double(*)[3])lp, idx, n, &ss);
-    it->nsh = 0;
-    if (ss.n == 0)
-        return;
-    double wedge[HOL_SHADOW_PAIRS][3][3];
-    for (int m = 0; m < ss.n; m++)
-        hol_light_wedge(lf, lp[ss.slot[m]], ss.trunk[m], wedge[m]);
-    hol_shadow_mask_desc md = {lf->flat, lf->klein * lf->cell_m / 2, ss.n,
-                               (const double(*)[3][3])wedge, ss.slot};
+    double geo[3] = {lf->cell_m, lf->klein, lf->metres_per_unit};
     uint64_t key = hol__fnv(0xcbf29ce484222325ull, &t, sizeof t);
-    key = hol__fnv(key, wedge, (size_t)ss.n * sizeof wedge[0]);
-    key = hol__fnv(key, ss.slot, (size_t)ss.n * sizeof ss.slot[0]);
-    key = hol__fnv(key, &md.half, sizeof md.half);
-    int k = hol__shadow_mask(r, key | 1, &md);
+    key = hol__fnv(key, geo, sizeof geo);
+    key = hol__fnv(key, lp, (size_t)n * sizeof lp[0]);
+    key = hol__fnv(key, ff, (size_t)n) | 1;
+    it->nsh = 0;
+    int k = hol__shadow_mask(r, key, NULL);
+    if (k == -1) { /* not kept: choose the pairs, raster their mask */
+        hol_shadow_set ss;
+        hol_light_shadows(lf, fr, (const double(*)[3])lp, idx, n, &ss);
+        double wedge[HOL_SHADOW_PAIRS][3][3];
+        for (int m = 0; m < ss.n; m++)
+            hol_light_wedge(lf, lp[ss.slot[m]], ss.trunk[m], wedge[m]);
+        hol_shadow_mask_desc md = {lf->flat, lf->klein * lf->cell_m / 2, ss.n,
+                                   (const double(*)[3][3])wedge, ss.slot};
+        k = hol__shadow_mask(r, key, &md);
+    }
     if (k < 0)
-        return; /* more masks in one frame than slots: none */
+        return; /* no shadow, or more masks in one frame than slots */
     it->nsh = 1;
-    it->shr[0] = (float)(1 / (2 * md.half));
+    it->shr[0] = (float)(1 / (lf->klein * lf->cell_m));
     it->shr[1] = (float)(k % HOL__SHM_COLS * HOL_SHADOW_MASK_N);
     it->shr[2] = (float)(k / HOL__SHM_COLS * HOL_SHADOW_MASK_N);
     it->shr[3] = 0;

@@ -209,6 +209,8 @@ static void apply(model_mat f, const double v[3], double out[3])
 /* The model point (user frame) of the floor point p; 0 when the sight
  * line passes within 1e-9 of a vertex or p is off the room. */
 static double model_centre[3]; /* the centre of model_point's last cell */
+static model_mat model_cell_frame; /* that cell's frame, and its column and row */
+static int model_cell_cr[2];
 
 static int model_point(const light_case *c, const double p[2], double out[3])
 {
@@ -237,6 +239,8 @@ static int model_point(const light_case *c, const double p[2], double out[3])
     klein_point(m, p[0] - (col + 0.5) * m, p[1] - (row + 0.5) * m, h);
     apply(f, h, out);
     model_centre[0] = f.m[2], model_centre[1] = f.m[5], model_centre[2] = f.m[8];
+    model_cell_frame = f;
+    model_cell_cr[0] = col, model_cell_cr[1] = row;
     return 1;
 }
 
@@ -1013,6 +1017,121 @@ static void test_shadows_every_lantern(void **state)
     }
 }
 
+/* The hedges (issue 38): does the floor geodesic from model point h (in
+ * the cell of model_point's last call) to lantern point l stay in the
+ * room? Walked cell by cell in the model: in each cell's own frame the
+ * segment is straight (Klein); where it leaves the cell's square, the
+ * room step across that side, and out of the room it meets a hedge (2 m
+ * high, the lantern at 1.3 m). */
+static int hedge_clear(const light_case *c, const double h[3], const double l[3])
+{
+    model_mat f = model_cell_frame;
+    int col = model_cell_cr[0], row = model_cell_cr[1];
+    double a = model_q == 4 ? 0.5 : tanh(model_edge() / 2), from[2] = {0, 0};
+    for (int step = 0; step < 32; step++) {
+        model_mat inv = model_inv(f);
+        double p[3], q[3];
+        apply(inv, h, p);
+        apply(inv, l, q);
+        double pk[2] = {p[0] / p[2], p[1] / p[2]}, lk[2] = {q[0] / q[2], q[1] / q[2]};
+        if (step > 0) /* on from where the segment entered this cell */
+            pk[0] = from[0], pk[1] = from[1];
+        if (fabs(lk[0]) <= a && fabs(lk[1]) <= a)
+            return 1;
+        /* the side where the segment leaves the square */
+        double tbest = 2;
+        int dir = -1;
+        for (int sd = 0; sd < 4; sd++) {
+            int ax = sd < 2 ? 0 : 1;
+            double edge = sd % 2 ? -a : a, dk = lk[ax] - pk[ax];
+            if (fabs(dk) < 1e-15)
+                continue;
+            double t = (edge - pk[ax]) / dk;
+            if (t > 1e-12 && t < tbest) {
+                tbest = t;
+                dir = sd == 0 ? HOL_DIR_E : sd == 1 ? HOL_DIR_W : sd == 2 ? HOL_DIR_N : HOL_DIR_S;
+            }
+        }
+        if (dir < 0)
+            return 1;
+        static const int dc[4] = {0, -1, 0, 1}, dr[4] = {-1, 0, 1, 0};
+        col += dc[dir], row += dr[dir];
+        if (col < 0 || row < 0 || col >= c->cols || row >= c->rows)
+            return 0;
+        double xk[3], xh[3];
+        xk[0] = pk[0] + tbest * (lk[0] - pk[0]), xk[1] = pk[1] + tbest * (lk[1] - pk[1]);
+        double g = model_q == 4 ? 1 : 1 / sqrt(1 - xk[0] * xk[0] - xk[1] * xk[1]);
+        xh[0] = xk[0] * g, xh[1] = xk[1] * g, xh[2] = g;
+        double xu[3];
+        apply(f, xh, xu);
+        f = model_step(f, turns_of(dir));
+        apply(model_inv(f), xu, xh);
+        from[0] = xh[0] / xh[2], from[1] = xh[1] / xh[2];
+    }
+    return 1;
+}
+
+/* Issue 38: the hedges cast shadows. A lantern just beyond the west hedge
+ * (the tile across the west side of the user's cell, outside the room)
+ * and one inside, in {4,4}, {4,5}, {4,6} and {4,8}: every floor pixel
+ * within TOL of the model, which lights a pixel by a lantern only where
+ * the floor geodesic to it stays in the room (hedge_clear, walked cell by
+ * cell), trunk shadows as in test_light_matches_model; the outside
+ * lantern alone would light many of them (printed: where it is not
+ * hidden the test fails). */
+static void test_hedge_shadows(void **state)
+{
+    (void)state;
+    static const int qs[4] = {4, 5, 6, 8};
+    static uint8_t px[W * H * 4];
+    for (int k = 0; k < 4; k++) {
+        light_case c = {"W", {0.35, 1.6, 1.5}, -90, -35, qs[k], 3, 3, 1, {"E", "N", NULL}, 0};
+        scene s;
+        make_scene(&c, &s);
+        /* the lantern across the user's west side, outside the room */
+        hol_tile out;
+        int arr;
+        assert_int_equal(hol_tile_step(s.f.user.tile, s.f.user.orient + HOL_DIR_W, &out, &arr),
+                         HOL_OK);
+        model_mat f = model_step(model_identity(), turns_of(HOL_DIR_W));
+        s.f.lanterns[s.n] = out;
+        s.lant[s.n][0] = f.m[2], s.lant[s.n][1] = f.m[5], s.lant[s.n][2] = f.m[8];
+        s.n++;
+        s.f.nlanterns = s.n;
+        make_trunks(&c, &s);
+        render(&s, HOL_RENDER_BARE | HOL_RENDER_LIGHT_ONLY, px);
+        int checked = 0, hidden = 0;
+        shadow_count sc = {0, 0, 0};
+        for (int y = 0; y < H; y++)
+            for (int x = 0; x < W; x++) {
+                double p[2], h[3];
+                if (!floor_point(&c, x + 0.5, y + 0.5, p) || !model_point(&c, p, h))
+                    continue;
+                double lam = 0, lam0 = 0;
+                int under = 0;
+                for (int i = 0; i < s.n && !under; i++) {
+                    double fm = floor_m(c.cell, h, s.lant[i]);
+                    double sh = shadow_model(&c, &s, i, h);
+                    under = sh < 0;
+                    double l = lantern_term(fm, fm * model_edge() / c.cell);
+                    int clear = hedge_clear(&c, h, s.lant[i]);
+                    hidden += !clear && i == s.n - 1 && l * 255 > TOL;
+                    lam += clear ? l * sh : 0;
+                    lam0 += clear ? l : 0;
+                }
+                if (under)
+                    continue;
+                double want[3] = {fmin(lam, 1), fog_model(&c, h, s.eye), fmin(lam0, 1)};
+                shadow_check(&sc, px + 4 * (y * W + x), want, on_cell_edge(&c, x, y));
+                checked++;
+            }
+        printf("hedge case {4,%d}: %d floor pixels, %d the outside lantern would light but the "
+               "hedge hides\n", qs[k], checked, hidden);
+        assert_true(checked > W * H / 5 && hidden > checked / 10);
+        shadow_assert("hedge case", (size_t)qs[k], &sc);
+    }
+}
+
 /* Tiles two or more cells away (through portals) get a lantern's light,
  * as the model says (the model check covers the values). */
 static void test_lantern_through_portal(void **state)
@@ -1617,6 +1736,7 @@ int main(void)
         cmocka_unit_test(test_fog_true_distance),
         cmocka_unit_test(test_light_continuous_across_edges),
         cmocka_unit_test(test_shadows_every_lantern),
+        cmocka_unit_test(test_hedge_shadows),
         cmocka_unit_test(test_lantern_through_portal),
         cmocka_unit_test(test_carried_lantern),
         cmocka_unit_test(test_cycle_between),
