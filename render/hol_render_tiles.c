@@ -127,7 +127,7 @@ static void hol__tile_tangent(const double inv[9], const double u[3], const doub
  * kept while the tile, the frame's geometry and its lights in its own
  * frame are the same (hol__shadow_mask), so a still scene chooses no pairs
  * and rasters nothing; u_shr: 1 / (2 A) (A the tile's Klein half side)
- * and the mask's first texel in the masks' texture. */
+ * and the mask's first texel centre in the masks' texture coordinates. */
 static void hol__item_shadows(hol_render *r, hol__item *it, hol_tile t, const double fr[9],
                               const double inv[9], const int idx[], int n)
 {
@@ -161,8 +161,10 @@ static void hol__item_shadows(hol_render *r, hol__item *it, hol_tile t, const do
         return; /* no shadow, or more masks in one frame than slots */
     it->nsh = 1;
     it->shr[0] = (float)(1 / (lf->klein * lf->cell_m));
-    it->shr[1] = (float)(k % HOL__SHM_COLS * HOL_SHADOW_MASK_N);
-    it->shr[2] = (float)(k / HOL__SHM_COLS * HOL_SHADOW_MASK_N);
+    it->shr[1] = (float)((k % HOL__SHM_COLS * HOL_SHADOW_MASK_N + 0.5) /
+                         (HOL__SHM_COLS * HOL_SHADOW_MASK_N));
+    it->shr[2] = (float)((k / HOL__SHM_COLS * HOL_SHADOW_MASK_N + 0.5) /
+                         (HOL__SHM_ROWS * HOL_SHADOW_MASK_N));
     it->shr[3] = 0;
 }
 

@@ -85,19 +85,19 @@ vec4 hol_out(vec3 c) {
 }
 #if HOL_LIT == 1
 // The shadows of a tile (render/hol_light.h, core/hol_shadow.h): every
-// trunk's (and hedge's) shadow from every light of the tile, rastered on
-// the CPU into the tile's mask, one byte a light slot; u_shr: 1 / (2 A),
-// A the tile's Klein half side, and the mask's first texel in u_shm. The
-// Klein point k maps to the mask's texel centres (k = +-A on the edge
-// ones); the bilinear mix of the stored u gives the occlusion clamp(1/2 +
-// u, 0, 1), and each light is multiplied by 1 - that.
+// trunk's shadow from every light of the tile, rastered on the CPU into
+// the tile's mask, one byte a light slot; u_shr: 1 / (2 A) (A the tile's
+// Klein half side), then the mask's first texel centre in u_shm's
+// coordinates. The Klein point k maps to the mask's texel centres (k = +-A
+// on the edge ones); the bilinear mix t of the stored bytes holds u =
+// (2 t - 1) R, the occlusion is clamp(1/2 + u, 0, 1), and each light is
+// multiplied by 1 - that = clamp(R + 1/2 - 2 R t, 0, 1).
 #if HOL_SHD
 vec4 hol_shadow(float g) {
   vec2 st = clamp(v_loc.xz * u_shr.x + 0.5, 0.0, 1.0);
-  vec2 tc = (u_shr.yz + 0.5 + st * (HOL_SHM_N - 1.0)) /
-            (vec2(HOL_SHM_W, HOL_SHM_H) * HOL_SHM_N);
-  vec4 u = texture(u_shm, tc) * (2.0 * HOL_SHM_R) - HOL_SHM_R;
-  return 1.0 - clamp(0.5 + u, 0.0, 1.0);
+  vec4 t = texture(u_shm, st * vec2((HOL_SHM_N - 1.0) / (HOL_SHM_W * HOL_SHM_N),
+                                    (HOL_SHM_N - 1.0) / (HOL_SHM_H * HOL_SHM_N)) + u_shr.yz);
+  return clamp(t * (-2.0 * HOL_SHM_R) + (HOL_SHM_R + 0.5), 0.0, 1.0);
 }
 #else
 vec4 hol_shadow(float g) {
