@@ -92,18 +92,24 @@
  *   HOL_SHADOW_EDGE_M; flat: d in sides): a linear soft edge 2 e = 4 cm
  *   wide across the tangent geodesics, centred on them. The light is
  *   multiplied by max(0, 1 - the sum of the occlusions of its pairs).
- * - Which trunks cast (the budget: docs/performance.md#lighting): every
- *   trunk casts the shadow of its nearest lantern (among the frame's, not
- *   the fireflies; ties to the first named), when within R of it: a
- *   property of the trunk, so both sides of a tile edge agree.
- *   hol_light_shadows gives a tile up to HOL_SHADOW_TRUNKS such pairs
+ * - Which trunks cast (issue 38): every trunk casts the shadow of every
+ *   lantern of a tile's four lights (the carried one included; not the
+ *   fireflies) within R of it, so both sides of a tile edge agree
+ *   wherever the budget keeps every lantern that reaches them.
+ *   hol_light_shadows gives a tile up to HOL_SHADOW_PAIRS such pairs
  *   whose shadow reaches it beyond r + e from the trunk (the tile's Klein
  *   square clipped by the three half-planes), among the corners of the
  *   tiles whose centre lies within 2 rho + r of the segment from one of
  *   its lanterns to its centre (rho the circumradius) that lie within r of
  *   the convex hull of that lantern and the tile, nearest their light
- *   first; a pair whose lantern is not among the tile's 4 lights is
- *   dropped (it reaches the tile only where more than 4 lanterns do).
+ *   first. The renderer rasters a tile's pairs into its shadow mask
+ *   (core/hol_shadow.h), which the shader samples once a fragment.
+ * - Hedges (issue 38): the room's hedges, 2 m high, stand all round the
+ *   room's cells, higher than any lantern; hol_light_budget drops every
+ *   lantern (the fireflies are left) whose foot lies in none of the view's
+ *   drawn tiles: outside the hedges, every floor geodesic from it to a
+ *   point of the room crosses them.
+ */
  */
 #ifndef HOL_LIGHT_H
 #define HOL_LIGHT_H
@@ -196,7 +202,9 @@ typedef struct hol_shadow_set {
 hol_err hol_light_prepare(const hol_frame_desc *f, const struct hol_world *w,
                           hol_light_frame *out);
 
-/* The budget (no seams past four lanterns): while some tile of view v has
+/* The hedges (see the contract): the lanterns whose foot lies in no drawn
+ * tile of view v leave lf. Then the budget (no seams past four lanterns):
+ * while some tile of view v has
  * more than HOL_LIGHT_PER_TILE of lf's lanterns (not fireflies) within
  * reach (hol_light_tile's rule), one step on the first such tile: its two
  * nearest round lanterns become one (the weighted mean of the two points

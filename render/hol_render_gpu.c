@@ -508,8 +508,9 @@ static void hol__text_prog(hol_render *r, const hol_frame_desc *f)
 /* The GL state of a pass: at dusk and night the room's meshes take the
  * programs without tile code (its trees and hedges lantern-lit, its
  * backdrop on the cheaper path: both get the pass's state), and the tile
- * pass's state goes to both tile programs (with trunk shadows, current at
- * the end, and without); the overlays take the text program. */
+ * pass's state goes to both tile programs (with the shadow masks' texture
+ * on unit 1, current at the end, and without); the overlays take the text
+ * program. */
 static void hol__set_pass(hol_render *r, const hol_frame_desc *f, int pass, const float vp[16])
 {
     if (pass >= HOL__PASS_HAND && r->progs[HOL_PROG_TEXT_SLOT].prog) {
@@ -566,7 +567,7 @@ void hol__execute(hol_render *r, const hol_frame_desc *f, const float vp[16],
                 cur_mask = it->mask;
                 st->state_changes++;
             }
-            if (f->lighting) { /* a tile with no shadow pair: the program without */
+            if (f->lighting) { /* a tile with no shadow: the program without */
                 int nsh = it->nl >= 0 ? it->nsh : 0;
                 hol_prog *want = hol__frame_prog(r, f, nsh ? HOL__USE_TILESM : HOL__USE_TILES0);
                 if (want != r->pg) {

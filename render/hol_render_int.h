@@ -165,7 +165,7 @@ struct hol_render {
 };
 
 /* The programs a frame uses (hol__frame_prog): the day's; at dusk and
- * night the room's and the tiles' by the shadow pairs they read. */
+ * night the room's and the tiles' (with their shadow mask or without). */
 enum {
     HOL__USE_DAY = 0,
     HOL__USE_ROOM,   /* the room's trees and hedges, lantern-lit */

@@ -1,5 +1,5 @@
 /* hol_render_tiles.c - the tile pass: one draw per branch of its tile's
- * resident mesh, a lit tile's lights and trunk shadows in its own frame,
+ * resident mesh, a lit tile's lights and shadow mask in its own frame,
  * the fireflies' sprites. */
 #include "hol_render_int.h"
 
