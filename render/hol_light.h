@@ -110,7 +110,6 @@
  *   drawn tiles: outside the hedges, every floor geodesic from it to a
  *   point of the room crosses them.
  */
- */
 #ifndef HOL_LIGHT_H
 #define HOL_LIGHT_H
 
