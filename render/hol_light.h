@@ -232,9 +232,10 @@ int hol_light_tile(const hol_light_frame *lf, hol_tile t, double out_frame[9],
                    int out_idx[HOL_LIGHT_PER_TILE]);
 
 /* The trunk shadow pairs of a tile (see the contract): fr its frame
- * (hol_light_tile), lp[0..nl-1] its lights' points in its own frame
- * (hyperboloid; flat (x, y, 1)), lidx[i] their indices in lf (a firefly
- * casts none). Deterministic; no allocation. */
+ * (hol_light_tile; not needed since every lantern casts, kept for the
+ * callers), lp[0..nl-1] its lights' points in its own frame (hyperboloid;
+ * flat (x, y, 1)), lidx[i] their indices in lf (a firefly casts none).
+ * Deterministic; no allocation. */
 void hol_light_shadows(const hol_light_frame *lf, const double fr[9], const double lp[][3],
                        const int *lidx, int nl, hol_shadow_set *out);
 
