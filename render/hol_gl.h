@@ -72,6 +72,7 @@ typedef hol_gl_proc (*hol_gl_getproc)(const char *name);
     X(PFNGLSTENCILOPPROC, StencilOp, "glStencilOp") \
     X(PFNGLTEXIMAGE2DPROC, TexImage2D, "glTexImage2D") \
     X(PFNGLTEXPARAMETERIPROC, TexParameteri, "glTexParameteri") \
+    X(PFNGLTEXSUBIMAGE2DPROC, TexSubImage2D, "glTexSubImage2D") \
     X(PFNGLUNIFORM1FPROC, Uniform1f, "glUniform1f") \
     X(PFNGLUNIFORM1IPROC, Uniform1i, "glUniform1i") \
     X(PFNGLUNIFORM3FPROC, Uniform3f, "glUniform3f") \

@@ -216,7 +216,7 @@ static int hol__near_segs(const hol_light_frame *lf, const double c[3], const do
 static int hol__shadow_trunks(const hol_light_frame *lf, const double lp[][3],
                               const uint8_t *use, int nl, double (*vt)[3], int maxv)
 {
-    enum { NT = 48 };
+    enum { NT = 160 };
     double fr[NT][9], cen[NT][3];
     int n = 1, nv = 0;
     memset(fr[0], 0, sizeof fr[0]);
@@ -281,27 +281,6 @@ static int hol__may_shadow(const hol_light_frame *lf, const double t[3], const d
     return 0;
 }
 
-/* The nearest lantern (not a firefly) to point tu (user frame): its index
- * in lf, ties within a relative 1e-9 to the first named, so that every
- * tile's frame gives the same answer; -1 for none. */
-static int hol__nearest_lantern(const hol_light_frame *lf, const double tu[3])
-{
-    int best = -1;
-    double bk = 0;
-    for (int i = 0; i < lf->n; i++) {
-        if (lf->ff[i])
-            continue;
-        const double *p = lf->pos[i];
-        double k = lf->flat ? (p[0] - tu[0]) * (p[0] - tu[0]) + (p[1] - tu[1]) * (p[1] - tu[1])
-                            : p[2] * tu[2] - p[0] * tu[0] - p[1] * tu[1];
-        if (best < 0 || k < bk - 1e-9 * (1 + fabs(bk))) {
-            best = i;
-            bk = k;
-        }
-    }
-    return best;
-}
-
 /* Does trunk t's shadow from light l (its half-planes h, hol_light_wedge)
  * reach a point of the tile farther than r + e from t (nearer, the trunk
  * hides the floor)? The tile (the Klein square) clipped by the three
@@ -346,8 +325,9 @@ static int hol__wedge_reaches(const hol_light_frame *lf, const double t[3], doub
 void hol_light_shadows(const hol_light_frame *lf, const double fr[9], const double lp[][3],
                        const int *lidx, int nl, hol_shadow_set *out)
 {
-    enum { NV = 160 };
-    double vt[NV][3], key[HOL_SHADOW_TRUNKS];
+    enum { NV = 400 };
+    double vt[NV][3], key[HOL_SHADOW_PAIRS];
+    (void)fr;
     out->n = 0;
     uint8_t use[HOL_LIGHT_PER_TILE] = {0};
     int any = 0;
@@ -356,38 +336,33 @@ void hol_light_shadows(const hol_light_frame *lf, const double fr[9], const doub
     if (!any)
         return;
     int nv = hol__shadow_trunks(lf, lp, use, nl, vt, NV);
-    for (int i = 0; i < nv; i++) {
-        double tu[3];
-        for (int r = 0; r < 3; r++)
-            tu[r] = fr[3 * r] * vt[i][0] + fr[3 * r + 1] * vt[i][1] + fr[3 * r + 2] * vt[i][2];
-        int near = hol__nearest_lantern(lf, tu), k = 0;
-        while (k < nl && lidx[k] != near)
-            k++;
-        if (k == nl)
-            continue; /* its lantern does not light this tile */
-        double d = hol_hyper_dist(lp[k], vt[i], lf->flat);
-        if (d >= lf->reach || d <= 2 * lf->trunk_r || !hol__may_shadow(lf, vt[i], lp[k]))
-            continue;
-        double h[3][3];
-        hol_light_wedge(lf, lp[k], vt[i], h);
-        if (!hol__wedge_reaches(lf, vt[i], h))
-            continue;
-        /* insert by distance to its light (ties: the one found first) */
-        int j = out->n < HOL_SHADOW_TRUNKS ? out->n++ : HOL_SHADOW_TRUNKS;
-        while (j > 0 && key[j - 1] > d) {
-            if (j < HOL_SHADOW_TRUNKS) {
-                key[j] = key[j - 1];
-                out->slot[j] = out->slot[j - 1];
-                memcpy(out->trunk[j], out->trunk[j - 1], sizeof out->trunk[0]);
+    for (int i = 0; i < nv; i++)
+        for (int k = 0; k < nl; k++) { /* every trunk, every lantern */
+            if (!use[k])
+                continue;
+            double d = hol_hyper_dist(lp[k], vt[i], lf->flat);
+            if (d >= lf->reach || d <= 2 * lf->trunk_r || !hol__may_shadow(lf, vt[i], lp[k]))
+                continue;
+            double h[3][3];
+            hol_light_wedge(lf, lp[k], vt[i], h);
+            if (!hol__wedge_reaches(lf, vt[i], h))
+                continue;
+            /* insert by distance to its light (ties: the one found first) */
+            int j = out->n < HOL_SHADOW_PAIRS ? out->n++ : HOL_SHADOW_PAIRS;
+            while (j > 0 && key[j - 1] > d) {
+                if (j < HOL_SHADOW_PAIRS) {
+                    key[j] = key[j - 1];
+                    out->slot[j] = out->slot[j - 1];
+                    memcpy(out->trunk[j], out->trunk[j - 1], sizeof out->trunk[0]);
+                }
+                j--;
             }
-            j--;
+            if (j < HOL_SHADOW_PAIRS) {
+                key[j] = d;
+                out->slot[j] = k;
+                memcpy(out->trunk[j], vt[i], sizeof vt[0]);
+            }
         }
-        if (j < HOL_SHADOW_TRUNKS) {
-            key[j] = d;
-            out->slot[j] = k;
-            memcpy(out->trunk[j], vt[i], sizeof vt[0]);
-        }
-    }
 }
 
 void hol_light_wedge(const hol_light_frame *lf, const double l[3], const double t[3],
@@ -594,17 +569,47 @@ static void hol__budget_step(hol_light_frame *lf, const int *idx, int n)
     hol__light_drop(lf, far);
 }
 
+/* Does the foot of point p (user frame) lie in the tile of frame fr (its
+ * Klein square, with a margin of 1e-9)? */
+static int hol__in_tile(const hol_light_frame *lf, const double fr[9], const double p[3])
+{
+    double q[3];
+    if (lf->flat) {
+        double dx = p[0] - fr[2], dy = p[1] - fr[5];
+        q[0] = fr[0] * dx + fr[3] * dy;
+        q[1] = fr[1] * dx + fr[4] * dy;
+        q[2] = 1;
+    } else /* the inverse: Lorentz J F^T J */
+        for (int i = 0; i < 3; i++)
+            q[i] = fr[i] * p[0] * (i == 2 ? -1 : 1) + fr[3 + i] * p[1] * (i == 2 ? -1 : 1) +
+                   fr[6 + i] * p[2] * (i == 2 ? 1 : -1);
+    double a = lf->klein * lf->cell_m / 2 + 1e-9;
+    return fabs(q[0]) <= a * q[2] && fabs(q[1]) <= a * q[2];
+}
+
 void hol_light_budget(hol_light_frame *lf, const hol_view *v)
 {
-    if (lf->n <= HOL_LIGHT_PER_TILE)
-        return;
-    double c[HOL_VIEW_MAX_BRANCHES][3], fr[9];
+    double c[HOL_VIEW_MAX_BRANCHES][3], fr[HOL_VIEW_MAX_BRANCHES][9];
     int nt = 0, idx[HOL_LIGHT_MAX], n;
     for (int k = 0; k < v->nbranches; k++) {
-        if (hol_hyper_frame(lf->user.tile, lf->user.orient, v->branches[k].state.tile, fr))
+        if (v->branches[k].err ||
+            hol_hyper_frame(lf->user.tile, lf->user.orient, v->branches[k].state.tile, fr[nt]))
             continue;
-        c[nt][0] = fr[2], c[nt][1] = fr[5], c[nt++][2] = fr[8];
+        c[nt][0] = fr[nt][2], c[nt][1] = fr[nt][5], c[nt][2] = fr[nt][8];
+        nt++;
     }
+    /* the hedges: a lantern whose foot lies in no drawn tile is outside
+     * them, and they stand between it and every floor point of the room
+     * (fireflies are left: docs/rendering.md#lighting) */
+    for (int i = lf->n - 1; i >= 0 && nt > 0; i--) {
+        int in = lf->ff[i];
+        for (int t = 0; t < nt && !in; t++)
+            in = hol__in_tile(lf, fr[t], lf->pos[i]);
+        if (!in)
+            hol__light_drop(lf, i);
+    }
+    if (lf->n <= HOL_LIGHT_PER_TILE)
+        return;
     while ((n = hol__over_full(lf, (const double(*)[3])c, nt, idx)) > 0)
         hol__budget_step(lf, idx, n);
 }

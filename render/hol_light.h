@@ -96,18 +96,23 @@
  *   HOL_SHADOW_EDGE_M; flat: d in sides): a linear soft edge 2 e = 4 cm
  *   wide across the tangent geodesics, centred on them. The light is
  *   multiplied by max(0, 1 - the sum of the occlusions of its pairs).
- * - Which trunks cast (the budget: docs/performance.md#lighting): every
- *   trunk casts the shadow of its nearest lantern (among the frame's, not
- *   the fireflies; ties to the first named), when within R of it: a
- *   property of the trunk, so both sides of a tile edge agree.
- *   hol_light_shadows gives a tile up to HOL_SHADOW_TRUNKS such pairs
+ * - Which trunks cast (issue 38): every trunk casts the shadow of every
+ *   lantern of a tile's four lights (the carried one included; not the
+ *   fireflies) within R of it, so both sides of a tile edge agree
+ *   wherever the budget keeps every lantern that reaches them.
+ *   hol_light_shadows gives a tile up to HOL_SHADOW_PAIRS such pairs
  *   whose shadow reaches it beyond r + e from the trunk (the tile's Klein
  *   square clipped by the three half-planes), among the corners of the
  *   tiles whose centre lies within 2 rho + r of the segment from one of
  *   its lanterns to its centre (rho the circumradius) that lie within r of
  *   the convex hull of that lantern and the tile, nearest their light
- *   first; a pair whose lantern is not among the tile's 4 lights is
- *   dropped (it reaches the tile only where more than 4 lanterns do).
+ *   first. The renderer rasters a tile's pairs into its shadow mask
+ *   (core/hol_shadow.h), which the shader samples once a fragment.
+ * - Hedges (issue 38): the room's hedges, 2 m high, stand all round the
+ *   room's cells, higher than any lantern; hol_light_budget drops every
+ *   lantern (the fireflies are left) whose foot lies in none of the view's
+ *   drawn tiles: outside the hedges, every floor geodesic from it to a
+ *   point of the room crosses them.
  */
 #ifndef HOL_LIGHT_H
 #define HOL_LIGHT_H
@@ -135,7 +140,10 @@
 #define HOL_LIGHT_SPOT_TILT_DEG 45.0
 #define HOL_LIGHT_SPOT_OUTER_DEG 35.0
 #define HOL_LIGHT_SPOT_INNER_DEG 25.0
-#define HOL_SHADOW_TRUNKS 4
+#define HOL_SHADOW_PAIRS 32
+/* the renderer's texture of shadow masks: columns and rows of masks */
+#define HOL_SHADOW_ATLAS_COLS 16
+#define HOL_SHADOW_ATLAS_ROWS 8
 #define HOL_SHADOW_TRUNK_M 0.09
 #define HOL_SHADOW_EDGE_M 0.02
 
@@ -185,10 +193,10 @@ typedef struct hol_light_frame {
 /* A tile's trunk shadow pairs (hol_light_shadows), in the tile's own
  * frame: each a trunk and the light that casts its shadow. */
 typedef struct hol_shadow_set {
-    int n;                                /* pairs, 0..HOL_SHADOW_TRUNKS */
-    int slot[HOL_SHADOW_TRUNKS];          /* each pair's light: its index
+    int n;                                /* pairs, 0..HOL_SHADOW_PAIRS */
+    int slot[HOL_SHADOW_PAIRS];           /* each pair's light: its index
                                              in lp */
-    double trunk[HOL_SHADOW_TRUNKS][3];   /* the trunks' points */
+    double trunk[HOL_SHADOW_PAIRS][3];    /* the trunks' points */
 } hol_shadow_set;
 
 /* The frame's lights from f (the user, the cell, the eye, the lanterns and
@@ -198,7 +206,9 @@ typedef struct hol_shadow_set {
 hol_err hol_light_prepare(const hol_frame_desc *f, const struct hol_world *w,
                           hol_light_frame *out);
 
-/* The budget (no seams past four lanterns): while some tile of view v has
+/* The hedges (see the contract): the lanterns whose foot lies in no drawn
+ * tile of view v leave lf. Then the budget (no seams past four lanterns):
+ * while some tile of view v has
  * more than HOL_LIGHT_PER_TILE of lf's lanterns (not fireflies) within
  * reach (hol_light_tile's rule), one step on the first such tile: its two
  * nearest round lanterns become one (the weighted mean of the two points
@@ -227,9 +237,10 @@ int hol_light_tile(const hol_light_frame *lf, hol_tile t, double out_frame[9],
                    int out_idx[HOL_LIGHT_PER_TILE]);
 
 /* The trunk shadow pairs of a tile (see the contract): fr its frame
- * (hol_light_tile), lp[0..nl-1] its lights' points in its own frame
- * (hyperboloid; flat (x, y, 1)), lidx[i] their indices in lf (a firefly
- * casts none). Deterministic; no allocation. */
+ * (hol_light_tile; not needed since every lantern casts, kept for the
+ * callers), lp[0..nl-1] its lights' points in its own frame (hyperboloid;
+ * flat (x, y, 1)), lidx[i] their indices in lf (a firefly casts none).
+ * Deterministic; no allocation. */
 void hol_light_shadows(const hol_light_frame *lf, const double fr[9], const double lp[][3],
                        const int *lidx, int nl, hol_shadow_set *out);
 

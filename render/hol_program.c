@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "../core/hol_face.h"
+#include "../core/hol_shadow.h"
 #include "hol_light.h"
 
 #include "hol_glsl.h" /* made by render/shaders/glsl_c.sh (the build folder) */
@@ -32,7 +33,7 @@ static const hol__dim hol__dims[] = {
     [HOL__D_FLAT] = {offsetof(hol_prog_key, flat), 0, 1, 2},
     [HOL__D_WEDGE] = {offsetof(hol_prog_key, wedge), 0, 1, 2},
     [HOL__D_FX] = {offsetof(hol_prog_key, fx), 0, 1, HOL_PROG_FX_COUNT},
-    [HOL__D_SHADOW] = {offsetof(hol_prog_key, shadow_pairs), 0, 2, 3},
+    [HOL__D_SHADOW] = {offsetof(hol_prog_key, shadow), 0, 1, 2},
 };
 
 /* The program families, in slot order: the fields a family fixes (its
@@ -82,7 +83,7 @@ static int hol__family_index(const hol__family *f, const hol_prog_key *k)
 {
     static const size_t fields[] = {offsetof(hol_prog_key, lighting), offsetof(hol_prog_key, room),
                                     offsetof(hol_prog_key, flat), offsetof(hol_prog_key, wedge),
-                                    offsetof(hol_prog_key, fx), offsetof(hol_prog_key, shadow_pairs),
+                                    offsetof(hol_prog_key, fx), offsetof(hol_prog_key, shadow),
                                     offsetof(hol_prog_key, text), offsetof(hol_prog_key, lamps)};
     _Static_assert(sizeof fields / sizeof fields[0] * sizeof(int) == sizeof(hol_prog_key),
                    "every field of the key");
@@ -130,18 +131,18 @@ hol_prog_key hol_prog_key_of_slot(int slot)
 
 int hol_prog_preamble(const hol_prog_key *k, char *out, size_t n)
 {
-    /* the shadow pairs' vector: HOL_SV of HOL_SHD pairs, HOL_SW its swizzle */
-    static const char *const sv[5][2] = {{"float", ""}, {"float", ".x"}, {"vec2", ".xy"},
-                                         {"float", ""}, {"vec4", ""}};
     int lit = k->lighting == HOL_LIGHT_DAY ? 0 : k->room ? 2 : 1;
-    int nsh = k->shadow_pairs >= 0 && k->shadow_pairs <= 4 ? k->shadow_pairs : 0;
     hol_face_metrics m; /* the atlas's field reach (HOL_SPREAD) */
     hol_face_get_metrics(&m);
     int len = snprintf(out, n,
                        "#version 300 es\n#define HOL_LIT %d\n#define HOL_FLAT %d\n"
                        "#define HOL_WEDGE %d\n#define HOL_NIGHT %d\n#define HOL_FX %d\n"
                        "#define HOL_TEXT %d\n#define HOL_LAMPS %d\n#define HOL_SPREAD %d.0\n"
-                       "#define HOL_SHD %d\n#define HOL_SV %s\n#define HOL_SW %s\n"
+                       "#define HOL_SHD %d\n"
+                       "#define HOL_SHM_N " HOL__STR(HOL_SHADOW_MASK_N) ".0\n"
+                       "#define HOL_SHM_R " HOL__STR(HOL_SHADOW_MASK_RANGE) "\n"
+                       "#define HOL_SHM_W " HOL__STR(HOL_SHADOW_ATLAS_COLS) ".0\n"
+                       "#define HOL_SHM_H " HOL__STR(HOL_SHADOW_ATLAS_ROWS) ".0\n"
                        "#define HOL_TX_ROWS " HOL__STR(HOL_PROG_TX_ROWS) "\n"
                        "#define HOL_LIGHT_D0_M " HOL__STR(HOL_LIGHT_D0_M) "\n"
                        "#define HOL_LIGHT_PHYS " HOL__STR(HOL_LIGHT_PHYS) "\n"
@@ -150,8 +151,7 @@ int hol_prog_preamble(const hol_prog_key *k, char *out, size_t n)
                        "#define HOL_LIGHT_TONE_K " HOL__STR(HOL_LIGHT_TONE_K) "\n",
                        lit, k->flat, k->wedge,
                        k->lighting == HOL_PROG_CYCLE ? 2 : k->lighting == HOL_LIGHT_NIGHT, k->fx, k->text != 0,
-                       k->lamps != 0, m.spread, nsh,
-                       sv[nsh][0], sv[nsh][1]);
+                       k->lamps != 0, m.spread, k->shadow != 0);
     return len < 0 || (size_t)len >= n ? -1 : len;
 }
 
@@ -175,11 +175,13 @@ static void hol__uniforms(const hol_gl *gl, hol_prog *pg)
     static const char *const names[] = {"u_vp", "u_model", "u_mode", "u_id", "u_eye",
                                         "u_fog", "u_fogd", "u_lin", "u_wedge", "u_wmode",
                                         "u_light", "u_klein", "u_mpu2", "u_tl", "u_eyeh",
-                                        "u_lonly", "u_tx", "u_ts", "u_atlas", "u_amb", "u_sun"};
+                                        "u_lonly", "u_tx", "u_shr", "u_shm", "u_atlas", "u_amb",
+                                        "u_sun"};
     GLint *loc[] = {&pg->u_vp, &pg->u_model, &pg->u_mode, &pg->u_id, &pg->u_eye,
                     &pg->u_fog, &pg->u_fogd, &pg->u_lin, &pg->u_wedge, &pg->u_wmode,
                     &pg->u_light, &pg->u_klein, &pg->u_mpu2, &pg->u_tl, &pg->u_eyeh,
-                    &pg->u_lonly, &pg->u_tx, &pg->u_ts, &pg->u_atlas, &pg->u_amb, &pg->u_sun};
+                    &pg->u_lonly, &pg->u_tx, &pg->u_shr, &pg->u_shm, &pg->u_atlas, &pg->u_amb,
+                    &pg->u_sun};
     _Static_assert(sizeof names / sizeof names[0] == sizeof loc / sizeof loc[0],
                    "a name per uniform");
     for (size_t i = 0; i < sizeof loc / sizeof loc[0]; i++)

@@ -10,7 +10,7 @@
  * - A key (hol_prog_key) says what varies: the lighting (core's
  *   hol_app_lighting), the lit room's meshes or the lit tiles, the flat
  *   {4,4} grid, the wedge's discard, the lights' effects (fireflies,
- *   spots), the trunk shadow pairs read and the lit room's lamps (its
+ *   spots), the shadow mask read and the lit room's lamps (its
  *   trees and hedges lantern-lit, or its backdrop on the cheaper path).
  *   The day program has only the wedge; the lit room's the lighting, the
  *   lamps and the wedge; the lit tiles' the rest but the lamps.
@@ -56,7 +56,7 @@ typedef struct hol_prog_key {
     int flat;         /* lit tiles: the flat {4,4} grid */
     int wedge;        /* discard outside a branch's wedge (hol_view.h) */
     int fx;           /* lit tiles: HOL_PROG_FX_* */
-    int shadow_pairs; /* lit tiles: trunk shadow pairs read: 0, 2 or 4 */
+    int shadow;       /* lit tiles: 1 its shadow mask read (core/hol_shadow.h) */
     int text;         /* the overlays' program (every other field 0) */
     int lamps;        /* lit room: 1 its trees and hedges, lantern-lit with
                        * a Lambert term; 0 its backdrop and outer ground
@@ -72,9 +72,9 @@ typedef struct hol_prog_key {
 #define HOL_PROG_CYCLE 3
 
 /* day 2 (wedge), lit room 3 x 2 x 2 (lighting, lamps, wedge), lit tiles
- * 3 x 2 x 2 (lighting, flat, wedge) x HOL_PROG_FX_COUNT x 3 (shadow
- * pairs), text 1: 123 (render/hol_program.c's table of families) */
-#define HOL_PROG_SLOTS (2 + 12 + 12 * HOL_PROG_FX_COUNT * 3 + 1)
+ * 3 x 2 x 2 (lighting, flat, wedge) x HOL_PROG_FX_COUNT x 2 (shadow
+ * mask), text 1: 87 (render/hol_program.c's table of families) */
+#define HOL_PROG_SLOTS (2 + 12 + 12 * HOL_PROG_FX_COUNT * 2 + 1)
 /* The text program's slot (the last). */
 #define HOL_PROG_TEXT_SLOT (HOL_PROG_SLOTS - 1)
 
@@ -91,7 +91,8 @@ int hol_prog_preamble(const hol_prog_key *key, char *out, size_t n);
 typedef struct hol_prog {
     GLuint prog;
     GLint u_vp, u_model, u_mode, u_id, u_eye, u_fog, u_fogd, u_lin, u_wedge, u_wmode;
-    GLint u_light, u_klein, u_mpu2, u_tl, u_eyeh, u_lonly, u_tx, u_ts, u_atlas, u_amb, u_sun;
+    GLint u_light, u_klein, u_mpu2, u_tl, u_eyeh, u_lonly, u_tx, u_shr, u_shm, u_atlas, u_amb,
+        u_sun;
 } hol_prog;
 
 /* Compile and link key's program into out: 0, or 1 when the GL refused it

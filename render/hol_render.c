@@ -128,6 +128,8 @@ void hol_render_destroy(hol_render *r)
         r->gl.DeleteVertexArrays(2, r->vao);
     if (r->atlas)
         r->gl.DeleteTextures(1, &r->atlas);
+    if (r->shm)
+        r->gl.DeleteTextures(1, &r->shm);
     if (r->vbo[0])
         r->gl.DeleteBuffers(2, r->vbo);
     if (r->ibo[0])

@@ -213,16 +213,74 @@ static void hol__room_lights(hol_render *r, const hol_frame_desc *f)
     r->gl.Uniform4fv(r->pg->u_tl, 4, &tl[0][0]);
 }
 
+/* The masks' texture (HOL__SHM_COLS x HOL__SHM_ROWS masks of RGBA8,
+ * linear, clamped): made when a frame first has a shadow. */
+static void hol__shm_texture(hol_render *r)
+{
+    r->gl.GenTextures(1, &r->shm);
+    r->gl.ActiveTexture(GL_TEXTURE1);
+    r->gl.BindTexture(GL_TEXTURE_2D, r->shm);
+    r->gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, HOL__SHM_COLS * HOL_SHADOW_MASK_N,
+                     HOL__SHM_ROWS * HOL_SHADOW_MASK_N, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
+    r->gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    r->gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    r->gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    r->gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    r->gl.ActiveTexture(GL_TEXTURE0);
+}
+
+/* The slot of the shadow mask with key (nonzero): kept from an earlier
+ * frame; else, with d, rastered (core/hol_shadow.h) into a free slot or
+ * the least recently used one not used by this frame. -1: not kept (d
+ * NULL) or every slot is this frame's; -2: d has no wedge (kept so, no
+ * texture: the tile takes the program without shadows). */
+int hol__shadow_mask(hol_render *r, uint64_t key, const hol_shadow_mask_desc *d)
+{
+    int lru = -1;
+    for (int k = 0; k < HOL__SHM_SLOTS; k++) {
+        if (r->shm_slot[k].key == key) {
+            r->shm_slot[k].last_frame = r->frame;
+            return r->shm_slot[k].empty ? -2 : k;
+        }
+        if (!r->shm_slot[k].key) {
+            if (lru < 0 || r->shm_slot[lru].key)
+                lru = k;
+        } else if (r->shm_slot[k].last_frame != r->frame &&
+                   (lru < 0 || (r->shm_slot[lru].key &&
+                                r->shm_slot[k].last_frame < r->shm_slot[lru].last_frame)))
+            lru = k;
+    }
+    if (!d || lru < 0)
+        return -1;
+    r->shm_slot[lru].key = key;
+    r->shm_slot[lru].last_frame = r->frame;
+    r->shm_slot[lru].empty = d->n == 0;
+    if (d->n == 0)
+        return -2;
+    if (!r->shm)
+        hol__shm_texture(r);
+    hol_shadow_mask(d, r->shm_px);
+    r->shm_made++;
+    r->gl.ActiveTexture(GL_TEXTURE1);
+    r->gl.BindTexture(GL_TEXTURE_2D, r->shm);
+    r->gl.PixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    r->gl.TexSubImage2D(GL_TEXTURE_2D, 0, lru % HOL__SHM_COLS * HOL_SHADOW_MASK_N,
+                        lru / HOL__SHM_COLS * HOL_SHADOW_MASK_N, HOL_SHADOW_MASK_N,
+                        HOL_SHADOW_MASK_N, GL_RGBA, GL_UNSIGNED_BYTE, r->shm_px);
+    r->gl.ActiveTexture(GL_TEXTURE0);
+    return lru;
+}
+
 /* The programs a lit frame uses, in the order their per-frame uniforms
- * are set (the tiles' with up to four shadow pairs current at the end). */
-static const int hol__lit_uses[5] = {HOL__USE_TILES2, HOL__USE_TILES0, HOL__USE_BACK,
-                                     HOL__USE_ROOM, HOL__USE_TILES4};
+ * are set (the tiles' with shadow masks current at the end). */
+static const int hol__lit_uses[4] = {HOL__USE_TILES0, HOL__USE_BACK, HOL__USE_ROOM,
+                                     HOL__USE_TILESM};
 
 /* The programs frame f uses, n of them (day: one). */
 static const int *hol__frame_uses(const hol_frame_desc *f, int *n)
 {
     static const int day[1] = {HOL__USE_DAY};
-    *n = f->lighting ? 5 : 1;
+    *n = f->lighting ? 4 : 1;
     return f->lighting ? hol__lit_uses : day;
 }
 
@@ -230,8 +288,6 @@ static const int *hol__frame_uses(const hol_frame_desc *f, int *n)
  * lighting, the tiling's flatness, the lights' effects, the view's wedges). */
 hol_prog *hol__frame_prog(hol_render *r, const hol_frame_desc *f, int use)
 {
-    static const int pairs[] = {[HOL__USE_TILES0] = 0, [HOL__USE_TILES2] = 2,
-                                [HOL__USE_TILES4] = 4};
     hol_prog_key k;
     memset(&k, 0, sizeof k);
     if (use == HOL__USE_TEXT)
@@ -245,7 +301,7 @@ hol_prog *hol__frame_prog(hol_render *r, const hol_frame_desc *f, int use)
     if (use >= HOL__USE_TILES0) {
         k.flat = r->lights.flat != 0;
         k.fx = r->lights.fx;
-        k.shadow_pairs = pairs[use];
+        k.shadow = use == HOL__USE_TILESM;
     }
     return &r->progs[hol_prog_slot(&k)];
 }
@@ -323,6 +379,7 @@ void hol__frame_begin(hol_render *r, const hol_frame_desc *f, float vp[16])
         r->gl.Uniform1f(r->pg->u_fogd, fogd);
         r->gl.Uniform1i(r->pg->u_lin, r->desc.srgb != 0);
         r->gl.Uniform1i(r->pg->u_wmode, 0);
+        r->gl.Uniform1i(r->pg->u_shm, 1); /* the shadow masks' unit */
         int room = uses[i] == HOL__USE_ROOM || uses[i] == HOL__USE_BACK;
         r->gl.Uniform1i(r->pg->u_light, room ? 2 + r->lights.flat : 0);
         if (f->lighting)
@@ -451,8 +508,9 @@ static void hol__text_prog(hol_render *r, const hol_frame_desc *f)
 /* The GL state of a pass: at dusk and night the room's meshes take the
  * programs without tile code (its trees and hedges lantern-lit, its
  * backdrop on the cheaper path: both get the pass's state), and the tile
- * pass's state goes to both tile programs (with trunk shadows, current at
- * the end, and without); the overlays take the text program. */
+ * pass's state goes to both tile programs (with the shadow masks' texture
+ * on unit 1, current at the end, and without); the overlays take the text
+ * program. */
 static void hol__set_pass(hol_render *r, const hol_frame_desc *f, int pass, const float vp[16])
 {
     if (pass >= HOL__PASS_HAND && r->progs[HOL_PROG_TEXT_SLOT].prog) {
@@ -460,12 +518,15 @@ static void hol__set_pass(hol_render *r, const hol_frame_desc *f, int pass, cons
         hol__set_pass_as(r, f, pass, vp, NULL);
         return;
     }
-    static const int tiles[2] = {HOL__USE_TILES0, HOL__USE_TILES2};
-    for (int k = 0; k < 2 && f->lighting && pass == HOL__PASS_TILE; k++)
-        hol__set_pass_as(r, f, pass, vp, hol__frame_prog(r, f, tiles[k]));
+    if (f->lighting && pass == HOL__PASS_TILE) {
+        hol__set_pass_as(r, f, pass, vp, hol__frame_prog(r, f, HOL__USE_TILES0));
+        r->gl.ActiveTexture(GL_TEXTURE1); /* the shadow masks (u_shm) */
+        r->gl.BindTexture(GL_TEXTURE_2D, r->shm);
+        r->gl.ActiveTexture(GL_TEXTURE0);
+    }
     if (f->lighting && pass == HOL__PASS_ROOM)
         hol__set_pass_as(r, f, pass, vp, hol__frame_prog(r, f, HOL__USE_BACK));
-    int last = pass == HOL__PASS_ROOM ? HOL__USE_ROOM : HOL__USE_TILES4;
+    int last = pass == HOL__PASS_ROOM ? HOL__USE_ROOM : HOL__USE_TILESM;
     hol__set_pass_as(r, f, pass, vp, f->lighting ? hol__frame_prog(r, f, last) : NULL);
 }
 
@@ -477,8 +538,8 @@ static void hol__item_uniforms(hol_render *r, const hol__item *it)
         return;
     r->gl.Uniform4fv(r->pg->u_tl, 4, &it->tl[0][0]);
     r->gl.Uniform4fv(r->pg->u_tx, HOL_PROG_TX_ROWS, &it->tx[0][0]);
-    if (it->nsh) /* the variant for two reads the first two of each */
-        r->gl.Uniform4fv(r->pg->u_ts, 13, &it->ts[0][0]);
+    if (it->nsh)
+        r->gl.Uniform4fv(r->pg->u_shr, 1, it->shr);
 }
 
 /* Execute the sorted queue, skipping redundant state changes. */
@@ -506,11 +567,9 @@ void hol__execute(hol_render *r, const hol_frame_desc *f, const float vp[16],
                 cur_mask = it->mask;
                 st->state_changes++;
             }
-            if (f->lighting) { /* a tile with no shadow pair: the program without */
+            if (f->lighting) { /* a tile with no shadow: the program without */
                 int nsh = it->nl >= 0 ? it->nsh : 0;
-                hol_prog *want = hol__frame_prog(r, f, nsh > 2   ? HOL__USE_TILES4
-                                                       : nsh ? HOL__USE_TILES2
-                                                             : HOL__USE_TILES0);
+                hol_prog *want = hol__frame_prog(r, f, nsh ? HOL__USE_TILESM : HOL__USE_TILES0);
                 if (want != r->pg) {
                     r->pg = want;
                     r->gl.UseProgram(want->prog);

@@ -19,6 +19,7 @@
 #include <stdint.h>
 #include <string.h>
 
+#include "../core/hol_shadow.h"
 #include "hol_gl.h"
 #include "hol_light.h"
 #include "hol_mesh.h"
@@ -53,6 +54,13 @@
 #define HOL__DYN_V (1u << 16)
 #define HOL__DYN_I (1u << 17)
 #define HOL__MAX_ITEMS 1024
+/* Shadow masks (core/hol_shadow.h) resident at once, in one texture of
+ * HOL__SHM_COLS x HOL__SHM_ROWS masks (render/hol_light.h; 1024 x 512
+ * texels, 2 MB): more than the lit tiles of any frame (65), kept while
+ * their tile's wedges are the same, so a still scene rasters none. */
+#define HOL__SHM_COLS HOL_SHADOW_ATLAS_COLS
+#define HOL__SHM_ROWS HOL_SHADOW_ATLAS_ROWS
+#define HOL__SHM_SLOTS (HOL__SHM_COLS * HOL__SHM_ROWS)
 /* The body's mesh (render/hol_body_draw.h: two tracked hands are 5,526
  * vertices and 25,728 indices), built once for both eyes. */
 #define HOL__BODY_V 6144u
@@ -91,8 +99,8 @@ typedef struct hol__item {
     /* u_tx: the spots' tangents (3) and sines, heights, lantern and
      * firefly weights (hol__item_lights) */
     float tx[HOL_PROG_TX_ROWS][4];
-    float ts[13][4]; /* u_ts: its trunk shadow pairs (hol__item_shadows) */
-    int8_t nsh;      /* how many (0: the programs without shadows) */
+    float shr[4];    /* u_shr: its shadow mask's place (hol__item_shadows) */
+    int8_t nsh;      /* 1: it has one (0: the programs without shadows) */
     uint8_t lamps;   /* the lit room: 1 trees and hedges, 0 the backdrop */
     uint32_t first, count; /* index range */
     float model[16];
@@ -104,6 +112,14 @@ struct hol_render {
     hol_scene *scene;
     GLuint vao[2], vbo[2], ibo[2]; /* [0] static, [1] dynamic */
     GLuint atlas;                  /* the text face's (core/hol_face.h) */
+    GLuint shm;                    /* the shadow masks' (made when first used) */
+    struct {
+        uint64_t key;              /* its tile, geometry and lights (0: free) */
+        uint64_t last_frame;
+        int empty;                 /* 1: no shadow falls on that tile */
+    } shm_slot[HOL__SHM_SLOTS];
+    uint8_t shm_px[HOL_SHADOW_MASK_BYTES]; /* one mask before upload */
+    long shm_made;                 /* masks rastered (tests, the bench) */
     /* the programs by slot (render/hol_program.h), each compiled when
      * first used: variants, not uniforms, since a uniform costs llvmpipe
      * a load per pixel and a discard makes it shade before the depth test
@@ -149,14 +165,13 @@ struct hol_render {
 };
 
 /* The programs a frame uses (hol__frame_prog): the day's; at dusk and
- * night the room's and the tiles' by the shadow pairs they read. */
+ * night the room's and the tiles' (with their shadow mask or without). */
 enum {
     HOL__USE_DAY = 0,
     HOL__USE_ROOM,   /* the room's trees and hedges, lantern-lit */
     HOL__USE_BACK,   /* its backdrop and outer ground: ambient and sun */
-    HOL__USE_TILES0, /* lit tiles without shadow pairs */
-    HOL__USE_TILES2, /* up to two */
-    HOL__USE_TILES4, /* up to four */
+    HOL__USE_TILES0, /* lit tiles without shadows */
+    HOL__USE_TILESM, /* with their shadow mask */
     HOL__USE_TEXT    /* the overlays (hand, fade, HUD, panel): text's */
 };
 
@@ -196,6 +211,7 @@ hol_err hol__queue_tiles(hol_render *r, const hol_frame_desc *f, int bare, doubl
 
 /* hol_render_gpu.c */
 void hol__vao_attribs(hol_render *r, int k);
+int hol__shadow_mask(hol_render *r, uint64_t key, const hol_shadow_mask_desc *d);
 void hol__static_grow(hol_render *r, int cap);
 void hol__upload_scratch(hol_render *r, uint32_t vbase, uint32_t ibase);
 void hol__fade_rgb(const hol_frame_desc *f, uint8_t out[3]);

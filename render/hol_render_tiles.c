@@ -1,5 +1,5 @@
 /* hol_render_tiles.c - the tile pass: one draw per branch of its tile's
- * resident mesh, a lit tile's lights and trunk shadows in its own frame,
+ * resident mesh, a lit tile's lights and shadow mask in its own frame,
  * the fireflies' sprites. */
 #include "hol_render_int.h"
 
@@ -122,41 +122,56 @@ static void hol__tile_tangent(const double inv[9], const double u[3], const doub
     out[2] = (float)(flat ? a[0] * b[0] + a[1] * b[1] : a[2]);
 }
 
-/* A lit tile's trunk shadow pairs (hol_light.h; the shader's hol_shadow),
- * u_ts: [3 j + i] coefficient i (k_x, k_y, 1) of half-plane j of each pair
- * (hol_light_wedge; an empty pair's are 0, 0, -1: no shadow); [9 + p]
- * pair p's light slot, one-hot. */
-static void hol__item_shadows(const hol_light_frame *lf, hol__item *it, const double fr[9],
+/* A lit tile's shadows (hol_light.h; the shader's hol_shadow): its pairs'
+ * wedges (hol_light_wedge) rastered into its shadow mask (core/hol_shadow.h),
+ * kept while the tile, the frame's geometry and its lights in its own
+ * frame are the same (hol__shadow_mask), so a still scene chooses no pairs
+ * and rasters nothing; u_shr: 1 / (2 A) (A the tile's Klein half side)
+ * and the mask's first texel centre in the masks' texture coordinates. */
+static void hol__item_shadows(hol_render *r, hol__item *it, hol_tile t, const double fr[9],
                               const double inv[9], const int idx[], int n)
 {
+    const hol_light_frame *lf = &r->lights;
     double lp[HOL_LIGHT_PER_TILE][3];
+    uint8_t ff[HOL_LIGHT_PER_TILE];
     for (int k = 0; k < n; k++) {
         const double *p = lf->pos[idx[k]];
         for (int i = 0; i < 3; i++)
             lp[k][i] = inv[3 * i] * p[0] + inv[3 * i + 1] * p[1] + inv[3 * i + 2] * p[2];
+        ff[k] = lf->ff[idx[k]];
     }
-    hol_shadow_set ss;
-    hol_light_shadows(lf, fr, (const double(*)[3])lp, idx, n, &ss);
-    memset(it->ts, 0, sizeof it->ts);
-    it->nsh = (int8_t)ss.n;
-    for (int m = 0; m < HOL_SHADOW_TRUNKS; m++) {
-        if (m >= ss.n) {
-            it->ts[2][m] = it->ts[5][m] = it->ts[8][m] = -1;
-            continue;
-        }
-        double h[3][3];
-        hol_light_wedge(lf, lp[ss.slot[m]], ss.trunk[m], h);
-        for (int j = 0; j < 3; j++)
-            for (int i = 0; i < 3; i++)
-                it->ts[3 * j + i][m] = (float)h[j][i];
-        it->ts[9 + m][ss.slot[m]] = 1;
+    double geo[3] = {lf->cell_m, lf->klein, lf->metres_per_unit};
+    uint64_t key = hol__fnv(0xcbf29ce484222325ull, &t, sizeof t);
+    key = hol__fnv(key, geo, sizeof geo);
+    key = hol__fnv(key, lp, (size_t)n * sizeof lp[0]);
+    key = hol__fnv(key, ff, (size_t)n) | 1;
+    it->nsh = 0;
+    int k = hol__shadow_mask(r, key, NULL);
+    if (k == -1) { /* not kept: choose the pairs, raster their mask */
+        hol_shadow_set ss;
+        hol_light_shadows(lf, fr, (const double(*)[3])lp, idx, n, &ss);
+        double wedge[HOL_SHADOW_PAIRS][3][3];
+        for (int m = 0; m < ss.n; m++)
+            hol_light_wedge(lf, lp[ss.slot[m]], ss.trunk[m], wedge[m]);
+        hol_shadow_mask_desc md = {lf->flat, lf->klein * lf->cell_m / 2, ss.n,
+                                   (const double(*)[3][3])wedge, ss.slot};
+        k = hol__shadow_mask(r, key, &md);
     }
+    if (k < 0)
+        return; /* no shadow, or more masks in one frame than slots */
+    it->nsh = 1;
+    it->shr[0] = (float)(1 / (lf->klein * lf->cell_m));
+    it->shr[1] = (float)((k % HOL__SHM_COLS * HOL_SHADOW_MASK_N + 0.5) /
+                         (HOL__SHM_COLS * HOL_SHADOW_MASK_N));
+    it->shr[2] = (float)((k / HOL__SHM_COLS * HOL_SHADOW_MASK_N + 0.5) /
+                         (HOL__SHM_ROWS * HOL_SHADOW_MASK_N));
+    it->shr[3] = 0;
 }
 
 /* A lit tile's lights and the eye in the tile's own frame (u_tl: the
  * lights' x, y, z as four-slot vectors, then the eye's point; an empty
  * slot lies far beyond the radius), so the shader needs no matrix. */
-static void hol__item_lights(hol_render *r, hol__item *it, hol_tile t)
+static void hol__item_lights(hol_render *r, hol__item *it, hol_tile t, int shadows)
 {
     double fr[9], inv[9];
     int idx[HOL_LIGHT_PER_TILE];
@@ -195,7 +210,8 @@ static void hol__item_lights(hol_render *r, hol__item *it, hol_tile t)
     }
     hol__tile_slot(inv, r->lights.eye, flat, it->tl[3]);
     it->tl[3][3] = 0;
-    hol__item_shadows(lf, it, fr, inv, idx, n);
+    if (shadows)
+        hol__item_shadows(r, it, t, fr, inv, idx, n);
 }
 
 /* A firefly's sprite (render/hol_light.h): when tile t has one of the
@@ -255,7 +271,7 @@ hol_err hol__queue_tiles(hol_render *r, const hol_frame_desc *f, int bare,
         }
         it->key = 2u << 24 | (uint32_t)br->nsteps << 16 | (uint32_t)k;
         if (f->lighting)
-            hol__item_lights(r, it, br->state.tile);
+            hol__item_lights(r, it, br->state.tile, !(f->flags & HOL_RENDER_NO_SHADOWS));
         /* tile frame -> room: the tile's heading is room north turned
          * clockwise by orient quarter turns */
         double a = -(double)br->state.orient * 1.5707963267948966;

@@ -90,10 +90,13 @@ enum {
                                      minimap unless in the hand) on a panel
                                      in the world (panel_* below), not on
                                      the screen */
-    HOL_RENDER_PANEL_LAYER = 8192 /* with PANEL: the panel is shown by the
+    HOL_RENDER_PANEL_LAYER = 8192, /* with PANEL: the panel is shown by the
                                      runtime (a composition layer drawn by
                                      hol_render_panel_image): the eye leaves
                                      it out (a map in the hand stays) */
+    HOL_RENDER_NO_SHADOWS = 16384 /* tests, at dusk and night: the lights
+                                     without the trunks' and hedges'
+                                     shadows */
 };
 
 #define HOL_RENDER_MAX_OBJECTIVES 8

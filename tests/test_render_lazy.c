@@ -9,9 +9,9 @@
  *   both orders of the two renderers on one OSMesa context: the same
  *   bytes; the frames draw without a GL error (desc.debug).
  * - test_prepare_counts_down: hol_render_prepare compiles one program a
- *   call and says how many are left: 78 programs after the day one
- *   (the lit tiles' have variants for 0, up to 2 and up to 4 trunk shadow
- *   pairs), then 0
+ *   call and says how many are left: HOL_PROG_SLOTS - 1 programs after
+ *   the day one (the lit tiles' have variants without shadows and with
+ *   the tile's shadow mask), then 0
  *   and 0 again; the frames after it are the eager renderer's.
  */
 #include <setjmp.h>

@@ -31,7 +31,7 @@
 static int key_eq(const hol_prog_key *a, const hol_prog_key *b)
 {
     return a->lighting == b->lighting && a->room == b->room && a->flat == b->flat &&
-           a->wedge == b->wedge && a->fx == b->fx && a->shadow_pairs == b->shadow_pairs &&
+           a->wedge == b->wedge && a->fx == b->fx && a->shadow == b->shadow &&
            a->text == b->text && a->lamps == b->lamps;
 }
 
@@ -42,7 +42,7 @@ static void test_slot_round_trip(void **state)
         hol_prog_key k = hol_prog_key_of_slot(s);
         if (hol_prog_slot(&k) != s)
             fail_msg("slot %d -> key (lighting %d room %d flat %d wedge %d fx %d pairs %d) -> %d",
-                     s, k.lighting, k.room, k.flat, k.wedge, k.fx, k.shadow_pairs,
+                     s, k.lighting, k.room, k.flat, k.wedge, k.fx, k.shadow,
                      hol_prog_slot(&k));
     }
     /* the first slot is the day program without the wedge (made at create) */
@@ -63,7 +63,7 @@ static void test_every_key(void **state)
             for (k.flat = -1; k.flat <= 2; k.flat++)
                 for (k.wedge = -1; k.wedge <= 2; k.wedge++)
                     for (k.fx = -1; k.fx <= HOL_PROG_FX_COUNT; k.fx++)
-                        for (k.shadow_pairs = -1; k.shadow_pairs <= 5; k.shadow_pairs++) {
+                        for (k.shadow = -1; k.shadow <= 3; k.shadow++) {
                             int s = hol_prog_slot(&k);
                             if (s < 0)
                                 continue;
@@ -74,7 +74,7 @@ static void test_every_key(void **state)
                             valid++;
                         }
     assert_int_equal(valid, HOL_PROG_SLOTS);
-    assert_int_equal(HOL_PROG_SLOTS, 2 + 12 + 12 * HOL_PROG_FX_COUNT * 3 + 1);
+    assert_int_equal(HOL_PROG_SLOTS, 2 + 12 + 12 * HOL_PROG_FX_COUNT * 2 + 1);
     /* the text program: text alone */
     hol_prog_key text = {HOL_LIGHT_DAY, 0, 0, 0, 0, 0, 1, 0};
     assert_int_equal(hol_prog_slot(&text), HOL_PROG_TEXT_SLOT);
@@ -89,7 +89,7 @@ static void test_every_key(void **state)
     bad.room = 1;
     assert_int_equal(hol_prog_slot(&bad), -1);
     bad = day;
-    bad.shadow_pairs = 2;
+    bad.shadow = 1;
     assert_int_equal(hol_prog_slot(&bad), -1);
     hol_prog_key room = {HOL_LIGHT_NIGHT, 1, 0, 0, 0, 0, 0, 0};
     assert_true(hol_prog_slot(&room) >= 0);
@@ -101,9 +101,9 @@ static void test_every_key(void **state)
     hol_prog_key lit_day = day; /* lamps only in the lit room */
     lit_day.lamps = 1;
     assert_int_equal(hol_prog_slot(&lit_day), -1);
-    hol_prog_key tiles = {HOL_LIGHT_DUSK, 0, 1, 1, HOL_PROG_FX_SPOTS, 4, 0, 0};
+    hol_prog_key tiles = {HOL_LIGHT_DUSK, 0, 1, 1, HOL_PROG_FX_SPOTS, 1, 0, 0};
     assert_true(hol_prog_slot(&tiles) >= 0);
-    tiles.shadow_pairs = 3;
+    tiles.shadow = 2;
     assert_int_equal(hol_prog_slot(&tiles), -1);
 }
 
@@ -111,13 +111,13 @@ static void test_preamble(void **state)
 {
     (void)state;
     char pre[512];
-    hol_prog_key k = {HOL_LIGHT_NIGHT, 0, 0, 1, HOL_PROG_FX_FIREFLIES, 2, 0, 0};
+    hol_prog_key k = {HOL_LIGHT_NIGHT, 0, 0, 1, HOL_PROG_FX_FIREFLIES, 1, 0, 0};
     int n = hol_prog_preamble(&k, pre, sizeof pre);
     assert_true(n > 0 && (size_t)n == strlen(pre));
     assert_true(strncmp(pre, "#version 300 es\n", 16) == 0);
     const char *want[] = {"#define HOL_LIT 1\n", "#define HOL_FLAT 0\n", "#define HOL_WEDGE 1\n",
-                          "#define HOL_NIGHT 1\n", "#define HOL_FX 1\n", "#define HOL_SHD 2\n",
-                          "#define HOL_SV vec2\n", "#define HOL_SW .xy\n",
+                          "#define HOL_NIGHT 1\n", "#define HOL_FX 1\n", "#define HOL_SHD 1\n",
+                          "#define HOL_SHM_N 64.0\n",
                           "#define HOL_LIGHT_D0_M ", "#define HOL_LIGHT_RADIUS_M "};
     for (size_t i = 0; i < sizeof want / sizeof want[0]; i++)
         if (!strstr(pre, want[i]))

@@ -5,8 +5,9 @@
 // night, 2 between dusk and night),
 // HOL_FX (HOL_PROG_FX_*: 0 lanterns, 1 fireflies, 2 spots; a value has
 // the code of those below it: test with >=), HOL_TX_ROWS (u_tx's rows of
-// per-light values), HOL_SHD (trunk shadow pairs: 0, 2, 4), HOL_SV and
-// HOL_SW (their vector type and swizzle), HOL_LAMPS (the lit room's
+// per-light values), HOL_SHD (1: the tile's shadow mask, HOL_SHM_N its
+// side, HOL_SHM_R its range, HOL_SHM_W and _H the masks a row and a column
+// of their texture: core/hol_shadow.h), HOL_LAMPS (the lit room's
 // trees and hedges take the lanterns' light; 0: its backdrop and outer
 // ground, ambient and sun only), HOL_TEXT (the overlays' program:
 // flat colours and glyphs, with alpha), HOL_SPREAD (the atlas's field
@@ -50,10 +51,8 @@ in vec4 v_L;
 in float v_Le;
 in vec4 v_th;
 #if HOL_SHD
-in HOL_SV v_S1;
-in HOL_SV v_S2;
-in HOL_SV v_S3;
-uniform vec4 u_ts[13];
+uniform sampler2D u_shm;
+uniform vec4 u_shr;
 #endif
 // per-light values (u_tx[5]: a lantern's weight, in every lit tile's
 // program: lanterns merged by the budget weigh more than 1)
@@ -96,23 +95,20 @@ float hol_tone(float l) {
 }
 #endif
 #if HOL_LIT == 1
-// The trunk shadows of a tile (hol_light.h): up to four light-trunk pairs.
-// Per pair, three affine functions of the Klein point (hol_light_wedge)
-// interpolated exactly: times g, sinh of the signed distance to the two
-// geodesics from the light tangent to the trunk and to the one through
-// the trunk perpendicular to the light, over the soft edge's width 2 e, so
-// the occlusion is a linear ramp 2 e wide centred on the shadow's edge;
-// u_ts[9 + p] is pair p's light slot (one-hot), so the sum gathers each
-// light's occlusions; the light is multiplied by 1 - that (0 at least).
+// The shadows of a tile (render/hol_light.h, core/hol_shadow.h): every
+// trunk's shadow from every light of the tile, rastered on the CPU into
+// the tile's mask, one byte a light slot; u_shr: 1 / (2 A) (A the tile's
+// Klein half side), then the mask's first texel centre in u_shm's
+// coordinates. The Klein point k maps to the mask's texel centres (k = +-A
+// on the edge ones); the bilinear mix t of the stored bytes holds u =
+// (2 t - 1) R, the occlusion is clamp(1/2 + u, 0, 1), and each light is
+// multiplied by 1 - that = clamp(R + 1/2 - 2 R t, 0, 1).
 #if HOL_SHD
 vec4 hol_shadow(float g) {
-  HOL_SV occ = clamp(min(min(v_S1, v_S2), v_S3) * g + 0.5, 0.0, 1.0);
-#if HOL_SHD == 2
-  return 1.0 - min(u_ts[9] * occ.x + u_ts[10] * occ.y, 1.0);
-#else
-  return 1.0 - min(u_ts[9] * occ.x + u_ts[10] * occ.y + u_ts[11] * occ.z +
-                   u_ts[12] * occ.w, 1.0);
-#endif
+  vec2 st = clamp(v_loc.xz * u_shr.x + 0.5, 0.0, 1.0);
+  vec4 t = texture(u_shm, st * vec2((HOL_SHM_N - 1.0) / (HOL_SHM_W * HOL_SHM_N),
+                                    (HOL_SHM_N - 1.0) / (HOL_SHM_H * HOL_SHM_N)) + u_shr.yz);
+  return clamp(t * (-2.0 * HOL_SHM_R) + (HOL_SHM_R + 0.5), 0.0, 1.0);
 }
 #else
 vec4 hol_shadow(float g) {

@@ -75,14 +75,6 @@ vec4 hol_th(vec3 nrm, vec2 k) {
   vec4 gx = a * k.x * v_L - u_tl[0], gy = a * k.y * v_L - u_tl[1];
   return -(gx * nl.x - gy * nl.z) * inversesqrt(max(gx * gx + gy * gy, 1e-20));
 }
-// the tile's trunk shadow pairs (hol__item_shadows): three half-planes
-// each, affine
-#if HOL_SHD
-uniform vec4 u_ts[13];
-out HOL_SV v_S1;
-out HOL_SV v_S2;
-out HOL_SV v_S3;
-#endif
 // spots (HOL_PROG_FX_SPOTS) and up
 #if HOL_FX >= 2
 uniform vec4 u_tx[HOL_TX_ROWS];
@@ -99,11 +91,6 @@ void main() {
   v_L = u_tl[2] - v_loc.x * u_tl[0] - v_loc.z * u_tl[1];
   v_Le = u_tl[3].z - v_loc.x * u_tl[3].x - v_loc.z * u_tl[3].y;
   v_th = hol_th(a_nrm, v_loc.xz);
-#if HOL_SHD
-  v_S1 = HOL_SV((v_loc.x * u_ts[0] + v_loc.z * u_ts[1] + u_ts[2]) HOL_SW);
-  v_S2 = HOL_SV((v_loc.x * u_ts[3] + v_loc.z * u_ts[4] + u_ts[5]) HOL_SW);
-  v_S3 = HOL_SV((v_loc.x * u_ts[6] + v_loc.z * u_ts[7] + u_ts[8]) HOL_SW);
-#endif
 // spots (HOL_PROG_FX_SPOTS) and up
 #if HOL_FX >= 2
   v_U = v_loc.x * u_tx[0] + v_loc.z * u_tx[1] - u_tx[2];
