@@ -316,7 +316,7 @@ static void hol__fill_lines(const hol_app *app, hol_app_hud *h)
         return;
     HOL__LINE("%s", h->status[0] ? h->status : h->objective);
     if (v->seated) /* the panel names the mode */
-        HOL__LINE("%s", hol_prompt_seated(h->device));
+        HOL__LINE("%s", hol_prompt_seated(h->device, lang));
     HOL__LINE(hol_str(lang, HOL_S_STEPS_FMT), h->steps);
     if (lim > 0)
         HOL__LINE(hol_str(lang, HOL_S_TIME_OF_FMT), secs / 60 % 100000, secs % 60, lim / 60 % 100000,

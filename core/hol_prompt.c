@@ -63,14 +63,14 @@ const char *hol_prompt_move(uint32_t device, int lang)
     }
 }
 
-const char *hol_prompt_seated(uint32_t device)
+const char *hol_prompt_seated(uint32_t device, int lang)
 {
     switch (device) {
     case HOL_DEVICE_KEYBOARD: return "SEATED: W/A/S/D OR UP/DOWN: ONE STEP";
     case HOL_DEVICE_GAMEPAD: return "SEATED: LEFT STICK OR D-PAD: ONE STEP";
     case HOL_DEVICE_NONE: return "SEATED: SWIPE OR ARROWS: ONE STEP";
-    case HOL_DEVICE_WEBXR_HAND:
-    case HOL_DEVICE_XR_HAND: return "SEATED: A THUMBSTICK: ONE STEP";
+    case HOL_DEVICE_WEBXR_HAND: /* a pinch and flick (core/hol_body.h) */
+    case HOL_DEVICE_XR_HAND: return hol_str(lang, HOL_S_SEATED_HANDS);
     default: return "SEATED: THUMBSTICK: ONE STEP";
     }
 }

@@ -18,8 +18,10 @@
  * - hol_prompt_move(device, lang) says how one walks with it ("W/S/A/D:
  *   WALK"), in lang (core/hol_str.h); NULL for HOL_DEVICE_NONE. The
  *   controls' names above are the names printed on them, in every
- *   language. hol_prompt_seated(device) names seated play and its step
- *   controls (English only, one table here, for the string table to take).
+ *   language. hol_prompt_seated(device, lang) names seated play and its step
+ *   controls (English only, one table here, for the string table to take;
+ *   the hands' line, a pinch and flick (core/hol_body.h), is the table's
+ *   HOL_S_SEATED_HANDS, in lang).
  * - The tables must follow the bindings: tests/test_xr_bind.c derives each
  *   XR word from the profile's binding path and compares.
  * - Pure data: static strings, no state.
@@ -34,6 +36,6 @@ const char *hol_prompt_move(uint32_t device, int lang);
 /* Seated play (HOL_INPUT_SEATED): the panel's line naming the mode and
  * how one steps with the device ("SEATED: W/A/S/D OR UP/DOWN: ONE STEP");
  * never NULL. */
-const char *hol_prompt_seated(uint32_t device);
+const char *hol_prompt_seated(uint32_t device, int lang);
 
 #endif

@@ -93,6 +93,7 @@ typedef enum hol_str_id {
     HOL_S_TIME_FMT,       /* %ld %02ld */
     HOL_S_TILE_FMT,       /* %.40s: the tile's address */
     HOL_S_CELL_FMT,       /* %d %d %d: column, row, the room's north */
+    HOL_S_SEATED_HANDS,   /* seated play's line with hands (hol_prompt_seated) */
     /* sound captions (core/hol_caption.h; 47 bytes) */
     HOL_S_CAP_START,
     HOL_S_CAP_KEY,
