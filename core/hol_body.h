@@ -30,7 +30,7 @@
  *   button in the record's pressed bits, placing its room from the head as
  *   for its recentre control, so the app recentres exactly as for the
  *   controller's (the record, and a recording, carry the button).
- * - The seated step by hand (issue 37; docs/teaching.md, docs/headset.md):
+ * - The seated step by hand (issue 37; docs/teaching.md, "Seated play"):
  *   in seated play (HOL_INPUT_SEATED) a pinch dragged across the floor
  *   (a "pinch and flick") takes one room step in the direction the hand
  *   went, relative to the look: the pinch point (the middle of the thumb's
