@@ -104,3 +104,65 @@ uint32_t hol_gesture_step(hol_gesture *g, const hol_hand_joints joints[2], doubl
     g->spent = 1;
     return HOL_BTN_RECENTRE;
 }
+
+int hol_flick_point(const hol_input *in, int h, double out[3])
+{
+    const hol_hand_joints *j = &in->joints[h];
+    if (j->tracked) {
+        for (int k = 0; k < 3; k++)
+            out[k] = ((double)j->pos[HOL_JOINT_THUMB_TIP][k] + j->pos[HOL_JOINT_INDEX_TIP][k]) / 2;
+        return 1;
+    }
+    if (!(in->flags & (h == HOL_HAND_RIGHT ? HOL_INPUT_HAND_R_VALID : HOL_INPUT_HAND_L_VALID)))
+        return 0;
+    for (int k = 0; k < 3; k++)
+        out[k] = in->hand[h].pos[k];
+    return 1;
+}
+
+/* The step of a level move (dx, dz) against the look's forward (fx, fz,
+ * unit): the nearest of ahead, back, left, right. */
+static uint32_t hol__flick_dir(double dx, double dz, double fx, double fz)
+{
+    double ahead = dx * fx + dz * fz, right = -dx * fz + dz * fx; /* right of (fx, fz): (-fz, fx) */
+    if (fabs(ahead) >= fabs(right))
+        return ahead >= 0 ? HOL_BTN_STEP_FWD : HOL_BTN_STEP_BACK;
+    return right >= 0 ? HOL_BTN_STEP_RIGHT : HOL_BTN_STEP_LEFT;
+}
+
+uint32_t hol_flick_step(hol_flick *g, const hol_input *in, const int pinch[2])
+{
+    /* the look's forward, level: the head's -z turned by its quaternion */
+    const float *q = in->head.quat;
+    double fx = -2.0 * ((double)q[0] * q[2] + (double)q[1] * q[3]);
+    double fz = -(1.0 - 2.0 * ((double)q[0] * q[0] + (double)q[1] * q[1]));
+    double fl = sqrt(fx * fx + fz * fz);
+    int head = (in->flags & HOL_INPUT_HEAD_VALID) && fl > 1e-6;
+    uint32_t out = 0;
+    for (int h = 0; h < 2; h++) {
+        double at[3];
+        if (!pinch[h] || !hol_flick_point(in, h, at)) {
+            g->on[h] = g->spent[h] = g->stepped[h] = 0;
+            continue;
+        }
+        if (!g->on[h]) { /* a pinch begins */
+            g->on[h] = 1;
+            g->spent[h] = g->stepped[h] = 0;
+            g->t0[h] = in->time_s;
+            memcpy(g->at0[h], at, sizeof at);
+            continue;
+        }
+        if (g->spent[h])
+            continue;
+        if (in->time_s - g->t0[h] > HOL_FLICK_S) {
+            g->spent[h] = 1; /* too slow: the platform's pinch */
+            continue;
+        }
+        double dx = at[0] - g->at0[h][0], dz = at[2] - g->at0[h][2];
+        if (out || !head || dx * dx + dz * dz < HOL_FLICK_M * HOL_FLICK_M)
+            continue;
+        out = hol__flick_dir(dx, dz, fx / fl, fz / fl);
+        g->spent[h] = g->stepped[h] = 1;
+    }
+    return out;
+}

@@ -30,6 +30,27 @@
  *   button in the record's pressed bits, placing its room from the head as
  *   for its recentre control, so the app recentres exactly as for the
  *   controller's (the record, and a recording, carry the button).
+ * - The seated step by hand (issue 37; docs/teaching.md, "Seated play"):
+ *   in seated play (HOL_INPUT_SEATED) a pinch dragged across the floor
+ *   (a "pinch and flick") takes one room step in the direction the hand
+ *   went, relative to the look: the pinch point (the middle of the thumb's
+ *   and the index's tips of a tracked hand, else the hand's grip) moved
+ *   HOL_FLICK_M or more horizontally from where the pinch began, within
+ *   HOL_FLICK_S of its beginning, gives the edge of HOL_BTN_STEP_FWD,
+ *   BACK, LEFT or RIGHT, whichever of the look's four directions (the
+ *   head's forward, level) the move is nearest (a tie: ahead or back).
+ *   One step a pinch: the next needs the pinch let go and made anew. A
+ *   pinch that took a step is used up (hol_flick.stepped): the platform
+ *   makes its end press nothing and never a long pinch of it (so it is
+ *   never a confirm, a menu or a back); a pinch that did not is the
+ *   platform's as before (a tap moves less than HOL_FLICK_M, a long pinch
+ *   is back only after HOL_FLICK_S has passed). The palms-up recentre
+ *   needs open hands, never a pinch. hol_flick_step reads the record's
+ *   head (tracked: HOL_INPUT_HEAD_VALID), the joints or grips (room
+ *   coordinates) and the platform's pinches (each hand's select, held,
+ *   while focused); it returns at most one step bit, which the platform
+ *   puts in the record's pressed bits (a recording carries it; the core
+ *   steps as for a thumbstick's push: core/hol_input.h).
  * - Pure: no allocation, no globals, no clock (times come in).
  */
 #ifndef HOL_BODY_H
@@ -90,5 +111,26 @@ typedef struct hol_gesture {
  * at the record where both palms have been up HOL_GESTURE_HOLD_S, else 0.
  * Zero the state to begin. */
 uint32_t hol_gesture_step(hol_gesture *g, const hol_hand_joints joints[2], double t);
+
+#define HOL_FLICK_M 0.12 /* a pinch dragged this far (metres, level): a step */
+#define HOL_FLICK_S 0.8  /* within this long of its beginning (seconds; a
+                            long pinch, back, is 1 s) */
+
+typedef struct hol_flick {
+    int on[2];          /* hand h pinches (with a pinch point) since t0[h] */
+    int spent[2];       /* its step is taken, or its time is up */
+    int stepped[2];     /* 1: this pinch took a step (used up) */
+    double t0[2];
+    double at0[2][3];   /* where its pinch point began (room) */
+} hol_flick;
+
+/* The pinch point of hand h of in (room coordinates) into out; 0 when
+ * the hand has neither joints nor a grip. */
+int hol_flick_point(const hol_input *in, int h, double out[3]);
+
+/* One record in (its time, head, joints, grips) with pinch[h] 1 while
+ * hand h pinches: the step's button (HOL_BTN_STEP_*) or 0. Zero the
+ * state to begin. */
+uint32_t hol_flick_step(hol_flick *g, const hol_input *in, const int pinch[2]);
 
 #endif

@@ -108,7 +108,7 @@ typedef enum hol_str_id {
     HOL_S_SEATED_KEYBOARD,
     HOL_S_SEATED_GAMEPAD,
     HOL_S_SEATED_TOUCH,   /* HOL_DEVICE_NONE: a swipe or the on-screen arrows */
-    HOL_S_SEATED_HANDS,
+    HOL_S_SEATED_HANDS,   /* a pinch and flick (core/hol_body.h) */
     HOL_S_SEATED_STICK,
     /* HOL_DEVICE_NONE's buttons, named by their action (hol_prompt_button_in;
      * in the prompt's line), in the order of the HOL_BTN_* bits 0..7 */

@@ -79,6 +79,102 @@ static void test_body_from_input(void **state)
     assert_int_equal(hol_input_valid(&in), 0);
 }
 
+/* Seated play's step by hand (a pinch and flick): the pinch point moved
+ * 12 cm level within 0.8 s is one step in the look's nearest direction;
+ * one a pinch; a tap, a slow drag, a lift and a record with no head are
+ * none; a hand without joints flicks with its grip. */
+static hol_input flick_rec(double t, double yaw, const double at[3], int joints)
+{
+    hol_input in = app_head(t, 1, 1, yaw, HOL_DEVICE_WEBXR_HAND, 0);
+    in.flags |= HOL_INPUT_HEADSET | HOL_INPUT_SEATED;
+    const double w[3] = {at[0], at[1], at[2] + 0.1}; /* the tips ~10 cm ahead */
+    if (joints) {
+        hand_fixture(HOL_HAND_RIGHT, w, 0, 0, 1, &in.joints[HOL_HAND_RIGHT]);
+        double p[3];
+        assert_true(hol_flick_point(&in, HOL_HAND_RIGHT, p));
+        for (int k = 0; k < 3; k++) /* the whole hand moved so that p is at */
+            for (int i = 0; i < HOL_HAND_JOINTS; i++)
+                in.joints[HOL_HAND_RIGHT].pos[i][k] += (float)(at[k] - p[k]);
+    } else {
+        in.flags |= HOL_INPUT_HAND_R_VALID;
+        for (int k = 0; k < 3; k++)
+            in.hand[HOL_HAND_RIGHT].pos[k] = (float)at[k];
+    }
+    return in;
+}
+
+/* A right-hand pinch from (1.7, 1, 1.2) moved by (dx, dy, dz) over n
+ * records of 0.05 s (the last at t0 + 0.05 n), looking at yaw: the steps
+ * given, or'ed; *out_stepped the state's stepped at its end. */
+static uint32_t flick(double yaw, double dx, double dy, double dz, int n, int joints,
+                      int *out_stepped)
+{
+    hol_flick g;
+    memset(&g, 0, sizeof g);
+    const int on[2] = {0, 1};
+    uint32_t got = 0;
+    for (int i = 0; i <= n; i++) {
+        double f = (double)i / n, at[3] = {1.7 + dx * f, 1.0 + dy * f, 1.2 + dz * f};
+        hol_input in = flick_rec(2.0 + 0.05 * i, yaw, at, joints);
+        uint32_t b = hol_flick_step(&g, &in, on);
+        assert_true(b == 0 || !(got & b)); /* one a pinch */
+        assert_true((b & ~(uint32_t)HOL_BTN_STEPS) == 0);
+        got |= b;
+    }
+    *out_stepped = g.stepped[HOL_HAND_RIGHT];
+    return got;
+}
+
+static void test_flick(void **state)
+{
+    (void)state;
+    int st;
+    /* looking north: north ahead, east right */
+    assert_int_equal(flick(0, 0, 0, -0.2, 4, 1, &st), HOL_BTN_STEP_FWD);
+    assert_int_equal(st, 1);
+    assert_int_equal(flick(0, 0, 0, 0.2, 4, 1, &st), HOL_BTN_STEP_BACK);
+    assert_int_equal(flick(0, 0.2, 0, 0.05, 4, 1, &st), HOL_BTN_STEP_RIGHT);
+    assert_int_equal(flick(0, -0.2, 0, 0.05, 4, 1, &st), HOL_BTN_STEP_LEFT);
+    /* looking west: west ahead, north right, south left, east back */
+    assert_int_equal(flick(90, -0.15, 0, 0, 3, 1, &st), HOL_BTN_STEP_FWD);
+    assert_int_equal(flick(90, 0, 0, -0.15, 3, 1, &st), HOL_BTN_STEP_RIGHT);
+    assert_int_equal(flick(90, 0, 0, 0.15, 3, 1, &st), HOL_BTN_STEP_LEFT);
+    assert_int_equal(flick(90, 0.15, 0, 0, 3, 1, &st), HOL_BTN_STEP_BACK);
+    /* 30 degrees west of north: a move north-west (the look) is ahead */
+    assert_int_equal(flick(30, -0.1, 0, -0.1732, 3, 1, &st), HOL_BTN_STEP_FWD);
+    /* with the grip alone */
+    assert_int_equal(flick(0, 0.2, 0, 0, 4, 0, &st), HOL_BTN_STEP_RIGHT);
+    /* a tap (a pinch that moved 5 cm), a lift of 30 cm, a drag of 12 cm
+     * that took 1.0 s: no step, the pinch the platform's */
+    assert_int_equal(flick(0, 0.05, 0, 0, 4, 1, &st), 0);
+    assert_int_equal(st, 0);
+    assert_int_equal(flick(0, 0, 0.3, 0, 4, 1, &st), 0);
+    assert_int_equal(flick(0, 0, 0, -0.13, 20, 1, &st), 0);
+    assert_int_equal(st, 0);
+    /* just within: 12.5 cm in 0.8 s */
+    assert_int_equal(flick(0, 0, 0, -0.125, 16, 1, &st), HOL_BTN_STEP_FWD);
+    /* no head, no pinch, no hand: nothing; a new pinch steps again */
+    hol_flick g;
+    memset(&g, 0, sizeof g);
+    const int on[2] = {0, 1}, off[2] = {0, 0};
+    const double a0[3] = {1.7, 1, 1.2}, a1[3] = {1.7, 1, 1.0};
+    hol_input in = flick_rec(1.0, 0, a0, 1);
+    assert_int_equal(hol_flick_step(&g, &in, on), 0);
+    in = flick_rec(1.1, 0, a1, 1);
+    in.flags &= ~(uint32_t)HOL_INPUT_HEAD_VALID;
+    assert_int_equal(hol_flick_step(&g, &in, on), 0);
+    in.flags |= HOL_INPUT_HEAD_VALID;
+    assert_int_equal(hol_flick_step(&g, &in, off), 0); /* let go */
+    assert_int_equal(hol_flick_step(&g, &in, on), 0);  /* pinched again here */
+    in = flick_rec(1.3, 0, a0, 1);
+    assert_int_equal(hol_flick_step(&g, &in, on), HOL_BTN_STEP_BACK);
+    in = flick_rec(1.4, 0, a1, 1);
+    assert_int_equal(hol_flick_step(&g, &in, on), 0); /* the same pinch */
+    memset(&in.joints, 0, sizeof in.joints);
+    assert_int_equal(hol_flick_step(&g, &in, on), 0); /* the hand lost */
+    assert_int_equal(g.on[HOL_HAND_RIGHT], 0);
+}
+
 /* Palms: up and open, down, pinching; one hand alone never fires. */
 static void test_palm_up(void **state)
 {
@@ -250,6 +346,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_body_from_input),
         cmocka_unit_test(test_palm_up),
+        cmocka_unit_test(test_flick),
         cmocka_unit_test(test_gesture_hold),
         cmocka_unit_test(test_hands_recentre),
         cmocka_unit_test(test_map_in_hand),

@@ -257,7 +257,7 @@ static void test_seated_and_buttons(void **state)
     assert_string_equal(hol_prompt_seated(HOL_DEVICE_KEYBOARD, HOL_LANG_EN),
                         "SEATED: W/A/S/D OR UP/DOWN: ONE STEP");
     assert_string_equal(hol_prompt_seated(HOL_DEVICE_XR_HAND, HOL_LANG_EN),
-                        "SEATED: A THUMBSTICK: ONE STEP");
+                        "SEATED: PINCH AND FLICK: ONE STEP");
     assert_string_equal(hol_prompt_seated(HOL_DEVICE_NONE, HOL_LANG_DE),
                         "SITZEND: WISCHEN ODER PFEILE: EIN SCHRITT");
     for (int l = 0; l < HOL_LANG_COUNT; l++)

@@ -273,6 +273,64 @@ static void test_hands(void **state)
     assert_int_equal(in.pressed, HOL_BTN_CONFIRM);
 }
 
+/* Seated with hands (?seated=1): a right pinch dragged 15 cm ahead is one
+ * step ahead when it has gone 12 cm, its end pressing nothing and no
+ * long pinch however long it is held; a pinch that stays is a tap
+ * (confirm) as before; standing, the same drag is a tap. */
+static void test_hands_seated(void **state)
+{
+    (void)state;
+    hol_web_xr_state st;
+    memset(&st, 0, sizeof st);
+    hol_web_xr_frame f;
+    memset(&f, 0, sizeof f);
+    f.visibility = HOL_WEB_XR_VISIBLE;
+    f.head_valid = 1;
+    f.head_pos[1] = 1.2f;
+    f.head_quat[3] = 1;
+    for (int h = 0; h < 2; h++) {
+        f.pad[h].present = f.pad[h].hand = f.pad[h].grip_valid = 1;
+        f.pad[h].grip_pos[0] = h ? 0.2f : -0.2f;
+        f.pad[h].grip_pos[1] = 1.0f;
+        f.pad[h].grip_pos[2] = -0.3f;
+        f.pad[h].grip_quat[3] = 1;
+    }
+    hol_input in;
+    double t = 1.0;
+    st.seated = 1;
+    f.pad[1].button[0] = 1;
+    hol_web_xr_input(&st, &f, t += 0.05, &in);
+    assert_int_equal(in.pressed, 0);
+    for (int k = 1; k <= 5; k++) { /* 3.2 cm a frame ahead (north, -z) */
+        f.pad[1].grip_pos[2] = -0.3f - 0.032f * (float)k;
+        hol_web_xr_input(&st, &f, t += 0.05, &in);
+        assert_int_equal(in.pressed, k == 4 ? HOL_BTN_STEP_FWD : 0);
+    }
+    hol_web_xr_input(&st, &f, t += 1.5, &in); /* held on: no back */
+    assert_int_equal(in.pressed | in.buttons, 0);
+    f.pad[1].button[0] = 0;
+    hol_web_xr_input(&st, &f, t += 0.05, &in); /* let go: nothing */
+    assert_int_equal(in.pressed | in.buttons, 0);
+    /* a pinch that stays: a tap, as standing */
+    f.pad[1].button[0] = 1;
+    hol_web_xr_input(&st, &f, t += 0.05, &in);
+    hol_web_xr_input(&st, &f, t += 0.2, &in);
+    f.pad[1].button[0] = 0;
+    hol_web_xr_input(&st, &f, t += 0.05, &in);
+    assert_int_equal(in.pressed, HOL_BTN_CONFIRM);
+    st.seated = 0;
+    /* standing: a short drag is a tap (confirm), the same as before */
+    f.pad[1].grip_pos[2] = -0.3f;
+    f.pad[1].button[0] = 1;
+    hol_web_xr_input(&st, &f, t += 0.05, &in);
+    f.pad[1].grip_pos[2] = -0.45f;
+    hol_web_xr_input(&st, &f, t += 0.2, &in);
+    assert_int_equal(in.pressed, 0);
+    f.pad[1].button[0] = 0;
+    hol_web_xr_input(&st, &f, t += 0.05, &in);
+    assert_int_equal(in.pressed, HOL_BTN_CONFIRM);
+}
+
 /* The glue's joints (reference space) reach the record in room
  * coordinates; both palms up and open for 1 s, focused, press the
  * recentre once, which places the room from the head (the head, a metre
@@ -413,6 +471,7 @@ int main(void)
         cmocka_unit_test(test_input),
         cmocka_unit_test(test_hands),
         cmocka_unit_test(test_hands_recentre),
+        cmocka_unit_test(test_hands_seated),
         cmocka_unit_test(test_bounds),
         cmocka_unit_test(test_room_of_another_size),
     };

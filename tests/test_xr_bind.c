@@ -20,7 +20,7 @@
 
 typedef struct spec_profile {
     const char *name;
-    const char *left[16], *right[16]; /* input/... components per hand */
+    const char *left[24], *right[24]; /* input/... components per hand */
 } spec_profile;
 
 static const spec_profile spec[] = {
@@ -42,10 +42,12 @@ static const spec_profile spec[] = {
     {"/interaction_profiles/valve/index_controller",
      {"system/click", "system/touch", "a/click", "a/touch", "b/click", "b/touch",
       "squeeze/value", "squeeze/force", "trigger/click", "trigger/value", "trigger/touch",
-      "thumbstick/click", "trackpad/force", "grip/pose", "aim/pose"},
+      "thumbstick/x", "thumbstick/y", "thumbstick/click", "thumbstick/touch", "trackpad/x",
+      "trackpad/y", "trackpad/force", "trackpad/touch", "grip/pose", "aim/pose"},
      {"system/click", "system/touch", "a/click", "a/touch", "b/click", "b/touch",
       "squeeze/value", "squeeze/force", "trigger/click", "trigger/value", "trigger/touch",
-      "thumbstick/click", "trackpad/force", "grip/pose", "aim/pose"}},
+      "thumbstick/x", "thumbstick/y", "thumbstick/click", "thumbstick/touch", "trackpad/x",
+      "trackpad/y", "trackpad/force", "trackpad/touch", "grip/pose", "aim/pose"}},
     {"/interaction_profiles/microsoft/motion_controller",
      {"menu/click", "squeeze/click", "trigger/value", "thumbstick/x", "thumbstick/y",
       "thumbstick/click", "trackpad/x", "trackpad/y", "trackpad/click", "trackpad/touch",
@@ -76,7 +78,7 @@ static int spec_has(const spec_profile *p, const char *path)
         if (strncmp(path, pre[h], n))
             continue;
         const char *const *c = h ? p->right : p->left;
-        for (int i = 0; i < 16 && c[i]; i++)
+        for (int i = 0; i < 24 && c[i]; i++)
             if (!strcmp(path + n, c[i]))
                 return 1;
     }
@@ -163,6 +165,37 @@ static void test_every_binding_is_in_its_profile(void **state)
 
 /* Issue 18: quit, menu, restart and recentre in every profile; within a
  * layer, one input per action. */
+/* Seated play's sticks (holonomy xr --seated): each a vector2f path whose
+ * /x and /y its profile defines for that hand; the thumbstick of Touch,
+ * Index and WMR, the Vive's trackpad; none on the simple controller or
+ * the hands. */
+static void test_seated_sticks(void **state)
+{
+    (void)state;
+    const hol_xr_profile *p = hol_xr_profiles();
+    int with = 0;
+    for (int k = 0; k < HOL_XR_NPROFILES; k++) {
+        const spec_profile *s = spec_of(p[k].profile);
+        for (int h = 0; h < 2; h++) {
+            const char *st = hol_xr_stick_path(k, h);
+            if (!st)
+                continue;
+            with += h;
+            char c[160];
+            for (int a = 0; a < 2; a++) {
+                snprintf(c, sizeof c, "%s/%c", st, "xy"[a]);
+                if (!spec_has(s, c))
+                    fail_msg("%s: %s not in the profile", p[k].profile, c);
+            }
+            assert_true(!strncmp(st, h ? "/user/hand/right/" : "/user/hand/left/", h ? 17 : 16));
+        }
+    }
+    assert_int_equal(with, 4);
+    assert_null(hol_xr_stick_path(hol_xr_profile_find("/interaction_profiles/khr/simple_controller"), 1));
+    assert_null(hol_xr_stick_path(-1, 0));
+    assert_null(hol_xr_stick_path(0, 2));
+}
+
 static void test_every_profile_reaches_every_action(void **state)
 {
     (void)state;
@@ -381,6 +414,7 @@ int main(void)
         cmocka_unit_test(test_the_five_profiles),
         cmocka_unit_test(test_every_binding_is_in_its_profile),
         cmocka_unit_test(test_every_profile_reaches_every_action),
+        cmocka_unit_test(test_seated_sticks),
         cmocka_unit_test(test_buttons),
         cmocka_unit_test(test_haptic_output),
         cmocka_unit_test(test_layer_change_waits_for_a_release),

@@ -28,7 +28,7 @@ const char *const cli_xr_usage =
     "                   [--play-area WxD] [--no-haptics] [--mute | --volume V]\n"
     "                   [--track-hz N] [--panel quad|scene] [--lang en|de|nl]\n"
     "                   [--check-frame K --check-dir DIR]\n"
-    "                   [--tiling 4,Q] [--room CxR] [--cell M]\n"
+    "                   [--tiling 4,Q] [--room CxR] [--cell M] [--seated]\n"
     "\n"
     "The headset app on this machine's OpenXR runtime (for example Monado):\n"
     "the room centred on the stage origin, north along stage -Z; the\n"
@@ -42,6 +42,11 @@ const char *const cli_xr_usage =
     "Controllers: confirm, menu, recentre, minimap; in the menu, restart\n"
     "(confirm's button) and quit (README: Headset, the bindings).\n"
     "\n"
+    "  --seated        seated play (docs/teaching.md): the head walks\n"
+    "                  nothing; a push of either thumbstick (the Vive's\n"
+    "                  trackpad) takes one room step towards the look's\n"
+    "                  nearest direction, with a short fade; recorded, so\n"
+    "                  replay plays it again\n"
     "  --study FILE    a study's conditions in the order of the participant's\n"
     "                  number (--participant P07: 7), as 'holonomy play --study'\n"
     "  --frames N      request exit after N submitted frames\n"
@@ -98,6 +103,7 @@ typedef struct xr_opts {
     int append, restart_participant, resume;
     char participant_id[HOL_REC_ID_MAX]; /* --participant in its spelling */
     int space; /* 0 or HOL_XR_SPACE_LOCAL (hol_xr_desc.space) */
+    int seated; /* --seated (hol_xr_desc.seated) */
     int panel; /* HOL_XR_PANEL_QUAD (0) or _SCENE (hol_xr_desc.panel) */
     play_geometry geo;
     float play_area[2]; /* --play-area (hol_xr_desc.play_area) */
@@ -158,12 +164,13 @@ static const cli_store xr_store[] = {
     CLI_STORE_FLAG("--mute", xr_opts, mute, 1),
     CLI_STORE_FLAG("--restart-participant", xr_opts, restart_participant, 1),
     CLI_STORE_FLAG("--resume", xr_opts, resume, 1),
+    CLI_STORE_FLAG("--seated", xr_opts, seated, 1),
     {NULL, 0, 0, 0}};
 
 static int xr_options(const char *cmd, int argc, char **argv, xr_opts *o)
 {
     static const char *const flags[] = {"--append", "--no-haptics", "--restart-participant",
-                                        "--resume", "--mute", NULL};
+                                        "--resume", "--mute", "--seated", NULL};
     memset(o, 0, sizeof *o);
     o->check_frame = -1;
     o->volume = -1;
@@ -415,6 +422,7 @@ static int xr_run(const xr_opts *o, xr_ctx *c, const hol_input *script, long nsc
     d.script = script;
     d.nscript = nscript;
     d.space = o->space;
+    d.seated = o->seated;
     d.panel = o->panel;
     d.play_area[0] = o->play_area[0];
     d.play_area[1] = o->play_area[1];

@@ -8,6 +8,7 @@
  * rest zero: the API's own idiom. */
 #pragma GCC diagnostic ignored "-Wmissing-field-initializers"
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -40,7 +41,7 @@ static int hol__action(hol__xr *x, XrAction *out, const char *name, const char *
 /* The suggested bindings of profile i (hol_xr_bind.h): all must be accepted. */
 static int hol__suggest(hol__xr *x, const hol_xr_profile *p)
 {
-    XrActionSuggestedBinding sb[HOL_XR_ACT_COUNT + 4];
+    XrActionSuggestedBinding sb[HOL_XR_ACT_COUNT + 6];
     uint32_t n = 0;
     for (int h = 0; h < 2; h++) {
         sb[n].action = x->grip_action;
@@ -55,6 +56,12 @@ static int hol__suggest(hol__xr *x, const hol_xr_profile *p)
     for (int a = 0; a < HOL_XR_ACT_COUNT; a++) {
         sb[n].action = x->act[a];
         if (hol__path(x, p->path[a], &sb[n++].binding))
+            return 1;
+    }
+    for (int h = 0; x->d->seated && h < 2; h++) { /* seated: the sticks */
+        const char *s = hol_xr_stick_path((int)(p - hol_xr_profiles()), h);
+        sb[n].action = x->stick_action;
+        if (s && hol__path(x, s, &sb[n++].binding))
             return 1;
     }
     XrInteractionProfileSuggestedBinding ps = {XR_TYPE_INTERACTION_PROFILE_SUGGESTED_BINDING};
@@ -78,7 +85,9 @@ int hol__xr_actions(hol__xr *x)
     if (hol__path(x, "/user/hand/left", &x->hand_path[0]) ||
         hol__path(x, "/user/hand/right", &x->hand_path[1]) ||
         hol__action(x, &x->grip_action, "grip", "Hand pose", XR_ACTION_TYPE_POSE_INPUT, 1) ||
-        hol__action(x, &x->haptic_action, "haptic", "Pulse", XR_ACTION_TYPE_VIBRATION_OUTPUT, 1))
+        hol__action(x, &x->haptic_action, "haptic", "Pulse", XR_ACTION_TYPE_VIBRATION_OUTPUT, 1) ||
+        (x->d->seated && hol__action(x, &x->stick_action, "step", "Seated step",
+                                     XR_ACTION_TYPE_VECTOR2F_INPUT, 1)))
         return 1;
     for (int a = 0; a < HOL_XR_ACT_COUNT; a++)
         if (hol__action(x, &x->act[a], hol_xr_action_name(a), hol_xr_action_label(a),
@@ -223,6 +232,18 @@ int hol__xr_haptics(hol__xr *x)
 }
 
 /* ---- state ---------------------------------------------------------------- */
+
+int hol__xr_stick(hol__xr *x, int h, float out[2])
+{
+    XrActionStateGetInfo gi = {XR_TYPE_ACTION_STATE_GET_INFO};
+    gi.action = x->stick_action;
+    gi.subactionPath = x->hand_path[h];
+    XrActionStateVector2f st = {XR_TYPE_ACTION_STATE_VECTOR2F};
+    HOL__XR(x, "read the thumbsticks", xrGetActionStateVector2f(x->session, &gi, &st));
+    out[0] = st.isActive && isfinite(st.currentState.x) ? st.currentState.x : 0;
+    out[1] = st.isActive && isfinite(st.currentState.y) ? st.currentState.y : 0;
+    return 0;
+}
 
 int hol__xr_bool(hol__xr *x, int a, int *out_held)
 {

@@ -93,6 +93,10 @@ typedef struct hol_xr_desc {
                                 where the runtime makes its swapchain, else
                                 in the scene; HOL_XR_PANEL_SCENE in the
                                 scene */
+    int seated;              /* 1: seated play (core/hol_input.h
+                                HOL_INPUT_SEATED): the head walks nothing,
+                                either thumbstick's (trackpad's) push is
+                                one room step (hol_xr_stick_path) */
     float play_area[2];      /* > 0: the play area's width and depth in
                                 metres, given by hand: used instead of the
                                 runtime's stage bounds (a runtime without

@@ -48,6 +48,21 @@ static const hol_xr_profile hol__profiles[HOL_XR_NPROFILES] = {
      HOL_XR_EXT_HAND_INTERACTION, 1},
 };
 
+const char *hol_xr_stick_path(int profile, int hand)
+{
+    static const char *const stick[HOL_XR_NPROFILES][2] = {
+        {NULL, NULL},
+        {HOL__L "thumbstick", HOL__R "thumbstick"},
+        {HOL__L "trackpad", HOL__R "trackpad"},
+        {HOL__L "thumbstick", HOL__R "thumbstick"},
+        {HOL__L "thumbstick", HOL__R "thumbstick"},
+        {NULL, NULL},
+    };
+    return profile >= 0 && profile < HOL_XR_NPROFILES && (hand == 0 || hand == 1)
+               ? stick[profile][hand]
+               : NULL;
+}
+
 const hol_xr_profile *hol_xr_profiles(void)
 {
     return hol__profiles;

@@ -90,6 +90,14 @@ const char *hol_xr_grip_path(int hand);
  * pulses (core/hol_haptic.h) are played on it. */
 const char *hol_xr_haptic_path(int hand);
 
+/* Seated play's stick (holonomy xr --seated, issue 37): the thumbstick of
+ * hand 0 (left) or 1 (right) in profile `profile` (an index), the Vive's
+ * trackpad, as a vector2f input path (its /x and /y in the profile's
+ * list); NULL where the profile has none (the simple controller, the
+ * hands). Either stick's push is one room step (platform/shell/
+ * hol_shell_seat.h), as on the web. */
+const char *hol_xr_stick_path(int profile, int hand);
+
 /* The layer state of hol_xr_buttons; zero it at the session's start. */
 typedef struct hol_xr_keys {
     int in_menu;         /* the layer of the last call */

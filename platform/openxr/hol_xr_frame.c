@@ -6,6 +6,7 @@
 #include "hol_xr_state.h"
 
 #include "../../core/hol_input_io.h"
+#include "../shell/hol_shell_seat.h"
 
 /* OpenXR structs are initialised by their type alone ({XR_TYPE_...}), the
  * rest zero: the API's own idiom. */
@@ -148,6 +149,18 @@ static int hol__input(hol__xr *x, const XrFrameState *fs, hol_input *in, float s
         in->flags |= s->flags & (HOL_INPUT_HEADSET_OFF | HOL_INPUT_POS_EMULATED);
         in->buttons |= s->buttons;
         in->pressed |= s->pressed;
+    }
+    if (x->d->seated) { /* either stick's push: one room step */
+        for (int h = 0; x->life.focused && h < 2; h++) {
+            float s[2];
+            if (hol__xr_stick(x, h, s))
+                return 1;
+            for (int k = 0; k < 2; k++)
+                in->move[k] += s[k];
+        }
+        for (int k = 0; k < 2; k++)
+            in->move[k] = in->move[k] > 1 ? 1 : in->move[k] < -1 ? -1 : in->move[k];
+        hol_shell_seat(&x->seat_latch, in);
     }
     return 0;
 }

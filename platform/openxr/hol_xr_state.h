@@ -143,6 +143,9 @@ typedef struct hol__xr {
     XrActionSet set;
     XrAction grip_action, act[HOL_XR_ACT_COUNT];
     XrAction haptic_action; /* vibration output, per hand (hol_xr_haptic_path) */
+    XrAction stick_action;  /* seated (desc.seated): the sticks, per hand
+                               (hol_xr_stick_path) */
+    int seat_latch;         /* hol_shell_seat's */
     int haptic_failed;      /* a pulse failed once: said once, not again */
     long pulses, pulses_hit; /* pulses played (all; of them into a hedge or trunk) */
     XrPath hand_path[2];
@@ -251,6 +254,8 @@ int hol__xr_actions(hol__xr *x);
 int hol__xr_spaces(hol__xr *x);
 int hol__xr_bounds(hol__xr *x);
 int hol__xr_bool(hol__xr *x, int act, int *out_held);
+/* Seated: hand h's stick (x right, y ahead; 0, 0 when not bound). */
+int hol__xr_stick(hol__xr *x, int h, float out[2]);
 int hol__xr_haptics(hol__xr *x);
 int hol__xr_profiles_now(hol__xr *x);
 /* hol_xr_views.c: the stereo view configuration (x->nviews, x->views) and

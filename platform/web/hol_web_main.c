@@ -187,7 +187,9 @@ static void poll_gamepad(hol_web_pancake *p)
  * 'N', 'E', 'S', 'W' as a number; 0 none), 23
  * the tracked hands at the last XR frame (bits: 1, 2 the left's and the
  * right's joints; 4, 8 their palms up and open: hol_web_xr.h), 24 the
- * body parts drawn (controllers and hands: hol_app_view.body). */
+ * body parts drawn (controllers and hands: hol_app_view.body), 25 the
+ * questionnaire item's value chosen now (hud.ask_value: likert the
+ * number, choice its index). */
 EMSCRIPTEN_KEEPALIVE double hol_web_state(int what)
 {
     hol_web *w = &hol_web_g;
@@ -226,6 +228,7 @@ EMSCRIPTEN_KEEPALIVE double hol_web_state(int what)
         return hol_app_walk(hol_web_game_app(), walk, 1) > 0 ? hol_dir_to_char(walk[0]) : 0;
     }
     case 24: return (v->body.hand[0].kind != 0) + (v->body.hand[1].kind != 0);
+    case 25: return v->hud.ask_value;
     default: return -1;
     }
 }

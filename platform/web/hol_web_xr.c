@@ -176,5 +176,17 @@ void hol_web_xr_input(hol_web_xr_state *st, const hol_web_xr_frame *f, double t,
             memcpy(in.joints[h].pos[i], j.pos, sizeof j.pos);
         }
     }
+    if (st->seated && focused) { /* a pinch and flick: one room step */
+        int pinch[2];
+        for (int h = 0; h < 2; h++)
+            pinch[h] = dev == HOL_DEVICE_WEBXR_HAND && f->pad[h].present > 0 && f->pad[h].hand > 0 &&
+                       f->pad[h].button[B_TRIGGER] > 0.5f;
+        in.pressed |= hol_flick_step(&st->flick, &in, pinch);
+        for (int h = 0; h < 2; h++)
+            if (st->flick.stepped[h] && st->pinch_on[h] && !st->pinch_spent[h])
+                st->pinch_spent[h] = 1; /* used up: no tap, no back */
+    } else {
+        memset(&st->flick, 0, sizeof st->flick);
+    }
     *out = in;
 }

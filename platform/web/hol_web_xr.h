@@ -51,6 +51,12 @@
  *   HOL_GESTURE_HOLD_S while focused (hol_gesture_step) press
  *   HOL_BTN_RECENTRE, which places the room from the head as the
  *   thumbstick's press does.
+ * - Seated play (state.seated, ?seated=1): with hands, a pinch dragged
+ *   HOL_FLICK_M across the floor within HOL_FLICK_S takes one room step
+ *   in the direction the hand went, relative to the look (core/hol_body.h
+ *   hol_flick_step: its step bit in pressed); that pinch is then used up,
+ *   its end pressing nothing and never a long pinch. A pinch that did not
+ *   step is a tap or a long pinch as above.
  * - hol_web_xr_input fills the frame's record: time, the headset's state
  *   (core/hol_input.h: HOL_INPUT_HEADSET; HOL_INPUT_FOCUSED while the
  *   session is `visible`, not `visible-blurred` or `hidden`;
@@ -124,6 +130,9 @@ typedef struct hol_web_xr_state {
     int pinch_on[2], pinch_spent[2];
     double pinch_t0[2];
     hol_gesture gesture;    /* the hands-only recentre (core/hol_body.h) */
+    int seated;             /* seated play (the loop sets it): a hand's
+                               pinch and flick is a room step */
+    hol_flick flick;        /* its state (core/hol_body.h) */
     int hands;              /* the last frame's hands (bits: 1, 2 joints of
                                the left, right; 4, 8 their palms up, open) */
 } hol_web_xr_state;

@@ -413,6 +413,7 @@ EMSCRIPTEN_KEEPALIVE int hol_web_xr_step(double t_ms, int fb)
     double m = now->cell_m > 0 ? now->cell_m : 1.0;
     w->xr.room_w = hol_room_cols(&now->user) * m; /* the room in play, in the stage */
     w->xr.room_d = hol_room_rows(&now->user) * m;
+    w->xr.seated = w->pan.seated; /* a hand's pinch and flick steps */
     hol_web_xr_input(&w->xr, &w->xf, t > w->last_t ? t : w->last_t, &in);
     w->last_t = in.time_s;
     if (w->xr_off) /* hidden since the last frame (hol_web_pause_retell) */
@@ -422,7 +423,8 @@ EMSCRIPTEN_KEEPALIVE int hol_web_xr_step(double t_ms, int fb)
         in.flags |= HOL_INPUT_RECENTRED;
         w->xr_recentred = 0;
     }
-    if (w->pan.seated) { /* seated: either thumbstick's push is one step */
+    if (w->pan.seated) { /* seated: either thumbstick's push is one step
+                            (a hand's flick is in in.pressed already) */
         for (int h = 0; h < 2; h++) {
             float x = w->xf.pad[h].axes[2], y = w->xf.pad[h].axes[3];
             in.move[0] += isfinite(x) ? x : 0;

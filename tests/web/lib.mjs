@@ -16,7 +16,7 @@ export const sleep = (ms) => new Promise((r) => setTimeout(r, ms));
 export const S = { FRAMES: 0, XR_FRAMES: 1, XR_TWO_VIEWS: 2, XR_FOCUSED: 3, APP_STATE: 4,
   PAUSED: 5, STEPS: 6, OVER: 7, FAILED: 8, HEAD_X: 9, HEAD_Z: 10, COL: 11, ROW: 12, CLOCK: 13,
   YAW: 14, DEVICE: 15, SOUNDS: 16, OUTSIDE: 17, ARROW_YAW: 18, COLS: 19, ROWS: 20, CELL: 21,
-  WALK: 22, HANDS: 23, BODY: 24 };
+  WALK: 22, HANDS: 23, BODY: 24, ASK: 25 };
 
 const types = { '.html': 'text/html', '.js': 'text/javascript', '.wasm': 'application/wasm',
   '.mjs': 'text/javascript', '.txt': 'text/plain', '.lvl': 'text/plain' };

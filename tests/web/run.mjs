@@ -270,6 +270,210 @@ await check('lessons: a pupil with keys completes every lesson on the page, in {
   }
 });
 
+// ---- lessons by touch and by hands (issue 37; docs/teaching.md) -------------
+// Scripted pupils with no keyboard: every lesson in {4,5}, once predicting
+// right and once wrong (the middle mark: Yes, 6, East, 24, 5, 4), each a
+// participant of its own. By touch (the page's touch buttons and the left
+// half's stick): the predict item by a swipe left or right a mark, OK by
+// the on-screen button; walked standing with the stick (right) and seated
+// with the on-screen arrows (wrong). By hands alone in seated XR (iwer's
+// Quest 3, ?seated=1): the item chosen by pointing the right hand (its
+// ray: the mark it points at), every screen by a right pinch, each room
+// step by a pinch and flick (core/hol_body.h). Each attempt's answers.csv
+// and summary.csv go to a pupil's folder of the class; `holonomy report
+// --class` over it must give every item as entered.
+const MARKS = [2, 7, 5, 11, 11, 8], LO = [0, 3, 0, 4, 0, 1], STEP = [1, 1, 1, 4, 1, 1];
+const WRONG = ['Yes', '6', 'East', '24', '5', '4'];
+const pupilsDir = path.join(OUT, 'pupils-class');
+fs.rmSync(pupilsDir, { recursive: true, force: true });
+fs.mkdirSync(pupilsDir, { recursive: true });
+// the lesson's plan for a pupil: route, presses from the middle mark, answer
+function lessonPlan(n, right) {
+  const L = LESSONS[n - 1];
+  return { route: L[0], presses: right ? L[2] : 0, want: right ? L[3] : WRONG[n - 1] };
+}
+// after the session: the attempt's files into the class, checked against
+// what the pupil entered
+async function keepAttempt(p, who, n, plan, what) {
+  await p.until(async () => (await p.state(S.OVER)) === 1, what + ': the session over', 60000);
+  const ans = await stored(p.page, 'answers.csv'), sum = await stored(p.page, 'summary.csv');
+  const csv = ans.toString('utf8').trim().split('\n');
+  assert(csv.length === 2 && csv[1].split(',')[1] === who && csv[1].split(',').slice(3, 8).join(',') ===
+    `predict,before_level,lesson${n},${n === 1 || n === 3 ? 'choice' : 'likert'},${plan.want}`,
+  what + ': answers.csv ' + csv.join(' | '));
+  assert(new RegExp(`,lesson-${n},[0-9a-f]{64},explore,0,[0-9]+,"4,5",3x3,1,[0-9.]+,${plan.route.length},-1,[0-9.]+,done,`)
+    .test(sum.toString('utf8')), what + ': summary ' + sum.toString('utf8').trim());
+  const dir = path.join(pupilsDir, `${who}-lesson${n}`);
+  fs.mkdirSync(dir, { recursive: true });
+  fs.writeFileSync(path.join(dir, 'answers.csv'), ans);
+  fs.writeFileSync(path.join(dir, 'summary.csv'), sum);
+  assert(!p.errors.length, what + ': errors: ' + p.errors.join('; '));
+}
+
+await check('lessons by touch alone: a pupil completes every lesson in {4,5} predicting right (walking with the touch stick) and one predicting wrong (seated, the on-screen arrows); swipes choose, the OK button confirms; answers.csv holds what was entered', async () => {
+  const frames = async (p, n) => {
+    const f0 = await p.state(S.FRAMES);
+    await p.until(async () => (await p.state(S.FRAMES)) >= f0 + n || (await p.state(S.OVER)) === 1, n + ' frames');
+  };
+  const stick = async (p, dx, dy) => { /* the left half's stick pushed, kept */
+    const box = await p.page.evaluate(() => { const r = document.getElementById('canvas').getBoundingClientRect(); return [r.x, r.y, r.width, r.height]; });
+    const x = box[0] + box[2] * 0.25, y = box[1] + box[3] * 0.6;
+    await p.page.touchscreen.touchStart(x, y);
+    await p.page.touchscreen.touchMove(x + dx, y + dy);
+  };
+  const ok = async (p) => { await p.page.tap('#touch button[data-btn="1"]'); await frames(p, 3); };
+  const bits = { N: 256, E: 2048, S: 512, W: 1024 }, drag = { N: [0, -80], S: [0, 80], W: [-80, 0], E: [80, 0] };
+  for (const right of [true, false]) {
+    const who = right ? 'touch-right' : 'touch-wrong', seated = !right;
+    for (let n = 1; n <= 6; n++) {
+      const plan = lessonPlan(n, right), what = `${who} lesson ${n}`;
+      const p = await openPage(`?lesson=${n}&tiling=4,5&participant=${who}${seated ? '&seated=1' : ''}`, { touch: true });
+      await p.page.touchscreen.tap(5, 5); /* the first touch shows the touch buttons */
+      await p.until(() => p.page.evaluate(() => document.body.classList.contains('touch')), what + ': the touch buttons');
+      await p.until(async () => (await p.state(S.APP_STATE)) === 6, what + ': the predict item');
+      for (let i = 0; i < Math.abs(plan.presses); i++) { /* a swipe a mark */
+        await stick(p, plan.presses > 0 ? 80 : -80, 0);
+        await frames(p, 3);
+        await p.page.touchscreen.touchEnd();
+        await frames(p, 3);
+      }
+      await ok(p);
+      await p.until(async () => (await p.state(S.APP_STATE)) === 5, what + ': the instructions');
+      await ok(p);
+      await p.until(async () => (await p.state(S.APP_STATE)) === 1, what + ': playing');
+      for (let i = 0; i < plan.route.length; i++) {
+        const d = plan.route[i];
+        if (seated) {
+          await p.page.tap(`#steps button[data-btn="${bits[d]}"]`);
+        } else await stick(p, drag[d][0], drag[d][1]);
+        await p.until(async () => (await p.state(S.STEPS)) >= i + 1, `${what}: step ${i + 1}`);
+        if (!seated) await p.page.touchscreen.touchEnd();
+        await frames(p, 2);
+      }
+      if (n === 1 && seated) await p.page.screenshot({ path: path.join(OUT, 'touch-seated-lesson1.png') });
+      for (const st of n === 3 ? [4, 2, 5] : [2, 5]) {
+        await p.until(async () => (await p.state(S.APP_STATE)) === st, `${what}: state ${st}`);
+        if (st === 5 && n === 1) await p.page.screenshot({ path: path.join(OUT, `${who}-check.png`) });
+        await ok(p);
+      }
+      await keepAttempt(p, who, n, plan, what);
+      await p.ctx.close();
+    }
+  }
+});
+
+// The XR frames' times as a 72 Hz headset's, one frame apart each, though
+// this machine (SwiftShader, two eyes) draws a few a second: a pinch's
+// length and a flick's speed (core/hol_body.h) are then the frames the
+// script holds them, not the machine's load (a tap is a frame or two, a
+// long pinch 72).
+async function xrTime72(p) {
+  await p.page.evaluate(() => {
+    const X = Module.holXR, f = X.frame;
+    let v = null;
+    X.frame = function (t, xrf) {
+      v = v === null ? t : v + 1000 / 72;
+      return f(v, xrf);
+    };
+  });
+}
+await check('lessons by hands alone, seated on a Quest 3 (iwer\'s hands, ?seated=1): a pupil completes every lesson in {4,5} predicting right and one predicting wrong; the item chosen by pointing, screens by a right pinch, every room step by a pinch and flick; answers.csv holds what was entered', async () => {
+  for (const right of [true, false]) {
+    const who = right ? 'hands-right' : 'hands-wrong';
+    for (let n = 1; n <= 6; n++) {
+      const plan = lessonPlan(n, right), what = `${who} lesson ${n}`;
+      const p = await openPage(`?lesson=${n}&tiling=4,5&participant=${who}&seated=1`, { iwer: true });
+      await p.page.evaluate(() => { xrDevice.primaryInputMode = 'hand'; });
+      await enterVR(p);
+      await xrTime72(p);
+      const frames = async (k) => {
+        const f0 = await p.state(S.XR_FRAMES);
+        await p.until(async () => (await p.state(S.XR_FRAMES)) >= f0 + k ||
+          (await p.state(S.OVER)) === 1, k + ' XR frames', 120000);
+      };
+      const setPinch = async (v) => { await p.page.evaluate((x) => xrDevice.hands.right.updatePinchValue(x), v); await frames(1); };
+      const pinch = async () => { await setPinch(1); await setPinch(0); await frames(2); }; /* a tap */
+      const inState = async (st, label) => {
+        try {
+          await p.until(async () => (await p.state(S.APP_STATE)) === st, `${what}: ${label}`, 30000);
+        } catch (e) {
+          throw new Error(`${e.message} (state ${await p.state(S.APP_STATE)}; ${p.log.slice(-4).join(' / ')})`);
+        }
+      };
+      const home = await p.page.evaluate(() => { const q = xrDevice.hands.right.position; return [q.x, q.y, q.z]; });
+      const handAt = (d) => p.page.evaluate((x, y, z) => xrDevice.hands.right.position.set(x, y, z),
+        home[0] + d[0], home[1], home[2] + d[1]);
+      await frames(5);
+      assert((await p.state(S.DEVICE)) === 10, what + ': the device is not the hands');
+      await inState(6, 'the predict item');
+      /* point the right hand at the mark: the ray's 60 degrees across the
+       * scale, centred on the look (north); turned until the item shows it */
+      const k = n - 1, target = (MARKS[k] - 1 >> 1) + plan.presses;
+      let yaw = -(((target + 0.5) / MARKS[k]) * 60 - 30), mark = -1;
+      for (let tries = 0; tries < 8; tries++) {
+        const a = yaw * Math.PI / 360;
+        await p.page.evaluate((s, c) => xrDevice.hands.right.quaternion.set(0, s, 0, c), Math.sin(a), Math.cos(a));
+        await frames(3);
+        mark = ((await p.state(S.ASK)) - LO[k]) / STEP[k];
+        if (mark === target) break;
+        yaw += (mark - target) * 60 / MARKS[k];
+      }
+      assert(mark === target, `${what}: the ray points at mark ${mark}, want ${target}`);
+      await pinch();
+      await inState(5, 'the instructions');
+      await p.page.evaluate(() => xrDevice.hands.right.quaternion.set(0, 0, 0, 1));
+      await frames(2);
+      await pinch();
+      await inState(1, 'playing');
+      const flick = { N: [0, -0.16], S: [0, 0.16], W: [-0.16, 0], E: [0.16, 0] };
+      for (let i = 0; i < plan.route.length; i++) {
+        await p.page.evaluate(() => xrDevice.hands.right.updatePinchValue(1)); /* pinched here, */
+        await frames(1);
+        await handAt(flick[plan.route[i]]); /* then 16 cm on */
+        await p.until(async () => (await p.state(S.STEPS)) >= i + 1, `${what}: step ${i + 1}`, 30000);
+        await setPinch(0);
+        await handAt([0, 0]);
+        await frames(2);
+        assert((await p.state(S.STEPS)) === i + 1, `${what}: ${await p.state(S.STEPS)} steps after flick ${i + 1}`);
+      }
+      if (n === 1) {
+        const at = (await p.state(S.XR_FRAMES)) + 2;
+        await frames(3);
+        await p.page.screenshot({ path: path.join(OUT, `hands-seated-lesson1-${who}.png`) });
+        void at;
+      }
+      for (const st of n === 3 ? [4, 2, 5] : [2, 5]) {
+        await inState(st, `state ${st}`);
+        if (st === 5 && n === 1) await p.page.screenshot({ path: path.join(OUT, `${who}-check.png`) });
+        await pinch();
+      }
+      await keepAttempt(p, who, n, plan, what);
+      await p.ctx.close();
+    }
+  }
+});
+
+// The class over the pupils' attempts (touch and hands, right and wrong):
+// every lesson's item answered 4 times in {4,5}, 2 of them right; each
+// wrong answer as entered, twice.
+await check('report --class over the touch and hands pupils\' stored answers: each lesson\'s item answered 4 times, right 2, the wrong answers as entered', async () => {
+  const dirs = fs.readdirSync(pupilsDir);
+  assert(dirs.length === 24, 'attempts kept: ' + dirs.length + ' (' + dirs.join(' ') + ')');
+  const out = path.join(OUT, 'pupils-report');
+  const r = spawnSync(HOLONOMY, ['report', '--class', pupilsDir, '--out', out], { encoding: 'utf8' });
+  assert(r.status === 0, 'report --class: ' + r.stdout + r.stderr);
+  const items = fs.readFileSync(path.join(out, 'class_items.csv'), 'utf8');
+  const wrong = fs.readFileSync(path.join(out, 'class_wrong.csv'), 'utf8');
+  for (let n = 1; n <= 6; n++) {
+    const row = `predict,lesson${n}_q5,lesson ${n},${LESSONS[n - 1][3]},4,2,0.5000000000`;
+    assert(items.split('\n').includes(row), `lesson ${n}: no row ${row} in class_items.csv: ${items}`);
+    const rows = wrong.split('\n').filter((l) => l.startsWith(`predict,lesson${n}_q5,`));
+    assert(rows.length === 1 && rows[0] === `predict,lesson${n}_q5,${WRONG[n - 1]},2,0.5000000000`,
+      `lesson ${n}: class_wrong.csv ${rows.join(' | ')}`);
+  }
+  console.log('  ' + r.stdout.trim());
+});
+
 // ---- seated play and a class's tests (issue 37; docs/teaching.md) ---------
 // Lesson 1 {4,5} seated: one push of W, D, S, A a step (held keys take one
 // step each); then with touch, the on-screen arrows; the panel names the

@@ -19,7 +19,13 @@
  * views) quad(...)"), as the runtime receives them; and
  * HOL_INJECT_SWAPCHAIN_FAIL=N makes the N-th xrCreateSwapchain (1: the
  * first) fail with XR_ERROR_SWAPCHAIN_FORMAT_UNSUPPORTED, as a runtime
- * that cannot make it would. */
+ * that cannot make it would.
+ *
+ * For seated play (holonomy xr --seated; Monado's simulated simple
+ * controllers have no thumbstick): HOL_INJECT_STICK_AT=K makes every
+ * xrGetActionStateVector2f an active stick pushed ahead (0, 1) while
+ * K..K+19 frames have ended, to the right (1, 0) while K+40..K+59 have,
+ * and at rest (0, 0) otherwise. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -34,6 +40,7 @@ static PFN_xrPollEvent next_poll;
 static PFN_xrEndFrame next_end;
 static PFN_xrCreateSession next_create_session;
 static PFN_xrCreateSwapchain next_create_swapchain;
+static PFN_xrGetActionStateVector2f next_vector2f;
 static XrSession session;
 static long ended, at = 90, swapchains;
 static int injected;
@@ -96,6 +103,20 @@ static XRAPI_ATTR XrResult XRAPI_CALL inject_end_frame(XrSession s, const XrFram
     return r;
 }
 
+static XRAPI_ATTR XrResult XRAPI_CALL inject_vector2f(XrSession s, const XrActionStateGetInfo *gi,
+                                                      XrActionStateVector2f *st)
+{
+    const char *k = getenv("HOL_INJECT_STICK_AT");
+    XrResult r = next_vector2f(s, gi, st);
+    if (!k || !*k || XR_FAILED(r))
+        return r;
+    long d = ended - strtol(k, NULL, 10);
+    st->isActive = XR_TRUE;
+    st->currentState.x = d >= 40 && d < 60 ? 1.0f : 0.0f;
+    st->currentState.y = d >= 0 && d < 20 ? 1.0f : 0.0f;
+    return r;
+}
+
 static XRAPI_ATTR XrResult XRAPI_CALL inject_poll(XrInstance instance, XrEventDataBuffer *ev)
 {
     if (injected || ended < at || session == XR_NULL_HANDLE)
@@ -126,6 +147,8 @@ static XRAPI_ATTR XrResult XRAPI_CALL inject_gipa(XrInstance instance, const cha
         *out = (PFN_xrVoidFunction)inject_create_session;
     else if (!strcmp(name, "xrCreateSwapchain"))
         *out = (PFN_xrVoidFunction)inject_create_swapchain;
+    else if (!strcmp(name, "xrGetActionStateVector2f"))
+        *out = (PFN_xrVoidFunction)inject_vector2f;
     else
         return next_gipa(instance, name, out);
     return XR_SUCCESS;
@@ -151,7 +174,9 @@ static XRAPI_ATTR XrResult XRAPI_CALL inject_create_instance(const XrInstanceCre
         XR_FAILED(next_gipa(*out, "xrCreateSession",
                             (PFN_xrVoidFunction *)&next_create_session)) ||
         XR_FAILED(next_gipa(*out, "xrCreateSwapchain",
-                            (PFN_xrVoidFunction *)&next_create_swapchain)))
+                            (PFN_xrVoidFunction *)&next_create_swapchain)) ||
+        XR_FAILED(next_gipa(*out, "xrGetActionStateVector2f",
+                            (PFN_xrVoidFunction *)&next_vector2f)))
         return XR_ERROR_INITIALIZATION_FAILED;
     return XR_SUCCESS;
 }

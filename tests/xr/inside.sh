@@ -298,6 +298,25 @@ check "headset off: the recording carries the state (flag 200) and replays to th
 check "the same walk worn walks one step east (the control)" \
     '[ "$(grep -c ",E," "$out/on-logs/steps-001.csv")" = 1 ]'
 
+# Seated (issue 37, xr --seated): the same 1.2 m walk east takes no step;
+# the test's layer gives a thumbstick (Monado's simple controllers have
+# none) pushed ahead for 20 frames from frame 40, then right for 20 from
+# frame 80: one room step each, N then E (the head looks north); the
+# recording carries the seated flag (1000) and replays to the same steps.
+mkdir -p "$out/seat-logs" "$out/seat-replay"
+env DISPLAY=:77 HOL_INJECT_AT=1000000 HOL_INJECT_STICK_AT=40 \
+    XR_API_LAYER_PATH="$out/layers:/usr/share/openxr/1/api_layers/explicit.d" \
+    XR_ENABLE_API_LAYERS=XR_APILAYER_LUNARG_core_validation:XR_APILAYER_HOLONOMY_inject \
+    "$BIN" xr "$out/space.txt" --seated --frames 150 --input "$out/on.txt" \
+    --log "$out/seat-logs" --record "$out/seat.rec" >"$out/seat.out" 2>&1
+rc=$?
+check "xr --seated: exit 0 ($rc); the walk east takes no step, each stick push one: N, then E (steps log)" \
+    '[ "$rc" = 0 ] && [ "$(wc -l <"$out/seat-logs/steps-001.csv")" = 3 ] &&
+     [ "$(sed -n 2p "$out/seat-logs/steps-001.csv" | grep -c ",N,")" = 1 ] &&
+     [ "$(sed -n 3p "$out/seat-logs/steps-001.csv" | grep -c ",E,")" = 1 ]'
+check "xr --seated: the recording carries the seated flag and replays to the same steps; no VALID_ERROR" \
+    'grep -Eq " f=1[0-9a-f]{3}( |$)" "$out/seat.rec" && "$BIN" replay "$out/seat.rec" --log "$out/seat-replay" >/dev/null 2>&1 && cmp -s "$out/seat-logs/steps-001.csv" "$out/seat-replay/steps-001.csv" && ! grep -q "VALID_ERROR" "$out/seat.out"'
+
 # The runtime's service dies in the middle of a session: exit 1 with one
 # line in words (the instance is lost), and the session's logs and
 # recording are still written (issue 19: not exit 0).
