@@ -720,7 +720,7 @@ $(BUILD)/web-obj/%.o: %.c $(WEB_STAMP)
 # about 2.3 KB of the gzip'ed transfer, and 2.4 KB more for its top-level
 # names: all renamed but WEB_JS_KEEP, Module for the page and what web-test
 # evaluates in the page); a failure leaves no holonomy.js
-WEB_JS_KEEP := Module,GL,GLctx,UTF8ToString
+WEB_JS_KEEP := Module,GL,GLctx,HEAPU8,UTF8ToString
 $(WEB)/holonomy.js: $(WEB_OBJ) platform/web/hol_web_lib.js platform/web/hol_web_al.js \
                     platform/web/minify.mjs
 	@mkdir -p $(dir $@)
