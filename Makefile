@@ -225,7 +225,7 @@ template-run: $(BUILD)/tests/hol_template
 	@$(SUITE) "platform template (3 frames, OSMesa)" $< --frames 3
 
 # The web platform's pure part (pancake devices, WebXR frames as records).
-WEB_PURE_SRC := platform/web/hol_web_input.c platform/web/hol_web_xr.c $(SHELL_SRC)
+WEB_PURE_SRC := platform/web/hol_web_input.c platform/web/hol_web_xr.c platform/web/hol_web_libm.c $(SHELL_SRC)
 $(BUILD)/tests/test_web_%: tests/test_web_%.c $(WEB_PURE_SRC) $(wildcard platform/web/*.h platform/shell/*.h) $(CORE_LIB)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) -o $@ $< $(WEB_PURE_SRC) $(CORE_LIB) $(LDFLAGS) -lcmocka $(LDLIBS)
@@ -642,13 +642,14 @@ WEB_OBJ  := $(WEB_SRC:%.c=$(BUILD)/web-obj/%.o)
 # (-Os made the wasm step about 40 % slower; the table's builder,
 # hol_nav_table.c, is at -Os since: its first frame the same within the
 # noise; hol_room.c and hol_wfc.c, which run on room steps and new tiles,
-# likewise since issue 36), without unrolled loops (issue 37: 0.9 KB; the
+# likewise since issue 36; hol_tile.c and hol_hyper.c since issue 37's
+# last cuts: 0.8 KB), without unrolled loops (issue 37: 0.9 KB; the
 # step 5 % slower, the table the same); the link at -Oz with binaryen's
 # -Oz once more, emmalloc, and Module read only for what page.js gives it
 # (docs/web.md, "The transfer size").
-WEB_HOT  := $(addprefix core/,hol_app_step.c hol_app_geom.c hol_app_view.c hol_hyper.c hol_math.c hol_motion.c \
+WEB_HOT  := $(addprefix core/,hol_app_step.c hol_app_geom.c hol_app_view.c hol_math.c hol_motion.c \
   hol_nav.c hol_nav_arena.c hol_nav_field.c hol_nav_line.c \
-  hol_tile.c hol_world.c hol_world_tree.c)
+  hol_world.c hol_world_tree.c)
 WEB_OPT  := -Os
 WEB_OPT_HOT := -O2 -fno-unroll-loops
 WEB_CFLAGS = $(CSTD) $(WARN) $(if $(filter $(WEB_HOT),$<),$(WEB_OPT_HOT),$(WEB_OPT)) -ffp-contract=off \
@@ -656,6 +657,8 @@ WEB_CFLAGS = $(CSTD) $(WARN) $(if $(filter $(WEB_HOT),$<),$(WEB_OPT_HOT),$(WEB_O
 WEB_LDFLAGS := -Oz -sBINARYEN_EXTRA_PASSES=-Oz -sMALLOC=emmalloc -sENVIRONMENT=web -sMIN_WEBGL_VERSION=2 -sMAX_WEBGL_VERSION=2 \
   -sALLOW_MEMORY_GROWTH=1 -sINITIAL_MEMORY=67108864 -sTOTAL_STACK=1048576 \
   '-sINCOMING_MODULE_JS_API=[instantiateWasm,canvas,print,printErr]' \
+  -sGL_EMULATE_GLES_VERSION_STRING_FORMAT=0 -sGL_SUPPORT_AUTOMATIC_ENABLE_EXTENSIONS=0 \
+  -sTEXTDECODER=2 -sSUPPORT_ERRNO=0 \
   --js-library platform/web/hol_web_al.js --js-library platform/web/hol_web_lib.js
 # The languages of the web build (core/hol_str.h; en always): Dutch costs
 # 1.3 KB of the transfer (docs/web.md, "The transfer size").
@@ -664,7 +667,7 @@ WEB_LANGS ?= en de
 # older build would otherwise stay): the file holds them, and is written
 # only when they differ (no shell at parse time: every make would run it)
 WEB_STAMP := $(BUILD)/web-obj/flags.txt
-WEB_FLAGS_TEXT := $(CSTD) $(WARN) $(WEB_OPT) $(WEB_OPT_HOT) $(WEB_HOT) $(WEB_LANGS)
+WEB_FLAGS_TEXT := $(CSTD) $(WARN) $(WEB_OPT) $(WEB_OPT_HOT) $(WEB_HOT) $(WEB_LANGS) libm
 WEB_PAGE := $(addprefix $(WEB)/,index.html page.js store.js text.js)
 WEB_PORT ?= 8080
 WEB_HTTPS_PORT ?= 8443
@@ -698,6 +701,10 @@ FORCE:
 # the string table without the page's words, which text.js carries (1.5 KB),
 # in the languages of WEB_LANGS
 $(BUILD)/web-obj/core/hol_str.o: WEB_CFLAGS += -DHOL_STR_NO_PAGE $(if $(filter nl,$(WEB_LANGS)),,-DHOL_STR_NO_NL)
+# the renderer's and the platform's libm calls on the core's hol_math.h and
+# a small exp family (platform/web/hol_web_libm.h: musl's were 10.5 KB of
+# the gzip'ed transfer)
+$(BUILD)/web-obj/render/%.o $(BUILD)/web-obj/platform/%.o: WEB_CFLAGS += -DHOL_WEB_LIBM_MACROS -include platform/web/hol_web_libm.h
 $(BUILD)/web-obj/render/hol_program.o: $(GLSL_H)
 $(BUILD)/web-obj/render/hol_program.o: WEB_CFLAGS += -I$(BUILD)/gen
 $(BUILD)/web-obj/platform/shell/hol_shell_build.o: $(BUILD_ID_H)
@@ -712,14 +719,20 @@ $(BUILD)/web-obj/%.o: %.c $(WEB_STAMP)
 	@echo "emcc $<"
 	@$(EMCC_ENV) $(EMCC) $(WEB_CFLAGS) -c $< -o $@
 
+# binaryen's -Oz (emscripten's binaryen package) once more on the linked
+# wasm, after emcc's own passes: 0.4 KB; then
 # emscripten's glue minified by Debian's terser (platform/web/minify.mjs;
-# about 2.3 KB of the gzip'ed transfer); a failure leaves no holonomy.js
+# about 2.3 KB of the gzip'ed transfer, and 2.4 KB more for its top-level
+# names: all renamed but WEB_JS_KEEP, Module for the page and what web-test
+# evaluates in the page); a failure leaves no holonomy.js
+WEB_JS_KEEP := Module,GL,GLctx,HEAPU8,UTF8ToString
 $(WEB)/holonomy.js: $(WEB_OBJ) platform/web/hol_web_lib.js platform/web/hol_web_al.js \
                     platform/web/minify.mjs
 	@mkdir -p $(dir $@)
 	@echo "emcc -o $@"
 	@$(EMCC_ENV) $(EMCC) $(WEB_LDFLAGS) $(WEB_OBJ) -o $@
-	@NODE_PATH=/usr/share/nodejs node platform/web/minify.mjs $@ $@ || { rm -f $@; exit 1; }
+	@wasm-opt -Oz --converge $(WEB)/holonomy.wasm -o $(WEB)/holonomy.wasm || { rm -f $@; exit 1; }
+	@NODE_PATH=/usr/share/nodejs node platform/web/minify.mjs $@ $@ --toplevel $(WEB_JS_KEEP) || { rm -f $@; exit 1; }
 
 # the page's words in the languages of WEB_LANGS, from core's string table
 # (issue 37), by a native tool of tests/ (no test library)

@@ -2,22 +2,31 @@
 // writes IN's JavaScript minified by Debian's terser (package `terser`, a
 // library under /usr/share/nodejs: run with NODE_PATH=/usr/share/nodejs)
 // to OUT, through OUT.tmp renamed (no half-written file). Compress and
-// local names only: top-level names and properties stay (page.js calls
-// Module's by name, and page.js the functions of store.js). emscripten's
-// glue (holonomy.js) loses about 2.3 KB of the page's gzip'ed transfer,
-// page.js and store.js 0.9 KB (docs/web.md, "The transfer size").
+// local names; properties stay (page.js calls Module's by name, and
+// page.js the functions of store.js), and so do top-level names, but
+// with `--toplevel NAME,...` (emscripten's glue: no other file reads its
+// top-level names but those kept, Module and the ones web-test evaluates
+// in the page). emscripten's glue (holonomy.js) loses about 2.3 KB of the
+// page's gzip'ed transfer, 2.4 KB more with --toplevel, page.js and
+// store.js 0.9 KB (docs/web.md, "The transfer size").
 // Exit 1 with one line on stderr when it cannot.
 import { createRequire } from 'module';
 import fs from 'fs';
 
-const [inPath, outPath] = process.argv.slice(2);
+const [inPath, outPath, flag, names] = process.argv.slice(2);
 try {
     if (!inPath || !outPath)
         throw new Error('usage: node platform/web/minify.mjs IN OUT');
     const require = createRequire(import.meta.url);
     const { minify } = require('terser');
     const src = fs.readFileSync(inPath, 'utf8');
-    const r = await minify(src, { compress: true, mangle: true });
+    let opts = { compress: true, mangle: true };
+    if (flag === '--toplevel') {
+        const keep = (names || '').split(',').filter(Boolean);
+        opts = { compress: { toplevel: true, top_retain: keep }, mangle: { toplevel: true, reserved: keep } };
+    } else if (flag)
+        throw new Error(`unknown option ${flag}`);
+    const r = await minify(src, opts);
     if (!r.code)
         throw new Error(`terser gave no code for ${inPath}`);
     fs.writeFileSync(outPath + '.tmp', r.code);
