@@ -127,12 +127,19 @@ static int hol__input(hol__xr *x, const XrFrameState *fs, hol_input *in, float s
     in->flags |= hol_xr_life_take(&x->life, head);
     if (x->life.focused && hol__hands(x, fs->predictedDisplayTime, in))
         return 1;
-    if ((in->buttons & HOL_BTN_RECENTRE) && !(x->prev_buttons & HOL_BTN_RECENTRE) && head)
-        hol_xr_recentre(&x->calib, hp, hq);
-    in->pressed = in->buttons & ~x->prev_buttons; /* the runtime keeps no taps */
+    /* the tracked hands' joints, and their recentre (both palms up, held:
+     * a press, placed from the head as the control's is) */
+    if (hol__xr_hands_locate(x, fs->predictedDisplayTime))
+        return 1;
+    uint32_t gesture = hol__xr_hands_gesture(x, x->life.focused, in->time_s);
+    if (((in->buttons & HOL_BTN_RECENTRE) && !(x->prev_buttons & HOL_BTN_RECENTRE)) || gesture)
+        if (head)
+            hol_xr_recentre(&x->calib, hp, hq);
+    in->pressed = (in->buttons & ~x->prev_buttons) | gesture; /* the runtime keeps no taps */
     x->prev_buttons = in->buttons;
     in->device = hol__device(x);
     hol_xr_to_room(&x->calib, hp, hq, &in->head);
+    hol__xr_hands_room(x, in->joints);
     /* scripted head motion (the simulated headset does not move): the
      * recorded record's head pose, in room coordinates */
     shift[0] = shift[1] = shift[2] = 0;
