@@ -187,9 +187,11 @@ static int hol__step(hol__xr *x, const hol_input *in, const hol_app_view **out_v
 }
 
 /* One eye: drawn where it is (eroom, its room pose), with the view's own
- * asymmetric field of view, into the swapchain's next image. */
+ * asymmetric field of view, into the swapchain's next image; its room
+ * state (the cell it sees from) is seat's (the eye, or outside the room
+ * the point hol_xr_outside_eyes moved it to). */
 static int hol__draw_eye(hol__xr *x, int e, const hol_app_view *v, const hol_input *in,
-                         const hol_pose *eroom, double fade,
+                         const hol_pose *eroom, const double seat[3], double fade,
                          XrCompositionLayerProjectionView *pv)
 {
     hol__eye *ey = &x->eye[e];
@@ -217,10 +219,9 @@ static int hol__draw_eye(hol__xr *x, int e, const hol_app_view *v, const hol_inp
         memcpy(fd.hand_pos, in->hand[0].pos, sizeof fd.hand_pos);
         memcpy(fd.hand_orient, in->hand[0].quat, sizeof fd.hand_orient);
     }
-    /* the eye's own room state: the cell its position lies in; none
-     * (outside the room): the boundary colour alone */
-    int inside =
-        fade < 1 && hol_motion_eye_state(&v->user, v->head, fd.cam.eye, &fd.user) == HOL_OK;
+    /* the eye's own room state: the cell its seat lies in; none (beyond
+     * the safety fade's margin, inside): the boundary colour alone */
+    int inside = fade < 1 && hol_motion_eye_state(&v->user, v->head, seat, &fd.user) == HOL_OK;
     fd.fade = inside ? fade : 1;
     hol_render_stats rs;
     memset(&rs, 0, sizeof rs);
@@ -272,15 +273,15 @@ static int hol__eyes(hol__xr *x, const hol_app_view *v, const hol_input *in,
             eyes[e][k] = eroom[e].pos[k] += shift[k];
     }
     double fade = hol_xr_fade_room(eyes, HOL__MARGIN, x->room_w, x->room_d);
-    if (hol_xr_outside_eyes(v, in, eyes)) { /* outside: from the room's edge, dimmed */
-        for (int e = 0; e < 2; e++)
-            for (int k = 0; k < 3; k++)
-                eroom[e].pos[k] = (float)eyes[e][k];
+    /* outside: drawn from the head where it is, dimmed, the room's cells
+     * seen from the nearest (the seats inside) */
+    double seat[2][3];
+    memcpy(seat, eyes, sizeof seat);
+    if (hol_xr_outside_eyes(v, in, seat))
         fade = 0;
-    }
     hol__xr_quad_covered(x, v); /* scenery nearer than the panel: in the eyes */
     for (int e = 0; e < 2; e++)
-        if (hol__draw_eye(x, e, v, in, &eroom[e], fade, &pv[e]))
+        if (hol__draw_eye(x, e, v, in, &eroom[e], seat[e], fade, &pv[e]))
             return 1;
     *out_rendered = fade > 0 ? 2 : 1;
     x->fade_now = fade;
