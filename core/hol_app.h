@@ -467,9 +467,10 @@ typedef struct hol_app_object {
 /* Outside the room (a tracked head beyond the hedges; core/hol_app.h's
  * view.outside): the way back in. Core decides, the platform draws
  * (render/hol_render_types.h, hol_frame_desc.outside): the view from the
- * room's edge (the view's head and eyes, which the motion keeps
- * HOL_MOTION's margin inside the hedges), dimmed, the panel over it
- * (readable), and an arrow on the floor pointing to the nearest cell. */
+ * tracked head where it is (its cells those of the view's head and eyes,
+ * which the motion keeps HOL_MOTION's margin inside the hedges), dimmed,
+ * the panel over it (readable), and an arrow on the floor pointing to
+ * the nearest cell. */
 #define HOL_APP_ARROW_AHEAD_M 1.8 /* the arrow's centre ahead of the head, on the floor
                                     (40 degrees below eye level) */
 typedef struct hol_app_outside {

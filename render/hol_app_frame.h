@@ -28,7 +28,8 @@
  *   eye; desktop, pancake and replays keep the screen layout. Outside the
  *   room (hol_app_view.outside) it also sets the frame's `outside` and its
  *   floor arrow: the view dimmed, the panel over all, the arrow (the
- *   platform draws the eyes from the room's edge: the view's head).
+ *   platform draws the eyes where the head is, their cells the seats'
+ *   inside: platform/shell/hol_xr_room.h, hol_xr_outside_eyes).
  */
 #ifndef HOL_APP_FRAME_H
 #define HOL_APP_FRAME_H

@@ -373,8 +373,8 @@ void hol__frame_begin(hol_render *r, const hol_frame_desc *f, float vp[16])
     for (int i = 0; i < n; i++) {
         r->pg = hol__frame_prog(r, f, uses[i]);
         r->gl.UseProgram(r->pg->prog);
-        r->gl.Uniform3f(r->pg->u_eye, (float)f->cam.eye[0], (float)f->cam.eye[1],
-                        (float)f->cam.eye[2]);
+        r->gl.Uniform3f(r->pg->u_eye, (float)r->view_at[0], (float)r->view_at[1],
+                        (float)r->view_at[2]);
         r->gl.Uniform3f(r->pg->u_fog, sky[0], sky[1], sky[2]);
         r->gl.Uniform1f(r->pg->u_fogd, fogd);
         r->gl.Uniform1i(r->pg->u_lin, r->desc.srgb != 0);

@@ -136,6 +136,10 @@ struct hol_render {
     int nitems;
     hol__item *sorted[HOL__MAX_ITEMS];
     hol_view view;
+    double view_at[3]; /* where the view was built from (room coordinates):
+                          the eye, or outside the room (hol_frame_desc.outside)
+                          its nearest point in the user's cell; the
+                          programs' u_eye (fog, light, the wedges' origin) */
     /* resident meshes */
     hol__slot slots[HOL__SLOTS];
     int slot_cap; /* slots the static buffers hold now */

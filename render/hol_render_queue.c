@@ -391,7 +391,18 @@ hol_err hol__build(hol_render *r, const hol_frame_desc *f)
     double m = f->cell_m > 0 ? f->cell_m : 1.0;
     if (!(m >= 0.5 && m <= 1.5))
         return HOL_EARG;
-    hol_err err = hol_view_build(&f->user, f->cam.eye[0] / m, f->cam.eye[2] / m, eu, &r->view);
+    /* the view from the eye; an eye outside the room (f->outside) from
+     * its nearest point in the user's cell, a hair inside it */
+    memcpy(r->view_at, f->cam.eye, sizeof r->view_at);
+    if (f->outside) {
+        const double in = 1e-3, lo[2] = {f->user.col + in, f->user.row + in};
+        for (int k = 0; k < 2; k++) {
+            double v = f->cam.eye[2 * k] / m;
+            v = v < lo[k] ? lo[k] : v > lo[k] + 1 - 2 * in ? lo[k] + 1 - 2 * in : v;
+            r->view_at[2 * k] = v * m;
+        }
+    }
+    hol_err err = hol_view_build(&f->user, r->view_at[0] / m, r->view_at[2] / m, eu, &r->view);
     if (err)
         return err;
     if (f->lighting && (err = hol_light_prepare(f, r->desc.world, &r->lights)))

@@ -226,7 +226,9 @@ typedef struct hol_frame_desc {
      * Not with HOL_RENDER_BARE. */
     const hol_body *body;
     /* Outside the room (core's hol_app_view.outside; a headset's eyes,
-     * which the platform draws from the room's edge): the view dimmed
+     * drawn where the head is: the eye may stand outside the room, the
+     * view is then built from the eye's nearest point in user's cell, a
+     * millimetre inside, which is also the programs' eye): the view dimmed
      * towards HOL_RENDER_OUTSIDE_RGB by at least HOL_RENDER_OUTSIDE_DIM
      * (the fade pass; a larger `fade` wins), the panel over everything (no
      * depth test: readable wherever it stands), and a flat arrow on the

@@ -9,6 +9,7 @@
 #include <stddef.h>
 #include <stdint.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include <cmocka.h>
 
@@ -122,8 +123,9 @@ static void test_hud_text_stays_over_the_fade(void **state)
  * view blended towards HOL_RENDER_OUTSIDE_RGB by HOL_RENDER_OUTSIDE_DIM
  * (the forest dimmed, not hidden), but the arrow's, which are its yellow;
  * the panel drawn over a hedge that stands between it and the eye (inside
- * the room the hedge hides it); and the picture as reviewed
- * (tests/golden/outside_way_back.png). */
+ * the room the hedge hides it); an eye outside the room drawn where it
+ * is, the panel and the arrow over the hedge it stands behind; and that
+ * picture as reviewed (tests/golden/outside_way_back.png). */
 static void test_outside_dims_shows_arrow_and_panel(void **state)
 {
     (void)state;
@@ -173,6 +175,34 @@ static void test_outside_dims_shows_arrow_and_panel(void **state)
     }
     assert_int_equal(shown[0], 0); /* behind the hedge: hidden */
     assert_true(shown[1] > 400);   /* outside: over it */
+    /* From the head where it is (issue 36): the eye 0.3 m beyond the
+     * north hedge, looking back south at the room, the north-middle cell
+     * the one it sees from (its nearest); the panel 1.5 m ahead, beyond
+     * the hedge, over it; the arrow on the floor inside, pointing south, 1.8 m ahead of the
+     * view's head
+     * (the picture reviewed: the hedge's back dimmed, the panel, the
+     * arrow). */
+    hol_frame_desc o = g;
+    hol_room_step(&o.user, HOL_DIR_N);
+    o.cam.eye[2] = -0.3;
+    o.cam.yaw_deg = 180;
+    o.panel_pos[2] = 1.2;
+    o.panel_orient[1] = 1; /* turned to face north, towards the eye */
+    o.panel_orient[3] = 0;
+    o.outside = 1;
+    o.outside_arrow[2] = 1.95; /* 1.8 m ahead of the view's head (z 0.15) */
+    render_fixture_draw_hud(fx.rnd, &o, W, H, img_a, img_b);
+    long panel = 0;
+    yellow = 0;
+    for (int p = 0; p < W * H; p++) {
+        int ay = 1;
+        for (int ch = 0; ch < 3; ch++)
+            ay &= abs(img_a[4 * p + ch] - arrow[ch]) <= 2;
+        yellow += ay;
+        panel += memcmp(img_a + 4 * p, img_b + 4 * p, 3) != 0;
+    }
+    assert_true(panel > 400);
+    assert_true(yellow > 5);
     char dir[512];
     golden_out_dir(dir, sizeof dir, NULL);
     if (golden_update_requested())

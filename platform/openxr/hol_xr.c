@@ -73,7 +73,8 @@ static int hol__has_extension(const char *name)
 
 /* The instance and system (hol_xr_run; hol_xr_run_session is given them);
  * XR_EXT_hand_interaction enabled where the runtime lists it (the hands'
- * bindings, hol_xr_bind.h). */
+ * bindings, hol_xr_bind.h), and XR_EXT_hand_tracking (their joints,
+ * hol_xr_hands.c). */
 static int hol__instance(hol__xr *x)
 {
     XrInstanceCreateInfo ic = {XR_TYPE_INSTANCE_CREATE_INFO};
@@ -82,11 +83,11 @@ static int hol__instance(hol__xr *x)
     ai.applicationVM = x->d->android_vm;
     ai.applicationActivity = x->d->android_activity;
     ic.next = &ai;
-    const char *ext[4] = {XR_KHR_OPENGL_ES_ENABLE_EXTENSION_NAME,
+    const char *ext[5] = {XR_KHR_OPENGL_ES_ENABLE_EXTENSION_NAME,
                           XR_KHR_ANDROID_CREATE_INSTANCE_EXTENSION_NAME};
     ic.enabledExtensionCount = 2;
 #else
-    const char *ext[4] = {XR_KHR_OPENGL_ENABLE_EXTENSION_NAME};
+    const char *ext[5] = {XR_KHR_OPENGL_ENABLE_EXTENSION_NAME};
     ic.enabledExtensionCount = 1;
 #endif
     x->hand_interaction = hol__has_extension(HOL_XR_EXT_HAND_INTERACTION);
@@ -95,6 +96,9 @@ static int hol__instance(hol__xr *x)
     x->fb_refresh = hol__has_extension(XR_FB_DISPLAY_REFRESH_RATE_EXTENSION_NAME);
     if (x->fb_refresh)
         ext[ic.enabledExtensionCount++] = XR_FB_DISPLAY_REFRESH_RATE_EXTENSION_NAME;
+    x->hand_ext = hol__has_extension(XR_EXT_HAND_TRACKING_EXTENSION_NAME);
+    if (x->hand_ext)
+        ext[ic.enabledExtensionCount++] = XR_EXT_HAND_TRACKING_EXTENSION_NAME;
     ic.enabledExtensionNames = ext;
     snprintf(ic.applicationInfo.applicationName, sizeof ic.applicationInfo.applicationName, "%s",
              x->d->app_name ? x->d->app_name : "Holonomy");
@@ -145,7 +149,8 @@ static int hol__setup(hol__xr *x, const void *binding)
     sc.next = binding;
     sc.systemId = x->system;
     HOL__XR(x, "create the headset session", xrCreateSession(x->instance, &sc, &x->session));
-    if (hol__xr_spaces(x) || hol__xr_swapchains(x) || hol__xr_quad_setup(x))
+    if (hol__xr_spaces(x) || hol__xr_swapchains(x) || hol__xr_quad_setup(x) ||
+        hol__xr_hands_setup(x))
         return 1;
     hol__refresh_fb(x);
     if (x->fns->host) {
@@ -236,6 +241,7 @@ static void hol__destroy(hol__xr *x)
 {
     hol_render_destroy(x->rnd);
     hol__xr_quad_free(x);
+    hol__xr_hands_free(x);
     hol__xr_views_free(x);
     for (int h = 0; h < 2; h++)
         if (x->grip[h] != XR_NULL_HANDLE)

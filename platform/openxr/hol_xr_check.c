@@ -147,6 +147,21 @@ static void hol__measure_panel(hol__xr *x, int e, const hol_frame_desc *fd, cons
                     x->panel_left[0] - x->panel_left[1], x->panel_pred[0] - x->panel_pred[1]);
 }
 
+/* The body's pixels in eye e: where the world drawn with it and without
+ * it differ; "xr: check body eye E: N pixels (left K, right K)", K the
+ * part drawn (hand: its joints, controller, none). */
+static void hol__measure_body(hol__xr *x, int e, const hol_body *body, const uint8_t *without,
+                              const uint8_t *with, int w, int h)
+{
+    static const char *kind[] = {"none", "controller", "hand"};
+    long n = 0;
+    for (long p = 0; p < (long)w * h; p++)
+        n += memcmp(without + 4 * p, with + 4 * p, 3) != 0;
+    int l = body->hand[HOL_HAND_LEFT].kind, r = body->hand[HOL_HAND_RIGHT].kind;
+    hol__xr_say(x, "xr: check body eye %d: %ld pixels (left %s, right %s)", e, n,
+                kind[l >= 0 && l <= 2 ? l : 0], kind[r >= 0 && r <= 2 ? r : 0]);
+}
+
 void hol__xr_check_eye(hol__xr *x, int e, const hol_frame_desc *fd, unsigned fbo, int w, int h)
 {
     size_t bytes = (size_t)w * (size_t)h * 4;
@@ -178,8 +193,11 @@ void hol__xr_check_eye(hol__xr *x, int e, const hol_frame_desc *fd, unsigned fbo
     x->gl.BindFramebuffer(HOL__GL_FRAMEBUFFER, fbo);
     if (fd->body) { /* the panel's pixels: as shown against the same without the HUD */
         b.body = fd->body;
-        if (hol_render_frame(x->rnd, &b, NULL) == HOL_OK)
-            hol_render_read_rgba(x->rnd, w, h, bare);
+        if (hol_render_frame(x->rnd, &b, NULL) == HOL_OK) {
+            hol_render_read_rgba(x->rnd, w, h, shown);
+            hol__measure_body(x, e, fd->body, bare, shown, w, h);
+            memcpy(bare, shown, bytes);
+        }
     }
     if (hol_render_frame(x->rnd, fd, NULL) == HOL_OK) {
         hol_render_read_rgba(x->rnd, w, h, shown);

@@ -128,12 +128,19 @@ static int hol__input(hol__xr *x, const XrFrameState *fs, hol_input *in, float s
     in->flags |= hol_xr_life_take(&x->life, head);
     if (x->life.focused && hol__hands(x, fs->predictedDisplayTime, in))
         return 1;
-    if ((in->buttons & HOL_BTN_RECENTRE) && !(x->prev_buttons & HOL_BTN_RECENTRE) && head)
-        hol_xr_recentre(&x->calib, hp, hq);
-    in->pressed = in->buttons & ~x->prev_buttons; /* the runtime keeps no taps */
+    /* the tracked hands' joints, and their recentre (both palms up, held:
+     * a press, placed from the head as the control's is) */
+    if (hol__xr_hands_locate(x, fs->predictedDisplayTime))
+        return 1;
+    uint32_t gesture = hol__xr_hands_gesture(x, x->life.focused, in->time_s);
+    if (((in->buttons & HOL_BTN_RECENTRE) && !(x->prev_buttons & HOL_BTN_RECENTRE)) || gesture)
+        if (head)
+            hol_xr_recentre(&x->calib, hp, hq);
+    in->pressed = (in->buttons & ~x->prev_buttons) | gesture; /* the runtime keeps no taps */
     x->prev_buttons = in->buttons;
     in->device = hol__device(x);
     hol_xr_to_room(&x->calib, hp, hq, &in->head);
+    hol__xr_hands_room(x, in->joints);
     /* scripted head motion (the simulated headset does not move): the
      * recorded record's head pose, in room coordinates */
     shift[0] = shift[1] = shift[2] = 0;
@@ -193,9 +200,11 @@ static int hol__step(hol__xr *x, const hol_input *in, const hol_app_view **out_v
 }
 
 /* One eye: drawn where it is (eroom, its room pose), with the view's own
- * asymmetric field of view, into the swapchain's next image. */
+ * asymmetric field of view, into the swapchain's next image; its room
+ * state (the cell it sees from) is seat's (the eye, or outside the room
+ * the point hol_xr_outside_eyes moved it to). */
 static int hol__draw_eye(hol__xr *x, int e, const hol_app_view *v, const hol_input *in,
-                         const hol_pose *eroom, double fade,
+                         const hol_pose *eroom, const double seat[3], double fade,
                          XrCompositionLayerProjectionView *pv)
 {
     hol__eye *ey = &x->eye[e];
@@ -223,10 +232,9 @@ static int hol__draw_eye(hol__xr *x, int e, const hol_app_view *v, const hol_inp
         memcpy(fd.hand_pos, in->hand[0].pos, sizeof fd.hand_pos);
         memcpy(fd.hand_orient, in->hand[0].quat, sizeof fd.hand_orient);
     }
-    /* the eye's own room state: the cell its position lies in; none
-     * (outside the room): the boundary colour alone */
-    int inside =
-        fade < 1 && hol_motion_eye_state(&v->user, v->head, fd.cam.eye, &fd.user) == HOL_OK;
+    /* the eye's own room state: the cell its seat lies in; none (beyond
+     * the safety fade's margin, inside): the boundary colour alone */
+    int inside = fade < 1 && hol_motion_eye_state(&v->user, v->head, seat, &fd.user) == HOL_OK;
     fd.fade = inside ? fade : 1;
     hol_render_stats rs;
     memset(&rs, 0, sizeof rs);
@@ -278,15 +286,15 @@ static int hol__eyes(hol__xr *x, const hol_app_view *v, const hol_input *in,
             eyes[e][k] = eroom[e].pos[k] += shift[k];
     }
     double fade = hol_xr_fade_room(eyes, HOL__MARGIN, x->room_w, x->room_d);
-    if (hol_xr_outside_eyes(v, in, eyes)) { /* outside: from the room's edge, dimmed */
-        for (int e = 0; e < 2; e++)
-            for (int k = 0; k < 3; k++)
-                eroom[e].pos[k] = (float)eyes[e][k];
+    /* outside: drawn from the head where it is, dimmed, the room's cells
+     * seen from the nearest (the seats inside) */
+    double seat[2][3];
+    memcpy(seat, eyes, sizeof seat);
+    if (hol_xr_outside_eyes(v, in, seat))
         fade = 0;
-    }
     hol__xr_quad_covered(x, v); /* scenery nearer than the panel: in the eyes */
     for (int e = 0; e < 2; e++)
-        if (hol__draw_eye(x, e, v, in, &eroom[e], fade, &pv[e]))
+        if (hol__draw_eye(x, e, v, in, &eroom[e], seat[e], fade, &pv[e]))
             return 1;
     *out_rendered = fade > 0 ? 2 : 1;
     x->fade_now = fade;

@@ -7,13 +7,16 @@
  *                     space changed, an interaction profile changed
  *   hol_xr_frame.c    one frame: the input record, the app step, both eyes
  *   hol_xr_panel.c    the world panel's quad layer (its swapchain, its image)
+ *   hol_xr_hands.c    the tracked hands (XR_EXT_hand_tracking): their joints,
+ *                     the hands-only recentre
  *   hol_xr_check.c    the desktop read-back check of one eye
  *   hol_xr_views.c    view configuration and swapchains
  *   hol_xr_actions.c  actions, bindings, reference spaces, stage bounds
  *   hol_xr_gfx.c      the GL context and its graphics binding
  *   hol_xr_state.c    reporting: progress lines and the one failure line
  * and the pure parts every one of them may use: hol_xr_room.h,
- * hol_xr_bind.h, hol_xr_pick.h, hol_xr_quad.h, hol_xr_text.h.
+ * hol_xr_bind.h, hol_xr_pick.h, hol_xr_quad.h, hol_xr_text.h,
+ * hol_xr_hand.h.
  *
  * Contract
  * - One hol__xr per run, zeroed at start; every XR handle not yet made is
@@ -55,6 +58,7 @@
 #include <openxr/openxr.h>
 #include <openxr/openxr_platform.h>
 
+#include "../../core/hol_body.h"
 #include "../../core/hol_motion.h"
 #include "../../render/hol_app_frame.h"
 #include "../../render/hol_render.h"
@@ -62,6 +66,7 @@
 #include "hol_xr_bind.h"
 #include "../shell/hol_xr_pick.h"
 #include "../shell/hol_xr_quad.h"
+#include "../shell/hol_xr_hand.h"
 #include "../shell/hol_xr_room.h"
 #include "hol_xr_text.h"
 
@@ -131,6 +136,14 @@ typedef struct hol__eye {
     hol__GLuint msaa_fbo, msaa_color, msaa_depth;
 } hol__eye;
 
+/* One hand as xrLocateHandJointsEXT gave it (stage space). */
+typedef struct hol__xr_hand_raw {
+    int active;
+    float pos[HOL_XR_HAND_JOINTS][3];
+    float radius[HOL_XR_HAND_JOINTS];
+    unsigned flags[HOL_XR_HAND_JOINTS];
+} hol__xr_hand_raw;
+
 typedef struct hol__xr {
     const hol_xr_desc *d;
     const hol_xr_app_fns *fns;
@@ -161,6 +174,16 @@ typedef struct hol__xr {
     int reached_focused;
     int hand_interaction; /* XR_EXT_hand_interaction enabled (the runtime lists it) */
     int fb_refresh;   /* XR_FB_display_refresh_rate enabled (the runtime lists it) */
+    /* the tracked hands (hol_xr_hands.c) */
+    int hand_ext;     /* XR_EXT_hand_tracking enabled (the runtime lists it) */
+    int hands_on;     /* both trackers made: the joints are located */
+    XrHandTrackerEXT hand_tracker[2];
+    PFN_xrCreateHandTrackerEXT hand_create;
+    PFN_xrLocateHandJointsEXT hand_locate;
+    PFN_xrDestroyHandTrackerEXT hand_destroy;
+    hol__xr_hand_raw hand_raw[2]; /* this frame's */
+    long hands_located[2];        /* frames each hand was tracked */
+    hol_gesture gesture;          /* the hands-only recentre (core/hol_body.h) */
     double refresh_fb; /* its rate, Hz (0: not known) */
     double period_ns; /* predictedDisplayPeriod summed over the first frames */
     long periods;     /* how many (up to HOL_XR_REFRESH_FRAMES) */
@@ -296,6 +319,19 @@ int hol__xr_quad_covered(hol__xr *x, const hol_app_view *v);
 int hol__xr_quad_layer(hol__xr *x, const hol_app_view *v, const float shift[3],
                        XrCompositionLayerQuad *out, int *out_submit);
 void hol__xr_quad_free(hol__xr *x);
+/* hol_xr_hands.c: the hand trackers made after the session (where the
+ * runtime lists XR_EXT_hand_tracking, x->hand_ext, and the system tracks
+ * hands; else one line says why and the controllers are drawn: never a
+ * failure); destroyed at teardown; this frame's joints located (t: the
+ * display time; 1 a failure, reported); the hands-only recentre from them
+ * (HOL_BTN_RECENTRE once per hold, hol_gesture_step; nothing while not
+ * focused); the joints into the record in room coordinates (after a
+ * recentre has placed the room) */
+int hol__xr_hands_setup(hol__xr *x);
+void hol__xr_hands_free(hol__xr *x);
+int hol__xr_hands_locate(hol__xr *x, XrTime t);
+uint32_t hol__xr_hands_gesture(hol__xr *x, int focused, double t);
+void hol__xr_hands_room(hol__xr *x, hol_hand_joints out[2]);
 /* hol_xr_frame.c: fns->environment once what it tells is known (last: the
  * run ends, tell what is known now) */
 void hol__xr_tell_env(hol__xr *x, int last);

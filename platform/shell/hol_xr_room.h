@@ -64,11 +64,14 @@ int hol_xr_bounds_hold(float width, float depth, double room_w, double room_d);
 double hol_xr_fade(const double eye[2][3], double margin);
 /* The same in a room of room_w x room_d metres (hol_xr_fade: 3 x 3). */
 double hol_xr_fade_room(const double eye[2][3], double margin, double room_w, double room_d);
-/* Outside the room (v->outside.on, core/hol_app.h): the eyes drawn from
- * the room's edge, moved by the view's head less the tracked head (in's,
- * on the floor; the motion keeps the view's inside the hedges) into eye;
- * the fade then 0 (the renderer dims the view: hol_frame_desc.outside).
- * Returns 1 when it moved them, 0 (nothing done) inside the room. */
+/* Outside the room (v->outside.on, core/hol_app.h): the eyes are drawn
+ * where they are (the real head: never a view held still while the head
+ * moves), and eye[] is turned into their seats, the points whose room
+ * state (cell) they see from: moved by the view's head less the tracked
+ * head (in's, on the floor; the motion keeps the view's inside the
+ * hedges); the renderer builds its view from the seat's cell
+ * (hol_frame_desc.outside). The fade is then 0 (the renderer dims the
+ * view). Returns 1 when it moved them, 0 (nothing done) inside the room. */
 int hol_xr_outside_eyes(const hol_app_view *v, const hol_input *in, double eye[2][3]);
 
 /* The fit told on the HUD (the headset and the web, for their first

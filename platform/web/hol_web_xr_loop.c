@@ -231,11 +231,10 @@ static void xr_render(const hol_app_view *v, const hol_input *in, int fb)
         memcpy(eyes[e], cam[e].eye, sizeof eyes[e]);
     }
     double fade = hol_xr_fade_room(eyes, HOL__MARGIN, w->xr.room_w, w->xr.room_d);
-    if (hol_xr_outside_eyes(v, in, eyes)) { /* outside: from the room's edge, dimmed */
-        for (int e = 0; e < 2; e++)
-            memcpy(cam[e].eye, eyes[e], sizeof eyes[e]);
+    /* outside: drawn from the head where it is, dimmed, the room's cells
+     * seen from the nearest (eyes: the seats inside) */
+    if (hol_xr_outside_eyes(v, in, eyes))
         fade = 0;
-    }
     quad.v = v;
     quad.fade = (float)fade;
     if (quad.on && v->panel.covered != quad.covered)
@@ -264,8 +263,8 @@ static void xr_render(const hol_app_view *v, const hol_input *in, int fb)
             for (int k = 0; k < 4; k++)
                 fd.hand_orient[k] = in->hand[0].quat[k];
         }
-        /* the eye's own cell; none (outside the room): the boundary colour */
-        int inside = fade < 1 && hol_motion_eye_state(&v->user, v->head, fd.cam.eye, &fd.user) == HOL_OK;
+        /* the eye's own cell (its seat's); none: the boundary colour */
+        int inside = fade < 1 && hol_motion_eye_state(&v->user, v->head, eyes[e], &fd.user) == HOL_OK;
         fd.fade = inside ? fade : 1;
         if (hol_render_frame(w->rnd, &fd, NULL)) {
             fd.fade = 1; /* never a stale image */

@@ -1712,7 +1712,7 @@ await check('Quest 3: a walk while the headset is off, under a system menu or un
 // Outside the room (issue 36): the forest dims, the panel stays, an arrow
 // on the floor points back in (core decides: hol_app_view.outside);
 // events.csv says outside and inside.
-await check('Quest 3: outside the room the app says so (the view from the edge, dimmed), the floor arrow points back in (west), events.csv says outside once and inside once back in', async () => {
+await check('Quest 3: outside the room the app says so (the view from the head where it is, dimmed), the floor arrow points back in (west), events.csv says outside once and inside once back in', async () => {
   const rows = async (k) => ((await stored(xrPage, 'events.csv')) || '').toString()
     .split('\n').filter((l) => new RegExp(',' + k + ',').test(l));
   const o0 = (await rows('outside')).length, i0 = (await rows('inside')).length;

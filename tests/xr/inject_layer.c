@@ -25,7 +25,19 @@
  * controllers have no thumbstick): HOL_INJECT_STICK_AT=K makes every
  * xrGetActionStateVector2f an active stick pushed ahead (0, 1) while
  * K..K+19 frames have ended, to the right (1, 0) while K+40..K+59 have,
- * and at rest (0, 0) otherwise. */
+ * and at rest (0, 0) otherwise.
+ *
+ * For the tracked hands (XR_EXT_hand_tracking, issue 36): Monado's
+ * simulated controllers track no hands (the system says
+ * supportsHandTracking false), so HOL_INJECT_HANDS=down (or up) makes the
+ * system say true and answers xrCreateHandTrackerEXT,
+ * xrLocateHandJointsEXT and xrDestroyHandTrackerEXT itself: two open hands
+ * of the default joint set (26 joints, all valid and tracked), their
+ * wrists 0.15 m either side of the stage's -z axis, 1.45 m high and
+ * 0.4 m ahead, fingers along -z, palms down (or up: the hands-only
+ * recentre's gesture), in the base space asked for (the app's stage).
+ * Nothing of it reaches the runtime. */
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -41,6 +53,7 @@ static PFN_xrEndFrame next_end;
 static PFN_xrCreateSession next_create_session;
 static PFN_xrCreateSwapchain next_create_swapchain;
 static PFN_xrGetActionStateVector2f next_vector2f;
+static PFN_xrGetSystemProperties next_system_properties;
 static XrSession session;
 static long ended, at = 90, swapchains;
 static int injected;
@@ -63,6 +76,85 @@ static XRAPI_ATTR XrResult XRAPI_CALL inject_create_swapchain(XrSession s,
     if (f && *f && ++swapchains == strtol(f, NULL, 10))
         return XR_ERROR_SWAPCHAIN_FORMAT_UNSUPPORTED;
     return next_create_swapchain(s, info, out);
+}
+
+static int hands_wanted(void)
+{
+    const char *h = getenv("HOL_INJECT_HANDS");
+    return h && *h;
+}
+
+static XRAPI_ATTR XrResult XRAPI_CALL inject_system_properties(XrInstance instance,
+                                                               XrSystemId system,
+                                                               XrSystemProperties *p)
+{
+    XrResult r = next_system_properties(instance, system, p);
+    if (XR_SUCCEEDED(r) && hands_wanted())
+        for (XrBaseOutStructure *n = (XrBaseOutStructure *)p->next; n; n = n->next)
+            if (n->type == XR_TYPE_SYSTEM_HAND_TRACKING_PROPERTIES_EXT)
+                ((XrSystemHandTrackingPropertiesEXT *)n)->supportsHandTracking = XR_TRUE;
+    return r;
+}
+
+static long trackers; /* made and not destroyed */
+
+static XRAPI_ATTR XrResult XRAPI_CALL inject_create_hand(XrSession s,
+                                                         const XrHandTrackerCreateInfoEXT *ci,
+                                                         XrHandTrackerEXT *out)
+{
+    if (s == XR_NULL_HANDLE || !ci || !out ||
+        (ci->hand != XR_HAND_LEFT_EXT && ci->hand != XR_HAND_RIGHT_EXT))
+        return XR_ERROR_VALIDATION_FAILURE;
+    trackers++;
+    *out = (XrHandTrackerEXT)(uintptr_t)(0x4a0du + (unsigned)ci->hand); /* 1 left, 2 right */
+    return XR_SUCCESS;
+}
+
+static XRAPI_ATTR XrResult XRAPI_CALL inject_destroy_hand(XrHandTrackerEXT t)
+{
+    (void)t;
+    trackers--;
+    return XR_SUCCESS;
+}
+
+static void put(XrHandJointLocationEXT *j, float x, float y, float z)
+{
+    j->locationFlags = XR_SPACE_LOCATION_POSITION_VALID_BIT |
+                       XR_SPACE_LOCATION_ORIENTATION_VALID_BIT |
+                       XR_SPACE_LOCATION_POSITION_TRACKED_BIT |
+                       XR_SPACE_LOCATION_ORIENTATION_TRACKED_BIT;
+    j->pose.orientation.w = 1;
+    j->pose.position.x = x;
+    j->pose.position.y = y;
+    j->pose.position.z = z;
+    j->radius = 0.01f;
+}
+
+static XRAPI_ATTR XrResult XRAPI_CALL inject_locate_hand(XrHandTrackerEXT t,
+                                                         const XrHandJointsLocateInfoEXT *li,
+                                                         XrHandJointLocationsEXT *out)
+{
+    if (!li || !out || out->jointCount != XR_HAND_JOINT_COUNT_EXT || !out->jointLocations)
+        return XR_ERROR_VALIDATION_FAILURE;
+    int right = (uintptr_t)t == 0x4a0du + XR_HAND_RIGHT_EXT;
+    const char *h = getenv("HOL_INJECT_HANDS");
+    int up = h && !strcmp(h, "up");
+    /* the thumb's side: palms down, the right hand's thumb is towards -x */
+    float side = (right ? -1.0f : 1.0f) * (up ? -1.0f : 1.0f);
+    float wx = right ? 0.15f : -0.15f, wy = 1.45f, wz = -0.4f;
+    XrHandJointLocationEXT *j = out->jointLocations;
+    memset(j, 0, XR_HAND_JOINT_COUNT_EXT * sizeof *j);
+    put(&j[XR_HAND_JOINT_PALM_EXT], wx, wy, wz - 0.05f);
+    put(&j[XR_HAND_JOINT_WRIST_EXT], wx, wy, wz);
+    for (int k = 0; k < 4; k++) /* the thumb, out to the side */
+        put(&j[XR_HAND_JOINT_THUMB_METACARPAL_EXT + k], wx + side * (0.03f + 0.012f * (float)k),
+            wy, wz - 0.02f - 0.018f * (float)k);
+    for (int f = 0; f < 4; f++) /* index, middle, ring, little */
+        for (int k = 0; k < 5; k++)
+            put(&j[XR_HAND_JOINT_INDEX_METACARPAL_EXT + 5 * f + k],
+                wx + side * (0.02f - 0.017f * (float)f), wy, wz - 0.05f - 0.025f * (float)k);
+    out->isActive = XR_TRUE;
+    return XR_SUCCESS;
 }
 
 /* The submitted layers, one line (HOL_INJECT_LAYERS_AT). */
@@ -149,6 +241,14 @@ static XRAPI_ATTR XrResult XRAPI_CALL inject_gipa(XrInstance instance, const cha
         *out = (PFN_xrVoidFunction)inject_create_swapchain;
     else if (!strcmp(name, "xrGetActionStateVector2f"))
         *out = (PFN_xrVoidFunction)inject_vector2f;
+    else if (!strcmp(name, "xrGetSystemProperties"))
+        *out = (PFN_xrVoidFunction)inject_system_properties;
+    else if (hands_wanted() && !strcmp(name, "xrCreateHandTrackerEXT"))
+        *out = (PFN_xrVoidFunction)inject_create_hand;
+    else if (hands_wanted() && !strcmp(name, "xrLocateHandJointsEXT"))
+        *out = (PFN_xrVoidFunction)inject_locate_hand;
+    else if (hands_wanted() && !strcmp(name, "xrDestroyHandTrackerEXT"))
+        *out = (PFN_xrVoidFunction)inject_destroy_hand;
     else
         return next_gipa(instance, name, out);
     return XR_SUCCESS;
@@ -176,7 +276,9 @@ static XRAPI_ATTR XrResult XRAPI_CALL inject_create_instance(const XrInstanceCre
         XR_FAILED(next_gipa(*out, "xrCreateSwapchain",
                             (PFN_xrVoidFunction *)&next_create_swapchain)) ||
         XR_FAILED(next_gipa(*out, "xrGetActionStateVector2f",
-                            (PFN_xrVoidFunction *)&next_vector2f)))
+                            (PFN_xrVoidFunction *)&next_vector2f)) ||
+        XR_FAILED(next_gipa(*out, "xrGetSystemProperties",
+                            (PFN_xrVoidFunction *)&next_system_properties)))
         return XR_ERROR_INITIALIZATION_FAILED;
     return XR_SUCCESS;
 }

@@ -165,6 +165,9 @@ check "the recording replays headless" \
 # The world panel as a quad layer (issue 25): its own checks
 sh tests/xr/quad.sh "$BIN" "$LAYER" || fail=1
 
+# Tracked hands (XR_EXT_hand_tracking, issue 36): tests/xr/hands.sh
+sh tests/xr/hands.sh "$BIN" "$LAYER" || fail=1
+
 # SIGINT in the middle of a session: the OpenXR session ends through
 # STOPPING and EXITING, the attempt is saved 'aborted', exit 130 (issue 18).
 mkdir -p "$out/sig-logs"
