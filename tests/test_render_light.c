@@ -996,9 +996,10 @@ static void test_light_continuous_across_edges(void **state)
  * lanterns on the tiles of the room walks SW+N, SW+EN, SW+NE and SW+NNE) in {4,4},
  * {4,5}, {4,6} and {4,8}: the share of floor pixels the renderer lights
  * where the model (every trunk, every lantern) says a trunk blocks the
- * light (red over the model's by more than TOL) stays under 0.5 %; the
- * model's own share of pixels the old rule (each trunk its nearest
- * lantern's shadow only) left lit is printed beside it. */
+ * light (red over the model's tone-mapped light by more than TOL) stays
+ * under 0.5 %; the model's own share of pixels the old rule (each trunk
+ * its nearest lantern's shadow only) left lit is printed beside it, and
+ * in {4,4}..{4,6} it is 0.5 % or more (the check would catch that rule). */
 static void test_shadows_every_lantern(void **state)
 {
     (void)state;
@@ -1028,8 +1029,14 @@ static void test_shadows_every_lantern(void **state)
         printf("corner view {4,%d}: %d floor pixels, %d where a trunk blocks some light, %d "
                "(%.2f %%) lit there; the nearest-lantern rule lit %d (%.1f %%)\n", qs[k],
                floor_px, blocked, wrong, 100.0 * wrong / floor_px, old, 100.0 * old / floor_px);
-        assert_true(floor_px > W * H / 4 && blocked > floor_px / 50);
+        /* the tone curve compresses the blocked light: in {4,8}, where the
+         * far lanterns' light on a trunk's far side is faint, a few pixels
+         * only differ by more than TOL */
+        assert_true(floor_px > W * H / 4 && blocked > floor_px / (qs[k] < 8 ? 50 : 500));
         assert_true(wrong * 200 < floor_px);
+        /* the check has teeth: in {4,4}..{4,6} the nearest-lantern rule
+         * fails it */
+        assert_true(qs[k] == 8 || old * 200 >= floor_px);
     }
 }
 
@@ -1131,13 +1138,13 @@ static void test_hedge_shadows(void **state)
                     under = sh < 0;
                     double l = lantern_term(fm, fm * model_edge() / c.cell);
                     int clear = hedge_clear(&c, h, s.lant[i]);
-                    hidden += !clear && i == s.n - 1 && l * 255 > TOL;
+                    hidden += !clear && i == s.n - 1 && tone(l) * 255 > TOL;
                     lam += clear ? l * sh : 0;
                     lam0 += clear ? l : 0;
                 }
                 if (under)
                     continue;
-                double want[3] = {fmin(lam, 1), fog_model(&c, h, s.eye), fmin(lam0, 1)};
+                double want[3] = {tone(lam), fog_model(&c, h, s.eye), tone(lam0)};
                 shadow_check(&sc, px + 4 * (y * W + x), want, on_cell_edge(&c, x, y));
                 checked++;
             }
