@@ -225,7 +225,7 @@ template-run: $(BUILD)/tests/hol_template
 	@$(SUITE) "platform template (3 frames, OSMesa)" $< --frames 3
 
 # The web platform's pure part (pancake devices, WebXR frames as records).
-WEB_PURE_SRC := platform/web/hol_web_input.c platform/web/hol_web_xr.c platform/web/hol_web_libm.c $(SHELL_SRC)
+WEB_PURE_SRC := platform/web/hol_web_input.c platform/web/hol_web_xr.c $(SHELL_SRC)
 $(BUILD)/tests/test_web_%: tests/test_web_%.c $(WEB_PURE_SRC) $(wildcard platform/web/*.h platform/shell/*.h) $(CORE_LIB)
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) -o $@ $< $(WEB_PURE_SRC) $(CORE_LIB) $(LDFLAGS) -lcmocka $(LDLIBS)
@@ -702,9 +702,9 @@ FORCE:
 # in the languages of WEB_LANGS
 $(BUILD)/web-obj/core/hol_str.o: WEB_CFLAGS += -DHOL_STR_NO_PAGE $(if $(filter nl,$(WEB_LANGS)),,-DHOL_STR_NO_NL)
 # the renderer's and the platform's libm calls on the core's hol_math.h and
-# a small exp family (platform/web/hol_web_libm.h: musl's were 10.5 KB of
+# a small exp family (render/hol_libm_web.h: musl's were 10.5 KB of
 # the gzip'ed transfer)
-$(BUILD)/web-obj/render/%.o $(BUILD)/web-obj/platform/%.o: WEB_CFLAGS += -DHOL_WEB_LIBM_MACROS -include platform/web/hol_web_libm.h
+$(BUILD)/web-obj/render/%.o $(BUILD)/web-obj/platform/%.o: WEB_CFLAGS += -DHOL_WEB_LIBM_MACROS -include render/hol_libm_web.h
 $(BUILD)/web-obj/render/hol_program.o: $(GLSL_H)
 $(BUILD)/web-obj/render/hol_program.o: WEB_CFLAGS += -I$(BUILD)/gen
 $(BUILD)/web-obj/platform/shell/hol_shell_build.o: $(BUILD_ID_H)

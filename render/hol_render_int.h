@@ -203,8 +203,16 @@ static inline hol__item *hol__queue_push(hol_render *r, int pass, uint32_t first
     return it;
 }
 
+/* FNV-1a over n bytes from h: the keys of kept draws and kept shadow masks */
+static inline uint64_t hol__fnv(uint64_t h, const void *p, size_t n)
+{
+    const uint8_t *b = p;
+    for (size_t i = 0; i < n; i++)
+        h = (h ^ b[i]) * 0x100000001b3ull;
+    return h;
+}
+
 /* hol_render_queue.c */
-uint64_t hol__fnv(uint64_t h, const void *p, size_t n);
 void hol__quad_matrix(const double pos[3], const double q[4], double sx, double sy,
                       double ox, double oy, float m[16]);
 hol_err hol__queue_hud(hol_render *r, const hol_frame_desc *f);

@@ -9,14 +9,6 @@
 #include "hol_body_draw.h"
 #include "hol_hud.h"
 
-uint64_t hol__fnv(uint64_t h, const void *p, size_t n)
-{
-    const uint8_t *b = p;
-    for (size_t i = 0; i < n; i++)
-        h = (h ^ b[i]) * 0x100000001b3ull;
-    return h;
-}
-
 /* Column-major model matrix of a quad in the world: the square [-1, 1]^2
  * (z = 0) scaled to sx x sy (half sides, metres) and moved by (ox, oy) in
  * its own plane, turned by the quaternion q (all zero: identity), moved to

@@ -75,7 +75,7 @@ void hol__xr_hands_free(hol__xr *x)
 
 /* One hand's joints at time t in the room's space, kept as OpenXR gives
  * them (x->hand_raw[h]). 1 a failure (reported). */
-static int hol__hand(hol__xr *x, int h, XrTime t)
+static int hol__hand_locate(hol__xr *x, int h, XrTime t)
 {
     XrHandJointLocationEXT loc[HOL_XR_HAND_JOINTS];
     XrHandJointLocationsEXT ls = {XR_TYPE_HAND_JOINT_LOCATIONS_EXT};
@@ -100,7 +100,7 @@ int hol__xr_hands_locate(hol__xr *x, XrTime t)
 {
     memset(x->hand_raw, 0, sizeof x->hand_raw);
     for (int h = 0; h < 2 && x->hands_on; h++)
-        if (hol__hand(x, h, t))
+        if (hol__hand_locate(x, h, t))
             return 1;
     return 0;
 }

@@ -1,8 +1,10 @@
-/* hol_web_libm.c - the web build's exp family (contract: hol_web_libm.h).
+/* hol_math_exp.c - e^x and the hyperbolic functions (contract: hol_math_exp.h).
  * e^r - 1 for |r| <= ln 2 / 2 by its Taylor series to r^14 (the rest below
  * 1e-17), e^x as 2^k (1 + that) with x = k ln 2 + r (ln 2 in two parts, as
  * fdlibm splits it), the hyperbolic functions from those. */
-#include "hol_web_libm.h"
+#include "hol_math_exp.h"
+
+#include <math.h>
 
 #include <stdint.h>
 #include <string.h>
@@ -29,7 +31,7 @@ static double hol__pow2(int k)
     return d;
 }
 
-double hol_web_exp(double x)
+double hol_exp(double x)
 {
     if (x != x)
         return x;
@@ -44,41 +46,41 @@ double hol_web_exp(double x)
     return (1 + hol__em1(r)) * hol__pow2(k / 2) * hol__pow2(k - k / 2);
 }
 
-double hol_web_expm1(double x)
+double hol_expm1(double x)
 {
     if (fabs(x) <= 0.3465) /* no cancellation: the series itself */
         return hol__em1(x);
-    return hol_web_exp(x) - 1;
+    return hol_exp(x) - 1;
 }
 
-double hol_web_sinh(double x)
+double hol_sinh(double x)
 {
     double a = fabs(x), h = copysign(0.5, x);
     if (a < 22) {
-        double t = hol_web_expm1(a);
+        double t = hol_expm1(a);
         return h * (t + t / (t + 1));
     }
-    return h * hol_web_exp(a); /* e^-a is below an ulp of e^a */
+    return h * hol_exp(a); /* e^-a is below an ulp of e^a */
 }
 
-double hol_web_cosh(double x)
+double hol_cosh(double x)
 {
     double a = fabs(x);
     if (a < 22) {
-        double t = hol_web_exp(a);
+        double t = hol_exp(a);
         return 0.5 * t + 0.5 / t;
     }
-    return 0.5 * hol_web_exp(a);
+    return 0.5 * hol_exp(a);
 }
 
-double hol_web_tanh(double x)
+double hol_tanh(double x)
 {
     double a = fabs(x);
     if (x != x)
         return x;
     double t = 1;
     if (a <= 22) {
-        double e = hol_web_expm1(2 * a);
+        double e = hol_expm1(2 * a);
         t = e / (e + 2);
     }
     return copysign(t, x);

@@ -1,4 +1,4 @@
-/* hol_web_libm.h - the web build's libm for the renderer and the platform:
+/* hol_libm_web.h - the web build's libm for the renderer and the platform:
  * the core's own functions (core/hol_math.h) and a small exp family, in
  * place of musl's (the transfer size, docs/web.md).
  *
@@ -10,9 +10,9 @@
  *   ulp, 2 for acosh and asinh); tan is hol_sin / hol_cos (within 4 ulp);
  *   sinf and cosf the float of hol_sin and hol_cos of the double; hypot is
  *   sqrt(a^2 + b^2) (the renderer's lengths are far from overflow); sinh,
- *   cosh, tanh are hol_web_sinh, hol_web_cosh, hol_web_tanh (below, within
+ *   cosh, tanh are hol_sinh, hol_cosh, hol_tanh (core/hol_math_exp.h, within
  *   4 ulp of glibc's: tests/test_web_libm.c); powf(x, y) is the float of
- *   hol_web_exp(y hol_log(x)) (the renderer's sRGB curve, x in (0, 1]).
+ *   hol_exp(y hol_log(x)) (the renderer's sRGB curve, x in (0, 1]).
  * - Why: musl's sin, cos and tan carry the huge-argument reduction and its
  *   table of 2/pi, exp its 2 KB table, and the rest their own kernels: about
  *   10.5 KB of the gzip'ed wasm, which the core's functions already in it
@@ -23,19 +23,13 @@
  *   head, hol_xr_room.c) enters the recording as input.
  * - Pure functions: no state, no errno. NaN in, NaN out.
  */
-#ifndef HOL_WEB_LIBM_H
-#define HOL_WEB_LIBM_H
+#ifndef HOL_LIBM_WEB_H
+#define HOL_LIBM_WEB_H
 
 #include <math.h>
 
-#include "../../core/hol_math.h"
-
-/* e^x - 1, e^x, sinh, cosh, tanh from one polynomial (hol_web_libm.c) */
-double hol_web_expm1(double x);
-double hol_web_exp(double x);
-double hol_web_sinh(double x);
-double hol_web_cosh(double x);
-double hol_web_tanh(double x);
+#include "../core/hol_math.h"
+#include "../core/hol_math_exp.h"
 
 #ifdef HOL_WEB_LIBM_MACROS
 #define sin(x) hol_sin(x)
@@ -47,10 +41,10 @@ double hol_web_tanh(double x);
 #define acosh(x) hol_acosh(x)
 #define asinh(x) hol_asinh(x)
 #define hypot(a, b) hol__web_hypot(a, b)
-#define sinh(x) hol_web_sinh(x)
-#define cosh(x) hol_web_cosh(x)
-#define tanh(x) hol_web_tanh(x)
-#define powf(x, y) ((float)hol_web_exp((double)(y) * hol_log((double)(x))))
+#define sinh(x) hol_sinh(x)
+#define cosh(x) hol_cosh(x)
+#define tanh(x) hol_tanh(x)
+#define powf(x, y) ((float)hol_exp((double)(y) * hol_log((double)(x))))
 static inline double hol__web_tan(double x)
 {
     return hol_sin(x) / hol_cos(x);
