@@ -385,7 +385,7 @@ typedef struct hol_app_hud {
                                          "TRIGGER: NEXT LEVEL" ("FINISH" on
                                          the last level); with a headset's
                                          device (HOL_DEVICE_XR_SIMPLE and
-                                         after), for HOL_APP_MENU_HINT_S
+                                         after but the touch screen's), for HOL_APP_MENU_HINT_S
                                          from its first record, the control
                                          that opens the menu ("Y: menu",
                                          after the prompt if one is

@@ -151,7 +151,8 @@ static void hol__prompt(const hol_app *app, hol_app_hud *h, const hol__ask *ask,
 static void hol__menu_hint(const hol_app *app, const hol_input *in, hol_app_hud *h)
 {
     const char *b = hol_prompt_button_in(app->device, HOL_BTN_MENU, hol__lang(app));
-    if (!in || !b || app->device < HOL_DEVICE_XR_SIMPLE || app->menu ||
+    if (!in || !b || app->device < HOL_DEVICE_XR_SIMPLE || app->device == HOL_DEVICE_SCREEN ||
+        app->menu ||
         app->level.lesson == HOL_APP_HINT_LESSON || /* its prompt names the button */
         app->view.state != HOL_APP_PLAYING || !(in->time_s - app->device_t < HOL_APP_MENU_HINT_S))
         return;

@@ -135,7 +135,9 @@
  * the WebXR Gamepads Module's xr-standard layout: platform/web/hol_web_xr.h;
  * the Quest's menu button is not given to web pages, so its bindings differ
  * from OpenXR's touch_controller); HOL_DEVICE_WEBXR_HAND the web build's
- * tracked hands without controllers (pinches). Names in the input line format
+ * tracked hands without controllers (pinches); HOL_DEVICE_SCREEN the web
+ * page's touch screen (its prompts name the on-screen buttons the pupil
+ * taps: platform/web/index.html). Names in the input line format
  * (core/hol_input_io.h): hol_input_device_name. */
 enum hol_input_device {
     HOL_DEVICE_NONE = 0,      /* unknown: prompts name actions */
@@ -156,7 +158,10 @@ enum hol_input_device {
     HOL_DEVICE_XR_HAND = 11,    /* OpenXR hands (XR_EXT_hand_interaction):
                                    pinches and grasps
                                    (platform/openxr/hol_xr_bind.h) */
-    HOL_DEVICE_COUNT = 12
+    HOL_DEVICE_SCREEN = 12,     /* the web page's touch screen: its
+                                   on-screen buttons (OK, Back, Menu, Map,
+                                   the arrows) and swipes */
+    HOL_DEVICE_COUNT = 13
 };
 
 enum { HOL_HAND_LEFT = 0, HOL_HAND_RIGHT = 1 };

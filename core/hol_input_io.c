@@ -41,7 +41,7 @@ static int hol__axis_ok(float v)
 
 static const char *const hol__device_names[HOL_DEVICE_COUNT] = {
     "", "keyboard", "gamepad", "xr-simple", "xr-touch", "xr-vive", "xr-index", "xr-wmr", "xr",
-    "webxr-touch", "webxr-hand", "xr-hand"};
+    "webxr-touch", "webxr-hand", "xr-hand", "touchscreen"};
 
 const char *hol_input_device_name(uint32_t device)
 {

@@ -14,7 +14,7 @@
  *   degrees, [0, 360); h, l, r the head, left and right hand poses: seven
  *   numbers px,py,pz,qx,qy,qz,qw; DEVICE the device in use, one of
  *   keyboard, gamepad, xr-simple, xr-touch, xr-vive, xr-index, xr-wmr, xr,
- *   webxr-touch, webxr-hand, xr-hand
+ *   webxr-touch, webxr-hand, xr-hand, touchscreen
  *   (hol_input_device_name). A field left out is zero (an omitted pose is
  *   all zero, an omitted device HOL_DEVICE_NONE). Fields are separated by
  *   single spaces, each at most once, in any order. Numbers are finite
@@ -25,7 +25,8 @@
  *   headset's state (HOL_INPUT_HEADSET 100, HOL_INPUT_HEADSET_OFF 200,
  *   HOL_INPUT_POS_EMULATED 400), the way back (HOL_INPUT_WAY_BACK 800),
  *   and seated play (HOL_INPUT_SEATED 1000, the buttons HOL_BTN_STEP_*
- *   100..800): builds before them refuse a line
+ *   100..800), and the device touchscreen (the web page's touch screen,
+ *   which was keyboard before): builds before them refuse a line
  *   that has one; a line without them reads and replays as it always did.
  * - hol_input_format writes the canonical line: fields in the order above,
  *   fields whose bytes are all zero left out (a -0 is written), floats with 9

@@ -14,13 +14,17 @@
  *   restart has no control of its own: in the menu the confirm control
  *   restarts, as on every device). NULL: no control gives it on that
  *   device.
- *   HOL_DEVICE_NONE names the action itself ("CONFIRM", "MENU", ...);
+ *   HOL_DEVICE_NONE names the action itself ("CONFIRM", "MENU", ...), the
+ *   hands their gestures ("PINCH", "LEFT GRASP", ...) and
+ *   HOL_DEVICE_SCREEN (the web page's touch screen) the on-screen buttons
+ *   as the page labels them ("OK", "BACK", "MENU", "MAP");
  *   hol_prompt_button_in(device, btn, lang) says those in lang (the
- *   string table's HOL_S_BTN_*; a device's controls as above).
+ *   string table's HOL_S_BTN_*, HOL_S_HAND_*, HOL_S_SCREEN_*; a device's
+ *   controls as above); hol_prompt_button gives the English.
  * - hol_prompt_move(device, lang) says how one walks with it ("W/S/A/D:
  *   WALK"), in lang (core/hol_str.h); NULL for HOL_DEVICE_NONE. The
- *   controls' names above are the names printed on them, in every
- *   language. hol_prompt_seated(device, lang) names seated play and its
+ *   controls' names above (not the gestures' nor the on-screen buttons')
+ *   are the names printed on them, in every language. hol_prompt_seated(device, lang) names seated play and its
  *   step controls in lang (the string table's HOL_S_SEATED_*).
  * - The tables must follow the bindings: tests/test_xr_bind.c derives each
  *   XR word from the profile's binding path and compares.

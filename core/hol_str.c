@@ -130,6 +130,9 @@ static const char *const hol__rows[HOL__NSTR][HOL_LANG_COUNT] = {
     [HOL_S_MOVE_ROOM] = {"WALK IN YOUR ROOM",
                          "GEH IN DEINEM RAUM",
                          HOL__NL("LOOP IN JE KAMER")},
+    [HOL_S_MOVE_SCREEN] = {"SWIPE LEFT HALF: WALK, RIGHT HALF: TURN",
+                           "WISCHEN LINKS: GEHEN, RECHTS: DREHEN",
+                           HOL__NL("VEGEN LINKS: LOPEN, RECHTS: DRAAIEN")},
     [HOL_S_DO_FINISH] = {"finish",
                          "beenden",
                          HOL__NL("afsluiten")},
@@ -215,8 +218,8 @@ static const char *const hol__rows[HOL__NSTR][HOL_LANG_COUNT] = {
                             "SITZEND: WISCHEN ODER PFEILE: EIN SCHRITT",
                             HOL__NL("ZITTEND: VEGEN OF PIJLEN: ÉÉN STAP")},
     [HOL_S_SEATED_HANDS] = {"SEATED: PINCH AND FLICK: ONE STEP",
-                            "SITZEND: PINCH UND WISCHEN: EIN SCHRITT",
-                            HOL__NL("ZITTEND: PINCH EN VEEG: ÉÉN STAP")},
+                            "SITZEND: KNIFF UND WISCHEN: EIN SCHRITT",
+                            HOL__NL("ZITTEND: KNEEP EN VEEG: ÉÉN STAP")},
     [HOL_S_SEATED_STICK] = {"SEATED: THUMBSTICK: ONE STEP",
                             "SITZEND: THUMBSTICK: EIN SCHRITT",
                             HOL__NL("ZITTEND: THUMBSTICK: ÉÉN STAP")},
@@ -244,6 +247,33 @@ static const char *const hol__rows[HOL__NSTR][HOL_LANG_COUNT] = {
     [HOL_S_BTN_DEBUG] = {"DEBUG",
                          "DEBUG",
                          HOL__NL("DEBUG")},
+    [HOL_S_HAND_PINCH] = {"PINCH",
+                          "KNIFF",
+                          HOL__NL("KNEEP")},
+    [HOL_S_HAND_LONG_PINCH] = {"LONG PINCH",
+                               "KNIFF LANG",
+                               HOL__NL("LANGE KNEEP")},
+    [HOL_S_HAND_LEFT_PINCH] = {"LEFT PINCH",
+                               "KNIFF LINKS",
+                               HOL__NL("LINKER KNEEP")},
+    [HOL_S_HAND_GRASP] = {"GRASP",
+                          "GRIFF",
+                          HOL__NL("GREEP")},
+    [HOL_S_HAND_LEFT_GRASP] = {"LEFT GRASP",
+                               "GRIFF LINKS",
+                               HOL__NL("LINKER GREEP")},
+    [HOL_S_SCREEN_OK] = {"OK",
+                         "OK",
+                         HOL__NL("OK")},
+    [HOL_S_SCREEN_BACK] = {"BACK",
+                           "ZURÜCK",
+                           HOL__NL("TERUG")},
+    [HOL_S_SCREEN_MENU] = {"MENU",
+                           "MENÜ",
+                           HOL__NL("MENU")},
+    [HOL_S_SCREEN_MAP] = {"MAP",
+                          "KARTE",
+                          HOL__NL("KAART")},
     [HOL_S_QUIZ_PRE_SQUARE] = {"Walk N, E, S, W. Are you back on your start tile?",
                                "Geh N, O, S, W. Stehst du wieder auf deiner Startkachel?",
                                HOL__NL("Loop N, O, Z, W. Sta je weer op je starttegel?")},
@@ -548,7 +578,7 @@ const char *hol_str(int lang, hol_str_id id)
 int hol_str_cap(hol_str_id id)
 {
     if ((id >= HOL_S_DEVICE_BACK && id <= HOL_S_DO_MAP) ||
-        (id >= HOL_S_BTN_CONFIRM && id <= HOL_S_BTN_DEBUG))
+        (id >= HOL_S_BTN_CONFIRM && id <= HOL_S_SCREEN_MAP))
         return 60; /* HOL_APP_HINT_MAX: the prompt's line */
     if (id >= HOL_S_QUIZ_PRE_SQUARE && id <= HOL_S_TLX_FRUSTRATION)
         return 96; /* HOL_APP_QTEXT_MAX: an item's text */

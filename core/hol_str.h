@@ -74,6 +74,7 @@ typedef enum hol_str_id {
     HOL_S_MOVE_KEYBOARD,
     HOL_S_MOVE_GAMEPAD,
     HOL_S_MOVE_ROOM,
+    HOL_S_MOVE_SCREEN,    /* HOL_DEVICE_SCREEN: the touch stick and look */
     /* what a button does, after "BUTTON: " in a prompt */
     HOL_S_DO_FINISH,
     HOL_S_DO_BEGIN,
@@ -120,6 +121,20 @@ typedef enum hol_str_id {
     HOL_S_BTN_RESTART,
     HOL_S_BTN_QUIT,
     HOL_S_BTN_DEBUG,
+    /* the buttons' words of the devices that have no names printed on
+     * them (hol_prompt_button_in; in the prompt's line): the hands'
+     * gestures (HOL_DEVICE_WEBXR_HAND, HOL_DEVICE_XR_HAND) and the web
+     * page's on-screen buttons (HOL_DEVICE_SCREEN: as the page labels them,
+     * HOL_S_PAGE_OK ...) */
+    HOL_S_HAND_PINCH,
+    HOL_S_HAND_LONG_PINCH,
+    HOL_S_HAND_LEFT_PINCH,
+    HOL_S_HAND_GRASP,
+    HOL_S_HAND_LEFT_GRASP,
+    HOL_S_SCREEN_OK,
+    HOL_S_SCREEN_BACK,
+    HOL_S_SCREEN_MENU,
+    HOL_S_SCREEN_MAP,
     /* item texts (hol_app_question.text; 95 bytes, at most 3 lines of
      * HOL_APP_SCREEN_COLS): the class test's (pre, post; its concepts in
      * order), the SSQ's 16 and the raw TLX's 6 (core/hol_ask.c's rows, in

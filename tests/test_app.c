@@ -1640,6 +1640,8 @@ static void test_prompts_name_buttons(void **state)
         /* hands alone: a long pinch backs, so it quits in the menu */
         {HOL_DEVICE_WEBXR_HAND, "PINCH: next level",
          "LEFT PINCH: resume, PINCH: restart, LONG PINCH: quit"},
+        /* the web page's touch screen: its on-screen buttons, Back quits */
+        {HOL_DEVICE_SCREEN, "OK: next level", "MENU: resume, OK: restart, BACK: quit"},
         {HOL_DEVICE_NONE, "CONFIRM: next level, RESTART: again",
          "MENU: resume, CONFIRM: restart, QUIT: quit"},
     };

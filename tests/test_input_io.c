@@ -134,7 +134,7 @@ static void test_script_lines(void **state)
     assert_string_equal(line, "1.5 f=48 p=1 y=90 d=gamepad");
     static const char *const names[HOL_DEVICE_COUNT] = {
         "", "keyboard", "gamepad", "xr-simple", "xr-touch", "xr-vive", "xr-index", "xr-wmr", "xr",
-        "webxr-touch", "webxr-hand", "xr-hand"};
+        "webxr-touch", "webxr-hand", "xr-hand", "touchscreen"};
     for (uint32_t d = 0; d < HOL_DEVICE_COUNT; d++)
         assert_string_equal(hol_input_device_name(d), names[d]);
     assert_null(hol_input_device_name(HOL_DEVICE_COUNT));

@@ -248,9 +248,18 @@ static void test_lessons_fit(void **state)
     }
 }
 
+/* 1: the device's button words are the string table's (actions,
+ * gestures, the page's on-screen buttons), not names printed on them. */
+static int said_device(uint32_t d)
+{
+    return d == HOL_DEVICE_NONE || d == HOL_DEVICE_WEBXR_HAND || d == HOL_DEVICE_XR_HAND ||
+           d == HOL_DEVICE_SCREEN;
+}
+
 /* The seated line and a device's buttons in every language: a device
- * with named controls keeps their names; HOL_DEVICE_NONE's actions and
- * the seated line are the table's, English as before the table. */
+ * with named controls keeps their names; HOL_DEVICE_NONE's actions, the
+ * hands' gestures, the touch screen's buttons and the seated line are the
+ * table's, English as before the table. */
 static void test_seated_and_buttons(void **state)
 {
     (void)state;
@@ -267,12 +276,65 @@ static void test_seated_and_buttons(void **state)
             for (int k = 0; k < 8; k++) {
                 const char *en = hol_prompt_button(d, 1u << k), *w = hol_prompt_button_in(d, 1u << k, l);
                 assert_true(!en == !w);
-                if (en && (d != HOL_DEVICE_NONE || l == HOL_LANG_EN))
+                if (en && (!said_device(d) || l == HOL_LANG_EN))
                     assert_string_equal(en, w);
             }
         }
     assert_string_equal(hol_prompt_button_in(HOL_DEVICE_NONE, HOL_BTN_CONFIRM, HOL_LANG_DE),
                         "BESTÄTIGEN");
+}
+
+/* The touch screen (the web page's on-screen buttons: OK, Back, Menu, Map,
+ * the arrows) and the hands' gestures, in every language: the words the
+ * pupil sees on the page and the gestures' English bytes as before the
+ * table; the other languages have words of their own. */
+static void test_touch_and_hand_words(void **state)
+{
+    (void)state;
+    static const struct {
+        uint32_t device, btn;
+        const char *en, *de, *nl;
+    } want[] = {
+        {HOL_DEVICE_SCREEN, HOL_BTN_CONFIRM, "OK", "OK", "OK"},
+        {HOL_DEVICE_SCREEN, HOL_BTN_BACK, "BACK", "ZURÜCK", "TERUG"},
+        {HOL_DEVICE_SCREEN, HOL_BTN_MENU, "MENU", "MENÜ", "MENU"},
+        {HOL_DEVICE_SCREEN, HOL_BTN_MINIMAP, "MAP", "KARTE", "KAART"},
+        {HOL_DEVICE_WEBXR_HAND, HOL_BTN_CONFIRM, "PINCH", "KNIFF", "KNEEP"},
+        {HOL_DEVICE_WEBXR_HAND, HOL_BTN_BACK, "LONG PINCH", "KNIFF LANG", "LANGE KNEEP"},
+        {HOL_DEVICE_WEBXR_HAND, HOL_BTN_MENU, "LEFT PINCH", "KNIFF LINKS", "LINKER KNEEP"},
+        {HOL_DEVICE_XR_HAND, HOL_BTN_RECENTRE, "LEFT GRASP", "GRIFF LINKS", "LINKER GREEP"},
+        {HOL_DEVICE_XR_HAND, HOL_BTN_QUIT, "GRASP", "GRIFF", "GREEP"},
+    };
+    for (size_t i = 0; i < sizeof want / sizeof want[0]; i++) {
+        assert_string_equal(hol_prompt_button(want[i].device, want[i].btn), want[i].en);
+        assert_string_equal(hol_prompt_button_in(want[i].device, want[i].btn, HOL_LANG_EN),
+                            want[i].en);
+        assert_string_equal(hol_prompt_button_in(want[i].device, want[i].btn, HOL_LANG_DE),
+                            want[i].de);
+        assert_string_equal(hol_prompt_button_in(want[i].device, want[i].btn, HOL_LANG_NL),
+                            want[i].nl);
+    }
+    /* the page has no restart, quit nor recentre button (Back quits in
+     * the menu); the touch stick walks, the arrows step seated */
+    assert_null(hol_prompt_button(HOL_DEVICE_SCREEN, HOL_BTN_RESTART));
+    assert_null(hol_prompt_button(HOL_DEVICE_SCREEN, HOL_BTN_QUIT));
+    assert_null(hol_prompt_button(HOL_DEVICE_SCREEN, HOL_BTN_RECENTRE));
+    assert_string_equal(hol_prompt_move(HOL_DEVICE_SCREEN, HOL_LANG_EN),
+                        "SWIPE LEFT HALF: WALK, RIGHT HALF: TURN");
+    assert_string_equal(hol_prompt_seated(HOL_DEVICE_SCREEN, HOL_LANG_DE),
+                        "SITZEND: WISCHEN ODER PFEILE: EIN SCHRITT");
+    /* a page's word and the prompt's name the same button */
+    static const hol_str_id page[4] = {HOL_S_PAGE_OK, HOL_S_PAGE_BACK, HOL_S_PAGE_MENU,
+                                       HOL_S_PAGE_MAP};
+    static const uint32_t btn[4] = {HOL_BTN_CONFIRM, HOL_BTN_BACK, HOL_BTN_MENU, HOL_BTN_MINIMAP};
+    for (int l = 0; l < HOL_LANG_COUNT; l++)
+        for (int i = 0; i < 4; i++) {
+            const char *p = hol_str(l, page[i]), *w = hol_prompt_button_in(HOL_DEVICE_SCREEN, btn[i], l);
+            assert_int_equal(strlen(p), strlen(w));
+            for (size_t k = 0; p[k]; k++) /* upper case: ASCII, and Ü's second byte */
+                assert_true(p[k] == w[k] || (p[k] >= 'a' && p[k] <= 'z' && p[k] - 32 == w[k]) ||
+                            ((unsigned char)p[k] == 0xbc && (unsigned char)w[k] == 0x9c));
+        }
 }
 
 /* A label of an item (a choice, an anchor) within the 20 bytes its value
@@ -378,6 +440,7 @@ int main(void)
         cmocka_unit_test(test_lessons_complete),
         cmocka_unit_test(test_lessons_fit),
         cmocka_unit_test(test_seated_and_buttons),
+        cmocka_unit_test(test_touch_and_hand_words),
         cmocka_unit_test(test_items_said),
         cmocka_unit_test(test_tags),
     };

@@ -211,10 +211,19 @@ static void test_touch_and_snap(void **state)
     assert_true(in.move[1] == 0.5f && in.turn[0] == 1.0f);
     assert_int_equal(in.buttons, HOL_BTN_MENU);
     assert_int_equal(in.pressed, HOL_BTN_MENU);
-    assert_int_equal(in.device, HOL_DEVICE_KEYBOARD);
+    assert_int_equal(in.device, HOL_DEVICE_SCREEN); /* prompts name the on-screen buttons */
     in = frame(&p);
     assert_int_equal(in.pressed, 0); /* taps used */
     assert_int_equal(in.buttons, HOL_BTN_MENU);
+    assert_int_equal(in.device, HOL_DEVICE_SCREEN);
+    p.touch_buttons = 0; /* a key after the touch: the keyboard again */
+    hol_web_key(&p, HOL_WEB_K_CONFIRM, 1, 0);
+    in = frame(&p);
+    assert_int_equal(in.device, HOL_DEVICE_KEYBOARD);
+    hol_web_key(&p, HOL_WEB_K_CONFIRM, 0, 0);
+    p.touch_used = 1; /* and a swipe: the touch screen */
+    in = frame(&p);
+    assert_int_equal(in.device, HOL_DEVICE_SCREEN);
     /* snap turn: Left snaps to the next multiple of 90 degrees and does not turn */
     memset(&p, 0, sizeof p);
     p.snap_deg = 90;

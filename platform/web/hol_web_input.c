@@ -109,11 +109,13 @@ void hol_web_pancake_input(hol_web_pancake *p, double t, double dt, double yaw_d
         in.pressed |= HOL_BTN_QUIT;
     in.buttons |= p->touch_buttons;
     in.pressed |= p->touch_taps;
-    int keys_used = p->mouse_dx != 0 || p->mouse_dy != 0 || p->touch_used;
+    int keys_used = p->mouse_dx != 0 || p->mouse_dy != 0;
     for (int k = 0; k < HOL_WEB_K_COUNT; k++)
         keys_used |= p->held[k] | p->taps[k];
-    if (keys_used || p->touch_buttons)
+    if (keys_used)
         p->device = HOL_DEVICE_KEYBOARD;
+    if (p->touch_used || p->touch_buttons) /* the prompts name the on-screen buttons */
+        p->device = HOL_DEVICE_SCREEN;
     if (pad_input(p, &in))
         p->device = HOL_DEVICE_GAMEPAD;
     if (p->device == HOL_DEVICE_GAMEPAD && !p->pad_connected)

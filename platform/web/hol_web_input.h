@@ -25,8 +25,9 @@
  *   the unit disc: walk), one on the right half drags the look (0.3 degrees
  *   a pixel); on-screen buttons hold HOL_BTN_* bits (touch_buttons,
  *   touch_taps).
- * - device: the one used last (HOL_DEVICE_KEYBOARD for keys, mouse and
- *   touch, HOL_DEVICE_GAMEPAD for the pad). A gamepad in use that goes away
+ * - device: the one used last (HOL_DEVICE_KEYBOARD for keys and mouse,
+ *   HOL_DEVICE_SCREEN for touch and the on-screen buttons, so the prompts
+ *   name those: "OK: NEXT LEVEL"; HOL_DEVICE_GAMEPAD for the pad). A gamepad in use that goes away
  *   sets HOL_INPUT_DEVICE_LOST (the game pauses) until it is back or a key,
  *   the mouse or a touch is used.
  * - HOL_INPUT_FOCUSED while the page is visible and has the focus.

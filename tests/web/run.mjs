@@ -311,7 +311,7 @@ async function keepAttempt(p, who, n, plan, what) {
   assert(!p.errors.length, what + ': errors: ' + p.errors.join('; '));
 }
 
-await check('lessons by touch alone: a pupil completes every lesson in {4,5} predicting right (walking with the touch stick) and one predicting wrong (seated, the on-screen arrows); swipes choose, the OK button confirms; answers.csv holds what was entered', async () => {
+await check('lessons by touch alone: a pupil completes every lesson in {4,5} predicting right (walking with the touch stick) and one predicting wrong (seated, the on-screen arrows); swipes choose, the OK button confirms (the prompt names it); answers.csv holds what was entered', async () => {
   const frames = async (p, n) => {
     const f0 = await p.state(S.FRAMES);
     await p.until(async () => (await p.state(S.FRAMES)) >= f0 + n || (await p.state(S.OVER)) === 1, n + ' frames');
@@ -340,6 +340,9 @@ await check('lessons by touch alone: a pupil completes every lesson in {4,5} pre
       }
       await ok(p);
       await p.until(async () => (await p.state(S.APP_STATE)) === 5, what + ': the instructions');
+      /* touch the last input: the prompt names the on-screen button, not a key */
+      const hint = await p.page.evaluate(() => UTF8ToString(Module._hol_web_hint()));
+      assert(/^OK: /.test(hint) && !/ENTER/.test(hint), what + ': the prompt by touch: ' + hint);
       await ok(p);
       await p.until(async () => (await p.state(S.APP_STATE)) === 1, what + ': playing');
       for (let i = 0; i < plan.route.length; i++) {
