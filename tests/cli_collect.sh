@@ -22,26 +22,6 @@ if ! command -v "$PY" >/dev/null 2>&1; then
     exit 0
 fi
 
-# start_server LOG ARGS...: sets SPID and PORT (within 10 s)
-start_server() {
-    log=$1; shift
-    "$PY" "$SERVE" "$@" >"$log" 2>"$log.err" &
-    SPID=$!
-    for _ in $(seq 1 50); do
-        PORT=$(sed -n 's|^serving .* on http://127\.0\.0\.1:\([0-9]*\)/.*|\1|p' "$log")
-        [ -n "$PORT" ] && return 0
-        kill -0 "$SPID" 2>/dev/null || return 1
-        sleep 0.2
-    done
-    return 1
-}
-stop_server() {
-    kill "$SPID" 2>/dev/null
-    for _ in $(seq 1 25); do kill -0 "$SPID" 2>/dev/null || break; sleep 0.2; done
-    if kill -0 "$SPID" 2>/dev/null; then bad "server $SPID did not stop"; kill -9 "$SPID"; else ok; fi
-    wait "$SPID" 2>/dev/null
-}
-
 # The client: `send PORT METHOD TARGET BODYFILE [LENGTH [STALL]]` sends a
 # raw request (Content-Length LENGTH, "none" for none; default the body's
 # size), only the body's bytes, then waits STALL seconds before closing

@@ -21,26 +21,6 @@ else
     skip_server=0
 fi
 
-# start_server LOG ARGS...: serve.py ARGS in the background; sets SPID and
-# PORT from its first line (within 10 s); 1 when it did not start
-start_server() {
-    log=$1; shift
-    "$PY" "$SERVE" "$@" >"$log" 2>"$log.err" &
-    SPID=$!
-    for _ in $(seq 1 50); do
-        PORT=$(sed -n 's|^serving .* on https*://127\.0\.0\.1:\([0-9]*\)/.*|\1|p' "$log")
-        [ -n "$PORT" ] && return 0
-        kill -0 "$SPID" 2>/dev/null || return 1
-        sleep 0.2
-    done
-    return 1
-}
-stop_server() {
-    kill "$SPID" 2>/dev/null
-    for _ in $(seq 1 25); do kill -0 "$SPID" 2>/dev/null || break; sleep 0.2; done
-    if kill -0 "$SPID" 2>/dev/null; then bad "server $SPID did not stop on SIGTERM"; kill -9 "$SPID"; else ok; fi
-    wait "$SPID" 2>/dev/null
-}
 # fetch NAME PATH [HEADER]: headers in $T/h (lower case), body in $T/b
 fetch() {
     curl -sS --max-time 10 -o "$T/b" -D "$T/h0" ${3:+-H "$3"} "http://127.0.0.1:$PORT$2" 2>"$T/cerr" ||

@@ -120,6 +120,29 @@ wait_for() {
 # has other rows). codebook.csv is compared: one build writes one.
 logs_diff() { diff -r -x environment.csv -x 'study-*.txt' -x order.csv -x provenance.csv "$@"; }
 
+# start_server LOG ARGS...: platform/web/serve.py ($PY $SERVE, which the
+# suite sets) with ARGS in the background; sets SPID and PORT from its first
+# line (within 10 s); 1 when it did not start (cli_serve, cli_collect)
+start_server() {
+    log=$1; shift
+    "$PY" "$SERVE" "$@" >"$log" 2>"$log.err" &
+    SPID=$!
+    for _ in $(seq 1 50); do
+        PORT=$(sed -n 's|^serving .* on https*://127\.0\.0\.1:\([0-9]*\)/.*|\1|p' "$log")
+        [ -n "$PORT" ] && return 0
+        kill -0 "$SPID" 2>/dev/null || return 1
+        sleep 0.2
+    done
+    return 1
+}
+# stop_server: SIGTERM to SPID, ended within 5 s (ok) or not (bad, SIGKILL)
+stop_server() {
+    kill "$SPID" 2>/dev/null
+    for _ in $(seq 1 25); do kill -0 "$SPID" 2>/dev/null || break; sleep 0.2; done
+    if kill -0 "$SPID" 2>/dev/null; then bad "server $SPID did not stop on SIGTERM"; kill -9 "$SPID"; else ok; fi
+    wait "$SPID" 2>/dev/null
+}
+
 finish() {
   echo "$1: $passes passed, $fails failed"
   [ "$fails" = 0 ]
