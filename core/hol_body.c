@@ -59,6 +59,17 @@ void hol_body_from_input(const hol_input *in, int pointing, hol_body *out)
     }
 }
 
+int hol_hand_joints_usable(const float pos[HOL_HAND_JOINTS][3], uint32_t located)
+{
+    if ((located & HOL_HAND_LOCATED_ALL) != HOL_HAND_LOCATED_ALL)
+        return 0;
+    for (int i = 0; i < HOL_HAND_JOINTS; i++)
+        for (int k = 0; k < 3; k++)
+            if (!(isfinite(pos[i][k]) && fabsf(pos[i][k]) < HOL_HAND_REACH_M))
+                return 0;
+    return 1;
+}
+
 int hol_gesture_palm_up(const hol_hand_joints *j, int h)
 {
     if (!j->tracked)

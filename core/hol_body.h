@@ -51,6 +51,16 @@
  *   while focused); it returns at most one step bit, which the platform
  *   puts in the record's pressed bits (a recording carries it; the core
  *   steps as for a thumbstick's push: core/hol_input.h).
+ * - A tracked hand's joints as a runtime gives them (OpenXR's
+ *   XR_EXT_hand_tracking, WebXR's XRHand) are usable only whole:
+ *   hol_hand_joints_usable is 1 when every one of the HOL_HAND_JOINTS is
+ *   located (bit i of `located` set for joint i; HOL_HAND_LOCATED_ALL:
+ *   all) and each of its coordinates is finite and under
+ *   HOL_HAND_REACH_M in magnitude (checked in the runtime's own space,
+ *   before any calibration); else 0, and the platform draws no hand (its
+ *   grip's controller instead, as for a hand the runtime lost). Both
+ *   headset platforms (platform/shell/hol_xr_hand.c,
+ *   platform/web/hol_web_xr.c) decide by it.
  * - Pure: no allocation, no globals, no clock (times come in).
  */
 #ifndef HOL_BODY_H
@@ -97,6 +107,14 @@ void hol_body_from_input(const hol_input *in, int pointing, hol_body *out);
 
 /* The model drawn for a device (HOL_DEVICE_*). */
 int hol_body_model_of(uint32_t device);
+
+#define HOL_HAND_REACH_M 1e4f /* a joint this far (metres) or further: no hand */
+#define HOL_HAND_LOCATED_ALL ((1u << HOL_HAND_JOINTS) - 1u)
+
+/* 1 when the HOL_HAND_JOINTS positions pos (the runtime's space, metres)
+ * with the joints located (bit i: joint i) make a usable hand (see
+ * above), else 0. */
+int hol_hand_joints_usable(const float pos[HOL_HAND_JOINTS][3], uint32_t located);
 
 /* 1 when hand h (HOL_HAND_*) is tracked, its palm up and open. */
 int hol_gesture_palm_up(const hol_hand_joints *j, int h);

@@ -1,6 +1,7 @@
 /* test_body.c - the body a headset shows (core/hol_body.h): which hands
  * are drawn as what, the pointing ray, and the hands-only recentre
- * gesture with scripted joints, down to the app's recentre (issue 36).
+ * gesture with scripted joints, down to the app's recentre (issue 36),
+ * and when a runtime's joints make a usable hand.
  */
 #include <math.h>
 #include <setjmp.h>
@@ -194,6 +195,40 @@ static void test_palm_up(void **state)
     assert_false(hol_gesture_palm_up(&j[1], HOL_HAND_RIGHT));
 }
 
+/* A hand's joints as a runtime gives them: usable whole (every joint
+ * located, finite and within reach), else not at all. */
+static void test_hand_usable(void **state)
+{
+    (void)state;
+    const double at[3] = {0.2, 1.1, -0.3};
+    hol_hand_joints j;
+    hand_fixture(HOL_HAND_RIGHT, at, 30, 1, 0, &j);
+    assert_true(hol_hand_joints_usable(j.pos, HOL_HAND_LOCATED_ALL));
+    assert_true(hol_hand_joints_usable(j.pos, 0xffffffffu)); /* bits past 25: unread */
+    /* a missing joint: any one, the first and the last included */
+    for (int i = 0; i < HOL_HAND_JOINTS; i++)
+        assert_false(hol_hand_joints_usable(j.pos, HOL_HAND_LOCATED_ALL & ~(1u << i)));
+    assert_false(hol_hand_joints_usable(j.pos, 0));
+    /* one coordinate NaN or infinite, of the wrist or the little tip */
+    const float bad[3] = {NAN, INFINITY, -INFINITY};
+    for (int b = 0; b < 3; b++)
+        for (int k = 0; k < 3; k++) {
+            hol_hand_joints t = j;
+            t.pos[b == 0 ? HOL_JOINT_WRIST : HOL_HAND_JOINTS - 1][k] = bad[b];
+            assert_false(hol_hand_joints_usable(t.pos, HOL_HAND_LOCATED_ALL));
+        }
+    /* out of reach: 1e4 m or further either way; just under it is a hand */
+    hol_hand_joints t = j;
+    t.pos[HOL_JOINT_INDEX_TIP][1] = HOL_HAND_REACH_M;
+    assert_false(hol_hand_joints_usable(t.pos, HOL_HAND_LOCATED_ALL));
+    t.pos[HOL_JOINT_INDEX_TIP][1] = -HOL_HAND_REACH_M;
+    assert_false(hol_hand_joints_usable(t.pos, HOL_HAND_LOCATED_ALL));
+    t.pos[HOL_JOINT_INDEX_TIP][1] = nextafterf(HOL_HAND_REACH_M, 0);
+    assert_true(hol_hand_joints_usable(t.pos, HOL_HAND_LOCATED_ALL));
+    t.pos[HOL_JOINT_INDEX_TIP][1] = -nextafterf(HOL_HAND_REACH_M, 0);
+    assert_true(hol_hand_joints_usable(t.pos, HOL_HAND_LOCATED_ALL));
+}
+
 /* Held 1 s: one recentre at the record that reaches it, none after while
  * held, none for one palm or a pinch, again after a palm went down. */
 static void test_gesture_hold(void **state)
@@ -346,6 +381,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_body_from_input),
         cmocka_unit_test(test_palm_up),
+        cmocka_unit_test(test_hand_usable),
         cmocka_unit_test(test_flick),
         cmocka_unit_test(test_gesture_hold),
         cmocka_unit_test(test_hands_recentre),

@@ -2,8 +2,9 @@
  * hol_xr_hand.h). */
 #include "hol_xr_hand.h"
 
-#include <math.h>
 #include <string.h>
+
+#include "../../core/hol_body.h"
 
 int hol_xr_hand_joints(const hol_xr_calib *c, int active,
                        const float pos[HOL_XR_HAND_JOINTS][3],
@@ -14,24 +15,18 @@ int hol_xr_hand_joints(const hol_xr_calib *c, int active,
     memset(out, 0, sizeof *out);
     if (!active)
         return 0;
+    uint32_t located = 0;
+    for (int i = 0; i < HOL_HAND_JOINTS; i++)
+        located |= flags[i + 1] & HOL_XR_HAND_POS_VALID ? 1u << i : 0u;
+    if (!hol_hand_joints_usable(pos + 1, located)) /* the palm (0) dropped */
+        return 0;
     for (int i = 0; i < HOL_HAND_JOINTS; i++) {
-        const float *p = pos[i + 1];
-        if (!(flags[i + 1] & HOL_XR_HAND_POS_VALID))
-            break;
-        int finite = 1;
-        for (int k = 0; k < 3; k++)
-            finite &= isfinite(p[k]) && fabsf(p[k]) < 1e4f;
-        if (!finite)
-            break;
         hol_pose j;
-        hol_xr_to_room(c, p, one, &j);
+        hol_xr_to_room(c, pos[i + 1], one, &j);
         memcpy(out->pos[i], j.pos, sizeof j.pos);
         float r = radius[i + 1];
         out->radius[i] = r > 0 && r < 1 ? r : 0;
-        if (i == HOL_HAND_JOINTS - 1)
-            out->tracked = 1;
     }
-    if (!out->tracked)
-        memset(out, 0, sizeof *out);
-    return (int)out->tracked;
+    out->tracked = 1;
+    return 1;
 }

@@ -16,9 +16,11 @@
  *   reference space) go into room coordinates by the calibration
  *   (hol_xr_to_room, core/hol_input.h's frame), radii are kept (a radius
  *   not in (0, 1) m: 0, the renderer's default); `tracked` is 1 only when
- *   the hand is active and every one of the 25 has a valid position
- *   (HOL_XR_HAND_POS_VALID, XR_SPACE_LOCATION_POSITION_VALID_BIT, in flags[i + 1]) and finite coordinates under 1e4 m; else the
- *   whole record is zero (a hand half located is not drawn: its grip's
+ *   the hand is active and its 25 are usable (core/hol_body.h's
+ *   hol_hand_joints_usable: a joint is located when its flags[i + 1] has
+ *   HOL_XR_HAND_POS_VALID, XR_SPACE_LOCATION_POSITION_VALID_BIT; finite
+ *   stage coordinates under HOL_HAND_REACH_M, 1e4 m); else the whole
+ *   record is zero (a hand half located is not drawn: its grip's
  *   controller is, as for a hand the runtime lost).
  */
 #ifndef HOL_XR_HAND_H

@@ -2,7 +2,6 @@
  * hol_web_xr.h). */
 #include "hol_web_xr.h"
 
-#include <math.h>
 #include <string.h>
 
 void hol_web_xr_camera(const hol_xr_calib *c, const hol_web_xr_view *v, hol_camera *out)
@@ -97,14 +96,12 @@ static void hand_joints(const hol_web_xr_frame *f, hol_hand_joints raw[2])
         const hol_web_xr_pad *p = &f->pad[h];
         if (!(p->present > 0 && p->hand > 0 && p->joints_valid > 0))
             continue;
-        int finite = 1;
         for (int i = 0; i < HOL_HAND_JOINTS; i++) {
             memcpy(raw[h].pos[i], p->joint[i], sizeof raw[h].pos[i]);
             raw[h].radius[i] = p->joint[i][3] >= 0 && p->joint[i][3] < 1 ? p->joint[i][3] : 0;
-            for (int k = 0; k < 3; k++)
-                finite &= isfinite(p->joint[i][k]) && fabsf(p->joint[i][k]) < 1e4f;
         }
-        raw[h].tracked = (uint32_t)finite; /* a hand the browser lost: none */
+        /* a hand the browser lost: none (the glue's joints_valid: all located) */
+        raw[h].tracked = (uint32_t)hol_hand_joints_usable(raw[h].pos, HOL_HAND_LOCATED_ALL);
     }
 }
 

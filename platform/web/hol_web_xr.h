@@ -46,7 +46,8 @@
  * - A tracked hand's joints (the glue fills `joint` from XRHand's 25
  *   joint spaces, positions in the reference space and radii, and sets
  *   joints_valid when every one has a pose) go to the record in room
- *   coordinates (hol_input.joints: drawn, core/hol_body.h), and both
+ *   coordinates (hol_input.joints: drawn, core/hol_body.h) when usable
+ *   (hol_hand_joints_usable: all located, finite, within reach), and both
  *   hands' make the hands-only recentre: both palms up and open, held
  *   HOL_GESTURE_HOLD_S while focused (hol_gesture_step) press
  *   HOL_BTN_RECENTRE, which places the room from the head as the
