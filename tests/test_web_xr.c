@@ -91,6 +91,37 @@ static hol_web_xr_frame touch_frame(void)
     return f;
 }
 
+/* Hands alone (iwer's hand mode, a Quest without controllers): a zeroed
+ * state *st and touch_frame's focused frame and head, both sources hands
+ * (no gamepad layout, no grip, no joints). */
+static hol_web_xr_frame hands_frame(hol_web_xr_state *st)
+{
+    memset(st, 0, sizeof *st);
+    hol_web_xr_frame f = touch_frame();
+    for (int h = 0; h < 2; h++) {
+        f.pad[h].touch_layout = 0;
+        f.pad[h].hand = 1;
+    }
+    return f;
+}
+
+/* Both hands' joints as the glue writes them (reference space, the radius
+ * in [3], joints_valid): hand_fixture's, palms up or down, the wrists
+ * 1.2 m up, 0.3 m north, at x 0.85 and 1.15. */
+static void hands_joints(hol_web_xr_frame *f, int palm_up)
+{
+    for (int h = 0; h < 2; h++) {
+        double w[3] = {h ? 1.15 : 0.85, 1.2, -0.3};
+        hol_hand_joints j;
+        hand_fixture(h, w, 0, palm_up, 0, &j);
+        f->pad[h].joints_valid = 1;
+        for (int i = 0; i < HOL_HAND_JOINTS; i++) {
+            memcpy(f->pad[h].joint[i], j.pos[i], 3 * sizeof(float));
+            f->pad[h].joint[i][3] = j.radius[i];
+        }
+    }
+}
+
 static void test_buttons(void **state)
 {
     (void)state;
@@ -204,14 +235,7 @@ static void test_hands(void **state)
 {
     (void)state;
     hol_web_xr_state st;
-    memset(&st, 0, sizeof st);
-    hol_web_xr_frame f;
-    memset(&f, 0, sizeof f);
-    f.visibility = HOL_WEB_XR_VISIBLE;
-    f.head_valid = 1;
-    f.head_quat[3] = 1;
-    for (int h = 0; h < 2; h++)
-        f.pad[h].present = f.pad[h].hand = 1;
+    hol_web_xr_frame f = hands_frame(&st);
     hol_input in;
     double t = 1.0;
     hol_web_xr_input(&st, &f, t, &in);
@@ -281,15 +305,10 @@ static void test_hands_seated(void **state)
 {
     (void)state;
     hol_web_xr_state st;
-    memset(&st, 0, sizeof st);
-    hol_web_xr_frame f;
-    memset(&f, 0, sizeof f);
-    f.visibility = HOL_WEB_XR_VISIBLE;
-    f.head_valid = 1;
+    hol_web_xr_frame f = hands_frame(&st);
     f.head_pos[1] = 1.2f;
-    f.head_quat[3] = 1;
     for (int h = 0; h < 2; h++) {
-        f.pad[h].present = f.pad[h].hand = f.pad[h].grip_valid = 1;
+        f.pad[h].grip_valid = 1;
         f.pad[h].grip_pos[0] = h ? 0.2f : -0.2f;
         f.pad[h].grip_pos[1] = 1.0f;
         f.pad[h].grip_pos[2] = -0.3f;
@@ -340,27 +359,11 @@ static void test_hands_recentre(void **state)
 {
     (void)state;
     hol_web_xr_state st;
-    memset(&st, 0, sizeof st);
-    hol_web_xr_frame f;
-    memset(&f, 0, sizeof f);
-    f.visibility = HOL_WEB_XR_VISIBLE;
-    f.head_valid = 1;
+    hol_web_xr_frame f = hands_frame(&st);
     f.head_pos[0] = 1.0f;
-    f.head_pos[1] = 1.6f;
     f.head_quat[1] = (float)sin(M_PI / 4);
     f.head_quat[3] = (float)cos(M_PI / 4);
-    for (int h = 0; h < 2; h++) {
-        double w[3] = {h ? 1.15 : 0.85, 1.2, -0.3};
-        hol_hand_joints j;
-        hand_fixture(h, w, 0, 1, 0, &j);
-        f.pad[h].present = 1;
-        f.pad[h].hand = 1;
-        f.pad[h].joints_valid = 1;
-        for (int i = 0; i < HOL_HAND_JOINTS; i++) {
-            memcpy(f.pad[h].joint[i], j.pos[i], 3 * sizeof(float));
-            f.pad[h].joint[i][3] = j.radius[i];
-        }
-    }
+    hands_joints(&f, 1);
     hol_input in;
     hol_web_xr_input(&st, &f, 1.0, &in);
     assert_int_equal(in.device, HOL_DEVICE_WEBXR_HAND);
@@ -396,13 +399,7 @@ static void test_hands_recentre(void **state)
     assert_true(at >= HOL_GESTURE_HOLD_S && at < HOL_GESTURE_HOLD_S + 1.5 / 72);
     /* palms down: no press however long */
     memset(&st.gesture, 0, sizeof st.gesture);
-    for (int h = 0; h < 2; h++) {
-        double w[3] = {h ? 1.15 : 0.85, 1.2, -0.3};
-        hol_hand_joints j;
-        hand_fixture(h, w, 0, 0, 0, &j);
-        for (int i = 0; i < HOL_HAND_JOINTS; i++)
-            memcpy(f.pad[h].joint[i], j.pos[i], 3 * sizeof(float));
-    }
+    hands_joints(&f, 0);
     for (int k = 0; k < 144; k++) {
         hol_web_xr_input(&st, &f, 10 + k / 72.0, &in);
         assert_int_equal(in.pressed & HOL_BTN_RECENTRE, 0);
