@@ -128,6 +128,14 @@
 #define HOL_LIGHT_D0_M 1.0
 #define HOL_LIGHT_PHYS 0.5
 #define HOL_LIGHT_TONE_K 0.25 /* the lanterns' sum's white level */
+/* The sRGB encode of linear light c (docs/rendering.md#linear-light), by
+ * square roots: A sqrt(c) + B sqrt(sqrt(c)) + C c + D from c = 0.0031308
+ * up, 12.92 c below; within 0.1 of a code of the sRGB formula (a minimax
+ * fit; tests/test_render_linear.c checks it at every code) */
+#define HOL_SRGB_A 0.8337578
+#define HOL_SRGB_B 0.2981037
+#define HOL_SRGB_C -0.0553181
+#define HOL_SRGB_D -0.0769025
 #define HOL_LIGHT_MAX_FF 16
 #define HOL_LIGHT_MAX (HOL_RENDER_MAX_LANTERNS + 1 + HOL_LIGHT_MAX_FF)
 #define HOL_LIGHT_FF_STEPS 3

@@ -148,7 +148,11 @@ int hol_prog_preamble(const hol_prog_key *k, char *out, size_t n)
                        "#define HOL_LIGHT_PHYS " HOL__STR(HOL_LIGHT_PHYS) "\n"
                        "#define HOL_LIGHT_RADIUS_M " HOL__STR(HOL_LIGHT_RADIUS_M) "\n"
                        "#define HOL_LIGHT_HEIGHT_M " HOL__STR(HOL_LIGHT_HEIGHT_M) "\n"
-                       "#define HOL_LIGHT_TONE_K " HOL__STR(HOL_LIGHT_TONE_K) "\n",
+                       "#define HOL_LIGHT_TONE_K " HOL__STR(HOL_LIGHT_TONE_K) "\n"
+                       "#define HOL_SRGB_A " HOL__STR(HOL_SRGB_A) "\n"
+                       "#define HOL_SRGB_B " HOL__STR(HOL_SRGB_B) "\n"
+                       "#define HOL_SRGB_C " HOL__STR(HOL_SRGB_C) "\n"
+                       "#define HOL_SRGB_D " HOL__STR(HOL_SRGB_D) "\n",
                        lit, k->flat, k->wedge,
                        k->lighting == HOL_PROG_CYCLE ? 2 : k->lighting == HOL_LIGHT_NIGHT, k->fx, k->text != 0,
                        k->lamps != 0, m.spread, k->shadow != 0);
@@ -190,7 +194,7 @@ static void hol__uniforms(const hol_gl *gl, hol_prog *pg)
 
 int hol_prog_make(const hol_gl *gl, const hol_prog_key *key, hol_prog *pg)
 {
-    char pre[512];
+    char pre[768];
     if (hol_prog_preamble(key, pre, sizeof pre) < 0)
         return 1;
     GLuint vs = hol__shader(gl, GL_VERTEX_SHADER, pre, hol__glsl_scene_vert);

@@ -70,18 +70,36 @@ const vec4 v_U = vec4(0.0);
 #if HOL_NIGHT == 2
 uniform vec3 u_amb, u_sun;
 #elif HOL_NIGHT
-const vec3 u_amb = vec3(0.07, 0.08, 0.13), u_sun = vec3(0.05, 0.06, 0.10);
+const vec3 u_amb = vec3(0.0029, 0.0039, 0.0112), u_sun = vec3(0.0062, 0.0089, 0.0268);
 #else
-const vec3 u_amb = vec3(0.30, 0.26, 0.28), u_sun = vec3(0.28, 0.17, 0.11);
+const vec3 u_amb = vec3(0.0709, 0.0515, 0.0608), u_sun = vec3(0.2166, 0.0996, 0.0634);
 #endif
-const vec3 u_lcol = vec3(3.0, 2.25, 1.25), u_fcol = vec3(1.4, 2.0, 0.6);
+const vec3 u_lcol = vec3(1.70, 0.90, 0.25), u_fcol = vec3(1.4, 2.0, 0.6);
 #endif
 out vec4 o_col;
+// an authored (sRGB) colour out as it is: the GL's sRGB buffer (u_lin)
+// encodes what is written, so it takes the colour decoded
 vec4 hol_out(vec3 c) {
   if (u_lin == 0) return vec4(c, 1.0);
   c = clamp(c, 0.0, 1.0);
   return vec4(mix(c / 12.92, pow((c + 0.055) / 1.055, vec3(2.4)),
                   step(vec3(0.04045), c)), 1.0);
+}
+// linear light out (docs/rendering.md#linear-light): the sRGB buffer takes
+// it as it is; else encoded here by square roots (the sRGB curve within
+// 0.1 of a code: tests/test_render_linear.c), and in the lit programs
+// dithered by +-1/2 code, a hash of the pixel (no bands in the dark)
+vec4 hol_lin_out(vec3 c) {
+  if (u_lin == 1) return vec4(c, 1.0);
+  c = max(c, 0.0);
+  vec3 s = sqrt(c);
+  vec3 e = mix(12.92 * c, HOL_SRGB_A * s + HOL_SRGB_B * sqrt(s) + HOL_SRGB_C * c + HOL_SRGB_D,
+               step(vec3(0.0031308), c));
+#if HOL_LIT
+  e += fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2(0.06711056, 0.00583715)))) *
+       (1.0 / 255.0) - 0.5 / 255.0;
+#endif
+  return vec4(e, 1.0);
 }
 #if HOL_LIT
 // The tone map of the lanterns' sum l (render/hol_light.h,
@@ -217,10 +235,11 @@ void main() {
   n *= sgn;
   float d = max(dot(n, normalize(vec3(0.35, 0.85, 0.40))), 0.0);
 #if HOL_LIT == 0
-  vec3 c = v_col.rgb * (0.50 + 0.60 * d);
+// the sky's light, linear (docs/rendering.md#lighting)
+  vec3 c = v_col.rgb * (0.2176 + 0.9456 * d);
   float dist = length(toeye) * u_fogd;
   float f = exp(-dist * dist);
-  o_col = hol_out(mix(u_fog, c, f));
+  o_col = hol_lin_out(mix(u_fog, c, f));
 #else
   float lam = 0.0, lamf = 0.0, de2 = dot(toeye, toeye);
 #if HOL_LIT == 1
@@ -266,7 +285,7 @@ void main() {
   }
   vec3 c = v_col.rgb * (u_amb + u_sun * d + u_lcol * lam + u_fcol * lamf);
   // a lantern's glass: unlit
-  if (abs(v_col.a - 100.0 / 255.0) < 0.01) c = v_col.rgb * 1.2;
-  o_col = hol_out(mix(u_fog, c, f));
+  if (abs(v_col.a - 100.0 / 255.0) < 0.01) c = v_col.rgb * 1.5;
+  o_col = hol_lin_out(mix(u_fog, c, f));
 #endif
 }
