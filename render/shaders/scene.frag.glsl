@@ -74,7 +74,7 @@ const vec3 u_amb = vec3(0.0029, 0.0039, 0.0112), u_sun = vec3(0.0062, 0.0089, 0.
 #else
 const vec3 u_amb = vec3(0.0709, 0.0515, 0.0608), u_sun = vec3(0.2166, 0.0996, 0.0634);
 #endif
-const vec3 u_lcol = vec3(1.70, 0.90, 0.25), u_fcol = vec3(1.4, 2.0, 0.6);
+const vec3 u_lcol = vec3(1.70, 0.90, 0.25), u_fcol = vec3(0.22, 0.47, 0.035);
 #endif
 out vec4 o_col;
 // an authored (sRGB) colour out as it is: the GL's sRGB buffer (u_lin)
