@@ -172,8 +172,8 @@ static void hol__frame_lights(hol_render *r, const hol_frame_desc *f)
     r->gl.Uniform1f(r->pg->u_eyeh, (float)lf->eye_h);
     /* the sky's ambient and sun light (linear: scene.frag.glsl's), dusk's
      * and night's mixed */
-    static const float amb[2][3] = {{0.0709f, 0.0515f, 0.0608f}, {0.0029f, 0.0039f, 0.0112f}};
-    static const float sun[2][3] = {{0.2166f, 0.0996f, 0.0634f}, {0.0062f, 0.0089f, 0.0268f}};
+    static const float amb[2][3] = {{0.0980f, 0.0772f, 0.0873f}, {0.0129f, 0.0151f, 0.0276f}};
+    static const float sun[2][3] = {{0.2174f, 0.1039f, 0.0661f}, {0.0117f, 0.0151f, 0.0347f}};
     float u = hol__night(f), a[3], s[3];
     for (int i = 0; i < 3; i++) {
         a[i] = amb[0][i] * (1 - u) + amb[1][i] * u;

@@ -1807,9 +1807,9 @@ static double srgb_enc(double x)
  * linear light, the lanterns' colour, and the floor's sun term: its normal
  * (0, 1, 0) against the sun's direction (0.35, 0.85, 0.40) */
 static const double sky_rgb[2][3] = {{0.46, 0.36, 0.44}, {0.03, 0.04, 0.08}};
-static const double amb_lin[2][3] = {{0.0709, 0.0515, 0.0608}, {0.0029, 0.0039, 0.0112}};
-static const double sun_lin[2][3] = {{0.2166, 0.0996, 0.0634}, {0.0062, 0.0089, 0.0268}};
-static const double lantern_lin[3] = {1.70, 0.90, 0.25};
+static const double amb_lin[2][3] = {{0.0980, 0.0772, 0.0873}, {0.0129, 0.0151, 0.0276}};
+static const double sun_lin[2][3] = {{0.2174, 0.1039, 0.0661}, {0.0117, 0.0151, 0.0347}};
+static const double lantern_lin[3] = {1.76, 0.99, 0.34};
 
 /* The shaders' encode (render/hol_light.h's HOL_SRGB_*: square roots, the
  * sRGB formula's straight part below 0.0031308) against the formula at

@@ -70,21 +70,13 @@ const vec4 v_U = vec4(0.0);
 #if HOL_NIGHT == 2
 uniform vec3 u_amb, u_sun;
 #elif HOL_NIGHT
-const vec3 u_amb = vec3(0.0029, 0.0039, 0.0112), u_sun = vec3(0.0062, 0.0089, 0.0268);
+const vec3 u_amb = vec3(0.0129, 0.0151, 0.0276), u_sun = vec3(0.0117, 0.0151, 0.0347);
 #else
-const vec3 u_amb = vec3(0.0709, 0.0515, 0.0608), u_sun = vec3(0.2166, 0.0996, 0.0634);
+const vec3 u_amb = vec3(0.0980, 0.0772, 0.0873), u_sun = vec3(0.2174, 0.1039, 0.0661);
 #endif
-const vec3 u_lcol = vec3(1.70, 0.90, 0.25), u_fcol = vec3(0.22, 0.47, 0.035);
+const vec3 u_lcol = vec3(1.76, 0.99, 0.34), u_fcol = vec3(0.31, 0.51, 0.11);
 #endif
 out vec4 o_col;
-// an authored (sRGB) colour out as it is: the GL's sRGB buffer (u_lin)
-// encodes what is written, so it takes the colour decoded
-vec4 hol_out(vec3 c) {
-  if (u_lin == 0) return vec4(c, 1.0);
-  c = clamp(c, 0.0, 1.0);
-  return vec4(mix(c / 12.92, pow((c + 0.055) / 1.055, vec3(2.4)),
-                  step(vec3(0.04045), c)), 1.0);
-}
 // linear light out (docs/rendering.md#linear-light): the sRGB buffer takes
 // it as it is; else encoded here by square roots (the sRGB curve within
 // 0.1 of a code: tests/test_render_linear.c), and in the lit programs
@@ -208,7 +200,9 @@ void main() {
     o_col = vec4(0.0, 0.0, 0.0, 1.0);
     return;
   }
-  o_col = vec4(hol_out(v_col.rgb).rgb, ta);
+// an authored colour as it is (scene.vert.glsl decodes it for an sRGB
+// buffer)
+  o_col = vec4(v_col.rgb, ta);
   return;
 #endif
 #if HOL_WEDGE
@@ -224,7 +218,7 @@ void main() {
     return;
   }
   if (u_mode == 2) {
-    o_col = hol_out(v_col.rgb);
+    o_col = vec4(v_col.rgb, 1.0);
     return;
   }
   vec3 toeye = u_eye - v_wpos;
@@ -236,7 +230,7 @@ void main() {
   float d = max(dot(n, normalize(vec3(0.35, 0.85, 0.40))), 0.0);
 #if HOL_LIT == 0
 // the sky's light, linear (docs/rendering.md#lighting)
-  vec3 c = v_col.rgb * (0.2176 + 0.9456 * d);
+  vec3 c = v_col.rgb * (0.2458 + 0.9115 * d);
   float dist = length(toeye) * u_fogd;
   float f = exp(-dist * dist);
   o_col = hol_lin_out(mix(u_fog, c, f));
