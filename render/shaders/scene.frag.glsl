@@ -88,8 +88,10 @@ vec4 hol_lin_out(vec3 c) {
   vec3 e = mix(12.92 * c, HOL_SRGB_A * s + HOL_SRGB_B * sqrt(s) + HOL_SRGB_C * c + HOL_SRGB_D,
                step(vec3(0.0031308), c));
 #if HOL_LIT
-  e += fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2(0.06711056, 0.00583715)))) *
-       (1.0 / 255.0) - 0.5 / 255.0;
+// the R2 sequence's plane (one dot, one fract): spread evenly over every
+// few pixels
+  e += fract(dot(gl_FragCoord.xy, vec2(0.7548776662, 0.5698402910))) * (1.0 / 255.0) -
+       0.5 / 255.0;
 #endif
   return vec4(e, 1.0);
 }
