@@ -49,6 +49,11 @@
  * - test_night_darker_than_day: with the lanterns' sum tone-mapped
  *   (docs/rendering.md#tone-map; the model's tone()), dusk and night
  *   views among lit trunks are darker than day.
+ * - test_srgb_encode, test_linear_light, test_night_no_bands: linear
+ *   light (docs/rendering.md#linear-light): the shaders' encode within a
+ *   tenth of a code of the sRGB formula; lanterns added in linear light
+ *   (each dusk floor pixel against the same pixel without lanterns, the
+ *   model's light and fog); no flat boxes in night's dark gradients.
  */
 #include <math.h>
 #include <setjmp.h>

@@ -64,7 +64,8 @@ in vec4 v_U;
 const vec4 v_U = vec4(0.0);
 #endif
 #endif
-// the sky (docs/rendering.md#lighting): ambient, sun and lantern colours
+// the sky (docs/rendering.md#lighting): ambient, sun and lantern colours,
+// linear light (calibrated through the sRGB curve: #linear-light)
 // HOL_NIGHT 2: a sky between dusk and night (a lighting cycle), the
 // frame's mix of the two (render/hol_render_gpu.c's hol__frame_lights)
 #if HOL_NIGHT == 2
@@ -79,7 +80,7 @@ const vec3 u_lcol = vec3(1.76, 0.99, 0.34), u_fcol = vec3(0.31, 0.51, 0.11);
 out vec4 o_col;
 // linear light out (docs/rendering.md#linear-light): the sRGB buffer takes
 // it as it is; else encoded here by square roots (the sRGB curve within
-// 0.1 of a code: tests/test_render_linear.c), and in the lit programs
+// 0.1 of a code: tests/test_render_light.c), and in the lit programs
 // dithered by +-1/2 code, a hash of the pixel (no bands in the dark)
 vec4 hol_lin_out(vec3 c) {
   if (u_lin == 1) return vec4(c, 1.0);
