@@ -83,7 +83,7 @@ out vec4 o_col;
 // linear light out (docs/rendering.md#linear-light): the sRGB buffer takes
 // it as it is; else encoded here by square roots (the sRGB curve within
 // 0.1 of a code: tests/test_render_light.c), and in the lit programs
-// dithered by +-1/2 code, a hash of the pixel (no bands in the dark)
+// dithered by +-1/2 code, a pattern of the pixel (no bands in the dark)
 vec4 hol_lin_out(vec3 c) {
   if (u_lin == 1) return vec4(c, 1.0);
   c = max(c, 0.0);
