@@ -35,8 +35,9 @@
  *   F(d) (0.3 + 0.7 max(n_y, 0) max(L - h, 0) / d); the shader sums the
  *   tile's lights (render/hol_render_tiles.c), and maps the lanterns'
  *   sum S by the tone curve T(S) = S K / (K + S) (Reinhard's, white level
- *   K = HOL_LIGHT_TONE_K = 1/4: the lanterns' colour times K is (0.75,
- *   0.56, 0.31), so they light a surface to at most 3/4 of its colour).
+ *   K = HOL_LIGHT_TONE_K = 1/4: the lanterns' colour times K is (0.44,
+ *   0.25, 0.085) in linear light, so they light a surface to at most about
+ *   3/4 of its sRGB value in red).
  *   It gets them in the tile's own
  *   frame (the renderer applies the inverse of hol_light_tile's frame), so
  *   for the fragment's Klein point K, cosh x = (l_z - K.l_xy) /
@@ -128,12 +129,21 @@
 #define HOL_LIGHT_D0_M 1.0
 #define HOL_LIGHT_PHYS 0.5
 #define HOL_LIGHT_TONE_K 0.25 /* the lanterns' sum's white level */
+/* The sRGB encode of linear light c (docs/rendering.md#linear-light), by
+ * square roots: A sqrt(c) + B sqrt(sqrt(c)) + C c + D from c = 0.0031308
+ * up, 12.92 c below; within 0.1 of a code of the sRGB formula (a minimax
+ * fit; tests/test_render_light.c checks it at every code) */
+#define HOL_SRGB_A 0.8337578
+#define HOL_SRGB_B 0.2981037
+#define HOL_SRGB_C -0.0553181
+#define HOL_SRGB_D -0.0769025
 #define HOL_LIGHT_MAX_FF 16
 #define HOL_LIGHT_MAX (HOL_RENDER_MAX_LANTERNS + 1 + HOL_LIGHT_MAX_FF)
 #define HOL_LIGHT_FF_STEPS 3
 #define HOL_LIGHT_FF_WEIGHT 0.15
 /* A firefly's sprite: an octahedron of this radius (metres) at its place,
- * drawn unlit (as a lantern's glass: 1.2 times this colour) and fogged;
+ * drawn unlit (as a lantern's glass: 1.5 times this colour in linear
+ * light) and fogged;
  * its luma stays under 200, the glass's (make xr-test finds the glass so) */
 #define HOL_FF_SPRITE_M 0.04f
 #define HOL_FF_SPRITE_RGB 150, 190, 80

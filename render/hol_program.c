@@ -148,7 +148,11 @@ int hol_prog_preamble(const hol_prog_key *k, char *out, size_t n)
                        "#define HOL_LIGHT_PHYS " HOL__STR(HOL_LIGHT_PHYS) "\n"
                        "#define HOL_LIGHT_RADIUS_M " HOL__STR(HOL_LIGHT_RADIUS_M) "\n"
                        "#define HOL_LIGHT_HEIGHT_M " HOL__STR(HOL_LIGHT_HEIGHT_M) "\n"
-                       "#define HOL_LIGHT_TONE_K " HOL__STR(HOL_LIGHT_TONE_K) "\n",
+                       "#define HOL_LIGHT_TONE_K " HOL__STR(HOL_LIGHT_TONE_K) "\n"
+                       "#define HOL_SRGB_A " HOL__STR(HOL_SRGB_A) "\n"
+                       "#define HOL_SRGB_B " HOL__STR(HOL_SRGB_B) "\n"
+                       "#define HOL_SRGB_C " HOL__STR(HOL_SRGB_C) "\n"
+                       "#define HOL_SRGB_D " HOL__STR(HOL_SRGB_D) "\n",
                        lit, k->flat, k->wedge,
                        k->lighting == HOL_PROG_CYCLE ? 2 : k->lighting == HOL_LIGHT_NIGHT, k->fx, k->text != 0,
                        k->lamps != 0, m.spread, k->shadow != 0);
@@ -176,12 +180,12 @@ static void hol__uniforms(const hol_gl *gl, hol_prog *pg)
                                         "u_fog", "u_fogd", "u_lin", "u_wedge", "u_wmode",
                                         "u_light", "u_klein", "u_mpu2", "u_tl", "u_eyeh",
                                         "u_lonly", "u_tx", "u_shr", "u_shm", "u_atlas", "u_amb",
-                                        "u_sun"};
+                                        "u_sun", "u_org"};
     GLint *loc[] = {&pg->u_vp, &pg->u_model, &pg->u_mode, &pg->u_id, &pg->u_eye,
                     &pg->u_fog, &pg->u_fogd, &pg->u_lin, &pg->u_wedge, &pg->u_wmode,
                     &pg->u_light, &pg->u_klein, &pg->u_mpu2, &pg->u_tl, &pg->u_eyeh,
                     &pg->u_lonly, &pg->u_tx, &pg->u_shr, &pg->u_shm, &pg->u_atlas, &pg->u_amb,
-                    &pg->u_sun};
+                    &pg->u_sun, &pg->u_org};
     _Static_assert(sizeof names / sizeof names[0] == sizeof loc / sizeof loc[0],
                    "a name per uniform");
     for (size_t i = 0; i < sizeof loc / sizeof loc[0]; i++)
@@ -190,7 +194,7 @@ static void hol__uniforms(const hol_gl *gl, hol_prog *pg)
 
 int hol_prog_make(const hol_gl *gl, const hol_prog_key *key, hol_prog *pg)
 {
-    char pre[512];
+    char pre[768];
     if (hol_prog_preamble(key, pre, sizeof pre) < 0)
         return 1;
     GLuint vs = hol__shader(gl, GL_VERTEX_SHADER, pre, hol__glsl_scene_vert);

@@ -81,13 +81,19 @@ void hol__upload_scratch(hol_render *r, uint32_t vbase, uint32_t ibase)
     r->uploaded += (long)(m->nv * sizeof(hol_vertex) + m->ni * sizeof(uint32_t));
 }
 
+/* An sRGB-authored colour's linear light (the sRGB formula). */
+static float hol__srgb_linear(float c)
+{
+    return c <= 0.04045f ? c / 12.92f : powf((c + 0.055f) / 1.055f, 2.4f);
+}
+
 /* glClearColor of an sRGB-authored colour: with desc.srgb the GL encodes
  * what is written, so the colour is given linear (as the shader does). */
 static void hol__clear_colour(hol_render *r, float red, float green, float blue)
 {
     float c[3] = {red, green, blue};
     for (int k = 0; k < 3 && r->desc.srgb; k++)
-        c[k] = c[k] <= 0.04045f ? c[k] / 12.92f : powf((c[k] + 0.055f) / 1.055f, 2.4f);
+        c[k] = hol__srgb_linear(c[k]);
     r->gl.ClearColor(c[0], c[1], c[2], 1);
 }
 
@@ -164,9 +170,10 @@ static void hol__frame_lights(hol_render *r, const hol_frame_desc *f)
     r->gl.Uniform1f(r->pg->u_klein, (float)lf->klein);
     r->gl.Uniform1f(r->pg->u_mpu2, (float)(lf->metres_per_unit * lf->metres_per_unit));
     r->gl.Uniform1f(r->pg->u_eyeh, (float)lf->eye_h);
-    /* the sky's ambient and sun light, dusk's and night's mixed */
-    static const float amb[2][3] = {{0.30f, 0.26f, 0.28f}, {0.07f, 0.08f, 0.13f}};
-    static const float sun[2][3] = {{0.28f, 0.17f, 0.11f}, {0.05f, 0.06f, 0.10f}};
+    /* the sky's ambient and sun light (linear: scene.frag.glsl's), dusk's
+     * and night's mixed */
+    static const float amb[2][3] = {{0.0980f, 0.0772f, 0.0873f}, {0.0129f, 0.0151f, 0.0276f}};
+    static const float sun[2][3] = {{0.2174f, 0.1039f, 0.0661f}, {0.0117f, 0.0151f, 0.0347f}};
     float u = hol__night(f), a[3], s[3];
     for (int i = 0; i < 3; i++) {
         a[i] = amb[0][i] * (1 - u) + amb[1][i] * u;
@@ -375,9 +382,14 @@ void hol__frame_begin(hol_render *r, const hol_frame_desc *f, float vp[16])
         r->gl.UseProgram(r->pg->prog);
         r->gl.Uniform3f(r->pg->u_eye, (float)r->view_at[0], (float)r->view_at[1],
                         (float)r->view_at[2]);
-        r->gl.Uniform3f(r->pg->u_fog, sky[0], sky[1], sky[2]);
+        /* the fog: the sky's colour in linear light, as the light it mixes */
+        r->gl.Uniform3f(r->pg->u_fog, hol__srgb_linear(sky[0]), hol__srgb_linear(sky[1]),
+                        hol__srgb_linear(sky[2]));
         r->gl.Uniform1f(r->pg->u_fogd, fogd);
         r->gl.Uniform1i(r->pg->u_lin, r->desc.srgb != 0);
+        /* the dither's pattern from the viewport's corner: an eye's
+         * picture is the same wherever its viewport lies */
+        r->gl.Uniform2f(r->pg->u_org, (float)f->vp_x, (float)f->vp_y);
         r->gl.Uniform1i(r->pg->u_wmode, 0);
         r->gl.Uniform1i(r->pg->u_shm, 1); /* the shadow masks' unit */
         int room = uses[i] == HOL__USE_ROOM || uses[i] == HOL__USE_BACK;

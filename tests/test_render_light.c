@@ -49,6 +49,11 @@
  * - test_night_darker_than_day: with the lanterns' sum tone-mapped
  *   (docs/rendering.md#tone-map; the model's tone()), dusk and night
  *   views among lit trunks are darker than day.
+ * - test_srgb_encode, test_linear_light, test_night_no_bands: linear
+ *   light (docs/rendering.md#linear-light): the shaders' encode within a
+ *   tenth of a code of the sRGB formula; lanterns added in linear light
+ *   (each dusk floor pixel against the same pixel without lanterns, the
+ *   model's light and fog); no flat boxes in night's dark gradients.
  */
 #include <math.h>
 #include <setjmp.h>
@@ -1791,6 +1796,206 @@ static void test_night_darker_than_day(void **state)
     }
 }
 
+/* Linear light (issue 38, finding 6; docs/rendering.md#linear-light): the
+ * sRGB formula both ways, the sky's documented colours and light. */
+static double srgb_dec(double c)
+{
+    return c <= 0.04045 ? c / 12.92 : pow((c + 0.055) / 1.055, 2.4);
+}
+
+static double srgb_enc(double x)
+{
+    return x <= 0.0031308 ? 12.92 * x : 1.055 * pow(x, 1 / 2.4) - 0.055;
+}
+
+/* the sky (fog) colours of dusk and night, the ambient and sun light in
+ * linear light, the lanterns' colour, and the floor's sun term: its normal
+ * (0, 1, 0) against the sun's direction (0.35, 0.85, 0.40) */
+static const double sky_rgb[2][3] = {{0.46, 0.36, 0.44}, {0.03, 0.04, 0.08}};
+static const double amb_lin[2][3] = {{0.0980, 0.0772, 0.0873}, {0.0129, 0.0151, 0.0276}};
+static const double sun_lin[2][3] = {{0.2174, 0.1039, 0.0661}, {0.0117, 0.0151, 0.0347}};
+static const double lantern_lin[3] = {1.76, 0.99, 0.34};
+
+/* The shaders' encode (render/hol_light.h's HOL_SRGB_*: square roots, the
+ * sRGB formula's straight part below 0.0031308) against the formula at
+ * the linear value of every code and of every midpoint between codes:
+ * within 0.1 of a code, so it rounds to the formula's code. */
+static void test_srgb_encode(void **state)
+{
+    (void)state;
+    double worst = 0;
+    for (int k = 0; k <= 510; k++) {
+        double x = srgb_dec(k / 510.0), r = sqrt(x);
+        double e = x < 0.0031308 ? 12.92 * x
+                                 : HOL_SRGB_A * r + HOL_SRGB_B * sqrt(r) + HOL_SRGB_C * x +
+                                       HOL_SRGB_D;
+        worst = fmax(worst, fabs(e - srgb_enc(x)) * 255);
+    }
+    printf("sRGB encode: worst %.3f of a code over 511 values\n", worst);
+    assert_true(worst < 0.1);
+}
+
+/* One channel's pixel in linear light predicted from the same pixel
+ * without lanterns (p0): the floor's albedo a and the fog f (the model's)
+ * give dec(p0) = f a K + (1 - f) F, K the sky's light, F its colour; the
+ * lanterns add f a Lc t (t the model's tone-mapped sum): the albedo is
+ * taken from p0, so it needs no model of the floor's colours. */
+static double lit_predict(int night, int ch, double p0, double f, double t)
+{
+    double kf = 0.85 / sqrt(0.35 * 0.35 + 0.85 * 0.85 + 0.40 * 0.40);
+    double k = amb_lin[night][ch] + sun_lin[night][ch] * kf;
+    double fog = (1 - f) * srgb_dec(sky_rgb[night][ch]);
+    double lin = srgb_dec(p0 / 255.0);
+    return 255 * srgb_enc(lin + (lin - fog) * lantern_lin[ch] * t / k);
+}
+
+/* Lanterns add light in linear light, encoded to sRGB at the end: every
+ * dusk case's floor pixel with its lanterns against the same pixel
+ * without them, by lit_predict, within TOL (the dither's half code on
+ * each). Shadow edges and cell edges are left out (the raster). */
+static void test_linear_light(void **state)
+{
+    (void)state;
+    static uint8_t p1[W * H * 4], p0[W * H * 4];
+    int total = 0;
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        const light_case *c = &cases[k];
+        if (!c->dusk)
+            continue;
+        scene s;
+        make_scene(c, &s);
+        render(&s, HOL_RENDER_BARE, p1);
+        s.f.nlanterns = 0;
+        render(&s, HOL_RENDER_BARE, p0);
+        int checked = 0, lit = 0, bad = 0;
+        double worst = 0;
+        for (int y = 0; y < H; y++)
+            for (int x = 0; x < W; x++) {
+                double want[3];
+                if (!model_pixel(c, &s, x, y, want) || fabs(want[0] - want[2]) > 1e-3 ||
+                    on_cell_edge(c, x, y))
+                    continue;
+                const uint8_t *a = p1 + 4 * (y * W + x), *b = p0 + 4 * (y * W + x);
+                for (int ch = 0; ch < 3; ch++) {
+                    double e = fabs(a[ch] - lit_predict(0, ch, b[ch], want[1], want[0]));
+                    worst = fmax(worst, e);
+                    bad += e > TOL;
+                }
+                checked++;
+                lit += want[0] > 0.05;
+            }
+        printf("linear light case %zu ({4,%d}): %d floor pixels, %d lit, %d channels off, "
+               "worst %.1f/255\n", k, c->q, checked, lit, bad, worst);
+        assert_true(checked > W * H / 16 && lit > 200);
+        assert_int_equal(bad, 0);
+        total++;
+    }
+    assert_true(total >= 3);
+}
+
+/* The dark floor of a night case's view without lanterns: 4 x 4 boxes of
+ * floor (no cell edge, not the night sky's clear colour (8, 10, 20): no
+ * tile drawn there) whose pixels all lie under code 64, in a smooth
+ * gradient (the means of the 3 x 3 boxes round it within 2 codes in every
+ * channel: no edge of water or shadow). A box is flat when its 16 pixels
+ * have one colour: a band. */
+typedef struct band_count {
+    int boxes, flat;
+} band_count;
+
+#define BOX 4
+#define BW (W / BOX)
+#define BH (H / BOX)
+
+static void box_means(const light_case *c, const uint8_t *px, double mean[BH][BW][3],
+                      int ok[BH][BW], int flat[BH][BW])
+{
+    for (int by = 0; by < BH; by++)
+        for (int bx = 0; bx < BW; bx++) {
+            int good = 1, same = 1;
+            double sum[3] = {0, 0, 0};
+            for (int y = by * BOX; y < by * BOX + BOX; y++)
+                for (int x = bx * BOX; x < bx * BOX + BOX; x++) {
+                    double p[2];
+                    const uint8_t *q = px + 4 * (y * W + x), *q0 = px + 4 * (by * BOX * W + bx * BOX);
+                    good &= floor_point(c, x + 0.5, y + 0.5, p) && !on_cell_edge(c, x, y);
+                    good &= q[0] != 8 || q[1] != 10 || q[2] != 20;
+                    for (int ch = 0; ch < 3; ch++) {
+                        good &= q[ch] < 64;
+                        same &= q[ch] == q0[ch];
+                        sum[ch] += q[ch];
+                    }
+                }
+            ok[by][bx] = good;
+            flat[by][bx] = good && same;
+            for (int ch = 0; ch < 3; ch++)
+                mean[by][bx][ch] = sum[ch] / (BOX * BOX);
+        }
+}
+
+/* Is box (bx, by) in a smooth dark gradient (all 3 x 3 boxes round it
+ * dark floor, their means within 2 codes)? */
+static int box_smooth(double mean[BH][BW][3], int ok[BH][BW], int bx, int by)
+{
+    for (int ch = 0; ch < 3; ch++) {
+        double lo = 255, hi = 0;
+        for (int j = -1; j <= 1; j++)
+            for (int i = -1; i <= 1; i++) {
+                if (!ok[by + j][bx + i])
+                    return 0;
+                lo = fmin(lo, mean[by + j][bx + i][ch]);
+                hi = fmax(hi, mean[by + j][bx + i][ch]);
+            }
+        if (hi - lo >= 2)
+            return 0;
+    }
+    return 1;
+}
+
+static void band_count_view(const light_case *c, const uint8_t *px, band_count *bc)
+{
+    static double mean[BH][BW][3];
+    static int ok[BH][BW], flat[BH][BW];
+    box_means(c, px, mean, ok, flat);
+    for (int by = 1; by < BH - 1; by++)
+        for (int bx = 1; bx < BW - 1; bx++)
+            if (box_smooth(mean, ok, bx, by)) {
+                bc->boxes++;
+                bc->flat += flat[by][bx];
+            }
+}
+
+/* Night gradients do not band: over the dark floor of every night case
+ * (no lanterns: the fog's and the floor's smooth gradients, codes under
+ * 64) at most 1 in 20 boxes is flat. Quantised without dither a gradient
+ * under a code across a box leaves it one colour (main before linear
+ * light: 102 of 346); dithered by +-1/2 code, a box is flat only where
+ * each channel's value lies within a few hundredths of a whole code. */
+static void test_night_no_bands(void **state)
+{
+    (void)state;
+    static uint8_t px[W * H * 4];
+    band_count bc = {0, 0};
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        const light_case *c = &cases[k];
+        if (c->dusk)
+            continue;
+        scene s;
+        make_scene(c, &s);
+        s.f.nlanterns = 0;
+        render(&s, HOL_RENDER_BARE, px);
+        band_count one = {0, 0};
+        band_count_view(c, px, &one);
+        printf("night case %zu ({4,%d}): %d dark boxes, %d flat\n", k, c->q, one.boxes,
+               one.flat);
+        bc.boxes += one.boxes;
+        bc.flat += one.flat;
+    }
+    printf("night: %d dark boxes in smooth gradients, %d flat\n", bc.boxes, bc.flat);
+    assert_true(bc.boxes > 100);
+    assert_true(bc.flat * 20 <= bc.boxes);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -1810,6 +2015,9 @@ int main(void)
         cmocka_unit_test(test_firefly_sprites),
         cmocka_unit_test(test_trunk_lambert),
         cmocka_unit_test(test_night_darker_than_day),
+        cmocka_unit_test(test_srgb_encode),
+        cmocka_unit_test(test_linear_light),
+        cmocka_unit_test(test_night_no_bands),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }

@@ -110,7 +110,7 @@ static void test_every_key(void **state)
 static void test_preamble(void **state)
 {
     (void)state;
-    char pre[512];
+    char pre[768];
     hol_prog_key k = {HOL_LIGHT_NIGHT, 0, 0, 1, HOL_PROG_FX_FIREFLIES, 1, 0, 0};
     int n = hol_prog_preamble(&k, pre, sizeof pre);
     assert_true(n > 0 && (size_t)n == strlen(pre));

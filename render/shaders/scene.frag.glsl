@@ -29,6 +29,8 @@ uniform vec3 u_eye;
 uniform vec3 u_fog;
 uniform float u_fogd;
 uniform int u_lin;
+// the viewport's corner in the window (the dither's origin)
+uniform vec2 u_org;
 uniform vec4 u_wedge;
 uniform int u_wmode;
 #if HOL_TEXT
@@ -64,24 +66,37 @@ in vec4 v_U;
 const vec4 v_U = vec4(0.0);
 #endif
 #endif
-// the sky (docs/rendering.md#lighting): ambient, sun and lantern colours
+// the sky (docs/rendering.md#lighting): ambient, sun and lantern colours,
+// linear light (calibrated through the sRGB curve: #linear-light)
 // HOL_NIGHT 2: a sky between dusk and night (a lighting cycle), the
 // frame's mix of the two (render/hol_render_gpu.c's hol__frame_lights)
 #if HOL_NIGHT == 2
 uniform vec3 u_amb, u_sun;
 #elif HOL_NIGHT
-const vec3 u_amb = vec3(0.07, 0.08, 0.13), u_sun = vec3(0.05, 0.06, 0.10);
+const vec3 u_amb = vec3(0.0129, 0.0151, 0.0276), u_sun = vec3(0.0117, 0.0151, 0.0347);
 #else
-const vec3 u_amb = vec3(0.30, 0.26, 0.28), u_sun = vec3(0.28, 0.17, 0.11);
+const vec3 u_amb = vec3(0.0980, 0.0772, 0.0873), u_sun = vec3(0.2174, 0.1039, 0.0661);
 #endif
-const vec3 u_lcol = vec3(3.0, 2.25, 1.25), u_fcol = vec3(1.4, 2.0, 0.6);
+const vec3 u_lcol = vec3(1.76, 0.99, 0.34), u_fcol = vec3(0.31, 0.51, 0.11);
 #endif
 out vec4 o_col;
-vec4 hol_out(vec3 c) {
-  if (u_lin == 0) return vec4(c, 1.0);
-  c = clamp(c, 0.0, 1.0);
-  return vec4(mix(c / 12.92, pow((c + 0.055) / 1.055, vec3(2.4)),
-                  step(vec3(0.04045), c)), 1.0);
+// linear light out (docs/rendering.md#linear-light): the sRGB buffer takes
+// it as it is; else encoded here by square roots (the sRGB curve within
+// 0.1 of a code: tests/test_render_light.c), and in the lit programs
+// dithered by +-1/2 code, a pattern of the pixel (no bands in the dark)
+vec4 hol_lin_out(vec3 c) {
+  if (u_lin == 1) return vec4(c, 1.0);
+  c = max(c, 0.0);
+  vec3 s = sqrt(c);
+  vec3 e = mix(12.92 * c, HOL_SRGB_A * s + HOL_SRGB_B * sqrt(s) + HOL_SRGB_C * c + HOL_SRGB_D,
+               step(vec3(0.0031308), c));
+#if HOL_LIT
+// the R2 sequence's plane over the pixel in its viewport (one dot, one
+// fract): spread evenly over every few pixels
+  e += fract(dot(gl_FragCoord.xy - u_org, vec2(0.7548776662, 0.5698402910))) * (1.0 / 255.0) -
+       0.5 / 255.0;
+#endif
+  return vec4(e, 1.0);
 }
 #if HOL_LIT
 // The tone map of the lanterns' sum l (render/hol_light.h,
@@ -190,7 +205,9 @@ void main() {
     o_col = vec4(0.0, 0.0, 0.0, 1.0);
     return;
   }
-  o_col = vec4(hol_out(v_col.rgb).rgb, ta);
+// an authored colour as it is (scene.vert.glsl decodes it for an sRGB
+// buffer)
+  o_col = vec4(v_col.rgb, ta);
   return;
 #endif
 #if HOL_WEDGE
@@ -206,7 +223,7 @@ void main() {
     return;
   }
   if (u_mode == 2) {
-    o_col = hol_out(v_col.rgb);
+    o_col = vec4(v_col.rgb, 1.0);
     return;
   }
   vec3 toeye = u_eye - v_wpos;
@@ -217,10 +234,11 @@ void main() {
   n *= sgn;
   float d = max(dot(n, normalize(vec3(0.35, 0.85, 0.40))), 0.0);
 #if HOL_LIT == 0
-  vec3 c = v_col.rgb * (0.50 + 0.60 * d);
+// the sky's light, linear (docs/rendering.md#lighting)
+  vec3 c = v_col.rgb * (0.2458 + 0.9115 * d);
   float dist = length(toeye) * u_fogd;
   float f = exp(-dist * dist);
-  o_col = hol_out(mix(u_fog, c, f));
+  o_col = hol_lin_out(mix(u_fog, c, f));
 #else
   float lam = 0.0, lamf = 0.0, de2 = dot(toeye, toeye);
 #if HOL_LIT == 1
@@ -266,7 +284,7 @@ void main() {
   }
   vec3 c = v_col.rgb * (u_amb + u_sun * d + u_lcol * lam + u_fcol * lamf);
   // a lantern's glass: unlit
-  if (abs(v_col.a - 100.0 / 255.0) < 0.01) c = v_col.rgb * 1.2;
-  o_col = hol_out(mix(u_fog, c, f));
+  if (abs(v_col.a - 100.0 / 255.0) < 0.01) c = v_col.rgb * 1.5;
+  o_col = hol_lin_out(mix(u_fog, c, f));
 #endif
 }

@@ -10,6 +10,9 @@ out vec2 v_uv;
 #endif
 uniform mat4 u_vp;
 uniform mat4 u_model;
+// as scene.frag.glsl's (a uniform of both stages keeps one precision)
+uniform mediump int u_mode;
+uniform mediump int u_lin;
 out vec3 v_nrm;
 out vec4 v_col;
 out vec3 v_wpos;
@@ -104,6 +107,16 @@ void main() {
 #if HOL_LIT == 2 && HOL_LAMPS
   v_rl = hol_room_light(w.xyz, v_nrm);
 #endif
-  v_col = a_col;
+// the colours are authored in sRGB: the lit mode (0) takes them to linear
+// light here, once a vertex (docs/rendering.md#linear-light); the flat
+// mode and the overlays' program keep them as authored, but for an sRGB
+// buffer (u_lin), which encodes what is written: it takes them decoded
+  vec3 cl = mix(a_col.rgb * (1.0 / 12.92), pow((a_col.rgb + 0.055) * (1.0 / 1.055), vec3(2.4)),
+                step(vec3(0.04045), a_col.rgb));
+#if HOL_TEXT
+  v_col = vec4(u_lin == 1 ? cl : a_col.rgb, a_col.a);
+#else
+  v_col = vec4(u_mode == 0 || u_lin == 1 ? cl : a_col.rgb, a_col.a);
+#endif
   gl_Position = u_vp * w;
 }
