@@ -121,16 +121,17 @@ static hol_err hol__queue_room(hol_render *r, const hol_frame_desc *f, double ce
         return HOL_OK;
     }
     /* dusk and night: the trees and hedges lantern-lit (per vertex at
-     * knot heights: scene.vert.glsl), the backdrop and outer ground
-     * between them on the cheaper program, in the day's order */
+     * knot heights: scene.vert.glsl), then the backdrop and outer ground
+     * on the cheaper program, behind the hedges: the depth test spares
+     * llvmpipe shading what the hedges hide */
     const uint32_t cut[3][2] = {{0, r->room_back[0]},
-                                {r->room_back[0], r->room_back[1]},
-                                {r->room_back[1], r->room_nidx}};
+                                {r->room_back[1], r->room_nidx},
+                                {r->room_back[0], r->room_back[1]}};
     for (int k = 0; k < 3; k++) {
         hol__item *it = hol__queue_push(r, HOL__PASS_ROOM, cut[k][0], cut[k][1] - cut[k][0]);
         if (it) {
             it->key = 1u << 24 | (uint32_t)k;
-            it->lamps = k != 1;
+            it->lamps = k != 2;
         }
     }
     return HOL_OK;
