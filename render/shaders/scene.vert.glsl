@@ -34,11 +34,6 @@ uniform float u_mpu2;
 uniform vec3 u_eye;
 out vec4 v_rl;
 out float v_rk;
-// A point's Klein point k in the frame of each lantern's cell (its centre
-// the light's foot): cosh x = g = 1 / sqrt(1 - |k|^2), c^2 = 2 g - 2
-// (flat: c^2 = |k|^2, x = c); the floor direction to the light -k / |k|.
-// Then the tiles' law (falloff.glsl, hol_lambert): every room lantern
-// hangs at HOL_LIGHT_HEIGHT_M; the normal turned to the eye.
 // At height y over the vertex's floor point: the distance d^2, the fade w,
 // the Lambert term (the normal's vertical part, then h the horizontal
 // part times x) and the falloff, summed over the lanterns.
@@ -49,6 +44,12 @@ float hol_room_at(float y, vec4 x, vec4 q, vec4 h, float nup) {
   vec4 lb = 0.3 + 0.7 * max((nup * max(dh, 0.0) + h) * inversesqrt(max(d2, 1e-8)), 0.0);
   return dot(w * w * q / (1.0 + d2 * (1.0 / (HOL_LIGHT_D0_M * HOL_LIGHT_D0_M))) * lb, u_tl[3]);
 }
+// A point's Klein point k in the frame of each lantern's cell (its centre
+// the light's foot): cosh x = g = 1 / sqrt(1 - |k|^2), c^2 = 2 g - 2
+// (flat: c^2 = |k|^2, x = c); the floor direction to the light -k / |k|.
+// Then the tiles' law (falloff.glsl, hol_lambert): every room lantern
+// hangs at HOL_LIGHT_HEIGHT_M; the normal turned to the eye; the light at
+// each knot height into v_rl and v_rk.
 void hol_room_light(vec3 p, vec3 n) {
   float fl = u_light == 3 ? 1.0 : 0.0;
   vec4 kx = (p.x - u_tl[0]) * u_klein, kz = (u_tl[1] - p.z) * u_klein;
