@@ -77,15 +77,4 @@ void hol_mesh_frustum(hol_mesh *m, int n, float r0, float y0, float r1, float y1
 void hol_mesh_blob(hol_mesh *m, const float c[3], float sx, float sy, float sz,
                    const uint8_t rgb[3]);
 
-/* Append to m the triangles of its own index range [first, end) cut by
- * the n planes y = ys[k] (ascending): each triangle's part between two
- * planes (or below the first, above the last) as a fan (winding kept),
- * the cut points on its edges measured from their lower ends (two
- * triangles sharing an edge cut it at the same points: no cracks),
- * normals interpolated, colour and kind kept. For light computed per
- * vertex that varies with height (the lit room's trees and hedges:
- * render/hol_render_queue.c). Past the capacity: overflow, the copy cut
- * short at a whole polygon. */
-void hol_mesh_slice_y(hol_mesh *m, uint32_t first, uint32_t end, const float *ys, int n);
-
 #endif

@@ -151,7 +151,6 @@ struct hol_render {
     struct hol_world *room_world;
     uint32_t room_nidx;
     uint32_t room_back[2]; /* its backdrop's index range (hol_scene_room) */
-    uint32_t room_lit[4];  /* its lit copies' ranges (hol__room_slices) */
     int hud_valid;
     uint64_t hud_key;
     uint32_t hud_nidx;

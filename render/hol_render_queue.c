@@ -92,36 +92,6 @@ static hol_err hol__queue_leaves(hol_render *r, const hol_frame_desc *f)
     return HOL_OK;
 }
 
-/* The lit room's trees and hedges (render/hol_render_gpu.c's lamps
- * program, lit per vertex): copies of the day mesh's ranges before and
- * after its backdrop, cut by planes at these heights (metres) so that the
- * light's change with height is followed: closer round the lanterns'
- * height (HOL_LIGHT_HEIGHT_M, where the light peaks on an upright face),
- * none where the crowns start (2.2 m: the light there is faint and
- * smooth). room_lit: the copies' two index ranges [0, 1) and [2, 3)
- * (the day's own ranges when the copies do not fit). Each cut adds triangles, which llvmpipe pays for in
- * setup (docs/rendering.md#lighting). */
-static void hol__room_slices(hol_render *r)
-{
-    static const float ys[] = {0.65f, (float)HOL_LIGHT_HEIGHT_M, 1.95f};
-    hol_mesh *m = &r->scratch;
-    uint32_t day = m->ni, nv = m->nv;
-    if (m->overflow)
-        return;
-    r->room_lit[0] = day;
-    hol_mesh_slice_y(m, 0, r->room_back[0], ys, 3);
-    r->room_lit[1] = r->room_lit[2] = m->ni;
-    hol_mesh_slice_y(m, r->room_back[1], day, ys, 3);
-    r->room_lit[3] = m->ni;
-    if (m->overflow) { /* no room for the copies: the day's meshes, uncut */
-        m->overflow = 0;
-        m->ni = day;
-        m->nv = nv;
-        const uint32_t whole[4] = {0, r->room_back[0], r->room_back[1], day};
-        memcpy(r->room_lit, whole, sizeof whole);
-    }
-}
-
 /* Pass 1: the room's own meshes, resident while the user's state and the
  * world stay the same. */
 static hol_err hol__queue_room(hol_render *r, const hol_frame_desc *f, double cell_m)
@@ -134,13 +104,11 @@ static hol_err hol__queue_room(hol_render *r, const hol_frame_desc *f, double ce
         hol_scene_room(r->scene, &r->scratch, &f->user, r->desc.world, cell_m, r->room_back);
         if (tree[0])
             hol_scene_tree_mark(r->scene, &r->scratch, tree[1], tree[2], cell_m);
-        uint32_t day = r->scratch.ni;
-        hol__room_slices(r);
         memcpy(r->room_tree, tree, sizeof tree);
         if (r->scratch.overflow)
             return HOL_ENOMEM;
         hol__upload_scratch(r, 0, 0);
-        r->room_nidx = day;
+        r->room_nidx = r->scratch.ni;
         r->room_user = f->user;
         r->room_cell = cell_m;
         r->room_world = r->desc.world;
@@ -152,17 +120,18 @@ static hol_err hol__queue_room(hol_render *r, const hol_frame_desc *f, double ce
             it->key = 1u << 24;
         return HOL_OK;
     }
-    /* dusk and night: the trees and hedges lantern-lit (their copies cut
-     * in bands), the backdrop and outer ground between them on the cheaper
-     * program, in the day's order */
-    const uint32_t cut[3][2] = {{r->room_lit[0], r->room_lit[1]},
-                                {r->room_back[0], r->room_back[1]},
-                                {r->room_lit[2], r->room_lit[3]}};
+    /* dusk and night: the trees and hedges lantern-lit (per vertex at
+     * knot heights: scene.vert.glsl), then the backdrop and outer ground
+     * on the cheaper program, behind the hedges: the depth test spares
+     * llvmpipe shading what the hedges hide */
+    const uint32_t cut[3][2] = {{0, r->room_back[0]},
+                                {r->room_back[1], r->room_nidx},
+                                {r->room_back[0], r->room_back[1]}};
     for (int k = 0; k < 3; k++) {
         hol__item *it = hol__queue_push(r, HOL__PASS_ROOM, cut[k][0], cut[k][1] - cut[k][0]);
         if (it) {
             it->key = 1u << 24 | (uint32_t)k;
-            it->lamps = k != 1;
+            it->lamps = k != 2;
         }
     }
     return HOL_OK;

@@ -189,9 +189,17 @@ float hol_lights(vec4 L, float g2, float o, float dh, float nup, vec4 th) {
 #if HOL_LIT == 2 && HOL_LAMPS
 // The room's trees and hedges (HOL_LAMPS: render/hol_render_gpu.c's
 // hol__room_lights): lit per vertex by the tiles' law (scene.vert.glsl's
-// hol_room_light), their meshes cut in bands of height
-// (docs/rendering.md#lighting says where that departs)
-in float v_rl;
+// hol_room_light) at the knot heights 0, 0.65, 1.3, 1.95 and 3.25 m, and
+// here linearly between the knots by the fragment's height (above 3.25 m
+// the last two knots' line, not below 0: the crowns' faint light falling
+// off); docs/rendering.md#lighting says where that departs
+in vec4 v_rl;
+in float v_rk;
+float hol_room_lam(float y) {
+  float t = y * (1.0 / 0.65);
+  vec4 hat = max(1.0 - abs(t - vec4(0.0, 1.0, 2.0, 3.0)), 0.0);
+  return t > 3.0 ? max(mix(v_rl.w, v_rk, 0.5 * (t - 3.0)), 0.0) : dot(hat, v_rl);
+}
 #endif
 void main() {
 #if HOL_TEXT
@@ -273,7 +281,7 @@ void main() {
   }
 #endif
 #if HOL_LIT == 2 && HOL_LAMPS
-  if (u_light >= 2) lam = v_rl;
+  if (u_light >= 2) lam = hol_room_lam(v_wpos.y);
 #endif
 // the lanterns' sum mapped back (fireflies' lamf as it is: faint)
   lam = hol_tone(lam);

@@ -26,20 +26,34 @@ out vec3 v_loc;
 // l.z - k.l.xy is affine in the vertex, so interpolation is exact
 #if HOL_LIT == 2 && HOL_LAMPS
 // the room's trees and hedges (HOL_LAMPS), lit per vertex: their lanterns'
-// cells (u_tl, as in scene.frag.glsl), 3 in u_light a flat room; the
-// meshes come cut in bands (render/hol_render_queue.c's
-// hol__room_slices), so the light's change with height is followed
+// cells (u_tl, as in scene.frag.glsl), 3 in u_light a flat room; the light
+// at the vertex's floor point at the knot heights 0, 0.65, 1.3, 1.95 m
+// (v_rl) and 3.25 m (v_rk), which the fragment interpolates by its own
+// height (scene.frag.glsl: the light's change with height is followed
+// without cutting the meshes)
 uniform vec4 u_tl[4];
 uniform highp int u_light;
 uniform float u_mpu2;
 uniform vec3 u_eye;
-out float v_rl;
+out vec4 v_rl;
+out float v_rk;
+// At height y over the vertex's floor point: the distance d^2, the fade w,
+// the Lambert term (the normal's vertical part, then h the horizontal
+// part times x) and the falloff, summed over the lanterns.
+float hol_room_at(float y, vec4 x, vec4 q, vec4 h, float nup) {
+  float dh = HOL_LIGHT_HEIGHT_M - y;
+  vec4 d2 = x * x * u_mpu2 + dh * dh;
+  vec4 w = max(1.0 - d2 * (1.0 / (HOL_LIGHT_RADIUS_M * HOL_LIGHT_RADIUS_M)), 0.0);
+  vec4 lb = 0.3 + 0.7 * max((nup * max(dh, 0.0) + h) * inversesqrt(max(d2, 1e-8)), 0.0);
+  return dot(w * w * q / (1.0 + d2 * (1.0 / (HOL_LIGHT_D0_M * HOL_LIGHT_D0_M))) * lb, u_tl[3]);
+}
 // A point's Klein point k in the frame of each lantern's cell (its centre
 // the light's foot): cosh x = g = 1 / sqrt(1 - |k|^2), c^2 = 2 g - 2
 // (flat: c^2 = |k|^2, x = c); the floor direction to the light -k / |k|.
 // Then the tiles' law (falloff.glsl, hol_lambert): every room lantern
-// hangs at HOL_LIGHT_HEIGHT_M; the normal turned to the eye.
-float hol_room_light(vec3 p, vec3 n) {
+// hangs at HOL_LIGHT_HEIGHT_M; the normal turned to the eye; the light at
+// each knot height into v_rl and v_rk.
+void hol_room_light(vec3 p, vec3 n) {
   float fl = u_light == 3 ? 1.0 : 0.0;
   vec4 kx = (p.x - u_tl[0]) * u_klein, kz = (u_tl[1] - p.z) * u_klein;
   vec4 kk = kx * kx + kz * kz;
@@ -51,11 +65,10 @@ float hol_room_light(vec3 p, vec3 n) {
   vec3 nn = dot(n, n) < 1e-6 ? vec3(0.0, 1.0, 0.0) : normalize(n);
   nn *= dot(nn, u_eye - p) < 0.0 ? -1.0 : 1.0;
   vec4 h = -(nn.x * kx - nn.z * kz) * inversesqrt(max(kk, 1e-20)) * x * sqrt(u_mpu2);
-  float dh = HOL_LIGHT_HEIGHT_M - p.y;
-  vec4 d2 = x * x * u_mpu2 + dh * dh;
-  vec4 w = max(1.0 - d2 * (1.0 / (HOL_LIGHT_RADIUS_M * HOL_LIGHT_RADIUS_M)), 0.0);
-  vec4 lb = 0.3 + 0.7 * max((max(nn.y, 0.0) * max(dh, 0.0) + h) * inversesqrt(max(d2, 1e-8)), 0.0);
-  return dot(w * w * q / (1.0 + d2 * (1.0 / (HOL_LIGHT_D0_M * HOL_LIGHT_D0_M))) * lb, u_tl[3]);
+  float nup = max(nn.y, 0.0);
+  v_rl = vec4(hol_room_at(0.0, x, q, h, nup), hol_room_at(0.65, x, q, h, nup),
+              hol_room_at(1.3, x, q, h, nup), hol_room_at(1.95, x, q, h, nup));
+  v_rk = hol_room_at(3.25, x, q, h, nup);
 }
 #endif
 #if HOL_LIT == 1
@@ -105,7 +118,7 @@ void main() {
   v_wpos = w.xyz;
   v_nrm = mat3(u_model) * a_nrm;
 #if HOL_LIT == 2 && HOL_LAMPS
-  v_rl = hol_room_light(w.xyz, v_nrm);
+  hol_room_light(w.xyz, v_nrm);
 #endif
 // the colours are authored in sRGB: the lit mode (0) takes them to linear
 // light here, once a vertex (docs/rendering.md#linear-light); the flat
