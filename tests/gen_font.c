@@ -22,7 +22,8 @@
  *    filtering never reads a neighbour. The header holds each glyph's
  *    texels, glyph after glyph, and its place: core/hol_face.c writes the
  *    atlas from them (the clear texels left out gzip to 1.7 KB of the
- *    web's transfer).
+ *    web's transfer). The same texels follow packed (pack_texels): the
+ *    web build holds only those and decodes them (2.2 KB less transfer).
  * 4. Metrics in font units (advance, ascent, descent, line gap, cap and x
  *    height) and each glyph's quad in atlas pixels relative to the pen on
  *    the baseline (y down); kerning of every pair of the set the font's
@@ -132,6 +133,175 @@ static void quantise(unsigned char *p, int n)
     }
 }
 
+/* ---- the texels packed (core/hol_face.c's hol_face_unpack reads them) ----
+ * Each texel is coded as its level's index (the distinct texel values,
+ * ascending) by an adaptive binary range coder (LZMA's: 12-bit
+ * probabilities, moved by 1/16), four bits from the top through a tree
+ * whose probabilities are chosen by the context: the level the glyph's
+ * reference has at the same place (NLEVEL_MAX when it has none) and the
+ * gradient predictor clamp(left + up - upleft) (outside the rectangle: 0).
+ * A glyph's reference is the earlier glyph, moved by (dy, dx), whose
+ * levels differ from its own at the fewest places (fewer than from blank:
+ * else none): an accented letter reads its letter. Before each glyph's
+ * texels: one bit (a reference or not), then the glyph's index less the
+ * reference's (8 bits), dy + 64 (7 bits), dx + 4 (3 bits), each through a
+ * tree of its own. The web build decodes them (HOL_FACE_PACKED); gzip
+ * takes the raw texels to 9.4 KB, this packs them into 7.3 KB. */
+#define NLEVEL_MAX 16
+#define PROB_BITS 12
+#define PROB_MOVE 4
+#define REF_DX 2
+
+typedef struct {
+    uint16_t texel[(NLEVEL_MAX + 1) * NLEVEL_MAX][NLEVEL_MAX];
+    uint16_t has_ref[2], back[256], dy[128], dx[8];
+} pack_model;
+
+typedef struct {
+    uint64_t low;
+    uint32_t range;
+    unsigned char cache;
+    size_t cache_n, n;
+    unsigned char out[ATLAS_W * ATLAS_HMAX];
+} rc_enc;
+
+static int g_level_of[256];
+static int g_levels[NLEVEL_MAX], g_nlevel;
+
+static void rc_shift_low(rc_enc *rc)
+{
+    if ((uint32_t)rc->low < 0xFF000000u || (rc->low >> 32) != 0) {
+        unsigned char carry = (unsigned char)(rc->low >> 32), temp = rc->cache;
+        do {
+            rc->out[rc->n++] = (unsigned char)(temp + carry);
+            temp = 0xFF;
+        } while (--rc->cache_n != 0);
+        rc->cache = (unsigned char)(rc->low >> 24);
+    }
+    rc->cache_n++;
+    rc->low = (rc->low & 0x00FFFFFFu) << 8;
+}
+
+static void rc_bit(rc_enc *rc, uint16_t *p, int bit)
+{
+    uint32_t bound = (rc->range >> PROB_BITS) * *p;
+    if (!bit) {
+        rc->range = bound;
+        *p = (uint16_t)(*p + (((1u << PROB_BITS) - *p) >> PROB_MOVE));
+    } else {
+        rc->low += bound;
+        rc->range -= bound;
+        *p = (uint16_t)(*p - (*p >> PROB_MOVE));
+    }
+    while (rc->range < (1u << 24)) {
+        rc->range <<= 8;
+        rc_shift_low(rc);
+    }
+}
+
+static void rc_tree(rc_enc *rc, uint16_t *probs, int nbits, int v)
+{
+    int node = 1;
+    for (int i = nbits - 1; i >= 0; i--) {
+        int bit = (v >> i) & 1;
+        rc_bit(rc, &probs[node], bit);
+        node = 2 * node + bit;
+    }
+}
+
+/* Glyph g's level at (r, c) of its rectangle; 0 outside. */
+static int level_at(const glyph *g, int r, int c)
+{
+    if (r < 0 || c < 0 || r >= g->h || c >= g->w)
+        return 0;
+    return g_level_of[g_atlas[(size_t)(g->y + r) * ATLAS_W + g->x + c]];
+}
+
+typedef struct {
+    int ref, dy, dx; /* ref -1: none */
+} pack_ref;
+
+/* The places where glyph i's levels differ from j's moved by (dy, dx),
+ * counting up to `most`. */
+static int ref_misses(int i, int j, int dy, int dx, int most)
+{
+    const glyph *g = &g_glyphs[i], *h = &g_glyphs[j];
+    int n = 0;
+    for (int r = 0; r < g->h && n < most; r++)
+        for (int c = 0; c < g->w; c++)
+            n += level_at(g, r, c) != (j < 0 ? 0 : level_at(h, r + dy, c + dx));
+    return n;
+}
+
+static pack_ref find_ref(int i)
+{
+    pack_ref best = {-1, 0, 0};
+    int most = ref_misses(i, -1, 0, 0, 1 << 30);
+    for (int j = 0; j < i; j++) {
+        const glyph *h = &g_glyphs[j];
+        if (h->w == 0 || i - j > 255)
+            continue;
+        for (int dy = -(g_glyphs[i].h - 1); dy < h->h; dy++)
+            for (int dx = -REF_DX; dx <= REF_DX; dx++) {
+                if (dy + 64 < 0 || dy + 64 > 127)
+                    continue;
+                int n = ref_misses(i, j, dy, dx, most);
+                if (n < most) {
+                    most = n;
+                    best = (pack_ref){j, dy, dx};
+                }
+            }
+    }
+    return best;
+}
+
+static void pack_glyph(rc_enc *rc, pack_model *m, int i)
+{
+    const glyph *g = &g_glyphs[i];
+    pack_ref ref = find_ref(i);
+    rc_tree(rc, m->has_ref, 1, ref.ref >= 0);
+    if (ref.ref >= 0) {
+        rc_tree(rc, m->back, 8, i - ref.ref);
+        rc_tree(rc, m->dy, 7, ref.dy + 64);
+        rc_tree(rc, m->dx, 3, ref.dx + 4);
+    }
+    for (int r = 0; r < g->h; r++)
+        for (int c = 0; c < g->w; c++) {
+            int l = level_at(g, r, c - 1), u = level_at(g, r - 1, c), ul = level_at(g, r - 1, c - 1);
+            int grad = l + u - ul < 0 ? 0 : l + u - ul > NLEVEL_MAX - 1 ? NLEVEL_MAX - 1 : l + u - ul;
+            int rv = ref.ref >= 0 ? level_at(&g_glyphs[ref.ref], r + ref.dy, c + ref.dx) : NLEVEL_MAX;
+            rc_tree(rc, m->texel[rv * NLEVEL_MAX + grad], 4, level_at(g, r, c));
+        }
+}
+
+/* The levels, and every glyph's texels packed into rc->out. */
+static int pack_texels(rc_enc *rc)
+{
+    static pack_model m;
+    int seen[256] = {0};
+    for (int i = 0; i < NGLYPH; i++)
+        for (int r = 0; r < g_glyphs[i].h; r++)
+            for (int c = 0; c < g_glyphs[i].w; c++)
+                seen[g_atlas[(size_t)(g_glyphs[i].y + r) * ATLAS_W + g_glyphs[i].x + c]] = 1;
+    g_nlevel = 0;
+    for (int v = 0; v < 256; v++)
+        if (seen[v]) {
+            if (g_nlevel == NLEVEL_MAX)
+                return -1;
+            g_level_of[v] = g_nlevel;
+            g_levels[g_nlevel++] = v;
+        }
+    uint16_t *p = &m.texel[0][0];
+    for (size_t k = 0; k < sizeof m / sizeof *p; k++)
+        p[k] = 1u << (PROB_BITS - 1);
+    *rc = (rc_enc){.range = 0xFFFFFFFFu, .cache_n = 1};
+    for (int i = 0; i < NGLYPH; i++)
+        pack_glyph(rc, &m, i);
+    for (int k = 0; k < 5; k++)
+        rc_shift_low(rc);
+    return 0;
+}
+
 static void print_kerning(const stbtt_fontinfo *font)
 {
     int n = 0;
@@ -168,7 +338,8 @@ static void print_kerning(const stbtt_fontinfo *font)
 static void print_texels(void)
 {
     int n = 0;
-    printf("/* where each glyph's texels start in hol__face_texels */\n"
+    printf("#ifndef HOL_FACE_PACKED\n"
+           "/* where each glyph's texels start in hol__face_texels */\n"
            "static const uint16_t hol__face_texel_at[%d] = {\n",
            NGLYPH);
     for (int i = 0; i < NGLYPH; i++) {
@@ -190,7 +361,30 @@ static void print_texels(void)
                        g_atlas[(size_t)(g->y + r) * ATLAS_W + g->x + c],
                        k % TEXELS_A_LINE == TEXELS_A_LINE - 1 ? "\n" : "");
     }
-    printf("%s};\n\n#endif\n", k % TEXELS_A_LINE ? "\n" : "");
+    printf("%s};\n#endif\n\n", k % TEXELS_A_LINE ? "\n" : "");
+}
+
+/* The same texels packed (pack_texels): the levels and the bytes. */
+static int print_packed(void)
+{
+    static rc_enc rc;
+    if (pack_texels(&rc) != 0)
+        return -1;
+    printf("#define HOL_FACE_NLEVEL %d\n"
+           "/* the texels' values, ascending: the packed texels are their indices */\n"
+           "static const uint8_t hol__face_levels[HOL_FACE_NLEVEL] = {",
+           g_nlevel);
+    for (int i = 0; i < g_nlevel; i++)
+        printf("%d%s", g_levels[i], i + 1 < g_nlevel ? "," : "};\n\n");
+    printf("#define HOL_FACE_NPACKED %zu\n"
+           "/* the glyphs' texels packed (tests/gen_font.c's pack_texels; hol_face_unpack) */\n"
+           "static const uint8_t hol__face_packed[HOL_FACE_NPACKED] = {\n",
+           rc.n);
+    for (size_t k = 0; k < rc.n; k++)
+        printf("%s%d,%s", k % TEXELS_A_LINE == 0 ? "    " : "", rc.out[k],
+               k % TEXELS_A_LINE == TEXELS_A_LINE - 1 ? "\n" : "");
+    printf("%s};\n\n#endif\n", rc.n % TEXELS_A_LINE ? "\n" : "");
+    return 0;
 }
 
 static void print_header(const stbtt_fontinfo *font, int atlas_h)
@@ -265,6 +459,10 @@ int main(int argc, char **argv)
         fclose(f);
     }
     print_header(&font, atlas_h);
+    if (print_packed() != 0) {
+        fprintf(stderr, "gen_font: more than %d texel values\n", NLEVEL_MAX);
+        return 1;
+    }
     for (int i = 0; i < NGLYPH; i++)
         stbtt_FreeSDF(g_glyphs[i].sdf, NULL);
     free(ttf);

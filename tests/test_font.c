@@ -11,6 +11,8 @@
  *   the drawn width equals hol_face_width;
  * - wrapping by measured width: no line wider than the width, no word
  *   split unless it alone is wider, blanks at breaks dropped, '\n'.
+ * - the packed texels (the web build's, hol_face_unpack) decode to the
+ *   atlas byte for byte; a cut or damaged stream stays in the atlas.
  * HOL_FONT_SHEET=file.png also writes a sample sheet of every glyph at
  * three sizes, to look at.
  */
@@ -173,6 +175,40 @@ static void test_every_glyph_inks_and_is_not_the_box(void **state)
         if (differ(cell, box) < 20)
             fail_msg("U+%04X draws the missing box", (unsigned)c);
     }
+}
+
+static void test_packed_texels_are_the_atlas(void **state)
+{
+    (void)state;
+    int w, h;
+    hol_face_atlas(NULL, &w, &h);
+    size_t n = (size_t)w * (size_t)h;
+    uint8_t *want = malloc(n), *got = malloc(n + 1);
+    assert_non_null(want);
+    assert_non_null(got);
+    hol_face_atlas(want, &w, &h);
+    hol_face_packed p;
+    hol_face_get_packed(&p);
+    assert_true(p.n > 0 && p.n < n / 4);
+    memset(got, 1, n); /* HOL_FACE_CLEAR: the texels outside every glyph */
+    assert_int_equal(hol_face_unpack(&p, got), 0);
+    assert_memory_equal(got, want, n);
+    /* a cut stream and damaged bytes: never a write outside the atlas */
+    uint8_t *bad = malloc(p.n);
+    assert_non_null(bad);
+    for (int k = 0; k < 64; k++) {
+        memcpy(bad, p.bytes, p.n);
+        hol_face_packed q = p;
+        q.bytes = bad;
+        q.n = (size_t)k * p.n / 64;
+        bad[(size_t)k * 97 % p.n] ^= (uint8_t)(1 + k);
+        got[n] = 0xA5;
+        (void)hol_face_unpack(&q, got);
+        assert_int_equal(got[n], 0xA5);
+    }
+    free(bad);
+    free(want);
+    free(got);
 }
 
 static void test_cases_and_accents_differ(void **state)
@@ -393,6 +429,7 @@ int main(void)
         cmocka_unit_test(test_decode_latin1),
         cmocka_unit_test(test_decode_malformed),
         cmocka_unit_test(test_every_glyph_inks_and_is_not_the_box),
+        cmocka_unit_test(test_packed_texels_are_the_atlas),
         cmocka_unit_test(test_cases_and_accents_differ),
         cmocka_unit_test(test_widths_and_kerning),
         cmocka_unit_test(test_wrap),
