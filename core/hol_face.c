@@ -6,7 +6,7 @@
 
 #include "hol_face_atlas.h"
 
-_Static_assert(sizeof hol__face_glyphs / sizeof hol__face_glyphs[0] == HOL_FACE_NGLYPH,
+_Static_assert(sizeof hol__face_advance / sizeof hol__face_advance[0] == HOL_FACE_NGLYPH,
                "the generated glyph table has the set of hol_face.h");
 
 void hol_face_get_metrics(hol_face_metrics *out_metrics)
@@ -81,7 +81,9 @@ static int hol__level_at(const uint8_t *px, const uint8_t level_of[256], const h
 static int hol__unpack_glyph(hol__face_rc *rc, hol__face_model *m, const hol_face_packed *p,
                              const uint8_t level_of[256], int i, uint8_t *px)
 {
-    const hol_face_glyph *g = hol_face_glyph_at(i), *ref = NULL;
+    const hol_face_glyph gv = hol_face_glyph_at(i), *g = &gv;
+    hol_face_glyph rv_glyph;
+    const hol_face_glyph *ref = NULL;
     int dy = 0, dx = 0;
     if (hol__rc_tree(rc, m->has_ref, 1)) {
         int j = i - hol__rc_tree(rc, m->back, 8);
@@ -89,7 +91,8 @@ static int hol__unpack_glyph(hol__face_rc *rc, hol__face_model *m, const hol_fac
         dx = hol__rc_tree(rc, m->dx, 3) - 4;
         if (j < 0 || j >= i)
             return -1;
-        ref = hol_face_glyph_at(j);
+        rv_glyph = hol_face_glyph_at(j);
+        ref = &rv_glyph;
     }
     for (int r = 0; r < g->h; r++)
         for (int c = 0; c < g->w; c++) {
@@ -140,12 +143,10 @@ void hol_face_atlas(uint8_t *out_px, int *out_w, int *out_h)
     hol_face_get_packed(&p);
     (void)hol_face_unpack(&p, out_px); /* never fails: make test unpacks the same bytes */
 #else
-    for (int i = 0; i < HOL_FACE_NGLYPH; i++) {
-        const hol_face_glyph *g = &hol__face_glyphs[i];
-        for (int r = 0; r < g->h; r++)
-            memcpy(out_px + (size_t)(g->y + r) * HOL_FACE_ATLAS_W + g->x,
-                   hol__face_texels + hol__face_texel_at[i] + (size_t)r * g->w, g->w);
-    }
+    for (int i = 0; i < HOL_FACE_NGLYPH; i++)
+        for (int r = 0; r < hol__face_h[i]; r++)
+            memcpy(out_px + (size_t)(hol__face_y[i] + r) * HOL_FACE_ATLAS_W + hol__face_x[i],
+                   hol__face_texels + hol__face_texel_at[i] + (size_t)r * hol__face_w[i], hol__face_w[i]);
 #endif
 }
 
@@ -242,11 +243,13 @@ int hol_face_index(uint32_t code)
     return 0;
 }
 
-const hol_face_glyph *hol_face_glyph_at(int index)
+hol_face_glyph hol_face_glyph_at(int index)
 {
     if (index < 0 || index >= HOL_FACE_NGLYPH)
         index = 0;
-    return &hol__face_glyphs[index];
+    uint16_t code = (uint16_t)(index == 0 ? 0 : index <= 95 ? 0x20 + index - 1 : 0xA0 + index - 96);
+    return (hol_face_glyph){code, hol__face_advance[index], hol__face_x[index], hol__face_y[index],
+                            hol__face_w[index], hol__face_h[index], hol__face_qx[index], hol__face_qy[index]};
 }
 
 int hol_face_kerning(int a, int b)
@@ -256,9 +259,9 @@ int hol_face_kerning(int a, int b)
     int key = (a << 8) | b, lo = 0, hi = HOL_FACE_NKERN - 1;
     while (lo <= hi) {
         int mid = (lo + hi) / 2;
-        int k = (hol__face_kerns[mid].a << 8) | hol__face_kerns[mid].b;
+        int k = (hol__face_kern_a[mid] << 8) | hol__face_kern_b[mid];
         if (k == key)
-            return hol__face_kerns[mid].units;
+            return hol__face_kern_units[mid];
         if (k < key)
             lo = mid + 1;
         else
@@ -274,7 +277,7 @@ long hol_face_units(const char *text, size_t len, int *out_missing)
     for (size_t pos = 0; pos < len;) {
         int g = hol_face_index(hol_face_decode(text, len, &pos));
         missing += g == 0;
-        units += hol__face_glyphs[g].advance + hol_face_kerning(prev, g);
+        units += hol__face_advance[g] + hol_face_kerning(prev, g);
         prev = g;
     }
     if (out_missing)
@@ -326,7 +329,7 @@ static void hol__line_end(const char *text, size_t len, long max_units, size_t a
     while (pos < len && text[pos] != '\n') {
         size_t start = pos;
         int g = hol_face_index(hol_face_decode(text, len, &pos));
-        long w = hol__face_glyphs[g].advance + hol_face_kerning(prev, g);
+        long w = hol__face_advance[g] + hol_face_kerning(prev, g);
         if (text[start] == ' ') {
             int r = start > at && text[start - 1] != ' ' ? hol__break_rank(text, at, start, pairs)
                                                          : -1;

@@ -66,12 +66,6 @@ typedef struct hol_face_glyph {
     int16_t qx, qy;
 } hol_face_glyph;
 
-/* A kerning pair (glyph indices) and its adjustment in font units. */
-typedef struct hol_face_kern {
-    uint8_t a, b;
-    int16_t units;
-} hol_face_kern;
-
 /* The face's vertical metrics in font units (descent negative). */
 typedef struct hol_face_metrics {
     int units_per_em, ascent, descent, line_gap, cap_height, x_height;
@@ -114,7 +108,8 @@ uint32_t hol_face_decode(const char *text, size_t len, size_t *pos);
 size_t hol_face_text_bad(const char *s, size_t n, uint32_t *out_code);
 /* The glyph index of a code point (0, the box, when it has none). */
 int hol_face_index(uint32_t code);
-const hol_face_glyph *hol_face_glyph_at(int index);
+/* Glyph index's entry (an index outside the set: the box's). */
+hol_face_glyph hol_face_glyph_at(int index);
 /* The kerning between two glyph indices, font units (0 for most). */
 int hol_face_kerning(int a, int b);
 

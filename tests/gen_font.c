@@ -302,34 +302,38 @@ static int pack_texels(rc_enc *rc)
     return 0;
 }
 
+/* One column of a table: n values, GLYPHS_A_LINE a line. */
+static void print_column(const char *type, const char *name, const char *count, const int *v, int n)
+{
+    printf("static const %s %s[%s] = {\n", type, name, count);
+    for (int i = 0; i < n; i++)
+        printf("%s%d,%s", i % GLYPHS_A_LINE ? "" : "    ", v[i], i % GLYPHS_A_LINE == GLYPHS_A_LINE - 1 ? "\n" : "");
+    printf("%s};\n", n % GLYPHS_A_LINE ? "\n" : "");
+}
+
+/* The kerning pairs as three columns (a table of columns gzips smaller
+ * than one of rows: the web's transfer). */
 static void print_kerning(const stbtt_fontinfo *font)
 {
+    static int col[3][NKERNED * NKERNED];
     int n = 0;
-    for (int pass = 0; pass < 2; pass++) {
-        if (pass == 1)
-            printf("#define HOL_FACE_NKERN %d\n"
-                   "/* {first glyph, second glyph, font units}, sorted by first then second */\n"
-                   "static const hol_face_kern hol__face_kerns[HOL_FACE_NKERN] = {\n",
-                   n);
-        int col = 0;
-        for (int a = 1; a < NKERNED; a++)
-            for (int b = 1; b < NKERNED; b++) {
-                int k = stbtt_GetGlyphKernAdvance(font, g_glyphs[a].gi, g_glyphs[b].gi);
-                if (k == 0 || !g_glyphs[a].gi || !g_glyphs[b].gi)
-                    continue;
-                if (pass == 0) {
-                    n++;
-                    continue;
-                }
-                printf("%s{%d,%d,%d},", col == 0 ? "    " : "", a, b, k);
-                if (++col == (n + 5) / 6) {
-                    printf("\n");
-                    col = 0;
-                }
-            }
-        if (pass == 1)
-            printf("%s};\n\n", col ? "\n" : "");
-    }
+    for (int a = 1; a < NKERNED; a++)
+        for (int b = 1; b < NKERNED; b++) {
+            int k = stbtt_GetGlyphKernAdvance(font, g_glyphs[a].gi, g_glyphs[b].gi);
+            if (k == 0 || !g_glyphs[a].gi || !g_glyphs[b].gi)
+                continue;
+            col[0][n] = a;
+            col[1][n] = b;
+            col[2][n++] = k;
+        }
+    printf("#define HOL_FACE_NKERN %d\n"
+           "/* the kerning pairs: first glyph, second glyph, font units; sorted by\n"
+           " * first then second */\n",
+           n);
+    print_column("uint8_t", "hol__face_kern_a", "HOL_FACE_NKERN", col[0], n);
+    print_column("uint8_t", "hol__face_kern_b", "HOL_FACE_NKERN", col[1], n);
+    print_column("int16_t", "hol__face_kern_units", "HOL_FACE_NKERN", col[2], n);
+    printf("\n");
 }
 
 /* The glyphs' texels, glyph after glyph, each its rectangle's rows (the
@@ -405,16 +409,23 @@ static void print_header(const stbtt_fontinfo *font, int atlas_h)
     printf("#define HOL_FACE_BAKE_EM %d\n#define HOL_FACE_SPREAD %d\n", BAKE_EM, SPREAD);
     printf("#define HOL_FACE_ATLAS_W %d\n#define HOL_FACE_ATLAS_H %d\n", ATLAS_W, atlas_h);
     printf("#define HOL_FACE_CLEAR %d\n\n", CLEAR);
-    printf("/* {code, advance (font units), atlas x, y, w, h, quad x, y (atlas pixels\n"
-           " * from the pen on the baseline, y down)}; index 0 is the missing box */\n"
-           "static const hol_face_glyph hol__face_glyphs[%d] = {\n",
-           NGLYPH);
+    static int col[7][NGLYPH];
     for (int i = 0; i < NGLYPH; i++) {
         const glyph *g = &g_glyphs[i];
-        printf("%s{%d,%d,%d,%d,%d,%d,%d,%d},%s", i % GLYPHS_A_LINE ? "" : "    ", g->code, g->adv, g->x, g->y,
-               g->w, g->h, g->xoff, g->yoff, i % GLYPHS_A_LINE == GLYPHS_A_LINE - 1 ? "\n" : "");
+        int v[7] = {g->adv, g->x, g->y, g->w, g->h, g->xoff, g->yoff};
+        for (int k = 0; k < 7; k++)
+            col[k][i] = v[k];
     }
-    printf("%s};\n\n", NGLYPH % GLYPHS_A_LINE ? "\n" : "");
+    printf("/* each glyph's advance (font units), atlas rectangle (x, y, w, h) and\n"
+           " * quad's top-left (x, y: atlas pixels from the pen on the baseline, y\n"
+           " * down), by glyph index (index 0 is the missing box), as columns */\n");
+    static const char *const names[7] = {"advance", "x", "y", "w", "h", "qx", "qy"};
+    for (int k = 0; k < 7; k++) {
+        char name[32];
+        snprintf(name, sizeof name, "hol__face_%s", names[k]);
+        print_column(k == 0 ? "uint16_t" : k < 5 ? "uint8_t" : "int8_t", name, "HOL_FACE_NGLYPH", col[k], NGLYPH);
+    }
+    printf("\n");
     print_kerning(font);
     print_texels();
 }
@@ -448,10 +459,16 @@ int main(int argc, char **argv)
             g->w = g->h = g->xoff = g->yoff = 0;
     }
     int atlas_h = pack();
-    if (atlas_h < 0) {
-        fprintf(stderr, "gen_font: the glyphs do not fit %dx%d\n", ATLAS_W, ATLAS_HMAX);
+    if (atlas_h < 0 || atlas_h > 256) {
+        fprintf(stderr, "gen_font: the glyphs do not fit %dx%d\n", ATLAS_W, 256);
         return 1;
     }
+    for (int i = 0; i < NGLYPH; i++)
+        if (g_glyphs[i].xoff < -128 || g_glyphs[i].xoff > 127 || g_glyphs[i].yoff < -128 ||
+            g_glyphs[i].yoff > 127) {
+            fprintf(stderr, "gen_font: U+%04X's quad is out of an int8_t\n", g_glyphs[i].code);
+            return 1;
+        }
     if (raw) {
         FILE *f = fopen(raw, "wb");
         if (!f || fwrite(g_atlas, 1, (size_t)ATLAS_W * (size_t)atlas_h, f) != (size_t)ATLAS_W * (size_t)atlas_h)
