@@ -647,7 +647,10 @@ WEB_OBJ  := $(WEB_SRC:%.c=$(BUILD)/web-obj/%.o)
 # step 5 % slower, the table the same); every object as LLVM bitcode
 # (-flto: 3.0 KB, each function keeping its file's level); the link at -Oz
 # with binaryen's -Oz once more, emmalloc, and Module read only for what
-# page.js gives it (docs/web.md, "The transfer size").
+# page.js gives it; no GL_-prefixed extension names (nothing reads
+# GL_EXTENSIONS) and no queue of deferred pointer-lock requests (the one
+# request is made in the mousedown handler, where it runs at once): 0.4 KB
+# (docs/web.md, "The transfer size").
 WEB_HOT  := $(addprefix core/,hol_app_step.c hol_app_geom.c hol_app_view.c hol_math.c hol_motion.c \
   hol_nav.c hol_nav_arena.c hol_nav_field.c hol_nav_line.c \
   hol_world.c hol_world_tree.c)
@@ -659,7 +662,8 @@ WEB_LDFLAGS := -Oz -sBINARYEN_EXTRA_PASSES=-Oz -sMALLOC=emmalloc -sENVIRONMENT=w
   -sALLOW_MEMORY_GROWTH=1 -sINITIAL_MEMORY=67108864 -sTOTAL_STACK=1048576 \
   '-sINCOMING_MODULE_JS_API=[instantiateWasm,canvas,print,printErr]' \
   -sGL_EMULATE_GLES_VERSION_STRING_FORMAT=0 -sGL_SUPPORT_AUTOMATIC_ENABLE_EXTENSIONS=0 \
-  -sTEXTDECODER=2 -sSUPPORT_ERRNO=0 \
+  -sTEXTDECODER=2 -sSUPPORT_ERRNO=0 -sGL_EXTENSIONS_IN_PREFIXED_FORMAT=0 \
+  -sHTML5_SUPPORT_DEFERRING_USER_SENSITIVE_REQUESTS=0 \
   --js-library platform/web/hol_web_al.js --js-library platform/web/hol_web_lib.js
 # The languages of the web build (core/hol_str.h; en always): Dutch costs
 # 1.3 KB of the transfer (docs/web.md, "The transfer size").
