@@ -48,8 +48,9 @@
 #define ATLAS_HMAX 1024
 #define CLEAR 1      /* the texels outside every glyph (far outside) */
 #define NGLYPH (1 + 95 + 96)
-/* Data, not code, in a few long lines (the tables in six, the texels 1024
- * a line): a reader of the header wants the definitions at its top,
+/* Data, not code, in a few long lines (each column of the glyph and
+ * kerning tables in one, the texels' starts in six, the texels 1024 a
+ * line): a reader of the header wants the definitions at its top,
  * and a search for repeated code passes over lines this long. */
 #define GLYPHS_A_LINE ((NGLYPH + 5) / 6)
 #define TEXELS_A_LINE (4 * ATLAS_W)
@@ -302,13 +303,13 @@ static int pack_texels(rc_enc *rc)
     return 0;
 }
 
-/* One column of a table: n values, GLYPHS_A_LINE a line. */
+/* One column of a table: its n values on one line. */
 static void print_column(const char *type, const char *name, const char *count, const int *v, int n)
 {
-    printf("static const %s %s[%s] = {\n", type, name, count);
+    printf("static const %s %s[%s] = {\n    ", type, name, count);
     for (int i = 0; i < n; i++)
-        printf("%s%d,%s", i % GLYPHS_A_LINE ? "" : "    ", v[i], i % GLYPHS_A_LINE == GLYPHS_A_LINE - 1 ? "\n" : "");
-    printf("%s};\n", n % GLYPHS_A_LINE ? "\n" : "");
+        printf("%d,", v[i]);
+    printf("\n};\n");
 }
 
 /* The kerning pairs as three columns (a table of columns gzips smaller
