@@ -703,11 +703,11 @@ $(WEB_STAMP): FORCE
 
 FORCE:
 
-# the string table without the page's words, which text.js carries (1.5 KB),
-# in the languages of WEB_LANGS
 # the text face's texels packed only (core/hol_face.h: decoded into the
 # atlas; the CPU's text drawing, render/hol_face_draw.c, is the report's)
 $(BUILD)/web-obj/core/hol_face.o: WEB_CFLAGS += -DHOL_FACE_PACKED
+# the string table without the page's words, which text.js carries (1.5 KB),
+# in the languages of WEB_LANGS
 $(BUILD)/web-obj/core/hol_str.o: WEB_CFLAGS += -DHOL_STR_NO_PAGE $(if $(filter nl,$(WEB_LANGS)),,-DHOL_STR_NO_NL)
 # the renderer's and the platform's libm calls on the core's hol_math.h and
 # a small exp family (render/hol_libm_web.h: musl's were 10.5 KB of
