@@ -632,7 +632,7 @@ quest-check: deps-quest
 EMCC     ?= emcc
 EMCC_ENV := NODE_PATH=/usr/share/nodejs EM_CACHE=/usr/share/emscripten/cache
 WEB      := $(BUILD)/web
-WEB_SRC  := $(CORE_SRC) $(filter-out render/hol_png.c,$(RENDER_SRC)) \
+WEB_SRC  := $(CORE_SRC) $(filter-out render/hol_png.c render/hol_face_draw.c,$(RENDER_SRC)) \
             $(wildcard platform/web/*.c) $(SHELL_SRC) \
             platform/audio/hol_audio.c
 WEB_OBJ  := $(WEB_SRC:%.c=$(BUILD)/web-obj/%.o)
@@ -644,21 +644,26 @@ WEB_OBJ  := $(WEB_SRC:%.c=$(BUILD)/web-obj/%.o)
 # noise; hol_room.c and hol_wfc.c, which run on room steps and new tiles,
 # likewise since issue 36; hol_tile.c and hol_hyper.c since issue 37's
 # last cuts: 0.8 KB), without unrolled loops (issue 37: 0.9 KB; the
-# step 5 % slower, the table the same); the link at -Oz with binaryen's
-# -Oz once more, emmalloc, and Module read only for what page.js gives it
+# step 5 % slower, the table the same); every object as LLVM bitcode
+# (-flto: 3.0 KB, each function keeping its file's level); the link at -Oz
+# with binaryen's -Oz once more, emmalloc, and Module read only for what
+# page.js gives it; no GL_-prefixed extension names (nothing reads
+# GL_EXTENSIONS) and no queue of deferred pointer-lock requests (the one
+# request is made in the mousedown handler, where it runs at once): 0.4 KB
 # (docs/web.md, "The transfer size").
 WEB_HOT  := $(addprefix core/,hol_app_step.c hol_app_geom.c hol_app_view.c hol_math.c hol_motion.c \
   hol_nav.c hol_nav_arena.c hol_nav_field.c hol_nav_line.c \
   hol_world.c hol_world_tree.c)
-WEB_OPT  := -Os
-WEB_OPT_HOT := -O2 -fno-unroll-loops
+WEB_OPT  := -Os -flto
+WEB_OPT_HOT := -O2 -fno-unroll-loops -flto
 WEB_CFLAGS = $(CSTD) $(WARN) $(if $(filter $(WEB_HOT),$<),$(WEB_OPT_HOT),$(WEB_OPT)) -ffp-contract=off \
   -D_DEFAULT_SOURCE -MMD -MP
 WEB_LDFLAGS := -Oz -sBINARYEN_EXTRA_PASSES=-Oz -sMALLOC=emmalloc -sENVIRONMENT=web -sMIN_WEBGL_VERSION=2 -sMAX_WEBGL_VERSION=2 \
   -sALLOW_MEMORY_GROWTH=1 -sINITIAL_MEMORY=67108864 -sTOTAL_STACK=1048576 \
   '-sINCOMING_MODULE_JS_API=[instantiateWasm,canvas,print,printErr]' \
   -sGL_EMULATE_GLES_VERSION_STRING_FORMAT=0 -sGL_SUPPORT_AUTOMATIC_ENABLE_EXTENSIONS=0 \
-  -sTEXTDECODER=2 -sSUPPORT_ERRNO=0 \
+  -sTEXTDECODER=2 -sSUPPORT_ERRNO=0 -sGL_EXTENSIONS_IN_PREFIXED_FORMAT=0 \
+  -sHTML5_SUPPORT_DEFERRING_USER_SENSITIVE_REQUESTS=0 \
   --js-library platform/web/hol_web_al.js --js-library platform/web/hol_web_lib.js
 # The languages of the web build (core/hol_str.h; en always): Dutch costs
 # 1.3 KB of the transfer (docs/web.md, "The transfer size").
@@ -698,6 +703,9 @@ $(WEB_STAMP): FORCE
 
 FORCE:
 
+# the text face's texels packed only (core/hol_face.h: decoded into the
+# atlas; the CPU's text drawing, render/hol_face_draw.c, is the report's)
+$(BUILD)/web-obj/core/hol_face.o: WEB_CFLAGS += -DHOL_FACE_PACKED
 # the string table without the page's words, which text.js carries (1.5 KB),
 # in the languages of WEB_LANGS
 $(BUILD)/web-obj/core/hol_str.o: WEB_CFLAGS += -DHOL_STR_NO_PAGE $(if $(filter nl,$(WEB_LANGS)),,-DHOL_STR_NO_NL)
@@ -720,7 +728,8 @@ $(BUILD)/web-obj/%.o: %.c $(WEB_STAMP)
 	@$(EMCC_ENV) $(EMCC) $(WEB_CFLAGS) -c $< -o $@
 
 # binaryen's -Oz (emscripten's binaryen package) once more on the linked
-# wasm, after emcc's own passes: 0.4 KB; then
+# wasm, after emcc's own passes: 0.4 KB, and 0.4 KB more with the functions
+# sorted by their uses first (--reorder-functions: smaller indices); then
 # emscripten's glue minified by Debian's terser (platform/web/minify.mjs;
 # about 2.3 KB of the gzip'ed transfer, and 2.4 KB more for its top-level
 # names: all renamed but WEB_JS_KEEP, Module for the page and what web-test
@@ -731,7 +740,7 @@ $(WEB)/holonomy.js: $(WEB_OBJ) platform/web/hol_web_lib.js platform/web/hol_web_
 	@mkdir -p $(dir $@)
 	@echo "emcc -o $@"
 	@$(EMCC_ENV) $(EMCC) $(WEB_LDFLAGS) $(WEB_OBJ) -o $@
-	@wasm-opt -Oz --converge $(WEB)/holonomy.wasm -o $(WEB)/holonomy.wasm || { rm -f $@; exit 1; }
+	@wasm-opt --reorder-functions -Oz --converge $(WEB)/holonomy.wasm -o $(WEB)/holonomy.wasm || { rm -f $@; exit 1; }
 	@NODE_PATH=/usr/share/nodejs node platform/web/minify.mjs $@ $@ --toplevel $(WEB_JS_KEEP) || { rm -f $@; exit 1; }
 
 # the page's words in the languages of WEB_LANGS, from core's string table

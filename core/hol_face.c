@@ -6,7 +6,7 @@
 
 #include "hol_face_atlas.h"
 
-_Static_assert(sizeof hol__face_glyphs / sizeof hol__face_glyphs[0] == HOL_FACE_NGLYPH,
+_Static_assert(sizeof hol__face_advance / sizeof hol__face_advance[0] == HOL_FACE_NGLYPH,
                "the generated glyph table has the set of hol_face.h");
 
 void hol_face_get_metrics(hol_face_metrics *out_metrics)
@@ -17,7 +17,119 @@ void hol_face_get_metrics(hol_face_metrics *out_metrics)
     *out_metrics = m;
 }
 
-_Static_assert(HOL_FACE_NTEXEL <= UINT16_MAX, "the glyphs' starts fit hol__face_texel_at");
+/* ---- the texels packed (tests/gen_font.c's pack_texels says how) ---- */
+#define HOL__PROB_BITS 12
+#define HOL__PROB_MOVE 4
+#define HOL__NLEVEL_MAX 16
+
+_Static_assert(HOL_FACE_NLEVEL <= HOL__NLEVEL_MAX, "a level is four bits");
+
+typedef struct hol__face_model {
+    uint16_t texel[(HOL__NLEVEL_MAX + 1) * HOL__NLEVEL_MAX][HOL__NLEVEL_MAX];
+    uint16_t has_ref[2], back[256], dy[128], dx[8];
+} hol__face_model;
+
+typedef struct hol__face_rc {
+    const uint8_t *in;
+    size_t n, at;
+    uint32_t range, code;
+} hol__face_rc;
+
+static uint32_t hol__rc_byte(hol__face_rc *rc)
+{
+    return rc->at < rc->n ? rc->in[rc->at++] : 0u;
+}
+
+static int hol__rc_bit(hol__face_rc *rc, uint16_t *p)
+{
+    uint32_t bound = (rc->range >> HOL__PROB_BITS) * *p;
+    int bit = rc->code >= bound;
+    if (!bit) {
+        rc->range = bound;
+        *p = (uint16_t)(*p + (((1u << HOL__PROB_BITS) - *p) >> HOL__PROB_MOVE));
+    } else {
+        rc->range -= bound;
+        rc->code -= bound;
+        *p = (uint16_t)(*p - (*p >> HOL__PROB_MOVE));
+    }
+    while (rc->range < (1u << 24)) {
+        rc->range <<= 8;
+        rc->code = (rc->code << 8) | hol__rc_byte(rc);
+    }
+    return bit;
+}
+
+static int hol__rc_tree(hol__face_rc *rc, uint16_t *probs, int nbits)
+{
+    int node = 1;
+    for (int i = 0; i < nbits; i++)
+        node = 2 * node + hol__rc_bit(rc, &probs[node]);
+    return node - (1 << nbits);
+}
+
+/* Glyph g's level at (r, c) of its rectangle in px; 0 outside. */
+static int hol__level_at(const uint8_t *px, const uint8_t level_of[256], const hol_face_glyph *g, int r,
+                         int c)
+{
+    if (r < 0 || c < 0 || r >= g->h || c >= g->w)
+        return 0;
+    return level_of[px[(size_t)(g->y + r) * HOL_FACE_ATLAS_W + g->x + c]];
+}
+
+/* Glyph i's texels from the stream into its rectangle of px; -1 when a
+ * level or a reference is out of range. */
+static int hol__unpack_glyph(hol__face_rc *rc, hol__face_model *m, const hol_face_packed *p,
+                             const uint8_t level_of[256], int i, uint8_t *px)
+{
+    const hol_face_glyph gv = hol_face_glyph_at(i), *g = &gv;
+    hol_face_glyph rv_glyph;
+    const hol_face_glyph *ref = NULL;
+    int dy = 0, dx = 0;
+    if (hol__rc_tree(rc, m->has_ref, 1)) {
+        int j = i - hol__rc_tree(rc, m->back, 8);
+        dy = hol__rc_tree(rc, m->dy, 7) - 64;
+        dx = hol__rc_tree(rc, m->dx, 3) - 4;
+        if (j < 0 || j >= i)
+            return -1;
+        rv_glyph = hol_face_glyph_at(j);
+        ref = &rv_glyph;
+    }
+    for (int r = 0; r < g->h; r++)
+        for (int c = 0; c < g->w; c++) {
+            int l = hol__level_at(px, level_of, g, r, c - 1), u = hol__level_at(px, level_of, g, r - 1, c);
+            int grad = l + u - hol__level_at(px, level_of, g, r - 1, c - 1);
+            grad = grad < 0 ? 0 : grad > HOL__NLEVEL_MAX - 1 ? HOL__NLEVEL_MAX - 1 : grad;
+            int rv = ref ? hol__level_at(px, level_of, ref, r + dy, c + dx) : HOL__NLEVEL_MAX;
+            int v = hol__rc_tree(rc, m->texel[rv * HOL__NLEVEL_MAX + grad], 4);
+            if (v >= p->nlevel)
+                return -1;
+            px[(size_t)(g->y + r) * HOL_FACE_ATLAS_W + g->x + c] = p->levels[v];
+        }
+    return 0;
+}
+
+void hol_face_get_packed(hol_face_packed *out_packed)
+{
+    *out_packed = (hol_face_packed){hol__face_packed, HOL_FACE_NPACKED, hol__face_levels, HOL_FACE_NLEVEL};
+}
+
+int hol_face_unpack(const hol_face_packed *p, uint8_t *out_px)
+{
+    hol__face_model m;
+    uint16_t *prob = &m.texel[0][0];
+    for (size_t k = 0; k < sizeof m / sizeof *prob; k++)
+        prob[k] = 1u << (HOL__PROB_BITS - 1);
+    uint8_t level_of[256] = {0};
+    for (int k = 0; k < p->nlevel; k++)
+        level_of[p->levels[k]] = (uint8_t)k;
+    hol__face_rc rc = {p->bytes, p->n, 0, 0xFFFFFFFFu, 0};
+    for (int k = 0; k < 5; k++)
+        rc.code = (rc.code << 8) | hol__rc_byte(&rc);
+    for (int i = 0; i < HOL_FACE_NGLYPH; i++)
+        if (hol__unpack_glyph(&rc, &m, p, level_of, i, out_px) != 0)
+            return -1;
+    return 0;
+}
 
 void hol_face_atlas(uint8_t *out_px, int *out_w, int *out_h)
 {
@@ -26,13 +138,20 @@ void hol_face_atlas(uint8_t *out_px, int *out_w, int *out_h)
     if (!out_px)
         return;
     memset(out_px, HOL_FACE_CLEAR, (size_t)HOL_FACE_ATLAS_W * HOL_FACE_ATLAS_H);
-    for (int i = 0; i < HOL_FACE_NGLYPH; i++) {
-        const hol_face_glyph *g = &hol__face_glyphs[i];
-        for (int r = 0; r < g->h; r++)
-            memcpy(out_px + (size_t)(g->y + r) * HOL_FACE_ATLAS_W + g->x,
-                   hol__face_texels + hol__face_texel_at[i] + (size_t)r * g->w, g->w);
-    }
+#ifdef HOL_FACE_PACKED
+    hol_face_packed p;
+    hol_face_get_packed(&p);
+    (void)hol_face_unpack(&p, out_px); /* never fails: make test unpacks the same bytes */
+#else
+    for (int i = 0; i < HOL_FACE_NGLYPH; i++)
+        for (int r = 0; r < hol__face_h[i]; r++)
+            memcpy(out_px + (size_t)(hol__face_y[i] + r) * HOL_FACE_ATLAS_W + hol__face_x[i],
+                   hol__face_texels + hol__face_texel_at[i] + (size_t)r * hol__face_w[i], hol__face_w[i]);
+#endif
 }
+
+#ifndef HOL_FACE_PACKED
+_Static_assert(HOL_FACE_NTEXEL <= UINT16_MAX, "the glyphs' starts fit hol__face_texel_at");
 
 const uint8_t *hol_face_texels(int index)
 {
@@ -40,6 +159,7 @@ const uint8_t *hol_face_texels(int index)
         index = 0;
     return hol__face_texels + hol__face_texel_at[index];
 }
+#endif
 
 float hol_face_em_per_cap(void)
 {
@@ -123,11 +243,13 @@ int hol_face_index(uint32_t code)
     return 0;
 }
 
-const hol_face_glyph *hol_face_glyph_at(int index)
+hol_face_glyph hol_face_glyph_at(int index)
 {
     if (index < 0 || index >= HOL_FACE_NGLYPH)
         index = 0;
-    return &hol__face_glyphs[index];
+    uint16_t code = (uint16_t)(index == 0 ? 0 : index <= 95 ? 0x20 + index - 1 : 0xA0 + index - 96);
+    return (hol_face_glyph){code, hol__face_advance[index], hol__face_x[index], hol__face_y[index],
+                            hol__face_w[index], hol__face_h[index], hol__face_qx[index], hol__face_qy[index]};
 }
 
 int hol_face_kerning(int a, int b)
@@ -137,9 +259,9 @@ int hol_face_kerning(int a, int b)
     int key = (a << 8) | b, lo = 0, hi = HOL_FACE_NKERN - 1;
     while (lo <= hi) {
         int mid = (lo + hi) / 2;
-        int k = (hol__face_kerns[mid].a << 8) | hol__face_kerns[mid].b;
+        int k = (hol__face_kern_a[mid] << 8) | hol__face_kern_b[mid];
         if (k == key)
-            return hol__face_kerns[mid].units;
+            return hol__face_kern_units[mid];
         if (k < key)
             lo = mid + 1;
         else
@@ -155,7 +277,7 @@ long hol_face_units(const char *text, size_t len, int *out_missing)
     for (size_t pos = 0; pos < len;) {
         int g = hol_face_index(hol_face_decode(text, len, &pos));
         missing += g == 0;
-        units += hol__face_glyphs[g].advance + hol_face_kerning(prev, g);
+        units += hol__face_advance[g] + hol_face_kerning(prev, g);
         prev = g;
     }
     if (out_missing)
@@ -207,7 +329,7 @@ static void hol__line_end(const char *text, size_t len, long max_units, size_t a
     while (pos < len && text[pos] != '\n') {
         size_t start = pos;
         int g = hol_face_index(hol_face_decode(text, len, &pos));
-        long w = hol__face_glyphs[g].advance + hol_face_kerning(prev, g);
+        long w = hol__face_advance[g] + hol_face_kerning(prev, g);
         if (text[start] == ' ') {
             int r = start > at && text[start - 1] != ' ' ? hol__break_rank(text, at, start, pairs)
                                                          : -1;

@@ -29,6 +29,13 @@
  *   outside every rectangle are 1 (far outside). The tables
  *   hold only the rectangles' texels (hol_face_texels): hol_face_atlas
  *   writes the whole atlas into the caller's memory.
+ * - Packed: the same texels are also held packed (hol_face_get_packed: a
+ *   context-modelled range code, tests/gen_font.c's pack_texels, 7.5 KB
+ *   against the texels' 9.4 KB in gzip), which hol_face_unpack decodes
+ *   into the atlas's rectangles (on the stack only: no allocation). Built
+ *   with HOL_FACE_PACKED (the web build), the face holds only these:
+ *   hol_face_atlas decodes them and hol_face_texels is left out; make test
+ *   checks that they decode to the atlas byte for byte.
  * - Wrapping (hol_face_wrap) breaks at spaces: a line holds as many words
  *   as fit the width; the spaces at a break are dropped; a word wider than
  *   the width alone is split between code points (at least one per line);
@@ -59,12 +66,6 @@ typedef struct hol_face_glyph {
     int16_t qx, qy;
 } hol_face_glyph;
 
-/* A kerning pair (glyph indices) and its adjustment in font units. */
-typedef struct hol_face_kern {
-    uint8_t a, b;
-    int16_t units;
-} hol_face_kern;
-
 /* The face's vertical metrics in font units (descent negative). */
 typedef struct hol_face_metrics {
     int units_per_em, ascent, descent, line_gap, cap_height, x_height;
@@ -81,8 +82,22 @@ void hol_face_get_metrics(hol_face_metrics *out_metrics);
  * out_w * out_h bytes (see the contract) written there. */
 void hol_face_atlas(uint8_t *out_px, int *out_w, int *out_h);
 /* Glyph index's texels: the atlas's bytes of its rectangle, w * h, rows
- * top to bottom (an index outside the set: the box's). */
+ * top to bottom (an index outside the set: the box's). Not in a build
+ * with HOL_FACE_PACKED. */
 const uint8_t *hol_face_texels(int index);
+/* The packed texels (see the contract): the stream and the texel values
+ * its levels index. */
+typedef struct hol_face_packed {
+    const uint8_t *bytes;
+    size_t n;
+    const uint8_t *levels;
+    int nlevel;
+} hol_face_packed;
+void hol_face_get_packed(hol_face_packed *out_packed);
+/* Decodes p's glyph texels into their rectangles of out_px (an atlas of
+ * hol_face_atlas's size; the other texels untouched): 0, or -1 when the
+ * stream names a level or a reference out of range. */
+int hol_face_unpack(const hol_face_packed *p, uint8_t *out_px);
 /* Ems per cap height: size = cap height * this. */
 float hol_face_em_per_cap(void);
 
@@ -93,7 +108,8 @@ uint32_t hol_face_decode(const char *text, size_t len, size_t *pos);
 size_t hol_face_text_bad(const char *s, size_t n, uint32_t *out_code);
 /* The glyph index of a code point (0, the box, when it has none). */
 int hol_face_index(uint32_t code);
-const hol_face_glyph *hol_face_glyph_at(int index);
+/* Glyph index's entry (an index outside the set: the box's). */
+hol_face_glyph hol_face_glyph_at(int index);
 /* The kerning between two glyph indices, font units (0 for most). */
 int hol_face_kerning(int a, int b);
 

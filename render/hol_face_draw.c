@@ -29,7 +29,7 @@ static float hol__sample(int gi, const hol_face_glyph *g, float u, float v)
 
 float hol_face_coverage(int g, float u, float v, float edge)
 {
-    const hol_face_glyph *gl = hol_face_glyph_at(g);
+    const hol_face_glyph gv = hol_face_glyph_at(g), *gl = &gv;
     if (gl->w == 0 || gl->h == 0)
         return 0.0f;
     hol_face_metrics m;
@@ -58,7 +58,7 @@ static void hol__blend(uint8_t *p, const float ink[4], float cov)
 static void hol__glyph(const hol_face_canvas *c, int g, float x0, float y0, float k, const float ink[4],
                        float edge)
 {
-    const hol_face_glyph *gl = hol_face_glyph_at(g);
+    const hol_face_glyph gv = hol_face_glyph_at(g), *gl = &gv;
     size_t stride = c->stride ? c->stride : (size_t)c->w * 4;
     int px0 = (int)floorf(x0), py0 = (int)floorf(y0);
     int px1 = (int)ceilf(x0 + gl->w * k), py1 = (int)ceilf(y0 + gl->h * k);
@@ -92,7 +92,7 @@ float hol_face_draw(const hol_face_canvas *canvas, const hol_face_draw_desc *des
         int g = hol_face_index(hol_face_decode(text, len, &pos));
         missing += g == 0;
         units += hol_face_kerning(prev, g);
-        const hol_face_glyph *gl = hol_face_glyph_at(g);
+        const hol_face_glyph gv = hol_face_glyph_at(g), *gl = &gv;
         float pen = desc->x + (float)((double)units * per_unit);
         if (gl->w > 0)
             hol__glyph(canvas, g, pen + gl->qx * k, desc->y + gl->qy * k, k, ink, edge);

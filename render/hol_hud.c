@@ -136,7 +136,7 @@ static float hol__text(hol__px *p, const char *s, size_t len, float x, float y, 
         int gi = hol_face_index(hol_face_decode(s, len, &at));
         if (prev >= 0)
             pen += hol_face_kerning(prev, gi);
-        const hol_face_glyph *g = hol_face_glyph_at(gi);
+        const hol_face_glyph gv = hol_face_glyph_at(gi), *g = &gv;
         if (g->w && g->h)
             hol__glyph(p, &fc, g, x + (float)pen * per, y, k, rgb);
         pen += g->advance;

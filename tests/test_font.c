@@ -11,6 +11,8 @@
  *   the drawn width equals hol_face_width;
  * - wrapping by measured width: no line wider than the width, no word
  *   split unless it alone is wider, blanks at breaks dropped, '\n'.
+ * - the packed texels (the web build's, hol_face_unpack) decode to the
+ *   atlas byte for byte; a cut or damaged stream stays in the atlas.
  * HOL_FONT_SHEET=file.png also writes a sample sheet of every glyph at
  * three sizes, to look at.
  */
@@ -104,14 +106,14 @@ static void test_decode_latin1(void **state)
         int g = hol_face_index(c);
         if (in_set(c)) {
             assert_true(g > 0 && g < HOL_FACE_NGLYPH);
-            assert_int_equal(hol_face_glyph_at(g)->code, c);
+            assert_int_equal(hol_face_glyph_at(g).code, c);
         } else {
             assert_int_equal(g, 0);
         }
     }
     assert_int_equal(hol_face_index(0x20AC), 0); /* the euro sign is not Latin-1 */
-    assert_int_equal(hol_face_glyph_at(-1)->code, 0);
-    assert_int_equal(hol_face_glyph_at(HOL_FACE_NGLYPH)->code, 0);
+    assert_int_equal(hol_face_glyph_at(-1).code, 0);
+    assert_int_equal(hol_face_glyph_at(HOL_FACE_NGLYPH).code, 0);
 }
 
 static void test_decode_malformed(void **state)
@@ -151,7 +153,7 @@ static void test_decode_malformed(void **state)
     long units = hol_face_units(t, strlen(t), &missing);
     assert_int_equal(missing, 3);
     long want = hol_face_units("a", 1, NULL) + hol_face_units("b", 1, NULL) +
-                hol_face_units("\xC3\xA4", 2, NULL) + 3 * (long)hol_face_glyph_at(0)->advance;
+                hol_face_units("\xC3\xA4", 2, NULL) + 3 * (long)hol_face_glyph_at(0).advance;
     assert_true(labs(units - want) < 200); /* only kerning between them differs */
 }
 
@@ -173,6 +175,40 @@ static void test_every_glyph_inks_and_is_not_the_box(void **state)
         if (differ(cell, box) < 20)
             fail_msg("U+%04X draws the missing box", (unsigned)c);
     }
+}
+
+static void test_packed_texels_are_the_atlas(void **state)
+{
+    (void)state;
+    int w, h;
+    hol_face_atlas(NULL, &w, &h);
+    size_t n = (size_t)w * (size_t)h;
+    uint8_t *want = malloc(n), *got = malloc(n + 1);
+    assert_non_null(want);
+    assert_non_null(got);
+    hol_face_atlas(want, &w, &h);
+    hol_face_packed p;
+    hol_face_get_packed(&p);
+    assert_true(p.n > 0 && p.n < n / 4);
+    memset(got, 1, n); /* HOL_FACE_CLEAR: the texels outside every glyph */
+    assert_int_equal(hol_face_unpack(&p, got), 0);
+    assert_memory_equal(got, want, n);
+    /* a cut stream and damaged bytes: never a write outside the atlas */
+    uint8_t *bad = malloc(p.n);
+    assert_non_null(bad);
+    for (int k = 0; k < 64; k++) {
+        memcpy(bad, p.bytes, p.n);
+        hol_face_packed q = p;
+        q.bytes = bad;
+        q.n = (size_t)k * p.n / 64;
+        bad[(size_t)k * 97 % p.n] ^= (uint8_t)(1 + k);
+        got[n] = 0xA5;
+        (void)hol_face_unpack(&q, got);
+        assert_int_equal(got[n], 0xA5);
+    }
+    free(bad);
+    free(want);
+    free(got);
 }
 
 static void test_cases_and_accents_differ(void **state)
@@ -211,7 +247,7 @@ static void test_widths_and_kerning(void **state)
     float w = hol_face_width("Hello", 20);
     assert_true(w > 0 && hol_face_width("Hello", 40) == 2 * w);
     for (int g = 0; g < HOL_FACE_NGLYPH; g++)
-        assert_true(hol_face_glyph_at(g)->advance > 0);
+        assert_true(hol_face_glyph_at(g).advance > 0);
     /* kerning: "AV" and "To" draw tighter than their letters apart */
     assert_true(hol_face_kerning(hol_face_index('A'), hol_face_index('V')) < 0);
     assert_true(hol_face_width("AV", 20) < hol_face_width("A", 20) + hol_face_width("V", 20));
@@ -227,7 +263,7 @@ static void test_widths_and_kerning(void **state)
             assert_true(a * 256 + b > prev);
             prev = a * 256 + b;
             /* a kerned pair still advances */
-            assert_true(hol_face_glyph_at(a)->advance + k > 0);
+            assert_true(hol_face_glyph_at(a).advance + k > 0);
         }
     assert_true(pairs > 100);
     /* the rasteriser's pen moves as hol_face_width measures */
@@ -393,6 +429,7 @@ int main(void)
         cmocka_unit_test(test_decode_latin1),
         cmocka_unit_test(test_decode_malformed),
         cmocka_unit_test(test_every_glyph_inks_and_is_not_the_box),
+        cmocka_unit_test(test_packed_texels_are_the_atlas),
         cmocka_unit_test(test_cases_and_accents_differ),
         cmocka_unit_test(test_widths_and_kerning),
         cmocka_unit_test(test_wrap),
