@@ -75,7 +75,6 @@ typedef hol_gl_proc (*hol_gl_getproc)(const char *name);
     X(PFNGLTEXSUBIMAGE2DPROC, TexSubImage2D, "glTexSubImage2D") \
     X(PFNGLUNIFORM1FPROC, Uniform1f, "glUniform1f") \
     X(PFNGLUNIFORM1IPROC, Uniform1i, "glUniform1i") \
-    X(PFNGLUNIFORM2FPROC, Uniform2f, "glUniform2f") \
     X(PFNGLUNIFORM3FPROC, Uniform3f, "glUniform3f") \
     X(PFNGLUNIFORM4FPROC, Uniform4f, "glUniform4f") \
     X(PFNGLUNIFORM4FVPROC, Uniform4fv, "glUniform4fv") \

@@ -180,12 +180,12 @@ static void hol__uniforms(const hol_gl *gl, hol_prog *pg)
                                         "u_fog", "u_fogd", "u_lin", "u_wedge", "u_wmode",
                                         "u_light", "u_klein", "u_mpu2", "u_tl", "u_eyeh",
                                         "u_lonly", "u_tx", "u_shr", "u_shm", "u_atlas", "u_amb",
-                                        "u_sun", "u_org"};
+                                        "u_sun"};
     GLint *loc[] = {&pg->u_vp, &pg->u_model, &pg->u_mode, &pg->u_id, &pg->u_eye,
                     &pg->u_fog, &pg->u_fogd, &pg->u_lin, &pg->u_wedge, &pg->u_wmode,
                     &pg->u_light, &pg->u_klein, &pg->u_mpu2, &pg->u_tl, &pg->u_eyeh,
                     &pg->u_lonly, &pg->u_tx, &pg->u_shr, &pg->u_shm, &pg->u_atlas, &pg->u_amb,
-                    &pg->u_sun, &pg->u_org};
+                    &pg->u_sun};
     _Static_assert(sizeof names / sizeof names[0] == sizeof loc / sizeof loc[0],
                    "a name per uniform");
     for (size_t i = 0; i < sizeof loc / sizeof loc[0]; i++)

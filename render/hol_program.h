@@ -92,7 +92,7 @@ typedef struct hol_prog {
     GLuint prog;
     GLint u_vp, u_model, u_mode, u_id, u_eye, u_fog, u_fogd, u_lin, u_wedge, u_wmode;
     GLint u_light, u_klein, u_mpu2, u_tl, u_eyeh, u_lonly, u_tx, u_shr, u_shm, u_atlas, u_amb,
-        u_sun, u_org;
+        u_sun;
 } hol_prog;
 
 /* Compile and link key's program into out: 0, or 1 when the GL refused it

@@ -387,9 +387,6 @@ void hol__frame_begin(hol_render *r, const hol_frame_desc *f, float vp[16])
                         hol__srgb_linear(sky[2]));
         r->gl.Uniform1f(r->pg->u_fogd, fogd);
         r->gl.Uniform1i(r->pg->u_lin, r->desc.srgb != 0);
-        /* the dither's pattern from the viewport's corner: an eye's
-         * picture is the same wherever its viewport lies */
-        r->gl.Uniform2f(r->pg->u_org, (float)f->vp_x, (float)f->vp_y);
         r->gl.Uniform1i(r->pg->u_wmode, 0);
         r->gl.Uniform1i(r->pg->u_shm, 1); /* the shadow masks' unit */
         int room = uses[i] == HOL__USE_ROOM || uses[i] == HOL__USE_BACK;

@@ -29,8 +29,6 @@ uniform vec3 u_eye;
 uniform vec3 u_fog;
 uniform float u_fogd;
 uniform int u_lin;
-// the viewport's corner in the window (the dither's origin)
-uniform vec2 u_org;
 uniform vec4 u_wedge;
 uniform int u_wmode;
 #if HOL_TEXT
@@ -91,9 +89,10 @@ vec4 hol_lin_out(vec3 c) {
   vec3 e = mix(12.92 * c, HOL_SRGB_A * s + HOL_SRGB_B * sqrt(s) + HOL_SRGB_C * c + HOL_SRGB_D,
                step(vec3(0.0031308), c));
 #if HOL_LIT
-// the R2 sequence's plane over the pixel in its viewport (one dot, one
-// fract): spread evenly over every few pixels
-  e += fract(dot(gl_FragCoord.xy - u_org, vec2(0.7548776662, 0.5698402910))) * (1.0 / 255.0) -
+// the R2 sequence's plane over the pixel in the window (one dot, one
+// fract; no uniform: llvmpipe loads a uniform per pixel): spread evenly
+// over every few pixels
+  e += fract(dot(gl_FragCoord.xy, vec2(0.7548776662, 0.5698402910))) * (1.0 / 255.0) -
        0.5 / 255.0;
 #endif
   return vec4(e, 1.0);
