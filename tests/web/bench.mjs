@@ -16,7 +16,8 @@
 // - with WEB_BEFORE (another build's folder): the XR frame's main thread of
 //   this build against that one's, interleaved (XR_PAIRS pairs).
 // Environment: BENCH_NATIVE, BENCH_WASM (the two builds of bench_web), WEB,
-// CHROMIUM, FIRST_LOADS, NIGHT_PAIRS, WEB_BEFORE, XR_PAIRS.
+// CHROMIUM, FIRST_LOADS, NIGHT_ONLY (night against day alone, after the
+// wasm and transfer figures), NIGHT_PAIRS, WEB_BEFORE, XR_PAIRS.
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
@@ -67,6 +68,8 @@ const server = await serve(WEB, tmp);
 const browser = await launch(CHROMIUM, path.join(tmp, 'profile'), 800, 600);
 try {
   if (!process.env.WEB_BEFORE) { /* the comparison alone with WEB_BEFORE */
+    const pid = browser.process().pid;
+    if (!process.env.NIGHT_ONLY) { /* NIGHT_ONLY=1: night against day alone */
     // the first frame (lib.mjs firstFrameLoad): FIRST_LOADS first visits of
     // ?mode=flag&seed=1..N after a warm-up load, and three traced for the
     // phases' CPU
@@ -98,7 +101,6 @@ try {
     const p = await openPage(browser, server.base + '/?mode=flag&seed=1', { iwer: true });
     await enterVR(p);
     await p.until(async () => (await p.state(1)) >= 60, 'warm-up XR frames', 120000);
-    const pid = browser.process().pid;
     const c0 = chromiumCpu(pid), f0 = await p.state(1), t0 = Date.now();
     await p.page.evaluate(() => Module._hol_web_xr_cpu_reset());
     await p.until(async () => (await p.state(1)) >= f0 + 120, '120 XR frames', 180000);
@@ -109,6 +111,7 @@ try {
     console.log(`  main thread per XR frame (app step, both eyes' GL calls issued): median ${med.toFixed(2)} ms, p99 ${p99.toFixed(2)} ms over ${n} frames`);
     console.log(`  all chromium processes per XR frame (incl. SwiftShader rasterising): ${((c1 - c0) / (f1 - f0) * 1000).toFixed(1)} ms CPU`);
     await p.ctx.close();
+    }
     // night against day in this run (issue 27): the same explore level with
     // eight lanterns, at day (lanterns not drawn) and at night, on iwer's
     // Quest 3 at 800x600, interleaved day, night, day, night so both see the
