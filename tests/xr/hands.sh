@@ -24,14 +24,8 @@ LAYER=${2:-build/xr/libhol_inject_layer.so}
 out=/tmp/xr-test/hands
 rm -rf "$out" && mkdir -p "$out/check" "$out/check-down" "$out/check-up" "$out/layers"
 fail=0
-check() { if eval "$2"; then echo "xr-test: ok: $1"; else echo "xr-test: FAIL: $1"; fail=1; fi; }
-cat >"$out/layers/XrApiLayer_holonomy_inject.json" <<JSON
-{ "file_format_version": "1.0.0",
-  "api_layer": { "name": "XR_APILAYER_HOLONOMY_inject",
-    "library_path": "$(case $LAYER in /*) echo "$LAYER";; *) echo "$(pwd)/$LAYER";; esac)",
-    "api_version": "1.0", "implementation_version": "1",
-    "description": "holonomy xr-test: tracked hands" } }
-JSON
+. "$(dirname "$0")/lib.sh"
+inject_manifest "$out/layers" "tracked hands"
 printf 'mode explore\nseed 5\nminimap off\ncues none\n' >"$out/level.txt"
 xrl="$out/layers:/usr/share/openxr/1/api_layers/explicit.d"
 xre=XR_APILAYER_LUNARG_core_validation:XR_APILAYER_HOLONOMY_inject

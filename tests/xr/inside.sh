@@ -17,7 +17,7 @@ monado=
 cleanup() { kill $monado "$xvfb" 2>/dev/null; wait 2>/dev/null; }
 trap cleanup EXIT
 fail=0
-check() { if eval "$2"; then echo "xr-test: ok: $1"; else echo "xr-test: FAIL: $1"; fail=1; fi; }
+. "$(dirname "$0")/lib.sh"
 for i in $(seq 1 100); do [ -e /tmp/.X11-unix/X77 ] && break; sleep 0.1; done
 
 # The runtime's service not running yet: one line in words that says so
@@ -245,13 +245,7 @@ check "xr --study: exit 0 ($rc); P02 plays condition six first, in {4,6}, the su
 # read again; the jump walks no room step. Without the layer the same
 # jump walks one step north: the control, so the check can fail.
 mkdir -p "$out/layers" "$out/space-logs" "$out/nospace-logs"
-cat >"$out/layers/XrApiLayer_holonomy_inject.json" <<JSON
-{ "file_format_version": "1.0.0",
-  "api_layer": { "name": "XR_APILAYER_HOLONOMY_inject",
-    "library_path": "$(pwd)/${LAYER:-build/xr/libhol_inject_layer.so}",
-    "api_version": "1.0", "implementation_version": "1",
-    "description": "holonomy xr-test: a reference space change" } }
-JSON
+inject_manifest "$out/layers" "a reference space change"
 printf 'mode explore\nseed 3\nminimap off\n' >"$out/space.txt"
 awk 'BEGIN { for (k = 0; k < 150; k++)
      printf "%.4f f=9 h=1.5,1.6,%.1f,0,0,0,1\n", k / 72.0, (k < 90 ? 1.5 : 0.4) }' >"$out/jump.txt"

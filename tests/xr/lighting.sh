@@ -32,7 +32,7 @@
 set -u
 IN=$1 OUT=$2
 fail=0
-check() { if eval "$2"; then echo "xr-test: ok: $1"; else echo "xr-test: FAIL: $1"; fail=1; fi; }
+. "$(dirname "$0")/lib.sh"
 rm -rf "$OUT" && mkdir -p "$OUT"
 GLASS=1.5,1.3,0.5 FOOT=1.5,0,0.35
 # field F of a probe line "mean M at PX,PY disc D bright N centroid CX"

@@ -20,14 +20,8 @@ LAYER=${2:-build/xr/libhol_inject_layer.so}
 out=/tmp/xr-test/quad
 rm -rf "$out" && mkdir -p "$out/check" "$out/layers"
 fail=0
-check() { if eval "$2"; then echo "xr-test: ok: $1"; else echo "xr-test: FAIL: $1"; fail=1; fi; }
-cat >"$out/layers/XrApiLayer_holonomy_inject.json" <<JSON
-{ "file_format_version": "1.0.0",
-  "api_layer": { "name": "XR_APILAYER_HOLONOMY_inject",
-    "library_path": "$(pwd)/$LAYER",
-    "api_version": "1.0", "implementation_version": "1",
-    "description": "holonomy xr-test: the submitted layers" } }
-JSON
+. "$(dirname "$0")/lib.sh"
+inject_manifest "$out/layers" "the submitted layers"
 printf 'mode flag\nseed 5\nflag Wrf\nminimap off\ncues none\n' >"$out/level.txt"
 xrl="$out/layers:/usr/share/openxr/1/api_layers/explicit.d"
 xre=XR_APILAYER_LUNARG_core_validation:XR_APILAYER_HOLONOMY_inject
