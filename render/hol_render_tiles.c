@@ -124,9 +124,10 @@ static void hol__tile_tangent(const double inv[9], const double u[3], const doub
 
 /* A lit tile's shadows (hol_light.h; the shader's hol_shadow): its pairs'
  * wedges (hol_light_wedge) rastered into its shadow mask (core/hol_shadow.h),
- * kept while the tile, the frame's geometry and its lights in its own
- * frame are the same (hol__shadow_mask), so a still scene chooses no pairs
- * and rasters nothing; u_shr: 1 / (2 A) (A the tile's Klein half side)
+ * kept while the tile, the frame's geometry and its lanterns in its own
+ * frame are the same (hol__shadow_mask; a firefly's slot counts, not its
+ * place: it casts no shadow), so a still scene, fireflies circling or not,
+ * chooses no pairs and rasters nothing; u_shr: 1 / (2 A) (A the tile's Klein half side)
  * and the mask's first texel centre in the masks' texture coordinates. */
 static void hol__item_shadows(hol_render *r, hol__item *it, hol_tile t, const double fr[9],
                               const double inv[9], const int idx[], int n)
@@ -143,7 +144,8 @@ static void hol__item_shadows(hol_render *r, hol__item *it, hol_tile t, const do
     double geo[3] = {lf->cell_m, lf->klein, lf->metres_per_unit};
     uint64_t key = hol__fnv(0xcbf29ce484222325ull, &t, sizeof t);
     key = hol__fnv(key, geo, sizeof geo);
-    key = hol__fnv(key, lp, (size_t)n * sizeof lp[0]);
+    for (int k = 0; k < n; k++) /* a firefly casts no shadow: only its slot is in the key */
+        key = hol__fnv(key, ff[k] ? (const double *)geo : lp[k], sizeof lp[0]);
     key = hol__fnv(key, ff, (size_t)n) | 1;
     it->nsh = 0;
     int k = hol__shadow_mask(r, key, NULL);
