@@ -25,11 +25,14 @@
 # holonomy's PNGs are kept as it writes them (deflate, no further
 # optimisation), so a picture remade from the same tree is the same bytes
 # (tests/cli_pictures.sh checks that this list covers every PNG in
-# render/doc and docs/ and remakes two of them byte for byte).
+# render/doc and docs/ and remakes three of them byte for byte). The
+# browser's pictures are its own PNGs: the same bytes from the same
+# chromium and fonts.
 #
 # In a command: $H is holonomy, $BT the tests' programs' folder, $X the
-# folder where make xr-test keeps its lighting eyes, $O the picture's file,
-# $S a scratch folder (both under the output folder, absolute).
+# folder where make xr-test keeps its lighting eyes, $CHROMIUM the browser,
+# $O the picture's file, $S a scratch folder (both under the output
+# folder, absolute).
 set -u
 BUILD=${BUILD:-build}
 H=$BUILD/holonomy

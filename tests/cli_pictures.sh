@@ -2,8 +2,9 @@
 # cli_pictures.sh - docs/pictures.sh, the commands of the pictures the docs
 # show: its list is exactly the PNGs in render/doc and docs (no picture
 # without a command, no command without its picture), every one has a
-# command, its lanterns are holonomy tile walk's, two quick ones (day,
-# 400 x 300, well under a second each) are remade byte for byte, it writes
+# command, its lanterns are holonomy tile walk's, three quick ones (two
+# day views at 400 x 300, the German tutorial's frame; well under a second
+# each) are remade byte for byte, it writes
 # only under the folder it is given, the pictures it cannot make here are
 # skipped with a line naming what is missing, and its refusals.
 # Rendering them all takes half a minute: make doc-pictures, not make test.
@@ -49,14 +50,15 @@ for q in 5 6; do
     [ -n "$got" ] && [ "$got " = "$want" ] && ok || bad "LANTERNS_$q in docs/pictures.sh is '$got', tile walk says '$want'"
 done
 
-# two remade byte for byte, into a folder of their own, nothing else left there
-if run remake 0 sh "$P" --only view_corner_bare --only view_hud.png "$T/out-dir"; then
-    for f in view_corner_bare.png view_hud.png; do
-        cmp -s "$T/out-dir/$f" "$R/render/doc/$f" && ok ||
-            bad "$f remade differs from render/doc/$f (a rendering change: make doc-pictures, look, commit)"
+# three remade byte for byte (two of render/doc, one of docs), into a
+# folder of their own, nothing else left there
+if run remake 0 sh "$P" --only view_corner_bare --only view_hud.png --only docs/teaching_de.png "$T/out-dir"; then
+    for f in render/doc/view_corner_bare.png render/doc/view_hud.png docs/teaching_de.png; do
+        cmp -s "$T/out-dir/${f##*/}" "$R/$f" && ok ||
+            bad "${f##*/} remade differs from $f (a rendering change: make doc-pictures, look, commit)"
     done
-    [ "$(ls -A "$T/out-dir" | wc -l)" -eq 2 ] && ok || bad "left in the output folder: $(ls -A "$T/out-dir")"
-    grep -q '^pictures.sh: 2 picture(s) written to' "$T/out" && ok || bad "remake: no closing line"
+    [ "$(ls -A "$T/out-dir" | wc -l)" -eq 3 ] && ok || bad "left in the output folder: $(ls -A "$T/out-dir")"
+    grep -q '^pictures.sh: 3 picture(s) written to' "$T/out" && ok || bad "remake: no closing line"
 fi
 
 # a "before" picture is skipped with a line naming its commit unless --before
