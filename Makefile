@@ -31,7 +31,7 @@
 #                   puppeteer-core and iwer, and bids-validator (tests/bids: the
 #                   check of report --bids in tests/cli_report_bids.sh)
 #   make quest-link-check  the APK's sources compiled and linked for this machine
-#   make doc-pictures  every picture in render/doc made again by its command
+#   make doc-pictures  every picture in render/doc and docs made again by its command
 #                   (docs/pictures.sh; PICTURES_ARGS: e.g. --before, --only NAME)
 #   make clean      remove build outputs
 #
@@ -421,11 +421,11 @@ render-test: $(RENDER_TEST_BIN) $(RENDER_TEST_BIN:$(BUILD)/tests/%=render-run-%)
 render-run-%: $(BUILD)/tests/%
 	@$(TEST_MALLOC_ENV) $(SUITE) $< $<
 
-# The pictures of README.md and docs/ (render/doc), each made again by its
+# The pictures of README.md and docs/ (render/doc and docs), each made again by its
 # one command in docs/pictures.sh from this build (docs/rendering.md#pictures-in-the-docs).
 .PHONY: doc-pictures
 doc-pictures: $(BUILD)/holonomy $(BUILD)/tests/test_render_panel $(BUILD)/tests/test_render_depth \
-              $(BUILD)/tests/test_render_body
+              $(BUILD)/tests/test_render_body $(BUILD)/tests/test_font $(BUILD)/tests/png_probe
 	BUILD=$(BUILD) sh docs/pictures.sh $(PICTURES_ARGS)
 
 cli-test: $(patsubst tests/%.sh,cli-run-%,$(call slow_first,$(CLI_TESTS)))
