@@ -127,8 +127,8 @@ struct hol_render {
     /* the programs by slot (render/hol_program.h), each compiled when
      * first used: variants, not uniforms, since a uniform costs llvmpipe
      * a load per pixel and a discard makes it shade before the depth test
-     * (only the wedge's programs discard); only frames with fireflies or
-     * spots pay for their code */
+     * (only the wedge's programs discard); only the tiles whose slots
+     * hold a firefly or a spot pay for their code (hol__item.fx) */
     hol_prog progs[HOL_PROG_SLOTS];
     hol_prog *pg;       /* the current one */
     hol_light_frame lights; /* this frame's (at dusk and night) */
