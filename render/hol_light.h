@@ -190,8 +190,9 @@ typedef struct hol_light_frame {
                                      down or no spot */
     double ssin[HOL_LIGHT_MAX];   /* a spot's sin(tilt); -2: no spot */
     int fx;                       /* 2: a spot is placed, 1: fireflies but
-                                     no spot, 0: neither (the renderer's
-                                     HOL_FX programs) */
+                                     no spot, 0: neither (the most of the
+                                     renderer's HOL_FX programs; each
+                                     tile takes the one its slots need) */
     /* trunk shadows, in a tile's own frame (curvature units; flat: sides) */
     double corner[4][3];          /* its corners: the trunks' axes */
     double refl[4][9];            /* the reflections in its four edges */

@@ -38,7 +38,10 @@
 #include "hol_gl.h"
 
 /* hol_prog_key.fx: what the lit tiles' lights do beyond lanterns (the
- * frame's hol_light_frame.fx, the shaders' HOL_FX). A new kind of light
+ * shaders' HOL_FX): each lit tile's own (what its four slots hold: the
+ * renderer's hol__item.fx), at most the frame's hol_light_frame.fx, so a
+ * tile lit only by round lanterns takes the plain program even in a
+ * frame with fireflies or spots. A new kind of light
  * that needs code of its own takes the next value before
  * HOL_PROG_FX_COUNT (docs/hacking.md#adding-a-light-type). */
 enum {

@@ -278,22 +278,48 @@ int hol__shadow_mask(hol_render *r, uint64_t key, const hol_shadow_mask_desc *d)
     return lru;
 }
 
-/* The programs a lit frame uses, in the order their per-frame uniforms
- * are set (the tiles' with shadow masks current at the end). */
-static const int hol__lit_uses[4] = {HOL__USE_TILES0, HOL__USE_BACK, HOL__USE_ROOM,
-                                     HOL__USE_TILESM};
-
-/* The programs frame f uses, n of them (day: one). */
-static const int *hol__frame_uses(const hol_frame_desc *f, int *n)
+/* The effects' levels (HOL_PROG_FX_*) the lit tiles of this frame take,
+ * a bit each: a tile's own (hol__item.fx: what its slots hold), so a tile
+ * whose slots hold only round lanterns takes the cheapest program even in
+ * a frame with fireflies or spots. */
+static unsigned hol__tile_fx_used(const hol_render *r)
 {
-    static const int day[1] = {HOL__USE_DAY};
-    *n = f->lighting ? 4 : 1;
-    return f->lighting ? hol__lit_uses : day;
+    unsigned m = 0;
+    for (int i = 0; i < r->nitems; i++)
+        if (r->items[i].pass == HOL__PASS_TILE)
+            m |= 1u << r->items[i].fx;
+    return m;
+}
+
+/* The programs frame f uses, n of them, in the order their per-frame
+ * uniforms are set: day's one; or at dusk and night the tiles' of the
+ * lower effects' levels that a tile takes, then the tiles' without
+ * shadows, the room's, and the tiles' with shadow masks (current at the
+ * end). */
+static int hol__frame_uses(const hol_render *r, const hol_frame_desc *f, hol__use out[])
+{
+    if (!f->lighting) {
+        out[0] = (hol__use){HOL__USE_DAY, 0};
+        return 1;
+    }
+    int n = 0, top = r->lights.fx;
+    unsigned m = hol__tile_fx_used(r);
+    for (int fx = 0; fx < top; fx++)
+        if (m >> fx & 1) {
+            out[n++] = (hol__use){HOL__USE_TILES0, fx};
+            out[n++] = (hol__use){HOL__USE_TILESM, fx};
+        }
+    out[n++] = (hol__use){HOL__USE_TILES0, top};
+    out[n++] = (hol__use){HOL__USE_BACK, 0};
+    out[n++] = (hol__use){HOL__USE_ROOM, 0};
+    out[n++] = (hol__use){HOL__USE_TILESM, top};
+    return n;
 }
 
 /* This frame's program for a use (HOL__USE_*): its key from the frame (the
- * lighting, the tiling's flatness, the lights' effects, the view's wedges). */
-hol_prog *hol__frame_prog(hol_render *r, const hol_frame_desc *f, int use)
+ * lighting, the tiling's flatness, the view's wedges) and, for the tiles,
+ * the effects' level fx (HOL_PROG_FX_*, at most the frame's). */
+hol_prog *hol__use_prog(hol_render *r, const hol_frame_desc *f, int use, int fx)
 {
     hol_prog_key k;
     memset(&k, 0, sizeof k);
@@ -307,10 +333,16 @@ hol_prog *hol__frame_prog(hol_render *r, const hol_frame_desc *f, int use)
     }
     if (use >= HOL__USE_TILES0) {
         k.flat = r->lights.flat != 0;
-        k.fx = r->lights.fx;
+        k.fx = fx;
         k.shadow = use == HOL__USE_TILESM;
     }
     return &r->progs[hol_prog_slot(&k)];
+}
+
+/* The frame's program for a use, the tiles' at the frame's effects. */
+hol_prog *hol__frame_prog(hol_render *r, const hol_frame_desc *f, int use)
+{
+    return hol__use_prog(r, f, use, r->lights.fx);
 }
 
 /* Compile, if not yet, the programs this frame uses: a command that draws
@@ -325,9 +357,10 @@ hol_err hol__use_progs(hol_render *r, const hol_frame_desc *f)
     hol_prog_key tk = hol_prog_key_of_slot(HOL_PROG_TEXT_SLOT);
     if (over && !tp->prog && hol_prog_make(&r->gl, &tk, tp))
         return HOL_EUNSUPPORTED;
-    const int *uses = hol__frame_uses(f, &n);
+    hol__use uses[HOL__MAX_USES];
+    n = hol__frame_uses(r, f, uses);
     for (int i = 0; i < n; i++) {
-        hol_prog *pg = hol__frame_prog(r, f, uses[i]);
+        hol_prog *pg = hol__use_prog(r, f, uses[i].use, uses[i].fx);
         hol_prog_key k = hol_prog_key_of_slot((int)(pg - r->progs));
         if (!pg->prog && hol_prog_make(&r->gl, &k, pg))
             return HOL_EUNSUPPORTED;
@@ -375,10 +408,10 @@ void hol__frame_begin(hol_render *r, const hol_frame_desc *f, float vp[16])
         }
     /* the per-frame uniforms of every program the frame uses: day's, or
      * at dusk and night the room's then the tiles' (current at the end) */
-    int n;
-    const int *uses = hol__frame_uses(f, &n);
+    hol__use uses[HOL__MAX_USES];
+    int n = hol__frame_uses(r, f, uses);
     for (int i = 0; i < n; i++) {
-        r->pg = hol__frame_prog(r, f, uses[i]);
+        r->pg = hol__use_prog(r, f, uses[i].use, uses[i].fx);
         r->gl.UseProgram(r->pg->prog);
         r->gl.Uniform3f(r->pg->u_eye, (float)r->view_at[0], (float)r->view_at[1],
                         (float)r->view_at[2]);
@@ -389,11 +422,11 @@ void hol__frame_begin(hol_render *r, const hol_frame_desc *f, float vp[16])
         r->gl.Uniform1i(r->pg->u_lin, r->desc.srgb != 0);
         r->gl.Uniform1i(r->pg->u_wmode, 0);
         r->gl.Uniform1i(r->pg->u_shm, 1); /* the shadow masks' unit */
-        int room = uses[i] == HOL__USE_ROOM || uses[i] == HOL__USE_BACK;
+        int room = uses[i].use == HOL__USE_ROOM || uses[i].use == HOL__USE_BACK;
         r->gl.Uniform1i(r->pg->u_light, room ? 2 + r->lights.flat : 0);
         if (f->lighting)
             hol__frame_lights(r, f);
-        if (uses[i] == HOL__USE_ROOM)
+        if (uses[i].use == HOL__USE_ROOM)
             hol__room_lights(r, f);
     }
 }
@@ -528,6 +561,10 @@ static void hol__set_pass(hol_render *r, const hol_frame_desc *f, int pass, cons
         return;
     }
     if (f->lighting && pass == HOL__PASS_TILE) {
+        unsigned m = hol__tile_fx_used(r);
+        for (int fx = 0; fx < r->lights.fx; fx++) /* the tiles' of lower effects */
+            for (int u = HOL__USE_TILES0; (m >> fx & 1) && u <= HOL__USE_TILESM; u++)
+                hol__set_pass_as(r, f, pass, vp, hol__use_prog(r, f, u, fx));
         hol__set_pass_as(r, f, pass, vp, hol__frame_prog(r, f, HOL__USE_TILES0));
         r->gl.ActiveTexture(GL_TEXTURE1); /* the shadow masks (u_shm) */
         r->gl.BindTexture(GL_TEXTURE_2D, r->shm);
@@ -578,7 +615,8 @@ void hol__execute(hol_render *r, const hol_frame_desc *f, const float vp[16],
             }
             if (f->lighting) { /* a tile with no shadow: the program without */
                 int nsh = it->nl >= 0 ? it->nsh : 0;
-                hol_prog *want = hol__frame_prog(r, f, nsh ? HOL__USE_TILESM : HOL__USE_TILES0);
+                hol_prog *want =
+                    hol__use_prog(r, f, nsh ? HOL__USE_TILESM : HOL__USE_TILES0, it->fx);
                 if (want != r->pg) {
                     r->pg = want;
                     r->gl.UseProgram(want->prog);

@@ -101,6 +101,10 @@ typedef struct hol__item {
     float tx[HOL_PROG_TX_ROWS][4];
     float shr[4];    /* u_shr: its shadow mask's place (hol__item_shadows) */
     int8_t nsh;      /* 1: it has one (0: the programs without shadows) */
+    int8_t fx;       /* lit tiles: the effects its slots need (HOL_PROG_FX_*:
+                      * 0 only round lanterns at their height, 1 a firefly
+                      * or a height of its own, 2 a spot), at most the
+                      * frame's; its program's (hol__use_prog) */
     uint8_t lamps;   /* the lit room: 1 trees and hedges, 0 the backdrop */
     uint32_t first, count; /* index range */
     float model[16];
@@ -123,8 +127,8 @@ struct hol_render {
     /* the programs by slot (render/hol_program.h), each compiled when
      * first used: variants, not uniforms, since a uniform costs llvmpipe
      * a load per pixel and a discard makes it shade before the depth test
-     * (only the wedge's programs discard); only frames with fireflies or
-     * spots pay for their code */
+     * (only the wedge's programs discard); only the tiles whose slots
+     * hold a firefly or a spot pay for their code (hol__item.fx) */
     hol_prog progs[HOL_PROG_SLOTS];
     hol_prog *pg;       /* the current one */
     hol_light_frame lights; /* this frame's (at dusk and night) */
@@ -177,6 +181,12 @@ enum {
     HOL__USE_TILESM, /* with their shadow mask */
     HOL__USE_TEXT    /* the overlays (hand, fade, HUD, panel): text's */
 };
+/* A program's use in a frame and, for the tiles', its effects' level
+ * (HOL_PROG_FX_*); a frame has at most HOL__MAX_USES. */
+typedef struct hol__use {
+    int use, fx;
+} hol__use;
+#define HOL__MAX_USES (4 + 2 * HOL_PROG_FX_COUNT)
 
 /* m = the identity (column-major). */
 static inline void hol__identity(float m[16])
@@ -227,6 +237,7 @@ void hol__static_grow(hol_render *r, int cap);
 void hol__upload_scratch(hol_render *r, uint32_t vbase, uint32_t ibase);
 void hol__fade_rgb(const hol_frame_desc *f, uint8_t out[3]);
 hol_prog *hol__frame_prog(hol_render *r, const hol_frame_desc *f, int use);
+hol_prog *hol__use_prog(hol_render *r, const hol_frame_desc *f, int use, int fx);
 hol_err hol__use_progs(hol_render *r, const hol_frame_desc *f);
 void hol__frame_faded(hol_render *r, const hol_frame_desc *f);
 void hol__frame_begin(hol_render *r, const hol_frame_desc *f, float vp[16]);

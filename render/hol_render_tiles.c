@@ -209,6 +209,12 @@ static void hol__item_lights(hol_render *r, hol__item *it, hol_tile t, int shado
         it->tx[4][k] = i >= 0 ? (float)lf->h[i] : (float)HOL_LIGHT_HEIGHT_M;
         it->tx[5][k] = i >= 0 && !lf->ff[i] ? (float)lf->wt[i] : 0.0f;
         it->tx[6][k] = i >= 0 && lf->ff[i] ? (float)(HOL_LIGHT_FF_WEIGHT * lf->wt[i]) : 0.0f;
+        /* the effects this tile's slots need: its program's (hol__item.fx) */
+        int fx = it->tx[3][k] > -1.5f ? HOL_PROG_FX_SPOTS
+                 : i >= 0 && (lf->ff[i] || it->tx[4][k] != (float)HOL_LIGHT_HEIGHT_M)
+                     ? HOL_PROG_FX_FIREFLIES
+                     : HOL_PROG_FX_NONE;
+        it->fx = (int8_t)(fx > it->fx ? fx : it->fx);
     }
     hol__tile_slot(inv, r->lights.eye, flat, it->tl[3]);
     it->tl[3][3] = 0;
@@ -242,6 +248,8 @@ static int hol__queue_firefly(hol_render *r, const hol__item *tile_it, hol_tile 
     it->first = i0;
     it->count = r->dyn.ni - i0;
     it->dyn = 1;
+    it->fx = HOL_PROG_FX_NONE; /* unlit: the cheapest of the tiles' programs */
+    it->nsh = 0;
     it->key = 2u << 24 | 0xffu << 16 | (uint32_t)(uint16_t)tile_it->branch;
     return 0;
 }
