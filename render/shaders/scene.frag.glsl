@@ -152,9 +152,10 @@ vec4 hol_lambert(vec4 th, vec4 xm, vec4 dh, vec4 id, float nup) {
 // unit folded into u (render/hol_light.h)
 // One slot (dh its height over the point, th its Lambert term's
 // horizontal part, sd its shadow factor, st its spot's sin(tilt)), then
-// the four: slot by slot, so that few values live at once (SwiftShader
-// keeps the four slots' values of a vec4 step in registers together and
-// spills many of them when the slots go side by side; the same numbers)
+// the four: slot by slot, so that few values live at once (the same
+// numbers; SwiftShader compiled the side-by-side form of these programs
+// into code whose cost jumped by a third with unrelated changes:
+// docs/performance.md, night against day on the web)
 #define HOL_V float
 float hol_light(float L, float U, float g, float o, float dh, float nup, float th, float sd,
                 float st) {
