@@ -52,7 +52,7 @@ in float v_Le;
 in vec4 v_th;
 #if HOL_SHD
 uniform sampler2D u_shm;
-uniform vec4 u_shr;
+in vec2 v_st;
 #endif
 // per-light values (u_tx[5]: a lantern's weight, in every lit tile's
 // program: lanterns merged by the budget weigh more than 1)
@@ -114,14 +114,13 @@ float hol_tone(float l) {
 // the tile's mask, one byte a light slot; u_shr: 1 / (2 A) (A the tile's
 // Klein half side), then the mask's first texel centre in u_shm's
 // coordinates. The Klein point k maps to the mask's texel centres (k = +-A
-// on the edge ones); the bilinear mix t of the stored bytes holds u =
+// on the edge ones: v_st, per vertex in scene.vert.glsl, as the map is
+// affine); the bilinear mix t of the stored bytes holds u =
 // (2 t - 1) R, the occlusion is clamp(1/2 + u, 0, 1), and each light is
 // multiplied by 1 - that = clamp(R + 1/2 - 2 R t, 0, 1).
 #if HOL_SHD
 vec4 hol_shadow(float g) {
-  vec2 st = clamp(v_loc.xz * u_shr.x + 0.5, 0.0, 1.0);
-  vec4 t = texture(u_shm, st * vec2((HOL_SHM_N - 1.0) / (HOL_SHM_W * HOL_SHM_N),
-                                    (HOL_SHM_N - 1.0) / (HOL_SHM_H * HOL_SHM_N)) + u_shr.yz);
+  vec4 t = texture(u_shm, v_st);
   return clamp(t * (-2.0 * HOL_SHM_R) + (HOL_SHM_R + 0.5), 0.0, 1.0);
 }
 #else
@@ -129,7 +128,7 @@ vec4 hol_shadow(float g) {
   return vec4(1.0);
 }
 #endif
-// all four slots at once (an empty slot lies far beyond the radius).
+// all four slots (an empty slot lies far beyond the radius).
 // k the fragment's Klein point; hyperbolic: g = 1/sqrt(1 - |k|^2) and
 // cosh x = g L, L = -<(k, 1), l>_L = l.z - k.l.xy, so the squared chord
 // c^2 = 2 (cosh x - 1) = 2 g L - 2, sinh x = sqrt(c^2 (1 + c^2/4)),
@@ -151,38 +150,51 @@ vec4 hol_lambert(vec4 th, vec4 xm, vec4 dh, vec4 id, float nup) {
 // none) multiplies by its cone: cos(angle) = (x <u,t> + sin(tilt) dh)
 // / d, x <u,t> = x <u,p> / sinh x = g x U / sh (flat: U), metres per
 // unit folded into u (render/hol_light.h)
-float hol_lights(vec4 L, vec4 U, float g, float o, float y, float nup, vec4 th, out float ff) {
-  vec4 c2 = max(2.0 * g * L + o, 0.0);
-  vec4 dh = u_tx[4] - y;
+// One slot (dh its height over the point, th its Lambert term's
+// horizontal part, sd its shadow factor, st its spot's sin(tilt)), then
+// the four: slot by slot, so that few values live at once (the same
+// numbers; SwiftShader compiled the side-by-side form of these programs
+// into code whose cost jumped by a third with unrelated changes:
+// docs/performance.md, night against day on the web)
+#define HOL_V float
+float hol_light(float L, float U, float g, float o, float dh, float nup, float th, float sd,
+                float st) {
+  float c2 = max(2.0 * g * L + o, 0.0);
 @include falloff.glsl
-  vec4 id = inversesqrt(max(d2, 1e-8));
-  vec4 f = w * w * num / den;
-  f *= hol_shadow(g);
+  float id = inversesqrt(max(d2, 1e-8));
+  float f = w * w * num / den * sd;
 // the cone: only the programs of frames with a spot (HOL_FX 2 and up)
 // spots (HOL_PROG_FX_SPOTS) and up
 #if HOL_FX >= 2
-  {
 #if HOL_FLAT
-    vec4 hz = U;
+  float hz = U;
 #else
-    vec4 hz = g * x * U / sh;
+  float hz = g * x * U / sh;
 #endif
-    vec4 cone = smoothstep(vec4(HOL_SPOT_COS_O), vec4(HOL_SPOT_COS_I),
-                           (hz + u_tx[3] * dh) * id);
-    f *= mix(cone, vec4(1.0), step(u_tx[3], vec4(-1.5)));
-  }
+  float cone = smoothstep(HOL_SPOT_COS_O, HOL_SPOT_COS_I, (hz + st * dh) * id);
+  f *= mix(cone, 1.0, step(st, -1.5));
 #endif
-  f *= hol_lambert(th, xm, dh, id, nup);
+  return f * (0.3 + 0.7 * max((max(nup, 0.0) * max(dh, 0.0) + th * xm) * id, 0.0));
+}
+float hol_lights(vec4 L, vec4 U, float g, float o, float y, float nup, vec4 th, out float ff) {
+  vec4 dh = u_tx[4] - y, sd = hol_shadow(g), st = u_tx[3];
+  vec4 f = vec4(hol_light(L.x, U.x, g, o, dh.x, nup, th.x, sd.x, st.x),
+                hol_light(L.y, U.y, g, o, dh.y, nup, th.y, sd.y, st.y),
+                hol_light(L.z, U.z, g, o, dh.z, nup, th.z, sd.z, st.z),
+                hol_light(L.w, U.w, g, o, dh.w, nup, th.w, sd.w, st.w));
   ff = dot(f, u_tx[6]);
   return dot(f, u_tx[5]);
 }
+#undef HOL_V
 #else
+#define HOL_V vec4
 float hol_lights(vec4 L, float g2, float o, float dh, float nup, vec4 th) {
   vec4 c2 = max(g2 * L + o, 0.0);
 @include falloff.glsl
   vec4 f = w * w * num / den * hol_shadow(0.5 * g2) * u_tx[5];
   return dot(f, hol_lambert(th, xm, vec4(dh), inversesqrt(max(d2, 1e-8)), nup));
 }
+#undef HOL_V
 #endif
 #endif
 #if HOL_LIT == 2 && HOL_LAMPS

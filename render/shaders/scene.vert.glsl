@@ -81,6 +81,12 @@ out float v_Le;
 // = g L (g^2 L k - l.xy up to g; flat: k - l.xy). Per vertex: t turns
 // little over a prop's face, and the floor's n_h is 0.
 out vec4 v_th;
+#if HOL_SHD
+// the shadow mask's point (scene.frag.glsl's hol_shadow): affine in the
+// Klein point, so interpolation is exact
+uniform vec4 u_shr;
+out vec2 v_st;
+#endif
 vec4 hol_th(vec3 nrm, vec2 k) {
   vec3 nl = dot(nrm, nrm) < 1e-6 ? vec3(0.0, 1.0, 0.0) : normalize(nrm);
 #if HOL_FLAT
@@ -107,6 +113,12 @@ void main() {
   v_L = u_tl[2] - v_loc.x * u_tl[0] - v_loc.z * u_tl[1];
   v_Le = u_tl[3].z - v_loc.x * u_tl[3].x - v_loc.z * u_tl[3].y;
   v_th = hol_th(a_nrm, v_loc.xz);
+#if HOL_SHD
+  v_st = clamp(v_loc.xz * u_shr.x + 0.5, 0.0, 1.0) *
+             vec2((HOL_SHM_N - 1.0) / (HOL_SHM_W * HOL_SHM_N),
+                  (HOL_SHM_N - 1.0) / (HOL_SHM_H * HOL_SHM_N)) +
+         u_shr.yz;
+#endif
 // spots (HOL_PROG_FX_SPOTS) and up
 #if HOL_FX >= 2
   v_U = v_loc.x * u_tx[0] + v_loc.z * u_tx[1] - u_tx[2];
