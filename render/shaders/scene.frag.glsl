@@ -3,6 +3,7 @@
 // comes first: HOL_LIT (0 day, 1 lit tiles, 2 lit room), HOL_FLAT (the
 // {4,4} grid), HOL_WEDGE (discard outside a branch's wedge), HOL_NIGHT (1
 // night, 2 between dusk and night),
+// HOL_VLIT (1: a lit tile's small props, lit per vertex: scene.vert.glsl),
 // HOL_FX (HOL_PROG_FX_*: 0 lanterns, 1 fireflies, 2 spots; a value has
 // the code of those below it: test with >=), HOL_TX_ROWS (u_tx's rows of
 // per-light values), HOL_SHD (1: the tile's shadow mask, HOL_SHM_N its
@@ -50,6 +51,10 @@ uniform vec4 u_tl[4];
 in vec4 v_L;
 in float v_Le;
 in vec4 v_th;
+#if HOL_VLIT
+// a small prop's light, summed per vertex (scene.vert.glsl's hol_vlight)
+in vec2 v_vl;
+#endif
 #if HOL_SHD
 uniform sampler2D u_shm;
 in vec2 v_st;
@@ -271,7 +276,10 @@ void main() {
 #else
     float g = inversesqrt(max(1.0 - kk, 1e-6)), o = -2.0;
 #endif
-#if HOL_FX
+#if HOL_VLIT
+    lam = v_vl.x;
+    lamf = v_vl.y;
+#elif HOL_FX
     lam = hol_lights(v_L, v_U, g, o, v_loc.y, n.y, th, lamf);
 #else
     lam = hol_lights(v_L, 2.0 * g, o, HOL_LIGHT_HEIGHT_M - v_loc.y, n.y, th);

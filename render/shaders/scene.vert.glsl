@@ -97,11 +97,55 @@ vec4 hol_th(vec3 nrm, vec2 k) {
   vec4 gx = a * k.x * v_L - u_tl[0], gy = a * k.y * v_L - u_tl[1];
   return -(gx * nl.x - gy * nl.z) * inversesqrt(max(gx * gx + gy * gy, 1e-20));
 }
-// spots (HOL_PROG_FX_SPOTS) and up
-#if HOL_FX >= 2
+// spots (HOL_PROG_FX_SPOTS) and up; and the per-vertex light's programs
+#if HOL_FX >= 2 || HOL_VLIT
 uniform vec4 u_tx[HOL_TX_ROWS];
+#endif
+#if HOL_FX >= 2
 // <u, (k, 1)>: a spot's direction, affine too
 out vec4 v_U;
+#endif
+#if HOL_VLIT
+// A tile's small props (grass tufts, flowers, mushrooms: the renderer's
+// hol__item.props), lit per vertex: scene.frag.glsl's hol_lights at the
+// vertex (its four slots by the same law, falloff.glsl, and the same
+// Lambert term, the normal turned to the eye, the shadow mask read at the
+// vertex's own point), the lanterns' sum and the fireflies' (v_vl), which
+// the fragment only tone maps; spots are not followed (a tile with a spot
+// in its slots keeps the per-fragment light). docs/rendering.md#lighting
+// says where that departs.
+uniform float u_mpu2;
+uniform vec3 u_eye;
+#if HOL_SHD
+uniform sampler2D u_shm;
+#endif
+out vec2 v_vl;
+#define HOL_V vec4
+void hol_vlight(vec3 wp, vec3 wn, vec4 th) {
+  vec2 k = v_loc.xz;
+  float kk = dot(k, k);
+#if HOL_FLAT
+  float g = 1.0, o = kk;
+#else
+  float g = inversesqrt(max(1.0 - kk, 1e-6)), o = -2.0;
+#endif
+  vec3 n = dot(wn, wn) < 1e-6 ? vec3(0.0, 1.0, 0.0) : normalize(wn);
+  float sgn = dot(n, u_eye - wp) < 0.0 ? -1.0 : 1.0;
+  vec4 dh = u_tx[4] - v_loc.y;
+  vec4 c2 = max(2.0 * g * v_L + o, 0.0);
+@include falloff.glsl
+#if HOL_SHD
+  vec4 sd = clamp(textureLod(u_shm, v_st, 0.0) * (-2.0 * HOL_SHM_R) + (HOL_SHM_R + 0.5), 0.0, 1.0);
+#else
+  vec4 sd = vec4(1.0);
+#endif
+  vec4 f = w * w * num / den * sd *
+           (0.3 + 0.7 * max((max(sgn * n.y, 0.0) * max(dh, 0.0) + sgn * th * xm) *
+                                inversesqrt(max(d2, 1e-8)),
+                            0.0));
+  v_vl = vec2(dot(f, u_tx[5]), dot(f, u_tx[6]));
+}
+#undef HOL_V
 #endif
 #endif
 void main() {
@@ -131,6 +175,9 @@ void main() {
   v_nrm = mat3(u_model) * a_nrm;
 #if HOL_LIT == 2 && HOL_LAMPS
   hol_room_light(w.xyz, v_nrm);
+#endif
+#if HOL_LIT == 1 && HOL_VLIT
+  hol_vlight(w.xyz, v_nrm, v_th);
 #endif
 // the colours are authored in sRGB: the lit mode (0) takes them to linear
 // light here, once a vertex (docs/rendering.md#linear-light); the flat
