@@ -32,7 +32,7 @@ enum {
     HOL__D_WEDGE,
     HOL__D_FX,
     HOL__D_SHADOW,
-    HOL__D_VLIT
+    HOL__D_FX_VLIT
 };
 
 static const hol__dim hol__dims[] = {
@@ -42,7 +42,8 @@ static const hol__dim hol__dims[] = {
     [HOL__D_WEDGE] = {offsetof(hol_prog_key, wedge), 0, 1, 2},
     [HOL__D_FX] = {offsetof(hol_prog_key, fx), 0, 1, HOL_PROG_FX_COUNT},
     [HOL__D_SHADOW] = {offsetof(hol_prog_key, shadow), 0, 1, 2},
-    [HOL__D_VLIT] = {offsetof(hol_prog_key, vlit), 0, 1, 2},
+    /* the small props' per-vertex light: no spots (hol_prog_key.vlit) */
+    [HOL__D_FX_VLIT] = {offsetof(hol_prog_key, fx), 0, 1, HOL_PROG_FX_SPOTS},
 };
 
 /* The program families, in slot order: the fields a family fixes (its
@@ -58,8 +59,11 @@ static const hol__family hol__families[] = {
     {{.lighting = HOL_LIGHT_DAY}, 1, {HOL__D_WEDGE}},                        /* day */
     {{.room = 1}, 3, {HOL__D_LIGHTING, HOL__D_LAMPS, HOL__D_WEDGE}},         /* the lit room */
     {{.room = 0},
-     6,
-     {HOL__D_LIGHTING, HOL__D_FLAT, HOL__D_WEDGE, HOL__D_FX, HOL__D_SHADOW, HOL__D_VLIT}}, /* lit tiles */
+     5,
+     {HOL__D_LIGHTING, HOL__D_FLAT, HOL__D_WEDGE, HOL__D_FX, HOL__D_SHADOW}}, /* lit tiles */
+    {{.vlit = 1},
+     5,
+     {HOL__D_LIGHTING, HOL__D_FLAT, HOL__D_WEDGE, HOL__D_FX_VLIT, HOL__D_SHADOW}}, /* their props */
     {{.text = 1}, 0, {0}},                                                   /* the overlays */
 };
 #define HOL__NFAM (int)(sizeof hol__families / sizeof hol__families[0])

@@ -66,8 +66,8 @@ typedef struct hol_prog_key {
                        * a Lambert term; 0 its backdrop and outer ground
                        * (ambient and sun only, the cheaper path) */
     int vlit;         /* lit tiles: 1 lit per vertex (a tile's small props:
-                       * the vertex shader sums its slots, the fragment only
-                       * tone maps, fogs and writes; spots not followed) */
+                       * the vertex shader lights, fogs and tone maps, the
+                       * fragment only writes; fx below spots) */
 } hol_prog_key;
 
 /* Rows of per-light values a lit tile gives its shaders (u_tx, four
@@ -80,9 +80,9 @@ typedef struct hol_prog_key {
 
 /* day 2 (wedge), lit room 3 x 2 x 2 (lighting, lamps, wedge), lit tiles
  * 3 x 2 x 2 (lighting, flat, wedge) x HOL_PROG_FX_COUNT x 2 (shadow
- * mask) x 2 (vlit), text 1: 159 (render/hol_program.c's table of
- * families) */
-#define HOL_PROG_SLOTS (2 + 12 + 12 * HOL_PROG_FX_COUNT * 2 * 2 + 1)
+ * mask), their small props the same with the effects below spots
+ * (vlit), text 1: 135 (render/hol_program.c's table of families) */
+#define HOL_PROG_SLOTS (2 + 12 + 12 * HOL_PROG_FX_COUNT * 2 + 12 * HOL_PROG_FX_SPOTS * 2 + 1)
 /* The text program's slot (the last). */
 #define HOL_PROG_TEXT_SLOT (HOL_PROG_SLOTS - 1)
 

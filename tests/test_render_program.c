@@ -75,7 +75,8 @@ static void test_every_key(void **state)
                             valid++;
                         }
     assert_int_equal(valid, HOL_PROG_SLOTS);
-    assert_int_equal(HOL_PROG_SLOTS, 2 + 12 + 12 * HOL_PROG_FX_COUNT * 2 * 2 + 1);
+    assert_int_equal(HOL_PROG_SLOTS,
+                     2 + 12 + 12 * HOL_PROG_FX_COUNT * 2 + 12 * HOL_PROG_FX_SPOTS * 2 + 1);
     /* the text program: text alone */
     hol_prog_key text = {HOL_LIGHT_DAY, 0, 0, 0, 0, 0, 1, 0, 0};
     assert_int_equal(hol_prog_slot(&text), HOL_PROG_TEXT_SLOT);
