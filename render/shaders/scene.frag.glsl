@@ -257,33 +257,17 @@ void main() {
   float lam = 0.0, lamf = 0.0, de2 = dot(toeye, toeye);
 #if HOL_LIT == 1
   if (u_light == 1) {
-    vec2 k = v_loc.xz;
 // the Lambert term's horizontal part, the normal turned to the eye as n is
     vec4 th = sgn * v_th;
-    float kk = dot(k, k);
-#if HOL_FLAT
-    float g = 1.0, o = kk;
-#else
-    float g = inversesqrt(max(1.0 - kk, 1e-6)), o = -2.0;
-#endif
+    vec2 go = hol_go(v_loc.xz);
+    float g = go.x, o = go.y;
 #if HOL_FX
     lam = hol_lights(v_L, v_U, g, o, v_loc.y, n.y, th, lamf);
 #else
     lam = hol_lights(v_L, 2.0 * g, o, HOL_LIGHT_HEIGHT_M - v_loc.y, n.y, th);
 #endif
-// fog by the true distance from the eye: the floor distance x from the
-// squared chord c^2 to the eye as for a light (falloff.glsl: x = log(cosh
-// x + sinh x), cosh x = 1 + c^2/2, sinh x = sqrt(c^2 (1 + c^2/4))); flat:
-// x^2 = c^2. Then D^2 = x^2 (metres) + dh^2.
-    float ce2 = max(2.0 * g * v_Le + o, 0.0);
-#if HOL_FLAT
-    float xe2 = ce2;
-#else
-    float xe = log(1.0 + 0.5 * ce2 + sqrt(ce2 + 0.25 * ce2 * ce2));
-    float xe2 = xe * xe;
-#endif
-    float dh = u_eyeh - v_loc.y;
-    de2 = xe2 * u_mpu2 + dh * dh;
+// fog by the true distance from the eye (sky.glsl)
+    de2 = hol_eye_d2(g, o, v_Le, v_loc.y);
   }
 #endif
 #if HOL_LIT == 2 && HOL_LAMPS

@@ -135,13 +135,8 @@ uniform sampler2D u_shm;
 out vec3 v_vc;
 #define HOL_V vec4
 void hol_vlight(vec3 wp, vec3 wn, vec4 th, vec3 cl) {
-  vec2 k = v_loc.xz;
-  float kk = dot(k, k);
-#if HOL_FLAT
-  float g = 1.0, o = kk;
-#else
-  float g = inversesqrt(max(1.0 - kk, 1e-6)), o = -2.0;
-#endif
+  vec2 go = hol_go(v_loc.xz);
+  float g = go.x, o = go.y;
   vec3 n = dot(wn, wn) < 1e-6 ? vec3(0.0, 1.0, 0.0) : normalize(wn);
   float sgn = dot(n, u_eye - wp) < 0.0 ? -1.0 : 1.0;
   n *= sgn;
@@ -159,15 +154,7 @@ void hol_vlight(vec3 wp, vec3 wn, vec4 th, vec3 cl) {
                             0.0));
   float lam = hol_tone(dot(f, u_tx[5])), lamf = dot(f, u_tx[6]);
 // the fog as scene.frag.glsl's, by the true distance from the eye
-  float ce2 = max(2.0 * g * v_Le + o, 0.0);
-#if HOL_FLAT
-  float xe2 = ce2;
-#else
-  float xe = log(1.0 + 0.5 * ce2 + sqrt(ce2 + 0.25 * ce2 * ce2));
-  float xe2 = xe * xe;
-#endif
-  float eh = u_eyeh - v_loc.y;
-  float fog = exp(-(xe2 * u_mpu2 + eh * eh) * (u_fogd * u_fogd));
+  float fog = exp(-hol_eye_d2(g, o, v_Le, v_loc.y) * (u_fogd * u_fogd));
   float sun = max(dot(n, normalize(vec3(0.35, 0.85, 0.40))), 0.0);
   vec3 c = cl * (u_amb + u_sun * sun + u_lcol * lam + u_fcol * lamf);
   v_vc = u_lonly == 1 ? vec3(min(lam, 1.0), fog, min(lamf, 1.0)) : mix(u_fog, c, fog);
