@@ -25,7 +25,15 @@ typedef struct hol__dim {
     int first, step, count;
 } hol__dim;
 
-enum { HOL__D_LIGHTING, HOL__D_LAMPS, HOL__D_FLAT, HOL__D_WEDGE, HOL__D_FX, HOL__D_SHADOW };
+enum {
+    HOL__D_LIGHTING,
+    HOL__D_LAMPS,
+    HOL__D_FLAT,
+    HOL__D_WEDGE,
+    HOL__D_FX,
+    HOL__D_SHADOW,
+    HOL__D_FX_VLIT
+};
 
 static const hol__dim hol__dims[] = {
     [HOL__D_LIGHTING] = {offsetof(hol_prog_key, lighting), HOL_LIGHT_DUSK, 1, 3},
@@ -34,6 +42,8 @@ static const hol__dim hol__dims[] = {
     [HOL__D_WEDGE] = {offsetof(hol_prog_key, wedge), 0, 1, 2},
     [HOL__D_FX] = {offsetof(hol_prog_key, fx), 0, 1, HOL_PROG_FX_COUNT},
     [HOL__D_SHADOW] = {offsetof(hol_prog_key, shadow), 0, 1, 2},
+    /* the small props' per-vertex light: no spots (hol_prog_key.vlit) */
+    [HOL__D_FX_VLIT] = {offsetof(hol_prog_key, fx), 0, 1, HOL_PROG_FX_SPOTS},
 };
 
 /* The program families, in slot order: the fields a family fixes (its
@@ -51,6 +61,9 @@ static const hol__family hol__families[] = {
     {{.room = 0},
      5,
      {HOL__D_LIGHTING, HOL__D_FLAT, HOL__D_WEDGE, HOL__D_FX, HOL__D_SHADOW}}, /* lit tiles */
+    {{.vlit = 1},
+     5,
+     {HOL__D_LIGHTING, HOL__D_FLAT, HOL__D_WEDGE, HOL__D_FX_VLIT, HOL__D_SHADOW}}, /* their props */
     {{.text = 1}, 0, {0}},                                                   /* the overlays */
 };
 #define HOL__NFAM (int)(sizeof hol__families / sizeof hol__families[0])
@@ -84,7 +97,8 @@ static int hol__family_index(const hol__family *f, const hol_prog_key *k)
     static const size_t fields[] = {offsetof(hol_prog_key, lighting), offsetof(hol_prog_key, room),
                                     offsetof(hol_prog_key, flat), offsetof(hol_prog_key, wedge),
                                     offsetof(hol_prog_key, fx), offsetof(hol_prog_key, shadow),
-                                    offsetof(hol_prog_key, text), offsetof(hol_prog_key, lamps)};
+                                    offsetof(hol_prog_key, text), offsetof(hol_prog_key, lamps),
+                                    offsetof(hol_prog_key, vlit)};
     _Static_assert(sizeof fields / sizeof fields[0] * sizeof(int) == sizeof(hol_prog_key),
                    "every field of the key");
     hol_prog_key kc = *k, base = f->base;
@@ -138,7 +152,7 @@ int hol_prog_preamble(const hol_prog_key *k, char *out, size_t n)
                        "#version 300 es\n#define HOL_LIT %d\n#define HOL_FLAT %d\n"
                        "#define HOL_WEDGE %d\n#define HOL_NIGHT %d\n#define HOL_FX %d\n"
                        "#define HOL_TEXT %d\n#define HOL_LAMPS %d\n#define HOL_SPREAD %d.0\n"
-                       "#define HOL_SHD %d\n"
+                       "#define HOL_SHD %d\n#define HOL_VLIT %d\n"
                        "#define HOL_SHM_N " HOL__STR(HOL_SHADOW_MASK_N) ".0\n"
                        "#define HOL_SHM_R " HOL__STR(HOL_SHADOW_MASK_RANGE) "\n"
                        "#define HOL_SHM_W " HOL__STR(HOL_SHADOW_ATLAS_COLS) ".0\n"
@@ -155,7 +169,7 @@ int hol_prog_preamble(const hol_prog_key *k, char *out, size_t n)
                        "#define HOL_SRGB_D " HOL__STR(HOL_SRGB_D) "\n",
                        lit, k->flat, k->wedge,
                        k->lighting == HOL_PROG_CYCLE ? 2 : k->lighting == HOL_LIGHT_NIGHT, k->fx, k->text != 0,
-                       k->lamps != 0, m.spread, k->shadow != 0);
+                       k->lamps != 0, m.spread, k->shadow != 0, k->vlit != 0);
     return len < 0 || (size_t)len >= n ? -1 : len;
 }
 

@@ -10,8 +10,9 @@
  * - A key (hol_prog_key) says what varies: the lighting (core's
  *   hol_app_lighting), the lit room's meshes or the lit tiles, the flat
  *   {4,4} grid, the wedge's discard, the lights' effects (fireflies,
- *   spots), the shadow mask read and the lit room's lamps (its
- *   trees and hedges lantern-lit, or its backdrop on the cheaper path).
+ *   spots), the shadow mask read, the lit room's lamps (its
+ *   trees and hedges lantern-lit, or its backdrop on the cheaper path)
+ *   and the lit tiles' per-vertex light (vlit: their small props).
  *   The day program has only the wedge; the lit room's the lighting, the
  *   lamps and the wedge; the lit tiles' the rest but the lamps.
  *   The text program (text = 1, every other field 0) draws the overlays
@@ -64,6 +65,9 @@ typedef struct hol_prog_key {
     int lamps;        /* lit room: 1 its trees and hedges, lantern-lit with
                        * a Lambert term; 0 its backdrop and outer ground
                        * (ambient and sun only, the cheaper path) */
+    int vlit;         /* lit tiles: 1 lit per vertex (a tile's small props:
+                       * the vertex shader lights, fogs and tone maps, the
+                       * fragment only writes; fx below spots) */
 } hol_prog_key;
 
 /* Rows of per-light values a lit tile gives its shaders (u_tx, four
@@ -76,8 +80,9 @@ typedef struct hol_prog_key {
 
 /* day 2 (wedge), lit room 3 x 2 x 2 (lighting, lamps, wedge), lit tiles
  * 3 x 2 x 2 (lighting, flat, wedge) x HOL_PROG_FX_COUNT x 2 (shadow
- * mask), text 1: 87 (render/hol_program.c's table of families) */
-#define HOL_PROG_SLOTS (2 + 12 + 12 * HOL_PROG_FX_COUNT * 2 + 1)
+ * mask), their small props the same with the effects below spots
+ * (vlit), text 1: 135 (render/hol_program.c's table of families) */
+#define HOL_PROG_SLOTS (2 + 12 + 12 * HOL_PROG_FX_COUNT * 2 + 12 * HOL_PROG_FX_SPOTS * 2 + 1)
 /* The text program's slot (the last). */
 #define HOL_PROG_TEXT_SLOT (HOL_PROG_SLOTS - 1)
 

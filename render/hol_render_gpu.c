@@ -281,13 +281,18 @@ int hol__shadow_mask(hol_render *r, uint64_t key, const hol_shadow_mask_desc *d)
 /* The effects' levels (HOL_PROG_FX_*) the lit tiles of this frame take,
  * a bit each: a tile's own (hol__item.fx: what its slots hold), so a tile
  * whose slots hold only round lanterns takes the cheapest program even in
- * a frame with fireflies or spots. */
+ * a frame with fireflies or spots; bit HOL__VLIT_BIT + fx: a tile of that
+ * level draws its small props per vertex (hol__item.props). */
+#define HOL__VLIT_BIT 8
 static unsigned hol__tile_fx_used(const hol_render *r)
 {
     unsigned m = 0;
     for (int i = 0; i < r->nitems; i++)
-        if (r->items[i].pass == HOL__PASS_TILE)
+        if (r->items[i].pass == HOL__PASS_TILE) {
             m |= 1u << r->items[i].fx;
+            if (r->items[i].props)
+                m |= 1u << (HOL__VLIT_BIT + r->items[i].fx);
+        }
     return m;
 }
 
@@ -304,6 +309,11 @@ static int hol__frame_uses(const hol_render *r, const hol_frame_desc *f, hol__us
     }
     int n = 0, top = r->lights.fx;
     unsigned m = hol__tile_fx_used(r);
+    for (int fx = 0; fx <= top; fx++)
+        if (m >> (HOL__VLIT_BIT + fx) & 1) {
+            out[n++] = (hol__use){HOL__USE_VLIT0, fx};
+            out[n++] = (hol__use){HOL__USE_VLITM, fx};
+        }
     for (int fx = 0; fx < top; fx++)
         if (m >> fx & 1) {
             out[n++] = (hol__use){HOL__USE_TILES0, fx};
@@ -334,7 +344,8 @@ hol_prog *hol__use_prog(hol_render *r, const hol_frame_desc *f, int use, int fx)
     if (use >= HOL__USE_TILES0) {
         k.flat = r->lights.flat != 0;
         k.fx = fx;
-        k.shadow = use == HOL__USE_TILESM;
+        k.shadow = use == HOL__USE_TILESM || use == HOL__USE_VLITM;
+        k.vlit = use >= HOL__USE_VLIT0;
     }
     return &r->progs[hol_prog_slot(&k)];
 }
@@ -565,6 +576,10 @@ static void hol__set_pass(hol_render *r, const hol_frame_desc *f, int pass, cons
         for (int fx = 0; fx < r->lights.fx; fx++) /* the tiles' of lower effects */
             for (int u = HOL__USE_TILES0; (m >> fx & 1) && u <= HOL__USE_TILESM; u++)
                 hol__set_pass_as(r, f, pass, vp, hol__use_prog(r, f, u, fx));
+        for (int fx = 0; fx <= r->lights.fx; fx++) /* the small props' */
+            for (int u = HOL__USE_VLIT0; (m >> (HOL__VLIT_BIT + fx) & 1) && u <= HOL__USE_VLITM;
+                 u++)
+                hol__set_pass_as(r, f, pass, vp, hol__use_prog(r, f, u, fx));
         hol__set_pass_as(r, f, pass, vp, hol__frame_prog(r, f, HOL__USE_TILES0));
         r->gl.ActiveTexture(GL_TEXTURE1); /* the shadow masks (u_shm) */
         r->gl.BindTexture(GL_TEXTURE_2D, r->shm);
@@ -588,11 +603,49 @@ static void hol__item_uniforms(hol_render *r, const hol__item *it)
         r->gl.Uniform4fv(r->pg->u_shr, 1, it->shr);
 }
 
+/* Draw count indices from first of the bound buffers. */
+static void hol__draw(hol_render *r, uint32_t first, uint32_t count, hol_render_stats *st)
+{
+    r->gl.DrawElements(GL_TRIANGLES, (GLsizei)count, GL_UNSIGNED_INT,
+                       (const void *)(uintptr_t)(first * sizeof(uint32_t)));
+    st->draw_calls++;
+    st->triangles += count / 3;
+}
+
+/* A tile item's program (at dusk and night: its effects' level, its
+ * shadow mask or none, vlit: its small props' per-vertex light) and
+ * uniforms. */
+static void hol__tile_state(hol_render *r, const hol_frame_desc *f, const hol__item *it,
+                            int vlit, hol_render_stats *st)
+{
+    if (f->lighting) { /* a tile with no shadow: the program without */
+        int nsh = it->nl >= 0 ? it->nsh : 0;
+        int use = vlit ? (nsh ? HOL__USE_VLITM : HOL__USE_VLIT0)
+                       : (nsh ? HOL__USE_TILESM : HOL__USE_TILES0);
+        hol_prog *want = hol__use_prog(r, f, use, it->fx);
+        if (want != r->pg) {
+            r->pg = want;
+            r->gl.UseProgram(want->prog);
+            st->state_changes++;
+        }
+    }
+    r->gl.UniformMatrix4fv(r->pg->u_model, 1, GL_FALSE, it->model);
+    if (f->lighting)
+        hol__item_uniforms(r, it);
+    if (r->view.wedges) {
+        r->gl.Uniform1i(r->pg->u_wmode, it->branch > 0);
+        r->gl.Uniform4f(r->pg->u_wedge, it->wedge[0], it->wedge[1], it->wedge[2], it->wedge[3]);
+    }
+    if (f->flags & HOL_RENDER_IDS) {
+        int id = it->branch + 1;
+        r->gl.Uniform4f(r->pg->u_id, (float)(id & 255) / 255.0f, (float)(id >> 8) / 255.0f, 0, 1);
+    }
+}
+
 /* Execute the sorted queue, skipping redundant state changes. */
 void hol__execute(hol_render *r, const hol_frame_desc *f, const float vp[16],
                          hol_render_stats *st)
 {
-    int ids = (f->flags & HOL_RENDER_IDS) != 0;
     int cur_vao = 1, cur_pass = -1, cur_ref = -1, cur_mask = -1;
     for (int i = 0; i < r->nitems; i++) {
         const hol__item *it = r->sorted[i];
@@ -613,29 +666,16 @@ void hol__execute(hol_render *r, const hol_frame_desc *f, const float vp[16],
                 cur_mask = it->mask;
                 st->state_changes++;
             }
-            if (f->lighting) { /* a tile with no shadow: the program without */
-                int nsh = it->nl >= 0 ? it->nsh : 0;
-                hol_prog *want =
-                    hol__use_prog(r, f, nsh ? HOL__USE_TILESM : HOL__USE_TILES0, it->fx);
-                if (want != r->pg) {
-                    r->pg = want;
-                    r->gl.UseProgram(want->prog);
+            if (it->props) { /* its small props first, lit per vertex */
+                if (it->dyn != cur_vao) {
+                    cur_vao = it->dyn;
+                    r->gl.BindVertexArray(r->vao[cur_vao]);
                     st->state_changes++;
                 }
+                hol__tile_state(r, f, it, 1, st);
+                hol__draw(r, it->first + it->count - it->props, it->props, st);
             }
-            r->gl.UniformMatrix4fv(r->pg->u_model, 1, GL_FALSE, it->model);
-            if (f->lighting)
-                hol__item_uniforms(r, it);
-            if (r->view.wedges) {
-                r->gl.Uniform1i(r->pg->u_wmode, it->branch > 0);
-                r->gl.Uniform4f(r->pg->u_wedge, it->wedge[0], it->wedge[1], it->wedge[2],
-                                it->wedge[3]);
-            }
-            if (ids) {
-                int id = it->branch + 1;
-                r->gl.Uniform4f(r->pg->u_id, (float)(id & 255) / 255.0f, (float)(id >> 8) / 255.0f,
-                                0, 1);
-            }
+            hol__tile_state(r, f, it, 0, st);
             st->branches += !it->dyn; /* a firefly's sprite is no branch */
         } else if (cur_pass == HOL__PASS_ROOM && f->lighting) {
             hol_prog *want = hol__frame_prog(r, f, it->lamps ? HOL__USE_ROOM : HOL__USE_BACK);
@@ -652,9 +692,6 @@ void hol__execute(hol_render *r, const hol_frame_desc *f, const float vp[16],
             r->gl.BindVertexArray(r->vao[cur_vao]);
             st->state_changes++;
         }
-        r->gl.DrawElements(GL_TRIANGLES, (GLsizei)it->count, GL_UNSIGNED_INT,
-                           (const void *)(uintptr_t)(it->first * sizeof(uint32_t)));
-        st->draw_calls++;
-        st->triangles += it->count / 3;
+        hol__draw(r, it->first, it->count - it->props, st);
     }
 }

@@ -74,6 +74,7 @@ typedef struct hol__slot {
     hol_tile_content content;
     uint64_t last_frame;
     uint32_t nidx;
+    uint32_t nprops; /* its small props: the last nprops of its indices */
 } hol__slot;
 
 enum {
@@ -107,6 +108,11 @@ typedef struct hol__item {
                       * frame's; its program's (hol__use_prog) */
     uint8_t lamps;   /* the lit room: 1 trees and hedges, 0 the backdrop */
     uint32_t first, count; /* index range */
+    /* a lit tile (dusk, night) with no spot in its slots: the last
+     * props of its count are its small props, drawn first and lit per
+     * vertex (the programs with vlit: hol__use_prog's HOL__USE_VLIT*);
+     * 0 day, IDs and every other item: one draw */
+    uint32_t props;
     float model[16];
 } hol__item;
 
@@ -179,6 +185,8 @@ enum {
     HOL__USE_BACK,   /* its backdrop and outer ground: ambient and sun */
     HOL__USE_TILES0, /* lit tiles without shadows */
     HOL__USE_TILESM, /* with their shadow mask */
+    HOL__USE_VLIT0,  /* lit tiles' small props, lit per vertex: no shadows */
+    HOL__USE_VLITM,  /* with their shadow mask */
     HOL__USE_TEXT    /* the overlays (hand, fade, HUD, panel): text's */
 };
 /* A program's use in a frame and, for the tiles', its effects' level
@@ -186,7 +194,7 @@ enum {
 typedef struct hol__use {
     int use, fx;
 } hol__use;
-#define HOL__MAX_USES (4 + 2 * HOL_PROG_FX_COUNT)
+#define HOL__MAX_USES (4 + 4 * HOL_PROG_FX_COUNT)
 
 /* m = the identity (column-major). */
 static inline void hol__identity(float m[16])

@@ -9,9 +9,10 @@
 #include "../core/hol_world.h"
 
 /* The resident mesh of tile t: reused while the tile's content is the
- * same, else (re)built into the least recently used slot. */
-int hol__tile_range(hol_render *r, hol_tile t, int bare, int pole, int kind,
-                           double cell_m, uint32_t *first, uint32_t *count)
+ * same, else (re)built into the least recently used slot; props: the
+ * last of its count that are its small props (hol_scene_tile's). */
+static int hol__tile_range(hol_render *r, hol_tile t, int bare, int pole, int kind,
+                           double cell_m, uint32_t *first, uint32_t *count, uint32_t *props)
 {
     hol_tile_content c;
     memset(&c, 0, sizeof c);
@@ -30,6 +31,7 @@ int hol__tile_range(hol_render *r, hol_tile t, int bare, int pole, int kind,
             sl->last_frame = r->frame;
             *first = HOL__SLOT_IBASE(i);
             *count = sl->nidx;
+            *props = sl->nprops;
             return 1;
         }
         if (sl->last_frame != r->frame &&
@@ -42,7 +44,8 @@ int hol__tile_range(hol_render *r, hol_tile t, int bare, int pole, int kind,
     hol_mesh_clear(&r->scratch);
     r->scratch.cap_v = HOL__SLOT_V;
     r->scratch.cap_i = HOL__SLOT_I;
-    hol_scene_tile(r->scene, &r->scratch, t, r->desc.world, bare, pole, kind, cell_m);
+    uint32_t p0 = 0;
+    hol_scene_tile(r->scene, &r->scratch, t, r->desc.world, bare, pole, kind, cell_m, &p0);
     r->scratch.cap_v = HOL__ROOM_V;
     r->scratch.cap_i = HOL__ROOM_I;
     if (r->scratch.overflow)
@@ -63,9 +66,11 @@ int hol__tile_range(hol_render *r, hol_tile t, int bare, int pole, int kind,
     sl->content = c;
     sl->last_frame = r->frame;
     sl->nidx = r->scratch.ni;
+    sl->nprops = r->scratch.ni - p0;
     r->tiles_built++;
     *first = ibase;
     *count = sl->nidx;
+    *props = sl->nprops;
     return 1;
 }
 
@@ -248,6 +253,7 @@ static int hol__queue_firefly(hol_render *r, const hol__item *tile_it, hol_tile 
     it->first = i0;
     it->count = r->dyn.ni - i0;
     it->dyn = 1;
+    it->props = 0;
     it->fx = HOL_PROG_FX_NONE; /* unlit: the cheapest of the tiles' programs */
     it->nsh = 0;
     it->key = 2u << 24 | 0xffu << 16 | (uint32_t)(uint16_t)tile_it->branch;
@@ -264,10 +270,10 @@ hol_err hol__queue_tiles(hol_render *r, const hol_frame_desc *f, int bare,
         const hol_view_branch *br = &v->branches[k];
         if (br->err)
             continue;
-        uint32_t first, count;
+        uint32_t first, count, props;
         int pole, kind;
         hol__tile_marks(f, br->state.tile, &pole, &kind);
-        if (!hol__tile_range(r, br->state.tile, bare, pole, kind, cell_m, &first, &count))
+        if (!hol__tile_range(r, br->state.tile, bare, pole, kind, cell_m, &first, &count, &props))
             return HOL_ENOMEM;
         hol__item *it = hol__queue_push(r, HOL__PASS_TILE, first, count);
         if (!it)
@@ -282,6 +288,12 @@ hol_err hol__queue_tiles(hol_render *r, const hol_frame_desc *f, int bare,
         it->key = 2u << 24 | (uint32_t)br->nsteps << 16 | (uint32_t)k;
         if (f->lighting)
             hol__item_lights(r, it, br->state.tile, !(f->flags & HOL_RENDER_NO_SHADOWS));
+        /* its small props apart, lit per vertex: a lit tile with a frame
+         * and no spot in its slots, not the IDs' frame */
+        it->props = f->lighting && !(f->flags & HOL_RENDER_IDS) && it->nl >= 0 &&
+                            it->fx < HOL_PROG_FX_SPOTS
+                        ? props
+                        : 0;
         /* tile frame -> room: the tile's heading is room north turned
          * clockwise by orient quarter turns */
         double a = -(double)br->state.orient * 1.5707963267948966;

@@ -10,6 +10,7 @@
 #define HOL__TPL_V 2048
 #define HOL__TPL_I 4096
 #define HOL__PI_2 1.5707963267948966f
+#define HOL__PROPS_MAX 64 /* a tile's small props: at most 48 tufts */
 
 enum {
     HOL__T_PINE, HOL__T_BIRCH, HOL__T_OAK, HOL__T_MAPLE, /* = hol_tree_kind */
@@ -467,8 +468,67 @@ static void hol__lantern(hol_mesh *out)
         out->v[i].rgba[3] = HOL_MESH_GLOW;
 }
 
+/* A tile's small props (grass tufts, flowers, mushrooms): their
+ * templates, places (unit tile) and tints (NULL: none), chosen from rs in
+ * the order they always were, so a tile's props stay where they were;
+ * hol_scene_tile appends them last (the renderer lights them per vertex
+ * at dusk and night: hol_scene.h). */
+typedef struct hol__props {
+    int n;
+    uint8_t tpl[HOL__PROPS_MAX];
+    hol_place q[HOL__PROPS_MAX];
+    const uint8_t *tint[HOL__PROPS_MAX];
+} hol__props;
+
+static void hol__prop(hol__props *sp, int tpl, hol_place q, const uint8_t *tint)
+{
+    if (sp->n >= HOL__PROPS_MAX)
+        return;
+    sp->tpl[sp->n] = (uint8_t)tpl;
+    sp->q[sp->n] = q;
+    sp->tint[sp->n++] = tint;
+}
+
+static void hol__small_props(const hol_tile_content *c, int ncreek, uint64_t *rs,
+                             hol__props *sp)
+{
+    static const uint8_t cols[4][3] = {
+        {240, 240, 250}, {250, 210, 60}, {220, 80, 150}, {140, 110, 230}};
+    sp->n = 0;
+    /* a few tufts on every tile but the wettest */
+    if (c->object != HOL_OBJ_GRASS && c->object != HOL_OBJ_NONE && c->object != HOL_OBJ_POOL)
+        for (int k = 0; k < 10; k++) {
+            hol_place q = {hol__unit(rs) * 0.9f - 0.45f, 0, hol__unit(rs) * 0.9f - 0.45f,
+                           hol__unit(rs) * 6.28f, 0.7f + 0.4f * hol__unit(rs)};
+            if (ncreek && fabsf(q.x) < 0.18f && fabsf(q.z) < 0.18f)
+                continue;
+            hol__prop(sp, HOL__T_TUFT, q, NULL);
+        }
+    if (c->object == HOL_OBJ_GRASS || c->object == HOL_OBJ_NONE) {
+        int n = c->object == HOL_OBJ_GRASS ? 48 : 20;
+        for (int k = 0; k < n; k++) {
+            hol_place q = {hol__unit(rs) * 0.8f - 0.4f, 0, hol__unit(rs) * 0.8f - 0.4f,
+                           hol__unit(rs) * 6.28f, 0.8f + 0.5f * hol__unit(rs)};
+            hol__prop(sp, HOL__T_TUFT, q, NULL);
+        }
+    } else if (c->object == HOL_OBJ_FLOWERS) {
+        for (int k = 0; k < 12; k++) {
+            hol_place q = {hol__unit(rs) * 0.7f - 0.35f, 0, hol__unit(rs) * 0.7f - 0.35f, 0,
+                           0.8f + 0.4f * hol__unit(rs)};
+            hol__prop(sp, HOL__T_FLOWER, q, cols[hol__mix(rs) & 3]);
+        }
+    } else if (c->object == HOL_OBJ_MUSHROOM) {
+        for (int k = 0; k < 5; k++) {
+            hol_place q = {hol__unit(rs) * 0.6f - 0.3f, 0, hol__unit(rs) * 0.6f - 0.3f, 0,
+                           0.7f + 0.6f * hol__unit(rs)};
+            hol__prop(sp, HOL__T_MUSHROOM, q, NULL);
+        }
+    }
+}
+
 void hol_scene_tile(const hol_scene *s, hol_mesh *out, hol_tile t,
-                    struct hol_world *world, int bare, int pole, int kind, double cell_m)
+                    struct hol_world *world, int bare, int pole, int kind, double cell_m,
+                    uint32_t *out_props)
 {
     const float m = cell_m > 0 ? (float)cell_m : 1.0f;
     const uint32_t v0 = out->nv;
@@ -506,41 +566,15 @@ void hol_scene_tile(const hol_scene *s, hol_mesh *out, hol_tile t,
         hol_mesh_quad_y(out, -r, -r, r, r, 0.004f, water, HOL_MESH_FLOOR);
     }
     hol__scale_ground(out, v0, m);
+    *out_props = out->ni;
     if (bare)
         return;
     uint64_t rs = h ^ 0x5eedull;
-    /* a few tufts on every tile but the wettest */
-    if (c.object != HOL_OBJ_GRASS && c.object != HOL_OBJ_NONE && c.object != HOL_OBJ_POOL)
-        for (int k = 0; k < 10; k++) {
-            hol_place q = {hol__unit(&rs) * 0.9f - 0.45f, 0, hol__unit(&rs) * 0.9f - 0.45f,
-                           hol__unit(&rs) * 6.28f, 0.7f + 0.4f * hol__unit(&rs)};
-            if (ncreek && fabsf(q.x) < 0.18f && fabsf(q.z) < 0.18f)
-                continue;
-            hol__put(out, &s->tpl[HOL__T_TUFT], q, m);
-        }
+    hol__props sp;
+    hol__small_props(&c, ncreek, &rs, &sp);
     float rot = (float)(c.rotation & 3) * HOL__PI_2;
     hol_place p = {0, 0, 0, rot, 1};
     switch (c.object) {
-    case HOL_OBJ_GRASS:
-    case HOL_OBJ_NONE: {
-        int n = c.object == HOL_OBJ_GRASS ? 48 : 20;
-        for (int k = 0; k < n; k++) {
-            hol_place q = {hol__unit(&rs) * 0.8f - 0.4f, 0, hol__unit(&rs) * 0.8f - 0.4f,
-                           hol__unit(&rs) * 6.28f, 0.8f + 0.5f * hol__unit(&rs)};
-            hol__put(out, &s->tpl[HOL__T_TUFT], q, m);
-        }
-        break;
-    }
-    case HOL_OBJ_FLOWERS: {
-        static const uint8_t cols[4][3] = {
-            {240, 240, 250}, {250, 210, 60}, {220, 80, 150}, {140, 110, 230}};
-        for (int k = 0; k < 12; k++) {
-            hol_place q = {hol__unit(&rs) * 0.7f - 0.35f, 0, hol__unit(&rs) * 0.7f - 0.35f,
-                           0, 0.8f + 0.4f * hol__unit(&rs)};
-            hol__put_tinted(out, &s->tpl[HOL__T_FLOWER], q, m, cols[hol__mix(&rs) & 3]);
-        }
-        break;
-    }
     case HOL_OBJ_LOG:
         p.yaw = (float)((c.log_partner >= 0 ? c.log_partner : c.rotation) & 3) * HOL__PI_2;
         p.scale = m; /* the half log reaches the edge */
@@ -556,13 +590,6 @@ void hol_scene_tile(const hol_scene *s, hol_mesh *out, hol_tile t,
     }
     case HOL_OBJ_ROCK:
         hol_mesh_append(out, &s->tpl[HOL__T_ROCK], p);
-        break;
-    case HOL_OBJ_MUSHROOM:
-        for (int k = 0; k < 5; k++) {
-            hol_place q = {hol__unit(&rs) * 0.6f - 0.3f, 0, hol__unit(&rs) * 0.6f - 0.3f,
-                           0, 0.7f + 0.6f * hol__unit(&rs)};
-            hol__put(out, &s->tpl[HOL__T_MUSHROOM], q, m);
-        }
         break;
     default: /* game objects: drawn below, as the app says */
         break;
@@ -582,4 +609,13 @@ void hol_scene_tile(const hol_scene *s, hol_mesh *out, hol_tile t,
     }
     if (lantern)
         hol__lantern(out);
+    /* the small props last: their index range is the tile's end */
+    *out_props = out->ni;
+    for (int k = 0; k < sp.n; k++) {
+        const hol_mesh *tpl = &s->tpl[sp.tpl[k]];
+        if (sp.tint[k])
+            hol__put_tinted(out, tpl, sp.q[k], m, sp.tint[k]);
+        else
+            hol__put(out, tpl, sp.q[k], m);
+    }
 }

@@ -53,11 +53,15 @@ void hol_scene_tree_mark(const hol_scene *s, hol_mesh *out, int vx, int vz, doub
  * HOL_RENDER_OBJ_* (0: none) drawn at the tile's centre, or'd with
  * HOL_SCENE_LANTERN for a lantern over the centre (HOL_LIGHT_HEIGHT_M) on
  * a post beside it; the lantern's glass has alpha HOL_MESH_GLOW (the
- * shader draws it unlit, glowing). */
+ * shader draws it unlit, glowing). Its small props (grass tufts, flowers,
+ * mushrooms) come last: out_props receives the index (of out's) where
+ * they begin (out's end when there are none), so the renderer can draw
+ * them apart (lit per vertex at dusk and night: docs/rendering.md#lighting). */
 #define HOL_SCENE_LANTERN 0x100
 #define HOL_MESH_GLOW 100
 void hol_scene_tile(const hol_scene *s, hol_mesh *out, hol_tile t,
-                    struct hol_world *world, int bare, int pole, int kind, double cell_m);
+                    struct hol_world *world, int bare, int pole, int kind, double cell_m,
+                    uint32_t *out_props);
 
 /* Sky / fog colour (linear 0..1). */
 void hol_scene_sky(float out_rgb[3]);

@@ -3,6 +3,8 @@
 // comes first: HOL_LIT (0 day, 1 lit tiles, 2 lit room), HOL_FLAT (the
 // {4,4} grid), HOL_WEDGE (discard outside a branch's wedge), HOL_NIGHT (1
 // night, 2 between dusk and night),
+// HOL_VLIT (1: a lit tile's small props, lit and fogged per vertex:
+// scene.vert.glsl's hol_vlight),
 // HOL_FX (HOL_PROG_FX_*: 0 lanterns, 1 fireflies, 2 spots; a value has
 // the code of those below it: test with >=), HOL_TX_ROWS (u_tx's rows of
 // per-light values), HOL_SHD (1: the tile's shadow mask, HOL_SHM_N its
@@ -20,8 +22,18 @@
 #define HOL_SPOT_COS_O 0.8191520443
 #define HOL_SPOT_COS_I 0.9063077870
 precision highp float;
-in vec3 v_nrm;
-in vec4 v_col;
+// the small props' programs (HOL_VLIT) take their colour from the vertex
+// shader alone (v_vc): the other varyings are plain, unused globals there
+// (SwiftShader sets up every varying of every triangle: a tuft's blades
+// are many small ones)
+#if HOL_VLIT
+#define HOL_IN
+in vec3 v_vc;
+#else
+#define HOL_IN in
+#endif
+HOL_IN vec3 v_nrm;
+HOL_IN vec4 v_col;
 in vec3 v_wpos;
 uniform int u_mode;
 uniform vec4 u_id;
@@ -38,7 +50,7 @@ uniform sampler2D u_atlas;
 #if HOL_LIT
 // lighting (hol_light.h): 1 a tile with its hyperbolic frame; 2 the
 // room's own meshes (no tile: ambient, fog by room distance)
-in vec3 v_loc;
+HOL_IN vec3 v_loc;
 uniform highp int u_light;
 uniform int u_lonly;
 uniform float u_mpu2;
@@ -47,35 +59,24 @@ uniform float u_eyeh;
 // room: its lanterns' cells (x, z in room metres), heights and weights
 uniform vec4 u_tl[4];
 #if HOL_LIT == 1
-in vec4 v_L;
-in float v_Le;
-in vec4 v_th;
+HOL_IN vec4 v_L;
+HOL_IN float v_Le;
+HOL_IN vec4 v_th;
 #if HOL_SHD
 uniform sampler2D u_shm;
-in vec2 v_st;
+HOL_IN vec2 v_st;
 #endif
 // per-light values (u_tx[5]: a lantern's weight, in every lit tile's
 // program: lanterns merged by the budget weigh more than 1)
 uniform vec4 u_tx[HOL_TX_ROWS];
 // spots (HOL_PROG_FX_SPOTS) and up
 #if HOL_FX >= 2
-in vec4 v_U;
+HOL_IN vec4 v_U;
 #else
 const vec4 v_U = vec4(0.0);
 #endif
 #endif
-// the sky (docs/rendering.md#lighting): ambient, sun and lantern colours,
-// linear light (calibrated through the sRGB curve: #linear-light)
-// HOL_NIGHT 2: a sky between dusk and night (a lighting cycle), the
-// frame's mix of the two (render/hol_render_gpu.c's hol__frame_lights)
-#if HOL_NIGHT == 2
-uniform vec3 u_amb, u_sun;
-#elif HOL_NIGHT
-const vec3 u_amb = vec3(0.0129, 0.0151, 0.0276), u_sun = vec3(0.0117, 0.0151, 0.0347);
-#else
-const vec3 u_amb = vec3(0.0980, 0.0772, 0.0873), u_sun = vec3(0.2174, 0.1039, 0.0661);
-#endif
-const vec3 u_lcol = vec3(1.76, 0.99, 0.34), u_fcol = vec3(0.31, 0.51, 0.11);
+@include sky.glsl
 #endif
 out vec4 o_col;
 // linear light out (docs/rendering.md#linear-light): the sRGB buffer takes
@@ -97,17 +98,6 @@ vec4 hol_lin_out(vec3 c) {
 #endif
   return vec4(e, 1.0);
 }
-#if HOL_LIT
-// The tone map of the lanterns' sum l (render/hol_light.h,
-// docs/rendering.md#tone-map): Reinhard's curve with the white level K =
-// HOL_LIGHT_TONE_K, l K / (K + l): slope 1 at 0 (a faint pool keeps its
-// value), never above K, so K times the lanterns' colour (0.75 in red) is
-// the most light the lanterns give a surface: a trunk beside one glows
-// below its own colour, not clipped white.
-float hol_tone(float l) {
-  return l * HOL_LIGHT_TONE_K / (HOL_LIGHT_TONE_K + l);
-}
-#endif
 #if HOL_LIT == 1
 // The shadows of a tile (render/hol_light.h, core/hol_shadow.h): every
 // trunk's shadow from every light of the tile, rastered on the CPU into
@@ -237,6 +227,11 @@ void main() {
         d.x * u_wedge.w - d.y * u_wedge.z < e) discard;
   }
 #endif
+#if HOL_VLIT
+// a small prop: lit, fogged and toned per vertex (scene.vert.glsl's
+// hol_vlight); u_lonly's light, fog and fireflies as they are
+  o_col = u_lonly == 1 ? vec4(v_vc, 1.0) : hol_lin_out(v_vc);
+#else
   if (u_mode == 1) {
     o_col = v_col.a > 0.5 ? u_id : vec4(0.0, 0.0, 0.0, 1.0);
     return;
@@ -262,33 +257,17 @@ void main() {
   float lam = 0.0, lamf = 0.0, de2 = dot(toeye, toeye);
 #if HOL_LIT == 1
   if (u_light == 1) {
-    vec2 k = v_loc.xz;
 // the Lambert term's horizontal part, the normal turned to the eye as n is
     vec4 th = sgn * v_th;
-    float kk = dot(k, k);
-#if HOL_FLAT
-    float g = 1.0, o = kk;
-#else
-    float g = inversesqrt(max(1.0 - kk, 1e-6)), o = -2.0;
-#endif
+    vec2 go = hol_go(v_loc.xz);
+    float g = go.x, o = go.y;
 #if HOL_FX
     lam = hol_lights(v_L, v_U, g, o, v_loc.y, n.y, th, lamf);
 #else
     lam = hol_lights(v_L, 2.0 * g, o, HOL_LIGHT_HEIGHT_M - v_loc.y, n.y, th);
 #endif
-// fog by the true distance from the eye: the floor distance x from the
-// squared chord c^2 to the eye as for a light (falloff.glsl: x = log(cosh
-// x + sinh x), cosh x = 1 + c^2/2, sinh x = sqrt(c^2 (1 + c^2/4))); flat:
-// x^2 = c^2. Then D^2 = x^2 (metres) + dh^2.
-    float ce2 = max(2.0 * g * v_Le + o, 0.0);
-#if HOL_FLAT
-    float xe2 = ce2;
-#else
-    float xe = log(1.0 + 0.5 * ce2 + sqrt(ce2 + 0.25 * ce2 * ce2));
-    float xe2 = xe * xe;
-#endif
-    float dh = u_eyeh - v_loc.y;
-    de2 = xe2 * u_mpu2 + dh * dh;
+// fog by the true distance from the eye (sky.glsl)
+    de2 = hol_eye_d2(g, o, v_Le, v_loc.y);
   }
 #endif
 #if HOL_LIT == 2 && HOL_LAMPS
@@ -305,5 +284,6 @@ void main() {
   // a lantern's glass: unlit
   if (abs(v_col.a - 100.0 / 255.0) < 0.01) c = v_col.rgb * 1.5;
   o_col = hol_lin_out(mix(u_fog, c, f));
+#endif
 #endif
 }

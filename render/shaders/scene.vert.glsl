@@ -13,13 +13,20 @@ uniform mat4 u_model;
 // as scene.frag.glsl's (a uniform of both stages keeps one precision)
 uniform mediump int u_mode;
 uniform mediump int u_lin;
-out vec3 v_nrm;
-out vec4 v_col;
+// the small props' programs (HOL_VLIT) give the fragment their colour
+// alone (v_vc, scene.frag.glsl): the other varyings are plain globals
+#if HOL_VLIT
+#define HOL_OUT
+#else
+#define HOL_OUT out
+#endif
+HOL_OUT vec3 v_nrm;
+HOL_OUT vec4 v_col;
 out vec3 v_wpos;
 #if HOL_LIT
 uniform float u_klein;
 // the Klein point (x, y) of a tile's floor, height
-out vec3 v_loc;
+HOL_OUT vec3 v_loc;
 #endif
 // the tile's four light slots and the eye, in the tile's own frame
 // (hol__item_lights): the x, y, z of lights 0..3, then the eye's; L =
@@ -73,19 +80,19 @@ void hol_room_light(vec3 p, vec3 n) {
 #endif
 #if HOL_LIT == 1
 uniform vec4 u_tl[4];
-out vec4 v_L;
-out float v_Le;
+HOL_OUT vec4 v_L;
+HOL_OUT float v_Le;
 // the Lambert term's horizontal part per light: <n_h, t>, n_h the
 // normal's floor part in the tile's Klein frame (v_loc's z is -z), t the
 // unit floor direction to the light's foot: minus the gradient of cosh x
 // = g L (g^2 L k - l.xy up to g; flat: k - l.xy). Per vertex: t turns
 // little over a prop's face, and the floor's n_h is 0.
-out vec4 v_th;
+HOL_OUT vec4 v_th;
 #if HOL_SHD
 // the shadow mask's point (scene.frag.glsl's hol_shadow): affine in the
 // Klein point, so interpolation is exact
 uniform vec4 u_shr;
-out vec2 v_st;
+HOL_OUT vec2 v_st;
 #endif
 vec4 hol_th(vec3 nrm, vec2 k) {
   vec3 nl = dot(nrm, nrm) < 1e-6 ? vec3(0.0, 1.0, 0.0) : normalize(nrm);
@@ -97,11 +104,62 @@ vec4 hol_th(vec3 nrm, vec2 k) {
   vec4 gx = a * k.x * v_L - u_tl[0], gy = a * k.y * v_L - u_tl[1];
   return -(gx * nl.x - gy * nl.z) * inversesqrt(max(gx * gx + gy * gy, 1e-20));
 }
-// spots (HOL_PROG_FX_SPOTS) and up
-#if HOL_FX >= 2
+// spots (HOL_PROG_FX_SPOTS) and up; and the per-vertex light's programs
+#if HOL_FX >= 2 || HOL_VLIT
 uniform vec4 u_tx[HOL_TX_ROWS];
+#endif
+#if HOL_FX >= 2
 // <u, (k, 1)>: a spot's direction, affine too
-out vec4 v_U;
+HOL_OUT vec4 v_U;
+#endif
+#if HOL_VLIT
+// A tile's small props (grass tufts, flowers, mushrooms: the renderer's
+// hol__item.props), lit, fogged and toned per vertex: scene.frag.glsl's
+// lit tile at the vertex (its four slots by the same law, falloff.glsl,
+// and the same Lambert term, the normal turned to the eye, the shadow
+// mask read at the vertex's own point; the sun's term; the fog by the
+// true distance), its colour in linear light (v_vc), which the fragment
+// only writes; spots are not followed (a tile with a spot in its slots
+// keeps the per-fragment light). docs/rendering.md#lighting says where
+// that departs.
+uniform float u_mpu2;
+uniform vec3 u_eye;
+uniform vec3 u_fog;
+uniform float u_fogd;
+uniform float u_eyeh;
+uniform mediump int u_lonly;
+#if HOL_SHD
+uniform sampler2D u_shm;
+#endif
+@include sky.glsl
+out vec3 v_vc;
+#define HOL_V vec4
+void hol_vlight(vec3 wp, vec3 wn, vec4 th, vec3 cl) {
+  vec2 go = hol_go(v_loc.xz);
+  float g = go.x, o = go.y;
+  vec3 n = dot(wn, wn) < 1e-6 ? vec3(0.0, 1.0, 0.0) : normalize(wn);
+  float sgn = dot(n, u_eye - wp) < 0.0 ? -1.0 : 1.0;
+  n *= sgn;
+  th *= sgn;
+  vec4 dh = u_tx[4] - v_loc.y;
+  vec4 c2 = max(2.0 * g * v_L + o, 0.0);
+@include falloff.glsl
+#if HOL_SHD
+  vec4 sd = clamp(textureLod(u_shm, v_st, 0.0) * (-2.0 * HOL_SHM_R) + (HOL_SHM_R + 0.5), 0.0, 1.0);
+#else
+  vec4 sd = vec4(1.0);
+#endif
+  vec4 f = w * w * num / den * sd *
+           (0.3 + 0.7 * max((max(n.y, 0.0) * max(dh, 0.0) + th * xm) * inversesqrt(max(d2, 1e-8)),
+                            0.0));
+  float lam = hol_tone(dot(f, u_tx[5])), lamf = dot(f, u_tx[6]);
+// the fog as scene.frag.glsl's, by the true distance from the eye
+  float fog = exp(-hol_eye_d2(g, o, v_Le, v_loc.y) * (u_fogd * u_fogd));
+  float sun = max(dot(n, normalize(vec3(0.35, 0.85, 0.40))), 0.0);
+  vec3 c = cl * (u_amb + u_sun * sun + u_lcol * lam + u_fcol * lamf);
+  v_vc = u_lonly == 1 ? vec3(min(lam, 1.0), fog, min(lamf, 1.0)) : mix(u_fog, c, fog);
+}
+#undef HOL_V
 #endif
 #endif
 void main() {
@@ -132,6 +190,7 @@ void main() {
 #if HOL_LIT == 2 && HOL_LAMPS
   hol_room_light(w.xyz, v_nrm);
 #endif
+
 // the colours are authored in sRGB: the lit mode (0) takes them to linear
 // light here, once a vertex (docs/rendering.md#linear-light); the flat
 // mode and the overlays' program keep them as authored, but for an sRGB
@@ -142,6 +201,9 @@ void main() {
   v_col = vec4(u_lin == 1 ? cl : a_col.rgb, a_col.a);
 #else
   v_col = vec4(u_mode == 0 || u_lin == 1 ? cl : a_col.rgb, a_col.a);
+#endif
+#if HOL_LIT == 1 && HOL_VLIT
+  hol_vlight(w.xyz, v_nrm, v_th, cl);
 #endif
   gl_Position = u_vp * w;
 }

@@ -1,0 +1,53 @@
+// sky.glsl - included by scene.frag.glsl and scene.vert.glsl (@include, in
+// the lit programs): the sky's and the lights' colours, the tone map and
+// a lit tile's distance from the eye (the fog's).
+// the sky (docs/rendering.md#lighting): ambient, sun and lantern colours,
+// linear light (calibrated through the sRGB curve: #linear-light)
+// HOL_NIGHT 2: a sky between dusk and night (a lighting cycle), the
+// frame's mix of the two (render/hol_render_gpu.c's hol__frame_lights)
+#if HOL_NIGHT == 2
+uniform vec3 u_amb, u_sun;
+#elif HOL_NIGHT
+const vec3 u_amb = vec3(0.0129, 0.0151, 0.0276), u_sun = vec3(0.0117, 0.0151, 0.0347);
+#else
+const vec3 u_amb = vec3(0.0980, 0.0772, 0.0873), u_sun = vec3(0.2174, 0.1039, 0.0661);
+#endif
+const vec3 u_lcol = vec3(1.76, 0.99, 0.34), u_fcol = vec3(0.31, 0.51, 0.11);
+// The tone map of the lanterns' sum l (render/hol_light.h,
+// docs/rendering.md#tone-map): Reinhard's curve with the white level K =
+// HOL_LIGHT_TONE_K, l K / (K + l): slope 1 at 0 (a faint pool keeps its
+// value), never above K, so K times the lanterns' colour (0.75 in red) is
+// the most light the lanterns give a surface: a trunk beside one glows
+// below its own colour, not clipped white.
+float hol_tone(float l) {
+  return l * HOL_LIGHT_TONE_K / (HOL_LIGHT_TONE_K + l);
+}
+#if HOL_LIT == 1
+// A lit tile's Klein point k: g = 1 / sqrt(1 - |k|^2) and o = -2, so that
+// the squared chord to a slot is c^2 = 2 g L + o (scene.frag.glsl's
+// hol_lights); flat: g = 1, o = |k|^2.
+vec2 hol_go(vec2 k) {
+  float kk = dot(k, k);
+#if HOL_FLAT
+  return vec2(1.0, kk);
+#else
+  return vec2(inversesqrt(max(1.0 - kk, 1e-6)), -2.0);
+#endif
+}
+// Fog by the true distance from the eye: the floor distance x from the
+// squared chord c^2 to the eye as for a light (falloff.glsl: x = log(cosh
+// x + sinh x), cosh x = 1 + c^2/2, sinh x = sqrt(c^2 (1 + c^2/4))); flat:
+// x^2 = c^2. Then D^2 = x^2 (metres) + dh^2, returned; g and o as the
+// lights', le the eye's L, y the point's height.
+float hol_eye_d2(float g, float o, float le, float y) {
+  float ce2 = max(2.0 * g * le + o, 0.0);
+#if HOL_FLAT
+  float xe2 = ce2;
+#else
+  float xe = log(1.0 + 0.5 * ce2 + sqrt(ce2 + 0.25 * ce2 * ce2));
+  float xe2 = xe * xe;
+#endif
+  float dh = u_eyeh - y;
+  return xe2 * u_mpu2 + dh * dh;
+}
+#endif
