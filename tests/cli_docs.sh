@@ -19,6 +19,10 @@
 
 R=$(cd "$(dirname "$0")/.." && pwd)
 case $H in /*) HA=$H ;; *) HA=$(pwd)/$H ;; esac
+# the pages' commands see the block's build/ (the binary under test), not
+# the build a make named (make san-all exports BUILD=build/san, which
+# docs/pictures.sh would read)
+unset BUILD
 PAGES=$(cd "$R" && ls README.md docs/*.md)
 
 # ---- 1. extract: one record a line, fields separated by a tab ------------
