@@ -572,18 +572,18 @@ static void hol__set_pass(hol_render *r, const hol_frame_desc *f, int pass, cons
         return;
     }
     if (f->lighting && pass == HOL__PASS_TILE) {
-        unsigned m = hol__tile_fx_used(r);
-        for (int fx = 0; fx < r->lights.fx; fx++) /* the tiles' of lower effects */
-            for (int u = HOL__USE_TILES0; (m >> fx & 1) && u <= HOL__USE_TILESM; u++)
-                hol__set_pass_as(r, f, pass, vp, hol__use_prog(r, f, u, fx));
-        for (int fx = 0; fx <= r->lights.fx; fx++) /* the small props' */
-            for (int u = HOL__USE_VLIT0; (m >> (HOL__VLIT_BIT + fx) & 1) && u <= HOL__USE_VLITM;
-                 u++)
-                hol__set_pass_as(r, f, pass, vp, hol__use_prog(r, f, u, fx));
-        hol__set_pass_as(r, f, pass, vp, hol__frame_prog(r, f, HOL__USE_TILES0));
+        /* every tile program the frame uses (hol__frame_uses: the last of
+         * them, current after the pass's set, the tiles' with shadows at
+         * the frame's effects) */
+        hol__use uses[HOL__MAX_USES];
+        int n = hol__frame_uses(r, f, uses);
+        for (int i = 0; i < n; i++)
+            if (uses[i].use >= HOL__USE_TILES0)
+                hol__set_pass_as(r, f, pass, vp, hol__use_prog(r, f, uses[i].use, uses[i].fx));
         r->gl.ActiveTexture(GL_TEXTURE1); /* the shadow masks (u_shm) */
         r->gl.BindTexture(GL_TEXTURE_2D, r->shm);
         r->gl.ActiveTexture(GL_TEXTURE0);
+        return;
     }
     if (f->lighting && pass == HOL__PASS_ROOM)
         hol__set_pass_as(r, f, pass, vp, hol__frame_prog(r, f, HOL__USE_BACK));
