@@ -110,8 +110,7 @@ vec4 hol_lin_out(vec3 c) {
 // multiplied by 1 - that = clamp(R + 1/2 - 2 R t, 0, 1).
 #if HOL_SHD
 vec4 hol_shadow(float g) {
-  vec4 t = texture(u_shm, v_st);
-  return clamp(t * (-2.0 * HOL_SHM_R) + (HOL_SHM_R + 0.5), 0.0, 1.0);
+  return hol_shadow_of(texture(u_shm, v_st));
 }
 #else
 vec4 hol_shadow(float g) {
@@ -124,16 +123,6 @@ vec4 hol_shadow(float g) {
 // c^2 = 2 (cosh x - 1) = 2 g L - 2, sinh x = sqrt(c^2 (1 + c^2/4)),
 // x = log(cosh x + sinh x); flat: the slot's z is |l|^2/2 and
 // c^2 = |k - l|^2 = 2 L + |k|^2, x = c
-// The Lambert term of every surface (trunks, posts, props and the floor):
-// max(n_up, 0) max(dh, 0) / d plus the horizontal part <n_h, t> x / d,
-// t the unit floor direction from the point to each light's foot in the
-// tile's Klein frame (th = <n_h, t> per vertex: scene.vert.glsl; the
-// floor's n_h is 0, so its term is the floor's law unchanged), x / d =
-// xm / d with xm the floor distance in metres (falloff.glsl's: x times
-// the metres per unit, no square root of its own).
-vec4 hol_lambert(vec4 th, vec4 xm, vec4 dh, vec4 id, float nup) {
-  return 0.3 + 0.7 * max((max(nup, 0.0) * max(dh, 0.0) + th * xm) * id, 0.0);
-}
 #if HOL_FX
 // per slot: u_tx[4] the light's height, [5] a lantern's weight, [6] a
 // firefly's (the second sum, ff); a spot (u_tx[3] its sin(tilt), -2:
@@ -164,7 +153,7 @@ float hol_light(float L, float U, float g, float o, float dh, float nup, float t
   float cone = smoothstep(HOL_SPOT_COS_O, HOL_SPOT_COS_I, (hz + st * dh) * id);
   f *= mix(cone, 1.0, step(st, -1.5));
 #endif
-  return f * (0.3 + 0.7 * max((max(nup, 0.0) * max(dh, 0.0) + th * xm) * id, 0.0));
+  return f * hol_lambert(th, xm, dh, id, nup);
 }
 float hol_lights(vec4 L, vec4 U, float g, float o, float y, float nup, vec4 th, out float ff) {
   vec4 dh = u_tx[4] - y, sd = hol_shadow(g), st = u_tx[3];

@@ -145,13 +145,11 @@ void hol_vlight(vec3 wp, vec3 wn, vec4 th, vec3 cl) {
   vec4 c2 = max(2.0 * g * v_L + o, 0.0);
 @include falloff.glsl
 #if HOL_SHD
-  vec4 sd = clamp(textureLod(u_shm, v_st, 0.0) * (-2.0 * HOL_SHM_R) + (HOL_SHM_R + 0.5), 0.0, 1.0);
+  vec4 sd = hol_shadow_of(textureLod(u_shm, v_st, 0.0));
 #else
   vec4 sd = vec4(1.0);
 #endif
-  vec4 f = w * w * num / den * sd *
-           (0.3 + 0.7 * max((max(n.y, 0.0) * max(dh, 0.0) + th * xm) * inversesqrt(max(d2, 1e-8)),
-                            0.0));
+  vec4 f = w * w * num / den * sd * hol_lambert(th, xm, dh, inversesqrt(max(d2, 1e-8)), n.y);
   float lam = hol_tone(dot(f, u_tx[5])), lamf = dot(f, u_tx[6]);
 // the fog as scene.frag.glsl's, by the true distance from the eye
   float fog = exp(-hol_eye_d2(g, o, v_Le, v_loc.y) * (u_fogd * u_fogd));

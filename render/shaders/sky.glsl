@@ -1,6 +1,7 @@
 // sky.glsl - included by scene.frag.glsl and scene.vert.glsl (@include, in
-// the lit programs): the sky's and the lights' colours, the tone map and
-// a lit tile's distance from the eye (the fog's).
+// the lit programs): the sky's and the lights' colours, the tone map, a
+// lit tile's Lambert term, shadow factor and distance from the eye (the
+// fog's).
 // the sky (docs/rendering.md#lighting): ambient, sun and lantern colours,
 // linear light (calibrated through the sRGB curve: #linear-light)
 // HOL_NIGHT 2: a sky between dusk and night (a lighting cycle), the
@@ -34,6 +35,27 @@ vec2 hol_go(vec2 k) {
   return vec2(inversesqrt(max(1.0 - kk, 1e-6)), -2.0);
 #endif
 }
+// The Lambert term of every surface (trunks, posts, props and the floor):
+// max(n_up, 0) max(dh, 0) / d plus the horizontal part <n_h, t> x / d,
+// t the unit floor direction from the point to each light's foot in the
+// tile's Klein frame (th = <n_h, t> per vertex: scene.vert.glsl; the
+// floor's n_h is 0, so its term is the floor's law unchanged), x / d =
+// xm / d with xm the floor distance in metres (falloff.glsl's: x times
+// the metres per unit, no square root of its own); the four slots at
+// once or one.
+vec4 hol_lambert(vec4 th, vec4 xm, vec4 dh, vec4 id, float nup) {
+  return 0.3 + 0.7 * max((max(nup, 0.0) * max(dh, 0.0) + th * xm) * id, 0.0);
+}
+float hol_lambert(float th, float xm, float dh, float id, float nup) {
+  return 0.3 + 0.7 * max((max(nup, 0.0) * max(dh, 0.0) + th * xm) * id, 0.0);
+}
+#if HOL_SHD
+// A tile's shadow mask read at a point (t, the bilinear mix of its bytes)
+// to each slot's factor (scene.frag.glsl's hol_shadow says how).
+vec4 hol_shadow_of(vec4 t) {
+  return clamp(t * (-2.0 * HOL_SHM_R) + (HOL_SHM_R + 0.5), 0.0, 1.0);
+}
+#endif
 // Fog by the true distance from the eye: the floor distance x from the
 // squared chord c^2 to the eye as for a light (falloff.glsl: x = log(cosh
 // x + sinh x), cosh x = 1 + c^2/2, sinh x = sqrt(c^2 (1 + c^2/4))); flat:
