@@ -161,9 +161,10 @@ void hol_mesh_frustum(hol_mesh *m, int n, float r0, float y0, float r1, float y1
         n = 3;
     if (n > 32)
         n = 32;
-    int cap = r1 > 0;
-    int64_t b = hol_mesh_reserve(m, (uint32_t)(4 * n + (cap ? n : 0)),
-                                 (uint32_t)(6 * n + (cap ? 3 * (n - 2) : 0)));
+    int cap = r1 > 0, cone = r1 <= 0; /* a cone: one triangle a side */
+    uint32_t side_v = cone ? 3u : 4u, side_i = cone ? 3u : 6u;
+    int64_t b = hol_mesh_reserve(m, (uint32_t)n * side_v + (uint32_t)(cap ? n : 0),
+                                 (uint32_t)n * side_i + (uint32_t)(cap ? 3 * (n - 2) : 0));
     if (b < 0)
         return;
     float h = y1 - y0, slope = (r0 - r1) / (h != 0 ? h : 1);
@@ -175,9 +176,11 @@ void hol_mesh_frustum(hol_mesh *m, int n, float r0, float y0, float r1, float y1
         hol__vtx(m, r0 * cosf(a0), y0, -r0 * sinf(a0), nx, slope, nz, rgb, HOL_MESH_PROP);
         hol__vtx(m, r0 * cosf(a1), y0, -r0 * sinf(a1), nx, slope, nz, rgb, HOL_MESH_PROP);
         hol__vtx(m, r1 * cosf(a1), y1, -r1 * sinf(a1), nx, slope, nz, rgb, HOL_MESH_PROP);
-        hol__vtx(m, r1 * cosf(a0), y1, -r1 * sinf(a0), nx, slope, nz, rgb, HOL_MESH_PROP);
         hol__tri(m, base, base + 1, base + 2);
-        hol__tri(m, base, base + 2, base + 3);
+        if (!cone) { /* a cone's second triangle would have no area */
+            hol__vtx(m, r1 * cosf(a0), y1, -r1 * sinf(a0), nx, slope, nz, rgb, HOL_MESH_PROP);
+            hol__tri(m, base, base + 2, base + 3);
+        }
     }
     if (cap) {
         uint32_t base = m->nv;
