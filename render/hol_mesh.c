@@ -162,9 +162,11 @@ void hol_mesh_frustum(hol_mesh *m, int n, float r0, float y0, float r1, float y1
     if (n > 32)
         n = 32;
     int cap = r1 > 0, cone = r1 <= 0; /* a cone: one triangle a side */
+    int inside = y0 > 0; /* an open bottom above the ground: seen into */
     uint32_t side_v = cone ? 3u : 4u, side_i = cone ? 3u : 6u;
     int64_t b = hol_mesh_reserve(m, (uint32_t)n * side_v + (uint32_t)(cap ? n : 0),
-                                 (uint32_t)n * side_i + (uint32_t)(cap ? 3 * (n - 2) : 0));
+                                 (uint32_t)n * side_i * (inside ? 2u : 1u) +
+                                     (uint32_t)(cap ? 3 * (n - 2) : 0));
     if (b < 0)
         return;
     float h = y1 - y0, slope = (r0 - r1) / (h != 0 ? h : 1);
@@ -190,6 +192,15 @@ void hol_mesh_frustum(hol_mesh *m, int n, float r0, float y0, float r1, float y1
         }
         for (int i = 1; i + 1 < n; i++)
             hol__tri(m, base, base + (uint32_t)i, base + (uint32_t)i + 1);
+    }
+    /* seen from below through its open bottom (a pine's crown from under
+     * it): the sides' inner faces, the same triangles wound the other way
+     * (the room and tile passes cull back faces) */
+    for (int i = 0; i < n && inside; i++) {
+        uint32_t base = (uint32_t)b + (uint32_t)i * side_v;
+        hol__tri(m, base, base + 2, base + 1);
+        if (!cone)
+            hol__tri(m, base, base + 3, base + 2);
     }
 }
 

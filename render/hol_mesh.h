@@ -70,7 +70,10 @@ void hol_mesh_quad_y(hol_mesh *m, float x0, float z0, float x1, float z1, float 
 void hol_mesh_box(hol_mesh *m, const float lo[3], const float hi[3],
                   const uint8_t rgb[3]);
 /* A prism/frustum around the y axis: n sides, radius r0 at y0, r1 at y1
- * (r1 = 0: a cone, one triangle a side), with a cap on top when r1 > 0. */
+ * (r1 = 0: a cone, one triangle a side), with a cap on top when r1 > 0;
+ * every triangle wound counter-clockwise seen from outside, and with y0
+ * above the ground (an open bottom one can look into) the sides' inner
+ * faces too, wound the other way. */
 void hol_mesh_frustum(hol_mesh *m, int n, float r0, float y0, float r1, float y1,
                       const uint8_t rgb[3]);
 /* A low-poly blob (octahedron stretched by sx, sy, sz) centred at c. */

@@ -642,11 +642,50 @@ static void hol__tile_state(hol_render *r, const hol_frame_desc *f, const hol__i
     }
 }
 
+/* The scissor: box (hol__item.box; NULL or w 0: the viewport) when cur
+ * (the one set) differs. */
+static void hol__scissor(hol_render *r, const hol_frame_desc *f, const int32_t *box,
+                         int32_t cur[4])
+{
+    static const int32_t whole[4] = {0, 0, 0, 0};
+    if (!box || !box[2])
+        box = whole;
+    if (!memcmp(box, cur, 4 * sizeof cur[0]))
+        return;
+    memcpy(cur, box, 4 * sizeof cur[0]);
+    if (box[2])
+        r->gl.Scissor(box[0], box[1], box[2], box[3]);
+    else
+        r->gl.Scissor(f->vp_x, f->vp_y, f->cam.width, f->cam.height);
+}
+
+/* Back faces culled (on) or not, when *cur (the state set) differs. The
+ * room's and the tiles' resident meshes are closed or seen from their
+ * normal's side only, each triangle wound counter-clockwise seen from
+ * that side (tests/test_render_cull.c), so culling their back faces
+ * changes no pixel; it halves what the rasteriser shades of them, which
+ * SwiftShader shades before its depth and stencil tests (docs/web.md).
+ * The dynamic meshes (the body, the fireflies' sprites) are drawn whole,
+ * and so is everything when the eye is outside the room (f->outside: it
+ * may stand inside a hedge, whose inside it sees). */
+static void hol__cull(hol_render *r, int on, int *cur)
+{
+    if (on == *cur)
+        return;
+    *cur = on;
+    if (on)
+        r->gl.Enable(GL_CULL_FACE);
+    else
+        r->gl.Disable(GL_CULL_FACE);
+}
+
 /* Execute the sorted queue, skipping redundant state changes. */
 void hol__execute(hol_render *r, const hol_frame_desc *f, const float vp[16],
                          hol_render_stats *st)
 {
     int cur_vao = 1, cur_pass = -1, cur_ref = -1, cur_mask = -1;
+    int32_t cur_box[4] = {0, 0, 0, 0}; /* the scissor: the viewport */
+    int cur_cull = 0;
     for (int i = 0; i < r->nitems; i++) {
         const hol__item *it = r->sorted[i];
         if (it->pass != cur_pass) {
@@ -655,6 +694,10 @@ void hol__execute(hol_render *r, const hol_frame_desc *f, const float vp[16],
             st->state_changes++;
             hol__set_pass(r, f, cur_pass, vp);
         }
+        hol__scissor(r, f, cur_pass == HOL__PASS_TILE ? it->box : NULL, cur_box);
+        hol__cull(r, (cur_pass == HOL__PASS_ROOM || cur_pass == HOL__PASS_TILE) && !it->dyn &&
+                         !f->outside,
+                  &cur_cull);
         if (cur_pass == HOL__PASS_STENCIL) {
             r->gl.StencilFunc(GL_ALWAYS, it->ref, 0xff);
             st->state_changes++;
@@ -694,4 +737,6 @@ void hol__execute(hol_render *r, const hol_frame_desc *f, const float vp[16],
         }
         hol__draw(r, it->first, it->count - it->props, st);
     }
+    hol__scissor(r, f, NULL, cur_box);
+    hol__cull(r, 0, &cur_cull);
 }

@@ -113,6 +113,12 @@ typedef struct hol__item {
      * vertex (the programs with vlit: hol__use_prog's HOL__USE_VLIT*);
      * 0 day, IDs and every other item: one draw */
     uint32_t props;
+    /* the tile pass: the window's pixels its stencil can pass (x, y, w,
+     * h; w 0: the whole viewport), the bounding box of its branch's
+     * leaves (hol__branch_box): SwiftShader shades a fragment before its
+     * stencil test, so the scissor, not the stencil, keeps a branch's
+     * mesh from costing a whole screen's shading */
+    int32_t box[4];
     float model[16];
 } hol__item;
 
@@ -146,6 +152,9 @@ struct hol_render {
     int nitems;
     hol__item *sorted[HOL__MAX_ITEMS];
     hol_view view;
+    /* each leaf's polygon's bounding box in NDC (x0, y0, x1, y1; x0 > x1:
+     * off screen), from hol__queue_leaves */
+    float leaf_box[HOL_VIEW_MAX_LEAVES][4];
     double view_at[3]; /* where the view was built from (room coordinates):
                           the eye, or outside the room (hol_frame_desc.outside)
                           its nearest point in the user's cell; the

@@ -260,6 +260,41 @@ static int hol__queue_firefly(hol_render *r, const hol__item *tile_it, hol_tile 
     return 0;
 }
 
+/* The window's pixels where branch br's stencil test can pass: the
+ * bounding box of the leaves it is drawn on ((code & mask) == ref; their
+ * NDC boxes from hol__queue_leaves), a pixel wider on every side than
+ * the leaves' polygons, within the viewport; out w 0 with a return of 1
+ * for the whole viewport (a branch with no stencil test: the wedges'
+ * views), 0 when no leaf of it is on screen (nothing of it is drawn). */
+static int hol__branch_box(const hol_render *r, const hol_frame_desc *f,
+                           const hol_view_branch *br, int32_t out[4])
+{
+    memset(out, 0, 4 * sizeof out[0]);
+    if (!br->mask)
+        return 1;
+    float b[4] = {1, 1, -1, -1};
+    for (int k = 0; k < r->view.nleaves; k++) {
+        const float *lb = r->leaf_box[k];
+        if ((r->view.leaves[k].code & br->mask) != br->ref || lb[0] > lb[2])
+            continue;
+        for (int j = 0; j < 2; j++) {
+            b[j] = lb[j] < b[j] ? lb[j] : b[j];
+            b[2 + j] = lb[2 + j] > b[2 + j] ? lb[2 + j] : b[2 + j];
+        }
+    }
+    if (b[0] > b[2])
+        return 0;
+    const int size[2] = {f->cam.width, f->cam.height};
+    for (int j = 0; j < 2; j++) {
+        double lo = floor((b[j] + 1) * 0.5 * size[j]) - 1, hi = ceil((b[2 + j] + 1) * 0.5 * size[j]) + 1;
+        lo = lo < 0 ? 0 : lo;
+        hi = hi > size[j] ? size[j] : hi;
+        out[j] = (int32_t)lo + (j ? f->vp_y : f->vp_x);
+        out[2 + j] = (int32_t)(hi - lo);
+    }
+    return out[2] > 0 && out[3] > 0;
+}
+
 /* Pass 2: one draw per branch of its tile's resident mesh, placed in the
  * branch's cell, nearest cells first. */
 hol_err hol__queue_tiles(hol_render *r, const hol_frame_desc *f, int bare,
@@ -268,7 +303,8 @@ hol_err hol__queue_tiles(hol_render *r, const hol_frame_desc *f, int bare,
     const hol_view *v = &r->view;
     for (int k = 0; k < v->nbranches; k++) {
         const hol_view_branch *br = &v->branches[k];
-        if (br->err)
+        int32_t box[4];
+        if (br->err || !hol__branch_box(r, f, br, box))
             continue;
         uint32_t first, count, props;
         int pole, kind;
@@ -281,6 +317,7 @@ hol_err hol__queue_tiles(hol_render *r, const hol_frame_desc *f, int bare,
         it->ref = br->ref;
         it->mask = br->mask;
         it->branch = (int16_t)k;
+        memcpy(it->box, box, sizeof box);
         for (int j = 0; j < 2; j++) {
             it->wedge[j] = (float)br->w0[j];
             it->wedge[2 + j] = (float)br->w1[j];

@@ -262,11 +262,13 @@ static void hol__outer_ground(hol_mesh *out, float W, float D)
         memcpy(v->rgba, outer, 3);
         v->rgba[3] = HOL_MESH_PROP;
     }
-    /* the ring between the outer and the inner square */
+    /* the ring between the outer and the inner square, its triangles
+     * wound counter-clockwise seen from above (every mesh's front face is
+     * its normal's side: the room and tile passes cull back faces) */
     for (int k = 0; k < 4; k++) {
         uint32_t o0 = (uint32_t)b + (uint32_t)k, o1 = (uint32_t)b + (uint32_t)((k + 1) & 3);
         uint32_t i0 = o0 + 4, i1 = o1 + 4;
-        uint32_t t[6] = {o0, o1, i1, o0, i1, i0};
+        uint32_t t[6] = {o0, i1, o1, o0, i0, i1};
         memcpy(out->idx + out->ni, t, sizeof t);
         out->ni += 6;
     }

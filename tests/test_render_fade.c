@@ -151,7 +151,9 @@ static void test_outside_dims_shows_arrow_and_panel(void **state)
         off += !ok && !ay;
     }
     assert_true(yellow > 40);
-    assert_int_equal(off, 0);
+    /* inside the room back faces are culled, outside not (the eye may
+     * stand in a hedge): a silhouette's edge pixel may differ */
+    assert_true(off <= W * H / 1000);
     /* the panel 2.5 m ahead, beyond the north hedge (z 0), facing the eye */
     hol_frame_desc g = frame(0, HOL_RENDER_PANEL | HOL_RENDER_HUD_TEXT);
     g.cam.pitch_deg = -25; /* the panel and the arrow in view */

@@ -394,7 +394,7 @@ static void test_stats_within_budget(void **state)
 {
     (void)state;
     static const char *walks[9] = {"NW", "N", "NE", "W", "-", "E", "SW", "S", "SE"};
-    int frames = 0, max_dc = 0;
+    int frames = 0, max_dc = 0, skipped = 0;
     long max_tri = 0;
     for (int k = 0; k < 9 * 8 + (int)(sizeof views / sizeof views[0]); k++) {
         golden_view g;
@@ -435,14 +435,20 @@ static void test_stats_within_budget(void **state)
                 assert_int_equal(st.stencil_passes, 0);
             else
                 assert_true(st.stencil_passes >= 1 && st.stencil_passes <= HOL_VIEW_MAX_LEAVES);
-            assert_true(st.branches >= 9);
+            /* every branch of the view drawn but those with no leaf on
+             * screen (hol__branch_box): some views skip some */
+            int nb = hol_render_last_view(fx.rnd)->nbranches;
+            assert_true(nb >= 9);
+            assert_true(st.branches >= 1 && st.branches <= nb);
+            skipped += nb - st.branches;
             max_dc = st.draw_calls > max_dc ? st.draw_calls : max_dc;
             max_tri = st.triangles > max_tri ? st.triangles : max_tri;
             frames++;
         }
     }
-    printf("budget: %d frames, max %d draw calls, max %ld triangles\n", frames, max_dc,
-           max_tri);
+    printf("budget: %d frames, max %d draw calls, max %ld triangles, %d branches off screen\n",
+           frames, max_dc, max_tri, skipped);
+    assert_true(skipped > 0);
 }
 
 /* Meshes stay resident: an unchanged second frame builds no tile mesh,
@@ -468,7 +474,7 @@ static void test_resident_meshes(void **state)
     hol_render_invalidate(fx.rnd);
     assert_int_equal(hol_render_frame(fx.rnd, &f, &s1), HOL_OK);
     hol_render_read_rgba(fx.rnd, W, H, a);
-    assert_true(s1.tiles_built >= 9);
+    assert_true(s1.tiles_built >= 3 && s1.tiles_built <= s1.branches);
     assert_int_equal(hol_render_frame(fx.rnd, &f, &s2), HOL_OK);
     hol_render_read_rgba(fx.rnd, W, H, b);
     printf("resident: first frame %ld bytes, %d tiles; second %ld bytes\n",

@@ -34,7 +34,7 @@ function src(dir, f) {
     l.startsWith('@include ') ? src(dir, l.slice(9).trim()) : l).join('\n');
 }
 function pre(lit) {
-  const d = { LIT: lit, FLAT: lit ? FLAT : 0, WEDGE: 0, NIGHT: lit ? 1 : 0, FX: lit ? FX : 0, TEXT: 0,
+  const d = { LIT: lit, FLAT: lit ? FLAT : 0, WEDGE: 0, VLIT: 0, NIGHT: lit ? 1 : 0, FX: lit ? FX : 0, TEXT: 0,
     LAMPS: 0, SPREAD: '8.0', SHD: lit ? 1 : 0, SHM_N: f1('HOL_SHADOW_MASK_N'),
     SHM_R: def('HOL_SHADOW_MASK_RANGE'), SHM_W: f1('HOL_SHADOW_ATLAS_COLS'),
     SHM_H: f1('HOL_SHADOW_ATLAS_ROWS'), TX_ROWS: def('HOL_PROG_TX_ROWS') };
