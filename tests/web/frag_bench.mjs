@@ -5,7 +5,10 @@
 // render/shaders; give several to compare variants), the program of a night
 // with fireflies and a shadow mask (FX=0 none, FX=2 spots; FLAT=1 {4,4}),
 // then the day program; depth and stencil tests on as in the tile pass
-// (STATE=0 off). ROUNDS (default 5) rounds of DRAWS (default 60) draws,
+// (STATE=0 off); ROOM=1: the lit room's program (its trees and hedges, lit
+// per vertex) instead of the tiles'; SPLIT=K: each draw as K draws of a
+// horizontal strip each (scissored: the cost of a draw itself), UNI=1 with
+// u_tx set before each. ROUNDS (default 5) rounds of DRAWS (default 60) draws,
 // each folder in turn; the figure is all chromium processes' CPU per draw,
 // the median of the rounds, and the picture's mean code (equal means: most
 // likely the same picture). The preamble's constants are read from the
@@ -20,7 +23,7 @@ const root = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../..')
 const dirs = process.argv.length > 2 ? process.argv.slice(2) : [path.join(root, 'render/shaders')];
 const env = (k, d) => +(process.env[k] ?? d);
 const ROUNDS = env('ROUNDS', 5), DRAWS = env('DRAWS', 60), FX = env('FX', 1), FLAT = env('FLAT', 0);
-const STATE = env('STATE', 1);
+const STATE = env('STATE', 1), ROOM = env('ROOM', 0);
 const hdr = ['render/hol_light.h', 'core/hol_shadow.h', 'render/hol_program.h']
   .map((f) => fs.readFileSync(path.join(root, f), 'utf8')).join('\n');
 const def = (n) => {
@@ -34,8 +37,8 @@ function src(dir, f) {
     l.startsWith('@include ') ? src(dir, l.slice(9).trim()) : l).join('\n');
 }
 function pre(lit) {
-  const d = { LIT: lit, FLAT: lit ? FLAT : 0, WEDGE: 0, VLIT: 0, NIGHT: lit ? 1 : 0, FX: lit ? FX : 0, TEXT: 0,
-    LAMPS: 0, SPREAD: '8.0', SHD: lit ? 1 : 0, SHM_N: f1('HOL_SHADOW_MASK_N'),
+  const d = { LIT: lit ? (ROOM ? 2 : 1) : 0, FLAT: lit ? FLAT : 0, WEDGE: 0, VLIT: 0, NIGHT: lit ? 1 : 0, FX: lit ? FX : 0, TEXT: 0,
+    LAMPS: lit && ROOM ? 1 : 0, SPREAD: '8.0', SHD: lit && !ROOM ? 1 : 0, SHM_N: f1('HOL_SHADOW_MASK_N'),
     SHM_R: def('HOL_SHADOW_MASK_RANGE'), SHM_W: f1('HOL_SHADOW_ATLAS_COLS'),
     SHM_H: f1('HOL_SHADOW_ATLAS_ROWS'), TX_ROWS: def('HOL_PROG_TX_ROWS') };
   for (const k of ['D0_M', 'PHYS', 'RADIUS_M', 'HEIGHT_M', 'TONE_K']) d['LIGHT_' + k] = def('HOL_LIGHT_' + k);
@@ -50,7 +53,8 @@ const browser = await launch(process.env.CHROMIUM || '/usr/bin/chromium', path.j
 try {
   const page = await browser.newPage();
   await page.setContent('<canvas id=c width=800 height=600></canvas>');
-  const means = await page.evaluate((progs, state, flat) => {
+  await page.evaluate(([sp, un]) => { window.SPLIT = sp; window.UNI = un; }, [+(process.env.SPLIT || 0), +(process.env.UNI || 0)]);
+  const means = await page.evaluate((progs, state, flat, ROOM_) => {
     const gl = document.getElementById('c').getContext('webgl2',
       { antialias: false, depth: true, stencil: true, alpha: false, premultipliedAlpha: false });
     const P = progs.map((p) => {
@@ -116,7 +120,7 @@ try {
       gl.uniform3f(u('u_fog'), 0.03, 0.04, 0.08);
       gl.uniform1f(u('u_fogd'), 0.15);
       gl.uniform1i(u('u_lin'), 0);
-      gl.uniform1i(u('u_light'), 1);
+      gl.uniform1i(u('u_light'), ROOM_ ? 2 : 1);
       gl.uniform1f(u('u_klein'), kl);
       gl.uniform1f(u('u_mpu2'), mpu * mpu);
       gl.uniform4fv(u('u_tl'), tl);
@@ -136,7 +140,18 @@ try {
     }
     window.draw = (i, n) => {
       set(P[i]);
-      for (let k = 0; k < n; k++) gl.drawElements(gl.TRIANGLES, idx.length, gl.UNSIGNED_SHORT, 0);
+      for (let k = 0; k < n; k++) {
+        if (!window.SPLIT) gl.drawElements(gl.TRIANGLES, idx.length, gl.UNSIGNED_SHORT, 0);
+        else {
+          gl.enable(gl.SCISSOR_TEST);
+          for (let j = 0; j < window.SPLIT; j++) {
+            gl.scissor(0, Math.floor(600 * j / window.SPLIT), 800, Math.floor(600 * (j + 1) / window.SPLIT) - Math.floor(600 * j / window.SPLIT));
+            if (window.UNI) gl.uniform4fv(gl.getUniformLocation(P[i], 'u_tx'), new Float32Array(28).fill(0.5));
+            gl.drawElements(gl.TRIANGLES, idx.length, gl.UNSIGNED_SHORT, 0);
+          }
+          gl.disable(gl.SCISSOR_TEST);
+        }
+      }
       gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, px);
     };
     return P.map((pr, i) => {
@@ -147,7 +162,7 @@ try {
       for (let k = 0; k < b.length; k += 4) s += b[k] + b[k + 1] + b[k + 2];
       return s / (800 * 600 * 3);
     });
-  }, progs, STATE, FLAT);
+  }, progs, STATE, FLAT, ROOM);
   const pid = browser.process().pid, ms = progs.map(() => []);
   for (let r = 0; r < ROUNDS; r++)
     for (let i = 0; i < progs.length; i++) {
@@ -158,7 +173,7 @@ try {
   const day = median(ms[ms.length - 1]);
   progs.forEach((p, i) => console.log(`${p.name.padEnd(20)} ${median(ms[i]).toFixed(1).padStart(6)} ms CPU a draw ` +
     `(${Math.min(...ms[i]).toFixed(1)}-${Math.max(...ms[i]).toFixed(1)}), over day ${(median(ms[i]) - day).toFixed(1)}, mean code ${means[i].toFixed(3)}`));
-  console.log(`(FX ${FX}, FLAT ${FLAT}, STATE ${STATE}; ${ROUNDS} rounds of ${DRAWS} draws; load average ${os.loadavg()[0].toFixed(1)})`);
+  console.log(`(FX ${FX}, FLAT ${FLAT}, ROOM ${ROOM}, STATE ${STATE}; ${ROUNDS} rounds of ${DRAWS} draws; load average ${os.loadavg()[0].toFixed(1)})`);
 } finally {
   await browser.close();
   fs.rmSync(tmp, { recursive: true, force: true });
