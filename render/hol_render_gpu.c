@@ -663,8 +663,10 @@ static void hol__scissor(hol_render *r, const hol_frame_desc *f, const int32_t *
  * room's and the tiles' resident meshes are closed or seen from their
  * normal's side only, each triangle wound counter-clockwise seen from
  * that side (tests/test_render_cull.c), so culling their back faces
- * changes no pixel; it halves what the rasteriser shades of them, which
- * SwiftShader shades before its depth and stencil tests (docs/web.md).
+ * changes no pixel but a few on silhouettes (where a back face had won a
+ * shared edge's pixel); it halves what the rasteriser shades of them, which
+ * SwiftShader shades before its depth and stencil tests (docs/web.md,
+ * docs/performance.md).
  * The dynamic meshes (the body, the fireflies' sprites) are drawn whole,
  * and so is everything when the eye is outside the room (f->outside: it
  * may stand inside a hedge, whose inside it sees). */
