@@ -229,6 +229,15 @@ static inline hol__item *hol__queue_push(hol_render *r, int pass, uint32_t first
     return it;
 }
 
+/* Box b (x0, y0, x1, y1; x0 > x1: empty) grown to hold the point (x, y). */
+static inline void hol__box_add(float b[4], float x, float y)
+{
+    b[0] = x < b[0] ? x : b[0];
+    b[1] = y < b[1] ? y : b[1];
+    b[2] = x > b[2] ? x : b[2];
+    b[3] = y > b[3] ? y : b[3];
+}
+
 /* FNV-1a over n bytes from h: the keys of kept draws and kept shadow masks */
 static inline uint64_t hol__fnv(uint64_t h, const void *p, size_t n)
 {

@@ -64,15 +64,12 @@ static hol_err hol__queue_leaves(hol_render *r, const hol_frame_desc *f)
     for (int k = 0; k < v->nleaves; k++) {
         float xy[8][2], *box = r->leaf_box[k];
         int n = hol_view_leaf_ndc(&f->cam, &v->leaves[k], xy);
-        box[0] = box[1] = 1;
+        box[0] = box[1] = 1; /* empty: off screen */
         box[2] = box[3] = -1;
-        for (int i = 0; i < n && n >= 3; i++)
-            for (int j = 0; j < 2; j++) {
-                box[j] = xy[i][j] < box[j] ? xy[i][j] : box[j];
-                box[2 + j] = xy[i][j] > box[2 + j] ? xy[i][j] : box[2 + j];
-            }
         if (n < 3)
             continue;
+        for (int i = 0; i < n; i++)
+            hol__box_add(box, xy[i][0], xy[i][1]);
         int64_t b = hol_mesh_reserve(&r->dyn, (uint32_t)n, (uint32_t)(3 * (n - 2)));
         if (b < 0)
             return HOL_ENOMEM;

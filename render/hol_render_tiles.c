@@ -277,10 +277,8 @@ static int hol__branch_box(const hol_render *r, const hol_frame_desc *f,
         const float *lb = r->leaf_box[k];
         if ((r->view.leaves[k].code & br->mask) != br->ref || lb[0] > lb[2])
             continue;
-        for (int j = 0; j < 2; j++) {
-            b[j] = lb[j] < b[j] ? lb[j] : b[j];
-            b[2 + j] = lb[2 + j] > b[2 + j] ? lb[2 + j] : b[2 + j];
-        }
+        hol__box_add(b, lb[0], lb[1]);
+        hol__box_add(b, lb[2], lb[3]);
     }
     if (b[0] > b[2])
         return 0;
