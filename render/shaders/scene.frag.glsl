@@ -266,7 +266,7 @@ void main() {
 // the lanterns' sum mapped back (fireflies' lamf as it is: faint)
   lam = hol_tone(lam);
   float f = exp(-de2 * (u_fogd * u_fogd));
-  vec3 c = v_col.rgb * (u_amb + u_sun * d + u_lcol * lam + u_fcol * lamf);
+  vec3 c = hol_lit(v_col.rgb, d, lam, lamf);
 #if HOL_LIT == 1
   // a lantern's glass: unlit (the room has none)
   if (abs(v_col.a - 100.0 / 255.0) < 0.01) c = v_col.rgb * 1.5;
@@ -274,8 +274,7 @@ void main() {
 // the light alone (u_lonly: the tests' frames) chosen, not branched to:
 // SwiftShader runs the rest of a shader under a mask after a return in a
 // branch
-  o_col = u_lonly == 1 ? vec4(min(lam, 1.0), f, min(lamf, 1.0), 1.0)
-                       : hol_lin_out(mix(u_fog, c, f));
+  o_col = u_lonly == 1 ? vec4(hol_light_only(lam, f, lamf), 1.0) : hol_lin_out(mix(u_fog, c, f));
 #endif
 #endif
 }

@@ -154,8 +154,7 @@ void hol_vlight(vec3 wp, vec3 wn, vec4 th, vec3 cl) {
 // the fog as scene.frag.glsl's, by the true distance from the eye
   float fog = exp(-hol_eye_d2(g, o, v_Le, v_loc.y) * (u_fogd * u_fogd));
   float sun = max(dot(n, normalize(vec3(0.35, 0.85, 0.40))), 0.0);
-  vec3 c = cl * (u_amb + u_sun * sun + u_lcol * lam + u_fcol * lamf);
-  v_vc = u_lonly == 1 ? vec3(min(lam, 1.0), fog, min(lamf, 1.0)) : mix(u_fog, c, fog);
+  v_vc = u_lonly == 1 ? hol_light_only(lam, fog, lamf) : mix(u_fog, hol_lit(cl, sun, lam, lamf), fog);
 }
 #undef HOL_V
 #endif

@@ -1,7 +1,7 @@
 // sky.glsl - included by scene.frag.glsl and scene.vert.glsl (@include, in
 // the lit programs): the sky's and the lights' colours, the tone map, a
 // lit tile's Lambert term, shadow factor and distance from the eye (the
-// fog's).
+// fog's), a surface's lit colour and the light-only frames' output.
 // the sky (docs/rendering.md#lighting): ambient, sun and lantern colours,
 // linear light (calibrated through the sRGB curve: #linear-light)
 // HOL_NIGHT 2: a sky between dusk and night (a lighting cycle), the
@@ -22,6 +22,17 @@ const vec3 u_lcol = vec3(1.76, 0.99, 0.34), u_fcol = vec3(0.31, 0.51, 0.11);
 // below its own colour, not clipped white.
 float hol_tone(float l) {
   return l * HOL_LIGHT_TONE_K / (HOL_LIGHT_TONE_K + l);
+}
+// A surface's linear colour cl lit by the sky (sun: its Lambert term
+// towards the sun), the lanterns' toned sum lam and the fireflies' lamf:
+// the fragment's (the lit tiles and room) and the small props' vertex's.
+vec3 hol_lit(vec3 cl, float sun, float lam, float lamf) {
+  return cl * (u_amb + u_sun * sun + u_lcol * lam + u_fcol * lamf);
+}
+// What the light-only frames (u_lonly: the tests') write instead: the
+// lanterns' sum, the fog's factor f and the fireflies' sum, each at most 1.
+vec3 hol_light_only(float lam, float f, float lamf) {
+  return vec3(min(lam, 1.0), f, min(lamf, 1.0));
 }
 #if HOL_LIT == 1
 // A lit tile's Klein point k: g = 1 / sqrt(1 - |k|^2) and o = -2, so that
