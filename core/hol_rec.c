@@ -400,9 +400,14 @@ static hol_err hol__level_end(hol_rec_reader *r)
     return HOL_OK;
 }
 
-/* "condition NAME POS" right after a level line (version 3). */
+/* "condition NAME POS" right after a level line (version 3), in a
+ * recording with a study line (a study's session: the writer writes one,
+ * "study -" without a name, wherever a level has a condition). */
 static hol_err hol__condition_line(hol_rec_reader *r, const char *s, size_t len)
 {
+    if (!(r->seen & HOL__SEEN_STUDY))
+        return hol__bad(r, HOL_EPARSE, "a 'condition' line needs the recording's 'study' "
+                                       "line (a study's session)");
     const char *sp = len > 10 ? memchr(s + 10, ' ', len - 10) : NULL;
     size_t n = sp ? (size_t)(sp - s) - 10 : 0;
     int pos = 0, digits = 0;

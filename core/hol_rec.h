@@ -53,7 +53,10 @@
  *   version 3. IDs (and condition names) are 1..63 bytes of letters,
  *   digits and '.', '_', '-' (hol_rec_id_ok); a version 1..31 bytes of
  *   those and '+'. A condition line comes right after its level line,
- *   POS 0..HOL_REC_MAX_LEVELS; a level without one has no labels.
+ *   POS 0..HOL_REC_MAX_LEVELS, in a recording with a study line (the
+ *   writer writes "study -" for conditions without a study's name, so
+ *   what it writes reads back the same); a level without one has no
+ *   labels.
  * - hol_rec_write_header emits the header through fn in pieces whose
  *   concatenation is the text above (levels given with LF-ended text, as
  *   hol_level_make keeps it), so the header of a recording that play wrote

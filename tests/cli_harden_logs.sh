@@ -108,6 +108,13 @@ printf '0 f=9 h=1.5,1.6,1.5,0,0,0,1\n1 f=9 h=0.5,1.6,1.5,0,0,0,1\n2 f=9' >cut.in
 run "v2 study line" 2 "$H" replay v2study.rec
 one_line "v2 study line" "line 6: a 'study' line needs a version 3 recording"
 
+# ---- a version 4 recording's condition without its study line (the fuzz
+# smoke's find: what the writer made of it, "study -", read back otherwise)
+{ rec_header | sed 's/holonomy-rec 2/holonomy-rec 4/'
+  printf 'level f\ncondition hand 1\nL mode flag\nL seed 5\nL flag Nf\nend\n0 f=9\n'; } >v4cond.rec
+run "v4 condition without study" 2 "$H" replay v4cond.rec
+one_line "v4 condition without study" "line 7: a 'condition' line needs the recording's 'study' line"
+
 # ---- finding 10: --append with summary.csv a folder or a FIFO -------------------------
 mkdir -p sumdir/summary.csv
 run "summary.csv a folder" 2 "$H" replay whole.rec --log sumdir --append
