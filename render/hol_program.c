@@ -64,6 +64,7 @@ static const hol__family hol__families[] = {
     {{.vlit = 1},
      5,
      {HOL__D_LIGHTING, HOL__D_FLAT, HOL__D_WEDGE, HOL__D_FX_VLIT, HOL__D_SHADOW}}, /* their props */
+    {{.floor = 1}, 4, {HOL__D_LIGHTING, HOL__D_FLAT, HOL__D_FX, HOL__D_SHADOW}},   /* their ground */
     {{.text = 1}, 0, {0}},                                                   /* the overlays */
 };
 #define HOL__NFAM (int)(sizeof hol__families / sizeof hol__families[0])
@@ -98,7 +99,7 @@ static int hol__family_index(const hol__family *f, const hol_prog_key *k)
                                     offsetof(hol_prog_key, flat), offsetof(hol_prog_key, wedge),
                                     offsetof(hol_prog_key, fx), offsetof(hol_prog_key, shadow),
                                     offsetof(hol_prog_key, text), offsetof(hol_prog_key, lamps),
-                                    offsetof(hol_prog_key, vlit)};
+                                    offsetof(hol_prog_key, vlit), offsetof(hol_prog_key, floor)};
     _Static_assert(sizeof fields / sizeof fields[0] * sizeof(int) == sizeof(hol_prog_key),
                    "every field of the key");
     hol_prog_key kc = *k, base = f->base;
@@ -152,7 +153,7 @@ int hol_prog_preamble(const hol_prog_key *k, char *out, size_t n)
                        "#version 300 es\n#define HOL_LIT %d\n#define HOL_FLAT %d\n"
                        "#define HOL_WEDGE %d\n#define HOL_NIGHT %d\n#define HOL_FX %d\n"
                        "#define HOL_TEXT %d\n#define HOL_LAMPS %d\n#define HOL_SPREAD %d.0\n"
-                       "#define HOL_SHD %d\n#define HOL_VLIT %d\n"
+                       "#define HOL_SHD %d\n#define HOL_VLIT %d\n#define HOL_FLOOR %d\n"
                        "#define HOL_SHM_N " HOL__STR(HOL_SHADOW_MASK_N) ".0\n"
                        "#define HOL_SHM_R " HOL__STR(HOL_SHADOW_MASK_RANGE) "\n"
                        "#define HOL_SHM_W " HOL__STR(HOL_SHADOW_ATLAS_COLS) ".0\n"
@@ -169,7 +170,8 @@ int hol_prog_preamble(const hol_prog_key *k, char *out, size_t n)
                        "#define HOL_SRGB_D " HOL__STR(HOL_SRGB_D) "\n",
                        lit, k->flat, k->wedge,
                        k->lighting == HOL_PROG_CYCLE ? 2 : k->lighting == HOL_LIGHT_NIGHT, k->fx, k->text != 0,
-                       k->lamps != 0, m.spread, k->shadow != 0, k->vlit != 0);
+                       k->lamps != 0, m.spread, k->shadow != 0, k->vlit != 0,
+                       k->floor != 0);
     return len < 0 || (size_t)len >= n ? -1 : len;
 }
 

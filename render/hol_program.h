@@ -68,6 +68,9 @@ typedef struct hol_prog_key {
     int vlit;         /* lit tiles: 1 lit per vertex (a tile's small props:
                        * the vertex shader lights, fogs and tone maps, the
                        * fragment only writes; fx below spots) */
+    int floor;        /* lit tiles: 1 a tile's ground (its normal straight
+                       * up: none to turn to the eye, no Lambert term's
+                       * horizontal part; no wedge) */
 } hol_prog_key;
 
 /* Rows of per-light values a lit tile gives its shaders (u_tx, four
@@ -81,8 +84,10 @@ typedef struct hol_prog_key {
 /* day 2 (wedge), lit room 3 x 2 x 2 (lighting, lamps, wedge), lit tiles
  * 3 x 2 x 2 (lighting, flat, wedge) x HOL_PROG_FX_COUNT x 2 (shadow
  * mask), their small props the same with the effects below spots
- * (vlit), text 1: 135 (render/hol_program.c's table of families) */
-#define HOL_PROG_SLOTS (2 + 12 + 12 * HOL_PROG_FX_COUNT * 2 + 12 * HOL_PROG_FX_SPOTS * 2 + 1)
+ * (vlit), their ground 3 x 2 (lighting, flat) x HOL_PROG_FX_COUNT x 2
+ * (floor), text 1: 171 (render/hol_program.c's table of families) */
+#define HOL_PROG_SLOTS \
+    (2 + 12 + 12 * HOL_PROG_FX_COUNT * 2 + 12 * HOL_PROG_FX_SPOTS * 2 + 6 * HOL_PROG_FX_COUNT * 2 + 1)
 /* The text program's slot (the last). */
 #define HOL_PROG_TEXT_SLOT (HOL_PROG_SLOTS - 1)
 

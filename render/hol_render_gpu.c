@@ -282,8 +282,10 @@ int hol__shadow_mask(hol_render *r, uint64_t key, const hol_shadow_mask_desc *d)
  * a bit each: a tile's own (hol__item.fx: what its slots hold), so a tile
  * whose slots hold only round lanterns takes the cheapest program even in
  * a frame with fireflies or spots; bit HOL__VLIT_BIT + fx: a tile of that
- * level draws its small props per vertex (hol__item.props). */
+ * level draws its small props per vertex (hol__item.props); bit
+ * HOL__FLOOR_BIT + fx: its ground apart (hol__item.ground). */
 #define HOL__VLIT_BIT 8
+#define HOL__FLOOR_BIT 16
 static unsigned hol__tile_fx_used(const hol_render *r)
 {
     unsigned m = 0;
@@ -292,6 +294,8 @@ static unsigned hol__tile_fx_used(const hol_render *r)
             m |= 1u << r->items[i].fx;
             if (r->items[i].props)
                 m |= 1u << (HOL__VLIT_BIT + r->items[i].fx);
+            if (r->items[i].ground)
+                m |= 1u << (HOL__FLOOR_BIT + r->items[i].fx);
         }
     return m;
 }
@@ -309,11 +313,16 @@ static int hol__frame_uses(const hol_render *r, const hol_frame_desc *f, hol__us
     }
     int n = 0, top = r->lights.fx;
     unsigned m = hol__tile_fx_used(r);
-    for (int fx = 0; fx <= top; fx++)
+    for (int fx = 0; fx <= top; fx++) {
         if (m >> (HOL__VLIT_BIT + fx) & 1) {
             out[n++] = (hol__use){HOL__USE_VLIT0, fx};
             out[n++] = (hol__use){HOL__USE_VLITM, fx};
         }
+        if (m >> (HOL__FLOOR_BIT + fx) & 1) {
+            out[n++] = (hol__use){HOL__USE_FLOOR0, fx};
+            out[n++] = (hol__use){HOL__USE_FLOORM, fx};
+        }
+    }
     for (int fx = 0; fx < top; fx++)
         if (m >> fx & 1) {
             out[n++] = (hol__use){HOL__USE_TILES0, fx};
@@ -344,8 +353,10 @@ hol_prog *hol__use_prog(hol_render *r, const hol_frame_desc *f, int use, int fx)
     if (use >= HOL__USE_TILES0) {
         k.flat = r->lights.flat != 0;
         k.fx = fx;
-        k.shadow = use == HOL__USE_TILESM || use == HOL__USE_VLITM;
-        k.vlit = use >= HOL__USE_VLIT0;
+        k.shadow = use == HOL__USE_TILESM || use == HOL__USE_VLITM || use == HOL__USE_FLOORM;
+        k.vlit = use == HOL__USE_VLIT0 || use == HOL__USE_VLITM;
+        k.floor = use == HOL__USE_FLOOR0 || use == HOL__USE_FLOORM;
+        k.wedge = k.wedge && !k.floor;
     }
     return &r->progs[hol_prog_slot(&k)];
 }
@@ -613,15 +624,16 @@ static void hol__draw(hol_render *r, uint32_t first, uint32_t count, hol_render_
 }
 
 /* A tile item's program (at dusk and night: its effects' level, its
- * shadow mask or none, vlit: its small props' per-vertex light) and
- * uniforms. */
+ * shadow mask or none, its part: HOL__PART_*) and uniforms. */
+enum { HOL__PART_REST, HOL__PART_PROPS, HOL__PART_GROUND };
 static void hol__tile_state(hol_render *r, const hol_frame_desc *f, const hol__item *it,
-                            int vlit, hol_render_stats *st)
+                            int part, hol_render_stats *st)
 {
     if (f->lighting) { /* a tile with no shadow: the program without */
-        int nsh = it->nl >= 0 ? it->nsh : 0;
-        int use = vlit ? (nsh ? HOL__USE_VLITM : HOL__USE_VLIT0)
-                       : (nsh ? HOL__USE_TILESM : HOL__USE_TILES0);
+        static const int uses[3][2] = {{HOL__USE_TILES0, HOL__USE_TILESM},
+                                       {HOL__USE_VLIT0, HOL__USE_VLITM},
+                                       {HOL__USE_FLOOR0, HOL__USE_FLOORM}};
+        int use = uses[part][it->nl >= 0 && it->nsh];
         hol_prog *want = hol__use_prog(r, f, use, it->fx);
         if (want != r->pg) {
             r->pg = want;
@@ -640,6 +652,17 @@ static void hol__tile_state(hol_render *r, const hol_frame_desc *f, const hol__i
         int id = it->branch + 1;
         r->gl.Uniform4f(r->pg->u_id, (float)(id & 255) / 255.0f, (float)(id >> 8) / 255.0f, 0, 1);
     }
+}
+
+/* The vertex array vao (0 the static buffers, 1 the dynamic) bound, when
+ * *cur (the one bound) differs. */
+static void hol__bind_vao(hol_render *r, int vao, int *cur, hol_render_stats *st)
+{
+    if (vao == *cur)
+        return;
+    *cur = vao;
+    r->gl.BindVertexArray(r->vao[vao]);
+    st->state_changes++;
 }
 
 /* The scissor: box (hol__item.box; NULL or w 0: the viewport) when cur
@@ -712,15 +735,17 @@ void hol__execute(hol_render *r, const hol_frame_desc *f, const float vp[16],
                 st->state_changes++;
             }
             if (it->props) { /* its small props first, lit per vertex */
-                if (it->dyn != cur_vao) {
-                    cur_vao = it->dyn;
-                    r->gl.BindVertexArray(r->vao[cur_vao]);
-                    st->state_changes++;
-                }
-                hol__tile_state(r, f, it, 1, st);
+                hol__bind_vao(r, it->dyn, &cur_vao, st);
+                hol__tile_state(r, f, it, HOL__PART_PROPS, st);
                 hol__draw(r, it->first + it->count - it->props, it->props, st);
             }
-            hol__tile_state(r, f, it, 0, st);
+            if (it->ground) { /* its ground, then the rest */
+                hol__bind_vao(r, it->dyn, &cur_vao, st);
+                hol__tile_state(r, f, it, HOL__PART_GROUND, st);
+                hol__draw(r, it->first, it->ground, st);
+            }
+            if (it->count > it->props + it->ground) /* a ground alone has no rest */
+                hol__tile_state(r, f, it, HOL__PART_REST, st);
             st->branches += !it->dyn; /* a firefly's sprite is no branch */
         } else if (cur_pass == HOL__PASS_ROOM && f->lighting) {
             hol_prog *want = hol__frame_prog(r, f, it->lamps ? HOL__USE_ROOM : HOL__USE_BACK);
@@ -732,12 +757,9 @@ void hol__execute(hol_render *r, const hol_frame_desc *f, const float vp[16],
         } else if (cur_pass == HOL__PASS_HAND || cur_pass == HOL__PASS_PANEL) {
             r->gl.UniformMatrix4fv(r->pg->u_model, 1, GL_FALSE, it->model);
         }
-        if (it->dyn != cur_vao) {
-            cur_vao = it->dyn;
-            r->gl.BindVertexArray(r->vao[cur_vao]);
-            st->state_changes++;
-        }
-        hol__draw(r, it->first, it->count - it->props, st);
+        hol__bind_vao(r, it->dyn, &cur_vao, st);
+        if (it->count > it->props + it->ground)
+            hol__draw(r, it->first + it->ground, it->count - it->props - it->ground, st);
     }
     hol__scissor(r, f, NULL, cur_box);
     hol__cull(r, 0, &cur_cull);

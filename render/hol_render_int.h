@@ -75,6 +75,7 @@ typedef struct hol__slot {
     uint64_t last_frame;
     uint32_t nidx;
     uint32_t nprops; /* its small props: the last nprops of its indices */
+    uint32_t nground; /* its ground: the first nground of its indices */
 } hol__slot;
 
 enum {
@@ -113,6 +114,12 @@ typedef struct hol__item {
      * vertex (the programs with vlit: hol__use_prog's HOL__USE_VLIT*);
      * 0 day, IDs and every other item: one draw */
     uint32_t props;
+    /* a lit tile (dusk, night) with a frame, not the IDs' frame, no
+     * wedges: the first ground of its count are its ground (the floor and
+     * its water, normal straight up), drawn first with the floor's
+     * programs (HOL__USE_FLOOR*: no normal to turn, no Lambert term's
+     * horizontal part); 0: drawn with the rest */
+    uint32_t ground;
     /* the tile pass: the window's pixels its stencil can pass (x, y, w,
      * h; w 0: the whole viewport), the bounding box of its branch's
      * leaves (hol__branch_box): SwiftShader shades a fragment before its
@@ -196,6 +203,8 @@ enum {
     HOL__USE_TILESM, /* with their shadow mask */
     HOL__USE_VLIT0,  /* lit tiles' small props, lit per vertex: no shadows */
     HOL__USE_VLITM,  /* with their shadow mask */
+    HOL__USE_FLOOR0, /* lit tiles' ground: no shadows */
+    HOL__USE_FLOORM, /* with their shadow mask */
     HOL__USE_TEXT    /* the overlays (hand, fade, HUD, panel): text's */
 };
 /* A program's use in a frame and, for the tiles', its effects' level
@@ -203,7 +212,7 @@ enum {
 typedef struct hol__use {
     int use, fx;
 } hol__use;
-#define HOL__MAX_USES (4 + 4 * HOL_PROG_FX_COUNT)
+#define HOL__MAX_USES (4 + 6 * HOL_PROG_FX_COUNT)
 
 /* m = the identity (column-major). */
 static inline void hol__identity(float m[16])

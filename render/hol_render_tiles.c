@@ -8,11 +8,16 @@
 
 #include "../core/hol_world.h"
 
+/* A tile's resident index range: first, count, the last props of them its
+ * small props and the first ground its ground (hol_scene_tile's). */
+typedef struct hol__range {
+    uint32_t first, count, props, ground;
+} hol__range;
+
 /* The resident mesh of tile t: reused while the tile's content is the
- * same, else (re)built into the least recently used slot; props: the
- * last of its count that are its small props (hol_scene_tile's). */
+ * same, else (re)built into the least recently used slot. */
 static int hol__tile_range(hol_render *r, hol_tile t, int bare, int pole, int kind,
-                           double cell_m, uint32_t *first, uint32_t *count, uint32_t *props)
+                           double cell_m, hol__range *out)
 {
     hol_tile_content c;
     memset(&c, 0, sizeof c);
@@ -29,9 +34,7 @@ static int hol__tile_range(hol_render *r, hol_tile t, int bare, int pole, int ki
             sl->have == have && sl->cell_m == cell_m &&
             (!have || !memcmp(&sl->content, &c, sizeof c))) {
             sl->last_frame = r->frame;
-            *first = HOL__SLOT_IBASE(i);
-            *count = sl->nidx;
-            *props = sl->nprops;
+            *out = (hol__range){HOL__SLOT_IBASE(i), sl->nidx, sl->nprops, sl->nground};
             return 1;
         }
         if (sl->last_frame != r->frame &&
@@ -44,8 +47,8 @@ static int hol__tile_range(hol_render *r, hol_tile t, int bare, int pole, int ki
     hol_mesh_clear(&r->scratch);
     r->scratch.cap_v = HOL__SLOT_V;
     r->scratch.cap_i = HOL__SLOT_I;
-    uint32_t p0 = 0;
-    hol_scene_tile(r->scene, &r->scratch, t, r->desc.world, bare, pole, kind, cell_m, &p0);
+    uint32_t p0 = 0, g = 0;
+    hol_scene_tile(r->scene, &r->scratch, t, r->desc.world, bare, pole, kind, cell_m, &p0, &g);
     r->scratch.cap_v = HOL__ROOM_V;
     r->scratch.cap_i = HOL__ROOM_I;
     if (r->scratch.overflow)
@@ -67,10 +70,9 @@ static int hol__tile_range(hol_render *r, hol_tile t, int bare, int pole, int ki
     sl->last_frame = r->frame;
     sl->nidx = r->scratch.ni;
     sl->nprops = r->scratch.ni - p0;
+    sl->nground = g;
     r->tiles_built++;
-    *first = ibase;
-    *count = sl->nidx;
-    *props = sl->nprops;
+    *out = (hol__range){ibase, sl->nidx, sl->nprops, sl->nground};
     return 1;
 }
 
@@ -254,6 +256,7 @@ static int hol__queue_firefly(hol_render *r, const hol__item *tile_it, hol_tile 
     it->count = r->dyn.ni - i0;
     it->dyn = 1;
     it->props = 0;
+    it->ground = 0;
     it->fx = HOL_PROG_FX_NONE; /* unlit: the cheapest of the tiles' programs */
     it->nsh = 0;
     it->key = 2u << 24 | 0xffu << 16 | (uint32_t)(uint16_t)tile_it->branch;
@@ -304,12 +307,12 @@ hol_err hol__queue_tiles(hol_render *r, const hol_frame_desc *f, int bare,
         int32_t box[4];
         if (br->err || !hol__branch_box(r, f, br, box))
             continue;
-        uint32_t first, count, props;
+        hol__range rg;
         int pole, kind;
         hol__tile_marks(f, br->state.tile, &pole, &kind);
-        if (!hol__tile_range(r, br->state.tile, bare, pole, kind, cell_m, &first, &count, &props))
+        if (!hol__tile_range(r, br->state.tile, bare, pole, kind, cell_m, &rg))
             return HOL_ENOMEM;
-        hol__item *it = hol__queue_push(r, HOL__PASS_TILE, first, count);
+        hol__item *it = hol__queue_push(r, HOL__PASS_TILE, rg.first, rg.count);
         if (!it)
             return HOL_ENOMEM;
         it->ref = br->ref;
@@ -325,10 +328,10 @@ hol_err hol__queue_tiles(hol_render *r, const hol_frame_desc *f, int bare,
             hol__item_lights(r, it, br->state.tile, !(f->flags & HOL_RENDER_NO_SHADOWS));
         /* its small props apart, lit per vertex: a lit tile with a frame
          * and no spot in its slots, not the IDs' frame */
-        it->props = f->lighting && !(f->flags & HOL_RENDER_IDS) && it->nl >= 0 &&
-                            it->fx < HOL_PROG_FX_SPOTS
-                        ? props
-                        : 0;
+        int apart = f->lighting && !(f->flags & HOL_RENDER_IDS) && it->nl >= 0;
+        it->props = apart && it->fx < HOL_PROG_FX_SPOTS ? rg.props : 0;
+        /* and its ground, with the floor's program (not with wedges) */
+        it->ground = apart && !r->view.wedges ? rg.ground : 0;
         /* tile frame -> room: the tile's heading is room north turned
          * clockwise by orient quarter turns */
         double a = -(double)br->state.orient * 1.5707963267948966;

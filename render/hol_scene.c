@@ -530,10 +530,10 @@ static void hol__small_props(const hol_tile_content *c, int ncreek, uint64_t *rs
 
 void hol_scene_tile(const hol_scene *s, hol_mesh *out, hol_tile t,
                     struct hol_world *world, int bare, int pole, int kind, double cell_m,
-                    uint32_t *out_props)
+                    uint32_t *out_props, uint32_t *out_ground)
 {
     const float m = cell_m > 0 ? (float)cell_m : 1.0f;
-    const uint32_t v0 = out->nv;
+    const uint32_t v0 = out->nv, i0 = out->ni;
     const int lantern = (kind & HOL_SCENE_LANTERN) != 0;
     kind &= 0xff;
     uint64_t h = hol_tile_hash(t);
@@ -569,6 +569,8 @@ void hol_scene_tile(const hol_scene *s, hol_mesh *out, hol_tile t,
     }
     hol__scale_ground(out, v0, m);
     *out_props = out->ni;
+    if (out_ground)
+        *out_ground = out->ni - i0;
     if (bare)
         return;
     uint64_t rs = h ^ 0x5eedull;

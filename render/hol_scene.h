@@ -56,12 +56,15 @@ void hol_scene_tree_mark(const hol_scene *s, hol_mesh *out, int vx, int vz, doub
  * shader draws it unlit, glowing). Its small props (grass tufts, flowers,
  * mushrooms) come last: out_props receives the index (of out's) where
  * they begin (out's end when there are none), so the renderer can draw
- * them apart (lit per vertex at dusk and night: docs/rendering.md#lighting). */
+ * them apart (lit per vertex at dusk and night: docs/rendering.md#lighting).
+ * Its ground (the floor and its water, every vertex's normal straight up)
+ * comes first: out_ground (NULL: not wanted) receives its number of
+ * indices, so the renderer can draw it with the floor's program. */
 #define HOL_SCENE_LANTERN 0x100
 #define HOL_MESH_GLOW 100
 void hol_scene_tile(const hol_scene *s, hol_mesh *out, hol_tile t,
                     struct hol_world *world, int bare, int pole, int kind, double cell_m,
-                    uint32_t *out_props);
+                    uint32_t *out_props, uint32_t *out_ground);
 
 /* Sky / fog colour (linear 0..1). */
 void hol_scene_sky(float out_rgb[3]);

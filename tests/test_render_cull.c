@@ -115,7 +115,7 @@ static void test_tile_meshes_wound_outward(void **state)
             hol_mesh_init(&m, vbuf, NV, ibuf, NI);
             uint32_t props;
             hol_scene_tile(s, &m, t, w, 0, kind % 2 ? (int)a & 3 : -1,
-                           kind | (a % 2 ? HOL_SCENE_LANTERN : 0), 1.0, &props);
+                           kind | (a % 2 ? HOL_SCENE_LANTERN : 0), 1.0, &props, NULL);
             assert_false(m.overflow);
             int bad, flat, n = wound(&m, 0, &bad, &flat);
             assert_true(n >= 32); /* the ground alone is 32 */

@@ -32,7 +32,8 @@ static int key_eq(const hol_prog_key *a, const hol_prog_key *b)
 {
     return a->lighting == b->lighting && a->room == b->room && a->flat == b->flat &&
            a->wedge == b->wedge && a->fx == b->fx && a->shadow == b->shadow &&
-           a->text == b->text && a->lamps == b->lamps;
+           a->text == b->text && a->lamps == b->lamps && a->vlit == b->vlit &&
+           a->floor == b->floor;
 }
 
 static void test_slot_round_trip(void **state)
@@ -56,6 +57,7 @@ static void test_every_key(void **state)
     (void)state;
     int valid = 0, seen[HOL_PROG_SLOTS] = {0};
     hol_prog_key k;
+    for (k.floor = -1; k.floor <= 2; k.floor++)
     for (k.vlit = -1; k.vlit <= 2; k.vlit++)
     for (k.lamps = -1; k.lamps <= 2; k.lamps++)
     for (k.text = -1; k.text <= 2; k.text++)
@@ -76,16 +78,17 @@ static void test_every_key(void **state)
                         }
     assert_int_equal(valid, HOL_PROG_SLOTS);
     assert_int_equal(HOL_PROG_SLOTS,
-                     2 + 12 + 12 * HOL_PROG_FX_COUNT * 2 + 12 * HOL_PROG_FX_SPOTS * 2 + 1);
+                     2 + 12 + 12 * HOL_PROG_FX_COUNT * 2 + 12 * HOL_PROG_FX_SPOTS * 2 +
+                         6 * HOL_PROG_FX_COUNT * 2 + 1);
     /* the text program: text alone */
-    hol_prog_key text = {HOL_LIGHT_DAY, 0, 0, 0, 0, 0, 1, 0, 0};
+    hol_prog_key text = {HOL_LIGHT_DAY, 0, 0, 0, 0, 0, 1, 0, 0, 0};
     assert_int_equal(hol_prog_slot(&text), HOL_PROG_TEXT_SLOT);
     text.wedge = 1;
     assert_int_equal(hol_prog_slot(&text), -1);
     for (int s = 0; s < HOL_PROG_SLOTS; s++)
         assert_int_equal(seen[s], 1);
     /* what cannot be */
-    hol_prog_key day = {HOL_LIGHT_DAY, 0, 0, 1, 0, 0, 0, 0, 0};
+    hol_prog_key day = {HOL_LIGHT_DAY, 0, 0, 1, 0, 0, 0, 0, 0, 0};
     assert_int_equal(hol_prog_slot(&day), 1);
     hol_prog_key bad = day;
     bad.room = 1;
@@ -93,7 +96,7 @@ static void test_every_key(void **state)
     bad = day;
     bad.shadow = 1;
     assert_int_equal(hol_prog_slot(&bad), -1);
-    hol_prog_key room = {HOL_LIGHT_NIGHT, 1, 0, 0, 0, 0, 0, 0, 0};
+    hol_prog_key room = {HOL_LIGHT_NIGHT, 1, 0, 0, 0, 0, 0, 0, 0, 0};
     assert_true(hol_prog_slot(&room) >= 0);
     hol_prog_key lamps = room; /* the lit room's trees and hedges: a program of their own */
     lamps.lamps = 1;
@@ -103,17 +106,28 @@ static void test_every_key(void **state)
     hol_prog_key lit_day = day; /* lamps only in the lit room */
     lit_day.lamps = 1;
     assert_int_equal(hol_prog_slot(&lit_day), -1);
-    hol_prog_key tiles = {HOL_LIGHT_DUSK, 0, 1, 1, HOL_PROG_FX_SPOTS, 1, 0, 0, 0};
+    hol_prog_key tiles = {HOL_LIGHT_DUSK, 0, 1, 1, HOL_PROG_FX_SPOTS, 1, 0, 0, 0, 0};
     assert_true(hol_prog_slot(&tiles) >= 0);
     tiles.shadow = 2;
     assert_int_equal(hol_prog_slot(&tiles), -1);
+    /* a tile's ground: every effect and mask, no wedge, not per vertex */
+    hol_prog_key ground = {HOL_LIGHT_NIGHT, 0, 1, 0, HOL_PROG_FX_SPOTS, 1, 0, 0, 0, 1};
+    assert_true(hol_prog_slot(&ground) >= 0);
+    ground.wedge = 1;
+    assert_int_equal(hol_prog_slot(&ground), -1);
+    ground.wedge = 0;
+    ground.vlit = 1;
+    assert_int_equal(hol_prog_slot(&ground), -1);
+    ground.vlit = 0;
+    ground.lighting = HOL_LIGHT_DAY;
+    assert_int_equal(hol_prog_slot(&ground), -1);
 }
 
 static void test_preamble(void **state)
 {
     (void)state;
     char pre[768];
-    hol_prog_key k = {HOL_LIGHT_NIGHT, 0, 0, 1, HOL_PROG_FX_FIREFLIES, 1, 0, 0, 0};
+    hol_prog_key k = {HOL_LIGHT_NIGHT, 0, 0, 1, HOL_PROG_FX_FIREFLIES, 1, 0, 0, 0, 0};
     int n = hol_prog_preamble(&k, pre, sizeof pre);
     assert_true(n > 0 && (size_t)n == strlen(pre));
     assert_true(strncmp(pre, "#version 300 es\n", 16) == 0);
@@ -124,19 +138,24 @@ static void test_preamble(void **state)
     for (size_t i = 0; i < sizeof want / sizeof want[0]; i++)
         if (!strstr(pre, want[i]))
             fail_msg("the preamble lacks %s:\n%s", want[i], pre);
-    hol_prog_key room = {HOL_LIGHT_DUSK, 1, 0, 0, 0, 0, 0, 0, 0};
+    hol_prog_key room = {HOL_LIGHT_DUSK, 1, 0, 0, 0, 0, 0, 0, 0, 0};
     assert_true(hol_prog_preamble(&room, pre, sizeof pre) > 0);
     assert_non_null(strstr(pre, "#define HOL_LIT 2\n"));
     assert_non_null(strstr(pre, "#define HOL_NIGHT 0\n"));
-    hol_prog_key day = {HOL_LIGHT_DAY, 0, 0, 0, 0, 0, 0, 0, 0};
+    hol_prog_key day = {HOL_LIGHT_DAY, 0, 0, 0, 0, 0, 0, 0, 0, 0};
     assert_true(hol_prog_preamble(&day, pre, sizeof pre) > 0);
     assert_non_null(strstr(pre, "#define HOL_LIT 0\n"));
     assert_non_null(strstr(pre, "#define HOL_TEXT 0\n"));
     assert_int_equal(hol_prog_preamble(&day, pre, 40), -1);
-    hol_prog_key text = {HOL_LIGHT_DAY, 0, 0, 0, 0, 0, 1, 0, 0};
+    hol_prog_key text = {HOL_LIGHT_DAY, 0, 0, 0, 0, 0, 1, 0, 0, 0};
     assert_true(hol_prog_preamble(&text, pre, sizeof pre) > 0);
     assert_non_null(strstr(pre, "#define HOL_TEXT 1\n"));
     assert_non_null(strstr(pre, "#define HOL_SPREAD 2.0\n"));
+    assert_non_null(strstr(pre, "#define HOL_FLOOR 0\n"));
+    hol_prog_key ground = {HOL_LIGHT_NIGHT, 0, 0, 0, 0, 1, 0, 0, 0, 1};
+    assert_true(hol_prog_preamble(&ground, pre, sizeof pre) > 0);
+    assert_non_null(strstr(pre, "#define HOL_FLOOR 1\n"));
+    assert_non_null(strstr(pre, "#define HOL_VLIT 0\n"));
 }
 
 int main(void)

@@ -32,9 +32,21 @@ in vec3 v_vc;
 #else
 #define HOL_IN in
 #endif
-HOL_IN vec3 v_nrm;
+// a tile's ground (HOL_FLOOR): no normal, Lambert term's horizontal part
+// or point (scene.vert.glsl)
+#if HOL_VLIT || HOL_FLOOR
+#define HOL_INN
+#else
+#define HOL_INN in
+#endif
+#if HOL_FLOOR
+#define HOL_INF
+#else
+#define HOL_INF in
+#endif
+HOL_INN vec3 v_nrm;
 HOL_IN vec4 v_col;
-in vec3 v_wpos;
+HOL_INF vec3 v_wpos;
 uniform int u_mode;
 uniform vec4 u_id;
 uniform vec3 u_eye;
@@ -61,7 +73,7 @@ uniform vec4 u_tl[4];
 #if HOL_LIT == 1
 HOL_IN vec4 v_L;
 HOL_IN float v_Le;
-HOL_IN vec4 v_th;
+HOL_INN vec4 v_th;
 #if HOL_SHD
 uniform sampler2D u_shm;
 HOL_IN vec2 v_st;
@@ -229,12 +241,19 @@ void main() {
     o_col = vec4(v_col.rgb, 1.0);
     return;
   }
+#if HOL_FLOOR
+// a tile's ground: its normal straight up, towards the eye (above it);
+// the room's distance (toeye) is not its fog's (u_light is 1)
+  vec3 toeye = vec3(0.0), n = vec3(0.0, 1.0, 0.0);
+  float sgn = 1.0;
+#else
   vec3 toeye = u_eye - v_wpos;
   vec3 n = v_nrm;
   if (dot(n, n) < 1e-6) n = vec3(0.0, 1.0, 0.0);
   n = normalize(n);
   float sgn = dot(n, toeye) < 0.0 ? -1.0 : 1.0;
   n *= sgn;
+#endif
   float d = max(dot(n, normalize(vec3(0.35, 0.85, 0.40))), 0.0);
 #if HOL_LIT == 0
 // the sky's light, linear (docs/rendering.md#lighting)
@@ -247,7 +266,11 @@ void main() {
 #if HOL_LIT == 1
   if (u_light == 1) {
 // the Lambert term's horizontal part, the normal turned to the eye as n is
+#if HOL_FLOOR
+    vec4 th = vec4(0.0);
+#else
     vec4 th = sgn * v_th;
+#endif
     vec2 go = hol_go(v_loc.xz);
     float g = go.x, o = go.y;
 #if HOL_FX

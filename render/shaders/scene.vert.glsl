@@ -20,9 +20,22 @@ uniform mediump int u_lin;
 #else
 #define HOL_OUT out
 #endif
-HOL_OUT vec3 v_nrm;
+// a tile's ground (HOL_FLOOR): its normal is straight up, so the normal,
+// the Lambert term's horizontal part and the point (only for the turn to
+// the eye) are plain globals too
+#if HOL_VLIT || HOL_FLOOR
+#define HOL_OUTN
+#else
+#define HOL_OUTN out
+#endif
+#if HOL_FLOOR
+#define HOL_OUTF
+#else
+#define HOL_OUTF out
+#endif
+HOL_OUTN vec3 v_nrm;
 HOL_OUT vec4 v_col;
-out vec3 v_wpos;
+HOL_OUTF vec3 v_wpos;
 #if HOL_LIT
 uniform float u_klein;
 // the Klein point (x, y) of a tile's floor, height
@@ -87,7 +100,7 @@ HOL_OUT float v_Le;
 // unit floor direction to the light's foot: minus the gradient of cosh x
 // = g L (g^2 L k - l.xy up to g; flat: k - l.xy). Per vertex: t turns
 // little over a prop's face, and the floor's n_h is 0.
-HOL_OUT vec4 v_th;
+HOL_OUTN vec4 v_th;
 #if HOL_SHD
 // the shadow mask's point (scene.frag.glsl's hol_shadow): affine in the
 // Klein point, so interpolation is exact
@@ -167,7 +180,9 @@ void main() {
 #if HOL_LIT == 1
   v_L = u_tl[2] - v_loc.x * u_tl[0] - v_loc.z * u_tl[1];
   v_Le = u_tl[3].z - v_loc.x * u_tl[3].x - v_loc.z * u_tl[3].y;
+#if !HOL_FLOOR
   v_th = hol_th(a_nrm, v_loc.xz);
+#endif
 #if HOL_SHD
   v_st = clamp(v_loc.xz * u_shr.x + 0.5, 0.0, 1.0) *
              vec2((HOL_SHM_N - 1.0) / (HOL_SHM_W * HOL_SHM_N),

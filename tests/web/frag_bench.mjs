@@ -6,10 +6,11 @@
 // with fireflies and a shadow mask (FX=0 none, FX=2 spots; FLAT=1 {4,4}),
 // then the day program; depth and stencil tests on as in the tile pass
 // (STATE=0 off); ROOM=1: the lit room's program (its trees and hedges, lit
-// per vertex) instead of the tiles'; SPLIT=K: each draw as K draws of a
-// horizontal strip each (scissored: the cost of a draw itself), UNI=1 with
-// u_tx set before each. ROUNDS (default 5) rounds of DRAWS (default 60) draws,
-// each folder in turn; the figure is all chromium processes' CPU per draw,
+// per vertex) instead of the tiles'; FLOOR=1: the tiles' ground's (normal
+// straight up); SPLIT=K: each draw as K draws of a horizontal strip each
+// (scissored: the cost of a draw itself), UNI=1 with u_tx set before each.
+// ROUNDS (default 5) rounds of DRAWS (default 60) draws, each folder in
+// turn; the figure is all chromium processes' CPU per draw,
 // the median of the rounds, and the picture's mean code (equal means: most
 // likely the same picture). The preamble's constants are read from the
 // headers (render/hol_program.c's hol_prog_preamble writes the real one).
@@ -23,7 +24,7 @@ const root = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../..')
 const dirs = process.argv.length > 2 ? process.argv.slice(2) : [path.join(root, 'render/shaders')];
 const env = (k, d) => +(process.env[k] ?? d);
 const ROUNDS = env('ROUNDS', 5), DRAWS = env('DRAWS', 60), FX = env('FX', 1), FLAT = env('FLAT', 0);
-const STATE = env('STATE', 1), ROOM = env('ROOM', 0);
+const STATE = env('STATE', 1), ROOM = env('ROOM', 0), FLOOR = env('FLOOR', 0);
 const hdr = ['render/hol_light.h', 'core/hol_shadow.h', 'render/hol_program.h']
   .map((f) => fs.readFileSync(path.join(root, f), 'utf8')).join('\n');
 const def = (n) => {
@@ -37,7 +38,7 @@ function src(dir, f) {
     l.startsWith('@include ') ? src(dir, l.slice(9).trim()) : l).join('\n');
 }
 function pre(lit) {
-  const d = { LIT: lit ? (ROOM ? 2 : 1) : 0, FLAT: lit ? FLAT : 0, WEDGE: 0, VLIT: 0, NIGHT: lit ? 1 : 0, FX: lit ? FX : 0, TEXT: 0,
+  const d = { LIT: lit ? (ROOM ? 2 : 1) : 0, FLAT: lit ? FLAT : 0, WEDGE: 0, VLIT: 0, NIGHT: lit ? 1 : 0, FX: lit ? FX : 0, TEXT: 0, FLOOR: lit && !ROOM ? FLOOR : 0,
     LAMPS: lit && ROOM ? 1 : 0, SPREAD: '8.0', SHD: lit && !ROOM ? 1 : 0, SHM_N: f1('HOL_SHADOW_MASK_N'),
     SHM_R: def('HOL_SHADOW_MASK_RANGE'), SHM_W: f1('HOL_SHADOW_ATLAS_COLS'),
     SHM_H: f1('HOL_SHADOW_ATLAS_ROWS'), TX_ROWS: def('HOL_PROG_TX_ROWS') };
