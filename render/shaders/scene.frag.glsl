@@ -94,14 +94,18 @@ out vec4 o_col;
 // linear light out (docs/rendering.md#linear-light): the sRGB buffer takes
 // it as it is; else encoded here by square roots (the sRGB curve within
 // 0.1 of a code: tests/test_render_light.c), and in the lit programs
-// dithered by +-1/2 code, a pattern of the pixel (no bands in the dark)
+// dithered by +-1/2 code, a pattern of the pixel (no bands in the dark):
+// the tiles' and the room's trees and hedges, not the room's backdrop and
+// outer ground (HOL_LAMPS 0: ambient and sun on flat faces, no lantern's
+// gradient to band; its many layers behind the hedges are shaded on
+// SwiftShader all the same)
 vec4 hol_lin_out(vec3 c) {
   if (u_lin == 1) return vec4(c, 1.0);
   c = max(c, 0.0);
   vec3 s = sqrt(c);
   vec3 e = mix(12.92 * c, HOL_SRGB_A * s + HOL_SRGB_B * sqrt(s) + HOL_SRGB_C * c + HOL_SRGB_D,
                step(vec3(0.0031308), c));
-#if HOL_LIT
+#if HOL_LIT == 1 || HOL_LAMPS
 // the R2 sequence's plane over the pixel in the window (one dot, one
 // fract; no uniform: llvmpipe loads a uniform per pixel): spread evenly
 // over every few pixels
