@@ -654,6 +654,13 @@ static void hol__tile_state(hol_render *r, const hol_frame_desc *f, const hol__i
     }
 }
 
+/* An item's indices drawn with its pass's program: all but a lit tile's
+ * small props and ground (hol__item.props, .ground), each drawn apart. */
+static uint32_t hol__rest(const hol__item *it)
+{
+    return it->count - it->props - it->ground;
+}
+
 /* The vertex array vao (0 the static buffers, 1 the dynamic) bound, when
  * *cur (the one bound) differs. */
 static void hol__bind_vao(hol_render *r, int vao, int *cur, hol_render_stats *st)
@@ -744,7 +751,7 @@ void hol__execute(hol_render *r, const hol_frame_desc *f, const float vp[16],
                 hol__tile_state(r, f, it, HOL__PART_GROUND, st);
                 hol__draw(r, it->first, it->ground, st);
             }
-            if (it->count > it->props + it->ground) /* a ground alone has no rest */
+            if (hol__rest(it)) /* a ground alone has no rest */
                 hol__tile_state(r, f, it, HOL__PART_REST, st);
             st->branches += !it->dyn; /* a firefly's sprite is no branch */
         } else if (cur_pass == HOL__PASS_ROOM && f->lighting) {
@@ -758,8 +765,8 @@ void hol__execute(hol_render *r, const hol_frame_desc *f, const float vp[16],
             r->gl.UniformMatrix4fv(r->pg->u_model, 1, GL_FALSE, it->model);
         }
         hol__bind_vao(r, it->dyn, &cur_vao, st);
-        if (it->count > it->props + it->ground)
-            hol__draw(r, it->first + it->ground, it->count - it->props - it->ground, st);
+        if (hol__rest(it))
+            hol__draw(r, it->first + it->ground, hol__rest(it), st);
     }
     hol__scissor(r, f, NULL, cur_box);
     hol__cull(r, 0, &cur_cull);
