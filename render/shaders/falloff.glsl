@@ -7,8 +7,8 @@
 // and w (the fade to 0 at HOL_LIGHT_RADIUS_M); sh and x (sinh and the floor
 // distance) in hyperbolic programs, xm the floor distance in metres.
 #if HOL_FLAT
-  HOL_V d2 = c2 * u_mpu2 + dh * dh;
-  HOL_V xm = sqrt(c2 * u_mpu2);
+  HOL_V d2 = c2 * HOL_KMPU2 + dh * dh;
+  HOL_V xm = sqrt(c2 * HOL_KMPU2);
   HOL_V den = 1.0 + d2 * (1.0 / (HOL_LIGHT_D0_M * HOL_LIGHT_D0_M));
   HOL_V num = HOL_V(1.0);
 #else
@@ -17,8 +17,8 @@
 // nudged by 1e-6 so that s is 1 at the light's foot
   HOL_V sh = sqrt(c2 + 0.25 * c2 * c2) + 1e-6;
   HOL_V x = log(1.0 + 0.5 * c2 + sh);
-  HOL_V d2 = x * x * u_mpu2 + dh * dh;
-  HOL_V xm = x * sqrt(u_mpu2);
+  HOL_V d2 = x * x * HOL_KMPU2 + dh * dh;
+  HOL_V xm = x * sqrt(HOL_KMPU2);
   HOL_V num = (1.0 - HOL_LIGHT_PHYS) * sh + HOL_LIGHT_PHYS * x;
   HOL_V den = sh * (1.0 + d2 * (1.0 / (HOL_LIGHT_D0_M * HOL_LIGHT_D0_M)));
 #endif

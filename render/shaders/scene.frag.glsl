@@ -15,6 +15,10 @@
 // flat colours and glyphs, with alpha), HOL_SPREAD (the atlas's field
 // reach, core/hol_face.h), and the lights' constants of
 // render/hol_light.h (HOL_LIGHT_D0_M, ...).
+// The draw's values (the fog, the eye, the mode, the output's encoding,
+// the lights' rows of u_tx, ...) are read through HOL_K* names: flat
+// varyings that scene.vert.glsl's hol_draw_values writes, as SwiftShader
+// loads a uniform for every fragment and every use (docs/web.md).
 // Whole-line // comments and blank lines are left out of the C string the
 // build makes (render/shaders/glsl_c.sh); "@include F" inserts F there.
 //
@@ -47,14 +51,34 @@ in vec3 v_vc;
 HOL_INN vec3 v_nrm;
 HOL_IN vec4 v_col;
 HOL_INF vec3 v_wpos;
-uniform int u_mode;
 uniform vec4 u_id;
+uniform vec4 u_wedge;
+uniform int u_wmode;
+// The draw's values (HOL_K*): flat varyings from the vertex shader
+// (scene.vert.glsl's hol_draw_values: SwiftShader loads a uniform for
+// every fragment and every use, a varying once for the fragment's quad),
+// but in the overlays' and the small props' programs the uniforms.
+#if HOL_TEXT || HOL_VLIT
+#define HOL_KV 0
+uniform int u_mode;
 uniform vec3 u_eye;
 uniform vec3 u_fog;
 uniform float u_fogd;
 uniform int u_lin;
-uniform vec4 u_wedge;
-uniform int u_wmode;
+#define HOL_KMODE float(u_mode)
+#define HOL_KEYE u_eye
+#define HOL_KFOG u_fog
+#define HOL_KFOGD u_fogd
+#define HOL_KLIN float(u_lin)
+#else
+#define HOL_KV 1
+flat in vec4 v_k0, v_k1, v_k2;
+#define HOL_KMODE v_k1.w
+#define HOL_KEYE v_k1.xyz
+#define HOL_KFOG v_k0.rgb
+#define HOL_KFOGD v_k0.w
+#define HOL_KLIN v_k2.x
+#endif
 #if HOL_TEXT
 in vec2 v_uv;
 uniform sampler2D u_atlas;
@@ -63,10 +87,18 @@ uniform sampler2D u_atlas;
 // lighting (hol_light.h): 1 a tile with its hyperbolic frame; 2 the
 // room's own meshes (no tile: ambient, fog by room distance)
 HOL_IN vec3 v_loc;
+#if HOL_KV
+#define HOL_KLONLY v_k2.y
+#define HOL_KLIGHT v_k2.z
+#define HOL_KMPU2 v_k2.w
+#else
 uniform highp int u_light;
 uniform int u_lonly;
 uniform float u_mpu2;
-uniform float u_eyeh;
+#define HOL_KLONLY float(u_lonly)
+#define HOL_KLIGHT float(u_light)
+#define HOL_KMPU2 u_mpu2
+#endif
 // lit tiles: the four light slots and the eye (scene.vert.glsl); the lit
 // room: its lanterns' cells (x, z in room metres), heights and weights
 uniform vec4 u_tl[4];
@@ -79,8 +111,33 @@ uniform sampler2D u_shm;
 HOL_IN vec2 v_st;
 #endif
 // per-light values (u_tx[5]: a lantern's weight, in every lit tile's
-// program: lanterns merged by the budget weigh more than 1)
+// program: lanterns merged by the budget weigh more than 1); the eye's
+// height
+#if HOL_KV
+flat in float v_k3;
+flat in vec4 v_tx5;
+#define HOL_KEYEH v_k3
+#define HOL_KTX5 v_tx5
+#if HOL_FX >= 1
+flat in vec4 v_tx4, v_tx6;
+#define HOL_KTX4 v_tx4
+#define HOL_KTX6 v_tx6
+#endif
+#if HOL_FX >= 2
+flat in vec4 v_tx3;
+#define HOL_KTX3 v_tx3
+#else
+#define HOL_KTX3 vec4(-2.0)
+#endif
+#else
+uniform float u_eyeh;
 uniform vec4 u_tx[HOL_TX_ROWS];
+#define HOL_KEYEH u_eyeh
+#define HOL_KTX3 u_tx[3]
+#define HOL_KTX4 u_tx[4]
+#define HOL_KTX5 u_tx[5]
+#define HOL_KTX6 u_tx[6]
+#endif
 // spots (HOL_PROG_FX_SPOTS) and up
 #if HOL_FX >= 2
 HOL_IN vec4 v_U;
@@ -100,7 +157,7 @@ out vec4 o_col;
 // gradient to band; its many layers behind the hedges are shaded on
 // SwiftShader all the same)
 vec4 hol_lin_out(vec3 c) {
-  if (u_lin == 1) return vec4(c, 1.0);
+  if (HOL_KLIN == 1.0) return vec4(c, 1.0);
   c = max(c, 0.0);
   vec3 s = sqrt(c);
   vec3 e = mix(12.92 * c, HOL_SRGB_A * s + HOL_SRGB_B * sqrt(s) + HOL_SRGB_C * c + HOL_SRGB_D,
@@ -172,13 +229,13 @@ float hol_light(float L, float U, float g, float o, float dh, float nup, float t
   return f * hol_lambert(th, xm, dh, id, nup);
 }
 float hol_lights(vec4 L, vec4 U, float g, float o, float y, float nup, vec4 th, out float ff) {
-  vec4 dh = u_tx[4] - y, sd = hol_shadow(g), st = u_tx[3];
+  vec4 dh = HOL_KTX4 - y, sd = hol_shadow(g), st = HOL_KTX3;
   vec4 f = vec4(hol_light(L.x, U.x, g, o, dh.x, nup, th.x, sd.x, st.x),
                 hol_light(L.y, U.y, g, o, dh.y, nup, th.y, sd.y, st.y),
                 hol_light(L.z, U.z, g, o, dh.z, nup, th.z, sd.z, st.z),
                 hol_light(L.w, U.w, g, o, dh.w, nup, th.w, sd.w, st.w));
-  ff = dot(f, u_tx[6]);
-  return dot(f, u_tx[5]);
+  ff = dot(f, HOL_KTX6);
+  return dot(f, HOL_KTX5);
 }
 #undef HOL_V
 #else
@@ -186,7 +243,7 @@ float hol_lights(vec4 L, vec4 U, float g, float o, float y, float nup, vec4 th, 
 float hol_lights(vec4 L, float g2, float o, float dh, float nup, vec4 th) {
   vec4 c2 = max(g2 * L + o, 0.0);
 @include falloff.glsl
-  vec4 f = w * w * num / den * hol_shadow(0.5 * g2) * u_tx[5];
+  vec4 f = w * w * num / den * hol_shadow(0.5 * g2) * HOL_KTX5;
   return dot(f, hol_lambert(th, xm, vec4(dh), inversesqrt(max(d2, 1e-8)), nup));
 }
 #undef HOL_V
@@ -214,7 +271,7 @@ void main() {
   float td = (texture(u_atlas, v_uv).r * 255.0 - 128.0) * (HOL_SPREAD / 128.0);
   float tw = max(0.5 * length(fwidth(v_uv * vec2(textureSize(u_atlas, 0)))), 1e-3);
   float ta = v_col.a > 0.1 ? smoothstep(-tw, tw, td) : 1.0;
-  if (u_mode == 1) {
+  if (HOL_KMODE == 1.0) {
     if (ta < 0.5) discard;
     o_col = vec4(0.0, 0.0, 0.0, 1.0);
     return;
@@ -226,7 +283,7 @@ void main() {
 #endif
 #if HOL_WEDGE
   if (u_wmode == 1) {
-    vec2 d = v_wpos.xz - u_eye.xz;
+    vec2 d = v_wpos.xz - HOL_KEYE.xz;
     float e = -1e-4 * length(d);
     if (u_wedge.x * d.y - u_wedge.y * d.x < e ||
         d.x * u_wedge.w - d.y * u_wedge.z < e) discard;
@@ -235,13 +292,13 @@ void main() {
 #if HOL_VLIT
 // a small prop: lit, fogged and toned per vertex (scene.vert.glsl's
 // hol_vlight); u_lonly's light, fog and fireflies as they are
-  o_col = u_lonly == 1 ? vec4(v_vc, 1.0) : hol_lin_out(v_vc);
+  o_col = HOL_KLONLY == 1.0 ? vec4(v_vc, 1.0) : hol_lin_out(v_vc);
 #else
-  if (u_mode == 1) {
+  if (HOL_KMODE == 1.0) {
     o_col = v_col.a > 0.5 ? u_id : vec4(0.0, 0.0, 0.0, 1.0);
     return;
   }
-  if (u_mode == 2) {
+  if (HOL_KMODE == 2.0) {
     o_col = vec4(v_col.rgb, 1.0);
     return;
   }
@@ -251,7 +308,7 @@ void main() {
   vec3 toeye = vec3(0.0), n = vec3(0.0, 1.0, 0.0);
   float sgn = 1.0;
 #else
-  vec3 toeye = u_eye - v_wpos;
+  vec3 toeye = HOL_KEYE - v_wpos;
   vec3 n = v_nrm;
   if (dot(n, n) < 1e-6) n = vec3(0.0, 1.0, 0.0);
   n = normalize(n);
@@ -262,13 +319,13 @@ void main() {
 #if HOL_LIT == 0
 // the sky's light, linear (docs/rendering.md#lighting)
   vec3 c = v_col.rgb * (0.2458 + 0.9115 * d);
-  float dist = length(toeye) * u_fogd;
+  float dist = length(toeye) * HOL_KFOGD;
   float f = exp(-dist * dist);
-  o_col = hol_lin_out(mix(u_fog, c, f));
+  o_col = hol_lin_out(mix(HOL_KFOG, c, f));
 #else
   float lam = 0.0, lamf = 0.0, de2 = dot(toeye, toeye);
 #if HOL_LIT == 1
-  if (u_light == 1) {
+  if (HOL_KLIGHT == 1.0) {
 // the Lambert term's horizontal part, the normal turned to the eye as n is
 #if HOL_FLOOR
     vec4 th = vec4(0.0);
@@ -292,7 +349,7 @@ void main() {
 #endif
 // the lanterns' sum mapped back (fireflies' lamf as it is: faint)
   lam = hol_tone(lam);
-  float f = exp(-de2 * (u_fogd * u_fogd));
+  float f = exp(-de2 * (HOL_KFOGD * HOL_KFOGD));
   vec3 c = hol_lit(v_col.rgb, d, lam, lamf);
 #if HOL_LIT == 1
   // a lantern's glass: unlit (the room has none)
@@ -301,7 +358,7 @@ void main() {
 // the light alone (u_lonly: the tests' frames) chosen, not branched to:
 // SwiftShader runs the rest of a shader under a mask after a return in a
 // branch
-  o_col = u_lonly == 1 ? vec4(hol_light_only(lam, f, lamf), 1.0) : hol_lin_out(mix(u_fog, c, f));
+  o_col = HOL_KLONLY == 1.0 ? vec4(hol_light_only(lam, f, lamf), 1.0) : hol_lin_out(mix(HOL_KFOG, c, f));
 #endif
 #endif
 }

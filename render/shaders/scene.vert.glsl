@@ -13,6 +13,67 @@ uniform mat4 u_model;
 // as scene.frag.glsl's (a uniform of both stages keeps one precision)
 uniform mediump int u_mode;
 uniform mediump int u_lin;
+#if !HOL_TEXT
+uniform vec3 u_eye;
+uniform vec3 u_fog;
+uniform float u_fogd;
+#endif
+#if HOL_LIT
+uniform highp int u_light;
+uniform mediump int u_lonly;
+uniform float u_mpu2;
+uniform float u_eyeh;
+#endif
+#if HOL_LIT == 1
+uniform vec4 u_tx[HOL_TX_ROWS];
+#endif
+// falloff.glsl's and sky.glsl's values, as scene.frag.glsl's (HOL_K*):
+// here the uniforms themselves
+#define HOL_KMPU2 u_mpu2
+#define HOL_KEYEH u_eyeh
+// The draw's values for the fragment shader (scene.frag.glsl's HOL_KV):
+// flat, so that a fragment takes them from its triangle, not from the
+// uniforms (SwiftShader loads a uniform for every fragment and every use:
+// docs/performance.md); not the overlays' nor the small props' programs
+// (HOL_VLIT: a tuft's many small triangles set up no more varyings).
+#if !HOL_TEXT && !HOL_VLIT
+flat out vec4 v_k0, v_k1, v_k2;
+#if HOL_LIT == 1
+flat out float v_k3;
+flat out vec4 v_tx5;
+#if HOL_FX >= 1
+flat out vec4 v_tx4, v_tx6;
+#endif
+#if HOL_FX >= 2
+flat out vec4 v_tx3;
+#endif
+#endif
+// v_k0: the fog's colour and density; v_k1: the eye, the mode; v_k2:
+// the output's encoding (u_lin), and lit: the light-only frames, the
+// lighting (u_light), the metres per unit squared; v_k3: the eye's
+// height; v_tx*: u_tx's rows 3-6 (spots' tilts, heights, lanterns' and
+// fireflies' weights) as the program's effects need them
+void hol_draw_values() {
+  v_k0 = vec4(u_fog, u_fogd);
+  v_k1 = vec4(u_eye, float(u_mode));
+#if HOL_LIT
+  v_k2 = vec4(float(u_lin), float(u_lonly), float(u_light), u_mpu2);
+#else
+  v_k2 = vec4(float(u_lin), 0.0, 0.0, 0.0);
+#endif
+#if HOL_LIT == 1
+  v_k3 = u_eyeh;
+  v_tx5 = u_tx[5];
+#if HOL_FX >= 1
+  v_tx4 = u_tx[4];
+  v_tx6 = u_tx[6];
+#endif
+#if HOL_FX >= 2
+  v_tx3 = u_tx[3];
+#endif
+#endif
+}
+#endif
 // the small props' programs (HOL_VLIT) give the fragment their colour
 // alone (v_vc, scene.frag.glsl): the other varyings are plain globals
 #if HOL_VLIT
@@ -52,9 +113,6 @@ HOL_OUT vec3 v_loc;
 // height (scene.frag.glsl: the light's change with height is followed
 // without cutting the meshes)
 uniform vec4 u_tl[4];
-uniform highp int u_light;
-uniform float u_mpu2;
-uniform vec3 u_eye;
 out vec4 v_rl;
 out float v_rk;
 // At height y over the vertex's floor point: the distance d^2, the fade w,
@@ -117,10 +175,6 @@ vec4 hol_th(vec3 nrm, vec2 k) {
   vec4 gx = a * k.x * v_L - u_tl[0], gy = a * k.y * v_L - u_tl[1];
   return -(gx * nl.x - gy * nl.z) * inversesqrt(max(gx * gx + gy * gy, 1e-20));
 }
-// spots (HOL_PROG_FX_SPOTS) and up; and the per-vertex light's programs
-#if HOL_FX >= 2 || HOL_VLIT
-uniform vec4 u_tx[HOL_TX_ROWS];
-#endif
 #if HOL_FX >= 2
 // <u, (k, 1)>: a spot's direction, affine too
 HOL_OUT vec4 v_U;
@@ -135,12 +189,6 @@ HOL_OUT vec4 v_U;
 // only writes; spots are not followed (a tile with a spot in its slots
 // keeps the per-fragment light). docs/rendering.md#lighting says where
 // that departs.
-uniform float u_mpu2;
-uniform vec3 u_eye;
-uniform vec3 u_fog;
-uniform float u_fogd;
-uniform float u_eyeh;
-uniform mediump int u_lonly;
 #if HOL_SHD
 uniform sampler2D u_shm;
 #endif
@@ -216,6 +264,9 @@ void main() {
 #endif
 #if HOL_LIT == 1 && HOL_VLIT
   hol_vlight(w.xyz, v_nrm, v_th, cl);
+#endif
+#if !HOL_TEXT && !HOL_VLIT
+  hol_draw_values();
 #endif
   gl_Position = u_vp * w;
 }

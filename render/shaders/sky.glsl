@@ -80,7 +80,7 @@ float hol_eye_d2(float g, float o, float le, float y) {
   float xe = log(1.0 + 0.5 * ce2 + sqrt(ce2 + 0.25 * ce2 * ce2));
   float xe2 = xe * xe;
 #endif
-  float dh = u_eyeh - y;
-  return xe2 * u_mpu2 + dh * dh;
+  float dh = HOL_KEYEH - y;
+  return xe2 * HOL_KMPU2 + dh * dh;
 }
 #endif
