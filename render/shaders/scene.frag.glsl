@@ -99,9 +99,6 @@ uniform float u_mpu2;
 #define HOL_KLIGHT float(u_light)
 #define HOL_KMPU2 u_mpu2
 #endif
-// lit tiles: the four light slots and the eye (scene.vert.glsl); the lit
-// room: its lanterns' cells (x, z in room metres), heights and weights
-uniform vec4 u_tl[4];
 #if HOL_LIT == 1
 HOL_IN vec4 v_L;
 HOL_IN float v_Le;

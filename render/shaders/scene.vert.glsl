@@ -107,8 +107,9 @@ HOL_OUT vec3 v_loc;
 // l.z - k.l.xy is affine in the vertex, so interpolation is exact
 #if HOL_LIT == 2 && HOL_LAMPS
 // the room's trees and hedges (HOL_LAMPS), lit per vertex: their lanterns'
-// cells (u_tl, as in scene.frag.glsl), 3 in u_light a flat room; the light
-// at the vertex's floor point at the knot heights 0, 0.65, 1.3, 1.95 m
+// cells (u_tl: x, z in room metres, heights, weights), 3 in u_light a
+// flat room; the light at the vertex's floor point at the knot heights
+// 0, 0.65, 1.3, 1.95 m
 // (v_rl) and 3.25 m (v_rk), which the fragment interpolates by its own
 // height (scene.frag.glsl: the light's change with height is followed
 // without cutting the meshes)
