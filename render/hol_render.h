@@ -16,7 +16,8 @@
  *   polygons and the HUD are uploaded (a few KB).
  * - A frame is one eye: hol_view_build gives the leaves and branches; the
  *   queue holds one stencil polygon per visible leaf (pass 0, colour and
- *   depth writes off; rooms other than 3 x 3 tell branches apart by their
+ *   depth writes off, drawn with the day's program at every sky, the
+ *   cheapest; rooms other than 3 x 3 tell branches apart by their
  *   wedges instead, tested in the fragment shader: hol_view.h), the room's
  *   own meshes (trees on all (C+1)(R+1) vertices,
  *   hedges on the boundary, a backdrop forest beyond them; pass 1, no

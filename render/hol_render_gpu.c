@@ -301,10 +301,10 @@ static unsigned hol__tile_fx_used(const hol_render *r)
 }
 
 /* The programs frame f uses, n of them, in the order their per-frame
- * uniforms are set: day's one; or at dusk and night the tiles' of the
- * lower effects' levels that a tile takes, then the tiles' without
- * shadows, the room's, and the tiles' with shadow masks (current at the
- * end). */
+ * uniforms are set: day's one; or at dusk and night day's too (the
+ * stencil pass's: hol__set_pass), the tiles' of the lower effects'
+ * levels that a tile takes, then the tiles' without shadows, the room's,
+ * and the tiles' with shadow masks (current at the end). */
 static int hol__frame_uses(const hol_render *r, const hol_frame_desc *f, hol__use out[])
 {
     if (!f->lighting) {
@@ -313,6 +313,7 @@ static int hol__frame_uses(const hol_render *r, const hol_frame_desc *f, hol__us
     }
     int n = 0, top = r->lights.fx;
     unsigned m = hol__tile_fx_used(r);
+    out[n++] = (hol__use){HOL__USE_DAY, 0}; /* the stencil pass's */
     for (int fx = 0; fx <= top; fx++) {
         if (m >> (HOL__VLIT_BIT + fx) & 1) {
             out[n++] = (hol__use){HOL__USE_VLIT0, fx};
@@ -574,7 +575,12 @@ static void hol__text_prog(hol_render *r, const hol_frame_desc *f)
  * backdrop on the cheaper path: both get the pass's state), and the tile
  * pass's state goes to both tile programs (with the shadow masks' texture
  * on unit 1, current at the end, and without); the overlays take the text
- * program. */
+ * program. The stencil pass draws with the day's program at every sky:
+ * it writes no colour, but a renderer that shades every fragment before
+ * its stencil test and whatever the colour mask (SwiftShader: the web)
+ * pays the program's fragment shader over every leaf polygon's pixels,
+ * and the lit tiles' with shadow masks (the one current before) cost the
+ * web's night frame about 20 ms (docs/performance.md). */
 static void hol__set_pass(hol_render *r, const hol_frame_desc *f, int pass, const float vp[16])
 {
     if (pass >= HOL__PASS_HAND && r->progs[HOL_PROG_TEXT_SLOT].prog) {
@@ -598,7 +604,7 @@ static void hol__set_pass(hol_render *r, const hol_frame_desc *f, int pass, cons
     }
     if (f->lighting && pass == HOL__PASS_ROOM)
         hol__set_pass_as(r, f, pass, vp, hol__frame_prog(r, f, HOL__USE_BACK));
-    int last = pass == HOL__PASS_ROOM ? HOL__USE_ROOM : HOL__USE_TILESM;
+    int last = pass == HOL__PASS_ROOM ? HOL__USE_ROOM : HOL__USE_DAY;
     hol__set_pass_as(r, f, pass, vp, f->lighting ? hol__frame_prog(r, f, last) : NULL);
 }
 

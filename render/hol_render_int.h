@@ -212,7 +212,7 @@ enum {
 typedef struct hol__use {
     int use, fx;
 } hol__use;
-#define HOL__MAX_USES (4 + 6 * HOL_PROG_FX_COUNT)
+#define HOL__MAX_USES (5 + 6 * HOL_PROG_FX_COUNT)
 
 /* m = the identity (column-major). */
 static inline void hol__identity(float m[16])
