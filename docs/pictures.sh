@@ -91,7 +91,7 @@ cmd_of() {
         C="\$H render --tiling 4,${1#forest_q} $FOREST --pitch -22 --hud --out \"\$O\"" ;;
     forest_q6_room5x5_cell06)
         C="\$H render --tiling 4,6 --room 5x5 --cell 0.6 --seed 3 --walk SSWW --eye 0.1,1.6,2.9 --yaw -30 --pitch -22 --hud --size 400x300 --out \"\$O\"" ;;
-    light_q[56]_dusk | light_q[56]_night) # README and rendering.md#lighting
+    light_q[56]_dusk | light_q[56]_night) # README and lighting.md
         q=${1#light_q}
         case $q in 5_*) l=$LANTERNS_5 ;; *) l=$LANTERNS_6 ;; esac
         C="\$H render --tiling 4,${q%%_*} $FOREST --pitch -22 --lighting ${q#*_} $l --out \"\$O\"" ;;

@@ -600,7 +600,7 @@ void hol_light_budget(hol_light_frame *lf, const hol_view *v)
     }
     /* the hedges: a lantern whose foot lies in no drawn tile is outside
      * them, and they stand between it and every floor point of the room
-     * (fireflies are left: docs/rendering.md#lighting) */
+     * (fireflies are left: docs/lighting.md) */
     for (int i = lf->n - 1; i >= 0 && nt > 0; i--) {
         int in = lf->ff[i];
         for (int t = 0; t < nt && !in; t++)

@@ -129,7 +129,7 @@
 #define HOL_LIGHT_D0_M 1.0
 #define HOL_LIGHT_PHYS 0.5
 #define HOL_LIGHT_TONE_K 0.25 /* the lanterns' sum's white level */
-/* The sRGB encode of linear light c (docs/rendering.md#linear-light), by
+/* The sRGB encode of linear light c (docs/lighting.md#linear-light), by
  * square roots: A sqrt(c) + B sqrt(sqrt(c)) + C c + D from c = 0.0031308
  * up, 12.92 c below; within 0.1 of a code of the sRGB formula (a minimax
  * fit; tests/test_render_light.c checks it at every code) */
@@ -229,7 +229,7 @@ hol_err hol_light_prepare(const hol_frame_desc *f, const struct hol_world *w,
  * every lantern that reaches it (hol_light_tile takes lanterns before
  * fireflies) and the lanterns' light is continuous across every tile edge;
  * fireflies fill the slots left, nearest first, so theirs may still step
- * where lanterns fill a tile (docs/rendering.md#lighting). */
+ * where lanterns fill a tile (docs/lighting.md). */
 void hol_light_budget(hol_light_frame *lf, const struct hol_view *v);
 
 /* The index into lf->ff_tile of tile t's firefly, or -1 (none placed). */

@@ -41,7 +41,7 @@
  * - ID mode renders the same queue but writes, for floor pixels, the index
  *   + 1 of the branch drawn there and 0 elsewhere (props, trees, sky): the
  *   tile under every pixel, as the portals decided it.
- * - Lighting (f->lighting, docs/rendering.md#lighting): day draws exactly
+ * - Lighting (f->lighting, docs/lighting.md): day draws exactly
  *   the picture without lights. At dusk and night every tile fragment gets
  *   its point on the hyperboloid (render/hol_light.h: the tile's frame in
  *   the user's tile, the Klein map of the square), up to 4 lanterns chosen

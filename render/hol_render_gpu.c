@@ -188,7 +188,7 @@ static void hol__frame_lights(hol_render *r, const hol_frame_desc *f)
  * their weights; up to four): a lantern's cell is the one whose tile, by
  * the room walk columns first then rows (as the vertex trees are chosen:
  * render/hol_scene.c), is the lantern's tile. The shader measures a point
- * in the Klein frame of that cell's tile (docs/rendering.md#lighting). */
+ * in the Klein frame of that cell's tile (docs/lighting.md). */
 static void hol__room_lights(hol_render *r, const hol_frame_desc *f)
 {
     float tl[4][4] = {{1e4f, 1e4f, 1e4f, 1e4f}, {1e4f, 1e4f, 1e4f, 1e4f}, {0}, {0}};

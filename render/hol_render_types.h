@@ -85,7 +85,7 @@ enum {
     HOL_RENDER_LIGHT_ONLY = 4096, /* tests, at dusk and night: a tile's
                                      pixel is (lanterns' sum, fog factor,
                                      fireflies' sum)
-                                     (docs/rendering.md#lighting) */
+                                     (docs/lighting.md) */
     HOL_RENDER_PANEL = 2048,      /* a headset's eye: the HUD text (and the
                                      minimap unless in the hand) on a panel
                                      in the world (panel_* below), not on
@@ -182,7 +182,7 @@ typedef struct hol_frame_desc {
      * eye's viewport here; the frame clears and draws only its own
      * cam.width x cam.height rectangle (scissor). */
     int vp_x, vp_y;
-    /* The sky and its lights (docs/rendering.md#lighting): lighting is
+    /* The sky and its lights (docs/lighting.md): lighting is
      * core's hol_app_lighting: HOL_LIGHT_DAY (the picture without lights,
      * exactly as before), HOL_LIGHT_DUSK, HOL_LIGHT_NIGHT; lanterns: tiles with a lantern over their centre
      * (lit at dusk and night). */

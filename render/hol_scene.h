@@ -56,7 +56,7 @@ void hol_scene_tree_mark(const hol_scene *s, hol_mesh *out, int vx, int vz, doub
  * shader draws it unlit, glowing). Its small props (grass tufts, flowers,
  * mushrooms) come last: out_props receives the index (of out's) where
  * they begin (out's end when there are none), so the renderer can draw
- * them apart (lit per vertex at dusk and night: docs/rendering.md#lighting).
+ * them apart (lit per vertex at dusk and night: docs/lighting.md).
  * Its ground (the floor and its water, every vertex's normal straight up)
  * comes first: out_ground (NULL: not wanted) receives its number of
  * indices, so the renderer can draw it with the floor's program. */

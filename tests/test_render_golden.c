@@ -51,7 +51,7 @@ typedef struct golden_view {
      * 3 x 3, 1 m. Each tiling gets a world of its own (same seed). */
     int q, cols, rows;
     double cell;
-    /* dusk and night (docs/rendering.md#lighting): the sky, and lanterns
+    /* dusk and night (docs/lighting.md): the sky, and lanterns
      * on the tiles that these room walks from the user's state reach */
     int lighting;
     const char *lanterns[4];

@@ -8,7 +8,7 @@
  * reaches, walked edge by edge from the user's cell, then the stated Klein
  * map of the point in that cell); a lantern's point from the same model
  * walked along the room steps that reach its tile. Only the falloff and
- * the map are the documented formulas (docs/rendering.md#lighting), written
+ * the map are the documented formulas (docs/lighting.md), written
  * again here. The renderer draws with HOL_RENDER_LIGHT_ONLY: red the
  * lanterns' sum, green the fog factor.
  *
@@ -18,7 +18,7 @@
  *   frames reach and takes each trunk's distance to the floor geodesic
  *   from the pixel's point to the lantern by a ternary search along it;
  *   every trunk shadows every lantern within reach
- *   (docs/rendering.md#lighting). Unshadowed pixels must all match (but
+ *   (docs/lighting.md). Unshadowed pixels must all match (but
  *   for ones on a cell edge, where the raster may take either tile); of
  *   the shadowed, 95 % (the shadow mask's texels).
  * - test_flat_equals_euclid: in {4,4} the same pixels equal flat-space
@@ -47,10 +47,10 @@
  *   light with a Lambert term, face by face as the model's prism says,
  *   lit but not clipped white.
  * - test_night_darker_than_day: with the lanterns' sum tone-mapped
- *   (docs/rendering.md#tone-map; the model's tone()), dusk and night
+ *   (docs/lighting.md#tone-map; the model's tone()), dusk and night
  *   views among lit trunks are darker than day.
  * - test_srgb_encode, test_linear_light, test_night_no_bands: linear
- *   light (docs/rendering.md#linear-light): the shaders' encode within a
+ *   light (docs/lighting.md#linear-light): the shaders' encode within a
  *   tenth of a code of the sRGB formula; lanterns added in linear light
  *   (each dusk floor pixel against the same pixel without lanterns, the
  *   model's light and fog); no flat boxes in night's dark gradients.
@@ -279,7 +279,7 @@ static int same_point(double m, const double a[3], const double b[3])
     return floor_m(m, a, b) < 1e-6;
 }
 
-/* The documented fog (docs/rendering.md#lighting): exp(-(k D)^2), D the
+/* The documented fog (docs/lighting.md): exp(-(k D)^2), D the
  * true distance in H^2 x E from the eye (model point eye, height
  * c->eye[1]) to the floor point h: its floor distance by the acosh of the
  * Lorentz product (floor_m), not the chord the shader once took. */
@@ -307,7 +307,7 @@ static double lantern_term(double floor_metres, double x_units)
     return w * (1 - PHYS + PHYS * s) / (1 + e * e) * (0.3 + 0.7 * HEIGHT / d);
 }
 
-/* The tone curve of the lanterns' sum (docs/rendering.md#tone-map):
+/* The tone curve of the lanterns' sum (docs/lighting.md#tone-map):
  * Reinhard's, l K / (K + l), slope 1 at 0 and never above K. */
 static double tone(double l)
 {
@@ -413,7 +413,7 @@ static double wedge_occ(double lp, double lt, double tp, double mpu)
     return o < 0 ? 0 : o > 1 ? 1 : o;
 }
 
-/* Trunk shadows (docs/rendering.md#lighting): the factor on lantern i's
+/* Trunk shadows (docs/lighting.md): the factor on lantern i's
  * light at model point h: 1 - the sum of the occlusions (wedge_occ) of
  * every trunk within RADIUS of it (every trunk shadows every lantern). -1: h lies
  * within a trunk's soft edge plus 2 cm of its axis (under the trunk: not
@@ -996,7 +996,7 @@ static void test_light_continuous_across_edges(void **state)
 }
 
 /* Issue 38: every trunk shadows every lantern that reaches it. The
- * four-lantern corner view (docs/rendering.md#lighting's pictures: the
+ * four-lantern corner view (docs/lighting.md's pictures: the
  * user in the room's south-west cell looking north-east over the room,
  * lanterns on the tiles of the room walks SW+N, SW+EN, SW+NE and SW+NNE) in {4,4},
  * {4,5}, {4,6} and {4,8}: the share of floor pixels the renderer lights
@@ -1693,7 +1693,7 @@ static void test_firefly_sprites(void **state)
 }
 
 /* Trunks take lantern light by the same law as the floor, with a Lambert
- * term from their own normal (docs/rendering.md#lighting): in {4,4} (flat,
+ * term from their own normal (docs/lighting.md): in {4,4} (flat,
  * so the model is Euclidean) a lantern on the middle cell, 0.71 m from the
  * trunk on its north-west corner (room vertex (1, 1)), the eye 1.2 m from
  * that trunk looking across the line from the trunk to the lantern. The
@@ -1796,7 +1796,7 @@ static void test_night_darker_than_day(void **state)
     }
 }
 
-/* Linear light (issue 38, finding 6; docs/rendering.md#linear-light): the
+/* Linear light (issue 38, finding 6; docs/lighting.md#linear-light): the
  * sRGB formula both ways, the sky's documented colours and light. */
 static double srgb_dec(double c)
 {

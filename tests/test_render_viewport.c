@@ -87,7 +87,7 @@ static void test_viewport_origin(void **state)
         }
     /* the right eye equals its render at the origin: every pixel within
      * a code, all but 1 in 1000 the same. The sRGB encode (linear light:
-     * docs/rendering.md#linear-light) is steep in the dark (12.92 at 0),
+     * docs/lighting.md#linear-light) is steep in the dark (12.92 at 0),
      * so a varying interpolated a last bit differently at another window
      * position may round a pixel to the next code */
     printf("viewport: %ld of %ld pixels the same, %ld within a code\n", same, other, near);

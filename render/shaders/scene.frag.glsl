@@ -145,7 +145,7 @@ const vec4 v_U = vec4(0.0);
 @include sky.glsl
 #endif
 out vec4 o_col;
-// linear light out (docs/rendering.md#linear-light): the sRGB buffer takes
+// linear light out (docs/lighting.md#linear-light): the sRGB buffer takes
 // it as it is; else encoded here by square roots (the sRGB curve within
 // 0.1 of a code: tests/test_render_light.c), and in the lit programs
 // dithered by +-1/2 code, a pattern of the pixel (no bands in the dark):
@@ -252,7 +252,7 @@ float hol_lights(vec4 L, float g2, float o, float dh, float nup, vec4 th) {
 // hol_room_light) at the knot heights 0, 0.65, 1.3, 1.95 and 3.25 m, and
 // here linearly between the knots by the fragment's height (above 3.25 m
 // the last two knots' line, not below 0: the crowns' faint light falling
-// off); docs/rendering.md#lighting says where that departs
+// off); docs/lighting.md says where that departs
 in vec4 v_rl;
 in float v_rk;
 float hol_room_lam(float y) {
@@ -314,7 +314,7 @@ void main() {
 #endif
   float d = max(dot(n, normalize(vec3(0.35, 0.85, 0.40))), 0.0);
 #if HOL_LIT == 0
-// the sky's light, linear (docs/rendering.md#lighting)
+// the sky's light, linear (docs/lighting.md)
   vec3 c = v_col.rgb * (0.2458 + 0.9115 * d);
   float dist = length(toeye) * HOL_KFOGD;
   float f = exp(-dist * dist);

@@ -188,7 +188,7 @@ HOL_OUT vec4 v_U;
 // mask read at the vertex's own point; the sun's term; the fog by the
 // true distance), its colour in linear light (v_vc), which the fragment
 // only writes; spots are not followed (a tile with a spot in its slots
-// keeps the per-fragment light). docs/rendering.md#lighting says where
+// keeps the per-fragment light). docs/lighting.md says where
 // that departs.
 #if HOL_SHD
 uniform sampler2D u_shm;
@@ -253,7 +253,7 @@ void main() {
 #endif
 
 // the colours are authored in sRGB: the lit mode (0) takes them to linear
-// light here, once a vertex (docs/rendering.md#linear-light); the flat
+// light here, once a vertex (docs/lighting.md#linear-light); the flat
 // mode and the overlays' program keep them as authored, but for an sRGB
 // buffer (u_lin), which encodes what is written: it takes them decoded
   vec3 cl = mix(a_col.rgb * (1.0 / 12.92), pow((a_col.rgb + 0.055) * (1.0 / 1.055), vec3(2.4)),

@@ -2,7 +2,7 @@
 // the lit programs): the sky's and the lights' colours, the tone map, a
 // lit tile's Lambert term, shadow factor and distance from the eye (the
 // fog's), a surface's lit colour and the light-only frames' output.
-// the sky (docs/rendering.md#lighting): ambient, sun and lantern colours,
+// the sky (docs/lighting.md): ambient, sun and lantern colours,
 // linear light (calibrated through the sRGB curve: #linear-light)
 // HOL_NIGHT 2: a sky between dusk and night (a lighting cycle), the
 // frame's mix of the two (render/hol_render_gpu.c's hol__frame_lights)
@@ -15,7 +15,7 @@ const vec3 u_amb = vec3(0.0980, 0.0772, 0.0873), u_sun = vec3(0.2174, 0.1039, 0.
 #endif
 const vec3 u_lcol = vec3(1.76, 0.99, 0.34), u_fcol = vec3(0.31, 0.51, 0.11);
 // The tone map of the lanterns' sum l (render/hol_light.h,
-// docs/rendering.md#tone-map): Reinhard's curve with the white level K =
+// docs/lighting.md#tone-map): Reinhard's curve with the white level K =
 // HOL_LIGHT_TONE_K, l K / (K + l): slope 1 at 0 (a faint pool keeps its
 // value), never above K, so K times the lanterns' colour (0.75 in red) is
 // the most light the lanterns give a surface: a trunk beside one glows

@@ -650,7 +650,7 @@ await check('a night level with lanterns draws on WebGL 2 (the lit shader compil
   const night = await mean('night.lvl', 'mode explore\nseed 3\nminimap off\nlighting night\nplace lantern O\nplace lantern N\n');
   /* the trunks beside the two lanterns take their light by the floor's law
    * (issue 38) and fill much of this view; the lanterns' sum is tone-mapped
-   * (docs/rendering.md#tone-map), so they glow but stay under their colour:
+   * (docs/lighting.md#tone-map), so they glow but stay under their colour:
    * the view's mean 0.51 of day's (39.3 against 77.4; of the whole page
    * with its header, as this check measured before: 0.64 with the white
    * level 1/3, 0.87 with the sum unbounded, 0.5 when only the floor was

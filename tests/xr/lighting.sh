@@ -12,7 +12,7 @@
 # the printed pose and tangents, independent of the renderer):
 # - night darker than dusk darker than day (night's mean luma below half
 #   of day's: the trunks, hedges and crowns take the lantern's light by the
-#   floor's law since issue 38, tone-mapped (docs/rendering.md#tone-map):
+#   floor's law since issue 38, tone-mapped (docs/lighting.md#tone-map):
 #   0.37 to 0.38 of day; 0.2 when only the floor was lit, 0.54 to 0.57 with the
 #   lanterns' sum unbounded);
 # - at dusk and night the lantern's glass glows where the pinhole puts it
