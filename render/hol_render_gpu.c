@@ -580,7 +580,7 @@ static void hol__text_prog(hol_render *r, const hol_frame_desc *f)
  * its stencil test and whatever the colour mask (SwiftShader: the web)
  * pays the program's fragment shader over every leaf polygon's pixels,
  * and the lit tiles' with shadow masks (the one current before) cost the
- * web's night frame about 20 ms (docs/performance.md). */
+ * web's night frame about 20 ms (docs/web-night.md). */
 static void hol__set_pass(hol_render *r, const hol_frame_desc *f, int pass, const float vp[16])
 {
     if (pass >= HOL__PASS_HAND && r->progs[HOL_PROG_TEXT_SLOT].prog) {
