@@ -5,7 +5,7 @@
  * every pixel of every draw, before its stencil test and whatever the
  * colour mask; at night the program bound before was the lit tiles' with
  * shadow masks, the dearest, and it cost the web's night frame about
- * 20 ms (docs/performance.md, night against day on the web).
+ * 20 ms (docs/web-night.md).
  *
  * The referee is GL itself: the renderer's entry points are wrapped
  * (desc.getproc), so the test sees which program object each draw uses
@@ -30,19 +30,14 @@
 #define W 96
 #define H 72
 
-#ifndef GL_TRUE
-#define GL_TRUE 1
-#endif
-
 typedef void (*use_fn)(unsigned);
 typedef void (*mask_fn)(unsigned char, unsigned char, unsigned char, unsigned char);
 typedef void (*elems_fn)(unsigned, int, unsigned, const void *);
 typedef void (*arrays_fn)(unsigned, int, int);
 
-static use_fn real_use;
-static mask_fn real_mask;
-static elems_fn real_elems;
-static arrays_fn real_arrays;
+/* The wrapped entry points' real ones (getproc), by WRAP_*. */
+enum { WRAP_USE, WRAP_MASK, WRAP_ELEMS, WRAP_ARRAYS, WRAP_COUNT };
+static hol_osmesa_proc real[WRAP_COUNT];
 
 /* What the wrappers saw since the last reset. */
 static struct {
@@ -80,46 +75,43 @@ static void note_draw(void)
 static void w_use(unsigned p)
 {
     seen.prog = p;
-    real_use(p);
+    ((use_fn)real[WRAP_USE])(p);
 }
 
 static void w_mask(unsigned char r, unsigned char g, unsigned char b, unsigned char a)
 {
     seen.colour = r || g || b || a;
-    real_mask(r, g, b, a);
+    ((mask_fn)real[WRAP_MASK])(r, g, b, a);
 }
 
 static void w_elems(unsigned mode, int n, unsigned type, const void *idx)
 {
     note_draw();
-    real_elems(mode, n, type, idx);
+    ((elems_fn)real[WRAP_ELEMS])(mode, n, type, idx);
 }
 
 static void w_arrays(unsigned mode, int first, int n)
 {
     note_draw();
-    real_arrays(mode, first, n);
+    ((arrays_fn)real[WRAP_ARRAYS])(mode, first, n);
 }
 
+/* The renderer's loader: the four entry points above wrapped, by name. */
 static hol_osmesa_proc getproc(const char *name)
 {
+    static const struct {
+        const char *name;
+        hol_osmesa_proc wrap;
+    } wraps[WRAP_COUNT] = {[WRAP_USE] = {"glUseProgram", (hol_osmesa_proc)w_use},
+                           [WRAP_MASK] = {"glColorMask", (hol_osmesa_proc)w_mask},
+                           [WRAP_ELEMS] = {"glDrawElements", (hol_osmesa_proc)w_elems},
+                           [WRAP_ARRAYS] = {"glDrawArrays", (hol_osmesa_proc)w_arrays}};
     hol_osmesa_proc p = hol_osmesa_getproc(name);
-    if (!strcmp(name, "glUseProgram")) {
-        real_use = (use_fn)p;
-        return (hol_osmesa_proc)w_use;
-    }
-    if (!strcmp(name, "glColorMask")) {
-        real_mask = (mask_fn)p;
-        return (hol_osmesa_proc)w_mask;
-    }
-    if (!strcmp(name, "glDrawElements")) {
-        real_elems = (elems_fn)p;
-        return (hol_osmesa_proc)w_elems;
-    }
-    if (!strcmp(name, "glDrawArrays")) {
-        real_arrays = (arrays_fn)p;
-        return (hol_osmesa_proc)w_arrays;
-    }
+    for (int i = 0; i < WRAP_COUNT; i++)
+        if (!strcmp(name, wraps[i].name)) {
+            real[i] = p;
+            return wraps[i].wrap;
+        }
     return p;
 }
 
